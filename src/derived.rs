@@ -1,0 +1,252 @@
+//! Derived quantities, computed in one place for every front end: k, r, D, b*, the
+//! regime of the first impact and why, the forces and torque as 3-D vectors in the
+//! paper's frame, and the left ball's recovery after the first impact (t', v', x',
+//! t_r or t_t). Summaries of a solution (impacts, accumulation, energies) are here too.
+
+use nalgebra::Vector3;
+use serde::Serialize;
+
+use crate::closed_form;
+use crate::engine::NEGLIGIBLE_SPEED;
+use crate::model::{self, BallState, Groove, slip};
+use crate::scene::Scene;
+use crate::solution::{EnergySplit, Solution};
+
+/// What the balls do after the first impact (paper, figure 2).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Regime {
+    /// They roll apart (`b < b*`, D > 1).
+    Depart,
+    /// They stop (`b = b*`, D = 1), or move on at one speed.
+    Rest,
+    /// They come back and collide again (`b > b*`, D < 1).
+    Recollide,
+}
+
+impl Regime {
+    pub fn name(self) -> &'static str {
+        match self {
+            Regime::Depart => "depart",
+            Regime::Rest => "rest",
+            Regime::Recollide => "recollide",
+        }
+    }
+}
+
+/// Forces on one sliding ball, N (torque N m), in the paper's frame: x along the
+/// groove, y down (along gravity), z across; contact A at −b/2 in z, B at +b/2.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Forces {
+    pub weight: Vector3<f64>,
+    pub normal_a: Vector3<f64>,
+    pub normal_b: Vector3<f64>,
+    pub friction_a: Vector3<f64>,
+    pub friction_b: Vector3<f64>,
+    pub net: Vector3<f64>,
+    /// Net torque about the centre.
+    pub torque: Vector3<f64>,
+}
+
+/// Forces on a ball of mass `mass` whose slip has sign `slip_sign` (0: rolling freely).
+pub fn forces(scene: &Scene, mass: f64, slip_sign: f64) -> Forces {
+    let k = scene.k();
+    let mg = mass * scene.g;
+    let across = mg * scene.width / (4.0 * k * scene.radius);
+    let friction = Vector3::new(-slip_sign * scene.mu * mg / (2.0 * k), 0.0, 0.0);
+    let normal_a = Vector3::new(0.0, -0.5 * mg, across);
+    let normal_b = Vector3::new(0.0, -0.5 * mg, -across);
+    let weight = Vector3::new(0.0, mg, 0.0);
+    // Lever arms from the centre to the contacts: r e_y ∓ b/2 e_z.
+    let r = k * scene.radius;
+    let arm_a = Vector3::new(0.0, r, -0.5 * scene.width);
+    let arm_b = Vector3::new(0.0, r, 0.5 * scene.width);
+    Forces {
+        weight,
+        normal_a,
+        normal_b,
+        friction_a: friction,
+        friction_b: friction,
+        net: weight + normal_a + normal_b + 2.0 * friction,
+        torque: arm_a.cross(&friction) + arm_b.cross(&friction),
+    }
+}
+
+/// How the left ball recovers from the first impact if nothing else interferes.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Recovery {
+    /// Velocity and spin right after the impact.
+    pub after_impact: BallState,
+    /// t': time until it rolls again, s (∞ without friction).
+    pub t_roll: f64,
+    /// v': its rolling speed then, positive toward the other ball, m/s.
+    pub v_roll: f64,
+    /// x': its place then, from the impact place, m.
+    pub x_roll: f64,
+    /// t_r: pure gliding (u = 0) on the way, if it happens.
+    pub t_pure_gliding: Option<f64>,
+    /// t_t: pure slipping (v = 0) on the way, if it happens.
+    pub t_pure_slipping: Option<f64>,
+    /// Centre acceleration while sliding, m/s².
+    pub a_cm: f64,
+    /// Tangential acceleration `du/dt` while sliding, m/s².
+    pub a_t: f64,
+}
+
+/// Everything a front end shows about a scene before any time stepping.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Derived {
+    pub k: f64,
+    /// Effective radius of the contact circle, m.
+    pub r: f64,
+    pub b_star: Option<f64>,
+    #[serde(rename = "D")]
+    pub d: f64,
+    pub regime: Regime,
+    /// Relative speed of the two balls once both roll again (positive: apart), m/s.
+    pub separation_speed: f64,
+    /// Release height on the run-up that gives the left ball's v0, m.
+    pub release_height: f64,
+    pub left_after_impact: Option<Recovery>,
+    /// Forces on the left ball while it slides after the first impact.
+    pub forces: Forces,
+}
+
+impl Derived {
+    pub fn of(scene: &Scene) -> Derived {
+        let k = scene.k();
+        let groove = groove(scene);
+        let impact = first_impact(scene);
+        let recovery = impact
+            .filter(|_| scene.mu > 0.0)
+            .map(|[left, _]| recovery(&groove, left));
+        let separation_speed = separation_speed(&groove, scene, impact);
+        let eps = NEGLIGIBLE_SPEED * scene.speed_scale();
+        let regime = if separation_speed > eps {
+            Regime::Depart
+        } else if separation_speed < -eps {
+            Regime::Recollide
+        } else {
+            Regime::Rest
+        };
+        let slip_sign = impact.map_or(0.0, |[l, _]| {
+            let s = slip(l);
+            if s.abs() > eps { s.signum() } else { 0.0 }
+        });
+        Derived {
+            k,
+            r: k * scene.radius,
+            b_star: closed_form::critical_width(scene.radius, scene.restitution),
+            d: closed_form::determinant(k),
+            regime,
+            separation_speed,
+            release_height: closed_form::release_height(scene.left.v0, k, scene.g),
+            left_after_impact: recovery,
+            forces: forces(scene, scene.left.mass, slip_sign),
+        }
+    }
+
+    /// One sentence on why the regime happens, in the paper's terms.
+    pub fn why(&self) -> String {
+        let b_star = match self.b_star {
+            Some(b) => format!("b* = {:.2} cm", b * 100.0),
+            None => "no b* (e < 2/5)".to_string(),
+        };
+        let cmp = if self.d > 1.0 + 1e-12 {
+            "D > 1: translation stops first"
+        } else if self.d < 1.0 - 1e-12 {
+            "D < 1: rotation outlasts translation"
+        } else {
+            "D = 1: both stop together"
+        };
+        format!("D = {:.3}, {cmp}; {b_star}", self.d)
+    }
+}
+
+fn groove(scene: &Scene) -> Groove {
+    Groove {
+        k: scene.k(),
+        mu: scene.mu,
+        g: scene.g,
+        rolling_resistance: scene.rolling_resistance,
+    }
+}
+
+/// Both balls right after the first impact, or `None` if they meet without closing speed.
+pub fn first_impact(scene: &Scene) -> Option<[BallState; 2]> {
+    let (vl, vr) = (scene.left.v0, -scene.right.v0);
+    (vl > vr).then(|| {
+        let (l, r) = model::impact(scene.left.mass, scene.right.mass, vl, vr, scene.restitution);
+        [
+            BallState {
+                x: -scene.radius,
+                v: l,
+                u: vl,
+            },
+            BallState {
+                x: scene.radius,
+                v: r,
+                u: vr,
+            },
+        ]
+    })
+}
+
+/// Right ball's minus left ball's velocity once each rolls again on its own (or,
+/// without friction, right after the impact).
+fn separation_speed(groove: &Groove, scene: &Scene, impact: Option<[BallState; 2]>) -> f64 {
+    match impact {
+        None => 0.0,
+        Some([l, r]) if scene.mu > 0.0 => groove.rolling_speed(r) - groove.rolling_speed(l),
+        Some([l, r]) => r.v - l.v,
+    }
+}
+
+/// A ball sliding from `state` until it rolls (single-ball formulas of physics.md);
+/// needs friction (μ_k > 0).
+pub fn recovery(groove: &Groove, state: BallState) -> Recovery {
+    let s = slip(state);
+    let (a, du) = groove.sliding_accelerations(s.signum());
+    let t_roll = groove.time_to_roll(s);
+    let v_roll = groove.rolling_speed(state);
+    let x_roll = state.v * t_roll + 0.5 * a * t_roll * t_roll;
+    let crossing = |value: f64, rate: f64| {
+        let t = -value / rate;
+        // At b = b* both cross zero exactly as the ball rolls: that is rest, not a crossing.
+        (value * rate < 0.0 && t < t_roll * (1.0 - 1e-12)).then_some(t)
+    };
+    Recovery {
+        after_impact: state,
+        t_roll,
+        v_roll,
+        x_roll,
+        t_pure_gliding: crossing(state.u, du),
+        t_pure_slipping: crossing(state.v, a),
+        a_cm: a,
+        a_t: du,
+    }
+}
+
+/// A solution's headline numbers.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Summary {
+    pub impacts: usize,
+    pub accumulation_time: Option<f64>,
+    pub last_event: f64,
+    pub energy_start: EnergySplit,
+    pub energy_end: EnergySplit,
+    pub truncated: bool,
+}
+
+impl Summary {
+    pub fn of(solution: &Solution) -> Summary {
+        Summary {
+            impacts: solution.impacts,
+            accumulation_time: solution.accumulation,
+            last_event: solution.last_event_time(),
+            energy_start: solution.energy_at(solution.t_start),
+            energy_end: solution.energy_at(solution.t_end),
+            truncated: solution.truncated,
+        }
+    }
+}

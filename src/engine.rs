@@ -1,0 +1,662 @@
+//! The exact event-driven engine. Inside a phase every acceleration is constant, so
+//! each segment is a polynomial and every event time a closed-form root: no time step
+//! anywhere. Repeated impacts are summed to their accumulation point, and touching
+//! balls that friction presses together follow the sustained-contact model.
+
+use crate::model::{self, BallState, Groove, Phase, slip};
+use crate::scene::{Scene, Span};
+use crate::solution::{Event, EventKind, Ledger, Segment, Solution, Who, end_time, segment_losses};
+
+/// Speeds below this fraction of the scene's largest speed count as zero. At `b = b*`
+/// the rolling speed after the impact is zero up to rounding (~1e-16 relative).
+pub const NEGLIGIBLE_SPEED: f64 = 1e-12;
+
+/// Events that happen within this fraction of the earliest one are simultaneous.
+const SIMULTANEOUS: f64 = 1e-12;
+
+/// Successive impact cycles whose time and speed ratios agree this well are taken as
+/// the geometric series of physics.md, which is then summed.
+const GEOMETRIC_AGREEMENT: f64 = 1e-9;
+
+/// The series is summed once what remains of it is this short against the time so far…
+const REMAINDER_NEGLIGIBLE: f64 = 1e-9;
+/// …or after this many cycles confirmed it, bridging the rest (see [`Segment::bridge`]).
+const CYCLES_BEFORE_SUMMING: usize = 64;
+
+/// Upper bound on events: a solver must never hang.
+pub const MAX_EVENTS: usize = 100_000;
+
+/// Solves `scene` exactly over `span`.
+pub fn solve(scene: &Scene, span: &Span) -> Solution {
+    let mut engine = Engine::new(scene);
+    engine.run(span.t_start);
+    let t_end = end_time(span, engine.t_last_event());
+    Solution {
+        scene: *scene,
+        t_start: span.t_start,
+        t_end,
+        method: "exact",
+        events: engine.events,
+        segments: engine.segments,
+        impacts: engine.impacts,
+        accumulation: engine.accumulation,
+        truncated: engine.truncated,
+    }
+}
+
+/// An impact as the series detector needs it.
+#[derive(Clone, Copy, Debug)]
+struct ImpactRecord {
+    /// Time since the previous impact.
+    cycle: f64,
+    /// Closing speed just before.
+    closing: f64,
+    /// Everything right after, for summing the series.
+    state: [BallState; 2],
+    angle: [f64; 2],
+    ledger: Ledger,
+}
+
+/// A possible next event of the current segment.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Candidate {
+    Roll(usize),
+    Glide(usize),
+    Slip(usize),
+    Stop(usize),
+    Impact,
+}
+
+struct Engine {
+    groove: Groove,
+    mass: [f64; 2],
+    radius: f64,
+    restitution: f64,
+    /// Speeds below this are zero, m/s.
+    eps_v: f64,
+    t: f64,
+    state: [BallState; 2],
+    phase: [Phase; 2],
+    /// Gap between the balls' surfaces, m; set to exactly 0 at an impact.
+    gap: f64,
+    /// Compressive force while the balls press on each other, N.
+    push: f64,
+    /// `(dv/dt, du/dt)` of each ball in the current segment.
+    accel: [(f64, f64); 2],
+    angle: [f64; 2],
+    ledger: Ledger,
+    events: Vec<Event>,
+    segments: Vec<Segment>,
+    history: Vec<ImpactRecord>,
+    since_impact: f64,
+    geometric_cycles: usize,
+    impacts: usize,
+    accumulation: Option<f64>,
+    truncated: bool,
+}
+
+impl Engine {
+    fn new(scene: &Scene) -> Engine {
+        let groove = Groove {
+            k: scene.k(),
+            mu: scene.mu,
+            g: scene.g,
+            rolling_resistance: scene.rolling_resistance,
+        };
+        let r = scene.radius;
+        // Just before the first impact both balls roll toward x = 0.
+        let left = BallState {
+            x: -r,
+            v: scene.left.v0,
+            u: scene.left.v0,
+        };
+        let right = BallState {
+            x: r,
+            v: -scene.right.v0,
+            u: -scene.right.v0,
+        };
+        let eps_v = NEGLIGIBLE_SPEED * scene.speed_scale();
+        let free_phase = |v: f64| {
+            if v.abs() <= eps_v {
+                Phase::Resting
+            } else {
+                Phase::Rolling
+            }
+        };
+        Engine {
+            groove,
+            mass: [scene.left.mass, scene.right.mass],
+            radius: r,
+            restitution: scene.restitution,
+            eps_v,
+            t: 0.0,
+            state: [left, right],
+            phase: [free_phase(left.v), free_phase(right.v)],
+            gap: 0.0,
+            push: 0.0,
+            accel: [(0.0, 0.0); 2],
+            angle: [0.0; 2],
+            ledger: Ledger::default(),
+            events: Vec::new(),
+            segments: Vec::new(),
+            history: Vec::new(),
+            since_impact: 0.0,
+            geometric_cycles: 0,
+            impacts: 0,
+            accumulation: None,
+            truncated: false,
+        }
+    }
+
+    fn t_last_event(&self) -> f64 {
+        self.events.last().map_or(0.0, |e| e.t)
+    }
+
+    fn run(&mut self, t_start: f64) {
+        self.run_up(t_start);
+        if self.state[0].v > self.state[1].v {
+            self.collide();
+            let kinds = self.settle();
+            self.record(&[(EventKind::Collision, Who::Both)]);
+            self.record_contact(kinds);
+            self.check_series();
+        } else {
+            let kinds = self.settle();
+            self.record_contact(kinds);
+        }
+        loop {
+            if self.events.len() >= MAX_EVENTS {
+                self.truncated = true;
+                self.push_segment(f64::INFINITY);
+                return;
+            }
+            if !self.step() {
+                return;
+            }
+        }
+    }
+
+    /// The rolling run-up from `t_start` to the first impact at t = 0, solved backwards.
+    fn run_up(&mut self, t_start: f64) {
+        let accel = self.state.map(|s| {
+            let a = self.groove.rolling_acceleration(s.v);
+            (a, a)
+        });
+        let start: [BallState; 2] =
+            std::array::from_fn(|i| self.state[i].advanced(accel[i].0, accel[i].1, t_start));
+        let seg = Segment {
+            t0: t_start,
+            t1: 0.0,
+            start,
+            accel,
+            phase: self.phase,
+            contact_force: 0.0,
+            angle0: [0.0; 2],
+            ledger0: Ledger::default(),
+            bridge: None,
+        };
+        let r = self.groove.k * self.radius;
+        let tau = -t_start;
+        self.angle = std::array::from_fn(|i| (start[i].u * tau + 0.5 * accel[i].1 * tau * tau) / r);
+        self.ledger = segment_losses(&self.groove, self.mass, &seg, tau);
+        if t_start < 0.0 {
+            self.segments.push(seg);
+        }
+    }
+
+    /// Advances to the next event and applies it. Returns false once nothing more happens.
+    fn step(&mut self) -> bool {
+        let candidates = self.candidates();
+        let Some(tau) = candidates.iter().map(|c| c.0).reduce(f64::min) else {
+            self.push_segment(f64::INFINITY);
+            return false;
+        };
+        let due: Vec<Candidate> = candidates
+            .iter()
+            .filter(|c| c.0 <= tau * (1.0 + SIMULTANEOUS))
+            .map(|c| c.1)
+            .collect();
+        let before = self.state;
+        self.advance(tau);
+        let mut kinds = Vec::new();
+        for &c in due.iter().filter(|c| **c != Candidate::Impact) {
+            kinds.push(self.apply(c, &before));
+        }
+        if self.push > 0.0 {
+            // Touching balls share one velocity; keep it exactly shared after snapping.
+            let v = if self.state[0].v == 0.0 || self.state[1].v == 0.0 {
+                0.0
+            } else {
+                self.state[0].v
+            };
+            self.state[0].v = v;
+            self.state[1].v = v;
+        }
+        let impact = due.contains(&Candidate::Impact);
+        if impact {
+            self.collide();
+            kinds.push((EventKind::Collision, Who::Both));
+        }
+        let contact = self.settle();
+        self.record(&kinds);
+        self.record_contact(contact);
+        if impact {
+            self.check_series();
+        }
+        true
+    }
+
+    /// Pushes the segment from the current time to `t1` with the current accelerations.
+    fn push_segment(&mut self, t1: f64) {
+        self.segments.push(Segment {
+            t0: self.t,
+            t1,
+            start: self.state,
+            accel: self.accel,
+            phase: self.phase,
+            contact_force: self.push,
+            angle0: self.angle,
+            ledger0: self.ledger,
+            bridge: None,
+        });
+    }
+
+    fn advance(&mut self, tau: f64) {
+        if self.push == 0.0 {
+            let w = self.state[1].v - self.state[0].v;
+            let c = self.accel[1].0 - self.accel[0].0;
+            self.gap = (self.gap + tau * (w + 0.5 * c * tau)).max(0.0);
+        }
+        self.push_segment(self.t + tau);
+        let seg = *self.segments.last().expect("just pushed");
+        self.ledger = segment_losses(&self.groove, self.mass, &seg, tau);
+        let r = self.groove.k * self.radius;
+        for i in 0..2 {
+            let (a, du) = self.accel[i];
+            self.angle[i] += (self.state[i].u * tau + 0.5 * du * tau * tau) / r;
+            self.state[i] = self.state[i].advanced(a, du, tau);
+        }
+        self.t += tau;
+        self.since_impact += tau;
+    }
+
+    /// Applies a non-impact event to ball `i`; `before` is the segment's start state.
+    fn apply(&mut self, c: Candidate, before: &[BallState; 2]) -> (EventKind, Who) {
+        match c {
+            Candidate::Roll(i) => {
+                // While sliding freely `u + 5/2 k² v` is conserved: the rolling speed
+                // comes from it, not from the rounded end of the polynomial.
+                let v = if self.push > 0.0 {
+                    self.state[i].v
+                } else {
+                    self.groove.rolling_speed(before[i])
+                };
+                if v.abs() <= self.eps_v {
+                    self.stop(i);
+                    (EventKind::Rest, Who::ball(i))
+                } else {
+                    self.state[i].v = v;
+                    self.state[i].u = v;
+                    self.phase[i] = Phase::Rolling;
+                    (EventKind::Rolling, Who::ball(i))
+                }
+            }
+            Candidate::Glide(i) => {
+                self.state[i].u = 0.0;
+                (EventKind::PureGliding, Who::ball(i))
+            }
+            Candidate::Slip(i) => {
+                self.state[i].v = 0.0;
+                (EventKind::PureSlipping, Who::ball(i))
+            }
+            Candidate::Stop(i) => {
+                self.stop(i);
+                (EventKind::Rest, Who::ball(i))
+            }
+            Candidate::Impact => unreachable!("impacts are applied by collide"),
+        }
+    }
+
+    fn stop(&mut self, i: usize) {
+        self.state[i].v = 0.0;
+        self.state[i].u = 0.0;
+        self.phase[i] = Phase::Resting;
+    }
+
+    /// The phase a ball is in from its state (after an impact or a jump).
+    fn phase_of(&self, s: BallState) -> Phase {
+        let sl = slip(s);
+        if sl.abs() > self.eps_v {
+            Phase::Sliding {
+                sign: sl.signum() as i8,
+            }
+        } else if s.v.abs() > self.eps_v {
+            Phase::Rolling
+        } else {
+            Phase::Resting
+        }
+    }
+
+    fn set_phases_from_state(&mut self) {
+        for i in 0..2 {
+            self.phase[i] = self.phase_of(self.state[i]);
+            match self.phase[i] {
+                Phase::Rolling => self.state[i].u = self.state[i].v,
+                Phase::Resting => {
+                    self.state[i].v = 0.0;
+                    self.state[i].u = 0.0;
+                }
+                Phase::Sliding { .. } => {}
+            }
+        }
+    }
+
+    /// The impact: Newton's law on the centre velocities, spins unchanged.
+    fn collide(&mut self) {
+        let [l, r] = self.state;
+        let closing = l.v - r.v;
+        let e = self.restitution;
+        let (vl, vr) = model::impact(self.mass[0], self.mass[1], l.v, r.v, e);
+        self.ledger.impacts += model::impact_loss(self.mass[0], self.mass[1], l.v, r.v, e);
+        self.state[0].v = vl;
+        self.state[1].v = vr;
+        if vr - vl <= self.eps_v {
+            // No rebound (e = 0, or a vanishing impact): the balls move on as one.
+            let p = (self.mass[0] * vl + self.mass[1] * vr) / (self.mass[0] + self.mass[1]);
+            self.state[0].v = p;
+            self.state[1].v = p;
+        }
+        self.gap = 0.0;
+        self.impacts += 1;
+        self.set_phases_from_state();
+        self.history.push(ImpactRecord {
+            cycle: self.since_impact,
+            closing,
+            state: self.state,
+            angle: self.angle,
+            ledger: self.ledger,
+        });
+        self.since_impact = 0.0;
+    }
+
+    /// Free accelerations `(dv/dt, du/dt)` and the mass each ball shows to a push.
+    fn free_motion(&self, i: usize) -> ((f64, f64), f64) {
+        match self.phase[i] {
+            Phase::Sliding { sign } => (
+                self.groove.sliding_accelerations(f64::from(sign)),
+                self.mass[i],
+            ),
+            Phase::Rolling | Phase::Resting => {
+                let a = self.groove.rolling_acceleration(self.state[i].v);
+                ((a, a), self.groove.effective_rolling_mass(self.mass[i]))
+            }
+        }
+    }
+
+    /// Decides the accelerations of the next segment. Touching balls with equal speed
+    /// form the one-dimensional complementarity problem of physics.md: a compressive
+    /// push `P ≥ 0` exactly when friction drives them into each other. Returns the
+    /// contact events this causes.
+    fn settle(&mut self) -> Vec<EventKind> {
+        let was_pressed = self.push > 0.0;
+        let touching = self.gap == 0.0 && self.state[0].v == self.state[1].v;
+        self.push = 0.0;
+        // A rolling ball that cannot hold the push starts sliding; that changes the
+        // problem, so solve again (at most once per ball).
+        for _ in 0..3 {
+            let ((al, dul), ml) = self.free_motion(0);
+            let ((ar, dur), mr) = self.free_motion(1);
+            let push = if touching {
+                ml * mr * (al - ar) / (ml + mr)
+            } else {
+                0.0
+            };
+            if push <= 0.0 {
+                self.accel = [(al, dul), (ar, dur)];
+                break;
+            }
+            let shared = (ml * al + mr * ar) / (ml + mr);
+            let overloaded = (0..2).find(|&i| {
+                !matches!(self.phase[i], Phase::Sliding { .. })
+                    && self.groove.static_friction_needed(push)
+                        > self.groove.friction_limit(self.mass[i]) * (1.0 + 1e-12)
+            });
+            if let Some(i) = overloaded {
+                // Pushed outward: the left ball's centre runs ahead of its spin to the
+                // left (s < 0), the right ball's to the right (s > 0).
+                self.phase[i] = Phase::Sliding {
+                    sign: if i == 0 { -1 } else { 1 },
+                };
+                continue;
+            }
+            self.push = push;
+            self.accel = [(shared, dul), (shared, dur)];
+            for i in 0..2 {
+                if !matches!(self.phase[i], Phase::Sliding { .. }) {
+                    self.accel[i] = (shared, shared);
+                    if shared != 0.0 {
+                        self.phase[i] = Phase::Rolling;
+                    }
+                }
+            }
+            break;
+        }
+        match (was_pressed, self.push > 0.0) {
+            (false, true) => vec![EventKind::ContactStart],
+            (true, false) => vec![EventKind::ContactEnd],
+            _ => vec![],
+        }
+    }
+
+    /// Every event the current segment can end in, with its time from now.
+    fn candidates(&self) -> Vec<(f64, Candidate)> {
+        let mut out = Vec::with_capacity(6);
+        for i in 0..2 {
+            let s = self.state[i];
+            let (a, du) = self.accel[i];
+            match self.phase[i] {
+                Phase::Sliding { sign } => {
+                    let sign = f64::from(sign);
+                    let sl = slip(s);
+                    let ds = a - du;
+                    let t_roll = if sign * sl >= 0.0 && sign * ds < 0.0 {
+                        let t = -sl / ds;
+                        (t > 0.0).then_some(t)
+                    } else {
+                        None
+                    };
+                    if let Some(t) = t_roll {
+                        out.push((t, Candidate::Roll(i)));
+                    }
+                    let before_roll =
+                        |t: f64| t > 0.0 && t_roll.is_none_or(|tr| t < tr * (1.0 - 1e-12));
+                    if s.u * du < 0.0 && before_roll(-s.u / du) {
+                        out.push((-s.u / du, Candidate::Glide(i)));
+                    }
+                    if s.v * a < 0.0 && before_roll(-s.v / a) {
+                        out.push((-s.v / a, Candidate::Slip(i)));
+                    }
+                }
+                Phase::Rolling => {
+                    if s.v * a < 0.0 {
+                        out.push((-s.v / a, Candidate::Stop(i)));
+                    }
+                }
+                Phase::Resting => {}
+            }
+        }
+        if self.push == 0.0 {
+            let w = self.state[1].v - self.state[0].v;
+            let c = self.accel[1].0 - self.accel[0].0;
+            if let Some(t) = closing_time(self.gap, w, c) {
+                out.push((t, Candidate::Impact));
+            }
+        }
+        out
+    }
+
+    fn record(&mut self, kinds: &[(EventKind, Who)]) {
+        for &(kind, ball) in kinds {
+            self.events.push(Event {
+                t: self.t,
+                kind,
+                ball,
+                left: self.state[0],
+                right: self.state[1],
+            });
+        }
+    }
+
+    fn record_contact(&mut self, kinds: Vec<EventKind>) {
+        let tagged: Vec<_> = kinds.into_iter().map(|k| (k, Who::Both)).collect();
+        self.record(&tagged);
+    }
+
+    /// After an impact: if the last impact cycles form a geometric series, sum it and
+    /// jump to its accumulation point; if impacts have become vanishingly weak, end them.
+    fn check_series(&mut self) {
+        let n = self.history.len();
+        let last = self.history[n - 1];
+        if n >= 2 && last.closing <= self.eps_v {
+            self.finish_series(0.0, last.state, last.angle, last.ledger);
+            return;
+        }
+        if n < 4 {
+            return;
+        }
+        let [h2, h1, h0] = [self.history[n - 3], self.history[n - 2], last];
+        let ratio = h0.cycle / h1.cycle;
+        let previous = h1.cycle / h2.cycle;
+        let speed_ratio = h0.closing / h1.closing;
+        let geometric = ratio < 1.0
+            && (ratio - previous).abs() <= GEOMETRIC_AGREEMENT * ratio
+            && (speed_ratio - ratio).abs() <= GEOMETRIC_AGREEMENT * ratio;
+        if !geometric {
+            self.geometric_cycles = 0;
+            return;
+        }
+        self.geometric_cycles += 1;
+        let remaining = h0.cycle * ratio / (1.0 - ratio);
+        let negligible = remaining <= REMAINDER_NEGLIGIBLE * self.t.abs().max(h0.cycle);
+        if !(negligible || self.geometric_cycles >= CYCLES_BEFORE_SUMMING) {
+            return;
+        }
+        // Aitken: every quantity changes by a geometric series of ratio `ratio`
+        // from one impact to the next, so its limit is z_n + (z_n − z_{n−1}) ρ/(1 − ρ).
+        let f = ratio / (1.0 - ratio);
+        let limit = |now: f64, before: f64| now + (now - before) * f;
+        let state: [BallState; 2] = std::array::from_fn(|i| BallState {
+            x: limit(h0.state[i].x, h1.state[i].x),
+            v: limit(h0.state[i].v, h1.state[i].v),
+            u: limit(h0.state[i].u, h1.state[i].u),
+        });
+        let angle = std::array::from_fn(|i| limit(h0.angle[i], h1.angle[i]));
+        let ledger = Ledger {
+            friction: limit(h0.ledger.friction, h1.ledger.friction),
+            impacts: limit(h0.ledger.impacts, h1.ledger.impacts),
+            rolling_resistance: limit(h0.ledger.rolling_resistance, h1.ledger.rolling_resistance),
+        };
+        self.finish_series(remaining, state, angle, ledger);
+    }
+
+    /// Ends a series of impacts at `remaining` seconds from now in the limit `state`:
+    /// the balls touch and share one speed. The time in between is a bridge segment.
+    fn finish_series(
+        &mut self,
+        remaining: f64,
+        mut state: [BallState; 2],
+        angle: [f64; 2],
+        ledger: Ledger,
+    ) {
+        let [ml, mr] = self.mass;
+        let v = (ml * state[0].v + mr * state[1].v) / (ml + mr);
+        // The extrapolated limit is exact to rounding, which near zero means ~1e-9 of
+        // the scale: snap what is that small.
+        let tiny = self.eps_v * 1e3;
+        let v = if v.abs() <= tiny { 0.0 } else { v };
+        for s in state.iter_mut() {
+            s.v = v;
+            if (s.u - v).abs() <= tiny {
+                s.u = v;
+            }
+        }
+        if remaining > 0.0 {
+            let now = self.state;
+            self.accel = std::array::from_fn(|i| {
+                (
+                    (state[i].v - now[i].v) / remaining,
+                    (state[i].u - now[i].u) / remaining,
+                )
+            });
+            // Positions follow the bridge so the motion stays continuous.
+            for i in 0..2 {
+                state[i].x = now[i].x + 0.5 * (now[i].v + state[i].v) * remaining;
+            }
+            self.push_segment(self.t + remaining);
+            self.segments.last_mut().expect("just pushed").bridge = Some(ledger);
+            self.t += remaining;
+        }
+        self.state = state;
+        self.angle = angle;
+        self.ledger = ledger;
+        self.gap = 0.0;
+        self.push = 0.0;
+        self.set_phases_from_state();
+        self.state[1].v = self.state[0].v;
+        self.accumulation = Some(self.t);
+        let at_rest = self.phase.iter().all(|p| *p == Phase::Resting);
+        let kind = if at_rest {
+            EventKind::ZenoRest
+        } else {
+            EventKind::ZenoContact
+        };
+        self.history.clear();
+        // The impact just recorded is the last one resolved; its event already exists.
+        let contact = self.settle();
+        self.record(&[(kind, Who::Both)]);
+        self.record_contact(contact);
+    }
+}
+
+/// Time until the gap `g0 + w τ + ½ c τ²` closes (reaches 0 while shrinking), if ever.
+/// Roots by the cancellation-free pair `q / (c/2)` and `g0 / q`.
+pub fn closing_time(g0: f64, w: f64, c: f64) -> Option<f64> {
+    let closing = |t: f64| t > 0.0 && t.is_finite() && w + c * t <= 0.0;
+    if c == 0.0 {
+        return (w < 0.0).then(|| -g0 / w).filter(|&t| closing(t));
+    }
+    let disc = w * w - 2.0 * c * g0;
+    if disc < 0.0 {
+        return None;
+    }
+    let q = -0.5 * (w + disc.sqrt().copysign(w));
+    let roots = [q / (0.5 * c), if q != 0.0 { g0 / q } else { f64::NAN }];
+    roots.into_iter().filter(|&t| closing(t)).reduce(f64::min)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+
+    #[test]
+    fn closing_time_finds_the_first_touch() {
+        // Balls 1 cm apart, closing at 1 m/s, no acceleration: 10 ms.
+        assert_relative_eq!(closing_time(0.01, -1.0, 0.0).unwrap(), 0.01);
+        // Just separated at 1 m/s, pulled back at 2 m/s²: back after 1 s.
+        assert_relative_eq!(closing_time(0.0, 1.0, -2.0).unwrap(), 1.0);
+        // Separating and pushed apart: never.
+        assert_eq!(closing_time(0.0, 1.0, 2.0), None);
+        // Approaching but braked before touching: never.
+        assert_eq!(closing_time(1.0, -1.0, 2.0), None);
+        // Touching at rest: no impact.
+        assert_eq!(closing_time(0.0, 0.0, -1.0), None);
+    }
+
+    #[test]
+    fn closing_time_keeps_digits_for_a_tiny_gap() {
+        // g0 = 1e-20 m at 1 m/s closing with a large acceleration: τ ≈ 1e-20 s.
+        let t = closing_time(1e-20, -1.0, 1e3).unwrap();
+        assert_relative_eq!(t, 1e-20, max_relative = 1e-12);
+    }
+}

@@ -1,0 +1,14 @@
+//! groovelab: two balls colliding in a groove (Gröber & Sniatecki), solved exactly.
+//!
+//! The physics and solvers (`scene`, `model`, `closed_form`, `engine`, `solution`,
+//! `derived`, `preset`) know nothing of terminals or flags; `cli` is the edge.
+
+pub mod cli;
+pub mod closed_form;
+pub mod derived;
+pub mod engine;
+pub mod model;
+pub mod preset;
+pub mod scene;
+pub mod solution;
+pub mod units;

@@ -1,0 +1,253 @@
+//! Presets: named scenes as TOML data (`presets/*.toml`, embedded in the binary, or a
+//! user's file), optionally carrying a measured velocity series.
+
+use std::path::{Path, PathBuf};
+
+use crate::scene::{Key, SceneSpec};
+use crate::units::parse_quantity;
+
+/// The preset used when none is named.
+pub const DEFAULT: &str = "paper-b4.9";
+
+/// Built-in presets, in the order `groovelab presets` lists them.
+const BUILT_IN: &[(&str, &str)] = &[
+    ("paper-b3.5", include_str!("../presets/paper-b3.5.toml")),
+    ("paper-b4.4", include_str!("../presets/paper-b4.4.toml")),
+    ("paper-b4.9", include_str!("../presets/paper-b4.9.toml")),
+    ("flat-table", include_str!("../presets/flat-table.toml")),
+    ("critical", include_str!("../presets/critical.toml")),
+    (
+        "unequal-speeds",
+        include_str!("../presets/unequal-speeds.toml"),
+    ),
+    ("inelastic", include_str!("../presets/inelastic.toml")),
+    (
+        "steel-and-glass",
+        include_str!("../presets/steel-and-glass.toml"),
+    ),
+];
+
+/// A measured series of the left ball: time (s, first impact at 0), v_cm and v_t (m/s).
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Measured {
+    pub t: Vec<f64>,
+    pub v_cm: Vec<f64>,
+    pub v_t: Vec<f64>,
+}
+
+/// Where a preset came from.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Origin {
+    BuiltIn,
+    File(PathBuf),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Preset {
+    pub name: String,
+    pub description: String,
+    pub source: Option<String>,
+    pub spec: SceneSpec,
+    pub measured: Option<Measured>,
+    pub origin: Origin,
+}
+
+#[derive(Debug, thiserror::Error)]
+pub enum PresetError {
+    #[error("unknown preset '{0}', allowed: a name from `groovelab presets` or a .toml file")]
+    Unknown(String),
+    #[error("cannot read preset file {path}: {reason}")]
+    Io { path: String, reason: String },
+    #[error("malformed preset {name}: {reason}")]
+    Malformed { name: String, reason: String },
+}
+
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct PresetFile {
+    name: String,
+    description: String,
+    source: Option<String>,
+    scene: toml::Table,
+    measured: Option<MeasuredFile>,
+}
+
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct MeasuredFile {
+    t: Vec<f64>,
+    v_cm: Vec<f64>,
+    v_t: Vec<f64>,
+}
+
+impl Preset {
+    /// Parses a preset's TOML text; `label` names it in errors.
+    pub fn parse(text: &str, label: &str, origin: Origin) -> Result<Preset, PresetError> {
+        let malformed = |reason: String| PresetError::Malformed {
+            name: label.to_string(),
+            reason,
+        };
+        let file: PresetFile =
+            toml::from_str(text).map_err(|e| malformed(e.message().to_string()))?;
+        let mut spec = SceneSpec::default();
+        for (key_name, value) in &file.scene {
+            let key = Key::from_name(key_name).ok_or_else(|| {
+                let allowed: Vec<&str> = Key::ALL.iter().map(|k| k.name()).collect();
+                malformed(format!(
+                    "unknown scene key '{key_name}', allowed: {}",
+                    allowed.join(", ")
+                ))
+            })?;
+            let si = match value {
+                toml::Value::Float(f) => *f,
+                toml::Value::Integer(i) => *i as f64,
+                toml::Value::String(s) => parse_quantity(s, key.dimension())
+                    .map_err(|e| malformed(format!("{key_name}: {e}")))?,
+                other => {
+                    return Err(malformed(format!(
+                        "{key_name} = {other}: expected a number or a quantity such as \"2.75cm\""
+                    )));
+                }
+            };
+            if !si.is_finite() {
+                return Err(malformed(format!("{key_name} is not finite")));
+            }
+            spec.set(key, si);
+        }
+        let measured = file
+            .measured
+            .map(|m| check_measured(m).map_err(malformed))
+            .transpose()?;
+        Ok(Preset {
+            name: file.name,
+            description: file.description,
+            source: file.source,
+            spec,
+            measured,
+            origin,
+        })
+    }
+
+    /// A built-in preset by name, or a preset file by path.
+    pub fn load(name_or_path: &str) -> Result<Preset, PresetError> {
+        if let Some((_, text)) = BUILT_IN.iter().find(|(n, _)| *n == name_or_path) {
+            return Preset::parse(text, name_or_path, Origin::BuiltIn);
+        }
+        let user = user_dir().map(|d| d.join(format!("{name_or_path}.toml")));
+        let path = match user {
+            Some(p) if p.is_file() => p,
+            _ => PathBuf::from(name_or_path),
+        };
+        if !path.is_file() {
+            return Err(PresetError::Unknown(name_or_path.to_string()));
+        }
+        let text = std::fs::read_to_string(&path).map_err(|e| PresetError::Io {
+            path: path.display().to_string(),
+            reason: e.to_string(),
+        })?;
+        Preset::parse(&text, &path.display().to_string(), Origin::File(path))
+    }
+
+    pub fn built_in() -> Vec<Preset> {
+        BUILT_IN
+            .iter()
+            .map(|(name, text)| {
+                Preset::parse(text, name, Origin::BuiltIn).expect("built-in presets are tested")
+            })
+            .collect()
+    }
+
+    /// Built-in presets, then the user's (from [`user_dir`]); unreadable user files are
+    /// returned as errors beside the good ones.
+    pub fn all() -> (Vec<Preset>, Vec<PresetError>) {
+        let mut presets = Preset::built_in();
+        let mut errors = Vec::new();
+        if let Some(dir) = user_dir()
+            && let Ok(entries) = std::fs::read_dir(&dir)
+        {
+            let mut paths: Vec<PathBuf> = entries
+                .filter_map(|e| e.ok().map(|e| e.path()))
+                .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+                .collect();
+            paths.sort();
+            for path in paths {
+                match Preset::load(&path.display().to_string()) {
+                    Ok(p) => presets.push(p),
+                    Err(e) => errors.push(e),
+                }
+            }
+        }
+        (presets, errors)
+    }
+}
+
+fn check_measured(m: MeasuredFile) -> Result<Measured, String> {
+    if m.t.len() != m.v_cm.len() || m.t.len() != m.v_t.len() {
+        return Err(format!(
+            "measured series differ in length: t {}, v_cm {}, v_t {}",
+            m.t.len(),
+            m.v_cm.len(),
+            m.v_t.len()
+        ));
+    }
+    if m.t.len() < 2 {
+        return Err("measured series needs at least 2 points".into());
+    }
+    if !m.t.windows(2).all(|w| w[0] < w[1]) {
+        return Err("measured times must increase".into());
+    }
+    Ok(Measured {
+        t: m.t,
+        v_cm: m.v_cm,
+        v_t: m.v_t,
+    })
+}
+
+/// Where user presets live: `$GROOVELAB_PRESETS`, else
+/// `$XDG_CONFIG_HOME/groovelab/presets`, else `~/.config/groovelab/presets`.
+pub fn user_dir() -> Option<PathBuf> {
+    if let Some(dir) = std::env::var_os("GROOVELAB_PRESETS") {
+        return Some(PathBuf::from(dir));
+    }
+    let config = std::env::var_os("XDG_CONFIG_HOME")
+        .map(PathBuf::from)
+        .or_else(|| std::env::var_os("HOME").map(|h| Path::new(&h).join(".config")))?;
+    Some(config.join("groovelab").join("presets"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_built_in_preset_parses_and_resolves() {
+        for p in Preset::built_in() {
+            let (scene, _) = p
+                .spec
+                .resolve()
+                .unwrap_or_else(|e| panic!("{}: {e}", p.name));
+            assert!(scene.radius > 0.0, "{}", p.name);
+            assert!(!p.description.is_empty());
+        }
+    }
+
+    #[test]
+    fn unknown_keys_are_errors() {
+        let text = "name = \"x\"\ndescription = \"d\"\n[scene]\nradius = 0.02\nwidht = 0.01\n";
+        let err = Preset::parse(text, "x", Origin::BuiltIn).unwrap_err();
+        assert!(err.to_string().contains("widht"), "{err}");
+        let text = "name = \"x\"\ndescription = \"d\"\ncolour = 1\n[scene]\n";
+        assert!(Preset::parse(text, "x", Origin::BuiltIn).is_err());
+    }
+
+    #[test]
+    fn quantities_with_units_are_read() {
+        let text =
+            "name = \"x\"\ndescription = \"d\"\n[scene]\nradius = \"2.75cm\"\nmass = \"167g\"\n";
+        let p = Preset::parse(text, "x", Origin::BuiltIn).unwrap();
+        assert_eq!(p.spec.radius, Some(0.0275));
+        assert_eq!(p.spec.mass_right, Some(0.167));
+        let bad = "name = \"x\"\ndescription = \"d\"\n[scene]\nradius = \"2.75kg\"\n";
+        assert!(Preset::parse(bad, "x", Origin::BuiltIn).is_err());
+    }
+}

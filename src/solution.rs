@@ -1,0 +1,313 @@
+//! What a solver returns: the event list, the piecewise-polynomial segments between
+//! events, and exact sampling of state, spin angle and energy at any time.
+
+use serde::Serialize;
+
+use crate::model::{BallState, Groove, Phase};
+use crate::scene::{Scene, Span};
+
+/// Which ball an event belongs to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Who {
+    Left,
+    Right,
+    Both,
+}
+
+impl Who {
+    pub fn ball(index: usize) -> Who {
+        if index == 0 { Who::Left } else { Who::Right }
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Who::Left => "left",
+            Who::Right => "right",
+            Who::Both => "both",
+        }
+    }
+}
+
+/// What happened (interface.md's event kinds).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum EventKind {
+    Collision,
+    /// Slip ends: the ball rolls again.
+    Rolling,
+    /// `u` crosses 0 while sliding: no rotation.
+    PureGliding,
+    /// `v` crosses 0 while sliding: no translation.
+    PureSlipping,
+    Rest,
+    ContactStart,
+    ContactEnd,
+    /// Impacts accumulated and the pair rests in contact.
+    ZenoRest,
+    /// Impacts accumulated and the pair moves on together.
+    ZenoContact,
+}
+
+impl EventKind {
+    pub fn name(self) -> &'static str {
+        match self {
+            EventKind::Collision => "collision",
+            EventKind::Rolling => "rolling",
+            EventKind::PureGliding => "pure_gliding",
+            EventKind::PureSlipping => "pure_slipping",
+            EventKind::Rest => "rest",
+            EventKind::ContactStart => "contact_start",
+            EventKind::ContactEnd => "contact_end",
+            EventKind::ZenoRest => "zeno_rest",
+            EventKind::ZenoContact => "zeno_contact",
+        }
+    }
+
+    /// Short label for chart markers and tables.
+    pub fn label(self) -> &'static str {
+        match self {
+            EventKind::Collision => "impact",
+            EventKind::Rolling => "rolling",
+            EventKind::PureGliding => "pure gliding",
+            EventKind::PureSlipping => "pure slipping",
+            EventKind::Rest => "rest",
+            EventKind::ContactStart => "contact",
+            EventKind::ContactEnd => "contact ends",
+            EventKind::ZenoRest => "accumulation: rest",
+            EventKind::ZenoContact => "accumulation: together",
+        }
+    }
+}
+
+/// One event, with both balls' states right after it.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Event {
+    pub t: f64,
+    pub kind: EventKind,
+    pub ball: Who,
+    pub left: BallState,
+    pub right: BallState,
+}
+
+/// Energy dissipated so far, J.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+pub struct Ledger {
+    pub friction: f64,
+    pub impacts: f64,
+    pub rolling_resistance: f64,
+}
+
+impl Ledger {
+    pub fn total(&self) -> f64 {
+        self.friction + self.impacts + self.rolling_resistance
+    }
+
+    fn lerp(&self, other: &Ledger, f: f64) -> Ledger {
+        Ledger {
+            friction: self.friction + (other.friction - self.friction) * f,
+            impacts: self.impacts + (other.impacts - self.impacts) * f,
+            rolling_resistance: self.rolling_resistance
+                + (other.rolling_resistance - self.rolling_resistance) * f,
+        }
+    }
+}
+
+/// The motion between two events: constant accelerations for each ball.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Segment {
+    pub t0: f64,
+    /// End time; `f64::INFINITY` for the last segment.
+    pub t1: f64,
+    pub start: [BallState; 2],
+    /// `(dv/dt, du/dt)` of each ball.
+    pub accel: [(f64, f64); 2],
+    pub phase: [Phase; 2],
+    /// Compressive force between touching balls, N (0 when apart).
+    pub contact_force: f64,
+    /// Spin angle of each ball at `t0`, rad (0 at `t_start`).
+    pub angle0: [f64; 2],
+    pub ledger0: Ledger,
+    /// `Some(ledger at t1)` for the short bridge over the last, unresolved impacts
+    /// before an accumulation point; its states are interpolated, not solved.
+    pub bridge: Option<Ledger>,
+}
+
+/// A solver's answer for one scene.
+#[derive(Clone, Debug)]
+pub struct Solution {
+    pub scene: Scene,
+    pub t_start: f64,
+    pub t_end: f64,
+    pub method: &'static str,
+    pub events: Vec<Event>,
+    pub segments: Vec<Segment>,
+    /// Number of impacts actually resolved (an accumulation point stands for infinitely many).
+    pub impacts: usize,
+    /// Time of the accumulation point of repeated impacts, if any.
+    pub accumulation: Option<f64>,
+    /// True if the solver hit its event budget before the motion ended.
+    pub truncated: bool,
+}
+
+/// Both balls at one time.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Snapshot {
+    pub t: f64,
+    pub left: BallState,
+    pub right: BallState,
+}
+
+/// Energy at one time, J. `translational + rotational + lost()` is the initial energy.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+pub struct EnergySplit {
+    pub translational: f64,
+    pub rotational: f64,
+    pub lost: Ledger,
+}
+
+impl EnergySplit {
+    pub fn kinetic(&self) -> f64 {
+        self.translational + self.rotational
+    }
+
+    pub fn total(&self) -> f64 {
+        self.kinetic() + self.lost.total()
+    }
+}
+
+impl Solution {
+    pub fn groove(&self) -> Groove {
+        Groove {
+            k: self.scene.k(),
+            mu: self.scene.mu,
+            g: self.scene.g,
+            rolling_resistance: self.scene.rolling_resistance,
+        }
+    }
+
+    fn masses(&self) -> [f64; 2] {
+        [self.scene.left.mass, self.scene.right.mass]
+    }
+
+    /// The segment that holds `t` (the first before `t_start`, the last after the end).
+    pub fn segment_at(&self, t: f64) -> &Segment {
+        let i = self.segments.partition_point(|s| s.t1 <= t);
+        &self.segments[i.min(self.segments.len() - 1)]
+    }
+
+    fn ball_at(seg: &Segment, i: usize, t: f64) -> BallState {
+        let (a, du) = seg.accel[i];
+        seg.start[i].advanced(a, du, t - seg.t0)
+    }
+
+    /// Exact state of both balls at time `t`.
+    pub fn at(&self, t: f64) -> Snapshot {
+        let seg = self.segment_at(t);
+        Snapshot {
+            t,
+            left: Self::ball_at(seg, 0, t),
+            right: Self::ball_at(seg, 1, t),
+        }
+    }
+
+    /// States on the uniform grid `t_start, t_start + dt, …` up to `t_end`.
+    pub fn sample(&self, dt: f64) -> Vec<Snapshot> {
+        let n = ((self.t_end - self.t_start) / dt + 1e-9).floor() as usize;
+        (0..=n)
+            .map(|i| self.at(self.t_start + i as f64 * dt))
+            .collect()
+    }
+
+    /// Spin angle of each ball at `t`, rad, `∫ ω dt` from `t_start` with `ω = u / (kR)`.
+    pub fn angle_at(&self, t: f64) -> [f64; 2] {
+        let seg = self.segment_at(t);
+        let r = self.scene.k() * self.scene.radius;
+        let tau = t - seg.t0;
+        std::array::from_fn(|i| {
+            let (_, du) = seg.accel[i];
+            seg.angle0[i] + (seg.start[i].u * tau + 0.5 * du * tau * tau) / r
+        })
+    }
+
+    /// Kinetic energy and what has been dissipated by `t`.
+    pub fn energy_at(&self, t: f64) -> EnergySplit {
+        let seg = self.segment_at(t);
+        let groove = self.groove();
+        let masses = self.masses();
+        let snap = self.at(t);
+        let (mut translational, mut rotational) = (0.0, 0.0);
+        for (m, st) in masses.iter().zip([snap.left, snap.right]) {
+            let (tr, rot) = groove.energy(*m, st);
+            translational += tr;
+            rotational += rot;
+        }
+        let lost = match seg.bridge {
+            Some(end) => {
+                let f = if seg.t1 > seg.t0 {
+                    ((t - seg.t0) / (seg.t1 - seg.t0)).clamp(0.0, 1.0)
+                } else {
+                    1.0
+                };
+                seg.ledger0.lerp(&end, f)
+            }
+            None => segment_losses(&groove, masses, seg, t - seg.t0),
+        };
+        EnergySplit {
+            translational,
+            rotational,
+            lost,
+        }
+    }
+
+    /// Events inside the simulated span.
+    pub fn visible_events(&self) -> impl Iterator<Item = &Event> {
+        self.events
+            .iter()
+            .filter(move |e| e.t >= self.t_start && e.t <= self.t_end)
+    }
+
+    /// Time of the last event (0 if there is none).
+    pub fn last_event_time(&self) -> f64 {
+        self.events.last().map_or(0.0, |e| e.t)
+    }
+}
+
+/// Ledger `tau` seconds into segment `seg`: sliding friction `μ m g/k ∫|s|dt` and
+/// rolling resistance `F_rr ∫|v|dt`, each exact because `s` and `v` keep their sign
+/// inside a segment (their zeros are events).
+pub fn segment_losses(groove: &Groove, masses: [f64; 2], seg: &Segment, tau: f64) -> Ledger {
+    let mut ledger = seg.ledger0;
+    for (i, mass) in masses.into_iter().enumerate() {
+        let st = seg.start[i];
+        let (a, du) = seg.accel[i];
+        match seg.phase[i] {
+            Phase::Sliding { .. } => {
+                let s0 = st.v - st.u;
+                let ds = a - du;
+                let path = (s0 * tau + 0.5 * ds * tau * tau).abs();
+                ledger.friction += groove.friction_limit(mass) * path;
+            }
+            Phase::Rolling => {
+                // Only rolling resistance takes work; a push between touching balls
+                // is internal to the pair.
+                let a_rr = groove.rolling_acceleration(st.v);
+                if a_rr != 0.0 {
+                    let path = (st.v * tau + 0.5 * a_rr * tau * tau).abs();
+                    ledger.rolling_resistance += groove.rolling_resistance_force(mass) * path;
+                }
+            }
+            Phase::Resting => {}
+        }
+    }
+    ledger
+}
+
+/// The simulated span's end: the given `t_end`, or far enough past the last event
+/// to see what follows it.
+pub fn end_time(span: &Span, last_event: f64) -> f64 {
+    span.t_end.unwrap_or_else(|| {
+        let shown = last_event - span.t_start;
+        last_event + (0.2 * shown).max(0.1)
+    })
+}
