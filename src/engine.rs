@@ -11,6 +11,12 @@ use crate::solution::{Event, EventKind, Ledger, Segment, Solution, Who, end_time
 /// the rolling speed after the impact is zero up to rounding (~1e-16 relative).
 pub const NEGLIGIBLE_SPEED: f64 = 1e-12;
 
+/// Impacts closing slower than this fraction of the scene's largest speed are no longer
+/// resolved one by one: the balls are taken to touch (perfectly inelastic, losing
+/// ~1e-18 of the energy scale). Without it an elastic ball pushed by a rolling one
+/// would chatter forever at a fixed, vanishing amplitude.
+const CHATTER_SPEED: f64 = 1e-9;
+
 /// Events that happen within this fraction of the earliest one are simultaneous.
 const SIMULTANEOUS: f64 = 1e-12;
 
@@ -21,7 +27,8 @@ const GEOMETRIC_AGREEMENT: f64 = 1e-9;
 /// The series is summed once what remains of it is this short against the time so far…
 const REMAINDER_NEGLIGIBLE: f64 = 1e-9;
 /// …or after this many cycles confirmed it, bridging the rest (see [`Segment::bridge`]).
-const CYCLES_BEFORE_SUMMING: usize = 64;
+/// Only cycle ratios within ~1e-2 of 1 (b within ~1e-3 of 2R) need that many.
+const CYCLES_BEFORE_SUMMING: usize = 5000;
 
 /// Upper bound on events: a solver must never hang.
 pub const MAX_EVENTS: usize = 100_000;
@@ -74,6 +81,8 @@ struct Engine {
     restitution: f64,
     /// Speeds below this are zero, m/s.
     eps_v: f64,
+    /// The scene's largest speed, m/s.
+    speed_scale: f64,
     t: f64,
     state: [BallState; 2],
     phase: [Phase; 2],
@@ -129,6 +138,7 @@ impl Engine {
             radius: r,
             restitution: scene.restitution,
             eps_v,
+            speed_scale: scene.speed_scale(),
             t: 0.0,
             state: [left, right],
             phase: [free_phase(left.v), free_phase(right.v)],
@@ -330,7 +340,9 @@ impl Engine {
             Phase::Sliding {
                 sign: sl.signum() as i8,
             }
-        } else if s.v.abs() > self.eps_v {
+        } else if s.v != 0.0 {
+            // No snapping of v here: after an impact a heavy ball may really move at a
+            // tiny speed, and zeroing it would break momentum conservation.
             Phase::Rolling
         } else {
             Phase::Resting
@@ -342,10 +354,7 @@ impl Engine {
             self.phase[i] = self.phase_of(self.state[i]);
             match self.phase[i] {
                 Phase::Rolling => self.state[i].u = self.state[i].v,
-                Phase::Resting => {
-                    self.state[i].v = 0.0;
-                    self.state[i].u = 0.0;
-                }
+                Phase::Resting => self.state[i].u = 0.0,
                 Phase::Sliding { .. } => {}
             }
         }
@@ -379,9 +388,19 @@ impl Engine {
         self.since_impact = 0.0;
     }
 
-    /// Free accelerations `(dv/dt, du/dt)` and the mass each ball shows to a push.
-    fn free_motion(&self, i: usize) -> ((f64, f64), f64) {
-        match self.phase[i] {
+    fn kinetic(&self, state: &[BallState; 2]) -> f64 {
+        (0..2)
+            .map(|i| {
+                let (t, r) = self.groove.energy(self.mass[i], state[i]);
+                t + r
+            })
+            .sum()
+    }
+
+    /// Free accelerations `(dv/dt, du/dt)` of ball `i` in `phase`, and the mass it
+    /// shows to a push through its centre.
+    fn free_motion(&self, i: usize, phase: Phase) -> ((f64, f64), f64) {
+        match phase {
             Phase::Sliding { sign } => (
                 self.groove.sliding_accelerations(f64::from(sign)),
                 self.mass[i],
@@ -393,59 +412,109 @@ impl Engine {
         }
     }
 
-    /// Decides the accelerations of the next segment. Touching balls with equal speed
-    /// form the one-dimensional complementarity problem of physics.md: a compressive
-    /// push `P ≥ 0` exactly when friction drives them into each other. Returns the
-    /// contact events this causes.
+    /// Accelerations of both balls in `phase`, and the push between them (0 when
+    /// nothing presses them together or they do not touch).
+    fn motion(&self, phase: [Phase; 2], touching: bool) -> ([(f64, f64); 2], f64) {
+        let motion = [self.free_motion(0, phase[0]), self.free_motion(1, phase[1])];
+        let free = motion.map(|(accel, _)| accel);
+        let pressed = if touching {
+            self.pair_motion(phase, motion)
+        } else {
+            None
+        };
+        match pressed {
+            None => (free, 0.0),
+            Some((shared, push)) => {
+                let accel = std::array::from_fn(|i| match phase[i] {
+                    Phase::Sliding { .. } => (shared, free[i].1),
+                    Phase::Rolling | Phase::Resting => (shared, shared),
+                });
+                (accel, push)
+            }
+        }
+    }
+
+    /// Decides the phases and accelerations of the next segment. Touching balls with
+    /// equal speed form the one-dimensional complementarity problem of physics.md: a
+    /// compressive push `P ≥ 0` exactly when friction drives them into each other.
+    /// Returns the contact events this causes.
     fn settle(&mut self) -> Vec<EventKind> {
         let was_pressed = self.push > 0.0;
         let touching = self.gap == 0.0 && self.state[0].v == self.state[1].v;
-        self.push = 0.0;
-        // A rolling ball that cannot hold the push starts sliding; that changes the
-        // problem, so solve again (at most once per ball).
-        for _ in 0..3 {
-            let ((al, dul), ml) = self.free_motion(0);
-            let ((ar, dur), mr) = self.free_motion(1);
-            let push = if touching {
-                ml * mr * (al - ar) / (ml + mr)
-            } else {
-                0.0
-            };
-            if push <= 0.0 {
-                self.accel = [(al, dul), (ar, dur)];
-                break;
-            }
-            let shared = (ml * al + mr * ar) / (ml + mr);
-            let overloaded = (0..2).find(|&i| {
-                !matches!(self.phase[i], Phase::Sliding { .. })
-                    && self.groove.static_friction_needed(push)
-                        > self.groove.friction_limit(self.mass[i]) * (1.0 + 1e-12)
-            });
-            if let Some(i) = overloaded {
-                // Pushed outward: the left ball's centre runs ahead of its spin to the
-                // left (s < 0), the right ball's to the right (s > 0).
-                self.phase[i] = Phase::Sliding {
-                    sign: if i == 0 { -1 } else { 1 },
-                };
+        let mut phase = self.phase;
+        let (mut accel, mut push) = self.motion(phase, touching);
+        // A rolling ball whose static friction cannot hold the push starts sliding, in
+        // the direction that stays consistent (its slip must grow in the sign assumed).
+        // If neither direction is consistent the ball sticks (a Painlevé-type corner
+        // that strong rolling resistance with weak friction can reach).
+        for i in 0..2 {
+            let rolling = !matches!(phase[i], Phase::Sliding { .. });
+            if !rolling
+                || push == 0.0
+                || self.groove.static_friction_needed(push)
+                    <= self.groove.friction_limit(self.mass[i]) * (1.0 + 1e-12)
+            {
                 continue;
             }
-            self.push = push;
-            self.accel = [(shared, dul), (shared, dur)];
-            for i in 0..2 {
-                if !matches!(self.phase[i], Phase::Sliding { .. }) {
-                    self.accel[i] = (shared, shared);
-                    if shared != 0.0 {
-                        self.phase[i] = Phase::Rolling;
-                    }
+            let outward: i8 = if i == 0 { -1 } else { 1 };
+            for sign in [outward, -outward] {
+                let mut trial = phase;
+                trial[i] = Phase::Sliding { sign };
+                let (a, p) = self.motion(trial, touching);
+                let slip_rate = a[i].0 - a[i].1;
+                if f64::from(sign) * slip_rate > 0.0 {
+                    (phase, accel, push) = (trial, a, p);
+                    break;
                 }
             }
-            break;
         }
+        for i in 0..2 {
+            if !matches!(phase[i], Phase::Sliding { .. }) {
+                phase[i] = if accel[i].0 != 0.0 || self.state[i].v != 0.0 {
+                    Phase::Rolling
+                } else {
+                    Phase::Resting
+                };
+            }
+        }
+        self.phase = phase;
+        self.accel = accel;
+        self.push = push;
         match (was_pressed, self.push > 0.0) {
             (false, true) => vec![EventKind::ContactStart],
             (true, false) => vec![EventKind::ContactEnd],
             _ => vec![],
         }
+    }
+
+    /// Touching balls moving as one: their shared acceleration and the push between
+    /// them, or `None` if nothing presses them together. A ball at rest resists being
+    /// rolled by up to `c_rr g` times its rolling mass, like static friction.
+    fn pair_motion(&self, phase: [Phase; 2], motion: [((f64, f64), f64); 2]) -> Option<(f64, f64)> {
+        let at_rest =
+            |i: usize| !matches!(phase[i], Phase::Sliding { .. }) && self.state[i].v == 0.0;
+        let hold = self.groove.rolling_resistance * self.groove.g;
+        // Force on ball i (besides the push) if the pair accelerates in direction `dir`.
+        let force = |i: usize, dir: f64| {
+            let ((a, _), m) = motion[i];
+            if at_rest(i) { -dir * hold * m } else { a * m }
+        };
+        let total = motion[0].1 + motion[1].1;
+        let mut shared = (force(0, 0.0) + force(1, 0.0)) / total;
+        if shared != 0.0 && (at_rest(0) || at_rest(1)) {
+            let dir = shared.signum();
+            let resisted = (force(0, dir) + force(1, dir)) / total;
+            // Too weak to overcome the resting ball's resistance: the pair stays put.
+            shared = if resisted * dir > 0.0 { resisted } else { 0.0 };
+        }
+        let dir = shared.signum();
+        // The push follows from whichever ball's force is known (not a static one).
+        let push = match (at_rest(0), at_rest(1)) {
+            (true, true) => 0.0,
+            (false, _) => force(0, dir) - motion[0].1 * shared,
+            (true, false) => motion[1].1 * shared - force(1, dir),
+        };
+        (push > 0.0).then_some((shared, push))
     }
 
     /// Every event the current segment can end in, with its time from now.
@@ -517,7 +586,7 @@ impl Engine {
     fn check_series(&mut self) {
         let n = self.history.len();
         let last = self.history[n - 1];
-        if n >= 2 && last.closing <= self.eps_v {
+        if n >= 2 && last.closing <= CHATTER_SPEED * self.speed_scale {
             self.finish_series(0.0, last.state, last.angle, last.ledger);
             return;
         }
@@ -561,13 +630,16 @@ impl Engine {
 
     /// Ends a series of impacts at `remaining` seconds from now in the limit `state`:
     /// the balls touch and share one speed. The time in between is a bridge segment.
+    /// `estimate` is the extrapolated ledger; only its split is used, the total comes
+    /// from energy conservation so that the books balance exactly.
     fn finish_series(
         &mut self,
         remaining: f64,
         mut state: [BallState; 2],
         angle: [f64; 2],
-        ledger: Ledger,
+        estimate: Ledger,
     ) {
+        let energy_now = self.kinetic(&self.state) + self.ledger.total();
         let [ml, mr] = self.mass;
         let v = (ml * state[0].v + mr * state[1].v) / (ml + mr);
         // The extrapolated limit is exact to rounding, which near zero means ~1e-9 of
@@ -581,6 +653,9 @@ impl Engine {
             }
         }
         if remaining > 0.0 {
+            // The bridge stands for infinitely many ever smaller cycles: velocities
+            // and spins go linearly to their limits (the real ones oscillate about
+            // that by less than they did in the last resolved cycle).
             let now = self.state;
             self.accel = std::array::from_fn(|i| {
                 (
@@ -588,10 +663,13 @@ impl Engine {
                     (state[i].u - now[i].u) / remaining,
                 )
             });
-            // Positions follow the bridge so the motion stays continuous.
             for i in 0..2 {
                 state[i].x = now[i].x + 0.5 * (now[i].v + state[i].v) * remaining;
             }
+        }
+        let lost = energy_now - self.kinetic(&state);
+        let ledger = split_losses(&self.ledger, &estimate, lost);
+        if remaining > 0.0 {
             self.push_segment(self.t + remaining);
             self.segments.last_mut().expect("just pushed").bridge = Some(ledger);
             self.t += remaining;
@@ -615,6 +693,31 @@ impl Engine {
         let contact = self.settle();
         self.record(&[(kind, Who::Both)]);
         self.record_contact(contact);
+    }
+}
+
+/// The ledger after losing `lost` joules in all since the start, split like the
+/// growth from `now` to `estimate` (into impacts if the estimate shows none).
+fn split_losses(now: &Ledger, estimate: &Ledger, lost: f64) -> Ledger {
+    let grow = |a: f64, b: f64| (b - a).max(0.0);
+    let parts = [
+        grow(now.friction, estimate.friction),
+        grow(now.impacts, estimate.impacts),
+        grow(now.rolling_resistance, estimate.rolling_resistance),
+    ];
+    let extra = lost - now.total();
+    let sum: f64 = parts.iter().sum();
+    let share = |i: usize| {
+        if sum > 0.0 {
+            parts[i] / sum
+        } else {
+            f64::from(i == 1)
+        }
+    };
+    Ledger {
+        friction: now.friction + extra * share(0),
+        impacts: now.impacts + extra * share(1),
+        rolling_resistance: now.rolling_resistance + extra * share(2),
     }
 }
 

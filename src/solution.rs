@@ -244,8 +244,18 @@ impl Solution {
         }
         let lost = match seg.bridge {
             Some(end) => {
-                let f = if seg.t1 > seg.t0 {
-                    ((t - seg.t0) / (seg.t1 - seg.t0)).clamp(0.0, 1.0)
+                // What the bridge lost so far, in proportion to the kinetic energy gone.
+                let kinetic = |t: f64| -> f64 {
+                    (0..2)
+                        .map(|i| {
+                            let (tr, rot) = groove.energy(masses[i], Self::ball_at(seg, i, t));
+                            tr + rot
+                        })
+                        .sum()
+                };
+                let (k0, k1) = (kinetic(seg.t0), kinetic(seg.t1));
+                let f = if k0 != k1 {
+                    (k0 - kinetic(t.min(seg.t1))) / (k0 - k1)
                 } else {
                     1.0
                 };
@@ -289,11 +299,10 @@ pub fn segment_losses(groove: &Groove, masses: [f64; 2], seg: &Segment, tau: f64
                 ledger.friction += groove.friction_limit(mass) * path;
             }
             Phase::Rolling => {
-                // Only rolling resistance takes work; a push between touching balls
-                // is internal to the pair.
-                let a_rr = groove.rolling_acceleration(st.v);
-                if a_rr != 0.0 {
-                    let path = (st.v * tau + 0.5 * a_rr * tau * tau).abs();
+                // Only rolling resistance takes work (a push between touching balls is
+                // internal to the pair), over the path the ball really rolls.
+                if groove.rolling_resistance > 0.0 {
+                    let path = (st.v * tau + 0.5 * a * tau * tau).abs();
                     ledger.rolling_resistance += groove.rolling_resistance_force(mass) * path;
                 }
             }

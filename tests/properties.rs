@@ -1,0 +1,256 @@
+//! Invariants of the exact engine over the whole valid parameter space (proptest), and
+//! the edge cases by name: b = 0, b → 2R, μ_k = 0, v0 = 0, e = 0, tiny and huge scales.
+
+mod common;
+
+use groovelab::derived::{Derived, Regime};
+use groovelab::engine::{MAX_EVENTS, solve};
+use groovelab::scene::{Ball, Scene, Span};
+use groovelab::solution::{EventKind, Solution};
+use proptest::prelude::*;
+
+fn log_uniform(lo: f64, hi: f64) -> impl Strategy<Value = f64> {
+    (lo.log10()..hi.log10()).prop_map(|e| 10f64.powf(e))
+}
+
+fn scenes() -> impl Strategy<Value = Scene> {
+    let half_width = prop_oneof![
+        Just(0.0),
+        0.0..0.9999f64,
+        Just(1.0 - 1e-6),
+        Just(1.0 - 1e-9)
+    ];
+    let mu = prop_oneof![Just(0.0), 0.0..1.5f64, log_uniform(1e-4, 1e-1)];
+    let e = prop_oneof![Just(0.0), Just(1.0), 0.0..=1.0f64];
+    let c_rr = prop_oneof![3 => Just(0.0), 1 => 0.0..0.05f64];
+    let speed = prop_oneof![Just(0.0), 0.0..10.0f64, log_uniform(1e-6, 1e3)];
+    (
+        log_uniform(1e-4, 10.0),
+        half_width,
+        mu,
+        e,
+        c_rr,
+        (log_uniform(1e-3, 1e2), log_uniform(1e-3, 1e2)),
+        (speed.clone(), speed, -1.0..1.0f64),
+        log_uniform(0.1, 100.0),
+    )
+        .prop_map(|(radius, half, mu, e, c_rr, (ml, mr), (vl, vr, away), g)| {
+            // Sometimes the right ball moves away, slower than the left one chases it.
+            let vr = if away < -0.8 { -vr.min(vl) * 0.9 } else { vr };
+            Scene {
+                radius,
+                width: 2.0 * radius * half,
+                mu,
+                g,
+                restitution: e,
+                rolling_resistance: c_rr,
+                left: Ball { mass: ml, v0: vl },
+                right: Ball { mass: mr, v0: vr },
+            }
+        })
+}
+
+fn energy_scale(sol: &Solution) -> f64 {
+    sol.energy_at(0.0).total()
+}
+
+/// Times worth checking: every event, and a grid over the span and past the last event.
+fn probe_times(sol: &Solution) -> Vec<f64> {
+    let end = sol.t_end.max(sol.last_event_time() * 1.1 + 1e-3);
+    let mut ts: Vec<f64> = (0..=200)
+        .map(|i| sol.t_start + (end - sol.t_start) * i as f64 / 200.0)
+        .chain(sol.events.iter().map(|e| e.t))
+        .collect();
+    ts.sort_by(f64::total_cmp);
+    ts
+}
+
+fn check_invariants(scene: &Scene) -> Result<(), TestCaseError> {
+    let span = Span {
+        t_start: -0.2,
+        t_end: None,
+    };
+    let sol = solve(scene, &span);
+    prop_assert!(!sol.truncated, "event budget hit");
+    prop_assert!(sol.events.len() < MAX_EVENTS);
+    // Events in time order, nothing NaN.
+    for pair in sol.events.windows(2) {
+        prop_assert!(pair[0].t <= pair[1].t, "events out of order");
+    }
+    for seg in &sol.segments {
+        let numbers = seg
+            .start
+            .iter()
+            .flat_map(|s| [s.x, s.v, s.u])
+            .chain(seg.accel.iter().flat_map(|&(a, du)| [a, du]));
+        for n in numbers.chain([seg.t0, seg.contact_force]) {
+            prop_assert!(n.is_finite(), "non-finite number in a segment: {seg:?}");
+        }
+        prop_assert!(seg.t1 > seg.t0 || seg.t1 == f64::INFINITY && seg.t0.is_finite());
+    }
+    // Energy: kinetic plus what friction, impacts and rolling resistance took (each
+    // computed on its own) stays the initial energy; kinetic never grows.
+    let e0 = energy_scale(&sol);
+    let mut last_kinetic = f64::INFINITY;
+    let span_x = scene.radius + scene.speed_scale() * (sol.t_end - sol.t_start);
+    for t in probe_times(&sol) {
+        let split = sol.energy_at(t);
+        prop_assert!(
+            (split.total() - e0).abs() <= 1e-9 * e0,
+            "energy ledger off at t = {t}: {} vs {e0}",
+            split.total()
+        );
+        prop_assert!(
+            split.kinetic() <= last_kinetic + 1e-9 * e0,
+            "energy grew at t = {t}"
+        );
+        last_kinetic = split.kinetic();
+        // The balls never overlap.
+        let s = sol.at(t);
+        let gap = s.right.x - s.left.x - 2.0 * scene.radius;
+        prop_assert!(gap >= -1e-9 * span_x, "overlap {gap} at t = {t}");
+    }
+    // Impacts conserve momentum.
+    let (ml, mr) = (scene.left.mass, scene.right.mass);
+    for ev in sol.events.iter().filter(|e| e.kind == EventKind::Collision) {
+        let before_seg = sol.segments.iter().rev().find(|s| s.t1 <= ev.t).copied();
+        let (vl, vr) = match before_seg {
+            Some(seg) => {
+                let tau = seg.t1 - seg.t0;
+                (
+                    seg.start[0].v + seg.accel[0].0 * tau,
+                    seg.start[1].v + seg.accel[1].0 * tau,
+                )
+            }
+            None => (scene.left.v0, -scene.right.v0),
+        };
+        let p_before = ml * vl + mr * vr;
+        let p_after = ml * ev.left.v + mr * ev.right.v;
+        // Velocities carry rounding relative to the scene's speeds, so late, slow
+        // impacts are compared against the initial momentum scale too.
+        let p_scale = ml * vl.abs()
+            + mr * vr.abs()
+            + 1e-3 * (ml * scene.left.v0.abs() + mr * scene.right.v0.abs());
+        prop_assert!(
+            (p_before - p_after).abs() <= 1e-9 * p_scale,
+            "momentum {p_before} → {p_after} at t = {}",
+            ev.t
+        );
+    }
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(std::env::var("PROPTEST_CASES").ok().and_then(|c| c.parse().ok()).unwrap_or(600)))]
+
+    #[test]
+    fn engine_invariants_hold_everywhere(scene in scenes()) {
+        check_invariants(&scene)?;
+    }
+
+    #[test]
+    fn first_event_is_the_impact_exactly_when_the_balls_close(scene in scenes()) {
+        let sol = solve(&scene, &common::span());
+        let closing = scene.left.v0 + scene.right.v0 > 0.0;
+        let first_is_impact = sol.events.first().is_some_and(|e| e.t == 0.0 && e.kind == EventKind::Collision);
+        prop_assert_eq!(closing, first_is_impact);
+    }
+}
+
+fn paper(width: f64, mu: f64, v0: f64, e: f64) -> Scene {
+    common::symmetric(0.0275, width, mu, v0, e)
+}
+
+#[test]
+fn no_friction_means_sliding_apart_forever() {
+    let scene = paper(0.049, 0.0, 0.6, 1.0);
+    let sol = solve(&scene, &common::span());
+    assert_eq!(sol.impacts, 1);
+    assert!(sol.events.iter().all(|e| e.kind == EventKind::Collision));
+    let late = sol.at(100.0);
+    assert_eq!(late.left.v, -0.6);
+    assert_eq!(late.left.u, 0.6);
+    let e = sol.energy_at(100.0);
+    assert!((e.kinetic() - sol.energy_at(-0.2).kinetic()).abs() < 1e-15);
+    assert_eq!(Derived::of(&scene).regime, Regime::Depart);
+    check_invariants(&scene).unwrap();
+}
+
+#[test]
+fn balls_at_rest_do_nothing() {
+    let scene = paper(0.03, 0.17, 0.0, 1.0);
+    let sol = solve(&scene, &common::span());
+    assert!(sol.events.is_empty());
+    assert_eq!(sol.impacts, 0);
+    assert_eq!(sol.at(1.0).left.x, -0.0275);
+    assert_eq!(Derived::of(&scene).regime, Regime::Rest);
+    check_invariants(&scene).unwrap();
+}
+
+#[test]
+fn perfectly_inelastic_balls_press_together() {
+    let scene = paper(0.03, 0.17, 0.6, 0.0);
+    let sol = solve(&scene, &common::span());
+    let kinds: Vec<EventKind> = sol.events.iter().map(|e| e.kind).collect();
+    assert_eq!(
+        kinds,
+        [
+            EventKind::Collision,
+            EventKind::ContactStart,
+            EventKind::Rest,
+            EventKind::Rest,
+            EventKind::ContactEnd
+        ]
+    );
+    // All translational energy went in the impact; the spin went to friction.
+    let end = sol.energy_at(10.0);
+    assert!((end.lost.impacts - 0.167 * 0.36).abs() < 1e-12);
+    check_invariants(&scene).unwrap();
+}
+
+#[test]
+fn nearly_wedged_balls_still_finish() {
+    // b = 2R (1 − 1e-12): k ≈ 1.4e-6, normal forces ~1e5 times the weight.
+    for e in [0.0, 0.5, 1.0] {
+        let scene = paper(0.055 * (1.0 - 1e-12), 0.17, 0.6, e);
+        let sol = solve(&scene, &common::span());
+        assert!(!sol.truncated, "e = {e}");
+        assert_eq!(Derived::of(&scene).regime, Regime::Recollide);
+        check_invariants(&scene).unwrap();
+    }
+}
+
+#[test]
+fn tiny_and_huge_scales_agree_after_scaling() {
+    // Lengths ∝ L, speeds ∝ √(gL), times ∝ √(L/g): the event list is the same shape.
+    let base = paper(0.049, 0.17, 0.79, 1.0);
+    let reference = solve(&base, &common::span());
+    for factor in [1e-6, 1e-3, 1e3, 1e6] {
+        let scaled = Scene {
+            radius: base.radius * factor,
+            width: base.width * factor,
+            left: Ball {
+                v0: base.left.v0 * factor.sqrt(),
+                ..base.left
+            },
+            right: Ball {
+                v0: base.right.v0 * factor.sqrt(),
+                ..base.right
+            },
+            ..base
+        };
+        let sol = solve(
+            &scaled,
+            &Span {
+                t_start: -0.2 * factor.sqrt(),
+                t_end: None,
+            },
+        );
+        assert_eq!(sol.events.len(), reference.events.len(), "factor {factor}");
+        for (a, b) in sol.events.iter().zip(&reference.events) {
+            assert_eq!(a.kind, b.kind);
+            assert!((a.t / factor.sqrt() - b.t).abs() <= 1e-9 * b.t.abs().max(1e-3));
+        }
+        check_invariants(&scaled).unwrap();
+    }
+}
