@@ -49,7 +49,7 @@ pub struct SimulateArgs {
     #[arg(long, value_enum, default_value_t = Format::Table)]
     pub format: Format,
     /// Also give states on a uniform time grid with this step (e.g. 10ms).
-    #[arg(long, value_name = "DT", value_parser = time)]
+    #[arg(long, value_name = "DT", value_parser = time, allow_hyphen_values = true)]
     pub sample: Option<f64>,
 }
 

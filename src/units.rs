@@ -16,15 +16,16 @@ pub enum Dimension {
 }
 
 impl Dimension {
-    /// Accepted units and how many of each make the SI unit; the first entry is the SI
-    /// unit. Dividing by an exact integer keeps `2.75cm` the double nearest 0.0275.
-    fn units(self) -> &'static [(&'static str, f64)] {
+    /// Accepted units and their decimal exponent to SI (cm: −2); the first entry is
+    /// the SI unit. Shifting the decimal exponent of the text, rather than multiplying,
+    /// keeps `4.4cm` the very double that `0.044` is.
+    fn units(self) -> &'static [(&'static str, i32)] {
         match self {
-            Dimension::Length => &[("m", 1.0), ("cm", 100.0), ("mm", 1000.0)],
-            Dimension::Mass => &[("kg", 1.0), ("g", 1000.0)],
-            Dimension::Speed => &[("m/s", 1.0), ("cm/s", 100.0), ("mm/s", 1000.0)],
-            Dimension::Time => &[("s", 1.0), ("ms", 1000.0)],
-            Dimension::Acceleration => &[("m/s^2", 1.0), ("m/s²", 1.0), ("m/s2", 1.0)],
+            Dimension::Length => &[("m", 0), ("cm", -2), ("mm", -3)],
+            Dimension::Mass => &[("kg", 0), ("g", -3)],
+            Dimension::Speed => &[("m/s", 0), ("cm/s", -2), ("mm/s", -3)],
+            Dimension::Time => &[("s", 0), ("ms", -3)],
+            Dimension::Acceleration => &[("m/s^2", 0), ("m/s²", 0), ("m/s2", 0)],
             Dimension::Ratio => &[],
         }
     }
@@ -88,12 +89,21 @@ pub fn parse_quantity(text: &str, dim: Dimension) -> Result<f64, UnitError> {
     dim.units()
         .iter()
         .find(|(name, _)| *name == unit)
-        .map(|(_, per_si)| number / per_si)
+        .map(|&(_, shift)| shift_exponent(trimmed[..split].trim(), shift).unwrap_or(number))
         .ok_or_else(|| UnitError::UnknownUnit {
             text: text.to_string(),
             unit: unit.to_string(),
             allowed: dim.allowed(),
         })
+}
+
+/// `text` (a parsed number) times `10^shift`, rounded once from the decimal text.
+fn shift_exponent(text: &str, shift: i32) -> Option<f64> {
+    let (mantissa, exponent) = match text.find(['e', 'E']) {
+        Some(i) => (&text[..i], text[i + 1..].parse::<i32>().ok()?),
+        None => (text, 0),
+    };
+    format!("{mantissa}e{}", exponent + shift).parse().ok()
 }
 
 /// An SI value shown in the unit a lab user reads it in (cm for lengths, g for masses…).
@@ -162,6 +172,9 @@ mod tests {
             ("-0.2 s", Dimension::Time, -0.2),
             ("9.81m/s^2", Dimension::Acceleration, 9.81),
             ("1e-2m", Dimension::Length, 0.01),
+            ("4.4cm", Dimension::Length, 0.044),
+            ("1.5e1mm", Dimension::Length, 0.015),
+            ("+3E2g", Dimension::Mass, 0.3),
         ];
         for (text, dim, want) in cases {
             let got = parse_quantity(text, dim).unwrap();

@@ -1,0 +1,203 @@
+//! The command line as scripts use it: bad input of every option gives one `error:`
+//! line, exit status 2 and nothing on stdout; good input gives parseable output.
+
+use std::io::Write;
+use std::process::{Command, Output, Stdio};
+
+fn groovelab(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_groovelab"))
+        .args(args)
+        .env("GROOVELAB_PRESETS", "/nonexistent-groovelab-presets")
+        .output()
+        .unwrap()
+}
+
+fn assert_rejected(args: &[&str], mentions: &str) {
+    let out = groovelab(args);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+    assert!(out.stdout.is_empty(), "{args:?} printed on stdout");
+    let first = stderr.lines().next().unwrap_or("");
+    assert!(first.starts_with("error: "), "{args:?}: {stderr}");
+    assert!(
+        first.contains(mentions),
+        "{args:?}: first line {first:?} does not mention {mentions:?}"
+    );
+    assert!(!stderr.contains("panicked"), "{args:?} panicked");
+}
+
+#[test]
+fn every_option_rejects_bad_values() {
+    let cases: &[(&[&str], &str)] = &[
+        (&["--radius", "0"], "R > 0"),
+        (&["--radius", "-1cm"], "R > 0"),
+        (&["--radius", "abc"], "not a number"),
+        (&["--radius", "3kg"], "unknown unit"),
+        (&["--width", "6cm"], "b < 2R"),
+        (&["--width", "5.5cm"], "b < 2R"),
+        (&["--width", "-1mm"], "0 ≤ b"),
+        (&["--mass", "0"], "m > 0"),
+        (&["--mass-left", "-5g"], "m > 0"),
+        (&["--mass-right", "5m"], "unknown unit"),
+        (&["--mu", "-0.1"], "μ_k ≥ 0"),
+        (&["--mu", "0.1cm"], "plain number"),
+        (&["--v0", "nan"], "finite"),
+        (&["--v0-left", "inf"], "finite"),
+        (&["--v0-right", "1kg"], "unknown unit"),
+        (&["--v0-left", "-1", "--v0-right", "0.5"], "closing speed"),
+        (&["--height", "-1cm"], "h ≥ 0"),
+        (&["--height", "1cm", "--v0", "1"], "cannot be used with"),
+        (&["--restitution", "1.5"], "0 ≤ e ≤ 1"),
+        (&["--restitution", "-0.5"], "0 ≤ e ≤ 1"),
+        (&["--rolling-resistance", "-1"], "c_rr ≥ 0"),
+        (&["--g", "0"], "g > 0"),
+        (&["--g", "9.81m/s"], "unknown unit"),
+        (&["--t-start", "1s"], "t_start ≤ 0"),
+        (&["--t-end", "-0.5s"], "t_end > t_start"),
+        (&["--sample", "0"], "step > 0"),
+        (&["--sample", "-1ms"], "step > 0"),
+        (&["--sample", "1e-9"], "at most"),
+        (&["--sample", "1ns"], "unknown unit"),
+        (&["--preset", "no-such-preset"], "unknown preset"),
+        (&["--format", "xml"], "invalid value"),
+        (&["--bogus"], "unexpected argument"),
+    ];
+    for (args, mentions) in cases {
+        let mut full = vec!["simulate"];
+        full.extend_from_slice(args);
+        assert_rejected(&full, mentions);
+    }
+}
+
+fn preset_file(name: &str, text: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("groovelab-cli-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(name);
+    std::fs::File::create(&path)
+        .unwrap()
+        .write_all(text.as_bytes())
+        .unwrap();
+    path
+}
+
+#[test]
+fn malformed_preset_files_are_rejected() {
+    let cases = [
+        ("typo.toml", "name = \"x\"\ndescription = \"d\"\n[scene]\nwidht = 0.01\n", "widht"),
+        ("unit.toml", "name = \"x\"\ndescription = \"d\"\n[scene]\nradius = \"2cm/s\"\n", "radius"),
+        ("broken.toml", "name = \"x\n", "malformed preset"),
+        ("extra.toml", "name = \"x\"\ndescription = \"d\"\ncolor = 3\n[scene]\n", "color"),
+        (
+            "series.toml",
+            "name = \"x\"\ndescription = \"d\"\n[scene]\n[measured]\nt = [0.0, 1.0]\nv_cm = [1.0]\nv_t = [1.0, 2.0]\n",
+            "differ in length",
+        ),
+        ("invalid.toml", "name = \"x\"\ndescription = \"d\"\n[scene]\nradius = 0.01\nwidth = 0.03\nmass = 0.1\nmu = 0.1\nv0 = 1\n", "b < 2R"),
+    ];
+    for (file, text, mentions) in cases {
+        let path = preset_file(file, text);
+        assert_rejected(&["simulate", "--preset", path.to_str().unwrap()], mentions);
+    }
+}
+
+#[test]
+fn a_preset_file_with_units_runs() {
+    let path = preset_file(
+        "mine.toml",
+        "name = \"mine\"\ndescription = \"my groove\"\n[scene]\nradius = \"1cm\"\nwidth = \"1.2cm\"\nmass = \"20g\"\nmu = 0.2\nv0 = \"50cm/s\"\n",
+    );
+    let out = groovelab(&["simulate", "--preset", path.to_str().unwrap(), "--format", "json"]);
+    assert!(out.status.success());
+    let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(doc["scene"]["radius"], 0.01);
+    assert_eq!(doc["scene"]["left"]["v0"], 0.5);
+}
+
+#[test]
+fn json_follows_the_interface() {
+    let out = groovelab(&["simulate", "--format", "json", "--sample", "10ms", "--width", "4.4cm"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    for key in ["scene", "derived", "method", "events", "samples", "final"] {
+        assert!(!doc[key].is_null(), "missing {key}");
+    }
+    assert_eq!(doc["method"], "exact");
+    assert_eq!(doc["scene"]["width"], 0.044);
+    let samples = doc["samples"].as_array().unwrap();
+    // -0.2 s … t_end = 1.0 s (paper-b4.9's) in 10 ms steps: 121 points.
+    assert_eq!(samples.len(), 121);
+    assert_eq!(samples[0]["t"], -0.2);
+    for ev in doc["events"].as_array().unwrap() {
+        for ball in ["left", "right"] {
+            for q in ["x", "v", "u"] {
+                assert!(ev[ball][q].is_f64(), "{ev}");
+            }
+        }
+    }
+}
+
+#[test]
+fn csv_gives_events_or_samples() {
+    let out = groovelab(&["simulate", "--format", "csv", "--preset", "flat-table"]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next(),
+        Some("t,kind,ball,x_left,v_left,u_left,x_right,v_right,u_right")
+    );
+    // collision, pure gliding ×2, rolling ×2.
+    assert_eq!(lines.count(), 5);
+    let out = groovelab(&["simulate", "--format", "csv", "--sample", "0.1", "--t-end", "0.3"]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.starts_with("t,x_left,v_left,u_left,x_right,v_right,u_right\n"));
+    assert_eq!(text.lines().count(), 1 + 6);
+}
+
+#[test]
+fn units_on_the_command_line_mean_the_same_as_si() {
+    let a = groovelab(&["simulate", "--format", "json", "--width", "4.4cm", "--v0", "60cm/s", "--mass", "167g"]);
+    let b = groovelab(&["simulate", "--format", "json", "--width", "0.044", "--v0", "0.6", "--mass", "0.167"]);
+    assert!(a.status.success());
+    assert!(a.stdout == b.stdout, "unit and SI runs differ");
+}
+
+#[test]
+fn presets_lists_every_built_in_preset() {
+    let out = groovelab(&["presets"]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    for name in [
+        "paper-b3.5",
+        "paper-b4.4",
+        "paper-b4.9",
+        "flat-table",
+        "critical",
+        "unequal-speeds",
+        "inelastic",
+        "steel-and-glass",
+    ] {
+        assert!(
+            text.lines().any(|l| l.starts_with(name)),
+            "{name} missing from\n{text}"
+        );
+    }
+}
+
+#[test]
+fn a_closed_pipe_is_not_an_error() {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_groovelab"))
+        .args(["simulate", "--sample", "1e-5"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take());
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+}
+
+#[test]
+fn same_input_same_bytes() {
+    let a = groovelab(&["simulate", "--preset", "unequal-speeds", "--format", "json"]);
+    let b = groovelab(&["simulate", "--preset", "unequal-speeds", "--format", "json"]);
+    assert!(a.stdout == b.stdout, "two runs differ");
+}
