@@ -83,16 +83,32 @@ fn preset_file(name: &str, text: &str) -> std::path::PathBuf {
 #[test]
 fn malformed_preset_files_are_rejected() {
     let cases = [
-        ("typo.toml", "name = \"x\"\ndescription = \"d\"\n[scene]\nwidht = 0.01\n", "widht"),
-        ("unit.toml", "name = \"x\"\ndescription = \"d\"\n[scene]\nradius = \"2cm/s\"\n", "radius"),
+        (
+            "typo.toml",
+            "name = \"x\"\ndescription = \"d\"\n[scene]\nwidht = 0.01\n",
+            "widht",
+        ),
+        (
+            "unit.toml",
+            "name = \"x\"\ndescription = \"d\"\n[scene]\nradius = \"2cm/s\"\n",
+            "radius",
+        ),
         ("broken.toml", "name = \"x\n", "malformed preset"),
-        ("extra.toml", "name = \"x\"\ndescription = \"d\"\ncolor = 3\n[scene]\n", "color"),
+        (
+            "extra.toml",
+            "name = \"x\"\ndescription = \"d\"\ncolor = 3\n[scene]\n",
+            "color",
+        ),
         (
             "series.toml",
             "name = \"x\"\ndescription = \"d\"\n[scene]\n[measured]\nt = [0.0, 1.0]\nv_cm = [1.0]\nv_t = [1.0, 2.0]\n",
             "differ in length",
         ),
-        ("invalid.toml", "name = \"x\"\ndescription = \"d\"\n[scene]\nradius = 0.01\nwidth = 0.03\nmass = 0.1\nmu = 0.1\nv0 = 1\n", "b < 2R"),
+        (
+            "invalid.toml",
+            "name = \"x\"\ndescription = \"d\"\n[scene]\nradius = 0.01\nwidth = 0.03\nmass = 0.1\nmu = 0.1\nv0 = 1\n",
+            "b < 2R",
+        ),
     ];
     for (file, text, mentions) in cases {
         let path = preset_file(file, text);
@@ -106,7 +122,13 @@ fn a_preset_file_with_units_runs() {
         "mine.toml",
         "name = \"mine\"\ndescription = \"my groove\"\n[scene]\nradius = \"1cm\"\nwidth = \"1.2cm\"\nmass = \"20g\"\nmu = 0.2\nv0 = \"50cm/s\"\n",
     );
-    let out = groovelab(&["simulate", "--preset", path.to_str().unwrap(), "--format", "json"]);
+    let out = groovelab(&[
+        "simulate",
+        "--preset",
+        path.to_str().unwrap(),
+        "--format",
+        "json",
+    ]);
     assert!(out.status.success());
     let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(doc["scene"]["radius"], 0.01);
@@ -115,8 +137,14 @@ fn a_preset_file_with_units_runs() {
 
 #[test]
 fn json_follows_the_interface() {
-    let out = groovelab(&["simulate", "--format", "json", "--sample", "10ms", "--width", "4.4cm"]);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let out = groovelab(&[
+        "simulate", "--format", "json", "--sample", "10ms", "--width", "4.4cm",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     for key in ["scene", "derived", "method", "events", "samples", "final"] {
         assert!(!doc[key].is_null(), "missing {key}");
@@ -147,7 +175,9 @@ fn csv_gives_events_or_samples() {
     );
     // collision, pure gliding ×2, rolling ×2.
     assert_eq!(lines.count(), 5);
-    let out = groovelab(&["simulate", "--format", "csv", "--sample", "0.1", "--t-end", "0.3"]);
+    let out = groovelab(&[
+        "simulate", "--format", "csv", "--sample", "0.1", "--t-end", "0.3",
+    ]);
     let text = String::from_utf8(out.stdout).unwrap();
     assert!(text.starts_with("t,x_left,v_left,u_left,x_right,v_right,u_right\n"));
     assert_eq!(text.lines().count(), 1 + 6);
@@ -155,8 +185,12 @@ fn csv_gives_events_or_samples() {
 
 #[test]
 fn units_on_the_command_line_mean_the_same_as_si() {
-    let a = groovelab(&["simulate", "--format", "json", "--width", "4.4cm", "--v0", "60cm/s", "--mass", "167g"]);
-    let b = groovelab(&["simulate", "--format", "json", "--width", "0.044", "--v0", "0.6", "--mass", "0.167"]);
+    let a = groovelab(&[
+        "simulate", "--format", "json", "--width", "4.4cm", "--v0", "60cm/s", "--mass", "167g",
+    ]);
+    let b = groovelab(&[
+        "simulate", "--format", "json", "--width", "0.044", "--v0", "0.6", "--mass", "0.167",
+    ]);
     assert!(a.status.success());
     assert!(a.stdout == b.stdout, "unit and SI runs differ");
 }
@@ -192,7 +226,12 @@ fn a_closed_pipe_is_not_an_error() {
         .unwrap();
     drop(child.stdout.take());
     let out = child.wait_with_output().unwrap();
-    assert_eq!(out.status.code(), Some(0), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
 }
 
 #[test]

@@ -138,7 +138,10 @@ fn symmetric_presets_match_the_closed_forms() {
             None => assert!(doc["summary"]["accumulation_time"].is_null(), "{name}"),
         }
         // Energy books: nothing grows, everything lost is accounted for.
-        let (e0, e1) = (&doc["summary"]["energy_start"], &doc["summary"]["energy_end"]);
+        let (e0, e1) = (
+            &doc["summary"]["energy_start"],
+            &doc["summary"]["energy_end"],
+        );
         let total = |s: &Value| {
             f(&s["translational"])
                 + f(&s["rotational"])
@@ -148,7 +151,11 @@ fn symmetric_presets_match_the_closed_forms() {
         };
         assert_close!(total(e1), total(e0), 1e-12, 0.0, "{name} energy");
         if e == 1.0 {
-            assert_eq!(f(&e1["lost"]["impacts"]), 0.0, "{name}: elastic impacts lose nothing");
+            assert_eq!(
+                f(&e1["lost"]["impacts"]),
+                0.0,
+                "{name}: elastic impacts lose nothing"
+            );
         }
     }
 }
@@ -159,14 +166,20 @@ fn unequal_presets_conserve_momentum_and_end_as_physics_says() {
     // pair rolls on together at one speed.
     let doc = run_json("unequal-speeds");
     let first = &doc["events"][0];
-    let (vl, vr) = (f(&doc["scene"]["left"]["v0"]), f(&doc["scene"]["right"]["v0"]));
+    let (vl, vr) = (
+        f(&doc["scene"]["left"]["v0"]),
+        f(&doc["scene"]["right"]["v0"]),
+    );
     assert_close!(f(&first["left"]["v"]), -vr, 1e-15, 0.0, "swap");
     assert_close!(f(&first["right"]["v"]), vl, 1e-15, 0.0, "swap");
     let last = doc["events"].as_array().unwrap().last().unwrap();
     assert_eq!(last["kind"], "zeno_contact");
     assert_eq!(last["left"]["v"], last["right"]["v"]);
     assert_eq!(last["left"]["v"], last["left"]["u"], "rolling");
-    assert!(f(&last["left"]["v"]) > 0.0, "drifting right, as the faster left ball pushed");
+    assert!(
+        f(&last["left"]["v"]) > 0.0,
+        "drifting right, as the faster left ball pushed"
+    );
     // The pair cannot end faster than its mean speed after the first impact: friction
     // only ever brakes the centre of mass of two sliding balls or leaves it alone.
     assert!(f(&last["left"]["v"]) <= 0.5 * (vl - vr) + 1e-12);
@@ -213,7 +226,10 @@ fn paper_presets_carry_the_measured_series() {
             .collect();
         let mean = before.iter().sum::<f64>() / before.len() as f64;
         let (scene, _) = preset.spec.resolve().unwrap();
-        assert!((scene.left.v0 - mean).abs() <= 5.1e-5, "b = {width}: v0 is the mean to 4 decimals");
+        assert!(
+            (scene.left.v0 - mean).abs() <= 5.1e-5,
+            "b = {width}: v0 is the mean to 4 decimals"
+        );
         // Same numbers as the paper's data files (when shared/ is beside the repo).
         let csv = shared.join(format!("gs-b{width}cm.csv"));
         if let Ok(text) = std::fs::read_to_string(&csv) {
