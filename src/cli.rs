@@ -12,6 +12,7 @@ use crate::engine;
 use crate::preset::{self, Preset};
 use crate::scene::{Key, Scene, SceneSpec, Span};
 use crate::solution::{Snapshot, Solution};
+use crate::tui::{self, app::App};
 use crate::units::{Dimension, parse_quantity, show, significant};
 
 /// Most samples `--sample` may ask for.
@@ -31,6 +32,9 @@ pub struct Cli {
     pub command: Option<Command>,
     #[command(flatten)]
     pub scene: SceneArgs,
+    /// Pure 7-bit ASCII drawing (app and render) instead of Unicode.
+    #[arg(long, global = true)]
+    pub ascii: bool,
 }
 
 #[derive(Subcommand, Debug)]
@@ -39,6 +43,8 @@ pub enum Command {
     Tui,
     /// One run of a scene, printed as a table, JSON or CSV.
     Simulate(SimulateArgs),
+    /// The app's screen at one simulated time, as plain text (headless).
+    Render(RenderArgs),
     /// List the built-in and user presets.
     Presets,
 }
@@ -51,6 +57,35 @@ pub struct SimulateArgs {
     /// Also give states on a uniform time grid with this step (e.g. 10ms).
     #[arg(long, value_name = "DT", value_parser = time, allow_hyphen_values = true)]
     pub sample: Option<f64>,
+}
+
+#[derive(Args, Debug)]
+pub struct RenderArgs {
+    /// Simulated time to show (e.g. 150ms) [default: the start of the span].
+    #[arg(long, value_name = "T", value_parser = time, allow_hyphen_values = true)]
+    pub at: Option<f64>,
+    /// Screen size, COLSxROWS.
+    #[arg(long, value_name = "COLSxROWS", default_value = "120x40", value_parser = screen_size)]
+    pub size: (u16, u16),
+    /// Keys to press first, by the names the help screen shows (e.g. "down right enter").
+    #[arg(long, value_name = "K", allow_hyphen_values = true)]
+    pub keys: Option<String>,
+}
+
+/// Largest screen `render` draws.
+pub const MAX_SCREEN: u16 = 1000;
+
+fn screen_size(text: &str) -> Result<(u16, u16), String> {
+    let bad = || {
+        format!("'{text}' is not a size, expected COLSxROWS such as 120x40 (1..={MAX_SCREEN} each)")
+    };
+    let (c, r) = text.split_once(['x', 'X']).ok_or_else(bad)?;
+    let c: u16 = c.trim().parse().map_err(|_| bad())?;
+    let r: u16 = r.trim().parse().map_err(|_| bad())?;
+    if c == 0 || r == 0 || c > MAX_SCREEN || r > MAX_SCREEN {
+        return Err(bad());
+    }
+    Ok((c, r))
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -189,19 +224,55 @@ pub enum CliError {
     Io(#[from] std::io::Error),
 }
 
-/// Runs a parsed command line and returns what to print on stdout.
-pub fn run(cli: &Cli) -> Result<String, CliError> {
+/// What a command line asks for once it is valid.
+pub enum Outcome {
+    /// Text for stdout.
+    Print(String),
+    /// The interactive app on this scene.
+    Interactive(Box<App>),
+}
+
+/// Runs a parsed command line.
+pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
     match &cli.command {
-        None | Some(Command::Tui) => simulate(
-            &cli.scene,
-            &SimulateArgs {
-                format: Format::Table,
-                sample: None,
-            },
-        ),
-        Some(Command::Simulate(args)) => simulate(&cli.scene, args),
-        Some(Command::Presets) => Ok(presets()),
+        None | Some(Command::Tui) => Ok(Outcome::Interactive(Box::new(app(&cli.scene)?))),
+        Some(Command::Simulate(args)) => simulate(&cli.scene, args).map(Outcome::Print),
+        Some(Command::Render(args)) => render(&cli.scene, args, cli.ascii).map(Outcome::Print),
+        Some(Command::Presets) => Ok(Outcome::Print(presets())),
     }
+}
+
+/// The app on the scene the options describe.
+pub fn app(scene_args: &SceneArgs) -> Result<App, CliError> {
+    let (preset, scene, span) = scene_args.resolve()?;
+    Ok(App::new(preset, scene, span))
+}
+
+/// `render`: the app's screen after `--keys`, at `--at`, as text.
+pub fn render(scene_args: &SceneArgs, args: &RenderArgs, ascii: bool) -> Result<String, CliError> {
+    let mut app = app(scene_args)?;
+    let keys = match &args.keys {
+        Some(script) => tui::keys::parse_script(script).map_err(CliError::Invalid)?,
+        None => Vec::new(),
+    };
+    tui::replay(&mut app, &keys);
+    if let Some(at) = args.at {
+        let (lo, hi) = (app.solution.t_start, app.solution.t_end);
+        if !(lo..=hi).contains(&at) {
+            return Err(CliError::Invalid(format!(
+                "--at {} is outside the simulated span, allowed {} … {}",
+                show(at, Dimension::Time),
+                show(lo, Dimension::Time),
+                show(hi, Dimension::Time)
+            )));
+        }
+        app.t = at;
+    }
+    app.playing = false;
+    let (cols, rows) = args.size;
+    // Headless output has no colours; NO_COLOR does not change the text.
+    let theme = tui::theme::Theme::new(tui::theme::Glyphs::new(ascii), true);
+    Ok(tui::view::to_text(&app, cols, rows, &theme))
 }
 
 pub fn simulate(scene_args: &SceneArgs, args: &SimulateArgs) -> Result<String, CliError> {

@@ -1,7 +1,8 @@
 //! groovelab: two balls colliding in a groove (Gröber & Sniatecki), solved exactly.
 //!
 //! The physics and solvers (`scene`, `model`, `closed_form`, `engine`, `solution`,
-//! `derived`, `preset`) know nothing of terminals or flags; `cli` is the edge.
+//! `derived`, `preset`) know nothing of terminals or flags; `tui` draws and `cli` is
+//! the edge.
 
 pub mod cli;
 pub mod closed_form;
@@ -11,4 +12,5 @@ pub mod model;
 pub mod preset;
 pub mod scene;
 pub mod solution;
+pub mod tui;
 pub mod units;

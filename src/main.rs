@@ -1,15 +1,30 @@
 //! The `groovelab` binary: parse, run, print, map failures to exit status 2.
 
-use std::io::Write;
+use std::io::{IsTerminal, Write};
 use std::process::ExitCode;
 
 use clap::Parser;
-use groovelab::cli::{self, Cli};
+use groovelab::cli::{self, Cli, Outcome};
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli::run(&cli) {
-        Ok(out) => {
+        Ok(Outcome::Interactive(app)) => {
+            if !(std::io::stdout().is_terminal() && std::io::stdin().is_terminal()) {
+                eprintln!(
+                    "error: the interactive app needs a terminal, and stdin or stdout is not one; use `groovelab render` for the screen as text or `groovelab simulate` for the numbers"
+                );
+                return ExitCode::from(2);
+            }
+            match groovelab::tui::run(*app, cli.ascii) {
+                Ok(()) => ExitCode::SUCCESS,
+                Err(e) => {
+                    eprintln!("error: terminal: {e}");
+                    ExitCode::from(2)
+                }
+            }
+        }
+        Ok(Outcome::Print(out)) => {
             let mut stdout = std::io::stdout().lock();
             match stdout
                 .write_all(out.as_bytes())

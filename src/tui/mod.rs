@@ -1,0 +1,155 @@
+//! The interactive lab (ratatui + crossterm) and its headless twin. `app` holds the
+//! state, `keys` the one key table, `view` draws; this module only wires a real
+//! terminal to them: events in, frames out, the terminal restored on every exit.
+
+pub mod app;
+pub mod keys;
+pub mod plot;
+pub mod theme;
+pub mod view;
+
+use std::io::{self, Write};
+use std::time::{Duration, Instant};
+
+use ratatui::crossterm::event::{
+    self, DisableMouseCapture, EnableMouseCapture, Event, KeyEvent, KeyEventKind, MouseButton,
+    MouseEventKind,
+};
+use ratatui::crossterm::execute;
+
+use app::{Action, App, FPS};
+use theme::{Glyphs, Theme};
+
+/// The theme for this terminal: NO_COLOR (any value) asks for no colours.
+pub fn theme(ascii: bool) -> Theme {
+    let monochrome = std::env::var_os("NO_COLOR").is_some_and(|v| !v.is_empty());
+    Theme::new(Glyphs::new(ascii), monochrome)
+}
+
+fn set_mouse(on: bool) {
+    let mut out = io::stdout();
+    let _ = if on {
+        execute!(out, EnableMouseCapture)
+    } else {
+        execute!(out, DisableMouseCapture)
+    };
+    let _ = out.flush();
+}
+
+/// Puts the terminal back as it was: mouse off, raw mode off, main screen.
+fn restore() {
+    set_mouse(false);
+    ratatui::restore();
+}
+
+/// Runs the app on the real terminal until the user quits.
+pub fn run(mut app: App, ascii: bool) -> io::Result<()> {
+    let theme = theme(ascii);
+    let mut terminal = ratatui::try_init()?;
+    // ratatui's hook restores raw mode and the screen; ours also turns the mouse off
+    // first. A signal (kill -INT, or Ctrl-C where the terminal still sends SIGINT)
+    // restores and exits too.
+    let ratatui_hook = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        set_mouse(false);
+        ratatui_hook(info);
+    }));
+    let _ = ctrlc::set_handler(|| {
+        restore();
+        std::process::exit(130);
+    });
+    if std::env::var_os("GROOVELAB_TEST_PANIC").is_some() {
+        terminal.draw(|f| view::draw(&app, f.area(), f.buffer_mut(), &theme))?;
+        panic!("GROOVELAB_TEST_PANIC is set: panicking to test that the terminal is restored");
+    }
+    set_mouse(app.mouse);
+    let result = event_loop(&mut terminal, &mut app, &theme);
+    restore();
+    result
+}
+
+fn event_loop(
+    terminal: &mut ratatui::DefaultTerminal,
+    app: &mut App,
+    theme: &Theme,
+) -> io::Result<()> {
+    let frame = Duration::from_secs_f64(1.0 / FPS);
+    let mut dirty = true;
+    let mut last_tick = Instant::now();
+    let mut mouse = app.mouse;
+    while !app.quit {
+        if dirty {
+            terminal.draw(|f| view::draw(app, f.area(), f.buffer_mut(), theme))?;
+            dirty = false;
+        }
+        // Idle or paused: block until an event (no CPU). Playing: wake for the next
+        // frame; the time step comes from the clock, not from how fast we drew.
+        let timeout = if app.playing {
+            frame.saturating_sub(last_tick.elapsed())
+        } else {
+            Duration::from_secs(3600)
+        };
+        if event::poll(timeout)? {
+            match event::read()? {
+                Event::Key(key) if key.kind == KeyEventKind::Press => {
+                    if let Some(action) = keys::action(&app.mode, key) {
+                        let was_playing = app.playing;
+                        app.apply(action);
+                        if app.playing && !was_playing {
+                            last_tick = Instant::now();
+                        }
+                        dirty = true;
+                    }
+                }
+                Event::Mouse(m) if app.mouse => {
+                    let size = terminal.size()?;
+                    let area = ratatui::layout::Rect::new(0, 0, size.width, size.height);
+                    if let Some(panels) = view::layout(area) {
+                        let hit = view::param_at(panels.params, m.column, m.row);
+                        let action = match (m.kind, hit) {
+                            (MouseEventKind::Down(MouseButton::Left), Some(i)) => {
+                                Some(Action::Select(i))
+                            }
+                            (MouseEventKind::ScrollUp, Some(i)) => {
+                                Some(Action::ScrollParam(i, true))
+                            }
+                            (MouseEventKind::ScrollDown, Some(i)) => {
+                                Some(Action::ScrollParam(i, false))
+                            }
+                            _ => None,
+                        };
+                        if let Some(a) = action {
+                            app.apply(a);
+                            dirty = true;
+                        }
+                    }
+                }
+                Event::Resize(..) => dirty = true,
+                _ => {}
+            }
+        }
+        if app.mouse != mouse {
+            mouse = app.mouse;
+            set_mouse(mouse);
+        }
+        if app.playing && last_tick.elapsed() >= frame {
+            let now = Instant::now();
+            app.tick((now - last_tick).as_secs_f64());
+            last_tick = now;
+            dirty = true;
+        }
+    }
+    Ok(())
+}
+
+/// Replays `keys` on `app` as the terminal would.
+pub fn replay(app: &mut App, keys: &[KeyEvent]) {
+    for &key in keys {
+        if app.quit {
+            break;
+        }
+        if let Some(action) = keys::action(&app.mode, key) {
+            app.apply(action);
+        }
+    }
+}

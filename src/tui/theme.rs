@@ -1,0 +1,177 @@
+//! Looks: colours (readable on dark and light terminals, monochrome under NO_COLOR),
+//! and the glyph set, Unicode or pure ASCII, decided in this one place.
+
+use ratatui::buffer::Buffer;
+use ratatui::style::{Color, Modifier, Style};
+use ratatui::symbols::border;
+
+/// Glyphs and text symbols of one rendering mode.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Glyphs {
+    pub ascii: bool,
+    pub border: border::Set<'static>,
+    pub mu: &'static str,
+    pub tau: &'static str,
+    pub squared: &'static str,
+    pub infinity: &'static str,
+    pub arrow_left: &'static str,
+    pub arrow_right: &'static str,
+    pub vline: &'static str,
+    pub hline: &'static str,
+    pub dot: &'static str,
+    pub play: &'static str,
+    pub pause: &'static str,
+    pub flash: &'static str,
+    pub selected: &'static str,
+}
+
+const ASCII_BORDER: border::Set<'static> = border::Set {
+    top_left: "+",
+    top_right: "+",
+    bottom_left: "+",
+    bottom_right: "+",
+    vertical_left: "|",
+    vertical_right: "|",
+    horizontal_top: "-",
+    horizontal_bottom: "-",
+};
+
+impl Glyphs {
+    pub const UNICODE: Glyphs = Glyphs {
+        ascii: false,
+        border: border::ROUNDED,
+        mu: "μ",
+        tau: "τ",
+        squared: "²",
+        infinity: "∞",
+        arrow_left: "←",
+        arrow_right: "→",
+        vline: "│",
+        hline: "─",
+        dot: "·",
+        play: "▶",
+        pause: "⏸",
+        flash: "✶",
+        selected: "▸",
+    };
+    pub const ASCII: Glyphs = Glyphs {
+        ascii: true,
+        border: ASCII_BORDER,
+        mu: "mu",
+        tau: "tau",
+        squared: "^2",
+        infinity: "inf",
+        arrow_left: "<-",
+        arrow_right: "->",
+        vline: "|",
+        hline: "-",
+        dot: ".",
+        play: ">",
+        pause: "=",
+        flash: "*",
+        selected: ">",
+    };
+
+    pub fn new(ascii: bool) -> Glyphs {
+        if ascii {
+            Glyphs::ASCII
+        } else {
+            Glyphs::UNICODE
+        }
+    }
+}
+
+/// Styles of the app.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Theme {
+    pub glyphs: Glyphs,
+    pub text: Style,
+    pub dim: Style,
+    pub title: Style,
+    pub selected: Style,
+    pub error: Style,
+    pub info: Style,
+    pub left: Style,
+    pub right: Style,
+    /// Second series of a ball (v_t) and the like.
+    pub accent: Style,
+    pub measured: Style,
+    pub event: Style,
+    pub cursor: Style,
+    pub flash: Style,
+    pub groove: Style,
+    pub key: Style,
+}
+
+impl Theme {
+    /// Colours that read on dark and light backgrounds (no white or black text), or
+    /// modifiers only when `monochrome` (NO_COLOR).
+    pub fn new(glyphs: Glyphs, monochrome: bool) -> Theme {
+        let plain = Style::default();
+        if monochrome {
+            return Theme {
+                glyphs,
+                text: plain,
+                dim: plain.add_modifier(Modifier::DIM),
+                title: plain.add_modifier(Modifier::BOLD),
+                selected: plain.add_modifier(Modifier::REVERSED),
+                error: plain.add_modifier(Modifier::BOLD | Modifier::UNDERLINED),
+                info: plain,
+                left: plain.add_modifier(Modifier::BOLD),
+                right: plain,
+                accent: plain.add_modifier(Modifier::DIM),
+                measured: plain.add_modifier(Modifier::BOLD),
+                event: plain.add_modifier(Modifier::DIM),
+                cursor: plain.add_modifier(Modifier::BOLD),
+                flash: plain.add_modifier(Modifier::BOLD | Modifier::REVERSED),
+                groove: plain.add_modifier(Modifier::DIM),
+                key: plain.add_modifier(Modifier::BOLD),
+            };
+        }
+        Theme {
+            glyphs,
+            text: plain,
+            dim: plain.fg(Color::Gray),
+            title: plain.fg(Color::Cyan).add_modifier(Modifier::BOLD),
+            selected: plain.add_modifier(Modifier::REVERSED),
+            error: plain.fg(Color::Red).add_modifier(Modifier::BOLD),
+            info: plain.fg(Color::Green),
+            left: plain.fg(Color::Blue).add_modifier(Modifier::BOLD),
+            right: plain.fg(Color::Magenta).add_modifier(Modifier::BOLD),
+            accent: plain.fg(Color::Yellow),
+            measured: plain.fg(Color::Red),
+            event: plain.fg(Color::DarkGray),
+            cursor: plain.fg(Color::Green).add_modifier(Modifier::BOLD),
+            flash: plain.fg(Color::Red).add_modifier(Modifier::BOLD),
+            groove: plain.fg(Color::DarkGray),
+            key: plain.fg(Color::Cyan).add_modifier(Modifier::BOLD),
+        }
+    }
+}
+
+/// Last line of defence for `--ascii`: any cell still holding a non-ASCII symbol gets
+/// a close ASCII stand-in, so ASCII output is 7-bit whatever a widget drew.
+pub fn force_ascii(buf: &mut Buffer) {
+    for cell in buf.content.iter_mut() {
+        let sym = cell.symbol();
+        if sym.is_ascii() {
+            continue;
+        }
+        let c = sym.chars().next().unwrap_or(' ');
+        let stand_in = match c {
+            '\u{2800}' => " ",
+            '\u{2801}'..='\u{28ff}' => ".",
+            '─' | '━' | '╌' => "-",
+            '│' | '┃' | '╎' => "|",
+            '╭' | '╮' | '╰' | '╯' | '┌' | '┐' | '└' | '┘' | '┼' | '├' | '┤' | '┬' | '┴' => {
+                "+"
+            }
+            '•' | '●' | '✶' => "*",
+            '·' => ".",
+            '×' => "x",
+            '…' => ".",
+            _ => "?",
+        };
+        cell.set_symbol(stand_in);
+    }
+}

@@ -1,0 +1,223 @@
+//! The charts: v_cm(t) and v_t(t) like the paper's figures (left ball, right ball or
+//! both), or x(t) of both balls; labelled event lines, the time cursor, and the
+//! measured points when the preset carries them.
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::style::Style;
+use ratatui::widgets::Widget;
+
+use super::block;
+use crate::model::BallState;
+use crate::solution::{EventKind, Who};
+use crate::tui::app::{App, ChartBall};
+use crate::tui::plot::{Draw, Plot, Series, VLine, nice_ticks};
+use crate::tui::theme::Theme;
+
+/// Sample times: about two per column, plus both sides of every event so jumps and
+/// kinks are drawn where they are.
+fn sample_times(app: &App, columns: usize) -> Vec<f64> {
+    let sol = &app.solution;
+    let n = 4 * columns.max(1);
+    let dt = (sol.t_end - sol.t_start) / n as f64;
+    let mut ts: Vec<f64> = (0..=n).map(|i| sol.t_start + i as f64 * dt).collect();
+    for e in sol.visible_events() {
+        ts.push(e.t);
+        ts.push(e.t - 1e-12 * (1.0 + e.t.abs()));
+    }
+    ts.retain(|t| *t >= sol.t_start && *t <= sol.t_end);
+    ts.sort_by(f64::total_cmp);
+    ts.dedup();
+    ts
+}
+
+fn event_label(kind: EventKind) -> Option<&'static str> {
+    match kind {
+        EventKind::Collision => Some("impact"),
+        EventKind::Rolling => Some("rolling"),
+        EventKind::PureGliding => Some("gliding"),
+        EventKind::PureSlipping => Some("slipping"),
+        EventKind::Rest => Some("rest"),
+        EventKind::ZenoRest | EventKind::ZenoContact => Some("T-inf"),
+        EventKind::ContactStart | EventKind::ContactEnd => None,
+    }
+}
+
+fn event_lines(app: &App, balls: &[Who], theme: &Theme) -> Vec<VLine> {
+    app.solution
+        .visible_events()
+        .filter(|e| e.ball == Who::Both || balls.contains(&e.ball))
+        .filter_map(|e| {
+            let label = event_label(e.kind)?;
+            let zeno = matches!(e.kind, EventKind::ZenoRest | EventKind::ZenoContact);
+            let label = if zeno && !theme.glyphs.ascii {
+                "T∞"
+            } else {
+                label
+            };
+            Some(VLine {
+                x: e.t,
+                label: Some(label.to_string()),
+                style: theme.event,
+                // The accumulation point outranks the burst of impacts before it.
+                priority: u8::from(zeno),
+            })
+        })
+        .collect()
+}
+
+pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
+    let (title, plot) = if app.show_positions {
+        positions(app, area, theme)
+    } else {
+        velocities(app, area, theme)
+    };
+    let blk = block(title, theme);
+    let inner = blk.inner(area);
+    blk.render(area, buf);
+    plot.render(inner, buf, theme);
+}
+
+fn series_of(
+    name: &str,
+    times: &[f64],
+    value: impl Fn(f64) -> f64,
+    style: Style,
+    glyph: &'static str,
+) -> Series {
+    Series {
+        name: name.to_string(),
+        points: times.iter().map(|&t| (t, value(t))).collect(),
+        style,
+        glyph,
+        draw: Draw::Line,
+    }
+}
+
+fn bounds(series: &[Series], rows: usize) -> ((f64, f64), Vec<f64>) {
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for p in series.iter().flat_map(|s| &s.points) {
+        if p.1.is_finite() {
+            lo = lo.min(p.1);
+            hi = hi.max(p.1);
+        }
+    }
+    nice_ticks(lo, hi, (rows / 3).max(2))
+}
+
+fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
+    let sol = &app.solution;
+    let columns = usize::from(area.width.saturating_sub(10));
+    let times = sample_times(app, columns);
+    let ball = |i: usize| {
+        move |t: f64| -> BallState {
+            let s = sol.at(t);
+            if i == 0 { s.left } else { s.right }
+        }
+    };
+    let (balls, which): (Vec<usize>, &str) = match app.chart_ball {
+        ChartBall::Left => (vec![0], "left ball"),
+        ChartBall::Right => (vec![1], "right ball"),
+        ChartBall::Both => (vec![0, 1], "both balls"),
+    };
+    let mut series = Vec::new();
+    for &i in &balls {
+        let (style, side) = if i == 0 {
+            (theme.left, "L")
+        } else {
+            (theme.right, "R")
+        };
+        let tag = |q: &str| {
+            if balls.len() > 1 {
+                format!("{q} {side}")
+            } else {
+                q.to_string()
+            }
+        };
+        let b = ball(i);
+        series.push(series_of(&tag("v_cm"), &times, |t| b(t).v, style, "*"));
+        let accent = if i == 0 {
+            theme.accent
+        } else {
+            theme.right.patch(theme.dim)
+        };
+        series.push(series_of(&tag("v_t"), &times, |t| b(t).u, accent, "+"));
+    }
+    if let Some(m) = app.measured().filter(|_| balls.contains(&0)) {
+        let pts = |v: &[f64]| {
+            m.t.iter()
+                .copied()
+                .zip(v.iter().copied())
+                .collect::<Vec<_>>()
+        };
+        let cross = if theme.glyphs.ascii { "x" } else { "×" };
+        series.push(Series {
+            name: "measured v_cm".into(),
+            points: pts(&m.v_cm),
+            style: theme.measured,
+            glyph: cross,
+            draw: Draw::Points,
+        });
+        series.push(Series {
+            name: "v_t".into(),
+            points: pts(&m.v_t),
+            style: theme.measured,
+            glyph: if theme.glyphs.ascii { "o" } else { "+" },
+            draw: Draw::Points,
+        });
+    }
+    let rows = usize::from(area.height.saturating_sub(4));
+    let ((y0, y1), _) = bounds(&series, rows);
+    let whos: Vec<Who> = balls.iter().map(|&i| Who::ball(i)).collect();
+    let plot = Plot {
+        x_range: (sol.t_start, sol.t_end),
+        y_range: (y0, y1),
+        x_title: "t (s)".into(),
+        y_title: "v (m/s)".into(),
+        series,
+        vlines: event_lines(app, &whos, theme),
+        cursor: Some(app.t),
+        x_ticks: None,
+        y_ticks: None,
+    };
+    (format!(" v_cm(t) and v_t(t), {which}  [b] switches "), plot)
+}
+
+fn positions(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
+    let sol = &app.solution;
+    let columns = usize::from(area.width.saturating_sub(10));
+    let times = sample_times(app, columns);
+    let series = vec![
+        series_of(
+            "x left",
+            &times,
+            |t| sol.at(t).left.x * 100.0,
+            theme.left,
+            "*",
+        ),
+        series_of(
+            "x right",
+            &times,
+            |t| sol.at(t).right.x * 100.0,
+            theme.right,
+            "+",
+        ),
+    ];
+    let rows = usize::from(area.height.saturating_sub(4));
+    let ((y0, y1), _) = bounds(&series, rows);
+    let plot = Plot {
+        x_range: (sol.t_start, sol.t_end),
+        y_range: (y0, y1),
+        x_title: "t (s)".into(),
+        y_title: "x (cm)".into(),
+        series,
+        vlines: event_lines(app, &[Who::Left, Who::Right], theme),
+        cursor: Some(app.t),
+        x_ticks: None,
+        y_ticks: None,
+    };
+    (
+        " x(t) of both balls  [x] back to velocities ".to_string(),
+        plot,
+    )
+}

@@ -1,0 +1,164 @@
+//! The info panel: the regime and why, the paper's derived quantities, the impact
+//! series, and the energy split at the current time (which always adds up).
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Paragraph, Widget, Wrap};
+
+use super::block;
+use crate::derived::Regime;
+use crate::tui::app::App;
+use crate::tui::theme::Theme;
+use crate::units::significant;
+
+pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
+    let g = theme.glyphs;
+    let d = &app.derived;
+    let sol = &app.solution;
+    let blk = block(" Why ", theme);
+    let inner = blk.inner(area);
+    blk.render(area, buf);
+
+    let regime = match d.regime {
+        Regime::Depart => "DEPART: the balls roll apart",
+        Regime::Rest => "REST: the balls stop",
+        Regime::Recollide => "RECOLLIDE: they come back",
+    };
+    let why = if d.d * app.scene.restitution > 1.0 + 1e-12 {
+        format!(
+            "D e = {:.3} > 1: translation reverses first",
+            d.d * app.scene.restitution
+        )
+    } else if d.d * app.scene.restitution < 1.0 - 1e-12 {
+        format!(
+            "D e = {:.3} < 1: the spin rolls them back",
+            d.d * app.scene.restitution
+        )
+    } else {
+        "D e = 1: both stop together".to_string()
+    };
+    let b_star = d.b_star.map_or("none (e < 2/5)".to_string(), |b| {
+        format!("{:.2} cm", b * 100.0)
+    });
+    let label = |s: &str| Span::styled(s.to_string(), theme.dim);
+    let value = |s: String| Span::styled(s, theme.text);
+    let mut lines = vec![
+        Line::from(Span::styled(regime, theme.title)),
+        Line::from(value(why)),
+        Line::from(vec![
+            label("k "),
+            value(format!("{:.4}", d.k)),
+            label("  r "),
+            value(format!("{:.3} cm", d.r * 100.0)),
+            label("  D "),
+            value(format!("{:.3}", d.d)),
+            label("  b* "),
+            value(b_star),
+        ]),
+    ];
+    if let Some(rec) = d.left_after_impact {
+        lines.push(Line::from(vec![
+            label("t' "),
+            value(format!("{:.4} s", rec.t_roll)),
+            label("  v' "),
+            value(format!("{:.4} m/s", rec.v_roll)),
+            label("  x' "),
+            value(format!("{:.2} cm", rec.x_roll * 100.0)),
+        ]));
+        let crossing = match (rec.t_pure_gliding, rec.t_pure_slipping) {
+            (Some(t), _) => format!("pure gliding t_r {t:.4} s"),
+            (_, Some(t)) => format!("pure slipping t_t {t:.4} s"),
+            _ => "no pure gliding or slipping".to_string(),
+        };
+        lines.push(Line::from(vec![label("left ball: "), value(crossing)]));
+        lines.push(Line::from(vec![
+            label("a_cm "),
+            value(format!("{} m/s{}", significant(rec.a_cm, 4), g.squared)),
+            label("  a_t "),
+            value(format!("{} m/s{}", significant(rec.a_t, 4), g.squared)),
+        ]));
+    }
+    let f = d.forces;
+    lines.push(Line::from(vec![
+        label("|N_A| "),
+        value(format!("{:.3} N", f.normal_a.norm())),
+        label("  F_net "),
+        value(format!("{:.3} N", f.net.norm())),
+    ]));
+    lines.push(Line::from(vec![
+        label(&format!("{}_net ", g.tau)),
+        value(format!("{:.5} N m", f.torque.norm())),
+        label(&format!(" = {}_k m g R", g.mu)),
+    ]));
+    let zeno = sol
+        .accumulation
+        .map_or(String::new(), |t| format!("  T{} {t:.4} s", g.infinity));
+    lines.push(Line::from(vec![
+        label("impacts "),
+        value(format!("{}", sol.impacts)),
+        value(zeno),
+    ]));
+    // Whole percentages by largest remainder, so the five shares add up to 100.
+    let e = sol.energy_at(app.t);
+    let shares = percentages(&[
+        e.translational,
+        e.rotational,
+        e.lost.friction,
+        e.lost.impacts,
+        e.lost.rolling_resistance,
+    ]);
+    lines.push(Line::from(vec![
+        label("energy "),
+        value(format!("{:.4} J", e.total())),
+        label(" = trans "),
+        value(format!("{}%", shares[0])),
+        label(" + rot "),
+        value(format!("{}%", shares[1])),
+    ]));
+    lines.push(Line::from(vec![
+        label("  + friction "),
+        value(format!("{}%", shares[2])),
+        label(" + impacts "),
+        value(format!("{}%", shares[3])),
+        label(" + c_rr "),
+        value(format!("{}%", shares[4])),
+    ]));
+    Paragraph::new(lines)
+        .wrap(Wrap { trim: true })
+        .render(inner, buf);
+}
+
+/// Whole-number percentages of `parts` that sum to exactly 100 (largest remainder).
+pub fn percentages(parts: &[f64]) -> Vec<u32> {
+    let total: f64 = parts.iter().sum();
+    if total <= 0.0 {
+        return vec![0; parts.len()];
+    }
+    let exact: Vec<f64> = parts.iter().map(|p| 100.0 * p.max(0.0) / total).collect();
+    let mut out: Vec<u32> = exact.iter().map(|x| x.floor() as u32).collect();
+    let missing = 100u32.saturating_sub(out.iter().sum());
+    let mut order: Vec<usize> = (0..parts.len()).collect();
+    order.sort_by(|&a, &b| (exact[b] - exact[b].floor()).total_cmp(&(exact[a] - exact[a].floor())));
+    for &i in order.iter().take(missing as usize) {
+        out[i] += 1;
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::percentages;
+
+    #[test]
+    fn shares_always_add_up_to_100() {
+        for parts in [
+            [1.0, 1.0, 1.0, 0.0, 0.0],
+            [0.333, 0.333, 0.334, 1e-9, 0.0],
+            [5.0, 0.0, 0.0, 0.0, 0.0],
+        ] {
+            assert_eq!(percentages(&parts).iter().sum::<u32>(), 100, "{parts:?}");
+        }
+        assert_eq!(percentages(&[0.0; 5]), vec![0; 5]);
+    }
+}

@@ -1,0 +1,141 @@
+//! Drawing the lab: one layout, one function per panel, all reading the [`App`] and
+//! writing into a [`Buffer`]. The terminal and the headless `render` both call
+//! [`draw`], so a script sees exactly what a user sees.
+
+mod charts;
+mod info;
+mod params;
+
+pub use params::param_at;
+mod popups;
+mod scene;
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Block, Paragraph, Widget};
+
+use super::app::{App, Mode, Status};
+use super::keys;
+use super::theme::{Theme, force_ascii};
+
+/// Smallest terminal the layout is made for.
+pub const MIN_SIZE: (u16, u16) = (80, 24);
+
+/// Where each panel goes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Panels {
+    pub params: Rect,
+    pub scene: Rect,
+    pub chart: Rect,
+    pub info: Rect,
+    pub status: Rect,
+    pub hints: Rect,
+}
+
+/// The layout for a screen of `area`; `None` if it is too small.
+pub fn layout(area: Rect) -> Option<Panels> {
+    if area.width < MIN_SIZE.0 || area.height < MIN_SIZE.1 {
+        return None;
+    }
+    let [top, middle, status, hints] = Layout::vertical([
+        Constraint::Length(12),
+        Constraint::Min(8),
+        Constraint::Length(1),
+        Constraint::Length(1),
+    ])
+    .areas(area);
+    let params_width = if area.width >= 110 { 41 } else { 32 };
+    let [params, scene] =
+        Layout::horizontal([Constraint::Length(params_width), Constraint::Min(30)]).areas(top);
+    let info_width = if area.width >= 110 { 46 } else { 36 };
+    let [chart, info] =
+        Layout::horizontal([Constraint::Min(30), Constraint::Length(info_width)]).areas(middle);
+    Some(Panels {
+        params,
+        scene,
+        chart,
+        info,
+        status,
+        hints,
+    })
+}
+
+/// A bordered block in the theme's glyph set.
+pub(crate) fn block<'a>(title: impl Into<Line<'a>>, theme: &Theme) -> Block<'a> {
+    Block::bordered()
+        .border_set(theme.glyphs.border)
+        .border_style(theme.dim)
+        .title(title.into().style(theme.title))
+}
+
+/// Draws the whole screen.
+pub fn draw(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
+    match layout(area) {
+        None => {
+            let (w, h) = MIN_SIZE;
+            let times = if theme.glyphs.ascii { "x" } else { "×" };
+            let msg = format!("terminal too small (need {w}{times}{h})");
+            let y = area.y + area.height / 2;
+            let x = area.x + area.width.saturating_sub(msg.chars().count() as u16) / 2;
+            buf.set_stringn(x, y, &msg, area.width as usize, theme.error);
+        }
+        Some(p) => {
+            params::render(app, p.params, buf, theme);
+            scene::render(app, p.scene, buf, theme);
+            charts::render(app, p.chart, buf, theme);
+            info::render(app, p.info, buf, theme);
+            status(app, p.status, buf, theme);
+            hints(p.hints, buf, theme);
+            popups::render(app, area, buf, theme);
+        }
+    }
+    if theme.glyphs.ascii {
+        force_ascii(buf);
+    }
+}
+
+fn status(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
+    let right = format!("preset {}", app.preset.name);
+    let (text, style) = match (&app.mode, &app.status) {
+        (Mode::Edit(_), _) => (
+            "type a value with its unit (e.g. 4.4cm), Enter applies, Esc cancels".to_string(),
+            theme.info,
+        ),
+        (_, Status::Error(e)) => (e.clone(), theme.error),
+        (_, Status::Info(i)) => (format!("{}   {i}", app.playback()), theme.text),
+        (_, Status::None) => (app.playback(), theme.text),
+    };
+    let room = area.width.saturating_sub(right.len() as u16 + 1) as usize;
+    buf.set_stringn(area.x, area.y, &text, room, style);
+    if text.chars().count() < room {
+        buf.set_string(area.right() - right.len() as u16, area.y, &right, theme.dim);
+    }
+}
+
+fn hints(area: Rect, buf: &mut Buffer, theme: &Theme) {
+    let mut spans = Vec::new();
+    for (key, label) in keys::hints(theme.glyphs.ascii) {
+        spans.push(Span::styled(key, theme.key));
+        spans.push(Span::styled(format!(" {label}  "), theme.dim));
+    }
+    Paragraph::new(Line::from(spans)).render(area, buf);
+}
+
+/// The screen as plain text, one line per row, trailing blanks trimmed (for
+/// `groovelab render` and snapshot tests).
+pub fn to_text(app: &App, width: u16, height: u16, theme: &Theme) -> String {
+    let area = Rect::new(0, 0, width, height);
+    let mut buf = Buffer::empty(area);
+    draw(app, area, &mut buf, theme);
+    let mut out = String::with_capacity((width as usize + 1) * height as usize);
+    for y in 0..height {
+        let mut line = String::new();
+        for x in 0..width {
+            line.push_str(buf[(x, y)].symbol());
+        }
+        out.push_str(line.trim_end());
+        out.push('\n');
+    }
+    out
+}

@@ -1,0 +1,88 @@
+//! The parameters panel: every editable value with its unit, the selected row
+//! highlighted, the typing field in place of the value while editing.
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::widgets::Widget;
+
+use super::block;
+use crate::scene::Key;
+use crate::tui::app::{App, Mode, PARAMS};
+use crate::tui::theme::Theme;
+use crate::units::{Dimension, show, significant};
+
+/// Screen row of parameter `i` inside the panel at `area` (for mouse clicks).
+pub fn row_of(area: Rect, i: usize) -> u16 {
+    area.y + 1 + i as u16
+}
+
+/// Which parameter a click at screen row `y` hits.
+pub fn param_at(area: Rect, x: u16, y: u16) -> Option<usize> {
+    let inside = x > area.x && x + 1 < area.right() && y > area.y && y + 1 < area.bottom();
+    let i = y.checked_sub(area.y + 1)? as usize;
+    (inside && i < PARAMS.len()).then_some(i)
+}
+
+/// A value in the unit a lab uses for it, with fixed decimals so columns line up.
+fn value_text(app: &App, key: Key) -> String {
+    let v = app.value(key);
+    match key.dimension() {
+        Dimension::Ratio => significant(v, 4),
+        Dimension::Length => format!("{:.2} cm", v * 100.0),
+        Dimension::Mass => format!("{:.1} g", v * 1000.0),
+        Dimension::Speed => format!("{v:.3} m/s"),
+        dim => show(v, dim).to_string(),
+    }
+}
+
+/// What stands right of a value: context that makes it readable (less when narrow).
+fn note(app: &App, key: Key, narrow: bool) -> String {
+    let d = &app.derived;
+    match key {
+        Key::Width => {
+            let star = d
+                .b_star
+                .map_or("no b*".to_string(), |b| format!("b* {:.2}", b * 100.0));
+            if narrow {
+                star
+            } else {
+                format!("b/R {:.2} {star}", app.scene.width / app.scene.radius)
+            }
+        }
+        Key::Radius => format!("k {:.3}", d.k),
+        Key::V0Left | Key::V0Right if !narrow => "toward impact".into(),
+        Key::Height if !narrow => "run-up".into(),
+        Key::Restitution => match d.b_star {
+            None => "e < 2/5".into(),
+            Some(_) => String::new(),
+        },
+        _ => String::new(),
+    }
+}
+
+pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
+    let blk = block(" Parameters ", theme);
+    let inner = blk.inner(area);
+    blk.render(area, buf);
+    let g = theme.glyphs;
+    for (i, p) in PARAMS.iter().enumerate() {
+        let y = row_of(area, i);
+        if y >= inner.bottom() {
+            break;
+        }
+        let selected = i == app.selected;
+        let label = p.label.replace("mu", g.mu);
+        let value = match (&app.mode, selected) {
+            (Mode::Edit(text), true) => format!("[{text}_]"),
+            _ => value_text(app, p.key),
+        };
+        let marker = if selected { g.selected } else { " " };
+        let narrow = inner.width < 34;
+        let line = format!(
+            "{marker}{label:<9}{value:>11}  {}",
+            note(app, p.key, narrow)
+        );
+        let style = if selected { theme.selected } else { theme.text };
+        buf.set_stringn(inner.x, y, &line, inner.width as usize, style);
+    }
+}

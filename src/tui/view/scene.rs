@@ -1,0 +1,252 @@
+//! The groove seen from the side: both balls to scale along x and round on screen,
+//! each with a spoke turning by its integrated spin angle, slip tags, the impact
+//! flash, and tick trails of where the centres have been.
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::style::Style;
+use ratatui::widgets::Widget;
+
+use super::block;
+use crate::model::Phase;
+use crate::solution::EventKind;
+use crate::tui::app::App;
+use crate::tui::theme::Theme;
+
+/// The x range (m) the scene shows: everywhere the balls go over the whole span.
+fn extent(app: &App) -> (f64, f64) {
+    let sol = &app.solution;
+    let r = app.scene.radius;
+    let mut lo = f64::INFINITY;
+    let mut hi = f64::NEG_INFINITY;
+    let times = [sol.t_start, sol.t_end]
+        .into_iter()
+        .chain(sol.visible_events().map(|e| e.t));
+    for t in times {
+        let s = sol.at(t);
+        lo = lo.min(s.left.x - r);
+        hi = hi.max(s.right.x + r);
+    }
+    // Turning points inside a segment (v = 0) are events, so the extremes are covered.
+    (lo, hi)
+}
+
+/// Dots on a grid of braille cells (2×4 per cell, square dots) or ASCII cells.
+struct Canvas {
+    cols: usize,
+    rows: usize,
+    ascii: bool,
+    bits: Vec<u8>,
+    ink: Vec<Option<(Style, &'static str)>>,
+}
+
+impl Canvas {
+    fn new(cols: usize, rows: usize, ascii: bool) -> Canvas {
+        Canvas {
+            cols,
+            rows,
+            ascii,
+            bits: vec![0; cols * rows],
+            ink: vec![None; cols * rows],
+        }
+    }
+
+    /// Dots per cell horizontally and vertically.
+    fn sub(&self) -> (f64, f64) {
+        if self.ascii { (1.0, 1.0) } else { (2.0, 4.0) }
+    }
+
+    /// Sets the dot at (x, y), in cell-width units across and dot rows down.
+    fn dot(&mut self, x: f64, y: f64, style: Style, glyph: &'static str) {
+        let (sx, sy) = self.sub();
+        let (dx, dy) = ((x * sx).floor(), y.floor());
+        if dx < 0.0 || dy < 0.0 {
+            return;
+        }
+        let (dx, dy) = (dx as usize, dy as usize);
+        let (cx, cy) = (dx / sx as usize, dy / sy as usize);
+        if cx >= self.cols || cy >= self.rows {
+            return;
+        }
+        let i = cy * self.cols + cx;
+        const BITS: [[u8; 4]; 2] = [[0x01, 0x02, 0x04, 0x40], [0x08, 0x10, 0x20, 0x80]];
+        self.bits[i] |= if self.ascii { 1 } else { BITS[dx % 2][dy % 4] };
+        self.ink[i] = Some((style, glyph));
+    }
+
+    fn flush(&self, x0: u16, y0: u16, buf: &mut Buffer) {
+        for r in 0..self.rows {
+            for c in 0..self.cols {
+                let i = r * self.cols + c;
+                if let Some((style, glyph)) = self.ink[i] {
+                    let sym = if self.ascii {
+                        glyph.to_string()
+                    } else {
+                        char::from_u32(0x2800 + u32::from(self.bits[i]))
+                            .unwrap_or(' ')
+                            .to_string()
+                    };
+                    buf.set_string(x0 + c as u16, y0 + r as u16, sym, style);
+                }
+            }
+        }
+    }
+}
+
+pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
+    let g = theme.glyphs;
+    let sol = &app.solution;
+    let t = app.t;
+    let snap = sol.at(t);
+    let seg = sol.segment_at(t);
+    let impacts_so_far = sol
+        .events
+        .iter()
+        .filter(|e| e.kind == EventKind::Collision && e.t <= t)
+        .count();
+    // The flash lasts three frames of playback, so it is seen at any speed.
+    let flash_window = 3.0 * app.frame_step();
+    let flashing = sol
+        .events
+        .iter()
+        .any(|e| e.kind == EventKind::Collision && (e.t - t).abs() <= flash_window);
+    let title = format!(
+        " Scene  t = {t:.3} s   impacts {impacts_so_far}{} ",
+        if flashing {
+            format!("  {} IMPACT", g.flash)
+        } else {
+            String::new()
+        }
+    );
+    let blk = block(title, theme);
+    let inner = blk.inner(area);
+    blk.render(area, buf);
+    if inner.height < 5 || inner.width < 20 {
+        return;
+    }
+    // Rows: balls, groove, trail ticks, tags.
+    let ball_rows = inner.height - 3;
+    let groove_y = inner.y + ball_rows;
+    let (lo, hi) = extent(app);
+    let radius = app.scene.radius;
+    let (sx, sy) = if g.ascii { (1.0, 1.0) } else { (2.0, 4.0) };
+    // Columns per metre: fit the range, and keep the ball inside its rows (a cell is
+    // about twice as tall as wide).
+    let fit_x = f64::from(inner.width - 1) / (hi - lo);
+    let fit_y = f64::from(ball_rows) * 2.0 / (2.0 * radius) * 0.98;
+    let scale = fit_x.min(fit_y);
+    let mid = 0.5 * (lo + hi);
+    let col = |x: f64| (x - mid) * scale + f64::from(inner.width) / 2.0;
+
+    // Groove line.
+    for c in 0..inner.width {
+        buf.set_string(inner.x + c, groove_y, g.hline, theme.groove);
+    }
+
+    // Trails: where each centre was, a tick per time step so density shows speed.
+    let trail_y = groove_y + 1;
+    let steps = usize::from(inner.width);
+    let dt = (sol.t_end - sol.t_start) / steps as f64;
+    for k in 0..=steps {
+        let tk = sol.t_start + k as f64 * dt;
+        if tk > t {
+            break;
+        }
+        let s = sol.at(tk);
+        for (x, style) in [(s.left.x, theme.left), (s.right.x, theme.right)] {
+            let c = col(x);
+            if c >= 0.0 && c < f64::from(inner.width) {
+                buf.set_string(inner.x + c as u16, trail_y, g.dot, style);
+            }
+        }
+    }
+
+    // Balls: outline and a spoke at the spin angle, in dot units (square dots).
+    let mut canvas = Canvas::new(usize::from(inner.width), usize::from(ball_rows), g.ascii);
+    let angles = sol.angle_at(t);
+    let r_dots = radius * scale * sx;
+    // A dot is `aspect` times taller than wide: 1 for braille, 2 for ASCII cells.
+    let aspect = 2.0 * sx / sy;
+    let cy = f64::from(ball_rows) * sy - r_dots / aspect - 0.5;
+    let balls = [
+        (snap.left.x, angles[0], theme.left),
+        (snap.right.x, angles[1], theme.right),
+    ];
+    for (x, angle, style) in balls {
+        let cx = col(x) * sx;
+        let n = ((2.0 * std::f64::consts::PI * r_dots) * 2.0)
+            .ceil()
+            .max(12.0) as usize;
+        for k in 0..n {
+            let a = k as f64 / n as f64 * std::f64::consts::TAU;
+            canvas.dot(
+                (cx + r_dots * a.cos()) / sx,
+                cy + r_dots * a.sin() / aspect,
+                style,
+                "o",
+            );
+        }
+        // Positive spin turns clockwise on screen (x right, rows down).
+        let m = (r_dots * 2.0).ceil().max(2.0) as usize;
+        for k in 0..=m {
+            let f = k as f64 / m as f64 * r_dots;
+            canvas.dot(
+                (cx + f * angle.cos()) / sx,
+                cy + f * angle.sin() / aspect,
+                style,
+                "*",
+            );
+        }
+    }
+    canvas.flush(inner.x, inner.y, buf);
+    if flashing {
+        let c = col(0.5 * (snap.left.x + snap.right.x));
+        let y = inner.y + (cy / sy) as u16;
+        if c >= 0.0 && c < f64::from(inner.width) {
+            buf.set_string(inner.x + c as u16, y, g.flash, theme.flash);
+        }
+    }
+
+    // Tags under each ball: what its contact points do.
+    let tag_y = groove_y + 2;
+    let pressed = seg.contact_force > 0.0;
+    for (i, x, style) in [(0, snap.left.x, theme.left), (1, snap.right.x, theme.right)] {
+        let tag = match seg.phase[i] {
+            Phase::Sliding { sign } => {
+                format!(
+                    "sliding {}",
+                    if sign < 0 {
+                        g.arrow_left
+                    } else {
+                        g.arrow_right
+                    }
+                )
+            }
+            Phase::Rolling => "rolling".to_string(),
+            Phase::Resting => "at rest".to_string(),
+        };
+        let tag = if pressed {
+            format!("{tag}, pressed")
+        } else {
+            tag
+        };
+        let w = tag.chars().count() as f64;
+        let c = (col(x) - w / 2.0).clamp(0.0, f64::from(inner.width) - w);
+        let c = if i == 1 {
+            // Keep the right tag clear of the left one when the balls touch.
+            c.max(col(snap.left.x) + w / 2.0 + 1.0)
+                .min(f64::from(inner.width) - w)
+        } else {
+            c
+        };
+        if c >= 0.0 {
+            buf.set_stringn(
+                inner.x + c as u16,
+                tag_y,
+                &tag,
+                (inner.width as f64 - c) as usize,
+                style,
+            );
+        }
+    }
+}
