@@ -62,6 +62,20 @@ fn every_option_rejects_bad_values() {
         (&["--format", "xml"], "invalid value"),
         (&["--bogus"], "unexpected argument"),
     ];
+    let render_cases: &[(&[&str], &str)] = &[
+        (&["--size", "10"], "COLSxROWS"),
+        (&["--size", "0x10"], "COLSxROWS"),
+        (&["--size", "5000x10"], "COLSxROWS"),
+        (&["--at", "5s"], "outside the simulated span"),
+        (&["--at", "-1"], "outside the simulated span"),
+        (&["--keys", "space spacebar"], "unknown key 'spacebar'"),
+        (&["--width", "9cm"], "b < 2R"),
+    ];
+    for (args, mentions) in render_cases {
+        let mut full = vec!["render"];
+        full.extend_from_slice(args);
+        assert_rejected(&full, mentions);
+    }
     for (args, mentions) in cases {
         let mut full = vec!["simulate"];
         full.extend_from_slice(args);
@@ -239,4 +253,55 @@ fn same_input_same_bytes() {
     let a = groovelab(&["simulate", "--preset", "unequal-speeds", "--format", "json"]);
     let b = groovelab(&["simulate", "--preset", "unequal-speeds", "--format", "json"]);
     assert!(a.stdout == b.stdout, "two runs differ");
+}
+
+#[test]
+fn the_app_without_a_terminal_points_to_render_and_simulate() {
+    // Under `cargo test` stdout is a pipe.
+    for args in [&[][..], &["tui"][..]] {
+        let out = groovelab(args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{stderr}");
+        assert!(out.stdout.is_empty());
+        assert!(stderr.starts_with("error: "));
+        assert!(stderr.contains("groovelab render") && stderr.contains("groovelab simulate"));
+    }
+    // Bad scene options are still reported as such first.
+    assert_rejected(&["--width", "1m"], "b < 2R");
+}
+
+#[test]
+fn render_prints_the_screen_as_plain_text() {
+    let out = groovelab(&[
+        "render",
+        "--at",
+        "150ms",
+        "--size",
+        "100x30",
+        "--preset",
+        "paper-b3.5",
+    ]);
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert_eq!(text.lines().count(), 30);
+    assert!(text.lines().all(|l| l.chars().count() <= 100));
+    assert!(!text.contains('\x1b'), "no escape codes");
+    assert!(text.contains("t = 0.150 s"));
+    let again = groovelab(&[
+        "render",
+        "--at",
+        "150ms",
+        "--size",
+        "100x30",
+        "--preset",
+        "paper-b3.5",
+    ]);
+    assert!(again.stdout == text.as_bytes(), "same input, same bytes");
+    let ascii = groovelab(&["render", "--ascii", "--keys", "down down right"]);
+    assert!(ascii.status.success());
+    assert!(ascii.stdout.is_ascii());
+    assert!(
+        String::from_utf8_lossy(&ascii.stdout).contains("168.0 g"),
+        "m right + 1 g"
+    );
 }

@@ -327,6 +327,11 @@ impl App {
     }
 
     pub fn apply(&mut self, action: Action) {
+        if action == Action::Quit {
+            // q (outside typing) and Ctrl-C quit from anywhere.
+            self.quit = true;
+            return;
+        }
         match self.mode.clone() {
             Mode::Normal => self.apply_normal(action),
             // Any key closes the help.
@@ -432,7 +437,7 @@ impl App {
                     self.load_preset(p);
                 }
             }
-            Action::Cancel | Action::Quit | Action::Presets => self.mode = Mode::Normal,
+            Action::Cancel | Action::Presets => self.mode = Mode::Normal,
             _ => {}
         }
     }

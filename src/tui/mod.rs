@@ -105,7 +105,7 @@ fn event_loop(
                     let size = terminal.size()?;
                     let area = ratatui::layout::Rect::new(0, 0, size.width, size.height);
                     if let Some(panels) = view::layout(area) {
-                        let hit = view::param_at(panels.params, m.column, m.row);
+                        let hit = view::param_at(panels.params, app.selected, m.column, m.row);
                         let action = match (m.kind, hit) {
                             (MouseEventKind::Down(MouseButton::Left), Some(i)) => {
                                 Some(Action::Select(i))

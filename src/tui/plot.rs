@@ -160,7 +160,7 @@ impl Plot {
         let (x0, x1) = self.x_range;
         let (y0, y1) = self.y_range;
         let y_ticks = self.y_ticks.clone().unwrap_or_else(|| {
-            let (_, t) = nice_ticks(y0, y1, (area.height as usize / 3).max(2));
+            let (_, t) = nice_ticks(y0, y1, (area.height as usize / 2).max(2));
             ticks_with_labels(&t)
         });
         let y_ticks: Vec<_> = y_ticks
@@ -282,14 +282,6 @@ impl Plot {
             }
         }
 
-        for (k, &(c, v)) in kept.iter().enumerate() {
-            let Some(label) = &v.label else { continue };
-            let next = kept.get(k + 1).map_or(plot.right(), |n| n.0);
-            let w = label.chars().count() as u16;
-            if c + 1 + w < next {
-                buf.set_string(c + 1, plot.y, label, v.style);
-            }
-        }
         // Line series on the sub-cell grid.
         let mut grid = Grid::new(cols, rows, g.ascii);
         let (w, h) = grid.dots();
@@ -337,6 +329,22 @@ impl Plot {
                 }
                 let (c, r) = (col_of(x) as u16, row_of(y) as u16);
                 buf.set_string(plot.x + c, plot.y + r, s.glyph, s.style);
+            }
+        }
+        // Labels right of their line if they fit before the next one, else left of it
+        // if they fit after the previous line and label.
+        let mut taken_until = plot.x;
+        for (k, &(c, v)) in kept.iter().enumerate() {
+            let Some(label) = &v.label else { continue };
+            let next = kept.get(k + 1).map_or(plot.right(), |n| n.0);
+            let prev = if k > 0 { kept[k - 1].0 + 1 } else { plot.x };
+            let w = label.chars().count() as u16;
+            if c + 1 >= taken_until && c + 1 + w < next {
+                buf.set_string(c + 1, plot.y, label, v.style);
+                taken_until = c + 2 + w;
+            } else if c > w && c - w > prev.max(taken_until) {
+                buf.set_string(c - w, plot.y, label, v.style);
+                taken_until = c + 1;
             }
         }
     }

@@ -99,6 +99,19 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         value(format!("{}", sol.impacts)),
         value(zeno),
     ]));
+    // The state at the cursor, per ball.
+    let now = sol.at(app.t);
+    let seg = sol.segment_at(app.t);
+    for (name, st, phase) in [
+        ("left ", now.left, seg.phase[0]),
+        ("right", now.right, seg.phase[1]),
+    ] {
+        lines.push(Line::from(vec![
+            label(&format!("{name} ")),
+            value(format!("v {:+.3}  u {:+.3} m/s  ", st.v, st.u)),
+            label(phase.name()),
+        ]));
+    }
     // Whole percentages by largest remainder, so the five shares add up to 100.
     let e = sol.energy_at(app.t);
     let shares = percentages(&[

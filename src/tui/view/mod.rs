@@ -38,8 +38,11 @@ pub fn layout(area: Rect) -> Option<Panels> {
     if area.width < MIN_SIZE.0 || area.height < MIN_SIZE.1 {
         return None;
     }
+    // Tall screens show every parameter; short ones scroll the list (7 rows) so the
+    // charts keep room.
+    let top_height = if area.height >= 32 { 12 } else { 9 };
     let [top, middle, status, hints] = Layout::vertical([
-        Constraint::Length(12),
+        Constraint::Length(top_height),
         Constraint::Min(8),
         Constraint::Length(1),
         Constraint::Length(1),

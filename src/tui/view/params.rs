@@ -11,15 +11,19 @@ use crate::tui::app::{App, Mode, PARAMS};
 use crate::tui::theme::Theme;
 use crate::units::{Dimension, show, significant};
 
-/// Screen row of parameter `i` inside the panel at `area` (for mouse clicks).
-pub fn row_of(area: Rect, i: usize) -> u16 {
-    area.y + 1 + i as u16
+/// The first parameter shown when the panel at `area` holds fewer rows than there
+/// are parameters: the list scrolls to keep the selected one in view.
+fn first_shown(area: Rect, selected: usize) -> usize {
+    let rows = usize::from(area.height.saturating_sub(2)).max(1);
+    (selected + 1)
+        .saturating_sub(rows)
+        .min(PARAMS.len().saturating_sub(rows))
 }
 
-/// Which parameter a click at screen row `y` hits.
-pub fn param_at(area: Rect, x: u16, y: u16) -> Option<usize> {
+/// Which parameter a click at (`x`, `y`) hits.
+pub fn param_at(area: Rect, selected: usize, x: u16, y: u16) -> Option<usize> {
     let inside = x > area.x && x + 1 < area.right() && y > area.y && y + 1 < area.bottom();
-    let i = y.checked_sub(area.y + 1)? as usize;
+    let i = first_shown(area, selected) + y.checked_sub(area.y + 1)? as usize;
     (inside && i < PARAMS.len()).then_some(i)
 }
 
@@ -61,12 +65,19 @@ fn note(app: &App, key: Key, narrow: bool) -> String {
 }
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let blk = block(" Parameters ", theme);
+    let shown = usize::from(area.height.saturating_sub(2));
+    let title = if shown < PARAMS.len() {
+        format!(" Parameters ({}/{}) ", app.selected + 1, PARAMS.len())
+    } else {
+        " Parameters ".to_string()
+    };
+    let blk = block(title, theme);
     let inner = blk.inner(area);
     blk.render(area, buf);
     let g = theme.glyphs;
-    for (i, p) in PARAMS.iter().enumerate() {
-        let y = row_of(area, i);
+    let first = first_shown(area, app.selected);
+    for (i, p) in PARAMS.iter().enumerate().skip(first) {
+        let y = inner.y + (i - first) as u16;
         if y >= inner.bottom() {
             break;
         }

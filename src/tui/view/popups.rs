@@ -43,20 +43,47 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     match &app.mode {
         Mode::Normal | Mode::Edit(_) => {}
         Mode::Help => {
-            let mut lines: Vec<Line> = TABLE
-                .iter()
-                .map(|b| {
-                    Line::from(vec![
-                        Span::styled(format!(" {:<16}", b.keys.join(" ")), theme.key),
-                        Span::styled(b.help, theme.text),
-                    ])
-                })
-                .collect();
-            lines.push(Line::from(Span::styled(
-                " Mouse: click a parameter to select it, scroll on it to change it.",
-                theme.dim,
-            )));
-            popup("Keys  (Esc closes)", lines, area, 76, buf, theme);
+            let entries: Vec<(String, &str)> =
+                TABLE.iter().map(|b| (b.keys.join(" "), b.help)).collect();
+            let mouse = " Mouse: click a parameter to select it, scroll on it to change it.";
+            let one_column = entries.len() as u16 + 3 <= area.height.saturating_sub(2);
+            let mut lines: Vec<Line> = if one_column {
+                entries
+                    .iter()
+                    .map(|(keys, help)| {
+                        Line::from(vec![
+                            Span::styled(format!(" {keys:<16}"), theme.key),
+                            Span::styled(*help, theme.text),
+                        ])
+                    })
+                    .collect()
+            } else {
+                // Short screens: two columns, descriptions cut to fit.
+                let half = entries.len().div_ceil(2);
+                let col = usize::from(area.width.saturating_sub(6) / 2);
+                let cell = |(keys, help): &(String, &str)| {
+                    let text: String = format!(" {keys:<12} {help}").chars().take(col).collect();
+                    format!("{text:<col$}")
+                };
+                (0..half)
+                    .map(|i| {
+                        let right = entries.get(i + half).map(cell).unwrap_or_default();
+                        Line::from(Span::styled(
+                            format!("{}{right}", cell(&entries[i])),
+                            theme.text,
+                        ))
+                    })
+                    .collect()
+            };
+            lines.push(Line::from(Span::styled(mouse, theme.dim)));
+            popup(
+                "Keys  (any key closes)",
+                lines,
+                area,
+                if one_column { 76 } else { area.width - 2 },
+                buf,
+                theme,
+            );
         }
         Mode::Picker(selected) => {
             let name_width = app.presets.iter().map(|p| p.name.len()).max().unwrap_or(8);

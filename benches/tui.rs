@@ -1,0 +1,52 @@
+//! Speed of the lab's screen (issue targets: a full 120×40 frame < 1 ms, launch to
+//! first frame < 100 ms, re-solve after a parameter change < 1 ms). BENCHMARKS.md.
+
+use std::hint::black_box;
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use groovelab::preset::Preset;
+use groovelab::scene::Key;
+use groovelab::tui::app::App;
+use groovelab::tui::theme::{Glyphs, Theme};
+use groovelab::tui::view;
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+
+fn app(name: &str) -> App {
+    let p = Preset::load(name).unwrap();
+    let (scene, span) = p.spec.resolve().unwrap();
+    App::new(p, scene, span)
+}
+
+fn tui(c: &mut Criterion) {
+    let theme = Theme::new(Glyphs::UNICODE, false);
+    let area = Rect::new(0, 0, 120, 40);
+    let mut a = app("paper-b4.9");
+    a.t = 0.3;
+    c.bench_function("draw one 120x40 frame (paper-b4.9)", |b| {
+        b.iter(|| {
+            let mut buf = Buffer::empty(area);
+            view::draw(black_box(&a), area, &mut buf, &theme);
+            buf
+        })
+    });
+    c.bench_function("launch: load preset, solve, first 120x40 frame", |b| {
+        b.iter(|| {
+            let a = app(black_box("paper-b4.9"));
+            let mut buf = Buffer::empty(area);
+            view::draw(&a, area, &mut buf, &theme);
+            buf
+        })
+    });
+    let mut a = app("paper-b4.9");
+    let mut wide = false;
+    c.bench_function("re-solve after a parameter change (b 4.9 <-> 5.0 cm)", |b| {
+        b.iter(|| {
+            wide = !wide;
+            a.set_value(Key::Width, if wide { 0.050 } else { 0.049 });
+        })
+    });
+}
+
+criterion_group!(benches, tui);
+criterion_main!(benches);

@@ -1,0 +1,336 @@
+//! The lab without a terminal: key → action → state, and the headless screen that
+//! `render` prints (insta snapshots, checked by eye when recorded).
+
+use groovelab::cli::{RenderArgs, SceneArgs, render};
+use groovelab::derived::Regime;
+use groovelab::preset::Preset;
+use groovelab::scene::Key;
+use groovelab::tui::app::{App, Mode, PARAMS, Status};
+use groovelab::tui::{keys, replay};
+
+fn app(preset: &str) -> App {
+    let p = Preset::load(preset).unwrap();
+    let (scene, span) = p.spec.resolve().unwrap();
+    let mut app = App::new(p, scene, span);
+    app.preset_dir = None;
+    app
+}
+
+fn press(app: &mut App, script: &str) {
+    replay(app, &keys::parse_script(script).unwrap());
+}
+
+fn select(app: &mut App, key: Key) {
+    app.selected = PARAMS.iter().position(|p| p.key == key).unwrap();
+}
+
+fn screen(preset: &str, at: f64, size: (u16, u16), ascii: bool, keys: Option<&str>) -> String {
+    let scene = SceneArgs {
+        preset: Some(preset.to_string()),
+        ..SceneArgs::default()
+    };
+    let args = RenderArgs {
+        at: Some(at),
+        size,
+        keys: keys.map(str::to_string),
+    };
+    render(&scene, &args, ascii).unwrap()
+}
+
+#[test]
+fn arrows_change_the_selected_parameter_and_resolve() {
+    let mut a = app("paper-b3.5");
+    select(&mut a, Key::Width);
+    assert_eq!(a.derived.regime, Regime::Depart);
+    press(&mut a, "right");
+    assert!((a.scene.width - 0.0355).abs() < 1e-12, "{}", a.scene.width);
+    // Coarse steps go to the next 5 mm mark, past b* = 4.26 cm: the balls now come back.
+    press(&mut a, "S-right pgup");
+    assert!((a.scene.width - 0.045).abs() < 1e-12, "{}", a.scene.width);
+    assert_eq!(a.derived.regime, Regime::Recollide);
+    assert!(a.solution.impacts > 1, "re-solved at once");
+    press(&mut a, "pgdn left");
+    assert!((a.scene.width - 0.0395).abs() < 1e-12, "{}", a.scene.width);
+}
+
+#[test]
+fn out_of_range_values_are_refused_not_applied() {
+    let mut a = app("paper-b4.9");
+    select(&mut a, Key::Width);
+    let before = a.scene;
+    press(&mut a, "pgup pgup");
+    assert_eq!(a.scene, before, "b ≥ 2R must not be applied");
+    assert!(
+        matches!(&a.status, Status::Error(e) if e.contains("2R")),
+        "{:?}",
+        a.status
+    );
+    select(&mut a, Key::Restitution);
+    press(&mut a, "right");
+    assert_eq!(a.scene.restitution, 1.0);
+    assert!(matches!(a.status, Status::Error(_)));
+}
+
+#[test]
+fn typed_values_take_units_and_escape_cancels() {
+    let mut a = app("paper-b4.9");
+    select(&mut a, Key::Width);
+    press(&mut a, "enter 4 . 4 c m enter");
+    assert_eq!(a.scene.width, 0.044);
+    press(&mut a, "enter 3 c m esc");
+    assert_eq!(a.scene.width, 0.044, "Esc cancels typing");
+    assert_eq!(a.mode, Mode::Normal);
+    assert!(!a.quit);
+    press(&mut a, "enter 3 k g enter");
+    assert_eq!(a.scene.width, 0.044);
+    assert!(matches!(&a.status, Status::Error(e) if e.contains("unknown unit")));
+    // Height sets both speeds through the run-up formula.
+    select(&mut a, Key::Height);
+    press(&mut a, "enter 5 c m enter");
+    assert!((a.derived.release_height - 0.05).abs() < 1e-12);
+    assert_eq!(a.scene.left.v0, a.scene.right.v0);
+}
+
+#[test]
+fn playback_runs_on_the_clock_at_the_chosen_speed() {
+    let mut a = app("paper-b4.9");
+    assert_eq!(a.t, -0.2);
+    press(&mut a, "space");
+    assert!(a.playing);
+    let speed = a.speed_factor();
+    a.tick(0.5);
+    assert!((a.t - (-0.2 + 0.5 * speed)).abs() < 1e-12);
+    press(&mut a, "+");
+    assert_eq!(a.speed_factor(), 2.0 * speed);
+    press(&mut a, "space");
+    assert!(!a.playing);
+    let t = a.t;
+    press(&mut a, ". .");
+    assert!((a.t - (t + 2.0 * a.frame_step())).abs() < 1e-12);
+    press(&mut a, ",");
+    assert!((a.t - (t + a.frame_step())).abs() < 1e-12);
+    press(&mut a, "end");
+    assert_eq!(a.t, a.solution.t_end);
+    press(&mut a, "home");
+    assert_eq!(a.t, a.solution.t_start);
+    press(&mut a, "r");
+    assert!(a.playing);
+    // Playing past the end stops there.
+    a.tick(1e6);
+    assert_eq!(a.t, a.solution.t_end);
+    assert!(!a.playing);
+}
+
+#[test]
+fn picker_loads_presets_and_quit_keys_quit() {
+    let mut a = app("paper-b4.9");
+    press(&mut a, "p down enter");
+    assert_eq!(a.preset.name, a.presets[3].name);
+    press(&mut a, "p up up esc");
+    assert_eq!(a.mode, Mode::Normal);
+    assert_eq!(a.preset.name, a.presets[3].name);
+    press(&mut a, "?");
+    assert_eq!(a.mode, Mode::Help);
+    press(&mut a, "esc");
+    assert_eq!(a.mode, Mode::Normal);
+    assert!(!a.quit);
+    press(&mut a, "q");
+    assert!(a.quit);
+    let mut a = app("paper-b4.9");
+    press(&mut a, "enter 4 C-c");
+    assert!(a.quit, "Ctrl-C quits even while typing");
+    let mut a = app("paper-b4.9");
+    press(&mut a, "esc");
+    assert!(a.quit);
+}
+
+#[test]
+fn saving_writes_a_loadable_preset_and_never_overwrites_silently() {
+    let dir = std::env::temp_dir().join(format!("groovelab-save-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let mut a = app("inelastic");
+    a.preset_dir = Some(dir.clone());
+    select(&mut a, Key::Mu);
+    press(&mut a, "right");
+    press(&mut a, "s enter");
+    let path = dir.join("my-inelastic.toml");
+    let saved = Preset::load(path.to_str().unwrap()).unwrap();
+    let (scene, _) = saved.spec.resolve().unwrap();
+    assert_eq!(scene, a.scene, "the saved file gives back the same scene");
+    // Saving again asks first; anything but y keeps the file.
+    std::fs::write(&path, "sentinel").unwrap();
+    press(&mut a, "s enter");
+    assert!(matches!(a.mode, Mode::ConfirmOverwrite(_)));
+    press(&mut a, "n");
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), "sentinel");
+    press(&mut a, "s enter y");
+    assert!(std::fs::read_to_string(&path).unwrap().contains("[scene]"));
+    // Bad names are refused.
+    press(
+        &mut a,
+        "s backspace backspace backspace backspace backspace backspace backspace backspace backspace backspace backspace backspace / enter",
+    );
+    assert!(
+        matches!(&a.status, Status::Error(e) if e.contains("name")),
+        "{:?}",
+        a.status
+    );
+    assert!(
+        !dir.join(".my-inelastic.toml.tmp").exists(),
+        "no temporary file left"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn chart_toggles() {
+    let mut a = app("paper-b4.9");
+    press(&mut a, "b");
+    let right = screen_of(&a);
+    assert!(right.contains("right ball"));
+    press(&mut a, "b");
+    assert!(screen_of(&a).contains("both balls"));
+    press(&mut a, "x");
+    assert!(screen_of(&a).contains("x(t) of both balls"));
+}
+
+fn screen_of(a: &App) -> String {
+    let theme = groovelab::tui::theme::Theme::new(groovelab::tui::theme::Glyphs::UNICODE, true);
+    groovelab::tui::view::to_text(a, 120, 40, &theme)
+}
+
+/// Rows of the chart panel (between the top panels and the status line).
+fn chart_rows(screen: &str) -> Vec<&str> {
+    screen.lines().skip(12).take(26).collect()
+}
+
+#[test]
+fn a_parameter_change_moves_the_chart_and_the_regime_text() {
+    let before = screen("paper-b3.5", 0.3, (120, 40), false, None);
+    // Three coarse steps of b (the selected row): 3.5 → 5.0 cm, past b* = 4.26 cm.
+    let after = screen(
+        "paper-b3.5",
+        0.3,
+        (120, 40),
+        false,
+        Some("S-right S-right S-right"),
+    );
+    assert!(before.contains("DEPART"));
+    assert!(after.contains("RECOLLIDE"), "{after}");
+    assert_ne!(chart_rows(&before), chart_rows(&after));
+    assert!(after.contains("5.00 cm"));
+}
+
+fn cursor_column(screen: &str) -> usize {
+    chart_rows(screen)
+        .iter()
+        .filter_map(|row| row.chars().position(|c| c == '┊'))
+        .next()
+        .expect("cursor drawn")
+}
+
+#[test]
+fn the_time_cursor_moves_with_at() {
+    let cols: Vec<usize> = [-0.1, 0.2, 0.5, 0.9]
+        .iter()
+        .map(|&t| cursor_column(&screen("paper-b4.9", t, (120, 40), false, None)))
+        .collect();
+    assert!(cols.windows(2).all(|w| w[0] < w[1]), "{cols:?}");
+}
+
+#[test]
+fn ascii_mode_emits_only_seven_bit_characters() {
+    for p in Preset::built_in() {
+        for t in [-0.1f64, 0.05, 0.3, 10.0] {
+            for size in [(80, 24), (120, 40), (60, 20)] {
+                let (scene, span) = p.spec.resolve().unwrap();
+                let sol = groovelab::engine::solve(&scene, &span);
+                let at = t.min(sol.t_end);
+                for keys in [None, Some("?"), Some("p")] {
+                    let s = screen(&p.name, at, size, true, keys);
+                    assert!(s.is_ascii(), "{} at {at} {size:?} {keys:?}:\n{s}", p.name);
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn a_small_terminal_gets_a_clear_message() {
+    let s = screen("paper-b4.9", 0.0, (79, 30), false, None);
+    assert!(s.contains("terminal too small (need 80×24)"));
+    let s = screen("paper-b4.9", 0.0, (100, 23), true, None);
+    assert!(s.contains("terminal too small (need 80x24)"));
+}
+
+/// Times that show each phase: rolling in, sliding after the impact, rolling again,
+/// and the end (after the accumulation point where there is one).
+fn phase_times(preset: &str) -> Vec<f64> {
+    let p = Preset::load(preset).unwrap();
+    let (scene, span) = p.spec.resolve().unwrap();
+    let sol = groovelab::engine::solve(&scene, &span);
+    let first_roll = sol
+        .events
+        .iter()
+        .find(|e| {
+            e.t > 0.0
+                && matches!(
+                    e.kind,
+                    groovelab::solution::EventKind::Rolling | groovelab::solution::EventKind::Rest
+                )
+        })
+        .map_or(0.1, |e| e.t);
+    vec![-0.1, 0.5 * first_roll, first_roll + 0.02, sol.t_end]
+}
+
+fn snapshot_of(preset: &str, size: (u16, u16), ascii: bool) -> String {
+    phase_times(preset)
+        .into_iter()
+        .map(|t| {
+            format!(
+                "--- at {t:.4} s ---\n{}",
+                screen(preset, t, size, ascii, None)
+            )
+        })
+        .collect()
+}
+
+#[test]
+fn snapshots_of_every_preset() {
+    for p in Preset::built_in() {
+        insta::assert_snapshot!(
+            format!("screen-{}-120x40-unicode", p.name),
+            snapshot_of(&p.name, (120, 40), false)
+        );
+        insta::assert_snapshot!(
+            format!("screen-{}-80x24-ascii", p.name),
+            snapshot_of(&p.name, (80, 24), true)
+        );
+    }
+    insta::assert_snapshot!(
+        "screen-paper-b4.9-80x24-unicode",
+        snapshot_of("paper-b4.9", (80, 24), false)
+    );
+    insta::assert_snapshot!(
+        "screen-paper-b4.9-120x40-ascii",
+        snapshot_of("paper-b4.9", (120, 40), true)
+    );
+}
+
+#[test]
+fn snapshots_of_popups() {
+    for (name, keys) in [
+        ("help", "?"),
+        ("picker", "p down"),
+        ("typing", "enter 4 . 4"),
+    ] {
+        insta::assert_snapshot!(
+            format!("popup-{name}-120x40-unicode"),
+            screen("paper-b4.9", 0.2, (120, 40), false, Some(keys))
+        );
+        insta::assert_snapshot!(
+            format!("popup-{name}-80x24-ascii"),
+            screen("paper-b4.9", 0.2, (80, 24), true, Some(keys))
+        );
+    }
+}
