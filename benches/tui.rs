@@ -40,12 +40,15 @@ fn tui(c: &mut Criterion) {
     });
     let mut a = app("paper-b4.9");
     let mut wide = false;
-    c.bench_function("re-solve after a parameter change (b 4.9 <-> 5.0 cm)", |b| {
-        b.iter(|| {
-            wide = !wide;
-            a.set_value(Key::Width, if wide { 0.050 } else { 0.049 });
-        })
-    });
+    c.bench_function(
+        "re-solve after a parameter change (b 4.9 <-> 5.0 cm)",
+        |b| {
+            b.iter(|| {
+                wide = !wide;
+                a.set_value(Key::Width, if wide { 0.050 } else { 0.049 });
+            })
+        },
+    );
 }
 
 criterion_group!(benches, tui);

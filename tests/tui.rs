@@ -334,3 +334,52 @@ fn snapshots_of_popups() {
         );
     }
 }
+
+#[test]
+fn mouse_clicks_select_and_scrolls_change_parameters() {
+    use groovelab::tui::app::Action;
+    use groovelab::tui::view::{layout, param_at};
+    use ratatui::layout::Rect;
+    let panels = layout(Rect::new(0, 0, 120, 40)).unwrap();
+    let p = panels.params;
+    // Row of the 5th parameter (μ_k): one below the border, four below the first.
+    let hit = param_at(p, 1, p.x + 3, p.y + 1 + 4);
+    assert_eq!(hit, Some(4));
+    assert_eq!(
+        param_at(p, 1, p.x, p.y + 1),
+        None,
+        "the border is not a row"
+    );
+    assert_eq!(param_at(p, 1, p.x + 3, p.y + 30), None);
+    // On a short screen the list scrolls with the selection.
+    let short = layout(Rect::new(0, 0, 80, 24)).unwrap().params;
+    assert_eq!(param_at(short, 9, short.x + 3, short.y + 1), Some(3));
+    let mut a = app("paper-b4.9");
+    a.apply(Action::Select(4));
+    assert_eq!(PARAMS[a.selected].key, Key::Mu);
+    a.apply(Action::ScrollParam(4, true));
+    assert!((a.scene.mu - 0.18).abs() < 1e-12);
+    a.apply(Action::ScrollParam(8, false));
+    assert_eq!(PARAMS[a.selected].key, Key::Restitution);
+    assert!((a.scene.restitution - 0.99).abs() < 1e-12);
+}
+
+#[test]
+fn no_color_means_no_colours() {
+    use groovelab::tui::theme::{Glyphs, Theme};
+    let t = Theme::new(Glyphs::UNICODE, true);
+    let styles = [
+        t.text, t.dim, t.title, t.selected, t.error, t.info, t.left, t.right, t.accent, t.measured,
+        t.event, t.cursor, t.flash, t.groove, t.key,
+    ];
+    for s in styles {
+        assert!(s.fg.is_none() && s.bg.is_none(), "{s:?}");
+    }
+    // With colour the two balls differ, and no text is forced to white or black.
+    let c = Theme::new(Glyphs::UNICODE, false);
+    assert_ne!(c.left.fg, c.right.fg);
+    use ratatui::style::Color;
+    for s in [c.text, c.left, c.right, c.accent, c.title, c.key] {
+        assert!(!matches!(s.fg, Some(Color::White | Color::Black)));
+    }
+}
