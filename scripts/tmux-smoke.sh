@@ -61,4 +61,4 @@ wait_for "RECOLLIDE" 100
 tmux send-keys -t "$SESSION" C-c
 wait_for "exit status 0"
 screen | grep -qx -- "-icanon" && fail "terminal left in raw mode after Ctrl-C"
-echo "tmux smoke: 3 passed, 0 failed"
+echo "smoke: 3 passed, 0 failed"
