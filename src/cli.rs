@@ -9,11 +9,15 @@ use serde::Serialize;
 
 use crate::derived::{Derived, Summary};
 use crate::engine;
+use crate::methods::Method;
 use crate::preset::{self, Preset};
 use crate::scene::{Key, Scene, SceneSpec, Span};
 use crate::solution::{Snapshot, Solution};
 use crate::tui::{self, app::App};
+
+mod methods;
 use crate::units::{Dimension, parse_quantity, show, significant};
+pub use methods::write_atomically;
 
 /// Most samples `--sample` may ask for.
 pub const MAX_SAMPLES: usize = 1_000_000;
@@ -45,6 +49,8 @@ pub enum Command {
     Simulate(SimulateArgs),
     /// The app's screen at one simulated time, as plain text (headless).
     Render(RenderArgs),
+    /// Speed against accuracy of the solution methods (work–precision).
+    Compare(CompareArgs),
     /// List the built-in and user presets.
     Presets,
 }
@@ -57,6 +63,41 @@ pub struct SimulateArgs {
     /// Also give states on a uniform time grid with this step (e.g. 10ms).
     #[arg(long, value_name = "DT", value_parser = time, allow_hyphen_values = true)]
     pub sample: Option<f64>,
+    /// Solution method (time-stepping methods report the events they detect).
+    #[arg(long, value_enum, default_value_t = Method::Exact)]
+    pub method: Method,
+    /// Step size of a fixed-step method or moreau (e.g. 0.1ms) [default: 0.1 ms].
+    #[arg(long, value_name = "S", value_parser = time, allow_hyphen_values = true)]
+    pub dt: Option<f64>,
+    /// Tolerance of rk45 [default: 1e-6].
+    #[arg(long, value_name = "X", value_parser = ratio, allow_hyphen_values = true)]
+    pub tol: Option<f64>,
+    /// Regularisation speed ε of rk4's tanh(s/ε) friction [default: 1mm/s].
+    #[arg(long, value_name = "Q", value_parser = speed, allow_hyphen_values = true)]
+    pub epsilon: Option<f64>,
+}
+
+#[derive(Args, Debug)]
+pub struct CompareArgs {
+    /// Output: a table, JSON rows, or an SVG work–precision diagram.
+    #[arg(long, value_enum, default_value_t = CompareFormat::Table)]
+    pub format: CompareFormat,
+    /// Methods to compare, comma-separated [default: all].
+    #[arg(long, value_enum, value_delimiter = ',')]
+    pub methods: Option<Vec<Method>>,
+    /// Regularisation speed ε of rk4's tanh(s/ε) friction [default: 1mm/s].
+    #[arg(long, value_name = "Q", value_parser = speed, allow_hyphen_values = true)]
+    pub epsilon: Option<f64>,
+    /// Write the output to this file (atomically) instead of stdout.
+    #[arg(long, value_name = "FILE")]
+    pub output: Option<std::path::PathBuf>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum CompareFormat {
+    Table,
+    Json,
+    Svg,
 }
 
 #[derive(Args, Debug)]
@@ -238,6 +279,7 @@ pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
         None | Some(Command::Tui) => Ok(Outcome::Interactive(Box::new(app(&cli.scene)?))),
         Some(Command::Simulate(args)) => simulate(&cli.scene, args).map(Outcome::Print),
         Some(Command::Render(args)) => render(&cli.scene, args, cli.ascii).map(Outcome::Print),
+        Some(Command::Compare(args)) => methods::compare(&cli.scene, args).map(Outcome::Print),
         Some(Command::Presets) => Ok(Outcome::Print(presets())),
     }
 }
@@ -277,6 +319,10 @@ pub fn render(scene_args: &SceneArgs, args: &RenderArgs, ascii: bool) -> Result<
 
 pub fn simulate(scene_args: &SceneArgs, args: &SimulateArgs) -> Result<String, CliError> {
     let (preset, scene, span) = scene_args.resolve()?;
+    if args.method != Method::Exact {
+        let settings = methods::settings(args.dt, args.tol, args.epsilon)?;
+        return methods::simulate_method(&scene, &span, args, &settings);
+    }
     let solution = engine::solve(&scene, &span);
     let samples = match args.sample {
         None => None,

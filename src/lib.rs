@@ -8,6 +8,8 @@ pub mod cli;
 pub mod closed_form;
 pub mod derived;
 pub mod engine;
+pub mod figures;
+pub mod methods;
 pub mod model;
 pub mod preset;
 pub mod scene;

@@ -201,6 +201,17 @@ impl Solution {
         seg.start[i].advanced(a, du, t - seg.t0)
     }
 
+    /// The state just before `t`: differs from [`Solution::at`] only at an impact.
+    pub fn at_left(&self, t: f64) -> Snapshot {
+        let i = self.segments.partition_point(|s| s.t1 < t);
+        let seg = &self.segments[i.min(self.segments.len() - 1)];
+        Snapshot {
+            t,
+            left: Self::ball_at(seg, 0, t),
+            right: Self::ball_at(seg, 1, t),
+        }
+    }
+
     /// Exact state of both balls at time `t`.
     pub fn at(&self, t: f64) -> Snapshot {
         let seg = self.segment_at(t);

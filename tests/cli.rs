@@ -60,6 +60,10 @@ fn every_option_rejects_bad_values() {
         (&["--sample", "1ns"], "unknown unit"),
         (&["--preset", "no-such-preset"], "unknown preset"),
         (&["--format", "xml"], "invalid value"),
+        (&["--method", "leapfrog"], "invalid value"),
+        (&["--method", "euler", "--dt", "0"], "0 < dt"),
+        (&["--method", "rk45", "--tol", "2"], "tol"),
+        (&["--method", "rk4", "--epsilon", "-1mm/s"], "ε > 0"),
         (&["--bogus"], "unexpected argument"),
     ];
     let render_cases: &[(&[&str], &str)] = &[

@@ -20,6 +20,10 @@ fn run_json(preset: &str) -> Value {
         &SimulateArgs {
             format: Format::Json,
             sample: None,
+            method: groovelab::methods::Method::Exact,
+            dt: None,
+            tol: None,
+            epsilon: None,
         },
     )
     .unwrap();

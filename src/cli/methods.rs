@@ -1,0 +1,372 @@
+//! The command line of the solution methods: `simulate --method` and `compare`.
+
+use std::fmt::Write as _;
+
+use serde::Serialize;
+
+use super::{CliError, CompareArgs, CompareFormat, Format, MAX_SAMPLES, SceneArgs, SimulateArgs};
+use crate::derived::Derived;
+use crate::engine;
+use crate::methods::compare::{self as cmp, Row};
+use crate::methods::{self, Method, Settings, Y};
+use crate::scene::{Scene, Span};
+use crate::solution::{Event, Snapshot, Solution};
+use crate::units::{Dimension, show};
+
+/// Settings of a time-stepping run from the options, checked.
+pub(super) fn settings(
+    dt: Option<f64>,
+    tol: Option<f64>,
+    epsilon: Option<f64>,
+) -> Result<Settings, CliError> {
+    let mut s = Settings::default();
+    if let Some(dt) = dt {
+        if !(dt > 0.0 && dt <= 1.0) {
+            return Err(CliError::Invalid(format!(
+                "--dt {} is out of range, allowed 0 < dt ≤ 1 s",
+                show(dt, Dimension::Time)
+            )));
+        }
+        s.step = dt;
+    }
+    if let Some(tol) = tol {
+        if !(1e-14..=0.1).contains(&tol) {
+            return Err(CliError::Invalid(format!(
+                "--tol {tol} is out of range, allowed 1e-14 ≤ tol ≤ 0.1"
+            )));
+        }
+        s.tolerance = tol;
+    }
+    if let Some(eps) = epsilon {
+        if eps <= 0.0 {
+            return Err(CliError::Invalid(format!(
+                "--epsilon {} is out of range, allowed ε > 0",
+                show(eps, Dimension::Speed)
+            )));
+        }
+        s.epsilon = eps;
+    }
+    Ok(s)
+}
+
+/// Collects what a time-stepping run detects: its events, and its states on a grid
+/// (linearly interpolated between steps).
+struct Recorder {
+    events: Vec<Event>,
+    grid: Vec<f64>,
+    samples: Vec<Snapshot>,
+    last: Option<(f64, Y)>,
+    finite: bool,
+}
+
+impl methods::Observer for Recorder {
+    fn step(&mut self, t: f64, y: &Y) -> bool {
+        if !y.iter().all(|v| v.is_finite()) {
+            self.finite = false;
+            return false;
+        }
+        let (t0, y0) = self.last.unwrap_or((t, *y));
+        while let Some(&tg) = self.grid.get(self.samples.len()) {
+            if tg > t {
+                break;
+            }
+            let f = if t > t0 {
+                ((tg - t0) / (t - t0)).clamp(0.0, 1.0)
+            } else {
+                1.0
+            };
+            let yi: Y = std::array::from_fn(|j| y0[j] + f * (y[j] - y0[j]));
+            self.samples.push(Snapshot {
+                t: tg,
+                left: methods::ball(&yi, 0),
+                right: methods::ball(&yi, 1),
+            });
+        }
+        self.last = Some((t, *y));
+        true
+    }
+
+    fn event(&mut self, event: Event) {
+        if self.events.len() < MAX_SAMPLES {
+            self.events.push(event);
+        }
+    }
+}
+
+#[derive(Serialize)]
+struct MethodRunJson<'a> {
+    scene: &'a Scene,
+    span: Span,
+    derived: Derived,
+    method: Method,
+    settings: Settings,
+    steps: usize,
+    rhs_evals: usize,
+    /// Why the run ended early, if it did.
+    stalled: Option<String>,
+    events: &'a [Event],
+    #[serde(skip_serializing_if = "Option::is_none")]
+    samples: Option<&'a [Snapshot]>,
+    #[serde(rename = "final")]
+    final_state: Snapshot,
+}
+
+/// `simulate --method NAME`: one time-stepping run; its events are those it detects.
+pub(super) fn simulate_method(
+    scene: &Scene,
+    span: &Span,
+    args: &SimulateArgs,
+    settings: &Settings,
+) -> Result<String, CliError> {
+    let exact = engine::solve(scene, span);
+    let (t0, t1) = (exact.t_start, exact.t_end);
+    let grid = match args.sample {
+        Some(dt) => super::samples(&exact, dt)?.iter().map(|s| s.t).collect(),
+        None => Vec::new(),
+    };
+    let model = methods::Model::of(scene);
+    let mut rec = Recorder {
+        events: Vec::new(),
+        grid,
+        samples: Vec::new(),
+        last: None,
+        finite: true,
+    };
+    let y0 = methods::start_state(scene, t0);
+    let outcome = methods::integrate(args.method, &model, y0, t0, t1, settings, &mut rec);
+    let stalled = match (&outcome.stalled, rec.finite) {
+        (Some(why), _) => Some(why.clone()),
+        (None, false) => Some(format!(
+            "the state became non-finite at t = {:.6} s",
+            outcome.t
+        )),
+        _ => None,
+    };
+    let final_state = Snapshot {
+        t: outcome.t,
+        left: methods::ball(&outcome.y, 0),
+        right: methods::ball(&outcome.y, 1),
+    };
+    let samples = args.sample.map(|_| rec.samples.as_slice());
+    Ok(match args.format {
+        Format::Json => {
+            let doc = MethodRunJson {
+                scene,
+                span: Span {
+                    t_start: t0,
+                    t_end: Some(t1),
+                },
+                derived: Derived::of(scene),
+                method: args.method,
+                settings: *settings,
+                steps: outcome.steps,
+                rhs_evals: outcome.rhs_evals,
+                stalled,
+                events: &rec.events,
+                samples,
+                final_state,
+            };
+            let mut s = serde_json::to_string_pretty(&doc).expect("plain data serializes");
+            s.push('\n');
+            s
+        }
+        Format::Csv => {
+            let detected = Solution {
+                events: rec.events.clone(),
+                ..exact
+            };
+            super::csv_output(&detected, samples)?
+        }
+        Format::Table => {
+            let mut out = String::new();
+            let _ = writeln!(
+                out,
+                "method   {} (step {}, tolerance {}, ε {}): {} steps, {} right-hand-side evaluations{}",
+                args.method.name(),
+                show(settings.step, Dimension::Time),
+                settings.tolerance,
+                show(settings.epsilon, Dimension::Speed),
+                outcome.steps,
+                outcome.rhs_evals,
+                stalled.map_or(String::new(), |s| format!(", stalled: {s}"))
+            );
+            let _ = writeln!(
+                out,
+                "{:>10}  {:<14} {:<6} {:>9} {:>9} {:>9}  {:>9} {:>9} {:>9}",
+                "t (s)",
+                "event",
+                "ball",
+                "x_L (cm)",
+                "v_L (m/s)",
+                "u_L (m/s)",
+                "x_R (cm)",
+                "v_R (m/s)",
+                "u_R (m/s)"
+            );
+            let mut rows: Vec<_> = rec
+                .events
+                .iter()
+                .map(|e| (e.t, e.kind.name(), e.ball.name(), e.left, e.right))
+                .chain(
+                    rec.samples
+                        .iter()
+                        .map(|s| (s.t, "sample", "", s.left, s.right)),
+                )
+                .chain(std::iter::once((
+                    final_state.t,
+                    "final",
+                    "",
+                    final_state.left,
+                    final_state.right,
+                )))
+                .collect();
+            rows.sort_by(|a, b| a.0.total_cmp(&b.0));
+            for (t, kind, ball, l, r) in rows {
+                let _ = writeln!(
+                    out,
+                    "{t:>10.6}  {kind:<14} {ball:<6} {:>9.4} {:>9.5} {:>9.5}  {:>9.4} {:>9.5} {:>9.5}",
+                    l.x * 100.0,
+                    l.v,
+                    l.u,
+                    r.x * 100.0,
+                    r.v,
+                    r.u
+                );
+            }
+            out
+        }
+    })
+}
+
+#[derive(Serialize)]
+struct CompareJson<'a> {
+    scene: &'a Scene,
+    rows: &'a [Row],
+}
+
+/// `compare`: every method over its sweep, against the exact solution.
+pub(super) fn compare(scene_args: &SceneArgs, args: &CompareArgs) -> Result<String, CliError> {
+    let (_, scene, span) = scene_args.resolve()?;
+    let base = settings(None, None, args.epsilon)?;
+    let methods: Vec<Method> = match &args.methods {
+        Some(m) if !m.is_empty() => {
+            let mut m = m.clone();
+            m.retain(|x| *x != Method::Exact);
+            m.insert(0, Method::Exact);
+            m
+        }
+        _ => std::iter::once(Method::Exact)
+            .chain(Method::TIME_STEPPING)
+            .collect(),
+    };
+    let rows = cmp::sweep(&scene, &span, &methods, &base);
+    let text = match args.format {
+        CompareFormat::Json => {
+            let doc = CompareJson {
+                scene: &scene,
+                rows: &rows,
+            };
+            let mut s = serde_json::to_string_pretty(&doc).expect("plain data serializes");
+            s.push('\n');
+            s
+        }
+        CompareFormat::Table => table(&rows),
+        CompareFormat::Svg => crate::figures::work_precision(&rows, &scene)
+            .map_err(|e| CliError::Invalid(format!("cannot draw the diagram: {e}")))?,
+    };
+    match &args.output {
+        None => Ok(text),
+        Some(path) => {
+            write_atomically(path, &text)?;
+            Ok(format!("wrote {}\n", path.display()))
+        }
+    }
+}
+
+/// Writes `text` to `path` through a temporary file and a rename, so a failure never
+/// leaves a half-written file.
+pub fn write_atomically(path: &std::path::Path, text: &str) -> Result<(), CliError> {
+    let dir = path
+        .parent()
+        .filter(|d| !d.as_os_str().is_empty())
+        .unwrap_or(std::path::Path::new("."));
+    let name = path
+        .file_name()
+        .map(|n| n.to_string_lossy().to_string())
+        .unwrap_or_default();
+    let tmp = dir.join(format!(".{name}.{}.tmp", std::process::id()));
+    let result = std::fs::write(&tmp, text).and_then(|()| std::fs::rename(&tmp, path));
+    if result.is_err() {
+        let _ = std::fs::remove_file(&tmp);
+    }
+    result.map_err(|e| CliError::Invalid(format!("cannot write {}: {e}", path.display())))
+}
+
+fn table(rows: &[Row]) -> String {
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "{:<17} {:>8} {:>8} {:<9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>10} {:>10}",
+        "method",
+        "step s",
+        "tol",
+        "status",
+        "err_v",
+        "err_u",
+        "err_t'",
+        "err_end",
+        "E drift",
+        "steps",
+        "min s",
+        "median s"
+    );
+    let opt = |v: Option<f64>| v.map_or("-".to_string(), |v| format!("{v:.1e}"));
+    for r in rows {
+        let _ = writeln!(
+            out,
+            "{:<17} {:>8} {:>8} {:<9} {:>9.2e} {:>9.2e} {:>9} {:>9.2e} {:>9.2e} {:>9} {:>10.3e} {:>10.3e}",
+            r.method.name(),
+            opt(r.step),
+            opt(r.tolerance),
+            r.status.name(),
+            r.err_v,
+            r.err_u,
+            opt(r.err_t_roll),
+            r.err_final,
+            r.energy_drift,
+            r.steps,
+            r.time_min_s,
+            r.time_median_s
+        );
+    }
+    let _ = writeln!(
+        out,
+        "\nerrors in m/s (err_t' in s) against the exact solution at each method's own steps;\n\
+         E drift: largest energy excess over the exact run, relative to the start;\n\
+         times: minimum and median of repeated runs after one untimed warm-up."
+    );
+    match cmp::headline(rows, 1e-6) {
+        Some((factor, best, exact)) => {
+            let setting = match (best.step, best.tolerance) {
+                (Some(h), _) => format!("h = {h:.1e} s"),
+                (None, Some(t)) => format!("tol = {t:.0e}"),
+                _ => String::new(),
+            };
+            let _ = writeln!(
+                out,
+                "headline: exact takes {:.2e} s; the fastest run reaching err_v ≤ 1e-6 m/s with status ok is {} ({setting}) at {:.2e} s: exact is {:.0}× faster.",
+                exact.time_median_s,
+                best.method.name(),
+                best.time_median_s,
+                factor
+            );
+        }
+        None => {
+            let _ = writeln!(
+                out,
+                "headline: no time-stepping run reached err_v ≤ 1e-6 m/s with status ok in this sweep."
+            );
+        }
+    }
+    out
+}

@@ -1,0 +1,389 @@
+//! Speed against accuracy: every method over a sweep of step sizes (or tolerances),
+//! each run measured against the exact solution, classified (`ok`, `chatter`,
+//! `unstable`, `stalled`) and timed.
+
+use std::time::Instant;
+
+use serde::Serialize;
+
+use super::{Method, Model, Observer, Outcome, Settings, Y, integrate, start_state};
+use crate::model::Phase;
+use crate::scene::{Scene, Span};
+use crate::solution::{Event, EventKind, Solution, Who};
+
+/// How a run ended (interface.md).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Status {
+    /// Converges as it should.
+    Ok,
+    /// The slip never settles: it flips sign while the ball should roll.
+    Chatter,
+    /// Blow-up, energy growth, or a rolling state that does not hold.
+    Unstable,
+    /// Step-size collapse or step budget hit (e.g. at an accumulation point).
+    Stalled,
+}
+
+impl Status {
+    pub fn name(self) -> &'static str {
+        match self {
+            Status::Ok => "ok",
+            Status::Chatter => "chatter",
+            Status::Unstable => "unstable",
+            Status::Stalled => "stalled",
+        }
+    }
+}
+
+/// One run of the sweep (interface.md's row, plus the rolling-phase slip).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Row {
+    pub method: Method,
+    pub step: Option<f64>,
+    pub tolerance: Option<f64>,
+    pub status: Status,
+    /// max |Δv_cm| over the run, m/s, away from impacts (see `err_t_impact`).
+    pub err_v: f64,
+    /// max |Δv_t| over the run, m/s, away from impacts.
+    pub err_u: f64,
+    /// Error of the left ball's first rolling time after the impact, s.
+    pub err_t_roll: Option<f64>,
+    /// Largest timing error of an impact (the k-th detected against the k-th exact), s.
+    pub err_t_impact: Option<f64>,
+    /// Largest velocity error at the end of the run, m/s.
+    pub err_final: f64,
+    /// Largest energy excess over the exact solution, relative to the initial energy.
+    pub energy_drift: f64,
+    /// Largest |slip| while the exact ball rolls (after a short settling time), m/s.
+    pub slip_rolling: f64,
+    pub steps: usize,
+    pub rhs_evals: usize,
+    pub time_min_s: f64,
+    pub time_median_s: f64,
+    /// Why a run stalled.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub note: Option<String>,
+}
+
+/// Compares a run with the exact solution step by step.
+struct Metrics<'a> {
+    exact: &'a Solution,
+    model: Model,
+    e0: f64,
+    err_v: f64,
+    err_u: f64,
+    drift: f64,
+    gain: f64,
+    nonfinite: bool,
+    first_roll: Option<f64>,
+    /// Time to let a regularised slip settle after the exact ball starts rolling.
+    settle: f64,
+    last_slip: [Option<f64>; 2],
+    flips: usize,
+    slip_rolling: f64,
+    /// Time windows around impacts left out of the error maxima (sorted), and where
+    /// the scan through them stands.
+    windows: Vec<(f64, f64)>,
+    next_window: usize,
+}
+
+impl Observer for Metrics<'_> {
+    fn step(&mut self, t: f64, y: &Y) -> bool {
+        if !y.iter().all(|v| v.is_finite()) {
+            self.nonfinite = true;
+            return false;
+        }
+        // Near an impact a jump placed a little early or late makes any method's
+        // error there the size of the jump: those windows are left out of the maxima,
+        // and the timing is reported as err_t_impact instead.
+        while self.next_window < self.windows.len() && self.windows[self.next_window].1 < t {
+            self.next_window += 1;
+        }
+        let impact_step = self
+            .windows
+            .get(self.next_window)
+            .is_some_and(|w| w.0 <= t && t <= w.1);
+        let ex = self.exact.at(t);
+        let ex_left = self.exact.at_left(t);
+        let seg = self.exact.segment_at(t);
+        for (i, (e, el)) in [(ex.left, ex_left.left), (ex.right, ex_left.right)]
+            .into_iter()
+            .enumerate()
+        {
+            if !impact_step {
+                let dv = (y[3 * i + 1] - e.v).abs().min((y[3 * i + 1] - el.v).abs());
+                let du = (y[3 * i + 2] - e.u).abs().min((y[3 * i + 2] - el.u).abs());
+                self.err_v = self.err_v.max(dv);
+                self.err_u = self.err_u.max(du);
+            }
+            let slip = y[3 * i + 1] - y[3 * i + 2];
+            let rolling =
+                !impact_step && seg.phase[i] == Phase::Rolling && t - seg.t0 > self.settle;
+            if rolling {
+                self.slip_rolling = self.slip_rolling.max(slip.abs());
+                if let Some(prev) = self.last_slip[i]
+                    && prev * slip < 0.0
+                {
+                    self.flips += 1;
+                }
+                self.last_slip[i] = Some(slip);
+            } else {
+                self.last_slip[i] = None;
+            }
+        }
+        let e = self.model.energy(y);
+        let e_exact = self.exact.energy_at(t).kinetic();
+        if self.e0 > 0.0 {
+            self.drift = self.drift.max((e - e_exact) / self.e0);
+            self.gain = self.gain.max(e / self.e0 - 1.0);
+        }
+        true
+    }
+
+    fn event(&mut self, event: Event) {
+        if event.kind == EventKind::Rolling && event.ball == Who::Left && event.t > 0.0 {
+            self.first_roll.get_or_insert(event.t);
+        }
+    }
+}
+
+/// Collects the times of the impacts a method detects.
+struct Impacts(Vec<f64>);
+
+impl Observer for Impacts {
+    fn step(&mut self, _t: f64, y: &Y) -> bool {
+        y.iter().all(|v| v.is_finite())
+    }
+
+    fn event(&mut self, event: Event) {
+        if event.kind == EventKind::Collision {
+            self.0.push(event.t);
+        }
+    }
+}
+
+/// Windows around impacts that the error maxima leave out: from the k-th exact impact
+/// to the method's k-th impact, widened by two steps; unpaired impacts get ±2 steps.
+/// Also the largest timing error of the paired impacts.
+fn impact_windows(exact: &[f64], method: &[f64], step: f64) -> (Vec<(f64, f64)>, Option<f64>) {
+    let pad = 2.0 * step;
+    let mut windows = Vec::new();
+    let mut worst: Option<f64> = None;
+    for k in 0..exact.len().max(method.len()) {
+        match (exact.get(k), method.get(k)) {
+            (Some(&a), Some(&b)) => {
+                windows.push((a.min(b) - pad, a.max(b) + pad));
+                worst = Some(worst.unwrap_or(0.0).max((a - b).abs()));
+            }
+            (Some(&a), None) | (None, Some(&a)) => windows.push((a - pad, a + pad)),
+            (None, None) => {}
+        }
+    }
+    windows.sort_by(|a, b| a.0.total_cmp(&b.0));
+    (windows, worst)
+}
+
+/// Only checks that the state stays finite: the observer of timed runs.
+struct Finite;
+
+impl Observer for Finite {
+    fn step(&mut self, _t: f64, y: &Y) -> bool {
+        y.iter().all(|v| v.is_finite())
+    }
+}
+
+/// The exact engine's first rolling (or rest) time of the left ball after the impact.
+fn exact_roll(sol: &Solution) -> Option<f64> {
+    sol.events
+        .iter()
+        .find(|e| {
+            e.t > 0.0
+                && e.ball == Who::Left
+                && matches!(e.kind, EventKind::Rolling | EventKind::Rest)
+        })
+        .map(|e| e.t)
+}
+
+/// Minimum and median of repeated timings of `f` (after one untimed warm-up), with
+/// more repeats for quick runs.
+pub fn time<T>(mut f: impl FnMut() -> T) -> (f64, f64) {
+    std::hint::black_box(f());
+    let mut times = Vec::new();
+    let budget = Instant::now();
+    while times.len() < 3 || (times.len() < 15 && budget.elapsed().as_secs_f64() < 0.05) {
+        let start = Instant::now();
+        std::hint::black_box(f());
+        times.push(start.elapsed().as_secs_f64());
+    }
+    times.sort_by(f64::total_cmp);
+    (times[0], times[times.len() / 2])
+}
+
+/// One run of `method` on `scene` over `span`, measured against `exact`.
+pub fn run(
+    method: Method,
+    scene: &Scene,
+    span: &Span,
+    settings: &Settings,
+    exact: &Solution,
+) -> Row {
+    let model = Model::of(scene);
+    let (t0, t1) = (exact.t_start, exact.t_end);
+    if method == Method::Exact {
+        let (time_min_s, time_median_s) = time(|| crate::engine::solve(scene, span));
+        return Row {
+            method,
+            step: None,
+            tolerance: None,
+            status: Status::Ok,
+            err_v: 0.0,
+            err_u: 0.0,
+            err_t_roll: exact_roll(exact).map(|_| 0.0),
+            err_t_impact: Some(0.0),
+            err_final: 0.0,
+            energy_drift: 0.0,
+            slip_rolling: 0.0,
+            steps: exact.segments.len(),
+            rhs_evals: 0,
+            time_min_s,
+            time_median_s,
+            note: None,
+        };
+    }
+    let y0 = start_state(scene, t0);
+    let settle = if method.regularised() {
+        20.0 * settings.epsilon / model.slip_rate()
+    } else {
+        2.0 * settings.step
+    };
+    // First pass: where the method puts its impacts, to pair them with the exact ones.
+    let mut found = Impacts(Vec::new());
+    integrate(method, &model, y0, t0, t1, settings, &mut found);
+    let exact_impacts: Vec<f64> = exact
+        .events
+        .iter()
+        .filter(|e| {
+            matches!(
+                e.kind,
+                EventKind::Collision | EventKind::ZenoRest | EventKind::ZenoContact
+            )
+        })
+        .map(|e| e.t)
+        .collect();
+    let (windows, err_t_impact) = impact_windows(&exact_impacts, &found.0, settings.step);
+    let mut metrics = Metrics {
+        exact,
+        model,
+        e0: model.energy(&y0),
+        err_v: 0.0,
+        err_u: 0.0,
+        drift: 0.0,
+        gain: 0.0,
+        nonfinite: false,
+        first_roll: None,
+        settle,
+        last_slip: [None; 2],
+        flips: 0,
+        slip_rolling: 0.0,
+        windows: windows.clone(),
+        next_window: 0,
+    };
+    let outcome: Outcome = integrate(method, &model, y0, t0, t1, settings, &mut metrics);
+    let end = exact.at(outcome.t);
+    let err_final = [
+        outcome.y[1] - end.left.v,
+        outcome.y[2] - end.left.u,
+        outcome.y[4] - end.right.v,
+        outcome.y[5] - end.right.u,
+    ]
+    .iter()
+    .fold(0.0_f64, |a, d| a.max(d.abs()));
+    let status = if metrics.nonfinite || metrics.gain > 1e-6 {
+        Status::Unstable
+    } else if outcome.stalled.is_some() {
+        Status::Stalled
+    } else if method.regularised() && metrics.slip_rolling > 0.01 * settings.epsilon {
+        // The exact regularised slip would have decayed by e^-20 by now.
+        Status::Unstable
+    } else if metrics.flips > 3 {
+        Status::Chatter
+    } else {
+        Status::Ok
+    };
+    let (time_min_s, time_median_s) = if outcome.stalled.is_some() && outcome.steps == 0 {
+        (0.0, 0.0)
+    } else {
+        time(|| integrate(method, &model, y0, t0, t1, settings, &mut Finite))
+    };
+    let exact_roll = exact_roll(exact);
+    Row {
+        method,
+        step: (!method.adaptive()).then_some(settings.step),
+        tolerance: method.adaptive().then_some(settings.tolerance),
+        status,
+        err_v: metrics.err_v,
+        err_u: metrics.err_u,
+        err_t_roll: match (metrics.first_roll, exact_roll) {
+            (Some(a), Some(b)) => Some((a - b).abs()),
+            _ => None,
+        },
+        err_t_impact,
+        err_final: if err_final.is_finite() {
+            err_final
+        } else {
+            f64::INFINITY
+        },
+        energy_drift: metrics.drift,
+        slip_rolling: metrics.slip_rolling,
+        steps: outcome.steps,
+        rhs_evals: outcome.rhs_evals,
+        time_min_s,
+        time_median_s,
+        note: outcome.stalled,
+    }
+}
+
+/// The default sweep: two steps per decade from 10 ms to 1 µs, tolerances 1e-2…1e-10.
+pub fn default_sweep(method: Method) -> Vec<f64> {
+    match method {
+        Method::Exact => vec![0.0],
+        Method::Rk45 => (2..=10).map(|e| 10f64.powi(-e)).collect(),
+        _ => (4..=12).map(|i| 10f64.powf(-(i as f64) / 2.0)).collect(),
+    }
+}
+
+/// Runs every method in `methods` over its sweep.
+pub fn sweep(scene: &Scene, span: &Span, methods: &[Method], base: &Settings) -> Vec<Row> {
+    let exact = crate::engine::solve(scene, span);
+    let mut rows = Vec::new();
+    for &method in methods {
+        for value in default_sweep(method) {
+            let settings = if method.adaptive() {
+                Settings {
+                    tolerance: value,
+                    step: 1e-3,
+                    ..*base
+                }
+            } else {
+                Settings {
+                    step: value,
+                    ..*base
+                }
+            };
+            rows.push(run(method, scene, span, &settings, &exact));
+        }
+    }
+    rows
+}
+
+/// The headline: how many times faster `exact` is than the fastest time-stepping run
+/// that reached `accuracy` (m/s) in err_v with status ok.
+pub fn headline(rows: &[Row], accuracy: f64) -> Option<(f64, &Row, &Row)> {
+    let exact = rows.iter().find(|r| r.method == Method::Exact)?;
+    let best = rows
+        .iter()
+        .filter(|r| r.method != Method::Exact && r.status == Status::Ok && r.err_v <= accuracy)
+        .min_by(|a, b| a.time_median_s.total_cmp(&b.time_median_s))?;
+    Some((best.time_median_s / exact.time_median_s, best, exact))
+}

@@ -1,0 +1,383 @@
+//! Adaptive Dormand–Prince 5(4) as a hybrid-ODE solver, the approach of scipy's
+//! `solve_ivp` events or DifferentialEquations.jl callbacks: integrate the smooth
+//! dynamics of the current mode (each ball sliding with a fixed slip sign, or
+//! rolling), locate the zeros of the switching functions (slip, gap, rolling speed) on
+//! the dense output by bisection, apply the jump, restart. Its weak point is the
+//! accumulation of impacts: every one of infinitely many events costs steps.
+
+use super::{EventTracker, Model, Observer, Outcome, Settings, Y, collide, gap};
+
+// The Dormand–Prince 5(4) tableau with Shampine's dense output (as scipy's RK45).
+// The system is autonomous, so the stage times only serve the tableau check.
+#[cfg_attr(not(test), allow(dead_code))]
+const C: [f64; 7] = [0.0, 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0, 1.0, 1.0];
+const A: [[f64; 6]; 7] = [
+    [0.0; 6],
+    [1.0 / 5.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+    [3.0 / 40.0, 9.0 / 40.0, 0.0, 0.0, 0.0, 0.0],
+    [44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0, 0.0, 0.0, 0.0],
+    [
+        19372.0 / 6561.0,
+        -25360.0 / 2187.0,
+        64448.0 / 6561.0,
+        -212.0 / 729.0,
+        0.0,
+        0.0,
+    ],
+    [
+        9017.0 / 3168.0,
+        -355.0 / 33.0,
+        46732.0 / 5247.0,
+        49.0 / 176.0,
+        -5103.0 / 18656.0,
+        0.0,
+    ],
+    [
+        35.0 / 384.0,
+        0.0,
+        500.0 / 1113.0,
+        125.0 / 192.0,
+        -2187.0 / 6784.0,
+        11.0 / 84.0,
+    ],
+];
+const B: [f64; 7] = [
+    35.0 / 384.0,
+    0.0,
+    500.0 / 1113.0,
+    125.0 / 192.0,
+    -2187.0 / 6784.0,
+    11.0 / 84.0,
+    0.0,
+];
+const E: [f64; 7] = [
+    -71.0 / 57600.0,
+    0.0,
+    71.0 / 16695.0,
+    -71.0 / 1920.0,
+    17253.0 / 339200.0,
+    -22.0 / 525.0,
+    1.0 / 40.0,
+];
+const P: [[f64; 4]; 7] = [
+    [
+        1.0,
+        -8048581381.0 / 2820520608.0,
+        8663915743.0 / 2820520608.0,
+        -12715105075.0 / 11282082432.0,
+    ],
+    [0.0, 0.0, 0.0, 0.0],
+    [
+        0.0,
+        131558114200.0 / 32700410799.0,
+        -68118460800.0 / 10900136933.0,
+        87487479700.0 / 32700410799.0,
+    ],
+    [
+        0.0,
+        -1754552775.0 / 470086768.0,
+        14199869525.0 / 1410260304.0,
+        -10690763975.0 / 1880347072.0,
+    ],
+    [
+        0.0,
+        127303824393.0 / 49829197408.0,
+        -318862633887.0 / 49829197408.0,
+        701980252875.0 / 199316789632.0,
+    ],
+    [
+        0.0,
+        -282668133.0 / 205662961.0,
+        2019193451.0 / 616988883.0,
+        -1453857185.0 / 822651844.0,
+    ],
+    [
+        0.0,
+        40617522.0 / 29380423.0,
+        -110615467.0 / 29380423.0,
+        69997945.0 / 29380423.0,
+    ],
+];
+
+/// Event budget: past it an accumulation of impacts is reported as `stalled`.
+const MAX_IMPACTS: usize = 2_000;
+
+/// Each ball's mode: sliding with slip sign ±1, or rolling (0).
+type Modes = [i8; 2];
+
+fn modes_of(y: &Y, eps: f64) -> Modes {
+    std::array::from_fn(|i| {
+        let s = y[3 * i + 1] - y[3 * i + 2];
+        if s > eps {
+            1
+        } else if s < -eps {
+            -1
+        } else {
+            0
+        }
+    })
+}
+
+/// Right-hand side in fixed modes (constant accelerations; rolling resistance while
+/// rolling, in the direction of motion at the mode's start).
+fn rhs(m: &Model, modes: &Modes, roll_dir: &[f64; 2], y: &Y) -> Y {
+    let mut d = [0.0; 6];
+    for i in 0..2 {
+        d[3 * i] = y[3 * i + 1];
+        let (a, du) = if modes[i] == 0 {
+            let a = -roll_dir[i] * m.rolling_resistance * m.g;
+            (a, a)
+        } else {
+            let s = f64::from(modes[i]);
+            (-s * m.mu * m.g / m.k, s * 2.5 * m.k * m.mu * m.g)
+        };
+        d[3 * i + 1] = a;
+        d[3 * i + 2] = du;
+    }
+    d
+}
+
+/// The switching functions of the current modes: slip of sliding balls, speed of
+/// rolling balls with rolling resistance, and the gap.
+fn switches(m: &Model, modes: &Modes, y: &Y) -> [f64; 3] {
+    let f = |i: usize| {
+        if modes[i] != 0 {
+            y[3 * i + 1] - y[3 * i + 2]
+        } else if m.rolling_resistance > 0.0 {
+            y[3 * i + 1]
+        } else {
+            f64::NAN
+        }
+    };
+    [f(0), f(1), gap(m, y)]
+}
+
+/// Sign of a speed, 0 for 0 (`f64::signum(0.0)` is 1).
+fn direction(v: f64) -> f64 {
+    if v == 0.0 { 0.0 } else { v.signum() }
+}
+
+fn crossed(which: usize, g0: f64, g1: f64) -> bool {
+    if g0.is_nan() || g1.is_nan() {
+        return false;
+    }
+    if which == 2 {
+        g0 > 0.0 && g1 <= 0.0
+    } else {
+        g0 != 0.0 && (g0 * g1 < 0.0 || g1 == 0.0)
+    }
+}
+
+pub(super) fn integrate(
+    m: &Model,
+    y0: Y,
+    t0: f64,
+    t1: f64,
+    s: &Settings,
+    obs: &mut dyn Observer,
+) -> Outcome {
+    let scale = y0
+        .iter()
+        .skip(1)
+        .step_by(3)
+        .map(|v| v.abs())
+        .fold(1e-3, f64::max);
+    let (rtol, atol) = (s.tolerance, s.tolerance * scale);
+    let eps_v = 1e-12 * scale;
+    let mut out = Outcome {
+        steps: 0,
+        rhs_evals: 0,
+        stalled: None,
+        aborted: false,
+        t: t0,
+        y: y0,
+    };
+    let mut tracker = EventTracker::new(0.0);
+    if !obs.step(t0, &y0) {
+        out.aborted = true;
+        return out;
+    }
+    tracker.step(t0, &y0, obs);
+    let (mut t, mut y) = (t0, y0);
+    let mut modes = modes_of(&y, eps_v);
+    let mut roll_dir = [direction(y[1]), direction(y[4])];
+    let mut h = s.step.min(t1 - t0);
+    let mut k = [[0.0; 6]; 7];
+    let mut fresh = true;
+    let mut impacts = 0;
+    while t < t1 {
+        if out.steps >= s.max_steps {
+            out.stalled = Some(format!(
+                "step budget of {} reached at t = {t:.6} s",
+                s.max_steps
+            ));
+            break;
+        }
+        if impacts >= MAX_IMPACTS {
+            out.stalled = Some(format!(
+                "{impacts} impacts by t = {t:.9} s: they accumulate faster than steps can follow"
+            ));
+            break;
+        }
+        if h < 1e-14 * t.abs().max(1.0) {
+            out.stalled = Some(format!("step size collapsed to {h:.1e} s at t = {t:.9} s"));
+            break;
+        }
+        h = h.min(t1 - t);
+        if gap(m, &y) <= 0.0 && y[1] > y[4] {
+            // Touching and closing: an impact now (the last one of a series left the
+            // balls in touch with a sliver of closing speed).
+            collide(m, &mut y);
+            tracker.impact(t, &y, obs);
+            impacts += 1;
+            modes = modes_of(&y, eps_v);
+            roll_dir = [direction(y[1]), direction(y[4])];
+            fresh = true;
+            continue;
+        }
+        if fresh {
+            k[0] = rhs(m, &modes, &roll_dir, &y);
+            out.rhs_evals += 1;
+            fresh = false;
+        }
+        for i in 1..7 {
+            let yi: Y =
+                std::array::from_fn(|j| y[j] + h * (0..i).map(|l| A[i][l] * k[l][j]).sum::<f64>());
+            k[i] = rhs(m, &modes, &roll_dir, &yi);
+        }
+        out.rhs_evals += 6;
+        let y_new: Y =
+            std::array::from_fn(|j| y[j] + h * (0..7).map(|i| B[i] * k[i][j]).sum::<f64>());
+        let err = (0..6)
+            .map(|j| {
+                let e = h * (0..7).map(|i| E[i] * k[i][j]).sum::<f64>();
+                let sc = atol + rtol * y[j].abs().max(y_new[j].abs());
+                (e / sc).powi(2)
+            })
+            .sum::<f64>()
+            / 6.0;
+        let err = err.sqrt();
+        if err > 1.0 {
+            h *= (0.9 * err.powf(-0.2)).max(0.2);
+            out.steps += 1;
+            continue;
+        }
+        // Accepted: look for switching-function zeros inside the step.
+        let dense = |theta: f64| -> Y {
+            let q = [theta, theta * theta, theta.powi(3), theta.powi(4)];
+            std::array::from_fn(|j| {
+                y[j] + h
+                    * (0..7)
+                        .map(|i| k[i][j] * (0..4).map(|p| P[i][p] * q[p]).sum::<f64>())
+                        .sum::<f64>()
+            })
+        };
+        let g0 = switches(m, &modes, &y);
+        // Sample inside the step too, so a gap that dips below zero and back is seen.
+        let mut first: Option<(f64, usize)> = None;
+        for (which, &g_start) in g0.iter().enumerate() {
+            let mut prev = (0.0, g_start);
+            for theta in [0.25, 0.5, 0.75, 1.0] {
+                let g = if theta == 1.0 {
+                    switches(m, &modes, &y_new)[which]
+                } else {
+                    switches(m, &modes, &dense(theta))[which]
+                };
+                if crossed(which, prev.1, g) {
+                    let (mut lo, mut hi) = (prev.0, theta);
+                    // Bisect to a time error below the tolerance.
+                    while (hi - lo) * h > s.tolerance * 1e-3 && hi - lo > 1e-15 {
+                        let mid = 0.5 * (lo + hi);
+                        let gm = switches(m, &modes, &dense(mid))[which];
+                        if crossed(which, prev.1, gm) {
+                            hi = mid;
+                        } else {
+                            lo = mid;
+                        }
+                    }
+                    if first.is_none_or(|(f, _)| hi < f) {
+                        first = Some((hi, which));
+                    }
+                    break;
+                }
+                prev = (theta, g);
+            }
+        }
+        out.steps += 1;
+        if first.is_none() && switches(m, &modes, &y_new)[2] < 0.0 {
+            // The balls overlap at the end of a step with no closing located: a whole
+            // cycle fitted inside the step (or they press together). Retry smaller.
+            h *= 0.5;
+            continue;
+        }
+        match first {
+            None => {
+                t += h;
+                y = y_new;
+                k[0] = k[6];
+                let factor = if err == 0.0 {
+                    5.0
+                } else {
+                    (0.9 * err.powf(-0.2)).clamp(0.2, 5.0)
+                };
+                h *= factor;
+            }
+            Some((theta, which)) => {
+                t += theta * h;
+                y = dense(theta);
+                if which == 2 {
+                    collide(m, &mut y);
+                    // The gap is closed: put the balls exactly in touch.
+                    let overlap = gap(m, &y);
+                    y[3] -= overlap;
+                    tracker.impact(t, &y, obs);
+                    impacts += 1;
+                } else {
+                    let i = which;
+                    if modes[i] != 0 {
+                        y[3 * i + 2] = y[3 * i + 1]; // rolls again
+                    } else {
+                        y[3 * i + 1] = 0.0; // rolled to rest
+                        y[3 * i + 2] = 0.0;
+                    }
+                }
+                modes = modes_of(&y, eps_v);
+                for i in 0..2 {
+                    if modes[i] == 0 {
+                        y[3 * i + 2] = y[3 * i + 1];
+                    }
+                }
+                roll_dir = [direction(y[1]), direction(y[4])];
+                fresh = true;
+            }
+        }
+        tracker.step(t, &y, obs);
+        if !obs.step(t, &y) {
+            out.aborted = true;
+            break;
+        }
+    }
+    out.t = t;
+    out.y = y;
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tableau_is_consistent() {
+        for i in 0..7 {
+            let row: f64 = A[i].iter().sum();
+            assert!((row - C[i]).abs() < 1e-14, "row {i}");
+        }
+        assert!((B.iter().sum::<f64>() - 1.0).abs() < 1e-14);
+        assert!(E.iter().sum::<f64>().abs() < 1e-14);
+        // The dense output at θ = 1 is the 5th-order step.
+        for i in 0..7 {
+            let at_one: f64 = P[i].iter().sum();
+            assert!((at_one - B[i]).abs() < 1e-12, "P row {i}");
+        }
+    }
+}
