@@ -18,7 +18,8 @@ fn colour(m: Method) -> RGBColor {
 }
 
 /// Log error (max |Δv_cm|) against log time, one line per method; runs that are not
-/// `ok` are drawn as hollow markers so failures stay visible.
+/// `ok` are drawn as hollow markers so failures stay visible. The exact engine, with
+/// no error, is the vertical line at its time.
 pub fn work_precision(rows: &[Row], scene: &Scene) -> Result<String, Box<dyn std::error::Error>> {
     let mut svg = String::new();
     {
@@ -26,6 +27,7 @@ pub fn work_precision(rows: &[Row], scene: &Scene) -> Result<String, Box<dyn std
         root.fill(&WHITE)?;
         let pts: Vec<(f64, f64)> = rows
             .iter()
+            .filter(|r| r.method != Method::Exact || r.err_v > 0.0)
             .map(|r| (r.time_median_s.max(1e-9), r.err_v.max(1e-16)))
             .filter(|p| p.0.is_finite() && p.1.is_finite())
             .collect();
@@ -55,8 +57,23 @@ pub fn work_precision(rows: &[Row], scene: &Scene) -> Result<String, Box<dyn std
             .configure_mesh()
             .x_desc("time per run (s, median)")
             .y_desc("max |v_cm - exact| (m/s)")
+            .x_label_formatter(&|v| format!("{v:.0e}"))
+            .y_label_formatter(&|v| format!("{v:.0e}"))
             .draw()?;
-        for m in std::iter::once(Method::Exact).chain(Method::TIME_STEPPING) {
+        // The exact engine has no error to plot: a vertical line at its time.
+        if let Some(exact) = rows.iter().find(|r| r.method == Method::Exact) {
+            let t = exact.time_median_s.max(1e-9);
+            chart
+                .draw_series(LineSeries::new(
+                    vec![(t, lo_e), (t, hi_e)],
+                    BLACK.stroke_width(2),
+                ))?
+                .label("exact (error 0)")
+                .legend(|(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 20, y)], BLACK.stroke_width(2))
+                });
+        }
+        for m in Method::TIME_STEPPING {
             let mine: Vec<&Row> = rows.iter().filter(|r| r.method == m).collect();
             if mine.is_empty() {
                 continue;
@@ -87,7 +104,7 @@ pub fn work_precision(rows: &[Row], scene: &Scene) -> Result<String, Box<dyn std
             .configure_series_labels()
             .border_style(BLACK)
             .background_style(WHITE.mix(0.9))
-            .position(SeriesLabelPosition::UpperRight)
+            .position(SeriesLabelPosition::LowerRight)
             .draw()?;
         root.present()?;
     }

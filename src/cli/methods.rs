@@ -354,11 +354,11 @@ fn table(rows: &[Row]) -> String {
             };
             let _ = writeln!(
                 out,
-                "headline: exact takes {:.2e} s; the fastest run reaching err_v ≤ 1e-6 m/s with status ok is {} ({setting}) at {:.2e} s: exact is {:.0}× faster.",
+                "headline: exact takes {:.2e} s; the fastest run reaching err_v ≤ 1e-6 m/s with status ok is {} ({setting}) at {:.2e} s: exact is {}× faster.",
                 exact.time_median_s,
                 best.method.name(),
                 best.time_median_s,
-                factor
+                crate::units::significant(factor, 2)
             );
         }
         None => {

@@ -163,21 +163,29 @@ impl Observer for Impacts {
     }
 }
 
-/// Windows around impacts that the error maxima leave out: from the k-th exact impact
-/// to the method's k-th impact, widened by two steps; unpaired impacts get ±2 steps.
-/// Also the largest timing error of the paired impacts.
-fn impact_windows(exact: &[f64], method: &[f64], step: f64) -> (Vec<(f64, f64)>, Option<f64>) {
-    let pad = 2.0 * step;
+/// Windows around impacts that the error maxima leave out: from each exact impact to
+/// the nearest impact the method detected, widened by `slack` on each side, where that
+/// pairing is unambiguous (closer than half-way to the neighbouring exact impacts).
+/// An impact a method misses gets no window: its jump counts as an error. Also the
+/// largest distance from an exact impact to the nearest detected one.
+fn impact_windows(exact: &[f64], method: &[f64], slack: f64) -> (Vec<(f64, f64)>, Option<f64>) {
     let mut windows = Vec::new();
     let mut worst: Option<f64> = None;
-    for k in 0..exact.len().max(method.len()) {
-        match (exact.get(k), method.get(k)) {
-            (Some(&a), Some(&b)) => {
-                windows.push((a.min(b) - pad, a.max(b) + pad));
-                worst = Some(worst.unwrap_or(0.0).max((a - b).abs()));
+    for (k, &a) in exact.iter().enumerate() {
+        let before = k.checked_sub(1).map_or(f64::INFINITY, |j| a - exact[j]);
+        let after = exact.get(k + 1).map_or(f64::INFINITY, |&n| n - a);
+        let reach = 0.5 * before.min(after);
+        let i = method.partition_point(|&b| b < a);
+        let nearest = [i.checked_sub(1), Some(i)]
+            .into_iter()
+            .flatten()
+            .filter_map(|j| method.get(j))
+            .min_by(|x, y| (*x - a).abs().total_cmp(&(*y - a).abs()));
+        if let Some(&b) = nearest {
+            worst = Some(worst.unwrap_or(0.0).max((a - b).abs()));
+            if (a - b).abs() < reach {
+                windows.push((a.min(b) - slack, a.max(b) + slack));
             }
-            (Some(&a), None) | (None, Some(&a)) => windows.push((a - pad, a + pad)),
-            (None, None) => {}
         }
     }
     windows.sort_by(|a, b| a.0.total_cmp(&b.0));
@@ -271,7 +279,13 @@ pub fn run(
         })
         .map(|e| e.t)
         .collect();
-    let (windows, err_t_impact) = impact_windows(&exact_impacts, &found.0, settings.step);
+    // rk45 places its steps itself: its windows are one tolerance wide.
+    let slack = if method.adaptive() {
+        settings.tolerance
+    } else {
+        settings.step
+    };
+    let (windows, err_t_impact) = impact_windows(&exact_impacts, &found.0, slack);
     let mut metrics = Metrics {
         exact,
         model,
