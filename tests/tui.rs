@@ -383,3 +383,39 @@ fn no_color_means_no_colours() {
         assert!(!matches!(s.fg, Some(Color::White | Color::Black)));
     }
 }
+
+#[test]
+fn methods_view_and_overlay() {
+    let mut a = app("paper-b4.9");
+    press(&mut a, "c");
+    assert!(a.methods_view);
+    let rows = a.method_rows.as_ref().unwrap();
+    assert_eq!(rows.len(), 20, "five methods at four levels");
+    let s = screen_of(&a);
+    assert!(s.contains("Methods: max |v_cm - exact| against steps per run"));
+    for name in ["euler", "symplectic-euler", "rk4", "rk45", "moreau"] {
+        assert!(s.contains(name), "{name}");
+    }
+    // Deterministic: the view plots work in steps, not measured time.
+    let again = screen("paper-b4.9", 0.3, (120, 40), false, Some("c"));
+    assert_eq!(
+        again,
+        screen("paper-b4.9", 0.3, (120, 40), false, Some("c"))
+    );
+    press(&mut a, "c o");
+    let o = a.overlay.as_ref().unwrap();
+    assert_eq!(o.method, groovelab::methods::Method::Euler);
+    assert_eq!(o.row.status, groovelab::methods::compare::Status::Chatter);
+    assert!(screen_of(&a).contains("euler h 1e-3 (chatter)"));
+    press(&mut a, "[ [");
+    assert_eq!(a.overlay.as_ref().unwrap().settings.step, 1e-2);
+    // A scene change re-runs the overlay.
+    select(&mut a, Key::Mu);
+    press(&mut a, "right");
+    assert_eq!(
+        a.overlay.as_ref().unwrap().row.method,
+        groovelab::methods::Method::Euler
+    );
+    press(&mut a, "o o o o o");
+    assert!(a.overlay.is_none(), "cycling ends with the overlay off");
+}

@@ -236,10 +236,26 @@ pub fn run(
     settings: &Settings,
     exact: &Solution,
 ) -> Row {
+    measure(method, scene, span, settings, exact, true)
+}
+
+/// [`run`], with the timing runs only if `timed` (the untimed row is deterministic).
+pub fn measure(
+    method: Method,
+    scene: &Scene,
+    span: &Span,
+    settings: &Settings,
+    exact: &Solution,
+    timed: bool,
+) -> Row {
     let model = Model::of(scene);
     let (t0, t1) = (exact.t_start, exact.t_end);
     if method == Method::Exact {
-        let (time_min_s, time_median_s) = time(|| crate::engine::solve(scene, span));
+        let (time_min_s, time_median_s) = if timed {
+            time(|| crate::engine::solve(scene, span))
+        } else {
+            (0.0, 0.0)
+        };
         return Row {
             method,
             step: None,
@@ -325,7 +341,8 @@ pub fn run(
     } else {
         Status::Ok
     };
-    let (time_min_s, time_median_s) = if outcome.stalled.is_some() && outcome.steps == 0 {
+    let (time_min_s, time_median_s) = if !timed || (outcome.stalled.is_some() && outcome.steps == 0)
+    {
         (0.0, 0.0)
     } else {
         time(|| integrate(method, &model, y0, t0, t1, settings, &mut Finite))

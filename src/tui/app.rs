@@ -3,6 +3,8 @@
 
 use crate::derived::Derived;
 use crate::engine;
+use crate::methods::compare::{self, Row};
+use crate::methods::{self, Method, Settings, Y};
 use crate::preset::{Measured, Preset};
 use crate::scene::{Key, Scene, SceneSpec, Span};
 use crate::solution::Solution;
@@ -134,6 +136,10 @@ pub enum Action {
     Help,
     SwitchBall,
     TogglePositions,
+    ToggleMethods,
+    CycleOverlay,
+    OverlayFiner,
+    OverlayCoarser,
     ToggleMouse,
     Select(usize),
     /// Scroll on parameter row `i`: up increases.
@@ -178,6 +184,62 @@ pub struct App {
     pub preset_dir: Option<std::path::PathBuf>,
     /// Presets offered by the picker.
     pub presets: Vec<Preset>,
+    /// The Methods view (work–precision) instead of the charts.
+    pub methods_view: bool,
+    /// Rows of the Methods view, computed when it is first shown for a scene.
+    pub method_rows: Option<Vec<Row>>,
+    /// A time-stepping method drawn over the exact curves, at its level.
+    pub overlay_method: Option<Method>,
+    pub overlay_level: u8,
+    pub overlay: Option<Overlay>,
+}
+
+/// A time-stepping run drawn over the exact curves.
+#[derive(Clone, Debug)]
+pub struct Overlay {
+    pub method: Method,
+    pub settings: Settings,
+    /// Its steps, thinned to a few thousand points.
+    pub points: Vec<(f64, Y)>,
+    pub row: Row,
+}
+
+/// Steps of the overlay and the Methods view: 10 ms … 10 µs (fixed-step methods),
+/// tolerances 1e-2 … 1e-8 (rk45).
+pub const OVERLAY_LEVELS: u8 = 7;
+
+/// The settings of `method` at `level`.
+pub fn level_settings(method: Method, level: u8) -> Settings {
+    let level = f64::from(level.min(OVERLAY_LEVELS - 1));
+    if method.adaptive() {
+        Settings {
+            tolerance: 10f64.powf(-2.0 - level),
+            step: 1e-3,
+            ..Settings::default()
+        }
+    } else {
+        Settings {
+            step: 10f64.powf(-2.0 - level / 2.0),
+            ..Settings::default()
+        }
+    }
+}
+
+/// Records a run's steps, keeping at most about `limit` of them.
+struct Thinned {
+    points: Vec<(f64, Y)>,
+    every: usize,
+    seen: usize,
+}
+
+impl methods::Observer for Thinned {
+    fn step(&mut self, t: f64, y: &Y) -> bool {
+        if self.seen.is_multiple_of(self.every) {
+            self.points.push((t, *y));
+        }
+        self.seen += 1;
+        y.iter().all(|v| v.is_finite())
+    }
 }
 
 impl App {
@@ -203,7 +265,71 @@ impl App {
             quit: false,
             preset_dir: crate::preset::user_dir(),
             presets: Preset::all().0,
+            methods_view: false,
+            method_rows: None,
+            overlay_method: None,
+            overlay_level: 2,
+            overlay: None,
         }
+    }
+
+    /// Runs the overlay method on the current scene (or clears it).
+    fn refresh_overlay(&mut self) {
+        self.overlay = self.overlay_method.map(|method| {
+            let settings = level_settings(method, self.overlay_level);
+            let sol = &self.solution;
+            let steps = if method.adaptive() {
+                1
+            } else {
+                ((sol.t_end - sol.t_start) / settings.step) as usize
+            };
+            let mut rec = Thinned {
+                points: Vec::new(),
+                every: (steps / 4000).max(1),
+                seen: 0,
+            };
+            let model = methods::Model::of(&self.scene);
+            let y0 = methods::start_state(&self.scene, sol.t_start);
+            methods::integrate(
+                method,
+                &model,
+                y0,
+                sol.t_start,
+                sol.t_end,
+                &settings,
+                &mut rec,
+            );
+            let row = compare::measure(method, &self.scene, &self.span, &settings, sol, false);
+            Overlay {
+                method,
+                settings,
+                points: rec.points,
+                row,
+            }
+        });
+    }
+
+    /// The Methods view's rows: every time-stepping method at four levels, untimed
+    /// (so the view, like every screen, is the same for the same input).
+    pub fn ensure_method_rows(&mut self) {
+        if self.method_rows.is_some() {
+            return;
+        }
+        let mut rows = Vec::new();
+        for method in Method::TIME_STEPPING {
+            for level in [0, 2, 4, 6] {
+                let settings = level_settings(method, level);
+                rows.push(compare::measure(
+                    method,
+                    &self.scene,
+                    &self.span,
+                    &settings,
+                    &self.solution,
+                    false,
+                ));
+            }
+        }
+        self.method_rows = Some(rows);
     }
 
     /// The measured series to overlay, if this scene still is the preset's.
@@ -286,6 +412,11 @@ impl App {
         self.solution = engine::solve(&scene, &span);
         self.derived = Derived::of(&scene);
         self.t = self.t.clamp(self.solution.t_start, self.solution.t_end);
+        self.method_rows = None;
+        if self.methods_view {
+            self.ensure_method_rows();
+        }
+        self.refresh_overlay();
     }
 
     fn load_preset(&mut self, preset: Preset) {
@@ -406,6 +537,37 @@ impl App {
                 }
             }
             Action::TogglePositions => self.show_positions = !self.show_positions,
+            Action::ToggleMethods => {
+                self.methods_view = !self.methods_view;
+                if self.methods_view {
+                    self.ensure_method_rows();
+                }
+            }
+            Action::CycleOverlay => {
+                let all = Method::TIME_STEPPING;
+                self.overlay_method = match self.overlay_method {
+                    None => Some(all[0]),
+                    Some(m) => all
+                        .iter()
+                        .position(|x| *x == m)
+                        .and_then(|i| all.get(i + 1))
+                        .copied(),
+                };
+                self.refresh_overlay();
+                self.status = Status::Info(match &self.overlay {
+                    Some(o) => format!("overlay {}: {}", o.method.name(), o.row.status.name()),
+                    None => "overlay off".into(),
+                });
+            }
+            Action::OverlayFiner | Action::OverlayCoarser => {
+                let finer = action == Action::OverlayFiner;
+                self.overlay_level = if finer {
+                    (self.overlay_level + 1).min(OVERLAY_LEVELS - 1)
+                } else {
+                    self.overlay_level.saturating_sub(1)
+                };
+                self.refresh_overlay();
+            }
             Action::ToggleMouse => {
                 self.mouse = !self.mouse;
                 self.status = Status::Info(format!(

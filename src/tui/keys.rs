@@ -111,13 +111,37 @@ pub const TABLE: &[Binding] = &[
         keys: &["b"],
         action: Action::SwitchBall,
         help: "chart: left ball, right ball, both",
-        hint: Some("ball"),
+        hint: None,
     },
     Binding {
         keys: &["x"],
         action: Action::TogglePositions,
         help: "chart: velocities or positions x(t)",
-        hint: Some("x(t)"),
+        hint: None,
+    },
+    Binding {
+        keys: &["c"],
+        action: Action::ToggleMethods,
+        help: "Methods view: error against work of each solution method",
+        hint: Some("methods"),
+    },
+    Binding {
+        keys: &["o"],
+        action: Action::CycleOverlay,
+        help: "overlay a time-stepping method on the exact curves (cycles, then off)",
+        hint: Some("overlay"),
+    },
+    Binding {
+        keys: &["]"],
+        action: Action::OverlayFiner,
+        help: "overlay: smaller step (tighter tolerance)",
+        hint: None,
+    },
+    Binding {
+        keys: &["["],
+        action: Action::OverlayCoarser,
+        help: "overlay: larger step (looser tolerance)",
+        hint: None,
     },
     Binding {
         keys: &["p"],
@@ -129,7 +153,7 @@ pub const TABLE: &[Binding] = &[
         keys: &["s"],
         action: Action::Save,
         help: "save the scene as a user preset",
-        hint: Some("save"),
+        hint: None,
     },
     Binding {
         keys: &["m"],

@@ -143,6 +143,36 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
         };
         series.push(series_of(&tag("v_t"), &times, |t| b(t).u, accent, "+"));
     }
+    if let Some(o) = &app.overlay {
+        // The time-stepping run over the exact curves, so its chatter shows.
+        let setting = match (o.row.step, o.row.tolerance) {
+            (Some(h), _) => format!("h {h:.0e}"),
+            (_, Some(t)) => format!("tol {t:.0e}"),
+            _ => String::new(),
+        };
+        for &i in &balls {
+            let pts = |j: usize| {
+                o.points
+                    .iter()
+                    .map(|(t, y)| (*t, y[3 * i + j]))
+                    .collect::<Vec<_>>()
+            };
+            series.push(Series {
+                name: format!("{} {setting} ({})", o.method.name(), o.row.status.name()),
+                points: pts(1),
+                style: theme.measured,
+                glyph: "o",
+                draw: Draw::Line,
+            });
+            series.push(Series {
+                name: String::new(),
+                points: pts(2),
+                style: theme.measured,
+                glyph: "o",
+                draw: Draw::Line,
+            });
+        }
+    }
     if let Some(m) = app.measured().filter(|_| balls.contains(&0)) {
         let pts = |v: &[f64]| {
             m.t.iter()

@@ -4,6 +4,7 @@
 
 mod charts;
 mod info;
+mod methods;
 mod params;
 
 pub use params::param_at;
@@ -86,8 +87,13 @@ pub fn draw(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         Some(p) => {
             params::render(app, p.params, buf, theme);
             scene::render(app, p.scene, buf, theme);
-            charts::render(app, p.chart, buf, theme);
-            info::render(app, p.info, buf, theme);
+            if app.methods_view {
+                methods::render_diagram(app, p.chart, buf, theme);
+                methods::render_rows(app, p.info, buf, theme);
+            } else {
+                charts::render(app, p.chart, buf, theme);
+                info::render(app, p.info, buf, theme);
+            }
             status(app, p.status, buf, theme);
             hints(p.hints, buf, theme);
             popups::render(app, area, buf, theme);

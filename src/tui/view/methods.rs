@@ -1,0 +1,129 @@
+//! The Methods view: each time-stepping method's error against its work, on log axes
+//! drawn by transforming the data and labelling the ticks, with the rows beside it.
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Paragraph, Widget};
+
+use super::block;
+use crate::methods::Method;
+use crate::methods::compare::Status;
+use crate::tui::app::App;
+use crate::tui::plot::{Draw, Plot, Series};
+use crate::tui::theme::Theme;
+
+fn glyph(m: Method) -> &'static str {
+    match m {
+        Method::Exact => "#",
+        Method::Euler => "e",
+        Method::SymplecticEuler => "s",
+        Method::Rk4 => "4",
+        Method::Rk45 => "5",
+        Method::Moreau => "m",
+    }
+}
+
+/// Decade ticks `10^a … 10^b` labelled `1e<n>`.
+fn decades(lo: f64, hi: f64) -> Vec<(f64, String)> {
+    (lo.floor() as i32..=hi.ceil() as i32)
+        .map(|e| (f64::from(e), format!("1e{e}")))
+        .collect()
+}
+
+pub fn render_diagram(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
+    let blk = block(
+        " Methods: max |v_cm - exact| against steps per run  [c] back ",
+        theme,
+    );
+    let inner = blk.inner(area);
+    blk.render(area, buf);
+    let Some(rows) = &app.method_rows else {
+        return;
+    };
+    let point = |r: &crate::methods::compare::Row| {
+        ((r.steps.max(1) as f64).log10(), r.err_v.max(1e-16).log10())
+    };
+    let mut series = Vec::new();
+    for m in Method::TIME_STEPPING {
+        let style = match m {
+            Method::Euler => theme.left,
+            Method::SymplecticEuler => theme.right,
+            Method::Rk4 => theme.accent,
+            Method::Rk45 => theme.cursor,
+            _ => theme.measured,
+        };
+        let pts: Vec<(f64, f64)> = rows.iter().filter(|r| r.method == m).map(point).collect();
+        series.push(Series {
+            name: m.name().to_string(),
+            points: pts.clone(),
+            style,
+            glyph: ".",
+            draw: Draw::Line,
+        });
+        series.push(Series {
+            name: String::new(),
+            points: pts,
+            style,
+            glyph: glyph(m),
+            draw: Draw::Points,
+        });
+    }
+    let all: Vec<(f64, f64)> = rows.iter().map(point).collect();
+    let (x0, x1) = all.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |a, p| {
+        (a.0.min(p.0), a.1.max(p.0))
+    });
+    let (y0, y1) = all.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |a, p| {
+        (a.0.min(p.1), a.1.max(p.1))
+    });
+    let (x0, x1) = (x0.floor(), x1.ceil().max(x0.floor() + 1.0));
+    let (y0, y1) = (y0.floor(), y1.ceil().max(y0.floor() + 1.0));
+    let plot = Plot {
+        x_range: (x0, x1),
+        y_range: (y0, y1),
+        x_title: "steps".into(),
+        y_title: "m/s".into(),
+        series,
+        vlines: Vec::new(),
+        cursor: None,
+        x_ticks: Some(decades(x0, x1)),
+        y_ticks: Some(decades(y0, y1)),
+    };
+    plot.render(inner, buf, theme);
+}
+
+pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
+    let blk = block(" Runs (marker, setting, status, err_v) ", theme);
+    let inner = blk.inner(area);
+    blk.render(area, buf);
+    let Some(rows) = &app.method_rows else {
+        return;
+    };
+    let mut lines = vec![Line::from(Span::styled(
+        format!("exact: {} segments, error 0", app.solution.segments.len()),
+        theme.title,
+    ))];
+    for r in rows {
+        let setting = match (r.step, r.tolerance) {
+            (Some(h), _) => format!("h {h:.0e}"),
+            (_, Some(t)) => format!("tol {t:.0e}"),
+            _ => String::new(),
+        };
+        let style = if r.status == Status::Ok {
+            theme.text
+        } else {
+            theme.error
+        };
+        lines.push(Line::from(vec![
+            Span::styled(
+                format!("{} {:<17}", glyph(r.method), r.method.name()),
+                theme.dim,
+            ),
+            Span::styled(
+                format!("{setting:<9} {:<8} {:.1e}", r.status.name(), r.err_v),
+                style,
+            ),
+        ]));
+    }
+    Paragraph::new(lines).render(inner, buf);
+}
