@@ -15,6 +15,7 @@ use crate::scene::{Key, Scene, SceneSpec, Span};
 use crate::solution::{Snapshot, Solution};
 use crate::tui::{self, app::App};
 
+mod fit;
 mod methods;
 use crate::units::{Dimension, parse_quantity, show, significant};
 pub use methods::write_atomically;
@@ -51,6 +52,8 @@ pub enum Command {
     Render(RenderArgs),
     /// Speed against accuracy of the solution methods (work–precision).
     Compare(CompareArgs),
+    /// Fit the model to measured data (a preset's, or a CSV file).
+    Fit(FitArgs),
     /// List the built-in and user presets.
     Presets,
 }
@@ -91,6 +94,45 @@ pub struct CompareArgs {
     /// Write the output to this file (atomically) instead of stdout.
     #[arg(long, value_name = "FILE")]
     pub output: Option<std::path::PathBuf>,
+}
+
+#[derive(Args, Debug)]
+pub struct FitArgs {
+    /// A CSV of the left ball: columns t, v_cm, v_t found by header (comma or
+    /// semicolon, decimal commas allowed) [default: the preset's series].
+    #[arg(long, value_name = "FILE")]
+    pub data: Option<std::path::PathBuf>,
+    /// Time unit of the file when its header gives none (e.g. ms) [default: s].
+    #[arg(long, value_name = "UNIT")]
+    pub time_unit: Option<String>,
+    /// Speed unit of the file when its header gives none (e.g. cm/s) [default: m/s].
+    #[arg(long, value_name = "UNIT")]
+    pub speed_unit: Option<String>,
+    /// Time of the first impact in the file [default: detected from v_cm].
+    #[arg(long, value_name = "T", value_parser = time, allow_hyphen_values = true)]
+    pub impact_at: Option<f64>,
+    /// Start of the line-fit window (after the impact) [default: first frame after it].
+    #[arg(long, value_name = "T", value_parser = time, allow_hyphen_values = true)]
+    pub from: Option<f64>,
+    /// End of the line-fit window [default: the last frame before v_cm and v_t meet].
+    #[arg(long, value_name = "T", value_parser = time, allow_hyphen_values = true)]
+    pub to: Option<f64>,
+    /// What the model fit may change, comma-separated [default: mu].
+    #[arg(long, value_enum, value_delimiter = ',')]
+    pub free: Option<Vec<crate::fit::Free>>,
+    /// Output: a table, JSON, or an SVG figure (data, fitted model, residuals).
+    #[arg(long, value_enum, default_value_t = FitFormat::Table)]
+    pub format: FitFormat,
+    /// Write the output to this file (atomically) instead of stdout.
+    #[arg(long, value_name = "FILE")]
+    pub output: Option<std::path::PathBuf>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum FitFormat {
+    Table,
+    Json,
+    Svg,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -280,6 +322,7 @@ pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
         Some(Command::Simulate(args)) => simulate(&cli.scene, args).map(Outcome::Print),
         Some(Command::Render(args)) => render(&cli.scene, args, cli.ascii).map(Outcome::Print),
         Some(Command::Compare(args)) => methods::compare(&cli.scene, args).map(Outcome::Print),
+        Some(Command::Fit(args)) => fit::run(&cli.scene, args).map(Outcome::Print),
         Some(Command::Presets) => Ok(Outcome::Print(presets())),
     }
 }

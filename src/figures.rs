@@ -110,3 +110,158 @@ pub fn work_precision(rows: &[Row], scene: &Scene) -> Result<String, Box<dyn std
     }
     Ok(svg)
 }
+
+/// The fit figure: measured v_cm and v_t, the fitted model, the paper's line fits over
+/// their window, and the residuals below.
+pub fn fit_figure(
+    scene: &Scene,
+    m: &crate::preset::Measured,
+    fits: &crate::fit::Fits,
+) -> Result<String, Box<dyn std::error::Error>> {
+    let mut fitted = *scene;
+    fitted.mu = fits.model_fit.mu;
+    fitted.left.v0 = fits.model_fit.v0;
+    fitted.right.v0 = fits.model_fit.v0;
+    fitted.restitution = fits.model_fit.restitution;
+    let (t0, t1) = (m.t[0], *m.t.last().unwrap_or(&1.0));
+    let sol = crate::engine::solve(
+        &fitted,
+        &crate::scene::Span {
+            t_start: t0.min(-1e-3),
+            t_end: Some(t1.max(1e-3)),
+        },
+    );
+    let n = 600;
+    let ts: Vec<f64> = (0..=n)
+        .map(|i| t0 + (t1 - t0) * i as f64 / n as f64)
+        .collect();
+    let model: Vec<(f64, f64, f64)> = ts
+        .iter()
+        .map(|&t| {
+            let s = sol.at(t);
+            (t, s.left.v, s.left.u)
+        })
+        .collect();
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, (900, 700)).into_drawing_area();
+        root.fill(&WHITE)?;
+        let (top, bottom) = root.split_vertically(480);
+        let values = m
+            .v_cm
+            .iter()
+            .chain(&m.v_t)
+            .copied()
+            .chain(model.iter().flat_map(|p| [p.1, p.2]));
+        let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |a, v| {
+            (a.0.min(v), a.1.max(v))
+        });
+        let (lo, hi) = (lo - 0.1, hi + 0.1);
+        let mf = &fits.model_fit;
+        let mut chart = ChartBuilder::on(&top)
+            .caption(
+                format!(
+                    "b = {:.2} cm: model fit mu = {:.3} +- {:.3}, line fits mu_cm = {:.3}, mu_t = {:.3}",
+                    scene.width * 100.0,
+                    mf.mu,
+                    2.0 * mf.mu_se,
+                    fits.line_fit.mu_cm,
+                    fits.line_fit.mu_t
+                ),
+                ("sans-serif", 18),
+            )
+            .margin(12)
+            .x_label_area_size(35)
+            .y_label_area_size(55)
+            .build_cartesian_2d(t0..t1, lo..hi)?;
+        chart
+            .configure_mesh()
+            .x_desc("t (s)")
+            .y_desc("v (m/s)")
+            .draw()?;
+        let blue = RGBColor(31, 119, 180);
+        let orange = RGBColor(255, 127, 14);
+        chart
+            .draw_series(LineSeries::new(
+                model.iter().map(|p| (p.0, p.1)),
+                blue.stroke_width(2),
+            ))?
+            .label("model v_cm")
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], blue.stroke_width(2))
+            });
+        chart
+            .draw_series(LineSeries::new(
+                model.iter().map(|p| (p.0, p.2)),
+                orange.stroke_width(2),
+            ))?
+            .label("model v_t")
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], orange.stroke_width(2))
+            });
+        chart
+            .draw_series(
+                m.t.iter()
+                    .zip(&m.v_cm)
+                    .map(|(t, v)| Cross::new((*t, *v), 4, blue)),
+            )?
+            .label("measured v_cm")
+            .legend(move |(x, y)| Cross::new((x + 10, y), 4, blue));
+        chart
+            .draw_series(
+                m.t.iter()
+                    .zip(&m.v_t)
+                    .map(|(t, v)| Circle::new((*t, *v), 3, orange)),
+            )?
+            .label("measured v_t")
+            .legend(move |(x, y)| Circle::new((x + 10, y), 3, orange));
+        // The line fits over their window.
+        let l = &fits.line_fit;
+        let idx: Vec<usize> = (0..m.t.len())
+            .filter(|&i| m.t[i] >= l.from && m.t[i] <= l.to)
+            .collect();
+        for (series, colour) in [(&m.v_cm, blue), (&m.v_t, orange)] {
+            let ts: Vec<f64> = idx.iter().map(|&i| m.t[i]).collect();
+            let ys: Vec<f64> = idx.iter().map(|&i| series[i]).collect();
+            let line = crate::fit::line(&ts, &ys);
+            chart.draw_series(LineSeries::new(
+                [l.from, l.to].map(|t| (t, line.intercept + line.slope * t)),
+                colour.mix(0.6).stroke_width(1),
+            ))?;
+        }
+        chart
+            .configure_series_labels()
+            .border_style(BLACK)
+            .background_style(WHITE.mix(0.9))
+            .position(SeriesLabelPosition::LowerRight)
+            .draw()?;
+        // Residuals.
+        let res: Vec<(f64, f64, f64)> =
+            m.t.iter()
+                .enumerate()
+                .map(|(i, &t)| {
+                    let s = sol.at(t);
+                    (t, m.v_cm[i] - s.left.v, m.v_t[i] - s.left.u)
+                })
+                .collect();
+        let rmax = res
+            .iter()
+            .flat_map(|r| [r.1.abs(), r.2.abs()])
+            .fold(0.01, f64::max)
+            .min(1.0);
+        let mut rc = ChartBuilder::on(&bottom)
+            .margin(12)
+            .x_label_area_size(35)
+            .y_label_area_size(55)
+            .build_cartesian_2d(t0..t1, -rmax..rmax)?;
+        rc.configure_mesh()
+            .x_desc("t (s)")
+            .y_desc("data - model (m/s)")
+            .draw()?;
+        rc.draw_series(res.iter().map(|r| Cross::new((r.0, r.1), 4, blue)))?;
+        rc.draw_series(res.iter().map(|r| Circle::new((r.0, r.2), 3, orange)))?;
+        rc.draw_series(LineSeries::new([(t0, 0.0), (t1, 0.0)], BLACK))?;
+        root.present()?;
+    }
+    Ok(svg)
+}

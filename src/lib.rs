@@ -6,9 +6,11 @@
 
 pub mod cli;
 pub mod closed_form;
+pub mod data;
 pub mod derived;
 pub mod engine;
 pub mod figures;
+pub mod fit;
 pub mod methods;
 pub mod model;
 pub mod preset;

@@ -137,6 +137,11 @@ pub enum Action {
     SwitchBall,
     TogglePositions,
     ToggleMethods,
+    ToggleFit,
+    FitStartEarlier,
+    FitStartLater,
+    FitEndEarlier,
+    FitEndLater,
     CycleOverlay,
     OverlayFiner,
     OverlayCoarser,
@@ -192,6 +197,11 @@ pub struct App {
     pub overlay_method: Option<Method>,
     pub overlay_level: u8,
     pub overlay: Option<Overlay>,
+    /// The Fit view instead of the info panel.
+    pub fit_view: bool,
+    /// Line-fit window (None: the sliding phase).
+    pub fit_window: (Option<f64>, Option<f64>),
+    pub fits: Option<Result<crate::fit::Fits, String>>,
 }
 
 /// A time-stepping run drawn over the exact curves.
@@ -270,7 +280,51 @@ impl App {
             overlay_method: None,
             overlay_level: 2,
             overlay: None,
+            fit_view: false,
+            fit_window: (None, None),
+            fits: None,
         }
+    }
+
+    /// Fits the measured series (if any) with the current scene as the start.
+    fn refresh_fits(&mut self) {
+        self.fits = if self.fit_view {
+            self.measured().map(|m| {
+                crate::fit::fit_all(&self.scene, m, self.fit_window, &[crate::fit::Free::Mu])
+                    .map_err(|e| e.to_string())
+            })
+        } else {
+            None
+        };
+    }
+
+    /// Moves one end of the line-fit window by one frame.
+    fn move_window(&mut self, end: bool, later: bool) {
+        let Some(m) = self.measured() else {
+            self.status = Status::Error("this preset has no measured data to fit".into());
+            return;
+        };
+        let current = match &self.fits {
+            Some(Ok(f)) => (f.line_fit.from, f.line_fit.to),
+            _ => crate::fit::sliding_window(m).unwrap_or((0.0, 0.0)),
+        };
+        let here = if end { current.1 } else { current.0 };
+        let i =
+            m.t.iter()
+                .position(|&t| (t - here).abs() < 1e-9)
+                .unwrap_or(0);
+        let j = if later {
+            (i + 1).min(m.t.len() - 1)
+        } else {
+            i.saturating_sub(1)
+        };
+        let t = m.t[j];
+        if end {
+            self.fit_window = (Some(current.0), Some(t));
+        } else {
+            self.fit_window = (Some(t), Some(current.1));
+        }
+        self.refresh_fits();
     }
 
     /// Runs the overlay method on the current scene (or clears it).
@@ -332,12 +386,37 @@ impl App {
         self.method_rows = Some(rows);
     }
 
-    /// The measured series to overlay, if this scene still is the preset's.
+    /// The preset's measured series (kept while parameters change, so a model can be
+    /// tuned against it by hand).
     pub fn measured(&self) -> Option<&Measured> {
-        let (scene, _) = self.preset.spec.resolve().ok()?;
-        (scene == self.scene)
-            .then_some(self.preset.measured.as_ref())
-            .flatten()
+        self.preset.measured.as_ref()
+    }
+
+    /// Where the measured left ball is at `t`: its v_cm integrated (trapezoids) from
+    /// the impact place at t = 0; `None` outside the series.
+    pub fn ghost_x(&self, t: f64) -> Option<f64> {
+        let m = self.measured()?;
+        if t < m.t[0] || t > *m.t.last()? {
+            return None;
+        }
+        let v_at = |t: f64| {
+            let i = m.t.partition_point(|&x| x <= t).clamp(1, m.t.len() - 1);
+            let f = (t - m.t[i - 1]) / (m.t[i] - m.t[i - 1]);
+            m.v_cm[i - 1] + f * (m.v_cm[i] - m.v_cm[i - 1])
+        };
+        let (a, b, sign) = if t >= 0.0 {
+            (0.0, t, 1.0)
+        } else {
+            (t, 0.0, -1.0)
+        };
+        let mut knots: Vec<f64> = m.t.iter().copied().filter(|&x| x > a && x < b).collect();
+        knots.insert(0, a);
+        knots.push(b);
+        let area: f64 = knots
+            .windows(2)
+            .map(|w| 0.5 * (v_at(w[0]) + v_at(w[1])) * (w[1] - w[0]))
+            .sum();
+        Some(-self.scene.radius + sign * area)
     }
 
     pub fn speed_factor(&self) -> f64 {
@@ -417,6 +496,7 @@ impl App {
             self.ensure_method_rows();
         }
         self.refresh_overlay();
+        self.refresh_fits();
     }
 
     fn load_preset(&mut self, preset: Preset) {
@@ -424,6 +504,7 @@ impl App {
             Ok((scene, span)) => {
                 self.status = Status::Info(preset.description.clone());
                 self.preset = preset;
+                self.fit_window = (None, None);
                 self.load_scene(scene, span);
                 self.t = self.solution.t_start;
             }
@@ -543,6 +624,20 @@ impl App {
                     self.ensure_method_rows();
                 }
             }
+            Action::ToggleFit => {
+                self.fit_view = !self.fit_view;
+                self.refresh_fits();
+                if self.fit_view && self.measured().is_none() {
+                    self.status = Status::Error(format!(
+                        "preset {} has no measured data to fit (the paper-b* presets have)",
+                        self.preset.name
+                    ));
+                }
+            }
+            Action::FitStartEarlier => self.move_window(false, false),
+            Action::FitStartLater => self.move_window(false, true),
+            Action::FitEndEarlier => self.move_window(true, false),
+            Action::FitEndLater => self.move_window(true, true),
             Action::CycleOverlay => {
                 let all = Method::TIME_STEPPING;
                 self.overlay_method = match self.overlay_method {

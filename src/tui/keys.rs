@@ -126,6 +126,36 @@ pub const TABLE: &[Binding] = &[
         hint: Some("methods"),
     },
     Binding {
+        keys: &["f"],
+        action: Action::ToggleFit,
+        help: "Fit view: the paper's line fits and a model fit to the measured data",
+        hint: Some("fit"),
+    },
+    Binding {
+        keys: &["("],
+        action: Action::FitStartEarlier,
+        help: "fit window: start one frame earlier",
+        hint: None,
+    },
+    Binding {
+        keys: &[")"],
+        action: Action::FitStartLater,
+        help: "fit window: start one frame later",
+        hint: None,
+    },
+    Binding {
+        keys: &["{"],
+        action: Action::FitEndEarlier,
+        help: "fit window: end one frame earlier",
+        hint: None,
+    },
+    Binding {
+        keys: &["}"],
+        action: Action::FitEndLater,
+        help: "fit window: end one frame later",
+        hint: None,
+    },
+    Binding {
         keys: &["o"],
         action: Action::CycleOverlay,
         help: "overlay a time-stepping method on the exact curves (cycles, then off)",

@@ -196,16 +196,48 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
             draw: Draw::Points,
         });
     }
+    let mut vlines = Vec::new();
+    if let (true, Some(Ok(f)), Some(m)) = (app.fit_view, &app.fits, app.measured()) {
+        // The paper's straight lines over the chosen window.
+        let l = &f.line_fit;
+        let idx: Vec<usize> = (0..m.t.len())
+            .filter(|&i| m.t[i] >= l.from && m.t[i] <= l.to)
+            .collect();
+        let ts: Vec<f64> = idx.iter().map(|&i| m.t[i]).collect();
+        for (series_data, name) in [(&m.v_cm, "fit lines"), (&m.v_t, "")] {
+            let ys: Vec<f64> = idx.iter().map(|&i| series_data[i]).collect();
+            let line = crate::fit::line(&ts, &ys);
+            series.push(Series {
+                name: name.to_string(),
+                points: [l.from, l.to]
+                    .iter()
+                    .map(|&t| (t, line.intercept + line.slope * t))
+                    .collect(),
+                style: theme.cursor,
+                glyph: "-",
+                draw: Draw::Line,
+            });
+        }
+        for (t, label) in [(l.from, "from"), (l.to, "to")] {
+            vlines.push(VLine {
+                x: t,
+                label: Some(label.to_string()),
+                style: theme.cursor,
+                priority: 2,
+            });
+        }
+    }
     let rows = usize::from(area.height.saturating_sub(4));
     let ((y0, y1), _) = bounds(&series, rows);
     let whos: Vec<Who> = balls.iter().map(|&i| Who::ball(i)).collect();
+    vlines.extend(event_lines(app, &whos, theme));
     let plot = Plot {
         x_range: (sol.t_start, sol.t_end),
         y_range: (y0, y1),
         x_title: "t (s)".into(),
         y_title: "v (m/s)".into(),
         series,
-        vlines: event_lines(app, &whos, theme),
+        vlines,
         cursor: Some(app.t),
         x_ticks: None,
         y_ticks: None,

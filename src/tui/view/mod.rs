@@ -3,6 +3,7 @@
 //! [`draw`], so a script sees exactly what a user sees.
 
 mod charts;
+mod fit;
 mod info;
 mod methods;
 mod params;
@@ -92,7 +93,11 @@ pub fn draw(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                 methods::render_rows(app, p.info, buf, theme);
             } else {
                 charts::render(app, p.chart, buf, theme);
-                info::render(app, p.info, buf, theme);
+                if app.fit_view {
+                    fit::render(app, p.info, buf, theme);
+                } else {
+                    info::render(app, p.info, buf, theme);
+                }
             }
             status(app, p.status, buf, theme);
             hints(p.hints, buf, theme);

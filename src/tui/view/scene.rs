@@ -198,6 +198,20 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             );
         }
     }
+    // The measured left ball, where its v_cm puts it: a dotted ghost beside the model.
+    if let Some(xg) = app.ghost_x(t) {
+        let cx = col(xg) * sx;
+        let n = ((std::f64::consts::TAU * r_dots) / 3.0).ceil().max(8.0) as usize;
+        for k in 0..n {
+            let a = k as f64 / n as f64 * std::f64::consts::TAU;
+            canvas.dot(
+                (cx + r_dots * a.cos()) / sx,
+                cy + r_dots * a.sin() / aspect,
+                theme.measured,
+                ".",
+            );
+        }
+    }
     canvas.flush(inner.x, inner.y, buf);
     if flashing {
         let c = col(0.5 * (snap.left.x + snap.right.x));

@@ -1,0 +1,209 @@
+//! Reading a user's measured series (CSV from video-analysis tools): columns found by
+//! header, comma or semicolon separated, decimal commas tolerated, units from the
+//! header or given, and the time origin moved to the first impact.
+
+use crate::preset::Measured;
+use crate::units::{Dimension, parse_quantity};
+
+/// Why a data file cannot be used; each message names the line.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("{file}: {what}")]
+pub struct DataError {
+    pub file: String,
+    pub what: String,
+}
+
+/// How to read a file beyond what its header says.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Reading {
+    /// Seconds per time unit of the file, when the header does not say (1 = s).
+    pub time_unit: Option<f64>,
+    /// m/s per speed unit of the file, when the header does not say.
+    pub speed_unit: Option<f64>,
+    /// Time of the first impact in the file's time (after units); detected if absent.
+    pub impact_at: Option<f64>,
+}
+
+/// Which quantity a header cell names, and the SI factor its unit implies.
+fn column(header: &str) -> Option<(&'static str, Option<f64>)> {
+    let h = header
+        .trim()
+        .trim_matches('"')
+        .to_lowercase()
+        .replace(' ', "");
+    let (name, rest) = if let Some(r) = h.strip_prefix("v_cm").or(h.strip_prefix("vcm")) {
+        ("v_cm", r)
+    } else if let Some(r) = h.strip_prefix("v_t").or(h.strip_prefix("vt")) {
+        ("v_t", r)
+    } else if let Some(r) = h.strip_prefix("time").or(h.strip_prefix('t')) {
+        ("t", r)
+    } else {
+        return None;
+    };
+    // A unit in brackets ("t (ms)", "v_cm [cm/s]") or as a suffix ("t_s",
+    // "v_cm_m_per_s", "v_t_cm_per_s").
+    let unit = rest
+        .trim_start_matches(['_', '(', '['])
+        .trim_end_matches([')', ']'])
+        .replace("_per_", "/");
+    let dim = if name == "t" {
+        Dimension::Time
+    } else {
+        Dimension::Speed
+    };
+    if unit.is_empty() {
+        return Some((name, None));
+    }
+    match parse_quantity(&format!("1{unit}"), dim) {
+        Ok(f) => Some((name, Some(f))),
+        Err(_) => None,
+    }
+}
+
+/// A number as video tools write it: `0.12`, `0,12` (decimal comma), `1.2e-3`.
+fn number(cell: &str) -> Option<f64> {
+    let c = cell.trim().trim_matches('"');
+    c.parse::<f64>()
+        .ok()
+        .or_else(|| c.replace(',', ".").parse::<f64>().ok())
+        .filter(|v| v.is_finite())
+}
+
+/// Parses `text` (the file named `file`) into a series with the impact at t = 0.
+pub fn parse(text: &str, file: &str, reading: &Reading) -> Result<Measured, DataError> {
+    let err = |what: String| DataError {
+        file: file.to_string(),
+        what,
+    };
+    let mut lines = text
+        .lines()
+        .enumerate()
+        .filter(|(_, l)| !l.trim().is_empty() && !l.trim_start().starts_with('#'));
+    let (_, header) = lines
+        .next()
+        .ok_or_else(|| err("the file is empty, expected a header with t, v_cm and v_t".into()))?;
+    // Semicolons win when present: then commas are decimal commas.
+    let sep = if header.contains(';') { ';' } else { ',' };
+    let cells: Vec<&str> = header.split(sep).collect();
+    let find = |want: &str| {
+        cells
+            .iter()
+            .enumerate()
+            .find_map(|(i, c)| column(c).filter(|(n, _)| *n == want).map(|(_, f)| (i, f)))
+    };
+    let missing = |name: &str| {
+        err(format!(
+            "line 1: no column '{name}' in the header '{}', expected columns t, v_cm and v_t (units in brackets or as options)",
+            header.trim()
+        ))
+    };
+    let (it, ft) = find("t").ok_or_else(|| missing("t"))?;
+    let (ic, fc) = find("v_cm").ok_or_else(|| missing("v_cm"))?;
+    let (iv, fv) = find("v_t").ok_or_else(|| missing("v_t"))?;
+    let ft = ft.or(reading.time_unit).unwrap_or(1.0);
+    let fc = fc.or(reading.speed_unit).unwrap_or(1.0);
+    let fv = fv.or(reading.speed_unit).unwrap_or(1.0);
+    let (mut t, mut v_cm, mut v_t) = (Vec::new(), Vec::new(), Vec::new());
+    for (n, line) in lines {
+        let cells: Vec<&str> = line.split(sep).collect();
+        let get = |i: usize, name: &str| {
+            let cell = cells.get(i).copied().unwrap_or("");
+            number(cell).ok_or_else(|| {
+                err(format!(
+                    "line {}: {name} = '{}' is not a finite number",
+                    n + 1,
+                    cell.trim()
+                ))
+            })
+        };
+        let time = get(it, "t")? * ft;
+        if let Some(&prev) = t.last()
+            && time <= prev
+        {
+            return Err(err(format!(
+                "line {}: t = {time} s does not increase (previous {prev} s), allowed strictly increasing times",
+                n + 1
+            )));
+        }
+        t.push(time);
+        v_cm.push(get(ic, "v_cm")? * fc);
+        v_t.push(get(iv, "v_t")? * fv);
+    }
+    if t.len() < 3 {
+        return Err(err(format!("{} data rows, allowed at least 3", t.len())));
+    }
+    let impact = match reading.impact_at {
+        Some(at) => at,
+        None => detect_impact(&t, &v_cm).ok_or_else(|| {
+            err("no impact found (v_cm never drops sharply); give its time with --impact-at".into())
+        })?,
+    };
+    for x in &mut t {
+        *x -= impact;
+    }
+    Ok(Measured { t, v_cm, v_t })
+}
+
+/// The first impact: where v_cm drops the most between neighbouring frames (the left
+/// ball reverses), if the drop is at least a third of the speed before it. When the
+/// drop is spread over two frames, the frame in between straddles the impact (the
+/// paper's convention) and is the impact time; otherwise the impact is put mid-way.
+pub fn detect_impact(t: &[f64], v_cm: &[f64]) -> Option<f64> {
+    let drops: Vec<f64> = v_cm.windows(2).map(|w| w[0] - w[1]).collect();
+    let (i, &drop) = drops.iter().enumerate().max_by(|a, b| a.1.total_cmp(b.1))?;
+    if drop <= 0.0 || drop < v_cm[i].abs().max(v_cm[i + 1].abs()) / 3.0 {
+        return None;
+    }
+    let big = |j: Option<usize>| {
+        j.and_then(|j| drops.get(j))
+            .is_some_and(|&d| d >= drop / 3.0)
+    };
+    Some(if big(i.checked_sub(1)) {
+        t[i]
+    } else if big(Some(i + 1)) {
+        t[i + 1]
+    } else {
+        0.5 * (t[i] + t[i + 1])
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reads_the_shared_format_and_finds_the_impact() {
+        let text = "t_s,v_cm_m_per_s,v_t_m_per_s\n-0.02,0.79,0.78\n0,0.0925,0.78\n0.02,-0.64,0.70\n0.04,-0.63,0.68\n";
+        let m = parse(text, "x.csv", &Reading::default()).unwrap();
+        assert_eq!(m.t, vec![-0.02, 0.0, 0.02, 0.04]);
+        assert_eq!(m.v_cm[2], -0.64);
+    }
+
+    #[test]
+    fn semicolons_decimal_commas_and_units_in_brackets() {
+        let text = "time (ms);v_cm (cm/s);v_t [cm/s]\n0;79,5;78\n10;80;78\n20;9;78\n30;-64;70\n";
+        let m = parse(text, "x.csv", &Reading::default()).unwrap();
+        // Impact in the frame at 20 ms (v_cm mid-way): that becomes t = 0.
+        assert!((m.t[0] + 0.02).abs() < 1e-12, "{:?}", m.t);
+        assert!((m.v_cm[0] - 0.795).abs() < 1e-12);
+    }
+
+    #[test]
+    fn errors_name_the_line() {
+        let bad = [
+            ("t,v_cm\n0,1\n", "no column 'v_t'"),
+            ("t,v_cm,v_t\n0,1,1\n0.01,x,1\n", "line 3: v_cm = 'x'"),
+            ("t,v_cm,v_t\n0,1,1\n", "1 data rows"),
+            (
+                "t,v_cm,v_t\n0,1,1\n0.02,1,1\n0.01,1,1\n",
+                "line 4: t = 0.01 s does not increase",
+            ),
+            ("t,v_cm,v_t\n0,1,1\n0.01,NaN,1\n0.02,1,1\n", "line 3"),
+            ("", "empty"),
+        ];
+        for (text, want) in bad {
+            let e = parse(text, "d.csv", &Reading::default()).unwrap_err();
+            assert!(e.to_string().contains(want), "{e} / {want}");
+        }
+    }
+}

@@ -1,0 +1,314 @@
+//! Fitting against the paper's data and against synthetic data with known μ_k.
+
+use std::process::Command;
+
+use groovelab::data::{self, Reading};
+use groovelab::derived::Regime;
+use groovelab::engine::solve;
+use groovelab::fit::{self, Free, PAPER_TABLE};
+use groovelab::preset::{Measured, Preset};
+use groovelab::scene::{Scene, Span};
+
+fn paper(width: &str) -> (Scene, Measured) {
+    let p = Preset::load(&format!("paper-b{width}")).unwrap();
+    let (scene, _) = p.spec.resolve().unwrap();
+    (scene, p.measured.unwrap())
+}
+
+#[test]
+fn line_fits_reproduce_table_1() {
+    let mut all = Vec::new();
+    for (width, (b, row)) in ["3.5", "4.4", "4.9"].iter().zip(PAPER_TABLE) {
+        let (scene, m) = paper(width);
+        assert!((scene.width - b).abs() < 1e-12);
+        let l = fit::line_fit(&m, &scene, (None, None)).unwrap();
+        // The paper does not say which points it used; the sliding phase is ours.
+        assert!(
+            (l.mu_cm - row[1]).abs() <= 0.04,
+            "b = {width}: μ_cm {} vs {}",
+            l.mu_cm,
+            row[1]
+        );
+        assert!(
+            (l.mu_t - row[4]).abs() <= 0.04,
+            "b = {width}: μ_t {} vs {}",
+            l.mu_t,
+            row[4]
+        );
+        // The forces follow the paper's formulas from μ_cm.
+        let k = scene.k();
+        assert!((l.f_net - l.mu_cm * scene.left.mass * scene.g / k).abs() < 1e-12);
+        assert!((l.tau_net - l.mu_cm * scene.left.mass * scene.g * scene.radius).abs() < 1e-12);
+        all.extend([l.mu_cm, l.mu_t]);
+    }
+    let mean = all.iter().sum::<f64>() / all.len() as f64;
+    assert!((mean - 0.17).abs() <= 0.015, "mean μ_k {mean}");
+}
+
+#[test]
+fn a_line_fit_of_a_straight_line_is_exact() {
+    let ts = [0.0, 0.1, 0.2, 0.3];
+    let ys = ts.map(|t| 1.5 - 2.0 * t);
+    let l = fit::line(&ts, &ys);
+    assert!((l.slope + 2.0).abs() < 1e-12 && (l.intercept - 1.5).abs() < 1e-12);
+    assert!(l.slope_se < 1e-12);
+}
+
+#[test]
+fn model_fits_and_regimes_match_the_three_experiments() {
+    for (width, observed) in [
+        ("3.5", Regime::Depart),
+        ("4.4", Regime::Rest),
+        ("4.9", Regime::Recollide),
+    ] {
+        let (scene, m) = paper(width);
+        let f = fit::model_fit(&scene, &m, &[Free::Mu]).unwrap();
+        assert!((0.14..=0.20).contains(&f.mu), "b = {width}: μ_k {}", f.mu);
+        assert!(
+            f.mu_se > 0.0 && f.mu_se < 0.02,
+            "b = {width}: se {}",
+            f.mu_se
+        );
+        assert_eq!(f.regime_observed, observed, "b = {width}");
+        assert_eq!(f.regime_predicted, observed, "b = {width}");
+        assert!(f.rms < 0.1, "b = {width}: rms {}", f.rms);
+    }
+}
+
+#[test]
+fn the_paper_data_already_has_its_impact_at_zero() {
+    for width in ["3.5", "4.4", "4.9"] {
+        let (_, m) = paper(width);
+        assert_eq!(data::detect_impact(&m.t, &m.v_cm), Some(0.0), "b = {width}");
+    }
+}
+
+/// xorshift64* and Box–Muller: seeded noise without a dependency.
+struct Noise(u64);
+
+impl Noise {
+    fn uniform(&mut self) -> f64 {
+        self.0 ^= self.0 >> 12;
+        self.0 ^= self.0 << 25;
+        self.0 ^= self.0 >> 27;
+        ((self.0.wrapping_mul(0x2545F4914F6CDD1D) >> 11) as f64 + 0.5) / (1u64 << 53) as f64
+    }
+
+    fn gauss(&mut self) -> f64 {
+        let (u, v) = (self.uniform(), self.uniform());
+        (-2.0 * u.ln()).sqrt() * (std::f64::consts::TAU * v).cos()
+    }
+}
+
+#[test]
+fn synthetic_data_give_back_mu_within_the_reported_uncertainty() {
+    let (mut scene, _) = paper("3.5");
+    scene.mu = 0.17;
+    let sol = solve(
+        &scene,
+        &Span {
+            t_start: -0.2,
+            t_end: None,
+        },
+    );
+    let frames: Vec<f64> = (-9..=40).map(|i| f64::from(i) * 0.02).collect();
+    let sigma = 0.01;
+    let seeds = 60;
+    let mut inside = 0;
+    for seed in 1..=seeds {
+        let mut noise = Noise(0x9E3779B97F4A7C15 ^ (seed as u64 * 0x632BE59BD9B4E019));
+        let (mut v_cm, mut v_t) = (Vec::new(), Vec::new());
+        for &t in &frames {
+            let s = sol.at(t);
+            v_cm.push(s.left.v + sigma * noise.gauss());
+            v_t.push(s.left.u + sigma * noise.gauss());
+        }
+        let m = Measured {
+            t: frames.clone(),
+            v_cm,
+            v_t,
+        };
+        // Start the fit away from the truth.
+        let start = Scene { mu: 0.3, ..scene };
+        let f = fit::model_fit(&start, &m, &[Free::Mu]).unwrap();
+        if (f.mu - 0.17).abs() <= 2.0 * f.mu_se {
+            inside += 1;
+        }
+    }
+    // Reported uncertainty: ±2σ (95 %). At least 90 % of seeds must land inside.
+    assert!(inside * 10 >= seeds * 9, "{inside} of {seeds} inside ±2σ");
+}
+
+fn groovelab(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_groovelab"))
+        .args(args)
+        .env("GROOVELAB_PRESETS", "/nonexistent-groovelab-presets")
+        .output()
+        .unwrap()
+}
+
+fn csv(name: &str, text: &str) -> String {
+    let dir = std::env::temp_dir().join(format!("groovelab-fit-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    path.display().to_string()
+}
+
+#[test]
+fn malformed_csvs_are_clear_errors() {
+    let cases = [
+        (
+            "missing.csv",
+            "t,v_cm\n0,1\n0.01,1\n0.02,1\n",
+            "no column 'v_t'",
+        ),
+        (
+            "text.csv",
+            "t,v_cm,v_t\n0,1,1\n0.01,abc,1\n0.02,1,1\n",
+            "line 3: v_cm = 'abc'",
+        ),
+        ("one.csv", "t,v_cm,v_t\n0,1,1\n", "1 data rows"),
+        (
+            "unsorted.csv",
+            "t,v_cm,v_t\n0,1,1\n0.02,1,1\n0.01,1,1\n",
+            "line 4",
+        ),
+        (
+            "nan.csv",
+            "t,v_cm,v_t\n0,1,1\n0.01,NaN,1\n0.02,1,1\n",
+            "line 3",
+        ),
+    ];
+    for (name, text, want) in cases {
+        let path = csv(name, text);
+        let out = groovelab(&["fit", "--data", &path]);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{name}: {err}");
+        assert!(out.stdout.is_empty());
+        assert!(
+            err.starts_with("error: ") && err.contains(want),
+            "{name}: {err}"
+        );
+    }
+    let out = groovelab(&["fit", "--preset", "flat-table"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("no measured data"));
+    let out = groovelab(&[
+        "fit",
+        "--preset",
+        "paper-b3.5",
+        "--from",
+        "0.2",
+        "--to",
+        "0.1",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+}
+
+#[test]
+fn a_users_csv_fits_like_the_preset() {
+    // The shared file, rewritten as a video tool might: semicolons, decimal commas,
+    // cm/s, milliseconds, and the time origin elsewhere.
+    let (_, m) = paper("4.9");
+    let mut text = String::from("time (ms);v_cm (cm/s);v_t (cm/s)\n");
+    for i in 0..m.t.len() {
+        let row = format!(
+            "{};{};{}\n",
+            (m.t[i] + 1.0) * 1000.0,
+            m.v_cm[i] * 100.0,
+            m.v_t[i] * 100.0
+        );
+        text.push_str(&row.replace('.', ","));
+    }
+    let path = csv("video.csv", &text);
+    let user = groovelab(&[
+        "fit",
+        "--preset",
+        "paper-b4.9",
+        "--data",
+        &path,
+        "--format",
+        "json",
+    ]);
+    assert!(
+        user.status.success(),
+        "{}",
+        String::from_utf8_lossy(&user.stderr)
+    );
+    let own = groovelab(&["fit", "--preset", "paper-b4.9", "--format", "json"]);
+    let a: serde_json::Value = serde_json::from_slice(&user.stdout).unwrap();
+    let b: serde_json::Value = serde_json::from_slice(&own.stdout).unwrap();
+    for key in ["mu_cm", "mu_t", "a_cm", "points"] {
+        let (x, y) = (
+            a["line_fit"][key].as_f64().unwrap(),
+            b["line_fit"][key].as_f64().unwrap(),
+        );
+        assert!(
+            (x - y).abs() <= 1e-9 * y.abs().max(1.0),
+            "{key}: {x} vs {y}"
+        );
+    }
+    assert!(
+        (a["model_fit"]["mu"].as_f64().unwrap() - b["model_fit"]["mu"].as_f64().unwrap()).abs()
+            < 1e-6
+    );
+    assert_eq!(a["model_fit"]["regime_observed"], "recollide");
+    // The interface's fields are all there.
+    for key in [
+        "from", "to", "points", "a_cm", "a_cm_se", "a_t", "a_t_se", "mu_cm", "mu_t", "f_net",
+        "tau_net",
+    ] {
+        assert!(b["line_fit"][key].is_number(), "line_fit.{key}");
+    }
+    for key in ["mu", "mu_se", "rms"] {
+        assert!(b["model_fit"][key].is_number(), "model_fit.{key}");
+    }
+    assert!(b["model_fit"]["regime_predicted"].is_string());
+    // Data from a file with explicit units and impact time.
+    let plain = csv(
+        "plain.csv",
+        "t,v_cm,v_t\n0,60,60\n10,61,61\n20,0,61\n30,-60,58\n40,-55,54\n50,-50,50\n60,-45,46\n",
+    );
+    let out = groovelab(&[
+        "fit",
+        "--preset",
+        "paper-b3.5",
+        "--data",
+        &plain,
+        "--time-unit",
+        "ms",
+        "--speed-unit",
+        "cm/s",
+        "--impact-at",
+        "20ms",
+        "--format",
+        "json",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!((v["line_fit"]["from"].as_f64().unwrap() - 0.01).abs() < 1e-12);
+}
+
+#[test]
+fn the_window_can_be_chosen() {
+    let (scene, m) = paper("3.5");
+    let auto = fit::line_fit(&m, &scene, (None, None)).unwrap();
+    let chosen = fit::line_fit(&m, &scene, (Some(0.06), Some(0.16))).unwrap();
+    assert_eq!(chosen.points, 6);
+    assert_ne!(auto.mu_cm, chosen.mu_cm);
+    assert!(
+        fit::line_fit(&m, &scene, (Some(0.1), Some(0.12))).is_err(),
+        "2 points"
+    );
+    let _ = data::parse(
+        "t,v_cm,v_t\n0,1,1\n0.01,0.5,1\n0.02,-1,1\n",
+        "x",
+        &Reading::default(),
+    )
+    .unwrap();
+}
