@@ -17,6 +17,7 @@ use crate::tui::{self, app::App};
 
 mod fit;
 mod methods;
+mod sweep;
 use crate::units::{Dimension, parse_quantity, show, significant};
 pub use methods::write_atomically;
 
@@ -54,6 +55,8 @@ pub enum Command {
     Compare(CompareArgs),
     /// Fit the model to measured data (a preset's, or a CSV file).
     Fit(FitArgs),
+    /// Regime map over one or two scene parameters.
+    Sweep(SweepArgs),
     /// List the built-in and user presets.
     Presets,
 }
@@ -126,6 +129,32 @@ pub struct FitArgs {
     /// Write the output to this file (atomically) instead of stdout.
     #[arg(long, value_name = "FILE")]
     pub output: Option<std::path::PathBuf>,
+}
+
+#[derive(Args, Debug)]
+pub struct SweepArgs {
+    /// First parameter and range, NAME=LO..HI with units (e.g. width=0..5.4cm).
+    #[arg(long, value_name = "NAME=LO..HI", allow_hyphen_values = true)]
+    pub x: String,
+    /// Second parameter and range (e.g. restitution=0.3..1); omit for a 1-D sweep.
+    #[arg(long, value_name = "NAME=LO..HI", allow_hyphen_values = true)]
+    pub y: Option<String>,
+    /// Grid points, NX or NXxNY.
+    #[arg(long, value_name = "NXxNY", default_value = "200x100")]
+    pub grid: String,
+    /// Output: CSV rows in grid order, JSON, or an SVG map.
+    #[arg(long, value_enum, default_value_t = SweepFormat::Csv)]
+    pub format: SweepFormat,
+    /// Write the output to this file (atomically) instead of stdout.
+    #[arg(long, value_name = "FILE")]
+    pub output: Option<std::path::PathBuf>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum SweepFormat {
+    Csv,
+    Json,
+    Svg,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
@@ -305,6 +334,8 @@ pub enum CliError {
     Invalid(String),
     #[error("{0}")]
     Io(#[from] std::io::Error),
+    #[error("interrupted: nothing was written")]
+    Interrupted,
 }
 
 /// What a command line asks for once it is valid.
@@ -323,6 +354,7 @@ pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
         Some(Command::Render(args)) => render(&cli.scene, args, cli.ascii).map(Outcome::Print),
         Some(Command::Compare(args)) => methods::compare(&cli.scene, args).map(Outcome::Print),
         Some(Command::Fit(args)) => fit::run(&cli.scene, args).map(Outcome::Print),
+        Some(Command::Sweep(args)) => sweep::run(&cli.scene, args).map(Outcome::Print),
         Some(Command::Presets) => Ok(Outcome::Print(presets())),
     }
 }

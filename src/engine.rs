@@ -64,6 +64,34 @@ struct ImpactRecord {
     ledger: Ledger,
 }
 
+/// The possible next events of a segment, on the stack: at most three per ball
+/// (rolling, pure gliding, pure slipping) and the impact.
+#[derive(Clone, Copy, Debug)]
+struct Candidates {
+    items: [(f64, Candidate); 7],
+    len: usize,
+}
+
+impl Default for Candidates {
+    fn default() -> Self {
+        Candidates {
+            items: [(0.0, Candidate::Impact); 7],
+            len: 0,
+        }
+    }
+}
+
+impl Candidates {
+    fn push(&mut self, c: (f64, Candidate)) {
+        self.items[self.len] = c;
+        self.len += 1;
+    }
+
+    fn as_slice(&self) -> &[(f64, Candidate)] {
+        &self.items[..self.len]
+    }
+}
+
 /// A possible next event of the current segment.
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Candidate {
@@ -147,9 +175,9 @@ impl Engine {
             accel: [(0.0, 0.0); 2],
             angle: [0.0; 2],
             ledger: Ledger::default(),
-            events: Vec::new(),
-            segments: Vec::new(),
-            history: Vec::new(),
+            events: Vec::with_capacity(16),
+            segments: Vec::with_capacity(16),
+            history: Vec::with_capacity(8),
             since_impact: 0.0,
             geometric_cycles: 0,
             impacts: 0,
@@ -217,15 +245,17 @@ impl Engine {
     /// Advances to the next event and applies it. Returns false once nothing more happens.
     fn step(&mut self) -> bool {
         let candidates = self.candidates();
-        let Some(tau) = candidates.iter().map(|c| c.0).reduce(f64::min) else {
+        let Some(tau) = candidates.as_slice().iter().map(|c| c.0).reduce(f64::min) else {
             self.push_segment(f64::INFINITY);
             return false;
         };
-        let due: Vec<Candidate> = candidates
-            .iter()
-            .filter(|c| c.0 <= tau * (1.0 + SIMULTANEOUS))
-            .map(|c| c.1)
-            .collect();
+        let mut due = Candidates::default();
+        for &c in candidates.as_slice() {
+            if c.0 <= tau * (1.0 + SIMULTANEOUS) {
+                due.push(c);
+            }
+        }
+        let due: Vec<Candidate> = due.as_slice().iter().map(|c| c.1).collect();
         let before = self.state;
         self.advance(tau);
         let mut kinds = Vec::new();
@@ -518,8 +548,8 @@ impl Engine {
     }
 
     /// Every event the current segment can end in, with its time from now.
-    fn candidates(&self) -> Vec<(f64, Candidate)> {
-        let mut out = Vec::with_capacity(6);
+    fn candidates(&self) -> Candidates {
+        let mut out = Candidates::default();
         for i in 0..2 {
             let s = self.state[i];
             let (a, du) = self.accel[i];

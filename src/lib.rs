@@ -16,5 +16,6 @@ pub mod model;
 pub mod preset;
 pub mod scene;
 pub mod solution;
+pub mod sweep;
 pub mod tui;
 pub mod units;

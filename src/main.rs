@@ -39,6 +39,10 @@ fn main() -> ExitCode {
                 }
             }
         }
+        Err(cli::CliError::Interrupted) => {
+            eprintln!("error: interrupted: nothing was written");
+            ExitCode::from(130)
+        }
         Err(e) => {
             eprintln!("error: {e}");
             ExitCode::from(2)

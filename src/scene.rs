@@ -251,32 +251,28 @@ impl SceneSpec {
             v.ok_or_else(|| SceneError::Other(format!("{name} is not set, give it as an option")))
         };
         let radius = need(self.radius, "radius")?;
-        check(
-            "radius R",
-            radius,
-            Dimension::Length,
-            radius > 0.0,
-            "R > 0".into(),
-        )?;
+        check("radius R", radius, Dimension::Length, radius > 0.0, || {
+            "R > 0".into()
+        })?;
         let width = need(self.width, "groove width")?;
         check(
             "groove width b",
             width,
             Dimension::Length,
             width >= 0.0 && width < 2.0 * radius,
-            format!("0 ≤ b < 2R = {}", show(2.0 * radius, Dimension::Length)),
+            || format!("0 ≤ b < 2R = {}", show(2.0 * radius, Dimension::Length)),
         )?;
         let mu = need(self.mu, "friction coefficient mu")?;
-        check("μ_k", mu, Dimension::Ratio, mu >= 0.0, "μ_k ≥ 0".into())?;
+        check("μ_k", mu, Dimension::Ratio, mu >= 0.0, || "μ_k ≥ 0".into())?;
         let g = self.g.unwrap_or(STANDARD_GRAVITY);
-        check("g", g, Dimension::Acceleration, g > 0.0, "g > 0".into())?;
+        check("g", g, Dimension::Acceleration, g > 0.0, || "g > 0".into())?;
         let restitution = self.restitution.unwrap_or(1.0);
         check(
             "restitution e",
             restitution,
             Dimension::Ratio,
             (0.0..=1.0).contains(&restitution),
-            "0 ≤ e ≤ 1".into(),
+            || "0 ≤ e ≤ 1".into(),
         )?;
         let rolling_resistance = self.rolling_resistance.unwrap_or(0.0);
         check(
@@ -284,36 +280,28 @@ impl SceneSpec {
             rolling_resistance,
             Dimension::Ratio,
             rolling_resistance >= 0.0,
-            "c_rr ≥ 0".into(),
+            || "c_rr ≥ 0".into(),
         )?;
         let mass_left = need(self.mass_left, "mass")?;
         let mass_right = need(self.mass_right, "mass")?;
         for (name, m) in [("left mass", mass_left), ("right mass", mass_right)] {
-            check(name, m, Dimension::Mass, m > 0.0, "m > 0".into())?;
+            check(name, m, Dimension::Mass, m > 0.0, || "m > 0".into())?;
         }
         let k = closed_form::contact_ratio(radius, width);
         let (v0_left, v0_right) = match self.height {
             Some(h) => {
-                check(
-                    "release height h",
-                    h,
-                    Dimension::Length,
-                    h >= 0.0,
-                    "h ≥ 0".into(),
-                )?;
+                check("release height h", h, Dimension::Length, h >= 0.0, || {
+                    "h ≥ 0".into()
+                })?;
                 let v = closed_form::release_speed(h, k, g);
                 (v, v)
             }
             None => (need(self.v0_left, "v0")?, need(self.v0_right, "v0")?),
         };
         for (name, v) in [("left v0", v0_left), ("right v0", v0_right)] {
-            check(
-                name,
-                v,
-                Dimension::Speed,
-                v.is_finite(),
-                "a finite speed".into(),
-            )?;
+            check(name, v, Dimension::Speed, v.is_finite(), || {
+                "a finite speed".into()
+            })?;
         }
         if v0_left + v0_right < 0.0 {
             return Err(SceneError::OutOfRange {
@@ -323,21 +311,13 @@ impl SceneSpec {
             });
         }
         let t_start = self.t_start.unwrap_or(Span::default().t_start);
-        check(
-            "t_start",
-            t_start,
-            Dimension::Time,
-            t_start <= 0.0,
-            "t_start ≤ 0 s (the first impact is at t = 0)".into(),
-        )?;
+        check("t_start", t_start, Dimension::Time, t_start <= 0.0, || {
+            "t_start ≤ 0 s (the first impact is at t = 0)".into()
+        })?;
         if let Some(t_end) = self.t_end {
-            check(
-                "t_end",
-                t_end,
-                Dimension::Time,
-                t_end > t_start,
-                format!("t_end > t_start = {}", show(t_start, Dimension::Time)),
-            )?;
+            check("t_end", t_end, Dimension::Time, t_end > t_start, || {
+                format!("t_end > t_start = {}", show(t_start, Dimension::Time))
+            })?;
         }
         let scene = Scene {
             radius,
@@ -365,12 +345,14 @@ impl SceneSpec {
     }
 }
 
+/// `Ok` if `ok` and `value` is finite; the message is only built for an error (this
+/// runs for every point of a sweep).
 fn check(
     name: &'static str,
     value: f64,
     dim: Dimension,
     ok: bool,
-    allowed: String,
+    allowed: impl FnOnce() -> String,
 ) -> Result<(), SceneError> {
     if ok && value.is_finite() {
         Ok(())
@@ -378,7 +360,7 @@ fn check(
         Err(SceneError::OutOfRange {
             name,
             value: show(value, dim).to_string(),
-            allowed,
+            allowed: allowed(),
         })
     }
 }

@@ -419,3 +419,27 @@ fn methods_view_and_overlay() {
     press(&mut a, "o o o o o");
     assert!(a.overlay.is_none(), "cycling ends with the overlay off");
 }
+
+#[test]
+fn map_view_marks_the_scene_on_the_regime_grid() {
+    let s = screen("paper-b3.5", 0.0, (120, 40), false, Some("g"));
+    assert!(s.contains("Regime: b/R across, e up"));
+    assert!(s.contains("◆"), "the scene is marked");
+    assert!(s.contains("Paper fig."));
+    let ascii = screen("paper-b3.5", 0.0, (80, 24), true, Some("g"));
+    assert!(ascii.is_ascii() && ascii.contains('@'));
+    // The marker moves with the width: b/R across, so a wider groove is further right.
+    let col = |s: &str| {
+        s.lines()
+            .find_map(|l| l.chars().position(|c| c == '◆'))
+            .unwrap()
+    };
+    let wider = screen(
+        "paper-b3.5",
+        0.0,
+        (120, 40),
+        false,
+        Some("S-right S-right g"),
+    );
+    assert!(col(&wider) > col(&s));
+}

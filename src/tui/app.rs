@@ -137,6 +137,7 @@ pub enum Action {
     SwitchBall,
     TogglePositions,
     ToggleMethods,
+    ToggleMap,
     ToggleFit,
     FitStartEarlier,
     FitStartLater,
@@ -197,6 +198,8 @@ pub struct App {
     pub overlay_method: Option<Method>,
     pub overlay_level: u8,
     pub overlay: Option<Overlay>,
+    /// The Map view (regime map and the paper's figure) instead of the charts.
+    pub map_view: bool,
     /// The Fit view instead of the info panel.
     pub fit_view: bool,
     /// Line-fit window (None: the sliding phase).
@@ -280,6 +283,7 @@ impl App {
             overlay_method: None,
             overlay_level: 2,
             overlay: None,
+            map_view: false,
             fit_view: false,
             fit_window: (None, None),
             fits: None,
@@ -620,8 +624,15 @@ impl App {
             Action::TogglePositions => self.show_positions = !self.show_positions,
             Action::ToggleMethods => {
                 self.methods_view = !self.methods_view;
+                self.map_view = false;
                 if self.methods_view {
                     self.ensure_method_rows();
+                }
+            }
+            Action::ToggleMap => {
+                self.map_view = !self.map_view;
+                if self.map_view {
+                    self.methods_view = false;
                 }
             }
             Action::ToggleFit => {

@@ -126,6 +126,12 @@ pub const TABLE: &[Binding] = &[
         hint: Some("methods"),
     },
     Binding {
+        keys: &["g"],
+        action: Action::ToggleMap,
+        help: "Map view: regime over b/R and e with this scene marked, the paper's figure",
+        hint: Some("map"),
+    },
+    Binding {
         keys: &["f"],
         action: Action::ToggleFit,
         help: "Fit view: the paper's line fits and a model fit to the measured data",

@@ -81,7 +81,13 @@ pub fn nice_ticks(lo: f64, hi: f64, max: usize) -> ((f64, f64), Vec<f64>) {
 
 /// A tick label with as many decimals as the step needs.
 pub fn tick_label(v: f64, step: f64) -> String {
-    let decimals = (-step.abs().log10().floor()).max(0.0) as usize;
+    // Enough decimals to write the step exactly (0.25 needs two).
+    let decimals = (0..6)
+        .find(|&d| {
+            let scaled = step.abs() * 10f64.powi(d);
+            (scaled - scaled.round()).abs() < 1e-9 * scaled.max(1.0)
+        })
+        .unwrap_or(6) as usize;
     let s = format!("{v:.decimals$}");
     if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {
         s[1..].to_string()
@@ -364,6 +370,8 @@ mod tests {
         assert!((step - 0.2).abs() < 1e-12, "{step}");
         assert_eq!(tick_label(-0.0, 0.2), "0.0");
         assert_eq!(tick_label(0.4, 0.2), "0.4");
+        assert_eq!(tick_label(2.25, 0.25), "2.25");
+        assert_eq!(tick_label(10.0, 5.0), "10");
     }
 
     #[test]

@@ -5,6 +5,7 @@
 mod charts;
 mod fit;
 mod info;
+mod map;
 mod methods;
 mod params;
 
@@ -88,7 +89,10 @@ pub fn draw(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         Some(p) => {
             params::render(app, p.params, buf, theme);
             scene::render(app, p.scene, buf, theme);
-            if app.methods_view {
+            if app.map_view {
+                map::render(app, p.chart, buf, theme);
+                info::render(app, p.info, buf, theme);
+            } else if app.methods_view {
                 methods::render_diagram(app, p.chart, buf, theme);
                 methods::render_rows(app, p.info, buf, theme);
             } else {

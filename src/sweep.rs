@@ -1,0 +1,233 @@
+//! Regime maps: one scene parameter (or two) swept over a grid, each point solved
+//! exactly, in parallel, with results in grid order whatever the thread count.
+
+use std::sync::atomic::{AtomicBool, Ordering};
+
+use rayon::prelude::*;
+use serde::Serialize;
+
+use crate::derived::{Derived, Regime};
+use crate::engine;
+use crate::scene::{Key, SceneSpec, Span};
+
+/// One swept parameter: `key` from `lo` to `hi` (SI) in `n` points, both ends included.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Axis {
+    #[serde(serialize_with = "key_name")]
+    pub key: Key,
+    pub lo: f64,
+    pub hi: f64,
+    pub n: usize,
+}
+
+fn key_name<S: serde::Serializer>(k: &Key, s: S) -> Result<S::Ok, S::Error> {
+    s.serialize_str(k.name())
+}
+
+impl Axis {
+    pub fn value(&self, i: usize) -> f64 {
+        if self.n <= 1 {
+            self.lo
+        } else {
+            self.lo + (self.hi - self.lo) * i as f64 / (self.n - 1) as f64
+        }
+    }
+}
+
+/// What a grid point's scene does.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Point {
+    pub x: f64,
+    pub y: Option<f64>,
+    pub regime: Regime,
+    /// The left ball's rolling speed after the first impact over its v0 (positive:
+    /// back toward the other ball); `None` without friction or impact.
+    pub v_ratio: Option<f64>,
+    /// The left ball's t' (s).
+    pub t_roll: Option<f64>,
+    pub impacts: usize,
+    pub t_accumulation: Option<f64>,
+}
+
+/// Why a sweep cannot run.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum SweepError {
+    #[error("{0}")]
+    Invalid(String),
+    #[error("interrupted: nothing was written")]
+    Interrupted,
+}
+
+/// The scene at grid point (i, j).
+fn spec_at(base: &SceneSpec, x: &Axis, y: Option<&Axis>, i: usize, j: usize) -> SceneSpec {
+    let mut spec = base.clone();
+    let mut set = |axis: &Axis, k: usize| {
+        if matches!(axis.key, Key::V0 | Key::V0Left | Key::V0Right) {
+            spec.height = None;
+        }
+        spec.set(axis.key, axis.value(k));
+    };
+    set(x, i);
+    if let Some(y) = y {
+        set(y, j);
+    }
+    spec
+}
+
+/// Solves one grid point.
+pub fn point(spec: &SceneSpec) -> Result<(crate::scene::Scene, Point), String> {
+    let (scene, _) = spec.resolve().map_err(|e| e.to_string())?;
+    let derived = Derived::of(&scene);
+    let sol = engine::solve(
+        &scene,
+        &Span {
+            t_start: 0.0,
+            t_end: None,
+        },
+    );
+    let rec = derived.left_after_impact;
+    Ok((
+        scene,
+        Point {
+            x: 0.0,
+            y: None,
+            regime: derived.regime,
+            v_ratio: rec
+                .filter(|_| scene.left.v0 != 0.0)
+                .map(|r| r.v_roll / scene.left.v0),
+            t_roll: rec.map(|r| r.t_roll),
+            impacts: sol.impacts,
+            t_accumulation: sol.accumulation,
+        },
+    ))
+}
+
+/// Checks the grid's corners (and so, for these monotone constraints, every point).
+pub fn check(base: &SceneSpec, x: &Axis, y: Option<&Axis>) -> Result<(), SweepError> {
+    let nx = x.n.max(1);
+    let ny = y.map_or(1, |a| a.n.max(1));
+    for (i, j) in [(0, 0), (nx - 1, 0), (0, ny - 1), (nx - 1, ny - 1)] {
+        let spec = spec_at(base, x, y, i, j);
+        spec.resolve().map_err(|e| {
+            SweepError::Invalid(format!(
+                "the grid corner {}{} is not a valid scene: {e}",
+                describe(x, i),
+                y.map_or(String::new(), |y| format!(", {}", describe(y, j)))
+            ))
+        })?;
+    }
+    Ok(())
+}
+
+fn describe(a: &Axis, i: usize) -> String {
+    format!("{} = {}", a.key.name(), a.value(i))
+}
+
+/// Solves every grid point in parallel; rows come in grid order (y outer, x inner).
+/// `stop` ends the work early (the result is then an error, never a partial map);
+/// `tick` is called once per point (for a progress bar).
+pub fn run(
+    base: &SceneSpec,
+    x: &Axis,
+    y: Option<&Axis>,
+    stop: &AtomicBool,
+    tick: &(dyn Fn() + Sync),
+) -> Result<Vec<Point>, SweepError> {
+    check(base, x, y)?;
+    let nx = x.n.max(1);
+    let ny = y.map_or(1, |a| a.n.max(1));
+    let points: Vec<Option<Point>> = (0..nx * ny)
+        .into_par_iter()
+        .map(|idx| {
+            if stop.load(Ordering::Relaxed) {
+                return None;
+            }
+            let (i, j) = (idx % nx, idx / nx);
+            let spec = spec_at(base, x, y, i, j);
+            let (_, mut p) = point(&spec).ok()?;
+            p.x = x.value(i);
+            p.y = y.map(|a| a.value(j));
+            tick();
+            Some(p)
+        })
+        .collect();
+    if stop.load(Ordering::Relaxed) {
+        return Err(SweepError::Interrupted);
+    }
+    points
+        .into_iter()
+        .enumerate()
+        .map(|(idx, p)| {
+            p.ok_or_else(|| {
+                SweepError::Invalid(format!(
+                    "grid point {} is not a valid scene",
+                    describe(x, idx % nx)
+                ))
+            })
+        })
+        .collect()
+}
+
+/// Parses `name=lo..hi` with units (`width=0..5.4cm`: a bare bound takes the other's
+/// unit) into an axis of `n` points.
+pub fn parse_axis(text: &str, n: usize) -> Result<Axis, String> {
+    let (name, range) = text
+        .split_once('=')
+        .ok_or_else(|| format!("'{text}' is not NAME=LO..HI, e.g. width=0..5.4cm"))?;
+    let key = Key::from_name(&name.trim().replace('-', "_")).ok_or_else(|| {
+        let names: Vec<&str> = Key::ALL
+            .iter()
+            .filter(|k| !matches!(k, Key::TStart | Key::TEnd))
+            .map(|k| k.name())
+            .collect();
+        format!("unknown parameter '{name}', allowed: {}", names.join(", "))
+    })?;
+    if matches!(key, Key::TStart | Key::TEnd) {
+        return Err(format!("{} is not a scene parameter to sweep", key.name()));
+    }
+    let (a, b) = range
+        .split_once("..")
+        .ok_or_else(|| format!("'{range}' is not LO..HI, e.g. 0..5.4cm"))?;
+    let dim = key.dimension();
+    let unit_of = |s: &str| {
+        s.trim()
+            .trim_start_matches(|c: char| c.is_ascii_digit() || "+-.eE".contains(c))
+            .to_string()
+    };
+    let (ua, ub) = (unit_of(a), unit_of(b));
+    let fix = |s: &str, own: &str, other: &str| {
+        if own.is_empty() && !other.is_empty() {
+            format!("{}{other}", s.trim())
+        } else {
+            s.trim().to_string()
+        }
+    };
+    let lo = crate::units::parse_quantity(&fix(a, &ua, &ub), dim).map_err(|e| e.to_string())?;
+    let hi = crate::units::parse_quantity(&fix(b, &ub, &ua), dim).map_err(|e| e.to_string())?;
+    if hi < lo {
+        return Err(format!("'{range}' runs backwards, allowed LO ≤ HI"));
+    }
+    if n == 0 || n > 10_000 {
+        return Err(format!("{n} points on an axis, allowed 1 ..= 10000"));
+    }
+    Ok(Axis { key, lo, hi, n })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn axes_take_units_for_both_ends() {
+        let a = parse_axis("width=0..5.4cm", 10).unwrap();
+        assert_eq!((a.key, a.lo, a.hi), (Key::Width, 0.0, 0.054));
+        let a = parse_axis("width=2..5cm", 4).unwrap();
+        assert_eq!((a.lo, a.hi), (0.02, 0.05));
+        assert_eq!(a.value(3), 0.05);
+        let a = parse_axis("restitution=0.3..1", 8).unwrap();
+        assert_eq!((a.lo, a.hi), (0.3, 1.0));
+        assert!(parse_axis("colour=0..1", 3).is_err());
+        assert!(parse_axis("width=5..1cm", 3).is_err());
+        assert!(parse_axis("width", 3).is_err());
+    }
+}

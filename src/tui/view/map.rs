@@ -1,0 +1,139 @@
+//! The Map view: the regime over groove width and restitution for the current balls
+//! as a coloured character grid with the scene marked, and the paper's figure of
+//! |a_cm|/(μ_k g), |a_t|/(μ_k g) and D against b/R with the current b marked.
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::widgets::Widget;
+
+use super::block;
+use crate::closed_form;
+use crate::derived::{Derived, Regime};
+use crate::tui::app::App;
+use crate::tui::plot::{Draw, Plot, Series, VLine};
+use crate::tui::theme::Theme;
+
+pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
+    let [left, right] =
+        Layout::horizontal([Constraint::Percentage(55), Constraint::Percentage(45)]).areas(area);
+    regime_map(app, left, buf, theme);
+    paper_figure(app, right, buf, theme);
+}
+
+fn regime_map(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
+    let g = theme.glyphs;
+    let blk = block(" Regime: b/R across, e up  [g] back ", theme);
+    let inner = blk.inner(area);
+    blk.render(area, buf);
+    if inner.width < 12 || inner.height < 4 {
+        return;
+    }
+    // Bottom row: legend; left column: e ticks (4 wide).
+    let cols = usize::from(inner.width - 5);
+    let rows = usize::from(inner.height - 2);
+    let radius = app.scene.radius;
+    let glyph = |r: Regime| match (r, g.ascii) {
+        (Regime::Depart, _) => ".",
+        (Regime::Rest, _) => "=",
+        (Regime::Recollide, false) => "▒",
+        (Regime::Recollide, true) => "#",
+    };
+    let style = |r: Regime| match r {
+        Regime::Depart => theme.left,
+        Regime::Rest => theme.dim,
+        Regime::Recollide => theme.accent,
+    };
+    let b_max = 2.0 * radius * 0.99;
+    for rr in 0..rows {
+        let e = 1.0 - rr as f64 / (rows - 1).max(1) as f64;
+        let label = if rr == 0 || rr == rows - 1 || rr == rows / 2 {
+            format!("{e:>4.1}")
+        } else {
+            "    ".to_string()
+        };
+        buf.set_string(inner.x, inner.y + rr as u16, label, theme.dim);
+        for c in 0..cols {
+            let b = b_max * c as f64 / (cols - 1).max(1) as f64;
+            let mut scene = app.scene;
+            scene.width = b;
+            scene.restitution = e;
+            let r = Derived::of(&scene).regime;
+            buf.set_string(
+                inner.x + 5 + c as u16,
+                inner.y + rr as u16,
+                glyph(r),
+                style(r),
+            );
+        }
+    }
+    // The scene itself.
+    let c = (app.scene.width / b_max * (cols - 1) as f64).round() as u16;
+    let r = ((1.0 - app.scene.restitution) * (rows - 1) as f64).round() as u16;
+    if usize::from(c) < cols && usize::from(r) < rows {
+        buf.set_string(
+            inner.x + 5 + c,
+            inner.y + r,
+            if g.ascii { "@" } else { "◆" },
+            theme.cursor,
+        );
+    }
+    let legend = format!(
+        "0 … b/R {:.2}   {} depart  = rest  {} recollide  {} this scene",
+        b_max / radius,
+        ".",
+        glyph(Regime::Recollide),
+        if g.ascii { "@" } else { "◆" }
+    );
+    buf.set_stringn(
+        inner.x,
+        inner.bottom() - 1,
+        legend,
+        usize::from(inner.width),
+        theme.dim,
+    );
+}
+
+fn paper_figure(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
+    let blk = block(" Paper fig.: a/(μ g) and D against b/R ", theme);
+    let inner = blk.inner(area);
+    blk.render(area, buf);
+    let n = 200;
+    let xs: Vec<f64> = (0..=n).map(|i| 1.95 * i as f64 / n as f64).collect();
+    let k = |x: f64| closed_form::contact_ratio(1.0, x);
+    let series = |name: &str, f: &dyn Fn(f64) -> f64, style, glyph| Series {
+        name: name.to_string(),
+        points: xs.iter().map(|&x| (x, f(x))).collect(),
+        style,
+        glyph,
+        draw: Draw::Line,
+    };
+    let plot = Plot {
+        x_range: (0.0, 2.0),
+        y_range: (0.0, 3.0),
+        x_title: "b/R".into(),
+        y_title: String::new(),
+        series: vec![
+            series("|a_cm|/mu g", &|x| 1.0 / k(x), theme.left, "*"),
+            series("|a_t|/mu g", &|x| 2.5 * k(x), theme.accent, "+"),
+            series("D", &|x| closed_form::determinant(k(x)), theme.right, "o"),
+        ],
+        vlines: vec![
+            VLine {
+                x: app.scene.width / app.scene.radius,
+                label: Some("b".into()),
+                style: theme.cursor,
+                priority: 1,
+            },
+            VLine {
+                x: (12.0f64 / 5.0).sqrt(),
+                label: Some("b*".into()),
+                style: theme.event,
+                priority: 0,
+            },
+        ],
+        cursor: None,
+        x_ticks: None,
+        y_ticks: None,
+    };
+    plot.render(inner, buf, theme);
+}

@@ -1,0 +1,176 @@
+//! Regime maps: the boundary where physics.md puts it, the same bytes whatever the
+//! thread count, and agreement with single runs.
+
+use std::process::Command;
+use std::sync::atomic::AtomicBool;
+
+use groovelab::closed_form;
+use groovelab::derived::Regime;
+use groovelab::preset::Preset;
+use groovelab::scene::SceneSpec;
+use groovelab::sweep::{self, Point, SweepError};
+
+fn base(preset: &str) -> SceneSpec {
+    Preset::load(preset).unwrap().spec
+}
+
+fn map(spec: &SceneSpec, x: &str, y: Option<&str>, nx: usize, ny: usize) -> Vec<Point> {
+    let x = sweep::parse_axis(x, nx).unwrap();
+    let y = y.map(|y| sweep::parse_axis(y, ny).unwrap());
+    sweep::run(spec, &x, y.as_ref(), &AtomicBool::new(false), &|| {}).unwrap()
+}
+
+#[test]
+fn the_boundary_is_b_star_of_e_within_one_cell() {
+    let spec = base("paper-b4.9");
+    let (nx, ny) = (120, 60);
+    let points = map(&spec, "width=0..5.4cm", Some("restitution=0.3..1"), nx, ny);
+    let dx = 0.054 / (nx - 1) as f64;
+    let radius = spec.radius.unwrap();
+    for row in points.chunks(nx) {
+        let e = row[0].y.unwrap();
+        match closed_form::critical_width(radius, e) {
+            None => assert!(row.iter().all(|p| p.regime == Regime::Recollide), "e = {e}"),
+            Some(b) => {
+                for p in row {
+                    // Everything more than one cell from b* is on its side of it.
+                    if p.x < b - dx {
+                        assert_eq!(p.regime, Regime::Depart, "e = {e}, b = {}", p.x);
+                    } else if p.x > b + dx {
+                        assert_eq!(p.regime, Regime::Recollide, "e = {e}, b = {}", p.x);
+                    }
+                }
+                // And the switch happens there.
+                let first = row.iter().position(|p| p.regime != Regime::Depart).unwrap();
+                assert!(
+                    (row[first].x - b).abs() <= dx,
+                    "e = {e}: switch at {} vs b* {b}",
+                    row[first].x
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn one_thread_or_many_give_the_same_map() {
+    let spec = base("unequal-speeds");
+    let run = |threads| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap()
+            .install(|| map(&spec, "width=1..5.4cm", Some("mu=0.05..0.5"), 60, 30))
+    };
+    let one = run(1);
+    let four = run(4);
+    assert_eq!(one.len(), 1800);
+    assert_eq!(one, four);
+    // Grid order: y outer, x inner.
+    assert!(one[0].x < one[1].x && one[0].y == one[1].y);
+    assert!(one[60].y > one[0].y);
+}
+
+#[test]
+fn points_agree_with_single_simulate_runs() {
+    let spec = base("unequal-speeds");
+    let points = map(&spec, "width=2..5cm", Some("v0_right=0.1..0.8"), 7, 5);
+    for p in points.iter().step_by(6) {
+        let out = Command::new(env!("CARGO_BIN_EXE_groovelab"))
+            .args([
+                "simulate",
+                "--preset",
+                "unequal-speeds",
+                "--width",
+                &format!("{}", p.x),
+                "--v0-right",
+                &format!("{}", p.y.unwrap()),
+                "--format",
+                "json",
+            ])
+            .output()
+            .unwrap();
+        assert!(out.status.success());
+        let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        assert_eq!(doc["derived"]["regime"], p.regime.name(), "{p:?}");
+        assert_eq!(
+            doc["summary"]["impacts"].as_u64().unwrap() as usize,
+            p.impacts,
+            "{p:?}"
+        );
+        match p.t_accumulation {
+            Some(t) => {
+                let s = doc["summary"]["accumulation_time"].as_f64().unwrap();
+                assert!((s - t).abs() <= 1e-12 * t.abs().max(1.0), "{p:?}");
+            }
+            None => assert!(doc["summary"]["accumulation_time"].is_null()),
+        }
+        let v = doc["derived"]["left_after_impact"]["v_roll"]
+            .as_f64()
+            .unwrap();
+        let v0 = doc["scene"]["left"]["v0"].as_f64().unwrap();
+        assert!((v / v0 - p.v_ratio.unwrap()).abs() < 1e-12, "{p:?}");
+    }
+}
+
+#[test]
+fn a_stop_request_leaves_no_partial_map() {
+    let spec = base("paper-b4.9");
+    let x = sweep::parse_axis("width=0..5cm", 50).unwrap();
+    let stop = AtomicBool::new(true);
+    assert_eq!(
+        sweep::run(&spec, &x, None, &stop, &|| {}),
+        Err(SweepError::Interrupted)
+    );
+}
+
+fn groovelab(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_groovelab"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+#[test]
+fn csv_follows_the_interface_and_bad_grids_are_refused() {
+    let out = groovelab(&["sweep", "--x", "width=3..5cm", "--grid", "5"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next(),
+        Some("x,y,regime,v_ratio,t_roll,impacts,t_accumulation")
+    );
+    let rows: Vec<&str> = lines.collect();
+    assert_eq!(rows.len(), 5);
+    assert!(rows[0].starts_with("0.03,,depart,"), "{}", rows[0]);
+    assert!(rows[4].starts_with("0.05,,recollide,"), "{}", rows[4]);
+    for (args, want) in [
+        (&["sweep", "--x", "width=0..6cm"][..], "b < 2R"),
+        (&["sweep", "--x", "colour=0..1"][..], "unknown parameter"),
+        (
+            &["sweep", "--x", "width=0..5cm", "--grid", "0x3"][..],
+            "--grid",
+        ),
+        (
+            &["sweep", "--x", "width=0..5cm", "--grid", "abc"][..],
+            "--grid",
+        ),
+        (&["sweep", "--x", "width=5..1cm"][..], "backwards"),
+        (&["sweep", "--x", "mu=-1..1"][..], "μ_k ≥ 0"),
+        (&["sweep"][..], "--x"),
+    ] {
+        let out = groovelab(args);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert!(out.stdout.is_empty());
+        assert!(
+            err.starts_with("error: ") && err.contains(want),
+            "{args:?}: {err}"
+        );
+    }
+}
