@@ -116,7 +116,7 @@ fn synthetic_data_give_back_mu_within_the_reported_uncertainty() {
     let seeds = 60;
     let mut inside = 0;
     for seed in 1..=seeds {
-        let mut noise = Noise(0x9E3779B97F4A7C15 ^ (seed as u64 * 0x632BE59BD9B4E019));
+        let mut noise = Noise(0x9E3779B97F4A7C15 ^ (seed as u64).wrapping_mul(0x632BE59BD9B4E019));
         let (mut v_cm, mut v_t) = (Vec::new(), Vec::new());
         for &t in &frames {
             let s = sol.at(t);
