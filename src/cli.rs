@@ -609,30 +609,8 @@ fn table(
         e1.lost.rolling_resistance
     );
     let _ = writeln!(out);
-    let header = format!(
-        "{:>10}  {:<14} {:<6} {:>9} {:>9} {:>9}  {:>9} {:>9} {:>9}",
-        "t (s)",
-        "event",
-        "ball",
-        "x_L (cm)",
-        "v_L (m/s)",
-        "u_L (m/s)",
-        "x_R (cm)",
-        "v_R (m/s)",
-        "u_R (m/s)"
-    );
-    let row =
-        |t: f64, kind: &str, ball: &str, l: crate::model::BallState, r: crate::model::BallState| {
-            format!(
-                "{t:>10.6}  {kind:<14} {ball:<6} {:>9.4} {:>9.5} {:>9.5}  {:>9.4} {:>9.5} {:>9.5}",
-                l.x * 100.0,
-                l.v,
-                l.u,
-                r.x * 100.0,
-                r.v,
-                r.u
-            )
-        };
+    let header = state_header();
+    let row = state_row;
     let _ = writeln!(out, "{header}");
     for e in solution.visible_events() {
         let _ = writeln!(
@@ -670,4 +648,39 @@ fn presets() -> String {
         let _ = writeln!(out, "(skipped: {e})");
     }
     out
+}
+
+/// Header of the tables of both balls' states (events and samples).
+pub(crate) fn state_header() -> String {
+    format!(
+        "{:>10}  {:<14} {:<6} {:>9} {:>9} {:>9}  {:>9} {:>9} {:>9}",
+        "t (s)",
+        "event",
+        "ball",
+        "x_L (cm)",
+        "v_L (m/s)",
+        "u_L (m/s)",
+        "x_R (cm)",
+        "v_R (m/s)",
+        "u_R (m/s)"
+    )
+}
+
+/// One row of those tables.
+pub(crate) fn state_row(
+    t: f64,
+    kind: &str,
+    ball: &str,
+    l: crate::model::BallState,
+    r: crate::model::BallState,
+) -> String {
+    format!(
+        "{t:>10.6}  {kind:<14} {ball:<6} {:>9.4} {:>9.5} {:>9.5}  {:>9.4} {:>9.5} {:>9.5}",
+        l.x * 100.0,
+        l.v,
+        l.u,
+        r.x * 100.0,
+        r.v,
+        r.u
+    )
 }

@@ -190,19 +190,7 @@ pub(super) fn simulate_method(
                 outcome.rhs_evals,
                 stalled.map_or(String::new(), |s| format!(", stalled: {s}"))
             );
-            let _ = writeln!(
-                out,
-                "{:>10}  {:<14} {:<6} {:>9} {:>9} {:>9}  {:>9} {:>9} {:>9}",
-                "t (s)",
-                "event",
-                "ball",
-                "x_L (cm)",
-                "v_L (m/s)",
-                "u_L (m/s)",
-                "x_R (cm)",
-                "v_R (m/s)",
-                "u_R (m/s)"
-            );
+            let _ = writeln!(out, "{}", super::state_header());
             let mut rows: Vec<_> = rec
                 .events
                 .iter()
@@ -222,16 +210,7 @@ pub(super) fn simulate_method(
                 .collect();
             rows.sort_by(|a, b| a.0.total_cmp(&b.0));
             for (t, kind, ball, l, r) in rows {
-                let _ = writeln!(
-                    out,
-                    "{t:>10.6}  {kind:<14} {ball:<6} {:>9.4} {:>9.5} {:>9.5}  {:>9.4} {:>9.5} {:>9.5}",
-                    l.x * 100.0,
-                    l.v,
-                    l.u,
-                    r.x * 100.0,
-                    r.v,
-                    r.u
-                );
+                let _ = writeln!(out, "{}", super::state_row(t, kind, ball, l, r));
             }
             out
         }

@@ -2,7 +2,8 @@
 //! classical RK4 with `tanh(s/ε)` friction. Impacts: see the module above.
 
 use super::{
-    EventTracker, Friction, Method, Model, Observer, Outcome, Settings, Y, resolve_overlap, rhs,
+    Friction, GridStep, Method, Model, Observer, Outcome, Settings, Y, resolve_overlap, rhs,
+    run_grid,
 };
 
 /// Butcher tableau of classical RK4, as data.
@@ -54,52 +55,18 @@ pub(super) fn integrate(
     s: &Settings,
     obs: &mut dyn Observer,
 ) -> Outcome {
-    let law = if method.regularised() {
-        Friction::Tanh(s.epsilon)
+    let (law, roll_threshold) = if method.regularised() {
+        (Friction::Tanh(s.epsilon), s.epsilon)
     } else {
-        Friction::Coulomb
+        (Friction::Coulomb, 0.0)
     };
-    let h = s.step;
-    let n = ((t1 - t0) / h).ceil() as usize;
-    let mut out = Outcome {
-        steps: 0,
-        rhs_evals: 0,
-        stalled: None,
-        aborted: false,
-        t: t0,
-        y: y0,
-    };
-    if n > s.max_steps {
-        out.stalled = Some(format!("{n} steps needed, budget {}", s.max_steps));
-        return out;
-    }
-    let mut tracker = EventTracker::new(match law {
-        Friction::Tanh(eps) => eps,
-        Friction::Coulomb => 0.0,
-    });
-    if !obs.step(t0, &y0) {
-        out.aborted = true;
-        return out;
-    }
-    tracker.step(t0, &y0, obs);
-    let mut y = y0;
-    for i in 1..=n {
-        // Steps land on the grid t0 + i h (the last one on t1), without drift.
-        let t = if i == n { t1 } else { t0 + i as f64 * h };
-        let (next, evals) = step(method, m, law, &y, t - out.t);
-        y = next;
-        out.rhs_evals += evals;
-        out.steps += 1;
-        out.t = t;
-        if resolve_overlap(m, &mut y) {
-            tracker.impact(t, &y, obs);
+    run_grid(y0, t0, t1, s, roll_threshold, obs, |y, h| {
+        let (mut next, rhs_evals) = step(method, m, law, y, h);
+        let impact = resolve_overlap(m, &mut next);
+        GridStep {
+            y: next,
+            rhs_evals,
+            impact,
         }
-        tracker.step(t, &y, obs);
-        if !obs.step(t, &y) {
-            out.aborted = true;
-            break;
-        }
-    }
-    out.y = y;
-    out
+    })
 }

@@ -277,6 +277,64 @@ pub fn start_state(scene: &Scene, t_start: f64) -> Y {
     ]
 }
 
+/// One step of a fixed-grid method: the new state, right-hand-side evaluations, and
+/// whether an impact happened in it.
+pub(crate) struct GridStep {
+    pub y: Y,
+    pub rhs_evals: usize,
+    pub impact: bool,
+}
+
+/// Runs a fixed-step method on the grid `t0 + i h` (the last step lands on `t1`, with
+/// no drift), reporting steps and events; refuses up front a run beyond the budget.
+pub(crate) fn run_grid(
+    y0: Y,
+    t0: f64,
+    t1: f64,
+    s: &Settings,
+    roll_threshold: f64,
+    obs: &mut dyn Observer,
+    mut step: impl FnMut(&Y, f64) -> GridStep,
+) -> Outcome {
+    let h = s.step;
+    let n = ((t1 - t0) / h).ceil() as usize;
+    let mut out = Outcome {
+        steps: 0,
+        rhs_evals: 0,
+        stalled: None,
+        aborted: false,
+        t: t0,
+        y: y0,
+    };
+    if n > s.max_steps {
+        out.stalled = Some(format!("{n} steps needed, budget {}", s.max_steps));
+        return out;
+    }
+    let mut tracker = EventTracker::new(roll_threshold);
+    if !obs.step(t0, &y0) {
+        out.aborted = true;
+        return out;
+    }
+    tracker.step(t0, &y0, obs);
+    for i in 1..=n {
+        let t = if i == n { t1 } else { t0 + i as f64 * h };
+        let next = step(&out.y, t - out.t);
+        out.y = next.y;
+        out.rhs_evals += next.rhs_evals;
+        out.steps += 1;
+        out.t = t;
+        if next.impact {
+            tracker.impact(t, &out.y, obs);
+        }
+        tracker.step(t, &out.y, obs);
+        if !obs.step(t, &out.y) {
+            out.aborted = true;
+            break;
+        }
+    }
+    out
+}
+
 /// Reports "rolling" once per ball after each impact, as a time-stepping method can
 /// see it: the slip changes sign (Coulomb friction), or falls below `threshold` (the
 /// regularised law, whose slip decays without crossing zero).

@@ -3,7 +3,7 @@
 //! Coulomb friction as a set-valued law solved exactly in each step. No event is
 //! located and no step is ever refused: accumulations of impacts cost nothing.
 
-use super::{EventTracker, Model, Observer, Outcome, Settings, Y, gap};
+use super::{GridStep, Model, Observer, Outcome, Settings, Y, gap, run_grid};
 
 const THETA: f64 = 0.5;
 
@@ -35,6 +35,47 @@ fn separation(m: &Model, y: &Y, lambda: f64, h: f64) -> (f64, [(f64, f64); 2]) {
     (r.0 - l.0, [l, r])
 }
 
+/// One Moreau–Jean step of length `dt` from `y`.
+fn step(m: &Model, y: &Y, dt: f64) -> GridStep {
+    let w = y[4] - y[1]; // v_R − v_L before the step; negative while closing
+    // Contact is active when the predicted gap closes within the step.
+    let active = gap(m, y) + dt * w.min(0.0) <= 1e-12 * m.radius;
+    let (sep, mut next) = separation(m, y, 0.0, dt);
+    // Newton at velocity level: v_R⁺ − v_L⁺ ≥ −e w, with a push λ ≥ 0 only if needed.
+    let target = (-m.restitution * w).max(0.0);
+    let mut impact = false;
+    if active && sep < target {
+        // The separation speed grows monotonically with λ: bracket, then bisect.
+        let (mut lo, mut hi) = (0.0, 1e-6_f64);
+        while separation(m, y, hi, dt).0 < target {
+            lo = hi;
+            hi *= 2.0;
+        }
+        for _ in 0..60 {
+            let mid = 0.5 * (lo + hi);
+            if separation(m, y, mid, dt).0 < target {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        next = separation(m, y, hi, dt).1;
+        // Report impacts, not the steady pressing of balls in contact.
+        impact = w < -1e-9;
+    }
+    let mut out = *y;
+    for (b, &(v, u)) in next.iter().enumerate() {
+        out[3 * b] += dt * ((1.0 - THETA) * y[3 * b + 1] + THETA * v);
+        out[3 * b + 1] = v;
+        out[3 * b + 2] = u;
+    }
+    GridStep {
+        y: out,
+        rhs_evals: 0,
+        impact,
+    }
+}
+
 pub(super) fn integrate(
     m: &Model,
     y0: Y,
@@ -43,74 +84,5 @@ pub(super) fn integrate(
     s: &Settings,
     obs: &mut dyn Observer,
 ) -> Outcome {
-    let h = s.step;
-    let n = ((t1 - t0) / h).ceil() as usize;
-    let mut out = Outcome {
-        steps: 0,
-        rhs_evals: 0,
-        stalled: None,
-        aborted: false,
-        t: t0,
-        y: y0,
-    };
-    if n > s.max_steps {
-        out.stalled = Some(format!("{n} steps needed, budget {}", s.max_steps));
-        return out;
-    }
-    let mut tracker = EventTracker::new(0.0);
-    if !obs.step(t0, &y0) {
-        out.aborted = true;
-        return out;
-    }
-    tracker.step(t0, &y0, obs);
-    let mut y = y0;
-    for i in 1..=n {
-        let t = if i == n { t1 } else { t0 + i as f64 * h };
-        let dt = t - out.t;
-        let w = y[4] - y[1]; // v_R − v_L before the step; negative while closing
-        // Contact is active when the predicted gap closes within the step.
-        let active = gap(m, &y) + dt * w.min(0.0) <= 1e-12 * m.radius;
-        let (mut sep, mut next) = separation(m, &y, 0.0, dt);
-        // Newton at velocity level: v_R⁺ − v_L⁺ ≥ −e w, with a push λ ≥ 0 only if needed.
-        let target = (-m.restitution * w).max(0.0);
-        let mut impact = false;
-        if active && sep < target {
-            // The separation speed grows monotonically with λ: bracket, then bisect.
-            let (mut lo, mut hi) = (0.0, 1e-6_f64);
-            while separation(m, &y, hi, dt).0 < target {
-                lo = hi;
-                hi *= 2.0;
-            }
-            for _ in 0..60 {
-                let mid = 0.5 * (lo + hi);
-                if separation(m, &y, mid, dt).0 < target {
-                    lo = mid;
-                } else {
-                    hi = mid;
-                }
-            }
-            (sep, next) = separation(m, &y, hi, dt);
-            // Report impacts, not the steady pressing of balls in contact.
-            impact = w < -1e-9;
-        }
-        debug_assert!(sep.is_finite());
-        let old = y;
-        for (b, &(v, u)) in next.iter().enumerate() {
-            y[3 * b] += dt * ((1.0 - THETA) * old[3 * b + 1] + THETA * v);
-            y[3 * b + 1] = v;
-            y[3 * b + 2] = u;
-        }
-        out.steps += 1;
-        out.t = t;
-        if impact {
-            tracker.impact(t, &y, obs);
-        }
-        tracker.step(t, &y, obs);
-        if !obs.step(t, &y) {
-            out.aborted = true;
-            break;
-        }
-    }
-    out.y = y;
-    out
+    run_grid(y0, t0, t1, s, 0.0, obs, |y, dt| step(m, y, dt))
 }
