@@ -41,6 +41,26 @@ pub struct Cli {
     /// Pure 7-bit ASCII drawing (app and render) instead of Unicode.
     #[arg(long, global = true)]
     pub ascii: bool,
+    #[command(flatten)]
+    pub data: DataArgs,
+}
+
+/// Measured data from a file, for `fit`, the app and `render`.
+#[derive(Args, Debug, Clone, Default)]
+pub struct DataArgs {
+    /// A CSV of the left ball: columns t, v_cm, v_t found by header (comma or
+    /// semicolon, decimal commas allowed) [default: the preset's series].
+    #[arg(long, value_name = "FILE", global = true)]
+    pub data: Option<std::path::PathBuf>,
+    /// Time unit of the file when its header gives none (e.g. ms) [default: s].
+    #[arg(long, value_name = "UNIT", global = true)]
+    pub time_unit: Option<String>,
+    /// Speed unit of the file when its header gives none (e.g. cm/s) [default: m/s].
+    #[arg(long, value_name = "UNIT", global = true)]
+    pub speed_unit: Option<String>,
+    /// Time of the first impact in the file [default: detected from v_cm].
+    #[arg(long, value_name = "T", value_parser = time, allow_hyphen_values = true, global = true)]
+    pub impact_at: Option<f64>,
 }
 
 #[derive(Subcommand, Debug)]
@@ -101,19 +121,6 @@ pub struct CompareArgs {
 
 #[derive(Args, Debug)]
 pub struct FitArgs {
-    /// A CSV of the left ball: columns t, v_cm, v_t found by header (comma or
-    /// semicolon, decimal commas allowed) [default: the preset's series].
-    #[arg(long, value_name = "FILE")]
-    pub data: Option<std::path::PathBuf>,
-    /// Time unit of the file when its header gives none (e.g. ms) [default: s].
-    #[arg(long, value_name = "UNIT")]
-    pub time_unit: Option<String>,
-    /// Speed unit of the file when its header gives none (e.g. cm/s) [default: m/s].
-    #[arg(long, value_name = "UNIT")]
-    pub speed_unit: Option<String>,
-    /// Time of the first impact in the file [default: detected from v_cm].
-    #[arg(long, value_name = "T", value_parser = time, allow_hyphen_values = true)]
-    pub impact_at: Option<f64>,
     /// Start of the line-fit window (after the impact) [default: first frame after it].
     #[arg(long, value_name = "T", value_parser = time, allow_hyphen_values = true)]
     pub from: Option<f64>,
@@ -349,25 +356,38 @@ pub enum Outcome {
 /// Runs a parsed command line.
 pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
     match &cli.command {
-        None | Some(Command::Tui) => Ok(Outcome::Interactive(Box::new(app(&cli.scene)?))),
+        None | Some(Command::Tui) => {
+            Ok(Outcome::Interactive(Box::new(app(&cli.scene, &cli.data)?)))
+        }
         Some(Command::Simulate(args)) => simulate(&cli.scene, args).map(Outcome::Print),
-        Some(Command::Render(args)) => render(&cli.scene, args, cli.ascii).map(Outcome::Print),
+        Some(Command::Render(args)) => {
+            render(&cli.scene, &cli.data, args, cli.ascii).map(Outcome::Print)
+        }
         Some(Command::Compare(args)) => methods::compare(&cli.scene, args).map(Outcome::Print),
-        Some(Command::Fit(args)) => fit::run(&cli.scene, args).map(Outcome::Print),
+        Some(Command::Fit(args)) => fit::run(&cli.scene, &cli.data, args).map(Outcome::Print),
         Some(Command::Sweep(args)) => sweep::run(&cli.scene, args).map(Outcome::Print),
         Some(Command::Presets) => Ok(Outcome::Print(presets())),
     }
 }
 
-/// The app on the scene the options describe.
-pub fn app(scene_args: &SceneArgs) -> Result<App, CliError> {
-    let (preset, scene, span) = scene_args.resolve()?;
+/// The app on the scene the options describe, with `--data` replacing the preset's
+/// measured series.
+pub fn app(scene_args: &SceneArgs, data: &DataArgs) -> Result<App, CliError> {
+    let (mut preset, scene, span) = scene_args.resolve()?;
+    if data.data.is_some() {
+        preset.measured = Some(fit::measured(&preset, data)?);
+    }
     Ok(App::new(preset, scene, span))
 }
 
 /// `render`: the app's screen after `--keys`, at `--at`, as text.
-pub fn render(scene_args: &SceneArgs, args: &RenderArgs, ascii: bool) -> Result<String, CliError> {
-    let mut app = app(scene_args)?;
+pub fn render(
+    scene_args: &SceneArgs,
+    data: &DataArgs,
+    args: &RenderArgs,
+    ascii: bool,
+) -> Result<String, CliError> {
+    let mut app = app(scene_args, data)?;
     let keys = match &args.keys {
         Some(script) => tui::keys::parse_script(script).map_err(CliError::Invalid)?,
         None => Vec::new(),

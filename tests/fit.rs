@@ -312,3 +312,38 @@ fn the_window_can_be_chosen() {
     )
     .unwrap();
 }
+
+#[test]
+fn the_app_replays_a_users_csv() {
+    let path = csv(
+        "replay.csv",
+        "t,v_cm,v_t\n-0.02,0.6,0.6\n0,0.05,0.6\n0.02,-0.55,0.57\n0.04,-0.5,0.52\n0.06,-0.45,0.46\n",
+    );
+    let without = groovelab(&["render", "--preset", "flat-table", "--at", "0.03"]);
+    let with = groovelab(&[
+        "render",
+        "--preset",
+        "flat-table",
+        "--data",
+        &path,
+        "--at",
+        "0.03",
+    ]);
+    assert!(
+        with.status.success(),
+        "{}",
+        String::from_utf8_lossy(&with.stderr)
+    );
+    let (a, b) = (
+        String::from_utf8_lossy(&without.stdout),
+        String::from_utf8_lossy(&with.stdout),
+    );
+    assert!(!a.contains("measured v_cm"));
+    assert!(
+        b.contains("measured v_cm") && b.contains("data: RMS residual"),
+        "{b}"
+    );
+    let bad = csv("replay-bad.csv", "t,v_cm\n0,1\n");
+    let out = groovelab(&["render", "--data", &bad]);
+    assert_eq!(out.status.code(), Some(2));
+}

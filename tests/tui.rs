@@ -1,7 +1,7 @@
 //! The lab without a terminal: key → action → state, and the headless screen that
 //! `render` prints (insta snapshots, checked by eye when recorded).
 
-use groovelab::cli::{RenderArgs, SceneArgs, render};
+use groovelab::cli::{DataArgs, RenderArgs, SceneArgs, render};
 use groovelab::derived::Regime;
 use groovelab::preset::Preset;
 use groovelab::scene::Key;
@@ -34,7 +34,7 @@ fn screen(preset: &str, at: f64, size: (u16, u16), ascii: bool, keys: Option<&st
         size,
         keys: keys.map(str::to_string),
     };
-    render(&scene, &args, ascii).unwrap()
+    render(&scene, &DataArgs::default(), &args, ascii).unwrap()
 }
 
 #[test]

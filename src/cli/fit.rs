@@ -4,15 +4,15 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
-use super::{CliError, FitArgs, FitFormat, SceneArgs, methods::write_atomically};
+use super::{CliError, DataArgs, FitArgs, FitFormat, SceneArgs, methods::write_atomically};
 use crate::data::{self, Reading};
 use crate::fit::{self, Fits, Free};
 use crate::preset::{Measured, Preset};
 use crate::scene::Scene;
 use crate::units::{Dimension, parse_quantity};
 
-/// The series to fit: `--data FILE`, else the preset's.
-pub fn measured(preset: &Preset, args: &FitArgs) -> Result<Measured, CliError> {
+/// The measured series: `--data FILE`, else the preset's.
+pub fn measured(preset: &Preset, args: &DataArgs) -> Result<Measured, CliError> {
     let Some(path) = &args.data else {
         return preset.measured.clone().ok_or_else(|| {
             CliError::Invalid(format!(
@@ -47,9 +47,9 @@ struct FitJson<'a> {
     fits: &'a Fits,
 }
 
-pub fn run(scene_args: &SceneArgs, args: &FitArgs) -> Result<String, CliError> {
+pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<String, CliError> {
     let (preset, scene, _) = scene_args.resolve()?;
-    let m = measured(&preset, args)?;
+    let m = measured(&preset, data)?;
     let free: Vec<Free> = args.free.clone().unwrap_or_else(|| vec![Free::Mu]);
     if let (Some(a), Some(b)) = (args.from, args.to)
         && a >= b
