@@ -443,3 +443,31 @@ fn map_view_marks_the_scene_on_the_regime_grid() {
     );
     assert!(col(&wider) > col(&s));
 }
+
+#[test]
+fn every_view_draws_at_many_sizes_without_panicking() {
+    // The layout adapts from the minimum to large screens; any panic fails the test.
+    let mut a = app("unequal-speeds");
+    for keys in ["", "c", "g", "f", "x", "b b", "o", "?", "p"] {
+        let mut b = a.clone();
+        press(&mut b, keys);
+        for (w, h) in [
+            (80, 24),
+            (81, 25),
+            (100, 30),
+            (133, 41),
+            (200, 60),
+            (79, 24),
+            (40, 10),
+            (1, 1),
+        ] {
+            let theme =
+                groovelab::tui::theme::Theme::new(groovelab::tui::theme::Glyphs::ASCII, false);
+            let s = groovelab::tui::view::to_text(&b, w, h, &theme);
+            assert_eq!(s.lines().count(), usize::from(h), "{keys:?} at {w}x{h}");
+            assert!(s.is_ascii());
+        }
+    }
+    a.t = a.solution.t_end;
+    assert!(screen_of(&a).contains("impacts"));
+}
