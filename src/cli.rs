@@ -558,12 +558,13 @@ fn table(
     }
     let _ = writeln!(
         out,
-        "derived  k = {:.4}   r = {}   D = 5k²/2 = {:.4}   regime: {} ({})",
+        "derived  k = {:.4}   r = {}   D = 5k²/2 = {:.4}   regime: {} ({}; b* = {})",
         derived.k,
         len(derived.r),
         derived.d,
         derived.regime.name(),
-        derived.why()
+        derived.why(),
+        b_star
     );
     if let Some(rec) = derived.left_after_impact {
         let heading = if rec.v_roll > 0.0 {

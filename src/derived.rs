@@ -110,6 +110,9 @@ pub struct Derived {
     pub left_after_impact: Option<Recovery>,
     /// Forces on the left ball while it slides after the first impact.
     pub forces: Forces,
+    /// The paper's case: equal balls at equal speeds.
+    pub symmetric: bool,
+    pub restitution: f64,
 }
 
 impl Derived {
@@ -143,23 +146,33 @@ impl Derived {
             release_height: closed_form::release_height(scene.left.v0, k, scene.g),
             left_after_impact: recovery,
             forces: forces(scene, scene.left.mass, slip_sign),
+            symmetric: scene.is_symmetric(),
+            restitution: scene.restitution,
         }
     }
 
-    /// One sentence on why the regime happens, in the paper's terms.
+    /// One sentence on why the regime happens: for the paper's symmetric scene, D e
+    /// against 1 (v' ∝ 2 − 5ek² = 2(1 − D e)); otherwise the relative speed once both
+    /// balls roll again.
     pub fn why(&self) -> String {
-        let b_star = match self.b_star {
-            Some(b) => format!("b* = {:.2} cm", b * 100.0),
-            None => "no b* (e < 2/5)".to_string(),
-        };
-        let cmp = if self.d > 1.0 + 1e-12 {
-            "D > 1: translation stops first"
-        } else if self.d < 1.0 - 1e-12 {
-            "D < 1: rotation outlasts translation"
+        if !self.symmetric {
+            let w = self.separation_speed;
+            return if w > 0.0 {
+                format!("rolling again they separate at {w:.3} m/s")
+            } else if w < 0.0 {
+                format!("rolling again they close at {:.3} m/s", -w)
+            } else {
+                "rolling again they move as one".to_string()
+            };
+        }
+        let de = self.d * self.restitution;
+        if de > 1.0 + 1e-12 {
+            format!("D e = {de:.3} > 1: translation reverses first")
+        } else if de < 1.0 - 1e-12 {
+            format!("D e = {de:.3} < 1: the spin rolls them back")
         } else {
-            "D = 1: both stop together"
-        };
-        format!("D = {:.3}, {cmp}; {b_star}", self.d)
+            "D e = 1: both stop together".to_string()
+        }
     }
 }
 

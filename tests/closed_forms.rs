@@ -226,8 +226,15 @@ fn regime_follows_the_critical_width_and_the_determinant() {
                 _ => Regime::Recollide,
             };
             assert_eq!(d.regime, want, "e={e} b/2R={half}");
-            // D e against 1 says the same (v' ∝ 2 − 5ek² = 2(1 − D e)).
+            // D e against 1 says the same (v' ∝ 2 − 5ek² = 2(1 − D e)), and so does
+            // the sentence every front end shows.
             assert_eq!(d.d * e > 1.0, want == Regime::Depart, "e={e} b/2R={half}");
+            let why = d.why();
+            match want {
+                Regime::Depart => assert!(why.contains("> 1"), "{why}"),
+                Regime::Recollide => assert!(why.contains("< 1"), "{why}"),
+                Regime::Rest => assert!(why.contains("= 1"), "{why}"),
+            }
         }
     }
 }

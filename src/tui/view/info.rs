@@ -25,19 +25,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         Regime::Rest => "REST: the balls stop",
         Regime::Recollide => "RECOLLIDE: they come back",
     };
-    let why = if d.d * app.scene.restitution > 1.0 + 1e-12 {
-        format!(
-            "D e = {:.3} > 1: translation reverses first",
-            d.d * app.scene.restitution
-        )
-    } else if d.d * app.scene.restitution < 1.0 - 1e-12 {
-        format!(
-            "D e = {:.3} < 1: the spin rolls them back",
-            d.d * app.scene.restitution
-        )
-    } else {
-        "D e = 1: both stop together".to_string()
-    };
+    let why = d.why();
     let b_star = d.b_star.map_or("none (e < 2/5)".to_string(), |b| {
         format!("{:.2} cm", b * 100.0)
     });
