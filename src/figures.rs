@@ -283,7 +283,6 @@ pub fn regime_map(
     scene: &Scene,
     preset: &str,
 ) -> Result<String, Box<dyn std::error::Error>> {
-    use crate::derived::Regime;
     use crate::scene::Key;
     let mut svg = String::new();
     {
@@ -385,7 +384,6 @@ pub fn regime_map(
                 .background_style(WHITE.mix(0.9))
                 .draw()?;
         }
-        let _ = Regime::Rest;
         root.present()?;
     }
     Ok(svg)

@@ -70,7 +70,7 @@ pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<St
             s.push('\n');
             s
         }
-        FitFormat::Table => table(&scene, &m, &fits),
+        FitFormat::Table => table(&scene, &fits),
         FitFormat::Svg => crate::figures::fit_figure(&scene, &m, &fits)
             .map_err(|e| CliError::Invalid(format!("cannot draw the figure: {e}")))?,
     };
@@ -83,7 +83,7 @@ pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<St
     }
 }
 
-fn table(scene: &Scene, m: &Measured, f: &Fits) -> String {
+fn table(scene: &Scene, f: &Fits) -> String {
     let l = &f.line_fit;
     let mut out = String::new();
     let _ = writeln!(
@@ -145,6 +145,5 @@ fn table(scene: &Scene, m: &Measured, f: &Fits) -> String {
             "the model does NOT predict what was observed"
         }
     );
-    let _ = m;
     out
 }

@@ -7,7 +7,6 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use serde::Serialize;
 
 use super::{CliError, SceneArgs, SweepArgs, SweepFormat, methods::write_atomically};
-use crate::preset::Preset;
 use crate::sweep::{self, Axis, Point, SweepError};
 
 /// Set by Ctrl-C while a sweep runs: the work stops and nothing is written.
@@ -99,7 +98,7 @@ pub fn run(scene_args: &SceneArgs, args: &SweepArgs) -> Result<String, CliError>
                 .resolve()
                 .map_err(|e| CliError::Invalid(e.to_string()))?
                 .0;
-            crate::figures::regime_map(&points, &x, y.as_ref(), &scene, &preset_name(&preset))
+            crate::figures::regime_map(&points, &x, y.as_ref(), &scene, &preset.name)
                 .map_err(|e| CliError::Invalid(format!("cannot draw the map: {e}")))?
         }
     };
@@ -110,10 +109,6 @@ pub fn run(scene_args: &SceneArgs, args: &SweepArgs) -> Result<String, CliError>
             Ok(format!("wrote {}\n", path.display()))
         }
     }
-}
-
-fn preset_name(p: &Preset) -> String {
-    p.name.clone()
 }
 
 /// interface.md: `x,y,regime,v_ratio,t_roll,impacts,t_accumulation`, SI, grid order.
