@@ -205,6 +205,36 @@ pub struct App {
     /// Line-fit window (None: the sliding phase).
     pub fit_window: (Option<f64>, Option<f64>),
     pub fits: Option<Result<crate::fit::Fits, String>>,
+    /// Cached with each solve, not per frame: the x range (m) the balls cover, and the
+    /// RMS residuals of v_cm and v_t against the measured points.
+    pub extent: (f64, f64),
+    pub data_rms: Option<(f64, f64)>,
+}
+
+/// The x range (m) the balls cover over the span: positions at its ends and at every
+/// event (turning points inside a segment, v = 0, are events).
+fn extent(sol: &Solution, radius: f64) -> (f64, f64) {
+    let times = [sol.t_start, sol.t_end]
+        .into_iter()
+        .chain(sol.visible_events().map(|e| e.t));
+    times.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), t| {
+        let s = sol.at(t);
+        (lo.min(s.left.x - radius), hi.max(s.right.x + radius))
+    })
+}
+
+/// RMS residuals of the left ball's v_cm and v_t against `m` (the frame that straddles
+/// the impact left out).
+fn data_rms(sol: &Solution, m: &Measured) -> (f64, f64) {
+    let (mut sc, mut st, mut n) = (0.0, 0.0, 0usize);
+    for i in (0..m.t.len()).filter(|&i| m.t[i].abs() >= 0.005) {
+        let s = sol.at(m.t[i]);
+        sc += (s.left.v - m.v_cm[i]).powi(2);
+        st += (s.left.u - m.v_t[i]).powi(2);
+        n += 1;
+    }
+    let n = n.max(1) as f64;
+    ((sc / n).sqrt(), (st / n).sqrt())
 }
 
 /// A time-stepping run drawn over the exact curves.
@@ -287,7 +317,21 @@ impl App {
             fit_view: false,
             fit_window: (None, None),
             fits: None,
+            extent: (0.0, 0.0),
+            data_rms: None,
         }
+        .with_cached_views()
+    }
+
+    fn with_cached_views(mut self) -> App {
+        self.cache_views();
+        self
+    }
+
+    /// What the views need from a solve that does not change from frame to frame.
+    fn cache_views(&mut self) {
+        self.extent = extent(&self.solution, self.scene.radius);
+        self.data_rms = self.measured().map(|m| data_rms(&self.solution, m));
     }
 
     /// Fits the measured series (if any) with the current scene as the start.
@@ -495,6 +539,7 @@ impl App {
         self.solution = engine::solve(&scene, &span);
         self.derived = Derived::of(&scene);
         self.t = self.t.clamp(self.solution.t_start, self.solution.t_end);
+        self.cache_views();
         self.method_rows = None;
         if self.methods_view {
             self.ensure_method_rows();

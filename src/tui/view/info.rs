@@ -88,23 +88,12 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         value(zeno),
     ]));
     // How far the model is from the measured points, if there are any.
-    if let Some(m) = app.measured() {
-        let (mut sc, mut st, mut n) = (0.0, 0.0, 0usize);
-        for i in 0..m.t.len() {
-            if m.t[i].abs() < 0.005 {
-                continue; // the frame that straddles the impact
-            }
-            let s = sol.at(m.t[i]);
-            sc += (s.left.v - m.v_cm[i]).powi(2);
-            st += (s.left.u - m.v_t[i]).powi(2);
-            n += 1;
-        }
-        let n = n.max(1) as f64;
+    if let Some((rms_cm, rms_t)) = app.data_rms {
         lines.push(Line::from(vec![
             label("data: RMS residual v_cm "),
-            value(format!("{:.3}", (sc / n).sqrt())),
+            value(format!("{rms_cm:.3}")),
             label(", v_t "),
-            value(format!("{:.3} m/s", (st / n).sqrt())),
+            value(format!("{rms_t:.3} m/s")),
         ]));
     }
     // The state at the cursor, per ball.

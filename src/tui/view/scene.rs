@@ -13,24 +13,6 @@ use crate::solution::EventKind;
 use crate::tui::app::App;
 use crate::tui::theme::Theme;
 
-/// The x range (m) the scene shows: everywhere the balls go over the whole span.
-fn extent(app: &App) -> (f64, f64) {
-    let sol = &app.solution;
-    let r = app.scene.radius;
-    let mut lo = f64::INFINITY;
-    let mut hi = f64::NEG_INFINITY;
-    let times = [sol.t_start, sol.t_end]
-        .into_iter()
-        .chain(sol.visible_events().map(|e| e.t));
-    for t in times {
-        let s = sol.at(t);
-        lo = lo.min(s.left.x - r);
-        hi = hi.max(s.right.x + r);
-    }
-    // Turning points inside a segment (v = 0) are events, so the extremes are covered.
-    (lo, hi)
-}
-
 /// Dots on a grid of braille cells (2×4 per cell, square dots) or ASCII cells.
 struct Canvas {
     cols: usize,
@@ -127,7 +109,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     // Rows: balls, groove, trail ticks, tags.
     let ball_rows = inner.height - 3;
     let groove_y = inner.y + ball_rows;
-    let (lo, hi) = extent(app);
+    let (lo, hi) = app.extent;
     let radius = app.scene.radius;
     let (sx, sy) = if g.ascii { (1.0, 1.0) } else { (2.0, 4.0) };
     // Columns per metre: fit the range, and keep the ball inside its rows (a cell is
