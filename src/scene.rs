@@ -142,9 +142,6 @@ impl Key {
         }
     }
 
-    pub fn flag(self) -> String {
-        format!("--{}", self.name().replace('_', "-"))
-    }
 
     pub fn dimension(self) -> Dimension {
         match self {

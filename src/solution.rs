@@ -64,18 +64,17 @@ impl EventKind {
         }
     }
 
-    /// Short label for chart markers and tables.
-    pub fn label(self) -> &'static str {
+    /// Short label for a chart's event line; `None` for contact changes, which
+    /// charts do not mark.
+    pub fn label(self) -> Option<&'static str> {
         match self {
-            EventKind::Collision => "impact",
-            EventKind::Rolling => "rolling",
-            EventKind::PureGliding => "pure gliding",
-            EventKind::PureSlipping => "pure slipping",
-            EventKind::Rest => "rest",
-            EventKind::ContactStart => "contact",
-            EventKind::ContactEnd => "contact ends",
-            EventKind::ZenoRest => "accumulation: rest",
-            EventKind::ZenoContact => "accumulation: together",
+            EventKind::Collision => Some("impact"),
+            EventKind::Rolling => Some("rolling"),
+            EventKind::PureGliding => Some("gliding"),
+            EventKind::PureSlipping => Some("slipping"),
+            EventKind::Rest => Some("rest"),
+            EventKind::ZenoRest | EventKind::ZenoContact => Some("T-inf"),
+            EventKind::ContactStart | EventKind::ContactEnd => None,
         }
     }
 }

@@ -181,12 +181,6 @@ pub fn gap(m: &Model, y: &Y) -> f64 {
     y[3] - y[0] - 2.0 * m.radius
 }
 
-/// The balls right before the first impact (t = 0), as the exact engine starts them.
-pub fn impact_state(scene: &Scene) -> Y {
-    let (l, r) = (scene.left.v0, -scene.right.v0);
-    [-scene.radius, l, l, scene.radius, r, r]
-}
-
 /// Newton's impact law on the centre velocities of `y` (spins unchanged).
 pub fn collide(m: &Model, y: &mut Y) {
     let (vl, vr) = model::impact(m.mass[0], m.mass[1], y[1], y[4], m.restitution);

@@ -31,24 +31,12 @@ fn sample_times(app: &App, columns: usize) -> Vec<f64> {
     ts
 }
 
-fn event_label(kind: EventKind) -> Option<&'static str> {
-    match kind {
-        EventKind::Collision => Some("impact"),
-        EventKind::Rolling => Some("rolling"),
-        EventKind::PureGliding => Some("gliding"),
-        EventKind::PureSlipping => Some("slipping"),
-        EventKind::Rest => Some("rest"),
-        EventKind::ZenoRest | EventKind::ZenoContact => Some("T-inf"),
-        EventKind::ContactStart | EventKind::ContactEnd => None,
-    }
-}
-
 fn event_lines(app: &App, balls: &[Who], theme: &Theme) -> Vec<VLine> {
     app.solution
         .visible_events()
         .filter(|e| e.ball == Who::Both || balls.contains(&e.ball))
         .filter_map(|e| {
-            let label = event_label(e.kind)?;
+            let label = e.kind.label()?;
             let zeno = matches!(e.kind, EventKind::ZenoRest | EventKind::ZenoContact);
             let label = if zeno && !theme.glyphs.ascii {
                 "T∞"
