@@ -181,24 +181,19 @@ pub fn fit_figure(
             .draw()?;
         let blue = RGBColor(31, 119, 180);
         let orange = RGBColor(255, 127, 14);
-        chart
-            .draw_series(LineSeries::new(
-                model.iter().map(|p| (p.0, p.1)),
-                blue.stroke_width(2),
-            ))?
-            .label("model v_cm")
-            .legend(move |(x, y)| {
-                PathElement::new(vec![(x, y), (x + 20, y)], blue.stroke_width(2))
-            });
-        chart
-            .draw_series(LineSeries::new(
-                model.iter().map(|p| (p.0, p.2)),
-                orange.stroke_width(2),
-            ))?
-            .label("model v_t")
-            .legend(move |(x, y)| {
-                PathElement::new(vec![(x, y), (x + 20, y)], orange.stroke_width(2))
-            });
+        // The model as lines, the data as markers: v_cm (index 1) blue, v_t (2) orange.
+        for (j, colour, name) in [(1, blue, "v_cm"), (2, orange, "v_t")] {
+            let pick = move |p: &(f64, f64, f64)| (p.0, if j == 1 { p.1 } else { p.2 });
+            chart
+                .draw_series(LineSeries::new(
+                    model.iter().map(pick),
+                    colour.stroke_width(2),
+                ))?
+                .label(format!("model {name}"))
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2))
+                });
+        }
         chart
             .draw_series(
                 m.t.iter()

@@ -142,7 +142,6 @@ impl Key {
         }
     }
 
-
     pub fn dimension(self) -> Dimension {
         match self {
             Key::Radius | Key::Width | Key::Height => Dimension::Length,

@@ -276,7 +276,7 @@ fn the_app_without_a_terminal_points_to_render_and_simulate() {
 
 #[test]
 fn render_prints_the_screen_as_plain_text() {
-    let out = groovelab(&[
+    let args = [
         "render",
         "--at",
         "150ms",
@@ -284,22 +284,15 @@ fn render_prints_the_screen_as_plain_text() {
         "100x30",
         "--preset",
         "paper-b3.5",
-    ]);
+    ];
+    let out = groovelab(&args);
     assert!(out.status.success());
     let text = String::from_utf8(out.stdout).unwrap();
     assert_eq!(text.lines().count(), 30);
     assert!(text.lines().all(|l| l.chars().count() <= 100));
     assert!(!text.contains('\x1b'), "no escape codes");
     assert!(text.contains("t = 0.150 s"));
-    let again = groovelab(&[
-        "render",
-        "--at",
-        "150ms",
-        "--size",
-        "100x30",
-        "--preset",
-        "paper-b3.5",
-    ]);
+    let again = groovelab(&args);
     assert!(again.stdout == text.as_bytes(), "same input, same bytes");
     let ascii = groovelab(&["render", "--ascii", "--keys", "down down right"]);
     assert!(ascii.status.success());

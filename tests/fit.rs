@@ -305,12 +305,6 @@ fn the_window_can_be_chosen() {
         fit::line_fit(&m, &scene, (Some(0.1), Some(0.12))).is_err(),
         "2 points"
     );
-    let _ = data::parse(
-        "t,v_cm,v_t\n0,1,1\n0.01,0.5,1\n0.02,-1,1\n",
-        "x",
-        &Reading::default(),
-    )
-    .unwrap();
 }
 
 #[test]
