@@ -189,10 +189,16 @@ pub fn parse_axis(text: &str, n: usize) -> Result<Axis, String> {
         .split_once("..")
         .ok_or_else(|| format!("'{range}' is not LO..HI, e.g. 0..5.4cm"))?;
     let dim = key.dimension();
+    // The unit after a bound's number; none if the bound does not start with one
+    // (then it is lent to nobody and its own parse error names it).
     let unit_of = |s: &str| {
-        s.trim()
-            .trim_start_matches(|c: char| c.is_ascii_digit() || "+-.eE".contains(c))
-            .to_string()
+        let t = s.trim();
+        let rest = t.trim_start_matches(|c: char| c.is_ascii_digit() || "+-.eE".contains(c));
+        if rest.len() < t.len() {
+            rest.to_string()
+        } else {
+            String::new()
+        }
     };
     let (ua, ub) = (unit_of(a), unit_of(b));
     let fix = |s: &str, own: &str, other: &str| {
@@ -229,5 +235,7 @@ mod tests {
         assert!(parse_axis("colour=0..1", 3).is_err());
         assert!(parse_axis("width=5..1cm", 3).is_err());
         assert!(parse_axis("width", 3).is_err());
+        let e = parse_axis("mu=0..abc", 3).unwrap_err();
+        assert!(e.contains("'abc' is not a number"), "{e}");
     }
 }
