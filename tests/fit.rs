@@ -2,7 +2,7 @@
 
 use std::process::Command;
 
-use groovelab::data::{self, Reading};
+use groovelab::data;
 use groovelab::derived::Regime;
 use groovelab::engine::solve;
 use groovelab::fit::{self, Free, PAPER_TABLE};
