@@ -5,9 +5,9 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use groovelab::methods::compare::sweep;
+use groovelab::input::preset::Preset;
 use groovelab::methods::{Method, Model, Observer, Settings, Y, integrate, start_state};
-use groovelab::preset::Preset;
+use groovelab::study::compare::sweep;
 
 struct Finite;
 impl Observer for Finite {

@@ -5,8 +5,8 @@ use std::hint::black_box;
 use std::sync::atomic::AtomicBool;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use groovelab::preset::Preset;
-use groovelab::sweep::{self, point};
+use groovelab::input::preset::Preset;
+use groovelab::study::sweep::{self, point};
 
 fn sweeps(c: &mut Criterion) {
     let spec = Preset::load("paper-b3.5").unwrap().spec;

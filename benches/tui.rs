@@ -4,8 +4,8 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use groovelab::preset::Preset;
-use groovelab::scene::Key;
+use groovelab::input::params::Key;
+use groovelab::input::preset::Preset;
 use groovelab::tui::app::App;
 use groovelab::tui::theme::{Glyphs, Theme};
 use groovelab::tui::view;

@@ -1,21 +1,13 @@
 //! groovelab: two balls colliding in a groove (Gröber & Sniatecki), solved exactly.
 //!
-//! The physics and solvers (`scene`, `model`, `closed_form`, `engine`, `solution`,
-//! `derived`, `preset`) know nothing of terminals or flags; `tui` draws and `cli` is
-//! the edge.
+//! Layers, each using only those above it: `physics` (the model and the exact engine,
+//! no flags, no I/O) → `methods` (time-stepping methods) → `study` (compare, fit,
+//! sweep, figures) → `lab` (one scene under study with its cached analyses) → the
+//! edges: `input` (text to SI), `cli` and `tui`.
 
 pub mod cli;
-pub mod closed_form;
-pub mod data;
-pub mod derived;
-pub mod engine;
-pub mod figures;
-pub mod fit;
+pub mod input;
 pub mod methods;
-pub mod model;
-pub mod preset;
-pub mod scene;
-pub mod solution;
-pub mod sweep;
+pub mod physics;
+pub mod study;
 pub mod tui;
-pub mod units;

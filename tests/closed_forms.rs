@@ -10,11 +10,11 @@
 
 mod common;
 
-use groovelab::closed_form as cf;
-use groovelab::derived::{Derived, Regime};
-use groovelab::engine::solve;
-use groovelab::scene::SceneSpec;
-use groovelab::solution::{Event, EventKind, Solution, Who};
+use groovelab::input::params::SceneSpec;
+use groovelab::physics::closed_form as cf;
+use groovelab::physics::derived::{Derived, Regime};
+use groovelab::physics::engine::solve;
+use groovelab::physics::solution::{Event, EventKind, Solution, Who};
 
 /// Closed forms and the engine agree to this (physics.md: ~1e-12 relative).
 const REL: f64 = 1e-12;

@@ -2,12 +2,12 @@
 
 use std::process::Command;
 
-use groovelab::data;
-use groovelab::derived::Regime;
-use groovelab::engine::solve;
-use groovelab::fit::{self, Free, PAPER_TABLE};
-use groovelab::preset::{Measured, Preset};
-use groovelab::scene::{Scene, Span};
+use groovelab::input::data;
+use groovelab::input::preset::{Measured, Preset};
+use groovelab::physics::derived::Regime;
+use groovelab::physics::engine::solve;
+use groovelab::physics::scene::{Scene, Span};
+use groovelab::study::fit::{self, Free, PAPER_TABLE};
 
 fn paper(width: &str) -> (Scene, Measured) {
     let p = Preset::load(&format!("paper-b{width}")).unwrap();

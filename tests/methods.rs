@@ -1,11 +1,11 @@
 //! Where each time-stepping method works and where it fails, with bounds that follow
 //! from the discretisations themselves.
 
-use groovelab::engine::solve;
-use groovelab::methods::compare::{Row, Status, run};
+use groovelab::input::preset::Preset;
 use groovelab::methods::{Method, Model, Settings};
-use groovelab::preset::Preset;
-use groovelab::scene::{Scene, Span};
+use groovelab::physics::engine::solve;
+use groovelab::physics::scene::{Scene, Span};
+use groovelab::study::compare::{Row, Status, run};
 
 fn preset(name: &str) -> (Scene, Span) {
     Preset::load(name).unwrap().spec.resolve().unwrap()
@@ -148,8 +148,14 @@ fn rk45_stalls_or_reaches_the_accumulation_point_within_its_budget() {
     }
     // The exact engine, for its part, ends at the geometric-series time.
     let k = scene.k();
-    let want = groovelab::closed_form::accumulation_time(k, 1.0, scene.left.v0, scene.mu, scene.g)
-        .unwrap();
+    let want = groovelab::physics::closed_form::accumulation_time(
+        k,
+        1.0,
+        scene.left.v0,
+        scene.mu,
+        scene.g,
+    )
+    .unwrap();
     assert!((t_inf - want).abs() <= 1e-9 * want);
 }
 

@@ -5,9 +5,9 @@
 mod common;
 
 use groovelab::cli::{Format, SceneArgs, SimulateArgs, simulate};
-use groovelab::closed_form as cf;
-use groovelab::model;
-use groovelab::preset::Preset;
+use groovelab::input::preset::Preset;
+use groovelab::physics::closed_form as cf;
+use groovelab::physics::model;
 use serde_json::Value;
 
 fn run_json(preset: &str) -> Value {

@@ -3,10 +3,10 @@
 
 mod common;
 
-use groovelab::derived::{Derived, Regime};
-use groovelab::engine::{MAX_EVENTS, solve};
-use groovelab::scene::{Ball, Scene, Span};
-use groovelab::solution::{EventKind, Solution};
+use groovelab::physics::derived::{Derived, Regime};
+use groovelab::physics::engine::{MAX_EVENTS, solve};
+use groovelab::physics::scene::{Ball, Scene, Span};
+use groovelab::physics::solution::{EventKind, Solution};
 use proptest::prelude::*;
 
 fn log_uniform(lo: f64, hi: f64) -> impl Strategy<Value = f64> {

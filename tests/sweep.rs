@@ -4,11 +4,11 @@
 use std::process::Command;
 use std::sync::atomic::AtomicBool;
 
-use groovelab::closed_form;
-use groovelab::derived::Regime;
-use groovelab::preset::Preset;
-use groovelab::scene::SceneSpec;
-use groovelab::sweep::{self, Point, SweepError};
+use groovelab::input::params::SceneSpec;
+use groovelab::input::preset::Preset;
+use groovelab::physics::closed_form;
+use groovelab::physics::derived::Regime;
+use groovelab::study::sweep::{self, Point, SweepError};
 
 fn base(preset: &str) -> SceneSpec {
     Preset::load(preset).unwrap().spec

@@ -2,9 +2,9 @@
 //! `render` prints (insta snapshots, checked by eye when recorded).
 
 use groovelab::cli::{DataArgs, RenderArgs, SceneArgs, render};
-use groovelab::derived::Regime;
-use groovelab::preset::Preset;
-use groovelab::scene::Key;
+use groovelab::input::params::Key;
+use groovelab::input::preset::Preset;
+use groovelab::physics::derived::Regime;
 use groovelab::tui::app::{App, Mode, PARAMS, Status};
 use groovelab::tui::{keys, replay};
 
@@ -244,7 +244,7 @@ fn ascii_mode_emits_only_seven_bit_characters() {
         for t in [-0.1f64, 0.05, 0.3, 10.0] {
             for size in [(80, 24), (120, 40), (60, 20)] {
                 let (scene, span) = p.spec.resolve().unwrap();
-                let sol = groovelab::engine::solve(&scene, &span);
+                let sol = groovelab::physics::engine::solve(&scene, &span);
                 let at = t.min(sol.t_end);
                 for keys in [None, Some("?"), Some("p")] {
                     let s = screen(&p.name, at, size, true, keys);
@@ -268,7 +268,7 @@ fn a_small_terminal_gets_a_clear_message() {
 fn phase_times(preset: &str) -> Vec<f64> {
     let p = Preset::load(preset).unwrap();
     let (scene, span) = p.spec.resolve().unwrap();
-    let sol = groovelab::engine::solve(&scene, &span);
+    let sol = groovelab::physics::engine::solve(&scene, &span);
     let first_roll = sol
         .events
         .iter()
@@ -276,7 +276,8 @@ fn phase_times(preset: &str) -> Vec<f64> {
             e.t > 0.0
                 && matches!(
                     e.kind,
-                    groovelab::solution::EventKind::Rolling | groovelab::solution::EventKind::Rest
+                    groovelab::physics::solution::EventKind::Rolling
+                        | groovelab::physics::solution::EventKind::Rest
                 )
         })
         .map_or(0.1, |e| e.t);
@@ -402,7 +403,7 @@ fn methods_view_and_overlay() {
     press(&mut a, "c o");
     let o = a.overlay.as_ref().unwrap();
     assert_eq!(o.method, groovelab::methods::Method::Euler);
-    assert_eq!(o.row.status, groovelab::methods::compare::Status::Chatter);
+    assert_eq!(o.row.status, groovelab::study::compare::Status::Chatter);
     assert!(screen_of(&a).contains("euler h 1e-3 (chatter)"));
     press(&mut a, "[ [");
     assert_eq!(a.overlay.as_ref().unwrap().settings.step, 1e-2);

@@ -5,11 +5,11 @@ use std::fmt::Write as _;
 use serde::Serialize;
 
 use super::{CliError, DataArgs, FitArgs, FitFormat, SceneArgs, methods::write_atomically};
-use crate::data::{self, Reading};
-use crate::fit::{self, Fits, Free};
-use crate::preset::{Measured, Preset};
-use crate::scene::Scene;
-use crate::units::{Dimension, parse_quantity};
+use crate::input::data::{self, Reading};
+use crate::input::preset::{Measured, Preset};
+use crate::input::units::{Dimension, parse_quantity};
+use crate::physics::scene::Scene;
+use crate::study::fit::{self, Fits, Free};
 
 /// The measured series: `--data FILE`, else the preset's.
 pub fn measured(preset: &Preset, args: &DataArgs) -> Result<Measured, CliError> {
@@ -71,7 +71,7 @@ pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<St
             s
         }
         FitFormat::Table => table(&scene, &fits),
-        FitFormat::Svg => crate::figures::fit_figure(&scene, &m, &fits)
+        FitFormat::Svg => crate::study::figures::fit_figure(&scene, &m, &fits)
             .map_err(|e| CliError::Invalid(format!("cannot draw the figure: {e}")))?,
     };
     match &args.output {

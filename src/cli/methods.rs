@@ -5,13 +5,13 @@ use std::fmt::Write as _;
 use serde::Serialize;
 
 use super::{CliError, CompareArgs, CompareFormat, Format, MAX_SAMPLES, SceneArgs, SimulateArgs};
-use crate::derived::Derived;
-use crate::engine;
-use crate::methods::compare::{self as cmp, Row};
+use crate::input::units::{Dimension, show};
 use crate::methods::{self, Method, Settings, Y};
-use crate::scene::{Scene, Span};
-use crate::solution::{Event, Snapshot, Solution};
-use crate::units::{Dimension, show};
+use crate::physics::derived::Derived;
+use crate::physics::engine;
+use crate::physics::scene::{Scene, Span};
+use crate::physics::solution::{Event, Snapshot, Solution};
+use crate::study::compare::{self as cmp, Row};
 
 /// Settings of a time-stepping run from the options, checked.
 pub(super) fn settings(
@@ -250,7 +250,7 @@ pub(super) fn compare(scene_args: &SceneArgs, args: &CompareArgs) -> Result<Stri
             s
         }
         CompareFormat::Table => table(&rows),
-        CompareFormat::Svg => crate::figures::work_precision(&rows, &scene)
+        CompareFormat::Svg => crate::study::figures::work_precision(&rows, &scene)
             .map_err(|e| CliError::Invalid(format!("cannot draw the diagram: {e}")))?,
     };
     match &args.output {
@@ -337,7 +337,7 @@ fn table(rows: &[Row]) -> String {
                 exact.time_median_s,
                 best.method.name(),
                 best.time_median_s,
-                crate::units::significant(factor, 2)
+                crate::input::units::significant(factor, 2)
             );
         }
         None => {

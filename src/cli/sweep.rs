@@ -7,7 +7,7 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use serde::Serialize;
 
 use super::{CliError, SceneArgs, SweepArgs, SweepFormat, methods::write_atomically};
-use crate::sweep::{self, Axis, Point, SweepError};
+use crate::study::sweep::{self, Axis, Point, SweepError};
 
 /// Set by Ctrl-C while a sweep runs: the work stops and nothing is written.
 static STOP: AtomicBool = AtomicBool::new(false);
@@ -98,7 +98,7 @@ pub fn run(scene_args: &SceneArgs, args: &SweepArgs) -> Result<String, CliError>
                 .resolve()
                 .map_err(|e| CliError::Invalid(e.to_string()))?
                 .0;
-            crate::figures::regime_map(&points, &x, y.as_ref(), &scene, &preset.name)
+            crate::study::figures::regime_map(&points, &x, y.as_ref(), &scene, &preset.name)
                 .map_err(|e| CliError::Invalid(format!("cannot draw the map: {e}")))?
         }
     };

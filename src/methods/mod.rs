@@ -9,16 +9,15 @@
 //! masses. `rk45` locates impacts and slip reversals on its dense output; `moreau`
 //! treats impacts and friction as set-valued laws at the velocity level.
 
-pub mod compare;
 mod fixed;
 mod moreau;
 mod rk45;
 
 use serde::Serialize;
 
-use crate::model::{self, BallState};
-use crate::scene::Scene;
-use crate::solution::{Event, EventKind, Who};
+use crate::physics::model::{self, BallState};
+use crate::physics::scene::Scene;
+use crate::physics::solution::{Event, EventKind, Who};
 
 /// The state vector `[x_L, v_L, u_L, x_R, v_R, u_R]` (SI).
 pub type Y = [f64; 6];
@@ -258,9 +257,9 @@ pub fn integrate(
 /// The state at `t_start` that rolls into the first impact at t = 0: the exact
 /// run-up, shared by every method so that they all start alike.
 pub fn start_state(scene: &Scene, t_start: f64) -> Y {
-    let sol = crate::engine::solve(
+    let sol = crate::physics::engine::solve(
         scene,
-        &crate::scene::Span {
+        &crate::physics::scene::Span {
             t_start,
             t_end: None,
         },

@@ -1,14 +1,15 @@
 //! The lab's state and what every action does to it. No terminal here: keys arrive as
 //! [`Action`]s, so the whole app is testable without one.
 
-use crate::derived::Derived;
-use crate::engine;
-use crate::methods::compare::{self, Row};
+use crate::input::params::{Key, SceneSpec};
+use crate::input::preset::{Measured, Preset};
+use crate::input::units::{Dimension, parse_quantity, show, significant};
 use crate::methods::{self, Method, Settings, Y};
-use crate::preset::{Measured, Preset};
-use crate::scene::{Key, Scene, SceneSpec, Span};
-use crate::solution::Solution;
-use crate::units::{Dimension, parse_quantity, show, significant};
+use crate::physics::derived::Derived;
+use crate::physics::engine;
+use crate::physics::scene::{Scene, Span};
+use crate::physics::solution::Solution;
+use crate::study::compare::{self, Row};
 
 /// An editable row of the parameters panel.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -204,7 +205,7 @@ pub struct App {
     pub fit_view: bool,
     /// Line-fit window (None: the sliding phase).
     pub fit_window: (Option<f64>, Option<f64>),
-    pub fits: Option<Result<crate::fit::Fits, String>>,
+    pub fits: Option<Result<crate::study::fit::Fits, String>>,
     /// Cached with each solve, not per frame: the x range (m) the balls cover, and the
     /// RMS residuals of v_cm and v_t against the measured points.
     pub extent: (f64, f64),
@@ -306,7 +307,7 @@ impl App {
             mouse: true,
             status: Status::None,
             quit: false,
-            preset_dir: crate::preset::user_dir(),
+            preset_dir: crate::input::preset::user_dir(),
             presets: Preset::all().0,
             methods_view: false,
             method_rows: None,
@@ -338,8 +339,13 @@ impl App {
     fn refresh_fits(&mut self) {
         self.fits = if self.fit_view {
             self.measured().map(|m| {
-                crate::fit::fit_all(&self.scene, m, self.fit_window, &[crate::fit::Free::Mu])
-                    .map_err(|e| e.to_string())
+                crate::study::fit::fit_all(
+                    &self.scene,
+                    m,
+                    self.fit_window,
+                    &[crate::study::fit::Free::Mu],
+                )
+                .map_err(|e| e.to_string())
             })
         } else {
             None
@@ -354,7 +360,7 @@ impl App {
         };
         let current = match &self.fits {
             Some(Ok(f)) => (f.line_fit.from, f.line_fit.to),
-            _ => crate::fit::sliding_window(m).unwrap_or((0.0, 0.0)),
+            _ => crate::study::fit::sliding_window(m).unwrap_or((0.0, 0.0)),
         };
         let here = if end { current.1 } else { current.0 };
         let i =

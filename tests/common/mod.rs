@@ -1,7 +1,7 @@
 //! Helpers shared by the integration tests.
 #![allow(dead_code)]
 
-use groovelab::scene::{Ball, Scene, Span};
+use groovelab::physics::scene::{Ball, Scene, Span};
 
 /// The paper's symmetric scene with the given width, friction, speed and restitution.
 pub fn symmetric(radius: f64, width: f64, mu: f64, v0: f64, e: f64) -> Scene {

@@ -8,8 +8,8 @@ use ratatui::style::Style;
 use ratatui::widgets::Widget;
 
 use super::block;
-use crate::model::BallState;
-use crate::solution::{EventKind, Who};
+use crate::physics::model::BallState;
+use crate::physics::solution::{EventKind, Who};
 use crate::tui::app::{App, ChartBall};
 use crate::tui::plot::{Draw, Plot, Series, VLine, nice_ticks};
 use crate::tui::theme::Theme;
@@ -194,7 +194,7 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
         let ts: Vec<f64> = idx.iter().map(|&i| m.t[i]).collect();
         for (series_data, name) in [(&m.v_cm, "fit lines"), (&m.v_t, "")] {
             let ys: Vec<f64> = idx.iter().map(|&i| series_data[i]).collect();
-            let line = crate::fit::line(&ts, &ys);
+            let line = crate::study::fit::line(&ts, &ys);
             series.push(Series {
                 name: name.to_string(),
                 points: [l.from, l.to]

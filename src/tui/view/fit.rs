@@ -7,7 +7,7 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Paragraph, Widget, Wrap};
 
 use super::block;
-use crate::fit;
+use crate::study::fit;
 use crate::tui::app::App;
 use crate::tui::theme::Theme;
 

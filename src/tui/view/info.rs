@@ -7,10 +7,10 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Paragraph, Widget, Wrap};
 
 use super::block;
-use crate::derived::Regime;
+use crate::input::units::significant;
+use crate::physics::derived::Regime;
 use crate::tui::app::App;
 use crate::tui::theme::Theme;
-use crate::units::significant;
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let g = theme.glyphs;

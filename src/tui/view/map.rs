@@ -7,8 +7,8 @@ use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::widgets::Widget;
 
 use super::block;
-use crate::closed_form;
-use crate::derived::{Derived, Regime};
+use crate::physics::closed_form;
+use crate::physics::derived::{Derived, Regime};
 use crate::tui::app::App;
 use crate::tui::plot::{Draw, Plot, Series, VLine};
 use crate::tui::theme::Theme;

@@ -8,7 +8,7 @@ use ratatui::widgets::{Paragraph, Widget};
 
 use super::block;
 use crate::methods::Method;
-use crate::methods::compare::Status;
+use crate::study::compare::Status;
 use crate::tui::app::App;
 use crate::tui::plot::{Draw, Plot, Series};
 use crate::tui::theme::Theme;
@@ -41,7 +41,7 @@ pub fn render_diagram(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let Some(rows) = &app.method_rows else {
         return;
     };
-    let point = |r: &crate::methods::compare::Row| {
+    let point = |r: &crate::study::compare::Row| {
         ((r.steps.max(1) as f64).log10(), r.err_v.max(1e-16).log10())
     };
     let mut series = Vec::new();

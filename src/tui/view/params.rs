@@ -6,10 +6,10 @@ use ratatui::layout::Rect;
 use ratatui::widgets::Widget;
 
 use super::block;
-use crate::scene::Key;
+use crate::input::params::Key;
+use crate::input::units::{Dimension, show, significant};
 use crate::tui::app::{App, Mode, PARAMS};
 use crate::tui::theme::Theme;
-use crate::units::{Dimension, show, significant};
 
 /// The first parameter shown when the panel at `area` holds fewer rows than there
 /// are parameters: the list scrolls to keep the selected one in view.

@@ -8,8 +8,8 @@ use ratatui::style::Style;
 use ratatui::widgets::Widget;
 
 use super::block;
-use crate::model::Phase;
-use crate::solution::EventKind;
+use crate::physics::model::Phase;
+use crate::physics::solution::EventKind;
 use crate::tui::app::App;
 use crate::tui::theme::Theme;
 

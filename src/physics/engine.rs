@@ -3,9 +3,11 @@
 //! anywhere. Repeated impacts are summed to their accumulation point, and touching
 //! balls that friction presses together follow the sustained-contact model.
 
-use crate::model::{self, BallState, Groove, Phase, slip};
-use crate::scene::{Scene, Span};
-use crate::solution::{Event, EventKind, Ledger, Segment, Solution, Who, end_time, segment_losses};
+use crate::physics::model::{self, BallState, Groove, Phase, slip};
+use crate::physics::scene::{Scene, Span};
+use crate::physics::solution::{
+    Event, EventKind, Ledger, Segment, Solution, Who, end_time, segment_losses,
+};
 
 /// Speeds below this fraction of the scene's largest speed count as zero. At `b = b*`
 /// the rolling speed after the impact is zero up to rounding (~1e-16 relative).

@@ -6,10 +6,10 @@ use std::time::Instant;
 
 use serde::Serialize;
 
-use super::{Method, Model, Observer, Outcome, Settings, Y, integrate, start_state};
-use crate::model::Phase;
-use crate::scene::{Scene, Span};
-use crate::solution::{Event, EventKind, Solution, Who};
+use crate::methods::{Method, Model, Observer, Outcome, Settings, Y, integrate, start_state};
+use crate::physics::model::Phase;
+use crate::physics::scene::{Scene, Span};
+use crate::physics::solution::{Event, EventKind, Solution, Who};
 
 /// How a run ended (interface.md).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -252,7 +252,7 @@ pub fn measure(
     let (t0, t1) = (exact.t_start, exact.t_end);
     if method == Method::Exact {
         let (time_min_s, time_median_s) = if timed {
-            time(|| crate::engine::solve(scene, span))
+            time(|| crate::physics::engine::solve(scene, span))
         } else {
             (0.0, 0.0)
         };
@@ -386,7 +386,7 @@ pub fn default_sweep(method: Method) -> Vec<f64> {
 
 /// Runs every method in `methods` over its sweep.
 pub fn sweep(scene: &Scene, span: &Span, methods: &[Method], base: &Settings) -> Vec<Row> {
-    let exact = crate::engine::solve(scene, span);
+    let exact = crate::physics::engine::solve(scene, span);
     let mut rows = Vec::new();
     for &method in methods {
         for value in default_sweep(method) {

@@ -1,72 +1,10 @@
-//! The scene: the numbers a user sets (R, b, m, μ_k, v0, e, c_rr, g, time span), how
-//! layers of settings (defaults, preset, command line) combine, and what is valid.
+//! The one table of scene parameters (name, symbol, unit, range, steps, flag, label)
+//! and the layers of settings (defaults, preset, command line) it reads: text and
+//! settings in, a checked SI [`Scene`] out.
 
-use serde::Serialize;
-
-use crate::closed_form;
-use crate::units::{Dimension, show};
-
-/// One ball's own numbers.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Ball {
-    /// Mass in kg.
-    pub mass: f64,
-    /// Speed toward the impact point just before the first impact, m/s.
-    pub v0: f64,
-}
-
-/// The physical scene, SI units throughout. Always valid once built by [`SceneSpec::resolve`].
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Scene {
-    /// Ball radius R, m (both balls).
-    pub radius: f64,
-    /// Groove width b, m, `0 ≤ b < 2R`.
-    pub width: f64,
-    /// Kinetic friction coefficient μ_k between ball and groove edges.
-    pub mu: f64,
-    /// Gravitational acceleration g, m/s².
-    pub g: f64,
-    /// Newton's coefficient of restitution e between the balls, `0..=1`.
-    pub restitution: f64,
-    /// Rolling-resistance coefficient c_rr ≥ 0 (rolling deceleration c_rr g).
-    pub rolling_resistance: f64,
-    pub left: Ball,
-    pub right: Ball,
-}
-
-/// The simulated time span, s. The first impact is at t = 0.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Span {
-    pub t_start: f64,
-    /// `None`: long enough to show the last event.
-    pub t_end: Option<f64>,
-}
-
-impl Default for Span {
-    fn default() -> Self {
-        Span {
-            t_start: -0.2,
-            t_end: None,
-        }
-    }
-}
-
-impl Scene {
-    /// `k = r / R`, the contact circle's radius over the ball's.
-    pub fn k(&self) -> f64 {
-        closed_form::contact_ratio(self.radius, self.width)
-    }
-
-    /// True for the paper's symmetric scene: equal masses and equal speeds.
-    pub fn is_symmetric(&self) -> bool {
-        self.left == self.right
-    }
-
-    /// The largest speed in the scene, the scale for "negligibly small" speeds.
-    pub fn speed_scale(&self) -> f64 {
-        self.left.v0.abs().max(self.right.v0.abs())
-    }
-}
+use crate::input::units::{Dimension, show};
+use crate::physics::closed_form;
+use crate::physics::scene::{Ball, Scene, Span};
 
 /// Why a scene is not valid. Each message names the value and what is allowed.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]

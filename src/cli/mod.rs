@@ -7,18 +7,19 @@ use std::fmt::Write as _;
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use serde::Serialize;
 
-use crate::derived::{Derived, Summary};
-use crate::engine;
+use crate::input::params::{Key, SceneSpec};
+use crate::input::preset::{self, Preset};
 use crate::methods::Method;
-use crate::preset::{self, Preset};
-use crate::scene::{Key, Scene, SceneSpec, Span};
-use crate::solution::{Snapshot, Solution};
+use crate::physics::derived::{Derived, Summary};
+use crate::physics::engine;
+use crate::physics::scene::{Scene, Span};
+use crate::physics::solution::{Snapshot, Solution};
 use crate::tui::{self, app::App};
 
 mod fit;
 mod methods;
 mod sweep;
-use crate::units::{Dimension, parse_quantity, show, significant};
+use crate::input::units::{Dimension, parse_quantity, show, significant};
 pub use methods::write_atomically;
 
 /// Most samples `--sample` may ask for.
@@ -129,7 +130,7 @@ pub struct FitArgs {
     pub to: Option<f64>,
     /// What the model fit may change, comma-separated [default: mu].
     #[arg(long, value_enum, value_delimiter = ',')]
-    pub free: Option<Vec<crate::fit::Free>>,
+    pub free: Option<Vec<crate::study::fit::Free>>,
     /// Output: a table, JSON, or an SVG figure (data, fitted model, residuals).
     #[arg(long, value_enum, default_value_t = FitFormat::Table)]
     pub format: FitFormat,
@@ -456,7 +457,7 @@ struct SimulationJson<'a> {
     derived: &'a Derived,
     summary: Summary,
     method: &'a str,
-    events: Vec<&'a crate::solution::Event>,
+    events: Vec<&'a crate::physics::solution::Event>,
     #[serde(skip_serializing_if = "Option::is_none")]
     samples: Option<&'a [Snapshot]>,
     #[serde(rename = "final")]
@@ -692,8 +693,8 @@ pub(crate) fn state_row(
     t: f64,
     kind: &str,
     ball: &str,
-    l: crate::model::BallState,
-    r: crate::model::BallState,
+    l: crate::physics::model::BallState,
+    r: crate::physics::model::BallState,
 ) -> String {
     format!(
         "{t:>10.6}  {kind:<14} {ball:<6} {:>9.4} {:>9.5} {:>9.5}  {:>9.4} {:>9.5} {:>9.5}",

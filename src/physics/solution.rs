@@ -3,8 +3,8 @@
 
 use serde::Serialize;
 
-use crate::model::{BallState, Groove, Phase};
-use crate::scene::{Scene, Span};
+use crate::physics::model::{BallState, Groove, Phase};
+use crate::physics::scene::{Scene, Span};
 
 /// Which ball an event belongs to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]

@@ -4,11 +4,11 @@
 
 use serde::Serialize;
 
-use crate::closed_form;
-use crate::derived::{Derived, Regime};
-use crate::engine;
-use crate::preset::Measured;
-use crate::scene::{Scene, Span};
+use crate::input::preset::Measured;
+use crate::physics::closed_form;
+use crate::physics::derived::{Derived, Regime};
+use crate::physics::engine;
+use crate::physics::scene::{Scene, Span};
 
 /// Why a fit cannot be made.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -192,7 +192,7 @@ fn fit_points(m: &Measured, scene: &Scene) -> Vec<usize> {
     let impacts: Vec<f64> = sol
         .events
         .iter()
-        .filter(|e| e.kind == crate::solution::EventKind::Collision)
+        .filter(|e| e.kind == crate::physics::solution::EventKind::Collision)
         .map(|e| e.t)
         .collect();
     (0..m.t.len())

@@ -6,11 +6,11 @@
 use nalgebra::Vector3;
 use serde::Serialize;
 
-use crate::closed_form;
-use crate::engine::NEGLIGIBLE_SPEED;
-use crate::model::{self, BallState, Groove, slip};
-use crate::scene::Scene;
-use crate::solution::{EnergySplit, Solution};
+use crate::physics::closed_form;
+use crate::physics::engine::NEGLIGIBLE_SPEED;
+use crate::physics::model::{self, BallState, Groove, slip};
+use crate::physics::scene::Scene;
+use crate::physics::solution::{EnergySplit, Solution};
 
 /// What the balls do after the first impact (paper, figure 2).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]

@@ -3,27 +3,27 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::scene::{Key, SceneSpec};
-use crate::units::parse_quantity;
+use crate::input::params::{Key, SceneSpec};
+use crate::input::units::parse_quantity;
 
 /// The preset used when none is named.
 pub const DEFAULT: &str = "paper-b4.9";
 
 /// Built-in presets, in the order `groovelab presets` lists them.
 const BUILT_IN: &[(&str, &str)] = &[
-    ("paper-b3.5", include_str!("../presets/paper-b3.5.toml")),
-    ("paper-b4.4", include_str!("../presets/paper-b4.4.toml")),
-    ("paper-b4.9", include_str!("../presets/paper-b4.9.toml")),
-    ("flat-table", include_str!("../presets/flat-table.toml")),
-    ("critical", include_str!("../presets/critical.toml")),
+    ("paper-b3.5", include_str!("../../presets/paper-b3.5.toml")),
+    ("paper-b4.4", include_str!("../../presets/paper-b4.4.toml")),
+    ("paper-b4.9", include_str!("../../presets/paper-b4.9.toml")),
+    ("flat-table", include_str!("../../presets/flat-table.toml")),
+    ("critical", include_str!("../../presets/critical.toml")),
     (
         "unequal-speeds",
-        include_str!("../presets/unequal-speeds.toml"),
+        include_str!("../../presets/unequal-speeds.toml"),
     ),
-    ("inelastic", include_str!("../presets/inelastic.toml")),
+    ("inelastic", include_str!("../../presets/inelastic.toml")),
     (
         "steel-and-glass",
-        include_str!("../presets/steel-and-glass.toml"),
+        include_str!("../../presets/steel-and-glass.toml"),
     ),
 ];
 

@@ -3,8 +3,8 @@
 use plotters::prelude::*;
 
 use crate::methods::Method;
-use crate::methods::compare::Row;
-use crate::scene::Scene;
+use crate::physics::scene::Scene;
+use crate::study::compare::Row;
 
 fn colour(m: Method) -> RGBColor {
     match m {
@@ -92,7 +92,7 @@ pub fn work_precision(rows: &[Row], scene: &Scene) -> Result<String, Box<dyn std
                 });
             chart.draw_series(mine.iter().filter(|r| r.err_v.is_finite()).map(|r| {
                 let p = (r.time_median_s.max(1e-9), r.err_v.max(1e-16));
-                let style = if r.status == crate::methods::compare::Status::Ok {
+                let style = if r.status == crate::study::compare::Status::Ok {
                     c.filled()
                 } else {
                     c.stroke_width(1)
@@ -115,8 +115,8 @@ pub fn work_precision(rows: &[Row], scene: &Scene) -> Result<String, Box<dyn std
 /// their window, and the residuals below.
 pub fn fit_figure(
     scene: &Scene,
-    m: &crate::preset::Measured,
-    fits: &crate::fit::Fits,
+    m: &crate::input::preset::Measured,
+    fits: &crate::study::fit::Fits,
 ) -> Result<String, Box<dyn std::error::Error>> {
     let mut fitted = *scene;
     fitted.mu = fits.model_fit.mu;
@@ -124,9 +124,9 @@ pub fn fit_figure(
     fitted.right.v0 = fits.model_fit.v0;
     fitted.restitution = fits.model_fit.restitution;
     let (t0, t1) = (m.t[0], *m.t.last().unwrap_or(&1.0));
-    let sol = crate::engine::solve(
+    let sol = crate::physics::engine::solve(
         &fitted,
-        &crate::scene::Span {
+        &crate::physics::scene::Span {
             t_start: t0.min(-1e-3),
             t_end: Some(t1.max(1e-3)),
         },
@@ -218,7 +218,7 @@ pub fn fit_figure(
         for (series, colour) in [(&m.v_cm, blue), (&m.v_t, orange)] {
             let ts: Vec<f64> = idx.iter().map(|&i| m.t[i]).collect();
             let ys: Vec<f64> = idx.iter().map(|&i| series[i]).collect();
-            let line = crate::fit::line(&ts, &ys);
+            let line = crate::study::fit::line(&ts, &ys);
             chart.draw_series(LineSeries::new(
                 [l.from, l.to].map(|t| (t, line.intercept + line.slope * t)),
                 colour.mix(0.6).stroke_width(1),
@@ -261,29 +261,29 @@ pub fn fit_figure(
     Ok(svg)
 }
 
-fn regime_colour(r: crate::derived::Regime) -> RGBColor {
+fn regime_colour(r: crate::physics::derived::Regime) -> RGBColor {
     match r {
-        crate::derived::Regime::Depart => RGBColor(31, 119, 180),
-        crate::derived::Regime::Rest => RGBColor(150, 150, 150),
-        crate::derived::Regime::Recollide => RGBColor(255, 127, 14),
+        crate::physics::derived::Regime::Depart => RGBColor(31, 119, 180),
+        crate::physics::derived::Regime::Rest => RGBColor(150, 150, 150),
+        crate::physics::derived::Regime::Recollide => RGBColor(255, 127, 14),
     }
 }
 
 /// The regime map: one coloured cell per grid point, the analytic critical width
 /// b*(e) drawn over it when one axis is the width (a curve against e, else a line).
 pub fn regime_map(
-    points: &[crate::sweep::Point],
-    x: &crate::sweep::Axis,
-    y: Option<&crate::sweep::Axis>,
+    points: &[crate::study::sweep::Point],
+    x: &crate::study::sweep::Axis,
+    y: Option<&crate::study::sweep::Axis>,
     scene: &Scene,
     preset: &str,
 ) -> Result<String, Box<dyn std::error::Error>> {
-    use crate::scene::Key;
+    use crate::input::params::Key;
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, (900, 640)).into_drawing_area();
         root.fill(&WHITE)?;
-        let pad = |a: &crate::sweep::Axis| {
+        let pad = |a: &crate::study::sweep::Axis| {
             let step = if a.n > 1 {
                 (a.hi - a.lo) / (a.n - 1) as f64
             } else {
@@ -343,7 +343,7 @@ pub fn regime_map(
             }
         }
         // The analytic boundary b*(e) = 2R sqrt(1 − 2/(5e)).
-        let b_star = |e: f64| crate::closed_form::critical_width(scene.radius, e);
+        let b_star = |e: f64| crate::physics::closed_form::critical_width(scene.radius, e);
         let width_axis = |k: Key| k == Key::Width;
         if width_axis(x.key) {
             match y.filter(|y| y.key == Key::Restitution) {

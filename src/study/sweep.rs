@@ -6,9 +6,10 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use rayon::prelude::*;
 use serde::Serialize;
 
-use crate::derived::{Derived, Regime};
-use crate::engine;
-use crate::scene::{Key, SceneSpec, Span};
+use crate::input::params::{Key, SceneSpec};
+use crate::physics::derived::{Derived, Regime};
+use crate::physics::engine;
+use crate::physics::scene::Span;
 
 /// One swept parameter: `key` from `lo` to `hi` (SI) in `n` points, both ends included.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -75,7 +76,7 @@ fn spec_at(base: &SceneSpec, x: &Axis, y: Option<&Axis>, i: usize, j: usize) -> 
 }
 
 /// Solves one grid point.
-pub fn point(spec: &SceneSpec) -> Result<(crate::scene::Scene, Point), String> {
+pub fn point(spec: &SceneSpec) -> Result<(crate::physics::scene::Scene, Point), String> {
     let (scene, _) = spec.resolve().map_err(|e| e.to_string())?;
     let derived = Derived::of(&scene);
     let sol = engine::solve(
@@ -208,8 +209,10 @@ pub fn parse_axis(text: &str, n: usize) -> Result<Axis, String> {
             s.trim().to_string()
         }
     };
-    let lo = crate::units::parse_quantity(&fix(a, &ua, &ub), dim).map_err(|e| e.to_string())?;
-    let hi = crate::units::parse_quantity(&fix(b, &ub, &ua), dim).map_err(|e| e.to_string())?;
+    let lo =
+        crate::input::units::parse_quantity(&fix(a, &ua, &ub), dim).map_err(|e| e.to_string())?;
+    let hi =
+        crate::input::units::parse_quantity(&fix(b, &ub, &ua), dim).map_err(|e| e.to_string())?;
     if hi < lo {
         return Err(format!("'{range}' runs backwards, allowed LO ≤ HI"));
     }

@@ -2,8 +2,8 @@
 //! header, comma or semicolon separated, decimal commas tolerated, units from the
 //! header or given, and the time origin moved to the first impact.
 
-use crate::preset::Measured;
-use crate::units::{Dimension, parse_quantity};
+use crate::input::preset::Measured;
+use crate::input::units::{Dimension, parse_quantity};
 
 /// Why a data file cannot be used; each message names the line.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
