@@ -3,7 +3,8 @@
 use std::process::Command;
 
 use groovelab::input::data;
-use groovelab::input::preset::{Measured, Preset};
+use groovelab::input::data::Measured;
+use groovelab::input::preset::Preset;
 use groovelab::physics::derived::Regime;
 use groovelab::physics::engine::solve;
 use groovelab::physics::scene::{Scene, Span};

@@ -5,8 +5,9 @@ use std::fmt::Write as _;
 use serde::Serialize;
 
 use super::{CliError, DataArgs, FitArgs, FitFormat, SceneArgs, methods::write_atomically};
+use crate::input::data::Measured;
 use crate::input::data::{self, Reading};
-use crate::input::preset::{Measured, Preset};
+use crate::input::preset::Preset;
 use crate::input::units::{Dimension, parse_quantity};
 use crate::physics::scene::Scene;
 use crate::study::fit::{self, Fits, Free};

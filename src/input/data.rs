@@ -2,8 +2,15 @@
 //! header, comma or semicolon separated, decimal commas tolerated, units from the
 //! header or given, and the time origin moved to the first impact.
 
-use crate::input::preset::Measured;
 use crate::input::units::{Dimension, parse_quantity};
+
+/// A measured series of the left ball: time (s, first impact at 0), v_cm and v_t (m/s).
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Measured {
+    pub t: Vec<f64>,
+    pub v_cm: Vec<f64>,
+    pub v_t: Vec<f64>,
+}
 
 /// Why a data file cannot be used; each message names the line.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]

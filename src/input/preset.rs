@@ -3,6 +3,7 @@
 
 use std::path::{Path, PathBuf};
 
+use crate::input::data::Measured;
 use crate::input::params::{Key, SceneSpec};
 use crate::input::units::parse_quantity;
 
@@ -26,14 +27,6 @@ const BUILT_IN: &[(&str, &str)] = &[
         include_str!("../../presets/steel-and-glass.toml"),
     ),
 ];
-
-/// A measured series of the left ball: time (s, first impact at 0), v_cm and v_t (m/s).
-#[derive(Clone, Debug, PartialEq, serde::Serialize)]
-pub struct Measured {
-    pub t: Vec<f64>,
-    pub v_cm: Vec<f64>,
-    pub v_t: Vec<f64>,
-}
 
 /// Where a preset came from.
 #[derive(Clone, Debug, PartialEq)]

@@ -115,7 +115,7 @@ pub fn work_precision(rows: &[Row], scene: &Scene) -> Result<String, Box<dyn std
 /// their window, and the residuals below.
 pub fn fit_figure(
     scene: &Scene,
-    m: &crate::input::preset::Measured,
+    m: &crate::input::data::Measured,
     fits: &crate::study::fit::Fits,
 ) -> Result<String, Box<dyn std::error::Error>> {
     let mut fitted = *scene;

@@ -4,7 +4,7 @@
 
 use serde::Serialize;
 
-use crate::input::preset::Measured;
+use crate::input::data::Measured;
 use crate::physics::closed_form;
 use crate::physics::derived::{Derived, Regime};
 use crate::physics::engine;

@@ -1,8 +1,9 @@
 //! The lab's state and what every action does to it. No terminal here: keys arrive as
 //! [`Action`]s, so the whole app is testable without one.
 
+use crate::input::data::Measured;
 use crate::input::params::{Key, SceneSpec};
-use crate::input::preset::{Measured, Preset};
+use crate::input::preset::Preset;
 use crate::input::units::{Dimension, parse_quantity, show, significant};
 use crate::methods::{self, Method, Settings, Y};
 use crate::physics::derived::Derived;
