@@ -7,6 +7,7 @@
 
 pub mod cli;
 pub mod input;
+pub mod lab;
 pub mod methods;
 pub mod physics;
 pub mod study;

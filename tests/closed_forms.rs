@@ -10,7 +10,7 @@
 
 mod common;
 
-use groovelab::input::params::SceneSpec;
+use groovelab::input::params::{Key, SceneSpec};
 use groovelab::physics::closed_form as cf;
 use groovelab::physics::derived::{Derived, Regime};
 use groovelab::physics::engine::solve;
@@ -242,15 +242,12 @@ fn regime_follows_the_critical_width_and_the_determinant() {
 #[test]
 fn release_height_gives_the_closed_form_speed() {
     for (width, h) in [(0.0, 0.05), (0.035, 0.1), (0.049, 0.01)] {
-        let spec = SceneSpec {
-            radius: Some(0.0275),
-            width: Some(width),
-            mass_left: Some(0.167),
-            mass_right: Some(0.167),
-            mu: Some(0.17),
-            height: Some(h),
-            ..SceneSpec::default()
-        };
+        let spec = SceneSpec::default()
+            .with(Key::Radius, 0.0275)
+            .with(Key::Width, width)
+            .with(Key::Mass, 0.167)
+            .with(Key::Mu, 0.17)
+            .with(Key::Height, h);
         let (scene, _) = spec.resolve().unwrap();
         let k = scene.k();
         let want = (2.0 * 9.81 * h / (1.0 + 2.0 / (5.0 * k * k))).sqrt();

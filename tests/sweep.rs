@@ -4,7 +4,7 @@
 use std::process::Command;
 use std::sync::atomic::AtomicBool;
 
-use groovelab::input::params::SceneSpec;
+use groovelab::input::params::{Key, SceneSpec};
 use groovelab::input::preset::Preset;
 use groovelab::physics::closed_form;
 use groovelab::physics::derived::Regime;
@@ -26,7 +26,7 @@ fn the_boundary_is_b_star_of_e_within_one_cell() {
     let (nx, ny) = (120, 60);
     let points = map(&spec, "width=0..5.4cm", Some("restitution=0.3..1"), nx, ny);
     let dx = 0.054 / (nx - 1) as f64;
-    let radius = spec.radius.unwrap();
+    let radius = spec.get(Key::Radius).unwrap();
     for row in points.chunks(nx) {
         let e = row[0].y.unwrap();
         match closed_form::critical_width(radius, e) {
@@ -161,7 +161,7 @@ fn csv_follows_the_interface_and_bad_grids_are_refused() {
             "--grid",
         ),
         (&["sweep", "--x", "width=5..1cm"][..], "backwards"),
-        (&["sweep", "--x", "mu=-1..1"][..], "μ_k ≥ 0"),
+        (&["sweep", "--x", "mu=-1..1"][..], "0 ≤ μ_k"),
         (&["sweep"][..], "--x"),
     ] {
         let out = groovelab(args);

@@ -1,19 +1,25 @@
 //! The lab without a terminal: key → action → state, and the headless screen that
 //! `render` prints (insta snapshots, checked by eye when recorded).
 
-use groovelab::cli::{DataArgs, RenderArgs, SceneArgs, render};
+use groovelab::cli::{DataArgs, RenderArgs, SceneArgs, render_with};
 use groovelab::input::params::Key;
 use groovelab::input::preset::Preset;
+use groovelab::lab::Lab;
+use groovelab::lab::jobs::State;
 use groovelab::physics::derived::Regime;
-use groovelab::tui::app::{App, Mode, PARAMS, Status};
+use groovelab::tui::app::{App, Library, Mode, ROWS, Status, View};
 use groovelab::tui::{keys, replay};
+
+/// An empty preset folder of this test run's own, so no user preset shows up.
+fn no_user_presets() -> Library {
+    let dir = std::env::temp_dir().join(format!("groovelab-tui-presets-{}", std::process::id()));
+    Library::at(Some(dir))
+}
 
 fn app(preset: &str) -> App {
     let p = Preset::load(preset).unwrap();
     let (scene, span) = p.spec.resolve().unwrap();
-    let mut app = App::new(p, scene, span);
-    app.preset_dir = None;
-    app
+    App::new(Lab::new(p, scene, span), no_user_presets())
 }
 
 fn press(app: &mut App, script: &str) {
@@ -21,7 +27,7 @@ fn press(app: &mut App, script: &str) {
 }
 
 fn select(app: &mut App, key: Key) {
-    app.selected = PARAMS.iter().position(|p| p.key == key).unwrap();
+    app.selected = ROWS.iter().position(|p| p.key == key).unwrap();
 }
 
 fn screen(preset: &str, at: f64, size: (u16, u16), ascii: bool, keys: Option<&str>) -> String {
@@ -34,32 +40,51 @@ fn screen(preset: &str, at: f64, size: (u16, u16), ascii: bool, keys: Option<&st
         size,
         keys: keys.map(str::to_string),
     };
-    render(&scene, &DataArgs::default(), &args, ascii).unwrap()
+    render_with(
+        &scene,
+        &DataArgs::default(),
+        &args,
+        ascii,
+        no_user_presets(),
+    )
+    .unwrap()
 }
 
 #[test]
 fn arrows_change_the_selected_parameter_and_resolve() {
     let mut a = app("paper-b3.5");
     select(&mut a, Key::Width);
-    assert_eq!(a.derived.regime, Regime::Depart);
+    assert_eq!(a.lab.derived.regime, Regime::Depart);
     press(&mut a, "right");
-    assert!((a.scene.width - 0.0355).abs() < 1e-12, "{}", a.scene.width);
+    assert!(
+        (a.lab.scene.width - 0.0355).abs() < 1e-12,
+        "{}",
+        a.lab.scene.width
+    );
     // Coarse steps go to the next 5 mm mark, past b* = 4.26 cm: the balls now come back.
     press(&mut a, "S-right pgup");
-    assert!((a.scene.width - 0.045).abs() < 1e-12, "{}", a.scene.width);
-    assert_eq!(a.derived.regime, Regime::Recollide);
-    assert!(a.solution.impacts > 1, "re-solved at once");
+    assert!(
+        (a.lab.scene.width - 0.045).abs() < 1e-12,
+        "{}",
+        a.lab.scene.width
+    );
+    assert_eq!(a.lab.derived.regime, Regime::Recollide);
+    assert!(a.lab.solution.impacts > 1, "re-solved at once");
     press(&mut a, "pgdn left");
-    assert!((a.scene.width - 0.0395).abs() < 1e-12, "{}", a.scene.width);
+    assert!(
+        (a.lab.scene.width - 0.0395).abs() < 1e-12,
+        "{}",
+        a.lab.scene.width
+    );
 }
 
 #[test]
 fn out_of_range_values_are_refused_not_applied() {
     let mut a = app("paper-b4.9");
     select(&mut a, Key::Width);
-    let before = a.scene;
+    let before = a.lab.scene;
     press(&mut a, "pgup pgup");
-    assert_eq!(a.scene, before, "b ≥ 2R must not be applied");
+    assert_eq!(a.lab.scene, before, "b ≥ 2R must not be applied");
     assert!(
         matches!(&a.status, Status::Error(e) if e.contains("2R")),
         "{:?}",
@@ -67,7 +92,7 @@ fn out_of_range_values_are_refused_not_applied() {
     );
     select(&mut a, Key::Restitution);
     press(&mut a, "right");
-    assert_eq!(a.scene.restitution, 1.0);
+    assert_eq!(a.lab.scene.restitution, 1.0);
     assert!(matches!(a.status, Status::Error(_)));
 }
 
@@ -76,19 +101,19 @@ fn typed_values_take_units_and_escape_cancels() {
     let mut a = app("paper-b4.9");
     select(&mut a, Key::Width);
     press(&mut a, "enter 4 . 4 c m enter");
-    assert_eq!(a.scene.width, 0.044);
+    assert_eq!(a.lab.scene.width, 0.044);
     press(&mut a, "enter 3 c m esc");
-    assert_eq!(a.scene.width, 0.044, "Esc cancels typing");
+    assert_eq!(a.lab.scene.width, 0.044, "Esc cancels typing");
     assert_eq!(a.mode, Mode::Normal);
     assert!(!a.quit);
     press(&mut a, "enter 3 k g enter");
-    assert_eq!(a.scene.width, 0.044);
+    assert_eq!(a.lab.scene.width, 0.044);
     assert!(matches!(&a.status, Status::Error(e) if e.contains("unknown unit")));
     // Height sets both speeds through the run-up formula.
     select(&mut a, Key::Height);
     press(&mut a, "enter 5 c m enter");
-    assert!((a.derived.release_height - 0.05).abs() < 1e-12);
-    assert_eq!(a.scene.left.v0, a.scene.right.v0);
+    assert!((a.lab.derived.release_height - 0.05).abs() < 1e-12);
+    assert_eq!(a.lab.scene.left.v0, a.lab.scene.right.v0);
 }
 
 #[test]
@@ -110,14 +135,14 @@ fn playback_runs_on_the_clock_at_the_chosen_speed() {
     press(&mut a, ",");
     assert!((a.t - (t + a.frame_step())).abs() < 1e-12);
     press(&mut a, "end");
-    assert_eq!(a.t, a.solution.t_end);
+    assert_eq!(a.t, a.lab.solution.t_end);
     press(&mut a, "home");
-    assert_eq!(a.t, a.solution.t_start);
+    assert_eq!(a.t, a.lab.solution.t_start);
     press(&mut a, "r");
     assert!(a.playing);
     // Playing past the end stops there.
     a.tick(1e6);
-    assert_eq!(a.t, a.solution.t_end);
+    assert_eq!(a.t, a.lab.solution.t_end);
     assert!(!a.playing);
 }
 
@@ -125,10 +150,10 @@ fn playback_runs_on_the_clock_at_the_chosen_speed() {
 fn picker_loads_presets_and_quit_keys_quit() {
     let mut a = app("paper-b4.9");
     press(&mut a, "p down enter");
-    assert_eq!(a.preset.name, a.presets[3].name);
+    assert_eq!(a.lab.preset.name, a.library.presets[3].name);
     press(&mut a, "p up up esc");
     assert_eq!(a.mode, Mode::Normal);
-    assert_eq!(a.preset.name, a.presets[3].name);
+    assert_eq!(a.lab.preset.name, a.library.presets[3].name);
     press(&mut a, "?");
     assert_eq!(a.mode, Mode::Help);
     press(&mut a, "esc");
@@ -149,14 +174,17 @@ fn saving_writes_a_loadable_preset_and_never_overwrites_silently() {
     let dir = std::env::temp_dir().join(format!("groovelab-save-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     let mut a = app("inelastic");
-    a.preset_dir = Some(dir.clone());
+    a.library = Library::at(Some(dir.clone()));
     select(&mut a, Key::Mu);
     press(&mut a, "right");
     press(&mut a, "s enter");
     let path = dir.join("my-inelastic.toml");
     let saved = Preset::load(path.to_str().unwrap()).unwrap();
     let (scene, _) = saved.spec.resolve().unwrap();
-    assert_eq!(scene, a.scene, "the saved file gives back the same scene");
+    assert_eq!(
+        scene, a.lab.scene,
+        "the saved file gives back the same scene"
+    );
     // Saving again asks first; anything but y keeps the file.
     std::fs::write(&path, "sentinel").unwrap();
     press(&mut a, "s enter");
@@ -354,12 +382,12 @@ fn mouse_clicks_select_and_scrolls_change_parameters() {
     assert_eq!(param_at(short, 9, short.x + 3, short.y + 1), Some(3));
     let mut a = app("paper-b4.9");
     a.apply(Action::Select(4));
-    assert_eq!(PARAMS[a.selected].key, Key::Mu);
+    assert_eq!(ROWS[a.selected].key, Key::Mu);
     a.apply(Action::ScrollParam(4, true));
-    assert!((a.scene.mu - 0.18).abs() < 1e-12);
+    assert!((a.lab.scene.mu - 0.18).abs() < 1e-12);
     a.apply(Action::ScrollParam(8, false));
-    assert_eq!(PARAMS[a.selected].key, Key::Restitution);
-    assert!((a.scene.restitution - 0.99).abs() < 1e-12);
+    assert_eq!(ROWS[a.selected].key, Key::Restitution);
+    assert!((a.lab.scene.restitution - 0.99).abs() < 1e-12);
 }
 
 #[test]
@@ -386,8 +414,11 @@ fn no_color_means_no_colours() {
 fn methods_view_and_overlay() {
     let mut a = app("paper-b4.9");
     press(&mut a, "c");
-    assert!(a.methods_view);
-    let rows = a.method_rows.as_ref().unwrap();
+    assert_eq!(a.view, View::Methods);
+    a.lab.wait();
+    let State::Ready(rows) = a.lab.method_rows() else {
+        panic!("the rows are there once the lab has waited")
+    };
     assert_eq!(rows.len(), 20, "five methods at four levels");
     let s = screen_of(&a);
     assert!(s.contains("Methods: max |v_cm - exact| against steps per run"));
@@ -401,21 +432,30 @@ fn methods_view_and_overlay() {
         screen("paper-b4.9", 0.3, (120, 40), false, Some("c"))
     );
     press(&mut a, "c o");
-    let o = a.overlay.as_ref().unwrap();
+    a.lab.wait();
+    let State::Ready(o) = a.lab.overlay() else {
+        panic!("an overlay")
+    };
     assert_eq!(o.method, groovelab::methods::Method::Euler);
     assert_eq!(o.row.status, groovelab::study::compare::Status::Chatter);
     assert!(screen_of(&a).contains("euler h 1e-3 (chatter)"));
     press(&mut a, "[ [");
-    assert_eq!(a.overlay.as_ref().unwrap().settings.step, 1e-2);
+    a.lab.wait();
+    let overlay = |a: &App| match a.lab.overlay() {
+        State::Ready(o) => Some(o.clone()),
+        _ => None,
+    };
+    assert_eq!(overlay(&a).unwrap().settings.step, 1e-2);
     // A scene change re-runs the overlay.
     select(&mut a, Key::Mu);
     press(&mut a, "right");
+    a.lab.wait();
     assert_eq!(
-        a.overlay.as_ref().unwrap().row.method,
+        overlay(&a).unwrap().row.method,
         groovelab::methods::Method::Euler
     );
     press(&mut a, "o o o o o");
-    assert!(a.overlay.is_none(), "cycling ends with the overlay off");
+    assert!(overlay(&a).is_none(), "cycling ends with the overlay off");
 }
 
 #[test]
@@ -466,6 +506,6 @@ fn every_view_draws_at_many_sizes_without_panicking() {
             assert!(s.is_ascii());
         }
     }
-    a.t = a.solution.t_end;
+    a.t = a.lab.solution.t_end;
     assert!(screen_of(&a).contains("impacts"));
 }

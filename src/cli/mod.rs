@@ -4,336 +4,30 @@
 
 use std::fmt::Write as _;
 
-use clap::{Args, Parser, Subcommand, ValueEnum};
 use serde::Serialize;
 
-use crate::input::params::{Key, SceneSpec};
 use crate::input::preset::{self, Preset};
+use crate::lab::Lab;
 use crate::methods::Method;
 use crate::physics::derived::{Derived, Summary};
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{Snapshot, Solution};
-use crate::tui::{self, app::App};
+use crate::tui::{
+    self,
+    app::{App, Library},
+};
 
+mod args;
 mod fit;
 mod methods;
 mod sweep;
-use crate::input::units::{Dimension, parse_quantity, show, significant};
+use crate::input::units::{Dimension, show, significant};
+pub use args::*;
 pub use methods::write_atomically;
 
 /// Most samples `--sample` may ask for.
 pub const MAX_SAMPLES: usize = 1_000_000;
-
-#[derive(Parser, Debug)]
-#[command(
-    name = "groovelab",
-    version,
-    about = "Two balls colliding in a groove: exact simulation, charts and lab tools",
-    long_about = "Two identical balls roll toward each other in a horizontal groove, collide, and \
-                  then depart, stop, or come back again and again. groovelab solves the motion \
-                  exactly (Gröber & Sniatecki) and shows why."
-)]
-pub struct Cli {
-    #[command(subcommand)]
-    pub command: Option<Command>,
-    #[command(flatten)]
-    pub scene: SceneArgs,
-    /// Pure 7-bit ASCII drawing (app and render) instead of Unicode.
-    #[arg(long, global = true)]
-    pub ascii: bool,
-    #[command(flatten)]
-    pub data: DataArgs,
-}
-
-/// Measured data from a file, for `fit`, the app and `render`.
-#[derive(Args, Debug, Clone, Default)]
-pub struct DataArgs {
-    /// A CSV of the left ball: columns t, v_cm, v_t found by header (comma or
-    /// semicolon, decimal commas allowed) [default: the preset's series].
-    #[arg(long, value_name = "FILE", global = true)]
-    pub data: Option<std::path::PathBuf>,
-    /// Time unit of the file when its header gives none (e.g. ms) [default: s].
-    #[arg(long, value_name = "UNIT", global = true)]
-    pub time_unit: Option<String>,
-    /// Speed unit of the file when its header gives none (e.g. cm/s) [default: m/s].
-    #[arg(long, value_name = "UNIT", global = true)]
-    pub speed_unit: Option<String>,
-    /// Time of the first impact in the file [default: detected from v_cm].
-    #[arg(long, value_name = "T", value_parser = time, allow_hyphen_values = true, global = true)]
-    pub impact_at: Option<f64>,
-}
-
-#[derive(Subcommand, Debug)]
-pub enum Command {
-    /// The interactive terminal app (the default).
-    Tui,
-    /// One run of a scene, printed as a table, JSON or CSV.
-    Simulate(SimulateArgs),
-    /// The app's screen at one simulated time, as plain text (headless).
-    Render(RenderArgs),
-    /// Speed against accuracy of the solution methods (work–precision).
-    Compare(CompareArgs),
-    /// Fit the model to measured data (a preset's, or a CSV file).
-    Fit(FitArgs),
-    /// Regime map over one or two scene parameters.
-    Sweep(SweepArgs),
-    /// List the built-in and user presets.
-    Presets,
-}
-
-#[derive(Args, Debug)]
-pub struct SimulateArgs {
-    /// Output format.
-    #[arg(long, value_enum, default_value_t = Format::Table)]
-    pub format: Format,
-    /// Also give states on a uniform time grid with this step (e.g. 10ms).
-    #[arg(long, value_name = "DT", value_parser = time, allow_hyphen_values = true)]
-    pub sample: Option<f64>,
-    /// Solution method (time-stepping methods report the events they detect).
-    #[arg(long, value_enum, default_value_t = Method::Exact)]
-    pub method: Method,
-    /// Step size of a fixed-step method or moreau (e.g. 0.1ms) [default: 0.1 ms].
-    #[arg(long, value_name = "S", value_parser = time, allow_hyphen_values = true)]
-    pub dt: Option<f64>,
-    /// Tolerance of rk45 [default: 1e-6].
-    #[arg(long, value_name = "X", value_parser = ratio, allow_hyphen_values = true)]
-    pub tol: Option<f64>,
-    /// Regularisation speed ε of rk4's tanh(s/ε) friction [default: 1mm/s].
-    #[arg(long, value_name = "Q", value_parser = speed, allow_hyphen_values = true)]
-    pub epsilon: Option<f64>,
-}
-
-#[derive(Args, Debug)]
-pub struct CompareArgs {
-    /// Output: a table, JSON rows, or an SVG work–precision diagram.
-    #[arg(long, value_enum, default_value_t = CompareFormat::Table)]
-    pub format: CompareFormat,
-    /// Methods to compare, comma-separated [default: all].
-    #[arg(long, value_enum, value_delimiter = ',')]
-    pub methods: Option<Vec<Method>>,
-    /// Regularisation speed ε of rk4's tanh(s/ε) friction [default: 1mm/s].
-    #[arg(long, value_name = "Q", value_parser = speed, allow_hyphen_values = true)]
-    pub epsilon: Option<f64>,
-    /// Write the output to this file (atomically) instead of stdout.
-    #[arg(long, value_name = "FILE")]
-    pub output: Option<std::path::PathBuf>,
-}
-
-#[derive(Args, Debug)]
-pub struct FitArgs {
-    /// Start of the line-fit window (after the impact) [default: first frame after it].
-    #[arg(long, value_name = "T", value_parser = time, allow_hyphen_values = true)]
-    pub from: Option<f64>,
-    /// End of the line-fit window [default: the last frame before v_cm and v_t meet].
-    #[arg(long, value_name = "T", value_parser = time, allow_hyphen_values = true)]
-    pub to: Option<f64>,
-    /// What the model fit may change, comma-separated [default: mu].
-    #[arg(long, value_enum, value_delimiter = ',')]
-    pub free: Option<Vec<crate::study::fit::Free>>,
-    /// Output: a table, JSON, or an SVG figure (data, fitted model, residuals).
-    #[arg(long, value_enum, default_value_t = FitFormat::Table)]
-    pub format: FitFormat,
-    /// Write the output to this file (atomically) instead of stdout.
-    #[arg(long, value_name = "FILE")]
-    pub output: Option<std::path::PathBuf>,
-}
-
-#[derive(Args, Debug)]
-pub struct SweepArgs {
-    /// First parameter and range, NAME=LO..HI with units (e.g. width=0..5.4cm).
-    #[arg(long, value_name = "NAME=LO..HI", allow_hyphen_values = true)]
-    pub x: String,
-    /// Second parameter and range (e.g. restitution=0.3..1); omit for a 1-D sweep.
-    #[arg(long, value_name = "NAME=LO..HI", allow_hyphen_values = true)]
-    pub y: Option<String>,
-    /// Grid points, NX or NXxNY.
-    #[arg(long, value_name = "NXxNY", default_value = "200x100")]
-    pub grid: String,
-    /// Output: CSV rows in grid order, JSON, or an SVG map.
-    #[arg(long, value_enum, default_value_t = SweepFormat::Csv)]
-    pub format: SweepFormat,
-    /// Write the output to this file (atomically) instead of stdout.
-    #[arg(long, value_name = "FILE")]
-    pub output: Option<std::path::PathBuf>,
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum SweepFormat {
-    Csv,
-    Json,
-    Svg,
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum FitFormat {
-    Table,
-    Json,
-    Svg,
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum CompareFormat {
-    Table,
-    Json,
-    Svg,
-}
-
-#[derive(Args, Debug)]
-pub struct RenderArgs {
-    /// Simulated time to show (e.g. 150ms) [default: the start of the span].
-    #[arg(long, value_name = "T", value_parser = time, allow_hyphen_values = true)]
-    pub at: Option<f64>,
-    /// Screen size, COLSxROWS.
-    #[arg(long, value_name = "COLSxROWS", default_value = "120x40", value_parser = screen_size)]
-    pub size: (u16, u16),
-    /// Keys to press first, by the names the help screen shows (e.g. "down right enter").
-    #[arg(long, value_name = "K", allow_hyphen_values = true)]
-    pub keys: Option<String>,
-}
-
-/// Largest screen `render` draws.
-pub const MAX_SCREEN: u16 = 1000;
-
-fn screen_size(text: &str) -> Result<(u16, u16), String> {
-    let bad = || {
-        format!("'{text}' is not a size, expected COLSxROWS such as 120x40 (1..={MAX_SCREEN} each)")
-    };
-    let (c, r) = text.split_once(['x', 'X']).ok_or_else(bad)?;
-    let c: u16 = c.trim().parse().map_err(|_| bad())?;
-    let r: u16 = r.trim().parse().map_err(|_| bad())?;
-    if c == 0 || r == 0 || c > MAX_SCREEN || r > MAX_SCREEN {
-        return Err(bad());
-    }
-    Ok((c, r))
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum Format {
-    Table,
-    Json,
-    Csv,
-}
-
-fn quantity(text: &str, dim: Dimension) -> Result<f64, String> {
-    parse_quantity(text, dim).map_err(|e| e.to_string())
-}
-fn length(s: &str) -> Result<f64, String> {
-    quantity(s, Dimension::Length)
-}
-fn mass(s: &str) -> Result<f64, String> {
-    quantity(s, Dimension::Mass)
-}
-fn speed(s: &str) -> Result<f64, String> {
-    quantity(s, Dimension::Speed)
-}
-fn time(s: &str) -> Result<f64, String> {
-    quantity(s, Dimension::Time)
-}
-fn ratio(s: &str) -> Result<f64, String> {
-    quantity(s, Dimension::Ratio)
-}
-fn acceleration(s: &str) -> Result<f64, String> {
-    quantity(s, Dimension::Acceleration)
-}
-
-/// Scene options shared by every command that takes a scene.
-#[derive(Args, Debug, Clone, Default)]
-pub struct SceneArgs {
-    /// Start from a built-in preset or a preset file [default: paper-b4.9].
-    #[arg(long, value_name = "NAME|FILE", global = true)]
-    pub preset: Option<String>,
-    /// Ball radius R (e.g. 2.75cm).
-    #[arg(long, value_name = "Q", value_parser = length, allow_hyphen_values = true, global = true)]
-    pub radius: Option<f64>,
-    /// Groove width b, 0 ≤ b < 2R (e.g. 4.9cm).
-    #[arg(long, value_name = "Q", value_parser = length, allow_hyphen_values = true, global = true)]
-    pub width: Option<f64>,
-    /// Mass of both balls (e.g. 167g).
-    #[arg(long, value_name = "Q", value_parser = mass, allow_hyphen_values = true, global = true)]
-    pub mass: Option<f64>,
-    /// Mass of the left ball.
-    #[arg(long, value_name = "Q", value_parser = mass, allow_hyphen_values = true, global = true)]
-    pub mass_left: Option<f64>,
-    /// Mass of the right ball.
-    #[arg(long, value_name = "Q", value_parser = mass, allow_hyphen_values = true, global = true)]
-    pub mass_right: Option<f64>,
-    /// Kinetic friction coefficient μ_k ≥ 0.
-    #[arg(long, value_name = "X", value_parser = ratio, allow_hyphen_values = true, global = true)]
-    pub mu: Option<f64>,
-    /// Speed of both balls toward the impact point just before it (e.g. 60cm/s).
-    #[arg(long, value_name = "Q", value_parser = speed, allow_hyphen_values = true, global = true,
-          conflicts_with = "height")]
-    pub v0: Option<f64>,
-    /// Speed of the left ball toward the impact point.
-    #[arg(long, value_name = "Q", value_parser = speed, allow_hyphen_values = true, global = true,
-          conflicts_with = "height")]
-    pub v0_left: Option<f64>,
-    /// Speed of the right ball toward the impact point.
-    #[arg(long, value_name = "Q", value_parser = speed, allow_hyphen_values = true, global = true,
-          conflicts_with = "height")]
-    pub v0_right: Option<f64>,
-    /// Release height on the run-up instead of v0 (both balls).
-    #[arg(long, value_name = "Q", value_parser = length, allow_hyphen_values = true, global = true)]
-    pub height: Option<f64>,
-    /// Coefficient of restitution e, 0..1 [default: 1].
-    #[arg(long, value_name = "X", value_parser = ratio, allow_hyphen_values = true, global = true)]
-    pub restitution: Option<f64>,
-    /// Rolling-resistance coefficient c_rr ≥ 0 [default: 0].
-    #[arg(long, value_name = "X", value_parser = ratio, allow_hyphen_values = true, global = true)]
-    pub rolling_resistance: Option<f64>,
-    /// Gravity [default: 9.81 m/s²].
-    #[arg(long, value_name = "Q", value_parser = acceleration, allow_hyphen_values = true, global = true)]
-    pub g: Option<f64>,
-    /// Start of the simulated span, ≤ 0 [default: -0.2 s].
-    #[arg(long, value_name = "Q", value_parser = time, allow_hyphen_values = true, global = true)]
-    pub t_start: Option<f64>,
-    /// End of the simulated span [default: the preset's, or past the last event].
-    #[arg(long, value_name = "Q", value_parser = time, allow_hyphen_values = true, global = true)]
-    pub t_end: Option<f64>,
-}
-
-impl SceneArgs {
-    /// The command line as a settings layer.
-    pub fn spec(&self) -> SceneSpec {
-        let mut spec = SceneSpec::default();
-        let given = [
-            (Key::Radius, self.radius),
-            (Key::Width, self.width),
-            (Key::Mass, self.mass),
-            (Key::MassLeft, self.mass_left),
-            (Key::MassRight, self.mass_right),
-            (Key::Mu, self.mu),
-            (Key::V0, self.v0),
-            (Key::V0Left, self.v0_left),
-            (Key::V0Right, self.v0_right),
-            (Key::Height, self.height),
-            (Key::Restitution, self.restitution),
-            (Key::RollingResistance, self.rolling_resistance),
-            (Key::G, self.g),
-            (Key::TStart, self.t_start),
-            (Key::TEnd, self.t_end),
-        ];
-        for (key, value) in given {
-            if let Some(v) = value {
-                spec.set(key, v);
-            }
-        }
-        spec
-    }
-
-    /// The preset these options start from, and the scene they make.
-    pub fn resolve(&self) -> Result<(Preset, Scene, Span), CliError> {
-        let preset = Preset::load(self.preset.as_deref().unwrap_or(preset::DEFAULT))
-            .map_err(|e| CliError::Invalid(e.to_string()))?;
-        let (scene, span) = preset
-            .spec
-            .over(&self.spec())
-            .resolve()
-            .map_err(|e| CliError::Invalid(e.to_string()))?;
-        Ok((preset, scene, span))
-    }
-}
 
 /// A failure the user can act on: printed as one `error:` line, exit status 2.
 #[derive(Debug, thiserror::Error)]
@@ -371,14 +65,19 @@ pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
     }
 }
 
-/// The app on the scene the options describe, with `--data` replacing the preset's
+/// The lab on the scene the options describe, with `--data` replacing the preset's
 /// measured series.
-pub fn app(scene_args: &SceneArgs, data: &DataArgs) -> Result<App, CliError> {
+pub fn lab(scene_args: &SceneArgs, data: &DataArgs) -> Result<Lab, CliError> {
     let (mut preset, scene, span) = scene_args.resolve()?;
     if data.data.is_some() {
         preset.measured = Some(fit::measured(&preset, data)?);
     }
-    Ok(App::new(preset, scene, span))
+    Ok(Lab::new(preset, scene, span))
+}
+
+/// The app on that lab, with the user's presets.
+pub fn app(scene_args: &SceneArgs, data: &DataArgs) -> Result<App, CliError> {
+    Ok(App::new(lab(scene_args, data)?, Library::user()))
 }
 
 /// `render`: the app's screen after `--keys`, at `--at`, as text.
@@ -388,14 +87,27 @@ pub fn render(
     args: &RenderArgs,
     ascii: bool,
 ) -> Result<String, CliError> {
-    let mut app = app(scene_args, data)?;
+    render_with(scene_args, data, args, ascii, Library::user())
+}
+
+/// [`render`] with the presets of `library` (tests use a folder of their own).
+pub fn render_with(
+    scene_args: &SceneArgs,
+    data: &DataArgs,
+    args: &RenderArgs,
+    ascii: bool,
+    library: Library,
+) -> Result<String, CliError> {
+    let mut app = App::new(lab(scene_args, data)?, library);
     let keys = match &args.keys {
         Some(script) => tui::keys::parse_script(script).map_err(CliError::Invalid)?,
         None => Vec::new(),
     };
     tui::replay(&mut app, &keys);
+    // Headless output waits for every analysis the keys asked for: same input, same bytes.
+    app.lab.wait();
     if let Some(at) = args.at {
-        let (lo, hi) = (app.solution.t_start, app.solution.t_end);
+        let (lo, hi) = (app.lab.solution.t_start, app.lab.solution.t_end);
         if !(lo..=hi).contains(&at) {
             return Err(CliError::Invalid(format!(
                 "--at {} is outside the simulated span, allowed {} … {}",

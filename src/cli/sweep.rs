@@ -48,7 +48,7 @@ struct SweepJson<'a> {
 
 pub fn run(scene_args: &SceneArgs, args: &SweepArgs) -> Result<String, CliError> {
     let (preset, _, _) = scene_args.resolve()?;
-    let base = preset.spec.over(&scene_args.spec());
+    let base = preset.spec.over(&scene_args.values);
     let (nx, ny) = grid(&args.grid, args.y.is_some())?;
     let x = sweep::parse_axis(&args.x, nx).map_err(|e| CliError::Invalid(format!("--x {e}")))?;
     let y = args

@@ -1,27 +1,19 @@
-//! The one table of scene parameters (name, symbol, unit, range, steps, flag, label)
-//! and the layers of settings (defaults, preset, command line) it reads: text and
-//! settings in, a checked SI [`Scene`] out.
+//! The one table of scene parameters — name, flag, symbol, unit, physical range, steps,
+//! help and label — and the layers of settings (defaults, preset, command line) that
+//! are read through it: settings in, a checked SI [`Scene`] out.
+//!
+//! The command line's scene options (`cli::args`), preset reading and saving
+//! (`input::preset`), validation messages, the TUI's parameter rows and `--help` all
+//! come from [`PARAMS`]. Adding a parameter is one row here, one line in
+//! [`SceneSpec::resolve`], and its physics.
 
 use crate::input::units::{Dimension, show};
 use crate::physics::closed_form;
+use crate::physics::derived::Derived;
 use crate::physics::scene::{Ball, Scene, Span};
 
-/// Why a scene is not valid. Each message names the value and what is allowed.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-pub enum SceneError {
-    #[error("{name} = {value} is out of range, allowed {allowed}")]
-    OutOfRange {
-        name: &'static str,
-        value: String,
-        allowed: String,
-    },
-    #[error("{0}")]
-    Other(String),
-}
-
-/// A setting that a layer may give: one entry of the table shared by the command line
-/// (`--mass-left`) and preset files (`mass_left`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// A setting that a layer may give.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Key {
     Radius,
     Width,
@@ -40,203 +32,451 @@ pub enum Key {
     TEnd,
 }
 
-impl Key {
-    pub const ALL: [Key; 15] = [
-        Key::Radius,
-        Key::Width,
-        Key::Mass,
-        Key::MassLeft,
-        Key::MassRight,
-        Key::Mu,
-        Key::V0,
-        Key::V0Left,
-        Key::V0Right,
-        Key::Height,
-        Key::Restitution,
-        Key::RollingResistance,
-        Key::G,
-        Key::TStart,
-        Key::TEnd,
-    ];
+/// The physical range of a parameter, SI. Bounds are inclusive unless `open`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Range {
+    pub lo: f64,
+    pub hi: f64,
+    pub lo_open: bool,
+    /// Readable form for messages and `--help`, in the units a lab uses.
+    pub text: &'static str,
+}
 
-    /// The name in preset files; the command-line flag is the same with `-` for `_`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Key::Radius => "radius",
-            Key::Width => "width",
-            Key::Mass => "mass",
-            Key::MassLeft => "mass_left",
-            Key::MassRight => "mass_right",
-            Key::Mu => "mu",
-            Key::V0 => "v0",
-            Key::V0Left => "v0_left",
-            Key::V0Right => "v0_right",
-            Key::Height => "height",
-            Key::Restitution => "restitution",
-            Key::RollingResistance => "rolling_resistance",
-            Key::G => "g",
-            Key::TStart => "t_start",
-            Key::TEnd => "t_end",
-        }
-    }
-
-    pub fn dimension(self) -> Dimension {
-        match self {
-            Key::Radius | Key::Width | Key::Height => Dimension::Length,
-            Key::Mass | Key::MassLeft | Key::MassRight => Dimension::Mass,
-            Key::V0 | Key::V0Left | Key::V0Right => Dimension::Speed,
-            Key::Mu | Key::Restitution | Key::RollingResistance => Dimension::Ratio,
-            Key::G => Dimension::Acceleration,
-            Key::TStart | Key::TEnd => Dimension::Time,
-        }
-    }
-
-    pub fn from_name(name: &str) -> Option<Key> {
-        Key::ALL.into_iter().find(|k| k.name() == name)
+impl Range {
+    pub fn contains(&self, v: f64) -> bool {
+        v.is_finite()
+            && v <= self.hi
+            && if self.lo_open {
+                v > self.lo
+            } else {
+                v >= self.lo
+            }
     }
 }
 
-/// One layer of settings (built-in defaults, a preset, the command line), SI units.
-/// Later layers override earlier ones with [`SceneSpec::over`].
+/// Steps of ←/→ (fine) and Shift+←/→ (coarse) in the app, SI.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Steps {
+    pub fine: f64,
+    pub coarse: f64,
+}
+
+/// One scene parameter: everything every front end needs to know about it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Param {
+    pub key: Key,
+    /// Name in preset files; the flag is `--` and the name with `-` for `_`.
+    pub name: &'static str,
+    pub flag: &'static str,
+    /// What messages call it.
+    pub symbol: &'static str,
+    /// The app's row label (ASCII; `mu` is drawn as μ where the screen can).
+    pub label: &'static str,
+    pub dim: Dimension,
+    pub range: Range,
+    /// The keys this one sets (`mass` sets both masses).
+    pub sets: &'static [Key],
+    /// Steps in the app; `None`: not a row of the app's parameter panel.
+    pub steps: Option<Steps>,
+    pub help: &'static str,
+}
+
+const fn range(lo: f64, hi: f64, lo_open: bool, text: &'static str) -> Range {
+    Range {
+        lo,
+        hi,
+        lo_open,
+        text,
+    }
+}
+
+const MASS: Range = range(1e-6, 1000.0, false, "1 mg ≤ m ≤ 1000 kg");
+const SPEED: Range = range(-100.0, 100.0, false, "-100 m/s ≤ v0 ≤ 100 m/s");
+const MASS_STEPS: Option<Steps> = Some(Steps {
+    fine: 0.001,
+    coarse: 0.01,
+});
+const SPEED_STEPS: Option<Steps> = Some(Steps {
+    fine: 0.01,
+    coarse: 0.1,
+});
+
+/// Every scene parameter, in the order of `--help`, preset files and the app's panel.
+pub const PARAMS: [Param; 15] = [
+    Param {
+        key: Key::Radius,
+        name: "radius",
+        flag: "radius",
+        symbol: "radius R",
+        label: "R",
+        dim: Dimension::Length,
+        range: range(1e-4, 10.0, false, "0.1 mm ≤ R ≤ 10 m"),
+        sets: &[Key::Radius],
+        steps: Some(Steps {
+            fine: 0.0005,
+            coarse: 0.005,
+        }),
+        help: "Ball radius R (e.g. 2.75cm)",
+    },
+    Param {
+        key: Key::Width,
+        name: "width",
+        flag: "width",
+        symbol: "groove width b",
+        label: "b",
+        dim: Dimension::Length,
+        // The upper end, 2R, depends on R: checked in `resolve`.
+        range: range(0.0, 20.0, false, "0 ≤ b < 2R"),
+        sets: &[Key::Width],
+        steps: Some(Steps {
+            fine: 0.0005,
+            coarse: 0.005,
+        }),
+        help: "Groove width b, 0 ≤ b < 2R (e.g. 4.9cm)",
+    },
+    Param {
+        key: Key::Mass,
+        name: "mass",
+        flag: "mass",
+        symbol: "mass",
+        label: "m",
+        dim: Dimension::Mass,
+        range: MASS,
+        sets: &[Key::MassLeft, Key::MassRight],
+        steps: None,
+        help: "Mass of both balls (e.g. 167g)",
+    },
+    Param {
+        key: Key::MassLeft,
+        name: "mass_left",
+        flag: "mass-left",
+        symbol: "left mass",
+        label: "m left",
+        dim: Dimension::Mass,
+        range: MASS,
+        sets: &[Key::MassLeft],
+        steps: MASS_STEPS,
+        help: "Mass of the left ball",
+    },
+    Param {
+        key: Key::MassRight,
+        name: "mass_right",
+        flag: "mass-right",
+        symbol: "right mass",
+        label: "m right",
+        dim: Dimension::Mass,
+        range: MASS,
+        sets: &[Key::MassRight],
+        steps: MASS_STEPS,
+        help: "Mass of the right ball",
+    },
+    Param {
+        key: Key::Mu,
+        name: "mu",
+        flag: "mu",
+        symbol: "μ_k",
+        label: "mu_k",
+        dim: Dimension::Ratio,
+        range: range(0.0, 10.0, false, "0 ≤ μ_k ≤ 10"),
+        sets: &[Key::Mu],
+        steps: Some(Steps {
+            fine: 0.01,
+            coarse: 0.05,
+        }),
+        help: "Kinetic friction coefficient μ_k, 0 ≤ μ_k ≤ 10",
+    },
+    Param {
+        key: Key::V0,
+        name: "v0",
+        flag: "v0",
+        symbol: "v0",
+        label: "v0",
+        dim: Dimension::Speed,
+        range: SPEED,
+        sets: &[Key::V0Left, Key::V0Right],
+        steps: None,
+        help: "Speed of both balls toward the impact point just before it (e.g. 60cm/s)",
+    },
+    Param {
+        key: Key::V0Left,
+        name: "v0_left",
+        flag: "v0-left",
+        symbol: "left v0",
+        label: "v0 left",
+        dim: Dimension::Speed,
+        range: SPEED,
+        sets: &[Key::V0Left],
+        steps: SPEED_STEPS,
+        help: "Speed of the left ball toward the impact point",
+    },
+    Param {
+        key: Key::V0Right,
+        name: "v0_right",
+        flag: "v0-right",
+        symbol: "right v0",
+        label: "v0 right",
+        dim: Dimension::Speed,
+        range: SPEED,
+        sets: &[Key::V0Right],
+        steps: SPEED_STEPS,
+        help: "Speed of the right ball toward the impact point",
+    },
+    Param {
+        key: Key::Height,
+        name: "height",
+        flag: "height",
+        symbol: "release height h",
+        label: "h (both)",
+        dim: Dimension::Length,
+        range: range(0.0, 500.0, false, "0 ≤ h ≤ 500 m"),
+        sets: &[Key::Height],
+        steps: Some(Steps {
+            fine: 0.002,
+            coarse: 0.02,
+        }),
+        help: "Release height on the run-up instead of v0 (both balls)",
+    },
+    Param {
+        key: Key::Restitution,
+        name: "restitution",
+        flag: "restitution",
+        symbol: "restitution e",
+        label: "e",
+        dim: Dimension::Ratio,
+        range: range(0.0, 1.0, false, "0 ≤ e ≤ 1"),
+        sets: &[Key::Restitution],
+        steps: Some(Steps {
+            fine: 0.01,
+            coarse: 0.1,
+        }),
+        help: "Coefficient of restitution e, 0 ≤ e ≤ 1 [default: 1]",
+    },
+    Param {
+        key: Key::RollingResistance,
+        name: "rolling_resistance",
+        flag: "rolling-resistance",
+        symbol: "rolling resistance c_rr",
+        label: "c_rr",
+        dim: Dimension::Ratio,
+        range: range(0.0, 1.0, false, "0 ≤ c_rr ≤ 1"),
+        sets: &[Key::RollingResistance],
+        steps: Some(Steps {
+            fine: 0.001,
+            coarse: 0.01,
+        }),
+        help: "Rolling-resistance coefficient c_rr, 0 ≤ c_rr ≤ 1 [default: 0]",
+    },
+    Param {
+        key: Key::G,
+        name: "g",
+        flag: "g",
+        symbol: "g",
+        label: "g",
+        dim: Dimension::Acceleration,
+        range: range(0.01, 1000.0, false, "0.01 m/s² ≤ g ≤ 1000 m/s²"),
+        sets: &[Key::G],
+        steps: None,
+        help: "Gravity [default: 9.81 m/s²]",
+    },
+    Param {
+        key: Key::TStart,
+        name: "t_start",
+        flag: "t-start",
+        symbol: "t_start",
+        label: "t start",
+        dim: Dimension::Time,
+        range: range(
+            -1000.0,
+            0.0,
+            false,
+            "-1000 s ≤ t_start ≤ 0 s (the first impact is at t = 0)",
+        ),
+        sets: &[Key::TStart],
+        steps: None,
+        help: "Start of the simulated span, -1000 s ≤ t_start ≤ 0 [default: -0.2 s]",
+    },
+    Param {
+        key: Key::TEnd,
+        name: "t_end",
+        flag: "t-end",
+        symbol: "t_end",
+        label: "t end",
+        dim: Dimension::Time,
+        // The lower end, t_start, depends on the span: checked in `resolve`.
+        range: range(-1000.0, 1e6, true, "t_start < t_end ≤ 1e6 s"),
+        sets: &[Key::TEnd],
+        steps: None,
+        help: "End of the simulated span, ≤ 1e6 s [default: the preset's, or a little past the last event]",
+    },
+];
+
+impl Key {
+    /// Every key, in the table's order.
+    pub const ALL: [Key; 15] = {
+        let mut keys = [Key::Radius; 15];
+        let mut i = 0;
+        while i < 15 {
+            keys[i] = PARAMS[i].key;
+            i += 1;
+        }
+        keys
+    };
+
+    /// This key's row of the table.
+    pub fn param(self) -> &'static Param {
+        &PARAMS[self as usize]
+    }
+
+    /// The name in preset files.
+    pub fn name(self) -> &'static str {
+        self.param().name
+    }
+
+    pub fn dimension(self) -> Dimension {
+        self.param().dim
+    }
+
+    pub fn from_name(name: &str) -> Option<Key> {
+        PARAMS.iter().find(|p| p.name == name).map(|p| p.key)
+    }
+
+    fn is_speed(self) -> bool {
+        matches!(self, Key::V0 | Key::V0Left | Key::V0Right)
+    }
+}
+
+/// Why a scene is not valid. Each message names the value and what is allowed.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum SceneError {
+    #[error("{name} = {value} is out of range, allowed {allowed}")]
+    OutOfRange {
+        name: &'static str,
+        value: String,
+        allowed: String,
+    },
+    #[error("{0}")]
+    Other(String),
+}
+
+/// One layer of settings (built-in defaults, a preset, the command line, the app), SI
+/// units, one optional value per key. Later layers override earlier ones with
+/// [`SceneSpec::over`].
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct SceneSpec {
-    pub radius: Option<f64>,
-    pub width: Option<f64>,
-    pub mass_left: Option<f64>,
-    pub mass_right: Option<f64>,
-    pub mu: Option<f64>,
-    pub v0_left: Option<f64>,
-    pub v0_right: Option<f64>,
-    /// Release height on the run-up; replaces both v0 when set on a higher layer.
-    pub height: Option<f64>,
-    pub restitution: Option<f64>,
-    pub rolling_resistance: Option<f64>,
-    pub g: Option<f64>,
-    pub t_start: Option<f64>,
-    pub t_end: Option<f64>,
+    values: [Option<f64>; 15],
 }
 
 /// Standard gravity used when nothing else is said, m/s².
 pub const STANDARD_GRAVITY: f64 = 9.81;
 
 impl SceneSpec {
-    /// Sets one key (already in SI units).
+    /// The value this layer gives for `key`, SI.
+    pub fn get(&self, key: Key) -> Option<f64> {
+        self.values[key as usize]
+    }
+
+    /// Sets one key (already in SI units); `mass` and `v0` set both balls'. A speed
+    /// drops a release height of the same layer and a height drops speeds: the run-up
+    /// replaces v0.
     pub fn set(&mut self, key: Key, value: f64) {
-        match key {
-            Key::Radius => self.radius = Some(value),
-            Key::Width => self.width = Some(value),
-            Key::Mass => {
-                self.mass_left = Some(value);
-                self.mass_right = Some(value);
-            }
-            Key::MassLeft => self.mass_left = Some(value),
-            Key::MassRight => self.mass_right = Some(value),
-            Key::Mu => self.mu = Some(value),
-            Key::V0 => {
-                self.v0_left = Some(value);
-                self.v0_right = Some(value);
-            }
-            Key::V0Left => self.v0_left = Some(value),
-            Key::V0Right => self.v0_right = Some(value),
-            Key::Height => self.height = Some(value),
-            Key::Restitution => self.restitution = Some(value),
-            Key::RollingResistance => self.rolling_resistance = Some(value),
-            Key::G => self.g = Some(value),
-            Key::TStart => self.t_start = Some(value),
-            Key::TEnd => self.t_end = Some(value),
+        // −0 is 0: a sign on zero must not reach the physics (e = −0 gave b* = ∞).
+        let value = value + 0.0;
+        if key.is_speed() {
+            self.values[Key::Height as usize] = None;
+        }
+        if key == Key::Height {
+            self.values[Key::V0Left as usize] = None;
+            self.values[Key::V0Right as usize] = None;
+        }
+        for &k in key.param().sets {
+            self.values[k as usize] = Some(value);
         }
     }
 
-    /// `upper` over `self`: every value `upper` gives wins. A speed given on the upper
-    /// layer drops a release height from below, and a height drops speeds from below.
+    /// Builder form of [`SceneSpec::set`].
+    pub fn with(mut self, key: Key, value: f64) -> SceneSpec {
+        self.set(key, value);
+        self
+    }
+
+    /// Every value this layer gives, in table order.
+    pub fn given(&self) -> impl Iterator<Item = (Key, f64)> + '_ {
+        Key::ALL
+            .into_iter()
+            .filter_map(|k| self.get(k).map(|v| (k, v)))
+    }
+
+    /// `upper` over `self`: every value `upper` gives wins (through [`SceneSpec::set`],
+    /// so a speed on the upper layer drops a release height from below and the other
+    /// way round).
     pub fn over(&self, upper: &SceneSpec) -> SceneSpec {
         let mut merged = self.clone();
-        if upper.height.is_some() {
-            merged.v0_left = None;
-            merged.v0_right = None;
+        for (k, v) in upper.given() {
+            merged.set(k, v);
         }
-        if upper.v0_left.is_some() || upper.v0_right.is_some() {
-            merged.height = None;
-        }
-        macro_rules! take {
-            ($($f:ident),*) => { $( if upper.$f.is_some() { merged.$f = upper.$f; } )* };
-        }
-        take!(
-            radius,
-            width,
-            mass_left,
-            mass_right,
-            mu,
-            v0_left,
-            v0_right,
-            height,
-            restitution,
-            rolling_resistance,
-            g,
-            t_start,
-            t_end
-        );
         merged
+    }
+
+    /// The complete layer of a scene and span: what an app or a saved preset holds.
+    pub fn of(scene: &Scene, span: &Span) -> SceneSpec {
+        let mut spec = SceneSpec::default();
+        for (k, v) in [
+            (Key::Radius, scene.radius),
+            (Key::Width, scene.width),
+            (Key::MassLeft, scene.left.mass),
+            (Key::MassRight, scene.right.mass),
+            (Key::Mu, scene.mu),
+            (Key::V0Left, scene.left.v0),
+            (Key::V0Right, scene.right.v0),
+            (Key::Restitution, scene.restitution),
+            (Key::RollingResistance, scene.rolling_resistance),
+            (Key::G, scene.g),
+            (Key::TStart, span.t_start),
+        ] {
+            spec.set(k, v);
+        }
+        if let Some(t_end) = span.t_end {
+            spec.set(Key::TEnd, t_end);
+        }
+        spec
     }
 
     /// Checks every value and builds the scene and time span.
     pub fn resolve(&self) -> Result<(Scene, Span), SceneError> {
-        let need = |v: Option<f64>, name: &'static str| {
-            v.ok_or_else(|| SceneError::Other(format!("{name} is not set, give it as an option")))
+        let value = |key: Key| -> Result<f64, SceneError> {
+            let p = key.param();
+            let v = self.get(key).ok_or_else(|| {
+                SceneError::Other(format!(
+                    "{} is not set, give it with --{} or in the preset",
+                    p.symbol, p.flag
+                ))
+            })?;
+            in_range(p, v)
         };
-        let radius = need(self.radius, "radius")?;
-        check("radius R", radius, Dimension::Length, radius > 0.0, || {
-            "R > 0".into()
+        let default = |key: Key, v: f64| self.get(key).map_or(Ok(v), |_| value(key));
+        let radius = value(Key::Radius)?;
+        let width = value(Key::Width)?;
+        check(Key::Width.param(), width, width < 2.0 * radius, || {
+            format!("0 ≤ b < 2R = {}", show(2.0 * radius, Dimension::Length))
         })?;
-        let width = need(self.width, "groove width")?;
-        check(
-            "groove width b",
-            width,
-            Dimension::Length,
-            width >= 0.0 && width < 2.0 * radius,
-            || format!("0 ≤ b < 2R = {}", show(2.0 * radius, Dimension::Length)),
-        )?;
-        let mu = need(self.mu, "friction coefficient mu")?;
-        check("μ_k", mu, Dimension::Ratio, mu >= 0.0, || "μ_k ≥ 0".into())?;
-        let g = self.g.unwrap_or(STANDARD_GRAVITY);
-        check("g", g, Dimension::Acceleration, g > 0.0, || "g > 0".into())?;
-        let restitution = self.restitution.unwrap_or(1.0);
-        check(
-            "restitution e",
-            restitution,
-            Dimension::Ratio,
-            (0.0..=1.0).contains(&restitution),
-            || "0 ≤ e ≤ 1".into(),
-        )?;
-        let rolling_resistance = self.rolling_resistance.unwrap_or(0.0);
-        check(
-            "rolling resistance c_rr",
-            rolling_resistance,
-            Dimension::Ratio,
-            rolling_resistance >= 0.0,
-            || "c_rr ≥ 0".into(),
-        )?;
-        let mass_left = need(self.mass_left, "mass")?;
-        let mass_right = need(self.mass_right, "mass")?;
-        for (name, m) in [("left mass", mass_left), ("right mass", mass_right)] {
-            check(name, m, Dimension::Mass, m > 0.0, || "m > 0".into())?;
-        }
+        let mu = value(Key::Mu)?;
+        let g = default(Key::G, STANDARD_GRAVITY)?;
+        let restitution = default(Key::Restitution, 1.0)?;
+        let rolling_resistance = default(Key::RollingResistance, 0.0)?;
+        let mass_left = value(Key::MassLeft)?;
+        let mass_right = value(Key::MassRight)?;
         let k = closed_form::contact_ratio(radius, width);
-        let (v0_left, v0_right) = match self.height {
-            Some(h) => {
-                check("release height h", h, Dimension::Length, h >= 0.0, || {
-                    "h ≥ 0".into()
+        let (v0_left, v0_right) = match self.get(Key::Height) {
+            Some(_) => {
+                let v = closed_form::release_speed(value(Key::Height)?, k, g);
+                let p = Key::V0.param();
+                check(p, v, p.range.contains(v), || {
+                    format!("{} (the run-up from this height is too fast)", p.range.text)
                 })?;
-                let v = closed_form::release_speed(h, k, g);
                 (v, v)
             }
-            None => (need(self.v0_left, "v0")?, need(self.v0_right, "v0")?),
+            None => (value(Key::V0Left)?, value(Key::V0Right)?),
         };
-        for (name, v) in [("left v0", v0_left), ("right v0", v0_right)] {
-            check(name, v, Dimension::Speed, v.is_finite(), || {
-                "a finite speed".into()
-            })?;
-        }
         if v0_left + v0_right < 0.0 {
             return Err(SceneError::OutOfRange {
                 name: "closing speed v0_left + v0_right",
@@ -244,12 +484,10 @@ impl SceneSpec {
                 allowed: "≥ 0 m/s (the balls meet at t = 0)".into(),
             });
         }
-        let t_start = self.t_start.unwrap_or(Span::default().t_start);
-        check("t_start", t_start, Dimension::Time, t_start <= 0.0, || {
-            "t_start ≤ 0 s (the first impact is at t = 0)".into()
-        })?;
-        if let Some(t_end) = self.t_end {
-            check("t_end", t_end, Dimension::Time, t_end > t_start, || {
+        let t_start = default(Key::TStart, Span::default().t_start)?;
+        if self.get(Key::TEnd).is_some() {
+            let t_end = value(Key::TEnd)?;
+            check(Key::TEnd.param(), t_end, t_end > t_start, || {
                 format!("t_end > t_start = {}", show(t_start, Dimension::Time))
             })?;
         }
@@ -269,22 +507,27 @@ impl SceneSpec {
                 v0: v0_right,
             },
         };
+        finite_derived(&scene)?;
         Ok((
             scene,
             Span {
                 t_start,
-                t_end: self.t_end,
+                t_end: self.get(Key::TEnd),
             },
         ))
     }
 }
 
+/// `v` if it lies in the parameter's physical range.
+fn in_range(p: &Param, v: f64) -> Result<f64, SceneError> {
+    check(p, v, p.range.contains(v), || p.range.text.to_string()).map(|()| v)
+}
+
 /// `Ok` if `ok` and `value` is finite; the message is only built for an error (this
 /// runs for every point of a sweep).
 fn check(
-    name: &'static str,
+    p: &Param,
     value: f64,
-    dim: Dimension,
     ok: bool,
     allowed: impl FnOnce() -> String,
 ) -> Result<(), SceneError> {
@@ -292,9 +535,72 @@ fn check(
         Ok(())
     } else {
         Err(SceneError::OutOfRange {
-            name,
-            value: show(value, dim).to_string(),
+            name: p.symbol,
+            value: show(value, p.dim).to_string(),
             allowed: allowed(),
         })
+    }
+}
+
+/// Every number the front ends derive from an accepted scene must be finite; the
+/// ranges above are chosen so that it is, and this says so if a corner slips through.
+fn finite_derived(scene: &Scene) -> Result<(), SceneError> {
+    let d = Derived::of(scene);
+    let f = d.forces;
+    let mut numbers = vec![d.k, d.r, d.d, d.separation_speed, d.release_height];
+    numbers.extend(d.b_star);
+    for v in [
+        f.weight,
+        f.normal_a,
+        f.normal_b,
+        f.friction_a,
+        f.net,
+        f.torque,
+    ] {
+        numbers.extend(v.iter().copied());
+    }
+    if let Some(r) = d.left_after_impact {
+        numbers.extend([r.t_roll, r.v_roll, r.x_roll, r.a_cm, r.a_t]);
+    }
+    if numbers.iter().all(|v| v.is_finite()) {
+        Ok(())
+    } else {
+        Err(SceneError::Other(
+            "this combination of values gives numbers too large to compute (an infinite time or force); move a value toward the middle of its range".into(),
+        ))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_table_is_in_key_order_and_flags_follow_names() {
+        for (i, p) in PARAMS.iter().enumerate() {
+            assert_eq!(p.key as usize, i, "{}", p.name);
+            assert_eq!(p.flag, p.name.replace('_', "-"));
+            assert!(p.range.lo < p.range.hi, "{}", p.name);
+        }
+    }
+
+    #[test]
+    fn mass_sets_both_and_a_height_replaces_speeds() {
+        let s = SceneSpec::default().with(Key::Mass, 0.2);
+        assert_eq!(s.get(Key::MassLeft), Some(0.2));
+        assert_eq!(s.get(Key::MassRight), Some(0.2));
+        let lower = SceneSpec::default().with(Key::V0, 1.0);
+        let upper = SceneSpec::default().with(Key::Height, 0.1);
+        let merged = lower.over(&upper);
+        assert_eq!(merged.get(Key::V0Left), None);
+        assert_eq!(merged.get(Key::Height), Some(0.1));
+        let back = merged.over(&SceneSpec::default().with(Key::V0Left, 0.5));
+        assert_eq!(back.get(Key::Height), None);
+    }
+
+    #[test]
+    fn negative_zero_is_zero() {
+        let s = SceneSpec::default().with(Key::Restitution, -0.0);
+        assert!(s.get(Key::Restitution).unwrap().is_sign_positive());
     }
 }

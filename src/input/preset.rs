@@ -153,10 +153,15 @@ impl Preset {
     /// Built-in presets, then the user's (from [`user_dir`]); unreadable user files are
     /// returned as errors beside the good ones.
     pub fn all() -> (Vec<Preset>, Vec<PresetError>) {
+        Preset::all_in(user_dir().as_deref())
+    }
+
+    /// Built-in presets, then those in `dir` (if any).
+    pub fn all_in(dir: Option<&Path>) -> (Vec<Preset>, Vec<PresetError>) {
         let mut presets = Preset::built_in();
         let mut errors = Vec::new();
-        if let Some(dir) = user_dir()
-            && let Ok(entries) = std::fs::read_dir(&dir)
+        if let Some(dir) = dir
+            && let Ok(entries) = std::fs::read_dir(dir)
         {
             let mut paths: Vec<PathBuf> = entries
                 .filter_map(|e| e.ok().map(|e| e.path()))
@@ -194,6 +199,35 @@ fn check_measured(m: MeasuredFile) -> Result<Measured, String> {
         v_cm: m.v_cm,
         v_t: m.v_t,
     })
+}
+
+/// A preset file's text for `spec` (SI numbers), written by the toml serializer so
+/// that any name or description comes out quoted right.
+pub fn to_toml(
+    name: &str,
+    description: &str,
+    spec: &SceneSpec,
+    measured: Option<&Measured>,
+) -> Result<String, String> {
+    #[derive(serde::Serialize)]
+    struct Out<'a> {
+        name: &'a str,
+        description: &'a str,
+        scene: toml::Table,
+        #[serde(skip_serializing_if = "Option::is_none")]
+        measured: Option<&'a Measured>,
+    }
+    let scene = spec
+        .given()
+        .map(|(k, v)| (k.name().to_string(), toml::Value::Float(v)))
+        .collect();
+    toml::to_string(&Out {
+        name,
+        description,
+        scene,
+        measured,
+    })
+    .map_err(|e| format!("cannot write the preset: {e}"))
 }
 
 /// Where user presets live: `$GROOVELAB_PRESETS`, else
@@ -238,8 +272,8 @@ mod tests {
         let text =
             "name = \"x\"\ndescription = \"d\"\n[scene]\nradius = \"2.75cm\"\nmass = \"167g\"\n";
         let p = Preset::parse(text, "x", Origin::BuiltIn).unwrap();
-        assert_eq!(p.spec.radius, Some(0.0275));
-        assert_eq!(p.spec.mass_right, Some(0.167));
+        assert_eq!(p.spec.get(Key::Radius), Some(0.0275));
+        assert_eq!(p.spec.get(Key::MassRight), Some(0.167));
         let bad = "name = \"x\"\ndescription = \"d\"\n[scene]\nradius = \"2.75kg\"\n";
         assert!(Preset::parse(bad, "x", Origin::BuiltIn).is_err());
     }

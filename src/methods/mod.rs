@@ -23,7 +23,7 @@ use crate::physics::solution::{Event, EventKind, Who};
 pub type Y = [f64; 6];
 
 /// A solution method.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Method {
     /// The event-driven engine (reference).
@@ -57,6 +57,20 @@ impl Method {
             Method::Rk4 => "rk4",
             Method::Rk45 => "rk45",
             Method::Moreau => "moreau",
+        }
+    }
+
+    /// One line on what the method is (`--help`).
+    pub fn description(self) -> &'static str {
+        match self {
+            Method::Exact => "The event-driven engine (reference)",
+            Method::Euler => "Explicit Euler, Coulomb friction sgn(s)",
+            Method::SymplecticEuler => "Semi-implicit (symplectic) Euler, Coulomb friction",
+            Method::Rk4 => "Classical Runge-Kutta 4, friction regularised as tanh(s/ε)",
+            Method::Rk45 => "Adaptive Dormand-Prince 5(4) with dense output and event location",
+            Method::Moreau => {
+                "Moreau-Jean time-stepping (θ = 1/2), impacts and friction set-valued"
+            }
         }
     }
 

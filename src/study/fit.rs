@@ -130,12 +130,23 @@ pub fn line_fit(
 }
 
 /// Which scene values a model fit may change.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, clap::ValueEnum)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum Free {
     Mu,
     V0,
     Restitution,
+}
+
+impl Free {
+    /// The name on the command line and in JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            Free::Mu => "mu",
+            Free::V0 => "v0",
+            Free::Restitution => "restitution",
+        }
+    }
 }
 
 /// The whole-model least-squares fit.

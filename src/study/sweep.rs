@@ -62,12 +62,8 @@ pub enum SweepError {
 /// The scene at grid point (i, j).
 fn spec_at(base: &SceneSpec, x: &Axis, y: Option<&Axis>, i: usize, j: usize) -> SceneSpec {
     let mut spec = base.clone();
-    let mut set = |axis: &Axis, k: usize| {
-        if matches!(axis.key, Key::V0 | Key::V0Left | Key::V0Right) {
-            spec.height = None;
-        }
-        spec.set(axis.key, axis.value(k));
-    };
+    // A swept speed replaces a release height (SceneSpec::set).
+    let mut set = |axis: &Axis, k: usize| spec.set(axis.key, axis.value(k));
     set(x, i);
     if let Some(y) = y {
         set(y, j);

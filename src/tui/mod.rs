@@ -86,6 +86,9 @@ fn event_loop(
         // frame; the time step comes from the clock, not from how fast we drew.
         let timeout = if app.playing {
             frame.saturating_sub(last_tick.elapsed())
+        } else if app.lab.busy() {
+            // An analysis runs on a worker: look for its result (and progress) often.
+            Duration::from_millis(50)
         } else {
             Duration::from_secs(3600)
         };
@@ -127,6 +130,9 @@ fn event_loop(
                 Event::Resize(..) => dirty = true,
                 _ => {}
             }
+        }
+        if app.lab.poll() || app.lab.busy() {
+            dirty = true;
         }
         if app.mouse != mouse {
             mouse = app.mouse;

@@ -8,31 +8,16 @@ use ratatui::style::Style;
 use ratatui::widgets::Widget;
 
 use super::block;
+use crate::lab::jobs::State;
 use crate::physics::model::BallState;
-use crate::physics::solution::{EventKind, Who};
+use crate::physics::solution::{EventKind, Snapshot, Who};
 use crate::tui::app::{App, ChartBall};
 use crate::tui::plot::{Draw, Plot, Series, VLine, nice_ticks};
 use crate::tui::theme::Theme;
 
-/// Sample times: about two per column, plus both sides of every event so jumps and
-/// kinks are drawn where they are.
-fn sample_times(app: &App, columns: usize) -> Vec<f64> {
-    let sol = &app.solution;
-    let n = 4 * columns.max(1);
-    let dt = (sol.t_end - sol.t_start) / n as f64;
-    let mut ts: Vec<f64> = (0..=n).map(|i| sol.t_start + i as f64 * dt).collect();
-    for e in sol.visible_events() {
-        ts.push(e.t);
-        ts.push(e.t - 1e-12 * (1.0 + e.t.abs()));
-    }
-    ts.retain(|t| *t >= sol.t_start && *t <= sol.t_end);
-    ts.sort_by(f64::total_cmp);
-    ts.dedup();
-    ts
-}
-
 fn event_lines(app: &App, balls: &[Who], theme: &Theme) -> Vec<VLine> {
-    app.solution
+    app.lab
+        .solution
         .visible_events()
         .filter(|e| e.ball == Who::Both || balls.contains(&e.ball))
         .filter_map(|e| {
@@ -68,14 +53,14 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
 
 fn series_of(
     name: &str,
-    times: &[f64],
-    value: impl Fn(f64) -> f64,
+    samples: &[Snapshot],
+    value: impl Fn(&Snapshot) -> f64,
     style: Style,
     glyph: &'static str,
 ) -> Series {
     Series {
         name: name.to_string(),
-        points: times.iter().map(|&t| (t, value(t))).collect(),
+        points: samples.iter().map(|s| (s.t, value(s))).collect(),
         style,
         glyph,
         draw: Draw::Line,
@@ -94,15 +79,11 @@ fn bounds(series: &[Series], rows: usize) -> ((f64, f64), Vec<f64>) {
 }
 
 fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
-    let sol = &app.solution;
+    let sol = &app.lab.solution;
     let columns = usize::from(area.width.saturating_sub(10));
-    let times = sample_times(app, columns);
-    let ball = |i: usize| {
-        move |t: f64| -> BallState {
-            let s = sol.at(t);
-            if i == 0 { s.left } else { s.right }
-        }
-    };
+    let samples = app.lab.samples(columns);
+    let ball =
+        |i: usize| move |s: &Snapshot| -> BallState { if i == 0 { s.left } else { s.right } };
     let (balls, which): (Vec<usize>, &str) = match app.chart_ball {
         ChartBall::Left => (vec![0], "left ball"),
         ChartBall::Right => (vec![1], "right ball"),
@@ -123,15 +104,25 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
             }
         };
         let b = ball(i);
-        series.push(series_of(&tag("v_cm"), &times, |t| b(t).v, style, "*"));
+        series.push(series_of(&tag("v_cm"), &samples, |s| b(s).v, style, "*"));
         let accent = if i == 0 {
             theme.accent
         } else {
             theme.right.patch(theme.dim)
         };
-        series.push(series_of(&tag("v_t"), &times, |t| b(t).u, accent, "+"));
+        series.push(series_of(&tag("v_t"), &samples, |s| b(s).u, accent, "+"));
     }
-    if let Some(o) = &app.overlay {
+    if let State::Computing { done, total } = app.lab.overlay() {
+        let name = app.lab.overlay_choice().map_or("", |(m, _)| m.name());
+        series.push(Series {
+            name: format!("{name} {}", super::progress_text(done, total)),
+            points: Vec::new(),
+            style: theme.measured,
+            glyph: "o",
+            draw: Draw::Line,
+        });
+    }
+    if let State::Ready(o) = app.lab.overlay() {
         // The time-stepping run over the exact curves, so its chatter shows.
         let setting = match (o.row.step, o.row.tolerance) {
             (Some(h), _) => format!("h {h:.0e}"),
@@ -161,7 +152,7 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
             });
         }
     }
-    if let Some(m) = app.measured().filter(|_| balls.contains(&0)) {
+    if let Some(m) = app.lab.measured().filter(|_| balls.contains(&0)) {
         let pts = |v: &[f64]| {
             m.t.iter()
                 .copied()
@@ -185,7 +176,8 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
         });
     }
     let mut vlines = Vec::new();
-    if let (true, Some(Ok(f)), Some(m)) = (app.fit_view, &app.fits, app.measured()) {
+    if let (true, State::Ready(Ok(f)), Some(m)) = (app.fit_view, app.lab.fits(), app.lab.measured())
+    {
         // The paper's straight lines over the chosen window.
         let l = &f.line_fit;
         let idx: Vec<usize> = (0..m.t.len())
@@ -234,24 +226,12 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
 }
 
 fn positions(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
-    let sol = &app.solution;
+    let sol = &app.lab.solution;
     let columns = usize::from(area.width.saturating_sub(10));
-    let times = sample_times(app, columns);
+    let samples = app.lab.samples(columns);
     let series = vec![
-        series_of(
-            "x left",
-            &times,
-            |t| sol.at(t).left.x * 100.0,
-            theme.left,
-            "*",
-        ),
-        series_of(
-            "x right",
-            &times,
-            |t| sol.at(t).right.x * 100.0,
-            theme.right,
-            "+",
-        ),
+        series_of("x left", &samples, |s| s.left.x * 100.0, theme.left, "*"),
+        series_of("x right", &samples, |s| s.right.x * 100.0, theme.right, "+"),
     ];
     let rows = usize::from(area.height.saturating_sub(4));
     let ((y0, y1), _) = bounds(&series, rows);

@@ -7,6 +7,7 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Paragraph, Widget, Wrap};
 
 use super::block;
+use crate::lab::jobs::State;
 use crate::study::fit;
 use crate::tui::app::App;
 use crate::tui::theme::Theme;
@@ -18,13 +19,16 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let g = theme.glyphs;
     let label = |s: &str| Span::styled(s.to_string(), theme.dim);
     let value = |s: String| Span::styled(s, theme.text);
-    let lines: Vec<Line> = match &app.fits {
-        None => vec![Line::from(Span::styled(
+    let lines: Vec<Line> = match app.lab.fits() {
+        State::Idle => vec![Line::from(Span::styled(
             "no measured data in this preset (try p: paper-b3.5, -b4.4, -b4.9)",
             theme.error,
         ))],
-        Some(Err(e)) => vec![Line::from(Span::styled(e.clone(), theme.error))],
-        Some(Ok(f)) => {
+        other @ State::Computing { .. } => {
+            return super::computing(&other, "fitting", inner, buf, theme);
+        }
+        State::Ready(Err(e)) => vec![Line::from(Span::styled(e.clone(), theme.error))],
+        State::Ready(Ok(f)) => {
             let l = &f.line_fit;
             let m = &f.model_fit;
             let mut lines = vec![
@@ -58,7 +62,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                     value(format!("{:.4} N m", l.tau_net)),
                 ]),
             ];
-            if let Some(p) = fit::paper_row(app.scene.width) {
+            if let Some(p) = fit::paper_row(app.lab.scene.width) {
                 lines.push(Line::from(vec![
                     label("paper: "),
                     value(format!(

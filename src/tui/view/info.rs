@@ -14,8 +14,8 @@ use crate::tui::theme::Theme;
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let g = theme.glyphs;
-    let d = &app.derived;
-    let sol = &app.solution;
+    let d = &app.lab.derived;
+    let sol = &app.lab.solution;
     let blk = block(" Why ", theme);
     let inner = blk.inner(area);
     blk.render(area, buf);
@@ -88,7 +88,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         value(zeno),
     ]));
     // How far the model is from the measured points, if there are any.
-    if let Some((rms_cm, rms_t)) = app.data_rms {
+    if let Some((rms_cm, rms_t)) = app.lab.data_rms {
         lines.push(Line::from(vec![
             label("data: RMS residual v_cm "),
             value(format!("{rms_cm:.3}")),

@@ -8,7 +8,7 @@ use ratatui::widgets::Widget;
 
 use super::block;
 use crate::physics::closed_form;
-use crate::physics::derived::{Derived, Regime};
+use crate::physics::derived::Regime;
 use crate::tui::app::App;
 use crate::tui::plot::{Draw, Plot, Series, VLine};
 use crate::tui::theme::Theme;
@@ -31,7 +31,7 @@ fn regime_map(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     // Bottom row: legend; left column: e ticks (4 wide).
     let cols = usize::from(inner.width - 5);
     let rows = usize::from(inner.height - 2);
-    let radius = app.scene.radius;
+    let radius = app.lab.scene.radius;
     let glyph = |r: Regime| match (r, g.ascii) {
         (Regime::Depart, _) => ".",
         (Regime::Rest, _) => "=",
@@ -44,6 +44,7 @@ fn regime_map(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         Regime::Recollide => theme.accent,
     };
     let b_max = 2.0 * radius * 0.99;
+    let grid = app.lab.regime_grid(cols, rows);
     for rr in 0..rows {
         let e = 1.0 - rr as f64 / (rows - 1).max(1) as f64;
         let label = if rr == 0 || rr == rows - 1 || rr == rows / 2 {
@@ -53,11 +54,7 @@ fn regime_map(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         };
         buf.set_string(inner.x, inner.y + rr as u16, label, theme.dim);
         for c in 0..cols {
-            let b = b_max * c as f64 / (cols - 1).max(1) as f64;
-            let mut scene = app.scene;
-            scene.width = b;
-            scene.restitution = e;
-            let r = Derived::of(&scene).regime;
+            let r = grid[rr * cols + c];
             buf.set_string(
                 inner.x + 5 + c as u16,
                 inner.y + rr as u16,
@@ -67,8 +64,8 @@ fn regime_map(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         }
     }
     // The scene itself.
-    let c = (app.scene.width / b_max * (cols - 1) as f64).round() as u16;
-    let r = ((1.0 - app.scene.restitution) * (rows - 1) as f64).round() as u16;
+    let c = (app.lab.scene.width / b_max * (cols - 1) as f64).round() as u16;
+    let r = ((1.0 - app.lab.scene.restitution) * (rows - 1) as f64).round() as u16;
     if usize::from(c) < cols && usize::from(r) < rows {
         buf.set_string(
             inner.x + 5 + c,
@@ -119,7 +116,7 @@ fn paper_figure(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         ],
         vlines: vec![
             VLine {
-                x: app.scene.width / app.scene.radius,
+                x: app.lab.scene.width / app.lab.scene.radius,
                 label: Some("b".into()),
                 style: theme.cursor,
                 priority: 1,

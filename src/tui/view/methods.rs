@@ -7,6 +7,7 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Paragraph, Widget};
 
 use super::block;
+use crate::lab::jobs::State;
 use crate::methods::Method;
 use crate::study::compare::Status;
 use crate::tui::app::App;
@@ -38,8 +39,9 @@ pub fn render_diagram(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     );
     let inner = blk.inner(area);
     blk.render(area, buf);
-    let Some(rows) = &app.method_rows else {
-        return;
+    let rows = match app.lab.method_rows() {
+        State::Ready(rows) => rows,
+        other => return super::computing(&other, "running every method", inner, buf, theme),
     };
     let point = |r: &crate::study::compare::Row| {
         ((r.steps.max(1) as f64).log10(), r.err_v.max(1e-16).log10())
@@ -96,11 +98,15 @@ pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let blk = block(" Runs (marker, setting, status, err_v) ", theme);
     let inner = blk.inner(area);
     blk.render(area, buf);
-    let Some(rows) = &app.method_rows else {
-        return;
+    let rows = match app.lab.method_rows() {
+        State::Ready(rows) => rows,
+        other => return super::computing(&other, "running every method", inner, buf, theme),
     };
     let mut lines = vec![Line::from(Span::styled(
-        format!("exact: {} segments, error 0", app.solution.segments.len()),
+        format!(
+            "exact: {} segments, error 0",
+            app.lab.solution.segments.len()
+        ),
         theme.title,
     ))];
     for r in rows {

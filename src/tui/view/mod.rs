@@ -18,9 +18,10 @@ use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph, Widget};
 
-use super::app::{App, Mode, Status};
+use super::app::{App, Mode, Status, View};
 use super::keys;
 use super::theme::{Theme, force_ascii};
+use crate::lab::jobs::State;
 
 /// Smallest terminal the layout is made for.
 pub const MIN_SIZE: (u16, u16) = (80, 24);
@@ -89,10 +90,10 @@ pub fn draw(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         Some(p) => {
             params::render(app, p.params, buf, theme);
             scene::render(app, p.scene, buf, theme);
-            if app.map_view {
+            if app.view == View::Map {
                 map::render(app, p.chart, buf, theme);
                 info::render(app, p.info, buf, theme);
-            } else if app.methods_view {
+            } else if app.view == View::Methods {
                 methods::render_diagram(app, p.chart, buf, theme);
                 methods::render_rows(app, p.info, buf, theme);
             } else {
@@ -113,8 +114,31 @@ pub fn draw(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     }
 }
 
+/// "computing… 40 %" (or without a share when the total is unknown).
+pub(crate) fn progress_text(done: usize, total: usize) -> String {
+    match (100 * done.min(total)).checked_div(total) {
+        Some(percent) => format!("computing… {percent} %"),
+        None => "computing…".to_string(),
+    }
+}
+
+/// What a panel shows while its analysis runs: what is being done and how far.
+pub(crate) fn computing<T>(
+    state: &State<'_, T>,
+    what: &str,
+    area: Rect,
+    buf: &mut Buffer,
+    theme: &Theme,
+) {
+    let text = match state {
+        State::Computing { done, total } => format!("{what}: {}", progress_text(*done, *total)),
+        _ => String::new(),
+    };
+    buf.set_stringn(area.x, area.y, text, usize::from(area.width), theme.dim);
+}
+
 fn status(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let right = format!("preset {}", app.preset.name);
+    let right = format!("preset {}", app.lab.preset.name);
     let (text, style) = match (&app.mode, &app.status) {
         (Mode::Edit(_), _) => (
             "type a value with its unit (e.g. 4.4cm), Enter applies, Esc cancels".to_string(),

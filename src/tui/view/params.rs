@@ -8,7 +8,7 @@ use ratatui::widgets::Widget;
 use super::block;
 use crate::input::params::Key;
 use crate::input::units::{Dimension, show, significant};
-use crate::tui::app::{App, Mode, PARAMS};
+use crate::tui::app::{App, Mode, ROWS};
 use crate::tui::theme::Theme;
 
 /// The first parameter shown when the panel at `area` holds fewer rows than there
@@ -17,19 +17,19 @@ fn first_shown(area: Rect, selected: usize) -> usize {
     let rows = usize::from(area.height.saturating_sub(2)).max(1);
     (selected + 1)
         .saturating_sub(rows)
-        .min(PARAMS.len().saturating_sub(rows))
+        .min(ROWS.len().saturating_sub(rows))
 }
 
 /// Which parameter a click at (`x`, `y`) hits.
 pub fn param_at(area: Rect, selected: usize, x: u16, y: u16) -> Option<usize> {
     let inside = x > area.x && x + 1 < area.right() && y > area.y && y + 1 < area.bottom();
     let i = first_shown(area, selected) + y.checked_sub(area.y + 1)? as usize;
-    (inside && i < PARAMS.len()).then_some(i)
+    (inside && i < ROWS.len()).then_some(i)
 }
 
 /// A value in the unit a lab uses for it, with fixed decimals so columns line up.
 fn value_text(app: &App, key: Key) -> String {
-    let v = app.value(key);
+    let v = app.lab.value(key);
     match key.dimension() {
         Dimension::Ratio => significant(v, 4),
         Dimension::Length => format!("{:.2} cm", v * 100.0),
@@ -41,7 +41,7 @@ fn value_text(app: &App, key: Key) -> String {
 
 /// What stands right of a value: context that makes it readable (less when narrow).
 fn note(app: &App, key: Key, narrow: bool) -> String {
-    let d = &app.derived;
+    let d = &app.lab.derived;
     match key {
         Key::Width => {
             let star = d
@@ -50,7 +50,10 @@ fn note(app: &App, key: Key, narrow: bool) -> String {
             if narrow {
                 star
             } else {
-                format!("b/R {:.2} {star}", app.scene.width / app.scene.radius)
+                format!(
+                    "b/R {:.2} {star}",
+                    app.lab.scene.width / app.lab.scene.radius
+                )
             }
         }
         Key::Radius => format!("k {:.3}", d.k),
@@ -66,8 +69,8 @@ fn note(app: &App, key: Key, narrow: bool) -> String {
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let shown = usize::from(area.height.saturating_sub(2));
-    let title = if shown < PARAMS.len() {
-        format!(" Parameters ({}/{}) ", app.selected + 1, PARAMS.len())
+    let title = if shown < ROWS.len() {
+        format!(" Parameters ({}/{}) ", app.selected + 1, ROWS.len())
     } else {
         " Parameters ".to_string()
     };
@@ -76,7 +79,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     blk.render(area, buf);
     let g = theme.glyphs;
     let first = first_shown(area, app.selected);
-    for (i, p) in PARAMS.iter().enumerate().skip(first) {
+    for (i, p) in ROWS.iter().enumerate().skip(first) {
         let y = inner.y + (i - first) as u16;
         if y >= inner.bottom() {
             break;

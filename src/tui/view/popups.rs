@@ -86,8 +86,15 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             );
         }
         Mode::Picker(selected) => {
-            let name_width = app.presets.iter().map(|p| p.name.len()).max().unwrap_or(8);
+            let name_width = app
+                .library
+                .presets
+                .iter()
+                .map(|p| p.name.len())
+                .max()
+                .unwrap_or(8);
             let lines: Vec<Line> = app
+                .library
                 .presets
                 .iter()
                 .enumerate()
@@ -122,7 +129,8 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         }
         Mode::SaveName(text) => {
             let dir = app
-                .preset_dir
+                .library
+                .dir
                 .as_ref()
                 .map_or("(no preset folder)".to_string(), |d| {
                     d.display().to_string()

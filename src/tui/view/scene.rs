@@ -77,7 +77,7 @@ impl Canvas {
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let g = theme.glyphs;
-    let sol = &app.solution;
+    let sol = &app.lab.solution;
     let t = app.t;
     let snap = sol.at(t);
     let seg = sol.segment_at(t);
@@ -109,8 +109,8 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     // Rows: balls, groove, trail ticks, tags.
     let ball_rows = inner.height - 3;
     let groove_y = inner.y + ball_rows;
-    let (lo, hi) = app.extent;
-    let radius = app.scene.radius;
+    let (lo, hi) = app.lab.extent;
+    let radius = app.lab.scene.radius;
     let (sx, sy) = if g.ascii { (1.0, 1.0) } else { (2.0, 4.0) };
     // Columns per metre: fit the range, and keep the ball inside its rows (a cell is
     // about twice as tall as wide).
@@ -181,7 +181,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         }
     }
     // The measured left ball, where its v_cm puts it: a dotted ghost beside the model.
-    if let Some(xg) = app.ghost_x(t) {
+    if let Some(xg) = app.lab.ghost_x(t) {
         let cx = col(xg) * sx;
         let n = ((std::f64::consts::TAU * r_dots) / 3.0).ceil().max(8.0) as usize;
         for k in 0..n {

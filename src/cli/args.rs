@@ -1,0 +1,316 @@
+//! The command line's raw flags (clap): commands, their options, and the scene
+//! options made from the parameter table. Checked values come out of `SceneArgs`.
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+
+use super::CliError;
+use crate::input::params::{Key, PARAMS, SceneSpec};
+use crate::input::preset::{self, Preset};
+use crate::input::units::{Dimension, parse_quantity};
+use crate::methods::Method;
+use crate::physics::scene::{Scene, Span};
+use crate::study::fit::Free;
+
+#[derive(Parser, Debug)]
+#[command(
+    name = "groovelab",
+    version,
+    about = "Two balls colliding in a groove: exact simulation, charts and lab tools",
+    long_about = "Two identical balls roll toward each other in a horizontal groove, collide, and \
+                  then depart, stop, or come back again and again. groovelab solves the motion \
+                  exactly (Gröber & Sniatecki) and shows why."
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Option<Command>,
+    #[command(flatten)]
+    pub scene: SceneArgs,
+    /// Pure 7-bit ASCII drawing (app and render) instead of Unicode.
+    #[arg(long, global = true)]
+    pub ascii: bool,
+    #[command(flatten)]
+    pub data: DataArgs,
+}
+
+/// Measured data from a file, for `fit`, the app and `render`.
+#[derive(Args, Debug, Clone, Default)]
+pub struct DataArgs {
+    /// A CSV of the left ball: columns t, v_cm, v_t found by header (comma or
+    /// semicolon, decimal commas allowed) [default: the preset's series].
+    #[arg(long, value_name = "FILE", global = true)]
+    pub data: Option<std::path::PathBuf>,
+    /// Time unit of the file when its header gives none (e.g. ms) [default: s].
+    #[arg(long, value_name = "UNIT", global = true)]
+    pub time_unit: Option<String>,
+    /// Speed unit of the file when its header gives none (e.g. cm/s) [default: m/s].
+    #[arg(long, value_name = "UNIT", global = true)]
+    pub speed_unit: Option<String>,
+    /// Time of the first impact in the file [default: detected from v_cm].
+    #[arg(long, value_name = "T", value_parser = time, allow_hyphen_values = true, global = true)]
+    pub impact_at: Option<f64>,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// The interactive terminal app (the default).
+    Tui,
+    /// One run of a scene, printed as a table, JSON or CSV.
+    Simulate(SimulateArgs),
+    /// The app's screen at one simulated time, as plain text (headless).
+    Render(RenderArgs),
+    /// Speed against accuracy of the solution methods (work–precision).
+    Compare(CompareArgs),
+    /// Fit the model to measured data (a preset's, or a CSV file).
+    Fit(FitArgs),
+    /// Regime map over one or two scene parameters.
+    Sweep(SweepArgs),
+    /// List the built-in and user presets.
+    Presets,
+}
+
+#[derive(Args, Debug)]
+pub struct SimulateArgs {
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = Format::Table)]
+    pub format: Format,
+    /// Also give states on a uniform time grid with this step (e.g. 10ms).
+    #[arg(long, value_name = "DT", value_parser = time, allow_hyphen_values = true)]
+    pub sample: Option<f64>,
+    /// Solution method (time-stepping methods report the events they detect).
+    #[arg(long, value_enum, default_value_t = Method::Exact)]
+    pub method: Method,
+    /// Step size of a fixed-step method or moreau (e.g. 0.1ms) [default: 0.1 ms].
+    #[arg(long, value_name = "S", value_parser = time, allow_hyphen_values = true)]
+    pub dt: Option<f64>,
+    /// Tolerance of rk45 [default: 1e-6].
+    #[arg(long, value_name = "X", value_parser = ratio, allow_hyphen_values = true)]
+    pub tol: Option<f64>,
+    /// Regularisation speed ε of rk4's tanh(s/ε) friction [default: 1mm/s].
+    #[arg(long, value_name = "Q", value_parser = speed, allow_hyphen_values = true)]
+    pub epsilon: Option<f64>,
+}
+
+#[derive(Args, Debug)]
+pub struct CompareArgs {
+    /// Output: a table, JSON rows, or an SVG work–precision diagram.
+    #[arg(long, value_enum, default_value_t = CompareFormat::Table)]
+    pub format: CompareFormat,
+    /// Methods to compare, comma-separated [default: all].
+    #[arg(long, value_enum, value_delimiter = ',')]
+    pub methods: Option<Vec<Method>>,
+    /// Regularisation speed ε of rk4's tanh(s/ε) friction [default: 1mm/s].
+    #[arg(long, value_name = "Q", value_parser = speed, allow_hyphen_values = true)]
+    pub epsilon: Option<f64>,
+    /// Write the output to this file (atomically) instead of stdout.
+    #[arg(long, value_name = "FILE")]
+    pub output: Option<std::path::PathBuf>,
+}
+
+#[derive(Args, Debug)]
+pub struct FitArgs {
+    /// Start of the line-fit window (after the impact) [default: first frame after it].
+    #[arg(long, value_name = "T", value_parser = time, allow_hyphen_values = true)]
+    pub from: Option<f64>,
+    /// End of the line-fit window [default: the last frame before v_cm and v_t meet].
+    #[arg(long, value_name = "T", value_parser = time, allow_hyphen_values = true)]
+    pub to: Option<f64>,
+    /// What the model fit may change, comma-separated [default: mu].
+    #[arg(long, value_enum, value_delimiter = ',')]
+    pub free: Option<Vec<Free>>,
+    /// Output: a table, JSON, or an SVG figure (data, fitted model, residuals).
+    #[arg(long, value_enum, default_value_t = FitFormat::Table)]
+    pub format: FitFormat,
+    /// Write the output to this file (atomically) instead of stdout.
+    #[arg(long, value_name = "FILE")]
+    pub output: Option<std::path::PathBuf>,
+}
+
+#[derive(Args, Debug)]
+pub struct SweepArgs {
+    /// First parameter and range, NAME=LO..HI with units (e.g. width=0..5.4cm).
+    #[arg(long, value_name = "NAME=LO..HI", allow_hyphen_values = true)]
+    pub x: String,
+    /// Second parameter and range (e.g. restitution=0.3..1); omit for a 1-D sweep.
+    #[arg(long, value_name = "NAME=LO..HI", allow_hyphen_values = true)]
+    pub y: Option<String>,
+    /// Grid points, NX or NXxNY.
+    #[arg(long, value_name = "NXxNY", default_value = "200x100")]
+    pub grid: String,
+    /// Output: CSV rows in grid order, JSON, or an SVG map.
+    #[arg(long, value_enum, default_value_t = SweepFormat::Csv)]
+    pub format: SweepFormat,
+    /// Write the output to this file (atomically) instead of stdout.
+    #[arg(long, value_name = "FILE")]
+    pub output: Option<std::path::PathBuf>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum SweepFormat {
+    Csv,
+    Json,
+    Svg,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum FitFormat {
+    Table,
+    Json,
+    Svg,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum CompareFormat {
+    Table,
+    Json,
+    Svg,
+}
+
+#[derive(Args, Debug)]
+pub struct RenderArgs {
+    /// Simulated time to show (e.g. 150ms) [default: the start of the span].
+    #[arg(long, value_name = "T", value_parser = time, allow_hyphen_values = true)]
+    pub at: Option<f64>,
+    /// Screen size, COLSxROWS.
+    #[arg(long, value_name = "COLSxROWS", default_value = "120x40", value_parser = screen_size)]
+    pub size: (u16, u16),
+    /// Keys to press first, by the names the help screen shows (e.g. "down right enter").
+    #[arg(long, value_name = "K", allow_hyphen_values = true)]
+    pub keys: Option<String>,
+}
+
+/// Largest screen `render` draws.
+pub const MAX_SCREEN: u16 = 1000;
+
+fn screen_size(text: &str) -> Result<(u16, u16), String> {
+    let bad = || {
+        format!("'{text}' is not a size, expected COLSxROWS such as 120x40 (1..={MAX_SCREEN} each)")
+    };
+    let (c, r) = text.split_once(['x', 'X']).ok_or_else(bad)?;
+    let c: u16 = c.trim().parse().map_err(|_| bad())?;
+    let r: u16 = r.trim().parse().map_err(|_| bad())?;
+    if c == 0 || r == 0 || c > MAX_SCREEN || r > MAX_SCREEN {
+        return Err(bad());
+    }
+    Ok((c, r))
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum Format {
+    Table,
+    Json,
+    Csv,
+}
+
+fn quantity(text: &str, dim: Dimension) -> Result<f64, String> {
+    parse_quantity(text, dim).map_err(|e| e.to_string())
+}
+fn speed(s: &str) -> Result<f64, String> {
+    quantity(s, Dimension::Speed)
+}
+fn time(s: &str) -> Result<f64, String> {
+    quantity(s, Dimension::Time)
+}
+fn ratio(s: &str) -> Result<f64, String> {
+    quantity(s, Dimension::Ratio)
+}
+
+/// Scene options shared by every command that takes a scene: `--preset` and one
+/// option per row of the parameter table ([`PARAMS`]), made from that table.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct SceneArgs {
+    /// A built-in preset's name or a preset file [default: paper-b4.9].
+    pub preset: Option<String>,
+    /// The values given on the command line, SI.
+    pub values: SceneSpec,
+}
+
+impl clap::FromArgMatches for SceneArgs {
+    fn from_arg_matches(matches: &clap::ArgMatches) -> Result<Self, clap::Error> {
+        let mut args = SceneArgs::default();
+        args.update_from_arg_matches(matches)?;
+        Ok(args)
+    }
+
+    fn update_from_arg_matches(&mut self, matches: &clap::ArgMatches) -> Result<(), clap::Error> {
+        if let Some(p) = matches.get_one::<String>("preset") {
+            self.preset = Some(p.clone());
+        }
+        for p in &PARAMS {
+            if let Some(&v) = matches.get_one::<f64>(p.name) {
+                self.values.set(p.key, v);
+            }
+        }
+        Ok(())
+    }
+}
+
+impl Args for SceneArgs {
+    fn augment_args(cmd: clap::Command) -> clap::Command {
+        let cmd = cmd.arg(
+            clap::Arg::new("preset")
+                .long("preset")
+                .value_name("NAME|FILE")
+                .global(true)
+                .help("Start from a built-in preset or a preset file [default: paper-b4.9]"),
+        );
+        PARAMS.iter().fold(cmd, |cmd, p| {
+            let dim = p.dim;
+            let mut arg = clap::Arg::new(p.name)
+                .long(p.flag)
+                .value_name(if dim == Dimension::Ratio { "X" } else { "Q" })
+                .value_parser(move |s: &str| quantity(s, dim))
+                .allow_hyphen_values(true)
+                .global(true)
+                .help(p.help);
+            if p.key == Key::Height {
+                arg = arg.conflicts_with_all(["v0", "v0_left", "v0_right"]);
+            }
+            cmd.arg(arg)
+        })
+    }
+
+    fn augment_args_for_update(cmd: clap::Command) -> clap::Command {
+        Self::augment_args(cmd)
+    }
+}
+
+impl SceneArgs {
+    /// The preset these options start from, and the scene they make.
+    pub fn resolve(&self) -> Result<(Preset, Scene, Span), CliError> {
+        let preset = Preset::load(self.preset.as_deref().unwrap_or(preset::DEFAULT))
+            .map_err(|e| CliError::Invalid(e.to_string()))?;
+        let (scene, span) = preset
+            .spec
+            .over(&self.values)
+            .resolve()
+            .map_err(|e| CliError::Invalid(e.to_string()))?;
+        Ok((preset, scene, span))
+    }
+}
+
+impl ValueEnum for Method {
+    fn value_variants<'a>() -> &'a [Self] {
+        &[
+            Method::Exact,
+            Method::Euler,
+            Method::SymplecticEuler,
+            Method::Rk4,
+            Method::Rk45,
+            Method::Moreau,
+        ]
+    }
+
+    fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
+        Some(clap::builder::PossibleValue::new(self.name()).help(self.description()))
+    }
+}
+
+impl ValueEnum for Free {
+    fn value_variants<'a>() -> &'a [Self] {
+        &[Free::Mu, Free::V0, Free::Restitution]
+    }
+
+    fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {
+        Some(clap::builder::PossibleValue::new(self.name()))
+    }
+}
