@@ -248,3 +248,50 @@ fn no_run_hangs_or_leaks_nan_into_the_numbers() {
         }
     }
 }
+
+#[test]
+fn the_exact_method_behind_the_common_signature_is_the_engine() {
+    // `integrate` takes every method, the exact one included (no panic): its steps are
+    // the engine's segments, its events the engine's, its states the engine's.
+    struct Log(
+        Vec<(f64, groovelab::methods::Y)>,
+        Vec<groovelab::physics::solution::Event>,
+    );
+    impl groovelab::methods::Observer for Log {
+        fn step(&mut self, t: f64, y: &groovelab::methods::Y) -> bool {
+            self.0.push((t, *y));
+            true
+        }
+        fn event(&mut self, e: groovelab::physics::solution::Event) {
+            self.1.push(e);
+        }
+    }
+    let (scene, span) = preset("paper-b4.9");
+    let sol = solve(&scene, &span);
+    let model = Model::of(&scene);
+    let y0 = groovelab::methods::start_state(&scene, sol.t_start);
+    let mut log = Log(Vec::new(), Vec::new());
+    let out = groovelab::methods::integrate(
+        Method::Exact,
+        &model,
+        y0,
+        sol.t_start,
+        sol.t_end,
+        &Settings::default(),
+        &mut log,
+    );
+    assert_eq!(out.stalled, None);
+    assert_eq!(log.1, sol.visible_events().copied().collect::<Vec<_>>());
+    assert!(out.steps > 10, "one step per segment: {}", out.steps);
+    for (t, y) in &log.0 {
+        let s = sol.at(*t);
+        assert_eq!(
+            *y,
+            [
+                s.left.x, s.left.v, s.left.u, s.right.x, s.right.v, s.right.u
+            ]
+        );
+    }
+    assert_eq!(out.y, log.0.last().unwrap().1);
+    assert_eq!(log.0[0].1, y0, "it starts where every method starts");
+}

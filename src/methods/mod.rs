@@ -15,7 +15,7 @@ mod rk45;
 
 use serde::Serialize;
 
-use crate::physics::model::{self, BallState};
+use crate::physics::model::{self, BallState, Groove};
 use crate::physics::scene::Scene;
 use crate::physics::solution::{Event, EventKind, Who};
 
@@ -133,13 +133,13 @@ impl Friction {
     }
 }
 
-/// The scene's constants as the methods need them.
+/// The scene's constants as the methods need them: the per-ball formulas come from
+/// the physics' [`Groove`], so every method integrates the very model the engine solves.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Model {
-    pub k: f64,
-    pub mu: f64,
-    pub g: f64,
-    pub rolling_resistance: f64,
+    /// The scene itself: the exact method solves it directly.
+    pub scene: Scene,
+    pub groove: Groove,
     pub mass: [f64; 2],
     pub radius: f64,
     pub restitution: f64,
@@ -148,10 +148,8 @@ pub struct Model {
 impl Model {
     pub fn of(scene: &Scene) -> Model {
         Model {
-            k: scene.k(),
-            mu: scene.mu,
-            g: scene.g,
-            rolling_resistance: scene.rolling_resistance,
+            scene: *scene,
+            groove: scene.groove(),
             mass: [scene.left.mass, scene.right.mass],
             radius: scene.radius,
             restitution: scene.restitution,
@@ -160,17 +158,22 @@ impl Model {
 
     /// `A = μ_k g (1/k + 5k/2)`: how fast friction closes the slip.
     pub fn slip_rate(&self) -> f64 {
-        self.mu * self.g * (1.0 / self.k + 2.5 * self.k)
+        self.groove.slip_rate()
     }
 
     /// Kinetic energy of the pair, J.
     pub fn energy(&self, y: &Y) -> f64 {
         (0..2)
             .map(|i| {
-                let (v, u) = (y[3 * i + 1], y[3 * i + 2]);
-                0.5 * self.mass[i] * v * v + self.mass[i] * u * u / (5.0 * self.k * self.k)
+                let (tr, rot) = self.groove.energy(self.mass[i], ball(y, i));
+                tr + rot
             })
             .sum()
+    }
+
+    /// Deceleration of rolling resistance, `c_rr g` (0 without it).
+    pub fn rolling_deceleration(&self) -> f64 {
+        self.groove.rolling_resistance * self.groove.g
     }
 }
 
@@ -180,11 +183,13 @@ pub fn rhs(m: &Model, law: Friction, y: &Y) -> Y {
     let mut d = [0.0; 6];
     for i in 0..2 {
         let (v, u) = (y[3 * i + 1], y[3 * i + 2]);
-        let f = law.sign(v - u);
-        let rr = -m.rolling_resistance * m.g * law.sign(v);
+        // The sliding accelerations are linear in the slip's sign, so a smoothed sign
+        // gives the smoothed law.
+        let (a, du) = m.groove.sliding_accelerations(law.sign(v - u));
+        let rr = -m.rolling_deceleration() * law.sign(v);
         d[3 * i] = v;
-        d[3 * i + 1] = -f * m.mu * m.g / m.k + rr;
-        d[3 * i + 2] = f * 2.5 * m.k * m.mu * m.g + rr;
+        d[3 * i + 1] = a + rr;
+        d[3 * i + 2] = du + rr;
     }
     d
 }
@@ -259,13 +264,55 @@ pub fn integrate(
     obs: &mut dyn Observer,
 ) -> Outcome {
     match method {
-        Method::Exact => panic!("the exact engine is engine::solve"),
+        Method::Exact => exact(m, t0, t1, obs),
         Method::Euler | Method::SymplecticEuler | Method::Rk4 => {
             fixed::integrate(method, m, y0, t0, t1, s, obs)
         }
         Method::Rk45 => rk45::integrate(m, y0, t0, t1, s, obs),
         Method::Moreau => moreau::integrate(m, y0, t0, t1, s, obs),
     }
+}
+
+/// The exact engine behind the same signature: its "steps" are its segments (one
+/// polynomial piece from event to event), reported at each segment start, and its
+/// events are the engine's. It solves the scene itself, from the same run-up state
+/// that [`start_state`] gives every method.
+fn exact(m: &Model, t0: f64, t1: f64, obs: &mut dyn Observer) -> Outcome {
+    let span = crate::physics::scene::Span {
+        t_start: t0,
+        t_end: Some(t1),
+    };
+    let sol = crate::physics::engine::solve(&m.scene, &span);
+    let state = |s: crate::physics::solution::Snapshot| -> Y {
+        [
+            s.left.x, s.left.v, s.left.u, s.right.x, s.right.v, s.right.u,
+        ]
+    };
+    let mut out = Outcome {
+        steps: 0,
+        rhs_evals: 0,
+        stalled: sol
+            .truncated
+            .then(|| "the event budget ended the run early".to_string()),
+        aborted: false,
+        t: t0,
+        y: state(sol.at(t0)),
+    };
+    let starts = sol.segments.iter().map(|seg| seg.t0.max(t0));
+    for t in std::iter::once(t0).chain(starts.filter(|&t| t > t0 && t < t1)) {
+        out.steps += 1;
+        if !obs.step(t, &state(sol.at(t))) {
+            out.aborted = true;
+            return out;
+        }
+    }
+    for e in sol.visible_events() {
+        obs.event(*e);
+    }
+    out.t = t1;
+    out.y = state(sol.at(t1));
+    obs.step(t1, &out.y);
+    out
 }
 
 /// The state at `t_start` that rolls into the first impact at t = 0: the exact

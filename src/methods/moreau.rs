@@ -11,15 +11,15 @@ const THETA: f64 = 0.5;
 /// the friction impulse F ∈ −μ m g h / k · Sgn(s⁺) is solved exactly (stick if it can).
 fn ball_update(m: &Model, i: usize, v: f64, u: f64, c: f64, h: f64) -> (f64, f64) {
     let mass = m.mass[i];
-    let k2 = m.k * m.k;
+    let k2 = m.groove.k * m.groove.k;
     // Rolling resistance, explicit: it only brakes (never flips the sign of v).
-    let rr = m.rolling_resistance * m.g * h;
+    let rr = m.rolling_deceleration() * h;
     let brake = |x: f64| x - x.signum() * rr.min(x.abs());
     let (v, u) = (brake(v), brake(u));
     // m Δv = F + c,  (2m/(5k²)) Δu = −F  ⇒  s⁺ = s + c/m + F (1 + 5k²/2)/m.
     let free_slip = v - u + c / mass;
     let stiffness = (1.0 + 2.5 * k2) / mass;
-    let limit = m.mu * mass * m.g * h / m.k;
+    let limit = m.groove.friction_limit(mass) * h;
     let f = if free_slip.abs() <= limit * stiffness {
         -free_slip / stiffness
     } else {

@@ -125,11 +125,10 @@ fn rhs(m: &Model, modes: &Modes, roll_dir: &[f64; 2], y: &Y) -> Y {
     for i in 0..2 {
         d[3 * i] = y[3 * i + 1];
         let (a, du) = if modes[i] == 0 {
-            let a = -roll_dir[i] * m.rolling_resistance * m.g;
+            let a = -roll_dir[i] * m.rolling_deceleration();
             (a, a)
         } else {
-            let s = f64::from(modes[i]);
-            (-s * m.mu * m.g / m.k, s * 2.5 * m.k * m.mu * m.g)
+            m.groove.sliding_accelerations(f64::from(modes[i]))
         };
         d[3 * i + 1] = a;
         d[3 * i + 2] = du;
@@ -143,7 +142,7 @@ fn switches(m: &Model, modes: &Modes, y: &Y) -> [f64; 3] {
     let f = |i: usize| {
         if modes[i] != 0 {
             y[3 * i + 1] - y[3 * i + 2]
-        } else if m.rolling_resistance > 0.0 {
+        } else if m.groove.rolling_resistance > 0.0 {
             y[3 * i + 1]
         } else {
             f64::NAN

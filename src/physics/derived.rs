@@ -118,7 +118,7 @@ pub struct Derived {
 impl Derived {
     pub fn of(scene: &Scene) -> Derived {
         let k = scene.k();
-        let groove = groove(scene);
+        let groove = scene.groove();
         let impact = first_impact(scene);
         let recovery = impact
             .filter(|_| scene.mu > 0.0)
@@ -173,15 +173,6 @@ impl Derived {
         } else {
             "D e = 1: both stop together".to_string()
         }
-    }
-}
-
-fn groove(scene: &Scene) -> Groove {
-    Groove {
-        k: scene.k(),
-        mu: scene.mu,
-        g: scene.g,
-        rolling_resistance: scene.rolling_resistance,
     }
 }
 

@@ -136,12 +136,7 @@ struct Engine {
 
 impl Engine {
     fn new(scene: &Scene) -> Engine {
-        let groove = Groove {
-            k: scene.k(),
-            mu: scene.mu,
-            g: scene.g,
-            rolling_resistance: scene.rolling_resistance,
-        };
+        let groove = scene.groove();
         let r = scene.radius;
         // Just before the first impact both balls roll toward x = 0.
         let left = BallState {

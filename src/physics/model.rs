@@ -88,7 +88,12 @@ impl Groove {
 
     /// Time a free sliding ball needs to roll again, `|s| / (μ_k g (1/k + 5k/2))`.
     pub fn time_to_roll(&self, s: f64) -> f64 {
-        s.abs() / (self.mu * self.g * (1.0 / self.k + 2.5 * self.k))
+        s.abs() / self.slip_rate()
+    }
+
+    /// How fast friction closes the slip, `|ds/dt| = μ_k g (1/k + 5k/2)`.
+    pub fn slip_rate(&self) -> f64 {
+        self.mu * self.g * (1.0 / self.k + 2.5 * self.k)
     }
 
     /// Mass a rolling ball shows to a push through its centre: `m (2 + 5k²)/(5k²)`

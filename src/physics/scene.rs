@@ -4,6 +4,7 @@
 use serde::Serialize;
 
 use crate::physics::closed_form;
+use crate::physics::model::Groove;
 
 /// One ball's own numbers.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -54,6 +55,16 @@ impl Scene {
     /// `k = r / R`, the contact circle's radius over the ball's.
     pub fn k(&self) -> f64 {
         closed_form::contact_ratio(self.radius, self.width)
+    }
+
+    /// One ball's groove: what the per-ball formulas of `model` need.
+    pub fn groove(&self) -> Groove {
+        Groove {
+            k: self.k(),
+            mu: self.mu,
+            g: self.g,
+            rolling_resistance: self.rolling_resistance,
+        }
     }
 
     /// True for the paper's symmetric scene: equal masses and equal speeds.

@@ -177,12 +177,7 @@ impl EnergySplit {
 
 impl Solution {
     pub fn groove(&self) -> Groove {
-        Groove {
-            k: self.scene.k(),
-            mu: self.scene.mu,
-            g: self.scene.g,
-            rolling_resistance: self.scene.rolling_resistance,
-        }
+        self.scene.groove()
     }
 
     fn masses(&self) -> [f64; 2] {

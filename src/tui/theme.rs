@@ -19,8 +19,6 @@ pub struct Glyphs {
     pub vline: &'static str,
     pub hline: &'static str,
     pub dot: &'static str,
-    pub play: &'static str,
-    pub pause: &'static str,
     pub flash: &'static str,
     pub selected: &'static str,
 }
@@ -49,8 +47,6 @@ impl Glyphs {
         vline: "│",
         hline: "─",
         dot: "·",
-        play: "▶",
-        pause: "⏸",
         flash: "✶",
         selected: "▸",
     };
@@ -66,11 +62,45 @@ impl Glyphs {
         vline: "|",
         hline: "-",
         dot: ".",
-        play: ">",
-        pause: "=",
         flash: "*",
         selected: ">",
     };
+
+    /// `text` as this mode writes it: in ASCII, the Unicode signs of physics text
+    /// spelt out (… → ..., × → x, μ → mu, ≤ → <=, …); in Unicode, unchanged.
+    pub fn text(&self, text: &str) -> String {
+        if !self.ascii || text.is_ascii() {
+            return text.to_string();
+        }
+        let mut out = String::with_capacity(text.len() + 8);
+        for c in text.chars() {
+            match c {
+                '…' => out.push_str("..."),
+                '×' => out.push('x'),
+                'μ' => out.push_str("mu"),
+                'τ' => out.push_str("tau"),
+                'ρ' => out.push_str("rho"),
+                'Δ' => out.push('d'),
+                '²' => out.push_str("^2"),
+                '³' => out.push_str("^3"),
+                '∞' => out.push_str("inf"),
+                '≤' => out.push_str("<="),
+                '≥' => out.push_str(">="),
+                '±' => out.push_str("+-"),
+                '≈' => out.push('~'),
+                '−' | '–' | '—' => out.push('-'),
+                '→' => out.push_str("->"),
+                '←' => out.push_str("<-"),
+                '↑' => out.push('^'),
+                '↓' => out.push('v'),
+                '·' | '•' => out.push('.'),
+                '′' | '’' => out.push('\''),
+                // Anything else stays as it is, and the ASCII tests name it.
+                c => out.push(c),
+            }
+        }
+        out
+    }
 
     pub fn new(ascii: bool) -> Glyphs {
         if ascii {

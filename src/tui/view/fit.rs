@@ -17,8 +17,8 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let inner = blk.inner(area);
     blk.render(area, buf);
     let g = theme.glyphs;
-    let label = |s: &str| Span::styled(s.to_string(), theme.dim);
-    let value = |s: String| Span::styled(s, theme.text);
+    let label = |s: &str| Span::styled(g.text(s), theme.dim);
+    let value = |s: String| Span::styled(g.text(&s), theme.text);
     let lines: Vec<Line> = match app.lab.fits() {
         State::Idle => vec![Line::from(Span::styled(
             "no measured data in this preset (try p: paper-b3.5, -b4.4, -b4.9)",

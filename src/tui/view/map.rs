@@ -74,13 +74,13 @@ fn regime_map(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             theme.cursor,
         );
     }
-    let legend = format!(
+    let legend = g.text(&format!(
         "0 … b/R {:.2}   {} depart  = rest  {} recollide  {} this scene",
         b_max / radius,
         ".",
         glyph(Regime::Recollide),
         if g.ascii { "@" } else { "◆" }
-    );
+    ));
     buf.set_stringn(
         inner.x,
         inner.bottom() - 1,
@@ -91,7 +91,10 @@ fn regime_map(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
 }
 
 fn paper_figure(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let blk = block(" Paper fig.: a/(μ g) and D against b/R ", theme);
+    let blk = block(
+        theme.glyphs.text(" Paper fig.: a/(μ g) and D against b/R "),
+        theme,
+    );
     let inner = blk.inner(area);
     blk.render(area, buf);
     let n = 200;

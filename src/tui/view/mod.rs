@@ -76,8 +76,38 @@ pub(crate) fn block<'a>(title: impl Into<Line<'a>>, theme: &Theme) -> Block<'a> 
         .title(title.into().style(theme.title))
 }
 
-/// Draws the whole screen.
+/// Draws the whole screen (in ASCII mode, any symbol a widget still drew outside
+/// 7-bit ASCII gets a stand-in; [`non_ascii_cells`] lets tests see that none was needed).
 pub fn draw(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
+    draw_panels(app, area, buf, theme);
+    if theme.glyphs.ascii {
+        force_ascii(buf);
+    }
+}
+
+/// The cells of an ASCII screen that would have needed a stand-in: `(x, y, symbol)`.
+pub fn non_ascii_cells(
+    app: &App,
+    width: u16,
+    height: u16,
+    theme: &Theme,
+) -> Vec<(u16, u16, String)> {
+    let area = Rect::new(0, 0, width, height);
+    let mut buf = Buffer::empty(area);
+    draw_panels(app, area, &mut buf, theme);
+    let mut cells = Vec::new();
+    for y in 0..height {
+        for x in 0..width {
+            let sym = buf[(x, y)].symbol();
+            if !sym.is_ascii() {
+                cells.push((x, y, sym.to_string()));
+            }
+        }
+    }
+    cells
+}
+
+fn draw_panels(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     match layout(area) {
         None => {
             let (w, h) = MIN_SIZE;
@@ -109,9 +139,6 @@ pub fn draw(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             popups::render(app, area, buf, theme);
         }
     }
-    if theme.glyphs.ascii {
-        force_ascii(buf);
-    }
 }
 
 /// "computing… 40 %" (or without a share when the total is unknown).
@@ -134,6 +161,7 @@ pub(crate) fn computing<T>(
         State::Computing { done, total } => format!("{what}: {}", progress_text(*done, *total)),
         _ => String::new(),
     };
+    let text = theme.glyphs.text(&text);
     buf.set_stringn(area.x, area.y, text, usize::from(area.width), theme.dim);
 }
 
@@ -148,6 +176,7 @@ fn status(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         (_, Status::Info(i)) => (format!("{}   {i}", app.playback()), theme.text),
         (_, Status::None) => (app.playback(), theme.text),
     };
+    let text = theme.glyphs.text(&text);
     let room = area.width.saturating_sub(right.len() as u16 + 1) as usize;
     buf.set_stringn(area.x, area.y, &text, room, style);
     if text.chars().count() < room {
