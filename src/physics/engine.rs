@@ -120,6 +120,9 @@ struct Engine {
     gap: f64,
     /// Compressive force while the balls press on each other, N.
     push: f64,
+    /// Whether the event list says the balls press on each other: the last contact
+    /// event recorded was `contact_start`. Contact events report changes of this.
+    told_pressed: bool,
     /// `(dv/dt, du/dt)` of each ball in the current segment.
     accel: [(f64, f64); 2],
     angle: [f64; 2],
@@ -174,6 +177,7 @@ impl Engine {
             phase: [free_phase(left.v), free_phase(right.v)],
             gap: 0.0,
             push: 0.0,
+            told_pressed: false,
             accel: [(0.0, 0.0); 2],
             angle: [0.0; 2],
             ledger: Ledger::default(),
@@ -196,14 +200,13 @@ impl Engine {
         self.run_up(t_start);
         if self.state[0].v > self.state[1].v {
             self.collide();
-            let kinds = self.settle();
+            self.settle();
             self.record(&[(EventKind::Collision, Who::Both)]);
-            self.record_contact(kinds);
             self.check_series();
         } else {
-            let kinds = self.settle();
-            self.record_contact(kinds);
+            self.settle();
         }
+        self.record_contact();
         loop {
             if self.events.len() >= MAX_EVENTS {
                 self.truncated = true;
@@ -279,12 +282,14 @@ impl Engine {
             self.collide();
             kinds.push((EventKind::Collision, Who::Both));
         }
-        let contact = self.settle();
+        self.settle();
         self.record(&kinds);
-        self.record_contact(contact);
         if impact {
             self.check_series();
         }
+        // After the series check: summing a series can change whether the balls
+        // press, and the event list must say so once, after the accumulation point.
+        self.record_contact();
         true
     }
 
@@ -469,9 +474,8 @@ impl Engine {
     /// Decides the phases and accelerations of the next segment. Touching balls with
     /// equal speed form the one-dimensional complementarity problem of physics.md: a
     /// compressive push `P ≥ 0` exactly when friction drives them into each other.
-    /// Returns the contact events this causes.
-    fn settle(&mut self) -> Vec<EventKind> {
-        let was_pressed = self.push > 0.0;
+    /// [`Engine::record_contact`] reports what this changes.
+    fn settle(&mut self) {
         let touching = self.gap == 0.0 && self.state[0].v == self.state[1].v;
         let mut phase = self.phase;
         let (mut accel, mut push) = self.motion(phase, touching);
@@ -512,11 +516,6 @@ impl Engine {
         self.phase = phase;
         self.accel = accel;
         self.push = push;
-        match (was_pressed, self.push > 0.0) {
-            (false, true) => vec![EventKind::ContactStart],
-            (true, false) => vec![EventKind::ContactEnd],
-            _ => vec![],
-        }
     }
 
     /// Touching balls moving as one: their shared acceleration and the push between
@@ -608,9 +607,20 @@ impl Engine {
         }
     }
 
-    fn record_contact(&mut self, kinds: Vec<EventKind>) {
-        let tagged: Vec<_> = kinds.into_iter().map(|k| (k, Who::Both)).collect();
-        self.record(&tagged);
+    /// Records `contact_start` or `contact_end` if the balls' pressing differs from
+    /// what the event list last said: one event per change, however many times the
+    /// motion was settled in between.
+    fn record_contact(&mut self) {
+        let pressed = self.push > 0.0;
+        if pressed != self.told_pressed {
+            self.told_pressed = pressed;
+            let kind = if pressed {
+                EventKind::ContactStart
+            } else {
+                EventKind::ContactEnd
+            };
+            self.record(&[(kind, Who::Both)]);
+        }
     }
 
     /// After an impact: if the last impact cycles form a geometric series, sum it and
@@ -722,9 +732,9 @@ impl Engine {
         };
         self.history.clear();
         // The impact just recorded is the last one resolved; its event already exists.
-        let contact = self.settle();
+        // Whether the pair now presses is recorded by the caller, after this event.
+        self.settle();
         self.record(&[(kind, Who::Both)]);
-        self.record_contact(contact);
     }
 }
 
