@@ -40,8 +40,12 @@ pub enum EventKind {
     PureGliding,
     /// `v` crosses 0 while sliding: no translation.
     PureSlipping,
+    /// `v = u = 0`, and the ball stays so until a collision or contact event. A ball
+    /// rolling through `v = 0` because the other one pushes it is no event.
     Rest,
+    /// The touching balls start to press on each other (push `P > 0`) and move as one.
     ContactStart,
+    /// The push between them is gone (`P = 0`): they may part from here on.
     ContactEnd,
     /// Impacts accumulated and the pair rests in contact.
     ZenoRest,
