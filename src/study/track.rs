@@ -187,14 +187,25 @@ fn quadratic(ts: &[f64], ys: &[f64], t0: f64) -> Option<([f64; 3], f64, f64)> {
     if !det.is_finite() || det.abs() <= 1e-12 * s[0].powi(3) {
         return None;
     }
-    let cof = |i: usize, j: usize| {
-        let r: Vec<usize> = (0..3).filter(|&k| k != i).collect();
-        let c: Vec<usize> = (0..3).filter(|&k| k != j).collect();
-        let m = a[r[0]][c[0]] * a[r[1]][c[1]] - a[r[0]][c[1]] * a[r[1]][c[0]];
-        if (i + j).is_multiple_of(2) { m } else { -m }
-    };
-    // The inverse of a symmetric matrix: cofactors over the determinant.
-    let inv = |i: usize, j: usize| cof(j, i) / det;
+    // The inverse of the symmetric matrix: its adjugate over the determinant.
+    let adj = [
+        [
+            a[1][1] * a[2][2] - a[1][2] * a[2][1],
+            a[0][2] * a[2][1] - a[0][1] * a[2][2],
+            a[0][1] * a[1][2] - a[0][2] * a[1][1],
+        ],
+        [
+            a[1][2] * a[2][0] - a[1][0] * a[2][2],
+            a[0][0] * a[2][2] - a[0][2] * a[2][0],
+            a[0][2] * a[1][0] - a[0][0] * a[1][2],
+        ],
+        [
+            a[1][0] * a[2][1] - a[1][1] * a[2][0],
+            a[0][1] * a[2][0] - a[0][0] * a[2][1],
+            a[0][0] * a[1][1] - a[0][1] * a[1][0],
+        ],
+    ];
+    let inv = |i: usize, j: usize| adj[i][j] / det;
     let c: [f64; 3] =
         std::array::from_fn(|i| (0..3).map(|j| inv(i, j) * b[j]).sum::<f64>() / h.powi(i as i32));
     let rss: f64 = ts
