@@ -124,11 +124,7 @@ fn synthetic_data_give_back_mu_within_the_reported_uncertainty() {
             v_cm.push(s.left.v + sigma * noise.gauss());
             v_t.push(s.left.u + sigma * noise.gauss());
         }
-        let m = Measured {
-            t: frames.clone(),
-            v_cm,
-            v_t,
-        };
+        let m = Measured::velocities(frames.clone(), v_cm, v_t);
         // Start the fit away from the truth.
         let start = Scene { mu: 0.3, ..scene };
         let f = fit::model_fit(&start, &m, &[Free::Mu]).unwrap();

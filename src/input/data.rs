@@ -1,15 +1,53 @@
 //! Reading a user's measured series (CSV from video-analysis tools): columns found by
-//! header, comma or semicolon separated, decimal commas tolerated, units from the
-//! header or given, and the time origin moved to the first impact.
+//! header, comma, semicolon or tab separated, decimal commas tolerated, units from the
+//! header or given, and the time origin moved to the first impact. Velocity files are
+//! read here; position tracks by `input::tracks`, which shares the cell, number and
+//! unit helpers below. [`read`] tells the two kinds apart.
 
+use crate::input::tracks::{self, Track};
 use crate::input::units::{Dimension, parse_quantity};
 
 /// A measured series of the left ball: time (s, first impact at 0), v_cm and v_t (m/s).
-#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+///
+/// Velocity files fill `t`, `v_cm` and `v_t` only. A series derived from a position
+/// track (`study::track`) also carries each derived point's standard uncertainty and
+/// the tracked positions; its `v_t` is NaN where no rim mark was tracked.
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize)]
 pub struct Measured {
     pub t: Vec<f64>,
     pub v_cm: Vec<f64>,
     pub v_t: Vec<f64>,
+    /// Standard uncertainty of each `v_cm`, m/s (from the local fit's residuals).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub v_cm_sigma: Option<Vec<f64>>,
+    /// Standard uncertainty of each `v_t`, m/s (NaN where `v_t` is).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub v_t_sigma: Option<Vec<f64>>,
+    /// The tracked centre, m: its displacement from where it was at the first impact,
+    /// positive toward the other ball (the model's left ball is at `x − R`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub x: Option<Vec<f64>>,
+    /// The rim mark's angle about the centre, rad, from its angle at the first impact,
+    /// signed like the spin (`d angle/dt · r = v_t`); NaN where the mark is missing.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub angle: Option<Vec<f64>>,
+}
+
+impl Measured {
+    /// A velocity series without uncertainties or positions.
+    pub fn velocities(t: Vec<f64>, v_cm: Vec<f64>, v_t: Vec<f64>) -> Measured {
+        Measured {
+            t,
+            v_cm,
+            v_t,
+            ..Measured::default()
+        }
+    }
+
+    /// True when at least one v_t was measured (a velocity file, or a track with a mark).
+    pub fn has_v_t(&self) -> bool {
+        self.v_t.iter().any(|v| v.is_finite())
+    }
 }
 
 /// Why a data file cannot be used; each message names the line.
@@ -21,23 +59,112 @@ pub struct DataError {
 }
 
 /// How to read a file beyond what its header says.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct Reading {
     /// Seconds per time unit of the file, when the header does not say (1 = s).
     pub time_unit: Option<f64>,
     /// m/s per speed unit of the file, when the header does not say.
     pub speed_unit: Option<f64>,
+    /// Metres per length unit of a position file, when the header does not say.
+    pub length_unit: Option<f64>,
     /// Time of the first impact in the file's time (after units); detected if absent.
     pub impact_at: Option<f64>,
+    /// Which track (Tracker) or column prefix holds the ball's centre, e.g. "mass A"
+    /// [default: a track named centre/center/ball, else the first].
+    pub centre: Option<String>,
+    /// Which track holds the mark on its rim, e.g. "mass B" [default: a track named
+    /// mark/rim/spot, else the second; none: v_t is not measured].
+    pub mark: Option<String>,
 }
 
-/// Which quantity a header cell names, and the SI factor its unit implies.
-fn column(header: &str) -> Option<(&'static str, Option<f64>)> {
-    let h = header
+/// What a data file holds.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Series {
+    /// Velocities (t, v_cm, v_t), impact at t = 0.
+    Velocities(Measured),
+    /// Positions of the centre (and a rim mark) in the file's frame, SI units; the
+    /// velocities are derived by `study::track` (they need the scene's contact radius).
+    Positions(Track),
+}
+
+/// Reads `text` (the file named `file`): a velocity file when its header names t, v_cm
+/// and v_t, else a position track (Tracker export or CSV/TSV with t, x, y).
+pub fn read(text: &str, file: &str, reading: &Reading) -> Result<Series, DataError> {
+    let header = text
+        .lines()
+        .find(|l| !l.trim().is_empty() && !l.trim_start().starts_with('#'));
+    let names: Vec<&'static str> = header
+        .map(|h| {
+            cells(h, separator(h))
+                .iter()
+                .filter_map(|c| column(c).map(|(n, _)| n))
+                .collect()
+        })
+        .unwrap_or_default();
+    if names.contains(&"v_cm") {
+        parse(text, file, reading).map(Series::Velocities)
+    } else {
+        tracks::parse(text, file, reading).map(Series::Positions)
+    }
+}
+
+/// How the cells of a line are separated.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Sep {
+    Tab,
+    Semicolon,
+    Comma,
+    /// Runs of spaces (Tracker's space-separated export).
+    Space,
+}
+
+/// The separator a header line uses: tabs, else semicolons (then commas are decimal
+/// commas), else commas, else spaces.
+pub(crate) fn separator(line: &str) -> Sep {
+    if line.contains('\t') {
+        Sep::Tab
+    } else if line.contains(';') {
+        Sep::Semicolon
+    } else if line.contains(',') {
+        Sep::Comma
+    } else {
+        Sep::Space
+    }
+}
+
+/// The cells of `line`; with tabs, semicolons and commas an empty cell stays a cell.
+pub(crate) fn cells(line: &str, sep: Sep) -> Vec<&str> {
+    let line = line.trim_end_matches(['\r', '\n']);
+    match sep {
+        Sep::Tab => line.split('\t').collect(),
+        Sep::Semicolon => line.split(';').collect(),
+        Sep::Comma => line.split(',').collect(),
+        Sep::Space => line.split_whitespace().collect(),
+    }
+}
+
+/// A header cell in lower case, without quotes and surrounding blanks.
+pub(crate) fn clean(cell: &str) -> String {
+    cell.trim().trim_matches('"').trim().to_lowercase()
+}
+
+/// The SI factor of a unit written after a column name: `(ms)`, `[cm/s]`, `/ms`,
+/// `_m_per_s`; `Some(None)` when there is none, `None` when it is not a unit of `dim`.
+pub(crate) fn unit_factor(rest: &str, dim: Dimension) -> Option<Option<f64>> {
+    let unit = rest
         .trim()
-        .trim_matches('"')
-        .to_lowercase()
-        .replace(' ', "");
+        .trim_start_matches(['_', '(', '[', '/', ' '])
+        .trim_end_matches([')', ']', ' '])
+        .replace("_per_", "/");
+    if unit.is_empty() {
+        return Some(None);
+    }
+    parse_quantity(&format!("1{unit}"), dim).ok().map(Some)
+}
+
+/// Which quantity a velocity-file header cell names, and the SI factor its unit implies.
+fn column(header: &str) -> Option<(&'static str, Option<f64>)> {
+    let h = clean(header).replace(' ', "");
     let (name, rest) = if let Some(r) = h.strip_prefix("v_cm").or(h.strip_prefix("vcm")) {
         ("v_cm", r)
     } else if let Some(r) = h.strip_prefix("v_t").or(h.strip_prefix("vt")) {
@@ -49,26 +176,17 @@ fn column(header: &str) -> Option<(&'static str, Option<f64>)> {
     };
     // A unit in brackets ("t (ms)", "v_cm [cm/s]") or as a suffix ("t_s",
     // "v_cm_m_per_s", "v_t_cm_per_s").
-    let unit = rest
-        .trim_start_matches(['_', '(', '['])
-        .trim_end_matches([')', ']'])
-        .replace("_per_", "/");
     let dim = if name == "t" {
         Dimension::Time
     } else {
         Dimension::Speed
     };
-    if unit.is_empty() {
-        return Some((name, None));
-    }
-    match parse_quantity(&format!("1{unit}"), dim) {
-        Ok(f) => Some((name, Some(f))),
-        Err(_) => None,
-    }
+    unit_factor(rest, dim).map(|f| (name, f))
 }
 
-/// A number as video tools write it: `0.12`, `0,12` (decimal comma), `1.2e-3`.
-fn number(cell: &str) -> Option<f64> {
+/// A number as video tools write it: `0.12`, `0,12` (decimal comma), `1.2e-3`,
+/// `3.200000000E-2`.
+pub(crate) fn number(cell: &str) -> Option<f64> {
     let c = cell.trim().trim_matches('"');
     c.parse::<f64>()
         .ok()
@@ -89,12 +207,11 @@ pub fn parse(text: &str, file: &str, reading: &Reading) -> Result<Measured, Data
     let (_, header) = lines
         .next()
         .ok_or_else(|| err("the file is empty, expected a header with t, v_cm and v_t".into()))?;
-    // Semicolons win when present: then commas are decimal commas.
-    let sep = if header.contains(';') { ';' } else { ',' };
-    let cells: Vec<&str> = header.split(sep).collect();
+    // Semicolons win over commas: then commas are decimal commas.
+    let sep = separator(header);
+    let head = cells(header, sep);
     let find = |want: &str| {
-        cells
-            .iter()
+        head.iter()
             .enumerate()
             .find_map(|(i, c)| column(c).filter(|(n, _)| *n == want).map(|(_, f)| (i, f)))
     };
@@ -112,9 +229,9 @@ pub fn parse(text: &str, file: &str, reading: &Reading) -> Result<Measured, Data
     let fv = fv.or(reading.speed_unit).unwrap_or(1.0);
     let (mut t, mut v_cm, mut v_t) = (Vec::new(), Vec::new(), Vec::new());
     for (n, line) in lines {
-        let cells: Vec<&str> = line.split(sep).collect();
+        let row = cells(line, sep);
         let get = |i: usize, name: &str| {
-            let cell = cells.get(i).copied().unwrap_or("");
+            let cell = row.get(i).copied().unwrap_or("");
             number(cell).ok_or_else(|| {
                 err(format!(
                     "line {}: {name} = '{}' is not a finite number",
@@ -148,7 +265,7 @@ pub fn parse(text: &str, file: &str, reading: &Reading) -> Result<Measured, Data
     for x in &mut t {
         *x -= impact;
     }
-    Ok(Measured { t, v_cm, v_t })
+    Ok(Measured::velocities(t, v_cm, v_t))
 }
 
 /// The first impact: where v_cm drops the most between neighbouring frames (the left

@@ -194,11 +194,7 @@ fn check_measured(m: MeasuredFile) -> Result<Measured, String> {
     if !m.t.windows(2).all(|w| w[0] < w[1]) {
         return Err("measured times must increase".into());
     }
-    Ok(Measured {
-        t: m.t,
-        v_cm: m.v_cm,
-        v_t: m.v_t,
-    })
+    Ok(Measured::velocities(m.t, m.v_cm, m.v_t))
 }
 
 /// A preset file's text for `spec` (SI numbers), written by the toml serializer so

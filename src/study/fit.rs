@@ -1,6 +1,7 @@
-//! Fitting the model to measured velocity series of the left ball: the paper's line
-//! fits over the sliding phase (table 1), and a least-squares fit of the exact model
-//! to every point, with uncertainties and the regime compared with what was seen.
+//! Fitting the model to measured series of the left ball: the paper's line fits over
+//! the sliding phase (table 1), and least-squares fits of the exact model to every
+//! point — of the velocities (weighted by their uncertainties when known) or of the
+//! tracked positions — with uncertainties and the regime compared with what was seen.
 
 use serde::Serialize;
 
@@ -75,7 +76,10 @@ pub struct LineFit {
 /// The sliding phase after the first impact (at t = 0): from the first frame after
 /// it until the measured v_cm and v_t meet (the last frame before they cross).
 pub fn sliding_window(m: &Measured) -> Option<(f64, f64)> {
-    let after: Vec<usize> = (0..m.t.len()).filter(|&i| m.t[i] > 0.0).collect();
+    // Frames without a measured v_t (a track without its rim mark) cannot say.
+    let after: Vec<usize> = (0..m.t.len())
+        .filter(|&i| m.t[i] > 0.0 && m.v_t[i].is_finite())
+        .collect();
     let first = *after.first()?;
     let sign0 = (m.v_cm[first] - m.v_t[first]).signum();
     let last = after
@@ -92,9 +96,15 @@ pub fn line_fit(
     window: (Option<f64>, Option<f64>),
 ) -> Result<LineFit, FitError> {
     let auto = sliding_window(m);
-    let from = window.0.or(auto.map(|w| w.0)).ok_or_else(|| {
-        FitError::Data("no measured points after the impact (t > 0) to fit".into())
-    })?;
+    // Without v_t the window still starts at the first frame after the impact.
+    let first_after = m.t.iter().copied().find(|&t| t > 0.0);
+    let from = window
+        .0
+        .or(auto.map(|w| w.0))
+        .or(first_after)
+        .ok_or_else(|| {
+            FitError::Data("no measured points after the impact (t > 0) to fit".into())
+        })?;
     let to = window.1.or(auto.map(|w| w.1)).unwrap_or(from);
     let idx: Vec<usize> = (0..m.t.len())
         .filter(|&i| m.t[i] >= from - 1e-12 && m.t[i] <= to + 1e-12)
@@ -107,7 +117,25 @@ pub fn line_fit(
     }
     let ts: Vec<f64> = idx.iter().map(|&i| m.t[i]).collect();
     let cm = line(&ts, &idx.iter().map(|&i| m.v_cm[i]).collect::<Vec<_>>());
-    let vt = line(&ts, &idx.iter().map(|&i| m.v_t[i]).collect::<Vec<_>>());
+    // v_t where it was measured (all of a velocity file; none of a track without mark).
+    let with_t: Vec<usize> = idx
+        .iter()
+        .copied()
+        .filter(|&i| m.v_t[i].is_finite())
+        .collect();
+    let vt = if with_t.len() >= 3 {
+        line(
+            &with_t.iter().map(|&i| m.t[i]).collect::<Vec<_>>(),
+            &with_t.iter().map(|&i| m.v_t[i]).collect::<Vec<_>>(),
+        )
+    } else {
+        Line {
+            intercept: f64::NAN,
+            slope: f64::NAN,
+            slope_se: f64::NAN,
+            intercept_se: f64::NAN,
+        }
+    };
     let k = scene.k();
     let g = scene.g;
     let mass = scene.left.mass;
@@ -188,7 +216,11 @@ fn with(scene: &Scene, free: &[Free], p: &[f64]) -> Scene {
 
 /// Points the model fit uses: all but the frames that straddle an impact of the
 /// model `scene` (a frame holding a jump measures neither side of it).
-fn fit_points(m: &Measured, scene: &Scene) -> Vec<usize> {
+fn fit_points(m: &Measured, scene: &Scene, target: Target) -> Vec<usize> {
+    // Positions do not jump at an impact: every frame counts.
+    if target == Target::Position {
+        return (0..m.t.len()).collect();
+    }
     let frame =
         m.t.windows(2)
             .map(|w| w[1] - w[0])
@@ -211,7 +243,24 @@ fn fit_points(m: &Measured, scene: &Scene) -> Vec<usize> {
         .collect()
 }
 
-fn residuals(scene: &Scene, m: &Measured, idx: &[usize]) -> Vec<f64> {
+/// What a model fit compares with the data.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Target {
+    /// v_cm and v_t, each residual divided by its uncertainty when the data carry one.
+    Velocity,
+    /// The centre's x (m) and the mark's angle as an arc of the contact circle (r θ, m).
+    Position,
+}
+
+/// Residuals of `scene` against `m` at `idx`, weighted (divided by the points'
+/// uncertainties, where known) or not; points not measured (NaN) are left out.
+fn residuals_of(
+    scene: &Scene,
+    m: &Measured,
+    idx: &[usize],
+    target: Target,
+    weighted: bool,
+) -> Vec<f64> {
     let t0 = m.t[0].min(-1e-3);
     let sol = engine::solve(
         scene,
@@ -221,12 +270,76 @@ fn residuals(scene: &Scene, m: &Measured, idx: &[usize]) -> Vec<f64> {
         },
     );
     let mut r = Vec::with_capacity(2 * idx.len());
-    for &i in idx {
-        let s = sol.at(m.t[i]);
-        r.push(s.left.v - m.v_cm[i]);
-        r.push(s.left.u - m.v_t[i]);
+    // A residual over its uncertainty; one without a usable uncertainty is dropped.
+    let push = |r: &mut Vec<f64>, d: f64, sigma: Option<&Vec<f64>>, i: usize| {
+        if !d.is_finite() {
+            return;
+        }
+        match sigma.filter(|_| weighted).map(|s| s[i]) {
+            None => r.push(d),
+            Some(s) if s > 0.0 && s.is_finite() => r.push(d / s),
+            Some(_) => {}
+        }
+    };
+    match target {
+        Target::Velocity => {
+            for &i in idx {
+                let s = sol.at(m.t[i]);
+                push(&mut r, s.left.v - m.v_cm[i], m.v_cm_sigma.as_ref(), i);
+                push(&mut r, s.left.u - m.v_t[i], m.v_t_sigma.as_ref(), i);
+            }
+        }
+        Target::Position => {
+            let (Some(x), radius) = (m.x.as_ref(), scene.k() * scene.radius) else {
+                return r;
+            };
+            // The impact's time and place, and the mark's angle then, were estimated
+            // from the same noisy track: each residual gets the best shift δt, δx, δθ
+            // (linearised: x moves by v δt, r θ by u δt), profiled out of the fit.
+            let theta0 = sol.angle_at(0.0)[0];
+            // (residual, ∂/∂δt, ∂/∂δx, ∂/∂δθ)
+            let mut rows: Vec<[f64; 4]> = Vec::with_capacity(2 * idx.len());
+            for &i in idx {
+                let s = sol.at(m.t[i]);
+                rows.push([s.left.x + scene.radius - x[i], s.left.v, -1.0, 0.0]);
+                if let Some(a) = &m.angle {
+                    let model = sol.angle_at(m.t[i])[0] - theta0;
+                    rows.push([radius * (model - a[i]), s.left.u, 0.0, -radius]);
+                }
+            }
+            rows.retain(|row| row.iter().all(|v| v.is_finite()));
+            let k = if m.angle.is_some() { 3 } else { 2 };
+            let mut ata = vec![vec![0.0; k]; k];
+            let mut atb = vec![0.0; k];
+            for row in &rows {
+                for a in 0..k {
+                    atb[a] -= row[1 + a] * row[0];
+                    for b in 0..k {
+                        ata[a][b] += row[1 + a] * row[1 + b];
+                    }
+                }
+            }
+            let shift = solve(ata, atb).unwrap_or_else(|| vec![0.0; k]);
+            for row in rows {
+                let d = row[0] + (0..k).map(|a| row[1 + a] * shift[a]).sum::<f64>();
+                push(&mut r, d, None, 0);
+            }
+        }
     }
     r
+}
+
+/// Parameters a fit to `target` estimates besides the free scene values.
+fn nuisance(m: &Measured, target: Target) -> usize {
+    match (target, m.angle.is_some()) {
+        (Target::Velocity, _) => 0,
+        (Target::Position, false) => 2,
+        (Target::Position, true) => 3,
+    }
+}
+
+fn residuals(scene: &Scene, m: &Measured, idx: &[usize], target: Target) -> Vec<f64> {
+    residuals_of(scene, m, idx, target, true)
 }
 
 /// Solves the small system `a x = b` (LU with partial pivoting, nalgebra).
@@ -250,8 +363,31 @@ fn inverse(a: &[Vec<f64>]) -> Option<Vec<Vec<f64>>> {
 }
 
 /// Least squares of the exact model's v_cm and v_t of the left ball to all measured
-/// points (Levenberg–Marquardt, numerical derivatives), free `free`.
+/// points (Levenberg–Marquardt, numerical derivatives), free `free`. Points with an
+/// uncertainty (`v_cm_sigma`, `v_t_sigma`) count by its inverse square; a v_t that
+/// was not measured (NaN) is left out.
 pub fn model_fit(scene: &Scene, m: &Measured, free: &[Free]) -> Result<ModelFit, FitError> {
+    model_fit_of(scene, m, free, Target::Velocity)
+}
+
+/// Least squares of the exact model's positions to a tracked series (`m.x`, and
+/// `m.angle` when the rim mark was tracked): no differentiation, so its uncertainty
+/// comes from independent residuals. `rms` is then in metres (x and r θ).
+pub fn position_fit(scene: &Scene, m: &Measured, free: &[Free]) -> Result<ModelFit, FitError> {
+    if m.x.is_none() {
+        return Err(FitError::Data(
+            "the data hold no positions (a velocity file): no position fit".into(),
+        ));
+    }
+    model_fit_of(scene, m, free, Target::Position)
+}
+
+fn model_fit_of(
+    scene: &Scene,
+    m: &Measured,
+    free: &[Free],
+    target: Target,
+) -> Result<ModelFit, FitError> {
     let start: Vec<f64> = free
         .iter()
         .map(|f| match f {
@@ -264,25 +400,25 @@ pub fn model_fit(scene: &Scene, m: &Measured, free: &[Free]) -> Result<ModelFit,
     // where impacts move past data points, and local steps get caught there.
     let mut p = start;
     if let Some(i) = free.iter().position(|f| *f == Free::Mu) {
-        p[i] = scan_mu(scene, m, free, &p, i);
+        p[i] = scan_mu(scene, m, free, &p, i, target);
     }
     // Then every free value together from there, on the frames away from the model's
     // impacts (chosen again once the fit has moved them).
-    let mut idx = fit_points(m, &with(scene, free, &p));
+    let mut idx = fit_points(m, &with(scene, free, &p), target);
     for _ in 0..3 {
-        p = least_squares(scene, m, free, &idx, p)?;
-        let next = fit_points(m, &with(scene, free, &p));
+        p = least_squares(scene, m, free, &idx, p, target)?;
+        let next = fit_points(m, &with(scene, free, &p), target);
         if next == idx {
             break;
         }
         idx = next;
     }
     let fitted = with(scene, free, &p);
-    let r = residuals(&fitted, m, &idx);
+    let r = residuals(&fitted, m, &idx, target);
     let n = p.len();
     let cost: f64 = r.iter().map(|x| x * x).sum();
-    let s2 = cost / (r.len() - n) as f64;
-    let j = jacobian(scene, m, free, &idx, &p, &r);
+    let s2 = cost / r.len().saturating_sub(n + nuisance(m, target)).max(1) as f64;
+    let j = jacobian(scene, m, free, &idx, &p, &r, target);
     let cov = inverse(&normal_matrix(&j)).unwrap_or_else(|| vec![vec![f64::NAN; n]; n]);
     let se = |f: Free| {
         free.iter()
@@ -304,29 +440,39 @@ pub fn model_fit(scene: &Scene, m: &Measured, free: &[Free]) -> Result<ModelFit,
         v0_se: se(Free::V0),
         restitution: fitted.restitution,
         restitution_se: se(Free::Restitution),
-        rms: (cost / r.len() as f64).sqrt(),
+        rms: {
+            // In the data's own units, whatever the weights.
+            let raw = residuals_of(&fitted, m, &idx, target, false);
+            (raw.iter().map(|x| x * x).sum::<f64>() / raw.len().max(1) as f64).sqrt()
+        },
         points: idx.len(),
         regime_predicted,
-        regime_observed: observed_regime(m, rest_band),
+        regime_observed: observed_after(
+            m,
+            rest_band,
+            sliding_window(m)
+                .map(|w| w.1)
+                .or_else(|| rolling_time(&fitted)),
+        ),
         rest_band,
         v_roll,
     })
 }
 
 /// Mean squared residual of `scene`, over the frames away from its own impacts.
-fn mean_cost(scene: &Scene, m: &Measured) -> f64 {
-    let idx = fit_points(m, scene);
-    let r = residuals(scene, m, &idx);
+fn mean_cost(scene: &Scene, m: &Measured, target: Target) -> f64 {
+    let idx = fit_points(m, scene, target);
+    let r = residuals(scene, m, &idx, target);
     r.iter().map(|x| x * x).sum::<f64>() / r.len().max(1) as f64
 }
 
 /// The μ that minimises [`mean_cost`]: a log-spaced scan of 0.01 … 1, then golden
 /// section between the neighbours of the best scan point.
-fn scan_mu(scene: &Scene, m: &Measured, free: &[Free], p: &[f64], i: usize) -> f64 {
+fn scan_mu(scene: &Scene, m: &Measured, free: &[Free], p: &[f64], i: usize, target: Target) -> f64 {
     let cost = |mu: f64| {
         let mut q = p.to_vec();
         q[i] = mu;
-        mean_cost(&with(scene, free, &q), m)
+        mean_cost(&with(scene, free, &q), m, target)
     };
     let grid: Vec<f64> = (0..=80)
         .map(|k| 0.01 * 100f64.powf(k as f64 / 80.0))
@@ -380,6 +526,7 @@ fn jacobian(
     idx: &[usize],
     p: &[f64],
     r0: &[f64],
+    target: Target,
 ) -> Vec<Vec<f64>> {
     (0..p.len())
         .map(|j| {
@@ -389,7 +536,7 @@ fn jacobian(
             }
             let mut q = p.to_vec();
             q[j] += h;
-            residuals(&with(scene, free, &q), m, idx)
+            residuals(&with(scene, free, &q), m, idx, target)
                 .iter()
                 .zip(r0)
                 .map(|(a, b)| (a - b) / h)
@@ -405,6 +552,7 @@ fn least_squares(
     free: &[Free],
     idx: &[usize],
     mut p: Vec<f64>,
+    target: Target,
 ) -> Result<Vec<f64>, FitError> {
     if idx.len() < free.len() + 2 {
         return Err(FitError::Data(format!(
@@ -414,7 +562,7 @@ fn least_squares(
         )));
     }
     let cost = |p: &[f64]| -> f64 {
-        residuals(&with(scene, free, p), m, idx)
+        residuals(&with(scene, free, p), m, idx, target)
             .iter()
             .map(|r| r * r)
             .sum()
@@ -422,8 +570,8 @@ fn least_squares(
     let mut lambda = 1e-3;
     let mut c = cost(&p);
     for _ in 0..100 {
-        let r0 = residuals(&with(scene, free, &p), m, idx);
-        let j = jacobian(scene, m, free, idx, &p, &r0);
+        let r0 = residuals(&with(scene, free, &p), m, idx, target);
+        let j = jacobian(scene, m, free, idx, &p, &r0, target);
         let jtj = normal_matrix(&j);
         let jtr: Vec<f64> = j
             .iter()
@@ -488,7 +636,26 @@ pub fn rest_band(m: &Measured) -> f64 {
 /// What the data show after the sliding phase: the mean v_cm of the left ball from
 /// the end of sliding to the end of the series (or the next impact, a jump in v_cm).
 pub fn observed_regime(m: &Measured, band: f64) -> Regime {
-    let Some((_, to)) = sliding_window(m) else {
+    observed_after(m, band, sliding_window(m).map(|w| w.1))
+}
+
+/// When the left ball of `scene` rolls again after the first impact: where a series
+/// without v_t has its sliding phase end.
+fn rolling_time(scene: &Scene) -> Option<f64> {
+    let sol = engine::solve(scene, &Span::default());
+    sol.events
+        .iter()
+        .find(|e| {
+            e.t > 0.0
+                && e.kind == crate::physics::solution::EventKind::Rolling
+                && e.ball != crate::physics::solution::Who::Right
+        })
+        .map(|e| e.t)
+}
+
+/// [`observed_regime`] with the end of the sliding phase given.
+fn observed_after(m: &Measured, band: f64, to: Option<f64>) -> Regime {
+    let Some(to) = to else {
         return Regime::Rest;
     };
     let after: Vec<usize> = (0..m.t.len()).filter(|&i| m.t[i] > to).collect();
@@ -542,8 +709,29 @@ pub fn fit_all(
     window: (Option<f64>, Option<f64>),
     free: &[Free],
 ) -> Result<Fits, FitError> {
+    let model_fit = model_fit(scene, m, free)?;
+    // Without v_t the data cannot say when sliding ends: the fitted model does.
+    let window = match window {
+        (from, None) if !m.has_v_t() => {
+            let fitted = Scene {
+                mu: model_fit.mu,
+                restitution: model_fit.restitution,
+                left: crate::physics::scene::Ball {
+                    v0: model_fit.v0,
+                    ..scene.left
+                },
+                right: crate::physics::scene::Ball {
+                    v0: model_fit.v0,
+                    ..scene.right
+                },
+                ..*scene
+            };
+            (from, rolling_time(&fitted).map(|t| t - 1e-9))
+        }
+        w => w,
+    };
     Ok(Fits {
         line_fit: line_fit(m, scene, window)?,
-        model_fit: model_fit(scene, m, free)?,
+        model_fit,
     })
 }

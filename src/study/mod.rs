@@ -1,8 +1,11 @@
 //! Slow, pure analyses of a scene: methods against the exact solution (`compare`),
 //! the model against measured data (`fit`), regime maps (`sweep`), and the SVG
-//! figures of all three (`figures`).
+//! figures of all three (`figures`), position tracks to velocities (`track`) and
+//! synthetic tracked videos to test them against truth (`video`).
 
 pub mod compare;
 pub mod figures;
 pub mod fit;
 pub mod sweep;
+pub mod track;
+pub mod video;

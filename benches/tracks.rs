@@ -1,0 +1,43 @@
+//! Track import speed (issue 12 target: reading and differentiating a 10,000-frame
+//! track in at most 10 ms).
+
+use std::hint::black_box;
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use groovelab::input::data::Reading;
+use groovelab::input::preset::Preset;
+use groovelab::study::track::{self, Derive};
+use groovelab::study::video::{self, Format, Video};
+
+fn tracks(c: &mut Criterion) {
+    let scene = Preset::load("paper-b4.9")
+        .unwrap()
+        .spec
+        .resolve()
+        .unwrap()
+        .0;
+    // 10,000 frames at 240 frames/s with 0.3 mm noise, centre and rim mark.
+    let v = Video {
+        fps: 240.0,
+        noise: 3e-4,
+        from: -0.2,
+        to: -0.2 + 9999.0 / 240.0,
+        ..Video::default()
+    };
+    let text = video::write(&video::track(&scene, &v), Format::TrackerMulti);
+    c.bench_function("read and differentiate a 10,000-frame track", |b| {
+        b.iter(|| {
+            track::load(
+                black_box(&text),
+                "bench.txt",
+                &Reading::default(),
+                &scene,
+                &Derive::default(),
+            )
+            .unwrap()
+        })
+    });
+}
+
+criterion_group!(benches, tracks);
+criterion_main!(benches);

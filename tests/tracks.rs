@@ -1,0 +1,365 @@
+//! Position tracks against truth: synthetic videos of the exact solution, in every
+//! format, read, differentiated and fitted back to μ_k; odd frames, gaps, missing
+//! pieces; the committed example file.
+
+use std::process::Command;
+
+use groovelab::input::data::{self, Reading, Series};
+use groovelab::input::preset::Preset;
+use groovelab::physics::scene::Scene;
+use groovelab::study::fit::{self, Free};
+use groovelab::study::track::{self, Derive, Loaded, TrackFits};
+use groovelab::study::video::{self, Format, Video};
+
+const MU: f64 = 0.17;
+
+fn scene(name: &str) -> Scene {
+    Preset::load(name).unwrap().spec.resolve().unwrap().0
+}
+
+fn try_load(scene: &Scene, text: &str) -> Result<Loaded, String> {
+    track::load(
+        text,
+        "video.txt",
+        &Reading::default(),
+        scene,
+        &Derive::default(),
+    )
+    .map_err(|e| e.to_string())
+}
+
+/// Both fits of a synthetic video, started away from the truth (μ = 0.3).
+fn fits_of(scene: &Scene, text: &str) -> (Loaded, TrackFits) {
+    let l = try_load(scene, text).unwrap();
+    let start = Scene { mu: 0.3, ..*scene };
+    let f = track::fit_tracks(&start, &l.measured, &[Free::Mu]).unwrap();
+    (l, f)
+}
+
+fn fits(scene: &Scene, video: &Video, format: Format) -> (Loaded, TrackFits) {
+    fits_of(scene, &video::write(&video::track(scene, video), format))
+}
+
+/// The README's recovery table: the largest |μ_k − 0.17| over 5 seeds at each frame
+/// rate and noise, for both fits, with the bounds the issue asks for.
+#[test]
+fn mu_is_recovered_at_every_frame_rate_and_noise() {
+    let s = scene("paper-b4.9");
+    println!(
+        "| frames/s | noise | position fit: max abs(Δμ_k) | its 2σ | velocity fit: max abs(Δμ_k) |"
+    );
+    println!("| --- | --- | --- | --- | --- |");
+    for fps in [30.0, 60.0, 120.0, 240.0] {
+        for noise in [1e-4, 3e-4, 1e-3] {
+            let (mut dp, mut dv, mut se) = (0.0f64, 0.0f64, 0.0f64);
+            for seed in 1..=5 {
+                let v = Video {
+                    fps,
+                    noise,
+                    seed,
+                    ..Video::default()
+                };
+                let (_, f) = fits(&s, &v, Format::TrackerMulti);
+                dp = dp.max((f.position.mu - MU).abs());
+                dv = dv.max((f.velocity.mu - MU).abs());
+                se = se.max(2.0 * f.position.mu_se);
+            }
+            println!(
+                "| {fps} | {:.1} mm | {dp:.4} | {se:.4} | {dv:.4} |",
+                noise * 1e3
+            );
+            // Measured worst cases: position 0.0005 (30 fps, 1 mm), velocity 0.0048
+            // (30 fps, 1 mm) and 0.0014 at 60 fps and more; bounds with some margin.
+            assert!(
+                dp <= 0.002,
+                "{fps} fps, {noise} m: position fit off by {dp}"
+            );
+            let bound = if fps < 60.0 { 0.008 } else { 0.004 };
+            assert!(
+                dv <= bound,
+                "{fps} fps, {noise} m: velocity fit off by {dv}"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_position_fit_uncertainty_covers_the_truth() {
+    let s = scene("paper-b4.9");
+    let seeds = 20;
+    let inside = (1..=seeds)
+        .filter(|&seed| {
+            let v = Video {
+                fps: 60.0,
+                noise: 3e-4,
+                seed,
+                ..Video::default()
+            };
+            let (_, f) = fits(&s, &v, Format::CsvComma);
+            (f.position.mu - MU).abs() <= 2.0 * f.position.mu_se
+        })
+        .count();
+    // ±2σ is 95 %: 17 of 20 or more (binomial: fails by chance with p ≈ 0.08 for a
+    // perfectly calibrated σ; measured 19 of 20 with these seeds).
+    assert!(inside >= 17, "{inside} of {seeds} inside ±2σ");
+}
+
+#[test]
+fn every_format_reads_and_fits() {
+    for preset in ["paper-b3.5", "paper-b4.9"] {
+        let s = scene(preset);
+        for format in Format::ALL {
+            let v = Video::default();
+            let (l, f) = fits(&s, &v, format);
+            let found = l.found.unwrap();
+            assert!(
+                (f.position.mu - MU).abs() <= 0.002,
+                "{preset} {}: μ {}",
+                format.name(),
+                f.position.mu
+            );
+            assert!(
+                (found.frame_rate - 120.0).abs() < 1e-3,
+                "{}",
+                found.frame_rate
+            );
+            // The impact at the file's t = 0.2 s, within a millisecond.
+            assert!((found.impact_t - 0.2).abs() < 1e-3, "{}", found.impact_t);
+            let single = format == Format::TrackerSingle;
+            assert_eq!(found.mark.is_none(), single, "{}", format.name());
+            assert_eq!(f.uses_spin, !single);
+            assert_eq!(f.velocity.regime_predicted, f.velocity.regime_observed);
+            assert_eq!(f.position.regime_predicted, f.position.regime_observed);
+        }
+    }
+}
+
+#[test]
+fn either_direction_any_origin_flipped_axes_and_clip_start() {
+    let s = scene("paper-b4.9");
+    for (flip_x, flip_y) in [(false, true), (true, false), (true, true)] {
+        let v = Video {
+            flip_x,
+            flip_y,
+            origin: (1.234, -0.5),
+            t_impact: 3.7,
+            ..Video::default()
+        };
+        let (l, f) = fits(&s, &v, Format::TrackerMulti);
+        let found = l.found.unwrap();
+        assert_eq!(found.direction, if flip_x { -1.0 } else { 1.0 });
+        assert!((found.impact_t - 3.7).abs() < 1e-3, "{}", found.impact_t);
+        assert!((found.impact_x - 1.234).abs() < 1e-3, "{}", found.impact_x);
+        assert!((f.position.mu - MU).abs() <= 0.002, "μ {}", f.position.mu);
+        // Rolling before the impact: v_t = v_cm (> 0 toward the other ball) whatever
+        // the axes; 0.7928 m/s is the preset's approach speed.
+        let m = &l.measured;
+        let i = m.t.partition_point(|&t| t < -0.1);
+        assert!((m.v_cm[i] - 0.7928).abs() < 0.02, "v_cm {}", m.v_cm[i]);
+        assert!((m.v_t[i] - 0.7928).abs() < 0.03, "v_t {}", m.v_t[i]);
+    }
+}
+
+#[test]
+fn gaps_in_the_track_are_bridged() {
+    let s = scene("paper-b4.9");
+    let mut t = video::track(&s, &Video::default());
+    // Missing rows: every 7th frame dropped; empty cells: some centres, some marks.
+    let keep: Vec<usize> = (0..t.t.len()).filter(|i| i % 7 != 3).collect();
+    let pick = |v: &Vec<f64>| keep.iter().map(|&i| v[i]).collect::<Vec<f64>>();
+    t.t = pick(&t.t);
+    t.x = pick(&t.x);
+    t.y = pick(&t.y);
+    let (mx, my) = t.mark.take().unwrap();
+    let (mut mx, my) = (pick(&mx), pick(&my));
+    for i in (5..t.t.len()).step_by(11) {
+        t.x[i] = f64::NAN;
+    }
+    for i in (2..t.t.len()).step_by(13) {
+        mx[i] = f64::NAN;
+    }
+    t.mark = Some((mx, my));
+    let text = video::write(&t, Format::TrackerMulti);
+    assert!(text.contains("\t\t"), "the file has empty cells");
+    let (l, f) = fits_of(&s, &text);
+    assert!((f.position.mu - MU).abs() <= 0.003, "μ {}", f.position.mu);
+    assert!((f.velocity.mu - MU).abs() <= 0.006, "μ {}", f.velocity.mu);
+    // Frames without a mark have no v_t; the others do.
+    let m = &l.measured;
+    assert!(m.v_t.iter().any(|v| v.is_nan()) && m.has_v_t());
+}
+
+#[test]
+fn without_a_mark_the_fits_use_the_centre_only() {
+    let s = scene("paper-b4.9");
+    let v = Video {
+        mark: false,
+        ..Video::default()
+    };
+    let text = video::write(&video::track(&s, &v), Format::CsvSemicolon);
+    let (l, f) = fits_of(&s, &text);
+    assert!(!f.uses_spin);
+    assert!(l.measured.v_t.iter().all(|v| v.is_nan()));
+    assert!((f.position.mu - MU).abs() <= 0.003, "μ {}", f.position.mu);
+    // The line fits still work: a_cm from v_cm, over the fitted model's sliding phase.
+    let all = fit::fit_all(&s, &l.measured, (None, None), &[Free::Mu]).unwrap();
+    assert!(
+        (all.line_fit.mu_cm - MU).abs() <= 0.02,
+        "{}",
+        all.line_fit.mu_cm
+    );
+    assert!(all.line_fit.mu_t.is_nan());
+}
+
+#[test]
+fn missing_pieces_give_one_line_errors() {
+    let s = scene("paper-b4.9");
+    let cut = |from: f64, to: f64| {
+        let v = Video {
+            from,
+            to,
+            ..Video::default()
+        };
+        try_load(
+            &s,
+            &video::write(&video::track(&s, &v), Format::TrackerMulti),
+        )
+        .map(|_| ())
+        .unwrap_err()
+    };
+    let cases = [
+        (cut(-0.025, 0.5), "frames before the impact at t = 0.20"),
+        (cut(-0.2, 0.02), "frames after the impact at t = 0.20"),
+        (cut(-0.008, 0.8), "the track starts too late"),
+        (cut(-0.03, 0.01), "frames with a centre position, at least 10 needed"),
+        (
+            try_load(&s, "mass A\nt\tv_{x}\tv_{y}\n0\t\t\n0.01\t0.5\t0\n").unwrap_err(),
+            "no position column x",
+        ),
+        (
+            try_load(&s, "t,x\n0,0\n0.01,0.01\n0.02,0.02\n0.03,0.03\n0.04,0.04\n0.05,0.05\n0.06,0.06\n0.07,0.07\n0.08,0.08\n0.09,0.09\n0.1,0.1\n0.11,0.11\n").unwrap_err(),
+            "no impact found",
+        ),
+    ];
+    for (e, want) in cases {
+        assert!(e.contains(want), "{e} / {want}");
+        assert!(!e.contains('\n'), "one line: {e}");
+    }
+}
+
+#[test]
+fn velocity_files_read_as_before() {
+    let text = "t_s,v_cm_m_per_s,v_t_m_per_s\n-0.02,0.79,0.78\n0,0.0925,0.78\n0.02,-0.64,0.70\n0.04,-0.63,0.68\n";
+    let Series::Velocities(m) = data::read(text, "v.csv", &Reading::default()).unwrap() else {
+        panic!("a velocity file");
+    };
+    assert_eq!(m, data::parse(text, "v.csv", &Reading::default()).unwrap());
+    assert!(m.x.is_none() && m.v_cm_sigma.is_none());
+    let l = try_load(&scene("paper-b4.9"), text).unwrap();
+    assert!(l.found.is_none());
+}
+
+/// The example "video" in docs/: regenerate with `GROOVELAB_REGENERATE=1 cargo test
+/// --test tracks example`.
+fn example_text() -> String {
+    let s = scene("paper-b4.9");
+    video::write(&video::track(&s, &example_video()), Format::TrackerMulti)
+}
+
+fn example_video() -> Video {
+    Video {
+        fps: 120.0,
+        noise: 3e-4,
+        seed: 49,
+        from: -0.2,
+        to: 0.8,
+        mark: true,
+        flip_x: false,
+        flip_y: false,
+        origin: (0.3125, 0.0275),
+        t_impact: 0.2,
+    }
+}
+
+const EXAMPLE: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/docs/video/paper-b4.9-tracker.txt"
+);
+
+#[test]
+fn example_file_is_what_the_generator_makes() {
+    let text = example_text();
+    if std::env::var_os("GROOVELAB_REGENERATE").is_some() {
+        std::fs::create_dir_all(std::path::Path::new(EXAMPLE).parent().unwrap()).unwrap();
+        std::fs::write(EXAMPLE, &text).unwrap();
+    }
+    let committed = std::fs::read_to_string(EXAMPLE).unwrap();
+    assert!(
+        committed == text,
+        "docs/video/paper-b4.9-tracker.txt differs from the generator's output; regenerate it"
+    );
+}
+
+fn groovelab(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_groovelab"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+#[test]
+fn cli_fits_the_example_video_end_to_end() {
+    let out = groovelab(&["fit", "--data", EXAMPLE]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let table = String::from_utf8(out.stdout).unwrap();
+    for want in [
+        "Tracker multi-track",
+        "centre 'mass A'",
+        "rim mark 'mass B'",
+        "positions (direct)",
+        "recollide / recollide",
+    ] {
+        assert!(table.contains(want), "{want}:\n{table}");
+    }
+    let out = groovelab(&["fit", "--data", EXAMPLE, "--format", "json"]);
+    assert!(out.status.success());
+    let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    for key in ["line_fit", "model_fit", "position_fit", "track"] {
+        assert!(j.get(key).is_some(), "{key}");
+    }
+    let mu = j["position_fit"]["mu"].as_f64().unwrap();
+    assert!((mu - MU).abs() <= 0.002, "{mu}");
+    assert!((j["model_fit"]["mu"].as_f64().unwrap() - MU).abs() <= 0.004);
+    assert_eq!(j["track"]["direction"].as_f64(), Some(1.0));
+    // A velocity file still prints no position fit.
+    let out = groovelab(&["fit", "--format", "json"]);
+    let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert!(j.get("position_fit").is_none() && j.get("model_fit").is_some());
+}
+
+#[test]
+fn cli_error_for_a_track_without_an_impact_is_one_line() {
+    let dir = std::env::temp_dir().join(format!("groovelab-tracks-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let file = dir.join("late.txt");
+    let s = scene("paper-b4.9");
+    let v = Video {
+        from: -0.2,
+        to: 0.02,
+        ..Video::default()
+    };
+    std::fs::write(&file, video::write(&video::track(&s, &v), Format::Tsv)).unwrap();
+    let out = groovelab(&["fit", "--data", file.to_str().unwrap()]);
+    let _ = std::fs::remove_dir_all(&dir);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(out.stdout.is_empty());
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        err.starts_with("error: ") && err.contains("frames after the impact"),
+        "{err}"
+    );
+}
