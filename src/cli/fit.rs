@@ -8,7 +8,7 @@ use super::{CliError, DataArgs, FitArgs, FitFormat, SceneArgs, methods::write_at
 use crate::input::data::Measured;
 use crate::input::data::{self, Reading};
 use crate::input::preset::Preset;
-use crate::input::units::{Dimension, parse_quantity};
+use crate::input::units::{Dimension, unit_factor};
 use crate::physics::scene::Scene;
 use crate::study::fit::{self, Fits, Free};
 
@@ -26,10 +26,7 @@ pub fn measured(preset: &Preset, args: &DataArgs) -> Result<Measured, CliError> 
         .map_err(|e| CliError::Invalid(format!("cannot read --data {}: {e}", path.display())))?;
     let unit = |text: &Option<String>, dim: Dimension, flag: &str| {
         text.as_ref()
-            .map(|u| {
-                parse_quantity(&format!("1{u}"), dim)
-                    .map_err(|e| CliError::Invalid(format!("{flag} {u}: {e}")))
-            })
+            .map(|u| unit_factor(u, dim).map_err(|e| CliError::Invalid(format!("{flag} {u}: {e}"))))
             .transpose()
     };
     let reading = Reading {
