@@ -22,8 +22,8 @@ pub fn measured(preset: &Preset, args: &DataArgs) -> Result<Measured, CliError> 
             ))
         });
     };
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| CliError::Invalid(format!("cannot read --data {}: {e}", path.display())))?;
+    let text = crate::input::read_user_file(path, "--data", crate::input::MAX_FILE_BYTES)
+        .map_err(|e| CliError::Invalid(e.to_string()))?;
     let unit = |text: &Option<String>, dim: Dimension, flag: &str| {
         text.as_ref()
             .map(|u| unit_factor(u, dim).map_err(|e| CliError::Invalid(format!("{flag} {u}: {e}"))))

@@ -1,0 +1,233 @@
+//! Regression tests of issue 10 (reliability): hostile input never hangs, panics,
+//! fills memory, leaves files behind or yields inf/NaN; each test is named after
+//! what it guards.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+/// What a run of the binary gave.
+struct Ran {
+    code: Option<i32>,
+    stdout: String,
+    stderr: String,
+}
+
+/// Runs the binary with no stdin; a run longer than `limit` is killed and fails the
+/// test (these are the hangs of issue 10).
+fn groovelab_within(args: &[&str], limit: Duration) -> Ran {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_groovelab"))
+        .args(args)
+        .env("GROOVELAB_PRESETS", "/nonexistent-groovelab-presets")
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let start = Instant::now();
+    // Read the pipes on threads so a chatty child cannot block on a full pipe.
+    let mut out = child.stdout.take().unwrap();
+    let mut err = child.stderr.take().unwrap();
+    let out = std::thread::spawn(move || {
+        let mut s = Vec::new();
+        std::io::Read::read_to_end(&mut out, &mut s).unwrap();
+        s
+    });
+    let err = std::thread::spawn(move || {
+        let mut s = Vec::new();
+        std::io::Read::read_to_end(&mut err, &mut s).unwrap();
+        s
+    });
+    loop {
+        if let Some(status) = child.try_wait().unwrap() {
+            return Ran {
+                code: status.code(),
+                stdout: String::from_utf8_lossy(&out.join().unwrap()).into_owned(),
+                stderr: String::from_utf8_lossy(&err.join().unwrap()).into_owned(),
+            };
+        }
+        if start.elapsed() > limit {
+            let _ = child.kill();
+            let _ = child.wait();
+            panic!("{args:?} still running after {limit:?}");
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    }
+}
+
+fn groovelab(args: &[&str]) -> Ran {
+    groovelab_within(args, Duration::from_secs(30))
+}
+
+/// Exit 2, nothing on stdout, one `error:` line that mentions `mentions`.
+fn assert_refused(args: &[&str], mentions: &str) -> String {
+    let r = groovelab(args);
+    assert_eq!(r.code, Some(2), "{args:?}: {}", r.stderr);
+    assert!(r.stdout.is_empty(), "{args:?} printed {}", r.stdout);
+    let first = r.stderr.lines().next().unwrap_or("");
+    assert!(first.starts_with("error: "), "{args:?}: {}", r.stderr);
+    assert!(
+        first.contains(mentions),
+        "{args:?}: {first:?} lacks {mentions:?}"
+    );
+    for bad in ["inf", "NaN", "panicked"] {
+        assert!(!first.contains(bad), "{args:?}: {first:?} says {bad}");
+    }
+    first.to_string()
+}
+
+/// A fresh scratch directory for one test.
+fn scratch(test: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!(
+        "groovelab-reliability-{}-{test}",
+        std::process::id()
+    ));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn s(p: &Path) -> &str {
+    p.to_str().unwrap()
+}
+
+/// A measured series in the shared CSV format (paper-b4.9's first frames).
+const GOOD_CSV: &str = "t_s,v_cm_m_per_s,v_t_m_per_s\n-0.04,0.80,0.79\n-0.02,0.79,0.78\n0,0.0925,0.78\n0.02,-0.64,0.70\n0.04,-0.63,0.68\n0.06,-0.60,0.64\n0.08,-0.57,0.60\n";
+
+// Item 3: `--data` and preset files are regular files of sane size.
+
+#[test]
+fn data_and_preset_paths_that_are_not_regular_files_fail_at_once() {
+    let dir = scratch("nonregular");
+    let fifo = dir.join("fifo.csv");
+    let made = Command::new("mkfifo").arg(&fifo).status();
+    let mut paths = vec!["/dev/zero".to_string(), "/dev/urandom".to_string()];
+    paths.push(s(&dir).to_string());
+    if made.is_ok_and(|s| s.success()) {
+        paths.push(s(&fifo).to_string());
+    }
+    let limit = Duration::from_secs(10);
+    for p in &paths {
+        for args in [
+            vec!["fit", "--data", p.as_str()],
+            vec!["render", "--data", p.as_str(), "--size", "80x24"],
+            vec!["simulate", "--preset", p.as_str()],
+        ] {
+            let r = groovelab_within(&args, limit);
+            assert_eq!(r.code, Some(2), "{args:?}: {}", r.stderr);
+            assert!(
+                r.stderr.starts_with("error: ") && r.stderr.contains("allowed a regular file"),
+                "{args:?}: {}",
+                r.stderr
+            );
+            assert_eq!(r.stderr.lines().count(), 1, "{args:?}: {}", r.stderr);
+        }
+    }
+}
+
+#[test]
+fn data_files_over_the_size_limit_are_refused_before_reading() {
+    let dir = scratch("big");
+    let big = dir.join("big.csv");
+    // A sparse file: 64 MiB + 1 byte on disk costs nothing.
+    let f = std::fs::File::create(&big).unwrap();
+    f.set_len(groovelab::input::MAX_FILE_BYTES + 1).unwrap();
+    assert_refused(
+        &["fit", "--data", s(&big)],
+        "at most 67108864 bytes (64 MiB)",
+    );
+    assert_refused(&["simulate", "--preset", s(&big)], "at most 67108864 bytes");
+}
+
+#[test]
+fn a_symlink_to_a_regular_data_file_is_followed() {
+    let dir = scratch("symlink");
+    let real = dir.join("real.csv");
+    std::fs::write(&real, GOOD_CSV).unwrap();
+    let link = dir.join("link.csv");
+    std::os::unix::fs::symlink(&real, &link).unwrap();
+    let r = groovelab(&["fit", "--data", s(&link), "--format", "json"]);
+    assert_eq!(r.code, Some(0), "{}", r.stderr);
+}
+
+// Item 11: extreme exponents.
+
+#[test]
+fn extreme_exponents_are_out_of_range_errors() {
+    assert_refused(
+        &[
+            "simulate",
+            "--sample",
+            "1e-2147483648ms",
+            "--format",
+            "json",
+        ],
+        "out of range",
+    );
+    assert_refused(&["simulate", "--radius", "1e-2147483648cm"], "out of range");
+    assert_refused(&["simulate", "--width", "1e-2147483649"], "out of range");
+    assert_refused(&["simulate", "--t-end", "1e-400"], "out of range");
+    let dir = scratch("exponent");
+    let p = dir.join("p.toml");
+    std::fs::write(
+        &p,
+        "name = \"x\"\ndescription = \"d\"\n[scene]\nradius = \"1e-2147483648cm\"\n",
+    )
+    .unwrap();
+    assert_refused(&["simulate", "--preset", s(&p)], "out of range");
+}
+
+// Item 13: CSV headers and unit options.
+
+#[test]
+fn csv_column_names_with_digits_are_not_units() {
+    let dir = scratch("headers");
+    for header in ["t2", "t_1", "time0"] {
+        let p = dir.join(format!("{header}.csv"));
+        let body = GOOD_CSV.split_once('\n').unwrap().1;
+        std::fs::write(&p, format!("{header},v_cm,v_t\n{body}")).unwrap();
+        assert_refused(&["fit", "--data", s(&p)], "no column 't'");
+    }
+}
+
+#[test]
+fn unit_options_take_unit_names_only() {
+    let dir = scratch("unitopts");
+    let p = dir.join("d.csv");
+    std::fs::write(
+        &p,
+        GOOD_CSV.replace("t_s,v_cm_m_per_s,v_t_m_per_s", "t,v_cm,v_t"),
+    )
+    .unwrap();
+    for (flag, unit) in [
+        ("--time-unit", "e5"),
+        ("--time-unit", "0"),
+        ("--speed-unit", "7"),
+        ("--speed-unit", "1e300"),
+    ] {
+        assert_refused(&["fit", "--data", s(&p), flag, unit], "unknown unit");
+    }
+    let r = groovelab(&[
+        "fit",
+        "--data",
+        s(&p),
+        "--time-unit",
+        "s",
+        "--speed-unit",
+        "m/s",
+    ]);
+    assert_eq!(r.code, Some(0), "{}", r.stderr);
+}
+
+#[test]
+fn a_utf8_byte_order_mark_does_not_hide_the_header() {
+    let dir = scratch("bom");
+    let p = dir.join("bom.csv");
+    std::fs::write(&p, format!("\u{feff}{GOOD_CSV}")).unwrap();
+    let with = groovelab(&["fit", "--data", s(&p), "--format", "json"]);
+    assert_eq!(with.code, Some(0), "{}", with.stderr);
+    let q = dir.join("plain.csv");
+    std::fs::write(&q, GOOD_CSV).unwrap();
+    let without = groovelab(&["fit", "--data", s(&q), "--format", "json"]);
+    assert_eq!(with.stdout, without.stdout);
+}
