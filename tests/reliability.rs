@@ -70,7 +70,7 @@ fn assert_refused(args: &[&str], mentions: &str) -> String {
         first.contains(mentions),
         "{args:?}: {first:?} lacks {mentions:?}"
     );
-    for bad in ["inf", "NaN", "panicked"] {
+    for bad in ["= inf", "= -inf", " inf ", "NaN", "panicked"] {
         assert!(!first.contains(bad), "{args:?}: {first:?} says {bad}");
     }
     first.to_string()
@@ -230,4 +230,59 @@ fn a_utf8_byte_order_mark_does_not_hide_the_header() {
     std::fs::write(&q, GOOD_CSV).unwrap();
     let without = groovelab(&["fit", "--data", s(&q), "--format", "json"]);
     assert_eq!(with.stdout, without.stdout);
+}
+
+// Items 1 and 2: figures never loop on infinite or empty ranges.
+
+/// The run ends in time with exit 0 (an SVG on stdout) or 2 (one `error:` line).
+fn assert_svg_or_one_error(args: &[&str]) {
+    let r = groovelab_within(args, Duration::from_secs(30));
+    match r.code {
+        Some(0) => assert!(r.stdout.starts_with("<svg"), "{args:?}"),
+        Some(2) => {
+            assert!(r.stdout.is_empty(), "{args:?}");
+            assert!(r.stderr.starts_with("error: "), "{args:?}: {}", r.stderr);
+            assert_eq!(r.stderr.lines().count(), 1, "{args:?}: {}", r.stderr);
+            assert!(
+                !r.stderr.contains("NaN") && !r.stderr.contains("= inf"),
+                "{}",
+                r.stderr
+            );
+        }
+        other => panic!("{args:?}: exit {other:?}: {}", r.stderr),
+    }
+}
+
+#[test]
+fn compare_exact_alone_as_svg_is_an_error_not_a_hang() {
+    assert_refused(
+        &["compare", "--methods", "exact", "--format", "svg"],
+        "no time-stepping run",
+    );
+}
+
+#[test]
+fn fit_figures_of_overflowing_scenes_or_data_end() {
+    assert_svg_or_one_error(&["fit", "--format", "svg", "--v0", "1e308"]);
+    assert_svg_or_one_error(&["fit", "--v0", "1e308"]);
+    let dir = scratch("fitsvg");
+    // inf in a preset's measured v_cm is refused when the preset is read.
+    let p = dir.join("inf.toml");
+    std::fs::write(
+        &p,
+        "name = \"x\"\ndescription = \"d\"\n[scene]\n[measured]\nt = [-0.02, 0.0, 0.02, 0.04]\nv_cm = [0.8, inf, -0.6, -0.6]\nv_t = [0.8, 0.8, 0.7, 0.7]\n",
+    )
+    .unwrap();
+    assert_refused(&["fit", "--format", "svg", "--preset", s(&p)], "not finite");
+    // Huge but finite measured speeds: a figure or one error, in time.
+    let q = dir.join("huge.csv");
+    std::fs::write(
+        &q,
+        GOOD_CSV
+            .replace("-0.63", "-1e308")
+            .replace("0.79,", "1e300,"),
+    )
+    .unwrap();
+    assert_svg_or_one_error(&["fit", "--format", "svg", "--data", s(&q)]);
+    assert_svg_or_one_error(&["fit", "--format", "svg", "--data", s(&q), "--v0", "1e300"]);
 }

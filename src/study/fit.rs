@@ -531,8 +531,42 @@ pub fn fit_all(
     window: (Option<f64>, Option<f64>),
     free: &[Free],
 ) -> Result<Fits, FitError> {
-    Ok(Fits {
+    let fits = Fits {
         line_fit: line_fit(m, scene, window)?,
         model_fit: model_fit(scene, m, free)?,
-    })
+    };
+    check_finite(&fits)?;
+    Ok(fits)
+}
+
+/// Every number a fit reports is finite, or the fit is an error: an overflowing
+/// scene (v0 = 1e308) must not print "RMS residual inf" or "± NaN".
+fn check_finite(f: &Fits) -> Result<(), FitError> {
+    let (l, m) = (&f.line_fit, &f.model_fit);
+    let named = [
+        ("model fit v0 error", m.v0_se.unwrap_or(0.0)),
+        ("model fit e error", m.restitution_se.unwrap_or(0.0)),
+        ("line fit a_cm", l.a_cm),
+        ("line fit a_t", l.a_t),
+        ("line fit μ_k,cm", l.mu_cm),
+        ("line fit μ_k,t", l.mu_t),
+        ("model fit μ_k", m.mu),
+        ("model fit μ_k error", m.mu_se),
+        ("model fit v0", m.v0),
+        ("model fit e", m.restitution),
+        ("model fit RMS residual", m.rms),
+        ("model fit rolling speed v'", m.v_roll),
+    ];
+    let bad: Vec<&str> = named
+        .iter()
+        .filter(|(_, v)| !v.is_finite())
+        .map(|(n, _)| *n)
+        .collect();
+    if bad.is_empty() {
+        return Ok(());
+    }
+    Err(FitError::Data(format!(
+        "the fit gives no finite {} for this scene and data (an overflow: check that v0, masses and times are of lab size)",
+        bad.join(", ")
+    )))
 }

@@ -216,6 +216,11 @@ pub fn parse_axis(text: &str, n: usize) -> Result<Axis, String> {
     if hi < lo {
         return Err(format!("'{range}' runs backwards, allowed LO ≤ HI"));
     }
+    if !(hi - lo).is_finite() {
+        return Err(format!(
+            "'{range}' is too wide to step through, allowed HI − LO below 1.8e308"
+        ));
+    }
     if n == 0 || n > 10_000 {
         return Err(format!("{n} points on an axis, allowed 1 ..= 10000"));
     }
