@@ -286,3 +286,78 @@ fn fit_figures_of_overflowing_scenes_or_data_end() {
     assert_svg_or_one_error(&["fit", "--format", "svg", "--data", s(&q)]);
     assert_svg_or_one_error(&["fit", "--format", "svg", "--data", s(&q), "--v0", "1e300"]);
 }
+
+// Item 6: the charts' axis labels never panic, whatever the span.
+
+fn render_in_process(args: &[&str]) -> Result<String, String> {
+    use clap::Parser;
+    let mut full = vec!["groovelab", "render"];
+    full.extend_from_slice(args);
+    let cli = groovelab::cli::Cli::try_parse_from(&full).map_err(|e| e.to_string())?;
+    match groovelab::cli::run(&cli) {
+        Ok(groovelab::cli::Outcome::Print(text)) => Ok(text),
+        Ok(_) => Err("render gave no text".into()),
+        Err(e) => Err(e.to_string()),
+    }
+}
+
+#[test]
+fn render_of_huge_or_tiny_spans_does_not_panic() {
+    let dir = scratch("spans");
+    let p = dir.join("long.toml");
+    std::fs::write(
+        &p,
+        "name = \"long\"\ndescription = \"d\"\n[scene]\nt_end = 1e300\n",
+    )
+    .unwrap();
+    let cases: Vec<Vec<&str>> = vec![
+        vec!["--t-end", "1e38"],
+        vec!["--t-start", "-1e308"],
+        vec!["--t-start", "-1e308", "--t-end", "1e308"],
+        vec!["--preset", s(&p)],
+        vec!["--preset", "flat-table", "--mu", "1e-300"],
+        vec!["--preset", "flat-table", "--mu", "1e-300", "--keys", "x"],
+        vec!["--t-end", "1e-300"],
+    ];
+    for case in &cases {
+        for size in ["80x24", "120x40", "12x4", "20x8"] {
+            let mut args = case.clone();
+            args.extend(["--size", size]);
+            // Each must give a screen, or (once the parameter ranges tighten) one
+            // error line, never a panic.
+            let got = std::panic::catch_unwind(|| render_in_process(&args));
+            match got {
+                Ok(Ok(text)) => {
+                    let (w, h) = size.split_once('x').unwrap();
+                    assert_eq!(
+                        text.lines().count(),
+                        h.parse::<usize>().unwrap(),
+                        "{args:?}"
+                    );
+                    assert!(
+                        text.lines()
+                            .all(|l| l.chars().count() <= w.parse::<usize>().unwrap()),
+                        "{args:?}"
+                    );
+                }
+                Ok(Err(e)) => assert!(!e.contains('\n') || e.starts_with("error"), "{args:?}: {e}"),
+                Err(_) => panic!("render {args:?} panicked"),
+            }
+        }
+    }
+}
+
+#[test]
+fn typing_a_tiny_friction_in_the_app_does_not_panic() {
+    // flat-table, select μ_k, Enter, type 1e-300, Enter (the app path).
+    let keys = "down down down enter 1 e - 3 0 0 enter";
+    for size in ["80x24", "120x40"] {
+        let got = std::panic::catch_unwind(|| {
+            render_in_process(&["--preset", "flat-table", "--keys", keys, "--size", size])
+        });
+        let screen = got
+            .unwrap_or_else(|_| panic!("panicked at {size}"))
+            .unwrap();
+        assert!(screen.contains("μ_k       1.000e-300"), "{screen}");
+    }
+}
