@@ -4,7 +4,7 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
-use super::{CliError, DataArgs, FitArgs, FitFormat, SceneArgs, methods::write_atomically};
+use super::{CliError, DataArgs, FitArgs, FitFormat, SceneArgs, output::write_atomically};
 use crate::input::data::Measured;
 use crate::input::data::{self, Reading};
 use crate::input::preset::Preset;
@@ -47,6 +47,9 @@ struct FitJson<'a> {
 
 pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<String, CliError> {
     let (preset, scene, _) = scene_args.resolve()?;
+    if let Some(path) = &args.output {
+        super::output::check_output(path)?;
+    }
     let m = measured(&preset, data)?;
     let free: Vec<Free> = args.free.clone().unwrap_or_else(|| vec![Free::Mu]);
     if let (Some(a), Some(b)) = (args.from, args.to)
@@ -75,7 +78,7 @@ pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<St
     match &args.output {
         None => Ok(text),
         Some(path) => {
-            write_atomically(path, &text)?;
+            write_atomically(path, text.as_bytes())?;
             Ok(format!("wrote {}\n", path.display()))
         }
     }

@@ -18,9 +18,11 @@ use crate::tui::{self, app::App};
 
 mod fit;
 mod methods;
+pub mod output;
 mod sweep;
 use crate::input::units::{Dimension, parse_quantity, show, significant};
-pub use methods::write_atomically;
+pub use output::write_atomically;
+pub use sweep::run_with_stop as sweep_with_stop;
 
 /// Most samples `--sample` may ask for.
 pub const MAX_SAMPLES: usize = 1_000_000;

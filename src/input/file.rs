@@ -19,8 +19,8 @@ pub struct FileError {
     pub why: String,
 }
 
-/// The kind of a non-regular file, for messages.
-fn kind(meta: &std::fs::Metadata) -> &'static str {
+/// The kind of a non-regular file, for messages ("a FIFO", "a directory").
+pub fn kind(meta: &std::fs::Metadata) -> &'static str {
     let t = meta.file_type();
     #[cfg(unix)]
     {
