@@ -318,6 +318,11 @@ fn render_of_huge_or_tiny_spans_does_not_panic() {
         vec!["--preset", "flat-table", "--mu", "1e-300"],
         vec!["--preset", "flat-table", "--mu", "1e-300", "--keys", "x"],
         vec!["--t-end", "1e-300"],
+        // Overflowing energies: shares once overflowed u32, the methods view once
+        // asked for 2^31 decade ticks (64 GB).
+        vec!["--mass-right", "1e308"],
+        vec!["--mass-right", "1e308", "--keys", "c"],
+        vec!["--mass-right", "1e308", "--keys", "g"],
     ];
     for case in &cases {
         for size in ["80x24", "120x40", "12x4", "20x8"] {

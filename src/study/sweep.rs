@@ -30,7 +30,14 @@ impl Axis {
         if self.n <= 1 {
             self.lo
         } else {
-            self.lo + (self.hi - self.lo) * i as f64 / (self.n - 1) as f64
+            let v = self.lo + (self.hi - self.lo) * i as f64 / (self.n - 1) as f64;
+            if v.is_finite() {
+                v
+            } else {
+                // (hi − lo)·i overflowed near 1.8e308; the fraction first cannot. Only
+                // here, so every map that worked keeps its exact values.
+                self.lo + (self.hi - self.lo) * (i as f64 / (self.n - 1) as f64)
+            }
         }
     }
 }
@@ -281,6 +288,10 @@ mod tests {
         assert!(parse_axis("colour=0..1", 3).is_err());
         assert!(parse_axis("width=5..1cm", 3).is_err());
         assert!(parse_axis("width", 3).is_err());
+        // Huge but valid bounds step without overflow.
+        let a = parse_axis("mass=1e-300..1e308", 5).unwrap();
+        assert!((0..5).all(|i| a.value(i).is_finite()));
+        assert_eq!(a.value(4), 1e308);
         let e = parse_axis("mu=0..abc", 3).unwrap_err();
         assert!(e.contains("'abc' is not a number"), "{e}");
     }
