@@ -223,9 +223,10 @@ impl Drop for AtomicFile {
 }
 
 /// Writes `bytes` to `path` atomically (see the module): the target is replaced only
-/// by the complete bytes, a stop signal during the write leaves nothing.
+/// by the complete bytes. It changes no signal handling (the app can call it); a
+/// command that calls [`watch_signals`] first gets "a stop signal during the write
+/// leaves nothing" too.
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
-    watch_signals();
     let mut file = AtomicFile::create(path)?;
     file.write_bytes(bytes)?;
     file.commit(stop_flag())
