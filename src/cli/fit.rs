@@ -4,11 +4,11 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
-use super::{CliError, DataArgs, FitArgs, FitFormat, SceneArgs, methods::write_atomically};
+use super::{CliError, DataArgs, FitArgs, FitFormat, SceneArgs, output::write_atomically};
 use crate::input::data::Measured;
 use crate::input::data::Reading;
 use crate::input::preset::Preset;
-use crate::input::units::{Dimension, parse_quantity};
+use crate::input::units::{Dimension, unit_factor};
 use crate::physics::scene::Scene;
 use crate::study::fit::{self, Fits, Free, ModelFit};
 use crate::study::track::{self, Derive, Found};
@@ -38,14 +38,11 @@ pub fn load(
             ))
         });
     };
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| CliError::Invalid(format!("cannot read --data {}: {e}", path.display())))?;
+    let text = crate::input::read_user_file(path, "--data", crate::input::MAX_FILE_BYTES)
+        .map_err(|e| CliError::Invalid(e.to_string()))?;
     let unit = |text: &Option<String>, dim: Dimension, flag: &str| {
         text.as_ref()
-            .map(|u| {
-                parse_quantity(&format!("1{u}"), dim)
-                    .map_err(|e| CliError::Invalid(format!("{flag} {u}: {e}")))
-            })
+            .map(|u| unit_factor(u, dim).map_err(|e| CliError::Invalid(format!("{flag} {u}: {e}"))))
             .transpose()
     };
     let reading = Reading {
@@ -80,6 +77,9 @@ struct FitJson<'a> {
 
 pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<String, CliError> {
     let (preset, scene, _) = scene_args.resolve()?;
+    if let Some(path) = &args.output {
+        super::output::check_output(path)?;
+    }
     let (m, found) = load(&preset, &scene, data)?;
     let free: Vec<Free> = args.free.clone().unwrap_or_else(|| vec![Free::Mu]);
     if let (Some(a), Some(b)) = (args.from, args.to)
@@ -119,7 +119,9 @@ pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<St
     match &args.output {
         None => Ok(text),
         Some(path) => {
-            write_atomically(path, &text)?;
+            // From here a stop signal removes the temporary file and writes nothing.
+            super::output::watch_signals();
+            write_atomically(path, text.as_bytes())?;
             Ok(format!("wrote {}\n", path.display()))
         }
     }

@@ -23,8 +23,9 @@ mod fit;
 mod methods;
 mod sweep;
 use crate::input::units::{Dimension, show, significant};
+pub use crate::output::{self, write_atomically};
 pub use args::*;
-pub use methods::write_atomically;
+pub use sweep::run_with_stop as sweep_with_stop;
 
 /// Most samples `--sample` may ask for.
 pub const MAX_SAMPLES: usize = 1_000_000;
@@ -38,6 +39,15 @@ pub enum CliError {
     Io(#[from] std::io::Error),
     #[error("interrupted: nothing was written")]
     Interrupted,
+}
+
+impl From<output::OutputError> for CliError {
+    fn from(e: output::OutputError) -> CliError {
+        match e {
+            output::OutputError::Interrupted => CliError::Interrupted,
+            other => CliError::Invalid(other.to_string()),
+        }
+    }
 }
 
 /// What a command line asks for once it is valid.

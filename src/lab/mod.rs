@@ -425,7 +425,8 @@ impl Lab {
         Preset::parse(&text, name, crate::input::preset::Origin::BuiltIn)
             .map_err(|e| SaveError::Io(format!("the file would not load again: {e}")))?;
         std::fs::create_dir_all(dir).map_err(|e| SaveError::Io(e.to_string()))?;
-        crate::cli::write_atomically(&path, &text).map_err(|e| SaveError::Io(e.to_string()))?;
+        crate::output::write_atomically(&path, text.as_bytes())
+            .map_err(|e| SaveError::Io(e.to_string()))?;
         Ok(path)
     }
 }

@@ -730,8 +730,44 @@ pub fn fit_all(
         }
         w => w,
     };
-    Ok(Fits {
+    let fits = Fits {
         line_fit: line_fit(m, scene, window)?,
         model_fit,
-    })
+    };
+    check_finite(&fits, m.has_v_t())?;
+    Ok(fits)
+}
+
+/// Every number a fit reports is finite, or the fit is an error: an overflowing
+/// scene (v0 = 1e308) must not print "RMS residual inf" or "± NaN". Without a
+/// measured v_t (a track without a rim mark) its line fit is not a number by design.
+fn check_finite(f: &Fits, has_v_t: bool) -> Result<(), FitError> {
+    let (l, m) = (&f.line_fit, &f.model_fit);
+    let spin = |v: f64| if has_v_t { v } else { 0.0 };
+    let named = [
+        ("model fit v0 error", m.v0_se.unwrap_or(0.0)),
+        ("model fit e error", m.restitution_se.unwrap_or(0.0)),
+        ("line fit a_cm", l.a_cm),
+        ("line fit a_t", spin(l.a_t)),
+        ("line fit μ_k,cm", l.mu_cm),
+        ("line fit μ_k,t", spin(l.mu_t)),
+        ("model fit μ_k", m.mu),
+        ("model fit μ_k error", m.mu_se),
+        ("model fit v0", m.v0),
+        ("model fit e", m.restitution),
+        ("model fit RMS residual", m.rms),
+        ("model fit rolling speed v'", m.v_roll),
+    ];
+    let bad: Vec<&str> = named
+        .iter()
+        .filter(|(_, v)| !v.is_finite())
+        .map(|(n, _)| *n)
+        .collect();
+    if bad.is_empty() {
+        return Ok(());
+    }
+    Err(FitError::Data(format!(
+        "the fit gives no finite {} for this scene and data (an overflow: check that v0, masses and times are of lab size)",
+        bad.join(", ")
+    )))
 }

@@ -54,17 +54,28 @@ pub struct Plot {
 
 /// Round tick positions covering `lo..hi` with at most about `max` ticks, and the
 /// bounds widened to the outer ticks.
+///
+/// Any input gives a finite result: non-finite bounds become 0 … 1, a span too thin
+/// for its magnitude is padded, and a range whose round ticks would overflow (near
+/// ±1.8e308) or be too many keeps its own bounds as the only ticks.
 pub fn nice_ticks(lo: f64, hi: f64, max: usize) -> ((f64, f64), Vec<f64>) {
     let (lo, hi) = if !(lo.is_finite() && hi.is_finite()) {
         (0.0, 1.0)
-    } else if hi - lo <= f64::EPSILON * lo.abs().max(hi.abs()).max(1e-300) {
-        // Zero span: pad so there is something to draw.
-        let pad = if lo == 0.0 { 1.0 } else { 0.1 * lo.abs() };
+    } else {
+        (lo.min(hi), hi.max(lo))
+    };
+    // Halves never overflow where the span itself might.
+    let half_span = hi / 2.0 - lo / 2.0;
+    let mag = lo.abs().max(hi.abs());
+    let (lo, hi) = if half_span <= 1e-9 * mag || half_span < 1e-300 {
+        // Zero or too thin a span for its magnitude: pad so there is something to draw.
+        let pad = if mag < 1e-300 { 1.0 } else { 0.1 * mag };
         (lo - pad, hi + pad)
     } else {
         (lo, hi)
     };
-    let raw = (hi - lo) / max.max(1) as f64;
+    let fallback = ((lo, hi), vec![lo, hi]);
+    let raw = (hi / 2.0 - lo / 2.0) * 2.0 / max.max(1) as f64;
     let mag = 10f64.powf(raw.log10().floor());
     let step = [1.0, 2.0, 2.5, 5.0, 10.0]
         .iter()
@@ -73,14 +84,47 @@ pub fn nice_ticks(lo: f64, hi: f64, max: usize) -> ((f64, f64), Vec<f64>) {
         .unwrap_or(10.0 * mag);
     let first = (lo / step).floor();
     let last = (hi / step).ceil();
-    let ticks: Vec<f64> = (0..=((last - first) as usize))
+    let count = last - first;
+    let (a, b) = (first * step, last * step);
+    let usable = step > 0.0 && a.is_finite() && b.is_finite() && (0.0..=1000.0).contains(&count);
+    if !usable {
+        return if lo.is_finite() && hi.is_finite() {
+            fallback
+        } else {
+            ((0.0, 1.0), vec![0.0, 1.0])
+        };
+    }
+    let ticks: Vec<f64> = (0..=(count as usize))
         .map(|i| (first + i as f64) * step)
         .collect();
-    ((first * step, last * step), ticks)
+    ((a, b), ticks)
 }
 
 /// A tick label with as many decimals as the step needs.
 pub fn tick_label(v: f64, step: f64) -> String {
+    label_on_axis(v, step, v.abs())
+}
+
+/// A tick label on an axis whose largest tick magnitude is `scale`: huge or tiny
+/// values in scientific notation (1e38 s in decimals would be 39 digits), with the
+/// mantissa digits the step needs, the same for every tick of the axis.
+fn label_on_axis(v: f64, step: f64, scale: f64) -> String {
+    if !v.is_finite() {
+        return format!("{v}");
+    }
+    let step = step.abs();
+    let scientific = scale >= 1e6 || (scale != 0.0 && scale < 1e-4) || (step > 0.0 && step < 1e-4);
+    if scientific && v == 0.0 {
+        return "0".into();
+    }
+    if scientific {
+        let digits = if step > 0.0 && step.is_finite() && scale > 0.0 {
+            ((scale / step).log10().ceil().max(0.0) as usize).min(6)
+        } else {
+            0
+        };
+        return format!("{v:.digits$e}");
+    }
     // Enough decimals to write the step exactly (0.25 needs two).
     let decimals = (0..6)
         .find(|&d| {
@@ -102,7 +146,11 @@ fn ticks_with_labels(ticks: &[f64]) -> Vec<(f64, String)> {
     } else {
         1.0
     };
-    ticks.iter().map(|&t| (t, tick_label(t, step))).collect()
+    let scale = ticks.iter().fold(0.0, |m: f64, t| m.max(t.abs()));
+    ticks
+        .iter()
+        .map(|&t| (t, label_on_axis(t, step, scale)))
+        .collect()
 }
 
 struct Grid {
@@ -173,7 +221,13 @@ impl Plot {
             .into_iter()
             .filter(|(v, _)| *v >= y0 && *v <= y1)
             .collect();
-        let margin = y_ticks.iter().map(|(_, l)| l.len()).max().unwrap_or(1) as u16;
+        // Labels are short (scientific beyond 1e6), but a margin never eats the plot.
+        let margin = y_ticks
+            .iter()
+            .map(|(_, l)| l.chars().count())
+            .max()
+            .unwrap_or(1)
+            .min(usize::from(area.width / 2)) as u16;
         // Row 0: y title and legend; last row: x ticks; left: tick labels and axis.
         let plot = Rect {
             x: area.x + margin + 1,
@@ -185,8 +239,19 @@ impl Plot {
             return;
         }
         let (cols, rows) = (plot.width as usize, plot.height as usize);
-        let col_of = |x: f64| ((x - x0) / (x1 - x0) * (cols - 1) as f64).round();
-        let row_of = |y: f64| ((y1 - y) / (y1 - y0) * (rows - 1) as f64).round();
+        // Fractions from halves, which cannot overflow for finite bounds (−1e308 …
+        // 1e308); a position is always a cell of the plot (NaN → 0).
+        let frac = |v: f64, a: f64, b: f64| (v / 2.0 - a / 2.0) / (b / 2.0 - a / 2.0);
+        let col_of = |x: f64| {
+            (frac(x, x0, x1) * (cols - 1) as f64)
+                .round()
+                .clamp(0.0, (cols - 1) as f64)
+        };
+        let row_of = |y: f64| {
+            (frac(y, y1, y0) * (rows - 1) as f64)
+                .round()
+                .clamp(0.0, (rows - 1) as f64)
+        };
 
         // Title and legend.
         let mut head = self.y_title.clone();
@@ -207,13 +272,13 @@ impl Plot {
             }
         }
         buf.set_stringn(area.x, area.y, &head, area.width as usize, theme.dim);
-        let mut x = area.x + head.chars().count() as u16 + 2;
+        let mut x = usize::from(area.x) + head.chars().count() + 2;
         for (text, style) in legend {
-            let w = text.chars().count() as u16;
-            if x + w > area.right() {
+            let w = text.chars().count();
+            if x + w > usize::from(area.right()) {
                 break;
             }
-            buf.set_string(x, area.y, &text, style);
+            buf.set_string(x as u16, area.y, &text, style);
             x += w;
         }
         head.clear();
@@ -227,8 +292,14 @@ impl Plot {
             let r = row_of(*v);
             if r >= 0.0 && (r as usize) < rows {
                 let y = plot.y + r as u16;
-                let pad = margin as usize - label.len();
-                buf.set_string(area.x + pad as u16, y, label, theme.dim);
+                let pad = usize::from(margin).saturating_sub(label.chars().count());
+                buf.set_stringn(
+                    area.x + pad as u16,
+                    y,
+                    label,
+                    usize::from(margin),
+                    theme.dim,
+                );
                 buf.set_string(axis_x, y, if g.ascii { "+" } else { "┤" }, theme.dim);
             }
         }
@@ -238,21 +309,24 @@ impl Plot {
             ticks_with_labels(&t)
         });
         let tick_row = plot.bottom();
-        let mut free_from = plot.x;
+        let mut free_from = i64::from(plot.x);
         for (v, label) in x_ticks.iter().filter(|(v, _)| *v >= x0 && *v <= x1) {
-            let c = plot.x as i64 + col_of(*v) as i64 - label.len() as i64 / 2;
-            let c = c.clamp(
-                plot.x as i64,
-                (plot.right() as i64 - label.len() as i64).max(0),
-            ) as u16;
-            if c >= free_from {
-                buf.set_string(c, tick_row, label, theme.dim);
-                free_from = c + label.len() as u16 + 1;
+            // Centred under its tick, kept inside the plot; a label wider than the
+            // plot starts at its left edge (and is cut by the buffer).
+            let w = label.chars().count() as i64;
+            let left = i64::from(plot.x);
+            let c = (left + col_of(*v) as i64 - w / 2)
+                .min(i64::from(plot.right()) - w)
+                .max(left);
+            if c >= free_from && c + w <= i64::from(plot.right()) {
+                buf.set_string(c as u16, tick_row, label, theme.dim);
+                free_from = c + w + 1;
             }
         }
         let unit = format!(" {}", self.x_title);
-        let ux = area.right().saturating_sub(unit.len() as u16);
+        let ux = i64::from(area.right()) - unit.chars().count() as i64;
         if ux >= free_from {
+            let ux = ux as u16;
             buf.set_string(ux, tick_row, &unit, theme.dim);
         }
 
@@ -339,17 +413,24 @@ impl Plot {
         }
         // Labels right of their line if they fit before the next one, else left of it
         // if they fit after the previous line and label.
-        let mut taken_until = plot.x;
+        // In i64: a long label must not overflow u16 arithmetic.
+        let mut taken_until = i64::from(plot.x);
         for (k, &(c, v)) in kept.iter().enumerate() {
             let Some(label) = &v.label else { continue };
+            let c = i64::from(c);
             let next = kept.get(k + 1).map_or(plot.right(), |n| n.0);
-            let prev = if k > 0 { kept[k - 1].0 + 1 } else { plot.x };
-            let w = label.chars().count() as u16;
+            let next = i64::from(next);
+            let prev = if k > 0 {
+                i64::from(kept[k - 1].0) + 1
+            } else {
+                i64::from(plot.x)
+            };
+            let w = label.chars().count() as i64;
             if c + 1 >= taken_until && c + 1 + w < next {
-                buf.set_string(c + 1, plot.y, label, v.style);
+                buf.set_string((c + 1) as u16, plot.y, label, v.style);
                 taken_until = c + 2 + w;
-            } else if c > w && c - w > prev.max(taken_until) {
-                buf.set_string(c - w, plot.y, label, v.style);
+            } else if c - w > prev.max(taken_until) {
+                buf.set_string((c - w) as u16, plot.y, label, v.style);
                 taken_until = c + 1;
             }
         }
@@ -372,6 +453,114 @@ mod tests {
         assert_eq!(tick_label(0.4, 0.2), "0.4");
         assert_eq!(tick_label(2.25, 0.25), "2.25");
         assert_eq!(tick_label(10.0, 5.0), "10");
+    }
+
+    #[test]
+    fn ticks_of_extreme_ranges_are_finite_few_and_short() {
+        let cases = [
+            (-1e308, 1e308),
+            (-f64::MAX, f64::MAX),
+            (0.0, 1e38),
+            (-0.2, 1e300),
+            (1e300, 1e300),
+            (1.0, 1.0 + 1e-15),
+            (1e-300, 2e-300),
+            (0.0, 5e-324),
+            (f64::NAN, 1.0),
+            (f64::NEG_INFINITY, f64::INFINITY),
+            (3.0, -3.0),
+        ];
+        for (lo, hi) in cases {
+            let ((a, b), ticks) = nice_ticks(lo, hi, 6);
+            assert!(
+                a.is_finite() && b.is_finite() && a < b,
+                "{lo} {hi}: {a} {b}"
+            );
+            assert!(
+                !ticks.is_empty() && ticks.len() <= 1001,
+                "{lo} {hi}: {}",
+                ticks.len()
+            );
+            for (t, label) in ticks_with_labels(&ticks) {
+                assert!(t.is_finite(), "{lo} {hi}");
+                assert!(label.len() <= 12, "{lo} {hi}: {label}");
+            }
+        }
+        let ((_, _), t) = nice_ticks(0.0, 1e38, 2);
+        let labels: Vec<String> = ticks_with_labels(&t).into_iter().map(|l| l.1).collect();
+        assert_eq!(labels, ["0", "5.0e37", "1.0e38"]);
+    }
+
+    /// Draws `plot` into buffers of several sizes: it must not panic.
+    fn draw_everywhere(plot: &Plot) {
+        let theme = Theme::new(crate::tui::theme::Glyphs::new(true), true);
+        for (w, h) in [(80, 24), (120, 40), (12, 4), (13, 5), (20, 6), (300, 8)] {
+            let area = Rect::new(0, 0, w, h);
+            let mut buf = Buffer::empty(area);
+            plot.render(area, &mut buf, &theme);
+        }
+    }
+
+    #[test]
+    fn a_plot_of_extreme_ranges_does_not_panic() {
+        let ranges = [
+            (-0.2, 1e38),
+            (-1e308, 1e308),
+            (-f64::MAX, f64::MAX),
+            (0.0, 1e300),
+            (1e-300, 2e-300),
+            (1.0, 1.0),
+            (f64::NAN, f64::INFINITY),
+        ];
+        for x_range in ranges {
+            for y_range in ranges {
+                let series = Series {
+                    name: "v_cm".into(),
+                    points: vec![x_range, y_range, (x_range.0, y_range.1), (f64::NAN, 0.0)],
+                    style: Style::default(),
+                    glyph: "*",
+                    draw: Draw::Line,
+                };
+                let plot = Plot {
+                    x_range,
+                    y_range,
+                    x_title: "t (s)".into(),
+                    y_title: "v (m/s)".into(),
+                    series: vec![
+                        series.clone(),
+                        Series {
+                            draw: Draw::Points,
+                            ..series
+                        },
+                    ],
+                    vlines: vec![
+                        VLine {
+                            x: x_range.0,
+                            label: Some("a very long event label indeed".into()),
+                            style: Style::default(),
+                            priority: 0,
+                        },
+                        VLine {
+                            x: x_range.1,
+                            label: Some("T∞".into()),
+                            style: Style::default(),
+                            priority: 1,
+                        },
+                    ],
+                    cursor: Some(x_range.1),
+                    x_ticks: None,
+                    y_ticks: None,
+                };
+                draw_everywhere(&plot);
+                // Given ticks wider than the plot, too.
+                let wide = Plot {
+                    x_ticks: Some(vec![(x_range.0, "x".repeat(500))]),
+                    y_ticks: Some(vec![(y_range.0, "y".repeat(500))]),
+                    ..plot
+                };
+                draw_everywhere(&wide);
+            }
+        }
     }
 
     #[test]

@@ -141,11 +141,17 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
 
 /// Whole-number percentages of `parts` that sum to exactly 100 (largest remainder).
 pub fn percentages(parts: &[f64]) -> Vec<u32> {
-    let total: f64 = parts.iter().sum();
-    if total <= 0.0 {
+    // Shares of the non-negative finite parts only: a negative or overflowing part
+    // once made shares beyond u32 whose sum overflowed.
+    let part = |p: f64| if p.is_finite() { p.max(0.0) } else { 0.0 };
+    let total: f64 = parts.iter().map(|&p| part(p)).sum();
+    if !(total > 0.0 && total.is_finite()) {
         return vec![0; parts.len()];
     }
-    let exact: Vec<f64> = parts.iter().map(|p| 100.0 * p.max(0.0) / total).collect();
+    let exact: Vec<f64> = parts
+        .iter()
+        .map(|&p| (100.0 * (part(p) / total)).min(100.0))
+        .collect();
     let mut out: Vec<u32> = exact.iter().map(|x| x.floor() as u32).collect();
     let missing = 100u32.saturating_sub(out.iter().sum());
     let mut order: Vec<usize> = (0..parts.len()).collect();
@@ -170,5 +176,20 @@ mod tests {
             assert_eq!(percentages(&parts).iter().sum::<u32>(), 100, "{parts:?}");
         }
         assert_eq!(percentages(&[0.0; 5]), vec![0; 5]);
+    }
+
+    #[test]
+    fn overflowing_or_negative_energies_do_not_overflow_the_shares() {
+        // A 1e308 kg ball once gave shares past u32 whose sum overflowed.
+        for parts in [
+            [1e308, 1e308, 1.0, 0.0, 0.0],
+            [f64::INFINITY, 1.0, f64::NAN, 0.0, 0.0],
+            [1e300, -1e300 + 1e285, 1e-300, 0.0, 0.0],
+            [f64::MAX, f64::MAX, f64::MAX, f64::MAX, f64::MAX],
+        ] {
+            let shares = percentages(&parts);
+            let sum: u32 = shares.iter().sum();
+            assert!(sum == 100 || sum == 0, "{parts:?}: {shares:?}");
+        }
     }
 }

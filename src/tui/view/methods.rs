@@ -26,8 +26,16 @@ fn glyph(m: Method) -> &'static str {
 }
 
 /// Decade ticks `10^a … 10^b` labelled `1e<n>`.
+/// Decade ticks 1e{lo} … 1e{hi}, every k-th decade so that there are at most about
+/// 20 (an overflowing run once asked for 2^31 of them).
 fn decades(lo: f64, hi: f64) -> Vec<(f64, String)> {
-    (lo.floor() as i32..=hi.ceil() as i32)
+    if !(lo.is_finite() && hi.is_finite()) {
+        return Vec::new();
+    }
+    let (lo, hi) = (lo.floor().max(-400.0) as i32, hi.ceil().min(400.0) as i32);
+    let every = ((hi - lo) / 20).max(1) as usize;
+    (lo..=hi)
+        .step_by(every)
         .map(|e| (f64::from(e), format!("1e{e}")))
         .collect()
 }
@@ -71,13 +79,20 @@ pub fn render_diagram(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             draw: Draw::Points,
         });
     }
-    let all: Vec<(f64, f64)> = rows.iter().map(point).collect();
+    // The range from finite points only: a run that overflowed has err_v = inf.
+    let all: Vec<(f64, f64)> = rows
+        .iter()
+        .map(point)
+        .filter(|p| p.0.is_finite() && p.1.is_finite())
+        .collect();
     let (x0, x1) = all.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |a, p| {
         (a.0.min(p.0), a.1.max(p.0))
     });
     let (y0, y1) = all.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |a, p| {
         (a.0.min(p.1), a.1.max(p.1))
     });
+    let (x0, x1) = if x0 <= x1 { (x0, x1) } else { (0.0, 1.0) };
+    let (y0, y1) = if y0 <= y1 { (y0, y1) } else { (-16.0, 0.0) };
     let (x0, x1) = (x0.floor(), x1.ceil().max(x0.floor() + 1.0));
     let (y0, y1) = (y0.floor(), y1.ceil().max(y0.floor() + 1.0));
     let plot = Plot {
@@ -132,4 +147,16 @@ pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         ]));
     }
     Paragraph::new(lines).render(inner, buf);
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn decades_are_few_for_any_range() {
+        assert_eq!(super::decades(f64::NAN, 3.0), vec![]);
+        assert_eq!(super::decades(0.0, f64::INFINITY), vec![]);
+        let d = super::decades(-16.0, 308.0);
+        assert!(d.len() <= 21 && d[0].1 == "1e-16", "{d:?}");
+        assert_eq!(super::decades(-2.0, 0.0).len(), 3);
+    }
 }

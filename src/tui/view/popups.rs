@@ -80,7 +80,11 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                 "Keys  (any key closes)",
                 lines,
                 area,
-                if one_column { 76 } else { area.width - 2 },
+                if one_column {
+                    76
+                } else {
+                    area.width.saturating_sub(2)
+                },
                 buf,
                 theme,
             );
@@ -122,7 +126,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                 "Presets  (Enter loads, Esc closes)",
                 lines,
                 area,
-                area.width - 4,
+                area.width.saturating_sub(4),
                 buf,
                 theme,
             );

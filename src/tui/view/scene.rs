@@ -227,7 +227,8 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             tag
         };
         let w = tag.chars().count() as f64;
-        let c = (col(x) - w / 2.0).clamp(0.0, f64::from(inner.width) - w);
+        // Not `clamp`: a tag wider than the panel would make min > max and panic.
+        let c = (col(x) - w / 2.0).min(f64::from(inner.width) - w).max(0.0);
         let c = if i == 1 {
             // Keep the right tag clear of the left one when the balls touch.
             c.max(col(snap.left.x) + w / 2.0 + 1.0)
