@@ -109,10 +109,13 @@ fn typed_values_take_units_and_escape_cancels() {
     press(&mut a, "enter 3 k g enter");
     assert_eq!(a.lab.scene.width, 0.044);
     assert!(matches!(&a.status, Status::Error(e) if e.contains("unknown unit")));
-    // Height sets both speeds through the run-up formula.
-    select(&mut a, Key::Height);
+    // Each ball's height sets its speed through the run-up formula.
+    select(&mut a, Key::HeightLeft);
     press(&mut a, "enter 5 c m enter");
     assert!((a.lab.derived.release_height - 0.05).abs() < 1e-12);
+    select(&mut a, Key::HeightRight);
+    press(&mut a, "enter 5 c m enter");
+    assert!((a.lab.value(Key::HeightRight) - 0.05).abs() < 1e-12);
     assert_eq!(a.lab.scene.left.v0, a.lab.scene.right.v0);
 }
 

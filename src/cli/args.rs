@@ -262,8 +262,15 @@ impl Args for SceneArgs {
                 .allow_hyphen_values(true)
                 .global(true)
                 .help(p.help);
-            if p.key == Key::Height {
-                arg = arg.conflicts_with_all(["v0", "v0_left", "v0_right"]);
+            // A run-up gives the speed: a height and a speed for one ball contradict.
+            let speeds: &[&str] = match p.key {
+                Key::Height => &["v0", "v0_left", "v0_right"],
+                Key::HeightLeft => &["v0", "v0_left"],
+                Key::HeightRight => &["v0", "v0_right"],
+                _ => &[],
+            };
+            if !speeds.is_empty() {
+                arg = arg.conflicts_with_all(speeds);
             }
             cmd.arg(arg)
         })
