@@ -11,9 +11,9 @@ use crate::lab::Lab;
 use crate::methods::Method;
 use crate::physics::derived::{Derived, Summary};
 use crate::physics::engine;
-use crate::physics::story::{self, After};
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{Snapshot, Solution};
+use crate::physics::story::{self, After};
 use crate::tui::{
     self,
     app::{App, Library},

@@ -161,7 +161,11 @@ pub fn significant(v: f64, digits: usize) -> String {
 /// (as a spreadsheet does), never a wrong value. Trailing zeros are dropped.
 pub fn fit_digits(v: f64, width: usize, max_digits: usize) -> String {
     if !v.is_finite() || v == 0.0 {
-        let s = if v == 0.0 { "0".to_string() } else { format!("{v}") };
+        let s = if v == 0.0 {
+            "0".to_string()
+        } else {
+            format!("{v}")
+        };
         return if s.chars().count() <= width {
             s
         } else {
@@ -234,7 +238,9 @@ mod tests {
         assert_eq!(fit_number(f64::NAN, 3), "NaN");
         assert_eq!(fit_number(f64::NAN, 2), "##");
         // Whatever the width, the printed text is the value to its printed precision.
-        for v in [3.14159e-7, -0.04648, 1.0, 99.96, 46.48, 0.1407, 7.27e3, -2.5e12] {
+        for v in [
+            3.14159e-7, -0.04648, 1.0, 99.96, 46.48, 0.1407, 7.27e3, -2.5e12,
+        ] {
             for width in 1..12 {
                 let s = fit_number(v, width);
                 assert!(s.chars().count() <= width, "{v} in {width}: {s}");
@@ -248,7 +254,10 @@ mod tests {
                 };
                 let decimals = mantissa.split_once('.').map_or(0, |(_, d)| d.len()) as i32;
                 let half_unit = 0.5 * 10f64.powi(exp - decimals);
-                assert!((printed - v).abs() <= half_unit * (1.0 + 1e-9), "{v} in {width}: {s}");
+                assert!(
+                    (printed - v).abs() <= half_unit * (1.0 + 1e-9),
+                    "{v} in {width}: {s}"
+                );
             }
         }
     }

@@ -165,9 +165,7 @@ impl Lab {
             Key::V0 | Key::V0Left => s.left.v0,
             Key::V0Right => s.right.v0,
             Key::Height | Key::HeightLeft => self.derived.release_height,
-            Key::HeightRight => {
-                crate::physics::closed_form::release_height(s.right.v0, s.k(), s.g)
-            }
+            Key::HeightRight => crate::physics::closed_form::release_height(s.right.v0, s.k(), s.g),
             Key::Restitution => s.restitution,
             Key::RollingResistance => s.rolling_resistance,
             Key::G => s.g,

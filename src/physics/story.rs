@@ -87,7 +87,10 @@ impl Interruption {
     pub fn clauses(&self, infinity: &str) -> Vec<String> {
         let mut out = Vec::new();
         let (kind, t) = self.first;
-        let before = format!("before the closed form's t' = {:.4} s", self.t_roll_closed_form);
+        let before = format!(
+            "before the closed form's t' = {:.4} s",
+            self.t_roll_closed_form
+        );
         out.push(match kind {
             EventKind::ContactStart => {
                 format!("pressed against the other ball from t = {t:.4} s, {before}")
@@ -158,7 +161,9 @@ impl Verdict {
         let mut s = format!("v' = {v:+.3} m/s");
         if let Some(b) = self.band {
             if self.indistinguishable_from_rest() {
-                s += &format!(", within the data's {pm}{b:.3} m/s rest band: indistinguishable from rest");
+                s += &format!(
+                    ", within the data's {pm}{b:.3} m/s rest band: indistinguishable from rest"
+                );
             } else if self.regime != Regime::Rest {
                 s += &format!(", outside the data's {pm}{b:.3} m/s rest band");
             }
