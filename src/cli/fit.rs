@@ -4,7 +4,9 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
-use super::{CliError, DataArgs, FitArgs, FitFormat, SceneArgs, methods::write_atomically};
+use super::{
+    CliError, DataArgs, FitArgs, FitFormat, SceneArgs, TrackRole, methods::write_atomically,
+};
 use crate::input::data::Measured;
 use crate::input::data::Reading;
 use crate::input::preset::Preset;
@@ -12,17 +14,6 @@ use crate::input::units::{Dimension, parse_quantity, show, significant};
 use crate::physics::scene::Scene;
 use crate::study::fit::{self, Fits, Free, ModelFit};
 use crate::study::track::{self, Derive, Found};
-
-/// The measured series: `--data FILE`, else the preset's. A position track's
-/// velocities are derived with the preset's own scene (its contact radius r = kR).
-pub fn measured(preset: &Preset, args: &DataArgs) -> Result<Measured, CliError> {
-    let scene = preset
-        .spec
-        .resolve()
-        .map_err(|e| CliError::Invalid(e.to_string()))?
-        .0;
-    load(preset, &scene, args).map(|l| l.0)
-}
 
 /// The measured series for `scene`, and what was found in a position track.
 pub fn load(
@@ -48,20 +39,35 @@ pub fn load(
             })
             .transpose()
     };
+    let named = |role: TrackRole| {
+        args.track
+            .iter()
+            .rev()
+            .find(|(r, _)| *r == role)
+            .map(|(_, n)| n.clone())
+    };
     let reading = Reading {
         time_unit: unit(&args.time_unit, Dimension::Time, "--time-unit")?,
         speed_unit: unit(&args.speed_unit, Dimension::Speed, "--speed-unit")?,
+        length_unit: unit(&args.length_unit, Dimension::Length, "--length-unit")?,
         impact_at: args.impact_at,
-        ..Reading::default()
+        centre: named(TrackRole::Centre),
+        mark: named(TrackRole::Mark),
     };
-    let loaded = track::load(
-        &text,
-        &path.display().to_string(),
-        &reading,
-        scene,
-        &Derive::default(),
-    )
-    .map_err(|e| CliError::Invalid(e.to_string()))?;
+    if let Some(w) = args.window
+        && !(w > 0.0 && w <= 1.0)
+    {
+        return Err(CliError::Invalid(format!(
+            "--window {}: allowed a half-width 0 s < T ≤ 1 s",
+            show(w, Dimension::Time)
+        )));
+    }
+    let derive = Derive {
+        half_window: args.window,
+        ..Derive::default()
+    };
+    let loaded = track::load(&text, &path.display().to_string(), &reading, scene, &derive)
+        .map_err(|e| CliError::Invalid(e.to_string()))?;
     Ok((loaded.measured, loaded.found))
 }
 

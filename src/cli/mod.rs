@@ -71,7 +71,8 @@ pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
 pub fn lab(scene_args: &SceneArgs, data: &DataArgs) -> Result<Lab, CliError> {
     let (mut preset, scene, span) = scene_args.resolve()?;
     if data.data.is_some() {
-        preset.measured = Some(fit::measured(&preset, data)?);
+        // A position track's v_t needs r = kR of the scene shown, overrides included.
+        preset.measured = Some(fit::load(&preset, &scene, data)?.0);
     }
     Ok(Lab::new(preset, scene, span))
 }
