@@ -38,7 +38,8 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let label = |s: &str| Span::styled(s.to_string(), theme.dim);
     let value = |s: String| Span::styled(s, theme.text);
     let mut lines = vec![Line::from(Span::styled(regime, theme.title))];
-    if band.is_some() && verdict.v_roll.is_some() {
+    // The margin where it changes the reading: a regime the data cannot tell from rest.
+    if verdict.indistinguishable_from_rest() {
         lines.push(Line::from(value(g.text(&verdict.margin("±")))));
     }
     lines.extend([

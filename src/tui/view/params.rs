@@ -58,25 +58,32 @@ pub fn value_text(app: &App, key: Key) -> String {
 pub fn note(app: &App, key: Key, room: usize) -> String {
     let d = &app.lab.derived;
     // `label value` with the value fitted into what is left, or nothing if no digit fits.
-    let pair = |label: &str, v: f64, room: usize| -> Option<String> {
-        let n = fit_number(v, room.checked_sub(label.chars().count() + 1)?);
+    // Fixed decimals when they fit (columns line up), else fitted.
+    let pair = |label: &str, v: f64, decimals: usize, room: usize| -> Option<String> {
+        let room = room.checked_sub(label.chars().count() + 1)?;
+        let fixed = format!("{v:.decimals$}");
+        let n = if fixed.len() <= room {
+            fixed
+        } else {
+            fit_number(v, room)
+        };
         (!n.starts_with('#')).then(|| format!("{label} {n}"))
     };
     let text = match key {
         Key::Width => {
             let star = match d.b_star {
                 None => Some("no b*".to_string()).filter(|s| s.len() <= room),
-                Some(b) => pair("b*", b * 100.0, room),
+                Some(b) => pair("b*", b * 100.0, 2, room),
             };
             let ratio = app.lab.scene.width / app.lab.scene.radius;
             // b/R beside b* only when both keep 3 digits.
             let both = star
                 .as_ref()
                 .filter(|s| s.len() <= 7)
-                .and_then(|s| pair("b/R", ratio, 8).map(|r| format!("{r} {s}")));
+                .and_then(|s| pair("b/R", ratio, 2, 8).map(|r| format!("{r} {s}")));
             both.filter(|s| s.chars().count() <= room).or(star)
         }
-        Key::Radius => pair("k", d.k, room.min(7)),
+        Key::Radius => pair("k", d.k, 3, room.min(7)),
         Key::V0Left | Key::V0Right => Some("toward impact".into()),
         Key::HeightLeft | Key::HeightRight => Some("run-up".into()),
         Key::Restitution => d.b_star.is_none().then(|| "e < 2/5".into()),
