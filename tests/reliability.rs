@@ -109,7 +109,7 @@ fn data_and_preset_paths_that_are_not_regular_files_fail_at_once() {
     let limit = Duration::from_secs(10);
     for p in &paths {
         for args in [
-            vec!["fit", "--data", p.as_str()],
+            vec!["fit", "--preset", "paper-b4.9", "--data", p.as_str()],
             vec!["render", "--data", p.as_str(), "--size", "80x24"],
             vec!["simulate", "--preset", p.as_str()],
         ] {
@@ -133,7 +133,7 @@ fn data_files_over_the_size_limit_are_refused_before_reading() {
     let f = std::fs::File::create(&big).unwrap();
     f.set_len(groovelab::input::MAX_FILE_BYTES + 1).unwrap();
     assert_refused(
-        &["fit", "--data", s(&big)],
+        &["fit", "--preset", "paper-b4.9", "--data", s(&big)],
         "at most 67108864 bytes (64 MiB)",
     );
     assert_refused(&["simulate", "--preset", s(&big)], "at most 67108864 bytes");
@@ -146,7 +146,15 @@ fn a_symlink_to_a_regular_data_file_is_followed() {
     std::fs::write(&real, GOOD_CSV).unwrap();
     let link = dir.join("link.csv");
     std::os::unix::fs::symlink(&real, &link).unwrap();
-    let r = groovelab(&["fit", "--data", s(&link), "--format", "json"]);
+    let r = groovelab(&[
+        "fit",
+        "--preset",
+        "paper-b4.9",
+        "--data",
+        s(&link),
+        "--format",
+        "json",
+    ]);
     assert_eq!(r.code, Some(0), "{}", r.stderr);
 }
 
@@ -186,7 +194,10 @@ fn csv_column_names_with_digits_are_not_units() {
         let p = dir.join(format!("{header}.csv"));
         let body = GOOD_CSV.split_once('\n').unwrap().1;
         std::fs::write(&p, format!("{header},v_cm,v_t\n{body}")).unwrap();
-        assert_refused(&["fit", "--data", s(&p)], "no column 't'");
+        assert_refused(
+            &["fit", "--preset", "paper-b4.9", "--data", s(&p)],
+            "no column 't'",
+        );
     }
 }
 
@@ -205,10 +216,15 @@ fn unit_options_take_unit_names_only() {
         ("--speed-unit", "7"),
         ("--speed-unit", "1e300"),
     ] {
-        assert_refused(&["fit", "--data", s(&p), flag, unit], "unknown unit");
+        assert_refused(
+            &["fit", "--preset", "paper-b4.9", "--data", s(&p), flag, unit],
+            "unknown unit",
+        );
     }
     let r = groovelab(&[
         "fit",
+        "--preset",
+        "paper-b4.9",
         "--data",
         s(&p),
         "--time-unit",
@@ -224,11 +240,27 @@ fn a_utf8_byte_order_mark_does_not_hide_the_header() {
     let dir = scratch("bom");
     let p = dir.join("bom.csv");
     std::fs::write(&p, format!("\u{feff}{GOOD_CSV}")).unwrap();
-    let with = groovelab(&["fit", "--data", s(&p), "--format", "json"]);
+    let with = groovelab(&[
+        "fit",
+        "--preset",
+        "paper-b4.9",
+        "--data",
+        s(&p),
+        "--format",
+        "json",
+    ]);
     assert_eq!(with.code, Some(0), "{}", with.stderr);
     let q = dir.join("plain.csv");
     std::fs::write(&q, GOOD_CSV).unwrap();
-    let without = groovelab(&["fit", "--data", s(&q), "--format", "json"]);
+    let without = groovelab(&[
+        "fit",
+        "--preset",
+        "paper-b4.9",
+        "--data",
+        s(&q),
+        "--format",
+        "json",
+    ]);
     assert_eq!(with.stdout, without.stdout);
 }
 
@@ -283,8 +315,26 @@ fn fit_figures_of_overflowing_scenes_or_data_end() {
             .replace("0.79,", "1e300,"),
     )
     .unwrap();
-    assert_svg_or_one_error(&["fit", "--format", "svg", "--data", s(&q)]);
-    assert_svg_or_one_error(&["fit", "--format", "svg", "--data", s(&q), "--v0", "1e300"]);
+    assert_svg_or_one_error(&[
+        "fit",
+        "--preset",
+        "paper-b4.9",
+        "--format",
+        "svg",
+        "--data",
+        s(&q),
+    ]);
+    assert_svg_or_one_error(&[
+        "fit",
+        "--preset",
+        "paper-b4.9",
+        "--format",
+        "svg",
+        "--data",
+        s(&q),
+        "--v0",
+        "1e300",
+    ]);
 }
 
 // Item 6: the charts' axis labels never panic, whatever the span.

@@ -309,7 +309,7 @@ fn groovelab(args: &[&str]) -> std::process::Output {
 
 #[test]
 fn cli_fits_the_example_video_end_to_end() {
-    let out = groovelab(&["fit", "--data", EXAMPLE]);
+    let out = groovelab(&["fit", "--preset", "paper-b4.9", "--data", EXAMPLE]);
     assert!(
         out.status.success(),
         "{}",
@@ -325,7 +325,15 @@ fn cli_fits_the_example_video_end_to_end() {
     ] {
         assert!(table.contains(want), "{want}:\n{table}");
     }
-    let out = groovelab(&["fit", "--data", EXAMPLE, "--format", "json"]);
+    let out = groovelab(&[
+        "fit",
+        "--preset",
+        "paper-b4.9",
+        "--data",
+        EXAMPLE,
+        "--format",
+        "json",
+    ]);
     assert!(out.status.success());
     let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     for key in ["line_fit", "model_fit", "position_fit", "track"] {
@@ -353,7 +361,13 @@ fn cli_error_for_a_track_without_an_impact_is_one_line() {
         ..Video::default()
     };
     std::fs::write(&file, video::write(&video::track(&s, &v), Format::Tsv)).unwrap();
-    let out = groovelab(&["fit", "--data", file.to_str().unwrap()]);
+    let out = groovelab(&[
+        "fit",
+        "--preset",
+        "paper-b4.9",
+        "--data",
+        file.to_str().unwrap(),
+    ]);
     let _ = std::fs::remove_dir_all(&dir);
     assert_eq!(out.status.code(), Some(2));
     assert!(out.stdout.is_empty());

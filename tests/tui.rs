@@ -109,10 +109,13 @@ fn typed_values_take_units_and_escape_cancels() {
     press(&mut a, "enter 3 k g enter");
     assert_eq!(a.lab.scene.width, 0.044);
     assert!(matches!(&a.status, Status::Error(e) if e.contains("unknown unit")));
-    // Height sets both speeds through the run-up formula.
-    select(&mut a, Key::Height);
+    // Each ball's height sets its speed through the run-up formula.
+    select(&mut a, Key::HeightLeft);
     press(&mut a, "enter 5 c m enter");
     assert!((a.lab.derived.release_height - 0.05).abs() < 1e-12);
+    select(&mut a, Key::HeightRight);
+    press(&mut a, "enter 5 c m enter");
+    assert!((a.lab.value(Key::HeightRight) - 0.05).abs() < 1e-12);
     assert_eq!(a.lab.scene.left.v0, a.lab.scene.right.v0);
 }
 
@@ -395,7 +398,8 @@ fn mouse_clicks_select_and_scrolls_change_parameters() {
     assert_eq!(ROWS[a.selected].key, Key::Mu);
     a.apply(Action::ScrollParam(4, true));
     assert!((a.lab.scene.mu - 0.18).abs() < 1e-12);
-    a.apply(Action::ScrollParam(8, false));
+    let e = ROWS.iter().position(|p| p.key == Key::Restitution).unwrap();
+    a.apply(Action::ScrollParam(e, false));
     assert_eq!(ROWS[a.selected].key, Key::Restitution);
     assert!((a.lab.scene.restitution - 0.99).abs() < 1e-12);
 }

@@ -13,6 +13,7 @@ use crate::physics::derived::{Derived, Summary};
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{Snapshot, Solution};
+use crate::physics::story::{self, After};
 use crate::tui::{
     self,
     app::{App, Library},
@@ -80,7 +81,8 @@ pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
 pub fn lab(scene_args: &SceneArgs, data: &DataArgs) -> Result<Lab, CliError> {
     let (mut preset, scene, span) = scene_args.resolve()?;
     if data.data.is_some() {
-        preset.measured = Some(fit::measured(&preset, data)?);
+        // A position track's v_t needs r = kR of the scene shown, overrides included.
+        preset.measured = Some(fit::load(&preset, &scene, data)?.0);
     }
     Ok(Lab::new(preset, scene, span))
 }
@@ -289,31 +291,29 @@ fn table(
         derived.why(),
         b_star
     );
-    if let Some(rec) = derived.left_after_impact {
-        let heading = if rec.v_roll > 0.0 {
-            "back toward the other ball"
-        } else if rec.v_roll < 0.0 {
-            "away from the other ball"
-        } else {
-            "at rest"
-        };
-        let mut line = format!(
-            "left ball after the first impact: rolls again after t' = {} at v' = {} ({heading}), x' = {}",
-            show(rec.t_roll, Dimension::Time),
-            show(rec.v_roll, Dimension::Speed),
-            len(rec.x_roll)
+    // Against the preset's measured series: can its data tell this regime from rest?
+    if let Some(m) = &preset.measured {
+        let band = crate::study::fit::rest_band(m);
+        let _ = writeln!(
+            out,
+            "verdict  {}",
+            story::Verdict::of(solution, derived, Some(band)).text("±")
         );
-        if let Some(t) = rec.t_pure_gliding {
-            let _ = write!(line, "; pure gliding at t_r = {}", show(t, Dimension::Time));
+    }
+    if let Some(rec) = derived.left_after_impact {
+        // The closed forms only where the exact run bears them out; else its events.
+        match story::after_first_impact(solution, derived) {
+            Some(After::Interrupted(i)) => {
+                let _ = writeln!(
+                    out,
+                    "left ball after the first impact: {}",
+                    i.clauses("∞").join("; ")
+                );
+            }
+            _ => {
+                let _ = writeln!(out, "{}", recovery_line(&rec));
+            }
         }
-        if let Some(t) = rec.t_pure_slipping {
-            let _ = write!(
-                line,
-                "; pure slipping at t_t = {}",
-                show(t, Dimension::Time)
-            );
-        }
-        let _ = writeln!(out, "{line}");
         let f = derived.forces;
         let _ = writeln!(
             out,
@@ -370,6 +370,35 @@ fn table(
         }
     }
     out
+}
+
+/// The closed-form recovery of the left ball, in one line.
+fn recovery_line(rec: &crate::physics::derived::Recovery) -> String {
+    let len = |v: f64| show(v, Dimension::Length);
+    let heading = if rec.v_roll > 0.0 {
+        "back toward the other ball"
+    } else if rec.v_roll < 0.0 {
+        "away from the other ball"
+    } else {
+        "at rest"
+    };
+    let mut line = format!(
+        "left ball after the first impact: rolls again after t' = {} at v' = {} ({heading}), x' = {}",
+        show(rec.t_roll, Dimension::Time),
+        show(rec.v_roll, Dimension::Speed),
+        len(rec.x_roll)
+    );
+    if let Some(t) = rec.t_pure_gliding {
+        let _ = write!(line, "; pure gliding at t_r = {}", show(t, Dimension::Time));
+    }
+    if let Some(t) = rec.t_pure_slipping {
+        let _ = write!(
+            line,
+            "; pure slipping at t_t = {}",
+            show(t, Dimension::Time)
+        );
+    }
+    line
 }
 
 fn presets() -> String {

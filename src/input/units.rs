@@ -219,9 +219,113 @@ pub fn significant(v: f64, digits: usize) -> String {
     }
 }
 
+/// `v` in at most `width` characters with as many significant digits as fit, up to
+/// `max_digits`: plain decimals for lab-sized values (as [`significant`]), else an
+/// exponent form whose exponent is always whole (`2.89e-10`, then `2.9e-10`, `3e-10`).
+/// A number is never cut: when not even one digit fits, the answer is `width` `#`s
+/// (as a spreadsheet does), never a wrong value. Trailing zeros are dropped.
+pub fn fit_digits(v: f64, width: usize, max_digits: usize) -> String {
+    if !v.is_finite() || v == 0.0 {
+        let s = if v == 0.0 {
+            "0".to_string()
+        } else {
+            format!("{v}")
+        };
+        return if s.chars().count() <= width {
+            s
+        } else {
+            "#".repeat(width)
+        };
+    }
+    let magnitude = v.abs().log10().floor() as i32;
+    let plain = (-4..=6).contains(&magnitude);
+    for digits in (1..=max_digits.max(1)).rev() {
+        let candidate = if plain {
+            let decimals = (digits as i32 - 1 - magnitude).max(0) as usize;
+            trim_zeros(format!("{v:.decimals$}"))
+        } else {
+            exponent_form(v, digits)
+        };
+        if candidate.chars().count() <= width {
+            return candidate;
+        }
+        // A plain value too wide for its integer digits may still fit as an exponent.
+        if plain && (digits as i32) <= magnitude + 1 {
+            let e = exponent_form(v, digits);
+            if e.chars().count() <= width {
+                return e;
+            }
+        }
+    }
+    "#".repeat(width)
+}
+
+/// [`fit_digits`] with the lab's usual four significant digits at most.
+pub fn fit_number(v: f64, width: usize) -> String {
+    fit_digits(v, width, 4)
+}
+
+/// `v` as `m.mmme-x` with `digits` significant digits, trailing mantissa zeros dropped.
+fn exponent_form(v: f64, digits: usize) -> String {
+    let s = format!("{v:.prec$e}", prec = digits.saturating_sub(1));
+    match s.split_once('e') {
+        Some((mantissa, exp)) => format!("{}e{exp}", trim_zeros(mantissa.to_string())),
+        None => s,
+    }
+}
+
+fn trim_zeros(s: String) -> String {
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn fitted_numbers_keep_their_exponent_and_lose_digits_first() {
+        assert_eq!(fit_number(2.894e-10, 8), "2.89e-10");
+        assert_eq!(fit_number(2.894e-10, 9), "2.894e-10");
+        assert_eq!(fit_number(2.894e-10, 7), "2.9e-10");
+        assert_eq!(fit_number(2.894e-10, 5), "3e-10");
+        assert_eq!(fit_number(2.894e-10, 4), "####");
+        assert_eq!(fit_number(46.48, 5), "46.48");
+        assert_eq!(fit_number(46.48, 4), "46.5");
+        assert_eq!(fit_number(46.48, 2), "46");
+        assert_eq!(fit_number(-0.1718, 6), "-0.172");
+        assert_eq!(fit_number(123456.0, 4), "1e5");
+        assert_eq!(fit_number(123456.0, 6), "123456");
+        assert_eq!(fit_number(0.0, 3), "0");
+        assert_eq!(fit_number(f64::NAN, 3), "NaN");
+        assert_eq!(fit_number(f64::NAN, 2), "##");
+        // Whatever the width, the printed text is the value to its printed precision.
+        for v in [
+            3.14159e-7, -0.04648, 1.0, 99.96, 46.48, 0.1407, 7.27e3, -2.5e12,
+        ] {
+            for width in 1..12 {
+                let s = fit_number(v, width);
+                assert!(s.chars().count() <= width, "{v} in {width}: {s}");
+                if s.starts_with('#') {
+                    continue;
+                }
+                let printed: f64 = s.parse().unwrap();
+                let (mantissa, exp) = match s.split_once('e') {
+                    Some((m, e)) => (m, e.parse::<i32>().unwrap()),
+                    None => (s.as_str(), 0),
+                };
+                let decimals = mantissa.split_once('.').map_or(0, |(_, d)| d.len()) as i32;
+                let half_unit = 0.5 * 10f64.powi(exp - decimals);
+                assert!(
+                    (printed - v).abs() <= half_unit * (1.0 + 1e-9),
+                    "{v} in {width}: {s}"
+                );
+            }
+        }
+    }
 
     #[test]
     fn parses_units_of_the_interface() {

@@ -21,7 +21,7 @@ use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{Snapshot, Solution};
 use crate::study::compare::{self, Row};
-use crate::study::fit::{self, Fits, Free};
+use crate::study::fit::{self, Fits, Free, ModelFit};
 use jobs::{Job, State, Ticket};
 
 /// Steps of the overlay and the Methods view: 10 ms … 10 µs (fixed-step methods),
@@ -107,7 +107,8 @@ pub struct Lab {
     pub extent: (f64, f64),
     /// RMS residuals of v_cm and v_t against the measured points.
     pub data_rms: Option<(f64, f64)>,
-    /// Where the measured left ball is at each measured time (its v_cm integrated).
+    /// Where the measured left ball is at each measured time: the tracked centre of a
+    /// position file, else its v_cm integrated.
     ghost: Option<Vec<f64>>,
     /// Line-fit window (None: the sliding phase).
     pub fit_window: (Option<f64>, Option<f64>),
@@ -117,6 +118,8 @@ pub struct Lab {
     methods: Job<Vec<Row>>,
     overlay: Job<Overlay>,
     fits: Job<Result<Fits, String>>,
+    /// The model fitted to a position track's positions (none for a velocity file).
+    position_fit: Job<Result<ModelFit, String>>,
     samples: Cached<usize, Snapshot>,
     regimes: Cached<(usize, usize), Regime>,
 }
@@ -140,6 +143,7 @@ impl Lab {
             methods: Job::Idle,
             overlay: Job::Idle,
             fits: Job::Idle,
+            position_fit: Job::Idle,
             samples: RefCell::default(),
             regimes: RefCell::default(),
         };
@@ -164,7 +168,8 @@ impl Lab {
             Key::Mu => s.mu,
             Key::V0 | Key::V0Left => s.left.v0,
             Key::V0Right => s.right.v0,
-            Key::Height => self.derived.release_height,
+            Key::Height | Key::HeightLeft => self.derived.release_height,
+            Key::HeightRight => crate::physics::closed_form::release_height(s.right.v0, s.k(), s.g),
             Key::Restitution => s.restitution,
             Key::RollingResistance => s.rolling_resistance,
             Key::G => s.g,
@@ -204,7 +209,13 @@ impl Lab {
     fn cache(&mut self) {
         self.extent = extent(&self.solution, self.scene.radius);
         self.data_rms = self.measured().map(|m| data_rms(&self.solution, m));
-        self.ghost = self.measured().map(|m| ghost_track(m, self.scene.radius));
+        let radius = self.scene.radius;
+        self.ghost = self.measured().map(|m| match &m.x {
+            // The tracked centre is the displacement from the impact place, where the
+            // model's left ball is at −R.
+            Some(x) => x.iter().map(|x| x - radius).collect(),
+            None => ghost_track(m, radius),
+        });
         self.samples.replace(None);
         self.regimes.replace(None);
     }
@@ -231,11 +242,22 @@ impl Lab {
         match self.measured().filter(|_| self.want_fits) {
             Some(m) => {
                 let (scene, m, window) = (self.scene, m.clone(), self.fit_window);
+                if m.x.is_some() {
+                    let m = m.clone();
+                    self.position_fit.start(move |_| {
+                        fit::position_fit(&scene, &m, &[Free::Mu]).map_err(|e| e.to_string())
+                    });
+                } else {
+                    self.position_fit.cancel();
+                }
                 self.fits.start(move |_| {
                     fit::fit_all(&scene, &m, window, &[Free::Mu]).map_err(|e| e.to_string())
                 });
             }
-            None => self.fits.cancel(),
+            None => {
+                self.fits.cancel();
+                self.position_fit.cancel();
+            }
         }
     }
 
@@ -244,7 +266,8 @@ impl Lab {
         let a = self.methods.poll();
         let b = self.overlay.poll();
         let c = self.fits.poll();
-        a || b || c
+        let d = self.position_fit.poll();
+        a || b || c || d
     }
 
     /// Waits for every running analysis (headless output is then deterministic).
@@ -252,11 +275,15 @@ impl Lab {
         self.methods.wait();
         self.overlay.wait();
         self.fits.wait();
+        self.position_fit.wait();
     }
 
     /// True while an analysis runs.
     pub fn busy(&self) -> bool {
-        self.methods.is_running() || self.overlay.is_running() || self.fits.is_running()
+        self.methods.is_running()
+            || self.overlay.is_running()
+            || self.fits.is_running()
+            || self.position_fit.is_running()
     }
 
     /// Asks for (or stops asking for) the Methods view's rows.
@@ -311,6 +338,11 @@ impl Lab {
         self.fits.state()
     }
 
+    /// The model fitted directly to a position track (Idle for a velocity file).
+    pub fn position_fit(&self) -> State<'_, Result<ModelFit, String>> {
+        self.position_fit.state()
+    }
+
     /// Moves one end of the line-fit window by one measured frame.
     pub fn move_fit_window(&mut self, end: bool, later: bool) -> Result<(), String> {
         let Some(m) = self.measured() else {
@@ -346,15 +378,32 @@ impl Lab {
         Ok(())
     }
 
-    /// Where the measured left ball is at `t`: its v_cm integrated (trapezoids) from
-    /// the impact place at t = 0; `None` outside the series.
+    /// Where the measured left ball's centre is at `t`: the tracked position of a
+    /// position file, else its v_cm integrated (trapezoids) from the impact place at
+    /// t = 0; `None` outside the series.
     pub fn ghost_x(&self, t: f64) -> Option<f64> {
         let m = self.measured()?;
         let track = self.ghost.as_ref()?;
         if t < m.t[0] || t > *m.t.last()? {
             return None;
         }
+        if m.x.is_some() {
+            return interpolate(&m.t, track, t);
+        }
         Some(integral_to(m, track, t))
+    }
+
+    /// The measured left ball's spin angle at `t` for its spoke, rad, on the model's
+    /// scale (the model's angle at the first impact plus the mark's turn since then);
+    /// `None` without a tracked rim mark or outside the series.
+    pub fn ghost_angle(&self, t: f64) -> Option<f64> {
+        let m = self.measured()?;
+        let angle = m.angle.as_ref()?;
+        if t < m.t[0] || t > *m.t.last()? {
+            return None;
+        }
+        let a = interpolate(&m.t, angle, t)?;
+        Some(self.solution.angle_at(0.0)[0] + a)
     }
 
     /// The exact states at the chart's sample times for a plot `columns` wide: about
@@ -571,4 +620,17 @@ fn ghost_track(m: &Measured, radius: f64) -> Vec<f64> {
     let cum = cumulative(m);
     let at_impact = integral_to(m, &cum, 0.0);
     cum.iter().map(|c| c - at_impact - radius).collect()
+}
+
+/// `ys` linearly interpolated at `t` between the neighbouring finite values (a gap in
+/// a track is bridged); `None` when there is none on one side.
+fn interpolate(ts: &[f64], ys: &[f64], t: f64) -> Option<f64> {
+    let i = ts.partition_point(|&x| x <= t);
+    let before = (0..i).rev().find(|&j| ys[j].is_finite())?;
+    if ts[before] == t {
+        return Some(ys[before]);
+    }
+    let after = (i..ts.len()).find(|&j| ys[j].is_finite())?;
+    let f = (t - ts[before]) / (ts[after] - ts[before]);
+    Some(ys[before] + f * (ys[after] - ys[before]))
 }

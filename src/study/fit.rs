@@ -10,6 +10,7 @@ use crate::physics::closed_form;
 use crate::physics::derived::{Derived, Regime};
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
+use crate::physics::story::Verdict;
 
 /// Why a fit cannot be made.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -196,6 +197,137 @@ pub struct ModelFit {
     pub rest_band: f64,
     /// The model's rolling speed after the impact, m/s (positive back toward).
     pub v_roll: f64,
+    /// The predicted regime with its margin against the rest band, in words (as the
+    /// app and `simulate` say it): "recollide (v' = +0.028 m/s, within …)".
+    pub verdict: String,
+    /// True when the predicted v' lies inside the rest band.
+    pub indistinguishable_from_rest: bool,
+    /// True when what was observed agrees with the prediction (the same regime, or
+    /// rest where the prediction cannot be told from rest).
+    pub agrees: bool,
+    /// Free values the data cannot pin down, and why (their `_se` is null).
+    pub not_identified: Vec<NotIdentified>,
+}
+
+/// A free value without an uncertainty, and why.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct NotIdentified {
+    pub parameter: &'static str,
+    pub reason: String,
+}
+
+/// A fitted value's bounds: restitution lies in [0, 1], μ_k above 0.
+fn bounds(f: Free) -> (f64, f64) {
+    match f {
+        Free::Mu => (1e-6, f64::INFINITY),
+        Free::V0 => (f64::NEG_INFINITY, f64::INFINITY),
+        Free::Restitution => (0.0, 1.0),
+    }
+}
+
+/// `p` moved into the bounds of each free value.
+fn clamped(free: &[Free], p: &[f64]) -> Vec<f64> {
+    free.iter()
+        .zip(p)
+        .map(|(f, v)| {
+            let (lo, hi) = bounds(*f);
+            v.clamp(lo, hi)
+        })
+        .collect()
+}
+
+/// Standard errors from the normal matrix `jtj` (residual variance `s2`) of the free
+/// values `p`: a value on its bound, one the data do not depend on, and values along a
+/// direction the data cannot see (an eigenvector of the scaled matrix with a
+/// negligible eigenvalue) get no ± but a reason; the rest from the inverse of the
+/// matrix without them (the others held at their fitted values).
+fn uncertainties(
+    jtj: &[Vec<f64>],
+    s2: f64,
+    free: &[Free],
+    p: &[f64],
+) -> (Vec<Option<f64>>, Vec<NotIdentified>) {
+    let n = free.len();
+    let mut out = vec![None; n];
+    let mut why = Vec::new();
+    let mut active = Vec::new();
+    for i in 0..n {
+        let (lo, hi) = bounds(free[i]);
+        if p[i] <= lo || p[i] >= hi {
+            why.push(NotIdentified {
+                parameter: free[i].name(),
+                reason: format!(
+                    "at its bound {} = {}: the best fit lies on the edge of the allowed range, so it has no ± (fix it and fit the others)",
+                    free[i].name(),
+                    p[i]
+                ),
+            });
+        } else if !(jtj[i][i] > 0.0 && jtj[i][i].is_finite()) {
+            why.push(NotIdentified {
+                parameter: free[i].name(),
+                reason: "the fitted points do not depend on it".into(),
+            });
+        } else {
+            active.push(i);
+        }
+    }
+    // Scaled to unit diagonal, the matrix's small eigenvalues are directions the data
+    // cannot see; a value with a large share in one is not identifiable.
+    let m = active.len();
+    let d: Vec<f64> = active.iter().map(|&i| jtj[i][i].sqrt()).collect();
+    let scaled = nalgebra::DMatrix::from_fn(m, m, |a, b| jtj[active[a]][active[b]] / (d[a] * d[b]));
+    let mut unseen = vec![false; m];
+    if m > 0 {
+        let eig = scaled.symmetric_eigen();
+        for (k, &lambda) in eig.eigenvalues.iter().enumerate() {
+            if lambda > 1e-9 {
+                continue;
+            }
+            let v = eig.eigenvectors.column(k);
+            let involved: Vec<usize> = (0..m).filter(|&a| v[a].abs() > 0.2).collect();
+            for &a in &involved {
+                if unseen[a] {
+                    continue;
+                }
+                unseen[a] = true;
+                let others: Vec<&str> = involved
+                    .iter()
+                    .filter(|&&b| b != a)
+                    .map(|&b| free[active[b]].name())
+                    .collect();
+                why.push(NotIdentified {
+                    parameter: free[active[a]].name(),
+                    reason: if others.is_empty() {
+                        "not identifiable from these data".into()
+                    } else {
+                        format!(
+                            "not identifiable from these data: correlated with {}",
+                            others.join(", ")
+                        )
+                    },
+                });
+            }
+        }
+    }
+    let kept: Vec<usize> = (0..m).filter(|&a| !unseen[a]).collect();
+    let sub: Vec<Vec<f64>> = kept
+        .iter()
+        .map(|&a| kept.iter().map(|&b| jtj[active[a]][active[b]]).collect())
+        .collect();
+    if let Some(cov) = inverse(&sub) {
+        for (x, &a) in kept.iter().enumerate() {
+            let se = (s2 * cov[x][x]).sqrt();
+            if se.is_finite() {
+                out[active[a]] = Some(se);
+            } else {
+                why.push(NotIdentified {
+                    parameter: free[active[a]].name(),
+                    reason: "its uncertainty cannot be computed from these data".into(),
+                });
+            }
+        }
+    }
+    (out, why)
 }
 
 /// Scene with the fit parameters `p` applied.
@@ -419,20 +551,20 @@ fn model_fit_of(
     let cost: f64 = r.iter().map(|x| x * x).sum();
     let s2 = cost / r.len().saturating_sub(n + nuisance(m, target)).max(1) as f64;
     let j = jacobian(scene, m, free, &idx, &p, &r, target);
-    let cov = inverse(&normal_matrix(&j)).unwrap_or_else(|| vec![vec![f64::NAN; n]; n]);
-    let se = |f: Free| {
-        free.iter()
-            .position(|x| *x == f)
-            .map(|i| (s2 * cov[i][i]).sqrt())
-            .filter(|x| x.is_finite())
-    };
+    let (ses, not_identified) = uncertainties(&normal_matrix(&j), s2, free, &p);
+    let se = |f: Free| free.iter().position(|x| *x == f).and_then(|i| ses[i]);
     let rest_band = rest_band(m);
     let v_roll = closed_form::v_roll(fitted.k(), fitted.restitution, fitted.left.v0);
-    let regime_predicted = if v_roll.abs() <= rest_band {
-        Regime::Rest
-    } else {
-        Derived::of(&fitted).regime
-    };
+    let derived = Derived::of(&fitted);
+    let sol = engine::solve(&fitted, &Span::default());
+    let verdict = Verdict::of(&sol, &derived, Some(rest_band));
+    let regime_observed = observed_after(
+        m,
+        rest_band,
+        sliding_window(m)
+            .map(|w| w.1)
+            .or_else(|| rolling_time(&fitted)),
+    );
     Ok(ModelFit {
         mu: fitted.mu,
         mu_se: se(Free::Mu).unwrap_or(f64::NAN),
@@ -446,16 +578,14 @@ fn model_fit_of(
             (raw.iter().map(|x| x * x).sum::<f64>() / raw.len().max(1) as f64).sqrt()
         },
         points: idx.len(),
-        regime_predicted,
-        regime_observed: observed_after(
-            m,
-            rest_band,
-            sliding_window(m)
-                .map(|w| w.1)
-                .or_else(|| rolling_time(&fitted)),
-        ),
+        regime_predicted: derived.regime,
+        regime_observed,
         rest_band,
         v_roll,
+        verdict: verdict.text("±"),
+        indistinguishable_from_rest: verdict.indistinguishable_from_rest(),
+        agrees: verdict.agrees_with(regime_observed),
+        not_identified,
     })
 }
 
@@ -587,7 +717,11 @@ fn least_squares(
                 lambda *= 10.0;
                 continue;
             };
-            let q: Vec<f64> = p.iter().zip(&step).map(|(a, b)| a + b).collect();
+            // Steps stay inside the bounds (e ≤ 1): outside, the model would not change.
+            let q: Vec<f64> = clamped(
+                free,
+                &p.iter().zip(&step).map(|(a, b)| a + b).collect::<Vec<_>>(),
+            );
             let cq = cost(&q);
             if cq < c {
                 improved = (c - cq) > 1e-12 * c;
@@ -770,4 +904,40 @@ fn check_finite(f: &Fits, has_v_t: bool) -> Result<(), FitError> {
         "the fit gives no finite {} for this scene and data (an overflow: check that v0, masses and times are of lab size)",
         bad.join(", ")
     )))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_value_on_its_bound_or_along_an_unseen_direction_gets_a_reason_not_a_nan() {
+        let free = [Free::Mu, Free::V0, Free::Restitution];
+        // μ and v0 enter the data only as μ + v0 (equal columns), e is fine.
+        let jtj = vec![
+            vec![4.0, 4.0, 1.0],
+            vec![4.0, 4.0, 1.0],
+            vec![1.0, 1.0, 9.0],
+        ];
+        let (se, why) = uncertainties(&jtj, 1.0, &free, &[0.2, 0.5, 0.8]);
+        assert_eq!(se[0], None);
+        assert_eq!(se[1], None);
+        // e alone: 1/sqrt(9).
+        assert!((se[2].unwrap() - 1.0 / 3.0).abs() < 1e-12, "{se:?}");
+        assert_eq!(why.len(), 2, "{why:?}");
+        assert!(why[0].reason.contains("correlated with v0"), "{why:?}");
+        assert!(why[1].reason.contains("correlated with mu"), "{why:?}");
+        // e at its upper bound: μ and v0 from the matrix without it.
+        let jtj = vec![
+            vec![4.0, 0.0, 1.0],
+            vec![0.0, 16.0, 1.0],
+            vec![1.0, 1.0, 9.0],
+        ];
+        let (se, why) = uncertainties(&jtj, 1.0, &free, &[0.2, 0.5, 1.0]);
+        assert!((se[0].unwrap() - 0.5).abs() < 1e-12);
+        assert!((se[1].unwrap() - 0.25).abs() < 1e-12);
+        assert_eq!(se[2], None);
+        assert_eq!(why[0].parameter, "restitution");
+        assert!(why[0].reason.contains("bound"), "{why:?}");
+    }
 }

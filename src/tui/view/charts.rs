@@ -159,6 +159,28 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
                 .zip(v.iter().copied())
                 .collect::<Vec<_>>()
         };
+        // Each derived point's ±1σ (a position track's local fits) as a vertical run
+        // of dots under the point's own glyph.
+        for (n, (values, sigma)) in [(&m.v_cm, &m.v_cm_sigma), (&m.v_t, &m.v_t_sigma)]
+            .into_iter()
+            .enumerate()
+        {
+            if let Some(sigma) = sigma {
+                series.push(Series {
+                    // One legend entry for both series' bars.
+                    name: if n == 0 {
+                        theme.glyphs.text("±1σ").replace('σ', "s")
+                    } else {
+                        String::new()
+                    },
+                    points: error_bars(&m.t, values, sigma),
+                    style: theme.measured,
+                    // Not ':' or '|': the event lines use those.
+                    glyph: if theme.glyphs.ascii { "!" } else { "¦" },
+                    draw: Draw::Points,
+                });
+            }
+        }
         let cross = if theme.glyphs.ascii { "x" } else { "×" };
         series.push(Series {
             name: "measured v_cm".into(),
@@ -229,10 +251,27 @@ fn positions(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
     let sol = &app.lab.solution;
     let columns = usize::from(area.width.saturating_sub(10));
     let samples = app.lab.samples(columns);
-    let series = vec![
+    let mut series = vec![
         series_of("x left", &samples, |s| s.left.x * 100.0, theme.left, "*"),
         series_of("x right", &samples, |s| s.right.x * 100.0, theme.right, "+"),
     ];
+    // A position track's centre, where the model's left ball would be (x − R).
+    if let Some((m, x)) = app.lab.measured().and_then(|m| Some((m, m.x.as_ref()?))) {
+        let r = app.lab.scene.radius;
+        series.push(Series {
+            name: "tracked x".into(),
+            points: m
+                .t
+                .iter()
+                .zip(x)
+                .filter(|(_, x)| x.is_finite())
+                .map(|(t, x)| (*t, (x - r) * 100.0))
+                .collect(),
+            style: theme.measured,
+            glyph: if theme.glyphs.ascii { "x" } else { "×" },
+            draw: Draw::Points,
+        });
+    }
     let rows = usize::from(area.height.saturating_sub(4));
     let ((y0, y1), _) = bounds(&series, rows);
     let plot = Plot {
@@ -250,4 +289,34 @@ fn positions(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
         " x(t) of both balls  [x] back to velocities ".to_string(),
         plot,
     )
+}
+
+/// Points filling `value ± sigma` at each time (12 per bar, enough for a bar a dozen
+/// rows tall), for a Points series drawn as vertical error bars; points without a
+/// finite value or uncertainty have none.
+fn error_bars(ts: &[f64], values: &[f64], sigma: &[f64]) -> Vec<(f64, f64)> {
+    const STEPS: usize = 12;
+    let mut out = Vec::new();
+    for ((&t, &v), &s) in ts.iter().zip(values).zip(sigma) {
+        if !(v.is_finite() && s.is_finite() && s > 0.0) {
+            continue;
+        }
+        out.extend((0..=STEPS).map(|k| (t, v - s + 2.0 * s * k as f64 / STEPS as f64)));
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn error_bars_span_one_sigma_and_skip_unknowns() {
+        let bars = super::error_bars(
+            &[0.0, 1.0, 2.0],
+            &[1.0, f64::NAN, 3.0],
+            &[0.1, 0.1, f64::NAN],
+        );
+        assert_eq!(bars.len(), 13);
+        assert!(bars.iter().all(|&(t, _)| t == 0.0));
+        assert!((bars[0].1 - 0.9).abs() < 1e-12 && (bars[12].1 - 1.1).abs() < 1e-12);
+    }
 }

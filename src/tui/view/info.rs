@@ -9,6 +9,8 @@ use ratatui::widgets::{Paragraph, Widget, Wrap};
 use super::block;
 use crate::input::units::significant;
 use crate::physics::derived::Regime;
+use crate::physics::story::{self, After, Verdict};
+use crate::study::fit;
 use crate::tui::app::App;
 use crate::tui::theme::Theme;
 
@@ -26,13 +28,21 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         Regime::Recollide => "RECOLLIDE: they come back",
     };
     let why = d.why();
+    // The verdict's margin against the measured series' rest band, when there is one.
+    let band = app.lab.measured().map(fit::rest_band);
+    let verdict = Verdict::of(sol, d, band);
+    let story = story::after_first_impact(sol, d);
     let b_star = d.b_star.map_or("none (e < 2/5)".to_string(), |b| {
         format!("{:.2} cm", b * 100.0)
     });
     let label = |s: &str| Span::styled(s.to_string(), theme.dim);
     let value = |s: String| Span::styled(s, theme.text);
-    let mut lines = vec![
-        Line::from(Span::styled(regime, theme.title)),
+    let mut lines = vec![Line::from(Span::styled(regime, theme.title))];
+    // The margin where it changes the reading: a regime the data cannot tell from rest.
+    if verdict.indistinguishable_from_rest() {
+        lines.push(Line::from(value(g.text(&verdict.margin("±")))));
+    }
+    lines.extend([
         Line::from(value(why)),
         Line::from(vec![
             label("k "),
@@ -44,8 +54,14 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             label("  b* "),
             value(b_star),
         ]),
-    ];
-    if let Some(rec) = d.left_after_impact {
+    ]);
+    if let Some(After::Interrupted(i)) = &story {
+        // The closed forms do not describe this run: say what it does instead.
+        for (n, clause) in i.clauses(g.infinity).into_iter().enumerate() {
+            let head = if n == 0 { "left ball: " } else { "" };
+            lines.push(Line::from(vec![label(head), value(g.text(&clause))]));
+        }
+    } else if let Some(rec) = d.left_after_impact {
         lines.push(Line::from(vec![
             label("t' "),
             value(format!("{:.4} s", rec.t_roll)),

@@ -7,6 +7,7 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Paragraph, Widget};
 
 use super::block;
+use crate::input::units::fit_number;
 use crate::lab::jobs::State;
 use crate::methods::Method;
 use crate::study::compare::Status;
@@ -124,6 +125,12 @@ pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         ),
         theme.title,
     ))];
+    // Setting and status take 19 columns; err_v gets at least 7 ("2.9e-10"), taken
+    // from the name column on a narrow panel, and is fitted into what it gets (fewer
+    // digits, never a cut exponent).
+    let width = usize::from(inner.width);
+    let name_w = width.saturating_sub(19 + 7).clamp(2, 19);
+    let err_w = width.saturating_sub(name_w + 19).max(1);
     for r in rows {
         let setting = match (r.step, r.tolerance) {
             (Some(h), _) => format!("h {h:.0e}"),
@@ -135,13 +142,18 @@ pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         } else {
             theme.error
         };
+        let name: String = format!("{} {}", glyph(r.method), r.method.name())
+            .chars()
+            .take(name_w - 1)
+            .collect();
         lines.push(Line::from(vec![
+            Span::styled(format!("{name:<name_w$}"), theme.dim),
             Span::styled(
-                format!("{} {:<17}", glyph(r.method), r.method.name()),
-                theme.dim,
-            ),
-            Span::styled(
-                format!("{setting:<9} {:<8} {:.1e}", r.status.name(), r.err_v),
+                format!(
+                    "{setting:<9} {:<8} {}",
+                    r.status.name(),
+                    fit_number(r.err_v, err_w)
+                ),
                 style,
             ),
         ]));

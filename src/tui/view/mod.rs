@@ -44,7 +44,11 @@ pub fn layout(area: Rect) -> Option<Panels> {
     }
     // Tall screens show every parameter; short ones scroll the list (7 rows) so the
     // charts keep room.
-    let top_height = if area.height >= 32 { 12 } else { 9 };
+    let top_height = if area.height >= 32 {
+        super::app::ROWS.len() as u16 + 2
+    } else {
+        9
+    };
     let [top, middle, status, hints] = Layout::vertical([
         Constraint::Length(top_height),
         Constraint::Min(8),
@@ -55,7 +59,14 @@ pub fn layout(area: Rect) -> Option<Panels> {
     let params_width = if area.width >= 110 { 41 } else { 32 };
     let [params, scene] =
         Layout::horizontal([Constraint::Length(params_width), Constraint::Min(30)]).areas(top);
-    let info_width = if area.width >= 110 { 46 } else { 36 };
+    // Wide screens give the side panel more room (the runs list, the fit's two columns).
+    let info_width = if area.width >= 180 {
+        60
+    } else if area.width >= 110 {
+        46
+    } else {
+        36
+    };
     let [chart, info] =
         Layout::horizontal([Constraint::Min(30), Constraint::Length(info_width)]).areas(middle);
     Some(Panels {

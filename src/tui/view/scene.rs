@@ -180,9 +180,22 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             );
         }
     }
-    // The measured left ball, where its v_cm puts it: a dotted ghost beside the model.
+    // The measured left ball where the track (or its v_cm) puts it: a dotted ghost
+    // beside the model, with the tracked mark's angle as its spoke.
     if let Some(xg) = app.lab.ghost_x(t) {
         let cx = col(xg) * sx;
+        if let Some(angle) = app.lab.ghost_angle(t) {
+            let m = (r_dots * 2.0).ceil().max(2.0) as usize;
+            for k in (0..=m).step_by(2) {
+                let f = k as f64 / m as f64 * r_dots;
+                canvas.dot(
+                    (cx + f * angle.cos()) / sx,
+                    cy + f * angle.sin() / aspect,
+                    theme.measured,
+                    ".",
+                );
+            }
+        }
         let n = ((std::f64::consts::TAU * r_dots) / 3.0).ceil().max(8.0) as usize;
         for k in 0..n {
             let a = k as f64 / n as f64 * std::f64::consts::TAU;
