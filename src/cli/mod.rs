@@ -16,6 +16,7 @@ use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{Snapshot, Solution};
 use crate::tui::{self, app::App};
 
+pub mod entry;
 mod fit;
 mod methods;
 mod sweep;
