@@ -63,7 +63,7 @@ fn model_fits_and_regimes_match_the_three_experiments() {
         ("4.9", Regime::Recollide),
     ] {
         let (scene, m) = paper(width);
-        let f = fit::model_fit(&scene, &m, &[Free::Mu]).unwrap();
+        let f = fit::model_fit(&scene, &m, &[Free::Mu], &groovelab::study::Quiet).unwrap();
         assert!((0.14..=0.20).contains(&f.mu), "b = {width}: μ_k {}", f.mu);
         assert!(
             f.mu_se > 0.0 && f.mu_se < 0.02,
@@ -131,7 +131,7 @@ fn synthetic_data_give_back_mu_within_the_reported_uncertainty() {
         };
         // Start the fit away from the truth.
         let start = Scene { mu: 0.3, ..scene };
-        let f = fit::model_fit(&start, &m, &[Free::Mu]).unwrap();
+        let f = fit::model_fit(&start, &m, &[Free::Mu], &groovelab::study::Quiet).unwrap();
         if (f.mu - 0.17).abs() <= 2.0 * f.mu_se {
             inside += 1;
         }

@@ -1184,13 +1184,8 @@ fn judge(case: &Case, result: &Result<Result<Exit, String>, Duration>) -> Verdic
             }
             let lines: Vec<&str> = exit.stderr.lines().collect();
             if lines.len() != 1 || !exit.stderr.ends_with('\n') {
-                let class = if exit.stderr.contains("For more information, try")
-                    && lines.len() <= 4
-                    && lines.iter().filter(|l| !l.is_empty()).count() == 2
-                {
-                    "error: clap's 'For more information' hint is a second line"
-                } else if exit.stderr.contains("Usage:") {
-                    "error: clap usage block (several lines)"
+                let class = if exit.stderr.contains("For more information, try") {
+                    "error: clap's usage error spans several lines (hint, possible values, usage)"
                 } else {
                     "error: message spans several lines"
                 };

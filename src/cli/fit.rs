@@ -59,8 +59,14 @@ pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<St
             "--from {a} s must be before --to {b} s"
         )));
     }
-    let fits = fit::fit_all(&scene, &m, (args.from, args.to), &free)
-        .map_err(|e| CliError::Invalid(e.to_string()))?;
+    // A series long enough to take a noticeable time shows a counter.
+    let bar = super::progress::Bar::counter("model evaluations", m.t.len() > 5_000);
+    let fits = fit::fit_all(&scene, &m, (args.from, args.to), &free, &bar);
+    bar.finish();
+    let fits = fits.map_err(|e| match e {
+        fit::FitError::Cancelled => CliError::Interrupted,
+        e => CliError::Invalid(e.to_string()),
+    })?;
     let text = match args.format {
         FitFormat::Json => {
             let mut s = serde_json::to_string_pretty(&FitJson {
@@ -111,11 +117,23 @@ fn table(scene: &Scene, f: &Fits) -> String {
     }
     let mf = &f.model_fit;
     let _ = writeln!(out);
-    let _ = writeln!(
-        out,
-        "model fit to all {} frames (v_cm and v_t; frames that straddle an impact left out):",
-        mf.points
-    );
+    match mf.every {
+        None => {
+            let _ = writeln!(
+                out,
+                "model fit to all {} frames (v_cm and v_t; frames that straddle an impact left out):",
+                mf.points
+            );
+        }
+        Some(k) => {
+            let _ = writeln!(
+                out,
+                "model fit to {} frames, one in {k} of the series (at most {} are used; v_cm and v_t; frames that straddle an impact left out):",
+                mf.points,
+                fit::MAX_MODEL_POINTS
+            );
+        }
+    }
     let _ = writeln!(
         out,
         "  μ_k = {:.4} ± {:.4} (± 2σ, 95 %)   RMS residual {:.4} m/s",

@@ -19,6 +19,7 @@ use crate::tui::{self, app::App};
 pub mod entry;
 mod fit;
 mod methods;
+mod progress;
 mod sweep;
 use crate::input::units::{Dimension, parse_quantity, show, significant};
 pub use methods::write_atomically;

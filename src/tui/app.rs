@@ -345,6 +345,7 @@ impl App {
                     m,
                     self.fit_window,
                     &[crate::study::fit::Free::Mu],
+                    &crate::study::Quiet,
                 )
                 .map_err(|e| e.to_string())
             })
@@ -408,7 +409,16 @@ impl App {
                 &settings,
                 &mut rec,
             );
-            let row = compare::measure(method, &self.scene, &self.span, &settings, sol, false);
+            let row = compare::measure(
+                method,
+                &self.scene,
+                &self.span,
+                &settings,
+                sol,
+                false,
+                &crate::study::Quiet,
+            )
+            .expect("Quiet never cancels");
             Overlay {
                 method,
                 settings,
@@ -428,14 +438,18 @@ impl App {
         for method in Method::TIME_STEPPING {
             for level in [0, 2, 4, 6] {
                 let settings = level_settings(method, level);
-                rows.push(compare::measure(
-                    method,
-                    &self.scene,
-                    &self.span,
-                    &settings,
-                    &self.solution,
-                    false,
-                ));
+                rows.push(
+                    compare::measure(
+                        method,
+                        &self.scene,
+                        &self.span,
+                        &settings,
+                        &self.solution,
+                        false,
+                        &crate::study::Quiet,
+                    )
+                    .expect("Quiet never cancels"),
+                );
             }
         }
         self.method_rows = Some(rows);
