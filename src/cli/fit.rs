@@ -51,7 +51,14 @@ struct FitJson<'a> {
 pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<String, CliError> {
     let (preset, scene, _) = scene_args.resolve()?;
     let m = measured(&preset, data)?;
-    let free: Vec<Free> = args.free.clone().unwrap_or_else(|| vec![Free::Mu]);
+    // Each value once: a repeated one (`--free mu,mu`) made the normal matrix
+    // singular and the uncertainty NaN.
+    let mut free: Vec<Free> = Vec::new();
+    for f in args.free.clone().unwrap_or_else(|| vec![Free::Mu]) {
+        if !free.contains(&f) {
+            free.push(f);
+        }
+    }
     if let (Some(a), Some(b)) = (args.from, args.to)
         && a >= b
     {
