@@ -136,10 +136,12 @@ const KNOWN_OPEN: &[Known] = &[
         item: 12,
         hang: false,
         applies: |c, v| {
-            c.command() == Some("fit")
+            matches!(c.command(), Some("fit" | "render"))
                 && matches!(v, Some(Verdict::Fail { class, detail })
                     if class.starts_with("success: non-finite")
-                        && (class.contains("_se") || detail.contains("± NaN")))
+                        && (class.contains("_se")
+                            || detail.contains("± NaN")
+                            || detail.contains("+- NaN")))
         },
     },
 ];
@@ -161,6 +163,9 @@ fn extreme(c: &Case) -> bool {
         let lower = w.to_lowercase();
         lower.contains("inf")
             || lower.contains("nan")
+            || w[..end]
+                .parse::<f64>()
+                .is_ok_and(|x| x == 0.0 && x.is_sign_negative())
             || w[..end]
                 .parse::<f64>()
                 .is_ok_and(|x| !(x == 0.0 || (1e-30..1e30).contains(&x.abs())))
@@ -1288,6 +1293,11 @@ fn judge(case: &Case, result: &Result<Result<Exit, String>, Duration>) -> Verdic
             } else {
                 let words = nonfinite_words(&text);
                 if !words.is_empty() {
+                    let lines: Vec<&str> = text
+                        .lines()
+                        .filter(|l| !nonfinite_words(l).is_empty())
+                        .take(3)
+                        .collect();
                     let what = if text.starts_with("<svg") || text.starts_with("<?xml") {
                         "SVG"
                     } else {
@@ -1298,7 +1308,7 @@ fn judge(case: &Case, result: &Result<Result<Exit, String>, Duration>) -> Verdic
                             "success: non-finite number ({}) in {what} output",
                             words.join(", ")
                         ),
-                        shown(),
+                        format!("at: {}\n{}", lines.join("\n"), shown()),
                     );
                 }
             }
