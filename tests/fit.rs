@@ -63,7 +63,7 @@ fn model_fits_and_regimes_match_the_three_experiments() {
         ("4.9", Regime::Recollide),
     ] {
         let (scene, m) = paper(width);
-        let f = fit::model_fit(&scene, &m, &[Free::Mu]).unwrap();
+        let f = fit::model_fit(&scene, &m, &[Free::Mu], &groovelab::study::Quiet).unwrap();
         assert!((0.14..=0.20).contains(&f.mu), "b = {width}: μ_k {}", f.mu);
         assert!(
             f.mu_se > 0.0 && f.mu_se < 0.02,
@@ -136,7 +136,7 @@ fn synthetic_data_give_back_mu_within_the_reported_uncertainty() {
         let m = Measured::velocities(frames.clone(), v_cm, v_t);
         // Start the fit away from the truth.
         let start = Scene { mu: 0.3, ..scene };
-        let f = fit::model_fit(&start, &m, &[Free::Mu]).unwrap();
+        let f = fit::model_fit(&start, &m, &[Free::Mu], &groovelab::study::Quiet).unwrap();
         if (f.mu - 0.17).abs() <= 2.0 * f.mu_se {
             inside += 1;
         }
@@ -150,7 +150,7 @@ fn every_free_value_has_a_finite_uncertainty_or_a_reason() {
     for width in ["3.5", "4.4", "4.9"] {
         let (scene, m) = paper(width);
         let free = [Free::Mu, Free::V0, Free::Restitution];
-        let f = fit::model_fit(&scene, &m, &free).unwrap();
+        let f = fit::model_fit(&scene, &m, &free, &groovelab::study::Quiet).unwrap();
         for (name, se) in [
             ("mu", Some(f.mu_se).filter(|s| s.is_finite())),
             ("v0", f.v0_se),

@@ -32,7 +32,7 @@ fn try_load(scene: &Scene, text: &str) -> Result<Loaded, String> {
 fn fits_of(scene: &Scene, text: &str) -> (Loaded, TrackFits) {
     let l = try_load(scene, text).unwrap();
     let start = Scene { mu: 0.3, ..*scene };
-    let f = track::fit_tracks(&start, &l.measured, &[Free::Mu]).unwrap();
+    let f = track::fit_tracks(&start, &l.measured, &[Free::Mu], &groovelab::study::Quiet).unwrap();
     (l, f)
 }
 
@@ -202,7 +202,14 @@ fn without_a_mark_the_fits_use_the_centre_only() {
     assert!(l.measured.v_t.iter().all(|v| v.is_nan()));
     assert!((f.position.mu - MU).abs() <= 0.003, "μ {}", f.position.mu);
     // The line fits still work: a_cm from v_cm, over the fitted model's sliding phase.
-    let all = fit::fit_all(&s, &l.measured, (None, None), &[Free::Mu]).unwrap();
+    let all = fit::fit_all(
+        &s,
+        &l.measured,
+        (None, None),
+        &[Free::Mu],
+        &groovelab::study::Quiet,
+    )
+    .unwrap();
     assert!(
         (all.line_fit.mu_cm - MU).abs() <= 0.02,
         "{}",

@@ -98,7 +98,14 @@ pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<St
         super::output::check_output(path)?;
     }
     let (m, found) = load(&preset, &scene, data)?;
-    let free: Vec<Free> = args.free.clone().unwrap_or_else(|| vec![Free::Mu]);
+    // Each value once: a repeated one (`--free mu,mu`) made the normal matrix
+    // singular and the uncertainty NaN.
+    let mut free: Vec<Free> = Vec::new();
+    for f in args.free.clone().unwrap_or_else(|| vec![Free::Mu]) {
+        if !free.contains(&f) {
+            free.push(f);
+        }
+    }
     if let (Some(a), Some(b)) = (args.from, args.to)
         && a >= b
     {
@@ -106,14 +113,20 @@ pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<St
             "--from {a} s must be before --to {b} s"
         )));
     }
-    let fits = fit::fit_all(&scene, &m, (args.from, args.to), &free)
-        .map_err(|e| CliError::Invalid(e.to_string()))?;
-    let position = match &found {
-        Some(_) => Some(
-            fit::position_fit(&scene, &m, &free).map_err(|e| CliError::Invalid(e.to_string()))?,
-        ),
-        None => None,
+    // A series long enough to take a noticeable time shows a counter.
+    let bar = super::progress::Bar::counter("model evaluations", m.t.len() > 5_000);
+    let fits = fit::fit_all(&scene, &m, (args.from, args.to), &free, &bar);
+    let position = match (&fits, &found) {
+        (Ok(_), Some(_)) => Some(fit::position_fit(&scene, &m, &free, &bar)),
+        _ => None,
     };
+    bar.finish();
+    let cancelled = |e: fit::FitError| match e {
+        fit::FitError::Cancelled => CliError::Interrupted,
+        e => CliError::Invalid(e.to_string()),
+    };
+    let fits = fits.map_err(cancelled)?;
+    let position = position.transpose().map_err(cancelled)?;
     let text = match args.format {
         FitFormat::Json => {
             let mut s = serde_json::to_string_pretty(&FitJson {
@@ -204,11 +217,23 @@ fn table(scene: &Scene, f: &Fits, paper_data: bool) -> String {
     }
     let mf = &f.model_fit;
     let _ = writeln!(out);
-    let _ = writeln!(
-        out,
-        "model fit to all {} frames (v_cm and v_t; frames that straddle an impact left out):",
-        mf.points
-    );
+    match mf.every {
+        None => {
+            let _ = writeln!(
+                out,
+                "model fit to all {} frames (v_cm and v_t; frames that straddle an impact left out):",
+                mf.points
+            );
+        }
+        Some(k) => {
+            let _ = writeln!(
+                out,
+                "model fit to {} frames, one in {k} of the series (at most {} are used; v_cm and v_t; frames that straddle an impact left out):",
+                mf.points,
+                fit::MAX_MODEL_POINTS
+            );
+        }
+    }
     let why = |name: &str| {
         mf.not_identified
             .iter()

@@ -232,16 +232,24 @@ pub(super) fn compare(scene_args: &SceneArgs, args: &CompareArgs) -> Result<Stri
     }
     let methods: Vec<Method> = match &args.methods {
         Some(m) if !m.is_empty() => {
-            let mut m = m.clone();
-            m.retain(|x| *x != Method::Exact);
-            m.insert(0, Method::Exact);
-            m
+            // Exact first, then each method once (a repeated name adds no rows, and
+            // no work: the sweep's bound is per method).
+            let mut unique = vec![Method::Exact];
+            for x in m {
+                if !unique.contains(x) {
+                    unique.push(*x);
+                }
+            }
+            unique
         }
         _ => std::iter::once(Method::Exact)
             .chain(Method::TIME_STEPPING)
             .collect(),
     };
-    let rows = cmp::sweep(&scene, &span, &methods, &base);
+    let bar = super::progress::Bar::new("runs", true);
+    let rows = cmp::sweep(&scene, &span, &methods, &base, &bar);
+    bar.finish();
+    let rows = rows.map_err(|_| CliError::Interrupted)?;
     let text = match args.format {
         CompareFormat::Json => {
             let doc = CompareJson {
@@ -303,6 +311,20 @@ fn table(rows: &[Row]) -> String {
             r.time_min_s,
             r.time_median_s
         );
+    }
+    for r in rows.iter().filter(|r| r.status == cmp::Status::Stalled) {
+        if let Some(note) = &r.note {
+            let _ = writeln!(
+                out,
+                "stalled: {} at {}: {note}",
+                r.method.name(),
+                match (r.step, r.tolerance) {
+                    (Some(h), _) => format!("h = {h:.1e} s"),
+                    (None, Some(t)) => format!("tol = {t:.0e}"),
+                    _ => String::new(),
+                }
+            );
+        }
     }
     let _ = writeln!(
         out,

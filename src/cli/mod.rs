@@ -20,8 +20,10 @@ use crate::tui::{
 };
 
 mod args;
+pub mod entry;
 mod fit;
 mod methods;
+mod progress;
 mod sweep;
 use crate::input::units::{Dimension, show, significant};
 pub use crate::output::{self, write_atomically};

@@ -116,7 +116,8 @@ pub struct Lab {
     want_fits: bool,
     overlay_choice: Option<(Method, u8)>,
     methods: Job<Vec<Row>>,
-    overlay: Job<Overlay>,
+    /// `None` only for a run that was cancelled before it finished.
+    overlay: Job<Option<Overlay>>,
     fits: Job<Result<Fits, String>>,
     /// The model fitted to a position track's positions (none for a velocity file).
     position_fit: Job<Result<ModelFit, String>>,
@@ -244,14 +245,15 @@ impl Lab {
                 let (scene, m, window) = (self.scene, m.clone(), self.fit_window);
                 if m.x.is_some() {
                     let m = m.clone();
-                    self.position_fit.start(move |_| {
-                        fit::position_fit(&scene, &m, &[Free::Mu]).map_err(|e| e.to_string())
+                    self.position_fit.start(move |ticket| {
+                        fit::position_fit(&scene, &m, &[Free::Mu], ticket)
+                            .map_err(|e| e.to_string())
                     });
                 } else {
                     self.position_fit.cancel();
                 }
-                self.fits.start(move |_| {
-                    fit::fit_all(&scene, &m, window, &[Free::Mu]).map_err(|e| e.to_string())
+                self.fits.start(move |ticket| {
+                    fit::fit_all(&scene, &m, window, &[Free::Mu], ticket).map_err(|e| e.to_string())
                 });
             }
             None => {
@@ -325,7 +327,11 @@ impl Lab {
     }
 
     pub fn overlay(&self) -> State<'_, Overlay> {
-        self.overlay.state()
+        match self.overlay.state() {
+            State::Ready(Some(o)) => State::Ready(o),
+            State::Ready(None) | State::Idle => State::Idle,
+            State::Computing { done, total } => State::Computing { done, total },
+        }
     }
 
     /// Asks for (or stops asking for) the fits of the measured series.
@@ -494,7 +500,11 @@ fn method_rows(scene: &Scene, span: &Span, sol: &Solution, ticket: &Ticket) -> V
         }
         ticket.progress(i, runs.len());
         let settings = level_settings(method, level);
-        rows.push(compare::measure(method, scene, span, &settings, sol, false));
+        match compare::measure(method, scene, span, &settings, sol, false, ticket) {
+            Ok(row) => rows.push(row),
+            // Superseded: the rows are dropped unseen.
+            Err(_) => break,
+        }
     }
     rows
 }
@@ -507,7 +517,7 @@ fn overlay(
     span: &Span,
     sol: &Solution,
     ticket: &Ticket,
-) -> Overlay {
+) -> Option<Overlay> {
     let settings = level_settings(method, level);
     let steps = if method.adaptive() {
         1
@@ -532,17 +542,14 @@ fn overlay(
         &settings,
         &mut rec,
     );
-    let row = if ticket.cancelled() {
-        compare::measure(method, scene, span, &level_settings(method, 0), sol, false)
-    } else {
-        compare::measure(method, scene, span, &settings, sol, false)
-    };
-    Overlay {
+    // A superseded run stops here; its (absent) result is never shown.
+    let row = compare::measure(method, scene, span, &settings, sol, false, ticket).ok()?;
+    Some(Overlay {
         method,
         settings,
         points: rec.points,
         row,
-    }
+    })
 }
 
 /// Sample times: about four per column, plus both sides of every event so jumps and

@@ -613,6 +613,7 @@ mod tests {
             &measured,
             (None, None),
             &[crate::study::fit::Free::Mu],
+            &crate::study::Quiet,
         )
         .unwrap();
         // A fitted v0 of 1e308 (the model overflows) and inf in the data.

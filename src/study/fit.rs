@@ -11,12 +11,43 @@ use crate::physics::derived::{Derived, Regime};
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::story::Verdict;
+use crate::study::Progress;
+
+/// Most frames the model fit uses. A longer series is thinned to every k-th frame
+/// (the output says so): each model evaluation walks every point used, and a fit
+/// takes a few hundred evaluations, so 1 000 000 frames took 10 s where 20 000 take
+/// a fifth of a second. Video analysis gives 30–1000 frames a second: a real series
+/// stays far below the cap.
+pub const MAX_MODEL_POINTS: usize = 20_000;
 
 /// Why a fit cannot be made.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum FitError {
     #[error("{0}")]
     Data(String),
+    /// The caller's [`Progress`] asked to stop.
+    #[error("cancelled")]
+    Cancelled,
+}
+
+/// Counts model evaluations for [`Progress`] and stops when it asks.
+struct Evals<'a> {
+    progress: &'a dyn Progress,
+    done: std::cell::Cell<u64>,
+}
+
+impl Evals<'_> {
+    /// Before each model evaluation.
+    fn next(&self) -> Result<(), FitError> {
+        let done = self.done.get() + 1;
+        self.done.set(done);
+        self.progress.tick(done, 0);
+        if self.progress.cancelled() {
+            Err(FitError::Cancelled)
+        } else {
+            Ok(())
+        }
+    }
 }
 
 /// A straight line `y = a + b t` by least squares, with standard errors.
@@ -207,6 +238,10 @@ pub struct ModelFit {
     pub agrees: bool,
     /// Free values the data cannot pin down, and why (their `_se` is null).
     pub not_identified: Vec<NotIdentified>,
+    /// Set when the series had more than [`MAX_MODEL_POINTS`] frames: the fit used
+    /// every this-many-th frame.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub every: Option<usize>,
 }
 
 /// A free value without an uncertainty, and why.
@@ -494,24 +529,59 @@ fn inverse(a: &[Vec<f64>]) -> Option<Vec<Vec<f64>>> {
     )
 }
 
+/// Every `k`-th frame of `m`, with `k` the smallest that leaves at most
+/// [`MAX_MODEL_POINTS`] frames; `None` if the series is short enough already.
+pub fn thinned(m: &Measured) -> Option<(Measured, usize)> {
+    let n = m.t.len();
+    if n <= MAX_MODEL_POINTS {
+        return None;
+    }
+    let k = n.div_ceil(MAX_MODEL_POINTS);
+    let pick = |v: &[f64]| -> Vec<f64> { v.iter().step_by(k).copied().collect() };
+    let pick_opt = |v: &Option<Vec<f64>>| v.as_deref().map(pick);
+    Some((
+        Measured {
+            t: pick(&m.t),
+            v_cm: pick(&m.v_cm),
+            v_t: pick(&m.v_t),
+            v_cm_sigma: pick_opt(&m.v_cm_sigma),
+            v_t_sigma: pick_opt(&m.v_t_sigma),
+            x: pick_opt(&m.x),
+            angle: pick_opt(&m.angle),
+        },
+        k,
+    ))
+}
+
 /// Least squares of the exact model's v_cm and v_t of the left ball to all measured
 /// points (Levenberg–Marquardt, numerical derivatives), free `free`. Points with an
 /// uncertainty (`v_cm_sigma`, `v_t_sigma`) count by its inverse square; a v_t that
-/// was not measured (NaN) is left out.
-pub fn model_fit(scene: &Scene, m: &Measured, free: &[Free]) -> Result<ModelFit, FitError> {
-    model_fit_of(scene, m, free, Target::Velocity)
+/// was not measured (NaN) is left out. A series longer than [`MAX_MODEL_POINTS`] is
+/// [`thinned`] first. Stops when `progress` says so.
+pub fn model_fit(
+    scene: &Scene,
+    m: &Measured,
+    free: &[Free],
+    progress: &dyn Progress,
+) -> Result<ModelFit, FitError> {
+    model_fit_of(scene, m, free, Target::Velocity, progress)
 }
 
 /// Least squares of the exact model's positions to a tracked series (`m.x`, and
 /// `m.angle` when the rim mark was tracked): no differentiation, so its uncertainty
 /// comes from independent residuals. `rms` is then in metres (x and r θ).
-pub fn position_fit(scene: &Scene, m: &Measured, free: &[Free]) -> Result<ModelFit, FitError> {
+pub fn position_fit(
+    scene: &Scene,
+    m: &Measured,
+    free: &[Free],
+    progress: &dyn Progress,
+) -> Result<ModelFit, FitError> {
     if m.x.is_none() {
         return Err(FitError::Data(
             "the data hold no positions (a velocity file): no position fit".into(),
         ));
     }
-    model_fit_of(scene, m, free, Target::Position)
+    model_fit_of(scene, m, free, Target::Position, progress)
 }
 
 fn model_fit_of(
@@ -519,7 +589,17 @@ fn model_fit_of(
     m: &Measured,
     free: &[Free],
     target: Target,
+    progress: &dyn Progress,
 ) -> Result<ModelFit, FitError> {
+    let thin = thinned(m);
+    let (m, every) = match &thin {
+        Some((t, k)) => (t, Some(*k)),
+        None => (m, None),
+    };
+    let evals = Evals {
+        progress,
+        done: std::cell::Cell::new(0),
+    };
     let start: Vec<f64> = free
         .iter()
         .map(|f| match f {
@@ -532,13 +612,13 @@ fn model_fit_of(
     // where impacts move past data points, and local steps get caught there.
     let mut p = start;
     if let Some(i) = free.iter().position(|f| *f == Free::Mu) {
-        p[i] = scan_mu(scene, m, free, &p, i, target);
+        p[i] = scan_mu(scene, m, free, &p, i, target, &evals)?;
     }
     // Then every free value together from there, on the frames away from the model's
     // impacts (chosen again once the fit has moved them).
     let mut idx = fit_points(m, &with(scene, free, &p), target);
     for _ in 0..3 {
-        p = least_squares(scene, m, free, &idx, p, target)?;
+        p = least_squares(scene, m, free, &idx, p, target, &evals)?;
         let next = fit_points(m, &with(scene, free, &p), target);
         if next == idx {
             break;
@@ -586,6 +666,7 @@ fn model_fit_of(
         indistinguishable_from_rest: verdict.indistinguishable_from_rest(),
         agrees: verdict.agrees_with(regime_observed),
         not_identified,
+        every,
     })
 }
 
@@ -598,17 +679,30 @@ fn mean_cost(scene: &Scene, m: &Measured, target: Target) -> f64 {
 
 /// The μ that minimises [`mean_cost`]: a log-spaced scan of 0.01 … 1, then golden
 /// section between the neighbours of the best scan point.
-fn scan_mu(scene: &Scene, m: &Measured, free: &[Free], p: &[f64], i: usize, target: Target) -> f64 {
+fn scan_mu(
+    scene: &Scene,
+    m: &Measured,
+    free: &[Free],
+    p: &[f64],
+    i: usize,
+    target: Target,
+    evals: &Evals,
+) -> Result<f64, FitError> {
     let cost = |mu: f64| {
+        evals.next()?;
         let mut q = p.to_vec();
         q[i] = mu;
-        mean_cost(&with(scene, free, &q), m, target)
+        Ok(mean_cost(&with(scene, free, &q), m, target))
     };
     let grid: Vec<f64> = (0..=80)
         .map(|k| 0.01 * 100f64.powf(k as f64 / 80.0))
         .collect();
+    let costs = grid
+        .iter()
+        .map(|&mu| cost(mu))
+        .collect::<Result<Vec<f64>, FitError>>()?;
     let best = (0..grid.len())
-        .min_by(|&a, &b| cost(grid[a]).total_cmp(&cost(grid[b])))
+        .min_by(|&a, &b| costs[a].total_cmp(&costs[b]))
         .unwrap_or(0);
     let (mut a, mut b) = (
         grid[best.saturating_sub(1)],
@@ -617,23 +711,23 @@ fn scan_mu(scene: &Scene, m: &Measured, free: &[Free], p: &[f64], i: usize, targ
     let phi = 0.5 * (5f64.sqrt() - 1.0);
     let mut c = b - phi * (b - a);
     let mut d = a + phi * (b - a);
-    let (mut fc, mut fd) = (cost(c), cost(d));
+    let (mut fc, mut fd) = (cost(c)?, cost(d)?);
     while b - a > 1e-7 * b {
         if fc < fd {
             b = d;
             d = c;
             fd = fc;
             c = b - phi * (b - a);
-            fc = cost(c);
+            fc = cost(c)?;
         } else {
             a = c;
             c = d;
             fc = fd;
             d = a + phi * (b - a);
-            fd = cost(d);
+            fd = cost(d)?;
         }
     }
-    0.5 * (a + b)
+    Ok(0.5 * (a + b))
 }
 
 fn normal_matrix(j: &[Vec<f64>]) -> Vec<Vec<f64>> {
@@ -683,6 +777,7 @@ fn least_squares(
     idx: &[usize],
     mut p: Vec<f64>,
     target: Target,
+    evals: &Evals,
 ) -> Result<Vec<f64>, FitError> {
     if idx.len() < free.len() + 2 {
         return Err(FitError::Data(format!(
@@ -700,6 +795,7 @@ fn least_squares(
     let mut lambda = 1e-3;
     let mut c = cost(&p);
     for _ in 0..100 {
+        evals.next()?;
         let r0 = residuals(&with(scene, free, &p), m, idx, target);
         let j = jacobian(scene, m, free, idx, &p, &r0, target);
         let jtj = normal_matrix(&j);
@@ -722,6 +818,7 @@ fn least_squares(
                 free,
                 &p.iter().zip(&step).map(|(a, b)| a + b).collect::<Vec<_>>(),
             );
+            evals.next()?;
             let cq = cost(&q);
             if cq < c {
                 improved = (c - cq) > 1e-12 * c;
@@ -836,14 +933,16 @@ pub struct Fits {
     pub model_fit: ModelFit,
 }
 
-/// Line fit over `window` and model fit with `free`, on `scene` and `m`.
+/// Line fit over `window` and model fit with `free`, on `scene` and `m`; stops when
+/// `progress` says so (`FitError::Cancelled`).
 pub fn fit_all(
     scene: &Scene,
     m: &Measured,
     window: (Option<f64>, Option<f64>),
     free: &[Free],
+    progress: &dyn Progress,
 ) -> Result<Fits, FitError> {
-    let model_fit = model_fit(scene, m, free)?;
+    let model_fit = model_fit(scene, m, free, progress)?;
     // Without v_t the data cannot say when sliding ends: the fitted model does.
     let window = match window {
         (from, None) if !m.has_v_t() => {
