@@ -518,3 +518,23 @@ fn snapshots_of_the_whole_motion_energy_and_pin() {
         }
     }
 }
+
+#[test]
+fn pinning_does_not_stretch_a_scaled_span_again() {
+    let mut a = app("paper-b4.4");
+    press(&mut a, "t");
+    let doubled = a.lab.solution.t_end;
+    press(&mut a, "P");
+    assert_eq!(a.lab.solution.t_end, doubled, "same scene: same span");
+    press(&mut a, "P t t P");
+    assert_eq!(a.lab.span_end, SpanEnd::Auto);
+    let auto = a.lab.solution.t_end;
+    // A pinned slower run (more friction ends it sooner) keeps the longer span.
+    select(&mut a, Key::Mu);
+    press(&mut a, "S-right S-right");
+    assert!(
+        a.lab.solution.t_end >= auto - 1e-12,
+        "{} {auto}",
+        a.lab.solution.t_end
+    );
+}

@@ -140,6 +140,8 @@ pub struct Pinned {
     pub solution: Arc<Solution>,
     /// The preset it started from.
     pub label: String,
+    /// Where its automatic span ends (the current automatic span reaches it too).
+    pub auto_end: f64,
 }
 
 /// A per-scene cache of what the views draw, keyed by size.
@@ -311,6 +313,16 @@ impl Lab {
                 scene: self.scene,
                 solution: self.solution.clone(),
                 label: self.preset.name.clone(),
+                // Its own automatic end, not the shown one: a scaled span must not
+                // compound through the pin.
+                auto_end: solve_shown(
+                    &self.scene,
+                    &self.span,
+                    SpanEnd::Auto,
+                    self.measured(),
+                    None,
+                )
+                .t_end,
             }),
         };
         // The automatic span covers the pinned run too: re-solve only if that moves it.
@@ -331,7 +343,7 @@ impl Lab {
 
     /// Where the pinned run's span ends (the automatic span reaches it too).
     fn pinned_end(&self) -> Option<f64> {
-        self.pinned.as_ref().map(|p| p.solution.t_end)
+        self.pinned.as_ref().map(|p| p.auto_end)
     }
 
     fn load(&mut self, scene: Scene, span: Span) {

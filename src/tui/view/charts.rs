@@ -399,7 +399,8 @@ fn energy(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
         });
     }
     let rows = usize::from(area.height.saturating_sub(4));
-    let ((_, y1), _) = bounds(&series, rows);
+    // Room above the total for the event labels on the top row.
+    let ((_, y1), _) = nice_ticks(0.0, 1.1 * total, (rows / 3).max(2));
     let plot = Plot {
         x_range: (sol.t_start, sol.t_end),
         y_range: (0.0, y1.max(f64::MIN_POSITIVE)),
