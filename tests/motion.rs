@@ -538,3 +538,27 @@ fn pinning_does_not_stretch_a_scaled_span_again() {
         a.lab.solution.t_end
     );
 }
+
+#[test]
+fn new_screens_need_no_ascii_stand_ins() {
+    // `force_ascii` would hide a stray symbol; the views must draw ASCII themselves.
+    let theme = Theme::new(Glyphs::ASCII, true);
+    for preset in ["paper-b4.9", "inelastic", "paper-b4.4"] {
+        for keys in [
+            "e",
+            "P right right",
+            "P S-right e",
+            "P S-right x",
+            "t",
+            "> > >",
+        ] {
+            let mut a = app(preset);
+            press(&mut a, keys);
+            a.lab.wait();
+            for (w, h) in SIZES {
+                let cells = view::non_ascii_cells(&a, w, h, &theme);
+                assert!(cells.is_empty(), "{preset} {keys:?} {w}x{h}: {cells:?}");
+            }
+        }
+    }
+}
