@@ -322,9 +322,21 @@ impl SceneArgs {
     pub fn resolve(&self) -> Result<(Preset, Scene, Span), CliError> {
         let preset = Preset::load(self.preset.as_deref().unwrap_or(preset::DEFAULT))
             .map_err(|e| CliError::Invalid(e.to_string()))?;
-        let (scene, span) = preset
-            .spec
-            .over(&self.values)
+        let mut spec = preset.spec.over(&self.values);
+        // A preset's t_end belongs to the preset as it is: once a scene option changes
+        // it, the span follows the physics again (unless --t-end is given).
+        let changed = self
+            .values
+            .given()
+            .any(|(k, _)| !matches!(k, Key::TStart | Key::TEnd));
+        if changed && self.values.get(Key::TEnd).is_none() {
+            let mut without = SceneSpec::default();
+            for (k, v) in spec.given().filter(|(k, _)| *k != Key::TEnd) {
+                without.set(k, v);
+            }
+            spec = without;
+        }
+        let (scene, span) = spec
             .resolve()
             .map_err(|e| CliError::Invalid(e.to_string()))?;
         Ok((preset, scene, span))

@@ -6,8 +6,9 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
+use crate::input::params::Key;
 use crate::input::preset::{self, Preset};
-use crate::lab::Lab;
+use crate::lab::{Lab, SpanEnd};
 use crate::methods::Method;
 use crate::physics::derived::{Derived, Summary};
 use crate::physics::engine;
@@ -86,7 +87,16 @@ pub fn lab(scene_args: &SceneArgs, data: &DataArgs) -> Result<Lab, CliError> {
         // A position track's v_t needs r = kR of the scene shown, overrides included.
         preset.measured = Some(fit::load(&preset, &scene, data)?.0);
     }
-    Ok(Lab::new(preset, scene, span))
+    let mut lab = Lab::new(preset, scene, span);
+    // `--t-end` is explicit: it holds through parameter changes in the app.
+    if let (Some(t_end), Some(_)) = (span.t_end, scene_args.values.get(Key::TEnd)) {
+        lab.set_span_end(SpanEnd::Fixed {
+            t_end,
+            from_preset: false,
+        })
+        .map_err(|e| CliError::Invalid(e.to_string()))?;
+    }
+    Ok(lab)
 }
 
 /// The app on that lab, with the user's presets.

@@ -19,7 +19,7 @@ use crate::methods::{self, Method, Settings, Y};
 use crate::physics::derived::{Derived, Regime};
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
-use crate::physics::solution::{Snapshot, Solution};
+use crate::physics::solution::{EnergySplit, Snapshot, Solution};
 use crate::study::compare::{self, Row};
 use crate::study::fit::{self, Fits, Free, ModelFit};
 use jobs::{Job, State, Ticket};
@@ -92,6 +92,58 @@ pub enum SaveError {
     Io(String),
 }
 
+/// How the end of the shown time span is chosen. The rule, for the README: the span runs
+/// to a little past the last event (rest, the accumulation point T∞, the start of the
+/// final rolling) and past the last measured point, and is recomputed on every change.
+/// An end set explicitly (`--t-end`, or typed in the app) is kept; a preset's `t_end`
+/// holds until the first parameter change; the app's span key stretches or shrinks the
+/// automatic span, which then still follows the physics.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum SpanEnd {
+    /// A little past the last event and the last measured point.
+    Auto,
+    /// The automatic span times this factor (from `t_start`).
+    Scaled(f64),
+    /// A fixed end, s. `from_preset`: the preset's `t_end`, which gives way to
+    /// [`SpanEnd::Auto`] at the first parameter change.
+    Fixed { t_end: f64, from_preset: bool },
+}
+
+impl SpanEnd {
+    /// The span key's cycle: auto, ×2, ×½, auto; a fixed end goes back to auto.
+    pub fn next(self) -> SpanEnd {
+        match self {
+            SpanEnd::Auto => SpanEnd::Scaled(2.0),
+            SpanEnd::Scaled(f) if f > 1.0 => SpanEnd::Scaled(0.5),
+            SpanEnd::Scaled(_) | SpanEnd::Fixed { .. } => SpanEnd::Auto,
+        }
+    }
+
+    /// How the status line names it.
+    pub fn describe(self) -> String {
+        match self {
+            SpanEnd::Auto => "auto (a little past the last event)".into(),
+            SpanEnd::Scaled(f) if f > 1.0 => format!("auto ×{f}"),
+            SpanEnd::Scaled(f) => format!("auto ×1/{}", (1.0 / f).round()),
+            SpanEnd::Fixed {
+                from_preset: true, ..
+            } => "the preset's t_end".into(),
+            SpanEnd::Fixed { .. } => "fixed t_end".into(),
+        }
+    }
+}
+
+/// A scene pinned for comparison (A/B): drawn dimmed beside the current one.
+#[derive(Clone, Debug)]
+pub struct Pinned {
+    pub scene: Scene,
+    pub solution: Arc<Solution>,
+    /// The preset it started from.
+    pub label: String,
+    /// Where its automatic span ends (the current automatic span reaches it too).
+    pub auto_end: f64,
+}
+
 /// A per-scene cache of what the views draw, keyed by size.
 type Cached<K, T> = RefCell<Option<(K, Rc<[T]>)>>;
 
@@ -100,7 +152,11 @@ type Cached<K, T> = RefCell<Option<(K, Rc<[T]>)>>;
 pub struct Lab {
     pub preset: Preset,
     pub scene: Scene,
+    /// The span shown: `t_end` is always the shown end (see [`SpanEnd`]).
     pub span: Span,
+    pub span_end: SpanEnd,
+    /// The run pinned for an A/B comparison.
+    pub pinned: Option<Pinned>,
     pub solution: Arc<Solution>,
     pub derived: Derived,
     /// The x range (m) the balls cover over the span.
@@ -122,16 +178,33 @@ pub struct Lab {
     /// The model fitted to a position track's positions (none for a velocity file).
     position_fit: Job<Result<ModelFit, String>>,
     samples: Cached<usize, Snapshot>,
+    energies: Cached<usize, (f64, EnergySplit)>,
+    pinned_samples: Cached<usize, Snapshot>,
     regimes: Cached<(usize, usize), Regime>,
 }
 
 impl Lab {
+    /// The lab on `scene`; a `t_end` in `span` counts as the preset's (see [`SpanEnd`];
+    /// [`Lab::set_span_end`] makes it explicit).
     pub fn new(preset: Preset, scene: Scene, span: Span) -> Lab {
-        let solution = Arc::new(engine::solve(&scene, &span));
+        let span_end = preset_span_end(&span);
+        let solution = Arc::new(solve_shown(
+            &scene,
+            &span,
+            span_end,
+            preset.measured.as_ref(),
+            None,
+        ));
+        let span = Span {
+            t_start: span.t_start,
+            t_end: Some(solution.t_end),
+        };
         let mut lab = Lab {
             preset,
             scene,
             span,
+            span_end,
+            pinned: None,
             derived: Derived::of(&scene),
             solution,
             extent: (0.0, 0.0),
@@ -146,6 +219,8 @@ impl Lab {
             fits: Job::Idle,
             position_fit: Job::Idle,
             samples: RefCell::default(),
+            energies: RefCell::default(),
+            pinned_samples: RefCell::default(),
             regimes: RefCell::default(),
         };
         lab.cache();
@@ -179,27 +254,118 @@ impl Lab {
         }
     }
 
-    /// Sets a parameter if the scene stays valid.
+    /// Sets a parameter if the scene stays valid. Setting `t_end` fixes the span's end;
+    /// any other parameter ends a preset's `t_end` (the span follows the physics again).
     pub fn set(&mut self, key: Key, value: f64) -> Result<(), SceneError> {
-        let spec = SceneSpec::of(&self.scene, &self.span).with(key, value);
+        let fixed = match self.span_end {
+            SpanEnd::Fixed { t_end, .. } => Some(t_end),
+            _ => None,
+        };
+        let given = Span {
+            t_start: self.span.t_start,
+            t_end: fixed,
+        };
+        let spec = SceneSpec::of(&self.scene, &given).with(key, value);
         let (scene, span) = spec.resolve()?;
+        self.span_end = match (key, self.span_end) {
+            (Key::TEnd, _) => SpanEnd::Fixed {
+                t_end: value,
+                from_preset: false,
+            },
+            (Key::TStart, end) => end,
+            (
+                _,
+                SpanEnd::Fixed {
+                    from_preset: true, ..
+                },
+            ) => SpanEnd::Auto,
+            (_, end) => end,
+        };
         self.load(scene, span);
         Ok(())
     }
 
-    /// Starts over from `preset`.
+    /// Chooses how the span ends (the span key, or `--t-end`), keeping the scene.
+    pub fn set_span_end(&mut self, end: SpanEnd) -> Result<(), SceneError> {
+        if let SpanEnd::Fixed { t_end, .. } = end
+            && !(t_end > self.span.t_start && t_end <= 1e6)
+        {
+            return Err(SceneError::OutOfRange {
+                name: "t_end",
+                value: format!("{t_end} s"),
+                allowed: format!("t_start = {} s < t_end ≤ 1e6 s", self.span.t_start),
+            });
+        }
+        self.span_end = end;
+        self.load(self.scene, self.span);
+        Ok(())
+    }
+
+    /// Starts over from `preset` (its `t_end`, if any, holds until a parameter changes).
     pub fn load_preset(&mut self, preset: Preset) -> Result<(), SceneError> {
         let (scene, span) = preset.spec.resolve()?;
         self.preset = preset;
         self.fit_window = (None, None);
+        self.span_end = preset_span_end(&span);
         self.load(scene, span);
         Ok(())
     }
 
+    /// Pins the current run for an A/B comparison, or unpins it; true if now pinned.
+    pub fn toggle_pin(&mut self) -> bool {
+        self.pinned = match self.pinned {
+            Some(_) => None,
+            None => Some(Pinned {
+                scene: self.scene,
+                solution: self.solution.clone(),
+                label: self.preset.name.clone(),
+                // Its own automatic end, not the shown one: a scaled span must not
+                // compound through the pin.
+                auto_end: solve_shown(
+                    &self.scene,
+                    &self.span,
+                    SpanEnd::Auto,
+                    self.measured(),
+                    None,
+                )
+                .t_end,
+            }),
+        };
+        // The automatic span covers the pinned run too: re-solve only if that moves it.
+        let sol = solve_shown(
+            &self.scene,
+            &self.span,
+            self.span_end,
+            self.measured(),
+            self.pinned_end(),
+        );
+        if sol.t_end == self.solution.t_end {
+            self.cache();
+        } else {
+            self.load(self.scene, self.span);
+        }
+        self.pinned.is_some()
+    }
+
+    /// Where the pinned run's span ends (the automatic span reaches it too).
+    fn pinned_end(&self) -> Option<f64> {
+        self.pinned.as_ref().map(|p| p.auto_end)
+    }
+
     fn load(&mut self, scene: Scene, span: Span) {
         self.scene = scene;
-        self.span = span;
-        self.solution = Arc::new(engine::solve(&scene, &span));
+        let solution = solve_shown(
+            &scene,
+            &span,
+            self.span_end,
+            self.measured(),
+            self.pinned_end(),
+        );
+        self.span = Span {
+            t_start: span.t_start,
+            t_end: Some(solution.t_end),
+        };
+        self.solution = Arc::new(solution);
         self.derived = Derived::of(&scene);
         self.cache();
         self.methods.cancel();
@@ -209,6 +375,13 @@ impl Lab {
     /// What the views need from a solve that does not change from frame to frame.
     fn cache(&mut self) {
         self.extent = extent(&self.solution, self.scene.radius);
+        if let Some(p) = &self.pinned {
+            // The pinned balls are drawn too: the scene's scale covers both runs.
+            let mut pinned = (*p.solution).clone();
+            (pinned.t_start, pinned.t_end) = (self.solution.t_start, self.solution.t_end);
+            let (lo, hi) = extent(&pinned, p.scene.radius);
+            self.extent = (self.extent.0.min(lo), self.extent.1.max(hi));
+        }
         self.data_rms = self.measured().map(|m| data_rms(&self.solution, m));
         let radius = self.scene.radius;
         self.ghost = self.measured().map(|m| match &m.x {
@@ -218,6 +391,8 @@ impl Lab {
             None => ghost_track(m, radius),
         });
         self.samples.replace(None);
+        self.energies.replace(None);
+        self.pinned_samples.replace(None);
         self.regimes.replace(None);
     }
 
@@ -429,6 +604,78 @@ impl Lab {
         s
     }
 
+    /// The energy split at the same times as [`Lab::samples`], once per scene and width.
+    pub fn energies(&self, columns: usize) -> Rc<[(f64, EnergySplit)]> {
+        if let Some((c, s)) = &*self.energies.borrow()
+            && *c == columns
+        {
+            return s.clone();
+        }
+        let sol = &self.solution;
+        let s: Rc<[(f64, EnergySplit)]> = sample_times(sol, columns)
+            .into_iter()
+            .map(|t| (t, sol.energy_at(t)))
+            .collect();
+        self.energies.replace(Some((columns, s.clone())));
+        s
+    }
+
+    /// The pinned run's states over the current span (its own events kept sharp), once
+    /// per scene and width; empty when nothing is pinned.
+    pub fn pinned_samples(&self, columns: usize) -> Rc<[Snapshot]> {
+        let Some(p) = &self.pinned else {
+            return Rc::from(Vec::new());
+        };
+        if let Some((c, s)) = &*self.pinned_samples.borrow()
+            && *c == columns
+        {
+            return s.clone();
+        }
+        let mut pinned = (*p.solution).clone();
+        (pinned.t_start, pinned.t_end) = (self.solution.t_start, self.solution.t_end);
+        let s: Rc<[Snapshot]> = sample_times(&pinned, columns)
+            .into_iter()
+            .map(|t| pinned.at(t))
+            .collect();
+        self.pinned_samples.replace(Some((columns, s.clone())));
+        s
+    }
+
+    /// The pinned parameters that differ from the current ones: `(label, was, now)`,
+    /// in the units of the parameter panel.
+    pub fn pinned_changes(&self) -> Vec<(&'static str, String, String)> {
+        let Some(p) = &self.pinned else {
+            return Vec::new();
+        };
+        let (a, b) = (&p.scene, &self.scene);
+        let rows: [(&'static str, f64, f64, crate::input::units::Dimension); 11] = {
+            use crate::input::units::Dimension as D;
+            [
+                ("R", a.radius, b.radius, D::Length),
+                ("b", a.width, b.width, D::Length),
+                ("m left", a.left.mass, b.left.mass, D::Mass),
+                ("m right", a.right.mass, b.right.mass, D::Mass),
+                ("μ_k", a.mu, b.mu, D::Ratio),
+                ("v0 left", a.left.v0, b.left.v0, D::Speed),
+                ("v0 right", a.right.v0, b.right.v0, D::Speed),
+                ("e", a.restitution, b.restitution, D::Ratio),
+                ("c_rr", a.rolling_resistance, b.rolling_resistance, D::Ratio),
+                ("g", a.g, b.g, D::Acceleration),
+                ("t0", p.solution.t_start, self.solution.t_start, D::Time),
+            ]
+        };
+        rows.into_iter()
+            .filter(|(_, x, y, _)| (x - y).abs() > 1e-12 * x.abs().max(y.abs()))
+            .map(|(name, x, y, dim)| {
+                (
+                    name,
+                    crate::input::units::show(x, dim).to_string(),
+                    crate::input::units::show(y, dim).to_string(),
+                )
+            })
+            .collect()
+    }
+
     /// The regime over groove width (0 … 0.99 · 2R, across) and restitution (1 … 0,
     /// down) for these balls, `cols × rows` cells, row by row; once per scene and size.
     pub fn regime_grid(&self, cols: usize, rows: usize) -> Rc<[Regime]> {
@@ -473,7 +720,18 @@ impl Lab {
             return Err(SaveError::Exists(path));
         }
         let description = format!("Saved from groovelab (started from {})", self.preset.name);
-        let spec = SceneSpec::of(&self.scene, &self.span);
+        // Only an end that was set (not the automatic one) is saved.
+        let t_end = match self.span_end {
+            SpanEnd::Fixed { t_end, .. } => Some(t_end),
+            _ => None,
+        };
+        let spec = SceneSpec::of(
+            &self.scene,
+            &Span {
+                t_start: self.span.t_start,
+                t_end,
+            },
+        );
         let text = crate::input::preset::to_toml(name, &description, &spec, None)
             .map_err(SaveError::Io)?;
         // What is written must load again: check before reporting success.
@@ -484,6 +742,45 @@ impl Lab {
             .map_err(|e| SaveError::Io(e.to_string()))?;
         Ok(path)
     }
+}
+
+/// A `t_end` that came with a preset holds until a parameter changes.
+fn preset_span_end(span: &Span) -> SpanEnd {
+    match span.t_end {
+        Some(t_end) => SpanEnd::Fixed {
+            t_end,
+            from_preset: true,
+        },
+        None => SpanEnd::Auto,
+    }
+}
+
+/// The exact solution with the shown end: the engine always runs to the end of the
+/// motion, so only `t_end` depends on the choice. The automatic end also reaches the
+/// last measured point and the end of a pinned run, so neither is cut.
+fn solve_shown(
+    scene: &Scene,
+    span: &Span,
+    end: SpanEnd,
+    measured: Option<&Measured>,
+    pinned_end: Option<f64>,
+) -> Solution {
+    let auto_span = Span {
+        t_start: span.t_start,
+        t_end: None,
+    };
+    let mut sol = engine::solve(scene, &auto_span);
+    let last_measured = measured.and_then(|m| m.t.last().copied());
+    let auto = sol
+        .t_end
+        .max(last_measured.unwrap_or(f64::NEG_INFINITY))
+        .max(pinned_end.unwrap_or(f64::NEG_INFINITY));
+    sol.t_end = match end {
+        SpanEnd::Auto => auto,
+        SpanEnd::Scaled(f) => span.t_start + f * (auto - span.t_start),
+        SpanEnd::Fixed { t_end, .. } => t_end,
+    };
+    sol
 }
 
 /// Every time-stepping method at the Methods view's levels, untimed (so the view,

@@ -15,9 +15,9 @@ use crate::study::{Cancelled, Progress, Quiet};
 
 /// Most steps one run of a [`sweep`] may take. A level that needs more (a fixed step
 /// too fine for the span) is skipped as `stalled`, saying so. Every preset's default
-/// span (under 2 s) runs its finest level (1 µs) within it, so the budget only bounds
+/// span (under 4 s) runs its finest level (1 µs) within it, so the budget only bounds
 /// long spans: without it `--t-end 19.7` spent 70 s on 20-million-step runs.
-pub const STEP_BUDGET: usize = 2_000_000;
+pub const STEP_BUDGET: usize = 4_000_000;
 
 /// Steps between two looks at the stop flag: often enough to stop within
 /// milliseconds, rare enough to cost nothing.

@@ -80,13 +80,31 @@ pub const TABLE: &[Binding] = &[
     Binding {
         keys: &["."],
         action: Action::StepForward,
-        help: "step one frame forward",
+        help: "step one frame forward (the next measured frame when data are shown)",
         hint: None,
     },
     Binding {
         keys: &[","],
         action: Action::StepBack,
-        help: "step one frame back",
+        help: "step one frame back (the previous measured frame when data are shown)",
+        hint: None,
+    },
+    Binding {
+        keys: &[">"],
+        action: Action::NextEvent,
+        help: "jump to the next event (impact, rolling, rest, T-inf); click the chart to seek",
+        hint: None,
+    },
+    Binding {
+        keys: &["<"],
+        action: Action::PrevEvent,
+        help: "jump to the previous event",
+        hint: None,
+    },
+    Binding {
+        keys: &["t"],
+        action: Action::CycleSpan,
+        help: "time span: auto (a little past the last event), x2, x1/2",
         hint: None,
     },
     Binding {
@@ -117,6 +135,18 @@ pub const TABLE: &[Binding] = &[
         keys: &["x"],
         action: Action::TogglePositions,
         help: "chart: velocities or positions x(t)",
+        hint: None,
+    },
+    Binding {
+        keys: &["e"],
+        action: Action::ToggleEnergy,
+        help: "chart: energy against time (kinetic parts and what was lost to what)",
+        hint: None,
+    },
+    Binding {
+        keys: &["P"],
+        action: Action::TogglePin,
+        help: "pin this run (A/B): change parameters and compare; P again unpins",
         hint: None,
     },
     Binding {

@@ -155,7 +155,18 @@ fn event_loop(
                 Event::Mouse(m) if app.mouse => {
                     let size = terminal.size()?;
                     let area = ratatui::layout::Rect::new(0, 0, size.width, size.height);
-                    if let Some(panels) = view::layout(area) {
+                    // A click or drag on the chart seeks there.
+                    let seek = match m.kind {
+                        MouseEventKind::Down(MouseButton::Left)
+                        | MouseEventKind::Drag(MouseButton::Left) => {
+                            view::chart_time_at(app, area, m.column, m.row)
+                        }
+                        _ => None,
+                    };
+                    if let Some(t) = seek {
+                        app.seek(t);
+                        dirty = true;
+                    } else if let Some(panels) = view::layout(area) {
                         let hit = view::param_at(panels.params, app.selected, m.column, m.row);
                         let action = match (m.kind, hit) {
                             (MouseEventKind::Down(MouseButton::Left), Some(i)) => {

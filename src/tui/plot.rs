@@ -205,39 +205,77 @@ impl Grid {
     }
 }
 
+/// The x value drawn in screen column `column` of a plot whose data cells start at
+/// `plot_x` and are `plot_width` wide over `x_range` (the inverse of where the plot puts
+/// a value: column `i` shows `x0 + i / (width − 1) · (x1 − x0)`); `None` outside.
+pub fn time_at_column(
+    x_range: (f64, f64),
+    plot_x: u16,
+    plot_width: u16,
+    column: u16,
+) -> Option<f64> {
+    if plot_width < 2 || column < plot_x || column >= plot_x + plot_width {
+        return None;
+    }
+    let (x0, x1) = x_range;
+    let f = f64::from(column - plot_x) / f64::from(plot_width - 1);
+    Some(x0 + f * (x1 - x0))
+}
+
 impl Plot {
-    pub fn render(&self, area: Rect, buf: &mut Buffer, theme: &Theme) {
-        if area.width < 12 || area.height < 4 {
-            return;
-        }
-        let g = theme.glyphs;
-        let (x0, x1) = self.x_range;
+    fn y_ticks_in(&self, area: Rect) -> Vec<(f64, String)> {
         let (y0, y1) = self.y_range;
         let y_ticks = self.y_ticks.clone().unwrap_or_else(|| {
             let (_, t) = nice_ticks(y0, y1, (area.height as usize / 2).max(2));
             ticks_with_labels(&t)
         });
-        let y_ticks: Vec<_> = y_ticks
+        y_ticks
             .into_iter()
             .filter(|(v, _)| *v >= y0 && *v <= y1)
-            .collect();
-        // Labels are short (scientific beyond 1e6), but a margin never eats the plot.
-        let margin = y_ticks
+            .collect()
+    }
+
+    /// The data cells of the plot drawn in `area` (right of the y axis, between the
+    /// legend row and the x tick row); `None` if the area is too small to draw.
+    pub fn data_area(&self, area: Rect) -> Option<Rect> {
+        if area.width < 12 || area.height < 4 {
+            return None;
+        }
+        let margin = self
+            .y_ticks_in(area)
             .iter()
             .map(|(_, l)| l.chars().count())
             .max()
             .unwrap_or(1)
+            // Labels are short (scientific beyond 1e6), but a margin never eats the plot.
             .min(usize::from(area.width / 2)) as u16;
-        // Row 0: y title and legend; last row: x ticks; left: tick labels and axis.
         let plot = Rect {
             x: area.x + margin + 1,
             y: area.y + 1,
             width: area.width.saturating_sub(margin + 1),
             height: area.height.saturating_sub(2),
         };
-        if plot.width < 4 || plot.height < 2 {
-            return;
+        (plot.width >= 4 && plot.height >= 2).then_some(plot)
+    }
+
+    /// The x value under screen cell (`column`, `row`) of the plot drawn in `area`.
+    pub fn x_at(&self, area: Rect, column: u16, row: u16) -> Option<f64> {
+        let plot = self.data_area(area)?;
+        if row < plot.y || row >= plot.bottom() {
+            return None;
         }
+        time_at_column(self.x_range, plot.x, plot.width, column)
+    }
+
+    pub fn render(&self, area: Rect, buf: &mut Buffer, theme: &Theme) {
+        let Some(plot) = self.data_area(area) else {
+            return;
+        };
+        let g = theme.glyphs;
+        let (x0, x1) = self.x_range;
+        let (y0, y1) = self.y_range;
+        let y_ticks = self.y_ticks_in(area);
+        let margin = plot.x - area.x - 1;
         let (cols, rows) = (plot.width as usize, plot.height as usize);
         // Fractions from halves, which cannot overflow for finite bounds (−1e308 …
         // 1e308); a position is always a cell of the plot (NaN → 0).
@@ -263,10 +301,11 @@ impl Plot {
                 } else {
                     s.glyph
                 };
+                // ASCII lines are drawn with their glyph: the legend shows it twice.
                 let mark = if s.draw == Draw::Line && g.ascii {
-                    "--"
+                    format!("{0}{0}", s.glyph)
                 } else {
-                    mark
+                    mark.to_string()
                 };
                 legend.push((format!(" {mark} {}", s.name), s.style));
             }
@@ -561,6 +600,28 @@ mod tests {
                 draw_everywhere(&wide);
             }
         }
+    }
+
+    #[test]
+    fn a_column_maps_back_to_the_value_drawn_there() {
+        // 101 columns from x = 40 over -0.2 … 0.8 s: one column is 10 ms.
+        let t = |c| time_at_column((-0.2, 0.8), 40, 101, c);
+        assert_eq!(t(39), None, "left of the plot");
+        assert_eq!(t(141), None, "right of the plot");
+        assert!((t(40).unwrap() + 0.2).abs() < 1e-12);
+        assert!((t(140).unwrap() - 0.8).abs() < 1e-12);
+        assert!((t(60).unwrap() - 0.0).abs() < 1e-12);
+        // And it inverts the column the plot draws a value in.
+        let col_of = |x: f64| ((x + 0.2) / 1.0 * 100.0).round() as u16 + 40;
+        for x in [-0.2, -0.05, 0.31, 0.79] {
+            let back = t(col_of(x)).unwrap();
+            assert!((back - x).abs() <= 0.5 / 100.0 + 1e-12, "{x} -> {back}");
+        }
+        assert_eq!(
+            time_at_column((0.0, 1.0), 0, 1, 0),
+            None,
+            "one column: no range"
+        );
     }
 
     #[test]

@@ -79,6 +79,16 @@ pub fn layout(area: Rect) -> Option<Panels> {
     })
 }
 
+/// The time under a click at (`column`, `row`) of a screen of `area`: inside the
+/// chart's plot while the charts are shown and no popup is open.
+pub fn chart_time_at(app: &App, area: Rect, column: u16, row: u16) -> Option<f64> {
+    let panels = layout(area)?;
+    if app.view != View::Charts || app.mode != Mode::Normal {
+        return None;
+    }
+    charts::time_at(app, panels.chart, column, row)
+}
+
 /// A bordered block in the theme's glyph set.
 pub(crate) fn block<'a>(title: impl Into<Line<'a>>, theme: &Theme) -> Block<'a> {
     Block::bordered()

@@ -45,7 +45,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         Mode::Help => {
             let entries: Vec<(String, &str)> =
                 TABLE.iter().map(|b| (b.keys.join(" "), b.help)).collect();
-            let mouse = " Mouse: click a parameter to select it, scroll on it to change it.";
+            let mouse = " Mouse: click or scroll a parameter; click or drag on the chart to seek.";
             let one_column = entries.len() as u16 + 3 <= area.height.saturating_sub(2);
             let mut lines: Vec<Line> = if one_column {
                 entries

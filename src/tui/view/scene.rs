@@ -100,7 +100,10 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             String::new()
         }
     );
-    let blk = block(title, theme);
+    let mut blk = block(title, theme);
+    if let Some(line) = pinned_line(app, area.width.saturating_sub(4), theme) {
+        blk = blk.title_bottom(ratatui::text::Line::styled(line, theme.dim));
+    }
     let inner = blk.inner(area);
     blk.render(area, buf);
     if inner.height < 5 || inner.width < 20 {
@@ -150,6 +153,25 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     // A dot is `aspect` times taller than wide: 1 for braille, 2 for ASCII cells.
     let aspect = 2.0 * sx / sy;
     let cy = f64::from(ball_rows) * sy - r_dots / aspect - 0.5;
+    // The pinned run's balls (A/B): dashed ghosts, under the current balls' ink.
+    if let Some(p) = &app.lab.pinned {
+        let ps = p.solution.at(t);
+        let pr = p.scene.radius * scale * sx;
+        let pcy = f64::from(ball_rows) * sy - pr / aspect - 0.5;
+        for x in [ps.left.x, ps.right.x] {
+            let cx = col(x) * sx;
+            let n = ((std::f64::consts::TAU * pr) * 2.0).ceil().max(12.0) as usize;
+            for k in (0..n).filter(|k| k % 4 < 2) {
+                let a = k as f64 / n as f64 * std::f64::consts::TAU;
+                canvas.dot(
+                    (cx + pr * a.cos()) / sx,
+                    pcy + pr * a.sin() / aspect,
+                    theme.dim,
+                    ":",
+                );
+            }
+        }
+    }
     let balls = [
         (snap.left.x, angles[0], theme.left),
         (snap.right.x, angles[1], theme.right),
@@ -259,4 +281,28 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             );
         }
     }
+}
+
+/// The scene panel's bottom line while a run is pinned: which parameters it had that
+/// differ now, cut with "…" to `width` characters.
+fn pinned_line(app: &App, width: u16, theme: &Theme) -> Option<String> {
+    let p = app.lab.pinned.as_ref()?;
+    let changes = app.lab.pinned_changes();
+    let body = if changes.is_empty() {
+        "same parameters".to_string()
+    } else {
+        changes
+            .iter()
+            .map(|(name, was, now)| format!("{name} {was} → {now}"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let g = theme.glyphs;
+    let text = g.text(&format!(" pinned {} (dashed): {body} ", p.label));
+    let width = usize::from(width);
+    if text.chars().count() <= width {
+        return Some(text);
+    }
+    let cut: String = text.chars().take(width.saturating_sub(4)).collect();
+    Some(g.text(&format!("{}… ", cut.trim_end())))
 }
