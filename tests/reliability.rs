@@ -693,3 +693,108 @@ fn a_stop_after_the_last_point_is_computed_still_writes_nothing() {
     );
     assert_eq!(done.load(Ordering::SeqCst), 40, "every point was computed");
 }
+
+/// Item 14: an option that a command (or its method) would ignore is an error.
+#[test]
+fn options_a_command_would_ignore_are_errors() {
+    for (args, mentions) in [
+        (
+            &["presets", "--width", "7cm", "--preset", "/nonexistent"][..],
+            "not used by presets",
+        ),
+        (
+            &["sweep", "--ascii", "--x", "width=0..5cm"][..],
+            "--ascii is not used by sweep",
+        ),
+        (
+            &["sweep", "--data", "x.csv", "--x", "width=0..5cm"][..],
+            "--data is not used by sweep",
+        ),
+        (
+            &["simulate", "--time-unit", "ms"][..],
+            "--time-unit is not used by simulate",
+        ),
+        (&["fit", "--time-unit", "ms"][..], "none is given"),
+        (
+            &["simulate", "--dt", "1ms"][..],
+            "--dt is not used by the exact method",
+        ),
+        (
+            &["simulate", "--tol", "1e-3"][..],
+            "--tol is not used by the exact method",
+        ),
+        (
+            &["simulate", "--method", "euler", "--tol", "1e-3"][..],
+            "only with --method rk45",
+        ),
+        (
+            &["simulate", "--method", "rk45", "--epsilon", "1mm/s"][..],
+            "only with --method rk4",
+        ),
+        (
+            &["simulate", "--method", "euler", "--dt", "1e-12"][..],
+            "cannot run this span",
+        ),
+    ] {
+        assert_refused(args, mentions);
+    }
+}
+
+/// Item 15: every error is one line, and what it prints is what was given.
+#[test]
+fn errors_are_one_line_and_values_are_shown_as_given() {
+    for (args, mentions) in [
+        (
+            &["simulate", "--height", "10cm", "--v0", "0.6"][..],
+            "cannot be used with",
+        ),
+        (&["simulate", "--radius", "abc"][..], "not a number"),
+        (&["simulate", "--format", "xml"][..], "possible values"),
+        (&["sweep"][..], "--x"),
+        (&["simulate", "--v0", "1\ncm"][..], "unknown unit"),
+        (&["simulate", "--preset", "a\nb"][..], "a\\nb"),
+        (
+            &["simulate", "--restitution", "1.0000001"][..],
+            "e = 1.0000001 is out of range",
+        ),
+        (
+            &["simulate", "--method", "rk45", "--tol", "1e-300"][..],
+            "--tol 1e-300 is",
+        ),
+        (
+            &["simulate", "--sample", "1e-6", "--t-end", "1"][..],
+            "gives 1200001 samples",
+        ),
+    ] {
+        let r = groovelab(args);
+        assert_eq!(r.stderr.lines().count(), 1, "{args:?}: {}", r.stderr);
+        assert_refused(args, mentions);
+    }
+}
+
+/// Item 15: the summary counts the impacts inside the span shown, not after `--t-end`.
+#[test]
+fn the_impact_count_stops_at_t_end() {
+    let all = groovelab(&["simulate", "--preset", "paper-b4.4", "--format", "json"]);
+    let cut = groovelab(&[
+        "simulate",
+        "--preset",
+        "paper-b4.4",
+        "--t-end",
+        "0.5",
+        "--format",
+        "json",
+    ]);
+    let impacts = |out: &str| -> u64 {
+        let doc: serde_json::Value = serde_json::from_str(out).unwrap();
+        doc["summary"]["impacts"].as_u64().unwrap()
+    };
+    let collisions = |out: &str| -> u64 {
+        let doc: serde_json::Value = serde_json::from_str(out).unwrap();
+        let events = doc["events"].as_array().unwrap();
+        events.iter().filter(|e| e["kind"] == "collision").count() as u64
+    };
+    assert_eq!(impacts(&all.stdout), 9);
+    assert_eq!(impacts(&cut.stdout), collisions(&cut.stdout));
+    assert!(impacts(&cut.stdout) < 9);
+}

@@ -26,12 +26,14 @@ impl Exit {
         }
     }
 
-    /// One `error:` line on stderr, nothing on stdout.
+    /// One `error:` line on stderr, nothing on stdout. A line break inside the message
+    /// (a value or a preset name that holds one) is shown escaped, so the message stays
+    /// one line.
     fn error(code: u8, message: &str) -> Exit {
         Exit {
             code,
             stdout: String::new(),
-            stderr: format!("error: {message}\n"),
+            stderr: format!("error: {}\n", escape_breaks(message)),
         }
     }
 }
@@ -51,15 +53,12 @@ pub fn dispatch(args: &[OsString]) -> Entry {
     let cli = match Cli::try_parse_from(args) {
         Ok(cli) => cli,
         Err(e) => {
-            // Help and version go to stdout with status 0; usage errors to stderr.
+            // Help and version go to stdout with status 0; usage errors to stderr, as
+            // one line like every other error.
             let text = e.render().to_string();
             let code = u8::try_from(e.exit_code()).unwrap_or(2);
             return Entry::Exit(if e.use_stderr() {
-                Exit {
-                    code,
-                    stdout: String::new(),
-                    stderr: text,
-                }
+                Exit::error(code, &clap_one_line(&text))
             } else {
                 Exit {
                     code,
@@ -80,6 +79,28 @@ pub fn dispatch(args: &[OsString]) -> Entry {
         }
         Err(e) => Entry::Exit(Exit::error(2, &e.to_string())),
     }
+}
+
+/// clap's message as one line: its sentences joined, without the usage block, the
+/// tips and the "For more information" hint (`--help` is always there).
+fn clap_one_line(text: &str) -> String {
+    let mut parts = Vec::new();
+    for line in text.lines() {
+        let line = line.trim();
+        if line.starts_with("Usage:") || line.starts_with("For more information") {
+            break;
+        }
+        if line.is_empty() || line.starts_with("tip:") {
+            continue;
+        }
+        parts.push(line.strip_prefix("error: ").unwrap_or(line));
+    }
+    parts.join(" ")
+}
+
+/// `\n` and `\r` inside a message, spelt out.
+fn escape_breaks(message: &str) -> String {
+    message.replace('\r', "\\r").replace('\n', "\\n")
 }
 
 /// [`dispatch`] for callers without a terminal: the interactive app is refused as

@@ -5,7 +5,7 @@ use std::fmt::Write as _;
 use serde::Serialize;
 
 use super::{CliError, CompareArgs, CompareFormat, Format, MAX_SAMPLES, SceneArgs, SimulateArgs};
-use crate::input::units::{Dimension, show};
+use crate::input::units::{Dimension, show, show_exact};
 use crate::methods::{self, Method, Settings, Y};
 use crate::physics::derived::Derived;
 use crate::physics::engine;
@@ -24,7 +24,7 @@ pub(super) fn settings(
         if !(dt > 0.0 && dt <= 1.0) {
             return Err(CliError::Invalid(format!(
                 "--dt {} is out of range, allowed 0 < dt ≤ 1 s",
-                show(dt, Dimension::Time)
+                show_exact(dt, Dimension::Time)
             )));
         }
         s.step = dt;
@@ -32,7 +32,8 @@ pub(super) fn settings(
     if let Some(tol) = tol {
         if !(1e-14..=0.1).contains(&tol) {
             return Err(CliError::Invalid(format!(
-                "--tol {tol} is out of range, allowed 1e-14 ≤ tol ≤ 0.1"
+                "--tol {} is out of range, allowed 1e-14 ≤ tol ≤ 0.1",
+                show_exact(tol, Dimension::Ratio)
             )));
         }
         s.tolerance = tol;
@@ -41,7 +42,7 @@ pub(super) fn settings(
         if eps <= 0.0 {
             return Err(CliError::Invalid(format!(
                 "--epsilon {} is out of range, allowed ε > 0",
-                show(eps, Dimension::Speed)
+                show_exact(eps, Dimension::Speed)
             )));
         }
         s.epsilon = eps;
@@ -134,6 +135,13 @@ pub(super) fn simulate_method(
     };
     let y0 = methods::start_state(scene, t0);
     let outcome = methods::integrate(args.method, &model, y0, t0, t1, settings, &mut rec);
+    if let (Some(why), 0) = (&outcome.stalled, outcome.steps) {
+        // Refused before the first step: there is no run to report.
+        return Err(CliError::Invalid(format!(
+            "--method {} cannot run this span: {why}, allowed a larger --dt or a shorter span",
+            args.method.name()
+        )));
+    }
     let stalled = match (&outcome.stalled, rec.finite) {
         (Some(why), _) => Some(why.clone()),
         (None, false) => Some(format!(

@@ -26,7 +26,7 @@ mod fit;
 mod methods;
 mod progress;
 mod sweep;
-use crate::input::units::{Dimension, show, significant};
+use crate::input::units::{Dimension, show, show_exact, significant};
 pub use crate::output::{self, write_atomically};
 pub use args::*;
 pub use sweep::run_with_stop as sweep_with_stop;
@@ -64,6 +64,7 @@ pub enum Outcome {
 
 /// Runs a parsed command line.
 pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
+    used_options(cli)?;
     match &cli.command {
         None | Some(Command::Tui) => {
             Ok(Outcome::Interactive(Box::new(app(&cli.scene, &cli.data)?)))
@@ -76,6 +77,62 @@ pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
         Some(Command::Fit(args)) => fit::run(&cli.scene, &cli.data, args).map(Outcome::Print),
         Some(Command::Sweep(args)) => sweep::run(&cli.scene, args).map(Outcome::Print),
         Some(Command::Presets) => Ok(Outcome::Print(presets())),
+    }
+}
+
+/// The first global option given that `command` does not use, if any (clap's global
+/// options are accepted anywhere; a command must not ignore one silently).
+fn used_options(cli: &Cli) -> Result<(), CliError> {
+    let (name, scene, data, ascii) = match &cli.command {
+        None | Some(Command::Tui) => ("the app", true, true, true),
+        Some(Command::Simulate(_)) => ("simulate", true, false, false),
+        Some(Command::Render(_)) => ("render", true, true, true),
+        Some(Command::Compare(_)) => ("compare", true, false, false),
+        Some(Command::Fit(_)) => ("fit", true, true, false),
+        Some(Command::Sweep(_)) => ("sweep", true, false, false),
+        Some(Command::Presets) => ("presets", false, false, false),
+    };
+    let d = &cli.data;
+    let data_given = [
+        ("--data", d.data.is_some()),
+        ("--time-unit", d.time_unit.is_some()),
+        ("--speed-unit", d.speed_unit.is_some()),
+        ("--impact-at", d.impact_at.is_some()),
+        ("--track", !d.track.is_empty()),
+        ("--length-unit", d.length_unit.is_some()),
+        ("--window", d.window.is_some()),
+    ];
+    let scene_given = cli
+        .scene
+        .preset
+        .as_ref()
+        .map(|_| "--preset")
+        .or_else(|| cli.scene.values.given().next().map(|(k, _)| k.param().flag));
+    let unused = if let (false, Some(flag)) = (scene, scene_given) {
+        Some((
+            flag.trim_start_matches('-').to_string(),
+            "commands that take a scene",
+        ))
+    } else if let (false, Some((flag, _))) = (data, data_given.iter().find(|(_, g)| *g)) {
+        Some((
+            flag.trim_start_matches('-').to_string(),
+            "fit, render and the app",
+        ))
+    } else if let (None, Some((flag, _))) = (&d.data, data_given.iter().find(|(_, g)| *g)) {
+        // Only --data gives these a file to read.
+        return Err(CliError::Invalid(format!(
+            "{flag} describes a --data file and none is given, allowed only with --data FILE"
+        )));
+    } else if !ascii && cli.ascii {
+        Some(("ascii".to_string(), "render and the app"))
+    } else {
+        None
+    };
+    match unused {
+        None => Ok(()),
+        Some((flag, allowed)) => Err(CliError::Invalid(format!(
+            "--{flag} is not used by {name}, allowed only with {allowed}"
+        ))),
     }
 }
 
@@ -149,8 +206,44 @@ pub fn render_with(
     Ok(tui::view::to_text(&app, cols, rows, &theme))
 }
 
+/// `--dt`, `--tol` and `--epsilon` only where the method uses them: a setting the run
+/// would ignore is an error, not a silent no-op.
+fn method_options(args: &SimulateArgs) -> Result<(), CliError> {
+    let m = args.method;
+    let uses = [
+        (
+            "--dt",
+            args.dt.is_some(),
+            m != Method::Exact,
+            "a time-stepping method (the first step of rk45)",
+        ),
+        (
+            "--tol",
+            args.tol.is_some(),
+            m == Method::Rk45,
+            "--method rk45",
+        ),
+        (
+            "--epsilon",
+            args.epsilon.is_some(),
+            m == Method::Rk4,
+            "--method rk4",
+        ),
+    ];
+    for (flag, given, used, allowed) in uses {
+        if given && !used {
+            return Err(CliError::Invalid(format!(
+                "{flag} is not used by the {} method, allowed only with {allowed}",
+                m.name()
+            )));
+        }
+    }
+    Ok(())
+}
+
 pub fn simulate(scene_args: &SceneArgs, args: &SimulateArgs) -> Result<String, CliError> {
     let (preset, scene, span) = scene_args.resolve()?;
+    method_options(args)?;
     if args.method != Method::Exact {
         let settings = methods::settings(args.dt, args.tol, args.epsilon)?;
         return methods::simulate_method(&scene, &span, args, &settings);
@@ -169,16 +262,19 @@ pub fn simulate(scene_args: &SceneArgs, args: &SimulateArgs) -> Result<String, C
 }
 
 fn samples(solution: &Solution, dt: f64) -> Result<Vec<Snapshot>, CliError> {
-    let count = (solution.t_end - solution.t_start) / dt;
+    // As many as `Solution::sample` gives: the grid points from t_start to t_end.
+    let count = ((solution.t_end - solution.t_start) / dt + 1e-9).floor() + 1.0;
     if dt <= 0.0 || count > MAX_SAMPLES as f64 {
+        let count = if dt > 0.0 && count < 1e15 {
+            format!("{count}")
+        } else if dt > 0.0 {
+            format!("{count:e}")
+        } else {
+            "no".into()
+        };
         return Err(CliError::Invalid(format!(
-            "--sample {} gives {} samples over {} … {}, allowed a step > 0 giving at most {MAX_SAMPLES} samples",
-            show(dt, Dimension::Time),
-            if dt > 0.0 {
-                significant(count, 3)
-            } else {
-                "no".into()
-            },
+            "--sample {} gives {count} samples over {} … {}, allowed a step > 0 giving at most {MAX_SAMPLES} samples",
+            show_exact(dt, Dimension::Time),
             show(solution.t_start, Dimension::Time),
             show(solution.t_end, Dimension::Time),
         )));

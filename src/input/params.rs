@@ -7,7 +7,7 @@
 //! come from [`PARAMS`]. Adding a parameter is one row here, one line in
 //! [`SceneSpec::resolve`], and its physics.
 
-use crate::input::units::{Dimension, show};
+use crate::input::units::{Dimension, show, show_exact};
 use crate::physics::closed_form;
 use crate::physics::derived::Derived;
 use crate::physics::scene::{Ball, Scene, Span};
@@ -577,7 +577,7 @@ fn check(
     } else {
         Err(SceneError::OutOfRange {
             name: p.symbol,
-            value: show(value, p.dim).to_string(),
+            value: show_exact(value, p.dim),
             allowed: allowed(),
         })
     }

@@ -201,6 +201,49 @@ impl fmt::Display for Shown {
     }
 }
 
+/// `value` (SI) in the unit a lab reads it in, with every digit it has: for error
+/// messages, where a rounded value (e = 1.0000001 shown as "1") would contradict the
+/// range beside it. The decimal exponent is shifted, not multiplied, so 0.06 m reads
+/// "6 cm", never "6.000000000000001 cm".
+pub fn show_exact(value: f64, dim: Dimension) -> String {
+    let (shift, unit) = match dim {
+        Dimension::Length => (2, " cm"),
+        Dimension::Mass => (3, " g"),
+        Dimension::Speed => (0, " m/s"),
+        Dimension::Time => (0, " s"),
+        Dimension::Acceleration => (0, " m/s²"),
+        Dimension::Ratio => (0, ""),
+    };
+    if !value.is_finite() {
+        return format!("{value}{unit}");
+    }
+    let sci = format!("{value:e}");
+    let shifted = match sci.split_once('e') {
+        Some((m, e)) => e
+            .parse::<i32>()
+            .ok()
+            .and_then(|e| format!("{m}e{}", e + shift).parse::<f64>().ok()),
+        None => None,
+    };
+    let Some(v) = shifted.filter(|v| v.is_finite()) else {
+        // Too large for the lab's unit: say it in SI.
+        return format!("{value:e} {}", dim.si_unit())
+            .trim_end()
+            .to_string();
+    };
+    // Lab-sized values in plain decimals, the rest in scientific notation.
+    let magnitude = if v == 0.0 {
+        0
+    } else {
+        v.abs().log10().floor() as i32
+    };
+    if (-5..=9).contains(&magnitude) {
+        format!("{v}{unit}")
+    } else {
+        format!("{v:e}{unit}")
+    }
+}
+
 /// `v` with `digits` significant digits, without trailing zeros or exponent for lab-sized values.
 pub fn significant(v: f64, digits: usize) -> String {
     if v == 0.0 || !v.is_finite() {

@@ -244,9 +244,21 @@ pub struct Summary {
 
 impl Summary {
     pub fn of(solution: &Solution) -> Summary {
+        // A span that ends before the motion does counts only the impacts it shows (the
+        // solver resolved the rest too, and an accumulation point stands for infinitely
+        // many, which only a span reaching it shows).
+        let whole = solution.t_end >= solution.last_event_time();
+        let impacts = if whole {
+            solution.impacts
+        } else {
+            solution
+                .visible_events()
+                .filter(|e| e.kind == crate::physics::solution::EventKind::Collision)
+                .count()
+        };
         Summary {
-            impacts: solution.impacts,
-            accumulation_time: solution.accumulation,
+            impacts,
+            accumulation_time: solution.accumulation.filter(|&t| t <= solution.t_end),
             last_event: solution.last_event_time(),
             energy_start: solution.energy_at(solution.t_start),
             energy_end: solution.energy_at(solution.t_end),
