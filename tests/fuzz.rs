@@ -51,45 +51,6 @@ impl Known {
     }
 }
 
-/// Does any value of the case (or a file it writes) hold a huge, tiny or non-finite
-/// number? (The hostile inputs of item 2.)
-fn extreme(c: &Case) -> bool {
-    let big = |w: &str| {
-        let w = w.trim().trim_matches('"');
-        let end = w
-            .find(|ch: char| !(ch.is_ascii_digit() || "+-.eE".contains(ch)))
-            .unwrap_or(w.len());
-        let lower = w.to_lowercase();
-        lower.contains("inf")
-            || lower.contains("nan")
-            || w[..end]
-                .parse::<f64>()
-                .is_ok_and(|x| x == 0.0 && x.is_sign_negative())
-            // An exponent past a double's range, which a unit shifts further (item 11).
-            || w[..end]
-                .split(['e', 'E'])
-                .nth(1)
-                .is_some_and(|x| x.trim_start_matches(['+', '-']).len() > 3)
-            || w[..end]
-                .parse::<f64>()
-                .is_ok_and(|x| !(x == 0.0 || (1e-30..1e30).contains(&x.abs())))
-            || w.len() > 40
-    };
-    c.args.iter().any(|a| big(&a.to_string_lossy()))
-        || c.files.iter().any(|(_, bytes)| {
-            String::from_utf8_lossy(bytes)
-                .split(|ch: char| {
-                    ch == ','
-                        || ch == ';'
-                        || ch == '\t'
-                        || ch.is_whitespace()
-                        || ch == '['
-                        || ch == ']'
-                })
-                .any(big)
-        })
-}
-
 // ---------------------------------------------------------------------------------
 // Cases.
 
