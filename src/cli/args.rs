@@ -217,17 +217,28 @@ pub struct RenderArgs {
 /// Largest screen `render` draws.
 pub const MAX_SCREEN: u16 = 1000;
 
-fn screen_size(text: &str) -> Result<(u16, u16), String> {
-    let bad = || {
-        format!("'{text}' is not a size, expected COLSxROWS such as 120x40 (1..={MAX_SCREEN} each)")
+/// `N` or `NxM` (`X` too) with each count in `1..=max`: the one reader of `--size`
+/// and `--grid`; `None` if `text` is not of that form.
+pub(crate) fn counts(text: &str, max: usize) -> Option<(usize, Option<usize>)> {
+    let count = |s: &str| {
+        s.trim()
+            .parse::<usize>()
+            .ok()
+            .filter(|n| (1..=max).contains(n))
     };
-    let (c, r) = text.split_once(['x', 'X']).ok_or_else(bad)?;
-    let c: u16 = c.trim().parse().map_err(|_| bad())?;
-    let r: u16 = r.trim().parse().map_err(|_| bad())?;
-    if c == 0 || r == 0 || c > MAX_SCREEN || r > MAX_SCREEN {
-        return Err(bad());
+    match text.split_once(['x', 'X']) {
+        Some((a, b)) => Some((count(a)?, Some(count(b)?))),
+        None => Some((count(text)?, None)),
     }
-    Ok((c, r))
+}
+
+fn screen_size(text: &str) -> Result<(u16, u16), String> {
+    match counts(text, usize::from(MAX_SCREEN)) {
+        Some((c, Some(r))) => Ok((c as u16, r as u16)),
+        _ => Err(format!(
+            "'{text}' is not a size, expected COLSxROWS such as 120x40 (1..={MAX_SCREEN} each)"
+        )),
+    }
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]

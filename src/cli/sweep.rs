@@ -10,30 +10,13 @@ use super::{CliError, SceneArgs, SweepArgs, SweepFormat};
 use crate::study::sweep::{self, Axis, Point, SweepError};
 
 fn grid(text: &str, two: bool) -> Result<(usize, usize), CliError> {
-    let bad = || {
-        CliError::Invalid(format!(
+    match super::args::counts(text, 10_000) {
+        // NX alone: a square grid for two parameters, one row for one.
+        Some((nx, ny)) => Ok((nx, ny.unwrap_or(if two { nx } else { 1 }))),
+        None => Err(CliError::Invalid(format!(
             "--grid {text} is not a grid, expected NX or NXxNY (1 ..= 10000 each), e.g. 400x200"
-        ))
-    };
-    let (a, b) = match text.split_once(['x', 'X']) {
-        Some((a, b)) => (a, Some(b)),
-        None => (text, None),
-    };
-    let nx: usize = a.trim().parse().map_err(|_| bad())?;
-    let ny: usize = match b {
-        Some(b) => b.trim().parse().map_err(|_| bad())?,
-        None => {
-            if two {
-                nx
-            } else {
-                1
-            }
-        }
-    };
-    if nx == 0 || ny == 0 || nx > 10_000 || ny > 10_000 {
-        return Err(bad());
+        ))),
     }
-    Ok((nx, ny))
 }
 
 /// Most output `sweep` builds in memory for stdout (which is written only once the
@@ -115,7 +98,8 @@ pub fn run_with_stop(
         .map(|t| sweep::parse_axis(t, ny).map_err(|e| CliError::Invalid(format!("--y {e}"))))
         .transpose()?;
     let ny = y.map_or(1, |_| ny);
-    sweep::check(&base, &x, y.as_ref()).map_err(|e| CliError::Invalid(e.to_string()))?;
+    // The grid's corners are checked once, by the sweep itself, before any point is
+    // solved or a byte is committed.
     if args.format == SweepFormat::Svg && (nx > MAX_SVG_AXIS || ny > MAX_SVG_AXIS) {
         return Err(CliError::Invalid(format!(
             "--grid {} is too fine for --format svg (one rectangle per point), allowed at most {MAX_SVG_AXIS}x{MAX_SVG_AXIS}; use csv or json for finer grids",

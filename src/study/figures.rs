@@ -296,13 +296,7 @@ pub fn fit_figure(
             .legend(move |(x, y)| Circle::new((x + 10, y), 3, orange));
         // The line fits over their window.
         let l = &fits.line_fit;
-        let idx: Vec<usize> = (0..m.t.len())
-            .filter(|&i| m.t[i] >= l.from && m.t[i] <= l.to)
-            .collect();
-        for (series, colour) in [(&m.v_cm, blue), (&m.v_t, orange)] {
-            let ts: Vec<f64> = idx.iter().map(|&i| m.t[i]).collect();
-            let ys: Vec<f64> = idx.iter().map(|&i| series[i]).collect();
-            let line = crate::study::fit::line(&ts, &ys);
+        for (line, colour) in l.lines.iter().zip([blue, orange]) {
             chart.draw_series(LineSeries::new(
                 [l.from, l.to]
                     .map(|t| (t, line.intercept + line.slope * t))

@@ -103,6 +103,9 @@ pub struct LineFit {
     pub f_net: f64,
     /// |τ_net| = μ_k,cm m g R, N m.
     pub tau_net: f64,
+    /// The fitted lines themselves, v_cm then v_t (slopes and intercepts), for drawing.
+    #[serde(skip)]
+    pub lines: [Line; 2],
 }
 
 /// The sliding phase after the first impact (at t = 0): from the first frame after
@@ -186,6 +189,7 @@ pub fn line_fit(
         mu_t_se: 2.0 * vt.slope_se / (5.0 * k * g),
         f_net: mu_cm * mass * g / k,
         tau_net: mu_cm * mass * g * scene.radius,
+        lines: [cm, vt],
     })
 }
 
