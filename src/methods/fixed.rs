@@ -2,7 +2,7 @@
 //! classical RK4 with `tanh(s/ε)` friction. Impacts: see the module above.
 
 use super::{
-    Friction, GridStep, Method, Model, Observer, Outcome, Settings, Y, resolve_overlap, rhs,
+    Friction, GridStep, Method, Model, Observer, RunEnd, Settings, Y, resolve_overlap, rhs,
     run_grid,
 };
 
@@ -54,7 +54,7 @@ pub(super) fn integrate(
     t1: f64,
     s: &Settings,
     obs: &mut dyn Observer,
-) -> Outcome {
+) -> RunEnd {
     let (law, roll_threshold) = if method.regularised() {
         (Friction::Tanh(s.epsilon), s.epsilon)
     } else {

@@ -1,5 +1,5 @@
 //! Time-stepping methods for the same 1-D model, to weigh against the exact engine:
-//! one signature ([`integrate`]), one result type ([`Outcome`]), the right-hand side
+//! one signature ([`integrate`]), one result type ([`RunEnd`]), the right-hand side
 //! kept apart from the methods, each method in its own file.
 //!
 //! Impacts, for the fixed-step methods (`euler`, `symplectic-euler`, `rk4`), are
@@ -239,9 +239,9 @@ pub trait Observer {
     fn event(&mut self, _event: Event) {}
 }
 
-/// The result of a run.
+/// How a run ended: where, after how much work, and why if early.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Outcome {
+pub struct RunEnd {
     pub steps: usize,
     pub rhs_evals: usize,
     /// Why the run ended early, if it did (step budget, step-size collapse).
@@ -262,7 +262,7 @@ pub fn integrate(
     t1: f64,
     s: &Settings,
     obs: &mut dyn Observer,
-) -> Outcome {
+) -> RunEnd {
     match method {
         Method::Exact => exact(m, t0, t1, obs),
         Method::Euler | Method::SymplecticEuler | Method::Rk4 => {
@@ -277,7 +277,7 @@ pub fn integrate(
 /// polynomial piece from event to event), reported at each segment start, and its
 /// events are the engine's. It solves the scene itself, from the same run-up state
 /// that [`start_state`] gives every method.
-fn exact(m: &Model, t0: f64, t1: f64, obs: &mut dyn Observer) -> Outcome {
+fn exact(m: &Model, t0: f64, t1: f64, obs: &mut dyn Observer) -> RunEnd {
     let span = crate::physics::scene::Span {
         t_start: t0,
         t_end: Some(t1),
@@ -288,7 +288,7 @@ fn exact(m: &Model, t0: f64, t1: f64, obs: &mut dyn Observer) -> Outcome {
             s.left.x, s.left.v, s.left.u, s.right.x, s.right.v, s.right.u,
         ]
     };
-    let mut out = Outcome {
+    let mut out = RunEnd {
         steps: 0,
         rhs_evals: 0,
         stalled: sol
@@ -349,10 +349,10 @@ pub(crate) fn run_grid(
     roll_threshold: f64,
     obs: &mut dyn Observer,
     mut step: impl FnMut(&Y, f64) -> GridStep,
-) -> Outcome {
+) -> RunEnd {
     let h = s.step;
     let n = ((t1 - t0) / h).ceil() as usize;
-    let mut out = Outcome {
+    let mut out = RunEnd {
         steps: 0,
         rhs_evals: 0,
         stalled: None,

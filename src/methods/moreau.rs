@@ -3,7 +3,7 @@
 //! Coulomb friction as a set-valued law solved exactly in each step. No event is
 //! located and no step is ever refused: accumulations of impacts cost nothing.
 
-use super::{GridStep, Model, Observer, Outcome, Settings, Y, gap, run_grid};
+use super::{GridStep, Model, Observer, RunEnd, Settings, Y, gap, run_grid};
 
 const THETA: f64 = 0.5;
 
@@ -83,6 +83,6 @@ pub(super) fn integrate(
     t1: f64,
     s: &Settings,
     obs: &mut dyn Observer,
-) -> Outcome {
+) -> RunEnd {
     run_grid(y0, t0, t1, s, 0.0, obs, |y, dt| step(m, y, dt))
 }

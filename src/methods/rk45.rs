@@ -5,7 +5,7 @@
 //! the dense output by bisection, apply the jump, restart. Its weak point is the
 //! accumulation of impacts: every one of infinitely many events costs steps.
 
-use super::{EventTracker, Model, Observer, Outcome, Settings, Y, collide, gap};
+use super::{EventTracker, Model, Observer, RunEnd, Settings, Y, collide, gap};
 
 // The Dormand–Prince 5(4) tableau with Shampine's dense output (as scipy's RK45).
 // The system is autonomous, so the stage times only serve the tableau check.
@@ -174,7 +174,7 @@ pub(super) fn integrate(
     t1: f64,
     s: &Settings,
     obs: &mut dyn Observer,
-) -> Outcome {
+) -> RunEnd {
     let scale = y0
         .iter()
         .skip(1)
@@ -183,7 +183,7 @@ pub(super) fn integrate(
         .fold(1e-3, f64::max);
     let (rtol, atol) = (s.tolerance, s.tolerance * scale);
     let eps_v = 1e-12 * scale;
-    let mut out = Outcome {
+    let mut out = RunEnd {
         steps: 0,
         rhs_evals: 0,
         stalled: None,

@@ -7,7 +7,7 @@ use std::time::Instant;
 
 use serde::Serialize;
 
-use crate::methods::{Method, Model, Observer, Outcome, Settings, Y, integrate, start_state};
+use crate::methods::{Method, Model, Observer, RunEnd, Settings, Y, integrate, start_state};
 use crate::physics::model::Phase;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{Event, EventKind, Solution, Who};
@@ -358,7 +358,7 @@ pub fn measure(
         windows: windows.clone(),
         next_window: 0,
     };
-    let outcome: Outcome = integrate(method, &model, y0, t0, t1, settings, &mut metrics);
+    let outcome: RunEnd = integrate(method, &model, y0, t0, t1, settings, &mut metrics);
     if progress.cancelled() {
         return Err(Cancelled);
     }
