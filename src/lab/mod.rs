@@ -417,9 +417,16 @@ impl Lab {
         if path.exists() && !overwrite {
             return Err(SaveError::Exists(path));
         }
-        let description = format!("Saved from groovelab (started from {})", self.preset.name);
+        // Overwriting keeps the description of the file it replaces.
+        let kept = path
+            .is_file()
+            .then(|| Preset::load(&path.display().to_string()).ok())
+            .flatten()
+            .map(|p| p.description);
+        let description = kept
+            .unwrap_or_else(|| format!("Saved from groovelab (started from {})", self.preset.name));
         let spec = SceneSpec::of(&self.scene, &self.span);
-        let text = crate::input::preset::to_toml(name, &description, &spec, None)
+        let text = crate::input::preset::to_toml(name, &description, &spec, self.measured())
             .map_err(SaveError::Io)?;
         // What is written must load again: check before reporting success.
         Preset::parse(&text, name, crate::input::preset::Origin::BuiltIn)
