@@ -174,12 +174,44 @@ impl Plot {
             .filter(|(v, _)| *v >= y0 && *v <= y1)
             .collect();
         let margin = y_ticks.iter().map(|(_, l)| l.len()).max().unwrap_or(1) as u16;
-        // Row 0: y title and legend; last row: x ticks; left: tick labels and axis.
+        // Title and legend: a mark and a name for every named series, on the title row
+        // and, if they do not fit there, on more rows (taken from the plot).
+        let head = self.y_title.clone();
+        let mut legend: Vec<(String, Style)> = Vec::new();
+        for s in &self.series {
+            if !s.name.is_empty() {
+                let mark = match (s.draw, g.ascii) {
+                    (Draw::Line, false) => "──",
+                    (Draw::Line, true) => "--",
+                    (Draw::Points, _) => s.glyph,
+                };
+                legend.push((format!(" {mark} {}", g.text(&s.name)), s.style));
+            }
+        }
+        buf.set_stringn(area.x, area.y, &head, area.width as usize, theme.dim);
+        let first_x = area.x + head.chars().count() as u16 + 2;
+        let mut row = 0u16;
+        let mut x = first_x;
+        // More rows while the plot keeps six at least.
+        let max_row = area.height.saturating_sub(9).min(3);
+        for (text, style) in legend {
+            let w = text.chars().count() as u16;
+            if x + w > area.right() && row < max_row {
+                row += 1;
+                x = area.x + margin;
+            }
+            if x + w > area.right() {
+                break;
+            }
+            buf.set_string(x, area.y + row, &text, style);
+            x += w;
+        }
+        // Row 0 (and more): y title and legend; last row: x ticks; left: ticks and axis.
         let plot = Rect {
             x: area.x + margin + 1,
-            y: area.y + 1,
+            y: area.y + 1 + row,
             width: area.width.saturating_sub(margin + 1),
-            height: area.height.saturating_sub(2),
+            height: area.height.saturating_sub(2 + row),
         };
         if plot.width < 4 || plot.height < 2 {
             return;
@@ -187,36 +219,6 @@ impl Plot {
         let (cols, rows) = (plot.width as usize, plot.height as usize);
         let col_of = |x: f64| ((x - x0) / (x1 - x0) * (cols - 1) as f64).round();
         let row_of = |y: f64| ((y1 - y) / (y1 - y0) * (rows - 1) as f64).round();
-
-        // Title and legend.
-        let mut head = self.y_title.clone();
-        let mut legend: Vec<(String, Style)> = Vec::new();
-        for s in &self.series {
-            if !s.name.is_empty() {
-                let mark = if s.draw == Draw::Line && !g.ascii {
-                    "──"
-                } else {
-                    s.glyph
-                };
-                let mark = if s.draw == Draw::Line && g.ascii {
-                    "--"
-                } else {
-                    mark
-                };
-                legend.push((format!(" {mark} {}", s.name), s.style));
-            }
-        }
-        buf.set_stringn(area.x, area.y, &head, area.width as usize, theme.dim);
-        let mut x = area.x + head.chars().count() as u16 + 2;
-        for (text, style) in legend {
-            let w = text.chars().count() as u16;
-            if x + w > area.right() {
-                break;
-            }
-            buf.set_string(x, area.y, &text, style);
-            x += w;
-        }
-        head.clear();
 
         // Axis and y ticks.
         let axis_x = area.x + margin;

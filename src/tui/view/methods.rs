@@ -4,9 +4,9 @@
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Paragraph, Widget};
+use ratatui::widgets::Widget;
 
-use super::block;
+use super::{Ranked, block, by_priority, draw_lines};
 use crate::lab::jobs::State;
 use crate::methods::Method;
 use crate::study::compare::Status;
@@ -33,10 +33,12 @@ fn decades(lo: f64, hi: f64) -> Vec<(f64, String)> {
 }
 
 pub fn render_diagram(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let blk = block(
+    let title = super::title_within(
         " Methods: max |v_cm - exact| against steps per run  [c] back ",
+        area,
         theme,
     );
+    let blk = block(title, theme);
     let inner = blk.inner(area);
     blk.render(area, buf);
     let rows = match app.lab.method_rows() {
@@ -95,21 +97,47 @@ pub fn render_diagram(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
 }
 
 pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let blk = block(" Runs (marker, setting, status, err_v) ", theme);
+    let title = if area.width < 44 {
+        " Runs: setting, status, err_v "
+    } else {
+        " Runs (marker, setting, status, err_v) "
+    };
+    let blk = block(title, theme);
     let inner = blk.inner(area);
     blk.render(area, buf);
     let rows = match app.lab.method_rows() {
         State::Ready(rows) => rows,
         other => return super::computing(&other, "running every method", inner, buf, theme),
     };
-    let mut lines = vec![Line::from(Span::styled(
-        format!(
-            "exact: {} segments, error 0",
-            app.lab.solution.segments.len()
-        ),
-        theme.title,
-    ))];
-    for r in rows {
+    let g = theme.glyphs;
+    // Columns: marker, name (as wide as room allows, cut with an ellipsis), setting,
+    // status, and err_v, which is never cut.
+    let width = usize::from(inner.width);
+    let fixed = 2 + 8 + 1 + 8 + 1 + 7;
+    let name_width = width.saturating_sub(fixed + 1).min(17);
+    // Each method's best run (smallest error) stays on a short screen, one per method;
+    // the other levels go, coarsest first.
+    let best: Vec<usize> = Method::TIME_STEPPING
+        .iter()
+        .filter_map(|&m| {
+            (0..rows.len())
+                .filter(|&i| rows[i].method == m)
+                .min_by(|&a, &b| rows[a].err_v.total_cmp(&rows[b].err_v))
+        })
+        .collect();
+    let mut lines: Ranked = vec![(
+        9,
+        Line::from(Span::styled(
+            format!(
+                "exact: {} segments, error 0",
+                app.lab.solution.segments.len()
+            ),
+            theme.title,
+        )),
+    )];
+    // How many runs of each method came before (the level's rank, coarse first).
+    let mut seen: Vec<Method> = Vec::new();
+    for (i, r) in rows.iter().enumerate() {
         let setting = match (r.step, r.tolerance) {
             (Some(h), _) => format!("h {h:.0e}"),
             (_, Some(t)) => format!("tol {t:.0e}"),
@@ -120,16 +148,32 @@ pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         } else {
             theme.error
         };
-        lines.push(Line::from(vec![
-            Span::styled(
-                format!("{} {:<17}", glyph(r.method), r.method.name()),
-                theme.dim,
-            ),
-            Span::styled(
-                format!("{setting:<9} {:<8} {:.1e}", r.status.name(), r.err_v),
-                style,
-            ),
-        ]));
+        seen.push(r.method);
+        let rank = seen.iter().filter(|&&m| m == r.method).count() as u8;
+        let priority = if best.contains(&i) { 8 } else { rank };
+        let name = g.ellipsize(r.method.name(), name_width);
+        lines.push((
+            priority,
+            Line::from(vec![
+                Span::styled(
+                    format!("{} {name:<name_width$} ", glyph(r.method)),
+                    theme.dim,
+                ),
+                Span::styled(
+                    format!("{setting:<8} {:<8} {:>7}", r.status.name(), error(r.err_v)),
+                    style,
+                ),
+            ]),
+        ));
     }
-    Paragraph::new(lines).render(inner, buf);
+    draw_lines(by_priority(lines, inner), inner, buf);
+}
+
+/// An error with two significant digits whatever its exponent (`2.9e-10`, never cut).
+fn error(v: f64) -> String {
+    if v.is_finite() {
+        format!("{v:.1e}")
+    } else {
+        "diverged".to_string()
+    }
 }

@@ -30,6 +30,11 @@ pub fn param_at(area: Rect, selected: usize, x: u16, y: u16) -> Option<usize> {
 /// A value in the unit a lab uses for it, with fixed decimals so columns line up.
 fn value_text(app: &App, key: Key) -> String {
     let v = app.lab.value(key);
+    let s = &app.lab.scene;
+    if key == Key::V0 && s.left.v0 != s.right.v0 {
+        // One control for both balls: it sets both, and says when they differ.
+        return "differ".into();
+    }
     match key.dimension() {
         Dimension::Ratio => significant(v, 4),
         Dimension::Length => format!("{:.2} cm", v * 100.0),
@@ -57,6 +62,9 @@ fn note(app: &App, key: Key, narrow: bool) -> String {
             }
         }
         Key::Radius => format!("k {:.3}", d.k),
+        Key::V0 if narrow => String::new(),
+        Key::V0 if app.lab.scene.left.v0 != app.lab.scene.right.v0 => "sets both".into(),
+        Key::V0 if !narrow => "both balls".into(),
         Key::V0Left | Key::V0Right if !narrow => "toward impact".into(),
         Key::Height if !narrow => "run-up".into(),
         Key::Restitution => match d.b_star {

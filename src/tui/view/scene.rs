@@ -100,7 +100,25 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             String::new()
         }
     );
-    let blk = block(title, theme);
+    let mut blk = block(title, theme);
+    // A legend for the marks that are not balls: the trails, and the measured ball.
+    let ghost = app.lab.ghost_x(t).is_some();
+    let (trail_mark, ghost_mark) = if g.ascii {
+        (".", ":")
+    } else {
+        ("·", "⠂⠄")
+    };
+    let mut legend = vec![ratatui::text::Span::styled(
+        format!(" {trail_mark} trail "),
+        theme.dim,
+    )];
+    if ghost {
+        legend.push(ratatui::text::Span::styled(
+            format!(" {ghost_mark} measured ball "),
+            theme.measured,
+        ));
+    }
+    blk = blk.title_bottom(ratatui::text::Line::from(legend).right_aligned());
     let inner = blk.inner(area);
     blk.render(area, buf);
     if inner.height < 5 || inner.width < 20 {
@@ -190,7 +208,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                 (cx + r_dots * a.cos()) / sx,
                 cy + r_dots * a.sin() / aspect,
                 theme.measured,
-                ".",
+                ":",
             );
         }
     }
