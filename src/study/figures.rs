@@ -403,7 +403,8 @@ pub fn run_chart(
 ) -> Result<String, Box<dyn std::error::Error>> {
     use crate::physics::solution::Snapshot;
     let (t0, t1) = (sol.t_start, sol.t_end);
-    let n = 1200;
+    // About one sample per SVG pixel column; the events add their own.
+    let n = 800;
     let samples: Vec<Snapshot> = (0..=n)
         .map(|i| sol.at(t0 + (t1 - t0) * i as f64 / n as f64))
         .chain(sol.visible_events().map(|e| sol.at(e.t)))
