@@ -230,9 +230,11 @@ fn screen_of(a: &App) -> String {
     groovelab::tui::view::to_text(a, 120, 40, &theme)
 }
 
-/// Rows of the chart panel (between the top panels and the status line).
+/// Rows of the chart panel at 120×40 (between the top panels, one row per parameter,
+/// and the status line).
 fn chart_rows(screen: &str) -> Vec<&str> {
-    screen.lines().skip(12).take(26).collect()
+    let top = ROWS.len() + 2;
+    screen.lines().skip(top).take(38 - top).collect()
 }
 
 #[test]

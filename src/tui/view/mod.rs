@@ -46,7 +46,11 @@ pub fn layout(area: Rect) -> Option<Panels> {
     }
     // Tall screens show every parameter; short ones scroll the list (7 rows) so the
     // charts keep room.
-    let top_height = if area.height >= 32 { 12 } else { 9 };
+    let top_height = if area.height >= 32 {
+        crate::tui::app::ROWS.len() as u16 + 2
+    } else {
+        9
+    };
     let [top, middle, status, hints] = Layout::vertical([
         Constraint::Length(top_height),
         Constraint::Min(8),
