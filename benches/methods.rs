@@ -65,7 +65,16 @@ fn methods(c: &mut Criterion) {
         .chain(Method::TIME_STEPPING)
         .collect();
     whole.bench_function("default comparison, all methods (paper-b4.9)", |b| {
-        b.iter(|| sweep(&scene, &span, &all, &Settings::default()))
+        b.iter(|| {
+            sweep(
+                &scene,
+                &span,
+                &all,
+                &Settings::default(),
+                &groovelab::study::Quiet,
+            )
+            .unwrap()
+        })
     });
     whole.finish();
 }

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Smoke test of the real terminal app in tmux: start it, press keys, read the screen,
-# quit; then check that a panic leaves the terminal restored. Needs tmux and a built
+# quit; then check that a panic, Ctrl-C, and SIGINT, SIGTERM, SIGHUP or SIGQUIT sent
+# with kill leave the terminal restored (line mode and echo, main screen, cursor shown,
+# mouse off) with the right exit status. Needs tmux and a built
 # binary (BIN, default target/debug/groovelab). Exits non-zero on the first failure.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -64,4 +66,31 @@ wait_for "RECOLLIDE" 100
 tmux send-keys -t "$SESSION" C-c
 wait_for "exit status 0"
 screen | grep -qx -- "-icanon" && fail "terminal left in raw mode after Ctrl-C"
-echo "smoke: 3 passed, 0 failed"
+tmux kill-session -t "$SESSION"
+
+flag() { tmux display -p -t "$SESSION" "#{$1}"; }
+# A signal from outside ends the app: exit status 128 + its number, terminal restored.
+signals=0
+for sig in INT TERM HUP QUIT; do
+  num=$(kill -l "$sig")
+  rm -f "$TMP/pid"
+  tmux new-session -d -s "$SESSION" -x 100 -y 30 \
+    "sh -c 'echo \$\$ > $TMP/pid; exec $BIN'; echo \"exit status \$?\"; stty -a | tr ' ' '\n' | grep -x -e icanon -e -icanon -e echo -e -echo; sleep 60"
+  wait_for "RECOLLIDE" 100
+  tmux send-keys -t "$SESSION" m   # mouse capture on, to see it turned off again
+  sleep 0.3
+  [ "$(flag alternate_on)" = 1 ] || fail "SIG$sig: app not on the alternate screen before the signal"
+  [ "$(flag cursor_flag)" = 0 ] || fail "SIG$sig: cursor not hidden before the signal"
+  kill -s "$sig" "$(cat "$TMP/pid")"
+  wait_for "exit status $((128 + num))" 50
+  wait_for "icanon"
+  screen | grep -qx -- "-icanon" && fail "SIG$sig: terminal left in raw mode"
+  screen | grep -qx -- "-echo" && fail "SIG$sig: terminal left without echo"
+  screen | grep -qx -- "echo" || fail "SIG$sig: stty shows no echo"
+  [ "$(flag alternate_on)" = 0 ] || fail "SIG$sig: terminal left on the alternate screen"
+  [ "$(flag cursor_flag)" = 1 ] || fail "SIG$sig: cursor left hidden"
+  [ "$(flag mouse_any_flag)" = 0 ] || fail "SIG$sig: mouse capture left on"
+  tmux kill-session -t "$SESSION"
+  signals=$((signals + 1))
+done
+echo "smoke: $((3 + signals)) passed, 0 failed"

@@ -177,8 +177,17 @@ fn json_follows_the_interface() {
     assert_eq!(doc["method"], "exact");
     assert_eq!(doc["scene"]["width"], 0.044);
     let samples = doc["samples"].as_array().unwrap();
-    // -0.2 s … t_end = 1.0 s (paper-b4.9's) in 10 ms steps: 121 points.
-    assert_eq!(samples.len(), 121);
+    // -0.2 s … t_end in 10 ms steps; the preset's span gave way to the automatic one
+    // (the width changed), which reaches past the last event.
+    let t_end = doc["span"]["t_end"].as_f64().unwrap();
+    let last_event = doc["events"].as_array().unwrap().last().unwrap()["t"]
+        .as_f64()
+        .unwrap();
+    assert!(t_end > last_event, "{t_end} after {last_event}");
+    assert_eq!(
+        samples.len(),
+        ((t_end + 0.2) / 0.01 + 1e-9).floor() as usize + 1
+    );
     assert_eq!(samples[0]["t"], -0.2);
     for ev in doc["events"].as_array().unwrap() {
         for ball in ["left", "right"] {

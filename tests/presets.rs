@@ -234,21 +234,26 @@ fn paper_presets_carry_the_measured_series() {
             (scene.left.v0 - mean).abs() <= 5.1e-5,
             "b = {width}: v0 is the mean to 4 decimals"
         );
-        // Same numbers as the paper's data files (when shared/ is beside the repo).
+        // Same numbers as the paper's data files: shared/ stands beside the repo for
+        // every developer and CI; a missing file is a failure, never a silent skip.
         let csv = shared.join(format!("gs-b{width}cm.csv"));
-        if let Ok(text) = std::fs::read_to_string(&csv) {
-            let rows: Vec<Vec<f64>> = text
-                .lines()
-                .skip(1)
-                .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
-                .collect();
-            assert_eq!(rows.len(), measured.t.len());
-            for (i, row) in rows.iter().enumerate() {
-                assert_eq!(
-                    [row[0], row[1], row[2]],
-                    [measured.t[i], measured.v_cm[i], measured.v_t[i]]
-                );
-            }
+        let text = std::fs::read_to_string(&csv).unwrap_or_else(|e| {
+            panic!(
+                "{}: {e}; the paper's data must be in ../shared/data beside the repo",
+                csv.display()
+            )
+        });
+        let rows: Vec<Vec<f64>> = text
+            .lines()
+            .skip(1)
+            .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
+            .collect();
+        assert_eq!(rows.len(), measured.t.len());
+        for (i, row) in rows.iter().enumerate() {
+            assert_eq!(
+                [row[0], row[1], row[2]],
+                [measured.t[i], measured.v_cm[i], measured.v_t[i]]
+            );
         }
     }
 }

@@ -32,7 +32,7 @@ fn try_load(scene: &Scene, text: &str) -> Result<Loaded, String> {
 fn fits_of(scene: &Scene, text: &str) -> (Loaded, TrackFits) {
     let l = try_load(scene, text).unwrap();
     let start = Scene { mu: 0.3, ..*scene };
-    let f = track::fit_tracks(&start, &l.measured, &[Free::Mu]).unwrap();
+    let f = track::fit_tracks(&start, &l.measured, &[Free::Mu], &groovelab::study::Quiet).unwrap();
     (l, f)
 }
 
@@ -202,7 +202,14 @@ fn without_a_mark_the_fits_use_the_centre_only() {
     assert!(l.measured.v_t.iter().all(|v| v.is_nan()));
     assert!((f.position.mu - MU).abs() <= 0.003, "μ {}", f.position.mu);
     // The line fits still work: a_cm from v_cm, over the fitted model's sliding phase.
-    let all = fit::fit_all(&s, &l.measured, (None, None), &[Free::Mu]).unwrap();
+    let all = fit::fit_all(
+        &s,
+        &l.measured,
+        (None, None),
+        &[Free::Mu],
+        &groovelab::study::Quiet,
+    )
+    .unwrap();
     assert!(
         (all.line_fit.mu_cm - MU).abs() <= 0.02,
         "{}",
@@ -309,7 +316,7 @@ fn groovelab(args: &[&str]) -> std::process::Output {
 
 #[test]
 fn cli_fits_the_example_video_end_to_end() {
-    let out = groovelab(&["fit", "--data", EXAMPLE]);
+    let out = groovelab(&["fit", "--preset", "paper-b4.9", "--data", EXAMPLE]);
     assert!(
         out.status.success(),
         "{}",
@@ -325,7 +332,15 @@ fn cli_fits_the_example_video_end_to_end() {
     ] {
         assert!(table.contains(want), "{want}:\n{table}");
     }
-    let out = groovelab(&["fit", "--data", EXAMPLE, "--format", "json"]);
+    let out = groovelab(&[
+        "fit",
+        "--preset",
+        "paper-b4.9",
+        "--data",
+        EXAMPLE,
+        "--format",
+        "json",
+    ]);
     assert!(out.status.success());
     let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     for key in ["line_fit", "model_fit", "position_fit", "track"] {
@@ -353,7 +368,13 @@ fn cli_error_for_a_track_without_an_impact_is_one_line() {
         ..Video::default()
     };
     std::fs::write(&file, video::write(&video::track(&s, &v), Format::Tsv)).unwrap();
-    let out = groovelab(&["fit", "--data", file.to_str().unwrap()]);
+    let out = groovelab(&[
+        "fit",
+        "--preset",
+        "paper-b4.9",
+        "--data",
+        file.to_str().unwrap(),
+    ]);
     let _ = std::fs::remove_dir_all(&dir);
     assert_eq!(out.status.code(), Some(2));
     assert!(out.stdout.is_empty());

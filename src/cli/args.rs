@@ -45,9 +45,45 @@ pub struct DataArgs {
     /// Speed unit of the file when its header gives none (e.g. cm/s) [default: m/s].
     #[arg(long, value_name = "UNIT", global = true)]
     pub speed_unit: Option<String>,
-    /// Time of the first impact in the file [default: detected from v_cm].
+    /// Time of the first impact in the file [default: detected from v_cm, or from the
+    /// motion of a position track].
     #[arg(long, value_name = "T", value_parser = time, allow_hyphen_values = true, global = true)]
     pub impact_at: Option<f64>,
+    /// Which track of a position file is what: `centre=NAME` (the ball's centre) and
+    /// `mark=NAME` (a mark on its rim), by the track's name in the file (e.g. --track
+    /// "centre=mass A" --track "mark=mass B") [default: tracks named centre/ball and
+    /// mark/rim, else the first and second].
+    #[arg(long, value_name = "ROLE=NAME", value_parser = track, global = true)]
+    pub track: Vec<(TrackRole, String)>,
+    /// Length unit of a position file when its header gives none (e.g. mm) [default: m].
+    #[arg(long, value_name = "UNIT", global = true)]
+    pub length_unit: Option<String>,
+    /// Half-width of the local fit that derives velocities from positions (e.g. 20ms)
+    /// [default: chosen from the frame rate and the scatter].
+    #[arg(long, value_name = "T", value_parser = time, global = true)]
+    pub window: Option<f64>,
+}
+
+/// What a named track of a position file holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TrackRole {
+    Centre,
+    Mark,
+}
+
+fn track(text: &str) -> Result<(TrackRole, String), String> {
+    let bad = || format!("'{text}' is not ROLE=NAME, allowed centre=NAME or mark=NAME");
+    let (role, name) = text.split_once('=').ok_or_else(bad)?;
+    let role = match role.trim().to_ascii_lowercase().as_str() {
+        "centre" | "center" => TrackRole::Centre,
+        "mark" | "rim" => TrackRole::Mark,
+        _ => return Err(bad()),
+    };
+    let name = name.trim();
+    if name.is_empty() {
+        return Err(bad());
+    }
+    Ok((role, name.to_string()))
 }
 
 #[derive(Subcommand, Debug)]
@@ -262,8 +298,15 @@ impl Args for SceneArgs {
                 .allow_hyphen_values(true)
                 .global(true)
                 .help(p.help);
-            if p.key == Key::Height {
-                arg = arg.conflicts_with_all(["v0", "v0_left", "v0_right"]);
+            // A run-up gives the speed: a height and a speed for one ball contradict.
+            let speeds: &[&str] = match p.key {
+                Key::Height => &["v0", "v0_left", "v0_right"],
+                Key::HeightLeft => &["v0", "v0_left"],
+                Key::HeightRight => &["v0", "v0_right"],
+                _ => &[],
+            };
+            if !speeds.is_empty() {
+                arg = arg.conflicts_with_all(speeds);
             }
             cmd.arg(arg)
         })
@@ -279,9 +322,21 @@ impl SceneArgs {
     pub fn resolve(&self) -> Result<(Preset, Scene, Span), CliError> {
         let preset = Preset::load(self.preset.as_deref().unwrap_or(preset::DEFAULT))
             .map_err(|e| CliError::Invalid(e.to_string()))?;
-        let (scene, span) = preset
-            .spec
-            .over(&self.values)
+        let mut spec = preset.spec.over(&self.values);
+        // A preset's t_end belongs to the preset as it is: once a scene option changes
+        // it, the span follows the physics again (unless --t-end is given).
+        let changed = self
+            .values
+            .given()
+            .any(|(k, _)| !matches!(k, Key::TStart | Key::TEnd));
+        if changed && self.values.get(Key::TEnd).is_none() {
+            let mut without = SceneSpec::default();
+            for (k, v) in spec.given().filter(|(k, _)| *k != Key::TEnd) {
+                without.set(k, v);
+            }
+            spec = without;
+        }
+        let (scene, span) = spec
             .resolve()
             .map_err(|e| CliError::Invalid(e.to_string()))?;
         Ok((preset, scene, span))

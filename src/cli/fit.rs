@@ -4,25 +4,16 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
-use super::{CliError, DataArgs, FitArgs, FitFormat, SceneArgs, methods::write_atomically};
+use super::{
+    CliError, DataArgs, FitArgs, FitFormat, SceneArgs, TrackRole, output::write_atomically,
+};
 use crate::input::data::Measured;
 use crate::input::data::Reading;
 use crate::input::preset::Preset;
-use crate::input::units::{Dimension, parse_quantity};
+use crate::input::units::{Dimension, show, significant, unit_factor};
 use crate::physics::scene::Scene;
 use crate::study::fit::{self, Fits, Free, ModelFit};
 use crate::study::track::{self, Derive, Found};
-
-/// The measured series: `--data FILE`, else the preset's. A position track's
-/// velocities are derived with the preset's own scene (its contact radius r = kR).
-pub fn measured(preset: &Preset, args: &DataArgs) -> Result<Measured, CliError> {
-    let scene = preset
-        .spec
-        .resolve()
-        .map_err(|e| CliError::Invalid(e.to_string()))?
-        .0;
-    load(preset, &scene, args).map(|l| l.0)
-}
 
 /// The measured series for `scene`, and what was found in a position track.
 pub fn load(
@@ -38,30 +29,42 @@ pub fn load(
             ))
         });
     };
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| CliError::Invalid(format!("cannot read --data {}: {e}", path.display())))?;
+    let text = crate::input::read_user_file(path, "--data", crate::input::MAX_FILE_BYTES)
+        .map_err(|e| CliError::Invalid(e.to_string()))?;
     let unit = |text: &Option<String>, dim: Dimension, flag: &str| {
         text.as_ref()
-            .map(|u| {
-                parse_quantity(&format!("1{u}"), dim)
-                    .map_err(|e| CliError::Invalid(format!("{flag} {u}: {e}")))
-            })
+            .map(|u| unit_factor(u, dim).map_err(|e| CliError::Invalid(format!("{flag} {u}: {e}"))))
             .transpose()
+    };
+    let named = |role: TrackRole| {
+        args.track
+            .iter()
+            .rev()
+            .find(|(r, _)| *r == role)
+            .map(|(_, n)| n.clone())
     };
     let reading = Reading {
         time_unit: unit(&args.time_unit, Dimension::Time, "--time-unit")?,
         speed_unit: unit(&args.speed_unit, Dimension::Speed, "--speed-unit")?,
+        length_unit: unit(&args.length_unit, Dimension::Length, "--length-unit")?,
         impact_at: args.impact_at,
-        ..Reading::default()
+        centre: named(TrackRole::Centre),
+        mark: named(TrackRole::Mark),
     };
-    let loaded = track::load(
-        &text,
-        &path.display().to_string(),
-        &reading,
-        scene,
-        &Derive::default(),
-    )
-    .map_err(|e| CliError::Invalid(e.to_string()))?;
+    if let Some(w) = args.window
+        && !(w > 0.0 && w <= 1.0)
+    {
+        return Err(CliError::Invalid(format!(
+            "--window {}: allowed a half-width 0 s < T ≤ 1 s",
+            show(w, Dimension::Time)
+        )));
+    }
+    let derive = Derive {
+        half_window: args.window,
+        ..Derive::default()
+    };
+    let loaded = track::load(&text, &path.display().to_string(), &reading, scene, &derive)
+        .map_err(|e| CliError::Invalid(e.to_string()))?;
     Ok((loaded.measured, loaded.found))
 }
 
@@ -79,9 +82,30 @@ struct FitJson<'a> {
 }
 
 pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<String, CliError> {
+    // A data file names no scene: fitting it in the default preset's groove would be
+    // a silent guess (and compare with the wrong row of the paper).
+    if let Some(path) = &data.data
+        && scene_args.preset.is_none()
+        && scene_args.values.given().next().is_none()
+    {
+        return Err(CliError::Invalid(format!(
+            "--data {} names no scene: give the one it was measured in, --preset NAME or the scene options (--radius, --width, --mass, --v0 …)",
+            path.display()
+        )));
+    }
     let (preset, scene, _) = scene_args.resolve()?;
+    if let Some(path) = &args.output {
+        super::output::check_output(path)?;
+    }
     let (m, found) = load(&preset, &scene, data)?;
-    let free: Vec<Free> = args.free.clone().unwrap_or_else(|| vec![Free::Mu]);
+    // Each value once: a repeated one (`--free mu,mu`) made the normal matrix
+    // singular and the uncertainty NaN.
+    let mut free: Vec<Free> = Vec::new();
+    for f in args.free.clone().unwrap_or_else(|| vec![Free::Mu]) {
+        if !free.contains(&f) {
+            free.push(f);
+        }
+    }
     if let (Some(a), Some(b)) = (args.from, args.to)
         && a >= b
     {
@@ -89,14 +113,20 @@ pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<St
             "--from {a} s must be before --to {b} s"
         )));
     }
-    let fits = fit::fit_all(&scene, &m, (args.from, args.to), &free)
-        .map_err(|e| CliError::Invalid(e.to_string()))?;
-    let position = match &found {
-        Some(_) => Some(
-            fit::position_fit(&scene, &m, &free).map_err(|e| CliError::Invalid(e.to_string()))?,
-        ),
-        None => None,
+    // A series long enough to take a noticeable time shows a counter.
+    let bar = super::progress::Bar::counter("model evaluations", m.t.len() > 5_000);
+    let fits = fit::fit_all(&scene, &m, (args.from, args.to), &free, &bar);
+    let position = match (&fits, &found) {
+        (Ok(_), Some(_)) => Some(fit::position_fit(&scene, &m, &free, &bar)),
+        _ => None,
     };
+    bar.finish();
+    let cancelled = |e: fit::FitError| match e {
+        fit::FitError::Cancelled => CliError::Interrupted,
+        e => CliError::Invalid(e.to_string()),
+    };
+    let fits = fits.map_err(cancelled)?;
+    let position = position.transpose().map_err(cancelled)?;
     let text = match args.format {
         FitFormat::Json => {
             let mut s = serde_json::to_string_pretty(&FitJson {
@@ -109,23 +139,58 @@ pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<St
             s.push('\n');
             s
         }
-        FitFormat::Table => match (&found, &position) {
-            (Some(found), Some(position)) => track_table(&scene, &fits, found, position),
-            _ => table(&scene, &fits),
-        },
+        FitFormat::Table => {
+            let own = data.data.is_none();
+            let mut out = scene_line(&preset, scene_args, &scene);
+            out += &match (&found, &position) {
+                (Some(found), Some(position)) => track_table(&scene, &fits, found, position, own),
+                _ => table(&scene, &fits, own),
+            };
+            out
+        }
         FitFormat::Svg => crate::study::figures::fit_figure(&scene, &m, &fits)
             .map_err(|e| CliError::Invalid(format!("cannot draw the figure: {e}")))?,
     };
     match &args.output {
         None => Ok(text),
         Some(path) => {
-            write_atomically(path, &text)?;
+            // From here a stop signal removes the temporary file and writes nothing.
+            super::output::watch_signals();
+            write_atomically(path, text.as_bytes())?;
             Ok(format!("wrote {}\n", path.display()))
         }
     }
 }
 
-fn table(scene: &Scene, f: &Fits) -> String {
+/// The scene a fit used, and where it came from: the first line of the table.
+fn scene_line(preset: &Preset, args: &SceneArgs, scene: &Scene) -> String {
+    let len = |v: f64| show(v, Dimension::Length);
+    let given: Vec<String> = args
+        .values
+        .given()
+        .map(|(k, _)| format!("--{}", k.param().flag))
+        .collect();
+    let source = if given.is_empty() {
+        format!("preset {}", preset.name)
+    } else {
+        format!("preset {} with {}", preset.name, given.join(" "))
+    };
+    format!(
+        "scene ({source}): R = {}, b = {}, m = {} / {}, v0 = {} / {}, μ_k = {} (start), e = {}\n",
+        len(scene.radius),
+        len(scene.width),
+        show(scene.left.mass, Dimension::Mass),
+        show(scene.right.mass, Dimension::Mass),
+        show(scene.left.v0, Dimension::Speed),
+        show(scene.right.v0, Dimension::Speed),
+        significant(scene.mu, 4),
+        significant(scene.restitution, 4),
+    )
+}
+
+/// The line fits and the model fit; the paper's table-1 row beside them only for the
+/// preset's own (the paper's) data, `paper_data`.
+fn table(scene: &Scene, f: &Fits, paper_data: bool) -> String {
     let l = &f.line_fit;
     let mut out = String::new();
     let _ = writeln!(
@@ -143,7 +208,7 @@ fn table(scene: &Scene, f: &Fits) -> String {
         "{:<12} {:>6.2} ± {:<5.2} {:>9.3} {:>11.3} {:>6.2} ± {:<5.2} {:>9.3} {:>11.4}",
         "this fit", l.a_cm, l.a_cm_se, l.mu_cm, l.f_net, l.a_t, l.a_t_se, l.mu_t, l.tau_net
     );
-    if let Some(p) = fit::paper_row(scene.width) {
+    if let Some(p) = fit::paper_row(scene.width).filter(|_| paper_data) {
         let _ = writeln!(
             out,
             "{:<12} {:>14.2} {:>9.2} {:>11.2} {:>14.2} {:>9.2} {:>11.3}",
@@ -152,36 +217,62 @@ fn table(scene: &Scene, f: &Fits) -> String {
     }
     let mf = &f.model_fit;
     let _ = writeln!(out);
+    match mf.every {
+        None => {
+            let _ = writeln!(
+                out,
+                "model fit to all {} frames (v_cm and v_t; frames that straddle an impact left out):",
+                mf.points
+            );
+        }
+        Some(k) => {
+            let _ = writeln!(
+                out,
+                "model fit to {} frames, one in {k} of the series (at most {} are used; v_cm and v_t; frames that straddle an impact left out):",
+                mf.points,
+                fit::MAX_MODEL_POINTS
+            );
+        }
+    }
+    let why = |name: &str| {
+        mf.not_identified
+            .iter()
+            .find(|n| n.parameter == name)
+            .map(|n| n.reason.clone())
+    };
+    let value = |name: &str, v: f64, se: Option<f64>, unit: &str| match (se, why(name)) {
+        (Some(se), _) => format!("{v:.4} ± {:.4}{unit}", 2.0 * se),
+        (None, Some(reason)) => format!("{v:.4}{unit} (no ±: {reason})"),
+        (None, None) => format!("{v:.4}{unit} (no ±)"),
+    };
+    let mu_se = Some(mf.mu_se).filter(|s| s.is_finite());
     let _ = writeln!(
         out,
-        "model fit to all {} frames (v_cm and v_t; frames that straddle an impact left out):",
-        mf.points
-    );
-    let _ = writeln!(
-        out,
-        "  μ_k = {:.4} ± {:.4} (± 2σ, 95 %)   RMS residual {:.4} m/s",
-        mf.mu,
-        2.0 * mf.mu_se,
+        "  μ_k = {} (± 2σ, 95 %)   RMS residual {:.4} m/s",
+        value("mu", mf.mu, mu_se, ""),
         mf.rms
     );
-    if let Some(se) = mf.v0_se {
-        let _ = writeln!(out, "  v0 = {:.4} ± {:.4} m/s", mf.v0, 2.0 * se);
+    if mf.v0_se.is_some() || why("v0").is_some() {
+        let _ = writeln!(out, "  v0 = {}", value("v0", mf.v0, mf.v0_se, " m/s"));
     }
-    if let Some(se) = mf.restitution_se {
-        let _ = writeln!(out, "  e = {:.4} ± {:.4}", mf.restitution, 2.0 * se);
+    if mf.restitution_se.is_some() || why("restitution").is_some() {
+        let _ = writeln!(
+            out,
+            "  e = {}",
+            value("restitution", mf.restitution, mf.restitution_se, "")
+        );
     }
     let _ = writeln!(
         out,
-        "  regime predicted {} (v' = {:+.3} m/s), observed {}; speeds within ±{:.3} m/s count as rest (3× the data's scatter)",
-        mf.regime_predicted.name(),
-        mf.v_roll,
+        "  regime predicted {}; observed {} (speeds within ±{:.3} m/s count as rest: 3× the data's scatter)",
+        mf.verdict,
         mf.regime_observed.name(),
         mf.rest_band
     );
     let _ = writeln!(
         out,
         "  {}",
-        if mf.regime_predicted == mf.regime_observed {
+        if mf.agrees {
             "the model predicts what was observed"
         } else {
             "the model does NOT predict what was observed"
@@ -192,10 +283,10 @@ fn table(scene: &Scene, f: &Fits) -> String {
 
 /// The table for a position track: what was found, the line fits, and the velocity and
 /// position fits side by side.
-fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit) -> String {
+fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit, paper_data: bool) -> String {
     let mut out = found.describe();
     out.push('\n');
-    let full = table(scene, f);
+    let full = table(scene, f, paper_data);
     // The line fits as for a velocity file; the model fits in two columns below.
     let lines: Vec<&str> = full.lines().take_while(|l| !l.is_empty()).collect();
     for l in lines {
@@ -222,25 +313,38 @@ fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit) -> String {
         "{title:<35} {:>24} {:>24}",
         "velocities (derived)", "positions (direct)"
     );
-    let pm = |m: &ModelFit| format!("{:.4} ± {:.4}", m.mu, 2.0 * m.mu_se);
+    let pm = |m: &ModelFit| {
+        if m.mu_se.is_finite() {
+            format!("{:.4} ± {:.4}", m.mu, 2.0 * m.mu_se)
+        } else {
+            format!("{:.4} (no ±)", m.mu)
+        }
+    };
+    let opt = |v: f64, se: Option<f64>| match se {
+        Some(se) => format!("{v:.4} ± {:.4}", 2.0 * se),
+        None => format!("{v:.4} (no ±)"),
+    };
     let row = |out: &mut String, name: &str, a: String, b: String| {
         let _ = writeln!(out, "  {name:<33} {a:>24} {b:>24}");
     };
     row(&mut out, "μ_k (± 2σ, 95 %)", pm(v), pm(p));
-    if let (Some(a), Some(b)) = (v.v0_se, p.v0_se) {
+    let free = |m: &ModelFit, name: &str, se: Option<f64>| {
+        se.is_some() || m.not_identified.iter().any(|n| n.parameter == name)
+    };
+    if free(v, "v0", v.v0_se) || free(p, "v0", p.v0_se) {
         row(
             &mut out,
             "v0 m/s (± 2σ)",
-            format!("{:.4} ± {:.4}", v.v0, 2.0 * a),
-            format!("{:.4} ± {:.4}", p.v0, 2.0 * b),
+            opt(v.v0, v.v0_se),
+            opt(p.v0, p.v0_se),
         );
     }
-    if let (Some(a), Some(b)) = (v.restitution_se, p.restitution_se) {
+    if free(v, "restitution", v.restitution_se) || free(p, "restitution", p.restitution_se) {
         row(
             &mut out,
             "e (± 2σ)",
-            format!("{:.4} ± {:.4}", v.restitution, 2.0 * a),
-            format!("{:.4} ± {:.4}", p.restitution, 2.0 * b),
+            opt(v.restitution, v.restitution_se),
+            opt(p.restitution, p.restitution_se),
         );
     }
     row(
@@ -268,14 +372,19 @@ fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit) -> String {
         regime(v),
         regime(p),
     );
-    let verdict = |m: &ModelFit| {
-        if m.regime_predicted == m.regime_observed {
-            "agree".to_string()
-        } else {
-            "DISAGREE".to_string()
-        }
+    let verdict = |m: &ModelFit| match (m.agrees, m.indistinguishable_from_rest) {
+        (true, true) => "agree (v' in rest band)".to_string(),
+        (true, false) => "agree".to_string(),
+        (false, _) => "DISAGREE".to_string(),
     };
     row(&mut out, "verdict", verdict(v), verdict(p));
+    let _ = writeln!(out, "  velocity fit: regime {}", v.verdict);
+    let _ = writeln!(out, "  position fit: regime {}", p.verdict);
+    for (what, m) in [("velocity", v), ("position", p)] {
+        for n in &m.not_identified {
+            let _ = writeln!(out, "  {what} fit: {} has no ±: {}", n.parameter, n.reason);
+        }
+    }
     let _ = writeln!(
         out,
         "  (the velocity fit weights each derived point by its uncertainty but counts the points as independent and the impact time as exact: its ± is too small; the position fit profiles out the impact's time and place, and its ± is the one to quote)"

@@ -227,18 +227,29 @@ struct CompareJson<'a> {
 pub(super) fn compare(scene_args: &SceneArgs, args: &CompareArgs) -> Result<String, CliError> {
     let (_, scene, span) = scene_args.resolve()?;
     let base = settings(None, None, args.epsilon)?;
+    if let Some(path) = &args.output {
+        super::output::check_output(path)?;
+    }
     let methods: Vec<Method> = match &args.methods {
         Some(m) if !m.is_empty() => {
-            let mut m = m.clone();
-            m.retain(|x| *x != Method::Exact);
-            m.insert(0, Method::Exact);
-            m
+            // Exact first, then each method once (a repeated name adds no rows, and
+            // no work: the sweep's bound is per method).
+            let mut unique = vec![Method::Exact];
+            for x in m {
+                if !unique.contains(x) {
+                    unique.push(*x);
+                }
+            }
+            unique
         }
         _ => std::iter::once(Method::Exact)
             .chain(Method::TIME_STEPPING)
             .collect(),
     };
-    let rows = cmp::sweep(&scene, &span, &methods, &base);
+    let bar = super::progress::Bar::new("runs", true);
+    let rows = cmp::sweep(&scene, &span, &methods, &base, &bar);
+    bar.finish();
+    let rows = rows.map_err(|_| CliError::Interrupted)?;
     let text = match args.format {
         CompareFormat::Json => {
             let doc = CompareJson {
@@ -256,29 +267,12 @@ pub(super) fn compare(scene_args: &SceneArgs, args: &CompareArgs) -> Result<Stri
     match &args.output {
         None => Ok(text),
         Some(path) => {
-            write_atomically(path, &text)?;
+            // From here a stop signal removes the temporary file and writes nothing.
+            super::output::watch_signals();
+            super::output::write_atomically(path, text.as_bytes())?;
             Ok(format!("wrote {}\n", path.display()))
         }
     }
-}
-
-/// Writes `text` to `path` through a temporary file and a rename, so a failure never
-/// leaves a half-written file.
-pub fn write_atomically(path: &std::path::Path, text: &str) -> Result<(), CliError> {
-    let dir = path
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(std::path::Path::new("."));
-    let name = path
-        .file_name()
-        .map(|n| n.to_string_lossy().to_string())
-        .unwrap_or_default();
-    let tmp = dir.join(format!(".{name}.{}.tmp", std::process::id()));
-    let result = std::fs::write(&tmp, text).and_then(|()| std::fs::rename(&tmp, path));
-    if result.is_err() {
-        let _ = std::fs::remove_file(&tmp);
-    }
-    result.map_err(|e| CliError::Invalid(format!("cannot write {}: {e}", path.display())))
 }
 
 fn table(rows: &[Row]) -> String {
@@ -317,6 +311,20 @@ fn table(rows: &[Row]) -> String {
             r.time_min_s,
             r.time_median_s
         );
+    }
+    for r in rows.iter().filter(|r| r.status == cmp::Status::Stalled) {
+        if let Some(note) = &r.note {
+            let _ = writeln!(
+                out,
+                "stalled: {} at {}: {note}",
+                r.method.name(),
+                match (r.step, r.tolerance) {
+                    (Some(h), _) => format!("h = {h:.1e} s"),
+                    (None, Some(t)) => format!("tol = {t:.0e}"),
+                    _ => String::new(),
+                }
+            );
+        }
     }
     let _ = writeln!(
         out,

@@ -6,25 +6,30 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
+use crate::input::params::Key;
 use crate::input::preset::{self, Preset};
-use crate::lab::Lab;
+use crate::lab::{Lab, SpanEnd};
 use crate::methods::Method;
 use crate::physics::derived::{Derived, Summary};
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{Snapshot, Solution};
+use crate::physics::story::{self, After};
 use crate::tui::{
     self,
     app::{App, Library},
 };
 
 mod args;
+pub mod entry;
 mod fit;
 mod methods;
+mod progress;
 mod sweep;
 use crate::input::units::{Dimension, show, significant};
+pub use crate::output::{self, write_atomically};
 pub use args::*;
-pub use methods::write_atomically;
+pub use sweep::run_with_stop as sweep_with_stop;
 
 /// Most samples `--sample` may ask for.
 pub const MAX_SAMPLES: usize = 1_000_000;
@@ -38,6 +43,15 @@ pub enum CliError {
     Io(#[from] std::io::Error),
     #[error("interrupted: nothing was written")]
     Interrupted,
+}
+
+impl From<output::OutputError> for CliError {
+    fn from(e: output::OutputError) -> CliError {
+        match e {
+            output::OutputError::Interrupted => CliError::Interrupted,
+            other => CliError::Invalid(other.to_string()),
+        }
+    }
 }
 
 /// What a command line asks for once it is valid.
@@ -70,9 +84,19 @@ pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
 pub fn lab(scene_args: &SceneArgs, data: &DataArgs) -> Result<Lab, CliError> {
     let (mut preset, scene, span) = scene_args.resolve()?;
     if data.data.is_some() {
-        preset.measured = Some(fit::measured(&preset, data)?);
+        // A position track's v_t needs r = kR of the scene shown, overrides included.
+        preset.measured = Some(fit::load(&preset, &scene, data)?.0);
     }
-    Ok(Lab::new(preset, scene, span))
+    let mut lab = Lab::new(preset, scene, span);
+    // `--t-end` is explicit: it holds through parameter changes in the app.
+    if let (Some(t_end), Some(_)) = (span.t_end, scene_args.values.get(Key::TEnd)) {
+        lab.set_span_end(SpanEnd::Fixed {
+            t_end,
+            from_preset: false,
+        })
+        .map_err(|e| CliError::Invalid(e.to_string()))?;
+    }
+    Ok(lab)
 }
 
 /// The app on that lab, with the user's presets.
@@ -105,7 +129,7 @@ pub fn render_with(
     };
     tui::replay(&mut app, &keys);
     // Headless output waits for every analysis the keys asked for: same input, same bytes.
-    app.lab.wait();
+    app.wait();
     if let Some(at) = args.at {
         let (lo, hi) = (app.lab.solution.t_start, app.lab.solution.t_end);
         if !(lo..=hi).contains(&at) {
@@ -243,31 +267,29 @@ fn table(
         derived.why(),
         b_star
     );
-    if let Some(rec) = derived.left_after_impact {
-        let heading = if rec.v_roll > 0.0 {
-            "back toward the other ball"
-        } else if rec.v_roll < 0.0 {
-            "away from the other ball"
-        } else {
-            "at rest"
-        };
-        let mut line = format!(
-            "left ball after the first impact: rolls again after t' = {} at v' = {} ({heading}), x' = {}",
-            show(rec.t_roll, Dimension::Time),
-            show(rec.v_roll, Dimension::Speed),
-            len(rec.x_roll)
+    // Against the preset's measured series: can its data tell this regime from rest?
+    if let Some(m) = &preset.measured {
+        let band = crate::study::fit::rest_band(m);
+        let _ = writeln!(
+            out,
+            "verdict  {}",
+            story::Verdict::of(solution, derived, Some(band)).text("±")
         );
-        if let Some(t) = rec.t_pure_gliding {
-            let _ = write!(line, "; pure gliding at t_r = {}", show(t, Dimension::Time));
+    }
+    if let Some(rec) = derived.left_after_impact {
+        // The closed forms only where the exact run bears them out; else its events.
+        match story::after_first_impact(solution, derived) {
+            Some(After::Interrupted(i)) => {
+                let _ = writeln!(
+                    out,
+                    "left ball after the first impact: {}",
+                    i.clauses("∞").join("; ")
+                );
+            }
+            _ => {
+                let _ = writeln!(out, "{}", recovery_line(&rec));
+            }
         }
-        if let Some(t) = rec.t_pure_slipping {
-            let _ = write!(
-                line,
-                "; pure slipping at t_t = {}",
-                show(t, Dimension::Time)
-            );
-        }
-        let _ = writeln!(out, "{line}");
         let f = derived.forces;
         let _ = writeln!(
             out,
@@ -324,6 +346,35 @@ fn table(
         }
     }
     out
+}
+
+/// The closed-form recovery of the left ball, in one line.
+fn recovery_line(rec: &crate::physics::derived::Recovery) -> String {
+    let len = |v: f64| show(v, Dimension::Length);
+    let heading = if rec.v_roll > 0.0 {
+        "back toward the other ball"
+    } else if rec.v_roll < 0.0 {
+        "away from the other ball"
+    } else {
+        "at rest"
+    };
+    let mut line = format!(
+        "left ball after the first impact: rolls again after t' = {} at v' = {} ({heading}), x' = {}",
+        show(rec.t_roll, Dimension::Time),
+        show(rec.v_roll, Dimension::Speed),
+        len(rec.x_roll)
+    );
+    if let Some(t) = rec.t_pure_gliding {
+        let _ = write!(line, "; pure gliding at t_r = {}", show(t, Dimension::Time));
+    }
+    if let Some(t) = rec.t_pure_slipping {
+        let _ = write!(
+            line,
+            "; pure slipping at t_t = {}",
+            show(t, Dimension::Time)
+        );
+    }
+    line
 }
 
 fn presets() -> String {

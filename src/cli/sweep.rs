@@ -1,16 +1,13 @@
-//! `groovelab sweep`: regime maps over one or two scene parameters.
+//! `groovelab sweep`: regime maps over one or two scene parameters, streamed in grid
+//! order to an `--output` file with bounded memory, or built whole for stdout (up to
+//! [`STDOUT_LIMIT`]); interrupted, it writes nothing (see `output`).
 
-use std::fmt::Write as _;
-use std::io::IsTerminal;
+use std::io::{IsTerminal, Write};
 use std::sync::atomic::{AtomicBool, Ordering};
 
-use serde::Serialize;
-
-use super::{CliError, SceneArgs, SweepArgs, SweepFormat, methods::write_atomically};
+use super::output::{self, AtomicFile};
+use super::{CliError, SceneArgs, SweepArgs, SweepFormat};
 use crate::study::sweep::{self, Axis, Point, SweepError};
-
-/// Set by Ctrl-C while a sweep runs: the work stops and nothing is written.
-static STOP: AtomicBool = AtomicBool::new(false);
 
 fn grid(text: &str, two: bool) -> Result<(usize, usize), CliError> {
     let bad = || {
@@ -39,14 +36,75 @@ fn grid(text: &str, two: bool) -> Result<(usize, usize), CliError> {
     Ok((nx, ny))
 }
 
-#[derive(Serialize)]
-struct SweepJson<'a> {
-    x: &'a Axis,
-    y: Option<&'a Axis>,
-    points: &'a [Point],
+/// Most output `sweep` builds in memory for stdout (which is written only once the
+/// whole map is done, so an interruption or error prints nothing); a larger map is
+/// refused there and streamed to disk with `--output FILE`.
+pub const STDOUT_LIMIT: u64 = 256 * 1024 * 1024;
+/// Outputs estimated above this get their size noted on stderr before the work.
+const NOTE_ABOVE: u64 = 64 * 1024 * 1024;
+/// Largest grid drawn as SVG: one rectangle per point, ~90 bytes each.
+pub const MAX_SVG_AXIS: usize = 1000;
+
+/// Typical bytes per point of each format (measured on a 200x100 width × e map:
+/// CSV 99, JSON 168, SVG 86), for the size estimate.
+fn bytes_per_point(format: SweepFormat) -> u64 {
+    match format {
+        SweepFormat::Csv => 100,
+        SweepFormat::Json => 170,
+        SweepFormat::Svg => 90,
+    }
 }
 
+/// A byte count for people: 9.3 GiB, 286 MiB, 12 KiB.
+fn size_text(bytes: u64) -> String {
+    let b = bytes as f64;
+    let (k, m, g) = (1024.0, 1024.0 * 1024.0, 1024.0 * 1024.0 * 1024.0);
+    if b >= g {
+        format!("{:.1} GiB", b / g)
+    } else if b >= m {
+        format!("{:.0} MiB", b / m)
+    } else {
+        format!("{:.0} KiB", b / k)
+    }
+}
+
+/// A writer into memory that refuses to grow past `limit` bytes (stdout's buffer).
+struct Capped {
+    bytes: Vec<u8>,
+    limit: u64,
+}
+
+impl Write for Capped {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        if (self.bytes.len() + buf.len()) as u64 > self.limit {
+            return Err(std::io::Error::other(format!(
+                "the output passed {} on stdout, allowed at most {}; write it with --output FILE",
+                size_text(self.limit),
+                size_text(self.limit)
+            )));
+        }
+        self.bytes.extend_from_slice(buf);
+        Ok(buf.len())
+    }
+    fn flush(&mut self) -> std::io::Result<()> {
+        Ok(())
+    }
+}
+
+/// `sweep`: stops cleanly on Ctrl-C, SIGTERM or SIGHUP (exit 130, nothing written).
 pub fn run(scene_args: &SceneArgs, args: &SweepArgs) -> Result<String, CliError> {
+    output::watch_signals();
+    run_with_stop(scene_args, args, output::stop_flag())
+}
+
+/// `sweep` with its own stop flag: if `stop` is set before the output is committed
+/// (renamed into place, or returned for stdout), the result is
+/// [`CliError::Interrupted`] and nothing is written.
+pub fn run_with_stop(
+    scene_args: &SceneArgs,
+    args: &SweepArgs,
+    stop: &AtomicBool,
+) -> Result<String, CliError> {
     let (preset, _, _) = scene_args.resolve()?;
     let base = preset.spec.over(&scene_args.values);
     let (nx, ny) = grid(&args.grid, args.y.is_some())?;
@@ -56,8 +114,36 @@ pub fn run(scene_args: &SceneArgs, args: &SweepArgs) -> Result<String, CliError>
         .as_ref()
         .map(|t| sweep::parse_axis(t, ny).map_err(|e| CliError::Invalid(format!("--y {e}"))))
         .transpose()?;
+    let ny = y.map_or(1, |_| ny);
     sweep::check(&base, &x, y.as_ref()).map_err(|e| CliError::Invalid(e.to_string()))?;
-    let total = (nx * y.map_or(1, |_| ny)) as u64;
+    if args.format == SweepFormat::Svg && (nx > MAX_SVG_AXIS || ny > MAX_SVG_AXIS) {
+        return Err(CliError::Invalid(format!(
+            "--grid {} is too fine for --format svg (one rectangle per point), allowed at most {MAX_SVG_AXIS}x{MAX_SVG_AXIS}; use csv or json for finer grids",
+            args.grid
+        )));
+    }
+    let total = (nx * ny) as u64;
+    let estimate = total * bytes_per_point(args.format);
+    let name = format!("{:?}", args.format).to_uppercase();
+    if args.output.is_none() && estimate > STDOUT_LIMIT {
+        return Err(CliError::Invalid(format!(
+            "--grid {} gives {total} points, about {} of {name}, allowed at most {} on stdout; write it with --output FILE (streamed, no limit)",
+            args.grid,
+            size_text(estimate),
+            size_text(STDOUT_LIMIT)
+        )));
+    }
+    // For the person watching (like the progress bar); scripts keep a stderr that is
+    // empty on success and one `error:` line on failure.
+    if estimate > NOTE_ABOVE && std::io::stderr().is_terminal() {
+        eprintln!(
+            "note: sweep of {total} points writes about {} of {name}{}",
+            size_text(estimate),
+            args.output
+                .as_ref()
+                .map_or(String::new(), |p| format!(" to {}", p.display()))
+        );
+    }
     let bar = (total >= 20_000 && std::io::stderr().is_terminal()).then(|| {
         let bar = indicatif::ProgressBar::new(total);
         bar.set_style(
@@ -66,68 +152,157 @@ pub fn run(scene_args: &SceneArgs, args: &SweepArgs) -> Result<String, CliError>
         );
         bar
     });
-    STOP.store(false, Ordering::Relaxed);
-    let _ = ctrlc::set_handler(|| STOP.store(true, Ordering::Relaxed));
     let tick = || {
         if let Some(b) = &bar {
             b.inc(1);
         }
     };
-    let result = sweep::run(&base, &x, y.as_ref(), &STOP, &tick);
+    let map = Map {
+        base: &base,
+        x: &x,
+        y: y.as_ref(),
+        preset: &preset.name,
+        stop,
+        tick: &tick,
+    };
+    let result = match &args.output {
+        Some(path) => {
+            let mut file = AtomicFile::create(path)?;
+            emit(&map, args.format, &mut file, &|e| output_error(path, e))
+                .and_then(|()| file.commit(stop).map_err(CliError::from))
+                .map(|()| format!("wrote {}\n", path.display()))
+        }
+        None => {
+            let mut out = Capped {
+                bytes: Vec::new(),
+                limit: STDOUT_LIMIT,
+            };
+            emit(&map, args.format, &mut out, &|e| {
+                CliError::Invalid(e.to_string())
+            })
+            .and_then(|()| {
+                // Ctrl-C after the work but before the text is handed over.
+                if stop.load(Ordering::Relaxed) {
+                    return Err(CliError::Interrupted);
+                }
+                Ok(String::from_utf8(out.bytes).expect("CSV, JSON and SVG are UTF-8"))
+            })
+        }
+    };
     if let Some(b) = &bar {
         b.finish_and_clear();
     }
-    let points = result.map_err(|e| match e {
+    result
+}
+
+fn output_error(path: &std::path::Path, e: std::io::Error) -> CliError {
+    CliError::Invalid(format!("cannot write {}: {e}", path.display()))
+}
+
+/// What one sweep computes.
+struct Map<'a> {
+    base: &'a crate::input::params::SceneSpec,
+    x: &'a Axis,
+    y: Option<&'a Axis>,
+    preset: &'a str,
+    stop: &'a AtomicBool,
+    tick: &'a (dyn Fn() + Sync),
+}
+
+/// Computes the map and writes it to `out`: CSV and JSON row batch by row batch
+/// (bounded memory), SVG whole (its grid is capped).
+fn emit(
+    map: &Map,
+    format: SweepFormat,
+    out: &mut dyn Write,
+    io_error: &dyn Fn(std::io::Error) -> CliError,
+) -> Result<(), CliError> {
+    let from_sweep = |e: SweepError| match e {
         SweepError::Interrupted => CliError::Interrupted,
-        SweepError::Invalid(m) => CliError::Invalid(m),
-    })?;
-    let text = match args.format {
-        SweepFormat::Csv => csv(&points),
+        SweepError::Invalid(m) | SweepError::Output(m) => CliError::Invalid(m),
+    };
+    // The sink's I/O error, kept whole for the message.
+    let mut failed: Option<std::io::Error> = None;
+    let mut stream = |head: &[u8],
+                      row: &dyn Fn(&mut Vec<u8>, &Point, bool),
+                      tail: &[u8],
+                      failed: &mut Option<std::io::Error>|
+     -> Result<(), CliError> {
+        out.write_all(head).map_err(io_error)?;
+        let mut first = true;
+        let mut buf = Vec::with_capacity(sweep::BATCH * 128);
+        let result =
+            sweep::run_streamed(map.base, map.x, map.y, map.stop, map.tick, &mut |batch| {
+                buf.clear();
+                for p in batch {
+                    row(&mut buf, p, first);
+                    first = false;
+                }
+                out.write_all(&buf).map_err(|e| {
+                    let msg = e.to_string();
+                    *failed = Some(e);
+                    SweepError::Output(msg)
+                })
+            });
+        if let Some(e) = failed.take() {
+            return Err(io_error(e));
+        }
+        result.map_err(from_sweep)?;
+        out.write_all(tail).map_err(io_error)
+    };
+    match format {
+        SweepFormat::Csv => stream(
+            b"x,y,regime,v_ratio,t_roll,impacts,t_accumulation\n",
+            &|buf, p, _| csv_row(buf, p),
+            b"",
+            &mut failed,
+        ),
         SweepFormat::Json => {
-            let mut s = serde_json::to_string(&SweepJson {
-                x: &x,
-                y: y.as_ref(),
-                points: &points,
-            })
-            .expect("plain data serializes");
-            s.push('\n');
-            s
+            // Byte for byte what serde_json writes for {x, y, points}, in pieces.
+            let head = format!(
+                "{{\"x\":{},\"y\":{},\"points\":[",
+                serde_json::to_string(map.x).expect("plain data serializes"),
+                serde_json::to_string(&map.y).expect("plain data serializes")
+            );
+            stream(
+                head.as_bytes(),
+                &|buf, p, first| {
+                    if !first {
+                        buf.push(b',');
+                    }
+                    serde_json::to_writer(&mut *buf, p).expect("plain data serializes");
+                },
+                b"]}\n",
+                &mut failed,
+            )
         }
         SweepFormat::Svg => {
-            let scene = base
+            let points =
+                sweep::run(map.base, map.x, map.y, map.stop, map.tick).map_err(from_sweep)?;
+            let scene = map
+                .base
                 .resolve()
                 .map_err(|e| CliError::Invalid(e.to_string()))?
                 .0;
-            crate::study::figures::regime_map(&points, &x, y.as_ref(), &scene, &preset.name)
-                .map_err(|e| CliError::Invalid(format!("cannot draw the map: {e}")))?
-        }
-    };
-    match &args.output {
-        None => Ok(text),
-        Some(path) => {
-            write_atomically(path, &text)?;
-            Ok(format!("wrote {}\n", path.display()))
+            let svg = crate::study::figures::regime_map(&points, map.x, map.y, &scene, map.preset)
+                .map_err(|e| CliError::Invalid(format!("cannot draw the map: {e}")))?;
+            out.write_all(svg.as_bytes()).map_err(io_error)
         }
     }
 }
 
 /// interface.md: `x,y,regime,v_ratio,t_roll,impacts,t_accumulation`, SI, grid order.
-fn csv(points: &[Point]) -> String {
-    let mut out = String::with_capacity(points.len() * 64);
-    out.push_str("x,y,regime,v_ratio,t_roll,impacts,t_accumulation\n");
+fn csv_row(buf: &mut Vec<u8>, p: &Point) {
     let opt = |v: Option<f64>| v.map_or(String::new(), |v| v.to_string());
-    for p in points {
-        let _ = writeln!(
-            out,
-            "{},{},{},{},{},{},{}",
-            p.x,
-            opt(p.y),
-            p.regime.name(),
-            opt(p.v_ratio),
-            opt(p.t_roll),
-            p.impacts,
-            opt(p.t_accumulation)
-        );
-    }
-    out
+    let _ = writeln!(
+        buf,
+        "{},{},{},{},{},{},{}",
+        p.x,
+        opt(p.y),
+        p.regime.name(),
+        opt(p.v_ratio),
+        opt(p.t_roll),
+        p.impacts,
+        opt(p.t_accumulation)
+    );
 }

@@ -5,7 +5,11 @@
 //! unit helpers below. [`read`] tells the two kinds apart.
 
 use crate::input::tracks::{self, Track};
-use crate::input::units::{Dimension, parse_quantity};
+use crate::input::units::{self, Dimension};
+
+/// Most data rows a file may have: far more than a video gives (a minute at 1000
+/// frames/s is 60,000), and a bound on the memory and time a fit can take.
+pub const MAX_ROWS: usize = 1_000_000;
 
 /// A measured series of the left ball: time (s, first impact at 0), v_cm and v_t (m/s).
 ///
@@ -159,7 +163,9 @@ pub(crate) fn unit_factor(rest: &str, dim: Dimension) -> Option<Option<f64>> {
     if unit.is_empty() {
         return Some(None);
     }
-    parse_quantity(&format!("1{unit}"), dim).ok().map(Some)
+    // Only a unit name counts: `t2`, `t_1` or `time0` are other columns, not times in
+    // units of 12, 11 or 10 s.
+    units::unit_factor(&unit, dim).ok().map(Some)
 }
 
 /// Which quantity a velocity-file header cell names, and the SI factor its unit implies.
@@ -200,6 +206,8 @@ pub fn parse(text: &str, file: &str, reading: &Reading) -> Result<Measured, Data
         file: file.to_string(),
         what,
     };
+    // Spreadsheets often start a UTF-8 file with a byte-order mark.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut lines = text
         .lines()
         .enumerate()
@@ -229,6 +237,12 @@ pub fn parse(text: &str, file: &str, reading: &Reading) -> Result<Measured, Data
     let fv = fv.or(reading.speed_unit).unwrap_or(1.0);
     let (mut t, mut v_cm, mut v_t) = (Vec::new(), Vec::new(), Vec::new());
     for (n, line) in lines {
+        if t.len() == MAX_ROWS {
+            return Err(err(format!(
+                "line {}: more than {MAX_ROWS} data rows, allowed at most {MAX_ROWS}",
+                n + 1
+            )));
+        }
         let row = cells(line, sep);
         let get = |i: usize, name: &str| {
             let cell = row.get(i).copied().unwrap_or("");
@@ -264,6 +278,15 @@ pub fn parse(text: &str, file: &str, reading: &Reading) -> Result<Measured, Data
     };
     for x in &mut t {
         *x -= impact;
+    }
+    // Huge but finite values can still overflow once scaled or shifted.
+    for (name, series) in [("t", &t), ("v_cm", &v_cm), ("v_t", &v_t)] {
+        if let Some(i) = series.iter().position(|v| !v.is_finite()) {
+            return Err(err(format!(
+                "data row {}: {name} is not finite once in SI units with the impact at t = 0, allowed finite values",
+                i + 1
+            )));
+        }
     }
     Ok(Measured::velocities(t, v_cm, v_t))
 }
@@ -310,6 +333,43 @@ mod tests {
         // Impact in the frame at 20 ms (v_cm mid-way): that becomes t = 0.
         assert!((m.t[0] + 0.02).abs() < 1e-12, "{:?}", m.t);
         assert!((m.v_cm[0] - 0.795).abs() < 1e-12);
+    }
+
+    #[test]
+    fn digits_after_a_column_name_are_not_a_unit() {
+        // Once `t2` meant "t in units of 12 s".
+        for header in ["t2,v_cm,v_t", "t_1,v_cm,v_t", "time0,v_cm,v_t"] {
+            let text = format!("{header}\n0,1,1\n0.01,1,1\n0.02,-1,1\n");
+            let e = parse(&text, "d.csv", &Reading::default()).unwrap_err();
+            assert!(e.to_string().contains("no column 't'"), "{header}: {e}");
+        }
+        assert_eq!(column("t_ms"), Some(("t", Some(1e-3))));
+        assert_eq!(column("v_cm (cm/s)"), Some(("v_cm", Some(0.01))));
+        assert_eq!(column("v_t7"), None);
+        assert_eq!(column("t e5"), None);
+    }
+
+    #[test]
+    fn a_byte_order_mark_is_ignored() {
+        let text = "\u{feff}t_s,v_cm_m_per_s,v_t_m_per_s\n-0.02,0.79,0.78\n0,0.0925,0.78\n0.02,-0.64,0.70\n0.04,-0.63,0.68\n";
+        let m = parse(text, "x.csv", &Reading::default()).unwrap();
+        assert_eq!(m.t, vec![-0.02, 0.0, 0.02, 0.04]);
+    }
+
+    #[test]
+    fn row_limit_and_overflow_are_errors() {
+        let mut text = String::from("t,v_cm,v_t\n");
+        for i in 0..=MAX_ROWS {
+            text.push_str(&format!("{i},1,1\n"));
+        }
+        let e = parse(&text, "d.csv", &Reading::default()).unwrap_err();
+        assert!(e.to_string().contains("at most 1000000"), "{e}");
+        let r = Reading {
+            impact_at: Some(-1.7e308),
+            ..Reading::default()
+        };
+        let e = parse("t,v_cm,v_t\n0,1,1\n1e308,1,1\n1.5e308,1,1\n", "d.csv", &r).unwrap_err();
+        assert!(e.to_string().contains("not finite"), "{e}");
     }
 
     #[test]

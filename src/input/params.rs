@@ -25,6 +25,8 @@ pub enum Key {
     V0Left,
     V0Right,
     Height,
+    HeightLeft,
+    HeightRight,
     Restitution,
     RollingResistance,
     G,
@@ -96,13 +98,18 @@ const MASS_STEPS: Option<Steps> = Some(Steps {
     fine: 0.001,
     coarse: 0.01,
 });
+const HEIGHT: Range = range(0.0, 500.0, false, "0 ≤ h ≤ 500 m");
+const HEIGHT_STEPS: Option<Steps> = Some(Steps {
+    fine: 0.002,
+    coarse: 0.02,
+});
 const SPEED_STEPS: Option<Steps> = Some(Steps {
     fine: 0.01,
     coarse: 0.1,
 });
 
 /// Every scene parameter, in the order of `--help`, preset files and the app's panel.
-pub const PARAMS: [Param; 15] = [
+pub const PARAMS: [Param; 17] = [
     Param {
         key: Key::Radius,
         name: "radius",
@@ -226,15 +233,38 @@ pub const PARAMS: [Param; 15] = [
         name: "height",
         flag: "height",
         symbol: "release height h",
-        label: "h (both)",
+        label: "h",
         dim: Dimension::Length,
-        range: range(0.0, 500.0, false, "0 ≤ h ≤ 500 m"),
-        sets: &[Key::Height],
-        steps: Some(Steps {
-            fine: 0.002,
-            coarse: 0.02,
-        }),
+        range: HEIGHT,
+        sets: &[Key::HeightLeft, Key::HeightRight],
+        steps: None,
         help: "Release height on the run-up instead of v0 (both balls)",
+    },
+    // One row per ball in the app: each ball's own run-up, so the panel never shows
+    // one ball's height for both when their speeds differ.
+    Param {
+        key: Key::HeightLeft,
+        name: "height_left",
+        flag: "height-left",
+        symbol: "left release height",
+        label: "h left",
+        dim: Dimension::Length,
+        range: HEIGHT,
+        sets: &[Key::HeightLeft],
+        steps: HEIGHT_STEPS,
+        help: "Release height of the left ball on its run-up instead of its v0",
+    },
+    Param {
+        key: Key::HeightRight,
+        name: "height_right",
+        flag: "height-right",
+        symbol: "right release height",
+        label: "h right",
+        dim: Dimension::Length,
+        range: HEIGHT,
+        sets: &[Key::HeightRight],
+        steps: HEIGHT_STEPS,
+        help: "Release height of the right ball on its run-up instead of its v0",
     },
     Param {
         key: Key::Restitution,
@@ -312,10 +342,10 @@ pub const PARAMS: [Param; 15] = [
 
 impl Key {
     /// Every key, in the table's order.
-    pub const ALL: [Key; 15] = {
-        let mut keys = [Key::Radius; 15];
+    pub const ALL: [Key; 17] = {
+        let mut keys = [Key::Radius; 17];
         let mut i = 0;
-        while i < 15 {
+        while i < 17 {
             keys[i] = PARAMS[i].key;
             i += 1;
         }
@@ -339,10 +369,6 @@ impl Key {
     pub fn from_name(name: &str) -> Option<Key> {
         PARAMS.iter().find(|p| p.name == name).map(|p| p.key)
     }
-
-    fn is_speed(self) -> bool {
-        matches!(self, Key::V0 | Key::V0Left | Key::V0Right)
-    }
 }
 
 /// Why a scene is not valid. Each message names the value and what is allowed.
@@ -363,32 +389,44 @@ pub enum SceneError {
 /// [`SceneSpec::over`].
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct SceneSpec {
-    values: [Option<f64>; 15],
+    values: [Option<f64>; 17],
 }
 
 /// Standard gravity used when nothing else is said, m/s².
 pub const STANDARD_GRAVITY: f64 = 9.81;
 
 impl SceneSpec {
-    /// The value this layer gives for `key`, SI.
+    /// The value this layer gives for `key`, SI; a key that sets others (`mass`,
+    /// `v0`, `height`) gives their value when they agree.
     pub fn get(&self, key: Key) -> Option<f64> {
-        self.values[key as usize]
+        match key.param().sets {
+            [only] if *only == key => self.values[key as usize],
+            sets => {
+                let first = self.values[sets[0] as usize]?;
+                sets.iter()
+                    .all(|k| self.values[*k as usize] == Some(first))
+                    .then_some(first)
+            }
+        }
     }
 
-    /// Sets one key (already in SI units); `mass` and `v0` set both balls'. A speed
-    /// drops a release height of the same layer and a height drops speeds: the run-up
-    /// replaces v0.
+    /// Sets one key (already in SI units); `mass`, `v0` and `height` set both balls'.
+    /// A ball's speed drops its release height of the same layer and a height drops
+    /// the speed: the run-up replaces v0.
     pub fn set(&mut self, key: Key, value: f64) {
         // −0 is 0: a sign on zero must not reach the physics (e = −0 gave b* = ∞).
         let value = value + 0.0;
-        if key.is_speed() {
-            self.values[Key::Height as usize] = None;
-        }
-        if key == Key::Height {
-            self.values[Key::V0Left as usize] = None;
-            self.values[Key::V0Right as usize] = None;
-        }
         for &k in key.param().sets {
+            let replaced = match k {
+                Key::V0Left => Some(Key::HeightLeft),
+                Key::V0Right => Some(Key::HeightRight),
+                Key::HeightLeft => Some(Key::V0Left),
+                Key::HeightRight => Some(Key::V0Right),
+                _ => None,
+            };
+            if let Some(r) = replaced {
+                self.values[r as usize] = None;
+            }
             self.values[k as usize] = Some(value);
         }
     }
@@ -399,11 +437,11 @@ impl SceneSpec {
         self
     }
 
-    /// Every value this layer gives, in table order.
+    /// Every value this layer stores, in table order (per ball: `mass_left`, not `mass`).
     pub fn given(&self) -> impl Iterator<Item = (Key, f64)> + '_ {
         Key::ALL
             .into_iter()
-            .filter_map(|k| self.get(k).map(|v| (k, v)))
+            .filter_map(|k| self.values[k as usize].map(|v| (k, v)))
     }
 
     /// `upper` over `self`: every value `upper` gives wins (through [`SceneSpec::set`],
@@ -466,17 +504,20 @@ impl SceneSpec {
         let mass_left = value(Key::MassLeft)?;
         let mass_right = value(Key::MassRight)?;
         let k = closed_form::contact_ratio(radius, width);
-        let (v0_left, v0_right) = match self.get(Key::Height) {
-            Some(_) => {
-                let v = closed_form::release_speed(value(Key::Height)?, k, g);
-                let p = Key::V0.param();
-                check(p, v, p.range.contains(v), || {
-                    format!("{} (the run-up from this height is too fast)", p.range.text)
-                })?;
-                (v, v)
+        // Each ball's speed: its run-up's if a height is given, else its v0.
+        let speed = |height: Key, v0: Key| -> Result<f64, SceneError> {
+            if self.values[height as usize].is_none() {
+                return value(v0);
             }
-            None => (value(Key::V0Left)?, value(Key::V0Right)?),
+            let v = closed_form::release_speed(value(height)?, k, g);
+            let p = Key::V0.param();
+            check(p, v, p.range.contains(v), || {
+                format!("{} (the run-up from this height is too fast)", p.range.text)
+            })?;
+            Ok(v)
         };
+        let v0_left = speed(Key::HeightLeft, Key::V0Left)?;
+        let v0_right = speed(Key::HeightRight, Key::V0Right)?;
         if v0_left + v0_right < 0.0 {
             return Err(SceneError::OutOfRange {
                 name: "closing speed v0_left + v0_right",

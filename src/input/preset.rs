@@ -3,7 +3,9 @@
 
 use std::path::{Path, PathBuf};
 
+use crate::input::data::MAX_ROWS;
 use crate::input::data::Measured;
+use crate::input::file::{MAX_FILE_BYTES, read_user_file};
 use crate::input::params::{Key, SceneSpec};
 use crate::input::units::parse_quantity;
 
@@ -133,16 +135,19 @@ impl Preset {
         }
         let user = user_dir().map(|d| d.join(format!("{name_or_path}.toml")));
         let path = match user {
-            Some(p) if p.is_file() => p,
+            Some(p) if p.exists() => p,
             _ => PathBuf::from(name_or_path),
         };
-        if !path.is_file() {
+        if !path.exists() {
             return Err(PresetError::Unknown(name_or_path.to_string()));
         }
-        let text = std::fs::read_to_string(&path).map_err(|e| PresetError::Io {
-            path: path.display().to_string(),
-            reason: e.to_string(),
-        })?;
+        // Something is there: it must be a regular file of sane size (not a FIFO
+        // that would block, not /dev/zero).
+        let text =
+            read_user_file(&path, "preset file", MAX_FILE_BYTES).map_err(|e| PresetError::Io {
+                path: path.display().to_string(),
+                reason: e.why,
+            })?;
         Preset::parse(&text, &path.display().to_string(), Origin::File(path))
     }
 
@@ -193,8 +198,28 @@ fn check_measured(m: MeasuredFile) -> Result<Measured, String> {
             m.v_t.len()
         ));
     }
+    if m.t.len() > MAX_ROWS {
+        return Err(format!(
+            "measured series has {} points, allowed at most {MAX_ROWS}",
+            m.t.len()
+        ));
+    }
     if m.t.len() < 2 {
         return Err("measured series needs at least 2 points".into());
+    }
+    // TOML writes inf and nan as plain floats. Times must be finite; a value may be
+    // nan (a missing mark, as a saved position track has), never infinite.
+    if let Some(i) = m.t.iter().position(|v| !v.is_finite()) {
+        return Err(format!(
+            "measured t[{i}] is not finite, allowed finite numbers"
+        ));
+    }
+    for (name, series) in [("v_cm", &m.v_cm), ("v_t", &m.v_t)] {
+        if let Some(i) = series.iter().position(|v| v.is_infinite()) {
+            return Err(format!(
+                "measured {name}[{i}] is not finite, allowed finite numbers or nan (missing)"
+            ));
+        }
     }
     if !m.t.windows(2).all(|w| w[0] < w[1]) {
         return Err("measured times must increase".into());
@@ -309,6 +334,25 @@ mod tests {
         assert!(short != text, "{text}");
         let err = Preset::parse(&short, "x", Origin::BuiltIn).unwrap_err();
         assert!(err.to_string().contains("measured x has 1 values"), "{err}");
+    }
+
+    #[test]
+    fn measured_series_must_be_finite() {
+        let text = "name = \"x\"\ndescription = \"d\"\n[scene]\n[measured]\nt = [0.0, 0.01, 0.02]\nv_cm = [1.0, inf, -1.0]\nv_t = [1.0, 1.0, 1.0]\n";
+        let e = Preset::parse(text, "x", Origin::BuiltIn).unwrap_err();
+        assert!(e.to_string().contains("v_cm[1] is not finite"), "{e}");
+    }
+
+    #[test]
+    fn preset_files_must_be_regular_files() {
+        let dir = std::env::temp_dir();
+        let e = Preset::load(&dir.display().to_string()).unwrap_err();
+        assert!(e.to_string().contains("a directory"), "{e}");
+        #[cfg(unix)]
+        {
+            let e = Preset::load("/dev/zero").unwrap_err();
+            assert!(e.to_string().contains("a device"), "{e}");
+        }
     }
 
     #[test]

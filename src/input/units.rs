@@ -71,6 +71,37 @@ pub enum UnitError {
     },
     #[error("'{text}' is not finite, expected a finite number")]
     NotFinite { text: String },
+    /// The text is a number, but its value (after the unit) overflows or rounds to 0.
+    #[error(
+        "'{text}' is out of range ({why}), expected 0 or a magnitude from about 2.2e-308 to 1.8e308 in SI units"
+    )]
+    OutOfRange { text: String, why: &'static str },
+}
+
+/// Smallest non-zero magnitude a quantity may have (SI): the smallest normal double,
+/// so that no written non-zero value silently becomes 0 or loses its precision.
+pub const MIN_MAGNITUDE: f64 = f64::MIN_POSITIVE;
+
+/// SI value of one `unit` of `dim` (`ms` → 0.001): a unit name from the table, never
+/// a number, so `e5`, `0` or `7` are refused rather than read as `1e5`, `10`, `17`.
+pub fn unit_factor(unit: &str, dim: Dimension) -> Result<f64, UnitError> {
+    let unit = unit.trim();
+    dim.units()
+        .iter()
+        .find(|(name, _)| *name == unit)
+        .map(|&(_, shift)| shift_exponent("1", shift))
+        .ok_or_else(|| {
+            let names: Vec<&str> = dim.units().iter().map(|u| u.0).collect();
+            UnitError::UnknownUnit {
+                text: unit.to_string(),
+                unit: unit.to_string(),
+                allowed: if names.is_empty() {
+                    "no unit (a plain number)".to_string()
+                } else {
+                    format!("one of {}", names.join(", "))
+                },
+            }
+        })
 }
 
 /// Parses `text` as a quantity of `dim` and returns it in SI units.
@@ -89,34 +120,68 @@ pub fn parse_quantity(text: &str, dim: Dimension) -> Result<f64, UnitError> {
             allowed: dim.allowed(),
         });
     };
-    let number: f64 = trimmed[..split].trim().parse().expect("checked above");
+    let digits = trimmed[..split].trim();
+    let number: f64 = digits.parse().expect("checked above");
     let unit = trimmed[split..].trim();
+    // "inf", "NaN" and "1e999" (which parses to inf).
     if !number.is_finite() {
         return Err(UnitError::NotFinite {
             text: text.to_string(),
         });
     }
-    if unit.is_empty() {
-        return Ok(number);
+    let shift = if unit.is_empty() {
+        0
+    } else {
+        dim.units()
+            .iter()
+            .find(|(name, _)| *name == unit)
+            .map(|&(_, shift)| shift)
+            .ok_or_else(|| UnitError::UnknownUnit {
+                text: text.to_string(),
+                unit: unit.to_string(),
+                allowed: dim.allowed(),
+            })?
+    };
+    let value = shift_exponent(digits, shift);
+    let out_of_range = |why| UnitError::OutOfRange {
+        text: text.to_string(),
+        why,
+    };
+    if !value.is_finite() {
+        return Err(out_of_range("too large"));
     }
-    dim.units()
-        .iter()
-        .find(|(name, _)| *name == unit)
-        .map(|&(_, shift)| shift_exponent(trimmed[..split].trim(), shift).unwrap_or(number))
-        .ok_or_else(|| UnitError::UnknownUnit {
-            text: text.to_string(),
-            unit: unit.to_string(),
-            allowed: dim.allowed(),
-        })
+    // A written non-zero number ("1e-400", "1e-2147483648cm") must not quietly
+    // become 0 or a denormal that has lost its digits.
+    let nonzero = mantissa(digits).bytes().any(|b| (b'1'..=b'9').contains(&b));
+    if nonzero && value.abs() < MIN_MAGNITUDE {
+        return Err(out_of_range("too small, it rounds to 0"));
+    }
+    Ok(value)
 }
 
-/// `text` (a parsed number) times `10^shift`, rounded once from the decimal text.
-fn shift_exponent(text: &str, shift: i32) -> Option<f64> {
-    let (mantissa, exponent) = match text.find(['e', 'E']) {
-        Some(i) => (&text[..i], text[i + 1..].parse::<i32>().ok()?),
-        None => (text, 0),
+/// The part of a number's text before its exponent.
+fn mantissa(text: &str) -> &str {
+    text.find(['e', 'E']).map_or(text, |i| &text[..i])
+}
+
+/// `text` (a number that parses) times `10^shift`, rounded once from the decimal
+/// text. The exponent is added in 128 bits, so no exponent the user writes can
+/// overflow; one too long even for that is beyond every double (0 or inf).
+fn shift_exponent(text: &str, shift: i32) -> f64 {
+    let m = mantissa(text);
+    let exponent: i128 = match text.get(m.len() + 1..) {
+        None => 0,
+        Some(e) => e.parse().unwrap_or_else(|_| {
+            if e.starts_with('-') {
+                -(1 << 100)
+            } else {
+                1 << 100
+            }
+        }),
     };
-    format!("{mantissa}e{}", exponent + shift).parse().ok()
+    format!("{m}e{}", exponent.saturating_add(i128::from(shift)))
+        .parse()
+        .unwrap_or(f64::NAN)
 }
 
 /// Parses what a person typed into the app: like [`parse_quantity`], but a bare number
@@ -141,10 +206,22 @@ pub fn parse_typed(text: &str, dim: Dimension) -> Result<f64, UnitError> {
     if let Some(i) = split {
         let unit = normal[i..].trim().to_lowercase();
         if unit.is_empty() {
-            let (_, shift) = dim.display_unit();
-            let number = normal.trim().to_string();
-            let value = parse_quantity(&number, dim)?;
-            return Ok(shift_exponent(&number, shift).unwrap_or(value));
+            // A bare number is in the display unit: read it as if that unit were
+            // written, so the strict parser's range checks apply to it too.
+            let (name, shift) = dim.display_unit();
+            let number = normal.trim();
+            return if shift == 0 {
+                parse_quantity(number, dim)
+            } else {
+                parse_quantity(&format!("{number}{name}"), dim)
+            }
+            .map_err(|e| match e {
+                UnitError::NotANumber { text: _, allowed } => UnitError::NotANumber {
+                    text: text.to_string(),
+                    allowed,
+                },
+                other => other,
+            });
         }
         normal = format!("{}{unit}", &normal[..i]);
     }
@@ -214,9 +291,113 @@ pub fn significant(v: f64, digits: usize) -> String {
     }
 }
 
+/// `v` in at most `width` characters with as many significant digits as fit, up to
+/// `max_digits`: plain decimals for lab-sized values (as [`significant`]), else an
+/// exponent form whose exponent is always whole (`2.89e-10`, then `2.9e-10`, `3e-10`).
+/// A number is never cut: when not even one digit fits, the answer is `width` `#`s
+/// (as a spreadsheet does), never a wrong value. Trailing zeros are dropped.
+pub fn fit_digits(v: f64, width: usize, max_digits: usize) -> String {
+    if !v.is_finite() || v == 0.0 {
+        let s = if v == 0.0 {
+            "0".to_string()
+        } else {
+            format!("{v}")
+        };
+        return if s.chars().count() <= width {
+            s
+        } else {
+            "#".repeat(width)
+        };
+    }
+    let magnitude = v.abs().log10().floor() as i32;
+    let plain = (-4..=6).contains(&magnitude);
+    for digits in (1..=max_digits.max(1)).rev() {
+        let candidate = if plain {
+            let decimals = (digits as i32 - 1 - magnitude).max(0) as usize;
+            trim_zeros(format!("{v:.decimals$}"))
+        } else {
+            exponent_form(v, digits)
+        };
+        if candidate.chars().count() <= width {
+            return candidate;
+        }
+        // A plain value too wide for its integer digits may still fit as an exponent.
+        if plain && (digits as i32) <= magnitude + 1 {
+            let e = exponent_form(v, digits);
+            if e.chars().count() <= width {
+                return e;
+            }
+        }
+    }
+    "#".repeat(width)
+}
+
+/// [`fit_digits`] with the lab's usual four significant digits at most.
+pub fn fit_number(v: f64, width: usize) -> String {
+    fit_digits(v, width, 4)
+}
+
+/// `v` as `m.mmme-x` with `digits` significant digits, trailing mantissa zeros dropped.
+fn exponent_form(v: f64, digits: usize) -> String {
+    let s = format!("{v:.prec$e}", prec = digits.saturating_sub(1));
+    match s.split_once('e') {
+        Some((mantissa, exp)) => format!("{}e{exp}", trim_zeros(mantissa.to_string())),
+        None => s,
+    }
+}
+
+fn trim_zeros(s: String) -> String {
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn fitted_numbers_keep_their_exponent_and_lose_digits_first() {
+        assert_eq!(fit_number(2.894e-10, 8), "2.89e-10");
+        assert_eq!(fit_number(2.894e-10, 9), "2.894e-10");
+        assert_eq!(fit_number(2.894e-10, 7), "2.9e-10");
+        assert_eq!(fit_number(2.894e-10, 5), "3e-10");
+        assert_eq!(fit_number(2.894e-10, 4), "####");
+        assert_eq!(fit_number(46.48, 5), "46.48");
+        assert_eq!(fit_number(46.48, 4), "46.5");
+        assert_eq!(fit_number(46.48, 2), "46");
+        assert_eq!(fit_number(-0.1718, 6), "-0.172");
+        assert_eq!(fit_number(123456.0, 4), "1e5");
+        assert_eq!(fit_number(123456.0, 6), "123456");
+        assert_eq!(fit_number(0.0, 3), "0");
+        assert_eq!(fit_number(f64::NAN, 3), "NaN");
+        assert_eq!(fit_number(f64::NAN, 2), "##");
+        // Whatever the width, the printed text is the value to its printed precision.
+        for v in [
+            3.14159e-7, -0.04648, 1.0, 99.96, 46.48, 0.1407, 7.27e3, -2.5e12,
+        ] {
+            for width in 1..12 {
+                let s = fit_number(v, width);
+                assert!(s.chars().count() <= width, "{v} in {width}: {s}");
+                if s.starts_with('#') {
+                    continue;
+                }
+                let printed: f64 = s.parse().unwrap();
+                let (mantissa, exp) = match s.split_once('e') {
+                    Some((m, e)) => (m, e.parse::<i32>().unwrap()),
+                    None => (s.as_str(), 0),
+                };
+                let decimals = mantissa.split_once('.').map_or(0, |(_, d)| d.len()) as i32;
+                let half_unit = 0.5 * 10f64.powi(exp - decimals);
+                assert!(
+                    (printed - v).abs() <= half_unit * (1.0 + 1e-9),
+                    "{v} in {width}: {s}"
+                );
+            }
+        }
+    }
 
     #[test]
     fn parses_units_of_the_interface() {
@@ -297,6 +478,70 @@ mod tests {
         // The strict parser is unchanged: a bare number is SI, case matters.
         assert_eq!(parse_quantity("4.4", Dimension::Length), Ok(4.4));
         assert!(parse_quantity("4.6CM", Dimension::Length).is_err());
+    }
+
+    #[test]
+    fn extreme_exponents_are_out_of_range_never_inf_or_zero() {
+        for (text, dim) in [
+            ("1e-2147483648cm", Dimension::Length),
+            ("1e-2147483648ms", Dimension::Time),
+            ("1e-2147483649", Dimension::Ratio),
+            ("1e-400", Dimension::Ratio),
+            (
+                "1e-99999999999999999999999999999999999999999999cm",
+                Dimension::Length,
+            ),
+            ("1e-308mm", Dimension::Length),
+            ("1e308kg", Dimension::Length),
+        ] {
+            let got = parse_quantity(text, dim);
+            assert!(
+                matches!(
+                    got,
+                    Err(UnitError::OutOfRange { .. }) | Err(UnitError::UnknownUnit { .. })
+                ),
+                "{text}: {got:?}"
+            );
+        }
+        let e = parse_quantity("1e-2147483648cm", Dimension::Length).unwrap_err();
+        assert!(e.to_string().contains("out of range"), "{e}");
+        // 1e2147483647 parses to inf already: not finite.
+        assert!(matches!(
+            parse_quantity("1e2147483647cm", Dimension::Length),
+            Err(UnitError::NotFinite { .. })
+        ));
+        assert!(matches!(
+            parse_quantity("1e308", Dimension::Speed),
+            Ok(v) if v == 1e308
+        ));
+        // Within range the shift stays exact, and zero stays zero however written.
+        assert_eq!(parse_quantity("1e-300cm", Dimension::Length), Ok(1e-302));
+        assert_eq!(
+            parse_quantity("0e-2147483648cm", Dimension::Length),
+            Ok(0.0)
+        );
+        assert_eq!(parse_quantity("-0.0e-999999ms", Dimension::Time), Ok(-0.0));
+    }
+
+    #[test]
+    fn unit_names_are_names_never_numbers() {
+        assert_eq!(unit_factor("ms", Dimension::Time), Ok(1e-3));
+        assert_eq!(unit_factor(" cm/s ", Dimension::Speed), Ok(0.01));
+        assert_eq!(unit_factor("s", Dimension::Time), Ok(1.0));
+        for (bad, dim) in [
+            ("e5", Dimension::Time),
+            ("0", Dimension::Time),
+            ("7", Dimension::Speed),
+            ("2", Dimension::Time),
+            ("", Dimension::Time),
+            ("1ms", Dimension::Time),
+            ("kg", Dimension::Speed),
+        ] {
+            let e = unit_factor(bad, dim).unwrap_err();
+            assert!(matches!(e, UnitError::UnknownUnit { .. }), "{bad}: {e}");
+        }
+        let e = unit_factor("e5", Dimension::Time).unwrap_err().to_string();
+        assert!(e.contains("one of s, ms"), "{e}");
     }
 
     #[test]

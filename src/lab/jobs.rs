@@ -32,6 +32,14 @@ impl Ticket {
     }
 }
 
+/// A study's cancellation hook: a superseded job stops inside long runs. Its progress
+/// is the job's own ([`Ticket::progress`]), not the study's inner steps.
+impl crate::study::Progress for Ticket {
+    fn cancelled(&self) -> bool {
+        Ticket::cancelled(self)
+    }
+}
+
 /// The result slot a job fills and the UI reads.
 type Slot<T> = Arc<(Mutex<Option<T>>, Condvar)>;
 

@@ -19,9 +19,9 @@ use crate::methods::{self, Method, Settings, Y};
 use crate::physics::derived::{Derived, Regime};
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
-use crate::physics::solution::{Snapshot, Solution};
+use crate::physics::solution::{EnergySplit, Snapshot, Solution};
 use crate::study::compare::{self, Row};
-use crate::study::fit::{self, Fits, Free};
+use crate::study::fit::{self, Fits, Free, ModelFit};
 use jobs::{Job, State, Ticket};
 
 /// Steps of the overlay and the Methods view: 10 ms … 10 µs (fixed-step methods),
@@ -92,6 +92,58 @@ pub enum SaveError {
     Io(String),
 }
 
+/// How the end of the shown time span is chosen. The rule, for the README: the span runs
+/// to a little past the last event (rest, the accumulation point T∞, the start of the
+/// final rolling) and past the last measured point, and is recomputed on every change.
+/// An end set explicitly (`--t-end`, or typed in the app) is kept; a preset's `t_end`
+/// holds until the first parameter change; the app's span key stretches or shrinks the
+/// automatic span, which then still follows the physics.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum SpanEnd {
+    /// A little past the last event and the last measured point.
+    Auto,
+    /// The automatic span times this factor (from `t_start`).
+    Scaled(f64),
+    /// A fixed end, s. `from_preset`: the preset's `t_end`, which gives way to
+    /// [`SpanEnd::Auto`] at the first parameter change.
+    Fixed { t_end: f64, from_preset: bool },
+}
+
+impl SpanEnd {
+    /// The span key's cycle: auto, ×2, ×½, auto; a fixed end goes back to auto.
+    pub fn next(self) -> SpanEnd {
+        match self {
+            SpanEnd::Auto => SpanEnd::Scaled(2.0),
+            SpanEnd::Scaled(f) if f > 1.0 => SpanEnd::Scaled(0.5),
+            SpanEnd::Scaled(_) | SpanEnd::Fixed { .. } => SpanEnd::Auto,
+        }
+    }
+
+    /// How the status line names it.
+    pub fn describe(self) -> String {
+        match self {
+            SpanEnd::Auto => "auto (a little past the last event)".into(),
+            SpanEnd::Scaled(f) if f > 1.0 => format!("auto ×{f}"),
+            SpanEnd::Scaled(f) => format!("auto ×1/{}", (1.0 / f).round()),
+            SpanEnd::Fixed {
+                from_preset: true, ..
+            } => "the preset's t_end".into(),
+            SpanEnd::Fixed { .. } => "fixed t_end".into(),
+        }
+    }
+}
+
+/// A scene pinned for comparison (A/B): drawn dimmed beside the current one.
+#[derive(Clone, Debug)]
+pub struct Pinned {
+    pub scene: Scene,
+    pub solution: Arc<Solution>,
+    /// The preset it started from.
+    pub label: String,
+    /// Where its automatic span ends (the current automatic span reaches it too).
+    pub auto_end: f64,
+}
+
 /// A per-scene cache of what the views draw, keyed by size.
 type Cached<K, T> = RefCell<Option<(K, Rc<[T]>)>>;
 
@@ -100,14 +152,19 @@ type Cached<K, T> = RefCell<Option<(K, Rc<[T]>)>>;
 pub struct Lab {
     pub preset: Preset,
     pub scene: Scene,
+    /// The span shown: `t_end` is always the shown end (see [`SpanEnd`]).
     pub span: Span,
+    pub span_end: SpanEnd,
+    /// The run pinned for an A/B comparison.
+    pub pinned: Option<Pinned>,
     pub solution: Arc<Solution>,
     pub derived: Derived,
     /// The x range (m) the balls cover over the span.
     pub extent: (f64, f64),
     /// RMS residuals of v_cm and v_t against the measured points.
     pub data_rms: Option<(f64, f64)>,
-    /// Where the measured left ball is at each measured time (its v_cm integrated).
+    /// Where the measured left ball is at each measured time: the tracked centre of a
+    /// position file, else its v_cm integrated.
     ghost: Option<Vec<f64>>,
     /// Line-fit window (None: the sliding phase).
     pub fit_window: (Option<f64>, Option<f64>),
@@ -115,19 +172,41 @@ pub struct Lab {
     want_fits: bool,
     overlay_choice: Option<(Method, u8)>,
     methods: Job<Vec<Row>>,
-    overlay: Job<Overlay>,
+    /// `None` only for a run that was cancelled before it finished.
+    overlay: Job<Option<Overlay>>,
     fits: Job<Result<Fits, String>>,
+    /// The model fitted to a position track's positions (none for a velocity file).
+    position_fit: Job<Result<ModelFit, String>>,
+    /// A file the app is writing (run CSV, chart SVG): the status message, or why not.
+    export: Job<Result<String, String>>,
     samples: Cached<usize, Snapshot>,
+    energies: Cached<usize, (f64, EnergySplit)>,
+    pinned_samples: Cached<usize, Snapshot>,
     regimes: Cached<(usize, usize), Regime>,
 }
 
 impl Lab {
+    /// The lab on `scene`; a `t_end` in `span` counts as the preset's (see [`SpanEnd`];
+    /// [`Lab::set_span_end`] makes it explicit).
     pub fn new(preset: Preset, scene: Scene, span: Span) -> Lab {
-        let solution = Arc::new(engine::solve(&scene, &span));
+        let span_end = preset_span_end(&span);
+        let solution = Arc::new(solve_shown(
+            &scene,
+            &span,
+            span_end,
+            preset.measured.as_ref(),
+            None,
+        ));
+        let span = Span {
+            t_start: span.t_start,
+            t_end: Some(solution.t_end),
+        };
         let mut lab = Lab {
             preset,
             scene,
             span,
+            span_end,
+            pinned: None,
             derived: Derived::of(&scene),
             solution,
             extent: (0.0, 0.0),
@@ -140,7 +219,11 @@ impl Lab {
             methods: Job::Idle,
             overlay: Job::Idle,
             fits: Job::Idle,
+            position_fit: Job::Idle,
+            export: Job::Idle,
             samples: RefCell::default(),
+            energies: RefCell::default(),
+            pinned_samples: RefCell::default(),
             regimes: RefCell::default(),
         };
         lab.cache();
@@ -164,7 +247,8 @@ impl Lab {
             Key::Mu => s.mu,
             Key::V0 | Key::V0Left => s.left.v0,
             Key::V0Right => s.right.v0,
-            Key::Height => self.derived.release_height,
+            Key::Height | Key::HeightLeft => self.derived.release_height,
+            Key::HeightRight => crate::physics::closed_form::release_height(s.right.v0, s.k(), s.g),
             Key::Restitution => s.restitution,
             Key::RollingResistance => s.rolling_resistance,
             Key::G => s.g,
@@ -173,27 +257,118 @@ impl Lab {
         }
     }
 
-    /// Sets a parameter if the scene stays valid.
+    /// Sets a parameter if the scene stays valid. Setting `t_end` fixes the span's end;
+    /// any other parameter ends a preset's `t_end` (the span follows the physics again).
     pub fn set(&mut self, key: Key, value: f64) -> Result<(), SceneError> {
-        let spec = SceneSpec::of(&self.scene, &self.span).with(key, value);
+        let fixed = match self.span_end {
+            SpanEnd::Fixed { t_end, .. } => Some(t_end),
+            _ => None,
+        };
+        let given = Span {
+            t_start: self.span.t_start,
+            t_end: fixed,
+        };
+        let spec = SceneSpec::of(&self.scene, &given).with(key, value);
         let (scene, span) = spec.resolve()?;
+        self.span_end = match (key, self.span_end) {
+            (Key::TEnd, _) => SpanEnd::Fixed {
+                t_end: value,
+                from_preset: false,
+            },
+            (Key::TStart, end) => end,
+            (
+                _,
+                SpanEnd::Fixed {
+                    from_preset: true, ..
+                },
+            ) => SpanEnd::Auto,
+            (_, end) => end,
+        };
         self.load(scene, span);
         Ok(())
     }
 
-    /// Starts over from `preset`.
+    /// Chooses how the span ends (the span key, or `--t-end`), keeping the scene.
+    pub fn set_span_end(&mut self, end: SpanEnd) -> Result<(), SceneError> {
+        if let SpanEnd::Fixed { t_end, .. } = end
+            && !(t_end > self.span.t_start && t_end <= 1e6)
+        {
+            return Err(SceneError::OutOfRange {
+                name: "t_end",
+                value: format!("{t_end} s"),
+                allowed: format!("t_start = {} s < t_end ≤ 1e6 s", self.span.t_start),
+            });
+        }
+        self.span_end = end;
+        self.load(self.scene, self.span);
+        Ok(())
+    }
+
+    /// Starts over from `preset` (its `t_end`, if any, holds until a parameter changes).
     pub fn load_preset(&mut self, preset: Preset) -> Result<(), SceneError> {
         let (scene, span) = preset.spec.resolve()?;
         self.preset = preset;
         self.fit_window = (None, None);
+        self.span_end = preset_span_end(&span);
         self.load(scene, span);
         Ok(())
     }
 
+    /// Pins the current run for an A/B comparison, or unpins it; true if now pinned.
+    pub fn toggle_pin(&mut self) -> bool {
+        self.pinned = match self.pinned {
+            Some(_) => None,
+            None => Some(Pinned {
+                scene: self.scene,
+                solution: self.solution.clone(),
+                label: self.preset.name.clone(),
+                // Its own automatic end, not the shown one: a scaled span must not
+                // compound through the pin.
+                auto_end: solve_shown(
+                    &self.scene,
+                    &self.span,
+                    SpanEnd::Auto,
+                    self.measured(),
+                    None,
+                )
+                .t_end,
+            }),
+        };
+        // The automatic span covers the pinned run too: re-solve only if that moves it.
+        let sol = solve_shown(
+            &self.scene,
+            &self.span,
+            self.span_end,
+            self.measured(),
+            self.pinned_end(),
+        );
+        if sol.t_end == self.solution.t_end {
+            self.cache();
+        } else {
+            self.load(self.scene, self.span);
+        }
+        self.pinned.is_some()
+    }
+
+    /// Where the pinned run's span ends (the automatic span reaches it too).
+    fn pinned_end(&self) -> Option<f64> {
+        self.pinned.as_ref().map(|p| p.auto_end)
+    }
+
     fn load(&mut self, scene: Scene, span: Span) {
         self.scene = scene;
-        self.span = span;
-        self.solution = Arc::new(engine::solve(&scene, &span));
+        let solution = solve_shown(
+            &scene,
+            &span,
+            self.span_end,
+            self.measured(),
+            self.pinned_end(),
+        );
+        self.span = Span {
+            t_start: span.t_start,
+            t_end: Some(solution.t_end),
+        };
+        self.solution = Arc::new(solution);
         self.derived = Derived::of(&scene);
         self.cache();
         self.methods.cancel();
@@ -203,9 +378,24 @@ impl Lab {
     /// What the views need from a solve that does not change from frame to frame.
     fn cache(&mut self) {
         self.extent = extent(&self.solution, self.scene.radius);
+        if let Some(p) = &self.pinned {
+            // The pinned balls are drawn too: the scene's scale covers both runs.
+            let mut pinned = (*p.solution).clone();
+            (pinned.t_start, pinned.t_end) = (self.solution.t_start, self.solution.t_end);
+            let (lo, hi) = extent(&pinned, p.scene.radius);
+            self.extent = (self.extent.0.min(lo), self.extent.1.max(hi));
+        }
         self.data_rms = self.measured().map(|m| data_rms(&self.solution, m));
-        self.ghost = self.measured().map(|m| ghost_track(m, self.scene.radius));
+        let radius = self.scene.radius;
+        self.ghost = self.measured().map(|m| match &m.x {
+            // The tracked centre is the displacement from the impact place, where the
+            // model's left ball is at −R.
+            Some(x) => x.iter().map(|x| x - radius).collect(),
+            None => ghost_track(m, radius),
+        });
         self.samples.replace(None);
+        self.energies.replace(None);
+        self.pinned_samples.replace(None);
         self.regimes.replace(None);
     }
 
@@ -231,11 +421,23 @@ impl Lab {
         match self.measured().filter(|_| self.want_fits) {
             Some(m) => {
                 let (scene, m, window) = (self.scene, m.clone(), self.fit_window);
-                self.fits.start(move |_| {
-                    fit::fit_all(&scene, &m, window, &[Free::Mu]).map_err(|e| e.to_string())
+                if m.x.is_some() {
+                    let m = m.clone();
+                    self.position_fit.start(move |ticket| {
+                        fit::position_fit(&scene, &m, &[Free::Mu], ticket)
+                            .map_err(|e| e.to_string())
+                    });
+                } else {
+                    self.position_fit.cancel();
+                }
+                self.fits.start(move |ticket| {
+                    fit::fit_all(&scene, &m, window, &[Free::Mu], ticket).map_err(|e| e.to_string())
                 });
             }
-            None => self.fits.cancel(),
+            None => {
+                self.fits.cancel();
+                self.position_fit.cancel();
+            }
         }
     }
 
@@ -244,7 +446,9 @@ impl Lab {
         let a = self.methods.poll();
         let b = self.overlay.poll();
         let c = self.fits.poll();
-        a || b || c
+        let d = self.position_fit.poll();
+        let e = self.export.poll();
+        a || b || c || d || e
     }
 
     /// Waits for every running analysis (headless output is then deterministic).
@@ -252,11 +456,36 @@ impl Lab {
         self.methods.wait();
         self.overlay.wait();
         self.fits.wait();
+        self.position_fit.wait();
+        self.export.wait();
+    }
+
+    /// Writes a file off the key press (a chart's SVG takes milliseconds): `work`
+    /// returns the status message, or why nothing was written. A newer export
+    /// supersedes a running one.
+    pub fn start_export(&mut self, work: impl FnOnce() -> Result<String, String> + Send + 'static) {
+        self.export.start(move |_| work());
+    }
+
+    /// The finished export's message, once; `None` while it runs or when there is none.
+    pub fn take_export(&mut self) -> Option<Result<String, String>> {
+        self.export.poll();
+        match std::mem::take(&mut self.export) {
+            Job::Ready(r) => Some(r),
+            other => {
+                self.export = other;
+                None
+            }
+        }
     }
 
     /// True while an analysis runs.
     pub fn busy(&self) -> bool {
-        self.methods.is_running() || self.overlay.is_running() || self.fits.is_running()
+        self.methods.is_running()
+            || self.overlay.is_running()
+            || self.fits.is_running()
+            || self.position_fit.is_running()
+            || self.export.is_running()
     }
 
     /// Asks for (or stops asking for) the Methods view's rows.
@@ -298,7 +527,11 @@ impl Lab {
     }
 
     pub fn overlay(&self) -> State<'_, Overlay> {
-        self.overlay.state()
+        match self.overlay.state() {
+            State::Ready(Some(o)) => State::Ready(o),
+            State::Ready(None) | State::Idle => State::Idle,
+            State::Computing { done, total } => State::Computing { done, total },
+        }
     }
 
     /// Asks for (or stops asking for) the fits of the measured series.
@@ -309,6 +542,11 @@ impl Lab {
 
     pub fn fits(&self) -> State<'_, Result<Fits, String>> {
         self.fits.state()
+    }
+
+    /// The model fitted directly to a position track (Idle for a velocity file).
+    pub fn position_fit(&self) -> State<'_, Result<ModelFit, String>> {
+        self.position_fit.state()
     }
 
     /// Moves one end of the line-fit window by one measured frame.
@@ -346,15 +584,32 @@ impl Lab {
         Ok(())
     }
 
-    /// Where the measured left ball is at `t`: its v_cm integrated (trapezoids) from
-    /// the impact place at t = 0; `None` outside the series.
+    /// Where the measured left ball's centre is at `t`: the tracked position of a
+    /// position file, else its v_cm integrated (trapezoids) from the impact place at
+    /// t = 0; `None` outside the series.
     pub fn ghost_x(&self, t: f64) -> Option<f64> {
         let m = self.measured()?;
         let track = self.ghost.as_ref()?;
         if t < m.t[0] || t > *m.t.last()? {
             return None;
         }
+        if m.x.is_some() {
+            return interpolate(&m.t, track, t);
+        }
         Some(integral_to(m, track, t))
+    }
+
+    /// The measured left ball's spin angle at `t` for its spoke, rad, on the model's
+    /// scale (the model's angle at the first impact plus the mark's turn since then);
+    /// `None` without a tracked rim mark or outside the series.
+    pub fn ghost_angle(&self, t: f64) -> Option<f64> {
+        let m = self.measured()?;
+        let angle = m.angle.as_ref()?;
+        if t < m.t[0] || t > *m.t.last()? {
+            return None;
+        }
+        let a = interpolate(&m.t, angle, t)?;
+        Some(self.solution.angle_at(0.0)[0] + a)
     }
 
     /// The exact states at the chart's sample times for a plot `columns` wide: about
@@ -372,6 +627,78 @@ impl Lab {
             .collect();
         self.samples.replace(Some((columns, s.clone())));
         s
+    }
+
+    /// The energy split at the same times as [`Lab::samples`], once per scene and width.
+    pub fn energies(&self, columns: usize) -> Rc<[(f64, EnergySplit)]> {
+        if let Some((c, s)) = &*self.energies.borrow()
+            && *c == columns
+        {
+            return s.clone();
+        }
+        let sol = &self.solution;
+        let s: Rc<[(f64, EnergySplit)]> = sample_times(sol, columns)
+            .into_iter()
+            .map(|t| (t, sol.energy_at(t)))
+            .collect();
+        self.energies.replace(Some((columns, s.clone())));
+        s
+    }
+
+    /// The pinned run's states over the current span (its own events kept sharp), once
+    /// per scene and width; empty when nothing is pinned.
+    pub fn pinned_samples(&self, columns: usize) -> Rc<[Snapshot]> {
+        let Some(p) = &self.pinned else {
+            return Rc::from(Vec::new());
+        };
+        if let Some((c, s)) = &*self.pinned_samples.borrow()
+            && *c == columns
+        {
+            return s.clone();
+        }
+        let mut pinned = (*p.solution).clone();
+        (pinned.t_start, pinned.t_end) = (self.solution.t_start, self.solution.t_end);
+        let s: Rc<[Snapshot]> = sample_times(&pinned, columns)
+            .into_iter()
+            .map(|t| pinned.at(t))
+            .collect();
+        self.pinned_samples.replace(Some((columns, s.clone())));
+        s
+    }
+
+    /// The pinned parameters that differ from the current ones: `(label, was, now)`,
+    /// in the units of the parameter panel.
+    pub fn pinned_changes(&self) -> Vec<(&'static str, String, String)> {
+        let Some(p) = &self.pinned else {
+            return Vec::new();
+        };
+        let (a, b) = (&p.scene, &self.scene);
+        let rows: [(&'static str, f64, f64, crate::input::units::Dimension); 11] = {
+            use crate::input::units::Dimension as D;
+            [
+                ("R", a.radius, b.radius, D::Length),
+                ("b", a.width, b.width, D::Length),
+                ("m left", a.left.mass, b.left.mass, D::Mass),
+                ("m right", a.right.mass, b.right.mass, D::Mass),
+                ("μ_k", a.mu, b.mu, D::Ratio),
+                ("v0 left", a.left.v0, b.left.v0, D::Speed),
+                ("v0 right", a.right.v0, b.right.v0, D::Speed),
+                ("e", a.restitution, b.restitution, D::Ratio),
+                ("c_rr", a.rolling_resistance, b.rolling_resistance, D::Ratio),
+                ("g", a.g, b.g, D::Acceleration),
+                ("t0", p.solution.t_start, self.solution.t_start, D::Time),
+            ]
+        };
+        rows.into_iter()
+            .filter(|(_, x, y, _)| (x - y).abs() > 1e-12 * x.abs().max(y.abs()))
+            .map(|(name, x, y, dim)| {
+                (
+                    name,
+                    crate::input::units::show(x, dim).to_string(),
+                    crate::input::units::show(y, dim).to_string(),
+                )
+            })
+            .collect()
     }
 
     /// The regime over groove width (0 … 0.99 · 2R, across) and restitution (1 … 0,
@@ -425,16 +752,67 @@ impl Lab {
             .map(|p| p.description);
         let description = kept
             .unwrap_or_else(|| format!("Saved from groovelab (started from {})", self.preset.name));
-        let spec = SceneSpec::of(&self.scene, &self.span);
+        // Only an end that was set (not the automatic one) is saved.
+        let t_end = match self.span_end {
+            SpanEnd::Fixed { t_end, .. } => Some(t_end),
+            _ => None,
+        };
+        let spec = SceneSpec::of(
+            &self.scene,
+            &Span {
+                t_start: self.span.t_start,
+                t_end,
+            },
+        );
         let text = crate::input::preset::to_toml(name, &description, &spec, self.measured())
             .map_err(SaveError::Io)?;
         // What is written must load again: check before reporting success.
         Preset::parse(&text, name, crate::input::preset::Origin::BuiltIn)
             .map_err(|e| SaveError::Io(format!("the file would not load again: {e}")))?;
         std::fs::create_dir_all(dir).map_err(|e| SaveError::Io(e.to_string()))?;
-        crate::cli::write_atomically(&path, &text).map_err(|e| SaveError::Io(e.to_string()))?;
+        crate::output::write_atomically(&path, text.as_bytes())
+            .map_err(|e| SaveError::Io(e.to_string()))?;
         Ok(path)
     }
+}
+
+/// A `t_end` that came with a preset holds until a parameter changes.
+fn preset_span_end(span: &Span) -> SpanEnd {
+    match span.t_end {
+        Some(t_end) => SpanEnd::Fixed {
+            t_end,
+            from_preset: true,
+        },
+        None => SpanEnd::Auto,
+    }
+}
+
+/// The exact solution with the shown end: the engine always runs to the end of the
+/// motion, so only `t_end` depends on the choice. The automatic end also reaches the
+/// last measured point and the end of a pinned run, so neither is cut.
+fn solve_shown(
+    scene: &Scene,
+    span: &Span,
+    end: SpanEnd,
+    measured: Option<&Measured>,
+    pinned_end: Option<f64>,
+) -> Solution {
+    let auto_span = Span {
+        t_start: span.t_start,
+        t_end: None,
+    };
+    let mut sol = engine::solve(scene, &auto_span);
+    let last_measured = measured.and_then(|m| m.t.last().copied());
+    let auto = sol
+        .t_end
+        .max(last_measured.unwrap_or(f64::NEG_INFINITY))
+        .max(pinned_end.unwrap_or(f64::NEG_INFINITY));
+    sol.t_end = match end {
+        SpanEnd::Auto => auto,
+        SpanEnd::Scaled(f) => span.t_start + f * (auto - span.t_start),
+        SpanEnd::Fixed { t_end, .. } => t_end,
+    };
+    sol
 }
 
 /// Every time-stepping method at the Methods view's levels, untimed (so the view,
@@ -451,7 +829,11 @@ fn method_rows(scene: &Scene, span: &Span, sol: &Solution, ticket: &Ticket) -> V
         }
         ticket.progress(i, runs.len());
         let settings = level_settings(method, level);
-        rows.push(compare::measure(method, scene, span, &settings, sol, false));
+        match compare::measure(method, scene, span, &settings, sol, false, ticket) {
+            Ok(row) => rows.push(row),
+            // Superseded: the rows are dropped unseen.
+            Err(_) => break,
+        }
     }
     rows
 }
@@ -464,7 +846,7 @@ fn overlay(
     span: &Span,
     sol: &Solution,
     ticket: &Ticket,
-) -> Overlay {
+) -> Option<Overlay> {
     let settings = level_settings(method, level);
     let steps = if method.adaptive() {
         1
@@ -489,17 +871,14 @@ fn overlay(
         &settings,
         &mut rec,
     );
-    let row = if ticket.cancelled() {
-        compare::measure(method, scene, span, &level_settings(method, 0), sol, false)
-    } else {
-        compare::measure(method, scene, span, &settings, sol, false)
-    };
-    Overlay {
+    // A superseded run stops here; its (absent) result is never shown.
+    let row = compare::measure(method, scene, span, &settings, sol, false, ticket).ok()?;
+    Some(Overlay {
         method,
         settings,
         points: rec.points,
         row,
-    }
+    })
 }
 
 /// Sample times: about four per column, plus both sides of every event so jumps and
@@ -577,4 +956,17 @@ fn ghost_track(m: &Measured, radius: f64) -> Vec<f64> {
     let cum = cumulative(m);
     let at_impact = integral_to(m, &cum, 0.0);
     cum.iter().map(|c| c - at_impact - radius).collect()
+}
+
+/// `ys` linearly interpolated at `t` between the neighbouring finite values (a gap in
+/// a track is bridged); `None` when there is none on one side.
+fn interpolate(ts: &[f64], ys: &[f64], t: f64) -> Option<f64> {
+    let i = ts.partition_point(|&x| x <= t);
+    let before = (0..i).rev().find(|&j| ys[j].is_finite())?;
+    if ts[before] == t {
+        return Some(ys[before]);
+    }
+    let after = (i..ts.len()).find(|&j| ys[j].is_finite())?;
+    let f = (t - ts[before]) / (ts[after] - ts[before]);
+    Some(ys[before] + f * (ys[after] - ys[before]))
 }

@@ -1,6 +1,7 @@
 //! Speed against accuracy: every method over a sweep of step sizes (or tolerances),
 //! each run measured against the exact solution, classified (`ok`, `chatter`,
-//! `unstable`, `stalled`) and timed.
+//! `unstable`, `stalled`) and timed. A sweep is bounded ([`STEP_BUDGET`] per run) and
+//! can be stopped ([`Progress`]).
 
 use std::time::Instant;
 
@@ -10,6 +11,34 @@ use crate::methods::{Method, Model, Observer, Outcome, Settings, Y, integrate, s
 use crate::physics::model::Phase;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{Event, EventKind, Solution, Who};
+use crate::study::{Cancelled, Progress, Quiet};
+
+/// Most steps one run of a [`sweep`] may take. A level that needs more (a fixed step
+/// too fine for the span) is skipped as `stalled`, saying so. Every preset's default
+/// span (under 4 s) runs its finest level (1 µs) within it, so the budget only bounds
+/// long spans: without it `--t-end 19.7` spent 70 s on 20-million-step runs.
+pub const STEP_BUDGET: usize = 4_000_000;
+
+/// Steps between two looks at the stop flag: often enough to stop within
+/// milliseconds, rare enough to cost nothing.
+const CHECK_EVERY: u32 = 4096;
+
+/// Counts steps and says when to stop because the caller cancelled.
+struct Watch<'a> {
+    progress: &'a dyn Progress,
+    count: u32,
+}
+
+impl<'a> Watch<'a> {
+    fn new(progress: &'a dyn Progress) -> Watch<'a> {
+        Watch { progress, count: 0 }
+    }
+
+    fn stop(&mut self) -> bool {
+        self.count = self.count.wrapping_add(1);
+        self.count.is_multiple_of(CHECK_EVERY) && self.progress.cancelled()
+    }
+}
 
 /// How a run ended (interface.md).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -69,6 +98,7 @@ pub struct Row {
 /// Compares a run with the exact solution step by step.
 struct Metrics<'a> {
     exact: &'a Solution,
+    watch: Watch<'a>,
     model: Model,
     e0: f64,
     err_v: f64,
@@ -90,6 +120,9 @@ struct Metrics<'a> {
 
 impl Observer for Metrics<'_> {
     fn step(&mut self, t: f64, y: &Y) -> bool {
+        if self.watch.stop() {
+            return false;
+        }
         if !y.iter().all(|v| v.is_finite()) {
             self.nonfinite = true;
             return false;
@@ -149,11 +182,11 @@ impl Observer for Metrics<'_> {
 }
 
 /// Collects the times of the impacts a method detects.
-struct Impacts(Vec<f64>);
+struct Impacts<'a>(Vec<f64>, Watch<'a>);
 
-impl Observer for Impacts {
+impl Observer for Impacts<'_> {
     fn step(&mut self, _t: f64, y: &Y) -> bool {
-        y.iter().all(|v| v.is_finite())
+        !self.1.stop() && y.iter().all(|v| v.is_finite())
     }
 
     fn event(&mut self, event: Event) {
@@ -193,11 +226,11 @@ fn impact_windows(exact: &[f64], method: &[f64], slack: f64) -> (Vec<(f64, f64)>
 }
 
 /// Only checks that the state stays finite: the observer of timed runs.
-struct Finite;
+struct Finite<'a>(Watch<'a>);
 
-impl Observer for Finite {
+impl Observer for Finite<'_> {
     fn step(&mut self, _t: f64, y: &Y) -> bool {
-        y.iter().all(|v| v.is_finite())
+        !self.0.stop() && y.iter().all(|v| v.is_finite())
     }
 }
 
@@ -236,10 +269,11 @@ pub fn run(
     settings: &Settings,
     exact: &Solution,
 ) -> Row {
-    measure(method, scene, span, settings, exact, true)
+    measure(method, scene, span, settings, exact, true, &Quiet).expect("Quiet never cancels")
 }
 
-/// [`run`], with the timing runs only if `timed` (the untimed row is deterministic).
+/// [`run`], with the timing runs only if `timed` (the untimed row is deterministic),
+/// stopping early (with `Cancelled`) when `progress` says so.
 pub fn measure(
     method: Method,
     scene: &Scene,
@@ -247,7 +281,8 @@ pub fn measure(
     settings: &Settings,
     exact: &Solution,
     timed: bool,
-) -> Row {
+    progress: &dyn Progress,
+) -> Result<Row, Cancelled> {
     let model = Model::of(scene);
     let (t0, t1) = (exact.t_start, exact.t_end);
     if method == Method::Exact {
@@ -256,7 +291,7 @@ pub fn measure(
         } else {
             (0.0, 0.0)
         };
-        return Row {
+        return Ok(Row {
             method,
             step: None,
             tolerance: None,
@@ -273,7 +308,7 @@ pub fn measure(
             time_min_s,
             time_median_s,
             note: None,
-        };
+        });
     }
     let y0 = start_state(scene, t0);
     let settle = if method.regularised() {
@@ -282,8 +317,11 @@ pub fn measure(
         2.0 * settings.step
     };
     // First pass: where the method puts its impacts, to pair them with the exact ones.
-    let mut found = Impacts(Vec::new());
+    let mut found = Impacts(Vec::new(), Watch::new(progress));
     integrate(method, &model, y0, t0, t1, settings, &mut found);
+    if progress.cancelled() {
+        return Err(Cancelled);
+    }
     let exact_impacts: Vec<f64> = exact
         .events
         .iter()
@@ -304,6 +342,7 @@ pub fn measure(
     let (windows, err_t_impact) = impact_windows(&exact_impacts, &found.0, slack);
     let mut metrics = Metrics {
         exact,
+        watch: Watch::new(progress),
         model,
         e0: model.energy(&y0),
         err_v: 0.0,
@@ -320,6 +359,9 @@ pub fn measure(
         next_window: 0,
     };
     let outcome: Outcome = integrate(method, &model, y0, t0, t1, settings, &mut metrics);
+    if progress.cancelled() {
+        return Err(Cancelled);
+    }
     let end = exact.at(outcome.t);
     let err_final = [
         outcome.y[1] - end.left.v,
@@ -345,10 +387,23 @@ pub fn measure(
     {
         (0.0, 0.0)
     } else {
-        time(|| integrate(method, &model, y0, t0, t1, settings, &mut Finite))
+        time(|| {
+            integrate(
+                method,
+                &model,
+                y0,
+                t0,
+                t1,
+                settings,
+                &mut Finite(Watch::new(progress)),
+            )
+        })
     };
+    if progress.cancelled() {
+        return Err(Cancelled);
+    }
     let exact_roll = exact_roll(exact);
-    Row {
+    Ok(Row {
         method,
         step: (!method.adaptive()).then_some(settings.step),
         tolerance: method.adaptive().then_some(settings.tolerance),
@@ -372,7 +427,7 @@ pub fn measure(
         time_min_s,
         time_median_s,
         note: outcome.stalled,
-    }
+    })
 }
 
 /// The default sweep: two steps per decade from 10 ms to 1 µs, tolerances 1e-2…1e-10.
@@ -384,28 +439,52 @@ pub fn default_sweep(method: Method) -> Vec<f64> {
     }
 }
 
-/// Runs every method in `methods` over its sweep.
-pub fn sweep(scene: &Scene, span: &Span, methods: &[Method], base: &Settings) -> Vec<Row> {
+/// Runs every method in `methods` over its sweep, each run within [`STEP_BUDGET`]
+/// steps; ticks `progress` once per row and stops when it says so.
+pub fn sweep(
+    scene: &Scene,
+    span: &Span,
+    methods: &[Method],
+    base: &Settings,
+    progress: &dyn Progress,
+) -> Result<Vec<Row>, Cancelled> {
     let exact = crate::physics::engine::solve(scene, span);
-    let mut rows = Vec::new();
-    for &method in methods {
-        for value in default_sweep(method) {
-            let settings = if method.adaptive() {
-                Settings {
-                    tolerance: value,
-                    step: 1e-3,
-                    ..*base
-                }
-            } else {
-                Settings {
-                    step: value,
-                    ..*base
-                }
-            };
-            rows.push(run(method, scene, span, &settings, &exact));
+    let budget = STEP_BUDGET.min(base.max_steps);
+    let levels: Vec<(Method, f64)> = methods
+        .iter()
+        .flat_map(|&m| default_sweep(m).into_iter().map(move |v| (m, v)))
+        .collect();
+    let total = levels.len() as u64;
+    let mut rows = Vec::with_capacity(levels.len());
+    progress.tick(0, total);
+    for (method, value) in levels {
+        let settings = if method.adaptive() {
+            Settings {
+                tolerance: value,
+                step: 1e-3,
+                max_steps: budget,
+                ..*base
+            }
+        } else {
+            Settings {
+                step: value,
+                max_steps: budget,
+                ..*base
+            }
+        };
+        let mut row = measure(method, scene, span, &settings, &exact, true, progress)?;
+        // A fixed step that needs more than the budget was refused before its first
+        // step: say why in words a reader of the table can act on.
+        let needed = ((exact.t_end - exact.t_start) / value).ceil();
+        if method != Method::Exact && !method.adaptive() && needed > budget as f64 {
+            row.note = Some(format!(
+                "skipped: {needed} steps needed, over the budget of {budget} steps per run (a shorter span runs it)"
+            ));
         }
+        rows.push(row);
+        progress.tick(rows.len() as u64, total);
     }
-    rows
+    Ok(rows)
 }
 
 /// The headline: how many times faster `exact` is than the fastest time-stepping run

@@ -1,7 +1,68 @@
 //! Figures exported as SVG (plotters): the work–precision diagram of the methods, the
 //! fit figure, the regime map, and a run's chart as the app shows it (`run_chart`).
+//! Every axis range goes through [`linear_axis`] or
+//! [`log_axis`]: plotters loops forever on an infinite, NaN or too thin range.
 
 use plotters::prelude::*;
+
+/// Why a figure cannot be drawn.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("{0}")]
+pub struct NothingToDraw(pub String);
+
+/// Largest magnitude put on an axis; beyond it spans overflow.
+const AXIS_LIMIT: f64 = 1e300;
+
+/// The smallest and largest finite value, if any.
+pub fn finite_bounds(values: impl IntoIterator<Item = f64>) -> Option<(f64, f64)> {
+    values
+        .into_iter()
+        .filter(|v| v.is_finite())
+        .fold(None, |acc, v| match acc {
+            None => Some((v, v)),
+            Some((lo, hi)) => Some((lo.min(v), hi.max(v))),
+        })
+}
+
+/// A linear axis range plotters can draw: finite, within ±1e300, and wider than a
+/// millionth of its magnitude (a thinner one is padded by a tenth of it, an empty
+/// one at 0 becomes −1 … 1).
+pub fn linear_axis(lo: f64, hi: f64) -> (f64, f64) {
+    if !(lo.is_finite() && hi.is_finite()) {
+        return (-1.0, 1.0);
+    }
+    let (lo, hi) = (
+        lo.min(hi).clamp(-AXIS_LIMIT, AXIS_LIMIT),
+        hi.max(lo).clamp(-AXIS_LIMIT, AXIS_LIMIT),
+    );
+    let mag = lo.abs().max(hi.abs());
+    if hi - lo >= (mag * 1e-6).max(1e-100) {
+        return (lo, hi);
+    }
+    let pad = if mag < 1e-100 { 1.0 } else { 0.1 * mag };
+    (lo - pad, hi + pad)
+}
+
+/// A log axis range plotters can draw: positive, finite, within 1e-300 … 1e300, and
+/// at least a factor 1.01 wide (else widened tenfold each way).
+pub fn log_axis(lo: f64, hi: f64) -> (f64, f64) {
+    let ok = |v: f64| v.is_finite() && v > 0.0;
+    let (lo, hi) = match (ok(lo), ok(hi)) {
+        (true, true) => (lo.min(hi), hi.max(lo)),
+        (true, false) => (lo, lo),
+        (false, true) => (hi, hi),
+        (false, false) => (1.0, 1.0),
+    };
+    let (lo, hi) = (
+        lo.clamp(1.0 / AXIS_LIMIT, AXIS_LIMIT),
+        hi.clamp(1.0 / AXIS_LIMIT, AXIS_LIMIT),
+    );
+    if hi >= lo * 1.01 {
+        (lo, hi)
+    } else {
+        (lo / 10.0, hi * 10.0)
+    }
+}
 
 use crate::methods::Method;
 use crate::physics::scene::Scene;
@@ -32,15 +93,21 @@ pub fn work_precision(rows: &[Row], scene: &Scene) -> Result<String, Box<dyn std
             .map(|r| (r.time_median_s.max(1e-9), r.err_v.max(1e-16)))
             .filter(|p| p.0.is_finite() && p.1.is_finite())
             .collect();
-        let lo_t = pts.iter().map(|p| p.0).fold(f64::INFINITY, f64::min) / 2.0;
-        let hi_t = pts.iter().map(|p| p.0).fold(0.0, f64::max) * 2.0;
-        let lo_e = pts
+        if pts.is_empty() {
+            return Err(Box::new(NothingToDraw(
+                "no time-stepping run has a finite error to plot, allowed --methods with at least one of euler, symplectic-euler, rk4, rk45, moreau".into(),
+            )));
+        }
+        // The exact engine's time is on the time axis too.
+        let exact_t = rows
             .iter()
-            .map(|p| p.1)
-            .fold(f64::INFINITY, f64::min)
-            .max(1e-16)
-            / 3.0;
-        let hi_e = pts.iter().map(|p| p.1).fold(0.0, f64::max) * 3.0;
+            .filter(|r| r.method == Method::Exact)
+            .map(|r| r.time_median_s.max(1e-9));
+        let (lo_t, hi_t) =
+            finite_bounds(pts.iter().map(|p| p.0).chain(exact_t)).expect("pts is not empty");
+        let (lo_t, hi_t) = log_axis(lo_t / 2.0, hi_t * 2.0);
+        let (lo_e, hi_e) = finite_bounds(pts.iter().map(|p| p.1)).expect("pts is not empty");
+        let (lo_e, hi_e) = log_axis(lo_e.max(1e-16) / 3.0, hi_e * 3.0);
         let title = format!(
             "Work-precision, b = {:.2} cm, R = {:.2} cm, mu = {}, e = {}",
             scene.width * 100.0,
@@ -62,7 +129,10 @@ pub fn work_precision(rows: &[Row], scene: &Scene) -> Result<String, Box<dyn std
             .y_label_formatter(&|v| format!("{v:.0e}"))
             .draw()?;
         // The exact engine has no error to plot: a vertical line at its time.
-        if let Some(exact) = rows.iter().find(|r| r.method == Method::Exact) {
+        if let Some(exact) = rows
+            .iter()
+            .find(|r| r.method == Method::Exact && r.time_median_s.is_finite())
+        {
             let t = exact.time_median_s.max(1e-9);
             chart
                 .draw_series(LineSeries::new(
@@ -91,15 +161,19 @@ pub fn work_precision(rows: &[Row], scene: &Scene) -> Result<String, Box<dyn std
                 .legend(move |(x, y)| {
                     PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(2))
                 });
-            chart.draw_series(mine.iter().filter(|r| r.err_v.is_finite()).map(|r| {
-                let p = (r.time_median_s.max(1e-9), r.err_v.max(1e-16));
-                let style = if r.status == crate::study::compare::Status::Ok {
-                    c.filled()
-                } else {
-                    c.stroke_width(1)
-                };
-                Circle::new(p, 4, style)
-            }))?;
+            chart.draw_series(
+                mine.iter()
+                    .filter(|r| r.err_v.is_finite() && r.time_median_s.is_finite())
+                    .map(|r| {
+                        let p = (r.time_median_s.max(1e-9), r.err_v.max(1e-16));
+                        let style = if r.status == crate::study::compare::Status::Ok {
+                            c.filled()
+                        } else {
+                            c.stroke_width(1)
+                        };
+                        Circle::new(p, 4, style)
+                    }),
+            )?;
         }
         chart
             .configure_series_labels()
@@ -124,7 +198,12 @@ pub fn fit_figure(
     fitted.left.v0 = fits.model_fit.v0;
     fitted.right.v0 = fits.model_fit.v0;
     fitted.restitution = fits.model_fit.restitution;
-    let (t0, t1) = (m.t[0], *m.t.last().unwrap_or(&1.0));
+    let Some((t0, t1)) = finite_bounds(m.t.iter().copied()) else {
+        return Err(Box::new(NothingToDraw(
+            "the measured series has no finite time to plot".into(),
+        )));
+    };
+    let (t0, t1) = linear_axis(t0, t1);
     let sol = crate::physics::engine::solve(
         &fitted,
         &crate::physics::scene::Span {
@@ -154,10 +233,11 @@ pub fn fit_figure(
             .chain(&m.v_t)
             .copied()
             .chain(model.iter().flat_map(|p| [p.1, p.2]));
-        let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |a, v| {
-            (a.0.min(v), a.1.max(v))
-        });
-        let (lo, hi) = (lo - 0.1, hi + 0.1);
+        // Non-finite values (a model that overflowed) are left out of the range and
+        // the drawing; the range is padded by 0.1 m/s as before.
+        let (lo, hi) = finite_bounds(values).unwrap_or((0.0, 0.0));
+        let (lo, hi) = linear_axis(lo - 0.1, hi + 0.1);
+        let fit = |(t, v): (f64, f64)| (near(t, (t0, t1)), near(v, (lo, hi)));
         let mf = &fits.model_fit;
         let mut chart = ChartBuilder::on(&top)
             .caption(
@@ -187,7 +267,7 @@ pub fn fit_figure(
             let pick = move |p: &(f64, f64, f64)| (p.0, if j == 1 { p.1 } else { p.2 });
             chart
                 .draw_series(LineSeries::new(
-                    model.iter().map(pick),
+                    model.iter().map(pick).filter(|p| finite(*p)).map(fit),
                     colour.stroke_width(2),
                 ))?
                 .label(format!("model {name}"))
@@ -199,7 +279,9 @@ pub fn fit_figure(
             .draw_series(
                 m.t.iter()
                     .zip(&m.v_cm)
-                    .map(|(t, v)| Cross::new((*t, *v), 4, blue)),
+                    .map(|(t, v)| (*t, *v))
+                    .filter(|p| finite(*p))
+                    .map(|p| Cross::new(fit(p), 4, blue)),
             )?
             .label("measured v_cm")
             .legend(move |(x, y)| Cross::new((x + 10, y), 4, blue));
@@ -207,7 +289,9 @@ pub fn fit_figure(
             .draw_series(
                 m.t.iter()
                     .zip(&m.v_t)
-                    .map(|(t, v)| Circle::new((*t, *v), 3, orange)),
+                    .map(|(t, v)| (*t, *v))
+                    .filter(|p| finite(*p))
+                    .map(|p| Circle::new(fit(p), 3, orange)),
             )?
             .label("measured v_t")
             .legend(move |(x, y)| Circle::new((x + 10, y), 3, orange));
@@ -221,7 +305,11 @@ pub fn fit_figure(
             let ys: Vec<f64> = idx.iter().map(|&i| series[i]).collect();
             let line = crate::study::fit::line(&ts, &ys);
             chart.draw_series(LineSeries::new(
-                [l.from, l.to].map(|t| (t, line.intercept + line.slope * t)),
+                [l.from, l.to]
+                    .map(|t| (t, line.intercept + line.slope * t))
+                    .into_iter()
+                    .filter(|p| finite(*p))
+                    .map(fit),
                 colour.mix(0.6).stroke_width(1),
             ))?;
         }
@@ -243,6 +331,7 @@ pub fn fit_figure(
         let rmax = res
             .iter()
             .flat_map(|r| [r.1.abs(), r.2.abs()])
+            .filter(|r| r.is_finite())
             .fold(0.01, f64::max)
             .min(1.0);
         let mut rc = ChartBuilder::on(&bottom)
@@ -254,12 +343,35 @@ pub fn fit_figure(
             .x_desc("t (s)")
             .y_desc("data - model (m/s)")
             .draw()?;
-        rc.draw_series(res.iter().map(|r| Cross::new((r.0, r.1), 4, blue)))?;
-        rc.draw_series(res.iter().map(|r| Circle::new((r.0, r.2), 3, orange)))?;
+        let fit = |(t, r): (f64, f64)| (near(t, (t0, t1)), near(r, (-rmax, rmax)));
+        rc.draw_series(
+            res.iter()
+                .map(|r| (r.0, r.1))
+                .filter(|p| finite(*p))
+                .map(|p| Cross::new(fit(p), 4, blue)),
+        )?;
+        rc.draw_series(
+            res.iter()
+                .map(|r| (r.0, r.2))
+                .filter(|p| finite(*p))
+                .map(|p| Circle::new(fit(p), 3, orange)),
+        )?;
         rc.draw_series(LineSeries::new([(t0, 0.0), (t1, 0.0)], BLACK))?;
         root.present()?;
     }
     Ok(svg)
+}
+
+/// Both coordinates finite.
+fn finite(p: (f64, f64)) -> bool {
+    p.0.is_finite() && p.1.is_finite()
+}
+
+/// `v` moved to within one span of the axis `lo … hi`: plotters maps a point into
+/// i32 pixels and overflows on one far outside the axis; off the chart is off it.
+fn near(v: f64, (lo, hi): (f64, f64)) -> f64 {
+    let span = hi - lo;
+    v.clamp(lo - span, hi + span)
 }
 
 fn regime_colour(r: crate::physics::derived::Regime) -> RGBColor {
@@ -284,13 +396,20 @@ pub fn regime_map(
     {
         let root = SVGBackend::with_string(&mut svg, (900, 640)).into_drawing_area();
         root.fill(&WHITE)?;
+        // Half a cell beyond each end; a one-point or overflowing axis gets a safe range.
         let pad = |a: &crate::study::sweep::Axis| {
             let step = if a.n > 1 {
                 (a.hi - a.lo) / (a.n - 1) as f64
             } else {
-                1.0
+                0.0
             };
-            (a.lo - step / 2.0, a.hi + step / 2.0, step)
+            let (lo, hi) = linear_axis(a.lo - step / 2.0, a.hi + step / 2.0);
+            let step = if step.is_finite() && step > 0.0 {
+                step
+            } else {
+                hi - lo
+            };
+            (lo, hi, step)
         };
         let (x0, x1, dx) = pad(x);
         let (y0, y1, dy, ylabel) = match y {
@@ -321,7 +440,7 @@ pub fn regime_map(
             .draw()?;
         match y {
             Some(_) => {
-                chart.draw_series(points.iter().map(|p| {
+                chart.draw_series(points.iter().filter(|p| p.x.is_finite()).map(|p| {
                     let (cx, cy) = (p.x, p.y.unwrap_or(0.0));
                     Rectangle::new(
                         [
@@ -333,9 +452,10 @@ pub fn regime_map(
                 }))?;
             }
             None => {
-                chart.draw_series(points.iter().map(|p| {
+                chart.draw_series(points.iter().filter(|p| p.x.is_finite()).map(|p| {
+                    let ratio = p.v_ratio.filter(|r| r.is_finite()).unwrap_or(0.0);
                     Circle::new(
-                        (p.x, p.v_ratio.unwrap_or(0.0).clamp(-1.0, 1.0)),
+                        (p.x, ratio.clamp(-1.0, 1.0)),
                         3,
                         regime_colour(p.regime).filled(),
                     )
@@ -452,12 +572,12 @@ pub fn run_chart(
     let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |a, v| {
         (a.0.min(v), a.1.max(v))
     });
+    // linear_axis first clamps the range (so the pad is finite), then again after the
+    // 5 % pad: no data (an infinite fold), NaN or a flat run still give a drawable axis.
+    let (lo, hi) = linear_axis(lo, hi);
     let pad = 0.05 * (hi - lo).max(1e-3);
-    let (lo, hi) = if lo.is_finite() {
-        (lo - pad, hi + pad)
-    } else {
-        (-1.0, 1.0)
-    };
+    let (lo, hi) = linear_axis(lo - pad, hi + pad);
+    let (t0, t1) = linear_axis(t0, t1);
     let scene = &sol.scene;
     let mut svg = String::new();
     {
@@ -533,4 +653,135 @@ pub fn run_chart(
         root.present()?;
     }
     Ok(svg)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::input::preset::Preset;
+    use crate::study::compare::Status;
+
+    /// Runs `f` on a thread and fails if it takes longer than 30 s (a figure once
+    /// looped forever on an infinite axis).
+    fn within_30s<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> T {
+        let (tx, rx) = std::sync::mpsc::channel();
+        std::thread::spawn(move || {
+            let _ = tx.send(f());
+        });
+        rx.recv_timeout(std::time::Duration::from_secs(30))
+            .expect("the figure finished")
+    }
+
+    fn row(method: Method, time: f64, err: f64) -> Row {
+        Row {
+            method,
+            step: None,
+            tolerance: None,
+            status: Status::Ok,
+            err_v: err,
+            err_u: err,
+            err_t_roll: None,
+            err_t_impact: None,
+            err_final: err,
+            energy_drift: 0.0,
+            slip_rolling: 0.0,
+            steps: 1,
+            rhs_evals: 1,
+            time_min_s: time,
+            time_median_s: time,
+            note: None,
+        }
+    }
+
+    fn paper() -> (Scene, crate::input::data::Measured) {
+        let p = Preset::load("paper-b4.9").unwrap();
+        let (scene, _) = p.spec.resolve().unwrap();
+        (scene, p.measured.unwrap())
+    }
+
+    #[test]
+    fn axes_are_always_finite_and_wide_enough() {
+        let cases = [
+            (f64::INFINITY, 0.0),
+            (f64::NAN, 1.0),
+            (0.0, 0.0),
+            (1e300, 1e300),
+            (-f64::MAX, f64::MAX),
+            (1.0, 1.0 + 1e-15),
+            (5.0, 2.0),
+        ];
+        for (lo, hi) in cases {
+            let (a, b) = linear_axis(lo, hi);
+            assert!(
+                a.is_finite() && b.is_finite() && (b - a).is_finite(),
+                "{lo} {hi}"
+            );
+            assert!(b - a >= 1e-6 * a.abs().max(b.abs()), "{lo} {hi}: {a} {b}");
+            let (a, b) = log_axis(lo, hi);
+            assert!(
+                a > 0.0 && b.is_finite() && b >= 1.01 * a,
+                "{lo} {hi}: {a} {b}"
+            );
+        }
+        assert_eq!(linear_axis(-0.2, 0.9), (-0.2, 0.9));
+        assert_eq!(log_axis(1e-9, 1e-3), (1e-9, 1e-3));
+    }
+
+    #[test]
+    fn a_work_precision_diagram_of_exact_alone_is_an_error_not_a_hang() {
+        let (scene, _) = paper();
+        let e = within_30s(move || {
+            work_precision(&[row(Method::Exact, 5e-6, 0.0)], &scene).map_err(|e| e.to_string())
+        })
+        .unwrap_err();
+        assert!(e.contains("no time-stepping run"), "{e}");
+    }
+
+    #[test]
+    fn non_finite_rows_are_left_out_of_the_diagram() {
+        let (scene, _) = paper();
+        let rows = vec![
+            row(Method::Exact, f64::INFINITY, 0.0),
+            row(Method::Euler, 1e-3, f64::INFINITY),
+            row(Method::Euler, f64::NAN, 1e-3),
+            row(Method::Rk4, 2e-3, 1e-7),
+            row(Method::Rk4, 1e-300, f64::MAX),
+        ];
+        let svg =
+            within_30s(move || work_precision(&rows, &scene).map_err(|e| e.to_string())).unwrap();
+        assert!(
+            svg.starts_with("<svg") && !svg.contains("NaN"),
+            "{}",
+            &svg[..200]
+        );
+    }
+
+    #[test]
+    fn a_fit_figure_with_overflowing_values_finishes() {
+        let (scene, measured) = paper();
+        let fits = crate::study::fit::fit_all(
+            &scene,
+            &measured,
+            (None, None),
+            &[crate::study::fit::Free::Mu],
+            &crate::study::Quiet,
+        )
+        .unwrap();
+        // A fitted v0 of 1e308 (the model overflows) and inf in the data.
+        let mut wild = fits.clone();
+        wild.model_fit.v0 = 1e308;
+        let mut m = measured.clone();
+        m.v_cm[3] = f64::INFINITY;
+        m.v_t[4] = f64::NAN;
+        let svg =
+            within_30s(move || fit_figure(&scene, &m, &wild).map_err(|e| e.to_string())).unwrap();
+        assert!(svg.starts_with("<svg"));
+        // Huge but finite data give a huge but finite axis.
+        let mut big = measured.clone();
+        big.v_cm[3] = 1e308;
+        big.v_t[3] = -1e308;
+        let svg =
+            within_30s(move || fit_figure(&scene, &big, &fits).map_err(|e| e.to_string())).unwrap();
+        assert!(svg.starts_with("<svg"));
+    }
 }

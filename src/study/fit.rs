@@ -10,12 +10,44 @@ use crate::physics::closed_form;
 use crate::physics::derived::{Derived, Regime};
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
+use crate::physics::story::Verdict;
+use crate::study::Progress;
+
+/// Most frames the model fit uses. A longer series is thinned to every k-th frame
+/// (the output says so): each model evaluation walks every point used, and a fit
+/// takes a few hundred evaluations, so 1 000 000 frames took 10 s where 20 000 take
+/// a fifth of a second. Video analysis gives 30–1000 frames a second: a real series
+/// stays far below the cap.
+pub const MAX_MODEL_POINTS: usize = 20_000;
 
 /// Why a fit cannot be made.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum FitError {
     #[error("{0}")]
     Data(String),
+    /// The caller's [`Progress`] asked to stop.
+    #[error("cancelled")]
+    Cancelled,
+}
+
+/// Counts model evaluations for [`Progress`] and stops when it asks.
+struct Evals<'a> {
+    progress: &'a dyn Progress,
+    done: std::cell::Cell<u64>,
+}
+
+impl Evals<'_> {
+    /// Before each model evaluation.
+    fn next(&self) -> Result<(), FitError> {
+        let done = self.done.get() + 1;
+        self.done.set(done);
+        self.progress.tick(done, 0);
+        if self.progress.cancelled() {
+            Err(FitError::Cancelled)
+        } else {
+            Ok(())
+        }
+    }
 }
 
 /// A straight line `y = a + b t` by least squares, with standard errors.
@@ -196,6 +228,141 @@ pub struct ModelFit {
     pub rest_band: f64,
     /// The model's rolling speed after the impact, m/s (positive back toward).
     pub v_roll: f64,
+    /// The predicted regime with its margin against the rest band, in words (as the
+    /// app and `simulate` say it): "recollide (v' = +0.028 m/s, within …)".
+    pub verdict: String,
+    /// True when the predicted v' lies inside the rest band.
+    pub indistinguishable_from_rest: bool,
+    /// True when what was observed agrees with the prediction (the same regime, or
+    /// rest where the prediction cannot be told from rest).
+    pub agrees: bool,
+    /// Free values the data cannot pin down, and why (their `_se` is null).
+    pub not_identified: Vec<NotIdentified>,
+    /// Set when the series had more than [`MAX_MODEL_POINTS`] frames: the fit used
+    /// every this-many-th frame.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub every: Option<usize>,
+}
+
+/// A free value without an uncertainty, and why.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct NotIdentified {
+    pub parameter: &'static str,
+    pub reason: String,
+}
+
+/// A fitted value's bounds: restitution lies in [0, 1], μ_k above 0.
+fn bounds(f: Free) -> (f64, f64) {
+    match f {
+        Free::Mu => (1e-6, f64::INFINITY),
+        Free::V0 => (f64::NEG_INFINITY, f64::INFINITY),
+        Free::Restitution => (0.0, 1.0),
+    }
+}
+
+/// `p` moved into the bounds of each free value.
+fn clamped(free: &[Free], p: &[f64]) -> Vec<f64> {
+    free.iter()
+        .zip(p)
+        .map(|(f, v)| {
+            let (lo, hi) = bounds(*f);
+            v.clamp(lo, hi)
+        })
+        .collect()
+}
+
+/// Standard errors from the normal matrix `jtj` (residual variance `s2`) of the free
+/// values `p`: a value on its bound, one the data do not depend on, and values along a
+/// direction the data cannot see (an eigenvector of the scaled matrix with a
+/// negligible eigenvalue) get no ± but a reason; the rest from the inverse of the
+/// matrix without them (the others held at their fitted values).
+fn uncertainties(
+    jtj: &[Vec<f64>],
+    s2: f64,
+    free: &[Free],
+    p: &[f64],
+) -> (Vec<Option<f64>>, Vec<NotIdentified>) {
+    let n = free.len();
+    let mut out = vec![None; n];
+    let mut why = Vec::new();
+    let mut active = Vec::new();
+    for i in 0..n {
+        let (lo, hi) = bounds(free[i]);
+        if p[i] <= lo || p[i] >= hi {
+            why.push(NotIdentified {
+                parameter: free[i].name(),
+                reason: format!(
+                    "at its bound {} = {}: the best fit lies on the edge of the allowed range, so it has no ± (fix it and fit the others)",
+                    free[i].name(),
+                    p[i]
+                ),
+            });
+        } else if !(jtj[i][i] > 0.0 && jtj[i][i].is_finite()) {
+            why.push(NotIdentified {
+                parameter: free[i].name(),
+                reason: "the fitted points do not depend on it".into(),
+            });
+        } else {
+            active.push(i);
+        }
+    }
+    // Scaled to unit diagonal, the matrix's small eigenvalues are directions the data
+    // cannot see; a value with a large share in one is not identifiable.
+    let m = active.len();
+    let d: Vec<f64> = active.iter().map(|&i| jtj[i][i].sqrt()).collect();
+    let scaled = nalgebra::DMatrix::from_fn(m, m, |a, b| jtj[active[a]][active[b]] / (d[a] * d[b]));
+    let mut unseen = vec![false; m];
+    if m > 0 {
+        let eig = scaled.symmetric_eigen();
+        for (k, &lambda) in eig.eigenvalues.iter().enumerate() {
+            if lambda > 1e-9 {
+                continue;
+            }
+            let v = eig.eigenvectors.column(k);
+            let involved: Vec<usize> = (0..m).filter(|&a| v[a].abs() > 0.2).collect();
+            for &a in &involved {
+                if unseen[a] {
+                    continue;
+                }
+                unseen[a] = true;
+                let others: Vec<&str> = involved
+                    .iter()
+                    .filter(|&&b| b != a)
+                    .map(|&b| free[active[b]].name())
+                    .collect();
+                why.push(NotIdentified {
+                    parameter: free[active[a]].name(),
+                    reason: if others.is_empty() {
+                        "not identifiable from these data".into()
+                    } else {
+                        format!(
+                            "not identifiable from these data: correlated with {}",
+                            others.join(", ")
+                        )
+                    },
+                });
+            }
+        }
+    }
+    let kept: Vec<usize> = (0..m).filter(|&a| !unseen[a]).collect();
+    let sub: Vec<Vec<f64>> = kept
+        .iter()
+        .map(|&a| kept.iter().map(|&b| jtj[active[a]][active[b]]).collect())
+        .collect();
+    if let Some(cov) = inverse(&sub) {
+        for (x, &a) in kept.iter().enumerate() {
+            let se = (s2 * cov[x][x]).sqrt();
+            if se.is_finite() {
+                out[active[a]] = Some(se);
+            } else {
+                why.push(NotIdentified {
+                    parameter: free[active[a]].name(),
+                    reason: "its uncertainty cannot be computed from these data".into(),
+                });
+            }
+        }
+    }
+    (out, why)
 }
 
 /// Scene with the fit parameters `p` applied.
@@ -362,24 +529,59 @@ fn inverse(a: &[Vec<f64>]) -> Option<Vec<Vec<f64>>> {
     )
 }
 
+/// Every `k`-th frame of `m`, with `k` the smallest that leaves at most
+/// [`MAX_MODEL_POINTS`] frames; `None` if the series is short enough already.
+pub fn thinned(m: &Measured) -> Option<(Measured, usize)> {
+    let n = m.t.len();
+    if n <= MAX_MODEL_POINTS {
+        return None;
+    }
+    let k = n.div_ceil(MAX_MODEL_POINTS);
+    let pick = |v: &[f64]| -> Vec<f64> { v.iter().step_by(k).copied().collect() };
+    let pick_opt = |v: &Option<Vec<f64>>| v.as_deref().map(pick);
+    Some((
+        Measured {
+            t: pick(&m.t),
+            v_cm: pick(&m.v_cm),
+            v_t: pick(&m.v_t),
+            v_cm_sigma: pick_opt(&m.v_cm_sigma),
+            v_t_sigma: pick_opt(&m.v_t_sigma),
+            x: pick_opt(&m.x),
+            angle: pick_opt(&m.angle),
+        },
+        k,
+    ))
+}
+
 /// Least squares of the exact model's v_cm and v_t of the left ball to all measured
 /// points (Levenberg–Marquardt, numerical derivatives), free `free`. Points with an
 /// uncertainty (`v_cm_sigma`, `v_t_sigma`) count by its inverse square; a v_t that
-/// was not measured (NaN) is left out.
-pub fn model_fit(scene: &Scene, m: &Measured, free: &[Free]) -> Result<ModelFit, FitError> {
-    model_fit_of(scene, m, free, Target::Velocity)
+/// was not measured (NaN) is left out. A series longer than [`MAX_MODEL_POINTS`] is
+/// [`thinned`] first. Stops when `progress` says so.
+pub fn model_fit(
+    scene: &Scene,
+    m: &Measured,
+    free: &[Free],
+    progress: &dyn Progress,
+) -> Result<ModelFit, FitError> {
+    model_fit_of(scene, m, free, Target::Velocity, progress)
 }
 
 /// Least squares of the exact model's positions to a tracked series (`m.x`, and
 /// `m.angle` when the rim mark was tracked): no differentiation, so its uncertainty
 /// comes from independent residuals. `rms` is then in metres (x and r θ).
-pub fn position_fit(scene: &Scene, m: &Measured, free: &[Free]) -> Result<ModelFit, FitError> {
+pub fn position_fit(
+    scene: &Scene,
+    m: &Measured,
+    free: &[Free],
+    progress: &dyn Progress,
+) -> Result<ModelFit, FitError> {
     if m.x.is_none() {
         return Err(FitError::Data(
             "the data hold no positions (a velocity file): no position fit".into(),
         ));
     }
-    model_fit_of(scene, m, free, Target::Position)
+    model_fit_of(scene, m, free, Target::Position, progress)
 }
 
 fn model_fit_of(
@@ -387,7 +589,17 @@ fn model_fit_of(
     m: &Measured,
     free: &[Free],
     target: Target,
+    progress: &dyn Progress,
 ) -> Result<ModelFit, FitError> {
+    let thin = thinned(m);
+    let (m, every) = match &thin {
+        Some((t, k)) => (t, Some(*k)),
+        None => (m, None),
+    };
+    let evals = Evals {
+        progress,
+        done: std::cell::Cell::new(0),
+    };
     let start: Vec<f64> = free
         .iter()
         .map(|f| match f {
@@ -400,13 +612,13 @@ fn model_fit_of(
     // where impacts move past data points, and local steps get caught there.
     let mut p = start;
     if let Some(i) = free.iter().position(|f| *f == Free::Mu) {
-        p[i] = scan_mu(scene, m, free, &p, i, target);
+        p[i] = scan_mu(scene, m, free, &p, i, target, &evals)?;
     }
     // Then every free value together from there, on the frames away from the model's
     // impacts (chosen again once the fit has moved them).
     let mut idx = fit_points(m, &with(scene, free, &p), target);
     for _ in 0..3 {
-        p = least_squares(scene, m, free, &idx, p, target)?;
+        p = least_squares(scene, m, free, &idx, p, target, &evals)?;
         let next = fit_points(m, &with(scene, free, &p), target);
         if next == idx {
             break;
@@ -419,20 +631,20 @@ fn model_fit_of(
     let cost: f64 = r.iter().map(|x| x * x).sum();
     let s2 = cost / r.len().saturating_sub(n + nuisance(m, target)).max(1) as f64;
     let j = jacobian(scene, m, free, &idx, &p, &r, target);
-    let cov = inverse(&normal_matrix(&j)).unwrap_or_else(|| vec![vec![f64::NAN; n]; n]);
-    let se = |f: Free| {
-        free.iter()
-            .position(|x| *x == f)
-            .map(|i| (s2 * cov[i][i]).sqrt())
-            .filter(|x| x.is_finite())
-    };
+    let (ses, not_identified) = uncertainties(&normal_matrix(&j), s2, free, &p);
+    let se = |f: Free| free.iter().position(|x| *x == f).and_then(|i| ses[i]);
     let rest_band = rest_band(m);
     let v_roll = closed_form::v_roll(fitted.k(), fitted.restitution, fitted.left.v0);
-    let regime_predicted = if v_roll.abs() <= rest_band {
-        Regime::Rest
-    } else {
-        Derived::of(&fitted).regime
-    };
+    let derived = Derived::of(&fitted);
+    let sol = engine::solve(&fitted, &Span::default());
+    let verdict = Verdict::of(&sol, &derived, Some(rest_band));
+    let regime_observed = observed_after(
+        m,
+        rest_band,
+        sliding_window(m)
+            .map(|w| w.1)
+            .or_else(|| rolling_time(&fitted)),
+    );
     Ok(ModelFit {
         mu: fitted.mu,
         mu_se: se(Free::Mu).unwrap_or(f64::NAN),
@@ -446,16 +658,15 @@ fn model_fit_of(
             (raw.iter().map(|x| x * x).sum::<f64>() / raw.len().max(1) as f64).sqrt()
         },
         points: idx.len(),
-        regime_predicted,
-        regime_observed: observed_after(
-            m,
-            rest_band,
-            sliding_window(m)
-                .map(|w| w.1)
-                .or_else(|| rolling_time(&fitted)),
-        ),
+        regime_predicted: derived.regime,
+        regime_observed,
         rest_band,
         v_roll,
+        verdict: verdict.text("±"),
+        indistinguishable_from_rest: verdict.indistinguishable_from_rest(),
+        agrees: verdict.agrees_with(regime_observed),
+        not_identified,
+        every,
     })
 }
 
@@ -468,17 +679,30 @@ fn mean_cost(scene: &Scene, m: &Measured, target: Target) -> f64 {
 
 /// The μ that minimises [`mean_cost`]: a log-spaced scan of 0.01 … 1, then golden
 /// section between the neighbours of the best scan point.
-fn scan_mu(scene: &Scene, m: &Measured, free: &[Free], p: &[f64], i: usize, target: Target) -> f64 {
+fn scan_mu(
+    scene: &Scene,
+    m: &Measured,
+    free: &[Free],
+    p: &[f64],
+    i: usize,
+    target: Target,
+    evals: &Evals,
+) -> Result<f64, FitError> {
     let cost = |mu: f64| {
+        evals.next()?;
         let mut q = p.to_vec();
         q[i] = mu;
-        mean_cost(&with(scene, free, &q), m, target)
+        Ok(mean_cost(&with(scene, free, &q), m, target))
     };
     let grid: Vec<f64> = (0..=80)
         .map(|k| 0.01 * 100f64.powf(k as f64 / 80.0))
         .collect();
+    let costs = grid
+        .iter()
+        .map(|&mu| cost(mu))
+        .collect::<Result<Vec<f64>, FitError>>()?;
     let best = (0..grid.len())
-        .min_by(|&a, &b| cost(grid[a]).total_cmp(&cost(grid[b])))
+        .min_by(|&a, &b| costs[a].total_cmp(&costs[b]))
         .unwrap_or(0);
     let (mut a, mut b) = (
         grid[best.saturating_sub(1)],
@@ -487,23 +711,23 @@ fn scan_mu(scene: &Scene, m: &Measured, free: &[Free], p: &[f64], i: usize, targ
     let phi = 0.5 * (5f64.sqrt() - 1.0);
     let mut c = b - phi * (b - a);
     let mut d = a + phi * (b - a);
-    let (mut fc, mut fd) = (cost(c), cost(d));
+    let (mut fc, mut fd) = (cost(c)?, cost(d)?);
     while b - a > 1e-7 * b {
         if fc < fd {
             b = d;
             d = c;
             fd = fc;
             c = b - phi * (b - a);
-            fc = cost(c);
+            fc = cost(c)?;
         } else {
             a = c;
             c = d;
             fc = fd;
             d = a + phi * (b - a);
-            fd = cost(d);
+            fd = cost(d)?;
         }
     }
-    0.5 * (a + b)
+    Ok(0.5 * (a + b))
 }
 
 fn normal_matrix(j: &[Vec<f64>]) -> Vec<Vec<f64>> {
@@ -553,6 +777,7 @@ fn least_squares(
     idx: &[usize],
     mut p: Vec<f64>,
     target: Target,
+    evals: &Evals,
 ) -> Result<Vec<f64>, FitError> {
     if idx.len() < free.len() + 2 {
         return Err(FitError::Data(format!(
@@ -570,6 +795,7 @@ fn least_squares(
     let mut lambda = 1e-3;
     let mut c = cost(&p);
     for _ in 0..100 {
+        evals.next()?;
         let r0 = residuals(&with(scene, free, &p), m, idx, target);
         let j = jacobian(scene, m, free, idx, &p, &r0, target);
         let jtj = normal_matrix(&j);
@@ -587,7 +813,12 @@ fn least_squares(
                 lambda *= 10.0;
                 continue;
             };
-            let q: Vec<f64> = p.iter().zip(&step).map(|(a, b)| a + b).collect();
+            // Steps stay inside the bounds (e ≤ 1): outside, the model would not change.
+            let q: Vec<f64> = clamped(
+                free,
+                &p.iter().zip(&step).map(|(a, b)| a + b).collect::<Vec<_>>(),
+            );
+            evals.next()?;
             let cq = cost(&q);
             if cq < c {
                 improved = (c - cq) > 1e-12 * c;
@@ -702,14 +933,16 @@ pub struct Fits {
     pub model_fit: ModelFit,
 }
 
-/// Line fit over `window` and model fit with `free`, on `scene` and `m`.
+/// Line fit over `window` and model fit with `free`, on `scene` and `m`; stops when
+/// `progress` says so (`FitError::Cancelled`).
 pub fn fit_all(
     scene: &Scene,
     m: &Measured,
     window: (Option<f64>, Option<f64>),
     free: &[Free],
+    progress: &dyn Progress,
 ) -> Result<Fits, FitError> {
-    let model_fit = model_fit(scene, m, free)?;
+    let model_fit = model_fit(scene, m, free, progress)?;
     // Without v_t the data cannot say when sliding ends: the fitted model does.
     let window = match window {
         (from, None) if !m.has_v_t() => {
@@ -730,8 +963,80 @@ pub fn fit_all(
         }
         w => w,
     };
-    Ok(Fits {
+    let fits = Fits {
         line_fit: line_fit(m, scene, window)?,
         model_fit,
-    })
+    };
+    check_finite(&fits, m.has_v_t())?;
+    Ok(fits)
+}
+
+/// Every number a fit reports is finite, or the fit is an error: an overflowing
+/// scene (v0 = 1e308) must not print "RMS residual inf" or "± NaN". Without a
+/// measured v_t (a track without a rim mark) its line fit is not a number by design.
+fn check_finite(f: &Fits, has_v_t: bool) -> Result<(), FitError> {
+    let (l, m) = (&f.line_fit, &f.model_fit);
+    let spin = |v: f64| if has_v_t { v } else { 0.0 };
+    let named = [
+        ("model fit v0 error", m.v0_se.unwrap_or(0.0)),
+        ("model fit e error", m.restitution_se.unwrap_or(0.0)),
+        ("line fit a_cm", l.a_cm),
+        ("line fit a_t", spin(l.a_t)),
+        ("line fit μ_k,cm", l.mu_cm),
+        ("line fit μ_k,t", spin(l.mu_t)),
+        ("model fit μ_k", m.mu),
+        ("model fit μ_k error", m.mu_se),
+        ("model fit v0", m.v0),
+        ("model fit e", m.restitution),
+        ("model fit RMS residual", m.rms),
+        ("model fit rolling speed v'", m.v_roll),
+    ];
+    let bad: Vec<&str> = named
+        .iter()
+        .filter(|(_, v)| !v.is_finite())
+        .map(|(n, _)| *n)
+        .collect();
+    if bad.is_empty() {
+        return Ok(());
+    }
+    Err(FitError::Data(format!(
+        "the fit gives no finite {} for this scene and data (an overflow: check that v0, masses and times are of lab size)",
+        bad.join(", ")
+    )))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_value_on_its_bound_or_along_an_unseen_direction_gets_a_reason_not_a_nan() {
+        let free = [Free::Mu, Free::V0, Free::Restitution];
+        // μ and v0 enter the data only as μ + v0 (equal columns), e is fine.
+        let jtj = vec![
+            vec![4.0, 4.0, 1.0],
+            vec![4.0, 4.0, 1.0],
+            vec![1.0, 1.0, 9.0],
+        ];
+        let (se, why) = uncertainties(&jtj, 1.0, &free, &[0.2, 0.5, 0.8]);
+        assert_eq!(se[0], None);
+        assert_eq!(se[1], None);
+        // e alone: 1/sqrt(9).
+        assert!((se[2].unwrap() - 1.0 / 3.0).abs() < 1e-12, "{se:?}");
+        assert_eq!(why.len(), 2, "{why:?}");
+        assert!(why[0].reason.contains("correlated with v0"), "{why:?}");
+        assert!(why[1].reason.contains("correlated with mu"), "{why:?}");
+        // e at its upper bound: μ and v0 from the matrix without it.
+        let jtj = vec![
+            vec![4.0, 0.0, 1.0],
+            vec![0.0, 16.0, 1.0],
+            vec![1.0, 1.0, 9.0],
+        ];
+        let (se, why) = uncertainties(&jtj, 1.0, &free, &[0.2, 0.5, 1.0]);
+        assert!((se[0].unwrap() - 0.5).abs() < 1e-12);
+        assert!((se[1].unwrap() - 0.25).abs() < 1e-12);
+        assert_eq!(se[2], None);
+        assert_eq!(why[0].parameter, "restitution");
+        assert!(why[0].reason.contains("bound"), "{why:?}");
+    }
 }

@@ -30,7 +30,14 @@ impl Axis {
         if self.n <= 1 {
             self.lo
         } else {
-            self.lo + (self.hi - self.lo) * i as f64 / (self.n - 1) as f64
+            let v = self.lo + (self.hi - self.lo) * i as f64 / (self.n - 1) as f64;
+            if v.is_finite() {
+                v
+            } else {
+                // (hi − lo)·i overflowed near 1.8e308; the fraction first cannot. Only
+                // here, so every map that worked keeps its exact values.
+                self.lo + (self.hi - self.lo) * (i as f64 / (self.n - 1) as f64)
+            }
         }
     }
 }
@@ -57,6 +64,9 @@ pub enum SweepError {
     Invalid(String),
     #[error("interrupted: nothing was written")]
     Interrupted,
+    /// The consumer of streamed rows failed (e.g. the output file could not be written).
+    #[error("{0}")]
+    Output(String),
 }
 
 /// The scene at grid point (i, j).
@@ -120,6 +130,68 @@ fn describe(a: &Axis, i: usize) -> String {
     format!("{} = {}", a.key.name(), a.value(i))
 }
 
+/// Points solved per batch when streaming: enough to keep every core busy, few
+/// enough that a batch (about 1.5 MB of points) bounds the memory of any grid.
+pub const BATCH: usize = 16_384;
+
+/// Solves every grid point, in parallel within batches of [`BATCH`] points, and hands
+/// the batches to `sink` in grid order (y outer, x inner), so memory stays bounded
+/// whatever the grid. `stop` ends the work early with [`SweepError::Interrupted`];
+/// `tick` is called once per point (for a progress bar).
+pub fn run_streamed(
+    base: &SceneSpec,
+    x: &Axis,
+    y: Option<&Axis>,
+    stop: &AtomicBool,
+    tick: &(dyn Fn() + Sync),
+    sink: &mut dyn FnMut(&[Point]) -> Result<(), SweepError>,
+) -> Result<(), SweepError> {
+    check(base, x, y)?;
+    let nx = x.n.max(1);
+    let ny = y.map_or(1, |a| a.n.max(1));
+    let total = nx * ny;
+    let mut start = 0;
+    while start < total {
+        let end = (start + BATCH).min(total);
+        let batch: Vec<Option<Point>> = (start..end)
+            .into_par_iter()
+            .map(|idx| {
+                if stop.load(Ordering::Relaxed) {
+                    return None;
+                }
+                let (i, j) = (idx % nx, idx / nx);
+                let spec = spec_at(base, x, y, i, j);
+                let (_, mut p) = point(&spec).ok()?;
+                p.x = x.value(i);
+                p.y = y.map(|a| a.value(j));
+                tick();
+                Some(p)
+            })
+            .collect();
+        if stop.load(Ordering::Relaxed) {
+            return Err(SweepError::Interrupted);
+        }
+        let points: Vec<Point> = batch
+            .into_iter()
+            .enumerate()
+            .map(|(k, p)| {
+                p.ok_or_else(|| {
+                    SweepError::Invalid(format!(
+                        "grid point {} is not a valid scene",
+                        describe(x, (start + k) % nx)
+                    ))
+                })
+            })
+            .collect::<Result<_, _>>()?;
+        sink(&points)?;
+        start = end;
+    }
+    if stop.load(Ordering::Relaxed) {
+        return Err(SweepError::Interrupted);
+    }
+    Ok(())
+}
+
 /// Solves every grid point in parallel; rows come in grid order (y outer, x inner).
 /// `stop` ends the work early (the result is then an error, never a partial map);
 /// `tick` is called once per point (for a progress bar).
@@ -130,39 +202,12 @@ pub fn run(
     stop: &AtomicBool,
     tick: &(dyn Fn() + Sync),
 ) -> Result<Vec<Point>, SweepError> {
-    check(base, x, y)?;
-    let nx = x.n.max(1);
-    let ny = y.map_or(1, |a| a.n.max(1));
-    let points: Vec<Option<Point>> = (0..nx * ny)
-        .into_par_iter()
-        .map(|idx| {
-            if stop.load(Ordering::Relaxed) {
-                return None;
-            }
-            let (i, j) = (idx % nx, idx / nx);
-            let spec = spec_at(base, x, y, i, j);
-            let (_, mut p) = point(&spec).ok()?;
-            p.x = x.value(i);
-            p.y = y.map(|a| a.value(j));
-            tick();
-            Some(p)
-        })
-        .collect();
-    if stop.load(Ordering::Relaxed) {
-        return Err(SweepError::Interrupted);
-    }
-    points
-        .into_iter()
-        .enumerate()
-        .map(|(idx, p)| {
-            p.ok_or_else(|| {
-                SweepError::Invalid(format!(
-                    "grid point {} is not a valid scene",
-                    describe(x, idx % nx)
-                ))
-            })
-        })
-        .collect()
+    let mut all = Vec::new();
+    run_streamed(base, x, y, stop, tick, &mut |batch| {
+        all.extend_from_slice(batch);
+        Ok(())
+    })?;
+    Ok(all)
 }
 
 /// Parses `name=lo..hi` with units (`width=0..5.4cm`: a bare bound takes the other's
@@ -212,6 +257,11 @@ pub fn parse_axis(text: &str, n: usize) -> Result<Axis, String> {
     if hi < lo {
         return Err(format!("'{range}' runs backwards, allowed LO ≤ HI"));
     }
+    if !(hi - lo).is_finite() {
+        return Err(format!(
+            "'{range}' is too wide to step through, allowed HI − LO below 1.8e308"
+        ));
+    }
     if n == 0 || n > 10_000 {
         return Err(format!("{n} points on an axis, allowed 1 ..= 10000"));
     }
@@ -234,6 +284,10 @@ mod tests {
         assert!(parse_axis("colour=0..1", 3).is_err());
         assert!(parse_axis("width=5..1cm", 3).is_err());
         assert!(parse_axis("width", 3).is_err());
+        // Huge but valid bounds step without overflow.
+        let a = parse_axis("mass=1e-300..1e308", 5).unwrap();
+        assert!((0..5).all(|i| a.value(i).is_finite()));
+        assert_eq!(a.value(4), 1e308);
         let e = parse_axis("mu=0..abc", 3).unwrap_err();
         assert!(e.contains("'abc' is not a number"), "{e}");
     }

@@ -706,10 +706,15 @@ pub struct TrackFits {
 
 /// Fits the model to the derived velocities and directly to the positions of `m`
 /// (which must carry `x`), freeing `free`.
-pub fn fit_tracks(scene: &Scene, m: &Measured, free: &[Free]) -> Result<TrackFits, FitError> {
+pub fn fit_tracks(
+    scene: &Scene,
+    m: &Measured,
+    free: &[Free],
+    progress: &dyn crate::study::Progress,
+) -> Result<TrackFits, FitError> {
     Ok(TrackFits {
-        velocity: fit::model_fit(scene, m, free)?,
-        position: fit::position_fit(scene, m, free)?,
+        velocity: fit::model_fit(scene, m, free, progress)?,
+        position: fit::position_fit(scene, m, free, progress)?,
         uses_spin: m.has_v_t(),
     })
 }

@@ -113,6 +113,14 @@ pub enum Action {
     Help,
     SwitchBall,
     TogglePositions,
+    /// The energy chart instead of the velocities.
+    ToggleEnergy,
+    /// The span key: auto, ×2, ×½ (see [`crate::lab::SpanEnd`]).
+    CycleSpan,
+    NextEvent,
+    PrevEvent,
+    /// Pin the current run for an A/B comparison, or unpin it.
+    TogglePin,
     ToggleMethods,
     ToggleMap,
     ToggleFit,
@@ -180,6 +188,8 @@ pub struct App {
     pub mode: Mode,
     pub chart_ball: ChartBall,
     pub show_positions: bool,
+    /// The energy chart (instead of velocities or positions).
+    pub show_energy: bool,
     pub mouse: bool,
     pub status: Status,
     pub quit: bool,
@@ -207,6 +217,7 @@ impl App {
             mode: Mode::Normal,
             chart_ball: ChartBall::Left,
             show_positions: false,
+            show_energy: false,
             mouse: true,
             status: Status::None,
             quit: false,
@@ -267,6 +278,51 @@ impl App {
     /// How far one animation frame moves the simulated time.
     pub fn frame_step(&self) -> f64 {
         self.speed_factor() / FPS
+    }
+
+    /// The time one `.` (`later`) or `,` moves to: the next or previous measured frame
+    /// when the preset carries measured data and there is one, else one animation frame.
+    pub fn step_target(&self, later: bool) -> f64 {
+        let (t0, t1) = (self.lab.solution.t_start, self.lab.solution.t_end);
+        // Times within a nanosecond of the cursor are where it is, not a step away.
+        let eps = 1e-9;
+        let frame = self.lab.measured().and_then(|m| {
+            if later {
+                m.t.iter().copied().find(|&x| x > self.t + eps)
+            } else {
+                m.t.iter().rev().copied().find(|&x| x < self.t - eps)
+            }
+        });
+        let t = frame.unwrap_or(if later {
+            self.t + self.frame_step()
+        } else {
+            self.t - self.frame_step()
+        });
+        t.clamp(t0, t1)
+    }
+
+    /// The next (or previous) marked event's time in the span: impact, rolling, gliding,
+    /// slipping, rest, T∞ (what the charts draw as lines).
+    pub fn event_target(&self, later: bool) -> Option<f64> {
+        let eps = 1e-9;
+        let mut times = self
+            .lab
+            .solution
+            .visible_events()
+            .filter(|e| e.kind.label().is_some())
+            .map(|e| e.t);
+        if later {
+            times.find(|&x| x > self.t + eps)
+        } else {
+            times.filter(|&x| x < self.t - eps).last()
+        }
+    }
+
+    /// Moves the cursor to `t` (a click on the chart), paused.
+    pub fn seek(&mut self, t: f64) {
+        let sol = &self.lab.solution;
+        self.playing = false;
+        self.t = t.clamp(sol.t_start, sol.t_end);
     }
 
     /// Advances playback by `wall` real seconds; stops at the end.
@@ -330,13 +386,62 @@ impl App {
             }
             Action::Faster => self.speed = (self.speed + 1).min(SPEEDS.len() - 1),
             Action::Slower => self.speed = self.speed.saturating_sub(1),
-            Action::StepForward => {
+            Action::StepForward | Action::StepBack => {
                 self.playing = false;
-                self.t = (self.t + self.frame_step()).min(t1);
+                self.t = self.step_target(action == Action::StepForward);
             }
-            Action::StepBack => {
+            Action::NextEvent | Action::PrevEvent => {
                 self.playing = false;
-                self.t = (self.t - self.frame_step()).max(t0);
+                match self.event_target(action == Action::NextEvent) {
+                    Some(t) => {
+                        self.t = t;
+                        let e = self
+                            .lab
+                            .solution
+                            .visible_events()
+                            .find(|e| e.t == t && e.kind.label().is_some());
+                        let name = e.and_then(|e| e.kind.label()).unwrap_or("event");
+                        self.status = Status::Info(format!("{name} at t = {t:.4} s"));
+                    }
+                    None => {
+                        self.status = Status::Info(
+                            if action == Action::NextEvent {
+                                "no later event in the span"
+                            } else {
+                                "no earlier event in the span"
+                            }
+                            .into(),
+                        )
+                    }
+                }
+            }
+            Action::CycleSpan => {
+                let next = self.lab.span_end.next();
+                match self.lab.set_span_end(next) {
+                    Ok(()) => {
+                        let sol = &self.lab.solution;
+                        self.t = self.t.clamp(sol.t_start, sol.t_end);
+                        self.status = Status::Info(format!(
+                            "span {}: {:.3} … {:.3} s",
+                            next.describe(),
+                            sol.t_start,
+                            sol.t_end
+                        ));
+                    }
+                    Err(e) => self.status = Status::Error(format!("span not changed: {e}")),
+                }
+            }
+            Action::ToggleEnergy => {
+                self.show_energy = !self.show_energy;
+                self.show_positions = false;
+            }
+            Action::TogglePin => {
+                let pinned = self.lab.toggle_pin();
+                self.status = Status::Info(if pinned {
+                    "pinned this run: change a parameter to compare (P unpins)".into()
+                } else {
+                    "unpinned".into()
+                });
             }
             Action::Start => self.t = t0,
             Action::End => {
@@ -389,7 +494,10 @@ impl App {
                     ChartBall::Both => ChartBall::Left,
                 }
             }
-            Action::TogglePositions => self.show_positions = !self.show_positions,
+            Action::TogglePositions => {
+                self.show_positions = !self.show_positions;
+                self.show_energy = false;
+            }
             Action::ToggleMethods => self.toggle_view(View::Methods),
             Action::ToggleMap => self.toggle_view(View::Map),
             Action::ToggleFit => {
@@ -571,23 +679,39 @@ impl App {
             return Err("give a file name".into());
         }
         let path = self.export_dir.join(name);
-        let (text, what) = match kind {
-            Export::Csv => {
-                let sol = &self.lab.solution;
+        // What can be told at once keeps the prompt open; the writing itself (the SVG
+        // takes milliseconds) runs as a job and reports in the status line.
+        if let Some(dir) = path
+            .parent()
+            .filter(|d| !d.as_os_str().is_empty() && !d.is_dir())
+        {
+            return Err(format!(
+                "cannot write {}: no folder {}",
+                path.display(),
+                dir.display()
+            ));
+        }
+        let sol = std::sync::Arc::clone(&self.lab.solution);
+        let work: Box<ExportWork> = match kind {
+            Export::Csv => Box::new(move || {
                 let dt = export_step(sol.t_end - sol.t_start);
                 let samples = sol.sample(dt);
-                let text = crate::study::export::run_csv(sol, Some(&samples))
+                let text = crate::study::export::run_csv(&sol, Some(&samples))
                     .map_err(|e| e.to_string())?;
-                (
-                    text,
-                    format!(
-                        "{} samples every {}",
-                        samples.len(),
-                        show(dt, Dimension::Time)
-                    ),
-                )
-            }
+                let what = format!(
+                    "{} samples every {}",
+                    samples.len(),
+                    show(dt, Dimension::Time)
+                );
+                Ok((text.into_bytes(), what))
+            }),
             Export::Svg => {
+                if self.show_energy {
+                    return Err(
+                        "the energy chart has no SVG export yet: press e for the velocities, x for positions"
+                            .into(),
+                    );
+                }
                 let which = if self.show_positions {
                     crate::study::figures::RunChart::Positions
                 } else {
@@ -599,15 +723,45 @@ impl App {
                 let measured = self
                     .lab
                     .measured()
-                    .filter(|_| self.chart_ball != ChartBall::Right && !self.show_positions);
-                let text = crate::study::figures::run_chart(&self.lab.solution, which, measured)
-                    .map_err(|e| format!("cannot draw the chart: {e}"))?;
-                (text, "the chart".to_string())
+                    .filter(|_| self.chart_ball != ChartBall::Right && !self.show_positions)
+                    .cloned();
+                Box::new(move || {
+                    let text = crate::study::figures::run_chart(&sol, which, measured.as_ref())
+                        .map_err(|e| format!("cannot draw the chart: {e}"))?;
+                    Ok((text.into_bytes(), "the chart".to_string()))
+                })
             }
         };
-        crate::cli::write_atomically(&path, &text).map_err(|e| e.to_string())?;
-        self.status = Status::Info(format!("wrote {} ({what})", path.display()));
+        self.status = Status::Info(format!("writing {}…", path.display()));
+        self.lab.start_export(move || {
+            let (bytes, what) = work()?;
+            crate::output::write_atomically(&path, &bytes).map_err(|e| e.to_string())?;
+            Ok(format!("wrote {} ({what})", path.display()))
+        });
         Ok(())
+    }
+
+    /// Takes in finished analyses and a finished export (its message goes to the
+    /// status line); true if anything arrived (the screen needs a redraw).
+    pub fn poll(&mut self) -> bool {
+        let lab = self.lab.poll();
+        let export = self.take_export();
+        lab || export
+    }
+
+    /// Waits for every running analysis and export (headless output is deterministic).
+    pub fn wait(&mut self) {
+        self.lab.wait();
+        self.take_export();
+    }
+
+    fn take_export(&mut self) -> bool {
+        match self.lab.take_export() {
+            Some(Ok(message)) => self.status = Status::Info(message),
+            Some(Err(e)) => self.status = Status::Error(format!("not written: {e}")),
+            None => return false,
+        }
+        true
     }
 
     fn apply_text(&mut self, mut text: String, action: Action, target: TextTarget) {
@@ -690,6 +844,9 @@ impl App {
         )
     }
 }
+
+/// The body of an export job: the file's bytes and what they are, or why not.
+type ExportWork = dyn FnOnce() -> Result<(Vec<u8>, String), String> + Send;
 
 #[derive(Clone, Copy)]
 enum TextTarget {

@@ -81,13 +81,31 @@ pub const TABLE: &[Binding] = &[
     Binding {
         keys: &["."],
         action: Action::StepForward,
-        help: "step one frame forward",
+        help: "step one frame forward (the next measured frame when data are shown)",
         hint: None,
     },
     Binding {
         keys: &[","],
         action: Action::StepBack,
-        help: "step one frame back",
+        help: "step one frame back (the previous measured frame when data are shown)",
+        hint: None,
+    },
+    Binding {
+        keys: &[">"],
+        action: Action::NextEvent,
+        help: "jump to the next event (impact, rolling, rest, T-inf); click the chart to seek",
+        hint: None,
+    },
+    Binding {
+        keys: &["<"],
+        action: Action::PrevEvent,
+        help: "jump to the previous event",
+        hint: None,
+    },
+    Binding {
+        keys: &["t"],
+        action: Action::CycleSpan,
+        help: "time span: auto (a little past the last event), x2, x1/2",
         hint: None,
     },
     Binding {
@@ -118,6 +136,18 @@ pub const TABLE: &[Binding] = &[
         keys: &["x"],
         action: Action::TogglePositions,
         help: "chart: velocities or positions x(t)",
+        hint: None,
+    },
+    Binding {
+        keys: &["e"],
+        action: Action::ToggleEnergy,
+        help: "chart: energy against time (kinetic parts and what was lost to what)",
+        hint: None,
+    },
+    Binding {
+        keys: &["P"],
+        action: Action::TogglePin,
+        help: "pin this run (A/B): change parameters and compare; P again unpins",
         hint: None,
     },
     Binding {
@@ -193,15 +223,15 @@ pub const TABLE: &[Binding] = &[
         hint: None,
     },
     Binding {
-        keys: &["e"],
+        keys: &["w"],
         action: Action::Export(Export::Csv),
-        help: "export the run as CSV (the columns of simulate --format csv)",
+        help: "write the run to a CSV file (the columns of simulate --format csv)",
         hint: None,
     },
     Binding {
-        keys: &["E"],
+        keys: &["W"],
         action: Action::Export(Export::Svg),
-        help: "export the chart on screen as SVG",
+        help: "write the chart on screen to an SVG file",
         hint: None,
     },
     Binding {
@@ -373,6 +403,22 @@ pub fn hints(ascii: bool) -> Vec<(String, &'static str)> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn no_key_is_bound_twice() {
+        // e is the energy chart (issue 11a), w / W write the run / the chart.
+        let mut seen = std::collections::HashSet::new();
+        for b in TABLE {
+            for k in b.keys {
+                assert!(seen.insert(*k), "{k} is bound twice");
+            }
+        }
+        for k in [
+            "e", "w", "W", "a", "d", "t", "P", ">", "<", "x", "b", "c", "g", "f", "o",
+        ] {
+            assert!(seen.contains(k), "{k} is not bound");
+        }
+    }
 
     #[test]
     fn every_name_in_the_table_parses() {

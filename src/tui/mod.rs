@@ -1,6 +1,7 @@
 //! The interactive lab (ratatui + crossterm) and its headless twin. `app` holds the
 //! state, `keys` the one key table, `view` draws; this module only wires a real
-//! terminal to them: events in, frames out, the terminal restored on every exit.
+//! terminal to them: events in, frames out, the terminal restored on every exit
+//! (quit, error, panic, and SIGINT, SIGTERM, SIGHUP or SIGQUIT from outside).
 
 pub mod app;
 pub mod keys;
@@ -9,13 +10,14 @@ pub mod theme;
 pub mod view;
 
 use std::io::{self, Write};
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::{Duration, Instant};
 
 use ratatui::crossterm::event::{
     self, DisableMouseCapture, EnableMouseCapture, Event, KeyEvent, KeyEventKind, MouseButton,
     MouseEventKind,
 };
-use ratatui::crossterm::execute;
+use ratatui::crossterm::{cursor, execute};
 
 use app::{Action, App, FPS};
 use theme::{Glyphs, Theme};
@@ -36,28 +38,74 @@ fn set_mouse(on: bool) {
     let _ = out.flush();
 }
 
-/// Puts the terminal back as it was: mouse off, raw mode off, main screen.
+/// Whether the terminal is ours (raw, alternate screen, cursor hidden) right now.
+static ACTIVE: AtomicBool = AtomicBool::new(false);
+
+/// Puts the terminal back as it was: mouse off, raw mode off, main screen, cursor shown.
 fn restore() {
+    ACTIVE.store(false, Ordering::SeqCst);
     set_mouse(false);
     ratatui::restore();
+    let mut out = io::stdout();
+    let _ = execute!(out, cursor::Show);
+    let _ = out.flush();
+}
+
+/// Signals that end the app from outside. In raw mode the terminal sends no signals
+/// for keys (Ctrl-C is a key the app reads), so these come from `kill`, a closed
+/// terminal (SIGHUP) or a service manager.
+const ENDING_SIGNALS: [i32; 4] = [
+    signal_hook::consts::SIGINT,
+    signal_hook::consts::SIGTERM,
+    signal_hook::consts::SIGHUP,
+    signal_hook::consts::SIGQUIT,
+];
+
+/// Starts a thread that waits (blocked, no CPU) for an ending signal, then restores
+/// the terminal and exits with 128 + the signal's number, as a shell reports a
+/// process ended by it. It holds the stdout lock from the first write on, so the
+/// event loop cannot draw a frame onto the restored screen. The handlers stay for
+/// the rest of the process (signal-hook cannot give the default action back), which
+/// is fine: the app is the last thing the process does.
+fn watch_signals() -> io::Result<()> {
+    let mut signals = signal_hook::iterator::Signals::new(ENDING_SIGNALS)?;
+    std::thread::Builder::new()
+        .name("groovelab-signals".into())
+        .spawn(move || {
+            if let Some(signal) = signals.forever().next() {
+                let stdout = io::stdout();
+                let _no_more_frames = stdout.lock();
+                if ACTIVE.load(Ordering::SeqCst) {
+                    restore();
+                }
+                std::process::exit(128 + signal);
+            }
+        })?;
+    Ok(())
 }
 
 /// Runs the app on the real terminal until the user quits.
 pub fn run(mut app: App, ascii: bool) -> io::Result<()> {
     let theme = theme(ascii);
-    let mut terminal = ratatui::try_init()?;
+    // Before the terminal changes, so that no moment is left unguarded.
+    watch_signals()?;
+    ACTIVE.store(true, Ordering::SeqCst);
+    let mut terminal = match ratatui::try_init() {
+        Ok(t) => t,
+        Err(e) => {
+            restore();
+            return Err(e);
+        }
+    };
     // ratatui's hook restores raw mode and the screen; ours also turns the mouse off
-    // first. A signal (kill -INT, or Ctrl-C where the terminal still sends SIGINT)
-    // restores and exits too.
+    // first and shows the cursor.
     let ratatui_hook = std::panic::take_hook();
     std::panic::set_hook(Box::new(move |info| {
+        ACTIVE.store(false, Ordering::SeqCst);
         set_mouse(false);
         ratatui_hook(info);
+        let _ = execute!(io::stdout(), cursor::Show);
     }));
-    let _ = ctrlc::set_handler(|| {
-        restore();
-        std::process::exit(130);
-    });
     if std::env::var_os("GROOVELAB_TEST_PANIC").is_some() {
         terminal.draw(|f| view::draw(&app, f.area(), f.buffer_mut(), &theme))?;
         panic!("GROOVELAB_TEST_PANIC is set: panicking to test that the terminal is restored");
@@ -107,7 +155,18 @@ fn event_loop(
                 Event::Mouse(m) if app.mouse => {
                     let size = terminal.size()?;
                     let area = ratatui::layout::Rect::new(0, 0, size.width, size.height);
-                    if let Some(panels) = view::layout(area) {
+                    // A click or drag on the chart seeks there.
+                    let seek = match m.kind {
+                        MouseEventKind::Down(MouseButton::Left)
+                        | MouseEventKind::Drag(MouseButton::Left) => {
+                            view::chart_time_at_in(app, area, theme, m.column, m.row)
+                        }
+                        _ => None,
+                    };
+                    if let Some(t) = seek {
+                        app.seek(t);
+                        dirty = true;
+                    } else if let Some(panels) = view::layout(area) {
                         let hit = view::param_at(panels.params, app.selected, m.column, m.row);
                         let action = match (m.kind, hit) {
                             (MouseEventKind::Down(MouseButton::Left), Some(i)) => {
@@ -131,7 +190,7 @@ fn event_loop(
                 _ => {}
             }
         }
-        if app.lab.poll() || app.lab.busy() {
+        if app.poll() || app.lab.busy() {
             dirty = true;
         }
         if app.mouse != mouse {

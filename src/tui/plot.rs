@@ -7,7 +7,7 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::Style;
 
-use super::theme::Theme;
+use super::theme::{Glyphs, Theme};
 
 /// How a series is drawn.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -54,17 +54,28 @@ pub struct Plot {
 
 /// Round tick positions covering `lo..hi` with at most about `max` ticks, and the
 /// bounds widened to the outer ticks.
+///
+/// Any input gives a finite result: non-finite bounds become 0 … 1, a span too thin
+/// for its magnitude is padded, and a range whose round ticks would overflow (near
+/// ±1.8e308) or be too many keeps its own bounds as the only ticks.
 pub fn nice_ticks(lo: f64, hi: f64, max: usize) -> ((f64, f64), Vec<f64>) {
     let (lo, hi) = if !(lo.is_finite() && hi.is_finite()) {
         (0.0, 1.0)
-    } else if hi - lo <= f64::EPSILON * lo.abs().max(hi.abs()).max(1e-300) {
-        // Zero span: pad so there is something to draw.
-        let pad = if lo == 0.0 { 1.0 } else { 0.1 * lo.abs() };
+    } else {
+        (lo.min(hi), hi.max(lo))
+    };
+    // Halves never overflow where the span itself might.
+    let half_span = hi / 2.0 - lo / 2.0;
+    let mag = lo.abs().max(hi.abs());
+    let (lo, hi) = if half_span <= 1e-9 * mag || half_span < 1e-300 {
+        // Zero or too thin a span for its magnitude: pad so there is something to draw.
+        let pad = if mag < 1e-300 { 1.0 } else { 0.1 * mag };
         (lo - pad, hi + pad)
     } else {
         (lo, hi)
     };
-    let raw = (hi - lo) / max.max(1) as f64;
+    let fallback = ((lo, hi), vec![lo, hi]);
+    let raw = (hi / 2.0 - lo / 2.0) * 2.0 / max.max(1) as f64;
     let mag = 10f64.powf(raw.log10().floor());
     let step = [1.0, 2.0, 2.5, 5.0, 10.0]
         .iter()
@@ -73,14 +84,47 @@ pub fn nice_ticks(lo: f64, hi: f64, max: usize) -> ((f64, f64), Vec<f64>) {
         .unwrap_or(10.0 * mag);
     let first = (lo / step).floor();
     let last = (hi / step).ceil();
-    let ticks: Vec<f64> = (0..=((last - first) as usize))
+    let count = last - first;
+    let (a, b) = (first * step, last * step);
+    let usable = step > 0.0 && a.is_finite() && b.is_finite() && (0.0..=1000.0).contains(&count);
+    if !usable {
+        return if lo.is_finite() && hi.is_finite() {
+            fallback
+        } else {
+            ((0.0, 1.0), vec![0.0, 1.0])
+        };
+    }
+    let ticks: Vec<f64> = (0..=(count as usize))
         .map(|i| (first + i as f64) * step)
         .collect();
-    ((first * step, last * step), ticks)
+    ((a, b), ticks)
 }
 
 /// A tick label with as many decimals as the step needs.
 pub fn tick_label(v: f64, step: f64) -> String {
+    label_on_axis(v, step, v.abs())
+}
+
+/// A tick label on an axis whose largest tick magnitude is `scale`: huge or tiny
+/// values in scientific notation (1e38 s in decimals would be 39 digits), with the
+/// mantissa digits the step needs, the same for every tick of the axis.
+fn label_on_axis(v: f64, step: f64, scale: f64) -> String {
+    if !v.is_finite() {
+        return format!("{v}");
+    }
+    let step = step.abs();
+    let scientific = scale >= 1e6 || (scale != 0.0 && scale < 1e-4) || (step > 0.0 && step < 1e-4);
+    if scientific && v == 0.0 {
+        return "0".into();
+    }
+    if scientific {
+        let digits = if step > 0.0 && step.is_finite() && scale > 0.0 {
+            ((scale / step).log10().ceil().max(0.0) as usize).min(6)
+        } else {
+            0
+        };
+        return format!("{v:.digits$e}");
+    }
     // Enough decimals to write the step exactly (0.25 needs two).
     let decimals = (0..6)
         .find(|&d| {
@@ -102,7 +146,11 @@ fn ticks_with_labels(ticks: &[f64]) -> Vec<(f64, String)> {
     } else {
         1.0
     };
-    ticks.iter().map(|&t| (t, tick_label(t, step))).collect()
+    let scale = ticks.iter().fold(0.0, |m: f64, t| m.max(t.abs()));
+    ticks
+        .iter()
+        .map(|&t| (t, label_on_axis(t, step, scale)))
+        .collect()
 }
 
 struct Grid {
@@ -157,69 +205,148 @@ impl Grid {
     }
 }
 
+/// The x value drawn in screen column `column` of a plot whose data cells start at
+/// `plot_x` and are `plot_width` wide over `x_range` (the inverse of where the plot puts
+/// a value: column `i` shows `x0 + i / (width − 1) · (x1 − x0)`); `None` outside.
+pub fn time_at_column(
+    x_range: (f64, f64),
+    plot_x: u16,
+    plot_width: u16,
+    column: u16,
+) -> Option<f64> {
+    if plot_width < 2 || column < plot_x || column >= plot_x + plot_width {
+        return None;
+    }
+    let (x0, x1) = x_range;
+    let f = f64::from(column - plot_x) / f64::from(plot_width - 1);
+    Some(x0 + f * (x1 - x0))
+}
+
 impl Plot {
-    pub fn render(&self, area: Rect, buf: &mut Buffer, theme: &Theme) {
-        if area.width < 12 || area.height < 4 {
-            return;
-        }
-        let g = theme.glyphs;
-        let (x0, x1) = self.x_range;
+    fn y_ticks_in(&self, area: Rect) -> Vec<(f64, String)> {
         let (y0, y1) = self.y_range;
         let y_ticks = self.y_ticks.clone().unwrap_or_else(|| {
             let (_, t) = nice_ticks(y0, y1, (area.height as usize / 2).max(2));
             ticks_with_labels(&t)
         });
-        let y_ticks: Vec<_> = y_ticks
+        y_ticks
             .into_iter()
             .filter(|(v, _)| *v >= y0 && *v <= y1)
-            .collect();
-        let margin = y_ticks.iter().map(|(_, l)| l.len()).max().unwrap_or(1) as u16;
-        // Title and legend: a mark and a name for every named series, on the title row
-        // and, if they do not fit there, on more rows (taken from the plot).
-        let head = self.y_title.clone();
-        let mut legend: Vec<(String, Style)> = Vec::new();
-        for s in &self.series {
-            if !s.name.is_empty() {
-                let mark = match (s.draw, g.ascii) {
-                    (Draw::Line, false) => "──",
-                    (Draw::Line, true) => "--",
-                    (Draw::Points, _) => s.glyph,
-                };
-                legend.push((format!(" {mark} {}", g.text(&s.name)), s.style));
-            }
-        }
-        buf.set_stringn(area.x, area.y, &head, area.width as usize, theme.dim);
-        let first_x = area.x + head.chars().count() as u16 + 2;
-        let mut row = 0u16;
-        let mut x = first_x;
-        // More rows while the plot keeps six at least.
+            .collect()
+    }
+
+    /// Width of the y tick labels: the plot starts right of them. Labels are short
+    /// (scientific beyond 1e6), but a margin never eats more than half the area.
+    fn margin(&self, area: Rect) -> u16 {
+        self.y_ticks_in(area)
+            .iter()
+            .map(|(_, l)| l.chars().count())
+            .max()
+            .unwrap_or(1)
+            .min(usize::from(area.width / 2)) as u16
+    }
+
+    /// The legend: a mark and a name for every named series, on the title row after
+    /// the y title and, if they do not fit there, on up to three more rows (taken from
+    /// the plot while it keeps six rows at least). Returns each entry's text, style,
+    /// column and row (0 = the title row), and the number of extra rows used.
+    /// [`Plot::data_area`] and [`Plot::render`] both use it, so a click maps to the
+    /// cells that are drawn.
+    #[allow(clippy::type_complexity)]
+    fn legend(&self, area: Rect, glyphs: &Glyphs) -> (Vec<(String, Style, u16, u16)>, u16) {
+        let margin = self.margin(area);
+        let first_x = area.x + self.y_title.chars().count() as u16 + 2;
         let max_row = area.height.saturating_sub(9).min(3);
-        for (text, style) in legend {
+        let (mut row, mut x) = (0u16, first_x);
+        let mut out = Vec::new();
+        for s in self.series.iter().filter(|s| !s.name.is_empty()) {
+            // ASCII lines are drawn with their glyph: the legend shows it twice.
+            let mark = match (s.draw, glyphs.ascii) {
+                (Draw::Line, false) => "──".to_string(),
+                (Draw::Line, true) => format!("{0}{0}", s.glyph),
+                (Draw::Points, _) => s.glyph.to_string(),
+            };
+            let text = format!(" {mark} {}", glyphs.text(&s.name));
             let w = text.chars().count() as u16;
-            if x + w > area.right() && row < max_row {
+            if x.saturating_add(w) > area.right() && row < max_row {
                 row += 1;
                 x = area.x + margin;
             }
-            if x + w > area.right() {
+            if x.saturating_add(w) > area.right() {
                 break;
             }
-            buf.set_string(x, area.y + row, &text, style);
+            out.push((text, s.style, x, row));
             x += w;
         }
-        // Row 0 (and more): y title and legend; last row: x ticks; left: ticks and axis.
+        (out, row)
+    }
+
+    /// The data cells of the plot drawn in `area` with `theme`'s glyphs (right of the
+    /// y axis, below the title and legend rows, above the x tick row); `None` if the
+    /// area is too small to draw.
+    pub fn data_area(&self, area: Rect, theme: &Theme) -> Option<Rect> {
+        if area.width < 12 || area.height < 4 {
+            return None;
+        }
+        let margin = self.margin(area);
+        let (_, row) = self.legend(area, &theme.glyphs);
         let plot = Rect {
             x: area.x + margin + 1,
             y: area.y + 1 + row,
             width: area.width.saturating_sub(margin + 1),
             height: area.height.saturating_sub(2 + row),
         };
-        if plot.width < 4 || plot.height < 2 {
-            return;
-        }
-        let (cols, rows) = (plot.width as usize, plot.height as usize);
-        let col_of = |x: f64| ((x - x0) / (x1 - x0) * (cols - 1) as f64).round();
-        let row_of = |y: f64| ((y1 - y) / (y1 - y0) * (rows - 1) as f64).round();
+        (plot.width >= 4 && plot.height >= 2).then_some(plot)
+    }
 
+    /// The x value under screen cell (`column`, `row`) of the plot drawn in `area`
+    /// with `theme`.
+    pub fn x_at(&self, area: Rect, theme: &Theme, column: u16, row: u16) -> Option<f64> {
+        let plot = self.data_area(area, theme)?;
+        if row < plot.y || row >= plot.bottom() {
+            return None;
+        }
+        time_at_column(self.x_range, plot.x, plot.width, column)
+    }
+
+    pub fn render(&self, area: Rect, buf: &mut Buffer, theme: &Theme) {
+        let Some(plot) = self.data_area(area, theme) else {
+            return;
+        };
+        let g = theme.glyphs;
+        let (x0, x1) = self.x_range;
+        let (y0, y1) = self.y_range;
+        let y_ticks = self.y_ticks_in(area);
+        let margin = plot.x - area.x - 1;
+        let (cols, rows) = (plot.width as usize, plot.height as usize);
+        // Fractions from halves, which cannot overflow for finite bounds (−1e308 …
+        // 1e308); a position is always a cell of the plot (NaN → 0).
+        let frac = |v: f64, a: f64, b: f64| (v / 2.0 - a / 2.0) / (b / 2.0 - a / 2.0);
+        let col_of = |x: f64| {
+            (frac(x, x0, x1) * (cols - 1) as f64)
+                .round()
+                .clamp(0.0, (cols - 1) as f64)
+        };
+        let row_of = |y: f64| {
+            (frac(y, y1, y0) * (rows - 1) as f64)
+                .round()
+                .clamp(0.0, (rows - 1) as f64)
+        };
+
+        // Title and legend (the same layout data_area made room for).
+        buf.set_stringn(
+            area.x,
+            area.y,
+            &self.y_title,
+            area.width as usize,
+            theme.dim,
+        );
+        let (legend, _) = self.legend(area, &g);
+        for (text, style, x, row) in legend {
+            buf.set_string(x, area.y + row, &text, style);
+        }
+
+        // Row 0 (and more): y title and legend; last row: x ticks; left: ticks and axis.
         // Axis and y ticks.
         let axis_x = area.x + margin;
         for r in 0..plot.height {
@@ -229,8 +356,14 @@ impl Plot {
             let r = row_of(*v);
             if r >= 0.0 && (r as usize) < rows {
                 let y = plot.y + r as u16;
-                let pad = margin as usize - label.len();
-                buf.set_string(area.x + pad as u16, y, label, theme.dim);
+                let pad = usize::from(margin).saturating_sub(label.chars().count());
+                buf.set_stringn(
+                    area.x + pad as u16,
+                    y,
+                    label,
+                    usize::from(margin),
+                    theme.dim,
+                );
                 buf.set_string(axis_x, y, if g.ascii { "+" } else { "┤" }, theme.dim);
             }
         }
@@ -240,21 +373,24 @@ impl Plot {
             ticks_with_labels(&t)
         });
         let tick_row = plot.bottom();
-        let mut free_from = plot.x;
+        let mut free_from = i64::from(plot.x);
         for (v, label) in x_ticks.iter().filter(|(v, _)| *v >= x0 && *v <= x1) {
-            let c = plot.x as i64 + col_of(*v) as i64 - label.len() as i64 / 2;
-            let c = c.clamp(
-                plot.x as i64,
-                (plot.right() as i64 - label.len() as i64).max(0),
-            ) as u16;
-            if c >= free_from {
-                buf.set_string(c, tick_row, label, theme.dim);
-                free_from = c + label.len() as u16 + 1;
+            // Centred under its tick, kept inside the plot; a label wider than the
+            // plot starts at its left edge (and is cut by the buffer).
+            let w = label.chars().count() as i64;
+            let left = i64::from(plot.x);
+            let c = (left + col_of(*v) as i64 - w / 2)
+                .min(i64::from(plot.right()) - w)
+                .max(left);
+            if c >= free_from && c + w <= i64::from(plot.right()) {
+                buf.set_string(c as u16, tick_row, label, theme.dim);
+                free_from = c + w + 1;
             }
         }
         let unit = format!(" {}", self.x_title);
-        let ux = area.right().saturating_sub(unit.len() as u16);
+        let ux = i64::from(area.right()) - unit.chars().count() as i64;
         if ux >= free_from {
+            let ux = ux as u16;
             buf.set_string(ux, tick_row, &unit, theme.dim);
         }
 
@@ -341,17 +477,24 @@ impl Plot {
         }
         // Labels right of their line if they fit before the next one, else left of it
         // if they fit after the previous line and label.
-        let mut taken_until = plot.x;
+        // In i64: a long label must not overflow u16 arithmetic.
+        let mut taken_until = i64::from(plot.x);
         for (k, &(c, v)) in kept.iter().enumerate() {
             let Some(label) = &v.label else { continue };
+            let c = i64::from(c);
             let next = kept.get(k + 1).map_or(plot.right(), |n| n.0);
-            let prev = if k > 0 { kept[k - 1].0 + 1 } else { plot.x };
-            let w = label.chars().count() as u16;
+            let next = i64::from(next);
+            let prev = if k > 0 {
+                i64::from(kept[k - 1].0) + 1
+            } else {
+                i64::from(plot.x)
+            };
+            let w = label.chars().count() as i64;
             if c + 1 >= taken_until && c + 1 + w < next {
-                buf.set_string(c + 1, plot.y, label, v.style);
+                buf.set_string((c + 1) as u16, plot.y, label, v.style);
                 taken_until = c + 2 + w;
-            } else if c > w && c - w > prev.max(taken_until) {
-                buf.set_string(c - w, plot.y, label, v.style);
+            } else if c - w > prev.max(taken_until) {
+                buf.set_string((c - w) as u16, plot.y, label, v.style);
                 taken_until = c + 1;
             }
         }
@@ -374,6 +517,185 @@ mod tests {
         assert_eq!(tick_label(0.4, 0.2), "0.4");
         assert_eq!(tick_label(2.25, 0.25), "2.25");
         assert_eq!(tick_label(10.0, 5.0), "10");
+    }
+
+    #[test]
+    fn ticks_of_extreme_ranges_are_finite_few_and_short() {
+        let cases = [
+            (-1e308, 1e308),
+            (-f64::MAX, f64::MAX),
+            (0.0, 1e38),
+            (-0.2, 1e300),
+            (1e300, 1e300),
+            (1.0, 1.0 + 1e-15),
+            (1e-300, 2e-300),
+            (0.0, 5e-324),
+            (f64::NAN, 1.0),
+            (f64::NEG_INFINITY, f64::INFINITY),
+            (3.0, -3.0),
+        ];
+        for (lo, hi) in cases {
+            let ((a, b), ticks) = nice_ticks(lo, hi, 6);
+            assert!(
+                a.is_finite() && b.is_finite() && a < b,
+                "{lo} {hi}: {a} {b}"
+            );
+            assert!(
+                !ticks.is_empty() && ticks.len() <= 1001,
+                "{lo} {hi}: {}",
+                ticks.len()
+            );
+            for (t, label) in ticks_with_labels(&ticks) {
+                assert!(t.is_finite(), "{lo} {hi}");
+                assert!(label.len() <= 12, "{lo} {hi}: {label}");
+            }
+        }
+        let ((_, _), t) = nice_ticks(0.0, 1e38, 2);
+        let labels: Vec<String> = ticks_with_labels(&t).into_iter().map(|l| l.1).collect();
+        assert_eq!(labels, ["0", "5.0e37", "1.0e38"]);
+    }
+
+    /// Draws `plot` into buffers of several sizes: it must not panic.
+    fn draw_everywhere(plot: &Plot) {
+        let theme = Theme::new(crate::tui::theme::Glyphs::new(true), true);
+        for (w, h) in [(80, 24), (120, 40), (12, 4), (13, 5), (20, 6), (300, 8)] {
+            let area = Rect::new(0, 0, w, h);
+            let mut buf = Buffer::empty(area);
+            plot.render(area, &mut buf, &theme);
+        }
+    }
+
+    #[test]
+    fn a_plot_of_extreme_ranges_does_not_panic() {
+        let ranges = [
+            (-0.2, 1e38),
+            (-1e308, 1e308),
+            (-f64::MAX, f64::MAX),
+            (0.0, 1e300),
+            (1e-300, 2e-300),
+            (1.0, 1.0),
+            (f64::NAN, f64::INFINITY),
+        ];
+        for x_range in ranges {
+            for y_range in ranges {
+                let series = Series {
+                    name: "v_cm".into(),
+                    points: vec![x_range, y_range, (x_range.0, y_range.1), (f64::NAN, 0.0)],
+                    style: Style::default(),
+                    glyph: "*",
+                    draw: Draw::Line,
+                };
+                let plot = Plot {
+                    x_range,
+                    y_range,
+                    x_title: "t (s)".into(),
+                    y_title: "v (m/s)".into(),
+                    series: vec![
+                        series.clone(),
+                        Series {
+                            draw: Draw::Points,
+                            ..series
+                        },
+                    ],
+                    vlines: vec![
+                        VLine {
+                            x: x_range.0,
+                            label: Some("a very long event label indeed".into()),
+                            style: Style::default(),
+                            priority: 0,
+                        },
+                        VLine {
+                            x: x_range.1,
+                            label: Some("T∞".into()),
+                            style: Style::default(),
+                            priority: 1,
+                        },
+                    ],
+                    cursor: Some(x_range.1),
+                    x_ticks: None,
+                    y_ticks: None,
+                };
+                draw_everywhere(&plot);
+                // Given ticks wider than the plot, too.
+                let wide = Plot {
+                    x_ticks: Some(vec![(x_range.0, "x".repeat(500))]),
+                    y_ticks: Some(vec![(y_range.0, "y".repeat(500))]),
+                    ..plot
+                };
+                draw_everywhere(&wide);
+            }
+        }
+    }
+
+    #[test]
+    fn a_column_maps_back_to_the_value_drawn_there() {
+        // 101 columns from x = 40 over -0.2 … 0.8 s: one column is 10 ms.
+        let t = |c| time_at_column((-0.2, 0.8), 40, 101, c);
+        assert_eq!(t(39), None, "left of the plot");
+        assert_eq!(t(141), None, "right of the plot");
+        assert!((t(40).unwrap() + 0.2).abs() < 1e-12);
+        assert!((t(140).unwrap() - 0.8).abs() < 1e-12);
+        assert!((t(60).unwrap() - 0.0).abs() < 1e-12);
+        // And it inverts the column the plot draws a value in.
+        let col_of = |x: f64| ((x + 0.2) / 1.0 * 100.0).round() as u16 + 40;
+        for x in [-0.2, -0.05, 0.31, 0.79] {
+            let back = t(col_of(x)).unwrap();
+            assert!((back - x).abs() <= 0.5 / 100.0 + 1e-12, "{x} -> {back}");
+        }
+        assert_eq!(
+            time_at_column((0.0, 1.0), 0, 1, 0),
+            None,
+            "one column: no range"
+        );
+    }
+
+    #[test]
+    fn legend_rows_push_the_data_area_down_and_clicks_follow() {
+        let line = |name: &str| Series {
+            name: name.into(),
+            points: vec![(0.0, 0.0), (1.0, 1.0)],
+            style: Style::default(),
+            glyph: "*",
+            draw: Draw::Line,
+        };
+        let plot = |n: usize| Plot {
+            x_range: (0.0, 1.0),
+            y_range: (0.0, 1.0),
+            x_title: "t (s)".into(),
+            y_title: "v (m/s)".into(),
+            series: (0..n).map(|i| line(&format!("curve number {i}"))).collect(),
+            vlines: Vec::new(),
+            cursor: None,
+            x_ticks: None,
+            y_ticks: None,
+        };
+        for ascii in [false, true] {
+            let theme = Theme::new(crate::tui::theme::Glyphs::new(ascii), true);
+            let area = Rect::new(3, 2, 60, 20);
+            let one = plot(1).data_area(area, &theme).unwrap();
+            let many = plot(6).data_area(area, &theme).unwrap();
+            // Six entries of 18 columns need three rows of 60: two more than one entry.
+            assert_eq!(many.y, one.y + 2, "ascii {ascii}");
+            assert_eq!(many.bottom(), one.bottom());
+            // The drawn plot starts where data_area says: the axis begins on its first
+            // row, and the row above it holds legend text, not the axis.
+            let mut buf = Buffer::empty(Rect::new(0, 0, 70, 25));
+            plot(6).render(area, &mut buf, &theme);
+            let axis = buf[(many.x - 1, many.y)].symbol().to_string();
+            assert!(
+                axis == theme.glyphs.vline || axis == "┤" || axis == "+",
+                "{axis}"
+            );
+            let above = buf[(many.x - 1, many.y - 1)].symbol().to_string();
+            assert_ne!(above, theme.glyphs.vline, "ascii {ascii}");
+            let legend_row: String = (area.x..area.right())
+                .map(|x| buf[(x, many.y - 1)].symbol().to_string())
+                .collect();
+            assert!(legend_row.contains("curve number"), "{legend_row}");
+            // A click on a legend row is not a seek; one on the first data row is.
+            assert_eq!(plot(6).x_at(area, &theme, many.x + 5, many.y - 1), None);
+            assert!(plot(6).x_at(area, &theme, many.x + 5, many.y).is_some());
+        }
     }
 
     #[test]

@@ -10,7 +10,7 @@ use ratatui::widgets::Widget;
 use super::block;
 use crate::lab::jobs::State;
 use crate::physics::model::BallState;
-use crate::physics::solution::{EventKind, Snapshot, Who};
+use crate::physics::solution::{EnergySplit, EventKind, Snapshot, Who};
 use crate::tui::app::{App, ChartBall};
 use crate::tui::plot::{Draw, Plot, Series, VLine, nice_ticks};
 use crate::tui::theme::Theme;
@@ -39,17 +39,75 @@ fn event_lines(app: &App, balls: &[Who], theme: &Theme) -> Vec<VLine> {
         .collect()
 }
 
-pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let (title, plot) = if app.show_positions {
+/// The chart shown and its title.
+fn chart(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
+    if app.show_energy {
+        energy(app, area, theme)
+    } else if app.show_positions {
         positions(app, area, theme)
     } else {
         velocities(app, area, theme)
-    };
+    }
+}
+
+pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
+    let (title, plot) = chart(app, area, theme);
     let title = super::title_within(&title, area, theme);
     let blk = block(title, theme);
     let inner = blk.inner(area);
     blk.render(area, buf);
     plot.render(inner, buf, theme);
+}
+
+/// The time under screen cell (`column`, `row`) of the chart drawn in `area`, if the
+/// cell is inside the plot (what a click on the chart seeks to).
+/// `theme` must be the one the chart is drawn with: the legend's rows (which depend
+/// on the glyph set and, in monochrome, on the series' names) push the plot down.
+pub fn time_at(app: &App, area: Rect, theme: &Theme, column: u16, row: u16) -> Option<f64> {
+    let (title, plot) = chart(app, area, theme);
+    let inner = block(title, theme).inner(area);
+    plot.x_at(inner, theme, column, row)
+}
+
+/// The default theme (Unicode, colours), for callers that do not say which one draws.
+pub(crate) fn theme_for_layout() -> &'static Theme {
+    static THEME: std::sync::LazyLock<Theme> =
+        std::sync::LazyLock::new(|| Theme::new(crate::tui::theme::Glyphs::UNICODE, true));
+    &THEME
+}
+
+/// No colours: curves that colour alone would tell apart get letters instead.
+fn monochrome(theme: &Theme) -> bool {
+    theme.left.fg.is_none() && theme.right.fg.is_none()
+}
+
+/// A named curve of a run: what it plots at each sampled state.
+type Curve = (&'static str, fn(&Snapshot) -> f64);
+
+/// A part of the energy split: name, letter, style, value.
+type Part = (&'static str, &'static str, Style, fn(&EnergySplit) -> f64);
+
+/// The pinned run's curves for the chart, drawn first (under the current ones), dimmed.
+fn pinned_series(app: &App, columns: usize, theme: &Theme, curves: &[Curve]) -> Vec<Series> {
+    if app.lab.pinned.is_none() {
+        return Vec::new();
+    }
+    let samples = app.lab.pinned_samples(columns);
+    curves
+        .iter()
+        .enumerate()
+        .map(|(k, (name, value))| Series {
+            name: if k == 0 {
+                format!("pinned {name}")
+            } else {
+                String::new()
+            },
+            points: samples.iter().map(|s| (s.t, value(s))).collect(),
+            style: theme.dim,
+            glyph: ".",
+            draw: Draw::Line,
+        })
+        .collect()
 }
 
 fn series_of(
@@ -90,7 +148,17 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
         ChartBall::Right => (vec![1], "right ball"),
         ChartBall::Both => (vec![0, 1], "both balls"),
     };
-    let mut series = Vec::new();
+    let curves: Vec<Curve> = balls
+        .iter()
+        .flat_map(|&i| -> [Curve; 2] {
+            if i == 0 {
+                [("run", |s| s.left.v), ("", |s| s.left.u)]
+            } else {
+                [("run", |s| s.right.v), ("", |s| s.right.u)]
+            }
+        })
+        .collect();
+    let mut series = pinned_series(app, columns, theme, &curves);
     for &i in &balls {
         let (style, side) = if i == 0 {
             (theme.left, "L")
@@ -185,6 +253,28 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
                 .zip(v.iter().copied())
                 .collect::<Vec<_>>()
         };
+        // Each derived point's ±1σ (a position track's local fits) as a vertical run
+        // of dots under the point's own glyph.
+        for (n, (values, sigma)) in [(&m.v_cm, &m.v_cm_sigma), (&m.v_t, &m.v_t_sigma)]
+            .into_iter()
+            .enumerate()
+        {
+            if let Some(sigma) = sigma {
+                series.push(Series {
+                    // One legend entry for both series' bars.
+                    name: if n == 0 {
+                        theme.glyphs.text("±1σ").replace('σ', "s")
+                    } else {
+                        String::new()
+                    },
+                    points: error_bars(&m.t, values, sigma),
+                    style: theme.measured,
+                    // Not ':' or '|': the event lines use those.
+                    glyph: if theme.glyphs.ascii { "!" } else { "¦" },
+                    draw: Draw::Points,
+                });
+            }
+        }
         let cross = if theme.glyphs.ascii { "x" } else { "×" };
         series.push(Series {
             name: "measured v_cm".into(),
@@ -262,10 +352,33 @@ fn positions(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
     let sol = &app.lab.solution;
     let columns = usize::from(area.width.saturating_sub(10));
     let samples = app.lab.samples(columns);
-    let series = vec![
+    let mut series = pinned_series(
+        app,
+        columns,
+        theme,
+        &[("run", |s| s.left.x * 100.0), ("", |s| s.right.x * 100.0)],
+    );
+    series.extend([
         series_of("x left", &samples, |s| s.left.x * 100.0, theme.left, "*"),
         series_of("x right", &samples, |s| s.right.x * 100.0, theme.right, "+"),
-    ];
+    ]);
+    // A position track's centre, where the model's left ball would be (x − R).
+    if let Some((m, x)) = app.lab.measured().and_then(|m| Some((m, m.x.as_ref()?))) {
+        let r = app.lab.scene.radius;
+        series.push(Series {
+            name: "tracked x".into(),
+            points: m
+                .t
+                .iter()
+                .zip(x)
+                .filter(|(_, x)| x.is_finite())
+                .map(|(t, x)| (*t, (x - r) * 100.0))
+                .collect(),
+            style: theme.measured,
+            glyph: if theme.glyphs.ascii { "x" } else { "×" },
+            draw: Draw::Points,
+        });
+    }
     let rows = usize::from(area.height.saturating_sub(4));
     let ((y0, y1), _) = bounds(&series, rows);
     let plot = Plot {
@@ -283,4 +396,129 @@ fn positions(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
         " x(t) of both balls  [x] back to velocities ".to_string(),
         plot,
     )
+}
+
+/// Energy against time: the kinetic parts and what friction, impacts and rolling
+/// resistance have taken so far, with their constant sum (the initial energy).
+fn energy(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
+    let sol = &app.lab.solution;
+    let columns = usize::from(area.width.saturating_sub(10));
+    let split = app.lab.energies(columns);
+    let letters = monochrome(theme) || theme.glyphs.ascii;
+    let draw = if letters && !theme.glyphs.ascii {
+        // Braille cannot carry a letter: mark each sample cell instead.
+        Draw::Points
+    } else {
+        Draw::Line
+    };
+    // Narrow charts (80 columns) get short names so the whole legend fits on its row.
+    let wide = area.width >= 70;
+    let name = |long: &'static str, short: &'static str| if wide { long } else { short };
+    let parts: [Part; 5] = [
+        (name("trans", "tr"), "t", theme.left, |e| e.translational),
+        ("rot", "r", theme.accent, |e| e.rotational),
+        (name("friction", "fric"), "f", theme.right, |e| {
+            e.lost.friction
+        }),
+        (name("impacts", "imp"), "i", theme.flash, |e| e.lost.impacts),
+        (name("c_rr", "rr"), "c", theme.info, |e| {
+            e.lost.rolling_resistance
+        }),
+    ];
+    let total = split.first().map_or(0.0, |(_, e)| e.total());
+    let mut series = vec![Series {
+        name: name("total", "sum").into(),
+        points: split.iter().map(|(t, e)| (*t, e.total())).collect(),
+        style: theme.dim,
+        glyph: "=",
+        draw,
+    }];
+    if app.lab.pinned.is_some() {
+        // The pinned run's kinetic energy, for the A/B comparison.
+        let p = app.lab.pinned_samples(columns);
+        let pinned = app.lab.pinned.as_ref().map(|p| p.solution.clone());
+        if let Some(psol) = pinned {
+            series.insert(
+                0,
+                Series {
+                    name: "pinned kinetic".into(),
+                    points: p
+                        .iter()
+                        .map(|s| (s.t, psol.energy_at(s.t).kinetic()))
+                        .collect(),
+                    style: theme.dim,
+                    glyph: ".",
+                    draw: Draw::Line,
+                },
+            );
+        }
+    }
+    for (name, glyph, style, value) in parts {
+        let points: Vec<(f64, f64)> = split.iter().map(|(t, e)| (*t, value(e))).collect();
+        // A part that stays zero (no impact loss at e = 1, no rolling resistance) is
+        // named in the legend but not drawn over the axis.
+        let zero = points.iter().all(|p| p.1.abs() <= 1e-9 * total.abs());
+        let name = if zero {
+            format!("{name} 0")
+        } else {
+            name.to_string()
+        };
+        series.push(Series {
+            name,
+            points: if zero { Vec::new() } else { points },
+            style,
+            glyph,
+            draw,
+        });
+    }
+    let rows = usize::from(area.height.saturating_sub(4));
+    // Room above the total for the event labels on the top row.
+    let ((_, y1), _) = nice_ticks(0.0, 1.1 * total, (rows / 3).max(2));
+    let plot = Plot {
+        x_range: (sol.t_start, sol.t_end),
+        y_range: (0.0, y1.max(f64::MIN_POSITIVE)),
+        x_title: "t (s)".into(),
+        y_title: name("E (J)", "J").into(),
+        series,
+        vlines: event_lines(app, &[Who::Left, Who::Right], theme),
+        cursor: Some(app.t),
+        x_ticks: None,
+        y_ticks: None,
+    };
+    let title = if wide {
+        " Energy of both balls  [e] back to velocities "
+    } else {
+        " Energy, both balls  [e] velocities "
+    };
+    (title.to_string(), plot)
+}
+
+/// Points filling `value ± sigma` at each time (12 per bar, enough for a bar a dozen
+/// rows tall), for a Points series drawn as vertical error bars; points without a
+/// finite value or uncertainty have none.
+fn error_bars(ts: &[f64], values: &[f64], sigma: &[f64]) -> Vec<(f64, f64)> {
+    const STEPS: usize = 12;
+    let mut out = Vec::new();
+    for ((&t, &v), &s) in ts.iter().zip(values).zip(sigma) {
+        if !(v.is_finite() && s.is_finite() && s > 0.0) {
+            continue;
+        }
+        out.extend((0..=STEPS).map(|k| (t, v - s + 2.0 * s * k as f64 / STEPS as f64)));
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn error_bars_span_one_sigma_and_skip_unknowns() {
+        let bars = super::error_bars(
+            &[0.0, 1.0, 2.0],
+            &[1.0, f64::NAN, 3.0],
+            &[0.1, 0.1, f64::NAN],
+        );
+        assert_eq!(bars.len(), 13);
+        assert!(bars.iter().all(|&(t, _)| t == 0.0));
+        assert!((bars[0].1 - 0.9).abs() < 1e-12 && (bars[12].1 - 1.1).abs() < 1e-12);
+    }
 }

@@ -8,15 +8,17 @@ use ratatui::widgets::Widget;
 
 use super::{Ranked, block, by_priority, draw_lines};
 use crate::lab::jobs::State;
-use crate::study::fit;
+use crate::study::fit::{self, ModelFit};
 use crate::tui::app::App;
 use crate::tui::theme::Theme;
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let title = if inner_width(area) < 40 {
-        " Fit  ( ) { } window, [a] apply "
+    // The long title where it fits on the border whole, else the short one.
+    let long = " Fit  ( ) { } move the window, [a] apply, [f] back ";
+    let title = if long.chars().count() as u16 + 2 <= area.width {
+        long
     } else {
-        " Fit  ( ) { } move the window, [a] apply, [f] back "
+        " Fit  ( ) { } window, [a] apply "
     };
     let blk = block(title, theme);
     let inner = blk.inner(area);
@@ -87,7 +89,10 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                     ]),
                 ),
             ];
-            if let Some(p) = fit::paper_row(app.lab.scene.width) {
+            // The paper's row beside the paper's own (velocity) series only: a position
+            // track is never the paper's data.
+            let paper_data = app.lab.measured().is_some_and(|m| m.x.is_none());
+            if let Some(p) = fit::paper_row(app.lab.scene.width).filter(|_| paper_data) {
                 lines.push((
                     3,
                     Line::from(vec![
@@ -99,54 +104,164 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                     ]),
                 ));
             }
-            lines.push((
-                5,
-                Line::from(Span::styled("model fit to every frame", theme.title)),
-            ));
-            lines.push((
-                9,
-                Line::from(vec![
-                    label(&format!("{}_k ", g.mu)),
-                    value(format!(
-                        "{:.4} ± {:.4} (2{})",
-                        m.mu,
-                        2.0 * m.mu_se,
-                        if g.ascii { "sigma" } else { "σ" }
-                    )),
-                    label("  RMS "),
-                    value(format!("{:.4} m/s", m.rms)),
-                ]),
-            ));
-            lines.push((
-                8,
-                Line::from(vec![
-                    label("regime: predicted "),
-                    value(m.regime_predicted.name().to_string()),
-                    label(", observed "),
-                    value(m.regime_observed.name().to_string()),
-                ]),
-            ));
-            lines.push((
-                9,
-                Line::from(Span::styled(
-                    if m.regime_predicted == m.regime_observed {
-                        "the model predicts what was seen".to_string()
-                    } else {
-                        "the model does NOT predict what was seen".to_string()
-                    },
-                    if m.regime_predicted == m.regime_observed {
-                        theme.info
-                    } else {
-                        theme.error
-                    },
-                )),
-            ));
+            match app.lab.position_fit() {
+                State::Idle => model_fit_lines(m, &mut lines, theme),
+                State::Computing { .. } => {
+                    model_fit_lines(m, &mut lines, theme);
+                    lines.push((4, Line::from(label("position fit: computing…"))));
+                }
+                State::Ready(Err(e)) => {
+                    model_fit_lines(m, &mut lines, theme);
+                    lines.push((6, Line::from(Span::styled(g.text(e), theme.error))));
+                }
+                State::Ready(Ok(p)) => {
+                    both_fits(m, p, usize::from(inner.width), &mut lines, theme);
+                }
+            }
             lines
         }
     };
     draw_lines(by_priority(lines, inner), inner, buf);
 }
 
-fn inner_width(area: Rect) -> u16 {
-    area.width.saturating_sub(2)
+/// The model fit of a velocity series: μ_k ± 2σ, RMS, and the verdict.
+fn model_fit_lines(m: &ModelFit, lines: &mut Ranked<'static>, theme: &Theme) {
+    let g = theme.glyphs;
+    let label = |s: &str| Span::styled(g.text(s), theme.dim);
+    let value = |s: String| Span::styled(g.text(&s), theme.text);
+    lines.push((
+        5,
+        Line::from(Span::styled("model fit to every frame", theme.title)),
+    ));
+    lines.push((
+        9,
+        Line::from(vec![
+            label(&format!("{}_k ", g.mu)),
+            value(pm(m.mu, m.mu_se, 4, g.ascii)),
+            label("  RMS "),
+            value(format!("{:.4} m/s", m.rms)),
+        ]),
+    ));
+    verdict_lines(m, lines, theme);
+}
+
+/// μ ± 2σ with `decimals`, or μ alone with why there is no ±.
+fn pm(mu: f64, se: f64, decimals: usize, ascii: bool) -> String {
+    let two_sigma = if ascii { "2sigma" } else { "2σ" };
+    if se.is_finite() {
+        format!("{mu:.decimals$} ± {:.decimals$} ({two_sigma})", 2.0 * se)
+    } else {
+        format!("{mu:.decimals$} (no ±)")
+    }
+}
+
+/// The predicted regime with its margin, what was observed, and whether they agree.
+fn verdict_lines(m: &ModelFit, lines: &mut Ranked<'static>, theme: &Theme) {
+    let g = theme.glyphs;
+    lines.push((
+        8,
+        Line::from(vec![
+            Span::styled("predicted ", theme.dim),
+            Span::styled(g.text(&m.verdict), theme.text),
+        ]),
+    ));
+    lines.push((
+        7,
+        Line::from(vec![
+            Span::styled("observed ", theme.dim),
+            Span::styled(m.regime_observed.name().to_string(), theme.text),
+        ]),
+    ));
+    lines.push((
+        9,
+        Line::from(Span::styled(
+            if m.agrees {
+                "the model predicts what was seen"
+            } else {
+                "the model does NOT predict what was seen"
+            },
+            if m.agrees { theme.info } else { theme.error },
+        )),
+    ));
+}
+
+/// A position track's two model fits side by side: to the derived velocities and to
+/// the positions themselves, each with μ_k ± 2σ, RMS and its verdict.
+fn both_fits(v: &ModelFit, p: &ModelFit, width: usize, lines: &mut Ranked<'static>, theme: &Theme) {
+    let g = theme.glyphs;
+    // Two value columns of up to 15 characters, the label column takes the rest.
+    let col = ((width.saturating_sub(6)) / 2).min(15);
+    let decimals = if col >= 15 { 4 } else { 3 };
+    let head = width.saturating_sub(2 * col);
+    let cell = |a: f64, se: f64| {
+        if se.is_finite() {
+            format!("{a:.decimals$}±{:.decimals$}", 2.0 * se)
+        } else {
+            format!("{a:.decimals$} (no±)")
+        }
+    };
+    let row = |name: &str, a: String, b: String, style| {
+        Line::from(Span::styled(
+            g.text(&format!("{name:<head$}{a:>col$}{b:>col$}")),
+            style,
+        ))
+    };
+    // Priorities: μ_k of both fits and whether each agrees with what was seen stay
+    // on the smallest screen; the note on which ± to quote goes first.
+    lines.push((
+        6,
+        row(
+            "model fits",
+            "velocities".into(),
+            "positions".into(),
+            theme.title,
+        ),
+    ));
+    lines.push((
+        9,
+        row(
+            &format!("{}_k 2{}", g.mu, if g.ascii { "s" } else { "σ" }),
+            cell(v.mu, v.mu_se),
+            cell(p.mu, p.mu_se),
+            theme.text,
+        ),
+    ));
+    lines.push((
+        5,
+        row(
+            "RMS",
+            format!("{:.3} m/s", v.rms),
+            format!("{:.2} mm", 1e3 * p.rms),
+            theme.text,
+        ),
+    ));
+    lines.push((
+        8,
+        row(
+            "regime",
+            v.regime_predicted.name().into(),
+            p.regime_predicted.name().into(),
+            theme.text,
+        ),
+    ));
+    let agree = |m: &ModelFit| if m.agrees { "agrees" } else { "DISAGREES" }.to_string();
+    lines.push((9, row("observed", agree(v), agree(p), theme.text)));
+    lines.push((
+        7,
+        Line::from(vec![
+            Span::styled("positions: ", theme.dim),
+            Span::styled(g.text(&p.verdict), theme.text),
+        ]),
+    ));
+    lines.push((
+        4,
+        Line::from(vec![
+            Span::styled("observed ", theme.dim),
+            Span::styled(p.regime_observed.name().to_string(), theme.text),
+            Span::styled(
+                g.text("  (the position fit's ± is the one to quote)"),
+                theme.dim,
+            ),
+        ]),
+    ));
 }

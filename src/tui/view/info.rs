@@ -9,6 +9,8 @@ use ratatui::widgets::Widget;
 use super::{Ranked, block, by_priority, draw_lines};
 use crate::input::units::significant;
 use crate::physics::derived::Regime;
+use crate::physics::story::{self, After, Verdict};
+use crate::study::fit;
 use crate::tui::app::App;
 use crate::tui::theme::Theme;
 
@@ -26,19 +28,37 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         Regime::Recollide => "RECOLLIDE: they come back",
     };
     let why = d.why();
+    // The verdict's margin against the measured series' rest band, when there is one.
+    let band = app.lab.measured().map(fit::rest_band);
+    let verdict = Verdict::of(sol, d, band);
+    let story = story::after_first_impact(sol, d);
     let b_star = d.b_star.map_or("none (e < 2/5)".to_string(), |b| {
         format!("{:.2} cm", b * 100.0)
     });
     let label = |s: &str| Span::styled(s.to_string(), theme.dim);
     let value = |s: String| Span::styled(s, theme.text);
-    // Priorities (9 most important): what a small screen keeps is the regime and why,
-    // the impacts, the energy split and the return (t', v'), before the derived values
-    // and forces.
-    let mut lines: Ranked = vec![
-        (9, Line::from(Span::styled(regime, theme.title))),
+    // Priorities (9 most important): what a small screen keeps is the regime and why
+    // (with the verdict's margin where the data cannot tell it from rest), the impacts
+    // and the energy split; then the derived values (k, r, D, b*), what happens after
+    // the first impact (t', v', or how the run ends when the closed forms do not hold),
+    // before the rest of the story, the state at the cursor and the forces.
+    let mut lines: Ranked = vec![(9, Line::from(Span::styled(regime, theme.title)))];
+    // The margin where it changes the reading: a regime the data cannot tell from rest.
+    if verdict.indistinguishable_from_rest() {
+        // A narrow panel (80 columns) says it in two rows rather than three, so the
+        // numbers after the first impact keep their place.
+        let margin = match (verdict.v_roll, verdict.band) {
+            (Some(v), Some(band)) if inner.width < 40 => {
+                format!("v' = {v:+.3} m/s: indistinguishable from rest (band ±{band:.3} m/s)")
+            }
+            _ => verdict.margin("±"),
+        };
+        lines.push((8, Line::from(value(g.text(&margin)))));
+    }
+    lines.extend([
         (8, Line::from(value(why))),
         (
-            4,
+            6,
             Line::from(vec![
                 label("k "),
                 value(format!("{:.4}", d.k)),
@@ -50,8 +70,20 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                 value(b_star),
             ]),
         ),
-    ];
-    if let Some(rec) = d.left_after_impact {
+    ]);
+    if let Some(After::Interrupted(i)) = &story {
+        // The closed forms do not describe this run: say what it does instead.
+        // How the run ends (the last clause) outranks how it gets there.
+        let clauses = i.clauses(g.infinity);
+        let last = clauses.len().saturating_sub(1);
+        for (n, clause) in clauses.into_iter().enumerate() {
+            let head = if n == 0 { "left ball: " } else { "" };
+            lines.push((
+                if n == last { 6 } else { 5 },
+                Line::from(vec![label(head), value(g.text(&clause))]),
+            ));
+        }
+    } else if let Some(rec) = d.left_after_impact {
         lines.push((
             6,
             Line::from(vec![
@@ -204,11 +236,17 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
 
 /// Whole-number percentages of `parts` that sum to exactly 100 (largest remainder).
 pub fn percentages(parts: &[f64]) -> Vec<u32> {
-    let total: f64 = parts.iter().sum();
-    if total <= 0.0 {
+    // Shares of the non-negative finite parts only: a negative or overflowing part
+    // once made shares beyond u32 whose sum overflowed.
+    let part = |p: f64| if p.is_finite() { p.max(0.0) } else { 0.0 };
+    let total: f64 = parts.iter().map(|&p| part(p)).sum();
+    if !(total > 0.0 && total.is_finite()) {
         return vec![0; parts.len()];
     }
-    let exact: Vec<f64> = parts.iter().map(|p| 100.0 * p.max(0.0) / total).collect();
+    let exact: Vec<f64> = parts
+        .iter()
+        .map(|&p| (100.0 * (part(p) / total)).min(100.0))
+        .collect();
     let mut out: Vec<u32> = exact.iter().map(|x| x.floor() as u32).collect();
     let missing = 100u32.saturating_sub(out.iter().sum());
     let mut order: Vec<usize> = (0..parts.len()).collect();
@@ -233,5 +271,20 @@ mod tests {
             assert_eq!(percentages(&parts).iter().sum::<u32>(), 100, "{parts:?}");
         }
         assert_eq!(percentages(&[0.0; 5]), vec![0; 5]);
+    }
+
+    #[test]
+    fn overflowing_or_negative_energies_do_not_overflow_the_shares() {
+        // A 1e308 kg ball once gave shares past u32 whose sum overflowed.
+        for parts in [
+            [1e308, 1e308, 1.0, 0.0, 0.0],
+            [f64::INFINITY, 1.0, f64::NAN, 0.0, 0.0],
+            [1e300, -1e300 + 1e285, 1e-300, 0.0, 0.0],
+            [f64::MAX, f64::MAX, f64::MAX, f64::MAX, f64::MAX],
+        ] {
+            let shares = percentages(&parts);
+            let sum: u32 = shares.iter().sum();
+            assert!(sum == 100 || sum == 0, "{parts:?}: {shares:?}");
+        }
     }
 }

@@ -7,6 +7,7 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::Widget;
 
 use super::{Ranked, block, by_priority, draw_lines};
+use crate::input::units::fit_number;
 use crate::lab::jobs::State;
 use crate::methods::Method;
 use crate::study::compare::Status;
@@ -26,8 +27,16 @@ fn glyph(m: Method) -> &'static str {
 }
 
 /// Decade ticks `10^a … 10^b` labelled `1e<n>`.
+/// Decade ticks 1e{lo} … 1e{hi}, every k-th decade so that there are at most about
+/// 20 (an overflowing run once asked for 2^31 of them).
 fn decades(lo: f64, hi: f64) -> Vec<(f64, String)> {
-    (lo.floor() as i32..=hi.ceil() as i32)
+    if !(lo.is_finite() && hi.is_finite()) {
+        return Vec::new();
+    }
+    let (lo, hi) = (lo.floor().max(-400.0) as i32, hi.ceil().min(400.0) as i32);
+    let every = ((hi - lo) / 20).max(1) as usize;
+    (lo..=hi)
+        .step_by(every)
         .map(|e| (f64::from(e), format!("1e{e}")))
         .collect()
 }
@@ -73,13 +82,20 @@ pub fn render_diagram(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             draw: Draw::Points,
         });
     }
-    let all: Vec<(f64, f64)> = rows.iter().map(point).collect();
+    // The range from finite points only: a run that overflowed has err_v = inf.
+    let all: Vec<(f64, f64)> = rows
+        .iter()
+        .map(point)
+        .filter(|p| p.0.is_finite() && p.1.is_finite())
+        .collect();
     let (x0, x1) = all.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |a, p| {
         (a.0.min(p.0), a.1.max(p.0))
     });
     let (y0, y1) = all.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |a, p| {
         (a.0.min(p.1), a.1.max(p.1))
     });
+    let (x0, x1) = if x0 <= x1 { (x0, x1) } else { (0.0, 1.0) };
+    let (y0, y1) = if y0 <= y1 { (y0, y1) } else { (-16.0, 0.0) };
     let (x0, x1) = (x0.floor(), x1.ceil().max(x0.floor() + 1.0));
     let (y0, y1) = (y0.floor(), y1.ceil().max(y0.floor() + 1.0));
     let plot = Plot {
@@ -110,11 +126,6 @@ pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         other => return super::computing(&other, "running every method", inner, buf, theme),
     };
     let g = theme.glyphs;
-    // Columns: marker, name (as wide as room allows, cut with an ellipsis), setting,
-    // status, and err_v, which is never cut.
-    let width = usize::from(inner.width);
-    let fixed = 2 + 8 + 1 + 8 + 1 + 7;
-    let name_width = width.saturating_sub(fixed + 1).min(17);
     // Each method's best run (smallest error) stays on a short screen, one per method;
     // the other levels go, coarsest first.
     let best: Vec<usize> = Method::TIME_STEPPING
@@ -135,6 +146,12 @@ pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             theme.title,
         )),
     )];
+    // Setting and status take 19 columns; err_v gets at least 7 ("2.9e-10"), taken
+    // from the name column on a narrow panel, and is fitted into what it gets (fewer
+    // digits, never a cut exponent).
+    let width = usize::from(inner.width);
+    let name_w = width.saturating_sub(19 + 7).clamp(2, 19);
+    let err_w = width.saturating_sub(name_w + 19).max(1);
     // How many runs of each method came before (the level's rank, coarse first).
     let mut seen: Vec<Method> = Vec::new();
     for (i, r) in rows.iter().enumerate() {
@@ -151,16 +168,21 @@ pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         seen.push(r.method);
         let rank = seen.iter().filter(|&&m| m == r.method).count() as u8;
         let priority = if best.contains(&i) { 8 } else { rank };
-        let name = g.ellipsize(r.method.name(), name_width);
+        // A name too long for its column ends with an ellipsis, never cut silently.
+        let name = g.ellipsize(
+            &format!("{} {}", glyph(r.method), r.method.name()),
+            name_w - 1,
+        );
         lines.push((
             priority,
             Line::from(vec![
+                Span::styled(format!("{name:<name_w$}"), theme.dim),
                 Span::styled(
-                    format!("{} {name:<name_width$} ", glyph(r.method)),
-                    theme.dim,
-                ),
-                Span::styled(
-                    format!("{setting:<8} {:<8} {:>7}", r.status.name(), error(r.err_v)),
+                    format!(
+                        "{setting:<9} {:<8} {}",
+                        r.status.name(),
+                        fit_number(r.err_v, err_w)
+                    ),
                     style,
                 ),
             ]),
@@ -169,11 +191,14 @@ pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     draw_lines(by_priority(lines, inner), inner, buf);
 }
 
-/// An error with two significant digits whatever its exponent (`2.9e-10`, never cut).
-fn error(v: f64) -> String {
-    if v.is_finite() {
-        format!("{v:.1e}")
-    } else {
-        "diverged".to_string()
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn decades_are_few_for_any_range() {
+        assert_eq!(super::decades(f64::NAN, 3.0), vec![]);
+        assert_eq!(super::decades(0.0, f64::INFINITY), vec![]);
+        let d = super::decades(-16.0, 308.0);
+        assert!(d.len() <= 21 && d[0].1 == "1e-16", "{d:?}");
+        assert_eq!(super::decades(-2.0, 0.0).len(), 3);
     }
 }

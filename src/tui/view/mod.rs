@@ -47,7 +47,7 @@ pub fn layout(area: Rect) -> Option<Panels> {
     // Tall screens show every parameter; short ones scroll the list (7 rows) so the
     // charts keep room.
     let top_height = if area.height >= 32 {
-        crate::tui::app::ROWS.len() as u16 + 2
+        super::app::ROWS.len() as u16 + 2
     } else {
         9
     };
@@ -61,7 +61,14 @@ pub fn layout(area: Rect) -> Option<Panels> {
     let params_width = if area.width >= 110 { 41 } else { 32 };
     let [params, scene] =
         Layout::horizontal([Constraint::Length(params_width), Constraint::Min(30)]).areas(top);
-    let info_width = if area.width >= 110 { 46 } else { 36 };
+    // Wide screens give the side panel more room (the runs list, the fit's two columns).
+    let info_width = if area.width >= 180 {
+        60
+    } else if area.width >= 110 {
+        46
+    } else {
+        36
+    };
     let [chart, info] =
         Layout::horizontal([Constraint::Min(30), Constraint::Length(info_width)]).areas(middle);
     Some(Panels {
@@ -72,6 +79,27 @@ pub fn layout(area: Rect) -> Option<Panels> {
         status,
         hints,
     })
+}
+
+/// The time under a click at (`column`, `row`) of a screen of `area`: inside the
+/// chart's plot while the charts are shown and no popup is open.
+pub fn chart_time_at(app: &App, area: Rect, column: u16, row: u16) -> Option<f64> {
+    chart_time_at_in(app, area, charts::theme_for_layout(), column, row)
+}
+
+/// [`chart_time_at`] for a screen drawn with `theme` (the legend's rows depend on it).
+pub fn chart_time_at_in(
+    app: &App,
+    area: Rect,
+    theme: &Theme,
+    column: u16,
+    row: u16,
+) -> Option<f64> {
+    let panels = layout(area)?;
+    if app.view != View::Charts || app.mode != Mode::Normal {
+        return None;
+    }
+    charts::time_at(app, panels.chart, theme, column, row)
 }
 
 /// A bordered block in the theme's glyph set.

@@ -7,7 +7,7 @@ use ratatui::widgets::Widget;
 
 use super::block;
 use crate::input::params::Key;
-use crate::input::units::{Dimension, show, significant};
+use crate::input::units::{Dimension, fit_number, significant};
 use crate::tui::app::{App, Mode, ROWS};
 use crate::tui::theme::Theme;
 
@@ -27,52 +27,77 @@ pub fn param_at(area: Rect, selected: usize, x: u16, y: u16) -> Option<usize> {
     (inside && i < ROWS.len()).then_some(i)
 }
 
-/// A value in the unit a lab uses for it, with fixed decimals so columns line up.
-fn value_text(app: &App, key: Key) -> String {
+/// Columns of a row: marker, label, value (right-aligned), two spaces, note.
+const LABEL_W: usize = 9;
+const VALUE_W: usize = 11;
+
+/// A value in the unit a lab uses for it, with fixed decimals so columns line up, in
+/// at most [`VALUE_W`] characters: a value too long for its decimals is fitted (fewer
+/// digits, never cut).
+pub fn value_text(app: &App, key: Key) -> String {
     let v = app.lab.value(key);
     let s = &app.lab.scene;
     if key == Key::V0 && s.left.v0 != s.right.v0 {
         // One control for both balls: it sets both, and says when they differ.
         return "differ".into();
     }
-    match key.dimension() {
-        Dimension::Ratio => significant(v, 4),
-        Dimension::Length => format!("{:.2} cm", v * 100.0),
-        Dimension::Mass => format!("{:.1} g", v * 1000.0),
-        Dimension::Speed => format!("{v:.3} m/s"),
-        dim => show(v, dim).to_string(),
-    }
+    let (scaled, fixed, unit) = match key.dimension() {
+        Dimension::Ratio => (v, significant(v, 4), ""),
+        Dimension::Length => (v * 100.0, format!("{:.2}", v * 100.0), " cm"),
+        Dimension::Mass => (v * 1000.0, format!("{:.1}", v * 1000.0), " g"),
+        Dimension::Speed => (v, format!("{v:.3}"), " m/s"),
+        Dimension::Time => (v, format!("{v:.3}"), " s"),
+        Dimension::Acceleration => (v, format!("{v:.2}"), " m/s²"),
+    };
+    let room = VALUE_W - unit.chars().count();
+    let number = if fixed.chars().count() <= room {
+        fixed
+    } else {
+        fit_number(scaled, room)
+    };
+    format!("{number}{unit}")
 }
 
-/// What stands right of a value: context that makes it readable (less when narrow).
-fn note(app: &App, key: Key, narrow: bool) -> String {
+/// What stands right of a value: context that makes it readable, fitted into `room`
+/// characters (the less important part goes first; numbers lose digits, never cut).
+pub fn note(app: &App, key: Key, room: usize) -> String {
     let d = &app.lab.derived;
-    match key {
+    // `label value` with the value fitted into what is left, or nothing if no digit fits.
+    // Fixed decimals when they fit (columns line up), else fitted.
+    let pair = |label: &str, v: f64, decimals: usize, room: usize| -> Option<String> {
+        let room = room.checked_sub(label.chars().count() + 1)?;
+        let fixed = format!("{v:.decimals$}");
+        let n = if fixed.len() <= room {
+            fixed
+        } else {
+            fit_number(v, room)
+        };
+        (!n.starts_with('#')).then(|| format!("{label} {n}"))
+    };
+    let text = match key {
         Key::Width => {
-            let star = d
-                .b_star
-                .map_or("no b*".to_string(), |b| format!("b* {:.2}", b * 100.0));
-            if narrow {
-                star
-            } else {
-                format!(
-                    "b/R {:.2} {star}",
-                    app.lab.scene.width / app.lab.scene.radius
-                )
-            }
+            let star = match d.b_star {
+                None => Some("no b*".to_string()).filter(|s| s.len() <= room),
+                Some(b) => pair("b*", b * 100.0, 2, room),
+            };
+            let ratio = app.lab.scene.width / app.lab.scene.radius;
+            // b/R beside b* only when both keep 3 digits.
+            let both = star
+                .as_ref()
+                .filter(|s| s.len() <= 7)
+                .and_then(|s| pair("b/R", ratio, 2, 8).map(|r| format!("{r} {s}")));
+            both.filter(|s| s.chars().count() <= room).or(star)
         }
-        Key::Radius => format!("k {:.3}", d.k),
-        Key::V0 if narrow => String::new(),
-        Key::V0 if app.lab.scene.left.v0 != app.lab.scene.right.v0 => "sets both".into(),
-        Key::V0 if !narrow => "both balls".into(),
-        Key::V0Left | Key::V0Right if !narrow => "toward impact".into(),
-        Key::Height if !narrow => "run-up".into(),
-        Key::Restitution => match d.b_star {
-            None => "e < 2/5".into(),
-            Some(_) => String::new(),
-        },
-        _ => String::new(),
-    }
+        Key::Radius => pair("k", d.k, 3, room.min(7)),
+        Key::V0 if app.lab.scene.left.v0 != app.lab.scene.right.v0 => Some("sets both".into()),
+        Key::V0 => Some("both balls".into()),
+        Key::V0Left | Key::V0Right => Some("toward impact".into()),
+        Key::HeightLeft | Key::HeightRight => Some("run-up".into()),
+        Key::Restitution => d.b_star.is_none().then(|| "e < 2/5".into()),
+        _ => None,
+    };
+    text.filter(|s| s.chars().count() <= room)
+        .unwrap_or_default()
 }
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
@@ -99,10 +124,10 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             _ => value_text(app, p.key),
         };
         let marker = if selected { g.selected } else { " " };
-        let narrow = inner.width < 34;
+        let room = usize::from(inner.width).saturating_sub(1 + LABEL_W + VALUE_W + 2);
         let line = format!(
-            "{marker}{label:<9}{value:>11}  {}",
-            note(app, p.key, narrow)
+            "{marker}{label:<LABEL_W$}{value:>VALUE_W$}  {}",
+            note(app, p.key, room)
         );
         let style = if selected { theme.selected } else { theme.text };
         buf.set_stringn(inner.x, y, &line, inner.width as usize, style);

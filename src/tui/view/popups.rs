@@ -101,7 +101,7 @@ fn help_lines(width: usize, theme: &Theme) -> Vec<Line<'static>> {
             lines.push(Line::from(spans));
         }
     }
-    let mouse = "Mouse: click a parameter to select it, scroll on it to change it.";
+    let mouse = "Mouse: click a parameter to select it, scroll on it to change it; click or drag on the chart to seek.";
     for row in wrap(Line::from(format!(" {mouse}")), width) {
         lines.push(row.style(theme.dim));
     }
@@ -234,7 +234,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                 "Presets  (Enter loads, Esc or q closes)",
                 lines,
                 area,
-                area.width - 4,
+                area.width.saturating_sub(4),
                 buf,
                 theme,
             );

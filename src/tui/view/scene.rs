@@ -101,7 +101,8 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         }
     );
     let mut blk = block(title, theme);
-    // A legend for the marks that are not balls: the trails, and the measured ball.
+    // A legend for the marks that are not balls: the trails, and the measured ball
+    // (right); the pinned run's parameters (left) in what room is left.
     let ghost = app.lab.ghost_x(t).is_some();
     let (trail_mark, ghost_mark) = if g.ascii {
         (".", ":")
@@ -118,7 +119,23 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             theme.measured,
         ));
     }
-    blk = blk.title_bottom(ratatui::text::Line::from(legend).right_aligned());
+    // A pinned run's changes outrank the legend: on a narrow panel the trail's entry
+    // goes first, then the measured ball's, before the pinned line is cut.
+    let pinned_w = pinned_line(app, u16::MAX, theme).map_or(0, |l| l.chars().count());
+    let legend_width = |l: &[ratatui::text::Span]| l.iter().map(|s| s.width()).sum::<usize>();
+    while pinned_w > 0
+        && !legend.is_empty()
+        && pinned_w + legend_width(&legend) + 1 > usize::from(area.width.saturating_sub(4))
+    {
+        legend.remove(0);
+    }
+    let legend = ratatui::text::Line::from(legend);
+    let legend_w = legend.width() as u16;
+    blk = blk.title_bottom(legend.right_aligned());
+    let room = area.width.saturating_sub(4 + legend_w + 1);
+    if let Some(line) = pinned_line(app, room, theme) {
+        blk = blk.title_bottom(ratatui::text::Line::styled(line, theme.dim));
+    }
     let inner = blk.inner(area);
     blk.render(area, buf);
     if inner.height < 5 || inner.width < 20 {
@@ -168,6 +185,25 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     // A dot is `aspect` times taller than wide: 1 for braille, 2 for ASCII cells.
     let aspect = 2.0 * sx / sy;
     let cy = f64::from(ball_rows) * sy - r_dots / aspect - 0.5;
+    // The pinned run's balls (A/B): dashed ghosts, under the current balls' ink.
+    if let Some(p) = &app.lab.pinned {
+        let ps = p.solution.at(t);
+        let pr = p.scene.radius * scale * sx;
+        let pcy = f64::from(ball_rows) * sy - pr / aspect - 0.5;
+        for x in [ps.left.x, ps.right.x] {
+            let cx = col(x) * sx;
+            let n = ((std::f64::consts::TAU * pr) * 2.0).ceil().max(12.0) as usize;
+            for k in (0..n).filter(|k| k % 4 < 2) {
+                let a = k as f64 / n as f64 * std::f64::consts::TAU;
+                canvas.dot(
+                    (cx + pr * a.cos()) / sx,
+                    pcy + pr * a.sin() / aspect,
+                    theme.dim,
+                    ":",
+                );
+            }
+        }
+    }
     let balls = [
         (snap.left.x, angles[0], theme.left),
         (snap.right.x, angles[1], theme.right),
@@ -198,9 +234,22 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             );
         }
     }
-    // The measured left ball, where its v_cm puts it: a dotted ghost beside the model.
+    // The measured left ball where the track (or its v_cm) puts it: a dotted ghost
+    // beside the model, with the tracked mark's angle as its spoke.
     if let Some(xg) = app.lab.ghost_x(t) {
         let cx = col(xg) * sx;
+        if let Some(angle) = app.lab.ghost_angle(t) {
+            let m = (r_dots * 2.0).ceil().max(2.0) as usize;
+            for k in (0..=m).step_by(2) {
+                let f = k as f64 / m as f64 * r_dots;
+                canvas.dot(
+                    (cx + f * angle.cos()) / sx,
+                    cy + f * angle.sin() / aspect,
+                    theme.measured,
+                    ".",
+                );
+            }
+        }
         let n = ((std::f64::consts::TAU * r_dots) / 3.0).ceil().max(8.0) as usize;
         for k in 0..n {
             let a = k as f64 / n as f64 * std::f64::consts::TAU;
@@ -245,7 +294,8 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             tag
         };
         let w = tag.chars().count() as f64;
-        let c = (col(x) - w / 2.0).clamp(0.0, f64::from(inner.width) - w);
+        // Not `clamp`: a tag wider than the panel would make min > max and panic.
+        let c = (col(x) - w / 2.0).min(f64::from(inner.width) - w).max(0.0);
         let c = if i == 1 {
             // Keep the right tag clear of the left one when the balls touch.
             c.max(col(snap.left.x) + w / 2.0 + 1.0)
@@ -263,4 +313,28 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             );
         }
     }
+}
+
+/// The scene panel's bottom line while a run is pinned: which parameters it had that
+/// differ now, cut with "…" to `width` characters.
+fn pinned_line(app: &App, width: u16, theme: &Theme) -> Option<String> {
+    let p = app.lab.pinned.as_ref()?;
+    let changes = app.lab.pinned_changes();
+    let body = if changes.is_empty() {
+        "same parameters".to_string()
+    } else {
+        changes
+            .iter()
+            .map(|(name, was, now)| format!("{name} {was} → {now}"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let g = theme.glyphs;
+    let text = g.text(&format!(" pinned {} (dashed): {body} ", p.label));
+    let width = usize::from(width);
+    if text.chars().count() <= width {
+        return Some(text);
+    }
+    let cut: String = text.chars().take(width.saturating_sub(4)).collect();
+    Some(g.text(&format!("{}… ", cut.trim_end())))
 }

@@ -1,0 +1,131 @@
+//! Reading a user's file whole, safely: only a regular file (after following
+//! symlinks), checked against a size limit before a byte is read, so `/dev/zero`, a
+//! FIFO or a directory fail at once instead of hanging or filling memory.
+
+use std::io::Read;
+use std::path::Path;
+
+/// Largest user file (measured data, preset) read: far above any real series or
+/// preset, far below what would strain memory.
+pub const MAX_FILE_BYTES: u64 = 64 * 1024 * 1024;
+
+/// Why a user file was not read; one line naming the file and what is allowed.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("cannot read {what} {path}: {why}")]
+pub struct FileError {
+    /// What the file is for (`--data`, `preset file`).
+    pub what: String,
+    pub path: String,
+    pub why: String,
+}
+
+/// The kind of a non-regular file, for messages ("a FIFO", "a directory").
+pub fn kind(meta: &std::fs::Metadata) -> &'static str {
+    let t = meta.file_type();
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        if t.is_fifo() {
+            return "a FIFO";
+        }
+        if t.is_char_device() || t.is_block_device() {
+            return "a device";
+        }
+        if t.is_socket() {
+            return "a socket";
+        }
+    }
+    if t.is_dir() {
+        "a directory"
+    } else {
+        "not a regular file"
+    }
+}
+
+/// Reads `path` as UTF-8 text if it is a regular file of at most `limit` bytes;
+/// `what` names the file's role in errors.
+pub fn read_user_file(path: &Path, what: &str, limit: u64) -> Result<String, FileError> {
+    let fail = |why: String| FileError {
+        what: what.to_string(),
+        path: path.display().to_string(),
+        why,
+    };
+    let too_big = |size: String| {
+        fail(format!(
+            "it has {size} bytes, allowed a file of at most {limit} bytes ({} MiB)",
+            limit / (1024 * 1024)
+        ))
+    };
+    // Checked before opening: opening a FIFO would block until a writer comes.
+    let meta = std::fs::metadata(path).map_err(|e| fail(e.to_string()))?;
+    if !meta.is_file() {
+        return Err(fail(format!(
+            "it is {}, allowed a regular file",
+            kind(&meta)
+        )));
+    }
+    if meta.len() > limit {
+        return Err(too_big(meta.len().to_string()));
+    }
+    let file = std::fs::File::open(path).map_err(|e| fail(e.to_string()))?;
+    // The path may have been swapped between the check and the open.
+    let meta = file.metadata().map_err(|e| fail(e.to_string()))?;
+    if !meta.is_file() {
+        return Err(fail(format!(
+            "it is {}, allowed a regular file",
+            kind(&meta)
+        )));
+    }
+    // A file growing while read is still cut at the limit.
+    let mut bytes = Vec::with_capacity(meta.len().min(limit) as usize);
+    file.take(limit + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| fail(e.to_string()))?;
+    if bytes.len() as u64 > limit {
+        return Err(too_big(format!("more than {limit}")));
+    }
+    String::from_utf8(bytes).map_err(|e| {
+        fail(format!(
+            "byte {} is not UTF-8 text, allowed a UTF-8 text file",
+            e.utf8_error().valid_up_to() + 1
+        ))
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scratch(name: &str) -> std::path::PathBuf {
+        let dir = std::env::temp_dir().join(format!("groovelab-file-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        dir.join(name)
+    }
+
+    #[test]
+    fn regular_files_are_read_others_refused_at_once() {
+        let p = scratch("ok.csv");
+        std::fs::write(&p, "t,v_cm,v_t\n").unwrap();
+        assert_eq!(read_user_file(&p, "--data", 100).unwrap(), "t,v_cm,v_t\n");
+        let e = read_user_file(&p, "--data", 5).unwrap_err().to_string();
+        assert!(e.contains("at most 5 bytes"), "{e}");
+        let e = read_user_file(p.parent().unwrap(), "--data", 100).unwrap_err();
+        assert!(e.to_string().contains("a directory"), "{e}");
+        #[cfg(unix)]
+        {
+            for dev in ["/dev/zero", "/dev/urandom", "/dev/null"] {
+                let e = read_user_file(Path::new(dev), "--data", MAX_FILE_BYTES).unwrap_err();
+                assert!(e.to_string().contains("a device"), "{e}");
+            }
+            let link = scratch("link.csv");
+            let _ = std::fs::remove_file(&link);
+            std::os::unix::fs::symlink(&p, &link).unwrap();
+            assert!(read_user_file(&link, "--data", 100).is_ok());
+        }
+        std::fs::write(&p, [b'a', 0xff, b'b']).unwrap();
+        let e = read_user_file(&p, "--data", 100).unwrap_err().to_string();
+        assert!(e.contains("byte 2 is not UTF-8"), "{e}");
+        let e = read_user_file(&scratch("missing"), "--data", 100).unwrap_err();
+        assert!(e.to_string().starts_with("cannot read --data "), "{e}");
+    }
+}

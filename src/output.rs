@@ -1,0 +1,317 @@
+//! The one way groovelab writes a file (`--output` of compare, fit and sweep, the
+//! app's saved presets and exports): a temporary file beside the target, renamed
+//! over it only when complete and not interrupted. The target must be a regular file
+//! or a new path (never a symlink, FIFO, device or directory); a replaced file keeps
+//! its mode (and its owner and group where the user may set them); the temporary
+//! file is removed on every error and on Ctrl-C, SIGTERM or SIGHUP.
+//!
+//! The rule for interruptions is one thing: if a stop signal arrives before the
+//! output is committed (renamed into place, or handed to stdout), the run exits 130
+//! and nothing is written.
+
+use std::fs::{File, Metadata, OpenOptions};
+use std::io::{self, BufWriter, Write};
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Arc, Once, OnceLock};
+
+use crate::input::file::kind;
+
+/// Why an output was not written.
+#[derive(Debug, thiserror::Error)]
+pub enum OutputError {
+    #[error("cannot write {path}: it is {kind}, allowed a regular file or a new path")]
+    NotRegular { path: String, kind: &'static str },
+    #[error("cannot write {path}: {reason}")]
+    Io { path: String, reason: String },
+    #[error("interrupted: nothing was written")]
+    Interrupted,
+}
+
+fn stop_arc() -> &'static Arc<AtomicBool> {
+    static STOP: OnceLock<Arc<AtomicBool>> = OnceLock::new();
+    STOP.get_or_init(|| Arc::new(AtomicBool::new(false)))
+}
+
+/// The process-wide stop flag that [`watch_signals`] sets.
+pub fn stop_flag() -> &'static AtomicBool {
+    stop_arc()
+}
+
+/// Whether a stop signal has arrived since [`watch_signals`].
+pub fn interrupted() -> bool {
+    stop_flag().load(Ordering::Relaxed)
+}
+
+/// From now on SIGINT, SIGTERM and SIGHUP set [`stop_flag`] instead of killing the
+/// process, so a long run can stop cleanly and remove its temporary file. Called by
+/// the commands that write (before their slow part, or just before writing); idempotent.
+pub fn watch_signals() {
+    static ONCE: Once = Once::new();
+    ONCE.call_once(|| {
+        #[cfg(unix)]
+        for signal in [
+            signal_hook::consts::SIGINT,
+            signal_hook::consts::SIGTERM,
+            signal_hook::consts::SIGHUP,
+        ] {
+            let _ = signal_hook::flag::register(signal, Arc::clone(stop_arc()));
+        }
+        #[cfg(not(unix))]
+        {
+            let _ =
+                signal_hook::flag::register(signal_hook::consts::SIGINT, Arc::clone(stop_arc()));
+        }
+    });
+}
+
+/// The target's metadata if it is an existing regular file, `None` if nothing is
+/// there; an error for anything else (a symlink is refused, not followed: replacing
+/// it would turn the link into a file).
+fn check_target(path: &Path) -> Result<Option<Metadata>, OutputError> {
+    match std::fs::symlink_metadata(path) {
+        Err(e) if e.kind() == io::ErrorKind::NotFound => Ok(None),
+        Err(e) => Err(io_error(path, &e)),
+        Ok(m) if m.file_type().is_symlink() => Err(OutputError::NotRegular {
+            path: path.display().to_string(),
+            kind: "a symlink",
+        }),
+        Ok(m) if !m.is_file() => Err(OutputError::NotRegular {
+            path: path.display().to_string(),
+            kind: kind(&m),
+        }),
+        Ok(m) => Ok(Some(m)),
+    }
+}
+
+/// Checks an output path before the work that fills it: a regular file or a new
+/// path, else the error `AtomicFile::create` would give after the work.
+pub fn check_output(path: &Path) -> Result<(), OutputError> {
+    check_target(path).map(|_| ())
+}
+
+fn io_error(path: &Path, e: &io::Error) -> OutputError {
+    OutputError::Io {
+        path: path.display().to_string(),
+        reason: e.to_string(),
+    }
+}
+
+/// A file being written: bytes go to `.NAME.PID.tmp` beside the target; [`commit`]
+/// renames it over the target; dropping it uncommitted removes it.
+///
+/// [`commit`]: AtomicFile::commit
+pub struct AtomicFile {
+    target: PathBuf,
+    tmp: PathBuf,
+    out: Option<BufWriter<File>>,
+}
+
+impl AtomicFile {
+    /// Checks the target and creates the temporary file (with the replaced file's
+    /// mode, or the usual mode of a new file).
+    pub fn create(target: &Path) -> Result<AtomicFile, OutputError> {
+        let old = check_target(target)?;
+        let name = target
+            .file_name()
+            .ok_or_else(|| OutputError::Io {
+                path: target.display().to_string(),
+                reason: "it names no file, allowed a file path".into(),
+            })?
+            .to_string_lossy()
+            .into_owned();
+        let dir = target
+            .parent()
+            .filter(|d| !d.as_os_str().is_empty())
+            .unwrap_or(Path::new("."));
+        let pid = std::process::id();
+        // `create_new`: never truncate someone else's file of the same name.
+        let mut attempt = 0;
+        let (tmp, file) = loop {
+            let suffix = if attempt == 0 {
+                String::new()
+            } else {
+                format!(".{attempt}")
+            };
+            let tmp = dir.join(format!(".{name}.{pid}{suffix}.tmp"));
+            match OpenOptions::new().write(true).create_new(true).open(&tmp) {
+                Ok(f) => break (tmp, f),
+                Err(e) if e.kind() == io::ErrorKind::AlreadyExists && attempt < 100 => {
+                    attempt += 1;
+                }
+                Err(e) => return Err(io_error(target, &e)),
+            }
+        };
+        let me = AtomicFile {
+            target: target.to_path_buf(),
+            tmp,
+            out: Some(BufWriter::with_capacity(1 << 16, file)),
+        };
+        if let Some(old) = old {
+            let file = me.out.as_ref().expect("just made").get_ref();
+            file.set_permissions(old.permissions())
+                .map_err(|e| io_error(target, &e))?;
+            // The owner and group too where allowed (root, or a group of the user's);
+            // otherwise the file becomes the user's, as any rewrite would make it.
+            #[cfg(unix)]
+            {
+                use std::os::unix::fs::MetadataExt;
+                let _ = std::os::unix::fs::fchown(file, Some(old.uid()), Some(old.gid()));
+                let _ = std::os::unix::fs::fchown(file, None, Some(old.gid()));
+            }
+        }
+        Ok(me)
+    }
+
+    /// The temporary file's path (for tests and messages).
+    pub fn temp_path(&self) -> &Path {
+        &self.tmp
+    }
+
+    /// Writes all of `bytes`, with errors naming the target.
+    pub fn write_bytes(&mut self, bytes: &[u8]) -> Result<(), OutputError> {
+        let out = self.out.as_mut().expect("open until commit");
+        out.write_all(bytes).map_err(|e| io_error(&self.target, &e))
+    }
+
+    /// Flushes, syncs and renames over the target, unless `stop` is set: then the
+    /// temporary file is removed and nothing is written.
+    pub fn commit(mut self, stop: &AtomicBool) -> Result<(), OutputError> {
+        let out = self.out.take().expect("open until commit");
+        let file = out
+            .into_inner()
+            .map_err(|e| io_error(&self.target, e.error()))?;
+        file.sync_all().map_err(|e| io_error(&self.target, &e))?;
+        drop(file);
+        if stop.load(Ordering::Relaxed) {
+            return Err(OutputError::Interrupted);
+        }
+        // The target may have changed while we wrote (a FIFO put in its place).
+        check_target(&self.target)?;
+        std::fs::rename(&self.tmp, &self.target).map_err(|e| io_error(&self.target, &e))?;
+        self.tmp = PathBuf::new();
+        Ok(())
+    }
+}
+
+impl Write for AtomicFile {
+    fn write(&mut self, buf: &[u8]) -> io::Result<usize> {
+        self.out.as_mut().expect("open until commit").write(buf)
+    }
+    fn flush(&mut self) -> io::Result<()> {
+        self.out.as_mut().expect("open until commit").flush()
+    }
+}
+
+impl Drop for AtomicFile {
+    fn drop(&mut self) {
+        drop(self.out.take());
+        if !self.tmp.as_os_str().is_empty() {
+            let _ = std::fs::remove_file(&self.tmp);
+        }
+    }
+}
+
+/// Writes `bytes` to `path` atomically (see the module): the target is replaced only
+/// by the complete bytes. It changes no signal handling (the app can call it); a
+/// command that calls [`watch_signals`] first gets "a stop signal during the write
+/// leaves nothing" too.
+pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
+    let mut file = AtomicFile::create(path)?;
+    file.write_bytes(bytes)?;
+    file.commit(stop_flag())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scratch(test: &str) -> PathBuf {
+        let dir =
+            std::env::temp_dir().join(format!("groovelab-output-{}-{test}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+
+    fn leftovers(dir: &Path) -> Vec<String> {
+        std::fs::read_dir(dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .filter(|n| n.ends_with(".tmp"))
+            .collect()
+    }
+
+    #[test]
+    fn writes_new_files_and_replaces_regular_ones_keeping_their_mode() {
+        let dir = scratch("replace");
+        let p = dir.join("out.csv");
+        write_atomically(&p, b"one\n").unwrap();
+        assert_eq!(std::fs::read(&p).unwrap(), b"one\n");
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::PermissionsExt;
+            std::fs::set_permissions(&p, std::fs::Permissions::from_mode(0o640)).unwrap();
+            write_atomically(&p, b"two\n").unwrap();
+            let mode = std::fs::metadata(&p).unwrap().permissions().mode() & 0o7777;
+            assert_eq!(mode, 0o640);
+            // A read-only file is replaced too, and stays read-only.
+            std::fs::set_permissions(&p, std::fs::Permissions::from_mode(0o444)).unwrap();
+            write_atomically(&p, b"three\n").unwrap();
+            let mode = std::fs::metadata(&p).unwrap().permissions().mode() & 0o7777;
+            assert_eq!(mode, 0o444);
+        }
+        assert_eq!(std::fs::read(&p).unwrap(), b"three\n");
+        assert!(leftovers(&dir).is_empty());
+    }
+
+    #[test]
+    fn refuses_targets_that_are_not_regular_files() {
+        let dir = scratch("nonregular");
+        let e = write_atomically(&dir, b"x").unwrap_err();
+        assert!(e.to_string().contains("a directory"), "{e}");
+        #[cfg(unix)]
+        {
+            let e = write_atomically(Path::new("/dev/null"), b"x").unwrap_err();
+            assert!(e.to_string().contains("a device"), "{e}");
+            let real = dir.join("real.csv");
+            std::fs::write(&real, "keep").unwrap();
+            let link = dir.join("link.csv");
+            std::os::unix::fs::symlink(&real, &link).unwrap();
+            let e = write_atomically(&link, b"x").unwrap_err();
+            assert!(e.to_string().contains("a symlink"), "{e}");
+            assert_eq!(std::fs::read_to_string(&real).unwrap(), "keep");
+            assert!(
+                std::fs::symlink_metadata(&link)
+                    .unwrap()
+                    .file_type()
+                    .is_symlink()
+            );
+        }
+        let e = write_atomically(&dir.join("no-such-dir").join("x.csv"), b"x").unwrap_err();
+        assert!(e.to_string().starts_with("cannot write "), "{e}");
+        assert!(leftovers(&dir).is_empty());
+    }
+
+    #[test]
+    fn a_stop_before_commit_writes_nothing_and_removes_the_temp_file() {
+        let dir = scratch("stop");
+        let p = dir.join("out.csv");
+        std::fs::write(&p, "old").unwrap();
+        let mut f = AtomicFile::create(&p).unwrap();
+        f.write_bytes(b"new, complete").unwrap();
+        let tmp = f.temp_path().to_path_buf();
+        assert!(tmp.exists());
+        // Ctrl-C after all the work, before the rename.
+        let stop = AtomicBool::new(true);
+        assert!(matches!(f.commit(&stop), Err(OutputError::Interrupted)));
+        assert!(!tmp.exists());
+        assert_eq!(std::fs::read_to_string(&p).unwrap(), "old");
+        // An error part-way (dropped uncommitted) removes it too.
+        let mut f = AtomicFile::create(&p).unwrap();
+        f.write_bytes(b"half").unwrap();
+        drop(f);
+        assert!(leftovers(&dir).is_empty());
+        assert_eq!(std::fs::read_to_string(&p).unwrap(), "old");
+    }
+}

@@ -1,0 +1,189 @@
+//! What the exact run does, in words, for every front end: the left ball's recovery
+//! after the first impact told by the closed forms only where the run bears them out
+//! (it rolls again, or rests, at t' before anything else happens), else told by the
+//! run's own events; and the regime's verdict with its margin against a data set's
+//! rest band. The CLI table and the app's Why panel both print these.
+
+use crate::physics::derived::{Derived, Recovery, Regime};
+use crate::physics::model::Phase;
+use crate::physics::solution::{EventKind, Solution, Who};
+
+/// The left ball after the first impact.
+#[derive(Clone, Debug, PartialEq)]
+pub enum After {
+    /// It rolls again (or rests) at t' before any other event of the pair: the
+    /// closed forms (t', v', x', t_r, t_t) describe the run.
+    Recovers(Recovery),
+    /// Something comes first (the next impact, a push): the run's own events, with
+    /// the closed form's t' it never reaches.
+    Interrupted(Interruption),
+}
+
+/// What happens instead of the closed-form recovery.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Interruption {
+    /// The closed form's t', which the run does not reach sliding freely.
+    pub t_roll_closed_form: f64,
+    /// What ends the free slide, and when: the next impact or the start of a push.
+    pub first: (EventKind, f64),
+    /// Accumulation point of the impacts, and whether the pair then rests there.
+    pub accumulation: Option<(f64, bool)>,
+    /// Both balls at rest from this time on, and whether they were pressed together
+    /// until then.
+    pub rest_from: Option<(f64, bool)>,
+    /// The left ball rolls on at this speed from this time (when it ends rolling).
+    pub rolls_on: Option<(f64, f64)>,
+}
+
+/// How the run goes on after the first impact; `None` without an impact or friction.
+pub fn after_first_impact(sol: &Solution, derived: &Derived) -> Option<After> {
+    let rec = derived.left_after_impact?;
+    let left = |who: Who| who != Who::Right;
+    // The first thing after the impact that ends the left ball's free slide.
+    let first = sol.events.iter().find(|e| {
+        e.t > 0.0
+            && match e.kind {
+                EventKind::Rolling | EventKind::Rest => left(e.ball),
+                EventKind::Collision | EventKind::ContactStart => true,
+                EventKind::ZenoRest | EventKind::ZenoContact => true,
+                _ => false,
+            }
+    })?;
+    let matches_t_roll = (first.t - rec.t_roll).abs() <= 1e-9 * (1.0 + rec.t_roll);
+    if matches!(first.kind, EventKind::Rolling | EventKind::Rest) && matches_t_roll {
+        return Some(After::Recovers(rec));
+    }
+    let accumulation = sol.accumulation.map(|t| {
+        let rests = sol
+            .events
+            .iter()
+            .any(|e| e.kind == EventKind::ZenoRest && (e.t - t).abs() <= 1e-9 * (1.0 + t));
+        (t, rests)
+    });
+    let last = sol.segments.last()?;
+    let rest_from = (last.phase == [Phase::Resting, Phase::Resting]).then(|| {
+        let pressed = sol
+            .segments
+            .iter()
+            .rev()
+            .nth(1)
+            .is_some_and(|s| s.contact_force > 0.0);
+        (last.t0, pressed)
+    });
+    let rolls_on = (last.phase[0] == Phase::Rolling && last.start[0].v != 0.0)
+        .then_some((last.t0, last.start[0].v));
+    Some(After::Interrupted(Interruption {
+        t_roll_closed_form: rec.t_roll,
+        first: (first.kind, first.t),
+        accumulation,
+        rest_from,
+        rolls_on,
+    }))
+}
+
+impl Interruption {
+    /// The story in short clauses, for a line each or joined with "; ". `infinity` is
+    /// the glyph for ∞ (the app's ASCII mode has its own).
+    pub fn clauses(&self, infinity: &str) -> Vec<String> {
+        let mut out = Vec::new();
+        let (kind, t) = self.first;
+        let before = format!(
+            "before the closed form's t' = {:.4} s",
+            self.t_roll_closed_form
+        );
+        out.push(match kind {
+            EventKind::ContactStart => {
+                format!("pressed against the other ball from t = {t:.4} s, {before}")
+            }
+            EventKind::ZenoRest | EventKind::ZenoContact => {
+                format!("impacts accumulate at T{infinity} = {t:.4} s, {before}")
+            }
+            _ => format!("slides into the next impact at t = {t:.4} s, {before}"),
+        });
+        if let Some((t, rests)) = self.accumulation
+            && !matches!(kind, EventKind::ZenoRest | EventKind::ZenoContact)
+        {
+            out.push(format!(
+                "impacts accumulate at T{infinity} = {t:.4} s{}",
+                if rests { ": at rest in contact" } else { "" }
+            ));
+        }
+        match (self.rest_from, self.rolls_on) {
+            (Some((t, true)), _) => out.push(format!("pressed together, at rest from {t:.4} s")),
+            (Some((t, false)), _) => out.push(format!("both at rest from {t:.4} s")),
+            (None, Some((t, v))) => out.push(format!("rolls on at {v:+.4} m/s from {t:.4} s")),
+            (None, None) => {}
+        }
+        out
+    }
+}
+
+/// The regime of the first impact with its margin: the left ball's v' (when the closed
+/// form gives one), and against a data set's rest band (speeds within ± `band` of zero
+/// cannot be told from rest).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Verdict {
+    pub regime: Regime,
+    /// The left ball's rolling speed after the impact, positive back toward the other.
+    pub v_roll: Option<f64>,
+    pub band: Option<f64>,
+}
+
+impl Verdict {
+    /// The verdict on the run `sol` of a scene with `derived` values; v' only where
+    /// the run really rolls again at t' ([`after_first_impact`]).
+    pub fn of(sol: &Solution, derived: &Derived, band: Option<f64>) -> Verdict {
+        let v_roll = match after_first_impact(sol, derived) {
+            Some(After::Recovers(r)) => Some(r.v_roll),
+            _ => None,
+        };
+        Verdict {
+            regime: derived.regime,
+            v_roll,
+            band,
+        }
+    }
+
+    /// True when v' lies inside the rest band: the data cannot tell it from rest.
+    pub fn indistinguishable_from_rest(&self) -> bool {
+        match (self.v_roll, self.band) {
+            (Some(v), Some(b)) => self.regime != Regime::Rest && v.abs() <= b,
+            _ => false,
+        }
+    }
+
+    /// The margin in words: "v' = +0.028 m/s, within the data's ±0.042 m/s rest band:
+    /// indistinguishable from rest" (empty without a v'). `pm` is the glyph for ±.
+    pub fn margin(&self, pm: &str) -> String {
+        let Some(v) = self.v_roll else {
+            return String::new();
+        };
+        let mut s = format!("v' = {v:+.3} m/s");
+        if let Some(b) = self.band {
+            if self.indistinguishable_from_rest() {
+                s += &format!(
+                    ", within the data's {pm}{b:.3} m/s rest band: indistinguishable from rest"
+                );
+            } else if self.regime != Regime::Rest {
+                s += &format!(", outside the data's {pm}{b:.3} m/s rest band");
+            }
+        }
+        s
+    }
+
+    /// "recollide (v' = +0.028 m/s, within …: indistinguishable from rest)".
+    pub fn text(&self, pm: &str) -> String {
+        let margin = self.margin(pm);
+        if margin.is_empty() {
+            self.regime.name().to_string()
+        } else {
+            format!("{} ({margin})", self.regime.name())
+        }
+    }
+
+    /// Whether an observed regime agrees with this prediction: the same, or rest seen
+    /// where the prediction cannot be told from rest.
+    pub fn agrees_with(&self, observed: Regime) -> bool {
+        observed == self.regime || (observed == Regime::Rest && self.indistinguishable_from_rest())
+    }
+}

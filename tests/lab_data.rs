@@ -1,0 +1,202 @@
+//! A position track in the lab and on the command line (issue 12's wiring): the scene
+//! shown derives its velocities, the track flags reach the reader, the ghost replays
+//! the tracked centre and mark, the charts and the Fit panel show what was derived.
+
+use std::process::Command;
+
+use groovelab::cli::{self, DataArgs, RenderArgs, SceneArgs, TrackRole, render_with};
+use groovelab::input::params::{Key, SceneSpec};
+use groovelab::tui::app::Library;
+
+const EXAMPLE: &str = "docs/video/paper-b4.9-tracker.txt";
+
+fn data(extra: impl FnOnce(&mut DataArgs)) -> DataArgs {
+    let mut d = DataArgs {
+        data: Some(EXAMPLE.into()),
+        ..DataArgs::default()
+    };
+    extra(&mut d);
+    d
+}
+
+fn scene(values: SceneSpec) -> SceneArgs {
+    SceneArgs {
+        preset: Some("paper-b4.9".into()),
+        values,
+    }
+}
+
+fn no_user_presets() -> Library {
+    let dir =
+        std::env::temp_dir().join(format!("groovelab-labdata-presets-{}", std::process::id()));
+    Library::at(Some(dir))
+}
+
+fn groovelab(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_groovelab"))
+        .args(args)
+        .output()
+        .unwrap()
+}
+
+#[test]
+fn the_lab_derives_v_t_with_the_scene_shown_overrides_included() {
+    let plain = cli::lab(&scene(SceneSpec::default()), &data(|_| {})).unwrap();
+    let narrow = cli::lab(
+        &scene(SceneSpec::default().with(Key::Width, 0.044)),
+        &data(|_| {}),
+    )
+    .unwrap();
+    let (a, b) = (plain.measured().unwrap(), narrow.measured().unwrap());
+    assert!(a.x.is_some(), "a position track");
+    // v_t = (dθ/dt) r: the same angle track, scaled by the ratio of the contact radii.
+    let ratio = narrow.derived.r / plain.derived.r;
+    assert!((ratio - 1.0).abs() > 0.05, "the override changes r");
+    let mut compared = 0;
+    for (x, y) in a.v_t.iter().zip(&b.v_t) {
+        if x.is_finite() && x.abs() > 0.01 {
+            assert!((y / x - ratio).abs() < 1e-9, "{y} / {x} against {ratio}");
+            compared += 1;
+        }
+    }
+    assert!(compared > 50, "{compared}");
+    assert_eq!(a.v_cm, b.v_cm, "v_cm does not depend on r");
+}
+
+#[test]
+fn the_ghost_replays_the_tracked_centre_and_mark() {
+    let lab = cli::lab(&scene(SceneSpec::default()), &data(|_| {})).unwrap();
+    let m = lab.measured().unwrap();
+    let (x, angle) = (m.x.as_ref().unwrap(), m.angle.as_ref().unwrap());
+    let r = lab.scene.radius;
+    for i in (0..m.t.len()).step_by(7) {
+        let g = lab.ghost_x(m.t[i]).unwrap();
+        assert!(
+            (g - (x[i] - r)).abs() < 1e-12,
+            "t = {}: {g} against {}",
+            m.t[i],
+            x[i] - r
+        );
+        if angle[i].is_finite() {
+            let a = lab.ghost_angle(m.t[i]).unwrap();
+            let want = lab.solution.angle_at(0.0)[0] + angle[i];
+            assert!((a - want).abs() < 1e-12, "t = {}", m.t[i]);
+        }
+    }
+    // Between two frames: linear between them; outside the series: none.
+    let mid = 0.5 * (m.t[10] + m.t[11]);
+    let g = lab.ghost_x(mid).unwrap();
+    assert!((g - (0.5 * (x[10] + x[11]) - r)).abs() < 1e-12);
+    assert_eq!(lab.ghost_x(m.t[0] - 0.01), None);
+    // The tracked ghost stays within a few mm of the model's ball it was made from.
+    let model = lab.solution.at(0.1).left.x;
+    assert!((lab.ghost_x(0.1).unwrap() - model).abs() < 0.005);
+}
+
+#[test]
+fn the_track_flags_reach_the_reader() {
+    // Swapped roles: the rim mark's track as the centre finds another motion.
+    let swapped = cli::lab(
+        &scene(SceneSpec::default()),
+        &data(|d| {
+            d.track = vec![
+                (TrackRole::Centre, "mass B".into()),
+                (TrackRole::Mark, "mass A".into()),
+            ]
+        }),
+    )
+    .unwrap();
+    let plain = cli::lab(&scene(SceneSpec::default()), &data(|_| {})).unwrap();
+    assert_ne!(swapped.measured().unwrap().x, plain.measured().unwrap().x);
+    let err = cli::lab(
+        &scene(SceneSpec::default()),
+        &data(|d| d.track = vec![(TrackRole::Centre, "nope".into())]),
+    )
+    .err()
+    .unwrap()
+    .to_string();
+    assert!(
+        err.contains("no track 'nope'") && err.contains("mass A"),
+        "{err}"
+    );
+    // --window sets the derivative's half-width; --length-unit the file's unit.
+    let json = |args: &[&str]| -> serde_json::Value {
+        let mut all = vec![
+            "fit",
+            "--preset",
+            "paper-b4.9",
+            "--data",
+            EXAMPLE,
+            "--format",
+            "json",
+        ];
+        all.extend_from_slice(args);
+        let out = groovelab(&all);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        serde_json::from_slice(&out.stdout).unwrap()
+    };
+    let w = json(&["--window", "50ms"]);
+    assert_eq!(w["track"]["half_window_frames"], 6);
+    let mm = json(&["--length-unit", "mm"]);
+    let m = json(&[]);
+    let (a, b) = (
+        mm["track"]["impact_x"].as_f64().unwrap(),
+        m["track"]["impact_x"].as_f64().unwrap(),
+    );
+    assert!((a - b * 1e-3).abs() < 1e-12, "{a} {b}");
+    let out = groovelab(&[
+        "fit",
+        "--preset",
+        "paper-b4.9",
+        "--data",
+        EXAMPLE,
+        "--window",
+        "-5ms",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    let help = String::from_utf8(groovelab(&["fit", "--help"]).stdout).unwrap();
+    for flag in [
+        "--track <ROLE=NAME>",
+        "--length-unit <UNIT>",
+        "--window <T>",
+    ] {
+        assert!(help.contains(flag), "{flag}\n{help}");
+    }
+}
+
+fn render(keys: Option<&str>, at: f64, ascii: bool) -> String {
+    render_with(
+        &scene(SceneSpec::default()),
+        &data(|_| {}),
+        &RenderArgs {
+            at: Some(at),
+            size: (120, 40),
+            keys: keys.map(str::to_string),
+        },
+        ascii,
+        no_user_presets(),
+    )
+    .unwrap()
+}
+
+#[test]
+fn charts_show_error_bars_and_the_fit_panel_both_fits() {
+    let screen = render(Some("f"), 0.1, false);
+    assert!(screen.contains('¦'), "error bars\n{screen}");
+    for want in ["velocities", "positions", "recollide", "agrees"] {
+        assert!(screen.contains(want), "{want}\n{screen}");
+    }
+    assert!(
+        !screen.contains("paper: |a_cm|"),
+        "not the paper's data\n{screen}"
+    );
+    insta::assert_snapshot!("render-tracked-video-fit-120x40", screen);
+    let ascii = render(None, 0.1, true);
+    assert!(ascii.contains('!'));
+    assert!(ascii.is_ascii());
+    insta::assert_snapshot!("render-tracked-video-120x40-ascii", ascii);
+}

@@ -1,0 +1,268 @@
+//! Long analyses are bounded and can be stopped: `compare` skips levels over its step
+//! budget (saying why), `fit` thins a long series to at most `MAX_MODEL_POINTS`, both
+//! stop soon after a `Progress` asks and give the same result as before when it never
+//! does; Ctrl-C on the command line exits 130 and writes nothing.
+
+use std::process::{Command, Stdio};
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::time::{Duration, Instant};
+
+use groovelab::input::data::Measured;
+use groovelab::input::preset::Preset;
+use groovelab::methods::{Method, Settings};
+use groovelab::physics::scene::Span;
+use groovelab::study::{Cancelled, Progress, Quiet, compare, fit};
+
+/// Counts ticks and asks to stop once `after` of them have passed.
+struct StopAfter {
+    ticks: AtomicU64,
+    after: u64,
+}
+
+impl Progress for StopAfter {
+    fn tick(&self, _done: u64, _total: u64) {
+        self.ticks.fetch_add(1, Ordering::Relaxed);
+    }
+    fn cancelled(&self) -> bool {
+        self.ticks.load(Ordering::Relaxed) >= self.after
+    }
+}
+
+fn stop_after(after: u64) -> StopAfter {
+    StopAfter {
+        ticks: AtomicU64::new(0),
+        after,
+    }
+}
+
+fn paper() -> (groovelab::physics::scene::Scene, Span, Measured) {
+    let preset = Preset::load("paper-b4.9").unwrap();
+    let (scene, span) = preset.spec.resolve().unwrap();
+    (scene, span, preset.measured.unwrap())
+}
+
+#[test]
+fn compare_skips_levels_over_its_budget_and_says_why() {
+    let (scene, span, _) = paper();
+    // A small budget (the settings' own step budget lowers compare's) on the paper's
+    // 1.2 s span: h = 1e-4 s and finer need over 10 000 steps and are skipped unrun.
+    let base = Settings {
+        max_steps: 10_000,
+        ..Settings::default()
+    };
+    let rows = compare::sweep(
+        &scene,
+        &span,
+        &[Method::Exact, Method::Euler],
+        &base,
+        &Quiet,
+    )
+    .unwrap();
+    let skipped: Vec<_> = rows
+        .iter()
+        .filter(|r| r.note.as_deref().is_some_and(|n| n.starts_with("skipped:")))
+        .collect();
+    // 10^-4, 10^-4.5, 10^-5, 10^-5.5 and 10^-6 s.
+    assert_eq!(skipped.len(), 5, "{rows:#?}");
+    for r in &skipped {
+        assert_eq!(r.status, compare::Status::Stalled);
+        assert_eq!(r.steps, 0);
+        let note = r.note.as_deref().unwrap();
+        assert!(
+            note.contains("over the budget of 10000 steps per run"),
+            "{note}"
+        );
+    }
+    assert!(rows.iter().all(|r| r.steps <= 10_000));
+}
+
+#[test]
+fn every_preset_runs_its_finest_compare_level_within_the_budget() {
+    // So the budget changes no default result: the finest fixed step (1 µs) over each
+    // preset's span needs fewer steps than the budget.
+    let finest = *compare::default_sweep(Method::Euler).last().unwrap();
+    for p in Preset::built_in() {
+        let (scene, span) = p.spec.resolve().unwrap();
+        let sol = groovelab::physics::engine::solve(&scene, &span);
+        let needed = ((sol.t_end - sol.t_start) / finest).ceil();
+        assert!(
+            needed <= compare::STEP_BUDGET as f64,
+            "{}: {needed} steps",
+            p.name
+        );
+    }
+}
+
+#[test]
+fn compare_stops_when_asked_and_matches_when_not() {
+    let (scene, span, _) = paper();
+    let methods = [Method::Exact, Method::Rk45, Method::Moreau];
+    let stop = stop_after(3);
+    let started = Instant::now();
+    let cancelled = compare::sweep(&scene, &span, &methods, &Settings::default(), &stop);
+    assert_eq!(cancelled, Err(Cancelled));
+    // Three rows (the first tick is 0 of N), then the stop is seen within a run.
+    assert!(stop.ticks.load(Ordering::Relaxed) <= 4);
+    assert!(started.elapsed() < Duration::from_secs(60));
+
+    // Untimed rows are deterministic: the same with and without a watching Progress.
+    let exact = groovelab::physics::engine::solve(&scene, &span);
+    let settings = Settings {
+        step: 1e-4,
+        ..Settings::default()
+    };
+    let watched = compare::measure(
+        Method::Moreau,
+        &scene,
+        &span,
+        &settings,
+        &exact,
+        false,
+        &stop_after(u64::MAX),
+    )
+    .unwrap();
+    let quiet = compare::measure(
+        Method::Moreau,
+        &scene,
+        &span,
+        &settings,
+        &exact,
+        false,
+        &Quiet,
+    )
+    .unwrap();
+    assert_eq!(watched, quiet);
+}
+
+#[test]
+fn a_cancelled_measure_stops_inside_the_run() {
+    let (scene, span, _) = paper();
+    let exact = groovelab::physics::engine::solve(&scene, &span);
+    // 1.2 million Euler steps; cancelled from the start, it returns after the first
+    // check (4096 steps), long before the run would end.
+    let settings = Settings {
+        step: 1e-6,
+        ..Settings::default()
+    };
+    let started = Instant::now();
+    let r = compare::measure(
+        Method::Euler,
+        &scene,
+        &span,
+        &settings,
+        &exact,
+        true,
+        &stop_after(0),
+    );
+    assert_eq!(r, Err(Cancelled));
+    assert!(started.elapsed() < Duration::from_secs(2));
+}
+
+/// The paper's series resampled `factor` times finer (linear interpolation).
+fn finer(m: &Measured, factor: usize) -> Measured {
+    let mut out = Measured::velocities(Vec::new(), Vec::new(), Vec::new());
+    for i in 0..m.t.len() - 1 {
+        for k in 0..factor {
+            let f = k as f64 / factor as f64;
+            out.t.push(m.t[i] + f * (m.t[i + 1] - m.t[i]));
+            out.v_cm.push(m.v_cm[i] + f * (m.v_cm[i + 1] - m.v_cm[i]));
+            out.v_t.push(m.v_t[i] + f * (m.v_t[i + 1] - m.v_t[i]));
+        }
+    }
+    out
+}
+
+#[test]
+fn fit_thins_a_long_series_and_says_so() {
+    let (scene, _, m) = paper();
+    // The paper's series has 50-odd frames: used whole, and the JSON has no `every`.
+    let short = fit::fit_all(&scene, &m, (None, None), &[fit::Free::Mu], &Quiet).unwrap();
+    assert_eq!(short.model_fit.every, None);
+    let json = serde_json::to_string(&short).unwrap();
+    assert!(!json.contains("\"every\""), "{json}");
+
+    let long = finer(&m, 500);
+    assert!(long.t.len() > fit::MAX_MODEL_POINTS);
+    let (thin, k) = fit::thinned(&long).unwrap();
+    assert!(thin.t.len() <= fit::MAX_MODEL_POINTS);
+    assert_eq!(k, long.t.len().div_ceil(fit::MAX_MODEL_POINTS));
+    let f = fit::model_fit(&scene, &long, &[fit::Free::Mu], &Quiet).unwrap();
+    assert_eq!(f.every, Some(k));
+    assert!(f.points <= fit::MAX_MODEL_POINTS);
+    // The fit is exactly the fit of every k-th frame, and stays physical (the
+    // interpolated frames across the impact jumps pull μ a little off the paper's 0.17).
+    let direct = fit::model_fit(&scene, &thin, &[fit::Free::Mu], &Quiet).unwrap();
+    assert_eq!(direct.every, None);
+    assert_eq!(
+        fit::ModelFit {
+            every: None,
+            ..f.clone()
+        },
+        direct
+    );
+    assert!((0.1..0.25).contains(&f.mu), "μ = {}", f.mu);
+}
+
+#[test]
+fn fit_stops_when_asked_and_matches_when_not() {
+    let (scene, _, m) = paper();
+    let stop = stop_after(5);
+    let r = fit::fit_all(&scene, &m, (None, None), &[fit::Free::Mu], &stop);
+    assert_eq!(r, Err(fit::FitError::Cancelled));
+    assert_eq!(stop.ticks.load(Ordering::Relaxed), 5);
+    let watched = fit::fit_all(
+        &scene,
+        &m,
+        (None, None),
+        &[fit::Free::Mu, fit::Free::V0],
+        &stop_after(u64::MAX),
+    )
+    .unwrap();
+    let quiet = fit::fit_all(
+        &scene,
+        &m,
+        (None, None),
+        &[fit::Free::Mu, fit::Free::V0],
+        &Quiet,
+    )
+    .unwrap();
+    assert_eq!(
+        serde_json::to_string(&watched).unwrap(),
+        serde_json::to_string(&quiet).unwrap()
+    );
+}
+
+#[test]
+fn ctrl_c_stops_compare_with_130_and_writes_nothing() {
+    let dir = std::env::temp_dir().join(format!("groovelab-interrupt-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = dir.join("wp.svg");
+    let child = Command::new(env!("CARGO_BIN_EXE_groovelab"))
+        .args(["compare", "--format", "svg", "--output"])
+        .arg(&out)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    // The default sweep takes seconds (release) to a minute (debug): well past this.
+    std::thread::sleep(Duration::from_millis(700));
+    let sent = Instant::now();
+    let kill = Command::new("kill")
+        .args(["-INT", &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(kill.success());
+    let result = child.wait_with_output().unwrap();
+    let stopped_in = sent.elapsed();
+    let stderr = String::from_utf8_lossy(&result.stderr);
+    assert_eq!(result.status.code(), Some(130), "{stderr}");
+    assert!(result.stdout.is_empty());
+    assert_eq!(stderr, "error: interrupted: nothing was written\n");
+    assert!(!out.exists(), "the output file was written");
+    let left: Vec<_> = std::fs::read_dir(&dir).unwrap().collect();
+    assert!(left.is_empty(), "files left behind: {left:?}");
+    // The stop is checked every 4096 steps and between runs: well under a second
+    // even in a debug build.
+    assert!(stopped_in < Duration::from_secs(3), "{stopped_in:?}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

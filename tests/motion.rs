@@ -1,0 +1,567 @@
+//! The lab shows the whole motion (issue 11): the span follows the physics, events and
+//! measured frames can be stepped through, the chart seeks on a click, the energy
+//! chart, and the A/B comparison with a pinned run. App logic and `render` snapshots.
+
+use groovelab::cli::{DataArgs, RenderArgs, SceneArgs, render_with};
+use groovelab::input::params::{Key, SceneSpec};
+use groovelab::input::preset::{Origin, Preset};
+use groovelab::lab::{Lab, SpanEnd};
+use groovelab::physics::solution::EventKind;
+use groovelab::tui::app::{App, Library, ROWS, Status};
+use groovelab::tui::theme::{Glyphs, Theme};
+use groovelab::tui::{keys, replay, view};
+use ratatui::layout::Rect;
+
+fn no_user_presets() -> Library {
+    let dir = std::env::temp_dir().join(format!("groovelab-motion-presets-{}", std::process::id()));
+    Library::at(Some(dir))
+}
+
+fn app(preset: &str) -> App {
+    let p = Preset::load(preset).unwrap();
+    let (scene, span) = p.spec.resolve().unwrap();
+    App::new(Lab::new(p, scene, span), no_user_presets())
+}
+
+fn press(app: &mut App, script: &str) {
+    replay(app, &keys::parse_script(script).unwrap());
+}
+
+fn select(app: &mut App, key: Key) {
+    app.selected = ROWS.iter().position(|p| p.key == key).unwrap();
+}
+
+/// `render` of `preset` with scene options `values`, at `at`, after `keys`.
+fn render(
+    preset: &str,
+    values: SceneSpec,
+    at: Option<f64>,
+    size: (u16, u16),
+    ascii: bool,
+    keys: &str,
+) -> Result<String, String> {
+    let scene = SceneArgs {
+        preset: Some(preset.to_string()),
+        values,
+    };
+    let args = RenderArgs {
+        at,
+        size,
+        keys: (!keys.is_empty()).then(|| keys.to_string()),
+    };
+    render_with(
+        &scene,
+        &DataArgs::default(),
+        &args,
+        ascii,
+        no_user_presets(),
+    )
+    .map_err(|e| e.to_string())
+}
+
+fn mu(v: f64) -> SceneSpec {
+    SceneSpec::default().with(Key::Mu, v)
+}
+
+const SIZES: [(u16, u16); 3] = [(80, 24), (120, 40), (200, 60)];
+
+/// The chart panel's rows of a screen (below the top panels, above the status line).
+fn chart_rows(screen: &str, height: u16) -> Vec<&str> {
+    // The chart's rows as the layout places them (any width will do for rows).
+    let area = ratatui::layout::Rect::new(0, 0, 120, height);
+    let chart = view::layout(area).expect("big enough").chart;
+    screen
+        .lines()
+        .skip(usize::from(chart.y))
+        .take(usize::from(chart.height))
+        .collect()
+}
+
+/// The largest x tick label on the chart's axis row.
+fn last_x_tick(screen: &str, height: u16) -> f64 {
+    let rows = chart_rows(screen, height);
+    let axis = rows[rows.len() - 2];
+    axis.split(|c: char| !(c.is_ascii_digit() || c == '.' || c == '-'))
+        .filter_map(|w| w.parse::<f64>().ok())
+        .fold(f64::NEG_INFINITY, f64::max)
+}
+
+// ---- 1. The span follows the physics ----------------------------------------------
+
+#[test]
+fn paper_b4_9_with_low_friction_shows_all_twenty_impacts_up_to_t_inf() {
+    let mut a = app("paper-b4.9");
+    select(&mut a, Key::Mu);
+    press(&mut a, "enter 0 . 0 5 enter");
+    assert_eq!(a.lab.scene.mu, 0.05);
+    let sol = a.lab.solution.clone();
+    let t_inf = sol.accumulation.expect("the impacts accumulate");
+    assert!((t_inf - 2.939).abs() < 5e-4, "T∞ {t_inf}");
+    assert_eq!(sol.impacts, 20);
+    // Every impact is inside the span, and the span reaches past T∞.
+    let shown = sol
+        .visible_events()
+        .filter(|e| e.kind == EventKind::Collision)
+        .count();
+    let all = sol
+        .events
+        .iter()
+        .filter(|e| e.kind == EventKind::Collision)
+        .count();
+    assert_eq!(shown, all);
+    assert!(sol.t_end > t_inf, "{} > {t_inf}", sol.t_end);
+    // The animation's last frame is after T∞; the chart's axis reaches it.
+    press(&mut a, "end");
+    assert!(a.t > t_inf);
+    let s = view::to_text(&a, 120, 40, &Theme::new(Glyphs::UNICODE, true));
+    assert!(last_x_tick(&s, 40) >= 3.0, "{s}");
+    assert!(chart_rows(&s, 40).concat().contains("T∞"));
+    // The same through `render`, which also accepts any time in the span.
+    let r = render("paper-b4.9", mu(0.05), Some(3.0), (120, 40), false, "").unwrap();
+    assert!(r.contains("t = 3.000 s"), "{r}");
+    assert!(last_x_tick(&r, 40) >= 3.0);
+    let err = render("paper-b4.9", mu(0.05), Some(5.0), (120, 40), false, "").unwrap_err();
+    assert!(err.contains("outside the simulated span"), "{err}");
+}
+
+#[test]
+fn paper_b4_4_shows_its_nine_impacts_up_to_t_inf() {
+    let a = app("paper-b4.4");
+    let sol = &a.lab.solution;
+    let t_inf = sol.accumulation.expect("recollides");
+    assert!((t_inf - 2.126).abs() < 5e-4, "T∞ {t_inf}");
+    assert_eq!(sol.impacts, 9);
+    assert!(sol.t_end > t_inf);
+    assert_eq!(
+        sol.visible_events()
+            .filter(|e| e.kind == EventKind::Collision)
+            .count(),
+        9
+    );
+    for (w, h) in SIZES {
+        let s = render(
+            "paper-b4.4",
+            SceneSpec::default(),
+            None,
+            (w, h),
+            false,
+            "end",
+        )
+        .unwrap();
+        assert!(last_x_tick(&s, h) >= 2.0, "{w}x{h}: {s}");
+        assert!(chart_rows(&s, h).concat().contains("T∞"), "{w}x{h}: {s}");
+        assert!(s.contains("impacts 9"), "{w}x{h}");
+    }
+}
+
+#[test]
+fn the_automatic_span_also_covers_the_measured_points() {
+    // paper-b4.9 (μ_k 0.17) is over at 0.86 s; its measured series runs to 0.88 s.
+    let a = app("paper-b4.9");
+    let last = *a.lab.measured().unwrap().t.last().unwrap();
+    assert!(a.lab.solution.t_end >= last);
+    assert_eq!(a.lab.span_end, SpanEnd::Auto);
+}
+
+/// A user preset that fixes its span to 0.5 s.
+fn preset_with_t_end() -> Preset {
+    let text = r#"
+name = "short"
+description = "paper-b4.9 cut at 0.5 s"
+[scene]
+radius = "2.75cm"
+width = "4.9cm"
+mass = "0.167kg"
+mu = 0.17
+v0 = 0.7928
+t_start = -0.2
+t_end = 0.5
+"#;
+    Preset::parse(text, "short", Origin::BuiltIn).unwrap()
+}
+
+#[test]
+fn a_presets_t_end_holds_until_a_parameter_changes() {
+    let p = preset_with_t_end();
+    let (scene, span) = p.spec.resolve().unwrap();
+    let mut a = App::new(Lab::new(p, scene, span), no_user_presets());
+    assert_eq!(a.lab.solution.t_end, 0.5);
+    assert!(matches!(
+        a.lab.span_end,
+        SpanEnd::Fixed {
+            from_preset: true,
+            ..
+        }
+    ));
+    select(&mut a, Key::Mu);
+    press(&mut a, "right");
+    assert_eq!(a.lab.span_end, SpanEnd::Auto);
+    let sol = &a.lab.solution;
+    assert!(sol.t_end > sol.accumulation.unwrap(), "{}", sol.t_end);
+}
+
+#[test]
+fn an_explicit_t_end_holds_through_parameter_changes() {
+    // In the app: t_end set through the lab.
+    let mut a = app("paper-b4.9");
+    a.lab.set(Key::TEnd, 0.5).unwrap();
+    select(&mut a, Key::Mu);
+    press(&mut a, "left left");
+    assert_eq!(a.lab.solution.t_end, 0.5);
+    // On the command line: --t-end is explicit, in `render` and after keys.
+    let values = SceneSpec::default().with(Key::TEnd, 0.5);
+    let s = render(
+        "paper-b4.9",
+        values.clone(),
+        None,
+        (120, 40),
+        false,
+        "down down down right",
+    )
+    .unwrap();
+    assert!(s.contains("of -0.200 … 0.500 s"), "{s}");
+    // A scene option on the command line ends a preset's t_end (there, none).
+    let s = render("paper-b4.9", mu(0.05), None, (120, 40), false, "").unwrap();
+    assert!(s.contains("… 3.567 s"), "{s}");
+}
+
+#[test]
+fn the_span_key_cycles_auto_double_half() {
+    let mut a = app("paper-b4.4");
+    let (t0, auto) = (a.lab.solution.t_start, a.lab.solution.t_end);
+    let close = |x: f64, y: f64| (x - y).abs() < 1e-12;
+    press(&mut a, "end t");
+    assert_eq!(a.lab.span_end, SpanEnd::Scaled(2.0));
+    assert!(close(a.lab.solution.t_end, t0 + 2.0 * (auto - t0)));
+    assert!(matches!(&a.status, Status::Info(s) if s.contains("span auto ×2")));
+    // The scaled span still follows the physics.
+    select(&mut a, Key::Mu);
+    press(&mut a, "right");
+    let auto2 = {
+        let mut b = a.clone();
+        b.lab.set_span_end(SpanEnd::Auto).unwrap();
+        b.lab.solution.t_end
+    };
+    assert!(close(a.lab.solution.t_end, t0 + 2.0 * (auto2 - t0)));
+    press(&mut a, "t");
+    assert!(close(a.lab.solution.t_end, t0 + 0.5 * (auto2 - t0)));
+    assert!(a.t <= a.lab.solution.t_end, "the cursor stays in the span");
+    press(&mut a, "t");
+    assert_eq!(a.lab.span_end, SpanEnd::Auto);
+    assert!(close(a.lab.solution.t_end, auto2));
+}
+
+#[test]
+fn saving_keeps_only_a_set_span_end() {
+    let dir = std::env::temp_dir().join(format!("groovelab-motion-save-{}", std::process::id()));
+    let mut a = app("paper-b4.9");
+    let path = a.lab.save(Some(&dir), "auto-span", true).unwrap();
+    let text = std::fs::read_to_string(&path).unwrap();
+    assert!(!text.contains("t_end"), "{text}");
+    a.lab.set(Key::TEnd, 0.7).unwrap();
+    let path = a.lab.save(Some(&dir), "fixed-span", true).unwrap();
+    let text = std::fs::read_to_string(&path).unwrap();
+    assert!(text.contains("t_end"), "{text}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+// ---- 2. Navigation ------------------------------------------------------------------
+
+#[test]
+fn event_keys_visit_every_marked_event_in_order() {
+    let mut a = app("paper-b4.4");
+    let marked: Vec<f64> = a
+        .lab
+        .solution
+        .visible_events()
+        .filter(|e| e.kind.label().is_some())
+        .map(|e| e.t)
+        // Events within a nanosecond (the burst before T∞) are one stop.
+        .fold(Vec::new(), |mut v, t| {
+            if v.last().is_none_or(|&l| t > l + 1e-9) {
+                v.push(t);
+            }
+            v
+        });
+    assert!(marked.len() > 9);
+    let mut seen = Vec::new();
+    for _ in 0..marked.len() {
+        press(&mut a, ">");
+        seen.push(a.t);
+    }
+    assert_eq!(seen, marked);
+    press(&mut a, ">");
+    assert_eq!(a.t, *marked.last().unwrap(), "no later event: stays");
+    assert!(matches!(&a.status, Status::Info(s) if s.contains("no later event")));
+    press(&mut a, "<");
+    let last = *marked.last().unwrap();
+    let before = a
+        .lab
+        .solution
+        .visible_events()
+        .filter(|e| e.kind.label().is_some() && e.t < last - 1e-9)
+        .map(|e| e.t)
+        .fold(f64::NEG_INFINITY, f64::max);
+    assert_eq!(a.t, before);
+    press(&mut a, "home >");
+    assert_eq!(a.t, 0.0, "the first event is the impact at 0");
+    assert!(matches!(&a.status, Status::Info(s) if s.starts_with("impact at t = 0.0000 s")));
+    press(&mut a, "end >");
+    assert!(matches!(&a.status, Status::Info(s) if s.contains("no later event")));
+}
+
+#[test]
+fn dot_and_comma_step_by_measured_frames_when_data_are_shown() {
+    let mut a = app("paper-b4.9");
+    let m = a.lab.measured().unwrap().t.clone();
+    assert_eq!(a.t, a.lab.solution.t_start);
+    assert!(a.t < m[0]);
+    press(&mut a, ". .");
+    assert_eq!(a.t, m[1]);
+    press(&mut a, ",");
+    assert_eq!(a.t, m[0]);
+    // Between frames the next one is the next measured time.
+    a.t = 0.013;
+    press(&mut a, ".");
+    assert_eq!(a.t, 0.02);
+    press(&mut a, ",");
+    assert_eq!(a.t, 0.0);
+    // Past the last frame: one animation frame.
+    a.t = *m.last().unwrap();
+    press(&mut a, ".");
+    assert!((a.t - (m.last().unwrap() + a.frame_step())).abs() < 1e-12);
+}
+
+#[test]
+fn a_click_on_the_chart_seeks_to_the_time_under_it() {
+    let mut a = app("paper-b4.9");
+    let area = Rect::new(0, 0, 120, 40);
+    let theme = Theme::new(Glyphs::UNICODE, true);
+    for at in [-0.15, 0.0, 0.3, 0.85] {
+        a.t = at;
+        let s = view::to_text(&a, 120, 40, &theme);
+        let rows = chart_rows(&s, 40);
+        let (row, col) = rows
+            .iter()
+            .enumerate()
+            .find_map(|(r, l)| l.chars().position(|c| c == '┊').map(|c| (r, c)))
+            .expect("the cursor is drawn");
+        let top = view::layout(area).unwrap().chart.y;
+        let t = view::chart_time_at(&a, area, col as u16, top + row as u16).unwrap();
+        // One column of the plot is (t_end − t_start) / (columns − 1) ≈ 13 ms here.
+        let column = (a.lab.solution.t_end - a.lab.solution.t_start) / 70.0;
+        assert!((t - at).abs() <= 0.5 * column, "{at}: {t}");
+        let mut b = a.clone();
+        b.playing = true;
+        b.seek(t);
+        assert_eq!(b.t, t);
+        assert!(!b.playing);
+    }
+    // Outside the plot (the info panel, the axis labels, the params): no seek.
+    assert_eq!(view::chart_time_at(&a, area, 110, 20), None);
+    assert_eq!(view::chart_time_at(&a, area, 1, 20), None);
+    assert_eq!(view::chart_time_at(&a, area, 30, 3), None);
+    // Not while another view is shown.
+    press(&mut a, "g");
+    assert_eq!(view::chart_time_at(&a, area, 40, 20), None);
+}
+
+// ---- 3. The energy chart --------------------------------------------------------------
+
+#[test]
+fn the_energy_chart_splits_the_initial_energy_at_every_sample() {
+    let mut a = app("inelastic");
+    press(&mut a, "e");
+    assert!(a.show_energy);
+    let split = a.lab.energies(100);
+    let total = split[0].1.total();
+    assert!(total > 0.0);
+    for (t, e) in split.iter() {
+        // The ledger is exact: the parts add up to the start's energy to rounding.
+        assert!((e.total() - total).abs() <= 1e-9 * total, "{t}: {e:?}");
+    }
+    assert!(
+        split.last().unwrap().1.lost.impacts > 0.0,
+        "e < 1 loses in impacts"
+    );
+    let s = view::to_text(&a, 120, 40, &Theme::new(Glyphs::UNICODE, false));
+    assert!(s.contains("Energy of both balls"));
+    for name in ["total", "trans", "rot", "friction", "impacts", "c_rr 0"] {
+        assert!(s.contains(name), "{name}: {s}");
+    }
+    // `x` and `e` replace each other; `e` again goes back to the velocities.
+    press(&mut a, "x");
+    assert!(a.show_positions && !a.show_energy);
+    press(&mut a, "e e");
+    assert!(!a.show_positions && !a.show_energy);
+}
+
+#[test]
+fn the_energy_chart_tells_its_curves_apart_without_colour() {
+    let mut a = app("inelastic");
+    press(&mut a, "e");
+    a.t = 0.1;
+    for ascii in [false, true] {
+        let s = view::to_text(&a, 120, 40, &Theme::new(Glyphs::new(ascii), true));
+        let rows = chart_rows(&s, 40);
+        // Row 0 is the border, row 1 the legend, then the plot, the ticks, the border.
+        let plot: String = rows[2..rows.len() - 2].concat();
+        // Letters in the legend and on the curves: t, r, f, i.
+        for (legend, mark) in [("t trans", 't'), ("r rot", 'r'), ("f friction", 'f')] {
+            assert!(rows[1].contains(legend), "{legend}: {}", rows[1]);
+            assert!(plot.contains(mark), "{mark} drawn ({ascii})");
+        }
+        if ascii {
+            assert!(s.is_ascii());
+        }
+    }
+}
+
+// ---- 4. A/B comparison ----------------------------------------------------------------
+
+#[test]
+fn a_pinned_run_is_drawn_beside_the_current_one_with_what_changed() {
+    let mut a = app("paper-b4.9");
+    press(&mut a, "P");
+    assert!(a.lab.pinned.is_some());
+    select(&mut a, Key::Width);
+    press(&mut a, "enter 4 . 4 c m enter");
+    let changes = a.lab.pinned_changes();
+    assert_eq!(
+        changes,
+        vec![("b", "4.9 cm".to_string(), "4.4 cm".to_string())]
+    );
+    a.t = 0.5;
+    let theme = Theme::new(Glyphs::UNICODE, true);
+    let s = view::to_text(&a, 120, 40, &theme);
+    assert!(
+        s.contains("pinned paper-b4.9 (dashed): b 4.9 cm → 4.4 cm"),
+        "{s}"
+    );
+    assert!(s.contains("pinned run"), "the chart's legend");
+    // The pinned run's span is covered: it ends later than the 4.4 cm run's own.
+    let pinned_end = a.lab.pinned.as_ref().unwrap().solution.t_end;
+    assert!(a.lab.solution.t_end >= pinned_end);
+    // The scene shows more ink than the same scene unpinned (the ghost balls).
+    let mut b = a.clone();
+    press(&mut b, "P");
+    assert!(b.lab.pinned.is_none());
+    let unpinned = view::to_text(&b, 120, 40, &theme);
+    let scene = |s: &str| -> usize {
+        s.lines()
+            .take(9)
+            .map(|l| {
+                l.chars()
+                    .skip(42)
+                    .filter(|c| ('\u{2801}'..='\u{28ff}').contains(c))
+                    .count()
+            })
+            .sum()
+    };
+    assert!(scene(&s) > scene(&unpinned), "ghosts drawn");
+    assert!(!unpinned.contains("pinned run") && !unpinned.contains("(dashed)"));
+    // Positions and energy charts draw the pinned run too.
+    press(&mut a, "x");
+    assert!(view::to_text(&a, 120, 40, &theme).contains("pinned run"));
+    press(&mut a, "e");
+    assert!(view::to_text(&a, 120, 40, &theme).contains("pinned kinetic"));
+}
+
+#[test]
+fn a_long_list_of_changes_is_cut_with_an_ellipsis() {
+    let mut a = app("paper-b4.9");
+    press(&mut a, "P");
+    for (key, v) in [
+        (Key::Width, 0.044),
+        (Key::Mu, 0.2),
+        (Key::Restitution, 0.8),
+        (Key::RollingResistance, 0.01),
+        (Key::Mass, 0.2),
+    ] {
+        a.lab.set(key, v).unwrap();
+    }
+    let s = view::to_text(&a, 80, 24, &Theme::new(Glyphs::ASCII, true));
+    assert!(s.is_ascii());
+    let line = s.lines().nth(8).unwrap();
+    assert!(line.contains("pinned paper-b4.9"), "{line}");
+    assert!(line.contains("..."), "{line}");
+}
+
+// ---- Snapshots ----------------------------------------------------------------------
+
+#[test]
+fn snapshots_of_the_whole_motion_energy_and_pin() {
+    for (w, h) in SIZES {
+        for ascii in [false, true] {
+            let mode = if ascii { "ascii" } else { "unicode" };
+            let cases: [(&str, &str, SceneSpec, Option<f64>, &str); 4] = [
+                ("b4.9-mu0.05-end", "paper-b4.9", mu(0.05), None, "end"),
+                (
+                    "b4.4-t-inf",
+                    "paper-b4.4",
+                    SceneSpec::default(),
+                    None,
+                    "end <",
+                ),
+                ("energy", "inelastic", SceneSpec::default(), Some(0.1), "e"),
+                (
+                    "pinned",
+                    "paper-b4.9",
+                    SceneSpec::default(),
+                    Some(0.4),
+                    "P down down down right right right right right",
+                ),
+            ];
+            for (name, preset, values, at, keys) in cases {
+                insta::assert_snapshot!(
+                    format!("{name}-{w}x{h}-{mode}"),
+                    render(preset, values, at, (w, h), ascii, keys).unwrap()
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn pinning_does_not_stretch_a_scaled_span_again() {
+    let mut a = app("paper-b4.4");
+    press(&mut a, "t");
+    let doubled = a.lab.solution.t_end;
+    press(&mut a, "P");
+    assert_eq!(a.lab.solution.t_end, doubled, "same scene: same span");
+    press(&mut a, "P t t P");
+    assert_eq!(a.lab.span_end, SpanEnd::Auto);
+    let auto = a.lab.solution.t_end;
+    // A pinned slower run (more friction ends it sooner) keeps the longer span.
+    select(&mut a, Key::Mu);
+    press(&mut a, "S-right S-right");
+    assert!(
+        a.lab.solution.t_end >= auto - 1e-12,
+        "{} {auto}",
+        a.lab.solution.t_end
+    );
+}
+
+#[test]
+fn new_screens_need_no_ascii_stand_ins() {
+    // `force_ascii` would hide a stray symbol; the views must draw ASCII themselves.
+    let theme = Theme::new(Glyphs::ASCII, true);
+    for preset in ["paper-b4.9", "inelastic", "paper-b4.4"] {
+        for keys in [
+            "e",
+            "P right right",
+            "P S-right e",
+            "P S-right x",
+            "t",
+            "> > >",
+        ] {
+            let mut a = app(preset);
+            press(&mut a, keys);
+            a.lab.wait();
+            for (w, h) in SIZES {
+                let cells = view::non_ascii_cells(&a, w, h, &theme);
+                assert!(cells.is_empty(), "{preset} {keys:?} {w}x{h}: {cells:?}");
+            }
+        }
+    }
+}
