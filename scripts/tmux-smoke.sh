@@ -34,8 +34,11 @@ tmux send-keys -t "$SESSION" Space
 screen | grep -q "t = -0.200 s" && fail "playback did not move the time"
 # Help and preset picker open and close.
 tmux send-keys -t "$SESSION" '?'
-wait_for "Keys  (any key closes)"
-sleep 0.2; tmux send-keys -t "$SESSION" Escape; sleep 0.3
+wait_for "Keys  (Esc or q closes"
+# q in a popup closes the popup, not the app.
+sleep 0.2; tmux send-keys -t "$SESSION" q; sleep 0.3
+screen | grep -qF "Keys  (" && fail "q did not close the help"
+screen | grep -q "exit status" && fail "q in the help quit the app"
 tmux send-keys -t "$SESSION" p
 wait_for "Presets  (Enter loads"
 tmux send-keys -t "$SESSION" Down Enter

@@ -198,7 +198,7 @@ fn saving_writes_a_loadable_preset_and_never_overwrites_silently() {
     assert_eq!(std::fs::read_to_string(&path).unwrap(), "sentinel");
     press(&mut a, "s enter y");
     assert!(std::fs::read_to_string(&path).unwrap().contains("[scene]"));
-    // Bad names are refused.
+    // Bad names are refused, and the dialog stays open with the name and why.
     press(
         &mut a,
         "s backspace backspace backspace backspace backspace backspace backspace backspace backspace backspace backspace backspace / enter",
@@ -208,6 +208,9 @@ fn saving_writes_a_loadable_preset_and_never_overwrites_silently() {
         "{:?}",
         a.status
     );
+    assert_eq!(a.mode, Mode::SaveName("/".into()));
+    press(&mut a, "esc");
+    assert_eq!(a.mode, Mode::Normal);
     assert!(
         !dir.join(".my-inelastic.toml.tmp").exists(),
         "no temporary file left"
@@ -232,9 +235,11 @@ fn screen_of(a: &App) -> String {
     groovelab::tui::view::to_text(a, 120, 40, &theme)
 }
 
-/// Rows of the chart panel (between the top panels and the status line).
+/// Rows of the chart panel at 120×40 (between the top panels, one row per parameter,
+/// and the status line).
 fn chart_rows(screen: &str) -> Vec<&str> {
-    screen.lines().skip(12).take(26).collect()
+    let top = ROWS.len() + 2;
+    screen.lines().skip(top).take(38 - top).collect()
 }
 
 #[test]
@@ -278,7 +283,10 @@ fn ascii_mode_emits_only_seven_bit_characters() {
     let theme = groovelab::tui::theme::Theme::new(groovelab::tui::theme::Glyphs::ASCII, true);
     let mut failures: Vec<String> = Vec::new();
     for p in Preset::built_in() {
-        for keys in ["", "?", "p", "c", "g", "f", "x", "b b", "o", "s", "enter"] {
+        for keys in [
+            "", "?", "p", "c", "g", "f", "x", "b b", "o", "s", "enter", "d", "e", "w", "W",
+            "? end", "o b b",
+        ] {
             let mut a = app(&p.name);
             press(&mut a, keys);
             a.lab.wait();
@@ -400,8 +408,8 @@ fn mouse_clicks_select_and_scrolls_change_parameters() {
     assert_eq!(ROWS[a.selected].key, Key::Mu);
     a.apply(Action::ScrollParam(4, true));
     assert!((a.lab.scene.mu - 0.18).abs() < 1e-12);
-    let e = ROWS.iter().position(|p| p.key == Key::Restitution).unwrap();
-    a.apply(Action::ScrollParam(e, false));
+    let e_row = ROWS.iter().position(|p| p.key == Key::Restitution).unwrap();
+    a.apply(Action::ScrollParam(e_row, false));
     assert_eq!(ROWS[a.selected].key, Key::Restitution);
     assert!((a.lab.scene.restitution - 0.99).abs() < 1e-12);
 }
@@ -502,7 +510,9 @@ fn map_view_marks_the_scene_on_the_regime_grid() {
 fn every_view_draws_at_many_sizes_without_panicking() {
     // The layout adapts from the minimum to large screens; any panic fails the test.
     let mut a = app("unequal-speeds");
-    for keys in ["", "c", "g", "f", "x", "b b", "o", "?", "p"] {
+    for keys in [
+        "", "c", "g", "f", "x", "b b", "o", "?", "p", "d", "e", "w", "s",
+    ] {
         let mut b = a.clone();
         press(&mut b, keys);
         for (w, h) in [
@@ -524,4 +534,494 @@ fn every_view_draws_at_many_sizes_without_panicking() {
     }
     a.t = a.lab.solution.t_end;
     assert!(screen_of(&a).contains("impacts"));
+}
+
+// ---- issue 11: help, keys and small screens; teachers' tools ----
+
+fn ascii_theme() -> groovelab::tui::theme::Theme {
+    groovelab::tui::theme::Theme::new(groovelab::tui::theme::Glyphs::ASCII, true)
+}
+
+fn text_of(a: &App, w: u16, h: u16, ascii: bool) -> String {
+    let theme = if ascii {
+        ascii_theme()
+    } else {
+        groovelab::tui::theme::Theme::new(groovelab::tui::theme::Glyphs::UNICODE, true)
+    };
+    groovelab::tui::view::to_text(a, w, h, &theme)
+}
+
+#[test]
+fn help_is_complete_at_every_size_scrolling_where_needed() {
+    for (w, h) in [(80, 24), (120, 40), (200, 60)] {
+        for ascii in [false, true] {
+            let mut a = app("paper-b4.9");
+            press(&mut a, "?");
+            // Page down until nothing is below, collecting every screen.
+            let mut seen = text_of(&a, w, h, ascii);
+            for _ in 0..20 {
+                if !seen.lines().any(|l| l.contains("more ")) {
+                    break;
+                }
+                press(&mut a, "pgdn");
+                seen.push_str(&text_of(&a, w, h, ascii));
+                if !text_of(&a, w, h, ascii).contains("more v")
+                    && !text_of(&a, w, h, ascii).contains("more ↓")
+                {
+                    break;
+                }
+            }
+            assert_eq!(a.mode, Mode::Help, "scrolling keeps the help open");
+            let flat = seen.split_whitespace().collect::<Vec<_>>().join(" ");
+            for b in keys::TABLE {
+                let first: String = b
+                    .help
+                    .split_whitespace()
+                    .take(3)
+                    .collect::<Vec<_>>()
+                    .join(" ");
+                let first = first.replace('μ', "mu");
+                assert!(
+                    flat.contains(&first)
+                        || flat.contains(&b.help.split_whitespace().next().unwrap().to_string()),
+                    "{w}x{h} ascii {ascii}: '{first}' missing"
+                );
+                assert!(
+                    flat.contains(&b.keys.join(" ")),
+                    "{w}x{h}: keys {:?}",
+                    b.keys
+                );
+            }
+            assert!(flat.contains("Mouse: click a parameter"), "{w}x{h} {ascii}");
+            // Where it all fits there is nothing to scroll to.
+            if h >= 60 {
+                assert!(!seen.contains("more "), "{w}x{h}: {seen}");
+            }
+            press(&mut a, "q");
+            assert_eq!(a.mode, Mode::Normal);
+            assert!(!a.quit, "q in the help closes the help, not the app");
+        }
+    }
+    // The help's ↑ takes back what ↓ did; it never scrolls past the end.
+    let mut a = app("paper-b4.9");
+    press(&mut a, "?");
+    let _ = text_of(&a, 80, 24, false);
+    press(&mut a, "end");
+    let bottom = text_of(&a, 80, 24, false);
+    assert!(bottom.contains("Mouse: click"));
+    press(&mut a, "down down down up");
+    let _ = text_of(&a, 80, 24, false);
+    press(&mut a, "down");
+    assert_eq!(text_of(&a, 80, 24, false), bottom);
+    press(&mut a, "home");
+    assert!(text_of(&a, 80, 24, false).contains("play / pause"));
+}
+
+#[test]
+fn q_closes_every_popup_and_quits_only_the_main_screen() {
+    let mut a = app("paper-b4.9");
+    for open in ["?", "p", "d"] {
+        press(&mut a, open);
+        assert_ne!(a.mode, Mode::Normal, "{open}");
+        press(&mut a, "q");
+        assert_eq!(a.mode, Mode::Normal, "{open}");
+        assert!(!a.quit, "{open} q");
+        press(&mut a, open);
+        press(&mut a, "esc");
+        assert_eq!(a.mode, Mode::Normal, "{open} esc");
+        assert!(!a.quit);
+    }
+    // In text fields q is a letter.
+    press(&mut a, "s q");
+    assert!(matches!(&a.mode, Mode::SaveName(t) if t.ends_with('q')));
+    press(&mut a, "esc w q");
+    assert!(matches!(&a.mode, Mode::Export(_, t) if t.ends_with('q')));
+    press(&mut a, "esc");
+    assert!(!a.quit);
+    press(&mut a, "? C-c");
+    assert!(a.quit, "Ctrl-C quits from a popup");
+    let mut a = app("paper-b4.9");
+    press(&mut a, "q");
+    assert!(a.quit);
+}
+
+#[test]
+fn the_hint_bar_always_ends_with_help_and_quit() {
+    for (w, h) in [(80, 24), (120, 40), (200, 60)] {
+        for ascii in [false, true] {
+            let s = screen("paper-b4.9", 0.2, (w, h), ascii, None);
+            let bar = s.lines().last().unwrap();
+            assert!(bar.ends_with("? help  q quit"), "{w}x{h}: {bar}");
+            assert!(bar.contains("play") && bar.contains("change"), "{bar}");
+        }
+    }
+}
+
+/// The rows of a panel on the right (Why, Fit, Runs) at 80×24: right of column 44.
+fn right_panel(s: &str) -> String {
+    s.lines()
+        .skip(9)
+        .take(13)
+        .map(|l| l.chars().skip(44).collect::<String>())
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+#[test]
+fn small_screens_keep_the_important_lines() {
+    // The Why panel keeps the regime, the impacts and the energy split.
+    for ascii in [false, true] {
+        let s = screen("paper-b4.4", 0.3, (80, 24), ascii, None);
+        let why = right_panel(&s);
+        for want in ["RECOLLIDE", "impacts 9", "energy", "friction"] {
+            assert!(why.contains(want), "{want}:\n{why}");
+        }
+    }
+    // The runs list shows every method, once at least, with its error.
+    let s = screen("paper-b4.9", 0.3, (80, 24), false, Some("c"));
+    let runs = right_panel(&s);
+    for (marker, name) in [
+        ("e", "euler"),
+        // Names longer than their column end with an ellipsis ("s symp…").
+        ("s", "symp"),
+        ("4", "rk4"),
+        ("5", "rk45"),
+        ("m", "more"),
+    ] {
+        let line = runs
+            .lines()
+            .find(|l| l.contains(&format!("{marker} {name}")))
+            .unwrap_or_else(|| panic!("{name}:\n{runs}"));
+        let err = line
+            .trim_end_matches(['│', ' '])
+            .rsplit(' ')
+            .next()
+            .unwrap();
+        assert!(
+            err.parse::<f64>().is_ok(),
+            "{name}: err_v '{err}' in {line}"
+        );
+    }
+    // The Fit panel keeps μ_k and the regime verdict.
+    let s = screen("paper-b4.9", 0.3, (80, 24), false, Some("f"));
+    let fit = right_panel(&s);
+    assert!(fit.contains("μ_k 0.16"), "{fit}");
+    // The verdict (with its margin) and what was observed (issue 11b's one verdict).
+    assert!(fit.contains("predicted recollide"), "{fit}");
+    assert!(fit.contains("observed recollide"), "{fit}");
+    assert!(fit.contains("the model predicts what was seen"), "{fit}");
+}
+
+#[test]
+fn f_switches_to_the_fit_view_from_any_view() {
+    let mut a = app("paper-b4.9");
+    press(&mut a, "c f");
+    assert_eq!(a.view, View::Fit);
+    assert!(a.fit_view());
+    a.lab.wait();
+    assert!(screen_of(&a).contains("model fit to every frame"));
+    press(&mut a, "g");
+    assert_eq!(a.view, View::Map, "g leaves the Fit view for the map");
+    press(&mut a, "f f");
+    assert_eq!(a.view, View::Charts, "f again goes back to the charts");
+    press(&mut a, "f c");
+    assert_eq!(a.view, View::Methods);
+}
+
+#[test]
+fn typed_numbers_are_in_the_rows_unit_and_lenient() {
+    let mut a = app("paper-b4.9");
+    select(&mut a, Key::Width);
+    press(&mut a, "enter");
+    let s = screen_of(&a);
+    assert!(s.contains("b in cm (or with a unit, e.g. 44mm)"), "{s}");
+    press(&mut a, "4 . 4 enter");
+    assert_eq!(a.lab.scene.width, 0.044, "a bare number is in cm");
+    press(&mut a, "enter 4 , 6 c m enter");
+    assert_eq!(a.lab.scene.width, 0.046);
+    press(&mut a, "enter 4 . 5 C M enter");
+    assert_eq!(a.lab.scene.width, 0.045);
+    select(&mut a, Key::MassLeft);
+    press(&mut a, "enter 1 6 7 G enter");
+    assert_eq!(a.lab.scene.left.mass, 0.167);
+    press(&mut a, "enter 2 0 0 enter");
+    assert_eq!(a.lab.scene.left.mass, 0.2, "grams");
+    select(&mut a, Key::Mu);
+    press(&mut a, "enter 0 , 2 enter");
+    assert_eq!(a.lab.scene.mu, 0.2);
+    press(&mut a, "enter");
+    assert!(screen_of(&a).contains("μ_k: a plain number"));
+}
+
+#[test]
+fn overlay_measured_and_ghost_marks_differ_and_have_a_legend() {
+    use groovelab::tui::theme::{Glyphs, Theme};
+    let c = Theme::new(Glyphs::UNICODE, false);
+    let fgs = [
+        c.measured.fg,
+        c.overlay.fg,
+        c.overlay_t.fg,
+        c.left.fg,
+        c.accent.fg,
+    ];
+    for i in 0..fgs.len() {
+        for j in 0..i {
+            assert_ne!(fgs[i], fgs[j], "{i} {j}");
+        }
+    }
+    let m = Theme::new(Glyphs::UNICODE, true);
+    assert_ne!(m.overlay, m.overlay_t);
+    assert_ne!(m.overlay, m.measured);
+    // ASCII: distinct glyphs for the overlay's v_cm and v_t and the data, each in the
+    // legend.
+    let s = screen("paper-b4.9", 0.3, (120, 40), true, Some("o"));
+    let chart: String = chart_rows(&s).join("\n");
+    for mark in ["% euler", "~ v_t", "x measured v_cm", "o measured v_t"] {
+        assert!(chart.contains(mark), "{mark}:\n{chart}");
+    }
+    // 80×24 puts the legend on more rows rather than dropping marks.
+    let s = screen("paper-b4.9", 0.3, (80, 24), true, Some("o"));
+    for mark in ["% euler", "~ v_t", "x measured v_cm", "o measured v_t"] {
+        assert!(s.contains(mark), "{mark}:\n{s}");
+    }
+    // The scene says what the ghost is.
+    let s = screen("paper-b4.9", 0.1, (80, 24), true, None);
+    assert!(
+        s.lines().take(9).any(|l| l.contains(": measured ball")),
+        "{s}"
+    );
+    let s = screen("flat-table", 0.1, (80, 24), false, None);
+    assert!(!s.contains("measured ball"), "no data, no ghost");
+}
+
+#[test]
+fn save_keeps_the_data_and_the_description_and_explains_bad_names() {
+    let dir = std::env::temp_dir().join(format!("groovelab-save11-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let mut a = app("paper-b4.4");
+    a.library = Library::at(Some(dir.clone()));
+    // A name with a space: refused, the dialog stays open and says why.
+    press(&mut a, "s space x enter");
+    assert!(matches!(&a.mode, Mode::SaveName(n) if n == "my-paper-b4.4 x"));
+    let s = screen_of(&a);
+    assert!(s.contains("allowed letters, digits"), "{s}");
+    press(&mut a, "backspace backspace enter");
+    assert_eq!(a.mode, Mode::Normal);
+    let path = dir.join("my-paper-b4.4.toml");
+    let saved = Preset::load(path.to_str().unwrap()).unwrap();
+    assert_eq!(
+        saved.measured, a.lab.preset.measured,
+        "the measured series is saved"
+    );
+    assert!(saved.measured.is_some());
+    // Overwriting keeps the description of the file it replaces.
+    let text = std::fs::read_to_string(&path).unwrap().replace(
+        "Saved from groovelab (started from paper-b4.4)",
+        "my class, lesson 3",
+    );
+    std::fs::write(&path, text).unwrap();
+    select(&mut a, Key::Mu);
+    press(&mut a, "right s enter y");
+    let again = Preset::load(path.to_str().unwrap()).unwrap();
+    assert_eq!(again.description, "my class, lesson 3");
+    assert_eq!(again.spec.resolve().unwrap().0.mu, a.lab.scene.mu);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn long_messages_end_in_an_ellipsis_and_the_preset_name_stays() {
+    let mut a = app("paper-b4.9");
+    a.status = Status::Info(
+        "a very long message about what just happened to the scene and why it matters to a class"
+            .into(),
+    );
+    for ascii in [false, true] {
+        let s = text_of(&a, 80, 24, ascii);
+        let line = s.lines().nth(22).unwrap();
+        assert!(line.ends_with("preset paper-b4.9"), "{line}");
+        let ellipsis = if ascii { "... " } else { "… " };
+        assert!(line.contains(ellipsis), "{line}");
+    }
+    a.status = Status::Error("x".repeat(200));
+    let s = text_of(&a, 80, 24, false);
+    assert!(s.lines().nth(22).unwrap().ends_with("preset paper-b4.9"));
+    // Picker descriptions are cut with an ellipsis too.
+    let s = screen("paper-b4.9", 0.0, (80, 24), true, Some("p"));
+    assert!(s.lines().any(|l| l.contains("...")), "{s}");
+}
+
+#[test]
+fn one_v0_control_sets_both_balls() {
+    let mut a = app("unequal-speeds");
+    assert_ne!(a.lab.scene.left.v0, a.lab.scene.right.v0);
+    select(&mut a, Key::V0);
+    let s = screen_of(&a);
+    let row = s.lines().find(|l| l.contains("v0 (both)")).unwrap();
+    assert!(row.contains("differ"), "{row}");
+    press(&mut a, "right");
+    assert_eq!(a.lab.scene.left.v0, a.lab.scene.right.v0);
+    let v = a.lab.scene.left.v0;
+    let row = screen_of(&a)
+        .lines()
+        .find(|l| l.contains("v0 (both)"))
+        .unwrap()
+        .to_string();
+    assert!(row.contains(&format!("{v:.3} m/s")), "{row}");
+    press(&mut a, "enter 6 0 c m / s enter");
+    assert_eq!((a.lab.scene.left.v0, a.lab.scene.right.v0), (0.6, 0.6));
+}
+
+#[test]
+fn a_applies_the_fitted_mu_in_the_fit_view() {
+    let mut a = app("paper-b4.9");
+    press(&mut a, "a");
+    assert!(matches!(&a.status, Status::Error(e) if e.contains("Fit view")));
+    press(&mut a, "f");
+    a.lab.wait();
+    let State::Ready(Ok(f)) = a.lab.fits() else {
+        panic!("a fit")
+    };
+    let mu = f.model_fit.mu;
+    assert!(
+        (mu - a.lab.scene.mu).abs() > 1e-4,
+        "the test needs a change"
+    );
+    press(&mut a, "a");
+    assert_eq!(a.lab.scene.mu, mu);
+    assert!(
+        matches!(&a.status, Status::Info(i) if i.contains("applied the fit: μ_k = ")),
+        "{:?}",
+        a.status
+    );
+    let mut b = app("flat-table");
+    press(&mut b, "f a");
+    assert!(matches!(&b.status, Status::Error(_)));
+}
+
+#[test]
+fn export_writes_the_run_as_csv_and_the_chart_as_svg() {
+    use groovelab::cli::{Format, SimulateArgs, simulate};
+    let dir = std::env::temp_dir().join(format!("groovelab-export-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut a = app("paper-b4.9");
+    a.export_dir = dir.clone();
+    press(&mut a, "w");
+    assert!(matches!(&a.mode, Mode::Export(_, n) if n == "paper-b4.9-run.csv"));
+    press(&mut a, "enter");
+    // The file is written off the key press; the status line says so, then where.
+    assert!(matches!(&a.status, Status::Info(i) if i.starts_with("writing")));
+    a.wait();
+    let path = dir.join("paper-b4.9-run.csv");
+    let csv = std::fs::read_to_string(&path).unwrap();
+    assert!(matches!(&a.status, Status::Info(i) if i.contains(&path.display().to_string())));
+    // The same bytes as `simulate --format csv --sample 1ms`.
+    let scene = SceneArgs {
+        preset: Some("paper-b4.9".into()),
+        ..SceneArgs::default()
+    };
+    let cli = simulate(
+        &scene,
+        &SimulateArgs {
+            format: Format::Csv,
+            sample: Some(1e-3),
+            method: groovelab::methods::Method::Exact,
+            dt: None,
+            tol: None,
+            epsilon: None,
+        },
+    )
+    .unwrap();
+    assert_eq!(csv, cli);
+    // The chart as SVG, with the data points.
+    press(&mut a, "W enter");
+    a.wait();
+    assert!(matches!(&a.status, Status::Info(i) if i.contains("paper-b4.9-chart.svg")));
+    let svg = std::fs::read_to_string(dir.join("paper-b4.9-chart.svg")).unwrap();
+    assert!(
+        svg.starts_with("<svg") && svg.contains("measured v_cm"),
+        "{}",
+        &svg[..200]
+    );
+    // A file that cannot be written: the prompt stays open and says why; no temp file.
+    press(&mut a, "w");
+    a.mode = Mode::Export(groovelab::tui::app::Export::Csv, "no/such/dir/x.csv".into());
+    press(&mut a, "enter");
+    assert!(matches!(a.mode, Mode::Export(..)));
+    assert!(matches!(&a.status, Status::Error(e) if e.contains("cannot write")));
+    press(&mut a, "esc");
+    let left: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(left.len(), 2, "{left:?}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn the_data_table_shows_the_model_beside_every_measured_point() {
+    let mut a = app("paper-b4.9");
+    press(&mut a, "d");
+    assert_eq!(a.mode, Mode::Table);
+    let rows = groovelab::tui::view::data_rows(&a);
+    let m = a.lab.measured().unwrap().clone();
+    assert_eq!(rows.len(), m.t.len());
+    for (r, i) in rows.iter().zip(0..) {
+        let model = a.lab.solution.at(m.t[i]).left;
+        assert_eq!(
+            (r[0], r[1], r[2], r[4], r[5]),
+            (m.t[i], m.v_cm[i], model.v, m.v_t[i], model.u)
+        );
+        assert!((r[3] - (m.v_cm[i] - model.v)).abs() < 1e-15);
+    }
+    let s = screen_of(&a);
+    assert!(s.contains("v_cm (m/s)") && s.contains("t (s)"), "{s}");
+    assert!(s.contains(&format!("{:+.3}", rows[0][1])));
+    // It scrolls to the last row (at the size last drawn).
+    let _ = text_of(&a, 80, 24, false);
+    press(&mut a, "end");
+    let s = text_of(&a, 80, 24, false);
+    assert!(
+        s.contains(&format!("{:+.4}", rows.last().unwrap()[0])),
+        "{s}"
+    );
+    press(&mut a, "q");
+    assert_eq!(a.mode, Mode::Normal);
+    let mut b = app("flat-table");
+    press(&mut b, "d");
+    assert_eq!(b.mode, Mode::Normal);
+    assert!(matches!(&b.status, Status::Error(e) if e.contains("no measured data")));
+}
+
+#[test]
+fn snapshots_of_issue_11_screens() {
+    for (name, preset, keys) in [
+        ("help", "paper-b4.9", "?"),
+        ("help-end", "paper-b4.9", "? end"),
+        ("data-table", "paper-b4.9", "d"),
+        ("methods", "paper-b4.9", "c"),
+        ("fit", "paper-b4.9", "f"),
+        ("overlay", "paper-b4.9", "o"),
+        ("save-bad-name", "paper-b4.9", "s space x enter"),
+        ("export", "paper-b4.9", "w"),
+        ("v0-differ", "unequal-speeds", "down down down down"),
+    ] {
+        for (w, h) in [(80, 24), (120, 40), (200, 60)] {
+            for ascii in [false, true] {
+                let mode = if ascii { "ascii" } else { "unicode" };
+                // The test's preset folder has the process id in its name.
+                let s = screen(preset, 0.3, (w, h), ascii, Some(keys))
+                    .lines()
+                    .map(|l| match l.find(" saved in ") {
+                        Some(i) if l.contains("groovelab-tui-presets-") => {
+                            format!("{} saved in <the test's preset folder>", &l[..i])
+                        }
+                        _ => l.to_string(),
+                    })
+                    .collect::<Vec<_>>()
+                    .join("\n");
+                insta::assert_snapshot!(format!("issue11-{name}-{w}x{h}-{mode}"), s);
+            }
+        }
+    }
 }

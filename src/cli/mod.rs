@@ -186,7 +186,7 @@ pub fn render_with(
     };
     tui::replay(&mut app, &keys);
     // Headless output waits for every analysis the keys asked for: same input, same bytes.
-    app.lab.wait();
+    app.wait();
     if let Some(at) = args.at {
         let (lo, hi) = (app.lab.solution.t_start, app.lab.solution.t_end);
         if !(lo..=hi).contains(&at) {
@@ -317,43 +317,7 @@ fn json(solution: &Solution, derived: &Derived, samples: Option<&[Snapshot]>) ->
 
 /// CSV: the samples if `--sample` is given, else the events. SI units.
 fn csv_output(solution: &Solution, samples: Option<&[Snapshot]>) -> Result<String, CliError> {
-    let mut w = csv::Writer::from_writer(Vec::new());
-    let state_cols = [
-        "x_left", "v_left", "u_left", "x_right", "v_right", "u_right",
-    ];
-    let values = |s: &Snapshot| {
-        [
-            s.left.x, s.left.v, s.left.u, s.right.x, s.right.v, s.right.u,
-        ]
-        .map(|v| v.to_string())
-    };
-    let io = |e: csv::Error| CliError::Io(e.into());
-    match samples {
-        Some(samples) => {
-            w.write_record(std::iter::once("t").chain(state_cols))
-                .map_err(io)?;
-            for s in samples {
-                w.write_record(std::iter::once(s.t.to_string()).chain(values(s)))
-                    .map_err(io)?;
-            }
-        }
-        None => {
-            w.write_record(["t", "kind", "ball"].into_iter().chain(state_cols))
-                .map_err(io)?;
-            for e in solution.visible_events() {
-                let snap = Snapshot {
-                    t: e.t,
-                    left: e.left,
-                    right: e.right,
-                };
-                let head = [e.t.to_string(), e.kind.name().into(), e.ball.name().into()];
-                w.write_record(head.into_iter().chain(values(&snap)))
-                    .map_err(io)?;
-            }
-        }
-    }
-    let bytes = w.into_inner().map_err(|e| CliError::Io(e.into_error()))?;
-    Ok(String::from_utf8(bytes).expect("csv of ASCII numbers"))
+    crate::study::export::run_csv(solution, samples).map_err(|e| CliError::Io(e.into()))
 }
 
 fn table(

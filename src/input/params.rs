@@ -197,11 +197,11 @@ pub const PARAMS: [Param; 17] = [
         name: "v0",
         flag: "v0",
         symbol: "v0",
-        label: "v0",
+        label: "v0 (both)",
         dim: Dimension::Speed,
         range: SPEED,
         sets: &[Key::V0Left, Key::V0Right],
-        steps: None,
+        steps: SPEED_STEPS,
         help: "Speed of both balls toward the impact point just before it (e.g. 60cm/s)",
     },
     Param {

@@ -73,6 +73,11 @@ struct MeasuredFile {
     t: Vec<f64>,
     v_cm: Vec<f64>,
     v_t: Vec<f64>,
+    /// The optional columns of a series derived from a track ([`Measured`]'s fields).
+    v_cm_sigma: Option<Vec<f64>>,
+    v_t_sigma: Option<Vec<f64>>,
+    x: Option<Vec<f64>>,
+    angle: Option<Vec<f64>>,
 }
 
 impl Preset {
@@ -202,18 +207,44 @@ fn check_measured(m: MeasuredFile) -> Result<Measured, String> {
     if m.t.len() < 2 {
         return Err("measured series needs at least 2 points".into());
     }
-    // TOML writes inf and nan as plain floats.
-    for (name, series) in [("t", &m.t), ("v_cm", &m.v_cm), ("v_t", &m.v_t)] {
-        if let Some(i) = series.iter().position(|v| !v.is_finite()) {
+    // TOML writes inf and nan as plain floats. Times must be finite; a value may be
+    // nan (a missing mark, as a saved position track has), never infinite.
+    if let Some(i) = m.t.iter().position(|v| !v.is_finite()) {
+        return Err(format!(
+            "measured t[{i}] is not finite, allowed finite numbers"
+        ));
+    }
+    for (name, series) in [("v_cm", &m.v_cm), ("v_t", &m.v_t)] {
+        if let Some(i) = series.iter().position(|v| v.is_infinite()) {
             return Err(format!(
-                "measured {name}[{i}] is not finite, allowed finite numbers"
+                "measured {name}[{i}] is not finite, allowed finite numbers or nan (missing)"
             ));
         }
     }
     if !m.t.windows(2).all(|w| w[0] < w[1]) {
         return Err("measured times must increase".into());
     }
-    Ok(Measured::velocities(m.t, m.v_cm, m.v_t))
+    for (name, column) in [
+        ("v_cm_sigma", &m.v_cm_sigma),
+        ("v_t_sigma", &m.v_t_sigma),
+        ("x", &m.x),
+        ("angle", &m.angle),
+    ] {
+        if let Some(c) = column.as_ref().filter(|c| c.len() != m.t.len()) {
+            return Err(format!(
+                "measured {name} has {} values, t has {}: allowed the same length",
+                c.len(),
+                m.t.len()
+            ));
+        }
+    }
+    Ok(Measured {
+        v_cm_sigma: m.v_cm_sigma,
+        v_t_sigma: m.v_t_sigma,
+        x: m.x,
+        angle: m.angle,
+        ..Measured::velocities(m.t, m.v_cm, m.v_t)
+    })
 }
 
 /// A preset file's text for `spec` (SI numbers), written by the toml serializer so
@@ -280,6 +311,29 @@ mod tests {
         assert!(err.to_string().contains("widht"), "{err}");
         let text = "name = \"x\"\ndescription = \"d\"\ncolour = 1\n[scene]\n";
         assert!(Preset::parse(text, "x", Origin::BuiltIn).is_err());
+    }
+
+    #[test]
+    fn measured_series_round_trip_with_their_optional_columns() {
+        let mut m = Measured::velocities(
+            vec![-0.1, 0.0, 0.1],
+            vec![0.8, 0.7, -0.2],
+            vec![0.8, f64::NAN, 0.3],
+        );
+        m.x = Some(vec![-0.08, 0.0, 0.01]);
+        m.v_cm_sigma = Some(vec![0.01; 3]);
+        let spec = SceneSpec::default().with(Key::Radius, 0.0275);
+        let text = to_toml("x", "d", &spec, Some(&m)).unwrap();
+        let back = Preset::parse(&text, "x", Origin::BuiltIn).unwrap();
+        let got = back.measured.unwrap();
+        assert_eq!((got.t, got.v_cm, got.x), (m.t, m.v_cm, m.x));
+        assert!(got.v_t[1].is_nan() && got.v_t[2] == 0.3);
+        assert_eq!(got.v_cm_sigma, m.v_cm_sigma);
+        assert_eq!(got.angle, None);
+        let short = text.replace("x = [-0.08, 0.0, 0.01]", "x = [-0.08]");
+        assert!(short != text, "{text}");
+        let err = Preset::parse(&short, "x", Origin::BuiltIn).unwrap_err();
+        assert!(err.to_string().contains("measured x has 1 values"), "{err}");
     }
 
     #[test]

@@ -30,6 +30,19 @@ impl Dimension {
         }
     }
 
+    /// The unit the app shows and a bare typed number means, with its decimal exponent
+    /// to SI (cm: −2); empty for a pure number.
+    pub fn display_unit(self) -> (&'static str, i32) {
+        match self {
+            Dimension::Length => ("cm", -2),
+            Dimension::Mass => ("g", -3),
+            Dimension::Speed => ("m/s", 0),
+            Dimension::Time => ("s", 0),
+            Dimension::Acceleration => ("m/s²", 0),
+            Dimension::Ratio => ("", 0),
+        }
+    }
+
     /// The SI unit symbol, empty for a pure number.
     pub fn si_unit(self) -> &'static str {
         self.units().first().map_or("", |u| u.0)
@@ -169,6 +182,65 @@ fn shift_exponent(text: &str, shift: i32) -> f64 {
     format!("{m}e{}", exponent.saturating_add(i128::from(shift)))
         .parse()
         .unwrap_or(f64::NAN)
+}
+
+/// Parses what a person typed into the app: like [`parse_quantity`], but a bare number
+/// is in `dim`'s display unit (the unit the app shows it in: cm, g, m/s, s), a decimal
+/// comma counts as a point (`4,4cm`) and the unit's case is ignored (`4.6CM`, `167G`).
+/// The command line and preset files keep the strict [`parse_quantity`].
+pub fn parse_typed(text: &str, dim: Dimension) -> Result<f64, UnitError> {
+    let trimmed = text.trim();
+    // One comma and no point: a decimal comma. Anything else keeps its commas (and fails
+    // as a number), so "1,000.5" is not silently read as 1.0005.
+    let mut normal = if trimmed.matches(',').count() == 1 && !trimmed.contains('.') {
+        trimmed.replace(',', ".")
+    } else {
+        trimmed.to_string()
+    };
+    // The number is what parse_quantity finds; lower-case only the unit after it, so an
+    // exponent's `E` stays as typed.
+    let split = (1..=normal.len())
+        .rev()
+        .filter(|&i| normal.is_char_boundary(i))
+        .find(|&i| normal[..i].trim().parse::<f64>().is_ok());
+    if let Some(i) = split {
+        let unit = normal[i..].trim().to_lowercase();
+        if unit.is_empty() {
+            // A bare number is in the display unit: read it as if that unit were
+            // written, so the strict parser's range checks apply to it too.
+            let (name, shift) = dim.display_unit();
+            let number = normal.trim();
+            return if shift == 0 {
+                parse_quantity(number, dim)
+            } else {
+                parse_quantity(&format!("{number}{name}"), dim)
+            }
+            .map_err(|e| match e {
+                UnitError::NotANumber { text: _, allowed } => UnitError::NotANumber {
+                    text: text.to_string(),
+                    allowed,
+                },
+                other => other,
+            });
+        }
+        normal = format!("{}{unit}", &normal[..i]);
+    }
+    parse_quantity(&normal, dim).map_err(|e| match e {
+        UnitError::NotANumber { text: _, allowed } => UnitError::NotANumber {
+            text: text.to_string(),
+            allowed,
+        },
+        UnitError::UnknownUnit {
+            text: _,
+            unit,
+            allowed,
+        } => UnitError::UnknownUnit {
+            text: text.to_string(),
+            unit,
+            allowed,
+        },
+        other => other,
+    })
 }
 
 /// An SI value shown in the unit a lab user reads it in (cm for lengths, g for masses…).
@@ -417,6 +489,38 @@ mod tests {
             Err(UnitError::NotANumber { .. })
         ));
         assert!(parse_quantity("0.5cm", Dimension::Ratio).is_err());
+    }
+
+    #[test]
+    fn typed_values_are_in_the_display_unit_and_lenient() {
+        let cases = [
+            ("4.4", Dimension::Length, 0.044),
+            ("4,4cm", Dimension::Length, 0.044),
+            ("4,4", Dimension::Length, 0.044),
+            ("4.6CM", Dimension::Length, 0.046),
+            ("44mm", Dimension::Length, 0.044),
+            ("0.044 M", Dimension::Length, 0.044),
+            ("167", Dimension::Mass, 0.167),
+            ("167G", Dimension::Mass, 0.167),
+            ("0.167Kg", Dimension::Mass, 0.167),
+            ("0.6", Dimension::Speed, 0.6),
+            ("60CM/S", Dimension::Speed, 0.6),
+            ("0,17", Dimension::Ratio, 0.17),
+            ("1E-2", Dimension::Ratio, 0.01),
+            ("200MS", Dimension::Time, 0.2),
+        ];
+        for (text, dim, want) in cases {
+            assert_eq!(parse_typed(text, dim), Ok(want), "{text}");
+        }
+        // Still refused: junk, thousands separators, a unit of another dimension.
+        assert!(parse_typed("1,000.5", Dimension::Length).is_err());
+        assert!(parse_typed("4,4,4", Dimension::Length).is_err());
+        let e = parse_typed("3KG", Dimension::Length).unwrap_err();
+        assert!(e.to_string().contains("'3KG'"), "{e}");
+        assert!(parse_typed("", Dimension::Length).is_err());
+        // The strict parser is unchanged: a bare number is SI, case matters.
+        assert_eq!(parse_quantity("4.4", Dimension::Length), Ok(4.4));
+        assert!(parse_quantity("4.6CM", Dimension::Length).is_err());
     }
 
     #[test]

@@ -177,6 +177,8 @@ pub struct Lab {
     fits: Job<Result<Fits, String>>,
     /// The model fitted to a position track's positions (none for a velocity file).
     position_fit: Job<Result<ModelFit, String>>,
+    /// A file the app is writing (run CSV, chart SVG): the status message, or why not.
+    export: Job<Result<String, String>>,
     samples: Cached<usize, Snapshot>,
     energies: Cached<usize, (f64, EnergySplit)>,
     pinned_samples: Cached<usize, Snapshot>,
@@ -218,6 +220,7 @@ impl Lab {
             overlay: Job::Idle,
             fits: Job::Idle,
             position_fit: Job::Idle,
+            export: Job::Idle,
             samples: RefCell::default(),
             energies: RefCell::default(),
             pinned_samples: RefCell::default(),
@@ -444,7 +447,8 @@ impl Lab {
         let b = self.overlay.poll();
         let c = self.fits.poll();
         let d = self.position_fit.poll();
-        a || b || c || d
+        let e = self.export.poll();
+        a || b || c || d || e
     }
 
     /// Waits for every running analysis (headless output is then deterministic).
@@ -453,6 +457,26 @@ impl Lab {
         self.overlay.wait();
         self.fits.wait();
         self.position_fit.wait();
+        self.export.wait();
+    }
+
+    /// Writes a file off the key press (a chart's SVG takes milliseconds): `work`
+    /// returns the status message, or why nothing was written. A newer export
+    /// supersedes a running one.
+    pub fn start_export(&mut self, work: impl FnOnce() -> Result<String, String> + Send + 'static) {
+        self.export.start(move |_| work());
+    }
+
+    /// The finished export's message, once; `None` while it runs or when there is none.
+    pub fn take_export(&mut self) -> Option<Result<String, String>> {
+        self.export.poll();
+        match std::mem::take(&mut self.export) {
+            Job::Ready(r) => Some(r),
+            other => {
+                self.export = other;
+                None
+            }
+        }
     }
 
     /// True while an analysis runs.
@@ -461,6 +485,7 @@ impl Lab {
             || self.overlay.is_running()
             || self.fits.is_running()
             || self.position_fit.is_running()
+            || self.export.is_running()
     }
 
     /// Asks for (or stops asking for) the Methods view's rows.
@@ -719,7 +744,14 @@ impl Lab {
         if path.exists() && !overwrite {
             return Err(SaveError::Exists(path));
         }
-        let description = format!("Saved from groovelab (started from {})", self.preset.name);
+        // Overwriting keeps the description of the file it replaces.
+        let kept = path
+            .is_file()
+            .then(|| Preset::load(&path.display().to_string()).ok())
+            .flatten()
+            .map(|p| p.description);
+        let description = kept
+            .unwrap_or_else(|| format!("Saved from groovelab (started from {})", self.preset.name));
         // Only an end that was set (not the automatic one) is saved.
         let t_end = match self.span_end {
             SpanEnd::Fixed { t_end, .. } => Some(t_end),
@@ -732,7 +764,7 @@ impl Lab {
                 t_end,
             },
         );
-        let text = crate::input::preset::to_toml(name, &description, &spec, None)
+        let text = crate::input::preset::to_toml(name, &description, &spec, self.measured())
             .map_err(SaveError::Io)?;
         // What is written must load again: check before reporting success.
         Preset::parse(&text, name, crate::input::preset::Origin::BuiltIn)

@@ -2,12 +2,14 @@
 //! which view is shown. Everything computed about the scene is asked of the [`Lab`].
 //! No terminal here: keys arrive as [`Action`]s, so the whole app is testable without one.
 
+use std::cell::Cell;
 use std::path::PathBuf;
 use std::sync::LazyLock;
 
 use crate::input::params::{Key, PARAMS, Param};
 use crate::input::preset::Preset;
-use crate::input::units::{parse_quantity, show, significant};
+use crate::input::units::{Dimension, parse_typed, show, significant};
+use crate::lab::jobs::State;
 use crate::lab::{Lab, OVERLAY_LEVELS, SaveError};
 use crate::methods::Method;
 
@@ -31,6 +33,26 @@ pub enum View {
     Methods,
     /// The regime map and the paper's figure instead of the charts.
     Map,
+    /// The charts with the fit lines, and the Fit panel instead of the info panel.
+    Fit,
+}
+
+/// What `e` and `E` write.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Export {
+    /// The run sampled as CSV, the columns of `simulate --format csv --sample`.
+    Csv,
+    /// The chart on screen as SVG.
+    Svg,
+}
+
+impl Export {
+    pub fn extension(self) -> &'static str {
+        match self {
+            Export::Csv => "csv",
+            Export::Svg => "svg",
+        }
+    }
 }
 
 /// A popup or prompt over the main screen, which takes the keys while open.
@@ -46,6 +68,20 @@ pub enum Mode {
     SaveName(String),
     /// The file exists: overwrite it?
     ConfirmOverwrite(String),
+    /// Typing the file name to export to.
+    Export(Export, String),
+    /// The measured data beside the model's values at those times (scrolls).
+    Table,
+}
+
+impl Mode {
+    /// True for the prompts that take typed text (where `q` is a letter).
+    pub fn is_typing(&self) -> bool {
+        matches!(
+            self,
+            Mode::Edit(_) | Mode::SaveName(_) | Mode::ConfirmOverwrite(_) | Mode::Export(..)
+        )
+    }
 }
 
 /// Everything a key can do.
@@ -99,6 +135,10 @@ pub enum Action {
     Select(usize),
     /// Scroll on parameter row `i`: up increases.
     ScrollParam(usize, bool),
+    /// Fit view: the fitted values into the scene.
+    ApplyFit,
+    Export(Export),
+    DataTable,
 }
 
 /// Playback speeds (simulated seconds per real second); slow motion by default, as
@@ -155,10 +195,15 @@ pub struct App {
     pub quit: bool,
     pub library: Library,
     pub view: View,
-    /// The Fit panel instead of the info panel.
-    pub fit_view: bool,
     /// The overlay's level when one is switched on.
     pub overlay_level: u8,
+    /// First line shown of a scrolling popup (help, data table).
+    pub scroll: usize,
+    /// The largest useful `scroll` at the last drawn size (the popup sets it when it
+    /// draws, so a key never scrolls into blank lines).
+    pub scroll_max: Cell<usize>,
+    /// Where `e`/`E` write a bare file name.
+    pub export_dir: PathBuf,
 }
 
 impl App {
@@ -178,9 +223,16 @@ impl App {
             quit: false,
             library,
             view: View::Charts,
-            fit_view: false,
             overlay_level: 2,
+            scroll: 0,
+            scroll_max: Cell::new(usize::MAX),
+            export_dir: PathBuf::from("."),
         }
+    }
+
+    /// True in the Fit view (charts with fit lines, the Fit panel).
+    pub fn fit_view(&self) -> bool {
+        self.view == View::Fit
     }
 
     pub fn speed_factor(&self) -> f64 {
@@ -201,6 +253,13 @@ impl App {
                     "{label} = {}",
                     show(self.lab.value(key), key.dimension())
                 ));
+                let s = &self.lab.scene;
+                if key == Key::V0 && s.left.v0 == s.right.v0 {
+                    self.status = Status::Info(format!(
+                        "v0 of both balls = {}",
+                        show(s.left.v0, Dimension::Speed)
+                    ));
+                }
             }
             Err(e) => self.status = Status::Error(format!("not applied: {e}")),
         }
@@ -280,17 +339,23 @@ impl App {
 
     pub fn apply(&mut self, action: Action) {
         if action == Action::Quit {
-            // q (outside typing) and Ctrl-C quit from anywhere.
+            // Ctrl-C quits from anywhere; `q` only reaches here from the normal screen
+            // (in a popup the key table makes it close the popup, in a prompt it types).
             self.quit = true;
             return;
         }
         match self.mode.clone() {
             Mode::Normal => self.apply_normal(action),
-            // Any key closes the help.
-            Mode::Help => self.mode = Mode::Normal,
+            // Scroll keys scroll the help, any other key closes it.
+            Mode::Help | Mode::Table => {
+                if !self.scroll_popup(action) {
+                    self.mode = Mode::Normal;
+                }
+            }
             Mode::Picker(i) => self.apply_picker(i, action),
             Mode::Edit(text) => self.apply_text(text, action, TextTarget::Value),
             Mode::SaveName(text) => self.apply_text(text, action, TextTarget::Name),
+            Mode::Export(kind, text) => self.apply_text(text, action, TextTarget::Export(kind)),
             Mode::ConfirmOverwrite(name) => {
                 self.mode = Mode::Normal;
                 match action {
@@ -396,8 +461,32 @@ impl App {
                     .unwrap_or(0);
                 self.mode = Mode::Picker(i);
             }
-            Action::Save => self.mode = Mode::SaveName(format!("my-{}", self.lab.preset.name)),
-            Action::Help => self.mode = Mode::Help,
+            Action::Save => {
+                self.status = Status::None;
+                self.mode = Mode::SaveName(format!("my-{}", self.lab.preset.name));
+            }
+            Action::Help => self.open_scrolling(Mode::Help),
+            Action::DataTable => match self.lab.measured() {
+                Some(_) => self.open_scrolling(Mode::Table),
+                None => {
+                    self.status = Status::Error(format!(
+                        "preset {} has no measured data to show (the paper-b* presets have)",
+                        self.lab.preset.name
+                    ))
+                }
+            },
+            Action::Export(kind) => {
+                self.status = Status::None;
+                let what = match kind {
+                    Export::Csv => "run",
+                    Export::Svg => "chart",
+                };
+                self.mode = Mode::Export(
+                    kind,
+                    format!("{}-{what}.{}", self.lab.preset.name, kind.extension()),
+                );
+            }
+            Action::ApplyFit => self.apply_fit(),
             Action::SwitchBall => {
                 self.chart_ball = match self.chart_ball {
                     ChartBall::Left => ChartBall::Right,
@@ -412,9 +501,8 @@ impl App {
             Action::ToggleMethods => self.toggle_view(View::Methods),
             Action::ToggleMap => self.toggle_view(View::Map),
             Action::ToggleFit => {
-                self.fit_view = !self.fit_view;
-                self.lab.want_fits(self.fit_view);
-                if self.fit_view && self.lab.measured().is_none() {
+                self.toggle_view(View::Fit);
+                if self.fit_view() && self.lab.measured().is_none() {
                     self.status = Status::Error(format!(
                         "preset {} has no measured data to fit (the paper-b* presets have)",
                         self.lab.preset.name
@@ -471,6 +559,8 @@ impl App {
         }
     }
 
+    /// Shows `view`, or the charts if it is shown already: every view key switches
+    /// directly from any view.
     fn toggle_view(&mut self, view: View) {
         self.view = if self.view == view {
             View::Charts
@@ -478,6 +568,78 @@ impl App {
             view
         };
         self.lab.want_methods(self.view == View::Methods);
+        self.lab.want_fits(self.view == View::Fit);
+    }
+
+    fn open_scrolling(&mut self, mode: Mode) {
+        self.scroll = 0;
+        self.scroll_max.set(usize::MAX);
+        self.mode = mode;
+    }
+
+    /// Scrolls the open help or table if `action` is a scroll key; false otherwise.
+    fn scroll_popup(&mut self, action: Action) -> bool {
+        const PAGE: usize = 10;
+        // Never beyond what the last frame could show (a press after the end is felt).
+        let now = self.scroll.min(self.scroll_max.get());
+        self.scroll = match action {
+            Action::Up => now.saturating_sub(1),
+            Action::Down | Action::NextParam => now + 1,
+            Action::IncreaseCoarse => now.saturating_sub(PAGE),
+            Action::DecreaseCoarse => now + PAGE,
+            Action::Start => 0,
+            Action::End => usize::MAX,
+            _ => return false,
+        }
+        .min(self.scroll_max.get());
+        true
+    }
+
+    /// Fit view: puts the fitted μ_k (and v0, e where the fit freed them) into the scene.
+    fn apply_fit(&mut self) {
+        if !self.fit_view() {
+            self.status = Status::Error("a applies a fit: open the Fit view first (f)".into());
+            return;
+        }
+        let fitted = match self.lab.fits() {
+            State::Ready(Ok(f)) => f.model_fit.clone(),
+            State::Ready(Err(e)) => {
+                self.status = Status::Error(format!("no fit to apply: {e}"));
+                return;
+            }
+            State::Computing { .. } => {
+                self.status = Status::Error("the fit is still running: try again".into());
+                return;
+            }
+            State::Idle => {
+                self.status = Status::Error("no fit to apply: this preset has no data".into());
+                return;
+            }
+        };
+        // μ_k is always fitted; v0 and e only when the fit freed them (they have an
+        // uncertainty then).
+        let mut changes = vec![(Key::Mu, fitted.mu)];
+        if fitted.v0_se.is_some() {
+            changes.push((Key::V0, fitted.v0));
+        }
+        if fitted.restitution_se.is_some() {
+            changes.push((Key::Restitution, fitted.restitution));
+        }
+        let mut applied = Vec::new();
+        for (key, value) in changes {
+            if let Err(e) = self.lab.set(key, value) {
+                self.status = Status::Error(format!("fit not applied: {e}"));
+                return;
+            }
+            applied.push(format!(
+                "{} = {}",
+                key.param().symbol,
+                show(value, key.dimension())
+            ));
+        }
+        let sol = &self.lab.solution;
+        self.t = self.t.clamp(sol.t_start, sol.t_end);
+        self.status = Status::Info(format!("applied the fit: {}", applied.join(", ")));
     }
 
     fn move_window(&mut self, end: bool, later: bool) {
@@ -509,10 +671,104 @@ impl App {
         }
     }
 
+    /// Writes the run (CSV) or the chart on screen (SVG) to `name` (in `export_dir`
+    /// unless absolute), through a temporary file; says where in the status line.
+    fn export(&mut self, kind: Export, name: &str) -> Result<(), String> {
+        let name = name.trim();
+        if name.is_empty() {
+            return Err("give a file name".into());
+        }
+        let path = self.export_dir.join(name);
+        // What can be told at once keeps the prompt open; the writing itself (the SVG
+        // takes milliseconds) runs as a job and reports in the status line.
+        if let Some(dir) = path
+            .parent()
+            .filter(|d| !d.as_os_str().is_empty() && !d.is_dir())
+        {
+            return Err(format!(
+                "cannot write {}: no folder {}",
+                path.display(),
+                dir.display()
+            ));
+        }
+        let sol = std::sync::Arc::clone(&self.lab.solution);
+        let work: Box<ExportWork> = match kind {
+            Export::Csv => Box::new(move || {
+                let dt = export_step(sol.t_end - sol.t_start);
+                let samples = sol.sample(dt);
+                let text = crate::study::export::run_csv(&sol, Some(&samples))
+                    .map_err(|e| e.to_string())?;
+                let what = format!(
+                    "{} samples every {}",
+                    samples.len(),
+                    show(dt, Dimension::Time)
+                );
+                Ok((text.into_bytes(), what))
+            }),
+            Export::Svg => {
+                if self.show_energy {
+                    return Err(
+                        "the energy chart has no SVG export yet: press e for the velocities, x for positions"
+                            .into(),
+                    );
+                }
+                let which = if self.show_positions {
+                    crate::study::figures::RunChart::Positions
+                } else {
+                    crate::study::figures::RunChart::Velocities {
+                        left: self.chart_ball != ChartBall::Right,
+                        right: self.chart_ball != ChartBall::Left,
+                    }
+                };
+                let measured = self
+                    .lab
+                    .measured()
+                    .filter(|_| self.chart_ball != ChartBall::Right && !self.show_positions)
+                    .cloned();
+                Box::new(move || {
+                    let text = crate::study::figures::run_chart(&sol, which, measured.as_ref())
+                        .map_err(|e| format!("cannot draw the chart: {e}"))?;
+                    Ok((text.into_bytes(), "the chart".to_string()))
+                })
+            }
+        };
+        self.status = Status::Info(format!("writing {}…", path.display()));
+        self.lab.start_export(move || {
+            let (bytes, what) = work()?;
+            crate::output::write_atomically(&path, &bytes).map_err(|e| e.to_string())?;
+            Ok(format!("wrote {} ({what})", path.display()))
+        });
+        Ok(())
+    }
+
+    /// Takes in finished analyses and a finished export (its message goes to the
+    /// status line); true if anything arrived (the screen needs a redraw).
+    pub fn poll(&mut self) -> bool {
+        let lab = self.lab.poll();
+        let export = self.take_export();
+        lab || export
+    }
+
+    /// Waits for every running analysis and export (headless output is deterministic).
+    pub fn wait(&mut self) {
+        self.lab.wait();
+        self.take_export();
+    }
+
+    fn take_export(&mut self) -> bool {
+        match self.lab.take_export() {
+            Some(Ok(message)) => self.status = Status::Info(message),
+            Some(Err(e)) => self.status = Status::Error(format!("not written: {e}")),
+            None => return false,
+        }
+        true
+    }
+
     fn apply_text(&mut self, mut text: String, action: Action, target: TextTarget) {
         let reopen = |text: String| match target {
             TextTarget::Value => Mode::Edit(text),
             TextTarget::Name => Mode::SaveName(text),
+            TextTarget::Export(kind) => Mode::Export(kind, text),
         };
         match action {
             Action::Type(c) => {
@@ -532,6 +788,13 @@ impl App {
                 match target {
                     TextTarget::Value => self.typed_value(&text),
                     TextTarget::Name => self.save(&text, false),
+                    TextTarget::Export(kind) => {
+                        if let Err(e) = self.export(kind, &text) {
+                            // Keep the prompt open with the name, and say why.
+                            self.status = Status::Error(format!("not written: {e}"));
+                            self.mode = Mode::Export(kind, text);
+                        }
+                    }
                 }
             }
             _ => self.mode = reopen(text),
@@ -540,7 +803,7 @@ impl App {
 
     fn typed_value(&mut self, text: &str) {
         let p = ROWS[self.selected];
-        match parse_quantity(text, p.dim) {
+        match parse_typed(text, p.dim) {
             Ok(v) => self.set_value(p.key, v),
             Err(e) => self.status = Status::Error(format!("not applied: {} {e}", p.label)),
         }
@@ -554,6 +817,11 @@ impl App {
                 self.status = Status::Info(format!("saved {}", path.display()));
             }
             Err(SaveError::Exists(_)) => self.mode = Mode::ConfirmOverwrite(name.trim().into()),
+            Err(e @ SaveError::BadName(_)) => {
+                // Keep the dialog open with the name as typed, and say why.
+                self.status = Status::Error(format!("not saved: {e}"));
+                self.mode = Mode::SaveName(name.to_string());
+            }
             Err(e) => self.status = Status::Error(format!("not saved: {e}")),
         }
     }
@@ -577,8 +845,44 @@ impl App {
     }
 }
 
+/// The body of an export job: the file's bytes and what they are, or why not.
+type ExportWork = dyn FnOnce() -> Result<(Vec<u8>, String), String> + Send;
+
 #[derive(Clone, Copy)]
 enum TextTarget {
     Value,
     Name,
+    Export(Export),
+}
+
+/// The CSV export's sample step for a run `span` seconds long: 1 ms, coarser (1-2-5)
+/// for long runs so that a file stays under about 10,000 rows.
+pub fn export_step(span: f64) -> f64 {
+    let mut dt = 1e-3;
+    for factor in [2.0, 2.5, 2.0].iter().cycle() {
+        if span / dt <= 10_000.0 || !dt.is_finite() {
+            break;
+        }
+        dt *= factor;
+    }
+    dt
+}
+
+/// The prompt of the typing field for parameter `p`: which unit a bare number is in.
+pub fn typing_prompt(p: &Param) -> String {
+    let (unit, _) = p.dim.display_unit();
+    let example = match p.dim {
+        Dimension::Length => "44mm",
+        Dimension::Mass => "0.2kg",
+        Dimension::Speed => "60cm/s",
+        Dimension::Time => "200ms",
+        Dimension::Acceleration => "9.81",
+        Dimension::Ratio => "",
+    };
+    let name = p.label;
+    if unit.is_empty() {
+        format!("{name}: a plain number (e.g. 0.17), Enter applies, Esc cancels")
+    } else {
+        format!("{name} in {unit} (or with a unit, e.g. {example}), Enter applies, Esc cancels")
+    }
 }

@@ -3,7 +3,7 @@
 
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
 
-use super::app::{Action, Mode};
+use super::app::{Action, Export, Mode};
 
 /// One line of the key table.
 #[derive(Clone, Copy, Debug)]
@@ -12,8 +12,9 @@ pub struct Binding {
     pub keys: &'static [&'static str],
     pub action: Action,
     pub help: &'static str,
-    /// Short label for the hint bar, if it earns a place there.
-    pub hint: Option<&'static str>,
+    /// Short label for the hint bar, if it earns a place there, and its priority: a
+    /// narrow hint bar drops the lowest first (`? help` and `q quit` never go).
+    pub hint: Option<(&'static str, u8)>,
 }
 
 pub const TABLE: &[Binding] = &[
@@ -21,7 +22,7 @@ pub const TABLE: &[Binding] = &[
         keys: &["space"],
         action: Action::PlayPause,
         help: "play / pause",
-        hint: Some("play"),
+        hint: Some(("play", 8)),
     },
     Binding {
         keys: &["up"],
@@ -33,7 +34,7 @@ pub const TABLE: &[Binding] = &[
         keys: &["down", "tab"],
         action: Action::Down,
         help: "next parameter",
-        hint: Some("select"),
+        hint: Some(("select", 7)),
     },
     Binding {
         keys: &["right"],
@@ -45,7 +46,7 @@ pub const TABLE: &[Binding] = &[
         keys: &["left"],
         action: Action::Decrease,
         help: "decrease the parameter (fine)",
-        hint: Some("change"),
+        hint: Some(("change", 7)),
     },
     Binding {
         keys: &["S-right", "pgup"],
@@ -62,8 +63,8 @@ pub const TABLE: &[Binding] = &[
     Binding {
         keys: &["enter"],
         action: Action::Edit,
-        help: "type a value with units, e.g. 4.4cm (Esc cancels)",
-        hint: Some("type"),
+        help: "type a value: a bare number is in the unit shown (4.4 for b means 4.4 cm), or give a unit (44mm, 4,4cm); Esc cancels",
+        hint: Some(("type", 6)),
     },
     Binding {
         keys: &["+", "="],
@@ -75,7 +76,7 @@ pub const TABLE: &[Binding] = &[
         keys: &["-"],
         action: Action::Slower,
         help: "slower playback",
-        hint: Some("speed"),
+        hint: Some(("speed", 2)),
     },
     Binding {
         keys: &["."],
@@ -153,19 +154,19 @@ pub const TABLE: &[Binding] = &[
         keys: &["c"],
         action: Action::ToggleMethods,
         help: "Methods view: error against work of each solution method",
-        hint: Some("methods"),
+        hint: Some(("methods", 3)),
     },
     Binding {
         keys: &["g"],
         action: Action::ToggleMap,
         help: "Map view: regime over b/R and e with this scene marked, the paper's figure",
-        hint: Some("map"),
+        hint: Some(("map", 3)),
     },
     Binding {
         keys: &["f"],
         action: Action::ToggleFit,
         help: "Fit view: the paper's line fits and a model fit to the measured data",
-        hint: Some("fit"),
+        hint: Some(("fit", 4)),
     },
     Binding {
         keys: &["("],
@@ -195,7 +196,7 @@ pub const TABLE: &[Binding] = &[
         keys: &["o"],
         action: Action::CycleOverlay,
         help: "overlay a time-stepping method on the exact curves (cycles, then off)",
-        hint: Some("overlay"),
+        hint: Some(("overlay", 1)),
     },
     Binding {
         keys: &["]"],
@@ -210,10 +211,34 @@ pub const TABLE: &[Binding] = &[
         hint: None,
     },
     Binding {
+        keys: &["a"],
+        action: Action::ApplyFit,
+        help: "Fit view: put the fitted μ_k (and v0, e if fitted) into the scene",
+        hint: None,
+    },
+    Binding {
+        keys: &["d"],
+        action: Action::DataTable,
+        help: "table of the measured data beside the model (scrolls)",
+        hint: None,
+    },
+    Binding {
+        keys: &["w"],
+        action: Action::Export(Export::Csv),
+        help: "write the run to a CSV file (the columns of simulate --format csv)",
+        hint: None,
+    },
+    Binding {
+        keys: &["W"],
+        action: Action::Export(Export::Svg),
+        help: "write the chart on screen to an SVG file",
+        hint: None,
+    },
+    Binding {
         keys: &["p"],
         action: Action::Presets,
         help: "choose a preset",
-        hint: Some("presets"),
+        hint: Some(("presets", 5)),
     },
     Binding {
         keys: &["s"],
@@ -230,20 +255,20 @@ pub const TABLE: &[Binding] = &[
     Binding {
         keys: &["?"],
         action: Action::Help,
-        help: "this help",
-        hint: Some("help"),
+        help: "this help (up/down, pgup/pgdn scroll)",
+        hint: Some(("help", 9)),
     },
     Binding {
         keys: &["esc"],
         action: Action::Cancel,
-        help: "close a popup, cancel typing, or quit",
+        help: "close a popup, cancel typing; on the main screen: quit",
         hint: None,
     },
     Binding {
         keys: &["q", "C-c"],
         action: Action::Quit,
-        help: "quit",
-        hint: Some("quit"),
+        help: "quit (q in a popup closes it; Ctrl-C always quits)",
+        hint: Some(("quit", 9)),
     },
 ];
 
@@ -288,10 +313,7 @@ pub fn action(mode: &Mode, key: KeyEvent) -> Option<Action> {
     if key.code == KeyCode::Char('c') && key.modifiers.contains(KeyModifiers::CONTROL) {
         return Some(Action::Quit);
     }
-    if matches!(
-        mode,
-        Mode::Edit(_) | Mode::SaveName(_) | Mode::ConfirmOverwrite(_)
-    ) {
+    if mode.is_typing() {
         return match key.code {
             KeyCode::Enter => Some(Action::Confirm),
             KeyCode::Esc => Some(Action::Cancel),
@@ -299,6 +321,11 @@ pub fn action(mode: &Mode, key: KeyEvent) -> Option<Action> {
             KeyCode::Char(c) => Some(Action::Type(c)),
             _ => None,
         };
+    }
+    // In a popup (help, picker, data table) `q` closes it like Esc: only the main
+    // screen quits on `q`.
+    if *mode != Mode::Normal && key.code == KeyCode::Char('q') {
+        return Some(Action::Cancel);
     }
     // Terminals report Shift+← as Left with SHIFT; a typed `+` may carry SHIFT too.
     let plain_char = matches!(key.code, KeyCode::Char(_));
@@ -331,12 +358,35 @@ pub fn parse_script(script: &str) -> Result<Vec<KeyEvent>, String> {
         .collect()
 }
 
+/// Width of one hint in the bar: keys, a space, the label, two spaces.
+pub fn hint_width(keys: &str, label: &str) -> usize {
+    keys.chars().count() + label.chars().count() + 3
+}
+
+/// The hint bar's entries that fit in `width` columns, in table order: the lowest
+/// priority goes first, so `? help` and `q quit` stay at every width.
+pub fn hints_within(width: usize, ascii: bool) -> Vec<(String, &'static str)> {
+    let mut all: Vec<(String, &'static str, u8)> = hints(ascii)
+        .into_iter()
+        .zip(TABLE.iter().filter_map(|b| b.hint))
+        .map(|((keys, label), (_, priority))| (keys, label, priority))
+        .collect();
+    let total = |v: &[(String, &str, u8)]| v.iter().map(|h| hint_width(&h.0, h.1)).sum::<usize>();
+    while total(&all) > width && all.len() > 2 {
+        // The last of the lowest priority goes first.
+        let lowest = all.iter().map(|h| h.2).min().unwrap_or(0);
+        let i = all.iter().rposition(|h| h.2 == lowest).unwrap_or(0);
+        all.remove(i);
+    }
+    all.into_iter().map(|(k, l, _)| (k, l)).collect()
+}
+
 /// The hint bar's entries: `(keys, label)`, arrows spelt out in ASCII.
 pub fn hints(ascii: bool) -> Vec<(String, &'static str)> {
     TABLE
         .iter()
         .filter_map(|b| {
-            let label = b.hint?;
+            let (label, _) = b.hint?;
             let keys = match (b.action, ascii) {
                 (Action::Decrease, false) => "←→",
                 (Action::Decrease, true) => "left/right",
@@ -353,6 +403,22 @@ pub fn hints(ascii: bool) -> Vec<(String, &'static str)> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn no_key_is_bound_twice() {
+        // e is the energy chart (issue 11a), w / W write the run / the chart.
+        let mut seen = std::collections::HashSet::new();
+        for b in TABLE {
+            for k in b.keys {
+                assert!(seen.insert(*k), "{k} is bound twice");
+            }
+        }
+        for k in [
+            "e", "w", "W", "a", "d", "t", "P", ">", "<", "x", "b", "c", "g", "f", "o",
+        ] {
+            assert!(seen.contains(k), "{k} is not bound");
+        }
+    }
 
     #[test]
     fn every_name_in_the_table_parses() {
@@ -378,6 +444,41 @@ mod tests {
             Some(Action::Confirm)
         );
         assert_eq!(action(&edit, parse("C-c").unwrap()), Some(Action::Quit));
+    }
+
+    #[test]
+    fn q_closes_popups_types_in_prompts_and_quits_only_the_main_screen() {
+        let q = parse("q").unwrap();
+        assert_eq!(action(&Mode::Normal, q), Some(Action::Quit));
+        for popup in [Mode::Help, Mode::Picker(0), Mode::Table] {
+            assert_eq!(action(&popup, q), Some(Action::Cancel), "{popup:?}");
+            assert_eq!(action(&popup, parse("C-c").unwrap()), Some(Action::Quit));
+        }
+        for prompt in [
+            Mode::SaveName(String::new()),
+            Mode::ConfirmOverwrite("x".into()),
+            Mode::Export(Export::Csv, String::new()),
+        ] {
+            assert_eq!(action(&prompt, q), Some(Action::Type('q')), "{prompt:?}");
+        }
+    }
+
+    #[test]
+    fn the_hint_bar_keeps_help_and_quit_at_every_width() {
+        for width in [20, 60, 78, 80, 118, 198] {
+            let h = hints_within(width, false);
+            let labels: Vec<&str> = h.iter().map(|x| x.1).collect();
+            assert!(labels.ends_with(&["help", "quit"]), "{width}: {labels:?}");
+            let used: usize = h.iter().map(|(k, l)| hint_width(k, l)).sum();
+            assert!(used <= width.max(hint_width("?", "help") + hint_width("q", "quit")));
+        }
+        // At 80 columns the most important keys stay, in table order.
+        let labels: Vec<&str> = hints_within(78, true).iter().map(|x| x.1).collect();
+        assert!(
+            labels.starts_with(&["play", "select", "change"]),
+            "{labels:?}"
+        );
+        assert_eq!(hints_within(400, false).len(), hints(false).len());
     }
 
     #[test]

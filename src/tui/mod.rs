@@ -159,7 +159,7 @@ fn event_loop(
                     let seek = match m.kind {
                         MouseEventKind::Down(MouseButton::Left)
                         | MouseEventKind::Drag(MouseButton::Left) => {
-                            view::chart_time_at(app, area, m.column, m.row)
+                            view::chart_time_at_in(app, area, theme, m.column, m.row)
                         }
                         _ => None,
                     };
@@ -190,7 +190,7 @@ fn event_loop(
                 _ => {}
             }
         }
-        if app.lab.poll() || app.lab.busy() {
+        if app.poll() || app.lab.busy() {
             dirty = true;
         }
         if app.mouse != mouse {

@@ -7,7 +7,7 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::Style;
 
-use super::theme::Theme;
+use super::theme::{Glyphs, Theme};
 
 /// How a series is drawn.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -235,32 +235,74 @@ impl Plot {
             .collect()
     }
 
-    /// The data cells of the plot drawn in `area` (right of the y axis, between the
-    /// legend row and the x tick row); `None` if the area is too small to draw.
-    pub fn data_area(&self, area: Rect) -> Option<Rect> {
-        if area.width < 12 || area.height < 4 {
-            return None;
-        }
-        let margin = self
-            .y_ticks_in(area)
+    /// Width of the y tick labels: the plot starts right of them. Labels are short
+    /// (scientific beyond 1e6), but a margin never eats more than half the area.
+    fn margin(&self, area: Rect) -> u16 {
+        self.y_ticks_in(area)
             .iter()
             .map(|(_, l)| l.chars().count())
             .max()
             .unwrap_or(1)
-            // Labels are short (scientific beyond 1e6), but a margin never eats the plot.
-            .min(usize::from(area.width / 2)) as u16;
+            .min(usize::from(area.width / 2)) as u16
+    }
+
+    /// The legend: a mark and a name for every named series, on the title row after
+    /// the y title and, if they do not fit there, on up to three more rows (taken from
+    /// the plot while it keeps six rows at least). Returns each entry's text, style,
+    /// column and row (0 = the title row), and the number of extra rows used.
+    /// [`Plot::data_area`] and [`Plot::render`] both use it, so a click maps to the
+    /// cells that are drawn.
+    #[allow(clippy::type_complexity)]
+    fn legend(&self, area: Rect, glyphs: &Glyphs) -> (Vec<(String, Style, u16, u16)>, u16) {
+        let margin = self.margin(area);
+        let first_x = area.x + self.y_title.chars().count() as u16 + 2;
+        let max_row = area.height.saturating_sub(9).min(3);
+        let (mut row, mut x) = (0u16, first_x);
+        let mut out = Vec::new();
+        for s in self.series.iter().filter(|s| !s.name.is_empty()) {
+            // ASCII lines are drawn with their glyph: the legend shows it twice.
+            let mark = match (s.draw, glyphs.ascii) {
+                (Draw::Line, false) => "──".to_string(),
+                (Draw::Line, true) => format!("{0}{0}", s.glyph),
+                (Draw::Points, _) => s.glyph.to_string(),
+            };
+            let text = format!(" {mark} {}", glyphs.text(&s.name));
+            let w = text.chars().count() as u16;
+            if x.saturating_add(w) > area.right() && row < max_row {
+                row += 1;
+                x = area.x + margin;
+            }
+            if x.saturating_add(w) > area.right() {
+                break;
+            }
+            out.push((text, s.style, x, row));
+            x += w;
+        }
+        (out, row)
+    }
+
+    /// The data cells of the plot drawn in `area` with `theme`'s glyphs (right of the
+    /// y axis, below the title and legend rows, above the x tick row); `None` if the
+    /// area is too small to draw.
+    pub fn data_area(&self, area: Rect, theme: &Theme) -> Option<Rect> {
+        if area.width < 12 || area.height < 4 {
+            return None;
+        }
+        let margin = self.margin(area);
+        let (_, row) = self.legend(area, &theme.glyphs);
         let plot = Rect {
             x: area.x + margin + 1,
-            y: area.y + 1,
+            y: area.y + 1 + row,
             width: area.width.saturating_sub(margin + 1),
-            height: area.height.saturating_sub(2),
+            height: area.height.saturating_sub(2 + row),
         };
         (plot.width >= 4 && plot.height >= 2).then_some(plot)
     }
 
-    /// The x value under screen cell (`column`, `row`) of the plot drawn in `area`.
-    pub fn x_at(&self, area: Rect, column: u16, row: u16) -> Option<f64> {
-        let plot = self.data_area(area)?;
+    /// The x value under screen cell (`column`, `row`) of the plot drawn in `area`
+    /// with `theme`.
+    pub fn x_at(&self, area: Rect, theme: &Theme, column: u16, row: u16) -> Option<f64> {
+        let plot = self.data_area(area, theme)?;
         if row < plot.y || row >= plot.bottom() {
             return None;
         }
@@ -268,7 +310,7 @@ impl Plot {
     }
 
     pub fn render(&self, area: Rect, buf: &mut Buffer, theme: &Theme) {
-        let Some(plot) = self.data_area(area) else {
+        let Some(plot) = self.data_area(area, theme) else {
             return;
         };
         let g = theme.glyphs;
@@ -291,37 +333,20 @@ impl Plot {
                 .clamp(0.0, (rows - 1) as f64)
         };
 
-        // Title and legend.
-        let mut head = self.y_title.clone();
-        let mut legend: Vec<(String, Style)> = Vec::new();
-        for s in &self.series {
-            if !s.name.is_empty() {
-                let mark = if s.draw == Draw::Line && !g.ascii {
-                    "──"
-                } else {
-                    s.glyph
-                };
-                // ASCII lines are drawn with their glyph: the legend shows it twice.
-                let mark = if s.draw == Draw::Line && g.ascii {
-                    format!("{0}{0}", s.glyph)
-                } else {
-                    mark.to_string()
-                };
-                legend.push((format!(" {mark} {}", s.name), s.style));
-            }
+        // Title and legend (the same layout data_area made room for).
+        buf.set_stringn(
+            area.x,
+            area.y,
+            &self.y_title,
+            area.width as usize,
+            theme.dim,
+        );
+        let (legend, _) = self.legend(area, &g);
+        for (text, style, x, row) in legend {
+            buf.set_string(x, area.y + row, &text, style);
         }
-        buf.set_stringn(area.x, area.y, &head, area.width as usize, theme.dim);
-        let mut x = usize::from(area.x) + head.chars().count() + 2;
-        for (text, style) in legend {
-            let w = text.chars().count();
-            if x + w > usize::from(area.right()) {
-                break;
-            }
-            buf.set_string(x as u16, area.y, &text, style);
-            x += w;
-        }
-        head.clear();
 
+        // Row 0 (and more): y title and legend; last row: x ticks; left: ticks and axis.
         // Axis and y ticks.
         let axis_x = area.x + margin;
         for r in 0..plot.height {
@@ -622,6 +647,55 @@ mod tests {
             None,
             "one column: no range"
         );
+    }
+
+    #[test]
+    fn legend_rows_push_the_data_area_down_and_clicks_follow() {
+        let line = |name: &str| Series {
+            name: name.into(),
+            points: vec![(0.0, 0.0), (1.0, 1.0)],
+            style: Style::default(),
+            glyph: "*",
+            draw: Draw::Line,
+        };
+        let plot = |n: usize| Plot {
+            x_range: (0.0, 1.0),
+            y_range: (0.0, 1.0),
+            x_title: "t (s)".into(),
+            y_title: "v (m/s)".into(),
+            series: (0..n).map(|i| line(&format!("curve number {i}"))).collect(),
+            vlines: Vec::new(),
+            cursor: None,
+            x_ticks: None,
+            y_ticks: None,
+        };
+        for ascii in [false, true] {
+            let theme = Theme::new(crate::tui::theme::Glyphs::new(ascii), true);
+            let area = Rect::new(3, 2, 60, 20);
+            let one = plot(1).data_area(area, &theme).unwrap();
+            let many = plot(6).data_area(area, &theme).unwrap();
+            // Six entries of 18 columns need three rows of 60: two more than one entry.
+            assert_eq!(many.y, one.y + 2, "ascii {ascii}");
+            assert_eq!(many.bottom(), one.bottom());
+            // The drawn plot starts where data_area says: the axis begins on its first
+            // row, and the row above it holds legend text, not the axis.
+            let mut buf = Buffer::empty(Rect::new(0, 0, 70, 25));
+            plot(6).render(area, &mut buf, &theme);
+            let axis = buf[(many.x - 1, many.y)].symbol().to_string();
+            assert!(
+                axis == theme.glyphs.vline || axis == "┤" || axis == "+",
+                "{axis}"
+            );
+            let above = buf[(many.x - 1, many.y - 1)].symbol().to_string();
+            assert_ne!(above, theme.glyphs.vline, "ascii {ascii}");
+            let legend_row: String = (area.x..area.right())
+                .map(|x| buf[(x, many.y - 1)].symbol().to_string())
+                .collect();
+            assert!(legend_row.contains("curve number"), "{legend_row}");
+            // A click on a legend row is not a seek; one on the first data row is.
+            assert_eq!(plot(6).x_at(area, &theme, many.x + 5, many.y - 1), None);
+            assert!(plot(6).x_at(area, &theme, many.x + 5, many.y).is_some());
+        }
     }
 
     #[test]

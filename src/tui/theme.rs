@@ -102,6 +102,14 @@ impl Glyphs {
         out
     }
 
+    /// `text` as this mode writes it ([`Glyphs::text`]), cut to `width` columns with an
+    /// ellipsis (… or ...) when it does not fit: at the last word boundary if one is
+    /// near, never silently mid-word.
+    pub fn ellipsize(&self, text: &str, width: usize) -> String {
+        let mark = if self.ascii { "..." } else { "…" };
+        ellipsize_with(&self.text(text), width, mark)
+    }
+
     pub fn new(ascii: bool) -> Glyphs {
         if ascii {
             Glyphs::ASCII
@@ -111,10 +119,48 @@ impl Glyphs {
     }
 }
 
+/// `text` cut to `width` characters, ending in `mark` when cut (see
+/// [`Glyphs::ellipsize`]); a word boundary within the last third is preferred.
+pub fn ellipsize_with(text: &str, width: usize, mark: &str) -> String {
+    let n = text.chars().count();
+    if n <= width {
+        return text.to_string();
+    }
+    let mark_len = mark.chars().count();
+    if width <= mark_len {
+        return mark.chars().take(width).collect();
+    }
+    let room = width - mark_len;
+    let head: String = text.chars().take(room).collect();
+    // Cut after the last space or punctuation if that keeps two thirds of the room.
+    let ends_a_word = text.chars().nth(room) == Some(' ');
+    let boundary = head
+        .char_indices()
+        .rev()
+        .filter(|(_, c)| matches!(c, ' ' | ',' | ';' | ':' | '/' | '(' | ')'))
+        .map(|(i, c)| {
+            if c == ' ' || c == '(' {
+                i
+            } else {
+                i + c.len_utf8()
+            }
+        })
+        .next()
+        .filter(|&i| head[..i].chars().count() * 3 >= room * 2);
+    let kept = match boundary {
+        _ if ends_a_word => head.trim_end(),
+        Some(i) => head[..i].trim_end(),
+        None => head.as_str(),
+    };
+    format!("{kept}{mark}")
+}
+
 /// Styles of the app.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Theme {
     pub glyphs: Glyphs,
+    /// NO_COLOR: styles are modifiers only, so marks must differ by glyph.
+    pub monochrome: bool,
     pub text: Style,
     pub dim: Style,
     pub title: Style,
@@ -126,6 +172,9 @@ pub struct Theme {
     /// Second series of a ball (v_t) and the like.
     pub accent: Style,
     pub measured: Style,
+    /// A time-stepping overlay's v_cm and v_t: never the measured data's colour.
+    pub overlay: Style,
+    pub overlay_t: Style,
     pub event: Style,
     pub cursor: Style,
     pub flash: Style,
@@ -141,6 +190,7 @@ impl Theme {
         if monochrome {
             return Theme {
                 glyphs,
+                monochrome,
                 text: plain,
                 dim: plain.add_modifier(Modifier::DIM),
                 title: plain.add_modifier(Modifier::BOLD),
@@ -151,6 +201,8 @@ impl Theme {
                 right: plain,
                 accent: plain.add_modifier(Modifier::DIM),
                 measured: plain.add_modifier(Modifier::BOLD),
+                overlay: plain.add_modifier(Modifier::ITALIC),
+                overlay_t: plain.add_modifier(Modifier::ITALIC | Modifier::DIM),
                 event: plain.add_modifier(Modifier::DIM),
                 cursor: plain.add_modifier(Modifier::BOLD),
                 flash: plain.add_modifier(Modifier::BOLD | Modifier::REVERSED),
@@ -160,6 +212,7 @@ impl Theme {
         }
         Theme {
             glyphs,
+            monochrome,
             text: plain,
             dim: plain.fg(Color::Gray),
             title: plain.fg(Color::Cyan).add_modifier(Modifier::BOLD),
@@ -170,6 +223,8 @@ impl Theme {
             right: plain.fg(Color::Magenta).add_modifier(Modifier::BOLD),
             accent: plain.fg(Color::Yellow),
             measured: plain.fg(Color::Red),
+            overlay: plain.fg(Color::LightCyan),
+            overlay_t: plain.fg(Color::LightGreen),
             event: plain.fg(Color::DarkGray),
             cursor: plain.fg(Color::Green).add_modifier(Modifier::BOLD),
             flash: plain.fg(Color::Red).add_modifier(Modifier::BOLD),
@@ -203,5 +258,26 @@ pub fn force_ascii(buf: &mut Buffer) {
             _ => "?",
         };
         cell.set_symbol(stand_in);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ellipsize_cuts_at_words_and_says_so() {
+        let g = Glyphs::UNICODE;
+        assert_eq!(g.ellipsize("short", 10), "short");
+        assert_eq!(g.ellipsize("exactly ten", 11), "exactly ten");
+        let cut = g.ellipsize("saved /home/user/presets/my-paper.toml", 20);
+        assert_eq!(cut.chars().count(), 20.min(cut.chars().count()));
+        assert!(cut.ends_with('…') && cut.chars().count() <= 20, "{cut}");
+        assert_eq!(g.ellipsize("the balls roll apart", 15), "the balls roll…");
+        // A long word is cut mid-word, but with the mark.
+        assert_eq!(g.ellipsize("abcdefghijklmnop", 6), "abcde…");
+        let a = Glyphs::ASCII.ellipsize("μ_k = 0.17 applied from the fit", 12);
+        assert!(a.is_ascii() && a.ends_with("...") && a.len() <= 12, "{a}");
+        assert_eq!(Glyphs::ASCII.ellipsize("abc", 2), "..");
     }
 }

@@ -52,6 +52,7 @@ fn chart(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let (title, plot) = chart(app, area, theme);
+    let title = super::title_within(&title, area, theme);
     let blk = block(title, theme);
     let inner = blk.inner(area);
     blk.render(area, buf);
@@ -60,15 +61,16 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
 
 /// The time under screen cell (`column`, `row`) of the chart drawn in `area`, if the
 /// cell is inside the plot (what a click on the chart seeks to).
-pub fn time_at(app: &App, area: Rect, column: u16, row: u16) -> Option<f64> {
-    let (title, plot) = chart(app, area, theme_for_layout());
-    let inner = block(title, theme_for_layout()).inner(area);
-    plot.x_at(inner, column, row)
+/// `theme` must be the one the chart is drawn with: the legend's rows (which depend
+/// on the glyph set and, in monochrome, on the series' names) push the plot down.
+pub fn time_at(app: &App, area: Rect, theme: &Theme, column: u16, row: u16) -> Option<f64> {
+    let (title, plot) = chart(app, area, theme);
+    let inner = block(title, theme).inner(area);
+    plot.x_at(inner, theme, column, row)
 }
 
-/// Layout does not depend on colours or glyph set beyond the labels' widths, which are
-/// ASCII digits in both: any theme places the plot the same.
-fn theme_for_layout() -> &'static Theme {
+/// The default theme (Unicode, colours), for callers that do not say which one draws.
+pub(crate) fn theme_for_layout() -> &'static Theme {
     static THEME: std::sync::LazyLock<Theme> =
         std::sync::LazyLock::new(|| Theme::new(crate::tui::theme::Glyphs::UNICODE, true));
     &THEME
@@ -184,11 +186,23 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
         series.push(Series {
             name: format!("{name} {}", super::progress_text(done, total)),
             points: Vec::new(),
-            style: theme.measured,
-            glyph: "o",
+            style: theme.overlay,
+            glyph: "%",
             draw: Draw::Line,
         });
     }
+    // The overlay's own colours and glyphs (never the data's red or marks); without
+    // colour it is drawn as markers so that its glyphs tell it from the exact curves.
+    let overlay_draw = if theme.monochrome {
+        Draw::Points
+    } else {
+        Draw::Line
+    };
+    let (overlay_v, overlay_u) = if theme.glyphs.ascii {
+        ("%", "~")
+    } else {
+        ("∘", "▵")
+    };
     if let State::Ready(o) = app.lab.overlay() {
         // The time-stepping run over the exact curves, so its chatter shows.
         let setting = match (o.row.step, o.row.tolerance) {
@@ -203,19 +217,32 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
                     .map(|(t, y)| (*t, y[3 * i + j]))
                     .collect::<Vec<_>>()
             };
+            let thin = |p: Vec<(f64, f64)>| match overlay_draw {
+                Draw::Points => thin_to(p, columns / 2),
+                Draw::Line => p,
+            };
+            let side = match (balls.len(), i) {
+                (1, _) => "",
+                (_, 0) => " L",
+                _ => " R",
+            };
             series.push(Series {
-                name: format!("{} {setting} ({})", o.method.name(), o.row.status.name()),
-                points: pts(1),
-                style: theme.measured,
-                glyph: "o",
-                draw: Draw::Line,
+                name: format!(
+                    "{} {setting} ({}) v_cm{side}",
+                    o.method.name(),
+                    o.row.status.name()
+                ),
+                points: thin(pts(1)),
+                style: theme.overlay,
+                glyph: overlay_v,
+                draw: overlay_draw,
             });
             series.push(Series {
-                name: String::new(),
-                points: pts(2),
-                style: theme.measured,
-                glyph: "o",
-                draw: Draw::Line,
+                name: format!("v_t{side}"),
+                points: thin(pts(2)),
+                style: theme.overlay_t,
+                glyph: overlay_u,
+                draw: overlay_draw,
             });
         }
     }
@@ -257,7 +284,7 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
             draw: Draw::Points,
         });
         series.push(Series {
-            name: "v_t".into(),
+            name: "measured v_t".into(),
             points: pts(&m.v_t),
             style: theme.measured,
             glyph: if theme.glyphs.ascii { "o" } else { "+" },
@@ -265,7 +292,8 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
         });
     }
     let mut vlines = Vec::new();
-    if let (true, State::Ready(Ok(f)), Some(m)) = (app.fit_view, app.lab.fits(), app.lab.measured())
+    if let (true, State::Ready(Ok(f)), Some(m)) =
+        (app.fit_view(), app.lab.fits(), app.lab.measured())
     {
         // The paper's straight lines over the chosen window.
         let l = &f.line_fit;
@@ -312,6 +340,12 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
         y_ticks: None,
     };
     (format!(" v_cm(t) and v_t(t), {which}  [b] switches "), plot)
+}
+
+/// At most about `n` of `points`, evenly picked (markers one per two columns).
+fn thin_to(points: Vec<(f64, f64)>, n: usize) -> Vec<(f64, f64)> {
+    let every = points.len().div_ceil(n.max(1)).max(1);
+    points.into_iter().step_by(every).collect()
 }
 
 fn positions(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {

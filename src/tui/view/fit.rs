@@ -4,85 +4,115 @@
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Paragraph, Widget, Wrap};
+use ratatui::widgets::Widget;
 
-use super::block;
+use super::{Ranked, block, by_priority, draw_lines};
 use crate::lab::jobs::State;
 use crate::study::fit::{self, ModelFit};
 use crate::tui::app::App;
 use crate::tui::theme::Theme;
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let blk = block(" Fit  ( ) { } move the window, [f] back ", theme);
+    // The long title where it fits on the border whole, else the short one.
+    let long = " Fit  ( ) { } move the window, [a] apply, [f] back ";
+    let title = if long.chars().count() as u16 + 2 <= area.width {
+        long
+    } else {
+        " Fit  ( ) { } window, [a] apply "
+    };
+    let blk = block(title, theme);
     let inner = blk.inner(area);
     blk.render(area, buf);
     let g = theme.glyphs;
     let label = |s: &str| Span::styled(g.text(s), theme.dim);
     let value = |s: String| Span::styled(g.text(&s), theme.text);
-    let lines: Vec<Line> = match app.lab.fits() {
-        State::Idle => vec![Line::from(Span::styled(
-            "no measured data in this preset (try p: paper-b3.5, -b4.4, -b4.9)",
-            theme.error,
-        ))],
+    // Priorities (9 most important): the model's μ_k and whether it predicts what was
+    // seen stay on the smallest screen; the paper's forces and table row go first.
+    let lines: Ranked = match app.lab.fits() {
+        State::Idle => vec![(
+            9,
+            Line::from(Span::styled(
+                "no measured data in this preset (try p: paper-b3.5, -b4.4, -b4.9)",
+                theme.error,
+            )),
+        )],
         other @ State::Computing { .. } => {
             return super::computing(&other, "fitting", inner, buf, theme);
         }
-        State::Ready(Err(e)) => vec![Line::from(Span::styled(e.clone(), theme.error))],
+        State::Ready(Err(e)) => vec![(9, Line::from(Span::styled(e.clone(), theme.error)))],
         State::Ready(Ok(f)) => {
             let l = &f.line_fit;
             let m = &f.model_fit;
-            let mut lines = vec![
-                Line::from(Span::styled(
-                    "paper's method: lines over the sliding phase",
-                    theme.title,
-                )),
-                Line::from(vec![
-                    label("window "),
-                    value(format!(
-                        "{:.2} … {:.2} s, {} frames",
-                        l.from, l.to, l.points
+            let mut lines: Ranked = vec![
+                (
+                    5,
+                    Line::from(Span::styled(
+                        "paper's method: lines over the sliding phase",
+                        theme.title,
                     )),
-                ]),
-                Line::from(vec![
-                    label("|a_cm| "),
-                    value(format!("{:.2}±{:.2} m/s{}", l.a_cm, l.a_cm_se, g.squared)),
-                    label(&format!("  {}_cm ", g.mu)),
-                    value(format!("{:.3}", l.mu_cm)),
-                ]),
-                Line::from(vec![
-                    label("|a_t|  "),
-                    value(format!("{:.2}±{:.2} m/s{}", l.a_t, l.a_t_se, g.squared)),
-                    label(&format!("  {}_t ", g.mu)),
-                    value(format!("{:.3}", l.mu_t)),
-                ]),
-                Line::from(vec![
-                    label("|F_net| "),
-                    value(format!("{:.3} N", l.f_net)),
-                    label(&format!("  |{}_net| ", g.tau)),
-                    value(format!("{:.4} N m", l.tau_net)),
-                ]),
+                ),
+                (
+                    6,
+                    Line::from(vec![
+                        label("window "),
+                        value(format!(
+                            "{:.2} … {:.2} s, {} frames",
+                            l.from, l.to, l.points
+                        )),
+                    ]),
+                ),
+                (
+                    7,
+                    Line::from(vec![
+                        label("|a_cm| "),
+                        value(format!("{:.2}±{:.2} m/s{}", l.a_cm, l.a_cm_se, g.squared)),
+                        label(&format!("  {}_cm ", g.mu)),
+                        value(format!("{:.3}", l.mu_cm)),
+                    ]),
+                ),
+                (
+                    7,
+                    Line::from(vec![
+                        label("|a_t|  "),
+                        value(format!("{:.2}±{:.2} m/s{}", l.a_t, l.a_t_se, g.squared)),
+                        label(&format!("  {}_t ", g.mu)),
+                        value(format!("{:.3}", l.mu_t)),
+                    ]),
+                ),
+                (
+                    1,
+                    Line::from(vec![
+                        label("|F_net| "),
+                        value(format!("{:.3} N", l.f_net)),
+                        label(&format!("  |{}_net| ", g.tau)),
+                        value(format!("{:.4} N m", l.tau_net)),
+                    ]),
+                ),
             ];
             // The paper's row beside the paper's own (velocity) series only: a position
             // track is never the paper's data.
             let paper_data = app.lab.measured().is_some_and(|m| m.x.is_none());
             if let Some(p) = fit::paper_row(app.lab.scene.width).filter(|_| paper_data) {
-                lines.push(Line::from(vec![
-                    label("paper: "),
-                    value(format!(
-                        "|a_cm| {:.2}, {}_cm {:.2}, |a_t| {:.2}, {}_t {:.2}",
-                        p[0], g.mu, p[1], p[3], g.mu, p[4]
-                    )),
-                ]));
+                lines.push((
+                    3,
+                    Line::from(vec![
+                        label("paper: "),
+                        value(format!(
+                            "|a_cm| {:.2}, {}_cm {:.2}, |a_t| {:.2}, {}_t {:.2}",
+                            p[0], g.mu, p[1], p[3], g.mu, p[4]
+                        )),
+                    ]),
+                ));
             }
             match app.lab.position_fit() {
                 State::Idle => model_fit_lines(m, &mut lines, theme),
                 State::Computing { .. } => {
                     model_fit_lines(m, &mut lines, theme);
-                    lines.push(Line::from(label("position fit: computing…")));
+                    lines.push((4, Line::from(label("position fit: computing…"))));
                 }
                 State::Ready(Err(e)) => {
                     model_fit_lines(m, &mut lines, theme);
-                    lines.push(Line::from(Span::styled(g.text(e), theme.error)));
+                    lines.push((6, Line::from(Span::styled(g.text(e), theme.error))));
                 }
                 State::Ready(Ok(p)) => {
                     both_fits(m, p, usize::from(inner.width), &mut lines, theme);
@@ -91,26 +121,27 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             lines
         }
     };
-    Paragraph::new(lines)
-        .wrap(Wrap { trim: true })
-        .render(inner, buf);
+    draw_lines(by_priority(lines, inner), inner, buf);
 }
 
 /// The model fit of a velocity series: μ_k ± 2σ, RMS, and the verdict.
-fn model_fit_lines(m: &ModelFit, lines: &mut Vec<Line<'static>>, theme: &Theme) {
+fn model_fit_lines(m: &ModelFit, lines: &mut Ranked<'static>, theme: &Theme) {
     let g = theme.glyphs;
     let label = |s: &str| Span::styled(g.text(s), theme.dim);
     let value = |s: String| Span::styled(g.text(&s), theme.text);
-    lines.push(Line::from(Span::styled(
-        "model fit to every frame",
-        theme.title,
-    )));
-    lines.push(Line::from(vec![
-        label(&format!("{}_k ", g.mu)),
-        value(pm(m.mu, m.mu_se, 4, g.ascii)),
-        label("  RMS "),
-        value(format!("{:.4} m/s", m.rms)),
-    ]));
+    lines.push((
+        5,
+        Line::from(Span::styled("model fit to every frame", theme.title)),
+    ));
+    lines.push((
+        9,
+        Line::from(vec![
+            label(&format!("{}_k ", g.mu)),
+            value(pm(m.mu, m.mu_se, 4, g.ascii)),
+            label("  RMS "),
+            value(format!("{:.4} m/s", m.rms)),
+        ]),
+    ));
     verdict_lines(m, lines, theme);
 }
 
@@ -125,35 +156,38 @@ fn pm(mu: f64, se: f64, decimals: usize, ascii: bool) -> String {
 }
 
 /// The predicted regime with its margin, what was observed, and whether they agree.
-fn verdict_lines(m: &ModelFit, lines: &mut Vec<Line<'static>>, theme: &Theme) {
+fn verdict_lines(m: &ModelFit, lines: &mut Ranked<'static>, theme: &Theme) {
     let g = theme.glyphs;
-    lines.push(Line::from(vec![
-        Span::styled("predicted ", theme.dim),
-        Span::styled(g.text(&m.verdict), theme.text),
-    ]));
-    lines.push(Line::from(vec![
-        Span::styled("observed ", theme.dim),
-        Span::styled(m.regime_observed.name().to_string(), theme.text),
-    ]));
-    lines.push(Line::from(Span::styled(
-        if m.agrees {
-            "the model predicts what was seen"
-        } else {
-            "the model does NOT predict what was seen"
-        },
-        if m.agrees { theme.info } else { theme.error },
-    )));
+    lines.push((
+        8,
+        Line::from(vec![
+            Span::styled("predicted ", theme.dim),
+            Span::styled(g.text(&m.verdict), theme.text),
+        ]),
+    ));
+    lines.push((
+        7,
+        Line::from(vec![
+            Span::styled("observed ", theme.dim),
+            Span::styled(m.regime_observed.name().to_string(), theme.text),
+        ]),
+    ));
+    lines.push((
+        9,
+        Line::from(Span::styled(
+            if m.agrees {
+                "the model predicts what was seen"
+            } else {
+                "the model does NOT predict what was seen"
+            },
+            if m.agrees { theme.info } else { theme.error },
+        )),
+    ));
 }
 
 /// A position track's two model fits side by side: to the derived velocities and to
 /// the positions themselves, each with μ_k ± 2σ, RMS and its verdict.
-fn both_fits(
-    v: &ModelFit,
-    p: &ModelFit,
-    width: usize,
-    lines: &mut Vec<Line<'static>>,
-    theme: &Theme,
-) {
+fn both_fits(v: &ModelFit, p: &ModelFit, width: usize, lines: &mut Ranked<'static>, theme: &Theme) {
     let g = theme.glyphs;
     // Two value columns of up to 15 characters, the label column takes the rest.
     let col = ((width.saturating_sub(6)) / 2).min(15);
@@ -172,39 +206,62 @@ fn both_fits(
             style,
         ))
     };
-    lines.push(row(
-        "model fits",
-        "velocities".into(),
-        "positions".into(),
-        theme.title,
+    // Priorities: μ_k of both fits and whether each agrees with what was seen stay
+    // on the smallest screen; the note on which ± to quote goes first.
+    lines.push((
+        6,
+        row(
+            "model fits",
+            "velocities".into(),
+            "positions".into(),
+            theme.title,
+        ),
     ));
-    lines.push(row(
-        &format!("{}_k 2{}", g.mu, if g.ascii { "s" } else { "σ" }),
-        cell(v.mu, v.mu_se),
-        cell(p.mu, p.mu_se),
-        theme.text,
+    lines.push((
+        9,
+        row(
+            &format!("{}_k 2{}", g.mu, if g.ascii { "s" } else { "σ" }),
+            cell(v.mu, v.mu_se),
+            cell(p.mu, p.mu_se),
+            theme.text,
+        ),
     ));
-    lines.push(row(
-        "RMS",
-        format!("{:.3} m/s", v.rms),
-        format!("{:.2} mm", 1e3 * p.rms),
-        theme.text,
+    lines.push((
+        5,
+        row(
+            "RMS",
+            format!("{:.3} m/s", v.rms),
+            format!("{:.2} mm", 1e3 * p.rms),
+            theme.text,
+        ),
     ));
-    lines.push(row(
-        "regime",
-        v.regime_predicted.name().into(),
-        p.regime_predicted.name().into(),
-        theme.text,
+    lines.push((
+        8,
+        row(
+            "regime",
+            v.regime_predicted.name().into(),
+            p.regime_predicted.name().into(),
+            theme.text,
+        ),
     ));
     let agree = |m: &ModelFit| if m.agrees { "agrees" } else { "DISAGREES" }.to_string();
-    lines.push(row("observed", agree(v), agree(p), theme.text));
-    lines.push(Line::from(vec![
-        Span::styled("positions: ", theme.dim),
-        Span::styled(g.text(&p.verdict), theme.text),
-    ]));
-    lines.push(Line::from(vec![
-        Span::styled("observed ", theme.dim),
-        Span::styled(p.regime_observed.name().to_string(), theme.text),
-        Span::styled("  (the position fit's ± is the one to quote)", theme.dim),
-    ]));
+    lines.push((9, row("observed", agree(v), agree(p), theme.text)));
+    lines.push((
+        7,
+        Line::from(vec![
+            Span::styled("positions: ", theme.dim),
+            Span::styled(g.text(&p.verdict), theme.text),
+        ]),
+    ));
+    lines.push((
+        4,
+        Line::from(vec![
+            Span::styled("observed ", theme.dim),
+            Span::styled(p.regime_observed.name().to_string(), theme.text),
+            Span::styled(
+                g.text("  (the position fit's ± is the one to quote)"),
+                theme.dim,
+            ),
+        ]),
+    ));
 }

@@ -4,9 +4,9 @@
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Paragraph, Widget, Wrap};
+use ratatui::widgets::Widget;
 
-use super::block;
+use super::{Ranked, block, by_priority, draw_lines};
 use crate::input::units::significant;
 use crate::physics::derived::Regime;
 use crate::physics::story::{self, After, Verdict};
@@ -37,80 +37,120 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     });
     let label = |s: &str| Span::styled(s.to_string(), theme.dim);
     let value = |s: String| Span::styled(s, theme.text);
-    let mut lines = vec![Line::from(Span::styled(regime, theme.title))];
+    // Priorities (9 most important): what a small screen keeps is the regime and why
+    // (with the verdict's margin where the data cannot tell it from rest), the impacts
+    // and the energy split; then the derived values (k, r, D, b*), what happens after
+    // the first impact (t', v', or how the run ends when the closed forms do not hold),
+    // before the rest of the story, the state at the cursor and the forces.
+    let mut lines: Ranked = vec![(9, Line::from(Span::styled(regime, theme.title)))];
     // The margin where it changes the reading: a regime the data cannot tell from rest.
     if verdict.indistinguishable_from_rest() {
-        lines.push(Line::from(value(g.text(&verdict.margin("±")))));
+        // A narrow panel (80 columns) says it in two rows rather than three, so the
+        // numbers after the first impact keep their place.
+        let margin = match (verdict.v_roll, verdict.band) {
+            (Some(v), Some(band)) if inner.width < 40 => {
+                format!("v' = {v:+.3} m/s: indistinguishable from rest (band ±{band:.3} m/s)")
+            }
+            _ => verdict.margin("±"),
+        };
+        lines.push((8, Line::from(value(g.text(&margin)))));
     }
     lines.extend([
-        Line::from(value(why)),
-        Line::from(vec![
-            label("k "),
-            value(format!("{:.4}", d.k)),
-            label("  r "),
-            value(format!("{:.3} cm", d.r * 100.0)),
-            label("  D "),
-            value(format!("{:.3}", d.d)),
-            label("  b* "),
-            value(b_star),
-        ]),
+        (8, Line::from(value(why))),
+        (
+            6,
+            Line::from(vec![
+                label("k "),
+                value(format!("{:.4}", d.k)),
+                label("  r "),
+                value(format!("{:.3} cm", d.r * 100.0)),
+                label("  D "),
+                value(format!("{:.3}", d.d)),
+                label("  b* "),
+                value(b_star),
+            ]),
+        ),
     ]);
     if let Some(After::Interrupted(i)) = &story {
         // The closed forms do not describe this run: say what it does instead.
-        for (n, clause) in i.clauses(g.infinity).into_iter().enumerate() {
+        // How the run ends (the last clause) outranks how it gets there.
+        let clauses = i.clauses(g.infinity);
+        let last = clauses.len().saturating_sub(1);
+        for (n, clause) in clauses.into_iter().enumerate() {
             let head = if n == 0 { "left ball: " } else { "" };
-            lines.push(Line::from(vec![label(head), value(g.text(&clause))]));
+            lines.push((
+                if n == last { 6 } else { 5 },
+                Line::from(vec![label(head), value(g.text(&clause))]),
+            ));
         }
     } else if let Some(rec) = d.left_after_impact {
-        lines.push(Line::from(vec![
-            label("t' "),
-            value(format!("{:.4} s", rec.t_roll)),
-            label("  v' "),
-            value(format!("{:.4} m/s", rec.v_roll)),
-            label("  x' "),
-            value(format!("{:.2} cm", rec.x_roll * 100.0)),
-        ]));
+        lines.push((
+            6,
+            Line::from(vec![
+                label("t' "),
+                value(format!("{:.4} s", rec.t_roll)),
+                label("  v' "),
+                value(format!("{:.4} m/s", rec.v_roll)),
+                label("  x' "),
+                value(format!("{:.2} cm", rec.x_roll * 100.0)),
+            ]),
+        ));
         let crossing = match (rec.t_pure_gliding, rec.t_pure_slipping) {
             (Some(t), _) => format!("pure gliding t_r {t:.4} s"),
             (_, Some(t)) => format!("pure slipping t_t {t:.4} s"),
             _ => "no pure gliding or slipping".to_string(),
         };
-        lines.push(Line::from(vec![label("left ball: "), value(crossing)]));
-        lines.push(Line::from(vec![
-            label("a_cm "),
-            value(format!("{} m/s{}", significant(rec.a_cm, 4), g.squared)),
-            label("  a_t "),
-            value(format!("{} m/s{}", significant(rec.a_t, 4), g.squared)),
-        ]));
+        lines.push((3, Line::from(vec![label("left ball: "), value(crossing)])));
+        lines.push((
+            2,
+            Line::from(vec![
+                label("a_cm "),
+                value(format!("{} m/s{}", significant(rec.a_cm, 4), g.squared)),
+                label("  a_t "),
+                value(format!("{} m/s{}", significant(rec.a_t, 4), g.squared)),
+            ]),
+        ));
     }
     let f = d.forces;
-    lines.push(Line::from(vec![
-        label("|N_A| "),
-        value(format!("{:.3} N", f.normal_a.norm())),
-        label("  F_net "),
-        value(format!("{:.3} N", f.net.norm())),
-    ]));
-    lines.push(Line::from(vec![
-        label(&format!("{}_net ", g.tau)),
-        value(format!("{:.5} N m", f.torque.norm())),
-        label(&format!(" = {}_k m g R", g.mu)),
-    ]));
+    lines.push((
+        1,
+        Line::from(vec![
+            label("|N_A| "),
+            value(format!("{:.3} N", f.normal_a.norm())),
+            label("  F_net "),
+            value(format!("{:.3} N", f.net.norm())),
+        ]),
+    ));
+    lines.push((
+        0,
+        Line::from(vec![
+            label(&format!("{}_net ", g.tau)),
+            value(format!("{:.5} N m", f.torque.norm())),
+            label(&format!(" = {}_k m g R", g.mu)),
+        ]),
+    ));
     let zeno = sol
         .accumulation
         .map_or(String::new(), |t| format!("  T{} {t:.4} s", g.infinity));
-    lines.push(Line::from(vec![
-        label("impacts "),
-        value(format!("{}", sol.impacts)),
-        value(zeno),
-    ]));
+    lines.push((
+        8,
+        Line::from(vec![
+            label("impacts "),
+            value(format!("{}", sol.impacts)),
+            value(zeno),
+        ]),
+    ));
     // How far the model is from the measured points, if there are any.
     if let Some((rms_cm, rms_t)) = app.lab.data_rms {
-        lines.push(Line::from(vec![
-            label("data: RMS residual v_cm "),
-            value(format!("{rms_cm:.3}")),
-            label(", v_t "),
-            value(format!("{rms_t:.3} m/s")),
-        ]));
+        lines.push((
+            5,
+            Line::from(vec![
+                label("data: RMS residual v_cm "),
+                value(format!("{rms_cm:.3}")),
+                label(", v_t "),
+                value(format!("{rms_t:.3} m/s")),
+            ]),
+        ));
     }
     // The state at the cursor, per ball.
     let now = sol.at(app.t);
@@ -119,11 +159,14 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         ("left ", now.left, seg.phase[0]),
         ("right", now.right, seg.phase[1]),
     ] {
-        lines.push(Line::from(vec![
-            label(&format!("{name} ")),
-            value(format!("v {:+.3}  u {:+.3} m/s  ", st.v, st.u)),
-            label(phase.name()),
-        ]));
+        lines.push((
+            5,
+            Line::from(vec![
+                label(&format!("{name} ")),
+                value(format!("v {:+.3}  u {:+.3} m/s  ", st.v, st.u)),
+                label(phase.name()),
+            ]),
+        ));
     }
     // Whole percentages by largest remainder, so the five shares add up to 100.
     let e = sol.energy_at(app.t);
@@ -134,25 +177,61 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         e.lost.impacts,
         e.lost.rolling_resistance,
     ]);
-    lines.push(Line::from(vec![
-        label("energy "),
-        value(format!("{:.4} J", e.total())),
-        label(" = trans "),
-        value(format!("{}%", shares[0])),
-        label(" + rot "),
-        value(format!("{}%", shares[1])),
-    ]));
-    lines.push(Line::from(vec![
-        label("  + friction "),
-        value(format!("{}%", shares[2])),
-        label(" + impacts "),
-        value(format!("{}%", shares[3])),
-        label(" + c_rr "),
-        value(format!("{}%", shares[4])),
-    ]));
-    Paragraph::new(lines)
-        .wrap(Wrap { trim: true })
-        .render(inner, buf);
+    let pct = |i: usize| value(format!("{}%", shares[i]));
+    if inner.width >= 40 {
+        lines.push((
+            7,
+            Line::from(vec![
+                label("energy "),
+                value(format!("{:.4} J", e.total())),
+                label(" = trans "),
+                pct(0),
+                label(" + rot "),
+                pct(1),
+            ]),
+        ));
+        lines.push((
+            7,
+            Line::from(vec![
+                label("  + friction "),
+                pct(2),
+                label(" + impacts "),
+                pct(3),
+                label(" + c_rr "),
+                pct(4),
+            ]),
+        ));
+    } else {
+        // Narrow: three short lines rather than two that wrap mid-sum.
+        lines.push((
+            7,
+            Line::from(vec![
+                label("energy "),
+                value(format!("{:.4} J", e.total())),
+                label(" = trans "),
+                pct(0),
+            ]),
+        ));
+        lines.push((
+            7,
+            Line::from(vec![
+                label("  + rot "),
+                pct(1),
+                label(" + friction "),
+                pct(2),
+            ]),
+        ));
+        lines.push((
+            7,
+            Line::from(vec![
+                label("  + impacts "),
+                pct(3),
+                label(" + c_rr "),
+                pct(4),
+            ]),
+        ));
+    }
+    draw_lines(by_priority(lines, inner), inner, buf);
 }
 
 /// Whole-number percentages of `parts` that sum to exactly 100 (largest remainder).

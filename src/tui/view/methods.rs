@@ -4,9 +4,9 @@
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Paragraph, Widget};
+use ratatui::widgets::Widget;
 
-use super::block;
+use super::{Ranked, block, by_priority, draw_lines};
 use crate::input::units::fit_number;
 use crate::lab::jobs::State;
 use crate::methods::Method;
@@ -42,10 +42,12 @@ fn decades(lo: f64, hi: f64) -> Vec<(f64, String)> {
 }
 
 pub fn render_diagram(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let blk = block(
+    let title = super::title_within(
         " Methods: max |v_cm - exact| against steps per run  [c] back ",
+        area,
         theme,
     );
+    let blk = block(title, theme);
     let inner = blk.inner(area);
     blk.render(area, buf);
     let rows = match app.lab.method_rows() {
@@ -111,27 +113,48 @@ pub fn render_diagram(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
 }
 
 pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let blk = block(" Runs (marker, setting, status, err_v) ", theme);
+    let title = if area.width < 44 {
+        " Runs: setting, status, err_v "
+    } else {
+        " Runs (marker, setting, status, err_v) "
+    };
+    let blk = block(title, theme);
     let inner = blk.inner(area);
     blk.render(area, buf);
     let rows = match app.lab.method_rows() {
         State::Ready(rows) => rows,
         other => return super::computing(&other, "running every method", inner, buf, theme),
     };
-    let mut lines = vec![Line::from(Span::styled(
-        format!(
-            "exact: {} segments, error 0",
-            app.lab.solution.segments.len()
-        ),
-        theme.title,
-    ))];
+    let g = theme.glyphs;
+    // Each method's best run (smallest error) stays on a short screen, one per method;
+    // the other levels go, coarsest first.
+    let best: Vec<usize> = Method::TIME_STEPPING
+        .iter()
+        .filter_map(|&m| {
+            (0..rows.len())
+                .filter(|&i| rows[i].method == m)
+                .min_by(|&a, &b| rows[a].err_v.total_cmp(&rows[b].err_v))
+        })
+        .collect();
+    let mut lines: Ranked = vec![(
+        9,
+        Line::from(Span::styled(
+            format!(
+                "exact: {} segments, error 0",
+                app.lab.solution.segments.len()
+            ),
+            theme.title,
+        )),
+    )];
     // Setting and status take 19 columns; err_v gets at least 7 ("2.9e-10"), taken
     // from the name column on a narrow panel, and is fitted into what it gets (fewer
     // digits, never a cut exponent).
     let width = usize::from(inner.width);
     let name_w = width.saturating_sub(19 + 7).clamp(2, 19);
     let err_w = width.saturating_sub(name_w + 19).max(1);
-    for r in rows {
+    // How many runs of each method came before (the level's rank, coarse first).
+    let mut seen: Vec<Method> = Vec::new();
+    for (i, r) in rows.iter().enumerate() {
         let setting = match (r.step, r.tolerance) {
             (Some(h), _) => format!("h {h:.0e}"),
             (_, Some(t)) => format!("tol {t:.0e}"),
@@ -142,23 +165,30 @@ pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         } else {
             theme.error
         };
-        let name: String = format!("{} {}", glyph(r.method), r.method.name())
-            .chars()
-            .take(name_w - 1)
-            .collect();
-        lines.push(Line::from(vec![
-            Span::styled(format!("{name:<name_w$}"), theme.dim),
-            Span::styled(
-                format!(
-                    "{setting:<9} {:<8} {}",
-                    r.status.name(),
-                    fit_number(r.err_v, err_w)
+        seen.push(r.method);
+        let rank = seen.iter().filter(|&&m| m == r.method).count() as u8;
+        let priority = if best.contains(&i) { 8 } else { rank };
+        // A name too long for its column ends with an ellipsis, never cut silently.
+        let name = g.ellipsize(
+            &format!("{} {}", glyph(r.method), r.method.name()),
+            name_w - 1,
+        );
+        lines.push((
+            priority,
+            Line::from(vec![
+                Span::styled(format!("{name:<name_w$}"), theme.dim),
+                Span::styled(
+                    format!(
+                        "{setting:<9} {:<8} {}",
+                        r.status.name(),
+                        fit_number(r.err_v, err_w)
+                    ),
+                    style,
                 ),
-                style,
-            ),
-        ]));
+            ]),
+        ));
     }
-    Paragraph::new(lines).render(inner, buf);
+    draw_lines(by_priority(lines, inner), inner, buf);
 }
 
 #[cfg(test)]

@@ -10,11 +10,13 @@ mod methods;
 mod params;
 
 pub use params::param_at;
+pub use popups::data_rows;
 mod popups;
 mod scene;
 
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::style::Style;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph, Widget};
 
@@ -82,11 +84,22 @@ pub fn layout(area: Rect) -> Option<Panels> {
 /// The time under a click at (`column`, `row`) of a screen of `area`: inside the
 /// chart's plot while the charts are shown and no popup is open.
 pub fn chart_time_at(app: &App, area: Rect, column: u16, row: u16) -> Option<f64> {
+    chart_time_at_in(app, area, charts::theme_for_layout(), column, row)
+}
+
+/// [`chart_time_at`] for a screen drawn with `theme` (the legend's rows depend on it).
+pub fn chart_time_at_in(
+    app: &App,
+    area: Rect,
+    theme: &Theme,
+    column: u16,
+    row: u16,
+) -> Option<f64> {
     let panels = layout(area)?;
     if app.view != View::Charts || app.mode != Mode::Normal {
         return None;
     }
-    charts::time_at(app, panels.chart, column, row)
+    charts::time_at(app, panels.chart, theme, column, row)
 }
 
 /// A bordered block in the theme's glyph set.
@@ -95,6 +108,12 @@ pub(crate) fn block<'a>(title: impl Into<Line<'a>>, theme: &Theme) -> Block<'a> 
         .border_set(theme.glyphs.border)
         .border_style(theme.dim)
         .title(title.into().style(theme.title))
+}
+
+/// A block title (` text `) that fits on the border of `area`, cut with an ellipsis.
+pub(crate) fn title_within(title: &str, area: Rect, theme: &Theme) -> String {
+    let room = usize::from(area.width.saturating_sub(4));
+    format!(" {} ", theme.glyphs.ellipsize(title.trim(), room))
 }
 
 /// Draws the whole screen (in ASCII mode, any symbol a widget still drew outside
@@ -149,7 +168,7 @@ fn draw_panels(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                 methods::render_rows(app, p.info, buf, theme);
             } else {
                 charts::render(app, p.chart, buf, theme);
-                if app.fit_view {
+                if app.fit_view() {
                     fit::render(app, p.info, buf, theme);
                 } else {
                     info::render(app, p.info, buf, theme);
@@ -186,28 +205,137 @@ pub(crate) fn computing<T>(
     buf.set_stringn(area.x, area.y, text, usize::from(area.width), theme.dim);
 }
 
+/// The status line: the message (or the typing prompt, or playback), cut with an
+/// ellipsis where it does not fit, and the preset's name at the right, always shown
+/// (itself cut if the name is very long).
 fn status(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let right = format!("preset {}", app.lab.preset.name);
+    let g = theme.glyphs;
     let (text, style) = match (&app.mode, &app.status) {
         (Mode::Edit(_), _) => (
-            "type a value with its unit (e.g. 4.4cm), Enter applies, Esc cancels".to_string(),
+            crate::tui::app::typing_prompt(crate::tui::app::ROWS[app.selected])
+                .replace("mu_k", "μ_k"),
             theme.info,
         ),
         (_, Status::Error(e)) => (e.clone(), theme.error),
-        (_, Status::Info(i)) => (format!("{}   {i}", app.playback()), theme.text),
+        // The message after playback if both fit, else first: it is what just happened.
+        (_, Status::Info(i)) => {
+            let both = format!("{}   {i}", app.playback());
+            let fits =
+                both.chars().count() + 2 + 7 + app.lab.preset.name.len() <= usize::from(area.width);
+            if fits {
+                (both, theme.text)
+            } else {
+                (format!("{i}   {}", app.playback()), theme.text)
+            }
+        }
         (_, Status::None) => (app.playback(), theme.text),
     };
-    let text = theme.glyphs.text(&text);
-    let room = area.width.saturating_sub(right.len() as u16 + 1) as usize;
-    buf.set_stringn(area.x, area.y, &text, room, style);
-    if text.chars().count() < room {
-        buf.set_string(area.right() - right.len() as u16, area.y, &right, theme.dim);
+    let width = usize::from(area.width);
+    let right = g.ellipsize(&format!("preset {}", app.lab.preset.name), width / 3);
+    let right_len = right.chars().count();
+    let room = width.saturating_sub(right_len + 1);
+    buf.set_stringn(area.x, area.y, g.ellipsize(&text, room), room, style);
+    buf.set_string(area.right() - right_len as u16, area.y, &right, theme.dim);
+}
+
+/// Lines of a panel with a priority each; [`by_priority`] keeps the most important
+/// ones that fit.
+pub(crate) type Ranked<'a> = Vec<(u8, Line<'a>)>;
+
+/// The lines of `ranked` that fit in `area` once wrapped at its width, in their
+/// order: while they do not fit, the lowest priority goes (the last such first). A
+/// small screen so shows the important lines whole rather than the first ones.
+pub(crate) fn by_priority<'a>(ranked: Ranked<'a>, area: Rect) -> Vec<Line<'a>> {
+    let width = usize::from(area.width).max(1);
+    let mut wrapped: Vec<(u8, Vec<Line<'a>>)> = ranked
+        .into_iter()
+        .map(|(p, line)| (p, wrap(line, width)))
+        .collect();
+    let rows = |w: &[(u8, Vec<Line>)]| w.iter().map(|(_, l)| l.len()).sum::<usize>();
+    while rows(&wrapped) > usize::from(area.height) && !wrapped.is_empty() {
+        let lowest = wrapped.iter().map(|w| w.0).min().unwrap_or(0);
+        let i = wrapped.iter().rposition(|w| w.0 == lowest).unwrap_or(0);
+        wrapped.remove(i);
     }
+    wrapped.into_iter().flat_map(|(_, l)| l).collect()
+}
+
+/// Draws `lines` one per row from the top of `area` (already wrapped).
+pub(crate) fn draw_lines(lines: Vec<Line<'_>>, area: Rect, buf: &mut Buffer) {
+    for (i, line) in lines.into_iter().enumerate().take(usize::from(area.height)) {
+        buf.set_line(area.x, area.y + i as u16, &line, area.width);
+    }
+}
+
+/// `line` word-wrapped to `width` columns, styles kept: breaks after spaces, a word
+/// longer than a row is split, spaces that end a row are dropped.
+pub(crate) fn wrap(line: Line<'_>, width: usize) -> Vec<Line<'static>> {
+    let mut rows: Vec<Vec<(String, Style)>> = vec![Vec::new()];
+    let mut used = 0usize;
+    // Words (with the spaces before them) as (text, style) pieces.
+    let mut words: Vec<Vec<(String, Style)>> = Vec::new();
+    let mut current: Vec<(String, Style)> = Vec::new();
+    let mut in_space = false;
+    for span in &line.spans {
+        for c in span.content.chars() {
+            let space = c == ' ';
+            if !space && in_space && current.iter().any(|p| p.0.chars().any(|c| c != ' ')) {
+                words.push(std::mem::take(&mut current));
+            }
+            in_space = space;
+            match current.last_mut() {
+                Some((text, style)) if *style == span.style => text.push(c),
+                _ => current.push((c.to_string(), span.style)),
+            }
+        }
+    }
+    if !current.is_empty() {
+        words.push(current);
+    }
+    for word in words {
+        // A word carries the spaces after it; they never push it to the next row.
+        let chars: Vec<(char, Style)> = word
+            .iter()
+            .flat_map(|(t, s)| t.chars().map(move |c| (c, *s)))
+            .collect();
+        let len = chars
+            .iter()
+            .rposition(|(c, _)| *c != ' ')
+            .map_or(0, |i| i + 1);
+        if used > 0 && used + len > width {
+            rows.push(Vec::new());
+            used = 0;
+        }
+        for (c, style) in chars {
+            if used == width {
+                if c == ' ' {
+                    continue;
+                }
+                rows.push(Vec::new());
+                used = 0;
+            }
+            let row = rows.last_mut().expect("one row at least");
+            match row.last_mut() {
+                Some((t, s)) if *s == style => t.push(c),
+                _ => row.push((c.to_string(), style)),
+            }
+            used += 1;
+        }
+    }
+    rows.into_iter()
+        .map(|r| {
+            Line::from(
+                r.into_iter()
+                    .map(|(t, s)| Span::styled(t, s))
+                    .collect::<Vec<_>>(),
+            )
+        })
+        .collect()
 }
 
 fn hints(area: Rect, buf: &mut Buffer, theme: &Theme) {
     let mut spans = Vec::new();
-    for (key, label) in keys::hints(theme.glyphs.ascii) {
+    for (key, label) in keys::hints_within(usize::from(area.width), theme.glyphs.ascii) {
         spans.push(Span::styled(key, theme.key));
         spans.push(Span::styled(format!(" {label}  "), theme.dim));
     }

@@ -36,6 +36,11 @@ const VALUE_W: usize = 11;
 /// digits, never cut).
 pub fn value_text(app: &App, key: Key) -> String {
     let v = app.lab.value(key);
+    let s = &app.lab.scene;
+    if key == Key::V0 && s.left.v0 != s.right.v0 {
+        // One control for both balls: it sets both, and says when they differ.
+        return "differ".into();
+    }
     let (scaled, fixed, unit) = match key.dimension() {
         Dimension::Ratio => (v, significant(v, 4), ""),
         Dimension::Length => (v * 100.0, format!("{:.2}", v * 100.0), " cm"),
@@ -84,6 +89,8 @@ pub fn note(app: &App, key: Key, room: usize) -> String {
             both.filter(|s| s.chars().count() <= room).or(star)
         }
         Key::Radius => pair("k", d.k, 3, room.min(7)),
+        Key::V0 if app.lab.scene.left.v0 != app.lab.scene.right.v0 => Some("sets both".into()),
+        Key::V0 => Some("both balls".into()),
         Key::V0Left | Key::V0Right => Some("toward impact".into()),
         Key::HeightLeft | Key::HeightRight => Some("run-up".into()),
         Key::Restitution => d.b_star.is_none().then(|| "e < 2/5".into()),

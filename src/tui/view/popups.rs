@@ -1,13 +1,13 @@
-//! Popups over the main screen: help (from the key table), the preset picker, and the
-//! save prompts.
+//! Popups over the main screen: help (from the key table) and the data table, both
+//! scrolling; the preset picker; the save and export prompts.
 
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Clear, Paragraph, Widget, Wrap};
+use ratatui::widgets::{Block, Clear, Paragraph, Widget, Wrap};
 
-use super::block;
-use crate::tui::app::{App, Mode};
+use super::{block, wrap};
+use crate::tui::app::{App, Export, Mode, Status, export_step};
 use crate::tui::keys::TABLE;
 use crate::tui::theme::Theme;
 
@@ -32,63 +32,178 @@ fn popup(
 ) {
     let rect = centered(area, width, lines.len() as u16 + 2);
     Clear.render(rect, buf);
-    let blk = block(format!(" {title} "), theme);
+    let blk = block(theme.glyphs.text(&format!(" {title} ")), theme);
     Paragraph::new(lines)
         .wrap(Wrap { trim: false })
         .block(blk)
         .render(rect, buf);
 }
 
+/// A popup of `width` whose `lines` scroll: as many as fit from `app.scroll`, "more ↓"
+/// on the bottom border while lines are below, "↑ more" on the top one while lines
+/// are above. Tells the app how far scrolling goes at this size.
+fn scrolling(
+    app: &App,
+    title: &str,
+    head: Vec<Line<'_>>,
+    lines: Vec<Line<'_>>,
+    (area, width): (Rect, u16),
+    buf: &mut Buffer,
+    theme: &Theme,
+) {
+    let g = theme.glyphs;
+    let rect = centered(area, width, (head.len() + lines.len()) as u16 + 2);
+    Clear.render(rect, buf);
+    let visible = usize::from(rect.height.saturating_sub(2)).saturating_sub(head.len());
+    let max = lines.len().saturating_sub(visible);
+    app.scroll_max.set(max);
+    let first = app.scroll.min(max);
+    let mut blk: Block = block(g.text(&format!(" {title} ")), theme);
+    if first + visible < lines.len() {
+        let more = g.text(&format!(
+            " more ↓ ({} of {}) ",
+            first + visible,
+            lines.len()
+        ));
+        blk = blk.title_bottom(Line::from(Span::styled(more, theme.key)).right_aligned());
+    }
+    if first > 0 {
+        blk =
+            blk.title_top(Line::from(Span::styled(g.text(" ↑ more "), theme.key)).right_aligned());
+    }
+    let inner = blk.inner(rect);
+    blk.render(rect, buf);
+    let shown: Vec<Line> = head
+        .into_iter()
+        .chain(lines.into_iter().skip(first).take(visible))
+        .collect();
+    super::draw_lines(shown, inner, buf);
+}
+
+/// The help's lines at `width`: every binding of the key table, descriptions wrapped
+/// under themselves, then the mouse.
+fn help_lines(width: usize, theme: &Theme) -> Vec<Line<'static>> {
+    let g = theme.glyphs;
+    let keys_width = 14;
+    let text_width = width.saturating_sub(keys_width + 2).max(10);
+    let mut lines = Vec::new();
+    for b in TABLE {
+        let keys = b.keys.join(" ");
+        let rows = wrap(Line::from(g.text(b.help)), text_width);
+        for (i, row) in rows.into_iter().enumerate() {
+            let lead = if i == 0 {
+                format!(" {keys:<keys_width$} ")
+            } else {
+                " ".repeat(keys_width + 2)
+            };
+            let mut spans = vec![Span::styled(lead, theme.key)];
+            spans.extend(row.spans.into_iter().map(|s| s.style(theme.text)));
+            lines.push(Line::from(spans));
+        }
+    }
+    let mouse = "Mouse: click a parameter to select it, scroll on it to change it; click or drag on the chart to seek.";
+    for row in wrap(Line::from(format!(" {mouse}")), width) {
+        lines.push(row.style(theme.dim));
+    }
+    lines
+}
+
+/// The data table's rows: t, then v_cm measured, model, measured − model, then the
+/// same for v_t (SI); NaN where the data have no value or the time is outside the run.
+pub fn data_rows(app: &App) -> Vec<[f64; 7]> {
+    let Some(m) = app.lab.measured() else {
+        return Vec::new();
+    };
+    let sol = &app.lab.solution;
+    m.t.iter()
+        .enumerate()
+        .map(|(i, &t)| {
+            let (model_v, model_u) = if (sol.t_start..=sol.t_end).contains(&t) {
+                let s = sol.at(t);
+                (s.left.v, s.left.u)
+            } else {
+                (f64::NAN, f64::NAN)
+            };
+            [
+                t,
+                m.v_cm[i],
+                model_v,
+                m.v_cm[i] - model_v,
+                m.v_t[i],
+                model_u,
+                m.v_t[i] - model_u,
+            ]
+        })
+        .collect()
+}
+
+fn data_table(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
+    let g = theme.glyphs;
+    let dash = if g.ascii { "-" } else { "–" };
+    let cell = |v: f64, signed: bool| {
+        if !v.is_finite() {
+            format!("{dash:>9}")
+        } else if signed {
+            format!("{v:>+9.3}")
+        } else {
+            format!("{v:>9.3}")
+        }
+    };
+    let head = vec![
+        Line::from(Span::styled(
+            g.text("          ---------- v_cm (m/s) ----------  ----------- v_t (m/s) -----------"),
+            theme.dim,
+        )),
+        Line::from(Span::styled(
+            g.text("   t (s)  measured     model  residual    measured     model  residual"),
+            theme.title,
+        )),
+    ];
+    let lines: Vec<Line> = data_rows(app)
+        .into_iter()
+        .map(|r| {
+            let near = (r[0] - app.t).abs() < 1e-9;
+            let style = if near { theme.selected } else { theme.text };
+            Line::from(Span::styled(
+                format!(
+                    " {:>+7.4} {} {} {}   {} {} {}",
+                    r[0],
+                    cell(r[1], true),
+                    cell(r[2], true),
+                    cell(r[3], true),
+                    cell(r[4], true),
+                    cell(r[5], true),
+                    cell(r[6], true)
+                ),
+                style,
+            ))
+        })
+        .collect();
+    let title = if g.ascii {
+        "Data and model  (up/down pgup/pgdn scroll, Esc or q closes)"
+    } else {
+        "Data and model  (↑↓ PgUp PgDn scroll, Esc or q closes)"
+    };
+    // Room for the title beside "↑ more".
+    let title = g.ellipsize(title, usize::from(area.width.saturating_sub(16)));
+    scrolling(app, &title, head, lines, (area, 78), buf, theme);
+}
+
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
+    let g = theme.glyphs;
     match &app.mode {
         Mode::Normal | Mode::Edit(_) => {}
         Mode::Help => {
-            let entries: Vec<(String, &str)> =
-                TABLE.iter().map(|b| (b.keys.join(" "), b.help)).collect();
-            let mouse = " Mouse: click or scroll a parameter; click or drag on the chart to seek.";
-            let one_column = entries.len() as u16 + 3 <= area.height.saturating_sub(2);
-            let mut lines: Vec<Line> = if one_column {
-                entries
-                    .iter()
-                    .map(|(keys, help)| {
-                        Line::from(vec![
-                            Span::styled(format!(" {keys:<16}"), theme.key),
-                            Span::styled(*help, theme.text),
-                        ])
-                    })
-                    .collect()
+            let width = area.width.saturating_sub(2).min(86);
+            let lines = help_lines(usize::from(width.saturating_sub(2)), theme);
+            let title = if g.ascii {
+                "Keys  (Esc or q closes, up/down pgup/pgdn scroll)"
             } else {
-                // Short screens: two columns, descriptions cut to fit.
-                let half = entries.len().div_ceil(2);
-                let col = usize::from(area.width.saturating_sub(6) / 2);
-                let cell = |(keys, help): &(String, &str)| {
-                    let text: String = format!(" {keys:<12} {help}").chars().take(col).collect();
-                    format!("{text:<col$}")
-                };
-                (0..half)
-                    .map(|i| {
-                        let right = entries.get(i + half).map(cell).unwrap_or_default();
-                        Line::from(Span::styled(
-                            format!("{}{right}", cell(&entries[i])),
-                            theme.text,
-                        ))
-                    })
-                    .collect()
+                "Keys  (Esc or q closes, ↑↓ PgUp PgDn scroll)"
             };
-            lines.push(Line::from(Span::styled(mouse, theme.dim)));
-            popup(
-                "Keys  (any key closes)",
-                lines,
-                area,
-                if one_column {
-                    76
-                } else {
-                    area.width.saturating_sub(2)
-                },
-                buf,
-                theme,
-            );
+            scrolling(app, title, Vec::new(), lines, (area, width), buf, theme);
         }
+        Mode::Table => data_table(app, area, buf, theme),
         Mode::Picker(selected) => {
             let name_width = app
                 .library
@@ -97,6 +212,8 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                 .map(|p| p.name.len())
                 .max()
                 .unwrap_or(8);
+            // One row per preset: the description cut with an ellipsis, never wrapped.
+            let room = usize::from(area.width.saturating_sub(8));
             let lines: Vec<Line> = app
                 .library
                 .presets
@@ -108,22 +225,13 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                     } else {
                         theme.text
                     };
-                    let mark = if i == *selected {
-                        theme.glyphs.selected
-                    } else {
-                        " "
-                    };
-                    // One row per preset: cut the description rather than wrap it.
-                    let room = usize::from(area.width.saturating_sub(8));
-                    let text: String = format!("{mark}{:<name_width$}  {}", p.name, p.description)
-                        .chars()
-                        .take(room)
-                        .collect();
-                    Line::from(Span::styled(text, style))
+                    let mark = if i == *selected { g.selected } else { " " };
+                    let text = format!("{mark}{:<name_width$}  {}", p.name, p.description);
+                    Line::from(Span::styled(g.ellipsize(&text, room), style))
                 })
                 .collect();
             popup(
-                "Presets  (Enter loads, Esc closes)",
+                "Presets  (Enter loads, Esc or q closes)",
                 lines,
                 area,
                 area.width.saturating_sub(4),
@@ -139,26 +247,97 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                 .map_or("(no preset folder)".to_string(), |d| {
                     d.display().to_string()
                 });
-            let lines = vec![
-                Line::from(Span::styled(format!(" name: {text}_"), theme.text)),
-                Line::from(Span::styled(format!(" saved in {dir}"), theme.dim)),
-                Line::from(Span::styled(" Enter saves, Esc cancels", theme.dim)),
-            ];
-            popup(
+            prompt(
+                app,
                 "Save the scene as a user preset",
-                lines,
+                &format!(" name: {text}_"),
+                &[
+                    format!(" saved in {dir}"),
+                    if app.lab.measured().is_some() {
+                        " letters, digits, - _ . (the measured data are saved too)".into()
+                    } else {
+                        " letters, digits, - _ .".into()
+                    },
+                    " Enter saves, Esc cancels".into(),
+                ],
                 area,
-                70,
+                buf,
+                theme,
+            );
+        }
+        Mode::Export(kind, text) => {
+            let (title, what) = match kind {
+                Export::Csv => {
+                    let sol = &app.lab.solution;
+                    let dt = export_step(sol.t_end - sol.t_start);
+                    (
+                        "Export the run as CSV",
+                        format!(
+                            " t and x, v, u of both balls (SI) every {}",
+                            crate::input::units::show(dt, crate::input::units::Dimension::Time)
+                        ),
+                    )
+                }
+                Export::Svg => (
+                    "Export the chart as SVG",
+                    " the chart on screen (velocities or positions)".to_string(),
+                ),
+            };
+            prompt(
+                app,
+                title,
+                &format!(" file: {text}_"),
+                &[
+                    what,
+                    if app.export_dir == std::path::Path::new(".") {
+                        " in the folder groovelab was started in, unless a path is given".into()
+                    } else {
+                        format!(" in {} unless a path is given", app.export_dir.display())
+                    },
+                    " Enter writes (replacing a file of that name), Esc cancels".into(),
+                ],
+                area,
                 buf,
                 theme,
             );
         }
         Mode::ConfirmOverwrite(name) => {
-            let lines = vec![Line::from(Span::styled(
-                format!(" {name}.toml exists. Overwrite it? y / n"),
-                theme.error,
-            ))];
+            let lines = vec![
+                Line::from(Span::styled(
+                    g.ellipsize(
+                        &format!(" {name}.toml exists. Overwrite it? y / n"),
+                        usize::from(area.width.saturating_sub(6)),
+                    ),
+                    theme.error,
+                )),
+                Line::from(Span::styled(" (its description is kept)", theme.dim)),
+            ];
             popup("Save", lines, area, 60, buf, theme);
         }
     }
+}
+
+/// A prompt popup: the field, notes under it, and the error that kept it open.
+fn prompt(
+    app: &App,
+    title: &str,
+    field: &str,
+    notes: &[String],
+    area: Rect,
+    buf: &mut Buffer,
+    theme: &Theme,
+) {
+    let g = theme.glyphs;
+    let width = area.width.saturating_sub(4).min(74);
+    let room = usize::from(width.saturating_sub(2));
+    let mut lines = vec![Line::from(Span::styled(g.text(field), theme.text))];
+    if let Status::Error(e) = &app.status {
+        for row in wrap(Line::from(g.text(&format!(" {e}"))), room) {
+            lines.push(row.style(theme.error));
+        }
+    }
+    for n in notes {
+        lines.push(Line::from(Span::styled(g.ellipsize(n, room), theme.dim)));
+    }
+    popup(title, lines, area, width, buf, theme);
 }

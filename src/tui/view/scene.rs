@@ -101,7 +101,39 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         }
     );
     let mut blk = block(title, theme);
-    if let Some(line) = pinned_line(app, area.width.saturating_sub(4), theme) {
+    // A legend for the marks that are not balls: the trails, and the measured ball
+    // (right); the pinned run's parameters (left) in what room is left.
+    let ghost = app.lab.ghost_x(t).is_some();
+    let (trail_mark, ghost_mark) = if g.ascii {
+        (".", ":")
+    } else {
+        ("·", "⠂⠄")
+    };
+    let mut legend = vec![ratatui::text::Span::styled(
+        format!(" {trail_mark} trail "),
+        theme.dim,
+    )];
+    if ghost {
+        legend.push(ratatui::text::Span::styled(
+            format!(" {ghost_mark} measured ball "),
+            theme.measured,
+        ));
+    }
+    // A pinned run's changes outrank the legend: on a narrow panel the trail's entry
+    // goes first, then the measured ball's, before the pinned line is cut.
+    let pinned_w = pinned_line(app, u16::MAX, theme).map_or(0, |l| l.chars().count());
+    let legend_width = |l: &[ratatui::text::Span]| l.iter().map(|s| s.width()).sum::<usize>();
+    while pinned_w > 0
+        && !legend.is_empty()
+        && pinned_w + legend_width(&legend) + 1 > usize::from(area.width.saturating_sub(4))
+    {
+        legend.remove(0);
+    }
+    let legend = ratatui::text::Line::from(legend);
+    let legend_w = legend.width() as u16;
+    blk = blk.title_bottom(legend.right_aligned());
+    let room = area.width.saturating_sub(4 + legend_w + 1);
+    if let Some(line) = pinned_line(app, room, theme) {
         blk = blk.title_bottom(ratatui::text::Line::styled(line, theme.dim));
     }
     let inner = blk.inner(area);
@@ -225,7 +257,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                 (cx + r_dots * a.cos()) / sx,
                 cy + r_dots * a.sin() / aspect,
                 theme.measured,
-                ".",
+                ":",
             );
         }
     }
