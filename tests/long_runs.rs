@@ -65,7 +65,7 @@ fn compare_skips_levels_over_its_budget_and_says_why() {
     // 10^-4, 10^-4.5, 10^-5, 10^-5.5 and 10^-6 s.
     assert_eq!(skipped.len(), 5, "{rows:#?}");
     for r in &skipped {
-        assert_eq!(r.status, compare::Status::Stalled);
+        assert_eq!(r.status, compare::RunStatus::Stalled);
         assert_eq!(r.steps, 0);
         let note = r.note.as_deref().unwrap();
         assert!(

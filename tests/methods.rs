@@ -5,7 +5,7 @@ use groovelab::input::preset::Preset;
 use groovelab::methods::{Method, Model, Settings};
 use groovelab::physics::engine::solve;
 use groovelab::physics::scene::{Scene, Span};
-use groovelab::study::compare::{Row, Status, run};
+use groovelab::study::compare::{Row, RunStatus, run};
 
 fn preset(name: &str) -> (Scene, Span) {
     Preset::load(name).unwrap().spec.resolve().unwrap()
@@ -32,7 +32,7 @@ fn euler_chatters_with_amplitude_a_h() {
     for method in [Method::Euler, Method::SymplecticEuler] {
         for h in [1e-3, 1e-4, 1e-5] {
             let r = row(method, &scene, &span, step(h));
-            assert_eq!(r.status, Status::Chatter, "{method:?} h = {h}");
+            assert_eq!(r.status, RunStatus::Chatter, "{method:?} h = {h}");
             let ratio = r.slip_rolling / (a * h);
             assert!(
                 (0.5..=1.0 + 1e-9).contains(&ratio),
@@ -59,10 +59,10 @@ fn rk4_with_tanh_friction_is_stable_only_below_2_785_eps_over_a() {
             };
             let below = row(Method::Rk4, &scene, &span, settings(0.8 * limit));
             let above = row(Method::Rk4, &scene, &span, settings(1.25 * limit));
-            assert_eq!(below.status, Status::Ok, "{name} ε = {eps}: {below:?}");
+            assert_eq!(below.status, RunStatus::Ok, "{name} ε = {eps}: {below:?}");
             assert_eq!(
                 above.status,
-                Status::Unstable,
+                RunStatus::Unstable,
                 "{name} ε = {eps}: {above:?}"
             );
         }
@@ -84,7 +84,7 @@ fn moreau_is_stable_at_every_step_and_first_order() {
         let mut errs = Vec::new();
         for h in [1e-2, 1e-3, 1e-4, 1e-5] {
             let r = row(Method::Moreau, &scene, &span, step(h));
-            assert_eq!(r.status, Status::Ok, "{name} h = {h}: {r:?}");
+            assert_eq!(r.status, RunStatus::Ok, "{name} h = {h}: {r:?}");
             errs.push(r.err_u);
         }
         // Order ≈ 1 over the last two decades: a hundredth of the step gives about a
@@ -111,7 +111,7 @@ fn rk45_finds_event_times_to_its_tolerance() {
                 ..Settings::default()
             },
         );
-        assert_eq!(r.status, Status::Ok, "{r:?}");
+        assert_eq!(r.status, RunStatus::Ok, "{r:?}");
         assert!(r.err_t_roll.unwrap() <= tol, "{r:?}");
         assert!(r.err_t_impact.unwrap() <= tol, "{r:?}");
         assert!(r.err_v <= 10.0 * tol * 0.6, "{r:?}");
@@ -135,14 +135,14 @@ fn rk45_stalls_or_reaches_the_accumulation_point_within_its_budget() {
             "budget must not be the limit: {r:?}"
         );
         match r.status {
-            Status::Stalled => {
+            RunStatus::Stalled => {
                 let note = r.note.as_deref().unwrap_or("");
                 assert!(
                     note.contains("impacts") || note.contains("collapsed"),
                     "{note}"
                 );
             }
-            Status::Ok => assert!(r.err_final <= 1e-6, "{r:?}"),
+            RunStatus::Ok => assert!(r.err_final <= 1e-6, "{r:?}"),
             other => panic!("tol {tol}: {other:?}"),
         }
     }
@@ -182,11 +182,11 @@ fn near_wedging_every_time_stepper_needs_tiny_steps() {
     ] {
         let r = row(method, &scene, &span, step(1e-4));
         assert!(r.err_final >= 0.05, "{method:?} at h = 0.1 ms: {r:?}");
-        assert_ne!(r.status, Status::Stalled);
+        assert_ne!(r.status, RunStatus::Stalled);
     }
     // Moreau never goes unstable; rk45 with event location copes (237 steps).
     let moreau = row(Method::Moreau, &scene, &span, step(1e-5));
-    assert_eq!(moreau.status, Status::Ok);
+    assert_eq!(moreau.status, RunStatus::Ok);
     let rk45 = row(
         Method::Rk45,
         &scene,
@@ -197,11 +197,11 @@ fn near_wedging_every_time_stepper_needs_tiny_steps() {
             ..Settings::default()
         },
     );
-    assert_eq!(rk45.status, Status::Ok, "{rk45:?}");
+    assert_eq!(rk45.status, RunStatus::Ok, "{rk45:?}");
     assert!(rk45.err_final <= 1e-4, "{rk45:?}");
     // Euler's chatter shows once steps resolve the sub-millisecond rolling phases.
     let euler = row(Method::Euler, &scene, &span, step(1e-6));
-    assert_eq!(euler.status, Status::Chatter);
+    assert_eq!(euler.status, RunStatus::Chatter);
     // RK4's stability limit shrinks with A: 2.785 ε/A ≈ 23 µs here, 0.5 ms in the paper.
     assert!(2.785 * 1e-3 / a < 3e-5);
 }
@@ -218,14 +218,14 @@ fn without_friction_every_method_is_right() {
         Method::Moreau,
     ] {
         let r = row(method, &scene, &span, step(1e-3));
-        assert_eq!(r.status, Status::Ok, "{method:?}");
+        assert_eq!(r.status, RunStatus::Ok, "{method:?}");
         assert!(
             r.err_v <= 1e-12 && r.err_final <= 1e-12,
             "{method:?}: {r:?}"
         );
     }
     let r = row(Method::Rk45, &scene, &span, Settings::default());
-    assert_eq!(r.status, Status::Ok);
+    assert_eq!(r.status, RunStatus::Ok);
     assert!(r.err_final <= 1e-12, "{r:?}");
 }
 

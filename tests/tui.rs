@@ -461,7 +461,7 @@ fn methods_view_and_overlay() {
         panic!("an overlay")
     };
     assert_eq!(o.method, groovelab::methods::Method::Euler);
-    assert_eq!(o.row.status, groovelab::study::compare::Status::Chatter);
+    assert_eq!(o.row.status, groovelab::study::compare::RunStatus::Chatter);
     assert!(screen_of(&a).contains("euler h 1e-3 (chatter)"));
     press(&mut a, "[ [");
     a.lab.wait();

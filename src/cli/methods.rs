@@ -320,7 +320,7 @@ fn table(rows: &[Row]) -> String {
             r.time_median_s
         );
     }
-    for r in rows.iter().filter(|r| r.status == cmp::Status::Stalled) {
+    for r in rows.iter().filter(|r| r.status == cmp::RunStatus::Stalled) {
         if let Some(note) = &r.note {
             let _ = writeln!(
                 out,

@@ -43,7 +43,7 @@ impl<'a> Watch<'a> {
 /// How a run ended (interface.md).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
-pub enum Status {
+pub enum RunStatus {
     /// Converges as it should.
     Ok,
     /// The slip never settles: it flips sign while the ball should roll.
@@ -54,13 +54,13 @@ pub enum Status {
     Stalled,
 }
 
-impl Status {
+impl RunStatus {
     pub fn name(self) -> &'static str {
         match self {
-            Status::Ok => "ok",
-            Status::Chatter => "chatter",
-            Status::Unstable => "unstable",
-            Status::Stalled => "stalled",
+            RunStatus::Ok => "ok",
+            RunStatus::Chatter => "chatter",
+            RunStatus::Unstable => "unstable",
+            RunStatus::Stalled => "stalled",
         }
     }
 }
@@ -71,7 +71,7 @@ pub struct Row {
     pub method: Method,
     pub step: Option<f64>,
     pub tolerance: Option<f64>,
-    pub status: Status,
+    pub status: RunStatus,
     /// max |Δv_cm| over the run, m/s, away from impacts (see `err_t_impact`).
     pub err_v: f64,
     /// max |Δv_t| over the run, m/s, away from impacts.
@@ -295,7 +295,7 @@ pub fn measure(
             method,
             step: None,
             tolerance: None,
-            status: Status::Ok,
+            status: RunStatus::Ok,
             err_v: 0.0,
             err_u: 0.0,
             err_t_roll: exact_roll(exact).map(|_| 0.0),
@@ -372,16 +372,16 @@ pub fn measure(
     .iter()
     .fold(0.0_f64, |a, d| a.max(d.abs()));
     let status = if metrics.nonfinite || metrics.gain > 1e-6 {
-        Status::Unstable
+        RunStatus::Unstable
     } else if outcome.stalled.is_some() {
-        Status::Stalled
+        RunStatus::Stalled
     } else if method.regularised() && metrics.slip_rolling > 0.01 * settings.epsilon {
         // The exact regularised slip would have decayed by e^-20 by now.
-        Status::Unstable
+        RunStatus::Unstable
     } else if metrics.flips > 3 {
-        Status::Chatter
+        RunStatus::Chatter
     } else {
-        Status::Ok
+        RunStatus::Ok
     };
     let (time_min_s, time_median_s) = if !timed || (outcome.stalled.is_some() && outcome.steps == 0)
     {
@@ -493,7 +493,7 @@ pub fn headline(rows: &[Row], accuracy: f64) -> Option<(f64, &Row, &Row)> {
     let exact = rows.iter().find(|r| r.method == Method::Exact)?;
     let best = rows
         .iter()
-        .filter(|r| r.method != Method::Exact && r.status == Status::Ok && r.err_v <= accuracy)
+        .filter(|r| r.method != Method::Exact && r.status == RunStatus::Ok && r.err_v <= accuracy)
         .min_by(|a, b| a.time_median_s.total_cmp(&b.time_median_s))?;
     Some((best.time_median_s / exact.time_median_s, best, exact))
 }

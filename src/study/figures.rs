@@ -166,7 +166,7 @@ pub fn work_precision(rows: &[Row], scene: &Scene) -> Result<String, Box<dyn std
                     .filter(|r| r.err_v.is_finite() && r.time_median_s.is_finite())
                     .map(|r| {
                         let p = (r.time_median_s.max(1e-9), r.err_v.max(1e-16));
-                        let style = if r.status == crate::study::compare::Status::Ok {
+                        let style = if r.status == crate::study::compare::RunStatus::Ok {
                             c.filled()
                         } else {
                             c.stroke_width(1)
@@ -653,7 +653,7 @@ pub fn run_chart(
 mod tests {
     use super::*;
     use crate::input::preset::Preset;
-    use crate::study::compare::Status;
+    use crate::study::compare::RunStatus;
 
     /// Runs `f` on a thread and fails if it takes longer than 30 s (a figure once
     /// looped forever on an infinite axis).
@@ -671,7 +671,7 @@ mod tests {
             method,
             step: None,
             tolerance: None,
-            status: Status::Ok,
+            status: RunStatus::Ok,
             err_v: err,
             err_u: err,
             err_t_roll: None,

@@ -10,7 +10,7 @@ use super::{Ranked, block, by_priority, draw_lines};
 use crate::input::units::fit_number;
 use crate::lab::jobs::State;
 use crate::methods::Method;
-use crate::study::compare::Status;
+use crate::study::compare::RunStatus;
 use crate::tui::app::App;
 use crate::tui::plot::{Draw, Plot, Series};
 use crate::tui::theme::Theme;
@@ -160,7 +160,7 @@ pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             (_, Some(t)) => format!("tol {t:.0e}"),
             _ => String::new(),
         };
-        let style = if r.status == Status::Ok {
+        let style = if r.status == RunStatus::Ok {
             theme.text
         } else {
             theme.error
