@@ -95,6 +95,17 @@ pub struct Row {
     pub note: Option<String>,
 }
 
+impl Row {
+    /// The run's setting in a few characters: `h 1e-3` (a step, s) or `tol 1e-6`.
+    pub fn setting(&self) -> String {
+        match (self.step, self.tolerance) {
+            (Some(h), _) => format!("h {h:.0e}"),
+            (_, Some(t)) => format!("tol {t:.0e}"),
+            _ => String::new(),
+        }
+    }
+}
+
 /// Compares a run with the exact solution step by step.
 struct Metrics<'a> {
     exact: &'a Solution,

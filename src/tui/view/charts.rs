@@ -205,11 +205,7 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
     };
     if let State::Ready(o) = app.lab.overlay() {
         // The time-stepping run over the exact curves, so its chatter shows.
-        let setting = match (o.row.step, o.row.tolerance) {
-            (Some(h), _) => format!("h {h:.0e}"),
-            (_, Some(t)) => format!("tol {t:.0e}"),
-            _ => String::new(),
-        };
+        let setting = o.row.setting();
         for &i in &balls {
             let pts = |j: usize| {
                 o.points
@@ -292,18 +288,10 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
         });
     }
     let mut vlines = Vec::new();
-    if let (true, State::Ready(Ok(f)), Some(m)) =
-        (app.fit_view(), app.lab.fits(), app.lab.measured())
-    {
+    if let (true, State::Ready(Ok(f))) = (app.fit_view(), app.lab.fits()) {
         // The paper's straight lines over the chosen window.
         let l = &f.line_fit;
-        let idx: Vec<usize> = (0..m.t.len())
-            .filter(|&i| m.t[i] >= l.from && m.t[i] <= l.to)
-            .collect();
-        let ts: Vec<f64> = idx.iter().map(|&i| m.t[i]).collect();
-        for (series_data, name) in [(&m.v_cm, "fit lines"), (&m.v_t, "")] {
-            let ys: Vec<f64> = idx.iter().map(|&i| series_data[i]).collect();
-            let line = crate::study::fit::line(&ts, &ys);
+        for (line, name) in l.lines.iter().zip(["fit lines", ""]) {
             series.push(Series {
                 name: name.to_string(),
                 points: [l.from, l.to]

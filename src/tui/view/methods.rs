@@ -155,11 +155,7 @@ pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     // How many runs of each method came before (the level's rank, coarse first).
     let mut seen: Vec<Method> = Vec::new();
     for (i, r) in rows.iter().enumerate() {
-        let setting = match (r.step, r.tolerance) {
-            (Some(h), _) => format!("h {h:.0e}"),
-            (_, Some(t)) => format!("tol {t:.0e}"),
-            _ => String::new(),
-        };
+        let setting = r.setting();
         let style = if r.status == RunStatus::Ok {
             theme.text
         } else {
