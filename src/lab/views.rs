@@ -1,0 +1,246 @@
+//! What the views draw from a solution, cached per scene and size: curve samples,
+//! energies, the pinned run's samples and changes, the regime grid, and the measured
+//! ball's ghost track with the helpers that build it (extent, data RMS, integrals).
+
+use std::cell::RefCell;
+use std::rc::Rc;
+
+use crate::input::data::Measured;
+use crate::physics::derived::{Derived, Regime};
+use crate::physics::solution::{EnergySplit, Snapshot, Solution};
+
+use super::Lab;
+
+/// A per-scene cache of what the views draw, keyed by size.
+pub(super) type Cached<K, T> = RefCell<Option<(K, Rc<[T]>)>>;
+
+impl Lab {
+    /// Where the measured left ball's centre is at `t`: the tracked position of a
+    /// position file, else its v_cm integrated (trapezoids) from the impact place at
+    /// t = 0; `None` outside the series.
+    pub fn ghost_x(&self, t: f64) -> Option<f64> {
+        let m = self.measured()?;
+        let track = self.ghost.as_ref()?;
+        if t < m.t[0] || t > *m.t.last()? {
+            return None;
+        }
+        if m.x.is_some() {
+            return interpolate(&m.t, track, t);
+        }
+        Some(integral_to(m, track, t))
+    }
+
+    /// The measured left ball's spin angle at `t` for its spoke, rad, on the model's
+    /// scale (the model's angle at the first impact plus the mark's turn since then);
+    /// `None` without a tracked rim mark or outside the series.
+    pub fn ghost_angle(&self, t: f64) -> Option<f64> {
+        let m = self.measured()?;
+        let angle = m.angle.as_ref()?;
+        if t < m.t[0] || t > *m.t.last()? {
+            return None;
+        }
+        let a = interpolate(&m.t, angle, t)?;
+        Some(self.solution.angle_at(0.0)[0] + a)
+    }
+
+    /// The exact states at the chart's sample times for a plot `columns` wide: about
+    /// four per column plus both sides of every event, computed once per scene and width.
+    pub fn samples(&self, columns: usize) -> Rc<[Snapshot]> {
+        if let Some((c, s)) = &*self.samples.borrow()
+            && *c == columns
+        {
+            return s.clone();
+        }
+        let sol = &self.solution;
+        let s: Rc<[Snapshot]> = sample_times(sol, columns)
+            .into_iter()
+            .map(|t| sol.at(t))
+            .collect();
+        self.samples.replace(Some((columns, s.clone())));
+        s
+    }
+
+    /// The energy split at the same times as [`Lab::samples`], once per scene and width.
+    pub fn energies(&self, columns: usize) -> Rc<[(f64, EnergySplit)]> {
+        if let Some((c, s)) = &*self.energies.borrow()
+            && *c == columns
+        {
+            return s.clone();
+        }
+        let sol = &self.solution;
+        let s: Rc<[(f64, EnergySplit)]> = sample_times(sol, columns)
+            .into_iter()
+            .map(|t| (t, sol.energy_at(t)))
+            .collect();
+        self.energies.replace(Some((columns, s.clone())));
+        s
+    }
+
+    /// The pinned run's states over the current span (its own events kept sharp), once
+    /// per scene and width; empty when nothing is pinned.
+    pub fn pinned_samples(&self, columns: usize) -> Rc<[Snapshot]> {
+        let Some(p) = &self.pinned else {
+            return Rc::from(Vec::new());
+        };
+        if let Some((c, s)) = &*self.pinned_samples.borrow()
+            && *c == columns
+        {
+            return s.clone();
+        }
+        let mut pinned = (*p.solution).clone();
+        (pinned.t_start, pinned.t_end) = (self.solution.t_start, self.solution.t_end);
+        let s: Rc<[Snapshot]> = sample_times(&pinned, columns)
+            .into_iter()
+            .map(|t| pinned.at(t))
+            .collect();
+        self.pinned_samples.replace(Some((columns, s.clone())));
+        s
+    }
+
+    /// The pinned parameters that differ from the current ones: `(label, was, now)`,
+    /// in the units of the parameter panel.
+    pub fn pinned_changes(&self) -> Vec<(&'static str, String, String)> {
+        let Some(p) = &self.pinned else {
+            return Vec::new();
+        };
+        let (a, b) = (&p.scene, &self.scene);
+        let rows: [(&'static str, f64, f64, crate::input::units::Dimension); 11] = {
+            use crate::input::units::Dimension as D;
+            [
+                ("R", a.radius, b.radius, D::Length),
+                ("b", a.width, b.width, D::Length),
+                ("m left", a.left.mass, b.left.mass, D::Mass),
+                ("m right", a.right.mass, b.right.mass, D::Mass),
+                ("μ_k", a.mu, b.mu, D::Ratio),
+                ("v0 left", a.left.v0, b.left.v0, D::Speed),
+                ("v0 right", a.right.v0, b.right.v0, D::Speed),
+                ("e", a.restitution, b.restitution, D::Ratio),
+                ("c_rr", a.rolling_resistance, b.rolling_resistance, D::Ratio),
+                ("g", a.g, b.g, D::Acceleration),
+                ("t0", p.solution.t_start, self.solution.t_start, D::Time),
+            ]
+        };
+        rows.into_iter()
+            .filter(|(_, x, y, _)| (x - y).abs() > 1e-12 * x.abs().max(y.abs()))
+            .map(|(name, x, y, dim)| {
+                (
+                    name,
+                    crate::input::units::show(x, dim).to_string(),
+                    crate::input::units::show(y, dim).to_string(),
+                )
+            })
+            .collect()
+    }
+
+    /// The regime over groove width (0 … 0.99 · 2R, across) and restitution (1 … 0,
+    /// down) for these balls, `cols × rows` cells, row by row; once per scene and size.
+    pub fn regime_grid(&self, cols: usize, rows: usize) -> Rc<[Regime]> {
+        if let Some((size, g)) = &*self.regimes.borrow()
+            && *size == (cols, rows)
+        {
+            return g.clone();
+        }
+        let b_max = 2.0 * self.scene.radius * 0.99;
+        let g: Rc<[Regime]> = (0..rows)
+            .flat_map(|rr| (0..cols).map(move |c| (rr, c)))
+            .map(|(rr, c)| {
+                let mut scene = self.scene;
+                scene.width = b_max * c as f64 / (cols - 1).max(1) as f64;
+                scene.restitution = 1.0 - rr as f64 / (rows - 1).max(1) as f64;
+                Derived::of(&scene).regime
+            })
+            .collect();
+        self.regimes.replace(Some(((cols, rows), g.clone())));
+        g
+    }
+}
+
+/// Sample times: about four per column, plus both sides of every event so jumps and
+/// kinks are drawn where they are.
+fn sample_times(sol: &Solution, columns: usize) -> Vec<f64> {
+    let n = 4 * columns.max(1);
+    let dt = (sol.t_end - sol.t_start) / n as f64;
+    let mut ts: Vec<f64> = (0..=n).map(|i| sol.t_start + i as f64 * dt).collect();
+    for e in sol.visible_events() {
+        ts.push(e.t);
+        ts.push(e.t - 1e-12 * (1.0 + e.t.abs()));
+    }
+    ts.retain(|t| *t >= sol.t_start && *t <= sol.t_end);
+    ts.sort_by(f64::total_cmp);
+    ts.dedup();
+    ts
+}
+
+/// The x range (m) the balls cover over the span: positions at its ends and at every
+/// event (turning points inside a segment, v = 0, are events).
+pub(super) fn extent(sol: &Solution, radius: f64) -> (f64, f64) {
+    let times = [sol.t_start, sol.t_end]
+        .into_iter()
+        .chain(sol.visible_events().map(|e| e.t));
+    times.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), t| {
+        let s = sol.at(t);
+        (lo.min(s.left.x - radius), hi.max(s.right.x + radius))
+    })
+}
+
+/// RMS residuals of the left ball's v_cm and v_t against `m` (the frame that straddles
+/// the impact left out).
+pub(super) fn data_rms(sol: &Solution, m: &Measured) -> (f64, f64) {
+    let (mut sc, mut st, mut n) = (0.0, 0.0, 0usize);
+    for i in (0..m.t.len()).filter(|&i| m.t[i].abs() >= 0.005) {
+        let s = sol.at(m.t[i]);
+        sc += (s.left.v - m.v_cm[i]).powi(2);
+        st += (s.left.u - m.v_t[i]).powi(2);
+        n += 1;
+    }
+    let n = n.max(1) as f64;
+    ((sc / n).sqrt(), (st / n).sqrt())
+}
+
+/// `v_cm` linearly interpolated at `t` inside the series.
+fn v_at(m: &Measured, t: f64) -> f64 {
+    let i = m.t.partition_point(|&x| x <= t).clamp(1, m.t.len() - 1);
+    let f = (t - m.t[i - 1]) / (m.t[i] - m.t[i - 1]);
+    m.v_cm[i - 1] + f * (m.v_cm[i] - m.v_cm[i - 1])
+}
+
+/// ∫ v_cm from the first measured time to each measured time (trapezoids: exact for
+/// the linearly interpolated series).
+fn cumulative(m: &Measured) -> Vec<f64> {
+    let mut acc = 0.0;
+    std::iter::once(0.0)
+        .chain(m.t.windows(2).enumerate().map(|(i, w)| {
+            acc += 0.5 * (m.v_cm[i] + m.v_cm[i + 1]) * (w[1] - w[0]);
+            acc
+        }))
+        .collect()
+}
+
+/// ∫ v_cm from the first measured time to `t`, from the cumulative table.
+fn integral_to(m: &Measured, cum: &[f64], t: f64) -> f64 {
+    let i = m.t.partition_point(|&x| x <= t).clamp(1, m.t.len() - 1);
+    let t0 = m.t[i - 1];
+    cum[i - 1] + 0.5 * (m.v_cm[i - 1] + v_at(m, t)) * (t - t0)
+}
+
+/// The ghost ball's track: the cumulative integral of v_cm at the measured times,
+/// shifted so that the ball is at −R (where it meets the other) at t = 0; a frame then
+/// only interpolates.
+pub(super) fn ghost_track(m: &Measured, radius: f64) -> Vec<f64> {
+    let cum = cumulative(m);
+    let at_impact = integral_to(m, &cum, 0.0);
+    cum.iter().map(|c| c - at_impact - radius).collect()
+}
+
+/// `ys` linearly interpolated at `t` between the neighbouring finite values (a gap in
+/// a track is bridged); `None` when there is none on one side.
+fn interpolate(ts: &[f64], ys: &[f64], t: f64) -> Option<f64> {
+    let i = ts.partition_point(|&x| x <= t);
+    let before = (0..i).rev().find(|&j| ys[j].is_finite())?;
+    if ts[before] == t {
+        return Some(ys[before]);
+    }
+    let after = (i..ts.len()).find(|&j| ys[j].is_finite())?;
+    let f = (t - ts[before]) / (ts[after] - ts[before]);
+    Some(ys[before] + f * (ys[after] - ys[before]))
+}

@@ -1,0 +1,304 @@
+//! What each action does on the main screen (no popup open): selection and nudging,
+//! playback, views, the overlay, the fit, and opening the popups and prompts.
+
+use crate::input::params::Key;
+use crate::input::units::show;
+use crate::lab::OVERLAY_LEVELS;
+use crate::lab::jobs::State;
+use crate::methods::Method;
+
+use super::{Action, App, ChartBall, Export, Mode, ROWS, SPEEDS, Status, View};
+
+impl App {
+    fn nudge(&mut self, up: bool, coarse: bool) {
+        let p = ROWS[self.selected];
+        let Some(steps) = p.steps else { return };
+        let step = if coarse { steps.coarse } else { steps.fine };
+        let current = self.lab.value(p.key);
+        // Snap to the step grid so repeated presses give round numbers.
+        let next = ((current / step).round() + if up { 1.0 } else { -1.0 }) * step;
+        self.set_value(p.key, next);
+    }
+
+    pub(super) fn apply_normal(&mut self, action: Action) {
+        let n = ROWS.len();
+        let (t0, t1) = (self.lab.solution.t_start, self.lab.solution.t_end);
+        match action {
+            Action::Quit | Action::Cancel => self.quit = true,
+            Action::Up => self.selected = (self.selected + n - 1) % n,
+            Action::Down | Action::NextParam => self.selected = (self.selected + 1) % n,
+            Action::Increase => self.nudge(true, false),
+            Action::Decrease => self.nudge(false, false),
+            Action::IncreaseCoarse => self.nudge(true, true),
+            Action::DecreaseCoarse => self.nudge(false, true),
+            Action::Edit | Action::Confirm => self.mode = Mode::Edit(String::new()),
+            Action::PlayPause => {
+                if !self.playing && self.t >= t1 {
+                    self.t = t0;
+                }
+                self.playing = !self.playing;
+            }
+            Action::Faster => self.speed = (self.speed + 1).min(SPEEDS.len() - 1),
+            Action::Slower => self.speed = self.speed.saturating_sub(1),
+            Action::StepForward | Action::StepBack => {
+                self.playing = false;
+                self.t = self.step_target(action == Action::StepForward);
+            }
+            Action::NextEvent | Action::PrevEvent => {
+                self.playing = false;
+                match self.event_target(action == Action::NextEvent) {
+                    Some(t) => {
+                        self.t = t;
+                        let e = self
+                            .lab
+                            .solution
+                            .visible_events()
+                            .find(|e| e.t == t && e.kind.label().is_some());
+                        let name = e.and_then(|e| e.kind.label()).unwrap_or("event");
+                        self.status = Status::Info(format!("{name} at t = {t:.4} s"));
+                    }
+                    None => {
+                        self.status = Status::Info(
+                            if action == Action::NextEvent {
+                                "no later event in the span"
+                            } else {
+                                "no earlier event in the span"
+                            }
+                            .into(),
+                        )
+                    }
+                }
+            }
+            Action::CycleSpan => {
+                let next = self.lab.span_end.next();
+                match self.lab.set_span_end(next) {
+                    Ok(()) => {
+                        let sol = &self.lab.solution;
+                        self.t = self.t.clamp(sol.t_start, sol.t_end);
+                        self.status = Status::Info(format!(
+                            "span {}: {:.3} … {:.3} s",
+                            next.describe(),
+                            sol.t_start,
+                            sol.t_end
+                        ));
+                    }
+                    Err(e) => self.status = Status::Error(format!("span not changed: {e}")),
+                }
+            }
+            Action::ToggleEnergy => {
+                self.show_energy = !self.show_energy;
+                self.show_positions = false;
+            }
+            Action::TogglePin => {
+                let pinned = self.lab.toggle_pin();
+                self.status = Status::Info(if pinned {
+                    "pinned this run: change a parameter to compare (P unpins)".into()
+                } else {
+                    "unpinned".into()
+                });
+            }
+            Action::Start => self.t = t0,
+            Action::End => {
+                self.playing = false;
+                self.t = t1;
+            }
+            Action::Restart => {
+                self.t = t0;
+                self.playing = true;
+            }
+            Action::Presets => {
+                let i = self
+                    .library
+                    .presets
+                    .iter()
+                    .position(|p| p.name == self.lab.preset.name)
+                    .unwrap_or(0);
+                self.mode = Mode::Picker(i);
+            }
+            Action::Save => {
+                self.status = Status::None;
+                self.mode = Mode::SaveName(format!("my-{}", self.lab.preset.name));
+            }
+            Action::Help => self.open_scrolling(Mode::Help),
+            Action::DataTable => match self.lab.measured() {
+                Some(_) => self.open_scrolling(Mode::Table),
+                None => {
+                    self.status = Status::Error(format!(
+                        "preset {} has no measured data to show (the paper-b* presets have)",
+                        self.lab.preset.name
+                    ))
+                }
+            },
+            Action::Export(kind) => {
+                self.status = Status::None;
+                let what = match kind {
+                    Export::Csv => "run",
+                    Export::Svg => "chart",
+                };
+                self.mode = Mode::Export(
+                    kind,
+                    format!("{}-{what}.{}", self.lab.preset.name, kind.extension()),
+                );
+            }
+            Action::ApplyFit => self.apply_fit(),
+            Action::SwitchBall => {
+                self.chart_ball = match self.chart_ball {
+                    ChartBall::Left => ChartBall::Right,
+                    ChartBall::Right => ChartBall::Both,
+                    ChartBall::Both => ChartBall::Left,
+                }
+            }
+            Action::TogglePositions => {
+                self.show_positions = !self.show_positions;
+                self.show_energy = false;
+            }
+            Action::ToggleMethods => self.toggle_view(View::Methods),
+            Action::ToggleMap => self.toggle_view(View::Map),
+            Action::ToggleFit => {
+                self.toggle_view(View::Fit);
+                if self.fit_view() && self.lab.measured().is_none() {
+                    self.status = Status::Error(format!(
+                        "preset {} has no measured data to fit (the paper-b* presets have)",
+                        self.lab.preset.name
+                    ));
+                }
+            }
+            Action::FitStartEarlier => self.move_window(false, false),
+            Action::FitStartLater => self.move_window(false, true),
+            Action::FitEndEarlier => self.move_window(true, false),
+            Action::FitEndLater => self.move_window(true, true),
+            Action::CycleOverlay => {
+                let all = Method::TIME_STEPPING;
+                let next = match self.lab.overlay_choice() {
+                    None => Some(all[0]),
+                    Some((m, _)) => all
+                        .iter()
+                        .position(|x| *x == m)
+                        .and_then(|i| all.get(i + 1))
+                        .copied(),
+                };
+                self.lab.set_overlay(next.map(|m| (m, self.overlay_level)));
+                self.status = Status::Info(match next {
+                    Some(m) => format!("overlay {}", m.name()),
+                    None => "overlay off".into(),
+                });
+            }
+            Action::OverlayFiner | Action::OverlayCoarser => {
+                self.overlay_level = if action == Action::OverlayFiner {
+                    (self.overlay_level + 1).min(OVERLAY_LEVELS - 1)
+                } else {
+                    self.overlay_level.saturating_sub(1)
+                };
+                if let Some((m, _)) = self.lab.overlay_choice() {
+                    self.lab.set_overlay(Some((m, self.overlay_level)));
+                }
+            }
+            Action::ToggleMouse => {
+                self.mouse = !self.mouse;
+                self.status = Status::Info(format!(
+                    "mouse {}",
+                    if self.mouse {
+                        "on"
+                    } else {
+                        "off (terminal selection works)"
+                    }
+                ));
+            }
+            Action::Select(i) if i < n => self.selected = i,
+            Action::ScrollParam(i, up) if i < n => {
+                self.selected = i;
+                self.nudge(up, false);
+            }
+            Action::Select(_) | Action::ScrollParam(..) | Action::Backspace | Action::Type(_) => {}
+        }
+    }
+
+    /// Shows `view`, or the charts if it is shown already: every view key switches
+    /// directly from any view.
+    fn toggle_view(&mut self, view: View) {
+        self.view = if self.view == view {
+            View::Charts
+        } else {
+            view
+        };
+        self.lab.want_methods(self.view == View::Methods);
+        self.lab.want_fits(self.view == View::Fit);
+    }
+
+    fn open_scrolling(&mut self, mode: Mode) {
+        self.scroll = 0;
+        self.scroll_max.set(usize::MAX);
+        self.mode = mode;
+    }
+
+    /// Scrolls the open help or table if `action` is a scroll key; false otherwise.
+    pub(super) fn scroll_popup(&mut self, action: Action) -> bool {
+        const PAGE: usize = 10;
+        // Never beyond what the last frame could show (a press after the end is felt).
+        let now = self.scroll.min(self.scroll_max.get());
+        self.scroll = match action {
+            Action::Up => now.saturating_sub(1),
+            Action::Down | Action::NextParam => now + 1,
+            Action::IncreaseCoarse => now.saturating_sub(PAGE),
+            Action::DecreaseCoarse => now + PAGE,
+            Action::Start => 0,
+            Action::End => usize::MAX,
+            _ => return false,
+        }
+        .min(self.scroll_max.get());
+        true
+    }
+
+    /// Fit view: puts the fitted μ_k (and v0, e where the fit freed them) into the scene.
+    fn apply_fit(&mut self) {
+        if !self.fit_view() {
+            self.status = Status::Error("a applies a fit: open the Fit view first (f)".into());
+            return;
+        }
+        let fitted = match self.lab.fits() {
+            State::Ready(Ok(f)) => f.model_fit.clone(),
+            State::Ready(Err(e)) => {
+                self.status = Status::Error(format!("no fit to apply: {e}"));
+                return;
+            }
+            State::Computing { .. } => {
+                self.status = Status::Error("the fit is still running: try again".into());
+                return;
+            }
+            State::Idle => {
+                self.status = Status::Error("no fit to apply: this preset has no data".into());
+                return;
+            }
+        };
+        // μ_k is always fitted; v0 and e only when the fit freed them (they have an
+        // uncertainty then).
+        let mut changes = vec![(Key::Mu, fitted.mu)];
+        if fitted.v0_se.is_some() {
+            changes.push((Key::V0, fitted.v0));
+        }
+        if fitted.restitution_se.is_some() {
+            changes.push((Key::Restitution, fitted.restitution));
+        }
+        let mut applied = Vec::new();
+        for (key, value) in changes {
+            if let Err(e) = self.lab.set(key, value) {
+                self.status = Status::Error(format!("fit not applied: {e}"));
+                return;
+            }
+            applied.push(format!(
+                "{} = {}",
+                key.param().symbol,
+                show(value, key.dimension())
+            ));
+        }
+        let sol = &self.lab.solution;
+        self.t = self.t.clamp(sol.t_start, sol.t_end);
+        self.status = Status::Info(format!("applied the fit: {}", applied.join(", ")));
+    }
+
+    fn move_window(&mut self, end: bool, later: bool) {
+        if let Err(e) = self.lab.move_fit_window(end, later) {
+            self.status = Status::Error(e);
+        }
+    }
+}

@@ -1,0 +1,167 @@
+//! The app's vocabulary: what a key can do ([`Action`]), which popup or prompt is open
+//! ([`Mode`]), which view is shown, the status line, playback speeds, and the preset
+//! library the picker offers. Plain data, no behaviour beyond naming.
+
+use std::path::PathBuf;
+
+use crate::input::preset::Preset;
+
+/// Which ball the velocity chart shows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ChartBall {
+    Left,
+    Right,
+    Both,
+}
+
+/// What the middle of the screen shows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum View {
+    Charts,
+    /// Work–precision of the methods instead of the charts.
+    Methods,
+    /// The regime map and the paper's figure instead of the charts.
+    Map,
+    /// The charts with the fit lines, and the Fit panel instead of the info panel.
+    Fit,
+}
+
+/// What `e` and `E` write.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Export {
+    /// The run sampled as CSV, the columns of `simulate --format csv --sample`.
+    Csv,
+    /// The chart on screen as SVG.
+    Svg,
+}
+
+impl Export {
+    pub fn extension(self) -> &'static str {
+        match self {
+            Export::Csv => "csv",
+            Export::Svg => "svg",
+        }
+    }
+}
+
+/// A popup or prompt over the main screen, which takes the keys while open.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Mode {
+    Normal,
+    Help,
+    /// Preset picker with the highlighted row.
+    Picker(usize),
+    /// Typing a value for the selected parameter.
+    Edit(String),
+    /// Typing a name to save the scene as a user preset.
+    SaveName(String),
+    /// The file exists: overwrite it?
+    ConfirmOverwrite(String),
+    /// Typing the file name to export to.
+    Export(Export, String),
+    /// The measured data beside the model's values at those times (scrolls).
+    Table,
+}
+
+impl Mode {
+    /// True for the prompts that take typed text (where `q` is a letter).
+    pub fn is_typing(&self) -> bool {
+        matches!(
+            self,
+            Mode::Edit(_) | Mode::SaveName(_) | Mode::ConfirmOverwrite(_) | Mode::Export(..)
+        )
+    }
+}
+
+/// Everything a key can do.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Action {
+    Quit,
+    Up,
+    Down,
+    NextParam,
+    Increase,
+    Decrease,
+    IncreaseCoarse,
+    DecreaseCoarse,
+    Edit,
+    Confirm,
+    Cancel,
+    Backspace,
+    Type(char),
+    PlayPause,
+    Faster,
+    Slower,
+    StepForward,
+    StepBack,
+    Start,
+    End,
+    Restart,
+    Presets,
+    Save,
+    Help,
+    SwitchBall,
+    TogglePositions,
+    /// The energy chart instead of the velocities.
+    ToggleEnergy,
+    /// The span key: auto, ×2, ×½ (see [`crate::lab::SpanEnd`]).
+    CycleSpan,
+    NextEvent,
+    PrevEvent,
+    /// Pin the current run for an A/B comparison, or unpin it.
+    TogglePin,
+    ToggleMethods,
+    ToggleMap,
+    ToggleFit,
+    FitStartEarlier,
+    FitStartLater,
+    FitEndEarlier,
+    FitEndLater,
+    CycleOverlay,
+    OverlayFiner,
+    OverlayCoarser,
+    ToggleMouse,
+    Select(usize),
+    /// Scroll on parameter row `i`: up increases.
+    ScrollParam(usize, bool),
+    /// Fit view: the fitted values into the scene.
+    ApplyFit,
+    Export(Export),
+    DataTable,
+}
+
+/// Playback speeds (simulated seconds per real second); slow motion by default, as
+/// the whole event lasts under a second.
+pub const SPEEDS: [f64; 7] = [1.0 / 32.0, 1.0 / 16.0, 1.0 / 8.0, 0.25, 0.5, 1.0, 2.0];
+pub(super) const DEFAULT_SPEED: usize = 3;
+
+/// Frames per second while animating.
+pub const FPS: f64 = 30.0;
+
+/// Status line contents.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Status {
+    None,
+    Info(String),
+    Error(String),
+}
+
+/// The presets the picker offers and the folder the app saves to.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Library {
+    pub dir: Option<PathBuf>,
+    pub presets: Vec<Preset>,
+}
+
+impl Library {
+    /// Built-in presets and those in `dir`, where the app also saves.
+    pub fn at(dir: Option<PathBuf>) -> Library {
+        let presets = Preset::all_in(dir.as_deref()).0;
+        Library { dir, presets }
+    }
+
+    /// The user's preset folder ([`crate::input::preset::user_dir`]).
+    pub fn user() -> Library {
+        Library::at(crate::input::preset::user_dir())
+    }
+}
