@@ -798,3 +798,41 @@ fn the_impact_count_stops_at_t_end() {
     assert_eq!(impacts(&cut.stdout), collisions(&cut.stdout));
     assert!(impacts(&cut.stdout) < 9);
 }
+
+/// Found by the long fuzz run: a finite but absurd measured speed (1e306 m/s) made
+/// the residuals' squares overflow ("RMS residual inf" on screen).
+#[test]
+fn measured_values_beyond_lab_sizes_are_refused() {
+    let dir = scratch("magnitudes");
+    let p = dir.join("d.csv");
+    std::fs::write(
+        &p,
+        "t [ms]\tv_cm_cm_per_s\tvt\n-0.2000\t1e308\t0.3239\n-0.1114\t0.3239\t0.3239\n-0.0228\t0.3239\t0.3239\n",
+    )
+    .unwrap();
+    let p = p.to_str().unwrap();
+    for cmd in ["render", "fit"] {
+        assert_refused(
+            &[
+                cmd,
+                "--preset",
+                "paper-b4.9",
+                "--data",
+                p,
+                "--impact-at",
+                "10ms",
+            ],
+            "allowed |v_cm| ≤ 1000 m/s",
+        );
+    }
+    let preset = dir.join("p.toml");
+    std::fs::write(
+        &preset,
+        "name = \"x\"\ndescription = \"d\"\n[scene]\n[measured]\nt = [0.0, 0.01, 2e6]\nv_cm = [1.0, 1.0, 1.0]\nv_t = [1.0, 1.0, 1.0]\n",
+    )
+    .unwrap();
+    assert_refused(
+        &["simulate", "--preset", preset.to_str().unwrap()],
+        "allowed |t| ≤ 1e6 s",
+    );
+}

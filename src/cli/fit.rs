@@ -63,8 +63,13 @@ pub fn load(
         half_window: args.window,
         ..Derive::default()
     };
-    let loaded = track::load(&text, &path.display().to_string(), &reading, scene, &derive)
+    let file = path.display().to_string();
+    let loaded = track::load(&text, &file, &reading, scene, &derive)
         .map_err(|e| CliError::Invalid(e.to_string()))?;
+    loaded
+        .measured
+        .check_magnitudes()
+        .map_err(|e| CliError::Invalid(format!("{file}: {e}")))?;
     Ok((loaded.measured, loaded.found))
 }
 

@@ -48,6 +48,34 @@ impl Measured {
         }
     }
 
+    /// A lab measurement's numbers stay within lab sizes: times within ±1e6 s, speeds
+    /// within ±1000 m/s, positions within ±1000 m (NaN marks a missing value). Beyond
+    /// them a series is not a measurement of this experiment, and squares of its
+    /// numbers (residuals, energies) would overflow.
+    pub fn check_magnitudes(&self) -> Result<(), String> {
+        let series: [(&str, Option<&[f64]>, f64, &str); 5] = [
+            ("t", Some(&self.t), 1e6, "1e6 s"),
+            ("v_cm", Some(&self.v_cm), 1e3, "1000 m/s"),
+            ("v_t", Some(&self.v_t), 1e3, "1000 m/s"),
+            ("x", self.x.as_deref(), 1e3, "1000 m"),
+            ("angle", self.angle.as_deref(), 1e9, "1e9 rad"),
+        ];
+        for (name, values, limit, text) in series {
+            if let Some((i, v)) = values
+                .into_iter()
+                .flatten()
+                .enumerate()
+                .find(|(_, v)| v.abs() > limit)
+            {
+                return Err(format!(
+                    "{name} = {v:e} (point {}) is out of range, allowed |{name}| ≤ {text}",
+                    i + 1
+                ));
+            }
+        }
+        Ok(())
+    }
+
     /// True when at least one v_t was measured (a velocity file, or a track with a mark).
     pub fn has_v_t(&self) -> bool {
         self.v_t.iter().any(|v| v.is_finite())
@@ -288,7 +316,9 @@ pub fn parse(text: &str, file: &str, reading: &Reading) -> Result<Measured, Data
             )));
         }
     }
-    Ok(Measured::velocities(t, v_cm, v_t))
+    let m = Measured::velocities(t, v_cm, v_t);
+    m.check_magnitudes().map_err(err)?;
+    Ok(m)
 }
 
 /// The first impact: where v_cm drops the most between neighbouring frames (the left

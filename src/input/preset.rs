@@ -238,13 +238,15 @@ fn check_measured(m: MeasuredFile) -> Result<Measured, String> {
             ));
         }
     }
-    Ok(Measured {
+    let measured = Measured {
         v_cm_sigma: m.v_cm_sigma,
         v_t_sigma: m.v_t_sigma,
         x: m.x,
         angle: m.angle,
         ..Measured::velocities(m.t, m.v_cm, m.v_t)
-    })
+    };
+    measured.check_magnitudes()?;
+    Ok(measured)
 }
 
 /// A preset file's text for `spec` (SI numbers), written by the toml serializer so
