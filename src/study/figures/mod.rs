@@ -1,0 +1,125 @@
+//! Figures exported as SVG (plotters): the work–precision diagram of the methods, the
+//! fit figure, the regime map, and a run's chart as the app shows it (`run_chart`).
+//! Every axis range goes through [`linear_axis`] or
+//! [`log_axis`]: plotters loops forever on an infinite, NaN or too thin range.
+
+mod fit;
+mod map;
+mod run;
+mod work_precision;
+
+pub use fit::fit_figure;
+pub use map::regime_map;
+pub use run::{RunChart, run_chart};
+pub use work_precision::work_precision;
+
+/// Why a figure cannot be drawn.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("{0}")]
+pub struct NothingToDraw(pub String);
+
+/// Largest magnitude put on an axis; beyond it spans overflow.
+const AXIS_LIMIT: f64 = 1e300;
+
+/// The smallest and largest finite value, if any.
+pub fn finite_bounds(values: impl IntoIterator<Item = f64>) -> Option<(f64, f64)> {
+    values
+        .into_iter()
+        .filter(|v| v.is_finite())
+        .fold(None, |acc, v| match acc {
+            None => Some((v, v)),
+            Some((lo, hi)) => Some((lo.min(v), hi.max(v))),
+        })
+}
+
+/// A linear axis range plotters can draw: finite, within ±1e300, and wider than a
+/// millionth of its magnitude (a thinner one is padded by a tenth of it, an empty
+/// one at 0 becomes −1 … 1).
+pub fn linear_axis(lo: f64, hi: f64) -> (f64, f64) {
+    if !(lo.is_finite() && hi.is_finite()) {
+        return (-1.0, 1.0);
+    }
+    let (lo, hi) = (
+        lo.min(hi).clamp(-AXIS_LIMIT, AXIS_LIMIT),
+        hi.max(lo).clamp(-AXIS_LIMIT, AXIS_LIMIT),
+    );
+    let mag = lo.abs().max(hi.abs());
+    if hi - lo >= (mag * 1e-6).max(1e-100) {
+        return (lo, hi);
+    }
+    let pad = if mag < 1e-100 { 1.0 } else { 0.1 * mag };
+    (lo - pad, hi + pad)
+}
+
+/// A log axis range plotters can draw: positive, finite, within 1e-300 … 1e300, and
+/// at least a factor 1.01 wide (else widened tenfold each way).
+pub fn log_axis(lo: f64, hi: f64) -> (f64, f64) {
+    let ok = |v: f64| v.is_finite() && v > 0.0;
+    let (lo, hi) = match (ok(lo), ok(hi)) {
+        (true, true) => (lo.min(hi), hi.max(lo)),
+        (true, false) => (lo, lo),
+        (false, true) => (hi, hi),
+        (false, false) => (1.0, 1.0),
+    };
+    let (lo, hi) = (
+        lo.clamp(1.0 / AXIS_LIMIT, AXIS_LIMIT),
+        hi.clamp(1.0 / AXIS_LIMIT, AXIS_LIMIT),
+    );
+    if hi >= lo * 1.01 {
+        (lo, hi)
+    } else {
+        (lo / 10.0, hi * 10.0)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::input::preset::Preset;
+    use crate::physics::scene::Scene;
+
+    /// Runs `f` on a thread and fails if it takes longer than 30 s (a figure once
+    /// looped forever on an infinite axis).
+    pub(super) fn within_30s<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> T {
+        let (tx, rx) = std::sync::mpsc::channel();
+        std::thread::spawn(move || {
+            let _ = tx.send(f());
+        });
+        rx.recv_timeout(std::time::Duration::from_secs(30))
+            .expect("the figure finished")
+    }
+
+    pub(super) fn paper() -> (Scene, crate::input::data::Measured) {
+        let p = Preset::load("paper-b4.9").unwrap();
+        let (scene, _) = p.spec.resolve().unwrap();
+        (scene, p.measured.unwrap())
+    }
+
+    #[test]
+    fn axes_are_always_finite_and_wide_enough() {
+        let cases = [
+            (f64::INFINITY, 0.0),
+            (f64::NAN, 1.0),
+            (0.0, 0.0),
+            (1e300, 1e300),
+            (-f64::MAX, f64::MAX),
+            (1.0, 1.0 + 1e-15),
+            (5.0, 2.0),
+        ];
+        for (lo, hi) in cases {
+            let (a, b) = linear_axis(lo, hi);
+            assert!(
+                a.is_finite() && b.is_finite() && (b - a).is_finite(),
+                "{lo} {hi}"
+            );
+            assert!(b - a >= 1e-6 * a.abs().max(b.abs()), "{lo} {hi}: {a} {b}");
+            let (a, b) = log_axis(lo, hi);
+            assert!(
+                a > 0.0 && b.is_finite() && b >= 1.01 * a,
+                "{lo} {hi}: {a} {b}"
+            );
+        }
+        assert_eq!(linear_axis(-0.2, 0.9), (-0.2, 0.9));
+        assert_eq!(log_axis(1e-9, 1e-3), (1e-9, 1e-3));
+    }
+}

@@ -1,0 +1,166 @@
+//! The paper's line fits over the sliding phase (its table 1): straight lines through
+//! the measured v_cm and v_t, the window they cover, and the paper's own numbers.
+
+use serde::Serialize;
+
+use super::FitError;
+use crate::input::data::Measured;
+use crate::physics::scene::Scene;
+
+/// A straight line `y = a + b t` by least squares, with standard errors.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Line {
+    pub intercept: f64,
+    pub slope: f64,
+    pub slope_se: f64,
+    pub intercept_se: f64,
+}
+
+/// Ordinary least squares of `ys` on `ts` (at least 3 points).
+pub fn line(ts: &[f64], ys: &[f64]) -> Line {
+    let n = ts.len() as f64;
+    let mt = ts.iter().sum::<f64>() / n;
+    let my = ys.iter().sum::<f64>() / n;
+    let sxx: f64 = ts.iter().map(|t| (t - mt).powi(2)).sum();
+    let sxy: f64 = ts.iter().zip(ys).map(|(t, y)| (t - mt) * (y - my)).sum();
+    let slope = sxy / sxx;
+    let intercept = my - slope * mt;
+    let rss: f64 = ts
+        .iter()
+        .zip(ys)
+        .map(|(t, y)| (y - intercept - slope * t).powi(2))
+        .sum();
+    let s2 = if n > 2.0 { rss / (n - 2.0) } else { f64::NAN };
+    Line {
+        intercept,
+        slope,
+        slope_se: (s2 / sxx).sqrt(),
+        intercept_se: (s2 * (1.0 / n + mt * mt / sxx)).sqrt(),
+    }
+}
+
+/// The paper's table-1 quantities from line fits over the sliding phase (magnitudes).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct LineFit {
+    /// Window used, s.
+    pub from: f64,
+    pub to: f64,
+    pub points: usize,
+    pub a_cm: f64,
+    pub a_cm_se: f64,
+    pub a_t: f64,
+    pub a_t_se: f64,
+    /// μ_k,cm = k |a_cm| / g.
+    pub mu_cm: f64,
+    pub mu_cm_se: f64,
+    /// μ_k,t = 2 |a_t| / (5 k g).
+    pub mu_t: f64,
+    pub mu_t_se: f64,
+    /// |F_net| = μ_k,cm m g / k, N.
+    pub f_net: f64,
+    /// |τ_net| = μ_k,cm m g R, N m.
+    pub tau_net: f64,
+    /// The fitted lines themselves, v_cm then v_t (slopes and intercepts), for drawing.
+    #[serde(skip)]
+    pub lines: [Line; 2],
+}
+
+/// The sliding phase after the first impact (at t = 0): from the first frame after
+/// it until the measured v_cm and v_t meet (the last frame before they cross).
+pub fn sliding_window(m: &Measured) -> Option<(f64, f64)> {
+    // Frames without a measured v_t (a track without its rim mark) cannot say.
+    let after: Vec<usize> = (0..m.t.len())
+        .filter(|&i| m.t[i] > 0.0 && m.v_t[i].is_finite())
+        .collect();
+    let first = *after.first()?;
+    let sign0 = (m.v_cm[first] - m.v_t[first]).signum();
+    let last = after
+        .iter()
+        .take_while(|&&i| (m.v_cm[i] - m.v_t[i]).signum() == sign0)
+        .last()?;
+    Some((m.t[first], m.t[*last]))
+}
+
+/// Line fits of v_cm and v_t over `[from, to]` (default: the sliding phase).
+pub fn line_fit(
+    m: &Measured,
+    scene: &Scene,
+    window: (Option<f64>, Option<f64>),
+) -> Result<LineFit, FitError> {
+    let auto = sliding_window(m);
+    // Without v_t the window still starts at the first frame after the impact.
+    let first_after = m.t.iter().copied().find(|&t| t > 0.0);
+    let from = window
+        .0
+        .or(auto.map(|w| w.0))
+        .or(first_after)
+        .ok_or_else(|| {
+            FitError::Data("no measured points after the impact (t > 0) to fit".into())
+        })?;
+    let to = window.1.or(auto.map(|w| w.1)).unwrap_or(from);
+    let idx: Vec<usize> = (0..m.t.len())
+        .filter(|&i| m.t[i] >= from - 1e-12 && m.t[i] <= to + 1e-12)
+        .collect();
+    if idx.len() < 3 {
+        return Err(FitError::Data(format!(
+            "the window {from} … {to} s holds {} points, allowed at least 3",
+            idx.len()
+        )));
+    }
+    let ts: Vec<f64> = idx.iter().map(|&i| m.t[i]).collect();
+    let cm = line(&ts, &idx.iter().map(|&i| m.v_cm[i]).collect::<Vec<_>>());
+    // v_t where it was measured (all of a velocity file; none of a track without mark).
+    let with_t: Vec<usize> = idx
+        .iter()
+        .copied()
+        .filter(|&i| m.v_t[i].is_finite())
+        .collect();
+    let vt = if with_t.len() >= 3 {
+        line(
+            &with_t.iter().map(|&i| m.t[i]).collect::<Vec<_>>(),
+            &with_t.iter().map(|&i| m.v_t[i]).collect::<Vec<_>>(),
+        )
+    } else {
+        Line {
+            intercept: f64::NAN,
+            slope: f64::NAN,
+            slope_se: f64::NAN,
+            intercept_se: f64::NAN,
+        }
+    };
+    let k = scene.k();
+    let g = scene.g;
+    let mass = scene.left.mass;
+    let mu_cm = k * cm.slope.abs() / g;
+    Ok(LineFit {
+        from,
+        to,
+        points: idx.len(),
+        a_cm: cm.slope.abs(),
+        a_cm_se: cm.slope_se,
+        a_t: vt.slope.abs(),
+        a_t_se: vt.slope_se,
+        mu_cm,
+        mu_cm_se: k * cm.slope_se / g,
+        mu_t: 2.0 * vt.slope.abs() / (5.0 * k * g),
+        mu_t_se: 2.0 * vt.slope_se / (5.0 * k * g),
+        f_net: mu_cm * mass * g / k,
+        tau_net: mu_cm * mass * g * scene.radius,
+        lines: [cm, vt],
+    })
+}
+
+/// The paper's table 1 (b in m; |a_cm|, μ_k,cm, |F_net|, |a_t|, μ_k,t, |τ_net|).
+pub const PAPER_TABLE: [(f64, [f64; 6]); 3] = [
+    (0.035, [2.15, 0.17, 0.36, 2.92, 0.15, 0.008]),
+    (0.044, [2.86, 0.18, 0.48, 2.61, 0.17, 0.009]),
+    (0.049, [3.26, 0.17, 0.54, 2.00, 0.16, 0.008]),
+];
+
+/// The paper's row for groove width `b`, if it is one of its three.
+pub fn paper_row(b: f64) -> Option<[f64; 6]> {
+    PAPER_TABLE
+        .iter()
+        .find(|(w, _)| (w - b).abs() < 1e-9)
+        .map(|(_, row)| *row)
+}

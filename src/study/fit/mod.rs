@@ -1,0 +1,342 @@
+//! Fitting the model to measured series of the left ball: the paper's line fits over
+//! the sliding phase (table 1), and least-squares fits of the exact model to every
+//! point — of the velocities (weighted by their uncertainties when known) or of the
+//! tracked positions — with uncertainties and the regime compared with what was seen.
+
+mod least_squares;
+mod line;
+mod regime;
+mod uncertainty;
+
+use serde::Serialize;
+
+use crate::input::data::Measured;
+use crate::physics::closed_form;
+use crate::physics::derived::{Derived, Regime};
+use crate::physics::engine;
+use crate::physics::scene::{Scene, Span};
+use crate::physics::story::Verdict;
+use crate::study::Progress;
+
+pub use line::{Line, LineFit, PAPER_TABLE, line, line_fit, paper_row, sliding_window};
+pub use regime::{observed_regime, rest_band};
+pub use uncertainty::NotIdentified;
+
+use least_squares::{
+    Target, fit_points, jacobian, least_squares, normal_matrix, nuisance, residuals, residuals_of,
+    scan_mu, with,
+};
+use regime::{observed_after, rolling_time};
+use uncertainty::uncertainties;
+
+/// Most frames the model fit uses. A longer series is thinned to every k-th frame
+/// (the output says so): each model evaluation walks every point used, and a fit
+/// takes a few hundred evaluations, so 1 000 000 frames took 10 s where 20 000 take
+/// a fifth of a second. Video analysis gives 30–1000 frames a second: a real series
+/// stays far below the cap.
+pub const MAX_MODEL_POINTS: usize = 20_000;
+
+/// Why a fit cannot be made.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum FitError {
+    #[error("{0}")]
+    Data(String),
+    /// The caller's [`Progress`] asked to stop.
+    #[error("cancelled")]
+    Cancelled,
+}
+
+/// Counts model evaluations for [`Progress`] and stops when it asks.
+struct Evals<'a> {
+    progress: &'a dyn Progress,
+    done: std::cell::Cell<u64>,
+}
+
+impl Evals<'_> {
+    /// Before each model evaluation.
+    fn next(&self) -> Result<(), FitError> {
+        let done = self.done.get() + 1;
+        self.done.set(done);
+        self.progress.tick(done, 0);
+        if self.progress.cancelled() {
+            Err(FitError::Cancelled)
+        } else {
+            Ok(())
+        }
+    }
+}
+
+/// Which scene values a model fit may change.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Free {
+    Mu,
+    V0,
+    Restitution,
+}
+
+impl Free {
+    /// The name on the command line and in JSON.
+    pub fn name(self) -> &'static str {
+        match self {
+            Free::Mu => "mu",
+            Free::V0 => "v0",
+            Free::Restitution => "restitution",
+        }
+    }
+}
+
+/// The whole-model least-squares fit.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct ModelFit {
+    pub mu: f64,
+    pub mu_se: f64,
+    /// Fitted v0 and e (the scene's when not free) and their standard errors.
+    pub v0: f64,
+    pub v0_se: Option<f64>,
+    pub restitution: f64,
+    pub restitution_se: Option<f64>,
+    /// Root-mean-square residual over all v_cm and v_t points used, m/s.
+    pub rms: f64,
+    pub points: usize,
+    pub regime_predicted: Regime,
+    pub regime_observed: Regime,
+    /// Speeds within ± this of zero count as "at rest" for both regimes, m/s.
+    pub rest_band: f64,
+    /// The model's rolling speed after the impact, m/s (positive back toward).
+    pub v_roll: f64,
+    /// The predicted regime with its margin against the rest band, in words (as the
+    /// app and `simulate` say it): "recollide (v' = +0.028 m/s, within …)".
+    pub verdict: String,
+    /// True when the predicted v' lies inside the rest band.
+    pub indistinguishable_from_rest: bool,
+    /// True when what was observed agrees with the prediction (the same regime, or
+    /// rest where the prediction cannot be told from rest).
+    pub agrees: bool,
+    /// Free values the data cannot pin down, and why (their `_se` is null).
+    pub not_identified: Vec<NotIdentified>,
+    /// Set when the series had more than [`MAX_MODEL_POINTS`] frames: the fit used
+    /// every this-many-th frame.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub every: Option<usize>,
+}
+
+/// Every `k`-th frame of `m`, with `k` the smallest that leaves at most
+/// [`MAX_MODEL_POINTS`] frames; `None` if the series is short enough already.
+pub fn thinned(m: &Measured) -> Option<(Measured, usize)> {
+    let n = m.t.len();
+    if n <= MAX_MODEL_POINTS {
+        return None;
+    }
+    let k = n.div_ceil(MAX_MODEL_POINTS);
+    let pick = |v: &[f64]| -> Vec<f64> { v.iter().step_by(k).copied().collect() };
+    let pick_opt = |v: &Option<Vec<f64>>| v.as_deref().map(pick);
+    Some((
+        Measured {
+            t: pick(&m.t),
+            v_cm: pick(&m.v_cm),
+            v_t: pick(&m.v_t),
+            v_cm_sigma: pick_opt(&m.v_cm_sigma),
+            v_t_sigma: pick_opt(&m.v_t_sigma),
+            x: pick_opt(&m.x),
+            angle: pick_opt(&m.angle),
+        },
+        k,
+    ))
+}
+
+/// Least squares of the exact model's v_cm and v_t of the left ball to all measured
+/// points (Levenberg–Marquardt, numerical derivatives), free `free`. Points with an
+/// uncertainty (`v_cm_sigma`, `v_t_sigma`) count by its inverse square; a v_t that
+/// was not measured (NaN) is left out. A series longer than [`MAX_MODEL_POINTS`] is
+/// [`thinned`] first. Stops when `progress` says so.
+pub fn model_fit(
+    scene: &Scene,
+    m: &Measured,
+    free: &[Free],
+    progress: &dyn Progress,
+) -> Result<ModelFit, FitError> {
+    model_fit_of(scene, m, free, Target::Velocity, progress)
+}
+
+/// Least squares of the exact model's positions to a tracked series (`m.x`, and
+/// `m.angle` when the rim mark was tracked): no differentiation, so its uncertainty
+/// comes from independent residuals. `rms` is then in metres (x and r θ).
+pub fn position_fit(
+    scene: &Scene,
+    m: &Measured,
+    free: &[Free],
+    progress: &dyn Progress,
+) -> Result<ModelFit, FitError> {
+    if m.x.is_none() {
+        return Err(FitError::Data(
+            "the data hold no positions (a velocity file): no position fit".into(),
+        ));
+    }
+    model_fit_of(scene, m, free, Target::Position, progress)
+}
+
+fn model_fit_of(
+    scene: &Scene,
+    m: &Measured,
+    free: &[Free],
+    target: Target,
+    progress: &dyn Progress,
+) -> Result<ModelFit, FitError> {
+    let thin = thinned(m);
+    let (m, every) = match &thin {
+        Some((t, k)) => (t, Some(*k)),
+        None => (m, None),
+    };
+    let evals = Evals {
+        progress,
+        done: std::cell::Cell::new(0),
+    };
+    let start: Vec<f64> = free
+        .iter()
+        .map(|f| match f {
+            Free::Mu => scene.mu.max(0.01),
+            Free::V0 => scene.left.v0,
+            Free::Restitution => scene.restitution,
+        })
+        .collect();
+    // μ first, by a global scan and golden-section search: the cost is not smooth
+    // where impacts move past data points, and local steps get caught there.
+    let mut p = start;
+    if let Some(i) = free.iter().position(|f| *f == Free::Mu) {
+        p[i] = scan_mu(scene, m, free, &p, i, target, &evals)?;
+    }
+    // Then every free value together from there, on the frames away from the model's
+    // impacts (chosen again once the fit has moved them).
+    let mut idx = fit_points(m, &with(scene, free, &p), target);
+    for _ in 0..3 {
+        p = least_squares(scene, m, free, &idx, p, target, &evals)?;
+        let next = fit_points(m, &with(scene, free, &p), target);
+        if next == idx {
+            break;
+        }
+        idx = next;
+    }
+    let fitted = with(scene, free, &p);
+    let r = residuals(&fitted, m, &idx, target);
+    let n = p.len();
+    let cost: f64 = r.iter().map(|x| x * x).sum();
+    let s2 = cost / r.len().saturating_sub(n + nuisance(m, target)).max(1) as f64;
+    let j = jacobian(scene, m, free, &idx, &p, &r, target);
+    let (ses, not_identified) = uncertainties(&normal_matrix(&j), s2, free, &p);
+    let se = |f: Free| free.iter().position(|x| *x == f).and_then(|i| ses[i]);
+    let rest_band = rest_band(m);
+    let v_roll = closed_form::v_roll(fitted.k(), fitted.restitution, fitted.left.v0);
+    let derived = Derived::of(&fitted);
+    let sol = engine::solve(&fitted, &Span::default());
+    let verdict = Verdict::of(&sol, &derived, Some(rest_band));
+    let regime_observed = observed_after(
+        m,
+        rest_band,
+        sliding_window(m)
+            .map(|w| w.1)
+            .or_else(|| rolling_time(&fitted)),
+    );
+    Ok(ModelFit {
+        mu: fitted.mu,
+        mu_se: se(Free::Mu).unwrap_or(f64::NAN),
+        v0: fitted.left.v0,
+        v0_se: se(Free::V0),
+        restitution: fitted.restitution,
+        restitution_se: se(Free::Restitution),
+        rms: {
+            // In the data's own units, whatever the weights.
+            let raw = residuals_of(&fitted, m, &idx, target, false);
+            (raw.iter().map(|x| x * x).sum::<f64>() / raw.len().max(1) as f64).sqrt()
+        },
+        points: idx.len(),
+        regime_predicted: derived.regime,
+        regime_observed,
+        rest_band,
+        v_roll,
+        verdict: verdict.text("±"),
+        indistinguishable_from_rest: verdict.indistinguishable_from_rest(),
+        agrees: verdict.agrees_with(regime_observed),
+        not_identified,
+        every,
+    })
+}
+
+/// Both fits of one series.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Fits {
+    pub line_fit: LineFit,
+    pub model_fit: ModelFit,
+}
+
+/// Line fit over `window` and model fit with `free`, on `scene` and `m`; stops when
+/// `progress` says so (`FitError::Cancelled`).
+pub fn fit_all(
+    scene: &Scene,
+    m: &Measured,
+    window: (Option<f64>, Option<f64>),
+    free: &[Free],
+    progress: &dyn Progress,
+) -> Result<Fits, FitError> {
+    let model_fit = model_fit(scene, m, free, progress)?;
+    // Without v_t the data cannot say when sliding ends: the fitted model does.
+    let window = match window {
+        (from, None) if !m.has_v_t() => {
+            let fitted = Scene {
+                mu: model_fit.mu,
+                restitution: model_fit.restitution,
+                left: crate::physics::scene::Ball {
+                    v0: model_fit.v0,
+                    ..scene.left
+                },
+                right: crate::physics::scene::Ball {
+                    v0: model_fit.v0,
+                    ..scene.right
+                },
+                ..*scene
+            };
+            (from, rolling_time(&fitted).map(|t| t - 1e-9))
+        }
+        w => w,
+    };
+    let fits = Fits {
+        line_fit: line_fit(m, scene, window)?,
+        model_fit,
+    };
+    check_finite(&fits, m.has_v_t())?;
+    Ok(fits)
+}
+
+/// Every number a fit reports is finite, or the fit is an error: an overflowing
+/// scene (v0 = 1e308) must not print "RMS residual inf" or "± NaN". Without a
+/// measured v_t (a track without a rim mark) its line fit is not a number by design.
+fn check_finite(f: &Fits, has_v_t: bool) -> Result<(), FitError> {
+    let (l, m) = (&f.line_fit, &f.model_fit);
+    let spin = |v: f64| if has_v_t { v } else { 0.0 };
+    let named = [
+        ("model fit v0 error", m.v0_se.unwrap_or(0.0)),
+        ("model fit e error", m.restitution_se.unwrap_or(0.0)),
+        ("line fit a_cm", l.a_cm),
+        ("line fit a_t", spin(l.a_t)),
+        ("line fit μ_k,cm", l.mu_cm),
+        ("line fit μ_k,t", spin(l.mu_t)),
+        ("model fit μ_k", m.mu),
+        ("model fit μ_k error", m.mu_se),
+        ("model fit v0", m.v0),
+        ("model fit e", m.restitution),
+        ("model fit RMS residual", m.rms),
+        ("model fit rolling speed v'", m.v_roll),
+    ];
+    let bad: Vec<&str> = named
+        .iter()
+        .filter(|(_, v)| !v.is_finite())
+        .map(|(n, _)| *n)
+        .collect();
+    if bad.is_empty() {
+        return Ok(());
+    }
+    Err(FitError::Data(format!(
+        "the fit gives no finite {} for this scene and data (an overflow: check that v0, masses and times are of lab size)",
+        bad.join(", ")
+    )))
+}

@@ -1,0 +1,83 @@
+//! The regime the data show, to hold against the model's: the band of speeds that
+//! counts as rest and the mean motion after the sliding phase.
+
+use super::line::{line, sliding_window};
+use crate::input::data::Measured;
+use crate::physics::derived::Regime;
+use crate::physics::engine;
+use crate::physics::scene::{Scene, Span};
+
+/// Speeds within ± this of zero count as rest: three times the scatter of the
+/// measured points about straight lines over the sliding phase (the data's own
+/// resolution), at least 2 cm/s.
+pub fn rest_band(m: &Measured) -> f64 {
+    let noise = sliding_window(m)
+        .and_then(|(from, to)| {
+            let idx: Vec<usize> = (0..m.t.len())
+                .filter(|&i| m.t[i] >= from && m.t[i] <= to)
+                .collect();
+            (idx.len() >= 3).then(|| {
+                let ts: Vec<f64> = idx.iter().map(|&i| m.t[i]).collect();
+                let mut sq = 0.0;
+                for series in [&m.v_cm, &m.v_t] {
+                    let ys: Vec<f64> = idx.iter().map(|&i| series[i]).collect();
+                    let l = line(&ts, &ys);
+                    sq += ts
+                        .iter()
+                        .zip(&ys)
+                        .map(|(t, y)| (y - l.intercept - l.slope * t).powi(2))
+                        .sum::<f64>();
+                }
+                (sq / (2 * idx.len()) as f64).sqrt()
+            })
+        })
+        .unwrap_or(0.0);
+    (3.0 * noise).max(0.02)
+}
+
+/// What the data show after the sliding phase: the mean v_cm of the left ball from
+/// the end of sliding to the end of the series (or the next impact, a jump in v_cm).
+pub fn observed_regime(m: &Measured, band: f64) -> Regime {
+    observed_after(m, band, sliding_window(m).map(|w| w.1))
+}
+
+/// When the left ball of `scene` rolls again after the first impact: where a series
+/// without v_t has its sliding phase end.
+pub(super) fn rolling_time(scene: &Scene) -> Option<f64> {
+    let sol = engine::solve(scene, &Span::default());
+    sol.events
+        .iter()
+        .find(|e| {
+            e.t > 0.0
+                && e.kind == crate::physics::solution::EventKind::Rolling
+                && e.ball != crate::physics::solution::Who::Right
+        })
+        .map(|e| e.t)
+}
+
+/// [`observed_regime`] with the end of the sliding phase given.
+pub(super) fn observed_after(m: &Measured, band: f64, to: Option<f64>) -> Regime {
+    let Some(to) = to else {
+        return Regime::Rest;
+    };
+    let after: Vec<usize> = (0..m.t.len()).filter(|&i| m.t[i] > to).collect();
+    let mut speeds = Vec::new();
+    for w in after.windows(2) {
+        speeds.push(m.v_cm[w[0]]);
+        // A jump down of more than half the speed is the next impact.
+        if m.v_cm[w[1]] < m.v_cm[w[0]] - 0.5 * m.v_cm[w[0]].abs().max(band) {
+            break;
+        }
+    }
+    if speeds.is_empty() {
+        return Regime::Rest;
+    }
+    let mean = speeds.iter().sum::<f64>() / speeds.len() as f64;
+    if mean > band {
+        Regime::Recollide
+    } else if mean < -band {
+        Regime::Depart
+    } else {
+        Regime::Rest
+    }
+}

@@ -1,0 +1,184 @@
+//! What a model fit can say about its free values: their bounds, their standard errors
+//! from the normal matrix, and why a value gets none ([`NotIdentified`]); with the
+//! small dense solves the fit needs.
+
+use serde::Serialize;
+
+use super::Free;
+
+/// A free value without an uncertainty, and why.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct NotIdentified {
+    pub parameter: &'static str,
+    pub reason: String,
+}
+
+/// A fitted value's bounds: restitution lies in [0, 1], μ_k above 0.
+fn bounds(f: Free) -> (f64, f64) {
+    match f {
+        Free::Mu => (1e-6, f64::INFINITY),
+        Free::V0 => (f64::NEG_INFINITY, f64::INFINITY),
+        Free::Restitution => (0.0, 1.0),
+    }
+}
+
+/// `p` moved into the bounds of each free value.
+pub(super) fn clamped(free: &[Free], p: &[f64]) -> Vec<f64> {
+    free.iter()
+        .zip(p)
+        .map(|(f, v)| {
+            let (lo, hi) = bounds(*f);
+            v.clamp(lo, hi)
+        })
+        .collect()
+}
+
+/// Standard errors from the normal matrix `jtj` (residual variance `s2`) of the free
+/// values `p`: a value on its bound, one the data do not depend on, and values along a
+/// direction the data cannot see (an eigenvector of the scaled matrix with a
+/// negligible eigenvalue) get no ± but a reason; the rest from the inverse of the
+/// matrix without them (the others held at their fitted values).
+pub(super) fn uncertainties(
+    jtj: &[Vec<f64>],
+    s2: f64,
+    free: &[Free],
+    p: &[f64],
+) -> (Vec<Option<f64>>, Vec<NotIdentified>) {
+    let n = free.len();
+    let mut out = vec![None; n];
+    let mut why = Vec::new();
+    let mut active = Vec::new();
+    for i in 0..n {
+        let (lo, hi) = bounds(free[i]);
+        if p[i] <= lo || p[i] >= hi {
+            why.push(NotIdentified {
+                parameter: free[i].name(),
+                reason: format!(
+                    "at its bound {} = {}: the best fit lies on the edge of the allowed range, so it has no ± (fix it and fit the others)",
+                    free[i].name(),
+                    p[i]
+                ),
+            });
+        } else if !(jtj[i][i] > 0.0 && jtj[i][i].is_finite()) {
+            why.push(NotIdentified {
+                parameter: free[i].name(),
+                reason: "the fitted points do not depend on it".into(),
+            });
+        } else {
+            active.push(i);
+        }
+    }
+    // Scaled to unit diagonal, the matrix's small eigenvalues are directions the data
+    // cannot see; a value with a large share in one is not identifiable.
+    let m = active.len();
+    let d: Vec<f64> = active.iter().map(|&i| jtj[i][i].sqrt()).collect();
+    let scaled = nalgebra::DMatrix::from_fn(m, m, |a, b| jtj[active[a]][active[b]] / (d[a] * d[b]));
+    let mut unseen = vec![false; m];
+    if m > 0 {
+        let eig = scaled.symmetric_eigen();
+        for (k, &lambda) in eig.eigenvalues.iter().enumerate() {
+            if lambda > 1e-9 {
+                continue;
+            }
+            let v = eig.eigenvectors.column(k);
+            let involved: Vec<usize> = (0..m).filter(|&a| v[a].abs() > 0.2).collect();
+            for &a in &involved {
+                if unseen[a] {
+                    continue;
+                }
+                unseen[a] = true;
+                let others: Vec<&str> = involved
+                    .iter()
+                    .filter(|&&b| b != a)
+                    .map(|&b| free[active[b]].name())
+                    .collect();
+                why.push(NotIdentified {
+                    parameter: free[active[a]].name(),
+                    reason: if others.is_empty() {
+                        "not identifiable from these data".into()
+                    } else {
+                        format!(
+                            "not identifiable from these data: correlated with {}",
+                            others.join(", ")
+                        )
+                    },
+                });
+            }
+        }
+    }
+    let kept: Vec<usize> = (0..m).filter(|&a| !unseen[a]).collect();
+    let sub: Vec<Vec<f64>> = kept
+        .iter()
+        .map(|&a| kept.iter().map(|&b| jtj[active[a]][active[b]]).collect())
+        .collect();
+    if let Some(cov) = inverse(&sub) {
+        for (x, &a) in kept.iter().enumerate() {
+            let se = (s2 * cov[x][x]).sqrt();
+            if se.is_finite() {
+                out[active[a]] = Some(se);
+            } else {
+                why.push(NotIdentified {
+                    parameter: free[active[a]].name(),
+                    reason: "its uncertainty cannot be computed from these data".into(),
+                });
+            }
+        }
+    }
+    (out, why)
+}
+
+/// Solves the small system `a x = b` (LU with partial pivoting, nalgebra).
+pub(super) fn solve(a: Vec<Vec<f64>>, b: Vec<f64>) -> Option<Vec<f64>> {
+    let n = b.len();
+    let m = nalgebra::DMatrix::from_fn(n, n, |i, j| a[i][j]);
+    let x = m.lu().solve(&nalgebra::DVector::from_vec(b))?;
+    x.iter()
+        .all(|v| v.is_finite())
+        .then(|| x.iter().copied().collect())
+}
+
+fn inverse(a: &[Vec<f64>]) -> Option<Vec<Vec<f64>>> {
+    let n = a.len();
+    let inv = nalgebra::DMatrix::from_fn(n, n, |i, j| a[i][j]).try_inverse()?;
+    Some(
+        (0..n)
+            .map(|i| (0..n).map(|j| inv[(i, j)]).collect())
+            .collect(),
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_value_on_its_bound_or_along_an_unseen_direction_gets_a_reason_not_a_nan() {
+        let free = [Free::Mu, Free::V0, Free::Restitution];
+        // μ and v0 enter the data only as μ + v0 (equal columns), e is fine.
+        let jtj = vec![
+            vec![4.0, 4.0, 1.0],
+            vec![4.0, 4.0, 1.0],
+            vec![1.0, 1.0, 9.0],
+        ];
+        let (se, why) = uncertainties(&jtj, 1.0, &free, &[0.2, 0.5, 0.8]);
+        assert_eq!(se[0], None);
+        assert_eq!(se[1], None);
+        // e alone: 1/sqrt(9).
+        assert!((se[2].unwrap() - 1.0 / 3.0).abs() < 1e-12, "{se:?}");
+        assert_eq!(why.len(), 2, "{why:?}");
+        assert!(why[0].reason.contains("correlated with v0"), "{why:?}");
+        assert!(why[1].reason.contains("correlated with mu"), "{why:?}");
+        // e at its upper bound: μ and v0 from the matrix without it.
+        let jtj = vec![
+            vec![4.0, 0.0, 1.0],
+            vec![0.0, 16.0, 1.0],
+            vec![1.0, 1.0, 9.0],
+        ];
+        let (se, why) = uncertainties(&jtj, 1.0, &free, &[0.2, 0.5, 1.0]);
+        assert!((se[0].unwrap() - 0.5).abs() < 1e-12);
+        assert!((se[1].unwrap() - 0.25).abs() < 1e-12);
+        assert_eq!(se[2], None);
+        assert_eq!(why[0].parameter, "restitution");
+        assert!(why[0].reason.contains("bound"), "{why:?}");
+    }
+}

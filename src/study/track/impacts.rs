@@ -1,0 +1,213 @@
+//! Finding the impacts in the centre's motion: jumps of the velocity between line fits
+//! on either side of a frame, each one placed between frames where the two sides'
+//! quadratics meet.
+
+use super::TrackError;
+use super::derivative::quadratic;
+
+/// Least-squares slope of a straight line through `ys` over `ts`.
+fn line_slope(ts: &[f64], ys: &[f64]) -> f64 {
+    let n = ts.len() as f64;
+    let mt = ts.iter().sum::<f64>() / n;
+    let my = ys.iter().sum::<f64>() / n;
+    let (mut sxy, mut sxx) = (0.0, 0.0);
+    for (t, y) in ts.iter().zip(ys) {
+        sxy += (t - mt) * (y - my);
+        sxx += (t - mt) * (t - mt);
+    }
+    sxy / sxx
+}
+
+/// An impact located between frames: its time and the centre's position then.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Kink {
+    pub(super) t: f64,
+    pub(super) x: f64,
+    /// Velocity just before it, m/s, in the file's x.
+    pub(super) before: f64,
+}
+
+/// Velocity jumps across each frame: slope of the line over the `k` frames after it
+/// minus that over the `k` frames before (each side at least 3 frames).
+fn jumps(ts: &[f64], xs: &[f64], k: usize) -> Vec<(f64, f64)> {
+    let n = ts.len();
+    (0..n)
+        .map(|i| {
+            let (a, b) = (i.saturating_sub(k), (i + k).min(n - 1));
+            if i < a + 2 || b < i + 2 {
+                return (0.0, f64::NAN);
+            }
+            let before = line_slope(&ts[a..=i], &xs[a..=i]);
+            let after = line_slope(&ts[i..=b], &xs[i..=b]);
+            (after - before, before)
+        })
+        .collect()
+}
+
+/// Where the two quadratics fitted on each side of frame `i` (frames `lo..i` and
+/// `i+1..=hi`) meet: the impact time and place. Falls back to frame `i` itself.
+fn locate(ts: &[f64], xs: &[f64], i: usize, lo: usize, hi: usize) -> (f64, f64) {
+    let t0 = ts[i];
+    let fallback = (t0, xs[i]);
+    if i < lo + 3 || hi < i + 3 {
+        return fallback;
+    }
+    let (Some((b, _, _)), Some((a, _, _))) = (
+        quadratic(&ts[lo..i], &xs[lo..i], t0),
+        quadratic(&ts[i + 1..=hi], &xs[i + 1..=hi], t0),
+    ) else {
+        return fallback;
+    };
+    let (qa, qb, qc) = (a[2] - b[2], a[1] - b[1], a[0] - b[0]);
+    let span = (ts[i - 1] - t0, ts[i + 1] - t0);
+    let mut roots = Vec::new();
+    if qa.abs() > 1e-300 {
+        let disc = qb * qb - 4.0 * qa * qc;
+        if disc >= 0.0 {
+            let q = -0.5 * (qb + qb.signum() * disc.sqrt());
+            roots.push(q / qa);
+            if q != 0.0 {
+                roots.push(qc / q);
+            }
+        }
+    }
+    if qb != 0.0 {
+        roots.push(-qc / qb);
+    }
+    match roots
+        .into_iter()
+        .filter(|r| r.is_finite() && *r >= span.0 && *r <= span.1)
+        .min_by(|p, q| p.abs().total_cmp(&q.abs()))
+    {
+        Some(tau) => (t0 + tau, b[0] + b[1] * tau + b[2] * tau * tau),
+        None => fallback,
+    }
+}
+
+/// The impacts in the centre's motion (`ts`, `xs` without gaps), first one first.
+pub(super) fn impacts(
+    ts: &[f64],
+    xs: &[f64],
+    k: usize,
+    sigma: f64,
+    dt: f64,
+    given: Option<f64>,
+) -> Result<Vec<Kink>, TrackError> {
+    let n = ts.len();
+    let j = jumps(ts, xs, k);
+    // Standard error of one jump: two line slopes over k+1 frames.
+    let m = (k + 1) as f64;
+    let se = 2f64.sqrt() * sigma / (dt * (m * (m * m - 1.0) / 12.0).sqrt());
+    let size = |i: usize| j[i].0.abs();
+    let is_peak = |i: usize| {
+        j[i].0.is_finite()
+            && (i.saturating_sub(k)..=(i + k).min(n - 1)).all(|l| {
+                size(l).partial_cmp(&size(i)) != Some(std::cmp::Ordering::Greater) || l == i
+            })
+    };
+    let first = match given {
+        Some(at) => {
+            let i = ts.partition_point(|&t| t < at).min(n - 1);
+            let i = if i > 0 && (at - ts[i - 1]) < (ts[i] - at) {
+                i - 1
+            } else {
+                i
+            };
+            if j[i].1.is_nan() {
+                return Err(TrackError(format!(
+                    "the given impact at t = {at} s has fewer than 3 frames on one side, at least 3 needed on each"
+                )));
+            }
+            i
+        }
+        None => {
+            let biggest = (0..n)
+                .filter(|&i| j[i].0.is_finite())
+                .map(size)
+                .fold(0.0, f64::max);
+            if biggest.partial_cmp(&(8.0 * se)) != Some(std::cmp::Ordering::Greater) {
+                return Err(TrackError(format!(
+                    "no impact found: the centre's velocity never changes sharply (largest change {biggest:.3} m/s, noise {se:.3} m/s); give its time with --impact-at"
+                )));
+            }
+            (0..n)
+                .find(|&i| size(i) >= 0.5 * biggest && is_peak(i))
+                .expect("the biggest jump is a peak")
+        }
+    };
+    let (jump, before) = j[first];
+    let dir = before.signum();
+    if before == 0.0 || jump * dir >= 0.0 || jump.abs() < before.abs() / 3.0 {
+        if first < k {
+            return Err(TrackError(format!(
+                "the track starts too late: its sharpest change of velocity is at its start (t = {:.4} s); it needs frames from before the first impact",
+                ts[first]
+            )));
+        }
+        return Err(TrackError(format!(
+            "no impact found: at t = {:.4} s the centre's velocity goes from {before:.3} to {:.3} m/s, an impact slows the ball by at least a third",
+            ts[first],
+            before + jump
+        )));
+    }
+    // Before the first impact the ball approaches at a steady speed: a track that
+    // starts after it (the ball moving away, then back to a later impact) must not
+    // pass its later impact off as the first.
+    if given.is_none() && first > 0 {
+        let mean = (xs[first] - xs[0]) / (ts[first] - ts[0]) * dir;
+        if mean < 0.5 * before.abs() {
+            return Err(TrackError(format!(
+                "the track starts too late: before the sharpest slow-down (t = {:.4} s) the ball does not approach steadily (mean {mean:.3} m/s against {:.3} m/s); it needs frames from before the first impact",
+                ts[first],
+                before.abs()
+            )));
+        }
+    }
+    // The side fits that place the impact reach over 60 ms (the motion on each side is
+    // one parabola for much longer than that in a lab groove), at least 2k frames.
+    let wide = (2 * k).max(6).max((0.06 / dt).round() as usize);
+    let mut found = Vec::new();
+    let mut lo = 0;
+    let mut i = first;
+    loop {
+        let next = (i + k + 1..n).find(|&l| {
+            size(l) >= (0.1 * jump.abs()).max(8.0 * se) && j[l].0 * dir < 0.0 && is_peak(l)
+        });
+        let hi = next.map_or(n - 1, |l| l - 1).min(i + wide);
+        let (t, x) = if found.is_empty() && given.is_some() {
+            (given.unwrap_or(ts[i]), xs[i])
+        } else {
+            // Again about the frame nearest the located impact, so that no frame on
+            // the wrong side of it bends the side fits.
+            let mut at = i;
+            let mut place = locate(ts, xs, at, lo.max(at.saturating_sub(wide)), hi);
+            for _ in 0..3 {
+                let near = ts.partition_point(|&t| t < place.0).min(n - 1);
+                let near = if near > 0 && place.0 - ts[near - 1] < ts[near] - place.0 {
+                    near - 1
+                } else {
+                    near
+                };
+                if near == at || near <= lo || near >= hi {
+                    break;
+                }
+                at = near;
+                place = locate(ts, xs, at, lo.max(at.saturating_sub(wide)), hi);
+            }
+            place
+        };
+        found.push(Kink {
+            t,
+            x,
+            before: j[i].1,
+        });
+        match next {
+            Some(l) => {
+                lo = i + 1;
+                i = l;
+            }
+            None => break,
+        }
+    }
+    Ok(found)
+}
