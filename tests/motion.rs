@@ -565,3 +565,18 @@ fn new_screens_need_no_ascii_stand_ins() {
         }
     }
 }
+
+#[test]
+fn unpinning_keeps_the_cursor_inside_the_span() {
+    // End, pin, a narrower groove (a shorter run), end, unpin: the span shrinks back.
+    let mut a = app("paper-b4.9");
+    press(&mut a, "end P enter 3 . 5 enter end P");
+    let sol = &a.lab.solution;
+    assert!(
+        a.t >= sol.t_start && a.t <= sol.t_end,
+        "{} of {} … {}",
+        a.t,
+        sol.t_start,
+        sol.t_end
+    );
+}

@@ -94,3 +94,49 @@ fn the_closed_forms_stand_where_the_run_rolls_again_at_t_prime() {
     let table = groovelab(&["simulate", "--preset", "paper-b4.9"]);
     assert!(table.contains("rolls again after t' = 0.2849 s"), "{table}");
 }
+
+/// The Why panel's heading and reason say what the run does, in the corners a teacher
+/// tried: rolling resistance stops the return, a pair moving on together, e = 0
+/// (pressed together from the impact), no friction (nothing rolls), no closing speed.
+#[test]
+fn headings_and_reasons_follow_the_run() {
+    let case = |extra: &[(Key, f64)]| {
+        let p = Preset::load("paper-b4.9").unwrap();
+        let spec = extra
+            .iter()
+            .fold(SceneSpec::default(), |s, &(k, v)| s.with(k, v));
+        let (scene, span) = p.spec.over(&spec).resolve().unwrap();
+        let sol = solve(&scene, &span);
+        let d = Derived::of(&scene);
+        (groovelab::physics::story::headline(&sol, &d), d.why())
+    };
+    let (h, _) = case(&[(Key::RollingResistance, 0.05)]);
+    assert_eq!(h, "RECOLLIDE, but they stop before they meet again");
+    let (h, _) = case(&[(Key::V0Left, 1.0), (Key::V0Right, -1.0)]);
+    assert_eq!(h, "TOGETHER: the pair moves on as one");
+    let (h, why) = case(&[(Key::Restitution, 0.0)]);
+    assert_eq!(h, "RECOLLIDE, but pressed together they stop");
+    assert!(why.starts_with("D e = 0.000 < 1"), "{why}");
+    let (h, why) = case(&[(Key::Mu, 0.0)]);
+    assert_eq!(h, "DEPART: the balls move apart");
+    assert!(
+        why.contains("without friction") && !why.contains("spin"),
+        "{why}"
+    );
+    let (h, why) = case(&[(Key::V0, 0.0)]);
+    assert!(!why.contains("spin"), "{h}: {why}");
+    // The paper's own scene keeps its heading and the D e reason.
+    let (h, why) = case(&[]);
+    assert_eq!(h, "RECOLLIDE: they come back");
+    assert!(why.contains("the spin rolls them back"));
+}
+
+#[test]
+fn a_run_that_comes_to_rest_elsewhere_is_not_said_to_slide_into_an_impact() {
+    let After::Interrupted(i) = story("paper-b4.9", &[(Key::Restitution, 0.0)]) else {
+        panic!("e = 0 does not recover freely");
+    };
+    let first = i.clauses("∞")[0].clone();
+    assert!(!first.contains("next impact"), "{first}");
+    assert!(first.contains("not at the closed form's t'"), "{first}");
+}

@@ -277,7 +277,9 @@ fn table(scene: &Scene, f: &Fits, paper_data: bool) -> String {
     let _ = writeln!(
         out,
         "  {}",
-        if mf.agrees {
+        if mf.agrees && mf.regime_predicted != mf.regime_observed {
+            "consistent: the predicted v' lies within the rest band, so the data cannot tell it from rest"
+        } else if mf.agrees {
             "the model predicts what was observed"
         } else {
             "the model does NOT predict what was observed"

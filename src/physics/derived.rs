@@ -155,6 +155,17 @@ impl Derived {
     /// against 1 (v' ∝ 2 − 5ek² = 2(1 − D e)); otherwise the relative speed once both
     /// balls roll again.
     pub fn why(&self) -> String {
+        if self.left_after_impact.is_none() {
+            // No friction (or no impact): the closed forms of D do not apply.
+            let w = self.separation_speed;
+            return if w > 0.0 {
+                format!("without friction nothing turns them back: they separate at {w:.3} m/s")
+            } else if w < 0.0 {
+                format!("without friction they close at {:.3} m/s", -w)
+            } else {
+                "no closing speed, or they move on as one: nothing separates them".to_string()
+            };
+        }
         if !self.symmetric {
             let w = self.separation_speed;
             return if w > 0.0 {

@@ -87,10 +87,13 @@ impl Interruption {
     pub fn clauses(&self, infinity: &str) -> Vec<String> {
         let mut out = Vec::new();
         let (kind, t) = self.first;
-        let before = format!(
-            "before the closed form's t' = {:.4} s",
-            self.t_roll_closed_form
-        );
+        // The closed form assumes a free slide to t'; say where the run leaves it.
+        let t_closed = self.t_roll_closed_form;
+        let before = if t < t_closed {
+            format!("before the closed form's t' = {t_closed:.4} s")
+        } else {
+            format!("not at the closed form's t' = {t_closed:.4} s")
+        };
         out.push(match kind {
             EventKind::ContactStart => {
                 format!("pressed against the other ball from t = {t:.4} s, {before}")
@@ -98,7 +101,11 @@ impl Interruption {
             EventKind::ZenoRest | EventKind::ZenoContact => {
                 format!("impacts accumulate at T{infinity} = {t:.4} s, {before}")
             }
-            _ => format!("slides into the next impact at t = {t:.4} s, {before}"),
+            EventKind::Collision => {
+                format!("slides into the next impact at t = {t:.4} s, {before}")
+            }
+            EventKind::Rest => format!("comes to rest at t = {t:.4} s, {before}"),
+            _ => format!("rolls again at t = {t:.4} s, {before}"),
         });
         if let Some((t, rests)) = self.accumulation
             && !matches!(kind, EventKind::ZenoRest | EventKind::ZenoContact)
@@ -115,6 +122,31 @@ impl Interruption {
             (None, None) => {}
         }
         out
+    }
+}
+
+/// The Why panel's heading: the regime of the first impact, told as the run bears it
+/// out. The regime says what the balls do once each rolls on its own; the run can
+/// differ (rolling resistance stops them before they meet again, or the pair moves on
+/// together), and then the heading says so.
+pub fn headline(sol: &Solution, derived: &Derived) -> &'static str {
+    let end = sol.at(sol.t_end);
+    let moving = end.left.v != 0.0 || end.right.v != 0.0;
+    let resting = !moving && end.left.u == 0.0 && end.right.u == 0.0;
+    let pressed = sol.events.iter().any(|e| e.kind == EventKind::ContactStart);
+    match derived.regime {
+        // Without friction nothing rolls: they slide apart.
+        Regime::Depart if derived.left_after_impact.is_none() => "DEPART: the balls move apart",
+        Regime::Depart => "DEPART: the balls roll apart",
+        Regime::Rest if moving => "TOGETHER: the pair moves on as one",
+        Regime::Rest => "REST: the balls stop",
+        Regime::Recollide if sol.impacts <= 1 && resting && pressed => {
+            "RECOLLIDE, but pressed together they stop"
+        }
+        Regime::Recollide if sol.impacts <= 1 && resting => {
+            "RECOLLIDE, but they stop before they meet again"
+        }
+        Regime::Recollide => "RECOLLIDE: they come back",
     }
 }
 

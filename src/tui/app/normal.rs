@@ -91,6 +91,9 @@ impl App {
             }
             Action::TogglePin => {
                 let pinned = self.lab.toggle_pin();
+                // Unpinning can shorten the span (it reached the pinned run's end).
+                let sol = &self.lab.solution;
+                self.t = self.t.clamp(sol.t_start, sol.t_end);
                 self.status = Status::Info(if pinned {
                     "pinned this run: change a parameter to compare (P unpins)".into()
                 } else {

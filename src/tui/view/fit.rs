@@ -175,7 +175,9 @@ fn verdict_lines(m: &ModelFit, lines: &mut Ranked<'static>, theme: &Theme) {
     lines.push((
         9,
         Line::from(Span::styled(
-            if m.agrees {
+            if m.agrees && m.regime_predicted != m.regime_observed {
+                "consistent: within the rest band"
+            } else if m.agrees {
                 "the model predicts what was seen"
             } else {
                 "the model does NOT predict what was seen"

@@ -8,7 +8,6 @@ use ratatui::widgets::Widget;
 
 use super::{Ranked, block, by_priority, draw_lines};
 use crate::input::units::significant;
-use crate::physics::derived::Regime;
 use crate::physics::story::{self, After, Verdict};
 use crate::study::fit;
 use crate::tui::app::App;
@@ -22,11 +21,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let inner = blk.inner(area);
     blk.render(area, buf);
 
-    let regime = match d.regime {
-        Regime::Depart => "DEPART: the balls roll apart",
-        Regime::Rest => "REST: the balls stop",
-        Regime::Recollide => "RECOLLIDE: they come back",
-    };
+    let regime = story::headline(sol, d);
     let why = d.why();
     // The verdict's margin against the measured series' rest band, when there is one.
     let band = app.lab.measured().map(fit::rest_band);
