@@ -7,6 +7,7 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::Style;
 
+use super::canvas::Canvas;
 use super::theme::{Glyphs, Theme};
 
 /// How a series is drawn.
@@ -151,58 +152,6 @@ fn ticks_with_labels(ticks: &[f64]) -> Vec<(f64, String)> {
         .iter()
         .map(|&t| (t, label_on_axis(t, step, scale)))
         .collect()
-}
-
-struct Grid {
-    cols: usize,
-    rows: usize,
-    /// Sub-cells per cell: (2, 4) braille, (1, 1) ASCII.
-    sub: (usize, usize),
-    bits: Vec<u8>,
-    style: Vec<Option<(Style, &'static str)>>,
-}
-
-impl Grid {
-    fn new(cols: usize, rows: usize, ascii: bool) -> Grid {
-        Grid {
-            cols,
-            rows,
-            sub: if ascii { (1, 1) } else { (2, 4) },
-            bits: vec![0; cols * rows],
-            style: vec![None; cols * rows],
-        }
-    }
-
-    fn dots(&self) -> (usize, usize) {
-        (self.cols * self.sub.0, self.rows * self.sub.1)
-    }
-
-    fn set(&mut self, dx: i64, dy: i64, style: Style, glyph: &'static str) {
-        let (w, h) = self.dots();
-        if dx < 0 || dy < 0 || dx as usize >= w || dy as usize >= h {
-            return;
-        }
-        let (dx, dy) = (dx as usize, dy as usize);
-        let cell = (dy / self.sub.1) * self.cols + dx / self.sub.0;
-        // Braille dot numbering: columns of 1-2-3-7 and 4-5-6-8.
-        const BITS: [[u8; 4]; 2] = [[0x01, 0x02, 0x04, 0x40], [0x08, 0x10, 0x20, 0x80]];
-        self.bits[cell] |= if self.sub.0 == 1 {
-            1
-        } else {
-            BITS[dx % 2][dy % 4]
-        };
-        self.style[cell] = Some((style, glyph));
-    }
-
-    fn line(&mut self, a: (f64, f64), b: (f64, f64), style: Style, glyph: &'static str) {
-        let steps = ((b.0 - a.0).abs().max((b.1 - a.1).abs()).ceil() as usize).clamp(1, 4096);
-        for i in 0..=steps {
-            let f = i as f64 / steps as f64;
-            let x = a.0 + (b.0 - a.0) * f;
-            let y = a.1 + (b.1 - a.1) * f;
-            self.set(x.round() as i64, y.round() as i64, style, glyph);
-        }
-    }
 }
 
 /// The x value drawn in screen column `column` of a plot whose data cells start at
@@ -427,7 +376,7 @@ impl Plot {
         }
 
         // Line series on the sub-cell grid.
-        let mut grid = Grid::new(cols, rows, g.ascii);
+        let mut grid = Canvas::new(cols, rows, g.ascii);
         let (w, h) = grid.dots();
         let to_dot = |(x, y): (f64, f64)| {
             (
@@ -450,21 +399,7 @@ impl Plot {
                 prev = Some(d);
             }
         }
-        for r in 0..rows {
-            for c in 0..cols {
-                let i = r * cols + c;
-                if let Some((style, glyph)) = grid.style[i] {
-                    let sym = if g.ascii {
-                        glyph.to_string()
-                    } else {
-                        char::from_u32(0x2800 + u32::from(grid.bits[i]))
-                            .unwrap_or(' ')
-                            .to_string()
-                    };
-                    buf.set_string(plot.x + c as u16, plot.y + r as u16, sym, style);
-                }
-            }
-        }
+        grid.write(plot.x, plot.y, buf);
         // Point markers on top.
         for s in self.series.iter().filter(|s| s.draw == Draw::Points) {
             for &(x, y) in &s.points {
