@@ -8,5 +8,6 @@ pub mod file;
 pub use file::{FileError, MAX_FILE_BYTES, read_user_file};
 pub mod params;
 pub mod preset;
+mod spec;
 pub mod tracks;
 pub mod units;

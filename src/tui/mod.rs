@@ -4,6 +4,7 @@
 //! (quit, error, panic, and SIGINT, SIGTERM, SIGHUP or SIGQUIT from outside).
 
 pub mod app;
+pub mod canvas;
 pub mod keys;
 pub mod plot;
 pub mod state;

@@ -4,76 +4,14 @@
 
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
-use ratatui::style::Style;
 use ratatui::widgets::Widget;
 
 use super::block;
 use crate::physics::model::Phase;
 use crate::physics::solution::EventKind;
 use crate::tui::app::App;
+use crate::tui::canvas::Canvas;
 use crate::tui::theme::Theme;
-
-/// Dots on a grid of braille cells (2×4 per cell, square dots) or ASCII cells.
-struct Canvas {
-    cols: usize,
-    rows: usize,
-    ascii: bool,
-    bits: Vec<u8>,
-    ink: Vec<Option<(Style, &'static str)>>,
-}
-
-impl Canvas {
-    fn new(cols: usize, rows: usize, ascii: bool) -> Canvas {
-        Canvas {
-            cols,
-            rows,
-            ascii,
-            bits: vec![0; cols * rows],
-            ink: vec![None; cols * rows],
-        }
-    }
-
-    /// Dots per cell horizontally and vertically.
-    fn sub(&self) -> (f64, f64) {
-        if self.ascii { (1.0, 1.0) } else { (2.0, 4.0) }
-    }
-
-    /// Sets the dot at (x, y), in cell-width units across and dot rows down.
-    fn dot(&mut self, x: f64, y: f64, style: Style, glyph: &'static str) {
-        let (sx, sy) = self.sub();
-        let (dx, dy) = ((x * sx).floor(), y.floor());
-        if dx < 0.0 || dy < 0.0 {
-            return;
-        }
-        let (dx, dy) = (dx as usize, dy as usize);
-        let (cx, cy) = (dx / sx as usize, dy / sy as usize);
-        if cx >= self.cols || cy >= self.rows {
-            return;
-        }
-        let i = cy * self.cols + cx;
-        const BITS: [[u8; 4]; 2] = [[0x01, 0x02, 0x04, 0x40], [0x08, 0x10, 0x20, 0x80]];
-        self.bits[i] |= if self.ascii { 1 } else { BITS[dx % 2][dy % 4] };
-        self.ink[i] = Some((style, glyph));
-    }
-
-    fn flush(&self, x0: u16, y0: u16, buf: &mut Buffer) {
-        for r in 0..self.rows {
-            for c in 0..self.cols {
-                let i = r * self.cols + c;
-                if let Some((style, glyph)) = self.ink[i] {
-                    let sym = if self.ascii {
-                        glyph.to_string()
-                    } else {
-                        char::from_u32(0x2800 + u32::from(self.bits[i]))
-                            .unwrap_or(' ')
-                            .to_string()
-                    };
-                    buf.set_string(x0 + c as u16, y0 + r as u16, sym, style);
-                }
-            }
-        }
-    }
-}
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let g = theme.glyphs;
@@ -261,7 +199,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             );
         }
     }
-    canvas.flush(inner.x, inner.y, buf);
+    canvas.write(inner.x, inner.y, buf);
     if flashing {
         let c = col(0.5 * (snap.left.x + snap.right.x));
         let y = inner.y + (cy / sy) as u16;
