@@ -1025,3 +1025,22 @@ fn snapshots_of_issue_11_screens() {
         }
     }
 }
+
+#[test]
+fn the_map_legend_names_every_mark_at_every_size() {
+    // Found by a new-user trial: at 120×40 the legend ended "▒ reco" (cut mid-word).
+    for (w, h) in [(80, 24), (120, 40), (200, 60)] {
+        for ascii in [false, true] {
+            let s = screen("paper-b3.5", 0.0, (w, h), ascii, Some("g"));
+            let legend = s
+                .lines()
+                .find(|l| l.contains("depart") || l.contains(".apart"));
+            let legend = legend.unwrap_or_else(|| panic!("no legend at {w}x{h}:\n{s}"));
+            assert!(
+                legend.contains("back") || legend.contains("recollide"),
+                "{legend}"
+            );
+            assert!(legend.contains(if ascii { '@' } else { '◆' }), "{legend}");
+        }
+    }
+}

@@ -22,7 +22,10 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
 
 fn regime_map(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let g = theme.glyphs;
-    let blk = block(" Regime: b/R across, e up  [g] back ", theme);
+    let blk = block(
+        super::title_within("Regime: b/R across, e up  [g] back", area, theme),
+        theme,
+    );
     let inner = blk.inner(area);
     blk.render(area, buf);
     if inner.width < 12 || inner.height < 4 {
@@ -74,13 +77,21 @@ fn regime_map(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             theme.cursor,
         );
     }
-    let legend = g.text(&format!(
-        "0 … b/R {:.2}   {} depart  = rest  {} recollide  {} this scene",
-        b_max / radius,
-        ".",
-        glyph(Regime::Recollide),
-        if g.ascii { "@" } else { "◆" }
-    ));
+    // The full legend where it fits, else the marks alone (never a word cut silently).
+    let marker = if g.ascii { "@" } else { "◆" };
+    let recollide = glyph(Regime::Recollide);
+    let long = format!(
+        "0 … b/R {:.2}   . depart  = rest  {recollide} recollide  {marker} this scene",
+        b_max / radius
+    );
+    let short = format!(". depart = rest {recollide} back {marker} here");
+    let tiny = format!("{recollide}back .apart =rest {marker}");
+    let width = usize::from(inner.width);
+    let legend = [long, short, tiny]
+        .into_iter()
+        .map(|l| g.text(&l))
+        .find(|l| l.chars().count() <= width)
+        .unwrap_or_else(|| g.ellipsize(". depart = rest", width));
     buf.set_stringn(
         inner.x,
         inner.bottom() - 1,
@@ -92,7 +103,7 @@ fn regime_map(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
 
 fn paper_figure(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let blk = block(
-        theme.glyphs.text(" Paper fig.: a/(μ g) and D against b/R "),
+        super::title_within("Paper fig.: a/(μ g) and D against b/R", area, theme),
         theme,
     );
     let inner = blk.inner(area);
@@ -113,8 +124,18 @@ fn paper_figure(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         x_title: "b/R".into(),
         y_title: String::new(),
         series: vec![
-            series("|a_cm|/mu g", &|x| 1.0 / k(x), theme.left, "*"),
-            series("|a_t|/mu g", &|x| 2.5 * k(x), theme.accent, "+"),
+            series(
+                &theme.glyphs.text("|a_cm|/μg"),
+                &|x| 1.0 / k(x),
+                theme.left,
+                "*",
+            ),
+            series(
+                &theme.glyphs.text("|a_t|/μg"),
+                &|x| 2.5 * k(x),
+                theme.accent,
+                "+",
+            ),
             series("D", &|x| closed_form::determinant(k(x)), theme.right, "o"),
         ],
         vlines: vec![
