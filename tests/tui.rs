@@ -1044,3 +1044,24 @@ fn the_map_legend_names_every_mark_at_every_size() {
         }
     }
 }
+
+#[test]
+fn the_fit_window_stays_after_the_impact_and_never_runs_backwards() {
+    // Found by a new-user trial: twenty presses of `{` or `)` gave "0.02 … -0.08 s"
+    // and the whole Fit panel vanished.
+    let mut a = app("paper-b4.9");
+    press(&mut a, "f");
+    for keys in ["{", ")", "("] {
+        for _ in 0..25 {
+            press(&mut a, keys);
+        }
+        a.lab.wait();
+        let (from, to) = (a.lab.fit_window.0.unwrap(), a.lab.fit_window.1.unwrap());
+        assert!(from > 0.0 && from < to, "{keys}: {from} … {to}");
+        assert!(
+            matches!(a.lab.fits(), State::Ready(Ok(_))),
+            "{keys}: the fit stays"
+        );
+    }
+    assert!(matches!(&a.status, Status::Error(e) if e.contains("at least 3 frames")));
+}

@@ -243,11 +243,19 @@ impl Lab {
             i.saturating_sub(1)
         };
         let t = m.t[j];
-        self.fit_window = if end {
-            (Some(current.0), Some(t))
-        } else {
-            (Some(t), Some(current.1))
-        };
+        // The window stays after the impact (the sliding phase starts there) and holds
+        // at least three frames (a line needs them); a move past either is refused.
+        let (from, to) = if end { (current.0, t) } else { (t, current.1) };
+        let frames =
+            m.t.iter()
+                .filter(|&&x| x >= from - 1e-12 && x <= to + 1e-12)
+                .count();
+        if from <= 0.0 || frames < 3 {
+            return Err(format!(
+                "fit window {from:.2} … {to:.2} s: allowed after the impact (t > 0) and at least 3 frames"
+            ));
+        }
+        self.fit_window = (Some(from), Some(to));
         self.restart_fits();
         Ok(())
     }
