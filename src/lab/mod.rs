@@ -92,6 +92,7 @@ pub struct Lab {
     samples: Cached<usize, Snapshot>,
     energies: Cached<usize, (f64, EnergySplit)>,
     pinned_samples: Cached<usize, Snapshot>,
+    pinned_kinetic: Cached<usize, (f64, f64)>,
     regimes: Cached<(usize, usize), Regime>,
 }
 
@@ -134,6 +135,7 @@ impl Lab {
             samples: RefCell::default(),
             energies: RefCell::default(),
             pinned_samples: RefCell::default(),
+            pinned_kinetic: RefCell::default(),
             regimes: RefCell::default(),
         };
         lab.cache();
@@ -306,6 +308,7 @@ impl Lab {
         self.samples.replace(None);
         self.energies.replace(None);
         self.pinned_samples.replace(None);
+        self.pinned_kinetic.replace(None);
         self.regimes.replace(None);
     }
 

@@ -52,7 +52,7 @@ impl Lab {
             return s.clone();
         }
         let sol = &self.solution;
-        let s: Rc<[Snapshot]> = sample_times(sol, columns)
+        let s: Rc<[Snapshot]> = sample_times(sol, (sol.t_start, sol.t_end), columns)
             .into_iter()
             .map(|t| sol.at(t))
             .collect();
@@ -68,9 +68,10 @@ impl Lab {
             return s.clone();
         }
         let sol = &self.solution;
-        let s: Rc<[(f64, EnergySplit)]> = sample_times(sol, columns)
-            .into_iter()
-            .map(|t| (t, sol.energy_at(t)))
+        let s: Rc<[(f64, EnergySplit)]> = self
+            .samples(columns)
+            .iter()
+            .map(|s| (s.t, sol.energy_at(s.t)))
             .collect();
         self.energies.replace(Some((columns, s.clone())));
         s
@@ -87,14 +88,33 @@ impl Lab {
         {
             return s.clone();
         }
-        let mut pinned = (*p.solution).clone();
-        (pinned.t_start, pinned.t_end) = (self.solution.t_start, self.solution.t_end);
-        let s: Rc<[Snapshot]> = sample_times(&pinned, columns)
+        let span = (self.solution.t_start, self.solution.t_end);
+        let s: Rc<[Snapshot]> = sample_times(&p.solution, span, columns)
             .into_iter()
-            .map(|t| pinned.at(t))
+            .map(|t| p.solution.at(t))
             .collect();
         self.pinned_samples.replace(Some((columns, s.clone())));
         s
+    }
+
+    /// The pinned run's kinetic energy at [`Lab::pinned_samples`]' times, J, once per
+    /// scene and width (the energy chart's A/B curve); empty when nothing is pinned.
+    pub fn pinned_kinetic(&self, columns: usize) -> Rc<[(f64, f64)]> {
+        let Some(p) = &self.pinned else {
+            return Rc::from(Vec::new());
+        };
+        if let Some((c, k)) = &*self.pinned_kinetic.borrow()
+            && *c == columns
+        {
+            return k.clone();
+        }
+        let k: Rc<[(f64, f64)]> = self
+            .pinned_samples(columns)
+            .iter()
+            .map(|s| (s.t, p.solution.energy_at(s.t).kinetic()))
+            .collect();
+        self.pinned_kinetic.replace(Some((columns, k.clone())));
+        k
     }
 
     /// The pinned parameters that differ from the current ones: `(label, was, now)`,
@@ -157,15 +177,15 @@ impl Lab {
 
 /// Sample times: about four per column, plus both sides of every event so jumps and
 /// kinks are drawn where they are.
-fn sample_times(sol: &Solution, columns: usize) -> Vec<f64> {
+fn sample_times(sol: &Solution, (t0, t1): (f64, f64), columns: usize) -> Vec<f64> {
     let n = 4 * columns.max(1);
-    let dt = (sol.t_end - sol.t_start) / n as f64;
-    let mut ts: Vec<f64> = (0..=n).map(|i| sol.t_start + i as f64 * dt).collect();
-    for e in sol.visible_events() {
+    let dt = (t1 - t0) / n as f64;
+    let mut ts: Vec<f64> = (0..=n).map(|i| t0 + i as f64 * dt).collect();
+    for e in &sol.events {
         ts.push(e.t);
         ts.push(e.t - 1e-12 * (1.0 + e.t.abs()));
     }
-    ts.retain(|t| *t >= sol.t_start && *t <= sol.t_end);
+    ts.retain(|t| *t >= t0 && *t <= t1);
     ts.sort_by(f64::total_cmp);
     ts.dedup();
     ts

@@ -423,23 +423,16 @@ fn energy(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
     }];
     if app.lab.pinned.is_some() {
         // The pinned run's kinetic energy, for the A/B comparison.
-        let p = app.lab.pinned_samples(columns);
-        let pinned = app.lab.pinned.as_ref().map(|p| p.solution.clone());
-        if let Some(psol) = pinned {
-            series.insert(
-                0,
-                Series {
-                    name: "pinned kinetic".into(),
-                    points: p
-                        .iter()
-                        .map(|s| (s.t, psol.energy_at(s.t).kinetic()))
-                        .collect(),
-                    style: theme.dim,
-                    glyph: ".",
-                    draw: Draw::Line,
-                },
-            );
-        }
+        series.insert(
+            0,
+            Series {
+                name: "pinned kinetic".into(),
+                points: app.lab.pinned_kinetic(columns).to_vec(),
+                style: theme.dim,
+                glyph: ".",
+                draw: Draw::Line,
+            },
+        );
     }
     for (name, glyph, style, value) in parts {
         let points: Vec<(f64, f64)> = split.iter().map(|(t, e)| (*t, value(e))).collect();
