@@ -73,6 +73,8 @@ pub struct Lab {
     pub extent: (f64, f64),
     /// RMS residuals of v_cm and v_t against the measured points.
     pub data_rms: Option<(f64, f64)>,
+    /// The measured series' rest band (speeds within it cannot be told from rest).
+    pub rest_band: Option<f64>,
     /// Where the measured left ball is at each measured time: the tracked centre of a
     /// position file, else its v_cm integrated.
     ghost: Option<Vec<f64>>,
@@ -122,6 +124,7 @@ impl Lab {
             solution,
             extent: (0.0, 0.0),
             data_rms: None,
+            rest_band: None,
             ghost: None,
             fit_window: (None, None),
             want_methods: false,
@@ -298,6 +301,7 @@ impl Lab {
             self.extent = (self.extent.0.min(lo), self.extent.1.max(hi));
         }
         self.data_rms = self.measured().map(|m| data_rms(&self.solution, m));
+        self.rest_band = self.measured().map(crate::study::fit::rest_band);
         let radius = self.scene.radius;
         self.ghost = self.measured().map(|m| match &m.x {
             // The tracked centre is the displacement from the impact place, where the

@@ -9,7 +9,6 @@ use ratatui::widgets::Widget;
 use super::{Ranked, block, by_priority, draw_lines};
 use crate::input::units::significant;
 use crate::physics::story::{self, After, Verdict};
-use crate::study::fit;
 use crate::tui::app::App;
 use crate::tui::theme::Theme;
 
@@ -24,7 +23,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let regime = story::headline(sol, d);
     let why = d.why();
     // The verdict's margin against the measured series' rest band, when there is one.
-    let band = app.lab.measured().map(fit::rest_band);
+    let band = app.lab.rest_band;
     let verdict = Verdict::of(sol, d, band);
     let story = story::after_first_impact(sol, d);
     let b_star = d.b_star.map_or("none (e < 2/5)".to_string(), |b| {

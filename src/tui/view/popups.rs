@@ -42,29 +42,29 @@ fn popup(
 /// A popup of `width` whose `lines` scroll: as many as fit from `app.scroll`, "more ↓"
 /// on the bottom border while lines are below, "↑ more" on the top one while lines
 /// are above. Tells the app how far scrolling goes at this size.
-fn scrolling(
+fn scrolling<'a>(
     app: &App,
     title: &str,
-    head: Vec<Line<'_>>,
-    lines: Vec<Line<'_>>,
+    head: Vec<Line<'a>>,
+    (count, line): (usize, &dyn Fn(usize) -> Line<'a>),
     (area, width): (Rect, u16),
     buf: &mut Buffer,
     theme: &Theme,
 ) {
     let g = theme.glyphs;
-    let rect = centered(area, width, (head.len() + lines.len()) as u16 + 2);
+    let rect = centered(
+        area,
+        width,
+        (head.len() + count).min(usize::from(u16::MAX - 2)) as u16 + 2,
+    );
     Clear.render(rect, buf);
     let visible = usize::from(rect.height.saturating_sub(2)).saturating_sub(head.len());
-    let max = lines.len().saturating_sub(visible);
+    let max = count.saturating_sub(visible);
     app.scroll_max.set(max);
     let first = app.scroll.min(max);
     let mut blk: Block = block(g.text(&format!(" {title} ")), theme);
-    if first + visible < lines.len() {
-        let more = g.text(&format!(
-            " more ↓ ({} of {}) ",
-            first + visible,
-            lines.len()
-        ));
+    if first + visible < count {
+        let more = g.text(&format!(" more ↓ ({} of {count}) ", first + visible));
         blk = blk.title_bottom(Line::from(Span::styled(more, theme.key)).right_aligned());
     }
     if first > 0 {
@@ -73,9 +73,10 @@ fn scrolling(
     }
     let inner = blk.inner(rect);
     blk.render(rect, buf);
+    // Only the rows on screen are made (a data table can have a million).
     let shown: Vec<Line> = head
         .into_iter()
-        .chain(lines.into_iter().skip(first).take(visible))
+        .chain((first..count.min(first + visible)).map(line))
         .collect();
     super::draw_lines(shown, inner, buf);
 }
@@ -111,30 +112,30 @@ fn help_lines(width: usize, theme: &Theme) -> Vec<Line<'static>> {
 /// The data table's rows: t, then v_cm measured, model, measured − model, then the
 /// same for v_t (SI); NaN where the data have no value or the time is outside the run.
 pub fn data_rows(app: &App) -> Vec<[f64; 7]> {
-    let Some(m) = app.lab.measured() else {
-        return Vec::new();
-    };
+    let n = app.lab.measured().map_or(0, |m| m.t.len());
+    (0..n).filter_map(|i| data_row(app, i)).collect()
+}
+
+/// Row `i` of [`data_rows`].
+fn data_row(app: &App, i: usize) -> Option<[f64; 7]> {
+    let m = app.lab.measured()?;
     let sol = &app.lab.solution;
-    m.t.iter()
-        .enumerate()
-        .map(|(i, &t)| {
-            let (model_v, model_u) = if (sol.t_start..=sol.t_end).contains(&t) {
-                let s = sol.at(t);
-                (s.left.v, s.left.u)
-            } else {
-                (f64::NAN, f64::NAN)
-            };
-            [
-                t,
-                m.v_cm[i],
-                model_v,
-                m.v_cm[i] - model_v,
-                m.v_t[i],
-                model_u,
-                m.v_t[i] - model_u,
-            ]
-        })
-        .collect()
+    let t = *m.t.get(i)?;
+    let (model_v, model_u) = if (sol.t_start..=sol.t_end).contains(&t) {
+        let s = sol.at(t);
+        (s.left.v, s.left.u)
+    } else {
+        (f64::NAN, f64::NAN)
+    };
+    Some([
+        t,
+        m.v_cm[i],
+        model_v,
+        m.v_cm[i] - model_v,
+        m.v_t[i],
+        model_u,
+        m.v_t[i] - model_u,
+    ])
 }
 
 fn data_table(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
@@ -159,9 +160,9 @@ fn data_table(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             theme.title,
         )),
     ];
-    let lines: Vec<Line> = data_rows(app)
-        .into_iter()
-        .map(|r| {
+    let count = app.lab.measured().map_or(0, |m| m.t.len());
+    let line = |i: usize| {
+        data_row(app, i).map_or_else(Line::default, |r| {
             let near = (r[0] - app.t).abs() < 1e-9;
             let style = if near { theme.selected } else { theme.text };
             Line::from(Span::styled(
@@ -178,7 +179,7 @@ fn data_table(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                 style,
             ))
         })
-        .collect();
+    };
     let title = if g.ascii {
         "Data and model  (up/down pgup/pgdn scroll, Esc or q closes)"
     } else {
@@ -186,7 +187,7 @@ fn data_table(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     };
     // Room for the title beside "↑ more".
     let title = g.ellipsize(title, usize::from(area.width.saturating_sub(16)));
-    scrolling(app, &title, head, lines, (area, 78), buf, theme);
+    scrolling(app, &title, head, (count, &line), (area, 78), buf, theme);
 }
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
@@ -201,7 +202,9 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             } else {
                 "Keys  (Esc or q closes, ↑↓ PgUp PgDn scroll)"
             };
-            scrolling(app, title, Vec::new(), lines, (area, width), buf, theme);
+            let line = |i: usize| lines[i].clone();
+            let source: (usize, &dyn Fn(usize) -> Line<'static>) = (lines.len(), &line);
+            scrolling(app, title, Vec::new(), source, (area, width), buf, theme);
         }
         Mode::Table => data_table(app, area, buf, theme),
         Mode::Picker(selected) => {
