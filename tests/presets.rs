@@ -215,7 +215,7 @@ fn unequal_presets_conserve_momentum_and_end_as_physics_says() {
 
 #[test]
 fn paper_presets_carry_the_measured_series() {
-    let shared = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/data");
+    let data = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("data");
     for width in ["3.5", "4.4", "4.9"] {
         let preset = Preset::load(&format!("paper-b{width}")).unwrap();
         let measured = preset.measured.expect("measured data");
@@ -234,12 +234,12 @@ fn paper_presets_carry_the_measured_series() {
             (scene.left.v0 - mean).abs() <= 5.1e-5,
             "b = {width}: v0 is the mean to 4 decimals"
         );
-        // Same numbers as the paper's data files: shared/ stands beside the repo for
-        // every developer and CI; a missing file is a failure, never a silent skip.
-        let csv = shared.join(format!("gs-b{width}cm.csv"));
+        // Same numbers as the paper's data files in data/; a missing file is a
+        // failure, never a silent skip.
+        let csv = data.join(format!("gs-b{width}cm.csv"));
         let text = std::fs::read_to_string(&csv).unwrap_or_else(|e| {
             panic!(
-                "{}: {e}; the paper's data must be in ../shared/data beside the repo",
+                "{}: {e}; the paper's data must be in data/",
                 csv.display()
             )
         });
