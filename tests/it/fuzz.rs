@@ -10,7 +10,7 @@
 //! - no panic, and each case within a time limit (a watchdog thread).
 //!
 //! A short run is part of `cargo test`. The long run:
-//! `GROOVELAB_FUZZ_CASES=100000 cargo test --release --test fuzz -- --nocapture`
+//! `GROOVELAB_FUZZ_CASES=100000 cargo test --release --test it fuzz:: -- --nocapture`
 //! (`GROOVELAB_FUZZ_SEED=N` picks another sequence; the default is fixed, so a failure
 //! in CI reproduces).
 
