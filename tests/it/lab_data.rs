@@ -12,7 +12,7 @@ const EXAMPLE: &str = "docs/video/paper-b4.9-tracker.txt";
 
 fn data(extra: impl FnOnce(&mut DataArgs)) -> DataArgs {
     let mut d = DataArgs {
-        data: Some(EXAMPLE.into()),
+        data: vec![EXAMPLE.into()],
         ..DataArgs::default()
     };
     extra(&mut d);
