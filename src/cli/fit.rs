@@ -13,21 +13,31 @@ use crate::input::preset::Preset;
 use crate::input::units::{Dimension, show, significant, unit_factor};
 use crate::physics::scene::Scene;
 use crate::study::fit::{self, Fits, Free, ModelFit};
-use crate::study::track::{self, Derive, Found};
+use crate::study::track::{self, Data, Derive, Found};
 
-/// The measured series for `scene`, and what was found in a position track.
+/// The measured series for `scene`, and what was found in a position track: the
+/// `--data` file's, else the preset's.
 pub fn load(
     preset: &Preset,
     scene: &Scene,
     args: &DataArgs,
 ) -> Result<(Measured, Option<Found>), CliError> {
-    let Some(path) = &args.data else {
-        return preset.measured.clone().map(|m| (m, None)).ok_or_else(|| {
+    match read(scene, args)? {
+        Some(data) => Ok((data.for_scene(scene), data.found().cloned())),
+        None => preset.measured.clone().map(|m| (m, None)).ok_or_else(|| {
             CliError::Invalid(format!(
                 "preset {} has no measured data, allowed: a paper-b* preset or --data FILE",
                 preset.name
             ))
-        });
+        }),
+    }
+}
+
+/// The `--data` file as read (`None` without `--data`), checked against the lab's
+/// sizes in `scene`.
+pub fn read(scene: &Scene, args: &DataArgs) -> Result<Option<Data>, CliError> {
+    let Some(path) = &args.data else {
+        return Ok(None);
     };
     let text = crate::input::read_user_file(path, "--data", crate::input::MAX_FILE_BYTES)
         .map_err(|e| CliError::Invalid(e.to_string()))?;
@@ -64,13 +74,12 @@ pub fn load(
         ..Derive::default()
     };
     let file = path.display().to_string();
-    let loaded = track::load(&text, &file, &reading, scene, &derive)
+    let data = track::read(&text, &file, &reading, &derive)
         .map_err(|e| CliError::Invalid(e.to_string()))?;
-    loaded
-        .measured
+    data.for_scene(scene)
         .check_magnitudes()
         .map_err(|e| CliError::Invalid(format!("{file}: {e}")))?;
-    Ok((loaded.measured, loaded.found))
+    Ok(Some(data))
 }
 
 #[derive(Serialize)]

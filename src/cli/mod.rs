@@ -139,12 +139,13 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
 /// The lab on the scene the options describe, with `--data` replacing the preset's
 /// measured series.
 pub fn lab(scene_args: &SceneArgs, data: &DataArgs) -> Result<Lab, CliError> {
-    let (mut preset, scene, span) = scene_args.resolve()?;
-    if data.data.is_some() {
-        // A position track's v_t needs r = kR of the scene shown, overrides included.
-        preset.measured = Some(fit::load(&preset, &scene, data)?.0);
-    }
-    let mut lab = Lab::new(preset, scene, span);
+    let (preset, scene, span) = scene_args.resolve()?;
+    let mut lab = match fit::read(&scene, data)? {
+        // A position track's v_t follows the scene shown (r = kR), overrides and edits
+        // in the app included.
+        Some(data) => Lab::with_data(preset, Some(data), scene, span),
+        None => Lab::new(preset, scene, span),
+    };
     // `--t-end` is explicit: it holds through parameter changes in the app.
     if let (Some(t_end), Some(_)) = (span.t_end, scene_args.values.get(Key::TEnd)) {
         lab.set_span_end(SpanEnd::Fixed {

@@ -25,6 +25,7 @@ use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{EnergySplit, Snapshot, Solution};
 use crate::study::compare::Row;
 use crate::study::fit::{Fits, ModelFit};
+use crate::study::track::Data;
 use jobs::Job;
 
 pub use analyses::{METHOD_VIEW_LEVELS, OVERLAY_LEVELS, Overlay, level_settings};
@@ -69,6 +70,11 @@ pub struct Lab {
     pub pinned: Option<Pinned>,
     pub solution: Arc<Solution>,
     pub derived: Derived,
+    /// The measured series as read (a position track's v_t per metre of r): kept
+    /// while parameters change, so a model can be tuned against it by hand.
+    data: Option<Arc<Data>>,
+    /// The measured series derived for the current scene (a track's v_t from its r).
+    measured: Option<Arc<Measured>>,
     /// The x range (m) the balls cover over the span.
     pub extent: (f64, f64),
     /// RMS residuals of v_cm and v_t against the measured points.
@@ -99,15 +105,22 @@ pub struct Lab {
 }
 
 impl Lab {
-    /// The lab on `scene`; a `t_end` in `span` counts as the preset's (see [`SpanEnd`];
-    /// [`Lab::set_span_end`] makes it explicit).
+    /// The lab on `scene` with the preset's measured series; a `t_end` in `span`
+    /// counts as the preset's (see [`SpanEnd`]; [`Lab::set_span_end`] makes it explicit).
     pub fn new(preset: Preset, scene: Scene, span: Span) -> Lab {
+        let data = preset.measured.clone().map(Data::Velocities);
+        Lab::with_data(preset, data, scene, span)
+    }
+
+    /// The lab on `scene` with `data` (a data file's) instead of the preset's series.
+    pub fn with_data(preset: Preset, data: Option<Data>, scene: Scene, span: Span) -> Lab {
         let span_end = preset_span_end(&span);
+        let measured = data.as_ref().map(|d| Arc::new(d.for_scene(&scene)));
         let solution = Arc::new(solve_shown(
             &scene,
             &span,
             span_end,
-            preset.measured.as_ref(),
+            measured.as_deref(),
             None,
         ));
         let span = Span {
@@ -122,6 +135,8 @@ impl Lab {
             pinned: None,
             derived: Derived::of(&scene),
             solution,
+            data: data.map(Arc::new),
+            measured,
             extent: (0.0, 0.0),
             data_rms: None,
             rest_band: None,
@@ -145,10 +160,10 @@ impl Lab {
         lab
     }
 
-    /// The preset's measured series (kept while parameters change, so a model can be
-    /// tuned against it by hand).
+    /// The measured series for the current scene: the preset's, or a data file's
+    /// (a position track's v_t derived with this scene's r = kR).
     pub fn measured(&self) -> Option<&Measured> {
-        self.preset.measured.as_ref()
+        self.measured.as_deref()
     }
 
     /// The current value of a parameter, SI.
@@ -222,6 +237,11 @@ impl Lab {
     /// Starts over from `preset` (its `t_end`, if any, holds until a parameter changes).
     pub fn load_preset(&mut self, preset: Preset) -> Result<(), SceneError> {
         let (scene, span) = preset.spec.resolve()?;
+        self.data = preset
+            .measured
+            .clone()
+            .map(|m| Arc::new(Data::Velocities(m)));
+        self.measured = self.data.as_ref().map(|d| Arc::new(d.for_scene(&scene)));
         self.preset = preset;
         self.fit_window = (None, None);
         self.span_end = preset_span_end(&span);
@@ -271,6 +291,13 @@ impl Lab {
     }
 
     fn load(&mut self, scene: Scene, span: Span) {
+        // A track's v_t follows the scene's contact radius r = kR.
+        let r = |s: &Scene| s.k() * s.radius;
+        if let Some(d) = self.data.as_ref().filter(|d| d.follows_scene())
+            && r(&scene) != r(&self.scene)
+        {
+            self.measured = Some(Arc::new(d.for_scene(&scene)));
+        }
         self.scene = scene;
         let solution = solve_shown(
             &scene,
