@@ -7,35 +7,40 @@ use serde::Serialize;
 use super::{
     CliError, DataArgs, FitArgs, FitFormat, SceneArgs, TrackRole, output::write_atomically,
 };
-use crate::input::data::Measured;
 use crate::input::data::Reading;
 use crate::input::preset::Preset;
 use crate::input::units::{Dimension, show, significant, unit_factor};
 use crate::physics::scene::Scene;
 use crate::study::fit::{self, Fits, Free, ModelFit};
-use crate::study::track::{self, Data, Derive, Found};
+use crate::study::measured::{self, Derive, Found, Measured, Series};
 
-/// The measured series for `scene`, and what was found in a position track: the
-/// `--data` file's, else the preset's.
+/// The measured series for `scene`, and what was found in a position track.
 pub fn load(
     preset: &Preset,
     scene: &Scene,
     args: &DataArgs,
 ) -> Result<(Measured, Option<Found>), CliError> {
-    match read(scene, args)? {
-        Some(data) => Ok((data.for_scene(scene), data.found().cloned())),
-        None => preset.measured.clone().map(|m| (m, None)).ok_or_else(|| {
-            CliError::Invalid(format!(
-                "preset {} has no measured data, allowed: a paper-b* preset or --data FILE",
-                preset.name
-            ))
-        }),
-    }
+    let series = match load_series(args)? {
+        Some(s) => s,
+        None => preset
+            .measured
+            .clone()
+            .map(|m| Series::Velocities(std::sync::Arc::new(m)))
+            .ok_or_else(|| {
+                CliError::Invalid(format!(
+                    "preset {} has no measured data, allowed: a paper-b* preset or --data FILE",
+                    preset.name
+                ))
+            })?,
+    };
+    let found = series.found().cloned();
+    let in_scene = measured::for_scene(&series, scene);
+    Ok(((*in_scene.measured).clone(), found))
 }
 
-/// The `--data` file as read (`None` without `--data`), checked against the lab's
-/// sizes in `scene`.
-pub fn read(scene: &Scene, args: &DataArgs) -> Result<Option<Data>, CliError> {
+/// The `--data` file read, its velocities derived as far as no scene enters; `None`
+/// without `--data`.
+pub fn load_series(args: &DataArgs) -> Result<Option<Series>, CliError> {
     let Some(path) = &args.data else {
         return Ok(None);
     };
@@ -74,12 +79,14 @@ pub fn read(scene: &Scene, args: &DataArgs) -> Result<Option<Data>, CliError> {
         ..Derive::default()
     };
     let file = path.display().to_string();
-    let data = track::read(&text, &file, &reading, &derive)
+    let series = crate::input::data::load(&text, &file, &reading, &derive)
         .map_err(|e| CliError::Invalid(e.to_string()))?;
-    data.for_scene(scene)
-        .check_magnitudes()
+    let m = match &series {
+        Series::Velocities(m) | Series::Track(m, _) => m,
+    };
+    m.check_magnitudes()
         .map_err(|e| CliError::Invalid(format!("{file}: {e}")))?;
-    Ok(Some(data))
+    Ok(Some(series))
 }
 
 #[derive(Serialize)]

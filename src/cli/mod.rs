@@ -140,10 +140,9 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
 /// measured series.
 pub fn lab(scene_args: &SceneArgs, data: &DataArgs) -> Result<Lab, CliError> {
     let (preset, scene, span) = scene_args.resolve()?;
-    let mut lab = match fit::read(&scene, data)? {
-        // A position track's v_t follows the scene shown (r = kR), overrides and edits
-        // in the app included.
-        Some(data) => Lab::with_data(preset, Some(data), scene, span),
+    let mut lab = match fit::load_series(data)? {
+        // The lab derives a position track's v_t with the r of each scene it shows.
+        Some(series) => Lab::with_data(preset, scene, span, Some(series)),
         None => Lab::new(preset, scene, span),
     };
     // `--t-end` is explicit: it holds through parameter changes in the app.

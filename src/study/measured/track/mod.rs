@@ -17,8 +17,7 @@ mod impacts;
 
 use serde::Serialize;
 
-use crate::input::data::{self, DataError, Measured, Reading, Series};
-use crate::input::tracks::Track;
+use super::series::{Measured, Track};
 use crate::physics::scene::Scene;
 use crate::study::fit::{self, FitError, Free, ModelFit};
 
@@ -302,99 +301,6 @@ pub fn derive(
         mark_radius: spin.as_ref().map(|s| s.3),
     };
     Ok((m, found))
-}
-
-/// A data file read and, for a position track, its velocities derived.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Loaded {
-    pub measured: Measured,
-    /// What the derivation found; `None` for a velocity file.
-    pub found: Option<Found>,
-}
-
-/// A data file as read, before a scene is chosen. A velocity file's series holds for
-/// every scene; a position track's `v_t = (dθ/dt) r` needs the contact radius r = kR
-/// of the scene under study, so it is kept per metre of r and [`Data::for_scene`]
-/// scales it (the derivation is linear in r: the same bits as deriving with r).
-#[derive(Clone, Debug, PartialEq)]
-pub enum Data {
-    Velocities(Measured),
-    Track {
-        /// The derived series with r = 1 m: `v_t` and its σ are the spin rate, rad/s.
-        per_metre: Measured,
-        found: Found,
-    },
-}
-
-impl Data {
-    /// The measured series for `scene`: a track's v_t from this scene's r = kR.
-    pub fn for_scene(&self, scene: &Scene) -> Measured {
-        match self {
-            Data::Velocities(m) => m.clone(),
-            Data::Track { per_metre, .. } => {
-                let r = scene.k() * scene.radius;
-                let mut m = per_metre.clone();
-                m.v_t.iter_mut().for_each(|v| *v *= r);
-                if let Some(s) = &mut m.v_t_sigma {
-                    s.iter_mut().for_each(|v| *v *= r);
-                }
-                m
-            }
-        }
-    }
-
-    /// True when [`Data::for_scene`] depends on the scene (a track with a rim mark).
-    pub fn follows_scene(&self) -> bool {
-        matches!(self, Data::Track { per_metre, .. } if per_metre.v_t_sigma.is_some())
-    }
-
-    /// What the derivation found in a position track; `None` for a velocity file.
-    pub fn found(&self) -> Option<&Found> {
-        match self {
-            Data::Velocities(_) => None,
-            Data::Track { found, .. } => Some(found),
-        }
-    }
-}
-
-/// Reads a velocity file or a position track (`input::data::read`) and derives a
-/// track's velocities per metre of contact radius.
-pub fn read(
-    text: &str,
-    file: &str,
-    reading: &Reading,
-    derive_opts: &Derive,
-) -> Result<Data, DataError> {
-    match data::read(text, file, reading)? {
-        Series::Velocities(measured) => Ok(Data::Velocities(measured)),
-        Series::Positions(track) => {
-            let opts = Derive {
-                impact_at: reading.impact_at.or(derive_opts.impact_at),
-                ..*derive_opts
-            };
-            let (per_metre, found) = derive(&track, 1.0, &opts).map_err(|e| DataError {
-                file: file.to_string(),
-                what: e.0,
-            })?;
-            Ok(Data::Track { per_metre, found })
-        }
-    }
-}
-
-/// Reads a velocity file or a position track and derives the velocities of a track
-/// with the scene's contact radius r = kR.
-pub fn load(
-    text: &str,
-    file: &str,
-    reading: &Reading,
-    scene: &Scene,
-    derive_opts: &Derive,
-) -> Result<Loaded, DataError> {
-    let data = read(text, file, reading, derive_opts)?;
-    Ok(Loaded {
-        measured: data.for_scene(scene),
-        found: data.found().cloned(),
-    })
 }
 
 /// Both model fits of a tracked series, side by side.
