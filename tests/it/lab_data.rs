@@ -209,7 +209,7 @@ fn screen(preset: &str, values: SceneSpec, file: Option<&str>, keys: &str) -> St
         values,
     };
     let data = DataArgs {
-        data: file.map(Into::into),
+        data: file.into_iter().map(Into::into).collect(),
         ..DataArgs::default()
     };
     let args = RenderArgs {
