@@ -22,7 +22,7 @@ fn app(preset: &str, values: SceneSpec, data: Option<&str>, keys_: &str) -> App 
         values,
     };
     let data = DataArgs {
-        data: data.map(Into::into),
+        data: data.into_iter().map(Into::into).collect(),
         ..DataArgs::default()
     };
     let mut a = App::new(
