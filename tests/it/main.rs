@@ -7,6 +7,7 @@ mod common;
 mod cli;
 mod closed_forms;
 mod fit;
+mod forces;
 mod fuzz;
 mod lab_data;
 mod long_runs;
