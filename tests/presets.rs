@@ -238,10 +238,7 @@ fn paper_presets_carry_the_measured_series() {
         // failure, never a silent skip.
         let csv = data.join(format!("gs-b{width}cm.csv"));
         let text = std::fs::read_to_string(&csv).unwrap_or_else(|e| {
-            panic!(
-                "{}: {e}; the paper's data must be in data/",
-                csv.display()
-            )
+            panic!("{}: {e}; the paper's data must be in data/", csv.display())
         });
         let rows: Vec<Vec<f64>> = text
             .lines()
