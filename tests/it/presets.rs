@@ -2,8 +2,6 @@
 //! numbers are checked against the closed forms and conservation laws, so a recorded
 //! value is never trusted just because the program printed it.
 
-mod common;
-
 use groovelab::cli::{Format, SceneArgs, SimulateArgs, simulate};
 use groovelab::input::preset::Preset;
 use groovelab::physics::closed_form as cf;

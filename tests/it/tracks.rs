@@ -267,7 +267,7 @@ fn velocity_files_read_as_before() {
 }
 
 /// The example "video" in docs/: regenerate with `GROOVELAB_REGENERATE=1 cargo test
-/// --test tracks example`.
+/// --test it tracks::example_file`.
 fn example_text() -> String {
     let s = scene("paper-b4.9");
     video::write(&video::track(&s, &example_video()), Format::TrackerMulti)
