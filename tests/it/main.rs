@@ -9,6 +9,7 @@ mod closed_forms;
 mod fit;
 mod fuzz;
 mod lab_data;
+mod lab_jobs;
 mod long_runs;
 mod methods;
 mod motion;
