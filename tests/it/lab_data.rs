@@ -12,7 +12,7 @@ const EXAMPLE: &str = "docs/video/paper-b4.9-tracker.txt";
 
 fn data(extra: impl FnOnce(&mut DataArgs)) -> DataArgs {
     let mut d = DataArgs {
-        data: Some(EXAMPLE.into()),
+        data: vec![EXAMPLE.into()],
         ..DataArgs::default()
     };
     extra(&mut d);
@@ -209,7 +209,7 @@ fn screen(preset: &str, values: SceneSpec, file: Option<&str>, keys: &str) -> St
         values,
     };
     let data = DataArgs {
-        data: file.map(Into::into),
+        data: file.into_iter().map(Into::into).collect(),
         ..DataArgs::default()
     };
     let args = RenderArgs {
