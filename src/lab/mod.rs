@@ -47,6 +47,9 @@ pub enum SaveError {
     Io(String),
 }
 
+/// The line fit's window, s: from, to (`None`: the sliding phase's end).
+pub type FitWindow = (Option<f64>, Option<f64>);
+
 /// A scene pinned for comparison (A/B): drawn dimmed beside the current one.
 #[derive(Clone, Debug)]
 pub struct Pinned {
@@ -82,7 +85,7 @@ pub struct Lab {
     /// The measured series in this scene (`measured::for_scene`).
     data: Option<InScene>,
     /// Line-fit window (None: the sliding phase).
-    pub fit_window: (Option<f64>, Option<f64>),
+    pub fit_window: FitWindow,
     want_methods: bool,
     want_fits: bool,
     overlay_choice: Option<(Method, u8)>,
@@ -92,7 +95,7 @@ pub struct Lab {
     methods: Job<Generation, Vec<Row>>,
     /// `None` only for a run that was cancelled before it finished.
     overlay: Job<(Generation, Method, u8), Option<Overlay>>,
-    fits: Job<(Generation, (Option<f64>, Option<f64>)), Result<Fits, FitError>>,
+    fits: Job<(Generation, FitWindow), Result<Fits, FitError>>,
     /// The model fitted to a position track's positions (none for a velocity file).
     position_fit: Job<Generation, Result<ModelFit, FitError>>,
     /// A file the app is writing (run CSV, chart SVG): the status message, or why not;
