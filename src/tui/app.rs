@@ -106,10 +106,7 @@ impl App {
             Ok(()) => {
                 let sol = &self.lab.solution;
                 self.t = self.t.clamp(sol.t_start, sol.t_end);
-                let label = ROWS
-                    .iter()
-                    .find(|p| p.key == key)
-                    .map_or(key.name(), |p| p.label);
+                let label = key.param().label;
                 let value = if self.hide_b && key == Key::Width {
                     "(hidden)".to_string()
                 } else {
