@@ -263,7 +263,14 @@ fn pinned_line(app: &App, width: u16, theme: &Theme) -> Option<String> {
     } else {
         changes
             .iter()
-            .map(|(name, was, now)| format!("{name} {was} → {now}"))
+            .map(|(name, was, now)| {
+                // b hidden (a prediction from the picture): changed, but not to what.
+                if app.hide_b && *name == "b" {
+                    "b changed".to_string()
+                } else {
+                    format!("{name} {was} → {now}")
+                }
+            })
             .collect::<Vec<_>>()
             .join(", ")
     };
