@@ -263,9 +263,10 @@ fn pinned_line(app: &App, width: u16, theme: &Theme) -> Option<String> {
     } else {
         changes
             .iter()
-            .map(|(name, was, now)| {
+            .map(|(label, was, now)| {
+                let name = label.replace("mu", theme.glyphs.mu);
                 // b hidden (a prediction from the picture): changed, but not to what.
-                if app.hide_b && *name == "b" {
+                if app.hide_b && name == "b" {
                     "b changed".to_string()
                 } else {
                     format!("{name} {was} → {now}")
