@@ -5,6 +5,10 @@
 use super::Engine;
 use crate::physics::model::Phase;
 
+/// A push below this fraction of the forces on the pair is no push: it is what
+/// rounding leaves of two equal accelerations (~1e-16), far below anything physical.
+const ZERO_PUSH: f64 = 1e-9;
+
 impl Engine {
     /// Free accelerations `(dv/dt, du/dt)` of ball `i` in `phase`, and the mass it
     /// shows to a push through its centre.
@@ -21,9 +25,9 @@ impl Engine {
         }
     }
 
-    /// Accelerations of both balls in `phase`, and the push between them (0 when
-    /// nothing presses them together or they do not touch).
-    fn motion(&self, phase: [Phase; 2], touching: bool) -> ([(f64, f64); 2], f64) {
+    /// Accelerations of both balls in `phase`, the push between them (0 when nothing
+    /// presses them together or they do not touch), and whether they move as one.
+    fn motion(&self, phase: [Phase; 2], touching: bool) -> ([(f64, f64); 2], f64, bool) {
         let motion = [self.free_motion(0, phase[0]), self.free_motion(1, phase[1])];
         let free = motion.map(|(accel, _)| accel);
         let pressed = if touching {
@@ -32,13 +36,13 @@ impl Engine {
             None
         };
         match pressed {
-            None => (free, 0.0),
+            None => (free, 0.0, false),
             Some((shared, push)) => {
                 let accel = std::array::from_fn(|i| match phase[i] {
                     Phase::Sliding { .. } => (shared, free[i].1),
                     Phase::Rolling | Phase::Resting => (shared, shared),
                 });
-                (accel, push)
+                (accel, push, true)
             }
         }
     }
@@ -50,7 +54,7 @@ impl Engine {
     pub(super) fn settle(&mut self) {
         let touching = self.gap == 0.0 && self.state[0].v == self.state[1].v;
         let mut phase = self.phase;
-        let (mut accel, mut push) = self.motion(phase, touching);
+        let (mut accel, mut push, mut together) = self.motion(phase, touching);
         // A rolling ball whose static friction cannot hold the push starts sliding, in
         // the direction that stays consistent (its slip must grow in the sign assumed).
         // If neither direction is consistent the ball sticks (a Painlevé-type corner
@@ -68,10 +72,10 @@ impl Engine {
             for sign in [outward, -outward] {
                 let mut trial = phase;
                 trial[i] = Phase::Sliding { sign };
-                let (a, p) = self.motion(trial, touching);
+                let (a, p, joined) = self.motion(trial, touching);
                 let slip_rate = a[i].0 - a[i].1;
                 if f64::from(sign) * slip_rate > 0.0 {
-                    (phase, accel, push) = (trial, a, p);
+                    (phase, accel, push, together) = (trial, a, p, joined);
                     break;
                 }
             }
@@ -88,6 +92,7 @@ impl Engine {
         self.phase = phase;
         self.accel = accel;
         self.push = push;
+        self.together = together;
     }
 
     /// Touching balls moving as one: their shared acceleration and the push between
@@ -117,6 +122,14 @@ impl Engine {
             (false, _) => force(0, dir) - motion[0].1 * shared,
             (true, false) => motion[1].1 * shared - force(1, dir),
         };
-        (push > 0.0).then_some((shared, push))
+        // Balls that would move alike on their own (both rolling, equal decelerations)
+        // need no push; the difference above is then rounding, of either sign. Decide it
+        // against the forces at play: within the tolerance they move as one, unpressed.
+        let scale = force(0, dir).abs() + force(1, dir).abs();
+        if push.abs() <= ZERO_PUSH * scale {
+            Some((shared, 0.0))
+        } else {
+            (push > 0.0).then_some((shared, push))
+        }
     }
 }
