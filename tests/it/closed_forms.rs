@@ -8,7 +8,7 @@
 //!   accumulate at `2 t_t / (1 − e)`, and the pair then presses together until the
 //!   spin is gone at `t_r = 2 v0 / (5 k μ g)` (our derivation, same model).
 
-mod common;
+use crate::common;
 
 use groovelab::input::params::{Key, SceneSpec};
 use groovelab::physics::closed_form as cf;

@@ -2,8 +2,6 @@
 //! numbers are checked against the closed forms and conservation laws, so a recorded
 //! value is never trusted just because the program printed it.
 
-mod common;
-
 use groovelab::cli::{Format, SceneArgs, SimulateArgs, simulate};
 use groovelab::input::preset::Preset;
 use groovelab::physics::closed_form as cf;
@@ -238,10 +236,7 @@ fn paper_presets_carry_the_measured_series() {
         // failure, never a silent skip.
         let csv = data.join(format!("gs-b{width}cm.csv"));
         let text = std::fs::read_to_string(&csv).unwrap_or_else(|e| {
-            panic!(
-                "{}: {e}; the paper's data must be in data/",
-                csv.display()
-            )
+            panic!("{}: {e}; the paper's data must be in data/", csv.display())
         });
         let rows: Vec<Vec<f64>> = text
             .lines()

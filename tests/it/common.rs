@@ -35,7 +35,7 @@ macro_rules! assert_close {
     ($a:expr, $b:expr, $rel:expr, $scale:expr, $($msg:tt)*) => {{
         let (a, b) = ($a, $b);
         assert!(
-            common::close(a, b, $rel, $scale),
+            $crate::common::close(a, b, $rel, $scale),
             "{} vs {} (rel {:e}): {}",
             a,
             b,

@@ -1,7 +1,7 @@
 //! Invariants of the exact engine over the whole valid parameter space (proptest), and
 //! the edge cases by name: b = 0, b → 2R, μ_k = 0, v0 = 0, e = 0, tiny and huge scales.
 
-mod common;
+use crate::common;
 
 use groovelab::physics::derived::{Derived, Regime};
 use groovelab::physics::engine::{MAX_EVENTS, solve};

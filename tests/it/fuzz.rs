@@ -10,7 +10,7 @@
 //! - no panic, and each case within a time limit (a watchdog thread).
 //!
 //! A short run is part of `cargo test`. The long run:
-//! `GROOVELAB_FUZZ_CASES=100000 cargo test --release --test fuzz -- --nocapture`
+//! `GROOVELAB_FUZZ_CASES=100000 cargo test --release --test it fuzz:: -- --nocapture`
 //! (`GROOVELAB_FUZZ_SEED=N` picks another sequence; the default is fixed, so a failure
 //! in CI reproduces).
 
@@ -129,8 +129,9 @@ fn fixtures() -> &'static Fixtures {
         std::fs::create_dir_all(dir.join("a-directory")).unwrap();
         std::fs::create_dir_all(dir.join("user-presets")).unwrap();
         // The app's `s` key (render --keys) saves a preset: into this folder, never the
-        // user's. Every test here calls `fixtures()` first, so nothing reads the
-        // environment while it is set.
+        // user's. Set once per process; the other tests of this binary read the
+        // environment only through `std` (which serialises it with this write) and load
+        // built-in presets or explicit paths, which the variable does not change.
         unsafe { std::env::set_var("GROOVELAB_PRESETS", dir.join("user-presets")) };
         std::fs::write(dir.join("empty.csv"), b"").unwrap();
         std::fs::write(dir.join("good.csv"), good_csv()).unwrap();
@@ -980,6 +981,9 @@ impl Verdict {
     }
 }
 
+/// The name of the thread a case runs on (its panics are recorded, not printed).
+const CASE_THREAD: &str = "fuzz-case";
+
 fn panic_message() -> &'static Mutex<String> {
     static M: OnceLock<Mutex<String>> = OnceLock::new();
     M.get_or_init(|| Mutex::new(String::new()))
@@ -1009,6 +1013,7 @@ fn run(case: &Case) -> Result<Result<Exit, String>, Duration> {
     let args = case.args.clone();
     let (tx, rx) = mpsc::channel();
     std::thread::Builder::new()
+        .name(CASE_THREAD.into())
         .stack_size(64 << 20)
         .spawn(move || {
             let result = catch_unwind(AssertUnwindSafe(|| main_with(&args)));
@@ -1328,8 +1333,14 @@ fn report(tally: &Tally, elapsed: Duration) -> String {
 #[test]
 fn fuzz_the_command_line() {
     fixtures();
-    std::panic::set_hook(Box::new(|info| {
+    // The hook is the whole test binary's: other tests' panics still reach the
+    // previous hook (and so their failure output); a case's panic is only recorded.
+    let previous = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
         *panic_message().lock().unwrap() = info.to_string();
+        if std::thread::current().name() != Some(CASE_THREAD) {
+            previous(info);
+        }
     }));
     let n = cases_wanted();
     let started = Instant::now();

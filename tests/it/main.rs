@@ -1,0 +1,24 @@
+//! All integration tests in one binary (one link of the crate instead of one per file):
+//! one module per area, shared helpers in `common`.
+
+#[macro_use]
+mod common;
+
+mod cli;
+mod closed_forms;
+mod fit;
+mod fuzz;
+mod lab_data;
+mod long_runs;
+mod methods;
+mod motion;
+mod numbers;
+mod params;
+mod presets;
+mod pressed_contact;
+mod properties;
+mod reliability;
+mod story;
+mod sweep;
+mod tracks;
+mod tui;
