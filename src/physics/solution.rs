@@ -128,6 +128,9 @@ pub struct Segment {
     pub phase: [Phase; 2],
     /// Compressive force between touching balls, N (0 when apart).
     pub contact_force: f64,
+    /// Share of each ball's rolling resistance that acts, 0..=1: 1, except for a pushed
+    /// rolling ball at the friction limit (physics.md, "Rolling resistance").
+    pub rolling_share: [f64; 2],
     /// Spin angle of each ball at `t0`, rad (0 at `t_start`).
     pub angle0: [f64; 2],
     pub ledger0: Ledger,
@@ -357,7 +360,8 @@ pub fn segment_losses(groove: &Groove, masses: [f64; 2], seg: &Segment, tau: f64
                 // internal to the pair), over the path the ball really rolls.
                 if groove.rolling_resistance > 0.0 {
                     let path = (st.v * tau + 0.5 * a * tau * tau).abs();
-                    ledger.rolling_resistance += groove.rolling_resistance_force(mass) * path;
+                    ledger.rolling_resistance +=
+                        seg.rolling_share[i] * groove.rolling_resistance_force(mass) * path;
                 }
             }
             Phase::Resting => {}

@@ -9,6 +9,9 @@ use crate::physics::model::Phase;
 /// rounding leaves of two equal accelerations (~1e-16), far below anything physical.
 const ZERO_PUSH: f64 = 1e-9;
 
+/// `(dv/dt, du/dt)` of both balls.
+type Accelerations = [(f64, f64); 2];
+
 impl Engine {
     /// Free accelerations `(dv/dt, du/dt)` of ball `i` in `phase`, and the mass it
     /// shows to a push through its centre.
@@ -55,10 +58,12 @@ impl Engine {
         let touching = self.gap == 0.0 && self.state[0].v == self.state[1].v;
         let mut phase = self.phase;
         let (mut accel, mut push, mut together) = self.motion(phase, touching);
+        let mut share = [1.0; 2];
         // A rolling ball whose static friction cannot hold the push starts sliding, in
         // the direction that stays consistent (its slip must grow in the sign assumed).
-        // If neither direction is consistent the ball sticks (a Painlevé-type corner
-        // that strong rolling resistance with weak friction can reach).
+        // If neither direction is consistent (a Painlevé-type corner: rolling
+        // resistance acts only at s = 0), it rolls on with the rail friction at its
+        // limit and only the share of rolling resistance that keeps it rolling.
         for i in 0..2 {
             let rolling = !matches!(phase[i], Phase::Sliding { .. });
             if !rolling
@@ -69,6 +74,7 @@ impl Engine {
                 continue;
             }
             let outward: i8 = if i == 0 { -1 } else { 1 };
+            let mut slides = false;
             for sign in [outward, -outward] {
                 let mut trial = phase;
                 trial[i] = Phase::Sliding { sign };
@@ -76,8 +82,13 @@ impl Engine {
                 let slip_rate = a[i].0 - a[i].1;
                 if f64::from(sign) * slip_rate > 0.0 {
                     (phase, accel, push, together) = (trial, a, p, joined);
+                    slides = true;
                     break;
                 }
+            }
+            if !slides && let Some((a, p, lambda)) = self.saturated_rolling(i, phase) {
+                (accel, push) = (a, p);
+                share[i] = lambda;
             }
         }
         for i in 0..2 {
@@ -93,6 +104,38 @@ impl Engine {
         self.accel = accel;
         self.push = push;
         self.together = together;
+        self.rolling_share = share;
+    }
+
+    /// Ball `i` rolling under a push its rail friction cannot hold, where sliding
+    /// either way is inconsistent too (physics.md, "Rolling resistance"): it keeps
+    /// s = 0 with the rail friction at its limit F, which fixes the push at
+    /// P* = (1 + 5k²/2) F; the other ball's motion under P* fixes the pair's
+    /// acceleration, and that the share λ of rolling resistance. `None` where this does
+    /// not apply (the other ball at rest, no rolling resistance, λ outside 0..=1).
+    fn saturated_rolling(&self, i: usize, phase: [Phase; 2]) -> Option<(Accelerations, f64, f64)> {
+        let j = 1 - i;
+        // The push acts on ball i along `dir` (outward), on ball j against it.
+        let dir = if i == 0 { -1.0 } else { 1.0 };
+        let k2 = self.groove.k * self.groove.k;
+        let limit = self.groove.friction_limit(self.mass[i]);
+        let push = (1.0 + 2.5 * k2) * limit;
+        let other_rests = !matches!(phase[j], Phase::Sliding { .. }) && self.state[j].v == 0.0;
+        let resistance = self.groove.rolling_acceleration(self.state[i].v);
+        if other_rests || resistance == 0.0 {
+            return None;
+        }
+        let ((a_j, du_j), m_j) = self.free_motion(j, phase[j]);
+        let a = a_j - dir * push / m_j;
+        let lambda = (a - dir * 2.5 * k2 * limit / self.mass[i]) / resistance;
+        if !(-1e-9..=1.0 + 1e-9).contains(&lambda) {
+            return None;
+        }
+        let mut accel = [(a, a); 2];
+        if matches!(phase[j], Phase::Sliding { .. }) {
+            accel[j].1 = du_j;
+        }
+        Some((accel, push, lambda.clamp(0.0, 1.0)))
     }
 
     /// Touching balls moving as one: their shared acceleration and the push between

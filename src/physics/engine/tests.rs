@@ -279,3 +279,96 @@ fn the_summed_tail_does_not_depend_on_the_budget() {
         }
     }
 }
+
+/// Rail friction (both edges) on a rolling ball `i` of segment `seg`, from its
+/// equation of motion `m dv/dt = d P + f + λ m ρ` (physics.md, "Rolling resistance").
+fn rail_friction(sc: &Scene, seg: &crate::physics::solution::Segment, i: usize) -> f64 {
+    let m = if i == 0 { sc.left.mass } else { sc.right.mass };
+    let dir = if i == 0 { -1.0 } else { 1.0 };
+    let rho = sc.groove().rolling_acceleration(seg.start[i].v);
+    m * (seg.accel[i].0 - seg.rolling_share[i] * rho) - dir * seg.contact_force
+}
+
+/// Issue 18, item 2, the hand-computed case of physics.md: from 3.873 s the rolling
+/// right ball would need 0.0726 N of rail friction against μN = 0.0675 N, and sliding
+/// is inconsistent too. It rolls on with the friction at μN, the push at
+/// P* = (1 + 5k²/2) μ m g/k and a share λ = 0.888319 of its rolling resistance.
+#[test]
+fn a_pushed_rolling_ball_at_the_friction_limit_keeps_rolling_with_part_of_its_resistance() {
+    let sc = scene(
+        0.047509,
+        0.013555,
+        0.0,
+        0.046873,
+        (0.218396, 0.255596),
+        (1.508694, 0.073303),
+    );
+    let sol = solve(
+        &sc,
+        &Span {
+            t_start: -0.2,
+            t_end: Some(20.0),
+        },
+    );
+    let rolls = sol
+        .events
+        .iter()
+        .find(|e| e.kind == EventKind::Rolling && e.ball == Who::Right)
+        .expect("the right ball rolls again");
+    assert_relative_eq!(rolls.t, 3.873, max_relative = 1e-3);
+    let seg = sol.segment_at(rolls.t);
+    assert_eq!(seg.phase[1], Phase::Rolling);
+    // By hand (physics.md): k = 0.503835, F_R = 0.067458 N, P* = 0.110269 N,
+    // a = (F_L − P*)/m_L = −0.240978 m/s², λ = 0.888319.
+    assert_relative_eq!(sc.k(), 0.503835, max_relative = 1e-6);
+    assert_relative_eq!(seg.contact_force, 0.110269, max_relative = 1e-5);
+    assert_relative_eq!(seg.accel[0].0, -0.240978, max_relative = 1e-5);
+    assert_relative_eq!(seg.accel[1].0, -0.240978, max_relative = 1e-5);
+    assert_relative_eq!(seg.rolling_share[1], 0.888319, max_relative = 1e-5);
+    let limit = sc.groove().friction_limit(sc.right.mass);
+    assert_relative_eq!(limit, 0.067458, max_relative = 1e-5);
+    assert_relative_eq!(
+        rail_friction(&sc, seg, 1).abs(),
+        limit,
+        max_relative = 1e-12
+    );
+    // Never above μN anywhere, and the books still balance.
+    for seg in &sol.segments {
+        for i in 0..2 {
+            if seg.phase[i] == Phase::Rolling && seg.contact_force > 0.0 {
+                let m = if i == 0 { sc.left.mass } else { sc.right.mass };
+                let limit = sc.groove().friction_limit(m);
+                assert!(
+                    rail_friction(&sc, seg, i).abs() <= limit * (1.0 + 1e-9),
+                    "{seg:?}"
+                );
+            }
+        }
+    }
+    let e0 = sol.energy_at(-0.2).total();
+    for t in [3.0, 4.0, 5.0, 5.9, 8.0, 20.0] {
+        assert_relative_eq!(sol.energy_at(t).total(), e0, max_relative = 1e-12);
+    }
+}
+
+/// Issue 18, item 2: where the corner starts (physics.md). After an e = 0 impact the
+/// pushed ball rolls first only if it is the heavier (r = m_pushed/m_pusher > 1), and
+/// it then reaches the friction limit when c_rr > (μ_k/k)((2 + 5k²) r − (2 − 5k²))/2:
+/// for k = 0.5, r = 1.05 that is 1.33125 μ_k/k. Just above: saturated; just below: not.
+#[test]
+fn the_friction_limit_is_reached_where_the_derivation_says() {
+    let width = 2.0 * 0.0275 * 0.75f64.sqrt(); // k = 0.5, 5k² = 1.25
+    let (mu, k, r) = (0.2, 0.5, 1.05);
+    let threshold = ((2.0 + 1.25) * r - (2.0 - 1.25)) / 2.0;
+    assert_relative_eq!(threshold, 1.33125, max_relative = 1e-12);
+    for (c, corner) in [(1.01 * threshold, true), (0.99 * threshold, false)] {
+        let sc = scene(width, mu, 0.0, c * mu / k, (0.5, 0.5 * r), (1.5, 0.1));
+        assert_relative_eq!(sc.k(), k, max_relative = 1e-12);
+        let sol = solve(&sc, &span(-0.2));
+        let saturated = sol
+            .segments
+            .iter()
+            .any(|s| s.rolling_share.iter().any(|&l| l < 1.0));
+        assert_eq!(saturated, corner, "c_rr = {c} μ/k: {:?}", sol.events);
+    }
+}

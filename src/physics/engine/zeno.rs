@@ -37,7 +37,7 @@ pub(super) struct ImpactRecord {
 }
 
 impl Engine {
-    fn kinetic(&self, state: &[BallState; 2]) -> f64 {
+    pub(super) fn kinetic(&self, state: &[BallState; 2]) -> f64 {
         (0..2)
             .map(|i| {
                 let (t, r) = self.groove.energy(self.mass[i], state[i]);
@@ -75,7 +75,9 @@ impl Engine {
         if !(negligible || self.geometric_cycles >= self.cycle_budget) {
             return;
         }
-        self.sum_tail(self.geometric_cycles, !negligible);
+        // The last geometric_cycles + 2 cycles are geometric; the first impact of the
+        // history has no cycle before it.
+        self.sum_tail(self.geometric_cycles.min(n - 2), !negligible);
     }
 
     /// Sums the rest of a geometric series of impacts from its last `m` cycles and
@@ -210,6 +212,7 @@ impl Engine {
             EventKind::ZenoContact
         };
         self.history.clear();
+        self.geometric_cycles = 0;
         // The impact just recorded is the last one resolved; its event already exists.
         // Whether the pair now presses is recorded by the caller, after this event.
         self.settle();
