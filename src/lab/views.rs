@@ -5,7 +5,10 @@
 use std::cell::RefCell;
 use std::rc::Rc;
 
+use crate::input::params::{Key, PARAMS};
+use crate::input::units::show;
 use crate::physics::derived::{Derived, Regime};
+use crate::physics::scene::Span;
 use crate::physics::solution::{EnergySplit, Snapshot, Solution};
 use crate::study::measured::Measured;
 
@@ -104,37 +107,26 @@ impl Lab {
         k
     }
 
-    /// The pinned parameters that differ from the current ones: `(label, was, now)`,
-    /// in the units of the parameter panel.
+    /// The pinned parameters that differ from the current ones: `(label, was, now)`
+    /// with the table's label and unit: every value of the scene and the span's start
+    /// (the shown end follows the runs).
     pub fn pinned_changes(&self) -> Vec<(&'static str, String, String)> {
         let Some(p) = &self.pinned else {
             return Vec::new();
         };
-        let (a, b) = (&p.scene, &self.scene);
-        let rows: [(&'static str, f64, f64, crate::input::units::Dimension); 11] = {
-            use crate::input::units::Dimension as D;
-            [
-                ("R", a.radius, b.radius, D::Length),
-                ("b", a.width, b.width, D::Length),
-                ("m left", a.left.mass, b.left.mass, D::Mass),
-                ("m right", a.right.mass, b.right.mass, D::Mass),
-                ("μ_k", a.mu, b.mu, D::Ratio),
-                ("v0 left", a.left.v0, b.left.v0, D::Speed),
-                ("v0 right", a.right.v0, b.right.v0, D::Speed),
-                ("e", a.restitution, b.restitution, D::Ratio),
-                ("c_rr", a.rolling_resistance, b.rolling_resistance, D::Ratio),
-                ("g", a.g, b.g, D::Acceleration),
-                ("t0", p.solution.t_start, self.solution.t_start, D::Time),
-            ]
+        let was_span = Span {
+            t_start: p.solution.t_start,
+            t_end: Some(p.solution.t_end),
         };
-        rows.into_iter()
-            .filter(|(_, x, y, _)| (x - y).abs() > 1e-12 * x.abs().max(y.abs()))
-            .map(|(name, x, y, dim)| {
-                (
-                    name,
-                    crate::input::units::show(x, dim).to_string(),
-                    crate::input::units::show(y, dim).to_string(),
-                )
+        PARAMS
+            .iter()
+            .filter(|row| row.is_own() && row.replaces.is_none() && row.key != Key::TEnd)
+            .filter_map(|row| {
+                let x = (row.get)(&p.scene, &was_span)?;
+                let y = (row.get)(&self.scene, &self.span)?;
+                let differ = (x - y).abs() > 1e-12 * x.abs().max(y.abs());
+                let shown = |v| show(v, row.dim).to_string();
+                differ.then(|| (row.label, shown(x), shown(y)))
             })
             .collect()
     }
@@ -191,15 +183,18 @@ pub(super) fn extent(sol: &Solution, radius: f64) -> (f64, f64) {
 }
 
 /// RMS residuals of the left ball's v_cm and v_t against `m` (the frame that straddles
-/// the impact left out).
-pub(super) fn data_rms(sol: &Solution, m: &Measured) -> (f64, f64) {
-    let (mut sc, mut st, mut n) = (0.0, 0.0, 0usize);
+/// the impact left out; a v_t that was not measured left out, `None` if none was).
+pub(super) fn data_rms(sol: &Solution, m: &Measured) -> (f64, Option<f64>) {
+    let (mut sc, mut st, mut n, mut nt) = (0.0, 0.0, 0usize, 0usize);
     for i in (0..m.t.len()).filter(|&i| m.t[i].abs() >= 0.005) {
         let s = sol.at(m.t[i]);
         sc += (s.left.v - m.v_cm[i]).powi(2);
-        st += (s.left.u - m.v_t[i]).powi(2);
         n += 1;
+        if m.v_t[i].is_finite() {
+            st += (s.left.u - m.v_t[i]).powi(2);
+            nt += 1;
+        }
     }
-    let n = n.max(1) as f64;
-    ((sc / n).sqrt(), (st / n).sqrt())
+    let rms = |sum: f64, n: usize| (sum / n.max(1) as f64).sqrt();
+    (rms(sc, n), (nt > 0).then(|| rms(st, nt)))
 }
