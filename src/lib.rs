@@ -3,7 +3,8 @@
 //! Layers, each using only those above it: `physics` (the model and the exact engine,
 //! no flags, no I/O) → `methods` (time-stepping methods) → `study` (compare, fit,
 //! sweep, figures) → `lab` (one scene under study with its cached analyses) → the
-//! edges: `input` (text to SI), `output` (the one atomic file writer), `cli` and `tui`.
+//! edges: `input` (text to SI), `output` (the one atomic file writer), `signals` (the one stop mechanism), `cli` and
+//! `tui`.
 
 pub mod cli;
 pub mod input;
@@ -11,5 +12,6 @@ pub mod lab;
 pub mod methods;
 pub mod output;
 pub mod physics;
+pub mod signals;
 pub mod study;
 pub mod tui;

@@ -3,7 +3,7 @@
 //! over it only when complete and not interrupted. The target must be a regular file
 //! or a new path (never a symlink, FIFO, device or directory); a replaced file keeps
 //! its mode (and its owner and group where the user may set them); the temporary
-//! file is removed on every error and on Ctrl-C, SIGTERM or SIGHUP.
+//! file is removed on every error and on a stop signal (see `signals`).
 //!
 //! The rule for interruptions is one thing: if a stop signal arrives before the
 //! output is committed (renamed into place, or handed to stdout), the run exits 130
@@ -13,7 +13,6 @@ use std::fs::{File, Metadata, OpenOptions};
 use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::{Arc, Once, OnceLock};
 
 use crate::input::file::kind;
 
@@ -26,43 +25,6 @@ pub enum OutputError {
     Io { path: String, reason: String },
     #[error("interrupted: nothing was written")]
     Interrupted,
-}
-
-fn stop_arc() -> &'static Arc<AtomicBool> {
-    static STOP: OnceLock<Arc<AtomicBool>> = OnceLock::new();
-    STOP.get_or_init(|| Arc::new(AtomicBool::new(false)))
-}
-
-/// The process-wide stop flag that [`watch_signals`] sets.
-pub fn stop_flag() -> &'static AtomicBool {
-    stop_arc()
-}
-
-/// Whether a stop signal has arrived since [`watch_signals`].
-pub fn interrupted() -> bool {
-    stop_flag().load(Ordering::Relaxed)
-}
-
-/// From now on SIGINT, SIGTERM and SIGHUP set [`stop_flag`] instead of killing the
-/// process, so a long run can stop cleanly and remove its temporary file. Called by
-/// the commands that write (before their slow part, or just before writing); idempotent.
-pub fn watch_signals() {
-    static ONCE: Once = Once::new();
-    ONCE.call_once(|| {
-        #[cfg(unix)]
-        for signal in [
-            signal_hook::consts::SIGINT,
-            signal_hook::consts::SIGTERM,
-            signal_hook::consts::SIGHUP,
-        ] {
-            let _ = signal_hook::flag::register(signal, Arc::clone(stop_arc()));
-        }
-        #[cfg(not(unix))]
-        {
-            let _ =
-                signal_hook::flag::register(signal_hook::consts::SIGINT, Arc::clone(stop_arc()));
-        }
-    });
 }
 
 /// The target's metadata if it is an existing regular file, `None` if nothing is
@@ -214,12 +176,12 @@ impl Drop for AtomicFile {
 
 /// Writes `bytes` to `path` atomically (see the module): the target is replaced only
 /// by the complete bytes. It changes no signal handling (the app can call it); a
-/// command that calls [`watch_signals`] first gets "a stop signal during the write
-/// leaves nothing" too.
+/// command that calls [`crate::signals::watch`] first gets "a stop signal during the
+/// write leaves nothing" too.
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
     let mut file = AtomicFile::create(path)?;
     file.write_bytes(bytes)?;
-    file.commit(stop_flag())
+    file.commit(crate::signals::stop_flag())
 }
 
 #[cfg(test)]

@@ -160,7 +160,7 @@ pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<St
         None => Ok(text),
         Some(path) => {
             // From here a stop signal removes the temporary file and writes nothing.
-            super::output::watch_signals();
+            crate::signals::watch();
             write_atomically(path, text.as_bytes())?;
             Ok(format!("wrote {}\n", path.display()))
         }

@@ -276,7 +276,7 @@ pub(super) fn compare(scene_args: &SceneArgs, args: &CompareArgs) -> Result<Stri
         None => Ok(text),
         Some(path) => {
             // From here a stop signal removes the temporary file and writes nothing.
-            super::output::watch_signals();
+            crate::signals::watch();
             super::output::write_atomically(path, text.as_bytes())?;
             Ok(format!("wrote {}\n", path.display()))
         }

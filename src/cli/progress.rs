@@ -1,67 +1,64 @@
-//! Long commands on the terminal: a progress line on stderr (only when stderr is a
-//! terminal, so scripts and pipes see nothing) and Ctrl-C as a stop request that the
-//! analysis notices within milliseconds, after which nothing is written (exit 130).
+//! The one progress helper of long commands: a bar (or a counter) on stderr, only
+//! when stderr is a terminal (scripts and pipes see nothing), and the stop request of
+//! a signal (see `signals`) that the analysis notices within milliseconds, after which
+//! nothing is written (exit 130).
 
 use std::io::IsTerminal;
-use std::sync::OnceLock;
 use std::sync::atomic::{AtomicBool, Ordering};
 
 use indicatif::{ProgressBar, ProgressStyle};
 
 use crate::study::Progress;
 
-/// Set by Ctrl-C (SIGINT) while a long command runs.
-static STOP: AtomicBool = AtomicBool::new(false);
-
-/// Arms Ctrl-C for one run: installs the handler once per process and clears the flag.
-pub(crate) fn ctrl_c() -> &'static AtomicBool {
-    static INSTALLED: OnceLock<()> = OnceLock::new();
-    INSTALLED.get_or_init(|| {
-        let _ = ctrlc::set_handler(|| STOP.store(true, Ordering::Relaxed));
-    });
-    STOP.store(false, Ordering::Relaxed);
-    &STOP
-}
-
 /// A command's progress: a bar (or, with no total known, a counter) on stderr, and
-/// the Ctrl-C flag.
-pub(crate) struct Bar {
+/// the stop flag.
+pub(crate) struct Bar<'a> {
     bar: Option<ProgressBar>,
-    stop: &'static AtomicBool,
+    stop: &'a AtomicBool,
 }
 
-impl Bar {
+impl Bar<'static> {
     /// `what` names the unit counted (e.g. "runs"); `show` is false for work that is
-    /// over before a bar would be read.
-    pub(crate) fn new(what: &'static str, show: bool) -> Bar {
+    /// over before a bar would be read. Arms the stop signals for this run.
+    pub(crate) fn new(what: &'static str, show: bool) -> Bar<'static> {
+        Bar::with_stop(what, show, crate::signals::arm())
+    }
+
+    /// A counter for work whose total is not known ahead. Arms the stop signals.
+    pub(crate) fn counter(what: &'static str, show: bool) -> Bar<'static> {
+        let template = format!("{{spinner}} {{pos}} {what}, {{elapsed}}");
+        let stop = crate::signals::arm();
+        Bar::styled(show, ProgressBar::new_spinner(), &template, stop)
+    }
+}
+
+impl<'a> Bar<'a> {
+    /// [`Bar::new`] with the caller's stop flag (the signals left as they are).
+    pub(crate) fn with_stop(what: &'static str, show: bool, stop: &'a AtomicBool) -> Bar<'a> {
+        let template = format!("{{bar:40}} {{pos}}/{{len}} {what}, {{eta}} left");
+        Bar::styled(show, ProgressBar::new(0), &template, stop)
+    }
+
+    fn styled(show: bool, bar: ProgressBar, template: &str, stop: &'a AtomicBool) -> Bar<'a> {
         let bar = (show && std::io::stderr().is_terminal()).then(|| {
-            let bar = ProgressBar::new(0);
-            bar.set_style(
-                ProgressStyle::with_template(&format!(
-                    "{{bar:40}} {{pos}}/{{len}} {what}, {{eta}} left"
-                ))
-                .expect("a valid template"),
-            );
+            bar.set_style(ProgressStyle::with_template(template).expect("a valid template"));
             bar
         });
-        Bar {
-            bar,
-            stop: ctrl_c(),
+        Bar { bar, stop }
+    }
+
+    /// One more unit done (work that counts as it goes, on any thread).
+    pub(crate) fn inc(&self) {
+        if let Some(b) = &self.bar {
+            b.inc(1);
         }
     }
 
-    /// A counter for work whose total is not known ahead.
-    pub(crate) fn counter(what: &'static str, show: bool) -> Bar {
-        let mut b = Bar::new(what, false);
-        b.bar = (show && std::io::stderr().is_terminal()).then(|| {
-            let bar = ProgressBar::new_spinner();
-            bar.set_style(
-                ProgressStyle::with_template(&format!("{{spinner}} {{pos}} {what}, {{elapsed}}"))
-                    .expect("a valid template"),
-            );
-            bar
-        });
-        b
+    /// The total, when it is known before the work.
+    pub(crate) fn set_total(&self, total: u64) {
+        if let Some(b) = &self.bar {
+            b.set_length(total);
+        }
     }
 
     pub(crate) fn finish(&self) {
@@ -71,7 +68,7 @@ impl Bar {
     }
 }
 
-impl Progress for Bar {
+impl Progress for Bar<'_> {
     fn tick(&self, done: u64, total: u64) {
         if let Some(b) = &self.bar {
             if total > 0 && b.length() != Some(total) {

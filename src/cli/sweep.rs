@@ -5,7 +5,8 @@
 use std::io::{IsTerminal, Write};
 use std::sync::atomic::{AtomicBool, Ordering};
 
-use super::output::{self, AtomicFile};
+use super::output::AtomicFile;
+use super::progress::Bar;
 use super::{CliError, SceneArgs, SweepArgs, SweepFormat};
 use crate::study::sweep::{self, Axis, Point, SweepError};
 
@@ -74,10 +75,10 @@ impl Write for Capped {
     }
 }
 
-/// `sweep`: stops cleanly on Ctrl-C, SIGTERM or SIGHUP (exit 130, nothing written).
+/// `sweep`: stops cleanly on a stop signal (exit 130, nothing written).
 pub fn run(scene_args: &SceneArgs, args: &SweepArgs) -> Result<String, CliError> {
-    output::watch_signals();
-    run_with_stop(scene_args, args, output::stop_flag())
+    crate::signals::watch();
+    run_with_stop(scene_args, args, crate::signals::stop_flag())
 }
 
 /// `sweep` with its own stop flag: if `stop` is set before the output is committed
@@ -128,19 +129,9 @@ pub fn run_with_stop(
                 .map_or(String::new(), |p| format!(" to {}", p.display()))
         );
     }
-    let bar = (total >= 20_000 && std::io::stderr().is_terminal()).then(|| {
-        let bar = indicatif::ProgressBar::new(total);
-        bar.set_style(
-            indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} points, {eta} left")
-                .expect("a valid template"),
-        );
-        bar
-    });
-    let tick = || {
-        if let Some(b) = &bar {
-            b.inc(1);
-        }
-    };
+    let bar = Bar::with_stop("points", total >= 20_000, stop);
+    bar.set_total(total);
+    let tick = || bar.inc();
     let map = Map {
         base: &base,
         x: &x,
@@ -173,9 +164,7 @@ pub fn run_with_stop(
             })
         }
     };
-    if let Some(b) = &bar {
-        b.finish_and_clear();
-    }
+    bar.finish();
     result
 }
 

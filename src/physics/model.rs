@@ -121,11 +121,6 @@ impl Groove {
         )
     }
 
-    /// Power lost to sliding friction, `μ_k m g / k · |s|`.
-    pub fn friction_power(&self, mass: f64, s: f64) -> f64 {
-        self.friction_limit(mass) * s.abs()
-    }
-
     /// Resistive force on a rolling ball that loses energy at the rate rolling
     /// resistance does: `dE/dt = m v a (1 + 2/(5k²))`, so `c_rr m g (1 + 2/(5k²))`.
     pub fn rolling_resistance_force(&self, mass: f64) -> f64 {

@@ -1,7 +1,7 @@
 //! The app's UI state and what every action does to it: selection, popups, playback,
 //! which view is shown. Everything computed about the scene is asked of the [`Lab`].
 //! No terminal here: keys arrive as [`Action`]s, so the whole app is testable without one.
-//! The types it speaks in live in [`super::state`]; what the main screen's keys do in
+//! The types it speaks in live in [`super::vocabulary`]; what the main screen's keys do in
 //! `normal`, the picker and text prompts in `prompts`.
 
 mod normal;
@@ -15,10 +15,10 @@ use crate::input::params::{Key, PARAMS, Param};
 use crate::input::units::{Dimension, show, significant};
 use crate::lab::Lab;
 
-pub use super::state::{Action, ChartBall, Export, FPS, Library, Mode, SPEEDS, Status, View};
+pub use super::vocabulary::{Action, ChartBall, Export, FPS, Library, Mode, SPEEDS, Status, View};
 pub use prompts::{export_step, typing_prompt};
 
-use super::state::DEFAULT_SPEED;
+use super::vocabulary::DEFAULT_SPEED;
 use prompts::TextTarget;
 
 /// The rows of the parameters panel, top to bottom: the table's rows that have steps.
@@ -50,7 +50,7 @@ pub struct App {
     /// The largest useful `scroll` at the last drawn size (the popup sets it when it
     /// draws, so a key never scrolls into blank lines).
     pub scroll_max: Cell<usize>,
-    /// Where `e`/`E` write a bare file name.
+    /// Where `w`/`W` write a bare file name.
     pub export_dir: PathBuf,
 }
 

@@ -7,9 +7,9 @@ pub mod app;
 pub mod canvas;
 pub mod keys;
 pub mod plot;
-pub mod state;
 pub mod theme;
 pub mod view;
+pub mod vocabulary;
 
 use std::io::{self, Write};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -53,44 +53,26 @@ fn restore() {
     let _ = out.flush();
 }
 
-/// Signals that end the app from outside. In raw mode the terminal sends no signals
-/// for keys (Ctrl-C is a key the app reads), so these come from `kill`, a closed
-/// terminal (SIGHUP) or a service manager.
-const ENDING_SIGNALS: [i32; 4] = [
-    signal_hook::consts::SIGINT,
-    signal_hook::consts::SIGTERM,
-    signal_hook::consts::SIGHUP,
-    signal_hook::consts::SIGQUIT,
-];
-
-/// Starts a thread that waits (blocked, no CPU) for an ending signal, then restores
-/// the terminal and exits with 128 + the signal's number, as a shell reports a
-/// process ended by it. It holds the stdout lock from the first write on, so the
-/// event loop cannot draw a frame onto the restored screen. The handlers stay for
-/// the rest of the process (signal-hook cannot give the default action back), which
-/// is fine: the app is the last thing the process does.
-fn watch_signals() -> io::Result<()> {
-    let mut signals = signal_hook::iterator::Signals::new(ENDING_SIGNALS)?;
-    std::thread::Builder::new()
-        .name("groovelab-signals".into())
-        .spawn(move || {
-            if let Some(signal) = signals.forever().next() {
-                let stdout = io::stdout();
-                let _no_more_frames = stdout.lock();
-                if ACTIVE.load(Ordering::SeqCst) {
-                    restore();
-                }
-                std::process::exit(128 + signal);
-            }
-        })?;
-    Ok(())
+/// Restores the terminal and exits with 128 + the signal's number, as a shell reports
+/// a process ended by it: the app's listener of the ending signals (`signals`). In raw
+/// mode the terminal sends no signals for keys (Ctrl-C is a key the app reads), so
+/// these come from `kill`, a closed terminal (SIGHUP) or a service manager. It holds
+/// the stdout lock from the first write on, so the event loop cannot draw a frame onto
+/// the restored screen; the app is the last thing the process does.
+fn restore_and_exit(signal: i32) {
+    let stdout = io::stdout();
+    let _no_more_frames = stdout.lock();
+    if ACTIVE.load(Ordering::SeqCst) {
+        restore();
+    }
+    std::process::exit(128 + signal);
 }
 
 /// Runs the app on the real terminal until the user quits.
 pub fn run(mut app: App, ascii: bool) -> io::Result<()> {
     let theme = theme(ascii);
     // Before the terminal changes, so that no moment is left unguarded.
-    watch_signals()?;
+    crate::signals::on_signal(restore_and_exit)?;
     ACTIVE.store(true, Ordering::SeqCst);
     let mut terminal = match ratatui::try_init() {
         Ok(t) => t,

@@ -26,7 +26,7 @@ pub enum View {
     Fit,
 }
 
-/// What `e` and `E` write.
+/// What `w` and `W` write.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Export {
     /// The run sampled as CSV, the columns of `simulate --format csv --sample`.
