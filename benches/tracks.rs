@@ -4,9 +4,10 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use groovelab::input::data;
 use groovelab::input::data::Reading;
 use groovelab::input::preset::Preset;
-use groovelab::study::track::{self, Derive};
+use groovelab::study::measured::{self, Derive};
 use groovelab::study::video::{self, Format, Video};
 
 fn tracks(c: &mut Criterion) {
@@ -27,14 +28,14 @@ fn tracks(c: &mut Criterion) {
     let text = video::write(&video::track(&scene, &v), Format::TrackerMulti);
     c.bench_function("read and differentiate a 10,000-frame track", |b| {
         b.iter(|| {
-            track::load(
+            let series = data::load(
                 black_box(&text),
                 "bench.txt",
                 &Reading::default(),
-                &scene,
                 &Derive::default(),
             )
-            .unwrap()
+            .unwrap();
+            measured::for_scene(&series, &scene)
         })
     });
 }

@@ -7,13 +7,12 @@ use serde::Serialize;
 use super::{
     CliError, DataArgs, FitArgs, FitFormat, SceneArgs, TrackRole, output::write_atomically,
 };
-use crate::input::data::Measured;
 use crate::input::data::Reading;
 use crate::input::preset::Preset;
 use crate::input::units::{Dimension, show, significant, unit_factor};
 use crate::physics::scene::Scene;
 use crate::study::fit::{self, Fits, Free, ModelFit};
-use crate::study::track::{self, Derive, Found};
+use crate::study::measured::{self, Derive, Found, Measured, Series};
 
 /// The measured series for `scene`, and what was found in a position track.
 pub fn load(
@@ -21,13 +20,29 @@ pub fn load(
     scene: &Scene,
     args: &DataArgs,
 ) -> Result<(Measured, Option<Found>), CliError> {
+    let series = match load_series(args)? {
+        Some(s) => s,
+        None => preset
+            .measured
+            .clone()
+            .map(|m| Series::Velocities(std::sync::Arc::new(m)))
+            .ok_or_else(|| {
+                CliError::Invalid(format!(
+                    "preset {} has no measured data, allowed: a paper-b* preset or --data FILE",
+                    preset.name
+                ))
+            })?,
+    };
+    let found = series.found().cloned();
+    let in_scene = measured::for_scene(&series, scene);
+    Ok(((*in_scene.measured).clone(), found))
+}
+
+/// The `--data` file read, its velocities derived as far as no scene enters; `None`
+/// without `--data`.
+pub fn load_series(args: &DataArgs) -> Result<Option<Series>, CliError> {
     let Some(path) = &args.data else {
-        return preset.measured.clone().map(|m| (m, None)).ok_or_else(|| {
-            CliError::Invalid(format!(
-                "preset {} has no measured data, allowed: a paper-b* preset or --data FILE",
-                preset.name
-            ))
-        });
+        return Ok(None);
     };
     let text = crate::input::read_user_file(path, "--data", crate::input::MAX_FILE_BYTES)
         .map_err(|e| CliError::Invalid(e.to_string()))?;
@@ -64,13 +79,14 @@ pub fn load(
         ..Derive::default()
     };
     let file = path.display().to_string();
-    let loaded = track::load(&text, &file, &reading, scene, &derive)
+    let series = crate::input::data::load(&text, &file, &reading, &derive)
         .map_err(|e| CliError::Invalid(e.to_string()))?;
-    loaded
-        .measured
-        .check_magnitudes()
+    let m = match &series {
+        Series::Velocities(m) | Series::Track(m, _) => m,
+    };
+    m.check_magnitudes()
         .map_err(|e| CliError::Invalid(format!("{file}: {e}")))?;
-    Ok((loaded.measured, loaded.found))
+    Ok(Some(series))
 }
 
 #[derive(Serialize)]

@@ -139,12 +139,12 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
 /// The lab on the scene the options describe, with `--data` replacing the preset's
 /// measured series.
 pub fn lab(scene_args: &SceneArgs, data: &DataArgs) -> Result<Lab, CliError> {
-    let (mut preset, scene, span) = scene_args.resolve()?;
-    if data.data.is_some() {
-        // A position track's v_t needs r = kR of the scene shown, overrides included.
-        preset.measured = Some(fit::load(&preset, &scene, data)?.0);
-    }
-    let mut lab = Lab::new(preset, scene, span);
+    let (preset, scene, span) = scene_args.resolve()?;
+    let mut lab = match fit::load_series(data)? {
+        // The lab derives a position track's v_t with the r of each scene it shows.
+        Some(series) => Lab::with_data(preset, scene, span, Some(series)),
+        None => Lab::new(preset, scene, span),
+    };
     // `--t-end` is explicit: it holds through parameter changes in the app.
     if let (Some(t_end), Some(_)) = (span.t_end, scene_args.values.get(Key::TEnd)) {
         lab.set_span_end(SpanEnd::Fixed {

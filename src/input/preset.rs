@@ -4,10 +4,10 @@
 use std::path::{Path, PathBuf};
 
 use crate::input::data::MAX_ROWS;
-use crate::input::data::Measured;
 use crate::input::file::{MAX_FILE_BYTES, read_user_file};
 use crate::input::params::{Key, SceneSpec};
 use crate::input::units::parse_quantity;
+use crate::study::measured::Measured;
 
 /// The preset used when none is named.
 pub const DEFAULT: &str = "paper-b4.9";

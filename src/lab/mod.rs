@@ -16,7 +16,6 @@ use std::cell::RefCell;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use crate::input::data::Measured;
 use crate::input::params::{Key, SceneError, SceneSpec};
 use crate::input::preset::Preset;
 use crate::methods::Method;
@@ -25,13 +24,14 @@ use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{EnergySplit, Snapshot, Solution};
 use crate::study::compare::Row;
 use crate::study::fit::{Fits, ModelFit};
+use crate::study::measured::{self, InScene, Measured, Series};
 use jobs::Job;
 
 pub use analyses::{METHOD_VIEW_LEVELS, OVERLAY_LEVELS, Overlay, level_settings};
 pub use span::SpanEnd;
 
 use span::{preset_span_end, solve_shown};
-use views::{Cached, data_rms, extent, ghost_track};
+use views::{Cached, data_rms, extent};
 
 /// Why a scene could not be saved as a preset.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -75,9 +75,10 @@ pub struct Lab {
     pub data_rms: Option<(f64, f64)>,
     /// The measured series' rest band (speeds within it cannot be told from rest).
     pub rest_band: Option<f64>,
-    /// Where the measured left ball is at each measured time: the tracked centre of a
-    /// position file, else its v_cm integrated.
-    ghost: Option<Vec<f64>>,
+    /// The measured series, ready for any scene (a preset's, or `--data`).
+    series: Option<Series>,
+    /// The measured series in this scene (`measured::for_scene`).
+    data: Option<InScene>,
     /// Line-fit window (None: the sliding phase).
     pub fit_window: (Option<f64>, Option<f64>),
     want_methods: bool,
@@ -102,12 +103,20 @@ impl Lab {
     /// The lab on `scene`; a `t_end` in `span` counts as the preset's (see [`SpanEnd`];
     /// [`Lab::set_span_end`] makes it explicit).
     pub fn new(preset: Preset, scene: Scene, span: Span) -> Lab {
+        let series = preset_series(&preset);
+        Lab::with_data(preset, scene, span, series)
+    }
+
+    /// The lab on `scene` with a measured series of the user's (`--data`) in place of
+    /// the preset's.
+    pub fn with_data(preset: Preset, scene: Scene, span: Span, series: Option<Series>) -> Lab {
         let span_end = preset_span_end(&span);
+        let data = series.as_ref().map(|s| measured::for_scene(s, &scene));
         let solution = Arc::new(solve_shown(
             &scene,
             &span,
             span_end,
-            preset.measured.as_ref(),
+            data.as_ref().map(|d| &*d.measured),
             None,
         ));
         let span = Span {
@@ -125,7 +134,8 @@ impl Lab {
             extent: (0.0, 0.0),
             data_rms: None,
             rest_band: None,
-            ghost: None,
+            series,
+            data,
             fit_window: (None, None),
             want_methods: false,
             want_fits: false,
@@ -145,10 +155,16 @@ impl Lab {
         lab
     }
 
-    /// The preset's measured series (kept while parameters change, so a model can be
-    /// tuned against it by hand).
+    /// The measured series in the scene shown (kept while parameters change, so a
+    /// model can be tuned against it by hand; a track's v_t follows r).
     pub fn measured(&self) -> Option<&Measured> {
-        self.preset.measured.as_ref()
+        self.data.as_ref().map(|d| &*d.measured)
+    }
+
+    /// The measured series as loaded, before any scene (what a position track's
+    /// derivation found is in it).
+    pub fn series(&self) -> Option<&Series> {
+        self.series.as_ref()
     }
 
     /// The current value of a parameter, SI.
@@ -222,6 +238,7 @@ impl Lab {
     /// Starts over from `preset` (its `t_end`, if any, holds until a parameter changes).
     pub fn load_preset(&mut self, preset: Preset) -> Result<(), SceneError> {
         let (scene, span) = preset.spec.resolve()?;
+        self.series = preset_series(&preset);
         self.preset = preset;
         self.fit_window = (None, None);
         self.span_end = preset_span_end(&span);
@@ -272,6 +289,8 @@ impl Lab {
 
     fn load(&mut self, scene: Scene, span: Span) {
         self.scene = scene;
+        // The measured series for this scene: a track's v_t needs its r.
+        self.data = self.series.as_ref().map(|s| measured::for_scene(s, &scene));
         let solution = solve_shown(
             &scene,
             &span,
@@ -301,14 +320,7 @@ impl Lab {
             self.extent = (self.extent.0.min(lo), self.extent.1.max(hi));
         }
         self.data_rms = self.measured().map(|m| data_rms(&self.solution, m));
-        self.rest_band = self.measured().map(crate::study::fit::rest_band);
-        let radius = self.scene.radius;
-        self.ghost = self.measured().map(|m| match &m.x {
-            // The tracked centre is the displacement from the impact place, where the
-            // model's left ball is at −R.
-            Some(x) => x.iter().map(|x| x - radius).collect(),
-            None => ghost_track(m, radius),
-        });
+        self.rest_band = self.data.as_ref().map(|d| d.rest_band);
         self.samples.replace(None);
         self.energies.replace(None);
         self.pinned_samples.replace(None);
@@ -367,4 +379,12 @@ impl Lab {
             .map_err(|e| SaveError::Io(e.to_string()))?;
         Ok(path)
     }
+}
+
+/// A preset's own measured series (velocities as the paper gives them).
+fn preset_series(preset: &Preset) -> Option<Series> {
+    preset
+        .measured
+        .clone()
+        .map(|m| Series::Velocities(Arc::new(m)))
 }

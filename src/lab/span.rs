@@ -1,9 +1,9 @@
 //! How the shown time span ends ([`SpanEnd`]) and the exact solution solved to that end.
 
-use crate::input::data::Measured;
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::Solution;
+use crate::study::measured::Measured;
 
 /// How the end of the shown time span is chosen. The rule, for the README: the span runs
 /// to a little past the last event (rest, the accumulation point T∞, the start of the

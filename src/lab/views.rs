@@ -1,13 +1,13 @@
 //! What the views draw from a solution, cached per scene and size: curve samples,
 //! energies, the pinned run's samples and changes, the regime grid, and the measured
-//! ball's ghost track with the helpers that build it (extent, data RMS, integrals).
+//! ball's ghost (from the series derived for the scene), the extent and the data RMS.
 
 use std::cell::RefCell;
 use std::rc::Rc;
 
-use crate::input::data::Measured;
 use crate::physics::derived::{Derived, Regime};
 use crate::physics::solution::{EnergySplit, Snapshot, Solution};
+use crate::study::measured::Measured;
 
 use super::Lab;
 
@@ -16,31 +16,18 @@ pub(super) type Cached<K, T> = RefCell<Option<(K, Rc<[T]>)>>;
 
 impl Lab {
     /// Where the measured left ball's centre is at `t`: the tracked position of a
-    /// position file, else its v_cm integrated (trapezoids) from the impact place at
-    /// t = 0; `None` outside the series.
+    /// position file, else its v_cm integrated from the impact place at t = 0; `None`
+    /// outside the series.
     pub fn ghost_x(&self, t: f64) -> Option<f64> {
-        let m = self.measured()?;
-        let track = self.ghost.as_ref()?;
-        if t < m.t[0] || t > *m.t.last()? {
-            return None;
-        }
-        if m.x.is_some() {
-            return interpolate(&m.t, track, t);
-        }
-        Some(integral_to(m, track, t))
+        self.data.as_ref()?.ghost_x(t)
     }
 
     /// The measured left ball's spin angle at `t` for its spoke, rad, on the model's
     /// scale (the model's angle at the first impact plus the mark's turn since then);
     /// `None` without a tracked rim mark or outside the series.
     pub fn ghost_angle(&self, t: f64) -> Option<f64> {
-        let m = self.measured()?;
-        let angle = m.angle.as_ref()?;
-        if t < m.t[0] || t > *m.t.last()? {
-            return None;
-        }
-        let a = interpolate(&m.t, angle, t)?;
-        Some(self.solution.angle_at(0.0)[0] + a)
+        let turn = self.data.as_ref()?.ghost_turn(t)?;
+        Some(self.solution.angle_at(0.0)[0] + turn)
     }
 
     /// The exact states at the chart's sample times for a plot `columns` wide: about
@@ -215,52 +202,4 @@ pub(super) fn data_rms(sol: &Solution, m: &Measured) -> (f64, f64) {
     }
     let n = n.max(1) as f64;
     ((sc / n).sqrt(), (st / n).sqrt())
-}
-
-/// `v_cm` linearly interpolated at `t` inside the series.
-fn v_at(m: &Measured, t: f64) -> f64 {
-    let i = m.t.partition_point(|&x| x <= t).clamp(1, m.t.len() - 1);
-    let f = (t - m.t[i - 1]) / (m.t[i] - m.t[i - 1]);
-    m.v_cm[i - 1] + f * (m.v_cm[i] - m.v_cm[i - 1])
-}
-
-/// ∫ v_cm from the first measured time to each measured time (trapezoids: exact for
-/// the linearly interpolated series).
-fn cumulative(m: &Measured) -> Vec<f64> {
-    let mut acc = 0.0;
-    std::iter::once(0.0)
-        .chain(m.t.windows(2).enumerate().map(|(i, w)| {
-            acc += 0.5 * (m.v_cm[i] + m.v_cm[i + 1]) * (w[1] - w[0]);
-            acc
-        }))
-        .collect()
-}
-
-/// ∫ v_cm from the first measured time to `t`, from the cumulative table.
-fn integral_to(m: &Measured, cum: &[f64], t: f64) -> f64 {
-    let i = m.t.partition_point(|&x| x <= t).clamp(1, m.t.len() - 1);
-    let t0 = m.t[i - 1];
-    cum[i - 1] + 0.5 * (m.v_cm[i - 1] + v_at(m, t)) * (t - t0)
-}
-
-/// The ghost ball's track: the cumulative integral of v_cm at the measured times,
-/// shifted so that the ball is at −R (where it meets the other) at t = 0; a frame then
-/// only interpolates.
-pub(super) fn ghost_track(m: &Measured, radius: f64) -> Vec<f64> {
-    let cum = cumulative(m);
-    let at_impact = integral_to(m, &cum, 0.0);
-    cum.iter().map(|c| c - at_impact - radius).collect()
-}
-
-/// `ys` linearly interpolated at `t` between the neighbouring finite values (a gap in
-/// a track is bridged); `None` when there is none on one side.
-fn interpolate(ts: &[f64], ys: &[f64], t: f64) -> Option<f64> {
-    let i = ts.partition_point(|&x| x <= t);
-    let before = (0..i).rev().find(|&j| ys[j].is_finite())?;
-    if ts[before] == t {
-        return Some(ys[before]);
-    }
-    let after = (i..ts.len()).find(|&j| ys[j].is_finite())?;
-    let f = (t - ts[before]) / (ts[after] - ts[before]);
-    Some(ys[before] + f * (ys[after] - ys[before]))
 }

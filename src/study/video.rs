@@ -1,11 +1,11 @@
 //! Synthetic "videos" for testing the track import against truth: the exact solution's
 //! left ball sampled at a frame rate, its centre and a mark on its rim seen from the
 //! side, with seeded Gaussian noise, in the user's frame (origin, axis directions and
-//! clip start of their choosing), written in every format `input::tracks` reads.
+//! clip start of their choosing), written in every format `input::data` reads.
 
-use crate::input::tracks::Track;
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
+use crate::study::measured::series::Track;
 
 /// How the synthetic video is taken and tracked.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -115,7 +115,7 @@ pub fn track(scene: &Scene, video: &Video) -> Track {
     out
 }
 
-/// The file formats `input::tracks` reads.
+/// The file formats `input::data` reads.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Format {
     /// Tracker's single-track export of the centre (no mark), tab-separated,

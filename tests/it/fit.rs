@@ -3,12 +3,12 @@
 use std::process::Command;
 
 use groovelab::input::data;
-use groovelab::input::data::Measured;
 use groovelab::input::preset::Preset;
 use groovelab::physics::derived::Regime;
 use groovelab::physics::engine::solve;
 use groovelab::physics::scene::{Scene, Span};
 use groovelab::study::fit::{self, Free, PAPER_TABLE};
+use groovelab::study::measured::Measured;
 
 fn paper(width: &str) -> (Scene, Measured) {
     let p = Preset::load(&format!("paper-b{width}")).unwrap();

@@ -200,3 +200,24 @@ fn charts_show_error_bars_and_the_fit_panel_both_fits() {
     assert!(ascii.is_ascii());
     insta::assert_snapshot!("render-tracked-video-120x40-ascii", ascii);
 }
+
+#[test]
+fn data_follow_the_scene_when_it_changes_in_the_lab() {
+    // Once the track's v_t kept the r of start-up after b changed in the app.
+    let by_flags = cli::lab(
+        &scene(SceneSpec::default().with(Key::Width, 0.044)),
+        &data(|_| {}),
+    )
+    .unwrap();
+    let mut by_keys = cli::lab(&scene(SceneSpec::default()), &data(|_| {})).unwrap();
+    let before = by_keys.measured().unwrap().v_t.clone();
+    by_keys.set(Key::Width, 0.044).unwrap();
+    let (a, b) = (by_flags.measured().unwrap(), by_keys.measured().unwrap());
+    assert_ne!(before, b.v_t, "v_t follows r");
+    // The same numbers, bit for bit: one derivation, scaled by the same r.
+    assert_eq!(format!("{:?}", a.v_t), format!("{:?}", b.v_t));
+    assert_eq!(by_flags.rest_band, by_keys.rest_band);
+    assert_eq!(by_flags.data_rms, by_keys.data_rms);
+    let t = a.t[a.t.len() / 2];
+    assert_eq!(by_flags.ghost_x(t), by_keys.ghost_x(t));
+}

@@ -4,11 +4,12 @@
 
 use std::process::Command;
 
-use groovelab::input::data::{self, Reading, Series};
+use groovelab::input::data::{self, Reading};
 use groovelab::input::preset::Preset;
 use groovelab::physics::scene::Scene;
 use groovelab::study::fit::{self, Free};
-use groovelab::study::track::{self, Derive, Loaded, TrackFits};
+use groovelab::study::measured::track::{self, TrackFits};
+use groovelab::study::measured::{self, Derive, Found, Measured, RawSeries};
 use groovelab::study::video::{self, Format, Video};
 
 const MU: f64 = 0.17;
@@ -17,15 +18,20 @@ fn scene(name: &str) -> Scene {
     Preset::load(name).unwrap().spec.resolve().unwrap().0
 }
 
+/// A data file read and derived for a scene, with what was found in a track.
+#[derive(Debug)]
+struct Loaded {
+    measured: Measured,
+    found: Option<Found>,
+}
+
 fn try_load(scene: &Scene, text: &str) -> Result<Loaded, String> {
-    track::load(
-        text,
-        "video.txt",
-        &Reading::default(),
-        scene,
-        &Derive::default(),
-    )
-    .map_err(|e| e.to_string())
+    let series = data::load(text, "video.txt", &Reading::default(), &Derive::default())
+        .map_err(|e| e.to_string())?;
+    Ok(Loaded {
+        measured: (*measured::for_scene(&series, scene).measured).clone(),
+        found: series.found().cloned(),
+    })
 }
 
 /// Both fits of a synthetic video, started away from the truth (μ = 0.3).
@@ -257,10 +263,10 @@ fn missing_pieces_give_one_line_errors() {
 #[test]
 fn velocity_files_read_as_before() {
     let text = "t_s,v_cm_m_per_s,v_t_m_per_s\n-0.02,0.79,0.78\n0,0.0925,0.78\n0.02,-0.64,0.70\n0.04,-0.63,0.68\n";
-    let Series::Velocities(m) = data::read(text, "v.csv", &Reading::default()).unwrap() else {
+    let RawSeries::Velocities(m) = data::read(text, "v.csv", &Reading::default()).unwrap() else {
         panic!("a velocity file");
     };
-    assert_eq!(m, data::parse(text, "v.csv", &Reading::default()).unwrap());
+    assert_eq!(m.t, vec![-0.02, 0.0, 0.02, 0.04]);
     assert!(m.x.is_none() && m.v_cm_sigma.is_none());
     let l = try_load(&scene("paper-b4.9"), text).unwrap();
     assert!(l.found.is_none());

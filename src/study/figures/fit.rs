@@ -10,7 +10,7 @@ use crate::physics::scene::Scene;
 /// their window, and the residuals below.
 pub fn fit_figure(
     scene: &Scene,
-    m: &crate::input::data::Measured,
+    m: &crate::study::measured::series::Measured,
     fits: &crate::study::fit::Fits,
 ) -> Result<String, Box<dyn std::error::Error>> {
     let mut fitted = *scene;

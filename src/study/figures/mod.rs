@@ -89,7 +89,7 @@ mod tests {
             .expect("the figure finished")
     }
 
-    pub(super) fn paper() -> (Scene, crate::input::data::Measured) {
+    pub(super) fn paper() -> (Scene, crate::study::measured::series::Measured) {
         let p = Preset::load("paper-b4.9").unwrap();
         let (scene, _) = p.spec.resolve().unwrap();
         (scene, p.measured.unwrap())

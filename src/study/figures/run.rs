@@ -19,7 +19,7 @@ pub enum RunChart {
 pub fn run_chart(
     sol: &crate::physics::solution::Solution,
     which: RunChart,
-    measured: Option<&crate::input::data::Measured>,
+    measured: Option<&crate::study::measured::series::Measured>,
 ) -> Result<String, Box<dyn std::error::Error>> {
     use crate::physics::solution::Snapshot;
     let (t0, t1) = (sol.t_start, sol.t_end);

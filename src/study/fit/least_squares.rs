@@ -4,9 +4,9 @@
 
 use super::uncertainty::{clamped, solve};
 use super::{Evals, FitError, Free};
-use crate::input::data::Measured;
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
+use crate::study::measured::series::Measured;
 
 /// Scene with the fit parameters `p` applied.
 pub(super) fn with(scene: &Scene, free: &[Free], p: &[f64]) -> Scene {

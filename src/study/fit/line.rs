@@ -4,8 +4,8 @@
 use serde::Serialize;
 
 use super::FitError;
-use crate::input::data::Measured;
 use crate::physics::scene::Scene;
+use crate::study::measured::series::Measured;
 
 /// A straight line `y = a + b t` by least squares, with standard errors.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]

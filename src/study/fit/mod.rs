@@ -10,13 +10,13 @@ mod uncertainty;
 
 use serde::Serialize;
 
-use crate::input::data::Measured;
 use crate::physics::closed_form;
 use crate::physics::derived::{Derived, Regime};
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::story::Verdict;
 use crate::study::Progress;
+use crate::study::measured::series::Measured;
 
 pub use line::{Line, LineFit, PAPER_TABLE, line, line_fit, paper_row, sliding_window};
 pub use regime::{observed_regime, rest_band};

@@ -2,10 +2,10 @@
 //! counts as rest and the mean motion after the sliding phase.
 
 use super::line::{line, sliding_window};
-use crate::input::data::Measured;
 use crate::physics::derived::Regime;
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
+use crate::study::measured::series::Measured;
 
 /// Speeds within ± this of zero count as rest: three times the scatter of the
 /// measured points about straight lines over the sliding phase (the data's own

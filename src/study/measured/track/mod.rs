@@ -17,8 +17,7 @@ mod impacts;
 
 use serde::Serialize;
 
-use crate::input::data::{self, DataError, Measured, Reading, Series};
-use crate::input::tracks::Track;
+use super::series::{Measured, Track};
 use crate::physics::scene::Scene;
 use crate::study::fit::{self, FitError, Free, ModelFit};
 
@@ -302,46 +301,6 @@ pub fn derive(
         mark_radius: spin.as_ref().map(|s| s.3),
     };
     Ok((m, found))
-}
-
-/// A data file read and, for a position track, its velocities derived.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Loaded {
-    pub measured: Measured,
-    /// What the derivation found; `None` for a velocity file.
-    pub found: Option<Found>,
-}
-
-/// Reads a velocity file or a position track (`input::data::read`) and derives the
-/// velocities of a track with the scene's contact radius r = kR.
-pub fn load(
-    text: &str,
-    file: &str,
-    reading: &Reading,
-    scene: &Scene,
-    derive_opts: &Derive,
-) -> Result<Loaded, DataError> {
-    match data::read(text, file, reading)? {
-        Series::Velocities(measured) => Ok(Loaded {
-            measured,
-            found: None,
-        }),
-        Series::Positions(track) => {
-            let opts = Derive {
-                impact_at: reading.impact_at.or(derive_opts.impact_at),
-                ..*derive_opts
-            };
-            let (measured, found) =
-                derive(&track, scene.k() * scene.radius, &opts).map_err(|e| DataError {
-                    file: file.to_string(),
-                    what: e.0,
-                })?;
-            Ok(Loaded {
-                measured,
-                found: Some(found),
-            })
-        }
-    }
 }
 
 /// Both model fits of a tracked series, side by side.

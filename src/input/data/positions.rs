@@ -1,31 +1,15 @@
 //! Reading position tracks exported by video-analysis tools: Tracker's single-track
-//! (track name, then `t x y …`) and multi-track (`#multi:`, track names, column names)
-//! data files, and plain CSV/TSV with named columns. Finds the time, the ball's centre
-//! and an optional rim mark by name, converts to SI, keeps empty cells as NaN. The
-//! velocities are derived elsewhere (`study::track`); this module only reads.
+//! (the track's name, then `t x y v_x …`) and multi-track (`#multi:`, track names,
+//! column names) data files, Logger Pro / Graphical Analysis exports (`Latest: X (m)`,
+//! a second point as `X2`, `Y2`), and plain CSV/TSV with named columns. Finds the
+//! time, the ball's centre and an optional rim mark by name and uses their position
+//! columns only (velocities and the like are ignored), converts to SI, keeps empty and
+//! `NaN` cells as missing. The velocities are derived in `study::measured`.
 
-use crate::input::data::{DataError, Reading, Sep, cells, clean, number, separator, unit_factor};
+use super::options::{DataError, MAX_ROWS, Reading};
+use super::table::{Row, Sep, Table, clean, missing, number, unit_factor};
 use crate::input::units::Dimension;
-
-/// A position track in the file's own frame (origin, axis directions and time origin
-/// as the user set them), SI units. Rows without a time are dropped; a missing cell
-/// is NaN.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct Track {
-    /// Times, s, strictly increasing.
-    pub t: Vec<f64>,
-    /// The ball's centre, m.
-    pub x: Vec<f64>,
-    /// All NaN when the file has no y column for the centre.
-    pub y: Vec<f64>,
-    /// A mark on the ball's rim (x, y), m, when the file has one.
-    pub mark: Option<(Vec<f64>, Vec<f64>)>,
-    /// Name of the centre's track ("" for a plain `x, y` file).
-    pub centre_name: String,
-    pub mark_name: Option<String>,
-    /// The format found: "Tracker multi-track", "Tracker single-track" or "CSV".
-    pub format: &'static str,
-}
+use crate::study::measured::Track;
 
 /// One header cell of a position file: which track, which axis, its SI factor.
 #[derive(Clone, Debug, PartialEq)]
@@ -42,9 +26,13 @@ enum Axis {
     Y,
 }
 
+/// Symbols of other quantities that share a column name with an axis: Tracker's
+/// `v_x`, `a_y`, `p_x` are a velocity, an acceleration and a momentum, not positions.
+const OTHER_QUANTITIES: [&str; 6] = ["v", "a", "p", "f", "θ", "ω"];
+
 /// Reads a header cell such as `t`, `t/ms`, `x (cm)`, `mass A x`, `x_mark [mm]`,
-/// `y_cm` (unit as suffix). `None` for other columns (`v_{x}`, `frame`, …) and for
-/// a unit that does not fit the axis.
+/// `y_cm` (unit as suffix), `Latest: X2 (m)` (a second point). `None` for other
+/// columns (`v_x`, `v_{x}`, `frame`, …) and for a unit that does not fit the axis.
 fn position_column(cell: &str) -> Option<Col> {
     let h = clean(cell);
     // A unit in brackets or after a slash.
@@ -56,17 +44,26 @@ fn position_column(cell: &str) -> Option<Col> {
         .split([' ', '_', '.', '-'])
         .filter(|t| !t.is_empty())
         .collect();
-    let axis_of = |t: &str| match t {
-        "t" | "time" => Some(Axis::T),
-        "x" => Some(Axis::X),
-        "y" => Some(Axis::Y),
-        _ => None,
+    // `x2`, `y2`: Logger Pro's second point.
+    let axis_of = |t: &str| -> Option<(Axis, Option<String>)> {
+        let (letter, digits) = t.split_at(t.find(|c: char| c.is_ascii_digit()).unwrap_or(t.len()));
+        let point = (!digits.is_empty() && digits.chars().all(|c| c.is_ascii_digit()))
+            .then(|| format!("point {digits}"));
+        if !digits.is_empty() && point.is_none() {
+            return None;
+        }
+        match (letter, &point) {
+            ("t" | "time", None) => Some((Axis::T, None)),
+            ("x", _) => Some((Axis::X, point)),
+            ("y", _) => Some((Axis::Y, point)),
+            _ => None,
+        }
     };
     let mut axes = tokens
         .iter()
         .enumerate()
         .filter_map(|(i, t)| axis_of(t).map(|a| (i, a)));
-    let (at, axis) = axes.next()?;
+    let (at, (axis, point)) = axes.next()?;
     if axes.next().is_some() {
         return None;
     }
@@ -81,6 +78,9 @@ fn position_column(cell: &str) -> Option<Col> {
         .filter(|&(i, _)| i != at)
         .map(|(_, t)| *t)
         .collect();
+    if rest.iter().any(|t| OTHER_QUANTITIES.contains(t)) {
+        return None;
+    }
     let mut factor = unit_factor(unit, dim)?;
     // `x_cm`, `t_s`: a trailing unit token rather than a track name.
     if factor.is_none()
@@ -90,8 +90,13 @@ fn position_column(cell: &str) -> Option<Col> {
         factor = Some(f);
         rest.clear();
     }
+    let track = match point {
+        Some(p) if rest.is_empty() => p,
+        Some(p) => format!("{} {p}", rest.join(" ")),
+        None => rest.join(" "),
+    };
     Some(Col {
-        track: rest.join(" "),
+        track,
         axis,
         factor,
     })
@@ -99,74 +104,61 @@ fn position_column(cell: &str) -> Option<Col> {
 
 /// Names that say "the centre" or "the mark" when no option does.
 const CENTRE_NAMES: [&str; 6] = ["centre", "center", "ball", "cm", "c", "mass a"];
-const MARK_NAMES: [&str; 5] = ["mark", "rim", "spot", "m", "mass b"];
+const MARK_NAMES: [&str; 6] = ["mark", "rim", "spot", "m", "mass b", "point 2"];
 
 fn same(a: &str, b: &str) -> bool {
     let norm = |s: &str| s.to_lowercase().replace([' ', '_'], "");
     norm(a) == norm(b)
 }
 
-/// Parses a position file (see the module doc) into a [`Track`] in SI units.
-pub fn parse(text: &str, file: &str, reading: &Reading) -> Result<Track, DataError> {
-    let err = |what: String| DataError {
-        file: file.to_string(),
-        what,
-    };
-    let mut lines = text
-        .lines()
-        .enumerate()
-        .filter(|(_, l)| !l.trim().is_empty());
-    // Up to three lines before the column header: `#multi:`, track names, or the
-    // single track's name.
-    let mut before: Vec<(usize, &str)> = Vec::new();
-    let (header_no, header) = loop {
-        let Some((n, line)) = lines.next() else {
-            return Err(err(
+/// The column header and the lines before it (Tracker's `#multi:` and track names, or
+/// a single track's name): the first row with a time column, within four rows.
+fn find_header(rows: &mut impl Iterator<Item = Row>) -> Result<(Vec<Row>, Row), String> {
+    let mut before = Vec::new();
+    loop {
+        let Some(row) = rows.next() else {
+            return Err(
                 "no header with a time column t found, expected columns t and x (and y), or t, v_cm and v_t"
                     .into(),
-            ));
+            );
         };
-        let sep = separator(line);
-        let has_t = cells(line, sep)
-            .iter()
-            .any(|c| position_column(c).is_some_and(|c| c.axis == Axis::T));
+        let has_t =
+            (0..row.len()).any(|i| position_column(row.cell(i)).is_some_and(|c| c.axis == Axis::T));
         if has_t {
-            break (n, line);
+            return Ok((before, row));
         }
         if before.len() == 3 {
-            return Err(err(format!(
+            return Err(format!(
                 "line {}: no header with a time column t in the first lines, expected columns t and x (and y)",
-                n + 1
-            )));
+                row.line
+            ));
         }
-        before.push((n, line));
-    };
-    let sep = separator(header);
-    let head = cells(header, sep);
+        before.push(row);
+    }
+}
+
+/// Gives the columns without a track name the one the lines above them say: a
+/// multi-track file's names line, or a single-track file's title; returns the format.
+fn name_tracks(cols: &mut [Option<Col>], before: &[Row], sep: Sep) -> Result<&'static str, String> {
     let multi = before
         .first()
-        .is_some_and(|(_, l)| l.trim_start().to_lowercase().starts_with("#multi"));
-    let mut cols: Vec<Option<Col>> = head.iter().map(|c| position_column(c)).collect();
-    let format = if multi {
+        .is_some_and(|r| r.cell(0).to_lowercase().starts_with("#multi"));
+    if multi {
         // The names line puts each track's name above its first column.
-        let Some((n, names)) = before.get(1) else {
-            return Err(err(
+        let Some(names) = before.get(1) else {
+            return Err(
                 "a '#multi:' file needs a line of track names before the column names".into(),
-            ));
+            );
         };
         if sep == Sep::Space {
-            return Err(err(format!(
+            return Err(format!(
                 "line {}: a multi-track file must be tab, comma or semicolon separated (Tracker writes tabs)",
-                n + 1
-            )));
+                names.line
+            ));
         }
-        let names = cells(names, sep);
         let mut current = String::new();
         for (j, col) in cols.iter_mut().enumerate() {
-            let name = names
-                .get(j)
-                .map(|s| s.trim().trim_matches('"'))
-                .unwrap_or("");
+            let name = names.cell(j);
             if !name.is_empty() {
                 current = name.to_string();
             }
@@ -177,71 +169,50 @@ pub fn parse(text: &str, file: &str, reading: &Reading) -> Result<Track, DataErr
                 c.track = current.clone();
             }
         }
-        "Tracker multi-track"
-    } else if let Some((_, name)) = before.last() {
+        Ok("Tracker multi-track")
+    } else if let Some(title) = before.last() {
         // Tracker's single-track export: the track's name above the header.
-        let name = name.trim().trim_matches('"').to_string();
+        let name = title.cell(0).to_string();
         for c in cols.iter_mut().flatten() {
             if c.axis != Axis::T && c.track.is_empty() {
                 c.track = name.clone();
             }
         }
-        "Tracker single-track"
+        Ok("Tracker single-track")
     } else {
-        "CSV"
-    };
-    let found: Vec<String> = head
-        .iter()
-        .map(|c| c.trim().to_string())
-        .filter(|c| !c.is_empty())
-        .collect();
-    let it = cols
-        .iter()
-        .position(|c| c.as_ref().is_some_and(|c| c.axis == Axis::T))
-        .expect("the header has a t column");
-    // Tracks with an x column, in file order.
-    let mut names: Vec<String> = Vec::new();
-    for c in cols.iter().flatten() {
-        if c.axis == Axis::X && !names.contains(&c.track) {
-            names.push(c.track.clone());
-        }
+        Ok("CSV")
     }
-    if names.is_empty() {
-        return Err(err(format!(
-            "line {}: no position column x in '{}', expected t and x (and y) for a position track, or t, v_cm and v_t for velocities",
-            header_no + 1,
-            found.join(" ")
-        )));
-    }
-    let pick = |want: &Option<String>,
-                defaults: &[&str],
-                role: &str|
-     -> Result<Option<String>, DataError> {
-        match want {
-            Some(w) => names
-                .iter()
-                .find(|n| same(n, w))
-                .cloned()
-                .map(Some)
-                .ok_or_else(|| {
-                    err(format!(
-                        "no track '{w}' for the {role} in the file, tracks found: {}",
-                        names
-                            .iter()
-                            .map(|n| if n.is_empty() {
-                                "(unnamed)"
-                            } else {
-                                n.as_str()
-                            })
-                            .collect::<Vec<_>>()
-                            .join(", ")
-                    ))
-                }),
-            None => Ok(names
-                .iter()
-                .find(|n| defaults.iter().any(|d| same(n, d)))
-                .cloned()),
-        }
+}
+
+/// The centre's and the mark's track names among `names` (tracks with an x column, in
+/// file order): as the options say, else by their names, else the first two.
+fn pick_roles(names: &[String], reading: &Reading) -> Result<(String, Option<String>), String> {
+    let pick = |want: &Option<String>, defaults: &[&str], role: &str| match want {
+        Some(w) => names
+            .iter()
+            .find(|n| same(n, w))
+            .cloned()
+            .map(Some)
+            .ok_or_else(|| {
+                let found: Vec<&str> = names
+                    .iter()
+                    .map(|n| {
+                        if n.is_empty() {
+                            "(unnamed)"
+                        } else {
+                            n.as_str()
+                        }
+                    })
+                    .collect();
+                format!(
+                    "no track '{w}' for the {role} in the file, tracks found: {}",
+                    found.join(", ")
+                )
+            }),
+        None => Ok(names
+            .iter()
+            .find(|n| defaults.iter().any(|d| same(n, d)))
+            .cloned()),
     };
     let centre = match pick(&reading.centre, &CENTRE_NAMES, "centre")? {
         Some(c) => c,
@@ -257,20 +228,62 @@ pub fn parse(text: &str, file: &str, reading: &Reading) -> Result<Track, DataErr
         None => names.iter().find(|n| **n != centre).cloned(),
     };
     if reading.mark.is_some() && mark.is_none() {
-        return Err(err("the mark and the centre name the same track".into()));
+        return Err("the mark and the centre name the same track".into());
     }
+    Ok((centre, mark))
+}
+
+/// Parses a position file (see the module doc) into a [`Track`] in SI units.
+pub fn parse(text: &str, file: &str, reading: &Reading) -> Result<Track, DataError> {
+    from_table(&Table::new(text), file, reading)
+}
+
+/// [`parse`] of a file already split into rows.
+pub(super) fn from_table(table: &Table, file: &str, reading: &Reading) -> Result<Track, DataError> {
+    let err = |what: String| DataError {
+        file: file.to_string(),
+        what,
+    };
+    let mut rows = table.rows();
+    let (before, header) = find_header(&mut rows).map_err(err)?;
+    let mut cols: Vec<Option<Col>> = (0..header.len())
+        .map(|i| position_column(header.cell(i)))
+        .collect();
+    let format = name_tracks(&mut cols, &before, table.sep).map_err(err)?;
+    let format = match format {
+        "CSV" if (0..header.len()).any(|i| header.cell(i).contains(':')) => {
+            "Logger Pro / Graphical Analysis"
+        }
+        f => f,
+    };
+    let it = cols
+        .iter()
+        .position(|c| c.as_ref().is_some_and(|c| c.axis == Axis::T))
+        .expect("the header has a t column");
+    // Tracks with an x column, in file order.
+    let mut names: Vec<String> = Vec::new();
+    for c in cols.iter().flatten() {
+        if c.axis == Axis::X && !names.contains(&c.track) {
+            names.push(c.track.clone());
+        }
+    }
+    if names.is_empty() {
+        let found: Vec<&str> = (0..header.len())
+            .map(|i| header.cell(i))
+            .filter(|c| !c.is_empty())
+            .collect();
+        return Err(err(format!(
+            "line {}: no position column x in '{}', expected t and x (and y) for a position track, or t, v_cm and v_t for velocities",
+            header.line,
+            found.join(" ")
+        )));
+    }
+    let (centre, mark) = pick_roles(&names, reading).map_err(err)?;
     let index = |track: &str, axis: Axis| {
         cols.iter().position(|c| {
             c.as_ref()
                 .is_some_and(|c| c.axis == axis && c.track == track)
         })
-    };
-    let factor = |i: usize, unit: Option<f64>| {
-        cols[i]
-            .as_ref()
-            .and_then(|c| c.factor)
-            .or(unit)
-            .unwrap_or(1.0)
     };
     let ix = index(&centre, Axis::X).expect("the centre has an x column");
     let iy = index(&centre, Axis::Y);
@@ -286,8 +299,13 @@ pub fn parse(text: &str, file: &str, reading: &Reading) -> Result<Track, DataErr
         },
         None => None,
     };
-    let ft = factor(it, reading.time_unit);
-    let fl = |i: usize| factor(i, reading.length_unit);
+    let factor = |i: usize, unit: Option<f64>| {
+        cols[i]
+            .as_ref()
+            .and_then(|c| c.factor)
+            .or(unit)
+            .unwrap_or(1.0)
+    };
     let mut track = Track {
         centre_name: centre.clone(),
         mark_name: im.and(mark.clone()),
@@ -295,48 +313,18 @@ pub fn parse(text: &str, file: &str, reading: &Reading) -> Result<Track, DataErr
         mark: im.map(|_| (Vec::new(), Vec::new())),
         ..Track::default()
     };
-    for (n, line) in lines {
-        if line.trim_start().starts_with('#') {
-            continue;
-        }
-        let row = cells(line, sep);
-        let cell = |i: usize| row.get(i).map_or("", |c| c.trim());
-        let value = |i: usize, name: &str| -> Result<f64, DataError> {
-            let c = cell(i);
-            if c.is_empty() {
-                return Ok(f64::NAN);
-            }
-            number(c).ok_or_else(|| {
-                err(format!(
-                    "line {}: {name} = '{c}' is not a finite number (an empty cell counts as missing)",
-                    n + 1
-                ))
-            })
-        };
-        let time = value(it, "t")?;
-        if time.is_nan() {
-            continue;
-        }
-        let time = time * ft;
-        if let Some(&prev) = track.t.last()
-            && time <= prev
-        {
-            return Err(err(format!(
-                "line {}: t = {time} s does not increase (previous {prev} s), allowed strictly increasing times",
-                n + 1
-            )));
-        }
-        track.t.push(time);
-        track.x.push(value(ix, "x")? * fl(ix));
-        track.y.push(match iy {
-            Some(i) => value(i, "y")? * fl(i),
-            None => f64::NAN,
-        });
-        if let (Some((a, b)), Some((mx, my))) = (im, track.mark.as_mut()) {
-            mx.push(value(a, "mark x")? * fl(a));
-            my.push(value(b, "mark y")? * fl(b));
-        }
-    }
+    let columns = Columns {
+        t: (it, factor(it, reading.time_unit)),
+        x: (ix, factor(ix, reading.length_unit)),
+        y: iy.map(|i| (i, factor(i, reading.length_unit))),
+        mark: im.map(|(a, b)| {
+            (
+                (a, factor(a, reading.length_unit)),
+                (b, factor(b, reading.length_unit)),
+            )
+        }),
+    };
+    read_rows(rows, &columns, &mut track).map_err(err)?;
     if track.x.iter().filter(|x| x.is_finite()).count() == 0 {
         return Err(err(format!(
             "no frame with a position x of '{}', expected rows of numbers below the header",
@@ -344,6 +332,66 @@ pub fn parse(text: &str, file: &str, reading: &Reading) -> Result<Track, DataErr
         )));
     }
     Ok(track)
+}
+
+/// Where a track's values are in a row, and their SI factors.
+struct Columns {
+    t: (usize, f64),
+    x: (usize, f64),
+    y: Option<(usize, f64)>,
+    mark: Option<((usize, f64), (usize, f64))>,
+}
+
+/// Appends the data rows to `track`: rows without a time are dropped, an empty or
+/// `NaN` cell is a missing value (NaN).
+fn read_rows(
+    rows: impl Iterator<Item = Row>,
+    columns: &Columns,
+    track: &mut Track,
+) -> Result<(), String> {
+    for row in rows {
+        if track.t.len() == MAX_ROWS {
+            return Err(format!(
+                "line {}: more than {MAX_ROWS} data rows, allowed at most {MAX_ROWS}",
+                row.line
+            ));
+        }
+        let value = |(i, f): (usize, f64), name: &str| -> Result<f64, String> {
+            let c = row.cell(i);
+            if missing(c) {
+                return Ok(f64::NAN);
+            }
+            number(c).map(|v| v * f).ok_or_else(|| {
+                format!(
+                    "line {}: {name} = '{c}' is not a finite number (an empty cell counts as missing)",
+                    row.line
+                )
+            })
+        };
+        let time = value(columns.t, "t")?;
+        if time.is_nan() {
+            continue;
+        }
+        if let Some(&prev) = track.t.last()
+            && time <= prev
+        {
+            return Err(format!(
+                "line {}: t = {time} s does not increase (previous {prev} s), allowed strictly increasing times",
+                row.line
+            ));
+        }
+        track.t.push(time);
+        track.x.push(value(columns.x, "x")?);
+        track.y.push(match columns.y {
+            Some(c) => value(c, "y")?,
+            None => f64::NAN,
+        });
+        if let (Some((a, b)), Some((mx, my))) = (columns.mark, track.mark.as_mut()) {
+            mx.push(value(a, "mark x")?);
+            my.push(value(b, "mark y")?);
+        }
+    }
+    Ok(())
 }
 
 #[cfg(test)]

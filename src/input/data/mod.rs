@@ -1,0 +1,51 @@
+//! Reading a user's measured series from the text of a file: velocity files
+//! (`velocities`) and position tracks from video analysis (`positions`), both on the
+//! same table reader (`table`: the `csv` crate, separators, units, numbers). A reader
+//! gives a [`RawSeries`] in SI units and nothing that depends on the scene: deriving
+//! velocities for a scene is `study::measured`'s.
+
+mod options;
+mod positions;
+mod table;
+mod velocities;
+
+pub use options::{DataError, MAX_ROWS, Reading};
+pub use velocities::detect_impact;
+
+use crate::study::measured::{self, Derive, RawSeries, Series, Track};
+use table::Table;
+
+/// Reads `text` (the file named `file`): a velocity file when its header names t, v_cm
+/// and v_t, else a position track (Tracker, Logger Pro, or CSV/TSV with t, x, y).
+pub fn read(text: &str, file: &str, reading: &Reading) -> Result<RawSeries, DataError> {
+    let table = Table::new(text);
+    let velocities = table
+        .rows()
+        .next()
+        .is_some_and(|header| (0..header.len()).any(|i| velocities::names_v_cm(header.cell(i))));
+    if velocities {
+        velocities::from_table(&table, file, reading).map(RawSeries::Velocities)
+    } else {
+        positions::from_table(&table, file, reading).map(RawSeries::Positions)
+    }
+}
+
+/// Reads a position track (see [`read`]); a velocity file is an error here.
+pub fn read_track(text: &str, file: &str, reading: &Reading) -> Result<Track, DataError> {
+    positions::parse(text, file, reading)
+}
+
+/// Reads a velocity file or a position track and derives what does not depend on the
+/// scene (`study::measured::prepare`); `study::measured::for_scene` then gives it for
+/// a scene. The time of the first impact, when given, is `reading.impact_at`.
+pub fn load(text: &str, file: &str, reading: &Reading, opts: &Derive) -> Result<Series, DataError> {
+    let raw = read(text, file, reading)?;
+    let opts = Derive {
+        impact_at: reading.impact_at.or(opts.impact_at),
+        ..*opts
+    };
+    measured::prepare(raw, &opts).map_err(|e| DataError {
+        file: file.to_string(),
+        what: e.0,
+    })
+}

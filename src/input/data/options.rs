@@ -1,0 +1,32 @@
+//! How a data file is to be read beyond what it says itself, and why it cannot be.
+
+/// Most data rows a file may have: far more than a video gives (a minute at 1000
+/// frames/s is 60,000), and a bound on the memory and time a fit can take.
+pub const MAX_ROWS: usize = 1_000_000;
+
+/// Why a data file cannot be used; each message names the line.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("{file}: {what}")]
+pub struct DataError {
+    pub file: String,
+    pub what: String,
+}
+
+/// How to read a file beyond what its header says.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Reading {
+    /// Seconds per time unit of the file, when the header does not say (1 = s).
+    pub time_unit: Option<f64>,
+    /// m/s per speed unit of the file, when the header does not say.
+    pub speed_unit: Option<f64>,
+    /// Metres per length unit of a position file, when the header does not say.
+    pub length_unit: Option<f64>,
+    /// Time of the first impact in the file's time (after units); detected if absent.
+    pub impact_at: Option<f64>,
+    /// Which track (Tracker) or column prefix holds the ball's centre, e.g. "mass A"
+    /// [default: a track named centre/center/ball, else the first].
+    pub centre: Option<String>,
+    /// Which track holds the mark on its rim, e.g. "mass B" [default: a track named
+    /// mark/rim/spot, else the second; none: v_t is not measured].
+    pub mark: Option<String>,
+}

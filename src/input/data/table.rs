@@ -1,0 +1,195 @@
+//! The cells of a data file, read with the `csv` crate: the separator found in the
+//! first lines (tabs, else semicolons — then commas are decimal commas —, else commas,
+//! else runs of spaces), a byte-order mark, blank lines and `#` comments dropped
+//! (Tracker's `#multi:` kept), every row with the file's own line number for errors;
+//! and the helpers that read a cell: header names with their units, and numbers.
+
+use crate::input::units::{self, Dimension};
+
+/// How the cells of a line are separated.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Sep {
+    Tab,
+    Semicolon,
+    Comma,
+    /// Runs of spaces (Tracker's space-separated export).
+    Space,
+}
+
+impl Sep {
+    /// The separator of a file whose first lines are `lines`: a title line (Tracker's
+    /// track name) has none, so the first lines that have one decide.
+    fn of<'a>(lines: impl Iterator<Item = &'a str>) -> Sep {
+        let head: Vec<&str> = lines.take(5).collect();
+        let any = |c: char| head.iter().any(|l| l.contains(c));
+        if any('\t') {
+            Sep::Tab
+        } else if any(';') {
+            Sep::Semicolon
+        } else if any(',') {
+            Sep::Comma
+        } else {
+            Sep::Space
+        }
+    }
+}
+
+/// One row of a file: its line number (from 1) and its cells, trimmed.
+pub(crate) struct Row {
+    pub line: usize,
+    pub cells: csv::StringRecord,
+}
+
+impl Row {
+    /// Cell `i` without quotes and blanks; "" past the row's end.
+    pub fn cell(&self, i: usize) -> &str {
+        self.cells.get(i).map_or("", |c| c.trim().trim_matches('"'))
+    }
+
+    pub fn len(&self) -> usize {
+        self.cells.len()
+    }
+}
+
+/// A data file's rows, read lazily (a file may hold a million).
+pub(crate) struct Table {
+    pub sep: Sep,
+    /// The lines kept, one per row, separated by the separator.
+    text: String,
+    /// The file's line number of each kept line.
+    lines: Vec<usize>,
+}
+
+impl Table {
+    pub fn new(text: &str) -> Table {
+        // Spreadsheets often start a UTF-8 file with a byte-order mark.
+        let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+        let kept = || {
+            text.lines().enumerate().filter(|(_, l)| {
+                let l = l.trim_start();
+                !l.trim().is_empty()
+                    && (!l.starts_with('#') || l.to_lowercase().starts_with("#multi"))
+            })
+        };
+        let sep = Sep::of(kept().map(|(_, l)| l));
+        let mut out = String::with_capacity(text.len());
+        let mut lines = Vec::new();
+        for (n, line) in kept() {
+            if sep == Sep::Space {
+                // Runs of spaces are one separator: the csv reader splits on one byte.
+                out += &line.split_whitespace().collect::<Vec<_>>().join("\t");
+            } else {
+                out += line;
+            }
+            out.push('\n');
+            lines.push(n + 1);
+        }
+        Table {
+            sep,
+            text: out,
+            lines,
+        }
+    }
+
+    /// The rows in file order.
+    pub fn rows(&self) -> impl Iterator<Item = Row> + '_ {
+        let delimiter = match self.sep {
+            Sep::Tab | Sep::Space => b'\t',
+            Sep::Semicolon => b';',
+            Sep::Comma => b',',
+        };
+        let reader = csv::ReaderBuilder::new()
+            .delimiter(delimiter)
+            .has_headers(false)
+            .flexible(true)
+            .trim(csv::Trim::All)
+            .from_reader(self.text.as_bytes());
+        // Each kept line is one record (a quoted line break would shift the numbers,
+        // so the record's own line is looked up, not counted).
+        reader.into_records().filter_map(Result::ok).map(|cells| {
+            let k = cells.position().map_or(0, |p| p.line() as usize - 1);
+            Row {
+                line: self.lines.get(k).copied().unwrap_or(0),
+                cells,
+            }
+        })
+    }
+}
+
+/// A header cell in lower case, without quotes, blanks and a run prefix (Logger Pro
+/// and Graphical Analysis write `Latest: Time (s)`, `Run 1: X (m)`).
+pub(crate) fn clean(cell: &str) -> String {
+    let c = cell.trim().trim_matches('"').trim().to_lowercase();
+    match c.split_once(':') {
+        Some((_, name)) => name.trim().to_string(),
+        None => c,
+    }
+}
+
+/// The SI factor of a unit written after a column name: `(ms)`, `[cm/s]`, `/ms`,
+/// `_m_per_s`; `Some(None)` when there is none, `None` when it is not a unit of `dim`.
+pub(crate) fn unit_factor(rest: &str, dim: Dimension) -> Option<Option<f64>> {
+    let unit = rest
+        .trim()
+        .trim_start_matches(['_', '(', '[', '/', ' '])
+        .trim_end_matches([')', ']', ' '])
+        .replace("_per_", "/");
+    if unit.is_empty() {
+        return Some(None);
+    }
+    // Only a unit name counts: `t2`, `t_1` or `time0` are other columns, not times in
+    // units of 12, 11 or 10 s.
+    units::unit_factor(&unit, dim).ok().map(Some)
+}
+
+/// A number as video tools write it: `0.12`, `0,12` (decimal comma), `1.2e-3`,
+/// `3.200000000E-2`.
+pub(crate) fn number(cell: &str) -> Option<f64> {
+    let c = cell.trim().trim_matches('"');
+    c.parse::<f64>()
+        .ok()
+        .or_else(|| c.replace(',', ".").parse::<f64>().ok())
+        .filter(|v| v.is_finite())
+}
+
+/// True for a cell that marks a missing value: empty, or `NaN` as Tracker writes
+/// where it cannot differentiate (the first and last frames).
+pub(crate) fn missing(cell: &str) -> bool {
+    let c = cell.trim().trim_matches('"');
+    c.is_empty() || c.eq_ignore_ascii_case("nan")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rows_keep_their_line_numbers_and_quotes_go() {
+        let text = "\u{feff}# a comment\n\"Latest: Time (s)\",\"Latest: X (m)\"\r\n\r\n0,\"1.5\"\n# c\n0.1,2\n";
+        let t = Table::new(text);
+        assert_eq!(t.sep, Sep::Comma);
+        let rows: Vec<Row> = t.rows().collect();
+        assert_eq!(rows.len(), 3);
+        assert_eq!(
+            rows.iter().map(|r| r.line).collect::<Vec<_>>(),
+            vec![2, 4, 6]
+        );
+        assert_eq!(clean(rows[0].cell(0)), "time (s)");
+        assert_eq!(rows[1].cell(1), "1.5");
+    }
+
+    #[test]
+    fn the_separator_comes_from_the_lines_that_have_one() {
+        let t = Table::new("mass_A\nt\tx\ty\n0\t1,5\t2\n");
+        assert_eq!(t.sep, Sep::Tab);
+        let rows: Vec<Row> = t.rows().collect();
+        assert_eq!(rows[0].len(), 1);
+        assert_eq!(number(rows[2].cell(1)), Some(1.5));
+        let t = Table::new("t   x\n0  1\n");
+        assert_eq!(t.sep, Sep::Space);
+        assert_eq!(t.rows().nth(1).unwrap().cell(1), "1");
+        let t = Table::new("#multi:\nt;x\n0;1,5\n");
+        assert_eq!(t.sep, Sep::Semicolon);
+        assert_eq!(t.rows().next().unwrap().cell(0), "#multi:");
+    }
+}

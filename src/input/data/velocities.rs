@@ -1,0 +1,312 @@
+//! Reading a velocity file (t, v_cm, v_t by header name, units from the header or
+//! given): the direction of the motion found (a file recorded with x reversed is
+//! turned), the time origin moved to the first impact, and numbers that are plainly
+//! in other units than the header says named in the error.
+
+use super::options::{DataError, MAX_ROWS, Reading};
+use super::table::{Table, clean, number, unit_factor};
+use crate::input::units::Dimension;
+use crate::study::measured::Measured;
+
+/// Which quantity a velocity-file header cell names, and the SI factor its unit implies.
+fn column(header: &str) -> Option<(&'static str, Option<f64>)> {
+    let h = clean(header).replace(' ', "");
+    let (name, rest) = if let Some(r) = h.strip_prefix("v_cm").or(h.strip_prefix("vcm")) {
+        ("v_cm", r)
+    } else if let Some(r) = h.strip_prefix("v_t").or(h.strip_prefix("vt")) {
+        ("v_t", r)
+    } else if let Some(r) = h.strip_prefix("time").or(h.strip_prefix('t')) {
+        ("t", r)
+    } else {
+        return None;
+    };
+    // A unit in brackets ("t (ms)", "v_cm [cm/s]") or as a suffix ("t_s",
+    // "v_cm_m_per_s", "v_t_cm_per_s").
+    let dim = if name == "t" {
+        Dimension::Time
+    } else {
+        Dimension::Speed
+    };
+    unit_factor(rest, dim).map(|f| (name, f))
+}
+
+/// True when a header cell names v_cm: the file holds velocities.
+pub(super) fn names_v_cm(cell: &str) -> bool {
+    column(cell).is_some_and(|(n, _)| n == "v_cm")
+}
+
+#[cfg(test)]
+/// Parses `text` (the file named `file`) into a series with the impact at t = 0,
+/// moving toward the other ball (+x) before it.
+pub fn parse(text: &str, file: &str, reading: &Reading) -> Result<Measured, DataError> {
+    from_table(&Table::new(text), file, reading)
+}
+
+/// [`parse`] of a file already split into rows.
+pub(super) fn from_table(
+    table: &Table,
+    file: &str,
+    reading: &Reading,
+) -> Result<Measured, DataError> {
+    let err = |what: String| DataError {
+        file: file.to_string(),
+        what,
+    };
+    let mut rows = table.rows();
+    let header = rows
+        .next()
+        .ok_or_else(|| err("the file is empty, expected a header with t, v_cm and v_t".into()))?;
+    let find = |want: &str| {
+        (0..header.len()).find_map(|i| {
+            column(header.cell(i))
+                .filter(|(n, _)| *n == want)
+                .map(|(_, f)| (i, f))
+        })
+    };
+    let missing = |name: &str| {
+        let cells: Vec<&str> = (0..header.len()).map(|i| header.cell(i)).collect();
+        err(format!(
+            "line {}: no column '{name}' in the header '{}', expected columns t, v_cm and v_t (units in brackets or as options)",
+            header.line,
+            cells.join(" ")
+        ))
+    };
+    let (it, ft) = find("t").ok_or_else(|| missing("t"))?;
+    let (ic, fc) = find("v_cm").ok_or_else(|| missing("v_cm"))?;
+    let (iv, fv) = find("v_t").ok_or_else(|| missing("v_t"))?;
+    let units = Units {
+        time: ft.or(reading.time_unit),
+        v_cm: fc.or(reading.speed_unit),
+        v_t: fv.or(reading.speed_unit),
+    };
+    let (mut t, mut v_cm, mut v_t) = (Vec::new(), Vec::new(), Vec::new());
+    for row in rows {
+        if t.len() == MAX_ROWS {
+            return Err(err(format!(
+                "line {}: more than {MAX_ROWS} data rows, allowed at most {MAX_ROWS}",
+                row.line
+            )));
+        }
+        let get = |i: usize, name: &str| {
+            let cell = row.cell(i);
+            number(cell).ok_or_else(|| {
+                err(format!(
+                    "line {}: {name} = '{cell}' is not a finite number",
+                    row.line
+                ))
+            })
+        };
+        let time = get(it, "t")? * units.time.unwrap_or(1.0);
+        if let Some(&prev) = t.last()
+            && time <= prev
+        {
+            return Err(err(format!(
+                "line {}: t = {time} s does not increase (previous {prev} s), allowed strictly increasing times",
+                row.line
+            )));
+        }
+        t.push(time);
+        v_cm.push(get(ic, "v_cm")? * units.v_cm.unwrap_or(1.0));
+        v_t.push(get(iv, "v_t")? * units.v_t.unwrap_or(1.0));
+    }
+    if t.len() < 3 {
+        return Err(err(format!("{} data rows, allowed at least 3", t.len())));
+    }
+    // A file recorded with x pointing away from the other ball: turned, so that the
+    // ball approaches toward +x as in the model.
+    if approach_sign(&t, &v_cm, reading.impact_at) < 0.0 {
+        for v in v_cm.iter_mut().chain(v_t.iter_mut()) {
+            *v = -*v;
+        }
+    }
+    let impact = match reading.impact_at {
+        Some(at) => at,
+        None => detect_impact(&t, &v_cm).ok_or_else(|| {
+            err("no impact found (v_cm never drops sharply); give its time with --impact-at".into())
+        })?,
+    };
+    for x in &mut t {
+        *x -= impact;
+    }
+    // Huge but finite values can still overflow once scaled or shifted.
+    for (name, series) in [("t", &t), ("v_cm", &v_cm), ("v_t", &v_t)] {
+        if let Some(i) = series.iter().position(|v| !v.is_finite()) {
+            return Err(err(format!(
+                "data row {}: {name} is not finite once in SI units with the impact at t = 0, allowed finite values",
+                i + 1
+            )));
+        }
+    }
+    let m = Measured::velocities(t, v_cm, v_t);
+    m.check_magnitudes().map_err(err)?;
+    units.check_plausible(&m.t, &m.v_cm, &m.v_t).map_err(err)?;
+    Ok(m)
+}
+
+/// The SI factors of a file's columns; `None` where neither the header nor an option
+/// gave a unit (the numbers are then taken as SI).
+struct Units {
+    time: Option<f64>,
+    v_cm: Option<f64>,
+    v_t: Option<f64>,
+}
+
+/// Slowest frame rate a measurement of this experiment has (a frame a second), and
+/// the largest speed a ball in a groove reaches (m/s): numbers beyond them, with no
+/// unit said, are plainly in ms and cm/s.
+const LONGEST_FRAME: f64 = 1.0;
+const FASTEST_BALL: f64 = 10.0;
+
+impl Units {
+    /// Numbers taken as SI because no unit was said, which are plainly not SI: frames
+    /// a second or more apart (ms), speeds of 10 m/s or more (cm/s). The error says
+    /// what the numbers look like and which options read them.
+    fn check_plausible(&self, t: &[f64], v_cm: &[f64], v_t: &[f64]) -> Result<(), String> {
+        let mut spacing: Vec<f64> = t.windows(2).map(|w| w[1] - w[0]).collect();
+        spacing.sort_by(f64::total_cmp);
+        let frame = spacing[spacing.len() / 2];
+        let fastest = v_cm.iter().chain(v_t).fold(0.0_f64, |a, v| a.max(v.abs()));
+        let ms = self.time.is_none() && frame >= LONGEST_FRAME;
+        let cm = (self.v_cm.is_none() || self.v_t.is_none()) && fastest >= FASTEST_BALL;
+        let mut looks = Vec::new();
+        let mut flags = Vec::new();
+        if ms {
+            looks.push(format!(
+                "frames {} apart (as s: {:.1} frames/s; as ms: {:.0} frames/s)",
+                crate::input::units::significant(frame, 3),
+                1.0 / frame,
+                1e3 / frame
+            ));
+            flags.push("--time-unit ms");
+        }
+        if cm {
+            looks.push(format!(
+                "speeds up to {} (as m/s beyond any ball in a groove; as cm/s {} m/s)",
+                crate::input::units::significant(fastest, 3),
+                crate::input::units::significant(fastest / 100.0, 3)
+            ));
+            flags.push("--speed-unit cm/s");
+        }
+        if looks.is_empty() {
+            return Ok(());
+        }
+        Err(format!(
+            "the header gives no units and the numbers do not look like s and m/s: {}; if they are ms and cm/s, give {} (or units in the header: t (ms), v_cm (cm/s), v_t (cm/s))",
+            looks.join(", "),
+            flags.join(" ")
+        ))
+    }
+}
+
+/// +1 when the ball approaches the other toward the file's +x, −1 when toward −x: the
+/// sign of the mean v_cm before the impact (given), else over the first fifth of the
+/// frames (a recording starts with the approach).
+fn approach_sign(t: &[f64], v_cm: &[f64], impact_at: Option<f64>) -> f64 {
+    let n = match impact_at {
+        Some(at) => t.partition_point(|&x| x < at),
+        None => v_cm.len().div_ceil(5),
+    };
+    let sum: f64 = v_cm[..n.clamp(1, v_cm.len())].iter().sum();
+    if sum < 0.0 { -1.0 } else { 1.0 }
+}
+
+/// The first impact: where v_cm drops the most between neighbouring frames (the left
+/// ball reverses), if the drop is at least a third of the speed before it. When the
+/// drop is spread over two frames, the frame in between straddles the impact (the
+/// paper's convention) and is the impact time; otherwise the impact is put mid-way.
+pub fn detect_impact(t: &[f64], v_cm: &[f64]) -> Option<f64> {
+    let drops: Vec<f64> = v_cm.windows(2).map(|w| w[0] - w[1]).collect();
+    let (i, &drop) = drops.iter().enumerate().max_by(|a, b| a.1.total_cmp(b.1))?;
+    if drop <= 0.0 || drop < v_cm[i].abs().max(v_cm[i + 1].abs()) / 3.0 {
+        return None;
+    }
+    let big = |j: Option<usize>| {
+        j.and_then(|j| drops.get(j))
+            .is_some_and(|&d| d >= drop / 3.0)
+    };
+    Some(if big(i.checked_sub(1)) {
+        t[i]
+    } else if big(Some(i + 1)) {
+        t[i + 1]
+    } else {
+        0.5 * (t[i] + t[i + 1])
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reads_the_shared_format_and_finds_the_impact() {
+        let text = "t_s,v_cm_m_per_s,v_t_m_per_s\n-0.02,0.79,0.78\n0,0.0925,0.78\n0.02,-0.64,0.70\n0.04,-0.63,0.68\n";
+        let m = parse(text, "x.csv", &Reading::default()).unwrap();
+        assert_eq!(m.t, vec![-0.02, 0.0, 0.02, 0.04]);
+        assert_eq!(m.v_cm[2], -0.64);
+    }
+
+    #[test]
+    fn semicolons_decimal_commas_and_units_in_brackets() {
+        let text = "time (ms);v_cm (cm/s);v_t [cm/s]\n0;79,5;78\n10;80;78\n20;9;78\n30;-64;70\n";
+        let m = parse(text, "x.csv", &Reading::default()).unwrap();
+        // Impact in the frame at 20 ms (v_cm mid-way): that becomes t = 0.
+        assert!((m.t[0] + 0.02).abs() < 1e-12, "{:?}", m.t);
+        assert!((m.v_cm[0] - 0.795).abs() < 1e-12);
+    }
+
+    #[test]
+    fn digits_after_a_column_name_are_not_a_unit() {
+        // Once `t2` meant "t in units of 12 s".
+        for header in ["t2,v_cm,v_t", "t_1,v_cm,v_t", "time0,v_cm,v_t"] {
+            let text = format!("{header}\n0,1,1\n0.01,1,1\n0.02,-1,1\n");
+            let e = parse(&text, "d.csv", &Reading::default()).unwrap_err();
+            assert!(e.to_string().contains("no column 't'"), "{header}: {e}");
+        }
+        assert_eq!(column("t_ms"), Some(("t", Some(1e-3))));
+        assert_eq!(column("v_cm (cm/s)"), Some(("v_cm", Some(0.01))));
+        assert_eq!(column("v_t7"), None);
+        assert_eq!(column("t e5"), None);
+    }
+
+    #[test]
+    fn a_byte_order_mark_is_ignored() {
+        let text = "\u{feff}t_s,v_cm_m_per_s,v_t_m_per_s\n-0.02,0.79,0.78\n0,0.0925,0.78\n0.02,-0.64,0.70\n0.04,-0.63,0.68\n";
+        let m = parse(text, "x.csv", &Reading::default()).unwrap();
+        assert_eq!(m.t, vec![-0.02, 0.0, 0.02, 0.04]);
+    }
+
+    #[test]
+    fn row_limit_and_overflow_are_errors() {
+        let mut text = String::from("t,v_cm,v_t\n");
+        for i in 0..=MAX_ROWS {
+            text.push_str(&format!("{i},1,1\n"));
+        }
+        let e = parse(&text, "d.csv", &Reading::default()).unwrap_err();
+        assert!(e.to_string().contains("at most 1000000"), "{e}");
+        let r = Reading {
+            impact_at: Some(-1.7e308),
+            ..Reading::default()
+        };
+        let e = parse("t,v_cm,v_t\n0,1,1\n1e308,1,1\n1.5e308,1,1\n", "d.csv", &r).unwrap_err();
+        assert!(e.to_string().contains("not finite"), "{e}");
+    }
+
+    #[test]
+    fn errors_name_the_line() {
+        let bad = [
+            ("t,v_cm\n0,1\n", "no column 'v_t'"),
+            ("t,v_cm,v_t\n0,1,1\n0.01,x,1\n", "line 3: v_cm = 'x'"),
+            ("t,v_cm,v_t\n0,1,1\n", "1 data rows"),
+            (
+                "t,v_cm,v_t\n0,1,1\n0.02,1,1\n0.01,1,1\n",
+                "line 4: t = 0.01 s does not increase",
+            ),
+            ("t,v_cm,v_t\n0,1,1\n0.01,NaN,1\n0.02,1,1\n", "line 3"),
+            ("", "empty"),
+        ];
+        for (text, want) in bad {
+            let e = parse(text, "d.csv", &Reading::default()).unwrap_err();
+            assert!(e.to_string().contains(want), "{e} / {want}");
+        }
+    }
+}

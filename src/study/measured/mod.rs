@@ -1,0 +1,95 @@
+//! Measured data for a scene. A reader (`input::data`) gives a [`RawSeries`];
+//! [`prepare`] derives what does not depend on the scene once (a position track's
+//! velocities and spin rate, by `track`); [`for_scene`] is the pure, cheap step that
+//! the lab runs on every scene change: a track's v_t from the scene's contact radius
+//! r = kR, the rest band, and the ghost ball's track (`ghost`).
+
+mod ghost;
+pub mod series;
+pub mod track;
+
+use std::sync::Arc;
+
+pub use series::{Measured, RawSeries, Track};
+pub use track::{Derive, Found, TrackError};
+
+use crate::physics::scene::Scene;
+
+/// A measured series ready for any scene.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Series {
+    /// Velocities measured as such (a velocity file, a preset's data): v_t is given.
+    Velocities(Arc<Measured>),
+    /// Velocities derived from a position track: `v_t` and `v_t_sigma` hold the spin
+    /// rate dθ/dt and its uncertainty (rad/s) until a scene gives r.
+    Track(Arc<Measured>, Found),
+}
+
+impl Series {
+    /// What the derivation found in a position track; `None` for velocities.
+    pub fn found(&self) -> Option<&Found> {
+        match self {
+            Series::Velocities(_) => None,
+            Series::Track(_, found) => Some(found),
+        }
+    }
+}
+
+/// Derives a raw series' velocities as far as the scene does not enter: a position
+/// track's impact, direction, v_cm and spin rate (`track::derive` with r = 1).
+pub fn prepare(raw: RawSeries, opts: &Derive) -> Result<Series, TrackError> {
+    Ok(match raw {
+        RawSeries::Velocities(m) => Series::Velocities(Arc::new(m)),
+        RawSeries::Positions(t) => {
+            let (m, found) = track::derive(&t, 1.0, opts)?;
+            Series::Track(Arc::new(m), found)
+        }
+    })
+}
+
+/// A measured series as seen in one scene.
+#[derive(Clone, Debug, PartialEq)]
+pub struct InScene {
+    /// The left ball's velocities: a track's v_t with this scene's r.
+    pub measured: Arc<Measured>,
+    /// Speeds within ± this of zero cannot be told from rest (`fit::rest_band`).
+    pub rest_band: f64,
+    /// The measured ball's centre at each measured time, model's x (`ghost`).
+    ghost: Vec<f64>,
+}
+
+/// The series `series` in `scene`: pure, and cheap beside a solve (one pass over the
+/// points), so the lab calls it on every scene change.
+pub fn for_scene(series: &Series, scene: &Scene) -> InScene {
+    let measured = match series {
+        Series::Velocities(m) => m.clone(),
+        Series::Track(m, _) => {
+            let r = scene.k() * scene.radius;
+            let scale = |v: &[f64]| v.iter().map(|w| w * r).collect::<Vec<f64>>();
+            Arc::new(Measured {
+                v_t: scale(&m.v_t),
+                v_t_sigma: m.v_t_sigma.as_deref().map(scale),
+                ..(**m).clone()
+            })
+        }
+    };
+    InScene {
+        rest_band: crate::study::fit::rest_band(&measured),
+        ghost: ghost::track(&measured, scene.radius),
+        measured,
+    }
+}
+
+impl InScene {
+    /// Where the measured left ball's centre is at `t`, model's x; `None` outside the
+    /// series.
+    pub fn ghost_x(&self, t: f64) -> Option<f64> {
+        ghost::x_at(&self.measured, &self.ghost, t)
+    }
+
+    /// How far the tracked rim mark has turned since the first impact at `t`, rad;
+    /// `None` without a mark or outside the series.
+    pub fn ghost_turn(&self, t: f64) -> Option<f64> {
+        ghost::turn_at(&self.measured, t)
+    }
+}

@@ -1,0 +1,104 @@
+//! The measured series themselves, as plain data in SI units: what a reader makes of a
+//! file ([`RawSeries`]: velocities, or a position track in the file's own frame) and
+//! the left ball's velocities the fits and views use ([`Measured`]).
+
+/// What a data file holds, as read: nothing here depends on the scene.
+#[derive(Clone, Debug, PartialEq)]
+pub enum RawSeries {
+    /// Velocities (t, v_cm, v_t), impact at t = 0.
+    Velocities(Measured),
+    /// Positions of the centre (and a rim mark) in the file's frame; the velocities are
+    /// derived by `measured::track` (v_t needs the scene's contact radius).
+    Positions(Track),
+}
+
+/// A measured series of the left ball: time (s, first impact at 0), v_cm and v_t (m/s).
+///
+/// Velocity files fill `t`, `v_cm` and `v_t` only. A series derived from a position
+/// track (`study::track`) also carries each derived point's standard uncertainty and
+/// the tracked positions; its `v_t` is NaN where no rim mark was tracked.
+#[derive(Clone, Debug, Default, PartialEq, serde::Serialize)]
+pub struct Measured {
+    pub t: Vec<f64>,
+    pub v_cm: Vec<f64>,
+    pub v_t: Vec<f64>,
+    /// Standard uncertainty of each `v_cm`, m/s (from the local fit's residuals).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub v_cm_sigma: Option<Vec<f64>>,
+    /// Standard uncertainty of each `v_t`, m/s (NaN where `v_t` is).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub v_t_sigma: Option<Vec<f64>>,
+    /// The tracked centre, m: its displacement from where it was at the first impact,
+    /// positive toward the other ball (the model's left ball is at `x − R`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub x: Option<Vec<f64>>,
+    /// The rim mark's angle about the centre, rad, from its angle at the first impact,
+    /// signed like the spin (`d angle/dt · r = v_t`); NaN where the mark is missing.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub angle: Option<Vec<f64>>,
+}
+
+impl Measured {
+    /// A velocity series without uncertainties or positions.
+    pub fn velocities(t: Vec<f64>, v_cm: Vec<f64>, v_t: Vec<f64>) -> Measured {
+        Measured {
+            t,
+            v_cm,
+            v_t,
+            ..Measured::default()
+        }
+    }
+
+    /// A lab measurement's numbers stay within lab sizes: times within ±1e6 s, speeds
+    /// within ±1000 m/s, positions within ±1000 m (NaN marks a missing value). Beyond
+    /// them a series is not a measurement of this experiment, and squares of its
+    /// numbers (residuals, energies) would overflow.
+    pub fn check_magnitudes(&self) -> Result<(), String> {
+        let series: [(&str, Option<&[f64]>, f64, &str); 5] = [
+            ("t", Some(&self.t), 1e6, "1e6 s"),
+            ("v_cm", Some(&self.v_cm), 1e3, "1000 m/s"),
+            ("v_t", Some(&self.v_t), 1e3, "1000 m/s"),
+            ("x", self.x.as_deref(), 1e3, "1000 m"),
+            ("angle", self.angle.as_deref(), 1e9, "1e9 rad"),
+        ];
+        for (name, values, limit, text) in series {
+            if let Some((i, v)) = values
+                .into_iter()
+                .flatten()
+                .enumerate()
+                .find(|(_, v)| v.abs() > limit)
+            {
+                return Err(format!(
+                    "{name} = {v:e} (point {}) is out of range, allowed |{name}| ≤ {text}",
+                    i + 1
+                ));
+            }
+        }
+        Ok(())
+    }
+
+    /// True when at least one v_t was measured (a velocity file, or a track with a mark).
+    pub fn has_v_t(&self) -> bool {
+        self.v_t.iter().any(|v| v.is_finite())
+    }
+}
+
+/// A position track in the file's own frame (origin, axis directions and time origin
+/// as the user set them), SI units. Rows without a time are dropped; a missing cell
+/// is NaN.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Track {
+    /// Times, s, strictly increasing.
+    pub t: Vec<f64>,
+    /// The ball's centre, m.
+    pub x: Vec<f64>,
+    /// All NaN when the file has no y column for the centre.
+    pub y: Vec<f64>,
+    /// A mark on the ball's rim (x, y), m, when the file has one.
+    pub mark: Option<(Vec<f64>, Vec<f64>)>,
+    /// Name of the centre's track ("" for a plain `x, y` file).
+    pub centre_name: String,
+    pub mark_name: Option<String>,
+    /// The format found: "Tracker multi-track", "Tracker single-track" or "CSV".
+    pub format: &'static str,
+}
