@@ -35,10 +35,12 @@ pub struct Cli {
 /// Measured data from a file, for `fit`, the app and `render`.
 #[derive(Args, Debug, Clone, Default)]
 pub struct DataArgs {
-    /// A CSV of the left ball: columns t, v_cm, v_t found by header (comma or
-    /// semicolon, decimal commas allowed) [default: the preset's series].
+    /// A file of the left ball: velocities (t, v_cm, v_t) or a position track (Tracker,
+    /// Logger Pro, CSV/TSV with t, x, y), columns found by header. Given twice: two
+    /// one-track exports, the ball's centre then its rim mark, matched by time
+    /// [default: the preset's series].
     #[arg(long, value_name = "FILE", global = true)]
-    pub data: Option<std::path::PathBuf>,
+    pub data: Vec<std::path::PathBuf>,
     /// Time unit of the file when its header gives none (e.g. ms) [default: s].
     #[arg(long, value_name = "UNIT", global = true)]
     pub time_unit: Option<String>,

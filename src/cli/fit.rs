@@ -41,11 +41,24 @@ pub fn load(
 /// The `--data` file read, its velocities derived as far as no scene enters; `None`
 /// without `--data`.
 pub fn load_series(args: &DataArgs) -> Result<Option<Series>, CliError> {
-    let Some(path) = &args.data else {
-        return Ok(None);
+    let texts = match args.data.as_slice() {
+        [] => return Ok(None),
+        [_] | [_, _] => args
+            .data
+            .iter()
+            .map(|path| {
+                crate::input::read_user_file(path, "--data", crate::input::MAX_FILE_BYTES)
+                    .map(|text| (path.display().to_string(), text))
+                    .map_err(|e| CliError::Invalid(e.to_string()))
+            })
+            .collect::<Result<Vec<_>, _>>()?,
+        more => {
+            return Err(CliError::Invalid(format!(
+                "--data given {} times, allowed once (one file) or twice (the centre's track, then the rim mark's)",
+                more.len()
+            )));
+        }
     };
-    let text = crate::input::read_user_file(path, "--data", crate::input::MAX_FILE_BYTES)
-        .map_err(|e| CliError::Invalid(e.to_string()))?;
     let unit = |text: &Option<String>, dim: Dimension, flag: &str| {
         text.as_ref()
             .map(|u| unit_factor(u, dim).map_err(|e| CliError::Invalid(format!("{flag} {u}: {e}"))))
@@ -78,9 +91,13 @@ pub fn load_series(args: &DataArgs) -> Result<Option<Series>, CliError> {
         half_window: args.window,
         ..Derive::default()
     };
-    let file = path.display().to_string();
-    let series = crate::input::data::load(&text, &file, &reading, &derive)
-        .map_err(|e| CliError::Invalid(e.to_string()))?;
+    let series = match texts.as_slice() {
+        [(file, text)] => crate::input::data::load(text, file, &reading, &derive),
+        [centre, mark] => crate::input::data::load_pair(centre, mark, &reading, &derive),
+        _ => unreachable!("one or two files"),
+    }
+    .map_err(|e| CliError::Invalid(e.to_string()))?;
+    let file = texts[0].0.clone();
     let m = match &series {
         Series::Velocities(m) | Series::Track(m, _) => m,
     };
@@ -100,12 +117,38 @@ struct FitJson<'a> {
     /// For a position track: what was found in it (impact, direction, window).
     #[serde(skip_serializing_if = "Option::is_none")]
     track: Option<&'a Found>,
+    /// The values that are null because the data cannot give them, and why.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    not_measured: Vec<NotMeasured>,
+}
+
+/// A value the data cannot give (JSON null), and why.
+#[derive(Serialize)]
+struct NotMeasured {
+    quantity: &'static str,
+    reason: &'static str,
+}
+
+/// The line fit's values that are null for `fits`: a_t and μ_k,t without a rim mark.
+fn not_measured(fits: &Fits) -> Vec<NotMeasured> {
+    let l = &fits.line_fit;
+    let reason = "no rim mark was tracked: v_t is not measured";
+    [
+        ("line_fit.a_t", l.a_t),
+        ("line_fit.a_t_se", l.a_t_se),
+        ("line_fit.mu_t", l.mu_t),
+        ("line_fit.mu_t_se", l.mu_t_se),
+    ]
+    .into_iter()
+    .filter(|(_, v)| !v.is_finite())
+    .map(|(quantity, _)| NotMeasured { quantity, reason })
+    .collect()
 }
 
 pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<String, CliError> {
     // A data file names no scene: fitting it in the default preset's groove would be
     // a silent guess (and compare with the wrong row of the paper).
-    if let Some(path) = &data.data
+    if let Some(path) = data.data.first()
         && scene_args.preset.is_none()
         && scene_args.values.given().next().is_none()
     {
@@ -155,13 +198,14 @@ pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<St
                 fits: &fits,
                 position_fit: position.as_ref(),
                 track: found.as_ref(),
+                not_measured: not_measured(&fits),
             })
             .expect("plain data serializes");
             s.push('\n');
             s
         }
         FitFormat::Table => {
-            let own = data.data.is_none();
+            let own = data.data.is_empty();
             let mut out = scene_line(&preset, scene_args, &scene);
             out += &match (&found, &position) {
                 (Some(found), Some(position)) => track_table(&scene, &fits, found, position, own),
@@ -224,10 +268,19 @@ fn table(scene: &Scene, f: &Fits, paper_data: bool) -> String {
         "{:<12} {:>14} {:>9} {:>11} {:>14} {:>9} {:>11}",
         "", "|a_cm| m/s²", "μ_k,cm", "|F_net| N", "|a_t| m/s²", "μ_k,t", "|τ_net| N m"
     );
+    // Without a rim mark a_t and μ_k,t are not measured: said in words, never NaN.
+    let (a_t, mu_t) = if l.a_t.is_finite() && l.mu_t.is_finite() {
+        (
+            format!("{:>6.2} ± {:<5.2}", l.a_t, l.a_t_se),
+            format!("{:.3}", l.mu_t),
+        )
+    } else {
+        ("not measured".to_string(), "–".to_string())
+    };
     let _ = writeln!(
         out,
-        "{:<12} {:>6.2} ± {:<5.2} {:>9.3} {:>11.3} {:>6.2} ± {:<5.2} {:>9.3} {:>11.4}",
-        "this fit", l.a_cm, l.a_cm_se, l.mu_cm, l.f_net, l.a_t, l.a_t_se, l.mu_t, l.tau_net
+        "{:<12} {:>6.2} ± {:<5.2} {:>9.3} {:>11.3} {:>14} {:>9} {:>11.4}",
+        "this fit", l.a_cm, l.a_cm_se, l.mu_cm, l.f_net, a_t, mu_t, l.tau_net
     );
     if let Some(p) = fit::paper_row(scene.width).filter(|_| paper_data) {
         let _ = writeln!(

@@ -94,7 +94,7 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
     };
     let d = &cli.data;
     let data_given = [
-        ("--data", d.data.is_some()),
+        ("--data", !d.data.is_empty()),
         ("--time-unit", d.time_unit.is_some()),
         ("--speed-unit", d.speed_unit.is_some()),
         ("--impact-at", d.impact_at.is_some()),
@@ -118,7 +118,8 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
             flag.trim_start_matches('-').to_string(),
             "fit, render and the app",
         ))
-    } else if let (None, Some((flag, _))) = (&d.data, data_given.iter().find(|(_, g)| *g)) {
+    } else if let (true, Some((flag, _))) = (d.data.is_empty(), data_given.iter().find(|(_, g)| *g))
+    {
         // Only --data gives these a file to read.
         return Err(CliError::Invalid(format!(
             "{flag} describes a --data file and none is given, allowed only with --data FILE"

@@ -72,7 +72,8 @@ pub struct Lab {
     /// The x range (m) the balls cover over the span.
     pub extent: (f64, f64),
     /// RMS residuals of v_cm and v_t against the measured points.
-    pub data_rms: Option<(f64, f64)>,
+    /// (`None` for v_t when the series has none: a track without a rim mark).
+    pub data_rms: Option<(f64, Option<f64>)>,
     /// The measured series' rest band (speeds within it cannot be told from rest).
     pub rest_band: Option<f64>,
     /// The measured series, ready for any scene (a preset's, or `--data`).

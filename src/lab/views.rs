@@ -191,15 +191,18 @@ pub(super) fn extent(sol: &Solution, radius: f64) -> (f64, f64) {
 }
 
 /// RMS residuals of the left ball's v_cm and v_t against `m` (the frame that straddles
-/// the impact left out).
-pub(super) fn data_rms(sol: &Solution, m: &Measured) -> (f64, f64) {
-    let (mut sc, mut st, mut n) = (0.0, 0.0, 0usize);
+/// the impact left out; a v_t that was not measured left out, `None` if none was).
+pub(super) fn data_rms(sol: &Solution, m: &Measured) -> (f64, Option<f64>) {
+    let (mut sc, mut st, mut n, mut nt) = (0.0, 0.0, 0usize, 0usize);
     for i in (0..m.t.len()).filter(|&i| m.t[i].abs() >= 0.005) {
         let s = sol.at(m.t[i]);
         sc += (s.left.v - m.v_cm[i]).powi(2);
-        st += (s.left.u - m.v_t[i]).powi(2);
         n += 1;
+        if m.v_t[i].is_finite() {
+            st += (s.left.u - m.v_t[i]).powi(2);
+            nt += 1;
+        }
     }
-    let n = n.max(1) as f64;
-    ((sc / n).sqrt(), (st / n).sqrt())
+    let rms = |sum: f64, n: usize| (sum / n.max(1) as f64).sqrt();
+    (rms(sc, n), (nt > 0).then(|| rms(st, nt)))
 }

@@ -12,7 +12,7 @@ const EXAMPLE: &str = "docs/video/paper-b4.9-tracker.txt";
 
 fn data(extra: impl FnOnce(&mut DataArgs)) -> DataArgs {
     let mut d = DataArgs {
-        data: Some(EXAMPLE.into()),
+        data: vec![EXAMPLE.into()],
         ..DataArgs::default()
     };
     extra(&mut d);
@@ -199,6 +199,55 @@ fn charts_show_error_bars_and_the_fit_panel_both_fits() {
     assert!(ascii.contains('!'));
     assert!(ascii.is_ascii());
     insta::assert_snapshot!("render-tracked-video-120x40-ascii", ascii);
+}
+
+/// The screen `render` draws after `keys`, the status line's message left out (an
+/// edit in the app reports itself there; flags say nothing).
+fn screen(preset: &str, values: SceneSpec, file: Option<&str>, keys: &str) -> String {
+    let scene = SceneArgs {
+        preset: Some(preset.into()),
+        values,
+    };
+    let data = DataArgs {
+        data: file.into_iter().map(Into::into).collect(),
+        ..DataArgs::default()
+    };
+    let args = RenderArgs {
+        at: Some(0.1),
+        size: (120, 40),
+        keys: Some(keys.to_string()),
+    };
+    let text = render_with(&scene, &data, &args, false, no_user_presets()).unwrap();
+    text.lines()
+        .map(|l| match l.find("paused") {
+            Some(i) => &l[..i],
+            None => l,
+        })
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+#[test]
+fn the_same_scene_by_flags_or_by_keys_draws_the_same_screen() {
+    // R = 2.8 cm and b = 4.4 cm typed in the app (a bare number is in the row's unit,
+    // cm), then back on b, where the app starts; the same by flags.
+    let keys = "up enter 2 . 8 enter down enter 4 . 4 enter";
+    let flags = SceneSpec::default()
+        .with(Key::Radius, 0.028)
+        .with(Key::Width, 0.044);
+    for (preset, file) in [
+        // No data, a velocity series, a position track with a rim mark (its v_t
+        // follows r = kR).
+        ("inelastic", None),
+        ("paper-b4.9", Some("data/gs-b4.4cm.csv")),
+        ("paper-b4.9", Some(EXAMPLE)),
+    ] {
+        let by_flags = screen(preset, flags.clone(), file, "");
+        let by_keys = screen(preset, SceneSpec::default(), file, keys);
+        assert!(by_flags.contains("▸b            4.40 cm"), "{by_flags}");
+        assert!(by_flags.contains("R            2.80 cm"), "{by_flags}");
+        assert_eq!(by_keys, by_flags, "{preset} with {file:?}");
+    }
 }
 
 #[test]

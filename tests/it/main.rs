@@ -6,6 +6,7 @@ mod common;
 
 mod cli;
 mod closed_forms;
+mod data_files;
 mod fit;
 mod fuzz;
 mod lab_data;

@@ -20,7 +20,7 @@ fn app(preset: &str, values: SceneSpec, data: Option<&str>, keys_: &str) -> App 
         values,
     };
     let data = DataArgs {
-        data: data.map(Into::into),
+        data: data.into_iter().map(Into::into).collect(),
         ..DataArgs::default()
     };
     let dir = std::env::temp_dir().join(format!("groovelab-numbers-{}", std::process::id()));

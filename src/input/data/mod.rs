@@ -35,11 +35,40 @@ pub fn read_track(text: &str, file: &str, reading: &Reading) -> Result<Track, Da
     positions::parse(text, file, reading)
 }
 
-/// Reads a velocity file or a position track and derives what does not depend on the
-/// scene (`study::measured::prepare`); `study::measured::for_scene` then gives it for
-/// a scene. The time of the first impact, when given, is `reading.impact_at`.
-pub fn load(text: &str, file: &str, reading: &Reading, opts: &Derive) -> Result<Series, DataError> {
-    let raw = read(text, file, reading)?;
+/// Reads two one-track exports (Tracker writes one track per file), `centre` and
+/// `mark` as (file name, text), into one track: the mark's positions matched to the
+/// centre's frames by time; then as [`load`]. `reading.centre` and `reading.mark`
+/// name the track each file holds, if it holds several.
+pub fn load_pair(
+    centre: &(String, String),
+    mark: &(String, String),
+    reading: &Reading,
+    opts: &Derive,
+) -> Result<Series, DataError> {
+    let one = |(file, text): &(String, String), name: &Option<String>| {
+        let r = Reading {
+            centre: name.clone(),
+            mark: None,
+            ..reading.clone()
+        };
+        positions::from_table(&Table::new(text), file, &r)
+    };
+    let ball = one(centre, &reading.centre)?;
+    let rim = one(mark, &reading.mark)?;
+    let track = ball.with_mark(&rim).map_err(|what| DataError {
+        file: mark.0.clone(),
+        what,
+    })?;
+    prepare(RawSeries::Positions(track), &centre.0, reading, opts)
+}
+
+/// Derives what does not depend on the scene, errors naming `file`.
+fn prepare(
+    raw: RawSeries,
+    file: &str,
+    reading: &Reading,
+    opts: &Derive,
+) -> Result<Series, DataError> {
     let opts = Derive {
         impact_at: reading.impact_at.or(opts.impact_at),
         ..*opts
@@ -48,4 +77,11 @@ pub fn load(text: &str, file: &str, reading: &Reading, opts: &Derive) -> Result<
         file: file.to_string(),
         what: e.0,
     })
+}
+
+/// Reads a velocity file or a position track and derives what does not depend on the
+/// scene (`study::measured::prepare`); `study::measured::for_scene` then gives it for
+/// a scene. The time of the first impact, when given, is `reading.impact_at`.
+pub fn load(text: &str, file: &str, reading: &Reading, opts: &Derive) -> Result<Series, DataError> {
+    prepare(read(text, file, reading)?, file, reading, opts)
 }

@@ -102,3 +102,47 @@ pub struct Track {
     /// The format found: "Tracker multi-track", "Tracker single-track" or "CSV".
     pub format: &'static str,
 }
+
+impl Track {
+    /// This track (the ball's centre) with the centre of `other` as its rim mark, the
+    /// mark's frames matched to this track's by time (within a quarter of a frame; a
+    /// frame without a match is a missing mark). For two one-track exports of the same
+    /// video.
+    pub fn with_mark(mut self, other: &Track) -> Result<Track, String> {
+        let mut gaps: Vec<f64> = self.t.windows(2).map(|w| w[1] - w[0]).collect();
+        gaps.sort_by(f64::total_cmp);
+        let frame = gaps.get(gaps.len() / 2).copied().unwrap_or(f64::INFINITY);
+        let (mut mx, mut my) = (Vec::new(), Vec::new());
+        let mut matched = 0;
+        for &t in &self.t {
+            let j = other.t.partition_point(|&s| s < t - 0.25 * frame);
+            match other.t.get(j).filter(|&&s| (s - t).abs() <= 0.25 * frame) {
+                Some(_) => {
+                    matched += 1;
+                    mx.push(other.x[j]);
+                    my.push(other.y[j]);
+                }
+                None => {
+                    mx.push(f64::NAN);
+                    my.push(f64::NAN);
+                }
+            }
+        }
+        if matched == 0 {
+            return Err(format!(
+                "no frame of the mark's track at a time of the centre's (centre t = {} … {} s, mark t = {} … {} s), expected two tracks of the same video",
+                self.t.first().unwrap_or(&f64::NAN),
+                self.t.last().unwrap_or(&f64::NAN),
+                other.t.first().unwrap_or(&f64::NAN),
+                other.t.last().unwrap_or(&f64::NAN),
+            ));
+        }
+        self.mark = Some((mx, my));
+        self.mark_name = Some(other.centre_name.clone());
+        self.format = match self.format {
+            "Tracker single-track" => "two Tracker single-track files",
+            _ => "two files",
+        };
+        Ok(self)
+    }
+}

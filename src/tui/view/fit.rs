@@ -74,9 +74,14 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                     7,
                     Line::from(vec![
                         label("|a_t|  "),
-                        value(format!("{:.2}±{:.2} m/s{}", l.a_t, l.a_t_se, g.squared)),
-                        label(&format!("  {}_t ", g.mu)),
-                        value(format!("{:.3}", l.mu_t)),
+                        value(if l.a_t.is_finite() {
+                            format!(
+                                "{:.2}±{:.2} m/s{}  {}_t {:.3}",
+                                l.a_t, l.a_t_se, g.squared, g.mu, l.mu_t
+                            )
+                        } else {
+                            format!("and {}_t not measured (no rim mark)", g.mu)
+                        }),
                     ]),
                 ),
                 (

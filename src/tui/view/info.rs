@@ -139,8 +139,8 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         ]),
     ));
     // How far the model is from the measured points, if there are any.
-    if let Some((rms_cm, rms_t)) = app.lab.data_rms {
-        lines.push((
+    match app.lab.data_rms {
+        Some((rms_cm, Some(rms_t))) => lines.push((
             5,
             Line::from(vec![
                 label("data: RMS residual v_cm "),
@@ -148,7 +148,17 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                 label(", v_t "),
                 value(format!("{rms_t:.3} m/s")),
             ]),
-        ));
+        )),
+        // A track without a rim mark: no v_t to compare with, said in words.
+        Some((rms_cm, None)) => lines.push((
+            5,
+            Line::from(vec![
+                label("data: RMS v_cm "),
+                value(format!("{rms_cm:.3} m/s")),
+                label(", v_t not measured"),
+            ]),
+        )),
+        None => {}
     }
     // The state at the cursor, per ball.
     let now = sol.at(app.t);

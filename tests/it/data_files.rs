@@ -1,0 +1,305 @@
+//! A student's own files (issue 19), each made here by a generator from the exact
+//! solution with the truth known: Tracker's one-track export (alone, and the centre
+//! and the rim mark as two files), a Logger Pro / Graphical Analysis two-point export,
+//! a velocity file recorded with x reversed, and one without units in ms and cm/s.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use groovelab::input::preset::Preset;
+use groovelab::physics::engine;
+use groovelab::physics::scene::{Scene, Span};
+use groovelab::study::measured::Track;
+use groovelab::study::video::{self, Video};
+
+const MU: f64 = 0.17;
+
+fn scene() -> Scene {
+    Preset::load("paper-b4.9")
+        .unwrap()
+        .spec
+        .resolve()
+        .unwrap()
+        .0
+}
+
+fn scratch(test: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("groovelab-files-{}-{test}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn groovelab(args: &[&str]) -> (bool, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_groovelab"))
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.success(),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+fn fit_json(data: &[&Path], extra: &[&str]) -> serde_json::Value {
+    let mut args = vec!["fit", "--preset", "paper-b4.9", "--format", "json"];
+    for d in data {
+        args.extend(["--data", d.to_str().unwrap()]);
+    }
+    args.extend(extra);
+    let (ok, out, err) = groovelab(&args);
+    assert!(ok, "{err}");
+    serde_json::from_str(&out).unwrap()
+}
+
+/// A velocity from neighbouring positions, as Tracker computes it: none (NaN) at the
+/// first and last frames.
+fn central(t: &[f64], x: &[f64], i: usize) -> f64 {
+    if i == 0 || i + 1 == t.len() {
+        f64::NAN
+    } else {
+        (x[i + 1] - x[i - 1]) / (t[i + 1] - t[i - 1])
+    }
+}
+
+/// Tracker's Export Data of one track: the track's name with spaces as underscores,
+/// then `t x y v_x v_y`, tab-separated, scientific numbers, `NaN` where it cannot
+/// differentiate (the first and last rows; the last row's v_y left empty).
+fn tracker_export(name: &str, t: &[f64], x: &[f64], y: &[f64]) -> String {
+    let mut out = format!("{}\nt\tx\ty\tv_x\tv_y\n", name.replace(' ', "_"));
+    for i in 0..t.len() {
+        let (vx, vy) = (central(t, x, i), central(t, y, i));
+        let cell = |v: f64| {
+            if v.is_finite() {
+                format!("{v:.9E}")
+            } else {
+                "NaN".into()
+            }
+        };
+        let vy = if i + 1 == t.len() {
+            String::new()
+        } else {
+            cell(vy)
+        };
+        out += &format!(
+            "{}\t{}\t{}\t{}\t{vy}\n",
+            cell(t[i]),
+            cell(x[i]),
+            cell(y[i]),
+            cell(vx)
+        );
+    }
+    out
+}
+
+/// The synthetic video of the preset's scene, centre and rim mark.
+fn video_track(seed: u64) -> Track {
+    video::track(
+        &scene(),
+        &Video {
+            seed,
+            noise: 2e-4,
+            ..Video::default()
+        },
+    )
+}
+
+#[test]
+fn a_tracker_one_track_export_reads_its_positions_only() {
+    let track = video_track(3);
+    let dir = scratch("tracker-one");
+    let ball = dir.join("ball.txt");
+    std::fs::write(
+        &ball,
+        tracker_export("mass A", &track.t, &track.x, &track.y),
+    )
+    .unwrap();
+    let j = fit_json(&[&ball], &[]);
+    // The velocity columns are not taken for a rim mark: the centre alone.
+    assert_eq!(j["track"]["format"], "Tracker single-track");
+    assert_eq!(j["track"]["centre"], "mass_A");
+    assert!(j["track"]["mark"].is_null(), "{}", j["track"]);
+    assert_eq!(j["track"]["frames"].as_u64(), Some(track.t.len() as u64));
+    let mu = j["position_fit"]["mu"].as_f64().unwrap();
+    assert!((mu - MU).abs() < 0.003, "μ_k = {mu}");
+    // What a centre alone cannot give is null with a reason, and never NaN on screen.
+    assert!(j["line_fit"]["mu_t"].is_null());
+    let why = j["not_measured"].as_array().unwrap();
+    assert!(
+        why.iter().any(|w| w["quantity"] == "line_fit.mu_t"
+            && w["reason"].as_str().unwrap().contains("no rim mark")),
+        "{why:?}"
+    );
+    let f = ball.to_str().unwrap();
+    let (ok, table, err) = groovelab(&["fit", "--preset", "paper-b4.9", "--data", f]);
+    assert!(ok, "{err}");
+    assert!(
+        !table.contains("NaN") && table.contains("not measured"),
+        "{table}"
+    );
+    for keys in ["", "f"] {
+        let (ok, screen, err) = groovelab(&[
+            "render",
+            "--preset",
+            "paper-b4.9",
+            "--data",
+            f,
+            "--keys",
+            keys,
+        ]);
+        assert!(ok, "{err}");
+        assert!(!screen.contains("NaN"), "keys '{keys}':\n{screen}");
+        assert!(screen.contains("not measured"), "keys '{keys}':\n{screen}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn the_centre_and_the_mark_as_two_tracker_files() {
+    let track = video_track(4);
+    let (mx, my) = track.mark.clone().unwrap();
+    let dir = scratch("tracker-two");
+    let (ball, mark) = (dir.join("ball.txt"), dir.join("mark.txt"));
+    std::fs::write(&ball, tracker_export("ball", &track.t, &track.x, &track.y)).unwrap();
+    // The mark's file starts two frames later: matched by time, not by row.
+    std::fs::write(
+        &mark,
+        tracker_export("rim mark", &track.t[2..], &mx[2..], &my[2..]),
+    )
+    .unwrap();
+    let j = fit_json(&[&ball, &mark], &[]);
+    assert_eq!(j["track"]["format"], "two Tracker single-track files");
+    assert_eq!(j["track"]["mark"], "rim_mark");
+    let r = j["track"]["mark_radius"].as_f64().unwrap();
+    assert!((r - scene().radius).abs() < 1e-3, "mark radius {r}");
+    let mu = j["position_fit"]["mu"].as_f64().unwrap();
+    assert!((mu - MU).abs() < 0.003, "μ_k = {mu}");
+    // v_t is measured now: the line fit's μ_k,t is a number.
+    assert!(
+        j["line_fit"]["mu_t"].as_f64().is_some(),
+        "{}",
+        j["line_fit"]
+    );
+    // The app and render take the pair as well.
+    let (ok, screen, err) = groovelab(&[
+        "render",
+        "--preset",
+        "paper-b4.9",
+        "--data",
+        ball.to_str().unwrap(),
+        "--data",
+        mark.to_str().unwrap(),
+        "--at",
+        "0.1",
+    ]);
+    assert!(ok, "{err}");
+    assert!(screen.contains("measured ball"), "{screen}");
+    // A third file is refused in one line.
+    let (ok, _, err) = groovelab(&[
+        "fit",
+        "--preset",
+        "paper-b4.9",
+        "--data",
+        ball.to_str().unwrap(),
+        "--data",
+        mark.to_str().unwrap(),
+        "--data",
+        mark.to_str().unwrap(),
+    ]);
+    assert!(!ok && err.contains("--data given 3 times"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_logger_pro_two_point_export_gives_centre_and_mark() {
+    let track = video_track(5);
+    let (mx, my) = track.mark.clone().unwrap();
+    let mut text = String::from(
+        "\"Latest: Time (s)\",\"Latest: X (m)\",\"Latest: Y (m)\",\"Latest: X2 (m)\",\"Latest: Y2 (m)\"\r\n",
+    );
+    for i in 0..track.t.len() {
+        text += &format!(
+            "{:.4},{:.5},{:.5},{:.5},{:.5}\r\n",
+            track.t[i], track.x[i], track.y[i], mx[i], my[i]
+        );
+    }
+    let dir = scratch("loggerpro");
+    let file = dir.join("run.csv");
+    std::fs::write(&file, &text).unwrap();
+    let j = fit_json(&[&file], &[]);
+    assert_eq!(j["track"]["format"], "Logger Pro / Graphical Analysis");
+    assert_eq!(j["track"]["mark"], "point 2");
+    let mu = j["position_fit"]["mu"].as_f64().unwrap();
+    assert!((mu - MU).abs() < 0.003, "μ_k = {mu}");
+    // "Run 1:" is a run prefix as well.
+    std::fs::write(&file, text.replace("Latest:", "Run 1:")).unwrap();
+    let j = fit_json(&[&file], &[]);
+    assert_eq!(j["track"]["mark"], "point 2");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The exact left ball's v_cm and v_t at 100 frames/s from −0.1 s to 0.5 s, the frame
+/// at the impact left out.
+fn velocities() -> Vec<(f64, f64, f64)> {
+    let s = scene();
+    let sol = engine::solve(
+        &s,
+        &Span {
+            t_start: -0.2,
+            t_end: Some(0.6),
+        },
+    );
+    (-10..=50)
+        .filter(|&k| k != 0)
+        .map(|k| {
+            let t = k as f64 * 0.01;
+            let st = sol.at(t);
+            (t, st.left.v, st.left.u)
+        })
+        .collect()
+}
+
+#[test]
+fn a_velocity_file_recorded_with_x_reversed_is_turned() {
+    let dir = scratch("reversed");
+    let file = dir.join("reversed.csv");
+    let mut text = String::from("t (s),v_cm (m/s),v_t (m/s)\n");
+    for (t, v, u) in velocities() {
+        text += &format!("{:.3},{:.5},{:.5}\n", t + 1.0, -v, -u);
+    }
+    std::fs::write(&file, &text).unwrap();
+    let j = fit_json(&[&file], &[]);
+    let mu = j["model_fit"]["mu"].as_f64().unwrap();
+    assert!((mu - MU).abs() < 0.002, "μ_k = {mu}");
+    // With the impact given, too (once an overflow error).
+    let j = fit_json(&[&file], &["--impact-at", "1"]);
+    let mu = j["model_fit"]["mu"].as_f64().unwrap();
+    assert!((mu - MU).abs() < 0.002, "μ_k = {mu}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_header_without_units_over_ms_and_cm_per_s_names_the_options() {
+    let dir = scratch("unitless");
+    let file = dir.join("unitless.csv");
+    let mut text = String::from("t,v_cm,v_t\n");
+    for (t, v, u) in velocities() {
+        text += &format!("{:.1},{:.3},{:.3}\n", 1e3 * t, 100.0 * v, 100.0 * u);
+    }
+    std::fs::write(&file, &text).unwrap();
+    let f = file.to_str().unwrap();
+    let (ok, out, err) = groovelab(&["fit", "--preset", "paper-b4.9", "--data", f]);
+    assert!(!ok && out.is_empty());
+    assert!(
+        err.contains("frames 10 apart")
+            && err.contains("speeds up to")
+            && err.contains("--time-unit ms --speed-unit cm/s")
+            && err.lines().count() == 1,
+        "{err}"
+    );
+    // Following the advice fits the truth.
+    let j = fit_json(&[&file], &["--time-unit", "ms", "--speed-unit", "cm/s"]);
+    let mu = j["model_fit"]["mu"].as_f64().unwrap();
+    assert!((mu - MU).abs() < 0.002, "μ_k = {mu}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
