@@ -37,6 +37,9 @@ const VALUE_W: usize = 11;
 pub fn value_text(app: &App, key: Key) -> String {
     let v = app.lab.value(key);
     let s = &app.lab.scene;
+    if key == Key::Width && app.hide_b {
+        return "hidden".into();
+    }
     if key == Key::V0 && s.left.v0 != s.right.v0 {
         // One control for both balls: it sets both, and says when they differ.
         return "differ".into();
@@ -75,6 +78,11 @@ pub fn note(app: &App, key: Key, room: usize) -> String {
         (!n.starts_with('#')).then(|| format!("{label} {n}"))
     };
     let text = match key {
+        // b/R and k would give b away; b* does not depend on b.
+        Key::Width | Key::Radius if app.hide_b => d
+            .b_star
+            .and_then(|b| pair("b*", b * 100.0, 2, room))
+            .filter(|_| key == Key::Width),
         Key::Width => {
             let star = match d.b_star {
                 None => Some("no b*".to_string()).filter(|s| s.len() <= room),
