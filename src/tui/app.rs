@@ -109,10 +109,7 @@ impl App {
             Ok(()) => {
                 let sol = &self.lab.solution;
                 self.t = self.t.clamp(sol.t_start, sol.t_end);
-                let label = ROWS
-                    .iter()
-                    .find(|p| p.key == key)
-                    .map_or(key.name(), |p| p.label);
+                let label = key.param().label;
                 let value = if self.hide_b && key == Key::Width {
                     "(hidden)".to_string()
                 } else {
@@ -223,12 +220,10 @@ impl App {
         }
     }
 
-    /// Takes in finished analyses and a finished export (its message goes to the
-    /// status line); true if anything arrived (the screen needs a redraw).
+    /// Takes in a finished export (its message goes to the status line); true if one
+    /// arrived. Finished analyses need no taking in: the views read them.
     pub fn poll(&mut self) -> bool {
-        let lab = self.lab.poll();
-        let export = self.take_export();
-        lab || export
+        self.take_export()
     }
 
     /// Waits for every running analysis and export (headless output is deterministic).

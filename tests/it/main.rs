@@ -11,6 +11,7 @@ mod fit;
 mod forces;
 mod fuzz;
 mod lab_data;
+mod lab_jobs;
 mod long_runs;
 mod methods;
 mod motion;

@@ -13,13 +13,16 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Clear, Paragraph, Widget, Wrap};
 
 use super::{Ranked, block, by_priority, draw_lines, title_within};
-use crate::input::units::significant;
+use crate::input::units::{Dimension, show, significant};
 use crate::physics::derived::Regime;
 use crate::physics::forces::{Instant, Sliding, instant};
 use crate::physics::story::{Verdict, headline};
 use crate::tui::app::{App, Prediction};
 use crate::tui::canvas::Canvas;
 use crate::tui::theme::Theme;
+
+/// Lengths are shown in their display unit.
+const LENGTH: Dimension = Dimension::Length;
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let front_w = if area.width >= 110 { 45 } else { 50 };
@@ -157,7 +160,12 @@ fn front_values<'a>(app: &App, now: &Instant, s: &Sliding, theme: &Theme) -> Ran
         (
             4,
             Line::styled(
-                format!("r {} cm  k {}", num(s.r * 100.0, hide), num(s.k, hide)),
+                format!(
+                    "r {}{}  k {}",
+                    num(LENGTH.to_display(s.r), hide),
+                    LENGTH.suffix(),
+                    num(s.k, hide)
+                ),
                 theme.dim,
             ),
         ),
@@ -533,8 +541,8 @@ fn chain_view(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             "b ?".to_string()
         } else {
             format!(
-                "b {:.2} cm{}",
-                app.lab.scene.width * 100.0,
+                "b {:.2}{}",
+                show(app.lab.scene.width, LENGTH),
                 trend(app.lab.scene.width, pinned.map(|p| p.1), theme)
             )
         },
@@ -686,7 +694,11 @@ pub fn question(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let b = if app.hide_b {
         "b is hidden: look at the front view".to_string()
     } else {
-        format!("b = {} cm", significant(app.lab.scene.width * 100.0, 3))
+        format!(
+            "b = {}{}",
+            significant(LENGTH.to_display(app.lab.scene.width), 3),
+            LENGTH.suffix()
+        )
     };
     lines.push(Line::styled(
         g.text(&format!("{b}; then it plays and explains. Esc cancels.")),
