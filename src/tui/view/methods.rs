@@ -131,8 +131,9 @@ pub fn render_diagram(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
 }
 
 pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
+    // The outcome marks where the panel has room for them (44 columns and more).
     let title = if area.width < 44 {
-        " Runs: status, outcome, err_v "
+        " Runs: setting, status, err_v "
     } else if area.width < 52 {
         " Runs: setting, status, outcome, err_v "
     } else {
@@ -166,16 +167,14 @@ pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             theme.title,
         )),
     )];
-    // Setting, status and the outcome mark take 23 columns; err_v gets at least 7
+    // Setting and status take 19 columns (a longer status word takes from the error),
+    // the outcome mark 2 more where the panel is wide enough; err_v gets at least 7
     // ("2.9e-10"), taken from the name column on a narrow panel, and is fitted into
     // what it gets (fewer digits, never a cut exponent).
     let width = usize::from(inner.width);
-    // Too narrow for a name: the marker alone (the diagram's legend names it).
-    let name_w = match width.saturating_sub(23 + 7).clamp(2, 19) {
-        w if w < 6 => 2,
-        w => w,
-    };
-    let err_w = width.saturating_sub(name_w + 23).max(1);
+    let marks = width >= 42;
+    let fixed = if marks { 21 } else { 19 };
+    let name_w = width.saturating_sub(fixed + 7).clamp(2, 19);
     // How many runs of each method came before (the level's rank, coarse first).
     let mut seen: Vec<Method> = Vec::new();
     for (i, r) in rows.iter().enumerate() {
@@ -189,23 +188,26 @@ pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         let rank = seen.iter().filter(|&&m| m == r.method).count() as u8;
         let priority = if best.contains(&i) { 8 } else { rank };
         // A name too long for its column ends with an ellipsis, never cut silently.
-        let name = if name_w == 2 {
-            glyph(r.method).to_string()
-        } else {
-            g.ellipsize(
-                &format!("{} {}", glyph(r.method), r.method.name()),
-                name_w - 1,
-            )
+        let name = g.ellipsize(
+            &format!("{} {}", glyph(r.method), r.method.name()),
+            name_w - 1,
+        );
+        let status = r.status.name();
+        let mark = match (marks, r.outcome_right) {
+            (false, _) => "",
+            (true, true) => "= ",
+            (true, false) => "x ",
         };
+        let err_w = width
+            .saturating_sub(name_w + fixed + status.len().saturating_sub(8))
+            .max(1);
         lines.push((
             priority,
             Line::from(vec![
                 Span::styled(format!("{name:<name_w$}"), theme.dim),
                 Span::styled(
                     format!(
-                        "{setting:<9} {:<10} {} {}",
-                        r.status.name(),
-                        if r.outcome_right { "=" } else { "x" },
+                        "{setting:<9} {status:<8} {mark}{}",
                         fit_number(r.err_v, err_w)
                     ),
                     style,
@@ -215,17 +217,19 @@ pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     }
     // What the outcome marks compare with, and each fixed-step method's fitted order.
     let exact = Summary::of(&app.lab.solution);
-    lines.push((
-        7,
-        Line::from(Span::styled(
-            format!(
-                "= outcome right ({}, {} impacts)",
-                exact.outcome.name(),
-                exact.impacts
-            ),
-            theme.dim,
-        )),
-    ));
+    if marks {
+        lines.push((
+            7,
+            Line::from(Span::styled(
+                format!(
+                    "= outcome right ({}, {} impacts)",
+                    exact.outcome.name(),
+                    exact.impacts
+                ),
+                theme.dim,
+            )),
+        ));
+    }
     let orders: Vec<String> = Method::TIME_STEPPING
         .iter()
         .filter_map(|&m| fitted_order(rows, m).map(|p| format!("{} {p:.1}", glyph(m))))
