@@ -287,11 +287,12 @@ fn table(rows: &[Row]) -> String {
     let mut out = String::new();
     let _ = writeln!(
         out,
-        "{:<17} {:>8} {:>8} {:<9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>10} {:>10}",
+        "{:<17} {:>8} {:>8} {:<10} {:<20} {:>9} {:>9} {:>9} {:>9} {:>9} {:>9} {:>10} {:>10}",
         "method",
         "step s",
         "tol",
         "status",
+        "outcome",
         "err_v",
         "err_u",
         "err_t'",
@@ -305,11 +306,12 @@ fn table(rows: &[Row]) -> String {
     for r in rows {
         let _ = writeln!(
             out,
-            "{:<17} {:>8} {:>8} {:<9} {:>9.2e} {:>9.2e} {:>9} {:>9.2e} {:>9.2e} {:>9} {:>10.3e} {:>10.3e}",
+            "{:<17} {:>8} {:>8} {:<10} {:<20} {:>9.2e} {:>9.2e} {:>9} {:>9.2e} {:>9.2e} {:>9} {:>10.3e} {:>10.3e}",
             r.method.name(),
             opt(r.step),
             opt(r.tolerance),
             r.status.name(),
+            outcome_cell(r),
             r.err_v,
             r.err_u,
             opt(r.err_t_roll),
@@ -334,9 +336,22 @@ fn table(rows: &[Row]) -> String {
             );
         }
     }
+    let orders: Vec<String> = Method::TIME_STEPPING
+        .iter()
+        .filter_map(|&m| cmp::fitted_order(rows, m).map(|p| format!("{} {p:.2}", m.name())))
+        .collect();
+    if !orders.is_empty() {
+        let _ = writeln!(
+            out,
+            "fitted order (slope of log err_v against log h): {}",
+            orders.join(", ")
+        );
+    }
     let _ = writeln!(
         out,
         "\nerrors in m/s (err_t' in s) against the exact solution at each method's own steps;\n\
+         status ok: stable, and errors within 1 % of the scene's largest speed (else inaccurate);\n\
+         outcome: the run's outcome word and impacts, \"wrong\" where either differs from exact's;\n\
          E drift: largest energy excess over the exact run, relative to the start;\n\
          times: minimum and median of repeated runs after one untimed warm-up."
     );
@@ -364,4 +379,11 @@ fn table(rows: &[Row]) -> String {
         }
     }
     out
+}
+
+/// "recollide 20", "pressed 1 wrong": the run's outcome word and impact count, marked
+/// where either differs from the exact run's.
+fn outcome_cell(r: &Row) -> String {
+    let mark = if r.outcome_right { "" } else { " wrong" };
+    format!("{} {}{mark}", r.outcome.name(), r.impacts)
 }

@@ -369,6 +369,15 @@ fn table(
         derived.why(),
         b_star
     );
+    // What this run does, beside the paper's criterion above.
+    let outcome = Summary::of(solution).outcome;
+    let _ = writeln!(
+        out,
+        "outcome  {}: {}{}",
+        outcome.name(),
+        story::outcome_says(outcome, derived),
+        story::criterion_note(solution, derived).map_or(String::new(), |n| format!(" ({n})"))
+    );
     // Against the preset's measured series: can its data tell this regime from rest?
     if let Some(m) = &preset.measured {
         let band = crate::study::fit::rest_band(m);

@@ -249,8 +249,9 @@ impl Lab {
     }
 }
 
-/// Every time-stepping method at the Methods view's levels, untimed (so the view,
-/// like every screen, is the same for the same input).
+/// Every time-stepping method at the Methods view's levels, timed for the view's time
+/// axis (the screen on the steps and evaluations axes stays the same for the same
+/// input: nothing else on it depends on the times).
 fn method_rows(scene: &Scene, span: &Span, sol: &Solution, ticket: &Ticket) -> Vec<Row> {
     let runs: Vec<(Method, u8)> = Method::TIME_STEPPING
         .into_iter()
@@ -263,7 +264,7 @@ fn method_rows(scene: &Scene, span: &Span, sol: &Solution, ticket: &Ticket) -> V
         }
         ticket.progress(i, runs.len());
         let settings = level_settings(method, level);
-        match compare::measure(method, scene, span, &settings, sol, false, ticket) {
+        match compare::measure(method, scene, span, &settings, sol, true, ticket) {
             Ok(row) => rows.push(row),
             // Superseded: the rows are dropped unseen.
             Err(_) => break,

@@ -250,9 +250,134 @@ pub fn recovery(groove: &Groove, state: BallState) -> Recovery {
     }
 }
 
+/// What a run does after the first impact, as the run bears it out (interface.md):
+/// unlike [`Regime`], the paper's criterion, it counts the impacts, the push between
+/// the balls and rolling resistance.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Outcome {
+    /// One impact (or none), then they move apart for good.
+    Depart,
+    /// One impact (or none), then both balls stop where they are, neither moving
+    /// back nor away once they roll (the paper's b = b*).
+    Rest,
+    /// One impact (or none), then the pair moves on at one speed without pressing.
+    Together,
+    /// One impact, then they head back toward each other but stop (rolling
+    /// resistance) before they meet again.
+    Stopped,
+    /// One impact, then friction presses the touching balls together: they never
+    /// part and meet again.
+    Pressed,
+    /// They meet again: two impacts or more (or impacts accumulating at T∞).
+    Recollide,
+}
+
+impl Outcome {
+    pub const ALL: [Outcome; 6] = [
+        Outcome::Depart,
+        Outcome::Rest,
+        Outcome::Together,
+        Outcome::Stopped,
+        Outcome::Pressed,
+        Outcome::Recollide,
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Outcome::Depart => "depart",
+            Outcome::Rest => "rest",
+            Outcome::Together => "together",
+            Outcome::Stopped => "stopped",
+            Outcome::Pressed => "pressed",
+            Outcome::Recollide => "recollide",
+        }
+    }
+
+    /// The word the paper's criterion would give for this outcome, if one does.
+    pub fn regime(self) -> Option<Regime> {
+        match self {
+            Outcome::Depart => Some(Regime::Depart),
+            Outcome::Rest | Outcome::Together => Some(Regime::Rest),
+            Outcome::Recollide => Some(Regime::Recollide),
+            Outcome::Stopped | Outcome::Pressed => None,
+        }
+    }
+
+    /// Whether the run bears out the paper's criterion `regime`.
+    pub fn agrees_with(self, regime: Regime) -> bool {
+        self.regime() == Some(regime)
+    }
+
+    /// From the facts of a run: its impacts (`accumulating`: infinitely many), whether
+    /// the balls ever pressed on each other after a single impact, and the right minus
+    /// left velocity once neither ball slides any more (`settled`), with whether the
+    /// pair still moves then. Speeds within `eps` of zero count as zero.
+    pub fn classify(
+        impacts: usize,
+        accumulating: bool,
+        pressed: bool,
+        settled: f64,
+        moving: bool,
+        eps: f64,
+    ) -> Outcome {
+        if impacts >= 2 || accumulating {
+            Outcome::Recollide
+        } else if pressed {
+            Outcome::Pressed
+        } else if settled > eps {
+            Outcome::Depart
+        } else if settled < -eps {
+            // Heading back, yet no second impact: something stopped them first.
+            Outcome::Stopped
+        } else if moving {
+            Outcome::Together
+        } else {
+            Outcome::Rest
+        }
+    }
+
+    /// What the exact run `sol` does (the whole motion, whatever span is shown).
+    pub fn of(sol: &Solution) -> Outcome {
+        use crate::physics::model::Phase;
+        let eps = NEGLIGIBLE_SPEED * sol.scene.speed_scale();
+        let pressed = sol
+            .events
+            .iter()
+            .any(|e| e.kind == crate::physics::solution::EventKind::ContactStart);
+        // The first stretch after the impact in which neither ball slides: there the
+        // balls' relative velocity says whether they part, come back or stay; without
+        // one (no friction) the last stretch says it.
+        let settled = sol
+            .segments
+            .iter()
+            .find(|s| {
+                s.t0 >= 0.0
+                    && s.phase
+                        .iter()
+                        .all(|p| matches!(p, Phase::Rolling | Phase::Resting))
+            })
+            .or(sol.segments.last());
+        let (w, moving) = settled.map_or((0.0, false), |s| {
+            let [l, r] = s.start;
+            (r.v - l.v, l.v.abs() > eps || r.v.abs() > eps)
+        });
+        Outcome::classify(
+            sol.impacts,
+            sol.accumulation.is_some(),
+            pressed,
+            w,
+            moving,
+            eps,
+        )
+    }
+}
+
 /// A solution's headline numbers.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct Summary {
+    /// What the run does (whole motion); `derived.regime` is the paper's criterion.
+    pub outcome: Outcome,
     pub impacts: usize,
     pub accumulation_time: Option<f64>,
     pub last_event: f64,
@@ -276,6 +401,7 @@ impl Summary {
                 .count()
         };
         Summary {
+            outcome: Outcome::of(solution),
             impacts,
             accumulation_time: solution.accumulation.filter(|&t| t <= solution.t_end),
             last_event: solution.last_event_time(),

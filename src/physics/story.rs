@@ -4,7 +4,7 @@
 //! run's own events; and the regime's verdict with its margin against a data set's
 //! rest band. The CLI table and the app's Why panel both print these.
 
-use crate::physics::derived::{Derived, Recovery, Regime};
+use crate::physics::derived::{Derived, Outcome, Recovery, Regime};
 use crate::physics::model::Phase;
 use crate::physics::solution::{EventKind, Solution, Who};
 
@@ -125,29 +125,39 @@ impl Interruption {
     }
 }
 
-/// The Why panel's heading: the regime of the first impact, told as the run bears it
-/// out. The regime says what the balls do once each rolls on its own; the run can
-/// differ (rolling resistance stops them before they meet again, or the pair moves on
-/// together), and then the heading says so.
-pub fn headline(sol: &Solution, derived: &Derived) -> &'static str {
-    let end = sol.at(sol.t_end);
-    let moving = end.left.v != 0.0 || end.right.v != 0.0;
-    let resting = !moving && end.left.u == 0.0 && end.right.u == 0.0;
-    let pressed = sol.events.iter().any(|e| e.kind == EventKind::ContactStart);
-    match derived.regime {
+/// The Why panel's heading: what the run does ([`Outcome`], its word first, the same
+/// as `summary.outcome`). The paper's criterion ([`Derived::regime`]) says what the
+/// balls do once each rolls on its own; where the run does otherwise (rolling
+/// resistance stops them before they meet again, friction presses them together),
+/// [`criterion_note`] says so beside it.
+pub fn headline(sol: &Solution, derived: &Derived) -> String {
+    let outcome = Outcome::of(sol);
+    format!(
+        "{}: {}",
+        outcome.name().to_uppercase(),
+        outcome_says(outcome, derived)
+    )
+}
+
+/// What an outcome means, in a few words: "the balls roll apart".
+pub fn outcome_says(outcome: Outcome, derived: &Derived) -> &'static str {
+    match outcome {
         // Without friction nothing rolls: they slide apart.
-        Regime::Depart if derived.left_after_impact.is_none() => "DEPART: the balls move apart",
-        Regime::Depart => "DEPART: the balls roll apart",
-        Regime::Rest if moving => "TOGETHER: the pair moves on as one",
-        Regime::Rest => "REST: the balls stop",
-        Regime::Recollide if sol.impacts <= 1 && resting && pressed => {
-            "RECOLLIDE, but pressed together they stop"
-        }
-        Regime::Recollide if sol.impacts <= 1 && resting => {
-            "RECOLLIDE, but they stop before they meet again"
-        }
-        Regime::Recollide => "RECOLLIDE: they come back",
+        Outcome::Depart if derived.left_after_impact.is_none() => "the balls move apart",
+        Outcome::Depart => "the balls roll apart",
+        Outcome::Together => "the pair moves on as one",
+        Outcome::Rest => "the balls stop",
+        Outcome::Pressed => "friction holds them together",
+        Outcome::Stopped => "they stop before they meet again",
+        Outcome::Recollide => "they come back",
     }
+}
+
+/// "the paper's criterion says recollide" where the run does otherwise, else `None`.
+pub fn criterion_note(sol: &Solution, derived: &Derived) -> Option<String> {
+    let outcome = Outcome::of(sol);
+    (!outcome.agrees_with(derived.regime))
+        .then(|| format!("the paper's criterion says {}", derived.regime.name()))
 }
 
 /// The regime of the first impact with its margin: the left ball's v' (when the closed

@@ -7,7 +7,8 @@ use std::time::Instant;
 
 use serde::Serialize;
 
-use crate::methods::{Method, Model, Observer, RunEnd, Settings, Y, integrate, start_state};
+use crate::methods::{Method, Model, Observer, RunEnd, Settings, Y, gap, integrate, start_state};
+use crate::physics::derived::{Outcome, Summary};
 use crate::physics::model::Phase;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{Event, EventKind, Solution, Who};
@@ -40,6 +41,10 @@ impl<'a> Watch<'a> {
     }
 }
 
+/// A run is accurate (status `ok`) within this share of the scene's largest speed, in
+/// its velocities, spins and end state.
+pub const ACCURATE: f64 = 0.01;
+
 /// How a run ended (interface.md).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
@@ -52,6 +57,8 @@ pub enum RunStatus {
     Unstable,
     /// Step-size collapse or step budget hit (e.g. at an accumulation point).
     Stalled,
+    /// Stable, but off by more than [`ACCURATE`] of the scene's largest speed.
+    Inaccurate,
 }
 
 impl RunStatus {
@@ -61,6 +68,7 @@ impl RunStatus {
             RunStatus::Chatter => "chatter",
             RunStatus::Unstable => "unstable",
             RunStatus::Stalled => "stalled",
+            RunStatus::Inaccurate => "inaccurate",
         }
     }
 }
@@ -86,6 +94,12 @@ pub struct Row {
     pub energy_drift: f64,
     /// Largest |slip| while the exact ball rolls (after a short settling time), m/s.
     pub slip_rolling: f64,
+    /// What the run does ([`Outcome`]) as it detects it, and its impacts.
+    pub outcome: Outcome,
+    pub impacts: usize,
+    /// The same outcome word as the exact run, and the same impact count (where the
+    /// exact impacts accumulate, infinitely many: the word decides).
+    pub outcome_right: bool,
     pub steps: usize,
     pub rhs_evals: usize,
     pub time_min_s: f64,
@@ -127,6 +141,19 @@ struct Metrics<'a> {
     /// the scan through them stands.
     windows: Vec<(f64, f64)>,
     next_window: usize,
+    /// Where the method put its first and last impacts (from the first pass).
+    impacts: (Option<f64>, Option<f64>),
+    /// Speeds below this are zero for the run's outcome, m/s.
+    still: f64,
+    /// Whether the balls parted after the first impact.
+    parted: bool,
+    /// Right minus left velocity, and whether the pair moves, at the first step after
+    /// the last impact where neither ball slides (within `still`).
+    settled: Option<(f64, bool)>,
+    /// Each ball's slip at the first step after the last impact, and whether it has
+    /// rolled since.
+    slip_after: [Option<f64>; 2],
+    rolled: [bool; 2],
 }
 
 impl Observer for Metrics<'_> {
@@ -176,6 +203,7 @@ impl Observer for Metrics<'_> {
                 self.last_slip[i] = None;
             }
         }
+        self.follow_outcome(t, y);
         let e = self.model.energy(y);
         let e_exact = self.exact.energy_at(t).kinetic();
         if self.e0 > 0.0 {
@@ -190,6 +218,35 @@ impl Observer for Metrics<'_> {
             self.first_roll.get_or_insert(event.t);
         }
     }
+}
+
+impl Metrics<'_> {
+    /// What the run does after its impacts, for its outcome word: whether the balls
+    /// part after the first, and their relative velocity once both roll after the last.
+    fn follow_outcome(&mut self, t: f64, y: &Y) {
+        let (first, last) = self.impacts;
+        if first.is_some_and(|t0| t > t0) && gap(&self.model, y) > 1e-9 * self.model.radius {
+            self.parted = true;
+        }
+        if self.settled.is_some() || last.is_some_and(|t1| t <= t1) {
+            return;
+        }
+        // A ball has rolled once its slip is within `still` or has changed sign (a
+        // chattering method's slip never settles, but it crosses zero when it rolls).
+        for i in 0..2 {
+            let s = y[3 * i + 1] - y[3 * i + 2];
+            let s0 = *self.slip_after[i].get_or_insert(s);
+            self.rolled[i] |= s.abs() <= self.still || s * s0 < 0.0;
+        }
+        if self.rolled == [true; 2] {
+            self.settled = Some(relative(y, self.still));
+        }
+    }
+}
+
+/// Right minus left velocity of `y`, and whether the pair moves (beyond `still`).
+fn relative(y: &Y, still: f64) -> (f64, bool) {
+    (y[4] - y[1], y[1].abs() > still || y[4].abs() > still)
 }
 
 /// Collects the times of the impacts a method detects.
@@ -340,11 +397,15 @@ pub fn measure_observed(
         } else {
             (0.0, 0.0)
         };
+        let summary = Summary::of(exact);
         return Ok(Row {
             method,
             step: None,
             tolerance: None,
             status: RunStatus::Ok,
+            outcome: summary.outcome,
+            impacts: summary.impacts,
+            outcome_right: true,
             err_v: 0.0,
             err_u: 0.0,
             err_t_roll: exact_roll(exact).map(|_| 0.0),
@@ -406,33 +467,48 @@ pub fn measure_observed(
         slip_rolling: 0.0,
         windows: windows.clone(),
         next_window: 0,
+        impacts: (found.0.first().copied(), found.0.last().copied()),
+        still: ACCURATE * scene.speed_scale(),
+        parted: false,
+        settled: None,
+        slip_after: [None; 2],
+        rolled: [false; 2],
     };
-    let outcome: RunEnd = integrate(method, &model, y0, t0, t1, settings, &mut metrics);
+    let run_end: RunEnd = integrate(method, &model, y0, t0, t1, settings, &mut metrics);
     if progress.cancelled() {
         return Err(Cancelled);
     }
-    let end = exact.at(outcome.t);
+    let end = exact.at(run_end.t);
     let err_final = [
-        outcome.y[1] - end.left.v,
-        outcome.y[2] - end.left.u,
-        outcome.y[4] - end.right.v,
-        outcome.y[5] - end.right.u,
+        run_end.y[1] - end.left.v,
+        run_end.y[2] - end.left.u,
+        run_end.y[4] - end.right.v,
+        run_end.y[5] - end.right.u,
     ]
     .iter()
     .fold(0.0_f64, |a, d| a.max(d.abs()));
+    let (outcome, impacts) = run_outcome(&metrics, &run_end, found.0.len(), scene.mu > 0.0);
+    let expected = Summary::of(exact);
+    let outcome_right = outcome == expected.outcome
+        && (exact.accumulation.is_some() || impacts == expected.impacts);
+    let accurate = [metrics.err_v, metrics.err_u, err_final]
+        .iter()
+        .all(|&e| e <= ACCURATE * scene.speed_scale());
     let status = if metrics.nonfinite || metrics.gain > 1e-6 {
         RunStatus::Unstable
-    } else if outcome.stalled.is_some() {
+    } else if run_end.stalled.is_some() {
         RunStatus::Stalled
     } else if method.regularised() && metrics.slip_rolling > 0.01 * settings.epsilon {
         // The exact regularised slip would have decayed by e^-20 by now.
         RunStatus::Unstable
     } else if metrics.flips > 3 {
         RunStatus::Chatter
+    } else if !accurate {
+        RunStatus::Inaccurate
     } else {
         RunStatus::Ok
     };
-    let (time_min_s, time_median_s) = if !timed || (outcome.stalled.is_some() && outcome.steps == 0)
+    let (time_min_s, time_median_s) = if !timed || (run_end.stalled.is_some() && run_end.steps == 0)
     {
         (0.0, 0.0)
     } else {
@@ -471,12 +547,33 @@ pub fn measure_observed(
         },
         energy_drift: metrics.drift,
         slip_rolling: metrics.slip_rolling,
-        steps: outcome.steps,
-        rhs_evals: outcome.rhs_evals,
+        outcome,
+        impacts,
+        outcome_right,
+        steps: run_end.steps,
+        rhs_evals: run_end.rhs_evals,
         time_min_s,
         time_median_s,
-        note: outcome.stalled,
+        note: run_end.stalled,
     })
+}
+
+/// The outcome word of a time-stepping run and its impacts: `impacts` detected, the
+/// balls pressed if they never parted after a single impact (with friction to press
+/// them), and their relative velocity once both roll after the last impact (at the
+/// end if they never settle).
+fn run_outcome(
+    metrics: &Metrics,
+    end: &RunEnd,
+    impacts: usize,
+    friction: bool,
+) -> (Outcome, usize) {
+    let (w, moving) = metrics
+        .settled
+        .unwrap_or_else(|| relative(&end.y, metrics.still));
+    let pressed = impacts == 1 && !metrics.parted && friction;
+    let outcome = Outcome::classify(impacts, false, pressed, w, moving, metrics.still);
+    (outcome, impacts)
 }
 
 /// The default sweep: two steps per decade from 10 ms to 1 µs, tolerances 1e-2…1e-10.
@@ -545,4 +642,26 @@ pub fn headline(rows: &[Row], accuracy: f64) -> Option<(f64, &Row, &Row)> {
         .filter(|r| r.method != Method::Exact && r.status == RunStatus::Ok && r.err_v <= accuracy)
         .min_by(|a, b| a.time_median_s.total_cmp(&b.time_median_s))?;
     Some((best.time_median_s / exact.time_median_s, best, exact))
+}
+
+/// The order p of a fixed-step method (err_v ∝ h^p): the least-squares slope of
+/// log err_v against log h over its runs that neither blew up nor stalled, with an
+/// error above rounding; `None` for an adaptive method or with fewer than three runs.
+pub fn fitted_order(rows: &[Row], method: Method) -> Option<f64> {
+    let points: Vec<(f64, f64)> = rows
+        .iter()
+        .filter(|r| r.method == method && r.err_v > 1e-13 && r.err_v.is_finite())
+        .filter(|r| !matches!(r.status, RunStatus::Unstable | RunStatus::Stalled))
+        .filter_map(|r| Some((r.step?.log10(), r.err_v.log10())))
+        .collect();
+    if method.adaptive() || points.len() < 3 {
+        return None;
+    }
+    let n = points.len() as f64;
+    let (mx, my) = points
+        .iter()
+        .fold((0.0, 0.0), |a, p| (a.0 + p.0 / n, a.1 + p.1 / n));
+    let sxx: f64 = points.iter().map(|p| (p.0 - mx).powi(2)).sum();
+    let sxy: f64 = points.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+    (sxx > 0.0).then(|| sxy / sxx)
 }

@@ -22,7 +22,7 @@ pub use super::vocabulary::{
 pub use predict::reveal_time;
 pub use prompts::{export_step, typing_prompt};
 
-use super::vocabulary::DEFAULT_SPEED;
+use super::vocabulary::{DEFAULT_SPEED, WorkAxis};
 use prompts::TextTarget;
 
 /// The rows of the parameters panel, top to bottom: the table's rows that have steps.
@@ -49,6 +49,8 @@ pub struct App {
     pub view: View,
     /// The overlay's level when one is switched on.
     pub overlay_level: u8,
+    /// What the Methods view puts on its work axis.
+    pub work_axis: WorkAxis,
     /// First line shown of a scrolling popup (help, data table).
     pub scroll: usize,
     /// The largest useful `scroll` at the last drawn size (the popup sets it when it
@@ -82,6 +84,7 @@ impl App {
             library,
             view: View::Charts,
             overlay_level: 2,
+            work_axis: WorkAxis::default(),
             scroll: 0,
             scroll_max: Cell::new(usize::MAX),
             export_dir: PathBuf::from("."),

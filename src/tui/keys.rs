@@ -157,6 +157,12 @@ pub const TABLE: &[Binding] = &[
         hint: Some(("methods", 3)),
     },
     Binding {
+        keys: &["u"],
+        action: Action::CycleWorkAxis,
+        help: "Methods view: work axis steps, right-hand-side evaluations, time",
+        hint: None,
+    },
+    Binding {
         keys: &["g"],
         action: Action::ToggleMap,
         help: "Map view: regime over b/R and e with this scene marked, the paper's figure",

@@ -28,6 +28,33 @@ pub enum View {
     Forces,
 }
 
+/// What the Methods view puts on its work axis (`u` cycles it).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum WorkAxis {
+    #[default]
+    Steps,
+    RhsEvals,
+    Time,
+}
+
+impl WorkAxis {
+    pub fn next(self) -> WorkAxis {
+        match self {
+            WorkAxis::Steps => WorkAxis::RhsEvals,
+            WorkAxis::RhsEvals => WorkAxis::Time,
+            WorkAxis::Time => WorkAxis::Steps,
+        }
+    }
+
+    pub fn name(self) -> &'static str {
+        match self {
+            WorkAxis::Steps => "steps",
+            WorkAxis::RhsEvals => "right-hand-side evaluations",
+            WorkAxis::Time => "time",
+        }
+    }
+}
+
 /// What `w` and `W` write.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Export {
@@ -125,6 +152,8 @@ pub enum Action {
     /// Pin the current run for an A/B comparison, or unpin it.
     TogglePin,
     ToggleMethods,
+    /// Methods view: the next work axis (steps, evaluations, time).
+    CycleWorkAxis,
     ToggleMap,
     ToggleFit,
     FitStartEarlier,

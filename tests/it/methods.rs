@@ -3,9 +3,10 @@
 
 use groovelab::input::preset::Preset;
 use groovelab::methods::{Method, Model, Settings};
+use groovelab::physics::derived::Outcome;
 use groovelab::physics::engine::solve;
 use groovelab::physics::scene::{Scene, Span};
-use groovelab::study::compare::{Row, RunStatus, run};
+use groovelab::study::compare::{Row, RunStatus, fitted_order, run};
 
 fn preset(name: &str) -> (Scene, Span) {
     Preset::load(name).unwrap().spec.resolve().unwrap()
@@ -84,7 +85,14 @@ fn moreau_is_stable_at_every_step_and_first_order() {
         let mut errs = Vec::new();
         for h in [1e-2, 1e-3, 1e-4, 1e-5] {
             let r = row(Method::Moreau, &scene, &span, step(h));
-            assert_eq!(r.status, RunStatus::Ok, "{name} h = {h}: {r:?}");
+            // Stable at every step; `ok` only where also within 1 % of v0.
+            let accurate = r.err_v.max(r.err_u).max(r.err_final) <= 0.01 * scene.speed_scale();
+            let want = if accurate {
+                RunStatus::Ok
+            } else {
+                RunStatus::Inaccurate
+            };
+            assert_eq!(r.status, want, "{name} h = {h}: {r:?}");
             errs.push(r.err_u);
         }
         // Order ≈ 1 over the last two decades: a hundredth of the step gives about a
@@ -185,8 +193,12 @@ fn near_wedging_every_time_stepper_needs_tiny_steps() {
         assert_ne!(r.status, RunStatus::Stalled);
     }
     // Moreau never goes unstable; rk45 with event location copes (237 steps).
+    // (Stable, though not within 1 % of v0 at this step: `inaccurate`, not `ok`.)
     let moreau = row(Method::Moreau, &scene, &span, step(1e-5));
-    assert_eq!(moreau.status, RunStatus::Ok);
+    assert!(
+        matches!(moreau.status, RunStatus::Ok | RunStatus::Inaccurate),
+        "{moreau:?}"
+    );
     let rk45 = row(
         Method::Rk45,
         &scene,
@@ -300,4 +312,76 @@ fn the_exact_method_behind_the_common_signature_is_the_engine() {
     }
     assert_eq!(out.y, log.0.last().unwrap().1);
     assert_eq!(log.0[0].1, y0, "it starts where every method starts");
+}
+
+/// Issue 18: euler at h = 10 ms on b = 5.4 cm is off by half of v0 and was labelled
+/// `ok`; `ok` now means stable and within 1 % of the scene's largest speed.
+#[test]
+fn a_stable_run_far_off_is_inaccurate_not_ok() {
+    let (mut scene, span) = preset("paper-b4.9");
+    scene.width = 0.054;
+    let r = row(Method::Euler, &scene, &span, step(1e-2));
+    let err = r.err_v.max(r.err_u).max(r.err_final);
+    assert!(err > 0.3 * scene.left.v0, "{r:?}");
+    assert_eq!(r.status, RunStatus::Inaccurate, "{r:?}");
+    // The same method fine enough on a scene without chatter is ok.
+    let (scene, span) = preset("paper-b3.5");
+    let r = row(Method::Moreau, &scene, &span, step(1e-5));
+    assert_eq!(r.status, RunStatus::Ok, "{r:?}");
+    assert!(r.err_v <= 0.01 * scene.left.v0);
+}
+
+/// Each run says whether it gets the outcome right: the exact run's word and impacts.
+#[test]
+fn each_run_says_whether_it_gets_the_outcome_right() {
+    // paper-b3.5: one impact, then they roll apart; a fine moreau run sees just that.
+    let (scene, span) = preset("paper-b3.5");
+    let r = row(Method::Moreau, &scene, &span, step(1e-4));
+    assert_eq!(
+        (r.outcome, r.impacts, r.outcome_right),
+        (Outcome::Depart, 1, true)
+    );
+    // e = 0 in the wide groove: exact says pressed (one impact, then friction holds
+    // the pair); a game-engine euler run pushes the balls into each other step after
+    // step and counts every overlap as an impact: recollide, wrong.
+    let (mut scene, span) = preset("paper-b4.9");
+    scene.restitution = 0.0;
+    let exact = solve(&scene, &span);
+    let e = run(Method::Exact, &scene, &span, &Settings::default(), &exact);
+    assert_eq!(
+        (e.outcome, e.impacts, e.outcome_right),
+        (Outcome::Pressed, 1, true)
+    );
+    let r = run(Method::Euler, &scene, &span, &step(1e-3), &exact);
+    assert!(r.impacts > 1, "{r:?}");
+    assert_eq!((r.outcome, r.outcome_right), (Outcome::Recollide, false));
+    // Rolling resistance stops them on the way back: one impact, stopped.
+    let (mut scene, span) = preset("paper-b4.9");
+    scene.rolling_resistance = 0.05;
+    let r = row(Method::Moreau, &scene, &span, step(1e-4));
+    assert_eq!(
+        (r.outcome, r.impacts, r.outcome_right),
+        (Outcome::Stopped, 1, true)
+    );
+}
+
+/// The fitted order of a fixed-step method: moreau and the Eulers are first order
+/// on a scene without accumulating impacts.
+#[test]
+fn fitted_orders_of_the_fixed_step_methods() {
+    let (scene, span) = preset("paper-b3.5");
+    let exact = solve(&scene, &span);
+    let rows: Vec<Row> = [1e-3, 1e-4, 1e-5]
+        .into_iter()
+        .flat_map(|h| {
+            [Method::Moreau, Method::Euler, Method::Rk45]
+                .map(|m| run(m, &scene, &span, &step(h), &exact))
+        })
+        .collect();
+    for m in [Method::Moreau, Method::Euler] {
+        let p = fitted_order(&rows, m).unwrap();
+        assert!((0.8..=1.3).contains(&p), "{m:?}: order {p}");
+    }
+    // An adaptive method has no step to fit against.
+    assert_eq!(fitted_order(&rows, Method::Rk45), None);
 }

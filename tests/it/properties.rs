@@ -3,7 +3,7 @@
 
 use crate::common;
 
-use groovelab::physics::derived::{Derived, Regime};
+use groovelab::physics::derived::{Derived, Outcome, Regime, Summary};
 use groovelab::physics::engine::{MAX_EVENTS, solve};
 use groovelab::physics::scene::{Ball, Scene, Span};
 use groovelab::physics::solution::{EventKind, Solution};
@@ -212,6 +212,60 @@ proptest! {
         let first_is_impact = sol.events.first().is_some_and(|e| e.t == 0.0 && e.kind == EventKind::Collision);
         prop_assert_eq!(closing, first_is_impact);
     }
+}
+
+/// `summary.outcome` says what the run does, whatever the paper's criterion says
+/// (issue 18: "recollide" was printed for runs that stay pressed or stop first).
+fn check_outcome(scene: &Scene) -> Result<(), TestCaseError> {
+    let sol = solve(scene, &common::span());
+    let outcome = Summary::of(&sol).outcome;
+    let again = sol.impacts >= 2 || sol.accumulation.is_some();
+    prop_assert_eq!(outcome == Outcome::Recollide, again, "{:?}", outcome);
+    let pressed = sol.events.iter().any(|e| e.kind == EventKind::ContactStart);
+    if outcome == Outcome::Pressed {
+        prop_assert!(pressed && sol.impacts == 1);
+    }
+    if outcome == Outcome::Stopped {
+        // Only rolling resistance keeps balls heading back from meeting again.
+        prop_assert!(sol.impacts == 1 && scene.rolling_resistance > 0.0);
+    }
+    // Long after the last event: apart and parting, or at rest, as the word says.
+    let late = sol.at(sol.last_event_time() + 1.0);
+    let eps = 1e-9 * scene.speed_scale();
+    let gap = late.right.x - late.left.x - 2.0 * scene.radius;
+    match outcome {
+        Outcome::Depart => prop_assert!(gap > 0.0 && late.right.v - late.left.v >= -eps),
+        Outcome::Rest => prop_assert!(late.left.v.abs() <= eps && late.right.v.abs() <= eps),
+        Outcome::Stopped => prop_assert!(gap > 0.0 && late.left.v == 0.0 && late.right.v == 0.0),
+        Outcome::Together => prop_assert!((late.right.v - late.left.v).abs() <= eps),
+        _ => {}
+    }
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(std::env::var("PROPTEST_CASES").ok().and_then(|c| c.parse().ok()).unwrap_or(300)))]
+
+    #[test]
+    fn the_outcome_word_says_what_the_run_does(scene in scenes()) {
+        check_outcome(&scene)?;
+    }
+}
+
+/// The issue's two corners: e = 0 keeps the balls pressed, rolling resistance stops
+/// them before they meet again; the criterion still says recollide in both.
+#[test]
+fn pressed_and_stopped_runs_are_not_called_recollide() {
+    for (e, c_rr, want) in [(0.0, 0.0, Outcome::Pressed), (1.0, 0.05, Outcome::Stopped)] {
+        let mut scene = paper(0.049, 0.17, 0.7928, e);
+        scene.rolling_resistance = c_rr;
+        let sol = solve(&scene, &common::span());
+        assert_eq!(Summary::of(&sol).outcome, want);
+        assert_eq!(Derived::of(&scene).regime, Regime::Recollide);
+        check_outcome(&scene).unwrap();
+    }
+    let sol = solve(&paper(0.049, 0.17, 0.7928, 1.0), &common::span());
+    assert_eq!(Summary::of(&sol).outcome, Outcome::Recollide);
 }
 
 fn paper(width: f64, mu: f64, v0: f64, e: f64) -> Scene {

@@ -108,11 +108,11 @@ fn headings_and_reasons_follow_the_run() {
         (groovelab::physics::story::headline(&sol, &d), d.why())
     };
     let (h, _) = case(&[(Key::RollingResistance, 0.05)]);
-    assert_eq!(h, "RECOLLIDE, but they stop before they meet again");
+    assert_eq!(h, "STOPPED: they stop before they meet again");
     let (h, _) = case(&[(Key::V0Left, 1.0), (Key::V0Right, -1.0)]);
     assert_eq!(h, "TOGETHER: the pair moves on as one");
     let (h, why) = case(&[(Key::Restitution, 0.0)]);
-    assert_eq!(h, "RECOLLIDE, but pressed together they stop");
+    assert_eq!(h, "PRESSED: friction holds them together");
     assert!(why.starts_with("D e = 0.000 < 1"), "{why}");
     let (h, why) = case(&[(Key::Mu, 0.0)]);
     assert_eq!(h, "DEPART: the balls move apart");
@@ -136,4 +136,30 @@ fn a_run_that_comes_to_rest_elsewhere_is_not_said_to_slide_into_an_impact() {
     let first = i.clauses("∞")[0].clone();
     assert!(!first.contains("next impact"), "{first}");
     assert!(first.contains("not at the closed form's t'"), "{first}");
+}
+
+/// `summary.outcome` in the JSON and the table's outcome line say what the run does,
+/// beside the paper's criterion (issue 18).
+#[test]
+fn simulate_reports_the_outcome_beside_the_criterion() {
+    for (args, outcome) in [
+        (&["--restitution", "0"][..], "pressed"),
+        (&["--rolling-resistance", "0.05"][..], "stopped"),
+        (&[][..], "recollide"),
+        (&["--preset", "paper-b3.5"][..], "depart"),
+        (&["--preset", "critical"][..], "rest"),
+    ] {
+        let mut json_args = vec!["simulate", "--format", "json"];
+        json_args.extend(args);
+        let doc: serde_json::Value = serde_json::from_str(&groovelab(&json_args)).unwrap();
+        assert_eq!(doc["summary"]["outcome"], outcome, "{args:?}");
+        let mut table_args = vec!["simulate"];
+        table_args.extend(args);
+        let table = groovelab(&table_args);
+        let line = table.lines().find(|l| l.starts_with("outcome  ")).unwrap();
+        assert!(line.starts_with(&format!("outcome  {outcome}: ")), "{line}");
+        // The criterion is named where the run does otherwise.
+        let differs = matches!(outcome, "pressed" | "stopped");
+        assert_eq!(line.contains("criterion says recollide"), differs, "{line}");
+    }
 }

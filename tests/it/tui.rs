@@ -501,6 +501,35 @@ fn methods_view_and_overlay() {
     assert!(overlay(&a).is_none(), "cycling ends with the overlay off");
 }
 
+/// The Methods view's work axis: `u` cycles steps → right-hand-side evaluations →
+/// time; the key is in the one key table (help, hint bar, `--keys`); the rows say
+/// whether each run gets the outcome right and each fixed-step method's fitted order.
+#[test]
+fn methods_view_work_axis_outcome_and_order() {
+    let mut a = app("paper-b4.9");
+    press(&mut a, "c");
+    a.lab.wait();
+    let s = screen_of(&a);
+    assert!(s.contains("against steps per run"), "{s}");
+    assert!(s.contains("= outcome right (recollide, 20 impacts)"), "{s}");
+    assert!(s.contains("order: e "), "{s}");
+    press(&mut a, "u");
+    a.lab.wait();
+    let s = screen_of(&a);
+    assert!(s.contains("against rhs evaluations per run"), "{s}");
+    press(&mut a, "u");
+    a.lab.wait();
+    let s = screen_of(&a);
+    assert!(s.contains("against time per run"), "{s}");
+    press(&mut a, "u");
+    assert!(screen_of(&a).contains("against steps per run"));
+    assert!(
+        keys::TABLE
+            .iter()
+            .any(|b| b.keys == ["u"] && b.help.contains("work axis"))
+    );
+}
+
 #[test]
 fn map_view_marks_the_scene_on_the_regime_grid() {
     let s = screen("paper-b3.5", 0.0, (120, 40), false, Some("g"));

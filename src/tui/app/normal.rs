@@ -173,6 +173,10 @@ impl App {
                     .into(),
                 );
             }
+            Action::CycleWorkAxis => {
+                self.work_axis = self.work_axis.next();
+                self.status = Status::Info(format!("work axis: {}", self.work_axis.name()));
+            }
             Action::ToggleMap => self.toggle_view(View::Map),
             Action::ToggleFit => {
                 self.toggle_view(View::Fit);

@@ -49,6 +49,10 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         };
         lines.push((8, Line::from(value(g.text(&margin)))));
     }
+    // The paper's criterion, where the run does otherwise (the reason is its reason).
+    if let Some(note) = story::criterion_note(sol, d) {
+        lines.push((8, Line::from(value(note))));
+    }
     lines.extend([
         (8, Line::from(value(why))),
         (

@@ -10,10 +10,12 @@ use super::{Ranked, block, by_priority, draw_lines};
 use crate::input::units::fit_number;
 use crate::lab::jobs::State;
 use crate::methods::Method;
-use crate::study::compare::RunStatus;
+use crate::physics::derived::Summary;
+use crate::study::compare::{Row, RunStatus, fitted_order};
 use crate::tui::app::App;
 use crate::tui::plot::{Draw, Plot, Series};
 use crate::tui::theme::Theme;
+use crate::tui::vocabulary::WorkAxis;
 
 fn glyph(m: Method) -> &'static str {
     match m {
@@ -41,9 +43,24 @@ fn decades(lo: f64, hi: f64) -> Vec<(f64, String)> {
         .collect()
 }
 
+/// A run's work on the chosen axis: steps, right-hand-side evaluations or seconds.
+fn work(axis: WorkAxis, r: &Row) -> f64 {
+    match axis {
+        WorkAxis::Steps => r.steps as f64,
+        WorkAxis::RhsEvals => r.rhs_evals as f64,
+        WorkAxis::Time => r.time_median_s,
+    }
+}
+
 pub fn render_diagram(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
+    let axis = app.work_axis;
+    let (per_run, x_title) = match axis {
+        WorkAxis::Steps => ("steps per run", "steps"),
+        WorkAxis::RhsEvals => ("rhs evaluations per run", "rhs evals"),
+        WorkAxis::Time => ("time per run", "s"),
+    };
     let title = super::title_within(
-        " Methods: max |v_cm - exact| against steps per run  [c] back ",
+        &format!(" Methods: max |v_cm - exact| against {per_run}  [u] axis  [c] back "),
         area,
         theme,
     );
@@ -54,9 +71,10 @@ pub fn render_diagram(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         State::Ready(rows) => rows,
         other => return super::computing(&other, "running every method", inner, buf, theme),
     };
-    let point = |r: &crate::study::compare::Row| {
-        ((r.steps.max(1) as f64).log10(), r.err_v.max(1e-16).log10())
-    };
+    // Work below one unit (a run refused before its first step, or a time under a
+    // nanosecond) sits at the axis' floor rather than at −∞.
+    let floor = if axis == WorkAxis::Time { 1e-9 } else { 1.0 };
+    let point = |r: &Row| (work(axis, r).max(floor).log10(), r.err_v.max(1e-16).log10());
     let mut series = Vec::new();
     for m in Method::TIME_STEPPING {
         let style = match m {
@@ -101,7 +119,7 @@ pub fn render_diagram(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let plot = Plot {
         x_range: (x0, x1),
         y_range: (y0, y1),
-        x_title: "steps".into(),
+        x_title: x_title.into(),
         y_title: "m/s".into(),
         series,
         vlines: Vec::new(),
@@ -113,10 +131,13 @@ pub fn render_diagram(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
 }
 
 pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
+    // The outcome marks where the panel has room for them (44 columns and more).
     let title = if area.width < 44 {
         " Runs: setting, status, err_v "
+    } else if area.width < 52 {
+        " Runs: setting, status, outcome, err_v "
     } else {
-        " Runs (marker, setting, status, err_v) "
+        " Runs (marker, setting, status, outcome, err_v) "
     };
     let blk = block(title, theme);
     let inner = blk.inner(area);
@@ -146,12 +167,14 @@ pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             theme.title,
         )),
     )];
-    // Setting and status take 19 columns; err_v gets at least 7 ("2.9e-10"), taken
-    // from the name column on a narrow panel, and is fitted into what it gets (fewer
-    // digits, never a cut exponent).
+    // Setting and status take 19 columns (a longer status word takes from the error),
+    // the outcome mark 2 more where the panel is wide enough; err_v gets at least 7
+    // ("2.9e-10"), taken from the name column on a narrow panel, and is fitted into
+    // what it gets (fewer digits, never a cut exponent).
     let width = usize::from(inner.width);
-    let name_w = width.saturating_sub(19 + 7).clamp(2, 19);
-    let err_w = width.saturating_sub(name_w + 19).max(1);
+    let marks = width >= 42;
+    let fixed = if marks { 21 } else { 19 };
+    let name_w = width.saturating_sub(fixed + 7).clamp(2, 19);
     // How many runs of each method came before (the level's rank, coarse first).
     let mut seen: Vec<Method> = Vec::new();
     for (i, r) in rows.iter().enumerate() {
@@ -169,19 +192,55 @@ pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             &format!("{} {}", glyph(r.method), r.method.name()),
             name_w - 1,
         );
+        let status = r.status.name();
+        let mark = match (marks, r.outcome_right) {
+            (false, _) => "",
+            (true, true) => "= ",
+            (true, false) => "x ",
+        };
+        let err_w = width
+            .saturating_sub(name_w + fixed + status.len().saturating_sub(8))
+            .max(1);
         lines.push((
             priority,
             Line::from(vec![
                 Span::styled(format!("{name:<name_w$}"), theme.dim),
                 Span::styled(
                     format!(
-                        "{setting:<9} {:<8} {}",
-                        r.status.name(),
+                        "{setting:<9} {status:<8} {mark}{}",
                         fit_number(r.err_v, err_w)
                     ),
                     style,
                 ),
             ]),
+        ));
+    }
+    // What the outcome marks compare with, and each fixed-step method's fitted order.
+    let exact = Summary::of(&app.lab.solution);
+    if marks {
+        lines.push((
+            7,
+            Line::from(Span::styled(
+                format!(
+                    "= outcome right ({}, {} impacts)",
+                    exact.outcome.name(),
+                    exact.impacts
+                ),
+                theme.dim,
+            )),
+        ));
+    }
+    let orders: Vec<String> = Method::TIME_STEPPING
+        .iter()
+        .filter_map(|&m| fitted_order(rows, m).map(|p| format!("{} {p:.1}", glyph(m))))
+        .collect();
+    if !orders.is_empty() {
+        lines.push((
+            7,
+            Line::from(Span::styled(
+                format!("order: {}", orders.join("  ")),
+                theme.dim,
+            )),
         ));
     }
     draw_lines(by_priority(lines, inner), inner, buf);
