@@ -303,3 +303,81 @@ fn a_header_without_units_over_ms_and_cm_per_s_names_the_options() {
     assert!((mu - MU).abs() < 0.002, "μ_k = {mu}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The exact left ball's velocities of `scene` at 100 frames/s with seeded noise of
+/// 1 cm/s, the frame at the impact left out.
+fn noisy_velocities(scene: &Scene, seed: u64) -> groovelab::study::measured::Measured {
+    let sol = engine::solve(
+        scene,
+        &Span {
+            t_start: -0.2,
+            t_end: Some(0.8),
+        },
+    );
+    let mut noise = video::Noise::new(seed);
+    let (mut t, mut v, mut u) = (vec![], vec![], vec![]);
+    for k in (-15..=70).filter(|&k| k != 0) {
+        let s = sol.at(k as f64 * 0.01);
+        t.push(k as f64 * 0.01);
+        v.push(s.left.v + 0.01 * noise.gauss());
+        u.push(s.left.u + 0.01 * noise.gauss());
+    }
+    groovelab::study::measured::Measured::velocities(t, v, u)
+}
+
+#[test]
+fn the_fit_names_the_simplest_model_the_data_support() {
+    use groovelab::study::fit::compare_models;
+    let truth = scene();
+    let supported = |s: &Scene, seed: u64| {
+        let models =
+            compare_models(&truth, &noisy_velocities(s, seed), &groovelab::study::Quiet).unwrap();
+        assert!(
+            models.len() == 8,
+            "v0 is a candidate: the approach is measured"
+        );
+        assert!(
+            models
+                .iter()
+                .all(|c| c.aic.is_finite() && c.bic.is_finite())
+        );
+        let picked: Vec<_> = models.iter().filter(|c| c.supported).collect();
+        assert_eq!(picked.len(), 1);
+        picked[0].name.clone()
+    };
+    // Friction alone made the data: μ_k alone is named, whatever the noise.
+    for seed in 1..=2 {
+        assert_eq!(supported(&truth, seed), "mu", "seed {seed}");
+    }
+    // With rolling resistance in the truth, the data ask for c_rr.
+    let resisted = Scene {
+        rolling_resistance: 0.02,
+        ..truth
+    };
+    for seed in [3] {
+        let name = supported(&resisted, seed);
+        assert!(name.contains("rolling_resistance"), "seed {seed}: {name}");
+    }
+}
+
+#[test]
+fn fit_json_has_one_entry_per_model_with_aic_and_bic() {
+    let (ok, out, err) = groovelab(&["fit", "--format", "json"]);
+    assert!(ok, "{err}");
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let models = j["models"].as_array().unwrap();
+    assert!(models.len() >= 4);
+    for m in models {
+        assert!(
+            m["aic"].as_f64().is_some() && m["bic"].as_f64().is_some(),
+            "{m}"
+        );
+        assert!(m["parameters"][0]["parameter"] == "mu", "{m}");
+    }
+    assert_eq!(models.iter().filter(|m| m["supported"] == true).count(), 1);
+    let (ok, table, _) = groovelab(&["fit"]);
+    assert!(
+        ok && table.contains("which model the data support")
+            && table.contains("the data support: ")
+    );
+}
