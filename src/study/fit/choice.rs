@@ -62,7 +62,8 @@ fn candidates(m: &Measured) -> Vec<Vec<Free>> {
 }
 
 /// Fits every candidate model to `m` (positions when it has them, else velocities)
-/// and scores it; marks the simplest model the data support.
+/// and scores it; marks the simplest model the data support. A candidate the data
+/// cannot fit (more values than points) is left out.
 pub fn compare_models(
     scene: &Scene,
     m: &Measured,
@@ -83,8 +84,15 @@ pub fn compare_models(
             .filter(|(f, _)| f.iter().all(|x| free.contains(x)))
             .min_by(|a, b| a.1.cost.total_cmp(&b.1.cost))
             .map_or(*scene, |(f, s)| with(scene, f, &s.values));
-        let s = scored_fit(&start, m, &free, target, progress)?;
-        fitted.push((free, s));
+        // A model with more values than the data have points is not a candidate.
+        match scored_fit(&start, m, &free, target, progress) {
+            Ok(s) => fitted.push((free, s)),
+            Err(FitError::Data(_)) => continue,
+            Err(e) => return Err(e),
+        }
+    }
+    if fitted.is_empty() {
+        return Ok(out);
     }
     // Scored on the same frames: each fit leaves out the frames its own impacts
     // straddle, and criteria over different frames are not comparable.

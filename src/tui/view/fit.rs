@@ -147,26 +147,27 @@ fn model_choice_lines(models: &[fit::Candidate], lines: &mut Ranked<'static>, th
             .collect();
         names.join("+")
     };
+    // Only in the room the fits leave: the header before the rows, the supported
+    // model first, then by BIC (a small screen keeps the best).
     if let Some(c) = models.iter().find(|c| c.supported) {
         lines.push((
-            4,
+            1,
             Line::from(vec![
                 Span::styled("the data support ", theme.dim),
                 Span::styled(g.text(&name(c)), theme.info),
-                Span::styled(" (simplest within 2 of the best BIC)", theme.dim),
+                Span::styled(" (by BIC)", theme.dim),
             ]),
         ));
     }
-    for c in models {
+    let mut ranked: Vec<&fit::Candidate> = models.iter().collect();
+    ranked.sort_by(|a, b| b.supported.cmp(&a.supported).then(a.bic.total_cmp(&b.bic)));
+    for c in ranked {
         lines.push((
-            2,
+            0,
             Line::from(vec![
                 Span::styled(if c.supported { "* " } else { "  " }, theme.info),
-                Span::styled(g.text(&format!("{:<18}", name(c))), theme.text),
-                Span::styled(
-                    format!(" BIC {:>8.1}  AIC {:>8.1}", c.bic, c.aic),
-                    theme.dim,
-                ),
+                Span::styled(g.text(&format!("{:<14}", name(c))), theme.text),
+                Span::styled(format!(" BIC {:>7.1} AIC {:>7.1}", c.bic, c.aic), theme.dim),
             ]),
         ));
     }
