@@ -304,23 +304,15 @@ impl Args for SceneArgs {
         );
         PARAMS.iter().fold(cmd, |cmd, p| {
             let dim = p.dim;
-            let mut arg = clap::Arg::new(p.name)
+            let arg = clap::Arg::new(p.name)
                 .long(p.flag)
                 .value_name(if dim == Dimension::Ratio { "X" } else { "Q" })
                 .value_parser(move |s: &str| quantity(s, dim))
                 .allow_hyphen_values(true)
                 .global(true)
-                .help(p.help);
-            // A run-up gives the speed: a height and a speed for one ball contradict.
-            let speeds: &[&str] = match p.key {
-                Key::Height => &["v0", "v0_left", "v0_right"],
-                Key::HeightLeft => &["v0", "v0_left"],
-                Key::HeightRight => &["v0", "v0_right"],
-                _ => &[],
-            };
-            if !speeds.is_empty() {
-                arg = arg.conflicts_with_all(speeds);
-            }
+                .help(p.help_text())
+                // A run-up gives the speed: a height and a speed for one ball contradict.
+                .conflicts_with_all(p.conflicts().map(|q| q.name));
             cmd.arg(arg)
         })
     }
@@ -338,10 +330,7 @@ impl SceneArgs {
         let mut spec = preset.spec.over(&self.values);
         // A preset's t_end belongs to the preset as it is: once a scene option changes
         // it, the span follows the physics again (unless --t-end is given).
-        let changed = self
-            .values
-            .given()
-            .any(|(k, _)| !matches!(k, Key::TStart | Key::TEnd));
+        let changed = self.values.given().any(|(k, _)| k.param().of_scene());
         if changed && self.values.get(Key::TEnd).is_none() {
             let mut without = SceneSpec::default();
             for (k, v) in spec.given().filter(|(k, _)| *k != Key::TEnd) {

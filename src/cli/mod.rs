@@ -503,10 +503,10 @@ pub(crate) fn state_header() -> String {
         "t (s)",
         "event",
         "ball",
-        "x_L (cm)",
+        format!("x_L ({})", Dimension::Length.display_unit().0),
         "v_L (m/s)",
         "u_L (m/s)",
-        "x_R (cm)",
+        format!("x_R ({})", Dimension::Length.display_unit().0),
         "v_R (m/s)",
         "u_R (m/s)"
     )
@@ -522,10 +522,10 @@ pub(crate) fn state_row(
 ) -> String {
     format!(
         "{t:>10.6}  {kind:<14} {ball:<6} {:>9.4} {:>9.5} {:>9.5}  {:>9.4} {:>9.5} {:>9.5}",
-        l.x * 100.0,
+        Dimension::Length.to_display(l.x),
         l.v,
         l.u,
-        r.x * 100.0,
+        Dimension::Length.to_display(r.x),
         r.v,
         r.u
     )

@@ -1,17 +1,41 @@
-//! The one table of scene parameters — name, flag, symbol, unit, physical range, steps,
-//! help and label — and the layers of settings (defaults, preset, command line) that
-//! are read through it: settings in, a checked SI
-//! [`Scene`](crate::physics::scene::Scene) out.
+//! The one table of scene parameters — name, flag, symbol, label, unit, physical range,
+//! steps, default, help, and how the value is read from and written to a scene — and
+//! the layers of settings (defaults, preset, command line, app) read through it:
+//! settings in, a checked SI [`Scene`] out.
 //!
-//! The command line's scene options (`cli::args`), preset reading and saving
-//! (`input::preset`), validation messages, the TUI's parameter rows and `--help` all
-//! come from [`PARAMS`]. Adding a parameter is one row here, one line in
-//! [`SceneSpec::resolve`], and its physics.
+//! The command line's scene options and their conflicts (`cli::args`), preset reading
+//! and saving (`input::preset`), validation and its messages, the app's parameter rows,
+//! values and change labels, sweep axes and `--help` all come from [`PARAMS`]. Adding a
+//! parameter is one row here and its physics.
 
-use crate::input::units::Dimension;
+use crate::input::units::{Dimension, show};
+use crate::physics::closed_form::{release_height, release_speed};
+use crate::physics::scene::{Scene, Span};
 
 // The settings layers live in `spec`; their names stay here, beside the table they read.
-pub use crate::input::spec::{STANDARD_GRAVITY, SceneError, SceneSpec};
+pub use crate::input::spec::{SceneError, SceneSpec};
+
+/// Standard gravity, used when nothing else is said, m/s².
+pub const STANDARD_GRAVITY: f64 = 9.81;
+
+/// A scene with every value unset (NaN), for the rows to fill in: every field of a
+/// scene is some row's, so none stays NaN in a resolved scene.
+pub(crate) const UNSET: Scene = {
+    let ball = crate::physics::scene::Ball {
+        mass: f64::NAN,
+        v0: f64::NAN,
+    };
+    Scene {
+        radius: f64::NAN,
+        width: f64::NAN,
+        mu: f64::NAN,
+        g: f64::NAN,
+        restitution: f64::NAN,
+        rolling_resistance: f64::NAN,
+        left: ball,
+        right: ball,
+    }
+};
 
 /// A setting that a layer may give.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -64,8 +88,20 @@ pub struct Steps {
     pub coarse: f64,
 }
 
-/// One scene parameter: everything every front end needs to know about it.
+/// What a layer that does not give a value means.
 #[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Fallback {
+    /// This value, SI (shown in `--help` as `[default: …]`).
+    Value(f64),
+    /// The scene needs it: a preset or a flag must give it.
+    Required,
+    /// Nothing: a release height is only a way to give a speed; without `t_end` the
+    /// span follows the physics.
+    Optional,
+}
+
+/// One scene parameter: everything every front end needs to know about it.
+#[derive(Clone, Copy, Debug)]
 pub struct Param {
     pub key: Key,
     /// Name in preset files; the flag is `--` and the name with `-` for `_`.
@@ -81,7 +117,18 @@ pub struct Param {
     pub sets: &'static [Key],
     /// Steps in the app; `None`: not a row of the app's parameter panel.
     pub steps: Option<Steps>,
+    /// `--help`'s text, without the default (see [`Param::help_text`]).
     pub help: &'static str,
+    pub default: Fallback,
+    /// The key this one gives instead, for the same ball: a release height gives the
+    /// speed, so the two contradict on the command line and one drops the other in a
+    /// layer.
+    pub replaces: Option<Key>,
+    /// The value in a scene and span, SI (`None`: a span without a fixed end).
+    pub get: fn(&Scene, &Span) -> Option<f64>,
+    /// Writes the value (SI, checked) into a scene and span. A row that
+    /// [`replaces`](Param::replaces) another computes it from the rest of the scene.
+    pub set: fn(&mut Scene, &mut Span, f64),
 }
 
 const fn range(lo: f64, hi: f64, lo_open: bool, text: &'static str) -> Range {
@@ -125,6 +172,10 @@ pub const PARAMS: [Param; 17] = [
             coarse: 0.005,
         }),
         help: "Ball radius R (e.g. 2.75cm)",
+        default: Fallback::Required,
+        replaces: None,
+        get: |s, _| Some(s.radius),
+        set: |s, _, v| s.radius = v,
     },
     Param {
         key: Key::Width,
@@ -141,6 +192,10 @@ pub const PARAMS: [Param; 17] = [
             coarse: 0.005,
         }),
         help: "Groove width b, 0 ≤ b < 2R (e.g. 4.9cm)",
+        default: Fallback::Required,
+        replaces: None,
+        get: |s, _| Some(s.width),
+        set: |s, _, v| s.width = v,
     },
     Param {
         key: Key::Mass,
@@ -153,6 +208,10 @@ pub const PARAMS: [Param; 17] = [
         sets: &[Key::MassLeft, Key::MassRight],
         steps: None,
         help: "Mass of both balls (e.g. 167g)",
+        default: Fallback::Required,
+        replaces: None,
+        get: |s, _| Some(s.left.mass),
+        set: |s, _, v| (s.left.mass, s.right.mass) = (v, v),
     },
     Param {
         key: Key::MassLeft,
@@ -165,6 +224,10 @@ pub const PARAMS: [Param; 17] = [
         sets: &[Key::MassLeft],
         steps: MASS_STEPS,
         help: "Mass of the left ball",
+        default: Fallback::Required,
+        replaces: None,
+        get: |s, _| Some(s.left.mass),
+        set: |s, _, v| s.left.mass = v,
     },
     Param {
         key: Key::MassRight,
@@ -177,6 +240,10 @@ pub const PARAMS: [Param; 17] = [
         sets: &[Key::MassRight],
         steps: MASS_STEPS,
         help: "Mass of the right ball",
+        default: Fallback::Required,
+        replaces: None,
+        get: |s, _| Some(s.right.mass),
+        set: |s, _, v| s.right.mass = v,
     },
     Param {
         key: Key::Mu,
@@ -192,6 +259,10 @@ pub const PARAMS: [Param; 17] = [
             coarse: 0.05,
         }),
         help: "Kinetic friction coefficient μ_k, 0 ≤ μ_k ≤ 10",
+        default: Fallback::Required,
+        replaces: None,
+        get: |s, _| Some(s.mu),
+        set: |s, _, v| s.mu = v,
     },
     Param {
         key: Key::V0,
@@ -204,6 +275,10 @@ pub const PARAMS: [Param; 17] = [
         sets: &[Key::V0Left, Key::V0Right],
         steps: SPEED_STEPS,
         help: "Speed of both balls toward the impact point just before it (e.g. 60cm/s)",
+        default: Fallback::Required,
+        replaces: None,
+        get: |s, _| Some(s.left.v0),
+        set: |s, _, v| (s.left.v0, s.right.v0) = (v, v),
     },
     Param {
         key: Key::V0Left,
@@ -216,6 +291,10 @@ pub const PARAMS: [Param; 17] = [
         sets: &[Key::V0Left],
         steps: SPEED_STEPS,
         help: "Speed of the left ball toward the impact point",
+        default: Fallback::Required,
+        replaces: None,
+        get: |s, _| Some(s.left.v0),
+        set: |s, _, v| s.left.v0 = v,
     },
     Param {
         key: Key::V0Right,
@@ -228,6 +307,10 @@ pub const PARAMS: [Param; 17] = [
         sets: &[Key::V0Right],
         steps: SPEED_STEPS,
         help: "Speed of the right ball toward the impact point",
+        default: Fallback::Required,
+        replaces: None,
+        get: |s, _| Some(s.right.v0),
+        set: |s, _, v| s.right.v0 = v,
     },
     Param {
         key: Key::Height,
@@ -240,6 +323,13 @@ pub const PARAMS: [Param; 17] = [
         sets: &[Key::HeightLeft, Key::HeightRight],
         steps: None,
         help: "Release height on the run-up instead of v0 (both balls)",
+        default: Fallback::Optional,
+        replaces: Some(Key::V0),
+        get: |s, _| Some(release_height(s.left.v0, s.k(), s.g)),
+        set: |s, _, h| {
+            let v = release_speed(h, s.k(), s.g);
+            (s.left.v0, s.right.v0) = (v, v);
+        },
     },
     // One row per ball in the app: each ball's own run-up, so the panel never shows
     // one ball's height for both when their speeds differ.
@@ -254,6 +344,10 @@ pub const PARAMS: [Param; 17] = [
         sets: &[Key::HeightLeft],
         steps: HEIGHT_STEPS,
         help: "Release height of the left ball on its run-up instead of its v0",
+        default: Fallback::Optional,
+        replaces: Some(Key::V0Left),
+        get: |s, _| Some(release_height(s.left.v0, s.k(), s.g)),
+        set: |s, _, h| s.left.v0 = release_speed(h, s.k(), s.g),
     },
     Param {
         key: Key::HeightRight,
@@ -266,6 +360,10 @@ pub const PARAMS: [Param; 17] = [
         sets: &[Key::HeightRight],
         steps: HEIGHT_STEPS,
         help: "Release height of the right ball on its run-up instead of its v0",
+        default: Fallback::Optional,
+        replaces: Some(Key::V0Right),
+        get: |s, _| Some(release_height(s.right.v0, s.k(), s.g)),
+        set: |s, _, h| s.right.v0 = release_speed(h, s.k(), s.g),
     },
     Param {
         key: Key::Restitution,
@@ -280,7 +378,11 @@ pub const PARAMS: [Param; 17] = [
             fine: 0.01,
             coarse: 0.1,
         }),
-        help: "Coefficient of restitution e, 0 ≤ e ≤ 1 [default: 1]",
+        help: "Coefficient of restitution e, 0 ≤ e ≤ 1",
+        default: Fallback::Value(1.0),
+        replaces: None,
+        get: |s, _| Some(s.restitution),
+        set: |s, _, v| s.restitution = v,
     },
     Param {
         key: Key::RollingResistance,
@@ -295,7 +397,11 @@ pub const PARAMS: [Param; 17] = [
             fine: 0.001,
             coarse: 0.01,
         }),
-        help: "Rolling-resistance coefficient c_rr, 0 ≤ c_rr ≤ 1 [default: 0]",
+        help: "Rolling-resistance coefficient c_rr, 0 ≤ c_rr ≤ 1",
+        default: Fallback::Value(0.0),
+        replaces: None,
+        get: |s, _| Some(s.rolling_resistance),
+        set: |s, _, v| s.rolling_resistance = v,
     },
     Param {
         key: Key::G,
@@ -307,7 +413,11 @@ pub const PARAMS: [Param; 17] = [
         range: range(0.01, 1000.0, false, "0.01 m/s² ≤ g ≤ 1000 m/s²"),
         sets: &[Key::G],
         steps: None,
-        help: "Gravity [default: 9.81 m/s²]",
+        help: "Gravity",
+        default: Fallback::Value(STANDARD_GRAVITY),
+        replaces: None,
+        get: |s, _| Some(s.g),
+        set: |s, _, v| s.g = v,
     },
     Param {
         key: Key::TStart,
@@ -324,7 +434,11 @@ pub const PARAMS: [Param; 17] = [
         ),
         sets: &[Key::TStart],
         steps: None,
-        help: "Start of the simulated span, -1000 s ≤ t_start ≤ 0 [default: -0.2 s]",
+        help: "Start of the simulated span, -1000 s ≤ t_start ≤ 0",
+        default: Fallback::Value(Span::DEFAULT.t_start),
+        replaces: None,
+        get: |_, span| Some(span.t_start),
+        set: |_, span, v| span.t_start = v,
     },
     Param {
         key: Key::TEnd,
@@ -338,8 +452,54 @@ pub const PARAMS: [Param; 17] = [
         sets: &[Key::TEnd],
         steps: None,
         help: "End of the simulated span, ≤ 1e6 s [default: the preset's, or a little past the last event]",
+        default: Fallback::Optional,
+        replaces: None,
+        get: |_, span| span.t_end,
+        set: |_, span, v| span.t_end = Some(v),
     },
 ];
+
+impl Param {
+    /// `--help`'s text: the help and, for a value with a default, `[default: …]` in
+    /// the unit people read.
+    pub fn help_text(&self) -> String {
+        match self.default {
+            Fallback::Value(v) => format!("{} [default: {}]", self.help, show(v, self.dim)),
+            _ => self.help.to_string(),
+        }
+    }
+
+    /// True for a row that holds a value of its own in a layer; false for one that
+    /// sets others (`mass` sets both masses).
+    pub fn is_own(&self) -> bool {
+        self.sets == [self.key]
+    }
+
+    /// The rows that contradict this one on one command line: those that set a key
+    /// that one of this row's keys replaces (`--height-left` and `--v0-left`, `--v0`).
+    pub fn conflicts(&self) -> impl Iterator<Item = &'static Param> + '_ {
+        let replaced: Vec<Key> = self
+            .sets
+            .iter()
+            .filter_map(|k| k.param().replaces)
+            .collect();
+        PARAMS
+            .iter()
+            .filter(move |q| q.sets.iter().any(|k| replaced.contains(k)))
+    }
+
+    /// Whether it is a value of the scene (what sweeps vary), not of the simulated
+    /// span: writing it leaves a span as it was.
+    pub fn of_scene(&self) -> bool {
+        let span = Span {
+            t_start: -1.0,
+            t_end: Some(1.0),
+        };
+        let (mut scene, mut written) = (UNSET, span);
+        (self.set)(&mut scene, &mut written, 0.5);
+        written == span
+    }
+}
 
 impl Key {
     /// Every key, in the table's order.
@@ -369,6 +529,12 @@ impl Key {
 
     pub fn from_name(name: &str) -> Option<Key> {
         PARAMS.iter().find(|p| p.name == name).map(|p| p.key)
+    }
+
+    /// This parameter's value in a scene and span, SI (`None`: a span without a
+    /// fixed end).
+    pub fn get(self, scene: &Scene, span: &Span) -> Option<f64> {
+        (self.param().get)(scene, span)
     }
 }
 

@@ -2,11 +2,10 @@
 //! their resolution through the parameter table into a checked SI scene and span.
 //! Re-exported from `input::params`, which is the path to use.
 
-use crate::input::params::{Key, Param};
+use crate::input::params::{Fallback, Key, PARAMS, Param, UNSET};
 use crate::input::units::{Dimension, show, show_exact};
-use crate::physics::closed_form;
 use crate::physics::derived::Derived;
-use crate::physics::scene::{Ball, Scene, Span};
+use crate::physics::scene::{Scene, Span};
 
 /// Why a scene is not valid. Each message names the value and what is allowed.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -28,9 +27,6 @@ pub enum SceneError {
 pub struct SceneSpec {
     values: [Option<f64>; 17],
 }
-
-/// Standard gravity used when nothing else is said, m/s².
-pub const STANDARD_GRAVITY: f64 = 9.81;
 
 impl SceneSpec {
     /// The value this layer gives for `key`, SI; a key that sets others (`mass`,
@@ -54,14 +50,14 @@ impl SceneSpec {
         // −0 is 0: a sign on zero must not reach the physics (e = −0 gave b* = ∞).
         let value = value + 0.0;
         for &k in key.param().sets {
-            let replaced = match k {
-                Key::V0Left => Some(Key::HeightLeft),
-                Key::V0Right => Some(Key::HeightRight),
-                Key::HeightLeft => Some(Key::V0Left),
-                Key::HeightRight => Some(Key::V0Right),
-                _ => None,
-            };
-            if let Some(r) = replaced {
+            // What `k` replaces, and what replaces `k`.
+            let replaced = k.param().replaces.into_iter().chain(
+                PARAMS
+                    .iter()
+                    .filter(|p| p.replaces == Some(k))
+                    .map(|p| p.key),
+            );
+            for r in replaced {
                 self.values[r as usize] = None;
             }
             self.values[k as usize] = Some(value);
@@ -92,107 +88,83 @@ impl SceneSpec {
         merged
     }
 
-    /// The complete layer of a scene and span: what an app or a saved preset holds.
+    /// The complete layer of a scene and span: what an app or a saved preset holds
+    /// (every row with a value of its own, except those computed from others).
     pub fn of(scene: &Scene, span: &Span) -> SceneSpec {
         let mut spec = SceneSpec::default();
-        for (k, v) in [
-            (Key::Radius, scene.radius),
-            (Key::Width, scene.width),
-            (Key::MassLeft, scene.left.mass),
-            (Key::MassRight, scene.right.mass),
-            (Key::Mu, scene.mu),
-            (Key::V0Left, scene.left.v0),
-            (Key::V0Right, scene.right.v0),
-            (Key::Restitution, scene.restitution),
-            (Key::RollingResistance, scene.rolling_resistance),
-            (Key::G, scene.g),
-            (Key::TStart, span.t_start),
-        ] {
-            spec.set(k, v);
-        }
-        if let Some(t_end) = span.t_end {
-            spec.set(Key::TEnd, t_end);
+        for p in PARAMS.iter().filter(|p| p.is_own() && p.replaces.is_none()) {
+            if let Some(v) = (p.get)(scene, span) {
+                spec.set(p.key, v);
+            }
         }
         spec
     }
 
-    /// Checks every value and builds the scene and time span.
+    /// Checks every value and builds the scene and time span: each row writes its
+    /// value (or its default) in table order, then the rows that replace others (a
+    /// release height's speed needs k and g), each checked against its range and the
+    /// relations between values checked where both are known.
     pub fn resolve(&self) -> Result<(Scene, Span), SceneError> {
-        let value = |key: Key| -> Result<f64, SceneError> {
-            let p = key.param();
-            let v = self.get(key).ok_or_else(|| {
-                SceneError::Other(format!(
-                    "{} is not set, give it with --{} or in the preset",
-                    p.symbol, p.flag
-                ))
-            })?;
-            in_range(p, v)
-        };
-        let default = |key: Key, v: f64| self.get(key).map_or(Ok(v), |_| value(key));
-        let radius = value(Key::Radius)?;
-        let width = value(Key::Width)?;
-        check(Key::Width.param(), width, width < 2.0 * radius, || {
-            format!("0 ≤ b < 2R = {}", show(2.0 * radius, Dimension::Length))
-        })?;
-        let mu = value(Key::Mu)?;
-        let g = default(Key::G, STANDARD_GRAVITY)?;
-        let restitution = default(Key::Restitution, 1.0)?;
-        let rolling_resistance = default(Key::RollingResistance, 0.0)?;
-        let mass_left = value(Key::MassLeft)?;
-        let mass_right = value(Key::MassRight)?;
-        let k = closed_form::contact_ratio(radius, width);
-        // Each ball's speed: its run-up's if a height is given, else its v0.
-        let speed = |height: Key, v0: Key| -> Result<f64, SceneError> {
-            if self.values[height as usize].is_none() {
-                return value(v0);
-            }
-            let v = closed_form::release_speed(value(height)?, k, g);
-            let p = Key::V0.param();
-            check(p, v, p.range.contains(v), || {
-                format!("{} (the run-up from this height is too fast)", p.range.text)
-            })?;
-            Ok(v)
-        };
-        let v0_left = speed(Key::HeightLeft, Key::V0Left)?;
-        let v0_right = speed(Key::HeightRight, Key::V0Right)?;
-        if v0_left + v0_right < 0.0 {
+        let (mut scene, mut span) = (UNSET, Span::DEFAULT);
+        let own = PARAMS.iter().filter(|p| p.is_own());
+        let (first, then): (Vec<&Param>, Vec<&Param>) = own.partition(|p| p.replaces.is_none());
+        for p in first.into_iter().chain(then) {
+            let given = self.values[p.key as usize];
+            let replaced = PARAMS
+                .iter()
+                .any(|q| q.replaces == Some(p.key) && self.values[q.key as usize].is_some());
+            let v = match (given, p.default) {
+                (Some(v), _) => in_range(p, v)?,
+                (None, Fallback::Value(v)) => v,
+                (None, Fallback::Optional) => continue,
+                (None, Fallback::Required) if replaced => continue,
+                (None, Fallback::Required) => {
+                    return Err(SceneError::Other(format!(
+                        "{} is not set, give it with --{} or in the preset",
+                        p.symbol, p.flag
+                    )));
+                }
+            };
+            (p.set)(&mut scene, &mut span, v);
+            relations(p, &scene, &span)?;
+        }
+        if scene.left.v0 + scene.right.v0 < 0.0 {
+            let closing = scene.left.v0 + scene.right.v0;
             return Err(SceneError::OutOfRange {
                 name: "closing speed v0_left + v0_right",
-                value: show(v0_left + v0_right, Dimension::Speed).to_string(),
+                value: show(closing, Dimension::Speed).to_string(),
                 allowed: "≥ 0 m/s (the balls meet at t = 0)".into(),
             });
         }
-        let t_start = default(Key::TStart, Span::default().t_start)?;
-        if self.get(Key::TEnd).is_some() {
-            let t_end = value(Key::TEnd)?;
-            check(Key::TEnd.param(), t_end, t_end > t_start, || {
-                format!("t_end > t_start = {}", show(t_start, Dimension::Time))
-            })?;
-        }
-        let scene = Scene {
-            radius,
-            width,
-            mu,
-            g,
-            restitution,
-            rolling_resistance,
-            left: Ball {
-                mass: mass_left,
-                v0: v0_left,
-            },
-            right: Ball {
-                mass: mass_right,
-                v0: v0_right,
-            },
-        };
         finite_derived(&scene)?;
-        Ok((
-            scene,
-            Span {
-                t_start,
-                t_end: self.get(Key::TEnd),
-            },
-        ))
+        Ok((scene, span))
+    }
+}
+
+/// The checks between values, once `p` is written: b < 2R, t_end after t_start, and a
+/// release height's speed within the speed range.
+fn relations(p: &Param, scene: &Scene, span: &Span) -> Result<(), SceneError> {
+    match (p.key, p.replaces) {
+        (Key::Width, _) => check(p, scene.width, scene.width < 2.0 * scene.radius, || {
+            format!(
+                "0 ≤ b < 2R = {}",
+                show(2.0 * scene.radius, Dimension::Length)
+            )
+        }),
+        (Key::TEnd, _) => {
+            let t_end = span.t_end.unwrap_or(f64::NAN);
+            check(p, t_end, t_end > span.t_start, || {
+                format!("t_end > t_start = {}", show(span.t_start, Dimension::Time))
+            })
+        }
+        (_, Some(speed)) => {
+            let v = (speed.param().get)(scene, span).unwrap_or(f64::NAN);
+            let q = Key::V0.param();
+            check(q, v, q.range.contains(v), || {
+                format!("{} (the run-up from this height is too fast)", q.range.text)
+            })
+        }
+        _ => Ok(()),
     }
 }
 

@@ -15,31 +15,99 @@ pub enum Dimension {
     Ratio,
 }
 
-impl Dimension {
+/// How one dimension is written: the units accepted and the one people read.
+struct Units {
     /// Accepted units and their decimal exponent to SI (cm: −2); the first entry is
-    /// the SI unit. Shifting the decimal exponent of the text, rather than multiplying,
-    /// keeps `4.4cm` the very double that `0.044` is.
-    fn units(self) -> &'static [(&'static str, i32)] {
+    /// the SI unit.
+    accepted: &'static [(&'static str, i32)],
+    /// The unit the app shows, messages print and a bare typed number means.
+    display: &'static str,
+    /// Decimals of the app's parameter panel in that unit (columns line up); `None`:
+    /// four significant digits.
+    decimals: Option<usize>,
+}
+
+impl Dimension {
+    /// The one table of units: everything else about units reads it.
+    fn table(self) -> &'static Units {
         match self {
-            Dimension::Length => &[("m", 0), ("cm", -2), ("mm", -3)],
-            Dimension::Mass => &[("kg", 0), ("g", -3)],
-            Dimension::Speed => &[("m/s", 0), ("cm/s", -2), ("mm/s", -3)],
-            Dimension::Time => &[("s", 0), ("ms", -3)],
-            Dimension::Acceleration => &[("m/s^2", 0), ("m/s²", 0), ("m/s2", 0)],
-            Dimension::Ratio => &[],
+            Dimension::Length => &Units {
+                accepted: &[("m", 0), ("cm", -2), ("mm", -3)],
+                display: "cm",
+                decimals: Some(2),
+            },
+            Dimension::Mass => &Units {
+                accepted: &[("kg", 0), ("g", -3)],
+                display: "g",
+                decimals: Some(1),
+            },
+            Dimension::Speed => &Units {
+                accepted: &[("m/s", 0), ("cm/s", -2), ("mm/s", -3)],
+                display: "m/s",
+                decimals: Some(3),
+            },
+            Dimension::Time => &Units {
+                accepted: &[("s", 0), ("ms", -3)],
+                display: "s",
+                decimals: Some(3),
+            },
+            Dimension::Acceleration => &Units {
+                accepted: &[("m/s^2", 0), ("m/s²", 0), ("m/s2", 0)],
+                display: "m/s²",
+                decimals: Some(2),
+            },
+            Dimension::Ratio => &Units {
+                accepted: &[],
+                display: "",
+                decimals: None,
+            },
         }
+    }
+
+    /// Accepted units and their decimal exponent to SI. Shifting the decimal exponent
+    /// of the text, rather than multiplying, keeps `4.4cm` the very double that
+    /// `0.044` is.
+    fn units(self) -> &'static [(&'static str, i32)] {
+        self.table().accepted
     }
 
     /// The unit the app shows and a bare typed number means, with its decimal exponent
     /// to SI (cm: −2); empty for a pure number.
     pub fn display_unit(self) -> (&'static str, i32) {
-        match self {
-            Dimension::Length => ("cm", -2),
-            Dimension::Mass => ("g", -3),
-            Dimension::Speed => ("m/s", 0),
-            Dimension::Time => ("s", 0),
-            Dimension::Acceleration => ("m/s²", 0),
-            Dimension::Ratio => ("", 0),
+        let name = self.table().display;
+        let shift = self
+            .units()
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map_or(0, |u| u.1);
+        (name, shift)
+    }
+
+    /// `value` (SI) in the display unit: 0.0275 m → 2.75 (cm). A power of ten exact
+    /// in binary (100, 1000), so the result is the one multiplication by it.
+    pub fn to_display(self, value: f64) -> f64 {
+        match self.display_unit().1 {
+            0 => value,
+            shift => value * 10f64.powi(-shift),
+        }
+    }
+
+    /// `value` (SI) as the parameter panel shows it: the display unit's fixed
+    /// decimals (or four significant digits), without the unit.
+    pub fn panel_number(self, value: f64) -> String {
+        let v = self.to_display(value);
+        match self.table().decimals {
+            Some(d) => format!("{v:.d$}"),
+            None => significant(v, 4),
+        }
+    }
+
+    /// The display unit after a space (" cm"), empty for a pure number: what follows
+    /// a number in text.
+    pub fn suffix(self) -> String {
+        match self.table().display {
+            "" => String::new(),
+            unit => format!(" {unit}"),
         }
     }
 
@@ -257,15 +325,8 @@ pub fn show(value: f64, dim: Dimension) -> Shown {
 
 impl fmt::Display for Shown {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let (factor, unit) = match self.dim {
-            Dimension::Length => (1e2, " cm"),
-            Dimension::Mass => (1e3, " g"),
-            Dimension::Speed => (1.0, " m/s"),
-            Dimension::Time => (1.0, " s"),
-            Dimension::Acceleration => (1.0, " m/s²"),
-            Dimension::Ratio => (1.0, ""),
-        };
-        let v = self.value * factor;
+        let unit = self.dim.suffix();
+        let v = self.dim.to_display(self.value);
         match f.precision() {
             Some(p) => write!(f, "{v:.p$}{unit}"),
             None => write!(f, "{}{unit}", significant(v, 4)),
@@ -278,14 +339,8 @@ impl fmt::Display for Shown {
 /// range beside it. The decimal exponent is shifted, not multiplied, so 0.06 m reads
 /// "6 cm", never "6.000000000000001 cm".
 pub fn show_exact(value: f64, dim: Dimension) -> String {
-    let (shift, unit) = match dim {
-        Dimension::Length => (2, " cm"),
-        Dimension::Mass => (3, " g"),
-        Dimension::Speed => (0, " m/s"),
-        Dimension::Time => (0, " s"),
-        Dimension::Acceleration => (0, " m/s²"),
-        Dimension::Ratio => (0, ""),
-    };
+    let shift = -dim.display_unit().1;
+    let unit = dim.suffix();
     if !value.is_finite() {
         return format!("{value}{unit}");
     }

@@ -168,25 +168,10 @@ impl Lab {
         self.series.as_ref()
     }
 
-    /// The current value of a parameter, SI.
+    /// The current value of a parameter, SI (`t_end`: the shown end).
     pub fn value(&self, key: Key) -> f64 {
-        let s = &self.scene;
-        match key {
-            Key::Radius => s.radius,
-            Key::Width => s.width,
-            Key::Mass | Key::MassLeft => s.left.mass,
-            Key::MassRight => s.right.mass,
-            Key::Mu => s.mu,
-            Key::V0 | Key::V0Left => s.left.v0,
-            Key::V0Right => s.right.v0,
-            Key::Height | Key::HeightLeft => self.derived.release_height,
-            Key::HeightRight => crate::physics::closed_form::release_height(s.right.v0, s.k(), s.g),
-            Key::Restitution => s.restitution,
-            Key::RollingResistance => s.rolling_resistance,
-            Key::G => s.g,
-            Key::TStart => self.span.t_start,
-            Key::TEnd => self.solution.t_end,
-        }
+        key.get(&self.scene, &self.span)
+            .expect("the lab's span always has its shown end")
     }
 
     /// Sets a parameter if the scene stays valid. Setting `t_end` fixes the span's end;

@@ -5,7 +5,10 @@
 use std::cell::RefCell;
 use std::rc::Rc;
 
+use crate::input::params::{Key, PARAMS};
+use crate::input::units::show;
 use crate::physics::derived::{Derived, Regime};
+use crate::physics::scene::Span;
 use crate::physics::solution::{EnergySplit, Snapshot, Solution};
 use crate::study::measured::Measured;
 
@@ -104,37 +107,26 @@ impl Lab {
         k
     }
 
-    /// The pinned parameters that differ from the current ones: `(label, was, now)`,
-    /// in the units of the parameter panel.
+    /// The pinned parameters that differ from the current ones: `(label, was, now)`
+    /// with the table's label and unit: every value of the scene and the span's start
+    /// (the shown end follows the runs).
     pub fn pinned_changes(&self) -> Vec<(&'static str, String, String)> {
         let Some(p) = &self.pinned else {
             return Vec::new();
         };
-        let (a, b) = (&p.scene, &self.scene);
-        let rows: [(&'static str, f64, f64, crate::input::units::Dimension); 11] = {
-            use crate::input::units::Dimension as D;
-            [
-                ("R", a.radius, b.radius, D::Length),
-                ("b", a.width, b.width, D::Length),
-                ("m left", a.left.mass, b.left.mass, D::Mass),
-                ("m right", a.right.mass, b.right.mass, D::Mass),
-                ("μ_k", a.mu, b.mu, D::Ratio),
-                ("v0 left", a.left.v0, b.left.v0, D::Speed),
-                ("v0 right", a.right.v0, b.right.v0, D::Speed),
-                ("e", a.restitution, b.restitution, D::Ratio),
-                ("c_rr", a.rolling_resistance, b.rolling_resistance, D::Ratio),
-                ("g", a.g, b.g, D::Acceleration),
-                ("t0", p.solution.t_start, self.solution.t_start, D::Time),
-            ]
+        let was_span = Span {
+            t_start: p.solution.t_start,
+            t_end: Some(p.solution.t_end),
         };
-        rows.into_iter()
-            .filter(|(_, x, y, _)| (x - y).abs() > 1e-12 * x.abs().max(y.abs()))
-            .map(|(name, x, y, dim)| {
-                (
-                    name,
-                    crate::input::units::show(x, dim).to_string(),
-                    crate::input::units::show(y, dim).to_string(),
-                )
+        PARAMS
+            .iter()
+            .filter(|row| row.is_own() && row.replaces.is_none() && row.key != Key::TEnd)
+            .filter_map(|row| {
+                let x = (row.get)(&p.scene, &was_span)?;
+                let y = (row.get)(&self.scene, &self.span)?;
+                let differ = (x - y).abs() > 1e-12 * x.abs().max(y.abs());
+                let shown = |v| show(v, row.dim).to_string();
+                differ.then(|| (row.label, shown(x), shown(y)))
             })
             .collect()
     }

@@ -8,6 +8,7 @@ use serde::Serialize;
 
 use crate::physics::closed_form;
 use crate::physics::engine::NEGLIGIBLE_SPEED;
+use crate::physics::forces::Sliding;
 use crate::physics::model::{self, BallState, Groove, slip};
 use crate::physics::scene::Scene;
 use crate::physics::solution::{EnergySplit, Solution};
@@ -113,6 +114,9 @@ pub struct Derived {
     /// The paper's case: equal balls at equal speeds.
     pub symmetric: bool,
     pub restitution: f64,
+    /// Each ball's forces while it slides (the Forces view's chain), left and right.
+    #[serde(skip)]
+    pub sliding: [Sliding; 2],
 }
 
 impl Derived {
@@ -148,6 +152,10 @@ impl Derived {
             forces: forces(scene, scene.left.mass, slip_sign),
             symmetric: scene.is_symmetric(),
             restitution: scene.restitution,
+            sliding: [
+                Sliding::of(scene, scene.left.mass),
+                Sliding::of(scene, scene.right.mass),
+            ],
         }
     }
 

@@ -5,6 +5,7 @@
 pub mod closed_form;
 pub mod derived;
 pub mod engine;
+pub mod forces;
 pub mod model;
 pub mod scene;
 pub mod solution;

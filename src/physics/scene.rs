@@ -42,12 +42,18 @@ pub struct Span {
     pub t_end: Option<f64>,
 }
 
+impl Span {
+    /// The span when none is given: from 0.2 s before the first impact to a little
+    /// past the last event (the `t_start` default of the parameter table).
+    pub const DEFAULT: Span = Span {
+        t_start: -0.2,
+        t_end: None,
+    };
+}
+
 impl Default for Span {
     fn default() -> Self {
-        Span {
-            t_start: -0.2,
-            t_end: None,
-        }
+        Span::DEFAULT
     }
 }
 

@@ -219,12 +219,12 @@ pub fn parse_axis(text: &str, n: usize) -> Result<Axis, String> {
     let key = Key::from_name(&name.trim().replace('-', "_")).ok_or_else(|| {
         let names: Vec<&str> = Key::ALL
             .iter()
-            .filter(|k| !matches!(k, Key::TStart | Key::TEnd))
+            .filter(|k| k.param().of_scene())
             .map(|k| k.name())
             .collect();
         format!("unknown parameter '{name}', allowed: {}", names.join(", "))
     })?;
-    if matches!(key, Key::TStart | Key::TEnd) {
+    if !key.param().of_scene() {
         return Err(format!("{} is not a scene parameter to sweep", key.name()));
     }
     let (a, b) = range

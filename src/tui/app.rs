@@ -5,6 +5,7 @@
 //! `normal`, the picker and text prompts in `prompts`.
 
 mod normal;
+mod predict;
 mod prompts;
 
 use std::cell::Cell;
@@ -15,7 +16,10 @@ use crate::input::params::{Key, PARAMS, Param};
 use crate::input::units::{Dimension, show, significant};
 use crate::lab::Lab;
 
-pub use super::vocabulary::{Action, ChartBall, Export, FPS, Library, Mode, SPEEDS, Status, View};
+pub use super::vocabulary::{
+    Action, ChartBall, Export, FPS, Library, Mode, Prediction, SPEEDS, Status, View,
+};
+pub use predict::reveal_time;
 pub use prompts::{export_step, typing_prompt};
 
 use super::vocabulary::DEFAULT_SPEED;
@@ -52,6 +56,12 @@ pub struct App {
     pub scroll_max: Cell<usize>,
     /// Where `w`/`W` write a bare file name.
     pub export_dir: PathBuf,
+    /// The ball the Forces view's front view shows: 0 left, 1 right.
+    pub forces_ball: usize,
+    /// b's value hidden (a class predicts from the picture alone).
+    pub hide_b: bool,
+    /// The last prediction (predict, observe, explain).
+    pub prediction: Option<Prediction>,
 }
 
 impl App {
@@ -75,6 +85,9 @@ impl App {
             scroll: 0,
             scroll_max: Cell::new(usize::MAX),
             export_dir: PathBuf::from("."),
+            forces_ball: 0,
+            hide_b: false,
+            prediction: None,
         }
     }
 
@@ -93,14 +106,13 @@ impl App {
             Ok(()) => {
                 let sol = &self.lab.solution;
                 self.t = self.t.clamp(sol.t_start, sol.t_end);
-                let label = ROWS
-                    .iter()
-                    .find(|p| p.key == key)
-                    .map_or(key.name(), |p| p.label);
-                self.status = Status::Info(format!(
-                    "{label} = {}",
-                    show(self.lab.value(key), key.dimension())
-                ));
+                let label = key.param().label;
+                let value = if self.hide_b && key == Key::Width {
+                    "(hidden)".to_string()
+                } else {
+                    show(self.lab.value(key), key.dimension()).to_string()
+                };
+                self.status = Status::Info(format!("{label} = {value}"));
                 let s = &self.lab.scene;
                 if key == Key::V0 && s.left.v0 == s.right.v0 {
                     self.status = Status::Info(format!(
@@ -191,6 +203,7 @@ impl App {
                 }
             }
             Mode::Picker(i) => self.apply_picker(i, action),
+            Mode::Predict => self.apply_predict(action),
             Mode::Edit(text) => self.apply_text(text, action, TextTarget::Value),
             Mode::SaveName(text) => self.apply_text(text, action, TextTarget::Name),
             Mode::Export(kind, text) => self.apply_text(text, action, TextTarget::Export(kind)),

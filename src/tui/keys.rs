@@ -129,7 +129,7 @@ pub const TABLE: &[Binding] = &[
     Binding {
         keys: &["b"],
         action: Action::SwitchBall,
-        help: "chart: left ball, right ball, both",
+        help: "chart: left ball, right ball, both (Forces view: left or right ball)",
         hint: None,
     },
     Binding {
@@ -161,6 +161,24 @@ pub const TABLE: &[Binding] = &[
         action: Action::ToggleMap,
         help: "Map view: regime over b/R and e with this scene marked, the paper's figure",
         hint: Some(("map", 3)),
+    },
+    Binding {
+        keys: &["v"],
+        action: Action::ToggleForces,
+        help: "Forces view: the groove's cross-section with the forces and torques, the balls' motion states, the cause-and-effect chain (b: left or right ball)",
+        hint: None,
+    },
+    Binding {
+        keys: &["y"],
+        action: Action::Predict,
+        help: "predict, observe, explain: predict what the balls do after the impact (1 apart, 2 rest, 3 back), watch, then see why",
+        hint: None,
+    },
+    Binding {
+        keys: &["B"],
+        action: Action::HideWidth,
+        help: "hide or show b's value (a class predicts from the picture alone)",
+        hint: None,
     },
     Binding {
         keys: &["f"],
@@ -321,6 +339,13 @@ pub fn action(mode: &Mode, key: KeyEvent) -> Option<Action> {
             KeyCode::Char(c) => Some(Action::Type(c)),
             _ => None,
         };
+    }
+    // The prediction's question takes its answers as typed digits.
+    if *mode == Mode::Predict
+        && let KeyCode::Char(c) = key.code
+        && c.is_ascii_digit()
+    {
+        return Some(Action::Type(c));
     }
     // In a popup (help, picker, data table) `q` closes it like Esc: only the main
     // screen quits on `q`.

@@ -80,6 +80,8 @@ impl Glyphs {
                 'μ' => out.push_str("mu"),
                 'τ' => out.push_str("tau"),
                 'ρ' => out.push_str("rho"),
+                'ω' => out.push_str("omega"),
+                'α' => out.push_str("alpha"),
                 'Δ' => out.push('d'),
                 '²' => out.push_str("^2"),
                 '³' => out.push_str("^3"),

@@ -24,6 +24,8 @@ pub enum View {
     Map,
     /// The charts with the fit lines, and the Fit panel instead of the info panel.
     Fit,
+    /// The paper's figures of forces, torques and motion states, and the chain.
+    Forces,
 }
 
 /// What `w` and `W` write.
@@ -61,6 +63,18 @@ pub enum Mode {
     Export(Export, String),
     /// The measured data beside the model's values at those times (scrolls).
     Table,
+    /// Predict, observe, explain: the question before the impact (keys 1, 2, 3).
+    Predict,
+}
+
+/// A prediction of what the balls do after the impact, made before watching.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Prediction {
+    pub guess: crate::physics::derived::Regime,
+    /// The scene it was made for (a changed scene makes it stale).
+    pub scene: crate::physics::scene::Scene,
+    /// From this time on the run shows the outcome, s.
+    pub reveal_at: f64,
 }
 
 impl Mode {
@@ -128,6 +142,12 @@ pub enum Action {
     ApplyFit,
     Export(Export),
     DataTable,
+    /// The Forces view.
+    ToggleForces,
+    /// Predict, observe, explain: ask, play, explain.
+    Predict,
+    /// Hide (or show) b's value, for a prediction from the picture alone.
+    HideWidth,
 }
 
 /// Playback speeds (simulated seconds per real second); slow motion by default, as

@@ -2,15 +2,9 @@
 //! line, exit status 2 and nothing on stdout; good input gives parseable output.
 
 use std::io::Write;
-use std::process::{Command, Output, Stdio};
+use std::process::{Command, Stdio};
 
-fn groovelab(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_groovelab"))
-        .args(args)
-        .env("GROOVELAB_PRESETS", "/nonexistent-groovelab-presets")
-        .output()
-        .unwrap()
-}
+use crate::common::groovelab;
 
 fn assert_rejected(args: &[&str], mentions: &str) {
     let out = groovelab(args);

@@ -1,7 +1,14 @@
 //! Helpers shared by the integration tests.
 #![allow(dead_code)]
 
+use groovelab::cli::{self, DataArgs, SceneArgs};
+use groovelab::input::params::Key;
+use groovelab::input::preset::Preset;
+use groovelab::lab::Lab;
 use groovelab::physics::scene::{Ball, Scene, Span};
+use groovelab::tui::app::{App, Library, ROWS};
+use groovelab::tui::theme::{Glyphs, Theme};
+use groovelab::tui::{keys, replay, view};
 
 /// The paper's symmetric scene with the given width, friction, speed and restitution.
 pub fn symmetric(radius: f64, width: f64, mu: f64, v0: f64, e: f64) -> Scene {
@@ -43,4 +50,73 @@ macro_rules! assert_close {
             format!($($msg)*)
         );
     }};
+}
+
+// ---- The command ---------------------------------------------------------------------
+
+/// Runs the binary with `args`, without the user's presets (a folder that does not
+/// exist), and returns what it printed.
+pub fn groovelab(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_groovelab"))
+        .args(args)
+        .env("GROOVELAB_PRESETS", "/nonexistent-groovelab-presets")
+        .output()
+        .unwrap()
+}
+
+// ---- The app without a terminal ------------------------------------------------------
+
+/// An empty preset folder of this test run's own (one per `area`, so a preset one area
+/// saves never shows in another's screens), so no user preset shows up.
+pub fn no_user_presets(area: &str) -> Library {
+    let dir = std::env::temp_dir().join(format!("groovelab-{area}-presets-{}", std::process::id()));
+    Library::at(Some(dir))
+}
+
+/// The app on a built-in preset as it starts.
+pub fn app(preset: &str, library: Library) -> App {
+    let p = Preset::load(preset).unwrap();
+    let (scene, span) = p.spec.resolve().unwrap();
+    App::new(Lab::new(p, scene, span), library)
+}
+
+/// Presses the keys of `script` (the names the help screen shows).
+pub fn press(app: &mut App, script: &str) {
+    replay(app, &keys::parse_script(script).unwrap());
+}
+
+/// Selects the parameter row of `key`.
+pub fn select(app: &mut App, key: Key) {
+    app.selected = ROWS.iter().position(|p| p.key == key).unwrap();
+}
+
+/// The app as `render` leaves it just before drawing: the lab of `scene` and `data`,
+/// `keys` pressed, every analysis they asked for finished, the cursor at `at`, paused.
+/// Drawn at every size and glyph set ([`text`]), its analyses are computed once; the
+/// test `tui::drawing_one_app_at_every_size_is_render_at_every_size` holds it to
+/// `render`.
+pub fn rendered(
+    scene: &SceneArgs,
+    data: &DataArgs,
+    at: Option<f64>,
+    keys: Option<&str>,
+    library: Library,
+) -> App {
+    let mut app = App::new(cli::lab(scene, data).unwrap(), library);
+    if let Some(script) = keys {
+        press(&mut app, script);
+    }
+    app.wait();
+    if let Some(t) = at {
+        let (lo, hi) = (app.lab.solution.t_start, app.lab.solution.t_end);
+        assert!((lo..=hi).contains(&t), "{t} outside {lo} … {hi}");
+        app.t = t;
+    }
+    app.playing = false;
+    app
+}
+
+/// The screen of `app` at `size` as `render` prints it (no colours), ASCII or Unicode.
+pub fn text(app: &App, size: (u16, u16), ascii: bool) -> String {
+    view::to_text(app, size.0, size.1, &Theme::new(Glyphs::new(ascii), true))
 }

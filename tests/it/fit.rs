@@ -1,7 +1,5 @@
 //! Fitting against the paper's data and against synthetic data with known μ_k.
 
-use std::process::Command;
-
 use groovelab::input::data;
 use groovelab::input::preset::Preset;
 use groovelab::physics::derived::Regime;
@@ -9,6 +7,8 @@ use groovelab::physics::engine::solve;
 use groovelab::physics::scene::{Scene, Span};
 use groovelab::study::fit::{self, Free, PAPER_TABLE};
 use groovelab::study::measured::Measured;
+
+use crate::common::groovelab;
 
 fn paper(width: &str) -> (Scene, Measured) {
     let p = Preset::load(&format!("paper-b{width}")).unwrap();
@@ -207,14 +207,6 @@ fn paper_b4_4_has_one_verdict_everywhere() {
     );
     let sim = String::from_utf8(groovelab(&["simulate", "--preset", "paper-b4.4"]).stdout).unwrap();
     assert!(sim.contains(&format!("verdict  {verdict}")), "{sim}");
-}
-
-fn groovelab(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_groovelab"))
-        .args(args)
-        .env("GROOVELAB_PRESETS", "/nonexistent-groovelab-presets")
-        .output()
-        .unwrap()
 }
 
 fn csv(name: &str, text: &str) -> String {

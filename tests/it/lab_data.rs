@@ -2,11 +2,11 @@
 //! shown derives its velocities, the track flags reach the reader, the ghost replays
 //! the tracked centre and mark, the charts and the Fit panel show what was derived.
 
-use std::process::Command;
-
 use groovelab::cli::{self, DataArgs, RenderArgs, SceneArgs, TrackRole, render_with};
 use groovelab::input::params::{Key, SceneSpec};
 use groovelab::tui::app::Library;
+
+use crate::common::{self, groovelab};
 
 const EXAMPLE: &str = "docs/video/paper-b4.9-tracker.txt";
 
@@ -27,16 +27,7 @@ fn scene(values: SceneSpec) -> SceneArgs {
 }
 
 fn no_user_presets() -> Library {
-    let dir =
-        std::env::temp_dir().join(format!("groovelab-labdata-presets-{}", std::process::id()));
-    Library::at(Some(dir))
-}
-
-fn groovelab(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_groovelab"))
-        .args(args)
-        .output()
-        .unwrap()
+    common::no_user_presets("labdata")
 }
 
 #[test]

@@ -8,6 +8,7 @@ mod cli;
 mod closed_forms;
 mod data_files;
 mod fit;
+mod forces;
 mod fuzz;
 mod lab_data;
 mod long_runs;

@@ -7,28 +7,19 @@ use groovelab::input::params::{Key, SceneSpec};
 use groovelab::input::preset::{Origin, Preset};
 use groovelab::lab::{Lab, SpanEnd};
 use groovelab::physics::solution::EventKind;
-use groovelab::tui::app::{App, Library, ROWS, Status};
+use groovelab::tui::app::{App, Library, Status};
 use groovelab::tui::theme::{Glyphs, Theme};
-use groovelab::tui::{keys, replay, view};
+use groovelab::tui::view;
 use ratatui::layout::Rect;
 
+use crate::common::{self, press, select, text};
+
 fn no_user_presets() -> Library {
-    let dir = std::env::temp_dir().join(format!("groovelab-motion-presets-{}", std::process::id()));
-    Library::at(Some(dir))
+    common::no_user_presets("motion")
 }
 
 fn app(preset: &str) -> App {
-    let p = Preset::load(preset).unwrap();
-    let (scene, span) = p.spec.resolve().unwrap();
-    App::new(Lab::new(p, scene, span), no_user_presets())
-}
-
-fn press(app: &mut App, script: &str) {
-    replay(app, &keys::parse_script(script).unwrap());
-}
-
-fn select(app: &mut App, key: Key) {
-    app.selected = ROWS.iter().position(|p| p.key == key).unwrap();
+    common::app(preset, no_user_presets())
 }
 
 /// `render` of `preset` with scene options `values`, at `at`, after `keys`.
@@ -113,7 +104,7 @@ fn paper_b4_9_with_low_friction_shows_all_twenty_impacts_up_to_t_inf() {
     // The animation's last frame is after T∞; the chart's axis reaches it.
     press(&mut a, "end");
     assert!(a.t > t_inf);
-    let s = view::to_text(&a, 120, 40, &Theme::new(Glyphs::UNICODE, true));
+    let s = text(&a, (120, 40), false);
     assert!(last_x_tick(&s, 40) >= 3.0, "{s}");
     assert!(chart_rows(&s, 40).concat().contains("T∞"));
     // The same through `render`, which also accepts any time in the span.
@@ -402,7 +393,7 @@ fn the_energy_chart_tells_its_curves_apart_without_colour() {
     press(&mut a, "e");
     a.t = 0.1;
     for ascii in [false, true] {
-        let s = view::to_text(&a, 120, 40, &Theme::new(Glyphs::new(ascii), true));
+        let s = text(&a, (120, 40), ascii);
         let rows = chart_rows(&s, 40);
         // Row 0 is the border, row 1 the legend, then the plot, the ticks, the border.
         let plot: String = rows[2..rows.len() - 2].concat();
@@ -480,7 +471,7 @@ fn a_long_list_of_changes_is_cut_with_an_ellipsis() {
     ] {
         a.lab.set(key, v).unwrap();
     }
-    let s = view::to_text(&a, 80, 24, &Theme::new(Glyphs::ASCII, true));
+    let s = text(&a, (80, 24), true);
     assert!(s.is_ascii());
     let line = s.lines().nth(8).unwrap();
     assert!(line.contains("pinned paper-b4.9"), "{line}");
@@ -491,32 +482,36 @@ fn a_long_list_of_changes_is_cut_with_an_ellipsis() {
 
 #[test]
 fn snapshots_of_the_whole_motion_energy_and_pin() {
-    for (w, h) in SIZES {
-        for ascii in [false, true] {
-            let mode = if ascii { "ascii" } else { "unicode" };
-            let cases: [(&str, &str, SceneSpec, Option<f64>, &str); 4] = [
-                ("b4.9-mu0.05-end", "paper-b4.9", mu(0.05), None, "end"),
-                (
-                    "b4.4-t-inf",
-                    "paper-b4.4",
-                    SceneSpec::default(),
-                    None,
-                    "end <",
-                ),
-                ("energy", "inelastic", SceneSpec::default(), Some(0.1), "e"),
-                (
-                    "pinned",
-                    "paper-b4.9",
-                    SceneSpec::default(),
-                    Some(0.4),
-                    "P down down down right right right right right",
-                ),
-            ];
-            for (name, preset, values, at, keys) in cases {
-                insta::assert_snapshot!(
-                    format!("{name}-{w}x{h}-{mode}"),
-                    render(preset, values, at, (w, h), ascii, keys).unwrap()
-                );
+    let cases: [(&str, &str, SceneSpec, Option<f64>, &str); 4] = [
+        ("b4.9-mu0.05-end", "paper-b4.9", mu(0.05), None, "end"),
+        (
+            "b4.4-t-inf",
+            "paper-b4.4",
+            SceneSpec::default(),
+            None,
+            "end <",
+        ),
+        ("energy", "inelastic", SceneSpec::default(), Some(0.1), "e"),
+        (
+            "pinned",
+            "paper-b4.9",
+            SceneSpec::default(),
+            Some(0.4),
+            "P down down down right right right right right",
+        ),
+    ];
+    for (name, preset, values, at, keys) in cases {
+        // One app per case, drawn at every size and glyph set.
+        let scene = SceneArgs {
+            preset: Some(preset.to_string()),
+            values,
+        };
+        let data = DataArgs::default();
+        let a = common::rendered(&scene, &data, at, Some(keys), no_user_presets());
+        for (w, h) in SIZES {
+            for ascii in [false, true] {
+                let mode = if ascii { "ascii" } else { "unicode" };
+                insta::assert_snapshot!(format!("{name}-{w}x{h}-{mode}"), text(&a, (w, h), ascii));
             }
         }
     }

@@ -7,10 +7,12 @@ use groovelab::cli::{self, DataArgs, SceneArgs};
 use groovelab::input::params::{Key, SceneSpec};
 use groovelab::lab::jobs::State;
 use groovelab::physics::story::{After, after_first_impact};
-use groovelab::tui::app::{App, Library, ROWS};
+use groovelab::tui::app::{App, ROWS};
 use groovelab::tui::theme::{Glyphs, Theme};
 use groovelab::tui::{keys, replay, view};
 use ratatui::layout::Rect;
+
+use crate::common;
 
 const SIZES: [(u16, u16); 3] = [(80, 24), (120, 40), (200, 60)];
 
@@ -23,8 +25,10 @@ fn app(preset: &str, values: SceneSpec, data: Option<&str>, keys_: &str) -> App 
         data: data.into_iter().map(Into::into).collect(),
         ..DataArgs::default()
     };
-    let dir = std::env::temp_dir().join(format!("groovelab-numbers-{}", std::process::id()));
-    let mut a = App::new(cli::lab(&scene, &data).unwrap(), Library::at(Some(dir)));
+    let mut a = App::new(
+        cli::lab(&scene, &data).unwrap(),
+        common::no_user_presets("numbers"),
+    );
     replay(&mut a, &keys::parse_script(keys_).unwrap());
     a.lab.wait();
     a

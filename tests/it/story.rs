@@ -1,7 +1,7 @@
 //! What the exact run does, in words: the closed-form recovery only where the run
 //! bears it out (issue 11: paper-b3.5 with e = 0.2 accumulates before t').
 
-use std::process::Command;
+use crate::common;
 
 use groovelab::input::params::{Key, SceneSpec};
 use groovelab::input::preset::Preset;
@@ -10,10 +10,7 @@ use groovelab::physics::engine::solve;
 use groovelab::physics::story::{After, after_first_impact};
 
 fn groovelab(args: &[&str]) -> String {
-    let out = Command::new(env!("CARGO_BIN_EXE_groovelab"))
-        .args(args)
-        .output()
-        .unwrap();
+    let out = common::groovelab(args);
     assert!(
         out.status.success(),
         "{}",

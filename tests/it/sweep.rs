@@ -10,6 +10,8 @@ use groovelab::physics::closed_form;
 use groovelab::physics::derived::Regime;
 use groovelab::study::sweep::{self, Point, SweepError};
 
+use crate::common::groovelab;
+
 fn base(preset: &str) -> SceneSpec {
     Preset::load(preset).unwrap().spec
 }
@@ -122,13 +124,6 @@ fn a_stop_request_leaves_no_partial_map() {
         sweep::run(&spec, &x, None, &stop, &|| {}),
         Err(SweepError::Interrupted)
     );
-}
-
-fn groovelab(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_groovelab"))
-        .args(args)
-        .output()
-        .unwrap()
 }
 
 #[test]

@@ -2,8 +2,6 @@
 //! format, read, differentiated and fitted back to μ_k; odd frames, gaps, missing
 //! pieces; the committed example file.
 
-use std::process::Command;
-
 use groovelab::input::data::{self, Reading};
 use groovelab::input::preset::Preset;
 use groovelab::physics::scene::Scene;
@@ -11,6 +9,8 @@ use groovelab::study::fit::{self, Free};
 use groovelab::study::measured::track::{self, TrackFits};
 use groovelab::study::measured::{self, Derive, Found, Measured, RawSeries};
 use groovelab::study::video::{self, Format, Video};
+
+use crate::common::groovelab;
 
 const MU: f64 = 0.17;
 
@@ -311,13 +311,6 @@ fn example_file_is_what_the_generator_makes() {
         committed == text,
         "docs/video/paper-b4.9-tracker.txt differs from the generator's output; regenerate it"
     );
-}
-
-fn groovelab(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_groovelab"))
-        .args(args)
-        .output()
-        .unwrap()
 }
 
 #[test]

@@ -4,30 +4,19 @@
 use groovelab::cli::{DataArgs, RenderArgs, SceneArgs, render_with};
 use groovelab::input::params::Key;
 use groovelab::input::preset::Preset;
-use groovelab::lab::Lab;
 use groovelab::lab::jobs::State;
 use groovelab::physics::derived::Regime;
 use groovelab::tui::app::{App, Library, Mode, ROWS, Status, View};
-use groovelab::tui::{keys, replay};
+use groovelab::tui::keys;
 
-/// An empty preset folder of this test run's own, so no user preset shows up.
+use crate::common::{self, press, select, text};
+
 fn no_user_presets() -> Library {
-    let dir = std::env::temp_dir().join(format!("groovelab-tui-presets-{}", std::process::id()));
-    Library::at(Some(dir))
+    common::no_user_presets("tui")
 }
 
 fn app(preset: &str) -> App {
-    let p = Preset::load(preset).unwrap();
-    let (scene, span) = p.spec.resolve().unwrap();
-    App::new(Lab::new(p, scene, span), no_user_presets())
-}
-
-fn press(app: &mut App, script: &str) {
-    replay(app, &keys::parse_script(script).unwrap());
-}
-
-fn select(app: &mut App, key: Key) {
-    app.selected = ROWS.iter().position(|p| p.key == key).unwrap();
+    common::app(preset, no_user_presets())
 }
 
 fn screen(preset: &str, at: f64, size: (u16, u16), ascii: bool, keys: Option<&str>) -> String {
@@ -231,8 +220,7 @@ fn chart_toggles() {
 }
 
 fn screen_of(a: &App) -> String {
-    let theme = groovelab::tui::theme::Theme::new(groovelab::tui::theme::Glyphs::UNICODE, true);
-    groovelab::tui::view::to_text(a, 120, 40, &theme)
+    text(a, (120, 40), false)
 }
 
 /// Rows of the chart panel at 120×40 (between the top panels, one row per parameter,
@@ -335,16 +323,39 @@ fn phase_times(preset: &str) -> Vec<f64> {
     vec![-0.1, 0.5 * first_roll, first_roll + 0.02, sol.t_end]
 }
 
-fn snapshot_of(preset: &str, size: (u16, u16), ascii: bool) -> String {
-    phase_times(preset)
-        .into_iter()
-        .map(|t| {
-            format!(
-                "--- at {t:.4} s ---\n{}",
-                screen(preset, t, size, ascii, None)
-            )
-        })
-        .collect()
+/// The app `render --preset PRESET --at AT --keys KEYS` draws, ready to be drawn at any
+/// size and glyph set.
+fn shown(preset: &str, at: f64, keys: Option<&str>) -> App {
+    let scene = SceneArgs {
+        preset: Some(preset.to_string()),
+        ..SceneArgs::default()
+    };
+    common::rendered(
+        &scene,
+        &DataArgs::default(),
+        Some(at),
+        keys,
+        no_user_presets(),
+    )
+}
+
+#[test]
+fn drawing_one_app_at_every_size_is_render_at_every_size() {
+    // The snapshot tests draw one app at every size and glyph set (its analyses computed
+    // once); `render` makes a new one each time. Drawing leaves state behind (a popup's
+    // scroll limit, the views' caches), so this holds them to the same bytes.
+    for keys in ["? end", "d end", "w", "o"] {
+        let a = shown("paper-b4.9", 0.3, Some(keys));
+        for size in [(80, 24), (120, 40), (200, 60), (80, 24)] {
+            for ascii in [false, true] {
+                assert_eq!(
+                    text(&a, size, ascii),
+                    screen("paper-b4.9", 0.3, size, ascii, Some(keys)),
+                    "{keys:?} {size:?} ascii {ascii}"
+                );
+            }
+        }
+    }
 }
 
 #[test]
@@ -356,12 +367,16 @@ fn snapshots_of_every_preset() {
         ((120, 40), true),
     ];
     for p in Preset::built_in() {
+        let times = phase_times(&p.name);
+        let apps: Vec<App> = times.iter().map(|&t| shown(&p.name, t, None)).collect();
         for ((w, h), ascii) in combos {
             let mode = if ascii { "ascii" } else { "unicode" };
-            insta::assert_snapshot!(
-                format!("screen-{}-{w}x{h}-{mode}", p.name),
-                snapshot_of(&p.name, (w, h), ascii)
-            );
+            let screens: String = times
+                .iter()
+                .zip(&apps)
+                .map(|(t, a)| format!("--- at {t:.4} s ---\n{}", text(a, (w, h), ascii)))
+                .collect();
+            insta::assert_snapshot!(format!("screen-{}-{w}x{h}-{mode}", p.name), screens);
         }
     }
 }
@@ -373,13 +388,14 @@ fn snapshots_of_popups() {
         ("picker", "p down"),
         ("typing", "enter 4 . 4"),
     ] {
+        let a = shown("paper-b4.9", 0.2, Some(keys));
         insta::assert_snapshot!(
             format!("popup-{name}-120x40-unicode"),
-            screen("paper-b4.9", 0.2, (120, 40), false, Some(keys))
+            text(&a, (120, 40), false)
         );
         insta::assert_snapshot!(
             format!("popup-{name}-80x24-ascii"),
-            screen("paper-b4.9", 0.2, (80, 24), true, Some(keys))
+            text(&a, (80, 24), true)
         );
     }
 }
@@ -449,12 +465,15 @@ fn methods_view_and_overlay() {
     for name in ["euler", "symplectic-euler", "rk4", "rk45", "moreau"] {
         assert!(s.contains(name), "{name}");
     }
-    // Deterministic: the view plots work in steps, not measured time.
-    let again = screen("paper-b4.9", 0.3, (120, 40), false, Some("c"));
+    // Deterministic: the view plots work in steps, not measured time (a second run of
+    // the rows, by `render`, draws the same screen).
+    let t = a.t;
+    a.t = 0.3;
     assert_eq!(
-        again,
+        text(&a, (120, 40), false),
         screen("paper-b4.9", 0.3, (120, 40), false, Some("c"))
     );
+    a.t = t;
     press(&mut a, "c o");
     a.lab.wait();
     let State::Ready(o) = a.lab.overlay() else {
@@ -538,17 +557,8 @@ fn every_view_draws_at_many_sizes_without_panicking() {
 
 // ---- issue 11: help, keys and small screens; teachers' tools ----
 
-fn ascii_theme() -> groovelab::tui::theme::Theme {
-    groovelab::tui::theme::Theme::new(groovelab::tui::theme::Glyphs::ASCII, true)
-}
-
 fn text_of(a: &App, w: u16, h: u16, ascii: bool) -> String {
-    let theme = if ascii {
-        ascii_theme()
-    } else {
-        groovelab::tui::theme::Theme::new(groovelab::tui::theme::Glyphs::UNICODE, true)
-    };
-    groovelab::tui::view::to_text(a, w, h, &theme)
+    text(a, (w, h), ascii)
 }
 
 #[test]
@@ -1006,11 +1016,13 @@ fn snapshots_of_issue_11_screens() {
         ("export", "paper-b4.9", "w"),
         ("v0-differ", "unequal-speeds", "down down down down"),
     ] {
+        // One app per screen: its analyses (Methods rows, fits, overlay) computed once.
+        let a = shown(preset, 0.3, Some(keys));
         for (w, h) in [(80, 24), (120, 40), (200, 60)] {
             for ascii in [false, true] {
                 let mode = if ascii { "ascii" } else { "unicode" };
                 // The test's preset folder has the process id in its name.
-                let s = screen(preset, 0.3, (w, h), ascii, Some(keys))
+                let s = text(&a, (w, h), ascii)
                     .lines()
                     .map(|l| match l.find(" saved in ") {
                         Some(i) if l.contains("groovelab-tui-presets-") => {

@@ -144,6 +144,10 @@ impl App {
                 );
             }
             Action::ApplyFit => self.apply_fit(),
+            // In the Forces view b picks the ball of the front view and the chain.
+            Action::SwitchBall if self.view == View::Forces => {
+                self.forces_ball = 1 - self.forces_ball;
+            }
             Action::SwitchBall => {
                 self.chart_ball = match self.chart_ball {
                     ChartBall::Left => ChartBall::Right,
@@ -156,6 +160,19 @@ impl App {
                 self.show_energy = false;
             }
             Action::ToggleMethods => self.toggle_view(View::Methods),
+            Action::ToggleForces => self.toggle_view(View::Forces),
+            Action::Predict => self.ask_prediction(),
+            Action::HideWidth => {
+                self.hide_b = !self.hide_b;
+                self.status = Status::Info(
+                    if self.hide_b {
+                        "b's value hidden: predict from the picture (B shows it)"
+                    } else {
+                        "b's value shown"
+                    }
+                    .into(),
+                );
+            }
             Action::ToggleMap => self.toggle_view(View::Map),
             Action::ToggleFit => {
                 self.toggle_view(View::Fit);

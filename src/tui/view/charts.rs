@@ -8,6 +8,7 @@ use ratatui::style::Style;
 use ratatui::widgets::Widget;
 
 use super::block;
+use crate::input::units::Dimension;
 use crate::lab::jobs::State;
 use crate::physics::model::BallState;
 use crate::physics::solution::{EnergySplit, EventKind, Snapshot, Who};
@@ -336,6 +337,9 @@ fn thin_to(points: Vec<(f64, f64)>, n: usize) -> Vec<(f64, f64)> {
     points.into_iter().step_by(every).collect()
 }
 
+/// What the positions chart shows: lengths, in their display unit.
+const POSITION: Dimension = Dimension::Length;
+
 fn positions(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
     let sol = &app.lab.solution;
     let columns = usize::from(area.width.saturating_sub(10));
@@ -344,11 +348,26 @@ fn positions(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
         app,
         columns,
         theme,
-        &[("run", |s| s.left.x * 100.0), ("", |s| s.right.x * 100.0)],
+        &[
+            ("run", |s| POSITION.to_display(s.left.x)),
+            ("", |s| POSITION.to_display(s.right.x)),
+        ],
     );
     series.extend([
-        series_of("x left", &samples, |s| s.left.x * 100.0, theme.left, "*"),
-        series_of("x right", &samples, |s| s.right.x * 100.0, theme.right, "+"),
+        series_of(
+            "x left",
+            &samples,
+            |s| POSITION.to_display(s.left.x),
+            theme.left,
+            "*",
+        ),
+        series_of(
+            "x right",
+            &samples,
+            |s| POSITION.to_display(s.right.x),
+            theme.right,
+            "+",
+        ),
     ]);
     // A position track's centre, where the model's left ball would be (x − R).
     if let Some((m, x)) = app.lab.measured().and_then(|m| Some((m, m.x.as_ref()?))) {
@@ -360,7 +379,7 @@ fn positions(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
                 .iter()
                 .zip(x)
                 .filter(|(_, x)| x.is_finite())
-                .map(|(t, x)| (*t, (x - r) * 100.0))
+                .map(|(t, x)| (*t, POSITION.to_display(x - r)))
                 .collect(),
             style: theme.measured,
             glyph: if theme.glyphs.ascii { "x" } else { "×" },
@@ -373,7 +392,7 @@ fn positions(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
         x_range: (sol.t_start, sol.t_end),
         y_range: (y0, y1),
         x_title: "t (s)".into(),
-        y_title: "x (cm)".into(),
+        y_title: format!("x ({})", POSITION.display_unit().0),
         series,
         vlines: event_lines(app, &[Who::Left, Who::Right], theme),
         cursor: Some(app.t),

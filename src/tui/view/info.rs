@@ -7,7 +7,7 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::Widget;
 
 use super::{Ranked, block, by_priority, draw_lines};
-use crate::input::units::significant;
+use crate::input::units::{Dimension, show, significant};
 use crate::physics::story::{self, After, Verdict};
 use crate::tui::app::App;
 use crate::tui::theme::Theme;
@@ -27,7 +27,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let verdict = Verdict::of(sol, d, band);
     let story = story::after_first_impact(sol, d);
     let b_star = d.b_star.map_or("none (e < 2/5)".to_string(), |b| {
-        format!("{:.2} cm", b * 100.0)
+        format!("{:.2}", show(b, Dimension::Length))
     });
     let label = |s: &str| Span::styled(s.to_string(), theme.dim);
     let value = |s: String| Span::styled(s, theme.text);
@@ -57,7 +57,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                 label("k "),
                 value(format!("{:.4}", d.k)),
                 label("  r "),
-                value(format!("{:.3} cm", d.r * 100.0)),
+                value(format!("{:.3}", show(d.r, Dimension::Length))),
                 label("  D "),
                 value(format!("{:.3}", d.d)),
                 label("  b* "),
@@ -86,7 +86,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                 label("  v' "),
                 value(format!("{:.4} m/s", rec.v_roll)),
                 label("  x' "),
-                value(format!("{:.2} cm", rec.x_roll * 100.0)),
+                value(format!("{:.2}", show(rec.x_roll, Dimension::Length))),
             ]),
         ));
         let crossing = match (rec.t_pure_gliding, rec.t_pure_slipping) {

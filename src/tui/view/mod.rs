@@ -4,11 +4,13 @@
 
 mod charts;
 mod fit;
+mod forces;
 mod info;
 mod map;
 mod methods;
 mod params;
 
+pub use forces::ANSWERS;
 pub use params::param_at;
 pub use popups::data_rows;
 mod popups;
@@ -160,7 +162,10 @@ fn draw_panels(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         Some(p) => {
             params::render(app, p.params, buf, theme);
             scene::render(app, p.scene, buf, theme);
-            if app.view == View::Map {
+            if app.view == View::Forces {
+                // The Forces view takes the chart's and the info panel's room.
+                forces::render(app, p.chart.union(p.info), buf, theme);
+            } else if app.view == View::Map {
                 map::render(app, p.chart, buf, theme);
                 info::render(app, p.info, buf, theme);
             } else if app.view == View::Methods {

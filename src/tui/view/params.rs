@@ -7,7 +7,7 @@ use ratatui::widgets::Widget;
 
 use super::block;
 use crate::input::params::Key;
-use crate::input::units::{Dimension, fit_number, significant};
+use crate::input::units::{Dimension, fit_number};
 use crate::tui::app::{App, Mode, ROWS};
 use crate::tui::theme::Theme;
 
@@ -37,23 +37,20 @@ const VALUE_W: usize = 11;
 pub fn value_text(app: &App, key: Key) -> String {
     let v = app.lab.value(key);
     let s = &app.lab.scene;
+    if key == Key::Width && app.hide_b {
+        return "hidden".into();
+    }
     if key == Key::V0 && s.left.v0 != s.right.v0 {
         // One control for both balls: it sets both, and says when they differ.
         return "differ".into();
     }
-    let (scaled, fixed, unit) = match key.dimension() {
-        Dimension::Ratio => (v, significant(v, 4), ""),
-        Dimension::Length => (v * 100.0, format!("{:.2}", v * 100.0), " cm"),
-        Dimension::Mass => (v * 1000.0, format!("{:.1}", v * 1000.0), " g"),
-        Dimension::Speed => (v, format!("{v:.3}"), " m/s"),
-        Dimension::Time => (v, format!("{v:.3}"), " s"),
-        Dimension::Acceleration => (v, format!("{v:.2}"), " m/s²"),
-    };
+    let dim = key.dimension();
+    let (fixed, unit) = (dim.panel_number(v), dim.suffix());
     let room = VALUE_W - unit.chars().count();
     let number = if fixed.chars().count() <= room {
         fixed
     } else {
-        fit_number(scaled, room)
+        fit_number(dim.to_display(v), room)
     };
     format!("{number}{unit}")
 }
@@ -75,10 +72,15 @@ pub fn note(app: &App, key: Key, room: usize) -> String {
         (!n.starts_with('#')).then(|| format!("{label} {n}"))
     };
     let text = match key {
+        // b/R and k would give b away; b* does not depend on b.
+        Key::Width | Key::Radius if app.hide_b => d
+            .b_star
+            .and_then(|b| pair("b*", Dimension::Length.to_display(b), 2, room))
+            .filter(|_| key == Key::Width),
         Key::Width => {
             let star = match d.b_star {
                 None => Some("no b*".to_string()).filter(|s| s.len() <= room),
-                Some(b) => pair("b*", b * 100.0, 2, room),
+                Some(b) => pair("b*", Dimension::Length.to_display(b), 2, room),
             };
             let ratio = app.lab.scene.width / app.lab.scene.radius;
             // b/R beside b* only when both keep 3 digits.

@@ -207,6 +207,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             scrolling(app, title, Vec::new(), source, (area, width), buf, theme);
         }
         Mode::Table => data_table(app, area, buf, theme),
+        Mode::Predict => super::forces::question(app, area, buf, theme),
         Mode::Picker(selected) => {
             let name_width = app
                 .library

@@ -263,7 +263,10 @@ fn pinned_line(app: &App, width: u16, theme: &Theme) -> Option<String> {
     } else {
         changes
             .iter()
-            .map(|(name, was, now)| format!("{name} {was} → {now}"))
+            .map(|(label, was, now)| {
+                let name = label.replace("mu", theme.glyphs.mu);
+                format!("{name} {was} → {now}")
+            })
             .collect::<Vec<_>>()
             .join(", ")
     };

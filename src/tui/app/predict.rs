@@ -1,0 +1,65 @@
+//! Predict, observe, explain: the question before the impact, the run played from the
+//! start, and the time from which the outcome shows (the view then explains it).
+
+use crate::physics::solution::{EventKind, Solution, Who};
+use crate::tui::view::ANSWERS;
+
+use super::{Action, App, Mode, Prediction, Status, View};
+
+/// When the run shows what the balls do after the first impact: the first thing that
+/// ends the left ball's slide (it rolls again or rests, the next impact, a push, the
+/// accumulation point), or the impact itself when nothing follows (no friction).
+pub fn reveal_time(sol: &Solution) -> f64 {
+    sol.events
+        .iter()
+        .find(|e| {
+            e.t > 0.0
+                && match e.kind {
+                    EventKind::Rolling | EventKind::Rest => e.ball != Who::Right,
+                    EventKind::Collision
+                    | EventKind::ContactStart
+                    | EventKind::ZenoRest
+                    | EventKind::ZenoContact => true,
+                    _ => false,
+                }
+        })
+        .map_or(0.0, |e| e.t)
+}
+
+impl App {
+    /// The predict key: the Forces view, paused, and the question.
+    pub(super) fn ask_prediction(&mut self) {
+        self.view = View::Forces;
+        self.lab.want_methods(false);
+        self.lab.want_fits(false);
+        self.playing = false;
+        self.status = Status::None;
+        self.mode = Mode::Predict;
+    }
+
+    /// An answer (1, 2, 3) is the prediction: play from the start. Esc cancels.
+    pub(super) fn apply_predict(&mut self, action: Action) {
+        match action {
+            Action::Type(c) => {
+                let Some((_, guess)) = ANSWERS.iter().find(|(k, _)| *k == c) else {
+                    return;
+                };
+                let sol = &self.lab.solution;
+                self.prediction = Some(Prediction {
+                    guess: *guess,
+                    scene: self.lab.scene,
+                    reveal_at: reveal_time(sol),
+                });
+                self.t = sol.t_start;
+                self.playing = true;
+                self.mode = Mode::Normal;
+                self.status = Status::Info("predicted: now watch (space pauses)".into());
+            }
+            Action::Cancel => {
+                self.mode = Mode::Normal;
+                self.status = Status::Info("no prediction".into());
+            }
+            _ => {}
+        }
+    }
+}

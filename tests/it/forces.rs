@@ -1,0 +1,268 @@
+//! The Forces view and predict–observe–explain (issue 20): the keys, what the screen
+//! says at the paper's events, b hidden, and `render` snapshots at three sizes, ASCII
+//! and Unicode. The numbers themselves are tested against the closed forms in
+//! `physics::forces`.
+
+use groovelab::cli::{DataArgs, RenderArgs, SceneArgs, render_with};
+use groovelab::input::params::SceneSpec;
+use groovelab::input::preset::Preset;
+use groovelab::lab::Lab;
+use groovelab::physics::derived::Regime;
+use groovelab::tui::app::{App, ChartBall, Library, Mode, View};
+use groovelab::tui::theme::{Glyphs, Theme};
+use groovelab::tui::{keys, replay, view};
+
+fn no_user_presets() -> Library {
+    let dir = std::env::temp_dir().join(format!("groovelab-forces-presets-{}", std::process::id()));
+    Library::at(Some(dir))
+}
+
+fn app(preset: &str) -> App {
+    let p = Preset::load(preset).unwrap();
+    let (scene, span) = p.spec.resolve().unwrap();
+    App::new(Lab::new(p, scene, span), no_user_presets())
+}
+
+fn press(app: &mut App, script: &str) {
+    replay(app, &keys::parse_script(script).unwrap());
+}
+
+fn text(a: &App, (w, h): (u16, u16), ascii: bool) -> String {
+    view::to_text(a, w, h, &Theme::new(Glyphs::new(ascii), true))
+}
+
+fn render(preset: &str, at: Option<f64>, size: (u16, u16), ascii: bool, keys: &str) -> String {
+    let scene = SceneArgs {
+        preset: Some(preset.to_string()),
+        values: SceneSpec::default(),
+    };
+    let args = RenderArgs {
+        at,
+        size,
+        keys: Some(keys.to_string()),
+    };
+    render_with(
+        &scene,
+        &DataArgs::default(),
+        &args,
+        ascii,
+        no_user_presets(),
+    )
+    .unwrap()
+}
+
+const SIZES: [(u16, u16); 3] = [(80, 24), (120, 40), (200, 60)];
+
+#[test]
+fn v_shows_the_forces_view_and_b_picks_its_ball() {
+    let mut a = app("paper-b3.5");
+    press(&mut a, "v");
+    assert_eq!(a.view, View::Forces);
+    press(&mut a, "b");
+    assert_eq!(a.forces_ball, 1);
+    assert_eq!(
+        a.chart_ball,
+        ChartBall::Left,
+        "b in the Forces view leaves the chart's ball"
+    );
+    let s = text(&a, (120, 40), false);
+    assert!(s.contains("Forces: front view, right ball"), "{s}");
+    press(&mut a, "b v");
+    assert_eq!((a.forces_ball, a.view), (0, View::Charts));
+    // Outside the Forces view b still switches the chart's ball.
+    press(&mut a, "b");
+    assert_eq!(a.chart_ball, ChartBall::Right);
+}
+
+#[test]
+fn the_states_are_named_where_the_event_keys_land() {
+    // paper-b3.5: impact, pure gliding at t_r, pure rolling at t' (the paper's figure 6a).
+    let mut a = app("paper-b3.5");
+    press(&mut a, "v");
+    for (keys, state) in [
+        ("", "pure rolling"),
+        (">", "gliding and slipping"),
+        (">", "pure gliding"),
+        (">", "pure rolling"),
+    ] {
+        press(&mut a, keys);
+        let s = text(&a, (80, 24), true);
+        let left = s
+            .lines()
+            .find(|l| l.contains("|left  "))
+            .unwrap_or_default();
+        assert!(left.contains(state), "{keys}: {left}\n{s}");
+    }
+    // paper-b4.9: pure slipping at t_t (figure 6c).
+    let mut a = app("paper-b4.9");
+    press(&mut a, "v > >");
+    assert!(text(&a, (80, 24), false).contains("pure slipping"));
+}
+
+#[test]
+fn eighty_columns_keep_the_states_n_f_and_the_net_torque() {
+    for ascii in [false, true] {
+        let s = render("paper-b4.4", Some(0.1), (80, 24), ascii, "v");
+        let tau = if ascii { "tau_net" } else { "τ_net" };
+        for needle in [
+            "|N_A|=|N_B| 1.37 N",
+            "|F_A|=|F_B| 0.232 N",
+            tau,
+            "gliding and slipping",
+        ] {
+            assert!(s.contains(needle), "{needle} (ascii {ascii}):\n{s}");
+        }
+        // |τ_net| = μ_k m g R = 0.17 · 0.167 · 9.81 · 0.0275 = 0.00766 N m, whatever b.
+        assert!(s.contains("0.00766 N m"), "{s}");
+    }
+}
+
+#[test]
+fn friction_points_out_of_the_front_view_after_the_impact() {
+    // Right after the impact the left ball's contact points move to −x (v_A = 2 v_cm):
+    // friction along +x, toward the viewer: (.) in ASCII.
+    let s = render("paper-b3.5", Some(0.05), (120, 40), true, "v");
+    assert!(s.contains("F along +x: (.) out"), "{s}");
+    assert!(!s.contains("-x: (x) in"), "{s}");
+    // The right ball's friction points the other way (into the picture).
+    let s = render("paper-b3.5", Some(0.05), (120, 40), true, "v b");
+    assert!(s.contains("F along -x: (x) in"), "{s}");
+}
+
+#[test]
+fn a_pinned_run_gives_arrows_in_the_chain() {
+    // A wider groove than the pinned one: k down, |N|, |F|, |a_cm| up, τ_net the same.
+    let s = render("paper-b4.4", Some(0.1), (200, 60), false, "P right right v");
+    let chain = s.lines().find(|l| l.contains("→ k ")).unwrap();
+    for needle in ["cm ↑", "k 0.5", "|N| 1.4", "↑ → |F|", "τ_net"] {
+        assert!(s.contains(needle), "{needle}: {chain}\n{s}");
+    }
+    assert!(s.contains("N m = (any b)") || s.contains("N m = "), "{s}");
+}
+
+#[test]
+fn predict_asks_plays_and_explains() {
+    let mut a = app("paper-b4.9");
+    press(&mut a, "y");
+    assert_eq!(a.mode, Mode::Predict);
+    assert_eq!(a.view, View::Forces);
+    let q = text(&a, (80, 24), false);
+    assert!(
+        q.contains("what will the balls do?") && q.contains("come back"),
+        "{q}"
+    );
+    press(&mut a, "1");
+    let p = a.prediction.clone().unwrap();
+    assert_eq!(p.guess, Regime::Depart);
+    assert!(a.playing && a.t == a.lab.solution.t_start && a.mode == Mode::Normal);
+    // Before the outcome shows, nothing gives it away.
+    a.t = 0.5 * p.reveal_at;
+    let s = text(&a, (120, 40), false);
+    assert!(s.contains("predicted: move apart"), "{s}");
+    for secret in [
+        "observed",
+        "recollide",
+        "RECOLLIDE",
+        "D = 0.5",
+        "spin rolls",
+    ] {
+        assert!(!s.contains(secret), "{secret}:\n{s}");
+    }
+    // Once the left ball rolls back, the outcome, the verdict and the reason.
+    a.t = p.reveal_at;
+    let s = text(&a, (120, 40), false);
+    assert!(s.contains("observed: RECOLLIDE"), "{s}");
+    assert!(s.contains("not quite"), "{s}");
+    assert!(s.contains("spin rolls them back"), "{s}");
+    // A right answer says so; Esc cancels the question.
+    press(&mut a, "y 3");
+    a.t = a.lab.solution.t_end;
+    assert!(text(&a, (120, 40), true).contains("right"), "ascii verdict");
+    press(&mut a, "y esc");
+    assert_eq!(a.mode, Mode::Normal);
+    assert!(!a.quit, "esc in the question does not quit");
+}
+
+#[test]
+fn a_changed_scene_makes_the_prediction_stale() {
+    let mut a = app("paper-b4.9");
+    press(&mut a, "y 2 S-left");
+    let s = text(&a, (120, 40), false);
+    assert!(s.contains("the scene changed since the prediction"), "{s}");
+}
+
+#[test]
+fn hiding_b_leaves_the_picture_and_hides_what_gives_b_away() {
+    let mut a = app("paper-b4.9");
+    press(&mut a, "B v");
+    assert!(a.hide_b);
+    for ascii in [false, true] {
+        let s = text(&a, (120, 40), ascii);
+        for secret in ["4.90", "k 0.454", "b/R", "1.80 N", "0.613", "D = 0.516"] {
+            assert!(!s.contains(secret), "{secret}:\n{s}");
+        }
+        assert!(s.contains("hidden") && s.contains("b ?"), "{s}");
+        // What does not depend on b stays.
+        assert!(s.contains("0.00766 N m"), "{s}");
+    }
+    // Changing b while hidden does not tell it in the status line.
+    press(&mut a, "right");
+    assert!(!text(&a, (120, 40), false).contains("4.95"));
+    press(&mut a, "B");
+    assert!(text(&a, (120, 40), false).contains("4.95 cm"));
+}
+
+#[test]
+fn the_help_lists_the_keys_with_predict() {
+    let predict = keys::TABLE
+        .iter()
+        .find(|b| b.keys == ["y"])
+        .expect("y is bound");
+    assert!(predict.help.contains("predict"));
+    assert!(
+        keys::TABLE
+            .iter()
+            .any(|b| b.keys == ["v"] && b.help.contains("Forces view"))
+    );
+}
+
+#[test]
+fn ascii_forces_screens_need_no_stand_ins() {
+    let theme = Theme::new(Glyphs::ASCII, true);
+    for preset in [
+        "paper-b3.5",
+        "paper-b4.9",
+        "inelastic",
+        "unequal-speeds",
+        "critical",
+    ] {
+        for keys in ["v", "v > >", "v b > > >", "P S-right v", "B y 2", "y"] {
+            let mut a = app(preset);
+            press(&mut a, keys);
+            for (w, h) in SIZES {
+                let cells = view::non_ascii_cells(&a, w, h, &theme);
+                assert!(cells.is_empty(), "{preset} {keys:?} {w}x{h}: {cells:?}");
+            }
+        }
+    }
+}
+
+#[test]
+fn snapshots_of_the_forces_view() {
+    let cases: [(&str, &str, f64, &str); 3] = [
+        ("b3.5-sliding", "paper-b3.5", 0.05, "v"),
+        ("b4.4-pinned-wider", "paper-b4.4", 0.1, "P right right v"),
+        ("b4.9-predicted-hidden-b", "paper-b4.9", 0.35, "B y 3"),
+    ];
+    for (w, h) in SIZES {
+        for ascii in [false, true] {
+            let mode = if ascii { "ascii" } else { "unicode" };
+            for (name, preset, at, keys) in cases {
+                insta::assert_snapshot!(
+                    format!("forces-{name}-{w}x{h}-{mode}"),
+                    render(preset, Some(at), (w, h), ascii, keys)
+                );
+            }
+        }
+    }
+}
