@@ -92,6 +92,58 @@ fn tracker_export(name: &str, t: &[f64], x: &[f64], y: &[f64]) -> String {
     out
 }
 
+/// Logger Pro / Graphical Analysis's CSV export of a video analysis with two points
+/// (the centre, and the rim mark as the second point), CRLF line ends.
+fn logger_pro_export(track: &Track) -> String {
+    let (mx, my) = track.mark.clone().unwrap();
+    let mut text = String::from(
+        "\"Latest: Time (s)\",\"Latest: X (m)\",\"Latest: Y (m)\",\"Latest: X2 (m)\",\"Latest: Y2 (m)\"\r\n",
+    );
+    for i in 0..track.t.len() {
+        text += &format!(
+            "{:.4},{:.5},{:.5},{:.5},{:.5}\r\n",
+            track.t[i], track.x[i], track.y[i], mx[i], my[i]
+        );
+    }
+    text
+}
+
+/// The README's student files, made from the committed example video: Tracker's
+/// one-track exports of the centre and of the rim mark, and a Logger Pro export.
+fn student_files() -> Vec<(&'static str, String)> {
+    let example = std::fs::read_to_string("docs/video/paper-b4.9-tracker.txt").unwrap();
+    let track =
+        groovelab::input::data::read_track(&example, "example", &Default::default()).unwrap();
+    let (mx, my) = track.mark.clone().unwrap();
+    vec![
+        (
+            "docs/video/ball.txt",
+            tracker_export("ball", &track.t, &track.x, &track.y),
+        ),
+        (
+            "docs/video/mark.txt",
+            tracker_export("rim mark", &track.t, &mx, &my),
+        ),
+        ("docs/video/logger-pro.csv", logger_pro_export(&track)),
+    ]
+}
+
+/// The files the README walks through: regenerate with `GROOVELAB_REGENERATE=1 cargo
+/// test --test it data_files::student`.
+#[test]
+fn student_files_are_what_the_generator_makes() {
+    for (path, text) in student_files() {
+        if std::env::var_os("GROOVELAB_REGENERATE").is_some() {
+            std::fs::write(path, &text).unwrap();
+        }
+        let committed = std::fs::read_to_string(path).unwrap_or_default();
+        assert!(
+            committed == text,
+            "{path} differs from the generator's output; regenerate it"
+        );
+    }
+}
+
 /// The synthetic video of the preset's scene, centre and rim mark.
 fn video_track(seed: u64) -> Track {
     video::track(
@@ -212,17 +264,7 @@ fn the_centre_and_the_mark_as_two_tracker_files() {
 
 #[test]
 fn a_logger_pro_two_point_export_gives_centre_and_mark() {
-    let track = video_track(5);
-    let (mx, my) = track.mark.clone().unwrap();
-    let mut text = String::from(
-        "\"Latest: Time (s)\",\"Latest: X (m)\",\"Latest: Y (m)\",\"Latest: X2 (m)\",\"Latest: Y2 (m)\"\r\n",
-    );
-    for i in 0..track.t.len() {
-        text += &format!(
-            "{:.4},{:.5},{:.5},{:.5},{:.5}\r\n",
-            track.t[i], track.x[i], track.y[i], mx[i], my[i]
-        );
-    }
+    let text = logger_pro_export(&video_track(5));
     let dir = scratch("loggerpro");
     let file = dir.join("run.csv");
     std::fs::write(&file, &text).unwrap();
