@@ -372,7 +372,12 @@ impl ValueEnum for Method {
 
 impl ValueEnum for Free {
     fn value_variants<'a>() -> &'a [Self] {
-        &[Free::Mu, Free::V0, Free::Restitution]
+        &[
+            Free::Mu,
+            Free::V0,
+            Free::Restitution,
+            Free::RollingResistance,
+        ]
     }
 
     fn to_possible_value(&self) -> Option<clap::builder::PossibleValue> {

@@ -11,7 +11,7 @@ use crate::input::data::Reading;
 use crate::input::preset::Preset;
 use crate::input::units::{Dimension, show, significant, unit_factor};
 use crate::physics::scene::Scene;
-use crate::study::fit::{self, Fits, Free, ModelFit};
+use crate::study::fit::{self, Candidate, Fits, Free, ModelFit};
 use crate::study::measured::{self, Derive, Found, Measured, Series};
 
 /// The measured series for `scene`, and what was found in a position track.
@@ -211,6 +211,7 @@ pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<St
                 (Some(found), Some(position)) => track_table(&scene, &fits, found, position, own),
                 _ => table(&scene, &fits, own),
             };
+            out += &models_table(&fits.models, found.is_some());
             out
         }
         FitFormat::Svg => crate::study::figures::fit_figure(&scene, &m, &fits)
@@ -465,5 +466,68 @@ fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit, paper_data:
         out,
         "  (the velocity fit weights each derived point by its uncertainty but counts the points as independent and the impact time as exact: its ± is too small; the position fit profiles out the impact's time and place, and its ± is the one to quote)"
     );
+    out
+}
+
+/// A fitted parameter's symbol and unit for people.
+fn symbol(parameter: &str) -> (&'static str, &'static str) {
+    match parameter {
+        "mu" => ("μ_k", ""),
+        "v0" => ("v0", " m/s"),
+        "restitution" => ("e", ""),
+        _ => ("c_rr", ""),
+    }
+}
+
+/// The candidate models compared by AIC and BIC, and the one the data support.
+fn models_table(models: &[Candidate], positions: bool) -> String {
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "\nwhich model the data support (fitted to the {}; AIC and BIC, lower is better; the simplest model within 2 of the lowest BIC is named):",
+        if positions { "positions" } else { "velocities" }
+    );
+    let unit = if positions { "mm" } else { "m/s" };
+    let _ = writeln!(
+        out,
+        "  {:<34} {:>10} {:>10} {:>10}   values (± 2σ)",
+        "model",
+        format!("RMS {unit}"),
+        "AIC",
+        "BIC"
+    );
+    for c in models {
+        let values: Vec<String> = c
+            .parameters
+            .iter()
+            .map(|e| {
+                let (name, unit) = symbol(e.parameter);
+                match e.se {
+                    Some(se) => format!("{name} {:.4} ± {:.4}{unit}", e.value, 2.0 * se),
+                    None => format!("{name} {:.4}{unit} (no ±)", e.value),
+                }
+            })
+            .collect();
+        let names: Vec<&str> = c.parameters.iter().map(|e| symbol(e.parameter).0).collect();
+        let rms = if positions { 1e3 * c.rms } else { c.rms };
+        let _ = writeln!(
+            out,
+            "{} {:<34} {:>10.4} {:>10.1} {:>10.1}   {}",
+            if c.supported { "*" } else { " " },
+            names.join(" + "),
+            rms,
+            c.aic,
+            c.bic,
+            values.join(", ")
+        );
+    }
+    if let Some(c) = models.iter().find(|c| c.supported) {
+        let names: Vec<&str> = c.parameters.iter().map(|e| symbol(e.parameter).0).collect();
+        let _ = writeln!(
+            out,
+            "  the data support: {} (marked *); a larger model does not lower the BIC by 2 or more",
+            names.join(" + ")
+        );
+    }
     out
 }

@@ -89,6 +89,58 @@ fn tracker_export(name: &str, t: &[f64], x: &[f64], y: &[f64]) -> String {
     out
 }
 
+/// Logger Pro / Graphical Analysis's CSV export of a video analysis with two points
+/// (the centre, and the rim mark as the second point), CRLF line ends.
+fn logger_pro_export(track: &Track) -> String {
+    let (mx, my) = track.mark.clone().unwrap();
+    let mut text = String::from(
+        "\"Latest: Time (s)\",\"Latest: X (m)\",\"Latest: Y (m)\",\"Latest: X2 (m)\",\"Latest: Y2 (m)\"\r\n",
+    );
+    for i in 0..track.t.len() {
+        text += &format!(
+            "{:.4},{:.5},{:.5},{:.5},{:.5}\r\n",
+            track.t[i], track.x[i], track.y[i], mx[i], my[i]
+        );
+    }
+    text
+}
+
+/// The README's student files, made from the committed example video: Tracker's
+/// one-track exports of the centre and of the rim mark, and a Logger Pro export.
+fn student_files() -> Vec<(&'static str, String)> {
+    let example = std::fs::read_to_string("docs/video/paper-b4.9-tracker.txt").unwrap();
+    let track =
+        groovelab::input::data::read_track(&example, "example", &Default::default()).unwrap();
+    let (mx, my) = track.mark.clone().unwrap();
+    vec![
+        (
+            "docs/video/ball.txt",
+            tracker_export("ball", &track.t, &track.x, &track.y),
+        ),
+        (
+            "docs/video/mark.txt",
+            tracker_export("rim mark", &track.t, &mx, &my),
+        ),
+        ("docs/video/logger-pro.csv", logger_pro_export(&track)),
+    ]
+}
+
+/// The files the README walks through: regenerate with `GROOVELAB_REGENERATE=1 cargo
+/// test --test it data_files::student`.
+#[test]
+fn student_files_are_what_the_generator_makes() {
+    for (path, text) in student_files() {
+        if std::env::var_os("GROOVELAB_REGENERATE").is_some() {
+            std::fs::write(path, &text).unwrap();
+        }
+        let committed = std::fs::read_to_string(path).unwrap_or_default();
+        assert!(
+            committed == text,
+            "{path} differs from the generator's output; regenerate it"
+        );
+    }
+}
+
 /// The synthetic video of the preset's scene, centre and rim mark.
 fn video_track(seed: u64) -> Track {
     video::track(
@@ -209,17 +261,7 @@ fn the_centre_and_the_mark_as_two_tracker_files() {
 
 #[test]
 fn a_logger_pro_two_point_export_gives_centre_and_mark() {
-    let track = video_track(5);
-    let (mx, my) = track.mark.clone().unwrap();
-    let mut text = String::from(
-        "\"Latest: Time (s)\",\"Latest: X (m)\",\"Latest: Y (m)\",\"Latest: X2 (m)\",\"Latest: Y2 (m)\"\r\n",
-    );
-    for i in 0..track.t.len() {
-        text += &format!(
-            "{:.4},{:.5},{:.5},{:.5},{:.5}\r\n",
-            track.t[i], track.x[i], track.y[i], mx[i], my[i]
-        );
-    }
+    let text = logger_pro_export(&video_track(5));
     let dir = scratch("loggerpro");
     let file = dir.join("run.csv");
     std::fs::write(&file, &text).unwrap();
@@ -299,4 +341,80 @@ fn a_header_without_units_over_ms_and_cm_per_s_names_the_options() {
     let mu = j["model_fit"]["mu"].as_f64().unwrap();
     assert!((mu - MU).abs() < 0.002, "μ_k = {mu}");
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The exact left ball's velocities of `scene` at 100 frames/s with seeded noise of
+/// 1 cm/s, the frame at the impact left out.
+fn noisy_velocities(scene: &Scene, seed: u64) -> groovelab::study::measured::Measured {
+    let sol = engine::solve(
+        scene,
+        &Span {
+            t_start: -0.2,
+            t_end: Some(0.8),
+        },
+    );
+    let mut noise = video::Noise::new(seed);
+    let (mut t, mut v, mut u) = (vec![], vec![], vec![]);
+    for k in (-15..=70).filter(|&k| k != 0) {
+        let s = sol.at(k as f64 * 0.01);
+        t.push(k as f64 * 0.01);
+        v.push(s.left.v + 0.01 * noise.gauss());
+        u.push(s.left.u + 0.01 * noise.gauss());
+    }
+    groovelab::study::measured::Measured::velocities(t, v, u)
+}
+
+#[test]
+fn the_fit_names_the_simplest_model_the_data_support() {
+    use groovelab::study::fit::compare_models;
+    let truth = scene();
+    let supported = |s: &Scene, seed: u64| {
+        let models =
+            compare_models(&truth, &noisy_velocities(s, seed), &groovelab::study::Quiet).unwrap();
+        assert!(
+            models.len() == 8,
+            "v0 is a candidate: the approach is measured"
+        );
+        assert!(
+            models
+                .iter()
+                .all(|c| c.aic.is_finite() && c.bic.is_finite())
+        );
+        let picked: Vec<_> = models.iter().filter(|c| c.supported).collect();
+        assert_eq!(picked.len(), 1);
+        picked[0].name.clone()
+    };
+    // Friction alone made the data: μ_k alone is named, whatever the noise.
+    for seed in 1..=2 {
+        assert_eq!(supported(&truth, seed), "mu", "seed {seed}");
+    }
+    // With rolling resistance in the truth, the data ask for c_rr.
+    let resisted = Scene {
+        rolling_resistance: 0.02,
+        ..truth
+    };
+    let name = supported(&resisted, 3);
+    assert!(name.contains("rolling_resistance"), "{name}");
+}
+
+#[test]
+fn fit_json_has_one_entry_per_model_with_aic_and_bic() {
+    let (ok, out, err) = groovelab(&["fit", "--format", "json"]);
+    assert!(ok, "{err}");
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let models = j["models"].as_array().unwrap();
+    assert!(models.len() >= 4);
+    for m in models {
+        assert!(
+            m["aic"].as_f64().is_some() && m["bic"].as_f64().is_some(),
+            "{m}"
+        );
+        assert!(m["parameters"][0]["parameter"] == "mu", "{m}");
+    }
+    assert_eq!(models.iter().filter(|m| m["supported"] == true).count(), 1);
+    let (ok, table, _) = groovelab(&["fit"]);
+    assert!(
+        ok && table.contains("which model the data support")
+            && table.contains("the data support: ")
+    );
 }

@@ -28,8 +28,14 @@ fn sandbox() -> PathBuf {
     let _ = fs::remove_dir_all(&dir);
     copy(&root.join("README.md"), &dir.join("README.md"));
     let input = dir.join("README.in");
-    let track = "docs/video/paper-b4.9-tracker.txt";
-    copy(&root.join(track), &input.join(track));
+    for file in [
+        "docs/video/paper-b4.9-tracker.txt",
+        "docs/video/ball.txt",
+        "docs/video/mark.txt",
+        "docs/video/logger-pro.csv",
+    ] {
+        copy(&root.join(file), &input.join(file));
+    }
     // The README's broken file: line 3 holds a v_cm that is not a number.
     fs::write(
         input.join("bad.csv"),

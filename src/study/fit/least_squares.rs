@@ -19,6 +19,7 @@ pub(super) fn with(scene: &Scene, free: &[Free], p: &[f64]) -> Scene {
                 s.right.v0 = v;
             }
             Free::Restitution => s.restitution = v.clamp(0.0, 1.0),
+            Free::RollingResistance => s.rolling_resistance = v.max(0.0),
         }
     }
     s

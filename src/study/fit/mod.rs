@@ -3,6 +3,7 @@
 //! point — of the velocities (weighted by their uncertainties when known) or of the
 //! tracked positions — with uncertainties and the regime compared with what was seen.
 
+mod choice;
 mod least_squares;
 mod line;
 mod regime;
@@ -18,6 +19,7 @@ use crate::physics::story::Verdict;
 use crate::study::Progress;
 use crate::study::measured::series::Measured;
 
+pub use choice::{Candidate, Estimate, compare_models};
 pub use line::{Line, LineFit, PAPER_TABLE, line, line_fit, paper_row, sliding_window};
 pub use regime::{observed_regime, rest_band};
 pub use uncertainty::NotIdentified;
@@ -73,6 +75,7 @@ pub enum Free {
     Mu,
     V0,
     Restitution,
+    RollingResistance,
 }
 
 impl Free {
@@ -82,6 +85,7 @@ impl Free {
             Free::Mu => "mu",
             Free::V0 => "v0",
             Free::Restitution => "restitution",
+            Free::RollingResistance => "rolling_resistance",
         }
     }
 }
@@ -183,6 +187,30 @@ fn model_fit_of(
     target: Target,
     progress: &dyn Progress,
 ) -> Result<ModelFit, FitError> {
+    scored_fit(scene, m, free, target, progress).map(|s| s.fit)
+}
+
+/// A model fit with what information criteria need: the weighted residual sum of
+/// squares, how many values were estimated (the free ones
+/// and a position fit's profiled impact time, place and angle), and its estimates.
+struct Scored {
+    pub fit: ModelFit,
+    pub cost: f64,
+    pub estimated: usize,
+    pub values: Vec<f64>,
+    pub ses: Vec<Option<f64>>,
+    /// The fitted scene and the frames it was fitted on (of the [`thinned`] series).
+    pub scene: Scene,
+    pub idx: Vec<usize>,
+}
+
+fn scored_fit(
+    scene: &Scene,
+    m: &Measured,
+    free: &[Free],
+    target: Target,
+    progress: &dyn Progress,
+) -> Result<Scored, FitError> {
     let thin = thinned(m);
     let (m, every) = match &thin {
         Some((t, k)) => (t, Some(*k)),
@@ -198,6 +226,7 @@ fn model_fit_of(
             Free::Mu => scene.mu.max(0.01),
             Free::V0 => scene.left.v0,
             Free::Restitution => scene.restitution,
+            Free::RollingResistance => scene.rolling_resistance,
         })
         .collect();
     // μ first, by a global scan and golden-section search: the cost is not smooth
@@ -225,6 +254,23 @@ fn model_fit_of(
     let j = jacobian(scene, m, free, &idx, &p, &r, target);
     let (ses, not_identified) = uncertainties(&normal_matrix(&j), s2, free, &p);
     let se = |f: Free| free.iter().position(|x| *x == f).and_then(|i| ses[i]);
+    let scored = |fit: ModelFit| Scored {
+        fit,
+        cost,
+        estimated: n + nuisance(m, target),
+        values: free
+            .iter()
+            .map(|f| match f {
+                Free::Mu => fitted.mu,
+                Free::V0 => fitted.left.v0,
+                Free::Restitution => fitted.restitution,
+                Free::RollingResistance => fitted.rolling_resistance,
+            })
+            .collect(),
+        ses: ses.clone(),
+        scene: fitted,
+        idx: idx.clone(),
+    };
     let rest_band = rest_band(m);
     let v_roll = closed_form::v_roll(fitted.k(), fitted.restitution, fitted.left.v0);
     let derived = Derived::of(&fitted);
@@ -237,7 +283,7 @@ fn model_fit_of(
             .map(|w| w.1)
             .or_else(|| rolling_time(&fitted)),
     );
-    Ok(ModelFit {
+    Ok(scored(ModelFit {
         mu: fitted.mu,
         mu_se: se(Free::Mu).unwrap_or(f64::NAN),
         v0: fitted.left.v0,
@@ -259,7 +305,7 @@ fn model_fit_of(
         agrees: verdict.agrees_with(regime_observed),
         not_identified,
         every,
-    })
+    }))
 }
 
 /// Both fits of one series.
@@ -267,6 +313,9 @@ fn model_fit_of(
 pub struct Fits {
     pub line_fit: LineFit,
     pub model_fit: ModelFit,
+    /// The candidate models compared by AIC and BIC ([`compare_models`]), one marked
+    /// `supported`.
+    pub models: Vec<Candidate>,
 }
 
 /// Line fit over `window` and model fit with `free`, on `scene` and `m`; stops when
@@ -302,6 +351,7 @@ pub fn fit_all(
     let fits = Fits {
         line_fit: line_fit(m, scene, window)?,
         model_fit,
+        models: compare_models(scene, m, progress)?,
     };
     check_finite(&fits, m.has_v_t())?;
     Ok(fits)

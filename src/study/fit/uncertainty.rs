@@ -19,6 +19,7 @@ fn bounds(f: Free) -> (f64, f64) {
         Free::Mu => (1e-6, f64::INFINITY),
         Free::V0 => (f64::NEG_INFINITY, f64::INFINITY),
         Free::Restitution => (0.0, 1.0),
+        Free::RollingResistance => (0.0, f64::INFINITY),
     }
 }
 

@@ -126,10 +126,54 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                     both_fits(m, p, usize::from(inner.width), &mut lines, theme);
                 }
             }
+            model_choice_lines(&f.models, &mut lines, theme);
             lines
         }
     };
     draw_lines(by_priority(lines, inner), inner, buf);
+}
+
+/// The candidate models by BIC (lower is better), the one the data support marked;
+/// below the fits, the first to go on a small screen.
+fn model_choice_lines(models: &[fit::Candidate], lines: &mut Ranked<'static>, theme: &Theme) {
+    let g = theme.glyphs;
+    let name = |c: &fit::Candidate| {
+        let names: Vec<String> = c
+            .parameters
+            .iter()
+            .map(|e| match e.parameter {
+                "mu" => format!("{}_k", g.mu),
+                "restitution" => "e".to_string(),
+                "rolling_resistance" => "c_rr".to_string(),
+                other => other.to_string(),
+            })
+            .collect();
+        names.join("+")
+    };
+    // Only in the room the fits leave: the header before the rows, the supported
+    // model first, then by BIC (a small screen keeps the best).
+    if let Some(c) = models.iter().find(|c| c.supported) {
+        lines.push((
+            1,
+            Line::from(vec![
+                Span::styled("the data support ", theme.dim),
+                Span::styled(g.text(&name(c)), theme.info),
+                Span::styled(" (by BIC)", theme.dim),
+            ]),
+        ));
+    }
+    let mut ranked: Vec<&fit::Candidate> = models.iter().collect();
+    ranked.sort_by(|a, b| b.supported.cmp(&a.supported).then(a.bic.total_cmp(&b.bic)));
+    for c in ranked {
+        lines.push((
+            0,
+            Line::from(vec![
+                Span::styled(if c.supported { "* " } else { "  " }, theme.info),
+                Span::styled(g.text(&format!("{:<14}", name(c))), theme.text),
+                Span::styled(format!(" BIC {:>7.1} AIC {:>7.1}", c.bic, c.aic), theme.dim),
+            ]),
+        ));
+    }
 }
 
 /// The model fit of a velocity series: μ_k ± 2σ, RMS, and the verdict.
