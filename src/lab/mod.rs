@@ -30,6 +30,7 @@ use jobs::{Job, Jobs};
 
 pub use analyses::{METHOD_VIEW_LEVELS, OVERLAY_LEVELS, Overlay, level_settings};
 pub use span::SpanEnd;
+pub use views::Story;
 
 use span::{preset_span_end, solve_shown};
 use views::{Cached, data_rms, extent};
@@ -80,6 +81,10 @@ pub struct Lab {
     pub data_rms: Option<(f64, Option<f64>)>,
     /// The measured series' rest band (speeds within it cannot be told from rest).
     pub rest_band: Option<f64>,
+    /// The run's headline, what follows the first impact, and the verdict.
+    pub story: Story,
+    /// The pinned run's parameters that differ from the current ones.
+    pinned_changes: Vec<(&'static str, String, String)>,
     /// The measured series, ready for any scene (a preset's, or `--data`).
     series: Option<Series>,
     /// The measured series in this scene (`measured::for_scene`).
@@ -133,17 +138,22 @@ impl Lab {
             t_start: span.t_start,
             t_end: Some(solution.t_end),
         };
+        let derived = Derived::of(&scene);
+        // Placeholders: `cache` fills these from the finished lab.
+        let story = Story::of(&solution, &derived, None);
         let mut lab = Lab {
             preset,
             scene,
             span,
             span_end,
             pinned: None,
-            derived: Derived::of(&scene),
+            derived,
             solution,
             extent: (0.0, 0.0),
             data_rms: None,
             rest_band: None,
+            story,
+            pinned_changes: Vec::new(),
             series,
             data,
             fit_window: (None, None),
@@ -339,6 +349,8 @@ impl Lab {
         }
         self.data_rms = self.measured().map(|m| data_rms(&self.solution, m));
         self.rest_band = self.data.as_ref().map(|d| d.rest_band);
+        self.story = Story::of(&self.solution, &self.derived, self.rest_band);
+        self.pinned_changes = self.changes_from_pinned();
         self.samples.replace(None);
         self.energies.replace(None);
         self.pinned_samples.replace(None);

@@ -1,5 +1,5 @@
 //! What the views draw from a solution, cached per scene and size: curve samples,
-//! energies, the pinned run's samples and changes, the regime grid, and the measured
+//! energies, the pinned run's samples and changes, the run's story, the regime grid, and the measured
 //! ball's ghost (from the series derived for the scene), the extent and the data RMS.
 
 use std::cell::RefCell;
@@ -10,6 +10,7 @@ use crate::input::units::show;
 use crate::physics::derived::{Derived, Regime};
 use crate::physics::scene::Span;
 use crate::physics::solution::{EnergySplit, Snapshot, Solution};
+use crate::physics::story::{self, After, Verdict};
 use crate::study::measured::Measured;
 
 use super::Lab;
@@ -110,7 +111,12 @@ impl Lab {
     /// The pinned parameters that differ from the current ones: `(label, was, now)`
     /// with the table's label and unit: every value of the scene and the span's start
     /// (the shown end follows the runs).
-    pub fn pinned_changes(&self) -> Vec<(&'static str, String, String)> {
+    pub fn pinned_changes(&self) -> &[(&'static str, String, String)] {
+        &self.pinned_changes
+    }
+
+    /// [`Lab::pinned_changes`] computed, once per scene.
+    pub(super) fn changes_from_pinned(&self) -> Vec<(&'static str, String, String)> {
         let Some(p) = &self.pinned else {
             return Vec::new();
         };
@@ -197,4 +203,23 @@ pub(super) fn data_rms(sol: &Solution, m: &Measured) -> (f64, Option<f64>) {
     }
     let rms = |sum: f64, n: usize| (sum / n.max(1) as f64).sqrt();
     (rms(sc, n), (nt > 0).then(|| rms(st, nt)))
+}
+
+/// The run's story as the panels tell it, once per scene: the headline, what happens
+/// after the first impact, and the verdict against the measured series' rest band.
+#[derive(Clone, Debug)]
+pub struct Story {
+    pub headline: &'static str,
+    pub after: Option<After>,
+    pub verdict: Verdict,
+}
+
+impl Story {
+    pub(super) fn of(sol: &Solution, derived: &Derived, band: Option<f64>) -> Story {
+        Story {
+            headline: story::headline(sol, derived),
+            after: story::after_first_impact(sol, derived),
+            verdict: Verdict::of(sol, derived, band),
+        }
+    }
 }

@@ -16,7 +16,6 @@ use super::{Ranked, block, by_priority, draw_lines, title_within};
 use crate::input::units::{Dimension, show, significant};
 use crate::physics::derived::Regime;
 use crate::physics::forces::{Instant, Sliding, instant};
-use crate::physics::story::{Verdict, headline};
 use crate::tui::app::{App, Prediction};
 use crate::tui::canvas::Canvas;
 use crate::tui::theme::Theme;
@@ -613,9 +612,8 @@ fn prediction_lines<'a>(app: &App, p: &Prediction, pending: bool, theme: &Theme)
             ),
         )];
     }
-    let sol = &app.lab.solution;
     let d = &app.lab.derived;
-    let verdict = Verdict::of(sol, d, app.lab.rest_band);
+    let verdict = &app.lab.story.verdict;
     let right = verdict.agrees_with(p.guess);
     let mark = match (right, g.ascii) {
         (true, false) => "✓ right",
@@ -641,7 +639,7 @@ fn prediction_lines<'a>(app: &App, p: &Prediction, pending: bool, theme: &Theme)
             Line::from(vec![
                 Span::styled(format!("predicted: {guess}   "), theme.text),
                 Span::styled(
-                    g.text(&format!("observed: {}", headline(sol, d))),
+                    g.text(&format!("observed: {}", app.lab.story.headline)),
                     theme.accent,
                 ),
                 Span::styled(

@@ -8,7 +8,7 @@ use ratatui::widgets::Widget;
 
 use super::{Ranked, block, by_priority, draw_lines};
 use crate::input::units::{Dimension, show, significant};
-use crate::physics::story::{self, After, Verdict};
+use crate::physics::story::After;
 use crate::tui::app::App;
 use crate::tui::theme::Theme;
 
@@ -20,12 +20,12 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let inner = blk.inner(area);
     blk.render(area, buf);
 
-    let regime = story::headline(sol, d);
+    // The headline, the story after the first impact and the verdict (its margin
+    // against the measured series' rest band) are the lab's, once per scene.
+    let regime = app.lab.story.headline;
     let why = d.why();
-    // The verdict's margin against the measured series' rest band, when there is one.
-    let band = app.lab.rest_band;
-    let verdict = Verdict::of(sol, d, band);
-    let story = story::after_first_impact(sol, d);
+    let verdict = &app.lab.story.verdict;
+    let story = app.lab.story.after.as_ref();
     let b_star = d.b_star.map_or("none (e < 2/5)".to_string(), |b| {
         format!("{:.2}", show(b, Dimension::Length))
     });
