@@ -104,6 +104,14 @@ pub enum Command {
     Sweep(SweepArgs),
     /// List the built-in and user presets.
     Presets,
+    /// Print a shell completion script (e.g. `groovelab completions bash > groovelab.bash`).
+    Completions {
+        /// The shell to complete in.
+        #[arg(value_enum)]
+        shell: clap_complete::Shell,
+    },
+    /// Print the man page groovelab(1) in roff (e.g. `groovelab manpage | man -l -`).
+    Manpage,
 }
 
 #[derive(Args, Debug)]

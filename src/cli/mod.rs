@@ -23,6 +23,7 @@ use crate::tui::{
 mod args;
 pub mod entry;
 mod fit;
+mod manual;
 mod methods;
 mod progress;
 mod sweep;
@@ -77,6 +78,8 @@ pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
         Some(Command::Fit(args)) => fit::run(&cli.scene, &cli.data, args).map(Outcome::Print),
         Some(Command::Sweep(args)) => sweep::run(&cli.scene, args).map(Outcome::Print),
         Some(Command::Presets) => Ok(Outcome::Print(presets())),
+        Some(Command::Completions { shell }) => Ok(Outcome::Print(manual::completions(*shell))),
+        Some(Command::Manpage) => Ok(Outcome::Print(manual::manpage())),
     }
 }
 
@@ -91,6 +94,8 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         Some(Command::Fit(_)) => ("fit", true, true, false),
         Some(Command::Sweep(_)) => ("sweep", true, false, false),
         Some(Command::Presets) => ("presets", false, false, false),
+        Some(Command::Completions { .. }) => ("completions", false, false, false),
+        Some(Command::Manpage) => ("manpage", false, false, false),
     };
     let d = &cli.data;
     let data_given = [

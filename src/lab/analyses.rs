@@ -6,10 +6,10 @@ use crate::methods::{self, Method, Settings, Y};
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::Solution;
 use crate::study::compare::{self, Row};
-use crate::study::fit::{self, Fits, Free, ModelFit};
+use crate::study::fit::{self, FitError, Fits, Free, ModelFit};
 
 use super::Lab;
-use super::jobs::{Job, State, Ticket};
+use super::jobs::{State, Ticket, Waker};
 
 /// Steps of the overlay and the Methods view: 10 ms … 10 µs (fixed-step methods),
 /// tolerances 1e-2 … 1e-8 (rk45).
@@ -66,110 +66,105 @@ impl methods::Observer for Thinned<'_> {
     }
 }
 
+/// The scene a job belongs to: it counts up with every new solve, so a request made
+/// for an earlier scene never matches a newer one.
+pub(super) type Generation = u64;
+
 impl Lab {
-    /// (Re)starts every analysis that is wanted and not ready for this scene.
+    /// Requests every analysis that is wanted for this scene (a request already made
+    /// for it runs on; one made for an earlier scene is superseded).
     pub(super) fn restart(&mut self) {
-        if self.want_methods && matches!(self.methods, Job::Idle) {
-            let (scene, span, sol) = (self.scene, self.span, self.solution.clone());
-            self.methods
-                .start(move |ticket| method_rows(&scene, &span, &sol, ticket));
-        }
-        match self.overlay_choice {
-            Some((method, level)) => {
-                let (scene, span, sol) = (self.scene, self.span, self.solution.clone());
-                self.overlay
-                    .start(move |ticket| overlay(method, level, &scene, &span, &sol, ticket));
-            }
-            None => self.overlay.cancel(),
-        }
-        self.restart_fits();
+        self.request_methods();
+        self.request_overlay();
+        self.request_fits();
     }
 
-    fn restart_fits(&mut self) {
-        match self.measured().filter(|_| self.want_fits) {
-            Some(m) => {
-                let (scene, m, window) = (self.scene, m.clone(), self.fit_window);
-                if m.x.is_some() {
-                    let m = m.clone();
-                    self.position_fit.start(move |ticket| {
-                        fit::position_fit(&scene, &m, &[Free::Mu], ticket)
-                            .map_err(|e| e.to_string())
-                    });
-                } else {
-                    self.position_fit.cancel();
-                }
-                self.fits.start(move |ticket| {
-                    fit::fit_all(&scene, &m, window, &[Free::Mu], ticket).map_err(|e| e.to_string())
+    fn request_methods(&mut self) {
+        if !self.want_methods {
+            return;
+        }
+        let (scene, span, sol) = (self.scene, self.span, self.solution.clone());
+        self.methods
+            .request(&self.jobs, self.generation, move |ticket| {
+                method_rows(&scene, &span, &sol, ticket)
+            });
+    }
+
+    fn request_overlay(&mut self) {
+        let Some((method, level)) = self.overlay_choice else {
+            self.overlay.cancel();
+            return;
+        };
+        let (scene, span, sol) = (self.scene, self.span, self.solution.clone());
+        let key = (self.generation, method, level);
+        self.overlay.request(&self.jobs, key, move |ticket| {
+            overlay(method, level, &scene, &span, &sol, ticket)
+        });
+    }
+
+    fn request_fits(&mut self) {
+        let Some(m) = self.measured_arc().filter(|_| self.want_fits) else {
+            // Leaving the Fit view stops a running fit; a finished one is kept.
+            self.fits.stop_running();
+            self.position_fit.stop_running();
+            return;
+        };
+        let (scene, window) = (self.scene, self.fit_window);
+        if m.x.is_some() {
+            let m = m.clone();
+            self.position_fit
+                .request(&self.jobs, self.generation, move |ticket| {
+                    fit::position_fit(&scene, &m, &[Free::Mu], ticket)
                 });
-            }
-            None => {
-                self.fits.cancel();
-                self.position_fit.cancel();
-            }
+        } else {
+            self.position_fit.cancel();
         }
+        let key = (self.generation, window);
+        self.fits.request(&self.jobs, key, move |ticket| {
+            fit::fit_all(&scene, &m, window, &[Free::Mu], ticket)
+        });
     }
 
-    /// Takes in finished analyses; true if any arrived (the screen needs a redraw).
-    pub fn poll(&mut self) -> bool {
-        let a = self.methods.poll();
-        let b = self.overlay.poll();
-        let c = self.fits.poll();
-        let d = self.position_fit.poll();
-        let e = self.export.poll();
-        a || b || c || d || e
+    /// Waits for every queued and running analysis (headless output is then
+    /// deterministic).
+    pub fn wait(&self) {
+        self.jobs.wait();
     }
 
-    /// Waits for every running analysis (headless output is then deterministic).
-    pub fn wait(&mut self) {
-        self.methods.wait();
-        self.overlay.wait();
-        self.fits.wait();
-        self.position_fit.wait();
-        self.export.wait();
+    /// True while an analysis is queued or runs.
+    pub fn busy(&self) -> bool {
+        self.jobs.busy()
+    }
+
+    /// Whom a finished analysis wakes (the app's event loop).
+    pub fn set_waker(&self, waker: Waker) {
+        self.jobs.set_waker(waker);
+    }
+
+    /// How many analyses have run in this lab (work counted: a repeated request runs
+    /// none, a superseded one that had not started none).
+    pub fn runs(&self) -> usize {
+        self.jobs.runs()
     }
 
     /// Writes a file off the key press (a chart's SVG takes milliseconds): `work`
     /// returns the status message, or why nothing was written. A newer export
     /// supersedes a running one.
     pub fn start_export(&mut self, work: impl FnOnce() -> Result<String, String> + Send + 'static) {
-        self.export.start(move |_| work());
+        self.exports += 1;
+        self.export
+            .request(&self.jobs, self.exports, move |_| work());
     }
 
     /// The finished export's message, once; `None` while it runs or when there is none.
     pub fn take_export(&mut self) -> Option<Result<String, String>> {
-        self.export.poll();
-        match std::mem::take(&mut self.export) {
-            Job::Ready(r) => Some(r),
-            other => {
-                self.export = other;
-                None
-            }
-        }
-    }
-
-    /// True while an analysis runs.
-    pub fn busy(&self) -> bool {
-        self.methods.is_running()
-            || self.overlay.is_running()
-            || self.fits.is_running()
-            || self.position_fit.is_running()
-            || self.export.is_running()
+        self.export.take()
     }
 
     /// Asks for (or stops asking for) the Methods view's rows.
     pub fn want_methods(&mut self, on: bool) {
         self.want_methods = on;
-        if on {
-            self.restart_if_idle();
-        }
-    }
-
-    fn restart_if_idle(&mut self) {
-        if self.want_methods && matches!(self.methods, Job::Idle) {
-            let (scene, span, sol) = (self.scene, self.span, self.solution.clone());
-            self.methods
-                .start(move |ticket| method_rows(&scene, &span, &sol, ticket));
-        }
+        self.request_methods();
     }
 
     /// The Methods view's rows: every time-stepping method at four levels, untimed.
@@ -180,14 +175,7 @@ impl Lab {
     /// Draws `method` at `level` over the exact curves (or nothing).
     pub fn set_overlay(&mut self, choice: Option<(Method, u8)>) {
         self.overlay_choice = choice;
-        match choice {
-            Some((method, level)) => {
-                let (scene, span, sol) = (self.scene, self.span, self.solution.clone());
-                self.overlay
-                    .start(move |ticket| overlay(method, level, &scene, &span, &sol, ticket));
-            }
-            None => self.overlay.cancel(),
-        }
+        self.request_overlay();
     }
 
     pub fn overlay_choice(&self) -> Option<(Method, u8)> {
@@ -205,15 +193,15 @@ impl Lab {
     /// Asks for (or stops asking for) the fits of the measured series.
     pub fn want_fits(&mut self, on: bool) {
         self.want_fits = on;
-        self.restart_fits();
+        self.request_fits();
     }
 
-    pub fn fits(&self) -> State<'_, Result<Fits, String>> {
+    pub fn fits(&self) -> State<'_, Result<Fits, FitError>> {
         self.fits.state()
     }
 
     /// The model fitted directly to a position track (Idle for a velocity file).
-    pub fn position_fit(&self) -> State<'_, Result<ModelFit, String>> {
+    pub fn position_fit(&self) -> State<'_, Result<ModelFit, FitError>> {
         self.position_fit.state()
     }
 
@@ -256,7 +244,7 @@ impl Lab {
             ));
         }
         self.fit_window = (Some(from), Some(to));
-        self.restart_fits();
+        self.request_fits();
         Ok(())
     }
 }
@@ -306,19 +294,10 @@ fn overlay(
         total: steps,
         ticket,
     };
-    let model = methods::Model::of(scene);
-    let y0 = methods::start_state(scene, sol.t_start);
-    methods::integrate(
-        method,
-        &model,
-        y0,
-        sol.t_start,
-        sol.t_end,
-        &settings,
-        &mut rec,
-    );
-    // A superseded run stops here; its (absent) result is never shown.
-    let row = compare::measure(method, scene, span, &settings, sol, false, ticket).ok()?;
+    // The run's points are recorded in the measuring run's first pass: one run.
+    let row =
+        compare::measure_observed(method, scene, span, &settings, sol, false, ticket, &mut rec)
+            .ok()?;
     Some(Overlay {
         method,
         settings,

@@ -23,9 +23,10 @@ use crate::physics::derived::{Derived, Regime};
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{EnergySplit, Snapshot, Solution};
 use crate::study::compare::Row;
-use crate::study::fit::{Fits, ModelFit};
+use crate::study::fit::{FitError, Fits, ModelFit};
 use crate::study::measured::{self, InScene, Measured, Series};
-use jobs::Job;
+use analyses::Generation;
+use jobs::{Job, Jobs};
 
 pub use analyses::{METHOD_VIEW_LEVELS, OVERLAY_LEVELS, Overlay, level_settings};
 pub use span::SpanEnd;
@@ -45,6 +46,9 @@ pub enum SaveError {
     #[error("{0}")]
     Io(String),
 }
+
+/// The line fit's window, s: from, to (`None`: the sliding phase's end).
+pub type FitWindow = (Option<f64>, Option<f64>);
 
 /// A scene pinned for comparison (A/B): drawn dimmed beside the current one.
 #[derive(Clone, Debug)]
@@ -81,18 +85,23 @@ pub struct Lab {
     /// The measured series in this scene (`measured::for_scene`).
     data: Option<InScene>,
     /// Line-fit window (None: the sliding phase).
-    pub fit_window: (Option<f64>, Option<f64>),
+    pub fit_window: FitWindow,
     want_methods: bool,
     want_fits: bool,
     overlay_choice: Option<(Method, u8)>,
-    methods: Job<Vec<Row>>,
+    /// The worker pool's jobs of this lab, and the scene they are asked for.
+    jobs: Jobs,
+    generation: Generation,
+    methods: Job<Generation, Vec<Row>>,
     /// `None` only for a run that was cancelled before it finished.
-    overlay: Job<Option<Overlay>>,
-    fits: Job<Result<Fits, String>>,
+    overlay: Job<(Generation, Method, u8), Option<Overlay>>,
+    fits: Job<(Generation, FitWindow), Result<Fits, FitError>>,
     /// The model fitted to a position track's positions (none for a velocity file).
-    position_fit: Job<Result<ModelFit, String>>,
-    /// A file the app is writing (run CSV, chart SVG): the status message, or why not.
-    export: Job<Result<String, String>>,
+    position_fit: Job<Generation, Result<ModelFit, FitError>>,
+    /// A file the app is writing (run CSV, chart SVG): the status message, or why not;
+    /// each export its own request.
+    export: Job<u64, Result<String, String>>,
+    exports: u64,
     samples: Cached<usize, Snapshot>,
     energies: Cached<usize, (f64, EnergySplit)>,
     pinned_samples: Cached<usize, Snapshot>,
@@ -141,11 +150,14 @@ impl Lab {
             want_methods: false,
             want_fits: false,
             overlay_choice: None,
-            methods: Job::Idle,
-            overlay: Job::Idle,
-            fits: Job::Idle,
-            position_fit: Job::Idle,
-            export: Job::Idle,
+            jobs: Jobs::default(),
+            generation: 0,
+            methods: Job::default(),
+            overlay: Job::default(),
+            fits: Job::default(),
+            position_fit: Job::default(),
+            export: Job::default(),
+            exports: 0,
             samples: RefCell::default(),
             energies: RefCell::default(),
             pinned_samples: RefCell::default(),
@@ -160,6 +172,11 @@ impl Lab {
     /// model can be tuned against it by hand; a track's v_t follows r).
     pub fn measured(&self) -> Option<&Measured> {
         self.data.as_ref().map(|d| &*d.measured)
+    }
+
+    /// [`Lab::measured`], shared (a job takes it without copying the series).
+    fn measured_arc(&self) -> Option<Arc<Measured>> {
+        self.data.as_ref().map(|d| Arc::clone(&d.measured))
     }
 
     /// The measured series as loaded, before any scene (what a position track's
@@ -177,6 +194,12 @@ impl Lab {
     /// Sets a parameter if the scene stays valid. Setting `t_end` fixes the span's end;
     /// any other parameter ends a preset's `t_end` (the span follows the physics again).
     pub fn set(&mut self, key: Key, value: f64) -> Result<(), SceneError> {
+        self.set_all(&[(key, value)])
+    }
+
+    /// Sets several parameters at once, all or none: the scene is checked with every
+    /// change in it, and solved once.
+    pub fn set_all(&mut self, changes: &[(Key, f64)]) -> Result<(), SceneError> {
         let fixed = match self.span_end {
             SpanEnd::Fixed { t_end, .. } => Some(t_end),
             _ => None,
@@ -185,22 +208,27 @@ impl Lab {
             t_start: self.span.t_start,
             t_end: fixed,
         };
-        let spec = SceneSpec::of(&self.scene, &given).with(key, value);
+        let mut spec = SceneSpec::of(&self.scene, &given);
+        for &(key, value) in changes {
+            spec.set(key, value);
+        }
         let (scene, span) = spec.resolve()?;
-        self.span_end = match (key, self.span_end) {
-            (Key::TEnd, _) => SpanEnd::Fixed {
-                t_end: value,
-                from_preset: false,
-            },
-            (Key::TStart, end) => end,
-            (
-                _,
-                SpanEnd::Fixed {
-                    from_preset: true, ..
+        for &(key, value) in changes {
+            self.span_end = match (key, self.span_end) {
+                (Key::TEnd, _) => SpanEnd::Fixed {
+                    t_end: value,
+                    from_preset: false,
                 },
-            ) => SpanEnd::Auto,
-            (_, end) => end,
-        };
+                (Key::TStart, end) => end,
+                (
+                    _,
+                    SpanEnd::Fixed {
+                        from_preset: true, ..
+                    },
+                ) => SpanEnd::Auto,
+                (_, end) => end,
+            };
+        }
         self.load(scene, span);
         Ok(())
     }
@@ -291,7 +319,11 @@ impl Lab {
         self.solution = Arc::new(solution);
         self.derived = Derived::of(&scene);
         self.cache();
-        self.methods.cancel();
+        // Every analysis asked for from now on belongs to this solve.
+        self.generation += 1;
+        if !self.want_methods {
+            self.methods.cancel();
+        }
         self.restart();
     }
 

@@ -193,17 +193,30 @@ impl Observer for Metrics<'_> {
 }
 
 /// Collects the times of the impacts a method detects.
-struct Impacts<'a>(Vec<f64>, Watch<'a>);
+/// The first pass's observer: the impacts the method detects, and whoever else
+/// watches that pass (`also`: the overlay records its points there).
+struct Impacts<'a, 'o>(Vec<f64>, Watch<'a>, &'o mut dyn Observer);
 
-impl Observer for Impacts<'_> {
-    fn step(&mut self, _t: f64, y: &Y) -> bool {
-        !self.1.stop() && y.iter().all(|v| v.is_finite())
+impl Observer for Impacts<'_, '_> {
+    fn step(&mut self, t: f64, y: &Y) -> bool {
+        let also = self.2.step(t, y);
+        also && !self.1.stop() && y.iter().all(|v| v.is_finite())
     }
 
     fn event(&mut self, event: Event) {
         if event.kind == EventKind::Collision {
             self.0.push(event.t);
         }
+        self.2.event(event);
+    }
+}
+
+/// Watches nothing.
+struct Unwatched;
+
+impl Observer for Unwatched {
+    fn step(&mut self, _t: f64, _y: &Y) -> bool {
+        true
     }
 }
 
@@ -294,6 +307,31 @@ pub fn measure(
     timed: bool,
     progress: &dyn Progress,
 ) -> Result<Row, Cancelled> {
+    measure_observed(
+        method,
+        scene,
+        span,
+        settings,
+        exact,
+        timed,
+        progress,
+        &mut Unwatched,
+    )
+}
+
+/// [`measure`], with `also` watching the steps and events of the run's first pass (so
+/// a caller that wants the run's points, as the overlay, need not integrate it again).
+#[allow(clippy::too_many_arguments)]
+pub fn measure_observed(
+    method: Method,
+    scene: &Scene,
+    span: &Span,
+    settings: &Settings,
+    exact: &Solution,
+    timed: bool,
+    progress: &dyn Progress,
+    also: &mut dyn Observer,
+) -> Result<Row, Cancelled> {
     let model = Model::of(scene);
     let (t0, t1) = (exact.t_start, exact.t_end);
     if method == Method::Exact {
@@ -328,7 +366,7 @@ pub fn measure(
         2.0 * settings.step
     };
     // First pass: where the method puts its impacts, to pair them with the exact ones.
-    let mut found = Impacts(Vec::new(), Watch::new(progress));
+    let mut found = Impacts(Vec::new(), Watch::new(progress), also);
     integrate(method, &model, y0, t0, t1, settings, &mut found);
     if progress.cancelled() {
         return Err(Cancelled);

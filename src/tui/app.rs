@@ -217,12 +217,10 @@ impl App {
         }
     }
 
-    /// Takes in finished analyses and a finished export (its message goes to the
-    /// status line); true if anything arrived (the screen needs a redraw).
+    /// Takes in a finished export (its message goes to the status line); true if one
+    /// arrived. Finished analyses need no taking in: the views read them.
     pub fn poll(&mut self) -> bool {
-        let lab = self.lab.poll();
-        let export = self.take_export();
-        lab || export
+        self.take_export()
     }
 
     /// Waits for every running analysis and export (headless output is deterministic).

@@ -13,14 +13,17 @@ pub mod vocabulary;
 
 use std::io::{self, Write};
 use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::mpsc::{self, Receiver, RecvTimeoutError};
+use std::sync::{Mutex, PoisonError};
 use std::time::{Duration, Instant};
 
 use ratatui::crossterm::event::{
     self, DisableMouseCapture, EnableMouseCapture, Event, KeyEvent, KeyEventKind, MouseButton,
-    MouseEventKind,
+    MouseEvent, MouseEventKind,
 };
 use ratatui::crossterm::{cursor, execute};
 
+use crate::lab::jobs::Waker;
 use app::{Action, App, FPS};
 use theme::{Glyphs, Theme};
 
@@ -100,12 +103,50 @@ pub fn run(mut app: App, ascii: bool) -> io::Result<()> {
     result
 }
 
+/// What wakes the event loop: a terminal event, or a job that finished or moved on.
+enum Input {
+    Terminal(Event),
+    /// Reading the terminal failed: the app ends with this error.
+    Failed(io::Error),
+    Jobs,
+}
+
+/// Starts the thread that reads terminal events (blocked, no CPU, until one comes)
+/// into the event loop's channel, and points the lab's jobs at the same channel:
+/// keys and job results arrive in one queue, and the loop sleeps until either comes.
+fn inputs(app: &App) -> io::Result<Receiver<Input>> {
+    let (tx, rx) = mpsc::channel();
+    let jobs = Mutex::new(tx.clone());
+    app.lab.set_waker(Waker::new(move || {
+        let _ = jobs
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner)
+            .send(Input::Jobs);
+    }));
+    std::thread::Builder::new()
+        .name("groovelab-terminal".into())
+        .spawn(move || {
+            loop {
+                let input = match event::read() {
+                    Ok(e) => Input::Terminal(e),
+                    Err(e) => Input::Failed(e),
+                };
+                let failed = matches!(input, Input::Failed(_));
+                if tx.send(input).is_err() || failed {
+                    break;
+                }
+            }
+        })?;
+    Ok(rx)
+}
+
 fn event_loop(
     terminal: &mut ratatui::DefaultTerminal,
     app: &mut App,
     theme: &Theme,
 ) -> io::Result<()> {
     let frame = Duration::from_secs_f64(1.0 / FPS);
+    let rx = inputs(app)?;
     let mut dirty = true;
     let mut last_tick = Instant::now();
     let mut mouse = app.mouse;
@@ -114,68 +155,39 @@ fn event_loop(
             terminal.draw(|f| view::draw(app, f.area(), f.buffer_mut(), theme))?;
             dirty = false;
         }
-        // Idle or paused: block until an event (no CPU). Playing: wake for the next
-        // frame; the time step comes from the clock, not from how fast we drew.
-        let timeout = if app.playing {
-            frame.saturating_sub(last_tick.elapsed())
-        } else if app.lab.busy() {
-            // An analysis runs on a worker: look for its result (and progress) often.
-            Duration::from_millis(50)
-        } else {
-            Duration::from_secs(3600)
-        };
-        if event::poll(timeout)? {
-            match event::read()? {
-                Event::Key(key) if key.kind == KeyEventKind::Press => {
-                    if let Some(action) = keys::action(&app.mode, key) {
-                        let was_playing = app.playing;
-                        app.apply(action);
-                        if app.playing && !was_playing {
-                            last_tick = Instant::now();
-                        }
-                        dirty = true;
-                    }
-                }
-                Event::Mouse(m) if app.mouse => {
-                    let size = terminal.size()?;
-                    let area = ratatui::layout::Rect::new(0, 0, size.width, size.height);
-                    // A click or drag on the chart seeks there.
-                    let seek = match m.kind {
-                        MouseEventKind::Down(MouseButton::Left)
-                        | MouseEventKind::Drag(MouseButton::Left) => {
-                            view::chart_time_at_in(app, area, theme, m.column, m.row)
-                        }
-                        _ => None,
-                    };
-                    if let Some(t) = seek {
-                        app.seek(t);
-                        dirty = true;
-                    } else if let Some(panels) = view::layout(area) {
-                        let hit = view::param_at(panels.params, app.selected, m.column, m.row);
-                        let action = match (m.kind, hit) {
-                            (MouseEventKind::Down(MouseButton::Left), Some(i)) => {
-                                Some(Action::Select(i))
-                            }
-                            (MouseEventKind::ScrollUp, Some(i)) => {
-                                Some(Action::ScrollParam(i, true))
-                            }
-                            (MouseEventKind::ScrollDown, Some(i)) => {
-                                Some(Action::ScrollParam(i, false))
-                            }
-                            _ => None,
-                        };
-                        if let Some(a) = action {
-                            app.apply(a);
-                            dirty = true;
-                        }
-                    }
-                }
-                Event::Resize(..) => dirty = true,
-                _ => {}
+        // Paused: sleep until a key or a job's result comes (no CPU). Playing: wake for
+        // the next frame too; the time step comes from the clock, not from how fast we
+        // drew.
+        let first = if app.playing {
+            match rx.recv_timeout(frame.saturating_sub(last_tick.elapsed())) {
+                Ok(input) => Some(input),
+                Err(RecvTimeoutError::Timeout) => None,
+                Err(RecvTimeoutError::Disconnected) => return Err(io::ErrorKind::BrokenPipe.into()),
             }
-        }
-        if app.poll() || app.lab.busy() {
-            dirty = true;
+        } else {
+            Some(
+                rx.recv()
+                    .map_err(|_| io::Error::from(io::ErrorKind::BrokenPipe))?,
+            )
+        };
+        // Everything that came meanwhile, before the next frame: one frame for many
+        // job wakes.
+        for input in first.into_iter().chain(rx.try_iter()) {
+            let was_playing = app.playing;
+            dirty |= match input {
+                Input::Terminal(e) => on_terminal(terminal, app, theme, e)?,
+                Input::Failed(e) => return Err(e),
+                Input::Jobs => {
+                    app.poll();
+                    true
+                }
+            };
+            if app.playing && !was_playing {
+                last_tick = Instant::now();
+            }
+            if app.quit {
+                return Ok(());
+            }
         }
         if app.mouse != mouse {
             mouse = app.mouse;
@@ -189,6 +201,58 @@ fn event_loop(
         }
     }
     Ok(())
+}
+
+/// What a terminal event does; true if the screen needs a redraw.
+fn on_terminal(
+    terminal: &ratatui::DefaultTerminal,
+    app: &mut App,
+    theme: &Theme,
+    event: Event,
+) -> io::Result<bool> {
+    Ok(match event {
+        Event::Key(key) if key.kind == KeyEventKind::Press => match keys::action(&app.mode, key) {
+            Some(action) => {
+                app.apply(action);
+                true
+            }
+            None => false,
+        },
+        Event::Mouse(m) if app.mouse => {
+            let size = terminal.size()?;
+            let area = ratatui::layout::Rect::new(0, 0, size.width, size.height);
+            on_mouse(app, area, theme, m)
+        }
+        Event::Resize(..) => true,
+        _ => false,
+    })
+}
+
+/// A click or drag on the chart seeks there; a click on a parameter selects it, the
+/// wheel over one nudges it. True if anything changed.
+fn on_mouse(app: &mut App, area: ratatui::layout::Rect, theme: &Theme, m: MouseEvent) -> bool {
+    let seek = match m.kind {
+        MouseEventKind::Down(MouseButton::Left) | MouseEventKind::Drag(MouseButton::Left) => {
+            view::chart_time_at_in(app, area, theme, m.column, m.row)
+        }
+        _ => None,
+    };
+    if let Some(t) = seek {
+        app.seek(t);
+        return true;
+    }
+    let Some(panels) = view::layout(area) else {
+        return false;
+    };
+    let hit = view::param_at(panels.params, app.selected, m.column, m.row);
+    let action = match (m.kind, hit) {
+        (MouseEventKind::Down(MouseButton::Left), Some(i)) => Action::Select(i),
+        (MouseEventKind::ScrollUp, Some(i)) => Action::ScrollParam(i, true),
+        (MouseEventKind::ScrollDown, Some(i)) => Action::ScrollParam(i, false),
+        _ => return false,
+    };
+    app.apply(action);
+    true
 }
 
 /// Replays `keys` on `app` as the terminal would.

@@ -334,18 +334,17 @@ impl App {
         if fitted.restitution_se.is_some() {
             changes.push((Key::Restitution, fitted.restitution));
         }
-        let mut applied = Vec::new();
-        for (key, value) in changes {
-            if let Err(e) = self.lab.set(key, value) {
-                self.status = Status::Error(format!("fit not applied: {e}"));
-                return;
-            }
-            applied.push(format!(
-                "{} = {}",
-                key.param().symbol,
-                show(value, key.dimension())
-            ));
+        // All or nothing: a fit is never left half applied.
+        if let Err(e) = self.lab.set_all(&changes) {
+            self.status = Status::Error(format!("fit not applied: {e}"));
+            return;
         }
+        let applied: Vec<String> = changes
+            .iter()
+            .map(|&(key, value)| {
+                format!("{} = {}", key.param().symbol, show(value, key.dimension()))
+            })
+            .collect();
         let sol = &self.lab.solution;
         self.t = self.t.clamp(sol.t_start, sol.t_end);
         self.status = Status::Info(format!("applied the fit: {}", applied.join(", ")));

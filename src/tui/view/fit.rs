@@ -39,7 +39,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         other @ State::Computing { .. } => {
             return super::computing(&other, "fitting", inner, buf, theme);
         }
-        State::Ready(Err(e)) => vec![(9, Line::from(Span::styled(e.clone(), theme.error)))],
+        State::Ready(Err(e)) => vec![(9, Line::from(Span::styled(e.to_string(), theme.error)))],
         State::Ready(Ok(f)) => {
             let l = &f.line_fit;
             let m = &f.model_fit;
@@ -117,7 +117,10 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                 }
                 State::Ready(Err(e)) => {
                     model_fit_lines(m, &mut lines, theme);
-                    lines.push((6, Line::from(Span::styled(g.text(e), theme.error))));
+                    lines.push((
+                        6,
+                        Line::from(Span::styled(g.text(&e.to_string()), theme.error)),
+                    ));
                 }
                 State::Ready(Ok(p)) => {
                     both_fits(m, p, usize::from(inner.width), &mut lines, theme);

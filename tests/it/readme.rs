@@ -1,0 +1,56 @@
+//! The README's console examples are tests: every `$ groovelab …` line of a ```console
+//! block in README.md is run, and its output compared with the lines below it (trycmd).
+//! A change that alters an example fails here until the README shows the new output.
+//! Wildcards: `[..]` matches the rest of a line, `...` on a line of its own any lines;
+//! the README uses them only for timings, and says so beside each example.
+//!
+//! The examples run in a sandbox: a copy of README.md in a fresh folder beside
+//! `README.in/`, which holds the files the examples read (`bad.csv`, the video track),
+//! and `README.out/`, which makes trycmd copy that folder before running (so
+//! `--output map.svg` writes into the copy). User presets come from an empty folder, so
+//! `presets` lists exactly the built-in ones. The failure report names the copy; fix
+//! the README itself.
+
+use std::fs;
+use std::path::{Path, PathBuf};
+
+fn copy(from: &Path, to: &Path) {
+    if let Some(parent) = to.parent() {
+        fs::create_dir_all(parent).unwrap();
+    }
+    fs::copy(from, to).unwrap_or_else(|e| panic!("{}: {e}", from.display()));
+}
+
+/// A fresh folder for the examples, with README.md and its fixtures.
+fn sandbox() -> PathBuf {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("readme-examples");
+    let _ = fs::remove_dir_all(&dir);
+    copy(&root.join("README.md"), &dir.join("README.md"));
+    let input = dir.join("README.in");
+    let track = "docs/video/paper-b4.9-tracker.txt";
+    copy(&root.join(track), &input.join(track));
+    // The README's broken file: line 3 holds a v_cm that is not a number.
+    fs::write(
+        input.join("bad.csv"),
+        "t,v_cm,v_t\n0.00,0.61,0.55\n0.01,abc,0.56\n",
+    )
+    .unwrap();
+    fs::create_dir_all(dir.join("README.out")).unwrap();
+    fs::write(dir.join("README.out/.keep"), "").unwrap();
+    fs::create_dir_all(dir.join("no-presets")).unwrap();
+    dir
+}
+
+#[test]
+fn every_console_example_prints_what_the_readme_shows() {
+    let dir = sandbox();
+    trycmd::TestCases::new()
+        .register_bin("groovelab", Path::new(env!("CARGO_BIN_EXE_groovelab")))
+        .env(
+            "GROOVELAB_PRESETS",
+            dir.join("no-presets").display().to_string(),
+        )
+        .env("NO_COLOR", "1")
+        .case(dir.join("README.md"));
+}
