@@ -355,7 +355,12 @@ fn pinned_line(app: &App, width: u16, theme: &Theme) -> Option<String> {
             .iter()
             .map(|(label, was, now)| {
                 let name = label.replace("mu", theme.glyphs.mu);
-                format!("{name} {was} → {now}")
+                // b hidden (a prediction from the picture): changed, but not to what.
+                if app.hide_b && name == "b" {
+                    "b changed".to_string()
+                } else {
+                    format!("{name} {was} → {now}")
+                }
             })
             .collect::<Vec<_>>()
             .join(", ")
