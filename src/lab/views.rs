@@ -209,7 +209,9 @@ pub(super) fn data_rms(sol: &Solution, m: &Measured) -> (f64, Option<f64>) {
 /// after the first impact, and the verdict against the measured series' rest band.
 #[derive(Clone, Debug)]
 pub struct Story {
-    pub headline: &'static str,
+    pub headline: String,
+    /// The paper's criterion, where the run does otherwise.
+    pub criterion_note: Option<String>,
     pub after: Option<After>,
     pub verdict: Verdict,
 }
@@ -218,6 +220,7 @@ impl Story {
     pub(super) fn of(sol: &Solution, derived: &Derived, band: Option<f64>) -> Story {
         Story {
             headline: story::headline(sol, derived),
+            criterion_note: story::criterion_note(sol, derived),
             after: story::after_first_impact(sol, derived),
             verdict: Verdict::of(sol, derived, band),
         }
