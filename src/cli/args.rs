@@ -333,8 +333,7 @@ impl Args for SceneArgs {
 impl SceneArgs {
     /// The preset these options start from, and the scene they make.
     pub fn resolve(&self) -> Result<(Preset, Scene, Span), CliError> {
-        let preset = Preset::load(self.preset.as_deref().unwrap_or(preset::DEFAULT))
-            .map_err(|e| CliError::Invalid(e.to_string()))?;
+        let preset = Preset::load(self.preset.as_deref().unwrap_or(preset::DEFAULT))?;
         let mut spec = preset.spec.over(&self.values);
         // A preset's t_end belongs to the preset as it is: once a scene option changes
         // it, the span follows the physics again (unless --t-end is given).
@@ -346,9 +345,7 @@ impl SceneArgs {
             }
             spec = without;
         }
-        let (scene, span) = spec
-            .resolve()
-            .map_err(|e| CliError::Invalid(e.to_string()))?;
+        let (scene, span) = spec.resolve()?;
         Ok((preset, scene, span))
     }
 }

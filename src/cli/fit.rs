@@ -49,7 +49,7 @@ pub fn load_series(args: &DataArgs) -> Result<Option<Series>, CliError> {
             .map(|path| {
                 crate::input::read_user_file(path, "--data", crate::input::MAX_FILE_BYTES)
                     .map(|text| (path.display().to_string(), text))
-                    .map_err(|e| CliError::Invalid(e.to_string()))
+                    .map_err(CliError::from)
             })
             .collect::<Result<Vec<_>, _>>()?,
         more => {
@@ -95,8 +95,7 @@ pub fn load_series(args: &DataArgs) -> Result<Option<Series>, CliError> {
         [(file, text)] => crate::input::data::load(text, file, &reading, &derive),
         [centre, mark] => crate::input::data::load_pair(centre, mark, &reading, &derive),
         _ => unreachable!("one or two files"),
-    }
-    .map_err(|e| CliError::Invalid(e.to_string()))?;
+    }?;
     let file = texts[0].0.clone();
     let m = match &series {
         Series::Velocities(m) | Series::Track(m, _) => m,
@@ -187,7 +186,7 @@ pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<St
     bar.finish();
     let cancelled = |e: fit::FitError| match e {
         fit::FitError::Cancelled => CliError::Interrupted,
-        e => CliError::Invalid(e.to_string()),
+        e => CliError::Fit(e),
     };
     let fits = fits.map_err(cancelled)?;
     let position = position.transpose().map_err(cancelled)?;

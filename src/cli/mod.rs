@@ -35,11 +35,27 @@ pub use sweep::run_with_stop as sweep_with_stop;
 /// Most samples `--sample` may ask for.
 pub const MAX_SAMPLES: usize = 1_000_000;
 
-/// A failure the user can act on: printed as one `error:` line, exit status 2.
+/// A failure the user can act on: printed as one `error:` line, exit status 2. The
+/// errors of the layers below are kept whole; their one line is made where it is
+/// printed (`entry`).
 #[derive(Debug, thiserror::Error)]
 pub enum CliError {
     #[error("{0}")]
     Invalid(String),
+    #[error(transparent)]
+    Scene(#[from] crate::input::params::SceneError),
+    #[error(transparent)]
+    Preset(#[from] crate::input::preset::PresetError),
+    #[error(transparent)]
+    File(#[from] crate::input::FileError),
+    #[error(transparent)]
+    Data(#[from] crate::input::data::DataError),
+    #[error(transparent)]
+    Output(output::OutputError),
+    #[error(transparent)]
+    Fit(crate::study::fit::FitError),
+    #[error(transparent)]
+    Usage(#[from] Usage),
     #[error("{0}")]
     Io(#[from] std::io::Error),
     #[error("interrupted: nothing was written")]
@@ -50,9 +66,41 @@ impl From<output::OutputError> for CliError {
     fn from(e: output::OutputError) -> CliError {
         match e {
             output::OutputError::Interrupted => CliError::Interrupted,
-            other => CliError::Invalid(other.to_string()),
+            other => CliError::Output(other),
         }
     }
+}
+
+/// An option given where it does nothing: refused, never ignored silently. Flags are
+/// named as clap defines them ([`flag`]).
+#[derive(Debug, thiserror::Error)]
+pub enum Usage {
+    #[error("{flag} is not used by {by}, allowed only with {allowed}")]
+    Unused {
+        flag: String,
+        by: &'static str,
+        allowed: &'static str,
+    },
+    #[error("{flag} describes a --data file and none is given, allowed only with --data FILE")]
+    WithoutData { flag: String },
+    #[error("{flag} is not used by the {method} method, allowed only with {allowed}")]
+    NotForMethod {
+        flag: String,
+        method: &'static str,
+        allowed: &'static str,
+    },
+}
+
+/// `--NAME` of the option whose clap id is `id` (the field's name), as clap defines it.
+pub(crate) fn flag(id: &str) -> String {
+    use clap::CommandFactory;
+    let cmd = Cli::command();
+    let long = cmd
+        .get_arguments()
+        .chain(cmd.get_subcommands().flat_map(|c| c.get_arguments()))
+        .find(|a| a.get_id() == id)
+        .and_then(|a| a.get_long());
+    format!("--{}", long.expect("an option of the command line"))
 }
 
 /// What a command line asks for once it is valid.
@@ -99,47 +147,35 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
     };
     let d = &cli.data;
     let data_given = [
-        ("--data", !d.data.is_empty()),
-        ("--time-unit", d.time_unit.is_some()),
-        ("--speed-unit", d.speed_unit.is_some()),
-        ("--impact-at", d.impact_at.is_some()),
-        ("--track", !d.track.is_empty()),
-        ("--length-unit", d.length_unit.is_some()),
-        ("--window", d.window.is_some()),
+        ("data", !d.data.is_empty()),
+        ("time_unit", d.time_unit.is_some()),
+        ("speed_unit", d.speed_unit.is_some()),
+        ("impact_at", d.impact_at.is_some()),
+        ("track", !d.track.is_empty()),
+        ("length_unit", d.length_unit.is_some()),
+        ("window", d.window.is_some()),
     ];
     let scene_given = cli
         .scene
         .preset
         .as_ref()
-        .map(|_| "--preset")
-        .or_else(|| cli.scene.values.given().next().map(|(k, _)| k.param().flag));
-    let unused = if let (false, Some(flag)) = (scene, scene_given) {
-        Some((
-            flag.trim_start_matches('-').to_string(),
-            "commands that take a scene",
-        ))
-    } else if let (false, Some((flag, _))) = (data, data_given.iter().find(|(_, g)| *g)) {
-        Some((
-            flag.trim_start_matches('-').to_string(),
-            "fit, render and the app",
-        ))
-    } else if let (true, Some((flag, _))) = (d.data.is_empty(), data_given.iter().find(|(_, g)| *g))
-    {
-        // Only --data gives these a file to read.
-        return Err(CliError::Invalid(format!(
-            "{flag} describes a --data file and none is given, allowed only with --data FILE"
-        )));
-    } else if !ascii && cli.ascii {
-        Some(("ascii".to_string(), "render and the app"))
-    } else {
-        None
+        .map(|_| "preset")
+        .or_else(|| cli.scene.values.given().next().map(|(k, _)| k.param().name));
+    let data_flag = data_given.iter().find(|(_, g)| *g).map(|(id, _)| *id);
+    let unused = |id: &str, allowed| Usage::Unused {
+        flag: flag(id),
+        by: name,
+        allowed,
     };
-    match unused {
-        None => Ok(()),
-        Some((flag, allowed)) => Err(CliError::Invalid(format!(
-            "--{flag} is not used by {name}, allowed only with {allowed}"
-        ))),
-    }
+    let error = match (scene_given, data_flag) {
+        (Some(id), _) if !scene => unused(id, "commands that take a scene"),
+        (_, Some(id)) if !data => unused(id, "fit, render and the app"),
+        // Only --data gives these a file to read.
+        (_, Some(id)) if d.data.is_empty() => Usage::WithoutData { flag: flag(id) },
+        _ if !ascii && cli.ascii => unused("ascii", "render and the app"),
+        _ => return Ok(()),
+    };
+    Err(error.into())
 }
 
 /// The lab on the scene the options describe, with `--data` replacing the preset's
@@ -156,8 +192,7 @@ pub fn lab(scene_args: &SceneArgs, data: &DataArgs) -> Result<Lab, CliError> {
         lab.set_span_end(SpanEnd::Fixed {
             t_end,
             from_preset: false,
-        })
-        .map_err(|e| CliError::Invalid(e.to_string()))?;
+        })?;
     }
     Ok(lab)
 }
@@ -218,33 +253,33 @@ fn method_options(args: &SimulateArgs) -> Result<(), CliError> {
     let m = args.method;
     let uses = [
         (
-            "--dt",
+            "dt",
             args.dt.is_some(),
             m != Method::Exact,
             "a time-stepping method (the first step of rk45)",
         ),
         (
-            "--tol",
+            "tol",
             args.tol.is_some(),
             m == Method::Rk45,
             "--method rk45",
         ),
         (
-            "--epsilon",
+            "epsilon",
             args.epsilon.is_some(),
             m == Method::Rk4,
             "--method rk4",
         ),
     ];
-    for (flag, given, used, allowed) in uses {
-        if given && !used {
-            return Err(CliError::Invalid(format!(
-                "{flag} is not used by the {} method, allowed only with {allowed}",
-                m.name()
-            )));
+    match uses.into_iter().find(|(_, given, used, _)| *given && !used) {
+        Some((id, _, _, allowed)) => Err(Usage::NotForMethod {
+            flag: flag(id),
+            method: m.name(),
+            allowed,
         }
+        .into()),
+        None => Ok(()),
     }
-    Ok(())
 }
 
 pub fn simulate(scene_args: &SceneArgs, args: &SimulateArgs) -> Result<String, CliError> {

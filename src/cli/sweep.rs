@@ -152,10 +152,7 @@ pub fn run_with_stop(
                 bytes: Vec::new(),
                 limit: STDOUT_LIMIT,
             };
-            emit(&map, args.format, &mut out, &|e| {
-                CliError::Invalid(e.to_string())
-            })
-            .and_then(|()| {
+            emit(&map, args.format, &mut out, &CliError::Io).and_then(|()| {
                 // Ctrl-C after the work but before the text is handed over.
                 if stop.load(Ordering::Relaxed) {
                     return Err(CliError::Interrupted);
@@ -252,11 +249,7 @@ fn emit(
         SweepFormat::Svg => {
             let points =
                 sweep::run(map.base, map.x, map.y, map.stop, map.tick).map_err(from_sweep)?;
-            let scene = map
-                .base
-                .resolve()
-                .map_err(|e| CliError::Invalid(e.to_string()))?
-                .0;
+            let scene = map.base.resolve()?.0;
             let svg = crate::study::figures::regime_map(&points, map.x, map.y, &scene, map.preset)
                 .map_err(|e| CliError::Invalid(format!("cannot draw the map: {e}")))?;
             out.write_all(svg.as_bytes()).map_err(io_error)
