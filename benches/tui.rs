@@ -71,6 +71,8 @@ fn tui(c: &mut Criterion) {
             "key to next frame, finest euler overlay (b 4.9 <-> 5.0 cm)",
             "o ] ] ] ] ] ]",
         ),
+        // The Forces view draws the cross-section and reads the cursor's instant.
+        ("key to next frame, Forces view (b 4.9 <-> 5.0 cm)", "v"),
     ] {
         let mut a = app("paper-b4.9");
         key_to_frame(&mut a, setup, area, &theme);

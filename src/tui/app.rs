@@ -180,7 +180,11 @@ impl App {
         if !self.playing {
             return;
         }
+        let before = self.t;
         self.t += wall * self.speed_factor();
+        if self.pause_at_outcome(before) {
+            return;
+        }
         if self.t >= self.lab.solution.t_end {
             self.t = self.lab.solution.t_end;
             self.playing = false;

@@ -93,10 +93,18 @@ fn the_states_are_named_where_the_event_keys_land() {
             .unwrap_or_default();
         assert!(left.contains(state), "{keys}: {left}\n{s}");
     }
-    // paper-b4.9: pure slipping at t_t (figure 6c).
-    let mut a = app("paper-b4.9");
-    press(&mut a, "v > >");
-    assert!(text(&a, (80, 24), false).contains("pure slipping"));
+    // paper-b4.4 and -b4.9: pure slipping at t_t, rolling back at t' (figure 6c).
+    for preset in ["paper-b4.4", "paper-b4.9"] {
+        let mut a = app(preset);
+        press(&mut a, "v > >");
+        assert!(
+            text(&a, (80, 24), false).contains("left  pure slipping"),
+            "{preset}"
+        );
+        press(&mut a, ">");
+        let s = text(&a, (80, 24), false);
+        assert!(s.contains("left  pure rolling"), "{preset}: {s}");
+    }
 }
 
 #[test]
@@ -174,6 +182,16 @@ fn predict_asks_plays_and_explains() {
     assert!(s.contains("observed: RECOLLIDE"), "{s}");
     assert!(s.contains("not quite"), "{s}");
     assert!(s.contains("spin rolls them back"), "{s}");
+    // Playing stops where the outcome shows, then plays on.
+    press(&mut a, "y 2");
+    let reveal = a.prediction.as_ref().unwrap().reveal_at;
+    while a.playing {
+        a.tick(0.05);
+    }
+    assert_eq!(a.t, reveal);
+    press(&mut a, "space");
+    a.tick(0.05);
+    assert!(a.playing && a.t > reveal);
     // A right answer says so; Esc cancels the question.
     press(&mut a, "y 3");
     a.t = a.lab.solution.t_end;
@@ -205,6 +223,11 @@ fn hiding_b_leaves_the_picture_and_hides_what_gives_b_away() {
         // What does not depend on b stays.
         assert!(s.contains("0.00766 N m"), "{s}");
     }
+    // Nor does a pinned run's line in the scene panel.
+    press(&mut a, "P right");
+    let s = text(&a, (120, 40), false);
+    assert!(s.contains("b changed") && !s.contains("4.95"), "{s}");
+    press(&mut a, "P left");
     // Changing b while hidden does not tell it in the status line.
     press(&mut a, "right");
     assert!(!text(&a, (120, 40), false).contains("4.95"));

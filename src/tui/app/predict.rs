@@ -37,6 +37,22 @@ impl App {
         self.mode = Mode::Predict;
     }
 
+    /// Playback that has just passed the moment a prediction's outcome shows stops
+    /// there, so the class sees it beside the prediction; true if it stopped.
+    pub(super) fn pause_at_outcome(&mut self, before: f64) -> bool {
+        let Some(p) = &self.prediction else {
+            return false;
+        };
+        let crossed = before < p.reveal_at && self.t >= p.reveal_at;
+        if !crossed || p.scene != self.lab.scene {
+            return false;
+        }
+        self.t = p.reveal_at;
+        self.playing = false;
+        self.status = Status::Info("the outcome beside the prediction (space plays on)".into());
+        true
+    }
+
     /// An answer (1, 2, 3) is the prediction: play from the start. Esc cancels.
     pub(super) fn apply_predict(&mut self, action: Action) {
         match action {
