@@ -18,7 +18,10 @@ use crate::physics::story::Verdict;
 use crate::study::Progress;
 use crate::study::measured::series::Measured;
 
-pub use line::{Line, LineFit, PAPER_TABLE, line, line_fit, paper_row, sliding_window};
+pub use line::{
+    Line, LineFit, PAPER_TABLE, PaperDisagreement, line, line_fit, paper_disagreements, paper_row,
+    sliding_window,
+};
 pub use regime::{observed_regime, rest_band};
 pub use uncertainty::NotIdentified;
 
