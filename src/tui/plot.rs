@@ -165,26 +165,11 @@ impl Plot {
         let Some(plot) = self.data_area(area, theme) else {
             return;
         };
-        let g = theme.glyphs;
-        let (x0, x1) = self.x_range;
-        let (y0, y1) = self.y_range;
-        let y_ticks = self.y_ticks_in(area);
-        let margin = plot.x - area.x - 1;
-        let (cols, rows) = (plot.width as usize, plot.height as usize);
-        // Fractions from halves, which cannot overflow for finite bounds (−1e308 …
-        // 1e308); a position is always a cell of the plot (NaN → 0).
-        let frac = |v: f64, a: f64, b: f64| (v / 2.0 - a / 2.0) / (b / 2.0 - a / 2.0);
-        let col_of = |x: f64| {
-            (frac(x, x0, x1) * (cols - 1) as f64)
-                .round()
-                .clamp(0.0, (cols - 1) as f64)
+        let cells = Cells {
+            plot,
+            x_range: self.x_range,
+            y_range: self.y_range,
         };
-        let row_of = |y: f64| {
-            (frac(y, y1, y0) * (rows - 1) as f64)
-                .round()
-                .clamp(0.0, (rows - 1) as f64)
-        };
-
         // Title and legend (the same layout data_area made room for).
         buf.set_stringn(
             area.x,
@@ -193,20 +178,44 @@ impl Plot {
             area.width as usize,
             theme.dim,
         );
-        let (legend, _) = self.legend(area, &g);
+        let (legend, _) = self.legend(area, &theme.glyphs);
         for (text, style, x, row) in legend {
             buf.set_string(x, area.y + row, &text, style);
         }
-
         // Row 0 (and more): y title and legend; last row: x ticks; left: ticks and axis.
-        // Axis and y ticks.
+        self.draw_y_axis(area, &cells, buf, theme);
+        self.draw_x_ticks(area, &cells, buf, theme);
+        // Event lines under everything else, thinned to one per two columns; labels
+        // at the top where they fit before the next line.
+        let kept = self.event_lines(&cells);
+        for &(c, v) in &kept {
+            for r in 0..plot.height {
+                buf.set_string(c, plot.y + r, theme.glyphs.vline, v.style);
+            }
+        }
+        let (x0, x1) = self.x_range;
+        if let Some(t) = self.cursor.filter(|t| *t >= x0 && *t <= x1) {
+            let c = plot.x + cells.col_of(t) as u16;
+            let mark = if theme.glyphs.ascii { ":" } else { "┊" };
+            for r in 0..plot.height {
+                buf.set_string(c, plot.y + r, mark, theme.cursor);
+            }
+        }
+        self.draw_series(&cells, buf, theme);
+        draw_event_labels(&kept, plot, buf);
+    }
+
+    /// The axis line and the y ticks with their labels, right-aligned in the margin.
+    fn draw_y_axis(&self, area: Rect, cells: &Cells, buf: &mut Buffer, theme: &Theme) {
+        let (g, plot) = (theme.glyphs, cells.plot);
+        let margin = plot.x - area.x - 1;
         let axis_x = area.x + margin;
         for r in 0..plot.height {
             buf.set_string(axis_x, plot.y + r, g.vline, theme.dim);
         }
-        for (v, label) in &y_ticks {
-            let r = row_of(*v);
-            if r >= 0.0 && (r as usize) < rows {
+        for (v, label) in &self.y_ticks_in(area) {
+            let r = cells.row_of(*v);
+            if r >= 0.0 && (r as usize) < cells.rows() {
                 let y = plot.y + r as u16;
                 let pad = usize::from(margin).saturating_sub(label.chars().count());
                 buf.set_stringn(
@@ -219,9 +228,15 @@ impl Plot {
                 buf.set_string(axis_x, y, if g.ascii { "+" } else { "┤" }, theme.dim);
             }
         }
-        // x ticks, skipping labels that would collide.
+    }
+
+    /// The x ticks' labels, skipping those that would collide, and the x title at the
+    /// right end if it fits.
+    fn draw_x_ticks(&self, area: Rect, cells: &Cells, buf: &mut Buffer, theme: &Theme) {
+        let plot = cells.plot;
+        let (x0, x1) = self.x_range;
         let x_ticks = self.x_ticks.clone().unwrap_or_else(|| {
-            let (_, t) = nice_ticks(x0, x1, (cols / 10).max(2));
+            let (_, t) = nice_ticks(x0, x1, (cells.cols() / 10).max(2));
             ticks_with_labels(&t)
         });
         let tick_row = plot.bottom();
@@ -231,7 +246,7 @@ impl Plot {
             // plot starts at its left edge (and is cut by the buffer).
             let w = label.chars().count() as i64;
             let left = i64::from(plot.x);
-            let c = (left + col_of(*v) as i64 - w / 2)
+            let c = (left + cells.col_of(*v) as i64 - w / 2)
                 .min(i64::from(plot.right()) - w)
                 .max(left);
             if c >= free_from && c + w <= i64::from(plot.right()) {
@@ -245,9 +260,12 @@ impl Plot {
             let ux = ux as u16;
             buf.set_string(ux, tick_row, &unit, theme.dim);
         }
+    }
 
-        // Event lines under everything else, thinned to one per two columns; labels
-        // at the top where they fit before the next line.
+    /// The event lines inside the x range at their columns, one per two columns (the
+    /// higher priority kept), left to right.
+    fn event_lines(&self, cells: &Cells) -> Vec<(u16, &VLine)> {
+        let (x0, x1) = self.x_range;
         let mut kept: Vec<(u16, &VLine)> = Vec::new();
         let mut sorted: Vec<&VLine> = self
             .vlines
@@ -256,7 +274,7 @@ impl Plot {
             .collect();
         sorted.sort_by(|a, b| a.x.total_cmp(&b.x));
         for v in sorted {
-            let c = plot.x + col_of(v.x) as u16;
+            let c = cells.plot.x + cells.col_of(v.x) as u16;
             match kept.last_mut() {
                 Some(last) if c < last.0 + 2 => {
                     if v.priority > last.1.priority {
@@ -266,20 +284,14 @@ impl Plot {
                 _ => kept.push((c, v)),
             }
         }
-        for &(c, v) in &kept {
-            for r in 0..plot.height {
-                buf.set_string(c, plot.y + r, g.vline, v.style);
-            }
-        }
-        if let Some(t) = self.cursor.filter(|t| *t >= x0 && *t <= x1) {
-            let c = plot.x + col_of(t) as u16;
-            for r in 0..plot.height {
-                buf.set_string(c, plot.y + r, if g.ascii { ":" } else { "┊" }, theme.cursor);
-            }
-        }
+        kept
+    }
 
-        // Line series on the sub-cell grid.
-        let mut grid = Canvas::new(cols, rows, g.ascii);
+    /// Line series on the sub-cell grid, then point markers on top.
+    fn draw_series(&self, cells: &Cells, buf: &mut Buffer, theme: &Theme) {
+        let plot = cells.plot;
+        let ((x0, x1), (y0, y1)) = (self.x_range, self.y_range);
+        let mut grid = Canvas::new(cells.cols(), cells.rows(), theme.glyphs.ascii);
         let (w, h) = grid.dots();
         let to_dot = |(x, y): (f64, f64)| {
             (
@@ -303,38 +315,77 @@ impl Plot {
             }
         }
         grid.write(plot.x, plot.y, buf);
-        // Point markers on top.
         for s in self.series.iter().filter(|s| s.draw == Draw::Points) {
             for &(x, y) in &s.points {
                 if !(x.is_finite() && y.is_finite()) || x < x0 || x > x1 || y < y0 || y > y1 {
                     continue;
                 }
-                let (c, r) = (col_of(x) as u16, row_of(y) as u16);
+                let (c, r) = (cells.col_of(x) as u16, cells.row_of(y) as u16);
                 buf.set_string(plot.x + c, plot.y + r, s.glyph, s.style);
             }
         }
-        // Labels right of their line if they fit before the next one, else left of it
-        // if they fit after the previous line and label.
-        // In i64: a long label must not overflow u16 arithmetic.
-        let mut taken_until = i64::from(plot.x);
-        for (k, &(c, v)) in kept.iter().enumerate() {
-            let Some(label) = &v.label else { continue };
-            let c = i64::from(c);
-            let next = kept.get(k + 1).map_or(plot.right(), |n| n.0);
-            let next = i64::from(next);
-            let prev = if k > 0 {
-                i64::from(kept[k - 1].0) + 1
-            } else {
-                i64::from(plot.x)
-            };
-            let w = label.chars().count() as i64;
-            if c + 1 >= taken_until && c + 1 + w < next {
-                buf.set_string((c + 1) as u16, plot.y, label, v.style);
-                taken_until = c + 2 + w;
-            } else if c - w > prev.max(taken_until) {
-                buf.set_string((c - w) as u16, plot.y, label, v.style);
-                taken_until = c + 1;
-            }
+    }
+}
+
+/// The plot's data area and the value ranges it shows: where a value goes.
+struct Cells {
+    plot: Rect,
+    x_range: (f64, f64),
+    y_range: (f64, f64),
+}
+
+impl Cells {
+    fn cols(&self) -> usize {
+        self.plot.width as usize
+    }
+
+    fn rows(&self) -> usize {
+        self.plot.height as usize
+    }
+
+    /// The column of `x` (whole, from the data area's left), always one of the plot.
+    fn col_of(&self, x: f64) -> f64 {
+        let (x0, x1) = self.x_range;
+        let last = (self.cols() - 1) as f64;
+        (frac(x, x0, x1) * last).round().clamp(0.0, last)
+    }
+
+    /// The row of `y` (whole, from the data area's top), always one of the plot.
+    fn row_of(&self, y: f64) -> f64 {
+        let (y0, y1) = self.y_range;
+        let last = (self.rows() - 1) as f64;
+        (frac(y, y1, y0) * last).round().clamp(0.0, last)
+    }
+}
+
+/// Where `v` lies from `a` to `b`, as a fraction. From halves, which cannot overflow
+/// for finite bounds (−1e308 … 1e308); NaN for NaN (a cell's `clamp` makes it 0).
+fn frac(v: f64, a: f64, b: f64) -> f64 {
+    (v / 2.0 - a / 2.0) / (b / 2.0 - a / 2.0)
+}
+
+/// The event lines' labels on the top row: right of their line if they fit before
+/// the next one, else left of it if they fit after the previous line and label.
+fn draw_event_labels(kept: &[(u16, &VLine)], plot: Rect, buf: &mut Buffer) {
+    // In i64: a long label must not overflow u16 arithmetic.
+    let mut taken_until = i64::from(plot.x);
+    for (k, &(c, v)) in kept.iter().enumerate() {
+        let Some(label) = &v.label else { continue };
+        let c = i64::from(c);
+        let next = kept.get(k + 1).map_or(plot.right(), |n| n.0);
+        let next = i64::from(next);
+        let prev = if k > 0 {
+            i64::from(kept[k - 1].0) + 1
+        } else {
+            i64::from(plot.x)
+        };
+        let w = label.chars().count() as i64;
+        if c + 1 >= taken_until && c + 1 + w < next {
+            buf.set_string((c + 1) as u16, plot.y, label, v.style);
+            taken_until = c + 2 + w;
+        } else if c - w > prev.max(taken_until) {
+            buf.set_string((c - w) as u16, plot.y, label, v.style);
+            taken_until = c + 1;
         }
     }
 }

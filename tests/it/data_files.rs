@@ -3,8 +3,8 @@
 //! and the rim mark as two files), a Logger Pro / Graphical Analysis two-point export,
 //! a velocity file recorded with x reversed, and one without units in ms and cm/s.
 
+use crate::common;
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 use groovelab::input::preset::Preset;
 use groovelab::physics::engine;
@@ -30,10 +30,7 @@ fn scratch(test: &str) -> PathBuf {
 }
 
 fn groovelab(args: &[&str]) -> (bool, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_groovelab"))
-        .args(args)
-        .output()
-        .unwrap();
+    let out = common::groovelab(args);
     (
         out.status.success(),
         String::from_utf8(out.stdout).unwrap(),

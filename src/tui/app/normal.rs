@@ -44,62 +44,13 @@ impl App {
                 self.playing = false;
                 self.t = self.step_target(action == Action::StepForward);
             }
-            Action::NextEvent | Action::PrevEvent => {
-                self.playing = false;
-                match self.event_target(action == Action::NextEvent) {
-                    Some(t) => {
-                        self.t = t;
-                        let e = self
-                            .lab
-                            .solution
-                            .visible_events()
-                            .find(|e| e.t == t && e.kind.label().is_some());
-                        let name = e.and_then(|e| e.kind.label()).unwrap_or("event");
-                        self.status = Status::Info(format!("{name} at t = {t:.4} s"));
-                    }
-                    None => {
-                        self.status = Status::Info(
-                            if action == Action::NextEvent {
-                                "no later event in the span"
-                            } else {
-                                "no earlier event in the span"
-                            }
-                            .into(),
-                        )
-                    }
-                }
-            }
-            Action::CycleSpan => {
-                let next = self.lab.span_end.next();
-                match self.lab.set_span_end(next) {
-                    Ok(()) => {
-                        let sol = &self.lab.solution;
-                        self.t = self.t.clamp(sol.t_start, sol.t_end);
-                        self.status = Status::Info(format!(
-                            "span {}: {:.3} … {:.3} s",
-                            next.describe(),
-                            sol.t_start,
-                            sol.t_end
-                        ));
-                    }
-                    Err(e) => self.status = Status::Error(format!("span not changed: {e}")),
-                }
-            }
+            Action::NextEvent | Action::PrevEvent => self.jump_to_event(action),
+            Action::CycleSpan => self.cycle_span(),
             Action::ToggleEnergy => {
                 self.show_energy = !self.show_energy;
                 self.show_positions = false;
             }
-            Action::TogglePin => {
-                let pinned = self.lab.toggle_pin();
-                // Unpinning can shorten the span (it reached the pinned run's end).
-                let sol = &self.lab.solution;
-                self.t = self.t.clamp(sol.t_start, sol.t_end);
-                self.status = Status::Info(if pinned {
-                    "pinned this run: change a parameter to compare (P unpins)".into()
-                } else {
-                    "unpinned".into()
-                });
-            }
+            Action::TogglePin => self.toggle_pin(),
             Action::Start => self.t = t0,
             Action::End => {
                 self.playing = false;
@@ -109,52 +60,16 @@ impl App {
                 self.t = t0;
                 self.playing = true;
             }
-            Action::Presets => {
-                let i = self
-                    .library
-                    .presets
-                    .iter()
-                    .position(|p| p.name == self.lab.preset.name)
-                    .unwrap_or(0);
-                self.mode = Mode::Picker(i);
-            }
+            Action::Presets => self.open_picker(),
             Action::Save => {
                 self.status = Status::None;
                 self.mode = Mode::SaveName(format!("my-{}", self.lab.preset.name));
             }
             Action::Help => self.open_scrolling(Mode::Help),
-            Action::DataTable => match self.lab.measured() {
-                Some(_) => self.open_scrolling(Mode::Table),
-                None => {
-                    self.status = Status::Error(format!(
-                        "preset {} has no measured data to show (the paper-b* presets have)",
-                        self.lab.preset.name
-                    ))
-                }
-            },
-            Action::Export(kind) => {
-                self.status = Status::None;
-                let what = match kind {
-                    Export::Csv => "run",
-                    Export::Svg => "chart",
-                };
-                self.mode = Mode::Export(
-                    kind,
-                    format!("{}-{what}.{}", self.lab.preset.name, kind.extension()),
-                );
-            }
+            Action::DataTable => self.open_data_table(),
+            Action::Export(kind) => self.ask_export(kind),
             Action::ApplyFit => self.apply_fit(),
-            // In the Forces view b picks the ball of the front view and the chain.
-            Action::SwitchBall if self.view == View::Forces => {
-                self.forces_ball = 1 - self.forces_ball;
-            }
-            Action::SwitchBall => {
-                self.chart_ball = match self.chart_ball {
-                    ChartBall::Left => ChartBall::Right,
-                    ChartBall::Right => ChartBall::Both,
-                    ChartBall::Both => ChartBall::Left,
-                }
-            }
+            Action::SwitchBall => self.switch_ball(),
             Action::TogglePositions => {
                 self.show_positions = !self.show_positions;
                 self.show_energy = false;
@@ -162,72 +77,21 @@ impl App {
             Action::ToggleMethods => self.toggle_view(View::Methods),
             Action::ToggleForces => self.toggle_view(View::Forces),
             Action::Predict => self.ask_prediction(),
-            Action::HideWidth => {
-                self.hide_b = !self.hide_b;
-                self.status = Status::Info(
-                    if self.hide_b {
-                        "b's value hidden: predict from the picture (B shows it)"
-                    } else {
-                        "b's value shown"
-                    }
-                    .into(),
-                );
-            }
+            Action::HideWidth => self.toggle_hide_width(),
             Action::CycleWorkAxis => {
                 self.work_axis = self.work_axis.next();
                 self.status = Status::Info(format!("work axis: {}", self.work_axis.name()));
             }
             Action::ToggleMap => self.toggle_view(View::Map),
-            Action::ToggleFit => {
-                self.toggle_view(View::Fit);
-                if self.fit_view() && self.lab.measured().is_none() {
-                    self.status = Status::Error(format!(
-                        "preset {} has no measured data to fit (the paper-b* presets have)",
-                        self.lab.preset.name
-                    ));
-                }
-            }
+            Action::ToggleFit => self.toggle_fit_view(),
             Action::FitStartEarlier => self.move_window(false, false),
             Action::FitStartLater => self.move_window(false, true),
             Action::FitEndEarlier => self.move_window(true, false),
             Action::FitEndLater => self.move_window(true, true),
-            Action::CycleOverlay => {
-                let all = Method::TIME_STEPPING;
-                let next = match self.lab.overlay_choice() {
-                    None => Some(all[0]),
-                    Some((m, _)) => all
-                        .iter()
-                        .position(|x| *x == m)
-                        .and_then(|i| all.get(i + 1))
-                        .copied(),
-                };
-                self.lab.set_overlay(next.map(|m| (m, self.overlay_level)));
-                self.status = Status::Info(match next {
-                    Some(m) => format!("overlay {}", m.name()),
-                    None => "overlay off".into(),
-                });
-            }
-            Action::OverlayFiner | Action::OverlayCoarser => {
-                self.overlay_level = if action == Action::OverlayFiner {
-                    (self.overlay_level + 1).min(OVERLAY_LEVELS - 1)
-                } else {
-                    self.overlay_level.saturating_sub(1)
-                };
-                if let Some((m, _)) = self.lab.overlay_choice() {
-                    self.lab.set_overlay(Some((m, self.overlay_level)));
-                }
-            }
-            Action::ToggleMouse => {
-                self.mouse = !self.mouse;
-                self.status = Status::Info(format!(
-                    "mouse {}",
-                    if self.mouse {
-                        "on"
-                    } else {
-                        "off (terminal selection works)"
-                    }
-                ));
-            }
+            Action::CycleOverlay => self.cycle_overlay(),
+            Action::OverlayFiner => self.overlay_level_by(true),
+            Action::OverlayCoarser => self.overlay_level_by(false),
+            Action::ToggleMouse => self.toggle_mouse(),
             Action::Select(i) if i < n => self.selected = i,
             Action::ScrollParam(i, up) if i < n => {
                 self.selected = i;
@@ -235,6 +99,177 @@ impl App {
             }
             Action::Select(_) | Action::ScrollParam(..) | Action::Backspace | Action::Type(_) => {}
         }
+    }
+
+    /// The next or previous event (`action`), named in the status line.
+    fn jump_to_event(&mut self, action: Action) {
+        self.playing = false;
+        match self.event_target(action == Action::NextEvent) {
+            Some(t) => {
+                self.t = t;
+                let e = self
+                    .lab
+                    .solution
+                    .visible_events()
+                    .find(|e| e.t == t && e.kind.label().is_some());
+                let name = e.and_then(|e| e.kind.label()).unwrap_or("event");
+                self.status = Status::Info(format!("{name} at t = {t:.4} s"));
+            }
+            None => {
+                self.status = Status::Info(
+                    if action == Action::NextEvent {
+                        "no later event in the span"
+                    } else {
+                        "no earlier event in the span"
+                    }
+                    .into(),
+                )
+            }
+        }
+    }
+
+    /// The span key: auto, ×2, ×½.
+    fn cycle_span(&mut self) {
+        let next = self.lab.span_end.next();
+        match self.lab.set_span_end(next) {
+            Ok(()) => {
+                let sol = &self.lab.solution;
+                self.t = self.t.clamp(sol.t_start, sol.t_end);
+                self.status = Status::Info(format!(
+                    "span {}: {:.3} … {:.3} s",
+                    next.describe(),
+                    sol.t_start,
+                    sol.t_end
+                ));
+            }
+            Err(e) => self.status = Status::Error(format!("span not changed: {e}")),
+        }
+    }
+
+    fn toggle_pin(&mut self) {
+        let pinned = self.lab.toggle_pin();
+        // Unpinning can shorten the span (it reached the pinned run's end).
+        let sol = &self.lab.solution;
+        self.t = self.t.clamp(sol.t_start, sol.t_end);
+        self.status = Status::Info(if pinned {
+            "pinned this run: change a parameter to compare (P unpins)".into()
+        } else {
+            "unpinned".into()
+        });
+    }
+
+    /// The preset picker, on the preset the scene came from.
+    fn open_picker(&mut self) {
+        let i = self
+            .library
+            .presets
+            .iter()
+            .position(|p| p.name == self.lab.preset.name)
+            .unwrap_or(0);
+        self.mode = Mode::Picker(i);
+    }
+
+    fn open_data_table(&mut self) {
+        match self.lab.measured() {
+            Some(_) => self.open_scrolling(Mode::Table),
+            None => {
+                self.status = Status::Error(format!(
+                    "preset {} has no measured data to show (the paper-b* presets have)",
+                    self.lab.preset.name
+                ))
+            }
+        }
+    }
+
+    /// The export prompt, with a file name from the preset.
+    fn ask_export(&mut self, kind: Export) {
+        self.status = Status::None;
+        let what = match kind {
+            Export::Csv => "run",
+            Export::Svg => "chart",
+        };
+        self.mode = Mode::Export(
+            kind,
+            format!("{}-{what}.{}", self.lab.preset.name, kind.extension()),
+        );
+    }
+
+    /// The ball key: in the Forces view the ball of the front view and the chain,
+    /// else the velocity chart's ball (left, right, both).
+    fn switch_ball(&mut self) {
+        if self.view == View::Forces {
+            self.forces_ball = 1 - self.forces_ball;
+            return;
+        }
+        self.chart_ball = match self.chart_ball {
+            ChartBall::Left => ChartBall::Right,
+            ChartBall::Right => ChartBall::Both,
+            ChartBall::Both => ChartBall::Left,
+        }
+    }
+
+    fn toggle_hide_width(&mut self) {
+        self.hide_b = !self.hide_b;
+        self.status = Status::Info(
+            if self.hide_b {
+                "b's value hidden: predict from the picture (B shows it)"
+            } else {
+                "b's value shown"
+            }
+            .into(),
+        );
+    }
+
+    fn toggle_fit_view(&mut self) {
+        self.toggle_view(View::Fit);
+        if self.fit_view() && self.lab.measured().is_none() {
+            self.status = Status::Error(format!(
+                "preset {} has no measured data to fit (the paper-b* presets have)",
+                self.lab.preset.name
+            ));
+        }
+    }
+
+    /// The overlay key: off, then each time-stepping method in turn, then off.
+    fn cycle_overlay(&mut self) {
+        let all = Method::TIME_STEPPING;
+        let next = match self.lab.overlay_choice() {
+            None => Some(all[0]),
+            Some((m, _)) => all
+                .iter()
+                .position(|x| *x == m)
+                .and_then(|i| all.get(i + 1))
+                .copied(),
+        };
+        self.lab.set_overlay(next.map(|m| (m, self.overlay_level)));
+        self.status = Status::Info(match next {
+            Some(m) => format!("overlay {}", m.name()),
+            None => "overlay off".into(),
+        });
+    }
+
+    /// A finer or coarser overlay step, kept for the next overlay too.
+    fn overlay_level_by(&mut self, finer: bool) {
+        self.overlay_level = if finer {
+            (self.overlay_level + 1).min(OVERLAY_LEVELS - 1)
+        } else {
+            self.overlay_level.saturating_sub(1)
+        };
+        if let Some((m, _)) = self.lab.overlay_choice() {
+            self.lab.set_overlay(Some((m, self.overlay_level)));
+        }
+    }
+
+    fn toggle_mouse(&mut self) {
+        self.mouse = !self.mouse;
+        self.status = Status::Info(format!(
+            "mouse {}",
+            if self.mouse {
+                "on"
+            } else {
+                "off (terminal selection works)"
+            }
+        ));
     }
 
     /// Shows `view`, or the charts if it is shown already: every view key switches

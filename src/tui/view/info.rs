@@ -12,64 +12,87 @@ use crate::physics::story::{self, After, Verdict};
 use crate::tui::app::App;
 use crate::tui::theme::Theme;
 
+/// A label (dimmed) and a value (plain): the two kinds of text of the panel.
+fn label(s: &str, theme: &Theme) -> Span<'static> {
+    Span::styled(s.to_string(), theme.dim)
+}
+
+fn value(s: String, theme: &Theme) -> Span<'static> {
+    Span::styled(s, theme.text)
+}
+
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let g = theme.glyphs;
-    let d = &app.lab.derived;
-    let sol = &app.lab.solution;
     let blk = block(" Why ", theme);
     let inner = blk.inner(area);
     blk.render(area, buf);
-
-    let regime = story::headline(sol, d);
-    let why = d.why();
-    // The verdict's margin against the measured series' rest band, when there is one.
-    let band = app.lab.rest_band;
-    let verdict = Verdict::of(sol, d, band);
-    let story = story::after_first_impact(sol, d);
-    let b_star = d.b_star.map_or("none (e < 2/5)".to_string(), |b| {
-        format!("{:.2}", show(b, Dimension::Length))
-    });
-    let label = |s: &str| Span::styled(s.to_string(), theme.dim);
-    let value = |s: String| Span::styled(s, theme.text);
     // Priorities (9 most important): what a small screen keeps is the regime and why
     // (with the verdict's margin where the data cannot tell it from rest), the impacts
     // and the energy split; then the derived values (k, r, D, b*), what happens after
     // the first impact (t', v', or how the run ends when the closed forms do not hold),
     // before the rest of the story, the state at the cursor and the forces.
+    let mut lines = regime_lines(app, inner.width, theme);
+    lines.extend(after_impact_lines(app, theme));
+    lines.extend(force_lines(app, theme));
+    lines.extend(impact_and_data_lines(app, theme));
+    lines.extend(cursor_lines(app, theme));
+    lines.extend(energy_lines(app, inner.width, theme));
+    draw_lines(by_priority(lines, inner), inner, buf);
+}
+
+/// The regime and why, the verdict's margin where the data cannot tell the regime from
+/// rest, and the derived values k, r, D, b*.
+fn regime_lines(app: &App, width: u16, theme: &Theme) -> Ranked<'static> {
+    let g = theme.glyphs;
+    let (d, sol) = (&app.lab.derived, &app.lab.solution);
+    let regime = story::headline(sol, d);
+    // The verdict's margin against the measured series' rest band, when there is one.
+    let verdict = Verdict::of(sol, d, app.lab.rest_band);
+    let b_star = d.b_star.map_or("none (e < 2/5)".to_string(), |b| {
+        format!("{:.2}", show(b, Dimension::Length))
+    });
     let mut lines: Ranked = vec![(9, Line::from(Span::styled(regime, theme.title)))];
     // The margin where it changes the reading: a regime the data cannot tell from rest.
     if verdict.indistinguishable_from_rest() {
         // A narrow panel (80 columns) says it in two rows rather than three, so the
         // numbers after the first impact keep their place.
         let margin = match (verdict.v_roll, verdict.band) {
-            (Some(v), Some(band)) if inner.width < 40 => {
+            (Some(v), Some(band)) if width < 40 => {
                 format!("v' = {v:+.3} m/s: indistinguishable from rest (band ±{band:.3} m/s)")
             }
             _ => verdict.margin("±"),
         };
-        lines.push((8, Line::from(value(g.text(&margin)))));
+        lines.push((8, Line::from(value(g.text(&margin), theme))));
     }
     // The paper's criterion, where the run does otherwise (the reason is its reason).
     if let Some(note) = story::criterion_note(sol, d) {
         lines.push((8, Line::from(value(note))));
     }
     lines.extend([
-        (8, Line::from(value(why))),
+        (8, Line::from(value(d.why(), theme))),
         (
             6,
             Line::from(vec![
-                label("k "),
-                value(format!("{:.4}", d.k)),
-                label("  r "),
-                value(format!("{:.3}", show(d.r, Dimension::Length))),
-                label("  D "),
-                value(format!("{:.3}", d.d)),
-                label("  b* "),
-                value(b_star),
+                label("k ", theme),
+                value(format!("{:.4}", d.k), theme),
+                label("  r ", theme),
+                value(format!("{:.3}", show(d.r, Dimension::Length)), theme),
+                label("  D ", theme),
+                value(format!("{:.3}", d.d), theme),
+                label("  b* ", theme),
+                value(b_star, theme),
             ]),
         ),
     ]);
-    if let Some(After::Interrupted(i)) = &story {
+    lines
+}
+
+/// What the left ball does after the first impact: the closed forms (t', v', x', the
+/// crossing, the accelerations), or the run's own story where they do not hold.
+fn after_impact_lines(app: &App, theme: &Theme) -> Ranked<'static> {
+    let g = theme.glyphs;
+    let (d, sol) = (&app.lab.derived, &app.lab.solution);
+    let mut lines: Ranked = Vec::new();
+    if let Some(After::Interrupted(i)) = &story::after_first_impact(sol, d) {
         // The closed forms do not describe this run: say what it does instead.
         // How the run ends (the last clause) outranks how it gets there.
         let clauses = i.clauses(g.infinity);
@@ -78,19 +101,19 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             let head = if n == 0 { "left ball: " } else { "" };
             lines.push((
                 if n == last { 6 } else { 5 },
-                Line::from(vec![label(head), value(g.text(&clause))]),
+                Line::from(vec![label(head, theme), value(g.text(&clause), theme)]),
             ));
         }
     } else if let Some(rec) = d.left_after_impact {
         lines.push((
             6,
             Line::from(vec![
-                label("t' "),
-                value(format!("{:.4} s", rec.t_roll)),
-                label("  v' "),
-                value(format!("{:.4} m/s", rec.v_roll)),
-                label("  x' "),
-                value(format!("{:.2}", show(rec.x_roll, Dimension::Length))),
+                label("t' ", theme),
+                value(format!("{:.4} s", rec.t_roll), theme),
+                label("  v' ", theme),
+                value(format!("{:.4} m/s", rec.v_roll), theme),
+                label("  x' ", theme),
+                value(format!("{:.2}", show(rec.x_roll, Dimension::Length)), theme),
             ]),
         ));
         let crossing = match (rec.t_pure_gliding, rec.t_pure_slipping) {
@@ -98,86 +121,116 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             (_, Some(t)) => format!("pure slipping t_t {t:.4} s"),
             _ => "no pure gliding or slipping".to_string(),
         };
-        lines.push((3, Line::from(vec![label("left ball: "), value(crossing)])));
+        lines.push((
+            3,
+            Line::from(vec![label("left ball: ", theme), value(crossing, theme)]),
+        ));
+        let accel = |a: f64| value(format!("{} m/s{}", significant(a, 4), g.squared), theme);
         lines.push((
             2,
             Line::from(vec![
-                label("a_cm "),
-                value(format!("{} m/s{}", significant(rec.a_cm, 4), g.squared)),
-                label("  a_t "),
-                value(format!("{} m/s{}", significant(rec.a_t, 4), g.squared)),
+                label("a_cm ", theme),
+                accel(rec.a_cm),
+                label("  a_t ", theme),
+                accel(rec.a_t),
             ]),
         ));
     }
-    let f = d.forces;
-    lines.push((
-        1,
-        Line::from(vec![
-            label("|N_A| "),
-            value(format!("{:.3} N", f.normal_a.norm())),
-            label("  F_net "),
-            value(format!("{:.3} N", f.net.norm())),
-        ]),
-    ));
-    lines.push((
-        0,
-        Line::from(vec![
-            label(&format!("{}_net ", g.tau)),
-            value(format!("{:.5} N m", f.torque.norm())),
-            label(&format!(" = {}_k m g R", g.mu)),
-        ]),
-    ));
-    let zeno = sol
-        .accumulation
-        .map_or(String::new(), |t| format!("  T{} {t:.4} s", g.infinity));
-    lines.push((
+    lines
+}
+
+/// The contact force, the net force and the net torque.
+fn force_lines(app: &App, theme: &Theme) -> Ranked<'static> {
+    let g = theme.glyphs;
+    let f = app.lab.derived.forces;
+    vec![
+        (
+            1,
+            Line::from(vec![
+                label("|N_A| ", theme),
+                value(format!("{:.3} N", f.normal_a.norm()), theme),
+                label("  F_net ", theme),
+                value(format!("{:.3} N", f.net.norm()), theme),
+            ]),
+        ),
+        (
+            0,
+            Line::from(vec![
+                label(&format!("{}_net ", g.tau), theme),
+                value(format!("{:.5} N m", f.torque.norm()), theme),
+                label(&format!(" = {}_k m g R", g.mu), theme),
+            ]),
+        ),
+    ]
+}
+
+/// The impacts (and where they accumulate), and how far the model is from the
+/// measured points if there are any.
+fn impact_and_data_lines(app: &App, theme: &Theme) -> Ranked<'static> {
+    let sol = &app.lab.solution;
+    let zeno = sol.accumulation.map_or(String::new(), |t| {
+        format!("  T{} {t:.4} s", theme.glyphs.infinity)
+    });
+    let mut lines: Ranked = vec![(
         8,
         Line::from(vec![
-            label("impacts "),
-            value(format!("{}", sol.impacts)),
-            value(zeno),
+            label("impacts ", theme),
+            value(format!("{}", sol.impacts), theme),
+            value(zeno, theme),
         ]),
-    ));
-    // How far the model is from the measured points, if there are any.
+    )];
     match app.lab.data_rms {
         Some((rms_cm, Some(rms_t))) => lines.push((
             5,
             Line::from(vec![
-                label("data: RMS residual v_cm "),
-                value(format!("{rms_cm:.3}")),
-                label(", v_t "),
-                value(format!("{rms_t:.3} m/s")),
+                label("data: RMS residual v_cm ", theme),
+                value(format!("{rms_cm:.3}"), theme),
+                label(", v_t ", theme),
+                value(format!("{rms_t:.3} m/s"), theme),
             ]),
         )),
         // A track without a rim mark: no v_t to compare with, said in words.
         Some((rms_cm, None)) => lines.push((
             5,
             Line::from(vec![
-                label("data: RMS v_cm "),
-                value(format!("{rms_cm:.3} m/s")),
-                label(", v_t not measured"),
+                label("data: RMS v_cm ", theme),
+                value(format!("{rms_cm:.3} m/s"), theme),
+                label(", v_t not measured", theme),
             ]),
         )),
         None => {}
     }
-    // The state at the cursor, per ball.
+    lines
+}
+
+/// The state at the cursor, per ball.
+fn cursor_lines(app: &App, theme: &Theme) -> Ranked<'static> {
+    let sol = &app.lab.solution;
     let now = sol.at(app.t);
     let seg = sol.segment_at(app.t);
-    for (name, st, phase) in [
+    [
         ("left ", now.left, seg.phase[0]),
         ("right", now.right, seg.phase[1]),
-    ] {
-        lines.push((
+    ]
+    .into_iter()
+    .map(|(name, st, phase)| {
+        (
             5,
             Line::from(vec![
-                label(&format!("{name} ")),
-                value(format!("v {:+.3}  u {:+.3} m/s  ", st.v, st.u)),
-                label(phase.name()),
+                label(&format!("{name} "), theme),
+                value(format!("v {:+.3}  u {:+.3} m/s  ", st.v, st.u), theme),
+                label(phase.name(), theme),
             ]),
-        ));
-    }
+        )
+    })
+    .collect()
+}
+
+/// The energy at the cursor and where it is: two lines, or three short ones in a
+/// narrow panel rather than two that wrap mid-sum.
+fn energy_lines(app: &App, width: u16, theme: &Theme) -> Ranked<'static> {
     // Whole percentages by largest remainder, so the five shares add up to 100.
-    let e = sol.energy_at(app.t);
+    let e = app.lab.solution.energy_at(app.t);
     let shares = percentages(&[
         e.translational,
         e.rotational,
@@ -185,61 +238,50 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         e.lost.impacts,
         e.lost.rolling_resistance,
     ]);
-    let pct = |i: usize| value(format!("{}%", shares[i]));
-    if inner.width >= 40 {
-        lines.push((
-            7,
-            Line::from(vec![
-                label("energy "),
-                value(format!("{:.4} J", e.total())),
-                label(" = trans "),
+    let pct = |i: usize| value(format!("{}%", shares[i]), theme);
+    let total = || value(format!("{:.4} J", e.total()), theme);
+    let rows: Vec<Vec<Span>> = if width >= 40 {
+        vec![
+            vec![
+                label("energy ", theme),
+                total(),
+                label(" = trans ", theme),
                 pct(0),
-                label(" + rot "),
+                label(" + rot ", theme),
                 pct(1),
-            ]),
-        ));
-        lines.push((
-            7,
-            Line::from(vec![
-                label("  + friction "),
+            ],
+            vec![
+                label("  + friction ", theme),
                 pct(2),
-                label(" + impacts "),
+                label(" + impacts ", theme),
                 pct(3),
-                label(" + c_rr "),
+                label(" + c_rr ", theme),
                 pct(4),
-            ]),
-        ));
+            ],
+        ]
     } else {
-        // Narrow: three short lines rather than two that wrap mid-sum.
-        lines.push((
-            7,
-            Line::from(vec![
-                label("energy "),
-                value(format!("{:.4} J", e.total())),
-                label(" = trans "),
+        vec![
+            vec![
+                label("energy ", theme),
+                total(),
+                label(" = trans ", theme),
                 pct(0),
-            ]),
-        ));
-        lines.push((
-            7,
-            Line::from(vec![
-                label("  + rot "),
+            ],
+            vec![
+                label("  + rot ", theme),
                 pct(1),
-                label(" + friction "),
+                label(" + friction ", theme),
                 pct(2),
-            ]),
-        ));
-        lines.push((
-            7,
-            Line::from(vec![
-                label("  + impacts "),
+            ],
+            vec![
+                label("  + impacts ", theme),
                 pct(3),
-                label(" + c_rr "),
+                label(" + c_rr ", theme),
                 pct(4),
-            ]),
-        ));
-    }
-    draw_lines(by_priority(lines, inner), inner, buf);
+            ],
+        ]
+    };
+    rows.into_iter().map(|r| (7, Line::from(r))).collect()
 }
 
 /// Whole-number percentages of `parts` that sum to exactly 100 (largest remainder).
