@@ -65,7 +65,7 @@ fn regime_lines(app: &App, width: u16, theme: &Theme) -> Ranked<'static> {
     }
     // The paper's criterion, where the run does otherwise (the reason is its reason).
     if let Some(note) = story::criterion_note(sol, d) {
-        lines.push((8, Line::from(value(note))));
+        lines.push((8, Line::from(value(note, theme))));
     }
     lines.extend([
         (8, Line::from(value(d.why(), theme))),
