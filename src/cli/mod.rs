@@ -427,6 +427,9 @@ fn table(
             ""
         }
     );
+    for note in story::precision_notes(solution) {
+        let _ = writeln!(out, "note     {note}");
+    }
     let (e0, e1) = (summary.energy_start, summary.energy_end);
     let _ = writeln!(
         out,

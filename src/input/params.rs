@@ -11,6 +11,7 @@
 use crate::input::units::{Dimension, show};
 use crate::physics::closed_form::{release_height, release_speed};
 use crate::physics::scene::{Scene, Span};
+use crate::physics::solution::LATEST_END;
 
 // The settings layers live in `spec`; their names stay here, beside the table they read.
 pub use crate::input::spec::{SceneError, SceneSpec};
@@ -448,7 +449,7 @@ pub const PARAMS: [Param; 17] = [
         label: "t end",
         dim: Dimension::Time,
         // The lower end, t_start, depends on the span: checked in `resolve`.
-        range: range(-1000.0, 1e6, true, "t_start < t_end ≤ 1e6 s"),
+        range: range(-1000.0, LATEST_END, true, "t_start < t_end ≤ 1e6 s"),
         sets: &[Key::TEnd],
         steps: None,
         help: "End of the simulated span, ≤ 1e6 s [default: the preset's, or a little past the last event]",

@@ -64,7 +64,9 @@ pub fn accumulation_time(k: f64, e: f64, v0: f64, mu: f64, g: f64) -> Option<f64
     let vp = v_roll(k, e, v0);
     (vp > 0.0 && rho < 1.0).then(|| {
         let t1 = t_roll(k, e, v0, mu, g) + x_roll(k, e, v0, mu, g).abs() / vp;
-        t1 / (1.0 - rho)
+        // 1 − ρ = 5k²(1 + e)/(2 + 5k²), without the cancellation of 1 − ρ near 2R.
+        let k2 = k * k;
+        t1 * (2.0 + 5.0 * k2) / (5.0 * k2 * (1.0 + e))
     })
 }
 

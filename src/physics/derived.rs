@@ -405,7 +405,7 @@ impl Summary {
             impacts,
             accumulation_time: solution.accumulation.filter(|&t| t <= solution.t_end),
             last_event: solution.last_event_time(),
-            energy_start: solution.energy_at(solution.t_start),
+            energy_start: solution.energy_start(),
             energy_end: solution.energy_at(solution.t_end),
             truncated: solution.truncated,
         }

@@ -203,12 +203,17 @@ pub fn instant(sol: &Solution, ball: usize, t: f64) -> Instant {
             };
             (st, f, true)
         }
-        // Newton's law of rotation: 2 F r = −I α_z with I = 2/5 m R², α_z = du/dt / r.
-        Phase::Rolling => (
-            MotionState::of(s.v, s.u, eps),
-            -0.2 * mass * du / (k * k),
-            false,
-        ),
+        // Newton's law of rotation: 2 F r = −I α_z with I = 2/5 m R², α_z = du/dt / r,
+        // less the share of du/dt that rolling resistance's own couple gives (it takes
+        // no friction from the rails: physics.md §4, §9).
+        Phase::Rolling => {
+            let couple = seg.rolling_share[ball] * scene.groove().rolling_acceleration(s.v);
+            (
+                MotionState::of(s.v, s.u, eps),
+                -0.2 * mass * (du - couple) / (k * k),
+                false,
+            )
+        }
         Phase::Resting => (MotionState::Rest, 0.0, false),
     };
     Instant {
@@ -471,5 +476,20 @@ mod tests {
         // v0 = 0: both rest.
         let sol = solve(&scene(0.02, 0.5, 0.2, 1.0, 0.0), &Span::default());
         assert_eq!(instant(&sol, 1, 0.1).state, MotionState::Rest);
+    }
+
+    /// Rolling resistance slows a free rolling ball without the rails' friction
+    /// (physics.md §4): the view shows none, and its drag c_rr m g as `other`.
+    #[test]
+    fn a_free_rolling_ball_with_rolling_resistance_needs_no_rail_friction() {
+        let sc = Scene {
+            rolling_resistance: 0.02,
+            ..scene(0.0275, 0.5, 0.2, 1.0, 0.8)
+        };
+        let sol = solve(&sc, &Span::default());
+        let i = instant(&sol, 0, -0.1);
+        assert_eq!(i.state, MotionState::PureRolling);
+        assert!(i.friction.abs() <= 1e-15, "{}", i.friction);
+        assert_relative_eq!(i.other, -0.02 * 0.167 * 9.81, max_relative = 1e-12);
     }
 }

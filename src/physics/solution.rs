@@ -128,6 +128,9 @@ pub struct Segment {
     pub phase: [Phase; 2],
     /// Compressive force between touching balls, N (0 when apart).
     pub contact_force: f64,
+    /// Share of each ball's rolling resistance that acts, 0..=1: 1, except for a pushed
+    /// rolling ball at the friction limit (physics.md, "Rolling resistance").
+    pub rolling_share: [f64; 2],
     /// Spin angle of each ball at `t0`, rad (0 at `t_start`).
     pub angle0: [f64; 2],
     pub ledger0: Ledger,
@@ -151,6 +154,22 @@ pub struct Solution {
     pub accumulation: Option<f64>,
     /// True if the solver hit its event budget before the motion ended.
     pub truncated: bool,
+    /// How the tail of an impact series was summed, if one was.
+    pub series: Option<SeriesSum>,
+}
+
+/// The tail of an impact series summed in closed form (physics.md, "Repeated impacts").
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct SeriesSum {
+    /// The last impact resolved one by one, s; a bridge segment runs from here to T∞.
+    pub from: f64,
+    /// Geometric cycles resolved before the tail was summed.
+    pub cycles: usize,
+    /// The cycle ratio ρ: each cycle is the last one scaled by ρ.
+    pub ratio: f64,
+    /// True when the tail was summed because the cycle budget ran out, not because
+    /// it had become negligible: the bridge then spans a visible time.
+    pub by_budget: bool,
 }
 
 /// Both balls at one time.
@@ -239,6 +258,30 @@ impl Solution {
         })
     }
 
+    /// The energy at the start of the span, before anything that happens at that
+    /// instant: with `t_start = 0` the energy just before the first impact (both balls
+    /// rolling in at v0, nothing lost yet), not after it.
+    pub fn energy_start(&self) -> EnergySplit {
+        // A negative start has the rolling run-up, which ends at the impact.
+        if self.t_start < 0.0 {
+            return self.energy_at(self.t_start);
+        }
+        let groove = self.groove();
+        let masses = self.masses();
+        let balls = [self.scene.left.v0, -self.scene.right.v0];
+        let (mut translational, mut rotational) = (0.0, 0.0);
+        for (m, v) in masses.into_iter().zip(balls) {
+            let (tr, rot) = groove.energy(m, BallState { x: 0.0, v, u: v });
+            translational += tr;
+            rotational += rot;
+        }
+        EnergySplit {
+            translational,
+            rotational,
+            lost: Ledger::default(),
+        }
+    }
+
     /// Kinetic energy and what has been dissipated by `t`.
     pub fn energy_at(&self, t: f64) -> EnergySplit {
         let seg = self.segment_at(t);
@@ -253,7 +296,11 @@ impl Solution {
         }
         let lost = match seg.bridge {
             Some(end) => {
-                // What the bridge lost so far, in proportion to the kinetic energy gone.
+                // What the bridge has lost by `t`: the books at its end less the kinetic
+                // energy still to go, split like the bridge's losses. Its states are
+                // cycle averages, whose kinetic energy starts below the last impact's:
+                // the difference (the swinging the average leaves out) counts as lost
+                // from the bridge's start, so the books balance throughout.
                 let kinetic = |t: f64| -> f64 {
                     (0..2)
                         .map(|i| {
@@ -262,13 +309,14 @@ impl Solution {
                         })
                         .sum()
                 };
-                let (k0, k1) = (kinetic(seg.t0), kinetic(seg.t1));
-                let f = if k0 != k1 {
-                    (k0 - kinetic(t.min(seg.t1))) / (k0 - k1)
+                let to_go = kinetic(t.min(seg.t1)) - kinetic(seg.t1);
+                let bridged = end.total() - seg.ledger0.total();
+                let f = if bridged > 0.0 {
+                    (to_go / bridged).clamp(0.0, 1.0)
                 } else {
-                    1.0
+                    0.0
                 };
-                seg.ledger0.lerp(&end, f)
+                end.lerp(&seg.ledger0, f)
             }
             None => segment_losses(&groove, masses, seg, t - seg.t0),
         };
@@ -312,7 +360,8 @@ pub fn segment_losses(groove: &Groove, masses: [f64; 2], seg: &Segment, tau: f64
                 // internal to the pair), over the path the ball really rolls.
                 if groove.rolling_resistance > 0.0 {
                     let path = (st.v * tau + 0.5 * a * tau * tau).abs();
-                    ledger.rolling_resistance += groove.rolling_resistance_force(mass) * path;
+                    ledger.rolling_resistance +=
+                        seg.rolling_share[i] * groove.rolling_resistance_force(mass) * path;
                 }
             }
             Phase::Resting => {}
@@ -321,11 +370,16 @@ pub fn segment_losses(groove: &Groove, masses: [f64; 2], seg: &Segment, tau: f64
     ledger
 }
 
+/// The latest end a span may have, s (the `t_end` a user may give). A default end
+/// never goes past it, so every span the program picks could also be typed in.
+pub const LATEST_END: f64 = 1e6;
+
 /// The simulated span's end: the given `t_end`, or far enough past the last event
-/// to see what follows it.
+/// to see what follows it, but never past [`LATEST_END`] (a motion that slow, e.g.
+/// μ_k = 1e-9, goes on beyond the span; its events are still in the solution).
 pub fn end_time(span: &Span, last_event: f64) -> f64 {
     span.t_end.unwrap_or_else(|| {
         let shown = last_event - span.t_start;
-        last_event + (0.2 * shown).max(0.1)
+        (last_event + (0.2 * shown).max(0.1)).min(LATEST_END)
     })
 }

@@ -229,3 +229,29 @@ impl Verdict {
         observed == self.regime || (observed == Regime::Rest && self.indistinguishable_from_rest())
     }
 }
+
+/// Where the run's numbers are less exact than rounding, in words (empty when they are
+/// exact to rounding): a width so close to 2R that k itself carries the width's
+/// rounding, and an impact series whose tail was summed after the cycle budget.
+pub fn precision_notes(sol: &Solution) -> Vec<String> {
+    let mut out = Vec::new();
+    let sc = &sol.scene;
+    // k² = (1 − h)(1 + h) with h = b/2R: h carries half an ulp of rounding, so
+    // 1 − h, and with it k², is known to ~1.1e-16 / (1 − h) relative.
+    let gap = 1.0 - sc.width / (2.0 * sc.radius);
+    let k_error = 0.5 * f64::EPSILON / gap;
+    if k_error >= 1e-10 {
+        out.push(format!(
+            "b is within {gap:.1e}·2R of 2R: k = {:.3e} carries the width's rounding (~{k_error:.0e} relative), and so do t', T∞ and the forces",
+            sc.k()
+        ));
+    }
+    if let Some(series) = sol.series.filter(|s| s.by_budget) {
+        let amplified = 1.0 / (1.0 - series.ratio);
+        out.push(format!(
+            "impacts after t = {:.4} s are summed, not resolved ({} cycles of ratio ρ = {:.6}): up to T∞ the run shows their cycle average, not each bounce; the summed limit carries rounding × 1/(1 − ρ) ≈ {amplified:.1e}",
+            series.from, series.cycles, series.ratio
+        ));
+    }
+    out
+}

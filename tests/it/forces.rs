@@ -5,30 +5,19 @@
 
 use groovelab::cli::{DataArgs, RenderArgs, SceneArgs, render_with};
 use groovelab::input::params::SceneSpec;
-use groovelab::input::preset::Preset;
-use groovelab::lab::Lab;
 use groovelab::physics::derived::Regime;
 use groovelab::tui::app::{App, ChartBall, Library, Mode, View};
 use groovelab::tui::theme::{Glyphs, Theme};
-use groovelab::tui::{keys, replay, view};
+use groovelab::tui::{keys, view};
+
+use crate::common::{self, press, text};
 
 fn no_user_presets() -> Library {
-    let dir = std::env::temp_dir().join(format!("groovelab-forces-presets-{}", std::process::id()));
-    Library::at(Some(dir))
+    common::no_user_presets("forces")
 }
 
 fn app(preset: &str) -> App {
-    let p = Preset::load(preset).unwrap();
-    let (scene, span) = p.spec.resolve().unwrap();
-    App::new(Lab::new(p, scene, span), no_user_presets())
-}
-
-fn press(app: &mut App, script: &str) {
-    replay(app, &keys::parse_script(script).unwrap());
-}
-
-fn text(a: &App, (w, h): (u16, u16), ascii: bool) -> String {
-    view::to_text(a, w, h, &Theme::new(Glyphs::new(ascii), true))
+    common::app(preset, no_user_presets())
 }
 
 fn render(preset: &str, at: Option<f64>, size: (u16, u16), ascii: bool, keys: &str) -> String {
@@ -277,13 +266,20 @@ fn snapshots_of_the_forces_view() {
         ("b4.4-pinned-wider", "paper-b4.4", 0.1, "P right right v"),
         ("b4.9-predicted-hidden-b", "paper-b4.9", 0.35, "B y 3"),
     ];
-    for (w, h) in SIZES {
-        for ascii in [false, true] {
-            let mode = if ascii { "ascii" } else { "unicode" };
-            for (name, preset, at, keys) in cases {
+    for (name, preset, at, keys) in cases {
+        // One app per case, drawn at every size and glyph set.
+        let scene = SceneArgs {
+            preset: Some(preset.to_string()),
+            values: SceneSpec::default(),
+        };
+        let data = DataArgs::default();
+        let a = common::rendered(&scene, &data, Some(at), Some(keys), no_user_presets());
+        for (w, h) in SIZES {
+            for ascii in [false, true] {
+                let mode = if ascii { "ascii" } else { "unicode" };
                 insta::assert_snapshot!(
                     format!("forces-{name}-{w}x{h}-{mode}"),
-                    render(preset, Some(at), (w, h), ascii, keys)
+                    text(&a, (w, h), ascii)
                 );
             }
         }

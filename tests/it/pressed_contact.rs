@@ -4,6 +4,7 @@
 //! the energy ledger balances.
 
 use groovelab::physics::engine::{NEGLIGIBLE_SPEED, solve};
+use groovelab::physics::model::Phase;
 use groovelab::physics::scene::{Ball, Scene, Span};
 use groovelab::physics::solution::{Event, EventKind, Solution, Who};
 use proptest::prelude::*;
@@ -219,12 +220,56 @@ fn check_energy(sol: &Solution) -> Result<(), TestCaseError> {
     Ok(())
 }
 
+/// Coulomb: the rails' friction on a rolling, pressed ball never exceeds μ_k N. From
+/// its equation of motion `m dv/dt = d P + f + λ m ρ` (physics.md, "Rolling
+/// resistance"); a sliding ball has exactly μ_k N by construction.
+fn check_friction_bound(sol: &Solution) -> Result<(), TestCaseError> {
+    let sc = &sol.scene;
+    let groove = sc.groove();
+    for seg in &sol.segments {
+        for i in 0..2 {
+            if seg.phase[i] != Phase::Rolling || seg.contact_force == 0.0 {
+                continue;
+            }
+            let m = if i == 0 { sc.left.mass } else { sc.right.mass };
+            let dir = if i == 0 { -1.0 } else { 1.0 };
+            let rho = groove.rolling_acceleration(seg.start[i].v);
+            let share = seg.rolling_share[i];
+            prop_assert!((0.0..=1.0).contains(&share), "share {share}: {seg:?}");
+            let f = m * (seg.accel[i].0 - share * rho) - dir * seg.contact_force;
+            let limit = groove.friction_limit(m);
+            prop_assert!(
+                f.abs() <= limit * (1.0 + 1e-9) + 1e-12 * seg.contact_force,
+                "rail friction {f} N above μN = {limit} N: {seg:?}"
+            );
+        }
+    }
+    Ok(())
+}
+
 fn check_all(scene: &Scene) -> Result<(), TestCaseError> {
     let sol = solve(scene, &span());
     prop_assert!(!sol.truncated, "event budget hit");
     check_story(&sol)?;
     check_rests(&sol)?;
+    check_friction_bound(&sol)?;
     check_energy(&sol)
+}
+
+/// Pushing scenes where rolling resistance is strong against friction, e = 0: where a
+/// pushed rolling ball can reach the friction limit (c_rr up to ~5 μ_k/k).
+fn corner_scenes() -> impl Strategy<Value = Scene> {
+    (
+        0.0..=0.054f64,
+        log_uniform(0.003, 0.1),
+        (log_uniform(0.02, 1.0), log_uniform(0.02, 1.0)),
+        (0.0..=2.0f64, 0.0..=2.0f64),
+        0.0..=5.0f64,
+    )
+        .prop_map(|(width, mu, masses, speeds, c)| {
+            let k = (1.0 - (width / (2.0 * RADIUS)).powi(2)).sqrt();
+            scene(width, mu, 0.0, masses, speeds, c * mu / k)
+        })
 }
 
 proptest! {
@@ -234,6 +279,11 @@ proptest! {
 
     #[test]
     fn pushing_scenes_tell_a_true_story(scene in pushing_scenes()) {
+        check_all(&scene)?;
+    }
+
+    #[test]
+    fn pushed_rolling_balls_never_get_more_friction_than_mu_n(scene in corner_scenes()) {
         check_all(&scene)?;
     }
 }

@@ -18,7 +18,9 @@ fn scenes() -> impl Strategy<Value = Scene> {
         Just(0.0),
         0.0..0.9999f64,
         Just(1.0 - 1e-6),
-        Just(1.0 - 1e-9)
+        Just(1.0 - 1e-9),
+        // b = 2R − 1e-9 R: ~1e8 impact cycles before the spin is gone.
+        Just(1.0 - 5e-10)
     ];
     let mu = prop_oneof![Just(0.0), 0.0..1.5f64, log_uniform(1e-4, 1e-1)];
     let e = prop_oneof![Just(0.0), Just(1.0), 0.0..=1.0f64];
@@ -140,8 +142,63 @@ fn check_invariants(scene: &Scene) -> Result<(), TestCaseError> {
     Ok(())
 }
 
+/// A symmetric pair stays mirrored about the impact point, so whenever it ends
+/// touching it touches there: at ∓R, however many impacts were summed to get there.
+fn check_symmetric_end(scene: &Scene) -> Result<(), TestCaseError> {
+    let sol = solve(scene, &common::span());
+    let end = sol.at(sol.last_event_time() + 1.0);
+    let r = scene.radius;
+    let gap = end.right.x - end.left.x - 2.0 * r;
+    let scale = r + scene.speed_scale() * sol.last_event_time().max(0.0);
+    prop_assert!(end.left.x.is_finite() && end.right.x.is_finite());
+    prop_assert!(
+        (end.left.x + end.right.x).abs() <= 1e-9 * scale,
+        "not mirrored: {end:?}"
+    );
+    if gap <= 1e-9 * scale {
+        prop_assert!(
+            (end.left.x + r).abs() <= 1e-9 * scale,
+            "touching away from ∓R: {end:?}"
+        );
+    }
+    Ok(())
+}
+
+/// Symmetric scenes with the groove from b* to 2R − 1e-9 R, where impacts repeat.
+fn nearly_wedged_symmetric_scenes() -> impl Strategy<Value = Scene> {
+    let half = prop_oneof![
+        0.9..0.9999f64,
+        Just(1.0 - 1e-6),
+        Just(1.0 - 1e-9),
+        Just(1.0 - 5e-10)
+    ];
+    (
+        half,
+        log_uniform(1e-3, 1.0),
+        prop_oneof![Just(0.0), Just(1.0), 0.0..=1.0f64],
+        prop_oneof![3 => Just(0.0), 1 => 0.0..0.05f64],
+        log_uniform(1e-3, 10.0),
+    )
+        .prop_map(|(half, mu, e, c_rr, v0)| Scene {
+            radius: 0.0275,
+            width: 0.055 * half,
+            mu,
+            g: 9.81,
+            restitution: e,
+            rolling_resistance: c_rr,
+            left: Ball { mass: 0.167, v0 },
+            right: Ball { mass: 0.167, v0 },
+        })
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(std::env::var("PROPTEST_CASES").ok().and_then(|c| c.parse().ok()).unwrap_or(600)))]
+
+    #[test]
+    fn nearly_wedged_symmetric_pairs_end_at_the_impact_point(scene in nearly_wedged_symmetric_scenes()) {
+        check_invariants(&scene)?;
+        check_symmetric_end(&scene)?;
+    }
 
     #[test]
     fn engine_invariants_hold_everywhere(scene in scenes()) {

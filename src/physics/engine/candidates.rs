@@ -51,7 +51,7 @@ impl Engine {
             Candidate::Roll(i) => {
                 // While sliding freely `u + 5/2 k² v` is conserved: the rolling speed
                 // comes from it, not from the rounded end of the polynomial.
-                let v = if self.push > 0.0 {
+                let v = if self.together {
                     self.state[i].v
                 } else {
                     self.groove.rolling_speed(before[i])
@@ -125,7 +125,7 @@ impl Engine {
                 Phase::Resting => {}
             }
         }
-        if self.push == 0.0 {
+        if !self.together {
             let w = self.state[1].v - self.state[0].v;
             let c = self.accel[1].0 - self.accel[0].0;
             if let Some(t) = closing_time(self.gap, w, c) {

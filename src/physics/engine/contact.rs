@@ -5,6 +5,13 @@
 use super::Engine;
 use crate::physics::model::Phase;
 
+/// A push below this fraction of the forces on the pair is no push: it is what
+/// rounding leaves of two equal accelerations (~1e-16), far below anything physical.
+const ZERO_PUSH: f64 = 1e-9;
+
+/// `(dv/dt, du/dt)` of both balls.
+type Accelerations = [(f64, f64); 2];
+
 impl Engine {
     /// Free accelerations `(dv/dt, du/dt)` of ball `i` in `phase`, and the mass it
     /// shows to a push through its centre.
@@ -21,9 +28,9 @@ impl Engine {
         }
     }
 
-    /// Accelerations of both balls in `phase`, and the push between them (0 when
-    /// nothing presses them together or they do not touch).
-    fn motion(&self, phase: [Phase; 2], touching: bool) -> ([(f64, f64); 2], f64) {
+    /// Accelerations of both balls in `phase`, the push between them (0 when nothing
+    /// presses them together or they do not touch), and whether they move as one.
+    fn motion(&self, phase: [Phase; 2], touching: bool) -> ([(f64, f64); 2], f64, bool) {
         let motion = [self.free_motion(0, phase[0]), self.free_motion(1, phase[1])];
         let free = motion.map(|(accel, _)| accel);
         let pressed = if touching {
@@ -32,13 +39,13 @@ impl Engine {
             None
         };
         match pressed {
-            None => (free, 0.0),
+            None => (free, 0.0, false),
             Some((shared, push)) => {
                 let accel = std::array::from_fn(|i| match phase[i] {
                     Phase::Sliding { .. } => (shared, free[i].1),
                     Phase::Rolling | Phase::Resting => (shared, shared),
                 });
-                (accel, push)
+                (accel, push, true)
             }
         }
     }
@@ -50,11 +57,13 @@ impl Engine {
     pub(super) fn settle(&mut self) {
         let touching = self.gap == 0.0 && self.state[0].v == self.state[1].v;
         let mut phase = self.phase;
-        let (mut accel, mut push) = self.motion(phase, touching);
+        let (mut accel, mut push, mut together) = self.motion(phase, touching);
+        let mut share = [1.0; 2];
         // A rolling ball whose static friction cannot hold the push starts sliding, in
         // the direction that stays consistent (its slip must grow in the sign assumed).
-        // If neither direction is consistent the ball sticks (a Painlevé-type corner
-        // that strong rolling resistance with weak friction can reach).
+        // If neither direction is consistent (a Painlevé-type corner: rolling
+        // resistance acts only at s = 0), it rolls on with the rail friction at its
+        // limit and only the share of rolling resistance that keeps it rolling.
         for i in 0..2 {
             let rolling = !matches!(phase[i], Phase::Sliding { .. });
             if !rolling
@@ -65,15 +74,21 @@ impl Engine {
                 continue;
             }
             let outward: i8 = if i == 0 { -1 } else { 1 };
+            let mut slides = false;
             for sign in [outward, -outward] {
                 let mut trial = phase;
                 trial[i] = Phase::Sliding { sign };
-                let (a, p) = self.motion(trial, touching);
+                let (a, p, joined) = self.motion(trial, touching);
                 let slip_rate = a[i].0 - a[i].1;
                 if f64::from(sign) * slip_rate > 0.0 {
-                    (phase, accel, push) = (trial, a, p);
+                    (phase, accel, push, together) = (trial, a, p, joined);
+                    slides = true;
                     break;
                 }
+            }
+            if !slides && let Some((a, p, lambda)) = self.saturated_rolling(i, phase) {
+                (accel, push) = (a, p);
+                share[i] = lambda;
             }
         }
         for i in 0..2 {
@@ -88,6 +103,39 @@ impl Engine {
         self.phase = phase;
         self.accel = accel;
         self.push = push;
+        self.together = together;
+        self.rolling_share = share;
+    }
+
+    /// Ball `i` rolling under a push its rail friction cannot hold, where sliding
+    /// either way is inconsistent too (physics.md, "Rolling resistance"): it keeps
+    /// s = 0 with the rail friction at its limit F, which fixes the push at
+    /// P* = (1 + 5k²/2) F; the other ball's motion under P* fixes the pair's
+    /// acceleration, and that the share λ of rolling resistance. `None` where this does
+    /// not apply (the other ball at rest, no rolling resistance, λ outside 0..=1).
+    fn saturated_rolling(&self, i: usize, phase: [Phase; 2]) -> Option<(Accelerations, f64, f64)> {
+        let j = 1 - i;
+        // The push acts on ball i along `dir` (outward), on ball j against it.
+        let dir = if i == 0 { -1.0 } else { 1.0 };
+        let k2 = self.groove.k * self.groove.k;
+        let limit = self.groove.friction_limit(self.mass[i]);
+        let push = (1.0 + 2.5 * k2) * limit;
+        let other_rests = !matches!(phase[j], Phase::Sliding { .. }) && self.state[j].v == 0.0;
+        let resistance = self.groove.rolling_acceleration(self.state[i].v);
+        if other_rests || resistance == 0.0 {
+            return None;
+        }
+        let ((a_j, du_j), m_j) = self.free_motion(j, phase[j]);
+        let a = a_j - dir * push / m_j;
+        let lambda = (a - dir * 2.5 * k2 * limit / self.mass[i]) / resistance;
+        if !(-1e-9..=1.0 + 1e-9).contains(&lambda) {
+            return None;
+        }
+        let mut accel = [(a, a); 2];
+        if matches!(phase[j], Phase::Sliding { .. }) {
+            accel[j].1 = du_j;
+        }
+        Some((accel, push, lambda.clamp(0.0, 1.0)))
     }
 
     /// Touching balls moving as one: their shared acceleration and the push between
@@ -117,6 +165,14 @@ impl Engine {
             (false, _) => force(0, dir) - motion[0].1 * shared,
             (true, false) => motion[1].1 * shared - force(1, dir),
         };
-        (push > 0.0).then_some((shared, push))
+        // Balls that would move alike on their own (both rolling, equal decelerations)
+        // need no push; the difference above is then rounding, of either sign. Decide it
+        // against the forces at play: within the tolerance they move as one, unpressed.
+        let scale = force(0, dir).abs() + force(1, dir).abs();
+        if push.abs() <= ZERO_PUSH * scale {
+            Some((shared, 0.0))
+        } else {
+            (push > 0.0).then_some((shared, push))
+        }
     }
 }

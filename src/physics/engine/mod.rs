@@ -8,7 +8,7 @@
 use crate::physics::model::{self, BallState, Groove, Phase, slip};
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{
-    Event, EventKind, Ledger, Segment, Solution, Who, end_time, segment_losses,
+    Event, EventKind, Ledger, Segment, SeriesSum, Solution, Who, end_time, segment_losses,
 };
 
 mod candidates;
@@ -44,6 +44,7 @@ pub fn solve(scene: &Scene, span: &Span) -> Solution {
         impacts: engine.impacts,
         accumulation: engine.accumulation,
         truncated: engine.truncated,
+        series: engine.series,
     }
 }
 
@@ -63,6 +64,10 @@ struct Engine {
     gap: f64,
     /// Compressive force while the balls press on each other, N.
     push: f64,
+    /// Whether the touching balls move as one (pressed, or alike without a push).
+    together: bool,
+    /// Share of each ball's rolling resistance that acts (1 but at the friction limit).
+    rolling_share: [f64; 2],
     /// Whether the event list says the balls press on each other: the last contact
     /// event recorded was `contact_start`. Contact events report changes of this.
     told_pressed: bool,
@@ -75,9 +80,12 @@ struct Engine {
     history: Vec<ImpactRecord>,
     since_impact: f64,
     geometric_cycles: usize,
+    /// Cycles a geometric series is resolved one by one before its tail is summed.
+    cycle_budget: usize,
     impacts: usize,
     accumulation: Option<f64>,
     truncated: bool,
+    series: Option<SeriesSum>,
 }
 
 impl Engine {
@@ -115,6 +123,8 @@ impl Engine {
             phase: [free_phase(left.v), free_phase(right.v)],
             gap: 0.0,
             push: 0.0,
+            together: false,
+            rolling_share: [1.0; 2],
             told_pressed: false,
             accel: [(0.0, 0.0); 2],
             angle: [0.0; 2],
@@ -124,9 +134,11 @@ impl Engine {
             history: Vec::with_capacity(8),
             since_impact: 0.0,
             geometric_cycles: 0,
+            cycle_budget: zeno::CYCLES_BEFORE_SUMMING,
             impacts: 0,
             accumulation: None,
             truncated: false,
+            series: None,
         }
     }
 
@@ -172,6 +184,7 @@ impl Engine {
             accel,
             phase: self.phase,
             contact_force: 0.0,
+            rolling_share: [1.0; 2],
             angle0: [0.0; 2],
             ledger0: Ledger::default(),
             bridge: None,
@@ -206,7 +219,7 @@ impl Engine {
         for &c in due.iter().filter(|c| **c != Candidate::Impact) {
             kinds.push(self.apply(c, &before));
         }
-        if self.push > 0.0 {
+        if self.together {
             // Touching balls share one velocity; keep it exactly shared after snapping.
             let v = if self.state[0].v == 0.0 || self.state[1].v == 0.0 {
                 0.0
@@ -269,6 +282,7 @@ impl Engine {
             accel: self.accel,
             phase: self.phase,
             contact_force: self.push,
+            rolling_share: self.rolling_share,
             angle0: self.angle,
             ledger0: self.ledger,
             bridge: None,
@@ -276,13 +290,18 @@ impl Engine {
     }
 
     fn advance(&mut self, tau: f64) {
-        if self.push == 0.0 {
+        if !self.together {
             let w = self.state[1].v - self.state[0].v;
             let c = self.accel[1].0 - self.accel[0].0;
             self.gap = (self.gap + tau * (w + 0.5 * c * tau)).max(0.0);
         }
         self.push_segment(self.t + tau);
         let seg = *self.segments.last().expect("just pushed");
+        if seg.t1 == seg.t0 {
+            // Shorter than the clock's resolution at this time: the states still move
+            // on, but no empty segment stands in the solution.
+            self.segments.pop();
+        }
         self.ledger = segment_losses(&self.groove, self.mass, &seg, tau);
         let r = self.groove.k * self.radius;
         for i in 0..2 {
@@ -311,6 +330,7 @@ impl Engine {
     }
 
     fn set_phases_from_state(&mut self) {
+        let before = self.kinetic(&self.state);
         for i in 0..2 {
             self.phase[i] = self.phase_of(self.state[i]);
             match self.phase[i] {
@@ -319,6 +339,10 @@ impl Engine {
                 Phase::Sliding { .. } => {}
             }
         }
+        // Snapping a negligible slip (≤ 1e-12 of the speeds) moves the spin energy
+        // m u²/(5k²) by ~1e-12/k² of it: near b = 2R, thousands of snaps would show
+        // in the books. What it moved is booked as friction (it ends a slip).
+        self.ledger.friction += before - self.kinetic(&self.state);
     }
 
     /// The impact: Newton's law on the centre velocities, spins unchanged.
@@ -379,67 +403,4 @@ impl Engine {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use approx::assert_relative_eq;
-
-    /// A pressed pair moving left, decelerated by the heavier left ball's friction:
-    /// the left ball's slip ends exactly when the pair's speed reaches zero, and the
-    /// sliding right ball pushes it on to the left. Needs a hand-made state: random
-    /// scenes hit v = 0 at the end of a slip only by chance.
-    #[test]
-    fn a_slip_that_ends_at_zero_speed_under_a_push_is_rolling_not_rest() {
-        let scene = Scene {
-            radius: 0.0275,
-            width: 0.03,
-            mu: 0.2,
-            g: 9.81,
-            restitution: 0.0,
-            rolling_resistance: 0.0,
-            left: crate::physics::scene::Ball { mass: 0.5, v0: 1.0 },
-            right: crate::physics::scene::Ball { mass: 0.2, v0: 1.0 },
-        };
-        let mut engine = Engine::new(&scene);
-        let (k, mu, g) = (scene.k(), scene.mu, scene.g);
-        let friction = mu * g / k;
-        // Both slide: the pair decelerates at the difference of their friction forces.
-        let shared = (0.5 - 0.2) * friction / 0.7;
-        let t_roll = 0.3 / (shared + 2.5 * k * mu * g);
-        let v0 = -shared * t_roll;
-        engine.state = [
-            BallState {
-                x: -0.0275,
-                v: v0,
-                u: v0 + 0.3,
-            },
-            BallState {
-                x: 0.0275,
-                v: v0,
-                u: v0 - 2.0,
-            },
-        ];
-        engine.phase = [Phase::Sliding { sign: -1 }, Phase::Sliding { sign: 1 }];
-        engine.settle();
-        assert!(engine.push > 0.0, "the balls press on each other");
-        engine.record_contact();
-        while engine.step() && engine.events.len() < 20 {}
-        let left: Vec<&Event> = engine
-            .events
-            .iter()
-            .filter(|e| e.ball == Who::Left)
-            .collect();
-        assert_eq!(left[0].kind, EventKind::Rolling, "{:?}", engine.events);
-        assert_relative_eq!(left[0].t, t_roll, max_relative = 1e-12);
-        assert_eq!((left[0].left.v, left[0].left.u), (0.0, 0.0));
-        // Not at rest: right after, the push drives it to the left, still rolling.
-        let seg = engine.segments.iter().find(|s| s.t0 == left[0].t).unwrap();
-        assert_eq!(seg.phase[0], Phase::Rolling);
-        assert!(seg.accel[0].0 < 0.0 && seg.contact_force > 0.0, "{seg:?}");
-        assert!(
-            engine
-                .events
-                .iter()
-                .all(|e| e.kind != EventKind::Rest || e.t > left[0].t)
-        );
-    }
-}
+mod tests;

@@ -4,7 +4,7 @@
 
 use super::Engine;
 use crate::physics::model::{BallState, Phase};
-use crate::physics::solution::{EventKind, Ledger, Who};
+use crate::physics::solution::{EventKind, Ledger, SeriesSum, Who};
 
 /// Impacts closing slower than this fraction of the scene's largest speed are no longer
 /// resolved one by one: the balls are taken to touch (perfectly inelastic, losing
@@ -21,7 +21,7 @@ const REMAINDER_NEGLIGIBLE: f64 = 1e-9;
 /// …or after this many cycles confirmed it, bridging the rest (see
 /// [`Segment::bridge`](crate::physics::solution::Segment::bridge)). Only cycle ratios
 /// within ~1e-2 of 1 (b within ~1e-3 of 2R) need that many.
-const CYCLES_BEFORE_SUMMING: usize = 5000;
+pub(super) const CYCLES_BEFORE_SUMMING: usize = 5000;
 
 /// An impact as the series detector needs it.
 #[derive(Clone, Copy, Debug)]
@@ -37,7 +37,7 @@ pub(super) struct ImpactRecord {
 }
 
 impl Engine {
-    fn kinetic(&self, state: &[BallState; 2]) -> f64 {
+    pub(super) fn kinetic(&self, state: &[BallState; 2]) -> f64 {
         (0..2)
             .map(|i| {
                 let (t, r) = self.groove.energy(self.mass[i], state[i]);
@@ -52,7 +52,7 @@ impl Engine {
         let n = self.history.len();
         let last = self.history[n - 1];
         if n >= 2 && last.closing <= CHATTER_SPEED * self.speed_scale {
-            self.finish_series(0.0, last.state, last.angle, last.ledger);
+            self.finish_series(0.0, last.state, last.angle, last.ledger, false);
             return;
         }
         if n < 4 {
@@ -72,25 +72,63 @@ impl Engine {
         self.geometric_cycles += 1;
         let remaining = h0.cycle * ratio / (1.0 - ratio);
         let negligible = remaining <= REMAINDER_NEGLIGIBLE * self.t.abs().max(h0.cycle);
-        if !(negligible || self.geometric_cycles >= CYCLES_BEFORE_SUMMING) {
+        if !(negligible || self.geometric_cycles >= self.cycle_budget) {
             return;
         }
-        // Aitken: every quantity changes by a geometric series of ratio `ratio`
-        // from one impact to the next, so its limit is z_n + (z_n − z_{n−1}) ρ/(1 − ρ).
-        let f = ratio / (1.0 - ratio);
+        // The last geometric_cycles + 2 cycles are geometric; the first impact of the
+        // history has no cycle before it.
+        self.sum_tail(self.geometric_cycles.min(n - 2), !negligible);
+    }
+
+    /// Sums the rest of a geometric series of impacts from its last `m` cycles and
+    /// jumps to the accumulation point. Everything is taken over m cycles, not one:
+    /// their ratio q = ρ^m is the quotient of two cycle times, and 1 − q keeps its
+    /// digits where 1 − ρ (b near 2R: 1 − ρ ≈ 5k²) would lose them to rounding.
+    fn sum_tail(&mut self, m: usize, by_budget: bool) {
+        let n = self.history.len();
+        let (h0, hm) = (self.history[n - 1], self.history[n - 1 - m]);
+        let q = h0.cycle / hm.cycle;
+        // Over m cycles a quantity changed by Δ; what is left of a series of ratio ρ
+        // is Δ q/(1 − q) (Aitken). Speeds, spins and cycle times go with ρ.
+        let f = q / (1.0 - q);
         let limit = |now: f64, before: f64| now + (now - before) * f;
-        let state: [BallState; 2] = std::array::from_fn(|i| BallState {
-            x: limit(h0.state[i].x, h1.state[i].x),
-            v: limit(h0.state[i].v, h1.state[i].v),
-            u: limit(h0.state[i].u, h1.state[i].u),
-        });
-        let angle = std::array::from_fn(|i| limit(h0.angle[i], h1.angle[i]));
-        let ledger = Ledger {
-            friction: limit(h0.ledger.friction, h1.ledger.friction),
-            impacts: limit(h0.ledger.impacts, h1.ledger.impacts),
-            rolling_resistance: limit(h0.ledger.rolling_resistance, h1.ledger.rolling_resistance),
+        let span: f64 = self.history[n - m..].iter().map(|h| h.cycle).sum();
+        let remaining = span * f;
+        let speed: [f64; 2] = std::array::from_fn(|i| limit(h0.state[i].v, hm.state[i].v));
+        let spin: [f64; 2] = std::array::from_fn(|i| limit(h0.state[i].u, hm.state[i].u));
+        let [ml, mr] = self.mass;
+        let shared = (ml * speed[0] + mr * speed[1]) / (ml + mr);
+        // A place (or spin angle) moves per cycle by its limit rate times the cycle's
+        // time (ratio ρ) plus what the swing about that rate adds: speeds ∝ ρ^n over
+        // times ∝ ρ^n, so ratio ρ².
+        let f2 = q * q / (1.0 - q * q);
+        let place = |now: f64, before: f64, rate: f64| {
+            now + rate * remaining + ((now - before) - rate * span) * f2
         };
-        self.finish_series(remaining, state, angle, ledger);
+        // The balls touch at every impact, so the place to sum is their contact point;
+        // summing each centre would also sum their rounding drift, ~1/(1 − ρ) times.
+        let contact = |h: &ImpactRecord| 0.5 * (h.state[0].x + h.state[1].x);
+        let touch = place(contact(&h0), contact(&hm), shared);
+        let r = self.groove.k * self.radius;
+        let state: [BallState; 2] = std::array::from_fn(|i| BallState {
+            x: touch + if i == 0 { -self.radius } else { self.radius },
+            v: speed[i],
+            u: spin[i],
+        });
+        let angle = std::array::from_fn(|i| place(h0.angle[i], hm.angle[i], spin[i] / r));
+        let ledger = Ledger {
+            friction: limit(h0.ledger.friction, hm.ledger.friction),
+            impacts: limit(h0.ledger.impacts, hm.ledger.impacts),
+            rolling_resistance: limit(h0.ledger.rolling_resistance, hm.ledger.rolling_resistance),
+        };
+        let ratio = (h0.cycle / self.history[n - 2].cycle).min(1.0);
+        self.series = Some(SeriesSum {
+            from: self.t,
+            cycles: m,
+            ratio,
+            by_budget,
+        });
+        self.finish_series(remaining, state, angle, ledger, by_budget);
     }
 
     /// Ends a series of impacts at `remaining` seconds from now in the limit `state`:
@@ -103,6 +141,7 @@ impl Engine {
         mut state: [BallState; 2],
         angle: [f64; 2],
         estimate: Ledger,
+        averaged: bool,
     ) {
         let energy_now = self.kinetic(&self.state) + self.ledger.total();
         let [ml, mr] = self.mass;
@@ -117,19 +156,37 @@ impl Engine {
                 s.u = v;
             }
         }
+        // A remainder too short to move the clock is no bridge.
+        let remaining = if self.t + remaining > self.t {
+            remaining
+        } else {
+            0.0
+        };
         if remaining > 0.0 {
-            // The bridge stands for infinitely many ever smaller cycles: velocities
-            // and spins go linearly to their limits (the real ones oscillate about
-            // that by less than they did in the last resolved cycle).
+            // The bridge stands for infinitely many ever smaller cycles, each a scaled
+            // copy of the last: cycle times and speeds shrink by the same ratio, so the
+            // spins fall linearly in time to their limits. A long bridge (`averaged`)
+            // moves with the cycle averages (the real velocities swing about them, each
+            // bounce less than the last resolved one), from the last impact's places to
+            // the summed limit places, ending at the limit velocity. A negligible one
+            // just goes on linearly from the last impact.
             let now = self.state;
-            self.accel = std::array::from_fn(|i| {
-                (
-                    (state[i].v - now[i].v) / remaining,
-                    (state[i].u - now[i].u) / remaining,
-                )
-            });
             for i in 0..2 {
-                state[i].x = now[i].x + 0.5 * (now[i].v + state[i].v) * remaining;
+                let start = if averaged {
+                    // A cycle's mean velocity lies between the speeds the ball swings
+                    // between; the bound also keeps rounding in the places (where the
+                    // bridge moves the balls by less than that) from making a speed.
+                    let (lo, hi) = (now[i].v.min(state[i].v), now[i].v.max(state[i].v));
+                    (2.0 * (state[i].x - now[i].x) / remaining - state[i].v).clamp(lo, hi)
+                } else {
+                    state[i].x = now[i].x + 0.5 * (now[i].v + state[i].v) * remaining;
+                    now[i].v
+                };
+                self.state[i].v = start;
+                self.accel[i] = (
+                    (state[i].v - start) / remaining,
+                    (state[i].u - now[i].u) / remaining,
+                );
             }
         }
         let lost = energy_now - self.kinetic(&state);
@@ -144,6 +201,7 @@ impl Engine {
         self.ledger = ledger;
         self.gap = 0.0;
         self.push = 0.0;
+        self.together = false;
         self.set_phases_from_state();
         self.state[1].v = self.state[0].v;
         self.accumulation = Some(self.t);
@@ -154,6 +212,7 @@ impl Engine {
             EventKind::ZenoContact
         };
         self.history.clear();
+        self.geometric_cycles = 0;
         // The impact just recorded is the last one resolved; its event already exists.
         // Whether the pair now presses is recorded by the caller, after this event.
         self.settle();
