@@ -288,6 +288,14 @@ fn table(scene: &Scene, f: &Fits, paper_data: bool) -> String {
             "{:<12} {:>14.2} {:>9.2} {:>11.2} {:>14.2} {:>9.2} {:>11.3}",
             "paper (tab.1)", p[0], p[1], p[2], p[3], p[4], p[5]
         );
+        // Where the paper's row contradicts itself, say so (physics.md).
+        for d in fit::paper_disagreements(scene.width, scene.radius, scene.g) {
+            let _ = writeln!(
+                out,
+                "  the paper's own |a_{}| gives μ_k,{} = {:.3}, not its printed {:.2}: the table disagrees with itself",
+                d.which, d.which, d.own, d.printed
+            );
+        }
     }
     let mf = &f.model_fit;
     let _ = writeln!(out);

@@ -432,3 +432,31 @@ fn a_data_file_needs_a_scene_and_the_fit_says_which() {
     let own = String::from_utf8(groovelab(&["fit", "--preset", "paper-b4.4"]).stdout).unwrap();
     assert!(own.contains("paper (tab.1)"), "{own}");
 }
+
+/// Issue 18 item 8: where the paper's table 1 contradicts itself, `fit` and the Fit view
+/// say so: μ_k,t at b = 4.4 cm and both μ at 4.9 cm do not follow from the accelerations
+/// in the same rows, even allowing for rounding; the 3.5 cm row agrees.
+#[test]
+fn the_papers_table_disagrees_with_itself_and_fit_says_so() {
+    use groovelab::study::fit::paper_disagreements;
+    let (r, g) = (0.0275, 9.81);
+    assert!(paper_disagreements(0.035, r, g).is_empty());
+    let d44 = paper_disagreements(0.044, r, g);
+    assert_eq!(d44.iter().map(|d| d.which).collect::<Vec<_>>(), ["t"]);
+    // k = 0.6 exactly at b = 4.4 cm: 2 · 2.61 / (5 · 0.6 · 9.81).
+    assert!((d44[0].own - 2.0 * 2.61 / (5.0 * 0.6 * g)).abs() < 1e-12);
+    let d49 = paper_disagreements(0.049, r, g);
+    assert_eq!(d49.iter().map(|d| d.which).collect::<Vec<_>>(), ["cm", "t"]);
+    assert!((d49[0].own - 0.1509).abs() < 5e-4 && (d49[1].own - 0.1796).abs() < 5e-4);
+    let out = |preset: &str| {
+        let o = crate::common::groovelab(&["fit", "--preset", preset]);
+        assert!(o.status.success());
+        String::from_utf8(o.stdout).unwrap()
+    };
+    let b49 = out("paper-b4.9");
+    assert!(
+        b49.contains("gives μ_k,cm = 0.151, not its printed 0.17: the table disagrees with itself"),
+        "{b49}"
+    );
+    assert!(!out("paper-b3.5").contains("disagrees"));
+}

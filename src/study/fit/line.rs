@@ -157,6 +157,44 @@ pub const PAPER_TABLE: [(f64, [f64; 6]); 3] = [
     (0.049, [3.26, 0.17, 0.54, 2.00, 0.16, 0.008]),
 ];
 
+/// A μ value of the paper's table 1 that the accelerations in its own row do not give,
+/// even allowing for rounding (physics.md, "Where the paper disagrees with itself").
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PaperDisagreement {
+    /// `"cm"` for μ_k,cm, `"t"` for μ_k,t.
+    pub which: &'static str,
+    pub printed: f64,
+    /// From the row's own acceleration: `k |a_cm| / g` or `2 |a_t| / (5 k g)`.
+    pub own: f64,
+}
+
+/// The μ values of the paper's row for groove width `b` that contradict the row's own
+/// accelerations (ball radius `radius`, gravity `g`): each printed number stands for
+/// ± half a unit of its last digit (0.005 for both), and a contradiction is where the
+/// two ranges do not meet. Empty where they agree or `b` is not one of the paper's.
+pub fn paper_disagreements(b: f64, radius: f64, g: f64) -> Vec<PaperDisagreement> {
+    let Some(row) = paper_row(b) else {
+        return Vec::new();
+    };
+    let k = (1.0 - (b / (2.0 * radius)).powi(2)).sqrt();
+    let half = 0.005;
+    [
+        ("cm", row[1], row[0], k / g),
+        ("t", row[4], row[3], 2.0 / (5.0 * k * g)),
+    ]
+    .into_iter()
+    .filter(|&(_, mu, a, factor)| {
+        let (lo, hi) = ((a - half) * factor, (a + half) * factor);
+        hi < mu - half || lo > mu + half
+    })
+    .map(|(which, printed, a, factor)| PaperDisagreement {
+        which,
+        printed,
+        own: a * factor,
+    })
+    .collect()
+}
+
 /// The paper's row for groove width `b`, if it is one of its three.
 pub fn paper_row(b: f64) -> Option<[f64; 6]> {
     PAPER_TABLE

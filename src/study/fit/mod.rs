@@ -20,7 +20,10 @@ use crate::study::Progress;
 use crate::study::measured::series::Measured;
 
 pub use choice::{Candidate, Estimate, compare_models};
-pub use line::{Line, LineFit, PAPER_TABLE, line, line_fit, paper_row, sliding_window};
+pub use line::{
+    Line, LineFit, PAPER_TABLE, PaperDisagreement, line, line_fit, paper_disagreements, paper_row,
+    sliding_window,
+};
 pub use regime::{observed_regime, rest_band};
 pub use uncertainty::NotIdentified;
 

@@ -108,6 +108,17 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                         )),
                     ]),
                 ));
+                // Where its row contradicts itself, say so (physics.md).
+                let scene = &app.lab.scene;
+                for d in fit::paper_disagreements(scene.width, scene.radius, scene.g) {
+                    lines.push((
+                        3,
+                        Line::from(label(&format!(
+                            "  its |a_{}| gives {}_{} {:.3}, not {:.2}",
+                            d.which, g.mu, d.which, d.own, d.printed
+                        ))),
+                    ));
+                }
             }
             match app.lab.position_fit() {
                 State::Idle => model_fit_lines(m, &mut lines, theme),
