@@ -148,6 +148,11 @@ fn predict_asks_plays_and_explains() {
         q.contains("what will the balls do?") && q.contains("come back"),
         "{q}"
     );
+    // While the question is open, the chain behind it does not give the answer away.
+    for size in [(80, 24), (100, 30), (120, 40)] {
+        let q = text(&a, size, false);
+        assert!(!q.contains("recollide") && !q.contains("D = 0.5"), "{q}");
+    }
     press(&mut a, "1");
     let p = a.prediction.clone().unwrap();
     assert_eq!(p.guess, Regime::Depart);

@@ -19,6 +19,7 @@ use crate::physics::forces::{Instant, Sliding, instant};
 use crate::tui::app::{App, Prediction};
 use crate::tui::canvas::Canvas;
 use crate::tui::theme::Theme;
+use crate::tui::vocabulary::Mode;
 
 /// Lengths are shown in their display unit.
 const LENGTH: Dimension = Dimension::Length;
@@ -494,7 +495,9 @@ fn trend(now: f64, was: Option<f64>, theme: &Theme) -> String {
 fn chain_view(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let g = theme.glyphs;
     let prediction = app.prediction.as_ref().filter(|p| p.scene == app.lab.scene);
-    let pending = prediction.is_some_and(|p| app.t < p.reveal_at);
+    // While the question is asked, and until the outcome shows, the chain keeps D and
+    // the outcome to itself: the answer must not stand beside the question.
+    let pending = app.mode == Mode::Predict || prediction.is_some_and(|p| app.t < p.reveal_at);
     let title = if prediction.is_some() {
         "Forces: predict, observe, explain"
     } else {
