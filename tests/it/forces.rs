@@ -229,6 +229,34 @@ fn hiding_b_leaves_the_picture_and_hides_what_gives_b_away() {
     assert!(text(&a, (120, 40), false).contains("4.95 cm"));
 }
 
+/// With b hidden the parameter panel reads the same whatever b is: no row (a release
+/// height follows from v0 and k) lets a class work b out.
+#[test]
+fn with_b_hidden_the_parameter_panel_does_not_depend_on_b() {
+    let panel = |width: f64| {
+        let mut a = app("paper-b4.9");
+        a.set_value(groovelab::input::params::Key::Width, width);
+        press(&mut a, "B v");
+        let s = text(&a, (120, 40), false);
+        // The panel is the top-left box, up to its closing corner.
+        s.lines()
+            .take_while(|l| !l.starts_with('╰'))
+            .map(|l| {
+                l.split('╮')
+                    .next()
+                    .unwrap_or(l)
+                    .split('│')
+                    .nth(1)
+                    .unwrap_or("")
+                    .to_string()
+            })
+            .collect::<Vec<_>>()
+    };
+    let (narrow, wide) = (panel(0.045), panel(0.049));
+    assert!(narrow.iter().any(|l| l.contains("hidden")), "{narrow:?}");
+    assert_eq!(narrow, wide);
+}
+
 #[test]
 fn the_help_lists_the_keys_with_predict() {
     let predict = keys::TABLE

@@ -37,7 +37,12 @@ const VALUE_W: usize = 11;
 pub fn value_text(app: &App, key: Key) -> String {
     let v = app.lab.value(key);
     let s = &app.lab.scene;
-    if key == Key::Width && app.hide_b {
+    // A release height follows from v0 and k, so from b: hidden with it.
+    let gives_b_away = matches!(
+        key,
+        Key::Width | Key::Height | Key::HeightLeft | Key::HeightRight
+    );
+    if gives_b_away && app.hide_b {
         return "hidden".into();
     }
     if key == Key::V0 && s.left.v0 != s.right.v0 {
