@@ -33,19 +33,7 @@ pub const MAX_EVENTS: usize = 100_000;
 pub fn solve(scene: &Scene, span: &Span) -> Solution {
     let mut engine = Engine::new(scene);
     engine.run(span.t_start);
-    let t_end = end_time(span, engine.t_last_event());
-    Solution {
-        scene: *scene,
-        t_start: span.t_start,
-        t_end,
-        method: "exact",
-        events: engine.events,
-        segments: engine.segments,
-        impacts: engine.impacts,
-        accumulation: engine.accumulation,
-        truncated: engine.truncated,
-        series: engine.series,
-    }
+    engine.into_solution(scene, span)
 }
 
 struct Engine {
@@ -398,6 +386,25 @@ impl Engine {
                 EventKind::ContactEnd
             };
             self.record(&[(kind, Who::Both)]);
+        }
+    }
+}
+
+impl Engine {
+    /// The run as a solution over `span` (its end from the span rule and the last event).
+    fn into_solution(self, scene: &Scene, span: &Span) -> Solution {
+        let t_end = end_time(span, self.t_last_event());
+        Solution {
+            scene: *scene,
+            t_start: span.t_start,
+            t_end,
+            method: "exact",
+            events: self.events,
+            segments: self.segments,
+            impacts: self.impacts,
+            accumulation: self.accumulation,
+            truncated: self.truncated,
+            series: self.series,
         }
     }
 }

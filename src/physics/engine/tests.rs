@@ -2,7 +2,7 @@
 //! checked against a hand computation.
 
 use super::*;
-use crate::physics::solution::{LATEST_END, end_time};
+use crate::physics::solution::LATEST_END;
 use approx::assert_relative_eq;
 
 /// A pressed pair moving left, decelerated by the heavier left ball's friction:
@@ -176,19 +176,7 @@ fn solve_with_budget(sc: &Scene, budget: usize) -> Solution {
     let mut engine = Engine::new(sc);
     engine.cycle_budget = budget;
     engine.run(-0.2);
-    let t_end = end_time(&span(-0.2), engine.t_last_event());
-    Solution {
-        scene: *sc,
-        t_start: -0.2,
-        t_end,
-        method: "exact",
-        events: engine.events,
-        segments: engine.segments,
-        impacts: engine.impacts,
-        accumulation: engine.accumulation,
-        truncated: engine.truncated,
-        series: engine.series,
-    }
+    engine.into_solution(sc, &span(-0.2))
 }
 
 /// Issue 18, item 1: a symmetric pair in a groove ever closer to 2R ends at rest,
