@@ -1,4 +1,4 @@
-//! The one way groovelab writes a file (`--output` of compare, fit and sweep, the
+//! The one way groovelab writes a file (`--output` of every command, the
 //! app's saved presets and exports): a temporary file beside the target, renamed
 //! over it only when complete and not interrupted. The target must be a regular file
 //! or a new path (never a symlink, FIFO, device or directory); a replaced file keeps

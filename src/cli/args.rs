@@ -134,6 +134,9 @@ pub struct SimulateArgs {
     /// Regularisation speed ε of rk4's tanh(s/ε) friction [default: 1mm/s].
     #[arg(long, value_name = "Q", value_parser = speed, allow_hyphen_values = true)]
     pub epsilon: Option<f64>,
+    /// Write the output to this file (atomically) instead of stdout.
+    #[arg(long, value_name = "FILE")]
+    pub output: Option<std::path::PathBuf>,
 }
 
 #[derive(Args, Debug)]
@@ -222,6 +225,9 @@ pub struct RenderArgs {
     /// Keys to press first, by the names the help screen shows (e.g. "down right enter").
     #[arg(long, value_name = "K", allow_hyphen_values = true)]
     pub keys: Option<String>,
+    /// Write the output to this file (atomically) instead of stdout.
+    #[arg(long, value_name = "FILE")]
+    pub output: Option<std::path::PathBuf>,
 }
 
 /// Largest screen `render` draws.

@@ -118,10 +118,13 @@ pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
         None | Some(Command::Tui) => {
             Ok(Outcome::Interactive(Box::new(app(&cli.scene, &cli.data)?)))
         }
-        Some(Command::Simulate(args)) => simulate(&cli.scene, args).map(Outcome::Print),
-        Some(Command::Render(args)) => {
-            render(&cli.scene, &cli.data, args, cli.ascii).map(Outcome::Print)
+        Some(Command::Simulate(args)) => {
+            deliver(args.output.as_deref(), || simulate(&cli.scene, args)).map(Outcome::Print)
         }
+        Some(Command::Render(args)) => deliver(args.output.as_deref(), || {
+            render(&cli.scene, &cli.data, args, cli.ascii)
+        })
+        .map(Outcome::Print),
         Some(Command::Compare(args)) => methods::compare(&cli.scene, args).map(Outcome::Print),
         Some(Command::Fit(args)) => fit::run(&cli.scene, &cli.data, args).map(Outcome::Print),
         Some(Command::Sweep(args)) => sweep::run(&cli.scene, args).map(Outcome::Print),
@@ -129,6 +132,24 @@ pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
         Some(Command::Completions { shell }) => Ok(Outcome::Print(manual::completions(*shell))),
         Some(Command::Manpage) => Ok(Outcome::Print(manual::manpage())),
     }
+}
+
+/// What `work` prints, or with `--output FILE` the same bytes written to FILE (the
+/// target checked before the work, written atomically after it) and a line saying
+/// so: the `--output` of `simulate` and `render`, as `compare`, `fit` and `sweep` do.
+fn deliver(
+    output: Option<&std::path::Path>,
+    work: impl FnOnce() -> Result<String, CliError>,
+) -> Result<String, CliError> {
+    let Some(path) = output else {
+        return work();
+    };
+    output::check_output(path)?;
+    let text = work()?;
+    // From here a stop signal removes the temporary file and writes nothing.
+    crate::signals::watch();
+    write_atomically(path, text.as_bytes())?;
+    Ok(format!("wrote {}\n", path.display()))
 }
 
 /// The first global option given that `command` does not use, if any (clap's global

@@ -29,6 +29,7 @@ fn render(preset: &str, at: Option<f64>, size: (u16, u16), ascii: bool, keys: &s
         at,
         size,
         keys: Some(keys.to_string()),
+        output: None,
     };
     render_with(
         &scene,

@@ -459,6 +459,7 @@ fn command_options(cmd: &str) -> Vec<Opt> {
             ("--dt", Some(quantity(&["0.1ms", "1e-4", "1ms", "0.01", "1e-5"], 'T'))),
             ("--tol", Some(quantity(&["1e-6", "1e-3", "1e-9", "0.1"], 'R'))),
             ("--epsilon", Some(quantity(&["1mm/s", "0.001", "1cm/s"], 'V'))),
+            ("--output", Some(output_paths())),
         ],
         "render" => vec![
             ("--at", Some(quantity(&["0", "150ms", "0.5", "-0.1"], 'T'))),
@@ -467,6 +468,7 @@ fn command_options(cmd: &str) -> Vec<Opt> {
                 1 => s(&["0x0", "1x1", "1000x1000", "1001x5", "80X24", "80", "x", "", "-1x5", "80x24x3", "65536x1"]),
             ].boxed())),
             ("--keys", Some(key_script())),
+            ("--output", Some(output_paths())),
         ],
         "compare" => vec![
             ("--format", Some(fmt3("table"))),

@@ -167,6 +167,7 @@ fn render(keys: Option<&str>, at: f64, ascii: bool) -> String {
             at: Some(at),
             size: (120, 40),
             keys: keys.map(str::to_string),
+            output: None,
         },
         ascii,
         no_user_presets(),
@@ -207,6 +208,7 @@ fn screen(preset: &str, values: SceneSpec, file: Option<&str>, keys: &str) -> St
         at: Some(0.1),
         size: (120, 40),
         keys: Some(keys.to_string()),
+        output: None,
     };
     let text = render_with(&scene, &data, &args, false, no_user_presets()).unwrap();
     text.lines()

@@ -39,6 +39,7 @@ fn render(
         at,
         size,
         keys: (!keys.is_empty()).then(|| keys.to_string()),
+        output: None,
     };
     render_with(
         &scene,

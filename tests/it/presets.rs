@@ -22,6 +22,7 @@ fn run_json(preset: &str) -> Value {
             dt: None,
             tol: None,
             epsilon: None,
+            output: None,
         },
     )
     .unwrap();

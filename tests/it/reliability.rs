@@ -451,6 +451,8 @@ fn output_refuses_devices_fifos_symlinks_and_directories() {
         for args in [
             vec!["fit", "--format", "json", "--output", target.as_str()],
             vec!["compare", "--methods", "euler", "--output", target.as_str()],
+            vec!["simulate", "--format", "csv", "--output", target.as_str()],
+            vec!["render", "--size", "80x24", "--output", target.as_str()],
             vec![
                 "sweep",
                 "--x",
@@ -492,6 +494,44 @@ fn output_keeps_the_mode_of_a_replaced_file() {
     assert!(text.starts_with('{'), "{text}");
     let mode = std::fs::metadata(&out).unwrap().permissions().mode() & 0o7777;
     assert_eq!(mode, 0o640);
+    assert!(temp_files(&dir).is_empty());
+}
+
+/// Issue 19: `simulate` and `render` take `--output` like the other commands: the same
+/// bytes as on stdout, written atomically, and a line saying where.
+#[test]
+fn simulate_and_render_write_their_output_to_a_file() {
+    let dir = scratch("output-simulate-render");
+    for (args, name) in [
+        (vec!["simulate", "--format", "json"], "run.json"),
+        (
+            vec!["simulate", "--format", "csv", "--sample", "10ms"],
+            "run.csv",
+        ),
+        (
+            vec!["render", "--size", "80x24", "--at", "0.1"],
+            "screen.txt",
+        ),
+    ] {
+        let out = dir.join(name);
+        let printed = groovelab(&args);
+        assert_eq!(printed.code, Some(0), "{}", printed.stderr);
+        let mut with = args.clone();
+        with.extend(["--output", s(&out)]);
+        let r = groovelab(&with);
+        assert_eq!(r.code, Some(0), "{}", r.stderr);
+        assert_eq!(r.stdout, format!("wrote {}\n", out.display()));
+        assert_eq!(
+            std::fs::read_to_string(&out).unwrap(),
+            printed.stdout,
+            "{args:?}"
+        );
+    }
+    // A bad scene is refused before anything is written.
+    let out = dir.join("never.csv");
+    let r = groovelab(&["simulate", "--mu", "-1", "--output", s(&out)]);
+    assert_eq!(r.code, Some(2));
+    assert!(!out.exists());
     assert!(temp_files(&dir).is_empty());
 }
 

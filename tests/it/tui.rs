@@ -28,6 +28,7 @@ fn screen(preset: &str, at: f64, size: (u16, u16), ascii: bool, keys: Option<&st
         at: Some(at),
         size,
         keys: keys.map(str::to_string),
+        output: None,
     };
     render_with(
         &scene,
@@ -1049,6 +1050,7 @@ fn export_writes_the_run_as_csv_and_the_chart_as_svg() {
             dt: None,
             tol: None,
             epsilon: None,
+            output: None,
         },
     )
     .unwrap();
