@@ -40,6 +40,21 @@ pub fn load(
 
 /// The `--data` file read, its velocities derived as far as no scene enters; `None`
 /// without `--data`.
+/// The scene options with the data file's own scene under them: a file that names
+/// the scene it was taken in (`# scene NAME = VALUE` lines, as the app's CSV export
+/// writes them) needs no `--preset`; an option given on the command line wins.
+pub fn with_file_scene(scene: &SceneArgs, data: &DataArgs) -> Result<SceneArgs, CliError> {
+    let Some(path) = data.data.first() else {
+        return Ok(scene.clone());
+    };
+    let text = crate::input::read_user_file(path, "--data", crate::input::MAX_FILE_BYTES)?;
+    let own = crate::input::data::scene_of(&text, &path.display().to_string())?;
+    Ok(SceneArgs {
+        values: own.over(&scene.values),
+        ..scene.clone()
+    })
+}
+
 pub fn load_series(args: &DataArgs) -> Result<Option<Series>, CliError> {
     let texts = match args.data.as_slice() {
         [] => return Ok(None),

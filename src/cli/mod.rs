@@ -114,19 +114,19 @@ pub enum Outcome {
 /// Runs a parsed command line.
 pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
     used_options(cli)?;
+    // A data file that names its scene gives it, under the options.
+    let scene = &fit::with_file_scene(&cli.scene, &cli.data)?;
     match &cli.command {
-        None | Some(Command::Tui) => {
-            Ok(Outcome::Interactive(Box::new(app(&cli.scene, &cli.data)?)))
-        }
+        None | Some(Command::Tui) => Ok(Outcome::Interactive(Box::new(app(scene, &cli.data)?))),
         Some(Command::Simulate(args)) => {
             deliver(args.output.as_deref(), || simulate(&cli.scene, args)).map(Outcome::Print)
         }
         Some(Command::Render(args)) => deliver(args.output.as_deref(), || {
-            render(&cli.scene, &cli.data, args, cli.ascii)
+            render(scene, &cli.data, args, cli.ascii)
         })
         .map(Outcome::Print),
         Some(Command::Compare(args)) => methods::compare(&cli.scene, args).map(Outcome::Print),
-        Some(Command::Fit(args)) => fit::run(&cli.scene, &cli.data, args).map(Outcome::Print),
+        Some(Command::Fit(args)) => fit::run(scene, &cli.data, args).map(Outcome::Print),
         Some(Command::Sweep(args)) => sweep::run(&cli.scene, args).map(Outcome::Print),
         Some(Command::Presets) => Ok(Outcome::Print(presets())),
         Some(Command::Completions { shell }) => Ok(Outcome::Print(manual::completions(*shell))),

@@ -1,7 +1,33 @@
 //! A run as CSV, one writer for every front end: `simulate --format csv` and the app's
-//! export (`e`) write the same columns, SI units.
+//! export (`w`) write the same columns, SI units; the app's export starts with its
+//! scene as comment lines ([`scene_comments`]), so that it loads back as data.
 
 use crate::physics::solution::{Snapshot, Solution};
+use crate::settings::params::SceneSpec;
+use crate::settings::units::significant;
+
+/// What starts a scene comment line: `# scene width = 4.9 cm`.
+pub const SCENE_COMMENT: &str = "# scene ";
+
+/// The scene of `spec` (not its time span) as comment lines, one per value given, in the unit the lab reads
+/// it in and rounded to 6 significant digits (a fitted μ_k of 0.16667742330550958
+/// reads 0.166677: far finer than any measurement, without the float's noise). The
+/// data reader takes them back as the file's scene (`input::data::scene_of`).
+pub fn scene_comments(spec: &SceneSpec) -> String {
+    let mut out = String::from(
+        "# groovelab run: the scene it was computed in (read back with --data; options given on the command line win)\n",
+    );
+    for (key, value) in spec.given().filter(|(k, _)| k.param().of_scene()) {
+        let dim = key.dimension();
+        out += &format!(
+            "{SCENE_COMMENT}{} = {}{}\n",
+            key.name(),
+            significant(dim.to_display(value), 6),
+            dim.suffix()
+        );
+    }
+    out
+}
 
 /// The samples (`t` and both balls' x, v, u) if given, else the events (`t`, kind,
 /// ball, then the same state columns).

@@ -4,6 +4,7 @@
 //! The types it speaks in live in [`super::vocabulary`]; what the main screen's keys do in
 //! `normal`, the picker and text prompts in `prompts`.
 
+mod export;
 mod normal;
 mod predict;
 mod prompts;
@@ -19,8 +20,9 @@ use crate::settings::units::{Dimension, show, significant};
 pub use super::vocabulary::{
     Action, ChartBall, Export, FPS, Library, Mode, Prediction, SPEEDS, Status, View,
 };
+pub use export::{Figure, export_step};
 pub use predict::reveal_time;
-pub use prompts::{export_step, typing_prompt};
+pub use prompts::typing_prompt;
 
 use super::vocabulary::{DEFAULT_SPEED, WorkAxis};
 use prompts::TextTarget;

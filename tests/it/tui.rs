@@ -1054,7 +1054,10 @@ fn export_writes_the_run_as_csv_and_the_chart_as_svg() {
         },
     )
     .unwrap();
-    assert_eq!(csv, cli);
+    // Its scene in comment lines first (issue 19), then the same bytes as `simulate`.
+    let (scene, run) = csv.split_at(csv.find("\nt,").unwrap() + 1);
+    assert!(scene.lines().all(|l| l.starts_with('#')), "{scene}");
+    assert_eq!(run, cli);
     // The chart as SVG, with the data points.
     press(&mut a, "W enter");
     a.wait();

@@ -6,10 +6,12 @@
 
 mod options;
 mod positions;
+mod scene;
 mod table;
 mod velocities;
 
 pub use options::{DataError, MAX_ROWS, Reading};
+pub use scene::scene_of;
 pub use velocities::detect_impact;
 
 use crate::study::measured::{self, Derive, RawSeries, Series, Track};

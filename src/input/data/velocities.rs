@@ -11,8 +11,16 @@ use crate::study::measured::Measured;
 /// Which quantity a velocity-file header cell names, and the SI factor its unit implies.
 fn column(header: &str) -> Option<(&'static str, Option<f64>)> {
     let h = clean(header).replace(' ', "");
-    let (name, rest) = if let Some(r) = h.strip_prefix("v_cm").or(h.strip_prefix("vcm")) {
+    // The app's export and `simulate --format csv` name the model's left ball (the
+    // one measured) `v_left` and `u_left`.
+    let (name, rest) = if let Some(r) = h
+        .strip_prefix("v_cm")
+        .or(h.strip_prefix("vcm"))
+        .or(h.strip_prefix("v_left"))
+    {
         ("v_cm", r)
+    } else if let Some(r) = h.strip_prefix("u_left") {
+        ("v_t", r)
     } else if let Some(r) = h.strip_prefix("v_t").or(h.strip_prefix("vt")) {
         ("v_t", r)
     } else if let Some(r) = h.strip_prefix("time").or(h.strip_prefix('t')) {

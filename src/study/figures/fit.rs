@@ -62,12 +62,11 @@ pub fn fit_figure(
         let mut chart = ChartBuilder::on(&top)
             .caption(
                 format!(
-                    "b = {:.2} cm: model fit mu = {:.3} +- {:.3}, line fits mu_cm = {:.3}, mu_t = {:.3}",
+                    "b = {:.2} cm: model fit mu = {} (2 sigma), line fits mu_cm = {}, mu_t = {}",
                     scene.width * 100.0,
-                    mf.mu,
-                    2.0 * mf.mu_se,
-                    fits.line_fit.mu_cm,
-                    fits.line_fit.mu_t
+                    super::with_error(mf.mu, 2.0 * mf.mu_se),
+                    super::rounded(fits.line_fit.mu_cm),
+                    super::rounded(fits.line_fit.mu_t)
                 ),
                 ("sans-serif", 18),
             )

@@ -18,6 +18,26 @@ pub use work_precision::work_precision;
 #[error("{0}")]
 pub struct NothingToDraw(pub String);
 
+/// `v` rounded to its meaning in a caption: 4 significant digits, or "not measured"
+/// when it is not a number (μ_k,t without a rim mark); never `NaN`.
+pub(crate) fn rounded(v: f64) -> String {
+    if v.is_finite() {
+        crate::settings::units::significant(v, 4)
+    } else {
+        "not measured".into()
+    }
+}
+
+/// `v +- e` with both to the decimal of `e`'s first significant digit (0.1698 +- 0.0004,
+/// not 0.16980177 +- 0.00040326); `v` alone ([`rounded`]) when `e` is not a number.
+pub(crate) fn with_error(v: f64, e: f64) -> String {
+    if !(e.is_finite() && e > 0.0 && v.is_finite()) {
+        return format!("{} (no +-)", rounded(v));
+    }
+    let decimals = (-e.log10().floor()).clamp(0.0, 12.0) as usize;
+    format!("{v:.decimals$} +- {e:.decimals$}")
+}
+
 /// Largest magnitude put on an axis; beyond it spans overflow.
 const AXIS_LIMIT: f64 = 1e300;
 
@@ -75,6 +95,15 @@ pub fn log_axis(lo: f64, hi: f64) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn caption_numbers_are_rounded_to_their_meaning() {
+        assert_eq!(rounded(0.16667742330550958), "0.1667");
+        assert_eq!(rounded(f64::NAN), "not measured");
+        assert_eq!(with_error(0.16980177, 0.00040326), "0.1698 +- 0.0004");
+        assert_eq!(with_error(0.1698, 0.0), "0.1698 (no +-)");
+        assert_eq!(with_error(0.17, f64::NAN), "0.17 (no +-)");
+    }
     use crate::physics::scene::Scene;
     use crate::study::preset::Preset;
 

@@ -89,8 +89,8 @@ pub fn run_chart(
                     "{title}: b = {:.2} cm, R = {:.2} cm, mu_k = {}, e = {}",
                     scene.width * 100.0,
                     scene.radius * 100.0,
-                    scene.mu,
-                    scene.restitution
+                    super::rounded(scene.mu),
+                    super::rounded(scene.restitution)
                 ),
                 ("sans-serif", 18),
             )

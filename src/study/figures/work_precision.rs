@@ -52,8 +52,8 @@ pub fn work_precision(rows: &[Row], scene: &Scene) -> Result<String, Box<dyn std
             "Work-precision, b = {:.2} cm, R = {:.2} cm, mu = {}, e = {}",
             scene.width * 100.0,
             scene.radius * 100.0,
-            scene.mu,
-            scene.restitution
+            super::rounded(scene.mu),
+            super::rounded(scene.restitution)
         );
         let mut chart = ChartBuilder::on(&root)
             .caption(title, ("sans-serif", 20))

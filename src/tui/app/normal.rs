@@ -209,12 +209,19 @@ impl App {
         }
     }
 
-    /// The export prompt, with a file name from the preset.
+    /// The export prompt, with a file name from the preset and what is exported; `W`
+    /// on a view without a figure says so instead.
     fn ask_export(&mut self, kind: Export) {
         self.status = Status::None;
         let what = match kind {
             Export::Csv => "run",
-            Export::Svg => "chart",
+            Export::Svg => match self.figure_on_screen() {
+                Ok(figure) => figure.name(),
+                Err(e) => {
+                    self.status = Status::Error(e);
+                    return;
+                }
+            },
         };
         self.mode = Mode::Export(
             kind,

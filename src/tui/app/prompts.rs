@@ -4,9 +4,9 @@
 
 use crate::input::preset::{SaveError, save};
 use crate::settings::params::Param;
-use crate::settings::units::{Dimension, parse_typed, show};
+use crate::settings::units::{Dimension, parse_typed};
 
-use super::{Action, App, ChartBall, Export, Library, Mode, ROWS, Status};
+use super::{Action, App, Export, Library, Mode, ROWS, Status};
 
 impl App {
     pub(super) fn apply_picker(&mut self, i: usize, action: Action) {
@@ -30,76 +30,6 @@ impl App {
             Action::Cancel | Action::Presets => self.mode = Mode::Normal,
             _ => {}
         }
-    }
-
-    /// Writes the run (CSV) or the chart on screen (SVG) to `name` (in `export_dir`
-    /// unless absolute), through a temporary file; says where in the status line.
-    fn export(&mut self, kind: Export, name: &str) -> Result<(), String> {
-        let name = name.trim();
-        if name.is_empty() {
-            return Err("give a file name".into());
-        }
-        let path = self.export_dir.join(name);
-        // What can be told at once keeps the prompt open; the writing itself (the SVG
-        // takes milliseconds) runs as a job and reports in the status line.
-        if let Some(dir) = path
-            .parent()
-            .filter(|d| !d.as_os_str().is_empty() && !d.is_dir())
-        {
-            return Err(format!(
-                "cannot write {}: no folder {}",
-                path.display(),
-                dir.display()
-            ));
-        }
-        let sol = std::sync::Arc::clone(&self.lab.solution);
-        let work: Box<ExportWork> = match kind {
-            Export::Csv => Box::new(move || {
-                let dt = export_step(sol.t_end - sol.t_start);
-                let samples = sol.sample(dt);
-                let text = crate::study::export::run_csv(&sol, Some(&samples))
-                    .map_err(|e| e.to_string())?;
-                let what = format!(
-                    "{} samples every {}",
-                    samples.len(),
-                    show(dt, Dimension::Time)
-                );
-                Ok((text.into_bytes(), what))
-            }),
-            Export::Svg => {
-                if self.show_energy {
-                    return Err(
-                        "the energy chart has no SVG export yet: press e for the velocities, x for positions"
-                            .into(),
-                    );
-                }
-                let which = if self.show_positions {
-                    crate::study::figures::RunChart::Positions
-                } else {
-                    crate::study::figures::RunChart::Velocities {
-                        left: self.chart_ball != ChartBall::Right,
-                        right: self.chart_ball != ChartBall::Left,
-                    }
-                };
-                let measured = self
-                    .lab
-                    .measured()
-                    .filter(|_| self.chart_ball != ChartBall::Right && !self.show_positions)
-                    .cloned();
-                Box::new(move || {
-                    let text = crate::study::figures::run_chart(&sol, which, measured.as_ref())
-                        .map_err(|e| format!("cannot draw the chart: {e}"))?;
-                    Ok((text.into_bytes(), "the chart".to_string()))
-                })
-            }
-        };
-        self.status = Status::Info(format!("writing {}…", path.display()));
-        self.lab.start_export(move || {
-            let (bytes, what) = work()?;
-            crate::output::write_atomically(&path, &bytes).map_err(|e| e.to_string())?;
-            Ok(format!("wrote {} ({what})", path.display()))
-        });
-        Ok(())
     }
 
     pub(super) fn apply_text(&mut self, mut text: String, action: Action, target: TextTarget) {
@@ -165,27 +95,11 @@ impl App {
     }
 }
 
-/// The body of an export job: the file's bytes and what they are, or why not.
-type ExportWork = dyn FnOnce() -> Result<(Vec<u8>, String), String> + Send;
-
 #[derive(Clone, Copy)]
 pub(super) enum TextTarget {
     Value,
     Name,
     Export(Export),
-}
-
-/// The CSV export's sample step for a run `span` seconds long: 1 ms, coarser (1-2-5)
-/// for long runs so that a file stays under about 10,000 rows.
-pub fn export_step(span: f64) -> f64 {
-    let mut dt = 1e-3;
-    for factor in [2.0, 2.5, 2.0].iter().cycle() {
-        if span / dt <= 10_000.0 || !dt.is_finite() {
-            break;
-        }
-        dt *= factor;
-    }
-    dt
 }
 
 /// The prompt of the typing field for parameter `p`: which unit a bare number is in.

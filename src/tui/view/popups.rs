@@ -277,7 +277,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                     (
                         "Export the run as CSV",
                         format!(
-                            " t and x, v, u of both balls (SI) every {}",
+                            " its scene, then t and x, v, u of both balls (SI) every {}",
                             crate::settings::units::show(
                                 dt,
                                 crate::settings::units::Dimension::Time
@@ -286,8 +286,11 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                     )
                 }
                 Export::Svg => (
-                    "Export the chart as SVG",
-                    " the chart on screen (velocities or positions)".to_string(),
+                    "Export the figure on screen as SVG",
+                    match app.figure_on_screen() {
+                        Ok(f) => format!(" {}", f.describe()),
+                        Err(e) => format!(" {e}"),
+                    },
                 ),
             };
             prompt(

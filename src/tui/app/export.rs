@@ -1,0 +1,239 @@
+//! What the export keys write: `w` the run as CSV, its scene in comment lines first
+//! (so that it loads back as data with its scene), `W` the figure of the view on
+//! screen (the velocity or position chart, the regime map, the Methods diagram, the
+//! fit) as SVG; written as a job through the one atomic writer.
+
+use crate::lab::jobs::State;
+use crate::settings::units::{Dimension, show};
+use crate::study::figures;
+
+use super::{App, ChartBall, Export, Status, View};
+
+/// The figure `W` writes: the one on screen.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Figure {
+    Velocities,
+    Positions,
+    /// The regime over b and e (the Map view).
+    Map,
+    /// Error against work of every method (the Methods view).
+    Methods,
+    /// The measured series, the fitted model and the residuals (the Fit view).
+    Fit,
+}
+
+impl Figure {
+    /// The file name's part after the preset's name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Figure::Velocities => "chart",
+            Figure::Positions => "positions",
+            Figure::Map => "map",
+            Figure::Methods => "methods",
+            Figure::Fit => "fit",
+        }
+    }
+
+    /// What the file will hold, for the prompt.
+    pub fn describe(self) -> &'static str {
+        match self {
+            Figure::Velocities => "the velocity chart on screen",
+            Figure::Positions => "the position chart on screen",
+            Figure::Map => "the regime map over b and e (the Map view)",
+            Figure::Methods => "error against time of every method (the Methods view)",
+            Figure::Fit => "the data, the fitted model and the residuals (the Fit view)",
+        }
+    }
+}
+
+/// Grid of the exported regime map: finer than a terminal's cells.
+const MAP_GRID: (usize, usize) = (160, 80);
+
+/// The body of an export job: the file's bytes and what they are, or why not.
+type ExportWork = dyn FnOnce() -> Result<(Vec<u8>, String), String> + Send;
+
+impl App {
+    /// The figure `W` writes from the view on screen, or why there is none.
+    pub fn figure_on_screen(&self) -> Result<Figure, String> {
+        match self.view {
+            View::Map => Ok(Figure::Map),
+            View::Methods => Ok(Figure::Methods),
+            View::Forces => Err(
+                "the Forces view has no SVG export: W writes the charts, the Map, the Methods and the Fit view"
+                    .into(),
+            ),
+            View::Fit if self.lab.measured().is_some() => Ok(Figure::Fit),
+            _ if self.show_energy => Err(
+                "the energy chart has no SVG export yet: press e for the velocities, x for positions"
+                    .into(),
+            ),
+            _ if self.show_positions => Ok(Figure::Positions),
+            _ => Ok(Figure::Velocities),
+        }
+    }
+
+    /// Writes the run (CSV) or the figure on screen (SVG) to `name` (in `export_dir`
+    /// unless absolute), through a temporary file; says where in the status line.
+    pub(super) fn export(&mut self, kind: Export, name: &str) -> Result<(), String> {
+        let name = name.trim();
+        if name.is_empty() {
+            return Err("give a file name".into());
+        }
+        let path = self.export_dir.join(name);
+        // What can be told at once keeps the prompt open; the writing itself (the SVG
+        // takes milliseconds) runs as a job and reports in the status line.
+        if let Some(dir) = path
+            .parent()
+            .filter(|d| !d.as_os_str().is_empty() && !d.is_dir())
+        {
+            return Err(format!(
+                "cannot write {}: no folder {}",
+                path.display(),
+                dir.display()
+            ));
+        }
+        let work = match kind {
+            Export::Csv => self.csv_work(),
+            Export::Svg => self.svg_work(self.figure_on_screen()?)?,
+        };
+        self.status = Status::Info(format!("writing {}…", path.display()));
+        self.lab.start_export(move || {
+            let (bytes, what) = work()?;
+            crate::output::write_atomically(&path, &bytes).map_err(|e| e.to_string())?;
+            Ok(format!("wrote {} ({what})", path.display()))
+        });
+        Ok(())
+    }
+
+    /// The run sampled as `simulate --format csv --sample` gives it, after its scene
+    /// as comment lines.
+    fn csv_work(&self) -> Box<ExportWork> {
+        let sol = std::sync::Arc::clone(&self.lab.solution);
+        let scene = crate::study::export::scene_comments(&self.lab.saved_spec());
+        Box::new(move || {
+            let dt = export_step(sol.t_end - sol.t_start);
+            let samples = sol.sample(dt);
+            let text =
+                crate::study::export::run_csv(&sol, Some(&samples)).map_err(|e| e.to_string())?;
+            let what = format!(
+                "its scene and {} samples every {}",
+                samples.len(),
+                show(dt, Dimension::Time)
+            );
+            Ok((format!("{scene}{text}").into_bytes(), what))
+        })
+    }
+
+    /// `figure`, with what it needs taken from the lab now.
+    fn svg_work(&self, figure: Figure) -> Result<Box<ExportWork>, String> {
+        let scene = self.lab.scene;
+        let what = figure.describe().trim_start_matches("the ").to_string();
+        let done = move |svg: Result<String, Box<dyn std::error::Error>>| {
+            svg.map(|s| (s.into_bytes(), what))
+                .map_err(|e| format!("cannot draw the figure: {e}"))
+        };
+        Ok(match figure {
+            Figure::Velocities | Figure::Positions => {
+                let sol = std::sync::Arc::clone(&self.lab.solution);
+                let which = if figure == Figure::Positions {
+                    figures::RunChart::Positions
+                } else {
+                    figures::RunChart::Velocities {
+                        left: self.chart_ball != ChartBall::Right,
+                        right: self.chart_ball != ChartBall::Left,
+                    }
+                };
+                let measured = self
+                    .lab
+                    .measured()
+                    .filter(|_| self.chart_ball != ChartBall::Right && figure == Figure::Velocities)
+                    .cloned();
+                Box::new(move || done(figures::run_chart(&sol, which, measured.as_ref())))
+            }
+            Figure::Map => {
+                let preset = self.lab.preset.name.clone();
+                Box::new(move || {
+                    let (points, x, y) = regime_grid(&scene);
+                    done(figures::regime_map(&points, &x, Some(&y), &scene, &preset))
+                })
+            }
+            Figure::Methods => match self.lab.method_rows() {
+                State::Ready(rows) => {
+                    let rows = rows.clone();
+                    Box::new(move || done(figures::work_precision(&rows, &scene)))
+                }
+                _ => {
+                    return Err(
+                        "the methods are still running: export when the diagram is drawn".into(),
+                    );
+                }
+            },
+            Figure::Fit => match (self.lab.fits(), self.lab.measured()) {
+                (State::Ready(Ok(fits)), Some(m)) => {
+                    let (fits, m) = (fits.clone(), m.clone());
+                    Box::new(move || done(figures::fit_figure(&scene, &m, &fits)))
+                }
+                (State::Ready(Err(e)), _) => return Err(format!("no fit to draw: {e}")),
+                _ => return Err("the fit is still being computed: export when it is shown".into()),
+            },
+        })
+    }
+}
+
+/// The Map view's regime over b (0 … 2R·0.99) and e (0 … 1) of `scene`, as the view
+/// computes it (the analytic regime of each cell), on [`MAP_GRID`].
+fn regime_grid(
+    scene: &crate::physics::scene::Scene,
+) -> (
+    Vec<crate::study::sweep::Point>,
+    crate::study::sweep::Axis,
+    crate::study::sweep::Axis,
+) {
+    use crate::settings::params::Key;
+    use crate::study::sweep::{Axis, Point};
+    let x = Axis {
+        key: Key::Width,
+        lo: 0.0,
+        hi: 2.0 * scene.radius * 0.99,
+        n: MAP_GRID.0,
+    };
+    let y = Axis {
+        key: Key::Restitution,
+        lo: 0.0,
+        hi: 1.0,
+        n: MAP_GRID.1,
+    };
+    let points = (0..y.n)
+        .flat_map(|j| (0..x.n).map(move |i| (i, j)))
+        .map(|(i, j)| {
+            let cell = crate::physics::scene::Scene {
+                width: x.value(i),
+                restitution: y.value(j),
+                ..*scene
+            };
+            Point {
+                x: cell.width,
+                y: Some(cell.restitution),
+                regime: crate::physics::derived::Derived::of(&cell).regime,
+                v_ratio: None,
+                t_roll: None,
+                impacts: 0,
+                t_accumulation: None,
+            }
+        })
+        .collect();
+    (points, x, y)
+}
+
+/// The CSV export's sample step for a run `span` seconds long: 1 ms, coarser (1-2-5)
+/// for long runs so that a file stays under about 10,000 rows.
+pub fn export_step(span: f64) -> f64 {
+    let mut dt = 1e-3;
+    for factor in [2.0, 2.5, 2.0].iter().cycle() {
+        if span / dt <= 10_000.0 || !dt.is_finite() {
+            break;
+        }
+        dt *= factor;
+    }
+    dt
+}

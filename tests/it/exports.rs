@@ -1,0 +1,152 @@
+//! The app's exports (issue 19): `W` writes the figure of the view on screen, its
+//! numbers rounded to their meaning; `w` writes the run with its scene in comment
+//! lines first, so that it loads back as data with that scene.
+
+use std::path::PathBuf;
+
+use groovelab::settings::params::Key;
+use groovelab::tui::app::{App, Mode, Status};
+
+use crate::common::{self, press};
+
+fn scratch(test: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("groovelab-exports-{}-{test}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn app_in(dir: &std::path::Path, preset: &str) -> App {
+    let mut a = common::app(preset, common::no_user_presets("exports"));
+    a.export_dir = dir.to_path_buf();
+    a
+}
+
+/// Presses `W` and Enter; the file written and its text.
+fn export_figure(a: &mut App) -> (String, String) {
+    press(a, "W");
+    let Mode::Export(_, name) = a.mode.clone() else {
+        panic!("no export prompt: {:?}", a.status);
+    };
+    press(a, "enter");
+    a.wait();
+    assert!(
+        matches!(&a.status, Status::Info(i) if i.starts_with("wrote")),
+        "{:?}",
+        a.status
+    );
+    let svg = std::fs::read_to_string(a.export_dir.join(&name)).unwrap();
+    assert!(svg.starts_with("<svg"), "{name}");
+    (name, svg)
+}
+
+#[test]
+fn shift_w_writes_the_figure_of_the_view_on_screen() {
+    let dir = scratch("figures");
+    let mut a = app_in(&dir, "paper-b4.9");
+    // A fitted μ_k in the scene: the caption rounds it.
+    a.set_value(Key::Mu, 0.16667742330550958);
+    let (name, svg) = export_figure(&mut a);
+    assert_eq!(name, "paper-b4.9-chart.svg");
+    assert!(svg.contains("v_cm(t) and v_t(t)") && svg.contains("measured v_cm"));
+    assert!(svg.contains("mu_k = 0.1667,") && !svg.contains("0.16667742"));
+    press(&mut a, "x");
+    let (name, svg) = export_figure(&mut a);
+    assert_eq!(name, "paper-b4.9-positions.svg");
+    assert!(svg.contains("x(t) of both balls"));
+    press(&mut a, "x g");
+    let (name, svg) = export_figure(&mut a);
+    assert_eq!(name, "paper-b4.9-map.svg");
+    assert!(svg.contains("Regime map (paper-b4.9)") && svg.contains("b*(e)"));
+    press(&mut a, "g f");
+    a.wait();
+    let (name, svg) = export_figure(&mut a);
+    assert_eq!(name, "paper-b4.9-fit.svg");
+    assert!(svg.contains("model fit mu = ") && svg.contains("(2 sigma)"));
+    assert!(!svg.contains("NaN"));
+    press(&mut a, "f c");
+    a.wait();
+    let (name, svg) = export_figure(&mut a);
+    assert_eq!(name, "paper-b4.9-methods.svg");
+    assert!(svg.contains("Work-precision") && svg.contains("mu = 0.1667,"));
+    // The energy chart has none yet: said at once, no prompt.
+    press(&mut a, "c e W");
+    assert_eq!(a.mode, Mode::Normal);
+    assert!(matches!(&a.status, Status::Error(e) if e.contains("energy chart has no SVG")));
+    let written = std::fs::read_dir(&dir).unwrap().count();
+    assert_eq!(written, 5);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn the_csv_export_loads_back_as_data_with_its_scene() {
+    let dir = scratch("roundtrip");
+    let mut a = app_in(&dir, "paper-b4.4");
+    a.set_value(Key::Mu, 0.16667742330550958);
+    a.set_value(Key::Width, 0.045);
+    press(&mut a, "w enter");
+    a.wait();
+    let file = dir.join("paper-b4.4-run.csv");
+    let text = std::fs::read_to_string(&file).unwrap();
+    assert!(text.starts_with("# groovelab run"), "{}", &text[..200]);
+    assert!(
+        text.contains("# scene width = 4.5 cm\n"),
+        "{}",
+        &text[..600]
+    );
+    // Rounded to its meaning: 6 significant digits, not the float's 17.
+    assert!(text.contains("# scene mu = 0.166677\n"), "{}", &text[..600]);
+    assert!(text.contains("\nt,x_left,v_left,u_left,x_right,v_right,u_right\n"));
+    let f = file.to_str().unwrap();
+    // Loaded with no preset or option: the scene is the file's.
+    let out = common::groovelab(&["fit", "--data", f, "--format", "json"]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{err}");
+    let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let s = &a.lab.scene;
+    let truth = [
+        ("radius", s.radius),
+        ("width", s.width),
+        ("mu", s.mu),
+        ("g", s.g),
+        ("restitution", s.restitution),
+        ("rolling_resistance", s.rolling_resistance),
+    ];
+    for (name, want) in truth {
+        let got = j["scene"][name].as_f64().unwrap();
+        // Within the comment's rounding: half a unit of the 6th significant digit.
+        assert!(
+            (got - want).abs() <= 5e-6 * want.abs(),
+            "{name}: {got} vs {want}"
+        );
+    }
+    for ball in ["left", "right"] {
+        for (name, want) in [("mass", s.left.mass), ("v0", s.left.v0)] {
+            let got = j["scene"][ball][name].as_f64().unwrap();
+            assert!(
+                (got - want).abs() <= 5e-6 * want.abs(),
+                "{ball} {name}: {got} vs {want}"
+            );
+        }
+    }
+    // The model's own run gives back its μ_k (1 ms samples, exact values).
+    let mu = j["model_fit"]["mu"].as_f64().unwrap();
+    assert!((mu - s.mu).abs() < 1e-3, "μ_k = {mu}");
+    // An option given on the command line wins over the file's scene.
+    let out = common::groovelab(&["fit", "--data", f, "--width", "4.6cm", "--format", "json"]);
+    let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!(j["scene"]["width"].as_f64(), Some(0.046));
+    // The app (render) opens it in its scene too.
+    let out = common::groovelab(&["render", "--data", f, "--size", "120x40"]);
+    let screen = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(
+        screen.contains("4.50 cm") && screen.contains("0.1667"),
+        "{screen}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
