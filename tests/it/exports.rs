@@ -25,8 +25,9 @@ fn app_in(dir: &std::path::Path, preset: &str) -> App {
 /// Presses `W` and Enter; the file written and its text.
 fn export_figure(a: &mut App) -> (String, String) {
     press(a, "W");
-    let Mode::Export(_, name) = a.mode.clone() else {
-        panic!("no export prompt: {:?}", a.status);
+    let name = match &a.mode {
+        Mode::Export(_, field) => field.value().to_string(),
+        _ => panic!("no export prompt: {:?}", a.status),
     };
     press(a, "enter");
     a.wait();
