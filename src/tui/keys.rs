@@ -249,13 +249,13 @@ pub const TABLE: &[Binding] = &[
     Binding {
         keys: &["w"],
         action: Action::Export(Export::Csv),
-        help: "write the run to a CSV file (its scene, then the columns of simulate --format csv)",
+        help: "write the run, its scene first, to a CSV file (loads with --data)",
         hint: None,
     },
     Binding {
         keys: &["W"],
         action: Action::Export(Export::Svg),
-        help: "write the figure on screen (chart, map, Methods, fit) to an SVG file",
+        help: "write the figure on screen to an SVG file",
         hint: None,
     },
     Binding {
