@@ -6,7 +6,7 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 use super::CliError;
 use crate::input::params::{Key, PARAMS, SceneSpec};
 use crate::input::preset::{self, Preset};
-use crate::input::units::{Dimension, parse_quantity};
+use crate::input::units::{Dimension, UnitError, parse_quantity};
 use crate::methods::Method;
 use crate::physics::scene::{Scene, Span};
 use crate::study::fit::Free;
@@ -258,17 +258,15 @@ pub enum Format {
     Csv,
 }
 
-fn quantity(text: &str, dim: Dimension) -> Result<f64, String> {
-    parse_quantity(text, dim).map_err(|e| e.to_string())
+// clap shows the parser's error after the option's name.
+fn speed(s: &str) -> Result<f64, UnitError> {
+    parse_quantity(s, Dimension::Speed)
 }
-fn speed(s: &str) -> Result<f64, String> {
-    quantity(s, Dimension::Speed)
+fn time(s: &str) -> Result<f64, UnitError> {
+    parse_quantity(s, Dimension::Time)
 }
-fn time(s: &str) -> Result<f64, String> {
-    quantity(s, Dimension::Time)
-}
-fn ratio(s: &str) -> Result<f64, String> {
-    quantity(s, Dimension::Ratio)
+fn ratio(s: &str) -> Result<f64, UnitError> {
+    parse_quantity(s, Dimension::Ratio)
 }
 
 /// Scene options shared by every command that takes a scene: `--preset` and one
@@ -315,7 +313,7 @@ impl Args for SceneArgs {
             let arg = clap::Arg::new(p.name)
                 .long(p.flag)
                 .value_name(if dim == Dimension::Ratio { "X" } else { "Q" })
-                .value_parser(move |s: &str| quantity(s, dim))
+                .value_parser(move |s: &str| parse_quantity(s, dim))
                 .allow_hyphen_values(true)
                 .global(true)
                 .help(p.help_text())

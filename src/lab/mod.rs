@@ -28,7 +28,10 @@ use crate::study::measured::{self, InScene, Measured, Series};
 use analyses::Generation;
 use jobs::{Job, Jobs};
 
-pub use analyses::{METHOD_VIEW_LEVELS, OVERLAY_LEVELS, Overlay, level_settings};
+pub use analyses::{
+    ExportError, ExportResult, Exported, METHOD_VIEW_LEVELS, OVERLAY_LEVELS, Overlay,
+    level_settings,
+};
 pub use span::SpanEnd;
 pub use views::Story;
 
@@ -36,7 +39,7 @@ use span::{preset_span_end, solve_shown};
 use views::{Cached, data_rms, extent};
 
 /// Why a scene could not be saved as a preset.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[derive(Debug, thiserror::Error)]
 pub enum SaveError {
     #[error("name '{0}', allowed letters, digits, - _ .")]
     BadName(String),
@@ -44,8 +47,16 @@ pub enum SaveError {
     NoFolder,
     #[error("{0} exists")]
     Exists(PathBuf),
+    /// The preset's text could not be made (the writer's reason).
     #[error("{0}")]
-    Io(String),
+    Text(String),
+    /// What would be written does not load again (a bug: never write it).
+    #[error("the file would not load again: {0}")]
+    WouldNotLoad(crate::input::preset::PresetError),
+    #[error("{0}")]
+    Folder(std::io::Error),
+    #[error(transparent)]
+    Write(crate::output::OutputError),
 }
 
 /// The line fit's window, s: from, to (`None`: the sliding phase's end).
@@ -105,7 +116,7 @@ pub struct Lab {
     position_fit: Job<Generation, Result<ModelFit, FitError>>,
     /// A file the app is writing (run CSV, chart SVG): the status message, or why not;
     /// each export its own request.
-    export: Job<u64, Result<String, String>>,
+    export: Job<u64, ExportResult>,
     exports: u64,
     samples: Cached<usize, Snapshot>,
     energies: Cached<usize, (f64, EnergySplit)>,
@@ -400,13 +411,12 @@ impl Lab {
             },
         );
         let text = crate::input::preset::to_toml(name, &description, &spec, self.measured())
-            .map_err(SaveError::Io)?;
+            .map_err(SaveError::Text)?;
         // What is written must load again: check before reporting success.
         Preset::parse(&text, name, crate::input::preset::Origin::BuiltIn)
-            .map_err(|e| SaveError::Io(format!("the file would not load again: {e}")))?;
-        std::fs::create_dir_all(dir).map_err(|e| SaveError::Io(e.to_string()))?;
-        crate::output::write_atomically(&path, text.as_bytes())
-            .map_err(|e| SaveError::Io(e.to_string()))?;
+            .map_err(SaveError::WouldNotLoad)?;
+        std::fs::create_dir_all(dir).map_err(SaveError::Folder)?;
+        crate::output::write_atomically(&path, text.as_bytes()).map_err(SaveError::Write)?;
         Ok(path)
     }
 }

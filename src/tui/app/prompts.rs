@@ -4,7 +4,7 @@
 
 use crate::input::params::Param;
 use crate::input::units::{Dimension, parse_typed, show};
-use crate::lab::SaveError;
+use crate::lab::{ExportError, Exported, SaveError};
 
 use super::{Action, App, ChartBall, Export, Library, Mode, ROWS, Status};
 
@@ -57,8 +57,7 @@ impl App {
             Export::Csv => Box::new(move || {
                 let dt = export_step(sol.t_end - sol.t_start);
                 let samples = sol.sample(dt);
-                let text = crate::study::export::run_csv(&sol, Some(&samples))
-                    .map_err(|e| e.to_string())?;
+                let text = crate::study::export::run_csv(&sol, Some(&samples))?;
                 let what = format!(
                     "{} samples every {}",
                     samples.len(),
@@ -87,8 +86,7 @@ impl App {
                     .filter(|_| self.chart_ball != ChartBall::Right && !self.show_positions)
                     .cloned();
                 Box::new(move || {
-                    let text = crate::study::figures::run_chart(&sol, which, measured.as_ref())
-                        .map_err(|e| format!("cannot draw the chart: {e}"))?;
+                    let text = crate::study::figures::run_chart(&sol, which, measured.as_ref())?;
                     Ok((text.into_bytes(), "the chart".to_string()))
                 })
             }
@@ -96,8 +94,8 @@ impl App {
         self.status = Status::Info(format!("writing {}…", path.display()));
         self.lab.start_export(move || {
             let (bytes, what) = work()?;
-            crate::output::write_atomically(&path, &bytes).map_err(|e| e.to_string())?;
-            Ok(format!("wrote {} ({what})", path.display()))
+            crate::output::write_atomically(&path, &bytes)?;
+            Ok(Exported { path, what })
         });
         Ok(())
     }
@@ -166,7 +164,7 @@ impl App {
 }
 
 /// The body of an export job: the file's bytes and what they are, or why not.
-type ExportWork = dyn FnOnce() -> Result<(Vec<u8>, String), String> + Send;
+type ExportWork = dyn FnOnce() -> Result<(Vec<u8>, String), ExportError> + Send;
 
 #[derive(Clone, Copy)]
 pub(super) enum TextTarget {
