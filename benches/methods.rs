@@ -5,9 +5,9 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use groovelab::input::preset::Preset;
 use groovelab::methods::{Method, Model, Observer, Settings, Y, integrate, start_state};
 use groovelab::study::compare::sweep;
+use groovelab::study::preset::Preset;
 
 struct Finite;
 impl Observer for Finite {

@@ -6,8 +6,8 @@ use std::fmt;
 use std::path::PathBuf;
 
 use super::{Cli, MAX_SAMPLES, SweepFormat};
-use crate::input::units::{Dimension, UnitError, show, show_exact};
 use crate::methods::Method;
+use crate::settings::units::{Dimension, UnitError, show, show_exact};
 
 /// An option of the command line by its clap id (the derive's field name), shown as
 /// clap defines it (`--NAME`) where a message is printed, so a renamed option is
@@ -66,9 +66,9 @@ fn count_text(dt: f64, count: f64) -> String {
 #[derive(Debug, thiserror::Error)]
 pub enum CliError {
     #[error(transparent)]
-    Scene(#[from] crate::input::params::SceneError),
+    Scene(#[from] crate::settings::params::SceneError),
     #[error(transparent)]
-    Preset(#[from] crate::input::preset::PresetError),
+    Preset(#[from] crate::study::preset::PresetError),
     #[error(transparent)]
     File(#[from] crate::input::FileError),
     #[error(transparent)]

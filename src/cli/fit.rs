@@ -9,11 +9,11 @@ use super::{
     output::write_atomically,
 };
 use crate::input::data::Reading;
-use crate::input::preset::Preset;
-use crate::input::units::{Dimension, show, significant, unit_factor};
 use crate::physics::scene::Scene;
+use crate::settings::units::{Dimension, show, significant, unit_factor};
 use crate::study::fit::{self, Candidate, Fits, Free, ModelFit};
 use crate::study::measured::{self, Derive, Found, Measured, Series};
+use crate::study::preset::Preset;
 
 /// The measured series for `scene`, and what was found in a position track.
 pub fn load(

@@ -8,12 +8,12 @@ use super::{
     BadValue, CliError, CompareArgs, CompareFormat, Flag, Format, MAX_SAMPLES, SceneArgs,
     SimulateArgs,
 };
-use crate::input::units::{Dimension, show};
 use crate::methods::{self, Method, Settings, Y};
 use crate::physics::derived::Derived;
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{Event, Snapshot, Solution};
+use crate::settings::units::{Dimension, show};
 use crate::study::compare::{self as cmp, Row};
 
 /// Settings of a time-stepping run from the options, checked.
@@ -387,7 +387,7 @@ fn table(rows: &[Row]) -> String {
                 exact.time_median_s,
                 best.method.name(),
                 best.time_median_s,
-                crate::input::units::significant(factor, 2)
+                crate::settings::units::significant(factor, 2)
             );
         }
         None => {

@@ -6,8 +6,6 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
-use crate::input::params::Key;
-use crate::input::preset::{self, Preset};
 use crate::lab::{Lab, SpanEnd};
 use crate::methods::Method;
 use crate::physics::derived::{Derived, Summary};
@@ -15,6 +13,8 @@ use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{Snapshot, Solution};
 use crate::physics::story::{self, After};
+use crate::settings::params::Key;
+use crate::study::preset::{self, Preset};
 use crate::tui::{
     self,
     app::{App, Library},
@@ -28,8 +28,8 @@ mod manual;
 mod methods;
 mod progress;
 mod sweep;
-use crate::input::units::{Dimension, show, significant};
 pub use crate::output::{self, write_atomically};
+use crate::settings::units::{Dimension, show, significant};
 pub use args::*;
 pub use error::{BadValue, CliError, Flag, Usage};
 pub use sweep::run_with_stop as sweep_with_stop;

@@ -6,11 +6,11 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use rayon::prelude::*;
 use serde::Serialize;
 
-use crate::input::params::{Key, SceneError, SceneSpec};
-use crate::input::units::{UnitError, parse_quantity};
 use crate::physics::derived::{Derived, Regime};
 use crate::physics::engine;
 use crate::physics::scene::Span;
+use crate::settings::params::{Key, SceneError, SceneSpec};
+use crate::settings::units::{UnitError, parse_quantity};
 
 /// One swept parameter: `key` from `lo` to `hi` (SI) in `n` points, both ends included.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]

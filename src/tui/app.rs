@@ -12,9 +12,9 @@ use std::cell::Cell;
 use std::path::PathBuf;
 use std::sync::LazyLock;
 
-use crate::input::params::{Key, PARAMS, Param};
-use crate::input::units::{Dimension, show, significant};
 use crate::lab::Lab;
+use crate::settings::params::{Key, PARAMS, Param};
+use crate::settings::units::{Dimension, show, significant};
 
 pub use super::vocabulary::{
     Action, ChartBall, Export, FPS, Library, Mode, Prediction, SPEEDS, Status, View,

@@ -4,7 +4,7 @@
 
 use std::path::PathBuf;
 
-use crate::input::preset::Preset;
+use crate::study::preset::Preset;
 
 /// Which ball the velocity chart shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -3,11 +3,11 @@
 //! pieces; the committed example file.
 
 use groovelab::input::data::{self, Reading};
-use groovelab::input::preset::Preset;
 use groovelab::physics::scene::Scene;
 use groovelab::study::fit::{self, Free};
 use groovelab::study::measured::track::{self, TrackFits};
 use groovelab::study::measured::{self, Derive, Found, Measured, RawSeries};
+use groovelab::study::preset::Preset;
 use groovelab::study::video::{self, Format, Video};
 
 use crate::common::groovelab;

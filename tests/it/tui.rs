@@ -2,10 +2,10 @@
 //! `render` prints (insta snapshots, checked by eye when recorded).
 
 use groovelab::cli::{DataArgs, RenderArgs, SceneArgs, render_with};
-use groovelab::input::params::Key;
-use groovelab::input::preset::Preset;
 use groovelab::lab::jobs::State;
 use groovelab::physics::derived::Regime;
+use groovelab::settings::params::Key;
+use groovelab::study::preset::Preset;
 use groovelab::tui::app::{App, Library, Mode, ROWS, Status, View};
 use groovelab::tui::keys;
 

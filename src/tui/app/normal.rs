@@ -1,11 +1,11 @@
 //! What each action does on the main screen (no popup open): selection and nudging,
 //! playback, views, the overlay, the fit, and opening the popups and prompts.
 
-use crate::input::params::Key;
-use crate::input::units::show;
 use crate::lab::OVERLAY_LEVELS;
 use crate::lab::jobs::State;
 use crate::methods::Method;
+use crate::settings::params::Key;
+use crate::settings::units::show;
 
 use super::{Action, App, ChartBall, Export, Mode, ROWS, SPEEDS, Status, View};
 

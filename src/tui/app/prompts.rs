@@ -2,9 +2,10 @@
 //! (typing a value, a save name, an export file name), and what confirming them does
 //! (set the value, save the preset, write the export).
 
-use crate::input::params::Param;
-use crate::input::units::{Dimension, parse_typed, show};
-use crate::lab::{ExportError, Exported, SaveError};
+use crate::input::preset::{SaveError, save};
+use crate::lab::{ExportError, Exported};
+use crate::settings::params::Param;
+use crate::settings::units::{Dimension, parse_typed, show};
 
 use super::{Action, App, ChartBall, Export, Library, Mode, ROWS, Status};
 
@@ -147,7 +148,7 @@ impl App {
 
     /// Saves the scene as a user preset, asking before it replaces a file.
     pub(super) fn save(&mut self, name: &str, overwrite: bool) {
-        match self.lab.save(self.library.dir.as_deref(), name, overwrite) {
+        match save(&self.lab, self.library.dir.as_deref(), name, overwrite) {
             Ok(path) => {
                 self.library = Library::at(self.library.dir.clone());
                 self.status = Status::Info(format!("saved {}", path.display()));

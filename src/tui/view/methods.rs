@@ -7,10 +7,10 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::Widget;
 
 use super::{Ranked, block, by_priority, draw_lines};
-use crate::input::units::fit_number;
 use crate::lab::jobs::State;
 use crate::methods::Method;
 use crate::physics::derived::Summary;
+use crate::settings::units::fit_number;
 use crate::study::compare::{Row, RunStatus, fitted_order};
 use crate::tui::app::App;
 use crate::tui::plot::{Draw, Plot, Series};

@@ -6,8 +6,8 @@ use ratatui::layout::Rect;
 use ratatui::widgets::Widget;
 
 use super::block;
-use crate::input::params::Key;
-use crate::input::units::{Dimension, fit_number};
+use crate::settings::params::Key;
+use crate::settings::units::{Dimension, fit_number};
 use crate::tui::app::{App, Mode, ROWS};
 use crate::tui::theme::Theme;
 

@@ -278,7 +278,10 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                         "Export the run as CSV",
                         format!(
                             " t and x, v, u of both balls (SI) every {}",
-                            crate::input::units::show(dt, crate::input::units::Dimension::Time)
+                            crate::settings::units::show(
+                                dt,
+                                crate::settings::units::Dimension::Time
+                            )
                         ),
                     )
                 }
