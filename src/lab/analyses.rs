@@ -19,19 +19,9 @@ pub struct Exported {
     pub what: String,
 }
 
-/// Why an export wrote nothing.
-#[derive(Debug, thiserror::Error)]
-pub enum ExportError {
-    #[error(transparent)]
-    Csv(#[from] csv::Error),
-    #[error("cannot draw the chart: {0}")]
-    Chart(#[from] crate::study::figures::FigureError),
-    #[error(transparent)]
-    Write(#[from] crate::output::OutputError),
-}
-
-/// What an export job reports (shared: a finished job's result is read by reference).
-pub type ExportResult = Result<Exported, std::sync::Arc<ExportError>>;
+/// What an export job reports: the file, or why nothing was written (the edge's own
+/// error, kept whole; shared, as a finished job's result is read by reference).
+pub type ExportResult = Result<Exported, std::sync::Arc<dyn std::error::Error + Send + Sync>>;
 
 /// Steps of the overlay and the Methods view: 10 ms … 10 µs (fixed-step methods),
 /// tolerances 1e-2 … 1e-8 (rk45).
@@ -172,13 +162,13 @@ impl Lab {
     /// Writes a file off the key press (a chart's SVG takes milliseconds): `work`
     /// returns the file written, or why nothing was written. A newer export
     /// supersedes a running one.
-    pub fn start_export(
+    pub fn start_export<E: std::error::Error + Send + Sync + 'static>(
         &mut self,
-        work: impl FnOnce() -> Result<Exported, ExportError> + Send + 'static,
+        work: impl FnOnce() -> Result<Exported, E> + Send + 'static,
     ) {
         self.exports += 1;
         self.export.request(&self.jobs, self.exports, move |_| {
-            work().map_err(std::sync::Arc::new)
+            work().map_err(|e| std::sync::Arc::new(e) as _)
         });
     }
 

@@ -28,8 +28,7 @@ use analyses::Generation;
 use jobs::{Job, Jobs};
 
 pub use analyses::{
-    ExportError, ExportResult, Exported, METHOD_VIEW_LEVELS, OVERLAY_LEVELS, Overlay,
-    level_settings,
+    ExportResult, Exported, METHOD_VIEW_LEVELS, OVERLAY_LEVELS, Overlay, level_settings,
 };
 pub use span::SpanEnd;
 pub use views::Story;

@@ -3,7 +3,7 @@
 //! (set the value, save the preset, write the export).
 
 use crate::input::preset::{SaveError, save};
-use crate::lab::{ExportError, Exported};
+use crate::lab::Exported;
 use crate::settings::params::Param;
 use crate::settings::units::{Dimension, parse_typed, show};
 
@@ -96,7 +96,7 @@ impl App {
         self.lab.start_export(move || {
             let (bytes, what) = work()?;
             crate::output::write_atomically(&path, &bytes)?;
-            Ok(Exported { path, what })
+            Ok::<_, ExportError>(Exported { path, what })
         });
         Ok(())
     }
@@ -162,6 +162,17 @@ impl App {
             Err(e) => self.status = Status::Error(format!("not saved: {e}")),
         }
     }
+}
+
+/// Why an export wrote nothing.
+#[derive(Debug, thiserror::Error)]
+pub enum ExportError {
+    #[error(transparent)]
+    Csv(#[from] csv::Error),
+    #[error("cannot draw the chart: {0}")]
+    Chart(#[from] crate::study::figures::FigureError),
+    #[error(transparent)]
+    Write(#[from] crate::output::OutputError),
 }
 
 /// The body of an export job: the file's bytes and what they are, or why not.
