@@ -291,15 +291,26 @@ fn csv_output(solution: &Solution, samples: Option<&[Snapshot]>) -> Result<Strin
     crate::study::export::run_csv(solution, samples).map_err(|e| CliError::Io(e.into()))
 }
 
+/// `simulate`'s table: the scene, what the run does, and its events (and samples).
 fn table(
     preset: &Preset,
     solution: &Solution,
     derived: &Derived,
     samples: Option<&[Snapshot]>,
 ) -> String {
+    let mut out = String::new();
+    scene_lines(&mut out, preset, solution, derived);
+    story_lines(&mut out, preset, solution, derived);
+    run_lines(&mut out, solution);
+    let _ = writeln!(out);
+    state_rows(&mut out, solution, samples);
+    out
+}
+
+/// The preset, the scene, the balls and the derived values with the paper's regime.
+fn scene_lines(out: &mut String, preset: &Preset, solution: &Solution, derived: &Derived) {
     let sc = &solution.scene;
     let len = |v: f64| show(v, Dimension::Length);
-    let mut out = String::new();
     let _ = writeln!(out, "preset   {}: {}", preset.name, preset.description);
     let b_star = derived
         .b_star
@@ -334,6 +345,11 @@ fn table(
         derived.why(),
         b_star
     );
+}
+
+/// What the run does (against the paper's criterion and the preset's data) and the
+/// left ball after the first impact with the forces then.
+fn story_lines(out: &mut String, preset: &Preset, solution: &Solution, derived: &Derived) {
     // What this run does, beside the paper's criterion above.
     let outcome = Summary::of(solution).outcome;
     let _ = writeln!(
@@ -377,6 +393,10 @@ fn table(
             significant(rec.a_t, 4)
         );
     }
+}
+
+/// The impacts, precision notes and the energy balance of the run.
+fn run_lines(out: &mut String, solution: &Solution) {
     let summary = Summary::of(solution);
     let accumulation = summary.accumulation_time.map_or(String::new(), |t| {
         format!(", accumulating at T∞ = {}", show(t, Dimension::Time))
@@ -407,7 +427,10 @@ fn table(
         e1.lost.impacts,
         e1.lost.rolling_resistance
     );
-    let _ = writeln!(out);
+}
+
+/// The state at each event, then at each sample if any.
+fn state_rows(out: &mut String, solution: &Solution, samples: Option<&[Snapshot]>) {
     let header = state_header();
     let row = state_row;
     let _ = writeln!(out, "{header}");
@@ -424,7 +447,6 @@ fn table(
             let _ = writeln!(out, "{}", row(s.t, "", "", s.left, s.right));
         }
     }
-    out
 }
 
 /// The closed-form recovery of the left ball, in one line.
