@@ -285,7 +285,7 @@ pub const TABLE: &[Binding] = &[
     Binding {
         keys: &["esc"],
         action: Action::Cancel,
-        help: "close a popup, cancel typing; on the main screen: quit",
+        help: "close a popup, cancel typing (it never quits: q does)",
         hint: None,
     },
     Binding {
