@@ -17,13 +17,13 @@ use crate::settings::params::{Key, PARAMS, Param};
 use crate::settings::units::{Dimension, show, significant};
 
 pub use super::vocabulary::{
-    Action, ChartBall, Export, FPS, Library, Mode, Prediction, SPEEDS, Status, View,
+    Action, ChartBall, Export, FPS, Field, Library, Mode, Prediction, SPEEDS, Status, View,
 };
 pub use predict::reveal_time;
 pub use prompts::{export_step, typing_prompt};
 
 use super::vocabulary::{DEFAULT_SPEED, WorkAxis};
-use prompts::TextTarget;
+use prompts::{Histories, TextTarget};
 
 /// The rows of the parameters panel, top to bottom: the table's rows that have steps.
 pub static ROWS: LazyLock<Vec<&'static Param>> =
@@ -64,6 +64,8 @@ pub struct App {
     pub hide_b: bool,
     /// The last prediction (predict, observe, explain).
     pub prediction: Option<Prediction>,
+    /// What was typed into each kind of prompt this session (↑/↓ bring it back).
+    histories: Histories,
 }
 
 impl App {
@@ -91,6 +93,7 @@ impl App {
             forces_ball: 0,
             hide_b: false,
             prediction: None,
+            histories: Histories::default(),
         }
     }
 
@@ -215,9 +218,9 @@ impl App {
             }
             Mode::Picker(i) => self.apply_picker(i, action),
             Mode::Predict => self.apply_predict(action),
-            Mode::Edit(text) => self.apply_text(text, action, TextTarget::Value),
-            Mode::SaveName(text) => self.apply_text(text, action, TextTarget::Name),
-            Mode::Export(kind, text) => self.apply_text(text, action, TextTarget::Export(kind)),
+            Mode::Edit(field) => self.apply_text(field, action, TextTarget::Value),
+            Mode::SaveName(field) => self.apply_text(field, action, TextTarget::Name),
+            Mode::Export(kind, field) => self.apply_text(field, action, TextTarget::Export(kind)),
             Mode::ConfirmOverwrite(name) => {
                 self.mode = Mode::Normal;
                 match action {

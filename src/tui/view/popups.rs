@@ -7,8 +7,9 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Clear, Paragraph, Widget, Wrap};
 
 use super::{block, wrap};
-use crate::tui::app::{App, Export, Mode, Status, export_step};
+use crate::tui::app::{App, Export, Field, Mode, Status, export_step};
 use crate::tui::keys::TABLE;
+use crate::tui::line::caret;
 use crate::tui::theme::Theme;
 
 fn centered(area: Rect, width: u16, height: u16) -> Rect {
@@ -197,8 +198,8 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         Mode::Table => data_table(app, area, buf, theme),
         Mode::Predict => super::forces::question(app, area, buf, theme),
         Mode::Picker(selected) => preset_picker(app, *selected, area, buf, theme),
-        Mode::SaveName(text) => save_prompt(app, text, area, buf, theme),
-        Mode::Export(kind, text) => export_prompt(app, *kind, text, area, buf, theme),
+        Mode::SaveName(field) => save_prompt(app, field, area, buf, theme),
+        Mode::Export(kind, field) => export_prompt(app, *kind, field, area, buf, theme),
         Mode::ConfirmOverwrite(name) => confirm_overwrite(name, area, buf, theme),
     }
 }
@@ -256,7 +257,7 @@ fn preset_picker(app: &App, selected: usize, area: Rect, buf: &mut Buffer, theme
 }
 
 /// The name to save the scene under, and where it goes.
-fn save_prompt(app: &App, text: &str, area: Rect, buf: &mut Buffer, theme: &Theme) {
+fn save_prompt(app: &App, field: &Field, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let dir = app
         .library
         .dir
@@ -267,7 +268,7 @@ fn save_prompt(app: &App, text: &str, area: Rect, buf: &mut Buffer, theme: &Them
     prompt(
         app,
         "Save the scene as a user preset",
-        &format!(" name: {text}_"),
+        (" name: ", field),
         &[
             format!(" saved in {dir}"),
             if app.lab.measured().is_some() {
@@ -284,7 +285,14 @@ fn save_prompt(app: &App, text: &str, area: Rect, buf: &mut Buffer, theme: &Them
 }
 
 /// The file to export the run (CSV) or the chart (SVG) to, and what it will hold.
-fn export_prompt(app: &App, kind: Export, text: &str, area: Rect, buf: &mut Buffer, theme: &Theme) {
+fn export_prompt(
+    app: &App,
+    kind: Export,
+    field: &Field,
+    area: Rect,
+    buf: &mut Buffer,
+    theme: &Theme,
+) {
     let (title, what) = match kind {
         Export::Csv => {
             let sol = &app.lab.solution;
@@ -305,7 +313,7 @@ fn export_prompt(app: &App, kind: Export, text: &str, area: Rect, buf: &mut Buff
     prompt(
         app,
         title,
-        &format!(" file: {text}_"),
+        (" file: ", field),
         &[
             what,
             if app.export_dir == std::path::Path::new(".") {
@@ -340,7 +348,7 @@ fn confirm_overwrite(name: &str, area: Rect, buf: &mut Buffer, theme: &Theme) {
 fn prompt(
     app: &App,
     title: &str,
-    field: &str,
+    (label, field): (&str, &Field),
     notes: &[String],
     area: Rect,
     buf: &mut Buffer,
@@ -349,7 +357,17 @@ fn prompt(
     let g = theme.glyphs;
     let width = area.width.saturating_sub(4).min(74);
     let room = usize::from(width.saturating_sub(2));
-    let mut lines = vec![Line::from(Span::styled(g.text(field), theme.text))];
+    // The line around its cursor, the cursor's cell reversed.
+    let (shown, at) = field.shown(room.saturating_sub(label.chars().count() + 1));
+    let piece =
+        |from: usize, to: usize| -> String { shown.chars().skip(from).take(to - from).collect() };
+    let end = shown.chars().count();
+    let mut lines = vec![Line::from(vec![
+        Span::styled(label.to_string(), theme.text),
+        Span::styled(g.text(&piece(0, at)), theme.text),
+        Span::styled(g.text(&piece(at, at + 1)), caret(theme.text)),
+        Span::styled(g.text(&piece(at + 1, end)), theme.text),
+    ])];
     if let Status::Error(e) = &app.status {
         for row in wrap(Line::from(g.text(&format!(" {e}"))), room) {
             lines.push(row.style(theme.error));
