@@ -6,10 +6,10 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use groovelab::input::preset::Preset;
 use groovelab::methods::{Method, Model, Observer, Settings, Y, integrate, start_state};
 use groovelab::physics::scene::{Ball, Scene};
 use groovelab::study::compare::sweep;
+use groovelab::study::preset::Preset;
 
 struct Finite;
 impl Observer for Finite {

@@ -5,7 +5,7 @@ use std::hint::black_box;
 use std::sync::atomic::AtomicBool;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use groovelab::input::preset::Preset;
+use groovelab::study::preset::Preset;
 use groovelab::study::sweep::{self, point};
 
 fn sweeps(c: &mut Criterion) {

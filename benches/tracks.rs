@@ -6,8 +6,8 @@ use std::hint::black_box;
 use criterion::{Criterion, criterion_group, criterion_main};
 use groovelab::input::data;
 use groovelab::input::data::Reading;
-use groovelab::input::preset::Preset;
 use groovelab::study::measured::{self, Derive};
+use groovelab::study::preset::Preset;
 use groovelab::study::video::{self, Format, Video};
 
 fn tracks(c: &mut Criterion) {

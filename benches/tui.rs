@@ -5,9 +5,9 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use groovelab::input::params::Key;
-use groovelab::input::preset::Preset;
 use groovelab::lab::Lab;
+use groovelab::settings::params::Key;
+use groovelab::study::preset::Preset;
 use groovelab::tui::app::{App, Library};
 use groovelab::tui::keys;
 use groovelab::tui::theme::{Glyphs, Theme};

@@ -4,12 +4,12 @@
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
 use super::CliError;
-use crate::input::params::{Key, PARAMS, SceneSpec};
-use crate::input::preset::{self, Preset};
-use crate::input::units::{Dimension, parse_quantity};
 use crate::methods::Method;
 use crate::physics::scene::{Scene, Span};
+use crate::settings::params::{Key, PARAMS, SceneSpec};
+use crate::settings::units::{Dimension, parse_quantity};
 use crate::study::fit::Free;
+use crate::study::preset::{self, Preset};
 
 #[derive(Parser, Debug)]
 #[command(

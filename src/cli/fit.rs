@@ -8,11 +8,11 @@ use super::{
     CliError, DataArgs, FitArgs, FitFormat, SceneArgs, TrackRole, output::write_atomically,
 };
 use crate::input::data::Reading;
-use crate::input::preset::Preset;
-use crate::input::units::{Dimension, show, significant, unit_factor};
 use crate::physics::scene::Scene;
+use crate::settings::units::{Dimension, show, significant, unit_factor};
 use crate::study::fit::{self, Candidate, Fits, Free, ModelFit};
 use crate::study::measured::{self, Derive, Found, Measured, Series};
+use crate::study::preset::Preset;
 
 /// The measured series for `scene`, and what was found in a position track.
 pub fn load(
@@ -471,7 +471,7 @@ fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit, paper_data:
     }
     let _ = writeln!(
         out,
-        "  (the velocity fit weights each derived point by its uncertainty but counts the points as independent and the impact time as exact: its ± is too small; the position fit profiles out the impact's time and place, and its ± is the one to quote)"
+        "  (the velocity fit takes the model through the same local fits as the data, profiles out the impact time and counts the frames neighbouring points share; the position fit needs no derivatives and is the more precise: quote it)"
     );
     out
 }

@@ -5,12 +5,12 @@ use std::fmt::Write as _;
 use serde::Serialize;
 
 use super::{CliError, CompareArgs, CompareFormat, Format, MAX_SAMPLES, SceneArgs, SimulateArgs};
-use crate::input::units::{Dimension, show, show_exact};
 use crate::methods::{self, Method, Settings, Y};
 use crate::physics::derived::Derived;
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{Event, Snapshot, Solution};
+use crate::settings::units::{Dimension, show, show_exact};
 use crate::study::compare::{self as cmp, Row};
 
 /// Settings of a time-stepping run from the options, checked.
@@ -377,7 +377,7 @@ fn table(rows: &[Row]) -> String {
                 exact.time_median_s,
                 best.method.name(),
                 best.time_median_s,
-                crate::input::units::significant(factor, 2)
+                crate::settings::units::significant(factor, 2)
             );
         }
         None => {

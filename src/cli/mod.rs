@@ -6,8 +6,6 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
-use crate::input::params::Key;
-use crate::input::preset::{self, Preset};
 use crate::lab::{Lab, SpanEnd};
 use crate::methods::Method;
 use crate::physics::derived::{Derived, Summary};
@@ -15,6 +13,8 @@ use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{Snapshot, Solution};
 use crate::physics::story::{self, After};
+use crate::settings::params::Key;
+use crate::study::preset::{self, Preset};
 use crate::tui::{
     self,
     app::{App, Library},
@@ -27,8 +27,8 @@ mod manual;
 mod methods;
 mod progress;
 mod sweep;
-use crate::input::units::{Dimension, show, show_exact, significant};
 pub use crate::output::{self, write_atomically};
+use crate::settings::units::{Dimension, show, show_exact, significant};
 pub use args::*;
 pub use sweep::run_with_stop as sweep_with_stop;
 
@@ -43,9 +43,9 @@ pub enum CliError {
     #[error("{0}")]
     Invalid(String),
     #[error(transparent)]
-    Scene(#[from] crate::input::params::SceneError),
+    Scene(#[from] crate::settings::params::SceneError),
     #[error(transparent)]
-    Preset(#[from] crate::input::preset::PresetError),
+    Preset(#[from] crate::study::preset::PresetError),
     #[error(transparent)]
     File(#[from] crate::input::FileError),
     #[error(transparent)]

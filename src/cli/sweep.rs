@@ -171,7 +171,7 @@ fn output_error(path: &std::path::Path, e: std::io::Error) -> CliError {
 
 /// What one sweep computes.
 struct Map<'a> {
-    base: &'a crate::input::params::SceneSpec,
+    base: &'a crate::settings::params::SceneSpec,
     x: &'a Axis,
     y: Option<&'a Axis>,
     preset: &'a str,

@@ -4,7 +4,7 @@
 //! on worker threads and dropped when the scene changes. What the views draw from a
 //! solution (curve samples, the regime grid, the ghost ball's track) is cached here
 //! per scene and size, never recomputed per frame. `Lab` itself (the scene, its
-//! parameters, the pin, saving) is here; the analyses' jobs are in `analyses`, the
+//! parameters, the pin, what a saved preset holds) is here; the analyses' jobs are in `analyses`, the
 //! span rule in `span`, the views' caches and the ghost track in `views`.
 
 mod analyses;
@@ -13,18 +13,17 @@ mod span;
 mod views;
 
 use std::cell::RefCell;
-use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use crate::input::params::{Key, SceneError, SceneSpec};
-use crate::input::preset::Preset;
 use crate::methods::Method;
 use crate::physics::derived::{Derived, Regime};
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{EnergySplit, Snapshot, Solution};
+use crate::settings::params::{Key, SceneError, SceneSpec};
 use crate::study::compare::Row;
 use crate::study::fit::{FitError, Fits, ModelFit};
 use crate::study::measured::{self, InScene, Measured, Series};
+use crate::study::preset::Preset;
 use analyses::Generation;
 use jobs::{Job, Jobs};
 
@@ -34,19 +33,6 @@ pub use views::Story;
 
 use span::{preset_span_end, solve_shown};
 use views::{Cached, data_rms, extent};
-
-/// Why a scene could not be saved as a preset.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-pub enum SaveError {
-    #[error("name '{0}', allowed letters, digits, - _ .")]
-    BadName(String),
-    #[error("no preset folder (set GROOVELAB_PRESETS)")]
-    NoFolder,
-    #[error("{0} exists")]
-    Exists(PathBuf),
-    #[error("{0}")]
-    Io(String),
-}
 
 /// The line fit's window, s: from, to (`None`: the sliding phase's end).
 pub type FitWindow = (Option<f64>, Option<f64>);
@@ -358,56 +344,20 @@ impl Lab {
         self.regimes.replace(None);
     }
 
-    /// Saves the scene as a user preset in `dir`; never over an existing file unless
-    /// `overwrite`. Returns the path written.
-    pub fn save(
-        &self,
-        dir: Option<&Path>,
-        name: &str,
-        overwrite: bool,
-    ) -> Result<PathBuf, SaveError> {
-        let name = name.trim();
-        let valid = !name.is_empty()
-            && name
-                .chars()
-                .all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_' || c == '.');
-        if !valid {
-            return Err(SaveError::BadName(name.to_string()));
-        }
-        let dir = dir.ok_or(SaveError::NoFolder)?;
-        let path = dir.join(format!("{name}.toml"));
-        if path.exists() && !overwrite {
-            return Err(SaveError::Exists(path));
-        }
-        // Overwriting keeps the description of the file it replaces.
-        let kept = path
-            .is_file()
-            .then(|| Preset::load(&path.display().to_string()).ok())
-            .flatten()
-            .map(|p| p.description);
-        let description = kept
-            .unwrap_or_else(|| format!("Saved from groovelab (started from {})", self.preset.name));
-        // Only an end that was set (not the automatic one) is saved.
+    /// The settings a saved preset holds: every value of the scene and the span's
+    /// start, and its end only if it was set (not the automatic one).
+    pub fn saved_spec(&self) -> SceneSpec {
         let t_end = match self.span_end {
             SpanEnd::Fixed { t_end, .. } => Some(t_end),
             _ => None,
         };
-        let spec = SceneSpec::of(
+        SceneSpec::of(
             &self.scene,
             &Span {
                 t_start: self.span.t_start,
                 t_end,
             },
-        );
-        let text = crate::input::preset::to_toml(name, &description, &spec, self.measured())
-            .map_err(SaveError::Io)?;
-        // What is written must load again: check before reporting success.
-        Preset::parse(&text, name, crate::input::preset::Origin::BuiltIn)
-            .map_err(|e| SaveError::Io(format!("the file would not load again: {e}")))?;
-        std::fs::create_dir_all(dir).map_err(|e| SaveError::Io(e.to_string()))?;
-        crate::output::write_atomically(&path, text.as_bytes())
-            .map_err(|e| SaveError::Io(e.to_string()))?;
-        Ok(path)
+        )
     }
 }
 

@@ -5,12 +5,12 @@
 use std::cell::RefCell;
 use std::rc::Rc;
 
-use crate::input::params::{Key, PARAMS};
-use crate::input::units::show;
 use crate::physics::derived::{Derived, Regime};
 use crate::physics::scene::Span;
 use crate::physics::solution::{EnergySplit, Snapshot, Solution};
 use crate::physics::story::{self, After, Verdict};
+use crate::settings::params::{Key, PARAMS};
+use crate::settings::units::show;
 use crate::study::measured::Measured;
 
 use super::Lab;

@@ -1,5 +1,5 @@
 //! The scene in SI units: the two balls, the groove and the simulated time span.
-//! How a scene is built from settings and checked lives in `input::params`.
+//! How a scene is built from settings and checked lives in `settings::params`.
 
 use serde::Serialize;
 
@@ -15,7 +15,7 @@ pub struct Ball {
     pub v0: f64,
 }
 
-/// The physical scene, SI units throughout. Always valid once built by `input::params::SceneSpec::resolve`.
+/// The physical scene, SI units throughout. Always valid once built by `settings::params::SceneSpec::resolve`.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct Scene {
     /// Ball radius R, m (both balls).

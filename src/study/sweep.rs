@@ -6,10 +6,10 @@ use std::sync::atomic::{AtomicBool, Ordering};
 use rayon::prelude::*;
 use serde::Serialize;
 
-use crate::input::params::{Key, SceneSpec};
 use crate::physics::derived::{Derived, Regime};
 use crate::physics::engine;
 use crate::physics::scene::Span;
+use crate::settings::params::{Key, SceneSpec};
 
 /// One swept parameter: `key` from `lo` to `hi` (SI) in `n` points, both ends included.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -250,10 +250,10 @@ pub fn parse_axis(text: &str, n: usize) -> Result<Axis, String> {
             s.trim().to_string()
         }
     };
-    let lo =
-        crate::input::units::parse_quantity(&fix(a, &ua, &ub), dim).map_err(|e| e.to_string())?;
-    let hi =
-        crate::input::units::parse_quantity(&fix(b, &ub, &ua), dim).map_err(|e| e.to_string())?;
+    let lo = crate::settings::units::parse_quantity(&fix(a, &ua, &ub), dim)
+        .map_err(|e| e.to_string())?;
+    let hi = crate::settings::units::parse_quantity(&fix(b, &ub, &ua), dim)
+        .map_err(|e| e.to_string())?;
     if hi < lo {
         return Err(format!("'{range}' runs backwards, allowed LO ≤ HI"));
     }

@@ -12,18 +12,18 @@ use std::cell::Cell;
 use std::path::PathBuf;
 use std::sync::LazyLock;
 
-use crate::input::params::{Key, PARAMS, Param};
-use crate::input::units::{Dimension, show, significant};
 use crate::lab::Lab;
+use crate::settings::params::{Key, PARAMS, Param};
+use crate::settings::units::{Dimension, show, significant};
 
 pub use super::vocabulary::{
-    Action, ChartBall, Export, FPS, Library, Mode, Prediction, SPEEDS, Status, View,
+    Action, ChartBall, Export, FPS, Field, Library, Mode, Prediction, SPEEDS, Status, View,
 };
 pub use predict::reveal_time;
 pub use prompts::{export_step, typing_prompt};
 
 use super::vocabulary::{DEFAULT_SPEED, WorkAxis};
-use prompts::TextTarget;
+use prompts::{Histories, TextTarget};
 
 /// The rows of the parameters panel, top to bottom: the table's rows that have steps.
 pub static ROWS: LazyLock<Vec<&'static Param>> =
@@ -64,6 +64,8 @@ pub struct App {
     pub hide_b: bool,
     /// The last prediction (predict, observe, explain).
     pub prediction: Option<Prediction>,
+    /// What was typed into each kind of prompt this session (↑/↓ bring it back).
+    histories: Histories,
 }
 
 impl App {
@@ -91,6 +93,7 @@ impl App {
             forces_ball: 0,
             hide_b: false,
             prediction: None,
+            histories: Histories::default(),
         }
     }
 
@@ -106,25 +109,29 @@ impl App {
     /// Sets a parameter if the scene stays valid; otherwise says why in the status line.
     pub fn set_value(&mut self, key: Key, value: f64) {
         match self.lab.set(key, value) {
-            Ok(()) => {
-                let sol = &self.lab.solution;
-                self.t = self.t.clamp(sol.t_start, sol.t_end);
-                let label = key.param().label;
-                let value = if self.hide_b && key == Key::Width {
-                    "(hidden)".to_string()
-                } else {
-                    show(self.lab.value(key), key.dimension()).to_string()
-                };
-                self.status = Status::Info(format!("{label} = {value}"));
-                let s = &self.lab.scene;
-                if key == Key::V0 && s.left.v0 == s.right.v0 {
-                    self.status = Status::Info(format!(
-                        "v0 of both balls = {}",
-                        show(s.left.v0, Dimension::Speed)
-                    ));
-                }
-            }
+            Ok(()) => self.applied(key),
             Err(e) => self.status = Status::Error(format!("not applied: {e}")),
+        }
+    }
+
+    /// After the lab took a new value of `key`: the cursor kept in the span, the new
+    /// value in the status line.
+    fn applied(&mut self, key: Key) {
+        let sol = &self.lab.solution;
+        self.t = self.t.clamp(sol.t_start, sol.t_end);
+        let label = key.param().label;
+        let value = if self.hide_b && key == Key::Width {
+            "(hidden)".to_string()
+        } else {
+            show(self.lab.value(key), key.dimension()).to_string()
+        };
+        self.status = Status::Info(format!("{label} = {value}"));
+        let s = &self.lab.scene;
+        if key == Key::V0 && s.left.v0 == s.right.v0 {
+            self.status = Status::Info(format!(
+                "v0 of both balls = {}",
+                show(s.left.v0, Dimension::Speed)
+            ));
         }
     }
 
@@ -211,9 +218,9 @@ impl App {
             }
             Mode::Picker(i) => self.apply_picker(i, action),
             Mode::Predict => self.apply_predict(action),
-            Mode::Edit(text) => self.apply_text(text, action, TextTarget::Value),
-            Mode::SaveName(text) => self.apply_text(text, action, TextTarget::Name),
-            Mode::Export(kind, text) => self.apply_text(text, action, TextTarget::Export(kind)),
+            Mode::Edit(field) => self.apply_text(field, action, TextTarget::Value),
+            Mode::SaveName(field) => self.apply_text(field, action, TextTarget::Name),
+            Mode::Export(kind, field) => self.apply_text(field, action, TextTarget::Export(kind)),
             Mode::ConfirmOverwrite(name) => {
                 self.mode = Mode::Normal;
                 match action {

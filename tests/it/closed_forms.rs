@@ -10,11 +10,11 @@
 
 use crate::common;
 
-use groovelab::input::params::{Key, SceneSpec};
 use groovelab::physics::closed_form as cf;
 use groovelab::physics::derived::{Derived, Regime};
 use groovelab::physics::engine::solve;
 use groovelab::physics::solution::{Event, EventKind, Solution, Who};
+use groovelab::settings::params::{Key, SceneSpec};
 
 /// Closed forms and the engine agree to this (physics.md: ~1e-12 relative).
 const REL: f64 = 1e-12;

@@ -2,10 +2,10 @@
 #![allow(dead_code)]
 
 use groovelab::cli::{self, DataArgs, SceneArgs};
-use groovelab::input::params::Key;
-use groovelab::input::preset::Preset;
 use groovelab::lab::Lab;
 use groovelab::physics::scene::{Ball, Scene, Span};
+use groovelab::settings::params::Key;
+use groovelab::study::preset::Preset;
 use groovelab::tui::app::{App, Library, ROWS};
 use groovelab::tui::theme::{Glyphs, Theme};
 use groovelab::tui::{keys, replay, view};

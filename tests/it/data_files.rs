@@ -6,10 +6,10 @@
 use crate::common;
 use std::path::{Path, PathBuf};
 
-use groovelab::input::preset::Preset;
 use groovelab::physics::engine;
 use groovelab::physics::scene::{Scene, Span};
 use groovelab::study::measured::Track;
+use groovelab::study::preset::Preset;
 use groovelab::study::video::{self, Video};
 
 const MU: f64 = 0.17;

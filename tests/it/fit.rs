@@ -1,12 +1,12 @@
 //! Fitting against the paper's data and against synthetic data with known μ_k.
 
 use groovelab::input::data;
-use groovelab::input::preset::Preset;
 use groovelab::physics::derived::Regime;
 use groovelab::physics::engine::solve;
 use groovelab::physics::scene::{Scene, Span};
 use groovelab::study::fit::{self, Free, PAPER_TABLE};
 use groovelab::study::measured::Measured;
+use groovelab::study::preset::Preset;
 
 use crate::common::groovelab;
 

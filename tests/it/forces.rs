@@ -4,8 +4,8 @@
 //! `physics::forces`.
 
 use groovelab::cli::{DataArgs, RenderArgs, SceneArgs, render_with};
-use groovelab::input::params::SceneSpec;
 use groovelab::physics::derived::Regime;
+use groovelab::settings::params::SceneSpec;
 use groovelab::tui::app::{App, ChartBall, Library, Mode, View};
 use groovelab::tui::theme::{Glyphs, Theme};
 use groovelab::tui::{keys, view};
@@ -235,7 +235,7 @@ fn hiding_b_leaves_the_picture_and_hides_what_gives_b_away() {
 fn with_b_hidden_the_parameter_panel_does_not_depend_on_b() {
     let panel = |width: f64| {
         let mut a = app("paper-b4.9");
-        a.set_value(groovelab::input::params::Key::Width, width);
+        a.set_value(groovelab::settings::params::Key::Width, width);
         press(&mut a, "B v");
         let s = text(&a, (120, 40), false);
         // The panel is the top-left box, up to its closing corner.

@@ -3,7 +3,7 @@
 //! the tracked centre and mark, the charts and the Fit panel show what was derived.
 
 use groovelab::cli::{self, DataArgs, RenderArgs, SceneArgs, TrackRole, render_with};
-use groovelab::input::params::{Key, SceneSpec};
+use groovelab::settings::params::{Key, SceneSpec};
 use groovelab::tui::app::Library;
 
 use crate::common::{self, groovelab};

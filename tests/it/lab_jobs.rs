@@ -2,11 +2,11 @@
 //! result made for an earlier scene is never shown, a fit is applied whole. Work is
 //! counted (`Lab::runs`), never timed.
 
-use groovelab::input::params::Key;
-use groovelab::input::preset::Preset;
 use groovelab::lab::Lab;
 use groovelab::lab::jobs::State;
 use groovelab::methods::Method;
+use groovelab::settings::params::Key;
+use groovelab::study::preset::Preset;
 use groovelab::tui::app::{App, Library};
 use groovelab::tui::keys::parse_script;
 use groovelab::tui::replay;

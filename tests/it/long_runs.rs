@@ -8,10 +8,10 @@ use std::process::{Command, Stdio};
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::time::{Duration, Instant};
 
-use groovelab::input::preset::Preset;
 use groovelab::methods::{Method, Settings};
 use groovelab::physics::scene::{Scene, Span};
 use groovelab::study::measured::Measured;
+use groovelab::study::preset::Preset;
 use groovelab::study::{Cancelled, Progress, Quiet, compare, fit};
 
 /// Counts ticks and asks to stop once `after` of them have passed; counts the looks at

@@ -12,6 +12,7 @@ mod forces;
 mod fuzz;
 mod lab_data;
 mod lab_jobs;
+mod layers;
 mod long_runs;
 mod manual;
 mod methods;

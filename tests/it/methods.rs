@@ -1,12 +1,12 @@
 //! Where each time-stepping method works and where it fails, with bounds that follow
 //! from the discretisations themselves.
 
-use groovelab::input::preset::Preset;
 use groovelab::methods::{Method, Model, Settings};
 use groovelab::physics::derived::Outcome;
 use groovelab::physics::engine::solve;
 use groovelab::physics::scene::{Scene, Span};
 use groovelab::study::compare::{Reference, Row, RunStatus, fitted_order, run};
+use groovelab::study::preset::Preset;
 
 fn preset(name: &str) -> (Scene, Span) {
     Preset::load(name).unwrap().spec.resolve().unwrap()

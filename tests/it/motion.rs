@@ -3,10 +3,10 @@
 //! chart, and the A/B comparison with a pinned run. App logic and `render` snapshots.
 
 use groovelab::cli::{DataArgs, RenderArgs, SceneArgs, render_with};
-use groovelab::input::params::{Key, SceneSpec};
-use groovelab::input::preset::{Origin, Preset};
 use groovelab::lab::{Lab, SpanEnd};
 use groovelab::physics::solution::EventKind;
+use groovelab::settings::params::{Key, SceneSpec};
+use groovelab::study::preset::{Origin, Preset};
 use groovelab::tui::app::{App, Library, Status};
 use groovelab::tui::theme::{Glyphs, Theme};
 use groovelab::tui::view;
@@ -246,11 +246,11 @@ fn the_span_key_cycles_auto_double_half() {
 fn saving_keeps_only_a_set_span_end() {
     let dir = std::env::temp_dir().join(format!("groovelab-motion-save-{}", std::process::id()));
     let mut a = app("paper-b4.9");
-    let path = a.lab.save(Some(&dir), "auto-span", true).unwrap();
+    let path = groovelab::input::preset::save(&a.lab, Some(&dir), "auto-span", true).unwrap();
     let text = std::fs::read_to_string(&path).unwrap();
     assert!(!text.contains("t_end"), "{text}");
     a.lab.set(Key::TEnd, 0.7).unwrap();
-    let path = a.lab.save(Some(&dir), "fixed-span", true).unwrap();
+    let path = groovelab::input::preset::save(&a.lab, Some(&dir), "fixed-span", true).unwrap();
     let text = std::fs::read_to_string(&path).unwrap();
     assert!(text.contains("t_end"), "{text}");
     let _ = std::fs::remove_dir_all(&dir);

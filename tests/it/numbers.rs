@@ -4,9 +4,9 @@
 //! it is printed with.
 
 use groovelab::cli::{self, DataArgs, SceneArgs};
-use groovelab::input::params::{Key, SceneSpec};
 use groovelab::lab::jobs::State;
 use groovelab::physics::story::{After, after_first_impact};
+use groovelab::settings::params::{Key, SceneSpec};
 use groovelab::tui::app::{App, ROWS};
 use groovelab::tui::theme::{Glyphs, Theme};
 use groovelab::tui::{keys, replay, view};
@@ -146,8 +146,8 @@ fn the_parameter_panel_shows_every_value_and_note_to_its_precision() {
                 };
                 let label = row.label.replace("mu", "μ");
                 let scale = match row.dim {
-                    groovelab::input::units::Dimension::Length => 100.0,
-                    groovelab::input::units::Dimension::Mass => 1000.0,
+                    groovelab::settings::units::Dimension::Length => 100.0,
+                    groovelab::settings::units::Dimension::Mass => 1000.0,
                     _ => 1.0,
                 };
                 let what = format!("{name} {size:?} row {}", row.label);

@@ -5,10 +5,10 @@
 
 use clap::{CommandFactory, Parser};
 use groovelab::cli::Cli;
-use groovelab::input::params::{Fallback, Key, PARAMS, Param, SceneSpec};
-use groovelab::input::preset::{self, Origin, Preset, to_toml};
-use groovelab::input::units::{parse_quantity, parse_typed, show};
 use groovelab::physics::scene::{Scene, Span};
+use groovelab::settings::params::{Fallback, Key, PARAMS, Param, SceneSpec};
+use groovelab::settings::units::{parse_quantity, parse_typed, show};
+use groovelab::study::preset::{self, Origin, Preset, to_toml};
 use proptest::prelude::*;
 
 /// A scene given entirely on the command line (SI numbers, as `{:?}` prints them).

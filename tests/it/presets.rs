@@ -3,9 +3,9 @@
 //! value is never trusted just because the program printed it.
 
 use groovelab::cli::{Format, SceneArgs, SimulateArgs, simulate};
-use groovelab::input::preset::Preset;
 use groovelab::physics::closed_form as cf;
 use groovelab::physics::model;
+use groovelab::study::preset::Preset;
 use serde_json::Value;
 
 fn run_json(preset: &str) -> Value {

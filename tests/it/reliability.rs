@@ -554,7 +554,7 @@ fn a_stopped_sweep_writes_nothing_to_stdout_or_a_file() {
 fn a_streamed_sweep_equals_the_whole_map() {
     // CSV and JSON are written batch by batch; they must be what the whole map gives.
     use groovelab::study::sweep;
-    let base = groovelab::input::preset::Preset::load("paper-b4.9")
+    let base = groovelab::study::preset::Preset::load("paper-b4.9")
         .unwrap()
         .spec;
     let x = sweep::parse_axis("width=0..5cm", 181).unwrap();
@@ -676,7 +676,7 @@ fn a_stop_after_the_last_point_is_computed_still_writes_nothing() {
     // written). Now a stop at any time before the commit wins.
     use groovelab::study::sweep;
     use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
-    let base = groovelab::input::preset::Preset::load("paper-b4.9")
+    let base = groovelab::study::preset::Preset::load("paper-b4.9")
         .unwrap()
         .spec;
     let x = sweep::parse_axis("width=0..5cm", 40).unwrap();

@@ -3,11 +3,11 @@
 
 use crate::common;
 
-use groovelab::input::params::{Key, SceneSpec};
-use groovelab::input::preset::Preset;
 use groovelab::physics::derived::Derived;
 use groovelab::physics::engine::solve;
 use groovelab::physics::story::{After, after_first_impact};
+use groovelab::settings::params::{Key, SceneSpec};
+use groovelab::study::preset::Preset;
 
 fn groovelab(args: &[&str]) -> String {
     let out = common::groovelab(args);

@@ -4,10 +4,10 @@
 use std::process::Command;
 use std::sync::atomic::AtomicBool;
 
-use groovelab::input::params::{Key, SceneSpec};
-use groovelab::input::preset::Preset;
 use groovelab::physics::closed_form;
 use groovelab::physics::derived::Regime;
+use groovelab::settings::params::{Key, SceneSpec};
+use groovelab::study::preset::Preset;
 use groovelab::study::sweep::{self, Point, SweepError};
 
 use crate::common::groovelab;

@@ -2,10 +2,10 @@
 //! `render` prints (insta snapshots, checked by eye when recorded).
 
 use groovelab::cli::{DataArgs, RenderArgs, SceneArgs, render_with};
-use groovelab::input::params::Key;
-use groovelab::input::preset::Preset;
 use groovelab::lab::jobs::State;
 use groovelab::physics::derived::Regime;
+use groovelab::settings::params::Key;
+use groovelab::study::preset::Preset;
 use groovelab::tui::app::{App, Library, Mode, ROWS, Status, View};
 use groovelab::tui::keys;
 
@@ -68,21 +68,93 @@ fn arrows_change_the_selected_parameter_and_resolve() {
 }
 
 #[test]
-fn out_of_range_values_are_refused_not_applied() {
+fn a_step_past_a_limit_stops_at_the_limit() {
+    // Seen: Shift-Right at b = 4.90 cm (R = 2.75 cm) was refused as "b = 5.5 cm"; it
+    // goes to the last fine step below 2R = 5.5 cm, and says it stopped there.
     let mut a = app("paper-b4.9");
     select(&mut a, Key::Width);
+    let two_r = 2.0 * a.lab.scene.radius;
+    assert!((two_r - 0.055).abs() < 1e-12, "{two_r}");
+    press(&mut a, "S-right");
+    assert!(
+        (a.lab.scene.width - 0.0545).abs() < 1e-12,
+        "{}",
+        a.lab.scene.width
+    );
+    assert!(
+        matches!(&a.status, Status::Info(s) if s.contains("b = 5.45 cm") && s.contains("stopped at the limit") && s.contains("2R")),
+        "{:?}",
+        a.status
+    );
+    // From the limit a step cannot move: refused, the scene unchanged.
     let before = a.lab.scene;
-    press(&mut a, "pgup pgup");
+    press(&mut a, "pgup right");
     assert_eq!(a.lab.scene, before, "b ≥ 2R must not be applied");
     assert!(
         matches!(&a.status, Status::Error(e) if e.contains("2R")),
         "{:?}",
         a.status
     );
+    // A limit of the row's own range: e stops at 1 (allowed), from below by a fine
+    // step too; at 1 a further step is refused.
     select(&mut a, Key::Restitution);
+    a.set_value(Key::Restitution, 0.995);
+    press(&mut a, "right");
+    assert_eq!(a.lab.scene.restitution, 1.0);
+    assert!(
+        matches!(&a.status, Status::Info(s) if s.contains("stopped at the limit")),
+        "{:?}",
+        a.status
+    );
     press(&mut a, "right");
     assert_eq!(a.lab.scene.restitution, 1.0);
     assert!(matches!(a.status, Status::Error(_)));
+    // Downward too: μ_k at 0.004 and a fine step (0.01) down stops at 0.
+    select(&mut a, Key::Mu);
+    a.set_value(Key::Mu, 0.004);
+    press(&mut a, "left");
+    assert_eq!(a.lab.scene.mu, 0.0);
+    assert!(
+        matches!(&a.status, Status::Info(s) if s.contains("stopped at the limit")),
+        "{:?}",
+        a.status
+    );
+    // With b hidden, the refused value is not named (it would give b away).
+    let mut a = app("paper-b4.9");
+    select(&mut a, Key::Width);
+    press(&mut a, "B S-right");
+    assert!(
+        matches!(&a.status, Status::Info(s) if s.contains("stopped at the limit") && !s.contains("cm")),
+        "{:?}",
+        a.status
+    );
+}
+
+#[test]
+fn typing_errors_state_the_apps_unit_rule() {
+    // In the app a bare number is in the row's display unit; the error must not say
+    // "bare number = SI" (following it set b to 0.049 cm).
+    let mut a = app("paper-b4.9");
+    select(&mut a, Key::Width);
+    for typed in ["enter x enter", "enter 4 k g enter"] {
+        press(&mut a, typed);
+        let Status::Error(e) = &a.status else {
+            panic!("{typed}: {:?}", a.status)
+        };
+        assert!(!e.contains("SI"), "{typed}: {e}");
+        assert!(e.contains("a bare number is in cm"), "{typed}: {e}");
+    }
+    select(&mut a, Key::MassLeft);
+    press(&mut a, "enter 1 m enter");
+    assert!(
+        matches!(&a.status, Status::Error(e) if e.contains("a bare number is in g")),
+        "{:?}",
+        a.status
+    );
+    // And what the error says works: a bare number in the unit shown.
+    select(&mut a, Key::Width);
+    press(&mut a, "enter 4 . 9 enter");
+    assert_eq!(a.lab.scene.width, 0.049);
 }
 
 #[test]
@@ -106,6 +178,104 @@ fn typed_values_take_units_and_escape_cancels() {
     press(&mut a, "enter 5 c m enter");
     assert!((a.lab.value(Key::HeightRight) - 0.05).abs() < 1e-12);
     assert_eq!(a.lab.scene.left.v0, a.lab.scene.right.v0);
+}
+
+#[test]
+fn prompts_edit_like_a_terminal_line() {
+    let mut a = app("paper-b4.9");
+    select(&mut a, Key::Width);
+    let b = |a: &App| a.lab.scene.width;
+    // ←/→ move the cursor; typing goes in at it.
+    press(&mut a, "enter 4 c m left left . 5 enter");
+    assert_eq!(b(&a), 0.045);
+    // Home/End, Backspace/Delete.
+    press(&mut a, "enter c m home 4 . 6 end enter");
+    assert_eq!(b(&a), 0.046);
+    press(&mut a, "enter x 4 . 2 home delete end backspace 3 enter");
+    assert_eq!(b(&a), 0.043);
+    // Ctrl-U clears the line, Ctrl-W the word before the cursor, Ctrl-A/E go to the
+    // start and end, Ctrl-K deletes to the end: none of them is typed as a letter.
+    press(&mut a, "enter 9 9 C-u 4 . 1");
+    assert_eq!(a.mode, Mode::Edit("4.1".into()));
+    press(&mut a, "enter");
+    assert_eq!(b(&a), 0.041);
+    press(&mut a, "enter 4 . 4 space x y z C-w");
+    assert!(
+        matches!(&a.mode, Mode::Edit(f) if f.value() == "4.4 "),
+        "{:?}",
+        a.mode
+    );
+    press(&mut a, "enter");
+    assert_eq!(b(&a), 0.044);
+    press(&mut a, "enter 7 c m C-a 4 . C-e C-a right right right C-k");
+    assert!(
+        matches!(&a.mode, Mode::Edit(f) if f.value() == "4.7"),
+        "{:?}",
+        a.mode
+    );
+    press(&mut a, "enter");
+    assert_eq!(b(&a), 0.047);
+    // ↑/↓ bring back the values confirmed earlier this session, newest first; ↓ past
+    // the newest gives back the line being typed.
+    press(&mut a, "enter up enter");
+    assert_eq!(b(&a), 0.047, "the last value again");
+    press(&mut a, "enter up up up enter");
+    assert_eq!(b(&a), 0.041);
+    press(&mut a, "enter 3 up up down down");
+    assert_eq!(a.mode, Mode::Edit("3".into()));
+    press(&mut a, "esc");
+    // The save and export prompts are the same line editor, with their own history.
+    press(&mut a, "s C-u n e w left left C-k");
+    assert_eq!(a.mode, Mode::SaveName("n".into()));
+    press(&mut a, "esc w C-a delete delete delete delete delete");
+    assert!(
+        matches!(&a.mode, Mode::Export(_, f) if f.value() == "-b4.9-run.csv"),
+        "{:?}",
+        a.mode
+    );
+    press(&mut a, "up");
+    assert!(
+        matches!(&a.mode, Mode::Export(_, f) if f.value() == "-b4.9-run.csv"),
+        "no file name was confirmed yet, so ↑ has nothing to bring: {:?}",
+        a.mode
+    );
+    press(&mut a, "esc");
+    assert!(!a.quit);
+}
+
+#[test]
+fn the_typing_field_shows_its_cursor_as_a_reversed_cell() {
+    use groovelab::tui::theme::{Glyphs, Theme};
+    use ratatui::buffer::Buffer;
+    use ratatui::layout::Rect;
+    use ratatui::style::Modifier;
+    let mut a = app("paper-b4.9");
+    select(&mut a, Key::Width);
+    press(&mut a, "enter 4 c m left left");
+    let theme = Theme::new(Glyphs::new(false), true);
+    let area = Rect::new(0, 0, 120, 40);
+    let mut buf = Buffer::empty(area);
+    groovelab::tui::view::draw(&a, area, &mut buf, &theme);
+    let (x, y) = (0..area.height)
+        .find_map(|y| {
+            let row: String = (0..area.width).map(|x| buf[(x, y)].symbol()).collect();
+            row.find("[4cm]")
+                .map(|i| (row[..i].chars().count() as u16, y))
+        })
+        .expect("the field on screen");
+    let reversed = |dx: u16| {
+        buf[(x + dx, y)]
+            .style()
+            .add_modifier
+            .contains(Modifier::REVERSED)
+    };
+    // The row is highlighted (reversed); the cursor's cell, on the c, is not.
+    assert!(reversed(1) && reversed(3), "the rest of the row");
+    assert!(!reversed(2), "the cursor on the c");
+    // A line longer than the field shows its end around the cursor.
+    press(&mut a, "end 1 2 3 4 5 6 7 8 9");
+    let screen = common::text(&a, (120, 40), false);
+    assert!(screen.contains("[23456789_]"), "{screen}");
 }
 
 #[test]
@@ -158,8 +328,17 @@ fn picker_loads_presets_and_quit_keys_quit() {
     let mut a = app("paper-b4.9");
     press(&mut a, "enter 4 C-c");
     assert!(a.quit, "Ctrl-C quits even while typing");
+    // Esc on the main screen never quits (a reflex Esc ended the session): it says
+    // how to quit instead.
     let mut a = app("paper-b4.9");
-    press(&mut a, "esc");
+    press(&mut a, "esc esc");
+    assert!(!a.quit);
+    assert!(
+        matches!(&a.status, Status::Info(s) if s.contains("q quits")),
+        "{:?}",
+        a.status
+    );
+    press(&mut a, "q");
     assert!(a.quit);
 }
 
@@ -703,9 +882,9 @@ fn q_closes_every_popup_and_quits_only_the_main_screen() {
     }
     // In text fields q is a letter.
     press(&mut a, "s q");
-    assert!(matches!(&a.mode, Mode::SaveName(t) if t.ends_with('q')));
+    assert!(matches!(&a.mode, Mode::SaveName(t) if t.value().ends_with('q')));
     press(&mut a, "esc w q");
-    assert!(matches!(&a.mode, Mode::Export(_, t) if t.ends_with('q')));
+    assert!(matches!(&a.mode, Mode::Export(_, t) if t.value().ends_with('q')));
     press(&mut a, "esc");
     assert!(!a.quit);
     press(&mut a, "? C-c");
@@ -872,7 +1051,7 @@ fn save_keeps_the_data_and_the_description_and_explains_bad_names() {
     a.library = Library::at(Some(dir.clone()));
     // A name with a space: refused, the dialog stays open and says why.
     press(&mut a, "s space x enter");
-    assert!(matches!(&a.mode, Mode::SaveName(n) if n == "my-paper-b4.4 x"));
+    assert!(matches!(&a.mode, Mode::SaveName(n) if n.value() == "my-paper-b4.4 x"));
     let s = screen_of(&a);
     assert!(s.contains("allowed letters, digits"), "{s}");
     press(&mut a, "backspace backspace enter");
@@ -977,7 +1156,7 @@ fn export_writes_the_run_as_csv_and_the_chart_as_svg() {
     let mut a = app("paper-b4.9");
     a.export_dir = dir.clone();
     press(&mut a, "w");
-    assert!(matches!(&a.mode, Mode::Export(_, n) if n == "paper-b4.9-run.csv"));
+    assert!(matches!(&a.mode, Mode::Export(_, n) if n.value() == "paper-b4.9-run.csv"));
     press(&mut a, "enter");
     // The file is written off the key press; the status line says so, then where.
     assert!(matches!(&a.status, Status::Info(i) if i.starts_with("writing")));

@@ -1,8 +1,6 @@
 //! How a data file is to be read beyond what it says itself, and why it cannot be.
 
-/// Most data rows a file may have: far more than a video gives (a minute at 1000
-/// frames/s is 60,000), and a bound on the memory and time a fit can take.
-pub const MAX_ROWS: usize = 1_000_000;
+pub use crate::study::measured::MAX_ROWS;
 
 /// Why a data file cannot be used; each message names the line.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]

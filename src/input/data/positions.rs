@@ -8,7 +8,7 @@
 
 use super::options::{DataError, MAX_ROWS, Reading};
 use super::table::{Row, Sep, Table, clean, missing, number, unit_factor};
-use crate::input::units::Dimension;
+use crate::settings::units::Dimension;
 use crate::study::measured::Track;
 
 /// One header cell of a position file: which track, which axis, its SI factor.

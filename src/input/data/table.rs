@@ -4,7 +4,7 @@
 //! (Tracker's `#multi:` kept), every row with the file's own line number for errors;
 //! and the helpers that read a cell: header names with their units, and numbers.
 
-use crate::input::units::{self, Dimension};
+use crate::settings::units::{self, Dimension};
 
 /// How the cells of a line are separated.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -5,7 +5,7 @@
 
 use super::options::{DataError, MAX_ROWS, Reading};
 use super::table::{Table, clean, number, unit_factor};
-use crate::input::units::Dimension;
+use crate::settings::units::Dimension;
 use crate::study::measured::Measured;
 
 /// Which quantity a velocity-file header cell names, and the SI factor its unit implies.
@@ -173,7 +173,7 @@ impl Units {
         if ms {
             looks.push(format!(
                 "frames {} apart (as s: {:.1} frames/s; as ms: {:.0} frames/s)",
-                crate::input::units::significant(frame, 3),
+                crate::settings::units::significant(frame, 3),
                 1.0 / frame,
                 1e3 / frame
             ));
@@ -182,8 +182,8 @@ impl Units {
         if cm {
             looks.push(format!(
                 "speeds up to {} (as m/s beyond any ball in a groove; as cm/s {} m/s)",
-                crate::input::units::significant(fastest, 3),
-                crate::input::units::significant(fastest / 100.0, 3)
+                crate::settings::units::significant(fastest, 3),
+                crate::settings::units::significant(fastest / 100.0, 3)
             ));
             flags.push("--speed-unit cm/s");
         }

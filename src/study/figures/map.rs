@@ -23,7 +23,7 @@ pub fn regime_map(
     scene: &Scene,
     preset: &str,
 ) -> Result<String, Box<dyn std::error::Error>> {
-    use crate::input::params::Key;
+    use crate::settings::params::Key;
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, (900, 640)).into_drawing_area();

@@ -75,8 +75,8 @@ pub fn log_axis(lo: f64, hi: f64) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::input::preset::Preset;
     use crate::physics::scene::Scene;
+    use crate::study::preset::Preset;
 
     /// Runs `f` on a thread and fails if it takes longer than 30 s (a figure once
     /// looped forever on an infinite axis).

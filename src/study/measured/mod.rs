@@ -15,6 +15,10 @@ pub use track::{Derive, Found, TrackError};
 
 use crate::physics::scene::Scene;
 
+/// Most data rows a series may have: far more than a video gives (a minute at 1000
+/// frames/s is 60,000), and a bound on the memory and time a fit can take.
+pub const MAX_ROWS: usize = 1_000_000;
+
 /// A measured series ready for any scene.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Series {

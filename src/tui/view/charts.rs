@@ -8,10 +8,10 @@ use ratatui::style::Style;
 use ratatui::widgets::Widget;
 
 use super::block;
-use crate::input::units::Dimension;
 use crate::lab::jobs::State;
 use crate::physics::model::BallState;
 use crate::physics::solution::{EnergySplit, EventKind, Snapshot, Who};
+use crate::settings::units::Dimension;
 use crate::tui::app::{App, ChartBall};
 use crate::tui::plot::{Draw, Plot, Series, VLine, nice_ticks};
 use crate::tui::theme::Theme;

@@ -13,9 +13,9 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Clear, Paragraph, Widget, Wrap};
 
 use super::{Ranked, block, by_priority, draw_lines, title_within};
-use crate::input::units::{Dimension, show, significant};
 use crate::physics::derived::Regime;
 use crate::physics::forces::{Instant, Sliding, instant};
+use crate::settings::units::{Dimension, show, significant};
 use crate::tui::app::{App, Prediction};
 use crate::tui::canvas::Canvas;
 use crate::tui::theme::Theme;

@@ -7,8 +7,8 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::Widget;
 
 use super::{Ranked, block, by_priority, draw_lines};
-use crate::input::units::{Dimension, show, significant};
 use crate::physics::story::After;
+use crate::settings::units::{Dimension, show, significant};
 use crate::tui::app::App;
 use crate::tui::theme::Theme;
 

@@ -7,10 +7,10 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::Widget;
 
 use super::{Ranked, block, by_priority, draw_lines};
-use crate::input::units::{Dimension, fit_number, show};
 use crate::lab::jobs::State;
 use crate::methods::Method;
 use crate::physics::derived::Summary;
+use crate::settings::units::{Dimension, fit_number, show};
 use crate::study::compare::{Row, RunStatus, fitted_order, outcome_until};
 use crate::tui::app::App;
 use crate::tui::plot::{Draw, Plot, Series};

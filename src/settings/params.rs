@@ -4,17 +4,17 @@
 //! settings in, a checked SI [`Scene`] out.
 //!
 //! The command line's scene options and their conflicts (`cli::args`), preset reading
-//! and saving (`input::preset`), validation and its messages, the app's parameter rows,
+//! and saving (`study::preset`), validation and its messages, the app's parameter rows,
 //! values and change labels, sweep axes and `--help` all come from [`PARAMS`]. Adding a
 //! parameter is one row here and its physics.
 
-use crate::input::units::{Dimension, show};
 use crate::physics::closed_form::{release_height, release_speed};
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::LATEST_END;
+use crate::settings::units::{Dimension, show};
 
 // The settings layers live in `spec`; their names stay here, beside the table they read.
-pub use crate::input::spec::{SceneError, SceneSpec};
+pub use crate::settings::spec::{SceneError, SceneSpec};
 
 /// Standard gravity, used when nothing else is said, m/s².
 pub const STANDARD_GRAVITY: f64 = 9.81;

@@ -1,11 +1,11 @@
 //! Layers of scene settings ([`SceneSpec`]: defaults, preset, command line, app) and
 //! their resolution through the parameter table into a checked SI scene and span.
-//! Re-exported from `input::params`, which is the path to use.
+//! Re-exported from `settings::params`, which is the path to use.
 
-use crate::input::params::{Fallback, Key, PARAMS, Param, UNSET};
-use crate::input::units::{Dimension, show, show_exact};
 use crate::physics::derived::Derived;
 use crate::physics::scene::{Scene, Span};
+use crate::settings::params::{Fallback, Key, PARAMS, Param, UNSET};
+use crate::settings::units::{Dimension, show, show_exact};
 
 /// Why a scene is not valid. Each message names the value and what is allowed.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]

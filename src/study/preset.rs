@@ -1,0 +1,302 @@
+//! Presets: named scenes as TOML text (`presets/*.toml`, embedded in the binary, or a
+//! user's file, read at the edge by `study::preset`), optionally carrying a measured
+//! velocity series; the text form read and written here.
+
+use std::path::PathBuf;
+
+use crate::settings::params::{Key, SceneSpec};
+use crate::settings::units::parse_quantity;
+use crate::study::measured::{MAX_ROWS, Measured};
+
+/// The preset used when none is named.
+pub const DEFAULT: &str = "paper-b4.9";
+
+/// Built-in presets, in the order `groovelab presets` lists them.
+const BUILT_IN: &[(&str, &str)] = &[
+    ("paper-b3.5", include_str!("../../presets/paper-b3.5.toml")),
+    ("paper-b4.4", include_str!("../../presets/paper-b4.4.toml")),
+    ("paper-b4.9", include_str!("../../presets/paper-b4.9.toml")),
+    ("flat-table", include_str!("../../presets/flat-table.toml")),
+    ("critical", include_str!("../../presets/critical.toml")),
+    (
+        "unequal-speeds",
+        include_str!("../../presets/unequal-speeds.toml"),
+    ),
+    ("inelastic", include_str!("../../presets/inelastic.toml")),
+    (
+        "steel-and-glass",
+        include_str!("../../presets/steel-and-glass.toml"),
+    ),
+];
+
+/// Where a preset came from.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Origin {
+    BuiltIn,
+    File(PathBuf),
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Preset {
+    pub name: String,
+    pub description: String,
+    pub source: Option<String>,
+    pub spec: SceneSpec,
+    pub measured: Option<Measured>,
+    pub origin: Origin,
+}
+
+#[derive(Debug, thiserror::Error)]
+pub enum PresetError {
+    #[error("unknown preset '{0}', allowed: a name from `groovelab presets` or a .toml file")]
+    Unknown(String),
+    #[error("cannot read preset file {path}: {reason}")]
+    Io { path: String, reason: String },
+    #[error("malformed preset {name}: {reason}")]
+    Malformed { name: String, reason: String },
+}
+
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct PresetFile {
+    name: String,
+    description: String,
+    source: Option<String>,
+    scene: toml::Table,
+    measured: Option<MeasuredFile>,
+}
+
+#[derive(serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+struct MeasuredFile {
+    t: Vec<f64>,
+    v_cm: Vec<f64>,
+    v_t: Vec<f64>,
+    /// The optional columns of a series derived from a track ([`Measured`]'s fields).
+    v_cm_sigma: Option<Vec<f64>>,
+    v_t_sigma: Option<Vec<f64>>,
+    x: Option<Vec<f64>>,
+    angle: Option<Vec<f64>>,
+}
+
+impl Preset {
+    /// Parses a preset's TOML text; `label` names it in errors.
+    pub fn parse(text: &str, label: &str, origin: Origin) -> Result<Preset, PresetError> {
+        let malformed = |reason: String| PresetError::Malformed {
+            name: label.to_string(),
+            reason,
+        };
+        let file: PresetFile =
+            toml::from_str(text).map_err(|e| malformed(e.message().to_string()))?;
+        let mut spec = SceneSpec::default();
+        for (key_name, value) in &file.scene {
+            let key = Key::from_name(key_name).ok_or_else(|| {
+                let allowed: Vec<&str> = Key::ALL.iter().map(|k| k.name()).collect();
+                malformed(format!(
+                    "unknown scene key '{key_name}', allowed: {}",
+                    allowed.join(", ")
+                ))
+            })?;
+            let si = match value {
+                toml::Value::Float(f) => *f,
+                toml::Value::Integer(i) => *i as f64,
+                toml::Value::String(s) => parse_quantity(s, key.dimension())
+                    .map_err(|e| malformed(format!("{key_name}: {e}")))?,
+                other => {
+                    return Err(malformed(format!(
+                        "{key_name} = {other}: expected a number or a quantity such as \"2.75cm\""
+                    )));
+                }
+            };
+            if !si.is_finite() {
+                return Err(malformed(format!("{key_name} is not finite")));
+            }
+            spec.set(key, si);
+        }
+        let measured = file
+            .measured
+            .map(|m| check_measured(m).map_err(malformed))
+            .transpose()?;
+        Ok(Preset {
+            name: file.name,
+            description: file.description,
+            source: file.source,
+            spec,
+            measured,
+            origin,
+        })
+    }
+
+    /// The built-in preset of this name, if there is one.
+    pub fn built_in_named(name: &str) -> Option<Result<Preset, PresetError>> {
+        BUILT_IN
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|(n, text)| Preset::parse(text, n, Origin::BuiltIn))
+    }
+
+    pub fn built_in() -> Vec<Preset> {
+        BUILT_IN
+            .iter()
+            .map(|(name, text)| {
+                Preset::parse(text, name, Origin::BuiltIn).expect("built-in presets are tested")
+            })
+            .collect()
+    }
+}
+
+fn check_measured(m: MeasuredFile) -> Result<Measured, String> {
+    if m.t.len() != m.v_cm.len() || m.t.len() != m.v_t.len() {
+        return Err(format!(
+            "measured series differ in length: t {}, v_cm {}, v_t {}",
+            m.t.len(),
+            m.v_cm.len(),
+            m.v_t.len()
+        ));
+    }
+    if m.t.len() > MAX_ROWS {
+        return Err(format!(
+            "measured series has {} points, allowed at most {MAX_ROWS}",
+            m.t.len()
+        ));
+    }
+    if m.t.len() < 2 {
+        return Err("measured series needs at least 2 points".into());
+    }
+    // TOML writes inf and nan as plain floats. Times must be finite; a value may be
+    // nan (a missing mark, as a saved position track has), never infinite.
+    if let Some(i) = m.t.iter().position(|v| !v.is_finite()) {
+        return Err(format!(
+            "measured t[{i}] is not finite, allowed finite numbers"
+        ));
+    }
+    for (name, series) in [("v_cm", &m.v_cm), ("v_t", &m.v_t)] {
+        if let Some(i) = series.iter().position(|v| v.is_infinite()) {
+            return Err(format!(
+                "measured {name}[{i}] is not finite, allowed finite numbers or nan (missing)"
+            ));
+        }
+    }
+    if !m.t.windows(2).all(|w| w[0] < w[1]) {
+        return Err("measured times must increase".into());
+    }
+    for (name, column) in [
+        ("v_cm_sigma", &m.v_cm_sigma),
+        ("v_t_sigma", &m.v_t_sigma),
+        ("x", &m.x),
+        ("angle", &m.angle),
+    ] {
+        if let Some(c) = column.as_ref().filter(|c| c.len() != m.t.len()) {
+            return Err(format!(
+                "measured {name} has {} values, t has {}: allowed the same length",
+                c.len(),
+                m.t.len()
+            ));
+        }
+    }
+    let measured = Measured {
+        v_cm_sigma: m.v_cm_sigma,
+        v_t_sigma: m.v_t_sigma,
+        x: m.x,
+        angle: m.angle,
+        ..Measured::velocities(m.t, m.v_cm, m.v_t)
+    };
+    measured.check_magnitudes()?;
+    Ok(measured)
+}
+
+/// A preset file's text for `spec` (SI numbers), written by the toml serializer so
+/// that any name or description comes out quoted right.
+pub fn to_toml(
+    name: &str,
+    description: &str,
+    spec: &SceneSpec,
+    measured: Option<&Measured>,
+) -> Result<String, String> {
+    #[derive(serde::Serialize)]
+    struct Out<'a> {
+        name: &'a str,
+        description: &'a str,
+        scene: toml::Table,
+        #[serde(skip_serializing_if = "Option::is_none")]
+        measured: Option<&'a Measured>,
+    }
+    let scene = spec
+        .given()
+        .map(|(k, v)| (k.name().to_string(), toml::Value::Float(v)))
+        .collect();
+    toml::to_string(&Out {
+        name,
+        description,
+        scene,
+        measured,
+    })
+    .map_err(|e| format!("cannot write the preset: {e}"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_built_in_preset_parses_and_resolves() {
+        for p in Preset::built_in() {
+            let (scene, _) = p
+                .spec
+                .resolve()
+                .unwrap_or_else(|e| panic!("{}: {e}", p.name));
+            assert!(scene.radius > 0.0, "{}", p.name);
+            assert!(!p.description.is_empty());
+        }
+    }
+
+    #[test]
+    fn unknown_keys_are_errors() {
+        let text = "name = \"x\"\ndescription = \"d\"\n[scene]\nradius = 0.02\nwidht = 0.01\n";
+        let err = Preset::parse(text, "x", Origin::BuiltIn).unwrap_err();
+        assert!(err.to_string().contains("widht"), "{err}");
+        let text = "name = \"x\"\ndescription = \"d\"\ncolour = 1\n[scene]\n";
+        assert!(Preset::parse(text, "x", Origin::BuiltIn).is_err());
+    }
+
+    #[test]
+    fn measured_series_round_trip_with_their_optional_columns() {
+        let mut m = Measured::velocities(
+            vec![-0.1, 0.0, 0.1],
+            vec![0.8, 0.7, -0.2],
+            vec![0.8, f64::NAN, 0.3],
+        );
+        m.x = Some(vec![-0.08, 0.0, 0.01]);
+        m.v_cm_sigma = Some(vec![0.01; 3]);
+        let spec = SceneSpec::default().with(Key::Radius, 0.0275);
+        let text = to_toml("x", "d", &spec, Some(&m)).unwrap();
+        let back = Preset::parse(&text, "x", Origin::BuiltIn).unwrap();
+        let got = back.measured.unwrap();
+        assert_eq!((got.t, got.v_cm, got.x), (m.t, m.v_cm, m.x));
+        assert!(got.v_t[1].is_nan() && got.v_t[2] == 0.3);
+        assert_eq!(got.v_cm_sigma, m.v_cm_sigma);
+        assert_eq!(got.angle, None);
+        let short = text.replace("x = [-0.08, 0.0, 0.01]", "x = [-0.08]");
+        assert!(short != text, "{text}");
+        let err = Preset::parse(&short, "x", Origin::BuiltIn).unwrap_err();
+        assert!(err.to_string().contains("measured x has 1 values"), "{err}");
+    }
+
+    #[test]
+    fn measured_series_must_be_finite() {
+        let text = "name = \"x\"\ndescription = \"d\"\n[scene]\n[measured]\nt = [0.0, 0.01, 0.02]\nv_cm = [1.0, inf, -1.0]\nv_t = [1.0, 1.0, 1.0]\n";
+        let e = Preset::parse(text, "x", Origin::BuiltIn).unwrap_err();
+        assert!(e.to_string().contains("v_cm[1] is not finite"), "{e}");
+    }
+
+    #[test]
+    fn quantities_with_units_are_read() {
+        let text =
+            "name = \"x\"\ndescription = \"d\"\n[scene]\nradius = \"2.75cm\"\nmass = \"167g\"\n";
+        let p = Preset::parse(text, "x", Origin::BuiltIn).unwrap();
+        assert_eq!(p.spec.get(Key::Radius), Some(0.0275));
+        assert_eq!(p.spec.get(Key::MassRight), Some(0.167));
+        let bad = "name = \"x\"\ndescription = \"d\"\n[scene]\nradius = \"2.75kg\"\n";
+        assert!(Preset::parse(bad, "x", Origin::BuiltIn).is_err());
+    }
+}
