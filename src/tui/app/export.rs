@@ -3,6 +3,7 @@
 //! screen (the velocity or position chart, the regime map, the Methods diagram, the
 //! fit) as SVG; written as a job through the one atomic writer.
 
+use crate::lab::Exported;
 use crate::lab::jobs::State;
 use crate::settings::units::{Dimension, show};
 use crate::study::figures;
@@ -49,8 +50,19 @@ impl Figure {
 /// Grid of the exported regime map: finer than a terminal's cells.
 const MAP_GRID: (usize, usize) = (160, 80);
 
+/// Why an export job wrote nothing.
+#[derive(Debug, thiserror::Error)]
+pub enum ExportError {
+    #[error(transparent)]
+    Csv(#[from] csv::Error),
+    #[error("cannot draw the figure: {0}")]
+    Figure(#[from] figures::FigureError),
+    #[error(transparent)]
+    Write(#[from] crate::output::OutputError),
+}
+
 /// The body of an export job: the file's bytes and what they are, or why not.
-type ExportWork = dyn FnOnce() -> Result<(Vec<u8>, String), String> + Send;
+type ExportWork = dyn FnOnce() -> Result<(Vec<u8>, String), ExportError> + Send;
 
 impl App {
     /// The figure `W` writes from the view on screen, or why there is none.
@@ -99,8 +111,8 @@ impl App {
         self.status = Status::Info(format!("writing {}…", path.display()));
         self.lab.start_export(move || {
             let (bytes, what) = work()?;
-            crate::output::write_atomically(&path, &bytes).map_err(|e| e.to_string())?;
-            Ok(format!("wrote {} ({what})", path.display()))
+            crate::output::write_atomically(&path, &bytes)?;
+            Ok::<_, ExportError>(Exported { path, what })
         });
         Ok(())
     }
@@ -113,8 +125,7 @@ impl App {
         Box::new(move || {
             let dt = export_step(sol.t_end - sol.t_start);
             let samples = sol.sample(dt);
-            let text =
-                crate::study::export::run_csv(&sol, Some(&samples)).map_err(|e| e.to_string())?;
+            let text = crate::study::export::run_csv(&sol, Some(&samples))?;
             let what = format!(
                 "its scene and {} samples every {}",
                 samples.len(),
@@ -128,10 +139,7 @@ impl App {
     fn svg_work(&self, figure: Figure) -> Result<Box<ExportWork>, String> {
         let scene = self.lab.scene;
         let what = figure.describe().trim_start_matches("the ").to_string();
-        let done = move |svg: Result<String, Box<dyn std::error::Error>>| {
-            svg.map(|s| (s.into_bytes(), what))
-                .map_err(|e| format!("cannot draw the figure: {e}"))
-        };
+        let done = move |svg: Result<String, figures::FigureError>| Ok((svg?.into_bytes(), what));
         Ok(match figure {
             Figure::Velocities | Figure::Positions => {
                 let sol = std::sync::Arc::clone(&self.lab.solution);
