@@ -147,10 +147,7 @@ fn not_measured(fits: &Fits) -> Vec<NotMeasured> {
 pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<String, CliError> {
     // A data file names no scene: fitting it in the default preset's groove would be
     // a silent guess (and compare with the wrong row of the paper).
-    if let Some(path) = data.data.first()
-        && scene_args.preset.is_none()
-        && scene_args.values.given().next().is_none()
-    {
+    if let Some(path) = super::scene_of_data(scene_args, data) {
         return Err(CliError::Invalid(format!(
             "--data {} names no scene: give the one it was measured in, --preset NAME or the scene options (--radius, --width, --mass, --v0 …)",
             path.display()

@@ -1,17 +1,11 @@
 //! What the views draw from a solution, cached per scene and size: curve samples,
-//! energies, the pinned run's samples and changes, the run's story, the regime grid, and the measured
-//! ball's ghost (from the series derived for the scene), the extent and the data RMS.
+//! energies, the pinned run's samples and kinetic energy, the regime grid.
 
 use std::cell::RefCell;
 use std::rc::Rc;
 
 use crate::physics::derived::{Derived, Regime};
-use crate::physics::scene::Span;
 use crate::physics::solution::{EnergySplit, Snapshot, Solution};
-use crate::physics::story::{self, After, Verdict};
-use crate::settings::params::{Key, PARAMS};
-use crate::settings::units::show;
-use crate::study::measured::Measured;
 
 use super::Lab;
 
@@ -19,21 +13,6 @@ use super::Lab;
 pub(super) type Cached<K, T> = RefCell<Option<(K, Rc<[T]>)>>;
 
 impl Lab {
-    /// Where the measured left ball's centre is at `t`: the tracked position of a
-    /// position file, else its v_cm integrated from the impact place at t = 0; `None`
-    /// outside the series.
-    pub fn ghost_x(&self, t: f64) -> Option<f64> {
-        self.data.as_ref()?.ghost_x(t)
-    }
-
-    /// The measured left ball's spin angle at `t` for its spoke, rad, on the model's
-    /// scale (the model's angle at the first impact plus the mark's turn since then);
-    /// `None` without a tracked rim mark or outside the series.
-    pub fn ghost_angle(&self, t: f64) -> Option<f64> {
-        let turn = self.data.as_ref()?.ghost_turn(t)?;
-        Some(self.solution.angle_at(0.0)[0] + turn)
-    }
-
     /// The exact states at the chart's sample times for a plot `columns` wide: about
     /// four per column plus both sides of every event, computed once per scene and width.
     pub fn samples(&self, columns: usize) -> Rc<[Snapshot]> {
@@ -108,35 +87,6 @@ impl Lab {
         k
     }
 
-    /// The pinned parameters that differ from the current ones: `(label, was, now)`
-    /// with the table's label and unit: every value of the scene and the span's start
-    /// (the shown end follows the runs).
-    pub fn pinned_changes(&self) -> &[(&'static str, String, String)] {
-        &self.pinned_changes
-    }
-
-    /// [`Lab::pinned_changes`] computed, once per scene.
-    pub(super) fn changes_from_pinned(&self) -> Vec<(&'static str, String, String)> {
-        let Some(p) = &self.pinned else {
-            return Vec::new();
-        };
-        let was_span = Span {
-            t_start: p.solution.t_start,
-            t_end: Some(p.solution.t_end),
-        };
-        PARAMS
-            .iter()
-            .filter(|row| row.is_own() && row.replaces.is_none() && row.key != Key::TEnd)
-            .filter_map(|row| {
-                let x = (row.get)(&p.scene, &was_span)?;
-                let y = (row.get)(&self.scene, &self.span)?;
-                let differ = (x - y).abs() > 1e-12 * x.abs().max(y.abs());
-                let shown = |v| show(v, row.dim).to_string();
-                differ.then(|| (row.label, shown(x), shown(y)))
-            })
-            .collect()
-    }
-
     /// The regime over groove width (0 … 0.99 · 2R, across) and restitution (1 … 0,
     /// down) for these balls, `cols × rows` cells, row by row; once per scene and size.
     pub fn regime_grid(&self, cols: usize, rows: usize) -> Rc<[Regime]> {
@@ -174,55 +124,4 @@ fn sample_times(sol: &Solution, (t0, t1): (f64, f64), columns: usize) -> Vec<f64
     ts.sort_by(f64::total_cmp);
     ts.dedup();
     ts
-}
-
-/// The x range (m) the balls cover over the span: positions at its ends and at every
-/// event (turning points inside a segment, v = 0, are events).
-pub(super) fn extent(sol: &Solution, radius: f64) -> (f64, f64) {
-    let times = [sol.t_start, sol.t_end]
-        .into_iter()
-        .chain(sol.visible_events().map(|e| e.t));
-    times.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), t| {
-        let s = sol.at(t);
-        (lo.min(s.left.x - radius), hi.max(s.right.x + radius))
-    })
-}
-
-/// RMS residuals of the left ball's v_cm and v_t against `m` (the frame that straddles
-/// the impact left out; a v_t that was not measured left out, `None` if none was).
-pub(super) fn data_rms(sol: &Solution, m: &Measured) -> (f64, Option<f64>) {
-    let (mut sc, mut st, mut n, mut nt) = (0.0, 0.0, 0usize, 0usize);
-    for i in (0..m.t.len()).filter(|&i| m.t[i].abs() >= 0.005) {
-        let s = sol.at(m.t[i]);
-        sc += (s.left.v - m.v_cm[i]).powi(2);
-        n += 1;
-        if m.v_t[i].is_finite() {
-            st += (s.left.u - m.v_t[i]).powi(2);
-            nt += 1;
-        }
-    }
-    let rms = |sum: f64, n: usize| (sum / n.max(1) as f64).sqrt();
-    (rms(sc, n), (nt > 0).then(|| rms(st, nt)))
-}
-
-/// The run's story as the panels tell it, once per scene: the headline, what happens
-/// after the first impact, and the verdict against the measured series' rest band.
-#[derive(Clone, Debug)]
-pub struct Story {
-    pub headline: String,
-    /// The paper's criterion, where the run does otherwise.
-    pub criterion_note: Option<String>,
-    pub after: Option<After>,
-    pub verdict: Verdict,
-}
-
-impl Story {
-    pub(super) fn of(sol: &Solution, derived: &Derived, band: Option<f64>) -> Story {
-        Story {
-            headline: story::headline(sol, derived),
-            criterion_note: story::criterion_note(sol, derived),
-            after: story::after_first_impact(sol, derived),
-            verdict: Verdict::of(sol, derived, band),
-        }
-    }
 }

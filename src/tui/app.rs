@@ -110,12 +110,7 @@ impl App {
                 let sol = &self.lab.solution;
                 self.t = self.t.clamp(sol.t_start, sol.t_end);
                 let label = key.param().label;
-                let value = if self.hide_b && key == Key::Width {
-                    "(hidden)".to_string()
-                } else {
-                    show(self.lab.value(key), key.dimension()).to_string()
-                };
-                self.status = Status::Info(format!("{label} = {value}"));
+                self.status = Status::Info(format!("{label} = {}", self.shown_value(key)));
                 let s = &self.lab.scene;
                 if key == Key::V0 && s.left.v0 == s.right.v0 {
                     self.status = Status::Info(format!(
@@ -125,6 +120,15 @@ impl App {
                 }
             }
             Err(e) => self.status = Status::Error(format!("not applied: {e}")),
+        }
+    }
+
+    /// A parameter's current value as the status line shows it (b hidden if it is).
+    pub(super) fn shown_value(&self, key: Key) -> String {
+        if self.hide_b && key == Key::Width {
+            "(hidden)".to_string()
+        } else {
+            show(self.lab.value(key), key.dimension()).to_string()
         }
     }
 

@@ -103,6 +103,18 @@ pub const TABLE: &[Binding] = &[
         hint: None,
     },
     Binding {
+        keys: &["u"],
+        action: Action::Undo,
+        help: "undo the last parameter change (again: the one before)",
+        hint: None,
+    },
+    Binding {
+        keys: &["R"],
+        action: Action::Reset,
+        help: "reset every parameter to the preset (and the command line's values)",
+        hint: None,
+    },
+    Binding {
         keys: &["t"],
         action: Action::CycleSpan,
         help: "time span: auto (a little past the last event), x2, x1/2",
@@ -157,7 +169,7 @@ pub const TABLE: &[Binding] = &[
         hint: Some(("methods", 3)),
     },
     Binding {
-        keys: &["u"],
+        keys: &["X"],
         action: Action::CycleWorkAxis,
         help: "Methods view: work axis steps, right-hand-side evaluations, time",
         hint: None,
@@ -244,6 +256,12 @@ pub const TABLE: &[Binding] = &[
         keys: &["d"],
         action: Action::DataTable,
         help: "table of the measured data beside the model (scrolls)",
+        hint: None,
+    },
+    Binding {
+        keys: &["D"],
+        action: Action::DropData,
+        help: "drop your own data (--data; a preset picked keeps them): the preset's data, if any, are shown again",
         hint: None,
     },
     Binding {

@@ -174,8 +174,7 @@ t_end = 0.5
 #[test]
 fn a_presets_t_end_holds_until_a_parameter_changes() {
     let p = preset_with_t_end();
-    let (scene, span) = p.spec.resolve().unwrap();
-    let mut a = App::new(Lab::new(p, scene, span), no_user_presets());
+    let mut a = App::new(Lab::of_preset(p).unwrap(), no_user_presets());
     assert_eq!(a.lab.solution.t_end, 0.5);
     assert!(matches!(
         a.lab.span_end,
@@ -417,7 +416,7 @@ fn a_pinned_run_is_drawn_beside_the_current_one_with_what_changed() {
     assert!(a.lab.pinned.is_some());
     select(&mut a, Key::Width);
     press(&mut a, "enter 4 . 4 c m enter");
-    let changes = a.lab.pinned_changes();
+    let changes = a.lab.pinned_changes.clone();
     assert_eq!(
         changes,
         vec![("b", "4.9 cm".to_string(), "4.4 cm".to_string())]

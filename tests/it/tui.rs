@@ -144,10 +144,10 @@ fn playback_runs_on_the_clock_at_the_chosen_speed() {
 fn picker_loads_presets_and_quit_keys_quit() {
     let mut a = app("paper-b4.9");
     press(&mut a, "p down enter");
-    assert_eq!(a.lab.preset.name, a.library.presets[3].name);
+    assert_eq!(a.lab.preset().name, a.library.presets[3].name);
     press(&mut a, "p up up esc");
     assert_eq!(a.mode, Mode::Normal);
-    assert_eq!(a.lab.preset.name, a.library.presets[3].name);
+    assert_eq!(a.lab.preset().name, a.library.presets[3].name);
     press(&mut a, "?");
     assert_eq!(a.mode, Mode::Help);
     press(&mut a, "esc");
@@ -849,7 +849,8 @@ fn save_keeps_the_data_and_the_description_and_explains_bad_names() {
     let path = dir.join("my-paper-b4.4.toml");
     let saved = Preset::load(path.to_str().unwrap()).unwrap();
     assert_eq!(
-        saved.measured, a.lab.preset.measured,
+        saved.measured,
+        a.lab.preset().measured,
         "the measured series is saved"
     );
     assert!(saved.measured.is_some());

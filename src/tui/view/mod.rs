@@ -225,8 +225,8 @@ fn status(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         // The message after playback if both fit, else first: it is what just happened.
         (_, Status::Info(i)) => {
             let both = format!("{}   {i}", app.playback());
-            let fits =
-                both.chars().count() + 2 + 7 + app.lab.preset.name.len() <= usize::from(area.width);
+            let fits = both.chars().count() + 2 + 7 + app.lab.preset().name.len()
+                <= usize::from(area.width);
             if fits {
                 (both, theme.text)
             } else {
@@ -236,7 +236,7 @@ fn status(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         (_, Status::None) => (app.playback(), theme.text),
     };
     let width = usize::from(area.width);
-    let right = g.ellipsize(&format!("preset {}", app.lab.preset.name), width / 3);
+    let right = g.ellipsize(&format!("preset {}", app.lab.preset().name), width / 3);
     let right_len = right.chars().count();
     let room = width.saturating_sub(right_len + 1);
     buf.set_stringn(area.x, area.y, g.ellipsize(&text, room), room, style);
