@@ -5,24 +5,21 @@
 //! rows, the overlay run, the fits), computed lazily on worker threads and dropped
 //! when the scene changes. An edit sets a layer and builds a new snapshot; `Lab`
 //! derefs to it, so a view reads `lab.scene`, `lab.solution`, `lab.story` from the one
-//! snapshot. The analyses' jobs are in `analyses`, the span rule in `span`, the views'
-//! per-size caches in `views`.
+//! snapshot. The analyses' jobs are in `analyses`, the span rule in `span`; what
+//! depends on the terminal's size is cached by the app, not here.
 
 mod analyses;
 pub mod jobs;
 mod resolved;
 mod settings;
 mod span;
-mod views;
 
-use std::cell::RefCell;
 use std::ops::Deref;
 use std::sync::Arc;
 
 use crate::methods::Method;
-use crate::physics::derived::Regime;
 use crate::physics::scene::Scene;
-use crate::physics::solution::{EnergySplit, Snapshot, Solution};
+use crate::physics::solution::Solution;
 use crate::settings::params::{Key, SceneError, SceneSpec};
 use crate::study::compare::Row;
 use crate::study::fit::{FitError, Fits, ModelFit};
@@ -37,7 +34,6 @@ pub use settings::{Edit, Settings};
 pub use span::SpanEnd;
 
 use span::solve_shown;
-use views::Cached;
 
 /// The line fit's window, s: from, to (`None`: the sliding phase's end).
 pub type FitWindow = (Option<f64>, Option<f64>);
@@ -90,11 +86,6 @@ pub struct Lab {
     /// each export its own request.
     export: Job<u64, Result<String, String>>,
     exports: u64,
-    samples: Cached<usize, Snapshot>,
-    energies: Cached<usize, (f64, EnergySplit)>,
-    pinned_samples: Cached<usize, Snapshot>,
-    pinned_kinetic: Cached<usize, (f64, f64)>,
-    regimes: Cached<(usize, usize), Regime>,
 }
 
 /// The lab reads as its current snapshot: `lab.scene`, `lab.solution`, `lab.story`.
@@ -132,11 +123,6 @@ impl Lab {
             position_fit: Job::default(),
             export: Job::default(),
             exports: 0,
-            samples: RefCell::default(),
-            energies: RefCell::default(),
-            pinned_samples: RefCell::default(),
-            pinned_kinetic: RefCell::default(),
-            regimes: RefCell::default(),
         })
     }
 
@@ -286,11 +272,6 @@ impl Lab {
             || now.data.as_ref().map(|d| Arc::as_ptr(&d.measured))
                 != self.now.data.as_ref().map(|d| Arc::as_ptr(&d.measured));
         self.now = Arc::new(now);
-        self.samples.replace(None);
-        self.energies.replace(None);
-        self.pinned_samples.replace(None);
-        self.pinned_kinetic.replace(None);
-        self.regimes.replace(None);
         if moved {
             // Every analysis asked for from now on belongs to this solve.
             self.generation += 1;

@@ -22,6 +22,7 @@ pub use super::vocabulary::{
 pub use predict::reveal_time;
 pub use prompts::{export_step, typing_prompt};
 
+use super::view::ViewCache;
 use super::vocabulary::{DEFAULT_SPEED, WorkAxis};
 use prompts::TextTarget;
 
@@ -64,6 +65,8 @@ pub struct App {
     pub hide_b: bool,
     /// The last prediction (predict, observe, explain).
     pub prediction: Option<Prediction>,
+    /// What the charts and the map draw at the last size, per snapshot.
+    pub view_cache: ViewCache,
 }
 
 impl App {
@@ -91,6 +94,7 @@ impl App {
             forces_ball: 0,
             hide_b: false,
             prediction: None,
+            view_cache: ViewCache::default(),
         }
     }
 
@@ -199,6 +203,7 @@ impl App {
     }
 
     pub fn apply(&mut self, action: Action) {
+        self.view_cache.chart_changed();
         if action == Action::Quit {
             // Ctrl-C quits from anywhere; `q` only reaches here from the normal screen
             // (in a popup the key table makes it close the popup, in a prompt it types).

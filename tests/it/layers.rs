@@ -1,19 +1,19 @@
 //! Layers, of the source and of the settings. The source's layers are folders, each
 //! using only those above it (physics → settings → methods → study → lab → the
 //! edges): no source file of a layer names a later one. The settings' layers (preset
-//! ← command line ← the app's edits) settle into one snapshot: the same scene reached
-//! by flags or by keys draws the same screen, with or without data; `u` takes back
-//! the last edit, `R` all of them; a preset picked keeps the student's data.
+//! ← command line ← the app's edits) settle into one snapshot (that the same scene
+//! reached by flags or by keys draws the same screen is `lab_data`'s test): `u` takes
+//! back the last edit, `R` all of them; a preset picked keeps the student's data; data
+//! without a scene are one rule for the app, `render` and `fit`.
 
 use std::path::{Path, PathBuf};
 
 use groovelab::cli::{DataArgs, SceneArgs};
 use groovelab::lab::SpanEnd;
 use groovelab::settings::params::{Key, SceneSpec};
-use groovelab::study::preset::Preset;
-use groovelab::tui::app::{App, Status};
+use groovelab::tui::app::Status;
 
-use crate::common::{self, press, rendered, text};
+use crate::common::{self, press, rendered};
 
 /// The inner layers in order; everything else (`input`, `output`, `signals`, `cli`,
 /// `tui`) is an edge and may use them all.
@@ -61,12 +61,8 @@ fn library() -> groovelab::tui::app::Library {
 }
 
 fn scene(values: SceneSpec) -> SceneArgs {
-    scene_of("paper-b4.9", values)
-}
-
-fn scene_of(preset: &str, values: SceneSpec) -> SceneArgs {
     SceneArgs {
-        preset: Some(preset.into()),
+        preset: Some("paper-b4.9".into()),
         values,
     }
 }
@@ -76,88 +72,6 @@ fn data(files: &[PathBuf]) -> DataArgs {
         data: files.to_vec(),
         ..DataArgs::default()
     }
-}
-
-/// The paper's measured velocities of paper-b4.9 as a velocity file of the user's.
-fn velocity_file() -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("groovelab-layers-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let m = Preset::load("paper-b4.9").unwrap().measured.unwrap();
-    let mut csv = String::from("t (s),v_cm (m/s),v_t (m/s)\n");
-    for i in 0..m.t.len() {
-        csv += &format!("{},{},{}\n", m.t[i], m.v_cm[i], m.v_t[i]);
-    }
-    let path = dir.join("velocities.csv");
-    std::fs::write(&path, csv).unwrap();
-    path
-}
-
-/// The screen without the status line's message (which says what the keys did).
-fn screen(mut app: App, size: (u16, u16), ascii: bool) -> String {
-    app.status = Status::None;
-    text(&app, size, ascii)
-}
-
-#[test]
-fn the_same_scene_by_flags_or_by_keys_draws_the_same_screen() {
-    let velocities = velocity_file();
-    let flags = SceneSpec::default()
-        .with(Key::Width, 0.044)
-        .with(Key::Mu, 0.2);
-    // b is the row selected at start; μ_k three rows down. Typed as the user types.
-    let keys = "enter 4 . 4 enter down down down enter 0 . 2 enter up up up";
-    let cases = [
-        ("inelastic", vec![]),
-        ("paper-b4.9", vec![velocities.clone()]),
-        ("paper-b4.9", vec![PathBuf::from(TRACK)]),
-    ];
-    for (preset, files) in cases {
-        let d = data(&files);
-        let by_flags = rendered(
-            &scene_of(preset, flags.clone()),
-            &d,
-            Some(0.1),
-            None,
-            library(),
-        );
-        let plain = scene_of(preset, SceneSpec::default());
-        let by_keys = rendered(&plain, &d, None, Some(keys), library());
-        assert_eq!(files.is_empty(), by_keys.lab.measured().is_none());
-        assert_eq!(by_keys.lab.scene, by_flags.lab.scene, "{files:?}");
-        assert_eq!(by_keys.lab.data_rms, by_flags.lab.data_rms, "{files:?}");
-        let mut by_keys = by_keys;
-        by_keys.t = 0.1;
-        for (size, ascii) in [((120, 40), false), ((80, 24), true)] {
-            assert_eq!(
-                screen(by_keys.clone(), size, ascii),
-                screen(by_flags.clone(), size, ascii),
-                "{files:?} at {size:?}"
-            );
-        }
-    }
-    let _ = std::fs::remove_file(velocities);
-}
-
-#[test]
-fn a_track_follows_b_live_and_its_rms_is_the_flags_ones() {
-    let d = data(&[PathBuf::from(TRACK)]);
-    let mut a = rendered(&scene(SceneSpec::default()), &d, None, None, library());
-    let before = a.lab.data_rms.unwrap();
-    press(&mut a, "left left left left");
-    let after = a.lab.data_rms.unwrap();
-    assert!(
-        before.1.unwrap() != after.1.unwrap(),
-        "v_t's residual follows r"
-    );
-    let width = a.lab.scene.width;
-    let by_flags = rendered(
-        &scene(SceneSpec::default().with(Key::Width, width)),
-        &d,
-        None,
-        None,
-        library(),
-    );
-    assert_eq!(by_flags.lab.data_rms.unwrap(), after);
 }
 
 #[test]

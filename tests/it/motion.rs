@@ -356,6 +356,37 @@ fn a_click_on_the_chart_seeks_to_the_time_under_it() {
     assert_eq!(view::chart_time_at(&a, area, 40, 20), None);
 }
 
+#[test]
+fn a_drag_on_the_chart_does_not_build_the_chart_again() {
+    let mut a = app("paper-b4.9");
+    press(&mut a, "x");
+    let area = Rect::new(0, 0, 120, 40);
+    let theme = Theme::new(Glyphs::UNICODE, true);
+    let top = view::layout(area).unwrap().chart.y;
+    // Never drawn: the chart is laid out to answer.
+    let fresh: Vec<Option<f64>> = (0..120)
+        .map(|c| view::chart_time_at(&a, area, c, top + 10))
+        .collect();
+    view::to_text(&a, 120, 40, &theme);
+    let built = a.view_cache.charts_built.get();
+    for (c, want) in fresh.iter().enumerate() {
+        let t = view::chart_time_at(&a, area, c as u16, top + 10);
+        assert_eq!(t, *want, "column {c}");
+        if let Some(t) = t {
+            a.seek(t);
+        }
+    }
+    assert_eq!(
+        a.view_cache.charts_built.get(),
+        built,
+        "a drag builds no chart"
+    );
+    // A key may change the chart: it is laid out again.
+    press(&mut a, "e");
+    view::chart_time_at(&a, area, 60, top + 10);
+    assert_eq!(a.view_cache.charts_built.get(), built + 1);
+}
+
 // ---- 3. The energy chart --------------------------------------------------------------
 
 #[test]
@@ -363,7 +394,7 @@ fn the_energy_chart_splits_the_initial_energy_at_every_sample() {
     let mut a = app("inelastic");
     press(&mut a, "e");
     assert!(a.show_energy);
-    let split = a.lab.energies(100);
+    let split = a.energies(100);
     let total = split[0].1.total();
     assert!(total > 0.0);
     for (t, e) in split.iter() {

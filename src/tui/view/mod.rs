@@ -2,6 +2,7 @@
 //! writing into a [`Buffer`]. The terminal and the headless `render` both call
 //! [`draw`], so a script sees exactly what a user sees.
 
+mod cache;
 mod charts;
 mod fit;
 mod forces;
@@ -10,6 +11,7 @@ mod map;
 mod methods;
 mod params;
 
+pub use cache::ViewCache;
 pub use forces::ANSWERS;
 pub use params::param_at;
 pub use popups::data_rows;
