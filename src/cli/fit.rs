@@ -468,7 +468,7 @@ fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit, paper_data:
     }
     let _ = writeln!(
         out,
-        "  (the velocity fit weights each derived point by its uncertainty but counts the points as independent and the impact time as exact: its ± is too small; the position fit profiles out the impact's time and place, and its ± is the one to quote)"
+        "  (the velocity fit takes the model through the same local fits as the data, profiles out the impact time and counts the frames neighbouring points share; the position fit needs no derivatives and is the more precise: quote it)"
     );
     out
 }

@@ -124,6 +124,19 @@ impl Dimension {
             format!("a number with unit {} (bare number = SI)", names.join(", "))
         }
     }
+
+    /// What the app's typing field takes: there a bare number is in the display unit,
+    /// not SI (the command line's rule would set b to 0.049 cm for "0.049").
+    fn allowed_typed(self) -> String {
+        let names: Vec<&str> = self.units().iter().map(|u| u.0).collect();
+        match self.table().display {
+            "" => "a plain number".to_string(),
+            unit => format!(
+                "a number in {unit} (a bare number is in {unit}) or with a unit {}",
+                names.join(", ")
+            ),
+        }
+    }
 }
 
 /// Why a quantity could not be read.
@@ -284,9 +297,9 @@ pub fn parse_typed(text: &str, dim: Dimension) -> Result<f64, UnitError> {
                 parse_quantity(&format!("{number}{name}"), dim)
             }
             .map_err(|e| match e {
-                UnitError::NotANumber { text: _, allowed } => UnitError::NotANumber {
+                UnitError::NotANumber { .. } => UnitError::NotANumber {
                     text: text.to_string(),
-                    allowed,
+                    allowed: dim.allowed_typed(),
                 },
                 other => other,
             });
@@ -294,18 +307,14 @@ pub fn parse_typed(text: &str, dim: Dimension) -> Result<f64, UnitError> {
         normal = format!("{}{unit}", &normal[..i]);
     }
     parse_quantity(&normal, dim).map_err(|e| match e {
-        UnitError::NotANumber { text: _, allowed } => UnitError::NotANumber {
+        UnitError::NotANumber { .. } => UnitError::NotANumber {
             text: text.to_string(),
-            allowed,
+            allowed: dim.allowed_typed(),
         },
-        UnitError::UnknownUnit {
-            text: _,
-            unit,
-            allowed,
-        } => UnitError::UnknownUnit {
+        UnitError::UnknownUnit { unit, .. } => UnitError::UnknownUnit {
             text: text.to_string(),
             unit,
-            allowed,
+            allowed: dim.allowed_typed(),
         },
         other => other,
     })

@@ -110,19 +110,7 @@ impl App {
     /// Sets a parameter if the scene stays valid; otherwise says why in the status line.
     pub fn set_value(&mut self, key: Key, value: f64) {
         match self.lab.set(key, value) {
-            Ok(()) => {
-                let sol = &self.lab.solution;
-                self.t = self.t.clamp(sol.t_start, sol.t_end);
-                let label = key.param().label;
-                self.status = Status::Info(format!("{label} = {}", self.shown_value(key)));
-                let s = &self.lab.scene;
-                if key == Key::V0 && s.left.v0 == s.right.v0 {
-                    self.status = Status::Info(format!(
-                        "v0 of both balls = {}",
-                        show(s.left.v0, Dimension::Speed)
-                    ));
-                }
-            }
+            Ok(()) => self.applied(key),
             Err(e) => self.status = Status::Error(format!("not applied: {e}")),
         }
     }
@@ -133,6 +121,22 @@ impl App {
             "(hidden)".to_string()
         } else {
             show(self.lab.value(key), key.dimension()).to_string()
+        }
+    }
+
+    /// After the lab took a new value of `key`: the cursor kept in the span, the new
+    /// value in the status line.
+    fn applied(&mut self, key: Key) {
+        let sol = &self.lab.solution;
+        self.t = self.t.clamp(sol.t_start, sol.t_end);
+        let label = key.param().label;
+        self.status = Status::Info(format!("{label} = {}", self.shown_value(key)));
+        let s = &self.lab.scene;
+        if key == Key::V0 && s.left.v0 == s.right.v0 {
+            self.status = Status::Info(format!(
+                "v0 of both balls = {}",
+                show(s.left.v0, Dimension::Speed)
+            ));
         }
     }
 

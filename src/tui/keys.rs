@@ -111,7 +111,7 @@ pub const TABLE: &[Binding] = &[
     Binding {
         keys: &["R"],
         action: Action::Reset,
-        help: "reset every parameter to the preset (and the command line's values)",
+        help: "reset all parameters to the preset (and the command line's)",
         hint: None,
     },
     Binding {
@@ -177,13 +177,13 @@ pub const TABLE: &[Binding] = &[
     Binding {
         keys: &["g"],
         action: Action::ToggleMap,
-        help: "Map view: regime over b/R and e with this scene marked, the paper's figure",
+        help: "Map view: regime over b/R and e, this scene marked, paper's figure",
         hint: Some(("map", 3)),
     },
     Binding {
         keys: &["v"],
         action: Action::ToggleForces,
-        help: "Forces view: the groove's cross-section with the forces and torques, the balls' motion states, the cause-and-effect chain (b: left or right ball)",
+        help: "Forces view: the groove's cross-section with forces and torques, motion states, the cause-and-effect chain (b: left or right ball)",
         hint: None,
     },
     Binding {
@@ -231,7 +231,7 @@ pub const TABLE: &[Binding] = &[
     Binding {
         keys: &["o"],
         action: Action::CycleOverlay,
-        help: "overlay a time-stepping method on the exact curves (cycles, then off)",
+        help: "overlay a time-stepping method on the exact curves (cycles, off)",
         hint: Some(("overlay", 1)),
     },
     Binding {
@@ -261,7 +261,7 @@ pub const TABLE: &[Binding] = &[
     Binding {
         keys: &["D"],
         action: Action::DropData,
-        help: "drop your own data (--data; a preset picked keeps them): the preset's data, if any, are shown again",
+        help: "drop your own data (--data); a preset picked keeps them",
         hint: None,
     },
     Binding {
@@ -303,7 +303,7 @@ pub const TABLE: &[Binding] = &[
     Binding {
         keys: &["esc"],
         action: Action::Cancel,
-        help: "close a popup, cancel typing; on the main screen: quit",
+        help: "close a popup, cancel typing (it never quits: q does)",
         hint: None,
     },
     Binding {

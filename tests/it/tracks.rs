@@ -74,15 +74,14 @@ fn mu_is_recovered_at_every_frame_rate_and_noise() {
                 "| {fps} | {:.1} mm | {dp:.4} | {se:.4} | {dv:.4} |",
                 noise * 1e3
             );
-            // Measured worst cases: position 0.0005 (30 fps, 1 mm), velocity 0.0048
-            // (30 fps, 1 mm) and 0.0014 at 60 fps and more; bounds with some margin.
+            // Measured worst cases: position 0.0005 (30 fps, 1 mm), velocity 0.0016
+            // (60 and 120 fps, 1 mm); bounds with some margin.
             assert!(
                 dp <= 0.002,
                 "{fps} fps, {noise} m: position fit off by {dp}"
             );
-            let bound = if fps < 60.0 { 0.008 } else { 0.004 };
             assert!(
-                dv <= bound,
+                dv <= 0.004,
                 "{fps} fps, {noise} m: velocity fit off by {dv}"
             );
         }
@@ -381,5 +380,49 @@ fn cli_error_for_a_track_without_an_impact_is_one_line() {
     assert!(
         err.starts_with("error: ") && err.contains("frames after the impact"),
         "{err}"
+    );
+}
+
+/// Issue 19: the velocity fit's ± once counted the derived points as independent
+/// (they share frames), ignored the error of the impact time found in the same track,
+/// and compared the rounded corners of derived v(t) with the model's sharp ones: its
+/// 1σ held the truth in about 30 % of tracks. Over 40 synthetic tracks (30–240
+/// frames/s, 0.1–1 mm, with and without a rim mark) the 1σ interval must hold the
+/// truth about 68 % of the time.
+#[test]
+fn the_velocity_fit_uncertainty_covers_the_truth() {
+    let s = scene("paper-b4.9");
+    let settings = [
+        (60.0, 3e-4, true),
+        (120.0, 3e-4, true),
+        (30.0, 1e-3, true),
+        (120.0, 1e-4, false),
+        (240.0, 1e-3, true),
+    ];
+    let tracks = 40;
+    let inside = (0..tracks)
+        .filter(|&k| {
+            let (fps, noise, mark) = settings[k % settings.len()];
+            let v = Video {
+                fps,
+                noise,
+                mark,
+                seed: 100 + k as u64,
+                ..Video::default()
+            };
+            let l = try_load(&s, &video::write(&video::track(&s, &v), Format::CsvComma)).unwrap();
+            let start = Scene { mu: 0.3, ..s };
+            let f =
+                fit::model_fit(&start, &l.measured, &[Free::Mu], &groovelab::study::Quiet).unwrap();
+            (f.mu - MU).abs() <= f.mu_se
+        })
+        .count();
+    println!("{inside} of {tracks} inside 1σ");
+    // Binomial(40, 0.683): mean 27.3, standard deviation 2.9; 20 … 34 is ±2.5 of it
+    // (a calibrated ± fails it with a chance of about 1 %). Measured: 26 of 40; at each
+    // setting alone 36 … 39 of 60 (7 … 27 of 60 before).
+    assert!(
+        (20..=34).contains(&inside),
+        "{inside} of {tracks} velocity fits hold the truth within 1σ"
     );
 }

@@ -68,21 +68,93 @@ fn arrows_change_the_selected_parameter_and_resolve() {
 }
 
 #[test]
-fn out_of_range_values_are_refused_not_applied() {
+fn a_step_past_a_limit_stops_at_the_limit() {
+    // Seen: Shift-Right at b = 4.90 cm (R = 2.75 cm) was refused as "b = 5.5 cm"; it
+    // goes to the last fine step below 2R = 5.5 cm, and says it stopped there.
     let mut a = app("paper-b4.9");
     select(&mut a, Key::Width);
+    let two_r = 2.0 * a.lab.scene.radius;
+    assert!((two_r - 0.055).abs() < 1e-12, "{two_r}");
+    press(&mut a, "S-right");
+    assert!(
+        (a.lab.scene.width - 0.0545).abs() < 1e-12,
+        "{}",
+        a.lab.scene.width
+    );
+    assert!(
+        matches!(&a.status, Status::Info(s) if s.contains("b = 5.45 cm") && s.contains("stopped at the limit") && s.contains("2R")),
+        "{:?}",
+        a.status
+    );
+    // From the limit a step cannot move: refused, the scene unchanged.
     let before = a.lab.scene;
-    press(&mut a, "pgup pgup");
+    press(&mut a, "pgup right");
     assert_eq!(a.lab.scene, before, "b ≥ 2R must not be applied");
     assert!(
         matches!(&a.status, Status::Error(e) if e.contains("2R")),
         "{:?}",
         a.status
     );
+    // A limit of the row's own range: e stops at 1 (allowed), from below by a fine
+    // step too; at 1 a further step is refused.
     select(&mut a, Key::Restitution);
+    a.set_value(Key::Restitution, 0.995);
+    press(&mut a, "right");
+    assert_eq!(a.lab.scene.restitution, 1.0);
+    assert!(
+        matches!(&a.status, Status::Info(s) if s.contains("stopped at the limit")),
+        "{:?}",
+        a.status
+    );
     press(&mut a, "right");
     assert_eq!(a.lab.scene.restitution, 1.0);
     assert!(matches!(a.status, Status::Error(_)));
+    // Downward too: μ_k at 0.004 and a fine step (0.01) down stops at 0.
+    select(&mut a, Key::Mu);
+    a.set_value(Key::Mu, 0.004);
+    press(&mut a, "left");
+    assert_eq!(a.lab.scene.mu, 0.0);
+    assert!(
+        matches!(&a.status, Status::Info(s) if s.contains("stopped at the limit")),
+        "{:?}",
+        a.status
+    );
+    // With b hidden, the refused value is not named (it would give b away).
+    let mut a = app("paper-b4.9");
+    select(&mut a, Key::Width);
+    press(&mut a, "B S-right");
+    assert!(
+        matches!(&a.status, Status::Info(s) if s.contains("stopped at the limit") && !s.contains("cm")),
+        "{:?}",
+        a.status
+    );
+}
+
+#[test]
+fn typing_errors_state_the_apps_unit_rule() {
+    // In the app a bare number is in the row's display unit; the error must not say
+    // "bare number = SI" (following it set b to 0.049 cm).
+    let mut a = app("paper-b4.9");
+    select(&mut a, Key::Width);
+    for typed in ["enter x enter", "enter 4 k g enter"] {
+        press(&mut a, typed);
+        let Status::Error(e) = &a.status else {
+            panic!("{typed}: {:?}", a.status)
+        };
+        assert!(!e.contains("SI"), "{typed}: {e}");
+        assert!(e.contains("a bare number is in cm"), "{typed}: {e}");
+    }
+    select(&mut a, Key::MassLeft);
+    press(&mut a, "enter 1 m enter");
+    assert!(
+        matches!(&a.status, Status::Error(e) if e.contains("a bare number is in g")),
+        "{:?}",
+        a.status
+    );
+    // And what the error says works: a bare number in the unit shown.
+    select(&mut a, Key::Width);
+    press(&mut a, "enter 4 . 9 enter");
+    assert_eq!(a.lab.scene.width, 0.049);
 }
 
 #[test]
@@ -158,8 +230,17 @@ fn picker_loads_presets_and_quit_keys_quit() {
     let mut a = app("paper-b4.9");
     press(&mut a, "enter 4 C-c");
     assert!(a.quit, "Ctrl-C quits even while typing");
+    // Esc on the main screen never quits (a reflex Esc ended the session): it says
+    // how to quit instead.
     let mut a = app("paper-b4.9");
-    press(&mut a, "esc");
+    press(&mut a, "esc esc");
+    assert!(!a.quit);
+    assert!(
+        matches!(&a.status, Status::Info(s) if s.contains("q quits")),
+        "{:?}",
+        a.status
+    );
+    press(&mut a, "q");
     assert!(a.quit);
 }
 
@@ -513,20 +594,20 @@ fn methods_view_work_axis_outcome_and_order() {
     assert!(s.contains("against steps per run"), "{s}");
     assert!(s.contains("= outcome right (recollide, 20 impacts)"), "{s}");
     assert!(s.contains("order: e "), "{s}");
-    press(&mut a, "u");
+    press(&mut a, "X");
     a.lab.wait();
     let s = screen_of(&a);
     assert!(s.contains("against rhs evaluations per run"), "{s}");
-    press(&mut a, "u");
+    press(&mut a, "X");
     a.lab.wait();
     let s = screen_of(&a);
     assert!(s.contains("against time per run"), "{s}");
-    press(&mut a, "u");
+    press(&mut a, "X");
     assert!(screen_of(&a).contains("against steps per run"));
     assert!(
         keys::TABLE
             .iter()
-            .any(|b| b.keys == ["u"] && b.help.contains("work axis"))
+            .any(|b| b.keys == ["X"] && b.help.contains("work axis"))
     );
 }
 

@@ -6,7 +6,8 @@ use super::uncertainty::{clamped, solve};
 use super::{Evals, FitError, Free};
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
-use crate::study::measured::series::Measured;
+use crate::physics::solution::Solution;
+use crate::study::measured::series::{Measured, Stencil, Stencils};
 
 /// Scene with the fit parameters `p` applied.
 pub(super) fn with(scene: &Scene, free: &[Free], p: &[f64]) -> Scene {
@@ -72,6 +73,21 @@ pub(super) fn residuals_of(
     target: Target,
     weighted: bool,
 ) -> Vec<f64> {
+    labelled_residuals(scene, m, idx, target, weighted).0
+}
+
+/// Which measured value a velocity residual compares with: the point's index and
+/// whether it is its v_t (else its v_cm).
+pub(super) type Label = (usize, bool);
+
+/// [`residuals_of`], with each velocity residual's [`Label`] (none for positions).
+pub(super) fn labelled_residuals(
+    scene: &Scene,
+    m: &Measured,
+    idx: &[usize],
+    target: Target,
+    weighted: bool,
+) -> (Vec<f64>, Vec<Label>) {
     let t0 = m.t[0].min(-1e-3);
     let sol = engine::solve(
         scene,
@@ -80,70 +96,139 @@ pub(super) fn residuals_of(
             t_end: None,
         },
     );
-    let mut r = Vec::with_capacity(2 * idx.len());
-    // A residual over its uncertainty; one without a usable uncertainty is dropped.
-    let push = |r: &mut Vec<f64>, d: f64, sigma: Option<&Vec<f64>>, i: usize| {
-        if !d.is_finite() {
-            return;
-        }
-        match sigma.filter(|_| weighted).map(|s| s[i]) {
-            None => r.push(d),
-            Some(s) if s > 0.0 && s.is_finite() => r.push(d / s),
-            Some(_) => {}
-        }
-    };
     match target {
-        Target::Velocity => {
-            for &i in idx {
-                let s = sol.at(m.t[i]);
-                push(&mut r, s.left.v - m.v_cm[i], m.v_cm_sigma.as_ref(), i);
-                push(&mut r, s.left.u - m.v_t[i], m.v_t_sigma.as_ref(), i);
-            }
-        }
-        Target::Position => {
-            let (Some(x), radius) = (m.x.as_ref(), scene.k() * scene.radius) else {
-                return r;
-            };
-            // The impact's time and place, and the mark's angle then, were estimated
-            // from the same noisy track: each residual gets the best shift δt, δx, δθ
-            // (linearised: x moves by v δt, r θ by u δt), profiled out of the fit.
-            let theta0 = sol.angle_at(0.0)[0];
-            // (residual, ∂/∂δt, ∂/∂δx, ∂/∂δθ)
-            let mut rows: Vec<[f64; 4]> = Vec::with_capacity(2 * idx.len());
-            for &i in idx {
-                let s = sol.at(m.t[i]);
-                rows.push([s.left.x + scene.radius - x[i], s.left.v, -1.0, 0.0]);
-                if let Some(a) = &m.angle {
-                    let model = sol.angle_at(m.t[i])[0] - theta0;
-                    rows.push([radius * (model - a[i]), s.left.u, 0.0, -radius]);
-                }
-            }
-            rows.retain(|row| row.iter().all(|v| v.is_finite()));
-            let k = if m.angle.is_some() { 3 } else { 2 };
-            let mut ata = vec![vec![0.0; k]; k];
-            let mut atb = vec![0.0; k];
-            for row in &rows {
-                for a in 0..k {
-                    atb[a] -= row[1 + a] * row[0];
-                    for b in 0..k {
-                        ata[a][b] += row[1 + a] * row[1 + b];
-                    }
-                }
-            }
-            let shift = solve(ata, atb).unwrap_or_else(|| vec![0.0; k]);
-            for row in rows {
-                let d = row[0] + (0..k).map(|a| row[1 + a] * shift[a]).sum::<f64>();
-                push(&mut r, d, None, 0);
+        Target::Velocity => velocity_residuals(&sol, m, idx, weighted),
+        Target::Position => (position_residuals(scene, &sol, m, idx), Vec::new()),
+    }
+}
+
+/// One over a residual's uncertainty (1 unweighted or without one); `None` for a
+/// residual that is not a number or whose uncertainty is not usable (left out).
+fn weight(d: f64, sigma: Option<&Vec<f64>>, i: usize, weighted: bool) -> Option<f64> {
+    if !d.is_finite() {
+        return None;
+    }
+    match sigma.filter(|_| weighted).map(|s| s[i]) {
+        None => Some(1.0),
+        Some(s) if s > 0.0 && s.is_finite() => Some(1.0 / s),
+        Some(_) => None,
+    }
+}
+
+/// [`labelled_residuals`] of v_cm and v_t.
+fn velocity_residuals(
+    sol: &Solution,
+    m: &Measured,
+    idx: &[usize],
+    weighted: bool,
+) -> (Vec<f64>, Vec<Label>) {
+    // (residual, ∂/∂δt, label), each over its uncertainty.
+    let mut rows = Vec::with_capacity(2 * idx.len());
+    for &i in idx {
+        let s = sol.at(m.t[i]);
+        let (a, du) = sol.segment_at(m.t[i]).accel[0];
+        let (v, u) = match &m.stencils {
+            Some(st) => as_derived(sol, st, i, (s.left.v, s.left.u)),
+            None => (s.left.v, s.left.u),
+        };
+        let values = [
+            (v - m.v_cm[i], a, m.v_cm_sigma.as_ref(), false),
+            (u - m.v_t[i], du, m.v_t_sigma.as_ref(), true),
+        ];
+        for (d, slope, sigma, spin) in values {
+            if let Some(w) = weight(d, sigma, i, weighted) {
+                rows.push((d * w, slope * w, (i, spin)));
             }
         }
     }
-    r
+    // A track's impact time was estimated from the same noisy positions: the model's
+    // time gets the best shift δt (linearised: v moves by a δt), profiled out of the
+    // fit as the position fit does — else its error lands in μ_k.
+    let shift = match &m.stencils {
+        Some(_) => {
+            let (num, den) = rows
+                .iter()
+                .fold((0.0, 0.0), |(n, d), (r, s, _)| (n + r * s, d + s * s));
+            if den > 0.0 { -num / den } else { 0.0 }
+        }
+        None => 0.0,
+    };
+    rows.iter().map(|&(r, s, l)| (r + s * shift, l)).unzip()
+}
+
+/// The position residuals (x, and r θ of the mark), unweighted.
+fn position_residuals(scene: &Scene, sol: &Solution, m: &Measured, idx: &[usize]) -> Vec<f64> {
+    let (Some(x), radius) = (m.x.as_ref(), scene.k() * scene.radius) else {
+        return Vec::new();
+    };
+    // The impact's time and place, and the mark's angle then, were estimated from the
+    // same noisy track: each residual gets the best shift δt, δx, δθ (linearised: x
+    // moves by v δt, r θ by u δt), profiled out of the fit.
+    let theta0 = sol.angle_at(0.0)[0];
+    // (residual, ∂/∂δt, ∂/∂δx, ∂/∂δθ)
+    let mut rows: Vec<[f64; 4]> = Vec::with_capacity(2 * idx.len());
+    for &i in idx {
+        let s = sol.at(m.t[i]);
+        rows.push([s.left.x + scene.radius - x[i], s.left.v, -1.0, 0.0]);
+        if let Some(a) = &m.angle {
+            let model = sol.angle_at(m.t[i])[0] - theta0;
+            rows.push([radius * (model - a[i]), s.left.u, 0.0, -radius]);
+        }
+    }
+    rows.retain(|row| row.iter().all(|v| v.is_finite()));
+    let k = if m.angle.is_some() { 3 } else { 2 };
+    let mut ata = vec![vec![0.0; k]; k];
+    let mut atb = vec![0.0; k];
+    for row in &rows {
+        for a in 0..k {
+            atb[a] -= row[1 + a] * row[0];
+            for b in 0..k {
+                ata[a][b] += row[1 + a] * row[1 + b];
+            }
+        }
+    }
+    let shift = solve(ata, atb).unwrap_or_else(|| vec![0.0; k]);
+    rows.iter()
+        .map(|row| row[0] + (0..k).map(|a| row[1 + a] * shift[a]).sum::<f64>())
+        .filter(|d| d.is_finite())
+        .collect()
+}
+
+/// The model's v_cm and v_t at point `i` (`exact` there) as the data were made: a
+/// velocity derived from a track is a local fit's slope over frames, which rounds the
+/// corners of v(t) (the end of sliding, an impact), so the model's positions go
+/// through the same stencil and get the same rounding — else the fit bends μ_k to
+/// match the rounded corner. Within one segment the positions are quadratic in t and
+/// the stencil gives the exact slope back: only windows over a boundary are summed.
+fn as_derived(sol: &Solution, st: &Stencils, i: usize, exact: (f64, f64)) -> (f64, f64) {
+    let one_segment = |times: &[f64], s: &Stencil| {
+        std::ptr::eq(sol.segment_at(times[s.lo]), sol.segment_at(times[s.hi]))
+    };
+    let v = match st.v_cm.get(i) {
+        Some(Some(s)) if !one_segment(&st.centre_times, s) => s
+            .weights(&st.centre_times)
+            .map(|(k, w)| w * sol.at(st.centre_times[k]).left.x)
+            .sum(),
+        _ => exact.0,
+    };
+    let r = sol.scene.k() * sol.scene.radius;
+    let u = match st.v_t.get(i) {
+        Some(Some(s)) if !one_segment(&st.mark_times, s) => {
+            r * s
+                .weights(&st.mark_times)
+                .map(|(k, w)| w * sol.angle_at(st.mark_times[k])[0])
+                .sum::<f64>()
+        }
+        _ => exact.1,
+    };
+    (v, u)
 }
 
 /// Parameters a fit to `target` estimates besides the free scene values.
 pub(super) fn nuisance(m: &Measured, target: Target) -> usize {
     match (target, m.angle.is_some()) {
-        (Target::Velocity, _) => 0,
+        // A track's impact time ([`velocity_residuals`]).
+        (Target::Velocity, _) => usize::from(m.stencils.is_some()),
         (Target::Position, false) => 2,
         (Target::Position, true) => 3,
     }
@@ -237,16 +322,71 @@ pub(super) fn jacobian(
 ) -> Vec<Vec<f64>> {
     (0..p.len())
         .map(|j| {
-            let mut h = 1e-6 * p[j].abs().max(0.1);
+            let mut h = step(p[j]);
             if free[j] == Free::Restitution && p[j] + h > 1.0 {
                 h = -h;
             }
-            let mut q = p.to_vec();
-            q[j] += h;
-            residuals(&with(scene, free, &q), m, idx, target)
-                .iter()
-                .zip(r0)
-                .map(|(a, b)| (a - b) / h)
+            difference(scene, m, free, idx, p, r0, target, j, h)
+        })
+        .collect()
+}
+
+/// The step of a numerical derivative at `v`.
+fn step(v: f64) -> f64 {
+    1e-6 * v.abs().max(0.1)
+}
+
+/// (r(p + h e_j) − r(p)) / h.
+#[allow(clippy::too_many_arguments)]
+fn difference(
+    scene: &Scene,
+    m: &Measured,
+    free: &[Free],
+    idx: &[usize],
+    p: &[f64],
+    r0: &[f64],
+    target: Target,
+    j: usize,
+    h: f64,
+) -> Vec<f64> {
+    let mut q = p.to_vec();
+    q[j] += h;
+    let r = residuals(&with(scene, free, &q), m, idx, target);
+    if r.len() != r0.len() {
+        // A point dropped or gained at the step: no derivative to take.
+        return vec![0.0; r0.len()];
+    }
+    r.iter().zip(r0).map(|(a, b)| (a - b) / h).collect()
+}
+
+/// [`jacobian`] for the uncertainties: each residual's derivative is the smaller of
+/// the forward and the backward difference. A residual can jump between two nearby
+/// values of a parameter (a data point that a later impact or the end of sliding
+/// passes, a window that starts to hold a corner): a one-sided difference over the
+/// jump is the jump over the step, huge, and would make the ± collapse to nothing.
+/// Where the residual is smooth both differences agree to O(step).
+pub(super) fn smooth_jacobian(
+    scene: &Scene,
+    m: &Measured,
+    free: &[Free],
+    idx: &[usize],
+    p: &[f64],
+    r0: &[f64],
+    target: Target,
+) -> Vec<Vec<f64>> {
+    (0..p.len())
+        .map(|j| {
+            let h = step(p[j]);
+            let up = difference(scene, m, free, idx, p, r0, target, j, h);
+            // At a bound the step back or forward leaves the allowed range.
+            let (lo, hi) = super::uncertainty::bounds(free[j]);
+            if p[j] - h <= lo || p[j] + h >= hi {
+                return up;
+            }
+            let down = difference(scene, m, free, idx, p, r0, target, j, -h);
+            up.iter()
+                .zip(&down)
+                .map(|(&a, &b)| if a.abs() <= b.abs() { a } else { b })
                 .collect()
         })
         .collect()

@@ -17,7 +17,7 @@ use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::story::Verdict;
 use crate::study::Progress;
-use crate::study::measured::series::Measured;
+use crate::study::measured::series::{Measured, Stencils};
 
 pub use choice::{Candidate, Estimate, compare_models};
 pub use line::{
@@ -28,11 +28,11 @@ pub use regime::{observed_regime, rest_band};
 pub use uncertainty::NotIdentified;
 
 use least_squares::{
-    Target, fit_points, jacobian, least_squares, normal_matrix, nuisance, residuals, residuals_of,
-    scan_mu, with,
+    Target, fit_points, labelled_residuals, least_squares, normal_matrix, nuisance, residuals_of,
+    scan_mu, smooth_jacobian, with,
 };
 use regime::{observed_after, rolling_time};
-use uncertainty::uncertainties;
+use uncertainty::{shared_noise, uncertainties};
 
 /// Most frames the model fit uses. A longer series is thinned to every k-th frame
 /// (the output says so): each model evaluation walks every point used, and a fit
@@ -147,6 +147,14 @@ pub fn thinned(m: &Measured) -> Option<(Measured, usize)> {
             v_t_sigma: pick_opt(&m.v_t_sigma),
             x: pick_opt(&m.x),
             angle: pick_opt(&m.angle),
+            stencils: m.stencils.as_ref().map(|s| {
+                let pick = |v: &[Option<_>]| v.iter().step_by(k).copied().collect();
+                std::sync::Arc::new(Stencils {
+                    v_cm: pick(&s.v_cm),
+                    v_t: pick(&s.v_t),
+                    ..(**s).clone()
+                })
+            }),
         },
         k,
     ))
@@ -250,12 +258,17 @@ fn scored_fit(
         idx = next;
     }
     let fitted = with(scene, free, &p);
-    let r = residuals(&fitted, m, &idx, target);
+    let (r, labels) = labelled_residuals(&fitted, m, &idx, target, true);
     let n = p.len();
     let cost: f64 = r.iter().map(|x| x * x).sum();
     let s2 = cost / r.len().saturating_sub(n + nuisance(m, target)).max(1) as f64;
-    let j = jacobian(scene, m, free, &idx, &p, &r, target);
-    let (ses, not_identified) = uncertainties(&normal_matrix(&j), s2, free, &p);
+    let j = smooth_jacobian(scene, m, free, &idx, &p, &r, target);
+    // Velocities derived from a track share frames: their errors are correlated.
+    let shared = match (&m.stencils, target) {
+        (Some(st), Target::Velocity) => Some(shared_noise(&j, &labels, st)),
+        _ => None,
+    };
+    let (ses, not_identified) = uncertainties(&normal_matrix(&j), shared.as_deref(), s2, free, &p);
     let se = |f: Free| free.iter().position(|x| *x == f).and_then(|i| ses[i]);
     let scored = |fit: ModelFit| Scored {
         fit,

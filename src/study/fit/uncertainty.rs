@@ -5,6 +5,8 @@
 use serde::Serialize;
 
 use super::Free;
+use super::least_squares::Label;
+use crate::study::measured::series::Stencils;
 
 /// A free value without an uncertainty, and why.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -14,7 +16,7 @@ pub struct NotIdentified {
 }
 
 /// A fitted value's bounds: restitution lies in [0, 1], μ_k above 0.
-fn bounds(f: Free) -> (f64, f64) {
+pub(super) fn bounds(f: Free) -> (f64, f64) {
     match f {
         Free::Mu => (1e-6, f64::INFINITY),
         Free::V0 => (f64::NEG_INFINITY, f64::INFINITY),
@@ -34,13 +36,82 @@ pub(super) fn clamped(free: &[Free], p: &[f64]) -> Vec<f64> {
         .collect()
 }
 
+/// How the residuals' noise is shared, for [`uncertainties`]: `Jᵀ C J` with `C` the
+/// correlation of the residuals labelled `labels` (`j` has one row per free value).
+/// A velocity derived from a track is a local fit's slope: linear in the tracked
+/// coordinates (the centre's x, and for v_t the centre's and the mark's x and y through
+/// the angle), so each residual's error is `e_i·n` over the coordinates' noise `n`, and
+/// neighbours share frames. Taking every coordinate's noise alike, `C_ij = ê_i·ê_j`
+/// (unit vectors), and `Jᵀ C J = Σ_k G_k G_kᵀ` with `G_k = Σ_i ê_ik J_i` over the
+/// coordinates k — one pass over the stencils.
+pub(super) fn shared_noise(j: &[Vec<f64>], labels: &[Label], st: &Stencils) -> Vec<Vec<f64>> {
+    let n = j.len();
+    let (centre, mark) = (st.centre_times.len(), st.mark_times.len());
+    // The coordinates: the centre's x and y, the mark's x and y, frame by frame.
+    let mut g = vec![vec![0.0; n]; 2 * centre + 2 * mark];
+    let mut meat = vec![vec![0.0; n]; n];
+    let mut e: Vec<(usize, f64)> = Vec::new();
+    for (r, &(i, spin)) in labels.iter().enumerate() {
+        e.clear();
+        match (spin, if spin { st.v_t.get(i) } else { st.v_cm.get(i) }) {
+            (false, Some(Some(s))) => {
+                e.extend(
+                    s.weights(&st.centre_times)
+                        .map(|(k, w)| (k, st.centre_sign * w)),
+                );
+            }
+            (true, Some(Some(s))) => {
+                for (k, w) in s.weights(&st.mark_times) {
+                    let Some(&(c, ax, ay)) = st.mark_frames.get(k) else {
+                        continue;
+                    };
+                    e.extend([
+                        (c, w * ax),
+                        (centre + c, w * ay),
+                        (2 * centre + k, -w * ax),
+                        (2 * centre + mark + k, -w * ay),
+                    ]);
+                }
+            }
+            _ => {}
+        }
+        let norm = e.iter().map(|(_, x)| x * x).sum::<f64>().sqrt();
+        if e.is_empty() || !(norm > 0.0 && norm.is_finite()) {
+            // A point of its own: its noise shared with none.
+            add_outer(&mut meat, |a| j[a][r]);
+            continue;
+        }
+        for &(k, x) in &e {
+            for a in 0..n {
+                g[k][a] += x / norm * j[a][r];
+            }
+        }
+    }
+    for row in &g {
+        add_outer(&mut meat, |a| row[a]);
+    }
+    meat
+}
+
+/// `m += v vᵀ`.
+fn add_outer(m: &mut [Vec<f64>], v: impl Fn(usize) -> f64) {
+    for (a, row) in m.iter_mut().enumerate() {
+        for (b, x) in row.iter_mut().enumerate() {
+            *x += v(a) * v(b);
+        }
+    }
+}
+
 /// Standard errors from the normal matrix `jtj` (residual variance `s2`) of the free
 /// values `p`: a value on its bound, one the data do not depend on, and values along a
 /// direction the data cannot see (an eigenvector of the scaled matrix with a
 /// negligible eigenvalue) get no ± but a reason; the rest from the inverse of the
-/// matrix without them (the others held at their fitted values).
+/// matrix without them (the others held at their fitted values). With correlated
+/// residuals, `shared` is [`shared_noise`]'s `Jᵀ C J` and the covariance is the
+/// sandwich `(JᵀJ)⁻¹ JᵀCJ (JᵀJ)⁻¹` (without it, `C` is the identity).
 pub(super) fn uncertainties(
     jtj: &[Vec<f64>],
+    shared: Option<&[Vec<f64>]>,
     s2: f64,
     free: &[Free],
     p: &[f64],
@@ -112,7 +183,17 @@ pub(super) fn uncertainties(
         .iter()
         .map(|&a| kept.iter().map(|&b| jtj[active[a]][active[b]]).collect())
         .collect();
-    if let Some(cov) = inverse(&sub) {
+    let cov = inverse(&sub).map(|inv| match shared {
+        None => inv,
+        Some(c) => {
+            let meat: Vec<Vec<f64>> = kept
+                .iter()
+                .map(|&a| kept.iter().map(|&b| c[active[a]][active[b]]).collect())
+                .collect();
+            product(&product(&inv, &meat), &inv)
+        }
+    });
+    if let Some(cov) = cov {
         for (x, &a) in kept.iter().enumerate() {
             let se = (s2 * cov[x][x]).sqrt();
             if se.is_finite() {
@@ -138,6 +219,16 @@ pub(super) fn solve(a: Vec<Vec<f64>>, b: Vec<f64>) -> Option<Vec<f64>> {
         .then(|| x.iter().copied().collect())
 }
 
+fn product(a: &[Vec<f64>], b: &[Vec<f64>]) -> Vec<Vec<f64>> {
+    a.iter()
+        .map(|row| {
+            (0..b.first().map_or(0, Vec::len))
+                .map(|j| row.iter().zip(b).map(|(x, r)| x * r[j]).sum())
+                .collect()
+        })
+        .collect()
+}
+
 fn inverse(a: &[Vec<f64>]) -> Option<Vec<Vec<f64>>> {
     let n = a.len();
     let inv = nalgebra::DMatrix::from_fn(n, n, |i, j| a[i][j]).try_inverse()?;
@@ -153,6 +244,36 @@ mod tests {
     use super::*;
 
     #[test]
+    fn residuals_made_from_the_same_frames_count_as_one() {
+        use crate::study::measured::series::Stencil;
+        // The slope over frames lo..=hi at t0 = 1 of three frames: (y2 − y0)/2.
+        let slope = |lo, hi| Stencil {
+            lo,
+            hi,
+            t0: lo as f64 + 1.0,
+            h: 1.0,
+            c: [0.0, 0.5, 0.0],
+        };
+        let st = |second| Stencils {
+            centre_times: (0..6).map(f64::from).collect(),
+            centre_sign: -1.0,
+            v_cm: vec![Some(slope(0, 2)), Some(second), None],
+            ..Stencils::default()
+        };
+        let labels = [(0, false), (1, false), (2, false)];
+        let j = vec![vec![1.0, 1.0, 1.0]];
+        // The same frames: the first two errors are one, (1 + 1)² + 1.
+        let meat = shared_noise(&j, &labels, &st(slope(0, 2)));
+        assert!((meat[0][0] - 5.0).abs() < 1e-12, "{meat:?}");
+        // Frames of their own: independent, 1 + 1 + 1.
+        let meat = shared_noise(&j, &labels, &st(slope(3, 5)));
+        assert!((meat[0][0] - 3.0).abs() < 1e-12, "{meat:?}");
+        // The sandwich: (JᵀJ)⁻¹ · 5 · (JᵀJ)⁻¹ = 5/9, not the 1/3 of independent points.
+        let (se, _) = uncertainties(&[vec![3.0]], Some(&[vec![5.0]]), 1.0, &[Free::Mu], &[0.2]);
+        assert!((se[0].unwrap() - (5.0f64 / 9.0).sqrt()).abs() < 1e-12);
+    }
+
+    #[test]
     fn a_value_on_its_bound_or_along_an_unseen_direction_gets_a_reason_not_a_nan() {
         let free = [Free::Mu, Free::V0, Free::Restitution];
         // μ and v0 enter the data only as μ + v0 (equal columns), e is fine.
@@ -161,7 +282,7 @@ mod tests {
             vec![4.0, 4.0, 1.0],
             vec![1.0, 1.0, 9.0],
         ];
-        let (se, why) = uncertainties(&jtj, 1.0, &free, &[0.2, 0.5, 0.8]);
+        let (se, why) = uncertainties(&jtj, None, 1.0, &free, &[0.2, 0.5, 0.8]);
         assert_eq!(se[0], None);
         assert_eq!(se[1], None);
         // e alone: 1/sqrt(9).
@@ -175,7 +296,7 @@ mod tests {
             vec![0.0, 16.0, 1.0],
             vec![1.0, 1.0, 9.0],
         ];
-        let (se, why) = uncertainties(&jtj, 1.0, &free, &[0.2, 0.5, 1.0]);
+        let (se, why) = uncertainties(&jtj, None, 1.0, &free, &[0.2, 0.5, 1.0]);
         assert!((se[0].unwrap() - 0.5).abs() < 1e-12);
         assert!((se[1].unwrap() - 0.25).abs() < 1e-12);
         assert_eq!(se[2], None);

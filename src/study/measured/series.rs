@@ -36,6 +36,50 @@ pub struct Measured {
     /// signed like the spin (`d angle/dt · r = v_t`); NaN where the mark is missing.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub angle: Option<Vec<f64>>,
+    /// How each derived velocity was made from the tracked frames: neighbouring points
+    /// share frames, so their errors are correlated and a fit must not count them as
+    /// independent (`study::fit` uses this for its ±).
+    #[serde(skip)]
+    pub stencils: Option<std::sync::Arc<Stencils>>,
+}
+
+/// The weights with which a derived velocity was made from tracked frames `lo..=hi`
+/// (a local quadratic fit's slope is linear in the positions): frame k counts
+/// `c₀ + c₁u + c₂u²` with `u = (t_k − t0)/h`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Stencil {
+    pub lo: usize,
+    pub hi: usize,
+    pub t0: f64,
+    pub h: f64,
+    pub c: [f64; 3],
+}
+
+impl Stencil {
+    /// (frame, weight) over the frames whose times are `times`.
+    pub fn weights<'a>(&'a self, times: &'a [f64]) -> impl Iterator<Item = (usize, f64)> + 'a {
+        (self.lo..=self.hi).map(move |k| {
+            let u = (times[k] - self.t0) / self.h;
+            (k, self.c[0] + self.c[1] * u + self.c[2] * u * u)
+        })
+    }
+}
+
+/// The [`Stencil`] of each point of a series derived from a track, on the frames of
+/// the centre (v_cm) and of the mark (v_t, whose frames may be fewer), times from the
+/// first impact: how each derived velocity depends on the tracked coordinates.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Stencils {
+    pub centre_times: Vec<f64>,
+    /// ±1: v_cm is this times the slope of the file's x.
+    pub centre_sign: f64,
+    pub v_cm: Vec<Option<Stencil>>,
+    pub mark_times: Vec<f64>,
+    /// For each mark frame: the centre's frame (index in `centre_times`), and how the
+    /// angle v_t is the slope of (signed as v_t) moves with the centre's x and y there;
+    /// with the mark's x and y it moves the opposite way.
+    pub mark_frames: Vec<(usize, f64, f64)>,
+    pub v_t: Vec<Option<Stencil>>,
 }
 
 impl Measured {

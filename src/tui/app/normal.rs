@@ -10,6 +10,9 @@ use crate::settings::units::show;
 use super::{Action, App, ChartBall, Export, Mode, ROWS, SPEEDS, Status, View};
 
 impl App {
+    /// One fine or coarse step of the selected parameter. A step past a limit stops at
+    /// the last value allowed on the way (the limit itself when it is allowed, else the
+    /// last fine step before it), and says so; only a step from the limit is refused.
     fn nudge(&mut self, up: bool, coarse: bool) {
         let p = ROWS[self.selected];
         let Some(steps) = p.steps else { return };
@@ -17,14 +20,39 @@ impl App {
         let current = self.lab.value(p.key);
         // Snap to the step grid so repeated presses give round numbers.
         let next = ((current / step).round() + if up { 1.0 } else { -1.0 }) * step;
-        self.set_value(p.key, next);
+        let refused = match self.lab.set(p.key, next) {
+            Ok(()) => return self.applied(p.key),
+            Err(e) => e,
+        };
+        // A refused value changes nothing and costs no solve: trying is cheap.
+        let stopped = limit_candidates(current, next, steps.fine, p.range.lo, p.range.hi)
+            .any(|v| self.lab.set(p.key, v).is_ok());
+        if stopped {
+            self.applied(p.key);
+            // The refused value would give a hidden b away.
+            let why = if self.hide_b && p.key == Key::Width {
+                String::new()
+            } else {
+                format!(": {refused}")
+            };
+            if let Status::Info(done) = &self.status {
+                self.status = Status::Info(format!("{done}, stopped at the limit{why}"));
+            }
+        } else {
+            self.status = Status::Error(format!("not applied: {refused}"));
+        }
     }
 
     pub(super) fn apply_normal(&mut self, action: Action) {
         let n = ROWS.len();
         let (t0, t1) = (self.lab.solution.t_start, self.lab.solution.t_end);
         match action {
-            Action::Quit | Action::Cancel => self.quit = true,
+            Action::Quit => self.quit = true,
+            // Esc closes popups and cancels prompts; on the main screen it must not end
+            // the session (a reflex Esc lost a student's whole setup), so it says how.
+            Action::Cancel => {
+                self.status = Status::Info("Esc closes popups and cancels typing: q quits".into())
+            }
             Action::Up => self.selected = (self.selected + n - 1) % n,
             Action::Down | Action::NextParam => self.selected = (self.selected + 1) % n,
             Action::Increase => self.nudge(true, false),
@@ -417,4 +445,28 @@ impl App {
             self.status = Status::Error(e);
         }
     }
+}
+
+/// Where a step from `current` toward `target` (refused) may stop instead, nearest the
+/// target first: the target clamped into the row's range `lo ..= hi`, then the fine grid
+/// from the target back toward `current` (a limit that depends on other parameters,
+/// b < 2R, is found on it). `current` itself is not one: a step that cannot move is
+/// refused.
+fn limit_candidates(
+    current: f64,
+    target: f64,
+    fine: f64,
+    lo: f64,
+    hi: f64,
+) -> impl Iterator<Item = f64> {
+    let clamped = target.clamp(lo, hi);
+    let up = target > current;
+    let start = (clamped / fine).round();
+    let count = ((clamped - current).abs() / fine).ceil() as i64;
+    std::iter::once(clamped)
+        .chain((0..=count).map(move |k| {
+            let k = k as f64;
+            (if up { start - k } else { start + k }) * fine
+        }))
+        .filter(move |&v| if up { v > current } else { v < current })
 }

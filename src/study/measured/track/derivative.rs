@@ -1,19 +1,34 @@
 //! Derivatives of a tracked series by local quadratic least squares that never reach
 //! across an impact, with the scatter estimate that sets their window and errors.
 
+use crate::study::measured::series::Stencil;
+
 /// A local quadratic least-squares fit about `t0`: value, slope and the slope's
-/// standard error.
+/// standard error, and the weights that made the slope from the frames (neighbouring
+/// slopes share frames, so their errors are correlated).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Local {
     pub value: f64,
     pub slope: f64,
     pub slope_se: f64,
+    pub stencil: Stencil,
 }
 
-/// Quadratic least squares of `ys` on `ts` about `t0`: coefficients (c0, c1, c2) of
-/// `c0 + c1 τ + c2 τ²` (τ = t − t0), the (1,1) element of (AᵀA)⁻¹ and the residual sum
-/// of squares; `None` with fewer than 3 distinct times.
-pub(super) fn quadratic(ts: &[f64], ys: &[f64], t0: f64) -> Option<([f64; 3], f64, f64)> {
+/// A quadratic least-squares fit about `t0` ([`quadratic`]).
+pub(super) struct Quadratic {
+    /// Coefficients (c0, c1, c2) of `c0 + c1 τ + c2 τ²`, τ = t − t0.
+    pub c: [f64; 3],
+    /// The (1,1) element of (AᵀA)⁻¹: the slope's variance per unit noise variance.
+    pub v11: f64,
+    /// The residual sum of squares.
+    pub rss: f64,
+    /// The slope's weights on the points, as a [`Stencil`] over them (`lo` = 0).
+    pub stencil: Stencil,
+}
+
+/// Quadratic least squares of `ys` on `ts` about `t0`; `None` with fewer than 3
+/// distinct times.
+pub(super) fn quadratic(ts: &[f64], ys: &[f64], t0: f64) -> Option<Quadratic> {
     if ts.len() < 3 {
         return None;
     }
@@ -72,7 +87,20 @@ pub(super) fn quadratic(ts: &[f64], ys: &[f64], t0: f64) -> Option<([f64; 3], f6
             (y - c[0] - c[1] * u - c[2] * u * u).powi(2)
         })
         .sum();
-    Some((c, inv(1, 1) / (h * h), rss))
+    // The slope c1 = Σ_j inv(1, j) b_j / h with b_j = Σ_k u_k^j y_k: linear in the ys.
+    let stencil = Stencil {
+        lo: 0,
+        hi: ts.len() - 1,
+        t0,
+        h,
+        c: std::array::from_fn(|j| inv(1, j) / h),
+    };
+    Some(Quadratic {
+        c,
+        v11: inv(1, 1) / (h * h),
+        rss,
+        stencil,
+    })
 }
 
 /// The local fit of `ys` at `ts[i]` over the indices `lo..=hi`; the residual variance
@@ -80,13 +108,18 @@ pub(super) fn quadratic(ts: &[f64], ys: &[f64], t0: f64) -> Option<([f64; 3], f6
 /// does not claim a tiny error by chance.
 fn local(ts: &[f64], ys: &[f64], i: usize, lo: usize, hi: usize, sigma: f64) -> Option<Local> {
     const PRIOR: f64 = 4.0;
-    let (c, v11, rss) = quadratic(&ts[lo..=hi], &ys[lo..=hi], ts[i])?;
+    let q = quadratic(&ts[lo..=hi], &ys[lo..=hi], ts[i])?;
     let dof = (hi + 1 - lo) as f64 - 3.0;
-    let s2 = (rss + PRIOR * sigma * sigma) / (dof + PRIOR);
+    let s2 = (q.rss + PRIOR * sigma * sigma) / (dof + PRIOR);
     Some(Local {
-        value: c[0],
-        slope: c[1],
-        slope_se: (s2 * v11).sqrt(),
+        value: q.c[0],
+        slope: q.c[1],
+        slope_se: (s2 * q.v11).sqrt(),
+        stencil: Stencil {
+            lo,
+            hi,
+            ..q.stencil
+        },
     })
 }
 
@@ -168,6 +201,9 @@ mod tests {
         // Slope 2 − 6 t at t = 0.019; rounding only.
         assert!((l.slope - (2.0 - 6.0 * 0.019)).abs() < 1e-9, "{l:?}");
         assert!(l.slope_se < 1e-6);
+        // The stencil's weights make the same slope from the frames.
+        let w: f64 = l.stencil.weights(&ts).map(|(k, w)| w * ys[k]).sum();
+        assert!((w - l.slope).abs() < 1e-9, "{w} vs {}", l.slope);
     }
 
     #[test]

@@ -3,7 +3,7 @@
 //! quadratics meet.
 
 use super::TrackError;
-use super::derivative::quadratic;
+use super::derivative::{Quadratic, quadratic};
 
 /// Least-squares slope of a straight line through `ys` over `ts`.
 fn line_slope(ts: &[f64], ys: &[f64]) -> f64 {
@@ -52,7 +52,7 @@ fn locate(ts: &[f64], xs: &[f64], i: usize, lo: usize, hi: usize) -> (f64, f64) 
     if i < lo + 3 || hi < i + 3 {
         return fallback;
     }
-    let (Some((b, _, _)), Some((a, _, _))) = (
+    let (Some(Quadratic { c: b, .. }), Some(Quadratic { c: a, .. })) = (
         quadratic(&ts[lo..i], &xs[lo..i], t0),
         quadratic(&ts[i + 1..=hi], &xs[i + 1..=hi], t0),
     ) else {

@@ -17,7 +17,7 @@ mod impacts;
 
 use serde::Serialize;
 
-use super::series::{Measured, Track};
+use super::series::{Measured, Stencil, Stencils, Track};
 use crate::physics::scene::Scene;
 use crate::study::fit::{self, FitError, Free, ModelFit};
 
@@ -224,11 +224,11 @@ pub fn derive(
         );
         let s_theta = scatter(&theta).max(1e-7);
         let d = derivatives(&at, &theta, n, &cuts, s_theta);
-        (at, theta, d, radius)
+        (at, theta, d, radius, valid)
     });
     // The spin's sign: the balls roll before the impact, so there v_t has v_cm's sign
     // (a mirrored or upside-down picture flips the angle's sense, not the physics).
-    let spin_sign = spin.as_ref().map_or(1.0, |(at, _, d, _)| {
+    let spin_sign = spin.as_ref().map_or(1.0, |(at, _, d, _, _)| {
         let dot: f64 = at
             .iter()
             .zip(d)
@@ -242,8 +242,23 @@ pub fn derive(
     });
     let mut m = Measured::default();
     let (mut sig_cm, mut sig_t, mut pos, mut ang) = (vec![], vec![], vec![], vec![]);
+    // The stencils in the model's time (first impact at 0), as the points are.
+    let shifted = |ts: &[f64]| ts.iter().map(|t| t - first.t).collect();
+    let mut stencils = Stencils {
+        centre_times: shifted(&ts),
+        centre_sign: dir,
+        mark_times: spin.as_ref().map(|s| shifted(&s.0)).unwrap_or_default(),
+        mark_frames: spin.as_ref().map_or_else(Vec::new, |s| {
+            mark_frames(track, &rows, &s.4, dir, spin_sign)
+        }),
+        ..Stencils::default()
+    };
+    let shift = |s: Stencil| Stencil {
+        t0: s.t0 - first.t,
+        ..s
+    };
     // Angle at the impact: from the last local fit before it.
-    let theta0 = spin.as_ref().and_then(|(at, _, d, _)| {
+    let theta0 = spin.as_ref().and_then(|(at, _, d, _, _)| {
         let i = at.partition_point(|&t| t < first.t);
         let (j, l) = (
             i.checked_sub(1).or(Some(i))?,
@@ -256,26 +271,30 @@ pub fn derive(
         m.t.push(ts[i] - first.t);
         m.v_cm.push(dir * l.slope);
         sig_cm.push(l.slope_se);
+        stencils.v_cm.push(Some(shift(l.stencil)));
         pos.push(dir * (xs[i] - first.x));
-        let (vt, st, a) = match &spin {
-            Some((at, theta, d, _)) => {
+        let (vt, st, a, stencil) = match &spin {
+            Some((at, theta, d, _, _)) => {
                 let k = at.partition_point(|&t| t < ts[i]);
                 match (at.get(k) == Some(&ts[i]), d.get(k).copied().flatten()) {
                     (true, Some(ld)) => (
                         spin_sign * ld.slope * contact_radius,
                         ld.slope_se * contact_radius,
                         spin_sign * (theta[k] - theta0.unwrap_or(f64::NAN)),
+                        Some(shift(ld.stencil)),
                     ),
-                    _ => (f64::NAN, f64::NAN, f64::NAN),
+                    _ => (f64::NAN, f64::NAN, f64::NAN, None),
                 }
             }
-            None => (f64::NAN, f64::NAN, f64::NAN),
+            None => (f64::NAN, f64::NAN, f64::NAN, None),
         };
+        stencils.v_t.push(stencil);
         m.v_t.push(vt);
         sig_t.push(st);
         ang.push(a);
     }
     m.v_cm_sigma = Some(sig_cm);
+    m.stencils = Some(std::sync::Arc::new(stencils));
     m.x = Some(pos);
     if spin.is_some() {
         m.v_t_sigma = Some(sig_t);
@@ -301,6 +320,36 @@ pub fn derive(
         mark_radius: spin.as_ref().map(|s| s.3),
     };
     Ok((m, found))
+}
+
+/// For each frame `valid` of the mark (rows of `track`): its centre's frame among
+/// `rows`, and how a small move of the centre (x, y) turns the derived angle (its
+/// spin-signed ∂θ/∂x, ∂θ/∂y; a move of the mark turns it the other way). The
+/// centre's noise reaches both v_cm and v_t this way.
+fn mark_frames(
+    track: &Track,
+    rows: &[usize],
+    valid: &[usize],
+    dir: f64,
+    spin_sign: f64,
+) -> Vec<(usize, f64, f64)> {
+    let Some((mx, my)) = &track.mark else {
+        return Vec::new();
+    };
+    valid
+        .iter()
+        .map(|&i| {
+            let (dx, dy) = (dir * (mx[i] - track.x[i]), my[i] - track.y[i]);
+            let rho2 = (dx * dx + dy * dy).max(f64::MIN_POSITIVE);
+            // θ = atan2(dx, dy): ∂θ/∂dx = dy/ρ², ∂θ/∂dy = −dx/ρ², and the centre's
+            // x enters dx as −dir·x, its y enters dy as −y.
+            (
+                rows.partition_point(|&r| r < i),
+                spin_sign * -dir * dy / rho2,
+                spin_sign * dx / rho2,
+            )
+        })
+        .collect()
 }
 
 /// Both model fits of a tracked series, side by side.
