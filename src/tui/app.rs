@@ -17,14 +17,14 @@ use crate::settings::params::{Key, PARAMS, Param};
 use crate::settings::units::{Dimension, show, significant};
 
 pub use super::vocabulary::{
-    Action, ChartBall, Export, FPS, Library, Mode, Prediction, SPEEDS, Status, View,
+    Action, ChartBall, Export, FPS, Field, Library, Mode, Prediction, SPEEDS, Status, View,
 };
 pub use predict::reveal_time;
 pub use prompts::{export_step, typing_prompt};
 
 use super::view::ViewCache;
 use super::vocabulary::{DEFAULT_SPEED, WorkAxis};
-use prompts::TextTarget;
+use prompts::{Histories, TextTarget};
 
 /// The rows of the parameters panel, top to bottom: the table's rows that have steps.
 pub static ROWS: LazyLock<Vec<&'static Param>> =
@@ -67,6 +67,8 @@ pub struct App {
     pub prediction: Option<Prediction>,
     /// What the charts and the map draw at the last size, per snapshot.
     pub view_cache: ViewCache,
+    /// What was typed into each kind of prompt this session (↑/↓ bring it back).
+    histories: Histories,
 }
 
 impl App {
@@ -95,6 +97,7 @@ impl App {
             hide_b: false,
             prediction: None,
             view_cache: ViewCache::default(),
+            histories: Histories::default(),
         }
     }
 
@@ -224,9 +227,9 @@ impl App {
             }
             Mode::Picker(i) => self.apply_picker(i, action),
             Mode::Predict => self.apply_predict(action),
-            Mode::Edit(text) => self.apply_text(text, action, TextTarget::Value),
-            Mode::SaveName(text) => self.apply_text(text, action, TextTarget::Name),
-            Mode::Export(kind, text) => self.apply_text(text, action, TextTarget::Export(kind)),
+            Mode::Edit(field) => self.apply_text(field, action, TextTarget::Value),
+            Mode::SaveName(field) => self.apply_text(field, action, TextTarget::Name),
+            Mode::Export(kind, field) => self.apply_text(field, action, TextTarget::Export(kind)),
             Mode::ConfirmOverwrite(name) => {
                 self.mode = Mode::Normal;
                 match action {

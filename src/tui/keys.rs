@@ -1,7 +1,7 @@
 //! The one key table: it maps keys to actions, and feeds the hint bar, the help popup
 //! and `render --keys` (which names keys exactly as the help shows them).
 
-use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
 
 use super::app::{Action, Export, Mode};
 
@@ -63,7 +63,7 @@ pub const TABLE: &[Binding] = &[
     Binding {
         keys: &["enter"],
         action: Action::Edit,
-        help: "type a value: a bare number is in the unit shown (4.4 for b means 4.4 cm), or give a unit (44mm, 4,4cm); Esc cancels",
+        help: "type a value: a bare number is in the unit shown (4.4 for b is 4.4 cm), or give a unit (44mm); up/down: earlier values, Ctrl-U clears",
         hint: Some(("type", 6)),
     },
     Binding {
@@ -334,6 +334,7 @@ pub fn parse(name: &str) -> Option<KeyEvent> {
         "enter" => KeyCode::Enter,
         "esc" => KeyCode::Esc,
         "backspace" => KeyCode::Backspace,
+        "delete" => KeyCode::Delete,
         "home" => KeyCode::Home,
         "end" => KeyCode::End,
         "pgup" => KeyCode::PageUp,
@@ -356,12 +357,18 @@ pub fn action(mode: &Mode, key: KeyEvent) -> Option<Action> {
         return Some(Action::Quit);
     }
     if mode.is_typing() {
-        return match key.code {
-            KeyCode::Enter => Some(Action::Confirm),
-            KeyCode::Esc => Some(Action::Cancel),
-            KeyCode::Backspace => Some(Action::Backspace),
-            KeyCode::Char(c) => Some(Action::Type(c)),
-            _ => None,
+        return match (key.code, mode) {
+            (KeyCode::Enter, _) => Some(Action::Confirm),
+            (KeyCode::Esc, _) => Some(Action::Cancel),
+            (KeyCode::Char(c), Mode::ConfirmOverwrite(_)) => Some(Action::Type(c)),
+            (_, Mode::ConfirmOverwrite(_)) => None,
+            // ↑/↓: earlier entries of this prompt; the rest edits the line as a
+            // terminal does (tui-input's bindings, Ctrl-A/E/U/W/K among them).
+            (KeyCode::Up, _) => Some(Action::Up),
+            (KeyCode::Down, _) => Some(Action::Down),
+            _ => {
+                tui_input::backend::crossterm::to_input_request(&Event::Key(key)).map(Action::Line)
+            }
         };
     }
     // The prediction's question takes its answers as typed digits.
@@ -400,7 +407,7 @@ pub fn parse_script(script: &str) -> Result<Vec<KeyEvent>, String> {
         .map(|name| {
             parse(name).ok_or_else(|| {
                 format!(
-                    "--keys: unknown key '{name}', allowed: a single character or one of space, up, down, left, right, S-left, S-right, tab, enter, esc, backspace, home, end, pgup, pgdn, C-c"
+                    "--keys: unknown key '{name}', allowed: a single character or one of space, up, down, left, right, S-left, S-right, tab, enter, esc, backspace, delete, home, end, pgup, pgdn, C-c, C-u (C- with any letter: Ctrl)"
                 )
             })
         })
@@ -485,9 +492,20 @@ mod tests {
 
     #[test]
     fn typing_mode_types_characters() {
-        let edit = Mode::Edit(String::new());
-        assert_eq!(action(&edit, parse("q").unwrap()), Some(Action::Type('q')));
-        assert_eq!(action(&edit, parse(".").unwrap()), Some(Action::Type('.')));
+        use tui_input::InputRequest::*;
+        let edit = Mode::Edit(Default::default());
+        let line = |name: &str| action(&edit, parse(name).unwrap());
+        assert_eq!(line("q"), Some(Action::Line(InsertChar('q'))));
+        assert_eq!(line("."), Some(Action::Line(InsertChar('.'))));
+        assert_eq!(line("C-u"), Some(Action::Line(DeleteLine)));
+        assert_eq!(line("C-w"), Some(Action::Line(DeletePrevWord)));
+        assert_eq!(line("C-a"), Some(Action::Line(GoToStart)));
+        assert_eq!(line("C-e"), Some(Action::Line(GoToEnd)));
+        assert_eq!(line("C-k"), Some(Action::Line(DeleteTillEnd)));
+        assert_eq!(line("left"), Some(Action::Line(GoToPrevChar)));
+        assert_eq!(line("home"), Some(Action::Line(GoToStart)));
+        assert_eq!(line("delete"), Some(Action::Line(DeleteNextChar)));
+        assert_eq!(line("up"), Some(Action::Up));
         assert_eq!(
             action(&edit, parse("enter").unwrap()),
             Some(Action::Confirm)
@@ -504,12 +522,14 @@ mod tests {
             assert_eq!(action(&popup, parse("C-c").unwrap()), Some(Action::Quit));
         }
         for prompt in [
-            Mode::SaveName(String::new()),
-            Mode::ConfirmOverwrite("x".into()),
-            Mode::Export(Export::Csv, String::new()),
+            Mode::SaveName(Default::default()),
+            Mode::Export(Export::Csv, Default::default()),
         ] {
-            assert_eq!(action(&prompt, q), Some(Action::Type('q')), "{prompt:?}");
+            let typed = Some(Action::Line(tui_input::InputRequest::InsertChar('q')));
+            assert_eq!(action(&prompt, q), typed, "{prompt:?}");
         }
+        let confirm = Mode::ConfirmOverwrite("x".into());
+        assert_eq!(action(&confirm, q), Some(Action::Type('q')));
     }
 
     #[test]

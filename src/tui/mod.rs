@@ -6,6 +6,7 @@
 pub mod app;
 pub mod canvas;
 pub mod keys;
+pub mod line;
 pub mod plot;
 pub mod theme;
 pub mod view;

@@ -6,6 +6,8 @@ use std::path::PathBuf;
 
 use crate::study::preset::Preset;
 
+pub use super::line::Field;
+
 /// Which ball the velocity chart shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ChartBall {
@@ -81,13 +83,13 @@ pub enum Mode {
     /// Preset picker with the highlighted row.
     Picker(usize),
     /// Typing a value for the selected parameter.
-    Edit(String),
+    Edit(Field),
     /// Typing a name to save the scene as a user preset.
-    SaveName(String),
+    SaveName(Field),
     /// The file exists: overwrite it?
     ConfirmOverwrite(String),
     /// Typing the file name to export to.
-    Export(Export, String),
+    Export(Export, Field),
     /// The measured data beside the model's values at those times (scrolls).
     Table,
     /// Predict, observe, explain: the question before the impact (keys 1, 2, 3).
@@ -128,8 +130,10 @@ pub enum Action {
     Edit,
     Confirm,
     Cancel,
-    Backspace,
+    /// A key typed into the ConfirmOverwrite question or the prediction's question.
     Type(char),
+    /// An edit of the open prompt's line (a character, a cursor move, a deletion).
+    Line(tui_input::InputRequest),
     PlayPause,
     Faster,
     Slower,

@@ -561,6 +561,12 @@ fn key_name() -> BoxedStrategy<String> {
             "end",
             "pgup",
             "pgdn",
+            "delete",
+            "C-u",
+            "C-w",
+            "C-a",
+            "C-e",
+            "C-k",
         ]
         .map(String::from),
     );

@@ -181,6 +181,104 @@ fn typed_values_take_units_and_escape_cancels() {
 }
 
 #[test]
+fn prompts_edit_like_a_terminal_line() {
+    let mut a = app("paper-b4.9");
+    select(&mut a, Key::Width);
+    let b = |a: &App| a.lab.scene.width;
+    // ←/→ move the cursor; typing goes in at it.
+    press(&mut a, "enter 4 c m left left . 5 enter");
+    assert_eq!(b(&a), 0.045);
+    // Home/End, Backspace/Delete.
+    press(&mut a, "enter c m home 4 . 6 end enter");
+    assert_eq!(b(&a), 0.046);
+    press(&mut a, "enter x 4 . 2 home delete end backspace 3 enter");
+    assert_eq!(b(&a), 0.043);
+    // Ctrl-U clears the line, Ctrl-W the word before the cursor, Ctrl-A/E go to the
+    // start and end, Ctrl-K deletes to the end: none of them is typed as a letter.
+    press(&mut a, "enter 9 9 C-u 4 . 1");
+    assert_eq!(a.mode, Mode::Edit("4.1".into()));
+    press(&mut a, "enter");
+    assert_eq!(b(&a), 0.041);
+    press(&mut a, "enter 4 . 4 space x y z C-w");
+    assert!(
+        matches!(&a.mode, Mode::Edit(f) if f.value() == "4.4 "),
+        "{:?}",
+        a.mode
+    );
+    press(&mut a, "enter");
+    assert_eq!(b(&a), 0.044);
+    press(&mut a, "enter 7 c m C-a 4 . C-e C-a right right right C-k");
+    assert!(
+        matches!(&a.mode, Mode::Edit(f) if f.value() == "4.7"),
+        "{:?}",
+        a.mode
+    );
+    press(&mut a, "enter");
+    assert_eq!(b(&a), 0.047);
+    // ↑/↓ bring back the values confirmed earlier this session, newest first; ↓ past
+    // the newest gives back the line being typed.
+    press(&mut a, "enter up enter");
+    assert_eq!(b(&a), 0.047, "the last value again");
+    press(&mut a, "enter up up up enter");
+    assert_eq!(b(&a), 0.041);
+    press(&mut a, "enter 3 up up down down");
+    assert_eq!(a.mode, Mode::Edit("3".into()));
+    press(&mut a, "esc");
+    // The save and export prompts are the same line editor, with their own history.
+    press(&mut a, "s C-u n e w left left C-k");
+    assert_eq!(a.mode, Mode::SaveName("n".into()));
+    press(&mut a, "esc w C-a delete delete delete delete delete");
+    assert!(
+        matches!(&a.mode, Mode::Export(_, f) if f.value() == "-b4.9-run.csv"),
+        "{:?}",
+        a.mode
+    );
+    press(&mut a, "up");
+    assert!(
+        matches!(&a.mode, Mode::Export(_, f) if f.value() == "-b4.9-run.csv"),
+        "no file name was confirmed yet, so ↑ has nothing to bring: {:?}",
+        a.mode
+    );
+    press(&mut a, "esc");
+    assert!(!a.quit);
+}
+
+#[test]
+fn the_typing_field_shows_its_cursor_as_a_reversed_cell() {
+    use groovelab::tui::theme::{Glyphs, Theme};
+    use ratatui::buffer::Buffer;
+    use ratatui::layout::Rect;
+    use ratatui::style::Modifier;
+    let mut a = app("paper-b4.9");
+    select(&mut a, Key::Width);
+    press(&mut a, "enter 4 c m left left");
+    let theme = Theme::new(Glyphs::new(false), true);
+    let area = Rect::new(0, 0, 120, 40);
+    let mut buf = Buffer::empty(area);
+    groovelab::tui::view::draw(&a, area, &mut buf, &theme);
+    let (x, y) = (0..area.height)
+        .find_map(|y| {
+            let row: String = (0..area.width).map(|x| buf[(x, y)].symbol()).collect();
+            row.find("[4cm]")
+                .map(|i| (row[..i].chars().count() as u16, y))
+        })
+        .expect("the field on screen");
+    let reversed = |dx: u16| {
+        buf[(x + dx, y)]
+            .style()
+            .add_modifier
+            .contains(Modifier::REVERSED)
+    };
+    // The row is highlighted (reversed); the cursor's cell, on the c, is not.
+    assert!(reversed(1) && reversed(3), "the rest of the row");
+    assert!(!reversed(2), "the cursor on the c");
+    // A line longer than the field shows its end around the cursor.
+    press(&mut a, "end 1 2 3 4 5 6 7 8 9");
+    let screen = common::text(&a, (120, 40), false);
+    assert!(screen.contains("[23456789_]"), "{screen}");
+}
+
+#[test]
 fn playback_runs_on_the_clock_at_the_chosen_speed() {
     // No measured data: `.` and `,` step by one animation frame.
     let mut a = app("unequal-speeds");
@@ -753,9 +851,9 @@ fn q_closes_every_popup_and_quits_only_the_main_screen() {
     }
     // In text fields q is a letter.
     press(&mut a, "s q");
-    assert!(matches!(&a.mode, Mode::SaveName(t) if t.ends_with('q')));
+    assert!(matches!(&a.mode, Mode::SaveName(t) if t.value().ends_with('q')));
     press(&mut a, "esc w q");
-    assert!(matches!(&a.mode, Mode::Export(_, t) if t.ends_with('q')));
+    assert!(matches!(&a.mode, Mode::Export(_, t) if t.value().ends_with('q')));
     press(&mut a, "esc");
     assert!(!a.quit);
     press(&mut a, "? C-c");
@@ -922,7 +1020,7 @@ fn save_keeps_the_data_and_the_description_and_explains_bad_names() {
     a.library = Library::at(Some(dir.clone()));
     // A name with a space: refused, the dialog stays open and says why.
     press(&mut a, "s space x enter");
-    assert!(matches!(&a.mode, Mode::SaveName(n) if n == "my-paper-b4.4 x"));
+    assert!(matches!(&a.mode, Mode::SaveName(n) if n.value() == "my-paper-b4.4 x"));
     let s = screen_of(&a);
     assert!(s.contains("allowed letters, digits"), "{s}");
     press(&mut a, "backspace backspace enter");
@@ -1028,7 +1126,7 @@ fn export_writes_the_run_as_csv_and_the_chart_as_svg() {
     let mut a = app("paper-b4.9");
     a.export_dir = dir.clone();
     press(&mut a, "w");
-    assert!(matches!(&a.mode, Mode::Export(_, n) if n == "paper-b4.9-run.csv"));
+    assert!(matches!(&a.mode, Mode::Export(_, n) if n.value() == "paper-b4.9-run.csv"));
     press(&mut a, "enter");
     // The file is written off the key press; the status line says so, then where.
     assert!(matches!(&a.status, Status::Info(i) if i.starts_with("writing")));

@@ -7,7 +7,7 @@ use crate::methods::Method;
 use crate::settings::params::Key;
 use crate::settings::units::show;
 
-use super::{Action, App, ChartBall, Export, Mode, ROWS, SPEEDS, Status, View};
+use super::{Action, App, ChartBall, Export, Field, Mode, ROWS, SPEEDS, Status, View};
 
 impl App {
     /// One fine or coarse step of the selected parameter. A step past a limit stops at
@@ -59,7 +59,7 @@ impl App {
             Action::Decrease => self.nudge(false, false),
             Action::IncreaseCoarse => self.nudge(true, true),
             Action::DecreaseCoarse => self.nudge(false, true),
-            Action::Edit | Action::Confirm => self.mode = Mode::Edit(String::new()),
+            Action::Edit | Action::Confirm => self.mode = Mode::Edit(Field::default()),
             Action::PlayPause => {
                 if !self.playing && self.t >= t1 {
                     self.t = t0;
@@ -91,7 +91,7 @@ impl App {
             Action::Presets => self.open_picker(),
             Action::Save => {
                 self.status = Status::None;
-                self.mode = Mode::SaveName(format!("my-{}", self.lab.preset().name));
+                self.mode = Mode::SaveName(Field::new(format!("my-{}", self.lab.preset().name)));
             }
             Action::Help => self.open_scrolling(Mode::Help),
             Action::DataTable => self.open_data_table(),
@@ -128,7 +128,7 @@ impl App {
                 self.selected = i;
                 self.nudge(up, false);
             }
-            Action::Select(_) | Action::ScrollParam(..) | Action::Backspace | Action::Type(_) => {}
+            Action::Select(_) | Action::ScrollParam(..) | Action::Line(_) | Action::Type(_) => {}
         }
     }
 
@@ -276,7 +276,11 @@ impl App {
         };
         self.mode = Mode::Export(
             kind,
-            format!("{}-{what}.{}", self.lab.preset().name, kind.extension()),
+            Field::new(format!(
+                "{}-{what}.{}",
+                self.lab.preset().name,
+                kind.extension()
+            )),
         );
     }
 

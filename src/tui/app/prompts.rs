@@ -6,7 +6,8 @@ use crate::input::preset::{SaveError, save};
 use crate::settings::params::Param;
 use crate::settings::units::{Dimension, parse_typed, show};
 
-use super::{Action, App, ChartBall, Export, Library, Mode, ROWS, Status};
+use super::{Action, App, ChartBall, Export, Field, Library, Mode, ROWS, Status};
+use crate::tui::line::History;
 
 impl App {
     pub(super) fn apply_picker(&mut self, i: usize, action: Action) {
@@ -109,27 +110,25 @@ impl App {
         Ok(())
     }
 
-    pub(super) fn apply_text(&mut self, mut text: String, action: Action, target: TextTarget) {
-        let reopen = |text: String| match target {
-            TextTarget::Value => Mode::Edit(text),
-            TextTarget::Name => Mode::SaveName(text),
-            TextTarget::Export(kind) => Mode::Export(kind, text),
+    pub(super) fn apply_text(&mut self, mut field: Field, action: Action, target: TextTarget) {
+        let reopen = |field: Field| match target {
+            TextTarget::Value => Mode::Edit(field),
+            TextTarget::Name => Mode::SaveName(field),
+            TextTarget::Export(kind) => Mode::Export(kind, field),
         };
         match action {
-            Action::Type(c) => {
-                text.push(c);
-                self.mode = reopen(text);
-            }
-            Action::Backspace => {
-                text.pop();
-                self.mode = reopen(text);
-            }
+            Action::Line(request) => field.edit(request),
+            Action::Up => field.earlier(&self.history(target).0),
+            Action::Down => field.later(&self.history(target).0),
             Action::Cancel => {
                 self.mode = Mode::Normal;
                 self.status = Status::Info("cancelled".into());
+                return;
             }
             Action::Confirm | Action::Edit => {
                 self.mode = Mode::Normal;
+                let text = field.value().to_string();
+                self.history_mut(target).push(&text);
                 match target {
                     TextTarget::Value => self.typed_value(&text),
                     TextTarget::Name => self.save(&text, false),
@@ -137,13 +136,24 @@ impl App {
                         if let Err(e) = self.export(kind, &text) {
                             // Keep the prompt open with the name, and say why.
                             self.status = Status::Error(format!("not written: {e}"));
-                            self.mode = Mode::Export(kind, text);
+                            self.mode = Mode::Export(kind, field);
                         }
                     }
                 }
+                return;
             }
-            _ => self.mode = reopen(text),
+            _ => {}
         }
+        self.mode = reopen(field);
+    }
+
+    /// The entries confirmed earlier in prompts like `target` (values, names, files).
+    fn history(&self, target: TextTarget) -> &History {
+        &self.histories[target.index()]
+    }
+
+    fn history_mut(&mut self, target: TextTarget) -> &mut History {
+        &mut self.histories[target.index()]
     }
 
     fn typed_value(&mut self, text: &str) {
@@ -165,7 +175,7 @@ impl App {
             Err(e @ SaveError::BadName(_)) => {
                 // Keep the dialog open with the name as typed, and say why.
                 self.status = Status::Error(format!("not saved: {e}"));
-                self.mode = Mode::SaveName(name.to_string());
+                self.mode = Mode::SaveName(Field::new(name));
             }
             Err(e) => self.status = Status::Error(format!("not saved: {e}")),
         }
@@ -181,6 +191,20 @@ pub(super) enum TextTarget {
     Name,
     Export(Export),
 }
+
+impl TextTarget {
+    /// Which history the prompt's ↑/↓ go through: values, preset names, file names.
+    fn index(self) -> usize {
+        match self {
+            TextTarget::Value => 0,
+            TextTarget::Name => 1,
+            TextTarget::Export(_) => 2,
+        }
+    }
+}
+
+/// One history per kind of prompt ([`TextTarget::index`]).
+pub(super) type Histories = [History; 3];
 
 /// The CSV export's sample step for a run `span` seconds long: 1 ms, coarser (1-2-5)
 /// for long runs so that a file stays under about 10,000 rows.

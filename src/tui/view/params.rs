@@ -9,6 +9,7 @@ use super::block;
 use crate::settings::params::Key;
 use crate::settings::units::{Dimension, fit_number};
 use crate::tui::app::{App, Mode, ROWS};
+use crate::tui::line::caret as caret_style;
 use crate::tui::theme::Theme;
 
 /// The first parameter shown when the panel at `area` holds fewer rows than there
@@ -126,9 +127,14 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         }
         let selected = i == app.selected;
         let label = p.label.replace("mu", g.mu);
-        let value = match (&app.mode, selected) {
-            (Mode::Edit(text), true) => format!("[{text}_]"),
-            _ => value_text(app, p.key),
+        // The typing field: the part of the line around its cursor, in brackets.
+        let (value, caret) = match (&app.mode, selected) {
+            (Mode::Edit(field), true) => {
+                let (shown, at) = field.shown(VALUE_W - 2);
+                let x = 1 + LABEL_W + VALUE_W - shown.chars().count() - 1 + at;
+                (format!("[{shown}]"), Some(x))
+            }
+            _ => (value_text(app, p.key), None),
         };
         let marker = if selected { g.selected } else { " " };
         let room = usize::from(inner.width).saturating_sub(1 + LABEL_W + VALUE_W + 2);
@@ -138,5 +144,10 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         );
         let style = if selected { theme.selected } else { theme.text };
         buf.set_stringn(inner.x, y, &line, inner.width as usize, style);
+        if let Some(x) = caret.and_then(|x| u16::try_from(x).ok())
+            && x < inner.width
+        {
+            buf[(inner.x + x, y)].set_style(caret_style(style));
+        }
     }
 }

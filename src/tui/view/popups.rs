@@ -7,8 +7,9 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Clear, Paragraph, Widget, Wrap};
 
 use super::{block, wrap};
-use crate::tui::app::{App, Export, Mode, Status, export_step};
+use crate::tui::app::{App, Export, Field, Mode, Status, export_step};
 use crate::tui::keys::TABLE;
+use crate::tui::line::caret;
 use crate::tui::theme::Theme;
 
 fn centered(area: Rect, width: u16, height: u16) -> Rect {
@@ -243,7 +244,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                 theme,
             );
         }
-        Mode::SaveName(text) => {
+        Mode::SaveName(field) => {
             let dir = app
                 .library
                 .dir
@@ -254,7 +255,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             prompt(
                 app,
                 "Save the scene as a user preset",
-                &format!(" name: {text}_"),
+                (" name: ", field),
                 &[
                     format!(" saved in {dir}"),
                     if app.lab.measured().is_some() {
@@ -269,7 +270,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                 theme,
             );
         }
-        Mode::Export(kind, text) => {
+        Mode::Export(kind, field) => {
             let (title, what) = match kind {
                 Export::Csv => {
                     let sol = &app.lab.solution;
@@ -293,7 +294,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             prompt(
                 app,
                 title,
-                &format!(" file: {text}_"),
+                (" file: ", field),
                 &[
                     what,
                     if app.export_dir == std::path::Path::new(".") {
@@ -328,7 +329,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
 fn prompt(
     app: &App,
     title: &str,
-    field: &str,
+    (label, field): (&str, &Field),
     notes: &[String],
     area: Rect,
     buf: &mut Buffer,
@@ -337,7 +338,17 @@ fn prompt(
     let g = theme.glyphs;
     let width = area.width.saturating_sub(4).min(74);
     let room = usize::from(width.saturating_sub(2));
-    let mut lines = vec![Line::from(Span::styled(g.text(field), theme.text))];
+    // The line around its cursor, the cursor's cell reversed.
+    let (shown, at) = field.shown(room.saturating_sub(label.chars().count() + 1));
+    let piece =
+        |from: usize, to: usize| -> String { shown.chars().skip(from).take(to - from).collect() };
+    let end = shown.chars().count();
+    let mut lines = vec![Line::from(vec![
+        Span::styled(label.to_string(), theme.text),
+        Span::styled(g.text(&piece(0, at)), theme.text),
+        Span::styled(g.text(&piece(at, at + 1)), caret(theme.text)),
+        Span::styled(g.text(&piece(at + 1, end)), theme.text),
+    ])];
     if let Status::Error(e) = &app.status {
         for row in wrap(Line::from(g.text(&format!(" {e}"))), room) {
             lines.push(row.style(theme.error));
