@@ -336,6 +336,15 @@ fn table(rows: &[Row]) -> String {
             );
         }
     }
+    if let Some(end) = rows.iter().find_map(|r| r.cut) {
+        let _ = writeln!(
+            out,
+            "cut: every run compared up to t = {} only (the span goes on): the step budget, {} steps of {:.0e} s per run",
+            show(end, Dimension::Time),
+            cmp::STEP_BUDGET,
+            cmp::FINEST_STEP
+        );
+    }
     let orders: Vec<String> = Method::TIME_STEPPING
         .iter()
         .filter_map(|&m| cmp::fitted_order(rows, m).map(|p| format!("{} {p:.2}", m.name())))
@@ -353,7 +362,7 @@ fn table(rows: &[Row]) -> String {
          status ok: stable, and errors within 1 % of the scene's largest speed (else inaccurate);\n\
          outcome: the run's outcome word and impacts, \"wrong\" where either differs from exact's;\n\
          E drift: largest energy excess over the exact run, relative to the start;\n\
-         times: minimum and median of repeated runs after one untimed warm-up."
+         times: minimum and median of at least three runs (after an untimed warm-up for runs under 10 ms)."
     );
     match cmp::headline(rows, 1e-6) {
         Some((factor, best, exact)) => {

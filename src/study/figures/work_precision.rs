@@ -152,6 +152,7 @@ mod tests {
             rhs_evals: 1,
             time_min_s: time,
             time_median_s: time,
+            cut: None,
             note: None,
         }
     }
