@@ -688,9 +688,11 @@ fn methods_view_and_overlay() {
 fn the_methods_view_of_a_long_span_is_cut_and_says_where() {
     use groovelab::study::compare::WINDOW;
     let p = Preset::load("paper-b4.9").unwrap();
-    let (mut scene, span) = p.spec.resolve().unwrap();
-    scene.mu = 1e-6;
-    let mut a = App::new(groovelab::lab::Lab::new(p, scene, span), no_user_presets());
+    let (_, span) = p.spec.resolve().unwrap();
+    let flags = groovelab::settings::params::SceneSpec::default()
+        .with(groovelab::settings::params::Key::Mu, 1e-6);
+    let lab = groovelab::lab::Lab::new(groovelab::lab::Settings::new(p, flags), None).unwrap();
+    let mut a = App::new(lab, no_user_presets());
     assert!(a.lab.solution.t_end > 1e5);
     press(&mut a, "c");
     a.lab.wait();
