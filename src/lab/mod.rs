@@ -28,7 +28,9 @@ use crate::study::preset::Preset;
 use analyses::Generation;
 use jobs::{Job, Jobs};
 
-pub use analyses::{METHOD_VIEW_LEVELS, OVERLAY_LEVELS, Overlay, level_settings};
+pub use analyses::{
+    ExportResult, Exported, METHOD_VIEW_LEVELS, OVERLAY_LEVELS, Overlay, level_settings,
+};
 pub use resolved::{MeasuredPoints, Point, Resolved, Story};
 pub use settings::{Edit, Settings};
 pub use span::SpanEnd;
@@ -84,7 +86,7 @@ pub struct Lab {
     position_fit: Job<Generation, Result<ModelFit, FitError>>,
     /// A file the app is writing (run CSV, chart SVG): the status message, or why not;
     /// each export its own request.
-    export: Job<u64, Result<String, String>>,
+    export: Job<u64, ExportResult>,
     exports: u64,
 }
 
