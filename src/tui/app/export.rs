@@ -159,7 +159,7 @@ impl App {
                 Box::new(move || done(figures::run_chart(&sol, which, measured.as_ref())))
             }
             Figure::Map => {
-                let preset = self.lab.preset.name.clone();
+                let preset = self.lab.preset().name.clone();
                 Box::new(move || {
                     let (points, x, y) = regime_grid(&scene);
                     done(figures::regime_map(&points, &x, Some(&y), &scene, &preset))
