@@ -264,24 +264,25 @@ pub(super) fn integrate(
         // Accepted: look for switching-function zeros inside the step.
         let dense = |theta: f64| -> Y {
             let q = [theta, theta * theta, theta.powi(3), theta.powi(4)];
-            std::array::from_fn(|j| {
-                y[j] + h
-                    * (0..7)
-                        .map(|i| k[i][j] * (0..4).map(|p| P[i][p] * q[p]).sum::<f64>())
-                        .sum::<f64>()
-            })
+            // Each stage's weight at θ, the same for every component.
+            let b: [f64; 7] = std::array::from_fn(|i| (0..4).map(|p| P[i][p] * q[p]).sum::<f64>());
+            std::array::from_fn(|j| y[j] + h * (0..7).map(|i| k[i][j] * b[i]).sum::<f64>())
         };
         let g0 = switches(m, &modes, &y);
         // Sample inside the step too, so a gap that dips below zero and back is seen.
+        const SAMPLES: [f64; 4] = [0.25, 0.5, 0.75, 1.0];
+        let sampled = SAMPLES.map(|theta| {
+            if theta == 1.0 {
+                switches(m, &modes, &y_new)
+            } else {
+                switches(m, &modes, &dense(theta))
+            }
+        });
         let mut first: Option<(f64, usize)> = None;
         for (which, &g_start) in g0.iter().enumerate() {
             let mut prev = (0.0, g_start);
-            for theta in [0.25, 0.5, 0.75, 1.0] {
-                let g = if theta == 1.0 {
-                    switches(m, &modes, &y_new)[which]
-                } else {
-                    switches(m, &modes, &dense(theta))[which]
-                };
+            for (&theta, g) in SAMPLES.iter().zip(&sampled) {
+                let g = g[which];
                 if crossed(which, prev.1, g) {
                     let (mut lo, mut hi) = (prev.0, theta);
                     // Bisect to a time error below the tolerance.

@@ -723,16 +723,32 @@ fn methods_view_work_axis_outcome_and_order() {
     assert!(s.contains("against steps per run"), "{s}");
     assert!(s.contains("= outcome right (recollide, 20 impacts)"), "{s}");
     assert!(s.contains("order: e "), "{s}");
+    // Untimed until the time axis asks (the timing runs cost more than the rest).
+    let times = |a: &App| match a.lab.method_rows() {
+        State::Ready(rows) => rows.iter().map(|r| r.time_median_s).collect::<Vec<_>>(),
+        _ => panic!("the rows are there once the lab has waited"),
+    };
+    let runs = a.lab.runs();
+    assert!(times(&a).iter().all(|&t| t == 0.0));
     press(&mut a, "u");
     a.lab.wait();
     let s = screen_of(&a);
     assert!(s.contains("against rhs evaluations per run"), "{s}");
+    assert_eq!(a.lab.runs(), runs, "the rhs axis needs no new rows");
     press(&mut a, "u");
     a.lab.wait();
     let s = screen_of(&a);
     assert!(s.contains("against time per run"), "{s}");
+    assert!(times(&a).iter().all(|&t| t > 0.0), "{:?}", times(&a));
+    assert_eq!(a.lab.runs(), runs + 1, "timed once");
     press(&mut a, "u");
+    a.lab.wait();
     assert!(screen_of(&a).contains("against steps per run"));
+    assert_eq!(
+        a.lab.runs(),
+        runs + 1,
+        "the timed rows serve the steps axis too"
+    );
     assert!(
         keys::TABLE
             .iter()
