@@ -9,9 +9,10 @@ use super::{EventTracker, Model, Observer, RunEnd, Settings, Y, collide, gap};
 
 // The Dormand–Prince 5(4) tableau with Shampine's dense output (as scipy's RK45).
 // The system is autonomous, so the stage times only serve the tableau check.
+// Statics, not consts: an unoptimised build copies a const table whole at every use.
 #[cfg_attr(not(test), allow(dead_code))]
-const C: [f64; 7] = [0.0, 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0, 1.0, 1.0];
-const A: [[f64; 6]; 7] = [
+static C: [f64; 7] = [0.0, 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0, 1.0, 1.0];
+static A: [[f64; 6]; 7] = [
     [0.0; 6],
     [1.0 / 5.0, 0.0, 0.0, 0.0, 0.0, 0.0],
     [3.0 / 40.0, 9.0 / 40.0, 0.0, 0.0, 0.0, 0.0],
@@ -41,7 +42,7 @@ const A: [[f64; 6]; 7] = [
         11.0 / 84.0,
     ],
 ];
-const B: [f64; 7] = [
+static B: [f64; 7] = [
     35.0 / 384.0,
     0.0,
     500.0 / 1113.0,
@@ -50,7 +51,7 @@ const B: [f64; 7] = [
     11.0 / 84.0,
     0.0,
 ];
-const E: [f64; 7] = [
+static E: [f64; 7] = [
     -71.0 / 57600.0,
     0.0,
     71.0 / 16695.0,
@@ -59,7 +60,7 @@ const E: [f64; 7] = [
     -22.0 / 525.0,
     1.0 / 40.0,
 ];
-const P: [[f64; 4]; 7] = [
+static P: [[f64; 4]; 7] = [
     [
         1.0,
         -8048581381.0 / 2820520608.0,
