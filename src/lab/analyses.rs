@@ -168,6 +168,10 @@ impl Lab {
     /// Asks for (or stops asking for) the Methods view's rows.
     pub fn want_methods(&mut self, on: bool) {
         self.want_methods = on;
+        if !on {
+            // Leaving the Methods view stops its running job; finished rows are kept.
+            self.methods.stop_running();
+        }
         self.request_methods();
     }
 

@@ -723,7 +723,11 @@ fn methods_view_work_axis_outcome_and_order() {
     assert!(s.contains("against steps per run"), "{s}");
     assert!(s.contains("= outcome right (recollide, 20 impacts)"), "{s}");
     assert!(s.contains("order: e "), "{s}");
-    // Untimed until the time axis asks (the timing runs cost more than the rest).
+    // Untimed until the time axis asks (the timing runs cost more than the rest);
+    // timed on the narrow groove, whose runs are fewer.
+    let mut a = app("paper-b3.5");
+    press(&mut a, "c");
+    a.lab.wait();
     let times = |a: &App| match a.lab.method_rows() {
         State::Ready(rows) => rows.iter().map(|r| r.time_median_s).collect::<Vec<_>>(),
         _ => panic!("the rows are there once the lab has waited"),
@@ -1039,13 +1043,15 @@ fn overlay_measured_and_ghost_marks_differ_and_have_a_legend() {
     assert_ne!(m.overlay, m.measured);
     // ASCII: distinct glyphs for the overlay's v_cm and v_t and the data, each in the
     // legend.
-    let s = screen("paper-b4.9", 0.3, (120, 40), true, Some("o"));
+    // One overlay run, drawn at both sizes.
+    let a = shown("paper-b4.9", 0.3, Some("o"));
+    let s = text(&a, (120, 40), true);
     let chart: String = chart_rows(&s).join("\n");
     for mark in ["% euler", "~ v_t", "x measured v_cm", "o measured v_t"] {
         assert!(chart.contains(mark), "{mark}:\n{chart}");
     }
     // 80×24 puts the legend on more rows rather than dropping marks.
-    let s = screen("paper-b4.9", 0.3, (80, 24), true, Some("o"));
+    let s = text(&a, (80, 24), true);
     for mark in ["% euler", "~ v_t", "x measured v_cm", "o measured v_t"] {
         assert!(s.contains(mark), "{mark}:\n{s}");
     }
