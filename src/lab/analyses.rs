@@ -11,6 +11,18 @@ use crate::study::fit::{self, FitError, Fits, Free, ModelFit};
 use super::Lab;
 use super::jobs::{State, Ticket, Waker};
 
+/// A file an export wrote: where, and what it holds ("the chart", "800 samples every
+/// 10 ms").
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Exported {
+    pub path: std::path::PathBuf,
+    pub what: String,
+}
+
+/// What an export job reports: the file, or why nothing was written (the edge's own
+/// error, kept whole; shared, as a finished job's result is read by reference).
+pub type ExportResult = Result<Exported, std::sync::Arc<dyn std::error::Error + Send + Sync>>;
+
 /// Steps of the overlay and the Methods view: 10 ms … 10 µs (fixed-step methods),
 /// tolerances 1e-2 … 1e-8 (rk45).
 pub const OVERLAY_LEVELS: u8 = 7;
@@ -152,16 +164,20 @@ impl Lab {
     }
 
     /// Writes a file off the key press (a chart's SVG takes milliseconds): `work`
-    /// returns the status message, or why nothing was written. A newer export
+    /// returns the file written, or why nothing was written. A newer export
     /// supersedes a running one.
-    pub fn start_export(&mut self, work: impl FnOnce() -> Result<String, String> + Send + 'static) {
+    pub fn start_export<E: std::error::Error + Send + Sync + 'static>(
+        &mut self,
+        work: impl FnOnce() -> Result<Exported, E> + Send + 'static,
+    ) {
         self.exports += 1;
-        self.export
-            .request(&self.jobs, self.exports, move |_| work());
+        self.export.request(&self.jobs, self.exports, move |_| {
+            work().map_err(|e| std::sync::Arc::new(e) as _)
+        });
     }
 
-    /// The finished export's message, once; `None` while it runs or when there is none.
-    pub fn take_export(&mut self) -> Option<Result<String, String>> {
+    /// The finished export's result, once; `None` while it runs or when there is none.
+    pub fn take_export(&mut self) -> Option<ExportResult> {
         self.export.take()
     }
 

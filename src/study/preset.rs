@@ -1,5 +1,5 @@
 //! Presets: named scenes as TOML text (`presets/*.toml`, embedded in the binary, or a
-//! user's file, read at the edge by `study::preset`), optionally carrying a measured
+//! user's file, read at the edge by `input::preset`), optionally carrying a measured
 //! velocity series; the text form read and written here.
 
 use std::path::PathBuf;
@@ -201,7 +201,7 @@ fn check_measured(m: MeasuredFile) -> Result<Measured, String> {
         angle: m.angle,
         ..Measured::velocities(m.t, m.v_cm, m.v_t)
     };
-    measured.check_magnitudes()?;
+    measured.check_magnitudes().map_err(|e| e.to_string())?;
     Ok(measured)
 }
 

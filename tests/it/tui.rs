@@ -1,15 +1,15 @@
 //! The lab without a terminal: key → action → state, and the headless screen that
 //! `render` prints (insta snapshots, checked by eye when recorded).
 
-use groovelab::cli::{DataArgs, RenderArgs, SceneArgs, render_with};
+use groovelab::cli::DataArgs;
 use groovelab::lab::jobs::State;
 use groovelab::physics::derived::Regime;
-use groovelab::settings::params::Key;
+use groovelab::settings::params::{Key, SceneSpec};
 use groovelab::study::preset::Preset;
 use groovelab::tui::app::{App, Library, Mode, ROWS, Status, View};
 use groovelab::tui::keys;
 
-use crate::common::{self, press, select, text};
+use crate::common::{self, press, scene_of, select, text};
 
 fn no_user_presets() -> Library {
     common::no_user_presets("tui")
@@ -20,23 +20,8 @@ fn app(preset: &str) -> App {
 }
 
 fn screen(preset: &str, at: f64, size: (u16, u16), ascii: bool, keys: Option<&str>) -> String {
-    let scene = SceneArgs {
-        preset: Some(preset.to_string()),
-        ..SceneArgs::default()
-    };
-    let args = RenderArgs {
-        at: Some(at),
-        size,
-        keys: keys.map(str::to_string),
-    };
-    render_with(
-        &scene,
-        &DataArgs::default(),
-        &args,
-        ascii,
-        no_user_presets(),
-    )
-    .unwrap()
+    let scene = scene_of(preset, SceneSpec::default());
+    common::render_text(&scene, Some(at), size, ascii, keys, no_user_presets()).unwrap()
 }
 
 #[test]
@@ -314,10 +299,10 @@ fn playback_runs_on_the_clock_at_the_chosen_speed() {
 fn picker_loads_presets_and_quit_keys_quit() {
     let mut a = app("paper-b4.9");
     press(&mut a, "p down enter");
-    assert_eq!(a.lab.preset.name, a.library.presets[3].name);
+    assert_eq!(a.lab.preset().name, a.library.presets[3].name);
     press(&mut a, "p up up esc");
     assert_eq!(a.mode, Mode::Normal);
-    assert_eq!(a.lab.preset.name, a.library.presets[3].name);
+    assert_eq!(a.lab.preset().name, a.library.presets[3].name);
     press(&mut a, "?");
     assert_eq!(a.mode, Mode::Help);
     press(&mut a, "esc");
@@ -505,10 +490,7 @@ fn phase_times(preset: &str) -> Vec<f64> {
 /// The app `render --preset PRESET --at AT --keys KEYS` draws, ready to be drawn at any
 /// size and glyph set.
 fn shown(preset: &str, at: f64, keys: Option<&str>) -> App {
-    let scene = SceneArgs {
-        preset: Some(preset.to_string()),
-        ..SceneArgs::default()
-    };
+    let scene = scene_of(preset, SceneSpec::default());
     common::rendered(
         &scene,
         &DataArgs::default(),
@@ -688,9 +670,11 @@ fn methods_view_and_overlay() {
 fn the_methods_view_of_a_long_span_is_cut_and_says_where() {
     use groovelab::study::compare::WINDOW;
     let p = Preset::load("paper-b4.9").unwrap();
-    let (mut scene, span) = p.spec.resolve().unwrap();
-    scene.mu = 1e-6;
-    let mut a = App::new(groovelab::lab::Lab::new(p, scene, span), no_user_presets());
+    let (_, span) = p.spec.resolve().unwrap();
+    let flags = groovelab::settings::params::SceneSpec::default()
+        .with(groovelab::settings::params::Key::Mu, 1e-6);
+    let lab = groovelab::lab::Lab::new(groovelab::lab::Settings::new(p, flags), None).unwrap();
+    let mut a = App::new(lab, no_user_presets());
     assert!(a.lab.solution.t_end > 1e5);
     press(&mut a, "c");
     a.lab.wait();
@@ -734,18 +718,18 @@ fn methods_view_work_axis_outcome_and_order() {
     };
     let runs = a.lab.runs();
     assert!(times(&a).iter().all(|&t| t == 0.0));
-    press(&mut a, "u");
+    press(&mut a, "X");
     a.lab.wait();
     let s = screen_of(&a);
     assert!(s.contains("against rhs evaluations per run"), "{s}");
     assert_eq!(a.lab.runs(), runs, "the rhs axis needs no new rows");
-    press(&mut a, "u");
+    press(&mut a, "X");
     a.lab.wait();
     let s = screen_of(&a);
     assert!(s.contains("against time per run"), "{s}");
     assert!(times(&a).iter().all(|&t| t > 0.0), "{:?}", times(&a));
     assert_eq!(a.lab.runs(), runs + 1, "timed once");
-    press(&mut a, "u");
+    press(&mut a, "X");
     a.lab.wait();
     assert!(screen_of(&a).contains("against steps per run"));
     assert_eq!(
@@ -756,7 +740,7 @@ fn methods_view_work_axis_outcome_and_order() {
     assert!(
         keys::TABLE
             .iter()
-            .any(|b| b.keys == ["u"] && b.help.contains("work axis"))
+            .any(|b| b.keys == ["X"] && b.help.contains("work axis"))
     );
 }
 
@@ -1081,7 +1065,8 @@ fn save_keeps_the_data_and_the_description_and_explains_bad_names() {
     let path = dir.join("my-paper-b4.4.toml");
     let saved = Preset::load(path.to_str().unwrap()).unwrap();
     assert_eq!(
-        saved.measured, a.lab.preset.measured,
+        saved.measured,
+        a.lab.preset().measured,
         "the measured series is saved"
     );
     assert!(saved.measured.is_some());
@@ -1187,10 +1172,7 @@ fn export_writes_the_run_as_csv_and_the_chart_as_svg() {
     let csv = std::fs::read_to_string(&path).unwrap();
     assert!(matches!(&a.status, Status::Info(i) if i.contains(&path.display().to_string())));
     // The same bytes as `simulate --format csv --sample 1ms`.
-    let scene = SceneArgs {
-        preset: Some("paper-b4.9".into()),
-        ..SceneArgs::default()
-    };
+    let scene = scene_of("paper-b4.9", SceneSpec::default());
     let cli = simulate(
         &scene,
         &SimulateArgs {

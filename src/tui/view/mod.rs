@@ -2,6 +2,7 @@
 //! writing into a [`Buffer`]. The terminal and the headless `render` both call
 //! [`draw`], so a script sees exactly what a user sees.
 
+mod cache;
 mod charts;
 mod fit;
 mod forces;
@@ -10,6 +11,7 @@ mod map;
 mod methods;
 mod params;
 
+pub use cache::ViewCache;
 pub use forces::ANSWERS;
 pub use params::param_at;
 pub use popups::data_rows;
@@ -225,8 +227,8 @@ fn status(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         // The message after playback if both fit, else first: it is what just happened.
         (_, Status::Info(i)) => {
             let both = format!("{}   {i}", app.playback());
-            let fits =
-                both.chars().count() + 2 + 7 + app.lab.preset.name.len() <= usize::from(area.width);
+            let fits = both.chars().count() + 2 + 7 + app.lab.preset().name.len()
+                <= usize::from(area.width);
             if fits {
                 (both, theme.text)
             } else {
@@ -236,7 +238,7 @@ fn status(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         (_, Status::None) => (app.playback(), theme.text),
     };
     let width = usize::from(area.width);
-    let right = g.ellipsize(&format!("preset {}", app.lab.preset.name), width / 3);
+    let right = g.ellipsize(&format!("preset {}", app.lab.preset().name), width / 3);
     let right_len = right.chars().count();
     let room = width.saturating_sub(right_len + 1);
     buf.set_stringn(area.x, area.y, g.ellipsize(&text, room), room, style);
