@@ -70,6 +70,8 @@ fn shift_w_writes_the_figure_of_the_view_on_screen() {
     let (name, svg) = export_figure(&mut a);
     assert_eq!(name, "paper-b4.9-methods.svg");
     assert!(svg.contains("Work-precision") && svg.contains("mu = 0.1667,"));
+    // Against the work the view shows (steps by default; the rows are untimed then).
+    assert!(svg.contains("steps per run"), "{}", &svg[..400]);
     // The energy chart has none yet: said at once, no prompt.
     press(&mut a, "c e W");
     assert_eq!(a.mode, Mode::Normal);

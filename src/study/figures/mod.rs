@@ -11,7 +11,7 @@ mod work_precision;
 pub use fit::fit_figure;
 pub use map::regime_map;
 pub use run::{RunChart, run_chart};
-pub use work_precision::work_precision;
+pub use work_precision::{Work, work_precision, work_precision_against};
 
 /// Why a figure cannot be drawn.
 #[derive(Debug, thiserror::Error)]

@@ -19,10 +19,48 @@ fn colour(m: Method) -> RGBColor {
     }
 }
 
+/// What the diagram puts across: a run's time (`compare --format svg`), or its steps
+/// or right-hand-side evaluations (the Methods view's other work axes).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Work {
+    Time,
+    Steps,
+    RhsEvals,
+}
+
+impl Work {
+    /// The row's work on this axis, at least the axis' floor (a run refused before its
+    /// first step, or a time under a nanosecond, sits there rather than at −∞).
+    fn of(self, r: &Row) -> f64 {
+        match self {
+            Work::Time => r.time_median_s.max(1e-9),
+            Work::Steps => (r.steps as f64).max(1.0),
+            Work::RhsEvals => (r.rhs_evals as f64).max(1.0),
+        }
+    }
+
+    fn title(self) -> &'static str {
+        match self {
+            Work::Time => "time per run (s, median)",
+            Work::Steps => "steps per run",
+            Work::RhsEvals => "rhs evaluations per run",
+        }
+    }
+}
+
 /// Log error (max |Δv_cm|) against log time, one line per method; runs that are not
 /// `ok` are drawn as hollow markers so failures stay visible. The exact engine, with
 /// no error, is the vertical line at its time.
 pub fn work_precision(rows: &[Row], scene: &Scene) -> Result<String, FigureError> {
+    work_precision_against(rows, scene, Work::Time)
+}
+
+/// [`work_precision`] with `work` across.
+pub fn work_precision_against(
+    rows: &[Row],
+    scene: &Scene,
+    work: Work,
+) -> Result<String, FigureError> {
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, (900, 600)).into_drawing_area();
@@ -30,7 +68,7 @@ pub fn work_precision(rows: &[Row], scene: &Scene) -> Result<String, FigureError
         let pts: Vec<(f64, f64)> = rows
             .iter()
             .filter(|r| r.method != Method::Exact || r.err_v > 0.0)
-            .map(|r| (r.time_median_s.max(1e-9), r.err_v.max(1e-16)))
+            .map(|r| (work.of(r), r.err_v.max(1e-16)))
             .filter(|p| p.0.is_finite() && p.1.is_finite())
             .collect();
         if pts.is_empty() {
@@ -42,7 +80,7 @@ pub fn work_precision(rows: &[Row], scene: &Scene) -> Result<String, FigureError
         let exact_t = rows
             .iter()
             .filter(|r| r.method == Method::Exact)
-            .map(|r| r.time_median_s.max(1e-9));
+            .map(|r| work.of(r));
         let (lo_t, hi_t) =
             finite_bounds(pts.iter().map(|p| p.0).chain(exact_t)).expect("pts is not empty");
         let (lo_t, hi_t) = log_axis(lo_t / 2.0, hi_t * 2.0);
@@ -63,7 +101,7 @@ pub fn work_precision(rows: &[Row], scene: &Scene) -> Result<String, FigureError
             .build_cartesian_2d((lo_t..hi_t).log_scale(), (lo_e..hi_e).log_scale())?;
         chart
             .configure_mesh()
-            .x_desc("time per run (s, median)")
+            .x_desc(work.title())
             .y_desc("max |v_cm - exact| (m/s)")
             .x_label_formatter(&|v| format!("{v:.0e}"))
             .y_label_formatter(&|v| format!("{v:.0e}"))
@@ -71,9 +109,9 @@ pub fn work_precision(rows: &[Row], scene: &Scene) -> Result<String, FigureError
         // The exact engine has no error to plot: a vertical line at its time.
         if let Some(exact) = rows
             .iter()
-            .find(|r| r.method == Method::Exact && r.time_median_s.is_finite())
+            .find(|r| r.method == Method::Exact && work.of(r).is_finite())
         {
-            let t = exact.time_median_s.max(1e-9);
+            let t = work.of(exact);
             chart
                 .draw_series(LineSeries::new(
                     vec![(t, lo_e), (t, hi_e)],
@@ -92,7 +130,7 @@ pub fn work_precision(rows: &[Row], scene: &Scene) -> Result<String, FigureError
             let c = colour(m);
             let line: Vec<(f64, f64)> = mine
                 .iter()
-                .map(|r| (r.time_median_s.max(1e-9), r.err_v.max(1e-16)))
+                .map(|r| (work.of(r), r.err_v.max(1e-16)))
                 .filter(|p| p.0.is_finite() && p.1.is_finite())
                 .collect();
             chart
@@ -103,9 +141,9 @@ pub fn work_precision(rows: &[Row], scene: &Scene) -> Result<String, FigureError
                 });
             chart.draw_series(
                 mine.iter()
-                    .filter(|r| r.err_v.is_finite() && r.time_median_s.is_finite())
+                    .filter(|r| r.err_v.is_finite() && work.of(r).is_finite())
                     .map(|r| {
-                        let p = (r.time_median_s.max(1e-9), r.err_v.max(1e-16));
+                        let p = (work.of(r), r.err_v.max(1e-16));
                         let style = if r.status == crate::study::compare::RunStatus::Ok {
                             c.filled()
                         } else {

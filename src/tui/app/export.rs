@@ -9,6 +9,7 @@ use crate::settings::units::{Dimension, show};
 use crate::study::figures;
 
 use super::{App, ChartBall, Export, Status, View};
+use crate::tui::vocabulary::WorkAxis;
 
 /// The figure `W` writes: the one on screen.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -41,7 +42,9 @@ impl Figure {
             Figure::Velocities => "the velocity chart on screen",
             Figure::Positions => "the position chart on screen",
             Figure::Map => "the regime map over b and e (the Map view)",
-            Figure::Methods => "error against time of every method (the Methods view)",
+            Figure::Methods => {
+                "error against work of every method, as on screen (the Methods view)"
+            }
             Figure::Fit => "the data, the fitted model and the residuals (the Fit view)",
         }
     }
@@ -168,7 +171,12 @@ impl App {
             Figure::Methods => match self.lab.method_rows() {
                 State::Ready(rows) => {
                     let rows = rows.clone();
-                    Box::new(move || done(figures::work_precision(&rows, &scene)))
+                    let work = match self.work_axis {
+                        WorkAxis::Steps => figures::Work::Steps,
+                        WorkAxis::RhsEvals => figures::Work::RhsEvals,
+                        WorkAxis::Time => figures::Work::Time,
+                    };
+                    Box::new(move || done(figures::work_precision_against(&rows, &scene, work)))
                 }
                 _ => {
                     return Err(
