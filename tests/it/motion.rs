@@ -357,6 +357,62 @@ fn event_keys_step_over_an_accumulating_burst_as_one() {
 }
 
 #[test]
+fn a_pinned_run_is_compared_side_by_side_and_keeps_its_own_glyph() {
+    // Pin paper-b4.9 (μ_k 0.17), then μ_k 0.22: the Why panel gives both runs' key
+    // numbers in two columns, each from its own run.
+    let mut a = app("paper-b4.9");
+    press(&mut a, "P");
+    a.lab.set(Key::Mu, 0.22).unwrap();
+    a.t = 0.4;
+    let pinned = a.lab.pinned.as_ref().unwrap().solution.clone();
+    let now = a.lab.solution.clone();
+    assert_ne!(pinned.accumulation, now.accumulation);
+    for size in [(80, 24), (120, 40), (200, 60)] {
+        for ascii in [false, true] {
+            let s = text(&a, size, ascii);
+            let row = |name: &str| {
+                s.lines()
+                    .find_map(|l| {
+                        l.split_once(&format!("||{name} "))
+                            .or(l.split_once(&format!("││{name} ")))
+                    })
+                    .map(|(_, rest)| rest.split_whitespace().collect::<Vec<_>>().join(" "))
+                    .unwrap_or_else(|| panic!("{size:?} {ascii}: no {name} row\n{s}"))
+            };
+            assert!(row("A/B").starts_with("pinned now"), "{size:?}\n{s}");
+            assert!(row("outcome").starts_with("recollide recollide"), "{s}");
+            let t_inf = if ascii { "Tinf" } else { "T∞" };
+            let want = format!(
+                "{:.4} s {:.4} s",
+                pinned.accumulation.unwrap(),
+                now.accumulation.unwrap()
+            );
+            assert!(
+                row(t_inf).starts_with(&want),
+                "{size:?}: {} vs {want}",
+                row(t_inf)
+            );
+            // The chart keeps its event labels.
+            assert!(
+                s.contains("|impact") || s.contains("│impact"),
+                "{size:?} {ascii}\n{s}"
+            );
+            // Without colour the pinned run has its own glyph, shown in the legend.
+            let dot = if ascii {
+                ".. pinned run"
+            } else {
+                "· pinned run"
+            };
+            assert!(s.contains(dot), "{size:?} {ascii}\n{s}");
+        }
+    }
+    // The dots are drawn where the pinned run is, under the current run's curves.
+    let s = text(&a, (120, 40), false);
+    let chart: String = s.lines().skip(16).take(20).collect();
+    assert!(chart.matches('·').count() > 20, "{s}");
+}
+
+#[test]
 fn dot_and_comma_step_by_measured_frames_when_data_are_shown() {
     let mut a = app("paper-b4.9");
     let m = a.lab.measured().unwrap().t.clone();

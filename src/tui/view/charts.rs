@@ -94,6 +94,14 @@ fn pinned_series(app: &App, columns: usize, theme: &Theme, curves: &[Curve]) -> 
         return Vec::new();
     }
     let samples = app.lab.pinned_samples(columns);
+    // Without colour a dimmed braille line looks like the current run's: the pinned
+    // run is drawn in dots of its own glyph then, under the current curves (ASCII draws
+    // every line in its glyph).
+    let (draw, glyph) = match (monochrome(theme), theme.glyphs.ascii) {
+        (_, true) => (Draw::Line, "."),
+        (true, false) => (Draw::PointsUnder, "·"),
+        (false, false) => (Draw::Line, "."),
+    };
     curves
         .iter()
         .enumerate()
@@ -105,8 +113,8 @@ fn pinned_series(app: &App, columns: usize, theme: &Theme, curves: &[Curve]) -> 
             },
             points: samples.iter().map(|s| (s.t, value(s))).collect(),
             style: theme.dim,
-            glyph: ".",
-            draw: Draw::Line,
+            glyph,
+            draw,
         })
         .collect()
 }
@@ -216,7 +224,7 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
             };
             let thin = |p: Vec<(f64, f64)>| match overlay_draw {
                 Draw::Points => thin_to(p, columns / 2),
-                Draw::Line => p,
+                Draw::Line | Draw::PointsUnder => p,
             };
             let side = match (balls.len(), i) {
                 (1, _) => "",
