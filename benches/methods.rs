@@ -1,11 +1,13 @@
 //! Time per simulated second of each method on paper-b4.9 (−0.2 s … 1.0 s, so
 //! 1.2 simulated seconds a run) at three points of the default sweep, and the whole
-//! default comparison (issue target: under 10 s). Results: BENCHMARKS.md.
+//! comparison of the default scene (target ≤ 3 s) and of the costliest scenes (each
+//! within twice the default's). Results: BENCHMARKS.md.
 
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use groovelab::methods::{Method, Model, Observer, Settings, Y, integrate, start_state};
+use groovelab::physics::scene::{Ball, Scene};
 use groovelab::study::compare::sweep;
 use groovelab::study::preset::Preset;
 
@@ -64,18 +66,42 @@ fn methods(c: &mut Criterion) {
     let all: Vec<Method> = std::iter::once(Method::Exact)
         .chain(Method::TIME_STEPPING)
         .collect();
-    whole.bench_function("default comparison, all methods (paper-b4.9)", |b| {
-        b.iter(|| {
-            sweep(
-                &scene,
-                &span,
-                &all,
-                &Settings::default(),
-                &groovelab::study::Quiet,
-            )
-            .unwrap()
-        })
-    });
+    // The default scene and the costliest ones (issue: each within twice the
+    // default's): a 10 kg right ball (span 2.25 s, cut at 2 s), a groove all but
+    // wedging (b = 5.4999 cm, thousands of impacts), μ = 1e-6 (span 147,000 s).
+    let heavy = Scene {
+        right: Ball {
+            mass: 10.0,
+            ..scene.right
+        },
+        ..scene
+    };
+    let scenes = [
+        ("default comparison, all methods (paper-b4.9)", scene),
+        ("--mass-right 10kg", heavy),
+        (
+            "--width 5.4999cm",
+            Scene {
+                width: 0.054999,
+                ..scene
+            },
+        ),
+        ("--mu 1e-6", Scene { mu: 1e-6, ..scene }),
+    ];
+    for (name, scene) in scenes {
+        whole.bench_function(name, |b| {
+            b.iter(|| {
+                sweep(
+                    &scene,
+                    &span,
+                    &all,
+                    &Settings::default(),
+                    &groovelab::study::Quiet,
+                )
+                .unwrap()
+            })
+        });
+    }
     whole.finish();
 }
 

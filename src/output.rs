@@ -19,10 +19,12 @@ use crate::input::file::kind;
 /// Why an output was not written.
 #[derive(Debug, thiserror::Error)]
 pub enum OutputError {
-    #[error("cannot write {path}: it is {kind}, allowed a regular file or a new path")]
-    NotRegular { path: String, kind: &'static str },
-    #[error("cannot write {path}: {reason}")]
-    Io { path: String, reason: String },
+    #[error("cannot write {}: it is {kind}, allowed a regular file or a new path", path.display())]
+    NotRegular { path: PathBuf, kind: &'static str },
+    #[error("cannot write {}: it names no file, allowed a file path", path.display())]
+    NoFileName { path: PathBuf },
+    #[error("cannot write {}: {source}", path.display())]
+    Io { path: PathBuf, source: io::Error },
     #[error("interrupted: nothing was written")]
     Interrupted,
 }
@@ -33,13 +35,13 @@ pub enum OutputError {
 fn check_target(path: &Path) -> Result<Option<Metadata>, OutputError> {
     match std::fs::symlink_metadata(path) {
         Err(e) if e.kind() == io::ErrorKind::NotFound => Ok(None),
-        Err(e) => Err(io_error(path, &e)),
+        Err(e) => Err(io_error(path, e)),
         Ok(m) if m.file_type().is_symlink() => Err(OutputError::NotRegular {
-            path: path.display().to_string(),
+            path: path.to_path_buf(),
             kind: "a symlink",
         }),
         Ok(m) if !m.is_file() => Err(OutputError::NotRegular {
-            path: path.display().to_string(),
+            path: path.to_path_buf(),
             kind: kind(&m),
         }),
         Ok(m) => Ok(Some(m)),
@@ -52,10 +54,10 @@ pub fn check_output(path: &Path) -> Result<(), OutputError> {
     check_target(path).map(|_| ())
 }
 
-fn io_error(path: &Path, e: &io::Error) -> OutputError {
+fn io_error(path: &Path, source: io::Error) -> OutputError {
     OutputError::Io {
-        path: path.display().to_string(),
-        reason: e.to_string(),
+        path: path.to_path_buf(),
+        source,
     }
 }
 
@@ -76,9 +78,8 @@ impl AtomicFile {
         let old = check_target(target)?;
         let name = target
             .file_name()
-            .ok_or_else(|| OutputError::Io {
-                path: target.display().to_string(),
-                reason: "it names no file, allowed a file path".into(),
+            .ok_or_else(|| OutputError::NoFileName {
+                path: target.to_path_buf(),
             })?
             .to_string_lossy()
             .into_owned();
@@ -101,7 +102,7 @@ impl AtomicFile {
                 Err(e) if e.kind() == io::ErrorKind::AlreadyExists && attempt < 100 => {
                     attempt += 1;
                 }
-                Err(e) => return Err(io_error(target, &e)),
+                Err(e) => return Err(io_error(target, e)),
             }
         };
         let me = AtomicFile {
@@ -112,7 +113,7 @@ impl AtomicFile {
         if let Some(old) = old {
             let file = me.out.as_ref().expect("just made").get_ref();
             file.set_permissions(old.permissions())
-                .map_err(|e| io_error(target, &e))?;
+                .map_err(|e| io_error(target, e))?;
             // The owner and group too where allowed (root, or a group of the user's);
             // otherwise the file becomes the user's, as any rewrite would make it.
             #[cfg(unix)]
@@ -133,7 +134,7 @@ impl AtomicFile {
     /// Writes all of `bytes`, with errors naming the target.
     pub fn write_bytes(&mut self, bytes: &[u8]) -> Result<(), OutputError> {
         let out = self.out.as_mut().expect("open until commit");
-        out.write_all(bytes).map_err(|e| io_error(&self.target, &e))
+        out.write_all(bytes).map_err(|e| io_error(&self.target, e))
     }
 
     /// Flushes, syncs and renames over the target, unless `stop` is set: then the
@@ -142,15 +143,15 @@ impl AtomicFile {
         let out = self.out.take().expect("open until commit");
         let file = out
             .into_inner()
-            .map_err(|e| io_error(&self.target, e.error()))?;
-        file.sync_all().map_err(|e| io_error(&self.target, &e))?;
+            .map_err(|e| io_error(&self.target, e.into_error()))?;
+        file.sync_all().map_err(|e| io_error(&self.target, e))?;
         drop(file);
         if stop.load(Ordering::Relaxed) {
             return Err(OutputError::Interrupted);
         }
         // The target may have changed while we wrote (a FIFO put in its place).
         check_target(&self.target)?;
-        std::fs::rename(&self.tmp, &self.target).map_err(|e| io_error(&self.target, &e))?;
+        std::fs::rename(&self.tmp, &self.target).map_err(|e| io_error(&self.target, e))?;
         self.tmp = PathBuf::new();
         Ok(())
     }

@@ -7,7 +7,7 @@ use super::CliError;
 use crate::methods::Method;
 use crate::physics::scene::{Scene, Span};
 use crate::settings::params::{Key, PARAMS, SceneSpec};
-use crate::settings::units::{Dimension, parse_quantity};
+use crate::settings::units::{Dimension, UnitError, parse_quantity};
 use crate::study::fit::Free;
 use crate::study::preset::{self, Preset};
 
@@ -259,17 +259,15 @@ pub enum Format {
     Csv,
 }
 
-fn quantity(text: &str, dim: Dimension) -> Result<f64, String> {
-    parse_quantity(text, dim).map_err(|e| e.to_string())
+// clap shows the parser's error after the option's name.
+fn speed(s: &str) -> Result<f64, UnitError> {
+    parse_quantity(s, Dimension::Speed)
 }
-fn speed(s: &str) -> Result<f64, String> {
-    quantity(s, Dimension::Speed)
+fn time(s: &str) -> Result<f64, UnitError> {
+    parse_quantity(s, Dimension::Time)
 }
-fn time(s: &str) -> Result<f64, String> {
-    quantity(s, Dimension::Time)
-}
-fn ratio(s: &str) -> Result<f64, String> {
-    quantity(s, Dimension::Ratio)
+fn ratio(s: &str) -> Result<f64, UnitError> {
+    parse_quantity(s, Dimension::Ratio)
 }
 
 /// Scene options shared by every command that takes a scene: `--preset` and one
@@ -316,7 +314,7 @@ impl Args for SceneArgs {
             let arg = clap::Arg::new(p.name)
                 .long(p.flag)
                 .value_name(if dim == Dimension::Ratio { "X" } else { "Q" })
-                .value_parser(move |s: &str| quantity(s, dim))
+                .value_parser(move |s: &str| parse_quantity(s, dim))
                 .allow_hyphen_values(true)
                 .global(true)
                 .help(p.help_text())

@@ -5,7 +5,8 @@ use std::fmt::Write as _;
 use serde::Serialize;
 
 use super::{
-    CliError, DataArgs, FitArgs, FitFormat, SceneArgs, TrackRole, output::write_atomically,
+    BadValue, CliError, DataArgs, FitArgs, FitFormat, Flag, SceneArgs, TrackRole,
+    output::write_atomically,
 };
 use crate::input::data::Reading;
 use crate::physics::scene::Scene;
@@ -26,11 +27,8 @@ pub fn load(
             .measured
             .clone()
             .map(|m| Series::Velocities(std::sync::Arc::new(m)))
-            .ok_or_else(|| {
-                CliError::Invalid(format!(
-                    "preset {} has no measured data, allowed: a paper-b* preset or --data FILE",
-                    preset.name
-                ))
+            .ok_or_else(|| BadValue::NoMeasuredData {
+                preset: preset.name.clone(),
             })?,
     };
     let found = series.found().cloned();
@@ -53,15 +51,18 @@ pub fn load_series(args: &DataArgs) -> Result<Option<Series>, CliError> {
             })
             .collect::<Result<Vec<_>, _>>()?,
         more => {
-            return Err(CliError::Invalid(format!(
-                "--data given {} times, allowed once (one file) or twice (the centre's track, then the rim mark's)",
-                more.len()
-            )));
+            return Err(BadValue::DataTooOften { count: more.len() }.into());
         }
     };
-    let unit = |text: &Option<String>, dim: Dimension, flag: &str| {
+    let unit = |text: &Option<String>, dim: Dimension, id: &'static str| {
         text.as_ref()
-            .map(|u| unit_factor(u, dim).map_err(|e| CliError::Invalid(format!("{flag} {u}: {e}"))))
+            .map(|u| {
+                unit_factor(u, dim).map_err(|source| BadValue::Unit {
+                    flag: Flag(id),
+                    text: u.clone(),
+                    source,
+                })
+            })
             .transpose()
     };
     let named = |role: TrackRole| {
@@ -72,9 +73,9 @@ pub fn load_series(args: &DataArgs) -> Result<Option<Series>, CliError> {
             .map(|(_, n)| n.clone())
     };
     let reading = Reading {
-        time_unit: unit(&args.time_unit, Dimension::Time, "--time-unit")?,
-        speed_unit: unit(&args.speed_unit, Dimension::Speed, "--speed-unit")?,
-        length_unit: unit(&args.length_unit, Dimension::Length, "--length-unit")?,
+        time_unit: unit(&args.time_unit, Dimension::Time, "time_unit")?,
+        speed_unit: unit(&args.speed_unit, Dimension::Speed, "speed_unit")?,
+        length_unit: unit(&args.length_unit, Dimension::Length, "length_unit")?,
         impact_at: args.impact_at,
         centre: named(TrackRole::Centre),
         mark: named(TrackRole::Mark),
@@ -82,10 +83,13 @@ pub fn load_series(args: &DataArgs) -> Result<Option<Series>, CliError> {
     if let Some(w) = args.window
         && !(w > 0.0 && w <= 1.0)
     {
-        return Err(CliError::Invalid(format!(
-            "--window {}: allowed a half-width 0 s < T ≤ 1 s",
-            show(w, Dimension::Time)
-        )));
+        return Err(BadValue::OutOfRange {
+            flag: Flag("window"),
+            value: w,
+            dim: Dimension::Time,
+            allowed: "a half-width 0 s < T ≤ 1 s",
+        }
+        .into());
     }
     let derive = Derive {
         half_window: args.window,
@@ -101,7 +105,7 @@ pub fn load_series(args: &DataArgs) -> Result<Option<Series>, CliError> {
         Series::Velocities(m) | Series::Track(m, _) => m,
     };
     m.check_magnitudes()
-        .map_err(|e| CliError::Invalid(format!("{file}: {e}")))?;
+        .map_err(|source| CliError::Implausible { file, source })?;
     Ok(Some(series))
 }
 
@@ -151,10 +155,7 @@ pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<St
         && scene_args.preset.is_none()
         && scene_args.values.given().next().is_none()
     {
-        return Err(CliError::Invalid(format!(
-            "--data {} names no scene: give the one it was measured in, --preset NAME or the scene options (--radius, --width, --mass, --v0 …)",
-            path.display()
-        )));
+        return Err(BadValue::DataWithoutScene { path: path.clone() }.into());
     }
     let (preset, scene, _) = scene_args.resolve()?;
     if let Some(path) = &args.output {
@@ -172,9 +173,7 @@ pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<St
     if let (Some(a), Some(b)) = (args.from, args.to)
         && a >= b
     {
-        return Err(CliError::Invalid(format!(
-            "--from {a} s must be before --to {b} s"
-        )));
+        return Err(BadValue::FitWindowBackwards { from: a, to: b }.into());
     }
     // A series long enough to take a noticeable time shows a counter.
     let bar = super::progress::Bar::counter("model evaluations", m.t.len() > 5_000);
@@ -213,8 +212,14 @@ pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<St
             out += &models_table(&fits.models, found.is_some());
             out
         }
-        FitFormat::Svg => crate::study::figures::fit_figure(&scene, &m, &fits)
-            .map_err(|e| CliError::Invalid(format!("cannot draw the figure: {e}")))?,
+        FitFormat::Svg => {
+            crate::study::figures::fit_figure(&scene, &m, &fits).map_err(|source| {
+                CliError::Draw {
+                    what: "figure",
+                    source,
+                }
+            })?
+        }
     };
     match &args.output {
         None => Ok(text),

@@ -4,13 +4,16 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
-use super::{CliError, CompareArgs, CompareFormat, Format, MAX_SAMPLES, SceneArgs, SimulateArgs};
+use super::{
+    BadValue, CliError, CompareArgs, CompareFormat, Flag, Format, MAX_SAMPLES, SceneArgs,
+    SimulateArgs,
+};
 use crate::methods::{self, Method, Settings, Y};
 use crate::physics::derived::Derived;
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{Event, Snapshot, Solution};
-use crate::settings::units::{Dimension, show, show_exact};
+use crate::settings::units::{Dimension, show};
 use crate::study::compare::{self as cmp, Row};
 
 /// Settings of a time-stepping run from the options, checked.
@@ -22,28 +25,37 @@ pub(super) fn settings(
     let mut s = Settings::default();
     if let Some(dt) = dt {
         if !(dt > 0.0 && dt <= 1.0) {
-            return Err(CliError::Invalid(format!(
-                "--dt {} is out of range, allowed 0 < dt ≤ 1 s",
-                show_exact(dt, Dimension::Time)
-            )));
+            return Err(BadValue::OutOfRange {
+                flag: Flag("dt"),
+                value: dt,
+                dim: Dimension::Time,
+                allowed: "0 < dt ≤ 1 s",
+            }
+            .into());
         }
         s.step = dt;
     }
     if let Some(tol) = tol {
         if !(1e-14..=0.1).contains(&tol) {
-            return Err(CliError::Invalid(format!(
-                "--tol {} is out of range, allowed 1e-14 ≤ tol ≤ 0.1",
-                show_exact(tol, Dimension::Ratio)
-            )));
+            return Err(BadValue::OutOfRange {
+                flag: Flag("tol"),
+                value: tol,
+                dim: Dimension::Ratio,
+                allowed: "1e-14 ≤ tol ≤ 0.1",
+            }
+            .into());
         }
         s.tolerance = tol;
     }
     if let Some(eps) = epsilon {
         if eps <= 0.0 {
-            return Err(CliError::Invalid(format!(
-                "--epsilon {} is out of range, allowed ε > 0",
-                show_exact(eps, Dimension::Speed)
-            )));
+            return Err(BadValue::OutOfRange {
+                flag: Flag("epsilon"),
+                value: eps,
+                dim: Dimension::Speed,
+                allowed: "ε > 0",
+            }
+            .into());
         }
         s.epsilon = eps;
     }
@@ -137,10 +149,11 @@ pub(super) fn simulate_method(
     let outcome = methods::integrate(args.method, &model, y0, t0, t1, settings, &mut rec);
     if let (Some(why), 0) = (&outcome.stalled, outcome.steps) {
         // Refused before the first step: there is no run to report.
-        return Err(CliError::Invalid(format!(
-            "--method {} cannot run this span: {why}, allowed a larger --dt or a shorter span",
-            args.method.name()
-        )));
+        return Err(BadValue::MethodCannotRun {
+            method: args.method,
+            why: why.clone(),
+        }
+        .into());
     }
     let stalled = match (&outcome.stalled, rec.finite) {
         (Some(why), _) => Some(why.clone()),
@@ -269,8 +282,14 @@ pub(super) fn compare(scene_args: &SceneArgs, args: &CompareArgs) -> Result<Stri
             s
         }
         CompareFormat::Table => table(&rows),
-        CompareFormat::Svg => crate::study::figures::work_precision(&rows, &scene)
-            .map_err(|e| CliError::Invalid(format!("cannot draw the diagram: {e}")))?,
+        CompareFormat::Svg => {
+            crate::study::figures::work_precision(&rows, &scene).map_err(|source| {
+                CliError::Draw {
+                    what: "diagram",
+                    source,
+                }
+            })?
+        }
     };
     match &args.output {
         None => Ok(text),
@@ -336,6 +355,15 @@ fn table(rows: &[Row]) -> String {
             );
         }
     }
+    if let Some(end) = rows.iter().find_map(|r| r.cut) {
+        let _ = writeln!(
+            out,
+            "cut: every run compared up to t = {} only (the span goes on): the step budget, {} steps of {:.0e} s per run",
+            show(end, Dimension::Time),
+            cmp::STEP_BUDGET,
+            cmp::FINEST_STEP
+        );
+    }
     let orders: Vec<String> = Method::TIME_STEPPING
         .iter()
         .filter_map(|&m| cmp::fitted_order(rows, m).map(|p| format!("{} {p:.2}", m.name())))
@@ -353,7 +381,7 @@ fn table(rows: &[Row]) -> String {
          status ok: stable, and errors within 1 % of the scene's largest speed (else inaccurate);\n\
          outcome: the run's outcome word and impacts, \"wrong\" where either differs from exact's;\n\
          E drift: largest energy excess over the exact run, relative to the start;\n\
-         times: minimum and median of repeated runs after one untimed warm-up."
+         times: minimum and median of at least three runs (after an untimed warm-up for runs under 10 ms)."
     );
     match cmp::headline(rows, 1e-6) {
         Some((factor, best, exact)) => {

@@ -22,86 +22,20 @@ use crate::tui::{
 
 mod args;
 pub mod entry;
+mod error;
 mod fit;
 mod manual;
 mod methods;
 mod progress;
 mod sweep;
 pub use crate::output::{self, write_atomically};
-use crate::settings::units::{Dimension, show, show_exact, significant};
+use crate::settings::units::{Dimension, show, significant};
 pub use args::*;
+pub use error::{BadValue, CliError, Flag, Usage};
 pub use sweep::run_with_stop as sweep_with_stop;
 
 /// Most samples `--sample` may ask for.
 pub const MAX_SAMPLES: usize = 1_000_000;
-
-/// A failure the user can act on: printed as one `error:` line, exit status 2. The
-/// errors of the layers below are kept whole; their one line is made where it is
-/// printed (`entry`).
-#[derive(Debug, thiserror::Error)]
-pub enum CliError {
-    #[error("{0}")]
-    Invalid(String),
-    #[error(transparent)]
-    Scene(#[from] crate::settings::params::SceneError),
-    #[error(transparent)]
-    Preset(#[from] crate::study::preset::PresetError),
-    #[error(transparent)]
-    File(#[from] crate::input::FileError),
-    #[error(transparent)]
-    Data(#[from] crate::input::data::DataError),
-    #[error(transparent)]
-    Output(output::OutputError),
-    #[error(transparent)]
-    Fit(crate::study::fit::FitError),
-    #[error(transparent)]
-    Usage(#[from] Usage),
-    #[error("{0}")]
-    Io(#[from] std::io::Error),
-    #[error("interrupted: nothing was written")]
-    Interrupted,
-}
-
-impl From<output::OutputError> for CliError {
-    fn from(e: output::OutputError) -> CliError {
-        match e {
-            output::OutputError::Interrupted => CliError::Interrupted,
-            other => CliError::Output(other),
-        }
-    }
-}
-
-/// An option given where it does nothing: refused, never ignored silently. Flags are
-/// named as clap defines them ([`flag`]).
-#[derive(Debug, thiserror::Error)]
-pub enum Usage {
-    #[error("{flag} is not used by {by}, allowed only with {allowed}")]
-    Unused {
-        flag: String,
-        by: &'static str,
-        allowed: &'static str,
-    },
-    #[error("{flag} describes a --data file and none is given, allowed only with --data FILE")]
-    WithoutData { flag: String },
-    #[error("{flag} is not used by the {method} method, allowed only with {allowed}")]
-    NotForMethod {
-        flag: String,
-        method: &'static str,
-        allowed: &'static str,
-    },
-}
-
-/// `--NAME` of the option whose clap id is `id` (the field's name), as clap defines it.
-pub(crate) fn flag(id: &str) -> String {
-    use clap::CommandFactory;
-    let cmd = Cli::command();
-    let long = cmd
-        .get_arguments()
-        .chain(cmd.get_subcommands().flat_map(|c| c.get_arguments()))
-        .find(|a| a.get_id() == id)
-        .and_then(|a| a.get_long());
-    format!("--{}", long.expect("an option of the command line"))
-}
 
 /// What a command line asks for once it is valid.
 pub enum Outcome {
@@ -162,8 +96,8 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         .map(|_| "preset")
         .or_else(|| cli.scene.values.given().next().map(|(k, _)| k.param().name));
     let data_flag = data_given.iter().find(|(_, g)| *g).map(|(id, _)| *id);
-    let unused = |id: &str, allowed| Usage::Unused {
-        flag: flag(id),
+    let unused = |id: &'static str, allowed| Usage::Unused {
+        flag: Flag(id),
         by: name,
         allowed,
     };
@@ -171,7 +105,7 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         (Some(id), _) if !scene => unused(id, "commands that take a scene"),
         (_, Some(id)) if !data => unused(id, "fit, render and the app"),
         // Only --data gives these a file to read.
-        (_, Some(id)) if d.data.is_empty() => Usage::WithoutData { flag: flag(id) },
+        (_, Some(id)) if d.data.is_empty() => Usage::WithoutData { flag: Flag(id) },
         _ if !ascii && cli.ascii => unused("ascii", "render and the app"),
         _ => return Ok(()),
     };
@@ -222,7 +156,9 @@ pub fn render_with(
 ) -> Result<String, CliError> {
     let mut app = App::new(lab(scene_args, data)?, library);
     let keys = match &args.keys {
-        Some(script) => tui::keys::parse_script(script).map_err(CliError::Invalid)?,
+        Some(script) => {
+            tui::keys::parse_script(script).map_err(|source| BadValue::Keys { source })?
+        }
         None => Vec::new(),
     };
     tui::replay(&mut app, &keys);
@@ -231,12 +167,12 @@ pub fn render_with(
     if let Some(at) = args.at {
         let (lo, hi) = (app.lab.solution.t_start, app.lab.solution.t_end);
         if !(lo..=hi).contains(&at) {
-            return Err(CliError::Invalid(format!(
-                "--at {} is outside the simulated span, allowed {} … {}",
-                show(at, Dimension::Time),
-                show(lo, Dimension::Time),
-                show(hi, Dimension::Time)
-            )));
+            return Err(BadValue::OutsideSpan {
+                at,
+                start: lo,
+                end: hi,
+            }
+            .into());
         }
         app.t = at;
     }
@@ -273,7 +209,7 @@ fn method_options(args: &SimulateArgs) -> Result<(), CliError> {
     ];
     match uses.into_iter().find(|(_, given, used, _)| *given && !used) {
         Some((id, _, _, allowed)) => Err(Usage::NotForMethod {
-            flag: flag(id),
+            flag: Flag(id),
             method: m.name(),
             allowed,
         }
@@ -306,19 +242,13 @@ fn samples(solution: &Solution, dt: f64) -> Result<Vec<Snapshot>, CliError> {
     // As many as `Solution::sample` gives: the grid points from t_start to t_end.
     let count = ((solution.t_end - solution.t_start) / dt + 1e-9).floor() + 1.0;
     if dt <= 0.0 || count > MAX_SAMPLES as f64 {
-        let count = if dt > 0.0 && count < 1e15 {
-            format!("{count}")
-        } else if dt > 0.0 {
-            format!("{count:e}")
-        } else {
-            "no".into()
-        };
-        return Err(CliError::Invalid(format!(
-            "--sample {} gives {count} samples over {} … {}, allowed a step > 0 giving at most {MAX_SAMPLES} samples",
-            show_exact(dt, Dimension::Time),
-            show(solution.t_start, Dimension::Time),
-            show(solution.t_end, Dimension::Time),
-        )));
+        return Err(BadValue::TooManySamples {
+            dt,
+            count,
+            start: solution.t_start,
+            end: solution.t_end,
+        }
+        .into());
     }
     Ok(solution.sample(dt))
 }
@@ -361,15 +291,26 @@ fn csv_output(solution: &Solution, samples: Option<&[Snapshot]>) -> Result<Strin
     crate::study::export::run_csv(solution, samples).map_err(|e| CliError::Io(e.into()))
 }
 
+/// `simulate`'s table: the scene, what the run does, and its events (and samples).
 fn table(
     preset: &Preset,
     solution: &Solution,
     derived: &Derived,
     samples: Option<&[Snapshot]>,
 ) -> String {
+    let mut out = String::new();
+    scene_lines(&mut out, preset, solution, derived);
+    story_lines(&mut out, preset, solution, derived);
+    run_lines(&mut out, solution);
+    let _ = writeln!(out);
+    state_rows(&mut out, solution, samples);
+    out
+}
+
+/// The preset, the scene, the balls and the derived values with the paper's regime.
+fn scene_lines(out: &mut String, preset: &Preset, solution: &Solution, derived: &Derived) {
     let sc = &solution.scene;
     let len = |v: f64| show(v, Dimension::Length);
-    let mut out = String::new();
     let _ = writeln!(out, "preset   {}: {}", preset.name, preset.description);
     let b_star = derived
         .b_star
@@ -404,6 +345,11 @@ fn table(
         derived.why(),
         b_star
     );
+}
+
+/// What the run does (against the paper's criterion and the preset's data) and the
+/// left ball after the first impact with the forces then.
+fn story_lines(out: &mut String, preset: &Preset, solution: &Solution, derived: &Derived) {
     // What this run does, beside the paper's criterion above.
     let outcome = Summary::of(solution).outcome;
     let _ = writeln!(
@@ -447,6 +393,10 @@ fn table(
             significant(rec.a_t, 4)
         );
     }
+}
+
+/// The impacts, precision notes and the energy balance of the run.
+fn run_lines(out: &mut String, solution: &Solution) {
     let summary = Summary::of(solution);
     let accumulation = summary.accumulation_time.map_or(String::new(), |t| {
         format!(", accumulating at T∞ = {}", show(t, Dimension::Time))
@@ -477,7 +427,10 @@ fn table(
         e1.lost.impacts,
         e1.lost.rolling_resistance
     );
-    let _ = writeln!(out);
+}
+
+/// The state at each event, then at each sample if any.
+fn state_rows(out: &mut String, solution: &Solution, samples: Option<&[Snapshot]>) {
     let header = state_header();
     let row = state_row;
     let _ = writeln!(out, "{header}");
@@ -494,7 +447,6 @@ fn table(
             let _ = writeln!(out, "{}", row(s.t, "", "", s.left, s.right));
         }
     }
-    out
 }
 
 /// The closed-form recovery of the left ball, in one line.

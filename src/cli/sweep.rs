@@ -5,18 +5,20 @@
 use std::io::{IsTerminal, Write};
 use std::sync::atomic::{AtomicBool, Ordering};
 
+use super::error::{BadValue, Flag, size_text};
 use super::output::AtomicFile;
 use super::progress::Bar;
 use super::{CliError, SceneArgs, SweepArgs, SweepFormat};
-use crate::study::sweep::{self, Axis, Point, SweepError};
+use crate::study::sweep::{self, Axis, Point};
 
 fn grid(text: &str, two: bool) -> Result<(usize, usize), CliError> {
     match super::args::counts(text, 10_000) {
         // NX alone: a square grid for two parameters, one row for one.
         Some((nx, ny)) => Ok((nx, ny.unwrap_or(if two { nx } else { 1 }))),
-        None => Err(CliError::Invalid(format!(
-            "--grid {text} is not a grid, expected NX or NXxNY (1 ..= 10000 each), e.g. 400x200"
-        ))),
+        None => Err(BadValue::Grid {
+            text: text.to_string(),
+        }
+        .into()),
     }
 }
 
@@ -39,19 +41,6 @@ fn bytes_per_point(format: SweepFormat) -> u64 {
     }
 }
 
-/// A byte count for people: 9.3 GiB, 286 MiB, 12 KiB.
-fn size_text(bytes: u64) -> String {
-    let b = bytes as f64;
-    let (k, m, g) = (1024.0, 1024.0 * 1024.0, 1024.0 * 1024.0 * 1024.0);
-    if b >= g {
-        format!("{:.1} GiB", b / g)
-    } else if b >= m {
-        format!("{:.0} MiB", b / m)
-    } else {
-        format!("{:.0} KiB", b / k)
-    }
-}
-
 /// A writer into memory that refuses to grow past `limit` bytes (stdout's buffer).
 struct Capped {
     bytes: Vec<u8>,
@@ -62,9 +51,10 @@ impl Write for Capped {
     fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
         if (self.bytes.len() + buf.len()) as u64 > self.limit {
             return Err(std::io::Error::other(format!(
-                "the output passed {} on stdout, allowed at most {}; write it with --output FILE",
+                "the output passed {} on stdout, allowed at most {}; write it with {} FILE",
                 size_text(self.limit),
-                size_text(self.limit)
+                size_text(self.limit),
+                Flag("output")
             )));
         }
         self.bytes.extend_from_slice(buf);
@@ -92,31 +82,36 @@ pub fn run_with_stop(
     let (preset, _, _) = scene_args.resolve()?;
     let base = preset.spec.over(&scene_args.values);
     let (nx, ny) = grid(&args.grid, args.y.is_some())?;
-    let x = sweep::parse_axis(&args.x, nx).map_err(|e| CliError::Invalid(format!("--x {e}")))?;
-    let y = args
-        .y
-        .as_ref()
-        .map(|t| sweep::parse_axis(t, ny).map_err(|e| CliError::Invalid(format!("--y {e}"))))
-        .transpose()?;
+    let axis = |text: &str, n, id| {
+        sweep::parse_axis(text, n).map_err(|source| BadValue::Axis {
+            flag: Flag(id),
+            source,
+        })
+    };
+    let x = axis(&args.x, nx, "x")?;
+    let y = args.y.as_ref().map(|t| axis(t, ny, "y")).transpose()?;
     let ny = y.map_or(1, |_| ny);
     // The grid's corners are checked once, by the sweep itself, before any point is
     // solved or a byte is committed.
     if args.format == SweepFormat::Svg && (nx > MAX_SVG_AXIS || ny > MAX_SVG_AXIS) {
-        return Err(CliError::Invalid(format!(
-            "--grid {} is too fine for --format svg (one rectangle per point), allowed at most {MAX_SVG_AXIS}x{MAX_SVG_AXIS}; use csv or json for finer grids",
-            args.grid
-        )));
+        return Err(BadValue::GridTooFineForSvg {
+            grid: args.grid.clone(),
+            max: MAX_SVG_AXIS,
+        }
+        .into());
     }
     let total = (nx * ny) as u64;
     let estimate = total * bytes_per_point(args.format);
     let name = format!("{:?}", args.format).to_uppercase();
     if args.output.is_none() && estimate > STDOUT_LIMIT {
-        return Err(CliError::Invalid(format!(
-            "--grid {} gives {total} points, about {} of {name}, allowed at most {} on stdout; write it with --output FILE (streamed, no limit)",
-            args.grid,
-            size_text(estimate),
-            size_text(STDOUT_LIMIT)
-        )));
+        return Err(BadValue::TooLargeForStdout {
+            grid: args.grid.clone(),
+            points: total,
+            bytes: estimate,
+            format: args.format,
+            limit: STDOUT_LIMIT,
+        }
+        .into());
     }
     // For the person watching (like the progress bar); scripts keep a stderr that is
     // empty on success and one `error:` line on failure.
@@ -165,8 +160,11 @@ pub fn run_with_stop(
     result
 }
 
-fn output_error(path: &std::path::Path, e: std::io::Error) -> CliError {
-    CliError::Invalid(format!("cannot write {}: {e}", path.display()))
+fn output_error(path: &std::path::Path, source: std::io::Error) -> CliError {
+    CliError::Write {
+        path: path.to_path_buf(),
+        source,
+    }
 }
 
 /// What one sweep computes.
@@ -187,37 +185,21 @@ fn emit(
     out: &mut dyn Write,
     io_error: &dyn Fn(std::io::Error) -> CliError,
 ) -> Result<(), CliError> {
-    let from_sweep = |e: SweepError| match e {
-        SweepError::Interrupted => CliError::Interrupted,
-        SweepError::Invalid(m) | SweepError::Output(m) => CliError::Invalid(m),
-    };
-    // The sink's I/O error, kept whole for the message.
-    let mut failed: Option<std::io::Error> = None;
     let mut stream = |head: &[u8],
                       row: &dyn Fn(&mut Vec<u8>, &Point, bool),
-                      tail: &[u8],
-                      failed: &mut Option<std::io::Error>|
+                      tail: &[u8]|
      -> Result<(), CliError> {
         out.write_all(head).map_err(io_error)?;
         let mut first = true;
         let mut buf = Vec::with_capacity(sweep::BATCH * 128);
-        let result =
-            sweep::run_streamed(map.base, map.x, map.y, map.stop, map.tick, &mut |batch| {
-                buf.clear();
-                for p in batch {
-                    row(&mut buf, p, first);
-                    first = false;
-                }
-                out.write_all(&buf).map_err(|e| {
-                    let msg = e.to_string();
-                    *failed = Some(e);
-                    SweepError::Output(msg)
-                })
-            });
-        if let Some(e) = failed.take() {
-            return Err(io_error(e));
-        }
-        result.map_err(from_sweep)?;
+        sweep::run_streamed(map.base, map.x, map.y, map.stop, map.tick, &mut |batch| {
+            buf.clear();
+            for p in batch {
+                row(&mut buf, p, first);
+                first = false;
+            }
+            out.write_all(&buf).map_err(io_error)
+        })?;
         out.write_all(tail).map_err(io_error)
     };
     match format {
@@ -225,7 +207,6 @@ fn emit(
             b"x,y,regime,v_ratio,t_roll,impacts,t_accumulation\n",
             &|buf, p, _| csv_row(buf, p),
             b"",
-            &mut failed,
         ),
         SweepFormat::Json => {
             // Byte for byte what serde_json writes for {x, y, points}, in pieces.
@@ -243,15 +224,16 @@ fn emit(
                     serde_json::to_writer(&mut *buf, p).expect("plain data serializes");
                 },
                 b"]}\n",
-                &mut failed,
             )
         }
         SweepFormat::Svg => {
-            let points =
-                sweep::run(map.base, map.x, map.y, map.stop, map.tick).map_err(from_sweep)?;
+            let points = sweep::run(map.base, map.x, map.y, map.stop, map.tick)?;
             let scene = map.base.resolve()?.0;
             let svg = crate::study::figures::regime_map(&points, map.x, map.y, &scene, map.preset)
-                .map_err(|e| CliError::Invalid(format!("cannot draw the map: {e}")))?;
+                .map_err(|source| CliError::Draw {
+                    what: "map",
+                    source,
+                })?;
             out.write_all(svg.as_bytes()).map_err(io_error)
         }
     }

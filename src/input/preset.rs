@@ -9,7 +9,7 @@ use crate::lab::Lab;
 use crate::study::preset::{self, Origin, Preset, PresetError};
 
 /// Why a scene could not be saved as a preset.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[derive(Debug, thiserror::Error)]
 pub enum SaveError {
     #[error("name '{0}', allowed letters, digits, - _ .")]
     BadName(String),
@@ -17,8 +17,16 @@ pub enum SaveError {
     NoFolder,
     #[error("{0} exists")]
     Exists(PathBuf),
+    /// The preset's text could not be made (the writer's reason).
     #[error("{0}")]
-    Io(String),
+    Text(String),
+    /// What would be written does not load again (a bug: never write it).
+    #[error("the file would not load again: {0}")]
+    WouldNotLoad(PresetError),
+    #[error("{0}")]
+    Folder(std::io::Error),
+    #[error(transparent)]
+    Write(crate::output::OutputError),
 }
 
 impl Preset {
@@ -104,13 +112,11 @@ pub fn save(
     let description =
         kept.unwrap_or_else(|| format!("Saved from groovelab (started from {})", lab.preset.name));
     let text = preset::to_toml(name, &description, &lab.saved_spec(), lab.measured())
-        .map_err(SaveError::Io)?;
+        .map_err(SaveError::Text)?;
     // What is written must load again: check before reporting success.
-    Preset::parse(&text, name, Origin::BuiltIn)
-        .map_err(|e| SaveError::Io(format!("the file would not load again: {e}")))?;
-    std::fs::create_dir_all(dir).map_err(|e| SaveError::Io(e.to_string()))?;
-    crate::output::write_atomically(&path, text.as_bytes())
-        .map_err(|e| SaveError::Io(e.to_string()))?;
+    Preset::parse(&text, name, Origin::BuiltIn).map_err(SaveError::WouldNotLoad)?;
+    std::fs::create_dir_all(dir).map_err(SaveError::Folder)?;
+    crate::output::write_atomically(&path, text.as_bytes()).map_err(SaveError::Write)?;
     Ok(path)
 }
 

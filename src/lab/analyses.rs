@@ -4,12 +4,24 @@
 
 use crate::methods::{self, Method, Settings, Y};
 use crate::physics::scene::{Scene, Span};
-use crate::physics::solution::Solution;
+use crate::study::Progress;
 use crate::study::compare::{self, Row};
 use crate::study::fit::{self, FitError, Fits, Free, ModelFit};
 
 use super::Lab;
 use super::jobs::{State, Ticket, Waker};
+
+/// A file an export wrote: where, and what it holds ("the chart", "800 samples every
+/// 10 ms").
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Exported {
+    pub path: std::path::PathBuf,
+    pub what: String,
+}
+
+/// What an export job reports: the file, or why nothing was written (the edge's own
+/// error, kept whole; shared, as a finished job's result is read by reference).
+pub type ExportResult = Result<Exported, std::sync::Arc<dyn std::error::Error + Send + Sync>>;
 
 /// Steps of the overlay and the Methods view: 10 ms … 10 µs (fixed-step methods),
 /// tolerances 1e-2 … 1e-8 (rk45).
@@ -22,11 +34,13 @@ pub fn level_settings(method: Method, level: u8) -> Settings {
         Settings {
             tolerance: 10f64.powf(-2.0 - level),
             step: 1e-3,
+            max_steps: compare::STEP_BUDGET,
             ..Settings::default()
         }
     } else {
         Settings {
             step: 10f64.powf(-2.0 - level / 2.0),
+            max_steps: compare::STEP_BUDGET,
             ..Settings::default()
         }
     }
@@ -83,10 +97,10 @@ impl Lab {
         if !self.want_methods {
             return;
         }
-        let (scene, span, sol) = (self.scene, self.span, self.solution.clone());
+        let (scene, span) = (self.scene, self.span);
         self.methods
             .request(&self.jobs, self.generation, move |ticket| {
-                method_rows(&scene, &span, &sol, ticket)
+                method_rows(&scene, &span, ticket)
             });
     }
 
@@ -95,10 +109,10 @@ impl Lab {
             self.overlay.cancel();
             return;
         };
-        let (scene, span, sol) = (self.scene, self.span, self.solution.clone());
+        let (scene, span) = (self.scene, self.span);
         let key = (self.generation, method, level);
         self.overlay.request(&self.jobs, key, move |ticket| {
-            overlay(method, level, &scene, &span, &sol, ticket)
+            overlay(method, level, &scene, &span, ticket)
         });
     }
 
@@ -148,16 +162,20 @@ impl Lab {
     }
 
     /// Writes a file off the key press (a chart's SVG takes milliseconds): `work`
-    /// returns the status message, or why nothing was written. A newer export
+    /// returns the file written, or why nothing was written. A newer export
     /// supersedes a running one.
-    pub fn start_export(&mut self, work: impl FnOnce() -> Result<String, String> + Send + 'static) {
+    pub fn start_export<E: std::error::Error + Send + Sync + 'static>(
+        &mut self,
+        work: impl FnOnce() -> Result<Exported, E> + Send + 'static,
+    ) {
         self.exports += 1;
-        self.export
-            .request(&self.jobs, self.exports, move |_| work());
+        self.export.request(&self.jobs, self.exports, move |_| {
+            work().map_err(|e| std::sync::Arc::new(e) as _)
+        });
     }
 
-    /// The finished export's message, once; `None` while it runs or when there is none.
-    pub fn take_export(&mut self) -> Option<Result<String, String>> {
+    /// The finished export's result, once; `None` while it runs or when there is none.
+    pub fn take_export(&mut self) -> Option<ExportResult> {
         self.export.take()
     }
 
@@ -249,44 +267,49 @@ impl Lab {
     }
 }
 
-/// Every time-stepping method at the Methods view's levels, timed for the view's time
-/// axis (the screen on the steps and evaluations axes stays the same for the same
-/// input: nothing else on it depends on the times).
-fn method_rows(scene: &Scene, span: &Span, sol: &Solution, ticket: &Ticket) -> Vec<Row> {
-    let runs: Vec<(Method, u8)> = Method::TIME_STEPPING
+/// Every time-stepping method at the Methods view's levels over the comparison's
+/// stretch (the span, cut at [`compare::WINDOW`]: the finest level, 10 µs, takes at
+/// most 240,000 steps), timed for the view's time axis (the screen on the steps and
+/// evaluations axes stays the same for the same input: nothing else on it depends on
+/// the times).
+fn method_rows(scene: &Scene, span: &Span, ticket: &Ticket) -> Vec<Row> {
+    let runs: Vec<(Method, Settings)> = Method::TIME_STEPPING
         .into_iter()
-        .flat_map(|m| METHOD_VIEW_LEVELS.map(|l| (m, l)))
+        .flat_map(|m| METHOD_VIEW_LEVELS.map(|l| (m, level_settings(m, l))))
         .collect();
-    let mut rows = Vec::with_capacity(runs.len());
-    for (i, &(method, level)) in runs.iter().enumerate() {
-        if ticket.cancelled() {
-            break;
-        }
-        ticket.progress(i, runs.len());
-        let settings = level_settings(method, level);
-        match compare::measure(method, scene, span, &settings, sol, true, ticket) {
-            Ok(row) => rows.push(row),
-            // Superseded: the rows are dropped unseen.
-            Err(_) => break,
-        }
-    }
-    rows
+    let reference = compare::Reference::new(scene, span);
+    // Superseded: the rows are dropped unseen.
+    compare::measure_all(scene, &reference, &runs, &Counted(ticket)).unwrap_or_default()
 }
 
-/// One method's run at `level` over the exact curves, thinned, with its row.
+/// The job's progress from a study's ticks.
+struct Counted<'a>(&'a Ticket);
+
+impl Progress for Counted<'_> {
+    fn tick(&self, done: u64, total: u64) {
+        self.0.progress(done as usize, total as usize);
+    }
+    fn cancelled(&self) -> bool {
+        self.0.cancelled()
+    }
+}
+
+/// One method's run at `level` over the exact curves (the comparison's stretch: the
+/// span, cut at [`compare::WINDOW`]), thinned, with its row.
 fn overlay(
     method: Method,
     level: u8,
     scene: &Scene,
     span: &Span,
-    sol: &Solution,
     ticket: &Ticket,
 ) -> Option<Overlay> {
     let settings = level_settings(method, level);
+    let reference = compare::Reference::new(scene, span);
+    let exact = &reference.exact;
     let steps = if method.adaptive() {
         1
     } else {
-        ((sol.t_end - sol.t_start) / settings.step) as usize
+        ((exact.t_end - exact.t_start) / settings.step) as usize
     };
     let mut rec = Thinned {
         points: Vec::new(),
@@ -297,8 +320,7 @@ fn overlay(
     };
     // The run's points are recorded in the measuring run's first pass: one run.
     let row =
-        compare::measure_observed(method, scene, span, &settings, sol, false, ticket, &mut rec)
-            .ok()?;
+        compare::measure_observed(method, scene, &settings, &reference, ticket, &mut rec).ok()?;
     Some(Overlay {
         method,
         settings,

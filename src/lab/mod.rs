@@ -27,7 +27,9 @@ use crate::study::preset::Preset;
 use analyses::Generation;
 use jobs::{Job, Jobs};
 
-pub use analyses::{METHOD_VIEW_LEVELS, OVERLAY_LEVELS, Overlay, level_settings};
+pub use analyses::{
+    ExportResult, Exported, METHOD_VIEW_LEVELS, OVERLAY_LEVELS, Overlay, level_settings,
+};
 pub use span::SpanEnd;
 pub use views::Story;
 
@@ -91,7 +93,7 @@ pub struct Lab {
     position_fit: Job<Generation, Result<ModelFit, FitError>>,
     /// A file the app is writing (run CSV, chart SVG): the status message, or why not;
     /// each export its own request.
-    export: Job<u64, Result<String, String>>,
+    export: Job<u64, ExportResult>,
     exports: u64,
     samples: Cached<usize, Snapshot>,
     energies: Cached<usize, (f64, EnergySplit)>,

@@ -1,24 +1,39 @@
 //! Speed against accuracy: every method over a sweep of step sizes (or tolerances),
-//! each run measured against the exact solution, classified (`ok`, `chatter`,
-//! `unstable`, `stalled`) and timed. A sweep is bounded ([`STEP_BUDGET`] per run) and
-//! can be stopped ([`Progress`]).
+//! each run measured against the exact solution, classified (`ok`, `inaccurate`,
+//! `chatter`, `unstable`, `stalled`) and timed. A comparison's work is bounded: it
+//! covers at most [`WINDOW`] of simulated time (a longer span is cut there, and every
+//! row says so), so no run takes more than [`STEP_BUDGET`] steps; the accuracy runs
+//! share the cores, the timing runs go one at a time; it can be stopped
+//! ([`Progress`]).
 
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::time::Instant;
 
+use rayon::prelude::*;
 use serde::Serialize;
 
 use crate::methods::{Method, Model, Observer, RunEnd, Settings, Y, gap, integrate, start_state};
 use crate::physics::derived::{Outcome, Summary};
+use crate::physics::engine::{self, NEGLIGIBLE_SPEED};
 use crate::physics::model::Phase;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{Event, EventKind, Solution, Who};
 use crate::study::{Cancelled, Progress, Quiet};
 
-/// Most steps one run of a [`sweep`] may take. A level that needs more (a fixed step
-/// too fine for the span) is skipped as `stalled`, saying so. Every preset's default
-/// span (under 4 s) runs its finest level (1 µs) within it, so the budget only bounds
-/// long spans: without it `--t-end 19.7` spent 70 s on 20-million-step runs.
-pub const STEP_BUDGET: usize = 4_000_000;
+/// The finest fixed step of the default sweep, s.
+pub const FINEST_STEP: f64 = 1e-6;
+
+/// Most steps one run of a comparison takes: the finest step over [`WINDOW`]. A
+/// smaller `max_steps` in the settings skips (as `stalled`, saying so) the levels
+/// that would need more.
+pub const STEP_BUDGET: usize = 2_000_000;
+
+/// The most simulated time a comparison covers, s: [`STEP_BUDGET`] steps of
+/// [`FINEST_STEP`]. A longer span (`--mu 1e-6` reaches 147,000 s, a 10 kg right ball
+/// 2.25 s, `paper-b4.4` 2.8 s) is compared over its first 2 s only, every row saying
+/// so: a comparison's work then grows with the span up to 2 s and no further, at most
+/// about 1.6 times the default scene's (`paper-b4.9`, 1.28 s), whatever the scene.
+pub const WINDOW: f64 = STEP_BUDGET as f64 * FINEST_STEP;
 
 /// Steps between two looks at the stop flag: often enough to stop within
 /// milliseconds, rare enough to cost nothing.
@@ -44,6 +59,96 @@ impl<'a> Watch<'a> {
 /// A run is accurate (status `ok`) within this share of the scene's largest speed, in
 /// its velocities, spins and end state.
 pub const ACCURATE: f64 = 0.01;
+
+/// What a comparison's runs are measured against: the exact solution over the stretch
+/// compared (the span, or its first [`WINDOW`] seconds where the span is longer), and
+/// the outcome and impacts a run should find there.
+#[derive(Clone, Debug)]
+pub struct Reference {
+    pub exact: Solution,
+    /// Where the step budget cut the span (s), if it did.
+    pub cut: Option<f64>,
+    pub outcome: Outcome,
+    pub impacts: usize,
+    /// Whether the exact impacts accumulate within the stretch (infinitely many: the
+    /// outcome word alone decides whether a run gets it right).
+    pub accumulating: bool,
+}
+
+impl Reference {
+    /// The exact run of `scene` over `span`, cut at [`WINDOW`] after its start.
+    pub fn new(scene: &Scene, span: &Span) -> Reference {
+        let whole = engine::solve(scene, span);
+        let end = whole.t_start + WINDOW;
+        if whole.t_end <= end {
+            let summary = Summary::of(&whole);
+            return Reference {
+                cut: None,
+                outcome: summary.outcome,
+                impacts: summary.impacts,
+                accumulating: whole.accumulation.is_some(),
+                exact: whole,
+            };
+        }
+        let exact = engine::solve(
+            scene,
+            &Span {
+                t_start: whole.t_start,
+                t_end: Some(end),
+            },
+        );
+        let (outcome, impacts) = outcome_until(&exact, end);
+        Reference {
+            cut: Some(end),
+            outcome,
+            impacts,
+            accumulating: exact.accumulation.is_some_and(|t| t <= end),
+            exact,
+        }
+    }
+}
+
+/// What the exact run does up to `end` (a cut comparison's runs see no further), and
+/// its impacts there: the rule of [`Outcome::of`] applied to the events up to `end`,
+/// with the relative velocity in the first stretch after the impact where neither
+/// ball slides, else at `end`.
+pub fn outcome_until(sol: &Solution, end: f64) -> (Outcome, usize) {
+    let eps = NEGLIGIBLE_SPEED * sol.scene.speed_scale();
+    let shown = |e: &&Event| e.t >= sol.t_start && e.t <= end;
+    let impacts = sol
+        .events
+        .iter()
+        .filter(shown)
+        .filter(|e| e.kind == EventKind::Collision)
+        .count();
+    let pressed = sol
+        .events
+        .iter()
+        .filter(shown)
+        .any(|e| e.kind == EventKind::ContactStart);
+    let settled = sol
+        .segments
+        .iter()
+        .find(|s| {
+            s.t0 >= 0.0
+                && s.t0 <= end
+                && s.phase
+                    .iter()
+                    .all(|p| matches!(p, Phase::Rolling | Phase::Resting))
+        })
+        .map_or_else(
+            || {
+                let s = sol.at(end);
+                [s.left, s.right]
+            },
+            |s| s.start,
+        );
+    let [l, r] = settled;
+    let accumulating = sol.accumulation.is_some_and(|t| t <= end);
+    let moving = l.v.abs() > eps || r.v.abs() > eps;
+    let outcome = Outcome::classify(impacts, accumulating, pressed, r.v - l.v, moving, eps);
+    (outcome, impacts)
+}
 
 /// How a run ended (interface.md).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -104,6 +209,9 @@ pub struct Row {
     pub rhs_evals: usize,
     pub time_min_s: f64,
     pub time_median_s: f64,
+    /// Where the step budget ended the comparison (s) when the span went on beyond
+    /// [`WINDOW`]; `None` when the run covered the whole span.
+    pub cut: Option<f64>,
     /// Why a run stalled.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub note: Option<String>,
@@ -327,11 +435,21 @@ fn exact_roll(sol: &Solution) -> Option<f64> {
         .map(|e| e.t)
 }
 
-/// Minimum and median of repeated timings of `f` (after one untimed warm-up), with
-/// more repeats for quick runs.
+/// A run at least this long (s) is its own warm-up: its first timing counts.
+const NO_WARM_UP: f64 = 0.01;
+
+/// Minimum and median of at least three timings of `f`, more for quick runs (up to
+/// 15 within 50 ms). A quick run's first call is an untimed warm-up (caches, the
+/// allocator); a run of [`NO_WARM_UP`] or more is timed from its first call, where
+/// such start-up costs are lost in the run.
 pub fn time<T>(mut f: impl FnMut() -> T) -> (f64, f64) {
-    std::hint::black_box(f());
     let mut times = Vec::new();
+    let first = Instant::now();
+    std::hint::black_box(f());
+    let first = first.elapsed().as_secs_f64();
+    if first >= NO_WARM_UP {
+        times.push(first);
+    }
     let budget = Instant::now();
     while times.len() < 3 || (times.len() < 15 && budget.elapsed().as_secs_f64() < 0.05) {
         let start = Instant::now();
@@ -342,15 +460,9 @@ pub fn time<T>(mut f: impl FnMut() -> T) -> (f64, f64) {
     (times[0], times[times.len() / 2])
 }
 
-/// One run of `method` on `scene` over `span`, measured against `exact`.
-pub fn run(
-    method: Method,
-    scene: &Scene,
-    span: &Span,
-    settings: &Settings,
-    exact: &Solution,
-) -> Row {
-    measure(method, scene, span, settings, exact, true, &Quiet).expect("Quiet never cancels")
+/// One run of `method` on `scene`, measured against `reference` and timed.
+pub fn run(method: Method, scene: &Scene, settings: &Settings, reference: &Reference) -> Row {
+    measure(method, scene, settings, reference, true, &Quiet).expect("Quiet never cancels")
 }
 
 /// [`run`], with the timing runs only if `timed` (the untimed row is deterministic),
@@ -358,68 +470,104 @@ pub fn run(
 pub fn measure(
     method: Method,
     scene: &Scene,
-    span: &Span,
     settings: &Settings,
-    exact: &Solution,
+    reference: &Reference,
     timed: bool,
     progress: &dyn Progress,
 ) -> Result<Row, Cancelled> {
-    measure_observed(
-        method,
-        scene,
-        span,
-        settings,
-        exact,
-        timed,
-        progress,
-        &mut Unwatched,
-    )
+    let mut row = measure_observed(method, scene, settings, reference, progress, &mut Unwatched)?;
+    if timed {
+        (row.time_min_s, row.time_median_s) =
+            timing(method, scene, settings, reference, &row, progress)?;
+    }
+    Ok(row)
 }
 
-/// [`measure`], with `also` watching the steps and events of the run's first pass (so
-/// a caller that wants the run's points, as the overlay, need not integrate it again).
-#[allow(clippy::too_many_arguments)]
+/// The minimum and median time of the run `row` measured (see [`time`]); zero for a
+/// run refused before its first step.
+pub fn timing(
+    method: Method,
+    scene: &Scene,
+    settings: &Settings,
+    reference: &Reference,
+    row: &Row,
+    progress: &dyn Progress,
+) -> Result<(f64, f64), Cancelled> {
+    let exact = &reference.exact;
+    let times = if method == Method::Exact {
+        let span = Span {
+            t_start: exact.t_start,
+            t_end: Some(exact.t_end),
+        };
+        time(|| engine::solve(scene, &span))
+    } else if row.status == RunStatus::Stalled && row.steps == 0 {
+        (0.0, 0.0)
+    } else {
+        let model = Model::of(scene);
+        let (t0, t1) = (exact.t_start, exact.t_end);
+        let y0 = start_state(scene, t0);
+        time(|| {
+            integrate(
+                method,
+                &model,
+                y0,
+                t0,
+                t1,
+                settings,
+                &mut Finite(Watch::new(progress)),
+            )
+        })
+    };
+    if progress.cancelled() {
+        return Err(Cancelled);
+    }
+    Ok(times)
+}
+
+/// The exact engine's row: no error, its segments as steps.
+fn exact_row(reference: &Reference) -> Row {
+    let exact = &reference.exact;
+    Row {
+        method: Method::Exact,
+        step: None,
+        tolerance: None,
+        status: RunStatus::Ok,
+        outcome: reference.outcome,
+        impacts: reference.impacts,
+        outcome_right: true,
+        err_v: 0.0,
+        err_u: 0.0,
+        err_t_roll: exact_roll(exact).map(|_| 0.0),
+        err_t_impact: Some(0.0),
+        err_final: 0.0,
+        energy_drift: 0.0,
+        slip_rolling: 0.0,
+        steps: exact.segments.len(),
+        rhs_evals: 0,
+        time_min_s: 0.0,
+        time_median_s: 0.0,
+        cut: reference.cut,
+        note: None,
+    }
+}
+
+/// The untimed row of one run, with `also` watching the steps and events of its first
+/// pass (so a caller that wants the run's points, as the overlay, need not integrate
+/// it again).
 pub fn measure_observed(
     method: Method,
     scene: &Scene,
-    span: &Span,
     settings: &Settings,
-    exact: &Solution,
-    timed: bool,
+    reference: &Reference,
     progress: &dyn Progress,
     also: &mut dyn Observer,
 ) -> Result<Row, Cancelled> {
+    if method == Method::Exact {
+        return Ok(exact_row(reference));
+    }
+    let exact = &reference.exact;
     let model = Model::of(scene);
     let (t0, t1) = (exact.t_start, exact.t_end);
-    if method == Method::Exact {
-        let (time_min_s, time_median_s) = if timed {
-            time(|| crate::physics::engine::solve(scene, span))
-        } else {
-            (0.0, 0.0)
-        };
-        let summary = Summary::of(exact);
-        return Ok(Row {
-            method,
-            step: None,
-            tolerance: None,
-            status: RunStatus::Ok,
-            outcome: summary.outcome,
-            impacts: summary.impacts,
-            outcome_right: true,
-            err_v: 0.0,
-            err_u: 0.0,
-            err_t_roll: exact_roll(exact).map(|_| 0.0),
-            err_t_impact: Some(0.0),
-            err_final: 0.0,
-            energy_drift: 0.0,
-            slip_rolling: 0.0,
-            steps: exact.segments.len(),
-            rhs_evals: 0,
-            time_min_s,
-            time_median_s,
-            note: None,
-        });
-    }
     let y0 = start_state(scene, t0);
     let settle = if method.regularised() {
         20.0 * settings.epsilon / model.slip_rate()
@@ -465,7 +613,7 @@ pub fn measure_observed(
         last_slip: [None; 2],
         flips: 0,
         slip_rolling: 0.0,
-        windows: windows.clone(),
+        windows,
         next_window: 0,
         impacts: (found.0.first().copied(), found.0.last().copied()),
         still: ACCURATE * scene.speed_scale(),
@@ -488,9 +636,8 @@ pub fn measure_observed(
     .iter()
     .fold(0.0_f64, |a, d| a.max(d.abs()));
     let (outcome, impacts) = run_outcome(&metrics, &run_end, found.0.len(), scene.mu > 0.0);
-    let expected = Summary::of(exact);
-    let outcome_right = outcome == expected.outcome
-        && (exact.accumulation.is_some() || impacts == expected.impacts);
+    let outcome_right =
+        outcome == reference.outcome && (reference.accumulating || impacts == reference.impacts);
     let accurate = [metrics.err_v, metrics.err_u, err_final]
         .iter()
         .all(|&e| e <= ACCURATE * scene.speed_scale());
@@ -508,25 +655,6 @@ pub fn measure_observed(
     } else {
         RunStatus::Ok
     };
-    let (time_min_s, time_median_s) = if !timed || (run_end.stalled.is_some() && run_end.steps == 0)
-    {
-        (0.0, 0.0)
-    } else {
-        time(|| {
-            integrate(
-                method,
-                &model,
-                y0,
-                t0,
-                t1,
-                settings,
-                &mut Finite(Watch::new(progress)),
-            )
-        })
-    };
-    if progress.cancelled() {
-        return Err(Cancelled);
-    }
     let exact_roll = exact_roll(exact);
     Ok(Row {
         method,
@@ -552,8 +680,9 @@ pub fn measure_observed(
         outcome_right,
         steps: run_end.steps,
         rhs_evals: run_end.rhs_evals,
-        time_min_s,
-        time_median_s,
+        time_min_s: 0.0,
+        time_median_s: 0.0,
+        cut: reference.cut,
         note: run_end.stalled,
     })
 }
@@ -585,8 +714,9 @@ pub fn default_sweep(method: Method) -> Vec<f64> {
     }
 }
 
-/// Runs every method in `methods` over its sweep, each run within [`STEP_BUDGET`]
-/// steps; ticks `progress` once per row and stops when it says so.
+/// Runs every method in `methods` over its sweep against the exact run of `scene`
+/// over `span` (cut at [`WINDOW`]), each run within [`STEP_BUDGET`] steps (or the
+/// settings' smaller `max_steps`); see [`measure_all`] for progress and stopping.
 pub fn sweep(
     scene: &Scene,
     span: &Span,
@@ -594,41 +724,76 @@ pub fn sweep(
     base: &Settings,
     progress: &dyn Progress,
 ) -> Result<Vec<Row>, Cancelled> {
-    let exact = crate::physics::engine::solve(scene, span);
+    let reference = Reference::new(scene, span);
     let budget = STEP_BUDGET.min(base.max_steps);
-    let levels: Vec<(Method, f64)> = methods
+    let runs: Vec<(Method, Settings)> = methods
         .iter()
         .flat_map(|&m| default_sweep(m).into_iter().map(move |v| (m, v)))
+        .map(|(method, value)| {
+            let settings = if method.adaptive() {
+                Settings {
+                    tolerance: value,
+                    step: 1e-3,
+                    max_steps: budget,
+                    ..*base
+                }
+            } else {
+                Settings {
+                    step: value,
+                    max_steps: budget,
+                    ..*base
+                }
+            };
+            (method, settings)
+        })
         .collect();
-    let total = levels.len() as u64;
-    let mut rows = Vec::with_capacity(levels.len());
-    progress.tick(0, total);
-    for (method, value) in levels {
-        let settings = if method.adaptive() {
-            Settings {
-                tolerance: value,
-                step: 1e-3,
-                max_steps: budget,
-                ..*base
-            }
-        } else {
-            Settings {
-                step: value,
-                max_steps: budget,
-                ..*base
-            }
-        };
-        let mut row = measure(method, scene, span, &settings, &exact, true, progress)?;
+    let mut rows = measure_all(scene, &reference, &runs, progress)?;
+    for (row, (method, settings)) in rows.iter_mut().zip(&runs) {
         // A fixed step that needs more than the budget was refused before its first
         // step: say why in words a reader of the table can act on.
-        let needed = ((exact.t_end - exact.t_start) / value).ceil();
-        if method != Method::Exact && !method.adaptive() && needed > budget as f64 {
+        let needed = ((reference.exact.t_end - reference.exact.t_start) / settings.step).ceil();
+        if *method != Method::Exact && !method.adaptive() && needed > budget as f64 {
             row.note = Some(format!(
                 "skipped: {needed} steps needed, over the budget of {budget} steps per run (a shorter span runs it)"
             ));
         }
-        rows.push(row);
-        progress.tick(rows.len() as u64, total);
+    }
+    Ok(rows)
+}
+
+/// Measures and times every run of `runs` against `reference`. The accuracy runs
+/// (deterministic) share all cores; the timing runs then go one at a time, so that
+/// each is timed without the others competing for a core. Ticks `progress` once per
+/// run of each kind (twice the runs in all) and stops soon after it says so.
+pub fn measure_all(
+    scene: &Scene,
+    reference: &Reference,
+    runs: &[(Method, Settings)],
+    progress: &dyn Progress,
+) -> Result<Vec<Row>, Cancelled> {
+    let total = 2 * runs.len() as u64;
+    let done = AtomicU64::new(0);
+    let tick = || progress.tick(done.fetch_add(1, Ordering::Relaxed) + 1, total);
+    progress.tick(0, total);
+    let mut rows = runs
+        .par_iter()
+        .map(|(method, settings)| {
+            let row = measure_observed(
+                *method,
+                scene,
+                settings,
+                reference,
+                progress,
+                &mut Unwatched,
+            )?;
+            tick();
+            Ok(row)
+        })
+        .collect::<Result<Vec<Row>, Cancelled>>()?;
+    for (row, (method, settings)) in rows.iter_mut().zip(runs) {
+        (row.time_min_s, row.time_median_s) =
+            timing(*method, scene, settings, reference, row, progress)?;
+        tick();
     }
     Ok(rows)
 }

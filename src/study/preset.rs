@@ -201,7 +201,7 @@ fn check_measured(m: MeasuredFile) -> Result<Measured, String> {
         angle: m.angle,
         ..Measured::velocities(m.t, m.v_cm, m.v_t)
     };
-    measured.check_magnitudes()?;
+    measured.check_magnitudes().map_err(|e| e.to_string())?;
     Ok(measured)
 }
 

@@ -9,7 +9,8 @@ use serde::Serialize;
 use crate::physics::derived::{Derived, Regime};
 use crate::physics::engine;
 use crate::physics::scene::Span;
-use crate::settings::params::{Key, SceneSpec};
+use crate::settings::params::{Key, SceneError, SceneSpec};
+use crate::settings::units::{UnitError, parse_quantity};
 
 /// One swept parameter: `key` from `lo` to `hi` (SI) in `n` points, both ends included.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -60,13 +61,65 @@ pub struct Point {
 /// Why a sweep cannot run.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum SweepError {
-    #[error("{0}")]
-    Invalid(String),
+    /// A corner of the grid (and so, the constraints being monotone, part of it) is
+    /// not a valid scene.
+    #[error(
+        "the grid corner {x}{} is not a valid scene: {source}",
+        y.map_or(String::new(), |y| format!(", {y}"))
+    )]
+    Corner {
+        x: GridValue,
+        y: Option<GridValue>,
+        source: SceneError,
+    },
+    #[error("grid point {x} is not a valid scene")]
+    Point { x: GridValue },
     #[error("interrupted: nothing was written")]
     Interrupted,
-    /// The consumer of streamed rows failed (e.g. the output file could not be written).
-    #[error("{0}")]
-    Output(String),
+}
+
+/// One axis's value at a grid point, shown `name = value` (SI).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GridValue {
+    pub key: Key,
+    pub value: f64,
+}
+
+impl std::fmt::Display for GridValue {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{} = {}", self.key.name(), self.value)
+    }
+}
+
+/// Why an axis (`NAME=LO..HI` of `n` points) cannot be swept.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum AxisError {
+    #[error("'{text}' is not NAME=LO..HI, e.g. width=0..5.4cm")]
+    NotAnAxis { text: String },
+    #[error("unknown parameter '{name}', allowed: {}", sweepable_names())]
+    UnknownParameter { name: String },
+    #[error("{} is not a scene parameter to sweep", key.name())]
+    NotOfScene { key: Key },
+    #[error("'{range}' is not LO..HI, e.g. 0..5.4cm")]
+    NotARange { range: String },
+    #[error(transparent)]
+    Bound(#[from] UnitError),
+    #[error("'{range}' runs backwards, allowed LO ≤ HI")]
+    Backwards { range: String },
+    #[error("'{range}' is too wide to step through, allowed HI − LO below 1.8e308")]
+    TooWide { range: String },
+    #[error("{n} points on an axis, allowed 1 ..= 10000")]
+    Points { n: usize },
+}
+
+/// The parameters an axis may sweep, for the error that names an unknown one.
+fn sweepable_names() -> String {
+    let names: Vec<&str> = Key::ALL
+        .iter()
+        .filter(|k| k.param().of_scene())
+        .map(|k| k.name())
+        .collect();
+    names.join(", ")
 }
 
 /// The scene at grid point (i, j).
@@ -82,8 +135,8 @@ fn spec_at(base: &SceneSpec, x: &Axis, y: Option<&Axis>, i: usize, j: usize) -> 
 }
 
 /// Solves one grid point.
-pub fn point(spec: &SceneSpec) -> Result<(crate::physics::scene::Scene, Point), String> {
-    let (scene, _) = spec.resolve().map_err(|e| e.to_string())?;
+pub fn point(spec: &SceneSpec) -> Result<(crate::physics::scene::Scene, Point), SceneError> {
+    let (scene, _) = spec.resolve()?;
     let derived = Derived::of(&scene);
     let sol = engine::solve(
         &scene,
@@ -115,19 +168,20 @@ pub fn check(base: &SceneSpec, x: &Axis, y: Option<&Axis>) -> Result<(), SweepEr
     let ny = y.map_or(1, |a| a.n.max(1));
     for (i, j) in [(0, 0), (nx - 1, 0), (0, ny - 1), (nx - 1, ny - 1)] {
         let spec = spec_at(base, x, y, i, j);
-        spec.resolve().map_err(|e| {
-            SweepError::Invalid(format!(
-                "the grid corner {}{} is not a valid scene: {e}",
-                describe(x, i),
-                y.map_or(String::new(), |y| format!(", {}", describe(y, j)))
-            ))
+        spec.resolve().map_err(|source| SweepError::Corner {
+            x: at(x, i),
+            y: y.map(|y| at(y, j)),
+            source,
         })?;
     }
     Ok(())
 }
 
-fn describe(a: &Axis, i: usize) -> String {
-    format!("{} = {}", a.key.name(), a.value(i))
+fn at(a: &Axis, i: usize) -> GridValue {
+    GridValue {
+        key: a.key,
+        value: a.value(i),
+    }
 }
 
 /// Points solved per batch when streaming: enough to keep every core busy, few
@@ -138,14 +192,15 @@ pub const BATCH: usize = 16_384;
 /// the batches to `sink` in grid order (y outer, x inner), so memory stays bounded
 /// whatever the grid. `stop` ends the work early with [`SweepError::Interrupted`];
 /// `tick` is called once per point (for a progress bar).
-pub fn run_streamed(
+/// A failing `sink` ends the sweep with its own error.
+pub fn run_streamed<E: From<SweepError>>(
     base: &SceneSpec,
     x: &Axis,
     y: Option<&Axis>,
     stop: &AtomicBool,
     tick: &(dyn Fn() + Sync),
-    sink: &mut dyn FnMut(&[Point]) -> Result<(), SweepError>,
-) -> Result<(), SweepError> {
+    sink: &mut dyn FnMut(&[Point]) -> Result<(), E>,
+) -> Result<(), E> {
     check(base, x, y)?;
     let nx = x.n.max(1);
     let ny = y.map_or(1, |a| a.n.max(1));
@@ -169,17 +224,14 @@ pub fn run_streamed(
             })
             .collect();
         if stop.load(Ordering::Relaxed) {
-            return Err(SweepError::Interrupted);
+            return Err(SweepError::Interrupted.into());
         }
         let points: Vec<Point> = batch
             .into_iter()
             .enumerate()
             .map(|(k, p)| {
-                p.ok_or_else(|| {
-                    SweepError::Invalid(format!(
-                        "grid point {} is not a valid scene",
-                        describe(x, (start + k) % nx)
-                    ))
+                p.ok_or(SweepError::Point {
+                    x: at(x, (start + k) % nx),
                 })
             })
             .collect::<Result<_, _>>()?;
@@ -187,7 +239,7 @@ pub fn run_streamed(
         start = end;
     }
     if stop.load(Ordering::Relaxed) {
-        return Err(SweepError::Interrupted);
+        return Err(SweepError::Interrupted.into());
     }
     Ok(())
 }
@@ -205,31 +257,28 @@ pub fn run(
     let mut all = Vec::new();
     run_streamed(base, x, y, stop, tick, &mut |batch| {
         all.extend_from_slice(batch);
-        Ok(())
+        Ok::<_, SweepError>(())
     })?;
     Ok(all)
 }
 
 /// Parses `name=lo..hi` with units (`width=0..5.4cm`: a bare bound takes the other's
 /// unit) into an axis of `n` points.
-pub fn parse_axis(text: &str, n: usize) -> Result<Axis, String> {
-    let (name, range) = text
-        .split_once('=')
-        .ok_or_else(|| format!("'{text}' is not NAME=LO..HI, e.g. width=0..5.4cm"))?;
+pub fn parse_axis(text: &str, n: usize) -> Result<Axis, AxisError> {
+    let (name, range) = text.split_once('=').ok_or_else(|| AxisError::NotAnAxis {
+        text: text.to_string(),
+    })?;
     let key = Key::from_name(&name.trim().replace('-', "_")).ok_or_else(|| {
-        let names: Vec<&str> = Key::ALL
-            .iter()
-            .filter(|k| k.param().of_scene())
-            .map(|k| k.name())
-            .collect();
-        format!("unknown parameter '{name}', allowed: {}", names.join(", "))
+        AxisError::UnknownParameter {
+            name: name.to_string(),
+        }
     })?;
     if !key.param().of_scene() {
-        return Err(format!("{} is not a scene parameter to sweep", key.name()));
+        return Err(AxisError::NotOfScene { key });
     }
-    let (a, b) = range
-        .split_once("..")
-        .ok_or_else(|| format!("'{range}' is not LO..HI, e.g. 0..5.4cm"))?;
+    let (a, b) = range.split_once("..").ok_or_else(|| AxisError::NotARange {
+        range: range.to_string(),
+    })?;
     let dim = key.dimension();
     // The unit after a bound's number; none if the bound does not start with one
     // (then it is lent to nobody and its own parse error names it).
@@ -250,20 +299,17 @@ pub fn parse_axis(text: &str, n: usize) -> Result<Axis, String> {
             s.trim().to_string()
         }
     };
-    let lo = crate::settings::units::parse_quantity(&fix(a, &ua, &ub), dim)
-        .map_err(|e| e.to_string())?;
-    let hi = crate::settings::units::parse_quantity(&fix(b, &ub, &ua), dim)
-        .map_err(|e| e.to_string())?;
+    let lo = parse_quantity(&fix(a, &ua, &ub), dim)?;
+    let hi = parse_quantity(&fix(b, &ub, &ua), dim)?;
+    let range = || range.to_string();
     if hi < lo {
-        return Err(format!("'{range}' runs backwards, allowed LO ≤ HI"));
+        return Err(AxisError::Backwards { range: range() });
     }
     if !(hi - lo).is_finite() {
-        return Err(format!(
-            "'{range}' is too wide to step through, allowed HI − LO below 1.8e308"
-        ));
+        return Err(AxisError::TooWide { range: range() });
     }
     if n == 0 || n > 10_000 {
-        return Err(format!("{n} points on an axis, allowed 1 ..= 10000"));
+        return Err(AxisError::Points { n });
     }
     Ok(Axis { key, lo, hi, n })
 }
@@ -289,6 +335,6 @@ mod tests {
         assert!((0..5).all(|i| a.value(i).is_finite()));
         assert_eq!(a.value(4), 1e308);
         let e = parse_axis("mu=0..abc", 3).unwrap_err();
-        assert!(e.contains("'abc' is not a number"), "{e}");
+        assert!(e.to_string().contains("'abc' is not a number"), "{e}");
     }
 }

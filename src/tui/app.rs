@@ -240,7 +240,10 @@ impl App {
 
     fn take_export(&mut self) -> bool {
         match self.lab.take_export() {
-            Some(Ok(message)) => self.status = Status::Info(message),
+            Some(Ok(done)) => {
+                self.status =
+                    Status::Info(format!("wrote {} ({})", done.path.display(), done.what));
+            }
             Some(Err(e)) => self.status = Status::Error(format!("not written: {e}")),
             None => return false,
         }

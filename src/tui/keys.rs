@@ -383,17 +383,24 @@ pub fn action(mode: &Mode, key: KeyEvent) -> Option<Action> {
 }
 
 /// `render --keys`: whitespace-separated key names.
-pub fn parse_script(script: &str) -> Result<Vec<KeyEvent>, String> {
+pub fn parse_script(script: &str) -> Result<Vec<KeyEvent>, UnknownKey> {
     script
         .split_whitespace()
         .map(|name| {
-            parse(name).ok_or_else(|| {
-                format!(
-                    "--keys: unknown key '{name}', allowed: a single character or one of space, up, down, left, right, S-left, S-right, tab, enter, esc, backspace, delete, home, end, pgup, pgdn, C-c, C-u (C- with any letter: Ctrl)"
-                )
+            parse(name).ok_or_else(|| UnknownKey {
+                name: name.to_string(),
             })
         })
         .collect()
+}
+
+/// A name in a key script that names no key.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error(
+    "unknown key '{name}', allowed: a single character or one of space, up, down, left, right, S-left, S-right, tab, enter, esc, backspace, delete, home, end, pgup, pgdn, C-c, C-u (C- with any letter: Ctrl)"
+)]
+pub struct UnknownKey {
+    pub name: String,
 }
 
 /// Width of one hint in the bar: keys, a space, the label, two spaces.
@@ -550,6 +557,6 @@ mod tests {
     #[test]
     fn scripts_reject_unknown_names() {
         assert!(parse_script("space right enter").is_ok());
-        assert!(parse_script("spacebar").unwrap_err().contains("spacebar"));
+        assert_eq!(parse_script("spacebar").unwrap_err().name, "spacebar");
     }
 }

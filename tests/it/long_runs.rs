@@ -1,5 +1,6 @@
-//! Long analyses are bounded and can be stopped: `compare` skips levels over its step
-//! budget (saying why), `fit` thins a long series to at most `MAX_MODEL_POINTS`, both
+//! Long analyses are bounded and can be stopped: `compare` covers at most its window
+//! of simulated time (saying where it cut the span) and skips levels over a smaller
+//! step budget (saying why), `fit` thins a long series to at most `MAX_MODEL_POINTS`, both
 //! stop soon after a `Progress` asks and give the same result as before when it never
 //! does; Ctrl-C on the command line exits 130 and writes nothing.
 
@@ -8,7 +9,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use std::time::{Duration, Instant};
 
 use groovelab::methods::{Method, Settings};
-use groovelab::physics::scene::Span;
+use groovelab::physics::scene::{Scene, Span};
 use groovelab::study::measured::Measured;
 use groovelab::study::preset::Preset;
 use groovelab::study::{Cancelled, Progress, Quiet, compare, fit};
@@ -84,21 +85,110 @@ fn compare_skips_levels_over_its_budget_and_says_why() {
     assert!(rows.iter().all(|r| r.steps <= 10_000));
 }
 
+/// The steps of one run of every fixed-step method at each step `h` of `steps` and of
+/// rk45 at three tolerances, over `scene`'s comparison, untimed: the accuracy passes'
+/// work, counted.
+fn compared_steps(
+    scene: &Scene,
+    span: &Span,
+    steps: &[f64],
+) -> (compare::Reference, Vec<compare::Row>) {
+    let reference = compare::Reference::new(scene, span);
+    let runs: Vec<(Method, Settings)> = Method::TIME_STEPPING
+        .into_iter()
+        .flat_map(|m| steps.iter().map(move |&h| (m, h)))
+        .map(|(method, h)| {
+            let settings = Settings {
+                step: if method.adaptive() { 1e-3 } else { h },
+                tolerance: h,
+                max_steps: compare::STEP_BUDGET,
+                ..Settings::default()
+            };
+            (method, settings)
+        })
+        .collect();
+    let rows = runs
+        .iter()
+        .map(|(m, s)| compare::measure(*m, scene, s, &reference, false, &Quiet).unwrap())
+        .collect();
+    (reference, rows)
+}
+
 #[test]
-fn every_preset_runs_its_finest_compare_level_within_the_budget() {
-    // So the budget changes no default result: the finest fixed step (1 µs) over each
-    // preset's span needs fewer steps than the budget.
-    let finest = *compare::default_sweep(Method::Euler).last().unwrap();
-    for p in Preset::built_in() {
-        let (scene, span) = p.spec.resolve().unwrap();
-        let sol = groovelab::physics::engine::solve(&scene, &span);
-        let needed = ((sol.t_end - sol.t_start) / finest).ceil();
-        assert!(
-            needed <= compare::STEP_BUDGET as f64,
-            "{}: {needed} steps",
-            p.name
-        );
+fn a_comparison_covers_at_most_its_window_whatever_the_span() {
+    let (scene, span, _) = paper();
+    // The default scene (1.28 s) is compared whole.
+    let default = compare::Reference::new(&scene, &span);
+    assert_eq!(default.cut, None);
+    assert!(default.exact.t_end - default.exact.t_start < compare::WINDOW);
+    // μ = 1e-6: the balls slide for 147,000 s; a 10 kg right ball: 2.25 s; a span
+    // set to 19.7 s. Each is compared over its first WINDOW seconds only, and every
+    // row says where it was cut.
+    let slippery = Scene { mu: 1e-6, ..scene };
+    let heavy = Scene {
+        right: groovelab::physics::scene::Ball {
+            mass: 10.0,
+            ..scene.right
+        },
+        ..scene
+    };
+    let long = Span {
+        t_end: Some(19.7),
+        ..span
+    };
+    for (what, scene, span) in [
+        ("mu 1e-6", slippery, span),
+        ("10 kg", heavy, span),
+        ("t_end 19.7 s", scene, long),
+    ] {
+        let whole = groovelab::physics::engine::solve(&scene, &span);
+        assert!(whole.t_end - whole.t_start > compare::WINDOW, "{what}");
+        let (reference, rows) = compared_steps(&scene, &span, &[1e-2, 1e-3]);
+        let end = span.t_start + compare::WINDOW;
+        assert_eq!(reference.cut, Some(end), "{what}");
+        assert_eq!(reference.exact.t_end, end, "{what}");
+        for r in &rows {
+            assert_eq!(r.cut, Some(end), "{what}: {r:?}");
+            // Every fixed-step run takes exactly the window's steps: run, not refused
+            // (20 million steps at h = 1 µs would have been), and no more.
+            if let Some(h) = r.step {
+                let want = (compare::WINDOW / h).ceil() as usize;
+                assert_eq!(r.steps, want, "{what}: {r:?}");
+            }
+            assert!(r.steps <= compare::STEP_BUDGET, "{what}: {r:?}");
+        }
     }
+}
+
+#[test]
+fn the_slowest_scene_does_the_work_of_a_default_comparison_at_most_twice() {
+    // Counted in steps at the Methods view's coarse levels (the sweep's finer levels
+    // scale alike, every level over the same stretch): μ = 1e-6 spans 147,000 s, yet
+    // its runs take no more than twice the default scene's steps.
+    let (scene, span, _) = paper();
+    let levels = [1e-2, 1e-3];
+    let total = |rows: &[compare::Row]| rows.iter().map(|r| r.steps).sum::<usize>();
+    let (_, default) = compared_steps(&scene, &span, &levels);
+    let (_, slippery) = compared_steps(&Scene { mu: 1e-6, ..scene }, &span, &levels);
+    let (d, s) = (total(&default), total(&slippery));
+    assert!(s <= 2 * d, "{s} steps against the default's {d}");
+    // The fixed-step methods' share: exactly the window over the default span.
+    let fixed = |rows: &[compare::Row]| {
+        rows.iter()
+            .filter(|r| r.step.is_some())
+            .map(|r| r.steps)
+            .sum::<usize>() as f64
+    };
+    let ratio = fixed(&slippery) / fixed(&default);
+    let spans = compare::WINDOW / (default_end(&scene, &span) - span.t_start);
+    assert!(
+        (ratio - spans).abs() <= 0.01 * spans,
+        "{ratio} against {spans}"
+    );
+}
+
+fn default_end(scene: &Scene, span: &Span) -> f64 {
+    groovelab::physics::engine::solve(scene, span).t_end
 }
 
 #[test]
@@ -108,15 +198,19 @@ fn compare_stops_when_asked_and_matches_when_not() {
     let stop = stop_after(3);
     let cancelled = compare::sweep(&scene, &span, &methods, &Settings::default(), &stop);
     assert_eq!(cancelled, Err(Cancelled));
-    // Three rows (the first tick is 0 of N), then the stop is seen within a run: at its
-    // first look (after at most 4096 steps) and once more on the way out, never again
-    // in a later row or pass.
-    assert!(stop.ticks.load(Ordering::Relaxed) <= 4);
+    // The first tick is 0 of N, then one per finished run; the stop is seen within
+    // each run still going (the accuracy runs share the cores): at its first look
+    // (after at most 4096 steps) and once more on the way out, and no row is timed.
+    let threads = rayon::current_num_threads() as u64;
+    assert!(stop.ticks.load(Ordering::Relaxed) <= 2 + threads);
     let looks = stop.looks_after_stop.load(Ordering::Relaxed);
-    assert!((1..=2).contains(&looks), "{looks} looks after the stop");
+    assert!(
+        (1..=2 * threads).contains(&looks),
+        "{looks} looks after the stop"
+    );
 
     // Untimed rows are deterministic: the same with and without a watching Progress.
-    let exact = groovelab::physics::engine::solve(&scene, &span);
+    let reference = compare::Reference::new(&scene, &span);
     let settings = Settings {
         step: 1e-4,
         ..Settings::default()
@@ -124,30 +218,21 @@ fn compare_stops_when_asked_and_matches_when_not() {
     let watched = compare::measure(
         Method::Moreau,
         &scene,
-        &span,
         &settings,
-        &exact,
+        &reference,
         false,
         &stop_after(u64::MAX),
     )
     .unwrap();
-    let quiet = compare::measure(
-        Method::Moreau,
-        &scene,
-        &span,
-        &settings,
-        &exact,
-        false,
-        &Quiet,
-    )
-    .unwrap();
+    let quiet =
+        compare::measure(Method::Moreau, &scene, &settings, &reference, false, &Quiet).unwrap();
     assert_eq!(watched, quiet);
 }
 
 #[test]
 fn a_cancelled_measure_stops_inside_the_run() {
     let (scene, span, _) = paper();
-    let exact = groovelab::physics::engine::solve(&scene, &span);
+    let reference = compare::Reference::new(&scene, &span);
     // 1.2 million Euler steps; cancelled from the start, it returns after the first
     // check (4096 steps), long before the run would end: one look inside the run and
     // one after it, where the whole run would look about 290 times.
@@ -156,7 +241,7 @@ fn a_cancelled_measure_stops_inside_the_run() {
         ..Settings::default()
     };
     let stop = stop_after(0);
-    let r = compare::measure(Method::Euler, &scene, &span, &settings, &exact, true, &stop);
+    let r = compare::measure(Method::Euler, &scene, &settings, &reference, true, &stop);
     assert_eq!(r, Err(Cancelled));
     assert_eq!(stop.looks_after_stop.load(Ordering::Relaxed), 2);
 }

@@ -5,7 +5,7 @@ use groovelab::methods::{Method, Model, Settings};
 use groovelab::physics::derived::Outcome;
 use groovelab::physics::engine::solve;
 use groovelab::physics::scene::{Scene, Span};
-use groovelab::study::compare::{Row, RunStatus, fitted_order, run};
+use groovelab::study::compare::{Reference, Row, RunStatus, fitted_order, run};
 use groovelab::study::preset::Preset;
 
 fn preset(name: &str) -> (Scene, Span) {
@@ -13,8 +13,7 @@ fn preset(name: &str) -> (Scene, Span) {
 }
 
 fn row(method: Method, scene: &Scene, span: &Span, settings: Settings) -> Row {
-    let exact = solve(scene, span);
-    run(method, scene, span, &settings, &exact)
+    run(method, scene, &settings, &Reference::new(scene, span))
 }
 
 fn step(h: f64) -> Settings {
@@ -130,6 +129,7 @@ fn rk45_finds_event_times_to_its_tolerance() {
 fn rk45_stalls_or_reaches_the_accumulation_point_within_its_budget() {
     let (scene, span) = preset("paper-b4.9");
     let exact = solve(&scene, &span);
+    let reference = Reference::new(&scene, &span);
     let t_inf = exact.accumulation.unwrap();
     for tol in [1e-3, 1e-6, 1e-9] {
         let settings = Settings {
@@ -137,7 +137,7 @@ fn rk45_stalls_or_reaches_the_accumulation_point_within_its_budget() {
             step: 1e-3,
             ..Settings::default()
         };
-        let r = run(Method::Rk45, &scene, &span, &settings, &exact);
+        let r = run(Method::Rk45, &scene, &settings, &reference);
         assert!(
             r.steps < settings.max_steps,
             "budget must not be the limit: {r:?}"
@@ -250,7 +250,7 @@ fn no_run_hangs_or_leaks_nan_into_the_numbers() {
         "steel-and-glass",
     ] {
         let (scene, span) = preset(name);
-        let exact = solve(&scene, &span);
+        let reference = Reference::new(&scene, &span);
         for method in Method::TIME_STEPPING {
             let settings = Settings {
                 step: 1e-3,
@@ -258,7 +258,7 @@ fn no_run_hangs_or_leaks_nan_into_the_numbers() {
                 max_steps: 100_000,
                 ..Settings::default()
             };
-            let r = run(method, &scene, &span, &settings, &exact);
+            let r = run(method, &scene, &settings, &reference);
             for x in [r.err_v, r.err_u, r.energy_drift, r.time_median_s] {
                 assert!(x.is_finite(), "{name} {method:?}: {r:?}");
             }
@@ -346,13 +346,13 @@ fn each_run_says_whether_it_gets_the_outcome_right() {
     // step and counts every overlap as an impact: recollide, wrong.
     let (mut scene, span) = preset("paper-b4.9");
     scene.restitution = 0.0;
-    let exact = solve(&scene, &span);
-    let e = run(Method::Exact, &scene, &span, &Settings::default(), &exact);
+    let reference = Reference::new(&scene, &span);
+    let e = run(Method::Exact, &scene, &Settings::default(), &reference);
     assert_eq!(
         (e.outcome, e.impacts, e.outcome_right),
         (Outcome::Pressed, 1, true)
     );
-    let r = run(Method::Euler, &scene, &span, &step(1e-3), &exact);
+    let r = run(Method::Euler, &scene, &step(1e-3), &reference);
     assert!(r.impacts > 1, "{r:?}");
     assert_eq!((r.outcome, r.outcome_right), (Outcome::Recollide, false));
     // Rolling resistance stops them on the way back: one impact, stopped.
@@ -370,12 +370,12 @@ fn each_run_says_whether_it_gets_the_outcome_right() {
 #[test]
 fn fitted_orders_of_the_fixed_step_methods() {
     let (scene, span) = preset("paper-b3.5");
-    let exact = solve(&scene, &span);
+    let reference = Reference::new(&scene, &span);
     let rows: Vec<Row> = [1e-3, 1e-4, 1e-5]
         .into_iter()
         .flat_map(|h| {
             [Method::Moreau, Method::Euler, Method::Rk45]
-                .map(|m| run(m, &scene, &span, &step(h), &exact))
+                .map(|m| run(m, &scene, &step(h), &reference))
         })
         .collect();
     for m in [Method::Moreau, Method::Euler] {

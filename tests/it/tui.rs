@@ -711,6 +711,37 @@ fn methods_view_and_overlay() {
     assert!(overlay(&a).is_none(), "cycling ends with the overlay off");
 }
 
+/// A span far longer than the comparison's window (μ = 1e-6: the balls slide for
+/// 147,000 s): the Methods view runs every method over the window only, each run
+/// taking the window's steps (it took minutes before, the coarsest run alone 14.7
+/// million steps), and says where the runs were cut.
+#[test]
+fn the_methods_view_of_a_long_span_is_cut_and_says_where() {
+    use groovelab::study::compare::WINDOW;
+    let p = Preset::load("paper-b4.9").unwrap();
+    let (mut scene, span) = p.spec.resolve().unwrap();
+    scene.mu = 1e-6;
+    let mut a = App::new(groovelab::lab::Lab::new(p, scene, span), no_user_presets());
+    assert!(a.lab.solution.t_end > 1e5);
+    press(&mut a, "c");
+    a.lab.wait();
+    let State::Ready(rows) = a.lab.method_rows() else {
+        panic!("the rows are there once the lab has waited")
+    };
+    let end = span.t_start + WINDOW;
+    for r in rows {
+        assert_eq!(r.cut, Some(end), "{r:?}");
+        if let Some(h) = r.step {
+            assert_eq!(r.steps, (WINDOW / h).ceil() as usize, "{r:?}");
+        }
+    }
+    let s = text(&a, (120, 40), false);
+    assert!(
+        s.contains("runs cut at t = 1.8 s by the step budget"),
+        "{s}"
+    );
+}
+
 /// The Methods view's work axis: `u` cycles steps → right-hand-side evaluations →
 /// time; the key is in the one key table (help, hint bar, `--keys`); the rows say
 /// whether each run gets the outcome right and each fixed-step method's fitted order.

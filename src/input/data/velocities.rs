@@ -138,7 +138,7 @@ pub(super) fn from_table(
         }
     }
     let m = Measured::velocities(t, v_cm, v_t);
-    m.check_magnitudes().map_err(err)?;
+    m.check_magnitudes().map_err(|e| err(e.to_string()))?;
     units.check_plausible(&m.t, &m.v_cm, &m.v_t).map_err(err)?;
     Ok(m)
 }

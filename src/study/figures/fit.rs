@@ -3,7 +3,7 @@
 
 use plotters::prelude::*;
 
-use super::{NothingToDraw, finite_bounds, linear_axis};
+use super::{FigureError, finite_bounds, linear_axis};
 use crate::physics::scene::Scene;
 
 /// The fit figure: measured v_cm and v_t, the fitted model, the paper's line fits over
@@ -12,16 +12,16 @@ pub fn fit_figure(
     scene: &Scene,
     m: &crate::study::measured::series::Measured,
     fits: &crate::study::fit::Fits,
-) -> Result<String, Box<dyn std::error::Error>> {
+) -> Result<String, FigureError> {
     let mut fitted = *scene;
     fitted.mu = fits.model_fit.mu;
     fitted.left.v0 = fits.model_fit.v0;
     fitted.right.v0 = fits.model_fit.v0;
     fitted.restitution = fits.model_fit.restitution;
     let Some((t0, t1)) = finite_bounds(m.t.iter().copied()) else {
-        return Err(Box::new(NothingToDraw(
-            "the measured series has no finite time to plot".into(),
-        )));
+        return Err(FigureError::NothingToDraw(
+            "the measured series has no finite time to plot",
+        ));
     };
     let (t0, t1) = linear_axis(t0, t1);
     let sol = crate::physics::engine::solve(

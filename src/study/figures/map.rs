@@ -3,7 +3,7 @@
 
 use plotters::prelude::*;
 
-use super::linear_axis;
+use super::{FigureError, linear_axis};
 use crate::physics::scene::Scene;
 
 fn regime_colour(r: crate::physics::derived::Regime) -> RGBColor {
@@ -22,7 +22,7 @@ pub fn regime_map(
     y: Option<&crate::study::sweep::Axis>,
     scene: &Scene,
     preset: &str,
-) -> Result<String, Box<dyn std::error::Error>> {
+) -> Result<String, FigureError> {
     use crate::settings::params::Key;
     let mut svg = String::new();
     {

@@ -14,9 +14,15 @@ pub use run::{RunChart, run_chart};
 pub use work_precision::work_precision;
 
 /// Why a figure cannot be drawn.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-#[error("{0}")]
-pub struct NothingToDraw(pub String);
+#[derive(Debug, thiserror::Error)]
+pub enum FigureError {
+    /// The input has nothing a figure could show (the text says what is missing).
+    #[error("{0}")]
+    NothingToDraw(&'static str),
+    /// plotters failed while drawing into the SVG text.
+    #[error(transparent)]
+    Plot(#[from] plotters::drawing::DrawingAreaErrorKind<std::io::Error>),
+}
 
 /// Largest magnitude put on an axis; beyond it spans overflow.
 const AXIS_LIMIT: f64 = 1e300;

@@ -3,7 +3,7 @@
 
 use plotters::prelude::*;
 
-use super::linear_axis;
+use super::{FigureError, linear_axis};
 
 /// Which chart of a run [`run_chart`] draws: the app's velocity chart of one or both
 /// balls, or the positions of both.
@@ -20,7 +20,7 @@ pub fn run_chart(
     sol: &crate::physics::solution::Solution,
     which: RunChart,
     measured: Option<&crate::study::measured::series::Measured>,
-) -> Result<String, Box<dyn std::error::Error>> {
+) -> Result<String, FigureError> {
     use crate::physics::solution::Snapshot;
     let (t0, t1) = (sol.t_start, sol.t_end);
     // About one sample per SVG pixel column; the events add their own.

@@ -3,7 +3,7 @@
 
 use plotters::prelude::*;
 
-use super::{NothingToDraw, finite_bounds, log_axis};
+use super::{FigureError, finite_bounds, log_axis};
 use crate::methods::Method;
 use crate::physics::scene::Scene;
 use crate::study::compare::Row;
@@ -22,7 +22,7 @@ fn colour(m: Method) -> RGBColor {
 /// Log error (max |Δv_cm|) against log time, one line per method; runs that are not
 /// `ok` are drawn as hollow markers so failures stay visible. The exact engine, with
 /// no error, is the vertical line at its time.
-pub fn work_precision(rows: &[Row], scene: &Scene) -> Result<String, Box<dyn std::error::Error>> {
+pub fn work_precision(rows: &[Row], scene: &Scene) -> Result<String, FigureError> {
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, (900, 600)).into_drawing_area();
@@ -34,9 +34,9 @@ pub fn work_precision(rows: &[Row], scene: &Scene) -> Result<String, Box<dyn std
             .filter(|p| p.0.is_finite() && p.1.is_finite())
             .collect();
         if pts.is_empty() {
-            return Err(Box::new(NothingToDraw(
-                "no time-stepping run has a finite error to plot, allowed --methods with at least one of euler, symplectic-euler, rk4, rk45, moreau".into(),
-            )));
+            return Err(FigureError::NothingToDraw(
+                "no time-stepping run has a finite error to plot, allowed --methods with at least one of euler, symplectic-euler, rk4, rk45, moreau",
+            ));
         }
         // The exact engine's time is on the time axis too.
         let exact_t = rows
@@ -152,6 +152,7 @@ mod tests {
             rhs_evals: 1,
             time_min_s: time,
             time_median_s: time,
+            cut: None,
             note: None,
         }
     }

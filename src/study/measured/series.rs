@@ -97,25 +97,27 @@ impl Measured {
     /// within ±1000 m/s, positions within ±1000 m (NaN marks a missing value). Beyond
     /// them a series is not a measurement of this experiment, and squares of its
     /// numbers (residuals, energies) would overflow.
-    pub fn check_magnitudes(&self) -> Result<(), String> {
-        let series: [(&str, Option<&[f64]>, f64, &str); 5] = [
+    pub fn check_magnitudes(&self) -> Result<(), OutOfLabRange> {
+        let series: [(&'static str, Option<&[f64]>, f64, &'static str); 5] = [
             ("t", Some(&self.t), 1e6, "1e6 s"),
             ("v_cm", Some(&self.v_cm), 1e3, "1000 m/s"),
             ("v_t", Some(&self.v_t), 1e3, "1000 m/s"),
             ("x", self.x.as_deref(), 1e3, "1000 m"),
             ("angle", self.angle.as_deref(), 1e9, "1e9 rad"),
         ];
-        for (name, values, limit, text) in series {
-            if let Some((i, v)) = values
+        for (name, values, limit, allowed) in series {
+            if let Some((i, &value)) = values
                 .into_iter()
                 .flatten()
                 .enumerate()
                 .find(|(_, v)| v.abs() > limit)
             {
-                return Err(format!(
-                    "{name} = {v:e} (point {}) is out of range, allowed |{name}| ≤ {text}",
-                    i + 1
-                ));
+                return Err(OutOfLabRange {
+                    name,
+                    value,
+                    point: i + 1,
+                    allowed,
+                });
             }
         }
         Ok(())
@@ -125,6 +127,17 @@ impl Measured {
     pub fn has_v_t(&self) -> bool {
         self.v_t.iter().any(|v| v.is_finite())
     }
+}
+
+/// A measured number beyond lab sizes ([`Measured::check_magnitudes`]): series
+/// `name`'s `value` at `point` (1-based), SI, with the largest magnitude allowed.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("{name} = {value:e} (point {point}) is out of range, allowed |{name}| ≤ {allowed}")]
+pub struct OutOfLabRange {
+    pub name: &'static str,
+    pub value: f64,
+    pub point: usize,
+    pub allowed: &'static str,
 }
 
 /// A position track in the file's own frame (origin, axis directions and time origin

@@ -3,6 +3,7 @@
 //! (set the value, save the preset, write the export).
 
 use crate::input::preset::{SaveError, save};
+use crate::lab::Exported;
 use crate::settings::params::Param;
 use crate::settings::units::{Dimension, parse_typed, show};
 
@@ -58,8 +59,7 @@ impl App {
             Export::Csv => Box::new(move || {
                 let dt = export_step(sol.t_end - sol.t_start);
                 let samples = sol.sample(dt);
-                let text = crate::study::export::run_csv(&sol, Some(&samples))
-                    .map_err(|e| e.to_string())?;
+                let text = crate::study::export::run_csv(&sol, Some(&samples))?;
                 let what = format!(
                     "{} samples every {}",
                     samples.len(),
@@ -88,8 +88,7 @@ impl App {
                     .filter(|_| self.chart_ball != ChartBall::Right && !self.show_positions)
                     .cloned();
                 Box::new(move || {
-                    let text = crate::study::figures::run_chart(&sol, which, measured.as_ref())
-                        .map_err(|e| format!("cannot draw the chart: {e}"))?;
+                    let text = crate::study::figures::run_chart(&sol, which, measured.as_ref())?;
                     Ok((text.into_bytes(), "the chart".to_string()))
                 })
             }
@@ -97,8 +96,8 @@ impl App {
         self.status = Status::Info(format!("writing {}…", path.display()));
         self.lab.start_export(move || {
             let (bytes, what) = work()?;
-            crate::output::write_atomically(&path, &bytes).map_err(|e| e.to_string())?;
-            Ok(format!("wrote {} ({what})", path.display()))
+            crate::output::write_atomically(&path, &bytes)?;
+            Ok::<_, ExportError>(Exported { path, what })
         });
         Ok(())
     }
@@ -175,8 +174,19 @@ impl App {
     }
 }
 
+/// Why an export wrote nothing.
+#[derive(Debug, thiserror::Error)]
+pub enum ExportError {
+    #[error(transparent)]
+    Csv(#[from] csv::Error),
+    #[error("cannot draw the chart: {0}")]
+    Chart(#[from] crate::study::figures::FigureError),
+    #[error(transparent)]
+    Write(#[from] crate::output::OutputError),
+}
+
 /// The body of an export job: the file's bytes and what they are, or why not.
-type ExportWork = dyn FnOnce() -> Result<(Vec<u8>, String), String> + Send;
+type ExportWork = dyn FnOnce() -> Result<(Vec<u8>, String), ExportError> + Send;
 
 #[derive(Clone, Copy)]
 pub(super) enum TextTarget {

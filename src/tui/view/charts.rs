@@ -12,6 +12,8 @@ use crate::lab::jobs::State;
 use crate::physics::model::BallState;
 use crate::physics::solution::{EnergySplit, EventKind, Snapshot, Who};
 use crate::settings::units::Dimension;
+use crate::study::fit::LineFit;
+use crate::study::measured::Measured;
 use crate::tui::app::{App, ChartBall};
 use crate::tui::plot::{Draw, Plot, Series, VLine, nice_ticks};
 use crate::tui::theme::Theme;
@@ -146,29 +148,19 @@ fn bounds(series: &[Series], rows: usize) -> ((f64, f64), Vec<f64>) {
     nice_ticks(lo, hi, (rows / 3).max(2))
 }
 
-fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
-    let sol = &app.lab.solution;
-    let columns = usize::from(area.width.saturating_sub(10));
-    let samples = app.lab.samples(columns);
-    let ball =
-        |i: usize| move |s: &Snapshot| -> BallState { if i == 0 { s.left } else { s.right } };
-    let (balls, which): (Vec<usize>, &str) = match app.chart_ball {
+/// The balls drawn (0 left, 1 right) and how the title names them.
+fn balls_shown(chart_ball: ChartBall) -> (Vec<usize>, &'static str) {
+    match chart_ball {
         ChartBall::Left => (vec![0], "left ball"),
         ChartBall::Right => (vec![1], "right ball"),
         ChartBall::Both => (vec![0, 1], "both balls"),
-    };
-    let curves: Vec<Curve> = balls
-        .iter()
-        .flat_map(|&i| -> [Curve; 2] {
-            if i == 0 {
-                [("run", |s| s.left.v), ("", |s| s.left.u)]
-            } else {
-                [("run", |s| s.right.v), ("", |s| s.right.u)]
-            }
-        })
-        .collect();
-    let mut series = pinned_series(app, columns, theme, &curves);
-    for &i in &balls {
+    }
+}
+
+/// The exact run's v_cm and v_t of each ball shown (tagged L/R when both are).
+fn exact_velocities(samples: &[Snapshot], balls: &[usize], theme: &Theme) -> Vec<Series> {
+    let mut series = Vec::new();
+    for &i in balls {
         let (style, side) = if i == 0 {
             (theme.left, "L")
         } else {
@@ -181,145 +173,181 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
                 q.to_string()
             }
         };
-        let b = ball(i);
-        series.push(series_of(&tag("v_cm"), &samples, |s| b(s).v, style, "*"));
+        let ball = move |s: &Snapshot| -> BallState { if i == 0 { s.left } else { s.right } };
+        series.push(series_of(&tag("v_cm"), samples, |s| ball(s).v, style, "*"));
         let accent = if i == 0 {
             theme.accent
         } else {
             theme.right.patch(theme.dim)
         };
-        series.push(series_of(&tag("v_t"), &samples, |s| b(s).u, accent, "+"));
+        series.push(series_of(&tag("v_t"), samples, |s| ball(s).u, accent, "+"));
     }
-    if let State::Computing { done, total } = app.lab.overlay() {
-        let name = app.lab.overlay_choice().map_or("", |(m, _)| m.name());
-        series.push(Series {
-            name: format!("{name} {}", super::progress_text(done, total)),
-            points: Vec::new(),
-            style: theme.overlay,
-            glyph: "%",
-            draw: Draw::Line,
-        });
-    }
+    series
+}
+
+/// The time-stepping overlay: its progress while it runs (a legend entry), then its
+/// v_cm and v_t over the exact curves, so its chatter shows.
+fn overlay_velocities(app: &App, balls: &[usize], columns: usize, theme: &Theme) -> Vec<Series> {
+    let o = match app.lab.overlay() {
+        State::Computing { done, total } => {
+            let name = app.lab.overlay_choice().map_or("", |(m, _)| m.name());
+            return vec![Series {
+                name: format!("{name} {}", super::progress_text(done, total)),
+                points: Vec::new(),
+                style: theme.overlay,
+                glyph: "%",
+                draw: Draw::Line,
+            }];
+        }
+        State::Ready(o) => o,
+        State::Idle => return Vec::new(),
+    };
     // The overlay's own colours and glyphs (never the data's red or marks); without
     // colour it is drawn as markers so that its glyphs tell it from the exact curves.
-    let overlay_draw = if theme.monochrome {
+    let draw = if theme.monochrome {
         Draw::Points
     } else {
         Draw::Line
     };
-    let (overlay_v, overlay_u) = if theme.glyphs.ascii {
+    let (glyph_v, glyph_u) = if theme.glyphs.ascii {
         ("%", "~")
     } else {
         ("∘", "▵")
     };
-    if let State::Ready(o) = app.lab.overlay() {
-        // The time-stepping run over the exact curves, so its chatter shows.
-        let setting = o.row.setting();
-        for &i in &balls {
-            let pts = |j: usize| {
-                o.points
-                    .iter()
-                    .map(|(t, y)| (*t, y[3 * i + j]))
-                    .collect::<Vec<_>>()
-            };
-            let thin = |p: Vec<(f64, f64)>| match overlay_draw {
+    let setting = o.row.setting();
+    let mut series = Vec::new();
+    for &i in balls {
+        let pts = |j: usize| {
+            let p: Vec<(f64, f64)> = o.points.iter().map(|(t, y)| (*t, y[3 * i + j])).collect();
+            match draw {
                 Draw::Points => thin_to(p, columns / 2),
                 Draw::Line | Draw::PointsUnder => p,
-            };
-            let side = match (balls.len(), i) {
-                (1, _) => "",
-                (_, 0) => " L",
-                _ => " R",
-            };
+            }
+        };
+        let side = match (balls.len(), i) {
+            (1, _) => "",
+            (_, 0) => " L",
+            _ => " R",
+        };
+        series.push(Series {
+            name: format!(
+                "{} {setting} ({}) v_cm{side}",
+                o.method.name(),
+                o.row.status.name()
+            ),
+            points: pts(1),
+            style: theme.overlay,
+            glyph: glyph_v,
+            draw,
+        });
+        series.push(Series {
+            name: format!("v_t{side}"),
+            points: pts(2),
+            style: theme.overlay_t,
+            glyph: glyph_u,
+            draw,
+        });
+    }
+    series
+}
+
+/// The measured v_cm and v_t as marks, with each derived point's ±1σ (a position
+/// track's local fits) as a vertical run of dots under the point's own glyph.
+fn measured_velocities(m: &Measured, theme: &Theme) -> Vec<Series> {
+    let mut series = Vec::new();
+    for (n, (values, sigma)) in [(&m.v_cm, &m.v_cm_sigma), (&m.v_t, &m.v_t_sigma)]
+        .into_iter()
+        .enumerate()
+    {
+        if let Some(sigma) = sigma {
             series.push(Series {
-                name: format!(
-                    "{} {setting} ({}) v_cm{side}",
-                    o.method.name(),
-                    o.row.status.name()
-                ),
-                points: thin(pts(1)),
-                style: theme.overlay,
-                glyph: overlay_v,
-                draw: overlay_draw,
-            });
-            series.push(Series {
-                name: format!("v_t{side}"),
-                points: thin(pts(2)),
-                style: theme.overlay_t,
-                glyph: overlay_u,
-                draw: overlay_draw,
+                // One legend entry for both series' bars.
+                name: if n == 0 {
+                    theme.glyphs.text("±1σ").replace('σ', "s")
+                } else {
+                    String::new()
+                },
+                points: error_bars(&m.t, values, sigma),
+                style: theme.measured,
+                // Not ':' or '|': the event lines use those.
+                glyph: if theme.glyphs.ascii { "!" } else { "¦" },
+                draw: Draw::Points,
             });
         }
     }
-    if let Some(m) = app.lab.measured().filter(|_| balls.contains(&0)) {
-        let pts = |v: &[f64]| {
-            m.t.iter()
-                .copied()
-                .zip(v.iter().copied())
-                .collect::<Vec<_>>()
-        };
-        // Each derived point's ±1σ (a position track's local fits) as a vertical run
-        // of dots under the point's own glyph.
-        for (n, (values, sigma)) in [(&m.v_cm, &m.v_cm_sigma), (&m.v_t, &m.v_t_sigma)]
-            .into_iter()
-            .enumerate()
-        {
-            if let Some(sigma) = sigma {
-                series.push(Series {
-                    // One legend entry for both series' bars.
-                    name: if n == 0 {
-                        theme.glyphs.text("±1σ").replace('σ', "s")
-                    } else {
-                        String::new()
-                    },
-                    points: error_bars(&m.t, values, sigma),
-                    style: theme.measured,
-                    // Not ':' or '|': the event lines use those.
-                    glyph: if theme.glyphs.ascii { "!" } else { "¦" },
-                    draw: Draw::Points,
-                });
+    let pts = |v: &[f64]| m.t.iter().copied().zip(v.iter().copied()).collect();
+    series.push(Series {
+        name: "measured v_cm".into(),
+        points: pts(&m.v_cm),
+        style: theme.measured,
+        glyph: if theme.glyphs.ascii { "x" } else { "×" },
+        draw: Draw::Points,
+    });
+    series.push(Series {
+        name: "measured v_t".into(),
+        points: pts(&m.v_t),
+        style: theme.measured,
+        glyph: if theme.glyphs.ascii { "o" } else { "+" },
+        draw: Draw::Points,
+    });
+    series
+}
+
+/// The paper's straight lines over the fit window, and the window's ends.
+fn line_fit_marks(l: &LineFit, theme: &Theme) -> (Vec<Series>, Vec<VLine>) {
+    let lines = l
+        .lines
+        .iter()
+        .zip(["fit lines", ""])
+        .map(|(line, name)| Series {
+            name: name.to_string(),
+            points: [l.from, l.to]
+                .iter()
+                .map(|&t| (t, line.intercept + line.slope * t))
+                .collect(),
+            style: theme.cursor,
+            glyph: "-",
+            draw: Draw::Line,
+        })
+        .collect();
+    let ends = [(l.from, "from"), (l.to, "to")]
+        .into_iter()
+        .map(|(t, label)| VLine {
+            x: t,
+            label: Some(label.to_string()),
+            style: theme.cursor,
+            priority: 2,
+        })
+        .collect();
+    (lines, ends)
+}
+
+fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
+    let sol = &app.lab.solution;
+    let columns = usize::from(area.width.saturating_sub(10));
+    let samples = app.lab.samples(columns);
+    let (balls, which) = balls_shown(app.chart_ball);
+    let curves: Vec<Curve> = balls
+        .iter()
+        .flat_map(|&i| -> [Curve; 2] {
+            if i == 0 {
+                [("run", |s| s.left.v), ("", |s| s.left.u)]
+            } else {
+                [("run", |s| s.right.v), ("", |s| s.right.u)]
             }
-        }
-        let cross = if theme.glyphs.ascii { "x" } else { "×" };
-        series.push(Series {
-            name: "measured v_cm".into(),
-            points: pts(&m.v_cm),
-            style: theme.measured,
-            glyph: cross,
-            draw: Draw::Points,
-        });
-        series.push(Series {
-            name: "measured v_t".into(),
-            points: pts(&m.v_t),
-            style: theme.measured,
-            glyph: if theme.glyphs.ascii { "o" } else { "+" },
-            draw: Draw::Points,
-        });
+        })
+        .collect();
+    let mut series = pinned_series(app, columns, theme, &curves);
+    series.extend(exact_velocities(&samples, &balls, theme));
+    series.extend(overlay_velocities(app, &balls, columns, theme));
+    if let Some(m) = app.lab.measured().filter(|_| balls.contains(&0)) {
+        series.extend(measured_velocities(m, theme));
     }
     let mut vlines = Vec::new();
     if let (true, State::Ready(Ok(f))) = (app.fit_view(), app.lab.fits()) {
-        // The paper's straight lines over the chosen window.
-        let l = &f.line_fit;
-        for (line, name) in l.lines.iter().zip(["fit lines", ""]) {
-            series.push(Series {
-                name: name.to_string(),
-                points: [l.from, l.to]
-                    .iter()
-                    .map(|&t| (t, line.intercept + line.slope * t))
-                    .collect(),
-                style: theme.cursor,
-                glyph: "-",
-                draw: Draw::Line,
-            });
-        }
-        for (t, label) in [(l.from, "from"), (l.to, "to")] {
-            vlines.push(VLine {
-                x: t,
-                label: Some(label.to_string()),
-                style: theme.cursor,
-                priority: 2,
-            });
-        }
+        let (lines, ends) = line_fit_marks(&f.line_fit, theme);
+        series.extend(lines);
+        vlines.extend(ends);
     }
     let rows = usize::from(area.height.saturating_sub(4));
     let ((y0, y1), _) = bounds(&series, rows);

@@ -23,9 +23,6 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let blk = block(title, theme);
     let inner = blk.inner(area);
     blk.render(area, buf);
-    let g = theme.glyphs;
-    let label = |s: &str| Span::styled(g.text(s), theme.dim);
-    let value = |s: String| Span::styled(g.text(&s), theme.text);
     // Priorities (9 most important): the model's μ_k and whether it predicts what was
     // seen stay on the smallest screen; the paper's forces and table row go first.
     let lines: Ranked = match app.lab.fits() {
@@ -41,107 +38,142 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         }
         State::Ready(Err(e)) => vec![(9, Line::from(Span::styled(e.to_string(), theme.error)))],
         State::Ready(Ok(f)) => {
-            let l = &f.line_fit;
-            let m = &f.model_fit;
-            let mut lines: Ranked = vec![
-                (
-                    5,
-                    Line::from(Span::styled(
-                        "paper's method: lines over the sliding phase",
-                        theme.title,
-                    )),
-                ),
-                (
-                    6,
-                    Line::from(vec![
-                        label("window "),
-                        value(format!(
-                            "{:.2} … {:.2} s, {} frames",
-                            l.from, l.to, l.points
-                        )),
-                    ]),
-                ),
-                (
-                    7,
-                    Line::from(vec![
-                        label("|a_cm| "),
-                        value(format!("{:.2}±{:.2} m/s{}", l.a_cm, l.a_cm_se, g.squared)),
-                        label(&format!("  {}_cm ", g.mu)),
-                        value(format!("{:.3}", l.mu_cm)),
-                    ]),
-                ),
-                (
-                    7,
-                    Line::from(vec![
-                        label("|a_t|  "),
-                        value(if l.a_t.is_finite() {
-                            format!(
-                                "{:.2}±{:.2} m/s{}  {}_t {:.3}",
-                                l.a_t, l.a_t_se, g.squared, g.mu, l.mu_t
-                            )
-                        } else {
-                            format!("and {}_t not measured (no rim mark)", g.mu)
-                        }),
-                    ]),
-                ),
-                (
-                    1,
-                    Line::from(vec![
-                        label("|F_net| "),
-                        value(format!("{:.3} N", l.f_net)),
-                        label(&format!("  |{}_net| ", g.tau)),
-                        value(format!("{:.4} N m", l.tau_net)),
-                    ]),
-                ),
-            ];
-            // The paper's row beside the paper's own (velocity) series only: a position
-            // track is never the paper's data.
-            let paper_data = app.lab.measured().is_some_and(|m| m.x.is_none());
-            if let Some(p) = fit::paper_row(app.lab.scene.width).filter(|_| paper_data) {
-                lines.push((
-                    3,
-                    Line::from(vec![
-                        label("paper: "),
-                        value(format!(
-                            "|a_cm| {:.2}, {}_cm {:.2}, |a_t| {:.2}, {}_t {:.2}",
-                            p[0], g.mu, p[1], p[3], g.mu, p[4]
-                        )),
-                    ]),
-                ));
-                // Where its row contradicts itself, say so (physics.md).
-                let scene = &app.lab.scene;
-                for d in fit::paper_disagreements(scene.width, scene.radius, scene.g) {
-                    lines.push((
-                        3,
-                        Line::from(label(&format!(
-                            "  its |a_{}| gives {}_{} {:.3}, not {:.2}",
-                            d.which, g.mu, d.which, d.own, d.printed
-                        ))),
-                    ));
-                }
-            }
-            match app.lab.position_fit() {
-                State::Idle => model_fit_lines(m, &mut lines, theme),
-                State::Computing { .. } => {
-                    model_fit_lines(m, &mut lines, theme);
-                    lines.push((4, Line::from(label("position fit: computing…"))));
-                }
-                State::Ready(Err(e)) => {
-                    model_fit_lines(m, &mut lines, theme);
-                    lines.push((
-                        6,
-                        Line::from(Span::styled(g.text(&e.to_string()), theme.error)),
-                    ));
-                }
-                State::Ready(Ok(p)) => {
-                    both_fits(m, p, usize::from(inner.width), &mut lines, theme);
-                }
-            }
+            let mut lines = line_fit_lines(&f.line_fit, theme);
+            paper_row_lines(app, &mut lines, theme);
+            model_fits_lines(
+                app,
+                &f.model_fit,
+                usize::from(inner.width),
+                &mut lines,
+                theme,
+            );
             model_choice_lines(&f.models, &mut lines, theme);
             lines
         }
     };
     draw_lines(by_priority(lines, inner), inner, buf);
+}
+
+/// The paper's method: straight lines over the sliding phase, their accelerations,
+/// μ_k and the net force and torque.
+fn line_fit_lines(l: &fit::LineFit, theme: &Theme) -> Ranked<'static> {
+    let g = theme.glyphs;
+    let label = |s: &str| Span::styled(g.text(s), theme.dim);
+    let value = |s: String| Span::styled(g.text(&s), theme.text);
+    vec![
+        (
+            5,
+            Line::from(Span::styled(
+                "paper's method: lines over the sliding phase",
+                theme.title,
+            )),
+        ),
+        (
+            6,
+            Line::from(vec![
+                label("window "),
+                value(format!(
+                    "{:.2} … {:.2} s, {} frames",
+                    l.from, l.to, l.points
+                )),
+            ]),
+        ),
+        (
+            7,
+            Line::from(vec![
+                label("|a_cm| "),
+                value(format!("{:.2}±{:.2} m/s{}", l.a_cm, l.a_cm_se, g.squared)),
+                label(&format!("  {}_cm ", g.mu)),
+                value(format!("{:.3}", l.mu_cm)),
+            ]),
+        ),
+        (
+            7,
+            Line::from(vec![
+                label("|a_t|  "),
+                value(if l.a_t.is_finite() {
+                    format!(
+                        "{:.2}±{:.2} m/s{}  {}_t {:.3}",
+                        l.a_t, l.a_t_se, g.squared, g.mu, l.mu_t
+                    )
+                } else {
+                    format!("and {}_t not measured (no rim mark)", g.mu)
+                }),
+            ]),
+        ),
+        (
+            1,
+            Line::from(vec![
+                label("|F_net| "),
+                value(format!("{:.3} N", l.f_net)),
+                label(&format!("  |{}_net| ", g.tau)),
+                value(format!("{:.4} N m", l.tau_net)),
+            ]),
+        ),
+    ]
+}
+
+/// The paper's table-1 row for this width, and where that row contradicts itself
+/// (physics.md); beside the paper's own (velocity) series only: a position track is
+/// never the paper's data.
+fn paper_row_lines(app: &App, lines: &mut Ranked<'static>, theme: &Theme) {
+    let g = theme.glyphs;
+    let label = |s: &str| Span::styled(g.text(s), theme.dim);
+    let value = |s: String| Span::styled(g.text(&s), theme.text);
+    let paper_data = app.lab.measured().is_some_and(|m| m.x.is_none());
+    let Some(p) = fit::paper_row(app.lab.scene.width).filter(|_| paper_data) else {
+        return;
+    };
+    lines.push((
+        3,
+        Line::from(vec![
+            label("paper: "),
+            value(format!(
+                "|a_cm| {:.2}, {}_cm {:.2}, |a_t| {:.2}, {}_t {:.2}",
+                p[0], g.mu, p[1], p[3], g.mu, p[4]
+            )),
+        ]),
+    ));
+    let scene = &app.lab.scene;
+    for d in fit::paper_disagreements(scene.width, scene.radius, scene.g) {
+        lines.push((
+            3,
+            Line::from(label(&format!(
+                "  its |a_{}| gives {}_{} {:.3}, not {:.2}",
+                d.which, g.mu, d.which, d.own, d.printed
+            ))),
+        ));
+    }
+}
+
+/// The model fit to the velocities, and beside it the fit to the positions once a
+/// position track's is done (its progress or failure meanwhile).
+fn model_fits_lines(
+    app: &App,
+    m: &ModelFit,
+    width: usize,
+    lines: &mut Ranked<'static>,
+    theme: &Theme,
+) {
+    let g = theme.glyphs;
+    match app.lab.position_fit() {
+        State::Idle => model_fit_lines(m, lines, theme),
+        State::Computing { .. } => {
+            model_fit_lines(m, lines, theme);
+            lines.push((
+                4,
+                Line::from(Span::styled(g.text("position fit: computing…"), theme.dim)),
+            ));
+        }
+        State::Ready(Err(e)) => {
+            model_fit_lines(m, lines, theme);
+            lines.push((
+                6,
+                Line::from(Span::styled(g.text(&e.to_string()), theme.error)),
+            ));
+        }
+        State::Ready(Ok(p)) => both_fits(m, p, width, lines, theme),
+    }
 }
 
 /// The candidate models by BIC (lower is better), the one the data support marked;

@@ -180,38 +180,64 @@ fn front_values<'a>(app: &App, now: &Instant, s: &Sliding, theme: &Theme) -> Ran
     out
 }
 
-/// The groove's cross-section seen from +x: rails at ±b/2, the ball on them, A and B,
-/// r, and the forces in the y-z plane (G, N_A, N_B, τ_A, τ_B, τ_net) as arrows to
-/// scale; the friction forces along x as ⊙ / ⊗ at A and B.
-fn cross_section(app: &App, now: &Instant, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let g = theme.glyphs;
-    let scene = &app.lab.scene;
-    let (radius, half_b) = (scene.radius, 0.5 * scene.width);
-    let r = radius * app.lab.derived.k;
-    let mut canvas = Canvas::new(usize::from(area.width), usize::from(area.height), g.ascii);
-    let (sx, sy) = canvas.sub();
-    let (sx, sy) = (sx as f64, sy as f64);
-    // Cell widths per metre: the picture spans 2.9 R across and R + r + 0.35 R down
-    // (a cell is about twice as tall as wide).
-    // Room above the ball for the torques' arrows (up to 1.25 R from the centre).
-    let top = 1.3 * radius;
-    let tall = top + radius.max(1.35 * r) + 0.1 * radius;
-    let scale = (f64::from(area.width) / (2.9 * radius)).min(f64::from(area.height) * 2.0 / tall);
-    let cx = f64::from(area.width) / 2.0 * sx;
-    let cy = top * scale * sy / 2.0;
-    // Physical (z, y) from the centre to dots.
-    let dot = |z: f64, y: f64| (cx + z * scale * sx, cy + y * scale * sy / 2.0);
-    // Rails: their tops at A and B, r below the centre, from ±b/2 outward.
-    let rail = theme.groove;
+/// Where the cross-section's physical (z, y), from the ball's centre, lands in canvas
+/// dots.
+#[derive(Clone, Copy)]
+struct SectionFrame {
+    /// Centre of the ball, dots.
+    cx: f64,
+    cy: f64,
+    /// Cell widths per metre.
+    scale: f64,
+    /// Dots per cell across and down.
+    sx: f64,
+    sy: f64,
+}
+
+impl SectionFrame {
+    /// The frame fitting the picture in `area`: it spans 2.9 R across and, down, room
+    /// above the ball for the torques' arrows (up to 1.25 R from the centre) to the
+    /// rails' feet (a cell is about twice as tall as wide).
+    fn new(area: Rect, radius: f64, r: f64, sub: (usize, usize)) -> SectionFrame {
+        let (sx, sy) = (sub.0 as f64, sub.1 as f64);
+        let top = 1.3 * radius;
+        let tall = top + radius.max(1.35 * r) + 0.1 * radius;
+        let scale =
+            (f64::from(area.width) / (2.9 * radius)).min(f64::from(area.height) * 2.0 / tall);
+        SectionFrame {
+            cx: f64::from(area.width) / 2.0 * sx,
+            cy: top * scale * sy / 2.0,
+            scale,
+            sx,
+            sy,
+        }
+    }
+
+    fn dot(&self, z: f64, y: f64) -> (f64, f64) {
+        (
+            self.cx + z * self.scale * self.sx,
+            self.cy + y * self.scale * self.sy / 2.0,
+        )
+    }
+}
+
+/// The rails (their tops at A and B, r below the centre, from ±b/2 outward), the
+/// ball, the line AB (dashed) and r from the centre to it.
+fn draw_groove_and_ball(
+    canvas: &mut Canvas,
+    frame: &SectionFrame,
+    (radius, half_b, r): (f64, f64, f64),
+    theme: &Theme,
+) {
+    let dot = |z, y| frame.dot(z, y);
     for side in [-1.0, 1.0] {
         let edge = dot(side * half_b, r);
         let outer = dot(side * 1.45 * radius, r);
-        canvas.line(edge, outer, rail, "=");
+        canvas.line(edge, outer, theme.groove, "=");
         let foot = dot(side * half_b, r + 0.35 * radius);
-        canvas.line(edge, foot, rail, "|");
+        canvas.line(edge, foot, theme.groove, "|");
     }
-    // The ball.
-    let n = (std::f64::consts::TAU * radius * scale * sx * 2.0)
+    let n = (std::f64::consts::TAU * radius * frame.scale * frame.sx * 2.0)
         .ceil()
         .max(16.0) as usize;
     for k in 0..n {
@@ -219,7 +245,6 @@ fn cross_section(app: &App, now: &Instant, area: Rect, buf: &mut Buffer, theme: 
         let (x, y) = dot(radius * a.cos(), radius * a.sin());
         canvas.set(x.floor() as i64, y.floor() as i64, theme.dim, "o");
     }
-    // The line AB (dashed) and r, from the centre to it.
     let (a, b) = (dot(-half_b, r), dot(half_b, r));
     let steps = ((b.0 - a.0) / 2.0).ceil().max(1.0) as usize;
     for k in (0..=steps).step_by(2) {
@@ -227,34 +252,37 @@ fn cross_section(app: &App, now: &Instant, area: Rect, buf: &mut Buffer, theme: 
         canvas.set(x.round() as i64, a.1.round() as i64, theme.dim, ".");
     }
     canvas.line(dot(0.0, 0.0), dot(0.0, r), theme.dim, ":");
-    // Force arrows: G = 0.55 R long, the normal forces in proportion (capped).
+}
+
+/// An arrow's head: where (dots), its direction (z, y) and style.
+type Head = (f64, f64, (f64, f64), Style);
+
+/// The force arrows to scale, drawn as lines: G = 0.55 R long, the normal forces in
+/// proportion (capped), and while friction acts τ_net 1.15 R long (its tip outside
+/// the ball) with τ_A and τ_B in proportion (capped). Returns their heads.
+fn draw_force_arrows(
+    canvas: &mut Canvas,
+    frame: &SectionFrame,
+    (radius, half_b, r): (f64, f64, f64),
+    (k, now): (f64, &Instant),
+    theme: &Theme,
+) -> Vec<Head> {
     let g_len = 0.55 * radius;
-    let n_len = (g_len / (2.0 * app.lab.derived.k)).min(1.3 * radius);
-    let mut heads: Vec<(f64, f64, (f64, f64), Style)> = Vec::new();
+    let n_len = (g_len / (2.0 * k)).min(1.3 * radius);
+    let mut heads: Vec<Head> = Vec::new();
     let mut arrow = |canvas: &mut Canvas, from: (f64, f64), to: (f64, f64), style: Style| {
-        let (a, b) = (dot(from.0, from.1), dot(to.0, to.1));
-        canvas.line(
-            a,
-            b,
-            style,
-            line_glyph(b.0 - a.0, (b.1 - a.1) / (sy / 2.0) * sx),
-        );
+        let (a, b) = (frame.dot(from.0, from.1), frame.dot(to.0, to.1));
+        let glyph = line_glyph(b.0 - a.0, (b.1 - a.1) / (frame.sy / 2.0) * frame.sx);
+        canvas.line(a, b, style, glyph);
         heads.push((b.0, b.1, (to.0 - from.0, to.1 - from.1), style));
     };
-    arrow(&mut canvas, (0.0, 0.0), (0.0, g_len), theme.text);
+    arrow(canvas, (0.0, 0.0), (0.0, g_len), theme.text);
     for side in [-1.0, 1.0] {
         // From A (or B) toward the centre, along the radius.
         let (z0, y0) = (side * half_b, r);
         let f = n_len / radius;
-        arrow(
-            &mut canvas,
-            (z0, y0),
-            (z0 - z0 * f, y0 - y0 * f),
-            theme.text,
-        );
+        arrow(canvas, (z0, y0), (z0 - z0 * f, y0 - y0 * f), theme.text);
     }
-    // Torques while friction acts: τ_net 1.15 R long (its tip outside the ball), τ_A
-    // and τ_B in proportion (capped).
     if now.friction != 0.0 {
         let per = 1.15 * radius / (2.0 * r.max(1e-300) * now.friction.abs());
         let cap = |z: f64, y: f64| {
@@ -267,43 +295,40 @@ fn cross_section(app: &App, now: &Instant, area: Rect, buf: &mut Buffer, theme: 
             (z * f, y * f)
         };
         let (ty, tz) = now.torque_a;
-        arrow(&mut canvas, (0.0, 0.0), cap(tz * per, ty * per), theme.left);
-        arrow(
-            &mut canvas,
-            (0.0, 0.0),
-            cap(tz * per, -ty * per),
-            theme.left,
-        );
-        arrow(
-            &mut canvas,
-            (0.0, 0.0),
-            (now.net_torque * per, 0.0),
-            theme.left,
-        );
+        arrow(canvas, (0.0, 0.0), cap(tz * per, ty * per), theme.left);
+        arrow(canvas, (0.0, 0.0), cap(tz * per, -ty * per), theme.left);
+        arrow(canvas, (0.0, 0.0), (now.net_torque * per, 0.0), theme.left);
     }
+    heads
+}
+
+/// The groove's cross-section seen from +x: rails at ±b/2, the ball on them, A and B,
+/// r, and the forces in the y-z plane (G, N_A, N_B, τ_A, τ_B, τ_net) as arrows to
+/// scale; the friction forces along x as ⊙ / ⊗ at A and B.
+fn cross_section(app: &App, now: &Instant, area: Rect, buf: &mut Buffer, theme: &Theme) {
+    let g = theme.glyphs;
+    let scene = &app.lab.scene;
+    let k = app.lab.derived.k;
+    let (radius, half_b) = (scene.radius, 0.5 * scene.width);
+    let r = radius * k;
+    let sizes = (radius, half_b, r);
+    let mut canvas = Canvas::new(usize::from(area.width), usize::from(area.height), g.ascii);
+    let frame = SectionFrame::new(area, radius, r, canvas.sub());
+    draw_groove_and_ball(&mut canvas, &frame, sizes, theme);
+    let heads = draw_force_arrows(&mut canvas, &frame, sizes, (k, now), theme);
     canvas.write(area.x, area.y, buf);
+    let (sx, sy) = (frame.sx, frame.sy);
     for (x, y, d, style) in heads {
         put(buf, area, x / sx, y / sy, head_glyph(d, g.ascii), style);
     }
     // Labels: A, B, the friction marks, G.
     let label = |buf: &mut Buffer, z: f64, y: f64, text: &str, style: Style| {
-        let (x, yy) = dot(z, y);
+        let (x, yy) = frame.dot(z, y);
         put(buf, area, x / sx, yy / sy, text, style);
     };
-    label(
-        buf,
-        -half_b - 0.25 * radius,
-        r + 0.2 * radius,
-        "A",
-        theme.text,
-    );
-    label(
-        buf,
-        half_b + 0.25 * radius,
-        r + 0.2 * radius,
-        "B",
-        theme.text,
-    );
+    let below = r + 0.2 * radius;
+    label(buf, -half_b - 0.25 * radius, below, "A", theme.text);
+    label(buf, half_b + 0.25 * radius, below, "B", theme.text);
     if now.friction != 0.0 {
         let mark = along_x(theme, now.friction > 0.0);
         label(buf, -half_b, r, mark, theme.accent);
@@ -312,7 +337,7 @@ fn cross_section(app: &App, now: &Instant, area: Rect, buf: &mut Buffer, theme: 
         let tip = now.net_torque.signum() * 1.15 * radius;
         label(buf, tip, -0.25 * radius, &g.text("τ_net"), theme.left);
     }
-    label(buf, 0.2 * radius, g_len, "G", theme.text);
+    label(buf, 0.2 * radius, 0.55 * radius, "G", theme.text);
     label(buf, -0.12 * radius, 0.8 * r, "r", theme.dim);
 }
 

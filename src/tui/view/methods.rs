@@ -10,8 +10,8 @@ use super::{Ranked, block, by_priority, draw_lines};
 use crate::lab::jobs::State;
 use crate::methods::Method;
 use crate::physics::derived::Summary;
-use crate::settings::units::fit_number;
-use crate::study::compare::{Row, RunStatus, fitted_order};
+use crate::settings::units::{Dimension, fit_number, show};
+use crate::study::compare::{Row, RunStatus, fitted_order, outcome_until};
 use crate::tui::app::App;
 use crate::tui::plot::{Draw, Plot, Series};
 use crate::tui::theme::Theme;
@@ -215,18 +215,34 @@ pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             ]),
         ));
     }
-    // What the outcome marks compare with, and each fixed-step method's fitted order.
-    let exact = Summary::of(&app.lab.solution);
+    // What the outcome marks compare with (up to the budget's cut, if it cut the
+    // span), and each fixed-step method's fitted order.
+    let cut = rows.iter().find_map(|r| r.cut);
+    let (outcome, impacts) = match cut {
+        Some(end) => outcome_until(&app.lab.solution, end),
+        None => {
+            let exact = Summary::of(&app.lab.solution);
+            (exact.outcome, exact.impacts)
+        }
+    };
     if marks {
         lines.push((
             7,
             Line::from(Span::styled(
-                format!(
-                    "= outcome right ({}, {} impacts)",
-                    exact.outcome.name(),
-                    exact.impacts
-                ),
+                format!("= outcome right ({}, {impacts} impacts)", outcome.name()),
                 theme.dim,
+            )),
+        ));
+    }
+    if let Some(end) = cut {
+        lines.push((
+            8,
+            Line::from(Span::styled(
+                format!(
+                    "runs cut at t = {} by the step budget",
+                    show(end, Dimension::Time)
+                ),
+                theme.error,
             )),
         ));
     }

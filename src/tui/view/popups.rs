@@ -192,137 +192,156 @@ fn data_table(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
 }
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let g = theme.glyphs;
     match &app.mode {
         Mode::Normal | Mode::Edit(_) => {}
-        Mode::Help => {
-            let width = area.width.saturating_sub(2).min(86);
-            let lines = help_lines(usize::from(width.saturating_sub(2)), theme);
-            let title = if g.ascii {
-                "Keys  (Esc or q closes, up/down pgup/pgdn scroll)"
-            } else {
-                "Keys  (Esc or q closes, ↑↓ PgUp PgDn scroll)"
-            };
-            let line = |i: usize| lines[i].clone();
-            let source: (usize, &dyn Fn(usize) -> Line<'static>) = (lines.len(), &line);
-            scrolling(app, title, Vec::new(), source, (area, width), buf, theme);
-        }
+        Mode::Help => help(app, area, buf, theme),
         Mode::Table => data_table(app, area, buf, theme),
         Mode::Predict => super::forces::question(app, area, buf, theme),
-        Mode::Picker(selected) => {
-            let name_width = app
-                .library
-                .presets
-                .iter()
-                .map(|p| p.name.len())
-                .max()
-                .unwrap_or(8);
-            // One row per preset: the description cut with an ellipsis, never wrapped.
-            let room = usize::from(area.width.saturating_sub(8));
-            let lines: Vec<Line> = app
-                .library
-                .presets
-                .iter()
-                .enumerate()
-                .map(|(i, p)| {
-                    let style = if i == *selected {
-                        theme.selected
-                    } else {
-                        theme.text
-                    };
-                    let mark = if i == *selected { g.selected } else { " " };
-                    let text = format!("{mark}{:<name_width$}  {}", p.name, p.description);
-                    Line::from(Span::styled(g.ellipsize(&text, room), style))
-                })
-                .collect();
-            popup(
-                "Presets  (Enter loads, Esc or q closes)",
-                lines,
-                area,
-                area.width.saturating_sub(4),
-                buf,
-                theme,
-            );
-        }
-        Mode::SaveName(field) => {
-            let dir = app
-                .library
-                .dir
-                .as_ref()
-                .map_or("(no preset folder)".to_string(), |d| {
-                    d.display().to_string()
-                });
-            prompt(
-                app,
-                "Save the scene as a user preset",
-                (" name: ", field),
-                &[
-                    format!(" saved in {dir}"),
-                    if app.lab.measured().is_some() {
-                        " letters, digits, - _ . (the measured data are saved too)".into()
-                    } else {
-                        " letters, digits, - _ .".into()
-                    },
-                    " Enter saves, Esc cancels".into(),
-                ],
-                area,
-                buf,
-                theme,
-            );
-        }
-        Mode::Export(kind, field) => {
-            let (title, what) = match kind {
-                Export::Csv => {
-                    let sol = &app.lab.solution;
-                    let dt = export_step(sol.t_end - sol.t_start);
-                    (
-                        "Export the run as CSV",
-                        format!(
-                            " t and x, v, u of both balls (SI) every {}",
-                            crate::settings::units::show(
-                                dt,
-                                crate::settings::units::Dimension::Time
-                            )
-                        ),
-                    )
-                }
-                Export::Svg => (
-                    "Export the chart as SVG",
-                    " the chart on screen (velocities or positions)".to_string(),
-                ),
-            };
-            prompt(
-                app,
-                title,
-                (" file: ", field),
-                &[
-                    what,
-                    if app.export_dir == std::path::Path::new(".") {
-                        " in the folder groovelab was started in, unless a path is given".into()
-                    } else {
-                        format!(" in {} unless a path is given", app.export_dir.display())
-                    },
-                    " Enter writes (replacing a file of that name), Esc cancels".into(),
-                ],
-                area,
-                buf,
-                theme,
-            );
-        }
-        Mode::ConfirmOverwrite(name) => {
-            let lines = vec![
-                Line::from(Span::styled(
-                    g.ellipsize(
-                        &format!(" {name}.toml exists. Overwrite it? y / n"),
-                        usize::from(area.width.saturating_sub(6)),
-                    ),
-                    theme.error,
-                )),
-                Line::from(Span::styled(" (its description is kept)", theme.dim)),
-            ];
-            popup("Save", lines, area, 60, buf, theme);
-        }
+        Mode::Picker(selected) => preset_picker(app, *selected, area, buf, theme),
+        Mode::SaveName(field) => save_prompt(app, field, area, buf, theme),
+        Mode::Export(kind, field) => export_prompt(app, *kind, field, area, buf, theme),
+        Mode::ConfirmOverwrite(name) => confirm_overwrite(name, area, buf, theme),
     }
+}
+
+/// The keys, scrolling.
+fn help(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
+    let width = area.width.saturating_sub(2).min(86);
+    let lines = help_lines(usize::from(width.saturating_sub(2)), theme);
+    let title = if theme.glyphs.ascii {
+        "Keys  (Esc or q closes, up/down pgup/pgdn scroll)"
+    } else {
+        "Keys  (Esc or q closes, ↑↓ PgUp PgDn scroll)"
+    };
+    let line = |i: usize| lines[i].clone();
+    let source: (usize, &dyn Fn(usize) -> Line<'static>) = (lines.len(), &line);
+    scrolling(app, title, Vec::new(), source, (area, width), buf, theme);
+}
+
+/// The presets to load, one row each with the `selected` one marked.
+fn preset_picker(app: &App, selected: usize, area: Rect, buf: &mut Buffer, theme: &Theme) {
+    let g = theme.glyphs;
+    let name_width = app
+        .library
+        .presets
+        .iter()
+        .map(|p| p.name.len())
+        .max()
+        .unwrap_or(8);
+    // One row per preset: the description cut with an ellipsis, never wrapped.
+    let room = usize::from(area.width.saturating_sub(8));
+    let lines: Vec<Line> = app
+        .library
+        .presets
+        .iter()
+        .enumerate()
+        .map(|(i, p)| {
+            let style = if i == selected {
+                theme.selected
+            } else {
+                theme.text
+            };
+            let mark = if i == selected { g.selected } else { " " };
+            let text = format!("{mark}{:<name_width$}  {}", p.name, p.description);
+            Line::from(Span::styled(g.ellipsize(&text, room), style))
+        })
+        .collect();
+    popup(
+        "Presets  (Enter loads, Esc or q closes)",
+        lines,
+        area,
+        area.width.saturating_sub(4),
+        buf,
+        theme,
+    );
+}
+
+/// The name to save the scene under, and where it goes.
+fn save_prompt(app: &App, field: &Field, area: Rect, buf: &mut Buffer, theme: &Theme) {
+    let dir = app
+        .library
+        .dir
+        .as_ref()
+        .map_or("(no preset folder)".to_string(), |d| {
+            d.display().to_string()
+        });
+    prompt(
+        app,
+        "Save the scene as a user preset",
+        (" name: ", field),
+        &[
+            format!(" saved in {dir}"),
+            if app.lab.measured().is_some() {
+                " letters, digits, - _ . (the measured data are saved too)".into()
+            } else {
+                " letters, digits, - _ .".into()
+            },
+            " Enter saves, Esc cancels".into(),
+        ],
+        area,
+        buf,
+        theme,
+    );
+}
+
+/// The file to export the run (CSV) or the chart (SVG) to, and what it will hold.
+fn export_prompt(
+    app: &App,
+    kind: Export,
+    field: &Field,
+    area: Rect,
+    buf: &mut Buffer,
+    theme: &Theme,
+) {
+    let (title, what) = match kind {
+        Export::Csv => {
+            let sol = &app.lab.solution;
+            let dt = export_step(sol.t_end - sol.t_start);
+            (
+                "Export the run as CSV",
+                format!(
+                    " t and x, v, u of both balls (SI) every {}",
+                    crate::settings::units::show(dt, crate::settings::units::Dimension::Time)
+                ),
+            )
+        }
+        Export::Svg => (
+            "Export the chart as SVG",
+            " the chart on screen (velocities or positions)".to_string(),
+        ),
+    };
+    prompt(
+        app,
+        title,
+        (" file: ", field),
+        &[
+            what,
+            if app.export_dir == std::path::Path::new(".") {
+                " in the folder groovelab was started in, unless a path is given".into()
+            } else {
+                format!(" in {} unless a path is given", app.export_dir.display())
+            },
+            " Enter writes (replacing a file of that name), Esc cancels".into(),
+        ],
+        area,
+        buf,
+        theme,
+    );
+}
+
+/// Asks before a save replaces the preset file `name`.
+fn confirm_overwrite(name: &str, area: Rect, buf: &mut Buffer, theme: &Theme) {
+    let lines = vec![
+        Line::from(Span::styled(
+            theme.glyphs.ellipsize(
+                &format!(" {name}.toml exists. Overwrite it? y / n"),
+                usize::from(area.width.saturating_sub(6)),
+            ),
+            theme.error,
+        )),
+        Line::from(Span::styled(" (its description is kept)", theme.dim)),
+    ];
+    popup("Save", lines, area, 60, buf, theme);
 }
 
 /// A prompt popup: the field, notes under it, and the error that kept it open.

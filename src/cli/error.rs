@@ -1,0 +1,277 @@
+//! What can go wrong on the command line, kept typed up to the edge: each failure
+//! holds the values it is about (numbers in SI, the option by its clap id), and its
+//! one `error:` line is made only where it is printed (`entry`).
+
+use std::fmt;
+use std::path::PathBuf;
+
+use super::{Cli, MAX_SAMPLES, SweepFormat};
+use crate::methods::Method;
+use crate::settings::units::{Dimension, UnitError, show, show_exact};
+
+/// An option of the command line by its clap id (the derive's field name), shown as
+/// clap defines it (`--NAME`) where a message is printed, so a renamed option is
+/// renamed in its messages too.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Flag(pub &'static str);
+
+impl Flag {
+    /// The option's long name as clap defines it, if `id` is an option's id.
+    fn long(self) -> Option<String> {
+        use clap::CommandFactory;
+        let cmd = Cli::command();
+        cmd.get_arguments()
+            .chain(cmd.get_subcommands().flat_map(|c| c.get_arguments()))
+            .find(|a| a.get_id() == self.0)
+            .and_then(|a| a.get_long())
+            .map(str::to_string)
+    }
+}
+
+impl fmt::Display for Flag {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let long = self.long();
+        debug_assert!(long.is_some(), "{} is no option's id", self.0);
+        write!(f, "--{}", long.unwrap_or_else(|| self.0.replace('_', "-")))
+    }
+}
+
+/// A byte count for people: 9.3 GiB, 286 MiB, 12 KiB.
+pub(crate) fn size_text(bytes: u64) -> String {
+    let b = bytes as f64;
+    let (k, m, g) = (1024.0, 1024.0 * 1024.0, 1024.0 * 1024.0 * 1024.0);
+    if b >= g {
+        format!("{:.1} GiB", b / g)
+    } else if b >= m {
+        format!("{:.0} MiB", b / m)
+    } else {
+        format!("{:.0} KiB", b / k)
+    }
+}
+
+/// A sample count as the `--sample` error shows it: none for a step ≤ 0, in
+/// scientific notation when too large to read.
+fn count_text(dt: f64, count: f64) -> String {
+    if dt > 0.0 && count < 1e15 {
+        format!("{count}")
+    } else if dt > 0.0 {
+        format!("{count:e}")
+    } else {
+        "no".into()
+    }
+}
+
+/// A failure the user can act on: printed as one `error:` line, exit status 2. The
+/// errors of the layers below are kept whole.
+#[derive(Debug, thiserror::Error)]
+pub enum CliError {
+    #[error(transparent)]
+    Scene(#[from] crate::settings::params::SceneError),
+    #[error(transparent)]
+    Preset(#[from] crate::study::preset::PresetError),
+    #[error(transparent)]
+    File(#[from] crate::input::FileError),
+    #[error(transparent)]
+    Data(#[from] crate::input::data::DataError),
+    #[error(transparent)]
+    Output(crate::output::OutputError),
+    #[error(transparent)]
+    Fit(crate::study::fit::FitError),
+    #[error(transparent)]
+    Sweep(crate::study::sweep::SweepError),
+    #[error(transparent)]
+    Usage(#[from] Usage),
+    #[error(transparent)]
+    Value(#[from] BadValue),
+    /// A figure plotters could not draw (`what`: "map", "diagram", "figure").
+    #[error("cannot draw the {what}: {source}")]
+    Draw {
+        what: &'static str,
+        source: crate::study::figures::FigureError,
+    },
+    /// The measured series of `file` holds a number no lab measures.
+    #[error("{file}: {source}")]
+    Implausible {
+        file: String,
+        source: crate::study::measured::OutOfLabRange,
+    },
+    #[error("cannot write {}: {source}", path.display())]
+    Write {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+    #[error("{0}")]
+    Io(#[from] std::io::Error),
+    #[error("interrupted: nothing was written")]
+    Interrupted,
+}
+
+impl From<crate::output::OutputError> for CliError {
+    fn from(e: crate::output::OutputError) -> CliError {
+        match e {
+            crate::output::OutputError::Interrupted => CliError::Interrupted,
+            other => CliError::Output(other),
+        }
+    }
+}
+
+impl From<crate::study::sweep::SweepError> for CliError {
+    fn from(e: crate::study::sweep::SweepError) -> CliError {
+        match e {
+            crate::study::sweep::SweepError::Interrupted => CliError::Interrupted,
+            other => CliError::Sweep(other),
+        }
+    }
+}
+
+/// An option given where it does nothing: refused, never ignored silently.
+#[derive(Debug, thiserror::Error)]
+pub enum Usage {
+    #[error("{flag} is not used by {by}, allowed only with {allowed}")]
+    Unused {
+        flag: Flag,
+        by: &'static str,
+        allowed: &'static str,
+    },
+    #[error("{flag} describes a --data file and none is given, allowed only with --data FILE")]
+    WithoutData { flag: Flag },
+    #[error("{flag} is not used by the {method} method, allowed only with {allowed}")]
+    NotForMethod {
+        flag: Flag,
+        method: &'static str,
+        allowed: &'static str,
+    },
+}
+
+/// An option's value that cannot be used, with what is allowed.
+#[derive(Debug, thiserror::Error)]
+pub enum BadValue {
+    /// A number outside its range (`allowed` in words, e.g. "0 < dt ≤ 1 s").
+    #[error("{flag} {} is out of range, allowed {allowed}", show_exact(*value, *dim))]
+    OutOfRange {
+        flag: Flag,
+        value: f64,
+        dim: Dimension,
+        allowed: &'static str,
+    },
+    #[error("{flag} {text}: {source}")]
+    Unit {
+        flag: Flag,
+        text: String,
+        source: UnitError,
+    },
+    #[error("{flag} {source}")]
+    Axis {
+        flag: Flag,
+        source: crate::study::sweep::AxisError,
+    },
+    #[error(
+        "{} {text} is not a grid, expected NX or NXxNY (1 ..= 10000 each), e.g. 400x200",
+        Flag("grid")
+    )]
+    Grid { text: String },
+    #[error(
+        "{} {grid} is too fine for {} svg (one rectangle per point), allowed at most {max}x{max}; use csv or json for finer grids",
+        Flag("grid"),
+        Flag("format")
+    )]
+    GridTooFineForSvg { grid: String, max: usize },
+    #[error(
+        "{} {grid} gives {points} points, about {} of {}, allowed at most {} on stdout; write it with {} FILE (streamed, no limit)",
+        Flag("grid"),
+        size_text(*bytes),
+        format!("{format:?}").to_uppercase(),
+        size_text(*limit),
+        Flag("output")
+    )]
+    TooLargeForStdout {
+        grid: String,
+        points: u64,
+        bytes: u64,
+        format: SweepFormat,
+        limit: u64,
+    },
+    #[error(
+        "{} {} cannot run this span: {why}, allowed a larger {} or a shorter span",
+        Flag("method"),
+        method.name(),
+        Flag("dt")
+    )]
+    MethodCannotRun { method: Method, why: String },
+    #[error(
+        "preset {preset} has no measured data, allowed: a paper-b* preset or {} FILE",
+        Flag("data")
+    )]
+    NoMeasuredData { preset: String },
+    #[error(
+        "{} given {count} times, allowed once (one file) or twice (the centre's track, then the rim mark's)",
+        Flag("data")
+    )]
+    DataTooOften { count: usize },
+    #[error(
+        "{} {} names no scene: give the one it was measured in, {} NAME or the scene options ({}, {}, {}, {} …)",
+        Flag("data"),
+        path.display(),
+        Flag("preset"),
+        Flag("radius"),
+        Flag("width"),
+        Flag("mass"),
+        Flag("v0")
+    )]
+    DataWithoutScene { path: PathBuf },
+    #[error("{} {from} s must be before {} {to} s", Flag("from"), Flag("to"))]
+    FitWindowBackwards { from: f64, to: f64 },
+    #[error(
+        "{} {} is outside the simulated span, allowed {} … {}",
+        Flag("at"),
+        show(*at, Dimension::Time),
+        show(*start, Dimension::Time),
+        show(*end, Dimension::Time)
+    )]
+    OutsideSpan { at: f64, start: f64, end: f64 },
+    #[error(
+        "{} {} gives {} samples over {} … {}, allowed a step > 0 giving at most {MAX_SAMPLES} samples",
+        Flag("sample"),
+        show_exact(*dt, Dimension::Time),
+        count_text(*dt, *count),
+        show(*start, Dimension::Time),
+        show(*end, Dimension::Time)
+    )]
+    TooManySamples {
+        dt: f64,
+        count: f64,
+        start: f64,
+        end: f64,
+    },
+    #[error("{}: {source}", Flag("keys"))]
+    Keys {
+        source: crate::tui::keys::UnknownKey,
+    },
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every `Flag("id")` written in the command line's source names an option clap
+    /// defines (a renamed field would otherwise show a guessed name).
+    #[test]
+    fn every_flag_id_in_the_source_is_an_option() {
+        let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/src/cli");
+        let mut seen = 0;
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let text = std::fs::read_to_string(entry.unwrap().path()).unwrap();
+            for piece in text.split("Flag(\"").skip(1) {
+                let id = piece.split('"').next().unwrap();
+                if id == "id" {
+                    continue; // this test's own pattern
+                }
+                let id: &'static str = Box::leak(id.to_string().into_boxed_str());
+                assert!(Flag(id).long().is_some(), "Flag(\"{id}\") is no option");
+                seen += 1;
+            }
+        }
+        assert!(seen > 10, "found only {seen} flags");
+        assert_eq!(Flag("time_unit").to_string(), "--time-unit");
+    }
+}
