@@ -17,8 +17,7 @@ use ratatui::layout::Rect;
 
 fn app(name: &str) -> App {
     let p = Preset::load(name).unwrap();
-    let (scene, span) = p.spec.resolve().unwrap();
-    App::new(Lab::new(p, scene, span), Library::at(None))
+    App::new(Lab::of_preset(p).unwrap(), Library::at(None))
 }
 
 /// A key press as the terminal delivers it: the action, then the next frame drawn.

@@ -4,9 +4,10 @@
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
 use super::CliError;
+use crate::lab::Settings;
 use crate::methods::Method;
 use crate::physics::scene::{Scene, Span};
-use crate::settings::params::{Key, PARAMS, SceneSpec};
+use crate::settings::params::{PARAMS, SceneSpec};
 use crate::settings::units::{Dimension, UnitError, parse_quantity};
 use crate::study::fit::Free;
 use crate::study::preset::{self, Preset};
@@ -330,22 +331,23 @@ impl Args for SceneArgs {
 }
 
 impl SceneArgs {
-    /// The preset these options start from, and the scene they make.
-    pub fn resolve(&self) -> Result<(Preset, Scene, Span), CliError> {
+    /// The settings layers these options give: the preset, then the values given.
+    pub fn settings(&self) -> Result<Settings, CliError> {
         let preset = Preset::load(self.preset.as_deref().unwrap_or(preset::DEFAULT))?;
-        let mut spec = preset.spec.over(&self.values);
-        // A preset's t_end belongs to the preset as it is: once a scene option changes
-        // it, the span follows the physics again (unless --t-end is given).
-        let changed = self.values.given().any(|(k, _)| k.param().of_scene());
-        if changed && self.values.get(Key::TEnd).is_none() {
-            let mut without = SceneSpec::default();
-            for (k, v) in spec.given().filter(|(k, _)| *k != Key::TEnd) {
-                without.set(k, v);
-            }
-            spec = without;
-        }
-        let (scene, span) = spec.resolve()?;
-        Ok((preset, scene, span))
+        Ok(Settings::new(preset, self.values.clone()))
+    }
+
+    /// The preset these options start from, and the scene they make (by the lab's
+    /// span rule: a preset's `t_end` holds unless a scene option is given).
+    pub fn resolve(&self) -> Result<(Preset, Scene, Span), CliError> {
+        let settings = self.settings()?;
+        let (scene, span, _) = settings.settle()?;
+        Ok((settings.preset, scene, span))
+    }
+
+    /// True if a preset or any scene option is given (a data file names no scene).
+    pub fn names_a_scene(&self) -> bool {
+        self.preset.is_some() || self.values.given().next().is_some()
     }
 }
 

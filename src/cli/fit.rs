@@ -151,11 +151,11 @@ fn not_measured(fits: &Fits) -> Vec<NotMeasured> {
 pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<String, CliError> {
     // A data file names no scene: fitting it in the default preset's groove would be
     // a silent guess (and compare with the wrong row of the paper).
-    if let Some(path) = data.data.first()
-        && scene_args.preset.is_none()
-        && scene_args.values.given().next().is_none()
-    {
-        return Err(BadValue::DataWithoutScene { path: path.clone() }.into());
+    if let Some(path) = super::scene_of_data(scene_args, data) {
+        return Err(BadValue::DataWithoutScene {
+            path: path.to_path_buf(),
+        }
+        .into());
     }
     let (preset, scene, _) = scene_args.resolve()?;
     if let Some(path) = &args.output {

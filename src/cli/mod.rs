@@ -3,21 +3,21 @@
 //! failure never leaves partial output).
 
 use std::fmt::Write as _;
+use std::path::Path;
 
 use serde::Serialize;
 
-use crate::lab::{Lab, SpanEnd};
+use crate::lab::{Lab, OwnData};
 use crate::methods::Method;
 use crate::physics::derived::{Derived, Summary};
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{Snapshot, Solution};
 use crate::physics::story::{self, After};
-use crate::settings::params::Key;
 use crate::study::preset::{self, Preset};
 use crate::tui::{
     self,
-    app::{App, Library},
+    app::{App, Library, Status},
 };
 
 mod args;
@@ -113,27 +113,55 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
 }
 
 /// The lab on the scene the options describe, with `--data` replacing the preset's
-/// measured series.
+/// measured series (the lab derives a position track's v_t with the r of each scene
+/// it shows).
 pub fn lab(scene_args: &SceneArgs, data: &DataArgs) -> Result<Lab, CliError> {
-    let (preset, scene, span) = scene_args.resolve()?;
-    let mut lab = match fit::load_series(data)? {
-        // The lab derives a position track's v_t with the r of each scene it shows.
-        Some(series) => Lab::with_data(preset, scene, span, Some(series)),
-        None => Lab::new(preset, scene, span),
-    };
-    // `--t-end` is explicit: it holds through parameter changes in the app.
-    if let (Some(t_end), Some(_)) = (span.t_end, scene_args.values.get(Key::TEnd)) {
-        lab.set_span_end(SpanEnd::Fixed {
-            t_end,
-            from_preset: false,
-        })?;
-    }
-    Ok(lab)
+    let settings = scene_args.settings()?;
+    let own = fit::load_series(data)?.map(|series| OwnData {
+        name: data
+            .data
+            .iter()
+            .map(|p| p.display().to_string())
+            .collect::<Vec<_>>()
+            .join(" + "),
+        series,
+    });
+    Ok(Lab::new(settings, own)?)
 }
 
 /// The app on that lab, with the user's presets.
 pub fn app(scene_args: &SceneArgs, data: &DataArgs) -> Result<App, CliError> {
-    Ok(App::new(lab(scene_args, data)?, Library::user()))
+    opened(scene_args, data, Library::user())
+}
+
+/// The app as it opens on the options: the lab, and the status line asking for the
+/// data's scene when none was named ([`scene_of_data`]).
+pub fn opened(scene_args: &SceneArgs, data: &DataArgs, library: Library) -> Result<App, CliError> {
+    let mut app = App::new(lab(scene_args, data)?, library);
+    if let Some(path) = scene_of_data(scene_args, data) {
+        // The file's name without its folder: the status line is one row.
+        let file = path
+            .file_name()
+            .unwrap_or(path.as_os_str())
+            .to_string_lossy();
+        let s = &app.lab.scene;
+        app.status = Status::Error(format!(
+            "{file} names no scene: the model uses {}'s R = {}, b = {}; set R and b to yours",
+            app.lab.preset().name,
+            show(s.radius, Dimension::Length),
+            show(s.width, Dimension::Length),
+        ));
+    }
+    Ok(app)
+}
+
+/// The one rule for data and their scene, for the app, `render` and `fit`: a data file
+/// names no scene, so the one it was measured in is given by a preset or the scene
+/// options. Without them, the file whose scene is missing: `fit` refuses, the app and
+/// `render` say which default the model uses and ask for R and b.
+pub fn scene_of_data<'a>(scene_args: &SceneArgs, data: &'a DataArgs) -> Option<&'a Path> {
+    let path = data.data.first()?;
+    (!scene_args.names_a_scene()).then_some(path.as_path())
 }
 
 /// `render`: the app's screen after `--keys`, at `--at`, as text.
@@ -154,7 +182,7 @@ pub fn render_with(
     ascii: bool,
     library: Library,
 ) -> Result<String, CliError> {
-    let mut app = App::new(lab(scene_args, data)?, library);
+    let mut app = opened(scene_args, data, library)?;
     let keys = match &args.keys {
         Some(script) => {
             tui::keys::parse_script(script).map_err(|source| BadValue::Keys { source })?

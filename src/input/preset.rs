@@ -109,8 +109,8 @@ pub fn save(
         .then(|| Preset::load(&path.display().to_string()).ok())
         .flatten()
         .map(|p| p.description);
-    let description =
-        kept.unwrap_or_else(|| format!("Saved from groovelab (started from {})", lab.preset.name));
+    let description = kept
+        .unwrap_or_else(|| format!("Saved from groovelab (started from {})", lab.preset().name));
     let text = preset::to_toml(name, &description, &lab.saved_spec(), lab.measured())
         .map_err(SaveError::Text)?;
     // What is written must load again: check before reporting success.

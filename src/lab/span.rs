@@ -46,17 +46,6 @@ impl SpanEnd {
     }
 }
 
-/// A `t_end` that came with a preset holds until a parameter changes.
-pub(super) fn preset_span_end(span: &Span) -> SpanEnd {
-    match span.t_end {
-        Some(t_end) => SpanEnd::Fixed {
-            t_end,
-            from_preset: true,
-        },
-        None => SpanEnd::Auto,
-    }
-}
-
 /// The exact solution with the shown end: the engine always runs to the end of the
 /// motion, so only `t_end` depends on the choice. The automatic end also reaches the
 /// last measured point and the end of a pinned run, so neither is cut.

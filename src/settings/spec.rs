@@ -70,6 +70,14 @@ impl SceneSpec {
         self
     }
 
+    /// This layer without `key`'s own value (a key that sets others drops theirs).
+    pub fn without(mut self, key: Key) -> SceneSpec {
+        for &k in key.param().sets {
+            self.values[k as usize] = None;
+        }
+        self
+    }
+
     /// Every value this layer stores, in table order (per ball: `mass_left`, not `mass`).
     pub fn given(&self) -> impl Iterator<Item = (Key, f64)> + '_ {
         Key::ALL

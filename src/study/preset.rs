@@ -1,5 +1,5 @@
 //! Presets: named scenes as TOML text (`presets/*.toml`, embedded in the binary, or a
-//! user's file, read at the edge by `study::preset`), optionally carrying a measured
+//! user's file, read at the edge by `input::preset`), optionally carrying a measured
 //! velocity series; the text form read and written here.
 
 use std::path::PathBuf;

@@ -23,6 +23,7 @@ pub use super::vocabulary::{
 pub use predict::reveal_time;
 pub use prompts::{export_step, typing_prompt};
 
+use super::view::ViewCache;
 use super::vocabulary::{DEFAULT_SPEED, WorkAxis};
 use prompts::{Histories, TextTarget};
 
@@ -65,6 +66,8 @@ pub struct App {
     pub hide_b: bool,
     /// The last prediction (predict, observe, explain).
     pub prediction: Option<Prediction>,
+    /// What the charts and the map draw at the last size, per snapshot.
+    pub view_cache: ViewCache,
     /// What was typed into each kind of prompt this session (↑/↓ bring it back).
     histories: Histories,
 }
@@ -94,6 +97,7 @@ impl App {
             forces_ball: 0,
             hide_b: false,
             prediction: None,
+            view_cache: ViewCache::default(),
             histories: Histories::default(),
         }
     }
@@ -115,18 +119,22 @@ impl App {
         }
     }
 
+    /// A parameter's current value as the status line shows it (b hidden if it is).
+    pub(super) fn shown_value(&self, key: Key) -> String {
+        if self.hide_b && key == Key::Width {
+            "(hidden)".to_string()
+        } else {
+            show(self.lab.value(key), key.dimension()).to_string()
+        }
+    }
+
     /// After the lab took a new value of `key`: the cursor kept in the span, the new
     /// value in the status line.
     fn applied(&mut self, key: Key) {
         let sol = &self.lab.solution;
         self.t = self.t.clamp(sol.t_start, sol.t_end);
         let label = key.param().label;
-        let value = if self.hide_b && key == Key::Width {
-            "(hidden)".to_string()
-        } else {
-            show(self.lab.value(key), key.dimension()).to_string()
-        };
-        self.status = Status::Info(format!("{label} = {value}"));
+        self.status = Status::Info(format!("{label} = {}", self.shown_value(key)));
         let s = &self.lab.scene;
         if key == Key::V0 && s.left.v0 == s.right.v0 {
             self.status = Status::Info(format!(
@@ -197,6 +205,7 @@ impl App {
     }
 
     pub fn apply(&mut self, action: Action) {
+        self.view_cache.chart_changed();
         if action == Action::Quit {
             // Ctrl-C quits from anywhere; `q` only reaches here from the normal screen
             // (in a popup the key table makes it close the popup, in a prompt it types).

@@ -103,6 +103,18 @@ pub const TABLE: &[Binding] = &[
         hint: None,
     },
     Binding {
+        keys: &["u"],
+        action: Action::Undo,
+        help: "undo the last parameter change (again: the one before)",
+        hint: None,
+    },
+    Binding {
+        keys: &["R"],
+        action: Action::Reset,
+        help: "reset all parameters to the preset (and the command line's)",
+        hint: None,
+    },
+    Binding {
         keys: &["t"],
         action: Action::CycleSpan,
         help: "time span: auto (a little past the last event), x2, x1/2",
@@ -157,7 +169,7 @@ pub const TABLE: &[Binding] = &[
         hint: Some(("methods", 3)),
     },
     Binding {
-        keys: &["u"],
+        keys: &["X"],
         action: Action::CycleWorkAxis,
         help: "Methods view: work axis steps, right-hand-side evaluations, time",
         hint: None,
@@ -165,13 +177,13 @@ pub const TABLE: &[Binding] = &[
     Binding {
         keys: &["g"],
         action: Action::ToggleMap,
-        help: "Map view: regime over b/R and e with this scene marked, the paper's figure",
+        help: "Map view: regime over b/R and e, this scene marked, paper's figure",
         hint: Some(("map", 3)),
     },
     Binding {
         keys: &["v"],
         action: Action::ToggleForces,
-        help: "Forces view: the groove's cross-section with the forces and torques, the balls' motion states, the cause-and-effect chain (b: left or right ball)",
+        help: "Forces view: the groove's cross-section with forces and torques, motion states, the cause-and-effect chain (b: left or right ball)",
         hint: Some(("forces", 4)),
     },
     Binding {
@@ -219,7 +231,7 @@ pub const TABLE: &[Binding] = &[
     Binding {
         keys: &["o"],
         action: Action::CycleOverlay,
-        help: "overlay a time-stepping method on the exact curves (cycles, then off)",
+        help: "overlay a time-stepping method on the exact curves (cycles, off)",
         hint: Some(("overlay", 1)),
     },
     Binding {
@@ -244,6 +256,12 @@ pub const TABLE: &[Binding] = &[
         keys: &["d"],
         action: Action::DataTable,
         help: "table of the measured data beside the model (scrolls)",
+        hint: None,
+    },
+    Binding {
+        keys: &["D"],
+        action: Action::DropData,
+        help: "drop your own data (--data); a preset picked keeps them",
         hint: None,
     },
     Binding {

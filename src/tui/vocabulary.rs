@@ -30,7 +30,7 @@ pub enum View {
     Forces,
 }
 
-/// What the Methods view puts on its work axis (`u` cycles it).
+/// What the Methods view puts on its work axis (`X` cycles it).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum WorkAxis {
     #[default]
@@ -181,6 +181,12 @@ pub enum Action {
     Predict,
     /// Hide (or show) b's value, for a prediction from the picture alone.
     HideWidth,
+    /// Take back the last parameter change.
+    Undo,
+    /// Every parameter back to the preset (and the command line's values).
+    Reset,
+    /// Drop the user's own data (`--data`): the preset's are shown again.
+    DropData,
 }
 
 /// Playback speeds (simulated seconds per real second); slow motion by default, as

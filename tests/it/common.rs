@@ -76,8 +76,7 @@ pub fn no_user_presets(area: &str) -> Library {
 /// The app on a built-in preset as it starts.
 pub fn app(preset: &str, library: Library) -> App {
     let p = Preset::load(preset).unwrap();
-    let (scene, span) = p.spec.resolve().unwrap();
-    App::new(Lab::new(p, scene, span), library)
+    App::new(Lab::of_preset(p).unwrap(), library)
 }
 
 /// Presses the keys of `script` (the names the help screen shows).
@@ -102,7 +101,7 @@ pub fn rendered(
     keys: Option<&str>,
     library: Library,
 ) -> App {
-    let mut app = App::new(cli::lab(scene, data).unwrap(), library);
+    let mut app = cli::opened(scene, data, library).unwrap();
     if let Some(script) = keys {
         press(&mut app, script);
     }

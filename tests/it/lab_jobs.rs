@@ -13,8 +13,7 @@ use groovelab::tui::replay;
 
 fn app(name: &str) -> App {
     let p = Preset::load(name).unwrap();
-    let (scene, span) = p.spec.resolve().unwrap();
-    App::new(Lab::new(p, scene, span), Library::at(None))
+    App::new(Lab::of_preset(p).unwrap(), Library::at(None))
 }
 
 fn keys(a: &mut App, script: &str) {

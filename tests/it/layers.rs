@@ -1,7 +1,19 @@
-//! The layers are folders, each using only those above it (physics → settings →
-//! methods → study → lab → the edges): no source file of a layer names a later one.
+//! Layers, of the source and of the settings. The source's layers are folders, each
+//! using only those above it (physics → settings → methods → study → lab → the
+//! edges): no source file of a layer names a later one. The settings' layers (preset
+//! ← command line ← the app's edits) settle into one snapshot (that the same scene
+//! reached by flags or by keys draws the same screen is `lab_data`'s test): `u` takes
+//! back the last edit, `R` all of them; a preset picked keeps the student's data; data
+//! without a scene are one rule for the app, `render` and `fit`.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
+
+use groovelab::cli::{DataArgs, SceneArgs};
+use groovelab::lab::SpanEnd;
+use groovelab::settings::params::{Key, SceneSpec};
+use groovelab::tui::app::Status;
+
+use crate::common::{self, press, rendered};
 
 /// The inner layers in order; everything else (`input`, `output`, `signals`, `cli`,
 /// `tui`) is an edge and may use them all.
@@ -40,4 +52,136 @@ fn no_layer_uses_a_later_one() {
         }
     }
     assert!(bad.is_empty(), "upward imports:\n{}", bad.join("\n"));
+}
+
+const TRACK: &str = "docs/video/paper-b4.9-tracker.txt";
+
+fn library() -> groovelab::tui::app::Library {
+    common::no_user_presets("layers")
+}
+
+fn scene(values: SceneSpec) -> SceneArgs {
+    SceneArgs {
+        preset: Some("paper-b4.9".into()),
+        values,
+    }
+}
+
+fn data(files: &[PathBuf]) -> DataArgs {
+    DataArgs {
+        data: files.to_vec(),
+        ..DataArgs::default()
+    }
+}
+
+#[test]
+fn u_undoes_the_last_change_and_r_resets_all_to_the_preset() {
+    let mut a = common::app("paper-b4.9", library());
+    let fresh = a.lab.scene;
+    let (b, end) = (a.lab.value(Key::Width), a.lab.span_end);
+    press(&mut a, "u");
+    assert_eq!(a.status, Status::Info("nothing to undo".into()));
+    press(&mut a, "left");
+    press(&mut a, "down down down enter 0 . 3 enter");
+    assert_eq!(a.lab.scene.mu, 0.3);
+    assert!(a.lab.value(Key::Width) < b);
+    press(&mut a, "u");
+    assert_eq!(a.lab.scene.mu, fresh.mu, "μ_k back");
+    assert!(a.lab.value(Key::Width) < b, "b still changed");
+    assert!(
+        matches!(&a.status, Status::Info(s) if s.starts_with("undone: mu_k = ")),
+        "{:?}",
+        a.status
+    );
+    press(&mut a, "u");
+    assert_eq!(a.lab.scene, fresh, "exactly the preset's scene again");
+    // The span key is an edit too; R drops every edit.
+    press(&mut a, "t right right");
+    assert_ne!(a.lab.span_end, end);
+    press(&mut a, "R");
+    assert_eq!((a.lab.scene, a.lab.span_end), (fresh, end));
+    assert_eq!(a.status, Status::Info("reset to preset paper-b4.9".into()));
+    press(&mut a, "u");
+    assert_eq!(a.status, Status::Info("nothing to undo".into()));
+}
+
+#[test]
+fn undo_reaches_a_span_set_with_t_end_and_keeps_the_command_lines_values() {
+    let values = SceneSpec::default().with(Key::Width, 0.044);
+    let mut a = rendered(&scene(values), &data(&[]), None, None, library());
+    assert_eq!(a.lab.scene.width, 0.044);
+    a.lab.set(Key::TEnd, 0.7).unwrap();
+    assert!(matches!(a.lab.span_end, SpanEnd::Fixed { t_end: 0.7, .. }));
+    press(&mut a, "right");
+    press(&mut a, "R");
+    assert_eq!(a.lab.scene.width, 0.044, "the command line's b stays");
+    assert_eq!(a.lab.span_end, SpanEnd::Auto);
+    assert_eq!(
+        a.status,
+        Status::Info("reset to preset paper-b4.9 with the command line's values".into())
+    );
+}
+
+#[test]
+fn a_preset_picked_keeps_the_students_data_until_d_drops_them() {
+    let d = data(&[PathBuf::from(TRACK)]);
+    let mut a = rendered(&scene(SceneSpec::default()), &d, None, None, library());
+    assert!(a.lab.measured().unwrap().x.is_some(), "a position track");
+    // The picker opens on paper-b4.9; the one above it is paper-b4.4.
+    press(&mut a, "p up enter");
+    assert_eq!(a.lab.preset().name, "paper-b4.4");
+    assert!(a.lab.measured().unwrap().x.is_some(), "still the track");
+    assert!(
+        matches!(&a.status, Status::Info(s) if s.contains("your data") && s.contains("kept")),
+        "{:?}",
+        a.status
+    );
+    press(&mut a, "D");
+    let m = a.lab.measured().unwrap();
+    assert!(m.x.is_none(), "the preset's own velocities");
+    assert_eq!(m.t, a.lab.preset().measured.as_ref().unwrap().t);
+    assert!(
+        matches!(&a.status, Status::Info(s) if s.starts_with("dropped ")),
+        "{:?}",
+        a.status
+    );
+    press(&mut a, "D");
+    assert!(matches!(&a.status, Status::Info(s) if s.starts_with("no data of your own")));
+}
+
+#[test]
+fn the_methods_views_work_axis_moved_to_capital_x() {
+    let mut a = common::app("paper-b4.9", library());
+    let axis = a.work_axis;
+    press(&mut a, "X");
+    assert_ne!(a.work_axis, axis);
+}
+
+#[test]
+fn data_without_a_scene_one_rule_for_the_app_render_and_fit() {
+    let unnamed = SceneArgs::default();
+    let d = data(&[PathBuf::from(TRACK)]);
+    let a = rendered(&unnamed, &d, None, None, library());
+    let Status::Error(message) = &a.status else {
+        panic!("{:?}", a.status)
+    };
+    assert!(
+        message
+            == "paper-b4.9-tracker.txt names no scene: the model uses paper-b4.9's R = 2.75 cm, b = 4.9 cm; set R and b to yours",
+        "{message}"
+    );
+    // `render` prints what the app shows; `fit` refuses.
+    let out = common::groovelab(&["render", "--data", TRACK, "--size", "160x40"]);
+    let screen = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        out.status.success() && screen.contains("names no scene"),
+        "{screen}"
+    );
+    let out = common::groovelab(&["fit", "--data", TRACK]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(err.contains("names no scene"), "{err}");
+    // With the scene named, nothing is asked.
+    let b = rendered(&scene(SceneSpec::default()), &d, None, None, library());
+    assert_eq!(b.status, Status::None);
 }

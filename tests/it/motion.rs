@@ -174,8 +174,7 @@ t_end = 0.5
 #[test]
 fn a_presets_t_end_holds_until_a_parameter_changes() {
     let p = preset_with_t_end();
-    let (scene, span) = p.spec.resolve().unwrap();
-    let mut a = App::new(Lab::new(p, scene, span), no_user_presets());
+    let mut a = App::new(Lab::of_preset(p).unwrap(), no_user_presets());
     assert_eq!(a.lab.solution.t_end, 0.5);
     assert!(matches!(
         a.lab.span_end,
@@ -468,6 +467,37 @@ fn a_click_on_the_chart_seeks_to_the_time_under_it() {
     assert_eq!(view::chart_time_at(&a, area, 40, 20), None);
 }
 
+#[test]
+fn a_drag_on_the_chart_does_not_build_the_chart_again() {
+    let mut a = app("paper-b4.9");
+    press(&mut a, "x");
+    let area = Rect::new(0, 0, 120, 40);
+    let theme = Theme::new(Glyphs::UNICODE, true);
+    let top = view::layout(area).unwrap().chart.y;
+    // Never drawn: the chart is laid out to answer.
+    let fresh: Vec<Option<f64>> = (0..120)
+        .map(|c| view::chart_time_at(&a, area, c, top + 10))
+        .collect();
+    view::to_text(&a, 120, 40, &theme);
+    let built = a.view_cache.charts_built.get();
+    for (c, want) in fresh.iter().enumerate() {
+        let t = view::chart_time_at(&a, area, c as u16, top + 10);
+        assert_eq!(t, *want, "column {c}");
+        if let Some(t) = t {
+            a.seek(t);
+        }
+    }
+    assert_eq!(
+        a.view_cache.charts_built.get(),
+        built,
+        "a drag builds no chart"
+    );
+    // A key may change the chart: it is laid out again.
+    press(&mut a, "e");
+    view::chart_time_at(&a, area, 60, top + 10);
+    assert_eq!(a.view_cache.charts_built.get(), built + 1);
+}
+
 // ---- 3. The energy chart --------------------------------------------------------------
 
 #[test]
@@ -475,7 +505,7 @@ fn the_energy_chart_splits_the_initial_energy_at_every_sample() {
     let mut a = app("inelastic");
     press(&mut a, "e");
     assert!(a.show_energy);
-    let split = a.lab.energies(100);
+    let split = a.energies(100);
     let total = split[0].1.total();
     assert!(total > 0.0);
     for (t, e) in split.iter() {
@@ -528,7 +558,7 @@ fn a_pinned_run_is_drawn_beside_the_current_one_with_what_changed() {
     assert!(a.lab.pinned.is_some());
     select(&mut a, Key::Width);
     press(&mut a, "enter 4 . 4 c m enter");
-    let changes = a.lab.pinned_changes();
+    let changes = a.lab.pinned_changes.clone();
     assert_eq!(
         changes,
         vec![("b", "4.9 cm".to_string(), "4.4 cm".to_string())]

@@ -345,10 +345,10 @@ fn playback_runs_on_the_clock_at_the_chosen_speed() {
 fn picker_loads_presets_and_quit_keys_quit() {
     let mut a = app("paper-b4.9");
     press(&mut a, "p down enter");
-    assert_eq!(a.lab.preset.name, a.library.presets[3].name);
+    assert_eq!(a.lab.preset().name, a.library.presets[3].name);
     press(&mut a, "p up up esc");
     assert_eq!(a.mode, Mode::Normal);
-    assert_eq!(a.lab.preset.name, a.library.presets[3].name);
+    assert_eq!(a.lab.preset().name, a.library.presets[3].name);
     press(&mut a, "?");
     assert_eq!(a.mode, Mode::Help);
     press(&mut a, "esc");
@@ -719,9 +719,11 @@ fn methods_view_and_overlay() {
 fn the_methods_view_of_a_long_span_is_cut_and_says_where() {
     use groovelab::study::compare::WINDOW;
     let p = Preset::load("paper-b4.9").unwrap();
-    let (mut scene, span) = p.spec.resolve().unwrap();
-    scene.mu = 1e-6;
-    let mut a = App::new(groovelab::lab::Lab::new(p, scene, span), no_user_presets());
+    let (_, span) = p.spec.resolve().unwrap();
+    let flags = groovelab::settings::params::SceneSpec::default()
+        .with(groovelab::settings::params::Key::Mu, 1e-6);
+    let lab = groovelab::lab::Lab::new(groovelab::lab::Settings::new(p, flags), None).unwrap();
+    let mut a = App::new(lab, no_user_presets());
     assert!(a.lab.solution.t_end > 1e5);
     press(&mut a, "c");
     a.lab.wait();
@@ -754,20 +756,20 @@ fn methods_view_work_axis_outcome_and_order() {
     assert!(s.contains("against steps per run"), "{s}");
     assert!(s.contains("= outcome right (recollide, 20 impacts)"), "{s}");
     assert!(s.contains("order: e "), "{s}");
-    press(&mut a, "u");
+    press(&mut a, "X");
     a.lab.wait();
     let s = screen_of(&a);
     assert!(s.contains("against rhs evaluations per run"), "{s}");
-    press(&mut a, "u");
+    press(&mut a, "X");
     a.lab.wait();
     let s = screen_of(&a);
     assert!(s.contains("against time per run"), "{s}");
-    press(&mut a, "u");
+    press(&mut a, "X");
     assert!(screen_of(&a).contains("against steps per run"));
     assert!(
         keys::TABLE
             .iter()
-            .any(|b| b.keys == ["u"] && b.help.contains("work axis"))
+            .any(|b| b.keys == ["X"] && b.help.contains("work axis"))
     );
 }
 
@@ -1090,7 +1092,8 @@ fn save_keeps_the_data_and_the_description_and_explains_bad_names() {
     let path = dir.join("my-paper-b4.4.toml");
     let saved = Preset::load(path.to_str().unwrap()).unwrap();
     assert_eq!(
-        saved.measured, a.lab.preset.measured,
+        saved.measured,
+        a.lab.preset().measured,
         "the measured series is saved"
     );
     assert!(saved.measured.is_some());

@@ -1,8 +1,8 @@
 //! What each action does on the main screen (no popup open): selection and nudging,
 //! playback, views, the overlay, the fit, and opening the popups and prompts.
 
-use crate::lab::OVERLAY_LEVELS;
 use crate::lab::jobs::State;
+use crate::lab::{Edit, OVERLAY_LEVELS};
 use crate::methods::Method;
 use crate::settings::params::Key;
 use crate::settings::units::{Dimension, show};
@@ -92,7 +92,7 @@ impl App {
             Action::Presets => self.open_picker(),
             Action::Save => {
                 self.status = Status::None;
-                self.mode = Mode::SaveName(Field::new(format!("my-{}", self.lab.preset.name)));
+                self.mode = Mode::SaveName(Field::new(format!("my-{}", self.lab.preset().name)));
             }
             Action::Help => self.open_scrolling(Mode::Help),
             Action::DataTable => self.open_data_table(),
@@ -107,6 +107,9 @@ impl App {
             Action::ToggleForces => self.toggle_view(View::Forces),
             Action::Predict => self.ask_prediction(),
             Action::HideWidth => self.toggle_hide_width(),
+            Action::Undo => self.undo(),
+            Action::Reset => self.reset(),
+            Action::DropData => self.drop_data(),
             Action::CycleWorkAxis => {
                 self.work_axis = self.work_axis.next();
                 self.status = Status::Info(format!("work axis: {}", self.work_axis.name()));
@@ -185,13 +188,68 @@ impl App {
         });
     }
 
+    /// Takes back the last parameter change and says what it was.
+    fn undo(&mut self) {
+        let Some(edit) = self.lab.undo() else {
+            self.status = Status::Info("nothing to undo".into());
+            return;
+        };
+        let sol = &self.lab.solution;
+        self.t = self.t.clamp(sol.t_start, sol.t_end);
+        let back = match edit {
+            Edit::Values(changes) => {
+                let mut keys: Vec<Key> = changes.iter().map(|(k, _)| *k).collect();
+                keys.dedup();
+                let shown: Vec<String> = keys
+                    .iter()
+                    .map(|&k| format!("{} = {}", k.param().label, self.shown_value(k)))
+                    .collect();
+                shown.join(", ")
+            }
+            Edit::SpanEnd(_) => format!("time span {}", self.lab.span_end.describe()),
+        };
+        let left = self.lab.settings().edits().len();
+        self.status = Status::Info(format!("undone: {back} ({left} more to undo)"));
+    }
+
+    /// Every parameter back to the preset's (and the command line's) values.
+    fn reset(&mut self) {
+        if !self.lab.reset() {
+            self.status = Status::Info("nothing to reset: the scene is the preset's".into());
+            return;
+        }
+        let sol = &self.lab.solution;
+        self.t = self.t.clamp(sol.t_start, sol.t_end);
+        let flags = if self.lab.settings().flags.given().next().is_some() {
+            " with the command line's values"
+        } else {
+            ""
+        };
+        self.status = Status::Info(format!("reset to preset {}{flags}", self.lab.preset().name));
+    }
+
+    /// Drops the user's own data; the preset's (if any) are shown again.
+    fn drop_data(&mut self) {
+        self.status = Status::Info(match self.lab.drop_data() {
+            Some(name) => {
+                let sol = &self.lab.solution;
+                self.t = self.t.clamp(sol.t_start, sol.t_end);
+                match self.lab.measured() {
+                    Some(_) => format!("dropped {name}: the preset's data are shown"),
+                    None => format!("dropped {name}"),
+                }
+            }
+            None => "no data of your own to drop (--data FILE loads them)".into(),
+        });
+    }
+
     /// The preset picker, on the preset the scene came from.
     fn open_picker(&mut self) {
         let i = self
             .library
             .presets
             .iter()
-            .position(|p| p.name == self.lab.preset.name)
+            .position(|p| p.name == self.lab.preset().name)
             .unwrap_or(0);
         self.mode = Mode::Picker(i);
     }
@@ -202,7 +260,7 @@ impl App {
             None => {
                 self.status = Status::Error(format!(
                     "preset {} has no measured data to show (the paper-b* presets have)",
-                    self.lab.preset.name
+                    self.lab.preset().name
                 ))
             }
         }
@@ -219,7 +277,7 @@ impl App {
             kind,
             Field::new(format!(
                 "{}-{what}.{}",
-                self.lab.preset.name,
+                self.lab.preset().name,
                 kind.extension()
             )),
         );
@@ -256,7 +314,7 @@ impl App {
         if self.fit_view() && self.lab.measured().is_none() {
             self.status = Status::Error(format!(
                 "preset {} has no measured data to fit (the paper-b* presets have)",
-                self.lab.preset.name
+                self.lab.preset().name
             ));
         }
     }

@@ -23,7 +23,14 @@ impl App {
                     match self.lab.load_preset(p) {
                         Ok(()) => {
                             self.t = self.lab.solution.t_start;
-                            self.status = Status::Info(description);
+                            self.status = Status::Info(match self.lab.own_data() {
+                                // The student's data stay; the preset is the model.
+                                Some(d) => format!(
+                                    "preset {name} for the model; your data {} kept (D drops them)",
+                                    d.name
+                                ),
+                                None => description,
+                            });
                         }
                         Err(e) => self.status = Status::Error(format!("preset {name}: {e}")),
                     }

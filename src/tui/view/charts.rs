@@ -42,8 +42,12 @@ fn event_lines(app: &App, balls: &[Who], theme: &Theme) -> Vec<VLine> {
         .collect()
 }
 
-/// The chart shown and its title.
+/// The chart shown and its title (counted: a click or drag on the chart must not
+/// build it again, see [`ChartDrawn`]).
 fn chart(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
+    app.view_cache
+        .charts_built
+        .set(app.view_cache.charts_built.get() + 1);
     if app.show_energy {
         energy(app, area, theme)
     } else if app.show_positions {
@@ -60,6 +64,41 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let inner = blk.inner(area);
     blk.render(area, buf);
     plot.render(inner, buf, theme);
+    app.view_cache
+        .chart_drawn
+        .set(Some(ChartDrawn::of(&plot, area, inner, theme)));
+}
+
+/// Where the chart was last drawn: enough to find the time under a cell without
+/// building the chart again (a drag on the chart sends many events). Any action may
+/// change the chart, so the app forgets it on each; moving the time does not.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ChartDrawn {
+    area: Rect,
+    ascii: bool,
+    monochrome: bool,
+    /// The plot's data cells (`None`: too small to draw).
+    data: Option<Rect>,
+    x_range: (f64, f64),
+}
+
+impl ChartDrawn {
+    fn of(plot: &Plot, area: Rect, inner: Rect, theme: &Theme) -> ChartDrawn {
+        ChartDrawn {
+            area,
+            ascii: theme.glyphs.ascii,
+            monochrome: monochrome(theme),
+            data: plot.data_area(inner, theme),
+            x_range: plot.x_range,
+        }
+    }
+
+    /// True if it was drawn in `area` with `theme`'s layout.
+    fn is_for(&self, area: Rect, theme: &Theme) -> bool {
+        self.area == area
+            && self.ascii == theme.glyphs.ascii
+            && self.monochrome == monochrome(theme)
+    }
 }
 
 /// The time under screen cell (`column`, `row`) of the chart drawn in `area`, if the
@@ -67,9 +106,21 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
 /// `theme` must be the one the chart is drawn with: the legend's rows (which depend
 /// on the glyph set and, in monochrome, on the series' names) push the plot down.
 pub fn time_at(app: &App, area: Rect, theme: &Theme, column: u16, row: u16) -> Option<f64> {
-    let (title, plot) = chart(app, area, theme);
-    let inner = block(title, theme).inner(area);
-    plot.x_at(inner, theme, column, row)
+    let drawn = app
+        .view_cache
+        .chart_drawn
+        .get()
+        .filter(|d| d.is_for(area, theme));
+    let drawn = drawn.unwrap_or_else(|| {
+        // Not drawn here yet (a caller without a screen): lay the chart out.
+        let (title, plot) = chart(app, area, theme);
+        ChartDrawn::of(&plot, area, block(title, theme).inner(area), theme)
+    });
+    let plot = drawn.data?;
+    if row < plot.y || row >= plot.bottom() {
+        return None;
+    }
+    crate::tui::plot::time_at_column(drawn.x_range, plot.x, plot.width, column)
 }
 
 /// The default theme (Unicode, colours), for callers that do not say which one draws.
@@ -95,7 +146,7 @@ fn pinned_series(app: &App, columns: usize, theme: &Theme, curves: &[Curve]) -> 
     if app.lab.pinned.is_none() {
         return Vec::new();
     }
-    let samples = app.lab.pinned_samples(columns);
+    let samples = app.pinned_samples(columns);
     // Without colour a dimmed braille line looks like the current run's: the pinned
     // run is drawn in dots of its own glyph then, under the current curves (ASCII draws
     // every line in its glyph).
@@ -325,7 +376,7 @@ fn line_fit_marks(l: &LineFit, theme: &Theme) -> (Vec<Series>, Vec<VLine>) {
 fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
     let sol = &app.lab.solution;
     let columns = usize::from(area.width.saturating_sub(10));
-    let samples = app.lab.samples(columns);
+    let samples = app.samples(columns);
     let (balls, which) = balls_shown(app.chart_ball);
     let curves: Vec<Curve> = balls
         .iter()
@@ -379,7 +430,7 @@ const POSITION: Dimension = Dimension::Length;
 fn positions(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
     let sol = &app.lab.solution;
     let columns = usize::from(area.width.saturating_sub(10));
-    let samples = app.lab.samples(columns);
+    let samples = app.samples(columns);
     let mut series = pinned_series(
         app,
         columns,
@@ -446,7 +497,7 @@ fn positions(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
 fn energy(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
     let sol = &app.lab.solution;
     let columns = usize::from(area.width.saturating_sub(10));
-    let split = app.lab.energies(columns);
+    let split = app.energies(columns);
     let letters = monochrome(theme) || theme.glyphs.ascii;
     let draw = if letters && !theme.glyphs.ascii {
         // Braille cannot carry a letter: mark each sample cell instead.
@@ -482,7 +533,7 @@ fn energy(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
             0,
             Series {
                 name: "pinned kinetic".into(),
-                points: app.lab.pinned_kinetic(columns).to_vec(),
+                points: app.pinned_kinetic(columns).to_vec(),
                 style: theme.dim,
                 glyph: ".",
                 draw: Draw::Line,

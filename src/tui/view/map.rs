@@ -47,7 +47,7 @@ fn regime_map(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         Regime::Recollide => theme.accent,
     };
     let b_max = 2.0 * radius * 0.99;
-    let grid = app.lab.regime_grid(cols, rows);
+    let grid = app.regime_grid(cols, rows);
     for rr in 0..rows {
         let e = 1.0 - rr as f64 / (rows - 1).max(1) as f64;
         let label = if rr == 0 || rr == rows - 1 || rr == rows / 2 {

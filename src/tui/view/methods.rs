@@ -60,7 +60,7 @@ pub fn render_diagram(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         WorkAxis::Time => ("time per run", "s"),
     };
     let title = super::title_within(
-        &format!(" Methods: max |v_cm - exact| against {per_run}  [u] axis  [c] back "),
+        &format!(" Methods: max |v_cm - exact| against {per_run}  [X] axis  [c] back "),
         area,
         theme,
     );

@@ -2,6 +2,7 @@
 //! writing into a [`Buffer`]. The terminal and the headless `render` both call
 //! [`draw`], so a script sees exactly what a user sees.
 
+mod cache;
 mod charts;
 mod fit;
 mod forces;
@@ -10,6 +11,7 @@ mod map;
 mod methods;
 mod params;
 
+pub use cache::ViewCache;
 pub use forces::ANSWERS;
 pub use params::param_at;
 pub use popups::data_rows;
@@ -218,7 +220,7 @@ pub(crate) fn computing<T>(
 fn status(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let g = theme.glyphs;
     let width = usize::from(area.width);
-    let right = g.ellipsize(&format!("preset {}", app.lab.preset.name), width / 3);
+    let right = g.ellipsize(&format!("preset {}", app.lab.preset().name), width / 3);
     let right_len = right.chars().count();
     let room = width.saturating_sub(right_len + 1);
     buf.set_string(area.right() - right_len as u16, area.y, &right, theme.dim);

@@ -347,7 +347,7 @@ fn draw_tags(app: &App, geo: &Geometry, buf: &mut Buffer, theme: &Theme) {
 /// differ now, cut with "…" to `width` characters.
 fn pinned_line(app: &App, width: u16, theme: &Theme) -> Option<String> {
     let p = app.lab.pinned.as_ref()?;
-    let changes = app.lab.pinned_changes();
+    let changes = &app.lab.pinned_changes;
     let body = if changes.is_empty() {
         "same parameters".to_string()
     } else {

@@ -1,0 +1,112 @@
+//! The lab's layers of settings — the table's defaults ← the preset ← the command
+//! line's flags ← the edits made in the app, newest last — and the one rule that
+//! settles them into a checked scene, its span and how the span ends. An edit is a
+//! layer entry: undo pops it, reset clears them all.
+
+use crate::physics::scene::{Scene, Span};
+use crate::settings::params::{Key, SceneError, SceneSpec};
+use crate::study::preset::Preset;
+
+use super::span::SpanEnd;
+
+/// One change made in the app: values set together (all or none), or how the span
+/// ends (the span key).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Edit {
+    Values(Vec<(Key, f64)>),
+    SpanEnd(SpanEnd),
+}
+
+/// The layers a lab's scene is settled from (the defaults are the table's own).
+#[derive(Clone, Debug)]
+pub struct Settings {
+    /// The preset the scene starts from.
+    pub preset: Preset,
+    /// The command line's values, SI.
+    pub flags: SceneSpec,
+    /// The app's edits, oldest first.
+    edits: Vec<Edit>,
+}
+
+impl Settings {
+    pub fn new(preset: Preset, flags: SceneSpec) -> Settings {
+        Settings {
+            preset,
+            flags,
+            edits: Vec::new(),
+        }
+    }
+
+    /// The app's edits, oldest first.
+    pub fn edits(&self) -> &[Edit] {
+        &self.edits
+    }
+
+    /// Adds an edit on top (check it with [`Settings::settle`]; [`Settings::undo`]
+    /// takes it back).
+    pub fn push(&mut self, edit: Edit) {
+        self.edits.push(edit);
+    }
+
+    /// Takes back the newest edit, if there is one.
+    pub fn undo(&mut self) -> Option<Edit> {
+        self.edits.pop()
+    }
+
+    /// Drops every edit: the scene as the preset and the flags give it.
+    pub fn reset(&mut self) {
+        self.edits.clear();
+    }
+
+    /// The scene, its span and how the span ends, by the span rule (see [`SpanEnd`]):
+    /// a preset's `t_end` holds until a layer above changes a value of the scene;
+    /// `--t-end` or a typed `t_end` is kept through later changes; the span key
+    /// chooses the automatic span or a multiple of it. The span's `t_end` is the fixed
+    /// end, if any (the solve gives the shown one).
+    pub fn settle(&self) -> Result<(Scene, Span, SpanEnd), SceneError> {
+        let mut spec = self.preset.spec.clone();
+        let mut end = match spec.get(Key::TEnd) {
+            Some(t_end) => SpanEnd::Fixed {
+                t_end,
+                from_preset: true,
+            },
+            None => SpanEnd::Auto,
+        };
+        let flags: Vec<(Key, f64)> = self.flags.given().collect();
+        set_values(&mut spec, &mut end, &flags);
+        for edit in &self.edits {
+            match edit {
+                Edit::Values(changes) => set_values(&mut spec, &mut end, changes),
+                Edit::SpanEnd(e) => end = *e,
+            }
+        }
+        // The end is `end`'s alone: a fixed one is checked with the scene.
+        let mut spec = spec.without(Key::TEnd);
+        if let SpanEnd::Fixed { t_end, .. } = end {
+            spec.set(Key::TEnd, t_end);
+        }
+        let (scene, span) = spec.resolve()?;
+        Ok((scene, span, end))
+    }
+}
+
+/// Writes `changes` into a layer's sum and moves the span's end by the rule: a
+/// `t_end` fixes it, a value of the scene ends a preset's `t_end`.
+fn set_values(spec: &mut SceneSpec, end: &mut SpanEnd, changes: &[(Key, f64)]) {
+    for &(key, value) in changes {
+        spec.set(key, value);
+        *end = match (key, *end) {
+            (Key::TEnd, _) => SpanEnd::Fixed {
+                t_end: value,
+                from_preset: false,
+            },
+            (
+                _,
+                SpanEnd::Fixed {
+                    from_preset: true, ..
+                },
+            ) if key.param().of_scene() => SpanEnd::Auto,
+            (_, end) => end,
+        };
+    }
+}

@@ -1,0 +1,151 @@
+//! What the charts and the map draw from the lab's snapshot that depends on the
+//! terminal's size, cached per snapshot and size, never recomputed per frame: the
+//! curve samples (about four per pixel column), the energies at them, the pinned run's
+//! samples and kinetic energy, and the regime grid. A new snapshot (any edit) or a new
+//! size makes them again; a frame that only moves the time (playback, a drag on the
+//! chart) reuses them.
+
+use std::cell::{Cell, RefCell};
+use std::rc::Rc;
+use std::sync::Arc;
+
+use crate::lab::Resolved;
+use crate::physics::derived::{Derived, Regime};
+use crate::physics::solution::{EnergySplit, Snapshot, Solution};
+use crate::tui::app::App;
+
+use super::charts::ChartDrawn;
+
+/// One cached view of a snapshot: the snapshot it belongs to (held, so its address
+/// cannot be reused by a newer one), the size, the values.
+type Cached<K, T> = RefCell<Option<(Arc<Resolved>, K, Rc<[T]>)>>;
+
+/// The app's per-size caches (UI state: the lab knows no terminal).
+#[derive(Clone, Debug, Default)]
+pub struct ViewCache {
+    /// Where the chart was last drawn (a click or drag finds its time from it).
+    pub(super) chart_drawn: Cell<Option<ChartDrawn>>,
+    /// How many times a chart was built (work counted, for the tests).
+    pub charts_built: Cell<u64>,
+    samples: Cached<usize, Snapshot>,
+    energies: Cached<usize, (f64, EnergySplit)>,
+    pinned_samples: Cached<usize, Snapshot>,
+    pinned_kinetic: Cached<usize, (f64, f64)>,
+    regimes: Cached<(usize, usize), Regime>,
+}
+
+/// `cell`'s values if they were made for `now` at `key`, else `make`'s, kept.
+fn cached<K: PartialEq + Copy, T>(
+    cell: &Cached<K, T>,
+    now: &Arc<Resolved>,
+    key: K,
+    make: impl FnOnce() -> Rc<[T]>,
+) -> Rc<[T]> {
+    if let Some((of, k, values)) = &*cell.borrow()
+        && Arc::ptr_eq(of, now)
+        && *k == key
+    {
+        return values.clone();
+    }
+    let values = make();
+    cell.replace(Some((Arc::clone(now), key, values.clone())));
+    values
+}
+
+impl ViewCache {
+    /// Forgets where the chart was drawn (an action may change its layout).
+    pub fn chart_changed(&self) {
+        self.chart_drawn.set(None);
+    }
+}
+
+impl App {
+    /// The exact states at the chart's sample times for a plot `columns` wide: about
+    /// four per column plus both sides of every event, once per scene and width.
+    pub fn samples(&self, columns: usize) -> Rc<[Snapshot]> {
+        let now = self.lab.resolved();
+        cached(&self.view_cache.samples, now, columns, || {
+            let sol = &now.solution;
+            sample_times(sol, (sol.t_start, sol.t_end), columns)
+                .into_iter()
+                .map(|t| sol.at(t))
+                .collect()
+        })
+    }
+
+    /// The energy split at the same times as [`App::samples`], once per scene and width.
+    pub fn energies(&self, columns: usize) -> Rc<[(f64, EnergySplit)]> {
+        let now = self.lab.resolved();
+        cached(&self.view_cache.energies, now, columns, || {
+            self.samples(columns)
+                .iter()
+                .map(|s| (s.t, now.solution.energy_at(s.t)))
+                .collect()
+        })
+    }
+
+    /// The pinned run's states over the current span (its own events kept sharp), once
+    /// per scene and width; empty when nothing is pinned.
+    pub fn pinned_samples(&self, columns: usize) -> Rc<[Snapshot]> {
+        let Some(p) = &self.lab.pinned else {
+            return Rc::from(Vec::new());
+        };
+        let now = self.lab.resolved();
+        cached(&self.view_cache.pinned_samples, now, columns, || {
+            let span = (now.solution.t_start, now.solution.t_end);
+            sample_times(&p.solution, span, columns)
+                .into_iter()
+                .map(|t| p.solution.at(t))
+                .collect()
+        })
+    }
+
+    /// The pinned run's kinetic energy at [`App::pinned_samples`]' times, J, once per
+    /// scene and width (the energy chart's A/B curve); empty when nothing is pinned.
+    pub fn pinned_kinetic(&self, columns: usize) -> Rc<[(f64, f64)]> {
+        let Some(p) = &self.lab.pinned else {
+            return Rc::from(Vec::new());
+        };
+        let now = self.lab.resolved();
+        cached(&self.view_cache.pinned_kinetic, now, columns, || {
+            self.pinned_samples(columns)
+                .iter()
+                .map(|s| (s.t, p.solution.energy_at(s.t).kinetic()))
+                .collect()
+        })
+    }
+
+    /// The regime over groove width (0 … 0.99 · 2R, across) and restitution (1 … 0,
+    /// down) for these balls, `cols × rows` cells, row by row; once per scene and size.
+    pub fn regime_grid(&self, cols: usize, rows: usize) -> Rc<[Regime]> {
+        let now = self.lab.resolved();
+        cached(&self.view_cache.regimes, now, (cols, rows), || {
+            let b_max = 2.0 * now.scene.radius * 0.99;
+            (0..rows)
+                .flat_map(|rr| (0..cols).map(move |c| (rr, c)))
+                .map(|(rr, c)| {
+                    let mut scene = now.scene;
+                    scene.width = b_max * c as f64 / (cols - 1).max(1) as f64;
+                    scene.restitution = 1.0 - rr as f64 / (rows - 1).max(1) as f64;
+                    Derived::of(&scene).regime
+                })
+                .collect()
+        })
+    }
+}
+
+/// Sample times: about four per column, plus both sides of every event so jumps and
+/// kinks are drawn where they are.
+fn sample_times(sol: &Solution, (t0, t1): (f64, f64), columns: usize) -> Vec<f64> {
+    let n = 4 * columns.max(1);
+    let dt = (t1 - t0) / n as f64;
+    let mut ts: Vec<f64> = (0..=n).map(|i| t0 + i as f64 * dt).collect();
+    for e in &sol.events {
+        ts.push(e.t);
+        ts.push(e.t - 1e-12 * (1.0 + e.t.abs()));
+    }
+    ts.retain(|t| *t >= t0 && *t <= t1);
+    ts.sort_by(f64::total_cmp);
+    ts.dedup();
+    ts
+}
