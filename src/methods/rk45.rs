@@ -167,6 +167,135 @@ fn crossed(which: usize, g0: f64, g1: f64) -> bool {
     }
 }
 
+/// The seven stages of one Dormand–Prince step (`k[0]` given, at `y`).
+type Stages = [[f64; 6]; 7];
+
+/// Fills stages 1 … 6 of a step of size `h` from `y` (stage 0 is the derivative at `y`).
+fn fill_stages(m: &Model, modes: &Modes, roll_dir: &[f64; 2], y: &Y, h: f64, k: &mut Stages) {
+    for i in 1..7 {
+        let yi: Y =
+            std::array::from_fn(|j| y[j] + h * (0..i).map(|l| A[i][l] * k[l][j]).sum::<f64>());
+        k[i] = rhs(m, modes, roll_dir, &yi);
+    }
+}
+
+/// The RMS of the embedded error estimate, each component over its tolerance
+/// `atol + rtol |y|` (> 1: the step is rejected).
+fn step_error(k: &Stages, h: f64, y: &Y, y_new: &Y, (rtol, atol): (f64, f64)) -> f64 {
+    let err = (0..6)
+        .map(|j| {
+            let e = h * (0..7).map(|i| E[i] * k[i][j]).sum::<f64>();
+            let sc = atol + rtol * y[j].abs().max(y_new[j].abs());
+            (e / sc).powi(2)
+        })
+        .sum::<f64>()
+        / 6.0;
+    err.sqrt()
+}
+
+/// The dense output of an accepted step at the fraction `theta` of it.
+fn dense(y: &Y, k: &Stages, h: f64, theta: f64) -> Y {
+    let q = [theta, theta * theta, theta.powi(3), theta.powi(4)];
+    std::array::from_fn(|j| {
+        y[j] + h
+            * (0..7)
+                .map(|i| k[i][j] * (0..4).map(|p| P[i][p] * q[p]).sum::<f64>())
+                .sum::<f64>()
+    })
+}
+
+/// The first switching-function zero inside an accepted step (its fraction of the
+/// step and which function), located to a time error below `tolerance`. Each
+/// function is sampled at quarters of the step too, so a gap that dips below zero and
+/// back is seen.
+fn first_switch(
+    m: &Model,
+    modes: &Modes,
+    (y, y_new): (&Y, &Y),
+    k: &Stages,
+    h: f64,
+    tolerance: f64,
+) -> Option<(f64, usize)> {
+    let g0 = switches(m, modes, y);
+    let mut first: Option<(f64, usize)> = None;
+    for (which, &g_start) in g0.iter().enumerate() {
+        let mut prev = (0.0, g_start);
+        for theta in [0.25, 0.5, 0.75, 1.0] {
+            let g = if theta == 1.0 {
+                switches(m, modes, y_new)[which]
+            } else {
+                switches(m, modes, &dense(y, k, h, theta))[which]
+            };
+            if crossed(which, prev.1, g) {
+                let (mut lo, mut hi) = (prev.0, theta);
+                // Bisect to a time error below the tolerance.
+                while (hi - lo) * h > tolerance * 1e-3 && hi - lo > 1e-15 {
+                    let mid = 0.5 * (lo + hi);
+                    let gm = switches(m, modes, &dense(y, k, h, mid))[which];
+                    if crossed(which, prev.1, gm) {
+                        hi = mid;
+                    } else {
+                        lo = mid;
+                    }
+                }
+                if first.is_none_or(|(f, _)| hi < f) {
+                    first = Some((hi, which));
+                }
+                break;
+            }
+            prev = (theta, g);
+        }
+    }
+    first
+}
+
+/// Why the run cannot go on at `t` with step `h`, if it cannot: the step budget
+/// spent, impacts accumulating faster than steps, or the step size collapsed.
+fn stall(out: &RunEnd, impacts: usize, t: f64, h: f64, s: &Settings) -> Option<String> {
+    if out.steps >= s.max_steps {
+        Some(format!(
+            "step budget of {} reached at t = {t:.6} s",
+            s.max_steps
+        ))
+    } else if impacts >= MAX_IMPACTS {
+        Some(format!(
+            "{impacts} impacts by t = {t:.9} s: they accumulate faster than steps can follow"
+        ))
+    } else if h < 1e-14 * t.abs().max(1.0) {
+        Some(format!("step size collapsed to {h:.1e} s at t = {t:.9} s"))
+    } else {
+        None
+    }
+}
+
+/// A ball's sliding ends (`which` 0 or 1): it rolls again, or it rolled to rest.
+fn end_sliding(y: &mut Y, modes: &Modes, i: usize) {
+    if modes[i] != 0 {
+        y[3 * i + 2] = y[3 * i + 1]; // rolls again
+    } else {
+        y[3 * i + 1] = 0.0; // rolled to rest
+        y[3 * i + 2] = 0.0;
+    }
+}
+
+/// How much the next step grows after an accepted one of error `err` (×0.2 … ×5).
+fn growth(err: f64) -> f64 {
+    if err == 0.0 {
+        5.0
+    } else {
+        (0.9 * err.powf(-0.2)).clamp(0.2, 5.0)
+    }
+}
+
+/// A rolling ball's spin follows its speed exactly (after an event).
+fn roll_on(y: &mut Y, modes: &Modes) {
+    for i in 0..2 {
+        if modes[i] == 0 {
+            y[3 * i + 2] = y[3 * i + 1];
+        }
+    }
+}
+
 pub(super) fn integrate(
     m: &Model,
     y0: Y,
@@ -175,13 +304,9 @@ pub(super) fn integrate(
     s: &Settings,
     obs: &mut dyn Observer,
 ) -> RunEnd {
-    let scale = y0
-        .iter()
-        .skip(1)
-        .step_by(3)
-        .map(|v| v.abs())
-        .fold(1e-3, f64::max);
-    let (rtol, atol) = (s.tolerance, s.tolerance * scale);
+    // The larger centre speed (at least 1 mm/s) scales the absolute tolerances.
+    let scale = [y0[1], y0[4]].iter().map(|v| v.abs()).fold(1e-3, f64::max);
+    let tolerances = (s.tolerance, s.tolerance * scale);
     let eps_v = 1e-12 * scale;
     let mut out = RunEnd {
         steps: 0,
@@ -201,25 +326,12 @@ pub(super) fn integrate(
     let mut modes = modes_of(&y, eps_v);
     let mut roll_dir = [direction(y[1]), direction(y[4])];
     let mut h = s.step.min(t1 - t0);
-    let mut k = [[0.0; 6]; 7];
+    let mut k: Stages = [[0.0; 6]; 7];
     let mut fresh = true;
     let mut impacts = 0;
     while t < t1 {
-        if out.steps >= s.max_steps {
-            out.stalled = Some(format!(
-                "step budget of {} reached at t = {t:.6} s",
-                s.max_steps
-            ));
-            break;
-        }
-        if impacts >= MAX_IMPACTS {
-            out.stalled = Some(format!(
-                "{impacts} impacts by t = {t:.9} s: they accumulate faster than steps can follow"
-            ));
-            break;
-        }
-        if h < 1e-14 * t.abs().max(1.0) {
-            out.stalled = Some(format!("step size collapsed to {h:.1e} s at t = {t:.9} s"));
+        if let Some(why) = stall(&out, impacts, t, h, s) {
+            out.stalled = Some(why);
             break;
         }
         h = h.min(t1 - t);
@@ -239,69 +351,18 @@ pub(super) fn integrate(
             out.rhs_evals += 1;
             fresh = false;
         }
-        for i in 1..7 {
-            let yi: Y =
-                std::array::from_fn(|j| y[j] + h * (0..i).map(|l| A[i][l] * k[l][j]).sum::<f64>());
-            k[i] = rhs(m, &modes, &roll_dir, &yi);
-        }
+        fill_stages(m, &modes, &roll_dir, &y, h, &mut k);
         out.rhs_evals += 6;
         let y_new: Y =
             std::array::from_fn(|j| y[j] + h * (0..7).map(|i| B[i] * k[i][j]).sum::<f64>());
-        let err = (0..6)
-            .map(|j| {
-                let e = h * (0..7).map(|i| E[i] * k[i][j]).sum::<f64>();
-                let sc = atol + rtol * y[j].abs().max(y_new[j].abs());
-                (e / sc).powi(2)
-            })
-            .sum::<f64>()
-            / 6.0;
-        let err = err.sqrt();
+        let err = step_error(&k, h, &y, &y_new, tolerances);
         if err > 1.0 {
             h *= (0.9 * err.powf(-0.2)).max(0.2);
             out.steps += 1;
             continue;
         }
         // Accepted: look for switching-function zeros inside the step.
-        let dense = |theta: f64| -> Y {
-            let q = [theta, theta * theta, theta.powi(3), theta.powi(4)];
-            std::array::from_fn(|j| {
-                y[j] + h
-                    * (0..7)
-                        .map(|i| k[i][j] * (0..4).map(|p| P[i][p] * q[p]).sum::<f64>())
-                        .sum::<f64>()
-            })
-        };
-        let g0 = switches(m, &modes, &y);
-        // Sample inside the step too, so a gap that dips below zero and back is seen.
-        let mut first: Option<(f64, usize)> = None;
-        for (which, &g_start) in g0.iter().enumerate() {
-            let mut prev = (0.0, g_start);
-            for theta in [0.25, 0.5, 0.75, 1.0] {
-                let g = if theta == 1.0 {
-                    switches(m, &modes, &y_new)[which]
-                } else {
-                    switches(m, &modes, &dense(theta))[which]
-                };
-                if crossed(which, prev.1, g) {
-                    let (mut lo, mut hi) = (prev.0, theta);
-                    // Bisect to a time error below the tolerance.
-                    while (hi - lo) * h > s.tolerance * 1e-3 && hi - lo > 1e-15 {
-                        let mid = 0.5 * (lo + hi);
-                        let gm = switches(m, &modes, &dense(mid))[which];
-                        if crossed(which, prev.1, gm) {
-                            hi = mid;
-                        } else {
-                            lo = mid;
-                        }
-                    }
-                    if first.is_none_or(|(f, _)| hi < f) {
-                        first = Some((hi, which));
-                    }
-                    break;
-                }
-                prev = (theta, g);
-            }
-        }
+        let first = first_switch(m, &modes, (&y, &y_new), &k, h, s.tolerance);
         out.steps += 1;
         if first.is_none() && switches(m, &modes, &y_new)[2] < 0.0 {
             // The balls overlap at the end of a step with no closing located: a whole
@@ -314,16 +375,11 @@ pub(super) fn integrate(
                 t += h;
                 y = y_new;
                 k[0] = k[6];
-                let factor = if err == 0.0 {
-                    5.0
-                } else {
-                    (0.9 * err.powf(-0.2)).clamp(0.2, 5.0)
-                };
-                h *= factor;
+                h *= growth(err);
             }
             Some((theta, which)) => {
                 t += theta * h;
-                y = dense(theta);
+                y = dense(&y, &k, h, theta);
                 if which == 2 {
                     collide(m, &mut y);
                     // The gap is closed: put the balls exactly in touch.
@@ -332,20 +388,10 @@ pub(super) fn integrate(
                     tracker.impact(t, &y, obs);
                     impacts += 1;
                 } else {
-                    let i = which;
-                    if modes[i] != 0 {
-                        y[3 * i + 2] = y[3 * i + 1]; // rolls again
-                    } else {
-                        y[3 * i + 1] = 0.0; // rolled to rest
-                        y[3 * i + 2] = 0.0;
-                    }
+                    end_sliding(&mut y, &modes, which);
                 }
                 modes = modes_of(&y, eps_v);
-                for i in 0..2 {
-                    if modes[i] == 0 {
-                        y[3 * i + 2] = y[3 * i + 1];
-                    }
-                }
+                roll_on(&mut y, &modes);
                 roll_dir = [direction(y[1]), direction(y[4])];
                 fresh = true;
             }

@@ -1,10 +1,10 @@
 //! Helpers shared by the integration tests.
 #![allow(dead_code)]
 
-use groovelab::cli::{self, DataArgs, SceneArgs};
+use groovelab::cli::{self, CliError, DataArgs, RenderArgs, SceneArgs};
 use groovelab::lab::Lab;
 use groovelab::physics::scene::{Ball, Scene, Span};
-use groovelab::settings::params::Key;
+use groovelab::settings::params::{Key, SceneSpec};
 use groovelab::study::preset::Preset;
 use groovelab::tui::app::{App, Library, ROWS};
 use groovelab::tui::theme::{Glyphs, Theme};
@@ -65,6 +65,32 @@ pub fn groovelab(args: &[&str]) -> std::process::Output {
 }
 
 // ---- The app without a terminal ------------------------------------------------------
+
+/// The scene options `--preset PRESET` with the scene options `values` over it.
+pub fn scene_of(preset: &str, values: SceneSpec) -> SceneArgs {
+    SceneArgs {
+        preset: Some(preset.to_string()),
+        values,
+    }
+}
+
+/// What `render` prints for `scene` (no data file) at `at` and `size` after `keys`,
+/// ASCII or Unicode, with the presets of `library`; or its error.
+pub fn render_text(
+    scene: &SceneArgs,
+    at: Option<f64>,
+    size: (u16, u16),
+    ascii: bool,
+    keys: Option<&str>,
+    library: Library,
+) -> Result<String, CliError> {
+    let args = RenderArgs {
+        at,
+        size,
+        keys: keys.map(str::to_string),
+    };
+    cli::render_with(scene, &DataArgs::default(), &args, ascii, library)
+}
 
 /// An empty preset folder of this test run's own (one per `area`, so a preset one area
 /// saves never shows in another's screens), so no user preset shows up.

@@ -3,14 +3,14 @@
 //! and Unicode. The numbers themselves are tested against the closed forms in
 //! `physics::forces`.
 
-use groovelab::cli::{DataArgs, RenderArgs, SceneArgs, render_with};
+use groovelab::cli::DataArgs;
 use groovelab::physics::derived::Regime;
 use groovelab::settings::params::SceneSpec;
 use groovelab::tui::app::{App, ChartBall, Library, Mode, View};
 use groovelab::tui::theme::{Glyphs, Theme};
 use groovelab::tui::{keys, view};
 
-use crate::common::{self, press, text};
+use crate::common::{self, press, scene_of, text};
 
 fn no_user_presets() -> Library {
     common::no_user_presets("forces")
@@ -21,23 +21,8 @@ fn app(preset: &str) -> App {
 }
 
 fn render(preset: &str, at: Option<f64>, size: (u16, u16), ascii: bool, keys: &str) -> String {
-    let scene = SceneArgs {
-        preset: Some(preset.to_string()),
-        values: SceneSpec::default(),
-    };
-    let args = RenderArgs {
-        at,
-        size,
-        keys: Some(keys.to_string()),
-    };
-    render_with(
-        &scene,
-        &DataArgs::default(),
-        &args,
-        ascii,
-        no_user_presets(),
-    )
-    .unwrap()
+    let scene = scene_of(preset, SceneSpec::default());
+    common::render_text(&scene, at, size, ascii, Some(keys), no_user_presets()).unwrap()
 }
 
 const SIZES: [(u16, u16); 3] = [(80, 24), (120, 40), (200, 60)];
@@ -308,10 +293,7 @@ fn snapshots_of_the_forces_view() {
     ];
     for (name, preset, at, keys) in cases {
         // One app per case, drawn at every size and glyph set.
-        let scene = SceneArgs {
-            preset: Some(preset.to_string()),
-            values: SceneSpec::default(),
-        };
+        let scene = scene_of(preset, SceneSpec::default());
         let data = DataArgs::default();
         let a = common::rendered(&scene, &data, Some(at), Some(keys), no_user_presets());
         for (w, h) in SIZES {

@@ -6,7 +6,7 @@ use groovelab::cli::{self, DataArgs, RenderArgs, SceneArgs, TrackRole, render_wi
 use groovelab::settings::params::{Key, SceneSpec};
 use groovelab::tui::app::Library;
 
-use crate::common::{self, groovelab};
+use crate::common::{self, groovelab, scene_of};
 
 const EXAMPLE: &str = "docs/video/paper-b4.9-tracker.txt";
 
@@ -20,10 +20,7 @@ fn data(extra: impl FnOnce(&mut DataArgs)) -> DataArgs {
 }
 
 fn scene(values: SceneSpec) -> SceneArgs {
-    SceneArgs {
-        preset: Some("paper-b4.9".into()),
-        values,
-    }
+    scene_of("paper-b4.9", values)
 }
 
 fn no_user_presets() -> Library {
@@ -195,10 +192,7 @@ fn charts_show_error_bars_and_the_fit_panel_both_fits() {
 /// The screen `render` draws after `keys`, the status line's message left out (an
 /// edit in the app reports itself there; flags say nothing).
 fn screen(preset: &str, values: SceneSpec, file: Option<&str>, keys: &str) -> String {
-    let scene = SceneArgs {
-        preset: Some(preset.into()),
-        values,
-    };
+    let scene = scene_of(preset, values);
     let data = DataArgs {
         data: file.into_iter().map(Into::into).collect(),
         ..DataArgs::default()

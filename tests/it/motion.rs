@@ -2,7 +2,7 @@
 //! measured frames can be stepped through, the chart seeks on a click, the energy
 //! chart, and the A/B comparison with a pinned run. App logic and `render` snapshots.
 
-use groovelab::cli::{DataArgs, RenderArgs, SceneArgs, render_with};
+use groovelab::cli::DataArgs;
 use groovelab::lab::{Lab, SpanEnd};
 use groovelab::physics::solution::EventKind;
 use groovelab::settings::params::{Key, SceneSpec};
@@ -12,7 +12,7 @@ use groovelab::tui::theme::{Glyphs, Theme};
 use groovelab::tui::view;
 use ratatui::layout::Rect;
 
-use crate::common::{self, press, select, text};
+use crate::common::{self, press, scene_of, select, text};
 
 fn no_user_presets() -> Library {
     common::no_user_presets("motion")
@@ -31,20 +31,13 @@ fn render(
     ascii: bool,
     keys: &str,
 ) -> Result<String, String> {
-    let scene = SceneArgs {
-        preset: Some(preset.to_string()),
-        values,
-    };
-    let args = RenderArgs {
+    let keys = (!keys.is_empty()).then_some(keys);
+    common::render_text(
+        &scene_of(preset, values),
         at,
         size,
-        keys: (!keys.is_empty()).then(|| keys.to_string()),
-    };
-    render_with(
-        &scene,
-        &DataArgs::default(),
-        &args,
         ascii,
+        keys,
         no_user_presets(),
     )
     .map_err(|e| e.to_string())
@@ -643,10 +636,7 @@ fn snapshots_of_the_whole_motion_energy_and_pin() {
     ];
     for (name, preset, values, at, keys) in cases {
         // One app per case, drawn at every size and glyph set.
-        let scene = SceneArgs {
-            preset: Some(preset.to_string()),
-            values,
-        };
+        let scene = scene_of(preset, values);
         let data = DataArgs::default();
         let a = common::rendered(&scene, &data, at, Some(keys), no_user_presets());
         for (w, h) in SIZES {

@@ -3,7 +3,7 @@
 //! number read back from the rendered text equals the lab's value to the precision
 //! it is printed with.
 
-use groovelab::cli::{self, DataArgs, SceneArgs};
+use groovelab::cli::{self, DataArgs};
 use groovelab::lab::jobs::State;
 use groovelab::physics::story::{After, after_first_impact};
 use groovelab::settings::params::{Key, SceneSpec};
@@ -12,15 +12,12 @@ use groovelab::tui::theme::{Glyphs, Theme};
 use groovelab::tui::{keys, replay, view};
 use ratatui::layout::Rect;
 
-use crate::common;
+use crate::common::{self, scene_of};
 
 const SIZES: [(u16, u16); 3] = [(80, 24), (120, 40), (200, 60)];
 
 fn app(preset: &str, values: SceneSpec, data: Option<&str>, keys_: &str) -> App {
-    let scene = SceneArgs {
-        preset: Some(preset.into()),
-        values,
-    };
+    let scene = scene_of(preset, values);
     let data = DataArgs {
         data: data.into_iter().map(Into::into).collect(),
         ..DataArgs::default()

@@ -2,17 +2,17 @@
 //! numbers are checked against the closed forms and conservation laws, so a recorded
 //! value is never trusted just because the program printed it.
 
-use groovelab::cli::{Format, SceneArgs, SimulateArgs, simulate};
+use groovelab::cli::{Format, SimulateArgs, simulate};
 use groovelab::physics::closed_form as cf;
 use groovelab::physics::model;
+use groovelab::settings::params::SceneSpec;
 use groovelab::study::preset::Preset;
 use serde_json::Value;
 
+use crate::common::scene_of;
+
 fn run_json(preset: &str) -> Value {
-    let args = SceneArgs {
-        preset: Some(preset.to_string()),
-        ..SceneArgs::default()
-    };
+    let args = scene_of(preset, SceneSpec::default());
     let out = simulate(
         &args,
         &SimulateArgs {

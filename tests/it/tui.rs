@@ -1,15 +1,15 @@
 //! The lab without a terminal: key → action → state, and the headless screen that
 //! `render` prints (insta snapshots, checked by eye when recorded).
 
-use groovelab::cli::{DataArgs, RenderArgs, SceneArgs, render_with};
+use groovelab::cli::DataArgs;
 use groovelab::lab::jobs::State;
 use groovelab::physics::derived::Regime;
-use groovelab::settings::params::Key;
+use groovelab::settings::params::{Key, SceneSpec};
 use groovelab::study::preset::Preset;
 use groovelab::tui::app::{App, Library, Mode, ROWS, Status, View};
 use groovelab::tui::keys;
 
-use crate::common::{self, press, select, text};
+use crate::common::{self, press, scene_of, select, text};
 
 fn no_user_presets() -> Library {
     common::no_user_presets("tui")
@@ -20,23 +20,8 @@ fn app(preset: &str) -> App {
 }
 
 fn screen(preset: &str, at: f64, size: (u16, u16), ascii: bool, keys: Option<&str>) -> String {
-    let scene = SceneArgs {
-        preset: Some(preset.to_string()),
-        ..SceneArgs::default()
-    };
-    let args = RenderArgs {
-        at: Some(at),
-        size,
-        keys: keys.map(str::to_string),
-    };
-    render_with(
-        &scene,
-        &DataArgs::default(),
-        &args,
-        ascii,
-        no_user_presets(),
-    )
-    .unwrap()
+    let scene = scene_of(preset, SceneSpec::default());
+    common::render_text(&scene, Some(at), size, ascii, keys, no_user_presets()).unwrap()
 }
 
 #[test]
@@ -536,10 +521,7 @@ fn phase_times(preset: &str) -> Vec<f64> {
 /// The app `render --preset PRESET --at AT --keys KEYS` draws, ready to be drawn at any
 /// size and glyph set.
 fn shown(preset: &str, at: f64, keys: Option<&str>) -> App {
-    let scene = SceneArgs {
-        preset: Some(preset.to_string()),
-        ..SceneArgs::default()
-    };
+    let scene = scene_of(preset, SceneSpec::default());
     common::rendered(
         &scene,
         &DataArgs::default(),
@@ -1199,10 +1181,7 @@ fn export_writes_the_run_as_csv_and_the_chart_as_svg() {
     let csv = std::fs::read_to_string(&path).unwrap();
     assert!(matches!(&a.status, Status::Info(i) if i.contains(&path.display().to_string())));
     // The same bytes as `simulate --format csv --sample 1ms`.
-    let scene = SceneArgs {
-        preset: Some("paper-b4.9".into()),
-        ..SceneArgs::default()
-    };
+    let scene = scene_of("paper-b4.9", SceneSpec::default());
     let cli = simulate(
         &scene,
         &SimulateArgs {

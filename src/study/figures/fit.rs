@@ -3,21 +3,34 @@
 
 use plotters::prelude::*;
 
+use plotters::coord::Shift;
+
 use super::{FigureError, finite_bounds, linear_axis};
 use crate::physics::scene::Scene;
+use crate::physics::solution::Solution;
+use crate::settings::units::Dimension;
+use crate::study::fit::Fits;
+use crate::study::measured::series::Measured;
 
-/// The fit figure: measured v_cm and v_t, the fitted model, the paper's line fits over
-/// their window, and the residuals below.
-pub fn fit_figure(
-    scene: &Scene,
-    m: &crate::study::measured::series::Measured,
-    fits: &crate::study::fit::Fits,
-) -> Result<String, FigureError> {
+/// A part of the figure (the velocities above, the residuals below).
+type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
+
+const BLUE: RGBColor = RGBColor(31, 119, 180);
+const ORANGE: RGBColor = RGBColor(255, 127, 14);
+
+/// The scene with the fitted values.
+fn fitted_scene(scene: &Scene, fits: &Fits) -> Scene {
     let mut fitted = *scene;
     fitted.mu = fits.model_fit.mu;
     fitted.left.v0 = fits.model_fit.v0;
     fitted.right.v0 = fits.model_fit.v0;
     fitted.restitution = fits.model_fit.restitution;
+    fitted
+}
+
+/// The fit figure: measured v_cm and v_t, the fitted model, the paper's line fits over
+/// their window, and the residuals below.
+pub fn fit_figure(scene: &Scene, m: &Measured, fits: &Fits) -> Result<String, FigureError> {
     let Some((t0, t1)) = finite_bounds(m.t.iter().copied()) else {
         return Err(FigureError::NothingToDraw(
             "the measured series has no finite time to plot",
@@ -25,155 +38,174 @@ pub fn fit_figure(
     };
     let (t0, t1) = linear_axis(t0, t1);
     let sol = crate::physics::engine::solve(
-        &fitted,
+        &fitted_scene(scene, fits),
         &crate::physics::scene::Span {
             t_start: t0.min(-1e-3),
             t_end: Some(t1.max(1e-3)),
         },
     );
-    let n = 600;
-    let ts: Vec<f64> = (0..=n)
-        .map(|i| t0 + (t1 - t0) * i as f64 / n as f64)
-        .collect();
-    let model: Vec<(f64, f64, f64)> = ts
-        .iter()
-        .map(|&t| {
-            let s = sol.at(t);
-            (t, s.left.v, s.left.u)
-        })
-        .collect();
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, (900, 700)).into_drawing_area();
         root.fill(&WHITE)?;
         let (top, bottom) = root.split_vertically(480);
-        let values = m
-            .v_cm
-            .iter()
-            .chain(&m.v_t)
-            .copied()
-            .chain(model.iter().flat_map(|p| [p.1, p.2]));
-        // Non-finite values (a model that overflowed) are left out of the range and
-        // the drawing; the range is padded by 0.1 m/s as before.
-        let (lo, hi) = finite_bounds(values).unwrap_or((0.0, 0.0));
-        let (lo, hi) = linear_axis(lo - 0.1, hi + 0.1);
-        let fit = |(t, v): (f64, f64)| (near(t, (t0, t1)), near(v, (lo, hi)));
-        let mf = &fits.model_fit;
-        let mut chart = ChartBuilder::on(&top)
-            .caption(
-                format!(
-                    "b = {:.2} cm: model fit mu = {:.3} +- {:.3}, line fits mu_cm = {:.3}, mu_t = {:.3}",
-                    scene.width * 100.0,
-                    mf.mu,
-                    2.0 * mf.mu_se,
-                    fits.line_fit.mu_cm,
-                    fits.line_fit.mu_t
-                ),
-                ("sans-serif", 18),
-            )
-            .margin(12)
-            .x_label_area_size(35)
-            .y_label_area_size(55)
-            .build_cartesian_2d(t0..t1, lo..hi)?;
-        chart
-            .configure_mesh()
-            .x_desc("t (s)")
-            .y_desc("v (m/s)")
-            .draw()?;
-        let blue = RGBColor(31, 119, 180);
-        let orange = RGBColor(255, 127, 14);
-        // The model as lines, the data as markers: v_cm (index 1) blue, v_t (2) orange.
-        for (j, colour, name) in [(1, blue, "v_cm"), (2, orange, "v_t")] {
-            let pick = move |p: &(f64, f64, f64)| (p.0, if j == 1 { p.1 } else { p.2 });
-            chart
-                .draw_series(LineSeries::new(
-                    model.iter().map(pick).filter(|p| finite(*p)).map(fit),
-                    colour.stroke_width(2),
-                ))?
-                .label(format!("model {name}"))
-                .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2))
-                });
-        }
-        chart
-            .draw_series(
-                m.t.iter()
-                    .zip(&m.v_cm)
-                    .map(|(t, v)| (*t, *v))
-                    .filter(|p| finite(*p))
-                    .map(|p| Cross::new(fit(p), 4, blue)),
-            )?
-            .label("measured v_cm")
-            .legend(move |(x, y)| Cross::new((x + 10, y), 4, blue));
-        chart
-            .draw_series(
-                m.t.iter()
-                    .zip(&m.v_t)
-                    .map(|(t, v)| (*t, *v))
-                    .filter(|p| finite(*p))
-                    .map(|p| Circle::new(fit(p), 3, orange)),
-            )?
-            .label("measured v_t")
-            .legend(move |(x, y)| Circle::new((x + 10, y), 3, orange));
-        // The line fits over their window.
-        let l = &fits.line_fit;
-        for (line, colour) in l.lines.iter().zip([blue, orange]) {
-            chart.draw_series(LineSeries::new(
-                [l.from, l.to]
-                    .map(|t| (t, line.intercept + line.slope * t))
-                    .into_iter()
-                    .filter(|p| finite(*p))
-                    .map(fit),
-                colour.mix(0.6).stroke_width(1),
-            ))?;
-        }
-        chart
-            .configure_series_labels()
-            .border_style(BLACK)
-            .background_style(WHITE.mix(0.9))
-            .position(SeriesLabelPosition::LowerRight)
-            .draw()?;
-        // Residuals.
-        let res: Vec<(f64, f64, f64)> =
-            m.t.iter()
-                .enumerate()
-                .map(|(i, &t)| {
-                    let s = sol.at(t);
-                    (t, m.v_cm[i] - s.left.v, m.v_t[i] - s.left.u)
-                })
-                .collect();
-        let rmax = res
-            .iter()
-            .flat_map(|r| [r.1.abs(), r.2.abs()])
-            .filter(|r| r.is_finite())
-            .fold(0.01, f64::max)
-            .min(1.0);
-        let mut rc = ChartBuilder::on(&bottom)
-            .margin(12)
-            .x_label_area_size(35)
-            .y_label_area_size(55)
-            .build_cartesian_2d(t0..t1, -rmax..rmax)?;
-        rc.configure_mesh()
-            .x_desc("t (s)")
-            .y_desc("data - model (m/s)")
-            .draw()?;
-        let fit = |(t, r): (f64, f64)| (near(t, (t0, t1)), near(r, (-rmax, rmax)));
-        rc.draw_series(
-            res.iter()
-                .map(|r| (r.0, r.1))
-                .filter(|p| finite(*p))
-                .map(|p| Cross::new(fit(p), 4, blue)),
-        )?;
-        rc.draw_series(
-            res.iter()
-                .map(|r| (r.0, r.2))
-                .filter(|p| finite(*p))
-                .map(|p| Circle::new(fit(p), 3, orange)),
-        )?;
-        rc.draw_series(LineSeries::new([(t0, 0.0), (t1, 0.0)], BLACK))?;
+        draw_fit(&top, scene, m, fits, &sol, (t0, t1))?;
+        draw_residuals(&bottom, m, &sol, (t0, t1))?;
         root.present()?;
     }
     Ok(svg)
+}
+
+/// The upper chart: the model (600 points over the time axis) as lines, the data as
+/// markers (v_cm blue, v_t orange), and the paper's line fits over their window.
+fn draw_fit(
+    area: &Area,
+    scene: &Scene,
+    m: &Measured,
+    fits: &Fits,
+    sol: &Solution,
+    (t0, t1): (f64, f64),
+) -> Result<(), FigureError> {
+    let n = 600;
+    let model: Vec<(f64, f64, f64)> = (0..=n)
+        .map(|i| {
+            let t = t0 + (t1 - t0) * i as f64 / n as f64;
+            let s = sol.at(t);
+            (t, s.left.v, s.left.u)
+        })
+        .collect();
+    let values = m
+        .v_cm
+        .iter()
+        .chain(&m.v_t)
+        .copied()
+        .chain(model.iter().flat_map(|p| [p.1, p.2]));
+    // Non-finite values (a model that overflowed) are left out of the range and
+    // the drawing; the range is padded by 0.1 m/s as before.
+    let (lo, hi) = finite_bounds(values).unwrap_or((0.0, 0.0));
+    let (lo, hi) = linear_axis(lo - 0.1, hi + 0.1);
+    let fit = |(t, v): (f64, f64)| (near(t, (t0, t1)), near(v, (lo, hi)));
+    let mf = &fits.model_fit;
+    let mut chart = ChartBuilder::on(area)
+        .caption(
+            format!(
+                "b = {:.2} {}: model fit mu = {:.3} +- {:.3}, line fits mu_cm = {:.3}, mu_t = {:.3}",
+                Dimension::Length.to_display(scene.width),
+                Dimension::Length.display_unit().0,
+                mf.mu,
+                2.0 * mf.mu_se,
+                fits.line_fit.mu_cm,
+                fits.line_fit.mu_t
+            ),
+            ("sans-serif", 18),
+        )
+        .margin(12)
+        .x_label_area_size(35)
+        .y_label_area_size(55)
+        .build_cartesian_2d(t0..t1, lo..hi)?;
+    chart
+        .configure_mesh()
+        .x_desc("t (s)")
+        .y_desc("v (m/s)")
+        .draw()?;
+    for (j, colour, name) in [(1, BLUE, "v_cm"), (2, ORANGE, "v_t")] {
+        let pick = move |p: &(f64, f64, f64)| (p.0, if j == 1 { p.1 } else { p.2 });
+        chart
+            .draw_series(LineSeries::new(
+                model.iter().map(pick).filter(|p| finite(*p)).map(fit),
+                colour.stroke_width(2),
+            ))?
+            .label(format!("model {name}"))
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2))
+            });
+    }
+    chart
+        .draw_series(
+            m.t.iter()
+                .zip(&m.v_cm)
+                .map(|(t, v)| (*t, *v))
+                .filter(|p| finite(*p))
+                .map(|p| Cross::new(fit(p), 4, BLUE)),
+        )?
+        .label("measured v_cm")
+        .legend(move |(x, y)| Cross::new((x + 10, y), 4, BLUE));
+    chart
+        .draw_series(
+            m.t.iter()
+                .zip(&m.v_t)
+                .map(|(t, v)| (*t, *v))
+                .filter(|p| finite(*p))
+                .map(|p| Circle::new(fit(p), 3, ORANGE)),
+        )?
+        .label("measured v_t")
+        .legend(move |(x, y)| Circle::new((x + 10, y), 3, ORANGE));
+    let l = &fits.line_fit;
+    for (line, colour) in l.lines.iter().zip([BLUE, ORANGE]) {
+        chart.draw_series(LineSeries::new(
+            [l.from, l.to]
+                .map(|t| (t, line.intercept + line.slope * t))
+                .into_iter()
+                .filter(|p| finite(*p))
+                .map(fit),
+            colour.mix(0.6).stroke_width(1),
+        ))?;
+    }
+    chart
+        .configure_series_labels()
+        .border_style(BLACK)
+        .background_style(WHITE.mix(0.9))
+        .position(SeriesLabelPosition::LowerRight)
+        .draw()?;
+    Ok(())
+}
+
+/// The lower chart: data − model at each measured time (v_cm crosses, v_t circles),
+/// on a symmetric axis of at least ±0.01 m/s and at most ±1 m/s.
+fn draw_residuals(
+    area: &Area,
+    m: &Measured,
+    sol: &Solution,
+    (t0, t1): (f64, f64),
+) -> Result<(), FigureError> {
+    let res: Vec<(f64, f64, f64)> =
+        m.t.iter()
+            .enumerate()
+            .map(|(i, &t)| {
+                let s = sol.at(t);
+                (t, m.v_cm[i] - s.left.v, m.v_t[i] - s.left.u)
+            })
+            .collect();
+    let rmax = res
+        .iter()
+        .flat_map(|r| [r.1.abs(), r.2.abs()])
+        .filter(|r| r.is_finite())
+        .fold(0.01, f64::max)
+        .min(1.0);
+    let mut rc = ChartBuilder::on(area)
+        .margin(12)
+        .x_label_area_size(35)
+        .y_label_area_size(55)
+        .build_cartesian_2d(t0..t1, -rmax..rmax)?;
+    rc.configure_mesh()
+        .x_desc("t (s)")
+        .y_desc("data - model (m/s)")
+        .draw()?;
+    let fit = |(t, r): (f64, f64)| (near(t, (t0, t1)), near(r, (-rmax, rmax)));
+    rc.draw_series(
+        res.iter()
+            .map(|r| (r.0, r.1))
+            .filter(|p| finite(*p))
+            .map(|p| Cross::new(fit(p), 4, BLUE)),
+    )?;
+    rc.draw_series(
+        res.iter()
+            .map(|r| (r.0, r.2))
+            .filter(|p| finite(*p))
+            .map(|p| Circle::new(fit(p), 3, ORANGE)),
+    )?;
+    rc.draw_series(LineSeries::new([(t0, 0.0), (t1, 0.0)], BLACK))?;
+    Ok(())
 }
 
 /// Both coordinates finite.

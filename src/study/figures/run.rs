@@ -3,7 +3,12 @@
 
 use plotters::prelude::*;
 
+use plotters::coord::types::RangedCoordf64;
+
 use super::{FigureError, linear_axis};
+use crate::physics::solution::{Snapshot, Solution};
+use crate::settings::units::Dimension;
+use crate::study::measured::series::Measured;
 
 /// Which chart of a run [`run_chart`] draws: the app's velocity chart of one or both
 /// balls, or the positions of both.
@@ -13,53 +18,78 @@ pub enum RunChart {
     Positions,
 }
 
-/// A run's chart, as the app's chart panel shows it: v_cm(t) and v_t(t) of the chosen
-/// balls (with the measured left-ball points, if given) or x(t) of both balls, and a
-/// dashed line at every labelled event.
-pub fn run_chart(
-    sol: &crate::physics::solution::Solution,
-    which: RunChart,
-    measured: Option<&crate::study::measured::series::Measured>,
-) -> Result<String, FigureError> {
-    use crate::physics::solution::Snapshot;
+type Pick = fn(&Snapshot) -> f64;
+
+/// A curve of the chart: legend name, what it plots of a state, colour.
+type Curve = (String, Pick, RGBColor);
+
+/// Where a chart's axes land in the SVG.
+type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
+
+const BLUE: RGBColor = RGBColor(31, 119, 180);
+const ORANGE: RGBColor = RGBColor(255, 127, 14);
+const PURPLE: RGBColor = RGBColor(148, 103, 189);
+const BROWN: RGBColor = RGBColor(140, 86, 75);
+const RED: RGBColor = RGBColor(214, 39, 40);
+
+/// About one state per SVG pixel column, and one at each event, in time order.
+fn run_samples(sol: &Solution) -> Vec<Snapshot> {
     let (t0, t1) = (sol.t_start, sol.t_end);
-    // About one sample per SVG pixel column; the events add their own.
     let n = 800;
-    let samples: Vec<Snapshot> = (0..=n)
+    let mut samples: Vec<Snapshot> = (0..=n)
         .map(|i| sol.at(t0 + (t1 - t0) * i as f64 / n as f64))
         .chain(sol.visible_events().map(|e| sol.at(e.t)))
         .collect();
-    let mut samples = samples;
     samples.sort_by(|a, b| a.t.total_cmp(&b.t));
-    type Pick = fn(&Snapshot) -> f64;
-    let blue = RGBColor(31, 119, 180);
-    let orange = RGBColor(255, 127, 14);
-    let purple = RGBColor(148, 103, 189);
-    let brown = RGBColor(140, 86, 75);
-    let red = RGBColor(214, 39, 40);
-    let (curves, y_desc, title): (Vec<(&str, Pick, RGBColor)>, &str, &str) = match which {
-        RunChart::Positions => (
-            vec![
-                ("x left (cm)", |s| s.left.x * 100.0, blue),
-                ("x right (cm)", |s| s.right.x * 100.0, purple),
-            ],
-            "x (cm)",
-            "x(t) of both balls",
-        ),
+    samples
+}
+
+/// The curves of `which`, the y axis's name and the chart's title. Positions are in
+/// the display unit of lengths.
+fn curves_of(which: RunChart) -> (Vec<Curve>, String, &'static str) {
+    match which {
+        RunChart::Positions => {
+            let unit = Dimension::Length.display_unit().0;
+            (
+                vec![
+                    (
+                        format!("x left ({unit})"),
+                        |s| Dimension::Length.to_display(s.left.x),
+                        BLUE,
+                    ),
+                    (
+                        format!("x right ({unit})"),
+                        |s| Dimension::Length.to_display(s.right.x),
+                        PURPLE,
+                    ),
+                ],
+                format!("x ({unit})"),
+                "x(t) of both balls",
+            )
+        }
         RunChart::Velocities { left, right } => {
-            let mut c: Vec<(&str, Pick, RGBColor)> = Vec::new();
+            let mut c: Vec<Curve> = Vec::new();
             if left {
-                c.push(("v_cm left", |s| s.left.v, blue));
-                c.push(("v_t left", |s| s.left.u, orange));
+                c.push(("v_cm left".into(), |s| s.left.v, BLUE));
+                c.push(("v_t left".into(), |s| s.left.u, ORANGE));
             }
             if right {
-                c.push(("v_cm right", |s| s.right.v, purple));
-                c.push(("v_t right", |s| s.right.u, brown));
+                c.push(("v_cm right".into(), |s| s.right.v, PURPLE));
+                c.push(("v_t right".into(), |s| s.right.u, BROWN));
             }
-            (c, "v (m/s)", "v_cm(t) and v_t(t)")
+            (
+                c,
+                format!("v ({})", Dimension::Speed.si_unit()),
+                "v_cm(t) and v_t(t)",
+            )
         }
-    };
-    let measured = measured.filter(|_| which != RunChart::Positions);
+    }
+}
+
+/// The y range that holds every curve and measured value, padded by 5 %.
+/// linear_axis first clamps the range (so the pad is finite), then again after the
+/// pad: no data (an infinite fold), NaN or a flat run still give a drawable axis.
+fn value_range(curves: &[Curve], samples: &[Snapshot], measured: Option<&Measured>) -> (f64, f64) {
     let values = curves
         .iter()
         .flat_map(|(_, f, _)| samples.iter().map(f))
@@ -72,13 +102,50 @@ pub fn run_chart(
     let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |a, v| {
         (a.0.min(v), a.1.max(v))
     });
-    // linear_axis first clamps the range (so the pad is finite), then again after the
-    // 5 % pad: no data (an infinite fold), NaN or a flat run still give a drawable axis.
     let (lo, hi) = linear_axis(lo, hi);
     let pad = 0.05 * (hi - lo).max(1e-3);
-    let (lo, hi) = linear_axis(lo - pad, hi + pad);
-    let (t0, t1) = linear_axis(t0, t1);
+    linear_axis(lo - pad, hi + pad)
+}
+
+/// The measured left-ball points within the time axis: v_cm as crosses, v_t as circles.
+fn draw_measured(chart: &mut Chart, m: &Measured, (t0, t1): (f64, f64)) -> Result<(), FigureError> {
+    let inside = |t: &f64| (t0..=t1).contains(t);
+    chart
+        .draw_series(
+            m.t.iter()
+                .zip(&m.v_cm)
+                .filter(|(t, v)| inside(t) && v.is_finite())
+                .map(|(t, v)| Cross::new((*t, *v), 4, RED)),
+        )?
+        .label("measured v_cm")
+        .legend(move |(x, y)| Cross::new((x + 10, y), 4, RED));
+    chart
+        .draw_series(
+            m.t.iter()
+                .zip(&m.v_t)
+                .filter(|(t, v)| inside(t) && v.is_finite())
+                .map(|(t, v)| Circle::new((*t, *v), 3, RED)),
+        )?
+        .label("measured v_t")
+        .legend(move |(x, y)| Circle::new((x + 10, y), 3, RED));
+    Ok(())
+}
+
+/// A run's chart, as the app's chart panel shows it: v_cm(t) and v_t(t) of the chosen
+/// balls (with the measured left-ball points, if given) or x(t) of both balls, and a
+/// dashed line at every labelled event.
+pub fn run_chart(
+    sol: &Solution,
+    which: RunChart,
+    measured: Option<&Measured>,
+) -> Result<String, FigureError> {
+    let samples = run_samples(sol);
+    let (curves, y_desc, title) = curves_of(which);
+    let measured = measured.filter(|_| which != RunChart::Positions);
+    let (lo, hi) = value_range(&curves, &samples, measured);
+    let (t0, t1) = linear_axis(sol.t_start, sol.t_end);
     let scene = &sol.scene;
+    let cm = |v: f64| Dimension::Length.to_display(v);
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, (900, 560)).into_drawing_area();
@@ -86,11 +153,12 @@ pub fn run_chart(
         let mut chart = ChartBuilder::on(&root)
             .caption(
                 format!(
-                    "{title}: b = {:.2} cm, R = {:.2} cm, mu_k = {}, e = {}",
-                    scene.width * 100.0,
-                    scene.radius * 100.0,
+                    "{title}: b = {:.2} {unit}, R = {:.2} {unit}, mu_k = {}, e = {}",
+                    cm(scene.width),
+                    cm(scene.radius),
                     scene.mu,
-                    scene.restitution
+                    scene.restitution,
+                    unit = Dimension::Length.display_unit().0,
                 ),
                 ("sans-serif", 18),
             )
@@ -124,25 +192,7 @@ pub fn run_chart(
                 });
         }
         if let Some(m) = measured {
-            let inside = |t: &f64| (t0..=t1).contains(t);
-            chart
-                .draw_series(
-                    m.t.iter()
-                        .zip(&m.v_cm)
-                        .filter(|(t, v)| inside(t) && v.is_finite())
-                        .map(|(t, v)| Cross::new((*t, *v), 4, red)),
-                )?
-                .label("measured v_cm")
-                .legend(move |(x, y)| Cross::new((x + 10, y), 4, red));
-            chart
-                .draw_series(
-                    m.t.iter()
-                        .zip(&m.v_t)
-                        .filter(|(t, v)| inside(t) && v.is_finite())
-                        .map(|(t, v)| Circle::new((*t, *v), 3, red)),
-                )?
-                .label("measured v_t")
-                .legend(move |(x, y)| Circle::new((x + 10, y), 3, red));
+            draw_measured(&mut chart, m, (t0, t1))?;
         }
         chart
             .configure_series_labels()

@@ -2,7 +2,7 @@
 //! residuals and the frames they use, and the search (a μ scan, then
 //! Levenberg–Marquardt with numerical derivatives).
 
-use super::uncertainty::{clamped, solve};
+use super::uncertainty::{Label, clamped, solve};
 use super::{Evals, FitError, Free};
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
@@ -75,10 +75,6 @@ pub(super) fn residuals_of(
 ) -> Vec<f64> {
     labelled_residuals(scene, m, idx, target, weighted).0
 }
-
-/// Which measured value a velocity residual compares with: the point's index and
-/// whether it is its v_t (else its v_cm).
-pub(super) type Label = (usize, bool);
 
 /// [`residuals_of`], with each velocity residual's [`Label`] (none for positions).
 pub(super) fn labelled_residuals(

@@ -5,8 +5,11 @@
 use serde::Serialize;
 
 use super::Free;
-use super::least_squares::Label;
 use crate::study::measured::series::Stencils;
+
+/// Which measured value a velocity residual compares with: the point's index and
+/// whether it is its v_t (else its v_cm).
+pub(super) type Label = (usize, bool);
 
 /// A free value without an uncertainty, and why.
 #[derive(Clone, Debug, PartialEq, Serialize)]

@@ -84,58 +84,69 @@ fn locate(ts: &[f64], xs: &[f64], i: usize, lo: usize, hi: usize) -> (f64, f64) 
     }
 }
 
-/// The impacts in the centre's motion (`ts`, `xs` without gaps), first one first.
-pub(super) fn impacts(
-    ts: &[f64],
-    xs: &[f64],
-    k: usize,
-    sigma: f64,
-    dt: f64,
-    given: Option<f64>,
-) -> Result<Vec<Kink>, TrackError> {
-    let n = ts.len();
-    let j = jumps(ts, xs, k);
-    // Standard error of one jump: two line slopes over k+1 frames.
-    let m = (k + 1) as f64;
-    let se = 2f64.sqrt() * sigma / (dt * (m * (m * m - 1.0) / 12.0).sqrt());
+/// The frame nearest the time `at` (the earlier one on a tie).
+fn nearest_frame(ts: &[f64], at: f64) -> usize {
+    let i = ts.partition_point(|&t| t < at).min(ts.len() - 1);
+    if i > 0 && at - ts[i - 1] < ts[i] - at {
+        i - 1
+    } else {
+        i
+    }
+}
+
+/// True if the jump at frame `i` is finite and none within `k` frames is larger.
+fn is_peak(j: &[(f64, f64)], k: usize, i: usize) -> bool {
     let size = |i: usize| j[i].0.abs();
-    let is_peak = |i: usize| {
-        j[i].0.is_finite()
-            && (i.saturating_sub(k)..=(i + k).min(n - 1)).all(|l| {
-                size(l).partial_cmp(&size(i)) != Some(std::cmp::Ordering::Greater) || l == i
-            })
-    };
-    let first = match given {
-        Some(at) => {
-            let i = ts.partition_point(|&t| t < at).min(n - 1);
-            let i = if i > 0 && (at - ts[i - 1]) < (ts[i] - at) {
-                i - 1
-            } else {
-                i
-            };
-            if j[i].1.is_nan() {
-                return Err(TrackError(format!(
-                    "the given impact at t = {at} s has fewer than 3 frames on one side, at least 3 needed on each"
-                )));
-            }
-            i
+    j[i].0.is_finite()
+        && (i.saturating_sub(k)..=(i + k).min(j.len() - 1))
+            .all(|l| size(l).partial_cmp(&size(i)) != Some(std::cmp::Ordering::Greater) || l == i)
+}
+
+/// The frame of the first impact: the one nearest the `given` time, else the first
+/// peak of at least half the largest jump, which must stand above the noise (`se`:
+/// the standard error of one jump).
+fn first_impact(
+    ts: &[f64],
+    j: &[(f64, f64)],
+    k: usize,
+    se: f64,
+    given: Option<f64>,
+) -> Result<usize, TrackError> {
+    let size = |i: usize| j[i].0.abs();
+    if let Some(at) = given {
+        let i = nearest_frame(ts, at);
+        if j[i].1.is_nan() {
+            return Err(TrackError(format!(
+                "the given impact at t = {at} s has fewer than 3 frames on one side, at least 3 needed on each"
+            )));
         }
-        None => {
-            let biggest = (0..n)
-                .filter(|&i| j[i].0.is_finite())
-                .map(size)
-                .fold(0.0, f64::max);
-            if biggest.partial_cmp(&(8.0 * se)) != Some(std::cmp::Ordering::Greater) {
-                return Err(TrackError(format!(
-                    "no impact found: the centre's velocity never changes sharply (largest change {biggest:.3} m/s, noise {se:.3} m/s); give its time with --impact-at"
-                )));
-            }
-            (0..n)
-                .find(|&i| size(i) >= 0.5 * biggest && is_peak(i))
-                .expect("the biggest jump is a peak")
-        }
-    };
-    let (jump, before) = j[first];
+        return Ok(i);
+    }
+    let biggest = (0..j.len())
+        .filter(|&i| j[i].0.is_finite())
+        .map(size)
+        .fold(0.0, f64::max);
+    if biggest.partial_cmp(&(8.0 * se)) != Some(std::cmp::Ordering::Greater) {
+        return Err(TrackError(format!(
+            "no impact found: the centre's velocity never changes sharply (largest change {biggest:.3} m/s, noise {se:.3} m/s); give its time with --impact-at"
+        )));
+    }
+    Ok((0..j.len())
+        .find(|&i| size(i) >= 0.5 * biggest && is_peak(j, k, i))
+        .expect("the biggest jump is a peak"))
+}
+
+/// Whether the jump at `first` is an impact the track shows whole: it slows the ball
+/// by at least a third, with frames before it, and (when found, not given) after a
+/// steady approach: a track that starts after the first impact (the ball moving
+/// away, then back to a later impact) must not pass its later impact off as the first.
+fn check_first(
+    (ts, xs): (&[f64], &[f64]),
+    (jump, before): (f64, f64),
+    first: usize,
+    k: usize,
+    given: Option<f64>,
+) -> Result<(), TrackError> {
     let dir = before.signum();
     if before == 0.0 || jump * dir >= 0.0 || jump.abs() < before.abs() / 3.0 {
         if first < k {
@@ -150,9 +161,6 @@ pub(super) fn impacts(
             before + jump
         )));
     }
-    // Before the first impact the ball approaches at a steady speed: a track that
-    // starts after it (the ball moving away, then back to a later impact) must not
-    // pass its later impact off as the first.
     if given.is_none() && first > 0 {
         let mean = (xs[first] - xs[0]) / (ts[first] - ts[0]) * dir;
         if mean < 0.5 * before.abs() {
@@ -163,6 +171,44 @@ pub(super) fn impacts(
             )));
         }
     }
+    Ok(())
+}
+
+/// The impact near frame `i` located by side fits within frames `lo` … `hi` (at most
+/// `wide` back), then again about the frame nearest the located impact (up to three
+/// times), so that no frame on the wrong side of it bends the side fits.
+fn located(ts: &[f64], xs: &[f64], i: usize, (lo, hi): (usize, usize), wide: usize) -> (f64, f64) {
+    let mut at = i;
+    let mut place = locate(ts, xs, at, lo.max(at.saturating_sub(wide)), hi);
+    for _ in 0..3 {
+        let near = nearest_frame(ts, place.0);
+        if near == at || near <= lo || near >= hi {
+            break;
+        }
+        at = near;
+        place = locate(ts, xs, at, lo.max(at.saturating_sub(wide)), hi);
+    }
+    place
+}
+
+/// The impacts in the centre's motion (`ts`, `xs` without gaps), first one first.
+pub(super) fn impacts(
+    ts: &[f64],
+    xs: &[f64],
+    k: usize,
+    sigma: f64,
+    dt: f64,
+    given: Option<f64>,
+) -> Result<Vec<Kink>, TrackError> {
+    let n = ts.len();
+    let j = jumps(ts, xs, k);
+    // Standard error of one jump: two line slopes over k+1 frames.
+    let m = (k + 1) as f64;
+    let se = 2f64.sqrt() * sigma / (dt * (m * (m * m - 1.0) / 12.0).sqrt());
+    let first = first_impact(ts, &j, k, se, given)?;
+    check_first((ts, xs), j[first], first, k, given)?;
+    let (jump, before) = j[first];
+    let dir = before.signum();
     // The side fits that place the impact reach over 60 ms (the motion on each side is
     // one parabola for much longer than that in a lab groove), at least 2k frames.
     let wide = (2 * k).max(6).max((0.06 / dt).round() as usize);
@@ -171,30 +217,15 @@ pub(super) fn impacts(
     let mut i = first;
     loop {
         let next = (i + k + 1..n).find(|&l| {
-            size(l) >= (0.1 * jump.abs()).max(8.0 * se) && j[l].0 * dir < 0.0 && is_peak(l)
+            j[l].0.abs() >= (0.1 * jump.abs()).max(8.0 * se)
+                && j[l].0 * dir < 0.0
+                && is_peak(&j, k, l)
         });
         let hi = next.map_or(n - 1, |l| l - 1).min(i + wide);
         let (t, x) = if found.is_empty() && given.is_some() {
             (given.unwrap_or(ts[i]), xs[i])
         } else {
-            // Again about the frame nearest the located impact, so that no frame on
-            // the wrong side of it bends the side fits.
-            let mut at = i;
-            let mut place = locate(ts, xs, at, lo.max(at.saturating_sub(wide)), hi);
-            for _ in 0..3 {
-                let near = ts.partition_point(|&t| t < place.0).min(n - 1);
-                let near = if near > 0 && place.0 - ts[near - 1] < ts[near] - place.0 {
-                    near - 1
-                } else {
-                    near
-                };
-                if near == at || near <= lo || near >= hi {
-                    break;
-                }
-                at = near;
-                place = locate(ts, xs, at, lo.max(at.saturating_sub(wide)), hi);
-            }
-            place
+            located(ts, xs, i, (lo, hi), wide)
         };
         found.push(Kink {
             t,
