@@ -26,10 +26,14 @@ pub enum Draw {
     PointsUnder,
 }
 
+/// A series' points, shared: what does not change from frame to frame (the measured
+/// points of a scene) is drawn without being copied.
+pub type Points = std::sync::Arc<[(f64, f64)]>;
+
 #[derive(Clone, Debug)]
 pub struct Series {
     pub name: String,
-    pub points: Vec<(f64, f64)>,
+    pub points: Points,
     pub style: Style,
     /// The glyph in ASCII mode (lines) or the marker (points, both modes).
     pub glyph: &'static str,
@@ -327,7 +331,7 @@ impl Plot {
     fn draw_points(&self, draw: Draw, cells: &Cells, buf: &mut Buffer) {
         let ((x0, x1), (y0, y1)) = (self.x_range, self.y_range);
         for s in self.series.iter().filter(|s| s.draw == draw) {
-            for &(x, y) in &s.points {
+            for &(x, y) in s.points.iter() {
                 if !(x.is_finite() && y.is_finite()) || x < x0 || x > x1 || y < y0 || y > y1 {
                     continue;
                 }
@@ -446,7 +450,7 @@ mod tests {
             for y_range in ranges {
                 let series = Series {
                     name: "v_cm".into(),
-                    points: vec![x_range, y_range, (x_range.0, y_range.1), (f64::NAN, 0.0)],
+                    points: vec![x_range, y_range, (x_range.0, y_range.1), (f64::NAN, 0.0)].into(),
                     style: Style::default(),
                     glyph: "*",
                     draw: Draw::Line,
@@ -519,7 +523,7 @@ mod tests {
     fn legend_rows_push_the_data_area_down_and_clicks_follow() {
         let line = |name: &str| Series {
             name: name.into(),
-            points: vec![(0.0, 0.0), (1.0, 1.0)],
+            points: vec![(0.0, 0.0), (1.0, 1.0)].into(),
             style: Style::default(),
             glyph: "*",
             draw: Draw::Line,
