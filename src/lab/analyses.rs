@@ -109,10 +109,12 @@ impl Lab {
         if !self.want_methods {
             return;
         }
+        // Timed rows serve every axis: going back to steps keeps the scene's timed rows.
+        let timed = self.want_method_times || self.methods.key() == Some(&(self.generation, true));
         let (scene, span) = (self.scene, self.span);
         self.methods
-            .request(&self.jobs, self.generation, move |ticket| {
-                method_rows(&scene, &span, ticket)
+            .request(&self.jobs, (self.generation, timed), move |ticket| {
+                method_rows(&scene, &span, timed, ticket)
             });
     }
 
@@ -194,10 +196,22 @@ impl Lab {
     /// Asks for (or stops asking for) the Methods view's rows.
     pub fn want_methods(&mut self, on: bool) {
         self.want_methods = on;
+        if !on {
+            // Leaving the Methods view stops its running job; finished rows are kept.
+            self.methods.stop_running();
+        }
         self.request_methods();
     }
 
-    /// The Methods view's rows: every time-stepping method at four levels, untimed.
+    /// Asks for the Methods view's rows timed (for its time axis) or not: the timing
+    /// runs cost more than the accuracy runs, and only the time axis shows them.
+    pub fn want_method_times(&mut self, on: bool) {
+        self.want_method_times = on;
+        self.request_methods();
+    }
+
+    /// The Methods view's rows: every time-stepping method at four levels, timed only
+    /// if [`Lab::want_method_times`] asked for it (else their times are 0).
     pub fn method_rows(&self) -> State<'_, Vec<Row>> {
         self.methods.state()
     }
@@ -279,17 +293,16 @@ impl Lab {
 
 /// Every time-stepping method at the Methods view's levels over the comparison's
 /// stretch (the span, cut at [`compare::WINDOW`]: the finest level, 10 µs, takes at
-/// most 240,000 steps), timed for the view's time axis (the screen on the steps and
-/// evaluations axes stays the same for the same input: nothing else on it depends on
-/// the times).
-fn method_rows(scene: &Scene, span: &Span, ticket: &Ticket) -> Vec<Row> {
+/// most 200,000 steps), timed if `timed` (for the view's time axis; nothing else on
+/// the screen depends on the times, so it stays the same for the same input).
+fn method_rows(scene: &Scene, span: &Span, timed: bool, ticket: &Ticket) -> Vec<Row> {
     let runs: Vec<(Method, Settings)> = Method::TIME_STEPPING
         .into_iter()
         .flat_map(|m| METHOD_VIEW_LEVELS.map(|l| (m, level_settings(m, l))))
         .collect();
     let reference = compare::Reference::new(scene, span);
     // Superseded: the rows are dropped unseen.
-    compare::measure_all(scene, &reference, &runs, &Counted(ticket)).unwrap_or_default()
+    compare::measure_all(scene, &reference, &runs, timed, &Counted(ticket)).unwrap_or_default()
 }
 
 /// The job's progress from a study's ticks.

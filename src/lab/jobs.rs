@@ -273,6 +273,11 @@ impl<K: PartialEq, T: Send + Sync + 'static> Job<K, T> {
         true
     }
 
+    /// The key of the job asked for last, if one is.
+    pub fn key(&self) -> Option<&K> {
+        self.request.as_ref().map(|(k, ..)| k)
+    }
+
     /// Forgets the job; a running one is told to stop.
     pub fn cancel(&mut self) {
         if let Some((_, ticket, _)) = self.request.take() {

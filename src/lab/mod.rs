@@ -74,12 +74,15 @@ pub struct Lab {
     /// Line-fit window (None: the sliding phase).
     pub fit_window: FitWindow,
     want_methods: bool,
+    /// Whether the Methods view's rows are timed (its work axis shows time).
+    want_method_times: bool,
     want_fits: bool,
     overlay_choice: Option<(Method, u8)>,
     /// The worker pool's jobs of this lab, and the scene they are asked for.
     jobs: Jobs,
     generation: Generation,
-    methods: Job<Generation, Vec<Row>>,
+    /// The Methods view's rows, and whether they are timed.
+    methods: Job<(Generation, bool), Vec<Row>>,
     /// `None` only for a run that was cancelled before it finished.
     overlay: Job<(Generation, Method, u8), Option<Overlay>>,
     fits: Job<(Generation, FitWindow), Result<Fits, FitError>>,
@@ -116,6 +119,7 @@ impl Lab {
             now,
             fit_window: (None, None),
             want_methods: false,
+            want_method_times: false,
             want_fits: false,
             overlay_choice: None,
             jobs: Jobs::default(),

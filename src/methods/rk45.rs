@@ -9,9 +9,10 @@ use super::{EventTracker, Model, Observer, RunEnd, Settings, Y, collide, gap};
 
 // The Dormand–Prince 5(4) tableau with Shampine's dense output (as scipy's RK45).
 // The system is autonomous, so the stage times only serve the tableau check.
+// Statics, not consts: an unoptimised build copies a const table whole at every use.
 #[cfg_attr(not(test), allow(dead_code))]
-const C: [f64; 7] = [0.0, 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0, 1.0, 1.0];
-const A: [[f64; 6]; 7] = [
+static C: [f64; 7] = [0.0, 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0, 1.0, 1.0];
+static A: [[f64; 6]; 7] = [
     [0.0; 6],
     [1.0 / 5.0, 0.0, 0.0, 0.0, 0.0, 0.0],
     [3.0 / 40.0, 9.0 / 40.0, 0.0, 0.0, 0.0, 0.0],
@@ -41,7 +42,7 @@ const A: [[f64; 6]; 7] = [
         11.0 / 84.0,
     ],
 ];
-const B: [f64; 7] = [
+static B: [f64; 7] = [
     35.0 / 384.0,
     0.0,
     500.0 / 1113.0,
@@ -50,7 +51,7 @@ const B: [f64; 7] = [
     11.0 / 84.0,
     0.0,
 ];
-const E: [f64; 7] = [
+static E: [f64; 7] = [
     -71.0 / 57600.0,
     0.0,
     71.0 / 16695.0,
@@ -59,7 +60,7 @@ const E: [f64; 7] = [
     -22.0 / 525.0,
     1.0 / 40.0,
 ];
-const P: [[f64; 4]; 7] = [
+static P: [[f64; 4]; 7] = [
     [
         1.0,
         -8048581381.0 / 2820520608.0,
@@ -196,12 +197,9 @@ fn step_error(k: &Stages, h: f64, y: &Y, y_new: &Y, (rtol, atol): (f64, f64)) ->
 /// The dense output of an accepted step at the fraction `theta` of it.
 fn dense(y: &Y, k: &Stages, h: f64, theta: f64) -> Y {
     let q = [theta, theta * theta, theta.powi(3), theta.powi(4)];
-    std::array::from_fn(|j| {
-        y[j] + h
-            * (0..7)
-                .map(|i| k[i][j] * (0..4).map(|p| P[i][p] * q[p]).sum::<f64>())
-                .sum::<f64>()
-    })
+    // Each stage's weight at θ, the same for every component.
+    let b: [f64; 7] = std::array::from_fn(|i| (0..4).map(|p| P[i][p] * q[p]).sum::<f64>());
+    std::array::from_fn(|j| y[j] + h * (0..7).map(|i| k[i][j] * b[i]).sum::<f64>())
 }
 
 /// The first switching-function zero inside an accepted step (its fraction of the
@@ -216,16 +214,21 @@ fn first_switch(
     h: f64,
     tolerance: f64,
 ) -> Option<(f64, usize)> {
+    const SAMPLES: [f64; 4] = [0.25, 0.5, 0.75, 1.0];
     let g0 = switches(m, modes, y);
+    // Every function at each sample from one dense output there.
+    let sampled = SAMPLES.map(|theta| {
+        if theta == 1.0 {
+            switches(m, modes, y_new)
+        } else {
+            switches(m, modes, &dense(y, k, h, theta))
+        }
+    });
     let mut first: Option<(f64, usize)> = None;
     for (which, &g_start) in g0.iter().enumerate() {
         let mut prev = (0.0, g_start);
-        for theta in [0.25, 0.5, 0.75, 1.0] {
-            let g = if theta == 1.0 {
-                switches(m, modes, y_new)[which]
-            } else {
-                switches(m, modes, &dense(y, k, h, theta))[which]
-            };
+        for (&theta, g) in SAMPLES.iter().zip(&sampled) {
+            let g = g[which];
             if crossed(which, prev.1, g) {
                 let (mut lo, mut hi) = (prev.0, theta);
                 // Bisect to a time error below the tolerance.

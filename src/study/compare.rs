@@ -17,7 +17,7 @@ use crate::physics::derived::{Outcome, Summary};
 use crate::physics::engine::{self, NEGLIGIBLE_SPEED};
 use crate::physics::model::Phase;
 use crate::physics::scene::{Scene, Span};
-use crate::physics::solution::{Event, EventKind, Solution, Who};
+use crate::physics::solution::{Event, EventKind, Segment, Solution, Who};
 use crate::study::{Cancelled, Progress, Quiet};
 
 /// The finest fixed step of the default sweep, s.
@@ -249,6 +249,8 @@ struct Metrics<'a> {
     /// the scan through them stands.
     windows: Vec<(f64, f64)>,
     next_window: usize,
+    /// The segment of the last step (see [`Metrics::seek`]).
+    cursor: usize,
     /// Where the method put its first and last impacts (from the first pass).
     impacts: (Option<f64>, Option<f64>),
     /// Speeds below this are zero for the run's outcome, m/s.
@@ -283,11 +285,19 @@ impl Observer for Metrics<'_> {
             .windows
             .get(self.next_window)
             .is_some_and(|w| w.0 <= t && t <= w.1);
-        let ex = self.exact.at(t);
-        let ex_left = self.exact.at_left(t);
-        let seg = self.exact.segment_at(t);
-        for (i, (e, el)) in [(ex.left, ex_left.left), (ex.right, ex_left.right)]
+        let (at, before) = self.seek(t);
+        let segments = &self.exact.segments;
+        let (seg, seg_left) = (&segments[at], &segments[before]);
+        // The exact states at t and just before it (they differ only at an impact):
+        // `Solution::at` and `at_left`, without their searches.
+        let state = |seg: &Segment, i: usize| {
+            let (a, du) = seg.accel[i];
+            seg.start[i].advanced(a, du, t - seg.t0)
+        };
+        let ex = [state(seg, 0), state(seg, 1)];
+        for (i, (e, el)) in ex
             .into_iter()
+            .zip([state(seg_left, 0), state(seg_left, 1)])
             .enumerate()
         {
             if !impact_step {
@@ -313,7 +323,14 @@ impl Observer for Metrics<'_> {
         }
         self.follow_outcome(t, y);
         let e = self.model.energy(y);
-        let e_exact = self.exact.energy_at(t).kinetic();
+        // The exact kinetic energy, summed as `Solution::energy_at` sums it.
+        let (mut translational, mut rotational) = (0.0, 0.0);
+        for (m, st) in self.model.mass.into_iter().zip(ex) {
+            let (tr, rot) = self.model.groove.energy(m, st);
+            translational += tr;
+            rotational += rot;
+        }
+        let e_exact = translational + rotational;
         if self.e0 > 0.0 {
             self.drift = self.drift.max((e - e_exact) / self.e0);
             self.gain = self.gain.max(e / self.e0 - 1.0);
@@ -329,6 +346,26 @@ impl Observer for Metrics<'_> {
 }
 
 impl Metrics<'_> {
+    /// The segments holding `t` and just before `t`, as `Solution::segment_at` and
+    /// `Solution::at_left` find them, searched from the last step's (steps come in
+    /// order, so this walks a segment or two where a search took dozens of looks).
+    fn seek(&mut self, t: f64) -> (usize, usize) {
+        let segments = &self.exact.segments;
+        let mut i = self.cursor.min(segments.len() - 1);
+        while i > 0 && segments[i - 1].t1 > t {
+            i -= 1;
+        }
+        while i + 1 < segments.len() && segments[i].t1 <= t {
+            i += 1;
+        }
+        self.cursor = i;
+        let mut before = i;
+        while before > 0 && segments[before - 1].t1 >= t {
+            before -= 1;
+        }
+        (i, before)
+    }
+
     /// What the run does after its impacts, for its outcome word: whether the balls
     /// part after the first, and their relative velocity once both roll after the last.
     fn follow_outcome(&mut self, t: f64, y: &Y) {
@@ -605,6 +642,7 @@ pub fn measure_observed(
         slip_rolling: 0.0,
         windows,
         next_window: 0,
+        cursor: 0,
         impacts: (found.0.first().copied(), found.0.last().copied()),
         still: ACCURATE * scene.speed_scale(),
         parted: false,
@@ -769,7 +807,7 @@ pub fn sweep(
             (method, settings)
         })
         .collect();
-    let mut rows = measure_all(scene, &reference, &runs, progress)?;
+    let mut rows = measure_all(scene, &reference, &runs, true, progress)?;
     for (row, (method, settings)) in rows.iter_mut().zip(&runs) {
         // A fixed step that needs more than the budget was refused before its first
         // step: say why in words a reader of the table can act on.
@@ -783,17 +821,18 @@ pub fn sweep(
     Ok(rows)
 }
 
-/// Measures and times every run of `runs` against `reference`. The accuracy runs
-/// (deterministic) share all cores; the timing runs then go one at a time, so that
-/// each is timed without the others competing for a core. Ticks `progress` once per
-/// run of each kind (twice the runs in all) and stops soon after it says so.
+/// Measures every run of `runs` against `reference`, and times it if `timed`. The
+/// accuracy runs (deterministic) share all cores; the timing runs then go one at a
+/// time, so that each is timed without the others competing for a core. Ticks
+/// `progress` once per run of each kind and stops soon after it says so.
 pub fn measure_all(
     scene: &Scene,
     reference: &Reference,
     runs: &[(Method, Settings)],
+    timed: bool,
     progress: &dyn Progress,
 ) -> Result<Vec<Row>, Cancelled> {
-    let total = 2 * runs.len() as u64;
+    let total = if timed { 2 } else { 1 } * runs.len() as u64;
     let done = AtomicU64::new(0);
     let tick = || progress.tick(done.fetch_add(1, Ordering::Relaxed) + 1, total);
     progress.tick(0, total);
@@ -812,7 +851,7 @@ pub fn measure_all(
             Ok(row)
         })
         .collect::<Result<Vec<Row>, Cancelled>>()?;
-    for (row, (method, settings)) in rows.iter_mut().zip(runs) {
+    for (row, (method, settings)) in rows.iter_mut().zip(runs).filter(|_| timed) {
         (row.time_min_s, row.time_median_s) =
             timing(*method, scene, settings, reference, row, progress)?;
         tick();

@@ -6,7 +6,7 @@
 
 use std::process::{Command, Stdio};
 use std::sync::atomic::{AtomicU64, Ordering};
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 use groovelab::methods::{Method, Settings};
 use groovelab::physics::scene::{Scene, Span};
@@ -334,14 +334,12 @@ fn ctrl_c_stops_compare_with_130_and_writes_nothing() {
         .unwrap();
     // The default sweep takes seconds (release) to a minute (debug): well past this.
     std::thread::sleep(Duration::from_millis(700));
-    let sent = Instant::now();
     let kill = Command::new("kill")
         .args(["-INT", &child.id().to_string()])
         .status()
         .unwrap();
     assert!(kill.success());
     let result = child.wait_with_output().unwrap();
-    let stopped_in = sent.elapsed();
     let stderr = String::from_utf8_lossy(&result.stderr);
     assert_eq!(result.status.code(), Some(130), "{stderr}");
     assert!(result.stdout.is_empty());
@@ -349,8 +347,8 @@ fn ctrl_c_stops_compare_with_130_and_writes_nothing() {
     assert!(!out.exists(), "the output file was written");
     let left: Vec<_> = std::fs::read_dir(&dir).unwrap().collect();
     assert!(left.is_empty(), "files left behind: {left:?}");
-    // The stop is checked every 4096 steps and between runs: well under a second
-    // even in a debug build.
-    assert!(stopped_in < Duration::from_secs(3), "{stopped_in:?}");
+    // How soon it stops is counted, not timed: `compare_stops_when_asked_and_matches_
+    // when_not` and `a_cancelled_measure_stops_inside_the_run` count the work done
+    // after the stop (a look every 4096 steps, no run finished, no row timed).
     let _ = std::fs::remove_dir_all(&dir);
 }

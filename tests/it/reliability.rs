@@ -595,7 +595,8 @@ fn a_streamed_sweep_equals_the_whole_map() {
 
 #[test]
 fn huge_sweeps_are_refused_on_stdout_and_svg_before_any_work() {
-    let start = Instant::now();
+    // Refused from the arguments alone: exit 2 and nothing printed (a 10^8-point
+    // sweep that started would run into the command's watchdog).
     assert_refused(
         &[
             "sweep",
@@ -622,7 +623,6 @@ fn huge_sweeps_are_refused_on_stdout_and_svg_before_any_work() {
         ],
         "allowed at most 1000x1000",
     );
-    assert!(start.elapsed() < Duration::from_secs(10));
 }
 
 #[test]

@@ -707,16 +707,36 @@ fn methods_view_work_axis_outcome_and_order() {
     assert!(s.contains("against steps per run"), "{s}");
     assert!(s.contains("= outcome right (recollide, 20 impacts)"), "{s}");
     assert!(s.contains("order: e "), "{s}");
+    // Untimed until the time axis asks (the timing runs cost more than the rest);
+    // timed on the narrow groove, whose runs are fewer.
+    let mut a = app("paper-b3.5");
+    press(&mut a, "c");
+    a.lab.wait();
+    let times = |a: &App| match a.lab.method_rows() {
+        State::Ready(rows) => rows.iter().map(|r| r.time_median_s).collect::<Vec<_>>(),
+        _ => panic!("the rows are there once the lab has waited"),
+    };
+    let runs = a.lab.runs();
+    assert!(times(&a).iter().all(|&t| t == 0.0));
     press(&mut a, "X");
     a.lab.wait();
     let s = screen_of(&a);
     assert!(s.contains("against rhs evaluations per run"), "{s}");
+    assert_eq!(a.lab.runs(), runs, "the rhs axis needs no new rows");
     press(&mut a, "X");
     a.lab.wait();
     let s = screen_of(&a);
     assert!(s.contains("against time per run"), "{s}");
+    assert!(times(&a).iter().all(|&t| t > 0.0), "{:?}", times(&a));
+    assert_eq!(a.lab.runs(), runs + 1, "timed once");
     press(&mut a, "X");
+    a.lab.wait();
     assert!(screen_of(&a).contains("against steps per run"));
+    assert_eq!(
+        a.lab.runs(),
+        runs + 1,
+        "the timed rows serve the steps axis too"
+    );
     assert!(
         keys::TABLE
             .iter()
@@ -1007,13 +1027,15 @@ fn overlay_measured_and_ghost_marks_differ_and_have_a_legend() {
     assert_ne!(m.overlay, m.measured);
     // ASCII: distinct glyphs for the overlay's v_cm and v_t and the data, each in the
     // legend.
-    let s = screen("paper-b4.9", 0.3, (120, 40), true, Some("o"));
+    // One overlay run, drawn at both sizes.
+    let a = shown("paper-b4.9", 0.3, Some("o"));
+    let s = text(&a, (120, 40), true);
     let chart: String = chart_rows(&s).join("\n");
     for mark in ["% euler", "~ v_t", "x measured v_cm", "o measured v_t"] {
         assert!(chart.contains(mark), "{mark}:\n{chart}");
     }
     // 80×24 puts the legend on more rows rather than dropping marks.
-    let s = screen("paper-b4.9", 0.3, (80, 24), true, Some("o"));
+    let s = text(&a, (80, 24), true);
     for mark in ["% euler", "~ v_t", "x measured v_cm", "o measured v_t"] {
         assert!(s.contains(mark), "{mark}:\n{s}");
     }

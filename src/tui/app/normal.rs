@@ -111,6 +111,8 @@ impl App {
             Action::DropData => self.drop_data(),
             Action::CycleWorkAxis => {
                 self.work_axis = self.work_axis.next();
+                self.lab
+                    .want_method_times(self.work_axis == crate::tui::vocabulary::WorkAxis::Time);
                 self.status = Status::Info(format!("work axis: {}", self.work_axis.name()));
             }
             Action::ToggleMap => self.toggle_view(View::Map),
