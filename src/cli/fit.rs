@@ -12,29 +12,8 @@ use crate::input::data::Reading;
 use crate::physics::scene::Scene;
 use crate::settings::units::{Dimension, show, significant, unit_factor};
 use crate::study::fit::{self, Candidate, Fits, Free, ModelFit};
-use crate::study::measured::{self, Derive, Found, Measured, Series};
+use crate::study::measured::{Derive, Found, Series};
 use crate::study::preset::Preset;
-
-/// The measured series for `scene`, and what was found in a position track.
-pub fn load(
-    preset: &Preset,
-    scene: &Scene,
-    args: &DataArgs,
-) -> Result<(Measured, Option<Found>), CliError> {
-    let series = match load_series(args)? {
-        Some(s) => s,
-        None => preset
-            .measured
-            .clone()
-            .map(|m| Series::Velocities(std::sync::Arc::new(m)))
-            .ok_or_else(|| BadValue::NoMeasuredData {
-                preset: preset.name.clone(),
-            })?,
-    };
-    let found = series.found().cloned();
-    let in_scene = measured::for_scene(&series, scene);
-    Ok(((*in_scene.measured).clone(), found))
-}
 
 /// The `--data` file read, its velocities derived as far as no scene enters; `None`
 /// without `--data`.
@@ -158,11 +137,16 @@ pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<St
         }
         .into());
     }
-    let (preset, scene, _) = scene_args.resolve()?;
+    // The app's snapshot: the scene by the same layers, the data derived for it.
+    let lab = super::lab(scene_args, data)?;
+    let (preset, scene) = (lab.preset(), lab.scene);
     if let Some(path) = &args.output {
         super::output::check_output(path)?;
     }
-    let (m, found) = load(&preset, &scene, data)?;
+    let m = lab.measured().ok_or_else(|| BadValue::NoMeasuredData {
+        preset: preset.name.clone(),
+    })?;
+    let found = lab.series().and_then(|s| s.found().cloned());
     // Each value once: a repeated one (`--free mu,mu`) made the normal matrix
     // singular and the uncertainty NaN.
     let mut free: Vec<Free> = Vec::new();
@@ -178,9 +162,9 @@ pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<St
     }
     // A series long enough to take a noticeable time shows a counter.
     let bar = super::progress::Bar::counter("model evaluations", m.t.len() > 5_000);
-    let fits = fit::fit_all(&scene, &m, (args.from, args.to), &free, &bar);
+    let fits = fit::fit_all(&scene, m, (args.from, args.to), &free, &bar);
     let position = match (&fits, &found) {
-        (Ok(_), Some(_)) => Some(fit::position_fit(&scene, &m, &free, &bar)),
+        (Ok(_), Some(_)) => Some(fit::position_fit(&scene, m, &free, &bar)),
         _ => None,
     };
     bar.finish();
@@ -205,7 +189,7 @@ pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<St
         }
         FitFormat::Table => {
             let own = data.data.is_empty();
-            let mut out = scene_line(&preset, scene_args, &scene);
+            let mut out = scene_line(preset, scene_args, &scene);
             out += &match (&found, &position) {
                 (Some(found), Some(position)) => track_table(&scene, &fits, found, position, own),
                 _ => table(&scene, &fits, own),
@@ -214,7 +198,7 @@ pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<St
             out
         }
         FitFormat::Svg => {
-            crate::study::figures::fit_figure(&scene, &m, &fits).map_err(|source| {
+            crate::study::figures::fit_figure(&scene, m, &fits).map_err(|source| {
                 CliError::Draw {
                     what: "figure",
                     source,

@@ -12,7 +12,7 @@ use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::Solution;
 use crate::physics::story::{self, After, Verdict};
 use crate::settings::params::{Key, PARAMS, SceneError};
-use crate::settings::units::show;
+use crate::settings::units::{Dimension, show};
 use crate::study::measured::{self, InScene, Measured, Series};
 
 use super::Pinned;
@@ -129,7 +129,8 @@ pub struct MeasuredPoints {
     /// Each derived point's ±1σ as a vertical run of points (`None`: no σ given).
     pub v_cm_bars: Option<Arc<[Point]>>,
     pub v_t_bars: Option<Arc<[Point]>>,
-    /// A position track's centre where the model's left ball would be (x − R), m.
+    /// A position track's centre where the model's left ball would be (x − R), in the
+    /// display unit of length (the position chart's).
     pub x: Option<Arc<[Point]>>,
 }
 
@@ -147,7 +148,7 @@ impl MeasuredPoints {
                 m.t.iter()
                     .zip(x)
                     .filter(|(_, x)| x.is_finite())
-                    .map(|(t, x)| (*t, x - radius))
+                    .map(|(t, x)| (*t, Dimension::Length.to_display(x - radius)))
                     .collect()
             }),
         }

@@ -2,18 +2,20 @@
 //! both), or x(t) of both balls; labelled event lines, the time cursor, and the
 //! measured points when the preset carries them.
 
+use std::sync::Arc;
+
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::Style;
 use ratatui::widgets::Widget;
 
 use super::block;
+use crate::lab::MeasuredPoints;
 use crate::lab::jobs::State;
 use crate::physics::model::BallState;
 use crate::physics::solution::{EnergySplit, EventKind, Snapshot, Who};
 use crate::settings::units::Dimension;
 use crate::study::fit::LineFit;
-use crate::study::measured::Measured;
 use crate::tui::app::{App, ChartBall};
 use crate::tui::plot::{Draw, Plot, Series, VLine, nice_ticks};
 use crate::tui::theme::Theme;
@@ -147,6 +149,14 @@ fn pinned_series(app: &App, columns: usize, theme: &Theme, curves: &[Curve]) -> 
         return Vec::new();
     }
     let samples = app.pinned_samples(columns);
+    // Without colour a dimmed braille line looks like the current run's: the pinned
+    // run is drawn in dots of its own glyph then, under the current curves (ASCII draws
+    // every line in its glyph).
+    let (draw, glyph) = match (monochrome(theme), theme.glyphs.ascii) {
+        (_, true) => (Draw::Line, "."),
+        (true, false) => (Draw::PointsUnder, "·"),
+        (false, false) => (Draw::Line, "."),
+    };
     curves
         .iter()
         .enumerate()
@@ -158,8 +168,8 @@ fn pinned_series(app: &App, columns: usize, theme: &Theme, curves: &[Curve]) -> 
             },
             points: samples.iter().map(|s| (s.t, value(s))).collect(),
             style: theme.dim,
-            glyph: ".",
-            draw: Draw::Line,
+            glyph,
+            draw,
         })
         .collect()
 }
@@ -182,7 +192,7 @@ fn series_of(
 
 fn bounds(series: &[Series], rows: usize) -> ((f64, f64), Vec<f64>) {
     let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-    for p in series.iter().flat_map(|s| &s.points) {
+    for p in series.iter().flat_map(|s| s.points.iter()) {
         if p.1.is_finite() {
             lo = lo.min(p.1);
             hi = hi.max(p.1);
@@ -236,7 +246,7 @@ fn overlay_velocities(app: &App, balls: &[usize], columns: usize, theme: &Theme)
             let name = app.lab.overlay_choice().map_or("", |(m, _)| m.name());
             return vec![Series {
                 name: format!("{name} {}", super::progress_text(done, total)),
-                points: Vec::new(),
+                points: Vec::new().into(),
                 style: theme.overlay,
                 glyph: "%",
                 draw: Draw::Line,
@@ -264,7 +274,7 @@ fn overlay_velocities(app: &App, balls: &[usize], columns: usize, theme: &Theme)
             let p: Vec<(f64, f64)> = o.points.iter().map(|(t, y)| (*t, y[3 * i + j])).collect();
             match draw {
                 Draw::Points => thin_to(p, columns / 2),
-                Draw::Line => p,
+                Draw::Line | Draw::PointsUnder => p,
             }
         };
         let side = match (balls.len(), i) {
@@ -278,14 +288,14 @@ fn overlay_velocities(app: &App, balls: &[usize], columns: usize, theme: &Theme)
                 o.method.name(),
                 o.row.status.name()
             ),
-            points: pts(1),
+            points: pts(1).into(),
             style: theme.overlay,
             glyph: glyph_v,
             draw,
         });
         series.push(Series {
             name: format!("v_t{side}"),
-            points: pts(2),
+            points: pts(2).into(),
             style: theme.overlay_t,
             glyph: glyph_u,
             draw,
@@ -295,14 +305,12 @@ fn overlay_velocities(app: &App, balls: &[usize], columns: usize, theme: &Theme)
 }
 
 /// The measured v_cm and v_t as marks, with each derived point's ±1σ (a position
-/// track's local fits) as a vertical run of dots under the point's own glyph.
-fn measured_velocities(m: &Measured, theme: &Theme) -> Vec<Series> {
+/// track's local fits) as a vertical run of dots under the point's own glyph; the
+/// points are the snapshot's, shared, not copied per frame.
+fn measured_velocities(m: &MeasuredPoints, theme: &Theme) -> Vec<Series> {
     let mut series = Vec::new();
-    for (n, (values, sigma)) in [(&m.v_cm, &m.v_cm_sigma), (&m.v_t, &m.v_t_sigma)]
-        .into_iter()
-        .enumerate()
-    {
-        if let Some(sigma) = sigma {
+    for (n, bars) in [&m.v_cm_bars, &m.v_t_bars].into_iter().enumerate() {
+        if let Some(bars) = bars {
             series.push(Series {
                 // One legend entry for both series' bars.
                 name: if n == 0 {
@@ -310,7 +318,7 @@ fn measured_velocities(m: &Measured, theme: &Theme) -> Vec<Series> {
                 } else {
                     String::new()
                 },
-                points: error_bars(&m.t, values, sigma),
+                points: Arc::clone(bars),
                 style: theme.measured,
                 // Not ':' or '|': the event lines use those.
                 glyph: if theme.glyphs.ascii { "!" } else { "¦" },
@@ -318,17 +326,16 @@ fn measured_velocities(m: &Measured, theme: &Theme) -> Vec<Series> {
             });
         }
     }
-    let pts = |v: &[f64]| m.t.iter().copied().zip(v.iter().copied()).collect();
     series.push(Series {
         name: "measured v_cm".into(),
-        points: pts(&m.v_cm),
+        points: Arc::clone(&m.v_cm),
         style: theme.measured,
         glyph: if theme.glyphs.ascii { "x" } else { "×" },
         draw: Draw::Points,
     });
     series.push(Series {
         name: "measured v_t".into(),
-        points: pts(&m.v_t),
+        points: Arc::clone(&m.v_t),
         style: theme.measured,
         glyph: if theme.glyphs.ascii { "o" } else { "+" },
         draw: Draw::Points,
@@ -383,7 +390,7 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
     let mut series = pinned_series(app, columns, theme, &curves);
     series.extend(exact_velocities(&samples, &balls, theme));
     series.extend(overlay_velocities(app, &balls, columns, theme));
-    if let Some(m) = app.lab.measured().filter(|_| balls.contains(&0)) {
+    if let Some(m) = app.lab.points.as_ref().filter(|_| balls.contains(&0)) {
         series.extend(measured_velocities(m, theme));
     }
     let mut vlines = Vec::new();
@@ -449,17 +456,10 @@ fn positions(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
         ),
     ]);
     // A position track's centre, where the model's left ball would be (x − R).
-    if let Some((m, x)) = app.lab.measured().and_then(|m| Some((m, m.x.as_ref()?))) {
-        let r = app.lab.scene.radius;
+    if let Some(x) = app.lab.points.as_ref().and_then(|m| m.x.as_ref()) {
         series.push(Series {
             name: "tracked x".into(),
-            points: m
-                .t
-                .iter()
-                .zip(x)
-                .filter(|(_, x)| x.is_finite())
-                .map(|(t, x)| (*t, POSITION.to_display(x - r)))
-                .collect(),
+            points: Arc::clone(x),
             style: theme.measured,
             glyph: if theme.glyphs.ascii { "x" } else { "×" },
             draw: Draw::Points,
@@ -525,7 +525,7 @@ fn energy(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
             0,
             Series {
                 name: "pinned kinetic".into(),
-                points: app.pinned_kinetic(columns).to_vec(),
+                points: app.pinned_kinetic(columns).iter().copied().collect(),
                 style: theme.dim,
                 glyph: ".",
                 draw: Draw::Line,
@@ -544,7 +544,7 @@ fn energy(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
         };
         series.push(Series {
             name,
-            points: if zero { Vec::new() } else { points },
+            points: if zero { Vec::new() } else { points }.into(),
             style,
             glyph,
             draw,
@@ -570,34 +570,4 @@ fn energy(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
         " Energy, both balls  [e] velocities "
     };
     (title.to_string(), plot)
-}
-
-/// Points filling `value ± sigma` at each time (12 per bar, enough for a bar a dozen
-/// rows tall), for a Points series drawn as vertical error bars; points without a
-/// finite value or uncertainty have none.
-fn error_bars(ts: &[f64], values: &[f64], sigma: &[f64]) -> Vec<(f64, f64)> {
-    const STEPS: usize = 12;
-    let mut out = Vec::new();
-    for ((&t, &v), &s) in ts.iter().zip(values).zip(sigma) {
-        if !(v.is_finite() && s.is_finite() && s > 0.0) {
-            continue;
-        }
-        out.extend((0..=STEPS).map(|k| (t, v - s + 2.0 * s * k as f64 / STEPS as f64)));
-    }
-    out
-}
-
-#[cfg(test)]
-mod tests {
-    #[test]
-    fn error_bars_span_one_sigma_and_skip_unknowns() {
-        let bars = super::error_bars(
-            &[0.0, 1.0, 2.0],
-            &[1.0, f64::NAN, 3.0],
-            &[0.1, 0.1, f64::NAN],
-        );
-        assert_eq!(bars.len(), 13);
-        assert!(bars.iter().all(|&(t, _)| t == 0.0));
-        assert!((bars[0].1 - 0.9).abs() < 1e-12 && (bars[12].1 - 1.1).abs() < 1e-12);
-    }
 }

@@ -87,14 +87,14 @@ pub fn render_diagram(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         let pts: Vec<(f64, f64)> = rows.iter().filter(|r| r.method == m).map(point).collect();
         series.push(Series {
             name: m.name().to_string(),
-            points: pts.clone(),
+            points: pts.clone().into(),
             style,
             glyph: ".",
             draw: Draw::Line,
         });
         series.push(Series {
             name: String::new(),
-            points: pts,
+            points: pts.into(),
             style,
             glyph: glyph(m),
             draw: Draw::Points,
