@@ -316,6 +316,11 @@ mod tests {
         assert!((se[1].unwrap() - 0.25).abs() < 1e-12);
         assert_eq!(se[2], None);
         assert_eq!(why[0].parameter, "restitution");
-        assert!(why[0].reason.contains("bound"), "{why:?}");
+        assert!(
+            why[0]
+                .reason
+                .contains("edge of its physical range (0 ≤ e ≤ 1)"),
+            "{why:?}"
+        );
     }
 }
