@@ -17,9 +17,10 @@ use crate::study::preset::{self, Preset};
     name = "groovelab",
     version,
     about = "Two balls colliding in a groove: exact simulation, charts and lab tools",
-    long_about = "Two identical balls roll toward each other in a horizontal groove, collide, and \
-                  then depart, stop, or come back again and again. groovelab solves the motion \
-                  exactly (Gröber & Sniatecki) and shows why."
+    long_about = "Two balls (identical in the paper; masses and speeds may differ) roll toward \
+                  each other in a horizontal groove, collide, and then depart, stop, or come \
+                  back again and again. groovelab solves the motion exactly (Gröber & \
+                  Sniatecki) and shows why."
 )]
 pub struct Cli {
     #[command(subcommand)]

@@ -13,6 +13,7 @@ use std::path::PathBuf;
 use std::sync::LazyLock;
 
 use crate::lab::Lab;
+use crate::physics::solution::{EventKind, Solution};
 use crate::settings::params::{Key, PARAMS, Param};
 use crate::settings::units::{Dimension, show, significant};
 
@@ -169,20 +170,14 @@ impl App {
         t.clamp(t0, t1)
     }
 
-    /// The next (or previous) marked event's time in the span: impact, rolling, gliding,
-    /// slipping, rest, T∞ (what the charts draw as lines).
-    pub fn event_target(&self, later: bool) -> Option<f64> {
+    /// The next (or previous) stop of `>` (`<`) in the span: see [`event_stops`].
+    pub fn event_target(&self, later: bool) -> Option<EventStop> {
         let eps = 1e-9;
-        let mut times = self
-            .lab
-            .solution
-            .visible_events()
-            .filter(|e| e.kind.label().is_some())
-            .map(|e| e.t);
+        let mut stops = event_stops(&self.lab.solution).into_iter();
         if later {
-            times.find(|&x| x > self.t + eps)
+            stops.find(|s| s.t > self.t + eps)
         } else {
-            times.filter(|&x| x < self.t - eps).last()
+            stops.filter(|s| s.t < self.t - eps).last()
         }
     }
 
@@ -264,14 +259,29 @@ impl App {
         true
     }
 
-    /// A one-line summary of playback for the status line.
-    pub fn playback(&self) -> String {
+    /// Playback in few words, for a status line that also holds a message: the time,
+    /// playing or paused, the speed.
+    pub fn playback_short(&self) -> String {
+        format!(
+            "t = {:.3} s  {}  ×{}",
+            self.t,
+            if self.playing { "playing" } else { "paused" },
+            self.speed_text()
+        )
+    }
+
+    fn speed_text(&self) -> String {
         let speed = self.speed_factor();
-        let speed = if speed < 1.0 {
+        if speed < 1.0 {
             format!("1/{}", (1.0 / speed).round())
         } else {
             significant(speed, 2)
-        };
+        }
+    }
+
+    /// A one-line summary of playback for the status line.
+    pub fn playback(&self) -> String {
+        let speed = self.speed_text();
         let sol = &self.lab.solution;
         format!(
             "t = {:.3} s of {:.3} … {:.3} s   {}  speed ×{speed}",
@@ -281,4 +291,67 @@ impl App {
             if self.playing { "playing" } else { "paused" },
         )
     }
+}
+
+/// A time `>` and `<` stop at: an event's, with its label, and for T∞ how many impacts
+/// of the burst before it the stop stands for.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct EventStop {
+    pub t: f64,
+    pub label: &'static str,
+    /// Impacts merged into this stop (T∞ only), and the time they take.
+    pub burst: Option<(usize, f64)>,
+}
+
+/// The share of the span within which impacts before T∞ are one burst: closer together
+/// than a few pixel columns of the chart, so a stop per impact would show nothing new.
+const BURST_SHARE: f64 = 0.02;
+
+/// Where `>`/`<` stop in `sol`'s span, in time order, once per time: each labelled event
+/// (impact, rolling, gliding, slipping, rest, T∞), except that the impacts accumulating
+/// at T∞ (with the slips between them) within [`BURST_SHARE`] of the span before it are
+/// stepped over as one, T∞ itself.
+pub fn event_stops(sol: &Solution) -> Vec<EventStop> {
+    let window = BURST_SHARE * (sol.t_end - sol.t_start);
+    let zeno: Vec<f64> = sol
+        .visible_events()
+        .filter(|e| matches!(e.kind, EventKind::ZenoRest | EventKind::ZenoContact))
+        .map(|e| e.t)
+        .collect();
+    // The T∞ that an event at `t` accumulates toward, if it is inside its burst.
+    let in_burst = |t: f64| zeno.iter().any(|&z| t < z && z - t < window);
+    let mut stops: Vec<EventStop> = Vec::new();
+    for e in sol.visible_events() {
+        let Some(label) = e.kind.label() else {
+            continue;
+        };
+        if in_burst(e.t) {
+            continue;
+        }
+        // One stop per time; the last impact falls on T∞ itself, and T∞ names it.
+        let zeno_here = zeno.contains(&e.t);
+        if stops.last().is_some_and(|s| s.t == e.t) {
+            if !zeno_here {
+                continue;
+            }
+            stops.pop();
+        }
+        let burst = zeno_here.then(|| {
+            let impacts: Vec<f64> = sol
+                .visible_events()
+                .filter(|i| i.kind == EventKind::Collision && i.t <= e.t && e.t - i.t < window)
+                .map(|i| i.t)
+                .collect();
+            (
+                impacts.len(),
+                impacts.first().map_or(0.0, |first| e.t - first),
+            )
+        });
+        stops.push(EventStop {
+            t: e.t,
+            label,
+            burst,
+        });
+    }
+    stops
 }

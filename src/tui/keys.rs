@@ -184,13 +184,13 @@ pub const TABLE: &[Binding] = &[
         keys: &["v"],
         action: Action::ToggleForces,
         help: "Forces view: the groove's cross-section with forces and torques, motion states, the cause-and-effect chain (b: left or right ball)",
-        hint: None,
+        hint: Some(("forces", 4)),
     },
     Binding {
         keys: &["y"],
         action: Action::Predict,
         help: "predict, observe, explain: predict what the balls do after the impact (1 apart, 2 rest, 3 back), watch, then see why",
-        hint: None,
+        hint: Some(("predict", 3)),
     },
     Binding {
         keys: &["B"],
@@ -555,6 +555,13 @@ mod tests {
             "{labels:?}"
         );
         assert_eq!(hints_within(400, false).len(), hints(false).len());
+        // The Forces view and the prediction are named at 120 columns (a new user
+        // did not find them).
+        let labels: Vec<&str> = hints_within(120, false).iter().map(|x| x.1).collect();
+        assert!(
+            labels.contains(&"forces") && labels.contains(&"predict"),
+            "{labels:?}"
+        );
     }
 
     #[test]

@@ -21,6 +21,9 @@ pub enum Draw {
     Line,
     /// One marker cell per point.
     Points,
+    /// One marker cell per point, under the lines (a reference curve that the current
+    /// one must not be hidden by).
+    PointsUnder,
 }
 
 /// A series' points, shared: what does not change from frame to frame (the measured
@@ -120,7 +123,7 @@ impl Plot {
             let mark = match (s.draw, glyphs.ascii) {
                 (Draw::Line, false) => "──".to_string(),
                 (Draw::Line, true) => format!("{0}{0}", s.glyph),
-                (Draw::Points, _) => s.glyph.to_string(),
+                (Draw::Points | Draw::PointsUnder, _) => s.glyph.to_string(),
             };
             let text = format!(" {mark} {}", glyphs.text(&s.name));
             let w = text.chars().count() as u16;
@@ -291,8 +294,10 @@ impl Plot {
         kept
     }
 
-    /// Line series on the sub-cell grid, then point markers on top.
+    /// Markers drawn under the lines, line series on the sub-cell grid, then point
+    /// markers on top.
     fn draw_series(&self, cells: &Cells, buf: &mut Buffer, theme: &Theme) {
+        self.draw_points(Draw::PointsUnder, cells, buf);
         let plot = cells.plot;
         let ((x0, x1), (y0, y1)) = (self.x_range, self.y_range);
         let mut grid = Canvas::new(cells.cols(), cells.rows(), theme.glyphs.ascii);
@@ -319,13 +324,19 @@ impl Plot {
             }
         }
         grid.write(plot.x, plot.y, buf);
-        for s in self.series.iter().filter(|s| s.draw == Draw::Points) {
+        self.draw_points(Draw::Points, cells, buf);
+    }
+
+    /// The marker series drawn as `draw`, one cell per point inside the ranges.
+    fn draw_points(&self, draw: Draw, cells: &Cells, buf: &mut Buffer) {
+        let ((x0, x1), (y0, y1)) = (self.x_range, self.y_range);
+        for s in self.series.iter().filter(|s| s.draw == draw) {
             for &(x, y) in s.points.iter() {
                 if !(x.is_finite() && y.is_finite()) || x < x0 || x > x1 || y < y0 || y > y1 {
                     continue;
                 }
                 let (c, r) = (cells.col_of(x) as u16, cells.row_of(y) as u16);
-                buf.set_string(plot.x + c, plot.y + r, s.glyph, s.style);
+                buf.set_string(cells.plot.x + c, cells.plot.y + r, s.glyph, s.style);
             }
         }
     }
@@ -368,28 +379,44 @@ fn frac(v: f64, a: f64, b: f64) -> f64 {
     (v / 2.0 - a / 2.0) / (b / 2.0 - a / 2.0)
 }
 
-/// The event lines' labels on the top row: right of their line if they fit before
-/// the next one, else left of it if they fit after the previous line and label.
+/// The event lines' labels on the top row, the most important first (T∞ before the
+/// burst of impacts), then in time order: right of their line if they fit before the
+/// next one, else left of it if they fit after the previous one; then, for the labels
+/// that found no such room, right or left over the tops of other lines. A label never
+/// overlaps another (nor its line) and stays in the plot: dense events (a pinned run's
+/// longer span squeezes them) keep their labels rather than lose them.
 fn draw_event_labels(kept: &[(u16, &VLine)], plot: Rect, buf: &mut Buffer) {
     // In i64: a long label must not overflow u16 arithmetic.
-    let mut taken_until = i64::from(plot.x);
-    for (k, &(c, v)) in kept.iter().enumerate() {
-        let Some(label) = &v.label else { continue };
-        let c = i64::from(c);
-        let next = kept.get(k + 1).map_or(plot.right(), |n| n.0);
-        let next = i64::from(next);
-        let prev = if k > 0 {
-            i64::from(kept[k - 1].0) + 1
-        } else {
-            i64::from(plot.x)
-        };
-        let w = label.chars().count() as i64;
-        if c + 1 >= taken_until && c + 1 + w < next {
-            buf.set_string((c + 1) as u16, plot.y, label, v.style);
-            taken_until = c + 2 + w;
-        } else if c - w > prev.max(taken_until) {
-            buf.set_string((c - w) as u16, plot.y, label, v.style);
-            taken_until = c + 1;
+    let (lo, hi) = (i64::from(plot.x), i64::from(plot.right()));
+    let mut order: Vec<usize> = (0..kept.len()).collect();
+    order.sort_by_key(|&k| std::cmp::Reverse(kept[k].1.priority));
+    // Placed labels as [from, to) columns, each with its line and a gap after it.
+    let mut taken: Vec<(i64, i64)> = Vec::new();
+    let mut placed = vec![false; kept.len()];
+    for over_lines in [false, true] {
+        for &k in &order {
+            let (c, v) = kept[k];
+            let Some(label) = v.label.as_ref().filter(|_| !placed[k]) else {
+                continue;
+            };
+            let (c, w) = (i64::from(c), label.chars().count() as i64);
+            let next = kept.get(k + 1).map_or(hi, |n| i64::from(n.0));
+            let prev = k.checked_sub(1).map_or(lo - 1, |p| i64::from(kept[p].0));
+            let right = (c + 1, (c, c + 2 + w));
+            let left = (c - w, (c - w - 1, c + 1));
+            let spot = [
+                (right, over_lines || c + 1 + w < next),
+                (left, over_lines || c - w > prev + 1),
+            ]
+            .into_iter()
+            .find(|&((_, (from, to)), room)| {
+                room && from >= lo && to <= hi && taken.iter().all(|&(a, b)| to <= a || from >= b)
+            });
+            if let Some(((x, interval), _)) = spot {
+                buf.set_string(x as u16, plot.y, label, v.style);
+                taken.push(interval);
+                placed[k] = true;
+            }
         }
     }
 }

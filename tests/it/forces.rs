@@ -178,6 +178,13 @@ fn predict_asks_plays_and_explains() {
     press(&mut a, "y esc");
     assert_eq!(a.mode, Mode::Normal);
     assert!(!a.quit, "esc in the question does not quit");
+    // Asked after the impact, the question rewinds first: the outcome on screen
+    // behind it would give the answer away.
+    press(&mut a, "end y");
+    assert_eq!(a.mode, Mode::Predict);
+    assert_eq!(a.t, a.lab.solution.t_start);
+    let s = text(&a, (120, 40), false);
+    assert!(!s.contains("RECOLLIDE"), "{s}");
 }
 
 #[test]

@@ -264,6 +264,37 @@ fn the_typing_field_shows_its_cursor_as_a_reversed_cell() {
 }
 
 #[test]
+fn status_messages_never_hide_the_time_and_the_play_state() {
+    // Before, a message that did not fit beside playback went first and pushed the
+    // time off the line; an error replaced it.
+    let mut a = app("paper-b4.9");
+    select(&mut a, Key::Width);
+    let status_row = |a: &App, size: (u16, u16)| {
+        let screen = text(a, size, true);
+        screen
+            .lines()
+            .nth(usize::from(size.1) - 2)
+            .unwrap()
+            .to_string()
+    };
+    for keys in ["S-right", "enter x y z enter", "a", "esc", "> space"] {
+        press(&mut a, keys);
+        assert!(!matches!(a.status, Status::None), "{keys}");
+        for size in [(80, 24), (120, 40), (200, 60)] {
+            let row = status_row(&a, size);
+            let state = if a.playing { "playing" } else { "paused" };
+            assert!(row.starts_with("t = "), "{keys} {size:?}: {row}");
+            assert!(row.contains(state), "{keys} {size:?}: {row}");
+            assert!(row.ends_with("preset paper-b4.9"), "{keys} {size:?}: {row}");
+        }
+    }
+    // Where it all fits, the message is whole beside the full playback line.
+    let row = status_row(&a, (200, 60));
+    assert!(row.contains(" of -0.200 "), "{row}");
+    assert!(row.contains("impact at t = 0.0000 s"), "{row}");
+}
+
+#[test]
 fn playback_runs_on_the_clock_at_the_chosen_speed() {
     // No measured data: `.` and `,` step by one animation frame.
     let mut a = app("unequal-speeds");

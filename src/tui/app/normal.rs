@@ -5,7 +5,7 @@ use crate::lab::jobs::State;
 use crate::lab::{Edit, OVERLAY_LEVELS};
 use crate::methods::Method;
 use crate::settings::params::Key;
-use crate::settings::units::show;
+use crate::settings::units::{Dimension, show};
 
 use super::{Action, App, ChartBall, Export, Field, Mode, ROWS, SPEEDS, Status, View};
 
@@ -29,11 +29,12 @@ impl App {
             .any(|v| self.lab.set(p.key, v).is_ok());
         if stopped {
             self.applied(p.key);
-            // The refused value would give a hidden b away.
+            // The row's limits, short enough to stay beside the time in the status line
+            // (the refused value would give a hidden b away).
             let why = if self.hide_b && p.key == Key::Width {
                 String::new()
             } else {
-                format!(": {refused}")
+                format!(" {}", p.range.text)
             };
             if let Status::Info(done) = &self.status {
                 self.status = Status::Info(format!("{done}, stopped at the limit{why}"));
@@ -137,28 +138,26 @@ impl App {
     /// The next or previous event (`action`), named in the status line.
     fn jump_to_event(&mut self, action: Action) {
         self.playing = false;
-        match self.event_target(action == Action::NextEvent) {
-            Some(t) => {
-                self.t = t;
-                let e = self
-                    .lab
-                    .solution
-                    .visible_events()
-                    .find(|e| e.t == t && e.kind.label().is_some());
-                let name = e.and_then(|e| e.kind.label()).unwrap_or("event");
-                self.status = Status::Info(format!("{name} at t = {t:.4} s"));
+        self.status = Status::Info(match self.event_target(action == Action::NextEvent) {
+            Some(stop) => {
+                self.t = stop.t;
+                let name = if stop.label == "T-inf" {
+                    "T∞"
+                } else {
+                    stop.label
+                };
+                match stop.burst {
+                    Some((n, dt)) if n > 0 => format!(
+                        "{name} at t = {:.4} s: {n} impacts in the last {} accumulate here",
+                        stop.t,
+                        show(dt, Dimension::Time)
+                    ),
+                    _ => format!("{name} at t = {:.4} s", stop.t),
+                }
             }
-            None => {
-                self.status = Status::Info(
-                    if action == Action::NextEvent {
-                        "no later event in the span"
-                    } else {
-                        "no earlier event in the span"
-                    }
-                    .into(),
-                )
-            }
-        }
+            None if action == Action::NextEvent => "no later event in the span".into(),
+            None => "no earlier event in the span".into(),
+        });
     }
 
     /// The span key: auto, ×2, ×½.

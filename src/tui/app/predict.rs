@@ -27,12 +27,14 @@ pub fn reveal_time(sol: &Solution) -> f64 {
 }
 
 impl App {
-    /// The predict key: the Forces view, paused, and the question.
+    /// The predict key: the Forces view, paused at the start (a question asked after
+    /// the impact would have its answer on screen behind it), and the question.
     pub(super) fn ask_prediction(&mut self) {
         self.view = View::Forces;
         self.lab.want_methods(false);
         self.lab.want_fits(false);
         self.playing = false;
+        self.t = self.lab.solution.t_start;
         self.status = Status::None;
         self.mode = Mode::Predict;
     }

@@ -149,6 +149,14 @@ fn pinned_series(app: &App, columns: usize, theme: &Theme, curves: &[Curve]) -> 
         return Vec::new();
     }
     let samples = app.pinned_samples(columns);
+    // Without colour a dimmed braille line looks like the current run's: the pinned
+    // run is drawn in dots of its own glyph then, under the current curves (ASCII draws
+    // every line in its glyph).
+    let (draw, glyph) = match (monochrome(theme), theme.glyphs.ascii) {
+        (_, true) => (Draw::Line, "."),
+        (true, false) => (Draw::PointsUnder, "·"),
+        (false, false) => (Draw::Line, "."),
+    };
     curves
         .iter()
         .enumerate()
@@ -160,8 +168,8 @@ fn pinned_series(app: &App, columns: usize, theme: &Theme, curves: &[Curve]) -> 
             },
             points: samples.iter().map(|s| (s.t, value(s))).collect(),
             style: theme.dim,
-            glyph: ".",
-            draw: Draw::Line,
+            glyph,
+            draw,
         })
         .collect()
 }
@@ -266,7 +274,7 @@ fn overlay_velocities(app: &App, balls: &[usize], columns: usize, theme: &Theme)
             let p: Vec<(f64, f64)> = o.points.iter().map(|(t, y)| (*t, y[3 * i + j])).collect();
             match draw {
                 Draw::Points => thin_to(p, columns / 2),
-                Draw::Line => p,
+                Draw::Line | Draw::PointsUnder => p,
             }
         };
         let side = match (balls.len(), i) {

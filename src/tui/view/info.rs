@@ -7,6 +7,9 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::Widget;
 
 use super::{Ranked, block, by_priority, draw_lines};
+use crate::physics::derived::{Derived, Summary};
+use crate::physics::scene::Scene;
+use crate::physics::solution::Solution;
 use crate::physics::story::After;
 use crate::settings::units::{Dimension, show, significant};
 use crate::tui::app::App;
@@ -31,6 +34,8 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     // the first impact (t', v', or how the run ends when the closed forms do not hold),
     // before the rest of the story, the state at the cursor and the forces.
     let mut lines = regime_lines(app, inner.width, theme);
+    // A/B: both runs' key numbers side by side, right under the headline.
+    lines.splice(1..1, ab_lines(app, inner.width, theme));
     lines.extend(after_impact_lines(app, theme));
     lines.extend(force_lines(app, theme));
     lines.extend(impact_and_data_lines(app, theme));
@@ -84,6 +89,68 @@ fn regime_lines(app: &App, width: u16, theme: &Theme) -> Ranked<'static> {
             ]),
         ),
     ]);
+    lines
+}
+
+/// A run's key numbers for the A/B table: outcome, t' and v' of the left ball (when
+/// the closed forms hold), impacts, T∞, the share of the energy lost by the end.
+fn key_numbers(scene: &Scene, sol: &Solution, theme: &Theme) -> [String; 6] {
+    let summary = Summary::of(sol);
+    let after = Derived::of(scene).left_after_impact;
+    let none = || "-".to_string();
+    let lost = summary.energy_end.lost.total() / summary.energy_end.total();
+    [
+        summary.outcome.name().to_string(),
+        after.map_or_else(none, |a| format!("{:.4} s", a.t_roll)),
+        after.map_or_else(none, |a| format!("{:+.3} m/s", a.v_roll)),
+        summary.impacts.to_string(),
+        summary
+            .accumulation_time
+            .map_or_else(none, |t| format!("{t:.4} s")),
+        if lost.is_finite() {
+            format!("{:.0} %", 100.0 * lost)
+        } else {
+            none()
+        },
+    ]
+    .map(|s| theme.glyphs.text(&s))
+}
+
+/// With a run pinned: its key numbers beside the current run's, one row per quantity.
+fn ab_lines(app: &App, width: u16, theme: &Theme) -> Ranked<'static> {
+    let Some(pinned) = &app.lab.pinned else {
+        return Vec::new();
+    };
+    let g = theme.glyphs;
+    let a = key_numbers(&pinned.scene, &pinned.solution, theme);
+    let b = key_numbers(&app.lab.scene, &app.lab.solution, theme);
+    let names = [
+        "outcome".to_string(),
+        "t'".to_string(),
+        "v'".to_string(),
+        "impacts".to_string(),
+        format!("T{}", g.infinity),
+        "E lost".to_string(),
+    ];
+    // Label column, then the two runs in equal columns over the rest of the row.
+    let col = usize::from(width).saturating_sub(9) / 2;
+    let row = |name: &str, x: &str, y: &str, style| {
+        Line::from(vec![
+            label(&format!("{name:<9}"), theme),
+            Span::styled(format!("{x:<col$}"), style),
+            Span::styled(y.to_string(), style),
+        ])
+    };
+    let mut lines: Ranked = vec![(9, row("A/B", "pinned", "now", theme.title))];
+    for (i, name) in names.iter().enumerate() {
+        // The outcome never goes; the energy lost before the other numbers.
+        let priority = match i {
+            0 => 9,
+            5 => 7,
+            _ => 8,
+        };
+        lines.push((priority, row(name, &a[i], &b[i], theme.text)));
+    }
     lines
 }
 
@@ -172,14 +239,18 @@ fn impact_and_data_lines(app: &App, theme: &Theme) -> Ranked<'static> {
     let zeno = sol.accumulation.map_or(String::new(), |t| {
         format!("  T{} {t:.4} s", theme.glyphs.infinity)
     });
-    let mut lines: Ranked = vec![(
-        8,
-        Line::from(vec![
-            label("impacts ", theme),
-            value(format!("{}", sol.impacts), theme),
-            value(zeno, theme),
-        ]),
-    )];
+    let mut lines: Ranked = Vec::new();
+    // With a run pinned the A/B table gives them, for both runs.
+    if app.lab.pinned.is_none() {
+        lines.push((
+            8,
+            Line::from(vec![
+                label("impacts ", theme),
+                value(format!("{}", sol.impacts), theme),
+                value(zeno, theme),
+            ]),
+        ));
+    }
     match app.lab.data_rms {
         Some((rms_cm, Some(rms_t))) => lines.push((
             5,

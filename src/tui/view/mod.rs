@@ -212,37 +212,49 @@ pub(crate) fn computing<T>(
     buf.set_stringn(area.x, area.y, text, usize::from(area.width), theme.dim);
 }
 
-/// The status line: the message (or the typing prompt, or playback), cut with an
-/// ellipsis where it does not fit, and the preset's name at the right, always shown
-/// (itself cut if the name is very long).
+/// The status line: playback (time, playing or paused, speed) and beside it the last
+/// message, cut with an ellipsis where it does not fit (playback shortens first: the
+/// time and the play state are never hidden by a message); the typing prompt while a
+/// value is typed; the preset's name at the right, always shown (itself cut if very
+/// long).
 fn status(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let g = theme.glyphs;
-    let (text, style) = match (&app.mode, &app.status) {
-        (Mode::Edit(_), _) => (
-            crate::tui::app::typing_prompt(crate::tui::app::ROWS[app.selected])
-                .replace("mu_k", "μ_k"),
-            theme.info,
-        ),
-        (_, Status::Error(e)) => (e.clone(), theme.error),
-        // The message after playback if both fit, else first: it is what just happened.
-        (_, Status::Info(i)) => {
-            let both = format!("{}   {i}", app.playback());
-            let fits = both.chars().count() + 2 + 7 + app.lab.preset().name.len()
-                <= usize::from(area.width);
-            if fits {
-                (both, theme.text)
-            } else {
-                (format!("{i}   {}", app.playback()), theme.text)
-            }
-        }
-        (_, Status::None) => (app.playback(), theme.text),
-    };
     let width = usize::from(area.width);
     let right = g.ellipsize(&format!("preset {}", app.lab.preset().name), width / 3);
     let right_len = right.chars().count();
     let room = width.saturating_sub(right_len + 1);
-    buf.set_stringn(area.x, area.y, g.ellipsize(&text, room), room, style);
     buf.set_string(area.right() - right_len as u16, area.y, &right, theme.dim);
+    let (message, style) = match (&app.mode, &app.status) {
+        (Mode::Edit(_), _) => {
+            let prompt = crate::tui::app::typing_prompt(crate::tui::app::ROWS[app.selected])
+                .replace("mu_k", "μ_k");
+            buf.set_stringn(area.x, area.y, g.ellipsize(&prompt, room), room, theme.info);
+            return;
+        }
+        (_, Status::Error(e)) => (e.as_str(), theme.error),
+        (_, Status::Info(i)) => (i.as_str(), theme.text),
+        (_, Status::None) => ("", theme.text),
+    };
+    let long = app.playback();
+    let fits = |playback: &str| playback.chars().count() + 3 + message.chars().count() <= room;
+    let playback = if message.is_empty() || fits(&long) {
+        long
+    } else {
+        app.playback_short()
+    };
+    let playback = g.ellipsize(&playback, room);
+    let used = playback.chars().count();
+    buf.set_stringn(area.x, area.y, &playback, room, theme.text);
+    if !message.is_empty() && used + 3 < room {
+        let message = g.ellipsize(message, room - used - 3);
+        buf.set_stringn(
+            area.x + used as u16 + 3,
+            area.y,
+            message,
+            room - used - 3,
+            style,
+        );
+    }
 }
 
 /// Lines of a panel with a priority each; [`by_priority`] keeps the most important
