@@ -133,7 +133,10 @@ pub enum Usage {
         by: &'static str,
         allowed: &'static str,
     },
-    #[error("{flag} describes a --data file and none is given, allowed only with --data FILE")]
+    #[error(
+        "{flag} describes a {data} file and none is given, allowed only with {data} FILE",
+        data = Flag("data")
+    )]
     WithoutData { flag: Flag },
     #[error("{flag} is not used by the {method} method, allowed only with {allowed}")]
     NotForMethod {
