@@ -138,12 +138,28 @@ pub enum Usage {
         data = Flag("data")
     )]
     WithoutData { flag: Flag },
-    #[error("{flag} is not used by the {method} method, allowed only with {allowed}")]
+    #[error("{flag} is not used by the {} method, allowed only with {allowed}", method.name())]
     NotForMethod {
         flag: Flag,
-        method: &'static str,
-        allowed: &'static str,
+        method: Method,
+        allowed: UsedBy,
     },
+}
+
+/// The methods that use a method's option.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum UsedBy {
+    TimeStepping,
+    Method(Method),
+}
+
+impl fmt::Display for UsedBy {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            UsedBy::TimeStepping => f.write_str("a time-stepping method (the first step of rk45)"),
+            UsedBy::Method(m) => write!(f, "{} {}", Flag("method"), m.name()),
+        }
+    }
 }
 
 /// An option's value that cannot be used, with what is allowed.
