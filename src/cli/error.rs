@@ -133,14 +133,33 @@ pub enum Usage {
         by: &'static str,
         allowed: &'static str,
     },
-    #[error("{flag} describes a --data file and none is given, allowed only with --data FILE")]
+    #[error(
+        "{flag} describes a {data} file and none is given, allowed only with {data} FILE",
+        data = Flag("data")
+    )]
     WithoutData { flag: Flag },
-    #[error("{flag} is not used by the {method} method, allowed only with {allowed}")]
+    #[error("{flag} is not used by the {} method, allowed only with {allowed}", method.name())]
     NotForMethod {
         flag: Flag,
-        method: &'static str,
-        allowed: &'static str,
+        method: Method,
+        allowed: UsedBy,
     },
+}
+
+/// The methods that use a method's option.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum UsedBy {
+    TimeStepping,
+    Method(Method),
+}
+
+impl fmt::Display for UsedBy {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            UsedBy::TimeStepping => f.write_str("a time-stepping method (the first step of rk45)"),
+            UsedBy::Method(m) => write!(f, "{} {}", Flag("method"), m.name()),
+        }
+    }
 }
 
 /// An option's value that cannot be used, with what is allowed.
@@ -273,5 +292,57 @@ mod tests {
         }
         assert!(seen > 10, "found only {seen} flags");
         assert_eq!(Flag("time_unit").to_string(), "--time-unit");
+    }
+}
+
+#[cfg(test)]
+mod messages {
+    use super::*;
+
+    /// The one-line messages, made from the typed values where they are printed, read
+    /// as they did when they were built as strings at each site.
+    #[test]
+    fn typed_errors_print_the_messages_of_before() {
+        let cases: [(CliError, &str); 5] = [
+            (
+                BadValue::OutOfRange {
+                    flag: Flag("dt"),
+                    value: 2.0,
+                    dim: Dimension::Time,
+                    allowed: "0 < dt ≤ 1 s",
+                }
+                .into(),
+                "--dt 2 s is out of range, allowed 0 < dt ≤ 1 s",
+            ),
+            (
+                BadValue::Grid { text: "3x".into() }.into(),
+                "--grid 3x is not a grid, expected NX or NXxNY (1 ..= 10000 each), e.g. 400x200",
+            ),
+            (
+                BadValue::TooLargeForStdout {
+                    grid: "10000x10000".into(),
+                    points: 100_000_000,
+                    bytes: 10_000_000_000,
+                    format: SweepFormat::Csv,
+                    limit: 256 * 1024 * 1024,
+                }
+                .into(),
+                "--grid 10000x10000 gives 100000000 points, about 9.3 GiB of CSV, allowed at most 256 MiB on stdout; write it with --output FILE (streamed, no limit)",
+            ),
+            (
+                BadValue::FitWindowBackwards { from: 1.0, to: 0.5 }.into(),
+                "--from 1 s must be before --to 0.5 s",
+            ),
+            (
+                Usage::WithoutData {
+                    flag: Flag("window"),
+                }
+                .into(),
+                "--window describes a --data file and none is given, allowed only with --data FILE",
+            ),
+        ];
+        for (error, message) in cases {
+            assert_eq!(error.to_string(), message);
+        }
     }
 }

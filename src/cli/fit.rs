@@ -24,7 +24,8 @@ pub fn load_series(args: &DataArgs) -> Result<Option<Series>, CliError> {
             .data
             .iter()
             .map(|path| {
-                crate::input::read_user_file(path, "--data", crate::input::MAX_FILE_BYTES)
+                let what = Flag("data").to_string();
+                crate::input::read_user_file(path, &what, crate::input::MAX_FILE_BYTES)
                     .map(|text| (path.display().to_string(), text))
                     .map_err(CliError::from)
             })

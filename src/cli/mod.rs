@@ -220,25 +220,25 @@ fn method_options(args: &SimulateArgs) -> Result<(), CliError> {
             "dt",
             args.dt.is_some(),
             m != Method::Exact,
-            "a time-stepping method (the first step of rk45)",
+            error::UsedBy::TimeStepping,
         ),
         (
             "tol",
             args.tol.is_some(),
             m == Method::Rk45,
-            "--method rk45",
+            error::UsedBy::Method(Method::Rk45),
         ),
         (
             "epsilon",
             args.epsilon.is_some(),
             m == Method::Rk4,
-            "--method rk4",
+            error::UsedBy::Method(Method::Rk4),
         ),
     ];
     match uses.into_iter().find(|(_, given, used, _)| *given && !used) {
         Some((id, _, _, allowed)) => Err(Usage::NotForMethod {
             flag: Flag(id),
-            method: m.name(),
+            method: m,
             allowed,
         }
         .into()),

@@ -17,9 +17,9 @@ pub enum SaveError {
     NoFolder,
     #[error("{0} exists")]
     Exists(PathBuf),
-    /// The preset's text could not be made (the writer's reason).
-    #[error("{0}")]
-    Text(String),
+    /// The preset's text could not be made.
+    #[error("cannot write the preset: {0}")]
+    Text(toml::ser::Error),
     /// What would be written does not load again (a bug: never write it).
     #[error("the file would not load again: {0}")]
     WouldNotLoad(PresetError),

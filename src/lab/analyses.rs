@@ -11,6 +11,18 @@ use crate::study::fit::{self, FitError, Fits, Free, ModelFit};
 use super::Lab;
 use super::jobs::{State, Ticket, Waker};
 
+/// Why the line fit's window cannot move.
+#[derive(Clone, Copy, Debug, PartialEq, thiserror::Error)]
+pub enum FitWindowError {
+    #[error("this preset has no measured data to fit")]
+    NoData,
+    /// The window `from … to` (s) it would become.
+    #[error(
+        "fit window {from:.2} … {to:.2} s: allowed after the impact (t > 0) and at least 3 frames"
+    )]
+    Refused { from: f64, to: f64 },
+}
+
 /// A file an export wrote: where, and what it holds ("the chart", "800 samples every
 /// 10 ms").
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -238,9 +250,9 @@ impl Lab {
     }
 
     /// Moves one end of the line-fit window by one measured frame.
-    pub fn move_fit_window(&mut self, end: bool, later: bool) -> Result<(), String> {
+    pub fn move_fit_window(&mut self, end: bool, later: bool) -> Result<(), FitWindowError> {
         let Some(m) = self.measured() else {
-            return Err("this preset has no measured data to fit".into());
+            return Err(FitWindowError::NoData);
         };
         let current = match self.fits.ready() {
             Some(Ok(f)) => (f.line_fit.from, f.line_fit.to),
@@ -271,9 +283,7 @@ impl Lab {
                 .filter(|&&x| x >= from - 1e-12 && x <= to + 1e-12)
                 .count();
         if from <= 0.0 || frames < 3 {
-            return Err(format!(
-                "fit window {from:.2} … {to:.2} s: allowed after the impact (t > 0) and at least 3 frames"
-            ));
+            return Err(FitWindowError::Refused { from, to });
         }
         self.fit_window = (Some(from), Some(to));
         self.request_fits();

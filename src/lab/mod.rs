@@ -29,7 +29,8 @@ use analyses::Generation;
 use jobs::{Job, Jobs};
 
 pub use analyses::{
-    ExportResult, Exported, METHOD_VIEW_LEVELS, OVERLAY_LEVELS, Overlay, level_settings,
+    ExportResult, Exported, FitWindowError, METHOD_VIEW_LEVELS, OVERLAY_LEVELS, Overlay,
+    level_settings,
 };
 pub use resolved::{MeasuredPoints, Point, Resolved, Story};
 pub use settings::{Edit, Settings};

@@ -617,17 +617,7 @@ pub fn measure_observed(
     if progress.cancelled() {
         return Err(Cancelled);
     }
-    let exact_impacts: Vec<f64> = exact
-        .events
-        .iter()
-        .filter(|e| {
-            matches!(
-                e.kind,
-                EventKind::Collision | EventKind::ZenoRest | EventKind::ZenoContact
-            )
-        })
-        .map(|e| e.t)
-        .collect();
+    let exact_impacts = impact_times(exact);
     // rk45 places its steps itself: its windows are one tolerance wide.
     let slack = if method.adaptive() {
         settings.tolerance
@@ -664,35 +654,14 @@ pub fn measure_observed(
     if progress.cancelled() {
         return Err(Cancelled);
     }
-    let end = exact.at(run_end.t);
-    let err_final = [
-        run_end.y[1] - end.left.v,
-        run_end.y[2] - end.left.u,
-        run_end.y[4] - end.right.v,
-        run_end.y[5] - end.right.u,
-    ]
-    .iter()
-    .fold(0.0_f64, |a, d| a.max(d.abs()));
+    let err_final = final_error(exact, &run_end);
     let (outcome, impacts) = run_outcome(&metrics, &run_end, found.0.len(), scene.mu > 0.0);
     let outcome_right =
         outcome == reference.outcome && (reference.accumulating || impacts == reference.impacts);
     let accurate = [metrics.err_v, metrics.err_u, err_final]
         .iter()
         .all(|&e| e <= ACCURATE * scene.speed_scale());
-    let status = if metrics.nonfinite || metrics.gain > 1e-6 {
-        RunStatus::Unstable
-    } else if run_end.stalled.is_some() {
-        RunStatus::Stalled
-    } else if method.regularised() && metrics.slip_rolling > 0.01 * settings.epsilon {
-        // The exact regularised slip would have decayed by e^-20 by now.
-        RunStatus::Unstable
-    } else if metrics.flips > 3 {
-        RunStatus::Chatter
-    } else if !accurate {
-        RunStatus::Inaccurate
-    } else {
-        RunStatus::Ok
-    };
+    let status = run_status(&metrics, &run_end, method, settings, accurate);
     let exact_roll = exact_roll(exact);
     Ok(Row {
         method,
@@ -723,6 +692,59 @@ pub fn measure_observed(
         cut: reference.cut,
         note: run_end.stalled,
     })
+}
+
+/// The times of the exact run's impacts (collisions and accumulation points).
+fn impact_times(exact: &Solution) -> Vec<f64> {
+    exact
+        .events
+        .iter()
+        .filter(|e| {
+            matches!(
+                e.kind,
+                EventKind::Collision | EventKind::ZenoRest | EventKind::ZenoContact
+            )
+        })
+        .map(|e| e.t)
+        .collect()
+}
+
+/// The largest velocity error (v and u of both balls) where the run ended.
+fn final_error(exact: &Solution, run_end: &RunEnd) -> f64 {
+    let end = exact.at(run_end.t);
+    [
+        run_end.y[1] - end.left.v,
+        run_end.y[2] - end.left.u,
+        run_end.y[4] - end.right.v,
+        run_end.y[5] - end.right.u,
+    ]
+    .iter()
+    .fold(0.0_f64, |a, d| a.max(d.abs()))
+}
+
+/// The run's verdict: unstable (non-finite, energy gained, or a regularised slip that
+/// never decays), stalled, chattering, inaccurate, or ok, in that order.
+fn run_status(
+    metrics: &Metrics,
+    run_end: &RunEnd,
+    method: Method,
+    settings: &Settings,
+    accurate: bool,
+) -> RunStatus {
+    if metrics.nonfinite || metrics.gain > 1e-6 {
+        RunStatus::Unstable
+    } else if run_end.stalled.is_some() {
+        RunStatus::Stalled
+    } else if method.regularised() && metrics.slip_rolling > 0.01 * settings.epsilon {
+        // The exact regularised slip would have decayed by e^-20 by now.
+        RunStatus::Unstable
+    } else if metrics.flips > 3 {
+        RunStatus::Chatter
+    } else if !accurate {
+        RunStatus::Inaccurate
+    } else {
+        RunStatus::Ok
+    }
 }
 
 /// The outcome word of a time-stepping run and its impacts: `impacts` detected, the

@@ -212,7 +212,7 @@ pub fn to_toml(
     description: &str,
     spec: &SceneSpec,
     measured: Option<&Measured>,
-) -> Result<String, String> {
+) -> Result<String, toml::ser::Error> {
     #[derive(serde::Serialize)]
     struct Out<'a> {
         name: &'a str,
@@ -231,7 +231,6 @@ pub fn to_toml(
         scene,
         measured,
     })
-    .map_err(|e| format!("cannot write the preset: {e}"))
 }
 
 #[cfg(test)]

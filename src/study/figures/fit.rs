@@ -5,7 +5,7 @@ use plotters::prelude::*;
 
 use plotters::coord::Shift;
 
-use super::{FigureError, finite_bounds, linear_axis};
+use super::{FigureError, draw_measured_marks, finite_bounds, linear_axis};
 use crate::physics::scene::Scene;
 use crate::physics::solution::Solution;
 use crate::settings::units::Dimension;
@@ -120,26 +120,20 @@ fn draw_fit(
                 PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2))
             });
     }
-    chart
-        .draw_series(
-            m.t.iter()
-                .zip(&m.v_cm)
-                .map(|(t, v)| (*t, *v))
-                .filter(|p| finite(*p))
-                .map(|p| Cross::new(fit(p), 4, BLUE)),
-        )?
-        .label("measured v_cm")
-        .legend(move |(x, y)| Cross::new((x + 10, y), 4, BLUE));
-    chart
-        .draw_series(
-            m.t.iter()
-                .zip(&m.v_t)
-                .map(|(t, v)| (*t, *v))
-                .filter(|p| finite(*p))
-                .map(|p| Circle::new(fit(p), 3, ORANGE)),
-        )?
-        .label("measured v_t")
-        .legend(move |(x, y)| Circle::new((x + 10, y), 3, ORANGE));
+    let points = |v: &[f64]| {
+        m.t.iter()
+            .zip(v)
+            .map(|(t, v)| (*t, *v))
+            .filter(|p| finite(*p))
+            .map(fit)
+            .collect::<Vec<_>>()
+    };
+    draw_measured_marks(
+        &mut chart,
+        points(&m.v_cm).into_iter(),
+        points(&m.v_t).into_iter(),
+        (BLUE, ORANGE),
+    )?;
     let l = &fits.line_fit;
     for (line, colour) in l.lines.iter().zip([BLUE, ORANGE]) {
         chart.draw_series(LineSeries::new(

@@ -27,6 +27,36 @@ pub enum FigureError {
 /// Largest magnitude put on an axis; beyond it spans overflow.
 const AXIS_LIMIT: f64 = 1e300;
 
+/// A chart on an SVG with linear axes.
+type Chart<'a, 'b> = plotters::chart::ChartContext<
+    'a,
+    plotters::backend::SVGBackend<'b>,
+    plotters::coord::cartesian::Cartesian2d<
+        plotters::coord::types::RangedCoordf64,
+        plotters::coord::types::RangedCoordf64,
+    >,
+>;
+
+/// Measured points as the figures mark them, with their legend entries: v_cm as
+/// crosses, v_t as circles, in the colours given.
+fn draw_measured_marks(
+    chart: &mut Chart,
+    v_cm: impl Iterator<Item = (f64, f64)>,
+    v_t: impl Iterator<Item = (f64, f64)>,
+    (cm, t): (plotters::style::RGBColor, plotters::style::RGBColor),
+) -> Result<(), FigureError> {
+    use plotters::element::{Circle, Cross};
+    chart
+        .draw_series(v_cm.map(|p| Cross::new(p, 4, cm)))?
+        .label("measured v_cm")
+        .legend(move |(x, y)| Cross::new((x + 10, y), 4, cm));
+    chart
+        .draw_series(v_t.map(|p| Circle::new(p, 3, t)))?
+        .label("measured v_t")
+        .legend(move |(x, y)| Circle::new((x + 10, y), 3, t));
+    Ok(())
+}
+
 /// The smallest and largest finite value, if any.
 pub fn finite_bounds(values: impl IntoIterator<Item = f64>) -> Option<(f64, f64)> {
     values

@@ -3,9 +3,7 @@
 
 use plotters::prelude::*;
 
-use plotters::coord::types::RangedCoordf64;
-
-use super::{FigureError, linear_axis};
+use super::{Chart, FigureError, draw_measured_marks, linear_axis};
 use crate::physics::solution::{Snapshot, Solution};
 use crate::settings::units::Dimension;
 use crate::study::measured::series::Measured;
@@ -22,9 +20,6 @@ type Pick = fn(&Snapshot) -> f64;
 
 /// A curve of the chart: legend name, what it plots of a state, colour.
 type Curve = (String, Pick, RGBColor);
-
-/// Where a chart's axes land in the SVG.
-type Chart<'a, 'b> = ChartContext<'a, SVGBackend<'b>, Cartesian2d<RangedCoordf64, RangedCoordf64>>;
 
 const BLUE: RGBColor = RGBColor(31, 119, 180);
 const ORANGE: RGBColor = RGBColor(255, 127, 14);
@@ -109,26 +104,20 @@ fn value_range(curves: &[Curve], samples: &[Snapshot], measured: Option<&Measure
 
 /// The measured left-ball points within the time axis: v_cm as crosses, v_t as circles.
 fn draw_measured(chart: &mut Chart, m: &Measured, (t0, t1): (f64, f64)) -> Result<(), FigureError> {
-    let inside = |t: &f64| (t0..=t1).contains(t);
-    chart
-        .draw_series(
-            m.t.iter()
-                .zip(&m.v_cm)
-                .filter(|(t, v)| inside(t) && v.is_finite())
-                .map(|(t, v)| Cross::new((*t, *v), 4, RED)),
-        )?
-        .label("measured v_cm")
-        .legend(move |(x, y)| Cross::new((x + 10, y), 4, RED));
-    chart
-        .draw_series(
-            m.t.iter()
-                .zip(&m.v_t)
-                .filter(|(t, v)| inside(t) && v.is_finite())
-                .map(|(t, v)| Circle::new((*t, *v), 3, RED)),
-        )?
-        .label("measured v_t")
-        .legend(move |(x, y)| Circle::new((x + 10, y), 3, RED));
-    Ok(())
+    let inside = |(t, v): &(f64, f64)| (t0..=t1).contains(t) && v.is_finite();
+    let points = |v: &[f64]| {
+        m.t.iter()
+            .zip(v)
+            .map(|(t, v)| (*t, *v))
+            .filter(inside)
+            .collect::<Vec<_>>()
+    };
+    draw_measured_marks(
+        chart,
+        points(&m.v_cm).into_iter(),
+        points(&m.v_t).into_iter(),
+        (RED, RED),
+    )
 }
 
 /// A run's chart, as the app's chart panel shows it: v_cm(t) and v_t(t) of the chosen

@@ -447,7 +447,7 @@ impl App {
 
     fn move_window(&mut self, end: bool, later: bool) {
         if let Err(e) = self.lab.move_fit_window(end, later) {
-            self.status = Status::Error(e);
+            self.status = Status::Error(e.to_string());
         }
     }
 }

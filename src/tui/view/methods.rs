@@ -146,17 +146,8 @@ pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         State::Ready(rows) => rows,
         other => return super::computing(&other, "running every method", inner, buf, theme),
     };
-    let g = theme.glyphs;
-    // Each method's best run (smallest error) stays on a short screen, one per method;
-    // the other levels go, coarsest first.
-    let best: Vec<usize> = Method::TIME_STEPPING
-        .iter()
-        .filter_map(|&m| {
-            (0..rows.len())
-                .filter(|&i| rows[i].method == m)
-                .min_by(|&a, &b| rows[a].err_v.total_cmp(&rows[b].err_v))
-        })
-        .collect();
+    let width = usize::from(inner.width);
+    let marks = width >= 42;
     let mut lines: Ranked = vec![(
         9,
         Line::from(Span::styled(
@@ -167,16 +158,38 @@ pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             theme.title,
         )),
     )];
+    lines.extend(run_lines(rows, width, marks, theme));
+    lines.extend(legend_lines(app, rows, marks, theme));
+    draw_lines(by_priority(lines, inner), inner, buf);
+}
+
+/// Each method's best run (smallest error), one per method.
+fn best_runs(rows: &[Row]) -> Vec<usize> {
+    Method::TIME_STEPPING
+        .iter()
+        .filter_map(|&m| {
+            (0..rows.len())
+                .filter(|&i| rows[i].method == m)
+                .min_by(|&a, &b| rows[a].err_v.total_cmp(&rows[b].err_v))
+        })
+        .collect()
+}
+
+/// One line per run in `width` columns: marker and method, setting, status, the
+/// outcome mark (with `marks`) and err_v. Each method's best run stays on a short
+/// screen, one per method; the other levels go, coarsest first.
+fn run_lines(rows: &[Row], width: usize, marks: bool, theme: &Theme) -> Ranked<'static> {
+    let g = theme.glyphs;
+    let best = best_runs(rows);
     // Setting and status take 19 columns (a longer status word takes from the error),
     // the outcome mark 2 more where the panel is wide enough; err_v gets at least 7
     // ("2.9e-10"), taken from the name column on a narrow panel, and is fitted into
     // what it gets (fewer digits, never a cut exponent).
-    let width = usize::from(inner.width);
-    let marks = width >= 42;
     let fixed = if marks { 21 } else { 19 };
     let name_w = width.saturating_sub(fixed + 7).clamp(2, 19);
     // How many runs of each method came before (the level's rank, coarse first).
     let mut seen: Vec<Method> = Vec::new();
+    let mut lines: Ranked = Vec::new();
     for (i, r) in rows.iter().enumerate() {
         let setting = r.setting();
         let style = if r.status == RunStatus::Ok {
@@ -215,8 +228,13 @@ pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             ]),
         ));
     }
-    // What the outcome marks compare with (up to the budget's cut, if it cut the
-    // span), and each fixed-step method's fitted order.
+    lines
+}
+
+/// What the outcome marks compare with (up to the budget's cut, if it cut the span),
+/// the cut itself, and each fixed-step method's fitted order.
+fn legend_lines(app: &App, rows: &[Row], marks: bool, theme: &Theme) -> Ranked<'static> {
+    let mut lines: Ranked = Vec::new();
     let cut = rows.iter().find_map(|r| r.cut);
     let (outcome, impacts) = match cut {
         Some(end) => outcome_until(&app.lab.solution, end),
@@ -259,7 +277,7 @@ pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             )),
         ));
     }
-    draw_lines(by_priority(lines, inner), inner, buf);
+    lines
 }
 
 #[cfg(test)]

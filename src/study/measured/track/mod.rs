@@ -152,6 +152,99 @@ impl Found {
 #[error("{0}")]
 pub struct TrackError(pub String);
 
+/// The half-window of the local fits, frames: the one asked for, else the smallest
+/// n ≥ 2 whose slope's standard error (frame spacing `dt`, position noise `sigma`)
+/// reaches the target, at most the largest half-window allowed.
+fn half_window(dt: f64, sigma: f64, opts: &Derive) -> usize {
+    match opts.half_window {
+        Some(h) => ((h / dt).round() as usize).max(2),
+        None => {
+            let cap = ((opts.max_half_window / dt).floor() as usize).max(2);
+            (2..=cap)
+                .find(|&n| {
+                    let s = (n * (n + 1) * (2 * n + 1)) as f64 / 3.0;
+                    sigma / (dt * s.sqrt()) <= opts.target_se
+                })
+                .unwrap_or(cap)
+        }
+    }
+}
+
+/// The rim mark's angle about the centre and its local fits.
+struct Spin {
+    /// Times of the frames with a mark (and a centre), s.
+    at: Vec<f64>,
+    /// The unwrapped angle θ = atan2(dx, dy), 0 with the mark on top, growing as it
+    /// moves toward the other ball over the top.
+    theta: Vec<f64>,
+    fits: Vec<Option<Local>>,
+    /// The mark's median distance from the centre, m.
+    radius: f64,
+    /// Those frames' rows of the track.
+    valid: Vec<usize>,
+}
+
+/// The mark's [`Spin`] over the centre's `rows` (moving in direction `dir`), fitted
+/// over ±`n` frames between the impacts `cuts`; `None` without a mark.
+fn spin_of(track: &Track, rows: &[usize], dir: f64, n: usize, cuts: &[f64]) -> Option<Spin> {
+    let (mx, my) = track.mark.as_ref()?;
+    let valid: Vec<usize> = rows
+        .iter()
+        .copied()
+        .filter(|&i| mx[i].is_finite() && my[i].is_finite() && track.y[i].is_finite())
+        .collect();
+    let at: Vec<f64> = valid.iter().map(|&i| track.t[i]).collect();
+    let mut theta: Vec<f64> = valid
+        .iter()
+        .map(|&i| (dir * (mx[i] - track.x[i])).atan2(my[i] - track.y[i]))
+        .collect();
+    unwrap(&mut theta);
+    let radius = median(
+        valid
+            .iter()
+            .map(|&i| (mx[i] - track.x[i]).hypot(my[i] - track.y[i]))
+            .collect(),
+    );
+    let s_theta = scatter(&theta).max(1e-7);
+    let fits = derivatives(&at, &theta, n, cuts, s_theta);
+    Some(Spin {
+        at,
+        theta,
+        fits,
+        radius,
+        valid,
+    })
+}
+
+impl Spin {
+    /// The spin's sign: the balls roll before the impact at `t_impact`, so there v_t
+    /// has v_cm's sign (`dx`: the centre's fits at `ts`; a mirrored or upside-down
+    /// picture flips the angle's sense, not the physics).
+    fn sign(&self, ts: &[f64], dx: &[Option<Local>], t_impact: f64, dir: f64) -> f64 {
+        let dot: f64 = self
+            .at
+            .iter()
+            .zip(&self.fits)
+            .filter(|(t, _)| **t < t_impact)
+            .filter_map(|(t, l)| {
+                let i = ts.partition_point(|x| x < t);
+                Some(l.as_ref()?.slope * dx.get(i)?.as_ref()?.slope * dir)
+            })
+            .sum();
+        if dot < 0.0 { -1.0 } else { 1.0 }
+    }
+
+    /// The angle at the impact at `t_impact`: from the last local fit before it.
+    fn angle_at(&self, t_impact: f64) -> Option<f64> {
+        let i = self.at.partition_point(|&t| t < t_impact);
+        let (j, l) = (
+            i.checked_sub(1).or(Some(i))?,
+            self.fits.get(i.checked_sub(1).unwrap_or(i))?.as_ref()?,
+        );
+        Some(l.value + l.slope * (t_impact - self.at[j]))
+    }
+}
+
 /// Derives the left ball's measured series from a track: t from the first impact,
 /// v_cm (and v_t from the mark, with `contact_radius` r = kR) with uncertainties, and
 /// the positions. The tracked ball plays the model's left ball.
@@ -175,18 +268,7 @@ pub fn derive(
     }
     let dt = median(ts.windows(2).map(|w| w[1] - w[0]).collect());
     let sigma = scatter(&xs).max(1e-7);
-    let n = match opts.half_window {
-        Some(h) => ((h / dt).round() as usize).max(2),
-        None => {
-            let cap = ((opts.max_half_window / dt).floor() as usize).max(2);
-            (2..=cap)
-                .find(|&n| {
-                    let s = (n * (n + 1) * (2 * n + 1)) as f64 / 3.0;
-                    sigma / (dt * s.sqrt()) <= opts.target_se
-                })
-                .unwrap_or(cap)
-        }
-    };
+    let n = half_window(dt, sigma, opts);
     let kinks = impacts(&ts, &xs, n.max(3), sigma, dt, opts.impact_at)?;
     let first = kinks[0];
     let dir = first.before.signum();
@@ -202,44 +284,10 @@ pub fn derive(
     }
     let cuts: Vec<f64> = kinks.iter().map(|k| k.t).collect();
     let dx = derivatives(&ts, &xs, n, &cuts, sigma);
-    // The mark's angle about the centre: θ = atan2(dx, dy), 0 with the mark on top,
-    // growing as it moves toward the other ball over the top.
-    let spin = track.mark.as_ref().map(|(mx, my)| {
-        let valid: Vec<usize> = rows
-            .iter()
-            .copied()
-            .filter(|&i| mx[i].is_finite() && my[i].is_finite() && track.y[i].is_finite())
-            .collect();
-        let at: Vec<f64> = valid.iter().map(|&i| track.t[i]).collect();
-        let mut theta: Vec<f64> = valid
-            .iter()
-            .map(|&i| (dir * (mx[i] - track.x[i])).atan2(my[i] - track.y[i]))
-            .collect();
-        unwrap(&mut theta);
-        let radius = median(
-            valid
-                .iter()
-                .map(|&i| (mx[i] - track.x[i]).hypot(my[i] - track.y[i]))
-                .collect(),
-        );
-        let s_theta = scatter(&theta).max(1e-7);
-        let d = derivatives(&at, &theta, n, &cuts, s_theta);
-        (at, theta, d, radius, valid)
-    });
-    // The spin's sign: the balls roll before the impact, so there v_t has v_cm's sign
-    // (a mirrored or upside-down picture flips the angle's sense, not the physics).
-    let spin_sign = spin.as_ref().map_or(1.0, |(at, _, d, _, _)| {
-        let dot: f64 = at
-            .iter()
-            .zip(d)
-            .filter(|(t, _)| **t < first.t)
-            .filter_map(|(t, l)| {
-                let i = ts.partition_point(|x| x < t);
-                Some(l.as_ref()?.slope * dx.get(i)?.as_ref()?.slope * dir)
-            })
-            .sum();
-        if dot < 0.0 { -1.0 } else { 1.0 }
-    });
+    let spin = spin_of(track, &rows, dir, n, &cuts);
+    let spin_sign = spin
+        .as_ref()
+        .map_or(1.0, |s| s.sign(&ts, &dx, first.t, dir));
     let mut m = Measured::default();
     let (mut sig_cm, mut sig_t, mut pos, mut ang) = (vec![], vec![], vec![], vec![]);
     // The stencils in the model's time (first impact at 0), as the points are.
@@ -247,9 +295,9 @@ pub fn derive(
     let mut stencils = Stencils {
         centre_times: shifted(&ts),
         centre_sign: dir,
-        mark_times: spin.as_ref().map(|s| shifted(&s.0)).unwrap_or_default(),
+        mark_times: spin.as_ref().map(|s| shifted(&s.at)).unwrap_or_default(),
         mark_frames: spin.as_ref().map_or_else(Vec::new, |s| {
-            mark_frames(track, &rows, &s.4, dir, spin_sign)
+            mark_frames(track, &rows, &s.valid, dir, spin_sign)
         }),
         ..Stencils::default()
     };
@@ -257,15 +305,7 @@ pub fn derive(
         t0: s.t0 - first.t,
         ..s
     };
-    // Angle at the impact: from the last local fit before it.
-    let theta0 = spin.as_ref().and_then(|(at, _, d, _, _)| {
-        let i = at.partition_point(|&t| t < first.t);
-        let (j, l) = (
-            i.checked_sub(1).or(Some(i))?,
-            d.get(i.checked_sub(1).unwrap_or(i))?.as_ref()?,
-        );
-        Some(l.value + l.slope * (first.t - at[j]))
-    });
+    let theta0 = spin.as_ref().and_then(|s| s.angle_at(first.t));
     for (i, l) in dx.iter().enumerate() {
         let Some(l) = l else { continue };
         m.t.push(ts[i] - first.t);
@@ -274,9 +314,11 @@ pub fn derive(
         stencils.v_cm.push(Some(shift(l.stencil)));
         pos.push(dir * (xs[i] - first.x));
         let (vt, st, a, stencil) = match &spin {
-            Some((at, theta, d, _, _)) => {
+            Some(Spin {
+                at, theta, fits, ..
+            }) => {
                 let k = at.partition_point(|&t| t < ts[i]);
-                match (at.get(k) == Some(&ts[i]), d.get(k).copied().flatten()) {
+                match (at.get(k) == Some(&ts[i]), fits.get(k).copied().flatten()) {
                     (true, Some(ld)) => (
                         spin_sign * ld.slope * contact_radius,
                         ld.slope_se * contact_radius,
@@ -317,7 +359,7 @@ pub fn derive(
         frames_before: before,
         frames_after: after,
         later_impacts: kinks[1..].iter().map(|k| k.t - first.t).collect(),
-        mark_radius: spin.as_ref().map(|s| s.3),
+        mark_radius: spin.as_ref().map(|s| s.radius),
     };
     Ok((m, found))
 }
