@@ -260,14 +260,14 @@ impl App {
     }
 
     /// Playback in few words, for a status line that also holds a message: the time,
-    /// playing or paused, the speed.
-    pub fn playback_short(&self) -> String {
-        format!(
-            "t = {:.3} s  {}  ×{}",
-            self.t,
-            if self.playing { "playing" } else { "paused" },
-            self.speed_text()
-        )
+    /// playing or paused, and the speed if `with_speed`.
+    pub fn playback_short(&self, with_speed: bool) -> String {
+        let state = if self.playing { "playing" } else { "paused" };
+        if with_speed {
+            format!("t = {:.3} s  {state}  ×{}", self.t, self.speed_text())
+        } else {
+            format!("t = {:.3} s  {state}", self.t)
+        }
     }
 
     fn speed_text(&self) -> String {

@@ -67,9 +67,16 @@ fn a_step_past_a_limit_stops_at_the_limit() {
         a.lab.scene.width
     );
     assert!(
-        matches!(&a.status, Status::Info(s) if s.contains("b = 5.45 cm") && s.contains("stopped at the limit") && s.contains("2R")),
+        matches!(&a.status, Status::Info(s) if s.contains("b = 5.45 cm") && s.contains("at the limit") && s.contains("2R")),
         "{:?}",
         a.status
+    );
+    // The whole message fits beside the time and play state at 80 columns.
+    let screen = text(&a, (80, 24), false);
+    let status = screen.lines().nth(22).unwrap();
+    assert!(
+        status.starts_with("t = -0.200 s  paused   b = 5.45 cm, at the limit (0 ≤ b < 2R)"),
+        "{status}"
     );
     // From the limit a step cannot move: refused, the scene unchanged.
     let before = a.lab.scene;
@@ -87,7 +94,7 @@ fn a_step_past_a_limit_stops_at_the_limit() {
     press(&mut a, "right");
     assert_eq!(a.lab.scene.restitution, 1.0);
     assert!(
-        matches!(&a.status, Status::Info(s) if s.contains("stopped at the limit")),
+        matches!(&a.status, Status::Info(s) if s.contains("at the limit")),
         "{:?}",
         a.status
     );
@@ -100,7 +107,7 @@ fn a_step_past_a_limit_stops_at_the_limit() {
     press(&mut a, "left");
     assert_eq!(a.lab.scene.mu, 0.0);
     assert!(
-        matches!(&a.status, Status::Info(s) if s.contains("stopped at the limit")),
+        matches!(&a.status, Status::Info(s) if s.contains("at the limit")),
         "{:?}",
         a.status
     );
@@ -109,7 +116,7 @@ fn a_step_past_a_limit_stops_at_the_limit() {
     select(&mut a, Key::Width);
     press(&mut a, "B S-right");
     assert!(
-        matches!(&a.status, Status::Info(s) if s.contains("stopped at the limit") && !s.contains("cm")),
+        matches!(&a.status, Status::Info(s) if s.contains("at the limit") && !s.contains("cm")),
         "{:?}",
         a.status
     );

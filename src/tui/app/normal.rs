@@ -5,7 +5,7 @@ use crate::lab::jobs::State;
 use crate::lab::{Edit, OVERLAY_LEVELS};
 use crate::methods::Method;
 use crate::settings::params::Key;
-use crate::settings::units::{Dimension, show};
+use crate::settings::units::{Dimension, show, significant};
 
 use super::{Action, App, ChartBall, Export, Field, Mode, ROWS, SPEEDS, Status, View};
 
@@ -34,10 +34,10 @@ impl App {
             let why = if self.hide_b && p.key == Key::Width {
                 String::new()
             } else {
-                format!(" {}", p.range.text)
+                format!(" ({})", p.range.text)
             };
             if let Status::Info(done) = &self.status {
-                self.status = Status::Info(format!("{done}, stopped at the limit{why}"));
+                self.status = Status::Info(format!("{done}, at the limit{why}"));
             }
         } else {
             self.status = Status::Error(format!("not applied: {refused}"));
@@ -52,7 +52,7 @@ impl App {
             // Esc closes popups and cancels prompts; on the main screen it must not end
             // the session (a reflex Esc lost a student's whole setup), so it says how.
             Action::Cancel => {
-                self.status = Status::Info("Esc closes popups and cancels typing: q quits".into())
+                self.status = Status::Info("q quits (Esc closes popups, cancels typing)".into())
             }
             Action::Up => self.selected = (self.selected + n - 1) % n,
             Action::Down | Action::NextParam => self.selected = (self.selected + 1) % n,
@@ -147,10 +147,15 @@ impl App {
                     stop.label
                 };
                 match stop.burst {
+                    // Short enough to stay whole beside the time on most screens.
                     Some((n, dt)) if n > 0 => format!(
-                        "{name} at t = {:.4} s: {n} impacts in the last {} accumulate here",
+                        "{name} at t = {:.4} s: {n} impacts in {}",
                         stop.t,
-                        show(dt, Dimension::Time)
+                        if dt < 1.0 {
+                            format!("{} ms", significant(dt * 1e3, 3))
+                        } else {
+                            show(dt, Dimension::Time).to_string()
+                        }
                     ),
                     _ => format!("{name} at t = {:.4} s", stop.t),
                 }

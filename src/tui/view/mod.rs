@@ -213,8 +213,8 @@ pub(crate) fn computing<T>(
 }
 
 /// The status line: playback (time, playing or paused, speed) and beside it the last
-/// message, cut with an ellipsis where it does not fit (playback shortens first: the
-/// time and the play state are never hidden by a message); the typing prompt while a
+/// message, cut with an ellipsis where it does not fit (playback shortens first, down
+/// to the time and the play state, which a message never hides); the typing prompt while a
 /// value is typed; the preset's name at the right, always shown (itself cut if very
 /// long).
 fn status(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
@@ -235,13 +235,12 @@ fn status(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         (_, Status::Info(i)) => (i.as_str(), theme.text),
         (_, Status::None) => ("", theme.text),
     };
-    let long = app.playback();
-    let fits = |playback: &str| playback.chars().count() + 3 + message.chars().count() <= room;
-    let playback = if message.is_empty() || fits(&long) {
-        long
-    } else {
-        app.playback_short()
-    };
+    // The longest playback that leaves the message whole, else the shortest.
+    let fits = |playback: &String| playback.chars().count() + 3 + message.chars().count() <= room;
+    let playback = [app.playback(), app.playback_short(true)]
+        .into_iter()
+        .find(|p| message.is_empty() || fits(p))
+        .unwrap_or_else(|| app.playback_short(false));
     let playback = g.ellipsize(&playback, room);
     let used = playback.chars().count();
     buf.set_stringn(area.x, area.y, &playback, room, theme.text);
