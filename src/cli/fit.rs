@@ -105,6 +105,22 @@ struct FitJson<'a> {
     not_measured: Vec<NotMeasured>,
 }
 
+/// A model fit's values that the data do not determine (listed in its
+/// `not_identified`, with why) are `null`, not a number that reads as fitted.
+fn null_undetermined(fit: &mut serde_json::Value) {
+    let names: Vec<String> = fit["not_identified"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .filter_map(|n| n["parameter"].as_str().map(str::to_string))
+        .collect();
+    for name in names {
+        if let Some(v) = fit.get_mut(&name) {
+            *v = serde_json::Value::Null;
+        }
+    }
+}
+
 /// A value the data cannot give (JSON null), and why.
 #[derive(Serialize)]
 struct NotMeasured {
@@ -176,7 +192,7 @@ pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<St
     let position = position.transpose().map_err(cancelled)?;
     let text = match args.format {
         FitFormat::Json => {
-            let mut s = serde_json::to_string_pretty(&FitJson {
+            let mut json = serde_json::to_value(FitJson {
                 scene: &scene,
                 fits: &fits,
                 position_fit: position.as_ref(),
@@ -184,6 +200,12 @@ pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<St
                 not_measured: not_measured(&fits),
             })
             .expect("plain data serializes");
+            for fit in ["model_fit", "position_fit"] {
+                if let Some(fit) = json.get_mut(fit) {
+                    null_undetermined(fit);
+                }
+            }
+            let mut s = serde_json::to_string_pretty(&json).expect("plain data serializes");
             s.push('\n');
             s
         }
@@ -387,14 +409,20 @@ fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit, paper_data:
         "{title:<35} {:>24} {:>24}",
         "velocities (derived)", "positions (direct)"
     );
+    // A value the data do not determine gets no number that reads as fitted.
+    let undetermined =
+        |m: &ModelFit, name: &str| m.not_identified.iter().any(|n| n.parameter == name);
     let pm = |m: &ModelFit| {
-        if m.mu_se.is_finite() {
+        if undetermined(m, "mu") {
+            "not determined".to_string()
+        } else if m.mu_se.is_finite() {
             format!("{:.4} ± {:.4}", m.mu, 2.0 * m.mu_se)
         } else {
             format!("{:.4} (no ±)", m.mu)
         }
     };
-    let opt = |v: f64, se: Option<f64>| match se {
+    let opt = |m: &ModelFit, name: &str, v: f64, se: Option<f64>| match se {
+        _ if undetermined(m, name) => "not determined".to_string(),
         Some(se) => format!("{v:.4} ± {:.4}", 2.0 * se),
         None => format!("{v:.4} (no ±)"),
     };
@@ -409,16 +437,16 @@ fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit, paper_data:
         row(
             &mut out,
             "v0 m/s (± 2σ)",
-            opt(v.v0, v.v0_se),
-            opt(p.v0, p.v0_se),
+            opt(v, "v0", v.v0, v.v0_se),
+            opt(p, "v0", p.v0, p.v0_se),
         );
     }
     if free(v, "restitution", v.restitution_se) || free(p, "restitution", p.restitution_se) {
         row(
             &mut out,
             "e (± 2σ)",
-            opt(v.restitution, v.restitution_se),
-            opt(p.restitution, p.restitution_se),
+            opt(v, "restitution", v.restitution, v.restitution_se),
+            opt(p, "restitution", p.restitution, p.restitution_se),
         );
     }
     row(
@@ -447,6 +475,7 @@ fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit, paper_data:
         regime(p),
     );
     let verdict = |m: &ModelFit| match (m.agrees, m.indistinguishable_from_rest) {
+        _ if undetermined(m, "mu") => "μ_k not determined".to_string(),
         (true, true) => "agree (v' in rest band)".to_string(),
         (true, false) => "agree".to_string(),
         (false, _) => "DISAGREE".to_string(),
@@ -456,7 +485,12 @@ fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit, paper_data:
     let _ = writeln!(out, "  position fit: regime {}", p.verdict);
     for (what, m) in [("velocity", v), ("position", p)] {
         for n in &m.not_identified {
-            let _ = writeln!(out, "  {what} fit: {} has no ±: {}", n.parameter, n.reason);
+            let _ = writeln!(
+                out,
+                "  {what} fit: {} not determined: {}",
+                symbol(n.parameter).0,
+                n.reason
+            );
         }
     }
     let _ = writeln!(

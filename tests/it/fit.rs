@@ -460,3 +460,62 @@ fn the_papers_table_disagrees_with_itself_and_fit_says_so() {
     );
     assert!(!out("paper-b3.5").contains("disagrees"));
 }
+
+#[test]
+fn a_mu_the_positions_do_not_determine_is_not_reported_as_fitted() {
+    // A centre-only track on a flat table (b = 0): the position fit runs μ_k to the
+    // edge of its physical range (it once returned μ_k ≈ 1e10 and said "agree").
+    let out = groovelab(&[
+        "fit",
+        "--preset",
+        "flat-table",
+        "--data",
+        "docs/video/ball.txt",
+    ]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{text}");
+    let row = |name: &str| {
+        text.lines()
+            .find(|l| l.trim_start().starts_with(name))
+            .unwrap_or_else(|| panic!("no {name} row in {text}"))
+            .to_string()
+    };
+    let mu = row("μ_k (± 2σ");
+    assert!(mu.ends_with("not determined"), "{mu}");
+    let verdict = row("verdict");
+    assert!(!verdict.contains("agree"), "{verdict}");
+    assert!(text.contains("position fit: μ_k not determined:"), "{text}");
+    assert!(!text.contains(" mu "), "{text}");
+    // In JSON the undetermined value is null, with its reason, and nothing agrees.
+    let out = groovelab(&[
+        "fit",
+        "--preset",
+        "flat-table",
+        "--data",
+        "docs/video/ball.txt",
+        "--format",
+        "json",
+    ]);
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let p = &json["position_fit"];
+    assert!(p["mu"].is_null() && p["mu_se"].is_null(), "{p}");
+    assert_eq!(p["agrees"], false, "{p}");
+    assert_eq!(p["not_identified"][0]["parameter"], "mu", "{p}");
+    assert!(
+        p["not_identified"][0]["reason"]
+            .as_str()
+            .unwrap()
+            .contains("μ_k ≤ 10"),
+        "{p}"
+    );
+    // Every fitted μ_k printed (a number and its ±, as in the models table) lies
+    // within the parameter table's 0 … 10.
+    for w in text.split("μ_k ").skip(1) {
+        let mut words = w.split_whitespace();
+        if let (Some(Ok(v)), Some("±" | "(no")) =
+            (words.next().map(str::parse::<f64>), words.next())
+        {
+            assert!((0.0..=10.0).contains(&v), "μ_k {v} in {text}");
+        }
+    }
+}

@@ -318,7 +318,11 @@ fn scored_fit(
         v_roll,
         verdict: verdict.text("±"),
         indistinguishable_from_rest: verdict.indistinguishable_from_rest(),
-        agrees: verdict.agrees_with(regime_observed),
+        // A regime predicted from a μ_k the data do not determine agrees with nothing.
+        agrees: verdict.agrees_with(regime_observed)
+            && !not_identified
+                .iter()
+                .any(|n| n.parameter == Free::Mu.name()),
         not_identified,
         every,
     }))

@@ -5,6 +5,7 @@
 use serde::Serialize;
 
 use super::Free;
+use crate::settings::params::Key;
 use crate::study::measured::series::Stencils;
 
 /// Which measured value a velocity residual compares with: the point's index and
@@ -18,14 +19,26 @@ pub struct NotIdentified {
     pub reason: String,
 }
 
-/// A fitted value's bounds: restitution lies in [0, 1], μ_k above 0.
+/// A fitted value's bounds: its physical range in the parameter table (a fit is no
+/// better than the scenes it may propose: μ_k = 1e10 is no friction coefficient).
 pub(super) fn bounds(f: Free) -> (f64, f64) {
+    let range = key(f).param().range;
+    (range.lo, range.hi)
+}
+
+/// The parameter-table row of a free value.
+fn key(f: Free) -> Key {
     match f {
-        Free::Mu => (1e-6, f64::INFINITY),
-        Free::V0 => (f64::NEG_INFINITY, f64::INFINITY),
-        Free::Restitution => (0.0, 1.0),
-        Free::RollingResistance => (0.0, f64::INFINITY),
+        Free::Mu => Key::Mu,
+        Free::V0 => Key::V0,
+        Free::Restitution => Key::Restitution,
+        Free::RollingResistance => Key::RollingResistance,
     }
+}
+
+/// A fitted value's range as people read it.
+fn range_text(f: Free) -> &'static str {
+    key(f).param().range.text
 }
 
 /// `p` moved into the bounds of each free value.
@@ -129,9 +142,8 @@ pub(super) fn uncertainties(
             why.push(NotIdentified {
                 parameter: free[i].name(),
                 reason: format!(
-                    "at its bound {} = {}: the best fit lies on the edge of the allowed range, so it has no ± (fix it and fit the others)",
-                    free[i].name(),
-                    p[i]
+                    "the best fit lies on the edge of its physical range ({}), so the data do not determine it (fix it and fit the others)",
+                    range_text(free[i])
                 ),
             });
         } else if !(jtj[i][i] > 0.0 && jtj[i][i].is_finite()) {
@@ -304,6 +316,11 @@ mod tests {
         assert!((se[1].unwrap() - 0.25).abs() < 1e-12);
         assert_eq!(se[2], None);
         assert_eq!(why[0].parameter, "restitution");
-        assert!(why[0].reason.contains("bound"), "{why:?}");
+        assert!(
+            why[0]
+                .reason
+                .contains("edge of its physical range (0 ≤ e ≤ 1)"),
+            "{why:?}"
+        );
     }
 }
