@@ -67,6 +67,11 @@ pub struct Lab {
     settings: Settings,
     /// The user's own series, used instead of the preset's.
     own_data: Option<OwnData>,
+    /// The series in use (the user's own, else the preset's), shared by every
+    /// snapshot built from it.
+    series: Option<Series>,
+    /// Which series the current snapshot was built from ([`series_key`]).
+    built_from: Option<usize>,
     /// The run pinned for an A/B comparison.
     pub pinned: Option<Pinned>,
     /// The current snapshot, built from the layers by [`Resolved::build`].
@@ -107,14 +112,13 @@ impl Lab {
     /// The lab on its settings, with the user's own series (`--data`) in place of the
     /// preset's, if any.
     pub fn new(settings: Settings, own_data: Option<OwnData>) -> Result<Lab, SceneError> {
-        let series = own_data
-            .as_ref()
-            .map(|d| d.series.clone())
-            .or_else(|| preset_series(&settings.preset));
+        let series = in_use(own_data.as_ref(), &settings.preset);
         let now = Arc::new(Resolved::build(&settings, series.as_ref(), None)?);
         Ok(Lab {
             settings,
             own_data,
+            built_from: series_key(series.as_ref()),
+            series,
             pinned: None,
             now,
             fit_window: (None, None),
@@ -160,11 +164,8 @@ impl Lab {
 
     /// The measured series in use, as loaded, before any scene: the user's own, else
     /// the preset's (what a position track's derivation found is in it).
-    pub fn series(&self) -> Option<Series> {
-        self.own_data
-            .as_ref()
-            .map(|d| d.series.clone())
-            .or_else(|| preset_series(&self.settings.preset))
+    pub fn series(&self) -> Option<&Series> {
+        self.series.as_ref()
     }
 
     /// [`Resolved::measured`], shared (a job takes it without copying the series).
@@ -223,12 +224,16 @@ impl Lab {
     /// Starts over from `preset` (its `t_end`, if any, holds until a parameter
     /// changes); the user's own series stays (see [`Lab::drop_data`]).
     pub fn load_preset(&mut self, preset: Preset) -> Result<(), SceneError> {
-        let was = std::mem::replace(
-            &mut self.settings,
-            Settings::new(preset, SceneSpec::default()),
+        let series = in_use(self.own_data.as_ref(), &preset);
+        let was = (
+            std::mem::replace(
+                &mut self.settings,
+                Settings::new(preset, SceneSpec::default()),
+            ),
+            std::mem::replace(&mut self.series, series),
         );
         if let Err(e) = self.rebuild() {
-            self.settings = was;
+            (self.settings, self.series) = was;
             return Err(e);
         }
         self.fit_window = (None, None);
@@ -239,6 +244,7 @@ impl Lab {
     /// dropped series' name, if there was one.
     pub fn drop_data(&mut self) -> Option<String> {
         let dropped = self.own_data.take()?;
+        self.series = in_use(None, &self.settings.preset);
         self.fit_window = (None, None);
         self.rebuild()
             .expect("the data do not decide whether a scene is valid");
@@ -272,12 +278,11 @@ impl Lab {
     /// Builds the snapshot of the layers, the series in use and the pin; the analyses
     /// start over only if the scene or its span changed.
     fn rebuild(&mut self) -> Result<(), SceneError> {
-        let series = self.series();
-        let now = Resolved::build(&self.settings, series.as_ref(), self.pinned.as_ref())?;
+        let now = Resolved::build(&self.settings, self.series.as_ref(), self.pinned.as_ref())?;
         let moved = now.scene != self.now.scene
             || now.span != self.now.span
-            || now.data.as_ref().map(|d| Arc::as_ptr(&d.measured))
-                != self.now.data.as_ref().map(|d| Arc::as_ptr(&d.measured));
+            || series_key(self.series.as_ref()) != self.built_from;
+        self.built_from = series_key(self.series.as_ref());
         self.now = Arc::new(now);
         if moved {
             // Every analysis asked for from now on belongs to this solve.
@@ -313,4 +318,18 @@ fn preset_series(preset: &Preset) -> Option<Series> {
         .measured
         .clone()
         .map(|m| Series::Velocities(Arc::new(m)))
+}
+
+/// The series a lab shows: the user's own, else the preset's.
+fn in_use(own: Option<&OwnData>, preset: &Preset) -> Option<Series> {
+    own.map(|d| d.series.clone())
+        .or_else(|| preset_series(preset))
+}
+
+/// Which series this is (the address of its shared points): a snapshot built from
+/// another one starts the analyses over.
+fn series_key(series: Option<&Series>) -> Option<usize> {
+    series.map(|s| match s {
+        Series::Velocities(m) | Series::Track(m, _) => Arc::as_ptr(m) as usize,
+    })
 }

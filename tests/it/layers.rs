@@ -185,3 +185,26 @@ fn data_without_a_scene_one_rule_for_the_app_render_and_fit() {
     let b = rendered(&scene(SceneSpec::default()), &d, None, None, library());
     assert_eq!(b.status, Status::None);
 }
+
+#[test]
+fn pinning_keeps_the_snapshots_analyses_and_an_edit_starts_them_over() {
+    let mut a = common::app("paper-b4.9", library());
+    press(&mut a, "f");
+    a.lab.wait();
+    let runs = a.lab.runs();
+    assert!(runs > 0, "the Fit view's fits ran");
+    // Pinning leaves the scene, its span and its data as they were: nothing again.
+    press(&mut a, "P");
+    a.lab.wait();
+    press(&mut a, "P");
+    a.lab.wait();
+    assert_eq!(a.lab.runs(), runs);
+    // An edit is a new scene: the fits run again (and again for its undo).
+    press(&mut a, "right");
+    a.lab.wait();
+    let edited = a.lab.runs();
+    assert!(edited > runs, "{edited} after {runs}");
+    press(&mut a, "u");
+    a.lab.wait();
+    assert!(a.lab.runs() > edited);
+}
