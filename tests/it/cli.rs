@@ -71,6 +71,13 @@ fn every_option_rejects_bad_values() {
         (&["--size", "10"], "COLSxROWS"),
         (&["--size", "0x10"], "COLSxROWS"),
         (&["--size", "5000x10"], "COLSxROWS"),
+        // render has no terminal: a screen below the app's smallest is a usage error.
+        (
+            &["--size", "10x5"],
+            "'10x5' is smaller than the app's smallest screen, allowed at least 80x24",
+        ),
+        (&["--size", "79x23"], "at least 80x24"),
+        (&["--size", "80x23"], "at least 80x24"),
         (&["--at", "5s"], "outside the simulated span"),
         (&["--at", "-1"], "outside the simulated span"),
         (&["--keys", "space spacebar"], "unknown key 'spacebar'"),
