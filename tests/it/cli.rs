@@ -61,6 +61,12 @@ fn every_option_rejects_bad_values() {
         (&["--bogus"], "unexpected argument"),
         // Physical ranges (the parameter table): finite but absurd values are refused.
         (&["--mass-right", "1e308"], "1 mg ≤ m ≤ 1000 kg"),
+        // Named as given: --mass sets both balls.
+        (
+            &["--mass", "1e308"],
+            "error: mass = 1e308 kg is out of range",
+        ),
+        (&["--v0", "1e155"], "error: v0 = "),
         (&["--v0", "1e155"], "-100 m/s ≤ v0 ≤ 100 m/s"),
         (&["--mu", "11"], "0 ≤ μ_k ≤ 10"),
         (&["--radius", "11m"], "R ≤ 10 m"),
