@@ -244,8 +244,14 @@ pub(crate) fn counts(text: &str, max: usize) -> Option<(usize, Option<usize>)> {
     }
 }
 
+/// `--size`: `render` has no terminal to grow, so a screen smaller than the app's
+/// smallest layout is a usage error, not a screen saying "terminal too small".
 fn screen_size(text: &str) -> Result<(u16, u16), String> {
+    let (min_c, min_r) = crate::tui::view::MIN_SIZE;
     match counts(text, usize::from(MAX_SCREEN)) {
+        Some((c, Some(r))) if c < usize::from(min_c) || r < usize::from(min_r) => Err(format!(
+            "'{text}' is smaller than the app's smallest screen, allowed at least {min_c}x{min_r} (up to {MAX_SCREEN}x{MAX_SCREEN})"
+        )),
         Some((c, Some(r))) => Ok((c as u16, r as u16)),
         _ => Err(format!(
             "'{text}' is not a size, expected COLSxROWS such as 120x40 (1..={MAX_SCREEN} each)"

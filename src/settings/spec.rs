@@ -64,6 +64,15 @@ impl SceneSpec {
         }
     }
 
+    /// The row `p`'s value was given through: the one setting both balls (`mass`)
+    /// when this layer holds the same value for both, else `p`.
+    fn given_as(&self, p: &'static Param) -> &'static Param {
+        PARAMS
+            .iter()
+            .find(|q| q.sets.len() > 1 && q.sets.contains(&p.key) && self.get(q.key).is_some())
+            .unwrap_or(p)
+    }
+
     /// Builder form of [`SceneSpec::set`].
     pub fn with(mut self, key: Key, value: f64) -> SceneSpec {
         self.set(key, value);
@@ -122,7 +131,8 @@ impl SceneSpec {
                 .iter()
                 .any(|q| q.replaces == Some(p.key) && self.values[q.key as usize].is_some());
             let v = match (given, p.default) {
-                (Some(v), _) => in_range(p, v)?,
+                // Out of range under the name the user gave: `mass` for both balls'.
+                (Some(v), _) => in_range(self.given_as(p), v)?,
                 (None, Fallback::Value(v)) => v,
                 (None, Fallback::Optional) => continue,
                 (None, Fallback::Required) if replaced => continue,

@@ -61,6 +61,12 @@ fn every_option_rejects_bad_values() {
         (&["--bogus"], "unexpected argument"),
         // Physical ranges (the parameter table): finite but absurd values are refused.
         (&["--mass-right", "1e308"], "1 mg ≤ m ≤ 1000 kg"),
+        // Named as given: --mass sets both balls.
+        (
+            &["--mass", "1e308"],
+            "error: mass = 1e308 kg is out of range",
+        ),
+        (&["--v0", "1e155"], "error: v0 = "),
         (&["--v0", "1e155"], "-100 m/s ≤ v0 ≤ 100 m/s"),
         (&["--mu", "11"], "0 ≤ μ_k ≤ 10"),
         (&["--radius", "11m"], "R ≤ 10 m"),
@@ -71,6 +77,13 @@ fn every_option_rejects_bad_values() {
         (&["--size", "10"], "COLSxROWS"),
         (&["--size", "0x10"], "COLSxROWS"),
         (&["--size", "5000x10"], "COLSxROWS"),
+        // render has no terminal: a screen below the app's smallest is a usage error.
+        (
+            &["--size", "10x5"],
+            "'10x5' is smaller than the app's smallest screen, allowed at least 80x24",
+        ),
+        (&["--size", "79x23"], "at least 80x24"),
+        (&["--size", "80x23"], "at least 80x24"),
         (&["--at", "5s"], "outside the simulated span"),
         (&["--at", "-1"], "outside the simulated span"),
         (&["--keys", "space spacebar"], "unknown key 'spacebar'"),

@@ -519,3 +519,24 @@ fn a_mu_the_positions_do_not_determine_is_not_reported_as_fitted() {
         }
     }
 }
+
+#[test]
+fn the_line_fit_window_ends_with_the_data() {
+    // The first 94 frames of a track (the last at 0.576 s after the impact) and a
+    // window asked to reach 5 s: the window reported is the data's.
+    let track: String = std::fs::read_to_string("docs/video/ball.txt")
+        .unwrap()
+        .lines()
+        .take(96)
+        .map(|l| format!("{l}\n"))
+        .collect();
+    let path = csv("short-ball.txt", &track);
+    let out = groovelab(&[
+        "fit", "--data", &path, "--radius", "2.75cm", "--width", "4.9cm", "--mass", "167g", "--v0",
+        "0.8m/s", "--to", "5", "--format", "json",
+    ]);
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let to = json["line_fit"]["to"].as_f64().unwrap();
+    // The last frame: 0.775 s in the file, less the impact at 0.1994 s.
+    assert!(to < 0.58 && to > 0.57, "{to}");
+}

@@ -98,6 +98,14 @@ pub fn line_fit(
             FitError::Data("no measured points after the impact (t > 0) to fit".into())
         })?;
     let to = window.1.or(auto.map(|w| w.1)).unwrap_or(from);
+    // A window reaching past the data's ends fits what the data hold: report that span
+    // (a fitted model may roll again only after the track ends; `--to 5` on a 1 s track).
+    let span =
+        m.t.iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &t| {
+                (lo.min(t), hi.max(t))
+            });
+    let (from, to) = (from.max(span.0), to.min(span.1));
     let idx: Vec<usize> = (0..m.t.len())
         .filter(|&i| m.t[i] >= from - 1e-12 && m.t[i] <= to + 1e-12)
         .collect();
