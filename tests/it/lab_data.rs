@@ -265,6 +265,7 @@ fn the_students_file_is_named_on_the_chart_where_there_is_room() {
             at: Some(0.1),
             size,
             keys: None,
+            output: None,
         };
         let s = scene(SceneSpec::default());
         render_with(&s, &data(|_| {}), &args, false, no_user_presets()).unwrap()
@@ -285,6 +286,7 @@ fn the_students_file_is_named_on_the_chart_where_there_is_room() {
             at: Some(0.1),
             size: (200, 60),
             keys: None,
+            output: None,
         },
         false,
         no_user_presets(),
