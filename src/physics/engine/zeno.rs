@@ -77,14 +77,16 @@ impl Engine {
         }
         // The last geometric_cycles + 2 cycles are geometric; the first impact of the
         // history has no cycle before it.
-        self.sum_tail(self.geometric_cycles.min(n - 2), !negligible);
+        if !self.sum_tail(self.geometric_cycles.min(n - 2), !negligible) {
+            self.geometric_cycles = 0;
+        }
     }
 
     /// Sums the rest of a geometric series of impacts from its last `m` cycles and
     /// jumps to the accumulation point. Everything is taken over m cycles, not one:
     /// their ratio q = ρ^m is the quotient of two cycle times, and 1 − q keeps its
     /// digits where 1 − ρ (b near 2R: 1 − ρ ≈ 5k²) would lose them to rounding.
-    fn sum_tail(&mut self, m: usize, by_budget: bool) {
+    fn sum_tail(&mut self, m: usize, by_budget: bool) -> bool {
         let n = self.history.len();
         let (h0, hm) = (self.history[n - 1], self.history[n - 1 - m]);
         let q = h0.cycle / hm.cycle;
@@ -128,7 +130,16 @@ impl Engine {
             ratio,
             by_budget,
         });
+        // A limit with more kinetic energy than the pair has now (beyond rounding) is no
+        // limit of this series: its cycles only looked geometric (rolling resistance
+        // changes the speeds over a long tail). The impacts are then resolved on.
+        let kinetic_now = self.kinetic(&self.state);
+        let scale = kinetic_now + self.ledger.total();
+        if self.kinetic(&state) > kinetic_now + 1e-9 * scale {
+            return false;
+        }
         self.finish_series(remaining, state, angle, ledger, by_budget);
+        true
     }
 
     /// Ends a series of impacts at `remaining` seconds from now in the limit `state`:
