@@ -209,13 +209,12 @@ impl Lab {
         Some(edit)
     }
 
-    /// Drops every edit made in the app (the preset and the command line's values
-    /// stay); false if there was none.
+    /// Sets aside every edit made in the app (the preset and the command line's
+    /// values stay; [`Lab::undo`] brings them back); false if none was in force.
     pub fn reset(&mut self) -> bool {
-        if self.settings.edits().is_empty() {
+        if !self.settings.reset() {
             return false;
         }
-        self.settings.reset();
         self.fit_window = (None, None);
         self.rebuild().expect("the scene without edits was valid");
         true

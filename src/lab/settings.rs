@@ -1,7 +1,8 @@
 //! The lab's layers of settings — the table's defaults ← the preset ← the command
 //! line's flags ← the edits made in the app, newest last — and the one rule that
 //! settles them into a checked scene, its span and how the span ends. An edit is a
-//! layer entry: undo pops it, reset clears them all.
+//! layer entry: undo pops it; a reset is an entry too (the edits before it stop
+//! counting), so an accidental reset can be undone like any change.
 
 use crate::physics::scene::{Scene, Span};
 use crate::settings::params::{Key, SceneError, SceneSpec};
@@ -15,6 +16,8 @@ use super::span::SpanEnd;
 pub enum Edit {
     Values(Vec<(Key, f64)>),
     SpanEnd(SpanEnd),
+    /// Every earlier edit set aside: the scene as the preset and the flags give it.
+    Reset,
 }
 
 /// The layers a lab's scene is settled from (the defaults are the table's own).
@@ -53,9 +56,24 @@ impl Settings {
         self.edits.pop()
     }
 
-    /// Drops every edit: the scene as the preset and the flags give it.
-    pub fn reset(&mut self) {
-        self.edits.clear();
+    /// The edits that count: those after the newest reset.
+    pub fn in_force(&self) -> &[Edit] {
+        let from = self
+            .edits
+            .iter()
+            .rposition(|e| *e == Edit::Reset)
+            .map_or(0, |i| i + 1);
+        &self.edits[from..]
+    }
+
+    /// Sets every edit aside (the scene as the preset and the flags give it); false,
+    /// and nothing added, when none is in force. Undo brings them back.
+    pub fn reset(&mut self) -> bool {
+        if self.in_force().is_empty() {
+            return false;
+        }
+        self.edits.push(Edit::Reset);
+        true
     }
 
     /// The scene, its span and how the span ends, by the span rule (see [`SpanEnd`]):
@@ -74,10 +92,12 @@ impl Settings {
         };
         let flags: Vec<(Key, f64)> = self.flags.given().collect();
         set_values(&mut spec, &mut end, &flags);
-        for edit in &self.edits {
+        for edit in self.in_force() {
             match edit {
                 Edit::Values(changes) => set_values(&mut spec, &mut end, changes),
                 Edit::SpanEnd(e) => end = *e,
+                // `in_force` starts after the newest reset.
+                Edit::Reset => {}
             }
         }
         // The end is `end`'s alone: a fixed one is checked with the scene.

@@ -255,3 +255,38 @@ fn data_follow_the_scene_when_it_changes_in_the_lab() {
     let t = a.t[a.t.len() / 2];
     assert_eq!(by_flags.ghost_x(t), by_keys.ghost_x(t));
 }
+
+#[test]
+fn the_students_file_is_named_on_the_chart_where_there_is_room() {
+    let at = |size: (u16, u16)| {
+        let args = RenderArgs {
+            at: Some(0.1),
+            size,
+            keys: None,
+        };
+        let s = scene(SceneSpec::default());
+        render_with(&s, &data(|_| {}), &args, false, no_user_presets()).unwrap()
+    };
+    let wide = at((200, 60));
+    assert!(
+        wide.contains("v_cm(t) and v_t(t), left ball, data paper-b4.9-tracker.txt  [b] switches"),
+        "{wide}"
+    );
+    // Where the name would push the key hint out, the title keeps the hint.
+    let narrow = at((120, 40));
+    assert!(narrow.contains("left ball  [b] switches"), "{narrow}");
+    // A preset's own data are not the user's file: no name.
+    let paper = render_with(
+        &scene(SceneSpec::default()),
+        &DataArgs::default(),
+        &RenderArgs {
+            at: Some(0.1),
+            size: (200, 60),
+            keys: None,
+        },
+        false,
+        no_user_presets(),
+    )
+    .unwrap();
+    assert!(paper.contains("left ball  [b] switches"), "{paper}");
+}

@@ -97,10 +97,35 @@ fn u_undoes_the_last_change_and_r_resets_all_to_the_preset() {
     assert_eq!(a.lab.scene, fresh, "exactly the preset's scene again");
     // The span key is an edit too; R drops every edit.
     press(&mut a, "t right right");
-    assert_ne!(a.lab.span_end, end);
+    let (changed, spanned) = (a.lab.scene, a.lab.span_end);
+    assert_ne!(spanned, end);
     press(&mut a, "R");
     assert_eq!((a.lab.scene, a.lab.span_end), (fresh, end));
-    assert_eq!(a.status, Status::Info("reset to preset paper-b4.9".into()));
+    assert_eq!(
+        a.status,
+        Status::Info("reset to preset paper-b4.9 (u undoes it)".into())
+    );
+    press(&mut a, "R");
+    assert_eq!(
+        a.status,
+        Status::Info("nothing to reset: the scene is the preset's".into()),
+        "a second R adds nothing to undo"
+    );
+    // A reset pressed by accident loses nothing: u brings every change back.
+    press(&mut a, "u");
+    assert_eq!((a.lab.scene, a.lab.span_end), (changed, spanned));
+    assert!(
+        matches!(&a.status, Status::Info(s) if s.starts_with("undone: the reset")),
+        "{:?}",
+        a.status
+    );
+    // ... and the changes before it are undone one by one again: two steps of b
+    // (the selected row), then the span key.
+    press(&mut a, "u u");
+    assert_eq!(a.lab.span_end, spanned);
+    assert_eq!(a.lab.scene, fresh);
+    press(&mut a, "u");
+    assert_eq!(a.lab.span_end, end);
     press(&mut a, "u");
     assert_eq!(a.status, Status::Info("nothing to undo".into()));
 }
@@ -118,7 +143,9 @@ fn undo_reaches_a_span_set_with_t_end_and_keeps_the_command_lines_values() {
     assert_eq!(a.lab.span_end, SpanEnd::Auto);
     assert_eq!(
         a.status,
-        Status::Info("reset to preset paper-b4.9 with the command line's values".into())
+        Status::Info(
+            "reset to preset paper-b4.9 with the command line's values (u undoes it)".into()
+        )
     );
 }
 

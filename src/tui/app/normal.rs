@@ -214,6 +214,7 @@ impl App {
                 shown.join(", ")
             }
             Edit::SpanEnd(_) => format!("time span {}", self.lab.span_end.describe()),
+            Edit::Reset => "the reset: your changes are back".into(),
         };
         let left = self.lab.settings().edits().len();
         self.status = Status::Info(format!("undone: {back} ({left} more to undo)"));
@@ -232,7 +233,10 @@ impl App {
         } else {
             ""
         };
-        self.status = Status::Info(format!("reset to preset {}{flags}", self.lab.preset().name));
+        self.status = Status::Info(format!(
+            "reset to preset {}{flags} (u undoes it)",
+            self.lab.preset().name
+        ));
     }
 
     /// Drops the user's own data; the preset's (if any) are shown again.

@@ -333,13 +333,16 @@ fn measured_velocities(m: &MeasuredPoints, theme: &Theme) -> Vec<Series> {
         glyph: if theme.glyphs.ascii { "x" } else { "×" },
         draw: Draw::Points,
     });
-    series.push(Series {
-        name: "measured v_t".into(),
-        points: Arc::clone(&m.v_t),
-        style: theme.measured,
-        glyph: if theme.glyphs.ascii { "o" } else { "+" },
-        draw: Draw::Points,
-    });
+    // A track without a rim mark measures no v_t: no legend entry claims one.
+    if !m.v_t.is_empty() {
+        series.push(Series {
+            name: "measured v_t".into(),
+            points: Arc::clone(&m.v_t),
+            style: theme.measured,
+            glyph: if theme.glyphs.ascii { "o" } else { "+" },
+            draw: Draw::Points,
+        });
+    }
     series
 }
 
@@ -390,8 +393,14 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
     let mut series = pinned_series(app, columns, theme, &curves);
     series.extend(exact_velocities(&samples, &balls, theme));
     series.extend(overlay_velocities(app, &balls, columns, theme));
+    let mut data = String::new();
     if let Some(m) = app.lab.points.as_ref().filter(|_| balls.contains(&0)) {
         series.extend(measured_velocities(m, theme));
+        // The student's own file is named where its points are drawn (its file
+        // name, when the title has room for it beside the key hint).
+        if let Some(own) = app.lab.own_data() {
+            data = format!(", data {}", file_name(&own.name));
+        }
     }
     let mut vlines = Vec::new();
     if let (true, State::Ready(Ok(f))) = (app.fit_view(), app.lab.fits()) {
@@ -414,7 +423,26 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
         x_ticks: None,
         y_ticks: None,
     };
-    (format!(" v_cm(t) and v_t(t), {which}  [b] switches "), plot)
+    let named = format!(" v_cm(t) and v_t(t), {which}{data}  [b] switches ");
+    let title = if named.chars().count() + 4 <= usize::from(area.width) {
+        named
+    } else {
+        format!(" v_cm(t) and v_t(t), {which}  [b] switches ")
+    };
+    (title, plot)
+}
+
+/// The last part of each path in `names` (the data may come as `a.txt + b.txt`).
+fn file_name(names: &str) -> String {
+    names
+        .split(" + ")
+        .map(|n| {
+            std::path::Path::new(n)
+                .file_name()
+                .map_or(n.into(), |f| f.to_string_lossy().into_owned())
+        })
+        .collect::<Vec<_>>()
+        .join(" + ")
 }
 
 /// At most about `n` of `points`, evenly picked (markers one per two columns).
