@@ -540,3 +540,35 @@ fn the_line_fit_window_ends_with_the_data() {
     // The last frame: 0.775 s in the file, less the impact at 0.1994 s.
     assert!(to < 0.58 && to > 0.57, "{to}");
 }
+
+#[test]
+fn a_track_says_how_many_rows_it_left_out() {
+    // Three rows of a track lose their centre (an empty cell and two NaN).
+    let track: String = std::fs::read_to_string("docs/video/ball.txt")
+        .unwrap()
+        .lines()
+        .enumerate()
+        .map(|(i, l)| match i {
+            10 | 11 => {
+                let mut c: Vec<&str> = l.split('\t').collect();
+                c[1] = if i == 10 { "" } else { "NaN" };
+                format!("{}\n", c.join("\t"))
+            }
+            12 => {
+                let mut c: Vec<&str> = l.split('\t').collect();
+                c[1] = "NaN";
+                format!("{}\n", c.join("\t"))
+            }
+            _ => format!("{l}\n"),
+        })
+        .collect();
+    let path = csv("dropped-ball.txt", &track);
+    let out = groovelab(&["fit", "--preset", "paper-b4.9", "--data", &path]);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{text}");
+    assert!(text.contains("118 frames at"), "{text}");
+    assert!(
+        text.contains("3 of 121 rows left out: their centre position is empty or NaN"),
+        "{text}"
+    );
+}

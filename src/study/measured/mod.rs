@@ -26,7 +26,7 @@ pub enum Series {
     Velocities(Arc<Measured>),
     /// Velocities derived from a position track: `v_t` and `v_t_sigma` hold the spin
     /// rate dθ/dt and its uncertainty (rad/s) until a scene gives r.
-    Track(Arc<Measured>, Found),
+    Track(Arc<Measured>, Box<Found>),
 }
 
 impl Series {
@@ -34,7 +34,7 @@ impl Series {
     pub fn found(&self) -> Option<&Found> {
         match self {
             Series::Velocities(_) => None,
-            Series::Track(_, found) => Some(found),
+            Series::Track(_, found) => Some(found.as_ref()),
         }
     }
 }
@@ -46,7 +46,7 @@ pub fn prepare(raw: RawSeries, opts: &Derive) -> Result<Series, TrackError> {
         RawSeries::Velocities(m) => Series::Velocities(Arc::new(m)),
         RawSeries::Positions(t) => {
             let (m, found) = track::derive(&t, 1.0, opts)?;
-            Series::Track(Arc::new(m), found)
+            Series::Track(Arc::new(m), Box::new(found))
         }
     })
 }

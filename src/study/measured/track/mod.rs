@@ -63,6 +63,9 @@ pub struct Found {
     pub mark: Option<String>,
     /// Frames with a centre position.
     pub frames: usize,
+    /// Rows with a time but no centre position (an empty or NaN cell), left out.
+    #[serde(skip_serializing_if = "is_zero")]
+    pub frames_dropped: usize,
     /// Frames per second (from the median spacing).
     pub frame_rate: f64,
     /// Estimated scatter of a tracked position, m.
@@ -87,6 +90,10 @@ pub struct Found {
     pub later_impacts: Vec<f64>,
     /// Median distance of the mark from the centre, m.
     pub mark_radius: Option<f64>,
+}
+
+fn is_zero(n: &usize) -> bool {
+    *n == 0
 }
 
 impl Found {
@@ -115,6 +122,13 @@ impl Found {
             self.frame_rate,
             1e3 * self.scatter
         );
+        if self.frames_dropped > 0 {
+            s += &format!(
+                "{} of {} rows left out: their centre position is empty or NaN\n",
+                self.frames_dropped,
+                self.frames + self.frames_dropped
+            );
+        }
         s += &format!(
             "first impact {} at t = {:.4} s, x = {:.2} mm of the file ({} frames before, {} after); the other ball lies toward {}x; approach speed {:.3} m/s\n",
             if self.impact_detected {
@@ -347,6 +361,7 @@ pub fn derive(
         centre: track.centre_name.clone(),
         mark: spin.as_ref().and(track.mark_name.clone()),
         frames: ts.len(),
+        frames_dropped: track.t.len() - ts.len(),
         frame_rate: 1.0 / dt,
         scatter: sigma,
         half_window: n as f64 * dt,
