@@ -4,6 +4,7 @@
 
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
+use ratatui::style::Style;
 use ratatui::widgets::Widget;
 
 use super::block;
@@ -208,17 +209,43 @@ fn draw_pinned(app: &App, geo: &Geometry, canvas: &mut Canvas, theme: &Theme) {
     let pr = p.scene.radius * geo.scale * sx;
     let pcy = f64::from(geo.ball_rows) * geo.sy - pr / aspect - 0.5;
     for x in [ps.left.x, ps.right.x] {
-        let cx = geo.col(x) * sx;
         let n = ((std::f64::consts::TAU * pr) * 2.0).ceil().max(12.0) as usize;
-        for k in (0..n).filter(|k| k % 4 < 2) {
-            let a = k as f64 / n as f64 * std::f64::consts::TAU;
-            canvas.dot(
-                (cx + pr * a.cos()) / sx,
-                pcy + pr * a.sin() / aspect,
-                theme.dim,
-                ":",
-            );
-        }
+        // Dashed: two dots of every four.
+        let at = (geo.col(x) * sx, pcy);
+        ring(
+            canvas,
+            (sx, aspect),
+            at,
+            pr,
+            n,
+            |k| k % 4 < 2,
+            theme.dim,
+            ":",
+        );
+    }
+}
+
+/// `n` dots evenly round a circle of radius `r` (dot units) about `centre`, those whose
+/// index `keep` accepts; `scale` is (dots per column, aspect).
+#[allow(clippy::too_many_arguments)]
+fn ring(
+    canvas: &mut Canvas,
+    (sx, aspect): (f64, f64),
+    (cx, cy): (f64, f64),
+    r: f64,
+    n: usize,
+    keep: impl Fn(usize) -> bool,
+    style: Style,
+    glyph: &'static str,
+) {
+    for k in (0..n).filter(|&k| keep(k)) {
+        let a = k as f64 / n as f64 * std::f64::consts::TAU;
+        canvas.dot(
+            (cx + r * a.cos()) / sx,
+            cy + r * a.sin() / aspect,
+            style,
+            glyph,
+        );
     }
 }
 
@@ -236,15 +263,16 @@ fn draw_balls(app: &App, geo: &Geometry, canvas: &mut Canvas, theme: &Theme) {
         let n = ((2.0 * std::f64::consts::PI * r_dots) * 2.0)
             .ceil()
             .max(12.0) as usize;
-        for k in 0..n {
-            let a = k as f64 / n as f64 * std::f64::consts::TAU;
-            canvas.dot(
-                (cx + r_dots * a.cos()) / sx,
-                cy + r_dots * a.sin() / aspect,
-                style,
-                "o",
-            );
-        }
+        ring(
+            canvas,
+            (sx, aspect),
+            (cx, cy),
+            r_dots,
+            n,
+            |_| true,
+            style,
+            "o",
+        );
         // Positive spin turns clockwise on screen (x right, rows down).
         let m = (r_dots * 2.0).ceil().max(2.0) as usize;
         for k in 0..=m {
@@ -280,15 +308,17 @@ fn draw_measured(app: &App, geo: &Geometry, canvas: &mut Canvas, theme: &Theme) 
         }
     }
     let n = ((std::f64::consts::TAU * r_dots) / 3.0).ceil().max(8.0) as usize;
-    for k in 0..n {
-        let a = k as f64 / n as f64 * std::f64::consts::TAU;
-        canvas.dot(
-            (cx + r_dots * a.cos()) / sx,
-            cy + r_dots * a.sin() / aspect,
-            theme.measured,
-            ":",
-        );
-    }
+    let dots = (sx, aspect);
+    ring(
+        canvas,
+        dots,
+        (cx, cy),
+        r_dots,
+        n,
+        |_| true,
+        theme.measured,
+        ":",
+    );
 }
 
 /// Tags under each ball: what its contact points do.
