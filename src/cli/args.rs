@@ -260,7 +260,7 @@ fn screen_size(text: &str) -> Result<(u16, u16), String> {
         )),
         Some((c, Some(r))) => Ok((c as u16, r as u16)),
         _ => Err(format!(
-            "'{text}' is not a size, expected COLSxROWS such as 120x40 (1..={MAX_SCREEN} each)"
+            "'{text}' is not a size, expected COLSxROWS such as 120x40 (from {min_c}x{min_r} to {MAX_SCREEN}x{MAX_SCREEN})"
         )),
     }
 }
