@@ -159,16 +159,12 @@ pub fn app(scene_args: &SceneArgs, data: &DataArgs) -> Result<App, CliError> {
 /// data's scene when none was named ([`scene_of_data`]).
 pub fn opened(scene_args: &SceneArgs, data: &DataArgs, library: Library) -> Result<App, CliError> {
     let mut app = App::new(lab(scene_args, data)?, library);
-    if let Some(path) = scene_of_data(scene_args, data) {
-        // The file's name without its folder: the status line is one row.
-        let file = path
-            .file_name()
-            .unwrap_or(path.as_os_str())
-            .to_string_lossy();
+    if scene_of_data(scene_args, data).is_some() {
+        // Short enough for the status line's second row at 80 columns: the file and
+        // the preset are named at the line's right end.
         let s = &app.lab.scene;
         app.status = Status::Error(format!(
-            "{file} names no scene: the model uses {}'s R = {}, b = {}; set R and b to yours",
-            app.lab.preset().name,
+            "the data name no scene: using R = {}, b = {}; set yours",
             show(s.radius, Dimension::Length),
             show(s.width, Dimension::Length),
         ));

@@ -237,8 +237,10 @@ impl Plot {
         }
     }
 
-    /// The x ticks' labels, skipping those that would collide, and the x title at the
-    /// right end if it fits.
+    /// The x title (quantity and unit) at the right end of the tick row, and the x
+    /// ticks' labels left of it, skipping those that would collide: the title has its
+    /// place first, so the axis always says what it measures (a last tick label under
+    /// it once hid it at most sizes).
     fn draw_x_ticks(&self, area: Rect, cells: &Cells, buf: &mut Buffer, theme: &Theme) {
         let plot = cells.plot;
         let (x0, x1) = self.x_range;
@@ -247,6 +249,16 @@ impl Plot {
             ticks_with_labels(&t)
         });
         let tick_row = plot.bottom();
+        let unit = format!(" {}", self.x_title);
+        let ux = i64::from(area.right()) - unit.chars().count() as i64;
+        // The labels end before the title (its leading space keeps them apart); a
+        // plot too narrow for the title keeps its labels instead.
+        let labels_end = if ux >= i64::from(plot.x) {
+            buf.set_string(ux as u16, tick_row, &unit, theme.dim);
+            ux.min(i64::from(plot.right()))
+        } else {
+            i64::from(plot.right())
+        };
         let mut free_from = i64::from(plot.x);
         for (v, label) in x_ticks.iter().filter(|(v, _)| *v >= x0 && *v <= x1) {
             // Centred under its tick, kept inside the plot; a label wider than the
@@ -256,16 +268,10 @@ impl Plot {
             let c = (left + cells.col_of(*v) as i64 - w / 2)
                 .min(i64::from(plot.right()) - w)
                 .max(left);
-            if c >= free_from && c + w <= i64::from(plot.right()) {
+            if c >= free_from && c + w <= labels_end {
                 buf.set_string(c as u16, tick_row, label, theme.dim);
                 free_from = c + w + 1;
             }
-        }
-        let unit = format!(" {}", self.x_title);
-        let ux = i64::from(area.right()) - unit.chars().count() as i64;
-        if ux >= free_from {
-            let ux = ux as u16;
-            buf.set_string(ux, tick_row, &unit, theme.dim);
         }
     }
 

@@ -193,15 +193,16 @@ fn data_without_a_scene_one_rule_for_the_app_render_and_fit() {
         panic!("{:?}", a.status)
     };
     assert!(
-        message
-            == "paper-b4.9-tracker.txt names no scene: the model uses paper-b4.9's R = 2.75 cm, b = 4.9 cm; set R and b to yours",
+        message == "the data name no scene: using R = 2.75 cm, b = 4.9 cm; set yours",
         "{message}"
     );
     // `render` prints what the app shows; `fit` refuses.
     let out = common::groovelab(&["render", "--data", TRACK, "--size", "160x40"]);
     let screen = String::from_utf8_lossy(&out.stdout);
     assert!(
-        out.status.success() && screen.contains("names no scene"),
+        out.status.success()
+            && screen.contains("name no scene")
+            && screen.contains("data: docs/video/paper-b4.9-tracker.txt"),
         "{screen}"
     );
     let out = common::groovelab(&["fit", "--data", TRACK]);

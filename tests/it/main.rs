@@ -25,6 +25,7 @@ mod pressed_contact;
 mod properties;
 mod readme;
 mod reliability;
+mod small_screens;
 mod story;
 mod sweep;
 mod tracks;

@@ -1123,22 +1123,42 @@ fn save_keeps_the_data_and_the_description_and_explains_bad_names() {
 }
 
 #[test]
-fn long_messages_end_in_an_ellipsis_and_the_preset_name_stays() {
+fn long_messages_go_on_in_the_hint_row_and_the_preset_name_stays() {
     let mut a = app("paper-b4.9");
-    a.status = Status::Info(
-        "a very long message about what just happened to the scene and why it matters to a class"
-            .into(),
-    );
+    let long =
+        "a very long message about what just happened to the scene and why it matters to a class";
+    a.status = Status::Info(long.into());
     for ascii in [false, true] {
         let s = text_of(&a, 80, 24, ascii);
-        let line = s.lines().nth(22).unwrap();
+        let (line, next) = (s.lines().nth(22).unwrap(), s.lines().nth(23).unwrap());
+        assert!(
+            line.starts_with("t = -0.200 s  paused   a very long"),
+            "{line}"
+        );
         assert!(line.ends_with("preset paper-b4.9"), "{line}");
-        let ellipsis = if ascii { "... " } else { "… " };
-        assert!(line.contains(ellipsis), "{line}");
+        // Begun beside the time, ended on the next row, before help and quit.
+        assert!(
+            next.starts_with("matters to a class") || next.contains("to a class "),
+            "{next}"
+        );
+        assert!(next.ends_with("? help  q quit"), "{next}");
+        let words = format!(
+            "{} {}",
+            &line[23..line.len() - 17],
+            &next[..next.len() - 14]
+        );
+        let words: Vec<&str> = words.split_whitespace().collect();
+        assert_eq!(words.join(" "), long);
     }
+    // Longer than both rows: cut with an ellipsis, and the preset name stays.
     a.status = Status::Error("x".repeat(200));
     let s = text_of(&a, 80, 24, false);
     assert!(s.lines().nth(22).unwrap().ends_with("preset paper-b4.9"));
+    let next = s.lines().nth(23).unwrap();
+    assert!(
+        next.contains('…') && next.ends_with("? help  q quit"),
+        "{next}"
+    );
     // Picker descriptions are cut with an ellipsis too.
     let s = screen("paper-b4.9", 0.0, (80, 24), true, Some("p"));
     assert!(s.lines().any(|l| l.contains("...")), "{s}");

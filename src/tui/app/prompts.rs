@@ -23,11 +23,11 @@ impl App {
                         Ok(()) => {
                             self.t = self.lab.solution.t_start;
                             self.status = Status::Info(match self.lab.own_data() {
-                                // The student's data stay; the preset is the model.
-                                Some(d) => format!(
-                                    "preset {name} for the model; your data {} kept (D drops them)",
-                                    d.name
-                                ),
+                                // The student's data stay (the status line names
+                                // them); the preset is the model.
+                                Some(_) => {
+                                    format!("model: preset {name}; your data kept (D drops them)")
+                                }
                                 None => description,
                             });
                         }

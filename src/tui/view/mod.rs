@@ -17,15 +17,15 @@ pub use params::param_at;
 pub use popups::data_rows;
 mod popups;
 mod scene;
+mod status;
 
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::style::Style;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Block, Paragraph, Widget};
+use ratatui::widgets::Block;
 
-use super::app::{App, Mode, Status, View};
-use super::keys;
+use super::app::{App, Mode, View};
 use super::theme::{Theme, force_ascii};
 use crate::lab::jobs::State;
 
@@ -181,8 +181,7 @@ fn draw_panels(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                     info::render(app, p.info, buf, theme);
                 }
             }
-            status(app, p.status, buf, theme);
-            hints(p.hints, buf, theme);
+            status::render(app, p.status, p.hints, buf, theme);
             popups::render(app, area, buf, theme);
         }
     }
@@ -210,50 +209,6 @@ pub(crate) fn computing<T>(
     };
     let text = theme.glyphs.text(&text);
     buf.set_stringn(area.x, area.y, text, usize::from(area.width), theme.dim);
-}
-
-/// The status line: playback (time, playing or paused, speed) and beside it the last
-/// message, cut with an ellipsis where it does not fit (playback shortens first, down
-/// to the time and the play state, which a message never hides); the typing prompt while a
-/// value is typed; the preset's name at the right, always shown (itself cut if very
-/// long).
-fn status(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let g = theme.glyphs;
-    let width = usize::from(area.width);
-    let right = g.ellipsize(&format!("preset {}", app.lab.preset().name), width / 3);
-    let right_len = right.chars().count();
-    let room = width.saturating_sub(right_len + 1);
-    buf.set_string(area.right() - right_len as u16, area.y, &right, theme.dim);
-    let (message, style) = match (&app.mode, &app.status) {
-        (Mode::Edit(_), _) => {
-            let prompt = crate::tui::app::typing_prompt(crate::tui::app::ROWS[app.selected])
-                .replace("mu_k", "μ_k");
-            buf.set_stringn(area.x, area.y, g.ellipsize(&prompt, room), room, theme.info);
-            return;
-        }
-        (_, Status::Error(e)) => (e.as_str(), theme.error),
-        (_, Status::Info(i)) => (i.as_str(), theme.text),
-        (_, Status::None) => ("", theme.text),
-    };
-    // The longest playback that leaves the message whole, else the shortest.
-    let fits = |playback: &String| playback.chars().count() + 3 + message.chars().count() <= room;
-    let playback = [app.playback(), app.playback_short(true)]
-        .into_iter()
-        .find(|p| message.is_empty() || fits(p))
-        .unwrap_or_else(|| app.playback_short(false));
-    let playback = g.ellipsize(&playback, room);
-    let used = playback.chars().count();
-    buf.set_stringn(area.x, area.y, &playback, room, theme.text);
-    if !message.is_empty() && used + 3 < room {
-        let message = g.ellipsize(message, room - used - 3);
-        buf.set_stringn(
-            area.x + used as u16 + 3,
-            area.y,
-            message,
-            room - used - 3,
-            style,
-        );
-    }
 }
 
 /// Lines of a panel with a priority each; [`by_priority`] keeps the most important
@@ -349,15 +304,6 @@ pub(crate) fn wrap(line: Line<'_>, width: usize) -> Vec<Line<'static>> {
             )
         })
         .collect()
-}
-
-fn hints(area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let mut spans = Vec::new();
-    for (key, label) in keys::hints_within(usize::from(area.width), theme.glyphs.ascii) {
-        spans.push(Span::styled(key, theme.key));
-        spans.push(Span::styled(format!(" {label}  "), theme.dim));
-    }
-    Paragraph::new(Line::from(spans)).render(area, buf);
 }
 
 /// The screen as plain text, one line per row, trailing blanks trimmed (for

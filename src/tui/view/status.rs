@@ -1,0 +1,208 @@
+//! The status line and the hint bar under it. The status line: playback (the time
+//! and the play state first, always), the last message, and at the right the preset
+//! and the data file loaded. A message too long for its row goes on in the hint bar's
+//! place, before `? help  q quit`, so that it is read whole at 80 columns.
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Paragraph, Widget};
+
+use crate::tui::app::{App, Mode, ROWS, Status, typing_prompt};
+use crate::tui::keys;
+use crate::tui::theme::{Glyphs, Theme};
+
+/// Draws the status line in `status` and the hint bar (or the rest of a long message
+/// and the help and quit keys) in `hints`.
+pub(super) fn render(app: &App, status: Rect, hints: Rect, buf: &mut Buffer, theme: &Theme) {
+    let g = theme.glyphs;
+    let width = usize::from(status.width);
+    let right = right_text(app, width, &g);
+    let right_len = right.chars().count();
+    let room = width.saturating_sub(right_len + 1);
+    buf.set_string(
+        status.right().saturating_sub(right_len as u16),
+        status.y,
+        &right,
+        theme.dim,
+    );
+    let (message, style) = match (&app.mode, &app.status) {
+        (Mode::Edit(_), _) => {
+            let prompt = typing_prompt(ROWS[app.selected]).replace("mu_k", "μ_k");
+            buf.set_stringn(
+                status.x,
+                status.y,
+                g.ellipsize(&prompt, room),
+                room,
+                theme.info,
+            );
+            hint_bar(hints, buf, theme);
+            return;
+        }
+        (_, Status::Error(e)) => (g.text(e), theme.error),
+        (_, Status::Info(i)) => (g.text(i), theme.text),
+        (_, Status::None) => (String::new(), theme.text),
+    };
+    let tail = help_and_quit(g.ascii);
+    let second_room = usize::from(hints.width).saturating_sub(tail.chars().count() + 2);
+    let (playback, first, rest) = arrange(app, &message, room, second_room, &g);
+    let used = playback.chars().count();
+    buf.set_stringn(status.x, status.y, &playback, room, theme.text);
+    if !first.is_empty() {
+        let x = status.x + (used + 3) as u16;
+        buf.set_stringn(x, status.y, &first, room.saturating_sub(used + 3), style);
+    }
+    if rest.is_empty() {
+        hint_bar(hints, buf, theme);
+    } else {
+        buf.set_stringn(hints.x, hints.y, &rest, second_room, style);
+        let x = hints.right().saturating_sub(tail.chars().count() as u16);
+        let (key, label) = tail.split_once(' ').unwrap_or((&tail, ""));
+        let line = Line::from(vec![
+            Span::styled(key.to_string(), theme.key),
+            Span::styled(format!(" {label}"), theme.dim),
+        ]);
+        buf.set_line(x, hints.y, &line, hints.width);
+    }
+}
+
+/// The preset's name, and the data file loaded (`data: ball.txt`, cut from the left,
+/// so at the folders first, when long): what the numbers on screen come from.
+fn right_text(app: &App, width: usize, g: &Glyphs) -> String {
+    let preset = g.ellipsize(&format!("preset {}", app.lab.preset().name), width / 3);
+    let Some(own) = app.lab.own_data() else {
+        return preset;
+    };
+    // A third of the row stays for the time, the play state and a message.
+    let room = width.saturating_sub(width / 3 + preset.chars().count() + 2);
+    format!("{preset}  {}", data_label(&own.name, room, g))
+}
+
+/// `data: NAME` in at most `room` columns: NAME's end is kept, from a folder
+/// separator where one is in what is kept (`data: …/ball.txt`).
+pub(crate) fn data_label(name: &str, room: usize, g: &Glyphs) -> String {
+    let name = g.text(name);
+    let full = format!("data: {name}");
+    if full.chars().count() <= room {
+        return full;
+    }
+    let mark = if g.ascii { "..." } else { "…" };
+    let chars: Vec<char> = name.chars().collect();
+    let keep = room
+        .saturating_sub(6 + mark.chars().count())
+        .min(chars.len());
+    let mut tail: String = chars[chars.len() - keep..].iter().collect();
+    if let Some(i) = tail.find(['/', '\\']).filter(|&i| i > 0) {
+        tail = tail[i..].to_string();
+    }
+    format!("data: {mark}{tail}")
+}
+
+/// The playback text and the message's parts: on the status line beside the longest
+/// playback that leaves it whole; else on the next row (in `second_room` columns)
+/// beside the shortest playback (time and play state), begun on the status line when
+/// it is longer than that row, cut after a word, the rest ending in an ellipsis if it
+/// still does not fit.
+fn arrange(
+    app: &App,
+    message: &str,
+    room: usize,
+    second_room: usize,
+    g: &Glyphs,
+) -> (String, String, String) {
+    let len = |s: &str| s.chars().count();
+    let shortest = g.text(&app.playback_short(false));
+    let playbacks = [app.playback(), app.playback_short(true)].map(|p| g.text(&p));
+    if message.is_empty() {
+        let playback = playbacks.into_iter().find(|p| len(p) <= room);
+        return (
+            g.ellipsize(&playback.unwrap_or(shortest), room),
+            String::new(),
+            String::new(),
+        );
+    }
+    let beside = playbacks
+        .into_iter()
+        .chain([shortest.clone()])
+        .find(|p| len(p) + 3 + len(message) <= room);
+    if let Some(playback) = beside {
+        return (playback, message.to_string(), String::new());
+    }
+    let playback = g.ellipsize(&shortest, room);
+    // Whole on the next row where it fits there, else begun beside the playback.
+    let first_room = if len(message) <= second_room {
+        0
+    } else {
+        room.saturating_sub(len(&playback) + 3)
+    };
+    let (first, rest) = split_at_word(message, first_room);
+    (playback, first, g.ellipsize(&rest, second_room))
+}
+
+/// `text` cut after the last whole word that fits in `room` columns, and the rest
+/// (all of it on the next row when not even the first word fits).
+fn split_at_word(text: &str, room: usize) -> (String, String) {
+    let chars: Vec<char> = text.chars().collect();
+    if chars.len() <= room {
+        return (text.to_string(), String::new());
+    }
+    match chars[..=room].iter().rposition(|&c| c == ' ') {
+        Some(i) if i > 0 => (
+            chars[..i].iter().collect::<String>().trim_end().to_string(),
+            chars[i + 1..].iter().collect(),
+        ),
+        _ => (String::new(), text.to_string()),
+    }
+}
+
+/// The hint bar's last entries (help and quit), as one text: what a long message
+/// leaves of the bar.
+fn help_and_quit(ascii: bool) -> String {
+    keys::hints_within(0, ascii)
+        .into_iter()
+        .map(|(key, label)| format!("{key} {label}"))
+        .collect::<Vec<_>>()
+        .join("  ")
+}
+
+/// The hint bar: the key table's hints that fit the row.
+fn hint_bar(area: Rect, buf: &mut Buffer, theme: &Theme) {
+    let mut spans = Vec::new();
+    for (key, label) in keys::hints_within(usize::from(area.width), theme.glyphs.ascii) {
+        spans.push(Span::styled(key, theme.key));
+        spans.push(Span::styled(format!(" {label}  "), theme.dim));
+    }
+    Paragraph::new(Line::from(spans)).render(area, buf);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{data_label, split_at_word};
+    use crate::tui::theme::Glyphs;
+
+    #[test]
+    fn a_long_path_keeps_its_file_name() {
+        let g = Glyphs::UNICODE;
+        assert_eq!(data_label("ball.txt", 20, &g), "data: ball.txt");
+        assert_eq!(
+            data_label("docs/video/paper-b4.9-tracker.txt", 30, &g),
+            "data: …/paper-b4.9-tracker.txt"
+        );
+        let cut = data_label("a-very-long-file-name-of-a-track.txt", 20, &Glyphs::ASCII);
+        assert_eq!(cut, "data: ...a-track.txt");
+        assert!(cut.chars().count() <= 20);
+    }
+
+    #[test]
+    fn messages_split_after_a_whole_word() {
+        assert_eq!(
+            split_at_word("one two three", 8),
+            ("one two".to_string(), "three".to_string())
+        );
+        assert_eq!(split_at_word("short", 8), ("short".into(), String::new()));
+        assert_eq!(
+            split_at_word("unbreakable words", 5),
+            (String::new(), "unbreakable words".into())
+        );
+    }
+}
