@@ -9,7 +9,6 @@ use super::error::{BadValue, CliError, Flag};
 use super::states::{csv_output, samples, state_header, state_row};
 use crate::methods::{self, Method, Settings, Y};
 use crate::physics::derived::Derived;
-use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{Event, Snapshot, Solution};
 use crate::settings::units::{Dimension, show};
@@ -123,17 +122,17 @@ struct MethodRunJson<'a> {
     final_state: Snapshot,
 }
 
-/// `simulate --method NAME`: one time-stepping run; its events are those it detects.
+/// `simulate --method NAME`: one time-stepping run over the span of the exact run
+/// `exact` (the lab's snapshot's); its events are those it detects.
 pub(super) fn simulate_method(
-    scene: &Scene,
-    span: &Span,
+    exact: &Solution,
     args: &SimulateArgs,
     settings: &Settings,
 ) -> Result<String, CliError> {
-    let exact = engine::solve(scene, span);
+    let scene = &exact.scene;
     let (t0, t1) = (exact.t_start, exact.t_end);
     let grid = match args.sample {
-        Some(dt) => samples(&exact, dt)?.iter().map(|s| s.t).collect(),
+        Some(dt) => samples(exact, dt)?.iter().map(|s| s.t).collect(),
         None => Vec::new(),
     };
     let model = methods::Model::of(scene);
@@ -193,7 +192,7 @@ pub(super) fn simulate_method(
         Format::Csv => {
             let detected = Solution {
                 events: rec.events.clone(),
-                ..exact
+                ..exact.clone()
             };
             csv_output(&detected, samples)?
         }

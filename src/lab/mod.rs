@@ -27,7 +27,7 @@ use crate::study::measured::{Measured, Series};
 use crate::study::preset::Preset;
 use jobs::{Job, Jobs};
 
-pub use resolved::{MeasuredPoints, Pinned, Point, Resolved, Story};
+pub use resolved::{MeasuredPoints, Pinned, Point, Resolved, Story, value_range};
 pub use settings::{Edit, Settings};
 pub use span::SpanEnd;
 pub use work::{
