@@ -5,7 +5,8 @@
 use std::path::PathBuf;
 
 use groovelab::cli::DataArgs;
-use groovelab::settings::params::{Key, SceneSpec};
+use groovelab::settings::params::Key;
+use groovelab::settings::spec::SceneSpec;
 use groovelab::study::preset::Preset;
 use groovelab::tui::app::{App, Library, ROWS, Status};
 

@@ -8,7 +8,9 @@ use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Paragraph, Widget};
 
-use crate::tui::app::{App, Mode, ROWS, Status, typing_prompt};
+use crate::settings::params::Param;
+use crate::settings::units::Dimension;
+use crate::tui::app::{App, Mode, ROWS, Status};
 use crate::tui::keys;
 use crate::tui::theme::{Glyphs, Theme};
 
@@ -173,6 +175,25 @@ fn hint_bar(area: Rect, buf: &mut Buffer, theme: &Theme) {
         spans.push(Span::styled(format!(" {label}  "), theme.dim));
     }
     Paragraph::new(Line::from(spans)).render(area, buf);
+}
+
+/// The prompt of the typing field for parameter `p`: which unit a bare number is in.
+fn typing_prompt(p: &Param) -> String {
+    let (unit, _) = p.dim.display_unit();
+    let example = match p.dim {
+        Dimension::Length => "44mm",
+        Dimension::Mass => "0.2kg",
+        Dimension::Speed => "60cm/s",
+        Dimension::Time => "200ms",
+        Dimension::Acceleration => "9.81",
+        Dimension::Ratio => "",
+    };
+    let name = p.label;
+    if unit.is_empty() {
+        format!("{name}: a plain number (e.g. 0.17), Enter applies, Esc cancels")
+    } else {
+        format!("{name} in {unit} (or with a unit, e.g. {example}), Enter applies, Esc cancels")
+    }
 }
 
 #[cfg(test)]
