@@ -210,9 +210,8 @@ pub fn render_with(
         }
         None => Vec::new(),
     };
-    tui::replay(&mut app, &keys);
-    // Headless output waits for every analysis the keys asked for: same input, same bytes.
-    app.wait();
+    // Headless output waits for every analysis a key may act on: same input, same bytes.
+    tui::replay_settled(&mut app, &keys);
     if let Some(at) = args.at {
         let (lo, hi) = (app.lab.solution.t_start, app.lab.solution.t_end);
         if !(lo..=hi).contains(&at) {

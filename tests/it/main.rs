@@ -10,6 +10,7 @@ mod data_files;
 mod exports;
 mod fit;
 mod forces;
+mod headless;
 mod fuzz;
 mod lab_data;
 mod lab_jobs;
