@@ -204,6 +204,8 @@ pub fn render_with(
     library: Library,
 ) -> Result<String, CliError> {
     let mut app = opened(scene_args, data, library)?;
+    // A screen dump writes no files: `w`, `W` and `s` say what they would write.
+    app.writes_files = false;
     let keys = match &args.keys {
         Some(script) => {
             tui::keys::parse_script(script).map_err(|source| BadValue::Keys { source })?

@@ -129,6 +129,7 @@ pub fn rendered(
     library: Library,
 ) -> App {
     let mut app = cli::opened(scene, data, library).unwrap();
+    app.writes_files = false;
     let keys = keys.map_or(Ok(Vec::new()), keys::parse_script).unwrap();
     replay_settled(&mut app, &keys);
     if let Some(t) = at {
