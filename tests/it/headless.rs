@@ -59,7 +59,15 @@ fn render_writes_no_files_and_says_what_it_would_write() {
     ];
     for (keys, says) in cases {
         let out = Command::new(env!("CARGO_BIN_EXE_groovelab"))
-            .args(["render", "--preset", "paper-b4.9", "--size", "250x40", "--keys", keys])
+            .args([
+                "render",
+                "--preset",
+                "paper-b4.9",
+                "--size",
+                "250x40",
+                "--keys",
+                keys,
+            ])
             .current_dir(&dir)
             .env_remove("GROOVELAB_PRESETS")
             .env("HOME", &home)
@@ -67,7 +75,11 @@ fn render_writes_no_files_and_says_what_it_would_write() {
             .output()
             .unwrap();
         let screen = String::from_utf8_lossy(&out.stdout);
-        assert!(out.status.success(), "{keys}: {}", String::from_utf8_lossy(&out.stderr));
+        assert!(
+            out.status.success(),
+            "{keys}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
         assert!(
             screen.contains(&format!("render writes no files: {says}")),
             "{keys}: {screen}"
