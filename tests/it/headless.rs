@@ -4,7 +4,7 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use groovelab::settings::params::SceneSpec;
+use groovelab::settings::spec::SceneSpec;
 
 use crate::common::{self, scene_of};
 
