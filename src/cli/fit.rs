@@ -343,28 +343,25 @@ fn table(scene: &Scene, f: &Fits, paper_data: bool) -> String {
             );
         }
     }
-    let why = |name: &str| {
-        mf.not_identified
-            .iter()
-            .find(|n| n.parameter == name)
-            .map(|n| n.reason.clone())
-    };
-    let value = |name: &str, v: f64, se: Option<f64>, unit: &str| match (se, why(name)) {
-        (Some(se), _) => format!("{v:.4} ± {:.4}{unit}", 2.0 * se),
-        (None, Some(reason)) => format!("{v:.4}{unit} (no ±: {reason})"),
-        (None, None) => format!("{v:.4}{unit} (no ±)"),
+    // A value the data do not determine gets its reason, not a number.
+    let value = |name: &str, v: f64, se: Option<f64>, unit: &str| match (mf.undetermined(name), se)
+    {
+        (Some(n), _) => format!("not determined ({})", n.reason),
+        (None, Some(se)) => format!("{v:.4} ± {:.4}{unit}", 2.0 * se),
+        (None, None) => format!("{v:.4}{unit}"),
     };
     let mu_se = Some(mf.mu_se).filter(|s| s.is_finite());
     let _ = writeln!(
         out,
-        "  μ_k = {} (± 2σ, 95 %)   RMS residual {:.4} m/s",
+        "  μ_k = {}{}   RMS residual {:.4} m/s",
         value("mu", mf.mu, mu_se, ""),
+        if mu_se.is_some() { " (± 2σ, 95 %)" } else { "" },
         mf.rms
     );
-    if mf.v0_se.is_some() || why("v0").is_some() {
+    if mf.v0_se.is_some() || mf.undetermined("v0").is_some() {
         let _ = writeln!(out, "  v0 = {}", value("v0", mf.v0, mf.v0_se, " m/s"));
     }
-    if mf.restitution_se.is_some() || why("restitution").is_some() {
+    if mf.restitution_se.is_some() || mf.undetermined("restitution").is_some() {
         let _ = writeln!(
             out,
             "  e = {}",
@@ -378,17 +375,7 @@ fn table(scene: &Scene, f: &Fits, paper_data: bool) -> String {
         mf.regime_observed.name(),
         mf.rest_band
     );
-    let _ = writeln!(
-        out,
-        "  {}",
-        if mf.agrees && mf.regime_predicted != mf.regime_observed {
-            "consistent: the predicted v' lies within the rest band, so the data cannot tell it from rest"
-        } else if mf.agrees {
-            "the model predicts what was observed"
-        } else {
-            "the model does NOT predict what was observed"
-        }
-    );
+    let _ = writeln!(out, "  {}", mf.agreement().sentence());
     out
 }
 
@@ -425,29 +412,24 @@ fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit, paper_data:
         "velocities (derived)", "positions (direct)"
     );
     // A value the data do not determine gets no number that reads as fitted.
-    let undetermined =
-        |m: &ModelFit, name: &str| m.not_identified.iter().any(|n| n.parameter == name);
     let pm = |m: &ModelFit| {
-        if undetermined(m, "mu") {
+        if m.undetermined("mu").is_some() {
             "not determined".to_string()
-        } else if m.mu_se.is_finite() {
-            format!("{:.4} ± {:.4}", m.mu, 2.0 * m.mu_se)
         } else {
-            format!("{:.4} (no ±)", m.mu)
+            format!("{:.4} ± {:.4}", m.mu, 2.0 * m.mu_se)
         }
     };
     let opt = |m: &ModelFit, name: &str, v: f64, se: Option<f64>| match se {
-        _ if undetermined(m, name) => "not determined".to_string(),
+        _ if m.undetermined(name).is_some() => "not determined".to_string(),
         Some(se) => format!("{v:.4} ± {:.4}", 2.0 * se),
-        None => format!("{v:.4} (no ±)"),
+        None => format!("{v:.4}"),
     };
     let row = |out: &mut String, name: &str, a: String, b: String| {
         let _ = writeln!(out, "  {name:<33} {a:>24} {b:>24}");
     };
     row(&mut out, "μ_k (± 2σ, 95 %)", pm(v), pm(p));
-    let free = |m: &ModelFit, name: &str, se: Option<f64>| {
-        se.is_some() || m.not_identified.iter().any(|n| n.parameter == name)
-    };
+    let free =
+        |m: &ModelFit, name: &str, se: Option<f64>| se.is_some() || m.undetermined(name).is_some();
     if free(v, "v0", v.v0_se) || free(p, "v0", p.v0_se) {
         row(
             &mut out,
@@ -489,12 +471,7 @@ fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit, paper_data:
         regime(v),
         regime(p),
     );
-    let verdict = |m: &ModelFit| match (m.agrees, m.indistinguishable_from_rest) {
-        _ if undetermined(m, "mu") => "μ_k not determined".to_string(),
-        (true, true) => "agree (v' in rest band)".to_string(),
-        (true, false) => "agree".to_string(),
-        (false, _) => "DISAGREE".to_string(),
-    };
+    let verdict = |m: &ModelFit| m.agreement().word().to_string();
     row(&mut out, "verdict", verdict(v), verdict(p));
     let _ = writeln!(out, "  velocity fit: regime {}", v.verdict);
     let _ = writeln!(out, "  position fit: regime {}", p.verdict);
@@ -530,7 +507,7 @@ fn models_table(models: &[Candidate], positions: bool) -> String {
     let mut out = String::new();
     let _ = writeln!(
         out,
-        "\nwhich model the data support (fitted to the {}; AIC and BIC, lower is better; the simplest model within 2 of the lowest BIC is named):",
+        "\nwhich model the data support (fitted to the {}; AIC and BIC, lower is better; the simplest model within 2 of the lowest BIC whose values are all determined is named):",
         if positions { "positions" } else { "velocities" }
     );
     let unit = if positions { "mm" } else { "m/s" };
@@ -542,37 +519,100 @@ fn models_table(models: &[Candidate], positions: bool) -> String {
         "AIC",
         "BIC"
     );
+    let names = |c: &Candidate| {
+        c.parameters
+            .iter()
+            .map(|e| symbol(e.parameter).0)
+            .collect::<Vec<_>>()
+            .join(" + ")
+    };
     for c in models {
         let values: Vec<String> = c
             .parameters
             .iter()
             .map(|e| {
                 let (name, unit) = symbol(e.parameter);
-                match e.se {
-                    Some(se) => format!("{name} {:.4} ± {:.4}{unit}", e.value, 2.0 * se),
-                    None => format!("{name} {:.4}{unit} (no ±)", e.value),
+                match (&e.not_determined, e.se) {
+                    (Some(_), _) => format!("{name} not determined"),
+                    (None, Some(se)) => format!("{name} {:.4} ± {:.4}{unit}", e.value, 2.0 * se),
+                    (None, None) => format!("{name} {:.4}{unit}", e.value),
                 }
             })
             .collect();
-        let names: Vec<&str> = c.parameters.iter().map(|e| symbol(e.parameter).0).collect();
         let rms = if positions { 1e3 * c.rms } else { c.rms };
         let _ = writeln!(
             out,
             "{} {:<34} {:>10.4} {:>10.1} {:>10.1}   {}",
             if c.supported { "*" } else { " " },
-            names.join(" + "),
+            names(c),
             rms,
             c.aic,
             c.bic,
             values.join(", ")
         );
     }
-    if let Some(c) = models.iter().find(|c| c.supported) {
-        let names: Vec<&str> = c.parameters.iter().map(|e| symbol(e.parameter).0).collect();
+    out += &undetermined_notes(models, &names);
+    match models.iter().find(|c| c.supported) {
+        Some(c) => {
+            let _ = writeln!(
+                out,
+                "  the data support: {} (marked *); a larger model does not lower the BIC by 2 or more",
+                names(c)
+            );
+        }
+        None if !models.is_empty() => {
+            let best = models
+                .iter()
+                .min_by(|a, b| a.bic.total_cmp(&b.bic))
+                .expect("not empty");
+            let _ = writeln!(
+                out,
+                "  no model is named: the lowest BIC is {}'s, and no model within 2 of it has every value determined",
+                names(best)
+            );
+        }
+        None => {}
+    }
+    out
+}
+
+/// Below the models table: each value some model leaves undetermined, in which models
+/// and why; such a model is never the one named.
+fn undetermined_notes(models: &[Candidate], names: &dyn Fn(&Candidate) -> String) -> String {
+    let mut out = String::new();
+    // (parameter, reason) → the models where it is so, in table order.
+    let mut seen: Vec<(&fit::NotIdentified, Vec<String>)> = Vec::new();
+    for c in models {
+        for n in c.parameters.iter().filter_map(|e| e.not_determined.as_ref()) {
+            match seen
+                .iter_mut()
+                .find(|(m, _)| m.parameter == n.parameter && m.reason == n.reason)
+            {
+                Some((_, list)) => list.push(names(c)),
+                None => seen.push((n, vec![names(c)])),
+            }
+        }
+    }
+    for (n, list) in &seen {
+        let name = symbol(n.parameter).0;
+        let models = list.join("; ");
+        let _ = match n.on_edge_of {
+            // μ_k is in every model: on its edge, those models do not fit the data.
+            Some(range) if n.parameter == "mu" => writeln!(
+                out,
+                "  {name} lies on the edge of its physical range ({range}) in {models}: not determined, those models do not fit these data"
+            ),
+            Some(range) => writeln!(
+                out,
+                "  {name} lies on the edge of its physical range ({range}) in {models}: the data do not support {name} as a free value"
+            ),
+            None => writeln!(out, "  {name} not determined in {models}: {}", n.reason),
+        };
+    }
+    if !seen.is_empty() {
         let _ = writeln!(
             out,
-            "  the data support: {} (marked *); a larger model does not lower the BIC by 2 or more",
-            names.join(" + ")
+            "  (a model with a value the data do not determine is never the one named)"
         );
     }
     out
