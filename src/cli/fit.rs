@@ -10,6 +10,7 @@ use super::{
 };
 use crate::input::data::Reading;
 use crate::physics::scene::Scene;
+use crate::settings::params::Key;
 use crate::settings::units::{Dimension, show, significant, unit_factor};
 use crate::study::fit::{self, Candidate, Fits, Free, ModelFit};
 use crate::study::measured::{Derive, Found, Series};
@@ -159,7 +160,14 @@ fn not_measured(fits: &Fits) -> Vec<NotMeasured> {
     .collect()
 }
 
-pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<String, CliError> {
+/// `fit` on the scene of `scene_args` (the command line's `typed` over the data
+/// file's own scene lines, [`with_file_scene`]).
+pub fn run(
+    scene_args: &SceneArgs,
+    typed: &SceneArgs,
+    data: &DataArgs,
+    args: &FitArgs,
+) -> Result<String, CliError> {
     // A data file names no scene: fitting it in the default preset's groove would be
     // a silent guess (and compare with the wrong row of the paper).
     if let Some(path) = super::scene_of_data(scene_args, data) {
@@ -226,7 +234,7 @@ pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<St
         }
         FitFormat::Table => {
             let own = data.data.is_empty();
-            let mut out = scene_line(preset, scene_args, &scene);
+            let mut out = scene_line(preset, typed, scene_args, data, &scene);
             out += &match (&found, &position) {
                 (Some(found), Some(position)) => track_table(&scene, &fits, found, position, own),
                 _ => table(&scene, &fits, own),
@@ -254,18 +262,49 @@ pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<St
     }
 }
 
-/// The scene a fit used, and where it came from: the first line of the table.
-fn scene_line(preset: &Preset, args: &SceneArgs, scene: &Scene) -> String {
+/// The scene a fit used, and where it came from: the first line of the table. The
+/// values come from the command line (`typed`), the data file's own scene lines (the
+/// rest of `used`) and the preset under them (named unless those give every value).
+fn scene_line(
+    preset: &Preset,
+    typed: &SceneArgs,
+    used: &SceneArgs,
+    data: &DataArgs,
+    scene: &Scene,
+) -> String {
     let len = |v: f64| show(v, Dimension::Length);
-    let given: Vec<String> = args
+    let flags: Vec<Key> = typed.values.given().map(|(k, _)| k).collect();
+    let from_file: Vec<Key> = used
         .values
         .given()
-        .map(|(k, _)| format!("--{}", k.param().flag))
+        .map(|(k, _)| k)
+        .filter(|k| !flags.contains(k))
         .collect();
-    let source = if given.is_empty() {
-        format!("preset {}", preset.name)
-    } else {
-        format!("preset {} with {}", preset.name, given.join(" "))
+    let all: Vec<Key> = flags.iter().chain(&from_file).copied().collect();
+    let file = data.data.first().map(|p| p.display().to_string());
+    let mut sources = Vec::new();
+    if typed.preset.is_some() || !every_scene_value(&all) {
+        sources.push(format!("preset {}", preset.name));
+    }
+    match (&file, from_file.is_empty(), sources.is_empty()) {
+        (Some(file), false, true) => sources.push(format!("from {file}'s header")),
+        (Some(file), false, false) => {
+            let names: Vec<&str> = from_file.iter().map(|k| k.name()).collect();
+            sources.push(format!("{file}'s header ({})", names.join(", ")));
+        }
+        _ => {}
+    }
+    if !flags.is_empty() {
+        let flags: Vec<String> = flags
+            .iter()
+            .map(|k| format!("--{}", k.param().flag))
+            .collect();
+        sources.push(flags.join(" "));
+    }
+    let source = match sources.as_slice() {
+        [] => unreachable!("a preset, the file's header or flags give the scene"),
+        [one] => one.clone(),
+        [first, rest @ ..] => format!("{first} with {}", rest.join(" and ")),
     };
     format!(
         "scene ({source}): R = {}, b = {}, m = {} / {}, v0 = {} / {}, μ_k = {} (start), e = {}\n",
@@ -285,9 +324,16 @@ fn scene_line(preset: &Preset, args: &SceneArgs, scene: &Scene) -> String {
 fn table(scene: &Scene, f: &Fits, paper_data: bool) -> String {
     let l = &f.line_fit;
     let mut out = String::new();
+    // The window said as it was chosen: the sliding phase, or what --from/--to set.
+    let (over, hint) = match l.given {
+        [false, false] => ("over the sliding phase", "; change with --from/--to"),
+        [true, true] => ("over the window --from/--to set", ""),
+        [true, false] => ("from --from to the end of the sliding phase", ""),
+        [false, true] => ("from the start of the sliding phase to --to", ""),
+    };
     let _ = writeln!(
         out,
-        "line fits over the sliding phase, t = {:.3} … {:.3} s ({} frames; change with --from/--to)",
+        "line fits {over}, t = {:.3} … {:.3} s ({} frames{hint})",
         l.from, l.to, l.points
     );
     let _ = writeln!(
@@ -490,6 +536,26 @@ fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit, paper_data:
         "  (the velocity fit takes the model through the same local fits as the data, profiles out the impact time and counts the frames neighbouring points share; the position fit needs no derivatives and is the more precise: quote it)"
     );
     out
+}
+
+/// True when `keys` set every value of a scene: no preset's value is left in it.
+fn every_scene_value(keys: &[Key]) -> bool {
+    let has = |k: &Key| keys.contains(k);
+    let ball = |v0: Key, h: Key| has(&v0) || has(&h);
+    [
+        Key::Radius,
+        Key::Width,
+        Key::MassLeft,
+        Key::MassRight,
+        Key::Mu,
+        Key::Restitution,
+        Key::RollingResistance,
+        Key::G,
+    ]
+    .iter()
+    .all(has)
+        && ball(Key::V0Left, Key::HeightLeft)
+        && ball(Key::V0Right, Key::HeightRight)
 }
 
 /// A fitted parameter's symbol and unit for people.

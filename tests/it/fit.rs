@@ -722,3 +722,102 @@ fn no_fit_output_prints_nan() {
         }
     }
 }
+
+/// Issue 19: the table's first line says where the scene came from: the data file's
+/// own `# scene` lines are named as such (not the default preset they replace), with
+/// the options over them, and the preset only where it still gives a value.
+#[test]
+fn the_fit_names_the_source_of_its_scene() {
+    let sim = groovelab(&[
+        "simulate", "--preset", "paper-b4.4", "--format", "csv", "--sample", "0.01",
+    ]);
+    let run = String::from_utf8(sim.stdout).unwrap();
+    let header = [
+        "radius = 2.75 cm",
+        "width = 4.4 cm",
+        "mass_left = 167 g",
+        "mass_right = 167 g",
+        "v0_left = 0.5318 m/s",
+        "v0_right = 0.5318 m/s",
+        "restitution = 1",
+        "rolling_resistance = 0",
+        "g = 9.81 m/s^2",
+        "mu = 0.17",
+    ];
+    let lines = |n: usize| -> String {
+        header[..n]
+            .iter()
+            .map(|l| format!("# scene {l}\n"))
+            .collect()
+    };
+    let full = csv("scene-full.csv", &(lines(header.len()) + &run));
+    let first = |args: &[&str]| {
+        let out = groovelab(&[&["fit", "--data"], args].concat());
+        let text = String::from_utf8_lossy(&out.stdout).to_string();
+        assert!(out.status.success(), "{args:?}: {text}");
+        text.lines().next().unwrap().to_string()
+    };
+    let line = first(&[&full]);
+    assert!(
+        line.starts_with(&format!(
+            "scene (from {full}'s header): R = 2.75 cm, b = 4.4 cm"
+        )),
+        "{line}"
+    );
+    assert!(!line.contains("preset"), "{line}");
+    let line = first(&[&full, "--mu", "0.2"]);
+    assert!(
+        line.starts_with(&format!("scene (from {full}'s header with --mu): ")),
+        "{line}"
+    );
+    // Without μ_k and g in the file, the preset gives them: named, with what the file
+    // gave.
+    let part = csv("scene-part.csv", &(lines(8) + &run));
+    let line = first(&[&part]);
+    assert!(
+        line.starts_with(&format!(
+            "scene (preset paper-b4.9 with {part}'s header (radius, width, mass_left, mass_right, v0_left, v0_right, restitution, rolling_resistance)): R = 2.75 cm, b = 4.4 cm"
+        )),
+        "{line}"
+    );
+}
+
+/// Issue 19: the line fits' header says the window used: the sliding phase, or the
+/// one --from/--to set (in seconds); the Fit view too, once its window is moved.
+#[test]
+fn the_line_fit_header_says_which_window() {
+    let lines = |extra: &[&str]| {
+        let out = groovelab(&[&["fit", "--preset", "paper-b3.5"], extra].concat());
+        let text = String::from_utf8(out.stdout).unwrap();
+        text.lines()
+            .find(|l| l.starts_with("line fits "))
+            .unwrap()
+            .to_string()
+    };
+    assert_eq!(
+        lines(&[]),
+        "line fits over the sliding phase, t = 0.020 … 0.220 s (11 frames; change with --from/--to)"
+    );
+    assert_eq!(
+        lines(&["--from", "0.06", "--to", "0.16"]),
+        "line fits over the window --from/--to set, t = 0.060 … 0.160 s (6 frames)"
+    );
+    assert_eq!(
+        lines(&["--from", "0.06"]),
+        "line fits from --from to the end of the sliding phase, t = 0.060 … 0.220 s (9 frames)"
+    );
+    assert_eq!(
+        lines(&["--to", "0.16"]),
+        "line fits from the start of the sliding phase to --to, t = 0.020 … 0.160 s (8 frames)"
+    );
+    use crate::common::{app, no_user_presets, text};
+    let mut a = app("paper-b3.5", no_user_presets("fit-window"));
+    crate::common::press(&mut a, "f");
+    a.wait();
+    let screen = text(&a, (200, 60), false);
+    assert!(screen.contains("lines over the sliding phase"), "{screen}");
+    crate::common::press(&mut a, ")");
+    a.wait();
+    let screen = text(&a, (200, 60), false);
+    assert!(screen.contains("lines over the window you set"), "{screen}");
+}

@@ -418,6 +418,7 @@ pub fn fit_all(
     progress: &dyn Progress,
 ) -> Result<Fits, FitError> {
     let model_fit = model_fit(scene, m, free, progress)?;
+    let given = [window.0.is_some(), window.1.is_some()];
     // Without v_t the data cannot say when sliding ends: the fitted model does.
     let window = match window {
         (from, None) if !m.has_v_t() => {
@@ -439,7 +440,10 @@ pub fn fit_all(
         w => w,
     };
     let fits = Fits {
-        line_fit: line_fit(m, scene, window)?,
+        line_fit: LineFit {
+            given,
+            ..line_fit(m, scene, window)?
+        },
         model_fit,
         models: compare_models(scene, m, progress)?,
     };

@@ -64,7 +64,11 @@ fn line_fit_lines(l: &fit::LineFit, theme: &Theme) -> Ranked<'static> {
         (
             5,
             Line::from(Span::styled(
-                "paper's method: lines over the sliding phase",
+                if l.given == [false, false] {
+                    "paper's method: lines over the sliding phase"
+                } else {
+                    "paper's method: lines over the window you set"
+                },
                 theme.title,
             )),
         ),
