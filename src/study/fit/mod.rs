@@ -192,6 +192,16 @@ impl Agreement {
         }
     }
 
+    /// [`Agreement::sentence`] in a narrow panel's words.
+    pub fn short_sentence(self) -> &'static str {
+        match self {
+            Agreement::Agrees => "the model predicts what was seen",
+            Agreement::WithinRestBand => "consistent: within the rest band",
+            Agreement::Disagrees => "the model does NOT predict what was seen",
+            Agreement::MuNotDetermined => "no verdict: μ_k not determined",
+        }
+    }
+
     /// True for a verdict that the prediction holds.
     pub fn holds(self) -> bool {
         matches!(self, Agreement::Agrees | Agreement::WithinRestBand)

@@ -298,7 +298,7 @@ fn verdict_lines(m: &ModelFit, lines: &mut Ranked<'static>, theme: &Theme) {
     lines.push((
         9,
         Line::from(Span::styled(
-            g.text(verdict.sentence()),
+            g.text(verdict.short_sentence()),
             if verdict.holds() {
                 theme.info
             } else {
