@@ -3,7 +3,7 @@
 
 use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
 
-use super::app::{Action, Export, Mode};
+use super::vocabulary::{Action, Export, Mode};
 
 /// One line of the key table.
 #[derive(Clone, Copy, Debug)]

@@ -10,6 +10,7 @@ pub mod line;
 pub mod plot;
 pub mod theme;
 pub mod view;
+pub mod view_cache;
 pub mod vocabulary;
 
 use std::io::{self, Write};

@@ -9,7 +9,7 @@ use ratatui::layout::Rect;
 use ratatui::style::Style;
 use ratatui::widgets::Widget;
 
-use super::block;
+use super::panel::block;
 use crate::lab::MeasuredPoints;
 use crate::lab::jobs::State;
 use crate::physics::model::BallState;
@@ -19,6 +19,7 @@ use crate::study::fit::LineFit;
 use crate::tui::app::{App, ChartBall};
 use crate::tui::plot::{Draw, Plot, Series, VLine, nice_ticks};
 use crate::tui::theme::Theme;
+use crate::tui::view_cache::ChartDrawn;
 
 fn event_lines(app: &App, balls: &[Who], theme: &Theme) -> Vec<VLine> {
     app.lab
@@ -61,7 +62,7 @@ fn chart(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let (title, plot) = chart(app, area, theme);
-    let title = super::title_within(&title, area, theme);
+    let title = super::panel::title_within(&title, area, theme);
     let blk = block(title, theme);
     let inner = blk.inner(area);
     blk.render(area, buf);
@@ -69,38 +70,6 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     app.view_cache
         .chart_drawn
         .set(Some(ChartDrawn::of(&plot, area, inner, theme)));
-}
-
-/// Where the chart was last drawn: enough to find the time under a cell without
-/// building the chart again (a drag on the chart sends many events). Any action may
-/// change the chart, so the app forgets it on each; moving the time does not.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ChartDrawn {
-    area: Rect,
-    ascii: bool,
-    monochrome: bool,
-    /// The plot's data cells (`None`: too small to draw).
-    data: Option<Rect>,
-    x_range: (f64, f64),
-}
-
-impl ChartDrawn {
-    fn of(plot: &Plot, area: Rect, inner: Rect, theme: &Theme) -> ChartDrawn {
-        ChartDrawn {
-            area,
-            ascii: theme.glyphs.ascii,
-            monochrome: monochrome(theme),
-            data: plot.data_area(inner, theme),
-            x_range: plot.x_range,
-        }
-    }
-
-    /// True if it was drawn in `area` with `theme`'s layout.
-    fn is_for(&self, area: Rect, theme: &Theme) -> bool {
-        self.area == area
-            && self.ascii == theme.glyphs.ascii
-            && self.monochrome == monochrome(theme)
-    }
 }
 
 /// The time under screen cell (`column`, `row`) of the chart drawn in `area`, if the
@@ -132,11 +101,6 @@ pub(crate) fn theme_for_layout() -> &'static Theme {
     &THEME
 }
 
-/// No colours: curves that colour alone would tell apart get letters instead.
-fn monochrome(theme: &Theme) -> bool {
-    theme.left.fg.is_none() && theme.right.fg.is_none()
-}
-
 /// A named curve of a run: what it plots at each sampled state.
 type Curve = (&'static str, fn(&Snapshot) -> f64);
 
@@ -148,11 +112,11 @@ fn pinned_series(app: &App, columns: usize, theme: &Theme, curves: &[Curve]) -> 
     if app.lab.pinned.is_none() {
         return Vec::new();
     }
-    let samples = app.pinned_samples(columns);
+    let samples = app.view_cache.pinned_samples(&app.lab, columns);
     // Without colour a dimmed braille line looks like the current run's: the pinned
     // run is drawn in dots of its own glyph then, under the current curves (ASCII draws
     // every line in its glyph).
-    let (draw, glyph) = match (monochrome(theme), theme.glyphs.ascii) {
+    let (draw, glyph) = match (theme.uncoloured_curves(), theme.glyphs.ascii) {
         (_, true) => (Draw::Line, "."),
         (true, false) => (Draw::PointsUnder, "·"),
         (false, false) => (Draw::Line, "."),
@@ -245,7 +209,7 @@ fn overlay_velocities(app: &App, balls: &[usize], columns: usize, theme: &Theme)
         State::Computing { done, total } => {
             let name = app.lab.overlay_choice().map_or("", |(m, _)| m.name());
             return vec![Series {
-                name: format!("{name} {}", super::progress_text(done, total)),
+                name: format!("{name} {}", super::panel::progress_text(done, total)),
                 points: Vec::new().into(),
                 style: theme.overlay,
                 glyph: "%",
@@ -378,7 +342,7 @@ fn line_fit_marks(l: &LineFit, theme: &Theme) -> (Vec<Series>, Vec<VLine>) {
 fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
     let sol = &app.lab.solution;
     let columns = usize::from(area.width.saturating_sub(10));
-    let samples = app.samples(columns);
+    let samples = app.view_cache.samples(&app.lab, columns);
     let (balls, which) = balls_shown(app.chart_ball);
     let curves: Vec<Curve> = balls
         .iter()
@@ -457,7 +421,7 @@ const POSITION: Dimension = Dimension::Length;
 fn positions(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
     let sol = &app.lab.solution;
     let columns = usize::from(area.width.saturating_sub(10));
-    let samples = app.samples(columns);
+    let samples = app.view_cache.samples(&app.lab, columns);
     let mut series = pinned_series(
         app,
         columns,
@@ -517,8 +481,8 @@ fn positions(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
 fn energy(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
     let sol = &app.lab.solution;
     let columns = usize::from(area.width.saturating_sub(10));
-    let split = app.energies(columns);
-    let letters = monochrome(theme) || theme.glyphs.ascii;
+    let split = app.view_cache.energies(&app.lab, columns);
+    let letters = theme.uncoloured_curves() || theme.glyphs.ascii;
     let draw = if letters && !theme.glyphs.ascii {
         // Braille cannot carry a letter: mark each sample cell instead.
         Draw::Points
@@ -553,7 +517,12 @@ fn energy(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
             0,
             Series {
                 name: "pinned kinetic".into(),
-                points: app.pinned_kinetic(columns).iter().copied().collect(),
+                points: app
+                    .view_cache
+                    .pinned_kinetic(&app.lab, columns)
+                    .iter()
+                    .copied()
+                    .collect(),
                 style: theme.dim,
                 glyph: ".",
                 draw: Draw::Line,
