@@ -401,7 +401,11 @@ fn table(scene: &Scene, f: &Fits, paper_data: bool) -> String {
         out,
         "  μ_k = {}{}   RMS residual {:.4} m/s",
         value("mu", mf.mu, mu_se, ""),
-        if mu_se.is_some() { " (± 2σ, 95 %)" } else { "" },
+        if mu_se.is_some() {
+            " (± 2σ, 95 %)"
+        } else {
+            ""
+        },
         mf.rms
     );
     if mf.v0_se.is_some() || mf.undetermined("v0").is_some() {
@@ -649,7 +653,11 @@ fn undetermined_notes(models: &[Candidate], names: &dyn Fn(&Candidate) -> String
     // (parameter, reason) → the models where it is so, in table order.
     let mut seen: Vec<(&fit::NotIdentified, Vec<String>)> = Vec::new();
     for c in models {
-        for n in c.parameters.iter().filter_map(|e| e.not_determined.as_ref()) {
+        for n in c
+            .parameters
+            .iter()
+            .filter_map(|e| e.not_determined.as_ref())
+        {
             match seen
                 .iter_mut()
                 .find(|(m, _)| m.parameter == n.parameter && m.reason == n.reason)

@@ -634,7 +634,10 @@ fn the_fit_view_and_the_fit_command_give_the_same_verdict() {
     let (cli, view, position) = verdicts_of_flat_table();
     assert_eq!(position, Agreement::MuNotDetermined);
     assert_eq!(cli.len(), 2, "{cli:?}");
-    assert_eq!(cli, view, "the table's verdicts {cli:?}, the view's {view:?}");
+    assert_eq!(
+        cli, view,
+        "the table's verdicts {cli:?}, the view's {view:?}"
+    );
     assert_eq!(cli[1], position.word());
     assert_eq!(cli[1], "no verdict");
 }
@@ -684,7 +687,10 @@ fn the_models_table_says_not_determined_and_never_names_such_a_model() {
             if p["parameter"] == "restitution" {
                 assert!(p["value"].is_null() && p["se"].is_null(), "{p}");
                 assert!(
-                    p["reason"].as_str().unwrap().contains("edge of its physical range"),
+                    p["reason"]
+                        .as_str()
+                        .unwrap()
+                        .contains("edge of its physical range"),
                     "{p}"
                 );
                 assert_eq!(m["supported"], false, "{m}");
@@ -729,7 +735,13 @@ fn no_fit_output_prints_nan() {
 #[test]
 fn the_fit_names_the_source_of_its_scene() {
     let sim = groovelab(&[
-        "simulate", "--preset", "paper-b4.4", "--format", "csv", "--sample", "0.01",
+        "simulate",
+        "--preset",
+        "paper-b4.4",
+        "--format",
+        "csv",
+        "--sample",
+        "0.01",
     ]);
     let run = String::from_utf8(sim.stdout).unwrap();
     let header = [

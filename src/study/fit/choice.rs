@@ -226,7 +226,10 @@ mod tests {
     fn a_model_with_a_value_not_determined_is_never_named() {
         let mu = model(&[("mu", true)], 0.0);
         // e on its edge, 1 lower in BIC: the simplest determined model within 2 is μ.
-        let models = [mu.clone(), model(&[("mu", true), ("restitution", false)], -1.0)];
+        let models = [
+            mu.clone(),
+            model(&[("mu", true), ("restitution", false)], -1.0),
+        ];
         assert_eq!(supported(&models), Some(0));
         // The simplest overall has its μ on the edge: the next one is named.
         let models = [

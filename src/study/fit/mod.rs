@@ -133,7 +133,9 @@ impl ModelFit {
     /// they do not: then it is "not determined" (JSON null), never a number that
     /// reads as fitted.
     pub fn undetermined(&self, parameter: &str) -> Option<&NotIdentified> {
-        self.not_identified.iter().find(|n| n.parameter == parameter)
+        self.not_identified
+            .iter()
+            .find(|n| n.parameter == parameter)
     }
 
     /// The one verdict of the fit against what was observed, for every place that

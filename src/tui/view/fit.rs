@@ -271,7 +271,11 @@ fn pm(m: &ModelFit, decimals: usize, ascii: bool) -> String {
     if m.undetermined("mu").is_some() {
         "not determined".to_string()
     } else if m.mu_se.is_finite() {
-        format!("{:.decimals$} ± {:.decimals$} ({two_sigma})", m.mu, 2.0 * m.mu_se)
+        format!(
+            "{:.decimals$} ± {:.decimals$} ({two_sigma})",
+            m.mu,
+            2.0 * m.mu_se
+        )
     } else {
         format!("{:.decimals$}", m.mu)
     }
