@@ -10,7 +10,6 @@ use super::{
 };
 use crate::methods::{self, Method, Settings, Y};
 use crate::physics::derived::Derived;
-use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{Event, Snapshot, Solution};
 use crate::settings::units::{Dimension, show};
@@ -124,17 +123,17 @@ struct MethodRunJson<'a> {
     final_state: Snapshot,
 }
 
-/// `simulate --method NAME`: one time-stepping run; its events are those it detects.
+/// `simulate --method NAME`: one time-stepping run over the span of the exact run
+/// `exact` (the lab's snapshot's); its events are those it detects.
 pub(super) fn simulate_method(
-    scene: &Scene,
-    span: &Span,
+    exact: &Solution,
     args: &SimulateArgs,
     settings: &Settings,
 ) -> Result<String, CliError> {
-    let exact = engine::solve(scene, span);
+    let scene = &exact.scene;
     let (t0, t1) = (exact.t_start, exact.t_end);
     let grid = match args.sample {
-        Some(dt) => super::samples(&exact, dt)?.iter().map(|s| s.t).collect(),
+        Some(dt) => super::samples(exact, dt)?.iter().map(|s| s.t).collect(),
         None => Vec::new(),
     };
     let model = methods::Model::of(scene);
@@ -194,7 +193,7 @@ pub(super) fn simulate_method(
         Format::Csv => {
             let detected = Solution {
                 events: rec.events.clone(),
-                ..exact
+                ..exact.clone()
             };
             super::csv_output(&detected, samples)?
         }

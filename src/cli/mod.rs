@@ -7,10 +7,9 @@ use std::path::Path;
 
 use serde::Serialize;
 
-use crate::lab::{Lab, OwnData};
+use crate::lab::{Lab, OwnData, Resolved};
 use crate::methods::Method;
 use crate::physics::derived::{Derived, Summary};
-use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{Snapshot, Solution};
 use crate::physics::story::{self, After};
@@ -269,23 +268,24 @@ fn method_options(args: &SimulateArgs) -> Result<(), CliError> {
     }
 }
 
+/// `simulate`: the run of the lab's snapshot of the scene the options give (the same
+/// scene, span and story the app shows for them), or a time-stepping method's run over
+/// the snapshot's span.
 pub fn simulate(scene_args: &SceneArgs, args: &SimulateArgs) -> Result<String, CliError> {
-    let (preset, scene, span) = scene_args.resolve()?;
+    let lab = Lab::new(scene_args.settings()?, None)?;
     method_options(args)?;
     if args.method != Method::Exact {
         let settings = methods::settings(args.dt, args.tol, args.epsilon)?;
-        return methods::simulate_method(&scene, &span, args, &settings);
+        return methods::simulate_method(&lab.solution, args, &settings);
     }
-    let solution = engine::solve(&scene, &span);
     let samples = match args.sample {
         None => None,
-        Some(dt) => Some(samples(&solution, dt)?),
+        Some(dt) => Some(samples(&lab.solution, dt)?),
     };
-    let derived = Derived::of(&scene);
     Ok(match args.format {
-        Format::Json => json(&solution, &derived, samples.as_deref()),
-        Format::Csv => csv_output(&solution, samples.as_deref())?,
-        Format::Table => table(&preset, &solution, &derived, samples.as_deref()),
+        Format::Json => json(&lab.solution, &lab.derived, samples.as_deref()),
+        Format::Csv => csv_output(&lab.solution, samples.as_deref())?,
+        Format::Table => table(lab.preset(), lab.resolved(), samples.as_deref()),
     })
 }
 
@@ -342,25 +342,20 @@ fn csv_output(solution: &Solution, samples: Option<&[Snapshot]>) -> Result<Strin
     crate::study::export::run_csv(solution, samples).map_err(|e| CliError::Io(e.into()))
 }
 
-/// `simulate`'s table: the scene, what the run does, and its events (and samples).
-fn table(
-    preset: &Preset,
-    solution: &Solution,
-    derived: &Derived,
-    samples: Option<&[Snapshot]>,
-) -> String {
+/// `simulate`'s table: the scene, what the run does, and its events (and samples),
+/// as the snapshot holds them.
+fn table(preset: &Preset, now: &Resolved, samples: Option<&[Snapshot]>) -> String {
     let mut out = String::new();
-    scene_lines(&mut out, preset, solution, derived);
-    story_lines(&mut out, preset, solution, derived);
-    run_lines(&mut out, solution);
+    scene_lines(&mut out, preset, &now.scene, &now.derived);
+    story_lines(&mut out, now);
+    run_lines(&mut out, &now.solution);
     let _ = writeln!(out);
-    state_rows(&mut out, solution, samples);
+    state_rows(&mut out, &now.solution, samples);
     out
 }
 
 /// The preset, the scene, the balls and the derived values with the paper's regime.
-fn scene_lines(out: &mut String, preset: &Preset, solution: &Solution, derived: &Derived) {
-    let sc = &solution.scene;
+fn scene_lines(out: &mut String, preset: &Preset, sc: &Scene, derived: &Derived) {
     let len = |v: f64| show(v, Dimension::Length);
     let _ = writeln!(out, "preset   {}: {}", preset.name, preset.description);
     let b_star = derived
@@ -398,9 +393,11 @@ fn scene_lines(out: &mut String, preset: &Preset, solution: &Solution, derived: 
     );
 }
 
-/// What the run does (against the paper's criterion and the preset's data) and the
-/// left ball after the first impact with the forces then.
-fn story_lines(out: &mut String, preset: &Preset, solution: &Solution, derived: &Derived) {
+/// What the run does (against the paper's criterion and the measured series' rest
+/// band, if the scene has one) and the left ball after the first impact with the
+/// forces then.
+fn story_lines(out: &mut String, now: &Resolved) {
+    let (solution, derived, story) = (&now.solution, &now.derived, &now.story);
     // What this run does, beside the paper's criterion above.
     let outcome = Summary::of(solution).outcome;
     let _ = writeln!(
@@ -408,20 +405,18 @@ fn story_lines(out: &mut String, preset: &Preset, solution: &Solution, derived: 
         "outcome  {}: {}{}",
         outcome.name(),
         story::outcome_says(outcome, derived),
-        story::criterion_note(solution, derived).map_or(String::new(), |n| format!(" ({n})"))
+        story
+            .criterion_note
+            .as_ref()
+            .map_or(String::new(), |n| format!(" ({n})"))
     );
-    // Against the preset's measured series: can its data tell this regime from rest?
-    if let Some(m) = &preset.measured {
-        let band = crate::study::fit::rest_band(m);
-        let _ = writeln!(
-            out,
-            "verdict  {}",
-            story::Verdict::of(solution, derived, Some(band)).text("±")
-        );
+    // Against the measured series: can its data tell this regime from rest?
+    if now.rest_band.is_some() {
+        let _ = writeln!(out, "verdict  {}", story.verdict.text("±"));
     }
     if let Some(rec) = derived.left_after_impact {
         // The closed forms only where the exact run bears them out; else its events.
-        match story::after_first_impact(solution, derived) {
+        match &story.after {
             Some(After::Interrupted(i)) => {
                 let _ = writeln!(
                     out,

@@ -32,7 +32,7 @@ pub use analyses::{
     ExportResult, Exported, FitWindowError, METHOD_VIEW_LEVELS, OVERLAY_LEVELS, Overlay,
     level_settings,
 };
-pub use resolved::{MeasuredPoints, Point, Resolved, Story};
+pub use resolved::{MeasuredPoints, Point, Resolved, Story, value_range};
 pub use settings::{Edit, Settings};
 pub use span::SpanEnd;
 

@@ -4,14 +4,18 @@
 //! ← command line ← the app's edits) settle into one snapshot (that the same scene
 //! reached by flags or by keys draws the same screen is `lab_data`'s test): `u` takes
 //! back the last edit, `R` all of them; a preset picked keeps the student's data; data
-//! without a scene are one rule for the app, `render` and `fit`.
+//! without a scene are one rule for the app, `render` and `fit`; `simulate` prints the
+//! snapshot the app shows for the same options.
 
 use std::path::{Path, PathBuf};
 
-use groovelab::cli::{DataArgs, SceneArgs};
+use groovelab::cli::{DataArgs, Format, SceneArgs, SimulateArgs};
 use groovelab::lab::SpanEnd;
+use groovelab::methods::Method;
 use groovelab::settings::params::{Key, SceneSpec};
+use groovelab::study::preset::Preset;
 use groovelab::tui::app::Status;
+use serde_json::Value;
 
 use crate::common::{self, press, rendered};
 
@@ -234,4 +238,68 @@ fn pinning_keeps_the_snapshots_analyses_and_an_edit_starts_them_over() {
     press(&mut a, "u");
     a.lab.wait();
     assert!(a.lab.runs() > edited);
+}
+
+/// `simulate` on these options, in `format`.
+fn simulate(scene: &SceneArgs, format: Format) -> String {
+    let args = SimulateArgs {
+        format,
+        sample: None,
+        method: Method::Exact,
+        dt: None,
+        tol: None,
+        epsilon: None,
+        output: None,
+    };
+    groovelab::cli::simulate(scene, &args).unwrap()
+}
+
+#[test]
+fn simulate_prints_the_apps_snapshot_of_the_same_options() {
+    let mut cases: Vec<SceneArgs> = Preset::all()
+        .0
+        .iter()
+        .map(|p| common::scene_of(&p.name, SceneSpec::default()))
+        .collect();
+    cases.push(scene(SceneSpec::default().with(Key::Width, 0.04)));
+    cases.push(common::scene_of(
+        "paper-b3.5",
+        SceneSpec::default().with(Key::Mu, 0.1),
+    ));
+    cases.push(common::scene_of(
+        "critical",
+        SceneSpec::default().with(Key::TEnd, 0.5),
+    ));
+    for args in &cases {
+        let app = rendered(args, &data(&[]), None, None, library());
+        let now = &app.lab;
+        let json: Value = serde_json::from_str(&simulate(args, Format::Json)).unwrap();
+        let name = args.preset.as_deref().unwrap();
+        // The same span (a preset's data reach past the motion: paper-b3.5's to 0.64 s),
+        // hence the same final state and the same events.
+        let same = |at: &Value, x: f64| {
+            // The printed number read back: within an ulp or two (serde_json's parse
+            // need not round-trip the last bit).
+            let y = at.as_f64().unwrap();
+            assert!(
+                (y - x).abs() <= 4.0 * f64::EPSILON * x.abs(),
+                "{name}: {y} vs {x}"
+            );
+        };
+        same(&json["span"]["t_start"], now.span.t_start);
+        same(&json["span"]["t_end"], now.solution.t_end);
+        let last = now.solution.at(now.solution.t_end);
+        same(&json["final"]["left"]["x"], last.left.x);
+        same(&json["final"]["right"]["v"], last.right.v);
+        let events = json["events"].as_array().unwrap().len();
+        assert_eq!(events, now.solution.visible_events().count(), "{name}");
+        // The table's story is the snapshot's: its verdict against the same rest band.
+        let table = simulate(args, Format::Table);
+        let verdict = table.lines().find_map(|l| l.strip_prefix("verdict  "));
+        assert_eq!(
+            verdict.map(str::to_string),
+            now.rest_band.map(|_| now.story.verdict.text("±")),
+            "{name}"
+        );
+    }
 }
