@@ -3,11 +3,10 @@
 //! failure never leaves partial output).
 
 use std::fmt::Write as _;
-use std::path::Path;
 
 use serde::Serialize;
 
-use crate::lab::{Lab, OwnData, Resolved};
+use crate::lab::{Lab, Resolved};
 use crate::methods::Method;
 use crate::physics::derived::{Derived, Summary};
 use crate::physics::scene::{Scene, Span};
@@ -16,7 +15,7 @@ use crate::physics::story::{self, After};
 use crate::study::preset::{self, Preset};
 use crate::tui::{
     self,
-    app::{App, Library, Status},
+    app::{App, Library},
 };
 
 mod args;
@@ -25,16 +24,17 @@ mod error;
 mod fit;
 mod manual;
 mod methods;
+mod open;
 mod progress;
+mod states;
 mod sweep;
 pub use crate::output::{self, write_atomically};
 use crate::settings::units::{Dimension, show, significant};
 pub use args::*;
 pub use error::{BadValue, CliError, Flag, Usage};
+pub use open::{app, lab, opened, scene_of_data};
+use states::{csv_output, samples, state_rows};
 pub use sweep::run_with_stop as sweep_with_stop;
-
-/// Most samples `--sample` may ask for.
-pub const MAX_SAMPLES: usize = 1_000_000;
 
 /// What a command line asks for once it is valid.
 pub enum Outcome {
@@ -48,7 +48,7 @@ pub enum Outcome {
 pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
     used_options(cli)?;
     // A data file that names its scene gives it, under the options.
-    let scene = &fit::with_file_scene(&cli.scene, &cli.data)?;
+    let scene = &open::with_file_scene(&cli.scene, &cli.data)?;
     match &cli.command {
         None | Some(Command::Tui) => Ok(Outcome::Interactive(Box::new(app(scene, &cli.data)?))),
         Some(Command::Simulate(args)) => {
@@ -132,58 +132,6 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         _ => return Ok(()),
     };
     Err(error.into())
-}
-
-/// The lab on the scene the options describe, with `--data` replacing the preset's
-/// measured series (the lab derives a position track's v_t with the r of each scene
-/// it shows).
-pub fn lab(scene_args: &SceneArgs, data: &DataArgs) -> Result<Lab, CliError> {
-    let settings = scene_args.settings()?;
-    let own = fit::load_series(data)?.map(|series| OwnData {
-        name: data
-            .data
-            .iter()
-            .map(|p| p.display().to_string())
-            .collect::<Vec<_>>()
-            .join(" + "),
-        series,
-    });
-    Ok(Lab::new(settings, own)?)
-}
-
-/// The app on that lab, with the user's presets.
-pub fn app(scene_args: &SceneArgs, data: &DataArgs) -> Result<App, CliError> {
-    opened(scene_args, data, Library::user())
-}
-
-/// The app as it opens on the options: the lab, and the status line asking for the
-/// data's scene when none was named ([`scene_of_data`]).
-pub fn opened(scene_args: &SceneArgs, data: &DataArgs, library: Library) -> Result<App, CliError> {
-    let mut app = App::new(lab(scene_args, data)?, library);
-    if let Some(path) = scene_of_data(scene_args, data) {
-        // The file's name without its folder: the status line is one row.
-        let file = path
-            .file_name()
-            .unwrap_or(path.as_os_str())
-            .to_string_lossy();
-        let s = &app.lab.scene;
-        app.status = Status::Error(format!(
-            "{file} names no scene: the model uses {}'s R = {}, b = {}; set R and b to yours",
-            app.lab.preset().name,
-            show(s.radius, Dimension::Length),
-            show(s.width, Dimension::Length),
-        ));
-    }
-    Ok(app)
-}
-
-/// The one rule for data and their scene, for the app, `render` and `fit`: a data file
-/// names no scene, so the one it was measured in is given by a preset or the scene
-/// options. Without them, the file whose scene is missing: `fit` refuses, the app and
-/// `render` say which default the model uses and ask for R and b.
-pub fn scene_of_data<'a>(scene_args: &SceneArgs, data: &'a DataArgs) -> Option<&'a Path> {
-    let path = data.data.first()?;
-    (!scene_args.names_a_scene()).then_some(path.as_path())
 }
 
 /// `render`: the app's screen after `--keys`, at `--at`, as text.
@@ -289,21 +237,6 @@ pub fn simulate(scene_args: &SceneArgs, args: &SimulateArgs) -> Result<String, C
     })
 }
 
-fn samples(solution: &Solution, dt: f64) -> Result<Vec<Snapshot>, CliError> {
-    // As many as `Solution::sample` gives: the grid points from t_start to t_end.
-    let count = ((solution.t_end - solution.t_start) / dt + 1e-9).floor() + 1.0;
-    if dt <= 0.0 || count > MAX_SAMPLES as f64 {
-        return Err(BadValue::TooManySamples {
-            dt,
-            count,
-            start: solution.t_start,
-            end: solution.t_end,
-        }
-        .into());
-    }
-    Ok(solution.sample(dt))
-}
-
 #[derive(Serialize)]
 struct SimulationJson<'a> {
     scene: &'a Scene,
@@ -335,11 +268,6 @@ fn json(solution: &Solution, derived: &Derived, samples: Option<&[Snapshot]>) ->
     let mut s = serde_json::to_string_pretty(&doc).expect("plain data serializes");
     s.push('\n');
     s
-}
-
-/// CSV: the samples if `--sample` is given, else the events. SI units.
-fn csv_output(solution: &Solution, samples: Option<&[Snapshot]>) -> Result<String, CliError> {
-    crate::study::export::run_csv(solution, samples).map_err(|e| CliError::Io(e.into()))
 }
 
 /// `simulate`'s table: the scene, what the run does, and its events (and samples),
@@ -475,26 +403,6 @@ fn run_lines(out: &mut String, solution: &Solution) {
     );
 }
 
-/// The state at each event, then at each sample if any.
-fn state_rows(out: &mut String, solution: &Solution, samples: Option<&[Snapshot]>) {
-    let header = state_header();
-    let row = state_row;
-    let _ = writeln!(out, "{header}");
-    for e in solution.visible_events() {
-        let _ = writeln!(
-            out,
-            "{}",
-            row(e.t, e.kind.name(), e.ball.name(), e.left, e.right)
-        );
-    }
-    if let Some(samples) = samples {
-        let _ = writeln!(out, "\nsamples\n{header}");
-        for s in samples {
-            let _ = writeln!(out, "{}", row(s.t, "", "", s.left, s.right));
-        }
-    }
-}
-
 /// The closed-form recovery of the left ball, in one line.
 fn recovery_line(rec: &crate::physics::derived::Recovery) -> String {
     let len = |v: f64| show(v, Dimension::Length);
@@ -544,39 +452,4 @@ fn presets() -> String {
         let _ = writeln!(out, "(skipped: {e})");
     }
     out
-}
-
-/// Header of the tables of both balls' states (events and samples).
-pub(crate) fn state_header() -> String {
-    format!(
-        "{:>10}  {:<14} {:<6} {:>9} {:>9} {:>9}  {:>9} {:>9} {:>9}",
-        "t (s)",
-        "event",
-        "ball",
-        format!("x_L ({})", Dimension::Length.display_unit().0),
-        "v_L (m/s)",
-        "u_L (m/s)",
-        format!("x_R ({})", Dimension::Length.display_unit().0),
-        "v_R (m/s)",
-        "u_R (m/s)"
-    )
-}
-
-/// One row of those tables.
-pub(crate) fn state_row(
-    t: f64,
-    kind: &str,
-    ball: &str,
-    l: crate::physics::model::BallState,
-    r: crate::physics::model::BallState,
-) -> String {
-    format!(
-        "{t:>10.6}  {kind:<14} {ball:<6} {:>9.4} {:>9.5} {:>9.5}  {:>9.4} {:>9.5} {:>9.5}",
-        Dimension::Length.to_display(l.x),
-        l.v,
-        l.u,
-        Dimension::Length.to_display(r.x),
-        r.v,
-        r.u
-    )
 }

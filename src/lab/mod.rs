@@ -5,52 +5,44 @@
 //! rows, the overlay run, the fits), computed lazily on worker threads and dropped
 //! when the scene changes. An edit sets a layer and builds a new snapshot; `Lab`
 //! derefs to it, so a view reads `lab.scene`, `lab.solution`, `lab.story` from the one
-//! snapshot. The analyses' jobs are in `analyses`, the span rule in `span`; what
-//! depends on the terminal's size is cached by the app, not here.
+//! snapshot. The analyses' jobs are in `analyses` (their work in `work`), the span
+//! rule in `span`; what depends on the terminal's size is cached by the app, not here.
 
 mod analyses;
 pub mod jobs;
 mod resolved;
 mod settings;
 mod span;
+mod work;
 
 use std::ops::Deref;
 use std::sync::Arc;
 
 use crate::methods::Method;
-use crate::physics::scene::Scene;
-use crate::physics::solution::Solution;
-use crate::settings::params::{Key, SceneError, SceneSpec};
+use crate::settings::params::Key;
+use crate::settings::spec::{SceneError, SceneSpec};
 use crate::study::compare::Row;
 use crate::study::fit::{FitError, Fits, ModelFit};
 use crate::study::measured::{Measured, Series};
 use crate::study::preset::Preset;
-use analyses::Generation;
 use jobs::{Job, Jobs};
 
-pub use analyses::{
+pub use resolved::{MeasuredPoints, Pinned, Point, Resolved, Story, value_range};
+pub use settings::{Edit, Settings};
+pub use span::SpanEnd;
+pub use work::{
     ExportResult, Exported, FitWindowError, METHOD_VIEW_LEVELS, OVERLAY_LEVELS, Overlay,
     level_settings,
 };
-pub use resolved::{MeasuredPoints, Point, Resolved, Story, value_range};
-pub use settings::{Edit, Settings};
-pub use span::SpanEnd;
 
 use span::solve_shown;
 
+/// The scene a job belongs to: it counts up with every new solve, so a request made
+/// for an earlier scene never matches a newer one.
+type Generation = u64;
+
 /// The line fit's window, s: from, to (`None`: the sliding phase's end).
 pub type FitWindow = (Option<f64>, Option<f64>);
-
-/// A scene pinned for comparison (A/B): drawn dimmed beside the current one.
-#[derive(Clone, Debug)]
-pub struct Pinned {
-    pub scene: Scene,
-    pub solution: Arc<Solution>,
-    /// The preset it started from.
-    pub label: String,
-    /// Where its automatic span ends (the current automatic span reaches it too).
-    pub auto_end: f64,
-}
 
 /// A measured series of the user's own (`--data`), kept when another preset is
 /// picked for the model, until the user drops it.

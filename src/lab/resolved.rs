@@ -11,13 +11,24 @@ use crate::physics::derived::Derived;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::Solution;
 use crate::physics::story::{self, After, Verdict};
-use crate::settings::params::{Key, PARAMS, SceneError};
+use crate::settings::params::{Key, PARAMS};
+use crate::settings::spec::SceneError;
 use crate::settings::units::{Dimension, show};
 use crate::study::measured::{self, InScene, Measured, Series};
 
-use super::Pinned;
 use super::settings::Settings;
 use super::span::{SpanEnd, solve_shown};
+
+/// A scene pinned for comparison (A/B): drawn dimmed beside the current one.
+#[derive(Clone, Debug)]
+pub struct Pinned {
+    pub scene: Scene,
+    pub solution: Arc<Solution>,
+    /// The preset it started from.
+    pub label: String,
+    /// Where its automatic span ends (the current automatic span reaches it too).
+    pub auto_end: f64,
+}
 
 /// A point of a chart (t, value).
 pub type Point = (f64, f64);

@@ -5,7 +5,8 @@
 //! counting), so an accidental reset can be undone like any change.
 
 use crate::physics::scene::{Scene, Span};
-use crate::settings::params::{Key, SceneError, SceneSpec};
+use crate::settings::params::Key;
+use crate::settings::spec::{SceneError, SceneSpec};
 use crate::study::preset::Preset;
 
 use super::span::SpanEnd;

@@ -580,7 +580,7 @@ fn verdicts_of_flat_table() -> (Vec<String>, Vec<String>, groovelab::study::fit:
     use crate::common::{no_user_presets, rendered, scene_of, text};
     use groovelab::cli::DataArgs;
     use groovelab::lab::jobs::State;
-    use groovelab::settings::params::SceneSpec;
+    use groovelab::settings::spec::SceneSpec;
     let out = groovelab(&[
         "fit",
         "--preset",

@@ -5,7 +5,8 @@
 use groovelab::cli::DataArgs;
 use groovelab::lab::{Lab, SpanEnd};
 use groovelab::physics::solution::EventKind;
-use groovelab::settings::params::{Key, SceneSpec};
+use groovelab::settings::params::Key;
+use groovelab::settings::spec::SceneSpec;
 use groovelab::study::preset::{Origin, Preset};
 use groovelab::tui::app::{App, Library, Status};
 use groovelab::tui::theme::{Glyphs, Theme};

@@ -11,7 +11,9 @@
 use serde::Serialize;
 
 use super::least_squares::{Target, residuals, with};
-use super::{FitError, Free, NotIdentified, Scored, scored_fit, thinned};
+use super::model::{Scored, scored_fit, thinned};
+use super::problem::{FitError, Free};
+use super::uncertainty::NotIdentified;
 use crate::physics::scene::Scene;
 use crate::study::Progress;
 use crate::study::measured::series::Measured;
