@@ -415,6 +415,34 @@ fn noisy_velocities(scene: &Scene, seed: u64) -> groovelab::study::measured::Mea
 }
 
 #[test]
+fn a_fit_far_beyond_the_datas_scatter_never_agrees() {
+    use groovelab::study::fit::{Agreement, Free, POOR_FIT, model_fit};
+    let truth = scene();
+    // Measured at twice the scene's v0: the regime depends on k and e only, so the
+    // regimes agree, yet no μ_k brings the model near the data.
+    let mut fast = truth;
+    fast.left.v0 *= 2.0;
+    fast.right.v0 *= 2.0;
+    let m = noisy_velocities(&fast, 7);
+    let quiet = &groovelab::study::Quiet;
+    let f = model_fit(&truth, &m, &[Free::Mu], quiet).unwrap();
+    let scatter = f.scatter.unwrap();
+    // The noise is 1 cm/s: the scatter says so within a quarter.
+    assert!((scatter - 0.01).abs() < 0.0025, "scatter {scatter}");
+    assert!(
+        f.rms > POOR_FIT * scatter,
+        "rms {} scatter {scatter}",
+        f.rms
+    );
+    assert_eq!(f.regime_predicted, f.regime_observed);
+    assert_eq!(f.agreement(), Agreement::PoorFit);
+    // The same data in their own scene: residuals of about the scatter, and agreed.
+    let g = model_fit(&fast, &m, &[Free::Mu], quiet).unwrap();
+    assert!(g.rms < 2.0 * scatter, "rms {}", g.rms);
+    assert_eq!(g.agreement(), Agreement::Agrees);
+}
+
+#[test]
 fn the_fit_names_the_simplest_model_the_data_support() {
     use groovelab::study::fit::compare_models;
     let truth = scene();

@@ -21,10 +21,10 @@ use super::series::{Measured, Stencil, Stencils, Track};
 use crate::physics::scene::Scene;
 use crate::study::fit::{self, FitError, Free, ModelFit};
 
-pub use derivative::Local;
+pub use derivative::{Local, scatter};
 pub use impacts::TrackError;
 
-use derivative::{derivatives, median, scatter, unwrap};
+use derivative::{derivatives, median, unwrap};
 use impacts::impacts;
 
 /// How to derive velocities from a track.
