@@ -6,7 +6,7 @@ use crate::physics::derived::Regime;
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
 use crate::study::measured::series::Measured;
-use crate::study::measured::track::scatter;
+use crate::study::measured::track::derivative::scatter;
 
 /// Speeds within ± this of zero count as rest: three times the scatter of the
 /// measured points about straight lines over the sliding phase (the data's own

@@ -12,7 +12,7 @@
 //! (default 50 ms: longer windows smear the end of sliding). Near an impact and the
 //! ends of the track the window keeps only the frames on its own side, so it shrinks.
 
-mod derivative;
+pub mod derivative;
 mod impacts;
 
 use serde::Serialize;
@@ -21,10 +21,10 @@ use super::series::{Measured, Stencil, Stencils, Track};
 use crate::physics::scene::Scene;
 use crate::study::fit::{self, FitError, Free, ModelFit};
 
-pub use derivative::{Local, scatter};
+pub use derivative::Local;
 pub use impacts::TrackError;
 
-use derivative::{derivatives, median, unwrap};
+use derivative::{derivatives, median, scatter, unwrap};
 use impacts::impacts;
 
 /// How to derive velocities from a track.
