@@ -1,9 +1,10 @@
 //! What the charts and the map draw from the lab's snapshot that depends on the
 //! terminal's size, cached per snapshot and size, never recomputed per frame: the
 //! curve samples (about four per pixel column), the energies at them, the pinned run's
-//! samples and kinetic energy, and the regime grid. A new snapshot (any edit) or a new
-//! size makes them again; a frame that only moves the time (playback, a drag on the
-//! chart) reuses them. The app holds one; the views fill it as they draw.
+//! samples and kinetic energy, the regime grid, and the measured series thinned to
+//! the chart's cells. A new snapshot (any edit) or a new size makes them again; a
+//! frame that only moves the time (playback, a drag on the chart) reuses them. The
+//! app holds one; the views fill it as they draw.
 
 use std::cell::{Cell, RefCell};
 use std::rc::Rc;
@@ -14,7 +15,7 @@ use ratatui::layout::Rect;
 use crate::lab::{Lab, Resolved};
 use crate::physics::derived::{Derived, Regime};
 use crate::physics::solution::{EnergySplit, Snapshot, Solution};
-use crate::tui::plot::Plot;
+use crate::tui::plot::{Cells, Plot, Points};
 use crate::tui::theme::Theme;
 
 /// One cached view of a snapshot: the snapshot it belongs to (held, so its address
@@ -33,6 +34,13 @@ pub struct ViewCache {
     pinned_samples: Cached<usize, Snapshot>,
     pinned_kinetic: Cached<usize, (f64, f64)>,
     regimes: Cached<(usize, usize), Regime>,
+    /// The measured series a chart draws, thinned to its cells: per grid and which
+    /// series (bits in the order of `MeasuredPoints::series`).
+    marks: Cached<(Cells, u8), Option<Points>>,
+    /// How many times measured series were thinned (work counted, for the tests).
+    pub marks_thinned: Cell<u64>,
+    /// How many points the last chart drawn handed to the plot (work counted).
+    pub chart_points: Cell<usize>,
 }
 
 /// `cell`'s values if they were made for `now` at `key`, else `make`'s, kept.
@@ -57,6 +65,28 @@ impl ViewCache {
     /// Forgets where the chart was drawn (an action may change its layout).
     pub fn chart_changed(&self) {
         self.chart_drawn.set(None);
+    }
+
+    /// The snapshot's measured series marked in `drawn` (bit i: the i-th of
+    /// `MeasuredPoints::series`), each thinned to one point per cell of `cells`
+    /// ([`Cells::thin`]: the same cells marked), once per snapshot and grid; `None`
+    /// for a series not drawn.
+    pub fn measured_marks(
+        &self,
+        now: &Arc<Resolved>,
+        cells: Cells,
+        drawn: u8,
+    ) -> Rc<[Option<Points>]> {
+        cached(&self.marks, now, (cells, drawn), || {
+            self.marks_thinned.set(self.marks_thinned.get() + 1);
+            let Some(m) = &now.points else {
+                return Rc::from(Vec::new());
+            };
+            m.series()
+                .enumerate()
+                .map(|(i, s)| (drawn & 1 << i != 0).then(|| cells.thin(s).into()))
+                .collect()
+        })
     }
 
     /// The exact states at the chart's sample times for a plot `columns` wide: about

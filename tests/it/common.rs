@@ -4,7 +4,8 @@
 use groovelab::cli::{self, CliError, DataArgs, RenderArgs, SceneArgs};
 use groovelab::lab::Lab;
 use groovelab::physics::scene::{Ball, Scene, Span};
-use groovelab::settings::params::{Key, SceneSpec};
+use groovelab::settings::params::Key;
+use groovelab::settings::spec::SceneSpec;
 use groovelab::study::preset::Preset;
 use groovelab::tui::app::{App, Library, ROWS};
 use groovelab::tui::theme::{Glyphs, Theme};

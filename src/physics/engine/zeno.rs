@@ -2,7 +2,7 @@
 //! (physics.md), summing it to its accumulation point, and ending chatter that has
 //! become vanishingly weak.
 
-use super::Engine;
+use super::{Engine, ImpactRecord};
 use crate::physics::model::{BallState, Phase};
 use crate::physics::solution::{EventKind, Ledger, SeriesSum, Who};
 
@@ -16,25 +16,9 @@ const CHATTER_SPEED: f64 = 1e-9;
 /// the geometric series of physics.md, which is then summed.
 const GEOMETRIC_AGREEMENT: f64 = 1e-9;
 
-/// The series is summed once what remains of it is this short against the time so far…
+/// The series is summed once what remains of it is this short against the time so far,
+/// or after the engine's cycle budget (`CYCLES_BEFORE_SUMMING`) confirmed it.
 const REMAINDER_NEGLIGIBLE: f64 = 1e-9;
-/// …or after this many cycles confirmed it, bridging the rest (see
-/// [`Segment::bridge`](crate::physics::solution::Segment::bridge)). Only cycle ratios
-/// within ~1e-2 of 1 (b within ~1e-3 of 2R) need that many.
-pub(super) const CYCLES_BEFORE_SUMMING: usize = 5000;
-
-/// An impact as the series detector needs it.
-#[derive(Clone, Copy, Debug)]
-pub(super) struct ImpactRecord {
-    /// Time since the previous impact.
-    pub(super) cycle: f64,
-    /// Closing speed just before.
-    pub(super) closing: f64,
-    /// Everything right after, for summing the series.
-    pub(super) state: [BallState; 2],
-    pub(super) angle: [f64; 2],
-    pub(super) ledger: Ledger,
-}
 
 impl Engine {
     pub(super) fn kinetic(&self, state: &[BallState; 2]) -> f64 {

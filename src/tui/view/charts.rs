@@ -10,8 +10,8 @@ use ratatui::style::Style;
 use ratatui::widgets::Widget;
 
 use super::panel::block;
-use crate::lab::MeasuredPoints;
 use crate::lab::jobs::State;
+use crate::lab::{MeasuredPoints, value_range};
 use crate::physics::model::BallState;
 use crate::physics::solution::{EnergySplit, EventKind, Snapshot, Who};
 use crate::settings::units::Dimension;
@@ -61,15 +61,50 @@ fn chart(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
 }
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let (title, plot) = chart(app, area, theme);
+    let (title, mut plot) = chart(app, area, theme);
     let title = super::panel::title_within(&title, area, theme);
     let blk = block(title, theme);
     let inner = blk.inner(area);
     blk.render(area, buf);
+    thin_measured(app, &mut plot, inner, theme);
+    let points = plot.series.iter().map(|s| s.points.len()).sum();
+    app.view_cache.chart_points.set(points);
     plot.render(inner, buf, theme);
     app.view_cache
         .chart_drawn
         .set(Some(ChartDrawn::of(&plot, area, inner, theme)));
+}
+
+/// The snapshot's measured series in `plot` (a file may hold a million rows, drawn
+/// as markers) in their thinned form, one point per cell they mark, made once per
+/// snapshot and grid (the view cache): a frame draws what the cells show, not every
+/// row, and the same cells are marked.
+fn thin_measured(app: &App, plot: &mut Plot, inner: Rect, theme: &Theme) {
+    let (Some(m), Some(cells)) = (app.lab.points.as_ref(), plot.cells(inner, theme)) else {
+        return;
+    };
+    // Markers only: a line through thinned points would be another line.
+    let index = |s: &Series| {
+        (s.draw != Draw::Line)
+            .then(|| m.series().position(|p| Arc::ptr_eq(p, &s.points)))
+            .flatten()
+    };
+    let drawn = plot
+        .series
+        .iter()
+        .filter_map(index)
+        .fold(0u8, |bits, i| bits | 1 << i);
+    if drawn == 0 {
+        return;
+    }
+    let marks = app
+        .view_cache
+        .measured_marks(app.lab.resolved(), cells, drawn);
+    for s in &mut plot.series {
+        if let Some(thinned) = index(s).and_then(|i| marks.get(i).cloned().flatten()) {
+            s.points = thinned;
+        }
+    }
 }
 
 /// The time under screen cell (`column`, `row`) of the chart drawn in `area`, if the
@@ -154,12 +189,21 @@ fn series_of(
     }
 }
 
-fn bounds(series: &[Series], rows: usize) -> ((f64, f64), Vec<f64>) {
+/// The y range and ticks over every series' finite values (the snapshot's measured
+/// series by their range made once per scene, not a pass over their rows).
+fn bounds(
+    series: &[Series],
+    measured: Option<&MeasuredPoints>,
+    rows: usize,
+) -> ((f64, f64), Vec<f64>) {
     let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-    for p in series.iter().flat_map(|s| s.points.iter()) {
-        if p.1.is_finite() {
-            lo = lo.min(p.1);
-            hi = hi.max(p.1);
+    for s in series {
+        let range = measured
+            .and_then(|m| m.range_of(&s.points))
+            .unwrap_or_else(|| value_range(&s.points));
+        if let Some((a, b)) = range {
+            lo = lo.min(a);
+            hi = hi.max(b);
         }
     }
     nice_ticks(lo, hi, (rows / 3).max(2))
@@ -373,7 +417,7 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
         vlines.extend(ends);
     }
     let rows = usize::from(area.height.saturating_sub(4));
-    let ((y0, y1), _) = bounds(&series, rows);
+    let ((y0, y1), _) = bounds(&series, app.lab.points.as_deref(), rows);
     let whos: Vec<Who> = balls.iter().map(|&i| Who::ball(i)).collect();
     vlines.extend(event_lines(app, &whos, theme));
     let plot = Plot {
@@ -458,7 +502,7 @@ fn positions(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
         });
     }
     let rows = usize::from(area.height.saturating_sub(4));
-    let ((y0, y1), _) = bounds(&series, rows);
+    let ((y0, y1), _) = bounds(&series, app.lab.points.as_deref(), rows);
     let plot = Plot {
         x_range: (sol.t_start, sol.t_end),
         y_range: (y0, y1),
