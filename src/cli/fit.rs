@@ -10,7 +10,7 @@ use super::open::{lab, scene_of_data};
 use crate::output::write_atomically;
 use crate::physics::scene::Scene;
 use crate::settings::units::{Dimension, show, significant};
-use crate::study::fit::{self, Candidate, Fits, Free, ModelFit};
+use crate::study::fit::{self, Candidate, Fits, Free, LineFit, ModelFit};
 use crate::study::measured::Found;
 use crate::study::preset::Preset;
 
@@ -195,8 +195,16 @@ fn scene_line(preset: &Preset, args: &SceneArgs, scene: &Scene) -> String {
 /// The line fits and the model fit; the paper's table-1 row beside them only for the
 /// preset's own (the paper's) data, `paper_data`.
 fn table(scene: &Scene, f: &Fits, paper_data: bool) -> String {
-    let l = &f.line_fit;
     let mut out = String::new();
+    line_fit_lines(&mut out, scene, &f.line_fit, paper_data);
+    let _ = writeln!(out);
+    model_fit_lines(&mut out, &f.model_fit);
+    out
+}
+
+/// The line fits over the sliding phase, and the paper's table-1 row with where it
+/// contradicts itself when `paper_data`.
+fn line_fit_lines(out: &mut String, scene: &Scene, l: &LineFit, paper_data: bool) {
     let _ = writeln!(
         out,
         "line fits over the sliding phase, t = {:.3} … {:.3} s ({} frames; change with --from/--to)",
@@ -236,8 +244,12 @@ fn table(scene: &Scene, f: &Fits, paper_data: bool) -> String {
             );
         }
     }
-    let mf = &f.model_fit;
-    let _ = writeln!(out);
+}
+
+/// The model fit of a series: what it was fitted to, the fitted values with their
+/// 95 % ranges (or why a value has none), and the regime predicted against the one
+/// observed.
+fn model_fit_lines(out: &mut String, mf: &ModelFit) {
     match mf.every {
         None => {
             let _ = writeln!(
@@ -301,7 +313,6 @@ fn table(scene: &Scene, f: &Fits, paper_data: bool) -> String {
             "the model does NOT predict what was observed"
         }
     );
-    out
 }
 
 /// The table for a position track: what was found, the line fits, and the velocity and
@@ -309,12 +320,8 @@ fn table(scene: &Scene, f: &Fits, paper_data: bool) -> String {
 fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit, paper_data: bool) -> String {
     let mut out = found.describe();
     out.push('\n');
-    let full = table(scene, f, paper_data);
     // The line fits as for a velocity file; the model fits in two columns below.
-    let lines: Vec<&str> = full.lines().take_while(|l| !l.is_empty()).collect();
-    for l in lines {
-        let _ = writeln!(out, "{l}");
-    }
+    line_fit_lines(&mut out, scene, &f.line_fit, paper_data);
     if found.mark.is_none() {
         let _ = writeln!(
             out,
@@ -336,27 +343,10 @@ fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit, paper_data:
         "{title:<35} {:>24} {:>24}",
         "velocities (derived)", "positions (direct)"
     );
-    // A value the data do not determine gets no number that reads as fitted.
-    let undetermined =
-        |m: &ModelFit, name: &str| m.not_identified.iter().any(|n| n.parameter == name);
-    let pm = |m: &ModelFit| {
-        if undetermined(m, "mu") {
-            "not determined".to_string()
-        } else if m.mu_se.is_finite() {
-            format!("{:.4} ± {:.4}", m.mu, 2.0 * m.mu_se)
-        } else {
-            format!("{:.4} (no ±)", m.mu)
-        }
-    };
-    let opt = |m: &ModelFit, name: &str, v: f64, se: Option<f64>| match se {
-        _ if undetermined(m, name) => "not determined".to_string(),
-        Some(se) => format!("{v:.4} ± {:.4}", 2.0 * se),
-        None => format!("{v:.4} (no ±)"),
-    };
     let row = |out: &mut String, name: &str, a: String, b: String| {
         let _ = writeln!(out, "  {name:<33} {a:>24} {b:>24}");
     };
-    row(&mut out, "μ_k (± 2σ, 95 %)", pm(v), pm(p));
+    row(&mut out, "μ_k (± 2σ, 95 %)", mu_cell(v), mu_cell(p));
     let free = |m: &ModelFit, name: &str, se: Option<f64>| {
         se.is_some() || m.not_identified.iter().any(|n| n.parameter == name)
     };
@@ -364,16 +354,16 @@ fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit, paper_data:
         row(
             &mut out,
             "v0 m/s (± 2σ)",
-            opt(v, "v0", v.v0, v.v0_se),
-            opt(p, "v0", p.v0, p.v0_se),
+            cell(v, "v0", v.v0, v.v0_se),
+            cell(p, "v0", p.v0, p.v0_se),
         );
     }
     if free(v, "restitution", v.restitution_se) || free(p, "restitution", p.restitution_se) {
         row(
             &mut out,
             "e (± 2σ)",
-            opt(v, "restitution", v.restitution, v.restitution_se),
-            opt(p, "restitution", p.restitution, p.restitution_se),
+            cell(v, "restitution", v.restitution, v.restitution_se),
+            cell(p, "restitution", p.restitution, p.restitution_se),
         );
     }
     row(
@@ -388,25 +378,12 @@ fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit, paper_data:
         v.points.to_string(),
         p.points.to_string(),
     );
-    let regime = |m: &ModelFit| {
-        format!(
-            "{} / {}",
-            m.regime_predicted.name(),
-            m.regime_observed.name()
-        )
-    };
     row(
         &mut out,
         "regime predicted / observed",
         regime(v),
         regime(p),
     );
-    let verdict = |m: &ModelFit| match (m.agrees, m.indistinguishable_from_rest) {
-        _ if undetermined(m, "mu") => "μ_k not determined".to_string(),
-        (true, true) => "agree (v' in rest band)".to_string(),
-        (true, false) => "agree".to_string(),
-        (false, _) => "DISAGREE".to_string(),
-    };
     row(&mut out, "verdict", verdict(v), verdict(p));
     let _ = writeln!(out, "  velocity fit: regime {}", v.verdict);
     let _ = writeln!(out, "  position fit: regime {}", p.verdict);
@@ -425,6 +402,48 @@ fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit, paper_data:
         "  (the velocity fit takes the model through the same local fits as the data, profiles out the impact time and counts the frames neighbouring points share; the position fit needs no derivatives and is the more precise: quote it)"
     );
     out
+}
+
+/// A value the data do not determine gets no number that reads as fitted.
+fn undetermined(m: &ModelFit, name: &str) -> bool {
+    m.not_identified.iter().any(|n| n.parameter == name)
+}
+
+/// The fitted μ_k in a column: with its 95 % range when its standard error is a
+/// number, "not determined" when the data do not pin it down.
+fn mu_cell(m: &ModelFit) -> String {
+    let se = Some(m.mu_se).filter(|se| se.is_finite());
+    cell(m, "mu", m.mu, se)
+}
+
+/// A fitted value `v` of the parameter `name` in a column: with its 95 % range when
+/// its standard error `se` is known, "not determined" when the data do not pin it
+/// down.
+fn cell(m: &ModelFit, name: &str, v: f64, se: Option<f64>) -> String {
+    match se {
+        _ if undetermined(m, name) => "not determined".to_string(),
+        Some(se) => format!("{v:.4} ± {:.4}", 2.0 * se),
+        None => format!("{v:.4} (no ±)"),
+    }
+}
+
+/// "recollide / rest": the regime a fit predicts and the one observed.
+fn regime(m: &ModelFit) -> String {
+    format!(
+        "{} / {}",
+        m.regime_predicted.name(),
+        m.regime_observed.name()
+    )
+}
+
+/// Whether a fit's prediction agrees with what was observed, in a column.
+fn verdict(m: &ModelFit) -> String {
+    match (m.agrees, m.indistinguishable_from_rest) {
+        _ if undetermined(m, "mu") => "μ_k not determined".to_string(),
+        (true, true) => "agree (v' in rest band)".to_string(),
+        (true, false) => "agree".to_string(),
+        (false, _) => "DISAGREE".to_string(),
+    }
 }
 
 /// A fitted parameter's symbol and unit for people.
