@@ -26,7 +26,7 @@ impl SceneArgs {
     pub fn resolve(&self) -> Result<(Preset, Scene, Span), CliError> {
         let settings = self.settings()?;
         let (scene, span, _) = settings.settle()?;
-        Ok((settings.preset, scene, span))
+        Ok((settings.preset().clone(), scene, span))
     }
 
     /// True if a preset or any scene option is given (a data file names no scene).

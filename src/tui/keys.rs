@@ -105,7 +105,7 @@ pub const TABLE: &[Binding] = &[
     Binding {
         keys: &["u"],
         action: Action::Undo,
-        help: "undo the last parameter change (again: the one before)",
+        help: "undo the last change (again: the one before)",
         hint: None,
     },
     Binding {

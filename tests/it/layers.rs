@@ -686,3 +686,62 @@ fn simulate_prints_the_apps_snapshot_of_the_same_options() {
         );
     }
 }
+
+#[test]
+fn u_after_picking_a_preset_brings_back_the_preset_its_edits_and_data() {
+    // The command line's b and two edits on paper-b4.9 with its own data.
+    let flags = SceneSpec::default().with(Key::Width, 0.046);
+    let mut a = rendered(&scene(flags), &data(&[]), None, None, library());
+    let fresh = a.lab.scene;
+    press(&mut a, "left");
+    press(&mut a, "down down down enter 0 . 3 enter");
+    let edited = (a.lab.scene, a.lab.span_end);
+    let b49_data = a.lab.measured().unwrap().t.clone();
+    // The picker opens on paper-b4.9; the one above it is paper-b4.4.
+    press(&mut a, "p up enter");
+    let b44 = Preset::load("paper-b4.4").unwrap();
+    assert_eq!(a.lab.preset().name, "paper-b4.4");
+    assert_eq!(a.lab.value(Key::Width), 0.044, "the preset alone: no flag");
+    assert_eq!(
+        a.lab.measured().unwrap().t,
+        b44.measured.as_ref().unwrap().t
+    );
+    // An edit on the picked preset, and a reset to it, are undone first.
+    press(&mut a, "right R");
+    assert_eq!(
+        a.status,
+        Status::Info("reset to preset paper-b4.4 (u undoes it)".into()),
+        "the command line's values are not in force after a pick"
+    );
+    press(&mut a, "u u");
+    assert_eq!(a.lab.preset().name, "paper-b4.4");
+    assert_eq!(a.lab.value(Key::Width), 0.044);
+    // Then the pick: the preset before, its edits and its data.
+    press(&mut a, "u");
+    assert!(
+        matches!(&a.status, Status::Info(s) if s.starts_with("undone: preset paper-b4.4: back to paper-b4.9")),
+        "{:?}",
+        a.status
+    );
+    assert_eq!(a.lab.preset().name, "paper-b4.9");
+    assert_eq!((a.lab.scene, a.lab.span_end), edited);
+    assert_eq!(a.lab.measured().unwrap().t, b49_data);
+    // The older steps survive: μ_k, then b, then nothing.
+    press(&mut a, "u u");
+    assert_eq!(a.lab.scene, fresh);
+    assert_eq!(a.lab.value(Key::Width), 0.046, "the command line's b again");
+    press(&mut a, "u");
+    assert_eq!(a.status, Status::Info("nothing to undo".into()));
+}
+
+#[test]
+fn u_after_picking_a_preset_keeps_the_students_data() {
+    let d = data(&[PathBuf::from(TRACK)]);
+    let mut a = rendered(&scene(SceneSpec::default()), &d, None, None, library());
+    let before = a.lab.scene;
+    press(&mut a, "p up enter u");
+    assert_eq!(a.lab.preset().name, "paper-b4.9");
+    assert_eq!(a.lab.scene, before);
+    assert!(a.lab.measured().unwrap().x.is_some(), "still the track");
+    assert_eq!(a.lab.own_data().unwrap().name, TRACK);
+}
