@@ -151,15 +151,16 @@ pub fn render_with(
     library: Library,
 ) -> Result<String, CliError> {
     let mut app = opened(scene_args, data, library)?;
+    // A screen dump writes no files: `w`, `W` and `s` say what they would write.
+    app.writes_files = false;
     let keys = match &args.keys {
         Some(script) => {
             tui::keys::parse_script(script).map_err(|source| BadValue::Keys { source })?
         }
         None => Vec::new(),
     };
-    tui::replay(&mut app, &keys);
-    // Headless output waits for every analysis the keys asked for: same input, same bytes.
-    app.wait();
+    // Headless output waits for every analysis a key may act on: same input, same bytes.
+    tui::replay_settled(&mut app, &keys);
     if let Some(at) = args.at {
         let (lo, hi) = (app.lab.solution.t_start, app.lab.solution.t_end);
         if !(lo..=hi).contains(&at) {

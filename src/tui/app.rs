@@ -69,7 +69,13 @@ pub struct App {
     pub view_cache: ViewCache,
     /// What was typed into each kind of prompt this session (↑/↓ bring it back).
     histories: Histories,
+    /// False in `render`, the headless twin: a screen dump writes no files, so the
+    /// export and save keys say what they would write and write nothing.
+    pub writes_files: bool,
 }
+
+/// What the export and save keys say where files are not written.
+pub const NO_FILES: &str = "render writes no files";
 
 impl App {
     pub fn new(lab: Lab, library: Library) -> App {
@@ -98,6 +104,7 @@ impl App {
             prediction: None,
             view_cache: ViewCache::default(),
             histories: Histories::default(),
+            writes_files: true,
         }
     }
 

@@ -2,10 +2,10 @@
 //! (typing a value, a save name, an export file name), and what confirming them does
 //! (set the value, save the preset, write the export).
 
-use crate::input::preset::{SaveError, save};
+use crate::input::preset::{PresetFile, SaveError};
 use crate::settings::units::parse_typed;
 
-use super::{Action, App, Field, Library, Mode, ROWS, Status, TextTarget};
+use super::{Action, App, Field, Library, Mode, NO_FILES, ROWS, Status, TextTarget};
 use crate::tui::line::History;
 
 impl App {
@@ -95,7 +95,19 @@ impl App {
 
     /// Saves the scene as a user preset, asking before it replaces a file.
     pub(super) fn save(&mut self, name: &str, overwrite: bool) {
-        match save(&self.lab, self.library.dir.as_deref(), name, overwrite) {
+        let file = PresetFile::new(&self.lab, self.library.dir.as_deref(), name, overwrite);
+        let file = match file {
+            Ok(file) if !self.writes_files => {
+                self.status = Status::Info(format!(
+                    "{NO_FILES}: would save preset {} as {}",
+                    name.trim(),
+                    file.path.display()
+                ));
+                return;
+            }
+            other => other.and_then(PresetFile::write),
+        };
+        match file {
             Ok(path) => {
                 self.library = Library::at(self.library.dir.clone());
                 self.status = Status::Info(format!("saved {}", path.display()));
