@@ -242,8 +242,7 @@ fn table(scene: &Scene, f: &Fits, paper_data: bool) -> String {
 }
 
 /// The line fits over their window (the sliding phase unless --from/--to set it), and
-/// the paper's table-1 row with where it
-/// contradicts itself when `paper_data`.
+/// the paper's table-1 row with where it contradicts itself when `paper_data`.
 fn line_fit_lines(out: &mut String, scene: &Scene, l: &LineFit, paper_data: bool) {
     // The window said as it was chosen: the sliding phase, or what --from/--to set.
     let (over, hint) = match l.given {
