@@ -566,7 +566,9 @@ mod tests {
         // A bare number is read with the display unit glued on; the error must not
         // show "nancm".
         for typed in ["nan", "1e999", " inf "] {
-            let e = parse_typed(typed, Dimension::Length).unwrap_err().to_string();
+            let e = parse_typed(typed, Dimension::Length)
+                .unwrap_err()
+                .to_string();
             assert!(e.starts_with(&format!("'{}'", typed.trim())), "{e}");
             assert!(!e.contains("cm'"), "{e}");
         }
