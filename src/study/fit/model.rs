@@ -33,11 +33,13 @@ pub const MAX_MODEL_POINTS: usize = 20_000;
 pub struct ModelFit {
     pub mu: f64,
     pub mu_se: f64,
-    /// Fitted v0 and e (the scene's when not free) and their standard errors.
+    /// Fitted v0, e and c_rr (the scene's when not free) and their standard errors.
     pub v0: f64,
     pub v0_se: Option<f64>,
     pub restitution: f64,
     pub restitution_se: Option<f64>,
+    pub rolling_resistance: f64,
+    pub rolling_resistance_se: Option<f64>,
     /// Root-mean-square residual over all v_cm and v_t points used, m/s.
     pub rms: f64,
     pub points: usize,
@@ -252,6 +254,41 @@ pub(super) struct Scored {
     pub idx: Vec<usize>,
 }
 
+/// The free values that fit `m` best, from the scene's, and the frames they were
+/// fitted on.
+fn best_values(
+    scene: &Scene,
+    m: &Measured,
+    free: &[Free],
+    target: Target,
+    evals: &Evals,
+) -> Result<(Vec<f64>, Vec<usize>), FitError> {
+    let mut p: Vec<f64> = free
+        .iter()
+        .map(|f| match f {
+            Free::Mu => scene.mu.max(0.01),
+            other => other.value_in(scene),
+        })
+        .collect();
+    // μ first, by a global scan and golden-section search: the cost is not smooth
+    // where impacts move past data points, and local steps get caught there.
+    if let Some(i) = free.iter().position(|f| *f == Free::Mu) {
+        p[i] = scan_mu(scene, m, free, &p, i, target, evals)?;
+    }
+    // Then every free value together from there, on the frames away from the model's
+    // impacts (chosen again once the fit has moved them).
+    let mut idx = fit_points(m, &with(scene, free, &p), target);
+    for _ in 0..3 {
+        p = least_squares(scene, m, free, &idx, p, target, evals)?;
+        let next = fit_points(m, &with(scene, free, &p), target);
+        if next == idx {
+            break;
+        }
+        idx = next;
+    }
+    Ok((p, idx))
+}
+
 pub(super) fn scored_fit(
     scene: &Scene,
     m: &Measured,
@@ -268,32 +305,7 @@ pub(super) fn scored_fit(
         progress,
         done: std::cell::Cell::new(0),
     };
-    let start: Vec<f64> = free
-        .iter()
-        .map(|f| match f {
-            Free::Mu => scene.mu.max(0.01),
-            Free::V0 => scene.left.v0,
-            Free::Restitution => scene.restitution,
-            Free::RollingResistance => scene.rolling_resistance,
-        })
-        .collect();
-    // μ first, by a global scan and golden-section search: the cost is not smooth
-    // where impacts move past data points, and local steps get caught there.
-    let mut p = start;
-    if let Some(i) = free.iter().position(|f| *f == Free::Mu) {
-        p[i] = scan_mu(scene, m, free, &p, i, target, &evals)?;
-    }
-    // Then every free value together from there, on the frames away from the model's
-    // impacts (chosen again once the fit has moved them).
-    let mut idx = fit_points(m, &with(scene, free, &p), target);
-    for _ in 0..3 {
-        p = least_squares(scene, m, free, &idx, p, target, &evals)?;
-        let next = fit_points(m, &with(scene, free, &p), target);
-        if next == idx {
-            break;
-        }
-        idx = next;
-    }
+    let (p, idx) = best_values(scene, m, free, target, &evals)?;
     let fitted = with(scene, free, &p);
     let (r, labels) = labelled_residuals(&fitted, m, &idx, target, true);
     let n = p.len();
@@ -311,15 +323,7 @@ pub(super) fn scored_fit(
         fit,
         cost,
         estimated: n + nuisance(m, target),
-        values: free
-            .iter()
-            .map(|f| match f {
-                Free::Mu => fitted.mu,
-                Free::V0 => fitted.left.v0,
-                Free::Restitution => fitted.restitution,
-                Free::RollingResistance => fitted.rolling_resistance,
-            })
-            .collect(),
+        values: free.iter().map(|f| f.value_in(&fitted)).collect(),
         ses: ses.clone(),
         scene: fitted,
         idx: idx.clone(),
@@ -343,6 +347,8 @@ pub(super) fn scored_fit(
         v0_se: se(Free::V0),
         restitution: fitted.restitution,
         restitution_se: se(Free::Restitution),
+        rolling_resistance: fitted.rolling_resistance,
+        rolling_resistance_se: se(Free::RollingResistance),
         rms: {
             // In the data's own units, whatever the weights.
             let raw = residuals_of(&fitted, m, &idx, target, false);
