@@ -150,7 +150,7 @@ impl Engine {
         &mut self,
         remaining: f64,
         mut state: [BallState; 2],
-        angle: [f64; 2],
+        mut angle: [f64; 2],
         estimate: Ledger,
         averaged: bool,
     ) {
@@ -182,6 +182,7 @@ impl Engine {
             // the summed limit places, ending at the limit velocity. A negligible one
             // just goes on linearly from the last impact.
             let now = self.state;
+            let mut speeds = [now[0].v, now[1].v];
             for i in 0..2 {
                 let start = if averaged {
                     // A cycle's mean velocity lies between the speeds the ball swings
@@ -193,11 +194,25 @@ impl Engine {
                     state[i].x = now[i].x + 0.5 * (now[i].v + state[i].v) * remaining;
                     now[i].v
                 };
-                self.state[i].v = start;
+                speeds[i] = start;
+            }
+            let spins = if averaged {
+                self.bridge_spins(&now, speeds, &state)
+            } else {
+                [now[0].u, now[1].u]
+            };
+            let r = self.groove.k * self.radius;
+            for i in 0..2 {
+                self.state[i].v = speeds[i];
+                self.state[i].u = spins[i];
                 self.accel[i] = (
-                    (state[i].v - start) / remaining,
-                    (state[i].u - now[i].u) / remaining,
+                    (state[i].v - speeds[i]) / remaining,
+                    (state[i].u - spins[i]) / remaining,
                 );
+                if spins[i] != now[i].u {
+                    // The spin angle goes on from the bridge, not from the summed limit.
+                    angle[i] = self.angle[i] + 0.5 * (spins[i] + state[i].u) * remaining / r;
+                }
             }
         }
         let lost = energy_now - self.kinetic(&state);
@@ -228,6 +243,46 @@ impl Engine {
         // Whether the pair now presses is recorded by the caller, after this event.
         self.settle();
         self.record(&[(kind, Who::Both)]);
+    }
+
+    /// The spins an averaged bridge starts with beside its mean speeds `speeds`: the
+    /// impact's, unless the pair would then hold more kinetic energy than it has at the
+    /// impact. A cycle trades spin for speed, so its mean speeds belong with spins
+    /// already part way to their limits: the spins then start as far toward their
+    /// limits (the same fraction for both) as it takes for the bridge to gain nothing.
+    fn bridge_spins(
+        &self,
+        now: &[BallState; 2],
+        speeds: [f64; 2],
+        limit: &[BallState; 2],
+    ) -> [f64; 2] {
+        let spins = |f: f64| -> [f64; 2] {
+            std::array::from_fn(|i| now[i].u + f * (limit[i].u - now[i].u))
+        };
+        let kinetic = |f: f64| {
+            let s = spins(f);
+            self.kinetic(&std::array::from_fn(|i| BallState {
+                x: now[i].x,
+                v: speeds[i],
+                u: s[i],
+            }))
+        };
+        let budget = self.kinetic(now);
+        if kinetic(0.0) <= budget {
+            return spins(0.0);
+        }
+        // Bisection on the fraction, keeping a fraction that fits (if even the limits
+        // do not pay for the mean speeds, the spins start there).
+        let (mut gains, mut fits) = (0.0, 1.0);
+        for _ in 0..64 {
+            let mid = 0.5 * (gains + fits);
+            if kinetic(mid) <= budget {
+                fits = mid;
+            } else {
+                gains = mid;
+            }
+        }
+        spins(fits)
     }
 }
 
