@@ -337,6 +337,7 @@ impl Engine {
     fn collide(&mut self) {
         let [l, r] = self.state;
         let closing = l.v - r.v;
+        let arrival = [(l.v, self.phase[0]), (r.v, self.phase[1])];
         let e = self.restitution;
         let (vl, vr) = model::impact(self.mass[0], self.mass[1], l.v, r.v, e);
         self.ledger.impacts += model::impact_loss(self.mass[0], self.mass[1], l.v, r.v, e);
@@ -354,6 +355,7 @@ impl Engine {
         self.history.push(ImpactRecord {
             cycle: self.since_impact,
             closing,
+            arrival,
             state: self.state,
             angle: self.angle,
             ledger: self.ledger,

@@ -30,6 +30,8 @@ pub(super) struct ImpactRecord {
     pub(super) cycle: f64,
     /// Closing speed just before.
     pub(super) closing: f64,
+    /// Each ball's velocity and phase as it arrived.
+    pub(super) arrival: [(f64, Phase); 2],
     /// Everything right after, for summing the series.
     pub(super) state: [BallState; 2],
     pub(super) angle: [f64; 2],
@@ -135,11 +137,27 @@ impl Engine {
         // changes the speeds over a long tail). The impacts are then resolved on.
         let kinetic_now = self.kinetic(&self.state);
         let scale = kinetic_now + self.ledger.total();
-        if self.kinetic(&state) > kinetic_now + 1e-9 * scale {
+        if self.kinetic(&state) > kinetic_now + 1e-9 * scale || self.stops_on_the_way(&h0, speed) {
             return false;
         }
         self.finish_series(remaining, state, angle, ledger, by_budget);
         true
+    }
+
+    /// Whether rolling resistance would stop a ball inside the tail: the limit `speed`
+    /// lies beyond zero from the velocity a ball arrived at the last impact with,
+    /// rolling. Rolling resistance acts against a rolling ball's velocity and holds it
+    /// once it is at rest, so its cycles cannot carry it through zero: they only
+    /// looked geometric while it slowed down.
+    fn stops_on_the_way(&self, last: &ImpactRecord, speed: [f64; 2]) -> bool {
+        let tiny = self.eps_v * 1e3;
+        self.groove.rolling_resistance > 0.0
+            && (0..2).any(|i| {
+                let (v, phase) = last.arrival[i];
+                !matches!(phase, Phase::Sliding { .. })
+                    && v * speed[i] < 0.0
+                    && speed[i].abs() > tiny
+            })
     }
 
     /// Ends a series of impacts at `remaining` seconds from now in the limit `state`:
