@@ -1,16 +1,17 @@
 //! The command line's raw flags (clap): commands, their options, and the scene
-//! options made from the parameter table. Checked values come out of `SceneArgs`.
+//! options made from the parameter table. Checked values come out of `SceneArgs`
+//! (its methods are in `open`).
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 
-use super::CliError;
-use crate::lab::Settings;
 use crate::methods::Method;
-use crate::physics::scene::{Scene, Span};
-use crate::settings::params::{PARAMS, SceneSpec};
+use crate::settings::params::PARAMS;
+use crate::settings::spec::SceneSpec;
 use crate::settings::units::{Dimension, UnitError, parse_quantity};
 use crate::study::fit::Free;
-use crate::study::preset::{self, Preset};
+
+/// Most samples `--sample` may ask for.
+pub const MAX_SAMPLES: usize = 1_000_000;
 
 #[derive(Parser, Debug)]
 #[command(
@@ -339,27 +340,6 @@ impl Args for SceneArgs {
 
     fn augment_args_for_update(cmd: clap::Command) -> clap::Command {
         Self::augment_args(cmd)
-    }
-}
-
-impl SceneArgs {
-    /// The settings layers these options give: the preset, then the values given.
-    pub fn settings(&self) -> Result<Settings, CliError> {
-        let preset = Preset::load(self.preset.as_deref().unwrap_or(preset::DEFAULT))?;
-        Ok(Settings::new(preset, self.values.clone()))
-    }
-
-    /// The preset these options start from, and the scene they make (by the lab's
-    /// span rule: a preset's `t_end` holds unless a scene option is given).
-    pub fn resolve(&self) -> Result<(Preset, Scene, Span), CliError> {
-        let settings = self.settings()?;
-        let (scene, span, _) = settings.settle()?;
-        Ok((settings.preset, scene, span))
-    }
-
-    /// True if a preset or any scene option is given (a data file names no scene).
-    pub fn names_a_scene(&self) -> bool {
-        self.preset.is_some() || self.values.given().next().is_some()
     }
 }
 

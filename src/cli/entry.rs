@@ -6,7 +6,9 @@ use std::ffi::OsString;
 
 use clap::Parser;
 
-use super::{Cli, CliError, Outcome};
+use super::Outcome;
+use super::args::Cli;
+use super::error::CliError;
 use crate::tui::app::App;
 
 /// How a non-interactive run ends: the exit status and everything it prints.

@@ -5,7 +5,7 @@
 use std::fmt;
 use std::path::PathBuf;
 
-use super::{Cli, MAX_SAMPLES, SweepFormat};
+use super::args::{Cli, MAX_SAMPLES, SweepFormat};
 use crate::methods::Method;
 use crate::settings::units::{Dimension, UnitError, show, show_exact};
 
@@ -66,7 +66,7 @@ fn count_text(dt: f64, count: f64) -> String {
 #[derive(Debug, thiserror::Error)]
 pub enum CliError {
     #[error(transparent)]
-    Scene(#[from] crate::settings::params::SceneError),
+    Scene(#[from] crate::settings::spec::SceneError),
     #[error(transparent)]
     Preset(#[from] crate::study::preset::PresetError),
     #[error(transparent)]

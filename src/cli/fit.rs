@@ -4,106 +4,18 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
-use super::{
-    BadValue, CliError, DataArgs, FitArgs, FitFormat, Flag, SceneArgs, TrackRole,
-    output::write_atomically,
-};
-use crate::input::data::Reading;
+use super::args::{DataArgs, FitArgs, FitFormat, SceneArgs};
+use super::error::{BadValue, CliError};
+use super::open::{lab, scene_of_data};
+use crate::output::write_atomically;
 use crate::physics::scene::Scene;
-use crate::settings::units::{Dimension, show, significant, unit_factor};
+use crate::settings::units::{Dimension, show, significant};
 use crate::study::fit::{self, Candidate, Fits, Free, ModelFit};
-use crate::study::measured::{Derive, Found, Series};
+use crate::study::measured::Found;
 use crate::study::preset::Preset;
 
 /// The `--data` file read, its velocities derived as far as no scene enters; `None`
 /// without `--data`.
-/// The scene options with the data file's own scene under them: a file that names
-/// the scene it was taken in (`# scene NAME = VALUE` lines, as the app's CSV export
-/// writes them) needs no `--preset`; an option given on the command line wins.
-pub fn with_file_scene(scene: &SceneArgs, data: &DataArgs) -> Result<SceneArgs, CliError> {
-    let Some(path) = data.data.first() else {
-        return Ok(scene.clone());
-    };
-    let text = crate::input::read_user_file(path, "--data", crate::input::MAX_FILE_BYTES)?;
-    let own = crate::input::data::scene_of(&text, &path.display().to_string())?;
-    Ok(SceneArgs {
-        values: own.over(&scene.values),
-        ..scene.clone()
-    })
-}
-
-pub fn load_series(args: &DataArgs) -> Result<Option<Series>, CliError> {
-    let texts = match args.data.as_slice() {
-        [] => return Ok(None),
-        [_] | [_, _] => args
-            .data
-            .iter()
-            .map(|path| {
-                let what = Flag("data").to_string();
-                crate::input::read_user_file(path, &what, crate::input::MAX_FILE_BYTES)
-                    .map(|text| (path.display().to_string(), text))
-                    .map_err(CliError::from)
-            })
-            .collect::<Result<Vec<_>, _>>()?,
-        more => {
-            return Err(BadValue::DataTooOften { count: more.len() }.into());
-        }
-    };
-    let unit = |text: &Option<String>, dim: Dimension, id: &'static str| {
-        text.as_ref()
-            .map(|u| {
-                unit_factor(u, dim).map_err(|source| BadValue::Unit {
-                    flag: Flag(id),
-                    text: u.clone(),
-                    source,
-                })
-            })
-            .transpose()
-    };
-    let named = |role: TrackRole| {
-        args.track
-            .iter()
-            .rev()
-            .find(|(r, _)| *r == role)
-            .map(|(_, n)| n.clone())
-    };
-    let reading = Reading {
-        time_unit: unit(&args.time_unit, Dimension::Time, "time_unit")?,
-        speed_unit: unit(&args.speed_unit, Dimension::Speed, "speed_unit")?,
-        length_unit: unit(&args.length_unit, Dimension::Length, "length_unit")?,
-        impact_at: args.impact_at,
-        centre: named(TrackRole::Centre),
-        mark: named(TrackRole::Mark),
-    };
-    if let Some(w) = args.window
-        && !(w > 0.0 && w <= 1.0)
-    {
-        return Err(BadValue::OutOfRange {
-            flag: Flag("window"),
-            value: w,
-            dim: Dimension::Time,
-            allowed: "a half-width 0 s < T ≤ 1 s",
-        }
-        .into());
-    }
-    let derive = Derive {
-        half_window: args.window,
-        ..Derive::default()
-    };
-    let series = match texts.as_slice() {
-        [(file, text)] => crate::input::data::load(text, file, &reading, &derive),
-        [centre, mark] => crate::input::data::load_pair(centre, mark, &reading, &derive),
-        _ => unreachable!("one or two files"),
-    }?;
-    let file = texts[0].0.clone();
-    let m = match &series {
-        Series::Velocities(m) | Series::Track(m, _) => m,
-    };
-    m.check_magnitudes()
-        .map_err(|source| CliError::Implausible { file, source })?;
-    Ok(Some(series))
-}
-
 #[derive(Serialize)]
 struct FitJson<'a> {
     scene: &'a Scene,
@@ -162,17 +74,17 @@ fn not_measured(fits: &Fits) -> Vec<NotMeasured> {
 pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<String, CliError> {
     // A data file names no scene: fitting it in the default preset's groove would be
     // a silent guess (and compare with the wrong row of the paper).
-    if let Some(path) = super::scene_of_data(scene_args, data) {
+    if let Some(path) = scene_of_data(scene_args, data) {
         return Err(BadValue::DataWithoutScene {
             path: path.to_path_buf(),
         }
         .into());
     }
     // The app's snapshot: the scene by the same layers, the data derived for it.
-    let lab = super::lab(scene_args, data)?;
+    let lab = lab(scene_args, data)?;
     let (preset, scene) = (lab.preset(), lab.scene);
     if let Some(path) = &args.output {
-        super::output::check_output(path)?;
+        crate::output::check_output(path)?;
     }
     let m = lab.measured().ok_or_else(|| BadValue::NoMeasuredData {
         preset: preset.name.clone(),

@@ -3,7 +3,7 @@
 
 use clap::CommandFactory;
 
-use super::Cli;
+use super::args::Cli;
 
 /// The completion script for `shell`, to be sourced by it.
 pub fn completions(shell: clap_complete::Shell) -> String {

@@ -4,13 +4,11 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
-use super::{
-    BadValue, CliError, CompareArgs, CompareFormat, Flag, Format, MAX_SAMPLES, SceneArgs,
-    SimulateArgs,
-};
+use super::args::{CompareArgs, CompareFormat, Format, MAX_SAMPLES, SceneArgs, SimulateArgs};
+use super::error::{BadValue, CliError, Flag};
+use super::states::{csv_output, samples, state_header, state_row};
 use crate::methods::{self, Method, Settings, Y};
 use crate::physics::derived::Derived;
-use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{Event, Snapshot, Solution};
 use crate::settings::units::{Dimension, show};
@@ -124,17 +122,17 @@ struct MethodRunJson<'a> {
     final_state: Snapshot,
 }
 
-/// `simulate --method NAME`: one time-stepping run; its events are those it detects.
+/// `simulate --method NAME`: one time-stepping run over the span of the exact run
+/// `exact` (the lab's snapshot's); its events are those it detects.
 pub(super) fn simulate_method(
-    scene: &Scene,
-    span: &Span,
+    exact: &Solution,
     args: &SimulateArgs,
     settings: &Settings,
 ) -> Result<String, CliError> {
-    let exact = engine::solve(scene, span);
+    let scene = &exact.scene;
     let (t0, t1) = (exact.t_start, exact.t_end);
     let grid = match args.sample {
-        Some(dt) => super::samples(&exact, dt)?.iter().map(|s| s.t).collect(),
+        Some(dt) => samples(exact, dt)?.iter().map(|s| s.t).collect(),
         None => Vec::new(),
     };
     let model = methods::Model::of(scene);
@@ -194,9 +192,9 @@ pub(super) fn simulate_method(
         Format::Csv => {
             let detected = Solution {
                 events: rec.events.clone(),
-                ..exact
+                ..exact.clone()
             };
-            super::csv_output(&detected, samples)?
+            csv_output(&detected, samples)?
         }
         Format::Table => {
             let mut out = String::new();
@@ -211,7 +209,7 @@ pub(super) fn simulate_method(
                 outcome.rhs_evals,
                 stalled.map_or(String::new(), |s| format!(", stalled: {s}"))
             );
-            let _ = writeln!(out, "{}", super::state_header());
+            let _ = writeln!(out, "{}", state_header());
             let mut rows: Vec<_> = rec
                 .events
                 .iter()
@@ -231,7 +229,7 @@ pub(super) fn simulate_method(
                 .collect();
             rows.sort_by(|a, b| a.0.total_cmp(&b.0));
             for (t, kind, ball, l, r) in rows {
-                let _ = writeln!(out, "{}", super::state_row(t, kind, ball, l, r));
+                let _ = writeln!(out, "{}", state_row(t, kind, ball, l, r));
             }
             out
         }
@@ -249,7 +247,7 @@ pub(super) fn compare(scene_args: &SceneArgs, args: &CompareArgs) -> Result<Stri
     let (_, scene, span) = scene_args.resolve()?;
     let base = settings(None, None, args.epsilon)?;
     if let Some(path) = &args.output {
-        super::output::check_output(path)?;
+        crate::output::check_output(path)?;
     }
     let methods: Vec<Method> = match &args.methods {
         Some(m) if !m.is_empty() => {
@@ -296,7 +294,7 @@ pub(super) fn compare(scene_args: &SceneArgs, args: &CompareArgs) -> Result<Stri
         Some(path) => {
             // From here a stop signal removes the temporary file and writes nothing.
             crate::signals::watch();
-            super::output::write_atomically(path, text.as_bytes())?;
+            crate::output::write_atomically(path, text.as_bytes())?;
             Ok(format!("wrote {}\n", path.display()))
         }
     }

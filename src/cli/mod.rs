@@ -3,21 +3,19 @@
 //! failure never leaves partial output).
 
 use std::fmt::Write as _;
-use std::path::Path;
 
 use serde::Serialize;
 
-use crate::lab::{Lab, OwnData};
+use crate::lab::{Lab, Resolved};
 use crate::methods::Method;
 use crate::physics::derived::{Derived, Summary};
-use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{Snapshot, Solution};
 use crate::physics::story::{self, After};
 use crate::study::preset::{self, Preset};
 use crate::tui::{
     self,
-    app::{App, Library, Status},
+    app::{App, Library},
 };
 
 mod args;
@@ -26,16 +24,17 @@ mod error;
 mod fit;
 mod manual;
 mod methods;
+mod open;
 mod progress;
+mod states;
 mod sweep;
 pub use crate::output::{self, write_atomically};
 use crate::settings::units::{Dimension, show, significant};
 pub use args::*;
 pub use error::{BadValue, CliError, Flag, Usage};
+pub use open::{app, lab, opened, scene_of_data};
+use states::{csv_output, samples, state_rows};
 pub use sweep::run_with_stop as sweep_with_stop;
-
-/// Most samples `--sample` may ask for.
-pub const MAX_SAMPLES: usize = 1_000_000;
 
 /// What a command line asks for once it is valid.
 pub enum Outcome {
@@ -49,7 +48,7 @@ pub enum Outcome {
 pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
     used_options(cli)?;
     // A data file that names its scene gives it, under the options.
-    let scene = &fit::with_file_scene(&cli.scene, &cli.data)?;
+    let scene = &open::with_file_scene(&cli.scene, &cli.data)?;
     match &cli.command {
         None | Some(Command::Tui) => Ok(Outcome::Interactive(Box::new(app(scene, &cli.data)?))),
         Some(Command::Simulate(args)) => {
@@ -133,58 +132,6 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
     Err(error.into())
 }
 
-/// The lab on the scene the options describe, with `--data` replacing the preset's
-/// measured series (the lab derives a position track's v_t with the r of each scene
-/// it shows).
-pub fn lab(scene_args: &SceneArgs, data: &DataArgs) -> Result<Lab, CliError> {
-    let settings = scene_args.settings()?;
-    let own = fit::load_series(data)?.map(|series| OwnData {
-        name: data
-            .data
-            .iter()
-            .map(|p| p.display().to_string())
-            .collect::<Vec<_>>()
-            .join(" + "),
-        series,
-    });
-    Ok(Lab::new(settings, own)?)
-}
-
-/// The app on that lab, with the user's presets.
-pub fn app(scene_args: &SceneArgs, data: &DataArgs) -> Result<App, CliError> {
-    opened(scene_args, data, Library::user())
-}
-
-/// The app as it opens on the options: the lab, and the status line asking for the
-/// data's scene when none was named ([`scene_of_data`]).
-pub fn opened(scene_args: &SceneArgs, data: &DataArgs, library: Library) -> Result<App, CliError> {
-    let mut app = App::new(lab(scene_args, data)?, library);
-    if let Some(path) = scene_of_data(scene_args, data) {
-        // The file's name without its folder: the status line is one row.
-        let file = path
-            .file_name()
-            .unwrap_or(path.as_os_str())
-            .to_string_lossy();
-        let s = &app.lab.scene;
-        app.status = Status::Error(format!(
-            "{file} names no scene: the model uses {}'s R = {}, b = {}; set R and b to yours",
-            app.lab.preset().name,
-            show(s.radius, Dimension::Length),
-            show(s.width, Dimension::Length),
-        ));
-    }
-    Ok(app)
-}
-
-/// The one rule for data and their scene, for the app, `render` and `fit`: a data file
-/// names no scene, so the one it was measured in is given by a preset or the scene
-/// options. Without them, the file whose scene is missing: `fit` refuses, the app and
-/// `render` say which default the model uses and ask for R and b.
-pub fn scene_of_data<'a>(scene_args: &SceneArgs, data: &'a DataArgs) -> Option<&'a Path> {
-    let path = data.data.first()?;
-    (!scene_args.names_a_scene()).then_some(path.as_path())
-}
-
 /// `render`: the app's screen after `--keys`, at `--at`, as text.
 pub fn render(
     scene_args: &SceneArgs,
@@ -204,15 +151,16 @@ pub fn render_with(
     library: Library,
 ) -> Result<String, CliError> {
     let mut app = opened(scene_args, data, library)?;
+    // A screen dump writes no files: `w`, `W` and `s` say what they would write.
+    app.writes_files = false;
     let keys = match &args.keys {
         Some(script) => {
             tui::keys::parse_script(script).map_err(|source| BadValue::Keys { source })?
         }
         None => Vec::new(),
     };
-    tui::replay(&mut app, &keys);
-    // Headless output waits for every analysis the keys asked for: same input, same bytes.
-    app.wait();
+    // Headless output waits for every analysis a key may act on: same input, same bytes.
+    tui::replay_settled(&mut app, &keys);
     if let Some(at) = args.at {
         let (lo, hi) = (app.lab.solution.t_start, app.lab.solution.t_end);
         if !(lo..=hi).contains(&at) {
@@ -267,39 +215,25 @@ fn method_options(args: &SimulateArgs) -> Result<(), CliError> {
     }
 }
 
+/// `simulate`: the run of the lab's snapshot of the scene the options give (the same
+/// scene, span and story the app shows for them), or a time-stepping method's run over
+/// the snapshot's span.
 pub fn simulate(scene_args: &SceneArgs, args: &SimulateArgs) -> Result<String, CliError> {
-    let (preset, scene, span) = scene_args.resolve()?;
+    let lab = Lab::new(scene_args.settings()?, None)?;
     method_options(args)?;
     if args.method != Method::Exact {
         let settings = methods::settings(args.dt, args.tol, args.epsilon)?;
-        return methods::simulate_method(&scene, &span, args, &settings);
+        return methods::simulate_method(&lab.solution, args, &settings);
     }
-    let solution = engine::solve(&scene, &span);
     let samples = match args.sample {
         None => None,
-        Some(dt) => Some(samples(&solution, dt)?),
+        Some(dt) => Some(samples(&lab.solution, dt)?),
     };
-    let derived = Derived::of(&scene);
     Ok(match args.format {
-        Format::Json => json(&solution, &derived, samples.as_deref()),
-        Format::Csv => csv_output(&solution, samples.as_deref())?,
-        Format::Table => table(&preset, &solution, &derived, samples.as_deref()),
+        Format::Json => json(&lab.solution, &lab.derived, samples.as_deref()),
+        Format::Csv => csv_output(&lab.solution, samples.as_deref())?,
+        Format::Table => table(lab.preset(), lab.resolved(), samples.as_deref()),
     })
-}
-
-fn samples(solution: &Solution, dt: f64) -> Result<Vec<Snapshot>, CliError> {
-    // As many as `Solution::sample` gives: the grid points from t_start to t_end.
-    let count = ((solution.t_end - solution.t_start) / dt + 1e-9).floor() + 1.0;
-    if dt <= 0.0 || count > MAX_SAMPLES as f64 {
-        return Err(BadValue::TooManySamples {
-            dt,
-            count,
-            start: solution.t_start,
-            end: solution.t_end,
-        }
-        .into());
-    }
-    Ok(solution.sample(dt))
 }
 
 #[derive(Serialize)]
@@ -335,30 +269,20 @@ fn json(solution: &Solution, derived: &Derived, samples: Option<&[Snapshot]>) ->
     s
 }
 
-/// CSV: the samples if `--sample` is given, else the events. SI units.
-fn csv_output(solution: &Solution, samples: Option<&[Snapshot]>) -> Result<String, CliError> {
-    crate::study::export::run_csv(solution, samples).map_err(|e| CliError::Io(e.into()))
-}
-
-/// `simulate`'s table: the scene, what the run does, and its events (and samples).
-fn table(
-    preset: &Preset,
-    solution: &Solution,
-    derived: &Derived,
-    samples: Option<&[Snapshot]>,
-) -> String {
+/// `simulate`'s table: the scene, what the run does, and its events (and samples),
+/// as the snapshot holds them.
+fn table(preset: &Preset, now: &Resolved, samples: Option<&[Snapshot]>) -> String {
     let mut out = String::new();
-    scene_lines(&mut out, preset, solution, derived);
-    story_lines(&mut out, preset, solution, derived);
-    run_lines(&mut out, solution);
+    scene_lines(&mut out, preset, &now.scene, &now.derived);
+    story_lines(&mut out, now);
+    run_lines(&mut out, &now.solution);
     let _ = writeln!(out);
-    state_rows(&mut out, solution, samples);
+    state_rows(&mut out, &now.solution, samples);
     out
 }
 
 /// The preset, the scene, the balls and the derived values with the paper's regime.
-fn scene_lines(out: &mut String, preset: &Preset, solution: &Solution, derived: &Derived) {
-    let sc = &solution.scene;
+fn scene_lines(out: &mut String, preset: &Preset, sc: &Scene, derived: &Derived) {
     let len = |v: f64| show(v, Dimension::Length);
     let _ = writeln!(out, "preset   {}: {}", preset.name, preset.description);
     let b_star = derived
@@ -396,9 +320,11 @@ fn scene_lines(out: &mut String, preset: &Preset, solution: &Solution, derived: 
     );
 }
 
-/// What the run does (against the paper's criterion and the preset's data) and the
-/// left ball after the first impact with the forces then.
-fn story_lines(out: &mut String, preset: &Preset, solution: &Solution, derived: &Derived) {
+/// What the run does (against the paper's criterion and the measured series' rest
+/// band, if the scene has one) and the left ball after the first impact with the
+/// forces then.
+fn story_lines(out: &mut String, now: &Resolved) {
+    let (solution, derived, story) = (&now.solution, &now.derived, &now.story);
     // What this run does, beside the paper's criterion above.
     let outcome = Summary::of(solution).outcome;
     let _ = writeln!(
@@ -406,20 +332,18 @@ fn story_lines(out: &mut String, preset: &Preset, solution: &Solution, derived: 
         "outcome  {}: {}{}",
         outcome.name(),
         story::outcome_says(outcome, derived),
-        story::criterion_note(solution, derived).map_or(String::new(), |n| format!(" ({n})"))
+        story
+            .criterion_note
+            .as_ref()
+            .map_or(String::new(), |n| format!(" ({n})"))
     );
-    // Against the preset's measured series: can its data tell this regime from rest?
-    if let Some(m) = &preset.measured {
-        let band = crate::study::fit::rest_band(m);
-        let _ = writeln!(
-            out,
-            "verdict  {}",
-            story::Verdict::of(solution, derived, Some(band)).text("±")
-        );
+    // Against the measured series: can its data tell this regime from rest?
+    if now.rest_band.is_some() {
+        let _ = writeln!(out, "verdict  {}", story.verdict.text("±"));
     }
     if let Some(rec) = derived.left_after_impact {
         // The closed forms only where the exact run bears them out; else its events.
-        match story::after_first_impact(solution, derived) {
+        match &story.after {
             Some(After::Interrupted(i)) => {
                 let _ = writeln!(
                     out,
@@ -478,26 +402,6 @@ fn run_lines(out: &mut String, solution: &Solution) {
     );
 }
 
-/// The state at each event, then at each sample if any.
-fn state_rows(out: &mut String, solution: &Solution, samples: Option<&[Snapshot]>) {
-    let header = state_header();
-    let row = state_row;
-    let _ = writeln!(out, "{header}");
-    for e in solution.visible_events() {
-        let _ = writeln!(
-            out,
-            "{}",
-            row(e.t, e.kind.name(), e.ball.name(), e.left, e.right)
-        );
-    }
-    if let Some(samples) = samples {
-        let _ = writeln!(out, "\nsamples\n{header}");
-        for s in samples {
-            let _ = writeln!(out, "{}", row(s.t, "", "", s.left, s.right));
-        }
-    }
-}
-
 /// The closed-form recovery of the left ball, in one line.
 fn recovery_line(rec: &crate::physics::derived::Recovery) -> String {
     let len = |v: f64| show(v, Dimension::Length);
@@ -547,39 +451,4 @@ fn presets() -> String {
         let _ = writeln!(out, "(skipped: {e})");
     }
     out
-}
-
-/// Header of the tables of both balls' states (events and samples).
-pub(crate) fn state_header() -> String {
-    format!(
-        "{:>10}  {:<14} {:<6} {:>9} {:>9} {:>9}  {:>9} {:>9} {:>9}",
-        "t (s)",
-        "event",
-        "ball",
-        format!("x_L ({})", Dimension::Length.display_unit().0),
-        "v_L (m/s)",
-        "u_L (m/s)",
-        format!("x_R ({})", Dimension::Length.display_unit().0),
-        "v_R (m/s)",
-        "u_R (m/s)"
-    )
-}
-
-/// One row of those tables.
-pub(crate) fn state_row(
-    t: f64,
-    kind: &str,
-    ball: &str,
-    l: crate::physics::model::BallState,
-    r: crate::physics::model::BallState,
-) -> String {
-    format!(
-        "{t:>10.6}  {kind:<14} {ball:<6} {:>9.4} {:>9.5} {:>9.5}  {:>9.4} {:>9.5} {:>9.5}",
-        Dimension::Length.to_display(l.x),
-        l.v,
-        l.u,
-        Dimension::Length.to_display(r.x),
-        r.v,
-        r.u
-    )
 }

@@ -5,10 +5,10 @@
 use std::io::{IsTerminal, Write};
 use std::sync::atomic::{AtomicBool, Ordering};
 
-use super::error::{BadValue, Flag, size_text};
-use super::output::AtomicFile;
+use super::args::{SceneArgs, SweepArgs, SweepFormat};
+use super::error::{BadValue, CliError, Flag, size_text};
 use super::progress::Bar;
-use super::{CliError, SceneArgs, SweepArgs, SweepFormat};
+use crate::output::AtomicFile;
 use crate::study::sweep::{self, Axis, Point};
 
 fn grid(text: &str, two: bool) -> Result<(usize, usize), CliError> {
@@ -169,7 +169,7 @@ fn output_error(path: &std::path::Path, source: std::io::Error) -> CliError {
 
 /// What one sweep computes.
 struct Map<'a> {
-    base: &'a crate::settings::params::SceneSpec,
+    base: &'a crate::settings::spec::SceneSpec,
     x: &'a Axis,
     y: Option<&'a Axis>,
     preset: &'a str,

@@ -90,34 +90,62 @@ pub fn save(
     name: &str,
     overwrite: bool,
 ) -> Result<PathBuf, SaveError> {
-    let name = name.trim();
-    let valid = !name.is_empty()
-        && name
-            .chars()
-            .all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_' || c == '.');
-    if !valid {
-        return Err(SaveError::BadName(name.to_string()));
+    PresetFile::new(lab, dir, name, overwrite)?.write()
+}
+
+/// A user preset ready to be written: its path and its text, checked to load again.
+#[derive(Clone, Debug)]
+pub struct PresetFile {
+    pub path: PathBuf,
+    text: String,
+}
+
+impl PresetFile {
+    /// The preset [`save`] would write, or why it would not.
+    pub fn new(
+        lab: &Lab,
+        dir: Option<&Path>,
+        name: &str,
+        overwrite: bool,
+    ) -> Result<PresetFile, SaveError> {
+        let name = name.trim();
+        let valid = !name.is_empty()
+            && name
+                .chars()
+                .all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_' || c == '.');
+        if !valid {
+            return Err(SaveError::BadName(name.to_string()));
+        }
+        let dir = dir.ok_or(SaveError::NoFolder)?;
+        let path = dir.join(format!("{name}.toml"));
+        if path.exists() && !overwrite {
+            return Err(SaveError::Exists(path));
+        }
+        // Overwriting keeps the description of the file it replaces.
+        let kept = path
+            .is_file()
+            .then(|| Preset::load(&path.display().to_string()).ok())
+            .flatten()
+            .map(|p| p.description);
+        let description = kept.unwrap_or_else(|| {
+            format!("Saved from groovelab (started from {})", lab.preset().name)
+        });
+        let text = preset::to_toml(name, &description, &lab.saved_spec(), lab.measured())
+            .map_err(SaveError::Text)?;
+        // What is written must load again: check before reporting success.
+        Preset::parse(&text, name, Origin::BuiltIn).map_err(SaveError::WouldNotLoad)?;
+        Ok(PresetFile { path, text })
     }
-    let dir = dir.ok_or(SaveError::NoFolder)?;
-    let path = dir.join(format!("{name}.toml"));
-    if path.exists() && !overwrite {
-        return Err(SaveError::Exists(path));
+
+    /// Writes the file (its folder made first); returns its path.
+    pub fn write(self) -> Result<PathBuf, SaveError> {
+        if let Some(dir) = self.path.parent() {
+            std::fs::create_dir_all(dir).map_err(SaveError::Folder)?;
+        }
+        crate::output::write_atomically(&self.path, self.text.as_bytes())
+            .map_err(SaveError::Write)?;
+        Ok(self.path)
     }
-    // Overwriting keeps the description of the file it replaces.
-    let kept = path
-        .is_file()
-        .then(|| Preset::load(&path.display().to_string()).ok())
-        .flatten()
-        .map(|p| p.description);
-    let description = kept
-        .unwrap_or_else(|| format!("Saved from groovelab (started from {})", lab.preset().name));
-    let text = preset::to_toml(name, &description, &lab.saved_spec(), lab.measured())
-        .map_err(SaveError::Text)?;
-    // What is written must load again: check before reporting success.
-    Preset::parse(&text, name, Origin::BuiltIn).map_err(SaveError::WouldNotLoad)?;
-    std::fs::create_dir_all(dir).map_err(SaveError::Folder)?;
-    crate::output::write_atomically(&path, text.as_bytes()).map_err(SaveError::Write)?;
-    Ok(path)
 }
 
 /// Where user presets live: `$GROOVELAB_PRESETS`, else

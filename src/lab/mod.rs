@@ -5,52 +5,44 @@
 //! rows, the overlay run, the fits), computed lazily on worker threads and dropped
 //! when the scene changes. An edit sets a layer and builds a new snapshot; `Lab`
 //! derefs to it, so a view reads `lab.scene`, `lab.solution`, `lab.story` from the one
-//! snapshot. The analyses' jobs are in `analyses`, the span rule in `span`; what
-//! depends on the terminal's size is cached by the app, not here.
+//! snapshot. The analyses' jobs are in `analyses` (their work in `work`), the span
+//! rule in `span`; what depends on the terminal's size is cached by the app, not here.
 
 mod analyses;
 pub mod jobs;
 mod resolved;
 mod settings;
 mod span;
+mod work;
 
 use std::ops::Deref;
 use std::sync::Arc;
 
 use crate::methods::Method;
-use crate::physics::scene::Scene;
-use crate::physics::solution::Solution;
-use crate::settings::params::{Key, SceneError, SceneSpec};
+use crate::settings::params::Key;
+use crate::settings::spec::{SceneError, SceneSpec};
 use crate::study::compare::Row;
 use crate::study::fit::{FitError, Fits, ModelFit};
 use crate::study::measured::{Measured, Series};
 use crate::study::preset::Preset;
-use analyses::Generation;
 use jobs::{Job, Jobs};
 
-pub use analyses::{
+pub use resolved::{MeasuredPoints, Pinned, Point, Resolved, Story, value_range};
+pub use settings::{Edit, Settings};
+pub use span::SpanEnd;
+pub use work::{
     ExportResult, Exported, FitWindowError, METHOD_VIEW_LEVELS, OVERLAY_LEVELS, Overlay,
     level_settings,
 };
-pub use resolved::{MeasuredPoints, Point, Resolved, Story};
-pub use settings::{Edit, Settings};
-pub use span::SpanEnd;
 
 use span::solve_shown;
 
+/// The scene a job belongs to: it counts up with every new solve, so a request made
+/// for an earlier scene never matches a newer one.
+type Generation = u64;
+
 /// The line fit's window, s: from, to (`None`: the sliding phase's end).
 pub type FitWindow = (Option<f64>, Option<f64>);
-
-/// A scene pinned for comparison (A/B): drawn dimmed beside the current one.
-#[derive(Clone, Debug)]
-pub struct Pinned {
-    pub scene: Scene,
-    pub solution: Arc<Solution>,
-    /// The preset it started from.
-    pub label: String,
-    /// Where its automatic span ends (the current automatic span reaches it too).
-    pub auto_end: f64,
-}
 
 /// A measured series of the user's own (`--data`), kept when another preset is
 /// picked for the model, until the user drops it.
@@ -112,7 +104,7 @@ impl Lab {
     /// The lab on its settings, with the user's own series (`--data`) in place of the
     /// preset's, if any.
     pub fn new(settings: Settings, own_data: Option<OwnData>) -> Result<Lab, SceneError> {
-        let series = in_use(own_data.as_ref(), &settings.preset);
+        let series = in_use(own_data.as_ref(), settings.preset());
         let now = Arc::new(Resolved::build(&settings, series.as_ref(), None)?);
         Ok(Lab {
             settings,
@@ -149,7 +141,7 @@ impl Lab {
 
     /// The preset the scene starts from.
     pub fn preset(&self) -> &Preset {
-        &self.settings.preset
+        self.settings.preset()
     }
 
     /// The settings layers.
@@ -201,9 +193,15 @@ impl Lab {
         built
     }
 
-    /// Takes back the newest edit; `None` when there is none.
+    /// Takes back the newest edit; `None` when there is none. A preset picked is
+    /// taken back with its data choice: the series in use is the earlier preset's
+    /// again (or still the user's own).
     pub fn undo(&mut self) -> Option<Edit> {
         let edit = self.settings.undo()?;
+        if let Edit::Preset(_) = edit {
+            self.series = in_use(self.own_data.as_ref(), self.settings.preset());
+            self.fit_window = (None, None);
+        }
         // The layers below it made a valid scene before it was added.
         self.rebuild().expect("the scene before an edit was valid");
         Some(edit)
@@ -220,19 +218,14 @@ impl Lab {
         true
     }
 
-    /// Starts over from `preset` (its `t_end`, if any, holds until a parameter
-    /// changes); the user's own series stays (see [`Lab::drop_data`]).
+    /// Starts over from `preset` alone (its `t_end`, if any, holds until a parameter
+    /// changes): an edit, so [`Lab::undo`] goes back to the preset before with its
+    /// edits and data; the user's own series stays (see [`Lab::drop_data`]).
     pub fn load_preset(&mut self, preset: Preset) -> Result<(), SceneError> {
         let series = in_use(self.own_data.as_ref(), &preset);
-        let was = (
-            std::mem::replace(
-                &mut self.settings,
-                Settings::new(preset, SceneSpec::default()),
-            ),
-            std::mem::replace(&mut self.series, series),
-        );
-        if let Err(e) = self.rebuild() {
-            (self.settings, self.series) = was;
+        let was = std::mem::replace(&mut self.series, series);
+        if let Err(e) = self.edit(Edit::Preset(Box::new(preset))) {
+            self.series = was;
             return Err(e);
         }
         self.fit_window = (None, None);
@@ -243,7 +236,7 @@ impl Lab {
     /// dropped series' name, if there was one.
     pub fn drop_data(&mut self) -> Option<String> {
         let dropped = self.own_data.take()?;
-        self.series = in_use(None, &self.settings.preset);
+        self.series = in_use(None, self.settings.preset());
         self.fit_window = (None, None);
         self.rebuild()
             .expect("the data do not decide whether a scene is valid");
@@ -257,7 +250,7 @@ impl Lab {
             None => Some(Pinned {
                 scene: self.scene,
                 solution: self.solution.clone(),
-                label: self.settings.preset.name.clone(),
+                label: self.settings.preset().name.clone(),
                 // Its own automatic end, not the shown one: a scaled span must not
                 // compound through the pin.
                 auto_end: solve_shown(

@@ -11,13 +11,24 @@ use crate::physics::derived::Derived;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::Solution;
 use crate::physics::story::{self, After, Verdict};
-use crate::settings::params::{Key, PARAMS, SceneError};
+use crate::settings::params::{Key, PARAMS};
+use crate::settings::spec::SceneError;
 use crate::settings::units::{Dimension, show};
 use crate::study::measured::{self, InScene, Measured, Series};
 
-use super::Pinned;
 use super::settings::Settings;
 use super::span::{SpanEnd, solve_shown};
+
+/// A scene pinned for comparison (A/B): drawn dimmed beside the current one.
+#[derive(Clone, Debug)]
+pub struct Pinned {
+    pub scene: Scene,
+    pub solution: Arc<Solution>,
+    /// The preset it started from.
+    pub label: String,
+    /// Where its automatic span ends (the current automatic span reaches it too).
+    pub auto_end: f64,
+}
 
 /// A point of a chart (t, value).
 pub type Point = (f64, f64);
@@ -132,6 +143,8 @@ pub struct MeasuredPoints {
     /// A position track's centre where the model's left ball would be (x − R), in the
     /// display unit of length (the position chart's).
     pub x: Option<Arc<[Point]>>,
+    /// Each series' [`value_range`], in the order of [`MeasuredPoints::series`].
+    ranges: Vec<Option<(f64, f64)>>,
 }
 
 impl MeasuredPoints {
@@ -139,7 +152,7 @@ impl MeasuredPoints {
         let pts = |v: &[f64]| m.t.iter().copied().zip(v.iter().copied()).collect();
         let bars =
             |v: &[f64], s: &Option<Vec<f64>>| s.as_ref().map(|s| error_bars(&m.t, v, s).into());
-        MeasuredPoints {
+        let mut points = MeasuredPoints {
             v_cm: pts(&m.v_cm),
             v_t: pts(&m.v_t),
             v_cm_bars: bars(&m.v_cm, &m.v_cm_sigma),
@@ -151,8 +164,37 @@ impl MeasuredPoints {
                     .map(|(t, x)| (*t, Dimension::Length.to_display(x - radius)))
                     .collect()
             }),
-        }
+            ranges: Vec::new(),
+        };
+        points.ranges = points.series().map(|s| value_range(s)).collect();
+        points
     }
+
+    /// Every series above, in a fixed order: v_cm, v_t, their error bars, x.
+    pub fn series(&self) -> impl Iterator<Item = &Arc<[Point]>> {
+        [Some(&self.v_cm), Some(&self.v_t)]
+            .into_iter()
+            .chain([&self.v_cm_bars, &self.v_t_bars, &self.x].map(Option::as_ref))
+            .flatten()
+    }
+
+    /// The [`value_range`] of `points` if it is one of these series (made once per
+    /// scene: a chart's y range takes no pass over a million rows); `None` if not.
+    pub fn range_of(&self, points: &Arc<[Point]>) -> Option<Option<(f64, f64)>> {
+        let i = self.series().position(|s| Arc::ptr_eq(s, points))?;
+        self.ranges.get(i).copied()
+    }
+}
+
+/// The least and the greatest finite value of `points` (`None`: none is finite).
+pub fn value_range(points: &[Point]) -> Option<(f64, f64)> {
+    points
+        .iter()
+        .map(|p| p.1)
+        .filter(|v| v.is_finite())
+        .fold(None, |r, v| {
+            Some(r.map_or((v, v), |(lo, hi): (f64, f64)| (lo.min(v), hi.max(v))))
+        })
 }
 
 /// Points filling `value ± sigma` at each time (12 per bar, enough for a bar a dozen

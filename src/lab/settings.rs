@@ -2,10 +2,12 @@
 //! line's flags ← the edits made in the app, newest last — and the one rule that
 //! settles them into a checked scene, its span and how the span ends. An edit is a
 //! layer entry: undo pops it; a reset is an entry too (the edits before it stop
-//! counting), so an accidental reset can be undone like any change.
+//! counting), and so is another preset picked (the scene starts over from it), so an
+//! accidental reset or pick can be undone like any change.
 
 use crate::physics::scene::{Scene, Span};
-use crate::settings::params::{Key, SceneError, SceneSpec};
+use crate::settings::params::Key;
+use crate::settings::spec::{SceneError, SceneSpec};
 use crate::study::preset::Preset;
 
 use super::span::SpanEnd;
@@ -18,14 +20,17 @@ pub enum Edit {
     SpanEnd(SpanEnd),
     /// Every earlier edit set aside: the scene as the preset and the flags give it.
     Reset,
+    /// Another preset picked: the scene starts over from it alone (the command line's
+    /// values and every earlier edit set aside, as by a reset).
+    Preset(Box<Preset>),
 }
 
 /// The layers a lab's scene is settled from (the defaults are the table's own).
 #[derive(Clone, Debug)]
 pub struct Settings {
-    /// The preset the scene starts from.
-    pub preset: Preset,
-    /// The command line's values, SI.
+    /// The preset the lab started from (see [`Settings::preset`] for the one in use).
+    start: Preset,
+    /// The command line's values, SI (in force until another preset is picked).
     pub flags: SceneSpec,
     /// The app's edits, oldest first.
     edits: Vec<Edit>,
@@ -34,10 +39,28 @@ pub struct Settings {
 impl Settings {
     pub fn new(preset: Preset, flags: SceneSpec) -> Settings {
         Settings {
-            preset,
+            start: preset,
             flags,
             edits: Vec::new(),
         }
+    }
+
+    /// The preset the scene starts from: the one picked last, else the lab's first.
+    pub fn preset(&self) -> &Preset {
+        self.picked().unwrap_or(&self.start)
+    }
+
+    /// The preset picked last in the app, if any.
+    fn picked(&self) -> Option<&Preset> {
+        self.edits.iter().rev().find_map(|e| match e {
+            Edit::Preset(p) => Some(&**p),
+            _ => None,
+        })
+    }
+
+    /// The command line's values while they are in force (until a preset is picked).
+    pub fn flags_in_force(&self) -> Option<&SceneSpec> {
+        self.picked().is_none().then_some(&self.flags)
     }
 
     /// The app's edits, oldest first.
@@ -56,12 +79,12 @@ impl Settings {
         self.edits.pop()
     }
 
-    /// The edits that count: those after the newest reset.
+    /// The edits that count: those after the newest reset or preset picked.
     pub fn in_force(&self) -> &[Edit] {
         let from = self
             .edits
             .iter()
-            .rposition(|e| *e == Edit::Reset)
+            .rposition(|e| matches!(e, Edit::Reset | Edit::Preset(_)))
             .map_or(0, |i| i + 1);
         &self.edits[from..]
     }
@@ -82,7 +105,7 @@ impl Settings {
     /// chooses the automatic span or a multiple of it. The span's `t_end` is the fixed
     /// end, if any (the solve gives the shown one).
     pub fn settle(&self) -> Result<(Scene, Span, SpanEnd), SceneError> {
-        let mut spec = self.preset.spec.clone();
+        let mut spec = self.preset().spec.clone();
         let mut end = match spec.get(Key::TEnd) {
             Some(t_end) => SpanEnd::Fixed {
                 t_end,
@@ -90,14 +113,16 @@ impl Settings {
             },
             None => SpanEnd::Auto,
         };
-        let flags: Vec<(Key, f64)> = self.flags.given().collect();
-        set_values(&mut spec, &mut end, &flags);
+        if let Some(flags) = self.flags_in_force() {
+            let flags: Vec<(Key, f64)> = flags.given().collect();
+            set_values(&mut spec, &mut end, &flags);
+        }
         for edit in self.in_force() {
             match edit {
                 Edit::Values(changes) => set_values(&mut spec, &mut end, changes),
                 Edit::SpanEnd(e) => end = *e,
-                // `in_force` starts after the newest reset.
-                Edit::Reset => {}
+                // `in_force` starts after the newest reset or preset picked.
+                Edit::Reset | Edit::Preset(_) => {}
             }
         }
         // The end is `end`'s alone: a fixed one is checked with the scene.

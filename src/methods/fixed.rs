@@ -1,10 +1,8 @@
 //! Fixed-step methods: explicit Euler and semi-implicit Euler with Coulomb friction,
 //! classical RK4 with `tanh(s/ε)` friction. Impacts: see the module above.
 
-use super::{
-    Friction, GridStep, Method, Model, Observer, RunEnd, Settings, Y, resolve_overlap, rhs,
-    run_grid,
-};
+use super::grid::{GridStep, run_grid};
+use super::system::{Friction, Method, Model, Observer, RunEnd, Settings, Y, resolve_overlap, rhs};
 
 /// Butcher tableau of classical RK4, as data (statics: an unoptimised build copies a
 /// const table whole at every use).

@@ -3,7 +3,8 @@
 //! Coulomb friction as a set-valued law solved exactly in each step. No event is
 //! located and no step is ever refused: accumulations of impacts cost nothing.
 
-use super::{GridStep, Model, Observer, RunEnd, Settings, Y, gap, run_grid};
+use super::grid::{GridStep, run_grid};
+use super::system::{Model, Observer, RunEnd, Settings, Y, gap};
 
 const THETA: f64 = 0.5;
 

@@ -5,7 +5,8 @@
 //! the dense output by bisection, apply the jump, restart. Its weak point is the
 //! accumulation of impacts: every one of infinitely many events costs steps.
 
-use super::{EventTracker, Model, Observer, RunEnd, Settings, Y, collide, gap};
+use super::grid::EventTracker;
+use super::system::{Model, Observer, RunEnd, Settings, Y, collide, gap};
 
 // The Dormand–Prince 5(4) tableau with Shampine's dense output (as scipy's RK45).
 // The system is autonomous, so the stage times only serve the tableau check.

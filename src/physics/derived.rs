@@ -411,3 +411,40 @@ impl Summary {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::physics::scene::Ball;
+    use proptest::prelude::*;
+
+    proptest! {
+        /// The 3-D vectors (a cross product here) against the sliding ball's closed
+        /// forms in `physics::forces`, to rounding.
+        #[test]
+        fn forces_agree_with_the_sliding_balls_closed_forms(
+            radius in 1e-3..1.0f64,
+            half in prop_oneof![Just(0.0), 0.0..0.9999f64, Just(1.0 - 1e-9)],
+            mu in prop_oneof![0.001..1.5f64, Just(1e-4)],
+            mass in 1e-3..10.0f64,
+        ) {
+            let ball = Ball { mass: 0.167, v0: 1.0 };
+            let sc = Scene {
+                radius,
+                width: 2.0 * radius * half,
+                mu,
+                g: 9.81,
+                restitution: 0.5,
+                rolling_resistance: 0.0,
+                left: ball,
+                right: ball,
+            };
+            let (s, f) = (Sliding::of(&sc, mass), forces(&sc, mass, -1.0));
+            let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs();
+            prop_assert!(close(f.normal_a.norm(), s.normal));
+            prop_assert!(close(f.friction_a.x, s.friction));
+            prop_assert!(close(f.torque.norm(), s.net_torque));
+            prop_assert!(close(f.net.x / mass, s.a_cm));
+        }
+    }
+}

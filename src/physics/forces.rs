@@ -240,7 +240,6 @@ pub fn instant(sol: &Solution, ball: usize, t: f64) -> Instant {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::physics::derived::forces;
     use crate::physics::engine::solve;
     use crate::physics::scene::{Ball, Span};
     use crate::physics::solution::EventKind;
@@ -322,12 +321,6 @@ mod tests {
             prop_assert!(close(s.a_t, 2.5 * k * mu * sc.g));
             prop_assert!(close(s.d, s.a_t / s.a_cm));
             prop_assert!(close(s.d, 2.5 * k * k));
-            // Against the 3-D vectors of `derived::forces` (a cross product there).
-            let f = forces(&sc, mass, -1.0);
-            prop_assert!(close(f.normal_a.norm(), s.normal));
-            prop_assert!(close(f.friction_a.x, s.friction));
-            prop_assert!(close(f.torque.norm(), s.net_torque));
-            prop_assert!(close(f.net.x / mass, s.a_cm));
         }
 
         #[test]

@@ -15,7 +15,7 @@ pub struct Ball {
     pub v0: f64,
 }
 
-/// The physical scene, SI units throughout. Always valid once built by `settings::params::SceneSpec::resolve`.
+/// The physical scene, SI units throughout. Always valid once built by `settings::spec::SceneSpec::resolve`.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct Scene {
     /// Ball radius R, m (both balls).

@@ -4,5 +4,5 @@
 //! (`units`: the one display-unit table). Pure: no files, no flags, no terminal.
 
 pub mod params;
-mod spec;
+pub mod spec;
 pub mod units;

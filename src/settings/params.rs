@@ -13,9 +13,6 @@ use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::LATEST_END;
 use crate::settings::units::{Dimension, show};
 
-// The settings layers live in `spec`; their names stay here, beside the table they read.
-pub use crate::settings::spec::{SceneError, SceneSpec};
-
 /// Standard gravity, used when nothing else is said, m/s².
 pub const STANDARD_GRAVITY: f64 = 9.81;
 

@@ -1,6 +1,5 @@
 //! Layers of scene settings ([`SceneSpec`]: defaults, preset, command line, app) and
 //! their resolution through the parameter table into a checked SI scene and span.
-//! Re-exported from `settings::params`, which is the path to use.
 
 use crate::physics::derived::Derived;
 use crate::physics::scene::{Scene, Span};

@@ -3,7 +3,7 @@
 //! scene as comment lines ([`scene_comments`]), so that it loads back as data.
 
 use crate::physics::solution::{Snapshot, Solution};
-use crate::settings::params::SceneSpec;
+use crate::settings::spec::SceneSpec;
 use crate::settings::units::significant;
 
 /// What starts a scene comment line: `# scene width = 4.9 cm`.

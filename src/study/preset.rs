@@ -4,7 +4,8 @@
 
 use std::path::PathBuf;
 
-use crate::settings::params::{Key, SceneSpec};
+use crate::settings::params::Key;
+use crate::settings::spec::SceneSpec;
 use crate::settings::units::parse_quantity;
 use crate::study::measured::{MAX_ROWS, Measured};
 

@@ -9,7 +9,8 @@ use serde::Serialize;
 use crate::physics::derived::{Derived, Regime};
 use crate::physics::engine;
 use crate::physics::scene::Span;
-use crate::settings::params::{Key, SceneError, SceneSpec};
+use crate::settings::params::Key;
+use crate::settings::spec::{SceneError, SceneSpec};
 use crate::settings::units::{UnitError, parse_quantity};
 
 /// One swept parameter: `key` from `lo` to `hi` (SI) in `n` points, both ends included.

@@ -4,7 +4,7 @@
 //! The types it speaks in live in [`super::vocabulary`]; what the main screen's keys do in
 //! `normal`, the picker and text prompts in `prompts`.
 
-mod export;
+pub mod export;
 mod normal;
 mod predict;
 mod prompts;
@@ -21,13 +21,10 @@ use crate::settings::units::{Dimension, show, significant};
 pub use super::vocabulary::{
     Action, ChartBall, Export, FPS, Field, Library, Mode, Prediction, SPEEDS, Status, View,
 };
-pub use export::{Figure, export_step};
-pub use predict::reveal_time;
-pub use prompts::typing_prompt;
 
-use super::view::ViewCache;
+use super::line::History;
+use super::view_cache::ViewCache;
 use super::vocabulary::{DEFAULT_SPEED, WorkAxis};
-use prompts::{Histories, TextTarget};
 
 /// The rows of the parameters panel, top to bottom: the table's rows that have steps.
 pub static ROWS: LazyLock<Vec<&'static Param>> =
@@ -72,7 +69,13 @@ pub struct App {
     pub view_cache: ViewCache,
     /// What was typed into each kind of prompt this session (↑/↓ bring it back).
     histories: Histories,
+    /// False in `render`, the headless twin: a screen dump writes no files, so the
+    /// export and save keys say what they would write and write nothing.
+    pub writes_files: bool,
 }
+
+/// What the export and save keys say where files are not written.
+pub const NO_FILES: &str = "render writes no files";
 
 impl App {
     pub fn new(lab: Lab, library: Library) -> App {
@@ -101,6 +104,7 @@ impl App {
             prediction: None,
             view_cache: ViewCache::default(),
             histories: Histories::default(),
+            writes_files: true,
         }
     }
 
@@ -294,6 +298,17 @@ impl App {
         )
     }
 }
+
+/// Which prompt text is typed into: a value, a preset's name, an export's file name.
+#[derive(Clone, Copy)]
+enum TextTarget {
+    Value,
+    Name,
+    Export(Export),
+}
+
+/// One history per kind of prompt ([`TextTarget::index`]).
+type Histories = [History; 3];
 
 /// A time `>` and `<` stop at: an event's, with its label, and for T∞ how many impacts
 /// of the burst before it the stop stands for.

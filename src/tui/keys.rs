@@ -3,7 +3,7 @@
 
 use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
 
-use super::app::{Action, Export, Mode};
+use super::vocabulary::{Action, Export, Mode};
 
 /// One line of the key table.
 #[derive(Clone, Copy, Debug)]
@@ -105,7 +105,7 @@ pub const TABLE: &[Binding] = &[
     Binding {
         keys: &["u"],
         action: Action::Undo,
-        help: "undo the last parameter change (again: the one before)",
+        help: "undo the last change (again: the one before)",
         hint: None,
     },
     Binding {

@@ -10,6 +10,7 @@ pub mod line;
 pub mod plot;
 pub mod theme;
 pub mod view;
+pub mod view_cache;
 pub mod vocabulary;
 
 use std::io::{self, Write};
@@ -266,4 +267,17 @@ pub fn replay(app: &mut App, keys: &[KeyEvent]) {
             app.apply(action);
         }
     }
+}
+
+/// Replays `keys` on `app` as `render`, the headless twin, does: before each key and at
+/// the end, every analysis already asked for finishes and its result is taken in, as if
+/// the user waited for the screen to settle. A key that acts on a result (`a` applies the
+/// fit, `W` exports the Methods diagram) then finds it, and the same keys give the same
+/// bytes on every run. The interactive app never waits ([`replay`] is its keys).
+pub fn replay_settled(app: &mut App, keys: &[KeyEvent]) {
+    for &key in keys {
+        app.wait();
+        replay(app, &[key]);
+    }
+    app.wait();
 }

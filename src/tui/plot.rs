@@ -168,15 +168,21 @@ impl Plot {
         time_at_column(self.x_range, plot.x, plot.width, column)
     }
 
-    pub fn render(&self, area: Rect, buf: &mut Buffer, theme: &Theme) {
-        let Some(plot) = self.data_area(area, theme) else {
-            return;
-        };
-        let cells = Cells {
-            plot,
+    /// Where the plot drawn in `area` with `theme` puts a value: its data cells and
+    /// the ranges over them (`None` if the area is too small to draw).
+    pub fn cells(&self, area: Rect, theme: &Theme) -> Option<Cells> {
+        Some(Cells {
+            plot: self.data_area(area, theme)?,
             x_range: self.x_range,
             y_range: self.y_range,
+        })
+    }
+
+    pub fn render(&self, area: Rect, buf: &mut Buffer, theme: &Theme) {
+        let Some(cells) = self.cells(area, theme) else {
+            return;
         };
+        let plot = cells.plot;
         // Title and legend (the same layout data_area made room for).
         buf.set_stringn(
             area.x,
@@ -329,27 +335,52 @@ impl Plot {
 
     /// The marker series drawn as `draw`, one cell per point inside the ranges.
     fn draw_points(&self, draw: Draw, cells: &Cells, buf: &mut Buffer) {
-        let ((x0, x1), (y0, y1)) = (self.x_range, self.y_range);
         for s in self.series.iter().filter(|s| s.draw == draw) {
-            for &(x, y) in s.points.iter() {
-                if !(x.is_finite() && y.is_finite()) || x < x0 || x > x1 || y < y0 || y > y1 {
-                    continue;
-                }
-                let (c, r) = (cells.col_of(x) as u16, cells.row_of(y) as u16);
-                buf.set_string(cells.plot.x + c, cells.plot.y + r, s.glyph, s.style);
+            for (c, r) in s.points.iter().filter_map(|&p| cells.cell_of(p)) {
+                let (x, y) = (cells.plot.x + c as u16, cells.plot.y + r as u16);
+                buf.set_string(x, y, s.glyph, s.style);
             }
         }
     }
 }
 
 /// The plot's data area and the value ranges it shows: where a value goes.
-struct Cells {
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Cells {
     plot: Rect,
     x_range: (f64, f64),
     y_range: (f64, f64),
 }
 
 impl Cells {
+    /// The cell a marker at `(x, y)` is drawn in (column, row from the data area's
+    /// top left), `None` if it is not drawn (not finite, or outside the ranges).
+    fn cell_of(&self, (x, y): (f64, f64)) -> Option<(usize, usize)> {
+        let ((x0, x1), (y0, y1)) = (self.x_range, self.y_range);
+        if !(x.is_finite() && y.is_finite()) || x < x0 || x > x1 || y < y0 || y > y1 {
+            return None;
+        }
+        Some((self.col_of(x) as usize, self.row_of(y) as usize))
+    }
+
+    /// One point of `points` for each cell they mark: drawn as markers ([`Draw::Points`])
+    /// they fill the same cells with the same glyph as all of them (a series marks a
+    /// cell with its one glyph however many of its points fall there), so a million
+    /// measured rows draw as at most one point per cell of the plot.
+    pub fn thin(&self, points: &[(f64, f64)]) -> Vec<(f64, f64)> {
+        let cols = self.cols();
+        let mut marked = vec![false; cols * self.rows()];
+        let mut out = Vec::new();
+        for &p in points {
+            if let Some((c, r)) = self.cell_of(p)
+                && !std::mem::replace(&mut marked[r * cols + c], true)
+            {
+                out.push(p);
+            }
+        }
+        out
+    }
+
     fn cols(&self) -> usize {
         self.plot.width as usize
     }
@@ -432,6 +463,65 @@ mod tests {
             let area = Rect::new(0, 0, w, h);
             let mut buf = Buffer::empty(area);
             plot.render(area, &mut buf, &theme);
+        }
+    }
+
+    #[test]
+    fn thinned_markers_mark_the_same_cells_as_all_of_them() {
+        // A dense noisy series (a spike, values outside the range, NaN), as markers
+        // over a line: thinned to one point per cell, the screen is the same.
+        let points: Vec<(f64, f64)> = (0..200_000)
+            .map(|i| {
+                let t = i as f64 / 200_000.0;
+                let noise = ((i * 7919) % 101) as f64 / 101.0 - 0.5;
+                let v = match i {
+                    77_777 => 5.0,
+                    99_999 => f64::NAN,
+                    150_000 => 9.0,
+                    _ => (6.0 * t).sin() + 0.3 * noise,
+                };
+                (t, v)
+            })
+            .collect();
+        let marks = |points: Vec<(f64, f64)>| Series {
+            name: "measured".into(),
+            points: points.into(),
+            style: Style::default(),
+            glyph: "x",
+            draw: Draw::Points,
+        };
+        let mut plot = Plot {
+            x_range: (0.0, 1.0),
+            y_range: (-2.0, 6.0),
+            x_title: "t (s)".into(),
+            y_title: "v (m/s)".into(),
+            series: vec![
+                Series {
+                    draw: Draw::Line,
+                    glyph: "*",
+                    ..marks(vec![(0.0, -1.0), (1.0, 1.0)])
+                },
+                marks(points.clone()),
+            ],
+            vlines: Vec::new(),
+            cursor: None,
+            x_ticks: None,
+            y_ticks: None,
+        };
+        for ascii in [true, false] {
+            let theme = Theme::new(crate::tui::theme::Glyphs::new(ascii), true);
+            for (w, h) in [(80, 24), (120, 40), (13, 5)] {
+                let area = Rect::new(0, 0, w, h);
+                let cells = plot.cells(area, &theme).unwrap();
+                let (mut all, mut thin) = (Buffer::empty(area), Buffer::empty(area));
+                plot.series[1].points = points.clone().into();
+                plot.render(area, &mut all, &theme);
+                let thinned = cells.thin(&points);
+                assert!(thinned.len() <= cells.cols() * cells.rows());
+                plot.series[1].points = thinned.into();
+                plot.render(area, &mut thin, &theme);
+                assert_eq!(all, thin, "{w}x{h}, ascii {ascii}");
+            }
         }
     }
 

@@ -185,6 +185,12 @@ pub struct Theme {
 }
 
 impl Theme {
+    /// No colours for the curves: those that colour alone would tell apart get letters
+    /// (or glyphs) instead.
+    pub fn uncoloured_curves(&self) -> bool {
+        self.left.fg.is_none() && self.right.fg.is_none()
+    }
+
     /// Colours that read on dark and light backgrounds (no white or black text), or
     /// modifiers only when `monochrome` (NO_COLOR).
     pub fn new(glyphs: Glyphs, monochrome: bool) -> Theme {

@@ -1,9 +1,11 @@
 //! The app's vocabulary: what a key can do ([`Action`]), which popup or prompt is open
 //! ([`Mode`]), which view is shown, the status line, playback speeds, and the preset
-//! library the picker offers. Plain data, no behaviour beyond naming.
+//! library the picker offers, the prediction's answers. Plain data, no behaviour beyond
+//! naming.
 
 use std::path::PathBuf;
 
+use crate::physics::derived::Regime;
 use crate::study::preset::Preset;
 
 pub use super::line::Field;
@@ -99,12 +101,19 @@ pub enum Mode {
 /// A prediction of what the balls do after the impact, made before watching.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Prediction {
-    pub guess: crate::physics::derived::Regime,
+    pub guess: Regime,
     /// The scene it was made for (a changed scene makes it stale).
     pub scene: crate::physics::scene::Scene,
     /// From this time on the run shows the outcome, s.
     pub reveal_at: f64,
 }
+
+/// The answers the prediction offers, by key.
+pub const ANSWERS: [(char, Regime); 3] = [
+    ('1', Regime::Depart),
+    ('2', Regime::Rest),
+    ('3', Regime::Recollide),
+];
 
 impl Mode {
     /// True for the prompts that take typed text (where `q` is a letter).

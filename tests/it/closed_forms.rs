@@ -14,7 +14,8 @@ use groovelab::physics::closed_form as cf;
 use groovelab::physics::derived::{Derived, Regime};
 use groovelab::physics::engine::solve;
 use groovelab::physics::solution::{Event, EventKind, Solution, Who};
-use groovelab::settings::params::{Key, SceneSpec};
+use groovelab::settings::params::Key;
+use groovelab::settings::spec::SceneSpec;
 
 /// Closed forms and the engine agree to this (physics.md: ~1e-12 relative).
 const REL: f64 = 1e-12;

@@ -4,11 +4,12 @@
 use groovelab::cli::{self, CliError, DataArgs, RenderArgs, SceneArgs};
 use groovelab::lab::Lab;
 use groovelab::physics::scene::{Ball, Scene, Span};
-use groovelab::settings::params::{Key, SceneSpec};
+use groovelab::settings::params::Key;
+use groovelab::settings::spec::SceneSpec;
 use groovelab::study::preset::Preset;
 use groovelab::tui::app::{App, Library, ROWS};
 use groovelab::tui::theme::{Glyphs, Theme};
-use groovelab::tui::{keys, replay, view};
+use groovelab::tui::{keys, replay, replay_settled, view};
 
 /// The paper's symmetric scene with the given width, friction, speed and restitution.
 pub fn symmetric(radius: f64, width: f64, mu: f64, v0: f64, e: f64) -> Scene {
@@ -129,10 +130,9 @@ pub fn rendered(
     library: Library,
 ) -> App {
     let mut app = cli::opened(scene, data, library).unwrap();
-    if let Some(script) = keys {
-        press(&mut app, script);
-    }
-    app.wait();
+    app.writes_files = false;
+    let keys = keys.map_or(Ok(Vec::new()), keys::parse_script).unwrap();
+    replay_settled(&mut app, &keys);
     if let Some(t) = at {
         let (lo, hi) = (app.lab.solution.t_start, app.lab.solution.t_end);
         assert!((lo..=hi).contains(&t), "{t} outside {lo} … {hi}");

@@ -5,7 +5,7 @@
 
 use groovelab::cli::DataArgs;
 use groovelab::physics::derived::Regime;
-use groovelab::settings::params::SceneSpec;
+use groovelab::settings::spec::SceneSpec;
 use groovelab::tui::app::{App, ChartBall, Library, Mode, View};
 use groovelab::tui::theme::{Glyphs, Theme};
 use groovelab::tui::{keys, view};

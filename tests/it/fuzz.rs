@@ -14,7 +14,7 @@
 //! (`GROOVELAB_FUZZ_SEED=N` picks another sequence; the default is fixed, so a failure
 //! in CI reproduces).
 
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::BTreeMap;
 use std::ffi::OsString;
 use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::path::PathBuf;
@@ -1031,23 +1031,6 @@ fn run(case: &Case) -> Result<Result<Exit, String>, Duration> {
     rx.recv_timeout(limit()).map_err(|_| limit())
 }
 
-/// The names in the working folder. `render --keys` replays the export keys, which
-/// write beside the command as the app does: what a case writes there is removed
-/// after it, so that a run leaves the checkout as it found it.
-fn working_folder() -> BTreeSet<OsString> {
-    std::fs::read_dir(".")
-        .map(|d| d.filter_map(|e| e.ok()).map(|e| e.file_name()).collect())
-        .unwrap_or_default()
-}
-
-fn remove_new_files(before: &BTreeSet<OsString>) {
-    for name in working_folder().difference(before) {
-        if std::path::Path::new(name).is_file() {
-            let _ = std::fs::remove_file(name);
-        }
-    }
-}
-
 /// Keys whose value may be `null` in JSON output (the `Option`s of the schema).
 const NULLABLE: &[&str] = &[
     "t_pure_gliding",
@@ -1280,12 +1263,8 @@ fn fuzz(name: &'static str, strategy: BoxedStrategy<Case>, n: usize, tally: &mut
             eprintln!("[{name} {i}] {}", case.shell());
         }
         let started = Instant::now();
-        let before = case.has("--keys").then(working_folder);
         let result = run(&case);
         let verdict = judge(&case, &result);
-        if let Some(before) = before {
-            remove_new_files(&before);
-        }
         tally.run += 1;
         *tally.by_kind.entry(case.kind).or_default() += 1;
         let took = started.elapsed().as_secs_f64();

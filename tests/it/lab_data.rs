@@ -3,7 +3,8 @@
 //! the tracked centre and mark, the charts and the Fit panel show what was derived.
 
 use groovelab::cli::{self, DataArgs, RenderArgs, SceneArgs, TrackRole, render_with};
-use groovelab::settings::params::{Key, SceneSpec};
+use groovelab::settings::params::Key;
+use groovelab::settings::spec::SceneSpec;
 use groovelab::tui::app::Library;
 
 use crate::common::{self, groovelab, scene_of};

@@ -4,14 +4,20 @@
 //! ← command line ← the app's edits) settle into one snapshot (that the same scene
 //! reached by flags or by keys draws the same screen is `lab_data`'s test): `u` takes
 //! back the last edit, `R` all of them; a preset picked keeps the student's data; data
-//! without a scene are one rule for the app, `render` and `fit`.
+//! without a scene are one rule for the app, `render` and `fit`; `simulate` prints the
+//! snapshot the app shows for the same options.
 
+use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
-use groovelab::cli::{DataArgs, SceneArgs};
+use groovelab::cli::{DataArgs, Format, SceneArgs, SimulateArgs};
 use groovelab::lab::SpanEnd;
-use groovelab::settings::params::{Key, SceneSpec};
+use groovelab::methods::Method;
+use groovelab::settings::params::Key;
+use groovelab::settings::spec::SceneSpec;
+use groovelab::study::preset::Preset;
 use groovelab::tui::app::Status;
+use serde_json::Value;
 
 use crate::common::{self, press, rendered};
 
@@ -52,6 +58,328 @@ fn no_layer_uses_a_later_one() {
         }
     }
     assert!(bad.is_empty(), "upward imports:\n{}", bad.join("\n"));
+}
+
+/// One token of a source with its comments, strings and characters taken out: a word
+/// (an identifier, keyword or lifetime), `::`, or one other character; with its line.
+struct Token {
+    text: String,
+    line: usize,
+}
+
+fn tokens(text: &str) -> Vec<Token> {
+    let c: Vec<char> = text.chars().collect();
+    let word = |ch: char| ch.is_alphanumeric() || ch == '_';
+    let (mut out, mut i, mut line) = (Vec::new(), 0, 1);
+    while i < c.len() {
+        if let Some(end) = skipped_end(&c, i) {
+            line += c[i..end].iter().filter(|&&ch| ch == '\n').count();
+            i = end;
+        } else if word(c[i]) || c[i] == '\'' {
+            let start = i;
+            i += 1 + c[i + 1..].iter().take_while(|&&ch| word(ch)).count();
+            let text = c[start..i].iter().collect();
+            out.push(Token { text, line });
+        } else {
+            let two = c[i] == ':' && c.get(i + 1) == Some(&':');
+            if !c[i].is_whitespace() {
+                let text = if two { "::".into() } else { c[i].to_string() };
+                out.push(Token { text, line });
+            }
+            line += usize::from(c[i] == '\n');
+            i += 1 + usize::from(two);
+        }
+    }
+    out
+}
+
+/// Where a comment, a string or a character literal that starts at `i` ends (one past
+/// it; a line comment before its newline), if one starts there.
+fn skipped_end(c: &[char], i: usize) -> Option<usize> {
+    let at = |k: usize| c.get(i + k).copied().unwrap_or(' ');
+    let after_word = i > 0 && (c[i - 1].is_alphanumeric() || c[i - 1] == '_');
+    let find = |from: usize, pattern: &[char]| {
+        (from..c.len())
+            .find(|&j| c[j..].starts_with(pattern))
+            .map_or(c.len(), |j| j + pattern.len())
+    };
+    let hashes = (1..).take_while(|&k| at(k) == '#').count();
+    match (c[i], at(1)) {
+        ('/', '/') => Some(find(i, &['\n']) - 1),
+        ('/', '*') => Some(find(i + 2, &['*', '/'])),
+        ('"', _) => Some(quoted_end(c, i + 1, '"')),
+        ('b', '"' | '\'') if !after_word => Some(quoted_end(c, i + 2, at(1))),
+        ('r' | 'b', '#' | '"') if !after_word && at(1 + hashes) == '"' => {
+            let close: Vec<char> = std::iter::once('"').chain(vec!['#'; hashes]).collect();
+            Some(find(i + 2 + hashes, &close))
+        }
+        ('\'', '\\') => Some(quoted_end(c, i + 1, '\'')),
+        ('\'', _) if at(2) == '\'' => Some(i + 3),
+        _ => None,
+    }
+}
+
+/// One past the `quote` that closes a literal whose text starts at `j`.
+fn quoted_end(c: &[char], mut j: usize, quote: char) -> usize {
+    while j < c.len() {
+        match c[j] {
+            '\\' => j += 2,
+            ch if ch == quote => return j + 1,
+            _ => j += 1,
+        }
+    }
+    c.len()
+}
+
+/// The module a source file is: `src/tui/app.rs` and `src/tui/app/mod.rs` are `tui::app`.
+fn module_of(src: &Path, file: &Path) -> Vec<String> {
+    let relative = file.strip_prefix(src).unwrap().with_extension("");
+    let mut path: Vec<String> = relative
+        .iter()
+        .map(|s| s.to_string_lossy().into_owned())
+        .collect();
+    if matches!(path.last().map(String::as_str), Some("mod" | "lib")) {
+        path.pop();
+    }
+    path
+}
+
+/// The file a module path lands in: the deepest existing `a/b.rs` or `a/b/mod.rs` along
+/// it (what is left is an item of that file, or an inline module in it).
+fn file_of(src: &Path, path: &[String]) -> PathBuf {
+    let (mut dir, mut file) = (src.to_path_buf(), src.join("lib.rs"));
+    for segment in path {
+        let flat = dir.join(format!("{segment}.rs"));
+        let folder = dir.join(segment).join("mod.rs");
+        file = match (flat.is_file(), folder.is_file()) {
+            (true, _) => flat,
+            (_, true) => folder,
+            _ => break,
+        };
+        dir = dir.join(segment);
+    }
+    file
+}
+
+/// The inline modules (`mod tests { ... }`) open at each token, and every module declared
+/// in the file (`mod x;` or `mod x { ... }`), as paths below the file's module.
+fn inline_modules(t: &[Token]) -> (Vec<Vec<String>>, Vec<Vec<String>>) {
+    let (mut open, mut declared, mut at) = (Vec::new(), Vec::new(), Vec::new());
+    let mut stack: Vec<(String, usize)> = Vec::new();
+    let mut depth = 0;
+    for (i, token) in t.iter().enumerate() {
+        let names = |s: &[(String, usize)]| s.iter().map(|(n, _)| n.clone()).collect();
+        at.push(names(&stack));
+        match token.text.as_str() {
+            "mod" if i + 2 < t.len() => {
+                let mut path: Vec<String> = names(&stack);
+                path.push(t[i + 1].text.clone());
+                if t[i + 2].text == "{" {
+                    open.push((t[i + 1].text.clone(), depth + 1));
+                }
+                declared.push(path);
+            }
+            "{" => {
+                depth += 1;
+                if let Some(module) = open.pop() {
+                    stack.push(module);
+                }
+            }
+            "}" => {
+                if stack.last().is_some_and(|(_, d)| *d == depth) {
+                    stack.pop();
+                }
+                depth -= 1;
+            }
+            _ => {}
+        }
+    }
+    (at, declared)
+}
+
+/// The paths of a `use` tree starting at `i` (after `use`), each whole from its root.
+fn use_tree(t: &[Token], i: &mut usize, prefix: Vec<String>, out: &mut Vec<Vec<String>>) {
+    let mut path = prefix;
+    while *i < t.len() {
+        match t[*i].text.as_str() {
+            "{" => {
+                *i += 1;
+                while *i < t.len() && t[*i].text != "}" {
+                    use_tree(t, i, path.clone(), out);
+                    *i += usize::from(t[*i].text == ",");
+                }
+                *i += 1;
+                return;
+            }
+            "as" | "*" => {
+                *i += if t[*i].text == "as" { 2 } else { 1 };
+                break;
+            }
+            "," | ";" | "}" => break,
+            "::" => *i += 1,
+            word => {
+                path.push(word.to_string());
+                *i += 1;
+            }
+        }
+    }
+    out.push(path);
+}
+
+/// Where a path written in module `here` points from the crate's root, if it starts at
+/// the crate (`crate`, `super`, `self`, or a module declared inside `here`).
+fn absolute(path: &[String], here: &[String], declared: &[Vec<String>]) -> Option<Vec<String>> {
+    let first = path.first()?.as_str();
+    let child = [here, &path[..1]].concat();
+    let mut whole = match first {
+        "crate" => Vec::new(),
+        "self" | "super" => here.to_vec(),
+        _ if declared.contains(&child) => here.to_vec(),
+        _ => return None,
+    };
+    let skip = usize::from(first == "crate");
+    for segment in &path[skip..] {
+        match segment.as_str() {
+            "super" => drop(whole.pop()),
+            "self" => {}
+            s => whole.push(s.to_string()),
+        }
+    }
+    Some(whole)
+}
+
+/// Each path a source names into the crate: from `use` items and from paths written
+/// inline (`crate::a::f(...)`, `super::X`, `child::Y`), with its line, from the crate's root.
+fn named_paths(src: &Path, file: &Path) -> Vec<(Vec<String>, usize)> {
+    let t = tokens(&std::fs::read_to_string(file).unwrap());
+    let module = module_of(src, file);
+    let (open, declared) = inline_modules(&t);
+    let declared: Vec<Vec<String>> = declared.iter().map(|d| [&module[..], d].concat()).collect();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < t.len() {
+        let here = [&module[..], &open[i][..]].concat();
+        let (start, mut paths) = (i, Vec::new());
+        if t[i].text == "use" {
+            i += 1;
+            use_tree(&t, &mut i, Vec::new(), &mut paths);
+        } else if t.get(i + 1).is_some_and(|n| n.text == "::") && (i == 0 || t[i - 1].text != "::")
+        {
+            let mut path = vec![t[i].text.clone()];
+            while t.get(i + 1).is_some_and(|n| n.text == "::") && i + 2 < t.len() {
+                path.push(t[i + 2].text.clone());
+                i += 2;
+            }
+            paths.push(path);
+        }
+        for path in paths {
+            if let Some(whole) = absolute(&path, &here, &declared) {
+                out.push((whole, t[start].line));
+            }
+        }
+        i += 1;
+    }
+    out
+}
+
+/// The groups of files that import each other in a loop (strongly connected
+/// components of more than one file), by Tarjan's algorithm.
+fn circles(edges: &BTreeMap<PathBuf, BTreeSet<PathBuf>>) -> Vec<Vec<PathBuf>> {
+    struct Walk<'a> {
+        edges: &'a BTreeMap<PathBuf, BTreeSet<PathBuf>>,
+        index: BTreeMap<&'a PathBuf, (usize, usize)>,
+        stack: Vec<&'a PathBuf>,
+        found: Vec<Vec<PathBuf>>,
+    }
+    fn visit<'a>(w: &mut Walk<'a>, v: &'a PathBuf) {
+        let n = w.index.len();
+        w.index.insert(v, (n, n));
+        w.stack.push(v);
+        for u in w.edges.get(v).into_iter().flatten() {
+            if !w.index.contains_key(u) {
+                visit(w, u);
+                let low = w.index[u].1.min(w.index[v].1);
+                w.index.get_mut(v).unwrap().1 = low;
+            } else if w.stack.contains(&u) {
+                let low = w.index[u].0.min(w.index[v].1);
+                w.index.get_mut(v).unwrap().1 = low;
+            }
+        }
+        if w.index[v].0 == w.index[v].1 {
+            let at = w.stack.iter().rposition(|x| *x == v).unwrap();
+            let group: Vec<PathBuf> = w.stack.drain(at..).cloned().collect();
+            if group.len() > 1 {
+                w.found.push(group);
+            }
+        }
+    }
+    let mut w = Walk {
+        edges,
+        index: BTreeMap::new(),
+        stack: Vec::new(),
+        found: Vec::new(),
+    };
+    for v in edges.keys() {
+        if !w.index.contains_key(v) {
+            visit(&mut w, v);
+        }
+    }
+    w.found
+}
+
+/// The library's source files (`main.rs` is another crate: nothing can import it).
+fn library_sources() -> (PathBuf, Vec<PathBuf>) {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let mut files = Vec::new();
+    sources(&src, &mut files);
+    files.retain(|f| f != &src.join("main.rs"));
+    files.sort();
+    (src, files)
+}
+
+#[test]
+fn no_source_file_imports_itself_through_others() {
+    let (src, files) = library_sources();
+    let mut edges: BTreeMap<PathBuf, BTreeSet<PathBuf>> = BTreeMap::new();
+    let mut why: BTreeMap<(PathBuf, PathBuf), String> = BTreeMap::new();
+    for file in &files {
+        let from = file.strip_prefix(&src).unwrap().to_path_buf();
+        for (path, line) in named_paths(&src, file) {
+            let to = file_of(&src, &path)
+                .strip_prefix(&src)
+                .unwrap()
+                .to_path_buf();
+            if to != from {
+                edges.entry(from.clone()).or_default().insert(to.clone());
+                why.entry((from.clone(), to))
+                    .or_insert_with(|| format!("line {line}: {}", path.join("::")));
+            }
+        }
+    }
+    assert!(
+        edges.len() > 50,
+        "the graph was read: {} files",
+        edges.len()
+    );
+    let found = circles(&edges);
+    let report: Vec<String> = found
+        .iter()
+        .map(|group| {
+            let ties = group.iter().flat_map(|a| {
+                group.iter().filter_map(|b| {
+                    let w = why.get(&(a.clone(), b.clone()))?;
+                    Some(format!("    {} -> {} ({w})", a.display(), b.display()))
+                })
+            });
+            let names: Vec<String> = group.iter().map(|f| f.display().to_string()).collect();
+            format!(
+                "  {}\n{}",
+                names.join(", "),
+                ties.collect::<Vec<_>>().join("\n")
+            )
+        })
+        .collect();
+    assert!(found.is_empty(), "import cycles:\n{}", report.join("\n"));
 }
 
 const TRACK: &str = "docs/video/paper-b4.9-tracker.txt";
@@ -234,4 +562,127 @@ fn pinning_keeps_the_snapshots_analyses_and_an_edit_starts_them_over() {
     press(&mut a, "u");
     a.lab.wait();
     assert!(a.lab.runs() > edited);
+}
+
+/// `simulate` on these options, in `format`.
+fn simulate(scene: &SceneArgs, format: Format) -> String {
+    let args = SimulateArgs {
+        format,
+        sample: None,
+        method: Method::Exact,
+        dt: None,
+        tol: None,
+        epsilon: None,
+        output: None,
+    };
+    groovelab::cli::simulate(scene, &args).unwrap()
+}
+
+#[test]
+fn simulate_prints_the_apps_snapshot_of_the_same_options() {
+    let mut cases: Vec<SceneArgs> = Preset::all()
+        .0
+        .iter()
+        .map(|p| common::scene_of(&p.name, SceneSpec::default()))
+        .collect();
+    cases.push(scene(SceneSpec::default().with(Key::Width, 0.04)));
+    cases.push(common::scene_of(
+        "paper-b3.5",
+        SceneSpec::default().with(Key::Mu, 0.1),
+    ));
+    cases.push(common::scene_of(
+        "critical",
+        SceneSpec::default().with(Key::TEnd, 0.5),
+    ));
+    for args in &cases {
+        let app = rendered(args, &data(&[]), None, None, library());
+        let now = &app.lab;
+        let json: Value = serde_json::from_str(&simulate(args, Format::Json)).unwrap();
+        let name = args.preset.as_deref().unwrap();
+        // The same span (a preset's data reach past the motion: paper-b3.5's to 0.64 s),
+        // hence the same final state and the same events.
+        let same = |at: &Value, x: f64| {
+            // The printed number read back: within an ulp or two (serde_json's parse
+            // need not round-trip the last bit).
+            let y = at.as_f64().unwrap();
+            assert!(
+                (y - x).abs() <= 4.0 * f64::EPSILON * x.abs(),
+                "{name}: {y} vs {x}"
+            );
+        };
+        same(&json["span"]["t_start"], now.span.t_start);
+        same(&json["span"]["t_end"], now.solution.t_end);
+        let last = now.solution.at(now.solution.t_end);
+        same(&json["final"]["left"]["x"], last.left.x);
+        same(&json["final"]["right"]["v"], last.right.v);
+        let events = json["events"].as_array().unwrap().len();
+        assert_eq!(events, now.solution.visible_events().count(), "{name}");
+        // The table's story is the snapshot's: its verdict against the same rest band.
+        let table = simulate(args, Format::Table);
+        let verdict = table.lines().find_map(|l| l.strip_prefix("verdict  "));
+        assert_eq!(
+            verdict.map(str::to_string),
+            now.rest_band.map(|_| now.story.verdict.text("±")),
+            "{name}"
+        );
+    }
+}
+
+#[test]
+fn u_after_picking_a_preset_brings_back_the_preset_its_edits_and_data() {
+    // The command line's b and two edits on paper-b4.9 with its own data.
+    let flags = SceneSpec::default().with(Key::Width, 0.046);
+    let mut a = rendered(&scene(flags), &data(&[]), None, None, library());
+    let fresh = a.lab.scene;
+    press(&mut a, "left");
+    press(&mut a, "down down down enter 0 . 3 enter");
+    let edited = (a.lab.scene, a.lab.span_end);
+    let b49_data = a.lab.measured().unwrap().t.clone();
+    // The picker opens on paper-b4.9; the one above it is paper-b4.4.
+    press(&mut a, "p up enter");
+    let b44 = Preset::load("paper-b4.4").unwrap();
+    assert_eq!(a.lab.preset().name, "paper-b4.4");
+    assert_eq!(a.lab.value(Key::Width), 0.044, "the preset alone: no flag");
+    assert_eq!(
+        a.lab.measured().unwrap().t,
+        b44.measured.as_ref().unwrap().t
+    );
+    // An edit on the picked preset, and a reset to it, are undone first.
+    press(&mut a, "right R");
+    assert_eq!(
+        a.status,
+        Status::Info("reset to preset paper-b4.4 (u undoes it)".into()),
+        "the command line's values are not in force after a pick"
+    );
+    press(&mut a, "u u");
+    assert_eq!(a.lab.preset().name, "paper-b4.4");
+    assert_eq!(a.lab.value(Key::Width), 0.044);
+    // Then the pick: the preset before, its edits and its data.
+    press(&mut a, "u");
+    assert!(
+        matches!(&a.status, Status::Info(s) if s.starts_with("undone: preset paper-b4.4: back to paper-b4.9")),
+        "{:?}",
+        a.status
+    );
+    assert_eq!(a.lab.preset().name, "paper-b4.9");
+    assert_eq!((a.lab.scene, a.lab.span_end), edited);
+    assert_eq!(a.lab.measured().unwrap().t, b49_data);
+    // The older steps survive: μ_k, then b, then nothing.
+    press(&mut a, "u u");
+    assert_eq!(a.lab.scene, fresh);
+    assert_eq!(a.lab.value(Key::Width), 0.046, "the command line's b again");
+    press(&mut a, "u");
+    assert_eq!(a.status, Status::Info("nothing to undo".into()));
+}
+
+#[test]
+fn u_after_picking_a_preset_keeps_the_students_data() {
+    let d = data(&[PathBuf::from(TRACK)]);
+    let mut a = rendered(&scene(SceneSpec::default()), &d, None, None, library());
+    let before = a.lab.scene;
+    press(&mut a, "p up enter u");
+    assert_eq!(a.lab.preset().name, "paper-b4.9");
+    assert_eq!(a.lab.scene, before);
+    assert!(a.lab.measured().unwrap().x.is_some(), "still the track");
+    assert_eq!(a.lab.own_data().unwrap().name, TRACK);
 }

@@ -11,6 +11,7 @@ mod exports;
 mod fit;
 mod forces;
 mod fuzz;
+mod headless;
 mod lab_data;
 mod lab_jobs;
 mod layers;

@@ -5,7 +5,8 @@
 use groovelab::cli::DataArgs;
 use groovelab::lab::{Lab, SpanEnd};
 use groovelab::physics::solution::EventKind;
-use groovelab::settings::params::{Key, SceneSpec};
+use groovelab::settings::params::Key;
+use groovelab::settings::spec::SceneSpec;
 use groovelab::study::preset::{Origin, Preset};
 use groovelab::tui::app::{App, Library, Status};
 use groovelab::tui::theme::{Glyphs, Theme};
@@ -498,7 +499,7 @@ fn the_energy_chart_splits_the_initial_energy_at_every_sample() {
     let mut a = app("inelastic");
     press(&mut a, "e");
     assert!(a.show_energy);
-    let split = a.energies(100);
+    let split = a.view_cache.energies(&a.lab, 100);
     let total = split[0].1.total();
     assert!(total > 0.0);
     for (t, e) in split.iter() {
@@ -705,4 +706,81 @@ fn unpinning_keeps_the_cursor_inside_the_span() {
         sol.t_start,
         sol.t_end
     );
+}
+
+/// The app on unequal-speeds (a preset without data) with a velocity file of `rows` rows of the user's own: a
+/// smooth decay with one spike.
+fn with_big_series(rows: usize) -> App {
+    use groovelab::lab::{OwnData, Settings};
+    use groovelab::study::measured::{Measured, Series};
+    let t: Vec<f64> = (0..rows)
+        .map(|i| -0.2 + 1.2 * i as f64 / (rows - 1) as f64)
+        .collect();
+    let mut v_cm: Vec<f64> = t.iter().map(|t| 0.6 * (-2.0 * t.abs()).exp()).collect();
+    v_cm[rows / 3] = 1.5;
+    let v_t = t.iter().map(|t| -0.3 * (-3.0 * t.abs()).exp()).collect();
+    let m = Measured {
+        t,
+        v_cm,
+        v_t,
+        ..Measured::default()
+    };
+    let own = OwnData {
+        name: "big.csv".into(),
+        series: Series::Velocities(std::sync::Arc::new(m)),
+    };
+    let settings = Settings::new(
+        Preset::load("unequal-speeds").unwrap(),
+        SceneSpec::default(),
+    );
+    App::new(Lab::new(settings, Some(own)).unwrap(), no_user_presets())
+}
+
+#[test]
+fn a_million_measured_rows_draw_as_a_few_points_per_column_thinned_once() {
+    let theme = Theme::new(Glyphs::UNICODE, true);
+    let mut a = with_big_series(1_000_000);
+    let drawn = |a: &App, (w, h): (u16, u16)| {
+        let screen = view::to_text(a, w, h, &theme);
+        (screen, a.view_cache.chart_points.get())
+    };
+    let mut without = a.clone();
+    without.lab.drop_data();
+    for size in [(120, 40), (200, 60)] {
+        let columns = view::layout(Rect::new(0, 0, size.0, size.1))
+            .unwrap()
+            .chart
+            .width as usize;
+        let (_, bare) = drawn(&without, size);
+        let before = a.view_cache.marks_thinned.get();
+        let (screen, points) = drawn(&a, size);
+        assert!(screen.contains("big.csv"), "the user's series is drawn");
+        // The exact curves draw about 4 points per column each; the million rows add
+        // no more than a few per column (one per cell they mark: a smooth curve).
+        assert!(
+            points - bare <= 4 * columns,
+            "{size:?}: {} measured points drawn for {columns} columns",
+            points - bare
+        );
+        assert_eq!(a.view_cache.marks_thinned.get(), before + 1, "thinned once");
+        // Nothing changed, or only the time: no thinning again, the same points.
+        let again = drawn(&a, size);
+        a.seek(0.3);
+        let moved = drawn(&a, size);
+        assert_eq!((again.1, moved.1), (points, points));
+        assert_eq!(a.view_cache.marks_thinned.get(), before + 1, "not again");
+        a.seek(a.lab.solution.t_start);
+    }
+    // The spike survives thinning: the y axis reaches it (1.5 m/s, the largest value
+    // drawn), and it is marked on the plot's top row.
+    let (screen, _) = drawn(&a, (120, 40));
+    let mut rows = screen.lines().skip_while(|l| !l.contains("v (m/s)"));
+    let top = rows.nth(1).unwrap();
+    let plot = &top[..top.find("││").unwrap()];
+    assert!(plot.contains('×'), "{screen}");
+    // An edit is a new snapshot: its points are thinned again.
+    let before = a.view_cache.marks_thinned.get();
+    press(&mut a, "right");
+    drawn(&a, (120, 40));
+    assert_eq!(a.view_cache.marks_thinned.get(), before + 1);
 }

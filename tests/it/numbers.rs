@@ -6,7 +6,8 @@
 use groovelab::cli::{self, DataArgs};
 use groovelab::lab::jobs::State;
 use groovelab::physics::story::{After, after_first_impact};
-use groovelab::settings::params::{Key, SceneSpec};
+use groovelab::settings::params::Key;
+use groovelab::settings::spec::SceneSpec;
 use groovelab::tui::app::{App, ROWS};
 use groovelab::tui::theme::{Glyphs, Theme};
 use groovelab::tui::{keys, replay, view};

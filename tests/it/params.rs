@@ -6,7 +6,8 @@
 use clap::{CommandFactory, Parser};
 use groovelab::cli::Cli;
 use groovelab::physics::scene::{Scene, Span};
-use groovelab::settings::params::{Fallback, Key, PARAMS, Param, SceneSpec};
+use groovelab::settings::params::{Fallback, Key, PARAMS, Param};
+use groovelab::settings::spec::SceneSpec;
 use groovelab::settings::units::{parse_quantity, parse_typed, show};
 use groovelab::study::preset::{self, Origin, Preset, to_toml};
 use proptest::prelude::*;

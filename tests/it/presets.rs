@@ -5,7 +5,7 @@
 use groovelab::cli::{Format, SimulateArgs, simulate};
 use groovelab::physics::closed_form as cf;
 use groovelab::physics::model;
-use groovelab::settings::params::SceneSpec;
+use groovelab::settings::spec::SceneSpec;
 use groovelab::study::preset::Preset;
 use serde_json::Value;
 

@@ -6,7 +6,8 @@ use crate::common;
 use groovelab::physics::derived::Derived;
 use groovelab::physics::engine::solve;
 use groovelab::physics::story::{After, after_first_impact};
-use groovelab::settings::params::{Key, SceneSpec};
+use groovelab::settings::params::Key;
+use groovelab::settings::spec::SceneSpec;
 use groovelab::study::preset::Preset;
 
 fn groovelab(args: &[&str]) -> String {

@@ -6,7 +6,8 @@ use std::sync::atomic::AtomicBool;
 
 use groovelab::physics::closed_form;
 use groovelab::physics::derived::Regime;
-use groovelab::settings::params::{Key, SceneSpec};
+use groovelab::settings::params::Key;
+use groovelab::settings::spec::SceneSpec;
 use groovelab::study::preset::Preset;
 use groovelab::study::sweep::{self, Point, SweepError};
 

@@ -4,7 +4,8 @@
 use groovelab::cli::DataArgs;
 use groovelab::lab::jobs::State;
 use groovelab::physics::derived::Regime;
-use groovelab::settings::params::{Key, SceneSpec};
+use groovelab::settings::params::Key;
+use groovelab::settings::spec::SceneSpec;
 use groovelab::study::preset::Preset;
 use groovelab::tui::app::{App, Library, Mode, ROWS, Status, View};
 use groovelab::tui::keys;
@@ -709,7 +710,7 @@ fn the_methods_view_of_a_long_span_is_cut_and_says_where() {
     use groovelab::study::compare::WINDOW;
     let p = Preset::load("paper-b4.9").unwrap();
     let (_, span) = p.spec.resolve().unwrap();
-    let flags = groovelab::settings::params::SceneSpec::default()
+    let flags = groovelab::settings::spec::SceneSpec::default()
         .with(groovelab::settings::params::Key::Mu, 1e-6);
     let lab = groovelab::lab::Lab::new(groovelab::lab::Settings::new(p, flags), None).unwrap();
     let mut a = App::new(lab, no_user_presets());

@@ -2,7 +2,8 @@
 //! as the app's CSV export writes them (`study::export::scene_comments`).
 
 use super::options::DataError;
-use crate::settings::params::{Key, SceneSpec};
+use crate::settings::params::Key;
+use crate::settings::spec::SceneSpec;
 use crate::settings::units::parse_quantity;
 use crate::study::export::SCENE_COMMENT;
 

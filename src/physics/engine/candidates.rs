@@ -2,47 +2,9 @@
 //! can end (rolling starts, pure gliding or slipping, a stop, an impact) as a
 //! closed-form root, and how a non-impact event changes a ball when it comes.
 
-use super::Engine;
+use super::{Candidate, Candidates, Engine};
 use crate::physics::model::{BallState, Phase, slip};
 use crate::physics::solution::{EventKind, Who};
-
-/// The possible next events of a segment, on the stack: at most three per ball
-/// (rolling, pure gliding, pure slipping) and the impact.
-#[derive(Clone, Copy, Debug)]
-pub(super) struct Candidates {
-    items: [(f64, Candidate); 7],
-    len: usize,
-}
-
-impl Default for Candidates {
-    fn default() -> Self {
-        Candidates {
-            items: [(0.0, Candidate::Impact); 7],
-            len: 0,
-        }
-    }
-}
-
-impl Candidates {
-    pub(super) fn push(&mut self, c: (f64, Candidate)) {
-        self.items[self.len] = c;
-        self.len += 1;
-    }
-
-    pub(super) fn as_slice(&self) -> &[(f64, Candidate)] {
-        &self.items[..self.len]
-    }
-}
-
-/// A possible next event of the current segment.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) enum Candidate {
-    Roll(usize),
-    Glide(usize),
-    Slip(usize),
-    Stop(usize),
-    Impact,
-}
 
 impl Engine {
     /// Applies a non-impact event to ball `i`; `before` is the segment's start state.
@@ -138,7 +100,7 @@ impl Engine {
 
 /// Time until the gap `g0 + w τ + ½ c τ²` closes (reaches 0 while shrinking), if ever.
 /// Roots by the cancellation-free pair `q / (c/2)` and `g0 / q`.
-pub fn closing_time(g0: f64, w: f64, c: f64) -> Option<f64> {
+fn closing_time(g0: f64, w: f64, c: f64) -> Option<f64> {
     let closing = |t: f64| t > 0.0 && t.is_finite() && w + c * t <= 0.0;
     if c == 0.0 {
         return (w < 0.0).then(|| -g0 / w).filter(|&t| closing(t));

@@ -15,10 +15,6 @@ mod candidates;
 mod contact;
 mod zeno;
 
-pub use candidates::closing_time;
-use candidates::{Candidate, Candidates};
-use zeno::ImpactRecord;
-
 /// Speeds below this fraction of the scene's largest speed count as zero. At `b = b*`
 /// the rolling speed after the impact is zero up to rounding (~1e-16 relative).
 pub const NEGLIGIBLE_SPEED: f64 = 1e-12;
@@ -34,6 +30,65 @@ pub fn solve(scene: &Scene, span: &Span) -> Solution {
     let mut engine = Engine::new(scene);
     engine.run(span.t_start);
     engine.into_solution(scene, span)
+}
+
+/// Impact cycles confirmed before the series is summed even when what remains of it is
+/// not yet negligible (see `zeno`), bridging the rest (see
+/// [`Segment::bridge`](crate::physics::solution::Segment::bridge)). Only cycle ratios
+/// within ~1e-2 of 1 (b within ~1e-3 of 2R) need that many.
+const CYCLES_BEFORE_SUMMING: usize = 5000;
+
+/// The possible next events of a segment, on the stack: at most three per ball
+/// (rolling, pure gliding, pure slipping) and the impact.
+#[derive(Clone, Copy, Debug)]
+struct Candidates {
+    items: [(f64, Candidate); 7],
+    len: usize,
+}
+
+impl Default for Candidates {
+    fn default() -> Self {
+        Candidates {
+            items: [(0.0, Candidate::Impact); 7],
+            len: 0,
+        }
+    }
+}
+
+impl Candidates {
+    fn push(&mut self, c: (f64, Candidate)) {
+        self.items[self.len] = c;
+        self.len += 1;
+    }
+
+    fn as_slice(&self) -> &[(f64, Candidate)] {
+        &self.items[..self.len]
+    }
+}
+
+/// A possible next event of the current segment.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Candidate {
+    Roll(usize),
+    Glide(usize),
+    Slip(usize),
+    Stop(usize),
+    Impact,
+}
+
+/// An impact as the series detector needs it.
+#[derive(Clone, Copy, Debug)]
+struct ImpactRecord {
+    /// Time since the previous impact.
+    cycle: f64,
+    /// Closing speed just before.
+    closing: f64,
+    /// Each ball's velocity and phase as it arrived.
+    arrival: [(f64, Phase); 2],
+    /// Everything right after, for summing the series.
+    state: [BallState; 2],
+    angle: [f64; 2],
+    ledger: Ledger,
 }
 
 struct Engine {
@@ -122,7 +177,7 @@ impl Engine {
             history: Vec::with_capacity(8),
             since_impact: 0.0,
             geometric_cycles: 0,
-            cycle_budget: zeno::CYCLES_BEFORE_SUMMING,
+            cycle_budget: CYCLES_BEFORE_SUMMING,
             impacts: 0,
             accumulation: None,
             truncated: false,

@@ -188,7 +188,7 @@ fn nearly_wedged_pairs_rest_touching_at_the_accumulation_point() {
     for width in [0.054995, 0.054999, 0.0549999, 2.0 * r * (1.0 - 5e-10)] {
         for e in [1.0, 0.6] {
             let sc = scene(width, 0.17, e, 0.0, (0.167, 0.167), (0.7928, 0.7928));
-            for budget in [50, zeno::CYCLES_BEFORE_SUMMING] {
+            for budget in [50, CYCLES_BEFORE_SUMMING] {
                 let sol = solve_with_budget(&sc, budget);
                 let ctx = format!("b = {width}, e = {e}, budget {budget}");
                 assert!(!sol.truncated, "{ctx}");
@@ -248,7 +248,7 @@ fn the_summed_tail_does_not_depend_on_the_budget() {
         (0.0549, (0.167, 0.167), (0.7928, 0.3), 0.9),
     ] {
         let sc = scene(width, 0.17, e, 0.0, masses, v0);
-        let reference = solve_with_budget(&sc, zeno::CYCLES_BEFORE_SUMMING);
+        let reference = solve_with_budget(&sc, CYCLES_BEFORE_SUMMING);
         let last = reference.last_event_time();
         let end = reference.at(last + 1.0);
         for budget in [20, 200] {

@@ -2,7 +2,7 @@
 //! (physics.md), summing it to its accumulation point, and ending chatter that has
 //! become vanishingly weak.
 
-use super::Engine;
+use super::{Engine, ImpactRecord};
 use crate::physics::model::{BallState, Phase};
 use crate::physics::solution::{EventKind, Ledger, SeriesSum, Who};
 
@@ -16,27 +16,9 @@ const CHATTER_SPEED: f64 = 1e-9;
 /// the geometric series of physics.md, which is then summed.
 const GEOMETRIC_AGREEMENT: f64 = 1e-9;
 
-/// The series is summed once what remains of it is this short against the time so far…
+/// The series is summed once what remains of it is this short against the time so far,
+/// or after the engine's cycle budget (`CYCLES_BEFORE_SUMMING`) confirmed it.
 const REMAINDER_NEGLIGIBLE: f64 = 1e-9;
-/// …or after this many cycles confirmed it, bridging the rest (see
-/// [`Segment::bridge`](crate::physics::solution::Segment::bridge)). Only cycle ratios
-/// within ~1e-2 of 1 (b within ~1e-3 of 2R) need that many.
-pub(super) const CYCLES_BEFORE_SUMMING: usize = 5000;
-
-/// An impact as the series detector needs it.
-#[derive(Clone, Copy, Debug)]
-pub(super) struct ImpactRecord {
-    /// Time since the previous impact.
-    pub(super) cycle: f64,
-    /// Closing speed just before.
-    pub(super) closing: f64,
-    /// Each ball's velocity and phase as it arrived.
-    pub(super) arrival: [(f64, Phase); 2],
-    /// Everything right after, for summing the series.
-    pub(super) state: [BallState; 2],
-    pub(super) angle: [f64; 2],
-    pub(super) ledger: Ledger,
-}
 
 impl Engine {
     pub(super) fn kinetic(&self, state: &[BallState; 2]) -> f64 {
@@ -192,46 +174,7 @@ impl Engine {
             0.0
         };
         if remaining > 0.0 {
-            // The bridge stands for infinitely many ever smaller cycles, each a scaled
-            // copy of the last: cycle times and speeds shrink by the same ratio, so the
-            // spins fall linearly in time to their limits. A long bridge (`averaged`)
-            // moves with the cycle averages (the real velocities swing about them, each
-            // bounce less than the last resolved one), from the last impact's places to
-            // the summed limit places, ending at the limit velocity. A negligible one
-            // just goes on linearly from the last impact.
-            let now = self.state;
-            let mut speeds = [now[0].v, now[1].v];
-            for i in 0..2 {
-                let start = if averaged {
-                    // A cycle's mean velocity lies between the speeds the ball swings
-                    // between; the bound also keeps rounding in the places (where the
-                    // bridge moves the balls by less than that) from making a speed.
-                    let (lo, hi) = (now[i].v.min(state[i].v), now[i].v.max(state[i].v));
-                    (2.0 * (state[i].x - now[i].x) / remaining - state[i].v).clamp(lo, hi)
-                } else {
-                    state[i].x = now[i].x + 0.5 * (now[i].v + state[i].v) * remaining;
-                    now[i].v
-                };
-                speeds[i] = start;
-            }
-            let spins = if averaged {
-                self.bridge_spins(&now, speeds, &state)
-            } else {
-                [now[0].u, now[1].u]
-            };
-            let r = self.groove.k * self.radius;
-            for i in 0..2 {
-                self.state[i].v = speeds[i];
-                self.state[i].u = spins[i];
-                self.accel[i] = (
-                    (state[i].v - speeds[i]) / remaining,
-                    (state[i].u - spins[i]) / remaining,
-                );
-                if spins[i] != now[i].u {
-                    // The spin angle goes on from the bridge, not from the summed limit.
-                    angle[i] = self.angle[i] + 0.5 * (spins[i] + state[i].u) * remaining / r;
-                }
-            }
+            self.start_bridge(remaining, &mut state, &mut angle, averaged);
         }
         let lost = energy_now - self.kinetic(&state);
         let ledger = split_losses(&self.ledger, &estimate, lost);
@@ -261,6 +204,58 @@ impl Engine {
         // Whether the pair now presses is recorded by the caller, after this event.
         self.settle();
         self.record(&[(kind, Who::Both)]);
+    }
+
+    /// Sets the state and accelerations of the bridge over the last `remaining`
+    /// seconds of a series to the limit `state` (whose places a short bridge sets, and
+    /// whose spin `angle` an averaged one may).
+    fn start_bridge(
+        &mut self,
+        remaining: f64,
+        state: &mut [BallState; 2],
+        angle: &mut [f64; 2],
+        averaged: bool,
+    ) {
+        // The bridge stands for infinitely many ever smaller cycles, each a scaled
+        // copy of the last: cycle times and speeds shrink by the same ratio, so the
+        // spins fall linearly in time to their limits. A long bridge (`averaged`)
+        // moves with the cycle averages (the real velocities swing about them, each
+        // bounce less than the last resolved one), from the last impact's places to
+        // the summed limit places, ending at the limit velocity. A negligible one
+        // just goes on linearly from the last impact.
+        let now = self.state;
+        let mut speeds = [now[0].v, now[1].v];
+        for i in 0..2 {
+            let start = if averaged {
+                // A cycle's mean velocity lies between the speeds the ball swings
+                // between; the bound also keeps rounding in the places (where the
+                // bridge moves the balls by less than that) from making a speed.
+                let (lo, hi) = (now[i].v.min(state[i].v), now[i].v.max(state[i].v));
+                (2.0 * (state[i].x - now[i].x) / remaining - state[i].v).clamp(lo, hi)
+            } else {
+                state[i].x = now[i].x + 0.5 * (now[i].v + state[i].v) * remaining;
+                now[i].v
+            };
+            speeds[i] = start;
+        }
+        let spins = if averaged {
+            self.bridge_spins(&now, speeds, &state)
+        } else {
+            [now[0].u, now[1].u]
+        };
+        let r = self.groove.k * self.radius;
+        for i in 0..2 {
+            self.state[i].v = speeds[i];
+            self.state[i].u = spins[i];
+            self.accel[i] = (
+                (state[i].v - speeds[i]) / remaining,
+                (state[i].u - spins[i]) / remaining,
+            );
+            if spins[i] != now[i].u {
+                // The spin angle goes on from the bridge, not from the summed limit.
+                angle[i] = self.angle[i] + 0.5 * (spins[i] + state[i].u) * remaining / r;
+            }
+        }
     }
 
     /// The spins an averaged bridge starts with beside its mean speeds `speeds`: the

@@ -5,7 +5,7 @@ use plotters::prelude::*;
 
 use plotters::coord::Shift;
 
-use super::{FigureError, draw_measured_marks, finite_bounds, linear_axis};
+use super::drawing::{FigureError, draw_measured_marks, finite_bounds, linear_axis};
 use crate::physics::scene::Scene;
 use crate::physics::solution::Solution;
 use crate::settings::units::Dimension;
@@ -92,9 +92,9 @@ fn draw_fit(
                 "b = {:.2} {}: model fit mu = {} (2 sigma), line fits mu_cm = {}, mu_t = {}",
                 Dimension::Length.to_display(scene.width),
                 Dimension::Length.display_unit().0,
-                super::with_error(mf.mu, 2.0 * mf.mu_se),
-                super::rounded(fits.line_fit.mu_cm),
-                super::rounded(fits.line_fit.mu_t)
+                super::drawing::with_error(mf.mu, 2.0 * mf.mu_se),
+                super::drawing::rounded(fits.line_fit.mu_cm),
+                super::drawing::rounded(fits.line_fit.mu_t)
             ),
             ("sans-serif", 18),
         )
@@ -215,7 +215,7 @@ fn near(v: f64, (lo, hi): (f64, f64)) -> f64 {
 
 #[cfg(test)]
 mod tests {
-    use super::super::tests::{paper, within_30s};
+    use super::super::drawing::tests::{paper, within_30s};
     use super::*;
 
     #[test]

@@ -3,7 +3,7 @@
 
 use plotters::prelude::*;
 
-use super::{FigureError, linear_axis};
+use super::drawing::{FigureError, linear_axis};
 use crate::physics::scene::Scene;
 
 fn regime_colour(r: crate::physics::derived::Regime) -> RGBColor {

@@ -3,7 +3,7 @@
 
 use plotters::prelude::*;
 
-use super::{Chart, FigureError, draw_measured_marks, linear_axis};
+use super::drawing::{Chart, FigureError, draw_measured_marks, linear_axis};
 use crate::physics::solution::{Snapshot, Solution};
 use crate::settings::units::Dimension;
 use crate::study::measured::series::Measured;
@@ -145,8 +145,8 @@ pub fn run_chart(
                     "{title}: b = {:.2} {unit}, R = {:.2} {unit}, mu_k = {}, e = {}",
                     cm(scene.width),
                     cm(scene.radius),
-                    super::rounded(scene.mu),
-                    super::rounded(scene.restitution),
+                    super::drawing::rounded(scene.mu),
+                    super::drawing::rounded(scene.restitution),
                     unit = Dimension::Length.display_unit().0,
                 ),
                 ("sans-serif", 18),

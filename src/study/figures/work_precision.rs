@@ -3,7 +3,7 @@
 
 use plotters::prelude::*;
 
-use super::{FigureError, finite_bounds, log_axis};
+use super::drawing::{FigureError, finite_bounds, log_axis};
 use crate::methods::Method;
 use crate::physics::scene::Scene;
 use crate::study::compare::Row;
@@ -90,8 +90,8 @@ pub fn work_precision_against(
             "Work-precision, b = {:.2} cm, R = {:.2} cm, mu = {}, e = {}",
             scene.width * 100.0,
             scene.radius * 100.0,
-            super::rounded(scene.mu),
-            super::rounded(scene.restitution)
+            super::drawing::rounded(scene.mu),
+            super::drawing::rounded(scene.restitution)
         );
         let mut chart = ChartBuilder::on(&root)
             .caption(title, ("sans-serif", 20))
@@ -166,7 +166,7 @@ pub fn work_precision_against(
 
 #[cfg(test)]
 mod tests {
-    use super::super::tests::{paper, within_30s};
+    use super::super::drawing::tests::{paper, within_30s};
     use super::*;
     use crate::study::compare::RunStatus;
 

@@ -9,7 +9,8 @@
 use serde::Serialize;
 
 use super::least_squares::{Target, residuals, with};
-use super::{FitError, Free, Scored, scored_fit, thinned};
+use super::model::{Scored, scored_fit, thinned};
+use super::problem::{FitError, Free};
 use crate::physics::scene::Scene;
 use crate::study::Progress;
 use crate::study::measured::series::Measured;

@@ -2,8 +2,8 @@
 //! residuals and the frames they use, and the search (a μ scan, then
 //! Levenberg–Marquardt with numerical derivatives).
 
+use super::problem::{Evals, FitError, Free};
 use super::uncertainty::{Label, clamped, solve};
-use super::{Evals, FitError, Free};
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::Solution;

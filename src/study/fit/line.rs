@@ -3,7 +3,7 @@
 
 use serde::Serialize;
 
-use super::FitError;
+use super::problem::FitError;
 use crate::physics::scene::Scene;
 use crate::study::measured::series::Measured;
 

@@ -2,331 +2,35 @@
 //! the sliding phase (table 1), and least-squares fits of the exact model to every
 //! point — of the velocities (weighted by their uncertainties when known) or of the
 //! tracked positions — with uncertainties and the regime compared with what was seen.
+//! The line fits are in `line`, the model fit in `model` (what it is asked and how it
+//! stops in `problem`), the comparison of models in `choice`; here both fits of a
+//! series are made together.
 
 mod choice;
 mod least_squares;
 mod line;
+mod model;
+mod problem;
 mod regime;
 mod uncertainty;
 
 use serde::Serialize;
 
-use crate::physics::closed_form;
-use crate::physics::derived::{Derived, Regime};
-use crate::physics::engine;
-use crate::physics::scene::{Scene, Span};
-use crate::physics::story::Verdict;
+use crate::physics::scene::Scene;
 use crate::study::Progress;
-use crate::study::measured::series::{Measured, Stencils};
+use crate::study::measured::series::Measured;
 
 pub use choice::{Candidate, Estimate, compare_models};
 pub use line::{
     Line, LineFit, PAPER_TABLE, PaperDisagreement, line, line_fit, paper_disagreements, paper_row,
     sliding_window,
 };
+pub use model::{MAX_MODEL_POINTS, ModelFit, model_fit, position_fit, thinned};
+pub use problem::{FitError, Free};
 pub use regime::{observed_regime, rest_band};
 pub use uncertainty::NotIdentified;
 
-use least_squares::{
-    Target, fit_points, labelled_residuals, least_squares, normal_matrix, nuisance, residuals_of,
-    scan_mu, smooth_jacobian, with,
-};
-use regime::{observed_after, rolling_time};
-use uncertainty::{shared_noise, uncertainties};
-
-/// Most frames the model fit uses. A longer series is thinned to every k-th frame
-/// (the output says so): each model evaluation walks every point used, and a fit
-/// takes a few hundred evaluations, so 1 000 000 frames took 10 s where 20 000 take
-/// a fifth of a second. Video analysis gives 30–1000 frames a second: a real series
-/// stays far below the cap.
-pub const MAX_MODEL_POINTS: usize = 20_000;
-
-/// Why a fit cannot be made.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-pub enum FitError {
-    #[error("{0}")]
-    Data(String),
-    /// The caller's [`Progress`] asked to stop.
-    #[error("cancelled")]
-    Cancelled,
-}
-
-/// Counts model evaluations for [`Progress`] and stops when it asks.
-struct Evals<'a> {
-    progress: &'a dyn Progress,
-    done: std::cell::Cell<u64>,
-}
-
-impl Evals<'_> {
-    /// Before each model evaluation.
-    fn next(&self) -> Result<(), FitError> {
-        let done = self.done.get() + 1;
-        self.done.set(done);
-        self.progress.tick(done, 0);
-        if self.progress.cancelled() {
-            Err(FitError::Cancelled)
-        } else {
-            Ok(())
-        }
-    }
-}
-
-/// Which scene values a model fit may change.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub enum Free {
-    Mu,
-    V0,
-    Restitution,
-    RollingResistance,
-}
-
-impl Free {
-    /// The name on the command line and in JSON.
-    pub fn name(self) -> &'static str {
-        match self {
-            Free::Mu => "mu",
-            Free::V0 => "v0",
-            Free::Restitution => "restitution",
-            Free::RollingResistance => "rolling_resistance",
-        }
-    }
-}
-
-/// The whole-model least-squares fit.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct ModelFit {
-    pub mu: f64,
-    pub mu_se: f64,
-    /// Fitted v0 and e (the scene's when not free) and their standard errors.
-    pub v0: f64,
-    pub v0_se: Option<f64>,
-    pub restitution: f64,
-    pub restitution_se: Option<f64>,
-    /// Root-mean-square residual over all v_cm and v_t points used, m/s.
-    pub rms: f64,
-    pub points: usize,
-    pub regime_predicted: Regime,
-    pub regime_observed: Regime,
-    /// Speeds within ± this of zero count as "at rest" for both regimes, m/s.
-    pub rest_band: f64,
-    /// The model's rolling speed after the impact, m/s (positive back toward).
-    pub v_roll: f64,
-    /// The predicted regime with its margin against the rest band, in words (as the
-    /// app and `simulate` say it): "recollide (v' = +0.028 m/s, within …)".
-    pub verdict: String,
-    /// True when the predicted v' lies inside the rest band.
-    pub indistinguishable_from_rest: bool,
-    /// True when what was observed agrees with the prediction (the same regime, or
-    /// rest where the prediction cannot be told from rest).
-    pub agrees: bool,
-    /// Free values the data cannot pin down, and why (their `_se` is null).
-    pub not_identified: Vec<NotIdentified>,
-    /// Set when the series had more than [`MAX_MODEL_POINTS`] frames: the fit used
-    /// every this-many-th frame.
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub every: Option<usize>,
-}
-
-/// Every `k`-th frame of `m`, with `k` the smallest that leaves at most
-/// [`MAX_MODEL_POINTS`] frames; `None` if the series is short enough already.
-pub fn thinned(m: &Measured) -> Option<(Measured, usize)> {
-    let n = m.t.len();
-    if n <= MAX_MODEL_POINTS {
-        return None;
-    }
-    let k = n.div_ceil(MAX_MODEL_POINTS);
-    let pick = |v: &[f64]| -> Vec<f64> { v.iter().step_by(k).copied().collect() };
-    let pick_opt = |v: &Option<Vec<f64>>| v.as_deref().map(pick);
-    Some((
-        Measured {
-            t: pick(&m.t),
-            v_cm: pick(&m.v_cm),
-            v_t: pick(&m.v_t),
-            v_cm_sigma: pick_opt(&m.v_cm_sigma),
-            v_t_sigma: pick_opt(&m.v_t_sigma),
-            x: pick_opt(&m.x),
-            angle: pick_opt(&m.angle),
-            stencils: m.stencils.as_ref().map(|s| {
-                let pick = |v: &[Option<_>]| v.iter().step_by(k).copied().collect();
-                std::sync::Arc::new(Stencils {
-                    v_cm: pick(&s.v_cm),
-                    v_t: pick(&s.v_t),
-                    ..(**s).clone()
-                })
-            }),
-        },
-        k,
-    ))
-}
-
-/// Least squares of the exact model's v_cm and v_t of the left ball to all measured
-/// points (Levenberg–Marquardt, numerical derivatives), free `free`. Points with an
-/// uncertainty (`v_cm_sigma`, `v_t_sigma`) count by its inverse square; a v_t that
-/// was not measured (NaN) is left out. A series longer than [`MAX_MODEL_POINTS`] is
-/// [`thinned`] first. Stops when `progress` says so.
-pub fn model_fit(
-    scene: &Scene,
-    m: &Measured,
-    free: &[Free],
-    progress: &dyn Progress,
-) -> Result<ModelFit, FitError> {
-    model_fit_of(scene, m, free, Target::Velocity, progress)
-}
-
-/// Least squares of the exact model's positions to a tracked series (`m.x`, and
-/// `m.angle` when the rim mark was tracked): no differentiation, so its uncertainty
-/// comes from independent residuals. `rms` is then in metres (x and r θ).
-pub fn position_fit(
-    scene: &Scene,
-    m: &Measured,
-    free: &[Free],
-    progress: &dyn Progress,
-) -> Result<ModelFit, FitError> {
-    if m.x.is_none() {
-        return Err(FitError::Data(
-            "the data hold no positions (a velocity file): no position fit".into(),
-        ));
-    }
-    model_fit_of(scene, m, free, Target::Position, progress)
-}
-
-fn model_fit_of(
-    scene: &Scene,
-    m: &Measured,
-    free: &[Free],
-    target: Target,
-    progress: &dyn Progress,
-) -> Result<ModelFit, FitError> {
-    scored_fit(scene, m, free, target, progress).map(|s| s.fit)
-}
-
-/// A model fit with what information criteria need: the weighted residual sum of
-/// squares, how many values were estimated (the free ones
-/// and a position fit's profiled impact time, place and angle), and its estimates.
-struct Scored {
-    pub fit: ModelFit,
-    pub cost: f64,
-    pub estimated: usize,
-    pub values: Vec<f64>,
-    pub ses: Vec<Option<f64>>,
-    /// The fitted scene and the frames it was fitted on (of the [`thinned`] series).
-    pub scene: Scene,
-    pub idx: Vec<usize>,
-}
-
-fn scored_fit(
-    scene: &Scene,
-    m: &Measured,
-    free: &[Free],
-    target: Target,
-    progress: &dyn Progress,
-) -> Result<Scored, FitError> {
-    let thin = thinned(m);
-    let (m, every) = match &thin {
-        Some((t, k)) => (t, Some(*k)),
-        None => (m, None),
-    };
-    let evals = Evals {
-        progress,
-        done: std::cell::Cell::new(0),
-    };
-    let start: Vec<f64> = free
-        .iter()
-        .map(|f| match f {
-            Free::Mu => scene.mu.max(0.01),
-            Free::V0 => scene.left.v0,
-            Free::Restitution => scene.restitution,
-            Free::RollingResistance => scene.rolling_resistance,
-        })
-        .collect();
-    // μ first, by a global scan and golden-section search: the cost is not smooth
-    // where impacts move past data points, and local steps get caught there.
-    let mut p = start;
-    if let Some(i) = free.iter().position(|f| *f == Free::Mu) {
-        p[i] = scan_mu(scene, m, free, &p, i, target, &evals)?;
-    }
-    // Then every free value together from there, on the frames away from the model's
-    // impacts (chosen again once the fit has moved them).
-    let mut idx = fit_points(m, &with(scene, free, &p), target);
-    for _ in 0..3 {
-        p = least_squares(scene, m, free, &idx, p, target, &evals)?;
-        let next = fit_points(m, &with(scene, free, &p), target);
-        if next == idx {
-            break;
-        }
-        idx = next;
-    }
-    let fitted = with(scene, free, &p);
-    let (r, labels) = labelled_residuals(&fitted, m, &idx, target, true);
-    let n = p.len();
-    let cost: f64 = r.iter().map(|x| x * x).sum();
-    let s2 = cost / r.len().saturating_sub(n + nuisance(m, target)).max(1) as f64;
-    let j = smooth_jacobian(scene, m, free, &idx, &p, &r, target);
-    // Velocities derived from a track share frames: their errors are correlated.
-    let shared = match (&m.stencils, target) {
-        (Some(st), Target::Velocity) => Some(shared_noise(&j, &labels, st)),
-        _ => None,
-    };
-    let (ses, not_identified) = uncertainties(&normal_matrix(&j), shared.as_deref(), s2, free, &p);
-    let se = |f: Free| free.iter().position(|x| *x == f).and_then(|i| ses[i]);
-    let scored = |fit: ModelFit| Scored {
-        fit,
-        cost,
-        estimated: n + nuisance(m, target),
-        values: free
-            .iter()
-            .map(|f| match f {
-                Free::Mu => fitted.mu,
-                Free::V0 => fitted.left.v0,
-                Free::Restitution => fitted.restitution,
-                Free::RollingResistance => fitted.rolling_resistance,
-            })
-            .collect(),
-        ses: ses.clone(),
-        scene: fitted,
-        idx: idx.clone(),
-    };
-    let rest_band = rest_band(m);
-    let v_roll = closed_form::v_roll(fitted.k(), fitted.restitution, fitted.left.v0);
-    let derived = Derived::of(&fitted);
-    let sol = engine::solve(&fitted, &Span::default());
-    let verdict = Verdict::of(&sol, &derived, Some(rest_band));
-    let regime_observed = observed_after(
-        m,
-        rest_band,
-        sliding_window(m)
-            .map(|w| w.1)
-            .or_else(|| rolling_time(&fitted)),
-    );
-    Ok(scored(ModelFit {
-        mu: fitted.mu,
-        mu_se: se(Free::Mu).unwrap_or(f64::NAN),
-        v0: fitted.left.v0,
-        v0_se: se(Free::V0),
-        restitution: fitted.restitution,
-        restitution_se: se(Free::Restitution),
-        rms: {
-            // In the data's own units, whatever the weights.
-            let raw = residuals_of(&fitted, m, &idx, target, false);
-            (raw.iter().map(|x| x * x).sum::<f64>() / raw.len().max(1) as f64).sqrt()
-        },
-        points: idx.len(),
-        regime_predicted: derived.regime,
-        regime_observed,
-        rest_band,
-        v_roll,
-        verdict: verdict.text("±"),
-        indistinguishable_from_rest: verdict.indistinguishable_from_rest(),
-        // A regime predicted from a μ_k the data do not determine agrees with nothing.
-        agrees: verdict.agrees_with(regime_observed)
-            && !not_identified
-                .iter()
-                .any(|n| n.parameter == Free::Mu.name()),
-        not_identified,
-        every,
-    }))
-}
+use regime::rolling_time;
 
 /// Both fits of one series.
 #[derive(Clone, Debug, PartialEq, Serialize)]

@@ -4,7 +4,7 @@
 
 use serde::Serialize;
 
-use super::Free;
+use super::problem::Free;
 use crate::settings::params::Key;
 use crate::study::measured::series::Stencils;
 

@@ -8,7 +8,7 @@ use crate::lab::jobs::State;
 use crate::settings::units::{Dimension, show};
 use crate::study::figures;
 
-use super::{App, ChartBall, Export, Status, View};
+use super::{App, ChartBall, Export, NO_FILES, Status, View};
 use crate::tui::vocabulary::WorkAxis;
 
 /// The figure `W` writes: the one on screen.
@@ -111,6 +111,10 @@ impl App {
             Export::Csv => self.csv_work(),
             Export::Svg => self.svg_work(self.figure_on_screen()?)?,
         };
+        if !self.writes_files {
+            self.status = Status::Info(format!("{NO_FILES}: would write {}", path.display()));
+            return Ok(());
+        }
         self.status = Status::Info(format!("writing {}…", path.display()));
         self.lab.start_export(move || {
             let (bytes, what) = work()?;

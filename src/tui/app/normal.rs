@@ -215,6 +215,11 @@ impl App {
             }
             Edit::SpanEnd(_) => format!("time span {}", self.lab.span_end.describe()),
             Edit::Reset => "the reset: your changes are back".into(),
+            Edit::Preset(picked) => format!(
+                "preset {}: back to {} as it was",
+                picked.name,
+                self.lab.preset().name
+            ),
         };
         let left = self.lab.settings().edits().len();
         self.status = Status::Info(format!("undone: {back} ({left} more to undo)"));
@@ -228,7 +233,8 @@ impl App {
         }
         let sol = &self.lab.solution;
         self.t = self.t.clamp(sol.t_start, sol.t_end);
-        let flags = if self.lab.settings().flags.given().next().is_some() {
+        let flags = self.lab.settings().flags_in_force();
+        let flags = if flags.is_some_and(|f| f.given().next().is_some()) {
             " with the command line's values"
         } else {
             ""

@@ -2,7 +2,7 @@
 //! start, and the time from which the outcome shows (the view then explains it).
 
 use crate::physics::solution::{EventKind, Solution, Who};
-use crate::tui::view::ANSWERS;
+use crate::tui::vocabulary::ANSWERS;
 
 use super::{Action, App, Mode, Prediction, Status, View};
 

@@ -2,11 +2,10 @@
 //! (typing a value, a save name, an export file name), and what confirming them does
 //! (set the value, save the preset, write the export).
 
-use crate::input::preset::{SaveError, save};
-use crate::settings::params::Param;
-use crate::settings::units::{Dimension, parse_typed};
+use crate::input::preset::{PresetFile, SaveError};
+use crate::settings::units::parse_typed;
 
-use super::{Action, App, Export, Field, Library, Mode, ROWS, Status};
+use super::{Action, App, Field, Library, Mode, NO_FILES, ROWS, Status, TextTarget};
 use crate::tui::line::History;
 
 impl App {
@@ -96,7 +95,19 @@ impl App {
 
     /// Saves the scene as a user preset, asking before it replaces a file.
     pub(super) fn save(&mut self, name: &str, overwrite: bool) {
-        match save(&self.lab, self.library.dir.as_deref(), name, overwrite) {
+        let file = PresetFile::new(&self.lab, self.library.dir.as_deref(), name, overwrite);
+        let file = match file {
+            Ok(file) if !self.writes_files => {
+                self.status = Status::Info(format!(
+                    "{NO_FILES}: would save preset {} as {}",
+                    name.trim(),
+                    file.path.display()
+                ));
+                return;
+            }
+            other => other.and_then(PresetFile::write),
+        };
+        match file {
             Ok(path) => {
                 self.library = Library::at(self.library.dir.clone());
                 self.status = Status::Info(format!("saved {}", path.display()));
@@ -112,13 +123,6 @@ impl App {
     }
 }
 
-#[derive(Clone, Copy)]
-pub(super) enum TextTarget {
-    Value,
-    Name,
-    Export(Export),
-}
-
 impl TextTarget {
     /// Which history the prompt's ↑/↓ go through: values, preset names, file names.
     fn index(self) -> usize {
@@ -127,27 +131,5 @@ impl TextTarget {
             TextTarget::Name => 1,
             TextTarget::Export(_) => 2,
         }
-    }
-}
-
-/// One history per kind of prompt ([`TextTarget::index`]).
-pub(super) type Histories = [History; 3];
-
-/// The prompt of the typing field for parameter `p`: which unit a bare number is in.
-pub fn typing_prompt(p: &Param) -> String {
-    let (unit, _) = p.dim.display_unit();
-    let example = match p.dim {
-        Dimension::Length => "44mm",
-        Dimension::Mass => "0.2kg",
-        Dimension::Speed => "60cm/s",
-        Dimension::Time => "200ms",
-        Dimension::Acceleration => "9.81",
-        Dimension::Ratio => "",
-    };
-    let name = p.label;
-    if unit.is_empty() {
-        format!("{name}: a plain number (e.g. 0.17), Enter applies, Esc cancels")
-    } else {
-        format!("{name} in {unit} (or with a unit, e.g. {example}), Enter applies, Esc cancels")
     }
 }

@@ -9,9 +9,9 @@ use ratatui::layout::Rect;
 use ratatui::style::Style;
 use ratatui::widgets::Widget;
 
-use super::block;
-use crate::lab::MeasuredPoints;
+use super::panel::block;
 use crate::lab::jobs::State;
+use crate::lab::{MeasuredPoints, value_range};
 use crate::physics::model::BallState;
 use crate::physics::solution::{EnergySplit, EventKind, Snapshot, Who};
 use crate::settings::units::Dimension;
@@ -19,6 +19,7 @@ use crate::study::fit::LineFit;
 use crate::tui::app::{App, ChartBall};
 use crate::tui::plot::{Draw, Plot, Series, VLine, nice_ticks};
 use crate::tui::theme::Theme;
+use crate::tui::view_cache::ChartDrawn;
 
 fn event_lines(app: &App, balls: &[Who], theme: &Theme) -> Vec<VLine> {
     app.lab
@@ -60,46 +61,49 @@ fn chart(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
 }
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let (title, plot) = chart(app, area, theme);
-    let title = super::title_within(&title, area, theme);
+    let (title, mut plot) = chart(app, area, theme);
+    let title = super::panel::title_within(&title, area, theme);
     let blk = block(title, theme);
     let inner = blk.inner(area);
     blk.render(area, buf);
+    thin_measured(app, &mut plot, inner, theme);
+    let points = plot.series.iter().map(|s| s.points.len()).sum();
+    app.view_cache.chart_points.set(points);
     plot.render(inner, buf, theme);
     app.view_cache
         .chart_drawn
         .set(Some(ChartDrawn::of(&plot, area, inner, theme)));
 }
 
-/// Where the chart was last drawn: enough to find the time under a cell without
-/// building the chart again (a drag on the chart sends many events). Any action may
-/// change the chart, so the app forgets it on each; moving the time does not.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ChartDrawn {
-    area: Rect,
-    ascii: bool,
-    monochrome: bool,
-    /// The plot's data cells (`None`: too small to draw).
-    data: Option<Rect>,
-    x_range: (f64, f64),
-}
-
-impl ChartDrawn {
-    fn of(plot: &Plot, area: Rect, inner: Rect, theme: &Theme) -> ChartDrawn {
-        ChartDrawn {
-            area,
-            ascii: theme.glyphs.ascii,
-            monochrome: monochrome(theme),
-            data: plot.data_area(inner, theme),
-            x_range: plot.x_range,
-        }
+/// The snapshot's measured series in `plot` (a file may hold a million rows, drawn
+/// as markers) in their thinned form, one point per cell they mark, made once per
+/// snapshot and grid (the view cache): a frame draws what the cells show, not every
+/// row, and the same cells are marked.
+fn thin_measured(app: &App, plot: &mut Plot, inner: Rect, theme: &Theme) {
+    let (Some(m), Some(cells)) = (app.lab.points.as_ref(), plot.cells(inner, theme)) else {
+        return;
+    };
+    // Markers only: a line through thinned points would be another line.
+    let index = |s: &Series| {
+        (s.draw != Draw::Line)
+            .then(|| m.series().position(|p| Arc::ptr_eq(p, &s.points)))
+            .flatten()
+    };
+    let drawn = plot
+        .series
+        .iter()
+        .filter_map(index)
+        .fold(0u8, |bits, i| bits | 1 << i);
+    if drawn == 0 {
+        return;
     }
-
-    /// True if it was drawn in `area` with `theme`'s layout.
-    fn is_for(&self, area: Rect, theme: &Theme) -> bool {
-        self.area == area
-            && self.ascii == theme.glyphs.ascii
-            && self.monochrome == monochrome(theme)
+    let marks = app
+        .view_cache
+        .measured_marks(app.lab.resolved(), cells, drawn);
+    for s in &mut plot.series {
+        if let Some(thinned) = index(s).and_then(|i| marks.get(i).cloned().flatten()) {
+            s.points = thinned;
+        }
     }
 }
 
@@ -132,11 +136,6 @@ pub(crate) fn theme_for_layout() -> &'static Theme {
     &THEME
 }
 
-/// No colours: curves that colour alone would tell apart get letters instead.
-fn monochrome(theme: &Theme) -> bool {
-    theme.left.fg.is_none() && theme.right.fg.is_none()
-}
-
 /// A named curve of a run: what it plots at each sampled state.
 type Curve = (&'static str, fn(&Snapshot) -> f64);
 
@@ -148,11 +147,11 @@ fn pinned_series(app: &App, columns: usize, theme: &Theme, curves: &[Curve]) -> 
     if app.lab.pinned.is_none() {
         return Vec::new();
     }
-    let samples = app.pinned_samples(columns);
+    let samples = app.view_cache.pinned_samples(&app.lab, columns);
     // Without colour a dimmed braille line looks like the current run's: the pinned
     // run is drawn in dots of its own glyph then, under the current curves (ASCII draws
     // every line in its glyph).
-    let (draw, glyph) = match (monochrome(theme), theme.glyphs.ascii) {
+    let (draw, glyph) = match (theme.uncoloured_curves(), theme.glyphs.ascii) {
         (_, true) => (Draw::Line, "."),
         (true, false) => (Draw::PointsUnder, "·"),
         (false, false) => (Draw::Line, "."),
@@ -190,12 +189,21 @@ fn series_of(
     }
 }
 
-fn bounds(series: &[Series], rows: usize) -> ((f64, f64), Vec<f64>) {
+/// The y range and ticks over every series' finite values (the snapshot's measured
+/// series by their range made once per scene, not a pass over their rows).
+fn bounds(
+    series: &[Series],
+    measured: Option<&MeasuredPoints>,
+    rows: usize,
+) -> ((f64, f64), Vec<f64>) {
     let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-    for p in series.iter().flat_map(|s| s.points.iter()) {
-        if p.1.is_finite() {
-            lo = lo.min(p.1);
-            hi = hi.max(p.1);
+    for s in series {
+        let range = measured
+            .and_then(|m| m.range_of(&s.points))
+            .unwrap_or_else(|| value_range(&s.points));
+        if let Some((a, b)) = range {
+            lo = lo.min(a);
+            hi = hi.max(b);
         }
     }
     nice_ticks(lo, hi, (rows / 3).max(2))
@@ -245,7 +253,7 @@ fn overlay_velocities(app: &App, balls: &[usize], columns: usize, theme: &Theme)
         State::Computing { done, total } => {
             let name = app.lab.overlay_choice().map_or("", |(m, _)| m.name());
             return vec![Series {
-                name: format!("{name} {}", super::progress_text(done, total)),
+                name: format!("{name} {}", super::panel::progress_text(done, total)),
                 points: Vec::new().into(),
                 style: theme.overlay,
                 glyph: "%",
@@ -378,7 +386,7 @@ fn line_fit_marks(l: &LineFit, theme: &Theme) -> (Vec<Series>, Vec<VLine>) {
 fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
     let sol = &app.lab.solution;
     let columns = usize::from(area.width.saturating_sub(10));
-    let samples = app.samples(columns);
+    let samples = app.view_cache.samples(&app.lab, columns);
     let (balls, which) = balls_shown(app.chart_ball);
     let curves: Vec<Curve> = balls
         .iter()
@@ -409,7 +417,7 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
         vlines.extend(ends);
     }
     let rows = usize::from(area.height.saturating_sub(4));
-    let ((y0, y1), _) = bounds(&series, rows);
+    let ((y0, y1), _) = bounds(&series, app.lab.points.as_deref(), rows);
     let whos: Vec<Who> = balls.iter().map(|&i| Who::ball(i)).collect();
     vlines.extend(event_lines(app, &whos, theme));
     let plot = Plot {
@@ -457,7 +465,7 @@ const POSITION: Dimension = Dimension::Length;
 fn positions(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
     let sol = &app.lab.solution;
     let columns = usize::from(area.width.saturating_sub(10));
-    let samples = app.samples(columns);
+    let samples = app.view_cache.samples(&app.lab, columns);
     let mut series = pinned_series(
         app,
         columns,
@@ -494,7 +502,7 @@ fn positions(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
         });
     }
     let rows = usize::from(area.height.saturating_sub(4));
-    let ((y0, y1), _) = bounds(&series, rows);
+    let ((y0, y1), _) = bounds(&series, app.lab.points.as_deref(), rows);
     let plot = Plot {
         x_range: (sol.t_start, sol.t_end),
         y_range: (y0, y1),
@@ -517,8 +525,8 @@ fn positions(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
 fn energy(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
     let sol = &app.lab.solution;
     let columns = usize::from(area.width.saturating_sub(10));
-    let split = app.energies(columns);
-    let letters = monochrome(theme) || theme.glyphs.ascii;
+    let split = app.view_cache.energies(&app.lab, columns);
+    let letters = theme.uncoloured_curves() || theme.glyphs.ascii;
     let draw = if letters && !theme.glyphs.ascii {
         // Braille cannot carry a letter: mark each sample cell instead.
         Draw::Points
@@ -553,7 +561,12 @@ fn energy(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
             0,
             Series {
                 name: "pinned kinetic".into(),
-                points: app.pinned_kinetic(columns).iter().copied().collect(),
+                points: app
+                    .view_cache
+                    .pinned_kinetic(&app.lab, columns)
+                    .iter()
+                    .copied()
+                    .collect(),
                 style: theme.dim,
                 glyph: ".",
                 draw: Draw::Line,

@@ -6,7 +6,7 @@ use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::Widget;
 
-use super::{Ranked, block, by_priority, draw_lines};
+use super::panel::{Ranked, block, by_priority, draw_lines};
 use crate::lab::jobs::State;
 use crate::study::fit::{self, ModelFit};
 use crate::tui::app::App;
@@ -34,7 +34,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             )),
         )],
         other @ State::Computing { .. } => {
-            return super::computing(&other, "fitting", inner, buf, theme);
+            return super::panel::computing(&other, "fitting", inner, buf, theme);
         }
         State::Ready(Err(e)) => vec![(9, Line::from(Span::styled(e.to_string(), theme.error)))],
         State::Ready(Ok(f)) => {

@@ -12,13 +12,14 @@ use ratatui::style::Style;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Clear, Paragraph, Widget, Wrap};
 
-use super::{Ranked, block, by_priority, draw_lines, title_within};
+use super::panel::{Ranked, block, by_priority, draw_lines, title_within};
 use crate::physics::derived::Regime;
 use crate::physics::forces::{Instant, Sliding, instant};
 use crate::settings::units::{Dimension, show, significant};
 use crate::tui::app::{App, Prediction};
 use crate::tui::canvas::Canvas;
 use crate::tui::theme::Theme;
+use crate::tui::vocabulary::ANSWERS;
 use crate::tui::vocabulary::Mode;
 
 /// Lengths are shown in their display unit.
@@ -679,13 +680,6 @@ fn prediction_lines<'a>(app: &App, p: &Prediction, pending: bool, theme: &Theme)
         (8, Line::styled(g.text(&format!("why: {why}")), theme.text)),
     ]
 }
-
-/// The answers the prediction offers, by key.
-pub const ANSWERS: [(char, Regime); 3] = [
-    ('1', Regime::Depart),
-    ('2', Regime::Rest),
-    ('3', Regime::Recollide),
-];
 
 fn short_answer(r: Regime) -> &'static str {
     match r {

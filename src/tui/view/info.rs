@@ -6,7 +6,7 @@ use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::Widget;
 
-use super::{Ranked, block, by_priority, draw_lines};
+use super::panel::{Ranked, block, by_priority, draw_lines};
 use crate::physics::derived::{Derived, Summary};
 use crate::physics::scene::Scene;
 use crate::physics::solution::Solution;

@@ -6,7 +6,7 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::widgets::Widget;
 
-use super::block;
+use super::panel::block;
 use crate::physics::closed_form;
 use crate::physics::derived::Regime;
 use crate::tui::app::App;
@@ -23,7 +23,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
 fn regime_map(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let g = theme.glyphs;
     let blk = block(
-        super::title_within("Regime: b/R across, e up  [g] back", area, theme),
+        super::panel::title_within("Regime: b/R across, e up  [g] back", area, theme),
         theme,
     );
     let inner = blk.inner(area);
@@ -47,7 +47,7 @@ fn regime_map(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         Regime::Recollide => theme.accent,
     };
     let b_max = 2.0 * radius * 0.99;
-    let grid = app.regime_grid(cols, rows);
+    let grid = app.view_cache.regime_grid(&app.lab, cols, rows);
     for rr in 0..rows {
         let e = 1.0 - rr as f64 / (rows - 1).max(1) as f64;
         let label = if rr == 0 || rr == rows - 1 || rr == rows / 2 {
@@ -103,7 +103,7 @@ fn regime_map(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
 
 fn paper_figure(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let blk = block(
-        super::title_within("Paper fig.: a/(μ g) and D against b/R", area, theme),
+        super::panel::title_within("Paper fig.: a/(μ g) and D against b/R", area, theme),
         theme,
     );
     let inner = blk.inner(area);

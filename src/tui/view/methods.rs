@@ -6,7 +6,7 @@ use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::Widget;
 
-use super::{Ranked, block, by_priority, draw_lines};
+use super::panel::{Ranked, block, by_priority, draw_lines};
 use crate::lab::jobs::State;
 use crate::methods::Method;
 use crate::physics::derived::Summary;
@@ -59,7 +59,7 @@ pub fn render_diagram(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         WorkAxis::RhsEvals => ("rhs evaluations per run", "rhs evals"),
         WorkAxis::Time => ("time per run", "s"),
     };
-    let title = super::title_within(
+    let title = super::panel::title_within(
         &format!(" Methods: max |v_cm - exact| against {per_run}  [X] axis  [c] back "),
         area,
         theme,
@@ -69,7 +69,7 @@ pub fn render_diagram(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     blk.render(area, buf);
     let rows = match app.lab.method_rows() {
         State::Ready(rows) => rows,
-        other => return super::computing(&other, "running every method", inner, buf, theme),
+        other => return super::panel::computing(&other, "running every method", inner, buf, theme),
     };
     // Work below one unit (a run refused before its first step, or a time under a
     // nanosecond) sits at the axis' floor rather than at −∞.
@@ -144,7 +144,7 @@ pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     blk.render(area, buf);
     let rows = match app.lab.method_rows() {
         State::Ready(rows) => rows,
-        other => return super::computing(&other, "running every method", inner, buf, theme),
+        other => return super::panel::computing(&other, "running every method", inner, buf, theme),
     };
     let width = usize::from(inner.width);
     let marks = width >= 42;

@@ -1,18 +1,18 @@
 //! Drawing the lab: one layout, one function per panel, all reading the [`App`] and
 //! writing into a [`Buffer`]. The terminal and the headless `render` both call
-//! [`draw`], so a script sees exactly what a user sees.
+//! [`draw`], so a script sees exactly what a user sees. What depends on the terminal's
+//! size is kept in the app's [`crate::tui::view_cache::ViewCache`]; what every panel
+//! draws with is in `panel`.
 
-mod cache;
 mod charts;
 mod fit;
 mod forces;
 mod info;
 mod map;
 mod methods;
+mod panel;
 mod params;
 
-pub use cache::ViewCache;
-pub use forces::ANSWERS;
 pub use params::param_at;
 pub use popups::data_rows;
 mod popups;
@@ -20,14 +20,14 @@ mod scene;
 
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
-use ratatui::style::Style;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Block, Paragraph, Widget};
+use ratatui::widgets::{Paragraph, Widget};
 
-use super::app::{App, Mode, Status, View};
+use super::app::{App, Mode, ROWS, Status, View};
 use super::keys;
 use super::theme::{Theme, force_ascii};
-use crate::lab::jobs::State;
+use crate::settings::params::Param;
+use crate::settings::units::Dimension;
 
 /// Smallest terminal the layout is made for.
 pub const MIN_SIZE: (u16, u16) = (80, 24);
@@ -106,20 +106,6 @@ pub fn chart_time_at_in(
     charts::time_at(app, panels.chart, theme, column, row)
 }
 
-/// A bordered block in the theme's glyph set.
-pub(crate) fn block<'a>(title: impl Into<Line<'a>>, theme: &Theme) -> Block<'a> {
-    Block::bordered()
-        .border_set(theme.glyphs.border)
-        .border_style(theme.dim)
-        .title(title.into().style(theme.title))
-}
-
-/// A block title (` text `) that fits on the border of `area`, cut with an ellipsis.
-pub(crate) fn title_within(title: &str, area: Rect, theme: &Theme) -> String {
-    let room = usize::from(area.width.saturating_sub(4));
-    format!(" {} ", theme.glyphs.ellipsize(title.trim(), room))
-}
-
 /// Draws the whole screen (in ASCII mode, any symbol a widget still drew outside
 /// 7-bit ASCII gets a stand-in; [`non_ascii_cells`] lets tests see that none was needed).
 pub fn draw(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
@@ -188,30 +174,6 @@ fn draw_panels(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     }
 }
 
-/// "computing… 40 %" (or without a share when the total is unknown).
-pub(crate) fn progress_text(done: usize, total: usize) -> String {
-    match (100 * done.min(total)).checked_div(total) {
-        Some(percent) => format!("computing… {percent} %"),
-        None => "computing…".to_string(),
-    }
-}
-
-/// What a panel shows while its analysis runs: what is being done and how far.
-pub(crate) fn computing<T>(
-    state: &State<'_, T>,
-    what: &str,
-    area: Rect,
-    buf: &mut Buffer,
-    theme: &Theme,
-) {
-    let text = match state {
-        State::Computing { done, total } => format!("{what}: {}", progress_text(*done, *total)),
-        _ => String::new(),
-    };
-    let text = theme.glyphs.text(&text);
-    buf.set_stringn(area.x, area.y, text, usize::from(area.width), theme.dim);
-}
-
 /// The status line: playback (time, playing or paused, speed) and beside it the last
 /// message, cut with an ellipsis where it does not fit (playback shortens first, down
 /// to the time and the play state, which a message never hides); the typing prompt while a
@@ -226,8 +188,7 @@ fn status(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     buf.set_string(area.right() - right_len as u16, area.y, &right, theme.dim);
     let (message, style) = match (&app.mode, &app.status) {
         (Mode::Edit(_), _) => {
-            let prompt = crate::tui::app::typing_prompt(crate::tui::app::ROWS[app.selected])
-                .replace("mu_k", "μ_k");
+            let prompt = typing_prompt(ROWS[app.selected]).replace("mu_k", "μ_k");
             buf.set_stringn(area.x, area.y, g.ellipsize(&prompt, room), room, theme.info);
             return;
         }
@@ -256,101 +217,6 @@ fn status(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     }
 }
 
-/// Lines of a panel with a priority each; [`by_priority`] keeps the most important
-/// ones that fit.
-pub(crate) type Ranked<'a> = Vec<(u8, Line<'a>)>;
-
-/// The lines of `ranked` that fit in `area` once wrapped at its width, in their
-/// order: while they do not fit, the lowest priority goes (the last such first). A
-/// small screen so shows the important lines whole rather than the first ones.
-pub(crate) fn by_priority<'a>(ranked: Ranked<'a>, area: Rect) -> Vec<Line<'a>> {
-    let width = usize::from(area.width).max(1);
-    let mut wrapped: Vec<(u8, Vec<Line<'a>>)> = ranked
-        .into_iter()
-        .map(|(p, line)| (p, wrap(line, width)))
-        .collect();
-    let rows = |w: &[(u8, Vec<Line>)]| w.iter().map(|(_, l)| l.len()).sum::<usize>();
-    while rows(&wrapped) > usize::from(area.height) && !wrapped.is_empty() {
-        let lowest = wrapped.iter().map(|w| w.0).min().unwrap_or(0);
-        let i = wrapped.iter().rposition(|w| w.0 == lowest).unwrap_or(0);
-        wrapped.remove(i);
-    }
-    wrapped.into_iter().flat_map(|(_, l)| l).collect()
-}
-
-/// Draws `lines` one per row from the top of `area` (already wrapped).
-pub(crate) fn draw_lines(lines: Vec<Line<'_>>, area: Rect, buf: &mut Buffer) {
-    for (i, line) in lines.into_iter().enumerate().take(usize::from(area.height)) {
-        buf.set_line(area.x, area.y + i as u16, &line, area.width);
-    }
-}
-
-/// `line` word-wrapped to `width` columns, styles kept: breaks after spaces, a word
-/// longer than a row is split, spaces that end a row are dropped.
-pub(crate) fn wrap(line: Line<'_>, width: usize) -> Vec<Line<'static>> {
-    let mut rows: Vec<Vec<(String, Style)>> = vec![Vec::new()];
-    let mut used = 0usize;
-    // Words (with the spaces before them) as (text, style) pieces.
-    let mut words: Vec<Vec<(String, Style)>> = Vec::new();
-    let mut current: Vec<(String, Style)> = Vec::new();
-    let mut in_space = false;
-    for span in &line.spans {
-        for c in span.content.chars() {
-            let space = c == ' ';
-            if !space && in_space && current.iter().any(|p| p.0.chars().any(|c| c != ' ')) {
-                words.push(std::mem::take(&mut current));
-            }
-            in_space = space;
-            match current.last_mut() {
-                Some((text, style)) if *style == span.style => text.push(c),
-                _ => current.push((c.to_string(), span.style)),
-            }
-        }
-    }
-    if !current.is_empty() {
-        words.push(current);
-    }
-    for word in words {
-        // A word carries the spaces after it; they never push it to the next row.
-        let chars: Vec<(char, Style)> = word
-            .iter()
-            .flat_map(|(t, s)| t.chars().map(move |c| (c, *s)))
-            .collect();
-        let len = chars
-            .iter()
-            .rposition(|(c, _)| *c != ' ')
-            .map_or(0, |i| i + 1);
-        if used > 0 && used + len > width {
-            rows.push(Vec::new());
-            used = 0;
-        }
-        for (c, style) in chars {
-            if used == width {
-                if c == ' ' {
-                    continue;
-                }
-                rows.push(Vec::new());
-                used = 0;
-            }
-            let row = rows.last_mut().expect("one row at least");
-            match row.last_mut() {
-                Some((t, s)) if *s == style => t.push(c),
-                _ => row.push((c.to_string(), style)),
-            }
-            used += 1;
-        }
-    }
-    rows.into_iter()
-        .map(|r| {
-            Line::from(
-                r.into_iter()
-                    .map(|(t, s)| Span::styled(t, s))
-                    .collect::<Vec<_>>(),
-            )
-        })
-        .collect()
-}
-
 fn hints(area: Rect, buf: &mut Buffer, theme: &Theme) {
     let mut spans = Vec::new();
     for (key, label) in keys::hints_within(usize::from(area.width), theme.glyphs.ascii) {
@@ -376,4 +242,23 @@ pub fn to_text(app: &App, width: u16, height: u16, theme: &Theme) -> String {
         out.push('\n');
     }
     out
+}
+
+/// The prompt of the typing field for parameter `p`: which unit a bare number is in.
+fn typing_prompt(p: &Param) -> String {
+    let (unit, _) = p.dim.display_unit();
+    let example = match p.dim {
+        Dimension::Length => "44mm",
+        Dimension::Mass => "0.2kg",
+        Dimension::Speed => "60cm/s",
+        Dimension::Time => "200ms",
+        Dimension::Acceleration => "9.81",
+        Dimension::Ratio => "",
+    };
+    let name = p.label;
+    if unit.is_empty() {
+        format!("{name}: a plain number (e.g. 0.17), Enter applies, Esc cancels")
+    } else {
+        format!("{name} in {unit} (or with a unit, e.g. {example}), Enter applies, Esc cancels")
+    }
 }

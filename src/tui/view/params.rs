@@ -5,7 +5,7 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::widgets::Widget;
 
-use super::block;
+use super::panel::block;
 use crate::settings::params::Key;
 use crate::settings::units::{Dimension, fit_number};
 use crate::tui::app::{App, Mode, ROWS};

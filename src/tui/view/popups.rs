@@ -6,8 +6,9 @@ use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Clear, Paragraph, Widget, Wrap};
 
-use super::{block, wrap};
-use crate::tui::app::{App, Export, Field, Mode, Status, export_step};
+use super::panel::{block, wrap};
+use crate::tui::app::export::export_step;
+use crate::tui::app::{App, Export, Field, Mode, Status};
 use crate::tui::keys::TABLE;
 use crate::tui::line::caret;
 use crate::tui::theme::Theme;
@@ -79,7 +80,7 @@ fn scrolling<'a>(
         .into_iter()
         .chain((first..count.min(first + visible)).map(line))
         .collect();
-    super::draw_lines(shown, inner, buf);
+    super::panel::draw_lines(shown, inner, buf);
 }
 
 /// The help's lines at `width`: every binding of the key table, descriptions wrapped

@@ -7,7 +7,7 @@ use ratatui::layout::Rect;
 use ratatui::style::Style;
 use ratatui::widgets::Widget;
 
-use super::block;
+use super::panel::block;
 use crate::physics::model::Phase;
 use crate::physics::solution::EventKind;
 use crate::tui::app::App;

@@ -1,9 +1,13 @@
 //! Finding the impacts in the centre's motion: jumps of the velocity between line fits
 //! on either side of a frame, each one placed between frames where the two sides'
-//! quadratics meet.
+//! quadratics meet; and why a track cannot be used (`TrackError`, for the whole derivation).
 
-use super::TrackError;
 use super::derivative::{Quadratic, quadratic};
+
+/// Why a track cannot be used.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("{0}")]
+pub struct TrackError(pub String);
 
 /// Least-squares slope of a straight line through `ys` over `ts`.
 fn line_slope(ts: &[f64], ys: &[f64]) -> f64 {

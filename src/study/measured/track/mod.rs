@@ -22,6 +22,7 @@ use crate::physics::scene::Scene;
 use crate::study::fit::{self, FitError, Free, ModelFit};
 
 pub use derivative::Local;
+pub use impacts::TrackError;
 
 use derivative::{derivatives, median, scatter, unwrap};
 use impacts::impacts;
@@ -160,11 +161,6 @@ impl Found {
         s
     }
 }
-
-/// Why a track cannot be used.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-#[error("{0}")]
-pub struct TrackError(pub String);
 
 /// The half-window of the local fits, frames: the one asked for, else the smallest
 /// n ≥ 2 whose slope's standard error (frame spacing `dt`, position noise `sigma`)

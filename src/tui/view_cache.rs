@@ -1,20 +1,22 @@
 //! What the charts and the map draw from the lab's snapshot that depends on the
 //! terminal's size, cached per snapshot and size, never recomputed per frame: the
 //! curve samples (about four per pixel column), the energies at them, the pinned run's
-//! samples and kinetic energy, and the regime grid. A new snapshot (any edit) or a new
-//! size makes them again; a frame that only moves the time (playback, a drag on the
-//! chart) reuses them.
+//! samples and kinetic energy, the regime grid, and the measured series thinned to
+//! the chart's cells. A new snapshot (any edit) or a new size makes them again; a
+//! frame that only moves the time (playback, a drag on the chart) reuses them. The
+//! app holds one; the views fill it as they draw.
 
 use std::cell::{Cell, RefCell};
 use std::rc::Rc;
 use std::sync::Arc;
 
-use crate::lab::Resolved;
+use ratatui::layout::Rect;
+
+use crate::lab::{Lab, Resolved};
 use crate::physics::derived::{Derived, Regime};
 use crate::physics::solution::{EnergySplit, Snapshot, Solution};
-use crate::tui::app::App;
-
-use super::charts::ChartDrawn;
+use crate::tui::plot::{Cells, Plot, Points};
+use crate::tui::theme::Theme;
 
 /// One cached view of a snapshot: the snapshot it belongs to (held, so its address
 /// cannot be reused by a newer one), the size, the values.
@@ -24,7 +26,7 @@ type Cached<K, T> = RefCell<Option<(Arc<Resolved>, K, Rc<[T]>)>>;
 #[derive(Clone, Debug, Default)]
 pub struct ViewCache {
     /// Where the chart was last drawn (a click or drag finds its time from it).
-    pub(super) chart_drawn: Cell<Option<ChartDrawn>>,
+    pub chart_drawn: Cell<Option<ChartDrawn>>,
     /// How many times a chart was built (work counted, for the tests).
     pub charts_built: Cell<u64>,
     samples: Cached<usize, Snapshot>,
@@ -32,6 +34,13 @@ pub struct ViewCache {
     pinned_samples: Cached<usize, Snapshot>,
     pinned_kinetic: Cached<usize, (f64, f64)>,
     regimes: Cached<(usize, usize), Regime>,
+    /// The measured series a chart draws, thinned to its cells: per grid and which
+    /// series (bits in the order of `MeasuredPoints::series`).
+    marks: Cached<(Cells, u8), Option<Points>>,
+    /// How many times measured series were thinned (work counted, for the tests).
+    pub marks_thinned: Cell<u64>,
+    /// How many points the last chart drawn handed to the plot (work counted).
+    pub chart_points: Cell<usize>,
 }
 
 /// `cell`'s values if they were made for `now` at `key`, else `make`'s, kept.
@@ -57,14 +66,34 @@ impl ViewCache {
     pub fn chart_changed(&self) {
         self.chart_drawn.set(None);
     }
-}
 
-impl App {
+    /// The snapshot's measured series marked in `drawn` (bit i: the i-th of
+    /// `MeasuredPoints::series`), each thinned to one point per cell of `cells`
+    /// ([`Cells::thin`]: the same cells marked), once per snapshot and grid; `None`
+    /// for a series not drawn.
+    pub fn measured_marks(
+        &self,
+        now: &Arc<Resolved>,
+        cells: Cells,
+        drawn: u8,
+    ) -> Rc<[Option<Points>]> {
+        cached(&self.marks, now, (cells, drawn), || {
+            self.marks_thinned.set(self.marks_thinned.get() + 1);
+            let Some(m) = &now.points else {
+                return Rc::from(Vec::new());
+            };
+            m.series()
+                .enumerate()
+                .map(|(i, s)| (drawn & 1 << i != 0).then(|| cells.thin(s).into()))
+                .collect()
+        })
+    }
+
     /// The exact states at the chart's sample times for a plot `columns` wide: about
     /// four per column plus both sides of every event, once per scene and width.
-    pub fn samples(&self, columns: usize) -> Rc<[Snapshot]> {
-        let now = self.lab.resolved();
-        cached(&self.view_cache.samples, now, columns, || {
+    pub fn samples(&self, lab: &Lab, columns: usize) -> Rc<[Snapshot]> {
+        let now = lab.resolved();
+        cached(&self.samples, now, columns, || {
             let sol = &now.solution;
             sample_times(sol, (sol.t_start, sol.t_end), columns)
                 .into_iter()
@@ -73,11 +102,11 @@ impl App {
         })
     }
 
-    /// The energy split at the same times as [`App::samples`], once per scene and width.
-    pub fn energies(&self, columns: usize) -> Rc<[(f64, EnergySplit)]> {
-        let now = self.lab.resolved();
-        cached(&self.view_cache.energies, now, columns, || {
-            self.samples(columns)
+    /// The energy split at the same times as [`ViewCache::samples`], once per scene and width.
+    pub fn energies(&self, lab: &Lab, columns: usize) -> Rc<[(f64, EnergySplit)]> {
+        let now = lab.resolved();
+        cached(&self.energies, now, columns, || {
+            self.samples(lab, columns)
                 .iter()
                 .map(|s| (s.t, now.solution.energy_at(s.t)))
                 .collect()
@@ -86,12 +115,12 @@ impl App {
 
     /// The pinned run's states over the current span (its own events kept sharp), once
     /// per scene and width; empty when nothing is pinned.
-    pub fn pinned_samples(&self, columns: usize) -> Rc<[Snapshot]> {
-        let Some(p) = &self.lab.pinned else {
+    pub fn pinned_samples(&self, lab: &Lab, columns: usize) -> Rc<[Snapshot]> {
+        let Some(p) = &lab.pinned else {
             return Rc::from(Vec::new());
         };
-        let now = self.lab.resolved();
-        cached(&self.view_cache.pinned_samples, now, columns, || {
+        let now = lab.resolved();
+        cached(&self.pinned_samples, now, columns, || {
             let span = (now.solution.t_start, now.solution.t_end);
             sample_times(&p.solution, span, columns)
                 .into_iter()
@@ -100,15 +129,15 @@ impl App {
         })
     }
 
-    /// The pinned run's kinetic energy at [`App::pinned_samples`]' times, J, once per
+    /// The pinned run's kinetic energy at [`ViewCache::pinned_samples`]' times, J, once per
     /// scene and width (the energy chart's A/B curve); empty when nothing is pinned.
-    pub fn pinned_kinetic(&self, columns: usize) -> Rc<[(f64, f64)]> {
-        let Some(p) = &self.lab.pinned else {
+    pub fn pinned_kinetic(&self, lab: &Lab, columns: usize) -> Rc<[(f64, f64)]> {
+        let Some(p) = &lab.pinned else {
             return Rc::from(Vec::new());
         };
-        let now = self.lab.resolved();
-        cached(&self.view_cache.pinned_kinetic, now, columns, || {
-            self.pinned_samples(columns)
+        let now = lab.resolved();
+        cached(&self.pinned_kinetic, now, columns, || {
+            self.pinned_samples(lab, columns)
                 .iter()
                 .map(|s| (s.t, p.solution.energy_at(s.t).kinetic()))
                 .collect()
@@ -117,9 +146,9 @@ impl App {
 
     /// The regime over groove width (0 … 0.99 · 2R, across) and restitution (1 … 0,
     /// down) for these balls, `cols × rows` cells, row by row; once per scene and size.
-    pub fn regime_grid(&self, cols: usize, rows: usize) -> Rc<[Regime]> {
-        let now = self.lab.resolved();
-        cached(&self.view_cache.regimes, now, (cols, rows), || {
+    pub fn regime_grid(&self, lab: &Lab, cols: usize, rows: usize) -> Rc<[Regime]> {
+        let now = lab.resolved();
+        cached(&self.regimes, now, (cols, rows), || {
             let b_max = 2.0 * now.scene.radius * 0.99;
             (0..rows)
                 .flat_map(|rr| (0..cols).map(move |c| (rr, c)))
@@ -148,4 +177,36 @@ fn sample_times(sol: &Solution, (t0, t1): (f64, f64), columns: usize) -> Vec<f64
     ts.sort_by(f64::total_cmp);
     ts.dedup();
     ts
+}
+
+/// Where the chart was last drawn: enough to find the time under a cell without
+/// building the chart again (a drag on the chart sends many events). Any action may
+/// change the chart, so the app forgets it on each; moving the time does not.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ChartDrawn {
+    area: Rect,
+    ascii: bool,
+    monochrome: bool,
+    /// The plot's data cells (`None`: too small to draw).
+    pub data: Option<Rect>,
+    pub x_range: (f64, f64),
+}
+
+impl ChartDrawn {
+    pub fn of(plot: &Plot, area: Rect, inner: Rect, theme: &Theme) -> ChartDrawn {
+        ChartDrawn {
+            area,
+            ascii: theme.glyphs.ascii,
+            monochrome: theme.uncoloured_curves(),
+            data: plot.data_area(inner, theme),
+            x_range: plot.x_range,
+        }
+    }
+
+    /// True if it was drawn in `area` with `theme`'s layout.
+    pub fn is_for(&self, area: Rect, theme: &Theme) -> bool {
+        self.area == area
+            && self.ascii == theme.glyphs.ascii
+            && self.monochrome == theme.uncoloured_curves()
+    }
 }

@@ -1,0 +1,177 @@
+//! What the scene and data options open: the settings and scene they give, the data
+//! file's own scene under them, the measured series read from `--data`, the one rule
+//! for data without a scene, the lab on all of it and the app on the lab.
+
+use std::path::Path;
+
+use super::args::{DataArgs, SceneArgs, TrackRole};
+use super::error::{BadValue, CliError, Flag};
+use crate::input::data::Reading;
+use crate::lab::{Lab, OwnData, Settings};
+use crate::physics::scene::{Scene, Span};
+use crate::settings::units::{Dimension, show, unit_factor};
+use crate::study::measured::{Derive, Series};
+use crate::study::preset::{self, Preset};
+use crate::tui::app::{App, Library, Status};
+
+impl SceneArgs {
+    /// The settings layers these options give: the preset, then the values given.
+    pub fn settings(&self) -> Result<Settings, CliError> {
+        let preset = Preset::load(self.preset.as_deref().unwrap_or(preset::DEFAULT))?;
+        Ok(Settings::new(preset, self.values.clone()))
+    }
+
+    /// The preset these options start from, and the scene they make (by the lab's
+    /// span rule: a preset's `t_end` holds unless a scene option is given).
+    pub fn resolve(&self) -> Result<(Preset, Scene, Span), CliError> {
+        let settings = self.settings()?;
+        let (scene, span, _) = settings.settle()?;
+        Ok((settings.preset().clone(), scene, span))
+    }
+
+    /// True if a preset or any scene option is given (a data file names no scene).
+    pub fn names_a_scene(&self) -> bool {
+        self.preset.is_some() || self.values.given().next().is_some()
+    }
+}
+
+/// The scene options with the data file's own scene under them: a file that names
+/// the scene it was taken in (`# scene NAME = VALUE` lines, as the app's CSV export
+/// writes them) needs no `--preset`; an option given on the command line wins.
+pub fn with_file_scene(scene: &SceneArgs, data: &DataArgs) -> Result<SceneArgs, CliError> {
+    let Some(path) = data.data.first() else {
+        return Ok(scene.clone());
+    };
+    let text = crate::input::read_user_file(path, "--data", crate::input::MAX_FILE_BYTES)?;
+    let own = crate::input::data::scene_of(&text, &path.display().to_string())?;
+    Ok(SceneArgs {
+        values: own.over(&scene.values),
+        ..scene.clone()
+    })
+}
+
+/// The measured series that `--data` names (one file, or a centre and a mark track),
+/// read with the data options; `None` without `--data`.
+pub fn load_series(args: &DataArgs) -> Result<Option<Series>, CliError> {
+    let texts = match args.data.as_slice() {
+        [] => return Ok(None),
+        [_] | [_, _] => args
+            .data
+            .iter()
+            .map(|path| {
+                let what = Flag("data").to_string();
+                crate::input::read_user_file(path, &what, crate::input::MAX_FILE_BYTES)
+                    .map(|text| (path.display().to_string(), text))
+                    .map_err(CliError::from)
+            })
+            .collect::<Result<Vec<_>, _>>()?,
+        more => {
+            return Err(BadValue::DataTooOften { count: more.len() }.into());
+        }
+    };
+    let unit = |text: &Option<String>, dim: Dimension, id: &'static str| {
+        text.as_ref()
+            .map(|u| {
+                unit_factor(u, dim).map_err(|source| BadValue::Unit {
+                    flag: Flag(id),
+                    text: u.clone(),
+                    source,
+                })
+            })
+            .transpose()
+    };
+    let named = |role: TrackRole| {
+        args.track
+            .iter()
+            .rev()
+            .find(|(r, _)| *r == role)
+            .map(|(_, n)| n.clone())
+    };
+    let reading = Reading {
+        time_unit: unit(&args.time_unit, Dimension::Time, "time_unit")?,
+        speed_unit: unit(&args.speed_unit, Dimension::Speed, "speed_unit")?,
+        length_unit: unit(&args.length_unit, Dimension::Length, "length_unit")?,
+        impact_at: args.impact_at,
+        centre: named(TrackRole::Centre),
+        mark: named(TrackRole::Mark),
+    };
+    if let Some(w) = args.window
+        && !(w > 0.0 && w <= 1.0)
+    {
+        return Err(BadValue::OutOfRange {
+            flag: Flag("window"),
+            value: w,
+            dim: Dimension::Time,
+            allowed: "a half-width 0 s < T ≤ 1 s",
+        }
+        .into());
+    }
+    let derive = Derive {
+        half_window: args.window,
+        ..Derive::default()
+    };
+    let series = match texts.as_slice() {
+        [(file, text)] => crate::input::data::load(text, file, &reading, &derive),
+        [centre, mark] => crate::input::data::load_pair(centre, mark, &reading, &derive),
+        _ => unreachable!("one or two files"),
+    }?;
+    let file = texts[0].0.clone();
+    let m = match &series {
+        Series::Velocities(m) | Series::Track(m, _) => m,
+    };
+    m.check_magnitudes()
+        .map_err(|source| CliError::Implausible { file, source })?;
+    Ok(Some(series))
+}
+
+/// The lab on the scene the options describe, with `--data` replacing the preset's
+/// measured series (the lab derives a position track's v_t with the r of each scene
+/// it shows).
+pub fn lab(scene_args: &SceneArgs, data: &DataArgs) -> Result<Lab, CliError> {
+    let settings = scene_args.settings()?;
+    let own = load_series(data)?.map(|series| OwnData {
+        name: data
+            .data
+            .iter()
+            .map(|p| p.display().to_string())
+            .collect::<Vec<_>>()
+            .join(" + "),
+        series,
+    });
+    Ok(Lab::new(settings, own)?)
+}
+
+/// The app on that lab, with the user's presets.
+pub fn app(scene_args: &SceneArgs, data: &DataArgs) -> Result<App, CliError> {
+    opened(scene_args, data, Library::user())
+}
+
+/// The app as it opens on the options: the lab, and the status line asking for the
+/// data's scene when none was named ([`scene_of_data`]).
+pub fn opened(scene_args: &SceneArgs, data: &DataArgs, library: Library) -> Result<App, CliError> {
+    let mut app = App::new(lab(scene_args, data)?, library);
+    if let Some(path) = scene_of_data(scene_args, data) {
+        // The file's name without its folder: the status line is one row.
+        let file = path
+            .file_name()
+            .unwrap_or(path.as_os_str())
+            .to_string_lossy();
+        let s = &app.lab.scene;
+        app.status = Status::Error(format!(
+            "{file} names no scene: the model uses {}'s R = {}, b = {}; set R and b to yours",
+            app.lab.preset().name,
+            show(s.radius, Dimension::Length),
+            show(s.width, Dimension::Length),
+        ));
+    }
+    Ok(app)
+}
+
+/// The one rule for data and their scene, for the app, `render` and `fit`: a data file
+/// names no scene, so the one it was measured in is given by a preset or the scene
+/// options. Without them, the file whose scene is missing: `fit` refuses, the app and
+/// `render` say which default the model uses and ask for R and b.
+pub fn scene_of_data<'a>(scene_args: &SceneArgs, data: &'a DataArgs) -> Option<&'a Path> {
+    let path = data.data.first()?;
+    (!scene_args.names_a_scene()).then_some(path.as_path())
+}

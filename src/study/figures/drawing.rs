@@ -1,0 +1,178 @@
+//! What every figure is drawn with: the error, axis ranges plotters can draw, the
+//! measured points' marks, and numbers rounded for captions.
+
+/// Why a figure cannot be drawn.
+#[derive(Debug, thiserror::Error)]
+pub enum FigureError {
+    /// The input has nothing a figure could show (the text says what is missing).
+    #[error("{0}")]
+    NothingToDraw(&'static str),
+    /// plotters failed while drawing into the SVG text.
+    #[error(transparent)]
+    Plot(#[from] plotters::drawing::DrawingAreaErrorKind<std::io::Error>),
+}
+
+/// `v` rounded to its meaning in a caption: 4 significant digits, or "not measured"
+/// when it is not a number (μ_k,t without a rim mark); never `NaN`.
+pub(crate) fn rounded(v: f64) -> String {
+    if v.is_finite() {
+        crate::settings::units::significant(v, 4)
+    } else {
+        "not measured".into()
+    }
+}
+
+/// `v +- e` with both to the decimal of `e`'s first significant digit (0.1698 +- 0.0004,
+/// not 0.16980177 +- 0.00040326); `v` alone ([`rounded`]) when `e` is not a number.
+pub(crate) fn with_error(v: f64, e: f64) -> String {
+    if !(e.is_finite() && e > 0.0 && v.is_finite()) {
+        return format!("{} (no +-)", rounded(v));
+    }
+    let decimals = (-e.log10().floor()).clamp(0.0, 12.0) as usize;
+    format!("{v:.decimals$} +- {e:.decimals$}")
+}
+
+/// Largest magnitude put on an axis; beyond it spans overflow.
+const AXIS_LIMIT: f64 = 1e300;
+
+/// A chart on an SVG with linear axes.
+pub(super) type Chart<'a, 'b> = plotters::chart::ChartContext<
+    'a,
+    plotters::backend::SVGBackend<'b>,
+    plotters::coord::cartesian::Cartesian2d<
+        plotters::coord::types::RangedCoordf64,
+        plotters::coord::types::RangedCoordf64,
+    >,
+>;
+
+/// Measured points as the figures mark them, with their legend entries: v_cm as
+/// crosses, v_t as circles, in the colours given.
+pub(super) fn draw_measured_marks(
+    chart: &mut Chart,
+    v_cm: impl Iterator<Item = (f64, f64)>,
+    v_t: impl Iterator<Item = (f64, f64)>,
+    (cm, t): (plotters::style::RGBColor, plotters::style::RGBColor),
+) -> Result<(), FigureError> {
+    use plotters::element::{Circle, Cross};
+    chart
+        .draw_series(v_cm.map(|p| Cross::new(p, 4, cm)))?
+        .label("measured v_cm")
+        .legend(move |(x, y)| Cross::new((x + 10, y), 4, cm));
+    chart
+        .draw_series(v_t.map(|p| Circle::new(p, 3, t)))?
+        .label("measured v_t")
+        .legend(move |(x, y)| Circle::new((x + 10, y), 3, t));
+    Ok(())
+}
+
+/// The smallest and largest finite value, if any.
+pub fn finite_bounds(values: impl IntoIterator<Item = f64>) -> Option<(f64, f64)> {
+    values
+        .into_iter()
+        .filter(|v| v.is_finite())
+        .fold(None, |acc, v| match acc {
+            None => Some((v, v)),
+            Some((lo, hi)) => Some((lo.min(v), hi.max(v))),
+        })
+}
+
+/// A linear axis range plotters can draw: finite, within ±1e300, and wider than a
+/// millionth of its magnitude (a thinner one is padded by a tenth of it, an empty
+/// one at 0 becomes −1 … 1).
+pub fn linear_axis(lo: f64, hi: f64) -> (f64, f64) {
+    if !(lo.is_finite() && hi.is_finite()) {
+        return (-1.0, 1.0);
+    }
+    let (lo, hi) = (
+        lo.min(hi).clamp(-AXIS_LIMIT, AXIS_LIMIT),
+        hi.max(lo).clamp(-AXIS_LIMIT, AXIS_LIMIT),
+    );
+    let mag = lo.abs().max(hi.abs());
+    if hi - lo >= (mag * 1e-6).max(1e-100) {
+        return (lo, hi);
+    }
+    let pad = if mag < 1e-100 { 1.0 } else { 0.1 * mag };
+    (lo - pad, hi + pad)
+}
+
+/// A log axis range plotters can draw: positive, finite, within 1e-300 … 1e300, and
+/// at least a factor 1.01 wide (else widened tenfold each way).
+pub fn log_axis(lo: f64, hi: f64) -> (f64, f64) {
+    let ok = |v: f64| v.is_finite() && v > 0.0;
+    let (lo, hi) = match (ok(lo), ok(hi)) {
+        (true, true) => (lo.min(hi), hi.max(lo)),
+        (true, false) => (lo, lo),
+        (false, true) => (hi, hi),
+        (false, false) => (1.0, 1.0),
+    };
+    let (lo, hi) = (
+        lo.clamp(1.0 / AXIS_LIMIT, AXIS_LIMIT),
+        hi.clamp(1.0 / AXIS_LIMIT, AXIS_LIMIT),
+    );
+    if hi >= lo * 1.01 {
+        (lo, hi)
+    } else {
+        (lo / 10.0, hi * 10.0)
+    }
+}
+
+#[cfg(test)]
+pub(super) mod tests {
+    use super::*;
+
+    #[test]
+    fn caption_numbers_are_rounded_to_their_meaning() {
+        assert_eq!(rounded(0.16667742330550958), "0.1667");
+        assert_eq!(rounded(f64::NAN), "not measured");
+        assert_eq!(with_error(0.16980177, 0.00040326), "0.1698 +- 0.0004");
+        assert_eq!(with_error(0.1698, 0.0), "0.1698 (no +-)");
+        assert_eq!(with_error(0.17, f64::NAN), "0.17 (no +-)");
+    }
+    use crate::physics::scene::Scene;
+    use crate::study::preset::Preset;
+
+    /// Runs `f` on a thread and fails if it takes longer than 30 s (a figure once
+    /// looped forever on an infinite axis).
+    pub(crate) fn within_30s<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> T {
+        let (tx, rx) = std::sync::mpsc::channel();
+        std::thread::spawn(move || {
+            let _ = tx.send(f());
+        });
+        rx.recv_timeout(std::time::Duration::from_secs(30))
+            .expect("the figure finished")
+    }
+
+    pub(crate) fn paper() -> (Scene, crate::study::measured::series::Measured) {
+        let p = Preset::load("paper-b4.9").unwrap();
+        let (scene, _) = p.spec.resolve().unwrap();
+        (scene, p.measured.unwrap())
+    }
+
+    #[test]
+    fn axes_are_always_finite_and_wide_enough() {
+        let cases = [
+            (f64::INFINITY, 0.0),
+            (f64::NAN, 1.0),
+            (0.0, 0.0),
+            (1e300, 1e300),
+            (-f64::MAX, f64::MAX),
+            (1.0, 1.0 + 1e-15),
+            (5.0, 2.0),
+        ];
+        for (lo, hi) in cases {
+            let (a, b) = linear_axis(lo, hi);
+            assert!(
+                a.is_finite() && b.is_finite() && (b - a).is_finite(),
+                "{lo} {hi}"
+            );
+            assert!(b - a >= 1e-6 * a.abs().max(b.abs()), "{lo} {hi}: {a} {b}");
+            let (a, b) = log_axis(lo, hi);
+            assert!(
+                a > 0.0 && b.is_finite() && b >= 1.01 * a,
+                "{lo} {hi}: {a} {b}"
+            );
+        }
+        assert_eq!(linear_axis(-0.2, 0.9), (-0.2, 0.9));
+        assert_eq!(log_axis(1e-9, 1e-3), (1e-9, 1e-3));
+    }
+}
