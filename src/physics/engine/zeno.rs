@@ -239,7 +239,7 @@ impl Engine {
             speeds[i] = start;
         }
         let spins = if averaged {
-            self.bridge_spins(&now, speeds, &state)
+            self.bridge_spins(&now, speeds, state)
         } else {
             [now[0].u, now[1].u]
         };
