@@ -9,6 +9,7 @@ use super::error::{BadValue, CliError};
 use super::open::{lab, scene_of_data};
 use crate::output::write_atomically;
 use crate::physics::scene::Scene;
+use crate::settings::params::Key;
 use crate::settings::units::{Dimension, show, significant};
 use crate::study::fit::{self, Candidate, Fits, Free, ModelFit};
 use crate::study::measured::Found;
@@ -71,7 +72,14 @@ fn not_measured(fits: &Fits) -> Vec<NotMeasured> {
     .collect()
 }
 
-pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<String, CliError> {
+/// `fit` on the scene of `scene_args` (the command line's `typed` over the data
+/// file's own scene lines, [`with_file_scene`]).
+pub fn run(
+    scene_args: &SceneArgs,
+    typed: &SceneArgs,
+    data: &DataArgs,
+    args: &FitArgs,
+) -> Result<String, CliError> {
     // A data file names no scene: fitting it in the default preset's groove would be
     // a silent guess (and compare with the wrong row of the paper).
     if let Some(path) = scene_of_data(scene_args, data) {
@@ -138,7 +146,7 @@ pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<St
         }
         FitFormat::Table => {
             let own = data.data.is_empty();
-            let mut out = scene_line(preset, scene_args, &scene);
+            let mut out = scene_line(preset, typed, scene_args, data, &scene);
             out += &match (&found, &position) {
                 (Some(found), Some(position)) => track_table(&scene, &fits, found, position, own),
                 _ => table(&scene, &fits, own),
@@ -166,18 +174,49 @@ pub fn run(scene_args: &SceneArgs, data: &DataArgs, args: &FitArgs) -> Result<St
     }
 }
 
-/// The scene a fit used, and where it came from: the first line of the table.
-fn scene_line(preset: &Preset, args: &SceneArgs, scene: &Scene) -> String {
+/// The scene a fit used, and where it came from: the first line of the table. The
+/// values come from the command line (`typed`), the data file's own scene lines (the
+/// rest of `used`) and the preset under them (named unless those give every value).
+fn scene_line(
+    preset: &Preset,
+    typed: &SceneArgs,
+    used: &SceneArgs,
+    data: &DataArgs,
+    scene: &Scene,
+) -> String {
     let len = |v: f64| show(v, Dimension::Length);
-    let given: Vec<String> = args
+    let flags: Vec<Key> = typed.values.given().map(|(k, _)| k).collect();
+    let from_file: Vec<Key> = used
         .values
         .given()
-        .map(|(k, _)| format!("--{}", k.param().flag))
+        .map(|(k, _)| k)
+        .filter(|k| !flags.contains(k))
         .collect();
-    let source = if given.is_empty() {
-        format!("preset {}", preset.name)
-    } else {
-        format!("preset {} with {}", preset.name, given.join(" "))
+    let all: Vec<Key> = flags.iter().chain(&from_file).copied().collect();
+    let file = data.data.first().map(|p| p.display().to_string());
+    let mut sources = Vec::new();
+    if typed.preset.is_some() || !every_scene_value(&all) {
+        sources.push(format!("preset {}", preset.name));
+    }
+    match (&file, from_file.is_empty(), sources.is_empty()) {
+        (Some(file), false, true) => sources.push(format!("from {file}'s header")),
+        (Some(file), false, false) => {
+            let names: Vec<&str> = from_file.iter().map(|k| k.name()).collect();
+            sources.push(format!("{file}'s header ({})", names.join(", ")));
+        }
+        _ => {}
+    }
+    if !flags.is_empty() {
+        let flags: Vec<String> = flags
+            .iter()
+            .map(|k| format!("--{}", k.param().flag))
+            .collect();
+        sources.push(flags.join(" "));
+    }
+    let source = match sources.as_slice() {
+        [] => unreachable!("a preset, the file's header or flags give the scene"),
+        [one] => one.clone(),
+        [first, rest @ ..] => format!("{first} with {}", rest.join(" and ")),
     };
     format!(
         "scene ({source}): R = {}, b = {}, m = {} / {}, v0 = {} / {}, μ_k = {} (start), e = {}\n",
@@ -197,9 +236,16 @@ fn scene_line(preset: &Preset, args: &SceneArgs, scene: &Scene) -> String {
 fn table(scene: &Scene, f: &Fits, paper_data: bool) -> String {
     let l = &f.line_fit;
     let mut out = String::new();
+    // The window said as it was chosen: the sliding phase, or what --from/--to set.
+    let (over, hint) = match l.given {
+        [false, false] => ("over the sliding phase", "; change with --from/--to"),
+        [true, true] => ("over the window --from/--to set", ""),
+        [true, false] => ("from --from to the end of the sliding phase", ""),
+        [false, true] => ("from the start of the sliding phase to --to", ""),
+    };
     let _ = writeln!(
         out,
-        "line fits over the sliding phase, t = {:.3} … {:.3} s ({} frames; change with --from/--to)",
+        "line fits {over}, t = {:.3} … {:.3} s ({} frames{hint})",
         l.from, l.to, l.points
     );
     let _ = writeln!(
@@ -255,28 +301,29 @@ fn table(scene: &Scene, f: &Fits, paper_data: bool) -> String {
             );
         }
     }
-    let why = |name: &str| {
-        mf.not_identified
-            .iter()
-            .find(|n| n.parameter == name)
-            .map(|n| n.reason.clone())
-    };
-    let value = |name: &str, v: f64, se: Option<f64>, unit: &str| match (se, why(name)) {
-        (Some(se), _) => format!("{v:.4} ± {:.4}{unit}", 2.0 * se),
-        (None, Some(reason)) => format!("{v:.4}{unit} (no ±: {reason})"),
-        (None, None) => format!("{v:.4}{unit} (no ±)"),
+    // A value the data do not determine gets its reason, not a number.
+    let value = |name: &str, v: f64, se: Option<f64>, unit: &str| match (mf.undetermined(name), se)
+    {
+        (Some(n), _) => format!("not determined ({})", n.reason),
+        (None, Some(se)) => format!("{v:.4} ± {:.4}{unit}", 2.0 * se),
+        (None, None) => format!("{v:.4}{unit}"),
     };
     let mu_se = Some(mf.mu_se).filter(|s| s.is_finite());
     let _ = writeln!(
         out,
-        "  μ_k = {} (± 2σ, 95 %)   RMS residual {:.4} m/s",
+        "  μ_k = {}{}   RMS residual {:.4} m/s",
         value("mu", mf.mu, mu_se, ""),
+        if mu_se.is_some() {
+            " (± 2σ, 95 %)"
+        } else {
+            ""
+        },
         mf.rms
     );
-    if mf.v0_se.is_some() || why("v0").is_some() {
+    if mf.v0_se.is_some() || mf.undetermined("v0").is_some() {
         let _ = writeln!(out, "  v0 = {}", value("v0", mf.v0, mf.v0_se, " m/s"));
     }
-    if mf.restitution_se.is_some() || why("restitution").is_some() {
+    if mf.restitution_se.is_some() || mf.undetermined("restitution").is_some() {
         let _ = writeln!(
             out,
             "  e = {}",
@@ -290,17 +337,7 @@ fn table(scene: &Scene, f: &Fits, paper_data: bool) -> String {
         mf.regime_observed.name(),
         mf.rest_band
     );
-    let _ = writeln!(
-        out,
-        "  {}",
-        if mf.agrees && mf.regime_predicted != mf.regime_observed {
-            "consistent: the predicted v' lies within the rest band, so the data cannot tell it from rest"
-        } else if mf.agrees {
-            "the model predicts what was observed"
-        } else {
-            "the model does NOT predict what was observed"
-        }
-    );
+    let _ = writeln!(out, "  {}", mf.agreement().sentence());
     out
 }
 
@@ -337,29 +374,24 @@ fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit, paper_data:
         "velocities (derived)", "positions (direct)"
     );
     // A value the data do not determine gets no number that reads as fitted.
-    let undetermined =
-        |m: &ModelFit, name: &str| m.not_identified.iter().any(|n| n.parameter == name);
     let pm = |m: &ModelFit| {
-        if undetermined(m, "mu") {
+        if m.undetermined("mu").is_some() {
             "not determined".to_string()
-        } else if m.mu_se.is_finite() {
-            format!("{:.4} ± {:.4}", m.mu, 2.0 * m.mu_se)
         } else {
-            format!("{:.4} (no ±)", m.mu)
+            format!("{:.4} ± {:.4}", m.mu, 2.0 * m.mu_se)
         }
     };
     let opt = |m: &ModelFit, name: &str, v: f64, se: Option<f64>| match se {
-        _ if undetermined(m, name) => "not determined".to_string(),
+        _ if m.undetermined(name).is_some() => "not determined".to_string(),
         Some(se) => format!("{v:.4} ± {:.4}", 2.0 * se),
-        None => format!("{v:.4} (no ±)"),
+        None => format!("{v:.4}"),
     };
     let row = |out: &mut String, name: &str, a: String, b: String| {
         let _ = writeln!(out, "  {name:<33} {a:>24} {b:>24}");
     };
     row(&mut out, "μ_k (± 2σ, 95 %)", pm(v), pm(p));
-    let free = |m: &ModelFit, name: &str, se: Option<f64>| {
-        se.is_some() || m.not_identified.iter().any(|n| n.parameter == name)
-    };
+    let free =
+        |m: &ModelFit, name: &str, se: Option<f64>| se.is_some() || m.undetermined(name).is_some();
     if free(v, "v0", v.v0_se) || free(p, "v0", p.v0_se) {
         row(
             &mut out,
@@ -401,12 +433,7 @@ fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit, paper_data:
         regime(v),
         regime(p),
     );
-    let verdict = |m: &ModelFit| match (m.agrees, m.indistinguishable_from_rest) {
-        _ if undetermined(m, "mu") => "μ_k not determined".to_string(),
-        (true, true) => "agree (v' in rest band)".to_string(),
-        (true, false) => "agree".to_string(),
-        (false, _) => "DISAGREE".to_string(),
-    };
+    let verdict = |m: &ModelFit| m.agreement().word().to_string();
     row(&mut out, "verdict", verdict(v), verdict(p));
     let _ = writeln!(out, "  velocity fit: regime {}", v.verdict);
     let _ = writeln!(out, "  position fit: regime {}", p.verdict);
@@ -427,6 +454,26 @@ fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit, paper_data:
     out
 }
 
+/// True when `keys` set every value of a scene: no preset's value is left in it.
+fn every_scene_value(keys: &[Key]) -> bool {
+    let has = |k: &Key| keys.contains(k);
+    let ball = |v0: Key, h: Key| has(&v0) || has(&h);
+    [
+        Key::Radius,
+        Key::Width,
+        Key::MassLeft,
+        Key::MassRight,
+        Key::Mu,
+        Key::Restitution,
+        Key::RollingResistance,
+        Key::G,
+    ]
+    .iter()
+    .all(has)
+        && ball(Key::V0Left, Key::HeightLeft)
+        && ball(Key::V0Right, Key::HeightRight)
+}
+
 /// A fitted parameter's symbol and unit for people.
 fn symbol(parameter: &str) -> (&'static str, &'static str) {
     match parameter {
@@ -442,7 +489,7 @@ fn models_table(models: &[Candidate], positions: bool) -> String {
     let mut out = String::new();
     let _ = writeln!(
         out,
-        "\nwhich model the data support (fitted to the {}; AIC and BIC, lower is better; the simplest model within 2 of the lowest BIC is named):",
+        "\nwhich model the data support (fitted to the {}; AIC and BIC, lower is better; the simplest model within 2 of the lowest BIC whose values are all determined is named):",
         if positions { "positions" } else { "velocities" }
     );
     let unit = if positions { "mm" } else { "m/s" };
@@ -454,37 +501,104 @@ fn models_table(models: &[Candidate], positions: bool) -> String {
         "AIC",
         "BIC"
     );
+    let names = |c: &Candidate| {
+        c.parameters
+            .iter()
+            .map(|e| symbol(e.parameter).0)
+            .collect::<Vec<_>>()
+            .join(" + ")
+    };
     for c in models {
         let values: Vec<String> = c
             .parameters
             .iter()
             .map(|e| {
                 let (name, unit) = symbol(e.parameter);
-                match e.se {
-                    Some(se) => format!("{name} {:.4} ± {:.4}{unit}", e.value, 2.0 * se),
-                    None => format!("{name} {:.4}{unit} (no ±)", e.value),
+                match (&e.not_determined, e.se) {
+                    (Some(_), _) => format!("{name} not determined"),
+                    (None, Some(se)) => format!("{name} {:.4} ± {:.4}{unit}", e.value, 2.0 * se),
+                    (None, None) => format!("{name} {:.4}{unit}", e.value),
                 }
             })
             .collect();
-        let names: Vec<&str> = c.parameters.iter().map(|e| symbol(e.parameter).0).collect();
         let rms = if positions { 1e3 * c.rms } else { c.rms };
         let _ = writeln!(
             out,
             "{} {:<34} {:>10.4} {:>10.1} {:>10.1}   {}",
             if c.supported { "*" } else { " " },
-            names.join(" + "),
+            names(c),
             rms,
             c.aic,
             c.bic,
             values.join(", ")
         );
     }
-    if let Some(c) = models.iter().find(|c| c.supported) {
-        let names: Vec<&str> = c.parameters.iter().map(|e| symbol(e.parameter).0).collect();
+    out += &undetermined_notes(models, &names);
+    match models.iter().find(|c| c.supported) {
+        Some(c) => {
+            let _ = writeln!(
+                out,
+                "  the data support: {} (marked *); a larger model does not lower the BIC by 2 or more",
+                names(c)
+            );
+        }
+        None if !models.is_empty() => {
+            let best = models
+                .iter()
+                .min_by(|a, b| a.bic.total_cmp(&b.bic))
+                .expect("not empty");
+            let _ = writeln!(
+                out,
+                "  no model is named: the lowest BIC is {}'s, and no model within 2 of it has every value determined",
+                names(best)
+            );
+        }
+        None => {}
+    }
+    out
+}
+
+/// Below the models table: each value some model leaves undetermined, in which models
+/// and why; such a model is never the one named.
+fn undetermined_notes(models: &[Candidate], names: &dyn Fn(&Candidate) -> String) -> String {
+    let mut out = String::new();
+    // (parameter, reason) → the models where it is so, in table order.
+    let mut seen: Vec<(&fit::NotIdentified, Vec<String>)> = Vec::new();
+    for c in models {
+        for n in c
+            .parameters
+            .iter()
+            .filter_map(|e| e.not_determined.as_ref())
+        {
+            match seen
+                .iter_mut()
+                .find(|(m, _)| m.parameter == n.parameter && m.reason == n.reason)
+            {
+                Some((_, list)) => list.push(names(c)),
+                None => seen.push((n, vec![names(c)])),
+            }
+        }
+    }
+    for (n, list) in &seen {
+        let name = symbol(n.parameter).0;
+        let models = list.join("; ");
+        let _ = match n.on_edge_of {
+            // μ_k is in every model: on its edge, those models do not fit the data.
+            Some(range) if n.parameter == "mu" => writeln!(
+                out,
+                "  {name} lies on the edge of its physical range ({range}) in {models}: not determined, those models do not fit these data"
+            ),
+            Some(range) => writeln!(
+                out,
+                "  {name} lies on the edge of its physical range ({range}) in {models}: the data do not support {name} as a free value"
+            ),
+            None => writeln!(out, "  {name} not determined in {models}: {}", n.reason),
+        };
+    }
+    if !seen.is_empty() {
         let _ = writeln!(
             out,
-            "  the data support: {} (marked *); a larger model does not lower the BIC by 2 or more",
-            names.join(" + ")
+            "  (a model with a value the data do not determine is never the one named)"
         );
     }
     out

@@ -59,7 +59,9 @@ pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
         })
         .map(Outcome::Print),
         Some(Command::Compare(args)) => methods::compare(&cli.scene, args).map(Outcome::Print),
-        Some(Command::Fit(args)) => fit::run(scene, &cli.data, args).map(Outcome::Print),
+        Some(Command::Fit(args)) => {
+            fit::run(scene, &cli.scene, &cli.data, args).map(Outcome::Print)
+        }
         Some(Command::Sweep(args)) => sweep::run(&cli.scene, args).map(Outcome::Print),
         Some(Command::Presets) => Ok(Outcome::Print(presets())),
         Some(Command::Completions { shell }) => Ok(Outcome::Print(manual::completions(*shell))),

@@ -572,3 +572,264 @@ fn a_track_says_how_many_rows_it_left_out() {
         "{text}"
     );
 }
+
+/// The verdict of each model fit, as the `fit` table's "verdict" row and the Fit
+/// view's "observed" row print it, for the flat-table scene on the example track's
+/// centre (the position fit runs μ_k to the edge of its range).
+fn verdicts_of_flat_table() -> (Vec<String>, Vec<String>, groovelab::study::fit::Agreement) {
+    use crate::common::{no_user_presets, rendered, scene_of, text};
+    use groovelab::cli::DataArgs;
+    use groovelab::lab::jobs::State;
+    use groovelab::settings::spec::SceneSpec;
+    let out = groovelab(&[
+        "fit",
+        "--preset",
+        "flat-table",
+        "--data",
+        "docs/video/ball.txt",
+    ]);
+    let table = String::from_utf8_lossy(&out.stdout).to_string();
+    // The row's two cells (right-aligned columns apart by two blanks at least), in
+    // the table or in a panel of the screen.
+    let words = |text: &str, row: &str| -> Vec<String> {
+        let line = text
+            .lines()
+            .flat_map(|l| l.split('│'))
+            .map(str::trim)
+            .find(|l| l.starts_with(row))
+            .unwrap_or_else(|| panic!("no {row} row in {text}"));
+        line[row.len()..]
+            .split("  ")
+            .map(str::trim)
+            .filter(|w| !w.is_empty())
+            .map(str::to_string)
+            .collect()
+    };
+    let cli = words(&table, "verdict");
+    let data = DataArgs {
+        data: vec!["docs/video/ball.txt".into()],
+        ..DataArgs::default()
+    };
+    let app = rendered(
+        &scene_of("flat-table", SceneSpec::default()),
+        &data,
+        None,
+        Some("f"),
+        no_user_presets("fit-verdict"),
+    );
+    let screen = text(&app, (120, 40), false);
+    let view = words(&screen, "observed");
+    let State::Ready(Ok(p)) = app.lab.position_fit() else {
+        panic!("no position fit")
+    };
+    (cli, view, p.agreement())
+}
+
+/// Issue 19: the Fit view and `fit` give one verdict from one rule: a position fit
+/// whose μ_k lies on the edge of its range has none ("no verdict"), in both; it never
+/// DISAGREES in the view while the command says μ_k is not determined.
+#[test]
+fn the_fit_view_and_the_fit_command_give_the_same_verdict() {
+    use groovelab::study::fit::Agreement;
+    let (cli, view, position) = verdicts_of_flat_table();
+    assert_eq!(position, Agreement::MuNotDetermined);
+    assert_eq!(cli.len(), 2, "{cli:?}");
+    assert_eq!(
+        cli, view,
+        "the table's verdicts {cli:?}, the view's {view:?}"
+    );
+    assert_eq!(cli[1], position.word());
+    assert_eq!(cli[1], "no verdict");
+}
+
+/// Issue 19: in the models table a value the data do not determine (here e, which the
+/// example video's positions run to its edge, 1) prints "not determined", in JSON null
+/// with its reason, and a model with one is never named; every model has its `aic` and
+/// `bic`, and nothing prints NaN.
+#[test]
+fn the_models_table_says_not_determined_and_never_names_such_a_model() {
+    let args = [
+        "fit",
+        "--preset",
+        "paper-b4.9",
+        "--data",
+        "docs/video/paper-b4.9-tracker.txt",
+    ];
+    let out = groovelab(&args);
+    let text = String::from_utf8_lossy(&out.stdout).to_string();
+    assert!(out.status.success(), "{text}");
+    let rows: Vec<&str> = text
+        .lines()
+        .filter(|l| l.starts_with("* μ_k") || l.starts_with("  μ_k +") || l == &"  μ_k")
+        .collect();
+    let with_e: Vec<&&str> = rows.iter().filter(|l| l.contains(" + e ")).collect();
+    assert_eq!(with_e.len(), 4, "{text}");
+    for row in with_e {
+        assert!(row.contains("e not determined"), "{row}");
+        assert!(!row.starts_with('*'), "{row}");
+    }
+    assert!(
+        text.contains("the data do not support e as a free value"),
+        "{text}"
+    );
+    assert!(!text.contains("no ±") && !text.contains("NaN"), "{text}");
+    let out = groovelab(&[&args[..], &["--format", "json"]].concat());
+    let raw = String::from_utf8_lossy(&out.stdout).to_string();
+    assert!(!raw.contains("NaN"), "{raw}");
+    let json: serde_json::Value = serde_json::from_str(&raw).unwrap();
+    let models = json["models"].as_array().unwrap();
+    assert_eq!(models.len(), 8, "{raw}");
+    assert_eq!(models.iter().filter(|m| m["supported"] == true).count(), 1);
+    for m in models {
+        assert!(m["aic"].as_f64().is_some_and(f64::is_finite), "{m}");
+        assert!(m["bic"].as_f64().is_some_and(f64::is_finite), "{m}");
+        for p in m["parameters"].as_array().unwrap() {
+            if p["parameter"] == "restitution" {
+                assert!(p["value"].is_null() && p["se"].is_null(), "{p}");
+                assert!(
+                    p["reason"]
+                        .as_str()
+                        .unwrap()
+                        .contains("edge of its physical range"),
+                    "{p}"
+                );
+                assert_eq!(m["supported"], false, "{m}");
+            } else {
+                assert!(p["value"].is_number() && p.get("reason").is_none(), "{p}");
+            }
+        }
+    }
+}
+
+/// No output of `fit` prints NaN, in any format, for the paper's series and for
+/// tracks with and without a rim mark, in a scene that fits them and one that does not.
+#[test]
+fn no_fit_output_prints_nan() {
+    let inputs: [&[&str]; 4] = [
+        &["--preset", "paper-b4.4"],
+        &["--preset", "paper-b4.9", "--data", "docs/video/ball.txt"],
+        &["--preset", "flat-table", "--data", "docs/video/ball.txt"],
+        &[
+            "--preset",
+            "flat-table",
+            "--data",
+            "docs/video/logger-pro.csv",
+            "--free",
+            "mu,v0,restitution,rolling_resistance",
+        ],
+    ];
+    for input in inputs {
+        for format in ["table", "json", "svg"] {
+            let args = [&["fit"], input, &["--format", format]].concat();
+            let out = groovelab(&args);
+            let text = String::from_utf8_lossy(&out.stdout);
+            assert!(out.status.success(), "{args:?}: {text}");
+            assert!(!text.contains("NaN"), "{args:?} prints NaN: {text}");
+        }
+    }
+}
+
+/// Issue 19: the table's first line says where the scene came from: the data file's
+/// own `# scene` lines are named as such (not the default preset they replace), with
+/// the options over them, and the preset only where it still gives a value.
+#[test]
+fn the_fit_names_the_source_of_its_scene() {
+    let sim = groovelab(&[
+        "simulate",
+        "--preset",
+        "paper-b4.4",
+        "--format",
+        "csv",
+        "--sample",
+        "0.01",
+    ]);
+    let run = String::from_utf8(sim.stdout).unwrap();
+    let header = [
+        "radius = 2.75 cm",
+        "width = 4.4 cm",
+        "mass_left = 167 g",
+        "mass_right = 167 g",
+        "v0_left = 0.5318 m/s",
+        "v0_right = 0.5318 m/s",
+        "restitution = 1",
+        "rolling_resistance = 0",
+        "g = 9.81 m/s^2",
+        "mu = 0.17",
+    ];
+    let lines = |n: usize| -> String {
+        header[..n]
+            .iter()
+            .map(|l| format!("# scene {l}\n"))
+            .collect()
+    };
+    let full = csv("scene-full.csv", &(lines(header.len()) + &run));
+    let first = |args: &[&str]| {
+        let out = groovelab(&[&["fit", "--data"], args].concat());
+        let text = String::from_utf8_lossy(&out.stdout).to_string();
+        assert!(out.status.success(), "{args:?}: {text}");
+        text.lines().next().unwrap().to_string()
+    };
+    let line = first(&[&full]);
+    assert!(
+        line.starts_with(&format!(
+            "scene (from {full}'s header): R = 2.75 cm, b = 4.4 cm"
+        )),
+        "{line}"
+    );
+    assert!(!line.contains("preset"), "{line}");
+    let line = first(&[&full, "--mu", "0.2"]);
+    assert!(
+        line.starts_with(&format!("scene (from {full}'s header with --mu): ")),
+        "{line}"
+    );
+    // Without μ_k and g in the file, the preset gives them: named, with what the file
+    // gave.
+    let part = csv("scene-part.csv", &(lines(8) + &run));
+    let line = first(&[&part]);
+    assert!(
+        line.starts_with(&format!(
+            "scene (preset paper-b4.9 with {part}'s header (radius, width, mass_left, mass_right, v0_left, v0_right, restitution, rolling_resistance)): R = 2.75 cm, b = 4.4 cm"
+        )),
+        "{line}"
+    );
+}
+
+/// Issue 19: the line fits' header says the window used: the sliding phase, or the
+/// one --from/--to set (in seconds); the Fit view too, once its window is moved.
+#[test]
+fn the_line_fit_header_says_which_window() {
+    let lines = |extra: &[&str]| {
+        let out = groovelab(&[&["fit", "--preset", "paper-b3.5"], extra].concat());
+        let text = String::from_utf8(out.stdout).unwrap();
+        text.lines()
+            .find(|l| l.starts_with("line fits "))
+            .unwrap()
+            .to_string()
+    };
+    assert_eq!(
+        lines(&[]),
+        "line fits over the sliding phase, t = 0.020 … 0.220 s (11 frames; change with --from/--to)"
+    );
+    assert_eq!(
+        lines(&["--from", "0.06", "--to", "0.16"]),
+        "line fits over the window --from/--to set, t = 0.060 … 0.160 s (6 frames)"
+    );
+    assert_eq!(
+        lines(&["--from", "0.06"]),
+        "line fits from --from to the end of the sliding phase, t = 0.060 … 0.220 s (9 frames)"
+    );
+    assert_eq!(
+        lines(&["--to", "0.16"]),
+        "line fits from the start of the sliding phase to --to, t = 0.020 … 0.160 s (8 frames)"
+    );
+    use crate::common::{app, no_user_presets, text};
+    let mut a = app("paper-b3.5", no_user_presets("fit-window"));
+    crate::common::press(&mut a, "f");
+    a.wait();
+    let screen = text(&a, (200, 60), false);
+    assert!(screen.contains("lines over the sliding phase"), "{screen}");
+    crate::common::press(&mut a, ")");
+    a.wait();
+    let screen = text(&a, (200, 60), false);
+    assert!(screen.contains("lines over the window you set"), "{screen}");
+}

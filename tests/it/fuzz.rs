@@ -1056,8 +1056,9 @@ const NULLABLE: &[&str] = &[
     "label",
     // compare: where the step budget cut the span, `null` when it covered it all.
     "cut",
-    // fit's models: a value's standard error, `null` where the data do not pin it
-    // down (the value at a bound).
+    // fit's models: a value and its standard error, `null` where the data do not
+    // determine it (with its reason).
+    "value",
     "se",
 ];
 

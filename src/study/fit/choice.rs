@@ -4,23 +4,46 @@
 //! by AIC and BIC for least squares, `n ln(RSS/n) + 2k` and `n ln(RSS/n) + k ln n`
 //! (RSS weighted by the points' uncertainties where known; k counts every value
 //! estimated). The simplest model within 2 of the lowest BIC is the one named: a
-//! difference below 2 is not evidence for the larger model.
+//! difference below 2 is not evidence for the larger model; and never one with a value
+//! the data do not determine (on the edge of its range: the data do not support it as
+//! a free value).
 
 use serde::Serialize;
 
 use super::least_squares::{Target, residuals, with};
 use super::model::{Scored, scored_fit, thinned};
 use super::problem::{FitError, Free};
+use super::uncertainty::NotIdentified;
 use crate::physics::scene::Scene;
 use crate::study::Progress;
 use crate::study::measured::series::Measured;
 
-/// A fitted value and its standard error (`None`: the data do not pin it down).
-#[derive(Clone, Debug, PartialEq, Serialize)]
+/// A fitted value and its standard error; or, where the data do not determine it (on
+/// the edge of its physical range, or not identifiable), why: then it is "not
+/// determined" (JSON: `value` and `se` null, with `reason`), never a number that reads
+/// as fitted.
+#[derive(Clone, Debug, PartialEq)]
 pub struct Estimate {
     pub parameter: &'static str,
     pub value: f64,
     pub se: Option<f64>,
+    pub not_determined: Option<NotIdentified>,
+}
+
+impl Serialize for Estimate {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeStruct;
+        let shown = self.not_determined.is_none();
+        let mut st = s.serialize_struct("Estimate", 4)?;
+        st.serialize_field("parameter", self.parameter)?;
+        st.serialize_field("value", &Some(self.value).filter(|_| shown))?;
+        st.serialize_field("se", &self.se.filter(|_| shown))?;
+        match &self.not_determined {
+            Some(n) => st.serialize_field("reason", &n.reason)?,
+            None => st.skip_field("reason")?,
+        }
+        st.end()
+    }
 }
 
 /// One candidate model fitted.
@@ -36,6 +59,33 @@ pub struct Candidate {
     pub bic: f64,
     /// True for the model named as the simplest the data support.
     pub supported: bool,
+}
+
+impl Candidate {
+    /// True when the data determine every one of its values: only such a model can
+    /// be named (a value on the edge of its range is one the data do not support as
+    /// free).
+    pub fn determined(&self) -> bool {
+        self.parameters.iter().all(|e| e.not_determined.is_none())
+    }
+}
+
+/// The model the data support among `models`: the simplest whose values are all
+/// determined and whose BIC is within [`BIC_MARGIN`] of the lowest of all (a lower
+/// BIC bought with a value on its bound still counts: then no model may be named).
+fn supported(models: &[Candidate]) -> Option<usize> {
+    let best = models.iter().map(|c| c.bic).fold(f64::INFINITY, f64::min);
+    models
+        .iter()
+        .enumerate()
+        .filter(|(_, c)| c.determined() && c.bic <= best + BIC_MARGIN)
+        .min_by(|(_, a), (_, b)| {
+            a.parameters
+                .len()
+                .cmp(&b.parameters.len())
+                .then(a.bic.total_cmp(&b.bic))
+        })
+        .map(|(i, _)| i)
 }
 
 /// Fewest frames before the impact for v0 to be a candidate: the approach must be
@@ -111,18 +161,7 @@ pub fn compare_models(
         let cost: f64 = r.iter().map(|x| x * x).sum();
         out.push(candidate(free, s, cost, r.len()));
     }
-    let best = out.iter().map(|c| c.bic).fold(f64::INFINITY, f64::min);
-    let pick = out
-        .iter()
-        .enumerate()
-        .filter(|(_, c)| c.bic <= best + BIC_MARGIN)
-        .min_by(|(_, a), (_, b)| {
-            a.parameters
-                .len()
-                .cmp(&b.parameters.len())
-                .then(a.bic.total_cmp(&b.bic))
-        })
-        .map(|(i, _)| i);
+    let pick = supported(&out);
     if let Some(i) = pick {
         out[i].supported = true;
     }
@@ -146,6 +185,7 @@ fn candidate(free: &[Free], s: &Scored, cost: f64, n: usize) -> Candidate {
                 parameter: f.name(),
                 value,
                 se,
+                not_determined: s.fit.undetermined(f.name()).cloned(),
             })
             .collect(),
         rms: s.fit.rms,
@@ -153,5 +193,67 @@ fn candidate(free: &[Free], s: &Scored, cost: f64, n: usize) -> Candidate {
         aic: fit_term + 2.0 * k,
         bic: fit_term + k * n.ln(),
         supported: false,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn model(parameters: &[(&'static str, bool)], bic: f64) -> Candidate {
+        Candidate {
+            name: String::new(),
+            parameters: parameters
+                .iter()
+                .map(|&(parameter, determined)| Estimate {
+                    parameter,
+                    value: 1.0,
+                    se: determined.then_some(0.1),
+                    not_determined: (!determined).then(|| NotIdentified {
+                        parameter,
+                        reason: "on the edge".into(),
+                        on_edge_of: Some("0 ≤ e ≤ 1"),
+                    }),
+                })
+                .collect(),
+            rms: 0.0,
+            points: 10,
+            aic: bic,
+            bic,
+            supported: false,
+        }
+    }
+
+    #[test]
+    fn a_model_with_a_value_not_determined_is_never_named() {
+        let mu = model(&[("mu", true)], 0.0);
+        // e on its edge, 1 lower in BIC: the simplest determined model within 2 is μ.
+        let models = [
+            mu.clone(),
+            model(&[("mu", true), ("restitution", false)], -1.0),
+        ];
+        assert_eq!(supported(&models), Some(0));
+        // The simplest overall has its μ on the edge: the next one is named.
+        let models = [
+            model(&[("mu", false)], 0.0),
+            model(&[("mu", true), ("restitution", true)], 1.0),
+        ];
+        assert_eq!(supported(&models), Some(1));
+        // The lowest BIC, by far, is bought with a value on its edge: none is named
+        // (naming μ alone, 10 worse, would be no more honest).
+        let models = [mu, model(&[("mu", true), ("restitution", false)], -10.0)];
+        assert_eq!(supported(&models), None);
+    }
+
+    #[test]
+    fn a_value_not_determined_is_null_in_json_with_its_reason() {
+        let c = model(&[("mu", true), ("restitution", false)], 0.0);
+        let j = serde_json::to_value(&c).unwrap();
+        let e = &j["parameters"][1];
+        assert!(e["value"].is_null() && e["se"].is_null(), "{e}");
+        assert_eq!(e["reason"], "on the edge");
+        let mu = &j["parameters"][0];
+        assert_eq!(mu["value"], 1.0);
+        assert!(mu.get("reason").is_none(), "{mu}");
     }
 }

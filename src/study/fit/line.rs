@@ -63,6 +63,10 @@ pub struct LineFit {
     /// The fitted lines themselves, v_cm then v_t (slopes and intercepts), for drawing.
     #[serde(skip)]
     pub lines: [Line; 2],
+    /// Whether `from` and `to` were asked for (else the sliding phase's ends): what
+    /// the window is called.
+    #[serde(skip)]
+    pub given: [bool; 2],
 }
 
 /// The sliding phase after the first impact (at t = 0): from the first frame after
@@ -155,6 +159,7 @@ pub fn line_fit(
         f_net: mu_cm * mass * g / k,
         tau_net: mu_cm * mass * g * scene.radius,
         lines: [cm, vt],
+        given: [window.0.is_some(), window.1.is_some()],
     })
 }
 

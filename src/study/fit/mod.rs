@@ -25,7 +25,7 @@ pub use line::{
     Line, LineFit, PAPER_TABLE, PaperDisagreement, line, line_fit, paper_disagreements, paper_row,
     sliding_window,
 };
-pub use model::{MAX_MODEL_POINTS, ModelFit, model_fit, position_fit, thinned};
+pub use model::{Agreement, MAX_MODEL_POINTS, ModelFit, model_fit, position_fit, thinned};
 pub use problem::{FitError, Free};
 pub use regime::{observed_regime, rest_band};
 pub use uncertainty::NotIdentified;
@@ -52,6 +52,7 @@ pub fn fit_all(
     progress: &dyn Progress,
 ) -> Result<Fits, FitError> {
     let model_fit = model_fit(scene, m, free, progress)?;
+    let given = [window.0.is_some(), window.1.is_some()];
     // Without v_t the data cannot say when sliding ends: the fitted model does.
     let window = match window {
         (from, None) if !m.has_v_t() => {
@@ -73,7 +74,10 @@ pub fn fit_all(
         w => w,
     };
     let fits = Fits {
-        line_fit: line_fit(m, scene, window)?,
+        line_fit: LineFit {
+            given,
+            ..line_fit(m, scene, window)?
+        },
         model_fit,
         models: compare_models(scene, m, progress)?,
     };
@@ -95,7 +99,15 @@ fn check_finite(f: &Fits, has_v_t: bool) -> Result<(), FitError> {
         ("line fit μ_k,cm", l.mu_cm),
         ("line fit μ_k,t", spin(l.mu_t)),
         ("model fit μ_k", m.mu),
-        ("model fit μ_k error", m.mu_se),
+        // An undetermined μ_k has no error, by design (said in words).
+        (
+            "model fit μ_k error",
+            if m.undetermined(Free::Mu.name()).is_some() {
+                0.0
+            } else {
+                m.mu_se
+            },
+        ),
         ("model fit v0", m.v0),
         ("model fit e", m.restitution),
         ("model fit RMS residual", m.rms),

@@ -63,6 +63,88 @@ pub struct ModelFit {
     pub every: Option<usize>,
 }
 
+impl ModelFit {
+    /// Why the data do not determine the free value `parameter` ([`Free::name`]), if
+    /// they do not: then it is "not determined" (JSON null), never a number that
+    /// reads as fitted.
+    pub fn undetermined(&self, parameter: &str) -> Option<&NotIdentified> {
+        self.not_identified
+            .iter()
+            .find(|n| n.parameter == parameter)
+    }
+
+    /// The one verdict of the fit against what was observed, for every place that
+    /// says it (the `fit` table, the Fit view).
+    pub fn agreement(&self) -> Agreement {
+        if self.undetermined(Free::Mu.name()).is_some() {
+            Agreement::MuNotDetermined
+        } else if !self.agrees {
+            Agreement::Disagrees
+        } else if self.indistinguishable_from_rest {
+            Agreement::WithinRestBand
+        } else {
+            Agreement::Agrees
+        }
+    }
+}
+
+/// A model fit's verdict on what was observed ([`ModelFit::agreement`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Agreement {
+    /// The predicted regime is what was observed.
+    Agrees,
+    /// What was observed agrees because the predicted v' lies within the data's rest
+    /// band: the data cannot tell the prediction from rest.
+    WithinRestBand,
+    /// The predicted regime is not what was observed.
+    Disagrees,
+    /// The data do not determine μ_k (on the edge of its range, or not identifiable):
+    /// the regime predicted from it says nothing, so there is no verdict.
+    MuNotDetermined,
+}
+
+impl Agreement {
+    /// In a word or two, for a table cell (at most 15 characters: the Fit view's
+    /// columns).
+    pub fn word(self) -> &'static str {
+        match self {
+            Agreement::Agrees => "agrees",
+            Agreement::WithinRestBand => "agrees (v'≈0)",
+            Agreement::Disagrees => "DISAGREES",
+            Agreement::MuNotDetermined => "no verdict",
+        }
+    }
+
+    /// As a sentence about the model and what was observed.
+    pub fn sentence(self) -> &'static str {
+        match self {
+            Agreement::Agrees => "the model predicts what was observed",
+            Agreement::WithinRestBand => {
+                "consistent: the predicted v' lies within the rest band, so the data cannot tell it from rest"
+            }
+            Agreement::Disagrees => "the model does NOT predict what was observed",
+            Agreement::MuNotDetermined => {
+                "no verdict: the data do not determine μ_k, so the regime predicted from it says nothing"
+            }
+        }
+    }
+
+    /// [`Agreement::sentence`] in a narrow panel's words.
+    pub fn short_sentence(self) -> &'static str {
+        match self {
+            Agreement::Agrees => "the model predicts what was seen",
+            Agreement::WithinRestBand => "consistent: within the rest band",
+            Agreement::Disagrees => "the model does NOT predict what was seen",
+            Agreement::MuNotDetermined => "no verdict: μ_k not determined",
+        }
+    }
+
+    /// True for a verdict that the prediction holds.
+    pub fn holds(self) -> bool {
+        matches!(self, Agreement::Agrees | Agreement::WithinRestBand)
+    }
+}
+
 /// Every `k`-th frame of `m`, with `k` the smallest that leaves at most
 /// [`MAX_MODEL_POINTS`] frames; `None` if the series is short enough already.
 pub fn thinned(m: &Measured) -> Option<(Measured, usize)> {

@@ -17,6 +17,10 @@ pub(super) type Label = (usize, bool);
 pub struct NotIdentified {
     pub parameter: &'static str,
     pub reason: String,
+    /// The value's physical range as people read it when the best fit lies on its
+    /// edge (then the data push it there: they do not support it as a free value).
+    #[serde(skip)]
+    pub on_edge_of: Option<&'static str>,
 }
 
 /// A fitted value's bounds: its physical range in the parameter table (a fit is no
@@ -145,11 +149,13 @@ pub(super) fn uncertainties(
                     "the best fit lies on the edge of its physical range ({}), so the data do not determine it (fix it and fit the others)",
                     range_text(free[i])
                 ),
+                on_edge_of: Some(range_text(free[i])),
             });
         } else if !(jtj[i][i] > 0.0 && jtj[i][i].is_finite()) {
             why.push(NotIdentified {
                 parameter: free[i].name(),
                 reason: "the fitted points do not depend on it".into(),
+                on_edge_of: None,
             });
         } else {
             active.push(i);
@@ -189,6 +195,7 @@ pub(super) fn uncertainties(
                             others.join(", ")
                         )
                     },
+                    on_edge_of: None,
                 });
             }
         }
@@ -208,17 +215,15 @@ pub(super) fn uncertainties(
             product(&product(&inv, &meat), &inv)
         }
     });
-    if let Some(cov) = cov {
-        for (x, &a) in kept.iter().enumerate() {
-            let se = (s2 * cov[x][x]).sqrt();
-            if se.is_finite() {
-                out[active[a]] = Some(se);
-            } else {
-                why.push(NotIdentified {
-                    parameter: free[active[a]].name(),
-                    reason: "its uncertainty cannot be computed from these data".into(),
-                });
-            }
+    // Every value without a ± has its reason: none reads as fitted without one.
+    for (x, &a) in kept.iter().enumerate() {
+        match cov.as_ref().map(|cov| (s2 * cov[x][x]).sqrt()) {
+            Some(se) if se.is_finite() => out[active[a]] = Some(se),
+            _ => why.push(NotIdentified {
+                parameter: free[active[a]].name(),
+                reason: "its uncertainty cannot be computed from these data".into(),
+                on_edge_of: None,
+            }),
         }
     }
     (out, why)

@@ -64,7 +64,11 @@ fn line_fit_lines(l: &fit::LineFit, theme: &Theme) -> Ranked<'static> {
         (
             5,
             Line::from(Span::styled(
-                "paper's method: lines over the sliding phase",
+                if l.given == [false, false] {
+                    "paper's method: lines over the sliding phase"
+                } else {
+                    "paper's method: lines over the window you set"
+                },
                 theme.title,
             )),
         ),
@@ -177,41 +181,61 @@ fn model_fits_lines(
 }
 
 /// The candidate models by BIC (lower is better), the one the data support marked;
-/// below the fits, the first to go on a small screen.
+/// below the fits, the first to go on a small screen. A value the data do not
+/// determine is said so (as `fit` says it), and its model is never the one named.
 fn model_choice_lines(models: &[fit::Candidate], lines: &mut Ranked<'static>, theme: &Theme) {
     let g = theme.glyphs;
+    let symbol = |parameter: &str| match parameter {
+        "mu" => format!("{}_k", g.mu),
+        "restitution" => "e".to_string(),
+        "rolling_resistance" => "c_rr".to_string(),
+        other => other.to_string(),
+    };
     let name = |c: &fit::Candidate| {
-        let names: Vec<String> = c
-            .parameters
-            .iter()
-            .map(|e| match e.parameter {
-                "mu" => format!("{}_k", g.mu),
-                "restitution" => "e".to_string(),
-                "rolling_resistance" => "c_rr".to_string(),
-                other => other.to_string(),
-            })
-            .collect();
+        let names: Vec<String> = c.parameters.iter().map(|e| symbol(e.parameter)).collect();
         names.join("+")
     };
     // Only in the room the fits leave: the header before the rows, the supported
     // model first, then by BIC (a small screen keeps the best).
-    if let Some(c) = models.iter().find(|c| c.supported) {
-        lines.push((
+    match models.iter().find(|c| c.supported) {
+        Some(c) => lines.push((
             1,
             Line::from(vec![
                 Span::styled("the data support ", theme.dim),
                 Span::styled(g.text(&name(c)), theme.info),
                 Span::styled(" (by BIC)", theme.dim),
             ]),
+        )),
+        None if !models.is_empty() => lines.push((
+            1,
+            Line::from(Span::styled(
+                "no model named: none near the lowest BIC has every value determined",
+                theme.dim,
+            )),
+        )),
+        None => {}
+    }
+    if models.iter().any(|c| !c.determined()) {
+        lines.push((
+            0,
+            Line::from(Span::styled(
+                "? a value not determined: never named",
+                theme.dim,
+            )),
         ));
     }
     let mut ranked: Vec<&fit::Candidate> = models.iter().collect();
     ranked.sort_by(|a, b| b.supported.cmp(&a.supported).then(a.bic.total_cmp(&b.bic)));
     for c in ranked {
+        let mark = match (c.supported, c.determined()) {
+            (true, _) => "* ",
+            (false, true) => "  ",
+            (false, false) => "? ",
+        };
         lines.push((
             0,
             Line::from(vec![
-                Span::styled(if c.supported { "* " } else { "  " }, theme.info),
+                Span::styled(mark, theme.info),
                 Span::styled(g.text(&format!("{:<14}", name(c))), theme.text),
                 Span::styled(format!(" BIC {:>7.1} AIC {:>7.1}", c.bic, c.aic), theme.dim),
             ]),
@@ -232,7 +256,7 @@ fn model_fit_lines(m: &ModelFit, lines: &mut Ranked<'static>, theme: &Theme) {
         9,
         Line::from(vec![
             label(&format!("{}_k ", g.mu)),
-            value(pm(m.mu, m.mu_se, 4, g.ascii)),
+            value(pm(m, 4, g.ascii)),
             label("  RMS "),
             value(format!("{:.4} m/s", m.rms)),
         ]),
@@ -240,13 +264,20 @@ fn model_fit_lines(m: &ModelFit, lines: &mut Ranked<'static>, theme: &Theme) {
     verdict_lines(m, lines, theme);
 }
 
-/// μ ± 2σ with `decimals`, or μ alone with why there is no ±.
-fn pm(mu: f64, se: f64, decimals: usize, ascii: bool) -> String {
+/// μ ± 2σ with `decimals`; "not determined" where the data do not determine it (as
+/// `fit` says).
+fn pm(m: &ModelFit, decimals: usize, ascii: bool) -> String {
     let two_sigma = if ascii { "2sigma" } else { "2σ" };
-    if se.is_finite() {
-        format!("{mu:.decimals$} ± {:.decimals$} ({two_sigma})", 2.0 * se)
+    if m.undetermined("mu").is_some() {
+        "not determined".to_string()
+    } else if m.mu_se.is_finite() {
+        format!(
+            "{:.decimals$} ± {:.decimals$} ({two_sigma})",
+            m.mu,
+            2.0 * m.mu_se
+        )
     } else {
-        format!("{mu:.decimals$} (no ±)")
+        format!("{:.decimals$}", m.mu)
     }
 }
 
@@ -267,17 +298,16 @@ fn verdict_lines(m: &ModelFit, lines: &mut Ranked<'static>, theme: &Theme) {
             Span::styled(m.regime_observed.name().to_string(), theme.text),
         ]),
     ));
+    let verdict = m.agreement();
     lines.push((
         9,
         Line::from(Span::styled(
-            if m.agrees && m.regime_predicted != m.regime_observed {
-                "consistent: within the rest band"
-            } else if m.agrees {
-                "the model predicts what was seen"
+            g.text(verdict.short_sentence()),
+            if verdict.holds() {
+                theme.info
             } else {
-                "the model does NOT predict what was seen"
+                theme.error
             },
-            if m.agrees { theme.info } else { theme.error },
         )),
     ));
 }
@@ -290,11 +320,13 @@ fn both_fits(v: &ModelFit, p: &ModelFit, width: usize, lines: &mut Ranked<'stati
     let col = ((width.saturating_sub(6)) / 2).min(15);
     let decimals = if col >= 15 { 4 } else { 3 };
     let head = width.saturating_sub(2 * col);
-    let cell = |a: f64, se: f64| {
-        if se.is_finite() {
-            format!("{a:.decimals$}±{:.decimals$}", 2.0 * se)
+    let cell = |m: &ModelFit| {
+        if m.undetermined("mu").is_some() {
+            "not determined".to_string()
+        } else if m.mu_se.is_finite() {
+            format!("{:.decimals$}±{:.decimals$}", m.mu, 2.0 * m.mu_se)
         } else {
-            format!("{a:.decimals$} (no±)")
+            format!("{:.decimals$}", m.mu)
         }
     };
     let row = |name: &str, a: String, b: String, style| {
@@ -318,8 +350,8 @@ fn both_fits(v: &ModelFit, p: &ModelFit, width: usize, lines: &mut Ranked<'stati
         9,
         row(
             &format!("{}_k 2{}", g.mu, if g.ascii { "s" } else { "σ" }),
-            cell(v.mu, v.mu_se),
-            cell(p.mu, p.mu_se),
+            cell(v),
+            cell(p),
             theme.text,
         ),
     ));
@@ -341,7 +373,8 @@ fn both_fits(v: &ModelFit, p: &ModelFit, width: usize, lines: &mut Ranked<'stati
             theme.text,
         ),
     ));
-    let agree = |m: &ModelFit| if m.agrees { "agrees" } else { "DISAGREES" }.to_string();
+    // The verdict in the words `fit` prints (one rule: `ModelFit::agreement`).
+    let agree = |m: &ModelFit| m.agreement().word().to_string();
     lines.push((9, row("observed", agree(v), agree(p), theme.text)));
     lines.push((
         7,
