@@ -1255,6 +1255,48 @@ fn export_writes_the_run_as_csv_and_the_chart_as_svg() {
 }
 
 #[test]
+fn the_data_table_of_a_position_track_shows_x_in_cm() {
+    let track = DataArgs {
+        data: vec!["docs/video/paper-b4.9-tracker.txt".into()],
+        ..DataArgs::default()
+    };
+    let scene = scene_of("paper-b4.9", SceneSpec::default());
+    let a = common::rendered(
+        &scene,
+        &track,
+        None,
+        Some("d"),
+        common::no_user_presets("tui"),
+    );
+    let rows = groovelab::tui::view::data_rows(&a);
+    let m = a.lab.measured().unwrap();
+    let x = m.x.as_ref().unwrap();
+    for (r, i) in rows.iter().zip(0..) {
+        // The tracked centre where the model's left ball would be: x − R.
+        let model = a.lab.solution.at(m.t[i]).left.x;
+        let want = x[i] - a.lab.scene.radius;
+        assert!(r[7] == want || (r[7].is_nan() && want.is_nan()), "row {i}");
+        assert_eq!(r[8], model);
+        assert!(r[9] == want - model || want.is_nan(), "row {i}");
+    }
+    let first = rows.iter().find(|r| r[7].is_finite()).unwrap();
+    for (w, h) in [(120, 40), (80, 24)] {
+        let s = text_of(&a, w, h, false);
+        assert!(s.contains("x (cm)") && s.contains("v_cm (m/s)"), "{s}");
+        // In cm, beside the model's.
+        let cells = format!("{:+9.3} {:+9.3}", 100.0 * first[7], 100.0 * first[8]);
+        assert!(s.contains(&cells), "{cells}: {s}");
+    }
+    // A velocity file has no x: the table is as it was (its snapshot).
+    let b = app("paper-b4.9");
+    assert!(
+        groovelab::tui::view::data_rows(&b)
+            .iter()
+            .all(|r| r[7].is_nan())
+    );
+}
+
+#[test]
 fn the_data_table_shows_the_model_beside_every_measured_point() {
     let mut a = app("paper-b4.9");
     press(&mut a, "d");

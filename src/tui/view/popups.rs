@@ -7,6 +7,7 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Clear, Paragraph, Widget, Wrap};
 
 use super::panel::{block, wrap};
+use crate::settings::units::Dimension;
 use crate::tui::app::export::export_step;
 use crate::tui::app::{App, Export, Field, Mode, Status};
 use crate::tui::keys::TABLE;
@@ -112,23 +113,27 @@ fn help_lines(width: usize, theme: &Theme) -> Vec<Line<'static>> {
 }
 
 /// The data table's rows: t, then v_cm measured, model, measured − model, then the
-/// same for v_t (SI); NaN where the data have no value or the time is outside the run.
-pub fn data_rows(app: &App) -> Vec<[f64; 7]> {
+/// same for v_t, then for x, the left ball's centre (a position track's, where the
+/// model's left ball would be: x − R), SI; NaN where the data have no value (x: a
+/// velocity file) or the time is outside the run.
+pub fn data_rows(app: &App) -> Vec<[f64; 10]> {
     let n = app.lab.measured().map_or(0, |m| m.t.len());
     (0..n).filter_map(|i| data_row(app, i)).collect()
 }
 
 /// Row `i` of [`data_rows`].
-fn data_row(app: &App, i: usize) -> Option<[f64; 7]> {
+fn data_row(app: &App, i: usize) -> Option<[f64; 10]> {
     let m = app.lab.measured()?;
     let sol = &app.lab.solution;
     let t = *m.t.get(i)?;
-    let (model_v, model_u) = if (sol.t_start..=sol.t_end).contains(&t) {
-        let s = sol.at(t);
-        (s.left.v, s.left.u)
-    } else {
-        (f64::NAN, f64::NAN)
-    };
+    let model = (sol.t_start..=sol.t_end)
+        .contains(&t)
+        .then(|| sol.at(t).left);
+    let (model_v, model_u, model_x) =
+        model.map_or((f64::NAN, f64::NAN, f64::NAN), |b| (b.v, b.u, b.x));
+    let x =
+        m.x.as_ref()
+            .map_or(f64::NAN, |x| x[i] - app.lab.scene.radius);
     Some([
         t,
         m.v_cm[i],
@@ -137,47 +142,70 @@ fn data_row(app: &App, i: usize) -> Option<[f64; 7]> {
         m.v_t[i],
         model_u,
         m.v_t[i] - model_u,
+        x,
+        model_x,
+        x - model_x,
     ])
 }
+
+/// The data table's header rows: its groups (x first for a position track, so that
+/// a narrow screen still shows it) and their columns.
+fn data_head(track: bool, theme: &Theme) -> Vec<Line<'static>> {
+    let g = theme.glyphs;
+    let (groups, columns) = if track {
+        let unit = POSITION.display_unit().0;
+        let x = format!("{:-^28}", format!(" x ({unit}) "));
+        (
+            format!(
+                "          {x}   ---------- v_cm (m/s) ----------  ----------- v_t (m/s) -----------"
+            ),
+            "   t (s)  measured     model  residual   measured     model  residual    measured     model  residual",
+        )
+    } else {
+        (
+            "          ---------- v_cm (m/s) ----------  ----------- v_t (m/s) -----------"
+                .to_string(),
+            "   t (s)  measured     model  residual    measured     model  residual",
+        )
+    };
+    vec![
+        Line::from(Span::styled(g.text(&groups), theme.dim)),
+        Line::from(Span::styled(g.text(columns), theme.title)),
+    ]
+}
+
+/// What the data table shows of a position, in the position chart's unit.
+const POSITION: Dimension = Dimension::Length;
 
 fn data_table(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let g = theme.glyphs;
     let dash = if g.ascii { "-" } else { "–" };
-    let cell = |v: f64, signed: bool| {
-        if !v.is_finite() {
-            format!("{dash:>9}")
-        } else if signed {
+    let cell = |v: f64| {
+        if v.is_finite() {
             format!("{v:>+9.3}")
         } else {
-            format!("{v:>9.3}")
+            format!("{dash:>9}")
         }
     };
-    let head = vec![
-        Line::from(Span::styled(
-            g.text("          ---------- v_cm (m/s) ----------  ----------- v_t (m/s) -----------"),
-            theme.dim,
-        )),
-        Line::from(Span::styled(
-            g.text("   t (s)  measured     model  residual    measured     model  residual"),
-            theme.title,
-        )),
-    ];
+    let track = app.lab.measured().is_some_and(|m| m.x.is_some());
+    let head = data_head(track, theme);
     let count = app.lab.measured().map_or(0, |m| m.t.len());
     let line = |i: usize| {
         data_row(app, i).map_or_else(Line::default, |r| {
             let near = (r[0] - app.t).abs() < 1e-9;
             let style = if near { theme.selected } else { theme.text };
+            let group = |k: usize, scale: fn(f64) -> f64| {
+                let [a, b, c] = [r[k], r[k + 1], r[k + 2]].map(|v| cell(scale(v)));
+                format!("{a} {b} {c}")
+            };
+            let x = if track {
+                format!("{}  ", group(7, |v| POSITION.to_display(v)))
+            } else {
+                String::new()
+            };
+            let (v_cm, v_t) = (group(1, |v| v), group(4, |v| v));
             Line::from(Span::styled(
-                format!(
-                    " {:>+7.4} {} {} {}   {} {} {}",
-                    r[0],
-                    cell(r[1], true),
-                    cell(r[2], true),
-                    cell(r[3], true),
-                    cell(r[4], true),
-                    cell(r[5], true),
-                    cell(r[6], true)
-                ),
+                format!(" {:>+7.4} {x}{v_cm}   {v_t}", r[0]),
                 style,
             ))
         })
@@ -189,7 +217,8 @@ fn data_table(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     };
     // Room for the title beside "↑ more".
     let title = g.ellipsize(title, usize::from(area.width.saturating_sub(16)));
-    scrolling(app, &title, head, (count, &line), (area, 78), buf, theme);
+    let width = if track { 110 } else { 78 };
+    scrolling(app, &title, head, (count, &line), (area, width), buf, theme);
 }
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
