@@ -997,7 +997,7 @@ fn small_screens_keep_the_important_lines() {
     // The Fit panel keeps μ_k and the regime verdict.
     let s = screen("paper-b4.9", 0.3, (80, 24), false, Some("f"));
     let fit = right_panel(&s);
-    assert!(fit.contains("μ_k 0.16"), "{fit}");
+    assert!(fit.contains("μ_k 0.149"), "{fit}");
     // The verdict (with its margin) and what was observed (issue 11b's one verdict).
     assert!(fit.contains("predicted recollide"), "{fit}");
     assert!(fit.contains("observed recollide"), "{fit}");
