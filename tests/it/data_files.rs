@@ -343,6 +343,56 @@ fn a_header_without_units_over_ms_and_cm_per_s_names_the_options() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+#[test]
+fn a_track_without_units_in_cm_or_mm_names_the_length_unit() {
+    let track = video_track(5);
+    let dir = scratch("track-units");
+    let scaled = |k: f64| {
+        let x: Vec<f64> = track.x.iter().map(|v| v * k).collect();
+        let y: Vec<f64> = track.y.iter().map(|v| v * k).collect();
+        tracker_export("ball", &track.t, &x, &y)
+    };
+    for (unit, k) in [("cm", 100.0), ("mm", 1000.0)] {
+        let file = dir.join(format!("ball_{unit}.txt"));
+        std::fs::write(&file, scaled(k)).unwrap();
+        let f = file.to_str().unwrap();
+        let out = common::groovelab(&["fit", "--preset", "paper-b4.9", "--data", f]);
+        let err = String::from_utf8_lossy(&out.stderr);
+        // Read as metres the ball would approach at 100 or 1000 times its v0 = 0.608 m/s.
+        assert_eq!(out.status.code(), Some(2), "{unit}: {err}");
+        assert!(
+            err.contains("do not look like metres")
+                && err.contains(&format!("give --length-unit {unit}"))
+                && err.lines().count() == 1,
+            "{unit}: {err}"
+        );
+        // Following the advice fits the truth.
+        let j = fit_json(&[&file], &["--length-unit", unit]);
+        let mu = j["position_fit"]["mu"].as_f64().unwrap();
+        assert!((mu - MU).abs() < 0.003, "{unit}: μ_k = {mu}");
+    }
+    // The units of an SI file given wrongly: said in words, not as an overflow.
+    let file = dir.join("ball.txt");
+    std::fs::write(&file, scaled(1.0)).unwrap();
+    let f = file.to_str().unwrap();
+    let out = common::groovelab(&[
+        "fit",
+        "--preset",
+        "paper-b4.9",
+        "--data",
+        f,
+        "--time-unit",
+        "ms",
+    ]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("in the units given the frames are") && !err.contains("overflow"),
+        "{err}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// The exact left ball's velocities of `scene` at 100 frames/s with seeded noise of
 /// 1 cm/s, the frame at the impact left out.
 fn noisy_velocities(scene: &Scene, seed: u64) -> groovelab::study::measured::Measured {
@@ -362,6 +412,34 @@ fn noisy_velocities(scene: &Scene, seed: u64) -> groovelab::study::measured::Mea
         u.push(s.left.u + 0.01 * noise.gauss());
     }
     groovelab::study::measured::Measured::velocities(t, v, u)
+}
+
+#[test]
+fn a_fit_far_beyond_the_datas_scatter_never_agrees() {
+    use groovelab::study::fit::{Agreement, Free, POOR_FIT, model_fit};
+    let truth = scene();
+    // Measured at twice the scene's v0: the regime depends on k and e only, so the
+    // regimes agree, yet no μ_k brings the model near the data.
+    let mut fast = truth;
+    fast.left.v0 *= 2.0;
+    fast.right.v0 *= 2.0;
+    let m = noisy_velocities(&fast, 7);
+    let quiet = &groovelab::study::Quiet;
+    let f = model_fit(&truth, &m, &[Free::Mu], quiet).unwrap();
+    let scatter = f.scatter.unwrap();
+    // The noise is 1 cm/s: the scatter says so within a quarter.
+    assert!((scatter - 0.01).abs() < 0.0025, "scatter {scatter}");
+    assert!(
+        f.rms > POOR_FIT * scatter,
+        "rms {} scatter {scatter}",
+        f.rms
+    );
+    assert_eq!(f.regime_predicted, f.regime_observed);
+    assert_eq!(f.agreement(), Agreement::PoorFit);
+    // The same data in their own scene: residuals of about the scatter, and agreed.
+    let g = model_fit(&fast, &m, &[Free::Mu], quiet).unwrap();
+    assert!(g.rms < 2.0 * scatter, "rms {}", g.rms);
+    assert_eq!(g.agreement(), Agreement::Agrees);
 }
 
 #[test]

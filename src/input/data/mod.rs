@@ -6,6 +6,7 @@
 
 mod options;
 mod positions;
+mod scales;
 mod scene;
 mod table;
 mod velocities;

@@ -7,6 +7,7 @@
 //! `NaN` cells as missing. The velocities are derived in `study::measured`.
 
 use super::options::{DataError, MAX_ROWS, Reading};
+use super::scales::{Given, check_track};
 use super::table::{Row, Sep, Table, clean, missing, number, unit_factor};
 use crate::settings::units::Dimension;
 use crate::study::measured::Track;
@@ -331,6 +332,14 @@ pub(super) fn from_table(table: &Table, file: &str, reading: &Reading) -> Result
             if centre.is_empty() { "x" } else { &centre }
         )));
     }
+    let given = |i: usize, option: Option<f64>| {
+        option.is_some() || cols[i].as_ref().is_some_and(|c| c.factor.is_some())
+    };
+    let given = Given {
+        time: given(it, reading.time_unit),
+        length: given(ix, reading.length_unit),
+    };
+    check_track(&track, given).map_err(err)?;
     Ok(track)
 }
 
@@ -437,7 +446,7 @@ mod tests {
     #[test]
     fn tracker_multi_track_names_centre_and_mark() {
         let text =
-            "#multi:\n\tmass A\t\tmass B\t\n t\tx\ty\tx\ty\n0\t1\t2\t1\t2,5\n0,01\t1,1\t2\t\t\n";
+            "#multi:\n\tmass A\t\tmass B\t\n t\tx\ty\tx\ty\n0\t1\t2\t1\t2,5\n0,01\t1,001\t2\t\t\n";
         let t = read(text, &Reading::default()).unwrap();
         assert_eq!(t.format, "Tracker multi-track");
         assert_eq!(t.centre_name, "mass A");

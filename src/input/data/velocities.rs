@@ -4,6 +4,7 @@
 //! in other units than the header says named in the error.
 
 use super::options::{DataError, MAX_ROWS, Reading};
+use super::scales::{FASTEST_BALL, LONGEST_FRAME, frame_spacing};
 use super::table::{Table, clean, number, unit_factor};
 use crate::settings::units::Dimension;
 use crate::study::measured::Measured;
@@ -159,20 +160,12 @@ struct Units {
     v_t: Option<f64>,
 }
 
-/// Slowest frame rate a measurement of this experiment has (a frame a second), and
-/// the largest speed a ball in a groove reaches (m/s): numbers beyond them, with no
-/// unit said, are plainly in ms and cm/s.
-const LONGEST_FRAME: f64 = 1.0;
-const FASTEST_BALL: f64 = 10.0;
-
 impl Units {
     /// Numbers taken as SI because no unit was said, which are plainly not SI: frames
     /// a second or more apart (ms), speeds of 10 m/s or more (cm/s). The error says
     /// what the numbers look like and which options read them.
     fn check_plausible(&self, t: &[f64], v_cm: &[f64], v_t: &[f64]) -> Result<(), String> {
-        let mut spacing: Vec<f64> = t.windows(2).map(|w| w[1] - w[0]).collect();
-        spacing.sort_by(f64::total_cmp);
-        let frame = spacing[spacing.len() / 2];
+        let frame = frame_spacing(t);
         let fastest = v_cm.iter().chain(v_t).fold(0.0_f64, |a, v| a.max(v.abs()));
         let ms = self.time.is_none() && frame >= LONGEST_FRAME;
         let cm = (self.v_cm.is_none() || self.v_t.is_none()) && fastest >= FASTEST_BALL;

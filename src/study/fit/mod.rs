@@ -25,7 +25,9 @@ pub use line::{
     Line, LineFit, PAPER_TABLE, PaperDisagreement, line, line_fit, paper_disagreements, paper_row,
     sliding_window,
 };
-pub use model::{Agreement, MAX_MODEL_POINTS, ModelFit, model_fit, position_fit, thinned};
+pub use model::{
+    Agreement, MAX_MODEL_POINTS, ModelFit, POOR_FIT, model_fit, position_fit, thinned,
+};
 pub use problem::{FitError, Free};
 pub use regime::{observed_regime, rest_band};
 pub use uncertainty::NotIdentified;

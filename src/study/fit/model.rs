@@ -18,7 +18,7 @@ use super::least_squares::{
 };
 use super::line::sliding_window;
 use super::problem::{Evals, FitError, Free};
-use super::regime::{observed_after, rest_band, rolling_time};
+use super::regime::{data_scatter, observed_after, rest_band, rolling_time};
 use super::uncertainty::{NotIdentified, shared_noise, uncertainties};
 
 /// Most frames the model fit uses. A longer series is thinned to every k-th frame
@@ -57,6 +57,10 @@ pub struct ModelFit {
     pub agrees: bool,
     /// Free values the data cannot pin down, and why (their `_se` is null).
     pub not_identified: Vec<NotIdentified>,
+    /// The data's own scatter in the units of `rms` (m/s; m for a position fit), where
+    /// it can be told: an RMS residual far beyond it means the model does not describe
+    /// the data ([`Agreement::PoorFit`]).
+    pub scatter: Option<f64>,
     /// Set when the series had more than [`MAX_MODEL_POINTS`] frames: the fit used
     /// every this-many-th frame.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -78,6 +82,8 @@ impl ModelFit {
     pub fn agreement(&self) -> Agreement {
         if self.undetermined(Free::Mu.name()).is_some() {
             Agreement::MuNotDetermined
+        } else if self.scatter.is_some_and(|s| self.rms > POOR_FIT * s) {
+            Agreement::PoorFit
         } else if !self.agrees {
             Agreement::Disagrees
         } else if self.indistinguishable_from_rest {
@@ -101,7 +107,16 @@ pub enum Agreement {
     /// The data do not determine μ_k (on the edge of its range, or not identifiable):
     /// the regime predicted from it says nothing, so there is no verdict.
     MuNotDetermined,
+    /// The RMS residual is more than [`POOR_FIT`] times the data's scatter: the model
+    /// does not describe the data (wrong units, wrong scene, another experiment), so
+    /// its predicted regime says nothing either.
+    PoorFit,
 }
+
+/// How many times the data's scatter an RMS residual may be before the fit is poor.
+/// A model that describes the data leaves residuals of about the scatter (1×); a few
+/// times it where the model misses an impact's detail; never 10×.
+pub const POOR_FIT: f64 = 10.0;
 
 impl Agreement {
     /// In a word or two, for a table cell (at most 15 characters: the Fit view's
@@ -112,6 +127,7 @@ impl Agreement {
             Agreement::WithinRestBand => "agrees (v'≈0)",
             Agreement::Disagrees => "DISAGREES",
             Agreement::MuNotDetermined => "no verdict",
+            Agreement::PoorFit => "POOR FIT",
         }
     }
 
@@ -126,6 +142,9 @@ impl Agreement {
             Agreement::MuNotDetermined => {
                 "no verdict: the data do not determine μ_k, so the regime predicted from it says nothing"
             }
+            Agreement::PoorFit => {
+                "no verdict: the RMS residual is over 10× the data's scatter, so the model does not describe these data (check the units and the scene)"
+            }
         }
     }
 
@@ -136,6 +155,7 @@ impl Agreement {
             Agreement::WithinRestBand => "consistent: within the rest band",
             Agreement::Disagrees => "the model does NOT predict what was seen",
             Agreement::MuNotDetermined => "no verdict: μ_k not determined",
+            Agreement::PoorFit => "no verdict: RMS ≫ the data's scatter",
         }
     }
 
@@ -341,6 +361,7 @@ pub(super) fn scored_fit(
                 .iter()
                 .any(|n| n.parameter == Free::Mu.name()),
         not_identified,
+        scatter: data_scatter(m, target == Target::Position),
         every,
     }))
 }

@@ -6,33 +6,56 @@ use crate::physics::derived::Regime;
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
 use crate::study::measured::series::Measured;
+use crate::study::measured::track::derivative::scatter;
 
 /// Speeds within ± this of zero count as rest: three times the scatter of the
 /// measured points about straight lines over the sliding phase (the data's own
 /// resolution), at least 2 cm/s.
 pub fn rest_band(m: &Measured) -> f64 {
-    let noise = sliding_window(m)
-        .and_then(|(from, to)| {
-            let idx: Vec<usize> = (0..m.t.len())
-                .filter(|&i| m.t[i] >= from && m.t[i] <= to)
-                .collect();
-            (idx.len() >= 3).then(|| {
-                let ts: Vec<f64> = idx.iter().map(|&i| m.t[i]).collect();
-                let mut sq = 0.0;
-                for series in [&m.v_cm, &m.v_t] {
-                    let ys: Vec<f64> = idx.iter().map(|&i| series[i]).collect();
-                    let l = line(&ts, &ys);
-                    sq += ts
-                        .iter()
-                        .zip(&ys)
-                        .map(|(t, y)| (y - l.intercept - l.slope * t).powi(2))
-                        .sum::<f64>();
-                }
-                (sq / (2 * idx.len()) as f64).sqrt()
-            })
-        })
-        .unwrap_or(0.0);
-    (3.0 * noise).max(0.02)
+    (3.0 * sliding_noise(m).unwrap_or(0.0)).max(0.02)
+}
+
+/// The scatter of v_cm and v_t about straight lines over the sliding phase (NaN where
+/// a v_t is missing); `None` without a sliding phase of three points.
+fn sliding_noise(m: &Measured) -> Option<f64> {
+    let (from, to) = sliding_window(m)?;
+    let idx: Vec<usize> = (0..m.t.len())
+        .filter(|&i| m.t[i] >= from && m.t[i] <= to)
+        .collect();
+    (idx.len() >= 3).then(|| {
+        let ts: Vec<f64> = idx.iter().map(|&i| m.t[i]).collect();
+        let mut sq = 0.0;
+        for series in [&m.v_cm, &m.v_t] {
+            let ys: Vec<f64> = idx.iter().map(|&i| series[i]).collect();
+            let l = line(&ts, &ys);
+            sq += ts
+                .iter()
+                .zip(&ys)
+                .map(|(t, y)| (y - l.intercept - l.slope * t).powi(2))
+                .sum::<f64>();
+        }
+        (sq / (2 * idx.len()) as f64).sqrt()
+    })
+}
+
+/// The data's scatter in the units of a fit's RMS residual (positions: m; velocities:
+/// m/s), or `None` where it cannot be told: tracked positions from their third
+/// differences; derived velocities by the median of their own uncertainties (their
+/// errors are correlated, which third differences would hide); a velocity file's as
+/// its rest band takes it (about lines over the sliding phase: digitised points are
+/// smoother than their error, which third differences would take for the scatter).
+pub(super) fn data_scatter(m: &Measured, positions: bool) -> Option<f64> {
+    let s = match (positions, &m.x, &m.v_cm_sigma) {
+        (true, Some(x), _) => scatter(x),
+        (true, None, _) => return None,
+        (false, _, Some(sigma)) => {
+            let mut s: Vec<f64> = sigma.iter().copied().filter(|v| v.is_finite()).collect();
+            s.sort_by(f64::total_cmp);
+            *s.get(s.len() / 2)?
+        }
+        (false, _, None) => sliding_noise(m)?,
+    };
+    (s.is_finite() && s > 0.0).then_some(s)
 }
 
 /// What the data show after the sliding phase: the mean v_cm of the left ball from

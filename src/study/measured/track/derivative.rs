@@ -124,7 +124,7 @@ fn local(ts: &[f64], ys: &[f64], i: usize, lo: usize, hi: usize, sigma: f64) -> 
 }
 
 /// Scatter of a smooth series from its third differences (robust: the median).
-pub(super) fn scatter(ys: &[f64]) -> f64 {
+pub fn scatter(ys: &[f64]) -> f64 {
     let mut d: Vec<f64> = ys
         .windows(4)
         .map(|w| (w[3] - 3.0 * w[2] + 3.0 * w[1] - w[0]).abs())

@@ -12,7 +12,7 @@
 //! (default 50 ms: longer windows smear the end of sliding). Near an impact and the
 //! ends of the track the window keeps only the frames on its own side, so it shrinks.
 
-mod derivative;
+pub mod derivative;
 mod impacts;
 
 use serde::Serialize;

@@ -1,0 +1,148 @@
+//! Whether a file's numbers, read in the units given (SI where none was), are of the
+//! size a ball in a groove has: a header without units whose numbers are plainly ms,
+//! cm or mm is refused with what the numbers look like and the option that reads them.
+
+use crate::settings::units::significant;
+use crate::study::measured::Track;
+
+/// Slowest frame rate a measurement of this experiment has (a frame a second), and
+/// the largest speed a ball in a groove reaches (m/s): numbers beyond them, with no
+/// unit said, are plainly in ms and cm/s (or cm, mm).
+pub const LONGEST_FRAME: f64 = 1.0;
+pub const FASTEST_BALL: f64 = 10.0;
+
+/// A speed a ball in this experiment typically has (m/s): of the length units a file
+/// may be in, the one that brings the numbers nearest to it is named.
+const TYPICAL_SPEED: f64 = 0.5;
+
+/// The median spacing of neighbouring times.
+pub fn frame_spacing(t: &[f64]) -> f64 {
+    let mut spacing: Vec<f64> = t.windows(2).map(|w| w[1] - w[0]).collect();
+    spacing.sort_by(f64::total_cmp);
+    spacing.get(spacing.len() / 2).copied().unwrap_or(f64::NAN)
+}
+
+/// The approach speed of the centre as the frames show it: the 90th percentile of
+/// its speed between neighbouring frames with a position (the path's length per
+/// time, so a tilted camera frame counts the same); `None` with fewer than two such
+/// frames. Not the median: a recording may roll slowly for most of its frames after
+/// the impact; not the largest: one glitch would be it.
+fn approach_speed(track: &Track) -> Option<f64> {
+    let mut speeds: Vec<f64> = (1..track.t.len())
+        .filter_map(|i| {
+            let dx = track.x[i] - track.x[i - 1];
+            let dy = track.y[i] - track.y[i - 1];
+            let d = if dy.is_finite() {
+                dx.hypot(dy)
+            } else {
+                dx.abs()
+            };
+            let v = d / (track.t[i] - track.t[i - 1]);
+            v.is_finite().then_some(v)
+        })
+        .collect();
+    if speeds.is_empty() {
+        return None;
+    }
+    speeds.sort_by(f64::total_cmp);
+    Some(speeds[(speeds.len() * 9 / 10).min(speeds.len() - 1)])
+}
+
+/// Which units a position file's header or the options gave.
+#[derive(Clone, Copy, Debug)]
+pub struct Given {
+    pub time: bool,
+    pub length: bool,
+}
+
+/// A position track read in SI where no unit was given: refused when its frames are a
+/// second or more apart (ms, not s), or its ball moves at 10 m/s or more (cm or mm,
+/// not m; or, with units given, units that do not fit). The message says what the
+/// numbers look like and names the option.
+pub fn check_track(track: &Track, given: Given) -> Result<(), String> {
+    let frame = frame_spacing(&track.t);
+    if !given.time && frame >= LONGEST_FRAME {
+        return Err(format!(
+            "the header gives no time unit and the times do not look like s: frames {} apart (as s: {:.1} frames/s; as ms: {:.0} frames/s); if they are ms, give --time-unit ms (or a unit in the header: t (ms))",
+            significant(frame, 3),
+            1.0 / frame,
+            1e3 / frame
+        ));
+    }
+    let Some(speed) = approach_speed(track) else {
+        return Ok(());
+    };
+    if speed < FASTEST_BALL {
+        return Ok(());
+    }
+    if !given.length && !given.time {
+        let (unit, _) = [("cm", 1e-2), ("mm", 1e-3)]
+            .into_iter()
+            .min_by(|a, b| {
+                let off = |f: f64| (speed * f / TYPICAL_SPEED).log10().abs();
+                off(a.1).total_cmp(&off(b.1))
+            })
+            .expect("two units");
+        return Err(format!(
+            "the header gives no length unit and the positions do not look like metres: as m the ball approaches at {} m/s (as cm {} m/s, as mm {} m/s); if they are {unit}, give --length-unit {unit} (or units in the header: x ({unit}), y ({unit}))",
+            significant(speed, 3),
+            significant(speed * 1e-2, 3),
+            significant(speed * 1e-3, 3),
+        ));
+    }
+    Err(format!(
+        "in the units given the frames are {} s apart and the ball approaches at {} m/s, beyond any ball in a groove (below {FASTEST_BALL} m/s): check the time and length units (--time-unit, --length-unit, or the header's)",
+        significant(frame, 3),
+        significant(speed, 3),
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A ball approaching at `v` (file units per s) for 40 frames at 100 frames/s,
+    /// then rolling back at v/10 for 60.
+    fn track(v: f64) -> Track {
+        let t: Vec<f64> = (0..100).map(|i| f64::from(i) * 0.01).collect();
+        let x = t
+            .iter()
+            .map(|&t| {
+                if t < 0.4 {
+                    v * t
+                } else {
+                    0.4 * v - 0.1 * v * (t - 0.4)
+                }
+            })
+            .collect();
+        Track {
+            y: vec![0.0; t.len()],
+            x,
+            t,
+            ..Track::default()
+        }
+    }
+
+    #[test]
+    fn the_unit_named_is_the_one_that_gives_a_lab_speed() {
+        let none = Given {
+            time: false,
+            length: false,
+        };
+        assert!(check_track(&track(0.6), none).is_ok());
+        // Mostly the slow roll after the impact: the approach still decides.
+        let e = check_track(&track(60.0), none).unwrap_err();
+        assert!(
+            e.contains("approaches at 60 m/s") && e.contains("--length-unit cm"),
+            "{e}"
+        );
+        let e = check_track(&track(600.0), none).unwrap_err();
+        assert!(e.contains("--length-unit mm"), "{e}");
+        let given = Given {
+            time: true,
+            length: false,
+        };
+        let e = check_track(&track(600.0), given).unwrap_err();
+        assert!(e.contains("in the units given"), "{e}");
+    }
+}
