@@ -492,6 +492,22 @@ fn models_table(models: &[Candidate], positions: bool) -> String {
         "\nwhich model the data support (fitted to the {}; AIC and BIC, lower is better; the simplest model within 2 of the lowest BIC whose values are all determined is named):",
         if positions { "positions" } else { "velocities" }
     );
+    // What AIC and BIC count as n: the points the residuals are worth.
+    if let Some(c) = models.first() {
+        let _ = if c.effective_points < c.residuals as f64 {
+            writeln!(
+                out,
+                "  (the {} residuals count as {:.0} independent points: neighbouring frames' errors are correlated)",
+                c.residuals, c.effective_points
+            )
+        } else {
+            writeln!(
+                out,
+                "  (the {} residuals count as independent points: neighbouring frames' errors are not correlated)",
+                c.residuals
+            )
+        };
+    }
     let unit = if positions { "mm" } else { "m/s" };
     let _ = writeln!(
         out,

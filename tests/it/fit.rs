@@ -938,3 +938,83 @@ fn the_line_fit_header_says_which_window() {
     let screen = text(&a, (200, 60), false);
     assert!(screen.contains("lines over the window you set"), "{screen}");
 }
+
+/// A synthetic video of `scene` at `fps` whose tracked coordinates carry noise of
+/// standard deviation `sd` (m) that drifts over `tau` seconds (a first-order
+/// autoregression, as a tracker's error does), read as a student's track is.
+fn drifting_video(scene: &Scene, fps: f64, seed: u64, sd: f64, tau: f64) -> Measured {
+    use groovelab::study::measured::{self, Derive, RawSeries};
+    use groovelab::study::video::{self, Noise, Video};
+    let v = Video {
+        fps,
+        noise: 0.0,
+        seed,
+        from: -0.1,
+        to: 0.5,
+        ..Video::default()
+    };
+    let mut track = video::track(scene, &v);
+    let mut noise = Noise::new(seed);
+    let phi = (-1.0 / (fps * tau)).exp();
+    let mut drift = |values: &mut Vec<f64>| {
+        let mut e = sd * noise.gauss();
+        for x in values.iter_mut() {
+            *x += e;
+            e = phi * e + sd * (1.0 - phi * phi).sqrt() * noise.gauss();
+        }
+    };
+    drift(&mut track.x);
+    drift(&mut track.y);
+    if let Some((mx, my)) = track.mark.as_mut() {
+        drift(mx);
+        drift(my);
+    }
+    let series = measured::prepare(RawSeries::Positions(track), &Derive::default()).unwrap();
+    (*measured::for_scene(&series, scene).measured).clone()
+}
+
+/// Issue 19: AIC and BIC count the points a track is worth, not its frames.
+/// Videos of a scene whose truth is μ_k alone (v0 the scene's), with tracking
+/// errors that drift over 20 ms: the comparison of μ_k with μ_k + v0 names μ_k,
+/// and filming the same motion at twice the frame rate (the same drift, in
+/// seconds) neither names μ_k + v0 more often nor doubles the points the series
+/// is worth. Counted as independent (n_eff = n), the 240 frames/s videos named
+/// μ_k + v0 for 2 of these 6 (and for none at 120 frames/s).
+#[test]
+fn oversampling_a_track_does_not_make_extra_parameters_supported() {
+    let scene = Preset::load("paper-b4.9")
+        .unwrap()
+        .spec
+        .resolve()
+        .unwrap()
+        .0;
+    // (how many videos name μ_k + v0, the points they are worth in all)
+    let named = |fps: f64| -> (usize, f64) {
+        (1..=6).fold((0, 0.0), |(named, worth), seed| {
+            let m = drifting_video(&scene, fps, seed, 3e-4, 0.02);
+            let candidates = vec![vec![Free::Mu], vec![Free::Mu, Free::V0]];
+            let models =
+                fit::compare_candidates(&scene, &m, candidates, &groovelab::study::Quiet).unwrap();
+            assert!(models[0].supported || models[1].supported, "{models:?}");
+            (
+                named + usize::from(models[1].supported),
+                worth + models[0].effective_points,
+            )
+        })
+    };
+    let ((base, worth), (fast, worth_fast)) = (named(120.0), named(240.0));
+    assert!(
+        base <= 1,
+        "μ_k + v0 named for {base} of 6 videos at 120 frames/s"
+    );
+    assert!(
+        fast <= base,
+        "μ_k + v0 named for {fast} of 6 at 240 frames/s, {base} at 120"
+    );
+    // Twice the frames, with errors drifting over the same time: about the same
+    // worth (AR(1) theory: equal; measured 1.18×), far from twice.
+    assert!(
+        worth_fast < 1.5 * worth,
+        "worth {worth_fast:.0} points at 240 frames/s, {worth:.0} at 120"
+    );
+}

@@ -10,10 +10,10 @@
 
 use serde::Serialize;
 
-use super::least_squares::{Target, residuals, with};
+use super::least_squares::{Target, labelled_residuals, with};
 use super::model::{Scored, scored_fit, thinned};
 use super::problem::{FitError, Free};
-use super::uncertainty::NotIdentified;
+use super::uncertainty::{Label, NotIdentified};
 use crate::physics::scene::Scene;
 use crate::study::Progress;
 use crate::study::measured::series::Measured;
@@ -55,6 +55,14 @@ pub struct Candidate {
     /// RMS residual in the data's units (m/s for velocities, m for positions).
     pub rms: f64,
     pub points: usize,
+    /// How many residuals were scored (over the frames common to all candidates; v_cm
+    /// and v_t, or x and the mark's arc, count one each).
+    pub residuals: usize,
+    /// How many independent points the residuals scored are worth: neighbouring
+    /// frames' errors are correlated (derived velocities share frames, a tracker's
+    /// errors drift), and a series of N frames does not hold N independent points.
+    /// The same for every candidate ([`effective_points`]).
+    pub effective_points: f64,
     pub aic: f64,
     pub bic: f64,
     /// True for the model named as the simplest the data support.
@@ -120,6 +128,17 @@ pub fn compare_models(
     m: &Measured,
     progress: &dyn Progress,
 ) -> Result<Vec<Candidate>, FitError> {
+    compare_candidates(scene, m, candidates(m), progress)
+}
+
+/// [`compare_models`] over the candidate models `candidates` (each a list of free
+/// values; a smaller one inside a larger one first).
+pub fn compare_candidates(
+    scene: &Scene,
+    m: &Measured,
+    candidates: Vec<Vec<Free>>,
+    progress: &dyn Progress,
+) -> Result<Vec<Candidate>, FitError> {
     let target = if m.x.is_some() {
         Target::Position
     } else {
@@ -127,7 +146,7 @@ pub fn compare_models(
     };
     let mut out = Vec::new();
     let mut fitted: Vec<(Vec<Free>, Scored)> = Vec::new();
-    for free in candidates(m) {
+    for free in candidates {
         // From the best fit of a smaller model inside this one: a larger model
         // should fit at least as well, and a cold start may end in a worse minimum.
         let start = fitted
@@ -156,10 +175,19 @@ pub fn compare_models(
         .copied()
         .filter(|i| fitted.iter().all(|(_, s)| s.idx.binary_search(i).is_ok()))
         .collect();
-    for (free, s) in &fitted {
-        let r = residuals(&s.scene, data, &common, target);
-        let cost: f64 = r.iter().map(|x| x * x).sum();
-        out.push(candidate(free, s, cost, r.len()));
+    let scored: Vec<(Vec<f64>, Vec<Label>)> = fitted
+        .iter()
+        .map(|(_, s)| labelled_residuals(&s.scene, data, &common, target, true))
+        .collect();
+    let cost = |r: &[f64]| r.iter().map(|x| x * x).sum::<f64>();
+    // The noise's correlation from the best fit's residuals (the least structure a
+    // misfit leaves): the same number of independent points for every candidate.
+    let n_eff = scored
+        .iter()
+        .min_by(|a, b| cost(&a.0).total_cmp(&cost(&b.0)))
+        .map_or(1.0, |(r, l)| effective_points(r, l));
+    for ((free, s), (r, _)) in fitted.iter().zip(&scored) {
+        out.push(candidate(free, s, cost(r), r.len(), n_eff));
     }
     let pick = supported(&out);
     if let Some(i) = pick {
@@ -168,13 +196,46 @@ pub fn compare_models(
     Ok(out)
 }
 
+/// How many independent points the residuals `r` (labelled by frame and channel, in
+/// frame order) are worth: `n (1 − ρ) / (1 + ρ)` with ρ the correlation of each
+/// channel's residuals between neighbouring frames (as for errors that drift from
+/// frame to frame, a first-order autoregression: a tracker's error, a velocity file
+/// some tool smoothed), taken as 0 when negative. White noise gives about n; the same
+/// motion filmed at twice the frame rate with the same drift (in seconds) is worth
+/// about as many points as before, not twice as many.
+fn effective_points(r: &[f64], labels: &[Label]) -> f64 {
+    let n = r.len() as f64;
+    let var: f64 = r.iter().map(|x| x * x).sum();
+    if !(var > 0.0 && var.is_finite()) || labels.len() != r.len() {
+        return n;
+    }
+    // Pairs of the same channel on neighbouring frames (a missing frame breaks one).
+    let mut next = 0.0;
+    for (k, ((i, c), x)) in labels.iter().zip(r).enumerate() {
+        let partner = labels[k + 1..]
+            .iter()
+            .zip(&r[k + 1..])
+            .take(2)
+            .find(|((j, d), _)| *j == i + 1 && d == c);
+        if let Some((_, y)) = partner {
+            next += x * y;
+        }
+    }
+    let rho = (next / var).clamp(0.0, 0.99);
+    n * (1.0 - rho) / (1.0 + rho)
+}
+
 /// The scores of one fitted candidate with weighted residual sum of squares `cost`
-/// over `n` residuals.
-fn candidate(free: &[Free], s: &Scored, cost: f64, n: usize) -> Candidate {
+/// over `n` residuals worth `n_eff` independent points ([`effective_points`]): the
+/// Gaussian log-likelihood of correlated residuals is, for the smooth changes a
+/// model's values make, that of `n_eff` independent ones with the same variance,
+/// `−2 ln L = n_eff ln(RSS/n)` (+ a constant).
+fn candidate(free: &[Free], s: &Scored, cost: f64, n: usize, n_eff: f64) -> Candidate {
     let n = n.max(1) as f64;
+    let n_eff = n_eff.clamp(1.0, n);
     let k = s.estimated as f64;
     // A perfect fit (RSS = 0) would give −∞: the floor keeps every score finite.
-    let fit_term = n * (cost / n).max(1e-300).ln();
+    let fit_term = n_eff * (cost / n).max(1e-300).ln();
     Candidate {
         name: free.iter().map(|f| f.name()).collect::<Vec<_>>().join("+"),
         parameters: free
@@ -190,8 +251,10 @@ fn candidate(free: &[Free], s: &Scored, cost: f64, n: usize) -> Candidate {
             .collect(),
         rms: s.fit.rms,
         points: s.fit.points,
+        residuals: n as usize,
+        effective_points: n_eff,
         aic: fit_term + 2.0 * k,
-        bic: fit_term + k * n.ln(),
+        bic: fit_term + k * n_eff.ln(),
         supported: false,
     }
 }
@@ -218,10 +281,43 @@ mod tests {
                 .collect(),
             rms: 0.0,
             points: 10,
+            residuals: 10,
+            effective_points: 10.0,
             aic: bic,
             bic,
             supported: false,
         }
+    }
+
+    #[test]
+    fn residuals_that_drift_are_worth_fewer_points() {
+        // Two channels interleaved frame by frame (x and the mark's angle), as the
+        // position residuals come: white, and drifting with φ = 0.8 from frame to frame.
+        let mut noise = crate::study::video::Noise::new(7);
+        let frames = 4000;
+        let labels: Vec<Label> = (0..frames).flat_map(|i| [(i, false), (i, true)]).collect();
+        let white: Vec<f64> = labels.iter().map(|_| noise.gauss()).collect();
+        let n = labels.len() as f64;
+        // ρ = 0 ± 1/√4000 each channel: within 0.05 of n relative.
+        assert!((effective_points(&white, &labels) / n - 1.0).abs() < 0.05);
+        let phi = 0.8;
+        let mut e = [noise.gauss(), noise.gauss()];
+        let drift: Vec<f64> = labels
+            .iter()
+            .map(|&(_, c)| {
+                let c = usize::from(c);
+                e[c] = phi * e[c] + (1.0f64 - phi * phi).sqrt() * noise.gauss();
+                e[c]
+            })
+            .collect();
+        // n (1 − φ)/(1 + φ) = n / 9, to the sampling error of ρ (±0.01: ±5 %).
+        let worth = effective_points(&drift, &labels);
+        assert!((worth / (n / 9.0) - 1.0).abs() < 0.1, "{worth} of {n}");
+        // A missing frame breaks the pair across it, never pairs frames apart.
+        let gap: Vec<Label> = vec![(0, false), (2, false), (3, false)];
+        // ρ = 1/3 from frames 2 and 3 alone (with 0 and 2 paired it would be 2/3).
+        let worth = effective_points(&[1.0, 1.0, 1.0], &gap);
+        assert!((worth - 1.5).abs() < 1e-12, "{worth}");
     }
 
     #[test]

@@ -94,7 +94,7 @@ pub(super) fn labelled_residuals(
     );
     match target {
         Target::Velocity => velocity_residuals(&sol, m, idx, weighted),
-        Target::Position => (position_residuals(scene, &sol, m, idx), Vec::new()),
+        Target::Position => position_residuals(scene, &sol, m, idx),
     }
 }
 
@@ -222,29 +222,37 @@ fn frame_at_impact(t: &[f64]) -> f64 {
 }
 
 /// The position residuals (x, and r θ of the mark), unweighted.
-fn position_residuals(scene: &Scene, sol: &Solution, m: &Measured, idx: &[usize]) -> Vec<f64> {
+fn position_residuals(
+    scene: &Scene,
+    sol: &Solution,
+    m: &Measured,
+    idx: &[usize],
+) -> (Vec<f64>, Vec<Label>) {
     let (Some(x), radius) = (m.x.as_ref(), scene.k() * scene.radius) else {
-        return Vec::new();
+        return (Vec::new(), Vec::new());
     };
     // The impact's time and place, and the mark's angle then, were estimated from the
     // same noisy track: each residual gets the best shift δt, δx, δθ (linearised: x
     // moves by v δt, r θ by u δt), profiled out of the fit.
     let theta0 = sol.angle_at(0.0)[0];
-    // (residual, ∂/∂δt, ∂/∂δx, ∂/∂δθ)
-    let mut rows: Vec<[f64; 4]> = Vec::with_capacity(2 * idx.len());
+    // (residual, ∂/∂δt, ∂/∂δx, ∂/∂δθ), and which frame and whether the mark's.
+    let mut rows: Vec<([f64; 4], Label)> = Vec::with_capacity(2 * idx.len());
     for &i in idx {
         let s = sol.at(m.t[i]);
-        rows.push([s.left.x + scene.radius - x[i], s.left.v, -1.0, 0.0]);
+        rows.push((
+            [s.left.x + scene.radius - x[i], s.left.v, -1.0, 0.0],
+            (i, false),
+        ));
         if let Some(a) = &m.angle {
             let model = sol.angle_at(m.t[i])[0] - theta0;
-            rows.push([radius * (model - a[i]), s.left.u, 0.0, -radius]);
+            rows.push(([radius * (model - a[i]), s.left.u, 0.0, -radius], (i, true)));
         }
     }
-    rows.retain(|row| row.iter().all(|v| v.is_finite()));
+    rows.retain(|(row, _)| row.iter().all(|v| v.is_finite()));
     let k = if m.angle.is_some() { 3 } else { 2 };
     let mut ata = vec![vec![0.0; k]; k];
     let mut atb = vec![0.0; k];
-    for row in &rows {
+    for (row, _) in &rows {
         for a in 0..k {
             atb[a] -= row[1 + a] * row[0];
             for b in 0..k {
@@ -254,9 +262,12 @@ fn position_residuals(scene: &Scene, sol: &Solution, m: &Measured, idx: &[usize]
     }
     let shift = solve(ata, atb).unwrap_or_else(|| vec![0.0; k]);
     rows.iter()
-        .map(|row| row[0] + (0..k).map(|a| row[1 + a] * shift[a]).sum::<f64>())
-        .filter(|d| d.is_finite())
-        .collect()
+        .map(|(row, label)| {
+            let d = row[0] + (0..k).map(|a| row[1 + a] * shift[a]).sum::<f64>();
+            (d, *label)
+        })
+        .filter(|(d, _)| d.is_finite())
+        .unzip()
 }
 
 /// The model's v_cm and v_t at point `i` (`exact` there) as the data were made: a

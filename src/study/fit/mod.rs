@@ -20,7 +20,7 @@ use crate::physics::scene::Scene;
 use crate::study::Progress;
 use crate::study::measured::series::Measured;
 
-pub use choice::{Candidate, Estimate, compare_models};
+pub use choice::{Candidate, Estimate, compare_candidates, compare_models};
 pub use line::{
     Line, LineFit, PAPER_TABLE, PaperDisagreement, line, line_fit, paper_disagreements, paper_row,
     sliding_window,

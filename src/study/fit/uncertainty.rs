@@ -8,8 +8,8 @@ use super::problem::Free;
 use crate::settings::params::Key;
 use crate::study::measured::series::Stencils;
 
-/// Which measured value a velocity residual compares with: the point's index and
-/// whether it is its v_t (else its v_cm).
+/// Which measured value a residual compares with: the point's index and whether it is
+/// its second channel (v_t, else v_cm; for positions the mark's angle, else x).
 pub(super) type Label = (usize, bool);
 
 /// A free value without an uncertainty, and why.
@@ -217,7 +217,19 @@ pub(super) fn uncertainties(
     });
     // Every value without a ± has its reason: none reads as fitted without one.
     for (x, &a) in kept.iter().enumerate() {
+        let f = free[active[a]];
+        let (lo, hi) = bounds(f);
         match cov.as_ref().map(|cov| (s2 * cov[x][x]).sqrt()) {
+            // A ± wider than the whole physical range says nothing of the value.
+            Some(se) if se.is_finite() && 2.0 * se >= hi - lo => why.push(NotIdentified {
+                parameter: f.name(),
+                reason: format!(
+                    "its ± 2σ ({:.3}) spans more than its whole physical range ({}), so the data do not determine it",
+                    2.0 * se,
+                    range_text(f)
+                ),
+                on_edge_of: None,
+            }),
             Some(se) if se.is_finite() => out[active[a]] = Some(se),
             _ => why.push(NotIdentified {
                 parameter: free[active[a]].name(),
