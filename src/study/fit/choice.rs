@@ -1,9 +1,10 @@
 //! Which model the data support ("model no more than a scene needs", for data too):
 //! the candidate models — μ_k alone, with e, with c_rr, with both, and each with v0
 //! free where the data hold the approach — fitted to the same series and compared
-//! by AIC and BIC for least squares, `n ln(RSS/n) + 2k` and `n ln(RSS/n) + k ln n`
-//! (RSS weighted by the points' uncertainties where known; k counts every value
-//! estimated). The simplest model within 2 of the lowest BIC is the one named: a
+//! by AIC and BIC for least squares, `n' ln(RSS/n) + 2k` and `n' ln(RSS/n) + k ln n'`
+//! over n residuals worth n' independent points (RSS weighted by the points'
+//! uncertainties where known; k counts every value estimated; n' from how the
+//! residuals of neighbouring frames go together, [`effective_points`]). The simplest model within 2 of the lowest BIC is the one named: a
 //! difference below 2 is not evidence for the larger model; and never one with a value
 //! the data do not determine (on the edge of its range: the data do not support it as
 //! a free value).
