@@ -330,6 +330,18 @@ fn table(scene: &Scene, f: &Fits, paper_data: bool) -> String {
             value("restitution", mf.restitution, mf.restitution_se, "")
         );
     }
+    if mf.rolling_resistance_se.is_some() || mf.undetermined("rolling_resistance").is_some() {
+        let _ = writeln!(
+            out,
+            "  c_rr = {}",
+            value(
+                "rolling_resistance",
+                mf.rolling_resistance,
+                mf.rolling_resistance_se,
+                ""
+            )
+        );
+    }
     let _ = writeln!(
         out,
         "  regime predicted {}; observed {} (speeds within ±{:.3} m/s count as rest: 3× the data's scatter)",
@@ -406,6 +418,15 @@ fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit, paper_data:
             "e (± 2σ)",
             opt(v, "restitution", v.restitution, v.restitution_se),
             opt(p, "restitution", p.restitution, p.restitution_se),
+        );
+    }
+    let c_rr = "rolling_resistance";
+    if free(v, c_rr, v.rolling_resistance_se) || free(p, c_rr, p.rolling_resistance_se) {
+        row(
+            &mut out,
+            "c_rr (± 2σ)",
+            opt(v, c_rr, v.rolling_resistance, v.rolling_resistance_se),
+            opt(p, c_rr, p.rolling_resistance, p.rolling_resistance_se),
         );
     }
     row(

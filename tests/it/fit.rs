@@ -637,11 +637,10 @@ fn the_velocity_file_uncertainty_covers_the_truth() {
     );
 }
 
-/// Trial finding 2: the program's own noise-free run, read back as a velocity file with
-/// the impact between two frames, gave μ_k = 0.1693 "± 0.0000" for a run made with
-/// 0.17 (the impact time held where the drop put it). Fitted, it comes back exactly.
-#[test]
-fn a_noise_free_run_fits_back_to_its_own_mu() {
+/// The program's own noise-free run of a small groove (μ_k = 0.17, e = 1, c_rr = 0) as
+/// a velocity file `name`, the impact between two frames, and the scene options for
+/// `fit`.
+fn noise_free_run(name: &str) -> (String, [&'static str; 8]) {
     let run = groovelab(&[
         "simulate",
         "--radius",
@@ -663,11 +662,22 @@ fn a_noise_free_run_fits_back_to_its_own_mu() {
         "--format",
         "csv",
     ]);
-    let path = csv("round-trip.csv", &String::from_utf8(run.stdout).unwrap());
-    let out = groovelab(&[
-        "fit", "--data", &path, "--radius", "1.5cm", "--width", "2.1cm", "--mass", "110g", "--v0",
-        "0.5", "--format", "json",
-    ]);
+    let path = csv(name, &String::from_utf8(run.stdout).unwrap());
+    let scene = [
+        "--radius", "1.5cm", "--width", "2.1cm", "--mass", "110g", "--v0", "0.5",
+    ];
+    (path, scene)
+}
+
+/// Trial finding 2: the program's own noise-free run, read back as a velocity file with
+/// the impact between two frames, gave μ_k = 0.1693 "± 0.0000" for a run made with
+/// 0.17 (the impact time held where the drop put it). Fitted, it comes back exactly.
+#[test]
+fn a_noise_free_run_fits_back_to_its_own_mu() {
+    let (path, scene) = noise_free_run("round-trip.csv");
+    let mut args = vec!["fit", "--data", &path, "--format", "json"];
+    args.extend(scene);
+    let out = groovelab(&args);
     let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     let (mu, se) = (
         json["model_fit"]["mu"].as_f64().unwrap(),
@@ -676,6 +686,45 @@ fn a_noise_free_run_fits_back_to_its_own_mu() {
     // Exact data: the fit's own tolerance (golden section to 1e-7 relative, then
     // Levenberg–Marquardt) is all that is left.
     assert!((mu - 0.17).abs() <= (2.0 * se).max(1e-6), "μ_k {mu} ± {se}");
+}
+
+/// Trial finding 10: a value freed with --free that the data do not determine was
+/// left out of the table and of JSON's model_fit. Exact data of e = 1 and c_rr = 0 put
+/// both on the edge of their ranges: each gets its line and a null with a reason.
+#[test]
+fn every_freed_value_is_reported_even_when_not_determined() {
+    let (path, scene) = noise_free_run("exact-run.csv");
+    let mut args = vec![
+        "fit",
+        "--data",
+        &path,
+        "--free",
+        "mu,v0,restitution,rolling_resistance",
+    ];
+    args.extend(scene);
+    let text = String::from_utf8(groovelab(&args).stdout).unwrap();
+    for line in ["  e = not determined (", "  c_rr = not determined ("] {
+        assert!(text.contains(line), "{line}: {text}");
+    }
+    args.extend(["--format", "json"]);
+    let json: serde_json::Value = serde_json::from_slice(&groovelab(&args).stdout).unwrap();
+    let fit = &json["model_fit"];
+    let reasons = fit["not_identified"].as_array().unwrap();
+    for key in ["restitution", "rolling_resistance"] {
+        assert!(fit.get(key).is_some_and(|v| v.is_null()), "{key}: {fit}");
+        assert!(
+            reasons.iter().any(|n| n["parameter"] == key
+                && n["reason"]
+                    .as_str()
+                    .unwrap()
+                    .contains("edge of its physical range")),
+            "{key}: {fit}"
+        );
+    }
+    assert!(
+        fit["v0"].as_f64().is_some_and(|v| (v - 0.5).abs() < 1e-6),
+        "{fit}"
+    );
 }
 
 /// The verdict of each model fit, as the `fit` table's "verdict" row and the Fit

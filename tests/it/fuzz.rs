@@ -1052,6 +1052,7 @@ const NULLABLE: &[&str] = &[
     "note",
     "v0_se",
     "restitution_se",
+    "rolling_resistance_se",
     "stalled",
     "label",
     // compare: where the step budget cut the span, `null` when it covered it all.

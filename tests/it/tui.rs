@@ -1193,6 +1193,38 @@ fn a_applies_the_fitted_mu_in_the_fit_view() {
     assert!(matches!(&b.status, Status::Error(_)));
 }
 
+/// Trial finding 12: of a position track, `a` applied the velocity fit's μ_k while the
+/// panel says to quote the position fit's: it applies the position fit, and says so.
+#[test]
+fn a_applies_the_position_fit_of_a_track() {
+    let track = DataArgs {
+        data: vec!["docs/video/paper-b4.9-tracker.txt".into()],
+        ..DataArgs::default()
+    };
+    let scene = scene_of("paper-b4.9", SceneSpec::default());
+    let mut a = common::rendered(
+        &scene,
+        &track,
+        None,
+        Some("f"),
+        common::no_user_presets("tui"),
+    );
+    a.lab.wait();
+    let (State::Ready(Ok(f)), State::Ready(Ok(p))) = (a.lab.fits(), a.lab.position_fit()) else {
+        panic!("both fits")
+    };
+    let (velocity, position) = (f.model_fit.mu, p.mu);
+    // The two differ in the 4th digit here: the test tells them apart.
+    assert!((velocity - position).abs() > 1e-5, "{velocity} {position}");
+    press(&mut a, "a");
+    assert_eq!(a.lab.scene.mu, position);
+    assert!(
+        matches!(&a.status, Status::Info(i) if i.contains("applied the position fit: μ_k = ")),
+        "{:?}",
+        a.status
+    );
+}
+
 #[test]
 fn export_writes_the_run_as_csv_and_the_chart_as_svg() {
     use groovelab::cli::{Format, SimulateArgs, simulate};

@@ -61,6 +61,7 @@ pub fn fit_all(
             let fitted = Scene {
                 mu: model_fit.mu,
                 restitution: model_fit.restitution,
+                rolling_resistance: model_fit.rolling_resistance,
                 left: crate::physics::scene::Ball {
                     v0: model_fit.v0,
                     ..scene.left
@@ -96,6 +97,10 @@ fn check_finite(f: &Fits, has_v_t: bool) -> Result<(), FitError> {
     let named = [
         ("model fit v0 error", m.v0_se.unwrap_or(0.0)),
         ("model fit e error", m.restitution_se.unwrap_or(0.0)),
+        (
+            "model fit c_rr error",
+            m.rolling_resistance_se.unwrap_or(0.0),
+        ),
         ("line fit a_cm", l.a_cm),
         ("line fit a_t", spin(l.a_t)),
         ("line fit μ_k,cm", l.mu_cm),
@@ -112,6 +117,7 @@ fn check_finite(f: &Fits, has_v_t: bool) -> Result<(), FitError> {
         ),
         ("model fit v0", m.v0),
         ("model fit e", m.restitution),
+        ("model fit c_rr", m.rolling_resistance),
         ("model fit RMS residual", m.rms),
         ("model fit rolling speed v'", m.v_roll),
     ];

@@ -33,11 +33,13 @@ pub const MAX_MODEL_POINTS: usize = 20_000;
 pub struct ModelFit {
     pub mu: f64,
     pub mu_se: f64,
-    /// Fitted v0 and e (the scene's when not free) and their standard errors.
+    /// Fitted v0, e and c_rr (the scene's when not free) and their standard errors.
     pub v0: f64,
     pub v0_se: Option<f64>,
     pub restitution: f64,
     pub restitution_se: Option<f64>,
+    pub rolling_resistance: f64,
+    pub rolling_resistance_se: Option<f64>,
     /// Root-mean-square residual over all v_cm and v_t points used, m/s.
     pub rms: f64,
     pub points: usize,
@@ -343,6 +345,8 @@ pub(super) fn scored_fit(
         v0_se: se(Free::V0),
         restitution: fitted.restitution,
         restitution_se: se(Free::Restitution),
+        rolling_resistance: fitted.rolling_resistance,
+        rolling_resistance_se: se(Free::RollingResistance),
         rms: {
             // In the data's own units, whatever the weights.
             let raw = residuals_of(&fitted, m, &idx, target, false);

@@ -421,27 +421,27 @@ impl App {
         true
     }
 
-    /// Fit view: puts the fitted μ_k (and v0, e where the fit freed them) into the scene.
+    /// Fit view: puts the fitted μ_k (and v0, e where the fit freed them) into the
+    /// scene: of a position track the position fit, the one the panel says to quote.
     fn apply_fit(&mut self) {
         if !self.fit_view() {
             self.status = Status::Error("a applies a fit: open the Fit view first (f)".into());
             return;
         }
-        let fitted = match self.lab.fits() {
-            State::Ready(Ok(f)) => f.model_fit.clone(),
-            State::Ready(Err(e)) => {
-                self.status = Status::Error(format!("no fit to apply: {e}"));
-                return;
-            }
-            State::Computing { .. } => {
-                self.status = Status::Error("the fit is still running: try again".into());
-                return;
-            }
-            State::Idle => {
-                self.status = Status::Error("no fit to apply: this preset has no data".into());
+        let (fitted, which) = match self.fit_to_apply() {
+            Ok(f) => f,
+            Err(e) => {
+                self.status = Status::Error(e);
                 return;
             }
         };
+        if let Some(n) = fitted.undetermined("mu") {
+            self.status = Status::Error(format!(
+                "not applied: {which} does not determine μ_k ({})",
+                n.reason
+            ));
+            return;
+        }
         // μ_k is always fitted; v0 and e only when the fit freed them (they have an
         // uncertainty then).
         let mut changes = vec![(Key::Mu, fitted.mu)];
@@ -464,7 +464,27 @@ impl App {
             .collect();
         let sol = &self.lab.solution;
         self.t = self.t.clamp(sol.t_start, sol.t_end);
-        self.status = Status::Info(format!("applied the fit: {}", applied.join(", ")));
+        self.status = Status::Info(format!("applied {which}: {}", applied.join(", ")));
+    }
+
+    /// The model fit `a` applies, and what to call it: of a position track the fit to
+    /// the positions (the more precise, whose ± the panel says to quote), else the one
+    /// fit of the velocities.
+    fn fit_to_apply(&self) -> Result<(crate::study::fit::ModelFit, &'static str), String> {
+        match self.lab.position_fit() {
+            State::Ready(Ok(p)) => return Ok((p.clone(), "the position fit")),
+            State::Computing { .. } => {
+                return Err("the position fit is still running: try again".into());
+            }
+            State::Ready(Err(e)) => return Err(format!("no fit to apply: the position fit: {e}")),
+            State::Idle => {}
+        }
+        match self.lab.fits() {
+            State::Ready(Ok(f)) => Ok((f.model_fit.clone(), "the fit")),
+            State::Ready(Err(e)) => Err(format!("no fit to apply: {e}")),
+            State::Computing { .. } => Err("the fit is still running: try again".into()),
+            State::Idle => Err("no fit to apply: this preset has no data".into()),
+        }
     }
 
     fn move_window(&mut self, end: bool, later: bool) {
