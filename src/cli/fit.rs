@@ -11,7 +11,7 @@ use crate::output::write_atomically;
 use crate::physics::scene::Scene;
 use crate::settings::params::Key;
 use crate::settings::units::{Dimension, show, significant};
-use crate::study::fit::{self, Candidate, Fits, Free, ModelFit};
+use crate::study::fit::{self, Candidate, Fits, Free, LineFit, ModelFit};
 use crate::study::measured::Found;
 use crate::study::preset::Preset;
 
@@ -234,8 +234,16 @@ fn scene_line(
 /// The line fits and the model fit; the paper's table-1 row beside them only for the
 /// preset's own (the paper's) data, `paper_data`.
 fn table(scene: &Scene, f: &Fits, paper_data: bool) -> String {
-    let l = &f.line_fit;
     let mut out = String::new();
+    line_fit_lines(&mut out, scene, &f.line_fit, paper_data);
+    let _ = writeln!(out);
+    model_fit_lines(&mut out, &f.model_fit);
+    out
+}
+
+/// The line fits over their window (the sliding phase unless --from/--to set it), and
+/// the paper's table-1 row with where it contradicts itself when `paper_data`.
+fn line_fit_lines(out: &mut String, scene: &Scene, l: &LineFit, paper_data: bool) {
     // The window said as it was chosen: the sliding phase, or what --from/--to set.
     let (over, hint) = match l.given {
         [false, false] => ("over the sliding phase", "; change with --from/--to"),
@@ -282,8 +290,12 @@ fn table(scene: &Scene, f: &Fits, paper_data: bool) -> String {
             );
         }
     }
-    let mf = &f.model_fit;
-    let _ = writeln!(out);
+}
+
+/// The model fit of a series: what it was fitted to, the fitted values with their
+/// 95 % ranges (or why a value has none), and the regime predicted against the one
+/// observed.
+fn model_fit_lines(out: &mut String, mf: &ModelFit) {
     match mf.every {
         None => {
             let _ = writeln!(
@@ -350,7 +362,6 @@ fn table(scene: &Scene, f: &Fits, paper_data: bool) -> String {
         mf.rest_band
     );
     let _ = writeln!(out, "  {}", mf.agreement().sentence());
-    out
 }
 
 /// The table for a position track: what was found, the line fits, and the velocity and
@@ -358,12 +369,8 @@ fn table(scene: &Scene, f: &Fits, paper_data: bool) -> String {
 fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit, paper_data: bool) -> String {
     let mut out = found.describe();
     out.push('\n');
-    let full = table(scene, f, paper_data);
     // The line fits as for a velocity file; the model fits in two columns below.
-    let lines: Vec<&str> = full.lines().take_while(|l| !l.is_empty()).collect();
-    for l in lines {
-        let _ = writeln!(out, "{l}");
-    }
+    line_fit_lines(&mut out, scene, &f.line_fit, paper_data);
     if found.mark.is_none() {
         let _ = writeln!(
             out,
@@ -385,39 +392,26 @@ fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit, paper_data:
         "{title:<35} {:>24} {:>24}",
         "velocities (derived)", "positions (direct)"
     );
-    // A value the data do not determine gets no number that reads as fitted.
-    let pm = |m: &ModelFit| {
-        if m.undetermined("mu").is_some() {
-            "not determined".to_string()
-        } else {
-            format!("{:.4} ± {:.4}", m.mu, 2.0 * m.mu_se)
-        }
-    };
-    let opt = |m: &ModelFit, name: &str, v: f64, se: Option<f64>| match se {
-        _ if m.undetermined(name).is_some() => "not determined".to_string(),
-        Some(se) => format!("{v:.4} ± {:.4}", 2.0 * se),
-        None => format!("{v:.4}"),
-    };
     let row = |out: &mut String, name: &str, a: String, b: String| {
         let _ = writeln!(out, "  {name:<33} {a:>24} {b:>24}");
     };
-    row(&mut out, "μ_k (± 2σ, 95 %)", pm(v), pm(p));
+    row(&mut out, "μ_k (± 2σ, 95 %)", mu_cell(v), mu_cell(p));
     let free =
         |m: &ModelFit, name: &str, se: Option<f64>| se.is_some() || m.undetermined(name).is_some();
     if free(v, "v0", v.v0_se) || free(p, "v0", p.v0_se) {
         row(
             &mut out,
             "v0 m/s (± 2σ)",
-            opt(v, "v0", v.v0, v.v0_se),
-            opt(p, "v0", p.v0, p.v0_se),
+            cell(v, "v0", v.v0, v.v0_se),
+            cell(p, "v0", p.v0, p.v0_se),
         );
     }
     if free(v, "restitution", v.restitution_se) || free(p, "restitution", p.restitution_se) {
         row(
             &mut out,
             "e (± 2σ)",
-            opt(v, "restitution", v.restitution, v.restitution_se),
-            opt(p, "restitution", p.restitution, p.restitution_se),
+            cell(v, "restitution", v.restitution, v.restitution_se),
+            cell(p, "restitution", p.restitution, p.restitution_se),
         );
     }
     let c_rr = "rolling_resistance";
@@ -441,20 +435,12 @@ fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit, paper_data:
         v.points.to_string(),
         p.points.to_string(),
     );
-    let regime = |m: &ModelFit| {
-        format!(
-            "{} / {}",
-            m.regime_predicted.name(),
-            m.regime_observed.name()
-        )
-    };
     row(
         &mut out,
         "regime predicted / observed",
         regime(v),
         regime(p),
     );
-    let verdict = |m: &ModelFit| m.agreement().word().to_string();
     row(&mut out, "verdict", verdict(v), verdict(p));
     let _ = writeln!(out, "  velocity fit: regime {}", v.verdict);
     let _ = writeln!(out, "  position fit: regime {}", p.verdict);
@@ -473,6 +459,42 @@ fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit, paper_data:
         "  (the velocity fit takes the model through the same local fits as the data, profiles out the impact time and counts the frames neighbouring points share; the position fit needs no derivatives and is the more precise: quote it)"
     );
     out
+}
+
+/// The fitted μ_k in a column: with its 95 % range, or "not determined" when the data
+/// do not pin it down (a value the data do not determine gets no number that reads as
+/// fitted).
+fn mu_cell(m: &ModelFit) -> String {
+    if m.undetermined("mu").is_some() {
+        "not determined".to_string()
+    } else {
+        format!("{:.4} ± {:.4}", m.mu, 2.0 * m.mu_se)
+    }
+}
+
+/// A fitted value `v` of the parameter `name` in a column: with its 95 % range when
+/// its standard error `se` is known, "not determined" when the data do not pin it
+/// down.
+fn cell(m: &ModelFit, name: &str, v: f64, se: Option<f64>) -> String {
+    match se {
+        _ if m.undetermined(name).is_some() => "not determined".to_string(),
+        Some(se) => format!("{v:.4} ± {:.4}", 2.0 * se),
+        None => format!("{v:.4}"),
+    }
+}
+
+/// "recollide / rest": the regime a fit predicts and the one observed.
+fn regime(m: &ModelFit) -> String {
+    format!(
+        "{} / {}",
+        m.regime_predicted.name(),
+        m.regime_observed.name()
+    )
+}
+
+/// Whether a fit's prediction agrees with what was observed, in a column.
+fn verdict(m: &ModelFit) -> String {
+    m.agreement().word().to_string()
 }
 
 /// True when `keys` set every value of a scene: no preset's value is left in it.

@@ -7,7 +7,7 @@ use serde::Serialize;
 use super::args::{CompareArgs, CompareFormat, Format, MAX_SAMPLES, SceneArgs, SimulateArgs};
 use super::error::{BadValue, CliError, Flag};
 use super::states::{csv_output, samples, state_header, state_row};
-use crate::methods::{self, Method, Settings, Y};
+use crate::methods::{self, Method, RunEnd, Settings, Y};
 use crate::physics::derived::Derived;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{Event, Snapshot, Solution};
@@ -196,44 +196,55 @@ pub(super) fn simulate_method(
             };
             csv_output(&detected, samples)?
         }
-        Format::Table => {
-            let mut out = String::new();
-            let _ = writeln!(
-                out,
-                "method   {} (step {}, tolerance {}, ε {}): {} steps, {} right-hand-side evaluations{}",
-                args.method.name(),
-                show(settings.step, Dimension::Time),
-                settings.tolerance,
-                show(settings.epsilon, Dimension::Speed),
-                outcome.steps,
-                outcome.rhs_evals,
-                stalled.map_or(String::new(), |s| format!(", stalled: {s}"))
-            );
-            let _ = writeln!(out, "{}", state_header());
-            let mut rows: Vec<_> = rec
-                .events
-                .iter()
-                .map(|e| (e.t, e.kind.name(), e.ball.name(), e.left, e.right))
-                .chain(
-                    rec.samples
-                        .iter()
-                        .map(|s| (s.t, "sample", "", s.left, s.right)),
-                )
-                .chain(std::iter::once((
-                    final_state.t,
-                    "final",
-                    "",
-                    final_state.left,
-                    final_state.right,
-                )))
-                .collect();
-            rows.sort_by(|a, b| a.0.total_cmp(&b.0));
-            for (t, kind, ball, l, r) in rows {
-                let _ = writeln!(out, "{}", state_row(t, kind, ball, l, r));
-            }
-            out
-        }
+        Format::Table => method_table(args, settings, &outcome, stalled, &rec, final_state),
     })
+}
+
+/// `simulate --method`'s table: the run's method, settings and work, then its
+/// detected events, the samples and the final state in time order.
+fn method_table(
+    args: &SimulateArgs,
+    settings: &Settings,
+    outcome: &RunEnd,
+    stalled: Option<String>,
+    rec: &Recorder,
+    final_state: Snapshot,
+) -> String {
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "method   {} (step {}, tolerance {}, ε {}): {} steps, {} right-hand-side evaluations{}",
+        args.method.name(),
+        show(settings.step, Dimension::Time),
+        settings.tolerance,
+        show(settings.epsilon, Dimension::Speed),
+        outcome.steps,
+        outcome.rhs_evals,
+        stalled.map_or(String::new(), |s| format!(", stalled: {s}"))
+    );
+    let _ = writeln!(out, "{}", state_header());
+    let mut rows: Vec<_> = rec
+        .events
+        .iter()
+        .map(|e| (e.t, e.kind.name(), e.ball.name(), e.left, e.right))
+        .chain(
+            rec.samples
+                .iter()
+                .map(|s| (s.t, "sample", "", s.left, s.right)),
+        )
+        .chain(std::iter::once((
+            final_state.t,
+            "final",
+            "",
+            final_state.left,
+            final_state.right,
+        )))
+        .collect();
+    rows.sort_by(|a, b| a.0.total_cmp(&b.0));
+    for (t, kind, ball, l, r) in rows {
+        let _ = writeln!(out, "{}", state_row(t, kind, ball, l, r));
+    }
+    out
 }
 
 #[derive(Serialize)]
@@ -345,11 +356,7 @@ fn table(rows: &[Row]) -> String {
                 out,
                 "stalled: {} at {}: {note}",
                 r.method.name(),
-                match (r.step, r.tolerance) {
-                    (Some(h), _) => format!("h = {h:.1e} s"),
-                    (None, Some(t)) => format!("tol = {t:.0e}"),
-                    _ => String::new(),
-                }
+                run_setting(r)
             );
         }
     }
@@ -381,30 +388,36 @@ fn table(rows: &[Row]) -> String {
          E drift: largest energy excess over the exact run, relative to the start;\n\
          times: minimum and median of at least three runs (after an untimed warm-up for runs under 10 ms)."
     );
+    let _ = writeln!(out, "{}", headline(rows));
+    out
+}
+
+/// A run's setting in a few characters: its step ("h = 1.0e-3 s") or tolerance.
+fn run_setting(r: &Row) -> String {
+    match (r.step, r.tolerance) {
+        (Some(h), _) => format!("h = {h:.1e} s"),
+        (None, Some(t)) => format!("tol = {t:.0e}"),
+        _ => String::new(),
+    }
+}
+
+/// The comparison's headline: how much faster exact is than the fastest run that is
+/// ok and reaches err_v ≤ 1e-6 m/s, or that none did.
+fn headline(rows: &[Row]) -> String {
     match cmp::headline(rows, 1e-6) {
-        Some((factor, best, exact)) => {
-            let setting = match (best.step, best.tolerance) {
-                (Some(h), _) => format!("h = {h:.1e} s"),
-                (None, Some(t)) => format!("tol = {t:.0e}"),
-                _ => String::new(),
-            };
-            let _ = writeln!(
-                out,
-                "headline: exact takes {:.2e} s; the fastest run reaching err_v ≤ 1e-6 m/s with status ok is {} ({setting}) at {:.2e} s: exact is {}× faster.",
-                exact.time_median_s,
-                best.method.name(),
-                best.time_median_s,
-                crate::settings::units::significant(factor, 2)
-            );
-        }
+        Some((factor, best, exact)) => format!(
+            "headline: exact takes {:.2e} s; the fastest run reaching err_v ≤ 1e-6 m/s with status ok is {} ({}) at {:.2e} s: exact is {}× faster.",
+            exact.time_median_s,
+            best.method.name(),
+            run_setting(best),
+            best.time_median_s,
+            crate::settings::units::significant(factor, 2)
+        ),
         None => {
-            let _ = writeln!(
-                out,
-                "headline: no time-stepping run reached err_v ≤ 1e-6 m/s with status ok in this sweep."
-            );
+            "headline: no time-stepping run reached err_v ≤ 1e-6 m/s with status ok in this sweep."
+                .to_string()
         }
     }
-    out
 }
 
 /// "recollide 20", "pressed 1 wrong": the run's outcome word and impact count, marked

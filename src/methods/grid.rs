@@ -25,14 +25,7 @@ pub(crate) fn run_grid(
 ) -> RunEnd {
     let h = s.step;
     let n = ((t1 - t0) / h).ceil() as usize;
-    let mut out = RunEnd {
-        steps: 0,
-        rhs_evals: 0,
-        stalled: None,
-        aborted: false,
-        t: t0,
-        y: y0,
-    };
+    let mut out = RunEnd::at_start(t0, y0);
     if n > s.max_steps {
         out.stalled = Some(format!("{n} steps needed, budget {}", s.max_steps));
         return out;

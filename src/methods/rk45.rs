@@ -300,6 +300,21 @@ fn roll_on(y: &mut Y, modes: &Modes) {
     }
 }
 
+/// At a located zero of switching function `which`: the impact (the balls then put
+/// exactly in touch, the gap being closed) or the end of a ball's sliding. True for an
+/// impact.
+fn at_switch(m: &Model, y: &mut Y, modes: &Modes, which: usize) -> bool {
+    if which == 2 {
+        collide(m, y);
+        let overlap = gap(m, y);
+        y[3] -= overlap;
+        true
+    } else {
+        end_sliding(y, modes, which);
+        false
+    }
+}
+
 pub(super) fn integrate(
     m: &Model,
     y0: Y,
@@ -312,14 +327,7 @@ pub(super) fn integrate(
     let scale = [y0[1], y0[4]].iter().map(|v| v.abs()).fold(1e-3, f64::max);
     let tolerances = (s.tolerance, s.tolerance * scale);
     let eps_v = 1e-12 * scale;
-    let mut out = RunEnd {
-        steps: 0,
-        rhs_evals: 0,
-        stalled: None,
-        aborted: false,
-        t: t0,
-        y: y0,
-    };
+    let mut out = RunEnd::at_start(t0, y0);
     let mut tracker = EventTracker::new(0.0);
     if !obs.step(t0, &y0) {
         out.aborted = true;
@@ -384,15 +392,9 @@ pub(super) fn integrate(
             Some((theta, which)) => {
                 t += theta * h;
                 y = dense(&y, &k, h, theta);
-                if which == 2 {
-                    collide(m, &mut y);
-                    // The gap is closed: put the balls exactly in touch.
-                    let overlap = gap(m, &y);
-                    y[3] -= overlap;
+                if at_switch(m, &mut y, &modes, which) {
                     tracker.impact(t, &y, obs);
                     impacts += 1;
-                } else {
-                    end_sliding(&mut y, &modes, which);
                 }
                 modes = modes_of(&y, eps_v);
                 roll_on(&mut y, &modes);

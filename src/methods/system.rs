@@ -240,3 +240,17 @@ pub struct RunEnd {
     pub t: f64,
     pub y: Y,
 }
+
+impl RunEnd {
+    /// A run not yet begun: at `t0` in state `y0`, no work done.
+    pub fn at_start(t0: f64, y0: Y) -> RunEnd {
+        RunEnd {
+            steps: 0,
+            rhs_evals: 0,
+            stalled: None,
+            aborted: false,
+            t: t0,
+            y: y0,
+        }
+    }
+}

@@ -345,7 +345,45 @@ impl Observer for Metrics<'_> {
     }
 }
 
-impl Metrics<'_> {
+impl<'a> Metrics<'a> {
+    /// Nothing measured yet of a run of `model` from `y0` against `exact`, leaving
+    /// out the time `windows` around impacts; `impacts`: where the method's first
+    /// pass put them.
+    fn new(
+        exact: &'a Solution,
+        progress: &'a dyn Progress,
+        model: Model,
+        y0: &Y,
+        settle: f64,
+        windows: Vec<(f64, f64)>,
+        impacts: &[f64],
+    ) -> Metrics<'a> {
+        Metrics {
+            exact,
+            watch: Watch::new(progress),
+            model,
+            e0: model.energy(y0),
+            err_v: 0.0,
+            err_u: 0.0,
+            drift: 0.0,
+            gain: 0.0,
+            nonfinite: false,
+            first_roll: None,
+            settle,
+            last_slip: [None; 2],
+            flips: 0,
+            slip_rolling: 0.0,
+            windows,
+            next_window: 0,
+            cursor: 0,
+            impacts: (impacts.first().copied(), impacts.last().copied()),
+            still: ACCURATE * model.scene.speed_scale(),
+            parted: false,
+            settled: None,
+            slip_after: [None; 2],
+            rolled: [false; 2],
+        }
+    }
     /// The segments holding `t` and just before `t`, as `Solution::segment_at` and
     /// `Solution::at_left` find them, searched from the last step's (steps come in
     /// order, so this walks a segment or two where a search took dozens of looks).
@@ -625,31 +663,7 @@ pub fn measure_observed(
         settings.step
     };
     let (windows, err_t_impact) = impact_windows(&exact_impacts, &found.0, slack);
-    let mut metrics = Metrics {
-        exact,
-        watch: Watch::new(progress),
-        model,
-        e0: model.energy(&y0),
-        err_v: 0.0,
-        err_u: 0.0,
-        drift: 0.0,
-        gain: 0.0,
-        nonfinite: false,
-        first_roll: None,
-        settle,
-        last_slip: [None; 2],
-        flips: 0,
-        slip_rolling: 0.0,
-        windows,
-        next_window: 0,
-        cursor: 0,
-        impacts: (found.0.first().copied(), found.0.last().copied()),
-        still: ACCURATE * scene.speed_scale(),
-        parted: false,
-        settled: None,
-        slip_after: [None; 2],
-        rolled: [false; 2],
-    };
+    let mut metrics = Metrics::new(exact, progress, model, &y0, settle, windows, &found.0);
     let run_end: RunEnd = integrate(method, &model, y0, t0, t1, settings, &mut metrics);
     if progress.cancelled() {
         return Err(Cancelled);

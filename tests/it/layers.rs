@@ -382,6 +382,65 @@ fn no_source_file_imports_itself_through_others() {
     assert!(found.is_empty(), "import cycles:\n{}", report.join("\n"));
 }
 
+/// Each function with a body in a source: its name, and its first and last line (of
+/// `fn` and of the closing brace).
+fn function_spans(t: &[Token]) -> Vec<(String, usize, usize)> {
+    let mut out = Vec::new();
+    for i in 0..t.len().saturating_sub(1) {
+        let named = t[i + 1]
+            .text
+            .starts_with(|c: char| c.is_alphabetic() || c == '_');
+        if t[i].text != "fn" || !named {
+            continue;
+        }
+        let (mut j, mut nesting) = (i + 2, 0i32);
+        while j < t.len() && !(nesting == 0 && matches!(t[j].text.as_str(), "{" | ";")) {
+            match t[j].text.as_str() {
+                "(" | "[" => nesting += 1,
+                ")" | "]" => nesting -= 1,
+                _ => {}
+            }
+            j += 1;
+        }
+        if j == t.len() || t[j].text == ";" {
+            continue;
+        }
+        let mut depth = 0;
+        for token in &t[j..] {
+            depth += i32::from(token.text == "{") - i32::from(token.text == "}");
+            if depth == 0 {
+                out.push((t[i + 1].text.clone(), t[i].line, token.line));
+                break;
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn no_function_is_longer_than_a_hundred_lines() {
+    let (src, files) = library_sources();
+    let mut long = Vec::new();
+    let mut count = 0;
+    for file in &files {
+        let t = tokens(&std::fs::read_to_string(file).unwrap());
+        for (name, first, last) in function_spans(&t) {
+            count += 1;
+            let lines = last - first + 1;
+            if lines > 100 {
+                let at = file.strip_prefix(&src).unwrap().display();
+                long.push(format!("{at}:{first}: fn {name}, {lines} lines"));
+            }
+        }
+    }
+    assert!(count > 500, "the functions were found: {count}");
+    assert!(
+        long.is_empty(),
+        "functions over 100 lines:\n{}",
+        long.join("\n")
+    );
+}
+
 const TRACK: &str = "docs/video/paper-b4.9-tracker.txt";
 
 fn library() -> groovelab::tui::app::Library {

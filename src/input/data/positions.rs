@@ -261,24 +261,7 @@ pub(super) fn from_table(table: &Table, file: &str, reading: &Reading) -> Result
         .iter()
         .position(|c| c.as_ref().is_some_and(|c| c.axis == Axis::T))
         .expect("the header has a t column");
-    // Tracks with an x column, in file order.
-    let mut names: Vec<String> = Vec::new();
-    for c in cols.iter().flatten() {
-        if c.axis == Axis::X && !names.contains(&c.track) {
-            names.push(c.track.clone());
-        }
-    }
-    if names.is_empty() {
-        let found: Vec<&str> = (0..header.len())
-            .map(|i| header.cell(i))
-            .filter(|c| !c.is_empty())
-            .collect();
-        return Err(err(format!(
-            "line {}: no position column x in '{}', expected t and x (and y) for a position track, or t, v_cm and v_t for velocities",
-            header.line,
-            found.join(" ")
-        )));
-    }
+    let names = tracks_with_x(&cols, &header).map_err(err)?;
     let (centre, mark) = pick_roles(&names, reading).map_err(err)?;
     let index = |track: &str, axis: Axis| {
         cols.iter().position(|c| {
@@ -341,6 +324,28 @@ pub(super) fn from_table(table: &Table, file: &str, reading: &Reading) -> Result
     };
     check_track(&track, given).map_err(err)?;
     Ok(track)
+}
+
+/// The tracks with an x column, in file order, or why the header has none.
+fn tracks_with_x(cols: &[Option<Col>], header: &Row) -> Result<Vec<String>, String> {
+    let mut names: Vec<String> = Vec::new();
+    for c in cols.iter().flatten() {
+        if c.axis == Axis::X && !names.contains(&c.track) {
+            names.push(c.track.clone());
+        }
+    }
+    if names.is_empty() {
+        let found: Vec<&str> = (0..header.len())
+            .map(|i| header.cell(i))
+            .filter(|c| !c.is_empty())
+            .collect();
+        return Err(format!(
+            "line {}: no position column x in '{}', expected t and x (and y) for a position track, or t, v_cm and v_t for velocities",
+            header.line,
+            found.join(" ")
+        ));
+    }
+    Ok(names)
 }
 
 /// Where a track's values are in a row, and their SI factors.

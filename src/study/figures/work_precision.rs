@@ -76,25 +76,9 @@ pub fn work_precision_against(
                 "no time-stepping run has a finite error to plot, allowed --methods with at least one of euler, symplectic-euler, rk4, rk45, moreau",
             ));
         }
-        // The exact engine's time is on the time axis too.
-        let exact_t = rows
-            .iter()
-            .filter(|r| r.method == Method::Exact)
-            .map(|r| work.of(r));
-        let (lo_t, hi_t) =
-            finite_bounds(pts.iter().map(|p| p.0).chain(exact_t)).expect("pts is not empty");
-        let (lo_t, hi_t) = log_axis(lo_t / 2.0, hi_t * 2.0);
-        let (lo_e, hi_e) = finite_bounds(pts.iter().map(|p| p.1)).expect("pts is not empty");
-        let (lo_e, hi_e) = log_axis(lo_e.max(1e-16) / 3.0, hi_e * 3.0);
-        let title = format!(
-            "Work-precision, b = {:.2} cm, R = {:.2} cm, mu = {}, e = {}",
-            scene.width * 100.0,
-            scene.radius * 100.0,
-            super::drawing::rounded(scene.mu),
-            super::drawing::rounded(scene.restitution)
-        );
+        let ((lo_t, hi_t), (lo_e, hi_e)) = axis_ranges(rows, &pts, work);
         let mut chart = ChartBuilder::on(&root)
-            .caption(title, ("sans-serif", 20))
+            .caption(caption(scene), ("sans-serif", 20))
             .margin(15)
             .x_label_area_size(45)
             .y_label_area_size(70)
@@ -162,6 +146,34 @@ pub fn work_precision_against(
         root.present()?;
     }
     Ok(svg)
+}
+
+/// The work and error axes' ranges: every plotted run with room around it (the exact
+/// engine's work on the work axis too), as log axes plotters can draw. `pts` is not
+/// empty.
+fn axis_ranges(rows: &[Row], pts: &[(f64, f64)], work: Work) -> ((f64, f64), (f64, f64)) {
+    let exact_t = rows
+        .iter()
+        .filter(|r| r.method == Method::Exact)
+        .map(|r| work.of(r));
+    let (lo_t, hi_t) =
+        finite_bounds(pts.iter().map(|p| p.0).chain(exact_t)).expect("pts is not empty");
+    let (lo_e, hi_e) = finite_bounds(pts.iter().map(|p| p.1)).expect("pts is not empty");
+    (
+        log_axis(lo_t / 2.0, hi_t * 2.0),
+        log_axis(lo_e.max(1e-16) / 3.0, hi_e * 3.0),
+    )
+}
+
+/// The diagram's title: the scene it was run on.
+fn caption(scene: &Scene) -> String {
+    format!(
+        "Work-precision, b = {:.2} cm, R = {:.2} cm, mu = {}, e = {}",
+        scene.width * 100.0,
+        scene.radius * 100.0,
+        super::drawing::rounded(scene.mu),
+        super::drawing::rounded(scene.restitution)
+    )
 }
 
 #[cfg(test)]

@@ -253,6 +253,41 @@ pub(super) struct Scored {
     pub idx: Vec<usize>,
 }
 
+/// The free values that fit `m` best, from the scene's, and the frames they were
+/// fitted on.
+fn best_values(
+    scene: &Scene,
+    m: &Measured,
+    free: &[Free],
+    target: Target,
+    evals: &Evals,
+) -> Result<(Vec<f64>, Vec<usize>), FitError> {
+    let mut p: Vec<f64> = free
+        .iter()
+        .map(|f| match f {
+            Free::Mu => scene.mu.max(0.01),
+            other => other.value_in(scene),
+        })
+        .collect();
+    // μ first, by a global scan and golden-section search: the cost is not smooth
+    // where impacts move past data points, and local steps get caught there.
+    if let Some(i) = free.iter().position(|f| *f == Free::Mu) {
+        p[i] = scan_mu(scene, m, free, &p, i, target, evals)?;
+    }
+    // Then every free value together from there, on the frames away from the model's
+    // impacts (chosen again once the fit has moved them).
+    let mut idx = fit_points(m, &with(scene, free, &p), target);
+    for _ in 0..3 {
+        p = least_squares(scene, m, free, &idx, p, target, evals)?;
+        let next = fit_points(m, &with(scene, free, &p), target);
+        if next == idx {
+            break;
+        }
+        idx = next;
+    }
+    Ok((p, idx))
+}
+
 pub(super) fn scored_fit(
     scene: &Scene,
     m: &Measured,
@@ -269,32 +304,7 @@ pub(super) fn scored_fit(
         progress,
         done: std::cell::Cell::new(0),
     };
-    let start: Vec<f64> = free
-        .iter()
-        .map(|f| match f {
-            Free::Mu => scene.mu.max(0.01),
-            Free::V0 => scene.left.v0,
-            Free::Restitution => scene.restitution,
-            Free::RollingResistance => scene.rolling_resistance,
-        })
-        .collect();
-    // μ first, by a global scan and golden-section search: the cost is not smooth
-    // where impacts move past data points, and local steps get caught there.
-    let mut p = start;
-    if let Some(i) = free.iter().position(|f| *f == Free::Mu) {
-        p[i] = scan_mu(scene, m, free, &p, i, target, &evals)?;
-    }
-    // Then every free value together from there, on the frames away from the model's
-    // impacts (chosen again once the fit has moved them).
-    let mut idx = fit_points(m, &with(scene, free, &p), target);
-    for _ in 0..3 {
-        p = least_squares(scene, m, free, &idx, p, target, &evals)?;
-        let next = fit_points(m, &with(scene, free, &p), target);
-        if next == idx {
-            break;
-        }
-        idx = next;
-    }
+    let (p, idx) = best_values(scene, m, free, target, &evals)?;
     let fitted = with(scene, free, &p);
     let (r, labels) = labelled_residuals(&fitted, m, &idx, target, true);
     let n = p.len();
@@ -312,15 +322,7 @@ pub(super) fn scored_fit(
         fit,
         cost,
         estimated: n + nuisance(m, target),
-        values: free
-            .iter()
-            .map(|f| match f {
-                Free::Mu => fitted.mu,
-                Free::V0 => fitted.left.v0,
-                Free::Restitution => fitted.restitution,
-                Free::RollingResistance => fitted.rolling_resistance,
-            })
-            .collect(),
+        values: free.iter().map(|f| f.value_in(&fitted)).collect(),
         ses: ses.clone(),
         scene: fitted,
         idx: idx.clone(),

@@ -4,6 +4,7 @@
 
 use serde::Serialize;
 
+use crate::physics::scene::Scene;
 use crate::study::Progress;
 
 /// Why a fit cannot be made.
@@ -47,6 +48,16 @@ pub enum Free {
 }
 
 impl Free {
+    /// Its value in `scene` (v0: the left ball's).
+    pub fn value_in(self, scene: &Scene) -> f64 {
+        match self {
+            Free::Mu => scene.mu,
+            Free::V0 => scene.left.v0,
+            Free::Restitution => scene.restitution,
+            Free::RollingResistance => scene.rolling_resistance,
+        }
+    }
+
     /// The name on the command line and in JSON.
     pub fn name(self) -> &'static str {
         match self {

@@ -136,70 +136,10 @@ pub(super) fn uncertainties(
     free: &[Free],
     p: &[f64],
 ) -> (Vec<Option<f64>>, Vec<NotIdentified>) {
-    let n = free.len();
-    let mut out = vec![None; n];
-    let mut why = Vec::new();
-    let mut active = Vec::new();
-    for i in 0..n {
-        let (lo, hi) = bounds(free[i]);
-        if p[i] <= lo || p[i] >= hi {
-            why.push(NotIdentified {
-                parameter: free[i].name(),
-                reason: format!(
-                    "the best fit lies on the edge of its physical range ({}), so the data do not determine it (fix it and fit the others)",
-                    range_text(free[i])
-                ),
-                on_edge_of: Some(range_text(free[i])),
-            });
-        } else if !(jtj[i][i] > 0.0 && jtj[i][i].is_finite()) {
-            why.push(NotIdentified {
-                parameter: free[i].name(),
-                reason: "the fitted points do not depend on it".into(),
-                on_edge_of: None,
-            });
-        } else {
-            active.push(i);
-        }
-    }
-    // Scaled to unit diagonal, the matrix's small eigenvalues are directions the data
-    // cannot see; a value with a large share in one is not identifiable.
+    let mut out = vec![None; free.len()];
+    let (active, mut why) = determinable(jtj, free, p);
     let m = active.len();
-    let d: Vec<f64> = active.iter().map(|&i| jtj[i][i].sqrt()).collect();
-    let scaled = nalgebra::DMatrix::from_fn(m, m, |a, b| jtj[active[a]][active[b]] / (d[a] * d[b]));
-    let mut unseen = vec![false; m];
-    if m > 0 {
-        let eig = scaled.symmetric_eigen();
-        for (k, &lambda) in eig.eigenvalues.iter().enumerate() {
-            if lambda > 1e-9 {
-                continue;
-            }
-            let v = eig.eigenvectors.column(k);
-            let involved: Vec<usize> = (0..m).filter(|&a| v[a].abs() > 0.2).collect();
-            for &a in &involved {
-                if unseen[a] {
-                    continue;
-                }
-                unseen[a] = true;
-                let others: Vec<&str> = involved
-                    .iter()
-                    .filter(|&&b| b != a)
-                    .map(|&b| free[active[b]].name())
-                    .collect();
-                why.push(NotIdentified {
-                    parameter: free[active[a]].name(),
-                    reason: if others.is_empty() {
-                        "not identifiable from these data".into()
-                    } else {
-                        format!(
-                            "not identifiable from these data: correlated with {}",
-                            others.join(", ")
-                        )
-                    },
-                    on_edge_of: None,
-                });
-            }
-        }
-    }
+    let unseen = unseen_directions(jtj, &active, free, &mut why);
     let kept: Vec<usize> = (0..m).filter(|&a| !unseen[a]).collect();
     let sub: Vec<Vec<f64>> = kept
         .iter()
@@ -239,6 +179,85 @@ pub(super) fn uncertainties(
         }
     }
     (out, why)
+}
+
+/// The free values the fit can give a ± (indices into `free`), and why each other one
+/// cannot: on the edge of its physical range, or the fitted points not depending on it.
+fn determinable(jtj: &[Vec<f64>], free: &[Free], p: &[f64]) -> (Vec<usize>, Vec<NotIdentified>) {
+    let mut why = Vec::new();
+    let mut active = Vec::new();
+    for i in 0..free.len() {
+        let (lo, hi) = bounds(free[i]);
+        if p[i] <= lo || p[i] >= hi {
+            why.push(NotIdentified {
+                parameter: free[i].name(),
+                reason: format!(
+                    "the best fit lies on the edge of its physical range ({}), so the data do not determine it (fix it and fit the others)",
+                    range_text(free[i])
+                ),
+                on_edge_of: Some(range_text(free[i])),
+            });
+        } else if !(jtj[i][i] > 0.0 && jtj[i][i].is_finite()) {
+            why.push(NotIdentified {
+                parameter: free[i].name(),
+                reason: "the fitted points do not depend on it".into(),
+                on_edge_of: None,
+            });
+        } else {
+            active.push(i);
+        }
+    }
+    (active, why)
+}
+
+/// Which of the `active` values lie along a direction the data cannot see, each with
+/// its reason added to `why`: scaled to unit diagonal, the normal matrix's small
+/// eigenvalues are such directions, and a value with a large share in one is not
+/// identifiable.
+fn unseen_directions(
+    jtj: &[Vec<f64>],
+    active: &[usize],
+    free: &[Free],
+    why: &mut Vec<NotIdentified>,
+) -> Vec<bool> {
+    let m = active.len();
+    let d: Vec<f64> = active.iter().map(|&i| jtj[i][i].sqrt()).collect();
+    let scaled = nalgebra::DMatrix::from_fn(m, m, |a, b| jtj[active[a]][active[b]] / (d[a] * d[b]));
+    let mut unseen = vec![false; m];
+    if m > 0 {
+        let eig = scaled.symmetric_eigen();
+        for (k, &lambda) in eig.eigenvalues.iter().enumerate() {
+            if lambda > 1e-9 {
+                continue;
+            }
+            let v = eig.eigenvectors.column(k);
+            let involved: Vec<usize> = (0..m).filter(|&a| v[a].abs() > 0.2).collect();
+            for &a in &involved {
+                if unseen[a] {
+                    continue;
+                }
+                unseen[a] = true;
+                let others: Vec<&str> = involved
+                    .iter()
+                    .filter(|&&b| b != a)
+                    .map(|&b| free[active[b]].name())
+                    .collect();
+                why.push(NotIdentified {
+                    parameter: free[active[a]].name(),
+                    reason: if others.is_empty() {
+                        "not identifiable from these data".into()
+                    } else {
+                        format!(
+                            "not identifiable from these data: correlated with {}",
+                            others.join(", ")
+                        )
+                    },
+                    on_edge_of: None,
+                });
+            }
+        }
+    }
+    unseen
 }
 
 /// Solves the small system `a x = b` (LU with partial pivoting, nalgebra).

@@ -426,80 +426,98 @@ fn side_view(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     for ball in 0..2 {
         let i = instant(sol, ball, app.t);
         let s = app.lab.derived.sliding[ball];
-        let style = if ball == 0 { theme.left } else { theme.right };
-        let mut state = i.state.name().to_string();
-        if i.pressed {
-            state += ", pressed";
-        }
-        if i.accumulating {
-            state += " (impacts accumulating)";
-        }
-        ranked.push((
-            9,
-            Line::styled(format!("{:<6}{state}", ball_name(ball)), style),
-        ));
-        let row = |label: &str, value: f64, full: f64, unit: &str, what: &str| {
-            let what = if what.chars().count() + 2 <= room {
-                what
-            } else {
-                ""
-            };
-            g.text(&format!(
-                "  {label:<5}{} {:+.3} {unit}  {what}",
-                bar(value, full, half, theme),
-                // No "-0.000".
-                value + 0.0
-            ))
-        };
-        ranked.push((
-            5,
-            Line::styled(row("v_cm", i.v_cm, speed, "m/s", "at the centre"), style),
-        ));
-        ranked.push((
-            3,
-            Line::styled(
-                row(
-                    "v'_A",
-                    i.v_contact_rel,
-                    speed,
-                    "m/s",
-                    "A, B from the centre",
-                ),
-                theme.dim,
-            ),
-        ));
-        ranked.push((
-            6,
-            Line::styled(row("v_A", i.v_contact, speed, "m/s", "at A, B"), theme.text),
-        ));
-        let kind = if i.kinetic || i.friction == 0.0 {
-            "at A and at B"
-        } else {
-            "at A, B (static)"
-        };
-        ranked.push((
-            4,
-            Line::styled(row("F", i.friction, s.friction, "N", kind), theme.accent),
-        ));
-        let spin = match (i.omega > 0.0, g.ascii) {
-            _ if i.omega == 0.0 => "",
-            (true, false) => "↻ ",
-            (false, false) => "↺ ",
-            (true, true) => "(cw) ",
-            (false, true) => "(ccw) ",
-        };
-        ranked.push((
-            2,
-            Line::styled(
-                g.text(&format!(
-                    "  ω     {spin}{:+.1} rad/s, v_t {:+.3} m/s",
-                    i.omega, i.v_t
-                )),
-                theme.dim,
-            ),
-        ));
+        ranked.extend(motion_lines(ball, &i, &s, speed, (half, room), theme));
     }
     draw_lines(by_priority(ranked, inner), inner, buf);
+}
+
+/// One ball's lines of the side view at this instant, ranked: its motion state, the
+/// bars of v_cm, the contact points' velocities and the friction (`speed` and the
+/// sliding friction full scale; bars `half` cells each way, a note where `room`
+/// allows), and its spin.
+fn motion_lines(
+    ball: usize,
+    i: &Instant,
+    s: &Sliding,
+    speed: f64,
+    (half, room): (usize, usize),
+    theme: &Theme,
+) -> Ranked<'static> {
+    let g = theme.glyphs;
+    let mut lines: Ranked = Vec::new();
+    let style = if ball == 0 { theme.left } else { theme.right };
+    let mut state = i.state.name().to_string();
+    if i.pressed {
+        state += ", pressed";
+    }
+    if i.accumulating {
+        state += " (impacts accumulating)";
+    }
+    lines.push((
+        9,
+        Line::styled(format!("{:<6}{state}", ball_name(ball)), style),
+    ));
+    let row = |label: &str, value: f64, full: f64, unit: &str, what: &str| {
+        let what = if what.chars().count() + 2 <= room {
+            what
+        } else {
+            ""
+        };
+        g.text(&format!(
+            "  {label:<5}{} {:+.3} {unit}  {what}",
+            bar(value, full, half, theme),
+            // No "-0.000".
+            value + 0.0
+        ))
+    };
+    lines.push((
+        5,
+        Line::styled(row("v_cm", i.v_cm, speed, "m/s", "at the centre"), style),
+    ));
+    lines.push((
+        3,
+        Line::styled(
+            row(
+                "v'_A",
+                i.v_contact_rel,
+                speed,
+                "m/s",
+                "A, B from the centre",
+            ),
+            theme.dim,
+        ),
+    ));
+    lines.push((
+        6,
+        Line::styled(row("v_A", i.v_contact, speed, "m/s", "at A, B"), theme.text),
+    ));
+    let kind = if i.kinetic || i.friction == 0.0 {
+        "at A and at B"
+    } else {
+        "at A, B (static)"
+    };
+    lines.push((
+        4,
+        Line::styled(row("F", i.friction, s.friction, "N", kind), theme.accent),
+    ));
+    let spin = match (i.omega > 0.0, g.ascii) {
+        _ if i.omega == 0.0 => "",
+        (true, false) => "↻ ",
+        (false, false) => "↺ ",
+        (true, true) => "(cw) ",
+        (false, true) => "(ccw) ",
+    };
+    lines.push((
+        2,
+        Line::styled(
+            g.text(&format!(
+                "  ω     {spin}{:+.1} rad/s, v_t {:+.3} m/s",
+                i.omega, i.v_t
+            )),
+            theme.dim,
+        ),
+    ));
+    lines
 }
 
 /// ↑ / ↓ / = of `now` against the pinned run's `was` (empty without a pin).
@@ -549,44 +567,7 @@ fn chain_view(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let was = |f: fn(&Sliding) -> f64| pinned.map(|(p, _)| f(&p));
     let arrow = g.text(" → ");
     // A narrow panel drops the units (the front view gives them) to keep both chains.
-    let compact = inner.width < 60;
-    let item = |label: &str, v: f64, unit: &str, hidden: bool, was: Option<f64>| {
-        let unit = if compact { "" } else { unit };
-        let label = if compact {
-            label.trim_matches('|')
-        } else {
-            label
-        };
-        let tr = if hidden {
-            String::new()
-        } else {
-            trend(v, was, theme)
-        };
-        format!("{label} {}{unit}{tr}", num(v, hidden))
-    };
-    let translation = [
-        if hide {
-            "b ?".to_string()
-        } else {
-            format!(
-                "b {:.2}{}",
-                show(app.lab.scene.width, LENGTH),
-                trend(app.lab.scene.width, pinned.map(|p| p.1), theme)
-            )
-        },
-        item("k", s.k, "", hide, was(|p| p.k)),
-        item("|N|", s.normal, " N", hide, was(|p| p.normal)),
-        item("|F|", s.friction, " N", hide, was(|p| p.friction)),
-        item("F_net", s.net_force, " N", hide, was(|p| p.net_force)),
-        item("|a_cm|", s.a_cm, " m/s²", hide, was(|p| p.a_cm)),
-    ]
-    .join(&arrow);
-    let rotation = [
-        item("τ_net", s.net_torque, " N m", false, was(|p| p.net_torque)) + " (any b)",
-        item("|α|", s.alpha, " rad/s²", false, was(|p| p.alpha)),
-        item("|a_t|", s.a_t, " m/s²", hide, was(|p| p.a_t)),
-    ]
-    .join(&arrow);
+    let (translation, rotation) = chains(app, &s, pinned, inner.width < 60, theme);
     let d = &app.lab.derived;
     let secret = pending || hide;
     let outcome = if pending {
@@ -626,6 +607,61 @@ fn chain_view(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         ));
     }
     draw_lines(by_priority(ranked, inner), inner, buf);
+}
+
+/// The two cause-and-effect chains of the sliding ball `s`, each value with its trend
+/// against the `pinned` run's (its sliding values and b): b → k → |N| → |F| → F_net
+/// → |a_cm|, and τ_net → |α| → |a_t|; without units when `compact`, b's values
+/// hidden when the app hides b.
+fn chains(
+    app: &App,
+    s: &Sliding,
+    pinned: Option<(Sliding, f64)>,
+    compact: bool,
+    theme: &Theme,
+) -> (String, String) {
+    let g = theme.glyphs;
+    let hide = app.hide_b;
+    let was = |f: fn(&Sliding) -> f64| pinned.map(|(p, _)| f(&p));
+    let arrow = g.text(" → ");
+    let item = |label: &str, v: f64, unit: &str, hidden: bool, was: Option<f64>| {
+        let unit = if compact { "" } else { unit };
+        let label = if compact {
+            label.trim_matches('|')
+        } else {
+            label
+        };
+        let tr = if hidden {
+            String::new()
+        } else {
+            trend(v, was, theme)
+        };
+        format!("{label} {}{unit}{tr}", num(v, hidden))
+    };
+    let translation = [
+        if hide {
+            "b ?".to_string()
+        } else {
+            format!(
+                "b {:.2}{}",
+                show(app.lab.scene.width, LENGTH),
+                trend(app.lab.scene.width, pinned.map(|p| p.1), theme)
+            )
+        },
+        item("k", s.k, "", hide, was(|p| p.k)),
+        item("|N|", s.normal, " N", hide, was(|p| p.normal)),
+        item("|F|", s.friction, " N", hide, was(|p| p.friction)),
+        item("F_net", s.net_force, " N", hide, was(|p| p.net_force)),
+        item("|a_cm|", s.a_cm, " m/s²", hide, was(|p| p.a_cm)),
+    ]
+    .join(&arrow);
+    let rotation = [
+        item("τ_net", s.net_torque, " N m", false, was(|p| p.net_torque)) + " (any b)",
+        item("|α|", s.alpha, " rad/s²", false, was(|p| p.alpha)),
+        item("|a_t|", s.a_t, " m/s²", hide, was(|p| p.a_t)),
+    ]
+    .join(&arrow);
+    (translation, rotation)
 }
 
 /// What was predicted and, once seen, what happened and why.

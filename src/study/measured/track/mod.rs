@@ -253,6 +253,50 @@ impl Spin {
         );
         Some(l.value + l.slope * (t_impact - self.at[j]))
     }
+
+    /// At the centre's frame `t`: v_t (ω times the contact radius `r`), its standard
+    /// error, the angle turned since the impact (from `theta0` there), all signed by
+    /// `sign`, and the fit's stencil; NaN (and no stencil) where the mark has no fit.
+    fn rim_at(
+        &self,
+        t: f64,
+        sign: f64,
+        theta0: Option<f64>,
+        r: f64,
+    ) -> (f64, f64, f64, Option<Stencil>) {
+        let k = self.at.partition_point(|&a| a < t);
+        match (
+            self.at.get(k) == Some(&t),
+            self.fits.get(k).copied().flatten(),
+        ) {
+            (true, Some(ld)) => (
+                sign * ld.slope * r,
+                ld.slope_se * r,
+                sign * (self.theta[k] - theta0.unwrap_or(f64::NAN)),
+                Some(ld.stencil),
+            ),
+            _ => (f64::NAN, f64::NAN, f64::NAN, None),
+        }
+    }
+}
+
+/// How many frames come before and after the impact at `impact_t`, or why fewer than
+/// `min_frames` on a side cannot be fitted.
+fn frames_around(
+    ts: &[f64],
+    impact_t: f64,
+    min_frames: usize,
+) -> Result<(usize, usize), TrackError> {
+    let before = ts.iter().filter(|&&t| t < impact_t).count();
+    let after = ts.len() - before;
+    for (count, side) in [(before, "before"), (after, "after")] {
+        if count < min_frames {
+            return Err(TrackError(format!(
+                "only {count} frames {side} the impact at t = {impact_t:.4} s, at least {min_frames} needed to fit the motion {side} it"
+            )));
+        }
+    }
+    Ok((before, after))
 }
 
 /// Derives the left ball's measured series from a track: t from the first impact,
@@ -282,16 +326,7 @@ pub fn derive(
     let kinks = impacts(&ts, &xs, n.max(3), sigma, dt, opts.impact_at)?;
     let first = kinks[0];
     let dir = first.before.signum();
-    let before = ts.iter().filter(|&&t| t < first.t).count();
-    let after = ts.len() - before;
-    for (count, side) in [(before, "before"), (after, "after")] {
-        if count < opts.min_frames {
-            return Err(TrackError(format!(
-                "only {count} frames {side} the impact at t = {:.4} s, at least {} needed to fit the motion {side} it",
-                first.t, opts.min_frames
-            )));
-        }
-    }
+    let (before, after) = frames_around(&ts, first.t, opts.min_frames)?;
     let cuts: Vec<f64> = kinks.iter().map(|k| k.t).collect();
     let dx = derivatives(&ts, &xs, n, &cuts, sigma);
     let spin = spin_of(track, &rows, dir, n, &cuts);
@@ -324,23 +359,10 @@ pub fn derive(
         stencils.v_cm.push(Some(shift(l.stencil)));
         pos.push(dir * (xs[i] - first.x));
         let (vt, st, a, stencil) = match &spin {
-            Some(Spin {
-                at, theta, fits, ..
-            }) => {
-                let k = at.partition_point(|&t| t < ts[i]);
-                match (at.get(k) == Some(&ts[i]), fits.get(k).copied().flatten()) {
-                    (true, Some(ld)) => (
-                        spin_sign * ld.slope * contact_radius,
-                        ld.slope_se * contact_radius,
-                        spin_sign * (theta[k] - theta0.unwrap_or(f64::NAN)),
-                        Some(shift(ld.stencil)),
-                    ),
-                    _ => (f64::NAN, f64::NAN, f64::NAN, None),
-                }
-            }
+            Some(spin) => spin.rim_at(ts[i], spin_sign, theta0, contact_radius),
             None => (f64::NAN, f64::NAN, f64::NAN, None),
         };
-        stencils.v_t.push(stencil);
+        stencils.v_t.push(stencil.map(shift));
         m.v_t.push(vt);
         sig_t.push(st);
         ang.push(a);
