@@ -419,8 +419,8 @@ fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit, paper_data:
         row(
             &mut out,
             "c_rr (± 2σ)",
-            opt(v, c_rr, v.rolling_resistance, v.rolling_resistance_se),
-            opt(p, c_rr, p.rolling_resistance, p.rolling_resistance_se),
+            cell(v, c_rr, v.rolling_resistance, v.rolling_resistance_se),
+            cell(p, c_rr, p.rolling_resistance, p.rolling_resistance_se),
         );
     }
     row(
