@@ -49,12 +49,14 @@ pub(super) fn sliding_end(m: &Measured, fitted: &Scene) -> Option<f64> {
         _ => true,
     };
     (0..m.t.len())
-        .filter(|&i| m.t[i] > 0.0 && m.t[i] < t_roll)
-        .filter(|&i| {
-            before(st.v_cm.get(i), &st.centre_times) && before(st.v_t.get(i), &st.mark_times)
+        .rev()
+        .find(|&i| {
+            m.t[i] > 0.0
+                && m.t[i] < t_roll
+                && before(st.v_cm.get(i), &st.centre_times)
+                && before(st.v_t.get(i), &st.mark_times)
         })
         .map(|i| m.t[i])
-        .last()
         .or(Some(t_roll - 1e-9))
 }
 
