@@ -60,7 +60,7 @@ pub fn dispatch(args: &[OsString]) -> Entry {
             let text = e.render().to_string();
             let code = u8::try_from(e.exit_code()).unwrap_or(2);
             return Entry::Exit(if e.use_stderr() {
-                Exit::error(code, &clap_one_line(&text))
+                Exit::error(code, &with_allowed(&e, clap_one_line(&text), args))
             } else {
                 Exit {
                     code,
@@ -98,6 +98,49 @@ fn clap_one_line(text: &str) -> String {
         parts.push(line.strip_prefix("error: ").unwrap_or(line));
     }
     parts.join(" ")
+}
+
+/// An unknown option's message with what is allowed: clap's suggestion when it has
+/// one ("a similar argument exists: '--width'"), else the options the command takes.
+fn with_allowed(e: &clap::Error, line: String, args: &[OsString]) -> String {
+    use clap::CommandFactory;
+    use clap::error::{ContextKind, ContextValue, ErrorKind};
+    if e.kind() != ErrorKind::UnknownArgument {
+        return line;
+    }
+    match e.get(ContextKind::SuggestedArg) {
+        Some(ContextValue::String(similar)) => {
+            return format!("{line}; a similar option exists: '{similar}'");
+        }
+        Some(ContextValue::Strings(similar)) if !similar.is_empty() => {
+            return format!("{line}; similar options exist: '{}'", similar.join("', '"));
+        }
+        _ => {}
+    }
+    let top = Cli::command();
+    // The subcommand named on the line, if any: its options, else the app's.
+    let sub = args
+        .iter()
+        .skip(1)
+        .filter_map(|a| a.to_str())
+        .find_map(|a| top.find_subcommand(a));
+    let (name, command) = match sub {
+        Some(c) => (format!("groovelab {}", c.get_name()), c),
+        None => ("groovelab".to_string(), &top),
+    };
+    let options: Vec<String> = command
+        .get_arguments()
+        .chain(
+            top.get_arguments()
+                .filter(|a| sub.is_some() && a.is_global_set()),
+        )
+        .filter(|a| !a.is_hide_set())
+        .filter_map(|a| a.get_long().map(|l| format!("--{l}")))
+        .collect();
+    format!(
+        "{line}, allowed options of `{name}`: {} (`{name} --help` says what each does)",
+        options.join(", ")
+    )
 }
 
 /// `\n` and `\r` inside a message, spelt out.

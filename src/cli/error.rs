@@ -238,6 +238,20 @@ pub enum BadValue {
         Flag("v0")
     )]
     DataWithoutScene { path: PathBuf },
+    #[error(
+        "the rim mark lies {} from the centre, farther than the ball's R = {} (allowed up to R + 3× the position scatter = {}): give the ball's {} or name the mark's track ({} mark=NAME)",
+        show(*mark, Dimension::Length),
+        show(*radius, Dimension::Length),
+        show(*limit, Dimension::Length),
+        Flag("radius"),
+        Flag("track")
+    )]
+    MarkOffTheBall { mark: f64, radius: f64, limit: f64 },
+    #[error(
+        "{} names {name} twice, allowed each value once (of mu, v0, restitution, rolling_resistance)",
+        Flag("free")
+    )]
+    FreeTwice { name: &'static str },
     #[error("{} {from} s must be before {} {to} s", Flag("from"), Flag("to"))]
     FitWindowBackwards { from: f64, to: f64 },
     #[error(

@@ -98,13 +98,14 @@ pub fn run(
         preset: preset.name.clone(),
     })?;
     let found = lab.series().and_then(|s| s.found().cloned());
-    // Each value once: a repeated one (`--free mu,mu`) made the normal matrix
-    // singular and the uncertainty NaN.
+    // Each value once: a repeated one (`--free mu,mu`) is refused, not quietly
+    // dropped (it once made the normal matrix singular and the uncertainty NaN).
     let mut free: Vec<Free> = Vec::new();
     for f in args.free.clone().unwrap_or_else(|| vec![Free::Mu]) {
-        if !free.contains(&f) {
-            free.push(f);
+        if free.contains(&f) {
+            return Err(BadValue::FreeTwice { name: f.name() }.into());
         }
+        free.push(f);
     }
     if let (Some(a), Some(b)) = (args.from, args.to)
         && a >= b

@@ -10,7 +10,7 @@ use crate::input::data::Reading;
 use crate::lab::{Lab, OwnData, Settings};
 use crate::physics::scene::{Scene, Span};
 use crate::settings::units::{Dimension, show, unit_factor};
-use crate::study::measured::{Derive, Series};
+use crate::study::measured::{Derive, Found, Series};
 use crate::study::preset::{self, Preset};
 use crate::tui::app::{App, Library, Status};
 
@@ -138,7 +138,30 @@ pub fn lab(scene_args: &SceneArgs, data: &DataArgs) -> Result<Lab, CliError> {
             .join(" + "),
         series,
     });
-    Ok(Lab::new(settings, own)?)
+    let lab = Lab::new(settings, own)?;
+    if let Some(found) = data.data.first().and(lab.series()).and_then(|s| s.found()) {
+        mark_on_the_ball(found, lab.scene.radius)?;
+    }
+    Ok(lab)
+}
+
+/// A rim mark tracked farther from the centre than the ball's radius (beyond the
+/// noise: three times the position scatter) is not on this ball: a wrong R, or the
+/// wrong track taken for the mark. Its spin would be wrong by that ratio.
+fn mark_on_the_ball(found: &Found, radius: f64) -> Result<(), CliError> {
+    let Some(mark) = found.mark_radius else {
+        return Ok(());
+    };
+    let limit = radius + 3.0 * found.scatter;
+    if mark > limit {
+        return Err(BadValue::MarkOffTheBall {
+            mark,
+            radius,
+            limit,
+        }
+        .into());
+    }
+    Ok(())
 }
 
 /// The app on that lab, with the user's presets.

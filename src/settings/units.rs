@@ -37,7 +37,7 @@ impl Dimension {
                 decimals: Some(2),
             },
             Dimension::Mass => &Units {
-                accepted: &[("kg", 0), ("g", -3)],
+                accepted: &[("kg", 0), ("g", -3), ("mg", -6)],
                 display: "g",
                 decimals: Some(1),
             },
@@ -296,28 +296,31 @@ pub fn parse_typed(text: &str, dim: Dimension) -> Result<f64, UnitError> {
             } else {
                 parse_quantity(&format!("{number}{name}"), dim)
             }
-            .map_err(|e| match e {
-                UnitError::NotANumber { .. } => UnitError::NotANumber {
-                    text: text.to_string(),
-                    allowed: dim.allowed_typed(),
-                },
-                other => other,
-            });
+            .map_err(|e| about_typed(e, text, dim));
         }
         normal = format!("{}{unit}", &normal[..i]);
     }
-    parse_quantity(&normal, dim).map_err(|e| match e {
+    parse_quantity(&normal, dim).map_err(|e| about_typed(e, text, dim))
+}
+
+/// `e` about `typed`, the text as the user typed it, not the text it was read as (a
+/// bare number gets its display unit glued on: "nan" was read as "nancm"), with what
+/// may be typed.
+fn about_typed(e: UnitError, typed: &str, dim: Dimension) -> UnitError {
+    let text = typed.trim().to_string();
+    match e {
         UnitError::NotANumber { .. } => UnitError::NotANumber {
-            text: text.to_string(),
+            text,
             allowed: dim.allowed_typed(),
         },
         UnitError::UnknownUnit { unit, .. } => UnitError::UnknownUnit {
-            text: text.to_string(),
+            text,
             unit,
             allowed: dim.allowed_typed(),
         },
-        other => other,
-    })
+        UnitError::NotFinite { .. } => UnitError::NotFinite { text },
+        UnitError::OutOfRange { why, .. } => UnitError::OutOfRange { text, why },
+    }
 }
 
 /// An SI value shown in the unit a lab user reads it in (cm for lengths, g for masses…).
@@ -523,6 +526,9 @@ mod tests {
             ("4.4cm", Dimension::Length, 0.044),
             ("1.5e1mm", Dimension::Length, 0.015),
             ("+3E2g", Dimension::Mass, 0.3),
+            // The unit range messages print (1 mg ≤ m) is accepted too.
+            ("1mg", Dimension::Mass, 1e-6),
+            ("250 mg", Dimension::Mass, 0.00025),
         ];
         for (text, dim, want) in cases {
             let got = parse_quantity(text, dim).unwrap();
@@ -553,6 +559,24 @@ mod tests {
             Err(UnitError::NotANumber { .. })
         ));
         assert!(parse_quantity("0.5cm", Dimension::Ratio).is_err());
+    }
+
+    #[test]
+    fn typing_errors_quote_what_was_typed() {
+        // A bare number is read with the display unit glued on; the error must not
+        // show "nancm".
+        for typed in ["nan", "1e999", " inf "] {
+            let e = parse_typed(typed, Dimension::Length)
+                .unwrap_err()
+                .to_string();
+            assert!(e.starts_with(&format!("'{}'", typed.trim())), "{e}");
+            assert!(!e.contains("cm'"), "{e}");
+        }
+        let e = parse_typed("1e-400", Dimension::Length)
+            .unwrap_err()
+            .to_string();
+        assert!(e.starts_with("'1e-400' is out of range"), "{e}");
+        assert_eq!(parse_typed("12 MG", Dimension::Mass), Ok(12e-6));
     }
 
     #[test]

@@ -59,6 +59,10 @@ fn every_option_rejects_bad_values() {
         (&["--method", "rk45", "--tol", "2"], "tol"),
         (&["--method", "rk4", "--epsilon", "-1mm/s"], "ε > 0"),
         (&["--bogus"], "unexpected argument"),
+        // What is allowed: clap's suggestion, else every option of the command.
+        (&["--wdth", "3cm"], "a similar option exists: '--width'"),
+        (&["--bogus"], "allowed options of `groovelab simulate`: "),
+        (&["--bogus"], "--radius, --width"),
         // Physical ranges (the parameter table): finite but absurd values are refused.
         (&["--mass-right", "1e308"], "1 mg ≤ m ≤ 1000 kg"),
         // Named as given: --mass sets both balls.
@@ -89,6 +93,25 @@ fn every_option_rejects_bad_values() {
         (&["--keys", "space spacebar"], "unknown key 'spacebar'"),
         (&["--width", "9cm"], "b < 2R"),
     ];
+    // A mass in mg, the unit the range messages use, is a mass.
+    let out = groovelab(&["simulate", "--mass-right", "200mg", "--format", "json"]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let fit_cases: &[(&[&str], &str)] = &[
+        (
+            &["--free", "mu,mu"],
+            "--free names mu twice, allowed each value once",
+        ),
+        (&["--free", "v0,mu,v0"], "names v0 twice"),
+    ];
+    for (args, mentions) in fit_cases {
+        let mut full = vec!["fit", "--preset", "paper-b4.9"];
+        full.extend_from_slice(args);
+        assert_rejected(&full, mentions);
+    }
     for (args, mentions) in render_cases {
         let mut full = vec!["render"];
         full.extend_from_slice(args);

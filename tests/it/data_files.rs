@@ -344,6 +344,58 @@ fn a_header_without_units_over_ms_and_cm_per_s_names_the_options() {
 }
 
 #[test]
+fn a_rim_mark_beyond_the_ball_is_refused_and_a_narrow_window_is_widened() {
+    let track = video_track(6);
+    let (mx, my) = track.mark.clone().unwrap();
+    let dir = scratch("mark-off");
+    let (ball, mark) = (dir.join("ball.txt"), dir.join("mark.txt"));
+    std::fs::write(&ball, tracker_export("ball", &track.t, &track.x, &track.y)).unwrap();
+    std::fs::write(&mark, tracker_export("rim mark", &track.t, &mx, &my)).unwrap();
+    let (b, m) = (ball.to_str().unwrap(), mark.to_str().unwrap());
+    // The mark was tracked on a ball of R = 2.75 cm; told R = 2.5 cm (b = 4.9 cm still
+    // fits), it lies 2.5 mm beyond the ball: 12 times the 0.2 mm scatter.
+    for command in ["fit", "render"] {
+        let out = common::groovelab(&[
+            command,
+            "--preset",
+            "paper-b4.9",
+            "--radius",
+            "2.5cm",
+            "--data",
+            b,
+            "--data",
+            m,
+        ]);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{command}: {err}");
+        assert!(
+            err.contains("the rim mark lies 2.75")
+                && err.contains("from the centre, farther than the ball's R = 2.5 cm")
+                && err.lines().count() == 1,
+            "{command}: {err}"
+        );
+    }
+    // A half-window under two frames is widened to two, and the output says so.
+    let j = fit_json(&[&ball, &mark], &["--window", "1ms"]);
+    assert_eq!(j["track"]["half_window_frames"], 2, "{}", j["track"]);
+    assert_eq!(j["track"]["half_window_widened_from"].as_f64(), Some(0.001));
+    let (ok, table, err) = groovelab(&[
+        "fit",
+        "--preset",
+        "paper-b4.9",
+        "--data",
+        b,
+        "--data",
+        m,
+        "--window",
+        "1ms",
+    ]);
+    assert!(ok, "{err}");
+    assert!(table.contains("(the ±0.001 s asked for widened"), "{table}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
 fn a_track_without_units_in_cm_or_mm_names_the_length_unit() {
     let track = video_track(5);
     let dir = scratch("track-units");

@@ -146,6 +146,15 @@ pub(super) fn from_table(
             )));
         }
     }
+    // A frame that straddles the impact (the paper's convention) shows the approach too.
+    let before = t.partition_point(|&x| x <= 0.0);
+    if before < FRAMES_BEFORE {
+        return Err(err(format!(
+            "only {before} frame{} before the impact at t = {} s, at least {FRAMES_BEFORE} needed to see the approach (start the recording before the balls meet)",
+            if before == 1 { "" } else { "s" },
+            crate::settings::units::significant(impact, 4)
+        )));
+    }
     let m = Measured::velocities(t, v_cm, v_t);
     m.check_magnitudes().map_err(|e| err(e.to_string()))?;
     units.check_plausible(&m.t, &m.v_cm, &m.v_t).map_err(err)?;
@@ -200,16 +209,26 @@ impl Units {
 }
 
 /// +1 when the ball approaches the other toward the file's +x, −1 when toward −x: the
-/// sign of the mean v_cm before the impact (given), else over the first fifth of the
-/// frames (a recording starts with the approach).
+/// sign of the mean v_cm before the impact (given), else before the largest jump of
+/// v_cm between neighbouring frames, whichever way (the impact reverses the ball; a
+/// recording that starts a few frames before it has most of its frames after).
 fn approach_sign(t: &[f64], v_cm: &[f64], impact_at: Option<f64>) -> f64 {
     let n = match impact_at {
         Some(at) => t.partition_point(|&x| x < at),
-        None => v_cm.len().div_ceil(5),
+        None => v_cm
+            .windows(2)
+            .map(|w| (w[1] - w[0]).abs())
+            .enumerate()
+            .max_by(|a, b| a.1.total_cmp(&b.1))
+            .map_or(1, |(i, _)| i + 1),
     };
     let sum: f64 = v_cm[..n.clamp(1, v_cm.len())].iter().sum();
     if sum < 0.0 { -1.0 } else { 1.0 }
 }
+
+/// Fewest frames up to the first impact (a frame at it counts) a velocity file needs:
+/// the approach must be seen, not only guessed from one frame.
+const FRAMES_BEFORE: usize = 2;
 
 /// The first impact: where v_cm drops the most between neighbouring frames (the left
 /// ball reverses), if the drop is at least a third of the speed before it. When the
@@ -244,6 +263,32 @@ mod tests {
         let m = parse(text, "x.csv", &Reading::default()).unwrap();
         assert_eq!(m.t, vec![-0.02, 0.0, 0.02, 0.04]);
         assert_eq!(m.v_cm[2], -0.64);
+        // One frame before an impact mid-way to the next: the approach is not seen.
+        let text = "t,v_cm,v_t\n0,0.79,0.78\n0.02,-0.64,0.70\n0.04,-0.63,0.68\n";
+        let e = parse(text, "x.csv", &Reading::default())
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("only 1 frame before the impact at t = 0.01 s, at least 2 needed"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn a_recording_that_starts_just_before_the_impact_keeps_its_direction() {
+        // Two frames of approach, then many of the roll back: the direction is the
+        // approach's, not that of most frames.
+        let mut text = String::from("t,v_cm,v_t\n-0.02,0.5,0.5\n-0.01,0.5,0.5\n");
+        for i in 0..20 {
+            text += &format!(
+                "{},{},0.4\n",
+                f64::from(i) * 0.01,
+                -0.3 + 0.01 * f64::from(i)
+            );
+        }
+        let m = parse(&text, "x.csv", &Reading::default()).unwrap();
+        assert_eq!(m.v_cm[0], 0.5, "not turned");
+        assert!((m.t[0] + 0.015).abs() < 1e-12, "{:?}", &m.t[..3]);
     }
 
     #[test]

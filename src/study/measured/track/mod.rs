@@ -74,6 +74,10 @@ pub struct Found {
     /// Half-width of the local fits, s, and in frames.
     pub half_window: f64,
     pub half_window_frames: usize,
+    /// The half-width asked for (`--window`), s, when it was under two frames and so
+    /// widened to two (a local quadratic needs them).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub half_window_widened_from: Option<f64>,
     /// The first impact in the file's time, s (becomes t = 0).
     pub impact_t: f64,
     /// True when found in the motion, false when given.
@@ -149,6 +153,12 @@ impl Found {
             1e3 * self.half_window,
             self.half_window_frames
         );
+        if let Some(asked) = self.half_window_widened_from {
+            s += &format!(
+                " (the ±{} asked for widened: a local quadratic needs at least {MIN_HALF_WINDOW} frames each side)",
+                crate::settings::units::show(asked, crate::settings::units::Dimension::Time)
+            );
+        }
         if !self.later_impacts.is_empty() {
             let later: Vec<String> = self
                 .later_impacts
@@ -165,12 +175,16 @@ impl Found {
 /// The half-window of the local fits, frames: the one asked for, else the smallest
 /// n ≥ 2 whose slope's standard error (frame spacing `dt`, position noise `sigma`)
 /// reaches the target, at most the largest half-window allowed.
+/// Fewest frames on each side of a local quadratic fit: with one, its three points
+/// have no residual left to tell the slope's error.
+const MIN_HALF_WINDOW: usize = 2;
+
 fn half_window(dt: f64, sigma: f64, opts: &Derive) -> usize {
     match opts.half_window {
-        Some(h) => ((h / dt).round() as usize).max(2),
+        Some(h) => ((h / dt).round() as usize).max(MIN_HALF_WINDOW),
         None => {
-            let cap = ((opts.max_half_window / dt).floor() as usize).max(2);
-            (2..=cap)
+            let cap = ((opts.max_half_window / dt).floor() as usize).max(MIN_HALF_WINDOW);
+            (MIN_HALF_WINDOW..=cap)
                 .find(|&n| {
                     let s = (n * (n + 1) * (2 * n + 1)) as f64 / 3.0;
                     sigma / (dt * s.sqrt()) <= opts.target_se
@@ -384,6 +398,9 @@ pub fn derive(
         scatter: sigma,
         half_window: n as f64 * dt,
         half_window_frames: n,
+        half_window_widened_from: opts
+            .half_window
+            .filter(|h| ((h / dt).round() as usize) < MIN_HALF_WINDOW),
         impact_t: first.t,
         impact_detected: opts.impact_at.is_none(),
         impact_x: first.x,
