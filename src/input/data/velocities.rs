@@ -146,15 +146,7 @@ pub(super) fn from_table(
             )));
         }
     }
-    // A frame that straddles the impact (the paper's convention) shows the approach too.
-    let before = t.partition_point(|&x| x <= 0.0);
-    if before < FRAMES_BEFORE {
-        return Err(err(format!(
-            "only {before} frame{} before the impact at t = {} s, at least {FRAMES_BEFORE} needed to see the approach (start the recording before the balls meet)",
-            if before == 1 { "" } else { "s" },
-            crate::settings::units::significant(impact, 4)
-        )));
-    }
+    approach_seen(&t, impact).map_err(err)?;
     let m = Measured::velocities(t, v_cm, v_t);
     m.check_magnitudes().map_err(|e| err(e.to_string()))?;
     units.check_plausible(&m.t, &m.v_cm, &m.v_t).map_err(err)?;
@@ -224,6 +216,21 @@ fn approach_sign(t: &[f64], v_cm: &[f64], impact_at: Option<f64>) -> f64 {
     };
     let sum: f64 = v_cm[..n.clamp(1, v_cm.len())].iter().sum();
     if sum < 0.0 { -1.0 } else { 1.0 }
+}
+
+/// At least [`FRAMES_BEFORE`] of the times `t` (impact at 0, `impact` in the file's
+/// time) up to the impact; a frame that straddles it (the paper's convention) shows
+/// the approach too.
+fn approach_seen(t: &[f64], impact: f64) -> Result<(), String> {
+    let before = t.partition_point(|&x| x <= 0.0);
+    if before >= FRAMES_BEFORE {
+        return Ok(());
+    }
+    Err(format!(
+        "only {before} frame{} before the impact at t = {} s, at least {FRAMES_BEFORE} needed to see the approach (start the recording before the balls meet)",
+        if before == 1 { "" } else { "s" },
+        crate::settings::units::significant(impact, 4)
+    ))
 }
 
 /// Fewest frames up to the first impact (a frame at it counts) a velocity file needs:
