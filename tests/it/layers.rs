@@ -16,7 +16,7 @@ use groovelab::methods::Method;
 use groovelab::settings::params::Key;
 use groovelab::settings::spec::SceneSpec;
 use groovelab::study::preset::Preset;
-use groovelab::tui::app::Status;
+use groovelab::tui::app::{App, Status};
 use serde_json::Value;
 
 use crate::common::{self, press, rendered};
@@ -638,12 +638,13 @@ fn simulate(scene: &SceneArgs, format: Format) -> String {
 }
 
 #[test]
-fn simulate_prints_the_apps_snapshot_of_the_same_options() {
+fn simulate_prints_the_apps_snapshot_of_the_same_scene_by_flags_or_keys() {
     let mut cases: Vec<SceneArgs> = Preset::all()
         .0
         .iter()
         .map(|p| common::scene_of(&p.name, SceneSpec::default()))
         .collect();
+    let b_flag = cases.len();
     cases.push(scene(SceneSpec::default().with(Key::Width, 0.04)));
     cases.push(common::scene_of(
         "paper-b3.5",
@@ -653,8 +654,16 @@ fn simulate_prints_the_apps_snapshot_of_the_same_options() {
         "critical",
         SceneSpec::default().with(Key::TEnd, 0.5),
     ));
-    for args in &cases {
-        let app = rendered(args, &data(&[]), None, None, library());
+    let mut apps: Vec<(&SceneArgs, App)> = cases
+        .iter()
+        .map(|args| (args, rendered(args, &data(&[]), None, None, library())))
+        .collect();
+    // The same scene reached by keys in the app: b typed as 4 cm on paper-b4.9.
+    let mut keyed = common::app("paper-b4.9", library());
+    press(&mut keyed, "enter 4 enter");
+    assert_eq!(keyed.lab.scene.width, 0.04);
+    apps.push((&cases[b_flag], keyed));
+    for (args, app) in &apps {
         let now = &app.lab;
         let json: Value = serde_json::from_str(&simulate(args, Format::Json)).unwrap();
         let name = args.preset.as_deref().unwrap();

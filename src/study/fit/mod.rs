@@ -32,8 +32,6 @@ pub use problem::{FitError, Free};
 pub use regime::{observed_regime, rest_band};
 pub use uncertainty::NotIdentified;
 
-use regime::rolling_time;
-
 /// Both fits of one series.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Fits {
@@ -55,9 +53,10 @@ pub fn fit_all(
 ) -> Result<Fits, FitError> {
     let model_fit = model_fit(scene, m, free, progress)?;
     let given = [window.0.is_some(), window.1.is_some()];
-    // Without v_t the data cannot say when sliding ends: the fitted model does.
+    // Without v_t the data cannot say when sliding ends, and a track's derived v_t
+    // says it poorly: the fitted model does ([`regime::sliding_end`]).
     let window = match window {
-        (from, None) if !m.has_v_t() => {
+        (from, None) if m.stencils.is_some() || !m.has_v_t() => {
             let fitted = Scene {
                 mu: model_fit.mu,
                 restitution: model_fit.restitution,
@@ -72,7 +71,7 @@ pub fn fit_all(
                 },
                 ..*scene
             };
-            (from, rolling_time(&fitted).map(|t| t - 1e-9))
+            (from, regime::sliding_end(m, &fitted))
         }
         w => w,
     };

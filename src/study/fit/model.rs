@@ -16,9 +16,8 @@ use super::least_squares::{
     Target, fit_points, labelled_residuals, least_squares, normal_matrix, nuisance, residuals_of,
     scan_mu, smooth_jacobian, with,
 };
-use super::line::sliding_window;
 use super::problem::{Evals, FitError, Free};
-use super::regime::{data_scatter, observed_after, rest_band, rolling_time};
+use super::regime::{data_scatter, observed_after, rest_band, sliding_end};
 use super::uncertainty::{NotIdentified, shared_noise, uncertainties};
 
 /// Most frames the model fit uses. A longer series is thinned to every k-th frame
@@ -333,13 +332,7 @@ pub(super) fn scored_fit(
     let derived = Derived::of(&fitted);
     let sol = engine::solve(&fitted, &Span::default());
     let verdict = Verdict::of(&sol, &derived, Some(rest_band));
-    let regime_observed = observed_after(
-        m,
-        rest_band,
-        sliding_window(m)
-            .map(|w| w.1)
-            .or_else(|| rolling_time(&fitted)),
-    );
+    let regime_observed = observed_after(m, rest_band, sliding_end(m, &fitted));
     Ok(scored(ModelFit {
         mu: fitted.mu,
         mu_se: se(Free::Mu).unwrap_or(f64::NAN),

@@ -5,14 +5,59 @@ use super::line::{line, sliding_window};
 use crate::physics::derived::Regime;
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
-use crate::study::measured::series::Measured;
+use crate::study::measured::series::{Measured, Stencil};
 use crate::study::measured::track::derivative::scatter;
 
-/// Speeds within ± this of zero count as rest: three times the scatter of the
-/// measured points about straight lines over the sliding phase (the data's own
-/// resolution), at least 2 cm/s.
+/// Speeds within ± this of zero count as rest: three times the data's own resolution
+/// of v_cm (the speed the regime is read from), at least 2 cm/s. Of a velocity file,
+/// the scatter of its points about straight lines over the sliding phase; of a track,
+/// the median uncertainty of its derived v_cm — not the scatter of v_t, derived from
+/// a rim mark a few millimetres from the centre and several times noisier, which made
+/// the band (and the observed regime) swing from one track to the next.
 pub fn rest_band(m: &Measured) -> f64 {
-    (3.0 * sliding_noise(m).unwrap_or(0.0)).max(0.02)
+    let noise = match &m.v_cm_sigma {
+        Some(sigma) => median(sigma),
+        None => sliding_noise(m),
+    };
+    (3.0 * noise.unwrap_or(0.0)).max(0.02)
+}
+
+/// The median of the finite values of `v`; `None` without one.
+fn median(v: &[f64]) -> Option<f64> {
+    let mut s: Vec<f64> = v.iter().copied().filter(|x| x.is_finite()).collect();
+    s.sort_by(f64::total_cmp);
+    s.get(s.len() / 2).copied()
+}
+
+/// Where the sliding phase after the first impact ends for the line fits and the
+/// observed regime, given the fitted model `fitted`: of a velocity file where its
+/// measured v_cm and v_t meet ([`sliding_window`]). Of a track, where the model rolls
+/// again, back to the last frame whose derived velocities were made from frames
+/// before it: a derived v_t is noisy enough to cross v_cm and back again well into
+/// rolling, and a local fit over the corner at t' rounds it (the window ran 40 ms
+/// into rolling and bent |a_cm| from 2.75 to 2.29 m/s²).
+pub(super) fn sliding_end(m: &Measured, fitted: &Scene) -> Option<f64> {
+    if m.stencils.is_none() && m.has_v_t() {
+        return sliding_window(m).map(|w| w.1);
+    }
+    let t_roll = rolling_time(fitted)?;
+    let Some(st) = &m.stencils else {
+        return Some(t_roll - 1e-9);
+    };
+    let before = |stencil: Option<&Option<Stencil>>, times: &[f64]| match stencil {
+        Some(Some(s)) => times.get(s.hi).is_some_and(|&t| t < t_roll),
+        _ => true,
+    };
+    (0..m.t.len())
+        .rev()
+        .find(|&i| {
+            m.t[i] > 0.0
+                && m.t[i] < t_roll
+                && before(st.v_cm.get(i), &st.centre_times)
+                && before(st.v_t.get(i), &st.mark_times)
+        })
+        .map(|i| m.t[i])
+        .or(Some(t_roll - 1e-9))
 }
 
 /// The scatter of v_cm and v_t about straight lines over the sliding phase (NaN where
