@@ -1055,6 +1055,12 @@ const NULLABLE: &[&str] = &[
     "rolling_resistance_se",
     "stalled",
     "label",
+    // compare: where the step budget cut the span, `null` when it covered it all.
+    "cut",
+    // fit's models: a value and its standard error, `null` where the data do not
+    // determine it (with its reason).
+    "value",
+    "se",
 ];
 
 fn nulls(v: &serde_json::Value, key: &str, out: &mut Vec<String>) {

@@ -83,6 +83,8 @@ struct ImpactRecord {
     cycle: f64,
     /// Closing speed just before.
     closing: f64,
+    /// Each ball's velocity and phase as it arrived.
+    arrival: [(f64, Phase); 2],
     /// Everything right after, for summing the series.
     state: [BallState; 2],
     angle: [f64; 2],
@@ -390,6 +392,7 @@ impl Engine {
     fn collide(&mut self) {
         let [l, r] = self.state;
         let closing = l.v - r.v;
+        let arrival = [(l.v, self.phase[0]), (r.v, self.phase[1])];
         let e = self.restitution;
         let (vl, vr) = model::impact(self.mass[0], self.mass[1], l.v, r.v, e);
         self.ledger.impacts += model::impact_loss(self.mass[0], self.mass[1], l.v, r.v, e);
@@ -407,6 +410,7 @@ impl Engine {
         self.history.push(ImpactRecord {
             cycle: self.since_impact,
             closing,
+            arrival,
             state: self.state,
             angle: self.angle,
             ledger: self.ledger,

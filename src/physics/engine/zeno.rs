@@ -119,11 +119,27 @@ impl Engine {
         // changes the speeds over a long tail). The impacts are then resolved on.
         let kinetic_now = self.kinetic(&self.state);
         let scale = kinetic_now + self.ledger.total();
-        if self.kinetic(&state) > kinetic_now + 1e-9 * scale {
+        if self.kinetic(&state) > kinetic_now + 1e-9 * scale || self.stops_on_the_way(&h0, speed) {
             return false;
         }
         self.finish_series(remaining, state, angle, ledger, by_budget);
         true
+    }
+
+    /// Whether rolling resistance would stop a ball inside the tail: the limit `speed`
+    /// lies beyond zero from the velocity a ball arrived at the last impact with,
+    /// rolling. Rolling resistance acts against a rolling ball's velocity and holds it
+    /// once it is at rest, so its cycles cannot carry it through zero: they only
+    /// looked geometric while it slowed down.
+    fn stops_on_the_way(&self, last: &ImpactRecord, speed: [f64; 2]) -> bool {
+        let tiny = self.eps_v * 1e3;
+        self.groove.rolling_resistance > 0.0
+            && (0..2).any(|i| {
+                let (v, phase) = last.arrival[i];
+                !matches!(phase, Phase::Sliding { .. })
+                    && v * speed[i] < 0.0
+                    && speed[i].abs() > tiny
+            })
     }
 
     /// Ends a series of impacts at `remaining` seconds from now in the limit `state`:
@@ -134,7 +150,7 @@ impl Engine {
         &mut self,
         remaining: f64,
         mut state: [BallState; 2],
-        angle: [f64; 2],
+        mut angle: [f64; 2],
         estimate: Ledger,
         averaged: bool,
     ) {
@@ -158,31 +174,7 @@ impl Engine {
             0.0
         };
         if remaining > 0.0 {
-            // The bridge stands for infinitely many ever smaller cycles, each a scaled
-            // copy of the last: cycle times and speeds shrink by the same ratio, so the
-            // spins fall linearly in time to their limits. A long bridge (`averaged`)
-            // moves with the cycle averages (the real velocities swing about them, each
-            // bounce less than the last resolved one), from the last impact's places to
-            // the summed limit places, ending at the limit velocity. A negligible one
-            // just goes on linearly from the last impact.
-            let now = self.state;
-            for i in 0..2 {
-                let start = if averaged {
-                    // A cycle's mean velocity lies between the speeds the ball swings
-                    // between; the bound also keeps rounding in the places (where the
-                    // bridge moves the balls by less than that) from making a speed.
-                    let (lo, hi) = (now[i].v.min(state[i].v), now[i].v.max(state[i].v));
-                    (2.0 * (state[i].x - now[i].x) / remaining - state[i].v).clamp(lo, hi)
-                } else {
-                    state[i].x = now[i].x + 0.5 * (now[i].v + state[i].v) * remaining;
-                    now[i].v
-                };
-                self.state[i].v = start;
-                self.accel[i] = (
-                    (state[i].v - start) / remaining,
-                    (state[i].u - now[i].u) / remaining,
-                );
-            }
+            self.start_bridge(remaining, &mut state, &mut angle, averaged);
         }
         let lost = energy_now - self.kinetic(&state);
         let ledger = split_losses(&self.ledger, &estimate, lost);
@@ -212,6 +204,98 @@ impl Engine {
         // Whether the pair now presses is recorded by the caller, after this event.
         self.settle();
         self.record(&[(kind, Who::Both)]);
+    }
+
+    /// Sets the state and accelerations of the bridge over the last `remaining`
+    /// seconds of a series to the limit `state` (whose places a short bridge sets, and
+    /// whose spin `angle` an averaged one may).
+    fn start_bridge(
+        &mut self,
+        remaining: f64,
+        state: &mut [BallState; 2],
+        angle: &mut [f64; 2],
+        averaged: bool,
+    ) {
+        // The bridge stands for infinitely many ever smaller cycles, each a scaled
+        // copy of the last: cycle times and speeds shrink by the same ratio, so the
+        // spins fall linearly in time to their limits. A long bridge (`averaged`)
+        // moves with the cycle averages (the real velocities swing about them, each
+        // bounce less than the last resolved one), from the last impact's places to
+        // the summed limit places, ending at the limit velocity. A negligible one
+        // just goes on linearly from the last impact.
+        let now = self.state;
+        let mut speeds = [now[0].v, now[1].v];
+        for i in 0..2 {
+            let start = if averaged {
+                // A cycle's mean velocity lies between the speeds the ball swings
+                // between; the bound also keeps rounding in the places (where the
+                // bridge moves the balls by less than that) from making a speed.
+                let (lo, hi) = (now[i].v.min(state[i].v), now[i].v.max(state[i].v));
+                (2.0 * (state[i].x - now[i].x) / remaining - state[i].v).clamp(lo, hi)
+            } else {
+                state[i].x = now[i].x + 0.5 * (now[i].v + state[i].v) * remaining;
+                now[i].v
+            };
+            speeds[i] = start;
+        }
+        let spins = if averaged {
+            self.bridge_spins(&now, speeds, state)
+        } else {
+            [now[0].u, now[1].u]
+        };
+        let r = self.groove.k * self.radius;
+        for i in 0..2 {
+            self.state[i].v = speeds[i];
+            self.state[i].u = spins[i];
+            self.accel[i] = (
+                (state[i].v - speeds[i]) / remaining,
+                (state[i].u - spins[i]) / remaining,
+            );
+            if spins[i] != now[i].u {
+                // The spin angle goes on from the bridge, not from the summed limit.
+                angle[i] = self.angle[i] + 0.5 * (spins[i] + state[i].u) * remaining / r;
+            }
+        }
+    }
+
+    /// The spins an averaged bridge starts with beside its mean speeds `speeds`: the
+    /// impact's, unless the pair would then hold more kinetic energy than it has at the
+    /// impact. A cycle trades spin for speed, so its mean speeds belong with spins
+    /// already part way to their limits: the spins then start as far toward their
+    /// limits (the same fraction for both) as it takes for the bridge to gain nothing.
+    fn bridge_spins(
+        &self,
+        now: &[BallState; 2],
+        speeds: [f64; 2],
+        limit: &[BallState; 2],
+    ) -> [f64; 2] {
+        let spins = |f: f64| -> [f64; 2] {
+            std::array::from_fn(|i| now[i].u + f * (limit[i].u - now[i].u))
+        };
+        let kinetic = |f: f64| {
+            let s = spins(f);
+            self.kinetic(&std::array::from_fn(|i| BallState {
+                x: now[i].x,
+                v: speeds[i],
+                u: s[i],
+            }))
+        };
+        let budget = self.kinetic(now);
+        if kinetic(0.0) <= budget {
+            return spins(0.0);
+        }
+        // Bisection on the fraction, keeping a fraction that fits (if even the limits
+        // do not pay for the mean speeds, the spins start there).
+        let (mut gains, mut fits) = (0.0, 1.0);
+        for _ in 0..64 {
+            let mid = 0.5 * (gains + fits);
+            if kinetic(mid) <= budget {
+                fits = mid;
+            } else {
+                gains = mid;
+            }
+        }
+        spins(fits)
     }
 }
 
