@@ -4,6 +4,7 @@
 use serde::Serialize;
 
 use super::problem::FitError;
+use super::uncertainty::noise_vector;
 use crate::physics::scene::Scene;
 use crate::study::measured::series::Measured;
 
@@ -36,6 +37,79 @@ pub fn line(ts: &[f64], ys: &[f64]) -> Line {
         slope,
         slope_se: (s2 / sxx).sqrt(),
         intercept_se: (s2 * (1.0 / n + mt * mt / sxx)).sqrt(),
+    }
+}
+
+/// [`line`] through velocities derived from a track, whose neighbours share frames:
+/// point i's error is `ê_i·n` over the tracked coordinates' noise `n` (`shared[i]`,
+/// [`noise_vector`]; a point without one is independent), so the errors are
+/// correlated, `C_ij = ê_i·ê_j` with unit vectors. Independent points' standard errors
+/// would be too small twice over: the residuals of correlated points scatter less than
+/// their errors (E rss = σ² (n − tr HC), H the hat matrix), and the slope's variance is
+/// σ² cᵀCc with c its weights, not σ² cᵀc. Both in one pass over the coordinates.
+fn line_shared(ts: &[f64], ys: &[f64], shared: &[Vec<(usize, f64)>]) -> Line {
+    let l = line(ts, ys);
+    let n = ts.len() as f64;
+    let mt = ts.iter().sum::<f64>() / n;
+    let sxx: f64 = ts.iter().map(|t| (t - mt).powi(2)).sum();
+    // Per coordinate: Σ ê, Σ u ê (u = t − mean t), then the slope's and the
+    // intercept's weights times ê.
+    let mut sums: std::collections::HashMap<usize, [f64; 4]> = std::collections::HashMap::new();
+    let mut own = [0.0; 4];
+    for (i, &t) in ts.iter().enumerate() {
+        let u = t - mt;
+        let (c, d) = (u / sxx, 1.0 / n - mt * u / sxx);
+        let e = shared.get(i).map_or(&[][..], Vec::as_slice);
+        let norm = e.iter().map(|(_, x)| x * x).sum::<f64>().sqrt();
+        if e.is_empty() || !(norm > 0.0 && norm.is_finite()) {
+            // A point of its own: a coordinate of its own.
+            for (a, v) in own.iter_mut().zip([1.0, u, c, d]) {
+                *a += v * v;
+            }
+            continue;
+        }
+        for &(k, x) in e {
+            let w = x / norm;
+            let acc = sums.entry(k).or_default();
+            for (a, v) in acc.iter_mut().zip([1.0, u, c, d]) {
+                *a += v * w;
+            }
+        }
+    }
+    let squares = sums
+        .values()
+        .fold(own, |acc, s| std::array::from_fn(|j| acc[j] + s[j] * s[j]));
+    let tr_hc = squares[0] / n + squares[1] / sxx;
+    let rss: f64 = ts
+        .iter()
+        .zip(ys)
+        .map(|(t, y)| (y - l.intercept - l.slope * t).powi(2))
+        .sum();
+    let s2 = rss / (n - tr_hc).max(1.0);
+    Line {
+        slope_se: (s2 * squares[2]).sqrt(),
+        intercept_se: (s2 * squares[3]).sqrt(),
+        ..l
+    }
+}
+
+/// [`line`] of `ys` on the times of the points `idx` of `m`: [`line_shared`] for
+/// velocities derived from a track (the v_t if `spin`, else the v_cm).
+fn line_of(m: &Measured, idx: &[usize], ys: &[f64], spin: bool) -> Line {
+    let ts: Vec<f64> = idx.iter().map(|&i| m.t[i]).collect();
+    match &m.stencils {
+        Some(st) => {
+            let shared: Vec<Vec<(usize, f64)>> = idx
+                .iter()
+                .map(|&i| {
+                    let mut e = Vec::new();
+                    noise_vector(st, i, spin, &mut e);
+                    e
+                })
+                .collect();
+            line_shared(&ts, ys, &shared)
+        }
+        None => line(&ts, ys),
     }
 }
 
@@ -119,8 +193,12 @@ pub fn line_fit(
             idx.len()
         )));
     }
-    let ts: Vec<f64> = idx.iter().map(|&i| m.t[i]).collect();
-    let cm = line(&ts, &idx.iter().map(|&i| m.v_cm[i]).collect::<Vec<_>>());
+    let cm = line_of(
+        m,
+        &idx,
+        &idx.iter().map(|&i| m.v_cm[i]).collect::<Vec<_>>(),
+        false,
+    );
     // v_t where it was measured (all of a velocity file; none of a track without mark).
     let with_t: Vec<usize> = idx
         .iter()
@@ -128,9 +206,11 @@ pub fn line_fit(
         .filter(|&i| m.v_t[i].is_finite())
         .collect();
     let vt = if with_t.len() >= 3 {
-        line(
-            &with_t.iter().map(|&i| m.t[i]).collect::<Vec<_>>(),
+        line_of(
+            m,
+            &with_t,
             &with_t.iter().map(|&i| m.v_t[i]).collect::<Vec<_>>(),
+            true,
         )
     } else {
         Line {
@@ -214,4 +294,32 @@ pub fn paper_row(b: f64) -> Option<[f64; 6]> {
         .iter()
         .find(|(w, _)| (w - b).abs() < 1e-9)
         .map(|(_, row)| *row)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_line_through_shared_frames_has_the_larger_uncertainty() {
+        let ts = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0];
+        let ys = [0.1, 0.9, 2.2, 2.8, 4.1, 5.0];
+        let plain = line(&ts, &ys);
+        // Each point its own coordinate: the ordinary standard errors.
+        let own: Vec<Vec<(usize, f64)>> = (0..6).map(|i| vec![(i, 1.0)]).collect();
+        let l = line_shared(&ts, &ys, &own);
+        assert!((l.slope_se - plain.slope_se).abs() < 1e-12 * plain.slope_se);
+        assert!((l.intercept_se - plain.intercept_se).abs() < 1e-12 * plain.intercept_se);
+        // Neighbours made from the same two frames: their errors are shared, the
+        // residuals understate them, and the slope is less sure.
+        let shared: Vec<Vec<(usize, f64)>> = (0..6).map(|i| vec![(i, 1.0), (i + 1, 1.0)]).collect();
+        let l = line_shared(&ts, &ys, &shared);
+        assert!(
+            l.slope_se > 1.2 * plain.slope_se,
+            "{} vs {}",
+            l.slope_se,
+            plain.slope_se
+        );
+        assert_eq!(l.slope, plain.slope);
+    }
 }

@@ -72,29 +72,7 @@ pub(super) fn shared_noise(j: &[Vec<f64>], labels: &[Label], st: &Stencils) -> V
     let mut meat = vec![vec![0.0; n]; n];
     let mut e: Vec<(usize, f64)> = Vec::new();
     for (r, &(i, spin)) in labels.iter().enumerate() {
-        e.clear();
-        match (spin, if spin { st.v_t.get(i) } else { st.v_cm.get(i) }) {
-            (false, Some(Some(s))) => {
-                e.extend(
-                    s.weights(&st.centre_times)
-                        .map(|(k, w)| (k, st.centre_sign * w)),
-                );
-            }
-            (true, Some(Some(s))) => {
-                for (k, w) in s.weights(&st.mark_times) {
-                    let Some(&(c, ax, ay)) = st.mark_frames.get(k) else {
-                        continue;
-                    };
-                    e.extend([
-                        (c, w * ax),
-                        (centre + c, w * ay),
-                        (2 * centre + k, -w * ax),
-                        (2 * centre + mark + k, -w * ay),
-                    ]);
-                }
-            }
-            _ => {}
-        }
+        noise_vector(st, i, spin, &mut e);
         let norm = e.iter().map(|(_, x)| x * x).sum::<f64>().sqrt();
         if e.is_empty() || !(norm > 0.0 && norm.is_finite()) {
             // A point of its own: its noise shared with none.
@@ -111,6 +89,37 @@ pub(super) fn shared_noise(j: &[Vec<f64>], labels: &[Label], st: &Stencils) -> V
         add_outer(&mut meat, |a| row[a]);
     }
     meat
+}
+
+/// How the derived velocity `i` (its v_t if `spin`, else its v_cm) moves with the
+/// tracked coordinates, into `e` (cleared first) as (coordinate, weight): the centre's
+/// x and y, then the mark's x and y, frame by frame (the numbering [`shared_noise`]
+/// uses). Empty for a point not made from the track.
+pub(super) fn noise_vector(st: &Stencils, i: usize, spin: bool, e: &mut Vec<(usize, f64)>) {
+    e.clear();
+    let (centre, mark) = (st.centre_times.len(), st.mark_times.len());
+    match (spin, if spin { st.v_t.get(i) } else { st.v_cm.get(i) }) {
+        (false, Some(Some(s))) => {
+            e.extend(
+                s.weights(&st.centre_times)
+                    .map(|(k, w)| (k, st.centre_sign * w)),
+            );
+        }
+        (true, Some(Some(s))) => {
+            for (k, w) in s.weights(&st.mark_times) {
+                let Some(&(c, ax, ay)) = st.mark_frames.get(k) else {
+                    continue;
+                };
+                e.extend([
+                    (c, w * ax),
+                    (centre + c, w * ay),
+                    (2 * centre + k, -w * ax),
+                    (2 * centre + mark + k, -w * ay),
+                ]);
+            }
+        }
+        _ => {}
+    }
 }
 
 /// `m += v vᵀ`.
