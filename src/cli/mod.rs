@@ -333,7 +333,7 @@ fn story_lines(out: &mut String, now: &Resolved) {
         out,
         "outcome  {}: {}{}",
         outcome.name(),
-        story::outcome_says(outcome, derived),
+        story::outcome_says(outcome, solution, derived),
         story
             .criterion_note
             .as_ref()
@@ -440,6 +440,18 @@ fn presets() -> String {
     for p in &presets {
         let tag = match &p.origin {
             preset::Origin::BuiltIn => String::new(),
+            // `--preset NAME` finds the built-in first: say so where a file has its name.
+            preset::Origin::File(path)
+                if presets
+                    .iter()
+                    .any(|q| q.origin == preset::Origin::BuiltIn && q.name == p.name) =>
+            {
+                format!(
+                    " [{}; hidden: --preset {} is the built-in one, give the file's path or rename it]",
+                    path.display(),
+                    p.name
+                )
+            }
             preset::Origin::File(path) => format!(" [{}]", path.display()),
         };
         let data = if p.measured.is_some() {

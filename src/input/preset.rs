@@ -11,7 +11,7 @@ use crate::study::preset::{self, Origin, Preset, PresetError};
 /// Why a scene could not be saved as a preset.
 #[derive(Debug, thiserror::Error)]
 pub enum SaveError {
-    #[error("name '{0}', allowed letters, digits, - _ .")]
+    #[error("name '{0}', allowed letters, digits, - _ . (no spaces: it is typed after --preset)")]
     BadName(String),
     #[error("no preset folder (set GROOVELAB_PRESETS)")]
     NoFolder,
@@ -108,7 +108,9 @@ impl PresetFile {
         name: &str,
         overwrite: bool,
     ) -> Result<PresetFile, SaveError> {
+        // A name typed as its file's ("x.toml") is that preset's name.
         let name = name.trim();
+        let name = name.strip_suffix(".toml").unwrap_or(name);
         let valid = !name.is_empty()
             && name
                 .chars()

@@ -135,13 +135,16 @@ pub fn headline(sol: &Solution, derived: &Derived) -> String {
     format!(
         "{}: {}",
         outcome.name().to_uppercase(),
-        outcome_says(outcome, derived)
+        outcome_says(outcome, sol, derived)
     )
 }
 
 /// What an outcome means, in a few words: "the balls roll apart".
-pub fn outcome_says(outcome: Outcome, derived: &Derived) -> &'static str {
+pub fn outcome_says(outcome: Outcome, sol: &Solution, derived: &Derived) -> &'static str {
     match outcome {
+        // Without friction (μ_k = 0) nothing takes the spin: the centres stop, the
+        // balls do not.
+        Outcome::Rest if spins_at_the_end(sol) => "the centres stop; the balls keep spinning",
         // Without friction nothing rolls: they slide apart.
         Outcome::Depart if derived.left_after_impact.is_none() => "the balls move apart",
         Outcome::Depart => "the balls roll apart",
@@ -151,6 +154,14 @@ pub fn outcome_says(outcome: Outcome, derived: &Derived) -> &'static str {
         Outcome::Stopped => "they stop before they meet again",
         Outcome::Recollide => "they come back",
     }
+}
+
+/// True when a ball still spins at the end of the run: its rim speed beyond a
+/// millionth of the approach speed (rounding, not motion, below that).
+fn spins_at_the_end(sol: &Solution) -> bool {
+    let end = sol.at(sol.t_end);
+    let scale = sol.scene.left.v0.abs() + sol.scene.right.v0.abs();
+    end.left.u.abs().max(end.right.u.abs()) > 1e-6 * scale
 }
 
 /// "the paper's criterion says recollide" where the run does otherwise, else `None`.

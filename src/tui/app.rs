@@ -16,6 +16,7 @@ use std::sync::LazyLock;
 use crate::lab::Lab;
 use crate::physics::solution::{EventKind, Solution};
 use crate::settings::params::{Key, PARAMS, Param};
+use crate::settings::spec::SceneError;
 use crate::settings::units::{Dimension, show, significant};
 
 pub use super::vocabulary::{
@@ -121,6 +122,17 @@ impl App {
     pub fn set_value(&mut self, key: Key, value: f64) {
         match self.lab.set(key, value) {
             Ok(()) => self.applied(key),
+            // A smaller R that the groove's b no longer fits: b is what to change first.
+            Err(SceneError::OutOfRange { name, .. })
+                if key == Key::Radius && name == Key::Width.param().symbol =>
+            {
+                self.status = Status::Error(format!(
+                    "not applied: R = {} needs b < 2R = {}, and b = {}: set b first",
+                    show(value, Dimension::Length),
+                    show(2.0 * value, Dimension::Length),
+                    self.shown_value(Key::Width)
+                ));
+            }
             Err(e) => self.status = Status::Error(format!("not applied: {e}")),
         }
     }

@@ -93,7 +93,7 @@ pub const TABLE: &[Binding] = &[
     Binding {
         keys: &[">"],
         action: Action::NextEvent,
-        help: "jump to the next event (impact, rolling, rest, T-inf); click the chart to seek",
+        help: "jump to the next event (impact, rolling, rest, T∞); click the chart to seek",
         hint: None,
     },
     Binding {

@@ -23,6 +23,9 @@ pub struct Field {
     back: usize,
     /// The line being typed, kept while ↑ shows earlier entries.
     draft: String,
+    /// The text is a suggestion, selected as a whole: a typed character replaces it, a
+    /// deletion clears it, a cursor move keeps it for editing.
+    suggestion: bool,
 }
 
 impl Field {
@@ -32,6 +35,19 @@ impl Field {
             input: Input::new(text.into()),
             ..Field::default()
         }
+    }
+
+    /// A field offering `text` (a default name), selected: typing replaces it.
+    pub fn suggested(text: impl Into<String>) -> Field {
+        Field {
+            suggestion: true,
+            ..Field::new(text)
+        }
+    }
+
+    /// True while the text is the untouched suggestion (typing replaces it).
+    pub fn is_suggestion(&self) -> bool {
+        self.suggestion
     }
 
     pub fn value(&self) -> &str {
@@ -45,6 +61,22 @@ impl Field {
 
     /// One editing request (a typed character, a cursor move, a deletion).
     pub fn edit(&mut self, request: InputRequest) {
+        if std::mem::take(&mut self.suggestion) {
+            match request {
+                InputRequest::InsertChar(_) => self.input = Input::default(),
+                InputRequest::DeletePrevChar
+                | InputRequest::DeleteNextChar
+                | InputRequest::DeletePrevWord
+                | InputRequest::DeleteNextWord
+                | InputRequest::DeleteLine
+                | InputRequest::DeleteTillEnd
+                | InputRequest::DeleteFromStart => {
+                    self.input = Input::default();
+                    return;
+                }
+                _ => {}
+            }
+        }
         self.input.handle(request);
     }
 
@@ -54,6 +86,7 @@ impl Field {
         if self.back == history.len() {
             return;
         }
+        self.suggestion = false;
         if self.back == 0 {
             self.draft = self.value().to_string();
         }
@@ -127,6 +160,23 @@ mod tests {
             f.edit(InputRequest::InsertChar(c));
         }
         f
+    }
+
+    #[test]
+    fn typing_replaces_a_suggestion_and_a_move_keeps_it() {
+        let mut f = Field::suggested("my-paper-b4.9");
+        assert!(f.is_suggestion());
+        f.edit(InputRequest::InsertChar('x'));
+        assert_eq!((f.value(), f.is_suggestion()), ("x", false));
+        f.edit(InputRequest::InsertChar('y'));
+        assert_eq!(f.value(), "xy", "only the first key replaces");
+        let mut f = Field::suggested("run.csv");
+        f.edit(InputRequest::DeletePrevChar);
+        assert_eq!(f.value(), "", "a deletion clears the whole suggestion");
+        let mut f = Field::suggested("run.csv");
+        f.edit(InputRequest::GoToPrevChar);
+        f.edit(InputRequest::InsertChar('2'));
+        assert_eq!(f.value(), "run.cs2v", "after a move the text is edited");
     }
 
     #[test]

@@ -226,7 +226,11 @@ impl Plot {
         for r in 0..plot.height {
             buf.set_string(axis_x, plot.y + r, g.vline, theme.dim);
         }
-        for (v, label) in &self.y_ticks_in(area) {
+        let rows_apart = |kept: &[(f64, String)]| {
+            kept.windows(2)
+                .all(|w| cells.row_of(w[0].0) != cells.row_of(w[1].0))
+        };
+        for (v, label) in &evenly(self.y_ticks_in(area), rows_apart) {
             let r = cells.row_of(*v);
             if r >= 0.0 && (r as usize) < cells.rows() {
                 let y = plot.y + r as u16;
@@ -253,19 +257,33 @@ impl Plot {
             ticks_with_labels(&t)
         });
         let tick_row = plot.bottom();
-        let mut free_from = i64::from(plot.x);
-        for (v, label) in x_ticks.iter().filter(|(v, _)| *v >= x0 && *v <= x1) {
-            // Centred under its tick, kept inside the plot; a label wider than the
-            // plot starts at its left edge (and is cut by the buffer).
-            let w = label.chars().count() as i64;
-            let left = i64::from(plot.x);
-            let c = (left + cells.col_of(*v) as i64 - w / 2)
-                .min(i64::from(plot.right()) - w)
-                .max(left);
-            if c >= free_from && c + w <= i64::from(plot.right()) {
-                buf.set_string(c as u16, tick_row, label, theme.dim);
-                free_from = c + w + 1;
+        // Centred under its tick, kept inside the plot; a label wider than the plot
+        // starts at its left edge (and is cut by the buffer). Labels that would
+        // collide are skipped.
+        let placed = |ticks: &[(f64, String)]| {
+            let mut free_from = i64::from(plot.x);
+            let mut out = Vec::new();
+            for (v, label) in ticks {
+                let w = label.chars().count() as i64;
+                let left = i64::from(plot.x);
+                let c = (left + cells.col_of(*v) as i64 - w / 2)
+                    .min(i64::from(plot.right()) - w)
+                    .max(left);
+                if c >= free_from && c + w <= i64::from(plot.right()) {
+                    out.push((c as u16, label.clone()));
+                    free_from = c + w + 1;
+                }
             }
+            (out, free_from)
+        };
+        let inside: Vec<(f64, String)> = x_ticks
+            .into_iter()
+            .filter(|(v, _)| *v >= x0 && *v <= x1)
+            .collect();
+        let (labels, free_from) =
+            placed(&evenly(inside, |kept| placed(kept).0.len() == kept.len()));
+        for (c, label) in labels {
+            buf.set_string(c, tick_row, &label, theme.dim);
         }
         let unit = format!(" {}", self.x_title);
         let ux = i64::from(area.right()) - unit.chars().count() as i64;
@@ -404,6 +422,29 @@ impl Cells {
     }
 }
 
+/// Every k-th of `ticks`, k the smallest for which `fits` the labels kept (each on a
+/// row of its own, or side by side without colliding), counted from the tick at 0
+/// when there is one: evenly spaced labels (1e0, 1e-2, 1e-4), never one here and
+/// there where another collided (1e0, 1e-1, 1e-3).
+fn evenly(
+    ticks: Vec<(f64, String)>,
+    fits: impl Fn(&[(f64, String)]) -> bool,
+) -> Vec<(f64, String)> {
+    let anchor = ticks.iter().position(|(v, _)| *v == 0.0).unwrap_or(0);
+    let every = |k: usize| -> Vec<(f64, String)> {
+        ticks
+            .iter()
+            .enumerate()
+            .filter(|(i, _)| i.abs_diff(anchor).is_multiple_of(k))
+            .map(|(_, t)| t.clone())
+            .collect()
+    };
+    (1..=ticks.len().max(1))
+        .map(every)
+        .find(|kept| fits(kept))
+        .unwrap_or_default()
+}
+
 /// Where `v` lies from `a` to `b`, as a fraction. From halves, which cannot overflow
 /// for finite bounds (−1e308 … 1e308); NaN for NaN (a cell's `clamp` makes it 0).
 fn frac(v: f64, a: f64, b: f64) -> f64 {
@@ -455,6 +496,23 @@ fn draw_event_labels(kept: &[(u16, &VLine)], plot: Rect, buf: &mut Buffer) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn crowded_ticks_are_thinned_evenly_from_zero() {
+        let decades: Vec<(f64, String)> = (-10..=1)
+            .map(|e| (f64::from(e), format!("1e{e}")))
+            .collect();
+        let labels = |kept: Vec<(f64, String)>| -> Vec<String> {
+            kept.into_iter().map(|(_, l)| l).collect()
+        };
+        // Room for six: every other decade, 1e0 among them.
+        let kept = labels(evenly(decades.clone(), |k| k.len() <= 6));
+        assert_eq!(kept, ["1e-10", "1e-8", "1e-6", "1e-4", "1e-2", "1e0"]);
+        // Room for all: all.
+        assert_eq!(evenly(decades.clone(), |_| true).len(), 12);
+        // Room for one: the one at 0.
+        assert_eq!(labels(evenly(decades, |k| k.len() <= 1)), ["1e0"]);
+    }
 
     /// Draws `plot` into buffers of several sizes: it must not panic.
     fn draw_everywhere(plot: &Plot) {

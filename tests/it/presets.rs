@@ -253,3 +253,30 @@ fn paper_presets_carry_the_measured_series() {
         }
     }
 }
+
+#[test]
+fn presets_marks_a_user_preset_that_a_built_in_one_hides() {
+    let dir = std::env::temp_dir().join(format!("groovelab-hidden-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let text = std::fs::read_to_string("presets/paper-b4.9.toml").unwrap();
+    std::fs::write(dir.join("paper-b4.9.toml"), text).unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_groovelab"))
+        .arg("presets")
+        .env("GROOVELAB_PRESETS", &dir)
+        .output()
+        .unwrap();
+    let list = String::from_utf8_lossy(&out.stdout);
+    let lines: Vec<&str> = list
+        .lines()
+        .filter(|l| l.starts_with("paper-b4.9 "))
+        .collect();
+    assert_eq!(lines.len(), 2, "{list}");
+    // `--preset paper-b4.9` loads the built-in one: the file's line says so.
+    assert!(!lines[0].contains("hidden"), "{}", lines[0]);
+    assert!(
+        lines[1].contains("hidden: --preset paper-b4.9 is the built-in one"),
+        "{}",
+        lines[1]
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -164,3 +164,28 @@ fn simulate_reports_the_outcome_beside_the_criterion() {
         assert_eq!(line.contains("criterion says recollide"), differs, "{line}");
     }
 }
+
+#[test]
+fn rest_without_friction_says_the_balls_keep_spinning() {
+    // μ_k = 0 and e = 0: the impact stops the centres, and nothing takes the spin
+    // (v = 0, u = v0 for ever: 0.20 J of rotation left in the trial's scene).
+    let frictionless = groovelab(&[
+        "simulate",
+        "--preset",
+        "paper-b4.9",
+        "--mu",
+        "0",
+        "--restitution",
+        "0",
+    ]);
+    assert!(
+        frictionless.contains("outcome  rest: the centres stop; the balls keep spinning"),
+        "{frictionless}"
+    );
+    // The critical groove's rest is a true stop: both balls roll to rest together.
+    let critical = groovelab(&["simulate", "--preset", "critical"]);
+    assert!(
+        critical.contains("outcome  rest: the balls stop"),
+        "{critical}"
+    );
+}

@@ -1089,13 +1089,71 @@ fn overlay_measured_and_ghost_marks_differ_and_have_a_legend() {
 }
 
 #[test]
+fn typing_replaces_a_suggested_name_and_enter_on_nothing_cancels() {
+    let dir = std::env::temp_dir().join(format!("groovelab-suggest-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    let mut a = app("paper-b4.9");
+    a.library = Library::at(Some(dir.clone()));
+    // The save prompt offers a name; typing replaces it (it once appended:
+    // my-paper-b4.9x), and a name typed as its file's is not doubled.
+    press(&mut a, "s x . t o m l");
+    assert!(
+        matches!(&a.mode, Mode::SaveName(n) if n.value() == "x.toml"),
+        "{:?}",
+        a.mode
+    );
+    press(&mut a, "enter");
+    assert!(dir.join("x.toml").is_file() && !dir.join("x.toml.toml").exists());
+    // The export prompt likewise.
+    press(&mut a, "w r . c s v");
+    assert!(
+        matches!(&a.mode, Mode::Export(_, f) if f.value() == "r.csv"),
+        "{:?}",
+        a.mode
+    );
+    // Enter on an empty line closes a prompt as Esc does, with no error.
+    press(&mut a, "C-u enter");
+    assert_eq!(a.mode, Mode::Normal);
+    assert!(
+        matches!(&a.status, Status::Info(i) if i.starts_with("cancelled")),
+        "{:?}",
+        a.status
+    );
+    select(&mut a, Key::Width);
+    let b = a.lab.scene.width;
+    press(&mut a, "enter C-u enter");
+    assert_eq!((a.mode.clone(), a.lab.scene.width), (Mode::Normal, b));
+    assert!(
+        matches!(&a.status, Status::Info(i) if i.starts_with("cancelled")),
+        "{:?}",
+        a.status
+    );
+    // A typing error quotes what was typed, not the text with the row's unit glued on.
+    press(&mut a, "enter C-u n a n enter");
+    assert!(
+        matches!(&a.status, Status::Error(e) if e.contains("'nan'") && !e.contains("nancm")),
+        "{:?}",
+        a.status
+    );
+    // R below b/2 names b as what to change first.
+    select(&mut a, Key::Radius);
+    press(&mut a, "enter C-u 2 enter");
+    assert!(
+        matches!(&a.status, Status::Error(e) if e.contains("needs b < 2R = 4 cm, and b = 4.9 cm: set b first")),
+        "{:?}",
+        a.status
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
 fn save_keeps_the_data_and_the_description_and_explains_bad_names() {
     let dir = std::env::temp_dir().join(format!("groovelab-save11-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     let mut a = app("paper-b4.4");
     a.library = Library::at(Some(dir.clone()));
     // A name with a space: refused, the dialog stays open and says why.
-    press(&mut a, "s space x enter");
+    press(&mut a, "s end space x enter");
     assert!(matches!(&a.mode, Mode::SaveName(n) if n.value() == "my-paper-b4.4 x"));
     let s = screen_of(&a);
     assert!(s.contains("allowed letters, digits"), "{s}");
@@ -1372,7 +1430,7 @@ fn snapshots_of_issue_11_screens() {
         ("methods", "paper-b4.9", "c"),
         ("fit", "paper-b4.9", "f"),
         ("overlay", "paper-b4.9", "o"),
-        ("save-bad-name", "paper-b4.9", "s space x enter"),
+        ("save-bad-name", "paper-b4.9", "s end space x enter"),
         ("export", "paper-b4.9", "w"),
         ("v0-differ", "unequal-speeds", "down down down down"),
     ] {

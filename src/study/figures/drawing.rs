@@ -32,6 +32,21 @@ pub(crate) fn with_error(v: f64, e: f64) -> String {
     format!("{v:.decimals$} +- {e:.decimals$}")
 }
 
+/// An axis label as plotters writes it (one to five decimals), but never "-0.0": a key
+/// point a rounding below zero is 0.
+pub(super) fn tick(v: &f64) -> String {
+    let text = plotters::data::float::FloatPrettyPrinter {
+        allow_scientific: false,
+        min_decimal: 1,
+        max_decimal: 5,
+    }
+    .print(*v);
+    match text.strip_prefix('-') {
+        Some(zero) if zero.chars().all(|c| c == '0' || c == '.') => zero.to_string(),
+        _ => text,
+    }
+}
+
 /// Largest magnitude put on an axis; beyond it spans overflow.
 const AXIS_LIMIT: f64 = 1e300;
 
@@ -119,6 +134,14 @@ pub fn log_axis(lo: f64, hi: f64) -> (f64, f64) {
 #[cfg(test)]
 pub(super) mod tests {
     use super::*;
+
+    #[test]
+    fn a_tick_at_zero_has_no_minus() {
+        assert_eq!(tick(&-1e-17), "0.0");
+        assert_eq!(tick(&-0.0), "0.0");
+        assert_eq!(tick(&-0.1), "-0.1");
+        assert_eq!(tick(&0.25), "0.25");
+    }
 
     #[test]
     fn caption_numbers_are_rounded_to_their_meaning() {

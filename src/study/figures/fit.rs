@@ -5,7 +5,7 @@ use plotters::prelude::*;
 
 use plotters::coord::Shift;
 
-use super::drawing::{FigureError, draw_measured_marks, finite_bounds, linear_axis};
+use super::drawing::{FigureError, draw_measured_marks, finite_bounds, linear_axis, tick};
 use crate::physics::scene::Scene;
 use crate::physics::solution::Solution;
 use crate::settings::units::Dimension;
@@ -106,6 +106,8 @@ fn draw_fit(
         .configure_mesh()
         .x_desc("t (s)")
         .y_desc("v (m/s)")
+        .x_label_formatter(&tick)
+        .y_label_formatter(&tick)
         .draw()?;
     for (j, colour, name) in [(1, BLUE, "v_cm"), (2, ORANGE, "v_t")] {
         let pick = move |p: &(f64, f64, f64)| (p.0, if j == 1 { p.1 } else { p.2 });
@@ -183,6 +185,8 @@ fn draw_residuals(
     rc.configure_mesh()
         .x_desc("t (s)")
         .y_desc("data - model (m/s)")
+        .x_label_formatter(&tick)
+        .y_label_formatter(&tick)
         .draw()?;
     let fit = |(t, r): (f64, f64)| (near(t, (t0, t1)), near(r, (-rmax, rmax)));
     rc.draw_series(

@@ -3,7 +3,7 @@
 
 use plotters::prelude::*;
 
-use super::drawing::{Chart, FigureError, linear_axis};
+use super::drawing::{Chart, FigureError, linear_axis, tick};
 use crate::physics::closed_form;
 use crate::physics::derived::Regime;
 use crate::physics::scene::Scene;
@@ -56,6 +56,8 @@ pub fn regime_map(
                 x.key.dimension().si_unit()
             ))
             .y_desc(ylabel)
+            .x_label_formatter(&tick)
+            .y_label_formatter(&tick)
             .disable_mesh()
             .draw()?;
         match y {

@@ -3,7 +3,7 @@
 
 use plotters::prelude::*;
 
-use super::drawing::{Chart, FigureError, draw_measured_marks, linear_axis};
+use super::drawing::{Chart, FigureError, draw_measured_marks, linear_axis, tick};
 use crate::physics::solution::{Snapshot, Solution};
 use crate::settings::units::Dimension;
 use crate::study::measured::series::Measured;
@@ -159,6 +159,8 @@ pub fn run_chart(
             .configure_mesh()
             .x_desc("t (s)")
             .y_desc(y_desc)
+            .x_label_formatter(&tick)
+            .y_label_formatter(&tick)
             .draw()?;
         let grey = RGBColor(150, 150, 150);
         for e in sol.visible_events().filter(|e| e.kind.label().is_some()) {

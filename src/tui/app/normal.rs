@@ -92,7 +92,8 @@ impl App {
             Action::Presets => self.open_picker(),
             Action::Save => {
                 self.status = Status::None;
-                self.mode = Mode::SaveName(Field::new(format!("my-{}", self.lab.preset().name)));
+                self.mode =
+                    Mode::SaveName(Field::suggested(format!("my-{}", self.lab.preset().name)));
             }
             Action::Help => self.open_scrolling(Mode::Help),
             Action::DataTable => self.open_data_table(),
@@ -299,7 +300,7 @@ impl App {
         };
         self.mode = Mode::Export(
             kind,
-            Field::new(format!(
+            Field::suggested(format!(
                 "{}-{what}.{}",
                 self.lab.preset().name,
                 kind.extension()

@@ -57,6 +57,11 @@ impl App {
             Action::Confirm | Action::Edit => {
                 self.mode = Mode::Normal;
                 let text = field.value().to_string();
+                // Enter on an empty line is no answer: the prompt closes as with Esc.
+                if text.trim().is_empty() {
+                    self.status = Status::Info("cancelled (nothing typed)".into());
+                    return;
+                }
                 self.history_mut(target).push(&text);
                 match target {
                     TextTarget::Value => self.typed_value(&text),

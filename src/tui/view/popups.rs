@@ -306,7 +306,11 @@ fn save_prompt(app: &App, field: &Field, area: Rect, buf: &mut Buffer, theme: &T
             } else {
                 " letters, digits, - _ .".into()
             },
-            " Enter saves, Esc cancels".into(),
+            if field.is_suggestion() {
+                " Enter saves; typing replaces the name, ← → edit it; Esc cancels".into()
+            } else {
+                " Enter saves, Esc cancels".into()
+            },
         ],
         area,
         buf,
