@@ -1067,3 +1067,26 @@ fn oversampling_a_track_does_not_make_extra_parameters_supported() {
         "worth {worth_fast:.0} points at 240 frames/s, {worth:.0} at 120"
     );
 }
+
+/// Trial polish: a window past the data printed "window 5 … 0.6832405204790731 s" (the
+/// end clipped to the data, the start not). It says the window asked and the data's
+/// span, rounded.
+#[test]
+fn a_window_outside_the_data_says_where_the_data_are() {
+    let (path, scene) = noise_free_run("window-run.csv");
+    let mut args = vec!["fit", "--data", &path, "--from", "5", "--to", "6"];
+    args.extend(scene);
+    let out = groovelab(&args);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(
+        err.contains("the window 5 … 6 s holds 0 points (the data run from t = "),
+        "{err}"
+    );
+    // No unrounded number: at most 4 digits after a decimal point.
+    assert!(
+        !err.split(|c: char| !c.is_ascii_digit())
+            .any(|d| d.len() > 4),
+        "{err}"
+    );
+}

@@ -472,3 +472,17 @@ fn the_line_fits_of_a_marked_track_stop_at_rolling_and_the_regime_holds() {
     // Measured: 0.1719 (12 tracks, each ± about 0.002).
     assert!((mean - MU).abs() < 0.004, "mean μ_k,cm {mean}");
 }
+
+/// Trial polish: Logger Pro exports times rounded to 0.1 ms, so at 120 frames/s its
+/// steps are 8.3 and 8.4 ms; their median made it 120.5 frames/s.
+#[test]
+fn rounded_times_give_the_true_frame_rate() {
+    let s = scene("paper-b4.9");
+    let mut t = video::track(&s, &Video::default());
+    for x in &mut t.t {
+        *x = (*x * 1e4).round() / 1e4;
+    }
+    let l = try_load(&s, &video::write(&t, Format::CsvComma)).unwrap();
+    let rate = l.found.unwrap().frame_rate;
+    assert!((rate - 120.0).abs() < 0.05, "{rate}");
+}

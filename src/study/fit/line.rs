@@ -183,14 +183,20 @@ pub fn line_fit(
             .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &t| {
                 (lo.min(t), hi.max(t))
             });
+    let asked = (from, to);
     let (from, to) = (from.max(span.0), to.min(span.1));
     let idx: Vec<usize> = (0..m.t.len())
         .filter(|&i| m.t[i] >= from - 1e-12 && m.t[i] <= to + 1e-12)
         .collect();
     if idx.len() < 3 {
+        let sig = |v: f64| crate::settings::units::significant(v, 4);
         return Err(FitError::Data(format!(
-            "the window {from} … {to} s holds {} points, allowed at least 3",
-            idx.len()
+            "the window {} … {} s holds {} points (the data run from t = {} to {} s after the impact), allowed at least 3",
+            sig(asked.0),
+            sig(asked.1),
+            idx.len(),
+            sig(span.0),
+            sig(span.1)
         )));
     }
     let cm = line_of(
