@@ -119,7 +119,8 @@ fn a_pinned_run_gives_arrows_in_the_chain() {
     for needle in ["cm ↑", "k 0.5", "|N| 1.4", "↑ → |F|", "τ_net"] {
         assert!(s.contains(needle), "{needle}: {chain}\n{s}");
     }
-    assert!(s.contains("N m = (any b)") || s.contains("N m = "), "{s}");
+    // τ_net does not depend on b: the same as the pinned run's.
+    assert!(s.contains("N m (any b) ="), "{s}");
 }
 
 #[test]

@@ -195,3 +195,67 @@ fn the_time_axis_says_t_in_seconds_at_every_size() {
         }
     }
 }
+
+/// The rows inside the Forces view's chain panel (below its title), right border cut.
+fn chain_panel(screen: &str) -> Vec<String> {
+    let rows: Vec<Vec<char>> = screen.lines().map(|l| l.chars().collect()).collect();
+    let (top, col) = rows
+        .iter()
+        .enumerate()
+        .find_map(|(i, r)| {
+            let s: String = r.iter().collect();
+            let at = s.find("cause and effect")?;
+            // The block's left border: the corner before its title.
+            let corner = s[..at].rfind(['├', '╭', '+'])?;
+            Some((i, s[..corner].chars().count()))
+        })
+        .expect("the chain's title");
+    rows[top + 1..]
+        .iter()
+        .take_while(|r| !matches!(r.get(col), Some('╰' | '+')))
+        .map(|r| r[col + 1..r.len() - 1].iter().collect::<String>())
+        .collect()
+}
+
+#[test]
+fn the_forces_view_reads_whole_at_80_by_24() {
+    // At 80×24 the chain once dropped its units, lost the τ_net and D lines with a run
+    // pinned, split a value from its ↑/↓ across rows, and the footers were cut.
+    for (preset, keys) in [("paper-b3.5", "v"), ("paper-b4.4", "P right right v")] {
+        let a = opened(Some(preset), &[], Some(0.1), Some(keys));
+        for size in [(80, 24), (120, 40)] {
+            for ascii in [false, true] {
+                let screen = text(&a, size, ascii);
+                let rows = chain_panel(&screen);
+                let chain = rows.join("\n");
+                let (arrow, tau, squared) = if ascii {
+                    ("->", "tau_net", "m/s^2")
+                } else {
+                    ("→", "τ_net", "m/s²")
+                };
+                for want in [" N ", squared, "rad/s", " N m", tau, "D = ", "b "] {
+                    assert!(chain.contains(want), "{want} {size:?}:\n{chain}");
+                }
+                // A chain's row starts with its cause or with an arrow, never with a
+                // value's tail or its ↑/↓.
+                for row in rows.iter().filter(|r| r.contains(arrow)) {
+                    let row = row.trim();
+                    let starts = [arrow, "b ", tau, "D "];
+                    assert!(
+                        starts.iter().any(|s| row.starts_with(s)),
+                        "{row:?} {size:?}:\n{chain}"
+                    );
+                }
+                // Every title and footer whole.
+                let h = usize::from(size.1);
+                let lines: Vec<&str> = screen.lines().collect();
+                let ellipsis = if ascii { "..." } else { "…" };
+                // The top rows: 9 parameters' rows on a short screen, all 14 on a tall one.
+                let top = if h >= 32 { 14 } else { 9 };
+                for row in [lines[h - 3], lines[top]] {
+                    assert!(!row.contains(ellipsis), "{size:?}: {row}");
+                }
+            }
+        }
+    }
+}

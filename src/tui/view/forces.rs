@@ -9,10 +9,11 @@
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::style::Style;
+use ratatui::symbols::border;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::{Clear, Paragraph, Widget, Wrap};
+use ratatui::widgets::{Block, Borders, Clear, Paragraph, Widget, Wrap};
 
-use super::panel::{Ranked, block, by_priority, draw_lines, title_within};
+use super::panel::{Ranked, block, by_priority, draw_lines, rows_by_priority, title_within, wrap};
 use crate::physics::derived::Regime;
 use crate::physics::forces::{Instant, Sliding, instant};
 use crate::settings::units::{Dimension, show, significant};
@@ -26,20 +27,53 @@ use crate::tui::vocabulary::Mode;
 const LENGTH: Dimension = Dimension::Length;
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let front_w = if area.width >= 110 { 45 } else { 50 };
+    // The side view needs a state and v_A per ball (4 rows). On a short panel (80×24)
+    // it and the chain share a border, which carries the chain's title, and the chain
+    // is wider: the row and the columns saved let both chains and D keep their units.
+    let joined = area.height < 20;
+    let front_w = if area.width >= 110 || joined { 45 } else { 50 };
     let [front, right] =
         Layout::horizontal([Constraint::Percentage(front_w), Constraint::Min(20)]).areas(area);
-    // The side view needs a state and v_A per ball (6 rows); the chain three lines.
-    let side_h = if right.height < 20 {
-        6
-    } else {
-        right.height * 55 / 100
-    };
+    let side_h = if joined { 5 } else { right.height * 55 / 100 };
     let [side, chain] =
         Layout::vertical([Constraint::Length(side_h), Constraint::Min(5)]).areas(right);
     front_view(app, front, buf, theme);
-    side_view(app, side, buf, theme);
-    chain_view(app, chain, buf, theme);
+    side_view(app, side, joined, buf, theme);
+    chain_view(app, chain, joined, buf, theme);
+}
+
+/// A block's bottom title: the first of `variants` (longest first) that fits on the
+/// border of `area`, the last cut with an ellipsis if none does.
+fn footer(variants: &[String], area: Rect, theme: &Theme) -> Line<'static> {
+    let g = theme.glyphs;
+    let room = usize::from(area.width.saturating_sub(2));
+    let texts: Vec<String> = variants
+        .iter()
+        .map(|t| format!(" {} ", g.text(t)))
+        .collect();
+    Line::styled(
+        g.ellipsize(&fitting(&texts, area.width.saturating_sub(2)), room),
+        theme.dim,
+    )
+}
+
+/// A block's title: the first of `variants` that fits on the border of `area`.
+fn title_of(variants: &[&str], area: Rect, theme: &Theme) -> String {
+    let texts: Vec<String> = variants.iter().map(|t| theme.glyphs.text(t)).collect();
+    title_within(&fitting(&texts, area.width.saturating_sub(4)), area, theme)
+}
+
+/// What the side view's signs mean (the bottom of the side view, or of the chain
+/// below it when they share a border).
+fn side_footer(area: Rect, theme: &Theme) -> Line<'static> {
+    footer(
+        &[
+            "+x → toward the right ball; v_t = ω r > 0 rolls toward +x".into(),
+            "+x → right ball; ω > 0 rolls to +x".into(),
+        ],
+        area,
+        theme,
+    )
 }
 
 /// Which ball the front view shows, 0 left or 1 right, and its name.
@@ -71,13 +105,17 @@ fn front_view(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let title = format!("Forces: front view, {} ball [b]", ball_name(ball));
     let out = along_x(theme, true);
     let inn = along_x(theme, false);
-    let bottom = format!(" {out} +x out of the picture, {inn} into it; z right, y down ");
-    let blk = block(title_within(&title, area, theme), theme).title_bottom(Line::styled(
-        theme
-            .glyphs
-            .ellipsize(&bottom, usize::from(area.width.saturating_sub(2))),
-        theme.dim,
-    ));
+    let bottom = footer(
+        &[
+            format!("{out} +x out of the picture, {inn} into it; z right, y down"),
+            format!("{out} +x out, {inn} in; z right, y down"),
+            format!("{out} out, {inn} in; z right, y down"),
+        ],
+        area,
+        theme,
+    );
+    let short = format!("Front view, {} ball [b]", ball_name(ball));
+    let blk = block(title_of(&[&title, &short], area, theme), theme).title_bottom(bottom);
     let inner = blk.inner(area);
     blk.render(area, buf);
     if inner.width < 20 || inner.height < 3 {
@@ -93,23 +131,45 @@ fn front_view(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         Layout::horizontal([Constraint::Min(10), Constraint::Length(values_w)]).areas(inner)
     };
     cross_section(app, &now, picture, buf, theme);
-    let lines = by_priority(front_values(app, &now, &sliding, theme), values);
+    let lines = by_priority(
+        front_values(app, &now, &sliding, values.width, theme),
+        values,
+    );
     draw_lines(lines, values, buf);
 }
 
-/// The values beside the cross-section, most important first at 80×24: |N|, |F|, τ_net.
-fn front_values<'a>(app: &App, now: &Instant, s: &Sliding, theme: &Theme) -> Ranked<'a> {
+/// The first of `variants` that fits in `width` columns, else the last (shortest).
+fn fitting(variants: &[String], width: u16) -> String {
+    variants
+        .iter()
+        .find(|v| v.chars().count() <= usize::from(width))
+        .or(variants.last())
+        .cloned()
+        .unwrap_or_default()
+}
+
+/// The values beside the cross-section, most important first at 80×24: |N|, |F|,
+/// τ_net; shorter wordings where the column (`width`) is narrow.
+fn front_values<'a>(
+    app: &App,
+    now: &Instant,
+    s: &Sliding,
+    width: u16,
+    theme: &Theme,
+) -> Ranked<'a> {
     let g = theme.glyphs;
     let hide = app.hide_b;
     let t = |s: String| g.text(&s);
+    let fit = |variants: [String; 2]| fitting(&variants.map(|v| g.text(&v)), width);
     let friction = if now.friction == 0.0 {
-        t("|F_A|=|F_B| 0, v_A = 0".into())
+        fit(["|F_A|=|F_B| 0, v_A = 0".into(), "|F| 0 (v_A = 0)".into()])
     } else {
         let kind = if now.kinetic { "" } else { " static" };
-        t(format!(
-            "|F_A|=|F_B| {} N{kind}",
-            num(now.friction.abs(), hide)
-        ))
+        let f = num(now.friction.abs(), hide);
+        fit([
+            format!("|F_A|=|F_B| {f} N{kind}"),
+            format!("|F| {f} N{kind}"),
+        ])
     };
     let direction = if now.friction == 0.0 {
         String::new()
@@ -130,9 +190,17 @@ fn front_values<'a>(app: &App, now: &Instant, s: &Sliding, theme: &Theme) -> Ran
                 "τ_net {} N m",
                 significant(now.net_torque.abs(), 3)
             )),
-            t("= μ_k m g R, for any b".into()),
+            fit([
+                "= μ_k m g R, for any b".into(),
+                "= μ_k m g R (any b)".into(),
+            ]),
         )
     };
+    let tau_ab = num(now.friction.abs() * app.lab.scene.radius, hide);
+    let tau_ab = fit([
+        format!("|τ_A|=|τ_B| {tau_ab} N m"),
+        format!("|τ_A| {tau_ab} N m"),
+    ]);
     let mut out: Ranked = vec![
         (
             9,
@@ -144,16 +212,7 @@ fn front_values<'a>(app: &App, now: &Instant, s: &Sliding, theme: &Theme) -> Ran
         (9, Line::styled(friction, theme.accent)),
         (7, Line::styled(direction, theme.accent)),
         (8, Line::styled(torque, theme.left)),
-        (
-            5,
-            Line::styled(
-                t(format!(
-                    "|τ_A|=|τ_B| {} N m",
-                    num(now.friction.abs() * app.lab.scene.radius, hide)
-                )),
-                theme.dim,
-            ),
-        ),
+        (5, Line::styled(tau_ab, theme.dim)),
         (
             6,
             Line::styled(format!("G {} N", significant(s.weight, 3)), theme.text),
@@ -400,51 +459,39 @@ fn bar(value: f64, full: f64, half: usize, theme: &Theme) -> String {
     format!("{left:>half$}{}{right:<half$}", g.vline)
 }
 
-fn side_view(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let g = theme.glyphs;
-    let bottom = g.text(" +x → toward the right ball; v_t = ω r > 0 rolls toward +x ");
+/// The side view; `joined`: its bottom border is the chain's top one (drawn there).
+fn side_view(app: &App, area: Rect, joined: bool, buf: &mut Buffer, theme: &Theme) {
     let blk = block(
         title_within("Forces: side view, motion states", area, theme),
         theme,
-    )
-    .title_bottom(Line::styled(
-        g.ellipsize(&bottom, usize::from(area.width.saturating_sub(2))),
-        theme.dim,
-    ));
+    );
+    let blk = if joined {
+        blk.borders(Borders::TOP | Borders::LEFT | Borders::RIGHT)
+    } else {
+        blk.title_bottom(side_footer(area, theme))
+    };
     let inner = blk.inner(area);
     blk.render(area, buf);
     if inner.width < 20 || inner.height < 1 {
         return;
     }
-    let sol = &app.lab.solution;
+    let ranked = (0..2)
+        .flat_map(|ball| ball_rows(app, ball, usize::from(inner.width), theme))
+        .collect();
+    draw_lines(by_priority(ranked, inner), inner, buf);
+}
+
+/// The side view's rows of one ball in a panel `width` columns wide: its motion
+/// state, then its velocities, friction and spin as bars (ranked).
+fn ball_rows(app: &App, ball: usize, width: usize, theme: &Theme) -> Ranked<'static> {
+    let g = theme.glyphs;
     let speed = 2.0 * app.lab.scene.speed_scale();
-    let width = usize::from(inner.width);
     // A row: 2 + label 5 + bar + " +0.000 m/s" (11) + where it acts, if room is left.
     let half = (width.saturating_sub(20) / 2).clamp(2, 14);
     let room = width.saturating_sub(2 * half + 19);
     let mut ranked: Ranked = Vec::new();
-    for ball in 0..2 {
-        let i = instant(sol, ball, app.t);
-        let s = app.lab.derived.sliding[ball];
-        ranked.extend(motion_lines(ball, &i, &s, speed, (half, room), theme));
-    }
-    draw_lines(by_priority(ranked, inner), inner, buf);
-}
-
-/// One ball's lines of the side view at this instant, ranked: its motion state, the
-/// bars of v_cm, the contact points' velocities and the friction (`speed` and the
-/// sliding friction full scale; bars `half` cells each way, a note where `room`
-/// allows), and its spin.
-fn motion_lines(
-    ball: usize,
-    i: &Instant,
-    s: &Sliding,
-    speed: f64,
-    (half, room): (usize, usize),
-    theme: &Theme,
-) -> Ranked<'static> {
-    let g = theme.glyphs;
-    let mut lines: Ranked = Vec::new();
+    let i = instant(&app.lab.solution, ball, app.t);
+    let s = app.lab.derived.sliding[ball];
     let style = if ball == 0 { theme.left } else { theme.right };
     let mut state = i.state.name().to_string();
     if i.pressed {
@@ -453,7 +500,7 @@ fn motion_lines(
     if i.accumulating {
         state += " (impacts accumulating)";
     }
-    lines.push((
+    ranked.push((
         9,
         Line::styled(format!("{:<6}{state}", ball_name(ball)), style),
     ));
@@ -470,11 +517,11 @@ fn motion_lines(
             value + 0.0
         ))
     };
-    lines.push((
+    ranked.push((
         5,
         Line::styled(row("v_cm", i.v_cm, speed, "m/s", "at the centre"), style),
     ));
-    lines.push((
+    ranked.push((
         3,
         Line::styled(
             row(
@@ -487,7 +534,7 @@ fn motion_lines(
             theme.dim,
         ),
     ));
-    lines.push((
+    ranked.push((
         6,
         Line::styled(row("v_A", i.v_contact, speed, "m/s", "at A, B"), theme.text),
     ));
@@ -496,7 +543,7 @@ fn motion_lines(
     } else {
         "at A, B (static)"
     };
-    lines.push((
+    ranked.push((
         4,
         Line::styled(row("F", i.friction, s.friction, "N", kind), theme.accent),
     ));
@@ -507,7 +554,7 @@ fn motion_lines(
         (true, true) => "(cw) ",
         (false, true) => "(ccw) ",
     };
-    lines.push((
+    ranked.push((
         2,
         Line::styled(
             g.text(&format!(
@@ -517,7 +564,7 @@ fn motion_lines(
             theme.dim,
         ),
     ));
-    lines
+    ranked
 }
 
 /// ↑ / ↓ / = of `now` against the pinned run's `was` (empty without a pin).
@@ -536,96 +583,27 @@ fn trend(now: f64, was: Option<f64>, theme: &Theme) -> String {
     }
 }
 
-fn chain_view(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let g = theme.glyphs;
-    let prediction = app.prediction.as_ref().filter(|p| p.scene == app.lab.scene);
-    // While the question is asked, and until the outcome shows, the chain keeps D and
-    // the outcome to itself: the answer must not stand beside the question.
-    let pending = app.mode == Mode::Predict || prediction.is_some_and(|p| app.t < p.reveal_at);
-    let title = if prediction.is_some() {
-        "Forces: predict, observe, explain"
-    } else {
-        "Forces: cause and effect (while sliding)"
-    };
-    let blk = block(title_within(title, area, theme), theme);
-    let inner = blk.inner(area);
-    blk.render(area, buf);
-    if inner.width < 10 || inner.height < 1 {
-        return;
-    }
-    let ball = app.forces_ball;
-    let s = app.lab.derived.sliding[ball];
-    let pinned = app.lab.pinned.as_ref().map(|p| {
-        let mass = if ball == 0 {
+/// The pinned run's sliding values for the ball shown, and its b.
+fn pinned_sliding(app: &App) -> Option<(Sliding, f64)> {
+    app.lab.pinned.as_ref().map(|p| {
+        let mass = if app.forces_ball == 0 {
             p.scene.left.mass
         } else {
             p.scene.right.mass
         };
         (Sliding::of(&p.scene, mass), p.scene.width)
-    });
-    let hide = app.hide_b;
-    let was = |f: fn(&Sliding) -> f64| pinned.map(|(p, _)| f(&p));
-    let arrow = g.text(" → ");
-    // A narrow panel drops the units (the front view gives them) to keep both chains.
-    let (translation, rotation) = chains(app, &s, pinned, inner.width < 60, theme);
-    let d = &app.lab.derived;
-    let secret = pending || hide;
-    let outcome = if pending {
-        g.text(&format!(
-            "D = |a_t|/|a_cm| = ?{arrow}what will the balls do?"
-        ))
-    } else if hide {
-        g.text(&format!("D = |a_t|/|a_cm| = ?{arrow}{}", d.regime.name()))
-    } else {
-        g.text(&format!(
-            "D = |a_t|/|a_cm| = {}{}{arrow}{}",
-            significant(s.d, 3),
-            trend(s.d, was(|p| p.d), theme),
-            d.regime.name(),
-        ))
-    };
-    let mut ranked: Ranked = vec![
-        (7, Line::styled(g.text(&translation), theme.text)),
-        (7, Line::styled(g.text(&rotation), theme.left)),
-        (
-            if prediction.is_some() { 6 } else { 8 },
-            Line::styled(outcome, theme.accent),
-        ),
-    ];
-    if !secret && prediction.is_none() {
-        ranked.push((5, Line::styled(g.text(&d.why()), theme.accent)));
-    }
-    if let Some(p) = prediction {
-        ranked.extend(prediction_lines(app, p, pending, theme));
-    } else if app.prediction.is_some() {
-        ranked.push((
-            9,
-            Line::styled(
-                "the scene changed since the prediction: y asks again",
-                theme.dim,
-            ),
-        ));
-    }
-    draw_lines(by_priority(ranked, inner), inner, buf);
+    })
 }
 
-/// The two cause-and-effect chains of the sliding ball `s`, each value with its trend
-/// against the `pinned` run's (its sliding values and b): b → k → |N| → |F| → F_net
-/// → |a_cm|, and τ_net → |α| → |a_t|; without units when `compact`, b's values
-/// hidden when the app hides b.
-fn chains(
-    app: &App,
-    s: &Sliding,
-    pinned: Option<(Sliding, f64)>,
-    compact: bool,
-    theme: &Theme,
-) -> (String, String) {
-    let g = theme.glyphs;
+/// The two chains' items for the ball shown: b → k → |N| → |F| → F_net → |a_cm| and
+/// τ_net → |α| → |a_t|, each with its unit and, with a run pinned, ↑/↓/= against it
+/// (an item and its arrow are never split). `compact` drops the magnitude bars.
+fn chains(app: &App, compact: bool, theme: &Theme) -> [Vec<String>; 2] {
+    let s = app.lab.derived.sliding[app.forces_ball];
+    let pinned = pinned_sliding(app);
     let hide = app.hide_b;
     let was = |f: fn(&Sliding) -> f64| pinned.map(|(p, _)| f(&p));
-    let arrow = g.text(" → ");
     let item = |label: &str, v: f64, unit: &str, hidden: bool, was: Option<f64>| {
-        let unit = if compact { "" } else { unit };
         let label = if compact {
             label.trim_matches('|')
         } else {
@@ -638,30 +616,161 @@ fn chains(
         };
         format!("{label} {}{unit}{tr}", num(v, hidden))
     };
-    let translation = [
-        if hide {
-            "b ?".to_string()
-        } else {
-            format!(
-                "b {:.2}{}",
-                show(app.lab.scene.width, LENGTH),
-                trend(app.lab.scene.width, pinned.map(|p| p.1), theme)
-            )
-        },
+    let b = if hide {
+        "b ?".to_string()
+    } else {
+        format!(
+            "b {:.2}{}",
+            show(app.lab.scene.width, LENGTH),
+            trend(app.lab.scene.width, pinned.map(|p| p.1), theme)
+        )
+    };
+    let translation = vec![
+        b,
         item("k", s.k, "", hide, was(|p| p.k)),
         item("|N|", s.normal, " N", hide, was(|p| p.normal)),
         item("|F|", s.friction, " N", hide, was(|p| p.friction)),
         item("F_net", s.net_force, " N", hide, was(|p| p.net_force)),
         item("|a_cm|", s.a_cm, " m/s²", hide, was(|p| p.a_cm)),
-    ]
-    .join(&arrow);
-    let rotation = [
-        item("τ_net", s.net_torque, " N m", false, was(|p| p.net_torque)) + " (any b)",
+    ];
+    let rotation = vec![
+        item(
+            "τ_net",
+            s.net_torque,
+            " N m (any b)",
+            false,
+            was(|p| p.net_torque),
+        ),
         item("|α|", s.alpha, " rad/s²", false, was(|p| p.alpha)),
         item("|a_t|", s.a_t, " m/s²", hide, was(|p| p.a_t)),
-    ]
-    .join(&arrow);
-    (translation, rotation)
+    ];
+    [translation, rotation].map(|c| c.iter().map(|i| theme.glyphs.text(i)).collect())
+}
+
+/// D and what it decides: `?` while the prediction is pending or b is hidden.
+fn outcome_items(app: &App, pending: bool, compact: bool, theme: &Theme) -> Vec<String> {
+    let s = app.lab.derived.sliding[app.forces_ball];
+    let d = if compact {
+        "D = a_t/a_cm"
+    } else {
+        "D = |a_t|/|a_cm|"
+    };
+    let regime = app.lab.derived.regime.name().to_string();
+    let items = if pending {
+        vec![format!("{d} = ?"), "what will the balls do?".to_string()]
+    } else if app.hide_b {
+        vec![format!("{d} = ?"), regime]
+    } else {
+        let was = pinned_sliding(app).map(|(p, _)| p.d);
+        let tr = trend(s.d, was, theme);
+        vec![format!("{d} = {}{tr}", significant(s.d, 3)), regime]
+    };
+    items.iter().map(|i| theme.glyphs.text(i)).collect()
+}
+
+/// `items` joined by `arrow` into rows of at most `width` columns, broken only before
+/// an arrow (the next row starts with it), so that a value, its unit and its ↑/↓ stay
+/// together.
+fn chain_rows(items: &[String], arrow: &str, width: usize) -> Vec<String> {
+    let len = |s: &str| s.chars().count();
+    let lead = arrow.trim_start();
+    let mut rows: Vec<String> = Vec::new();
+    for item in items {
+        match rows.last_mut() {
+            None => rows.push(item.clone()),
+            Some(row) if len(row) + len(arrow) + len(item) <= width => {
+                row.push_str(arrow);
+                row.push_str(item);
+            }
+            Some(_) => rows.push(format!("{lead}{item}")),
+        }
+    }
+    rows
+}
+
+/// The chain's block: its own, or (`joined`) one whose top border meets the side
+/// view's sides and whose bottom says what the side view's signs mean.
+fn chain_block(title: (&str, &str), area: Rect, joined: bool, theme: &Theme) -> Block<'static> {
+    let blk = block(title_of(&[title.0, title.1], area, theme), theme);
+    if !joined {
+        return blk;
+    }
+    let (left, right) = if theme.glyphs.ascii {
+        ("+", "+")
+    } else {
+        ("├", "┤")
+    };
+    blk.border_set(border::Set {
+        top_left: left,
+        top_right: right,
+        ..theme.glyphs.border
+    })
+    .title_bottom(side_footer(area, theme))
+}
+
+fn chain_view(app: &App, area: Rect, joined: bool, buf: &mut Buffer, theme: &Theme) {
+    let g = theme.glyphs;
+    let prediction = app.prediction.as_ref().filter(|p| p.scene == app.lab.scene);
+    // While the question is asked, and until the outcome shows, the chain keeps D and
+    // the outcome to itself: the answer must not stand beside the question.
+    let pending = app.mode == Mode::Predict || prediction.is_some_and(|p| app.t < p.reveal_at);
+    let title = if prediction.is_some() {
+        (
+            "Forces: predict, observe, explain",
+            "predict, observe, explain",
+        )
+    } else {
+        (
+            "Forces: cause and effect (while sliding)",
+            "cause and effect, while sliding",
+        )
+    };
+    let blk = chain_block(title, area, joined, theme);
+    let inner = blk.inner(area);
+    blk.render(area, buf);
+    if inner.width < 10 || inner.height < 1 {
+        return;
+    }
+    let width = usize::from(inner.width);
+    // A narrow panel drops the magnitude bars (|N| → N); every number keeps its unit.
+    let compact = inner.width < 60;
+    let arrow = g.text(" → ");
+    let rows = |items: &[String], style: Style| -> Vec<Line<'static>> {
+        chain_rows(items, &arrow, width)
+            .into_iter()
+            .flat_map(|row| wrap(Line::styled(row, style), width))
+            .collect()
+    };
+    let [translation, rotation] = chains(app, compact, theme);
+    let outcome = outcome_items(app, pending, compact, theme);
+    let mut groups = vec![
+        (7, rows(&translation, theme.text)),
+        (7, rows(&rotation, theme.left)),
+        (
+            if prediction.is_some() { 6 } else { 8 },
+            rows(&outcome, theme.accent),
+        ),
+    ];
+    let mut ranked: Ranked = Vec::new();
+    if !(pending || app.hide_b) && prediction.is_none() {
+        ranked.push((
+            5,
+            Line::styled(g.text(&app.lab.derived.why()), theme.accent),
+        ));
+    }
+    if let Some(p) = prediction {
+        ranked.extend(prediction_lines(app, p, pending, theme));
+    } else if app.prediction.is_some() {
+        ranked.push((
+            9,
+            Line::styled(
+                "the scene changed since the prediction: y asks again",
+                theme.dim,
+            ),
+        ));
+    }
+    groups.extend(ranked.into_iter().map(|(p, l)| (p, wrap(l, width))));
+    draw_lines(rows_by_priority(groups, inner.height), inner, buf);
 }
 
 /// What was predicted and, once seen, what happened and why.

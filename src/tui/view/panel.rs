@@ -57,12 +57,21 @@ pub(crate) type Ranked<'a> = Vec<(u8, Line<'a>)>;
 /// small screen so shows the important lines whole rather than the first ones.
 pub(crate) fn by_priority<'a>(ranked: Ranked<'a>, area: Rect) -> Vec<Line<'a>> {
     let width = usize::from(area.width).max(1);
-    let mut wrapped: Vec<(u8, Vec<Line<'a>>)> = ranked
+    let wrapped = ranked
         .into_iter()
         .map(|(p, line)| (p, wrap(line, width)))
         .collect();
+    rows_by_priority(wrapped, area.height)
+}
+
+/// [`by_priority`] for entries already cut into rows (an entry goes or stays whole):
+/// the rows of the entries that fit in `height` rows.
+pub(crate) fn rows_by_priority<'a>(
+    mut wrapped: Vec<(u8, Vec<Line<'a>>)>,
+    height: u16,
+) -> Vec<Line<'a>> {
     let rows = |w: &[(u8, Vec<Line>)]| w.iter().map(|(_, l)| l.len()).sum::<usize>();
-    while rows(&wrapped) > usize::from(area.height) && !wrapped.is_empty() {
+    while rows(&wrapped) > usize::from(height) && !wrapped.is_empty() {
         let lowest = wrapped.iter().map(|w| w.0).min().unwrap_or(0);
         let i = wrapped.iter().rposition(|w| w.0 == lowest).unwrap_or(0);
         wrapped.remove(i);
