@@ -107,13 +107,6 @@ impl Engine {
             impacts: limit(h0.ledger.impacts, hm.ledger.impacts),
             rolling_resistance: limit(h0.ledger.rolling_resistance, hm.ledger.rolling_resistance),
         };
-        let ratio = (h0.cycle / self.history[n - 2].cycle).min(1.0);
-        self.series = Some(SeriesSum {
-            from: self.t,
-            cycles: m,
-            ratio,
-            by_budget,
-        });
         // A limit with more kinetic energy than the pair has now (beyond rounding) is no
         // limit of this series: its cycles only looked geometric (rolling resistance
         // changes the speeds over a long tail). The impacts are then resolved on.
@@ -122,6 +115,15 @@ impl Engine {
         if self.kinetic(&state) > kinetic_now + 1e-9 * scale || self.stops_on_the_way(&h0, speed) {
             return false;
         }
+        // Recorded only once the tail is taken: a refused tail is resolved on, and the
+        // solution must not describe a sum that never happened.
+        let ratio = (h0.cycle / self.history[n - 2].cycle).min(1.0);
+        self.series = Some(SeriesSum {
+            from: self.t,
+            cycles: m,
+            ratio,
+            by_budget,
+        });
         self.finish_series(remaining, state, angle, ledger, by_budget);
         true
     }
