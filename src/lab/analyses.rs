@@ -45,12 +45,19 @@ impl Lab {
     }
 
     fn request_fits(&mut self) {
-        let Some(m) = self.measured_arc().filter(|_| self.want_fits) else {
+        let Some(m) = self.measured_arc() else {
+            // No data (dropped, or a preset without any): a fit of data no longer
+            // shown is forgotten, so it is neither drawn nor applied.
+            self.fits.cancel();
+            self.position_fit.cancel();
+            return;
+        };
+        if !self.want_fits {
             // Leaving the Fit view stops a running fit; a finished one is kept.
             self.fits.stop_running();
             self.position_fit.stop_running();
             return;
-        };
+        }
         let (scene, window) = (self.scene, self.fit_window);
         if m.x.is_some() {
             let m = m.clone();

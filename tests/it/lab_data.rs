@@ -291,3 +291,24 @@ fn the_students_file_is_named_on_the_chart_where_there_is_room() {
     .unwrap();
     assert!(paper.contains("left ball  [b] switches"), "{paper}");
 }
+
+/// Dropping the data forgets their fit: it is neither shown nor applied afterwards
+/// (a new-user trial applied μ_k of data it had just dropped).
+#[test]
+fn a_fit_of_dropped_data_is_not_applied() {
+    let out = groovelab(&[
+        "render",
+        "--preset",
+        "steel-and-glass",
+        "--data",
+        "data/gs-b4.9cm.csv",
+        "--keys",
+        "f D a",
+        "--size",
+        "120x40",
+    ]);
+    assert!(out.status.success());
+    let screen = String::from_utf8(out.stdout).unwrap();
+    assert!(!screen.contains("applied the fit"), "{screen}");
+    assert!(screen.contains("no fit to apply"), "{screen}");
+}
