@@ -328,7 +328,7 @@ fn scene_lines(out: &mut String, preset: &Preset, sc: &Scene, derived: &Derived)
 fn story_lines(out: &mut String, now: &Resolved) {
     let (solution, derived, story) = (&now.solution, &now.derived, &now.story);
     // What this run does, beside the paper's criterion above.
-    let outcome = Summary::of(solution).outcome;
+    let outcome = now.summary.outcome;
     let _ = writeln!(
         out,
         "outcome  {}: {}{}",

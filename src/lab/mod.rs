@@ -261,6 +261,8 @@ impl Lab {
                     None,
                 )
                 .t_end,
+                derived: self.derived,
+                summary: self.summary,
             }),
         };
         self.rebuild().expect("pinning does not change the scene");

@@ -7,7 +7,7 @@
 
 use std::sync::Arc;
 
-use crate::physics::derived::Derived;
+use crate::physics::derived::{Derived, Summary};
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::Solution;
 use crate::physics::story::{self, After, Verdict};
@@ -28,6 +28,9 @@ pub struct Pinned {
     pub label: String,
     /// Where its automatic span ends (the current automatic span reaches it too).
     pub auto_end: f64,
+    /// Its closed-form values and headline numbers, made once at pinning.
+    pub derived: Derived,
+    pub summary: Summary,
 }
 
 /// A point of a chart (t, value).
@@ -42,6 +45,8 @@ pub struct Resolved {
     pub span_end: SpanEnd,
     pub solution: Arc<Solution>,
     pub derived: Derived,
+    /// The solution's headline numbers (outcome, impacts, T∞, energies).
+    pub summary: Summary,
     /// The x range (m) the balls (and a pinned run's) cover over the span.
     pub extent: (f64, f64),
     /// The measured series in this scene (`measured::for_scene`).
@@ -90,6 +95,7 @@ impl Resolved {
             data_rms: m.map(|m| data_rms(&solution, m)),
             points: m.map(|m| Arc::new(MeasuredPoints::of(m, scene.radius))),
             story: Story::of(&solution, &derived, rest_band),
+            summary: Summary::of(&solution),
             pinned_changes: pinned
                 .map(|p| changes(p, &scene, &span))
                 .unwrap_or_default(),

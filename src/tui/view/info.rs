@@ -8,8 +8,6 @@ use ratatui::widgets::Widget;
 
 use super::panel::{Ranked, block, by_priority, draw_lines};
 use crate::physics::derived::{Derived, Summary};
-use crate::physics::scene::Scene;
-use crate::physics::solution::Solution;
 use crate::physics::story::After;
 use crate::settings::units::{Dimension, show, significant};
 use crate::tui::app::App;
@@ -94,9 +92,8 @@ fn regime_lines(app: &App, width: u16, theme: &Theme) -> Ranked<'static> {
 
 /// A run's key numbers for the A/B table: outcome, t' and v' of the left ball (when
 /// the closed forms hold), impacts, T∞, the share of the energy lost by the end.
-fn key_numbers(scene: &Scene, sol: &Solution, theme: &Theme) -> [String; 6] {
-    let summary = Summary::of(sol);
-    let after = Derived::of(scene).left_after_impact;
+fn key_numbers(derived: &Derived, summary: &Summary, theme: &Theme) -> [String; 6] {
+    let after = derived.left_after_impact;
     let none = || "-".to_string();
     let lost = summary.energy_end.lost.total() / summary.energy_end.total();
     [
@@ -122,8 +119,8 @@ fn ab_lines(app: &App, width: u16, theme: &Theme) -> Ranked<'static> {
         return Vec::new();
     };
     let g = theme.glyphs;
-    let a = key_numbers(&pinned.scene, &pinned.solution, theme);
-    let b = key_numbers(&app.lab.scene, &app.lab.solution, theme);
+    let a = key_numbers(&pinned.derived, &pinned.summary, theme);
+    let b = key_numbers(&app.lab.derived, &app.lab.summary, theme);
     let names = [
         "outcome".to_string(),
         "t'".to_string(),

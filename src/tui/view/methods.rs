@@ -9,7 +9,6 @@ use ratatui::widgets::Widget;
 use super::panel::{Ranked, block, by_priority, draw_lines};
 use crate::lab::jobs::State;
 use crate::methods::Method;
-use crate::physics::derived::Summary;
 use crate::settings::units::{Dimension, fit_number, show};
 use crate::study::compare::{Row, RunStatus, fitted_order, outcome_until};
 use crate::tui::app::App;
@@ -238,10 +237,7 @@ fn legend_lines(app: &App, rows: &[Row], marks: bool, theme: &Theme) -> Ranked<'
     let cut = rows.iter().find_map(|r| r.cut);
     let (outcome, impacts) = match cut {
         Some(end) => outcome_until(&app.lab.solution, end),
-        None => {
-            let exact = Summary::of(&app.lab.solution);
-            (exact.outcome, exact.impacts)
-        }
+        None => (app.lab.summary.outcome, app.lab.summary.impacts),
     };
     if marks {
         lines.push((
