@@ -49,6 +49,35 @@ fn null_undetermined(fit: &mut serde_json::Value) {
     }
 }
 
+/// The times `fit` reports, s, rounded to the microsecond: they are frame times (and
+/// differences of them), whose meaning ends far above the last bits of a float
+/// (`0.17084999999999997` is the frame at 0.17085 s).
+fn round_times(json: &mut serde_json::Value) {
+    let round = |v: &mut serde_json::Value| {
+        if let Some(x) = v.as_f64() {
+            *v = serde_json::json!((x * 1e6).round() / 1e6);
+        }
+    };
+    for (part, key) in [
+        ("line_fit", "from"),
+        ("line_fit", "to"),
+        ("track", "impact_t"),
+        ("track", "half_window"),
+        ("track", "half_window_widened_from"),
+    ] {
+        if let Some(v) = json.get_mut(part).and_then(|p| p.get_mut(key)) {
+            round(v);
+        }
+    }
+    if let Some(later) = json
+        .get_mut("track")
+        .and_then(|t| t.get_mut("later_impacts"))
+        .and_then(|l| l.as_array_mut())
+    {
+        later.iter_mut().for_each(round);
+    }
+}
+
 /// A value the data cannot give (JSON null), and why.
 #[derive(Serialize)]
 struct NotMeasured {
@@ -141,6 +170,7 @@ pub fn run(
                     null_undetermined(fit);
                 }
             }
+            round_times(&mut json);
             let mut s = serde_json::to_string_pretty(&json).expect("plain data serializes");
             s.push('\n');
             s
@@ -257,6 +287,18 @@ fn line_fit_lines(out: &mut String, scene: &Scene, l: &LineFit, paper_data: bool
         "line fits {over}, t = {:.3} … {:.3} s ({} frames{hint})",
         l.from, l.to, l.points
     );
+    // A window reaching past the data is cut to them: said, not done quietly.
+    for (flag, asked, end) in l.cut_to_data() {
+        let _ = writeln!(
+            out,
+            "  (--{flag} {} s lies {} the data, which {} at t = {} s: the window {} there)",
+            significant(asked, 4),
+            if flag == "from" { "before" } else { "past" },
+            if flag == "from" { "start" } else { "end" },
+            format!("{end:.3}"),
+            if flag == "from" { "starts" } else { "ends" },
+        );
+    }
     let _ = writeln!(
         out,
         "{:<12} {:>14} {:>9} {:>11} {:>14} {:>9} {:>11}",
@@ -533,7 +575,7 @@ fn models_table(models: &[Candidate], positions: bool) -> String {
     let mut out = String::new();
     let _ = writeln!(
         out,
-        "\nwhich model the data support (fitted to the {}; AIC and BIC, lower is better; the simplest model within 2 of the lowest BIC whose values are all determined is named):",
+        "\nwhich model the data support (fitted to the {}; AIC and BIC, lower is better, listed by BIC, lowest first; the simplest model within 2 of the lowest BIC whose values are all determined is named):",
         if positions { "positions" } else { "velocities" }
     );
     // What AIC and BIC count as n: the points the residuals are worth.
