@@ -33,6 +33,20 @@ struct FitJson<'a> {
     not_measured: Vec<NotMeasured>,
 }
 
+/// `fit --format json`: values the data do not determine null, times rounded.
+fn json_text(fit: FitJson) -> String {
+    let mut json = serde_json::to_value(fit).expect("plain data serializes");
+    for fit in ["model_fit", "position_fit"] {
+        if let Some(fit) = json.get_mut(fit) {
+            null_undetermined(fit);
+        }
+    }
+    round_times(&mut json);
+    let mut s = serde_json::to_string_pretty(&json).expect("plain data serializes");
+    s.push('\n');
+    s
+}
+
 /// A model fit's values that the data do not determine (listed in its
 /// `not_identified`, with why) are `null`, not a number that reads as fitted.
 fn null_undetermined(fit: &mut serde_json::Value) {
@@ -156,25 +170,13 @@ pub fn run(
     let fits = fits.map_err(cancelled)?;
     let position = position.transpose().map_err(cancelled)?;
     let text = match args.format {
-        FitFormat::Json => {
-            let mut json = serde_json::to_value(FitJson {
-                scene: &scene,
-                fits: &fits,
-                position_fit: position.as_ref(),
-                track: found.as_ref(),
-                not_measured: not_measured(&fits),
-            })
-            .expect("plain data serializes");
-            for fit in ["model_fit", "position_fit"] {
-                if let Some(fit) = json.get_mut(fit) {
-                    null_undetermined(fit);
-                }
-            }
-            round_times(&mut json);
-            let mut s = serde_json::to_string_pretty(&json).expect("plain data serializes");
-            s.push('\n');
-            s
-        }
+        FitFormat::Json => json_text(FitJson {
+            scene: &scene,
+            fits: &fits,
+            position_fit: position.as_ref(),
+            track: found.as_ref(),
+            not_measured: not_measured(&fits),
+        }),
         FitFormat::Table => {
             let own = data.data.is_empty();
             let mut out = scene_line(preset, typed, scene_args, data, &scene);
@@ -289,14 +291,15 @@ fn line_fit_lines(out: &mut String, scene: &Scene, l: &LineFit, paper_data: bool
     );
     // A window reaching past the data is cut to them: said, not done quietly.
     for (flag, asked, end) in l.cut_to_data() {
+        let (lies, data, window) = if flag == "from" {
+            ("before", "start", "starts")
+        } else {
+            ("past", "end", "ends")
+        };
         let _ = writeln!(
             out,
-            "  (--{flag} {} s lies {} the data, which {} at t = {} s: the window {} there)",
+            "  (--{flag} {} s lies {lies} the data, which {data} at t = {end:.3} s: the window {window} there)",
             significant(asked, 4),
-            if flag == "from" { "before" } else { "past" },
-            if flag == "from" { "start" } else { "end" },
-            format!("{end:.3}"),
-            if flag == "from" { "starts" } else { "ends" },
         );
     }
     let _ = writeln!(
