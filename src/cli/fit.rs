@@ -101,20 +101,7 @@ pub fn run(
         preset: preset.name.clone(),
     })?;
     let found = lab.series().and_then(|s| s.found().cloned());
-    // Each value once: a repeated one (`--free mu,mu`) is refused, not quietly
-    // dropped (it once made the normal matrix singular and the uncertainty NaN).
-    let mut free: Vec<Free> = Vec::new();
-    for f in args.free.clone().unwrap_or_else(|| vec![Free::Mu]) {
-        if free.contains(&f) {
-            return Err(BadValue::FreeTwice { name: f.name() }.into());
-        }
-        free.push(f);
-    }
-    if let (Some(a), Some(b)) = (args.from, args.to)
-        && a >= b
-    {
-        return Err(BadValue::FitWindowBackwards { from: a, to: b }.into());
-    }
+    let free = free_values(args)?;
     // A series long enough to take a noticeable time shows a counter.
     let bar = super::progress::Bar::counter("model evaluations", m.t.len() > 5_000);
     let fits = fit::fit_all(&scene, m, (args.from, args.to), &free, &bar);
@@ -177,6 +164,25 @@ pub fn run(
             Ok(format!("wrote {}\n", path.display()))
         }
     }
+}
+
+/// The values `--free` sets free, each once (a repeated one, `--free mu,mu`, is
+/// refused, not quietly dropped: it once made the normal matrix singular and the
+/// uncertainty NaN), after checking that the window `--from`/`--to` runs forward.
+fn free_values(args: &FitArgs) -> Result<Vec<Free>, CliError> {
+    if let (Some(a), Some(b)) = (args.from, args.to)
+        && a >= b
+    {
+        return Err(BadValue::FitWindowBackwards { from: a, to: b }.into());
+    }
+    let mut free: Vec<Free> = Vec::new();
+    for f in args.free.clone().unwrap_or_else(|| vec![Free::Mu]) {
+        if free.contains(&f) {
+            return Err(BadValue::FreeTwice { name: f.name() }.into());
+        }
+        free.push(f);
+    }
+    Ok(free)
 }
 
 /// The scene a fit used, and where it came from: the first line of the table, and
