@@ -255,6 +255,12 @@ pub enum BadValue {
     #[error("{} {from} s must be before {} {to} s", Flag("from"), Flag("to"))]
     FitWindowBackwards { from: f64, to: f64 },
     #[error(
+        "{} {} is not after the first impact, allowed t > 0 s (the data's times count from the impact; the line fits are of the sliding after it)",
+        Flag(flag),
+        show(*value, Dimension::Time)
+    )]
+    FitWindowBeforeImpact { flag: &'static str, value: f64 },
+    #[error(
         "{} {} is outside the simulated span, allowed {} … {}",
         Flag("at"),
         show(*at, Dimension::Time),
@@ -317,7 +323,7 @@ mod messages {
     /// as they did when they were built as strings at each site.
     #[test]
     fn typed_errors_print_the_messages_of_before() {
-        let cases: [(CliError, &str); 5] = [
+        let cases: [(CliError, &str); 6] = [
             (
                 BadValue::OutOfRange {
                     flag: Flag("dt"),
@@ -346,6 +352,14 @@ mod messages {
             (
                 BadValue::FitWindowBackwards { from: 1.0, to: 0.5 }.into(),
                 "--from 1 s must be before --to 0.5 s",
+            ),
+            (
+                BadValue::FitWindowBeforeImpact {
+                    flag: "from",
+                    value: -0.15,
+                }
+                .into(),
+                "--from -0.15 s is not after the first impact, allowed t > 0 s (the data's times count from the impact; the line fits are of the sliding after it)",
             ),
             (
                 Usage::WithoutData {

@@ -200,8 +200,15 @@ pub fn run(
 
 /// The values `--free` sets free, each once (a repeated one, `--free mu,mu`, is
 /// refused, not quietly dropped: it once made the normal matrix singular and the
-/// uncertainty NaN), after checking that the window `--from`/`--to` runs forward.
+/// uncertainty NaN), after checking that the window `--from`/`--to` lies after the
+/// impact and runs forward.
 fn free_values(args: &FitArgs) -> Result<Vec<Free>, CliError> {
+    // A window reaching back over the impact fits a line across the jump.
+    for (flag, value) in [("from", args.from), ("to", args.to)] {
+        if let Some(value) = value.filter(|v| *v <= 0.0) {
+            return Err(BadValue::FitWindowBeforeImpact { flag, value }.into());
+        }
+    }
     if let (Some(a), Some(b)) = (args.from, args.to)
         && a >= b
     {

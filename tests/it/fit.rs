@@ -1210,3 +1210,26 @@ fn the_models_are_compared_on_the_same_frames() {
         );
     }
 }
+
+/// A line-fit window reaching back over the impact fits a line across the jump (the
+/// trial: `--from -1` gave μ_k,cm 0.322 for a true 0.22): refused, one line, exit 2.
+#[test]
+fn a_window_before_the_impact_is_refused() {
+    for args in [
+        ["--from", "-1", "--to", "0.1"],
+        ["--from", "0", "--to", "0.1"],
+    ] {
+        let mut all = vec!["fit", "--preset", "paper-b4.9"];
+        all.extend(args);
+        let out = groovelab(&all);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{err}");
+        assert!(
+            err.starts_with("error: --from") && err.contains("after the first impact"),
+            "{err}"
+        );
+        assert_eq!(err.lines().count(), 1, "{err}");
+    }
+    let out = groovelab(&["fit", "--preset", "paper-b4.9", "--to", "-0.2"]);
+    assert!(String::from_utf8_lossy(&out.stderr).starts_with("error: --to -0.2 s is not after"));
+}
