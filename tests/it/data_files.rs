@@ -548,3 +548,43 @@ fn fit_json_has_one_entry_per_model_with_aic_and_bic() {
             && table.contains("the data support: ")
     );
 }
+
+/// Two plausibility checks on a track (the trial): the same file given as centre and
+/// as mark puts a "rim mark" 0.0 mm from the centre, and metres read as mm make a
+/// ball approach at 0.6 mm/s; both passed every check and fitted noise. Refused,
+/// one line, exit 2.
+#[test]
+fn a_mark_at_the_centre_and_metres_read_as_mm_are_refused() {
+    let track = video_track(5);
+    let dir = scratch("implausible");
+    let ball = dir.join("ball.txt");
+    std::fs::write(
+        &ball,
+        tracker_export("mass A", &track.t, &track.x, &track.y),
+    )
+    .unwrap();
+    let f = ball.to_str().unwrap();
+    let (ok, _, err) = groovelab(&["fit", "--preset", "paper-b4.9", "--data", f, "--data", f]);
+    assert!(
+        !ok && err.contains("rim mark lies 0.00 mm from the centre"),
+        "{err}"
+    );
+    assert_eq!(err.lines().count(), 1, "{err}");
+    let (ok, _, err) = groovelab(&[
+        "fit",
+        "--preset",
+        "paper-b4.9",
+        "--data",
+        f,
+        "--length-unit",
+        "mm",
+    ]);
+    assert!(
+        !ok && err.contains("slower than any ball") && err.contains("--length-unit"),
+        "{err}"
+    );
+    assert_eq!(err.lines().count(), 1, "{err}");
+    // Read as metres (as written) it fits.
+    let (ok, _, err) = groovelab(&["fit", "--preset", "paper-b4.9", "--data", f]);
+    assert!(ok, "{err}");
+}

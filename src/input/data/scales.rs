@@ -11,6 +11,11 @@ use crate::study::measured::Track;
 pub const LONGEST_FRAME: f64 = 1.0;
 pub const FASTEST_BALL: f64 = 10.0;
 
+/// The smallest speed (m/s) a tracked ball in this experiment shows between frames
+/// (its approach, or the tracker's jitter alone, is far above it): a file below it is
+/// in a length unit too small (metres read as mm).
+pub const SLOWEST_BALL: f64 = 1e-3;
+
 /// A speed a ball in this experiment typically has (m/s): of the length units a file
 /// may be in, the one that brings the numbers nearest to it is named.
 const TYPICAL_SPEED: f64 = 0.5;
@@ -57,8 +62,9 @@ pub struct Given {
 
 /// A position track read in SI where no unit was given: refused when its frames are a
 /// second or more apart (ms, not s), or its ball moves at 10 m/s or more (cm or mm,
-/// not m; or, with units given, units that do not fit). The message says what the
-/// numbers look like and names the option.
+/// not m; or, with units given, units that do not fit); or below 1 mm/s in any unit
+/// (metres read as mm). The message says what the numbers look like and names the
+/// option.
 pub fn check_track(track: &Track, given: Given) -> Result<(), String> {
     let frame = frame_spacing(&track.t);
     if !given.time && frame >= LONGEST_FRAME {
@@ -72,6 +78,17 @@ pub fn check_track(track: &Track, given: Given) -> Result<(), String> {
     let Some(speed) = approach_speed(track) else {
         return Ok(());
     };
+    if speed < SLOWEST_BALL {
+        return Err(format!(
+            "read in {} the ball approaches at {} m/s, slower than any ball in a groove (at least {SLOWEST_BALL} m/s): check the length unit (--length-unit, or the header's)",
+            if given.length {
+                "the length unit given"
+            } else {
+                "metres"
+            },
+            significant(speed, 3),
+        ));
+    }
     if speed < FASTEST_BALL {
         return Ok(());
     }
@@ -130,6 +147,16 @@ mod tests {
             length: false,
         };
         assert!(check_track(&track(0.6), none).is_ok());
+        // Metres read as mm: 0.6 mm/s.
+        let mm = Given {
+            time: false,
+            length: true,
+        };
+        let e = check_track(&track(0.6e-3), mm).unwrap_err();
+        assert!(
+            e.contains("slower than any ball") && e.contains("--length-unit"),
+            "{e}"
+        );
         // Mostly the slow roll after the impact: the approach still decides.
         let e = check_track(&track(60.0), none).unwrap_err();
         assert!(
