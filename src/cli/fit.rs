@@ -11,7 +11,7 @@ use crate::lab::Lab;
 use crate::output::write_atomically;
 use crate::physics::scene::Scene;
 use crate::settings::params::Key;
-use crate::settings::units::{Dimension, show, significant};
+use crate::settings::units::{Dimension, show, significant, with_uncertainty};
 use crate::study::fit::{self, Candidate, Fits, Free, LineFit, ModelFit};
 use crate::study::measured::Found;
 
@@ -242,7 +242,13 @@ fn scene_line(lab: &Lab, typed: &SceneArgs, used: &SceneArgs, data: &DataArgs) -
     let file = data.data.first().map(|p| p.display().to_string());
     let mut sources = Vec::new();
     if typed.preset.is_some() || !every_scene_value(&all) {
-        sources.push(format!("preset {}", preset.name));
+        // Named as it came: the user's `--preset`, or the default under the options.
+        let default = if typed.preset.is_none() {
+            "default "
+        } else {
+            ""
+        };
+        sources.push(format!("{default}preset {}", preset.name));
     }
     match (&file, from_file.is_empty(), sources.is_empty()) {
         (Some(file), false, true) => sources.push(format!("from {file}'s header")),
@@ -253,7 +259,10 @@ fn scene_line(lab: &Lab, typed: &SceneArgs, used: &SceneArgs, data: &DataArgs) -
         _ => {}
     }
     if !flags.is_empty() {
-        let flags: Vec<String> = flags
+        // As typed: `--mass`, not the `--mass-left --mass-right` it sets.
+        let flags: Vec<String> = typed
+            .values
+            .rows()
             .iter()
             .map(|k| format!("--{}", k.param().flag))
             .collect();
@@ -327,17 +336,20 @@ fn line_fit_lines(out: &mut String, scene: &Scene, l: &LineFit, paper_data: bool
     );
     // Without a rim mark a_t and μ_k,t are not measured: said in words, never NaN.
     let (a_t, mu_t) = if l.a_t.is_finite() && l.mu_t.is_finite() {
-        (
-            format!("{:>6.2} ± {:<5.2}", l.a_t, l.a_t_se),
-            format!("{:.3}", l.mu_t),
-        )
+        (pm_column(l.a_t, l.a_t_se), format!("{:.3}", l.mu_t))
     } else {
         ("not measured".to_string(), "–".to_string())
     };
     let _ = writeln!(
         out,
-        "{:<12} {:>6.2} ± {:<5.2} {:>9.3} {:>11.3} {:>14} {:>9} {:>11.4}",
-        "this fit", l.a_cm, l.a_cm_se, l.mu_cm, l.f_net, a_t, mu_t, l.tau_net
+        "{:<12} {:>14} {:>9.3} {:>11.3} {:>14} {:>9} {:>11.4}",
+        "this fit",
+        pm_column(l.a_cm, l.a_cm_se),
+        l.mu_cm,
+        l.f_net,
+        a_t,
+        mu_t,
+        l.tau_net
     );
     if let Some(p) = fit::paper_row(scene.width).filter(|_| paper_data) {
         let _ = writeln!(
@@ -354,6 +366,18 @@ fn line_fit_lines(out: &mut String, scene: &Scene, l: &LineFit, paper_data: bool
             );
         }
     }
+}
+
+/// A fitted value and its ± (4 places, as the fits print; [`with_uncertainty`]).
+fn pm(v: f64, e: f64) -> String {
+    let (v, e) = with_uncertainty(v, e, 4);
+    format!("{v} ± {e}")
+}
+
+/// An acceleration and its ± in the line fits' 14-character column (2 places).
+fn pm_column(v: f64, e: f64) -> String {
+    let (v, e) = with_uncertainty(v, e, 2);
+    format!("{v:>6} ± {e:<5}")
 }
 
 /// The model fit of a series: what it was fitted to, the fitted values with their
@@ -381,7 +405,7 @@ fn model_fit_lines(out: &mut String, mf: &ModelFit) {
     let value = |name: &str, v: f64, se: Option<f64>, unit: &str| match (mf.undetermined(name), se)
     {
         (Some(n), _) => format!("not determined ({})", n.reason),
-        (None, Some(se)) => format!("{v:.4} ± {:.4}{unit}", 2.0 * se),
+        (None, Some(se)) => format!("{}{unit}", pm(v, 2.0 * se)),
         (None, None) => format!("{v:.4}{unit}"),
     };
     let mu_se = Some(mf.mu_se).filter(|s| s.is_finite());
@@ -532,7 +556,7 @@ fn mu_cell(m: &ModelFit) -> String {
     if m.undetermined("mu").is_some() {
         "not determined".to_string()
     } else {
-        format!("{:.4} ± {:.4}", m.mu, 2.0 * m.mu_se)
+        pm(m.mu, 2.0 * m.mu_se)
     }
 }
 
@@ -542,7 +566,7 @@ fn mu_cell(m: &ModelFit) -> String {
 fn cell(m: &ModelFit, name: &str, v: f64, se: Option<f64>) -> String {
     match se {
         _ if m.undetermined(name).is_some() => "not determined".to_string(),
-        Some(se) => format!("{v:.4} ± {:.4}", 2.0 * se),
+        Some(se) => pm(v, 2.0 * se),
         None => format!("{v:.4}"),
     }
 }
@@ -639,7 +663,7 @@ fn models_table(models: &[Candidate], positions: bool) -> String {
                 let (name, unit) = symbol(e.parameter);
                 match (&e.not_determined, e.se) {
                     (Some(_), _) => format!("{name} not determined"),
-                    (None, Some(se)) => format!("{name} {:.4} ± {:.4}{unit}", e.value, 2.0 * se),
+                    (None, Some(se)) => format!("{name} {}{unit}", pm(e.value, 2.0 * se)),
                     (None, None) => format!("{name} {:.4}{unit}", e.value),
                 }
             })
