@@ -325,14 +325,14 @@ const MARK_SCATTERS: f64 = 10.0;
 
 /// A tracked mark within [`MARK_SCATTERS`] position scatters of the centre is no rim
 /// mark: refused, saying how near.
-fn mark_off_the_centre(spin: Option<&Spin>, scatter: f64) -> Result<(), TrackError> {
+fn mark_off_the_centre(spin: Option<Spin>, scatter: f64) -> Result<Option<Spin>, TrackError> {
     match spin {
         Some(s) if s.radius < MARK_SCATTERS * scatter => Err(TrackError(format!(
             "the rim mark lies {:.2} mm from the centre, within {MARK_SCATTERS}× the position scatter ({:.2} mm): its angle would be noise; track a mark near the rim (the same file given for centre and mark?)",
             1e3 * s.radius,
             1e3 * scatter
         ))),
-        _ => Ok(()),
+        spin => Ok(spin),
     }
 }
 
@@ -386,8 +386,7 @@ pub fn derive(
     let approach = fit::line(&ts[..before], &xs[..before]);
     let cuts: Vec<f64> = kinks.iter().map(|k| k.t).collect();
     let dx = derivatives(&ts, &xs, n, &cuts, sigma);
-    let spin = spin_of(track, &rows, dir, n, &cuts);
-    mark_off_the_centre(spin.as_ref(), sigma)?;
+    let spin = mark_off_the_centre(spin_of(track, &rows, dir, n, &cuts), sigma)?;
     let spin_sign = spin
         .as_ref()
         .map_or(1.0, |s| s.sign(&ts, &dx, first.t, dir));
