@@ -10,7 +10,7 @@ use super::open::{lab, scene_of_data};
 use crate::output::write_atomically;
 use crate::physics::scene::Scene;
 use crate::settings::params::Key;
-use crate::settings::units::{Dimension, show, significant};
+use crate::settings::units::{Dimension, show, show_exact, significant};
 use crate::study::fit::{self, Candidate, Fits, Free, LineFit, ModelFit};
 use crate::study::measured::Found;
 use crate::study::preset::Preset;
@@ -254,7 +254,8 @@ fn scene_line(
     format!(
         "scene ({source}): R = {}, b = {}, m = {} / {}, v0 = {} / {}, μ_k = {} (start), e = {}\n",
         len(scene.radius),
-        len(scene.width),
+        // Every digit given: b = 5.4999 cm at four digits reads 5.5 cm = 2R, out of range.
+        show_exact(scene.width, Dimension::Length),
         show(scene.left.mass, Dimension::Mass),
         show(scene.right.mass, Dimension::Mass),
         show(scene.left.v0, Dimension::Speed),
