@@ -309,10 +309,41 @@ pub(super) fn residuals(
 }
 
 /// Mean squared residual of `scene`, over the frames away from its own impacts.
-fn mean_cost(scene: &Scene, m: &Measured, target: Target, evals: &Evals) -> f64 {
+pub(super) fn mean_cost(scene: &Scene, m: &Measured, target: Target, evals: &Evals) -> f64 {
     let idx = fit_points(m, scene, target, evals);
     let r = residuals(scene, m, &idx, target, evals);
     r.iter().map(|x| x * x).sum::<f64>() / r.len().max(1) as f64
+}
+
+/// `n + 1` values of μ spaced evenly in log from 0.01 to 1.
+fn mu_grid(n: u32) -> Vec<f64> {
+    (0..=n)
+        .map(|k| 0.01 * 100f64.powf(f64::from(k) / f64::from(n)))
+        .collect()
+}
+
+/// The values `p` with the μ (at `i`) of a coarse scan (21 values) that fits best, and
+/// their [`mean_cost`]: to choose among starts of a fit.
+pub(super) fn coarse_mu(
+    scene: &Scene,
+    m: &Measured,
+    free: &[Free],
+    p: &[f64],
+    i: usize,
+    target: Target,
+    evals: &Evals,
+) -> Result<(Vec<f64>, f64), FitError> {
+    let mut best = (p.to_vec(), f64::INFINITY);
+    for mu in mu_grid(20) {
+        evals.next()?;
+        let mut q = p.to_vec();
+        q[i] = mu;
+        let cost = mean_cost(&with(scene, free, &q), m, target, evals);
+        if cost < best.1 {
+            best = (q, cost);
+        }
+    }
+    Ok(best)
 }
 
 /// The μ that minimises [`mean_cost`]: a log-spaced scan of 0.01 … 1, then golden
@@ -332,9 +363,7 @@ pub(super) fn scan_mu(
         q[i] = mu;
         Ok(mean_cost(&with(scene, free, &q), m, target, evals))
     };
-    let grid: Vec<f64> = (0..=80)
-        .map(|k| 0.01 * 100f64.powf(k as f64 / 80.0))
-        .collect();
+    let grid = mu_grid(80);
     let costs = grid
         .iter()
         .map(|&mu| cost(mu))

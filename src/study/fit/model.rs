@@ -13,8 +13,8 @@ use crate::study::Progress;
 use crate::study::measured::series::{Measured, Stencils};
 
 use super::least_squares::{
-    Target, fit_points, labelled_residuals, least_squares, normal_matrix, nuisance, residuals,
-    residuals_of, scan_mu, smooth_jacobian, with,
+    Target, coarse_mu, fit_points, labelled_residuals, least_squares, mean_cost, normal_matrix,
+    nuisance, residuals_of, scan_mu, smooth_jacobian, with,
 };
 use super::problem::{Evals, FitError, Free};
 use super::regime::{data_scatter, observed_after, rest_band, sliding_end};
@@ -283,30 +283,40 @@ fn best_values(
     if within.is_some() {
         return refined(scene, m, free, target, p, &frames, evals);
     }
-    // From each start (the scene's values, and other values of c_rr: from c_rr = 0 a
-    // μ_k that also brakes the rolling fits nearly as well, and Levenberg–Marquardt
-    // stays on the edge — seen with c_rr = 0.02 and 0.05 in the data), the best μ
-    // first, by a global scan and golden-section search (the cost is not smooth where
-    // impacts move past data points, and local steps get caught there), then every
-    // free value together; the start that fits best is kept.
-    let mut best: Option<(f64, Vec<f64>, Vec<usize>)> = None;
-    for mut p in starts(free, &p) {
-        if let Some(i) = free.iter().position(|f| *f == Free::Mu) {
-            p[i] = scan_mu(scene, m, free, &p, i, target, evals)?;
+    // From the start that fits best (the scene's values, or others of c_rr: from
+    // c_rr = 0 a μ_k that also brakes the rolling fits nearly as well, and
+    // Levenberg–Marquardt stays on the edge — seen with c_rr = 0.02 and 0.05 in the
+    // data), each tried with its best μ on a coarse scan; then μ by a global scan
+    // and golden-section search (the cost is not smooth where impacts move past data
+    // points, and local steps get caught there), then every free value together.
+    let mu = free.iter().position(|f| *f == Free::Mu);
+    let mut p = p;
+    let tries = starts(free, &p);
+    if tries.len() > 1 {
+        let mut best = (f64::INFINITY, p.clone());
+        for q in tries {
+            let (q, cost) = match mu {
+                Some(i) => coarse_mu(scene, m, free, &q, i, target, evals)?,
+                None => {
+                    evals.next()?;
+                    let cost = mean_cost(&with(scene, free, &q), m, target, evals);
+                    (q, cost)
+                }
+            };
+            if cost < best.0 {
+                best = (cost, q);
+            }
         }
-        let (p, idx) = refined(scene, m, free, target, p, &frames, evals)?;
-        let r = residuals(&with(scene, free, &p), m, &idx, target, evals);
-        let cost = r.iter().map(|x| x * x).sum::<f64>() / r.len().max(1) as f64;
-        if best.as_ref().is_none_or(|(c, _, _)| cost < *c) {
-            best = Some((cost, p, idx));
-        }
+        p = best.1;
     }
-    let (_, p, idx) = best.expect("at least the scene's start");
-    Ok((p, idx))
+    if let Some(i) = mu {
+        p[i] = scan_mu(scene, m, free, &p, i, target, evals)?;
+    }
+    refined(scene, m, free, target, p, &frames, evals)
 }
 
-/// Other values of c_rr a fit starts from besides the scene's: a tenth of a percent
-/// to a tenth, a factor of about 3 apart (a rolling ball's c_rr lies in 0.001 … 0.05).
+/// Other values of c_rr a fit may start from besides the scene's: 0.003 to 0.1, a
+/// factor of about 3 apart (a rolling ball's c_rr lies in 0.001 … 0.05).
 const ROLLING_RESISTANCE_STARTS: [f64; 4] = [0.003, 0.01, 0.03, 0.1];
 
 /// The starts of a fit of `free` from the values `p`: `p` itself, and with c_rr free
