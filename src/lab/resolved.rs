@@ -14,8 +14,10 @@ use crate::physics::story::{self, After, Verdict};
 use crate::settings::params::{Key, PARAMS};
 use crate::settings::spec::SceneError;
 use crate::settings::units::{Dimension, show};
-use crate::study::measured::{self, InScene, Measured, Series};
+use crate::study::fit;
+use crate::study::measured::{self, InScene, Measured};
 
+use super::data::{Groove, InUse, OtherGroove};
 use super::settings::Settings;
 use super::span::{SpanEnd, solve_shown};
 
@@ -56,8 +58,14 @@ pub struct Resolved {
     pub data_rms: Option<(f64, Option<f64>)>,
     /// The measured series' rest band (speeds within it cannot be told from rest).
     pub rest_band: Option<f64>,
+    /// The data were measured in another groove than this scene's: said wherever
+    /// they are shown.
+    pub other_groove: Option<OtherGroove>,
     /// The measured points as the charts draw them.
     pub points: Option<Arc<MeasuredPoints>>,
+    /// A position track's centre where the model's left ball would be, per frame (m,
+    /// NaN outside the run): [`fit::aligned_track`].
+    pub track_x: Option<Arc<[f64]>>,
     /// The run's headline, what follows the first impact, and the verdict.
     pub story: Story,
     /// The pinned run's parameters that differ from the current ones:
@@ -66,15 +74,15 @@ pub struct Resolved {
 }
 
 impl Resolved {
-    /// The snapshot of `settings`, with `series` derived for its scene and the span
-    /// reaching a pinned run's end: the one way a lab's scene is built.
+    /// The snapshot of `settings`, with the data `in_use` derived for its scene and
+    /// the span reaching a pinned run's end: the one way a lab's scene is built.
     pub fn build(
         settings: &Settings,
-        series: Option<&Series>,
+        in_use: Option<&InUse>,
         pinned: Option<&Pinned>,
     ) -> Result<Resolved, SceneError> {
         let (scene, span, span_end) = settings.settle()?;
-        let data = series.map(|s| measured::for_scene(s, &scene));
+        let data = in_use.map(|d| measured::for_scene(&d.series, &scene));
         let m = data.as_ref().map(|d| &*d.measured);
         let solution = solve_shown(&scene, &span, span_end, m, pinned.map(|p| p.auto_end));
         let span = Span {
@@ -91,14 +99,19 @@ impl Resolved {
             let (lo, hi) = self::extent(&run, p.scene.radius);
             extent = (extent.0.min(lo), extent.1.max(hi));
         }
+        let track_x = m
+            .and_then(|m| fit::aligned_track(&scene, &solution, m))
+            .map(Arc::from);
         Ok(Resolved {
             data_rms: m.map(|m| data_rms(&solution, m)),
-            points: m.map(|m| Arc::new(MeasuredPoints::of(m, scene.radius))),
+            points: m.map(|m| Arc::new(MeasuredPoints::of(m, track_x.as_deref()))),
+            track_x,
             story: Story::of(&solution, &derived, rest_band),
             summary: Summary::of(&solution),
             pinned_changes: pinned
                 .map(|p| changes(p, &scene, &span))
                 .unwrap_or_default(),
+            other_groove: in_use.and_then(|d| OtherGroove::of(d, Groove::of(&scene))),
             scene,
             span,
             span_end,
@@ -146,15 +159,15 @@ pub struct MeasuredPoints {
     /// Each derived point's ±1σ as a vertical run of points (`None`: no σ given).
     pub v_cm_bars: Option<Arc<[Point]>>,
     pub v_t_bars: Option<Arc<[Point]>>,
-    /// A position track's centre where the model's left ball would be (x − R), in the
-    /// display unit of length (the position chart's).
+    /// A position track's centre where the model's left ball would be (x − R, aligned
+    /// by [`fit::aligned_track`]), in the display unit of length (the position chart's).
     pub x: Option<Arc<[Point]>>,
     /// Each series' [`value_range`], in the order of [`MeasuredPoints::series`].
     ranges: Vec<Option<(f64, f64)>>,
 }
 
 impl MeasuredPoints {
-    fn of(m: &Measured, radius: f64) -> MeasuredPoints {
+    fn of(m: &Measured, track_x: Option<&[f64]>) -> MeasuredPoints {
         let pts = |v: &[f64]| m.t.iter().copied().zip(v.iter().copied()).collect();
         let bars =
             |v: &[f64], s: &Option<Vec<f64>>| s.as_ref().map(|s| error_bars(&m.t, v, s).into());
@@ -163,11 +176,11 @@ impl MeasuredPoints {
             v_t: pts(&m.v_t),
             v_cm_bars: bars(&m.v_cm, &m.v_cm_sigma),
             v_t_bars: bars(&m.v_t, &m.v_t_sigma),
-            x: m.x.as_ref().map(|x| {
+            x: track_x.map(|x| {
                 m.t.iter()
                     .zip(x)
                     .filter(|(_, x)| x.is_finite())
-                    .map(|(t, x)| (*t, Dimension::Length.to_display(x - radius)))
+                    .map(|(t, x)| (*t, Dimension::Length.to_display(*x)))
                     .collect()
             }),
             ranges: Vec::new(),
@@ -226,11 +239,21 @@ fn changes(p: &Pinned, scene: &Scene, span: &Span) -> Vec<(&'static str, String,
         t_start: p.solution.t_start,
         t_end: Some(p.solution.t_end),
     };
+    differences((&p.scene, &was_span), (scene, span))
+}
+
+/// The parameters of scene `now` that differ from those of `was`: `(label, was,
+/// now)` with the table's label and unit, every value of the scene and the span's
+/// start (not its end, which follows the runs).
+pub fn differences(
+    (was, was_span): (&Scene, &Span),
+    (scene, span): (&Scene, &Span),
+) -> Vec<(&'static str, String, String)> {
     PARAMS
         .iter()
         .filter(|row| row.is_own() && row.replaces.is_none() && row.key != Key::TEnd)
         .filter_map(|row| {
-            let x = (row.get)(&p.scene, &was_span)?;
+            let x = (row.get)(was, was_span)?;
             let y = (row.get)(scene, span)?;
             let differ = (x - y).abs() > 1e-12 * x.abs().max(y.abs());
             let shown = |v| show(v, row.dim).to_string();

@@ -53,6 +53,16 @@ macro_rules! assert_close {
     }};
 }
 
+/// A property test's settings: `PROPTEST_CASES` cases if set (a long run asks for
+/// more), else `default`, chosen for what one case of that property costs.
+pub fn cases(default: u32) -> proptest::test_runner::Config {
+    let cases = std::env::var("PROPTEST_CASES")
+        .ok()
+        .and_then(|c| c.parse().ok())
+        .unwrap_or(default);
+    proptest::test_runner::Config::with_cases(cases)
+}
+
 // ---- The command ---------------------------------------------------------------------
 
 /// Runs the binary with `args`, without the user's presets (a folder that does not
@@ -63,6 +73,19 @@ pub fn groovelab(args: &[&str]) -> std::process::Output {
         .env("GROOVELAB_PRESETS", "/nonexistent-groovelab-presets")
         .output()
         .unwrap()
+}
+
+/// Runs the command line `args` (a subcommand first) in this process, with the user's
+/// presets as the command finds them: what it would print, or its error message.
+pub fn run_in_process(args: &[&str]) -> Result<String, String> {
+    use clap::Parser;
+    let argv = std::iter::once("groovelab").chain(args.iter().copied());
+    let cli = groovelab::cli::Cli::try_parse_from(argv).map_err(|e| e.to_string())?;
+    match groovelab::cli::run(&cli) {
+        Ok(groovelab::cli::Outcome::Print(text)) => Ok(text),
+        Ok(_) => Err("the app would open: no text".into()),
+        Err(e) => Err(e.to_string()),
+    }
 }
 
 // ---- The app without a terminal ------------------------------------------------------
