@@ -53,6 +53,19 @@ pub struct OwnData {
     pub series: Series,
 }
 
+impl OwnData {
+    /// Said wherever the data are named when the file was read mirrored (its ball
+    /// approaches the other toward −x): "x runs toward −x in FILE: read mirrored".
+    pub fn mirrored_note(&self) -> Option<String> {
+        self.series.mirrored().then(|| {
+            format!(
+                "x runs toward −x in {}: read mirrored (x → −x, the ball approaching toward +x as in the model)",
+                self.name
+            )
+        })
+    }
+}
+
 /// One scene under study.
 #[derive(Clone, Debug)]
 pub struct Lab {
