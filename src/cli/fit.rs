@@ -20,6 +20,9 @@ use crate::study::measured::Found;
 #[derive(Serialize)]
 struct FitJson<'a> {
     scene: &'a Scene,
+    /// True when the data file was read mirrored: recorded with x pointing away
+    /// from the other ball, turned x → −x.
+    mirrored: bool,
     #[serde(flatten)]
     fits: &'a Fits,
     /// For a position track: the model fitted to the positions themselves.
@@ -86,12 +89,19 @@ fn round_times(json: &mut serde_json::Value) {
             round(v);
         }
     }
-    if let Some(later) = json
-        .get_mut("track")
-        .and_then(|t| t.get_mut("later_impacts"))
-        .and_then(|l| l.as_array_mut())
-    {
-        later.iter_mut().for_each(round);
+    for key in ["later_impacts", "centre_gaps", "mark_gaps"] {
+        if let Some(list) = json
+            .get_mut("track")
+            .and_then(|t| t.get_mut(key))
+            .and_then(|l| l.as_array_mut())
+        {
+            for v in list {
+                match v.as_array_mut() {
+                    Some(run) => run.iter_mut().for_each(round),
+                    None => round(v),
+                }
+            }
+        }
     }
 }
 
@@ -162,6 +172,7 @@ pub fn run(
     let text = match args.format {
         FitFormat::Json => json_text(FitJson {
             scene: &scene,
+            mirrored: lab.series().is_some_and(|s| s.mirrored()),
             fits: &fits,
             position_fit: position.as_ref(),
             track: found.as_ref(),
@@ -171,6 +182,10 @@ pub fn run(
         FitFormat::Table => {
             let own = data.data.is_empty();
             let mut out = scene_line(&lab, typed, scene_args, data);
+            if let Some(note) = lab.own_data().and_then(|o| o.mirrored_note()) {
+                out += &note;
+                out.push('\n');
+            }
             out += &match (&found, &position) {
                 (Some(found), Some(position)) => track_table(&scene, &fits, found, position, own),
                 _ => table(&scene, &fits, own),

@@ -28,6 +28,19 @@ pub struct OwnData {
     pub groove: Option<Groove>,
 }
 
+impl OwnData {
+    /// Said wherever the data are named when the file was read mirrored (its ball
+    /// approaches the other toward −x): "x runs toward −x in FILE: read mirrored".
+    pub fn mirrored_note(&self) -> Option<String> {
+        self.series.mirrored().then(|| {
+            format!(
+                "x runs toward −x in {}: read mirrored (x → −x, the ball approaching toward +x as in the model)",
+                self.name
+            )
+        })
+    }
+}
+
 /// A groove's geometry, m: the balls' radius R and the groove's width b (what a
 /// measured series depends on beyond the run itself: b sets the contact radius r, R
 /// turns a track's spin into v_t).

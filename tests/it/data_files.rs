@@ -6,9 +6,10 @@
 use crate::common;
 use std::path::{Path, PathBuf};
 
+use groovelab::input::data::{self, Reading};
 use groovelab::physics::engine;
 use groovelab::physics::scene::{Scene, Span};
-use groovelab::study::measured::Track;
+use groovelab::study::measured::{Derive, Track};
 use groovelab::study::preset::Preset;
 use groovelab::study::video::{self, Video};
 
@@ -310,11 +311,105 @@ fn a_velocity_file_recorded_with_x_reversed_is_turned() {
     let j = fit_json(&[&file], &[]);
     let mu = j["model_fit"]["mu"].as_f64().unwrap();
     assert!((mu - MU).abs() < 0.002, "μ_k = {mu}");
+    // Turned, and said so (once turned without a word): JSON `mirrored`, the table's
+    // line under the scene, the app's status line.
+    assert_eq!(j["mirrored"], true);
     // With the impact given, too (once an overflow error).
-    let j = fit_json(&[&file], &["--impact-at", "1"]);
-    let mu = j["model_fit"]["mu"].as_f64().unwrap();
+    let path = file.to_str().unwrap();
+    let (ok, table, err) = groovelab(&[
+        "fit",
+        "--preset",
+        "paper-b4.9",
+        "--data",
+        path,
+        "--impact-at",
+        "1",
+    ]);
+    assert!(ok, "{err}");
+    let mu: f64 = table
+        .split("μ_k = ")
+        .nth(1)
+        .and_then(|r| r.split_whitespace().next())
+        .and_then(|v| v.parse().ok())
+        .unwrap_or_else(|| panic!("{table}"));
     assert!((mu - MU).abs() < 0.002, "μ_k = {mu}");
+    assert!(
+        table.contains(&format!("x runs toward −x in {path}: read mirrored")),
+        "{table}"
+    );
+    let (ok, screen, err) = groovelab(&["render", "--preset", "paper-b4.9", "--data", path]);
+    assert!(ok, "{err}");
+    assert!(screen.contains("reversed.csv (read mirrored)"), "{screen}");
+    // The same motion recorded toward +x is read as it is, not mirrored.
+    let mut forward = String::from("t (s),v_cm (m/s),v_t (m/s)\n");
+    for (t, v, u) in velocities() {
+        forward += &format!("{:.3},{:.5},{:.5}\n", t + 1.0, v, u);
+    }
+    let mirrored = |text: &str| {
+        let (r, d) = (Reading::default(), Derive::default());
+        data::load(text, "f.csv", &r, &d).unwrap().mirrored()
+    };
+    assert!(mirrored(&text) && !mirrored(&forward));
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 19: headers in German, French or Spanish read like English ones (time and
+/// position by name, in the one place header cells are read); a header with only a
+/// velocity column is refused by an error that names the columns expected.
+#[test]
+fn headers_in_other_languages_are_read_or_the_error_names_the_columns() {
+    let (r, d) = (Reading::default(), Derive::default());
+    let english = {
+        let mut text = String::from("t (s),v_cm (m/s),v_t (m/s)\n");
+        for (t, v, u) in velocities() {
+            text += &format!("{t:.3},{v:.5},{u:.5}\n");
+        }
+        data::load(&text, "en.csv", &r, &d).unwrap()
+    };
+    // A German spreadsheet: semicolons, decimal commas, "Zeit".
+    let mut text = String::from("Zeit (ms);v_cm (cm/s);v_t (cm/s)\n");
+    for (t, v, u) in velocities() {
+        text += &format!("{:.0};{:.3};{:.3}\n", 1e3 * t, 100.0 * v, 100.0 * u).replace('.', ",");
+    }
+    let german = data::load(&text, "de.csv", &r, &d).unwrap();
+    let (a, b) = (english.measured(), german.measured());
+    assert_eq!(a.t.len(), b.t.len());
+    assert!(a.t.iter().zip(&b.t).all(|(x, y)| (x - y).abs() < 1e-9));
+    assert!(
+        a.v_cm
+            .iter()
+            .zip(&b.v_cm)
+            .all(|(x, y)| (x - y).abs() < 1e-5)
+    );
+    // Position tracks: French and Spanish names for time and position.
+    let track = video_track(6);
+    for (head, sep) in [
+        ("temps (s),position (m)", ','),
+        ("tiempo (s);posición (m)", ';'),
+    ] {
+        let mut text = format!("{head}\n");
+        for (t, x) in track.t.iter().zip(&track.x) {
+            text += &format!("{t:.5}{sep}{x:.6}\n");
+        }
+        let series = data::load(&text, "pos.csv", &r, &d).unwrap_or_else(|e| panic!("{head}: {e}"));
+        let found = series.found().unwrap();
+        assert_eq!(found.frames, track.t.len(), "{head}");
+    }
+    // Time and a velocity only: which columns would do is said.
+    let e = data::load(
+        "Zeit (s);Geschwindigkeit (m/s)\n0;0,5\n0,01;0,5\n",
+        "v.csv",
+        &r,
+        &d,
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(
+        e.contains(
+            "expected t and x (and y) for a position track, or t, v_cm and v_t for velocities"
+        ),
+        "{e}"
+    );
 }
 
 #[test]

@@ -153,6 +153,8 @@ fn either_direction_any_origin_flipped_axes_and_clip_start() {
         let (l, f) = fits(&s, &v, Format::TrackerMulti);
         let found = l.found.unwrap();
         assert_eq!(found.direction, if flip_x { -1.0 } else { 1.0 });
+        // A track along −x is read mirrored, and says so (the series carries it).
+        assert_eq!(l.measured.mirrored, flip_x);
         assert!((found.impact_t - 3.7).abs() < 1e-3, "{}", found.impact_t);
         assert!((found.impact_x - 1.234).abs() < 1e-3, "{}", found.impact_x);
         assert!((f.position.mu - MU).abs() <= 0.002, "μ {}", f.position.mu);
@@ -192,6 +194,56 @@ fn gaps_in_the_track_are_bridged() {
     // Frames without a mark have no v_t; the others do.
     let m = &l.measured;
     assert!(m.v_t.iter().any(|v| v.is_nan()) && m.has_v_t());
+}
+
+/// Issue 19: frames without the rim mark (or the centre) are counted and their times
+/// said, never filled in silently: the mark hidden for 9 frames (the hand over the
+/// ball) and the centre missing in 2 rows.
+#[test]
+fn missing_marks_and_centres_are_counted_with_their_times() {
+    let s = scene("paper-b4.9");
+    let mut t = video::track(&s, &Video::default());
+    let (mut mx, mut my) = t.mark.take().unwrap();
+    // Rows 60..69 (t = 0.300 … 0.367 s of the file at 120 frames/s, impact at 0).
+    for i in 60..69 {
+        mx[i] = f64::NAN;
+        my[i] = f64::NAN;
+    }
+    t.mark = Some((mx, my));
+    let (t40, t41) = (t.t[40], t.t[41]);
+    t.x[40] = f64::NAN;
+    t.x[41] = f64::NAN;
+    let (from, to) = (t.t[60], t.t[68]);
+    let l = try_load(&s, &video::write(&t, Format::TrackerMulti)).unwrap();
+    let found = l.found.unwrap();
+    assert_eq!(found.frames_dropped, 2);
+    assert_eq!(found.centre_gaps.len(), 1);
+    let close = |a: f64, b: f64| (a - b).abs() < 1e-9;
+    let [c0, c1] = found.centre_gaps[0];
+    assert!(close(c0, t40) && close(c1, t41), "{:?}", found.centre_gaps);
+    assert_eq!(found.mark_missing, 9);
+    assert_eq!(found.mark_gaps.len(), 1, "{:?}", found.mark_gaps);
+    let [m0, m1] = found.mark_gaps[0];
+    assert!(close(m0, from) && close(m1, to), "{:?}", found.mark_gaps);
+    // No v_t in those frames: nothing interpolated.
+    let m = &l.measured;
+    let file_t = |k: usize| m.t[k] + found.impact_t;
+    let inside: Vec<usize> = (0..m.t.len())
+        .filter(|&k| file_t(k) >= from - 1e-9 && file_t(k) <= to + 1e-9)
+        .collect();
+    assert_eq!(inside.len(), 9);
+    assert!(inside.iter().all(|&k| m.v_t[k].is_nan()));
+    let text = found.describe();
+    for want in [
+        format!("2 of {} rows left out", found.frames + 2),
+        format!("(t = {t40:.3} … {t41:.3} s of the file)"),
+        format!(
+            "rim mark missing in 9 of {} frames (t = {from:.3} … {to:.3} s of the file): no v_t there, nothing filled in",
+            found.frames
+        ),
+    ] {
+        assert!(text.contains(&want), "{want}\n{text}");
+    }
 }
 
 #[test]

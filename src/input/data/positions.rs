@@ -130,7 +130,7 @@ fn find_header(rows: &mut impl Iterator<Item = Row>) -> Result<(Vec<Row>, Row), 
         }
         if before.len() == 3 {
             return Err(format!(
-                "line {}: no header with a time column t in the first lines, expected columns t and x (and y)",
+                "line {}: no header with a time column t in the first lines, expected columns t and x (and y) for a position track, or t, v_cm and v_t for velocities",
                 row.line
             ));
         }

@@ -117,13 +117,50 @@ impl Table {
 }
 
 /// A header cell in lower case, without quotes, blanks and a run prefix (Logger Pro
-/// and Graphical Analysis write `Latest: Time (s)`, `Run 1: X (m)`).
+/// and Graphical Analysis write `Latest: Time (s)`, `Run 1: X (m)`), a name in
+/// another language read as its English one ([`ALIASES`]). Every header cell is read
+/// through here.
 pub(crate) fn clean(cell: &str) -> String {
     let c = cell.trim().trim_matches('"').trim().to_lowercase();
-    match c.split_once(':') {
+    let name = match c.split_once(':') {
         Some((_, name)) => name.trim().to_string(),
         None => c,
+    };
+    english(name)
+}
+
+/// Column names that tools and spreadsheets in German, French, Spanish and Italian
+/// write, and the name they are read as: time (`Zeit (s)`, `temps`, `tiempo`) and
+/// position (`Position`, `Ort`, `posición`). A velocity (`Geschwindigkeit`,
+/// `vitesse`, `velocidad`) names neither v_cm nor v_t and is read as a velocity `v`,
+/// which a position track ignores; a file of velocities needs t, v_cm and v_t.
+const ALIASES: [(&str, &str); 14] = [
+    ("zeit", "time"),
+    ("temps", "time"),
+    ("tiempo", "time"),
+    ("tempo", "time"),
+    ("position", "x"),
+    ("ort", "x"),
+    ("weg", "x"),
+    ("posición", "x"),
+    ("posicion", "x"),
+    ("posizione", "x"),
+    ("geschwindigkeit", "v"),
+    ("vitesse", "v"),
+    ("velocidad", "v"),
+    ("velocità", "v"),
+];
+
+/// `name` with a leading word of [`ALIASES`] (alone, or before its unit) in English.
+fn english(name: String) -> String {
+    for (from, to) in ALIASES {
+        if let Some(rest) = name.strip_prefix(from)
+            && (rest.is_empty() || rest.starts_with([' ', '(', '[', '/', '_']))
+        {
+            return format!("{to}{rest}");
+        }
     }
+    name
 }
 
 /// The SI factor of a unit written after a column name: `(ms)`, `[cm/s]`, `/ms`,
@@ -176,6 +213,19 @@ mod tests {
         );
         assert_eq!(clean(rows[0].cell(0)), "time (s)");
         assert_eq!(rows[1].cell(1), "1.5");
+    }
+
+    #[test]
+    fn names_in_other_languages_read_as_english() {
+        assert_eq!(clean("Zeit (s)"), "time (s)");
+        assert_eq!(clean("\"Latest: Temps (ms)\""), "time (ms)");
+        assert_eq!(clean("tiempo"), "time");
+        assert_eq!(clean("Posición [cm]"), "x [cm]");
+        assert_eq!(clean("Geschwindigkeit (m/s)"), "v (m/s)");
+        // Only a whole word: other names that begin alike stay as they are.
+        assert_eq!(clean("Zeitpunkt"), "zeitpunkt");
+        assert_eq!(clean("orthogonal"), "orthogonal");
+        assert_eq!(clean("t"), "t");
     }
 
     #[test]

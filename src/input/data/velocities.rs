@@ -121,13 +121,7 @@ pub(super) fn from_table(
     if t.len() < 3 {
         return Err(err(format!("{} data rows, allowed at least 3", t.len())));
     }
-    // A file recorded with x pointing away from the other ball: turned, so that the
-    // ball approaches toward +x as in the model.
-    if approach_sign(&t, &v_cm, reading.impact_at) < 0.0 {
-        for v in v_cm.iter_mut().chain(v_t.iter_mut()) {
-            *v = -*v;
-        }
-    }
+    let mirrored = turn_if_reversed(&t, &mut v_cm, &mut v_t, reading.impact_at);
     let impact = match reading.impact_at {
         Some(at) => at,
         None => detect_impact(&t, &v_cm).ok_or_else(|| {
@@ -147,7 +141,10 @@ pub(super) fn from_table(
         }
     }
     approach_seen(&t, impact).map_err(err)?;
-    let m = Measured::velocities(t, v_cm, v_t);
+    let m = Measured {
+        mirrored,
+        ..Measured::velocities(t, v_cm, v_t)
+    };
     m.check_magnitudes().map_err(|e| err(e.to_string()))?;
     units.check_plausible(&m.t, &m.v_cm, &m.v_t).map_err(err)?;
     Ok(m)
@@ -198,6 +195,18 @@ impl Units {
             flags.join(" ")
         ))
     }
+}
+
+/// A file recorded with x pointing away from the other ball: turned, so that the
+/// ball approaches toward +x as in the model; true when it was (said to the user).
+fn turn_if_reversed(t: &[f64], v_cm: &mut [f64], v_t: &mut [f64], impact_at: Option<f64>) -> bool {
+    let reversed = approach_sign(t, v_cm, impact_at) < 0.0;
+    if reversed {
+        for v in v_cm.iter_mut().chain(v_t.iter_mut()) {
+            *v = -*v;
+        }
+    }
+    reversed
 }
 
 /// +1 when the ball approaches the other toward the file's +x, −1 when toward −x: the

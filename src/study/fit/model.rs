@@ -193,6 +193,7 @@ pub fn thinned(m: &Measured) -> Option<(Measured, usize)> {
                     ..(**s).clone()
                 })
             }),
+            mirrored: m.mirrored,
         },
         k,
     ))

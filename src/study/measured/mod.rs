@@ -30,6 +30,18 @@ pub enum Series {
 }
 
 impl Series {
+    /// The left ball's velocities as derived without a scene.
+    pub fn measured(&self) -> &Measured {
+        match self {
+            Series::Velocities(m) | Series::Track(m, _) => m,
+        }
+    }
+
+    /// True when the file was read mirrored (its x ran away from the other ball).
+    pub fn mirrored(&self) -> bool {
+        self.measured().mirrored
+    }
+
     /// What the derivation found in a position track; `None` for velocities.
     pub fn found(&self) -> Option<&Found> {
         match self {

@@ -41,6 +41,10 @@ pub struct Measured {
     /// independent (`study::fit` uses this for its ±).
     #[serde(skip)]
     pub stencils: Option<std::sync::Arc<Stencils>>,
+    /// True when the file was recorded with x pointing away from the other ball (the
+    /// ball approaches toward −x) and was read mirrored, x → −x, to match the model.
+    #[serde(skip)]
+    pub mirrored: bool,
 }
 
 /// The weights with which a derived velocity was made from tracked frames `lo..=hi`

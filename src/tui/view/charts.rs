@@ -407,7 +407,12 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
         // The student's own file is named where its points are drawn (its file
         // name, when the title has room for it beside the key hint).
         if let Some(own) = app.lab.own_data() {
-            data = format!(", data {}", file_name(&own.name));
+            let mirrored = if own.series.mirrored() {
+                " (read mirrored)"
+            } else {
+                ""
+            };
+            data = format!(", data {}{mirrored}", file_name(&own.name));
         }
     }
     let mut vlines = Vec::new();

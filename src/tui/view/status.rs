@@ -78,7 +78,13 @@ fn right_text(app: &App, width: usize, g: &Glyphs) -> String {
     };
     // A third of the row stays for the time, the play state and a message.
     let room = width.saturating_sub(width / 3 + preset.chars().count() + 2);
-    format!("{preset}  {}", data_label(&own.name, room, g))
+    // A file read mirrored says so with its name (the end kept when cut).
+    let name = if own.series.mirrored() {
+        format!("{} (read mirrored)", own.name)
+    } else {
+        own.name.clone()
+    };
+    format!("{preset}  {}", data_label(&name, room, g))
 }
 
 /// `data: NAME` in at most `room` columns: NAME's end is kept, from a folder

@@ -67,6 +67,16 @@ pub struct Found {
     /// Rows with a time but no centre position (an empty or NaN cell), left out.
     #[serde(skip_serializing_if = "is_zero")]
     pub frames_dropped: usize,
+    /// Those rows' times in the file, s, as runs of neighbouring rows `[first, last]`.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub centre_gaps: Vec<[f64; 2]>,
+    /// Frames with a centre but without the rim mark (an empty or NaN cell): no v_t
+    /// there, nothing filled in.
+    #[serde(skip_serializing_if = "is_zero")]
+    pub mark_missing: usize,
+    /// Those frames' times in the file, s, as runs `[first, last]`.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub mark_gaps: Vec<[f64; 2]>,
     /// Frames per second (from the median spacing).
     pub frame_rate: f64,
     /// Estimated scatter of a tracked position, m.
@@ -143,9 +153,18 @@ impl Found {
         );
         if self.frames_dropped > 0 {
             s += &format!(
-                "{} of {} rows left out: their centre position is empty or NaN\n",
+                "{} of {} rows left out: their centre position is empty or NaN ({} of the file)\n",
                 self.frames_dropped,
-                self.frames + self.frames_dropped
+                self.frames + self.frames_dropped,
+                runs_text(&self.centre_gaps)
+            );
+        }
+        if self.mark_missing > 0 {
+            s += &format!(
+                "rim mark missing in {} of {} frames ({} of the file): no v_t there, nothing filled in (the local fits beside a gap reach across it)\n",
+                self.mark_missing,
+                self.frames,
+                runs_text(&self.mark_gaps)
             );
         }
         // Two frames before the impact give a speed but no ± (`--impact-at` early).
@@ -172,6 +191,7 @@ impl Found {
             self.frames_after,
             if self.direction > 0.0 { "+" } else { "−" },
         );
+
         s += &format!(
             "velocities by local quadratic fits over ±{:.1} ms ({} frames), never across an impact",
             1e3 * self.half_window,
@@ -194,6 +214,48 @@ impl Found {
         s.push('\n');
         s
     }
+}
+
+/// Runs of missing frames said as times: "t = 0.325 … 0.392 s, 0.983 s" (the
+/// first five runs, then how many more).
+fn runs_text(runs: &[[f64; 2]]) -> String {
+    const SHOWN: usize = 5;
+    let mut parts: Vec<String> = runs
+        .iter()
+        .take(SHOWN)
+        .map(|[a, b]| {
+            if a == b {
+                format!("{a:.3}")
+            } else {
+                format!("{a:.3} … {b:.3}")
+            }
+        })
+        .collect();
+    if runs.len() > SHOWN {
+        parts.push(format!("and {} more", runs.len() - SHOWN));
+    }
+    format!("t = {} s", parts.join(", "))
+}
+
+/// The runs of neighbouring entries flagged `missing`, as their first and last
+/// `times`.
+fn runs(times: &[f64], missing: &[bool]) -> Vec<[f64; 2]> {
+    let mut out = Vec::new();
+    let mut start = None;
+    for (i, &m) in missing.iter().enumerate() {
+        match (m, start) {
+            (true, None) => start = Some(i),
+            (false, Some(s)) => {
+                out.push([times[s], times[i - 1]]);
+                start = None;
+            }
+            _ => {}
+        }
+    }
+    if let Some(s) = start {
+        out.push([times[s], times[missing.len() - 1]]);
+    }
+    out
 }
 
 /// The half-window of the local fits, frames: the one asked for, else the smallest
@@ -368,14 +430,7 @@ pub fn derive(
         .collect();
     let ts: Vec<f64> = rows.iter().map(|&i| track.t[i]).collect();
     let xs: Vec<f64> = rows.iter().map(|&i| track.x[i]).collect();
-    let need = 2 * opts.min_frames.max(3);
-    if ts.len() < need {
-        return Err(TrackError(format!(
-            "{} frames with a centre position, at least {need} needed ({} before and after the impact)",
-            ts.len(),
-            opts.min_frames
-        )));
-    }
+    enough_frames(ts.len(), opts)?;
     let dt = frame_step(&ts);
     let sigma = scatter(&xs).max(1e-7);
     let n = half_window(dt, sigma, opts);
@@ -425,6 +480,8 @@ pub fn derive(
         sig_t.push(st);
         ang.push(a);
     }
+    // Recorded with x away from the other ball: turned, and said so.
+    m.mirrored = dir < 0.0;
     m.v_cm_sigma = Some(sig_cm);
     m.stencils = Some(std::sync::Arc::new(stencils));
     m.x = Some(pos);
@@ -432,12 +489,16 @@ pub fn derive(
         m.v_t_sigma = Some(sig_t);
         m.angle = Some(ang);
     }
+    let (centre_gaps, mark_missing, mark_gaps) = gaps(track, &rows, &ts, spin.as_ref());
     let found = Found {
         format: track.format,
         centre: track.centre_name.clone(),
         mark: spin.as_ref().and(track.mark_name.clone()),
         frames: ts.len(),
         frames_dropped: track.t.len() - ts.len(),
+        centre_gaps,
+        mark_missing,
+        mark_gaps,
         frame_rate: 1.0 / dt,
         scatter: sigma,
         half_window: n as f64 * dt,
@@ -457,6 +518,42 @@ pub fn derive(
         mark_radius: spin.as_ref().map(|s| s.radius),
     };
     Ok((m, found))
+}
+
+/// At least `2 · max(min_frames, 3)` frames with a centre position (`frames`).
+fn enough_frames(frames: usize, opts: &Derive) -> Result<(), TrackError> {
+    let need = 2 * opts.min_frames.max(3);
+    if frames < need {
+        return Err(TrackError(format!(
+            "{frames} frames with a centre position, at least {need} needed ({} before and after the impact)",
+            opts.min_frames
+        )));
+    }
+    Ok(())
+}
+
+/// The track's gaps, said and never filled in: the rows without a centre (as runs of
+/// the file's times), and the centre's frames `rows` (at times `ts`) without the rim
+/// mark, where one is tracked at all (how many, and as runs).
+fn gaps(
+    track: &Track,
+    rows: &[usize],
+    ts: &[f64],
+    spin: Option<&Spin>,
+) -> (Vec<[f64; 2]>, usize, Vec<[f64; 2]>) {
+    let no_centre: Vec<bool> = track.x.iter().map(|x| !x.is_finite()).collect();
+    let no_mark: Vec<bool> = match spin {
+        Some(sp) => rows
+            .iter()
+            .map(|i| sp.valid.binary_search(i).is_err())
+            .collect(),
+        None => Vec::new(),
+    };
+    (
+        runs(&track.t, &no_centre),
+        no_mark.iter().filter(|&&m| m).count(),
+        runs(ts, &no_mark),
+    )
 }
 
 /// For each frame `valid` of the mark (rows of `track`): its centre's frame among
