@@ -1384,9 +1384,12 @@ fn the_data_table_of_a_position_track_shows_x_in_cm() {
     let m = a.lab.measured().unwrap();
     let x = m.x.as_ref().unwrap();
     for (r, i) in rows.iter().zip(0..) {
-        // The tracked centre where the model's left ball would be: x − R.
+        // The tracked centre where the model's left ball would be: x − R, aligned
+        // by the impact's time and place shift the position fit profiles out (a
+        // fraction of a millimetre here: the 0.3 mm noise moves the detected place).
         let model = a.lab.solution.at(m.t[i]).left.x;
-        let want = x[i] - a.lab.scene.radius;
+        let want = a.lab.track_x.as_ref().unwrap()[i];
+        assert!(want.is_nan() || (want - (x[i] - a.lab.scene.radius)).abs() < 1e-3);
         assert!(r[7] == want || (r[7].is_nan() && want.is_nan()), "row {i}");
         assert_eq!(r[8], model);
         assert!(r[9] == want - model || want.is_nan(), "row {i}");
