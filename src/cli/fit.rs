@@ -11,7 +11,9 @@ use crate::lab::Lab;
 use crate::output::write_atomically;
 use crate::physics::scene::Scene;
 use crate::settings::params::Key;
-use crate::settings::units::{Dimension, show, show_exact, significant, with_uncertainty};
+use crate::settings::units::{
+    Dimension, show, show_exact, show_small, significant, with_uncertainty,
+};
 use crate::study::fit::{self, Candidate, Fits, Free, LineFit, ModelFit};
 use crate::study::measured::Found;
 
@@ -531,7 +533,7 @@ fn track_table(scene: &Scene, f: &Fits, found: &Found, p: &ModelFit, paper_data:
         &mut out,
         "RMS residual",
         format!("{:.4} m/s", v.rms),
-        format!("{:.3} mm", 1e3 * p.rms),
+        format!("{:.3}", show_small(p.rms, Dimension::Length)),
     );
     row(
         &mut out,
@@ -655,7 +657,11 @@ fn models_table(models: &[Candidate], positions: bool) -> String {
             )
         };
     }
-    let unit = if positions { "mm" } else { "m/s" };
+    let unit = if positions {
+        Dimension::Length.small_unit().0
+    } else {
+        Dimension::Speed.display_unit().0
+    };
     let _ = writeln!(
         out,
         "  {:<34} {:>10} {:>10} {:>10}   values (± 2σ)",
@@ -684,7 +690,11 @@ fn models_table(models: &[Candidate], positions: bool) -> String {
                 }
             })
             .collect();
-        let rms = if positions { 1e3 * c.rms } else { c.rms };
+        let rms = if positions {
+            Dimension::Length.to_small(c.rms)
+        } else {
+            c.rms
+        };
         let _ = writeln!(
             out,
             "{} {:<34} {:>10.4} {:>10.1} {:>10.1}   {}",

@@ -25,6 +25,9 @@ struct Units {
     /// Decimals of the app's parameter panel in that unit (columns line up); `None`:
     /// four significant digits.
     decimals: Option<usize>,
+    /// The unit for the small values of this kind that people read in a finer one (a
+    /// position scatter in mm, a fit window in ms); the display unit where none is.
+    small: &'static str,
 }
 
 impl Dimension {
@@ -35,31 +38,37 @@ impl Dimension {
                 accepted: &[("m", 0), ("cm", -2), ("mm", -3)],
                 display: "cm",
                 decimals: Some(2),
+                small: "mm",
             },
             Dimension::Mass => &Units {
                 accepted: &[("kg", 0), ("g", -3), ("mg", -6)],
                 display: "g",
                 decimals: Some(1),
+                small: "g",
             },
             Dimension::Speed => &Units {
                 accepted: &[("m/s", 0), ("cm/s", -2), ("mm/s", -3)],
                 display: "m/s",
                 decimals: Some(3),
+                small: "m/s",
             },
             Dimension::Time => &Units {
                 accepted: &[("s", 0), ("ms", -3)],
                 display: "s",
                 decimals: Some(3),
+                small: "ms",
             },
             Dimension::Acceleration => &Units {
                 accepted: &[("m/s^2", 0), ("m/s²", 0), ("m/s2", 0)],
                 display: "m/s²",
                 decimals: Some(2),
+                small: "m/s²",
             },
             Dimension::Ratio => &Units {
                 accepted: &[],
                 display: "",
                 decimals: None,
+                small: "",
             },
         }
     }
@@ -74,7 +83,17 @@ impl Dimension {
     /// The unit the app shows and a bare typed number means, with its decimal exponent
     /// to SI (cm: −2); empty for a pure number.
     pub fn display_unit(self) -> (&'static str, i32) {
-        let name = self.table().display;
+        self.named(self.table().display)
+    }
+
+    /// The unit for small values of this kind (mm, ms; else the display unit), with its
+    /// decimal exponent to SI.
+    pub fn small_unit(self) -> (&'static str, i32) {
+        self.named(self.table().small)
+    }
+
+    /// An accepted unit with its decimal exponent to SI.
+    fn named(self, name: &'static str) -> (&'static str, i32) {
         let shift = self
             .units()
             .iter()
@@ -86,10 +105,12 @@ impl Dimension {
     /// `value` (SI) in the display unit: 0.0275 m → 2.75 (cm). A power of ten exact
     /// in binary (100, 1000), so the result is the one multiplication by it.
     pub fn to_display(self, value: f64) -> f64 {
-        match self.display_unit().1 {
-            0 => value,
-            shift => value * 10f64.powi(-shift),
-        }
+        in_unit(value, self.display_unit().1)
+    }
+
+    /// `value` (SI) in the unit for small values: 0.0012 m → 1.2 (mm).
+    pub fn to_small(self, value: f64) -> f64 {
+        in_unit(value, self.small_unit().1)
     }
 
     /// `value` (SI) as the parameter panel shows it: the display unit's fixed
@@ -106,6 +127,14 @@ impl Dimension {
     /// a number in text.
     pub fn suffix(self) -> String {
         match self.table().display {
+            "" => String::new(),
+            unit => format!(" {unit}"),
+        }
+    }
+
+    /// The unit for small values after a space (" mm"), empty for a pure number.
+    pub fn small_suffix(self) -> String {
+        match self.small_unit().0 {
             "" => String::new(),
             unit => format!(" {unit}"),
         }
@@ -323,22 +352,50 @@ fn about_typed(e: UnitError, typed: &str, dim: Dimension) -> UnitError {
     }
 }
 
+/// `value` (SI) in the unit `shift` decimal places from SI (cm: −2): one
+/// multiplication by a power of ten that is exact in binary.
+fn in_unit(value: f64, shift: i32) -> f64 {
+    match shift {
+        0 => value,
+        shift => value * 10f64.powi(-shift),
+    }
+}
+
 /// An SI value shown in the unit a lab user reads it in (cm for lengths, g for masses…).
 #[derive(Clone, Copy, Debug)]
 pub struct Shown {
     pub value: f64,
     pub dim: Dimension,
+    /// In the unit for small values (mm, ms) rather than the display unit.
+    pub small: bool,
 }
 
 /// Formats `value` (SI) for people: lengths in cm, masses in g, times in s, speeds in m/s.
 pub fn show(value: f64, dim: Dimension) -> Shown {
-    Shown { value, dim }
+    Shown {
+        value,
+        dim,
+        small: false,
+    }
+}
+
+/// Formats a small `value` (SI) for people: lengths in mm, times in ms (a position
+/// scatter, a fit window); other kinds as [`show`].
+pub fn show_small(value: f64, dim: Dimension) -> Shown {
+    Shown {
+        value,
+        dim,
+        small: true,
+    }
 }
 
 impl fmt::Display for Shown {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let unit = self.dim.suffix();
-        let v = self.dim.to_display(self.value);
+        let (unit, v) = if self.small {
+            (self.dim.small_suffix(), self.dim.to_small(self.value))
+        } else {
+            (self.dim.suffix(), self.dim.to_display(self.value))
+        };
         match f.precision() {
             Some(p) => write!(f, "{v:.p$}{unit}"),
             None => write!(f, "{}{unit}", significant(v, 4)),
@@ -513,6 +570,30 @@ mod tests {
     }
 
     use super::*;
+
+    #[test]
+    fn small_values_read_in_mm_and_ms_from_the_one_table() {
+        assert_eq!(
+            format!("{:.2}", show_small(0.00123, Dimension::Length)),
+            "1.23 mm"
+        );
+        assert_eq!(
+            format!("{:.1}", show_small(0.0125, Dimension::Time)),
+            "12.5 ms"
+        );
+        // The same multiplication as by hand: 1e3 · x to the bit.
+        for x in [0.00123, 3.7e-4, 0.0281, 1.0 / 3.0] {
+            assert_eq!(Dimension::Length.to_small(x), 1e3 * x);
+            assert_eq!(Dimension::Time.to_small(x), 1e3 * x);
+        }
+        // Kinds without a finer unit read as in their display unit.
+        assert_eq!(
+            Dimension::Speed.small_unit(),
+            Dimension::Speed.display_unit()
+        );
+        assert_eq!(format!("{}", show_small(0.5, Dimension::Speed)), "0.5 m/s");
+        assert_eq!(format!("{}", show_small(0.4, Dimension::Ratio)), "0.4");
+    }
 
     #[test]
     fn fitted_numbers_keep_their_exponent_and_lose_digits_first() {

@@ -1,11 +1,13 @@
 //! Layers, of the source and of the settings. The source's layers are folders, each
 //! using only those above it (physics → settings → methods → study → lab → the
-//! edges): no source file of a layer names a later one. The settings' layers (preset
-//! ← command line ← the app's edits) settle into one snapshot (that the same scene
-//! reached by flags or by keys draws the same screen is `lab_data`'s test): `u` takes
-//! back the last edit, `R` all of them; a preset picked keeps the student's data; data
-//! without a scene are one rule for the app, `render` and `fit`; `simulate` prints the
-//! snapshot the app shows for the same options.
+//! edges): no source file of a layer names a later one, none imports itself through
+//! others, no function runs over 100 lines, and no number is put in a unit by hand
+//! outside the one unit table. The settings' layers (preset ← command line ← the
+//! app's edits) settle into one snapshot (that the same scene reached by flags or by
+//! keys draws the same screen is `lab_data`'s test): `u` takes back the last edit, `R`
+//! all of them; a preset picked keeps the student's data; data without a scene are one
+//! rule for the app, `render`, `compare` and `fit`; `simulate` prints the snapshot the
+//! app shows for the same options, and `compare` compares over its span.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
@@ -439,6 +441,59 @@ fn no_function_is_longer_than_a_hundred_lines() {
         "functions over 100 lines:\n{}",
         long.join("\n")
     );
+}
+
+/// Where a source writes a number followed by a unit that is not SI (`{:.2} mm`,
+/// `{} cm`): such a number was converted by hand. `(file:line, text)`.
+fn hand_written_units(src: &Path, files: &[PathBuf]) -> Vec<String> {
+    const NOT_SI: [&str; 6] = ["cm", "mm", "ms", "g", "mg", "µs"];
+    let mut found = Vec::new();
+    for file in files {
+        let text = std::fs::read_to_string(file).unwrap();
+        for (i, line) in text.lines().enumerate() {
+            if line.trim_start().starts_with("//") {
+                continue;
+            }
+            // Each `}` that closes a format argument, then an optional space.
+            for (at, _) in line.match_indices('}') {
+                let rest = line[at + 1..].strip_prefix(' ').unwrap_or(&line[at + 1..]);
+                let word: String = rest
+                    .chars()
+                    .take_while(|c| c.is_alphanumeric() || *c == 'µ')
+                    .collect();
+                if NOT_SI.contains(&word.as_str()) {
+                    let at = file.strip_prefix(src).unwrap().display();
+                    found.push(format!("{at}:{}: {}", i + 1, line.trim()));
+                }
+            }
+        }
+    }
+    found
+}
+
+#[test]
+fn display_units_are_written_once_in_the_unit_table() {
+    let (src, mut files) = library_sources();
+    // The one table (its own tests write what it prints).
+    files.retain(|f| !f.ends_with("settings/units.rs"));
+    let found = hand_written_units(&src, &files);
+    assert!(
+        found.is_empty(),
+        "numbers converted to a unit by hand (use units::show or show_small):\n{}",
+        found.join("\n")
+    );
+    // The scan sees what it looks for.
+    let dir = std::env::temp_dir().join(format!("groovelab-units-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let bad = dir.join("bad.rs");
+    std::fs::write(
+        &bad,
+        "let a = format!(\"{:.2} mm\", 1e3 * x);\n// {} cm in a comment\nlet b = format!(\"{}cm/s\", v);\nlet c = format!(\"{} m/s, {} s\", v, t);\n",
+    )
+    .unwrap();
+    let seen = hand_written_units(&dir, &[bad]);
+    let _ = std::fs::remove_dir_all(&dir);
+    assert_eq!(seen.len(), 2, "{seen:?}");
 }
 
 const TRACK: &str = "docs/video/paper-b4.9-tracker.txt";

@@ -6,6 +6,7 @@ use plotters::prelude::*;
 use super::drawing::{FigureError, finite_bounds, log_axis};
 use crate::methods::Method;
 use crate::physics::scene::Scene;
+use crate::settings::units::{Dimension, show};
 use crate::study::compare::Row;
 
 fn colour(m: Method) -> RGBColor {
@@ -168,9 +169,9 @@ fn axis_ranges(rows: &[Row], pts: &[(f64, f64)], work: Work) -> ((f64, f64), (f6
 /// The diagram's title: the scene it was run on.
 fn caption(scene: &Scene) -> String {
     format!(
-        "Work-precision, b = {:.2} cm, R = {:.2} cm, mu = {}, e = {}",
-        scene.width * 100.0,
-        scene.radius * 100.0,
+        "Work-precision, b = {:.2}, R = {:.2}, mu = {}, e = {}",
+        show(scene.width, Dimension::Length),
+        show(scene.radius, Dimension::Length),
         super::drawing::rounded(scene.mu),
         super::drawing::rounded(scene.restitution)
     )

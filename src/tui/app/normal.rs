@@ -153,7 +153,11 @@ impl App {
                         "{name} at t = {:.4} s: {n} impacts in {}",
                         stop.t,
                         if dt < 1.0 {
-                            format!("{} ms", significant(dt * 1e3, 3))
+                            format!(
+                                "{}{}",
+                                significant(Dimension::Time.to_small(dt), 3),
+                                Dimension::Time.small_suffix()
+                            )
                         } else {
                             show(dt, Dimension::Time).to_string()
                         }

@@ -8,7 +8,7 @@ use ratatui::widgets::Widget;
 
 use super::panel::{Ranked, block, by_priority, draw_lines};
 use crate::lab::jobs::State;
-use crate::settings::units::with_uncertainty;
+use crate::settings::units::{Dimension, show_small, with_uncertainty};
 use crate::study::fit::{self, ModelFit};
 use crate::tui::app::App;
 use crate::tui::theme::Theme;
@@ -375,7 +375,7 @@ fn both_fits(v: &ModelFit, p: &ModelFit, width: usize, lines: &mut Ranked<'stati
         row(
             "RMS",
             format!("{:.3} m/s", v.rms),
-            format!("{:.2} mm", 1e3 * p.rms),
+            format!("{:.2}", show_small(p.rms, Dimension::Length)),
             theme.text,
         ),
     ));

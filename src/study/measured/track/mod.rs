@@ -19,6 +19,7 @@ use serde::Serialize;
 
 use super::series::{Measured, Stencil, Stencils, Track};
 use crate::physics::scene::Scene;
+use crate::settings::units::{Dimension, show, show_small};
 use crate::study::fit::{self, FitError, Free, ModelFit};
 
 pub use derivative::Local;
@@ -136,20 +137,20 @@ impl Found {
             }
         };
         let mut s = format!(
-            "position track ({}): centre {}, {}; {} frames at {:.1} frames/s, scatter ≈ {:.2} mm\n",
+            "position track ({}): centre {}, {}; {} frames at {:.1} frames/s, scatter ≈ {:.2}\n",
             self.format,
             name(&self.centre),
             match &self.mark {
                 Some(m) => format!(
-                    "rim mark {} (at {:.1} mm from the centre)",
+                    "rim mark {} (at {:.1} from the centre)",
                     name(m),
-                    1e3 * self.mark_radius.unwrap_or(f64::NAN)
+                    show_small(self.mark_radius.unwrap_or(f64::NAN), Dimension::Length)
                 ),
                 None => "no rim mark: v_t is not measured, the fits use v_cm (x) only".to_string(),
             },
             self.frames,
             self.frame_rate,
-            1e3 * self.scatter
+            show_small(self.scatter, Dimension::Length)
         );
         if self.frames_dropped > 0 {
             s += &format!(
@@ -179,28 +180,29 @@ impl Found {
             format!("{:.3}", self.approach_speed)
         };
         s += &format!(
-            "first impact {} at t = {:.4} s, x = {:.2} mm of the file ({} frames before, {} after); the other ball lies toward {}x; approach speed {approach} m/s (a line through the frames before it)\n",
+            "first impact {} at t = {:.4} s, x = {:.2} of the file ({} frames before, {} after); the other ball lies toward {}x; approach speed {approach} m/s (a line through the frames before it)
+",
             if self.impact_detected {
                 "found"
             } else {
                 "given"
             },
             self.impact_t,
-            1e3 * self.impact_x,
+            show_small(self.impact_x, Dimension::Length),
             self.frames_before,
             self.frames_after,
             if self.direction > 0.0 { "+" } else { "−" },
         );
 
         s += &format!(
-            "velocities by local quadratic fits over ±{:.1} ms ({} frames), never across an impact",
-            1e3 * self.half_window,
+            "velocities by local quadratic fits over ±{:.1} ({} frames), never across an impact",
+            show_small(self.half_window, Dimension::Time),
             self.half_window_frames
         );
         if let Some(asked) = self.half_window_widened_from {
             s += &format!(
                 " (the ±{} asked for widened: a local quadratic needs at least {MIN_HALF_WINDOW} frames each side)",
-                crate::settings::units::show(asked, crate::settings::units::Dimension::Time)
+                show(asked, Dimension::Time)
             );
         }
         if !self.later_impacts.is_empty() {
