@@ -392,9 +392,9 @@ const MARK_SCATTERS: f64 = 10.0;
 fn mark_off_the_centre(spin: Option<Spin>, scatter: f64) -> Result<Option<Spin>, TrackError> {
     match spin {
         Some(s) if s.radius < MARK_SCATTERS * scatter => Err(TrackError(format!(
-            "the rim mark lies {:.2} mm from the centre, within {MARK_SCATTERS}× the position scatter ({:.2} mm): its angle would be noise; track a mark near the rim (the same file given for centre and mark?)",
-            1e3 * s.radius,
-            1e3 * scatter
+            "the rim mark lies {:.2} from the centre, within {MARK_SCATTERS}× the position scatter ({:.2}): its angle would be noise; track a mark near the rim (the same file given for centre and mark?)",
+            show_small(s.radius, Dimension::Length),
+            show_small(scatter, Dimension::Length)
         ))),
         spin => Ok(spin),
     }
