@@ -33,10 +33,6 @@ pub(super) fn fit_points(m: &Measured, scene: &Scene, target: Target) -> Vec<usi
     if target == Target::Position {
         return (0..m.t.len()).collect();
     }
-    let frame =
-        m.t.windows(2)
-            .map(|w| w[1] - w[0])
-            .fold(f64::INFINITY, f64::min);
     let sol = engine::solve(
         scene,
         &Span {
@@ -44,15 +40,42 @@ pub(super) fn fit_points(m: &Measured, scene: &Scene, target: Target) -> Vec<usi
             t_end: None,
         },
     );
-    let impacts: Vec<f64> = sol
-        .events
-        .iter()
-        .filter(|e| e.kind == crate::physics::solution::EventKind::Collision)
-        .map(|e| e.t)
-        .collect();
+    let near = NearImpacts::of(&m.t, &sol);
     (0..m.t.len())
-        .filter(|&i| impacts.iter().all(|&a| (m.t[i] - a).abs() >= frame))
+        .filter(|&i| !near.straddles(m.t[i]))
         .collect()
+}
+
+/// The frames a velocity fit leaves out: those within one frame interval (the
+/// shortest of the series) of an impact of the model, where the derived velocity
+/// straddles the jump and measures neither side of it.
+#[derive(Clone, Debug)]
+pub struct NearImpacts {
+    frame: f64,
+    impacts: Vec<f64>,
+}
+
+impl NearImpacts {
+    /// For the frame times `t` (sorted) against the impacts of `sol`.
+    pub fn of(t: &[f64], sol: &Solution) -> NearImpacts {
+        NearImpacts {
+            frame: t
+                .windows(2)
+                .map(|w| w[1] - w[0])
+                .fold(f64::INFINITY, f64::min),
+            impacts: sol
+                .events
+                .iter()
+                .filter(|e| e.kind == crate::physics::solution::EventKind::Collision)
+                .map(|e| e.t)
+                .collect(),
+        }
+    }
+
+    /// Whether the frame at time `t` is left out.
+    pub fn straddles(&self, t: f64) -> bool {
+        self.impacts.iter().any(|&a| (t - a).abs() < self.frame)
+    }
 }
 
 /// What a model fit compares with the data.

@@ -94,7 +94,7 @@ impl App {
         let p = ROWS[self.selected];
         match parse_typed(text, p.dim) {
             Ok(v) => self.set_value(p.key, v),
-            Err(e) => self.status = Status::Error(format!("not applied: {} {e}", p.label)),
+            Err(e) => self.status = Status::Error(format!("not applied: {} {e}", p.screen_label())),
         }
     }
 

@@ -13,7 +13,9 @@ use ratatui::symbols::border;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Borders, Clear, Paragraph, Widget, Wrap};
 
-use super::panel::{Ranked, block, by_priority, draw_lines, rows_by_priority, title_within, wrap};
+use super::panel::{
+    Ranked, block, by_priority, draw_lines, fitting, rows_by_priority, title_of, title_within, wrap,
+};
 use crate::physics::derived::Regime;
 use crate::physics::forces::{Instant, Sliding, instant};
 use crate::settings::units::{Dimension, show, significant};
@@ -55,12 +57,6 @@ fn footer(variants: &[String], area: Rect, theme: &Theme) -> Line<'static> {
         g.ellipsize(&fitting(&texts, area.width.saturating_sub(2)), room),
         theme.dim,
     )
-}
-
-/// A block's title: the first of `variants` that fits on the border of `area`.
-fn title_of(variants: &[&str], area: Rect, theme: &Theme) -> String {
-    let texts: Vec<String> = variants.iter().map(|t| theme.glyphs.text(t)).collect();
-    title_within(&fitting(&texts, area.width.saturating_sub(4)), area, theme)
 }
 
 /// What the side view's signs mean (the bottom of the side view, or of the chain
@@ -136,16 +132,6 @@ fn front_view(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         values,
     );
     draw_lines(lines, values, buf);
-}
-
-/// The first of `variants` that fits in `width` columns, else the last (shortest).
-fn fitting(variants: &[String], width: u16) -> String {
-    variants
-        .iter()
-        .find(|v| v.chars().count() <= usize::from(width))
-        .or(variants.last())
-        .cloned()
-        .unwrap_or_default()
 }
 
 /// The values beside the cross-section, most important first at 80×24: |N|, |F|,

@@ -8,6 +8,8 @@ use ratatui::widgets::{Block, Clear, Paragraph, Widget, Wrap};
 
 use super::panel::{block, wrap};
 use crate::settings::units::Dimension;
+use crate::study::fit::NearImpacts;
+use crate::study::preset::Origin;
 use crate::tui::app::export::export_step;
 use crate::tui::app::{App, Export, Field, Mode, Status};
 use crate::tui::keys::TABLE;
@@ -188,12 +190,30 @@ fn data_table(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         }
     };
     let track = app.lab.measured().is_some_and(|m| m.x.is_some());
-    let head = data_head(track, theme);
-    let count = app.lab.measured().map_or(0, |m| m.t.len());
+    let mut head = data_head(track, theme);
+    let times = app.lab.measured().map_or(&[][..], |m| &m.t[..]);
+    let count = times.len();
+    // The frames the velocity fit leaves out, marked and said why (a residual there
+    // is the jump, not a misfit).
+    let near = NearImpacts::of(times, &app.lab.solution);
+    if times.iter().any(|&t| near.straddles(t)) {
+        let why = if track {
+            "* left out of the velocity fit: within a frame of an impact, where v jumps (the position fit keeps it)"
+        } else {
+            "* left out of the fit: within a frame of an impact, where v jumps"
+        };
+        head.push(Line::from(Span::styled(format!(" {why}"), theme.dim)));
+    }
     let line = |i: usize| {
         data_row(app, i).map_or_else(Line::default, |r| {
-            let near = (r[0] - app.t).abs() < 1e-9;
-            let style = if near { theme.selected } else { theme.text };
+            let at_cursor = (r[0] - app.t).abs() < 1e-9;
+            let left_out = near.straddles(r[0]);
+            let style = match (at_cursor, left_out) {
+                (true, _) => theme.selected,
+                (false, true) => theme.dim,
+                (false, false) => theme.text,
+            };
+            let mark = if left_out { '*' } else { ' ' };
             let group = |k: usize, scale: fn(f64) -> f64| {
                 let [a, b, c] = [r[k], r[k + 1], r[k + 2]].map(|v| cell(scale(v)));
                 format!("{a} {b} {c}")
@@ -205,7 +225,7 @@ fn data_table(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             };
             let (v_cm, v_t) = (group(1, |v| v), group(4, |v| v));
             Line::from(Span::styled(
-                format!(" {:>+7.4} {x}{v_cm}   {v_t}", r[0]),
+                format!("{mark}{:>+7.4} {x}{v_cm}   {v_t}", r[0]),
                 style,
             ))
         })
@@ -272,7 +292,20 @@ fn preset_picker(app: &App, selected: usize, area: Rect, buf: &mut Buffer, theme
                 theme.text
             };
             let mark = if i == selected { g.selected } else { " " };
-            let text = format!("{mark}{:<name_width$}  {}", p.name, p.description);
+            // A file of the user's named like a built-in one: both are listed, and
+            // this row loads the file (`--preset NAME` finds the built-in).
+            let twin = matches!(p.origin, Origin::File(_))
+                && app
+                    .library
+                    .presets
+                    .iter()
+                    .any(|q| q.origin == Origin::BuiltIn && q.name == p.name);
+            let tag = if twin {
+                "[your file, named like a built-in] "
+            } else {
+                ""
+            };
+            let text = format!("{mark}{:<name_width$}  {tag}{}", p.name, p.description);
             Line::from(Span::styled(g.ellipsize(&text, room), style))
         })
         .collect();
@@ -306,12 +339,11 @@ fn save_prompt(app: &App, field: &Field, area: Rect, buf: &mut Buffer, theme: &T
             } else {
                 " letters, digits, - _ .".into()
             },
-            if field.is_suggestion() {
-                " Enter saves; typing replaces the name, ← → edit it; Esc cancels".into()
-            } else {
-                " Enter saves, Esc cancels".into()
-            },
-        ],
+            " Enter saves, Esc cancels".into(),
+        ]
+        .into_iter()
+        .chain(suggestion_note(field))
+        .collect::<Vec<_>>(),
         area,
         buf,
         theme,
@@ -334,7 +366,7 @@ fn export_prompt(
             (
                 "Export the run as CSV",
                 format!(
-                    " its scene, then t and x, v, u of both balls (SI) every {}",
+                    " its scene, then t, x, v, u, both balls, every {}; --data loads it",
                     crate::settings::units::show(dt, crate::settings::units::Dimension::Time)
                 ),
             )
@@ -359,11 +391,21 @@ fn export_prompt(
                 format!(" in {} unless a path is given", app.export_dir.display())
             },
             " Enter writes (replacing a file of that name), Esc cancels".into(),
-        ],
+        ]
+        .into_iter()
+        .chain(suggestion_note(field))
+        .collect::<Vec<_>>(),
         area,
         buf,
         theme,
     );
+}
+
+/// While a prompt holds its suggested name untouched: how to keep or replace it.
+fn suggestion_note(field: &Field) -> Option<String> {
+    field
+        .is_suggestion()
+        .then(|| " typing replaces the suggested name; ← → edit it".into())
 }
 
 /// Asks before a save replaces the preset file `name`.
