@@ -828,6 +828,29 @@ fn answer_text(r: Regime) -> &'static str {
     }
 }
 
+/// Where the question of `lines` lines is drawn on a screen of `area`.
+fn question_rect(area: Rect, lines: usize) -> Rect {
+    let w = 52.min(area.width.saturating_sub(2));
+    let h = (lines as u16 + 4).min(area.height);
+    Rect {
+        x: area.x + (area.width - w) / 2,
+        y: area.y + (area.height - h) / 2,
+        width: w,
+        height: h,
+    }
+}
+
+/// The answer (its key) on screen cell (`column`, `row`) of the question on a screen
+/// of `area`, if one is there (what a click answers): the answers are its 3rd to 5th
+/// lines, none of them wrapped.
+pub fn answer_at(area: Rect, column: u16, row: u16) -> Option<char> {
+    // The title, a blank line, the answers, a blank line, the note.
+    let rect = question_rect(area, ANSWERS.len() + 4);
+    let inside = column > rect.x && column + 1 < rect.right();
+    let i = usize::from(row.checked_sub(rect.y + 3)?);
+    ANSWERS.get(i).filter(|_| inside).map(|(key, _)| *key)
+}
+
 /// The question before the impact (Mode::Predict).
 pub fn question(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let g = theme.glyphs;
@@ -855,14 +878,7 @@ pub fn question(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         g.text(&format!("{b}; then it plays and explains. Esc cancels.")),
         theme.dim,
     ));
-    let w = 52.min(area.width.saturating_sub(2));
-    let h = (lines.len() as u16 + 4).min(area.height);
-    let rect = Rect {
-        x: area.x + (area.width - w) / 2,
-        y: area.y + (area.height - h) / 2,
-        width: w,
-        height: h,
-    };
+    let rect = question_rect(area, lines.len());
     Clear.render(rect, buf);
     Paragraph::new(lines)
         .wrap(Wrap { trim: false })

@@ -107,7 +107,7 @@ fn help_lines(width: usize, theme: &Theme) -> Vec<Line<'static>> {
             lines.push(Line::from(spans));
         }
     }
-    let mouse = "Mouse: click a parameter to select it, scroll on it to change it; click or drag on the chart to seek.";
+    let mouse = "Mouse: click a parameter to select it, scroll on it to change it; click or drag on the chart to seek; click a preset to select it, again to load it.";
     for row in wrap(Line::from(format!(" {mouse}")), width) {
         lines.push(row.style(theme.dim));
     }
@@ -268,6 +268,23 @@ fn help(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     scrolling(app, title, Vec::new(), source, (area, width), buf, theme);
 }
 
+/// Where the preset picker is drawn on a screen of `area`, and how many of its rows
+/// show.
+fn picker_rect(app: &App, area: Rect) -> (Rect, usize) {
+    let n = app.library.presets.len();
+    let rect = centered(area, area.width.saturating_sub(4), n as u16 + 2);
+    (rect, n.min(usize::from(rect.height.saturating_sub(2))))
+}
+
+/// The preset under screen cell (`column`, `row`) of the picker on a screen of
+/// `area`, if a row of it is there (what a click picks).
+pub fn picker_row_at(app: &App, area: Rect, column: u16, row: u16) -> Option<usize> {
+    let (rect, shown) = picker_rect(app, area);
+    let inside = column > rect.x && column + 1 < rect.right() && row > rect.y;
+    let i = usize::from(row.checked_sub(rect.y + 1)?);
+    (inside && i < shown).then_some(i)
+}
+
 /// The presets to load, one row each with the `selected` one marked.
 fn preset_picker(app: &App, selected: usize, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let g = theme.glyphs;
@@ -310,7 +327,7 @@ fn preset_picker(app: &App, selected: usize, area: Rect, buf: &mut Buffer, theme
         })
         .collect();
     popup(
-        "Presets  (Enter loads, Esc or q closes)",
+        "Presets  (Enter or a second click loads, Esc or q closes)",
         lines,
         area,
         area.width.saturating_sub(4),
