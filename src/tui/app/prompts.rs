@@ -16,11 +16,10 @@ impl App {
             Action::Down | Action::NextParam => self.mode = Mode::Picker((i + 1) % n),
             // A click: on another preset selects it, on the selected one loads it (a
             // double click does both).
-            Action::Select(j) if j != i => {
-                if j < self.library.presets.len() {
-                    self.mode = Mode::Picker(j);
-                }
+            Action::Select(j) if j != i && j < self.library.presets.len() => {
+                self.mode = Mode::Picker(j);
             }
+            Action::Select(j) if j != i => {}
             Action::Confirm | Action::Edit | Action::Select(_) => {
                 self.mode = Mode::Normal;
                 if let Some(p) = self.library.presets.get(i).cloned() {
