@@ -76,6 +76,19 @@ impl NearImpacts {
     pub fn straddles(&self, t: f64) -> bool {
         self.impacts.iter().any(|&a| (t - a).abs() < self.frame)
     }
+
+    /// Whether any frame of `t` (sorted) is left out: the frames nearest each impact
+    /// are looked at, not every frame (a series may hold a million).
+    pub fn any_in(&self, t: &[f64]) -> bool {
+        self.impacts.iter().any(|&a| {
+            let i = t.partition_point(|&x| x < a);
+            [i.checked_sub(1), Some(i)]
+                .into_iter()
+                .flatten()
+                .filter_map(|k| t.get(k))
+                .any(|&x| self.straddles(x))
+        })
+    }
 }
 
 /// What a model fit compares with the data.
@@ -594,4 +607,29 @@ pub(super) fn least_squares(
         }
     }
     Ok(p)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::NearImpacts;
+
+    #[test]
+    fn any_in_agrees_with_every_frame_looked_at() {
+        let t: Vec<f64> = (0..50).map(|i| -0.2 + 0.02 * f64::from(i)).collect();
+        for impacts in [
+            vec![],
+            vec![0.0],
+            vec![0.3, 0.61],
+            vec![-1.0, 5.0],
+            vec![-0.21],
+            vec![0.79],
+        ] {
+            let near = NearImpacts {
+                frame: 0.02 - 1e-12,
+                impacts: impacts.clone(),
+            };
+            let every = t.iter().any(|&x| near.straddles(x));
+            assert_eq!(near.any_in(&t), every, "{impacts:?}");
+        }
+    }
 }

@@ -200,7 +200,7 @@ fn data_table(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     // The frames the velocity fit leaves out, marked and said why (a residual there
     // is the jump, not a misfit).
     let near = NearImpacts::of(times, &app.lab.solution);
-    if times.iter().any(|&t| near.straddles(t)) {
+    if near.any_in(times) {
         let why = if track {
             "* left out of the velocity fit: within a frame of an impact, where v jumps (the position fit keeps it)"
         } else {
