@@ -269,6 +269,10 @@ fn impact_and_data_lines(app: &App, theme: &Theme) -> Ranked<'static> {
         )),
         None => {}
     }
+    // Data of another groove are never shown without saying so.
+    if let Some(other) = &app.lab.other_groove {
+        lines.push((6, Line::from(Span::styled(other.describe(), theme.error))));
+    }
     lines
 }
 
