@@ -199,9 +199,21 @@ impl Lab {
         self.edit(Edit::SpanEnd(end))
     }
 
-    /// Puts `edit` on the app's layer if the scene stays valid.
+    /// Puts `edit` on the app's layer if the scene stays valid. Values or a span end
+    /// that leave the scene, its start and how its span ends as they are add no layer
+    /// entry (a repeated key is not a change for undo to take back; the shown end
+    /// follows from these).
     fn edit(&mut self, edit: Edit) -> Result<(), SceneError> {
+        let may_repeat = matches!(edit, Edit::Values(_) | Edit::SpanEnd(_));
         self.settings.push(edit);
+        if may_repeat
+            && let Ok((scene, span, end)) = self.settings.settle()
+            && (scene, span.t_start, end)
+                == (self.now.scene, self.now.span.t_start, self.now.span_end)
+        {
+            self.settings.undo();
+            return Ok(());
+        }
         let built = self.rebuild();
         if built.is_err() {
             self.settings.undo();

@@ -467,6 +467,12 @@ impl Param {
         }
     }
 
+    /// The row's label as the app's screen writes it, in messages too: `mu` as μ (an
+    /// ASCII screen spells it back as `mu`).
+    pub fn screen_label(&self) -> String {
+        self.label.replace("mu", "μ")
+    }
+
     /// True for a row that holds a value of its own in a layer; false for one that
     /// sets others (`mass` sets both masses).
     pub fn is_own(&self) -> bool {

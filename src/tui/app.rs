@@ -120,8 +120,17 @@ impl App {
 
     /// Sets a parameter if the scene stays valid; otherwise says why in the status line.
     pub fn set_value(&mut self, key: Key, value: f64) {
+        let edits = self.lab.settings().edits().len();
         match self.lab.set(key, value) {
-            Ok(()) => self.applied(key),
+            Ok(()) => {
+                self.applied(key);
+                // The same value again is no change (and nothing for `u` to undo).
+                if let Status::Info(done) = &self.status
+                    && self.lab.settings().edits().len() == edits
+                {
+                    self.status = Status::Info(format!("{done} (unchanged)"));
+                }
+            }
             // A smaller R that the groove's b no longer fits: b is what to change first.
             Err(SceneError::OutOfRange { name, .. })
                 if key == Key::Radius && name == Key::Width.param().symbol =>
@@ -151,7 +160,7 @@ impl App {
     fn applied(&mut self, key: Key) {
         let sol = &self.lab.solution;
         self.t = self.t.clamp(sol.t_start, sol.t_end);
-        let label = key.param().label;
+        let label = key.param().screen_label();
         self.status = Status::Info(format!("{label} = {}", self.shown_value(key)));
         let s = &self.lab.scene;
         if key == Key::V0 && s.left.v0 == s.right.v0 {

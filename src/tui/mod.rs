@@ -26,7 +26,7 @@ use ratatui::crossterm::event::{
 use ratatui::crossterm::{cursor, execute};
 
 use crate::lab::jobs::Waker;
-use app::{Action, App, FPS};
+use app::{Action, App, FPS, Mode};
 use theme::{Glyphs, Theme};
 
 /// The theme for this terminal: NO_COLOR (any value) asks for no colours.
@@ -230,9 +230,43 @@ fn on_terminal(
     })
 }
 
-/// A click or drag on the chart seeks there; a click on a parameter selects it, the
-/// wheel over one nudges it. True if anything changed.
-fn on_mouse(app: &mut App, area: ratatui::layout::Rect, theme: &Theme, m: MouseEvent) -> bool {
+/// What the mouse does: over an open popup, only the popup's part (a click on a
+/// preset selects it and a click on the selected one loads it, a click on an answer
+/// answers, the wheel moves through the list or scrolls); on the main screen a click
+/// or drag on the chart seeks there, a click on a parameter selects it, the wheel over
+/// one nudges it. True if anything changed.
+pub fn on_mouse(app: &mut App, area: ratatui::layout::Rect, theme: &Theme, m: MouseEvent) -> bool {
+    let action = match app.mode {
+        Mode::Normal => return on_mouse_main(app, area, theme, m),
+        _ => on_mouse_popup(app, area, m),
+    };
+    match action {
+        Some(action) => {
+            app.apply(action);
+            true
+        }
+        None => false,
+    }
+}
+
+/// The action of a mouse event over an open popup; prompts take none (a click must
+/// not end the typing).
+fn on_mouse_popup(app: &App, area: ratatui::layout::Rect, m: MouseEvent) -> Option<Action> {
+    let click = m.kind == MouseEventKind::Down(MouseButton::Left);
+    match (&app.mode, m.kind) {
+        (Mode::Picker(_), _) if click => {
+            view::picker_row_at(app, area, m.column, m.row).map(Action::Select)
+        }
+        (Mode::Predict, _) if click => view::answer_at(area, m.column, m.row).map(Action::Type),
+        (Mode::Picker(_) | Mode::Help | Mode::Table, MouseEventKind::ScrollUp) => Some(Action::Up),
+        (Mode::Picker(_) | Mode::Help | Mode::Table, MouseEventKind::ScrollDown) => {
+            Some(Action::Down)
+        }
+        _ => None,
+    }
+}
+
+fn on_mouse_main(app: &mut App, area: ratatui::layout::Rect, theme: &Theme, m: MouseEvent) -> bool {
     let seek = match m.kind {
         MouseEventKind::Down(MouseButton::Left) | MouseEventKind::Drag(MouseButton::Left) => {
             view::chart_time_at_in(app, area, theme, m.column, m.row)

@@ -286,7 +286,8 @@ fn data_follow_the_scene_when_it_changes_in_the_lab() {
 }
 
 #[test]
-fn the_students_file_is_named_on_the_chart_where_there_is_room() {
+fn the_students_file_is_named_once_on_the_status_line_not_in_the_chart_title() {
+    // Seen: the chart's title repeated the file name the status line gives.
     let at = |size: (u16, u16)| {
         let args = RenderArgs {
             at: Some(0.1),
@@ -297,29 +298,19 @@ fn the_students_file_is_named_on_the_chart_where_there_is_room() {
         let s = scene(SceneSpec::default());
         render_with(&s, &data(|_| {}), &args, false, no_user_presets()).unwrap()
     };
-    let wide = at((200, 60));
-    assert!(
-        wide.contains("v_cm(t) and v_t(t), left ball, data paper-b4.9-tracker.txt  [b] switches"),
-        "{wide}"
-    );
-    // Where the name would push the key hint out, the title keeps the hint.
-    let narrow = at((120, 40));
-    assert!(narrow.contains("left ball  [b] switches"), "{narrow}");
-    // A preset's own data are not the user's file: no name.
-    let paper = render_with(
-        &scene(SceneSpec::default()),
-        &DataArgs::default(),
-        &RenderArgs {
-            at: Some(0.1),
-            size: (200, 60),
-            keys: None,
-            output: None,
-        },
-        false,
-        no_user_presets(),
-    )
-    .unwrap();
-    assert!(paper.contains("left ball  [b] switches"), "{paper}");
+    for size in [(200, 60), (120, 40), (80, 24)] {
+        let screen = at(size);
+        assert_eq!(
+            screen.matches("paper-b4.9-tracker.txt").count(),
+            1,
+            "{screen}"
+        );
+        let status = screen.lines().nth(usize::from(size.1) - 2).unwrap();
+        assert!(status.ends_with("paper-b4.9-tracker.txt"), "{status}");
+    }
+    assert!(at((120, 40)).contains("╭ v_cm(t) and v_t(t), left ball  [b] switches ─"));
+    // At 80 columns the title is a whole wording, not one cut short.
+    assert!(at((80, 24)).contains("╭ v_cm(t) and v_t(t), left ball  [b] ─"));
 }
 
 /// Dropping the data forgets their fit: it is neither shown nor applied afterwards

@@ -21,7 +21,7 @@ use groovelab::study::preset::Preset;
 use groovelab::tui::app::{App, Status};
 use serde_json::Value;
 
-use crate::common::{self, press, rendered};
+use crate::common::{self, press, rendered, select, text};
 
 /// The inner layers in order; everything else (`input`, `output`, `signals`, `cli`,
 /// `tui`) is an edge and may use them all.
@@ -531,10 +531,12 @@ fn u_undoes_the_last_change_and_r_resets_all_to_the_preset() {
     assert_eq!(a.lab.scene.mu, fresh.mu, "μ_k back");
     assert!(a.lab.value(Key::Width) < b, "b still changed");
     assert!(
-        matches!(&a.status, Status::Info(s) if s.starts_with("undone: mu_k = ")),
+        matches!(&a.status, Status::Info(s) if s.starts_with("undone: μ_k = 0.17 ")),
         "{:?}",
         a.status
     );
+    // As the parameter row writes it: μ_k, and mu_k on an ASCII screen.
+    assert!(text(&a, (120, 40), true).contains("undone: mu_k = 0.17 "));
     press(&mut a, "u");
     assert_eq!(a.lab.scene, fresh, "exactly the preset's scene again");
     // The span key is an edit too; R drops every edit.
@@ -570,6 +572,40 @@ fn u_undoes_the_last_change_and_r_resets_all_to_the_preset() {
     assert_eq!(a.lab.span_end, end);
     press(&mut a, "u");
     assert_eq!(a.status, Status::Info("nothing to undo".into()));
+}
+
+#[test]
+fn a_repeat_that_changes_nothing_adds_no_undo_step() {
+    // Seen: `a` pressed twice made two undo steps for one change.
+    let mut a = rendered(
+        &scene(SceneSpec::default()),
+        &data(&[]),
+        None,
+        Some("f a a"),
+        library(),
+    );
+    let fitted = a.lab.scene.mu;
+    assert_ne!(fitted, 0.17, "the fit moved μ_k");
+    assert_eq!(
+        a.lab.settings().edits().len(),
+        1,
+        "{:?}",
+        a.lab.settings().edits()
+    );
+    assert!(
+        matches!(&a.status, Status::Info(s) if s.starts_with("the fit is in the scene already: μ_k = ")),
+        "{:?}",
+        a.status
+    );
+    press(&mut a, "u");
+    assert_eq!(a.lab.scene.mu, 0.17, "one u takes the fit back");
+    // The same typed value, and the span key's choice again, are no change either.
+    select(&mut a, Key::Width);
+    press(&mut a, "enter 4 . 9 enter");
+    assert_eq!(a.status, Status::Info("b = 4.9 cm (unchanged)".into()));
+    assert!(a.lab.settings().edits().is_empty());
+    press(&mut a, "right enter 4 . 9 enter");
+    assert_eq!(a.lab.settings().edits().len(), 2, "a real change is a step");
 }
 
 #[test]

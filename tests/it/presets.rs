@@ -7,6 +7,7 @@ use groovelab::physics::closed_form as cf;
 use groovelab::physics::model;
 use groovelab::settings::spec::SceneSpec;
 use groovelab::study::preset::Preset;
+use groovelab::tui::app::Library;
 use serde_json::Value;
 
 use crate::common::scene_of;
@@ -278,5 +279,22 @@ fn presets_marks_a_user_preset_that_a_built_in_one_hides() {
         "{}",
         lines[1]
     );
+    // The app's picker lists both too, and tells the file's row from the built-in's.
+    let mut app = crate::common::app("paper-b4.9", Library::at(Some(dir.clone())));
+    crate::common::press(&mut app, "p");
+    for ascii in [false, true] {
+        let screen = crate::common::text(&app, (120, 40), ascii);
+        let rows: Vec<&str> = screen
+            .lines()
+            .filter(|l| l.contains("paper-b4.9  "))
+            .collect();
+        assert_eq!(rows.len(), 2, "{screen}");
+        assert!(!rows[0].contains("[your file"), "{}", rows[0]);
+        assert!(
+            rows[1].contains("  [your file, named like a built-in] Paper"),
+            "{}",
+            rows[1]
+        );
+    }
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -60,3 +60,46 @@ fn every_console_example_prints_what_the_readme_shows() {
         .env("NO_COLOR", "1")
         .case(dir.join("README.md"));
 }
+
+/// The README's screens are tests too: each ```text block followed by
+/// "(`groovelab render …` prints exactly this.)" is what that command prints now.
+#[test]
+fn every_screen_in_the_readme_is_what_render_prints() {
+    let readme =
+        fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md")).unwrap();
+    let lines: Vec<&str> = readme.lines().collect();
+    let mut checked = 0;
+    let mut i = 0;
+    while i < lines.len() {
+        if lines[i] != "```text" {
+            i += 1;
+            continue;
+        }
+        let end = i + 1 + lines[i + 1..].iter().position(|l| *l == "```").unwrap();
+        let block = &lines[i + 1..end];
+        let said = lines[end + 1..].iter().take(2).find_map(|l| {
+            let rest = l.strip_prefix("(`groovelab ")?;
+            rest.strip_suffix("` prints exactly this.)")
+        });
+        if let Some(args) = said {
+            let args: Vec<&str> = args.split_whitespace().collect();
+            let out = crate::common::groovelab(&args);
+            assert!(out.status.success(), "{args:?}");
+            let printed = String::from_utf8(out.stdout).unwrap();
+            let printed: Vec<&str> = printed.lines().collect();
+            assert!(
+                printed == block,
+                "README.md line {}: `groovelab {}` prints\n{}",
+                i + 2,
+                args.join(" "),
+                printed.join("\n")
+            );
+            checked += 1;
+        }
+        i = end + 1;
+    }
+    assert!(
+        checked >= 2,
+        "the main screen and the Forces view are checked"
+    );
+}

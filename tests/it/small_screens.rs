@@ -259,3 +259,22 @@ fn the_forces_view_reads_whole_at_80_by_24() {
         }
     }
 }
+
+#[test]
+fn every_panel_title_is_whole_at_every_size() {
+    // Seen at 80×24: "v_cm(t) and v_t(t), left ball  [b]…"; a title takes the longest
+    // of its wordings that fits, never one cut short. (The Methods and Fit views'
+    // titles are in their snapshots, which compute their analyses once.)
+    for keys in ["", "x", "e", "b b", "g", "v"] {
+        let a = opened(Some("paper-b4.9"), &[], Some(0.1), Some(keys));
+        for size in SIZES {
+            for ascii in [false, true] {
+                let screen = text(&a, size, ascii);
+                let cut = if ascii { "... -" } else { "… ─" };
+                for top in screen.lines().filter(|l| l.contains(['╭', '├']) || ascii) {
+                    assert!(!top.contains(cut), "{keys:?} {size:?}: {top}\n{screen}");
+                }
+            }
+        }
+    }
+}

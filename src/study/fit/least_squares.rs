@@ -32,20 +32,56 @@ pub(super) fn fit_points(m: &Measured, scene: &Scene, target: Target, evals: &Ev
     if target == Target::Position {
         return (0..m.t.len()).collect();
     }
-    let frame =
-        m.t.windows(2)
-            .map(|w| w[1] - w[0])
-            .fold(f64::INFINITY, f64::min);
     let sol = evals.solve(scene, m.t[0].min(-1e-3));
-    let impacts: Vec<f64> = sol
-        .events
-        .iter()
-        .filter(|e| e.kind == crate::physics::solution::EventKind::Collision)
-        .map(|e| e.t)
-        .collect();
+    let near = NearImpacts::of(&m.t, &sol);
     (0..m.t.len())
-        .filter(|&i| impacts.iter().all(|&a| (m.t[i] - a).abs() >= frame))
+        .filter(|&i| !near.straddles(m.t[i]))
         .collect()
+}
+
+/// The frames a velocity fit leaves out: those within one frame interval (the
+/// shortest of the series) of an impact of the model, where the derived velocity
+/// straddles the jump and measures neither side of it.
+#[derive(Clone, Debug)]
+pub struct NearImpacts {
+    frame: f64,
+    impacts: Vec<f64>,
+}
+
+impl NearImpacts {
+    /// For the frame times `t` (sorted) against the impacts of `sol`.
+    pub fn of(t: &[f64], sol: &Solution) -> NearImpacts {
+        NearImpacts {
+            frame: t
+                .windows(2)
+                .map(|w| w[1] - w[0])
+                .fold(f64::INFINITY, f64::min),
+            impacts: sol
+                .events
+                .iter()
+                .filter(|e| e.kind == crate::physics::solution::EventKind::Collision)
+                .map(|e| e.t)
+                .collect(),
+        }
+    }
+
+    /// Whether the frame at time `t` is left out.
+    pub fn straddles(&self, t: f64) -> bool {
+        self.impacts.iter().any(|&a| (t - a).abs() < self.frame)
+    }
+
+    /// Whether any frame of `t` (sorted) is left out: the frames nearest each impact
+    /// are looked at, not every frame (a series may hold a million).
+    pub fn any_in(&self, t: &[f64]) -> bool {
+        self.impacts.iter().any(|&a| {
+            let i = t.partition_point(|&x| x < a);
+            [i.checked_sub(1), Some(i)]
+                .into_iter()
+                .flatten()
+                .filter_map(|k| t.get(k))
+                .any(|&x| self.straddles(x))
+        })
+    }
 }
 
 /// What a model fit compares with the data.
@@ -598,4 +634,29 @@ pub(super) fn least_squares(
         }
     }
     Ok(p)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::NearImpacts;
+
+    #[test]
+    fn any_in_agrees_with_every_frame_looked_at() {
+        let t: Vec<f64> = (0..50).map(|i| -0.2 + 0.02 * f64::from(i)).collect();
+        for impacts in [
+            vec![],
+            vec![0.0],
+            vec![0.3, 0.61],
+            vec![-1.0, 5.0],
+            vec![-0.21],
+            vec![0.79],
+        ] {
+            let near = NearImpacts {
+                frame: 0.02 - 1e-12,
+                impacts: impacts.clone(),
+            };
+            let every = t.iter().any(|&x| near.straddles(x));
+            assert_eq!(near.any_in(&t), every, "{impacts:?}");
+        }
+    }
 }

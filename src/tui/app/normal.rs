@@ -214,7 +214,7 @@ impl App {
                 keys.dedup();
                 let shown: Vec<String> = keys
                     .iter()
-                    .map(|&k| format!("{} = {}", k.param().label, self.shown_value(k)))
+                    .map(|&k| format!("{} = {}", k.param().screen_label(), self.shown_value(k)))
                     .collect();
                 shown.join(", ")
             }
@@ -475,6 +475,7 @@ impl App {
             changes.push((Key::Restitution, fitted.restitution));
         }
         // All or nothing: a fit is never left half applied.
+        let edits = self.lab.settings().edits().len();
         if let Err(e) = self.lab.set_all(&changes) {
             self.status = Status::Error(format!("fit not applied: {e}"));
             return;
@@ -487,7 +488,12 @@ impl App {
             .collect();
         let sol = &self.lab.solution;
         self.t = self.t.clamp(sol.t_start, sol.t_end);
-        self.status = Status::Info(format!("applied {which}: {}", applied.join(", ")));
+        // A second `a` changes nothing: no undo step, and it says so.
+        self.status = Status::Info(if self.lab.settings().edits().len() == edits {
+            format!("{which} is in the scene already: {}", applied.join(", "))
+        } else {
+            format!("applied {which}: {}", applied.join(", "))
+        });
     }
 
     /// The model fit `a` applies, and what to call it: of a position track the fit to

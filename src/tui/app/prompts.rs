@@ -14,7 +14,13 @@ impl App {
         match action {
             Action::Up => self.mode = Mode::Picker((i + n - 1) % n),
             Action::Down | Action::NextParam => self.mode = Mode::Picker((i + 1) % n),
-            Action::Confirm | Action::Edit => {
+            // A click: on another preset selects it, on the selected one loads it (a
+            // double click does both).
+            Action::Select(j) if j != i && j < self.library.presets.len() => {
+                self.mode = Mode::Picker(j);
+            }
+            Action::Select(j) if j != i => {}
+            Action::Confirm | Action::Edit | Action::Select(_) => {
                 self.mode = Mode::Normal;
                 if let Some(p) = self.library.presets.get(i).cloned() {
                     let (name, description) = (p.name.clone(), p.description.clone());
@@ -94,7 +100,7 @@ impl App {
         let p = ROWS[self.selected];
         match parse_typed(text, p.dim) {
             Ok(v) => self.set_value(p.key, v),
-            Err(e) => self.status = Status::Error(format!("not applied: {} {e}", p.label)),
+            Err(e) => self.status = Status::Error(format!("not applied: {} {e}", p.screen_label())),
         }
     }
 

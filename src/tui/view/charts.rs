@@ -45,9 +45,9 @@ fn event_lines(app: &App, balls: &[Who], theme: &Theme) -> Vec<VLine> {
         .collect()
 }
 
-/// The chart shown and its title (counted: a click or drag on the chart must not
-/// build it again, see [`ChartDrawn`]).
-fn chart(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
+/// The chart shown and its title's wordings, longest first (counted: a click or drag
+/// on the chart must not build it again, see [`ChartDrawn`]).
+fn chart(app: &App, area: Rect, theme: &Theme) -> (Vec<String>, Plot) {
     app.view_cache
         .charts_built
         .set(app.view_cache.charts_built.get() + 1);
@@ -61,8 +61,8 @@ fn chart(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
 }
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let (title, mut plot) = chart(app, area, theme);
-    let title = super::panel::title_within(&title, area, theme);
+    let (titles, mut plot) = chart(app, area, theme);
+    let title = super::panel::title_of(&titles, area, theme);
     let blk = block(title, theme);
     let inner = blk.inner(area);
     blk.render(area, buf);
@@ -119,8 +119,8 @@ pub fn time_at(app: &App, area: Rect, theme: &Theme, column: u16, row: u16) -> O
         .filter(|d| d.is_for(area, theme));
     let drawn = drawn.unwrap_or_else(|| {
         // Not drawn here yet (a caller without a screen): lay the chart out.
-        let (title, plot) = chart(app, area, theme);
-        ChartDrawn::of(&plot, area, block(title, theme).inner(area), theme)
+        let (_, plot) = chart(app, area, theme);
+        ChartDrawn::of(&plot, area, block("", theme).inner(area), theme)
     });
     let plot = drawn.data?;
     if row < plot.y || row >= plot.bottom() {
@@ -383,7 +383,7 @@ fn line_fit_marks(l: &LineFit, theme: &Theme) -> (Vec<Series>, Vec<VLine>) {
     (lines, ends)
 }
 
-fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
+fn velocities(app: &App, area: Rect, theme: &Theme) -> (Vec<String>, Plot) {
     let sol = &app.lab.solution;
     let columns = usize::from(area.width.saturating_sub(10));
     let samples = app.view_cache.samples(&app.lab, columns);
@@ -401,19 +401,8 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
     let mut series = pinned_series(app, columns, theme, &curves);
     series.extend(exact_velocities(&samples, &balls, theme));
     series.extend(overlay_velocities(app, &balls, columns, theme));
-    let mut data = String::new();
     if let Some(m) = app.lab.points.as_ref().filter(|_| balls.contains(&0)) {
         series.extend(measured_velocities(m, theme));
-        // The student's own file is named where its points are drawn (its file
-        // name, when the title has room for it beside the key hint).
-        if let Some(own) = app.lab.own_data() {
-            let mirrored = if own.series.mirrored() {
-                " (read mirrored)"
-            } else {
-                ""
-            };
-            data = format!(", data {}{mirrored}", file_name(&own.name));
-        }
     }
     let mut vlines = Vec::new();
     if let (true, State::Ready(Ok(f))) = (app.fit_view(), app.lab.fits()) {
@@ -436,26 +425,13 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
         x_ticks: None,
         y_ticks: None,
     };
-    let named = format!(" v_cm(t) and v_t(t), {which}{data}  [b] switches ");
-    let title = if named.chars().count() + 4 <= usize::from(area.width) {
-        named
-    } else {
-        format!(" v_cm(t) and v_t(t), {which}  [b] switches ")
-    };
-    (title, plot)
-}
-
-/// The last part of each path in `names` (the data may come as `a.txt + b.txt`).
-fn file_name(names: &str) -> String {
-    names
-        .split(" + ")
-        .map(|n| {
-            std::path::Path::new(n)
-                .file_name()
-                .map_or(n.into(), |f| f.to_string_lossy().into_owned())
-        })
-        .collect::<Vec<_>>()
-        .join(" + ")
+    // The file the points come from is named on the status line, in every view.
+    let titles = vec![
+        format!("v_cm(t) and v_t(t), {which}  [b] switches"),
+        format!("v_cm(t) and v_t(t), {which}  [b]"),
+        format!("v_cm, v_t, {which} [b]"),
+    ];
+    (titles, plot)
 }
 
 /// At most about `n` of `points`, evenly picked (markers one per two columns).
@@ -467,7 +443,7 @@ fn thin_to(points: Vec<(f64, f64)>, n: usize) -> Vec<(f64, f64)> {
 /// What the positions chart shows: lengths, in their display unit.
 const POSITION: Dimension = Dimension::Length;
 
-fn positions(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
+fn positions(app: &App, area: Rect, theme: &Theme) -> (Vec<String>, Plot) {
     let sol = &app.lab.solution;
     let columns = usize::from(area.width.saturating_sub(10));
     let samples = app.view_cache.samples(&app.lab, columns);
@@ -519,15 +495,17 @@ fn positions(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
         x_ticks: None,
         y_ticks: None,
     };
-    (
-        " x(t) of both balls  [x] back to velocities ".to_string(),
-        plot,
-    )
+    let titles = [
+        "x(t) of both balls  [x] back to velocities",
+        "x(t) of both balls  [x] velocities",
+        "x(t), both balls [x]",
+    ];
+    (titles.map(String::from).to_vec(), plot)
 }
 
 /// Energy against time: the kinetic parts and what friction, impacts and rolling
 /// resistance have taken so far, with their constant sum (the initial energy).
-fn energy(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
+fn energy(app: &App, area: Rect, theme: &Theme) -> (Vec<String>, Plot) {
     let sol = &app.lab.solution;
     let columns = usize::from(area.width.saturating_sub(10));
     let split = app.view_cache.energies(&app.lab, columns);
@@ -610,10 +588,10 @@ fn energy(app: &App, area: Rect, theme: &Theme) -> (String, Plot) {
         x_ticks: None,
         y_ticks: None,
     };
-    let title = if wide {
-        " Energy of both balls  [e] back to velocities "
-    } else {
-        " Energy, both balls  [e] velocities "
-    };
-    (title.to_string(), plot)
+    let titles = [
+        "Energy of both balls  [e] back to velocities",
+        "Energy, both balls  [e] velocities",
+        "Energy, both balls [e]",
+    ];
+    (titles.map(String::from).to_vec(), plot)
 }

@@ -13,7 +13,9 @@ use ratatui::symbols::border;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Borders, Clear, Paragraph, Widget, Wrap};
 
-use super::panel::{Ranked, block, by_priority, draw_lines, rows_by_priority, title_within, wrap};
+use super::panel::{
+    Ranked, block, by_priority, draw_lines, fitting, rows_by_priority, title_of, title_within, wrap,
+};
 use crate::physics::derived::Regime;
 use crate::physics::forces::{Instant, Sliding, instant};
 use crate::settings::units::{Dimension, show, significant};
@@ -55,12 +57,6 @@ fn footer(variants: &[String], area: Rect, theme: &Theme) -> Line<'static> {
         g.ellipsize(&fitting(&texts, area.width.saturating_sub(2)), room),
         theme.dim,
     )
-}
-
-/// A block's title: the first of `variants` that fits on the border of `area`.
-fn title_of(variants: &[&str], area: Rect, theme: &Theme) -> String {
-    let texts: Vec<String> = variants.iter().map(|t| theme.glyphs.text(t)).collect();
-    title_within(&fitting(&texts, area.width.saturating_sub(4)), area, theme)
 }
 
 /// What the side view's signs mean (the bottom of the side view, or of the chain
@@ -136,16 +132,6 @@ fn front_view(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         values,
     );
     draw_lines(lines, values, buf);
-}
-
-/// The first of `variants` that fits in `width` columns, else the last (shortest).
-fn fitting(variants: &[String], width: u16) -> String {
-    variants
-        .iter()
-        .find(|v| v.chars().count() <= usize::from(width))
-        .or(variants.last())
-        .cloned()
-        .unwrap_or_default()
 }
 
 /// The values beside the cross-section, most important first at 80×24: |N|, |F|,
@@ -846,6 +832,29 @@ fn answer_text(r: Regime) -> &'static str {
     }
 }
 
+/// Where the question of `lines` lines is drawn on a screen of `area`.
+fn question_rect(area: Rect, lines: usize) -> Rect {
+    let w = 52.min(area.width.saturating_sub(2));
+    let h = (lines as u16 + 4).min(area.height);
+    Rect {
+        x: area.x + (area.width - w) / 2,
+        y: area.y + (area.height - h) / 2,
+        width: w,
+        height: h,
+    }
+}
+
+/// The answer (its key) on screen cell (`column`, `row`) of the question on a screen
+/// of `area`, if one is there (what a click answers): the answers are its 3rd to 5th
+/// lines, none of them wrapped.
+pub fn answer_at(area: Rect, column: u16, row: u16) -> Option<char> {
+    // The title, a blank line, the answers, a blank line, the note.
+    let rect = question_rect(area, ANSWERS.len() + 4);
+    let inside = column > rect.x && column + 1 < rect.right();
+    let i = usize::from(row.checked_sub(rect.y + 3)?);
+    ANSWERS.get(i).filter(|_| inside).map(|(key, _)| *key)
+}
+
 /// The question before the impact (Mode::Predict).
 pub fn question(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let g = theme.glyphs;
@@ -873,14 +882,7 @@ pub fn question(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         g.text(&format!("{b}; then it plays and explains. Esc cancels.")),
         theme.dim,
     ));
-    let w = 52.min(area.width.saturating_sub(2));
-    let h = (lines.len() as u16 + 4).min(area.height);
-    let rect = Rect {
-        x: area.x + (area.width - w) / 2,
-        y: area.y + (area.height - h) / 2,
-        width: w,
-        height: h,
-    };
+    let rect = question_rect(area, lines.len());
     Clear.render(rect, buf);
     Paragraph::new(lines)
         .wrap(Wrap { trim: false })

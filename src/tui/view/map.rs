@@ -23,7 +23,16 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
 fn regime_map(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let g = theme.glyphs;
     let blk = block(
-        super::panel::title_within("Regime: b/R across, e up  [g] back", area, theme),
+        super::panel::title_of(
+            &[
+                "Regime: b/R across, e up  [g] back",
+                "Regime: b/R, e up  [g]",
+                "Regime b/R, e [g]",
+                "Regime [g]",
+            ],
+            area,
+            theme,
+        ),
         theme,
     );
     let inner = blk.inner(area);
@@ -103,7 +112,16 @@ fn regime_map(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
 
 fn paper_figure(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let blk = block(
-        super::panel::title_within("Paper fig.: a/(μ g) and D against b/R", area, theme),
+        super::panel::title_of(
+            &[
+                "Paper fig.: a/(μ g) and D against b/R",
+                "Paper fig.: a/(μ g), D vs b/R",
+                "Paper fig.: a/(μ g) and D",
+                "Paper fig.",
+            ],
+            area,
+            theme,
+        ),
         theme,
     );
     let inner = blk.inner(area);

@@ -53,13 +53,18 @@ fn work(axis: WorkAxis, r: &Row) -> f64 {
 
 pub fn render_diagram(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let axis = app.work_axis;
-    let (per_run, x_title) = match axis {
-        WorkAxis::Steps => ("steps per run", "steps"),
-        WorkAxis::RhsEvals => ("rhs evaluations per run", "rhs evals"),
-        WorkAxis::Time => ("time per run", "s"),
+    let (per_run, short, x_title) = match axis {
+        WorkAxis::Steps => ("steps per run", "steps", "steps"),
+        WorkAxis::RhsEvals => ("rhs evaluations per run", "rhs evals", "rhs evals"),
+        WorkAxis::Time => ("time per run", "time", "s"),
     };
-    let title = super::panel::title_within(
-        &format!(" Methods: max |v_cm - exact| against {per_run}  [X] axis  [c] back "),
+    let title = super::panel::title_of(
+        &[
+            format!("Methods: max |v_cm - exact| against {per_run}  [X] axis  [c] back"),
+            format!("Methods: error against {per_run}  [X] [c]"),
+            format!("Methods: error against {short}  [X]"),
+            format!("Methods: error against {short}"),
+        ],
         area,
         theme,
     );

@@ -13,8 +13,9 @@ mod methods;
 mod panel;
 mod params;
 
+pub use forces::answer_at;
 pub use params::param_at;
-pub use popups::data_rows;
+pub use popups::{data_rows, picker_row_at};
 mod popups;
 mod scene;
 mod status;

@@ -24,6 +24,26 @@ pub(crate) fn title_within(title: &str, area: Rect, theme: &Theme) -> String {
     format!(" {} ", theme.glyphs.ellipsize(title.trim(), room))
 }
 
+/// A block's title: the first of `variants` (longest first) that fits on the border
+/// of `area`, the last cut with an ellipsis if none does.
+pub(crate) fn title_of<S: AsRef<str>>(variants: &[S], area: Rect, theme: &Theme) -> String {
+    let texts: Vec<String> = variants
+        .iter()
+        .map(|t| theme.glyphs.text(t.as_ref()))
+        .collect();
+    title_within(&fitting(&texts, area.width.saturating_sub(4)), area, theme)
+}
+
+/// The first of `variants` that fits in `width` columns, else the last (shortest).
+pub(crate) fn fitting(variants: &[String], width: u16) -> String {
+    variants
+        .iter()
+        .find(|v| v.chars().count() <= usize::from(width))
+        .or(variants.last())
+        .cloned()
+        .unwrap_or_default()
+}
+
 /// "computing… 40 %" (or without a share when the total is unknown).
 pub(crate) fn progress_text(done: usize, total: usize) -> String {
     match (100 * done.min(total)).checked_div(total) {

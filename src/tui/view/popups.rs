@@ -8,6 +8,8 @@ use ratatui::widgets::{Block, Clear, Paragraph, Widget, Wrap};
 
 use super::panel::{block, wrap};
 use crate::settings::units::Dimension;
+use crate::study::fit::NearImpacts;
+use crate::study::preset::Origin;
 use crate::tui::app::export::export_step;
 use crate::tui::app::{App, Export, Field, Mode, Status};
 use crate::tui::keys::TABLE;
@@ -105,7 +107,7 @@ fn help_lines(width: usize, theme: &Theme) -> Vec<Line<'static>> {
             lines.push(Line::from(spans));
         }
     }
-    let mouse = "Mouse: click a parameter to select it, scroll on it to change it; click or drag on the chart to seek.";
+    let mouse = "Mouse: click a parameter to select it, scroll on it to change it; click or drag on the chart to seek; click a preset to select it, again to load it.";
     for row in wrap(Line::from(format!(" {mouse}")), width) {
         lines.push(row.style(theme.dim));
     }
@@ -192,12 +194,30 @@ fn data_table(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         }
     };
     let track = app.lab.measured().is_some_and(|m| m.x.is_some());
-    let head = data_head(track, theme);
-    let count = app.lab.measured().map_or(0, |m| m.t.len());
+    let mut head = data_head(track, theme);
+    let times = app.lab.measured().map_or(&[][..], |m| &m.t[..]);
+    let count = times.len();
+    // The frames the velocity fit leaves out, marked and said why (a residual there
+    // is the jump, not a misfit).
+    let near = NearImpacts::of(times, &app.lab.solution);
+    if near.any_in(times) {
+        let why = if track {
+            "* left out of the velocity fit: within a frame of an impact, where v jumps (the position fit keeps it)"
+        } else {
+            "* left out of the fit: within a frame of an impact, where v jumps"
+        };
+        head.push(Line::from(Span::styled(format!(" {why}"), theme.dim)));
+    }
     let line = |i: usize| {
         data_row(app, i).map_or_else(Line::default, |r| {
-            let near = (r[0] - app.t).abs() < 1e-9;
-            let style = if near { theme.selected } else { theme.text };
+            let at_cursor = (r[0] - app.t).abs() < 1e-9;
+            let left_out = near.straddles(r[0]);
+            let style = match (at_cursor, left_out) {
+                (true, _) => theme.selected,
+                (false, true) => theme.dim,
+                (false, false) => theme.text,
+            };
+            let mark = if left_out { '*' } else { ' ' };
             let group = |k: usize, scale: fn(f64) -> f64| {
                 let [a, b, c] = [r[k], r[k + 1], r[k + 2]].map(|v| cell(scale(v)));
                 format!("{a} {b} {c}")
@@ -209,7 +229,7 @@ fn data_table(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             };
             let (v_cm, v_t) = (group(1, |v| v), group(4, |v| v));
             Line::from(Span::styled(
-                format!(" {:>+7.4} {x}{v_cm}   {v_t}", r[0]),
+                format!("{mark}{:>+7.4} {x}{v_cm}   {v_t}", r[0]),
                 style,
             ))
         })
@@ -252,6 +272,23 @@ fn help(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     scrolling(app, title, Vec::new(), source, (area, width), buf, theme);
 }
 
+/// Where the preset picker is drawn on a screen of `area`, and how many of its rows
+/// show.
+fn picker_rect(app: &App, area: Rect) -> (Rect, usize) {
+    let n = app.library.presets.len();
+    let rect = centered(area, area.width.saturating_sub(4), n as u16 + 2);
+    (rect, n.min(usize::from(rect.height.saturating_sub(2))))
+}
+
+/// The preset under screen cell (`column`, `row`) of the picker on a screen of
+/// `area`, if a row of it is there (what a click picks).
+pub fn picker_row_at(app: &App, area: Rect, column: u16, row: u16) -> Option<usize> {
+    let (rect, shown) = picker_rect(app, area);
+    let inside = column > rect.x && column + 1 < rect.right() && row > rect.y;
+    let i = usize::from(row.checked_sub(rect.y + 1)?);
+    (inside && i < shown).then_some(i)
+}
+
 /// The presets to load, one row each with the `selected` one marked.
 fn preset_picker(app: &App, selected: usize, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let g = theme.glyphs;
@@ -276,12 +313,25 @@ fn preset_picker(app: &App, selected: usize, area: Rect, buf: &mut Buffer, theme
                 theme.text
             };
             let mark = if i == selected { g.selected } else { " " };
-            let text = format!("{mark}{:<name_width$}  {}", p.name, p.description);
+            // A file of the user's named like a built-in one: both are listed, and
+            // this row loads the file (`--preset NAME` finds the built-in).
+            let twin = matches!(p.origin, Origin::File(_))
+                && app
+                    .library
+                    .presets
+                    .iter()
+                    .any(|q| q.origin == Origin::BuiltIn && q.name == p.name);
+            let tag = if twin {
+                "[your file, named like a built-in] "
+            } else {
+                ""
+            };
+            let text = format!("{mark}{:<name_width$}  {tag}{}", p.name, p.description);
             Line::from(Span::styled(g.ellipsize(&text, room), style))
         })
         .collect();
     popup(
-        "Presets  (Enter loads, Esc or q closes)",
+        "Presets  (Enter or a second click loads, Esc or q closes)",
         lines,
         area,
         area.width.saturating_sub(4),
@@ -310,12 +360,11 @@ fn save_prompt(app: &App, field: &Field, area: Rect, buf: &mut Buffer, theme: &T
             } else {
                 " letters, digits, - _ .".into()
             },
-            if field.is_suggestion() {
-                " Enter saves; typing replaces the name, ← → edit it; Esc cancels".into()
-            } else {
-                " Enter saves, Esc cancels".into()
-            },
-        ],
+            " Enter saves, Esc cancels".into(),
+        ]
+        .into_iter()
+        .chain(suggestion_note(field))
+        .collect::<Vec<_>>(),
         area,
         buf,
         theme,
@@ -338,7 +387,7 @@ fn export_prompt(
             (
                 "Export the run as CSV",
                 format!(
-                    " its scene, then t and x, v, u of both balls (SI) every {}",
+                    " its scene, then t, x, v, u, both balls, every {}; --data loads it",
                     crate::settings::units::show(dt, crate::settings::units::Dimension::Time)
                 ),
             )
@@ -363,11 +412,21 @@ fn export_prompt(
                 format!(" in {} unless a path is given", app.export_dir.display())
             },
             " Enter writes (replacing a file of that name), Esc cancels".into(),
-        ],
+        ]
+        .into_iter()
+        .chain(suggestion_note(field))
+        .collect::<Vec<_>>(),
         area,
         buf,
         theme,
     );
+}
+
+/// While a prompt holds its suggested name untouched: how to keep or replace it.
+fn suggestion_note(field: &Field) -> Option<String> {
+    field
+        .is_suggestion()
+        .then(|| " typing replaces the suggested name; ← → edit it".into())
 }
 
 /// Asks before a save replaces the preset file `name`.

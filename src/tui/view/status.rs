@@ -30,7 +30,7 @@ pub(super) fn render(app: &App, status: Rect, hints: Rect, buf: &mut Buffer, the
     );
     let (message, style) = match (&app.mode, &app.status) {
         (Mode::Edit(_), _) => {
-            let prompt = typing_prompt(ROWS[app.selected]).replace("mu_k", "μ_k");
+            let prompt = typing_prompt(ROWS[app.selected]);
             buf.set_stringn(
                 status.x,
                 status.y,
@@ -195,7 +195,7 @@ fn typing_prompt(p: &Param) -> String {
         Dimension::Acceleration => "9.81",
         Dimension::Ratio => "",
     };
-    let name = p.label;
+    let name = p.screen_label();
     if unit.is_empty() {
         format!("{name}: a plain number (e.g. 0.17), Enter applies, Esc cancels")
     } else {
