@@ -40,7 +40,7 @@ sleep 0.2; tmux send-keys -t "$SESSION" q; sleep 0.3
 screen | grep -qF "Keys  (" && fail "q did not close the help"
 screen | grep -q "exit status" && fail "q in the help quit the app"
 tmux send-keys -t "$SESSION" p
-wait_for "Presets  (Enter loads"
+wait_for "Presets  (Enter or a second click loads"
 tmux send-keys -t "$SESSION" Down Enter
 wait_for "Billiard balls on a flat table"
 # Quit: exit status 0 and the shell's terminal back in canonical mode with echo.
