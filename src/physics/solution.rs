@@ -77,7 +77,7 @@ impl EventKind {
             EventKind::PureGliding => Some("gliding"),
             EventKind::PureSlipping => Some("slipping"),
             EventKind::Rest => Some("rest"),
-            EventKind::ZenoRest | EventKind::ZenoContact => Some("T-inf"),
+            EventKind::ZenoRest | EventKind::ZenoContact => Some("T∞"),
             EventKind::ContactStart | EventKind::ContactEnd => None,
         }
     }
