@@ -6,8 +6,10 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use groovelab::lab::{Lab, Settings as LabSettings};
 use groovelab::methods::{Method, Model, Observer, Settings, Y, integrate, start_state};
-use groovelab::physics::scene::{Ball, Scene};
+use groovelab::settings::params::Key;
+use groovelab::settings::spec::SceneSpec;
 use groovelab::study::compare::sweep;
 use groovelab::study::preset::Preset;
 
@@ -68,27 +70,33 @@ fn methods(c: &mut Criterion) {
         .collect();
     // The default scene and the costliest ones (issue: each within twice the
     // default's): a 10 kg right ball (span 2.25 s, cut at 2 s), a groove all but
-    // wedging (b = 5.4999 cm, thousands of impacts), μ = 1e-6 (span 147,000 s).
-    let heavy = Scene {
-        right: Ball {
-            mass: 10.0,
-            ..scene.right
-        },
-        ..scene
+    // wedging (b = 5.4999 cm, thousands of impacts), μ = 1e-6 (span 147,000 s). Each
+    // as `groovelab compare` takes it: the lab's snapshot of the preset under the
+    // flags, over the snapshot's span (which reaches the preset's measured series).
+    let snapshot = |values: SceneSpec| {
+        let preset = Preset::load("paper-b4.9").unwrap();
+        let lab = Lab::new(LabSettings::new(preset, values), None).unwrap();
+        (lab.scene, lab.span)
     };
     let scenes = [
-        ("default comparison, all methods (paper-b4.9)", scene),
-        ("--mass-right 10kg", heavy),
+        (
+            "default comparison, all methods (paper-b4.9)",
+            snapshot(SceneSpec::default()),
+        ),
+        (
+            "--mass-right 10kg",
+            snapshot(SceneSpec::default().with(Key::MassRight, 10.0)),
+        ),
         (
             "--width 5.4999cm",
-            Scene {
-                width: 0.054999,
-                ..scene
-            },
+            snapshot(SceneSpec::default().with(Key::Width, 0.054999)),
         ),
-        ("--mu 1e-6", Scene { mu: 1e-6, ..scene }),
+        (
+            "--mu 1e-6",
+            snapshot(SceneSpec::default().with(Key::Mu, 1e-6)),
+        ),
     ];
-    for (name, scene) in scenes {
+    for (name, (scene, span)) in scenes {
         whole.bench_function(name, |b| {
             b.iter(|| {
                 sweep(

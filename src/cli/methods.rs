@@ -4,8 +4,11 @@ use std::fmt::Write as _;
 
 use serde::Serialize;
 
-use super::args::{CompareArgs, CompareFormat, Format, MAX_SAMPLES, SceneArgs, SimulateArgs};
+use super::args::{
+    CompareArgs, CompareFormat, DataArgs, Format, MAX_SAMPLES, SceneArgs, SimulateArgs,
+};
 use super::error::{BadValue, CliError, Flag};
+use super::open::{lab, scene_of_data};
 use super::states::{csv_output, samples, state_header, state_row};
 use crate::methods::{self, Method, RunEnd, Settings, Y};
 use crate::physics::derived::Derived;
@@ -250,12 +253,30 @@ fn method_table(
 #[derive(Serialize)]
 struct CompareJson<'a> {
     scene: &'a Scene,
+    /// The span compared (the snapshot's; a run may be cut earlier, see `cut`).
+    span: Span,
     rows: &'a [Row],
 }
 
-/// `compare`: every method over its sweep, against the exact solution.
-pub(super) fn compare(scene_args: &SceneArgs, args: &CompareArgs) -> Result<String, CliError> {
-    let (_, scene, span) = scene_args.resolve()?;
+/// `compare`: every method over its sweep, against the exact solution, on the lab's
+/// snapshot of the scene the options give and over its span (the app's Methods view
+/// compares over the same one: a measured series, the preset's or `--data`, stretches
+/// it to the last measured point).
+pub(super) fn compare(
+    scene_args: &SceneArgs,
+    data: &DataArgs,
+    args: &CompareArgs,
+) -> Result<String, CliError> {
+    // As `fit`: a comparison on the default groove because a data file named none
+    // would be a silent guess, and compare has no status line to say so.
+    if let Some(path) = scene_of_data(scene_args, data) {
+        return Err(BadValue::DataWithoutScene {
+            path: path.to_path_buf(),
+        }
+        .into());
+    }
+    let lab = lab(scene_args, data)?;
+    let (scene, span) = (lab.scene, lab.span);
     let base = settings(None, None, args.epsilon)?;
     if let Some(path) = &args.output {
         crate::output::check_output(path)?;
@@ -284,6 +305,7 @@ pub(super) fn compare(scene_args: &SceneArgs, args: &CompareArgs) -> Result<Stri
         CompareFormat::Json => {
             let doc = CompareJson {
                 scene: &scene,
+                span,
                 rows: &rows,
             };
             let mut s = serde_json::to_string_pretty(&doc).expect("plain data serializes");

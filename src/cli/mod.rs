@@ -58,7 +58,9 @@ pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
             render(scene, &cli.data, args, cli.ascii)
         })
         .map(Outcome::Print),
-        Some(Command::Compare(args)) => methods::compare(&cli.scene, args).map(Outcome::Print),
+        Some(Command::Compare(args)) => {
+            methods::compare(scene, &cli.data, args).map(Outcome::Print)
+        }
         Some(Command::Fit(args)) => {
             fit::run(scene, &cli.scene, &cli.data, args).map(Outcome::Print)
         }
@@ -94,7 +96,7 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         None | Some(Command::Tui) => ("the app", true, true, true),
         Some(Command::Simulate(_)) => ("simulate", true, false, false),
         Some(Command::Render(_)) => ("render", true, true, true),
-        Some(Command::Compare(_)) => ("compare", true, false, false),
+        Some(Command::Compare(_)) => ("compare", true, true, false),
         Some(Command::Fit(_)) => ("fit", true, true, false),
         Some(Command::Sweep(_)) => ("sweep", true, false, false),
         Some(Command::Presets) => ("presets", false, false, false),
@@ -125,7 +127,7 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
     };
     let error = match (scene_given, data_flag) {
         (Some(id), _) if !scene => unused(id, "commands that take a scene"),
-        (_, Some(id)) if !data => unused(id, "fit, render and the app"),
+        (_, Some(id)) if !data => unused(id, "compare, fit, render and the app"),
         // Only --data gives these a file to read.
         (_, Some(id)) if d.data.is_empty() => Usage::WithoutData { flag: Flag(id) },
         _ if !ascii && cli.ascii => unused("ascii", "render and the app"),

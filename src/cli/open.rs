@@ -186,10 +186,11 @@ pub fn opened(scene_args: &SceneArgs, data: &DataArgs, library: Library) -> Resu
     Ok(app)
 }
 
-/// The one rule for data and their scene, for the app, `render` and `fit`: a data file
-/// names no scene, so the one it was measured in is given by a preset or the scene
-/// options. Without them, the file whose scene is missing: `fit` refuses, the app and
-/// `render` say which default the model uses and ask for R and b.
+/// The one rule for data and their scene, for the app, `render`, `compare` and `fit`:
+/// a data file names no scene, so the one it was measured in is given by a preset or
+/// the scene options. Without them, the file whose scene is missing: `fit` and
+/// `compare` refuse, the app and `render` say which default the model uses and ask for
+/// R and b.
 pub fn scene_of_data<'a>(scene_args: &SceneArgs, data: &'a DataArgs) -> Option<&'a Path> {
     let path = data.data.first()?;
     (!scene_args.names_a_scene()).then_some(path.as_path())

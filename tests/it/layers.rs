@@ -697,6 +697,94 @@ fn simulate_prints_the_apps_snapshot_of_the_same_scene_by_flags_or_keys() {
     }
 }
 
+/// `compare --methods exact --format json` on `scene` and `data`, in-process (the
+/// exact engine alone: a few solves, cheap).
+fn compare_exact(scene: &SceneArgs, data: &DataArgs) -> Value {
+    let mut args: Vec<String> = [
+        "groovelab",
+        "compare",
+        "--methods",
+        "exact",
+        "--format",
+        "json",
+    ]
+    .map(String::from)
+    .to_vec();
+    if let Some(p) = &scene.preset {
+        args.extend(["--preset".into(), p.clone()]);
+    }
+    for (key, value) in scene.values.given() {
+        // SI values with no unit are read in SI.
+        args.extend([format!("--{}", key.param().flag), format!("{value}")]);
+    }
+    for file in &data.data {
+        args.extend(["--data".into(), file.display().to_string()]);
+    }
+    let out = groovelab::cli::entry::main_with(&args.iter().map(Into::into).collect::<Vec<_>>());
+    assert_eq!(out.code, 0, "{args:?}: {}", out.stderr);
+    serde_json::from_str(&out.stdout).unwrap()
+}
+
+#[test]
+fn compare_compares_over_the_span_the_methods_view_does() {
+    // Every built-in preset, a scene by flags alone (the default preset under them),
+    // and a velocity file whose last point (0.64 s) lies past the critical scene's
+    // motion (it ends at about 0.33 s).
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let mut cases: Vec<(SceneArgs, DataArgs)> = Preset::built_in()
+        .iter()
+        .map(|p| (common::scene_of(&p.name, SceneSpec::default()), data(&[])))
+        .collect();
+    cases.push((
+        SceneArgs {
+            preset: None,
+            values: SceneSpec::default().with(Key::Width, 0.035),
+        },
+        data(&[]),
+    ));
+    cases.push((
+        common::scene_of("critical", SceneSpec::default()),
+        data(&[root.join("data/gs-b3.5cm.csv")]),
+    ));
+    let mut past_the_motion = 0;
+    for (scene, files) in &cases {
+        // The Methods view's rows are computed over the app's snapshot's span.
+        let app = rendered(scene, files, None, None, library());
+        let now = &app.lab;
+        let json = compare_exact(scene, files);
+        let name = format!("{:?} {:?}", scene.preset, files.data);
+        let read = |v: &Value| v.as_f64().unwrap();
+        let (t0, t1) = (read(&json["span"]["t_start"]), read(&json["span"]["t_end"]));
+        // The printed number read back: within an ulp or two.
+        assert!(
+            (t0 - now.span.t_start).abs() <= 4.0 * f64::EPSILON,
+            "{name}: {t0}"
+        );
+        let end = now.span.t_end.unwrap();
+        assert!(
+            (t1 - end).abs() <= 4.0 * f64::EPSILON * end,
+            "{name}: {t1} vs {end}"
+        );
+        // The exact row is the reference itself: no error at all.
+        let exact = &json["rows"][0];
+        assert_eq!(exact["method"], "exact", "{name}");
+        for err in ["err_v", "err_u", "err_final"] {
+            assert_eq!(read(&exact[err]), 0.0, "{name}: {err}");
+        }
+        let auto = groovelab::physics::scene::Span {
+            t_end: None,
+            ..now.span
+        };
+        let motion = groovelab::physics::engine::solve(&now.scene, &auto).t_end;
+        if end > motion + 1e-9 {
+            past_the_motion += 1;
+        }
+    }
+    // Measured series that reach past the motion are what this is about: paper-b3.5's
+    // own and the file on the critical scene at least.
+    assert!(past_the_motion >= 2, "{past_the_motion}");
+}
+
 #[test]
 fn u_after_picking_a_preset_brings_back_the_preset_its_edits_and_data() {
     // The command line's b and two edits on paper-b4.9 with its own data.

@@ -486,3 +486,81 @@ fn rounded_times_give_the_true_frame_rate() {
     let rate = l.found.unwrap().frame_rate;
     assert!((rate - 120.0).abs() < 0.05, "{rate}");
 }
+
+/// Issue 19: the line fits of a track (Logger Pro style, straight lines through the
+/// derived v_cm and v_t) counted their points as independent and alike; neighbours
+/// share frames and a point beside the impact is a one-sided fit of a few frames, far
+/// noisier than one inside the phase. Over seeded tracks of known truth (μ_k = 0.17,
+/// no rolling resistance: |a_cm| = μ_k g / k and |a_t| = 5 k μ_k g / 2 exactly while
+/// sliding), the impact anywhere between two frames, the 1σ of μ_k,cm and μ_k,t must
+/// hold the truth about 68 % of the time. The window is the sliding phase as the app
+/// takes it (the first frame after the impact to the last whose local fit ends before
+/// t'), here with the true t' so that only the line fit's ± is under test.
+#[test]
+fn the_line_fit_uncertainty_covers_the_truth() {
+    let s = scene("paper-b4.9");
+    let t_roll = groovelab::physics::engine::solve(&s, &Default::default())
+        .events
+        .iter()
+        .find(|e| e.t > 0.0 && e.kind == groovelab::physics::solution::EventKind::Rolling)
+        .unwrap()
+        .t;
+    // (frames/s, noise m, rim mark): 80 tracks of each kind.
+    let settings = [
+        (120.0, 3e-4, false),
+        (60.0, 1e-3, false),
+        (120.0, 3e-4, true),
+        (240.0, 1e-4, true),
+    ];
+    let per = 40;
+    // Where the impact falls between frames, different for each track (golden-ratio
+    // steps: evenly spread, no two alike).
+    let phase = |seed: usize| (0.5 + seed as f64 * 0.618_033_988_75).fract();
+    // Within 1σ: centre-only μ_k,cm; with a mark μ_k,cm and μ_k,t.
+    let (mut centre, mut marked_cm, mut marked_t) = (0, 0, 0);
+    for (k, &(fps, noise, mark)) in settings.iter().enumerate() {
+        for seed in 0..per {
+            let v = Video {
+                fps,
+                noise,
+                mark,
+                seed: 5000 + (k * per + seed) as u64,
+                from: -0.2 - phase(seed) / fps,
+                to: t_roll + 0.1,
+                ..Video::default()
+            };
+            let series = measured::prepare(
+                RawSeries::Positions(video::track(&s, &v)),
+                &Derive::default(),
+            )
+            .unwrap();
+            let half = series.found().unwrap().half_window;
+            let m = measured::for_scene(&series, &s).measured;
+            let l = fit::line_fit(&m, &s, (None, Some(t_roll - half - 0.5 / fps))).unwrap();
+            let inside = |mu: f64, se: f64| usize::from((mu - MU).abs() <= se);
+            if mark {
+                marked_cm += inside(l.mu_cm, l.mu_cm_se);
+                marked_t += inside(l.mu_t, l.mu_t_se);
+            } else {
+                centre += inside(l.mu_cm, l.mu_cm_se);
+            }
+        }
+    }
+    println!(
+        "within 1σ of 80: centre only {centre}, with a mark μ_k,cm {marked_cm}, μ_k,t {marked_t}"
+    );
+    // Binomial(80, 0.683): mean 54.6, standard deviation 4.2; 44 … 65 is ±2.5 of it (a
+    // calibrated ± fails one of the three counts with a chance of about 3 %, the same
+    // seeds every run). Measured: 57, 54 and 57; before, 21, 24 and 22 (σ from the
+    // line's own residuals instead of the track's scatter: 43, 53 and 58).
+    for (what, n) in [
+        ("centre-only μ_k,cm", centre),
+        ("marked μ_k,cm", marked_cm),
+        ("marked μ_k,t", marked_t),
+    ] {
+        assert!(
+            (44..=65).contains(&n),
+            "{what}: {n} of 80 line fits hold the truth within 1σ"
+        );
+    }
+}

@@ -80,6 +80,10 @@ pub struct Stencils {
     /// with the mark's x and y it moves the opposite way.
     pub mark_frames: Vec<(usize, f64, f64)>,
     pub v_t: Vec<Option<Stencil>>,
+    /// The scatter of one tracked coordinate, m (the centre's, from its third
+    /// differences over the whole track; the mark's taken alike): the σ of each
+    /// coordinate's noise that the stencils carry into the derived velocities.
+    pub scatter: f64,
 }
 
 impl Measured {

@@ -354,6 +354,7 @@ pub fn derive(
     let mut stencils = Stencils {
         centre_times: shifted(&ts),
         centre_sign: dir,
+        scatter: sigma,
         mark_times: spin.as_ref().map(|s| shifted(&s.at)).unwrap_or_default(),
         mark_frames: spin.as_ref().map_or_else(Vec::new, |s| {
             mark_frames(track, &rows, &s.valid, dir, spin_sign)
