@@ -33,6 +33,20 @@ struct FitJson<'a> {
     not_measured: Vec<NotMeasured>,
 }
 
+/// `fit --format json`: values the data do not determine null, times rounded.
+fn json_text(fit: FitJson) -> String {
+    let mut json = serde_json::to_value(fit).expect("plain data serializes");
+    for fit in ["model_fit", "position_fit"] {
+        if let Some(fit) = json.get_mut(fit) {
+            null_undetermined(fit);
+        }
+    }
+    round_times(&mut json);
+    let mut s = serde_json::to_string_pretty(&json).expect("plain data serializes");
+    s.push('\n');
+    s
+}
+
 /// A model fit's values that the data do not determine (listed in its
 /// `not_identified`, with why) are `null`, not a number that reads as fitted.
 fn null_undetermined(fit: &mut serde_json::Value) {
@@ -46,6 +60,35 @@ fn null_undetermined(fit: &mut serde_json::Value) {
         if let Some(v) = fit.get_mut(&name) {
             *v = serde_json::Value::Null;
         }
+    }
+}
+
+/// The times `fit` reports, s, rounded to the microsecond: they are frame times (and
+/// differences of them), whose meaning ends far above the last bits of a float
+/// (`0.17084999999999997` is the frame at 0.17085 s).
+fn round_times(json: &mut serde_json::Value) {
+    let round = |v: &mut serde_json::Value| {
+        if let Some(x) = v.as_f64() {
+            *v = serde_json::json!((x * 1e6).round() / 1e6);
+        }
+    };
+    for (part, key) in [
+        ("line_fit", "from"),
+        ("line_fit", "to"),
+        ("track", "impact_t"),
+        ("track", "half_window"),
+        ("track", "half_window_widened_from"),
+    ] {
+        if let Some(v) = json.get_mut(part).and_then(|p| p.get_mut(key)) {
+            round(v);
+        }
+    }
+    if let Some(later) = json
+        .get_mut("track")
+        .and_then(|t| t.get_mut("later_impacts"))
+        .and_then(|l| l.as_array_mut())
+    {
+        later.iter_mut().for_each(round);
     }
 }
 
@@ -127,24 +170,13 @@ pub fn run(
     let fits = fits.map_err(cancelled)?;
     let position = position.transpose().map_err(cancelled)?;
     let text = match args.format {
-        FitFormat::Json => {
-            let mut json = serde_json::to_value(FitJson {
-                scene: &scene,
-                fits: &fits,
-                position_fit: position.as_ref(),
-                track: found.as_ref(),
-                not_measured: not_measured(&fits),
-            })
-            .expect("plain data serializes");
-            for fit in ["model_fit", "position_fit"] {
-                if let Some(fit) = json.get_mut(fit) {
-                    null_undetermined(fit);
-                }
-            }
-            let mut s = serde_json::to_string_pretty(&json).expect("plain data serializes");
-            s.push('\n');
-            s
-        }
+        FitFormat::Json => json_text(FitJson {
+            scene: &scene,
+            fits: &fits,
+            position_fit: position.as_ref(),
+            track: found.as_ref(),
+            not_measured: not_measured(&fits),
+        }),
         FitFormat::Table => {
             let own = data.data.is_empty();
             let mut out = scene_line(preset, typed, scene_args, data, &scene);
@@ -257,6 +289,19 @@ fn line_fit_lines(out: &mut String, scene: &Scene, l: &LineFit, paper_data: bool
         "line fits {over}, t = {:.3} … {:.3} s ({} frames{hint})",
         l.from, l.to, l.points
     );
+    // A window reaching past the data is cut to them: said, not done quietly.
+    for (flag, asked, end) in l.cut_to_data() {
+        let (lies, data, window) = if flag == "from" {
+            ("before", "start", "starts")
+        } else {
+            ("past", "end", "ends")
+        };
+        let _ = writeln!(
+            out,
+            "  (--{flag} {} s lies {lies} the data, which {data} at t = {end:.3} s: the window {window} there)",
+            significant(asked, 4),
+        );
+    }
     let _ = writeln!(
         out,
         "{:<12} {:>14} {:>9} {:>11} {:>14} {:>9} {:>11}",
@@ -533,7 +578,7 @@ fn models_table(models: &[Candidate], positions: bool) -> String {
     let mut out = String::new();
     let _ = writeln!(
         out,
-        "\nwhich model the data support (fitted to the {}; AIC and BIC, lower is better; the simplest model within 2 of the lowest BIC whose values are all determined is named):",
+        "\nwhich model the data support (fitted to the {}; AIC and BIC, lower is better, listed by BIC, lowest first; the simplest model within 2 of the lowest BIC whose values are all determined is named):",
         if positions { "positions" } else { "velocities" }
     );
     // What AIC and BIC count as n: the points the residuals are worth.

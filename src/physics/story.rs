@@ -140,19 +140,34 @@ pub fn headline(sol: &Solution, derived: &Derived) -> String {
 }
 
 /// What an outcome means, in a few words: "the balls roll apart".
-pub fn outcome_says(outcome: Outcome, sol: &Solution, derived: &Derived) -> &'static str {
+pub fn outcome_says(outcome: Outcome, sol: &Solution, derived: &Derived) -> String {
+    // Without friction (μ_k = 0) nothing couples spin to translation: the centres
+    // stop, the balls do not, and their spin keeps its energy.
+    if outcome == Outcome::Rest && spins_at_the_end(sol) {
+        return format!(
+            "the balls stop moving along the groove; they keep spinning ({})",
+            joules(sol.energy_at(sol.t_end).rotational)
+        );
+    }
     match outcome {
-        // Without friction (μ_k = 0) nothing takes the spin: the centres stop, the
-        // balls do not.
-        Outcome::Rest if spins_at_the_end(sol) => "the centres stop; the balls keep spinning",
         // Without friction nothing rolls: they slide apart.
         Outcome::Depart if derived.left_after_impact.is_none() => "the balls move apart",
         Outcome::Depart => "the balls roll apart",
         Outcome::Together => "the pair moves on as one",
-        Outcome::Rest => "the balls stop",
         Outcome::Pressed => "friction holds them together",
         Outcome::Stopped => "they stop before they meet again",
         Outcome::Recollide => "they come back",
+        Outcome::Rest => "the balls stop",
+    }
+    .to_string()
+}
+
+/// An energy in J with two decimals, in mJ below 0.01 J (a small scene's spin).
+fn joules(e: f64) -> String {
+    if e.abs() >= 0.01 {
+        format!("{e:.2} J")
+    } else {
+        format!("{:.2} mJ", 1e3 * e)
     }
 }
 

@@ -539,6 +539,26 @@ fn the_line_fit_window_ends_with_the_data() {
     let to = json["line_fit"]["to"].as_f64().unwrap();
     // The last frame: 0.775 s in the file, less the impact at 0.1994 s.
     assert!(to < 0.58 && to > 0.57, "{to}");
+    // Times rounded to their meaning (a frame time, to the microsecond), not to the
+    // last bits of a float difference.
+    for t in [
+        &json["line_fit"]["from"],
+        &json["line_fit"]["to"],
+        &json["track"]["impact_t"],
+    ] {
+        let t = t.as_f64().unwrap();
+        assert_eq!(t, (t * 1e6).round() / 1e6, "{t}");
+        assert!(t.to_string().len() <= 9, "{t}");
+    }
+    // The table says the window was cut, and where the data end.
+    let out = groovelab(&[
+        "fit", "--data", &path, "--radius", "2.75cm", "--width", "4.9cm", "--mass", "167g", "--v0",
+        "0.8m/s", "--to", "5",
+    ]);
+    let text = String::from_utf8(out.stdout).unwrap();
+    let note =
+        format!("(--to 5 s lies past the data, which end at t = {to:.3} s: the window ends there)");
+    assert!(text.contains(&note), "{note}\n{text}");
 }
 
 #[test]
@@ -727,10 +747,18 @@ fn every_freed_value_is_reported_even_when_not_determined() {
     );
 }
 
-/// The verdict of each model fit, as the `fit` table's "verdict" row and the Fit
-/// view's "observed" row print it, for the flat-table scene on the example track's
+/// The models of `fit`'s table (with their BICs) and of the Fit view, in the order
+/// each lists them (names without blanks).
+type Listed = (Vec<(String, f64)>, Vec<String>);
+
+/// The verdict of each model fit, as the `fit` table's and the Fit view's "verdict"
+/// rows print it, for the flat-table scene on the example track's
 /// centre (the position fit runs μ_k to the edge of its range).
-fn verdicts_of_flat_table() -> (Vec<String>, Vec<String>, groovelab::study::fit::Agreement) {
+/// Also how the two list the models ([`Listed`]).
+fn flat_table() -> (
+    (Vec<String>, Vec<String>, groovelab::study::fit::Agreement),
+    Listed,
+) {
     use crate::common::{no_user_presets, rendered, scene_of, text};
     use groovelab::cli::DataArgs;
     use groovelab::lab::jobs::State;
@@ -772,11 +800,51 @@ fn verdicts_of_flat_table() -> (Vec<String>, Vec<String>, groovelab::study::fit:
         no_user_presets("fit-verdict"),
     );
     let screen = text(&app, (120, 40), false);
-    let view = words(&screen, "observed");
+    let view = words(&screen, "verdict");
     let State::Ready(Ok(p)) = app.lab.position_fit() else {
         panic!("no position fit")
     };
-    (cli, view, p.agreement())
+    // The table's model rows: a mark, the name (34 columns), RMS, AIC, BIC.
+    let table_models: Vec<(String, f64)> = table
+        .lines()
+        .skip_while(|l| !l.contains("values (± 2σ)"))
+        .skip(1)
+        .take_while(|l| l.starts_with("* ") || l.starts_with("  μ_k"))
+        .filter_map(|l| {
+            let chars: Vec<char> = l.chars().collect();
+            let name: String = chars.get(2..36)?.iter().filter(|c| **c != ' ').collect();
+            let bic = chars.get(59..69)?.iter().collect::<String>();
+            Some((name, bic.trim().parse().ok()?))
+        })
+        .collect();
+    let view_models: Vec<String> = screen
+        .lines()
+        .filter_map(|l| l.rsplit("││").next())
+        .filter_map(|l| {
+            let words: Vec<&str> = l
+                .trim_start_matches(['*', '?', ' '])
+                .split_whitespace()
+                .collect();
+            (words.get(1) == Some(&"BIC")).then(|| words[0].to_string())
+        })
+        .collect();
+    ((cli, view, p.agreement()), (table_models, view_models))
+}
+
+/// Issue 19: `fit` and the Fit view list the candidate models in one order, by BIC,
+/// lowest first (the view once put them by BIC, the table by size).
+fn models_in_one_order((table, view): Listed) {
+    assert!(table.len() >= 4, "{table:?}");
+    assert!(
+        table.windows(2).all(|w| w[0].1 <= w[1].1),
+        "not by BIC: {table:?}"
+    );
+    let names: Vec<String> = table.iter().map(|(n, _)| n.clone()).collect();
+    // The view lists as many as its room allows, in the same order.
+    assert!(
+        !view.is_empty() && names.starts_with(&view),
+        "{names:?} / {view:?}"
+    );
 }
 
 /// Issue 19: the Fit view and `fit` give one verdict from one rule: a position fit
@@ -785,7 +853,8 @@ fn verdicts_of_flat_table() -> (Vec<String>, Vec<String>, groovelab::study::fit:
 #[test]
 fn the_fit_view_and_the_fit_command_give_the_same_verdict() {
     use groovelab::study::fit::Agreement;
-    let (cli, view, position) = verdicts_of_flat_table();
+    let ((cli, view, position), listed) = flat_table();
+    models_in_one_order(listed);
     assert_eq!(position, Agreement::MuNotDetermined);
     assert_eq!(cli.len(), 2, "{cli:?}");
     assert_eq!(

@@ -180,6 +180,30 @@ fn charts_show_error_bars_and_the_fit_panel_both_fits() {
     for want in ["velocities", "positions", "recollide", "agrees"] {
         assert!(screen.contains(want), "{want}\n{screen}");
     }
+    // Each row of the two fits says one thing under its own label: the regime
+    // predicted, the one observed, the verdict (once read "observed  agrees  agrees",
+    // then "observed rest" below it).
+    let rows: Vec<Vec<&str>> = screen
+        .lines()
+        .filter_map(|l| l.rsplit("││").next())
+        .map(|l| l.trim_end_matches('│').split_whitespace().collect())
+        .collect();
+    let row = |label: &str| rows.iter().find(|r| r.first() == Some(&label)).cloned();
+    let observed = row("observed").expect("an observed row");
+    assert!(
+        observed[1..]
+            .iter()
+            .all(|w| ["depart", "rest", "recollide"].contains(w)),
+        "{observed:?}\n{screen}"
+    );
+    let verdict = row("verdict").expect("a verdict row");
+    assert!(
+        verdict[1..]
+            .iter()
+            .all(|w| w.starts_with("agrees") || *w == "DISAGREES" || *w == "(v'≈0)"),
+        "{verdict:?}\n{screen}"
+    );
+    assert!(row("predicted").is_some(), "{screen}");
     assert!(
         !screen.contains("paper: |a_cm|"),
         "not the paper's data\n{screen}"

@@ -179,8 +179,32 @@ fn rest_without_friction_says_the_balls_keep_spinning() {
         "0",
     ]);
     assert!(
-        frictionless.contains("outcome  rest: the centres stop; the balls keep spinning"),
+        frictionless.contains(
+            "outcome  rest: the balls stop moving along the groove; they keep spinning (0.20 J)"
+        ),
         "{frictionless}"
+    );
+    // The Why panel's heading says the same (wrapped in the panel).
+    let why = groovelab(&[
+        "render",
+        "--preset",
+        "paper-b4.9",
+        "--mu",
+        "0",
+        "--restitution",
+        "0",
+        "--size",
+        "200x50",
+    ]);
+    let why: String = why
+        .lines()
+        .filter_map(|l| l.rsplit("││").next())
+        .map(|l| l.trim_end_matches('│').trim())
+        .collect::<Vec<_>>()
+        .join(" ");
+    assert!(
+        why.contains("REST: the balls stop moving along the groove; they keep spinning (0.20 J)"),
+        "{why}"
     );
     // The critical groove's rest is a true stop: both balls roll to rest together.
     let critical = groovelab(&["simulate", "--preset", "critical"]);

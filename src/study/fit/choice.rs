@@ -123,13 +123,26 @@ fn candidates(m: &Measured) -> Vec<Vec<Free>> {
 
 /// Fits every candidate model to `m` (positions when it has them, else velocities)
 /// and scores it; marks the simplest model the data support. A candidate the data
-/// cannot fit (more values than points) is left out.
+/// cannot fit (more values than points) is left out. Listed in [`by_bic`]'s order:
+/// the one order `fit`, its JSON and the app show them in.
 pub fn compare_models(
     scene: &Scene,
     m: &Measured,
     progress: &dyn Progress,
 ) -> Result<Vec<Candidate>, FitError> {
-    compare_candidates(scene, m, candidates(m), progress)
+    let mut models = compare_candidates(scene, m, candidates(m), progress)?;
+    by_bic(&mut models);
+    Ok(models)
+}
+
+/// Orders `models` by BIC, lowest (best) first; equal BICs the model with fewer
+/// values first.
+pub fn by_bic(models: &mut [Candidate]) {
+    models.sort_by(|a, b| {
+        a.bic
+            .total_cmp(&b.bic)
+            .then(a.parameters.len().cmp(&b.parameters.len()))
+    });
 }
 
 /// [`compare_models`] over the candidate models `candidates` (each a list of free

@@ -182,6 +182,27 @@ pub struct LineFit {
     /// the window is called.
     #[serde(skip)]
     pub given: [bool; 2],
+    /// The window asked for, s, before it was cut to the data's times.
+    #[serde(skip)]
+    pub asked: (f64, f64),
+    /// The times the data run over, s (first impact at 0).
+    #[serde(skip)]
+    pub data_span: (f64, f64),
+}
+
+impl LineFit {
+    /// The ends of the window asked for (`--from`, `--to`) that lay outside the data
+    /// and were cut to them: (which, asked, the data's end there), s.
+    pub fn cut_to_data(&self) -> Vec<(&'static str, f64, f64)> {
+        let mut out = Vec::new();
+        if self.given[0] && self.asked.0 < self.data_span.0 {
+            out.push(("from", self.asked.0, self.data_span.0));
+        }
+        if self.given[1] && self.asked.1 > self.data_span.1 {
+            out.push(("to", self.asked.1, self.data_span.1));
+        }
+        out
+    }
 }
 
 /// The sliding phase after the first impact (at t = 0): from the first frame after
@@ -289,6 +310,8 @@ pub fn line_fit(
         tau_net: mu_cm * mass * g * scene.radius,
         lines: [cm, vt],
         given: [window.0.is_some(), window.1.is_some()],
+        asked,
+        data_span: span,
     })
 }
 

@@ -83,14 +83,15 @@ pub fn fit_all(
         model_fit,
         models: compare_models(scene, m, progress)?,
     };
-    check_finite(&fits, m.has_v_t())?;
+    check_finite(&fits, m, scene)?;
     Ok(fits)
 }
 
 /// Every number a fit reports is finite, or the fit is an error: an overflowing
 /// scene (v0 = 1e308) must not print "RMS residual inf" or "± NaN". Without a
 /// measured v_t (a track without a rim mark) its line fit is not a number by design.
-fn check_finite(f: &Fits, has_v_t: bool) -> Result<(), FitError> {
+fn check_finite(f: &Fits, data: &Measured, scene: &Scene) -> Result<(), FitError> {
+    let has_v_t = data.has_v_t();
     let (l, m) = (&f.line_fit, &f.model_fit);
     let spin = |v: f64| if has_v_t { v } else { 0.0 };
     let named = [
@@ -128,8 +129,83 @@ fn check_finite(f: &Fits, has_v_t: bool) -> Result<(), FitError> {
     if bad.is_empty() {
         return Ok(());
     }
-    Err(FitError::Data(format!(
-        "the fit gives no finite {} for this scene and data (an overflow: check that v0, masses and times are of lab size)",
-        bad.join(", ")
-    )))
+    Err(FitError::Data(not_finite(&bad, data, scene)))
+}
+
+/// Why a fit gave no finite `bad` values, for a student: what the data's numbers and
+/// the scene's v0 look like, and the options that read a file's numbers in other
+/// units (numbers in ms, cm/s or cm taken as s, m/s or m are the usual cause).
+fn not_finite(bad: &[&str], data: &Measured, scene: &Scene) -> String {
+    let sig = |v: f64| crate::settings::units::significant(v, 3);
+    let mut steps: Vec<f64> = data.t.windows(2).map(|w| w[1] - w[0]).collect();
+    steps.sort_by(f64::total_cmp);
+    let frame = steps.get(steps.len() / 2).copied().unwrap_or(f64::NAN);
+    let fastest = data
+        .v_cm
+        .iter()
+        .chain(&data.v_t)
+        .filter(|v| v.is_finite())
+        .fold(0.0_f64, |a, v| a.max(v.abs()));
+    let span = |v: &[f64]| {
+        v.iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &x| {
+                (lo.min(x), hi.max(x))
+            })
+    };
+    let (t0, t1) = span(&data.t);
+    let mut looks = format!(
+        "the data run over t = {} … {} s with frames {} s apart and speeds up to {} m/s",
+        sig(t0),
+        sig(t1),
+        sig(frame),
+        sig(fastest)
+    );
+    if let Some(x) = data.x.as_deref() {
+        let (x0, x1) = span(x);
+        looks += &format!(", positions {} … {} m", sig(x0), sig(x1));
+    }
+    format!(
+        "the fit gives no finite {} for this scene and data: {looks}, and the scene's v0 is {} m/s (a lab's frames are ms apart and its balls roll at about 0.1 to 2 m/s); if the file's numbers are in other units, say so with --time-unit (e.g. ms), --speed-unit (e.g. cm/s) or --length-unit (e.g. cm), or with units in its header",
+        bad.join(", "),
+        sig(scene.left.v0.abs().max(scene.right.v0.abs()))
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::physics::scene::Ball;
+
+    #[test]
+    fn a_fit_without_finite_numbers_says_what_the_numbers_look_like_and_which_options_read_them() {
+        // ms and cm/s read as s and m/s: frames 8.33 "s" apart, speeds of 50 "m/s".
+        let t: Vec<f64> = (-3..=3).map(|i| f64::from(i) * 8.333).collect();
+        let data = Measured::velocities(t, vec![50.0; 7], vec![50.0; 7]);
+        let ball = Ball {
+            mass: 0.11,
+            v0: 0.5,
+        };
+        let scene = Scene {
+            radius: 0.015,
+            width: 0.021,
+            mu: 0.17,
+            g: 9.81,
+            restitution: 1.0,
+            rolling_resistance: 0.0,
+            left: ball,
+            right: ball,
+        };
+        let e = not_finite(&["model fit μ_k"], &data, &scene);
+        for want in [
+            "no finite model fit μ_k",
+            "t = -25 … 25 s with frames 8.33 s apart and speeds up to 50 m/s",
+            "the scene's v0 is 0.5 m/s",
+            "--time-unit",
+            "--speed-unit",
+            "--length-unit",
+        ] {
+            assert!(e.contains(want), "{want}: {e}");
+        }
+        assert!(!e.contains("overflow"), "{e}");
+    }
 }

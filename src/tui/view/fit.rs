@@ -195,8 +195,8 @@ fn model_choice_lines(models: &[fit::Candidate], lines: &mut Ranked<'static>, th
         let names: Vec<String> = c.parameters.iter().map(|e| symbol(e.parameter)).collect();
         names.join("+")
     };
-    // Only in the room the fits leave: the header before the rows, the supported
-    // model first, then by BIC (a small screen keeps the best).
+    // Only in the room the fits leave: the header before the rows (a small screen
+    // keeps the best, listed first).
     match models.iter().find(|c| c.supported) {
         Some(c) => lines.push((
             1,
@@ -224,9 +224,12 @@ fn model_choice_lines(models: &[fit::Candidate], lines: &mut Ranked<'static>, th
             )),
         ));
     }
-    let mut ranked: Vec<&fit::Candidate> = models.iter().collect();
-    ranked.sort_by(|a, b| b.supported.cmp(&a.supported).then(a.bic.total_cmp(&b.bic)));
-    for c in ranked {
+    // In the order `fit` lists them (`fit::compare_models`): by BIC, lowest first.
+    lines.push((
+        0,
+        Line::from(Span::styled("models by BIC, lowest first:", theme.dim)),
+    ));
+    for c in models {
         let mark = match (c.supported, c.determined()) {
             (true, _) => "* ",
             (false, true) => "  ",
@@ -364,18 +367,15 @@ fn both_fits(v: &ModelFit, p: &ModelFit, width: usize, lines: &mut Ranked<'stati
             theme.text,
         ),
     ));
-    lines.push((
-        8,
-        row(
-            "regime",
-            v.regime_predicted.name().into(),
-            p.regime_predicted.name().into(),
-            theme.text,
-        ),
-    ));
-    // The verdict in the words `fit` prints (one rule: `ModelFit::agreement`).
-    let agree = |m: &ModelFit| m.agreement().word().to_string();
-    lines.push((9, row("observed", agree(v), agree(p), theme.text)));
+    // One row per question, each labelled by what it says: the regime each fit
+    // predicts, the one each observed, and whether they agree (in the words `fit`
+    // prints: one rule, `ModelFit::agreement`).
+    let regimes = |name: &str, f: fn(&ModelFit) -> &'static str| {
+        row(name, f(v).into(), f(p).into(), theme.text)
+    };
+    lines.push((8, regimes("predicted", |m| m.regime_predicted.name())));
+    lines.push((7, regimes("observed", |m| m.regime_observed.name())));
+    lines.push((9, regimes("verdict", |m| m.agreement().word())));
     lines.push((
         7,
         Line::from(vec![
@@ -385,13 +385,9 @@ fn both_fits(v: &ModelFit, p: &ModelFit, width: usize, lines: &mut Ranked<'stati
     ));
     lines.push((
         4,
-        Line::from(vec![
-            Span::styled("observed ", theme.dim),
-            Span::styled(p.regime_observed.name().to_string(), theme.text),
-            Span::styled(
-                g.text("  (the position fit's ± is the one to quote)"),
-                theme.dim,
-            ),
-        ]),
+        Line::from(Span::styled(
+            g.text("the position fit's ± is the one to quote"),
+            theme.dim,
+        )),
     ));
 }
