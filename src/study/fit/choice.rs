@@ -12,7 +12,7 @@
 use serde::Serialize;
 
 use super::least_squares::{Target, labelled_residuals, with};
-use super::model::{Scored, scored_fit, thinned};
+use super::model::{Scored, scored_fit, scored_fit_within, thinned};
 use super::problem::{FitError, Free};
 use super::uncertainty::{Label, NotIdentified};
 use crate::physics::scene::Scene;
@@ -178,17 +178,41 @@ pub fn compare_candidates(
     if fitted.is_empty() {
         return Ok(out);
     }
-    // Scored on the same frames: each fit leaves out the frames its own impacts
-    // straddle, and criteria over different frames are not comparable.
+    // Fitted and scored on the same frames: each fit leaves out the frames its own
+    // impacts straddle, and fits or criteria over different frames are not
+    // comparable (a model with a value on its edge must give the smaller model's
+    // numbers). So every candidate is fitted again on the frames all of them kept,
+    // until that set holds still.
     let thin = thinned(m);
     let data = thin.as_ref().map_or(m, |(t, _)| t);
-    let common: Vec<usize> = fitted[0]
-        .1
-        .idx
-        .iter()
-        .copied()
-        .filter(|i| fitted.iter().all(|(_, s)| s.idx.binary_search(i).is_ok()))
-        .collect();
+    let mut common = shared_frames(&fitted);
+    for _ in 0..3 {
+        let all_on_common = fitted.iter().all(|(_, s)| s.idx == common);
+        if all_on_common {
+            break;
+        }
+        for k in 0..fitted.len() {
+            if fitted[k].1.idx == common {
+                continue;
+            }
+            // From its own fit or a smaller model's refit, whichever fits the common
+            // frames better: a larger model must fit them at least as well.
+            let cost_on = |s: &Scene| {
+                let r = labelled_residuals(s, data, &common, target, true).0;
+                r.iter().map(|x| x * x).sum::<f64>()
+            };
+            let free = fitted[k].0.clone();
+            let start = fitted[..k]
+                .iter()
+                .filter(|(f, _)| f.iter().all(|x| free.contains(x)))
+                .map(|(f, s)| with(&fitted[k].1.scene, f, &s.values))
+                .chain([fitted[k].1.scene])
+                .min_by(|a, b| cost_on(a).total_cmp(&cost_on(b)))
+                .unwrap_or(fitted[k].1.scene);
+            fitted[k].1 = scored_fit_within(&start, m, &free, target, Some(&common), progress)?;
+        }
+        common = shared_frames(&fitted);
+    }
     let scored: Vec<(Vec<f64>, Vec<Label>)> = fitted
         .iter()
         .map(|(_, s)| labelled_residuals(&s.scene, data, &common, target, true))
@@ -208,6 +232,17 @@ pub fn compare_candidates(
         out[i].supported = true;
     }
     Ok(out)
+}
+
+/// The frames (of the thinned series) every fitted candidate used, in order.
+fn shared_frames(fitted: &[(Vec<Free>, Scored)]) -> Vec<usize> {
+    fitted[0]
+        .1
+        .idx
+        .iter()
+        .copied()
+        .filter(|i| fitted.iter().all(|(_, s)| s.idx.binary_search(i).is_ok()))
+        .collect()
 }
 
 /// How many independent points the residuals `r` (labelled by frame and channel, in

@@ -254,32 +254,44 @@ pub(super) struct Scored {
 }
 
 /// The free values that fit `m` best, from the scene's, and the frames they were
-/// fitted on.
+/// fitted on: those away from the model's impacts, and among `within` when given
+/// (a refit on frames shared with other models, started from a fit already made: no
+/// scan of μ_k again).
 fn best_values(
     scene: &Scene,
     m: &Measured,
     free: &[Free],
     target: Target,
+    within: Option<&[usize]>,
     evals: &Evals,
 ) -> Result<(Vec<f64>, Vec<usize>), FitError> {
     let mut p: Vec<f64> = free
         .iter()
         .map(|f| match f {
-            Free::Mu => scene.mu.max(0.01),
+            Free::Mu if within.is_none() => scene.mu.max(0.01),
             other => other.value_in(scene),
         })
         .collect();
     // μ first, by a global scan and golden-section search: the cost is not smooth
     // where impacts move past data points, and local steps get caught there.
-    if let Some(i) = free.iter().position(|f| *f == Free::Mu) {
+    if let Some(i) = free.iter().position(|f| *f == Free::Mu)
+        && within.is_none()
+    {
         p[i] = scan_mu(scene, m, free, &p, i, target, evals)?;
     }
+    let frames = |p: &[f64]| {
+        let mut idx = fit_points(m, &with(scene, free, p), target);
+        if let Some(w) = within {
+            idx.retain(|i| w.binary_search(i).is_ok());
+        }
+        idx
+    };
     // Then every free value together from there, on the frames away from the model's
     // impacts (chosen again once the fit has moved them).
-    let mut idx = fit_points(m, &with(scene, free, &p), target);
+    let mut idx = frames(&p);
     for _ in 0..3 {
         p = least_squares(scene, m, free, &idx, p, target, evals)?;
-        let next = fit_points(m, &with(scene, free, &p), target);
+        let next = frames(&p);
         if next == idx {
             break;
         }
@@ -295,6 +307,20 @@ pub(super) fn scored_fit(
     target: Target,
     progress: &dyn Progress,
 ) -> Result<Scored, FitError> {
+    scored_fit_within(scene, m, free, target, None, progress)
+}
+
+/// [`scored_fit`] on the frames `within` only (indices of the [`thinned`] series,
+/// sorted), started from `scene`'s values: the refit of a model on the frames every
+/// candidate shares ([`super::choice`]).
+pub(super) fn scored_fit_within(
+    scene: &Scene,
+    m: &Measured,
+    free: &[Free],
+    target: Target,
+    within: Option<&[usize]>,
+    progress: &dyn Progress,
+) -> Result<Scored, FitError> {
     let thin = thinned(m);
     let (m, every) = match &thin {
         Some((t, k)) => (t, Some(*k)),
@@ -304,7 +330,7 @@ pub(super) fn scored_fit(
         progress,
         done: std::cell::Cell::new(0),
     };
-    let (p, idx) = best_values(scene, m, free, target, &evals)?;
+    let (p, idx) = best_values(scene, m, free, target, within, &evals)?;
     let fitted = with(scene, free, &p);
     let (r, labels) = labelled_residuals(&fitted, m, &idx, target, true);
     let n = p.len();
