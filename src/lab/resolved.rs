@@ -14,6 +14,7 @@ use crate::physics::story::{self, After, Verdict};
 use crate::settings::params::{Key, PARAMS};
 use crate::settings::spec::SceneError;
 use crate::settings::units::{Dimension, show};
+use crate::study::fit;
 use crate::study::measured::{self, InScene, Measured, Series};
 
 use super::settings::Settings;
@@ -58,6 +59,9 @@ pub struct Resolved {
     pub rest_band: Option<f64>,
     /// The measured points as the charts draw them.
     pub points: Option<Arc<MeasuredPoints>>,
+    /// A position track's centre where the model's left ball would be, per frame (m,
+    /// NaN outside the run): [`fit::aligned_track`].
+    pub track_x: Option<Arc<[f64]>>,
     /// The run's headline, what follows the first impact, and the verdict.
     pub story: Story,
     /// The pinned run's parameters that differ from the current ones:
@@ -91,9 +95,13 @@ impl Resolved {
             let (lo, hi) = self::extent(&run, p.scene.radius);
             extent = (extent.0.min(lo), extent.1.max(hi));
         }
+        let track_x = m
+            .and_then(|m| fit::aligned_track(&scene, &solution, m))
+            .map(Arc::from);
         Ok(Resolved {
             data_rms: m.map(|m| data_rms(&solution, m)),
-            points: m.map(|m| Arc::new(MeasuredPoints::of(m, scene.radius))),
+            points: m.map(|m| Arc::new(MeasuredPoints::of(m, track_x.as_deref()))),
+            track_x,
             story: Story::of(&solution, &derived, rest_band),
             summary: Summary::of(&solution),
             pinned_changes: pinned
@@ -146,15 +154,15 @@ pub struct MeasuredPoints {
     /// Each derived point's ±1σ as a vertical run of points (`None`: no σ given).
     pub v_cm_bars: Option<Arc<[Point]>>,
     pub v_t_bars: Option<Arc<[Point]>>,
-    /// A position track's centre where the model's left ball would be (x − R), in the
-    /// display unit of length (the position chart's).
+    /// A position track's centre where the model's left ball would be (x − R, aligned
+    /// by [`fit::aligned_track`]), in the display unit of length (the position chart's).
     pub x: Option<Arc<[Point]>>,
     /// Each series' [`value_range`], in the order of [`MeasuredPoints::series`].
     ranges: Vec<Option<(f64, f64)>>,
 }
 
 impl MeasuredPoints {
-    fn of(m: &Measured, radius: f64) -> MeasuredPoints {
+    fn of(m: &Measured, track_x: Option<&[f64]>) -> MeasuredPoints {
         let pts = |v: &[f64]| m.t.iter().copied().zip(v.iter().copied()).collect();
         let bars =
             |v: &[f64], s: &Option<Vec<f64>>| s.as_ref().map(|s| error_bars(&m.t, v, s).into());
@@ -163,11 +171,11 @@ impl MeasuredPoints {
             v_t: pts(&m.v_t),
             v_cm_bars: bars(&m.v_cm, &m.v_cm_sigma),
             v_t_bars: bars(&m.v_t, &m.v_t_sigma),
-            x: m.x.as_ref().map(|x| {
+            x: track_x.map(|x| {
                 m.t.iter()
                     .zip(x)
                     .filter(|(_, x)| x.is_finite())
-                    .map(|(t, x)| (*t, Dimension::Length.to_display(x - radius)))
+                    .map(|(t, x)| (*t, Dimension::Length.to_display(*x)))
                     .collect()
             }),
             ranges: Vec::new(),

@@ -195,6 +195,9 @@ pub struct Verdict {
     /// The left ball's rolling speed after the impact, positive back toward the other.
     pub v_roll: Option<f64>,
     pub band: Option<f64>,
+    /// Whether the balls meet at all: without an impact the criterion has nothing to
+    /// judge (its "rest" then means only "no closing speed").
+    pub impact: bool,
 }
 
 impl Verdict {
@@ -209,6 +212,7 @@ impl Verdict {
             regime: derived.regime,
             v_roll,
             band,
+            impact: sol.events.iter().any(|e| e.kind == EventKind::Collision),
         }
     }
 
@@ -241,6 +245,9 @@ impl Verdict {
 
     /// "recollide (v' = +0.028 m/s, within …: indistinguishable from rest)".
     pub fn text(&self, pm: &str) -> String {
+        if !self.impact {
+            return "no impact: the balls never meet".to_string();
+        }
         let margin = self.margin(pm);
         if margin.is_empty() {
             self.regime.name().to_string()

@@ -53,6 +53,16 @@ macro_rules! assert_close {
     }};
 }
 
+/// A property test's settings: `PROPTEST_CASES` cases if set (a long run asks for
+/// more), else `default`, chosen for what one case of that property costs.
+pub fn cases(default: u32) -> proptest::test_runner::Config {
+    let cases = std::env::var("PROPTEST_CASES")
+        .ok()
+        .and_then(|c| c.parse().ok())
+        .unwrap_or(default);
+    proptest::test_runner::Config::with_cases(cases)
+}
+
 // ---- The command ---------------------------------------------------------------------
 
 /// Runs the binary with `args`, without the user's presets (a folder that does not

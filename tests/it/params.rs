@@ -28,7 +28,7 @@ fn cli_scene(values: &[(Key, f64)]) -> (groovelab::physics::scene::Scene, SceneS
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(200))]
+    #![proptest_config(crate::common::cases(200))]
 
     #[test]
     fn every_parameter_survives_cli_scene_preset_scene(

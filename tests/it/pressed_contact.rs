@@ -273,9 +273,7 @@ fn corner_scenes() -> impl Strategy<Value = Scene> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(
-        std::env::var("PROPTEST_CASES").ok().and_then(|c| c.parse().ok()).unwrap_or(800)
-    ))]
+    #![proptest_config(crate::common::cases(800))]
 
     #[test]
     fn pushing_scenes_tell_a_true_story(scene in pushing_scenes()) {

@@ -198,7 +198,7 @@ proptest! {
     // Each nearly wedged scene runs thousands of impact cycles before its tail is
     // summed: fewer cases by default keep `cargo test` short; PROPTEST_CASES asks for
     // a long run.
-    #![proptest_config(ProptestConfig::with_cases(std::env::var("PROPTEST_CASES").ok().and_then(|c| c.parse().ok()).unwrap_or(60)))]
+    #![proptest_config(crate::common::cases(60))]
 
     #[test]
     fn nearly_wedged_symmetric_pairs_end_at_the_impact_point(scene in nearly_wedged_symmetric_scenes()) {
@@ -208,7 +208,7 @@ proptest! {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(std::env::var("PROPTEST_CASES").ok().and_then(|c| c.parse().ok()).unwrap_or(600)))]
+    #![proptest_config(crate::common::cases(600))]
 
     #[test]
     fn engine_invariants_hold_everywhere(scene in scenes()) {
@@ -254,7 +254,7 @@ fn check_outcome(scene: &Scene) -> Result<(), TestCaseError> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(std::env::var("PROPTEST_CASES").ok().and_then(|c| c.parse().ok()).unwrap_or(300)))]
+    #![proptest_config(crate::common::cases(300))]
 
     #[test]
     fn the_outcome_word_says_what_the_run_does(scene in scenes()) {

@@ -213,3 +213,29 @@ fn rest_without_friction_says_the_balls_keep_spinning() {
         "{critical}"
     );
 }
+
+/// Balls that never meet (the right ball runs away as fast as the left one follows,
+/// or neither moves) get no verdict of the criterion: its "rest" means only "no
+/// closing speed" there, and a pair moving on at 100 m/s is not at rest.
+#[test]
+fn balls_that_never_meet_get_no_regime_verdict() {
+    use groovelab::physics::story::Verdict;
+    let verdict = |extra: &[(Key, f64)]| {
+        let p = Preset::load("paper-b4.9").unwrap();
+        let spec = extra
+            .iter()
+            .fold(SceneSpec::default(), |s, &(k, v)| s.with(k, v));
+        let (scene, span) = p.spec.over(&spec).resolve().unwrap();
+        Verdict::of(&solve(&scene, &span), &Derived::of(&scene), None).text("±")
+    };
+    let never = "no impact: the balls never meet";
+    assert_eq!(
+        verdict(&[(Key::V0Left, 100.0), (Key::V0Right, -100.0)]),
+        never
+    );
+    assert_eq!(verdict(&[(Key::V0Left, 0.0), (Key::V0Right, 0.0)]), never);
+    // A head-on run keeps its regime.
+    assert!(verdict(&[]).starts_with("recollide"));
+    let out = groovelab(&["simulate", "--v0-left", "100", "--v0-right", "-100"]);
+    assert!(out.contains("verdict  no impact"), "{out}");
+}

@@ -484,11 +484,13 @@ fn ascii_mode_emits_only_seven_bit_characters() {
             for t in [-0.1f64, 0.05, 0.3, 10.0] {
                 a.t = t.clamp(a.lab.solution.t_start, a.lab.solution.t_end);
                 for size in [(80, 24), (120, 40), (60, 20)] {
-                    let cells = groovelab::tui::view::non_ascii_cells(&a, size.0, size.1, &theme);
+                    // One drawing: the cells that needed a stand-in, and the text.
+                    let (s, cells) = groovelab::tui::view::to_text_and_non_ascii_cells(
+                        &a, size.0, size.1, &theme,
+                    );
                     if !cells.is_empty() {
                         failures.push(format!("{} at {t} {size:?} {keys:?}: {cells:?}", p.name));
                     }
-                    let s = groovelab::tui::view::to_text(&a, size.0, size.1, &theme);
                     assert!(s.is_ascii());
                 }
             }
@@ -1382,9 +1384,12 @@ fn the_data_table_of_a_position_track_shows_x_in_cm() {
     let m = a.lab.measured().unwrap();
     let x = m.x.as_ref().unwrap();
     for (r, i) in rows.iter().zip(0..) {
-        // The tracked centre where the model's left ball would be: x − R.
+        // The tracked centre where the model's left ball would be: x − R, aligned
+        // by the impact's time and place shift the position fit profiles out (a
+        // fraction of a millimetre here: the 0.3 mm noise moves the detected place).
         let model = a.lab.solution.at(m.t[i]).left.x;
-        let want = x[i] - a.lab.scene.radius;
+        let want = a.lab.track_x.as_ref().unwrap()[i];
+        assert!(want.is_nan() || (want - (x[i] - a.lab.scene.radius)).abs() < 1e-3);
         assert!(r[7] == want || (r[7].is_nan() && want.is_nan()), "row {i}");
         assert_eq!(r[8], model);
         assert!(r[9] == want - model || want.is_nan(), "row {i}");

@@ -228,14 +228,31 @@ fn position_residuals(
     m: &Measured,
     idx: &[usize],
 ) -> (Vec<f64>, Vec<Label>) {
+    let rows = position_rows(scene, sol, m, idx);
+    let shift = profiled_shift(&rows, m.angle.is_some());
+    rows.iter()
+        .map(|(row, label)| {
+            let d = row[0] + (0..shift.len()).map(|a| row[1 + a] * shift[a]).sum::<f64>();
+            (d, *label)
+        })
+        .filter(|(d, _)| d.is_finite())
+        .unzip()
+}
+
+/// Each position residual of `scene`'s run `sol` against the track `m` at `idx`, with
+/// its derivatives by the impact's time, place and mark angle shifts (δt, δx, δθ:
+/// linearised, x moves by v δt, r θ by u δt), and which frame and whether the mark's.
+/// Rows not all finite are left out.
+fn position_rows(
+    scene: &Scene,
+    sol: &Solution,
+    m: &Measured,
+    idx: &[usize],
+) -> Vec<([f64; 4], Label)> {
     let (Some(x), radius) = (m.x.as_ref(), scene.k() * scene.radius) else {
-        return (Vec::new(), Vec::new());
+        return Vec::new();
     };
-    // The impact's time and place, and the mark's angle then, were estimated from the
-    // same noisy track: each residual gets the best shift δt, δx, δθ (linearised: x
-    // moves by v δt, r θ by u δt), profiled out of the fit.
     let theta0 = sol.angle_at(0.0)[0];
-    // (residual, ∂/∂δt, ∂/∂δx, ∂/∂δθ), and which frame and whether the mark's.
     let mut rows: Vec<([f64; 4], Label)> = Vec::with_capacity(2 * idx.len());
     for &i in idx {
         let s = sol.at(m.t[i]);
@@ -249,10 +266,17 @@ fn position_residuals(
         }
     }
     rows.retain(|(row, _)| row.iter().all(|v| v.is_finite()));
-    let k = if m.angle.is_some() { 3 } else { 2 };
+    rows
+}
+
+/// The impact's time and place, and the mark's angle then, were estimated from the
+/// same noisy track: the least-squares shifts (δt, δx and, with a mark, δθ) of the
+/// [`position_rows`], profiled out of the fit (zero when they cannot be solved).
+fn profiled_shift(rows: &[([f64; 4], Label)], mark: bool) -> Vec<f64> {
+    let k = if mark { 3 } else { 2 };
     let mut ata = vec![vec![0.0; k]; k];
     let mut atb = vec![0.0; k];
-    for (row, _) in &rows {
+    for (row, _) in rows {
         for a in 0..k {
             atb[a] -= row[1 + a] * row[0];
             for b in 0..k {
@@ -260,14 +284,28 @@ fn position_residuals(
             }
         }
     }
-    let shift = solve(ata, atb).unwrap_or_else(|| vec![0.0; k]);
-    rows.iter()
-        .map(|(row, label)| {
-            let d = row[0] + (0..k).map(|a| row[1 + a] * shift[a]).sum::<f64>();
-            (d, *label)
-        })
-        .filter(|(d, _)| d.is_finite())
-        .unzip()
+    solve(ata, atb).unwrap_or_else(|| vec![0.0; k])
+}
+
+/// A position track's centre where the model's left ball would be (x − R, m) at each
+/// frame, moved by the impact time and place shifts the position fit profiles out
+/// ([`profiled_shift`]; the detected impact is one noisy frame's estimate, and without
+/// them every residual leans one way): model minus this is the position fit's
+/// residual. NaN outside the run `sol` of `scene` and where x is not measured; `None`
+/// without positions.
+pub fn aligned_track(scene: &Scene, sol: &Solution, m: &Measured) -> Option<Vec<f64>> {
+    let x = m.x.as_ref()?;
+    let idx: Vec<usize> = (0..m.t.len())
+        .filter(|&i| (sol.t_start..=sol.t_end).contains(&m.t[i]))
+        .collect();
+    let rows = position_rows(scene, sol, m, &idx);
+    let shift = profiled_shift(&rows, m.angle.is_some());
+    let mut out = vec![f64::NAN; m.t.len()];
+    for &i in &idx {
+        let v = sol.at(m.t[i]).left.v;
+        out[i] = x[i] - scene.radius + shift[1] - v * shift[0];
+    }
+    Some(out)
 }
 
 /// The model's v_cm and v_t at point `i` (`exact` there) as the data were made: a

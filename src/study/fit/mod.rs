@@ -21,6 +21,7 @@ use crate::study::Progress;
 use crate::study::measured::series::Measured;
 
 pub use choice::{Candidate, Estimate, compare_candidates, compare_models};
+pub use least_squares::aligned_track;
 pub use line::{
     Line, LineFit, PAPER_TABLE, PaperDisagreement, line, line_fit, paper_disagreements, paper_row,
     sliding_window,

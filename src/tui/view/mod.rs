@@ -106,6 +106,11 @@ pub fn chart_time_at_in(
 /// 7-bit ASCII gets a stand-in; [`non_ascii_cells`] lets tests see that none was needed).
 pub fn draw(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     draw_panels(app, area, buf, theme);
+    stand_ins(buf, theme);
+}
+
+/// In ASCII mode, a stand-in for any symbol outside 7-bit ASCII.
+fn stand_ins(buf: &mut Buffer, theme: &Theme) {
     if theme.glyphs.ascii {
         force_ascii(buf);
     }
@@ -121,9 +126,31 @@ pub fn non_ascii_cells(
     let area = Rect::new(0, 0, width, height);
     let mut buf = Buffer::empty(area);
     draw_panels(app, area, &mut buf, theme);
+    non_ascii(&buf)
+}
+
+/// [`to_text`] and [`non_ascii_cells`] of one drawing (a test of every screen draws
+/// each once).
+pub fn to_text_and_non_ascii_cells(
+    app: &App,
+    width: u16,
+    height: u16,
+    theme: &Theme,
+) -> (String, Vec<(u16, u16, String)>) {
+    let area = Rect::new(0, 0, width, height);
+    let mut buf = Buffer::empty(area);
+    draw_panels(app, area, &mut buf, theme);
+    let cells = non_ascii(&buf);
+    stand_ins(&mut buf, theme);
+    (text_of(&buf), cells)
+}
+
+/// The cells of a drawing outside 7-bit ASCII: `(x, y, symbol)`.
+fn non_ascii(buf: &Buffer) -> Vec<(u16, u16, String)> {
+    let area = buf.area;
     let mut cells = Vec::new();
-    for y in 0..height {
-        for x in 0..width {
+    for y in area.top()..area.bottom() {
+        for x in area.left()..area.right() {
             let sym = buf[(x, y)].symbol();
             if !sym.is_ascii() {
                 cells.push((x, y, sym.to_string()));
@@ -175,10 +202,16 @@ pub fn to_text(app: &App, width: u16, height: u16, theme: &Theme) -> String {
     let area = Rect::new(0, 0, width, height);
     let mut buf = Buffer::empty(area);
     draw(app, area, &mut buf, theme);
-    let mut out = String::with_capacity((width as usize + 1) * height as usize);
-    for y in 0..height {
+    text_of(&buf)
+}
+
+/// A drawn screen as plain text, one line per row, trailing blanks trimmed.
+fn text_of(buf: &Buffer) -> String {
+    let area = buf.area;
+    let mut out = String::with_capacity((area.width as usize + 1) * area.height as usize);
+    for y in area.top()..area.bottom() {
         let mut line = String::new();
-        for x in 0..width {
+        for x in area.left()..area.right() {
             line.push_str(buf[(x, y)].symbol());
         }
         out.push_str(line.trim_end());

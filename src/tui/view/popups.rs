@@ -131,9 +131,13 @@ fn data_row(app: &App, i: usize) -> Option<[f64; 10]> {
         .then(|| sol.at(t).left);
     let (model_v, model_u, model_x) =
         model.map_or((f64::NAN, f64::NAN, f64::NAN), |b| (b.v, b.u, b.x));
-    let x =
-        m.x.as_ref()
-            .map_or(f64::NAN, |x| x[i] - app.lab.scene.radius);
+    // Aligned by the impact's time and place the position fit profiles out.
+    let x = app
+        .lab
+        .track_x
+        .as_ref()
+        .and_then(|x| x.get(i).copied())
+        .unwrap_or(f64::NAN);
     Some([
         t,
         m.v_cm[i],
