@@ -7,13 +7,13 @@ use serde::Serialize;
 use super::args::{DataArgs, FitArgs, FitFormat, SceneArgs};
 use super::error::{BadValue, CliError};
 use super::open::{lab, scene_of_data};
+use crate::lab::Lab;
 use crate::output::write_atomically;
 use crate::physics::scene::Scene;
 use crate::settings::params::Key;
 use crate::settings::units::{Dimension, show, significant};
 use crate::study::fit::{self, Candidate, Fits, Free, LineFit, ModelFit};
 use crate::study::measured::Found;
-use crate::study::preset::Preset;
 
 /// The `--data` file read, its velocities derived as far as no scene enters; `None`
 /// without `--data`.
@@ -28,6 +28,9 @@ struct FitJson<'a> {
     /// For a position track: what was found in it (impact, direction, window).
     #[serde(skip_serializing_if = "Option::is_none")]
     track: Option<&'a Found>,
+    /// The groove the data were measured in, where it is not the model's (R and b, m).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    data_groove: Option<crate::lab::Groove>,
     /// The values that are null because the data cannot give them, and why.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     not_measured: Vec<NotMeasured>,
@@ -141,20 +144,7 @@ pub fn run(
         preset: preset.name.clone(),
     })?;
     let found = lab.series().and_then(|s| s.found().cloned());
-    // Each value once: a repeated one (`--free mu,mu`) is refused, not quietly
-    // dropped (it once made the normal matrix singular and the uncertainty NaN).
-    let mut free: Vec<Free> = Vec::new();
-    for f in args.free.clone().unwrap_or_else(|| vec![Free::Mu]) {
-        if free.contains(&f) {
-            return Err(BadValue::FreeTwice { name: f.name() }.into());
-        }
-        free.push(f);
-    }
-    if let (Some(a), Some(b)) = (args.from, args.to)
-        && a >= b
-    {
-        return Err(BadValue::FitWindowBackwards { from: a, to: b }.into());
-    }
+    let free = free_values(args)?;
     // A series long enough to take a noticeable time shows a counter.
     let bar = super::progress::Bar::counter("model evaluations", m.t.len() > 5_000);
     let fits = fit::fit_all(&scene, m, (args.from, args.to), &free, &bar);
@@ -175,11 +165,12 @@ pub fn run(
             fits: &fits,
             position_fit: position.as_ref(),
             track: found.as_ref(),
+            data_groove: lab.other_groove.as_ref().map(|o| o.data),
             not_measured: not_measured(&fits),
         }),
         FitFormat::Table => {
             let own = data.data.is_empty();
-            let mut out = scene_line(preset, typed, scene_args, data, &scene);
+            let mut out = scene_line(&lab, typed, scene_args, data);
             out += &match (&found, &position) {
                 (Some(found), Some(position)) => track_table(&scene, &fits, found, position, own),
                 _ => table(&scene, &fits, own),
@@ -207,16 +198,31 @@ pub fn run(
     }
 }
 
-/// The scene a fit used, and where it came from: the first line of the table. The
-/// values come from the command line (`typed`), the data file's own scene lines (the
-/// rest of `used`) and the preset under them (named unless those give every value).
-fn scene_line(
-    preset: &Preset,
-    typed: &SceneArgs,
-    used: &SceneArgs,
-    data: &DataArgs,
-    scene: &Scene,
-) -> String {
+/// The values `--free` sets free, each once (a repeated one, `--free mu,mu`, is
+/// refused, not quietly dropped: it once made the normal matrix singular and the
+/// uncertainty NaN), after checking that the window `--from`/`--to` runs forward.
+fn free_values(args: &FitArgs) -> Result<Vec<Free>, CliError> {
+    if let (Some(a), Some(b)) = (args.from, args.to)
+        && a >= b
+    {
+        return Err(BadValue::FitWindowBackwards { from: a, to: b }.into());
+    }
+    let mut free: Vec<Free> = Vec::new();
+    for f in args.free.clone().unwrap_or_else(|| vec![Free::Mu]) {
+        if free.contains(&f) {
+            return Err(BadValue::FreeTwice { name: f.name() }.into());
+        }
+        free.push(f);
+    }
+    Ok(free)
+}
+
+/// The scene a fit used, and where it came from: the first line of the table, and
+/// under it where the data were measured if that is another groove. The values come
+/// from the command line (`typed`), the data file's own scene lines (the rest of
+/// `used`) and the preset under them (named unless those give every value).
+fn scene_line(lab: &Lab, typed: &SceneArgs, used: &SceneArgs, data: &DataArgs) -> String {
+    let (preset, scene) = (lab.preset(), &lab.scene);
     let len = |v: f64| show(v, Dimension::Length);
     let flags: Vec<Key> = typed.values.given().map(|(k, _)| k).collect();
     let from_file: Vec<Key> = used
@@ -251,8 +257,13 @@ fn scene_line(
         [one] => one.clone(),
         [first, rest @ ..] => format!("{first} with {}", rest.join(" and ")),
     };
+    // Data of another groove are never fitted without saying so.
+    let other = lab
+        .other_groove
+        .as_ref()
+        .map_or(String::new(), |o| format!("data: {}\n", o.describe()));
     format!(
-        "scene ({source}): R = {}, b = {}, m = {} / {}, v0 = {} / {}, μ_k = {} (start), e = {}\n",
+        "scene ({source}): R = {}, b = {}, m = {} / {}, v0 = {} / {}, μ_k = {} (start), e = {}\n{other}",
         len(scene.radius),
         len(scene.width),
         show(scene.left.mass, Dimension::Mass),

@@ -277,7 +277,7 @@ fn json(solution: &Solution, derived: &Derived, samples: Option<&[Snapshot]>) ->
 /// as the snapshot holds them.
 fn table(preset: &Preset, now: &Resolved, samples: Option<&[Snapshot]>) -> String {
     let mut out = String::new();
-    scene_lines(&mut out, preset, &now.scene, &now.derived);
+    scene_lines(&mut out, preset, now);
     story_lines(&mut out, now);
     run_lines(&mut out, &now.solution);
     let _ = writeln!(out);
@@ -285,10 +285,29 @@ fn table(preset: &Preset, now: &Resolved, samples: Option<&[Snapshot]>) -> Strin
     out
 }
 
-/// The preset, the scene, the balls and the derived values with the paper's regime.
-fn scene_lines(out: &mut String, preset: &Preset, sc: &Scene, derived: &Derived) {
+/// The preset (its description only for its own scene: it tells of that scene), the
+/// scene, the balls and the derived values with the paper's regime.
+fn scene_lines(out: &mut String, preset: &Preset, now: &Resolved) {
+    let (sc, derived) = (&now.scene, &now.derived);
     let len = |v: f64| show(v, Dimension::Length);
-    let _ = writeln!(out, "preset   {}: {}", preset.name, preset.description);
+    let changed = match preset.spec.resolve() {
+        Ok((own, own_span)) => crate::lab::differences((&own, &own_span), (&now.scene, &now.span)),
+        Err(_) => Vec::new(),
+    };
+    if changed.is_empty() {
+        let _ = writeln!(out, "preset   {}: {}", preset.name, preset.description);
+    } else {
+        let changed: Vec<String> = changed
+            .iter()
+            .map(|(label, was, now)| format!("{} = {now} (was {was})", label.trim_end()))
+            .collect();
+        let _ = writeln!(
+            out,
+            "preset   {} changed by the options: {}",
+            preset.name,
+            changed.join(", ")
+        );
+    }
     let b_star = derived
         .b_star
         .map_or("none (e < 2/5)".to_string(), |b| len(b).to_string());
@@ -341,6 +360,10 @@ fn story_lines(out: &mut String, now: &Resolved) {
             .as_ref()
             .map_or(String::new(), |n| format!(" ({n})"))
     );
+    // Data of another groove are never compared without saying so.
+    if let Some(other) = &now.other_groove {
+        let _ = writeln!(out, "data     {}", other.describe());
+    }
     // Against the measured series: can its data tell this regime from rest?
     if now.rest_band.is_some() {
         let _ = writeln!(out, "verdict  {}", story.verdict.text("±"));

@@ -7,8 +7,10 @@ use std::path::Path;
 use super::args::{DataArgs, SceneArgs, TrackRole};
 use super::error::{BadValue, CliError, Flag};
 use crate::input::data::Reading;
-use crate::lab::{Lab, OwnData, Settings};
+use crate::lab::{Groove, Lab, OwnData, Settings};
 use crate::physics::scene::{Scene, Span};
+use crate::settings::params::Key;
+use crate::settings::spec::SceneSpec;
 use crate::settings::units::{Dimension, show, unit_factor};
 use crate::study::measured::{Derive, Found, Series};
 use crate::study::preset::{self, Preset};
@@ -51,8 +53,9 @@ pub fn with_file_scene(scene: &SceneArgs, data: &DataArgs) -> Result<SceneArgs, 
 }
 
 /// The measured series that `--data` names (one file, or a centre and a mark track),
-/// read with the data options; `None` without `--data`.
-pub fn load_series(args: &DataArgs) -> Result<Option<Series>, CliError> {
+/// read with the data options, and the scene values its (first) file's `# scene`
+/// lines give; `None` without `--data`.
+pub fn load_series(args: &DataArgs) -> Result<Option<(Series, SceneSpec)>, CliError> {
     let texts = match args.data.as_slice() {
         [] => return Ok(None),
         [_] | [_, _] => args
@@ -121,7 +124,9 @@ pub fn load_series(args: &DataArgs) -> Result<Option<Series>, CliError> {
     };
     m.check_magnitudes()
         .map_err(|source| CliError::Implausible { file, source })?;
-    Ok(Some(series))
+    let (file, text) = &texts[0];
+    let own_scene = crate::input::data::scene_of(text, file)?;
+    Ok(Some((series, own_scene)))
 }
 
 /// The lab on the scene the options describe, with `--data` replacing the preset's
@@ -129,7 +134,8 @@ pub fn load_series(args: &DataArgs) -> Result<Option<Series>, CliError> {
 /// it shows).
 pub fn lab(scene_args: &SceneArgs, data: &DataArgs) -> Result<Lab, CliError> {
     let settings = scene_args.settings()?;
-    let own = load_series(data)?.map(|series| OwnData {
+    let own = load_series(data)?.map(|(series, own_scene)| OwnData {
+        groove: stated_groove(settings.preset(), &own_scene),
         name: data
             .data
             .iter()
@@ -138,22 +144,32 @@ pub fn lab(scene_args: &SceneArgs, data: &DataArgs) -> Result<Lab, CliError> {
             .join(" + "),
         series,
     });
-    let lab = Lab::new(settings, own)?;
-    if let Some(found) = data.data.first().and(lab.series()).and_then(|s| s.found()) {
-        mark_on_the_ball(found, lab.scene.radius)?;
+    // Said here with the options that set it right; the lab refuses it too (an R
+    // edited in the app below the mark's distance).
+    if let Some(found) = own.as_ref().and_then(|o| o.series.found()) {
+        mark_on_the_ball(found, settings.settle()?.0.radius)?;
     }
-    Ok(lab)
+    Ok(Lab::new(settings, own)?)
+}
+
+/// The groove a data file states it was measured in: its `# scene` lines' R and b
+/// (the preset's for the one they leave out); `None` if they give neither.
+fn stated_groove(preset: &Preset, own_scene: &SceneSpec) -> Option<Groove> {
+    if own_scene.get(Key::Radius).is_none() && own_scene.get(Key::Width).is_none() {
+        return None;
+    }
+    let (scene, _) = preset.spec.over(own_scene).resolve().ok()?;
+    Some(Groove::of(&scene))
 }
 
 /// A rim mark tracked farther from the centre than the ball's radius (beyond the
-/// noise: three times the position scatter) is not on this ball: a wrong R, or the
-/// wrong track taken for the mark. Its spin would be wrong by that ratio.
+/// noise, [`Found::least_radius`]) is not on this ball.
 fn mark_on_the_ball(found: &Found, radius: f64) -> Result<(), CliError> {
-    let Some(mark) = found.mark_radius else {
+    let (Some(mark), Some(least)) = (found.mark_radius, found.least_radius()) else {
         return Ok(());
     };
     let limit = radius + 3.0 * found.scatter;
-    if mark > limit {
+    if radius < least {
         return Err(BadValue::MarkOffTheBall {
             mark,
             radius,

@@ -9,6 +9,7 @@
 //! rule in `span`; what depends on the terminal's size is cached by the app, not here.
 
 mod analyses;
+mod data;
 pub mod jobs;
 mod resolved;
 mod settings;
@@ -27,7 +28,8 @@ use crate::study::measured::{Measured, Series};
 use crate::study::preset::Preset;
 use jobs::{Job, Jobs};
 
-pub use resolved::{MeasuredPoints, Pinned, Point, Resolved, Story, value_range};
+pub use data::{Groove, InUse, OtherGroove, OwnData, Whose};
+pub use resolved::{MeasuredPoints, Pinned, Point, Resolved, Story, differences, value_range};
 pub use settings::{Edit, Settings};
 pub use span::SpanEnd;
 pub use work::{
@@ -44,26 +46,15 @@ type Generation = u64;
 /// The line fit's window, s: from, to (`None`: the sliding phase's end).
 pub type FitWindow = (Option<f64>, Option<f64>);
 
-/// A measured series of the user's own (`--data`), kept when another preset is
-/// picked for the model, until the user drops it.
-#[derive(Clone, Debug)]
-pub struct OwnData {
-    /// The file(s) it was read from, as the user named them.
-    pub name: String,
-    pub series: Series,
-}
-
 /// One scene under study.
 #[derive(Clone, Debug)]
 pub struct Lab {
     settings: Settings,
-    /// The user's own series, used instead of the preset's.
+    /// The user's own series, used instead of the preset's until dropped.
     own_data: Option<OwnData>,
-    /// The series in use (the user's own, else the preset's), shared by every
-    /// snapshot built from it.
-    series: Option<Series>,
-    /// Which series the current snapshot was built from ([`series_key`]).
-    built_from: Option<usize>,
+    /// The data in use by the rule of `data::in_use`, shared by every snapshot built
+    /// from it.
+    in_use: Option<InUse>,
     /// The run pinned for an A/B comparison.
     pub pinned: Option<Pinned>,
     /// The current snapshot, built from the layers by [`Resolved::build`].
@@ -104,13 +95,12 @@ impl Lab {
     /// The lab on its settings, with the user's own series (`--data`) in place of the
     /// preset's, if any.
     pub fn new(settings: Settings, own_data: Option<OwnData>) -> Result<Lab, SceneError> {
-        let series = in_use(own_data.as_ref(), settings.preset());
-        let now = Arc::new(Resolved::build(&settings, series.as_ref(), None)?);
+        let in_use = choose(&settings, own_data.as_ref())?;
+        let now = Arc::new(Resolved::build(&settings, in_use.as_ref(), None)?);
         Ok(Lab {
             settings,
             own_data,
-            built_from: series_key(series.as_ref()),
-            series,
+            in_use,
             pinned: None,
             now,
             fit_window: (None, None),
@@ -149,15 +139,22 @@ impl Lab {
         &self.settings
     }
 
-    /// The user's own measured series, if one is loaded.
+    /// The user's own measured series, if one is loaded and not dropped.
     pub fn own_data(&self) -> Option<&OwnData> {
-        self.own_data.as_ref()
+        self.own_data
+            .as_ref()
+            .filter(|_| !self.settings.data_dropped())
     }
 
     /// The measured series in use, as loaded, before any scene: the user's own, else
     /// the preset's (what a position track's derivation found is in it).
     pub fn series(&self) -> Option<&Series> {
-        self.series.as_ref()
+        self.in_use.as_ref().map(|d| &d.series)
+    }
+
+    /// The data in use, whose they are and the groove they were measured in.
+    pub fn data_in_use(&self) -> Option<&InUse> {
+        self.in_use.as_ref()
     }
 
     /// [`Resolved::measured`], shared (a job takes it without copying the series).
@@ -193,13 +190,12 @@ impl Lab {
         built
     }
 
-    /// Takes back the newest edit; `None` when there is none. A preset picked is
-    /// taken back with its data choice: the series in use is the earlier preset's
-    /// again (or still the user's own).
+    /// Takes back the newest edit; `None` when there is none. A preset picked or
+    /// the data dropped is taken back with its data choice: the series in use is the
+    /// one before it again.
     pub fn undo(&mut self) -> Option<Edit> {
         let edit = self.settings.undo()?;
-        if let Edit::Preset(_) = edit {
-            self.series = in_use(self.own_data.as_ref(), self.settings.preset());
+        if matches!(edit, Edit::Preset(_) | Edit::DropData) {
             self.fit_window = (None, None);
         }
         // The layers below it made a valid scene before it was added.
@@ -222,25 +218,20 @@ impl Lab {
     /// changes): an edit, so [`Lab::undo`] goes back to the preset before with its
     /// edits and data; the user's own series stays (see [`Lab::drop_data`]).
     pub fn load_preset(&mut self, preset: Preset) -> Result<(), SceneError> {
-        let series = in_use(self.own_data.as_ref(), &preset);
-        let was = std::mem::replace(&mut self.series, series);
-        if let Err(e) = self.edit(Edit::Preset(Box::new(preset))) {
-            self.series = was;
-            return Err(e);
-        }
+        self.edit(Edit::Preset(Box::new(preset)))?;
         self.fit_window = (None, None);
         Ok(())
     }
 
-    /// Drops the user's own series: the preset's (if any) is shown again. The
-    /// dropped series' name, if there was one.
+    /// Drops the user's own series (an edit: [`Lab::undo`] brings it back): the
+    /// preset's data are shown while the groove is the preset's, else none (see
+    /// `data::in_use`). The dropped series' name, if there was one.
     pub fn drop_data(&mut self) -> Option<String> {
-        let dropped = self.own_data.take()?;
-        self.series = in_use(None, self.settings.preset());
+        let name = self.own_data()?.name.clone();
+        self.edit(Edit::DropData)
+            .expect("dropping the data leaves a valid scene");
         self.fit_window = (None, None);
-        self.rebuild()
-            .expect("the data do not decide whether a scene is valid");
-        Some(dropped.name)
+        Some(name)
     }
 
     /// Pins the current run for an A/B comparison, or unpins it; true if now pinned.
@@ -272,11 +263,18 @@ impl Lab {
     /// Builds the snapshot of the layers, the series in use and the pin; the analyses
     /// start over only if the scene or its span changed.
     fn rebuild(&mut self) -> Result<(), SceneError> {
-        let now = Resolved::build(&self.settings, self.series.as_ref(), self.pinned.as_ref())?;
-        let moved = now.scene != self.now.scene
-            || now.span != self.now.span
-            || series_key(self.series.as_ref()) != self.built_from;
-        self.built_from = series_key(self.series.as_ref());
+        let chosen = choose(&self.settings, self.own_data.as_ref())?;
+        let same = data::same_data(chosen.as_ref(), self.in_use.as_ref());
+        let in_use = if same {
+            self.in_use.as_ref()
+        } else {
+            chosen.as_ref()
+        };
+        let now = Resolved::build(&self.settings, in_use, self.pinned.as_ref())?;
+        let moved = now.scene != self.now.scene || now.span != self.now.span || !same;
+        if !same {
+            self.in_use = chosen;
+        }
         self.now = Arc::new(now);
         if moved {
             // Every analysis asked for from now on belongs to this solve.
@@ -306,24 +304,16 @@ impl Lab {
     }
 }
 
-/// A preset's own measured series (velocities as the paper gives them).
-fn preset_series(preset: &Preset) -> Option<Series> {
-    preset
-        .measured
-        .clone()
-        .map(|m| Series::Velocities(Arc::new(m)))
-}
-
-/// The series a lab shows: the user's own, else the preset's.
-fn in_use(own: Option<&OwnData>, preset: &Preset) -> Option<Series> {
-    own.map(|d| d.series.clone())
-        .or_else(|| preset_series(preset))
-}
-
-/// Which series this is (the address of its shared points): a snapshot built from
-/// another one starts the analyses over.
-fn series_key(series: Option<&Series>) -> Option<usize> {
-    series.map(|s| match s {
-        Series::Velocities(m) | Series::Track(m, _) => Arc::as_ptr(m) as usize,
-    })
+/// The data the layers' scene shows, by the rule of `data::in_use`; an error if its
+/// R would put their rim mark off the ball.
+fn choose(settings: &Settings, own: Option<&OwnData>) -> Result<Option<InUse>, SceneError> {
+    let (scene, _, _) = settings.settle()?;
+    let in_use = data::in_use(
+        own,
+        settings.data_dropped(),
+        settings.preset(),
+        Groove::of(&scene),
+    );
+    data::mark_on_the_ball(in_use.as_ref(), &scene)?;
+    Ok(in_use)
 }

@@ -15,8 +15,9 @@ use crate::settings::params::{Key, PARAMS};
 use crate::settings::spec::SceneError;
 use crate::settings::units::{Dimension, show};
 use crate::study::fit;
-use crate::study::measured::{self, InScene, Measured, Series};
+use crate::study::measured::{self, InScene, Measured};
 
+use super::data::{Groove, InUse, OtherGroove};
 use super::settings::Settings;
 use super::span::{SpanEnd, solve_shown};
 
@@ -57,6 +58,9 @@ pub struct Resolved {
     pub data_rms: Option<(f64, Option<f64>)>,
     /// The measured series' rest band (speeds within it cannot be told from rest).
     pub rest_band: Option<f64>,
+    /// The data were measured in another groove than this scene's: said wherever
+    /// they are shown.
+    pub other_groove: Option<OtherGroove>,
     /// The measured points as the charts draw them.
     pub points: Option<Arc<MeasuredPoints>>,
     /// A position track's centre where the model's left ball would be, per frame (m,
@@ -70,15 +74,15 @@ pub struct Resolved {
 }
 
 impl Resolved {
-    /// The snapshot of `settings`, with `series` derived for its scene and the span
-    /// reaching a pinned run's end: the one way a lab's scene is built.
+    /// The snapshot of `settings`, with the data `in_use` derived for its scene and
+    /// the span reaching a pinned run's end: the one way a lab's scene is built.
     pub fn build(
         settings: &Settings,
-        series: Option<&Series>,
+        in_use: Option<&InUse>,
         pinned: Option<&Pinned>,
     ) -> Result<Resolved, SceneError> {
         let (scene, span, span_end) = settings.settle()?;
-        let data = series.map(|s| measured::for_scene(s, &scene));
+        let data = in_use.map(|d| measured::for_scene(&d.series, &scene));
         let m = data.as_ref().map(|d| &*d.measured);
         let solution = solve_shown(&scene, &span, span_end, m, pinned.map(|p| p.auto_end));
         let span = Span {
@@ -107,6 +111,7 @@ impl Resolved {
             pinned_changes: pinned
                 .map(|p| changes(p, &scene, &span))
                 .unwrap_or_default(),
+            other_groove: in_use.and_then(|d| OtherGroove::of(d, Groove::of(&scene))),
             scene,
             span,
             span_end,
@@ -234,11 +239,21 @@ fn changes(p: &Pinned, scene: &Scene, span: &Span) -> Vec<(&'static str, String,
         t_start: p.solution.t_start,
         t_end: Some(p.solution.t_end),
     };
+    differences((&p.scene, &was_span), (scene, span))
+}
+
+/// The parameters of scene `now` that differ from those of `was`: `(label, was,
+/// now)` with the table's label and unit, every value of the scene and the span's
+/// start (not its end, which follows the runs).
+pub fn differences(
+    (was, was_span): (&Scene, &Span),
+    (scene, span): (&Scene, &Span),
+) -> Vec<(&'static str, String, String)> {
     PARAMS
         .iter()
         .filter(|row| row.is_own() && row.replaces.is_none() && row.key != Key::TEnd)
         .filter_map(|row| {
-            let x = (row.get)(&p.scene, &was_span)?;
+            let x = (row.get)(was, was_span)?;
             let y = (row.get)(scene, span)?;
             let differ = (x - y).abs() > 1e-12 * x.abs().max(y.abs());
             let shown = |v| show(v, row.dim).to_string();

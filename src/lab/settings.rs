@@ -23,6 +23,9 @@ pub enum Edit {
     /// Another preset picked: the scene starts over from it alone (the command line's
     /// values and every earlier edit set aside, as by a reset).
     Preset(Box<Preset>),
+    /// The user's own data dropped (a scene value is not changed; undo brings them
+    /// back).
+    DropData,
 }
 
 /// The layers a lab's scene is settled from (the defaults are the table's own).
@@ -89,10 +92,16 @@ impl Settings {
         &self.edits[from..]
     }
 
+    /// Whether the user's own data were dropped (by an edit still on the list).
+    pub fn data_dropped(&self) -> bool {
+        self.edits.contains(&Edit::DropData)
+    }
+
     /// Sets every edit aside (the scene as the preset and the flags give it); false,
-    /// and nothing added, when none is in force. Undo brings them back.
+    /// and nothing added, when none that changes the scene is in force. Undo brings
+    /// them back.
     pub fn reset(&mut self) -> bool {
-        if self.in_force().is_empty() {
+        if self.in_force().iter().all(|e| *e == Edit::DropData) {
             return false;
         }
         self.edits.push(Edit::Reset);
@@ -121,8 +130,9 @@ impl Settings {
             match edit {
                 Edit::Values(changes) => set_values(&mut spec, &mut end, changes),
                 Edit::SpanEnd(e) => end = *e,
-                // `in_force` starts after the newest reset or preset picked.
-                Edit::Reset | Edit::Preset(_) => {}
+                // `in_force` starts after the newest reset or preset picked; a drop
+                // of the data changes no value.
+                Edit::Reset | Edit::Preset(_) | Edit::DropData => {}
             }
         }
         // The end is `end`'s alone: a fixed one is checked with the scene.

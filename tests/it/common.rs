@@ -75,6 +75,19 @@ pub fn groovelab(args: &[&str]) -> std::process::Output {
         .unwrap()
 }
 
+/// Runs the command line `args` (a subcommand first) in this process, with the user's
+/// presets as the command finds them: what it would print, or its error message.
+pub fn run_in_process(args: &[&str]) -> Result<String, String> {
+    use clap::Parser;
+    let argv = std::iter::once("groovelab").chain(args.iter().copied());
+    let cli = groovelab::cli::Cli::try_parse_from(argv).map_err(|e| e.to_string())?;
+    match groovelab::cli::run(&cli) {
+        Ok(groovelab::cli::Outcome::Print(text)) => Ok(text),
+        Ok(_) => Err("the app would open: no text".into()),
+        Err(e) => Err(e.to_string()),
+    }
+}
+
 // ---- The app without a terminal ------------------------------------------------------
 
 /// The scene options `--preset PRESET` with the scene options `values` over it.

@@ -308,3 +308,43 @@ fn snapshots_of_the_forces_view() {
         }
     }
 }
+
+/// `B` hides b in every view, not only the Forces view: the Why panel (regime, D e,
+/// k, r, D), the regime map's marker and the paper figure's b line would give it away.
+/// And while a prediction is pending the chain hides |a_cm| and |a_t| (their ratio
+/// is D, the answer), showing them once the outcome has shown.
+#[test]
+fn hidden_b_and_a_pending_prediction_give_nothing_away() {
+    for size in SIZES {
+        for ascii in [false, true] {
+            let main = render("paper-b4.9", Some(0.1), size, ascii, "B");
+            for away in ["RECOLLIDE", "D e = 0.516", "k 0.4542", "r 1.249"] {
+                assert!(!main.contains(away), "{size:?} {away}: {main}");
+            }
+            assert!(main.contains("b hidden"), "{size:?}: {main}");
+            let map = render("paper-b4.9", None, size, ascii, "B g");
+            let marker = if ascii { "@" } else { "◆" };
+            let shown = render("paper-b4.9", None, size, ascii, "g");
+            // The marker appears in the legend too: one more on the shown map.
+            assert!(
+                map.matches(marker).count() < shown.matches(marker).count(),
+                "{size:?}"
+            );
+        }
+    }
+    let asked = render("paper-b4.9", None, (120, 40), false, "y");
+    assert!(
+        asked.contains("|a_cm| ? m/s²") && asked.contains("|a_t| ? m/s²"),
+        "{asked}"
+    );
+    assert!(
+        !asked.contains("3.67") && !asked.contains("1.89"),
+        "{asked}"
+    );
+    // Answered and played past the outcome: the chain shows them.
+    let answered = render("paper-b4.9", Some(1.0), (120, 40), false, "y 3");
+    assert!(
+        answered.contains("|a_cm| 3.67 m/s²") && answered.contains("|a_t| 1.89 m/s²"),
+        "{answered}"
+    );
+}

@@ -7,6 +7,7 @@ mod common;
 mod cli;
 mod closed_forms;
 mod data_files;
+mod data_scene;
 mod exports;
 mod fit;
 mod forces;

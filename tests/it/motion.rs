@@ -728,6 +728,7 @@ fn with_big_series(rows: usize) -> App {
     let own = OwnData {
         name: "big.csv".into(),
         series: Series::Velocities(std::sync::Arc::new(m)),
+        groove: None,
     };
     let settings = Settings::new(
         Preset::load("unequal-speeds").unwrap(),

@@ -2,7 +2,7 @@
 //! playback, views, the overlay, the fit, and opening the popups and prompts.
 
 use crate::lab::jobs::State;
-use crate::lab::{Edit, OVERLAY_LEVELS};
+use crate::lab::{Edit, Groove, OVERLAY_LEVELS};
 use crate::methods::Method;
 use crate::settings::params::Key;
 use crate::settings::units::{Dimension, show, significant};
@@ -217,6 +217,10 @@ impl App {
                 picked.name,
                 self.lab.preset().name
             ),
+            Edit::DropData => match self.lab.own_data() {
+                Some(own) => format!("dropping {}", own.name),
+                None => "dropping the data".into(),
+            },
         };
         let left = self.lab.settings().edits().len();
         self.status = Status::Info(format!("undone: {back} ({left} more to undo)"));
@@ -242,16 +246,29 @@ impl App {
         ));
     }
 
-    /// Drops the user's own data; the preset's (if any) are shown again.
+    /// Drops the user's own data (undoable); the preset's are shown only in the
+    /// preset's groove, and the status line says which rule applied.
     fn drop_data(&mut self) {
         self.status = Status::Info(match self.lab.drop_data() {
             Some(name) => {
                 let sol = &self.lab.solution;
                 self.t = self.t.clamp(sol.t_start, sol.t_end);
-                match self.lab.measured() {
-                    Some(_) => format!("dropped {name}: the preset's data are shown"),
-                    None => format!("dropped {name}"),
-                }
+                let preset = self.lab.preset();
+                let now = match (self.lab.measured(), &preset.measured) {
+                    (Some(_), _) => {
+                        format!("{}'s data, measured in this groove, are shown", preset.name)
+                    }
+                    (None, Some(_)) => match Groove::of_preset(preset) {
+                        Some(g) => format!(
+                            "no data shown ({}'s were measured at {})",
+                            preset.name,
+                            g.describe()
+                        ),
+                        None => "no data shown".into(),
+                    },
+                    (None, None) => "no data shown".into(),
+                };
+                format!("dropped {name}: {now}; u undoes")
             }
             None => "no data of your own to drop (--data FILE loads them)".into(),
         });

@@ -597,11 +597,15 @@ fn pinned_sliding(app: &App) -> Option<(Sliding, f64)> {
 
 /// The two chains' items for the ball shown: b → k → |N| → |F| → F_net → |a_cm| and
 /// τ_net → |α| → |a_t|, each with its unit and, with a run pinned, ↑/↓/= against it
-/// (an item and its arrow are never split). `compact` drops the magnitude bars.
-fn chains(app: &App, compact: bool, theme: &Theme) -> [Vec<String>; 2] {
+/// (an item and its arrow are never split), `?` where they would give away what b or
+/// a `pending` prediction hides. `compact` drops the magnitude bars.
+fn chains(app: &App, pending: bool, compact: bool, theme: &Theme) -> [Vec<String>; 2] {
     let s = app.lab.derived.sliding[app.forces_ball];
     let pinned = pinned_sliding(app);
     let hide = app.hide_b;
+    // While a prediction is pending the two accelerations stay hidden too: their
+    // ratio is D, the answer.
+    let hide_a = hide || pending;
     let was = |f: fn(&Sliding) -> f64| pinned.map(|(p, _)| f(&p));
     let item = |label: &str, v: f64, unit: &str, hidden: bool, was: Option<f64>| {
         let label = if compact {
@@ -631,7 +635,7 @@ fn chains(app: &App, compact: bool, theme: &Theme) -> [Vec<String>; 2] {
         item("|N|", s.normal, " N", hide, was(|p| p.normal)),
         item("|F|", s.friction, " N", hide, was(|p| p.friction)),
         item("F_net", s.net_force, " N", hide, was(|p| p.net_force)),
-        item("|a_cm|", s.a_cm, " m/s²", hide, was(|p| p.a_cm)),
+        item("|a_cm|", s.a_cm, " m/s²", hide_a, was(|p| p.a_cm)),
     ];
     let rotation = vec![
         item(
@@ -642,7 +646,7 @@ fn chains(app: &App, compact: bool, theme: &Theme) -> [Vec<String>; 2] {
             was(|p| p.net_torque),
         ),
         item("|α|", s.alpha, " rad/s²", false, was(|p| p.alpha)),
-        item("|a_t|", s.a_t, " m/s²", hide, was(|p| p.a_t)),
+        item("|a_t|", s.a_t, " m/s²", hide_a, was(|p| p.a_t)),
     ];
     [translation, rotation].map(|c| c.iter().map(|i| theme.glyphs.text(i)).collect())
 }
@@ -741,7 +745,7 @@ fn chain_view(app: &App, area: Rect, joined: bool, buf: &mut Buffer, theme: &The
             .flat_map(|row| wrap(Line::styled(row, style), width))
             .collect()
     };
-    let [translation, rotation] = chains(app, compact, theme);
+    let [translation, rotation] = chains(app, pending, compact, theme);
     let outcome = outcome_items(app, pending, compact, theme);
     let mut groups = vec![
         (7, rows(&translation, theme.text)),

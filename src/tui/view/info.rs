@@ -31,6 +31,17 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     // and the energy split; then the derived values (k, r, D, b*), what happens after
     // the first impact (t', v', or how the run ends when the closed forms do not hold),
     // before the rest of the story, the state at the cursor and the forces.
+    // With b hidden (`B`), nothing here may give it or the outcome away: only the
+    // state at the cursor, which the animation shows anyway.
+    if app.hide_b {
+        let note = theme
+            .glyphs
+            .text("b hidden: predict from the picture; B shows b and why");
+        let mut lines: Ranked = vec![(9, Line::from(Span::styled(note, theme.title)))];
+        lines.extend(cursor_lines(app, theme));
+        draw_lines(by_priority(lines, inner), inner, buf);
+        return;
+    }
     let mut lines = regime_lines(app, inner.width, theme);
     // A/B: both runs' key numbers side by side, right under the headline.
     lines.splice(1..1, ab_lines(app, inner.width, theme));
@@ -268,6 +279,10 @@ fn impact_and_data_lines(app: &App, theme: &Theme) -> Ranked<'static> {
             ]),
         )),
         None => {}
+    }
+    // Data of another groove are never shown without saying so.
+    if let Some(other) = &app.lab.other_groove {
+        lines.push((6, Line::from(Span::styled(other.describe(), theme.error))));
     }
     lines
 }

@@ -66,10 +66,10 @@ fn regime_map(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             );
         }
     }
-    // The scene itself.
+    // The scene itself (not while b is hidden: its column would give b away).
     let c = (app.lab.scene.width / b_max * (cols - 1) as f64).round() as u16;
     let r = ((1.0 - app.lab.scene.restitution) * (rows - 1) as f64).round() as u16;
-    if usize::from(c) < cols && usize::from(r) < rows {
+    if usize::from(c) < cols && usize::from(r) < rows && !app.hide_b {
         buf.set_string(
             inner.x + 5 + c,
             inner.y + r,
@@ -138,7 +138,8 @@ fn paper_figure(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             ),
             series("D", &|x| closed_form::determinant(k(x)), theme.right, "o"),
         ],
-        vlines: vec![
+        // This scene's b/R, unless b is hidden.
+        vlines: [
             VLine {
                 x: app.lab.scene.width / app.lab.scene.radius,
                 label: Some("b".into()),
@@ -151,7 +152,10 @@ fn paper_figure(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
                 style: theme.event,
                 priority: 0,
             },
-        ],
+        ]
+        .into_iter()
+        .skip(usize::from(app.hide_b))
+        .collect(),
         cursor: None,
         x_ticks: None,
         y_ticks: None,

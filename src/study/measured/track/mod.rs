@@ -102,6 +102,14 @@ fn is_zero(n: &usize) -> bool {
 }
 
 impl Found {
+    /// The least ball radius R the tracked rim mark allows, m: its distance from the
+    /// centre less three times the position scatter (within the noise it may lie on
+    /// the rim); `None` without a mark. A smaller R puts the mark off the ball: a
+    /// wrong R, or the wrong track taken for the mark, and a spin wrong by that ratio.
+    pub fn least_radius(&self) -> Option<f64> {
+        self.mark_radius.map(|m| m - 3.0 * self.scatter)
+    }
+
     /// What was found, in a few lines for people.
     pub fn describe(&self) -> String {
         let name = |n: &str| {

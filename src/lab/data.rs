@@ -1,0 +1,205 @@
+//! Which measured data a scene shows, and the groove they were measured in. Data
+//! belong to their groove where it is known: a preset's to the preset's, a file's to
+//! the one its `# scene` lines state. (A file without them is in the groove the user
+//! gives, by the options or in the app: the student's own claim, which moves with
+//! their edits.) Data stay through every edit of the scene (so a student can fit by
+//! hand, and the RMS follows), and wherever the model's groove is not theirs,
+//! [`OtherGroove`] says so on every screen that shows them, the same whether the
+//! scene was reached by options or by keys. Once the user drops their own data, the
+//! preset's come back only while the model's groove is the preset's: in any other the
+//! scene shows no data ([`in_use`]).
+
+use crate::physics::scene::Scene;
+use crate::settings::spec::SceneError;
+use crate::settings::units::{Dimension, show, show_exact};
+use crate::study::measured::Series;
+use crate::study::preset::Preset;
+
+/// A measured series of the user's own (`--data`), kept when another preset is
+/// picked for the model, until the user drops it.
+#[derive(Clone, Debug)]
+pub struct OwnData {
+    /// The file(s) it was read from, as the user named them.
+    pub name: String,
+    pub series: Series,
+    /// The groove it was measured in, where the file says so (its `# scene` lines);
+    /// `None`: the data are in the groove the user sets (by the options or in the
+    /// app), which moves with it.
+    pub groove: Option<Groove>,
+}
+
+/// A groove's geometry, m: the balls' radius R and the groove's width b (what a
+/// measured series depends on beyond the run itself: b sets the contact radius r, R
+/// turns a track's spin into v_t).
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct Groove {
+    pub radius: f64,
+    pub width: f64,
+}
+
+impl Groove {
+    pub fn of(scene: &Scene) -> Groove {
+        Groove {
+            radius: scene.radius,
+            width: scene.width,
+        }
+    }
+
+    /// The same groove: R and b agree to far below any measurement (a value typed
+    /// in another unit, 4.9 cm or 49 mm, rounds differently in its last bits).
+    pub fn same(&self, other: &Groove) -> bool {
+        Groove::near(self.radius, other.radius) && Groove::near(self.width, other.width)
+    }
+
+    fn near(a: f64, b: f64) -> bool {
+        (a - b).abs() <= 1e-9 * a.abs().max(b.abs())
+    }
+
+    /// "R = 2.75 cm, b = 4.9 cm".
+    pub fn describe(&self) -> String {
+        format!(
+            "R = {}, b = {}",
+            show(self.radius, Dimension::Length),
+            show(self.width, Dimension::Length)
+        )
+    }
+
+    /// The preset's own groove (`None` if its values make no valid scene).
+    pub fn of_preset(preset: &Preset) -> Option<Groove> {
+        preset
+            .spec
+            .resolve()
+            .ok()
+            .map(|(scene, _)| Groove::of(&scene))
+    }
+}
+
+/// Whose measured data a scene shows.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Whose {
+    /// The user's own, read from the file(s) named.
+    Own(String),
+    /// A preset's, by its name.
+    Preset(String),
+}
+
+/// The measured series a scene shows, whose it is and the groove it was measured in.
+#[derive(Clone, Debug)]
+pub struct InUse {
+    pub series: Series,
+    pub whose: Whose,
+    /// `None`: not known (data read without a scene named).
+    pub groove: Option<Groove>,
+}
+
+/// The data shown were measured in another groove than the model's: what every
+/// screen showing them says (see [`OtherGroove::describe`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct OtherGroove {
+    pub whose: Whose,
+    pub data: Groove,
+    pub model: Groove,
+}
+
+impl OtherGroove {
+    /// The note for data `in_use` against a model in `model`; `None` when they were
+    /// measured in this groove, or in one not known.
+    pub fn of(in_use: &InUse, model: Groove) -> Option<OtherGroove> {
+        let data = in_use.groove?;
+        (!data.same(&model)).then(|| OtherGroove {
+            whose: in_use.whose.clone(),
+            data,
+            model,
+        })
+    }
+
+    /// One sentence naming the values that differ, e.g. "paper-b4.9's data were
+    /// measured at b = 4.9 cm; the model uses b = 2 cm".
+    pub fn describe(&self) -> String {
+        let (d, m) = (&self.data, &self.model);
+        let len = |v: f64| show(v, Dimension::Length);
+        let mut data = Vec::new();
+        let mut model = Vec::new();
+        for (name, a, b) in [("R", d.radius, m.radius), ("b", d.width, m.width)] {
+            if !Groove::near(a, b) {
+                data.push(format!("{name} = {}", len(a)));
+                model.push(format!("{name} = {}", len(b)));
+            }
+        }
+        let whose = match &self.whose {
+            Whose::Preset(name) => format!("{name}'s data were"),
+            Whose::Own(_) => "the data were".to_string(),
+        };
+        format!(
+            "{whose} measured at {}; the model uses {}",
+            data.join(", "),
+            model.join(", ")
+        )
+    }
+}
+
+/// The data a scene in groove `model` shows: the user's own while they are loaded and
+/// not dropped; else the preset's, except after a drop in a groove not the preset's
+/// (someone else's points against the student's groove would read as a fit of it).
+pub(super) fn in_use(
+    own: Option<&OwnData>,
+    dropped: bool,
+    preset: &Preset,
+    model: Groove,
+) -> Option<InUse> {
+    if let Some(own) = own.filter(|_| !dropped) {
+        return Some(InUse {
+            series: own.series.clone(),
+            whose: Whose::Own(own.name.clone()),
+            groove: own.groove,
+        });
+    }
+    let groove = Groove::of_preset(preset);
+    let fits = groove.is_some_and(|g| g.same(&model));
+    if dropped && own.is_some() && !fits {
+        return None;
+    }
+    let measured = preset.measured.clone()?;
+    Some(InUse {
+        series: Series::Velocities(std::sync::Arc::new(measured)),
+        whose: Whose::Preset(preset.name.clone()),
+        groove,
+    })
+}
+
+/// The same data as before an edit: the analyses of a series are kept while it is in
+/// use (a preset's is made anew each time, so it is compared by value; the user's own
+/// never change within a lab).
+pub(super) fn same_data(a: Option<&InUse>, b: Option<&InUse>) -> bool {
+    match (a, b) {
+        (None, None) => true,
+        (Some(a), Some(b)) => {
+            a.whose == b.whose
+                && a.groove == b.groove
+                && (matches!(a.whose, Whose::Own(_)) || a.series == b.series)
+        }
+        _ => false,
+    }
+}
+
+/// The scene's R must leave a tracked rim mark on the ball
+/// ([`crate::study::measured::Found::least_radius`]): an R edited below it would turn
+/// the mark's spin into a v_t wrong by their ratio, so the edit is refused, naming
+/// the least R allowed.
+pub(super) fn mark_on_the_ball(in_use: Option<&InUse>, scene: &Scene) -> Result<(), SceneError> {
+    let Some(found) = in_use.and_then(|d| d.series.found()) else {
+        return Ok(());
+    };
+    match (found.mark_radius, found.least_radius()) {
+        (Some(mark), Some(least)) if scene.radius < least => Err(SceneError::OutOfRange {
+            name: "R",
+            value: show_exact(scene.radius, Dimension::Length),
+            allowed: format!(
+                "R ≥ {} (the rim mark tracked {} from the centre must be on the ball)",
+                show(least, Dimension::Length),
+                show(mark, Dimension::Length)
+            ),
+        }),
+        _ => Ok(()),
+    }
+}

@@ -1,0 +1,269 @@
+//! Issue 19, "Data and scene belong together": measured data are never shown against a
+//! groove they were not measured in without saying so, the same for the app, `render`,
+//! `simulate` and `fit`, whether the scene was reached by options or by keys.
+
+use std::path::PathBuf;
+
+use groovelab::cli::{DataArgs, SceneArgs};
+use groovelab::settings::params::Key;
+use groovelab::settings::spec::SceneSpec;
+use groovelab::tui::app::{Library, Status};
+
+use crate::common::{self, press, rendered, scene_of, text};
+
+/// The student's scene of the new-user trial: R = 1.5 cm, b = 2.1 cm, m = 110 g,
+/// v0 = 0.5 m/s, with no preset named.
+fn student_scene() -> SceneArgs {
+    SceneArgs {
+        preset: None,
+        values: SceneSpec::default()
+            .with(Key::Radius, 0.015)
+            .with(Key::Width, 0.021)
+            .with(Key::Mass, 0.110)
+            .with(Key::V0, 0.5),
+    }
+}
+
+fn library() -> Library {
+    common::no_user_presets("datascene")
+}
+
+/// A velocity file of the student's own, made here: a ball rolling at 0.5 m/s into
+/// the impact at t = 0 and sliding back to rest, with `header` lines before the
+/// columns. Its path.
+fn velocity_file(name: &str, header: &str) -> String {
+    let dir = std::env::temp_dir().join(format!("groovelab-datascene-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut text = format!("{header}t,v_cm,v_t\n");
+    for i in 0..=40 {
+        let t = -0.2 + 0.02 * f64::from(i);
+        let (v_cm, v_t) = if t < 0.0 {
+            (0.5, 0.5)
+        } else {
+            ((-0.5 + 2.3 * t).min(0.0), (0.5 - 3.0 * t).max(-0.06))
+        };
+        text += &format!("{t:.2},{v_cm:.4},{v_t:.4}\n");
+    }
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    path.display().to_string()
+}
+
+fn data(files: &[&str]) -> DataArgs {
+    DataArgs {
+        data: files.iter().map(PathBuf::from).collect(),
+        ..DataArgs::default()
+    }
+}
+
+/// After `D` in the student's own groove the preset's measured points do not come
+/// back against it (they were measured at b = 4.9 cm): no data, said on the status
+/// line, and `u` brings the student's back. In the preset's groove they do come back.
+#[test]
+fn after_d_the_presets_data_come_back_only_in_its_groove() {
+    let file = velocity_file("own.csv", "");
+    let mut a = rendered(&student_scene(), &data(&[&file]), None, None, library());
+    assert!(a.lab.measured().is_some());
+    press(&mut a, "D");
+    assert!(
+        a.lab.measured().is_none(),
+        "paper-b4.9's points are not shown"
+    );
+    assert!(a.lab.data_rms.is_none(), "no RMS against data of no groove");
+    let Status::Info(said) = &a.status else {
+        panic!("{:?}", a.status)
+    };
+    assert!(
+        said.contains("no data shown")
+            && said.contains("paper-b4.9's were measured at R = 2.75 cm, b = 4.9 cm")
+            && said.contains("u undoes"),
+        "{said}"
+    );
+    let screen = text(&a, (120, 40), false);
+    assert!(!screen.contains("RMS"), "{screen}");
+    assert!(!screen.contains("measured v_cm"), "{screen}");
+    press(&mut a, "u");
+    assert_eq!(
+        a.lab.own_data().unwrap().name,
+        file,
+        "undo brings them back"
+    );
+    assert!(a.lab.measured().is_some());
+    // In the preset's own groove the preset's data are the scene's: they come back.
+    let mut b = rendered(
+        &scene_of("paper-b4.9", SceneSpec::default()),
+        &data(&[&file]),
+        None,
+        Some("D"),
+        library(),
+    );
+    assert!(b.lab.measured().is_some());
+    assert!(matches!(&b.status, Status::Info(s) if s.contains("measured in this groove")));
+    assert!(b.lab.other_groove.is_none());
+    // … and leave once the groove is another, to come back with it.
+    b.lab.set(Key::Width, 0.03).unwrap();
+    assert!(b.lab.measured().is_none());
+    press(&mut b, "u");
+    assert!(b.lab.measured().is_some());
+}
+
+/// The same after `D` when the scene came from the file's own `# scene` lines (the
+/// app's export read back), through the whole command line.
+#[test]
+fn after_d_a_file_scene_shows_no_presets_data() {
+    let file = velocity_file(
+        "with-scene.csv",
+        "# scene radius = 1.5 cm\n# scene width = 2.1 cm\n# scene mass = 110 g\n",
+    );
+    let screen =
+        common::run_in_process(&["render", "--data", &file, "--keys", "D", "--size", "120x40"])
+            .unwrap();
+    assert!(screen.contains("R            1.50 cm"), "{screen}");
+    assert!(!screen.contains("RMS"), "{screen}");
+    assert!(screen.contains("no data shown"), "{screen}");
+}
+
+/// A preset's data kept while a flag changed the groove: `simulate` describes the
+/// scene simulated (not the preset's headline of b = 4.9 cm) and says where the data
+/// were measured; the app says the same for the same scene by flags or by keys.
+#[test]
+fn a_presets_data_in_another_groove_are_said_to_be_so() {
+    let out =
+        common::run_in_process(&["simulate", "--preset", "paper-b4.9", "--width", "2cm"]).unwrap();
+    let head: Vec<&str> = out.lines().take(8).collect();
+    let head = head.join("\n");
+    assert!(!head.contains("wide groove"), "{head}");
+    assert!(
+        head.contains("preset   paper-b4.9 changed by the options: b = 2 cm (was 4.9 cm)"),
+        "{head}"
+    );
+    let note = "paper-b4.9's data were measured at b = 4.9 cm; the model uses b = 2 cm";
+    assert!(head.contains(&format!("data     {note}")), "{head}");
+    let out =
+        common::run_in_process(&["simulate", "--preset", "paper-b4.9", "--radius", "10m"]).unwrap();
+    assert!(
+        out.contains("measured at R = 2.75 cm; the model uses R = 1000 cm"),
+        "{out}"
+    );
+    // The preset's own scene keeps its headline and has no note.
+    let own = common::run_in_process(&["simulate", "--preset", "paper-b4.9"]).unwrap();
+    assert!(own.starts_with("preset   paper-b4.9: Paper experiment, b = 4.9 cm"));
+    assert!(!own.contains("were measured at"), "{own}");
+    // (`fit` says it too, from the same snapshot: `a_files_stated_groove_…` below.)
+    // The app: by flags and by keys the same note, in the Why panel.
+    let by_flags = rendered(
+        &scene_of("paper-b4.9", SceneSpec::default().with(Key::Width, 0.02)),
+        &DataArgs::default(),
+        None,
+        None,
+        library(),
+    );
+    let by_keys = rendered(
+        &scene_of("paper-b4.9", SceneSpec::default()),
+        &DataArgs::default(),
+        None,
+        Some("enter 2 enter"),
+        library(),
+    );
+    for a in [&by_flags, &by_keys] {
+        assert_eq!(a.lab.scene.width, 0.02);
+        assert_eq!(a.lab.other_groove.as_ref().unwrap().describe(), note);
+        let why: String = text(a, (200, 60), false)
+            .lines()
+            .map(|l| l.rsplit('│').nth(1).unwrap_or("").trim().to_string() + " ")
+            .collect();
+        assert!(why.contains(note), "{why}");
+    }
+}
+
+/// A file that states its groove (`# scene` lines) keeps it: the model's groove set
+/// over it, by an option or a key, is said to be another; a file without them is in
+/// the groove the user gives.
+#[test]
+fn a_files_stated_groove_is_kept_and_compared() {
+    let stated = velocity_file(
+        "stated.csv",
+        "# scene radius = 1.5 cm\n# scene width = 2.1 cm\n",
+    );
+    let out = common::run_in_process(&["fit", "--data", &stated, "--width", "2.2cm"]).unwrap();
+    assert!(
+        out.contains("data: the data were measured at b = 2.1 cm; the model uses b = 2.2 cm"),
+        "{out}"
+    );
+    let plain = velocity_file("plain.csv", "");
+    let mut a = rendered(&student_scene(), &data(&[&plain]), None, None, library());
+    a.lab.set(Key::Width, 0.022).unwrap();
+    assert!(
+        a.lab.other_groove.is_none(),
+        "the user's own claim moves with them"
+    );
+}
+
+/// A tracked rim mark must stay on the ball: an R edited in the app below the mark's
+/// distance from the centre is refused (it would turn the mark's spin into a v_t wrong
+/// by their ratio), naming the least R allowed; an R above it is taken.
+#[test]
+fn an_r_edited_below_the_rim_marks_distance_is_refused() {
+    use groovelab::study::preset::Preset;
+    use groovelab::study::video::{self, Format, Video};
+    let truth = Preset::load("paper-b4.9")
+        .unwrap()
+        .spec
+        .resolve()
+        .unwrap()
+        .0;
+    let shot = Video {
+        fps: 120.0,
+        noise: 3e-4,
+        seed: 7,
+        from: -0.2,
+        to: 0.6,
+        mark: true,
+        flip_x: false,
+        flip_y: false,
+        origin: (0.3, 0.03),
+        t_impact: 0.2,
+    };
+    let dir = std::env::temp_dir().join(format!("groovelab-datascene-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("marked-track.txt");
+    let track = video::track(&truth, &shot);
+    std::fs::write(&path, video::write(&track, Format::TrackerMulti)).unwrap();
+    let file = path.display().to_string();
+    let mut a = rendered(
+        &scene_of("paper-b4.9", SceneSpec::default()),
+        &data(&[&file]),
+        None,
+        None,
+        library(),
+    );
+    let least = a
+        .lab
+        .series()
+        .unwrap()
+        .found()
+        .unwrap()
+        .least_radius()
+        .unwrap();
+    // The mark is drawn on the rim, R = 2.75 cm; the noise lets R go a little lower.
+    assert!(least < 0.0275 && least > 0.026, "{least}");
+    common::select(&mut a, Key::Radius);
+    // (b = 4.9 cm holds R above 2.45 cm.)
+    press(&mut a, "enter 2 . 6 enter");
+    assert_eq!(a.lab.scene.radius, 0.0275, "refused");
+    let Status::Error(said) = &a.status else {
+        panic!("{:?}", a.status)
+    };
+    assert!(
+        said.contains("R = 2.6 cm") && said.contains("rim mark"),
+        "{said}"
+    );
+    assert!(
+        said.contains(&format!("R ≥ {:.3} cm", least * 100.0)),
+        "{said}"
+    );
+    // Without the data the same R is a valid scene, and with them a larger one too.
+    a.lab.set(Key::Radius, 0.03).unwrap();
+    press(&mut a, "D");
+    a.lab.set(Key::Radius, 0.026).unwrap();
+}
