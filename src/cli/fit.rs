@@ -235,7 +235,13 @@ fn scene_line(lab: &Lab, typed: &SceneArgs, used: &SceneArgs, data: &DataArgs) -
     let file = data.data.first().map(|p| p.display().to_string());
     let mut sources = Vec::new();
     if typed.preset.is_some() || !every_scene_value(&all) {
-        sources.push(format!("preset {}", preset.name));
+        // Named as it came: the user's `--preset`, or the default under the options.
+        let default = if typed.preset.is_none() {
+            "default "
+        } else {
+            ""
+        };
+        sources.push(format!("{default}preset {}", preset.name));
     }
     match (&file, from_file.is_empty(), sources.is_empty()) {
         (Some(file), false, true) => sources.push(format!("from {file}'s header")),
@@ -246,7 +252,10 @@ fn scene_line(lab: &Lab, typed: &SceneArgs, used: &SceneArgs, data: &DataArgs) -
         _ => {}
     }
     if !flags.is_empty() {
-        let flags: Vec<String> = flags
+        // As typed: `--mass`, not the `--mass-left --mass-right` it sets.
+        let flags: Vec<String> = typed
+            .values
+            .rows()
             .iter()
             .map(|k| format!("--{}", k.param().flag))
             .collect();

@@ -133,8 +133,19 @@ pub fn load_series(args: &DataArgs) -> Result<Option<(Series, SceneSpec)>, CliEr
 /// measured series (the lab derives a position track's v_t with the r of each scene
 /// it shows).
 pub fn lab(scene_args: &SceneArgs, data: &DataArgs) -> Result<Lab, CliError> {
-    let settings = scene_args.settings()?;
-    let own = load_series(data)?.map(|(series, own_scene)| OwnData {
+    let mut settings = scene_args.settings()?;
+    let loaded = load_series(data)?;
+    // The file's own scene lines are among the options when they were read with them
+    // (`with_file_scene`): the scene is then the file's.
+    if let Some((_, own_scene)) = &loaded
+        && own_scene.given().next().is_some()
+        && own_scene
+            .given()
+            .all(|(k, _)| scene_args.values.given().any(|(j, _)| j == k))
+    {
+        settings.scene_file = data.data.first().map(|p| p.display().to_string());
+    }
+    let own = loaded.map(|(series, own_scene)| OwnData {
         groove: stated_groove(settings.preset(), &own_scene),
         name: data
             .data

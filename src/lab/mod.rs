@@ -134,6 +134,25 @@ impl Lab {
         self.settings.preset()
     }
 
+    /// The name a file of this scene is suggested under: the preset's, or for the
+    /// user's own scene (their data, in the scene their file's `# scene` lines or the
+    /// options give) the data file's, without its extension.
+    pub fn scene_name(&self) -> String {
+        let own_scene = self
+            .settings
+            .flags_in_force()
+            .is_some_and(|f| f.given().next().is_some());
+        match self.own_data() {
+            Some(own) if own_scene => {
+                let first = own.name.split(" + ").next().unwrap_or(&own.name);
+                std::path::Path::new(first)
+                    .file_stem()
+                    .map_or(first.into(), |s| s.to_string_lossy().into_owned())
+            }
+            _ => self.preset().name.clone(),
+        }
+    }
+
     /// The settings layers.
     pub fn settings(&self) -> &Settings {
         &self.settings

@@ -35,6 +35,8 @@ pub struct Settings {
     start: Preset,
     /// The command line's values, SI (in force until another preset is picked).
     pub flags: SceneSpec,
+    /// The data file whose `# scene` lines are among `flags`, as the user named it.
+    pub scene_file: Option<String>,
     /// The app's edits, oldest first.
     edits: Vec<Edit>,
 }
@@ -44,7 +46,17 @@ impl Settings {
         Settings {
             start: preset,
             flags,
+            scene_file: None,
             edits: Vec::new(),
+        }
+    }
+
+    /// Where the scene comes from, for the status line: `scene of FILE` while a data
+    /// file's `# scene` lines give it (with the options over them), else `preset NAME`.
+    pub fn source(&self) -> String {
+        match (&self.scene_file, self.flags_in_force()) {
+            (Some(file), Some(_)) => format!("scene of {}", file_name(file)),
+            _ => format!("preset {}", self.preset().name),
         }
     }
 
@@ -143,6 +155,13 @@ impl Settings {
         let (scene, span) = spec.resolve()?;
         Ok((scene, span, end))
     }
+}
+
+/// The last part of a path (`ball.csv` of `runs/ball.csv`).
+pub fn file_name(path: &str) -> String {
+    std::path::Path::new(path)
+        .file_name()
+        .map_or(path.into(), |f| f.to_string_lossy().into_owned())
 }
 
 /// Writes `changes` into a layer's sum and moves the span's end by the rule: a

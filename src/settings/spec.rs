@@ -86,6 +86,29 @@ impl SceneSpec {
         self
     }
 
+    /// The rows this layer's values were given through, in table order: one that sets
+    /// several keys (`mass`) where this layer holds one value for them all, else each
+    /// key's own row (`mass_left`) — the options as they were typed.
+    pub fn rows(&self) -> Vec<Key> {
+        PARAMS
+            .iter()
+            .filter(|p| {
+                let own = p.sets.len() == 1 && self.values[p.key as usize].is_some();
+                let joint = |q: &&Param| q.sets.len() > 1 && q.sets.contains(&p.key);
+                match p.sets.len() {
+                    1 => {
+                        own && !PARAMS
+                            .iter()
+                            .filter(joint)
+                            .any(|q| self.get(q.key).is_some())
+                    }
+                    _ => self.get(p.key).is_some(),
+                }
+            })
+            .map(|p| p.key)
+            .collect()
+    }
+
     /// Every value this layer stores, in table order (per ball: `mass_left`, not `mass`).
     pub fn given(&self) -> impl Iterator<Item = (Key, f64)> + '_ {
         Key::ALL

@@ -267,3 +267,49 @@ fn an_r_edited_below_the_rim_marks_distance_is_refused() {
     press(&mut a, "D");
     a.lab.set(Key::Radius, 0.026).unwrap();
 }
+
+/// The real source is named: the status line says `scene of FILE` when the file's
+/// `# scene` lines give the scene (not the default preset under them), the export
+/// prompt suggests the data file's name for the student's own scene, and `fit` lists
+/// the options as typed (`--mass`, not `--mass-left --mass-right`) over the default
+/// preset, named as such.
+#[test]
+fn the_source_of_the_scene_is_named_as_it_came() {
+    let file = velocity_file(
+        "lab-run.csv",
+        "# scene radius = 1.5 cm\n# scene width = 2.1 cm\n# scene mass = 110 g\n",
+    );
+    let screen =
+        common::run_in_process(&["render", "--data", &file, "--keys", "w", "--size", "120x40"])
+            .unwrap();
+    let rows: Vec<&str> = screen.lines().collect();
+    let status = rows[rows.len() - 2..].join("\n");
+    assert!(status.contains("scene of lab-run.csv"), "{status}");
+    assert!(!status.contains("preset paper-b4.9"), "{status}");
+    assert!(
+        screen.contains("lab-run-run.csv"),
+        "the export's name: {screen}"
+    );
+    // The preset's own scene keeps its name.
+    let a = rendered(
+        &scene_of("paper-b4.9", SceneSpec::default()),
+        &data(&[&file]),
+        None,
+        None,
+        library(),
+    );
+    assert_eq!(a.lab.settings().source(), "preset paper-b4.9");
+    assert_eq!(a.lab.scene_name(), "paper-b4.9");
+    let plain = velocity_file("typed.csv", "");
+    let fit = common::run_in_process(&[
+        "fit", "--data", &plain, "--radius", "1.5cm", "--width", "2.1cm", "--mass", "110g", "--v0",
+        "0.5",
+    ])
+    .unwrap();
+    assert!(
+        fit.starts_with(
+            "scene (default preset paper-b4.9 with --radius --width --mass --v0): R = 1.5 cm"
+        ),
+        "{fit}"
+    );
+}

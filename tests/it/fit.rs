@@ -424,7 +424,7 @@ fn a_data_file_needs_a_scene_and_the_fit_says_which() {
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(
         text.starts_with(
-            "scene (preset paper-b4.9 with --width --v0-left --v0-right): R = 2.75 cm, b = 4.4 cm"
+            "scene (default preset paper-b4.9 with --width --v0): R = 2.75 cm, b = 4.4 cm"
         ),
         "{text}"
     );
@@ -1011,7 +1011,7 @@ fn the_fit_names_the_source_of_its_scene() {
     let line = first(&[&part]);
     assert!(
         line.starts_with(&format!(
-            "scene (preset paper-b4.9 with {part}'s header (radius, width, mass_left, mass_right, v0_left, v0_right, restitution, rolling_resistance)): R = 2.75 cm, b = 4.4 cm"
+            "scene (default preset paper-b4.9 with {part}'s header (radius, width, mass_left, mass_right, v0_left, v0_right, restitution, rolling_resistance)): R = 2.75 cm, b = 4.4 cm"
         )),
         "{line}"
     );

@@ -297,7 +297,8 @@ impl App {
         }
     }
 
-    /// The export prompt, with a file name from the preset and what is exported; `W`
+    /// The export prompt, with a file name from the scene ([`crate::lab::Lab::scene_name`])
+    /// and what is exported; `W`
     /// on a view without a figure says so instead.
     fn ask_export(&mut self, kind: Export) {
         self.status = Status::None;
@@ -315,7 +316,7 @@ impl App {
             kind,
             Field::suggested(format!(
                 "{}-{what}.{}",
-                self.lab.preset().name,
+                self.lab.scene_name(),
                 kind.extension()
             )),
         );

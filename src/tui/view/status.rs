@@ -68,10 +68,11 @@ pub(super) fn render(app: &App, status: Rect, hints: Rect, buf: &mut Buffer, the
     }
 }
 
-/// The preset's name, and the data file loaded (`data: ball.txt`, cut from the left,
+/// Where the scene comes from (the preset, or the data file whose `# scene` lines
+/// give it), and the data file loaded (`data: ball.txt`, cut from the left,
 /// so at the folders first, when long): what the numbers on screen come from.
 fn right_text(app: &App, width: usize, g: &Glyphs) -> String {
-    let preset = g.ellipsize(&format!("preset {}", app.lab.preset().name), width / 3);
+    let preset = g.ellipsize(&g.text(&app.lab.settings().source()), width / 3);
     let Some(own) = app.lab.own_data() else {
         return preset;
     };
