@@ -11,7 +11,7 @@ use crate::lab::Lab;
 use crate::output::write_atomically;
 use crate::physics::scene::Scene;
 use crate::settings::params::Key;
-use crate::settings::units::{Dimension, show, significant};
+use crate::settings::units::{Dimension, show, significant, with_uncertainty};
 use crate::study::fit::{self, Candidate, Fits, Free, LineFit, ModelFit};
 use crate::study::measured::Found;
 
@@ -329,17 +329,20 @@ fn line_fit_lines(out: &mut String, scene: &Scene, l: &LineFit, paper_data: bool
     );
     // Without a rim mark a_t and μ_k,t are not measured: said in words, never NaN.
     let (a_t, mu_t) = if l.a_t.is_finite() && l.mu_t.is_finite() {
-        (
-            format!("{:>6.2} ± {:<5.2}", l.a_t, l.a_t_se),
-            format!("{:.3}", l.mu_t),
-        )
+        (pm_column(l.a_t, l.a_t_se), format!("{:.3}", l.mu_t))
     } else {
         ("not measured".to_string(), "–".to_string())
     };
     let _ = writeln!(
         out,
-        "{:<12} {:>6.2} ± {:<5.2} {:>9.3} {:>11.3} {:>14} {:>9} {:>11.4}",
-        "this fit", l.a_cm, l.a_cm_se, l.mu_cm, l.f_net, a_t, mu_t, l.tau_net
+        "{:<12} {:>14} {:>9.3} {:>11.3} {:>14} {:>9} {:>11.4}",
+        "this fit",
+        pm_column(l.a_cm, l.a_cm_se),
+        l.mu_cm,
+        l.f_net,
+        a_t,
+        mu_t,
+        l.tau_net
     );
     if let Some(p) = fit::paper_row(scene.width).filter(|_| paper_data) {
         let _ = writeln!(
@@ -356,6 +359,18 @@ fn line_fit_lines(out: &mut String, scene: &Scene, l: &LineFit, paper_data: bool
             );
         }
     }
+}
+
+/// A fitted value and its ± (4 places, as the fits print; [`with_uncertainty`]).
+fn pm(v: f64, e: f64) -> String {
+    let (v, e) = with_uncertainty(v, e, 4);
+    format!("{v} ± {e}")
+}
+
+/// An acceleration and its ± in the line fits' 14-character column (2 places).
+fn pm_column(v: f64, e: f64) -> String {
+    let (v, e) = with_uncertainty(v, e, 2);
+    format!("{v:>6} ± {e:<5}")
 }
 
 /// The model fit of a series: what it was fitted to, the fitted values with their
@@ -383,7 +398,7 @@ fn model_fit_lines(out: &mut String, mf: &ModelFit) {
     let value = |name: &str, v: f64, se: Option<f64>, unit: &str| match (mf.undetermined(name), se)
     {
         (Some(n), _) => format!("not determined ({})", n.reason),
-        (None, Some(se)) => format!("{v:.4} ± {:.4}{unit}", 2.0 * se),
+        (None, Some(se)) => format!("{}{unit}", pm(v, 2.0 * se)),
         (None, None) => format!("{v:.4}{unit}"),
     };
     let mu_se = Some(mf.mu_se).filter(|s| s.is_finite());
@@ -534,7 +549,7 @@ fn mu_cell(m: &ModelFit) -> String {
     if m.undetermined("mu").is_some() {
         "not determined".to_string()
     } else {
-        format!("{:.4} ± {:.4}", m.mu, 2.0 * m.mu_se)
+        pm(m.mu, 2.0 * m.mu_se)
     }
 }
 
@@ -544,7 +559,7 @@ fn mu_cell(m: &ModelFit) -> String {
 fn cell(m: &ModelFit, name: &str, v: f64, se: Option<f64>) -> String {
     match se {
         _ if m.undetermined(name).is_some() => "not determined".to_string(),
-        Some(se) => format!("{v:.4} ± {:.4}", 2.0 * se),
+        Some(se) => pm(v, 2.0 * se),
         None => format!("{v:.4}"),
     }
 }
@@ -641,7 +656,7 @@ fn models_table(models: &[Candidate], positions: bool) -> String {
                 let (name, unit) = symbol(e.parameter);
                 match (&e.not_determined, e.se) {
                     (Some(_), _) => format!("{name} not determined"),
-                    (None, Some(se)) => format!("{name} {:.4} ± {:.4}{unit}", e.value, 2.0 * se),
+                    (None, Some(se)) => format!("{name} {}{unit}", pm(e.value, 2.0 * se)),
                     (None, None) => format!("{name} {:.4}{unit}", e.value),
                 }
             })

@@ -383,6 +383,29 @@ pub fn show_exact(value: f64, dim: Dimension) -> String {
     }
 }
 
+/// Below this a ± is said, not printed: what is left of an exact round trip (the
+/// program's own noise-free export fitted back) is rounding and the fit's tolerance.
+pub const SMALLEST_UNCERTAINTY: f64 = 1e-6;
+
+/// A value and its ± for people, by the one rule every ± follows (the fit command,
+/// the Fit view, the figures): both to `decimals` places while the ± shows a digit
+/// there; a smaller ± keeps two significant digits and the value as many places
+/// (`0.170012 ± 0.000040`, never `0.1700 ± 0.0000`); a ± below
+/// [`SMALLEST_UNCERTAINTY`] is `< 1e-6`, the value to six places. A ± that is not a
+/// number is written as it is (callers say in words why there is none).
+pub fn with_uncertainty(value: f64, se: f64, decimals: usize) -> (String, String) {
+    if se < SMALLEST_UNCERTAINTY {
+        return (format!("{value:.6}"), "< 1e-6".to_string());
+    }
+    let half_unit = 0.5 * 10f64.powi(-(decimals.min(15) as i32));
+    if !se.is_finite() || se >= half_unit {
+        return (format!("{value:.decimals$}"), format!("{se:.decimals$}"));
+    }
+    // Two significant digits: the place of the first one, and one more.
+    let places = (1 - se.log10().floor() as i32).max(decimals as i32) as usize;
+    (format!("{value:.places$}"), format!("{se:.places$}"))
+}
+
 /// `v` with `digits` significant digits, without trailing zeros or exponent for lab-sized values.
 pub fn significant(v: f64, digits: usize) -> String {
     if v == 0.0 || !v.is_finite() {
@@ -466,6 +489,29 @@ fn trim_zeros(s: String) -> String {
 
 #[cfg(test)]
 mod tests {
+
+    #[test]
+    fn an_uncertainty_is_never_printed_as_zero() {
+        let pm = |v, e, d| {
+            let (v, e) = with_uncertainty(v, e, d);
+            format!("{v} ± {e}")
+        };
+        // A ± that shows at the column's places keeps them.
+        assert_eq!(pm(0.16983, 0.00041, 4), "0.1698 ± 0.0004");
+        assert_eq!(pm(3.6512, 0.061, 2), "3.65 ± 0.06");
+        assert_eq!(pm(3.6512, 0.005, 2), "3.65 ± 0.01");
+        // Smaller: two significant digits, the value as many places.
+        assert_eq!(pm(0.1700123, 0.0000403, 4), "0.170012 ± 0.000040");
+        assert_eq!(pm(3.6512, 0.00499, 2), "3.6512 ± 0.0050");
+        assert_eq!(pm(0.5, 1.2e-6, 4), "0.5000000 ± 0.0000012");
+        // Below 1e-6 it is said.
+        assert_eq!(pm(0.17, 3e-9, 4), "0.170000 ± < 1e-6");
+        assert_eq!(pm(0.17, 0.0, 4), "0.170000 ± < 1e-6");
+        assert_eq!(pm(0.17, 3e-9, 9), "0.170000 ± < 1e-6");
+        // Wider than the places: as before.
+        assert_eq!(pm(12.0, 3.0, 1), "12.0 ± 3.0");
+    }
+
     use super::*;
 
     #[test]

@@ -1160,6 +1160,60 @@ fn a_window_outside_the_data_says_where_the_data_are() {
     );
 }
 
+/// The ± that `text` prints as zero ("± 0.0000", "±0.00", "+- 0.000"): a number
+/// after a ± made of zeros alone.
+fn zero_uncertainties(text: &str) -> Vec<String> {
+    text.lines()
+        .flat_map(|line| {
+            line.split('±')
+                .skip(1)
+                .chain(line.split("+-").skip(1))
+                .filter(|after| {
+                    let number: String = after
+                        .trim_start()
+                        .chars()
+                        .take_while(|c| c.is_ascii_digit() || *c == '.')
+                        .collect();
+                    !number.is_empty() && number.parse::<f64>() == Ok(0.0)
+                })
+                .map(|_| line.to_string())
+                .collect::<Vec<_>>()
+        })
+        .collect()
+}
+
+/// Issue 19: the program's own noise-free run fitted back printed "± 0.0000" (table)
+/// and "±0.00" (Fit view): a ± that reads as "exactly known". One rule for every ±:
+/// a ± too small for the column's places gets two significant digits, one below 1e-6
+/// says "< 1e-6".
+#[test]
+fn an_exact_round_trip_never_prints_a_zero_uncertainty() {
+    let (path, scene) = noise_free_run("exact-pm.csv");
+    let mut args = vec!["fit", "--data", &path];
+    args.extend(scene);
+    let table = String::from_utf8(groovelab(&args).stdout).unwrap();
+    assert!(table.contains("μ_k = 0.170000 ± < 1e-6"), "{table}");
+    assert_eq!(zero_uncertainties(&table), Vec::<String>::new(), "{table}");
+    for ascii in [false, true] {
+        let mut args = vec!["render", "--data", &path, "--keys", "f"];
+        args.extend(scene);
+        if ascii {
+            args.push("--ascii");
+        }
+        let screen = String::from_utf8(groovelab(&args).stdout).unwrap();
+        assert!(screen.contains("< 1e-6"), "{screen}");
+        assert_eq!(
+            zero_uncertainties(&screen),
+            Vec::<String>::new(),
+            "{screen}"
+        );
+    }
+    // The checker itself finds what it must.
+    assert_eq!(zero_uncertainties("μ_k = 0.1700 ± 0.0000 (2σ)").len(), 1);
+    assert_eq!(zero_uncertainties("|a_cm| 2.34+-0.00 m/s2").len(), 1);
+    assert!(zero_uncertainties("0.1700 ± 0.0004, ±0.020 m/s").is_empty());
+}
+
 /// The candidate models are fitted and scored on one set of frames: criteria over
 /// different frames are not comparable. paper-b4.9's recollisions move with μ_k, v0
 /// and c_rr, so each model's own fit leaves out different frames (50, 49 and 48 of

@@ -8,6 +8,7 @@ use ratatui::widgets::Widget;
 
 use super::panel::{Ranked, block, by_priority, draw_lines};
 use crate::lab::jobs::State;
+use crate::settings::units::with_uncertainty;
 use crate::study::fit::{self, ModelFit};
 use crate::tui::app::App;
 use crate::tui::theme::Theme;
@@ -86,7 +87,11 @@ fn line_fit_lines(l: &fit::LineFit, theme: &Theme) -> Ranked<'static> {
             7,
             Line::from(vec![
                 label("|a_cm| "),
-                value(format!("{:.2}±{:.2} m/s{}", l.a_cm, l.a_cm_se, g.squared)),
+                value(format!(
+                    "{} m/s{}",
+                    pm_tight(l.a_cm, l.a_cm_se, 2),
+                    g.squared
+                )),
                 label(&format!("  {}_cm ", g.mu)),
                 value(format!("{:.3}", l.mu_cm)),
             ]),
@@ -97,8 +102,11 @@ fn line_fit_lines(l: &fit::LineFit, theme: &Theme) -> Ranked<'static> {
                 label("|a_t|  "),
                 value(if l.a_t.is_finite() {
                     format!(
-                        "{:.2}±{:.2} m/s{}  {}_t {:.3}",
-                        l.a_t, l.a_t_se, g.squared, g.mu, l.mu_t
+                        "{} m/s{}  {}_t {:.3}",
+                        pm_tight(l.a_t, l.a_t_se, 2),
+                        g.squared,
+                        g.mu,
+                        l.mu_t
                     )
                 } else {
                     format!("and {}_t not measured (no rim mark)", g.mu)
@@ -246,6 +254,13 @@ fn model_choice_lines(models: &[fit::Candidate], lines: &mut Ranked<'static>, th
     }
 }
 
+/// `v±e` without spaces, for narrow columns, by the one rule of every ±
+/// ([`with_uncertainty`]).
+fn pm_tight(v: f64, e: f64, decimals: usize) -> String {
+    let (v, e) = with_uncertainty(v, e, decimals);
+    format!("{v}±{}", e.replace("< ", "<"))
+}
+
 /// The model fit of a velocity series: μ_k ± 2σ, RMS, and the verdict.
 fn model_fit_lines(m: &ModelFit, lines: &mut Ranked<'static>, theme: &Theme) {
     let g = theme.glyphs;
@@ -274,11 +289,8 @@ fn pm(m: &ModelFit, decimals: usize, ascii: bool) -> String {
     if m.undetermined("mu").is_some() {
         "not determined".to_string()
     } else if m.mu_se.is_finite() {
-        format!(
-            "{:.decimals$} ± {:.decimals$} ({two_sigma})",
-            m.mu,
-            2.0 * m.mu_se
-        )
+        let (v, e) = with_uncertainty(m.mu, 2.0 * m.mu_se, decimals);
+        format!("{v} ± {e} ({two_sigma})")
     } else {
         format!("{:.decimals$}", m.mu)
     }
@@ -327,7 +339,7 @@ fn both_fits(v: &ModelFit, p: &ModelFit, width: usize, lines: &mut Ranked<'stati
         if m.undetermined("mu").is_some() {
             "not determined".to_string()
         } else if m.mu_se.is_finite() {
-            format!("{:.decimals$}±{:.decimals$}", m.mu, 2.0 * m.mu_se)
+            pm_tight(m.mu, 2.0 * m.mu_se, decimals)
         } else {
             format!("{:.decimals$}", m.mu)
         }

@@ -86,8 +86,14 @@ pub struct Found {
     pub impact_x: f64,
     /// +1 when the other ball lies toward the file's +x, −1 when toward −x.
     pub direction: f64,
-    /// Speed of the centre toward the other ball just before the impact, m/s.
+    /// Speed of the centre toward the other ball before the first impact, m/s: the
+    /// slope of a straight line through every frame of the approach (the ball rolls
+    /// toward the impact at a steady speed; one local slope at the impact scattered
+    /// by several of its own ±).
     pub approach_speed: f64,
+    /// Its standard error, m/s (the line's, from its residuals: the frames' errors are
+    /// independent).
+    pub approach_speed_se: f64,
     pub frames_before: usize,
     pub frames_after: usize,
     /// Later impacts found in the motion, s from the first; the derivative does not
@@ -142,8 +148,19 @@ impl Found {
                 self.frames + self.frames_dropped
             );
         }
+        // Two frames before the impact give a speed but no ± (`--impact-at` early).
+        let approach = if self.approach_speed_se.is_finite() {
+            let (v, e) = crate::settings::units::with_uncertainty(
+                self.approach_speed,
+                self.approach_speed_se,
+                3,
+            );
+            format!("{v} ± {e}")
+        } else {
+            format!("{:.3}", self.approach_speed)
+        };
         s += &format!(
-            "first impact {} at t = {:.4} s, x = {:.2} mm of the file ({} frames before, {} after); the other ball lies toward {}x; approach speed {:.3} m/s\n",
+            "first impact {} at t = {:.4} s, x = {:.2} mm of the file ({} frames before, {} after); the other ball lies toward {}x; approach speed {approach} m/s (a line through the frames before it)\n",
             if self.impact_detected {
                 "found"
             } else {
@@ -154,7 +171,6 @@ impl Found {
             self.frames_before,
             self.frames_after,
             if self.direction > 0.0 { "+" } else { "−" },
-            self.approach_speed
         );
         s += &format!(
             "velocities by local quadratic fits over ±{:.1} ms ({} frames), never across an impact",
@@ -349,6 +365,7 @@ pub fn derive(
     let first = kinks[0];
     let dir = first.before.signum();
     let (before, after) = frames_around(&ts, first.t, opts.min_frames)?;
+    let approach = fit::line(&ts[..before], &xs[..before]);
     let cuts: Vec<f64> = kinks.iter().map(|k| k.t).collect();
     let dx = derivatives(&ts, &xs, n, &cuts, sigma);
     let spin = spin_of(track, &rows, dir, n, &cuts);
@@ -414,7 +431,8 @@ pub fn derive(
         impact_detected: opts.impact_at.is_none(),
         impact_x: first.x,
         direction: dir,
-        approach_speed: first.before.abs(),
+        approach_speed: approach.slope.abs(),
+        approach_speed_se: approach.slope_se,
         frames_before: before,
         frames_after: after,
         later_impacts: kinks[1..].iter().map(|k| k.t - first.t).collect(),
