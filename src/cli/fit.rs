@@ -11,7 +11,7 @@ use crate::lab::Lab;
 use crate::output::write_atomically;
 use crate::physics::scene::Scene;
 use crate::settings::params::Key;
-use crate::settings::units::{Dimension, show, significant, with_uncertainty};
+use crate::settings::units::{Dimension, show, show_exact, significant, with_uncertainty};
 use crate::study::fit::{self, Candidate, Fits, Free, LineFit, ModelFit};
 use crate::study::measured::Found;
 
@@ -274,7 +274,8 @@ fn scene_line(lab: &Lab, typed: &SceneArgs, used: &SceneArgs, data: &DataArgs) -
     format!(
         "scene ({source}): R = {}, b = {}, m = {} / {}, v0 = {} / {}, μ_k = {} (start), e = {}\n{other}",
         len(scene.radius),
-        len(scene.width),
+        // Every digit given: b = 5.4999 cm at four digits reads 5.5 cm = 2R, out of range.
+        show_exact(scene.width, Dimension::Length),
         show(scene.left.mass, Dimension::Mass),
         show(scene.right.mass, Dimension::Mass),
         show(scene.left.v0, Dimension::Speed),

@@ -13,7 +13,7 @@ use serde::Serialize;
 
 use super::least_squares::{Target, labelled_residuals, with};
 use super::model::{Scored, scored_fit, scored_fit_within, thinned};
-use super::problem::{FitError, Free};
+use super::problem::{Evals, FitError, Free};
 use super::uncertainty::{Label, NotIdentified};
 use crate::physics::scene::Scene;
 use crate::study::Progress;
@@ -130,7 +130,16 @@ pub fn compare_models(
     m: &Measured,
     progress: &dyn Progress,
 ) -> Result<Vec<Candidate>, FitError> {
-    let mut models = compare_candidates(scene, m, candidates(m), progress)?;
+    compare_within(scene, m, &Evals::new(progress))
+}
+
+/// [`compare_models`], counting its work in `evals` (the budget of a whole fit).
+pub(super) fn compare_within(
+    scene: &Scene,
+    m: &Measured,
+    evals: &Evals,
+) -> Result<Vec<Candidate>, FitError> {
+    let mut models = candidates_within(scene, m, candidates(m), evals)?;
     by_bic(&mut models);
     Ok(models)
 }
@@ -153,6 +162,16 @@ pub fn compare_candidates(
     candidates: Vec<Vec<Free>>,
     progress: &dyn Progress,
 ) -> Result<Vec<Candidate>, FitError> {
+    candidates_within(scene, m, candidates, &Evals::new(progress))
+}
+
+/// [`compare_candidates`], counting its work in `evals`.
+fn candidates_within(
+    scene: &Scene,
+    m: &Measured,
+    candidates: Vec<Vec<Free>>,
+    evals: &Evals,
+) -> Result<Vec<Candidate>, FitError> {
     let target = if m.x.is_some() {
         Target::Position
     } else {
@@ -169,7 +188,7 @@ pub fn compare_candidates(
             .min_by(|a, b| a.1.cost.total_cmp(&b.1.cost))
             .map_or(*scene, |(f, s)| with(scene, f, &s.values));
         // A model with more values than the data have points is not a candidate.
-        match scored_fit(&start, m, &free, target, progress) {
+        match scored_fit(&start, m, &free, target, evals) {
             Ok(s) => fitted.push((free, s)),
             Err(FitError::Data(_)) => continue,
             Err(e) => return Err(e),
@@ -198,7 +217,7 @@ pub fn compare_candidates(
             // From its own fit or a smaller model's refit, whichever fits the common
             // frames better: a larger model must fit them at least as well.
             let cost_on = |s: &Scene| {
-                let r = labelled_residuals(s, data, &common, target, true).0;
+                let r = labelled_residuals(s, data, &common, target, true, evals).0;
                 r.iter().map(|x| x * x).sum::<f64>()
             };
             let free = fitted[k].0.clone();
@@ -209,13 +228,13 @@ pub fn compare_candidates(
                 .chain([fitted[k].1.scene])
                 .min_by(|a, b| cost_on(a).total_cmp(&cost_on(b)))
                 .unwrap_or(fitted[k].1.scene);
-            fitted[k].1 = scored_fit_within(&start, m, &free, target, Some(&common), progress)?;
+            fitted[k].1 = scored_fit_within(&start, m, &free, target, Some(&common), evals)?;
         }
         common = shared_frames(&fitted);
     }
     let scored: Vec<(Vec<f64>, Vec<Label>)> = fitted
         .iter()
-        .map(|(_, s)| labelled_residuals(&s.scene, data, &common, target, true))
+        .map(|(_, s)| labelled_residuals(&s.scene, data, &common, target, true, evals))
         .collect();
     let cost = |r: &[f64]| r.iter().map(|x| x * x).sum::<f64>();
     // The noise's correlation from the best fit's residuals (the least structure a

@@ -4,8 +4,7 @@
 
 use super::problem::{Evals, FitError, Free};
 use super::uncertainty::{Label, clamped, solve};
-use crate::physics::engine;
-use crate::physics::scene::{Scene, Span};
+use crate::physics::scene::Scene;
 use crate::physics::solution::Solution;
 use crate::study::measured::series::{Measured, Stencil, Stencils};
 
@@ -28,7 +27,7 @@ pub(super) fn with(scene: &Scene, free: &[Free], p: &[f64]) -> Scene {
 
 /// Points the model fit uses: all but the frames that straddle an impact of the
 /// model `scene` (a frame holding a jump measures neither side of it).
-pub(super) fn fit_points(m: &Measured, scene: &Scene, target: Target) -> Vec<usize> {
+pub(super) fn fit_points(m: &Measured, scene: &Scene, target: Target, evals: &Evals) -> Vec<usize> {
     // Positions do not jump at an impact: every frame counts.
     if target == Target::Position {
         return (0..m.t.len()).collect();
@@ -37,13 +36,7 @@ pub(super) fn fit_points(m: &Measured, scene: &Scene, target: Target) -> Vec<usi
         m.t.windows(2)
             .map(|w| w[1] - w[0])
             .fold(f64::INFINITY, f64::min);
-    let sol = engine::solve(
-        scene,
-        &Span {
-            t_start: m.t[0].min(-1e-3),
-            t_end: None,
-        },
-    );
+    let sol = evals.solve(scene, m.t[0].min(-1e-3));
     let impacts: Vec<f64> = sol
         .events
         .iter()
@@ -72,8 +65,9 @@ pub(super) fn residuals_of(
     idx: &[usize],
     target: Target,
     weighted: bool,
+    evals: &Evals,
 ) -> Vec<f64> {
-    labelled_residuals(scene, m, idx, target, weighted).0
+    labelled_residuals(scene, m, idx, target, weighted, evals).0
 }
 
 /// [`residuals_of`], with each velocity residual's [`Label`] (none for positions).
@@ -83,15 +77,9 @@ pub(super) fn labelled_residuals(
     idx: &[usize],
     target: Target,
     weighted: bool,
+    evals: &Evals,
 ) -> (Vec<f64>, Vec<Label>) {
-    let t0 = m.t[0].min(-1e-3);
-    let sol = engine::solve(
-        scene,
-        &Span {
-            t_start: t0,
-            t_end: None,
-        },
-    );
+    let sol = evals.solve(scene, m.t[0].min(-1e-3));
     match target {
         Target::Velocity => velocity_residuals(&sol, m, idx, weighted),
         Target::Position => position_residuals(scene, &sol, m, idx),
@@ -348,15 +336,52 @@ pub(super) fn nuisance(m: &Measured, target: Target) -> usize {
     }
 }
 
-pub(super) fn residuals(scene: &Scene, m: &Measured, idx: &[usize], target: Target) -> Vec<f64> {
-    residuals_of(scene, m, idx, target, true)
+pub(super) fn residuals(
+    scene: &Scene,
+    m: &Measured,
+    idx: &[usize],
+    target: Target,
+    evals: &Evals,
+) -> Vec<f64> {
+    residuals_of(scene, m, idx, target, true, evals)
 }
 
 /// Mean squared residual of `scene`, over the frames away from its own impacts.
-fn mean_cost(scene: &Scene, m: &Measured, target: Target) -> f64 {
-    let idx = fit_points(m, scene, target);
-    let r = residuals(scene, m, &idx, target);
+pub(super) fn mean_cost(scene: &Scene, m: &Measured, target: Target, evals: &Evals) -> f64 {
+    let idx = fit_points(m, scene, target, evals);
+    let r = residuals(scene, m, &idx, target, evals);
     r.iter().map(|x| x * x).sum::<f64>() / r.len().max(1) as f64
+}
+
+/// `n + 1` values of μ spaced evenly in log from 0.01 to 1.
+fn mu_grid(n: u32) -> Vec<f64> {
+    (0..=n)
+        .map(|k| 0.01 * 100f64.powf(f64::from(k) / f64::from(n)))
+        .collect()
+}
+
+/// The values `p` with the μ (at `i`) of a coarse scan (21 values) that fits best, and
+/// their [`mean_cost`]: to choose among starts of a fit.
+pub(super) fn coarse_mu(
+    scene: &Scene,
+    m: &Measured,
+    free: &[Free],
+    p: &[f64],
+    i: usize,
+    target: Target,
+    evals: &Evals,
+) -> Result<(Vec<f64>, f64), FitError> {
+    let mut best = (p.to_vec(), f64::INFINITY);
+    for mu in mu_grid(20) {
+        evals.next()?;
+        let mut q = p.to_vec();
+        q[i] = mu;
+        let cost = mean_cost(&with(scene, free, &q), m, target, evals);
+        if cost < best.1 {
+            best = (q, cost);
+        }
+    }
+    Ok(best)
 }
 
 /// The μ that minimises [`mean_cost`]: a log-spaced scan of 0.01 … 1, then golden
@@ -374,11 +399,9 @@ pub(super) fn scan_mu(
         evals.next()?;
         let mut q = p.to_vec();
         q[i] = mu;
-        Ok(mean_cost(&with(scene, free, &q), m, target))
+        Ok(mean_cost(&with(scene, free, &q), m, target, evals))
     };
-    let grid: Vec<f64> = (0..=80)
-        .map(|k| 0.01 * 100f64.powf(k as f64 / 80.0))
-        .collect();
+    let grid = mu_grid(80);
     let costs = grid
         .iter()
         .map(|&mu| cost(mu))
@@ -425,6 +448,7 @@ pub(super) fn normal_matrix(j: &[Vec<f64>]) -> Vec<Vec<f64>> {
 
 /// ∂r/∂p by forward differences (backward at the upper bound of e); one row per
 /// parameter.
+#[allow(clippy::too_many_arguments)]
 pub(super) fn jacobian(
     scene: &Scene,
     m: &Measured,
@@ -433,6 +457,7 @@ pub(super) fn jacobian(
     p: &[f64],
     r0: &[f64],
     target: Target,
+    evals: &Evals,
 ) -> Vec<Vec<f64>> {
     (0..p.len())
         .map(|j| {
@@ -440,7 +465,7 @@ pub(super) fn jacobian(
             if free[j] == Free::Restitution && p[j] + h > 1.0 {
                 h = -h;
             }
-            difference(scene, m, free, idx, p, r0, target, j, h)
+            difference(scene, m, free, idx, p, r0, target, (j, h), evals)
         })
         .collect()
 }
@@ -450,7 +475,7 @@ fn step(v: f64) -> f64 {
     1e-6 * v.abs().max(0.1)
 }
 
-/// (r(p + h e_j) − r(p)) / h.
+/// (r(p + h e_j) − r(p)) / h, for `(j, h)`.
 #[allow(clippy::too_many_arguments)]
 fn difference(
     scene: &Scene,
@@ -460,12 +485,12 @@ fn difference(
     p: &[f64],
     r0: &[f64],
     target: Target,
-    j: usize,
-    h: f64,
+    (j, h): (usize, f64),
+    evals: &Evals,
 ) -> Vec<f64> {
     let mut q = p.to_vec();
     q[j] += h;
-    let r = residuals(&with(scene, free, &q), m, idx, target);
+    let r = residuals(&with(scene, free, &q), m, idx, target, evals);
     if r.len() != r0.len() {
         // A point dropped or gained at the step: no derivative to take.
         return vec![0.0; r0.len()];
@@ -479,6 +504,7 @@ fn difference(
 /// passes, a window that starts to hold a corner): a one-sided difference over the
 /// jump is the jump over the step, huge, and would make the ± collapse to nothing.
 /// Where the residual is smooth both differences agree to O(step).
+#[allow(clippy::too_many_arguments)]
 pub(super) fn smooth_jacobian(
     scene: &Scene,
     m: &Measured,
@@ -487,17 +513,18 @@ pub(super) fn smooth_jacobian(
     p: &[f64],
     r0: &[f64],
     target: Target,
+    evals: &Evals,
 ) -> Vec<Vec<f64>> {
     (0..p.len())
         .map(|j| {
             let h = step(p[j]);
-            let up = difference(scene, m, free, idx, p, r0, target, j, h);
+            let up = difference(scene, m, free, idx, p, r0, target, (j, h), evals);
             // At a bound the step back or forward leaves the allowed range.
             let (lo, hi) = super::uncertainty::bounds(free[j]);
             if p[j] - h <= lo || p[j] + h >= hi {
                 return up;
             }
-            let down = difference(scene, m, free, idx, p, r0, target, j, -h);
+            let down = difference(scene, m, free, idx, p, r0, target, (j, -h), evals);
             up.iter()
                 .zip(&down)
                 .map(|(&a, &b)| if a.abs() <= b.abs() { a } else { b })
@@ -524,7 +551,7 @@ pub(super) fn least_squares(
         )));
     }
     let cost = |p: &[f64]| -> f64 {
-        residuals(&with(scene, free, p), m, idx, target)
+        residuals(&with(scene, free, p), m, idx, target, evals)
             .iter()
             .map(|r| r * r)
             .sum()
@@ -533,8 +560,8 @@ pub(super) fn least_squares(
     let mut c = cost(&p);
     for _ in 0..100 {
         evals.next()?;
-        let r0 = residuals(&with(scene, free, &p), m, idx, target);
-        let j = jacobian(scene, m, free, idx, &p, &r0, target);
+        let r0 = residuals(&with(scene, free, &p), m, idx, target, evals);
+        let j = jacobian(scene, m, free, idx, &p, &r0, target, evals);
         let jtj = normal_matrix(&j);
         let jtr: Vec<f64> = j
             .iter()

@@ -29,7 +29,7 @@ pub use line::{
 pub use model::{
     Agreement, MAX_MODEL_POINTS, ModelFit, POOR_FIT, model_fit, position_fit, thinned,
 };
-pub use problem::{FitError, Free};
+pub use problem::{FitError, Free, WORK_BUDGET};
 pub use regime::{observed_regime, rest_band};
 pub use uncertainty::NotIdentified;
 
@@ -44,7 +44,9 @@ pub struct Fits {
 }
 
 /// Line fit over `window` and model fit with `free`, on `scene` and `m`; stops when
-/// `progress` says so (`FitError::Cancelled`).
+/// `progress` says so (`FitError::Cancelled`), or when the model fit and the
+/// candidate models together spend the work budget ([`WORK_BUDGET`]:
+/// `FitError::Budget`).
 pub fn fit_all(
     scene: &Scene,
     m: &Measured,
@@ -52,7 +54,8 @@ pub fn fit_all(
     free: &[Free],
     progress: &dyn Progress,
 ) -> Result<Fits, FitError> {
-    let model_fit = model_fit(scene, m, free, progress)?;
+    let evals = problem::Evals::new(progress);
+    let model_fit = model::scored_fit(scene, m, free, least_squares::Target::Velocity, &evals)?.fit;
     let given = [window.0.is_some(), window.1.is_some()];
     // Without v_t the data cannot say when sliding ends, and a track's derived v_t
     // says it poorly: the fitted model does ([`regime::sliding_end`]).
@@ -82,7 +85,7 @@ pub fn fit_all(
             ..line_fit(m, scene, window)?
         },
         model_fit,
-        models: compare_models(scene, m, progress)?,
+        models: choice::compare_within(scene, m, &evals)?,
     };
     check_finite(&fits, m, scene)?;
     Ok(fits)
@@ -176,6 +179,71 @@ fn not_finite(bad: &[&str], data: &Measured, scene: &Scene) -> String {
 mod tests {
     use super::*;
     use crate::physics::scene::Ball;
+
+    /// Trial item 19: near b = 2R each run of the model has thousands of segments, and
+    /// `fit --width 5.4999cm` took 88 s to say "μ_k not determined". The fit counts its
+    /// model evaluations and their segments, and stops at its budget with a sentence;
+    /// the same data in their own scene fit far within the real budget.
+    #[test]
+    fn a_fit_near_b_2r_stops_at_its_work_budget_and_says_so() {
+        let ball = Ball {
+            mass: 0.167,
+            v0: 0.79,
+        };
+        let scene = Scene {
+            radius: 0.0275,
+            width: 0.049,
+            mu: 0.17,
+            g: 9.81,
+            restitution: 1.0,
+            rolling_resistance: 0.0,
+            left: ball,
+            right: ball,
+        };
+        let sol = crate::physics::engine::solve(
+            &scene,
+            &crate::physics::scene::Span {
+                t_start: -0.1,
+                t_end: None,
+            },
+        );
+        let t: Vec<f64> = (0..30).map(|i| -0.1 + f64::from(i) / 50.0).collect();
+        let v_cm = t.iter().map(|&t| sol.at(t).left.v).collect();
+        let v_t = t.iter().map(|&t| sol.at(t).left.u).collect();
+        let m = Measured::velocities(t, v_cm, v_t);
+        let (quiet, free) = (&crate::study::Quiet, &[Free::Mu]);
+        let velocity = least_squares::Target::Velocity;
+        let near = Scene {
+            width: 0.054999,
+            ..scene
+        };
+        let budget = 40_000;
+        let evals = problem::Evals::with_budget(quiet, budget);
+        let err = model::scored_fit(&near, &m, free, velocity, &evals).err();
+        let Some(FitError::Budget {
+            evaluations,
+            segments,
+            longest,
+        }) = err.clone()
+        else {
+            panic!("{err:?}")
+        };
+        // Runs of thousands of segments: stopped after the few the budget holds.
+        assert!(longest > 5_000, "{longest}");
+        assert_eq!(evaluations, evals.evaluations());
+        assert!(segments > budget && segments <= budget + 2 * longest as u64);
+        assert!(evaluations <= budget / 5_000 + 2, "{evaluations}");
+        let text = err.unwrap().to_string();
+        assert!(
+            text.contains("work budget") && text.contains("μ_k is not determined"),
+            "{text}"
+        );
+        // The data's own scene: a fit of tens of segments a run, a small part of it.
+        let evals = problem::Evals::new(quiet);
+        let fitted = model::scored_fit(&scene, &m, free, velocity, &evals).unwrap();
+        assert!((fitted.fit.mu - 0.17).abs() < 1e-3, "{}", fitted.fit.mu);
+        assert!(evals.segments() < WORK_BUDGET / 100, "{}", evals.segments());
+    }
 
     #[test]
     fn a_fit_without_finite_numbers_says_what_the_numbers_look_like_and_which_options_read_them() {

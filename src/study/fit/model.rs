@@ -13,8 +13,8 @@ use crate::study::Progress;
 use crate::study::measured::series::{Measured, Stencils};
 
 use super::least_squares::{
-    Target, fit_points, labelled_residuals, least_squares, normal_matrix, nuisance, residuals_of,
-    scan_mu, smooth_jacobian, with,
+    Target, coarse_mu, fit_points, labelled_residuals, least_squares, mean_cost, normal_matrix,
+    nuisance, residuals_of, scan_mu, smooth_jacobian, with,
 };
 use super::problem::{Evals, FitError, Free};
 use super::regime::{data_scatter, observed_after, rest_band, sliding_end};
@@ -236,7 +236,7 @@ fn model_fit_of(
     target: Target,
     progress: &dyn Progress,
 ) -> Result<ModelFit, FitError> {
-    scored_fit(scene, m, free, target, progress).map(|s| s.fit)
+    scored_fit(scene, m, free, target, &Evals::new(progress)).map(|s| s.fit)
 }
 
 /// A model fit with what information criteria need: the weighted residual sum of
@@ -265,29 +265,85 @@ fn best_values(
     within: Option<&[usize]>,
     evals: &Evals,
 ) -> Result<(Vec<f64>, Vec<usize>), FitError> {
-    let mut p: Vec<f64> = free
+    let p: Vec<f64> = free
         .iter()
         .map(|f| match f {
             Free::Mu if within.is_none() => scene.mu.max(0.01),
             other => other.value_in(scene),
         })
         .collect();
-    // μ first, by a global scan and golden-section search: the cost is not smooth
-    // where impacts move past data points, and local steps get caught there.
-    if let Some(i) = free.iter().position(|f| *f == Free::Mu)
-        && within.is_none()
-    {
-        p[i] = scan_mu(scene, m, free, &p, i, target, evals)?;
-    }
     let frames = |p: &[f64]| {
-        let mut idx = fit_points(m, &with(scene, free, p), target);
+        let mut idx = fit_points(m, &with(scene, free, p), target, evals);
         if let Some(w) = within {
             idx.retain(|i| w.binary_search(i).is_ok());
         }
         idx
     };
-    // Then every free value together from there, on the frames away from the model's
-    // impacts (chosen again once the fit has moved them).
+    // A refit starts from a fit already made: no scan again.
+    if within.is_some() {
+        return refined(scene, m, free, target, p, &frames, evals);
+    }
+    // From the start that fits best (the scene's values, or others of c_rr: from
+    // c_rr = 0 a μ_k that also brakes the rolling fits nearly as well, and
+    // Levenberg–Marquardt stays on the edge — seen with c_rr = 0.02 and 0.05 in the
+    // data), each tried with its best μ on a coarse scan; then μ by a global scan
+    // and golden-section search (the cost is not smooth where impacts move past data
+    // points, and local steps get caught there), then every free value together.
+    let mu = free.iter().position(|f| *f == Free::Mu);
+    let mut p = p;
+    let tries = starts(free, &p);
+    if tries.len() > 1 {
+        let mut best = (f64::INFINITY, p.clone());
+        for q in tries {
+            let (q, cost) = match mu {
+                Some(i) => coarse_mu(scene, m, free, &q, i, target, evals)?,
+                None => {
+                    evals.next()?;
+                    let cost = mean_cost(&with(scene, free, &q), m, target, evals);
+                    (q, cost)
+                }
+            };
+            if cost < best.0 {
+                best = (cost, q);
+            }
+        }
+        p = best.1;
+    }
+    if let Some(i) = mu {
+        p[i] = scan_mu(scene, m, free, &p, i, target, evals)?;
+    }
+    refined(scene, m, free, target, p, &frames, evals)
+}
+
+/// Other values of c_rr a fit may start from besides the scene's: 0.003 to 0.1, a
+/// factor of about 3 apart (a rolling ball's c_rr lies in 0.001 … 0.05).
+const ROLLING_RESISTANCE_STARTS: [f64; 4] = [0.003, 0.01, 0.03, 0.1];
+
+/// The starts of a fit of `free` from the values `p`: `p` itself, and with c_rr free
+/// `p` with each of [`ROLLING_RESISTANCE_STARTS`] in its place.
+fn starts(free: &[Free], p: &[f64]) -> Vec<Vec<f64>> {
+    let mut out = vec![p.to_vec()];
+    if let Some(i) = free.iter().position(|f| *f == Free::RollingResistance) {
+        out.extend(ROLLING_RESISTANCE_STARTS.iter().map(|&c| {
+            let mut q = p.to_vec();
+            q[i] = c;
+            q
+        }));
+    }
+    out
+}
+
+/// Every free value together by Levenberg–Marquardt from `p`, on the frames `frames`
+/// picks (away from the model's impacts: chosen again once the fit has moved them).
+fn refined(
+    scene: &Scene,
+    m: &Measured,
+    free: &[Free],
+    target: Target,
+    mut p: Vec<f64>,
+    frames: &dyn Fn(&[f64]) -> Vec<usize>,
+    evals: &Evals,
+) -> Result<(Vec<f64>, Vec<usize>), FitError> {
     let mut idx = frames(&p);
     for _ in 0..3 {
         p = least_squares(scene, m, free, &idx, p, target, evals)?;
@@ -305,9 +361,9 @@ pub(super) fn scored_fit(
     m: &Measured,
     free: &[Free],
     target: Target,
-    progress: &dyn Progress,
+    evals: &Evals,
 ) -> Result<Scored, FitError> {
-    scored_fit_within(scene, m, free, target, None, progress)
+    scored_fit_within(scene, m, free, target, None, evals)
 }
 
 /// [`scored_fit`] on the frames `within` only (indices of the [`thinned`] series,
@@ -319,24 +375,20 @@ pub(super) fn scored_fit_within(
     free: &[Free],
     target: Target,
     within: Option<&[usize]>,
-    progress: &dyn Progress,
+    evals: &Evals,
 ) -> Result<Scored, FitError> {
     let thin = thinned(m);
     let (m, every) = match &thin {
         Some((t, k)) => (t, Some(*k)),
         None => (m, None),
     };
-    let evals = Evals {
-        progress,
-        done: std::cell::Cell::new(0),
-    };
-    let (p, idx) = best_values(scene, m, free, target, within, &evals)?;
+    let (p, idx) = best_values(scene, m, free, target, within, evals)?;
     let fitted = with(scene, free, &p);
-    let (r, labels) = labelled_residuals(&fitted, m, &idx, target, true);
+    let (r, labels) = labelled_residuals(&fitted, m, &idx, target, true, evals);
     let n = p.len();
     let cost: f64 = r.iter().map(|x| x * x).sum();
     let s2 = cost / r.len().saturating_sub(n + nuisance(m, target)).max(1) as f64;
-    let j = smooth_jacobian(scene, m, free, &idx, &p, &r, target);
+    let j = smooth_jacobian(scene, m, free, &idx, &p, &r, target, evals);
     // Velocities derived from a track share frames: their errors are correlated.
     let shared = match (&m.stencils, target) {
         (Some(st), Target::Velocity) => Some(shared_noise(&j, &labels, st)),
@@ -370,7 +422,7 @@ pub(super) fn scored_fit_within(
         rolling_resistance_se: se(Free::RollingResistance),
         rms: {
             // In the data's own units, whatever the weights.
-            let raw = residuals_of(&fitted, m, &idx, target, false);
+            let raw = residuals_of(&fitted, m, &idx, target, false, evals);
             (raw.iter().map(|x| x * x).sum::<f64>() / raw.len().max(1) as f64).sqrt()
         },
         points: idx.len(),

@@ -45,6 +45,16 @@ fn range_text(f: Free) -> &'static str {
     key(f).param().range.text
 }
 
+/// True when the fitted value `v` of `f` lies on the edge of its physical range: at a
+/// bound, or within a millionth of the range of it (a search that runs into a bound
+/// stops a rounding short of it: μ_k = 9.999999999997 is μ_k = 10, and its ± from a
+/// one-sided difference there means nothing).
+pub(super) fn on_edge(f: Free, v: f64) -> bool {
+    let (lo, hi) = bounds(f);
+    let near = 1e-6 * (hi - lo);
+    v <= lo + near || v >= hi - near
+}
+
 /// `p` moved into the bounds of each free value.
 pub(super) fn clamped(free: &[Free], p: &[f64]) -> Vec<f64> {
     free.iter()
@@ -196,8 +206,7 @@ fn determinable(jtj: &[Vec<f64>], free: &[Free], p: &[f64]) -> (Vec<usize>, Vec<
     let mut why = Vec::new();
     let mut active = Vec::new();
     for i in 0..free.len() {
-        let (lo, hi) = bounds(free[i]);
-        if p[i] <= lo || p[i] >= hi {
+        if on_edge(free[i], p[i]) {
             why.push(NotIdentified {
                 parameter: free[i].name(),
                 reason: format!(
@@ -331,6 +340,32 @@ mod tests {
         // The sandwich: (JᵀJ)⁻¹ · 5 · (JᵀJ)⁻¹ = 5/9, not the 1/3 of independent points.
         let (se, _) = uncertainties(&[vec![3.0]], Some(&[vec![5.0]]), 1.0, &[Free::Mu], &[0.2]);
         assert!((se[0].unwrap() - (5.0f64 / 9.0).sqrt()).abs() < 1e-12);
+    }
+
+    /// Trial item 9: μ_k = 9.999999999996795 (a search run into the bound 10) printed
+    /// as "μ_k 10.0000 ± 0.0000"; within a millionth of its range of a bound a value
+    /// is on the edge, whichever value it is (μ_k too), and gets no ±.
+    #[test]
+    fn a_value_a_rounding_short_of_its_bound_is_on_the_edge() {
+        let jtj = vec![vec![4.0, 0.0], vec![0.0, 9.0]];
+        let free = [Free::Mu, Free::RollingResistance];
+        for p in [
+            [9.999999999996795, 0.02],
+            [10.0, 0.02],
+            [0.0, 0.02],
+            [0.22, 1e-9],
+        ] {
+            let (se, why) = uncertainties(&jtj, None, 1.0, &free, &p);
+            let edge = if p[1] < 1e-6 { 1 } else { 0 };
+            assert_eq!(se[edge], None, "{p:?}");
+            assert!(se[1 - edge].is_some(), "{p:?}");
+            assert_eq!(why.len(), 1, "{why:?}");
+            assert_eq!(why[0].parameter, free[edge].name());
+            assert!(why[0].on_edge_of.is_some(), "{why:?}");
+        }
+        // Away from the bounds both are fitted values.
+        let (se, why) = uncertainties(&jtj, None, 1.0, &free, &[9.99, 0.001]);
+        assert!(se.iter().all(Option::is_some) && why.is_empty(), "{why:?}");
     }
 
     #[test]
