@@ -77,7 +77,7 @@ impl EventKind {
             EventKind::PureGliding => Some("gliding"),
             EventKind::PureSlipping => Some("slipping"),
             EventKind::Rest => Some("rest"),
-            EventKind::ZenoRest | EventKind::ZenoContact => Some("T-inf"),
+            EventKind::ZenoRest | EventKind::ZenoContact => Some("T∞"),
             EventKind::ContactStart | EventKind::ContactEnd => None,
         }
     }
@@ -154,15 +154,18 @@ pub struct Solution {
     pub accumulation: Option<f64>,
     /// True if the solver hit its event budget before the motion ended.
     pub truncated: bool,
-    /// How the tail of an impact series was summed, if one was.
-    pub series: Option<SeriesSum>,
+    /// The stretches of impact series summed in closed form, in time order.
+    pub series: Vec<SeriesSum>,
 }
 
 /// The tail of an impact series summed in closed form (physics.md, "Repeated impacts").
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct SeriesSum {
-    /// The last impact resolved one by one, s; a bridge segment runs from here to T∞.
+    /// The last impact resolved one by one, s; a bridge segment runs from here to `to`.
     pub from: f64,
+    /// Where the sum ends, s: the accumulation point T∞ for a whole tail, the impact
+    /// that ends the summed cycles for a partial one.
+    pub to: f64,
     /// Geometric cycles resolved before the tail was summed.
     pub cycles: usize,
     /// The cycle ratio ρ: each cycle is the last one scaled by ρ.
@@ -170,6 +173,11 @@ pub struct SeriesSum {
     /// True when the tail was summed because the cycle budget ran out, not because
     /// it had become negligible: the bridge then spans a visible time.
     pub by_budget: bool,
+    /// Impacts the sum stands for: `None` for a whole tail (infinitely many, up to the
+    /// accumulation point), `Some(n)` for a partial one, summed up to shortly before
+    /// rolling resistance stops a ball inside the series. Summed impacts are not
+    /// counted in [`Solution::impacts`].
+    pub impacts: Option<usize>,
 }
 
 /// Both balls at one time.

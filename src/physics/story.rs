@@ -279,12 +279,18 @@ pub fn precision_notes(sol: &Solution) -> Vec<String> {
             sc.k()
         ));
     }
-    if let Some(series) = sol.series.filter(|s| s.by_budget) {
+    for series in sol.series.iter().filter(|s| s.by_budget) {
         let amplified = 1.0 / (1.0 - series.ratio);
-        out.push(format!(
-            "impacts after t = {:.4} s are summed, not resolved ({} cycles of ratio ρ = {:.6}): up to T∞ the run shows their cycle average, not each bounce; the summed limit carries rounding × 1/(1 − ρ) ≈ {amplified:.1e}",
-            series.from, series.cycles, series.ratio
-        ));
+        out.push(match series.impacts {
+            None => format!(
+                "impacts after t = {:.4} s are summed, not resolved ({} cycles of ratio ρ = {:.6}): up to T∞ the run shows their cycle average, not each bounce; the summed limit carries rounding × 1/(1 − ρ) ≈ {amplified:.1e}",
+                series.from, series.cycles, series.ratio
+            ),
+            Some(n) => format!(
+                "{n} impacts from t = {:.4} s to {:.4} s are summed, not resolved (after {} cycles of ratio ρ = {:.6}, up to shortly before rolling resistance stops a ball): there the run shows their cycle average, not each bounce; the summed state carries rounding × 1/(1 − ρ) ≈ {amplified:.1e}",
+                series.from, series.to, series.cycles, series.ratio
+            ),
+        });
     }
     out
 }

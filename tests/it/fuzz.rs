@@ -1074,13 +1074,11 @@ fn nulls(v: &serde_json::Value, key: &str, out: &mut Vec<String>) {
 
 /// Words that say a number was not finite, in text output.
 fn nonfinite_words(text: &str) -> Vec<String> {
-    // The accumulation time's label T∞ (ASCII: Tinf, T-inf on the chart) is a name,
+    // The accumulation time's label T∞ (ASCII: Tinf) is a name,
     // also where a popup's border hides its first letters.
-    let text = [
-        "T-inf", "Tinf", "T-∞", "T∞", "|-inf", "|inf", "+inf", "│∞", "╮∞", "╯∞",
-    ]
-    .iter()
-    .fold(text.to_string(), |t, label| t.replace(label, "T"));
+    let text = ["Tinf", "T∞", "|inf", "+inf", "│∞", "╮∞", "╯∞"]
+        .iter()
+        .fold(text.to_string(), |t, label| t.replace(label, "T"));
     let mut found: Vec<String> = text
         .split(|c: char| !(c.is_alphanumeric() || c == '.'))
         .filter(|w| matches!(*w, "NaN" | "nan" | "inf" | "Inf" | "infinity" | "∞"))

@@ -258,7 +258,7 @@ fn event_keys_visit_every_marked_event_in_order() {
     // The burst of impacts within 1/50 of the span before T∞ is one stop, T∞.
     let t_inf = sol
         .visible_events()
-        .find(|e| e.kind.label() == Some("T-inf"))
+        .find(|e| e.kind.label() == Some("T∞"))
         .map_or(f64::INFINITY, |e| e.t);
     let burst = |t: f64| t < t_inf && t_inf - t < (sol.t_end - sol.t_start) / 50.0;
     let marked: Vec<f64> = sol
@@ -314,7 +314,7 @@ fn event_keys_step_over_an_accumulating_burst_as_one() {
     assert_eq!(impacts, 20);
     let t_inf = sol
         .visible_events()
-        .find(|e| e.kind.label() == Some("T-inf"))
+        .find(|e| e.kind.label() == Some("T∞"))
         .expect("T∞ is an event")
         .t;
     assert!((t_inf - 2.939).abs() < 1e-3, "{t_inf}");

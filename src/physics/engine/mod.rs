@@ -125,10 +125,12 @@ struct Engine {
     geometric_cycles: usize,
     /// Cycles a geometric series is resolved one by one before its tail is summed.
     cycle_budget: usize,
+    /// Events after which the run stops, `truncated`.
+    event_budget: usize,
     impacts: usize,
     accumulation: Option<f64>,
     truncated: bool,
-    series: Option<SeriesSum>,
+    series: Vec<SeriesSum>,
 }
 
 impl Engine {
@@ -178,10 +180,11 @@ impl Engine {
             since_impact: 0.0,
             geometric_cycles: 0,
             cycle_budget: CYCLES_BEFORE_SUMMING,
+            event_budget: MAX_EVENTS,
             impacts: 0,
             accumulation: None,
             truncated: false,
-            series: None,
+            series: Vec::new(),
         }
     }
 
@@ -201,7 +204,7 @@ impl Engine {
         }
         self.record_contact();
         loop {
-            if self.events.len() >= MAX_EVENTS {
+            if self.events.len() >= self.event_budget {
                 self.truncated = true;
                 self.push_segment(f64::INFINITY);
                 return;

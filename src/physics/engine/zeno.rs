@@ -67,27 +67,63 @@ impl Engine {
     }
 
     /// Sums the rest of a geometric series of impacts from its last `m` cycles and
-    /// jumps to the accumulation point. Everything is taken over m cycles, not one:
-    /// their ratio q = ρ^m is the quotient of two cycle times, and 1 − q keeps its
-    /// digits where 1 − ρ (b near 2R: 1 − ρ ≈ 5k²) would lose them to rounding.
+    /// jumps to the accumulation point, or, where rolling resistance would stop a ball
+    /// inside the tail, sums only the cycles before that stop and jumps to the impact
+    /// that ends them (a partial tail, see [`Engine::cycles_before_a_stop`]).
+    /// Everything is taken over m cycles, not one: their ratio q = ρ^m is the quotient
+    /// of two cycle times, and 1 − q keeps its digits where 1 − ρ (b near 2R:
+    /// 1 − ρ ≈ 5k²) would lose them to rounding. Returns false if nothing was summed.
+    ///
+    /// The sums. In a geometric series every speed, spin, cycle time, arrival velocity
+    /// and the clock at the impacts goes as `z_n = z_∞ + C ρ^n`. Over the last m cycles
+    /// z changed by `Δ = z_n − z_{n−m} = C ρ^n (1 − 1/q)`, so (Aitken)
+    ///
+    /// ```text
+    /// z_{n+N} = z_n + Δ q/(1 − q) (1 − ρ^N),      ρ^N = exp(N ln q / m),
+    /// ```
+    ///
+    /// the whole tail for N → ∞ (1 − ρ^N = 1). Places and spin angles grow by the
+    /// limit rate `w` times the time plus the swing about it (speeds ∝ ρ^n over times
+    /// ∝ ρ^n: ratio ρ²), so `y = x − w t` goes as `y_∞ − D ρ^{2n}` and
+    ///
+    /// ```text
+    /// x_{n+N} = x_n + w T_N + (Δx − w Δt) q²/(1 − q²) (1 − ρ^{2N}),
+    /// T_N = Δt q/(1 − q) (1 − ρ^N),   1 − ρ^{2N} = (1 − ρ^N)(1 + ρ^N),
+    /// ```
+    ///
+    /// with Δt the time the last m cycles took.
     fn sum_tail(&mut self, m: usize, by_budget: bool) -> bool {
         let n = self.history.len();
         let (h0, hm) = (self.history[n - 1], self.history[n - 1 - m]);
         let q = h0.cycle / hm.cycle;
-        // Over m cycles a quantity changed by Δ; what is left of a series of ratio ρ
-        // is Δ q/(1 − q) (Aitken). Speeds, spins and cycle times go with ρ.
         let f = q / (1.0 - q);
         let limit = |now: f64, before: f64| now + (now - before) * f;
+        // How much of the tail to take: 1 − ρ^N, 1 for all of it.
+        let ln_rho = (q - 1.0).ln_1p() / m as f64;
+        let (summed, part) = match self.cycles_before_a_stop(&h0, &hm, f, ln_rho) {
+            None => (None, 1.0),
+            Some(to_stop) => {
+                // Two cycles short of the one that would cross the stop: the
+                // prediction carries the series' rounding, and the last cycles before
+                // the stop are resolved one by one, the stop among them.
+                let cycles = to_stop.floor() - 2.0;
+                if cycles.is_nan() || cycles < 1.0 {
+                    return false;
+                }
+                (Some(cycles as usize), -(cycles * ln_rho).exp_m1())
+            }
+        };
+        let ahead = |now: f64, before: f64| now + (now - before) * f * part;
         let span: f64 = self.history[n - m..].iter().map(|h| h.cycle).sum();
-        let remaining = span * f;
-        let speed: [f64; 2] = std::array::from_fn(|i| limit(h0.state[i].v, hm.state[i].v));
-        let spin: [f64; 2] = std::array::from_fn(|i| limit(h0.state[i].u, hm.state[i].u));
+        let remaining = span * f * part;
+        let speed: [f64; 2] = std::array::from_fn(|i| ahead(h0.state[i].v, hm.state[i].v));
+        let spin: [f64; 2] = std::array::from_fn(|i| ahead(h0.state[i].u, hm.state[i].u));
+        // The limit rates places and angles move with (the whole tail's limit).
         let [ml, mr] = self.mass;
-        let shared = (ml * speed[0] + mr * speed[1]) / (ml + mr);
-        // A place (or spin angle) moves per cycle by its limit rate times the cycle's
-        // time (ratio ρ) plus what the swing about that rate adds: speeds ∝ ρ^n over
-        // times ∝ ρ^n, so ratio ρ².
-        let f2 = q * q / (1.0 - q * q);
+        let shared = (ml * limit(h0.state[0].v, hm.state[0].v)
+            + mr * limit(h0.state[1].v, hm.state[1].v))
+            / (ml + mr);
+        let f2 = q * q / (1.0 - q * q) * part * (2.0 - part);
         let place = |now: f64, before: f64, rate: f64| {
             now + rate * remaining + ((now - before) - rate * span) * f2
         };
@@ -96,52 +132,87 @@ impl Engine {
         let contact = |h: &ImpactRecord| 0.5 * (h.state[0].x + h.state[1].x);
         let touch = place(contact(&h0), contact(&hm), shared);
         let r = self.groove.k * self.radius;
+        // The whole tail ends in its limit; a partial one just before the impact that
+        // ends its summed cycles, which is then resolved (a bridge ending in the
+        // separating speeds after it would close the gap below zero on the way).
+        let velocity = |i: usize| match summed {
+            None => speed[i],
+            Some(_) => ahead(h0.arrival[i].0, hm.arrival[i].0),
+        };
         let state: [BallState; 2] = std::array::from_fn(|i| BallState {
             x: touch + if i == 0 { -self.radius } else { self.radius },
-            v: speed[i],
+            v: velocity(i),
             u: spin[i],
         });
-        let angle = std::array::from_fn(|i| place(h0.angle[i], hm.angle[i], spin[i] / r));
+        let angle = std::array::from_fn(|i| {
+            let rate = limit(h0.state[i].u, hm.state[i].u) / r;
+            place(h0.angle[i], hm.angle[i], rate)
+        });
         let ledger = Ledger {
-            friction: limit(h0.ledger.friction, hm.ledger.friction),
-            impacts: limit(h0.ledger.impacts, hm.ledger.impacts),
-            rolling_resistance: limit(h0.ledger.rolling_resistance, hm.ledger.rolling_resistance),
+            friction: ahead(h0.ledger.friction, hm.ledger.friction),
+            impacts: ahead(h0.ledger.impacts, hm.ledger.impacts),
+            rolling_resistance: ahead(h0.ledger.rolling_resistance, hm.ledger.rolling_resistance),
         };
         // A limit with more kinetic energy than the pair has now (beyond rounding) is no
         // limit of this series: its cycles only looked geometric (rolling resistance
         // changes the speeds over a long tail). The impacts are then resolved on.
         let kinetic_now = self.kinetic(&self.state);
         let scale = kinetic_now + self.ledger.total();
-        if self.kinetic(&state) > kinetic_now + 1e-9 * scale || self.stops_on_the_way(&h0, speed) {
+        if self.kinetic(&state) > kinetic_now + 1e-9 * scale {
             return false;
         }
         // Recorded only once the tail is taken: a refused tail is resolved on, and the
         // solution must not describe a sum that never happened.
         let ratio = (h0.cycle / self.history[n - 2].cycle).min(1.0);
-        self.series = Some(SeriesSum {
-            from: self.t,
+        let from = self.t;
+        match summed {
+            None => self.finish_series(remaining, state, angle, ledger, by_budget),
+            Some(_) => {
+                let arriving = [h0.arrival[0].1, h0.arrival[1].1];
+                let cycle = h0.cycle * (1.0 - part);
+                self.skip_cycles(remaining, state, angle, ledger, (arriving, cycle));
+            }
+        }
+        self.series.push(SeriesSum {
+            from,
+            to: self.t,
             cycles: m,
             ratio,
             by_budget,
+            // The impact at `to` is resolved, the ones before it summed.
+            impacts: summed.map(|n| n - 1),
         });
-        self.finish_series(remaining, state, angle, ledger, by_budget);
         true
     }
 
-    /// Whether rolling resistance would stop a ball inside the tail: the limit `speed`
-    /// lies beyond zero from the velocity a ball arrived at the last impact with,
-    /// rolling. Rolling resistance acts against a rolling ball's velocity and holds it
-    /// once it is at rest, so its cycles cannot carry it through zero: they only
-    /// looked geometric while it slowed down.
-    fn stops_on_the_way(&self, last: &ImpactRecord, speed: [f64; 2]) -> bool {
+    /// Where rolling resistance would stop a ball inside the tail: the number of
+    /// cycles `j` (fractional) after which the velocity a ball arrives at an impact
+    /// with, rolling, would reach zero, if its limit lies beyond zero. Rolling
+    /// resistance acts against a rolling ball's velocity and holds it once it is at
+    /// rest, so its cycles cannot carry it through zero: the series holds only until
+    /// then. With `a_{n+j} = a_n + (a_∞ − a_n)(1 − ρ^j)`, `a_{n+j} = 0` at
+    /// `1 − ρ^j = a_n / (a_n − a_∞)`, i.e. `j = m ln(1 − a_n/(a_n − a_∞)) / ln q`.
+    fn cycles_before_a_stop(
+        &self,
+        last: &ImpactRecord,
+        before: &ImpactRecord,
+        f: f64,
+        ln_rho: f64,
+    ) -> Option<f64> {
+        if self.groove.rolling_resistance == 0.0 {
+            return None;
+        }
         let tiny = self.eps_v * 1e3;
-        self.groove.rolling_resistance > 0.0
-            && (0..2).any(|i| {
-                let (v, phase) = last.arrival[i];
-                !matches!(phase, Phase::Sliding { .. })
-                    && v * speed[i] < 0.0
-                    && speed[i].abs() > tiny
+        (0..2)
+            .filter_map(|i| {
+                let (a, phase) = last.arrival[i];
+                let a_inf = a + (a - before.arrival[i].0) * f;
+                let stops = !matches!(phase, Phase::Sliding { .. })
+                    && a * a_inf < 0.0
+                    && a_inf.abs() > tiny;
+                stops.then(|| (-a / (a - a_inf)).ln_1p() / ln_rho)
             })
+            .reduce(f64::min)
     }
 
     /// Ends a series of impacts at `remaining` seconds from now in the limit `state`:
@@ -152,11 +223,10 @@ impl Engine {
         &mut self,
         remaining: f64,
         mut state: [BallState; 2],
-        mut angle: [f64; 2],
+        angle: [f64; 2],
         estimate: Ledger,
         averaged: bool,
     ) {
-        let energy_now = self.kinetic(&self.state) + self.ledger.total();
         let [ml, mr] = self.mass;
         let v = (ml * state[0].v + mr * state[1].v) / (ml + mr);
         // The extrapolated limit is exact to rounding, which near zero means ~1e-9 of
@@ -169,6 +239,60 @@ impl Engine {
                 s.u = v;
             }
         }
+        self.bridge_to(remaining, state, angle, estimate, averaged);
+        self.set_phases_from_state();
+        self.state[1].v = self.state[0].v;
+        self.accumulation = Some(self.t);
+        let at_rest = self.phase.iter().all(|p| *p == Phase::Resting);
+        let kind = if at_rest {
+            EventKind::ZenoRest
+        } else {
+            EventKind::ZenoContact
+        };
+        self.history.clear();
+        self.geometric_cycles = 0;
+        // The impact just recorded is the last one resolved; its event already exists.
+        // Whether the pair now presses is recorded by the caller, after this event.
+        self.settle();
+        self.record(&[(kind, Who::Both)]);
+    }
+
+    /// Jumps over the summed cycles of a partial tail through a bridge of cycle
+    /// averages to `state`, the balls arriving at the impact that ends them (`last`:
+    /// their phases then, and the cycle before it), and resolves that impact; the
+    /// impacts after it are resolved one by one again, the series detector starting
+    /// afresh (the cycles before the jump are not their neighbours).
+    fn skip_cycles(
+        &mut self,
+        remaining: f64,
+        state: [BallState; 2],
+        angle: [f64; 2],
+        estimate: Ledger,
+        last: ([Phase; 2], f64),
+    ) {
+        self.bridge_to(remaining, state, angle, estimate, true);
+        let (arriving, cycle) = last;
+        self.phase = arriving;
+        self.history.clear();
+        self.geometric_cycles = 0;
+        self.since_impact = cycle;
+        self.collide();
+        self.settle();
+        self.record(&[(EventKind::Collision, Who::Both)]);
+    }
+
+    /// Moves the run `remaining` seconds on to `state` (the balls touching) through a
+    /// bridge segment (unless `remaining` is too short to move the clock), booking
+    /// what the pair lost on the way split like `estimate`.
+    fn bridge_to(
+        &mut self,
+        remaining: f64,
+        mut state: [BallState; 2],
+        mut angle: [f64; 2],
+        estimate: Ledger,
+        averaged: bool,
+    ) {
+        let energy_now = self.kinetic(&self.state) + self.ledger.total();
         // A remainder too short to move the clock is no bridge.
         let remaining = if self.t + remaining > self.t {
             remaining
@@ -191,21 +315,6 @@ impl Engine {
         self.gap = 0.0;
         self.push = 0.0;
         self.together = false;
-        self.set_phases_from_state();
-        self.state[1].v = self.state[0].v;
-        self.accumulation = Some(self.t);
-        let at_rest = self.phase.iter().all(|p| *p == Phase::Resting);
-        let kind = if at_rest {
-            EventKind::ZenoRest
-        } else {
-            EventKind::ZenoContact
-        };
-        self.history.clear();
-        self.geometric_cycles = 0;
-        // The impact just recorded is the last one resolved; its event already exists.
-        // Whether the pair now presses is recorded by the caller, after this event.
-        self.settle();
-        self.record(&[(kind, Who::Both)]);
     }
 
     /// Sets the state and accelerations of the bridge over the last `remaining`

@@ -142,11 +142,7 @@ impl App {
         self.status = Status::Info(match self.event_target(action == Action::NextEvent) {
             Some(stop) => {
                 self.t = stop.t;
-                let name = if stop.label == "T-inf" {
-                    "T∞"
-                } else {
-                    stop.label
-                };
+                let name = stop.label;
                 match stop.burst {
                     // Short enough to stay whole beside the time on most screens.
                     Some((n, dt)) if n > 0 => format!(

@@ -27,16 +27,12 @@ fn event_lines(app: &App, balls: &[Who], theme: &Theme) -> Vec<VLine> {
         .visible_events()
         .filter(|e| e.ball == Who::Both || balls.contains(&e.ball))
         .filter_map(|e| {
-            let label = e.kind.label()?;
+            // ASCII spells T∞ "Tinf", as everywhere else.
+            let label = theme.glyphs.text(e.kind.label()?);
             let zeno = matches!(e.kind, EventKind::ZenoRest | EventKind::ZenoContact);
-            let label = if zeno && !theme.glyphs.ascii {
-                "T∞"
-            } else {
-                label
-            };
             Some(VLine {
                 x: e.t,
-                label: Some(label.to_string()),
+                label: Some(label),
                 style: theme.event,
                 // The accumulation point outranks the burst of impacts before it.
                 priority: u8::from(zeno),
