@@ -83,12 +83,12 @@ fn a_step_past_a_limit_stops_at_the_limit() {
         status.starts_with("t = -0.200 s  paused   b = 5.45 cm, at the limit (0 ≤ b < 2R)"),
         "{status}"
     );
-    // From the limit a step cannot move: refused, the scene unchanged.
+    // From the limit a step cannot move: the scene unchanged, and it says so.
     let before = a.lab.scene;
     press(&mut a, "pgup right");
     assert_eq!(a.lab.scene, before, "b ≥ 2R must not be applied");
     assert!(
-        matches!(&a.status, Status::Error(e) if e.contains("2R")),
+        matches!(&a.status, Status::Info(e) if e.contains("at its limit") && e.contains("2R")),
         "{:?}",
         a.status
     );
@@ -105,7 +105,7 @@ fn a_step_past_a_limit_stops_at_the_limit() {
     );
     press(&mut a, "right");
     assert_eq!(a.lab.scene.restitution, 1.0);
-    assert!(matches!(a.status, Status::Error(_)));
+    assert!(matches!(&a.status, Status::Info(s) if s.contains("e is at its limit")));
     // Downward too: μ_k at 0.004 and a fine step (0.01) down stops at 0.
     select(&mut a, Key::Mu);
     a.set_value(Key::Mu, 0.004);
@@ -1669,4 +1669,21 @@ fn over_a_popup_the_mouse_acts_on_the_popup_alone() {
     press(&mut a, "enter");
     assert!(!on_mouse(&mut a, area, &theme, mouse(click, x, y)));
     assert!(matches!(a.mode, Mode::Edit(_)));
+}
+
+/// A step from the limit says the row is at its limit (issue 19: "a coarse step past
+/// a limit stops at the limit"), never naming a value nobody typed: PgUp at b = 5.45
+/// cm said "b = 6 cm is out of range", and → at the limit left the status blank.
+#[test]
+fn a_step_from_the_limit_says_so() {
+    for keys in ["pgup pgup", "pgup pgup right", "pgup pgup pgup"] {
+        let out = common::groovelab(&["render", "--keys", keys, "--size", "120x40"]);
+        let s = String::from_utf8(out.stdout).unwrap();
+        let status = s.lines().rev().nth(1).unwrap();
+        assert!(
+            status.contains("b is at its limit (5.45 cm)"),
+            "{keys}: {status}"
+        );
+        assert!(!status.contains("6 cm"), "{keys}: {status}");
+    }
 }

@@ -5,6 +5,7 @@ use crate::lab::jobs::State;
 use crate::lab::{Edit, Groove, OVERLAY_LEVELS};
 use crate::methods::Method;
 use crate::settings::params::Key;
+use crate::settings::spec::SceneError;
 use crate::settings::units::{Dimension, show, significant};
 
 use super::{Action, App, ChartBall, Export, Field, Mode, ROWS, SPEEDS, Status, View};
@@ -24,21 +25,33 @@ impl App {
             Ok(()) => return self.applied(p.key),
             Err(e) => e,
         };
-        // A refused value changes nothing and costs no solve: trying is cheap.
+        // A refused value changes nothing and costs no solve: trying is cheap. Only a
+        // value beyond the current one in the step's direction is a step.
+        let beyond = |v: f64| if up { v > current } else { v < current };
         let stopped = limit_candidates(current, next, steps.fine, p.range.lo, p.range.hi)
+            .filter(|&v| beyond(v))
             .any(|v| self.lab.set(p.key, v).is_ok());
+        // The row's limits, short enough to stay beside the time in the status line
+        // (the refused value would give a hidden b away).
+        let hidden = self.hide_b && p.key == Key::Width;
+        let why = if hidden {
+            String::new()
+        } else {
+            format!(" ({})", p.range.text)
+        };
         if stopped {
             self.applied(p.key);
-            // The row's limits, short enough to stay beside the time in the status line
-            // (the refused value would give a hidden b away).
-            let why = if self.hide_b && p.key == Key::Width {
-                String::new()
-            } else {
-                format!(" ({})", p.range.text)
-            };
             if let Status::Info(done) = &self.status {
                 self.status = Status::Info(format!("{done}, at the limit{why}"));
             }
+        } else if matches!(&refused, SceneError::OutOfRange { name, .. } if *name == p.symbol) {
+            // Already at the limit: say so, never naming a value nobody typed.
+            let value = if hidden {
+                String::new()
+            } else {
+                format!(" ({})", show(current, p.dim))
+            };
+            self.status = Status::Info(format!("{} is at its limit{value}{why}", p.label));
         } else {
             self.status = Status::Error(format!("not applied: {refused}"));
         }
