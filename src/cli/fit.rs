@@ -6,7 +6,7 @@ use serde::Serialize;
 
 use super::args::{DataArgs, FitArgs, FitFormat, SceneArgs};
 use super::error::{BadValue, CliError};
-use super::open::{lab, scene_of_data};
+use super::open::lab_of_stated_scene;
 use crate::lab::Lab;
 use crate::output::write_atomically;
 use crate::physics::scene::Scene;
@@ -138,16 +138,8 @@ pub fn run(
     data: &DataArgs,
     args: &FitArgs,
 ) -> Result<String, CliError> {
-    // A data file names no scene: fitting it in the default preset's groove would be
-    // a silent guess (and compare with the wrong row of the paper).
-    if let Some(path) = scene_of_data(scene_args, data) {
-        return Err(BadValue::DataWithoutScene {
-            path: path.to_path_buf(),
-        }
-        .into());
-    }
     // The app's snapshot: the scene by the same layers, the data derived for it.
-    let lab = lab(scene_args, data)?;
+    let lab = lab_of_stated_scene(scene_args, data)?;
     let (preset, scene) = (lab.preset(), lab.scene);
     if let Some(path) = &args.output {
         crate::output::check_output(path)?;

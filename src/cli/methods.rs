@@ -8,7 +8,7 @@ use super::args::{
     CompareArgs, CompareFormat, DataArgs, Format, MAX_SAMPLES, SceneArgs, SimulateArgs,
 };
 use super::error::{BadValue, CliError, Flag};
-use super::open::{lab, scene_of_data};
+use super::open::lab_of_stated_scene;
 use super::states::{csv_output, samples, state_header, state_row};
 use crate::methods::{self, Method, RunEnd, Settings, Y};
 use crate::physics::derived::Derived;
@@ -267,15 +267,7 @@ pub(super) fn compare(
     data: &DataArgs,
     args: &CompareArgs,
 ) -> Result<String, CliError> {
-    // As `fit`: a comparison on the default groove because a data file named none
-    // would be a silent guess, and compare has no status line to say so.
-    if let Some(path) = scene_of_data(scene_args, data) {
-        return Err(BadValue::DataWithoutScene {
-            path: path.to_path_buf(),
-        }
-        .into());
-    }
-    let lab = lab(scene_args, data)?;
+    let lab = lab_of_stated_scene(scene_args, data)?;
     let (scene, span) = (lab.scene, lab.span);
     let base = settings(None, None, args.epsilon)?;
     if let Some(path) = &args.output {

@@ -129,6 +129,19 @@ pub fn load_series(args: &DataArgs) -> Result<Option<(Series, SceneSpec)>, CliEr
     Ok(Some((series, own_scene)))
 }
 
+/// [`lab`] for a command that has no status line to say which groove it used
+/// (`fit`, `compare`): a data file that names no scene is refused, since working in
+/// the default preset's groove would be a silent guess.
+pub fn lab_of_stated_scene(scene_args: &SceneArgs, data: &DataArgs) -> Result<Lab, CliError> {
+    if let Some(path) = scene_of_data(scene_args, data) {
+        return Err(BadValue::DataWithoutScene {
+            path: path.to_path_buf(),
+        }
+        .into());
+    }
+    lab(scene_args, data)
+}
+
 /// The lab on the scene the options describe, with `--data` replacing the preset's
 /// measured series (the lab derives a position track's v_t with the r of each scene
 /// it shows).
