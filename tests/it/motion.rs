@@ -10,7 +10,9 @@ use groovelab::settings::spec::SceneSpec;
 use groovelab::study::preset::{Origin, Preset};
 use groovelab::tui::app::{App, Library, Status};
 use groovelab::tui::theme::{Glyphs, Theme};
+use groovelab::tui::screen::Screen;
 use groovelab::tui::view;
+use groovelab::tui::view_cache::ViewCache;
 use ratatui::layout::Rect;
 
 use crate::common::{self, press, scene_of, select, text};
@@ -472,24 +474,27 @@ fn a_drag_on_the_chart_does_not_build_the_chart_again() {
     let fresh: Vec<Option<f64>> = (0..120)
         .map(|c| view::chart_time_at(&a, area, c, top + 10))
         .collect();
-    view::to_text(&a, 120, 40, &theme);
-    let built = a.view_cache.charts_built.get();
+    // Drawn: a drag hit-tests the frame on screen (`Screen::chart_time_at` reads it
+    // and cannot build a chart), and finds the same times while it moves the cursor.
+    let mut screen = Screen::default();
+    screen.text(&a, 120, 40, &theme);
     for (c, want) in fresh.iter().enumerate() {
-        let t = view::chart_time_at(&a, area, c as u16, top + 10);
+        let t = screen.chart_time_at(&a, c as u16, top + 10);
         assert_eq!(t, *want, "column {c}");
         if let Some(t) = t {
             a.seek(t);
         }
     }
-    assert_eq!(
-        a.view_cache.charts_built.get(),
-        built,
-        "a drag builds no chart"
-    );
-    // A key may change the chart: it is laid out again.
+    // A key may change the chart: the next frame lays it out again (the energy chart
+    // has a legend row of its own).
     press(&mut a, "e");
-    view::chart_time_at(&a, area, 60, top + 10);
-    assert_eq!(a.view_cache.charts_built.get(), built + 1);
+    screen.prepare(&a, area, &theme);
+    let energy: Vec<Option<f64>> = (0..120)
+        .map(|c| view::chart_time_at(&a, area, c, top + 10))
+        .collect();
+    for (c, want) in energy.iter().enumerate() {
+        assert_eq!(screen.chart_time_at(&a, c as u16, top + 10), *want);
+    }
 }
 
 // ---- 3. The energy chart --------------------------------------------------------------
@@ -499,7 +504,7 @@ fn the_energy_chart_splits_the_initial_energy_at_every_sample() {
     let mut a = app("inelastic");
     press(&mut a, "e");
     assert!(a.show_energy);
-    let split = a.view_cache.energies(&a.lab, 100);
+    let split = ViewCache::default().energies(&a.lab, 100);
     let total = split[0].1.total();
     assert!(total > 0.0);
     for (t, e) in split.iter() {
@@ -741,10 +746,14 @@ fn with_big_series(rows: usize) -> App {
 fn a_million_measured_rows_draw_as_a_few_points_per_column_thinned_once() {
     let theme = Theme::new(Glyphs::UNICODE, true);
     let mut a = with_big_series(1_000_000);
-    let drawn = |a: &App, (w, h): (u16, u16)| {
-        let screen = view::to_text(a, w, h, &theme);
-        (screen, a.view_cache.chart_points.get())
+    // What a screen draws of `a`: the text, the points handed to the plot, and how
+    // many series it thinned for this frame.
+    let drawn = |screen: &mut Screen, a: &App, (w, h): (u16, u16)| {
+        let (text, work) = screen.text(a, w, h, &theme);
+        let points = screen.frame().unwrap().chart.as_ref().unwrap().points();
+        (text, points, work.marks_thinned)
     };
+    let (mut screen, mut bare_screen) = (Screen::default(), Screen::default());
     let mut without = a.clone();
     without.lab.drop_data();
     for size in [(120, 40), (200, 60)] {
@@ -752,10 +761,9 @@ fn a_million_measured_rows_draw_as_a_few_points_per_column_thinned_once() {
             .unwrap()
             .chart
             .width as usize;
-        let (_, bare) = drawn(&without, size);
-        let before = a.view_cache.marks_thinned.get();
-        let (screen, points) = drawn(&a, size);
-        assert!(screen.contains("big.csv"), "the user's series is drawn");
+        let (_, bare, _) = drawn(&mut bare_screen, &without, size);
+        let (text, points, thinned) = drawn(&mut screen, &a, size);
+        assert!(text.contains("big.csv"), "the user's series is drawn");
         // The exact curves draw about 4 points per column each; the million rows add
         // no more than a few per column (one per cell they mark: a smooth curve).
         assert!(
@@ -763,25 +771,23 @@ fn a_million_measured_rows_draw_as_a_few_points_per_column_thinned_once() {
             "{size:?}: {} measured points drawn for {columns} columns",
             points - bare
         );
-        assert_eq!(a.view_cache.marks_thinned.get(), before + 1, "thinned once");
+        assert_eq!(thinned, 1, "thinned once");
         // Nothing changed, or only the time: no thinning again, the same points.
-        let again = drawn(&a, size);
+        let again = drawn(&mut screen, &a, size);
         a.seek(0.3);
-        let moved = drawn(&a, size);
+        let moved = drawn(&mut screen, &a, size);
         assert_eq!((again.1, moved.1), (points, points));
-        assert_eq!(a.view_cache.marks_thinned.get(), before + 1, "not again");
+        assert_eq!((again.2, moved.2), (0, 0), "not again");
         a.seek(a.lab.solution.t_start);
     }
     // The spike survives thinning: the y axis reaches it (1.5 m/s, the largest value
     // drawn), and it is marked on the plot's top row.
-    let (screen, _) = drawn(&a, (120, 40));
-    let mut rows = screen.lines().skip_while(|l| !l.contains("v (m/s)"));
+    let (text, _, _) = drawn(&mut screen, &a, (120, 40));
+    let mut rows = text.lines().skip_while(|l| !l.contains("v (m/s)"));
     let top = rows.nth(1).unwrap();
     let plot = &top[..top.find("││").unwrap()];
-    assert!(plot.contains('×'), "{screen}");
+    assert!(plot.contains('×'), "{text}");
     // An edit is a new snapshot: its points are thinned again.
-    let before = a.view_cache.marks_thinned.get();
     press(&mut a, "right");
-    drawn(&a, (120, 40));
-    assert_eq!(a.view_cache.marks_thinned.get(), before + 1);
+    assert_eq!(drawn(&mut screen, &a, (120, 40)).2, 1);
 }

@@ -434,7 +434,7 @@ impl App {
 
     fn open_scrolling(&mut self, mode: Mode) {
         self.scroll = 0;
-        self.scroll_max.set(usize::MAX);
+        self.scroll_max = usize::MAX;
         self.mode = mode;
     }
 
@@ -442,7 +442,7 @@ impl App {
     pub(super) fn scroll_popup(&mut self, action: Action) -> bool {
         const PAGE: usize = 10;
         // Never beyond what the last frame could show (a press after the end is felt).
-        let now = self.scroll.min(self.scroll_max.get());
+        let now = self.scroll.min(self.scroll_max);
         self.scroll = match action {
             Action::Up => now.saturating_sub(1),
             Action::Down | Action::NextParam => now + 1,
@@ -452,7 +452,7 @@ impl App {
             Action::End => usize::MAX,
             _ => return false,
         }
-        .min(self.scroll_max.get());
+        .min(self.scroll_max);
         true
     }
 

@@ -1,21 +1,21 @@
 //! Drawing the lab: one layout, one function per panel, all reading the [`App`] and
-//! writing into a [`Buffer`]. The terminal and the headless `render` both call
-//! [`draw`], so a script sees exactly what a user sees. What depends on the terminal's
-//! size is kept in the app's [`crate::tui::view_cache::ViewCache`]; what every panel
-//! draws with is in `panel`.
+//! the frame the [`Screen`] prepared, and writing into a [`Buffer`]. The terminal and
+//! the headless `render` both draw through a [`Screen`], so a script sees exactly what
+//! a user sees. What depends on the terminal's size is prepared before drawing
+//! ([`crate::tui::screen`]); what every panel draws with is in `panel`.
 
-mod charts;
+pub(crate) mod charts;
 mod fit;
 mod forces;
 mod info;
-mod map;
+pub(crate) mod map;
 mod methods;
 mod panel;
 mod params;
 
 pub use forces::answer_at;
 pub use params::param_at;
-pub use popups::{data_rows, picker_row_at};
+pub use popups::{data_rows, picker_row_at, scroll_max};
 mod popups;
 mod scene;
 mod status;
@@ -23,7 +23,8 @@ mod status;
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
 
-use super::app::{App, Mode, View};
+use super::app::{App, View};
+use super::screen::{Frame, Screen};
 use super::theme::{Theme, force_ascii};
 
 /// Smallest terminal the layout is made for.
@@ -82,31 +83,24 @@ pub fn layout(area: Rect) -> Option<Panels> {
     })
 }
 
-/// The time under a click at (`column`, `row`) of a screen of `area`: inside the
-/// chart's plot while the charts are shown and no popup is open.
+/// The time under a click at (`column`, `row`) of a screen of `area` (laid out anew,
+/// in the default theme): inside the chart's plot while the charts are shown and no
+/// popup is open. The terminal asks its [`Screen`]'s last frame instead.
 pub fn chart_time_at(app: &App, area: Rect, column: u16, row: u16) -> Option<f64> {
-    chart_time_at_in(app, area, charts::theme_for_layout(), column, row)
+    let mut screen = Screen::default();
+    screen.prepare(app, area, charts::theme_for_layout());
+    screen.chart_time_at(app, column, row)
 }
 
-/// [`chart_time_at`] for a screen drawn with `theme` (the legend's rows depend on it).
-pub fn chart_time_at_in(
-    app: &App,
-    area: Rect,
-    theme: &Theme,
-    column: u16,
-    row: u16,
-) -> Option<f64> {
-    let panels = layout(area)?;
-    if app.view != View::Charts || app.mode != Mode::Normal {
-        return None;
-    }
-    charts::time_at(app, panels.chart, theme, column, row)
-}
-
-/// Draws the whole screen (in ASCII mode, any symbol a widget still drew outside
-/// 7-bit ASCII gets a stand-in; [`non_ascii_cells`] lets tests see that none was needed).
+/// Draws the whole screen on a frame of its own (a caller that keeps no [`Screen`]).
 pub fn draw(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    draw_panels(app, area, buf, theme);
+    Screen::default().draw(app, area, buf, theme);
+}
+
+/// Draws the prepared `frame` (in ASCII mode, any symbol a widget still drew outside
+/// 7-bit ASCII gets a stand-in; [`non_ascii_cells`] lets tests see that none was needed).
+pub(crate) fn render(app: &App, frame: &Frame, buf: &mut Buffer, theme: &Theme) {
+    draw_panels(app, frame, buf, theme);
     stand_ins(buf, theme);
 }
 
@@ -126,7 +120,11 @@ pub fn non_ascii_cells(
 ) -> Vec<(u16, u16, String)> {
     let area = Rect::new(0, 0, width, height);
     let mut buf = Buffer::empty(area);
-    draw_panels(app, area, &mut buf, theme);
+    let mut screen = Screen::default();
+    screen.prepare(app, area, theme);
+    if let Some(frame) = screen.frame() {
+        draw_panels(app, frame, &mut buf, theme);
+    }
     non_ascii(&buf)
 }
 
@@ -140,7 +138,11 @@ pub fn to_text_and_non_ascii_cells(
 ) -> (String, Vec<(u16, u16, String)>) {
     let area = Rect::new(0, 0, width, height);
     let mut buf = Buffer::empty(area);
-    draw_panels(app, area, &mut buf, theme);
+    let mut screen = Screen::default();
+    screen.prepare(app, area, theme);
+    if let Some(frame) = screen.frame() {
+        draw_panels(app, frame, &mut buf, theme);
+    }
     let cells = non_ascii(&buf);
     stand_ins(&mut buf, theme);
     (text_of(&buf), cells)
@@ -161,8 +163,9 @@ fn non_ascii(buf: &Buffer) -> Vec<(u16, u16, String)> {
     cells
 }
 
-fn draw_panels(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    match layout(area) {
+fn draw_panels(app: &App, frame: &Frame, buf: &mut Buffer, theme: &Theme) {
+    let area = frame.area;
+    match frame.panels {
         None => {
             let (w, h) = MIN_SIZE;
             let times = if theme.glyphs.ascii { "x" } else { "×" };
@@ -174,21 +177,30 @@ fn draw_panels(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         Some(p) => {
             params::render(app, p.params, buf, theme);
             scene::render(app, p.scene, buf, theme);
-            if app.view == View::Forces {
+            match app.view {
                 // The Forces view takes the chart's and the info panel's room.
-                forces::render(app, p.chart.union(p.info), buf, theme);
-            } else if app.view == View::Map {
-                map::render(app, p.chart, buf, theme);
-                info::render(app, p.info, buf, theme);
-            } else if app.view == View::Methods {
-                methods::render_diagram(app, p.chart, buf, theme);
-                methods::render_rows(app, p.info, buf, theme);
-            } else {
-                charts::render(app, p.chart, buf, theme);
-                if app.fit_view() {
-                    fit::render(app, p.info, buf, theme);
-                } else {
+                View::Forces => forces::render(app, p.chart.union(p.info), buf, theme),
+                View::Map => {
+                    if let Some(grid) = &frame.regimes {
+                        map::render(app, grid, p.chart, buf, theme);
+                    } else {
+                        map::render(app, &[], p.chart, buf, theme);
+                    }
                     info::render(app, p.info, buf, theme);
+                }
+                View::Methods => {
+                    methods::render_diagram(app, p.chart, buf, theme);
+                    methods::render_rows(app, p.info, buf, theme);
+                }
+                View::Charts | View::Fit => {
+                    if let Some(chart) = &frame.chart {
+                        charts::render(chart, p.chart, buf, theme);
+                    }
+                    if app.view == View::Fit {
+                        fit::render(app, p.info, buf, theme);
+                    } else {
+                        info::render(app, p.info, buf, theme);
+                    }
                 }
             }
             status::render(app, p.status, p.hints, buf, theme);
@@ -200,14 +212,11 @@ fn draw_panels(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
 /// The screen as plain text, one line per row, trailing blanks trimmed (for
 /// `groovelab render` and snapshot tests).
 pub fn to_text(app: &App, width: u16, height: u16, theme: &Theme) -> String {
-    let area = Rect::new(0, 0, width, height);
-    let mut buf = Buffer::empty(area);
-    draw(app, area, &mut buf, theme);
-    text_of(&buf)
+    Screen::default().text(app, width, height, theme).0
 }
 
 /// A drawn screen as plain text, one line per row, trailing blanks trimmed.
-fn text_of(buf: &Buffer) -> String {
+pub(crate) fn text_of(buf: &Buffer) -> String {
     let area = buf.area;
     let mut out = String::with_capacity((area.width as usize + 1) * area.height as usize);
     for y in area.top()..area.bottom() {
