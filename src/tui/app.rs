@@ -70,8 +70,9 @@ pub struct App {
     pub export_dir: PathBuf,
     /// The ball the Forces view's front view shows: 0 left, 1 right.
     pub forces_ball: usize,
-    /// b's value hidden (a class predicts from the picture alone).
-    pub hide_b: bool,
+    /// What the screen hides while b is hidden (a class predicts from the picture
+    /// alone): the one rule.
+    pub hide: super::hide::Hide,
     /// The last prediction (predict, observe, explain).
     pub prediction: Option<Prediction>,
     /// What was typed into each kind of prompt this session (↑/↓ bring it back).
@@ -117,7 +118,7 @@ impl App {
             scroll_max: usize::MAX,
             export_dir: PathBuf::from("."),
             forces_ball: 0,
-            hide_b: false,
+            hide: super::hide::Hide::default(),
             prediction: None,
             histories: Histories::default(),
             writes_files: true,
@@ -126,8 +127,8 @@ impl App {
 
     /// What the screen laid out for the next frame that the keys need: how far the
     /// open popup scrolls at this size.
-    pub fn laid_out(&mut self, frame: &super::screen::Frame) {
-        self.scroll_max = frame.scroll_max;
+    pub fn laid_out(&mut self, scroll_max: usize) {
+        self.scroll_max = scroll_max;
     }
 
     /// True in the Fit view (charts with fit lines, the Fit panel).
@@ -170,7 +171,7 @@ impl App {
 
     /// A parameter's current value as the status line shows it (b hidden if it is).
     pub(super) fn shown_value(&self, key: Key) -> String {
-        if self.hide_b && key == Key::Width {
+        if self.hide.value(key) {
             "(hidden)".to_string()
         } else {
             show(self.lab.value(key), key.dimension()).to_string()
@@ -226,7 +227,7 @@ impl App {
         if later {
             stops.find(|s| s.t > self.t + eps)
         } else {
-            stops.filter(|s| s.t < self.t - eps).last()
+            stops.rev().find(|s| s.t < self.t - eps)
         }
     }
 

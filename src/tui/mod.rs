@@ -5,6 +5,7 @@
 
 pub mod app;
 pub mod canvas;
+pub mod hide;
 pub mod jobs;
 pub mod keys;
 pub mod line;
@@ -99,7 +100,7 @@ pub fn run(mut app: App, ascii: bool) -> io::Result<()> {
         let _ = execute!(io::stdout(), cursor::Show);
     }));
     if std::env::var_os("GROOVELAB_TEST_PANIC").is_some() {
-        terminal.draw(|f| view::draw(&app, f.area(), f.buffer_mut(), &theme))?;
+        terminal.draw(|f| screen::draw(&app, f.area(), f.buffer_mut(), &theme))?;
         panic!("GROOVELAB_TEST_PANIC is set: panicking to test that the terminal is restored");
     }
     set_mouse(app.mouse);
@@ -165,7 +166,7 @@ fn event_loop(
                 screen.render(app, f.buffer_mut(), theme);
             })?;
             if let Some(frame) = screen.frame() {
-                app.laid_out(frame);
+                app.laid_out(frame.scroll_max);
             }
             dirty = false;
         }

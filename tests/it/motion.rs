@@ -9,8 +9,9 @@ use groovelab::settings::params::Key;
 use groovelab::settings::spec::SceneSpec;
 use groovelab::study::preset::{Origin, Preset};
 use groovelab::tui::app::{App, Library, Status};
-use groovelab::tui::theme::{Glyphs, Theme};
+use groovelab::tui::screen;
 use groovelab::tui::screen::Screen;
+use groovelab::tui::theme::{Glyphs, Theme};
 use groovelab::tui::view;
 use groovelab::tui::view_cache::ViewCache;
 use ratatui::layout::Rect;
@@ -436,7 +437,7 @@ fn a_click_on_the_chart_seeks_to_the_time_under_it() {
     let theme = Theme::new(Glyphs::UNICODE, true);
     for at in [-0.15, 0.0, 0.3, 0.85] {
         a.t = at;
-        let s = view::to_text(&a, 120, 40, &theme);
+        let s = screen::to_text(&a, 120, 40, &theme);
         let rows = chart_rows(&s, 40);
         let (row, col) = rows
             .iter()
@@ -444,7 +445,7 @@ fn a_click_on_the_chart_seeks_to_the_time_under_it() {
             .find_map(|(r, l)| l.chars().position(|c| c == '┊').map(|c| (r, c)))
             .expect("the cursor is drawn");
         let top = view::layout(area).unwrap().chart.y;
-        let t = view::chart_time_at(&a, area, col as u16, top + row as u16).unwrap();
+        let t = screen::chart_time_at(&a, area, col as u16, top + row as u16).unwrap();
         // One column of the plot is (t_end − t_start) / (columns − 1) ≈ 13 ms here.
         let column = (a.lab.solution.t_end - a.lab.solution.t_start) / 70.0;
         assert!((t - at).abs() <= 0.5 * column, "{at}: {t}");
@@ -455,12 +456,12 @@ fn a_click_on_the_chart_seeks_to_the_time_under_it() {
         assert!(!b.playing);
     }
     // Outside the plot (the info panel, the axis labels, the params): no seek.
-    assert_eq!(view::chart_time_at(&a, area, 110, 20), None);
-    assert_eq!(view::chart_time_at(&a, area, 1, 20), None);
-    assert_eq!(view::chart_time_at(&a, area, 30, 3), None);
+    assert_eq!(screen::chart_time_at(&a, area, 110, 20), None);
+    assert_eq!(screen::chart_time_at(&a, area, 1, 20), None);
+    assert_eq!(screen::chart_time_at(&a, area, 30, 3), None);
     // Not while another view is shown.
     press(&mut a, "g");
-    assert_eq!(view::chart_time_at(&a, area, 40, 20), None);
+    assert_eq!(screen::chart_time_at(&a, area, 40, 20), None);
 }
 
 #[test]
@@ -472,7 +473,7 @@ fn a_drag_on_the_chart_does_not_build_the_chart_again() {
     let top = view::layout(area).unwrap().chart.y;
     // Never drawn: the chart is laid out to answer.
     let fresh: Vec<Option<f64>> = (0..120)
-        .map(|c| view::chart_time_at(&a, area, c, top + 10))
+        .map(|c| screen::chart_time_at(&a, area, c, top + 10))
         .collect();
     // Drawn: a drag hit-tests the frame on screen (`Screen::chart_time_at` reads it
     // and cannot build a chart), and finds the same times while it moves the cursor.
@@ -490,7 +491,7 @@ fn a_drag_on_the_chart_does_not_build_the_chart_again() {
     press(&mut a, "e");
     screen.prepare(&a, area, &theme);
     let energy: Vec<Option<f64>> = (0..120)
-        .map(|c| view::chart_time_at(&a, area, c, top + 10))
+        .map(|c| screen::chart_time_at(&a, area, c, top + 10))
         .collect();
     for (c, want) in energy.iter().enumerate() {
         assert_eq!(screen.chart_time_at(&a, c as u16, top + 10), *want);
@@ -515,7 +516,7 @@ fn the_energy_chart_splits_the_initial_energy_at_every_sample() {
         split.last().unwrap().1.lost.impacts > 0.0,
         "e < 1 loses in impacts"
     );
-    let s = view::to_text(&a, 120, 40, &Theme::new(Glyphs::UNICODE, false));
+    let s = screen::to_text(&a, 120, 40, &Theme::new(Glyphs::UNICODE, false));
     assert!(s.contains("Energy of both balls"));
     for name in ["total", "trans", "rot", "friction", "impacts", "c_rr 0"] {
         assert!(s.contains(name), "{name}: {s}");
@@ -564,7 +565,7 @@ fn a_pinned_run_is_drawn_beside_the_current_one_with_what_changed() {
     );
     a.t = 0.5;
     let theme = Theme::new(Glyphs::UNICODE, true);
-    let s = view::to_text(&a, 120, 40, &theme);
+    let s = screen::to_text(&a, 120, 40, &theme);
     assert!(
         s.contains("pinned paper-b4.9 (dashed): b 4.9 cm → 4.4 cm"),
         "{s}"
@@ -577,7 +578,7 @@ fn a_pinned_run_is_drawn_beside_the_current_one_with_what_changed() {
     let mut b = a.clone();
     press(&mut b, "P");
     assert!(b.lab.pinned.is_none());
-    let unpinned = view::to_text(&b, 120, 40, &theme);
+    let unpinned = screen::to_text(&b, 120, 40, &theme);
     let scene = |s: &str| -> usize {
         s.lines()
             .take(9)
@@ -593,9 +594,9 @@ fn a_pinned_run_is_drawn_beside_the_current_one_with_what_changed() {
     assert!(!unpinned.contains("pinned run") && !unpinned.contains("(dashed)"));
     // Positions and energy charts draw the pinned run too.
     press(&mut a, "x");
-    assert!(view::to_text(&a, 120, 40, &theme).contains("pinned run"));
+    assert!(screen::to_text(&a, 120, 40, &theme).contains("pinned run"));
     press(&mut a, "e");
-    assert!(view::to_text(&a, 120, 40, &theme).contains("pinned kinetic"));
+    assert!(screen::to_text(&a, 120, 40, &theme).contains("pinned kinetic"));
 }
 
 #[test]
@@ -691,7 +692,7 @@ fn new_screens_need_no_ascii_stand_ins() {
             press(&mut a, keys);
             a.wait();
             for (w, h) in SIZES {
-                let cells = view::non_ascii_cells(&a, w, h, &theme);
+                let cells = screen::non_ascii_cells(&a, w, h, &theme);
                 assert!(cells.is_empty(), "{preset} {keys:?} {w}x{h}: {cells:?}");
             }
         }

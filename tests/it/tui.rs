@@ -252,7 +252,7 @@ fn the_typing_field_shows_its_cursor_as_a_reversed_cell() {
     let theme = Theme::new(Glyphs::new(false), true);
     let area = Rect::new(0, 0, 120, 40);
     let mut buf = Buffer::empty(area);
-    groovelab::tui::view::draw(&a, area, &mut buf, &theme);
+    groovelab::tui::screen::draw(&a, area, &mut buf, &theme);
     let (x, y) = (0..area.height)
         .find_map(|y| {
             let row: String = (0..area.width).map(|x| buf[(x, y)].symbol()).collect();
@@ -489,7 +489,7 @@ fn ascii_mode_emits_only_seven_bit_characters() {
                 a.t = t.clamp(a.lab.solution.t_start, a.lab.solution.t_end);
                 for size in [(80, 24), (120, 40), (60, 20)] {
                     // One drawing: the cells that needed a stand-in, and the text.
-                    let (s, cells) = groovelab::tui::view::to_text_and_non_ascii_cells(
+                    let (s, cells) = groovelab::tui::screen::to_text_and_non_ascii_cells(
                         &a, size.0, size.1, &theme,
                     );
                     if !cells.is_empty() {
@@ -834,7 +834,7 @@ fn every_view_draws_at_many_sizes_without_panicking() {
         ] {
             let theme =
                 groovelab::tui::theme::Theme::new(groovelab::tui::theme::Glyphs::ASCII, false);
-            let s = groovelab::tui::view::to_text(&b, w, h, &theme);
+            let s = groovelab::tui::screen::to_text(&b, w, h, &theme);
             assert_eq!(s.lines().count(), usize::from(h), "{keys:?} at {w}x{h}");
             assert!(s.is_ascii());
         }
@@ -851,7 +851,7 @@ fn text_of(a: &mut App, w: u16, h: u16, ascii: bool) -> String {
     let theme = Theme::new(Glyphs::new(ascii), true);
     let mut screen = groovelab::tui::screen::Screen::default();
     let (text, _) = screen.text(a, w, h, &theme);
-    a.laid_out(screen.frame().unwrap());
+    a.laid_out(screen.frame().unwrap().scroll_max);
     text
 }
 

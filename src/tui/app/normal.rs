@@ -33,7 +33,7 @@ impl App {
             .any(|v| self.lab.set(p.key, v).is_ok());
         // The row's limits, short enough to stay beside the time in the status line
         // (the refused value would give a hidden b away).
-        let hidden = self.hide_b && p.key == Key::Width;
+        let hidden = self.hide.value(p.key);
         let why = if hidden {
             String::new()
         } else {
@@ -358,9 +358,8 @@ impl App {
     }
 
     fn toggle_hide_width(&mut self) {
-        self.hide_b = !self.hide_b;
         self.status = Status::Info(
-            if self.hide_b {
+            if self.hide.toggle() {
                 "b's value hidden: predict from the picture (B shows it)"
             } else {
                 "b's value shown"

@@ -15,11 +15,13 @@ use crate::lab::{MeasuredPoints, value_range};
 use crate::physics::model::BallState;
 use crate::physics::solution::{EnergySplit, EventKind, Snapshot, Who};
 use crate::settings::units::Dimension;
-use crate::study::fit::LineFit;
 use crate::tui::app::{App, ChartBall};
 use crate::tui::plot::{Draw, Plot, Series, VLine, nice_ticks};
 use crate::tui::theme::Theme;
 use crate::tui::view_cache::ViewCache;
+use marks::{line_fit_marks, measured_velocities};
+
+mod marks;
 
 fn event_lines(app: &App, balls: &[Who], theme: &Theme) -> Vec<VLine> {
     app.lab
@@ -149,7 +151,10 @@ type Part = (&'static str, &'static str, Style, fn(&EnergySplit) -> f64);
 fn pinned_series(
     app: &App,
     cache: &mut ViewCache,
-    columns: usize, theme: &Theme, curves: &[Curve]) -> Vec<Series> {
+    columns: usize,
+    theme: &Theme,
+    curves: &[Curve],
+) -> Vec<Series> {
     if app.lab.pinned.is_none() {
         return Vec::new();
     }
@@ -318,83 +323,7 @@ fn overlay_velocities(app: &App, balls: &[usize], columns: usize, theme: &Theme)
     series
 }
 
-/// The measured v_cm and v_t as marks, with each derived point's ±1σ (a position
-/// track's local fits) as a vertical run of dots under the point's own glyph; the
-/// points are the snapshot's, shared, not copied per frame.
-fn measured_velocities(m: &MeasuredPoints, theme: &Theme) -> Vec<Series> {
-    let mut series = Vec::new();
-    for (n, bars) in [&m.v_cm_bars, &m.v_t_bars].into_iter().enumerate() {
-        if let Some(bars) = bars {
-            series.push(Series {
-                // One legend entry for both series' bars.
-                name: if n == 0 {
-                    theme.glyphs.text("±1σ").replace('σ', "s")
-                } else {
-                    String::new()
-                },
-                points: Arc::clone(bars),
-                style: theme.measured,
-                // Not ':' or '|': the event lines use those.
-                glyph: if theme.glyphs.ascii { "!" } else { "¦" },
-                draw: Draw::Points,
-            });
-        }
-    }
-    series.push(Series {
-        name: "measured v_cm".into(),
-        points: Arc::clone(&m.v_cm),
-        style: theme.measured,
-        glyph: if theme.glyphs.ascii { "x" } else { "×" },
-        draw: Draw::Points,
-    });
-    // A track without a rim mark measures no v_t: no legend entry claims one.
-    if !m.v_t.is_empty() {
-        series.push(Series {
-            name: "measured v_t".into(),
-            points: Arc::clone(&m.v_t),
-            style: theme.measured,
-            glyph: if theme.glyphs.ascii { "o" } else { "+" },
-            draw: Draw::Points,
-        });
-    }
-    series
-}
-
-/// The paper's straight lines over the fit window, and the window's ends.
-fn line_fit_marks(l: &LineFit, theme: &Theme) -> (Vec<Series>, Vec<VLine>) {
-    let lines = l
-        .lines
-        .iter()
-        .zip(["fit lines", ""])
-        .map(|(line, name)| Series {
-            name: name.to_string(),
-            points: [l.from, l.to]
-                .iter()
-                .map(|&t| (t, line.intercept + line.slope * t))
-                .collect(),
-            style: theme.cursor,
-            glyph: "-",
-            draw: Draw::Line,
-        })
-        .collect();
-    let ends = [(l.from, "from"), (l.to, "to")]
-        .into_iter()
-        .map(|(t, label)| VLine {
-            x: t,
-            label: Some(label.to_string()),
-            style: theme.cursor,
-            priority: 2,
-        })
-        .collect();
-    (lines, ends)
-}
-
-fn velocities(
-    app: &App,
-    cache: &mut ViewCache,
-    area: Rect,
-    theme: &Theme,
-) -> (Vec<String>, Plot) {
+fn velocities(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Vec<String>, Plot) {
     let sol = &app.lab.solution;
     let columns = usize::from(area.width.saturating_sub(10));
     let samples = cache.samples(&app.lab, columns);
@@ -454,12 +383,7 @@ fn thin_to(points: Vec<(f64, f64)>, n: usize) -> Vec<(f64, f64)> {
 /// What the positions chart shows: lengths, in their display unit.
 const POSITION: Dimension = Dimension::Length;
 
-fn positions(
-    app: &App,
-    cache: &mut ViewCache,
-    area: Rect,
-    theme: &Theme,
-) -> (Vec<String>, Plot) {
+fn positions(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Vec<String>, Plot) {
     let sol = &app.lab.solution;
     let columns = usize::from(area.width.saturating_sub(10));
     let samples = cache.samples(&app.lab, columns);
@@ -522,12 +446,7 @@ fn positions(
 
 /// Energy against time: the kinetic parts and what friction, impacts and rolling
 /// resistance have taken so far, with their constant sum (the initial energy).
-fn energy(
-    app: &App,
-    cache: &mut ViewCache,
-    area: Rect,
-    theme: &Theme,
-) -> (Vec<String>, Plot) {
+fn energy(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Vec<String>, Plot) {
     let sol = &app.lab.solution;
     let columns = usize::from(area.width.saturating_sub(10));
     let split = cache.energies(&app.lab, columns);

@@ -21,7 +21,8 @@ fn halves(area: Rect) -> [Rect; 2] {
 /// The regime grid's cells (columns, rows) in the map view drawn in `area`; `None`
 /// when too small to draw one.
 pub fn grid_size(area: Rect) -> Option<(usize, usize)> {
-    let inner = block("", &Theme::new(crate::tui::theme::Glyphs::UNICODE, true)).inner(halves(area)[0]);
+    let inner =
+        block("", &Theme::new(crate::tui::theme::Glyphs::UNICODE, true)).inner(halves(area)[0]);
     if inner.width < 12 || inner.height < 4 {
         return None;
     }
@@ -96,7 +97,7 @@ fn regime_map(app: &App, grid: &[Regime], area: Rect, buf: &mut Buffer, theme: &
     // The scene itself (not while b is hidden: its column would give b away).
     let c = (app.lab.scene.width / b_max * (cols - 1) as f64).round() as u16;
     let r = ((1.0 - app.lab.scene.restitution) * (rows - 1) as f64).round() as u16;
-    if usize::from(c) < cols && usize::from(r) < rows && !app.hide_b {
+    if usize::from(c) < cols && usize::from(r) < rows && !app.hide.derived() {
         buf.set_string(
             inner.x + 5 + c,
             inner.y + r,
@@ -190,7 +191,7 @@ fn paper_figure(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             },
         ]
         .into_iter()
-        .skip(usize::from(app.hide_b))
+        .skip(usize::from(app.hide.derived()))
         .collect(),
         cursor: None,
         x_ticks: None,

@@ -267,7 +267,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         Mode::Normal | Mode::Edit(_) => {}
         Mode::Help => help(app, area, buf, theme),
         Mode::Table => data_table(app, area, buf, theme),
-        Mode::Predict => super::forces::question(app, area, buf, theme),
+        Mode::Predict => super::predict::question(app, area, buf, theme),
         Mode::Picker(selected) => preset_picker(app, *selected, area, buf, theme),
         Mode::SaveName(field) => save_prompt(app, field, area, buf, theme),
         Mode::Export(kind, field) => export_prompt(app, *kind, field, area, buf, theme),
