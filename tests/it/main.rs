@@ -10,6 +10,7 @@ mod data_files;
 mod data_scene;
 mod exports;
 mod fit;
+mod formats;
 mod forces;
 mod fuzz;
 mod headless;
