@@ -39,6 +39,8 @@ fn scenes() -> impl Strategy<Value = Scene> {
         .prop_map(|(radius, half, mu, e, c_rr, (ml, mr), (vl, vr, away), g)| {
             // Sometimes the right ball moves away, slower than the left one chases it.
             let vr = if away < -0.8 { -vr.min(vl) * 0.9 } else { vr };
+            // Every value is varied today; a new one keeps its default until it is.
+            #[allow(clippy::needless_update)]
             Scene {
                 radius,
                 width: 2.0 * radius * half,
