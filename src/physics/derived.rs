@@ -500,11 +500,10 @@ mod tests {
                 radius,
                 width: 2.0 * radius * half,
                 mu,
-                g: 9.81,
                 restitution: 0.5,
-                rolling_resistance: 0.0,
                 left: ball,
                 right: ball,
+                ..Scene::default()
             };
             let (s, f) = (Sliding::of(&sc, mass), forces(&sc, mass, -1.0));
             let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs();
