@@ -4,6 +4,7 @@
 #[macro_use]
 mod common;
 
+mod classroom;
 mod cli;
 mod closed_forms;
 mod data_files;
