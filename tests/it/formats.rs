@@ -27,8 +27,7 @@ fn scene() -> Scene {
 }
 
 fn scratch(test: &str) -> PathBuf {
-    let dir =
-        std::env::temp_dir().join(format!("groovelab-formats-{}-{test}", std::process::id()));
+    let dir = std::env::temp_dir().join(format!("groovelab-formats-{}-{test}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     dir
 }
@@ -271,14 +270,7 @@ fn a_tracker_project_gives_its_positions_in_metres_and_fits() {
     std::fs::write(&file, &text).unwrap();
     fits_the_truth(&file, &[]);
     // The same video never calibrated: pixels, and the error names --scale.
-    let pixels = trk(
-        &track,
-        52,
-        &Coords {
-            scale: 1.0,
-            ..c
-        },
-    );
+    let pixels = trk(&track, 52, &Coords { scale: 1.0, ..c });
     let e = data::read(&pixels, "px.trk", &Reading::default())
         .unwrap_err()
         .to_string();
