@@ -18,11 +18,10 @@ pub fn symmetric(radius: f64, width: f64, mu: f64, v0: f64, e: f64) -> Scene {
         radius,
         width,
         mu,
-        g: 9.81,
         restitution: e,
-        rolling_resistance: 0.0,
         left: Ball { mass: 0.167, v0 },
         right: Ball { mass: 0.167, v0 },
+        ..Scene::default()
     }
 }
 
