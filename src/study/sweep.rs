@@ -124,11 +124,7 @@ pub enum AxisError {
         key.name(),
         other.name()
     )]
-    Overwrites {
-        key: Key,
-        other: Key,
-        why: Overlap,
-    },
+    Overwrites { key: Key, other: Key, why: Overlap },
 }
 
 /// How two swept parameters would write the same value of a scene.
@@ -158,8 +154,12 @@ fn overlap(a: Key, b: Key) -> Option<Overlap> {
         return Some(Overlap::Both(k));
     }
     let replacing = |from: &[Key], to: &[Key]| {
-        from.iter()
-            .find_map(|&k| k.param().replaces.filter(|r| to.contains(r)).map(|r| (k, r)))
+        from.iter().find_map(|&k| {
+            k.param()
+                .replaces
+                .filter(|r| to.contains(r))
+                .map(|r| (k, r))
+        })
     };
     replacing(sa, sb)
         .or_else(|| replacing(sb, sa))
