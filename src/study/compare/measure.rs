@@ -1,7 +1,7 @@
 //! One run of a method measured against the reference: its first pass finds the
 //! impacts, the second measures the errors; then the row.
 
-use crate::methods::{Method, Model, Observer, Run, RunEnd, Settings};
+use crate::methods::{Method, Model, Observer, RunEnd, Settings};
 use crate::physics::scene::Scene;
 use crate::study::{Cancelled, Progress, Quiet};
 
@@ -50,13 +50,7 @@ pub fn measure_observed(
     }
     let exact = &reference.exact;
     let model = Model::of(scene);
-    let run = Run {
-        model: &model,
-        y0: reference.start(),
-        t0: exact.t_start,
-        t1: exact.t_end,
-        settings,
-    };
+    let run = reference.run(&model, settings);
     let settle = if method.regularised() {
         20.0 * settings.epsilon / model.slip_rate()
     } else {

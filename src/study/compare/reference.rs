@@ -2,7 +2,7 @@
 //! stretch compared, solved once, with the outcome and impacts a run should find and
 //! the state every run starts from.
 
-use crate::methods::{self, Y};
+use crate::methods::{self, Model, Run, Settings, Y};
 use crate::physics::derived::{Outcome, Summary};
 use crate::physics::engine::NEGLIGIBLE_SPEED;
 use crate::physics::model::Phase;
@@ -44,6 +44,18 @@ impl Reference {
     /// as [`methods::start_state`] would solve it again.
     pub fn start(&self) -> Y {
         methods::state(self.exact.at(self.exact.t_start))
+    }
+
+    /// A run of `model` over the stretch compared, from [`Reference::start`], stepped
+    /// as `settings` say.
+    pub fn run<'a>(&self, model: &'a Model, settings: &'a Settings) -> Run<'a> {
+        Run {
+            model,
+            y0: self.start(),
+            t0: self.exact.t_start,
+            t1: self.exact.t_end,
+            settings,
+        }
     }
 
     /// The exact run of `scene` over `span`, cut at [`WINDOW`] after its start.

@@ -2,7 +2,7 @@
 
 use std::time::Instant;
 
-use crate::methods::{self, Method, Model, Run, Settings};
+use crate::methods::{self, Method, Model, Settings};
 use crate::physics::scene::{Scene, Span};
 use crate::study::{Cancelled, Progress};
 
@@ -56,13 +56,7 @@ pub fn timing(
         (0.0, 0.0)
     } else {
         let model = Model::of(scene);
-        let run = Run {
-            model: &model,
-            y0: reference.start(),
-            t0: exact.t_start,
-            t1: exact.t_end,
-            settings,
-        };
+        let run = reference.run(&model, settings);
         time(|| method.integrate(&run, &mut Finite(Watch::new(progress))))
     };
     if progress.cancelled() {
