@@ -7,6 +7,7 @@ use serde::Serialize;
 use super::args::{
     CompareArgs, CompareFormat, DataArgs, Format, MAX_SAMPLES, SceneArgs, SimulateArgs,
 };
+use super::deliver::deliver;
 use super::error::{BadValue, CliError, Flag};
 use super::open::lab_of_stated_scene;
 use super::states::{csv_output, samples, state_header, state_row};
@@ -277,7 +278,7 @@ pub(super) fn compare(
     let lab = lab_of_stated_scene(scene_args, data)?;
     let (scene, span) = (lab.scene, lab.span);
     let base = settings(None, None, args.epsilon)?;
-    super::deliver(args.output.as_deref(), || {
+    deliver(args.output.as_deref(), || {
         compare_text(&scene, &span, &base, args)
     })
 }

@@ -20,6 +20,7 @@ use crate::tui::{
 
 mod args;
 mod data;
+mod deliver;
 pub mod entry;
 mod error;
 mod fit;
@@ -32,6 +33,7 @@ mod sweep;
 pub use crate::output::{self, write_atomically};
 use crate::settings::units::{Dimension, show, significant};
 pub use args::*;
+use deliver::deliver;
 pub use error::{BadValue, CliError, Flag, Usage};
 pub use open::{app, lab, opened, scene_of_data};
 use states::{csv_output, samples, state_rows};
@@ -71,24 +73,6 @@ pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
         Some(Command::Completions { shell }) => Ok(Outcome::Print(manual::completions(*shell))),
         Some(Command::Manpage) => Ok(Outcome::Print(manual::manpage())),
     }
-}
-
-/// What `work` prints, or with `--output FILE` the same bytes written to FILE (the
-/// target checked before the work, written atomically after it) and a line saying
-/// so: the `--output` of `simulate` and `render`, as `compare`, `fit` and `sweep` do.
-fn deliver(
-    output: Option<&std::path::Path>,
-    work: impl FnOnce() -> Result<String, CliError>,
-) -> Result<String, CliError> {
-    let Some(path) = output else {
-        return work();
-    };
-    output::check_output(path)?;
-    let text = work()?;
-    // From here a stop signal removes the temporary file and writes nothing.
-    crate::signals::watch();
-    write_atomically(path, text.as_bytes())?;
-    Ok(format!("wrote {}\n", path.display()))
 }
 
 /// The first global option given that `command` does not use, if any (clap's global
