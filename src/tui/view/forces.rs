@@ -18,7 +18,7 @@ use super::panel::{
 };
 use crate::physics::derived::Regime;
 use crate::physics::forces::{Instant, Sliding, instant};
-use crate::settings::units::{Dimension, show, significant};
+use crate::settings::units::{Dimension, show, sig_figs, significant};
 use crate::tui::app::{App, Prediction};
 use crate::tui::canvas::Canvas;
 use crate::tui::theme::Theme;
@@ -79,11 +79,7 @@ fn ball_name(ball: usize) -> &'static str {
 
 /// A number with 3 significant digits, or `?` while b is hidden and it depends on b.
 fn num(v: f64, hidden: bool) -> String {
-    if hidden {
-        "?".into()
-    } else {
-        significant(v, 3)
-    }
+    if hidden { "?".into() } else { sig_figs(v, 3) }
 }
 
 /// Out of the picture (+x, toward the viewer) or into it, as the paper's ⊙ / ⊗.
@@ -164,7 +160,7 @@ fn front_values<'a>(
     } else {
         format!("F along -x: {} in", along_x(theme, false))
     };
-    let tau = significant(s.net_torque, 3);
+    let tau = sig_figs(s.net_torque, 3);
     let (torque, why_torque) = if now.net_torque == 0.0 {
         (
             t("τ_net = 0".into()),
@@ -172,10 +168,7 @@ fn front_values<'a>(
         )
     } else {
         (
-            t(format!(
-                "τ_net {} N m",
-                significant(now.net_torque.abs(), 3)
-            )),
+            t(format!("τ_net {} N m", sig_figs(now.net_torque.abs(), 3))),
             fit([
                 "= μ_k m g R, for any b".into(),
                 "= μ_k m g R (any b)".into(),
@@ -201,7 +194,7 @@ fn front_values<'a>(
         (5, Line::styled(tau_ab, theme.dim)),
         (
             6,
-            Line::styled(format!("G {} N", significant(s.weight, 3)), theme.text),
+            Line::styled(format!("G {} N", sig_figs(s.weight, 3)), theme.text),
         ),
         (
             4,
@@ -653,7 +646,7 @@ fn outcome_items(app: &App, pending: bool, compact: bool, theme: &Theme) -> Vec<
     } else {
         let was = pinned_sliding(app).map(|(p, _)| p.d);
         let tr = trend(s.d, was, theme);
-        vec![format!("{d} = {}{tr}", significant(s.d, 3)), regime]
+        vec![format!("{d} = {}{tr}", sig_figs(s.d, 3)), regime]
     };
     items.iter().map(|i| theme.glyphs.text(i)).collect()
 }
