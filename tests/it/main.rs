@@ -12,6 +12,7 @@ mod data_scene;
 mod exports;
 mod fit;
 mod forces;
+mod formats;
 mod fuzz;
 mod headless;
 mod lab_data;
