@@ -19,7 +19,12 @@ pub(super) fn measured_velocities(m: &MeasuredPoints, theme: &Theme) -> Vec<Seri
                 // One legend entry for both series' bars.
                 name: if n == 0 {
                     // σ has no ASCII letter: "sd" (standard deviation), not "s".
-                    if theme.glyphs.ascii { "+-1 sd" } else { "±1σ" }.to_string()
+                    if theme.glyphs.ascii {
+                        "+-1 sd"
+                    } else {
+                        "±1σ"
+                    }
+                    .to_string()
                 } else {
                     String::new()
                 },

@@ -56,11 +56,7 @@ pub(super) fn ball_name(ball: usize) -> &'static str {
 
 /// A number with 3 significant digits, or `?` while b is hidden and it depends on b.
 pub(super) fn num(v: f64, hidden: bool) -> String {
-    if hidden {
-        "?".into()
-    } else {
-        sig_figs(v, 3)
-    }
+    if hidden { "?".into() } else { sig_figs(v, 3) }
 }
 
 /// Out of the picture (+x, toward the viewer) or into it, as the paper's ⊙ / ⊗.

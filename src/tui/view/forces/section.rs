@@ -79,10 +79,7 @@ pub(super) fn front_values<'a>(
         )
     } else {
         (
-            t(format!(
-                "τ_net {} N m",
-                sig_figs(now.net_torque.abs(), 3)
-            )),
+            t(format!("τ_net {} N m", sig_figs(now.net_torque.abs(), 3))),
             fit([
                 "= μ_k m g R, for any b".into(),
                 "= μ_k m g R (any b)".into(),
