@@ -31,7 +31,7 @@ mod progress;
 mod states;
 mod sweep;
 pub use crate::output::{self, write_atomically};
-use crate::settings::units::{Dimension, show, significant};
+use crate::settings::units::{Dimension, show, sig_figs, significant};
 pub use args::*;
 use deliver::deliver;
 pub use error::{BadValue, CliError, Flag, Usage};
@@ -381,12 +381,12 @@ fn story_lines(out: &mut String, now: &Resolved) {
         let f = derived.forces;
         let _ = writeln!(
             out,
-            "forces   |N_A| = {:.4} N   F_net = {:.4} N (x)   τ_net = {:.3e} N m (z)   a_cm = {} m/s²   a_t = {} m/s²",
-            f.normal_a.norm(),
-            f.net.x,
-            f.torque.z,
-            significant(rec.a_cm, 4),
-            significant(rec.a_t, 4)
+            "forces   |N_A| = {} N   F_net = {} N (x)   τ_net = {} N m (z)   a_cm = {} m/s²   a_t = {} m/s²",
+            sig_figs(f.normal_a.norm(), 4),
+            sig_figs(f.net.x, 4),
+            sig_figs(f.torque.z, 4),
+            sig_figs(rec.a_cm, 4),
+            sig_figs(rec.a_t, 4)
         );
     }
 }
