@@ -32,3 +32,4 @@ mod story;
 mod sweep;
 mod tracks;
 mod tui;
+mod video;
