@@ -77,19 +77,24 @@ fn describe(points: &[[f64; 2]], c: Circle, polarity: f64) -> Outline {
     let res2: f64 = points.iter().map(|p| (dist(p, &c) - c.r).powi(2)).sum();
     let rms = (res2 / n).sqrt();
     // Covariance of (x, y, r): σ² (JᵀJ)⁻¹, J's rows (−cos, −sin, −1).
-    let mut jtj = nalgebra::Matrix3::<f64>::zeros();
+    let mut a = [[0.0f64; 3]; 3];
     let mut sectors = [false; 36];
     let mut lowest = f64::NEG_INFINITY;
     for p in points {
         let (dx, dy) = (p[0] - c.x, p[1] - c.y);
         let rho = dx.hypot(dy).max(1e-9);
-        let j = nalgebra::Vector3::new(dx / rho, dy / rho, 1.0);
-        jtj += j * j.transpose();
+        let j = [dx / rho, dy / rho, 1.0];
+        for i in 0..3 {
+            for k in 0..3 {
+                a[i][k] += j[i] * j[k];
+            }
+        }
         let a = dy.atan2(dx).rem_euclid(std::f64::consts::TAU);
         sectors[((a / std::f64::consts::TAU * 36.0) as usize).min(35)] = true;
         lowest = lowest.max(p[1]);
     }
     let s2 = res2 / (n - 3.0).max(1.0);
+    let jtj = nalgebra::Matrix3::from_fn(|i, k| a[i][k]);
     let cov = jtj.try_inverse().unwrap_or_else(nalgebra::Matrix3::zeros) * s2;
     Outline {
         circle: c,
@@ -110,16 +115,21 @@ fn dist(p: &[f64; 2], c: &Circle) -> f64 {
 fn geometric(points: &[[f64; 2]], start: Circle) -> Option<Circle> {
     let mut c = start;
     for _ in 0..20 {
-        let mut jtj = nalgebra::Matrix3::<f64>::zeros();
-        let mut jtr = nalgebra::Vector3::<f64>::zeros();
+        let (mut a, mut g) = ([[0.0f64; 3]; 3], [0.0f64; 3]);
         for p in points {
             let (dx, dy) = (p[0] - c.x, p[1] - c.y);
             let rho = dx.hypot(dy).max(1e-9);
             let res = rho - c.r;
-            let j = nalgebra::Vector3::new(-dx / rho, -dy / rho, -1.0);
-            jtj += j * j.transpose();
-            jtr += j * res;
+            let j = [-dx / rho, -dy / rho, -1.0];
+            for i in 0..3 {
+                for k in 0..3 {
+                    a[i][k] += j[i] * j[k];
+                }
+                g[i] += j[i] * res;
+            }
         }
+        let jtj = nalgebra::Matrix3::from_fn(|i, k| a[i][k]);
+        let jtr = nalgebra::Vector3::from_row_slice(&g);
         let step = jtj.try_inverse()? * jtr;
         c = Circle {
             x: c.x - step[0],
@@ -134,6 +144,37 @@ fn geometric(points: &[[f64; 2]], start: Circle) -> Option<Circle> {
         }
     }
     Some(c)
+}
+
+/// The Sobel gradient (x, y, magnitude; per pixel) over the box `(x0, y0, x1, y1)`,
+/// computed only where `near(x, y, 1.5)` (zero elsewhere).
+#[allow(clippy::type_complexity)]
+fn gradient(
+    img: &Gray,
+    (x0, y0, x1, y1): (isize, isize, isize, isize),
+    near: &impl Fn(isize, isize, f64) -> bool,
+) -> (Vec<f32>, Vec<f32>, Vec<f32>) {
+    let (bw, bh) = ((x1 - x0 + 1) as usize, (y1 - y0 + 1) as usize);
+    let mut gx = vec![0.0f32; bw * bh];
+    let mut gy = vec![0.0f32; bw * bh];
+    let mut mag = vec![0.0f32; bw * bh];
+    let p = |x: isize, y: isize| img.at(x as usize, y as usize);
+    for y in y0..=y1 {
+        for x in x0..=x1 {
+            if !near(x, y, 1.5) {
+                continue;
+            }
+            let sx = (p(x + 1, y - 1) + 2.0 * p(x + 1, y) + p(x + 1, y + 1))
+                - (p(x - 1, y - 1) + 2.0 * p(x - 1, y) + p(x - 1, y + 1));
+            let sy = (p(x - 1, y + 1) + 2.0 * p(x, y + 1) + p(x + 1, y + 1))
+                - (p(x - 1, y - 1) + 2.0 * p(x, y - 1) + p(x + 1, y - 1));
+            let i = (y - y0) as usize * bw + (x - x0) as usize;
+            gx[i] = sx / 8.0;
+            gy[i] = sy / 8.0;
+            mag[i] = gx[i].hypot(gy[i]);
+        }
+    }
+    (gx, gy, mag)
 }
 
 /// Sub-pixel edge points within `band` of the circle `guess`, of the polarity asked
@@ -153,31 +194,12 @@ fn edge_points(
     if x1 - x0 < 4 || y1 - y0 < 4 {
         return None;
     }
-    let (bw, bh) = ((x1 - x0 + 1) as usize, (y1 - y0 + 1) as usize);
-    // Gradient over the box, only where it can matter (within the band, plus one).
-    let mut gx = vec![0.0f32; bw * bh];
-    let mut gy = vec![0.0f32; bw * bh];
-    let mut mag = vec![0.0f32; bw * bh];
+    let bw = (x1 - x0 + 1) as usize;
     let near = |x: isize, y: isize, extra: f64| {
         let d = (x as f64 - guess.x).hypot(y as f64 - guess.y) - guess.r;
         d.abs() <= band + extra
     };
-    let p = |x: isize, y: isize| img.at(x as usize, y as usize);
-    for y in y0..=y1 {
-        for x in x0..=x1 {
-            if !near(x, y, 1.5) {
-                continue;
-            }
-            let sx = (p(x + 1, y - 1) + 2.0 * p(x + 1, y) + p(x + 1, y + 1))
-                - (p(x - 1, y - 1) + 2.0 * p(x - 1, y) + p(x - 1, y + 1));
-            let sy = (p(x - 1, y + 1) + 2.0 * p(x, y + 1) + p(x + 1, y + 1))
-                - (p(x - 1, y - 1) + 2.0 * p(x, y - 1) + p(x + 1, y - 1));
-            let i = (y - y0) as usize * bw + (x - x0) as usize;
-            gx[i] = sx / 8.0;
-            gy[i] = sy / 8.0;
-            mag[i] = gx[i].hypot(gy[i]);
-        }
-    }
+    let (gx, gy, mag) = gradient(img, (x0, y0, x1, y1), &near);
     let mut found: Vec<([f64; 2], f32, f64)> = Vec::new();
     for y in (y0 + 1)..y1 {
         for x in (x0 + 1)..x1 {

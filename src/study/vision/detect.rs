@@ -2,7 +2,8 @@
 //! across, its background fitted as a smooth surface (a quadratic in x and y, fitted
 //! robustly so that balls and rails do not pull it: a lighting gradient is no ball),
 //! the pixels far from it marked, long horizontal runs of them dropped (the rails run
-//! across the picture; a ball is far narrower), and the marked pixels' connected
+//! across the picture; a ball is far narrower) and thin horizontal lines opened away
+//! (a rail's edge broken by noise), and the marked pixels' connected
 //! blobs sorted into ball-like ones (as wide as tall, or wider by the part the near
 //! rail hides), pairs merged at an impact, and the rest.
 
@@ -59,7 +60,7 @@ pub fn coarse(img: &Gray, min_radius: f64) -> Coarse {
     let f = factor(img.width);
     let small = img.reduced(f);
     let (bg, noise) = background(&small);
-    let thr = (6.0 * noise).max(12.0) as f32;
+    let thr = (6.0 * noise).max(12.0);
     let (w, h) = (small.width, small.height);
     let mut mask: Vec<bool> = small
         .data
@@ -68,6 +69,7 @@ pub fn coarse(img: &Gray, min_radius: f64) -> Coarse {
         .map(|(v, b)| (v - b).abs() > thr)
         .collect();
     drop_long_runs(&mut mask, w, h, w / 4);
+    open_vertically(&mut mask, w, h);
     let ff = f as f64;
     let min_area = (min_radius / ff).powi(2);
     let mut out = Coarse {
@@ -131,6 +133,29 @@ fn drop_long_runs(mask: &mut [bool], w: usize, h: usize, longest: usize) {
     }
 }
 
+/// A vertical opening (erosion then dilation by three pixels in a column): takes
+/// away horizontal lines one or two pixels thick (a rail's edge that noise broke
+/// into short runs, which would join a ball to the rail), keeps the balls.
+fn open_vertically(mask: &mut [bool], w: usize, h: usize) {
+    if h < 3 {
+        return;
+    }
+    let at = |m: &[bool], x: usize, y: usize| m[y * w + x];
+    let mut eroded = vec![false; w * h];
+    for y in 1..h - 1 {
+        for x in 0..w {
+            eroded[y * w + x] = at(mask, x, y - 1) && at(mask, x, y) && at(mask, x, y + 1);
+        }
+    }
+    for y in 0..h {
+        for x in 0..w {
+            mask[y * w + x] = at(&eroded, x, y)
+                || (y > 0 && at(&eroded, x, y - 1))
+                || (y + 1 < h && at(&eroded, x, y + 1));
+        }
+    }
+}
+
 struct Component {
     x0: usize,
     x1: usize,
@@ -188,7 +213,7 @@ fn blobs(mask: &mut [bool], w: usize, h: usize) -> Vec<Component> {
 }
 
 /// The smooth background of a reduced frame (a quadratic surface fitted to every
-/// other pixel, three rounds leaving out those more than three scatters off), per
+/// third pixel, three rounds leaving out those more than three scatters off), per
 /// pixel, and the scatter of the pixels kept.
 fn background(img: &Levels) -> (Vec<f32>, f32) {
     let (w, h) = (img.width, img.height);
@@ -198,15 +223,16 @@ fn background(img: &Levels) -> (Vec<f32>, f32) {
         [1.0, u, v, u * u, u * v, v * v]
     };
     let samples: Vec<(usize, usize)> = (0..h)
-        .step_by(2)
-        .flat_map(|y| (0..w).step_by(2).map(move |x| (x, y)))
+        .step_by(3)
+        .flat_map(|y| (0..w).step_by(3).map(move |x| (x, y)))
         .collect();
     let mut coef = [0.0f64; 6];
     let mut cut = f64::INFINITY;
     let mut scatter = 0.0;
     for _ in 0..4 {
-        let mut ata = nalgebra::Matrix6::<f64>::zeros();
-        let mut atb = nalgebra::Vector6::<f64>::zeros();
+        // The normal equations summed by hand (plain arrays stay fast unoptimized).
+        let mut ata = [[0.0f64; 6]; 6];
+        let mut atb = [0.0f64; 6];
         let mut res = Vec::with_capacity(samples.len());
         for &(x, y) in &samples {
             let b = basis(x, y);
@@ -216,12 +242,17 @@ fn background(img: &Levels) -> (Vec<f32>, f32) {
                 continue;
             }
             res.push((v - fit).abs());
-            let bv = nalgebra::Vector6::from_row_slice(&b);
-            ata += bv * bv.transpose();
-            atb += bv * v;
+            for i in 0..6 {
+                for j in i..6 {
+                    ata[i][j] += b[i] * b[j];
+                }
+                atb[i] += b[i] * v;
+            }
         }
-        if let Some(c) = ata.try_inverse().map(|inv| inv * atb) {
-            coef.copy_from_slice(c.as_slice());
+        let m: [[f64; 6]; 6] =
+            std::array::from_fn(|i| std::array::from_fn(|j| ata[i.min(j)][i.max(j)]));
+        if let Some(c) = solve(m, atb) {
+            coef = c;
         }
         res.sort_by(f64::total_cmp);
         scatter = res.get(res.len() / 2).copied().unwrap_or(0.0) * 1.4826;
@@ -235,4 +266,31 @@ fn background(img: &Levels) -> (Vec<f32>, f32) {
         }
     }
     (bg, scatter.max(0.5) as f32)
+}
+
+/// Solves `a x = b` by Gaussian elimination with partial pivoting; `None` when `a` is
+/// singular.
+fn solve<const N: usize>(mut a: [[f64; N]; N], mut b: [f64; N]) -> Option<[f64; N]> {
+    for col in 0..N {
+        let pivot = (col..N).max_by(|&i, &j| a[i][col].abs().total_cmp(&a[j][col].abs()))?;
+        if a[pivot][col].abs() < 1e-300 {
+            return None;
+        }
+        a.swap(col, pivot);
+        b.swap(col, pivot);
+        let top = a[col];
+        for row in col + 1..N {
+            let f = a[row][col] / top[col];
+            for (v, t) in a[row][col..].iter_mut().zip(&top[col..]) {
+                *v -= f * t;
+            }
+            b[row] -= f * b[col];
+        }
+    }
+    let mut x = [0.0; N];
+    for row in (0..N).rev() {
+        let s: f64 = (row + 1..N).map(|k| a[row][k] * x[k]).sum();
+        x[row] = (b[row] - s) / a[row][row];
+    }
+    x.iter().all(|v| v.is_finite()).then_some(x)
 }

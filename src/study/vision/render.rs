@@ -98,7 +98,7 @@ impl Film {
         );
         let a = solution.angle_at(look.from);
         Film {
-            scene: scene.clone(),
+            scene: *scene,
             look,
             solution,
             phase: [-a[0], -a[1]],

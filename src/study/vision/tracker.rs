@@ -116,7 +116,7 @@ impl Tracker {
                     self.last[slot].remove(0);
                 }
                 self.radii.push(o.circle.r);
-                if self.radii.len() <= 64 || self.radii.len() % 256 == 0 {
+                if self.radii.len() <= 64 || self.radii.len().is_multiple_of(256) {
                     self.radius = median(&self.radii);
                 }
                 Fix {
@@ -164,7 +164,10 @@ impl Tracker {
 
     /// Which slot each fit (left to right) belongs to: the slot whose ball was last
     /// seen nearest; fits of two balls keep their left-to-right order.
-    fn assign(&self, fits: Vec<Result<Outline, LeftOut>>) -> Vec<(usize, Result<Outline, LeftOut>)> {
+    fn assign(
+        &self,
+        fits: Vec<Result<Outline, LeftOut>>,
+    ) -> Vec<(usize, Result<Outline, LeftOut>)> {
         let k = self.frames.len();
         let pred: Vec<Option<Circle>> = self.last.iter().map(|l| predict(l, k)).collect();
         match fits.len() {
@@ -176,8 +179,15 @@ impl Tracker {
                     _ => false,
                 };
                 let mut it = fits.into_iter();
-                let (a, b) = (it.next().unwrap_or(Err(LeftOut::Poor)), it.next().unwrap_or(Err(LeftOut::Poor)));
-                if swapped { vec![(1, a), (0, b)] } else { vec![(0, a), (1, b)] }
+                let (a, b) = (
+                    it.next().unwrap_or(Err(LeftOut::Poor)),
+                    it.next().unwrap_or(Err(LeftOut::Poor)),
+                );
+                if swapped {
+                    vec![(1, a), (0, b)]
+                } else {
+                    vec![(0, a), (1, b)]
+                }
             }
             _ => {
                 let fit = fits.into_iter().next().unwrap_or(Err(LeftOut::Poor));

@@ -12,11 +12,22 @@ use super::tracker::{LeftOut, Tracker, median};
 /// Why tracked frames give no tracks.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum TracksError {
-    #[error("no ball found in {frames} frames (a ball is a round blob contrasting with the background, at least {min_radius:.0} px in radius)")]
+    #[error(
+        "no ball found in {frames} frames (a ball is a round blob contrasting with the background, at least {min_radius:.0} px in radius)"
+    )]
     NoBall { frames: usize, min_radius: f64 },
-    #[error("more than two balls in {crowded} of {frames} frames, expected the two colliding balls (or one)")]
+    #[error(
+        "more than two balls in {crowded} of {frames} frames, expected the two colliding balls (or one)"
+    )]
     TooMany { crowded: usize, frames: usize },
 }
+
+/// How uncertain the place of a ball's edge is, px, whatever the number of frames:
+/// the gradient's peak sits up to ~0.05 px inside the outline where the ball's
+/// shading rises steeply at its limb (the project's shaded renders: 0.02 px for a
+/// flat ball, 0.06 px for a shaded one), and that carries into the radius and so
+/// the scale.
+pub const EDGE_SYSTEMATIC: f64 = 0.05;
 
 /// How pixels become metres.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -26,7 +37,8 @@ pub struct Calibration {
     pub px_per_m_sigma: f64,
     /// True when given (`--scale`), false when from the fitted radius.
     pub scale_given: bool,
-    /// The balls' median fitted radius, px, and its standard error.
+    /// The balls' median fitted radius, px, and its standard error (the frames'
+    /// scatter and [`EDGE_SYSTEMATIC`]).
     pub radius_px: f64,
     pub radius_px_sigma: f64,
     /// The radius R the scale comes from, m.
@@ -67,11 +79,11 @@ pub struct Tracks {
     pub calibration: Calibration,
 }
 
-/// The tracks of `tracker`'s frames at `fps` frames/s, for balls of radius `radius`
-/// (m); `scale` (px/m) overrides the scale from the radius.
+/// The tracks of `tracker`'s frames, shown at `times` (s, one per frame), for balls
+/// of radius `radius` (m); `scale` (px/m) overrides the scale from the radius.
 pub fn tracks(
     tracker: &Tracker,
-    fps: f64,
+    times: Vec<f64>,
     radius: f64,
     scale: Option<f64>,
 ) -> Result<Tracks, TracksError> {
@@ -93,7 +105,8 @@ pub fn tracks(
         });
     }
     let centres: Vec<Vec<[f64; 2]>> = (0..2).map(|s| centres_of(tracker, s)).collect();
-    let (angle, angle_se, found) = groove(&slots.iter().map(|&s| &centres[s][..]).collect::<Vec<_>>());
+    let (angle, angle_se, found) =
+        groove(&slots.iter().map(|&s| &centres[s][..]).collect::<Vec<_>>());
     let (u, n) = ((angle.cos(), angle.sin()), (angle.sin(), -angle.cos()));
     let along = |p: &[f64; 2]| p[0] * u.0 + p[1] * u.1;
     let mean_along = |s: usize| centres[s].iter().map(along).sum::<f64>() / centres[s].len() as f64;
@@ -102,7 +115,8 @@ pub fn tracks(
     let r_px = median(radii).unwrap_or(f64::NAN);
     let mut dev: Vec<f64> = radii.iter().map(|r| (r - r_px).abs()).collect();
     dev.sort_by(f64::total_cmp);
-    let r_se = 1.4826 * dev[dev.len() / 2] * 1.2533 / (radii.len() as f64).sqrt();
+    let r_stat = 1.4826 * dev[dev.len() / 2] * 1.2533 / (radii.len() as f64).sqrt();
+    let r_se = r_stat.hypot(EDGE_SYSTEMATIC);
     let px_per_m = scale.unwrap_or(r_px / radius);
     let calibration = Calibration {
         px_per_m,
@@ -123,7 +137,10 @@ pub fn tracks(
     );
     let to_m = |x: f64, y: f64| {
         let (dx, dy) = (x - o.0, y - o.1);
-        ((dx * u.0 + dy * u.1) / px_per_m, (dx * n.0 + dy * n.1) / px_per_m)
+        (
+            (dx * u.0 + dy * u.1) / px_per_m,
+            (dx * n.0 + dy * n.1) / px_per_m,
+        )
     };
     let names = names_of(&slots, &centres, along);
     let balls = slots
@@ -131,9 +148,8 @@ pub fn tracks(
         .zip(names)
         .map(|(&s, name)| ball_track(tracker, s, name, &to_m, px_per_m))
         .collect();
-    let t = (0..tracker.frames.len()).map(|k| k as f64 / fps).collect();
     Ok(Tracks {
-        t,
+        t: times,
         balls,
         calibration,
     })

@@ -18,8 +18,11 @@ pub fn tracker_text(tracks: &Tracks, notes: &[String]) -> String {
     }
     let _ = writeln!(
         out,
-        "# scene radius = {} cm",
-        crate::settings::units::significant(tracks.calibration.radius_m * 100.0, 6)
+        "# scene radius = {}",
+        crate::settings::units::show_exact(
+            tracks.calibration.radius_m,
+            crate::settings::units::Dimension::Length
+        )
     );
     out.push_str("#multi:\n");
     let mut names = String::new();
