@@ -4,7 +4,11 @@
 //! located and no step is ever refused: accumulations of impacts cost nothing.
 
 use super::grid::{GridStep, run_grid};
-use super::system::{Model, Observer, RunEnd, Settings, Y, gap};
+use super::run::{Integrator, Observer, Run, RunEnd};
+use super::system::{Model, Y, gap};
+
+/// The Moreau–Jean method.
+pub(super) struct Moreau;
 
 const THETA: f64 = 0.5;
 
@@ -131,15 +135,10 @@ fn step(m: &Model, y: &Y, dt: f64) -> GridStep {
     }
 }
 
-pub(super) fn integrate(
-    m: &Model,
-    y0: Y,
-    t0: f64,
-    t1: f64,
-    s: &Settings,
-    obs: &mut dyn Observer,
-) -> RunEnd {
-    run_grid(y0, t0, t1, s, 0.0, obs, |y, dt| step(m, y, dt))
+impl Integrator for Moreau {
+    fn integrate(&self, run: &Run, obs: &mut dyn Observer) -> RunEnd {
+        run_grid(run, 0.0, obs, |y, dt| step(run.model, y, dt))
+    }
 }
 
 #[cfg(test)]
@@ -154,14 +153,11 @@ mod tests {
         // The paper's balls in a 4.9 cm groove, the right one three times heavier.
         let ball = |mass| Ball { mass, v0: 0.0 };
         let scene = Scene {
-            radius: 0.0275,
-            width: 0.049,
-            mu: 0.17,
-            g: 9.81,
             restitution: 0.6,
             rolling_resistance: 0.01,
             left: ball(0.05),
             right: ball(0.15),
+            ..Scene::default()
         };
         let m = Model::of(&scene);
         let cases = [

@@ -8,8 +8,9 @@ use groovelab::settings::params::Key;
 use groovelab::settings::spec::SceneSpec;
 use groovelab::study::preset::Preset;
 use groovelab::tui::app::{App, Library, ROWS};
+use groovelab::tui::screen;
 use groovelab::tui::theme::{Glyphs, Theme};
-use groovelab::tui::{keys, replay, replay_settled, view};
+use groovelab::tui::{keys, replay, replay_settled};
 
 /// The paper's symmetric scene with the given width, friction, speed and restitution.
 pub fn symmetric(radius: f64, width: f64, mu: f64, v0: f64, e: f64) -> Scene {
@@ -17,11 +18,10 @@ pub fn symmetric(radius: f64, width: f64, mu: f64, v0: f64, e: f64) -> Scene {
         radius,
         width,
         mu,
-        g: 9.81,
         restitution: e,
-        rolling_resistance: 0.0,
         left: Ball { mass: 0.167, v0 },
         right: Ball { mass: 0.167, v0 },
+        ..Scene::default()
     }
 }
 
@@ -130,6 +130,39 @@ pub fn app(preset: &str, library: Library) -> App {
     App::new(Lab::of_preset(p).unwrap(), library)
 }
 
+/// How many analyses ran on an app's pool (work counted, not timed: a repeated request
+/// runs none, a superseded one that had not started none).
+#[derive(Clone, Debug, Default)]
+pub struct Runs(std::sync::Arc<std::sync::atomic::AtomicUsize>);
+
+impl Runs {
+    pub fn get(&self) -> usize {
+        self.0.load(std::sync::atomic::Ordering::SeqCst)
+    }
+}
+
+/// The app on `lab`, its analyses counted on a pool of its own.
+pub fn counted_lab(lab: Lab, library: Library) -> (App, Runs) {
+    let runs = Runs::default();
+    let r = std::sync::Arc::clone(&runs.0);
+    let pool = groovelab::lab::jobs::Pool::observed(
+        groovelab::lab::jobs::WORKERS,
+        std::sync::Arc::new(move || {
+            r.fetch_add(1, std::sync::atomic::Ordering::SeqCst);
+        }),
+    );
+    (
+        App::with_pool(lab, library, std::sync::Arc::new(pool)),
+        runs,
+    )
+}
+
+/// [`app`], its analyses counted.
+pub fn counted(preset: &str, library: Library) -> (App, Runs) {
+    let p = Preset::load(preset).unwrap();
+    counted_lab(Lab::of_preset(p).unwrap(), library)
+}
+
 /// Presses the keys of `script` (the names the help screen shows).
 pub fn press(app: &mut App, script: &str) {
     replay(app, &keys::parse_script(script).unwrap());
@@ -167,5 +200,5 @@ pub fn rendered(
 
 /// The screen of `app` at `size` as `render` prints it (no colours), ASCII or Unicode.
 pub fn text(app: &App, size: (u16, u16), ascii: bool) -> String {
-    view::to_text(app, size.0, size.1, &Theme::new(Glyphs::new(ascii), true))
+    screen::to_text(app, size.0, size.1, &Theme::new(Glyphs::new(ascii), true))
 }

@@ -801,7 +801,7 @@ fn flat_table() -> (
     );
     let screen = text(&app, (120, 40), false);
     let view = words(&screen, "verdict");
-    let State::Ready(Ok(p)) = app.lab.position_fit() else {
+    let State::Ready(Ok(p)) = app.fit.position_fit() else {
         panic!("no position fit")
     };
     // The table's model rows: a mark, the name (34 columns), RMS, AIC, BIC.

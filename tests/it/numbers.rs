@@ -9,6 +9,7 @@ use groovelab::physics::story::{After, after_first_impact};
 use groovelab::settings::params::Key;
 use groovelab::settings::spec::SceneSpec;
 use groovelab::tui::app::{App, ROWS};
+use groovelab::tui::screen;
 use groovelab::tui::theme::{Glyphs, Theme};
 use groovelab::tui::{keys, replay, view};
 use ratatui::layout::Rect;
@@ -28,14 +29,14 @@ fn app(preset: &str, values: SceneSpec, data: Option<&str>, keys_: &str) -> App 
         common::no_user_presets("numbers"),
     );
     replay(&mut a, &keys::parse_script(keys_).unwrap());
-    a.lab.wait();
+    a.wait();
     a
 }
 
 /// The text inside a panel's border, one string per row.
 fn panel(app: &App, size: (u16, u16), pick: fn(&view::Panels) -> Rect) -> Vec<String> {
     let theme = Theme::new(Glyphs::new(false), true);
-    let text = view::to_text(app, size.0, size.1, &theme);
+    let text = screen::to_text(app, size.0, size.1, &theme);
     let rows: Vec<Vec<char>> = text.lines().map(|l| l.chars().collect()).collect();
     let r = pick(&view::layout(Rect::new(0, 0, size.0, size.1)).unwrap());
     (r.y + 1..r.bottom() - 1)
@@ -218,7 +219,7 @@ fn the_why_panel_shows_the_labs_numbers() {
 fn the_methods_runs_panel_never_cuts_an_error() {
     let a = app("paper-b4.9", SceneSpec::default(), None, "c");
     for size in SIZES {
-        let State::Ready(rows) = a.lab.method_rows() else {
+        let State::Ready(rows) = a.methods.state() else {
             panic!("the rows are computed");
         };
         let lines = panel(&a, size, |p| p.info);
@@ -270,7 +271,7 @@ fn the_methods_runs_panel_never_cuts_an_error() {
 fn the_fit_panel_shows_the_fits_numbers() {
     let a = app("paper-b4.9", SceneSpec::default(), None, "f");
     for size in SIZES {
-        let State::Ready(Ok(f)) = a.lab.fits() else {
+        let State::Ready(Ok(f)) = a.fit.fits() else {
             panic!("the fit is computed");
         };
         let text = joined(&panel(&a, size, |p| p.info));
@@ -301,7 +302,7 @@ fn the_fit_panel_shows_the_fits_numbers() {
         "f",
     );
     for size in SIZES {
-        let (State::Ready(Ok(f)), State::Ready(Ok(p))) = (a.lab.fits(), a.lab.position_fit())
+        let (State::Ready(Ok(f)), State::Ready(Ok(p))) = (a.fit.fits(), a.fit.position_fit())
         else {
             panic!("both fits are computed");
         };

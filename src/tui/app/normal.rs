@@ -33,7 +33,7 @@ impl App {
             .any(|v| self.lab.set(p.key, v).is_ok());
         // The row's limits, short enough to stay beside the time in the status line
         // (the refused value would give a hidden b away).
-        let hidden = self.hide_b && p.key == Key::Width;
+        let hidden = self.hide.value(p.key);
         let why = if hidden {
             String::new()
         } else {
@@ -126,8 +126,6 @@ impl App {
             Action::DropData => self.drop_data(),
             Action::CycleWorkAxis => {
                 self.work_axis = self.work_axis.next();
-                self.lab
-                    .want_method_times(self.work_axis == crate::tui::vocabulary::WorkAxis::Time);
                 self.status = Status::Info(format!("work axis: {}", self.work_axis.name()));
             }
             Action::ToggleMap => self.toggle_view(View::Map),
@@ -159,8 +157,9 @@ impl App {
                 match stop.burst {
                     // Short enough to stay whole beside the time on most screens.
                     Some((n, dt)) if n > 0 => format!(
-                        "{name} at t = {:.4} s: {n} impacts in {}",
+                        "{name} at t = {:.4} s: {n} {} in {}",
                         stop.t,
+                        if n == 1 { "impact" } else { "impacts" },
                         if dt < 1.0 {
                             format!(
                                 "{}{}",
@@ -217,6 +216,10 @@ impl App {
         };
         let sol = &self.lab.solution;
         self.t = self.t.clamp(sol.t_start, sol.t_end);
+        if matches!(edit, Edit::Preset(_) | Edit::DropData) {
+            // The window was chosen for the data before.
+            self.fit.window = (None, None);
+        }
         let back = match edit {
             Edit::Values(changes) => {
                 let mut keys: Vec<Key> = changes.iter().map(|(k, _)| *k).collect();
@@ -249,6 +252,7 @@ impl App {
             self.status = Status::Info("nothing to reset: the scene is the preset's".into());
             return;
         }
+        self.fit.window = (None, None);
         let sol = &self.lab.solution;
         self.t = self.t.clamp(sol.t_start, sol.t_end);
         let flags = self.lab.settings().flags_in_force();
@@ -268,6 +272,7 @@ impl App {
     fn drop_data(&mut self) {
         self.status = Status::Info(match self.lab.drop_data() {
             Some(name) => {
+                self.fit.window = (None, None);
                 let sol = &self.lab.solution;
                 self.t = self.t.clamp(sol.t_start, sol.t_end);
                 let preset = self.lab.preset();
@@ -354,9 +359,8 @@ impl App {
     }
 
     fn toggle_hide_width(&mut self) {
-        self.hide_b = !self.hide_b;
         self.status = Status::Info(
-            if self.hide_b {
+            if self.hide.toggle() {
                 "b's value hidden: predict from the picture (B shows it)"
             } else {
                 "b's value shown"
@@ -378,7 +382,7 @@ impl App {
     /// The overlay key: off, then each time-stepping method in turn, then off.
     fn cycle_overlay(&mut self) {
         let all = Method::TIME_STEPPING;
-        let next = match self.lab.overlay_choice() {
+        let next = match self.overlay.choice {
             None => Some(all[0]),
             Some((m, _)) => all
                 .iter()
@@ -386,7 +390,7 @@ impl App {
                 .and_then(|i| all.get(i + 1))
                 .copied(),
         };
-        self.lab.set_overlay(next.map(|m| (m, self.overlay_level)));
+        self.overlay.choice = next.map(|m| (m, self.overlay.level));
         self.status = Status::Info(match next {
             Some(m) => format!("overlay {}", m.name()),
             None => "overlay off".into(),
@@ -395,13 +399,14 @@ impl App {
 
     /// A finer or coarser overlay step, kept for the next overlay too.
     fn overlay_level_by(&mut self, finer: bool) {
-        self.overlay_level = if finer {
-            (self.overlay_level + 1).min(OVERLAY_LEVELS - 1)
+        let level = &mut self.overlay.level;
+        *level = if finer {
+            (*level + 1).min(OVERLAY_LEVELS - 1)
         } else {
-            self.overlay_level.saturating_sub(1)
+            level.saturating_sub(1)
         };
-        if let Some((m, _)) = self.lab.overlay_choice() {
-            self.lab.set_overlay(Some((m, self.overlay_level)));
+        if let Some((m, _)) = self.overlay.choice {
+            self.overlay.choice = Some((m, self.overlay.level));
         }
     }
 
@@ -425,13 +430,11 @@ impl App {
         } else {
             view
         };
-        self.lab.want_methods(self.view == View::Methods);
-        self.lab.want_fits(self.view == View::Fit);
     }
 
     fn open_scrolling(&mut self, mode: Mode) {
         self.scroll = 0;
-        self.scroll_max.set(usize::MAX);
+        self.scroll_max = usize::MAX;
         self.mode = mode;
     }
 
@@ -439,7 +442,7 @@ impl App {
     pub(super) fn scroll_popup(&mut self, action: Action) -> bool {
         const PAGE: usize = 10;
         // Never beyond what the last frame could show (a press after the end is felt).
-        let now = self.scroll.min(self.scroll_max.get());
+        let now = self.scroll.min(self.scroll_max);
         self.scroll = match action {
             Action::Up => now.saturating_sub(1),
             Action::Down | Action::NextParam => now + 1,
@@ -449,7 +452,7 @@ impl App {
             Action::End => usize::MAX,
             _ => return false,
         }
-        .min(self.scroll_max.get());
+        .min(self.scroll_max);
         true
     }
 
@@ -509,7 +512,7 @@ impl App {
     /// the positions (the more precise, whose ± the panel says to quote), else the one
     /// fit of the velocities.
     fn fit_to_apply(&self) -> Result<(crate::study::fit::ModelFit, &'static str), String> {
-        match self.lab.position_fit() {
+        match self.fit.position_fit() {
             State::Ready(Ok(p)) => return Ok((p.clone(), "the position fit")),
             State::Computing { .. } => {
                 return Err("the position fit is still running: try again".into());
@@ -517,7 +520,7 @@ impl App {
             State::Ready(Err(e)) => return Err(format!("no fit to apply: the position fit: {e}")),
             State::Idle => {}
         }
-        match self.lab.fits() {
+        match self.fit.fits() {
             State::Ready(Ok(f)) => Ok((f.model_fit.clone(), "the fit")),
             State::Ready(Err(e)) => Err(format!("no fit to apply: {e}")),
             State::Computing { .. } => Err("the fit is still running: try again".into()),
@@ -526,7 +529,7 @@ impl App {
     }
 
     fn move_window(&mut self, end: bool, later: bool) {
-        if let Err(e) = self.lab.move_fit_window(end, later) {
+        if let Err(e) = self.fit.move_window(&self.lab, end, later) {
             self.status = Status::Error(e.to_string());
         }
     }
