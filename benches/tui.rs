@@ -10,7 +10,7 @@ use groovelab::settings::params::Key;
 use groovelab::study::preset::Preset;
 use groovelab::tui::app::{App, Library};
 use groovelab::tui::keys;
-use groovelab::tui::screen;
+use groovelab::tui::screen::{self, Screen};
 use groovelab::tui::theme::{Glyphs, Theme};
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
@@ -20,11 +20,12 @@ fn app(name: &str) -> App {
     App::new(Lab::of_preset(p).unwrap(), Library::at(None))
 }
 
-/// A key press as the terminal delivers it: the action, then the next frame drawn.
-fn key_to_frame(a: &mut App, keys: &str, area: Rect, theme: &Theme) -> Buffer {
+/// A key press as the terminal delivers it: the action, then the next frame laid out
+/// and drawn on the terminal's one screen (its caches kept from frame to frame).
+fn key_to_frame(a: &mut App, s: &mut Screen, keys: &str, area: Rect, theme: &Theme) -> Buffer {
     groovelab::tui::replay(a, &keys::parse_script(keys).unwrap());
     let mut buf = Buffer::empty(area);
-    screen::draw(a, area, &mut buf, theme);
+    s.draw(a, area, &mut buf, theme);
     buf
 }
 
@@ -33,10 +34,11 @@ fn tui(c: &mut Criterion) {
     let area = Rect::new(0, 0, 120, 40);
     let mut a = app("paper-b4.9");
     a.t = 0.3;
+    let mut s = Screen::default();
     c.bench_function("draw one 120x40 frame (paper-b4.9)", |b| {
         b.iter(|| {
             let mut buf = Buffer::empty(area);
-            screen::draw(black_box(&a), area, &mut buf, &theme);
+            s.draw(black_box(&a), area, &mut buf, &theme);
             buf
         })
     });
@@ -74,12 +76,14 @@ fn tui(c: &mut Criterion) {
         ("key to next frame, Forces view (b 4.9 <-> 5.0 cm)", "v"),
     ] {
         let mut a = app("paper-b4.9");
-        key_to_frame(&mut a, setup, area, &theme);
+        let mut s = Screen::default();
+        key_to_frame(&mut a, &mut s, setup, area, &theme);
         let mut wide = false;
         c.bench_function(name, |b| {
             b.iter(|| {
                 wide = !wide;
-                key_to_frame(&mut a, if wide { "right" } else { "left" }, area, &theme)
+                let key = if wide { "right" } else { "left" };
+                key_to_frame(&mut a, &mut s, key, area, &theme)
             })
         });
         a.wait();
