@@ -169,6 +169,18 @@ impl App {
         self.sync_jobs();
     }
 
+    /// What the screen hides now: b if hidden, and what follows from it while a
+    /// prediction is asked or its outcome has not shown yet (the one rule every view
+    /// asks).
+    pub fn hidden(&self) -> super::hide::Hide {
+        let made = self
+            .prediction
+            .as_ref()
+            .filter(|p| p.scene == self.lab.scene);
+        let pending = self.mode == Mode::Predict || made.is_some_and(|p| self.t < p.reveal_at);
+        self.hide.with_pending(pending)
+    }
+
     /// A parameter's current value as the status line shows it (b hidden if it is).
     pub(super) fn shown_value(&self, key: Key) -> String {
         if self.hide.value(key) {
