@@ -120,19 +120,37 @@ fn draw_measured(chart: &mut Chart, m: &Measured, (t0, t1): (f64, f64)) -> Resul
     )
 }
 
+/// What the app's chart shows beside the run: a pinned run (drawn dashed, labelled
+/// with `label`) and a note under the chart (data measured in another groove).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Beside<'a> {
+    pub pinned: Option<(&'a Solution, &'a str)>,
+    pub note: Option<&'a str>,
+}
+
 /// A run's chart, as the app's chart panel shows it: v_cm(t) and v_t(t) of the chosen
-/// balls (with the measured left-ball points, if given) or x(t) of both balls, and a
-/// dashed line at every labelled event.
+/// balls (with the measured left-ball points, if given) or x(t) of both balls, a
+/// dashed line at every labelled event, and what is `beside` it on screen.
 pub fn run_chart(
     sol: &Solution,
     which: RunChart,
     measured: Option<&Measured>,
+    beside: Beside,
 ) -> Result<String, FigureError> {
     let samples = run_samples(sol);
     let (curves, y_desc, title) = curves_of(which);
     let measured = measured.filter(|_| which != RunChart::Positions);
-    let (lo, hi) = value_range(&curves, &samples, measured);
-    let (t0, t1) = linear_axis(sol.t_start, sol.t_end);
+    let pinned = beside.pinned.map(|(p, label)| (run_samples(p), label));
+    let both: Vec<Snapshot> = samples
+        .iter()
+        .chain(pinned.iter().flat_map(|(p, _)| p))
+        .copied()
+        .collect();
+    let (lo, hi) = value_range(&curves, &both, measured);
+    let t_end = beside
+        .pinned
+        .map_or(sol.t_end, |(p, _)| p.t_end.max(sol.t_end));
+    let (t0, t1) = linear_axis(sol.t_start, t_end);
     let scene = &sol.scene;
     let cm = |v: f64| Dimension::Length.to_display(v);
     let mut svg = String::new();
@@ -152,6 +170,7 @@ pub fn run_chart(
                 ("sans-serif", 18),
             )
             .margin(12)
+            .margin_bottom(if beside.note.is_some() { 34 } else { 12 })
             .x_label_area_size(35)
             .y_label_area_size(55)
             .build_cartesian_2d(t0..t1, lo..hi)?;
@@ -182,6 +201,21 @@ pub fn run_chart(
                     PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2))
                 });
         }
+        if let Some((pinned, label)) = &pinned {
+            for (name, f, colour) in curves_of(which).0 {
+                chart
+                    .draw_series(DashedLineSeries::new(
+                        pinned.iter().map(|s| (s.t, f(s))),
+                        6,
+                        4,
+                        colour.mix(0.6).stroke_width(1),
+                    ))?
+                    .label(format!("{name}, pinned {label}"))
+                    .legend(move |(x, y)| {
+                        PathElement::new(vec![(x, y), (x + 20, y)], colour.mix(0.6))
+                    });
+            }
+        }
         if let Some(m) = measured {
             draw_measured(&mut chart, m, (t0, t1))?;
         }
@@ -191,6 +225,13 @@ pub fn run_chart(
             .background_style(WHITE.mix(0.9))
             .position(SeriesLabelPosition::UpperRight)
             .draw()?;
+        if let Some(note) = beside.note {
+            root.draw(&Text::new(
+                note.to_string(),
+                (70, 544),
+                ("sans-serif", 14).into_font().color(&RED),
+            ))?;
+        }
         root.present()?;
     }
     Ok(svg)

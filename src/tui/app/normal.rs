@@ -338,7 +338,7 @@ impl App {
             kind,
             Field::suggested(format!(
                 "{}-{what}.{}",
-                self.lab.scene_name(),
+                super::export::shown_name(&self.lab, self.scene_edited()),
                 kind.extension()
             )),
         );
