@@ -20,6 +20,7 @@ use crate::tui::{
 
 mod args;
 mod data;
+mod deliver;
 pub mod entry;
 mod error;
 mod fit;
@@ -29,9 +30,12 @@ mod open;
 mod progress;
 mod states;
 mod sweep;
+mod track;
+mod track_args;
 pub use crate::output::{self, write_atomically};
 use crate::settings::units::{Dimension, show, sig_figs, significant};
 pub use args::*;
+use deliver::deliver;
 pub use error::{BadValue, CliError, Flag, Usage};
 pub use open::{app, lab, opened, scene_of_data};
 use states::{csv_output, samples, state_rows};
@@ -66,29 +70,12 @@ pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
             fit::run(scene, &cli.scene, &cli.data, args).map(Outcome::Print)
         }
         Some(Command::Sweep(args)) => sweep::run(&cli.scene, args).map(Outcome::Print),
+        Some(Command::Track(args)) => track::run(&cli.scene, args).map(Outcome::Print),
         Some(Command::Data(args)) => data::run(args, &cli.data).map(Outcome::Print),
         Some(Command::Presets) => Ok(Outcome::Print(presets())),
         Some(Command::Completions { shell }) => Ok(Outcome::Print(manual::completions(*shell))),
         Some(Command::Manpage) => Ok(Outcome::Print(manual::manpage())),
     }
-}
-
-/// What `work` prints, or with `--output FILE` the same bytes written to FILE (the
-/// target checked before the work, written atomically after it) and a line saying
-/// so: the `--output` of `simulate` and `render`, as `compare`, `fit` and `sweep` do.
-fn deliver(
-    output: Option<&std::path::Path>,
-    work: impl FnOnce() -> Result<String, CliError>,
-) -> Result<String, CliError> {
-    let Some(path) = output else {
-        return work();
-    };
-    output::check_output(path)?;
-    let text = work()?;
-    // From here a stop signal removes the temporary file and writes nothing.
-    crate::signals::watch();
-    write_atomically(path, text.as_bytes())?;
-    Ok(format!("wrote {}\n", path.display()))
 }
 
 /// The first global option given that `command` does not use, if any (clap's global
@@ -101,6 +88,7 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         Some(Command::Compare(_)) => ("compare", true, true, false),
         Some(Command::Fit(_)) => ("fit", true, true, false),
         Some(Command::Sweep(_)) => ("sweep", true, false, false),
+        Some(Command::Track(_)) => ("track", true, false, false),
         Some(Command::Data(_)) => ("data", false, true, false),
         Some(Command::Presets) => ("presets", false, false, false),
         Some(Command::Completions { .. }) => ("completions", false, false, false),

@@ -12,6 +12,7 @@ mod section;
 
 use parts::*;
 
+use crate::tui::component::{Component, Ctx};
 use chain::chain_view;
 use section::front_view;
 
@@ -153,4 +154,13 @@ fn hide_number(line: &str, unit: &str) -> String {
     };
     let start = line[..end].rfind(' ').map_or(0, |i| i + 1);
     format!("{}?{}", &line[..start], &line[end..])
+}
+
+/// The Forces view (front, side, chain) as a component.
+pub struct Forces;
+
+impl Component for Forces {
+    fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
+        render(cx.app, area, buf, cx.theme);
+    }
 }
