@@ -226,13 +226,15 @@ fn prompts_edit_like_a_terminal_line() {
     assert_eq!(a.mode, Mode::SaveName("n".into()));
     press(&mut a, "esc w C-a delete delete delete delete delete");
     assert!(
-        matches!(&a.mode, Mode::Export(_, f) if f.value() == "-b4.9-run.csv"),
+        // Suggested "b4.1cm-run.csv" (named for the b it holds), five characters gone.
+        matches!(&a.mode, Mode::Export(_, f) if f.value() == "m-run.csv"),
         "{:?}",
         a.mode
     );
     press(&mut a, "up");
     assert!(
-        matches!(&a.mode, Mode::Export(_, f) if f.value() == "-b4.9-run.csv"),
+        // Suggested "b4.1cm-run.csv" (named for the b it holds), five characters gone.
+        matches!(&a.mode, Mode::Export(_, f) if f.value() == "m-run.csv"),
         "no file name was confirmed yet, so ↑ has nothing to bring: {:?}",
         a.mode
     );
