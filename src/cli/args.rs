@@ -120,8 +120,8 @@ pub enum Command {
 #[derive(Args, Debug)]
 pub struct SimulateArgs {
     /// Output format.
-    #[arg(long, value_enum, default_value_t = Format::Table)]
-    pub format: Format,
+    #[arg(long, value_enum, default_value_t = SimulateFormat::Table)]
+    pub format: SimulateFormat,
     /// Also give states on a uniform time grid with this step (e.g. 10ms).
     #[arg(long, value_name = "DT", value_parser = time, allow_hyphen_values = true)]
     pub sample: Option<f64>,
@@ -267,7 +267,7 @@ fn screen_size(text: &str) -> Result<(u16, u16), String> {
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum Format {
+pub enum SimulateFormat {
     Table,
     Json,
     Csv,

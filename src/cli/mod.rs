@@ -37,7 +37,7 @@ use states::{csv_output, samples, state_rows};
 pub use sweep::run_with_stop as sweep_with_stop;
 
 /// What a command line asks for once it is valid.
-pub enum Outcome {
+pub enum Response {
     /// Text for stdout.
     Print(String),
     /// The interactive app on this scene.
@@ -45,29 +45,29 @@ pub enum Outcome {
 }
 
 /// Runs a parsed command line.
-pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
+pub fn run(cli: &Cli) -> Result<Response, CliError> {
     used_options(cli)?;
     // A data file that names its scene gives it, under the options.
     let scene = &open::with_file_scene(&cli.scene, &cli.data)?;
     match &cli.command {
-        None | Some(Command::Tui) => Ok(Outcome::Interactive(Box::new(app(scene, &cli.data)?))),
+        None | Some(Command::Tui) => Ok(Response::Interactive(Box::new(app(scene, &cli.data)?))),
         Some(Command::Simulate(args)) => {
-            deliver(args.output.as_deref(), || simulate(&cli.scene, args)).map(Outcome::Print)
+            deliver(args.output.as_deref(), || simulate(&cli.scene, args)).map(Response::Print)
         }
         Some(Command::Render(args)) => deliver(args.output.as_deref(), || {
             render(scene, &cli.data, args, cli.ascii)
         })
-        .map(Outcome::Print),
+        .map(Response::Print),
         Some(Command::Compare(args)) => {
-            methods::compare(scene, &cli.data, args).map(Outcome::Print)
+            methods::compare(scene, &cli.data, args).map(Response::Print)
         }
         Some(Command::Fit(args)) => {
-            fit::run(scene, &cli.scene, &cli.data, args).map(Outcome::Print)
+            fit::run(scene, &cli.scene, &cli.data, args).map(Response::Print)
         }
-        Some(Command::Sweep(args)) => sweep::run(&cli.scene, args).map(Outcome::Print),
-        Some(Command::Presets) => Ok(Outcome::Print(presets())),
-        Some(Command::Completions { shell }) => Ok(Outcome::Print(manual::completions(*shell))),
-        Some(Command::Manpage) => Ok(Outcome::Print(manual::manpage())),
+        Some(Command::Sweep(args)) => sweep::run(&cli.scene, args).map(Response::Print),
+        Some(Command::Presets) => Ok(Response::Print(presets())),
+        Some(Command::Completions { shell }) => Ok(Response::Print(manual::completions(*shell))),
+        Some(Command::Manpage) => Ok(Response::Print(manual::manpage())),
     }
 }
 
@@ -234,9 +234,9 @@ pub fn simulate(scene_args: &SceneArgs, args: &SimulateArgs) -> Result<String, C
         Some(dt) => Some(samples(&lab.solution, dt)?),
     };
     Ok(match args.format {
-        Format::Json => json(&lab.solution, &lab.derived, samples.as_deref()),
-        Format::Csv => csv_output(&lab.solution, samples.as_deref())?,
-        Format::Table => table(lab.preset(), lab.resolved(), samples.as_deref()),
+        SimulateFormat::Json => json(&lab.solution, &lab.derived, samples.as_deref()),
+        SimulateFormat::Csv => csv_output(&lab.solution, samples.as_deref())?,
+        SimulateFormat::Table => table(lab.preset(), lab.resolved(), samples.as_deref()),
     })
 }
 
