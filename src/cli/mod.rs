@@ -19,6 +19,8 @@ use crate::tui::{
 };
 
 mod args;
+mod data;
+mod deliver;
 pub mod entry;
 mod error;
 mod fit;
@@ -29,8 +31,9 @@ mod progress;
 mod states;
 mod sweep;
 pub use crate::output::{self, write_atomically};
-use crate::settings::units::{Dimension, show, significant};
+use crate::settings::units::{Dimension, show, sig_figs, significant};
 pub use args::*;
+use deliver::deliver;
 pub use error::{BadValue, CliError, Flag, Usage};
 pub use open::{app, lab, opened, scene_of_data};
 use states::{csv_output, samples, state_rows};
@@ -65,28 +68,11 @@ pub fn run(cli: &Cli) -> Result<Response, CliError> {
             fit::run(scene, &cli.scene, &cli.data, args).map(Response::Print)
         }
         Some(Command::Sweep(args)) => sweep::run(&cli.scene, args).map(Response::Print),
+        Some(Command::Data(args)) => data::run(args, &cli.data).map(Response::Print),
         Some(Command::Presets) => Ok(Response::Print(presets())),
         Some(Command::Completions { shell }) => Ok(Response::Print(manual::completions(*shell))),
         Some(Command::Manpage) => Ok(Response::Print(manual::manpage())),
     }
-}
-
-/// What `work` prints, or with `--output FILE` the same bytes written to FILE (the
-/// target checked before the work, written atomically after it) and a line saying
-/// so: the `--output` of `simulate` and `render`, as `compare`, `fit` and `sweep` do.
-fn deliver(
-    output: Option<&std::path::Path>,
-    work: impl FnOnce() -> Result<String, CliError>,
-) -> Result<String, CliError> {
-    let Some(path) = output else {
-        return work();
-    };
-    output::check_output(path)?;
-    let text = work()?;
-    // From here a stop signal removes the temporary file and writes nothing.
-    crate::signals::watch();
-    write_atomically(path, text.as_bytes())?;
-    Ok(format!("wrote {}\n", path.display()))
 }
 
 /// The first global option given that `command` does not use, if any (clap's global
@@ -99,6 +85,7 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         Some(Command::Compare(_)) => ("compare", true, true, false),
         Some(Command::Fit(_)) => ("fit", true, true, false),
         Some(Command::Sweep(_)) => ("sweep", true, false, false),
+        Some(Command::Data(_)) => ("data", false, true, false),
         Some(Command::Presets) => ("presets", false, false, false),
         Some(Command::Completions { .. }) => ("completions", false, false, false),
         Some(Command::Manpage) => ("manpage", false, false, false),
@@ -111,6 +98,7 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         ("impact_at", d.impact_at.is_some()),
         ("track", !d.track.is_empty()),
         ("length_unit", d.length_unit.is_some()),
+        ("scale", d.scale.is_some()),
         ("window", d.window.is_some()),
     ];
     let scene_given = cli
@@ -120,6 +108,7 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         .map(|_| "preset")
         .or_else(|| cli.scene.values.given().next().map(|(k, _)| k.param().name));
     let data_flag = data_given.iter().find(|(_, g)| *g).map(|(id, _)| *id);
+    let data_command = matches!(cli.command, Some(Command::Data(_)));
     let unused = |id: &'static str, allowed| Usage::Unused {
         flag: Flag(id),
         by: name,
@@ -128,8 +117,15 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
     let error = match (scene_given, data_flag) {
         (Some(id), _) if !scene => unused(id, "commands that take a scene"),
         (_, Some(id)) if !data => unused(id, "compare, fit, render and the app"),
+        // `data` takes its files as arguments.
+        (_, Some(_)) if data_command && !d.data.is_empty() => unused(
+            "data",
+            "compare, fit, render and the app (data takes its files as arguments)",
+        ),
         // Only --data gives these a file to read.
-        (_, Some(id)) if d.data.is_empty() => Usage::WithoutData { flag: Flag(id) },
+        (_, Some(id)) if d.data.is_empty() && !data_command => {
+            Usage::WithoutData { flag: Flag(id) }
+        }
         _ if !ascii && cli.ascii => unused("ascii", "render and the app"),
         _ => return Ok(()),
     };
@@ -181,7 +177,7 @@ pub fn render_with(
     let (cols, rows) = args.size;
     // Headless output has no colours; NO_COLOR does not change the text.
     let theme = tui::theme::Theme::new(tui::theme::Glyphs::new(ascii), true);
-    Ok(tui::view::to_text(&app, cols, rows, &theme))
+    Ok(tui::screen::to_text(&app, cols, rows, &theme))
 }
 
 /// `--dt`, `--tol` and `--epsilon` only where the method uses them: a setting the run
@@ -385,12 +381,12 @@ fn story_lines(out: &mut String, now: &Resolved) {
         let f = derived.forces;
         let _ = writeln!(
             out,
-            "forces   |N_A| = {:.4} N   F_net = {:.4} N (x)   τ_net = {:.3e} N m (z)   a_cm = {} m/s²   a_t = {} m/s²",
-            f.normal_a.norm(),
-            f.net.x,
-            f.torque.z,
-            significant(rec.a_cm, 4),
-            significant(rec.a_t, 4)
+            "forces   |N_A| = {} N   F_net = {} N (x)   τ_net = {} N m (z)   a_cm = {} m/s²   a_t = {} m/s²",
+            sig_figs(f.normal_a.norm(), 4),
+            sig_figs(f.net.x, 4),
+            sig_figs(f.torque.z, 4),
+            sig_figs(rec.a_cm, 4),
+            sig_figs(rec.a_t, 4)
         );
     }
 }
