@@ -33,7 +33,8 @@ mod sweep;
 mod track;
 mod track_args;
 pub use crate::output::{self, write_atomically};
-use crate::settings::units::{Dimension, show, sig_figs, significant};
+use crate::settings::params::{Key, PARAMS};
+use crate::settings::units::{Dimension, show, sig_figs};
 pub use args::*;
 use deliver::deliver;
 pub use error::{BadValue, CliError, Flag, Usage};
@@ -311,18 +312,21 @@ fn scene_lines(out: &mut String, preset: &Preset, now: &Resolved) {
     let b_star = derived
         .b_star
         .map_or("none (e < 2/5)".to_string(), |b| len(b).to_string());
-    let _ = writeln!(
-        out,
-        "scene    R = {}   b = {} (b/R = {:.3}, b* = {})   μ_k = {}   e = {}   c_rr = {}   g = {}",
-        len(sc.radius),
-        len(sc.width),
-        sc.width / sc.radius,
-        b_star,
-        significant(sc.mu, 4),
-        significant(sc.restitution, 4),
-        significant(sc.rolling_resistance, 4),
-        show(sc.g, Dimension::Acceleration),
-    );
+    // The groove's and the scene's own values, from the parameter table (the balls'
+    // follow on lines of their own).
+    let values: Vec<String> = PARAMS
+        .iter()
+        .filter(|p| p.is_own() && p.replaces.is_none() && p.of_scene() && !p.of_ball())
+        .filter_map(|p| {
+            let v = (p.get)(sc, &now.span)?;
+            let mut text = format!("{} = {}", p.screen_label(), show(v, p.dim));
+            if p.key == Key::Width {
+                let _ = write!(text, " (b/R = {:.3}, b* = {b_star})", sc.width / sc.radius);
+            }
+            Some(text)
+        })
+        .collect();
+    let _ = writeln!(out, "scene    {}", values.join("   "));
     for (name, ball) in [("left ", sc.left), ("right", sc.right)] {
         let _ = writeln!(
             out,
