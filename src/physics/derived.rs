@@ -453,14 +453,10 @@ mod tests {
             v0: 0.6,
         };
         let mut sc = Scene {
-            radius: 0.0275,
             width: 0.0426,
-            mu: 0.17,
-            g: 9.81,
-            restitution: 1.0,
-            rolling_resistance: 0.0,
             left: ball,
             right: ball,
+            ..Scene::default()
         };
         let d = Derived::of(&sc);
         // D = 5k²/2 with k² = 1 − (b/2R)² (physics.md): 1 + 2.1e-4 here.
