@@ -78,6 +78,12 @@ pub struct Found {
     /// Those frames' times in the file, s, as runs `[first, last]`.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub mark_gaps: Vec<[f64; 2]>,
+    /// Frames absent from the file (its time jumps by more than one and a half
+    /// frames): how many, and the times either side of each jump, s.
+    #[serde(skip_serializing_if = "is_zero")]
+    pub frames_skipped: usize,
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub skipped_gaps: Vec<[f64; 2]>,
     /// Frames per second (from the median spacing).
     pub frame_rate: f64,
     /// Estimated scatter of a tracked position, m.
@@ -158,6 +164,13 @@ impl Found {
                 self.frames_dropped,
                 self.frames + self.frames_dropped,
                 runs_text(&self.centre_gaps)
+            );
+        }
+        if self.frames_skipped > 0 {
+            s += &format!(
+                "{} frames missing from the file (its time jumps between {}): nothing filled in, the local fits reach across\n",
+                self.frames_skipped,
+                runs_text(&self.skipped_gaps)
             );
         }
         if self.mark_missing > 0 {
@@ -492,6 +505,12 @@ pub fn derive(
         m.angle = Some(ang);
     }
     let (centre_gaps, mark_missing, mark_gaps) = gaps(track, &rows, &ts, spin.as_ref());
+    let skipped: Vec<[f64; 2]> = track
+        .t
+        .windows(2)
+        .filter(|w| w[1] - w[0] > 1.5 * dt)
+        .map(|w| [w[0], w[1]])
+        .collect();
     let found = Found {
         format: track.format,
         centre: track.centre_name.clone(),
@@ -501,6 +520,11 @@ pub fn derive(
         centre_gaps,
         mark_missing,
         mark_gaps,
+        frames_skipped: skipped
+            .iter()
+            .map(|g| ((g[1] - g[0]) / dt).round() as usize - 1)
+            .sum(),
+        skipped_gaps: skipped,
         frame_rate: 1.0 / dt,
         scatter: sigma,
         half_window: n as f64 * dt,
