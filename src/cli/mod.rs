@@ -193,7 +193,7 @@ pub fn render_with(
     let (cols, rows) = args.size;
     // Headless output has no colours; NO_COLOR does not change the text.
     let theme = tui::theme::Theme::new(tui::theme::Glyphs::new(ascii), true);
-    Ok(tui::view::to_text(&app, cols, rows, &theme))
+    Ok(tui::screen::to_text(&app, cols, rows, &theme))
 }
 
 /// `--dt`, `--tol` and `--epsilon` only where the method uses them: a setting the run

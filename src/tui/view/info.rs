@@ -33,7 +33,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     // before the rest of the story, the state at the cursor and the forces.
     // With b hidden (`B`), nothing here may give it or the outcome away: only the
     // state at the cursor, which the animation shows anyway.
-    if app.hide_b {
+    if app.hide.derived() {
         let note = theme
             .glyphs
             .text("b hidden: predict from the picture; B shows b and why");
