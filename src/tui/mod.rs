@@ -1,7 +1,8 @@
 //! The interactive lab (ratatui + crossterm) and its headless twin. `app` holds the
 //! state, `keys` the one key table, `view` draws; this module only wires a real
 //! terminal to them: events in, frames out, the terminal restored on every exit
-//! (quit, error, panic, and SIGINT, SIGTERM, SIGHUP or SIGQUIT from outside).
+//! (quit, error, panic, and SIGINT, SIGTERM, SIGHUP or SIGQUIT from outside), and
+//! given back while Ctrl-Z holds the app stopped.
 
 pub mod app;
 pub mod canvas;
@@ -23,8 +24,8 @@ use std::sync::{Mutex, PoisonError};
 use std::time::{Duration, Instant};
 
 use ratatui::crossterm::event::{
-    self, DisableMouseCapture, EnableMouseCapture, Event, KeyEvent, KeyEventKind, MouseButton,
-    MouseEvent, MouseEventKind,
+    self, DisableMouseCapture, EnableMouseCapture, Event, KeyCode, KeyEvent, KeyEventKind,
+    KeyModifiers, MouseButton, MouseEvent, MouseEventKind,
 };
 use ratatui::crossterm::{cursor, execute};
 
@@ -75,6 +76,40 @@ fn restore_and_exit(signal: i32) {
         restore();
     }
     std::process::exit(128 + signal);
+}
+
+/// Ctrl-Z: in raw mode the terminal sends no SIGTSTP for it, so the app reads the key
+/// and suspends itself as a shell's job: the terminal back as it was, then stopped
+/// until `fg`.
+fn is_suspend(event: &Event) -> bool {
+    matches!(event, Event::Key(k) if k.kind == KeyEventKind::Press
+        && k.code == KeyCode::Char('z')
+        && k.modifiers.contains(KeyModifiers::CONTROL))
+}
+
+/// Restores the terminal, stops the process (SIGTSTP's default action, as Ctrl-Z does
+/// to any job), and when the shell continues it (`fg`, SIGCONT) takes the terminal
+/// again and clears it, so the next frame is drawn whole.
+#[cfg(unix)]
+fn suspend(terminal: &mut ratatui::DefaultTerminal, mouse: bool) -> io::Result<()> {
+    use ratatui::crossterm::terminal::{EnterAlternateScreen, enable_raw_mode};
+    restore();
+    signal_hook::low_level::raise(signal_hook::consts::SIGTSTP)?;
+    // Here again after `fg`.
+    ACTIVE.store(true, Ordering::SeqCst);
+    enable_raw_mode()?;
+    execute!(io::stdout(), EnterAlternateScreen, cursor::Hide)?;
+    set_mouse(mouse);
+    // Not `clear()`: it asks the terminal for the cursor, whose answer the input
+    // thread would read. A resize to the present size (it may have changed meanwhile)
+    // clears the screen and the back buffer without asking.
+    let size = terminal.size()?;
+    terminal.resize(ratatui::layout::Rect::new(0, 0, size.width, size.height))
+}
+
+#[cfg(not(unix))]
+fn suspend(_: &mut ratatui::DefaultTerminal, _: bool) -> io::Result<()> {
+    Ok(())
 }
 
 /// Runs the app on the real terminal until the user quits.
@@ -190,6 +225,12 @@ fn event_loop(
         for input in first.into_iter().chain(rx.try_iter()) {
             let was_playing = app.playing;
             dirty |= match input {
+                Input::Terminal(e) if is_suspend(&e) => {
+                    suspend(terminal, app.mouse)?;
+                    // The stopped time is not played through.
+                    last_tick = Instant::now();
+                    true
+                }
                 Input::Terminal(e) => {
                     // A click after a key of this batch hits the frame that key made.
                     if dirty

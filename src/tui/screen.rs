@@ -202,10 +202,23 @@ fn draw_panels(app: &App, frame: &Frame, buf: &mut Buffer, theme: &Theme) {
         None => {
             let (w, h) = view::MIN_SIZE;
             let times = if theme.glyphs.ascii { "x" } else { "×" };
-            let msg = format!("terminal too small (need {w}{times}{h})");
-            let y = area.y + area.height / 2;
-            let x = area.x + area.width.saturating_sub(msg.chars().count() as u16) / 2;
-            buf.set_stringn(x, y, &msg, area.width as usize, theme.error);
+            // The size it has and the size it needs; on two short lines where one does
+            // not fit, so that a narrow terminal still shows both numbers whole.
+            let (has, needs) = (
+                format!("{}{times}{}", area.width, area.height),
+                format!("{w}{times}{h}"),
+            );
+            let one = format!("terminal {has} is too small: groovelab needs {needs}");
+            let lines = if one.chars().count() <= area.width as usize {
+                vec![one]
+            } else {
+                vec![format!("terminal {has}"), format!("needs {needs}")]
+            };
+            let top = area.y + area.height.saturating_sub(2) / 2;
+            for (y, msg) in (top..area.bottom()).zip(&lines) {
+                let x = area.x + area.width.saturating_sub(msg.chars().count() as u16) / 2;
+                buf.set_stringn(x, y, msg, area.width as usize, theme.error);
+            }
         }
         Some(p) => {
             view::params::render(app, p.params, buf, theme);

@@ -505,10 +505,21 @@ fn ascii_mode_emits_only_seven_bit_characters() {
 
 #[test]
 fn a_small_terminal_gets_a_clear_message() {
+    // The size it has and the size it needs (issue 28: it said only the latter).
     let s = screen("paper-b4.9", 0.0, (79, 30), false, None);
-    assert!(s.contains("terminal too small (need 80×24)"));
+    assert!(
+        s.contains("terminal 79×30 is too small: groovelab needs 80×24"),
+        "{s}"
+    );
     let s = screen("paper-b4.9", 0.0, (100, 23), true, None);
-    assert!(s.contains("terminal too small (need 80x24)"));
+    assert!(
+        s.contains("terminal 100x23 is too small: groovelab needs 80x24"),
+        "{s}"
+    );
+    // Narrow: both numbers still whole, each on its line.
+    let s = screen("paper-b4.9", 0.0, (16, 5), false, None);
+    assert!(s.contains("terminal 16×5"), "{s}");
+    assert!(s.contains("needs 80×24"), "{s}");
 }
 
 /// Times that show each phase: rolling in, sliding after the impact, rolling again,

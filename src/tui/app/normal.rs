@@ -157,8 +157,9 @@ impl App {
                 match stop.burst {
                     // Short enough to stay whole beside the time on most screens.
                     Some((n, dt)) if n > 0 => format!(
-                        "{name} at t = {:.4} s: {n} impacts in {}",
+                        "{name} at t = {:.4} s: {n} {} in {}",
                         stop.t,
+                        if n == 1 { "impact" } else { "impacts" },
                         if dt < 1.0 {
                             format!(
                                 "{}{}",

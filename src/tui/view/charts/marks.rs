@@ -18,7 +18,13 @@ pub(super) fn measured_velocities(m: &MeasuredPoints, theme: &Theme) -> Vec<Seri
             series.push(Series {
                 // One legend entry for both series' bars.
                 name: if n == 0 {
-                    theme.glyphs.text("±1σ").replace('σ', "s")
+                    // σ has no ASCII letter: "sd" (standard deviation), not "s".
+                    if theme.glyphs.ascii {
+                        "+-1 sd"
+                    } else {
+                        "±1σ"
+                    }
+                    .to_string()
                 } else {
                     String::new()
                 },

@@ -76,7 +76,7 @@ pub(super) fn outcome_items(app: &App, pending: bool, compact: bool, theme: &The
     } else {
         let was = pinned_sliding(app).map(|(p, _)| p.d);
         let tr = trend(s.d, was, theme);
-        vec![format!("{d} = {}{tr}", significant(s.d, 3)), regime]
+        vec![format!("{d} = {}{tr}", sig_figs(s.d, 3)), regime]
     };
     items.iter().map(|i| theme.glyphs.text(i)).collect()
 }

@@ -6,7 +6,7 @@ pub(super) use super::super::panel::{
 };
 pub(super) use crate::physics::derived::Regime;
 pub(super) use crate::physics::forces::{Instant, Sliding, instant};
-pub(super) use crate::settings::units::{Dimension, show, significant};
+pub(super) use crate::settings::units::{Dimension, show, sig_figs};
 pub(super) use crate::tui::app::{App, Prediction};
 pub(super) use crate::tui::canvas::Canvas;
 pub(super) use crate::tui::theme::Theme;
@@ -56,11 +56,7 @@ pub(super) fn ball_name(ball: usize) -> &'static str {
 
 /// A number with 3 significant digits, or `?` while b is hidden and it depends on b.
 pub(super) fn num(v: f64, hidden: bool) -> String {
-    if hidden {
-        "?".into()
-    } else {
-        significant(v, 3)
-    }
+    if hidden { "?".into() } else { sig_figs(v, 3) }
 }
 
 /// Out of the picture (+x, toward the viewer) or into it, as the paper's ⊙ / ⊗.

@@ -71,7 +71,7 @@ pub(super) fn front_values<'a>(
     } else {
         format!("F along -x: {} in", along_x(theme, false))
     };
-    let tau = significant(s.net_torque, 3);
+    let tau = sig_figs(s.net_torque, 3);
     let (torque, why_torque) = if now.net_torque == 0.0 {
         (
             t("τ_net = 0".into()),
@@ -79,10 +79,7 @@ pub(super) fn front_values<'a>(
         )
     } else {
         (
-            t(format!(
-                "τ_net {} N m",
-                significant(now.net_torque.abs(), 3)
-            )),
+            t(format!("τ_net {} N m", sig_figs(now.net_torque.abs(), 3))),
             fit([
                 "= μ_k m g R, for any b".into(),
                 "= μ_k m g R (any b)".into(),
@@ -108,7 +105,7 @@ pub(super) fn front_values<'a>(
         (5, Line::styled(tau_ab, theme.dim)),
         (
             6,
-            Line::styled(format!("G {} N", significant(s.weight, 3)), theme.text),
+            Line::styled(format!("G {} N", sig_figs(s.weight, 3)), theme.text),
         ),
         (
             4,
