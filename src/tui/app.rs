@@ -154,9 +154,9 @@ impl App {
                 }
             }
             // A smaller R that the groove's b no longer fits: b is what to change first.
-            Err(SceneError::OutOfRange { name, .. })
-                if key == Key::Radius && name == Key::Width.param().symbol =>
-            {
+            Err(SceneError::OutOfRange {
+                key: Key::Width, ..
+            }) if key == Key::Radius => {
                 self.status = Status::Error(format!(
                     "not applied: R = {} needs b < 2R = {}, and b = {}: set b first",
                     show(value, Dimension::Length),
@@ -167,6 +167,18 @@ impl App {
             Err(e) => self.status = Status::Error(format!("not applied: {e}")),
         }
         self.sync_jobs();
+    }
+
+    /// What the screen hides now: b if hidden, and what follows from it while a
+    /// prediction is asked or its outcome has not shown yet (the one rule every view
+    /// asks).
+    pub fn hidden(&self) -> super::hide::Hide {
+        let made = self
+            .prediction
+            .as_ref()
+            .filter(|p| p.scene == self.lab.scene);
+        let pending = self.mode == Mode::Predict || made.is_some_and(|p| self.t < p.reveal_at);
+        self.hide.with_pending(pending)
     }
 
     /// A parameter's current value as the status line shows it (b hidden if it is).

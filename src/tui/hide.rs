@@ -6,10 +6,17 @@
 
 use crate::settings::params::Key;
 
-/// Whether b is hidden, and what that hides.
+/// Whether b is hidden, whether a prediction is pending, and what that hides.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Hide {
     b: bool,
+    /// A prediction is asked or made and its outcome has not shown yet: b stays shown
+    /// (the question states it), what follows from it does not.
+    pending: bool,
+    /// While a prediction is pending, the forces (|N|, |F|, F_net, the torques at A
+    /// and B, r and k) are shown as the exercise's givens; else (the default) they are
+    /// hidden too, so that no value on screen gives D away.
+    forces_givens: bool,
 }
 
 impl Hide {
@@ -22,6 +29,35 @@ impl Hide {
     pub fn toggle(&mut self) -> bool {
         self.b = !self.b;
         self.b
+    }
+
+    /// Shows the forces as givens while a prediction is pending, or hides them; true
+    /// if they are shown now.
+    pub fn toggle_forces_givens(&mut self) -> bool {
+        self.forces_givens = !self.forces_givens;
+        self.forces_givens
+    }
+
+    /// Whether a pending prediction shows the forces as givens (the setting).
+    pub fn forces_givens(self) -> bool {
+        self.forces_givens
+    }
+
+    /// This rule with a prediction pending or not (the app knows which).
+    pub fn with_pending(self, pending: bool) -> Hide {
+        Hide { pending, ..self }
+    }
+
+    /// Whether a prediction is pending.
+    pub fn pending(self) -> bool {
+        self.pending
+    }
+
+    /// Whether the values that follow from b's size are hidden: k, r, |N|, |F|, F_net,
+    /// the torques at A and B. With b hidden always; while a prediction is pending
+    /// unless the forces are the exercise's givens.
+    pub fn forces(self) -> bool {
+        self.b || (self.pending && !self.forces_givens)
     }
 
     /// Whether `key`'s value is hidden: b's, and the release heights' (they follow
@@ -41,9 +77,11 @@ impl Hide {
     }
 
     /// Whether what follows from b is hidden: b/R, k, D and what it decides, the
-    /// outcome's numbers, b's place on the map, the reasons that would name them.
+    /// outcome's numbers, b's place on the map, the reasons that would name them, the
+    /// chart beyond the cursor (its curves and event labels show the outcome), preset
+    /// descriptions. With b hidden, and while a prediction is pending.
     pub fn derived(self) -> bool {
-        self.b
+        self.b || self.pending
     }
 }
 
@@ -59,6 +97,16 @@ mod tests {
         assert!(hide.value(Key::Width) && hide.value(Key::Height));
         assert!(!hide.value(Key::Mu) && !hide.value(Key::Radius));
         assert!(hide.change(Key::Width.param().label) && !hide.change("R"));
-        assert!(hide.derived());
+        assert!(hide.derived() && hide.forces());
+    }
+
+    #[test]
+    fn a_pending_prediction_hides_what_follows_from_b_but_not_b() {
+        let hide = Hide::default().with_pending(true);
+        assert!(!hide.value(Key::Width) && hide.derived() && hide.forces());
+        let mut givens = Hide::default();
+        assert!(givens.toggle_forces_givens());
+        assert!(!givens.with_pending(true).forces() && givens.with_pending(true).derived());
+        assert!(!givens.derived() && !givens.forces());
     }
 }

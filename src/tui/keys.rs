@@ -371,10 +371,11 @@ pub fn action(mode: &Mode, key: KeyEvent) -> Option<Action> {
             }
         };
     }
-    // The prediction's question takes its answers as typed digits.
+    // The prediction's question takes its answers as typed digits, and `g` (the
+    // forces shown as givens, or hidden).
     if *mode == Mode::Predict
         && let KeyCode::Char(c) = key.code
-        && c.is_ascii_digit()
+        && (c.is_ascii_digit() || c == 'g')
     {
         return Some(Action::Type(c));
     }

@@ -82,6 +82,18 @@ pub fn time_at_column(
 }
 
 impl Plot {
+    /// Keeps only what lies at or before `x`: the series' points and the vertical
+    /// lines (a chart that must not show what comes later: the outcome, while it is
+    /// to be predicted). The axes stay, so the picture does not jump.
+    pub fn until(&mut self, x: f64) {
+        for s in &mut self.series {
+            if s.points.iter().any(|p| p.0 > x) {
+                s.points = s.points.iter().copied().filter(|p| p.0 <= x).collect();
+            }
+        }
+        self.vlines.retain(|v| v.x <= x);
+    }
+
     fn y_ticks_in(&self, area: Rect) -> Vec<(f64, String)> {
         let (y0, y1) = self.y_range;
         let y_ticks = self.y_ticks.clone().unwrap_or_else(|| {

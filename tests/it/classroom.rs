@@ -77,3 +77,104 @@ fn a_tiny_force_is_not_shown_as_zero() {
     let table = String::from_utf8(out.stdout).unwrap();
     assert!(table.contains("F_net = 3.607e-8 N (x)"), "{table}");
 }
+
+/// Values from which D follows at paper-b4.9 (b = 4.9 cm, R = 2.75 cm): k 0.454, r
+/// 1.25 cm, b* 4.26 cm, D 0.516, |N| 1.80 N, |F| 0.307 N, F_net 0.613 N, |a_cm| 3.67,
+/// |a_t| 1.89 m/s², ω 48.3 rad/s after the impact; the outcome's words and the event
+/// labels that come after it; the preset's name and description. (b* gives nothing
+/// away while b itself is hidden.)
+const GIVE_AWAY: [&str; 19] = [
+    "0.454",
+    "1.25 cm",
+    "1.249",
+    "4.26",
+    "0.516",
+    "1.80 N",
+    "1.804",
+    "0.307",
+    "0.613",
+    "3.67",
+    "1.89",
+    "48.3",
+    "RECOLLIDE",
+    "DEPART",
+    "T∞",
+    "│rolling",
+    "│slipping",
+    "paper-b4.9",
+    "collide again and again",
+];
+
+fn gives_nothing_away(screen: &str, what: &str) {
+    let b_hidden = what.starts_with("B ");
+    for word in GIVE_AWAY
+        .into_iter()
+        .filter(|w| !(b_hidden && *w == "4.26"))
+    {
+        assert!(
+            !screen.contains(word),
+            "{what}: '{word}' on screen\n{screen}"
+        );
+    }
+}
+
+/// Predict mode at 80×24, 120×40 and 200×60 shows no outcome, event label, or value
+/// from which D follows until the answer shows: asked (`y`), answered and playing (`y
+/// 3`, before the left ball turns (0.216 s) and rolls again (0.285 s), in the Forces
+/// view and the charts.
+#[test]
+fn predict_mode_gives_nothing_away_at_any_size() {
+    for size in ["80x24", "120x40", "200x60"] {
+        let asked = screen(&["--keys", "y", "--size", size]);
+        // The question itself lists "they come back and collide again".
+        gives_nothing_away(&asked, &format!("asked at {size}"));
+        for keys in ["y 3", "y 3 v"] {
+            for at in ["0.0", "0.1", "0.2"] {
+                let s = screen(&["--keys", keys, "--at", at, "--size", size]);
+                gives_nothing_away(&s, &format!("'{keys}' at {at} s, {size}"));
+            }
+        }
+    }
+    // Once the outcome shows, everything does.
+    let after = screen(&["--keys", "y 3 v", "--at", "0.9", "--size", "120x40"]);
+    assert!(
+        after.contains("RECOLLIDE") && after.contains("T∞"),
+        "{after}"
+    );
+}
+
+/// A second round asks afresh: the first round's answer is not on screen.
+#[test]
+fn a_second_prediction_round_does_not_show_the_first_answer() {
+    let s = screen(&["--keys", "y 3 y", "--size", "120x40"]);
+    assert!(s.contains("what will the balls do?"), "{s}");
+    assert!(!s.contains("predicted:"), "{s}");
+}
+
+/// With b hidden (`B`), outside predict mode: the chart grows with the run (no curve
+/// or event label past the cursor), the status line names no preset, the picker
+/// states no outcome.
+#[test]
+fn hiding_b_hides_the_chart_ahead_the_preset_and_its_outcomes() {
+    for size in ["80x24", "120x40", "200x60"] {
+        let s = screen(&["--keys", "B", "--at", "0.1", "--size", size]);
+        gives_nothing_away(&s, &format!("B at {size}"));
+    }
+    let picker = screen(&["--keys", "B p", "--size", "120x40"]);
+    for outcome in ["roll apart", "come back", "both balls stop", "recollide"] {
+        assert!(!picker.contains(outcome), "{picker}");
+    }
+    assert!(picker.contains("description hidden"), "{picker}");
+}
+
+/// The teacher's choice: `g` in the question shows the forces as the exercise's
+/// givens (|F| 0.307 N, F_net 0.613 N), still without D or the outcome.
+#[test]
+fn predict_mode_can_show_the_forces_as_givens() {
+    let s = screen(&["--keys", "y g 3", "--at", "0.1", "--size", "120x40"]);
+    assert!(s.contains("0.307 N") && s.contains("F_net 0.613 N"), "{s}");
+    assert!(s.contains("D = |a_t|/|a_cm| = ?"), "{s}");
+    assert!(!s.contains("RECOLLIDE"), "{s}");
+    let asked = screen(&["--keys", "y g", "--size", "120x40"]);
+    assert!(asked.contains("the forces: shown as givens"), "{asked}");
+}

@@ -89,7 +89,8 @@ fn the_csv_export_loads_back_as_data_with_its_scene() {
     a.set_value(Key::Width, 0.045);
     press(&mut a, "w enter");
     a.wait();
-    let file = dir.join("paper-b4.4-run.csv");
+    // Named for the b it holds (issue 28), not for the preset's.
+    let file = dir.join("b4.5cm-run.csv");
     let text = std::fs::read_to_string(&file).unwrap();
     assert!(text.starts_with("# groovelab run"), "{}", &text[..200]);
     assert!(
@@ -155,5 +156,32 @@ fn the_csv_export_loads_back_as_data_with_its_scene() {
         screen.contains("4.50 cm") && screen.contains("0.1667"),
         "{screen}"
     );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 28: pinned at b = 4.9 cm, b typed as 3.5 cm, `W`: the file is named for
+/// what it shows, holds the pinned run and the caption of the data measured in the
+/// other groove (the screen shows both); a typed name without an extension gets one.
+#[test]
+fn shift_w_exports_what_is_on_the_screen() {
+    let dir = scratch("on-screen");
+    let mut a = app_in(&dir, "paper-b4.9");
+    press(&mut a, "P");
+    a.set_value(Key::Width, 0.035);
+    let (name, svg) = export_figure(&mut a);
+    assert_eq!(name, "b3.5cm-vs-b4.9cm-chart.svg");
+    assert!(svg.contains("b = 3.50 cm"), "the run shown");
+    assert!(svg.contains("pinned b = 4.9 cm"), "the pinned run");
+    assert!(
+        svg.contains("data were measured at b = 4.9 cm; the model uses b = 3.5 cm"),
+        "the data's caption"
+    );
+    // A typed name without an extension: .svg added.
+    press(&mut a, "W C-u m y f i g enter");
+    a.wait();
+    assert!(dir.join("myfig.svg").is_file(), "{:?}", a.status);
+    press(&mut a, "w C-u r u n enter");
+    a.wait();
+    assert!(dir.join("run.csv").is_file(), "{:?}", a.status);
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -12,5 +12,5 @@ mod work_precision;
 pub use drawing::FigureError;
 pub use fit::fit_figure;
 pub use map::regime_map;
-pub use run::{RunChart, run_chart};
+pub use run::{Beside, RunChart, run_chart};
 pub use work_precision::{Work, work_precision, work_precision_against};

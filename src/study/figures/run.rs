@@ -123,19 +123,37 @@ fn draw_measured(chart: &mut Chart, m: &Measured, (t0, t1): (f64, f64)) -> Resul
     )
 }
 
+/// What the app's chart shows beside the run: a pinned run (drawn dashed, labelled
+/// with `label`) and a note under the chart (data measured in another groove).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Beside<'a> {
+    pub pinned: Option<(&'a Solution, &'a str)>,
+    pub note: Option<&'a str>,
+}
+
 /// A run's chart, as the app's chart panel shows it: v_cm(t) and v_t(t) of the chosen
-/// balls (with the measured left-ball points, if given) or x(t) of both balls, and a
-/// dashed line at every labelled event.
+/// balls (with the measured left-ball points, if given) or x(t) of both balls, a
+/// dashed line at every labelled event, and what is `beside` it on screen.
 pub fn run_chart(
     sol: &Solution,
     which: RunChart,
     measured: Option<&Measured>,
+    beside: Beside,
 ) -> Result<String, FigureError> {
     let samples = run_samples(sol);
     let (curves, y_desc, title) = curves_of(which);
     let measured = measured.filter(|_| which != RunChart::Positions);
-    let (lo, hi) = value_range(&curves, &samples, measured);
-    let (t0, t1) = linear_axis(sol.t_start, sol.t_end);
+    let pinned = beside.pinned.map(|(p, label)| (run_samples(p), label));
+    let both: Vec<Snapshot> = samples
+        .iter()
+        .chain(pinned.iter().flat_map(|(p, _)| p))
+        .copied()
+        .collect();
+    let (lo, hi) = value_range(&curves, &both, measured);
+    let t_end = beside
+        .pinned
+        .map_or(sol.t_end, |(p, _)| p.t_end.max(sol.t_end));
+    let (t0, t1) = linear_axis(sol.t_start, t_end);
     let scene = &sol.scene;
     let cm = |v: f64| Dimension::Length.to_display(v);
     let caption = format!(
@@ -146,14 +164,20 @@ pub fn run_chart(
         super::drawing::rounded(scene.restitution),
         unit = Dimension::Length.display_unit().0,
     );
+    let mut frame = Frame::plain(Some(caption));
+    if beside.note.is_some() {
+        // Room under the axis for the note.
+        frame.label_areas.0 += 22;
+    }
     svg((900, 560), |root| {
-        let mut chart = linear_chart(
-            root,
-            &Frame::plain(Some(caption)),
-            ((t0, t1), (lo, hi)),
-            ("t (s)", &y_desc),
-            true,
-        )?;
+        if let Some(note) = beside.note {
+            root.draw(&Text::new(
+                note.to_string(),
+                (70, 538),
+                ("sans-serif", 14).into_font().color(&RED),
+            ))?;
+        }
+        let mut chart = linear_chart(root, &frame, ((t0, t1), (lo, hi)), ("t (s)", &y_desc), true)?;
         let grey = RGBColor(150, 150, 150);
         for e in sol.visible_events().filter(|e| e.kind.label().is_some()) {
             chart.draw_series(DashedLineSeries::new(
@@ -171,6 +195,19 @@ pub fn run_chart(
                 ))?
                 .label(name)
                 .legend(line_mark(colour.stroke_width(2)));
+        }
+        if let Some((pinned, label)) = &pinned {
+            for (name, f, colour) in curves_of(which).0 {
+                chart
+                    .draw_series(DashedLineSeries::new(
+                        pinned.iter().map(|s| (s.t, f(s))),
+                        6,
+                        4,
+                        colour.mix(0.6).stroke_width(1),
+                    ))?
+                    .label(format!("{name}, pinned {label}"))
+                    .legend(line_mark(colour.mix(0.6).stroke_width(1)));
+            }
         }
         if let Some(m) = measured {
             draw_measured(&mut chart, m, (t0, t1))?;

@@ -68,6 +68,21 @@ pub enum ExportError {
 type ExportWork = dyn FnOnce() -> Result<(Vec<u8>, String), ExportError> + Send;
 
 impl App {
+    /// Whether b is no longer the preset's (a preset's name may state b: paper-b4.9):
+    /// set on the command line or in the app.
+    pub(super) fn scene_edited(&self) -> bool {
+        use crate::lab::Edit;
+        use crate::settings::params::Key;
+        let settings = self.lab.settings();
+        settings
+            .in_force()
+            .iter()
+            .any(|e| matches!(e, Edit::Values(v) if v.iter().any(|(k, _)| *k == Key::Width)))
+            || settings
+                .flags_in_force()
+                .is_some_and(|f| f.given().any(|(k, _)| k == Key::Width))
+    }
+
     /// The figure `W` writes from the view on screen, or why there is none.
     pub fn figure_on_screen(&self) -> Result<Figure, String> {
         match self.view {
@@ -104,6 +119,13 @@ impl App {
         if name.is_empty() {
             return Err("give a file name".into());
         }
+        // A name without an extension gets the file's kind's (a typed "run" is
+        // run.csv; "fig.v2" keeps its own).
+        let name = if std::path::Path::new(name).extension().is_some() {
+            name.to_string()
+        } else {
+            format!("{name}.{}", kind.extension())
+        };
         let path = self.export_dir.join(name);
         // What can be told at once keeps the prompt open; the writing itself (the SVG
         // takes milliseconds) runs as a job and reports in the status line.
@@ -173,7 +195,27 @@ impl App {
                     .measured()
                     .filter(|_| self.chart_ball != ChartBall::Right && figure == Figure::Velocities)
                     .cloned();
-                Box::new(move || done(figures::run_chart(&sol, which, measured.as_ref())))
+                // What the screen shows beside the run: the pinned run, and the caption
+                // of data measured in another groove.
+                let pinned = self
+                    .lab
+                    .pinned
+                    .as_ref()
+                    .map(|p| (std::sync::Arc::clone(&p.solution), pinned_label(&p.scene)));
+                let note = measured.as_ref().and(
+                    self.lab
+                        .resolved()
+                        .other_groove
+                        .as_ref()
+                        .map(|o| o.describe()),
+                );
+                Box::new(move || {
+                    let beside = figures::Beside {
+                        pinned: pinned.as_ref().map(|(p, l)| (p.as_ref(), l.as_str())),
+                        note: note.as_deref(),
+                    };
+                    done(figures::run_chart(&sol, which, measured.as_ref(), beside))
+                })
             }
             Figure::Map => {
                 let preset = self.lab.preset().name.clone();
@@ -266,4 +308,32 @@ pub fn export_step(span: f64) -> f64 {
         dt *= factor;
     }
     dt
+}
+
+/// A pinned run as the chart's legend names it: its groove width.
+fn pinned_label(scene: &crate::physics::scene::Scene) -> String {
+    format!("b = {}", show(scene.width, Dimension::Length))
+}
+
+/// The part of an export's file name that says which scene it shows: the preset's
+/// name (or the data file's) while b is the preset's, else the groove width shown
+/// (`b3.5cm`), and the pinned run's beside it (`b3.5cm-vs-b4.9cm`).
+pub fn shown_name(lab: &crate::lab::Lab, edited: bool) -> String {
+    let width = |scene: &crate::physics::scene::Scene| {
+        let shown = Dimension::Length.to_display(scene.width);
+        let unit = Dimension::Length.display_unit().0;
+        format!("b{}{unit}", crate::settings::units::significant(shown, 4))
+    };
+    // A data file that names its own scene names the export, until the app changes it.
+    let own_file = lab.scene_name() != lab.preset().name && lab.settings().in_force().is_empty();
+    let own = if edited && !own_file {
+        width(&lab.scene)
+    } else {
+        lab.scene_name()
+    };
+    match &lab.pinned {
+        Some(p) if p.scene.width != lab.scene.width => format!("{own}-vs-{}", width(&p.scene)),
+        Some(p) if p.scene != lab.scene => format!("{own}-and-pinned"),
+        _ => own,
+    }
 }

@@ -35,6 +35,8 @@ impl App {
         self.t = self.lab.solution.t_start;
         self.status = Status::None;
         self.mode = Mode::Predict;
+        // A new round: the last round's answer must not stand beside the question.
+        self.prediction = None;
     }
 
     /// Playback that has just passed the moment a prediction's outcome shows stops
@@ -56,6 +58,16 @@ impl App {
     /// An answer (1, 2, 3) is the prediction: play from the start. Esc cancels.
     pub(super) fn apply_predict(&mut self, action: Action) {
         match action {
+            Action::Type('g') => {
+                self.status = Status::Info(
+                    if self.hide.toggle_forces_givens() {
+                        "the forces are shown as givens until the outcome (g hides them)"
+                    } else {
+                        "the forces are hidden until the outcome (g shows them as givens)"
+                    }
+                    .into(),
+                );
+            }
             Action::Type(c) => {
                 let Some((_, guess)) = ANSWERS.iter().find(|(k, _)| *k == c) else {
                     return;

@@ -58,6 +58,11 @@ pub fn build(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Ch
     // The title sits on the border: the inside is the same whatever it says.
     let inner = block("", theme).inner(area);
     let thinned = thin_measured(app, cache, &mut plot, inner, theme);
+    // The curves and event labels past the cursor show the outcome: while it is to
+    // be predicted (b hidden, a prediction pending) the chart grows as the run plays.
+    if app.hidden().derived() {
+        plot.until(app.t);
+    }
     let data = plot.data_area(inner, theme);
     (Chart { titles, plot, data }, thinned)
 }

@@ -34,10 +34,12 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     // before the rest of the story, the state at the cursor and the forces.
     // With b hidden (`B`), nothing here may give it or the outcome away: only the
     // state at the cursor, which the animation shows anyway.
-    if app.hide.derived() {
-        let note = theme
-            .glyphs
-            .text("b hidden: predict from the picture; B shows b and why");
+    if app.hidden().derived() {
+        let note = theme.glyphs.text(if app.hide.b() {
+            "b hidden: predict from the picture; B shows b and why"
+        } else {
+            "predict first: why shows once the outcome does"
+        });
         let mut lines: Ranked = vec![(9, Line::from(Span::styled(note, theme.title)))];
         lines.extend(cursor_lines(app, theme));
         draw_lines(by_priority(lines, inner), inner, buf);

@@ -98,7 +98,7 @@ fn regime_map(app: &App, grid: &[Regime], area: Rect, buf: &mut Buffer, theme: &
     // The scene itself (not while b is hidden: its column would give b away).
     let c = (app.lab.scene.width / b_max * (cols - 1) as f64).round() as u16;
     let r = ((1.0 - app.lab.scene.restitution) * (rows - 1) as f64).round() as u16;
-    if usize::from(c) < cols && usize::from(r) < rows && !app.hide.derived() {
+    if usize::from(c) < cols && usize::from(r) < rows && !app.hidden().derived() {
         buf.set_string(
             inner.x + 5 + c,
             inner.y + r,
@@ -192,7 +192,7 @@ fn paper_figure(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             },
         ]
         .into_iter()
-        .skip(usize::from(app.hide.derived()))
+        .skip(usize::from(app.hidden().derived()))
         .collect(),
         cursor: None,
         x_ticks: None,

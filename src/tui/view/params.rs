@@ -74,11 +74,12 @@ pub fn note(app: &App, key: Key, room: usize) -> String {
         (!n.starts_with('#')).then(|| format!("{label} {n}"))
     };
     let text = match key {
-        // b/R and k would give b away; b* does not depend on b.
-        Key::Width | Key::Radius if app.hide.derived() => d
+        // b/R and k would give b away; b* does not depend on b, but beside a b
+        // that is shown (a pending prediction) it is the answer.
+        Key::Width | Key::Radius if app.hidden().derived() => d
             .b_star
             .and_then(|b| pair("b*", Dimension::Length.to_display(b), 2, room))
-            .filter(|_| key == Key::Width),
+            .filter(|_| key == Key::Width && app.hide.b()),
         Key::Width => {
             let star = match d.b_star {
                 None => Some("no b*".to_string()).filter(|s| s.len() <= room),

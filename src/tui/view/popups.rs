@@ -140,7 +140,13 @@ fn preset_picker(app: &App, selected: usize, area: Rect, buf: &mut Buffer, theme
             } else {
                 ""
             };
-            let text = format!("{mark}{:<name_width$}  {tag}{}", p.name, p.description);
+            // Descriptions state outcomes: not while b is hidden or a prediction pends.
+            let description = if app.hidden().derived() {
+                "(description hidden until the outcome shows)"
+            } else {
+                p.description.as_str()
+            };
+            let text = format!("{mark}{:<name_width$}  {tag}{description}", p.name);
             Line::from(Span::styled(g.ellipsize(&text, room), style))
         })
         .collect();

@@ -70,7 +70,7 @@ pub fn question(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         ]));
     }
     lines.push(Line::from(""));
-    let b = if app.hide.derived() {
+    let b = if app.hide.b() {
         "b is hidden: look at the front view".to_string()
     } else {
         format!(
@@ -83,6 +83,15 @@ pub fn question(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         g.text(&format!("{b}; then it plays and explains. Esc cancels.")),
         theme.dim,
     ));
+    let forces = if app.hide.forces_givens() {
+        "shown as givens (g hides them)"
+    } else {
+        "hidden (g shows them as givens)"
+    };
+    lines.push(Line::from(vec![
+        Span::styled(" g ", theme.key),
+        Span::styled(format!("the forces: {forces}"), theme.dim),
+    ]));
     let rect = question_rect(area, lines.len());
     Clear.render(rect, buf);
     Paragraph::new(lines)

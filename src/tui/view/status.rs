@@ -73,7 +73,16 @@ pub fn render(app: &App, status: Rect, hints: Rect, buf: &mut Buffer, theme: &Th
 /// give it), and the data file loaded (`data: ball.txt`, cut from the left,
 /// so at the folders first, when long): what the numbers on screen come from.
 fn right_text(app: &App, width: usize, g: &Glyphs) -> String {
-    let preset = g.ellipsize(&g.text(&app.lab.settings().source()), width / 3);
+    // A preset's name may say b or the outcome (paper-b4.9, critical): hidden with
+    // what follows from b.
+    let source = if app.hide.b() {
+        "preset hidden with b".to_string()
+    } else if app.hidden().derived() {
+        "preset hidden until the outcome shows".to_string()
+    } else {
+        app.lab.settings().source()
+    };
+    let preset = g.ellipsize(&g.text(&source), width / 3);
     let Some(own) = app.lab.own_data() else {
         return preset;
     };

@@ -11,7 +11,7 @@ use crate::tui::view::predict::short_answer;
 pub(super) fn chains(app: &App, pending: bool, compact: bool, theme: &Theme) -> [Vec<String>; 2] {
     let s = app.lab.derived.sliding[app.forces_ball];
     let pinned = pinned_sliding(app);
-    let hide = app.hide.derived();
+    let hide = app.hidden().forces();
     // While a prediction is pending the two accelerations stay hidden too: their
     // ratio is D, the answer.
     let hide_a = hide || pending;
@@ -29,7 +29,7 @@ pub(super) fn chains(app: &App, pending: bool, compact: bool, theme: &Theme) -> 
         };
         format!("{label} {}{unit}{tr}", num(v, hidden))
     };
-    let b = if hide {
+    let b = if app.hide.b() {
         "b ?".to_string()
     } else {
         format!(
@@ -71,7 +71,7 @@ pub(super) fn outcome_items(app: &App, pending: bool, compact: bool, theme: &The
     let regime = app.lab.derived.regime.name().to_string();
     let items = if pending {
         vec![format!("{d} = ?"), "what will the balls do?".to_string()]
-    } else if app.hide.derived() {
+    } else if app.hidden().derived() {
         vec![format!("{d} = ?"), regime]
     } else {
         let was = pinned_sliding(app).map(|(p, _)| p.d);
@@ -131,7 +131,7 @@ pub(super) fn chain_view(app: &App, area: Rect, joined: bool, buf: &mut Buffer, 
     let prediction = app.prediction.as_ref().filter(|p| p.scene == app.lab.scene);
     // While the question is asked, and until the outcome shows, the chain keeps D and
     // the outcome to itself: the answer must not stand beside the question.
-    let pending = app.mode == Mode::Predict || prediction.is_some_and(|p| app.t < p.reveal_at);
+    let pending = app.hidden().pending();
     let title = if prediction.is_some() {
         (
             "Forces: predict, observe, explain",
@@ -170,7 +170,7 @@ pub(super) fn chain_view(app: &App, area: Rect, joined: bool, buf: &mut Buffer, 
         ),
     ];
     let mut ranked: Ranked = Vec::new();
-    if !(pending || app.hide.derived()) && prediction.is_none() {
+    if !(pending || app.hidden().derived()) && prediction.is_none() {
         ranked.push((
             5,
             Line::styled(g.text(&app.lab.derived.why()), theme.accent),
@@ -220,7 +220,7 @@ pub(super) fn prediction_lines<'a>(
     };
     let pm = if g.ascii { "+-" } else { "±" };
     // With b hidden, the reason in words: D's value (or v') would give b away.
-    let why = match (app.hide.derived(), d.symmetric, d.regime) {
+    let why = match (app.hidden().derived(), d.symmetric, d.regime) {
         (false, ..) | (true, false, _) => format!("{}; {}", d.why(), verdict.text(pm)),
         (true, true, Regime::Depart) => {
             "|a_t| > |a_cm| (D > 1): the translation reverses first".into()

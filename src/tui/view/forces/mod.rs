@@ -116,10 +116,15 @@ fn ball_rows(app: &App, ball: usize, width: usize, theme: &Theme) -> Ranked<'sta
     } else {
         "at A, B (static)"
     };
-    ranked.push((
-        4,
-        Line::styled(row("F", i.friction, s.friction, "N", kind), theme.accent),
-    ));
+    // |F| = μ_k m g / (2k) and r = v_t / ω give k, so D: hidden with the forces.
+    let hide = app.hidden().forces();
+    let friction = row("F", i.friction, s.friction, "N", kind);
+    let friction = if hide && i.friction != 0.0 {
+        hide_number(&friction, " N")
+    } else {
+        friction
+    };
+    ranked.push((4, Line::styled(friction, theme.accent)));
     let spin = match (i.omega > 0.0, g.ascii) {
         _ if i.omega == 0.0 => "",
         (true, false) => "↻ ",
@@ -130,14 +135,25 @@ fn ball_rows(app: &App, ball: usize, width: usize, theme: &Theme) -> Ranked<'sta
     ranked.push((
         2,
         Line::styled(
-            g.text(&format!(
-                "  ω     {spin}{:+.1} rad/s, v_t {:+.3} m/s",
-                i.omega, i.v_t
-            )),
+            g.text(&if hide {
+                format!("  ω     {spin}? rad/s, v_t {:+.3} m/s", i.v_t)
+            } else {
+                format!("  ω     {spin}{:+.1} rad/s, v_t {:+.3} m/s", i.omega, i.v_t)
+            }),
             theme.dim,
         ),
     ));
     ranked
+}
+
+/// `line` with the signed number before `unit` replaced by `?` (a hidden value keeps
+/// its row and its arrow's direction).
+fn hide_number(line: &str, unit: &str) -> String {
+    let Some(end) = line.find(unit) else {
+        return line.to_string();
+    };
+    let start = line[..end].rfind(' ').map_or(0, |i| i + 1);
+    format!("{}?{}", &line[..start], &line[end..])
 }
 
 /// The Forces view (front, side, chain) as a component.

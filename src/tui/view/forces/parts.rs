@@ -10,7 +10,6 @@ pub(super) use crate::settings::units::{Dimension, show, sig_figs};
 pub(super) use crate::tui::app::{App, Prediction};
 pub(super) use crate::tui::canvas::Canvas;
 pub(super) use crate::tui::theme::Theme;
-pub(super) use crate::tui::vocabulary::Mode;
 pub(super) use ratatui::buffer::Buffer;
 pub(super) use ratatui::layout::{Constraint, Layout, Rect};
 pub(super) use ratatui::style::Style;

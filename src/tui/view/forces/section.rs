@@ -51,7 +51,7 @@ pub(super) fn front_values<'a>(
     theme: &Theme,
 ) -> Ranked<'a> {
     let g = theme.glyphs;
-    let hide = app.hide.derived();
+    let hide = app.hidden().forces();
     let t = |s: String| g.text(&s);
     let fit = |variants: [String; 2]| fitting(&variants.map(|v| g.text(&v)), width);
     let friction = if now.friction == 0.0 {
