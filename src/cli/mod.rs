@@ -30,6 +30,8 @@ mod open;
 mod progress;
 mod states;
 mod sweep;
+mod track;
+mod track_args;
 pub use crate::output::{self, write_atomically};
 use crate::settings::units::{Dimension, show, sig_figs, significant};
 pub use args::*;
@@ -68,6 +70,7 @@ pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
             fit::run(scene, &cli.scene, &cli.data, args).map(Outcome::Print)
         }
         Some(Command::Sweep(args)) => sweep::run(&cli.scene, args).map(Outcome::Print),
+        Some(Command::Track(args)) => track::run(&cli.scene, args).map(Outcome::Print),
         Some(Command::Data(args)) => data::run(args, &cli.data).map(Outcome::Print),
         Some(Command::Presets) => Ok(Outcome::Print(presets())),
         Some(Command::Completions { shell }) => Ok(Outcome::Print(manual::completions(*shell))),
@@ -85,6 +88,7 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         Some(Command::Compare(_)) => ("compare", true, true, false),
         Some(Command::Fit(_)) => ("fit", true, true, false),
         Some(Command::Sweep(_)) => ("sweep", true, false, false),
+        Some(Command::Track(_)) => ("track", true, false, false),
         Some(Command::Data(_)) => ("data", false, true, false),
         Some(Command::Presets) => ("presets", false, false, false),
         Some(Command::Completions { .. }) => ("completions", false, false, false),
