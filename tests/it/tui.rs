@@ -729,7 +729,7 @@ fn the_methods_view_of_a_long_span_is_cut_and_says_where() {
     let (_, span) = p.spec.resolve().unwrap();
     let flags = groovelab::settings::spec::SceneSpec::default()
         .with(groovelab::settings::params::Key::Mu, 1e-6);
-    let lab = groovelab::lab::Lab::new(groovelab::lab::Settings::new(p, flags), None).unwrap();
+    let lab = groovelab::lab::Lab::new(groovelab::lab::Layers::new(p, flags), None).unwrap();
     let mut a = App::new(lab, no_user_presets());
     assert!(a.lab.solution.t_end > 1e5);
     press(&mut a, "c");
@@ -1328,7 +1328,7 @@ fn a_applies_the_position_fit_of_a_track() {
 
 #[test]
 fn export_writes_the_run_as_csv_and_the_chart_as_svg() {
-    use groovelab::cli::{Format, SimulateArgs, simulate};
+    use groovelab::cli::{SimulateArgs, SimulateFormat, simulate};
     let dir = std::env::temp_dir().join(format!("groovelab-export-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
@@ -1348,7 +1348,7 @@ fn export_writes_the_run_as_csv_and_the_chart_as_svg() {
     let cli = simulate(
         &scene,
         &SimulateArgs {
-            format: Format::Csv,
+            format: SimulateFormat::Csv,
             sample: Some(1e-3),
             method: groovelab::methods::Method::Exact,
             dt: None,

@@ -44,7 +44,7 @@ impl App {
             if let Status::Info(done) = &self.status {
                 self.status = Status::Info(format!("{done}, at the limit{why}"));
             }
-        } else if matches!(&refused, SceneError::OutOfRange { name, .. } if *name == p.symbol) {
+        } else if matches!(refused, SceneError::OutOfRange { key, .. } if key == p.key) {
             // Already at the limit: say so, never naming a value nobody typed.
             let value = if hidden {
                 String::new()
