@@ -7,7 +7,7 @@ use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use groovelab::lab::{Lab, Layers};
-use groovelab::methods::{Method, Model, Observer, Run, Settings, Y, start_state};
+use groovelab::methods::{Method, Model, Observer, Run, Stepping, Y, start_state};
 use groovelab::settings::params::Key;
 use groovelab::settings::spec::SceneSpec;
 use groovelab::study::compare::sweep;
@@ -21,13 +21,13 @@ impl Observer for Finite {
 }
 
 /// One run of 1.2 simulated seconds from the run-up's state `y0`, stepped as `s` says.
-fn run<'a>(model: &'a Model, y0: Y, s: &'a Settings) -> Run<'a> {
+fn run<'a>(model: &'a Model, y0: Y, s: &'a Stepping) -> Run<'a> {
     Run {
         model,
         y0: black_box(y0),
         t0: -0.2,
         t1: 1.0,
-        settings: s,
+        stepping: s,
     }
 }
 
@@ -44,9 +44,9 @@ fn methods(c: &mut Criterion) {
         Method::Moreau,
     ] {
         for h in [1e-3, 1e-4, 1e-5] {
-            let s = Settings {
+            let s = Stepping {
                 step: h,
-                ..Settings::default()
+                ..Stepping::default()
             };
             group.bench_function(format!("{} h={h:.0e}", method.name()), |b| {
                 b.iter(|| method.integrate(&run(&model, y0, &s), &mut Finite))
@@ -54,10 +54,10 @@ fn methods(c: &mut Criterion) {
         }
     }
     for tol in [1e-3, 1e-6, 1e-9] {
-        let s = Settings {
+        let s = Stepping {
             tolerance: tol,
             step: 1e-3,
-            ..Settings::default()
+            ..Stepping::default()
         };
         group.bench_function(format!("rk45 tol={tol:.0e}"), |b| {
             b.iter(|| Method::Rk45.integrate(&run(&model, y0, &s), &mut Finite))
@@ -104,7 +104,7 @@ fn methods(c: &mut Criterion) {
                     &scene,
                     &span,
                     &all,
-                    &Settings::default(),
+                    &Stepping::default(),
                     &groovelab::study::Quiet,
                 )
                 .unwrap()

@@ -8,7 +8,7 @@ use groovelab::input::data;
 use groovelab::input::data::Reading;
 use groovelab::study::measured::{self, Derive};
 use groovelab::study::preset::Preset;
-use groovelab::study::video::{self, Format, Video};
+use groovelab::study::video::{self, TrackFormat, Video};
 
 fn tracks(c: &mut Criterion) {
     let scene = Preset::load("paper-b4.9")
@@ -25,7 +25,7 @@ fn tracks(c: &mut Criterion) {
         to: -0.2 + 9999.0 / 240.0,
         ..Video::default()
     };
-    let text = video::write(&video::track(&scene, &v), Format::TrackerMulti);
+    let text = video::write(&video::track(&scene, &v), TrackFormat::TrackerMulti);
     c.bench_function("read and differentiate a 10,000-frame track", |b| {
         b.iter(|| {
             let series = data::load(

@@ -11,20 +11,20 @@ use super::deliver::deliver;
 use super::error::{BadValue, CliError, Flag};
 use super::open::lab_of_stated_scene;
 use super::states::{csv_output, samples, state_header, state_row};
-use crate::methods::{self, Method, RunEnd, Settings, Y};
+use crate::methods::{self, Method, RunEnd, Stepping, Y};
 use crate::physics::derived::Derived;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{Event, Snapshot, Solution};
 use crate::settings::units::{Dimension, show};
 use crate::study::compare::{self as cmp, Row};
 
-/// Settings of a time-stepping run from the options, checked.
+/// Stepping of a time-stepping run from the options, checked.
 pub(super) fn settings(
     dt: Option<f64>,
     tol: Option<f64>,
     epsilon: Option<f64>,
-) -> Result<Settings, CliError> {
-    let mut s = Settings::default();
+) -> Result<Stepping, CliError> {
+    let mut s = Stepping::default();
     if let Some(dt) = dt {
         if !(dt > 0.0 && dt <= 1.0) {
             return Err(BadValue::OutOfRange {
@@ -114,7 +114,7 @@ struct MethodRunJson<'a> {
     span: Span,
     derived: Derived,
     method: Method,
-    settings: Settings,
+    settings: Stepping,
     steps: usize,
     rhs_evals: usize,
     /// Why the run ended early, if it did.
@@ -131,7 +131,7 @@ struct MethodRunJson<'a> {
 pub(super) fn simulate_method(
     exact: &Solution,
     args: &SimulateArgs,
-    settings: &Settings,
+    settings: &Stepping,
 ) -> Result<String, CliError> {
     let scene = &exact.scene;
     let (t0, t1) = (exact.t_start, exact.t_end);
@@ -153,7 +153,7 @@ pub(super) fn simulate_method(
         y0: methods::state(exact.at(t0)),
         t0,
         t1,
-        settings,
+        stepping: settings,
     };
     let outcome = args.method.integrate(&run, &mut rec);
     if let (Some(why), 0) = (&outcome.stalled, outcome.steps) {
@@ -215,7 +215,7 @@ pub(super) fn simulate_method(
 /// detected events, the samples and the final state in time order.
 fn method_table(
     args: &SimulateArgs,
-    settings: &Settings,
+    settings: &Stepping,
     outcome: &RunEnd,
     stalled: Option<String>,
     rec: &Recorder,
@@ -287,7 +287,7 @@ pub(super) fn compare(
 fn compare_text(
     scene: &Scene,
     span: &Span,
-    base: &Settings,
+    base: &Stepping,
     args: &CompareArgs,
 ) -> Result<String, CliError> {
     let methods: Vec<Method> = match &args.methods {

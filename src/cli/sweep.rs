@@ -9,7 +9,7 @@ use super::args::{SceneArgs, SweepArgs, SweepFormat};
 use super::error::{BadValue, CliError, Flag, size_text};
 use super::progress::Bar;
 use crate::output::AtomicFile;
-use crate::study::sweep::{self, Axis, Point};
+use crate::study::sweep::{self, Axis, GridPoint};
 
 fn grid(text: &str, two: bool) -> Result<(usize, usize), CliError> {
     match super::args::counts(text, 10_000) {
@@ -192,7 +192,7 @@ fn emit(
     io_error: &dyn Fn(std::io::Error) -> CliError,
 ) -> Result<(), CliError> {
     let mut stream = |head: &[u8],
-                      row: &dyn Fn(&mut Vec<u8>, &Point, bool),
+                      row: &dyn Fn(&mut Vec<u8>, &GridPoint, bool),
                       tail: &[u8]|
      -> Result<(), CliError> {
         out.write_all(head).map_err(io_error)?;
@@ -246,7 +246,7 @@ fn emit(
 }
 
 /// interface.md: `x,y,regime,v_ratio,t_roll,impacts,t_accumulation`, SI, grid order.
-fn csv_row(buf: &mut Vec<u8>, p: &Point) {
+fn csv_row(buf: &mut Vec<u8>, p: &GridPoint) {
     let opt = |v: Option<f64>| v.map_or(String::new(), |v| v.to_string());
     let _ = writeln!(
         buf,

@@ -2,7 +2,7 @@
 //! the Methods view, one method's run over the exact curves (the overlay) at a level
 //! and the levels themselves, and what a fit-window move or an export gives back.
 
-use crate::methods::{self, Method, Settings, Y};
+use crate::methods::{self, Method, Stepping, Y};
 use crate::physics::scene::{Scene, Span};
 use crate::study::Progress;
 use crate::study::compare::{self, Row};
@@ -38,20 +38,20 @@ pub type ExportResult = Result<Exported, std::sync::Arc<dyn std::error::Error + 
 pub const OVERLAY_LEVELS: u8 = 7;
 
 /// The settings of `method` at `level`.
-pub fn level_settings(method: Method, level: u8) -> Settings {
+pub fn level_settings(method: Method, level: u8) -> Stepping {
     let level = f64::from(level.min(OVERLAY_LEVELS - 1));
     if method.adaptive() {
-        Settings {
+        Stepping {
             tolerance: 10f64.powf(-2.0 - level),
             step: 1e-3,
             max_steps: compare::STEP_BUDGET,
-            ..Settings::default()
+            ..Stepping::default()
         }
     } else {
-        Settings {
+        Stepping {
             step: 10f64.powf(-2.0 - level / 2.0),
             max_steps: compare::STEP_BUDGET,
-            ..Settings::default()
+            ..Stepping::default()
         }
     }
 }
@@ -63,7 +63,7 @@ pub const METHOD_VIEW_LEVELS: [u8; 4] = [0, 2, 4, 6];
 #[derive(Clone, Debug)]
 pub struct Overlay {
     pub method: Method,
-    pub settings: Settings,
+    pub settings: Stepping,
     /// Its steps, thinned to a few thousand points.
     pub points: Vec<(f64, Y)>,
     pub row: Row,
@@ -95,7 +95,7 @@ impl methods::Observer for Thinned<'_> {
 /// most 200,000 steps), timed if `timed` (for the view's time axis; nothing else on
 /// the screen depends on the times, so it stays the same for the same input).
 pub(super) fn method_rows(scene: &Scene, span: &Span, timed: bool, ticket: &Ticket) -> Vec<Row> {
-    let runs: Vec<(Method, Settings)> = Method::TIME_STEPPING
+    let runs: Vec<(Method, Stepping)> = Method::TIME_STEPPING
         .into_iter()
         .flat_map(|m| METHOD_VIEW_LEVELS.map(|l| (m, level_settings(m, l))))
         .collect();

@@ -55,7 +55,7 @@ fn step(method: Fixed, m: &Model, law: Friction, y: &Y, h: f64) -> (Y, usize) {
 
 impl Integrator for Fixed {
     fn integrate(&self, run: &Run, obs: &mut dyn Observer) -> RunEnd {
-        let (m, s) = (run.model, run.settings);
+        let (m, s) = (run.model, run.stepping);
         // RK4's friction is regularised (`Method::regularised`).
         let (law, roll_threshold) = if *self == Fixed::Rk4 {
             (Friction::Tanh(s.epsilon), s.epsilon)

@@ -21,7 +21,7 @@ pub(crate) fn run_grid(
     obs: &mut dyn Observer,
     mut step: impl FnMut(&Y, f64) -> GridStep,
 ) -> RunEnd {
-    let (y0, t0, t1, s) = (run.y0, run.t0, run.t1, run.settings);
+    let (y0, t0, t1, s) = (run.y0, run.t0, run.t1, run.stepping);
     let h = s.step;
     let n = ((t1 - t0) / h).ceil() as usize;
     let mut out = RunEnd::at_start(t0, y0);

@@ -23,7 +23,7 @@ use crate::physics::scene::{Scene, Span};
 pub(crate) use exact::solves;
 pub use exact::{exact_solution, state};
 pub use run::{Integrator, Observer, Run, RunEnd, Stall};
-pub use system::{Friction, Method, Model, Settings, Y, ball, collide, gap, resolve_overlap, rhs};
+pub use system::{Friction, Method, Model, Stepping, Y, ball, collide, gap, resolve_overlap, rhs};
 
 impl Method {
     /// The method itself: what makes its runs.

@@ -7,7 +7,7 @@
 
 use super::grid::EventTracker;
 use super::run::{Integrator, Observer, Run, RunEnd, Stall};
-use super::system::{Model, Settings, Y, collide, gap};
+use super::system::{Model, Stepping, Y, collide, gap};
 
 /// The Dormand–Prince 5(4) method with event location.
 pub(super) struct Rk45;
@@ -255,7 +255,7 @@ fn first_switch(
 
 /// Why the run cannot go on at `t` with step `h`, if it cannot: the step budget
 /// spent, impacts accumulating faster than steps, or the step size collapsed.
-fn stall(out: &RunEnd, impacts: usize, t: f64, h: f64, s: &Settings) -> Option<Stall> {
+fn stall(out: &RunEnd, impacts: usize, t: f64, h: f64, s: &Stepping) -> Option<Stall> {
     if out.steps >= s.max_steps {
         Some(Stall::StepBudget {
             budget: s.max_steps,
@@ -320,7 +320,7 @@ impl Integrator for Rk45 {
 }
 
 fn integrate(run: &Run, obs: &mut dyn Observer) -> RunEnd {
-    let (m, y0, t0, t1, s) = (run.model, run.y0, run.t0, run.t1, run.settings);
+    let (m, y0, t0, t1, s) = (run.model, run.y0, run.t0, run.t1, run.stepping);
     // The larger centre speed (at least 1 mm/s) scales the absolute tolerances.
     let scale = [y0[1], y0[4]].iter().map(|v| v.abs()).fold(1e-3, f64::max);
     let tolerances = (s.tolerance, s.tolerance * scale);

@@ -2,18 +2,18 @@
 //! the one signature that makes it ([`Integrator`]), what it reports while it runs
 //! ([`Observer`]) and how the run ended ([`RunEnd`], with a typed [`Stall`]).
 
-use super::system::{Model, Settings, Y};
+use super::system::{Model, Stepping, Y};
 use crate::physics::solution::Event;
 
 /// One run to make: `model` from the state `y0` at `t0` (the rolling run-up is
-/// integrated too) to `t1`, stepped as `settings` say.
+/// integrated too) to `t1`, stepped as `stepping` says.
 #[derive(Clone, Copy, Debug)]
 pub struct Run<'a> {
     pub model: &'a Model,
     pub y0: Y,
     pub t0: f64,
     pub t1: f64,
-    pub settings: &'a Settings,
+    pub stepping: &'a Stepping,
 }
 
 /// A solution method: each method's file holds one, and

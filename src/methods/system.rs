@@ -73,9 +73,9 @@ impl Method {
     }
 }
 
-/// Knobs of a run.
+/// How a method steps: its step, tolerance, friction regularisation and step budget.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Settings {
+pub struct Stepping {
     /// Step size h, s (fixed-step methods and moreau); first step of rk45.
     pub step: f64,
     /// Relative and absolute tolerance of rk45 (absolute scaled by the speed scale).
@@ -86,9 +86,9 @@ pub struct Settings {
     pub max_steps: usize,
 }
 
-impl Default for Settings {
+impl Default for Stepping {
     fn default() -> Self {
-        Settings {
+        Stepping {
             step: 1e-4,
             tolerance: 1e-6,
             epsilon: 1e-3,

@@ -46,7 +46,7 @@ impl Axis {
 
 /// What a grid point's scene does.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Point {
+pub struct GridPoint {
     pub x: f64,
     pub y: Option<f64>,
     pub regime: Regime,
@@ -206,7 +206,7 @@ fn spec_at(base: &SceneSpec, x: &Axis, y: Option<&Axis>, i: usize, j: usize) -> 
 }
 
 /// Solves one grid point.
-pub fn point(spec: &SceneSpec) -> Result<(crate::physics::scene::Scene, Point), SceneError> {
+pub fn point(spec: &SceneSpec) -> Result<(crate::physics::scene::Scene, GridPoint), SceneError> {
     let (scene, _) = spec.resolve()?;
     let derived = Derived::of(&scene);
     let sol = engine::solve(
@@ -219,7 +219,7 @@ pub fn point(spec: &SceneSpec) -> Result<(crate::physics::scene::Scene, Point), 
     let rec = derived.left_after_impact;
     Ok((
         scene,
-        Point {
+        GridPoint {
             x: 0.0,
             y: None,
             regime: derived.regime,
@@ -274,7 +274,7 @@ pub fn run_streamed<E: From<SweepError>>(
     y: Option<&Axis>,
     stop: &AtomicBool,
     tick: &(dyn Fn() + Sync),
-    sink: &mut dyn FnMut(&[Point]) -> Result<(), E>,
+    sink: &mut dyn FnMut(&[GridPoint]) -> Result<(), E>,
 ) -> Result<(), E> {
     check(base, x, y)?;
     let nx = x.n.max(1);
@@ -283,7 +283,7 @@ pub fn run_streamed<E: From<SweepError>>(
     let mut start = 0;
     while start < total {
         let end = (start + BATCH).min(total);
-        let batch: Vec<Option<Point>> = (start..end)
+        let batch: Vec<Option<GridPoint>> = (start..end)
             .into_par_iter()
             .map(|idx| {
                 if stop.load(Ordering::Relaxed) {
@@ -301,7 +301,7 @@ pub fn run_streamed<E: From<SweepError>>(
         if stop.load(Ordering::Relaxed) {
             return Err(SweepError::Interrupted.into());
         }
-        let points: Vec<Point> = batch
+        let points: Vec<GridPoint> = batch
             .into_iter()
             .enumerate()
             .map(|(k, p)| {
@@ -328,7 +328,7 @@ pub fn run(
     y: Option<&Axis>,
     stop: &AtomicBool,
     tick: &(dyn Fn() + Sync),
-) -> Result<Vec<Point>, SweepError> {
+) -> Result<Vec<GridPoint>, SweepError> {
     let mut all = Vec::new();
     run_streamed(base, x, y, stop, tick, &mut |batch| {
         all.extend_from_slice(batch);

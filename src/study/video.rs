@@ -117,7 +117,7 @@ pub fn track(scene: &Scene, video: &Video) -> Track {
 
 /// The file formats `input::data` reads.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Format {
+pub enum TrackFormat {
     /// Tracker's single-track export of the centre (no mark), tab-separated,
     /// scientific notation, metres.
     TrackerSingle,
@@ -131,31 +131,31 @@ pub enum Format {
     Tsv,
 }
 
-impl Format {
-    pub const ALL: [Format; 5] = [
-        Format::TrackerSingle,
-        Format::TrackerMulti,
-        Format::CsvComma,
-        Format::CsvSemicolon,
-        Format::Tsv,
+impl TrackFormat {
+    pub const ALL: [TrackFormat; 5] = [
+        TrackFormat::TrackerSingle,
+        TrackFormat::TrackerMulti,
+        TrackFormat::CsvComma,
+        TrackFormat::CsvSemicolon,
+        TrackFormat::Tsv,
     ];
 
     pub fn name(self) -> &'static str {
         match self {
-            Format::TrackerSingle => "Tracker single-track",
-            Format::TrackerMulti => "Tracker multi-track",
-            Format::CsvComma => "CSV (comma)",
-            Format::CsvSemicolon => "CSV (semicolon, decimal comma)",
-            Format::Tsv => "TSV",
+            TrackFormat::TrackerSingle => "Tracker single-track",
+            TrackFormat::TrackerMulti => "Tracker multi-track",
+            TrackFormat::CsvComma => "CSV (comma)",
+            TrackFormat::CsvSemicolon => "CSV (semicolon, decimal comma)",
+            TrackFormat::Tsv => "TSV",
         }
     }
 }
 
 /// `track` as the text of a file in `format`; NaN becomes an empty cell.
-pub fn write(track: &Track, format: Format) -> String {
+pub fn write(track: &Track, format: TrackFormat) -> String {
     let (head, sep, t_unit, l_unit): (String, &str, f64, f64) = match format {
-        Format::TrackerSingle => (format!("{}\nt\tx\ty", track.centre_name), "\t", 1.0, 1.0),
-        Format::TrackerMulti => (
+        TrackFormat::TrackerSingle => (format!("{}\nt\tx\ty", track.centre_name), "\t", 1.0, 1.0),
+        TrackFormat::TrackerMulti => (
             format!(
                 "#multi:\n\t{}\t\t{}\t\nt\tx\ty\tx\ty",
                 track.centre_name,
@@ -165,26 +165,26 @@ pub fn write(track: &Track, format: Format) -> String {
             1.0,
             1.0,
         ),
-        Format::CsvComma => (
+        TrackFormat::CsvComma => (
             "t (s),x (mm),y (mm),x_mark (mm),y_mark (mm)".into(),
             ",",
             1.0,
             1e-3,
         ),
-        Format::CsvSemicolon => (
+        TrackFormat::CsvSemicolon => (
             "t/ms;x (cm);y (cm);mark x (cm);mark y (cm)".into(),
             ";",
             1e-3,
             1e-2,
         ),
-        Format::Tsv => ("t_s\tx_m\ty_m\tx rim\ty rim".into(), "\t", 1.0, 1.0),
+        TrackFormat::Tsv => ("t_s\tx_m\ty_m\tx rim\ty rim".into(), "\t", 1.0, 1.0),
     };
-    let with_mark = format != Format::TrackerSingle && track.mark.is_some();
+    let with_mark = format != TrackFormat::TrackerSingle && track.mark.is_some();
     let mut head = head;
-    if !with_mark && format != Format::TrackerSingle {
+    if !with_mark && format != TrackFormat::TrackerSingle {
         // Drop the mark's columns (and, for Tracker, its name).
         head = match format {
-            Format::TrackerMulti => format!("#multi:\n\t{}\t\nt\tx\ty", track.centre_name),
+            TrackFormat::TrackerMulti => format!("#multi:\n\t{}\t\nt\tx\ty", track.centre_name),
             _ => head.split(sep).take(3).collect::<Vec<_>>().join(sep),
         };
     }
@@ -194,8 +194,8 @@ pub fn write(track: &Track, format: Format) -> String {
         }
         let v = v / unit;
         match format {
-            Format::TrackerSingle | Format::TrackerMulti => format!("{v:.9E}"),
-            Format::CsvSemicolon => format!("{v:.5}").replace('.', ","),
+            TrackFormat::TrackerSingle | TrackFormat::TrackerMulti => format!("{v:.9E}"),
+            TrackFormat::CsvSemicolon => format!("{v:.5}").replace('.', ","),
             _ => format!("{v:.7}"),
         }
     };

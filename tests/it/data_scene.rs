@@ -205,7 +205,7 @@ fn a_files_stated_groove_is_kept_and_compared() {
 #[test]
 fn an_r_edited_below_the_rim_marks_distance_is_refused() {
     use groovelab::study::preset::Preset;
-    use groovelab::study::video::{self, Format, Video};
+    use groovelab::study::video::{self, TrackFormat, Video};
     let truth = Preset::load("paper-b4.9")
         .unwrap()
         .spec
@@ -228,7 +228,7 @@ fn an_r_edited_below_the_rim_marks_distance_is_refused() {
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("marked-track.txt");
     let track = video::track(&truth, &shot);
-    std::fs::write(&path, video::write(&track, Format::TrackerMulti)).unwrap();
+    std::fs::write(&path, video::write(&track, TrackFormat::TrackerMulti)).unwrap();
     let file = path.display().to_string();
     let mut a = rendered(
         &scene_of("paper-b4.9", SceneSpec::default()),

@@ -8,7 +8,7 @@ use std::process::{Command, Stdio};
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::time::Duration;
 
-use groovelab::methods::{Method, Settings};
+use groovelab::methods::{Method, Stepping};
 use groovelab::physics::scene::{Scene, Span};
 use groovelab::study::measured::Measured;
 use groovelab::study::preset::Preset;
@@ -55,9 +55,9 @@ fn compare_skips_levels_over_its_budget_and_says_why() {
     let (scene, span, _) = paper();
     // A small budget (the settings' own step budget lowers compare's) on the paper's
     // 1.2 s span: h = 1e-4 s and finer need over 10 000 steps and are skipped unrun.
-    let base = Settings {
+    let base = Stepping {
         max_steps: 10_000,
-        ..Settings::default()
+        ..Stepping::default()
     };
     let rows = compare::sweep(
         &scene,
@@ -97,15 +97,15 @@ fn compared_steps(
     steps: &[f64],
 ) -> (compare::Reference, Vec<compare::Row>) {
     let reference = compare::Reference::new(scene, span);
-    let runs: Vec<(Method, Settings)> = Method::TIME_STEPPING
+    let runs: Vec<(Method, Stepping)> = Method::TIME_STEPPING
         .into_iter()
         .flat_map(|m| steps.iter().map(move |&h| (m, h)))
         .map(|(method, h)| {
-            let settings = Settings {
+            let settings = Stepping {
                 step: if method.adaptive() { 1e-3 } else { h },
                 tolerance: h,
                 max_steps: compare::STEP_BUDGET,
-                ..Settings::default()
+                ..Stepping::default()
             };
             (method, settings)
         })
@@ -199,7 +199,7 @@ fn compare_stops_when_asked_and_matches_when_not() {
     let (scene, span, _) = paper();
     let methods = [Method::Exact, Method::Rk45, Method::Moreau];
     let stop = stop_after(3);
-    let cancelled = compare::sweep(&scene, &span, &methods, &Settings::default(), &stop);
+    let cancelled = compare::sweep(&scene, &span, &methods, &Stepping::default(), &stop);
     assert_eq!(cancelled, Err(Cancelled));
     // The first tick is 0 of N, then one per finished run; the stop is seen within
     // each run still going (the accuracy runs share the cores): at its first look
@@ -214,9 +214,9 @@ fn compare_stops_when_asked_and_matches_when_not() {
 
     // Untimed rows are deterministic: the same with and without a watching Progress.
     let reference = compare::Reference::new(&scene, &span);
-    let settings = Settings {
+    let settings = Stepping {
         step: 1e-4,
-        ..Settings::default()
+        ..Stepping::default()
     };
     let watched = compare::measure(
         Method::Moreau,
@@ -239,9 +239,9 @@ fn a_cancelled_measure_stops_inside_the_run() {
     // 1.2 million Euler steps; cancelled from the start, it returns after the first
     // check (4096 steps), long before the run would end: one look inside the run and
     // one after it, where the whole run would look about 290 times.
-    let settings = Settings {
+    let settings = Stepping {
         step: 1e-6,
-        ..Settings::default()
+        ..Stepping::default()
     };
     let stop = stop_after(0);
     let r = compare::measure(Method::Euler, &scene, &settings, &reference, true, &stop);

@@ -1,7 +1,7 @@
 //! Where each time-stepping method works and where it fails, with bounds that follow
 //! from the discretisations themselves.
 
-use groovelab::methods::{Method, Model, Settings};
+use groovelab::methods::{Method, Model, Stepping};
 use groovelab::physics::derived::Outcome;
 use groovelab::physics::engine::solve;
 use groovelab::physics::scene::{Scene, Span};
@@ -12,14 +12,14 @@ fn preset(name: &str) -> (Scene, Span) {
     Preset::load(name).unwrap().spec.resolve().unwrap()
 }
 
-fn row(method: Method, scene: &Scene, span: &Span, settings: Settings) -> Row {
+fn row(method: Method, scene: &Scene, span: &Span, settings: Stepping) -> Row {
     run(method, scene, &settings, &Reference::new(scene, span))
 }
 
-fn step(h: f64) -> Settings {
-    Settings {
+fn step(h: f64) -> Stepping {
+    Stepping {
         step: h,
-        ..Settings::default()
+        ..Stepping::default()
     }
 }
 
@@ -52,10 +52,10 @@ fn rk4_with_tanh_friction_is_stable_only_below_2_785_eps_over_a() {
         let a = Model::of(&scene).slip_rate();
         for eps in [1e-3, 3e-3] {
             let limit = 2.785 * eps / a;
-            let settings = |h: f64| Settings {
+            let settings = |h: f64| Stepping {
                 step: h,
                 epsilon: eps,
-                ..Settings::default()
+                ..Stepping::default()
             };
             let below = row(Method::Rk4, &scene, &span, settings(0.8 * limit));
             let above = row(Method::Rk4, &scene, &span, settings(1.25 * limit));
@@ -112,10 +112,10 @@ fn rk45_finds_event_times_to_its_tolerance() {
             Method::Rk45,
             &scene,
             &span,
-            Settings {
+            Stepping {
                 tolerance: tol,
                 step: 1e-3,
-                ..Settings::default()
+                ..Stepping::default()
             },
         );
         assert_eq!(r.status, RunStatus::Ok, "{r:?}");
@@ -132,10 +132,10 @@ fn rk45_stalls_or_reaches_the_accumulation_point_within_its_budget() {
     let reference = Reference::new(&scene, &span);
     let t_inf = exact.accumulation.unwrap();
     for tol in [1e-3, 1e-6, 1e-9] {
-        let settings = Settings {
+        let settings = Stepping {
             tolerance: tol,
             step: 1e-3,
-            ..Settings::default()
+            ..Stepping::default()
         };
         let r = run(Method::Rk45, &scene, &settings, &reference);
         assert!(
@@ -203,10 +203,10 @@ fn near_wedging_every_time_stepper_needs_tiny_steps() {
         Method::Rk45,
         &scene,
         &span,
-        Settings {
+        Stepping {
             tolerance: 1e-6,
             step: 1e-3,
-            ..Settings::default()
+            ..Stepping::default()
         },
     );
     assert_eq!(rk45.status, RunStatus::Ok, "{rk45:?}");
@@ -236,7 +236,7 @@ fn without_friction_every_method_is_right() {
             "{method:?}: {r:?}"
         );
     }
-    let r = row(Method::Rk45, &scene, &span, Settings::default());
+    let r = row(Method::Rk45, &scene, &span, Stepping::default());
     assert_eq!(r.status, RunStatus::Ok);
     assert!(r.err_final <= 1e-12, "{r:?}");
 }
@@ -252,11 +252,11 @@ fn no_run_hangs_or_leaks_nan_into_the_numbers() {
         let (scene, span) = preset(name);
         let reference = Reference::new(&scene, &span);
         for method in Method::TIME_STEPPING {
-            let settings = Settings {
+            let settings = Stepping {
                 step: 1e-3,
                 tolerance: 1e-6,
                 max_steps: 100_000,
-                ..Settings::default()
+                ..Stepping::default()
             };
             let r = run(method, &scene, &settings, &reference);
             for x in [r.err_v, r.err_u, r.energy_drift, r.time_median_s] {
@@ -294,7 +294,7 @@ fn the_exact_method_behind_the_common_signature_is_the_engine() {
         y0,
         t0: sol.t_start,
         t1: sol.t_end,
-        settings: &Settings::default(),
+        stepping: &Stepping::default(),
     };
     let out = Method::Exact.integrate(&run, &mut log);
     assert_eq!(out.stalled, None);
@@ -346,7 +346,7 @@ fn each_run_says_whether_it_gets_the_outcome_right() {
     let (mut scene, span) = preset("paper-b4.9");
     scene.restitution = 0.0;
     let reference = Reference::new(&scene, &span);
-    let e = run(Method::Exact, &scene, &Settings::default(), &reference);
+    let e = run(Method::Exact, &scene, &Stepping::default(), &reference);
     assert_eq!(
         (e.outcome, e.impacts, e.outcome_right),
         (Outcome::Pressed, 1, true)

@@ -609,7 +609,7 @@ fn a_streamed_sweep_equals_the_whole_map() {
     struct Whole<'a> {
         x: &'a sweep::Axis,
         y: Option<&'a sweep::Axis>,
-        points: &'a [sweep::Point],
+        points: &'a [sweep::GridPoint],
     }
     let whole = Whole {
         x: &x,

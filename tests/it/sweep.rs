@@ -9,7 +9,7 @@ use groovelab::physics::derived::Regime;
 use groovelab::settings::params::Key;
 use groovelab::settings::spec::SceneSpec;
 use groovelab::study::preset::Preset;
-use groovelab::study::sweep::{self, Point, SweepError};
+use groovelab::study::sweep::{self, GridPoint, SweepError};
 
 use crate::common::groovelab;
 
@@ -17,7 +17,7 @@ fn base(preset: &str) -> SceneSpec {
     Preset::load(preset).unwrap().spec
 }
 
-fn map(spec: &SceneSpec, x: &str, y: Option<&str>, nx: usize, ny: usize) -> Vec<Point> {
+fn map(spec: &SceneSpec, x: &str, y: Option<&str>, nx: usize, ny: usize) -> Vec<GridPoint> {
     let x = sweep::parse_axis(x, nx).unwrap();
     let y = y.map(|y| sweep::parse_axis(y, ny).unwrap());
     sweep::run(spec, &x, y.as_ref(), &AtomicBool::new(false), &|| {}).unwrap()

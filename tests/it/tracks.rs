@@ -8,7 +8,7 @@ use groovelab::study::fit::{self, Free};
 use groovelab::study::measured::track::{self, TrackFits};
 use groovelab::study::measured::{self, Derive, Found, Measured, RawSeries};
 use groovelab::study::preset::Preset;
-use groovelab::study::video::{self, Format, Video};
+use groovelab::study::video::{self, TrackFormat, Video};
 
 use crate::common::groovelab;
 
@@ -42,7 +42,7 @@ fn fits_of(scene: &Scene, text: &str) -> (Loaded, TrackFits) {
     (l, f)
 }
 
-fn fits(scene: &Scene, video: &Video, format: Format) -> (Loaded, TrackFits) {
+fn fits(scene: &Scene, video: &Video, format: TrackFormat) -> (Loaded, TrackFits) {
     fits_of(scene, &video::write(&video::track(scene, video), format))
 }
 
@@ -65,7 +65,7 @@ fn mu_is_recovered_at_every_frame_rate_and_noise() {
                     seed,
                     ..Video::default()
                 };
-                let (_, f) = fits(&s, &v, Format::TrackerMulti);
+                let (_, f) = fits(&s, &v, TrackFormat::TrackerMulti);
                 dp = dp.max((f.position.mu - MU).abs());
                 dv = dv.max((f.velocity.mu - MU).abs());
                 se = se.max(2.0 * f.position.mu_se);
@@ -100,7 +100,7 @@ fn the_position_fit_uncertainty_covers_the_truth() {
                 seed,
                 ..Video::default()
             };
-            let (_, f) = fits(&s, &v, Format::CsvComma);
+            let (_, f) = fits(&s, &v, TrackFormat::CsvComma);
             (f.position.mu - MU).abs() <= 2.0 * f.position.mu_se
         })
         .count();
@@ -113,7 +113,7 @@ fn the_position_fit_uncertainty_covers_the_truth() {
 fn every_format_reads_and_fits() {
     for preset in ["paper-b3.5", "paper-b4.9"] {
         let s = scene(preset);
-        for format in Format::ALL {
+        for format in TrackFormat::ALL {
             let v = Video::default();
             let (l, f) = fits(&s, &v, format);
             let found = l.found.unwrap();
@@ -130,7 +130,7 @@ fn every_format_reads_and_fits() {
             );
             // The impact at the file's t = 0.2 s, within a millisecond.
             assert!((found.impact_t - 0.2).abs() < 1e-3, "{}", found.impact_t);
-            let single = format == Format::TrackerSingle;
+            let single = format == TrackFormat::TrackerSingle;
             assert_eq!(found.mark.is_none(), single, "{}", format.name());
             assert_eq!(f.uses_spin, !single);
             assert_eq!(f.velocity.regime_predicted, f.velocity.regime_observed);
@@ -150,7 +150,7 @@ fn either_direction_any_origin_flipped_axes_and_clip_start() {
             t_impact: 3.7,
             ..Video::default()
         };
-        let (l, f) = fits(&s, &v, Format::TrackerMulti);
+        let (l, f) = fits(&s, &v, TrackFormat::TrackerMulti);
         let found = l.found.unwrap();
         assert_eq!(found.direction, if flip_x { -1.0 } else { 1.0 });
         // A track along −x is read mirrored, and says so (the series carries it).
@@ -186,7 +186,7 @@ fn gaps_in_the_track_are_bridged() {
         mx[i] = f64::NAN;
     }
     t.mark = Some((mx, my));
-    let text = video::write(&t, Format::TrackerMulti);
+    let text = video::write(&t, TrackFormat::TrackerMulti);
     assert!(text.contains("\t\t"), "the file has empty cells");
     let (l, f) = fits_of(&s, &text);
     assert!((f.position.mu - MU).abs() <= 0.003, "μ {}", f.position.mu);
@@ -214,7 +214,7 @@ fn missing_marks_and_centres_are_counted_with_their_times() {
     t.x[40] = f64::NAN;
     t.x[41] = f64::NAN;
     let (from, to) = (t.t[60], t.t[68]);
-    let l = try_load(&s, &video::write(&t, Format::TrackerMulti)).unwrap();
+    let l = try_load(&s, &video::write(&t, TrackFormat::TrackerMulti)).unwrap();
     let found = l.found.unwrap();
     assert_eq!(found.frames_dropped, 2);
     assert_eq!(found.centre_gaps.len(), 1);
@@ -253,7 +253,7 @@ fn without_a_mark_the_fits_use_the_centre_only() {
         mark: false,
         ..Video::default()
     };
-    let text = video::write(&video::track(&s, &v), Format::CsvSemicolon);
+    let text = video::write(&video::track(&s, &v), TrackFormat::CsvSemicolon);
     let (l, f) = fits_of(&s, &text);
     assert!(!f.uses_spin);
     assert!(l.measured.v_t.iter().all(|v| v.is_nan()));
@@ -286,7 +286,7 @@ fn missing_pieces_give_one_line_errors() {
         };
         try_load(
             &s,
-            &video::write(&video::track(&s, &v), Format::TrackerMulti),
+            &video::write(&video::track(&s, &v), TrackFormat::TrackerMulti),
         )
         .map(|_| ())
         .unwrap_err()
@@ -327,7 +327,10 @@ fn velocity_files_read_as_before() {
 /// --test it tracks::example_file`.
 fn example_text() -> String {
     let s = scene("paper-b4.9");
-    video::write(&video::track(&s, &example_video()), Format::TrackerMulti)
+    video::write(
+        &video::track(&s, &example_video()),
+        TrackFormat::TrackerMulti,
+    )
 }
 
 fn example_video() -> Video {
@@ -417,7 +420,7 @@ fn cli_error_for_a_track_without_an_impact_is_one_line() {
         to: 0.02,
         ..Video::default()
     };
-    std::fs::write(&file, video::write(&video::track(&s, &v), Format::Tsv)).unwrap();
+    std::fs::write(&file, video::write(&video::track(&s, &v), TrackFormat::Tsv)).unwrap();
     let out = groovelab(&[
         "fit",
         "--preset",
@@ -462,7 +465,11 @@ fn the_velocity_fit_uncertainty_covers_the_truth() {
                 seed: 100 + k as u64,
                 ..Video::default()
             };
-            let l = try_load(&s, &video::write(&video::track(&s, &v), Format::CsvComma)).unwrap();
+            let l = try_load(
+                &s,
+                &video::write(&video::track(&s, &v), TrackFormat::CsvComma),
+            )
+            .unwrap();
             let start = Scene { mu: 0.3, ..s };
             let f =
                 fit::model_fit(&start, &l.measured, &[Free::Mu], &groovelab::study::Quiet).unwrap();
@@ -503,7 +510,11 @@ fn the_line_fits_of_a_marked_track_stop_at_rolling_and_the_regime_holds() {
             seed: 300 + seed,
             ..Video::default()
         };
-        let l = try_load(&s, &video::write(&video::track(&s, &v), Format::CsvComma)).unwrap();
+        let l = try_load(
+            &s,
+            &video::write(&video::track(&s, &v), TrackFormat::CsvComma),
+        )
+        .unwrap();
         let f = fit::fit_all(
             &s,
             &l.measured,
@@ -534,7 +545,7 @@ fn rounded_times_give_the_true_frame_rate() {
     for x in &mut t.t {
         *x = (*x * 1e4).round() / 1e4;
     }
-    let l = try_load(&s, &video::write(&t, Format::CsvComma)).unwrap();
+    let l = try_load(&s, &video::write(&t, TrackFormat::CsvComma)).unwrap();
     let rate = l.found.unwrap().frame_rate;
     assert!((rate - 120.0).abs() < 0.05, "{rate}");
 }
@@ -683,7 +694,7 @@ fn a_tracks_positions_are_aligned_as_the_position_fit_aligns_them() {
         };
         let l = try_load(
             &s,
-            &video::write(&video::track(&s, &v), Format::TrackerMulti),
+            &video::write(&video::track(&s, &v), TrackFormat::TrackerMulti),
         )
         .unwrap();
         let m = &l.measured;

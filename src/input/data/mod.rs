@@ -82,7 +82,7 @@ fn prepare(
     };
     measured::prepare(raw, &opts).map_err(|e| DataError {
         file: file.to_string(),
-        what: e.0,
+        what: e.to_string(),
     })
 }
 

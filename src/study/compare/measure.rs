@@ -1,7 +1,7 @@
 //! One run of a method measured against the reference: its first pass finds the
 //! impacts, the second measures the errors; then the row.
 
-use crate::methods::{Method, Model, Observer, RunEnd, Settings};
+use crate::methods::{Method, Model, Observer, RunEnd, Stepping};
 use crate::physics::scene::Scene;
 use crate::study::{Cancelled, Progress, Quiet};
 
@@ -12,7 +12,7 @@ use super::row::{ACCURATE, Note, Row, exact_row};
 use super::timing::timing;
 
 /// One run of `method` on `scene`, measured against `reference` and timed.
-pub fn run(method: Method, scene: &Scene, settings: &Settings, reference: &Reference) -> Row {
+pub fn run(method: Method, scene: &Scene, settings: &Stepping, reference: &Reference) -> Row {
     measure(method, scene, settings, reference, true, &Quiet).expect("Quiet never cancels")
 }
 
@@ -21,7 +21,7 @@ pub fn run(method: Method, scene: &Scene, settings: &Settings, reference: &Refer
 pub fn measure(
     method: Method,
     scene: &Scene,
-    settings: &Settings,
+    settings: &Stepping,
     reference: &Reference,
     timed: bool,
     progress: &dyn Progress,
@@ -40,7 +40,7 @@ pub fn measure(
 pub fn measure_observed(
     method: Method,
     scene: &Scene,
-    settings: &Settings,
+    settings: &Stepping,
     reference: &Reference,
     progress: &dyn Progress,
     also: &mut dyn Observer,

@@ -1,7 +1,7 @@
 //! What one run measures against the exact solution, step by step (its errors, energy
 //! drift, slip while rolling, outcome), and the run's verdict from it.
 
-use crate::methods::{Method, Model, Observer, RunEnd, Settings, Y, gap};
+use crate::methods::{Method, Model, Observer, RunEnd, Stepping, Y, gap};
 use crate::physics::derived::Outcome;
 use crate::physics::model::Phase;
 use crate::physics::solution::{Event, EventKind, Segment, Solution, Who};
@@ -233,7 +233,7 @@ pub(super) fn run_status(
     metrics: &Metrics,
     run_end: &RunEnd,
     method: Method,
-    settings: &Settings,
+    settings: &Stepping,
     accurate: bool,
 ) -> RunStatus {
     if metrics.nonfinite || metrics.gain > 1e-6 {

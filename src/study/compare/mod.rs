@@ -24,7 +24,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 
 use rayon::prelude::*;
 
-use crate::methods::{Method, Settings};
+use crate::methods::{Method, Stepping};
 use crate::physics::scene::{Scene, Span};
 use crate::study::{Cancelled, Progress};
 
@@ -49,24 +49,24 @@ pub fn sweep(
     scene: &Scene,
     span: &Span,
     methods: &[Method],
-    base: &Settings,
+    base: &Stepping,
     progress: &dyn Progress,
 ) -> Result<Vec<Row>, Cancelled> {
     let reference = Reference::new(scene, span);
     let budget = STEP_BUDGET.min(base.max_steps);
-    let runs: Vec<(Method, Settings)> = methods
+    let runs: Vec<(Method, Stepping)> = methods
         .iter()
         .flat_map(|&m| default_sweep(m).into_iter().map(move |v| (m, v)))
         .map(|(method, value)| {
             let settings = if method.adaptive() {
-                Settings {
+                Stepping {
                     tolerance: value,
                     step: 1e-3,
                     max_steps: budget,
                     ..*base
                 }
             } else {
-                Settings {
+                Stepping {
                     step: value,
                     max_steps: budget,
                     ..*base
@@ -94,7 +94,7 @@ pub fn sweep(
 pub fn measure_all(
     scene: &Scene,
     reference: &Reference,
-    runs: &[(Method, Settings)],
+    runs: &[(Method, Stepping)],
     timed: bool,
     progress: &dyn Progress,
 ) -> Result<Vec<Row>, Cancelled> {

@@ -2,7 +2,7 @@
 //! stretch compared, solved once, with the outcome and impacts a run should find and
 //! the state every run starts from.
 
-use crate::methods::{self, Model, Run, Settings, Y};
+use crate::methods::{self, Model, Run, Stepping, Y};
 use crate::physics::derived::{Outcome, Summary};
 use crate::physics::engine::NEGLIGIBLE_SPEED;
 use crate::physics::model::Phase;
@@ -48,13 +48,13 @@ impl Reference {
 
     /// A run of `model` over the stretch compared, from [`Reference::start`], stepped
     /// as `settings` say.
-    pub fn run<'a>(&self, model: &'a Model, settings: &'a Settings) -> Run<'a> {
+    pub fn run<'a>(&self, model: &'a Model, settings: &'a Stepping) -> Run<'a> {
         Run {
             model,
             y0: self.start(),
             t0: self.exact.t_start,
             t1: self.exact.t_end,
-            settings,
+            stepping: settings,
         }
     }
 

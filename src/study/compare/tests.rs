@@ -32,19 +32,19 @@ fn every_method_and_level_starts_from_the_one_reference_solution() {
     assert_eq!(reference.cut, None);
     // One solve: the span is within the window, so the reference is not solved again.
     assert_eq!(solves::of(&scene), 1);
-    let runs: Vec<(Method, Settings)> = std::iter::once(Method::Exact)
+    let runs: Vec<(Method, Stepping)> = std::iter::once(Method::Exact)
         .chain(Method::TIME_STEPPING)
         .flat_map(|m| {
             [1e-3, 3e-4].map(|v| {
                 let settings = if m.adaptive() {
-                    Settings {
+                    Stepping {
                         tolerance: v,
-                        ..Settings::default()
+                        ..Stepping::default()
                     }
                 } else {
-                    Settings {
+                    Stepping {
                         step: v,
-                        ..Settings::default()
+                        ..Stepping::default()
                     }
                 };
                 (m, settings)

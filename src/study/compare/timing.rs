@@ -2,7 +2,7 @@
 
 use std::time::Instant;
 
-use crate::methods::{self, Method, Model, Settings};
+use crate::methods::{self, Method, Model, Stepping};
 use crate::physics::scene::{Scene, Span};
 use crate::study::{Cancelled, Progress};
 
@@ -40,7 +40,7 @@ pub fn time<T>(mut f: impl FnMut() -> T) -> (f64, f64) {
 pub fn timing(
     method: Method,
     scene: &Scene,
-    settings: &Settings,
+    settings: &Stepping,
     reference: &Reference,
     row: &Row,
     progress: &dyn Progress,

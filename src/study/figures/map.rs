@@ -11,7 +11,7 @@ use crate::physics::closed_form;
 use crate::physics::derived::Regime;
 use crate::physics::scene::Scene;
 use crate::settings::params::Key;
-use crate::study::sweep::{Axis, Point};
+use crate::study::sweep::{Axis, GridPoint};
 
 fn regime_colour(r: Regime) -> RGBColor {
     match r {
@@ -25,7 +25,7 @@ fn regime_colour(r: Regime) -> RGBColor {
 /// b*(e) drawn over it when one axis is the width (a curve against e, else a line),
 /// and that axis labelled in b/R too (opposite its labels in m) when R is the scene's.
 pub fn regime_map(
-    points: &[Point],
+    points: &[GridPoint],
     x: &Axis,
     y: Option<&Axis>,
     scene: &Scene,
@@ -187,7 +187,7 @@ fn padded_range(a: &Axis) -> (f64, f64, f64) {
 /// A two-axis sweep: one filled cell of the regime's colour per grid point.
 fn draw_cells(
     chart: &mut Chart,
-    points: &[Point],
+    points: &[GridPoint],
     (dx, dy): (f64, f64),
 ) -> Result<(), FigureError> {
     chart.draw_series(points.iter().filter(|p| p.x.is_finite()).map(|p| {
@@ -207,7 +207,7 @@ fn draw_cells(
 /// each point in its regime's colour, and the line v' = 0.
 fn draw_speed_ratios(
     chart: &mut Chart,
-    points: &[Point],
+    points: &[GridPoint],
     (x0, x1): (f64, f64),
 ) -> Result<(), FigureError> {
     chart.draw_series(points.iter().filter(|p| p.x.is_finite()).map(|p| {
@@ -270,8 +270,8 @@ mod tests {
             .collect()
     }
 
-    fn point(x: f64, y: Option<f64>) -> Point {
-        Point {
+    fn point(x: f64, y: Option<f64>) -> GridPoint {
+        GridPoint {
             x,
             y,
             regime: Regime::Depart,
@@ -289,7 +289,7 @@ mod tests {
         let (scene, _) = paper();
         let width = parse_axis("width=0..5.5cm", 3).unwrap();
         let e = parse_axis("restitution=0.3..1", 2).unwrap();
-        let grid: Vec<Point> = [0.3, 1.0]
+        let grid: Vec<GridPoint> = [0.3, 1.0]
             .iter()
             .flat_map(|&y| (0..3).map(move |i| point(width.value(i), Some(y))))
             .collect();

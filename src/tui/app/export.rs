@@ -257,12 +257,12 @@ impl App {
 fn regime_grid(
     scene: &crate::physics::scene::Scene,
 ) -> (
-    Vec<crate::study::sweep::Point>,
+    Vec<crate::study::sweep::GridPoint>,
     crate::study::sweep::Axis,
     crate::study::sweep::Axis,
 ) {
     use crate::settings::params::Key;
-    use crate::study::sweep::{Axis, Point};
+    use crate::study::sweep::{Axis, GridPoint};
     let x = Axis {
         key: Key::Width,
         lo: 0.0,
@@ -283,7 +283,7 @@ fn regime_grid(
                 restitution: y.value(j),
                 ..*scene
             };
-            Point {
+            GridPoint {
                 x: cell.width,
                 y: Some(cell.restitution),
                 regime: crate::physics::derived::Derived::of(&cell).regime,

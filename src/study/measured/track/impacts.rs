@@ -3,11 +3,59 @@
 //! quadratics meet; and why a track cannot be used (`TrackError`, for the whole derivation).
 
 use super::derivative::{Quadratic, quadratic};
+use crate::settings::units::{Dimension, show_small};
 
-/// Why a track cannot be used.
+/// Why a track cannot be used (times in s, speeds in m/s, lengths in m).
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
-#[error("{0}")]
-pub struct TrackError(pub String);
+pub enum TrackError {
+    #[error(
+        "the given impact at t = {at} s has fewer than 3 frames on one side, at least 3 needed on each"
+    )]
+    GivenImpactAtAnEnd { at: f64 },
+    #[error(
+        "no impact found: the centre's velocity never changes sharply (largest change {biggest:.3} m/s, noise {noise:.3} m/s); give its time with --impact-at"
+    )]
+    NoSharpChange { biggest: f64, noise: f64 },
+    #[error(
+        "the track starts too late: its sharpest change of velocity is at its start (t = {at:.4} s); it needs frames from before the first impact"
+    )]
+    ChangeAtTheStart { at: f64 },
+    #[error(
+        "no impact found: at t = {at:.4} s the centre's velocity goes from {before:.3} to {after:.3} m/s, an impact slows the ball by at least a third"
+    )]
+    NoSlowDown { at: f64, before: f64, after: f64 },
+    #[error(
+        "the track starts too late: before the sharpest slow-down (t = {at:.4} s) the ball does not approach steadily (mean {mean:.3} m/s against {before:.3} m/s); it needs frames from before the first impact"
+    )]
+    NoSteadyApproach { at: f64, mean: f64, before: f64 },
+    #[error(
+        "the rim mark lies {:.2} from the centre, within {scatters}× the position scatter ({:.2}): its angle would be noise; track a mark near the rim (the same file given for centre and mark?)",
+        show_small(*radius, Dimension::Length),
+        show_small(*scatter, Dimension::Length)
+    )]
+    MarkAtTheCentre {
+        radius: f64,
+        scatter: f64,
+        scatters: f64,
+    },
+    #[error(
+        "only {count} frames {side} the impact at t = {at:.4} s, at least {min} needed to fit the motion {side} it"
+    )]
+    FewFramesBeside {
+        count: usize,
+        side: &'static str,
+        at: f64,
+        min: usize,
+    },
+    #[error(
+        "{frames} frames with a centre position, at least {need} needed ({min} before and after the impact)"
+    )]
+    FewFrames {
+        frames: usize,
+        need: usize,
+        min: usize,
+    },
+}
 
 /// Least-squares slope of a straight line through `ys` over `ts`.
 fn line_slope(ts: &[f64], ys: &[f64]) -> f64 {
@@ -120,9 +168,7 @@ fn first_impact(
     if let Some(at) = given {
         let i = nearest_frame(ts, at);
         if j[i].1.is_nan() {
-            return Err(TrackError(format!(
-                "the given impact at t = {at} s has fewer than 3 frames on one side, at least 3 needed on each"
-            )));
+            return Err(TrackError::GivenImpactAtAnEnd { at });
         }
         return Ok(i);
     }
@@ -131,9 +177,7 @@ fn first_impact(
         .map(size)
         .fold(0.0, f64::max);
     if biggest.partial_cmp(&(8.0 * se)) != Some(std::cmp::Ordering::Greater) {
-        return Err(TrackError(format!(
-            "no impact found: the centre's velocity never changes sharply (largest change {biggest:.3} m/s, noise {se:.3} m/s); give its time with --impact-at"
-        )));
+        return Err(TrackError::NoSharpChange { biggest, noise: se });
     }
     Ok((0..j.len())
         .find(|&i| size(i) >= 0.5 * biggest && is_peak(j, k, i))
@@ -154,25 +198,22 @@ fn check_first(
     let dir = before.signum();
     if before == 0.0 || jump * dir >= 0.0 || jump.abs() < before.abs() / 3.0 {
         if first < k {
-            return Err(TrackError(format!(
-                "the track starts too late: its sharpest change of velocity is at its start (t = {:.4} s); it needs frames from before the first impact",
-                ts[first]
-            )));
+            return Err(TrackError::ChangeAtTheStart { at: ts[first] });
         }
-        return Err(TrackError(format!(
-            "no impact found: at t = {:.4} s the centre's velocity goes from {before:.3} to {:.3} m/s, an impact slows the ball by at least a third",
-            ts[first],
-            before + jump
-        )));
+        return Err(TrackError::NoSlowDown {
+            at: ts[first],
+            before,
+            after: before + jump,
+        });
     }
     if given.is_none() && first > 0 {
         let mean = (xs[first] - xs[0]) / (ts[first] - ts[0]) * dir;
         if mean < 0.5 * before.abs() {
-            return Err(TrackError(format!(
-                "the track starts too late: before the sharpest slow-down (t = {:.4} s) the ball does not approach steadily (mean {mean:.3} m/s against {:.3} m/s); it needs frames from before the first impact",
-                ts[first],
-                before.abs()
-            )));
+            return Err(TrackError::NoSteadyApproach {
+                at: ts[first],
+                mean,
+                before: before.abs(),
+            });
         }
     }
     Ok(())

@@ -20,7 +20,7 @@ use serde::Serialize;
 
 use super::series::{Measured, Stencil, Stencils, Track};
 use crate::physics::scene::Scene;
-use crate::settings::units::{Dimension, show_small};
+
 use crate::study::fit::{self, FitError, Free, ModelFit};
 
 pub use derivative::Local;
@@ -185,11 +185,11 @@ const MARK_SCATTERS: f64 = 10.0;
 /// mark: refused, saying how near.
 fn mark_off_the_centre(spin: Option<Spin>, scatter: f64) -> Result<Option<Spin>, TrackError> {
     match spin {
-        Some(s) if s.radius < MARK_SCATTERS * scatter => Err(TrackError(format!(
-            "the rim mark lies {:.2} from the centre, within {MARK_SCATTERS}× the position scatter ({:.2}): its angle would be noise; track a mark near the rim (the same file given for centre and mark?)",
-            show_small(s.radius, Dimension::Length),
-            show_small(scatter, Dimension::Length)
-        ))),
+        Some(s) if s.radius < MARK_SCATTERS * scatter => Err(TrackError::MarkAtTheCentre {
+            radius: s.radius,
+            scatter,
+            scatters: MARK_SCATTERS,
+        }),
         spin => Ok(spin),
     }
 }
@@ -205,9 +205,12 @@ fn frames_around(
     let after = ts.len() - before;
     for (count, side) in [(before, "before"), (after, "after")] {
         if count < min_frames {
-            return Err(TrackError(format!(
-                "only {count} frames {side} the impact at t = {impact_t:.4} s, at least {min_frames} needed to fit the motion {side} it"
-            )));
+            return Err(TrackError::FewFramesBeside {
+                count,
+                side,
+                at: impact_t,
+                min: min_frames,
+            });
         }
     }
     Ok((before, after))
@@ -321,10 +324,11 @@ pub fn derive(
 fn enough_frames(frames: usize, opts: &Derive) -> Result<(), TrackError> {
     let need = 2 * opts.min_frames.max(3);
     if frames < need {
-        return Err(TrackError(format!(
-            "{frames} frames with a centre position, at least {need} needed ({} before and after the impact)",
-            opts.min_frames
-        )));
+        return Err(TrackError::FewFrames {
+            frames,
+            need,
+            min: opts.min_frames,
+        });
     }
     Ok(())
 }
