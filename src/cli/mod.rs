@@ -70,7 +70,9 @@ pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
             fit::run(scene, &cli.scene, &cli.data, args).map(Outcome::Print)
         }
         Some(Command::Sweep(args)) => sweep::run(&cli.scene, args).map(Outcome::Print),
-        Some(Command::Track(args)) => track::run(&cli.scene, args).map(Outcome::Print),
+        Some(Command::Track(args)) => {
+            track::run(&cli.scene, cli.data.scale, args).map(Outcome::Print)
+        }
         Some(Command::Data(args)) => data::run(args, &cli.data).map(Outcome::Print),
         Some(Command::Presets) => Ok(Outcome::Print(presets())),
         Some(Command::Completions { shell }) => Ok(Outcome::Print(manual::completions(*shell))),
@@ -111,7 +113,12 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         .as_ref()
         .map(|_| "preset")
         .or_else(|| cli.scene.values.given().next().map(|(k, _)| k.param().name));
-    let data_flag = data_given.iter().find(|(_, g)| *g).map(|(id, _)| *id);
+    // `track` reads --scale (the length a pixel shows), its only data option.
+    let track_scale = |id: &str| id == "scale" && matches!(cli.command, Some(Command::Track(_)));
+    let data_flag = data_given
+        .iter()
+        .find(|(id, g)| *g && !track_scale(id))
+        .map(|(id, _)| *id);
     let data_command = matches!(cli.command, Some(Command::Data(_)));
     let unused = |id: &'static str, allowed| Usage::Unused {
         flag: Flag(id),

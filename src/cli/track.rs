@@ -37,7 +37,8 @@ struct TrackJson<'a> {
 }
 
 /// Runs `track`.
-pub fn run(scene: &SceneArgs, args: &TrackArgs) -> Result<String, CliError> {
+/// Runs `track`; `scale` is `--scale`, the length one pixel shows (m).
+pub fn run(scene: &SceneArgs, scale: Option<f64>, args: &TrackArgs) -> Result<String, CliError> {
     let (preset, s, _) = scene.resolve()?;
     let radius_given = scene.values.get(Key::Radius).is_some();
     if let Some(path) = &args.output {
@@ -80,10 +81,13 @@ pub fn run(scene: &SceneArgs, args: &TrackArgs) -> Result<String, CliError> {
     }
     let first = numbers[0];
     let times = numbers.iter().map(|n| (n - first) as f64 / fps).collect();
-    let tracks = vision::tracks(&tracker, times, s.radius, args.scale).map_err(|e| DataError {
-        file: file.clone(),
-        what: e.to_string(),
-    })?;
+    let tracks =
+        vision::tracks(&tracker, times, s.radius, scale.map(|l| 1.0 / l)).map_err(|e| {
+            DataError {
+                file: file.clone(),
+                what: e.to_string(),
+            }
+        })?;
     let radius_from = if radius_given {
         "--radius".to_string()
     } else {
@@ -179,7 +183,11 @@ fn notes(
     }
     let c = &tracks.calibration;
     n.push(if c.scale_given {
-        format!("scale {} px/m: given (--scale)", crate::settings::units::significant(c.px_per_m, 6))
+        format!(
+            "scale {} px/m: given (--scale {} a pixel)",
+            crate::settings::units::significant(c.px_per_m, 6),
+            show_small(1.0 / c.px_per_m, Dimension::Length)
+        )
     } else {
         let (v, e) = with_uncertainty(c.px_per_m, c.px_per_m_sigma.max(1e-9), 2);
         let (rv, re) = with_uncertainty(c.radius_px, c.radius_px_sigma.max(1e-9), 2);

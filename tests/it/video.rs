@@ -342,6 +342,17 @@ fn one_ball_in_view_is_tracked_and_named() {
         text.contains("#multi:\n\tleft ball\t\tleft mark\t\nt\tx\ty\tx\ty\n"),
         "{text}"
     );
+    // The scale given (the length a pixel shows) instead of the one from R.
+    let (code, text, err) = run(&[
+        "track",
+        d.to_str().unwrap(),
+        "--fps",
+        "100",
+        "--scale",
+        "0.5mm",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(text.contains("# scale 2000 px/m: given (--scale"), "{text}");
 }
 
 /// `track` refuses `path` with one `error:` line containing `what`, exit 2, and
