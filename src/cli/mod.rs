@@ -32,6 +32,7 @@ mod states;
 mod sweep;
 mod track;
 mod track_args;
+mod video_data;
 pub use crate::output::{self, write_atomically};
 use crate::settings::units::{Dimension, show, sig_figs, significant};
 pub use args::*;
