@@ -7,7 +7,7 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 use crate::methods::Method;
 use crate::settings::params::PARAMS;
 use crate::settings::spec::SceneSpec;
-use crate::settings::units::{Dimension, UnitError, parse_quantity};
+use crate::settings::units::{Dimension, UnitError, parse_option};
 use crate::study::fit::Free;
 
 /// Most samples `--sample` may ask for.
@@ -305,13 +305,13 @@ pub enum Format {
 
 // clap shows the parser's error after the option's name.
 fn speed(s: &str) -> Result<f64, UnitError> {
-    parse_quantity(s, Dimension::Speed)
+    parse_option(s, Dimension::Speed)
 }
 fn time(s: &str) -> Result<f64, UnitError> {
-    parse_quantity(s, Dimension::Time)
+    parse_option(s, Dimension::Time)
 }
 fn length(s: &str) -> Result<f64, String> {
-    match parse_quantity(s, Dimension::Length) {
+    match parse_option(s, Dimension::Length) {
         Ok(v) if v > 0.0 => Ok(v),
         Ok(_) => Err(format!(
             "'{s}' is not a pixel's length, expected a length above 0 such as 1.105mm"
@@ -320,7 +320,7 @@ fn length(s: &str) -> Result<f64, String> {
     }
 }
 fn ratio(s: &str) -> Result<f64, UnitError> {
-    parse_quantity(s, Dimension::Ratio)
+    parse_option(s, Dimension::Ratio)
 }
 
 /// Scene options shared by every command that takes a scene: `--preset` and one
@@ -367,7 +367,7 @@ impl Args for SceneArgs {
             let arg = clap::Arg::new(p.name)
                 .long(p.flag)
                 .value_name(if dim == Dimension::Ratio { "X" } else { "Q" })
-                .value_parser(move |s: &str| parse_quantity(s, dim))
+                .value_parser(move |s: &str| parse_option(s, dim))
                 .allow_hyphen_values(true)
                 .global(true)
                 .help(p.help_text())

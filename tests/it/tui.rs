@@ -1704,3 +1704,48 @@ fn a_step_from_the_limit_says_so() {
         assert!(!status.contains("6 cm"), "{keys}: {status}");
     }
 }
+
+/// A component renders alone, headless, into any area: the Forces view drawn by
+/// itself is the very drawing the screen makes in the view's place (the compositor
+/// adds the panels around it, nothing inside it), so a test of the Forces view does
+/// not depend on the parameters panel.
+#[test]
+fn a_component_renders_alone_as_on_the_screen() {
+    use groovelab::tui::component::{Component, Ctx};
+    use groovelab::tui::screen::Screen;
+    use groovelab::tui::view::forces::Forces;
+    use ratatui::buffer::Buffer;
+    let mut a = app("paper-b4.9");
+    press(&mut a, "v");
+    a.t = 0.05;
+    let theme = Theme::new(Glyphs::UNICODE, true);
+    let area = Rect::new(0, 0, 120, 40);
+    let mut screen = Screen::default();
+    let mut whole = Buffer::empty(area);
+    screen.draw(&a, area, &mut whole, &theme);
+    let frame = screen.frame().unwrap();
+    let p = frame.panels.unwrap();
+    let middle = p.chart.union(p.info);
+    let cx = Ctx {
+        app: &a,
+        frame,
+        theme: &theme,
+    };
+    let mut alone = Buffer::empty(middle);
+    Forces.render(middle, &mut alone, &cx);
+    let text: String = (middle.top()..middle.bottom())
+        .flat_map(|y| (middle.left()..middle.right()).map(move |x| (x, y)))
+        .map(|(x, y)| alone[(x, y)].symbol().to_string())
+        .collect();
+    assert!(text.contains("Forces: side view"), "{text}");
+    for y in middle.top()..middle.bottom() {
+        for x in middle.left()..middle.right() {
+            assert_eq!(alone[(x, y)], whole[(x, y)], "cell ({x}, {y})");
+        }
+    }
+    // Alone in an area of its own (a small one), it draws there and nowhere else.
+    let small = Rect::new(0, 0, 80, 16);
+    let mut buf = Buffer::empty(small);
+    Forces.render(small, &mut buf, &cx);
+    assert!(buf.content.iter().any(|c| c.symbol() != " "));
+}

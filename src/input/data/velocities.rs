@@ -149,7 +149,7 @@ pub(super) fn read_table(
     m.check_magnitudes().map_err(|e| err(e.to_string()))?;
     units.check_plausible(&m.t, &m.v_cm, &m.v_t).map_err(err)?;
     let notes = Notes {
-        format: "velocities (t, v_cm, v_t)".into(),
+        format: "table (t, v_cm, v_t)".into(),
         tracks: Vec::new(),
         units: units.notes(),
     };
