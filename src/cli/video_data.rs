@@ -1,9 +1,8 @@
-//! `--data VIDEO`: a video (or a folder of frames) given where a data file is read is
+//! `--data VIDEO`: a video given where a data file is read is
 //! tracked as `groovelab track` would, and its Tracker-style text read as the data
 //! file. The text is cached in the user's cache folder
 //! (`$XDG_CACHE_HOME/groovelab/tracks`, else `~/.cache/groovelab/tracks`), keyed by
-//! the video's content (a folder: its frames' names, sizes and times), R and the
-//! program's version, so a second run reads it at once; and kept for this process,
+//! the video's content, R and the program's version, so a second run reads it at once; and kept for this process,
 //! so the scene's and the series' reading track once.
 
 use std::collections::HashMap;
@@ -21,13 +20,12 @@ const VIDEO_EXTENSIONS: [&str; 10] = [
     "mp4", "mov", "m4v", "mkv", "avi", "webm", "3gp", "mts", "m2ts", "mpg",
 ];
 
-/// True when `path` is a video or a folder of frames, not a data file.
+/// True when `path` is named as a video, not a data file. (A folder stays refused
+/// as `--data`, which takes files; `track` reads a folder of frames.)
 pub fn is_video(path: &Path) -> bool {
-    path.is_dir()
-        || path
-            .extension()
-            .and_then(|e| e.to_str())
-            .is_some_and(|e| VIDEO_EXTENSIONS.contains(&e.to_ascii_lowercase().as_str()))
+    path.extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| VIDEO_EXTENSIONS.contains(&e.to_ascii_lowercase().as_str()))
 }
 
 static DONE: Mutex<Option<HashMap<PathBuf, String>>> = Mutex::new(None);
@@ -80,32 +78,12 @@ fn cache_dir() -> Option<PathBuf> {
     Some(base.join("groovelab").join("tracks"))
 }
 
-/// The cache key: the content of the video (a folder: its frames' names, sizes and
-/// modification times), R, and the program's version.
+/// The cache key: the content of the video, R, and the program's version.
 fn key(path: &Path, radius: f64) -> Result<u64, CliError> {
     let mut h = std::collections::hash_map::DefaultHasher::new();
     env!("CARGO_PKG_VERSION").hash(&mut h);
     radius.to_bits().hash(&mut h);
-    if path.is_dir() {
-        let mut entries: Vec<(String, u64, u128)> = std::fs::read_dir(path)?
-            .flatten()
-            .filter_map(|e| {
-                let m = e.metadata().ok()?;
-                let t = m
-                    .modified()
-                    .ok()?
-                    .duration_since(std::time::UNIX_EPOCH)
-                    .ok()?;
-                Some((
-                    e.file_name().to_string_lossy().into_owned(),
-                    m.len(),
-                    t.as_nanos(),
-                ))
-            })
-            .collect();
-        entries.sort();
-        entries.hash(&mut h);
-    } else {
+    {
         let mut f = std::fs::File::open(path)?;
         let mut buf = vec![0u8; 1 << 20];
         loop {
