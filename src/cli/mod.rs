@@ -32,6 +32,7 @@ mod states;
 mod sweep;
 mod track;
 mod track_args;
+mod video_data;
 pub use crate::output::{self, write_atomically};
 use crate::settings::params::{Key, PARAMS};
 use crate::settings::units::{Dimension, show, sig_figs};
@@ -71,7 +72,9 @@ pub fn run(cli: &Cli) -> Result<Response, CliError> {
             fit::run(scene, &cli.scene, &cli.data, args).map(Response::Print)
         }
         Some(Command::Sweep(args)) => sweep::run(&cli.scene, args).map(Response::Print),
-        Some(Command::Track(args)) => track::run(&cli.scene, args).map(Response::Print),
+        Some(Command::Track(args)) => {
+            track::run(&cli.scene, cli.data.scale, args).map(Response::Print)
+        }
         Some(Command::Data(args)) => data::run(args, &cli.data).map(Response::Print),
         Some(Command::Presets) => Ok(Response::Print(presets())),
         Some(Command::Completions { shell }) => Ok(Response::Print(manual::completions(*shell))),
@@ -112,7 +115,12 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         .as_ref()
         .map(|_| "preset")
         .or_else(|| cli.scene.values.given().next().map(|(k, _)| k.param().name));
-    let data_flag = data_given.iter().find(|(_, g)| *g).map(|(id, _)| *id);
+    // `track` reads --scale (the length a pixel shows), its only data option.
+    let track_scale = |id: &str| id == "scale" && matches!(cli.command, Some(Command::Track(_)));
+    let data_flag = data_given
+        .iter()
+        .find(|(id, g)| *g && !track_scale(id))
+        .map(|(id, _)| *id);
     let data_command = matches!(cli.command, Some(Command::Data(_)));
     let unused = |id: &'static str, allowed| Usage::Unused {
         flag: Flag(id),

@@ -44,7 +44,11 @@ pub fn with_file_scene(scene: &SceneArgs, data: &DataArgs) -> Result<SceneArgs, 
     let Some(path) = data.data.first() else {
         return Ok(scene.clone());
     };
-    let text = crate::input::read_user_file(path, "--data", crate::input::MAX_FILE_BYTES)?;
+    let text = if super::video_data::is_video(path) {
+        super::video_data::text(path, scene)?
+    } else {
+        crate::input::read_user_file(path, "--data", crate::input::MAX_FILE_BYTES)?
+    };
     let own = crate::input::data::scene_of(&text, &path.display().to_string())?;
     Ok(SceneArgs {
         values: own.over(&scene.values),
@@ -63,6 +67,12 @@ pub fn load_series(args: &DataArgs) -> Result<Option<(Series, SceneSpec)>, CliEr
             .iter()
             .map(|path| {
                 let what = Flag("data").to_string();
+                if super::video_data::is_video(path) {
+                    // Tracked (and kept) when the scene was read from it.
+                    let scene = SceneArgs::default();
+                    return super::video_data::text(path, &scene)
+                        .map(|text| (path.display().to_string(), text));
+                }
                 crate::input::read_user_file(path, &what, crate::input::MAX_FILE_BYTES)
                     .map(|text| (path.display().to_string(), text))
                     .map_err(CliError::from)

@@ -37,19 +37,75 @@ struct TrackJson<'a> {
 }
 
 /// Runs `track`.
-pub fn run(scene: &SceneArgs, args: &TrackArgs) -> Result<String, CliError> {
-    let (preset, s, _) = scene.resolve()?;
-    let radius_given = scene.values.get(Key::Radius).is_some();
+/// Runs `track`; `scale` is `--scale`, the length one pixel shows (m).
+pub fn run(scene: &SceneArgs, scale: Option<f64>, args: &TrackArgs) -> Result<String, CliError> {
     if let Some(path) = &args.output {
         crate::output::check_output(path)?;
     }
-    let file = args.video.display().to_string();
+    let done = tracked(&args.video, scene, args.fps, scale)?;
+    let text = match args.format {
+        TrackFormat::Tracker => write::tracker_text(&done.tracks, &done.notes),
+        TrackFormat::Json => {
+            let (info, tracks) = (&done.info, &done.tracks);
+            let j = TrackJson {
+                video: args.video.display().to_string(),
+                kind: &info.kind,
+                width: info.width,
+                height: info.height,
+                frames: tracks.t.len(),
+                frame_rate: done.fps,
+                frame_rate_source: &done.source,
+                container_frame_rate: info.container_fps,
+                calibration: &tracks.calibration,
+                gaps: &info.gaps,
+                t: &tracks.t,
+                balls: &tracks.balls,
+                notes: &done.notes,
+            };
+            let mut s = serde_json::to_string_pretty(&j).expect("plain data serializes");
+            s.push('\n');
+            s
+        }
+    };
+    match &args.output {
+        None => Ok(text),
+        Some(path) => {
+            crate::signals::watch();
+            crate::output::write_atomically(path, text.as_bytes())?;
+            let mut out: String = done.notes.iter().map(|n| format!("{n}\n")).collect();
+            out += &format!("wrote {}\n", path.display());
+            Ok(out)
+        }
+    }
+}
+
+/// A video tracked: what it is, the rate used and why, the tracks, the notes.
+pub struct Tracked {
+    pub info: Info,
+    pub fps: f64,
+    pub source: RateSource,
+    pub tracks: Tracks,
+    pub notes: Vec<String>,
+}
+
+/// Tracks the video (or folder) `video` for balls of the scene's R, at `fps` when
+/// given, with `scale` (the length a pixel shows, m) when given; a progress bar on a
+/// terminal, Ctrl-C stops it.
+pub fn tracked(
+    video: &std::path::Path,
+    scene: &SceneArgs,
+    fps: Option<f64>,
+    scale: Option<f64>,
+) -> Result<Tracked, CliError> {
+    let (preset, s, _) = scene.resolve()?;
+    let radius_given = scene.values.get(Key::Radius).is_some();
+    let file = video.display().to_string();
     let data_err = |e: VideoError| DataError {
         file: e.file,
         what: e.what,
     };
-    let (info, frames) = video::open(&args.video, &Limits::default()).map_err(data_err)?;
-    let Some((fps, source)) = info.rate(args.fps) else {
+    let (info, frames) = video::open(video, &Limits::default()).map_err(data_err)?;
+    let Some((fps, source)) = info.rate(fps) else {
         return Err(DataError {
             file,
             what: "a folder of frames says no frame rate; give it with --fps (e.g. --fps 240)"
@@ -80,49 +136,26 @@ pub fn run(scene: &SceneArgs, args: &TrackArgs) -> Result<String, CliError> {
     }
     let first = numbers[0];
     let times = numbers.iter().map(|n| (n - first) as f64 / fps).collect();
-    let tracks = vision::tracks(&tracker, times, s.radius, args.scale).map_err(|e| DataError {
-        file: file.clone(),
-        what: e.to_string(),
-    })?;
+    let tracks =
+        vision::tracks(&tracker, times, s.radius, scale.map(|l| 1.0 / l)).map_err(|e| {
+            DataError {
+                file: file.clone(),
+                what: e.to_string(),
+            }
+        })?;
     let radius_from = if radius_given {
         "--radius".to_string()
     } else {
         format!("preset {}; give --radius", preset.name)
     };
     let notes = notes(&file, &info, fps, &source, &tracks, &radius_from);
-    let text = match args.format {
-        TrackFormat::Tracker => write::tracker_text(&tracks, &notes),
-        TrackFormat::Json => {
-            let j = TrackJson {
-                video: file.clone(),
-                kind: &info.kind,
-                width: info.width,
-                height: info.height,
-                frames: tracks.t.len(),
-                frame_rate: fps,
-                frame_rate_source: &source,
-                container_frame_rate: info.container_fps,
-                calibration: &tracks.calibration,
-                gaps: &info.gaps,
-                t: &tracks.t,
-                balls: &tracks.balls,
-                notes: &notes,
-            };
-            let mut s = serde_json::to_string_pretty(&j).expect("plain data serializes");
-            s.push('\n');
-            s
-        }
-    };
-    match &args.output {
-        None => Ok(text),
-        Some(path) => {
-            crate::signals::watch();
-            crate::output::write_atomically(path, text.as_bytes())?;
-            let mut out: String = notes.iter().map(|n| format!("{n}\n")).collect();
-            out += &format!("wrote {}\n", path.display());
-            Ok(out)
-        }
-    }
+    Ok(Tracked {
+        info,
+        fps,
+        source,
+        tracks,
+        notes,
+    })
 }
 
 /// What was found, in lines for people (the file's comment lines, the JSON's notes).
@@ -179,7 +212,11 @@ fn notes(
     }
     let c = &tracks.calibration;
     n.push(if c.scale_given {
-        format!("scale {} px/m: given (--scale)", crate::settings::units::significant(c.px_per_m, 6))
+        format!(
+            "scale {} px/m: given (--scale {} a pixel)",
+            crate::settings::units::significant(c.px_per_m, 6),
+            show_small(1.0 / c.px_per_m, Dimension::Length)
+        )
     } else {
         let (v, e) = with_uncertainty(c.px_per_m, c.px_per_m_sigma.max(1e-9), 2);
         let (rv, re) = with_uncertainty(c.radius_px, c.radius_px_sigma.max(1e-9), 2);

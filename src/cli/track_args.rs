@@ -15,10 +15,6 @@ pub struct TrackArgs {
     /// file's metadata, else the container's; a folder of frames needs it].
     #[arg(long, value_name = "F", value_parser = positive("frames per second", 1e5))]
     pub fps: Option<f64>,
-    /// Pixels per metre in the plane of the balls [default: from the balls' fitted
-    /// radius and R (--radius)].
-    #[arg(long, value_name = "PX_PER_M", value_parser = positive("pixels per metre", 1e9))]
-    pub scale: Option<f64>,
     /// Output: a Tracker-style text file (`--data` reads it) or JSON.
     #[arg(long, value_enum, default_value_t = TrackFormat::Tracker)]
     pub format: TrackFormat,

@@ -241,14 +241,43 @@ fn write_mp4(
 }
 
 #[test]
-fn an_mp4_is_tracked_with_its_rate_and_read_by_fit() {
+fn fit_reads_an_mp4_directly_and_caches_its_tracks() {
     if !ffmpeg() {
         return;
     }
     let d = dir("mp4");
     let clip = write_mp4(&d, "clip.mp4", 100.0, &[], FRAMES);
-    let (code, text, err) = run(&["track", clip.to_str().unwrap(), "--radius", "2.75cm"]);
-    assert_eq!(code, 0, "{err}");
+    let cache = d.join("cache");
+    let fit = || {
+        std::process::Command::new(env!("CARGO_BIN_EXE_groovelab"))
+            .args(["fit", "--data", clip.to_str().unwrap()])
+            .args(["--radius", "2.75cm", "--width", "4.9cm", "--format", "json"])
+            .env("XDG_CACHE_HOME", &cache)
+            .env("GROOVELAB_PRESETS", "/nonexistent-groovelab-presets")
+            .output()
+            .unwrap()
+    };
+    let first = fit();
+    assert!(
+        first.status.success(),
+        "{}",
+        String::from_utf8_lossy(&first.stderr)
+    );
+    let j: Value = serde_json::from_slice(&first.stdout).unwrap();
+    let (mu, se) = (
+        j["model_fit"]["mu"].as_f64().unwrap(),
+        j["model_fit"]["mu_se"].as_f64().unwrap(),
+    );
+    // Lossy compression: μ_k still within 0.01 of the truth.
+    assert!((mu - 0.17).abs() < 0.01 && se < 0.01, "μ_k = {mu} ± {se}");
+    assert_eq!(j["model_fit"]["regime_observed"], "recollide");
+    // The tracks were cached, as `track` writes them; a second run reads them.
+    let cached: Vec<PathBuf> = std::fs::read_dir(cache.join("groovelab/tracks"))
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
+    assert_eq!(cached.len(), 1, "{cached:?}");
+    let text = std::fs::read_to_string(&cached[0]).unwrap();
     assert!(
         text.contains("# frame rate 100 frames/s: the container's"),
         "{text}"
@@ -257,11 +286,9 @@ fn an_mp4_is_tracked_with_its_rate_and_read_by_fit() {
         text.contains("#multi:\n\tleft ball\t\tleft mark\t\tright ball\t\tright mark\t\nt\tx\ty"),
         "{text}"
     );
-    let tracks = d.join("clip.txt");
-    std::fs::write(&tracks, &text).unwrap();
-    let (mu, se, _) = fitted_mu(&tracks);
-    // Lossy compression: μ_k still within 0.01 of the truth.
-    assert!((mu - 0.17).abs() < 0.01 && se < 0.01, "μ_k = {mu} ± {se}");
+    let second = fit();
+    let again: Value = serde_json::from_slice(&second.stdout).unwrap();
+    assert_eq!(again["model_fit"]["mu"], j["model_fit"]["mu"]);
 }
 
 #[test]
@@ -342,6 +369,17 @@ fn one_ball_in_view_is_tracked_and_named() {
         text.contains("#multi:\n\tleft ball\t\tleft mark\t\nt\tx\ty\tx\ty\n"),
         "{text}"
     );
+    // The scale given (the length a pixel shows) instead of the one from R.
+    let (code, text, err) = run(&[
+        "track",
+        d.to_str().unwrap(),
+        "--fps",
+        "100",
+        "--scale",
+        "0.5mm",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(text.contains("# scale 2000 px/m: given (--scale"), "{text}");
 }
 
 /// `track` refuses `path` with one `error:` line containing `what`, exit 2, and
