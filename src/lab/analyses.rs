@@ -59,6 +59,13 @@ impl Lab {
             return;
         }
         let (scene, window) = (self.scene, self.fit_window);
+        let ask = fit::Ask {
+            window,
+            free: None,
+            v0_measured: self
+                .settings()
+                .from_the_data(crate::settings::params::Key::V0),
+        };
         if m.x.is_some() {
             let m = m.clone();
             self.position_fit
@@ -70,7 +77,7 @@ impl Lab {
         }
         let key = (self.generation, window);
         self.fits.request(&self.jobs, key, move |ticket| {
-            fit::fit_all(&scene, &m, window, &[Free::Mu], ticket)
+            fit::fit_all(&scene, &m, &ask, ticket)
         });
     }
 

@@ -10,7 +10,8 @@
 //! scene shows no data ([`in_use`]).
 
 use crate::physics::scene::Scene;
-use crate::settings::spec::SceneError;
+use crate::settings::params::Key;
+use crate::settings::spec::{SceneError, SceneSpec};
 use crate::settings::units::{Dimension, show, show_exact};
 use crate::study::measured::Series;
 use crate::study::preset::Preset;
@@ -192,6 +193,16 @@ pub(super) fn same_data(a: Option<&InUse>, b: Option<&InUse>) -> bool {
                 && (matches!(a.whose, Whose::Own(_)) || a.series == b.series)
         }
         _ => false,
+    }
+}
+
+/// The scene values a series measures itself: both balls' v0 from the left ball's
+/// approach ([`crate::study::fit::approach`]; the right ball is not tracked, and the
+/// lab's scenes are symmetric); none where the data do not show the approach.
+pub(super) fn measured_values(series: &Series) -> SceneSpec {
+    match crate::study::fit::approach(series) {
+        Some(a) => SceneSpec::default().with(Key::V0, a.speed),
+        None => SceneSpec::default(),
     }
 }
 

@@ -94,7 +94,10 @@ impl Deref for Lab {
 impl Lab {
     /// The lab on its settings, with the user's own series (`--data`) in place of the
     /// preset's, if any.
-    pub fn new(settings: Settings, own_data: Option<OwnData>) -> Result<Lab, SceneError> {
+    pub fn new(mut settings: Settings, own_data: Option<OwnData>) -> Result<Lab, SceneError> {
+        if let Some(own) = &own_data {
+            settings.from_data = data::measured_values(&own.series);
+        }
         let in_use = choose(&settings, own_data.as_ref())?;
         let now = Arc::new(Resolved::build(&settings, in_use.as_ref(), None)?);
         Ok(Lab {

@@ -580,11 +580,10 @@ pub(super) fn least_squares(
     evals: &Evals,
 ) -> Result<Vec<f64>, FitError> {
     if idx.len() < free.len() + 2 {
-        return Err(FitError::Data(format!(
-            "{} usable points, allowed at least {}",
-            idx.len(),
-            free.len() + 2
-        )));
+        return Err(FitError::TooFewPoints {
+            usable: idx.len(),
+            needed: free.len() + 2,
+        });
     }
     let cost = |p: &[f64]| -> f64 {
         residuals(&with(scene, free, p), m, idx, target, evals)

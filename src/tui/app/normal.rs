@@ -505,20 +505,18 @@ impl App {
         });
     }
 
-    /// The model fit `a` applies, and what to call it: of a position track the fit to
-    /// the positions (the more precise, whose ± the panel says to quote), else the one
-    /// fit of the velocities.
+    /// The model fit `a` applies, and what to call it: the headline fit (of the model
+    /// the data support; of a position track fitted to the positions), the one the
+    /// panel shows first.
     fn fit_to_apply(&self) -> Result<(crate::study::fit::ModelFit, &'static str), String> {
-        match self.lab.position_fit() {
-            State::Ready(Ok(p)) => return Ok((p.clone(), "the position fit")),
-            State::Computing { .. } => {
-                return Err("the position fit is still running: try again".into());
-            }
-            State::Ready(Err(e)) => return Err(format!("no fit to apply: the position fit: {e}")),
-            State::Idle => {}
-        }
         match self.lab.fits() {
-            State::Ready(Ok(f)) => Ok((f.model_fit.clone(), "the fit")),
+            State::Ready(Ok(f)) => Ok((
+                f.model_fit.clone(),
+                match f.model_fit.fitted_to {
+                    "positions" => "the position fit",
+                    _ => "the fit",
+                },
+            )),
             State::Ready(Err(e)) => Err(format!("no fit to apply: {e}")),
             State::Computing { .. } => Err("the fit is still running: try again".into()),
             State::Idle => Err("no fit to apply: this preset has no data".into()),
