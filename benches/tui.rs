@@ -82,7 +82,7 @@ fn tui(c: &mut Criterion) {
                 key_to_frame(&mut a, if wide { "right" } else { "left" }, area, &theme)
             })
         });
-        a.lab.wait();
+        a.wait();
     }
 }
 

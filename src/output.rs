@@ -25,6 +25,11 @@ pub enum OutputError {
     NoFileName { path: PathBuf },
     #[error("cannot write {}: {source}", path.display())]
     Io { path: PathBuf, source: io::Error },
+    /// The temporary file could not be made in the target's folder; `why` says why in
+    /// words about that folder (the OS error alone, "No such file or directory" for an
+    /// existing `/proc/version`, names the wrong thing).
+    #[error("cannot write {}: {why} (the file is written beside it first, then renamed into place)", path.display())]
+    Folder { path: PathBuf, why: String },
     #[error("interrupted: nothing was written")]
     Interrupted,
 }
@@ -58,6 +63,27 @@ fn io_error(path: &Path, source: io::Error) -> OutputError {
     OutputError::Io {
         path: path.to_path_buf(),
         source,
+    }
+}
+
+/// Why no new file could be made in `dir`, the target's folder, said of the folder.
+fn folder_error(target: &Path, dir: &Path, e: io::Error) -> OutputError {
+    let folder = dir.display();
+    let why = match e.kind() {
+        io::ErrorKind::NotFound if !dir.is_dir() => format!("its folder {folder} does not exist"),
+        // The folder is there but refuses new names: a pseudo-file system (/proc, /sys).
+        io::ErrorKind::NotFound => format!("its folder {folder} takes no new files"),
+        io::ErrorKind::PermissionDenied => {
+            format!("its folder {folder} is not writable (permission denied)")
+        }
+        io::ErrorKind::ReadOnlyFilesystem => {
+            format!("its folder {folder} is on a read-only file system")
+        }
+        _ => format!("no new file can be made in its folder {folder}: {e}"),
+    };
+    OutputError::Folder {
+        path: target.to_path_buf(),
+        why,
     }
 }
 
@@ -102,7 +128,7 @@ impl AtomicFile {
                 Err(e) if e.kind() == io::ErrorKind::AlreadyExists && attempt < 100 => {
                     attempt += 1;
                 }
-                Err(e) => return Err(io_error(target, e)),
+                Err(e) => return Err(folder_error(target, dir, e)),
             }
         };
         let me = AtomicFile {
@@ -254,6 +280,34 @@ mod tests {
         let e = write_atomically(&dir.join("no-such-dir").join("x.csv"), b"x").unwrap_err();
         assert!(e.to_string().starts_with("cannot write "), "{e}");
         assert!(leftovers(&dir).is_empty());
+    }
+
+    /// An existing file whose folder takes no new files (procfs): the message says so,
+    /// not "No such file or directory", which the OS error would say of a file that is
+    /// plainly there.
+    #[cfg(target_os = "linux")]
+    #[test]
+    fn an_existing_file_in_a_folder_that_takes_no_files_says_so() {
+        let target = Path::new("/proc/version");
+        if !target.is_file() {
+            return;
+        }
+        let err = write_atomically(target, b"x").unwrap_err().to_string();
+        assert!(!err.contains("No such file"), "{err}");
+        assert!(err.contains("its folder /proc takes no new files"), "{err}");
+    }
+
+    #[test]
+    fn a_missing_folder_is_named() {
+        let dir = scratch("missing-folder");
+        let target = dir.join("nowhere/run.csv");
+        let err = write_atomically(&target, b"x").unwrap_err().to_string();
+        let folder = dir.join("nowhere");
+        assert!(
+            err.contains(&format!("its folder {} does not exist", folder.display())),
+            "{err}"
+        );
+        let _ = std::fs::remove_dir_all(&dir);
     }
 
     #[test]

@@ -44,10 +44,12 @@ pub struct DataArgs {
     /// [default: the preset's series].
     #[arg(long, value_name = "FILE", global = true)]
     pub data: Vec<std::path::PathBuf>,
-    /// Time unit of the file when its header gives none (e.g. ms) [default: s].
+    /// Time unit of the file (e.g. ms, us; wins over the header's) [default: the
+    /// header's, else s].
     #[arg(long, value_name = "UNIT", global = true)]
     pub time_unit: Option<String>,
-    /// Speed unit of the file when its header gives none (e.g. cm/s) [default: m/s].
+    /// Speed unit of a velocity file (e.g. cm/s; wins over the header's) [default: the
+    /// header's, else m/s].
     #[arg(long, value_name = "UNIT", global = true)]
     pub speed_unit: Option<String>,
     /// Time of the first impact in the file [default: detected from v_cm, or from the
@@ -60,9 +62,15 @@ pub struct DataArgs {
     /// mark/rim, else the first and second].
     #[arg(long, value_name = "ROLE=NAME", value_parser = track, global = true)]
     pub track: Vec<(TrackRole, String)>,
-    /// Length unit of a position file when its header gives none (e.g. mm) [default: m].
+    /// Length unit of a position file (e.g. mm; wins over the header's) [default: the
+    /// header's, else m].
     #[arg(long, value_name = "UNIT", global = true)]
     pub length_unit: Option<String>,
+    /// The length one pixel shows, for a video track in pixels (a Tracker or Logger Pro
+    /// file whose video was not calibrated; e.g. 1.105mm for a 1 m ruler 905 pixels
+    /// long) [default: the file's calibration].
+    #[arg(long, value_name = "LENGTH", value_parser = length, global = true, conflicts_with = "length_unit")]
+    pub scale: Option<f64>,
     /// Half-width of the local fit that derives velocities from positions (e.g. 20ms)
     /// [default: chosen from the frame rate and the scatter].
     #[arg(long, value_name = "T", value_parser = time, global = true)]
@@ -103,6 +111,9 @@ pub enum Command {
     Compare(CompareArgs),
     /// Fit the model to measured data (a preset's, or a CSV file).
     Fit(FitArgs),
+    /// What groovelab reads in data files, without fitting: format, tracks, units,
+    /// frames, missing frames, scatter, approach speed, impacts.
+    Data(DataCmdArgs),
     /// Regime map over one or two scene parameters.
     Sweep(SweepArgs),
     /// List the built-in and user presets.
@@ -175,6 +186,22 @@ pub struct FitArgs {
     /// Write the output to this file (atomically) instead of stdout.
     #[arg(long, value_name = "FILE")]
     pub output: Option<std::path::PathBuf>,
+}
+
+#[derive(Args, Debug)]
+pub struct DataCmdArgs {
+    /// The files to read (Tracker .trk or export, Logger Pro .cmbl or text, CSV/TSV).
+    #[arg(value_name = "FILE", required = true)]
+    pub files: Vec<std::path::PathBuf>,
+    /// Output: text for people, or JSON (one object per file, in an array).
+    #[arg(long, value_enum, default_value_t = DataFormat::Table)]
+    pub format: DataFormat,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum DataFormat {
+    Table,
+    Json,
 }
 
 #[derive(Args, Debug)]
@@ -279,6 +306,15 @@ fn speed(s: &str) -> Result<f64, UnitError> {
 }
 fn time(s: &str) -> Result<f64, UnitError> {
     parse_quantity(s, Dimension::Time)
+}
+fn length(s: &str) -> Result<f64, String> {
+    match parse_quantity(s, Dimension::Length) {
+        Ok(v) if v > 0.0 => Ok(v),
+        Ok(_) => Err(format!(
+            "'{s}' is not a pixel's length, expected a length above 0 such as 1.105mm"
+        )),
+        Err(e) => Err(e.to_string()),
+    }
 }
 fn ratio(s: &str) -> Result<f64, UnitError> {
     parse_quantity(s, Dimension::Ratio)

@@ -19,6 +19,7 @@ use crate::tui::{
 };
 
 mod args;
+mod data;
 pub mod entry;
 mod error;
 mod fit;
@@ -65,6 +66,7 @@ pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
             fit::run(scene, &cli.scene, &cli.data, args).map(Outcome::Print)
         }
         Some(Command::Sweep(args)) => sweep::run(&cli.scene, args).map(Outcome::Print),
+        Some(Command::Data(args)) => data::run(args, &cli.data).map(Outcome::Print),
         Some(Command::Presets) => Ok(Outcome::Print(presets())),
         Some(Command::Completions { shell }) => Ok(Outcome::Print(manual::completions(*shell))),
         Some(Command::Manpage) => Ok(Outcome::Print(manual::manpage())),
@@ -99,6 +101,7 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         Some(Command::Compare(_)) => ("compare", true, true, false),
         Some(Command::Fit(_)) => ("fit", true, true, false),
         Some(Command::Sweep(_)) => ("sweep", true, false, false),
+        Some(Command::Data(_)) => ("data", false, true, false),
         Some(Command::Presets) => ("presets", false, false, false),
         Some(Command::Completions { .. }) => ("completions", false, false, false),
         Some(Command::Manpage) => ("manpage", false, false, false),
@@ -111,6 +114,7 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         ("impact_at", d.impact_at.is_some()),
         ("track", !d.track.is_empty()),
         ("length_unit", d.length_unit.is_some()),
+        ("scale", d.scale.is_some()),
         ("window", d.window.is_some()),
     ];
     let scene_given = cli
@@ -120,6 +124,7 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         .map(|_| "preset")
         .or_else(|| cli.scene.values.given().next().map(|(k, _)| k.param().name));
     let data_flag = data_given.iter().find(|(_, g)| *g).map(|(id, _)| *id);
+    let data_command = matches!(cli.command, Some(Command::Data(_)));
     let unused = |id: &'static str, allowed| Usage::Unused {
         flag: Flag(id),
         by: name,
@@ -128,8 +133,15 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
     let error = match (scene_given, data_flag) {
         (Some(id), _) if !scene => unused(id, "commands that take a scene"),
         (_, Some(id)) if !data => unused(id, "compare, fit, render and the app"),
+        // `data` takes its files as arguments.
+        (_, Some(_)) if data_command && !d.data.is_empty() => unused(
+            "data",
+            "compare, fit, render and the app (data takes its files as arguments)",
+        ),
         // Only --data gives these a file to read.
-        (_, Some(id)) if d.data.is_empty() => Usage::WithoutData { flag: Flag(id) },
+        (_, Some(id)) if d.data.is_empty() && !data_command => {
+            Usage::WithoutData { flag: Flag(id) }
+        }
         _ if !ascii && cli.ascii => unused("ascii", "render and the app"),
         _ => return Ok(()),
     };

@@ -11,7 +11,7 @@ use crate::lab::{Groove, Lab, OwnData, Settings};
 use crate::physics::scene::{Scene, Span};
 use crate::settings::params::Key;
 use crate::settings::spec::SceneSpec;
-use crate::settings::units::{Dimension, show, unit_factor};
+use crate::settings::units::{Dimension, show};
 use crate::study::measured::{Derive, Found, Series};
 use crate::study::preset::{self, Preset};
 use crate::tui::app::{App, Library, Status};
@@ -72,10 +72,29 @@ pub fn load_series(args: &DataArgs) -> Result<Option<(Series, SceneSpec)>, CliEr
             return Err(BadValue::DataTooOften { count: more.len() }.into());
         }
     };
+    let (reading, derive) = reading_of(args)?;
+    let series = match texts.as_slice() {
+        [(file, text)] => crate::input::data::load(text, file, &reading, &derive),
+        [centre, mark] => crate::input::data::load_pair(centre, mark, &reading, &derive),
+        _ => unreachable!("one or two files"),
+    }?;
+    let file = texts[0].0.clone();
+    let m = match &series {
+        Series::Velocities(m) | Series::Track(m, _) => m,
+    };
+    m.check_magnitudes()
+        .map_err(|source| CliError::Implausible { file, source })?;
+    let (file, text) = &texts[0];
+    let own_scene = crate::input::data::scene_of(text, file)?;
+    Ok(Some((series, own_scene)))
+}
+
+/// How the data options say to read a file, and to derive velocities from a track.
+pub fn reading_of(args: &DataArgs) -> Result<(Reading, Derive), CliError> {
     let unit = |text: &Option<String>, dim: Dimension, id: &'static str| {
         text.as_ref()
             .map(|u| {
-                unit_factor(u, dim).map_err(|source| BadValue::Unit {
+                crate::input::data::file_unit(u, dim).map_err(|source| BadValue::Unit {
                     flag: Flag(id),
                     text: u.clone(),
                     source,
@@ -94,6 +113,7 @@ pub fn load_series(args: &DataArgs) -> Result<Option<(Series, SceneSpec)>, CliEr
         time_unit: unit(&args.time_unit, Dimension::Time, "time_unit")?,
         speed_unit: unit(&args.speed_unit, Dimension::Speed, "speed_unit")?,
         length_unit: unit(&args.length_unit, Dimension::Length, "length_unit")?,
+        scale: args.scale,
         impact_at: args.impact_at,
         centre: named(TrackRole::Centre),
         mark: named(TrackRole::Mark),
@@ -113,20 +133,7 @@ pub fn load_series(args: &DataArgs) -> Result<Option<(Series, SceneSpec)>, CliEr
         half_window: args.window,
         ..Derive::default()
     };
-    let series = match texts.as_slice() {
-        [(file, text)] => crate::input::data::load(text, file, &reading, &derive),
-        [centre, mark] => crate::input::data::load_pair(centre, mark, &reading, &derive),
-        _ => unreachable!("one or two files"),
-    }?;
-    let file = texts[0].0.clone();
-    let m = match &series {
-        Series::Velocities(m) | Series::Track(m, _) => m,
-    };
-    m.check_magnitudes()
-        .map_err(|source| CliError::Implausible { file, source })?;
-    let (file, text) = &texts[0];
-    let own_scene = crate::input::data::scene_of(text, file)?;
-    Ok(Some((series, own_scene)))
+    Ok((reading, derive))
 }
 
 /// [`lab`] for a command that has no status line to say which groove it used

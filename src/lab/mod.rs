@@ -2,13 +2,14 @@
 //! preset, the command line, the app's edits), the one immutable snapshot built from
 //! them (`resolved`: the scene, its exact solution and derived values, the measured
 //! series derived for it), and the analyses that take longer than a frame (methods
-//! rows, the overlay run, the fits), computed lazily on worker threads and dropped
-//! when the scene changes. An edit sets a layer and builds a new snapshot; `Lab`
-//! derefs to it, so a view reads `lab.scene`, `lab.solution`, `lab.story` from the one
-//! snapshot. The analyses' jobs are in `analyses` (their work in `work`), the span
-//! rule in `span`; what depends on the terminal's size is cached by the app, not here.
+//! rows, the overlay run, the fits) as work for jobs on a worker pool. An edit sets a
+//! layer and builds a new snapshot; `Lab` derefs to it, so a view reads `lab.scene`,
+//! `lab.solution`, `lab.story` from the one snapshot. The lab holds no job and knows
+//! no view: whoever shows an analysis requests it (`jobs`), keyed by the snapshot's
+//! [`Lab::generation`]; the analyses' work is in `analyses` and `work`, the span rule
+//! in `span`; what depends on the terminal's size is cached by the app, not here.
 
-mod analyses;
+pub mod analyses;
 mod data;
 pub mod jobs;
 mod resolved;
@@ -19,14 +20,10 @@ mod work;
 use std::ops::Deref;
 use std::sync::Arc;
 
-use crate::methods::Method;
 use crate::settings::params::Key;
 use crate::settings::spec::{SceneError, SceneSpec};
-use crate::study::compare::Row;
-use crate::study::fit::{FitError, Fits, ModelFit};
-use crate::study::measured::{Measured, Series};
+use crate::study::measured::Series;
 use crate::study::preset::Preset;
-use jobs::{Job, Jobs};
 
 pub use data::{Groove, InUse, OtherGroove, OwnData, Whose};
 pub use resolved::{MeasuredPoints, Pinned, Point, Resolved, Story, differences, value_range};
@@ -41,7 +38,7 @@ use span::solve_shown;
 
 /// The scene a job belongs to: it counts up with every new solve, so a request made
 /// for an earlier scene never matches a newer one.
-type Generation = u64;
+pub type Generation = u64;
 
 /// The line fit's window, s: from, to (`None`: the sliding phase's end).
 pub type FitWindow = (Option<f64>, Option<f64>);
@@ -59,27 +56,9 @@ pub struct Lab {
     pub pinned: Option<Pinned>,
     /// The current snapshot, built from the layers by [`Resolved::build`].
     now: Arc<Resolved>,
-    /// Line-fit window (None: the sliding phase).
-    pub fit_window: FitWindow,
-    want_methods: bool,
-    /// Whether the Methods view's rows are timed (its work axis shows time).
-    want_method_times: bool,
-    want_fits: bool,
-    overlay_choice: Option<(Method, u8)>,
-    /// The worker pool's jobs of this lab, and the scene they are asked for.
-    jobs: Jobs,
+    /// The scene the current snapshot solves: counts up when its scene, span or data
+    /// change (not for a pin), so an analysis asked for an earlier one is stale.
     generation: Generation,
-    /// The Methods view's rows, and whether they are timed.
-    methods: Job<(Generation, bool), Vec<Row>>,
-    /// `None` only for a run that was cancelled before it finished.
-    overlay: Job<(Generation, Method, u8), Option<Overlay>>,
-    fits: Job<(Generation, FitWindow), Result<Fits, FitError>>,
-    /// The model fitted to a position track's positions (none for a velocity file).
-    position_fit: Job<Generation, Result<ModelFit, FitError>>,
-    /// A file the app is writing (run CSV, chart SVG): the status message, or why not;
-    /// each export its own request.
-    export: Job<u64, ExportResult>,
-    exports: u64,
 }
 
 /// The lab reads as its current snapshot: `lab.scene`, `lab.solution`, `lab.story`.
@@ -106,19 +85,7 @@ impl Lab {
             in_use,
             pinned: None,
             now,
-            fit_window: (None, None),
-            want_methods: false,
-            want_method_times: false,
-            want_fits: false,
-            overlay_choice: None,
-            jobs: Jobs::default(),
             generation: 0,
-            methods: Job::default(),
-            overlay: Job::default(),
-            fits: Job::default(),
-            position_fit: Job::default(),
-            export: Job::default(),
-            exports: 0,
         })
     }
 
@@ -130,6 +97,12 @@ impl Lab {
     /// The current snapshot, shared (a job or a view cache keeps it whole).
     pub fn resolved(&self) -> &Arc<Resolved> {
         &self.now
+    }
+
+    /// Which solve the current snapshot is: an analysis is keyed by it (a pin keeps
+    /// it, an edit of the scene, its span or its data moves it on).
+    pub fn generation(&self) -> Generation {
+        self.generation
     }
 
     /// The preset the scene starts from.
@@ -179,11 +152,6 @@ impl Lab {
         self.in_use.as_ref()
     }
 
-    /// [`Resolved::measured`], shared (a job takes it without copying the series).
-    fn measured_arc(&self) -> Option<Arc<Measured>> {
-        self.now.data.as_ref().map(|d| Arc::clone(&d.measured))
-    }
-
     /// Sets a parameter if the scene stays valid (an edit: `undo` takes it back).
     /// Setting `t_end` fixes the span's end; any other value of the scene ends a
     /// preset's `t_end` (the span follows the physics again).
@@ -229,9 +197,6 @@ impl Lab {
     /// one before it again.
     pub fn undo(&mut self) -> Option<Edit> {
         let edit = self.settings.undo()?;
-        if matches!(edit, Edit::Preset(_) | Edit::DropData) {
-            self.fit_window = (None, None);
-        }
         // The layers below it made a valid scene before it was added.
         self.rebuild().expect("the scene before an edit was valid");
         Some(edit)
@@ -243,7 +208,6 @@ impl Lab {
         if !self.settings.reset() {
             return false;
         }
-        self.fit_window = (None, None);
         self.rebuild().expect("the scene without edits was valid");
         true
     }
@@ -252,9 +216,7 @@ impl Lab {
     /// changes): an edit, so [`Lab::undo`] goes back to the preset before with its
     /// edits and data; the user's own series stays (see [`Lab::drop_data`]).
     pub fn load_preset(&mut self, preset: Preset) -> Result<(), SceneError> {
-        self.edit(Edit::Preset(Box::new(preset)))?;
-        self.fit_window = (None, None);
-        Ok(())
+        self.edit(Edit::Preset(Box::new(preset)))
     }
 
     /// Drops the user's own series (an edit: [`Lab::undo`] brings it back): the
@@ -264,7 +226,6 @@ impl Lab {
         let name = self.own_data()?.name.clone();
         self.edit(Edit::DropData)
             .expect("dropping the data leaves a valid scene");
-        self.fit_window = (None, None);
         Some(name)
     }
 
@@ -294,8 +255,8 @@ impl Lab {
         self.pinned.is_some()
     }
 
-    /// Builds the snapshot of the layers, the series in use and the pin; the analyses
-    /// start over only if the scene or its span changed.
+    /// Builds the snapshot of the layers, the series in use and the pin; its
+    /// generation moves on only if the scene, its span or its data changed.
     fn rebuild(&mut self) -> Result<(), SceneError> {
         let chosen = choose(&self.settings, self.own_data.as_ref())?;
         let same = data::same_data(chosen.as_ref(), self.in_use.as_ref());
@@ -313,10 +274,6 @@ impl Lab {
         if moved {
             // Every analysis asked for from now on belongs to this solve.
             self.generation += 1;
-            if !self.want_methods {
-                self.methods.cancel();
-            }
-            self.restart();
         }
         Ok(())
     }

@@ -154,14 +154,11 @@ mod tests {
         // The paper's balls in a 4.9 cm groove, the right one three times heavier.
         let ball = |mass| Ball { mass, v0: 0.0 };
         let scene = Scene {
-            radius: 0.0275,
-            width: 0.049,
-            mu: 0.17,
-            g: 9.81,
             restitution: 0.6,
             rolling_resistance: 0.01,
             left: ball(0.05),
             right: ball(0.15),
+            ..Scene::default()
         };
         let m = Model::of(&scene);
         let cases = [

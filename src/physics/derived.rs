@@ -185,13 +185,39 @@ impl Derived {
             };
         }
         let de = self.d * self.restitution;
+        let shown = product_shown(de);
+        // Within the last digit shown, "1.000 > 1" would contradict itself: the
+        // difference is shown instead, and the sentence says the margin is slight.
+        let barely = (de - 1.0).abs() < 5e-4;
         if de > 1.0 + 1e-12 {
-            format!("D e = {de:.3} > 1: translation reverses first")
+            let how = if barely {
+                ", but barely: they depart slowly"
+            } else {
+                ""
+            };
+            format!("D e = {shown} > 1: translation reverses first{how}")
         } else if de < 1.0 - 1e-12 {
-            format!("D e = {de:.3} < 1: the spin rolls them back")
+            let how = if barely {
+                ", but barely: they come back slowly"
+            } else {
+                ""
+            };
+            format!("D e = {shown} < 1: the spin rolls them back{how}")
         } else {
             "D e = 1: both stop together".to_string()
         }
+    }
+}
+
+/// D e as the reason shows it: to three decimals, or as `1 + 2e-4` where three
+/// decimals would round it to 1.000 (what is true at the precision shown).
+fn product_shown(de: f64) -> String {
+    let off = de - 1.0;
+    if off.abs() >= 5e-4 {
+        format!("{de:.3}")
+    } else {
+        let sign = if off > 0.0 { '+' } else { '-' };
+        format!("1 {sign} {:.0e}", off.abs())
     }
 }
 
@@ -418,6 +444,47 @@ mod tests {
     use crate::physics::scene::Ball;
     use proptest::prelude::*;
 
+    /// The scene at the critical width as the screen shows it (b* = 4.26 cm, rounded
+    /// from 4.2600…): D e = 1.0002, which three decimals would show as "1.000 > 1".
+    #[test]
+    fn the_reason_at_the_shown_critical_width_shows_the_difference() {
+        let ball = Ball {
+            mass: 0.167,
+            v0: 0.6,
+        };
+        let mut sc = Scene {
+            radius: 0.0275,
+            width: 0.0426,
+            mu: 0.17,
+            g: 9.81,
+            restitution: 1.0,
+            rolling_resistance: 0.0,
+            left: ball,
+            right: ball,
+        };
+        let d = Derived::of(&sc);
+        // D = 5k²/2 with k² = 1 − (b/2R)² (physics.md): 1 + 2.1e-4 here.
+        let k2 = 1.0 - (0.0426f64 / 0.055).powi(2);
+        assert!((d.d - 2.5 * k2).abs() < 1e-12);
+        let why = d.why();
+        assert_eq!(
+            why,
+            "D e = 1 + 2e-4 > 1: translation reverses first, but barely: they depart slowly"
+        );
+        // Just above b*: the other side, said the same way.
+        sc.width = 0.042606;
+        let why = Derived::of(&sc).why();
+        assert!(
+            why.starts_with("D e = 1 - ") && why.contains("< 1"),
+            "{why}"
+        );
+        assert!(why.ends_with("but barely: they come back slowly"), "{why}");
+        // Far from b*, three decimals as before.
+        sc.width = 0.035;
+        let why = Derived::of(&sc).why();
+        assert_eq!(why, "D e = 1.488 > 1: translation reverses first");
+    }
+
     proptest! {
         /// The 3-D vectors (a cross product here) against the sliding ball's closed
         /// forms in `physics::forces`, to rounding.
@@ -433,11 +500,10 @@ mod tests {
                 radius,
                 width: 2.0 * radius * half,
                 mu,
-                g: 9.81,
                 restitution: 0.5,
-                rolling_resistance: 0.0,
                 left: ball,
                 right: ball,
+                ..Scene::default()
             };
             let (s, f) = (Sliding::of(&sc, mass), forces(&sc, mass, -1.0));
             let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs();

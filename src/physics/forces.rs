@@ -251,11 +251,10 @@ mod tests {
             radius,
             width: 2.0 * radius * half,
             mu,
-            g: 9.81,
             restitution: e,
-            rolling_resistance: 0.0,
             left: Ball { mass: 0.167, v0 },
             right: Ball { mass: 0.167, v0 },
+            ..Scene::default()
         }
     }
 

@@ -13,28 +13,6 @@ use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::LATEST_END;
 use crate::settings::units::{Dimension, show};
 
-/// Standard gravity, used when nothing else is said, m/s².
-pub const STANDARD_GRAVITY: f64 = 9.81;
-
-/// A scene with every value unset (NaN), for the rows to fill in: every field of a
-/// scene is some row's, so none stays NaN in a resolved scene.
-pub(crate) const UNSET: Scene = {
-    let ball = crate::physics::scene::Ball {
-        mass: f64::NAN,
-        v0: f64::NAN,
-    };
-    Scene {
-        radius: f64::NAN,
-        width: f64::NAN,
-        mu: f64::NAN,
-        g: f64::NAN,
-        restitution: f64::NAN,
-        rolling_resistance: f64::NAN,
-        left: ball,
-        right: ball,
-    }
-};
-
 /// A setting that a layer may give.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Key {
@@ -154,8 +132,20 @@ const SPEED_STEPS: Option<Steps> = Some(Steps {
     coarse: 0.1,
 });
 
-/// Every scene parameter, in the order of `--help`, preset files and the app's panel.
-pub const PARAMS: [Param; 17] = [
+/// Every scene parameter, in the order of `--help`, preset files and the app's panel
+/// (an array, so `&PARAMS` iterates; its length is counted from [`ROWS`]).
+pub const PARAMS: [Param; ROWS.len()] = {
+    let mut rows = [ROWS[0]; ROWS.len()];
+    let mut i = 0;
+    while i < ROWS.len() {
+        rows[i] = ROWS[i];
+        i += 1;
+    }
+    rows
+};
+
+/// The table as written: one row per parameter, in [`Key`]'s order.
+const ROWS: &[Param] = &[
     Param {
         key: Key::Radius,
         name: "radius",
@@ -377,7 +367,7 @@ pub const PARAMS: [Param; 17] = [
             coarse: 0.1,
         }),
         help: "Coefficient of restitution e, 0 ≤ e ≤ 1",
-        default: Fallback::Value(1.0),
+        default: Fallback::Value(Scene::DEFAULT.restitution),
         replaces: None,
         get: |s, _| Some(s.restitution),
         set: |s, _, v| s.restitution = v,
@@ -396,7 +386,7 @@ pub const PARAMS: [Param; 17] = [
             coarse: 0.01,
         }),
         help: "Rolling-resistance coefficient c_rr, 0 ≤ c_rr ≤ 1",
-        default: Fallback::Value(0.0),
+        default: Fallback::Value(Scene::DEFAULT.rolling_resistance),
         replaces: None,
         get: |s, _| Some(s.rolling_resistance),
         set: |s, _, v| s.rolling_resistance = v,
@@ -412,7 +402,7 @@ pub const PARAMS: [Param; 17] = [
         sets: &[Key::G],
         steps: None,
         help: "Gravity",
-        default: Fallback::Value(STANDARD_GRAVITY),
+        default: Fallback::Value(Scene::DEFAULT.g),
         replaces: None,
         get: |s, _| Some(s.g),
         set: |s, _, v| s.g = v,
@@ -499,7 +489,7 @@ impl Param {
             t_start: -1.0,
             t_end: Some(1.0),
         };
-        let (mut scene, mut written) = (UNSET, span);
+        let (mut scene, mut written) = (Scene::DEFAULT, span);
         (self.set)(&mut scene, &mut written, 0.5);
         written == span
     }
@@ -507,10 +497,10 @@ impl Param {
 
 impl Key {
     /// Every key, in the table's order.
-    pub const ALL: [Key; 17] = {
-        let mut keys = [Key::Radius; 17];
+    pub const ALL: [Key; PARAMS.len()] = {
+        let mut keys = [Key::Radius; PARAMS.len()];
         let mut i = 0;
-        while i < 17 {
+        while i < PARAMS.len() {
             keys[i] = PARAMS[i].key;
             i += 1;
         }
@@ -552,6 +542,34 @@ mod tests {
             assert_eq!(p.key as usize, i, "{}", p.name);
             assert_eq!(p.flag, p.name.replace('_', "-"));
             assert!(p.range.lo < p.range.hi, "{}", p.name);
+        }
+    }
+
+    /// Every number of a scene is some row's: `resolve` starts from
+    /// [`Scene::DEFAULT`] and must overwrite all of it, so a field no row writes
+    /// would silently keep its default. Each own row writes a value no default has.
+    #[test]
+    fn every_field_of_a_scene_is_some_rows() {
+        let (mut scene, mut span) = (Scene::DEFAULT, Span::DEFAULT);
+        for p in PARAMS.iter().filter(|p| p.is_own() && p.replaces.is_none()) {
+            (p.set)(&mut scene, &mut span, 0.123456789);
+        }
+        let json = serde_json::to_value(scene).unwrap();
+        let mut leaves = Vec::new();
+        fn walk(path: String, v: &serde_json::Value, out: &mut Vec<(String, f64)>) {
+            match v {
+                serde_json::Value::Object(m) => {
+                    for (k, v) in m {
+                        walk(format!("{path}.{k}"), v, out);
+                    }
+                }
+                other => out.push((path, other.as_f64().unwrap_or(f64::NAN))),
+            }
+        }
+        walk("scene".into(), &json, &mut leaves);
+        assert!(leaves.len() >= 8, "{leaves:?}");
+        for (path, v) in leaves {
+            assert_eq!(v, 0.123456789, "no row of the table writes {path}");
         }
     }
 }

@@ -3,7 +3,7 @@
 
 use crate::physics::derived::Derived;
 use crate::physics::scene::{Scene, Span};
-use crate::settings::params::{Fallback, Key, PARAMS, Param, UNSET};
+use crate::settings::params::{Fallback, Key, PARAMS, Param};
 use crate::settings::units::{Dimension, show, show_exact};
 
 /// Why a scene is not valid. Each message names the value and what is allowed.
@@ -22,9 +22,18 @@ pub enum SceneError {
 /// One layer of settings (built-in defaults, a preset, the command line, the app), SI
 /// units, one optional value per key. Later layers override earlier ones with
 /// [`SceneSpec::over`].
-#[derive(Clone, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct SceneSpec {
-    values: [Option<f64>; 17],
+    values: [Option<f64>; PARAMS.len()],
+}
+
+impl Default for SceneSpec {
+    /// The empty layer: it gives nothing.
+    fn default() -> Self {
+        SceneSpec {
+            values: [None; PARAMS.len()],
+        }
+    }
 }
 
 impl SceneSpec {
@@ -142,9 +151,11 @@ impl SceneSpec {
     /// Checks every value and builds the scene and time span: each row writes its
     /// value (or its default) in table order, then the rows that replace others (a
     /// release height's speed needs k and g), each checked against its range and the
-    /// relations between values checked where both are known.
+    /// relations between values checked where both are known. Every number of the
+    /// default scene it starts from is overwritten (`params`' tests check that each
+    /// field is some row's).
     pub fn resolve(&self) -> Result<(Scene, Span), SceneError> {
-        let (mut scene, mut span) = (UNSET, Span::DEFAULT);
+        let (mut scene, mut span) = (Scene::DEFAULT, Span::DEFAULT);
         let own = PARAMS.iter().filter(|p| p.is_own());
         let (first, then): (Vec<&Param>, Vec<&Param>) = own.partition(|p| p.replaces.is_none());
         for p in first.into_iter().chain(then) {

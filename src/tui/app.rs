@@ -11,9 +11,10 @@ mod prompts;
 
 use std::cell::Cell;
 use std::path::PathBuf;
-use std::sync::LazyLock;
+use std::sync::{Arc, LazyLock};
 
 use crate::lab::Lab;
+use crate::lab::jobs::Pool;
 use crate::physics::solution::{EventKind, Solution};
 use crate::settings::params::{Key, PARAMS, Param};
 use crate::settings::spec::SceneError;
@@ -23,6 +24,7 @@ pub use super::vocabulary::{
     Action, ChartBall, Export, FPS, Field, Library, Mode, Prediction, SPEEDS, Status, View,
 };
 
+use super::jobs::{ExportRun, FitRuns, Jobs, MethodRows, Notice, OverlayRun};
 use super::line::History;
 use super::view_cache::ViewCache;
 use super::vocabulary::{DEFAULT_SPEED, WorkAxis};
@@ -49,8 +51,16 @@ pub struct App {
     pub quit: bool,
     pub library: Library,
     pub view: View,
-    /// The overlay's level when one is switched on.
-    pub overlay_level: u8,
+    /// The charts' time-stepping overlay: which run, and its job.
+    pub overlay: OverlayRun,
+    /// The Methods view's rows (its job).
+    pub methods: MethodRows,
+    /// The Fit view's fits and window (their jobs).
+    pub fit: FitRuns,
+    /// The file being written (its job).
+    export: ExportRun,
+    /// The app's jobs on its worker pool.
+    jobs: Jobs,
     /// What the Methods view puts on its work axis.
     pub work_axis: WorkAxis,
     /// First line shown of a scrolling popup (help, data table).
@@ -79,7 +89,13 @@ pub struct App {
 pub const NO_FILES: &str = "render writes no files";
 
 impl App {
+    /// The app on a worker pool of its own.
     pub fn new(lab: Lab, library: Library) -> App {
+        App::with_pool(lab, library, Arc::new(Pool::default()))
+    }
+
+    /// The app whose analyses run on `pool`.
+    pub fn with_pool(lab: Lab, library: Library, pool: Arc<Pool>) -> App {
         App {
             t: lab.solution.t_start,
             lab,
@@ -95,7 +111,11 @@ impl App {
             quit: false,
             library,
             view: View::Charts,
-            overlay_level: 2,
+            overlay: OverlayRun::default(),
+            methods: MethodRows::default(),
+            fit: FitRuns::default(),
+            export: ExportRun::default(),
+            jobs: Jobs::new(pool),
             work_axis: WorkAxis::default(),
             scroll: 0,
             scroll_max: Cell::new(usize::MAX),
@@ -144,6 +164,7 @@ impl App {
             }
             Err(e) => self.status = Status::Error(format!("not applied: {e}")),
         }
+        self.sync_jobs();
     }
 
     /// A parameter's current value as the status line shows it (b hidden if it is).
@@ -239,6 +260,31 @@ impl App {
             self.quit = true;
             return;
         }
+        self.apply_in_mode(action);
+        self.sync_jobs();
+    }
+
+    /// Requests what the views shown want of this scene (a request already made for
+    /// it runs on; one made for an earlier scene is superseded, its result dropped).
+    pub fn sync_jobs(&mut self) {
+        let timed = self.work_axis == WorkAxis::Time;
+        let methods = self.view == View::Methods;
+        self.methods.sync(methods, timed, &self.lab, &self.jobs);
+        self.overlay.sync(&self.lab, &self.jobs);
+        self.fit.sync(self.fit_view(), &self.lab, &self.jobs);
+    }
+
+    /// Whom a finished job notifies (the event loop, on its one channel).
+    pub fn listen(&self, listener: impl Fn(Notice) + Send + Sync + 'static) {
+        self.jobs.listen(listener);
+    }
+
+    /// True while an analysis or an export is queued or runs.
+    pub fn busy(&self) -> bool {
+        self.jobs.busy()
+    }
+
+    fn apply_in_mode(&mut self, action: Action) {
         match self.mode.clone() {
             Mode::Normal => self.apply_normal(action),
             // Scroll keys scroll the help, any other key closes it.
@@ -262,20 +308,25 @@ impl App {
         }
     }
 
-    /// Takes in a finished export (its message goes to the status line); true if one
-    /// arrived. Finished analyses need no taking in: the views read them.
-    pub fn poll(&mut self) -> bool {
-        self.take_export()
+    /// A job's notice: a finished export's message goes to the status line; true if
+    /// the screen changes (every notice: a result or a new percent to show).
+    pub fn on_job(&mut self, notice: Notice) -> bool {
+        if notice == Notice::Export {
+            self.take_export();
+        }
+        true
     }
 
-    /// Waits for every running analysis and export (headless output is deterministic).
+    /// Waits for every analysis the views shown want and every export (headless
+    /// output is deterministic).
     pub fn wait(&mut self) {
-        self.lab.wait();
+        self.sync_jobs();
+        self.jobs.wait();
         self.take_export();
     }
 
     fn take_export(&mut self) -> bool {
-        match self.lab.take_export() {
+        match self.export.take() {
             Some(Ok(done)) => {
                 self.status =
                     Status::Info(format!("wrote {} ({})", done.path.display(), done.what));

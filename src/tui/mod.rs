@@ -5,6 +5,7 @@
 
 pub mod app;
 pub mod canvas;
+pub mod jobs;
 pub mod keys;
 pub mod line;
 pub mod plot;
@@ -25,8 +26,8 @@ use ratatui::crossterm::event::{
 };
 use ratatui::crossterm::{cursor, execute};
 
-use crate::lab::jobs::Waker;
 use app::{Action, App, FPS, Mode};
+use jobs::Notice;
 use theme::{Glyphs, Theme};
 
 /// The theme for this terminal: NO_COLOR (any value) asks for no colours.
@@ -110,7 +111,7 @@ enum Input {
     Terminal(Event),
     /// Reading the terminal failed: the app ends with this error.
     Failed(io::Error),
-    Jobs,
+    Job(Notice),
 }
 
 /// Starts the thread that reads terminal events (blocked, no CPU, until one comes)
@@ -119,12 +120,12 @@ enum Input {
 fn inputs(app: &App) -> io::Result<Receiver<Input>> {
     let (tx, rx) = mpsc::channel();
     let jobs = Mutex::new(tx.clone());
-    app.lab.set_waker(Waker::new(move || {
+    app.listen(move |notice| {
         let _ = jobs
             .lock()
             .unwrap_or_else(PoisonError::into_inner)
-            .send(Input::Jobs);
-    }));
+            .send(Input::Job(notice));
+    });
     std::thread::Builder::new()
         .name("groovelab-terminal".into())
         .spawn(move || {
@@ -179,10 +180,7 @@ fn event_loop(
             dirty |= match input {
                 Input::Terminal(e) => on_terminal(terminal, app, theme, e)?,
                 Input::Failed(e) => return Err(e),
-                Input::Jobs => {
-                    app.poll();
-                    true
-                }
+                Input::Job(notice) => app.on_job(notice),
             };
             if app.playing && !was_playing {
                 last_tick = Instant::now();

@@ -17,11 +17,10 @@ pub fn symmetric(radius: f64, width: f64, mu: f64, v0: f64, e: f64) -> Scene {
         radius,
         width,
         mu,
-        g: 9.81,
         restitution: e,
-        rolling_resistance: 0.0,
         left: Ball { mass: 0.167, v0 },
         right: Ball { mass: 0.167, v0 },
+        ..Scene::default()
     }
 }
 
@@ -128,6 +127,39 @@ pub fn no_user_presets(area: &str) -> Library {
 pub fn app(preset: &str, library: Library) -> App {
     let p = Preset::load(preset).unwrap();
     App::new(Lab::of_preset(p).unwrap(), library)
+}
+
+/// How many analyses ran on an app's pool (work counted, not timed: a repeated request
+/// runs none, a superseded one that had not started none).
+#[derive(Clone, Debug, Default)]
+pub struct Runs(std::sync::Arc<std::sync::atomic::AtomicUsize>);
+
+impl Runs {
+    pub fn get(&self) -> usize {
+        self.0.load(std::sync::atomic::Ordering::SeqCst)
+    }
+}
+
+/// The app on `lab`, its analyses counted on a pool of its own.
+pub fn counted_lab(lab: Lab, library: Library) -> (App, Runs) {
+    let runs = Runs::default();
+    let r = std::sync::Arc::clone(&runs.0);
+    let pool = groovelab::lab::jobs::Pool::observed(
+        groovelab::lab::jobs::WORKERS,
+        std::sync::Arc::new(move || {
+            r.fetch_add(1, std::sync::atomic::Ordering::SeqCst);
+        }),
+    );
+    (
+        App::with_pool(lab, library, std::sync::Arc::new(pool)),
+        runs,
+    )
+}
+
+/// [`app`], its analyses counted.
+pub fn counted(preset: &str, library: Library) -> (App, Runs) {
+    let p = Preset::load(preset).unwrap();
+    counted_lab(Lab::of_preset(p).unwrap(), library)
 }
 
 /// Presses the keys of `script` (the names the help screen shows).

@@ -694,25 +694,25 @@ fn data_without_a_scene_one_rule_for_the_app_render_and_fit() {
 
 #[test]
 fn pinning_keeps_the_snapshots_analyses_and_an_edit_starts_them_over() {
-    let mut a = common::app("paper-b4.9", library());
+    let (mut a, counted) = common::counted("paper-b4.9", library());
     press(&mut a, "f");
-    a.lab.wait();
-    let runs = a.lab.runs();
+    a.wait();
+    let runs = counted.get();
     assert!(runs > 0, "the Fit view's fits ran");
     // Pinning leaves the scene, its span and its data as they were: nothing again.
     press(&mut a, "P");
-    a.lab.wait();
+    a.wait();
     press(&mut a, "P");
-    a.lab.wait();
-    assert_eq!(a.lab.runs(), runs);
+    a.wait();
+    assert_eq!(counted.get(), runs);
     // An edit is a new scene: the fits run again (and again for its undo).
     press(&mut a, "right");
-    a.lab.wait();
-    let edited = a.lab.runs();
+    a.wait();
+    let edited = counted.get();
     assert!(edited > runs, "{edited} after {runs}");
     press(&mut a, "u");
-    a.lab.wait();
-    assert!(a.lab.runs() > edited);
+    a.wait();
+    assert!(counted.get() > edited);
 }
 
 /// `simulate` on these options, in `format`.

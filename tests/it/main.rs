@@ -4,6 +4,7 @@
 #[macro_use]
 mod common;
 
+mod classroom;
 mod cli;
 mod closed_forms;
 mod data_files;
@@ -11,6 +12,7 @@ mod data_scene;
 mod exports;
 mod fit;
 mod forces;
+mod formats;
 mod fuzz;
 mod headless;
 mod lab_data;

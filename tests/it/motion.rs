@@ -684,7 +684,7 @@ fn new_screens_need_no_ascii_stand_ins() {
         ] {
             let mut a = app(preset);
             press(&mut a, keys);
-            a.lab.wait();
+            a.wait();
             for (w, h) in SIZES {
                 let cells = view::non_ascii_cells(&a, w, h, &theme);
                 assert!(cells.is_empty(), "{preset} {keys:?} {w}x{h}: {cells:?}");

@@ -28,7 +28,7 @@ fn app(preset: &str, values: SceneSpec, data: Option<&str>, keys_: &str) -> App 
         common::no_user_presets("numbers"),
     );
     replay(&mut a, &keys::parse_script(keys_).unwrap());
-    a.lab.wait();
+    a.wait();
     a
 }
 
@@ -218,7 +218,7 @@ fn the_why_panel_shows_the_labs_numbers() {
 fn the_methods_runs_panel_never_cuts_an_error() {
     let a = app("paper-b4.9", SceneSpec::default(), None, "c");
     for size in SIZES {
-        let State::Ready(rows) = a.lab.method_rows() else {
+        let State::Ready(rows) = a.methods.state() else {
             panic!("the rows are computed");
         };
         let lines = panel(&a, size, |p| p.info);
@@ -270,7 +270,7 @@ fn the_methods_runs_panel_never_cuts_an_error() {
 fn the_fit_panel_shows_the_fits_numbers() {
     let a = app("paper-b4.9", SceneSpec::default(), None, "f");
     for size in SIZES {
-        let State::Ready(Ok(f)) = a.lab.fits() else {
+        let State::Ready(Ok(f)) = a.fit.fits() else {
             panic!("the fit is computed");
         };
         let text = joined(&panel(&a, size, |p| p.info));
@@ -313,7 +313,7 @@ fn the_fit_panel_shows_the_fits_numbers() {
         "f",
     );
     for size in SIZES {
-        let State::Ready(Ok(f)) = a.lab.fits() else {
+        let State::Ready(Ok(f)) = a.fit.fits() else {
             panic!("the fits are computed");
         };
         let (v, p) = (f.velocity_fit.as_ref().unwrap(), &f.model_fit);

@@ -24,7 +24,6 @@ fn scene(width: f64, mu: f64, e: f64, masses: (f64, f64), speeds: (f64, f64), c_
         radius: RADIUS,
         width,
         mu,
-        g: 9.81,
         restitution: e,
         rolling_resistance: c_rr,
         left: Ball {
@@ -35,6 +34,7 @@ fn scene(width: f64, mu: f64, e: f64, masses: (f64, f64), speeds: (f64, f64), c_
             mass: masses.1,
             v0: speeds.1,
         },
+        ..Scene::default()
     }
 }
 

@@ -1,15 +1,16 @@
-//! The README's console examples are tests: every `$ groovelab …` line of a ```console
-//! block in README.md is run, and its output compared with the lines below it (trycmd).
-//! A change that alters an example fails here until the README shows the new output.
-//! Wildcards: `[..]` matches the rest of a line, `...` on a line of its own any lines;
-//! the README uses them only for timings, and says so beside each example.
+//! The documents' console examples are tests: every `$ groovelab …` line of a ```console
+//! block in README.md and docs/guide.md is run, and its output compared with the lines
+//! below it (trycmd). A change that alters an example fails here until the document
+//! shows the new output. Wildcards: `[..]` matches the rest of a line, `...` on a line
+//! of its own any lines; the documents use them only for timings and for long outputs
+//! they cut, and say so beside each example.
 //!
-//! The examples run in a sandbox: a copy of README.md in a fresh folder beside
-//! `README.in/`, which holds the files the examples read (`bad.csv`, the video track),
-//! and `README.out/`, which makes trycmd copy that folder before running (so
-//! `--output map.svg` writes into the copy). User presets come from an empty folder, so
-//! `presets` lists exactly the built-in ones. The failure report names the copy; fix
-//! the README itself.
+//! The examples run in a sandbox: a copy of each document (`README.md`, `guide.md`) in
+//! a fresh folder beside `NAME.in/`, which holds the files the examples read (`bad.csv`,
+//! the video tracks), and `NAME.out/`, which makes trycmd copy that folder before
+//! running (so `--output map.svg` writes into the copy). User presets come from an empty
+//! folder, so `presets` lists exactly the built-in ones. The failure report names the
+//! copy; fix the document itself.
 
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -21,53 +22,96 @@ fn copy(from: &Path, to: &Path) {
     fs::copy(from, to).unwrap_or_else(|e| panic!("{}: {e}", from.display()));
 }
 
-/// A fresh folder for the examples, with README.md and its fixtures.
+/// The documents whose examples are tests, by path in the repository.
+const DOCUMENTS: [&str; 2] = ["README.md", "docs/guide.md"];
+
+/// A fresh folder for the examples, with each document and its fixtures.
 fn sandbox() -> PathBuf {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("readme-examples");
     let _ = fs::remove_dir_all(&dir);
-    copy(&root.join("README.md"), &dir.join("README.md"));
-    let input = dir.join("README.in");
-    for file in [
-        "docs/video/paper-b4.9-tracker.txt",
-        "docs/video/ball.txt",
-        "docs/video/mark.txt",
-        "docs/video/logger-pro.csv",
-    ] {
-        copy(&root.join(file), &input.join(file));
+    for doc in DOCUMENTS {
+        let name = Path::new(doc).file_stem().unwrap().to_str().unwrap();
+        copy(&root.join(doc), &dir.join(format!("{name}.md")));
+        let input = dir.join(format!("{name}.in"));
+        for file in [
+            "docs/video/paper-b4.9-tracker.txt",
+            "docs/video/ball.txt",
+            "docs/video/mark.txt",
+            "docs/video/logger-pro.csv",
+        ] {
+            copy(&root.join(file), &input.join(file));
+        }
+        // The guide's broken file: line 3 holds a v_cm that is not a number.
+        fs::write(
+            input.join("bad.csv"),
+            "t,v_cm,v_t\n0.00,0.61,0.55\n0.01,abc,0.56\n",
+        )
+        .unwrap();
+        let out = dir.join(format!("{name}.out"));
+        fs::create_dir_all(&out).unwrap();
+        fs::write(out.join(".keep"), "").unwrap();
     }
-    // The README's broken file: line 3 holds a v_cm that is not a number.
-    fs::write(
-        input.join("bad.csv"),
-        "t,v_cm,v_t\n0.00,0.61,0.55\n0.01,abc,0.56\n",
-    )
-    .unwrap();
-    fs::create_dir_all(dir.join("README.out")).unwrap();
-    fs::write(dir.join("README.out/.keep"), "").unwrap();
     fs::create_dir_all(dir.join("no-presets")).unwrap();
     dir
 }
 
-#[test]
-fn every_console_example_prints_what_the_readme_shows() {
-    let dir = sandbox();
-    trycmd::TestCases::new()
+fn examples_run(dir: &Path) -> trycmd::TestCases {
+    let cases = trycmd::TestCases::new();
+    cases
         .register_bin("groovelab", Path::new(env!("CARGO_BIN_EXE_groovelab")))
         .env(
             "GROOVELAB_PRESETS",
             dir.join("no-presets").display().to_string(),
         )
-        .env("NO_COLOR", "1")
-        .case(dir.join("README.md"));
+        .env("NO_COLOR", "1");
+    cases
 }
 
-/// The README's screens are tests too: each ```text block followed by
+#[test]
+fn every_console_example_prints_what_the_documents_show() {
+    let dir = sandbox();
+    let cases = examples_run(&dir);
+    for doc in DOCUMENTS {
+        let name = Path::new(doc).file_stem().unwrap().to_str().unwrap();
+        cases.case(dir.join(format!("{name}.md")));
+    }
+}
+
+/// Each document holds examples: a document whose blocks stopped being ```console
+/// (and so stopped being run) fails here.
+#[test]
+fn each_document_has_examples_that_run() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    for (doc, least) in [("README.md", 6), ("docs/guide.md", 15)] {
+        let text = fs::read_to_string(root.join(doc)).unwrap();
+        let mut in_console = false;
+        let mut commands = 0;
+        for line in text.lines() {
+            if line.starts_with("```") {
+                in_console = line == "```console";
+            } else if in_console && line.starts_with("$ groovelab ") {
+                commands += 1;
+            }
+        }
+        assert!(commands >= least, "{doc}: {commands} examples run");
+    }
+}
+
+/// The documents' screens are tests too: each ```text block followed by
 /// "(`groovelab render …` prints exactly this.)" is what that command prints now.
 #[test]
-fn every_screen_in_the_readme_is_what_render_prints() {
-    let readme =
-        fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("README.md")).unwrap();
-    let lines: Vec<&str> = readme.lines().collect();
+fn every_screen_in_the_documents_is_what_render_prints() {
+    for (doc, least) in [("README.md", 1), ("docs/guide.md", 2)] {
+        let text = fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join(doc)).unwrap();
+        let checked = screens_are_what_render_prints(doc, &text);
+        assert!(checked >= least, "{doc}: {checked} screens checked");
+    }
+}
+
+/// Checks each screen of one document; returns how many it checked.
+fn screens_are_what_render_prints(doc: &str, text: &str) -> usize {
+    let lines: Vec<&str> = text.lines().collect();
     let mut checked = 0;
     let mut i = 0;
     while i < lines.len() {
@@ -89,7 +133,7 @@ fn every_screen_in_the_readme_is_what_render_prints() {
             let printed: Vec<&str> = printed.lines().collect();
             assert!(
                 printed == block,
-                "README.md line {}: `groovelab {}` prints\n{}",
+                "{doc} line {}: `groovelab {}` prints\n{}",
                 i + 2,
                 args.join(" "),
                 printed.join("\n")
@@ -98,8 +142,5 @@ fn every_screen_in_the_readme_is_what_render_prints() {
         }
         i = end + 1;
     }
-    assert!(
-        checked >= 2,
-        "the main screen and the Forces view are checked"
-    );
+    checked
 }

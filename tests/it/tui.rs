@@ -484,7 +484,7 @@ fn ascii_mode_emits_only_seven_bit_characters() {
         ] {
             let mut a = app(&p.name);
             press(&mut a, keys);
-            a.lab.wait();
+            a.wait();
             for t in [-0.1f64, 0.05, 0.3, 10.0] {
                 a.t = t.clamp(a.lab.solution.t_start, a.lab.solution.t_end);
                 for size in [(80, 24), (120, 40), (60, 20)] {
@@ -661,8 +661,8 @@ fn methods_view_and_overlay() {
     let mut a = app("paper-b4.9");
     press(&mut a, "c");
     assert_eq!(a.view, View::Methods);
-    a.lab.wait();
-    let State::Ready(rows) = a.lab.method_rows() else {
+    a.wait();
+    let State::Ready(rows) = a.methods.state() else {
         panic!("the rows are there once the lab has waited")
     };
     assert_eq!(rows.len(), 20, "five methods at four levels");
@@ -681,16 +681,16 @@ fn methods_view_and_overlay() {
     );
     a.t = t;
     press(&mut a, "c o");
-    a.lab.wait();
-    let State::Ready(o) = a.lab.overlay() else {
+    a.wait();
+    let State::Ready(o) = a.overlay.state() else {
         panic!("an overlay")
     };
     assert_eq!(o.method, groovelab::methods::Method::Euler);
     assert_eq!(o.row.status, groovelab::study::compare::RunStatus::Chatter);
     assert!(screen_of(&a).contains("euler h 1e-3 (chatter)"));
     press(&mut a, "[ [");
-    a.lab.wait();
-    let overlay = |a: &App| match a.lab.overlay() {
+    a.wait();
+    let overlay = |a: &App| match a.overlay.state() {
         State::Ready(o) => Some(o.clone()),
         _ => None,
     };
@@ -698,7 +698,7 @@ fn methods_view_and_overlay() {
     // A scene change re-runs the overlay.
     select(&mut a, Key::Mu);
     press(&mut a, "right");
-    a.lab.wait();
+    a.wait();
     assert_eq!(
         overlay(&a).unwrap().row.method,
         groovelab::methods::Method::Euler
@@ -722,8 +722,8 @@ fn the_methods_view_of_a_long_span_is_cut_and_says_where() {
     let mut a = App::new(lab, no_user_presets());
     assert!(a.lab.solution.t_end > 1e5);
     press(&mut a, "c");
-    a.lab.wait();
-    let State::Ready(rows) = a.lab.method_rows() else {
+    a.wait();
+    let State::Ready(rows) = a.methods.state() else {
         panic!("the rows are there once the lab has waited")
     };
     let end = span.t_start + WINDOW;
@@ -747,38 +747,38 @@ fn the_methods_view_of_a_long_span_is_cut_and_says_where() {
 fn methods_view_work_axis_outcome_and_order() {
     let mut a = app("paper-b4.9");
     press(&mut a, "c");
-    a.lab.wait();
+    a.wait();
     let s = screen_of(&a);
     assert!(s.contains("against steps per run"), "{s}");
     assert!(s.contains("= outcome right (recollide, 20 impacts)"), "{s}");
     assert!(s.contains("order: e "), "{s}");
     // Untimed until the time axis asks (the timing runs cost more than the rest);
     // timed on the narrow groove, whose runs are fewer.
-    let mut a = app("paper-b3.5");
+    let (mut a, counted) = common::counted("paper-b3.5", no_user_presets());
     press(&mut a, "c");
-    a.lab.wait();
-    let times = |a: &App| match a.lab.method_rows() {
+    a.wait();
+    let times = |a: &App| match a.methods.state() {
         State::Ready(rows) => rows.iter().map(|r| r.time_median_s).collect::<Vec<_>>(),
         _ => panic!("the rows are there once the lab has waited"),
     };
-    let runs = a.lab.runs();
+    let runs = counted.get();
     assert!(times(&a).iter().all(|&t| t == 0.0));
     press(&mut a, "X");
-    a.lab.wait();
+    a.wait();
     let s = screen_of(&a);
     assert!(s.contains("against rhs evaluations per run"), "{s}");
-    assert_eq!(a.lab.runs(), runs, "the rhs axis needs no new rows");
+    assert_eq!(counted.get(), runs, "the rhs axis needs no new rows");
     press(&mut a, "X");
-    a.lab.wait();
+    a.wait();
     let s = screen_of(&a);
     assert!(s.contains("against time per run"), "{s}");
     assert!(times(&a).iter().all(|&t| t > 0.0), "{:?}", times(&a));
-    assert_eq!(a.lab.runs(), runs + 1, "timed once");
+    assert_eq!(counted.get(), runs + 1, "timed once");
     press(&mut a, "X");
-    a.lab.wait();
+    a.wait();
     assert!(screen_of(&a).contains("against steps per run"));
     assert_eq!(
-        a.lab.runs(),
+        counted.get(),
         runs + 1,
         "the timed rows serve the steps axis too"
     );
@@ -1016,7 +1016,7 @@ fn f_switches_to_the_fit_view_from_any_view() {
     press(&mut a, "c f");
     assert_eq!(a.view, View::Fit);
     assert!(a.fit_view());
-    a.lab.wait();
+    a.wait();
     assert!(screen_of(&a).contains("model fit to every frame"));
     press(&mut a, "g");
     assert_eq!(a.view, View::Map, "g leaves the Fit view for the map");
@@ -1256,8 +1256,8 @@ fn a_applies_the_fitted_mu_in_the_fit_view() {
     press(&mut a, "a");
     assert!(matches!(&a.status, Status::Error(e) if e.contains("Fit view")));
     press(&mut a, "f");
-    a.lab.wait();
-    let State::Ready(Ok(f)) = a.lab.fits() else {
+    a.wait();
+    let State::Ready(Ok(f)) = a.fit.fits() else {
         panic!("a fit")
     };
     let mu = f.model_fit.mu;
@@ -1293,8 +1293,8 @@ fn a_applies_the_position_fit_of_a_track() {
         Some("f"),
         common::no_user_presets("tui"),
     );
-    a.lab.wait();
-    let State::Ready(Ok(f)) = a.lab.fits() else {
+    a.wait();
+    let State::Ready(Ok(f)) = a.fit.fits() else {
         panic!("the fits")
     };
     let velocity = f.velocity_fit.as_ref().map(|v| v.mu).unwrap();
@@ -1564,11 +1564,11 @@ fn the_fit_window_stays_after_the_impact_and_never_runs_backwards() {
         for _ in 0..25 {
             press(&mut a, keys);
         }
-        a.lab.wait();
-        let (from, to) = (a.lab.fit_window.0.unwrap(), a.lab.fit_window.1.unwrap());
+        a.wait();
+        let (from, to) = (a.fit.window.0.unwrap(), a.fit.window.1.unwrap());
         assert!(from > 0.0 && from < to, "{keys}: {from} … {to}");
         assert!(
-            matches!(a.lab.fits(), State::Ready(Ok(_))),
+            matches!(a.fit.fits(), State::Ready(Ok(_))),
             "{keys}: the fit stays"
         );
     }

@@ -4,33 +4,37 @@
 //! gives a [`RawSeries`] in SI units and nothing that depends on the scene: deriving
 //! velocities for a scene is `study::measured`'s.
 
+mod cmbl;
+mod detect;
+mod notes;
 mod options;
 mod positions;
+mod report;
 mod scales;
 mod scene;
 mod table;
+mod trk;
 mod velocities;
+mod vernier;
+mod xml;
 
+pub use detect::read_with_notes;
+pub use notes::{Notes, UnitNote};
 pub use options::{DataError, MAX_ROWS, Reading};
+pub use report::{Gap, Report, inspect};
 pub use scene::scene_of;
+pub use table::file_unit;
 pub use velocities::detect_impact;
 
 use crate::study::measured::{self, Derive, RawSeries, Series, Track};
 use table::Table;
 
-/// Reads `text` (the file named `file`): a velocity file when its header names t, v_cm
-/// and v_t, else a position track (Tracker, Logger Pro, or CSV/TSV with t, x, y).
+/// Reads `text` (the file named `file`): a Tracker project (`.trk`), a Logger Pro
+/// file (`.cmbl`) or text export (Vernier Format 2), else a table: a velocity file
+/// when its header names t, v_cm and v_t, else a position track (Tracker, Logger Pro,
+/// or CSV/TSV with t, x, y).
 pub fn read(text: &str, file: &str, reading: &Reading) -> Result<RawSeries, DataError> {
-    let table = Table::new(text);
-    let velocities = table
-        .rows()
-        .next()
-        .is_some_and(|header| (0..header.len()).any(|i| velocities::names_v_cm(header.cell(i))));
-    if velocities {
-        velocities::from_table(&table, file, reading).map(RawSeries::Velocities)
-    } else {
-        positions::from_table(&table, file, reading).map(RawSeries::Positions)
-    }
+    detect::read_with_notes(text, file, reading).map(|(raw, _)| raw)
 }
 
 /// Reads a position track (see [`read`]); a velocity file is an error here.

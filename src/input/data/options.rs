@@ -13,12 +13,15 @@ pub struct DataError {
 /// How to read a file beyond what its header says.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Reading {
-    /// Seconds per time unit of the file, when the header does not say (1 = s).
+    /// Seconds per time unit of the file (1 = s); wins over the header's.
     pub time_unit: Option<f64>,
-    /// m/s per speed unit of the file, when the header does not say.
+    /// m/s per speed unit of the file; wins over the header's.
     pub speed_unit: Option<f64>,
-    /// Metres per length unit of a position file, when the header does not say.
+    /// Metres per length unit of a position file (wins over the header's).
     pub length_unit: Option<f64>,
+    /// Metres per pixel of a video track in pixels (a Tracker or Logger Pro file whose
+    /// video was not calibrated), from `--scale`.
+    pub scale: Option<f64>,
     /// Time of the first impact in the file's time (after units); detected if absent.
     pub impact_at: Option<f64>,
     /// Which track (Tracker) or column prefix holds the ball's centre, e.g. "mass A"

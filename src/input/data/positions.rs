@@ -6,35 +6,48 @@
 //! columns only (velocities and the like are ignored), converts to SI, keeps empty and
 //! `NaN` cells as missing. The velocities are derived in `study::measured`.
 
+use super::notes::{Notes, UnitNote};
 use super::options::{DataError, MAX_ROWS, Reading};
-use super::scales::{Given, check_track};
+use super::scales::{Given, LENGTHS, TIMES, check_track};
 use super::table::{Row, Sep, Table, clean, missing, number, unit_factor};
 use crate::settings::units::Dimension;
 use crate::study::measured::Track;
 
 /// One header cell of a position file: which track, which axis, its SI factor.
 #[derive(Clone, Debug, PartialEq)]
-struct Col {
-    track: String,
-    axis: Axis,
-    factor: Option<f64>,
+pub(super) struct Col {
+    pub track: String,
+    pub axis: Axis,
+    pub factor: Option<f64>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Axis {
+pub(super) enum Axis {
     T,
     X,
     Y,
 }
 
-/// Symbols of other quantities that share a column name with an axis: Tracker's
-/// `v_x`, `a_y`, `p_x` are a velocity, an acceleration and a momentum, not positions.
-const OTHER_QUANTITIES: [&str; 6] = ["v", "a", "p", "f", "θ", "ω"];
+/// Symbols and names of other quantities that share a column name with an axis:
+/// Tracker's `v_x`, `a_y`, `p_x`, Logger Pro's `X Velocity` are a velocity, an
+/// acceleration and a momentum, not positions.
+const OTHER_QUANTITIES: [&str; 10] = [
+    "v",
+    "a",
+    "p",
+    "f",
+    "θ",
+    "ω",
+    "velocity",
+    "acceleration",
+    "speed",
+    "momentum",
+];
 
 /// Reads a header cell such as `t`, `t/ms`, `x (cm)`, `mass A x`, `x_mark [mm]`,
 /// `y_cm` (unit as suffix), `Latest: X2 (m)` (a second point). `None` for other
 /// columns (`v_x`, `v_{x}`, `frame`, …) and for a unit that does not fit the axis.
-fn position_column(cell: &str) -> Option<Col> {
+pub(super) fn position_column(cell: &str) -> Option<Col> {
     let h = clean(cell);
     // A unit in brackets or after a slash.
     let (name, unit) = match h.find(['(', '[', '/']) {
@@ -187,7 +200,10 @@ fn name_tracks(cols: &mut [Option<Col>], before: &[Row], sep: Sep) -> Result<&'s
 
 /// The centre's and the mark's track names among `names` (tracks with an x column, in
 /// file order): as the options say, else by their names, else the first two.
-fn pick_roles(names: &[String], reading: &Reading) -> Result<(String, Option<String>), String> {
+pub(super) fn pick_roles(
+    names: &[String],
+    reading: &Reading,
+) -> Result<(String, Option<String>), String> {
     let pick = |want: &Option<String>, defaults: &[&str], role: &str| match want {
         Some(w) => names
             .iter()
@@ -241,6 +257,15 @@ pub fn parse(text: &str, file: &str, reading: &Reading) -> Result<Track, DataErr
 
 /// [`parse`] of a file already split into rows.
 pub(super) fn from_table(table: &Table, file: &str, reading: &Reading) -> Result<Track, DataError> {
+    read_table(table, file, reading).map(|(track, _)| track)
+}
+
+/// [`from_table`] with what the file said about itself ([`Notes`]).
+pub(super) fn read_table(
+    table: &Table,
+    file: &str,
+    reading: &Reading,
+) -> Result<(Track, Notes), DataError> {
     let err = |what: String| DataError {
         file: file.to_string(),
         what,
@@ -283,13 +308,7 @@ pub(super) fn from_table(table: &Table, file: &str, reading: &Reading) -> Result
         },
         None => None,
     };
-    let factor = |i: usize, unit: Option<f64>| {
-        cols[i]
-            .as_ref()
-            .and_then(|c| c.factor)
-            .or(unit)
-            .unwrap_or(1.0)
-    };
+    let units = Decided::new(&cols, reading);
     let mut track = Track {
         centre_name: centre.clone(),
         mark_name: im.and(mark.clone()),
@@ -298,15 +317,10 @@ pub(super) fn from_table(table: &Table, file: &str, reading: &Reading) -> Result
         ..Track::default()
     };
     let columns = Columns {
-        t: (it, factor(it, reading.time_unit)),
-        x: (ix, factor(ix, reading.length_unit)),
-        y: iy.map(|i| (i, factor(i, reading.length_unit))),
-        mark: im.map(|(a, b)| {
-            (
-                (a, factor(a, reading.length_unit)),
-                (b, factor(b, reading.length_unit)),
-            )
-        }),
+        t: (it, units.factor(it, Axis::T)),
+        x: (ix, units.factor(ix, Axis::X)),
+        y: iy.map(|i| (i, units.factor(i, Axis::Y))),
+        mark: im.map(|(a, b)| ((a, units.factor(a, Axis::X)), (b, units.factor(b, Axis::Y)))),
     };
     read_rows(rows, &columns, &mut track).map_err(err)?;
     if track.x.iter().filter(|x| x.is_finite()).count() == 0 {
@@ -315,15 +329,68 @@ pub(super) fn from_table(table: &Table, file: &str, reading: &Reading) -> Result
             if centre.is_empty() { "x" } else { &centre }
         )));
     }
-    let given = |i: usize, option: Option<f64>| {
-        option.is_some() || cols[i].as_ref().is_some_and(|c| c.factor.is_some())
+    let given = units.given(it, ix);
+    check_track(&track, &given).map_err(err)?;
+    let notes = Notes {
+        format: format.to_string(),
+        tracks: names,
+        units: vec![
+            UnitNote::of("time", &TIMES, given.time.0, given.time.1),
+            UnitNote::of("length", &LENGTHS, given.length.0, given.length.1),
+        ],
     };
-    let given = Given {
-        time: given(it, reading.time_unit),
-        length: given(ix, reading.length_unit),
-    };
-    check_track(&track, given).map_err(err)?;
-    Ok(track)
+    Ok((track, notes))
+}
+
+/// Each column's unit: an option given wins over the header (a header that states a
+/// wrong unit is set right by the option its error names), else SI.
+struct Decided<'a> {
+    cols: &'a [Option<Col>],
+    time: Option<f64>,
+    length: Option<f64>,
+    length_flag: &'static str,
+}
+
+impl Decided<'_> {
+    fn new<'a>(cols: &'a [Option<Col>], reading: &Reading) -> Decided<'a> {
+        Decided {
+            cols,
+            time: reading.time_unit,
+            length: reading.length_unit.or(reading.scale),
+            length_flag: if reading.length_unit.is_some() {
+                "--length-unit"
+            } else {
+                "--scale"
+            },
+        }
+    }
+
+    fn header(&self, i: usize) -> Option<f64> {
+        self.cols[i].as_ref().and_then(|c| c.factor)
+    }
+
+    fn factor(&self, i: usize, axis: Axis) -> f64 {
+        let option = if axis == Axis::T {
+            self.time
+        } else {
+            self.length
+        };
+        option.or(self.header(i)).unwrap_or(1.0)
+    }
+
+    /// Who decided the time column `t`'s and the x column `x`'s units.
+    fn given(&self, t: usize, x: usize) -> Given {
+        let by = |option: Option<f64>, flag: &'static str, i: usize| match (option, self.header(i))
+        {
+            (Some(f), _) => (f, Some(flag)),
+            (None, Some(f)) => (f, Some("the header")),
+            (None, None) => (1.0, None),
+        };
+        Given {
+            time: by(self.time, "--time-unit", t),
+            length: by(self.length, self.length_flag, x),
+        }
+    }
 }
 
 /// The tracks with an x column, in file order, or why the header has none.

@@ -32,7 +32,7 @@ pub fn frame_spacing(t: &[f64]) -> f64 {
 /// time, so a tilted camera frame counts the same); `None` with fewer than two such
 /// frames. Not the median: a recording may roll slowly for most of its frames after
 /// the impact; not the largest: one glitch would be it.
-fn approach_speed(track: &Track) -> Option<f64> {
+pub fn approach_speed(track: &Track) -> Option<f64> {
     let mut speeds: Vec<f64> = (1..track.t.len())
         .filter_map(|i| {
             let dx = track.x[i] - track.x[i - 1];
@@ -53,38 +53,100 @@ fn approach_speed(track: &Track) -> Option<f64> {
     Some(speeds[(speeds.len() * 9 / 10).min(speeds.len() - 1)])
 }
 
-/// Which units a position file's header or the options gave.
-#[derive(Clone, Copy, Debug)]
+/// How a position file's units were decided: each unit's SI factor and who said it
+/// (`Some("the header")`, `Some("--time-unit")`; `None`: nobody, SI was assumed).
+#[derive(Clone, Debug)]
 pub struct Given {
-    pub time: bool,
-    pub length: bool,
+    pub time: (f64, Option<&'static str>),
+    pub length: (f64, Option<&'static str>),
 }
 
-/// A position track read in SI where no unit was given: refused when its frames are a
-/// second or more apart (ms, not s), or its ball moves at 10 m/s or more (cm or mm,
-/// not m; or, with units given, units that do not fit); or below 1 mm/s in any unit
-/// (metres read as mm). The message says what the numbers look like and names the
-/// option.
-pub fn check_track(track: &Track, given: Given) -> Result<(), String> {
+/// Candidate units of a dimension that a plausibility error may name.
+pub const TIMES: [(&str, f64); 3] = [("s", 1.0), ("ms", 1e-3), ("us", 1e-6)];
+pub const LENGTHS: [(&str, f64); 3] = [("m", 1.0), ("cm", 1e-2), ("mm", 1e-3)];
+pub const SPEEDS: [(&str, f64); 3] = [("m/s", 1.0), ("cm/s", 1e-2), ("mm/s", 1e-3)];
+
+/// The name of the candidate unit of SI factor `factor`, if it is one.
+pub fn unit_name(units: &[(&'static str, f64)], factor: f64) -> Option<&'static str> {
+    units
+        .iter()
+        .find(|(_, f)| (f / factor - 1.0).abs() < 1e-9)
+        .map(|(n, _)| *n)
+}
+
+/// Of `units`, the one other than `current` (SI factor) under which a value read as
+/// `value` (SI, in the current unit) comes nearest to `typical` while `fits`.
+pub fn fitting(
+    units: &[(&'static str, f64)],
+    current: f64,
+    value: f64,
+    typical: f64,
+    fits: impl Fn(f64) -> bool,
+) -> Option<&'static str> {
+    units
+        .iter()
+        .filter(|(_, f)| (f / current - 1.0).abs() > 1e-9)
+        .map(|&(n, f)| (n, value / current * f))
+        .filter(|&(_, v)| fits(v))
+        .min_by(|a, b| {
+            let off = |v: f64| (v / typical).log10().abs();
+            off(a.1).total_cmp(&off(b.1))
+        })
+        .map(|(n, _)| n)
+}
+
+/// What to do about a unit that does not fit: the option, and the header's fix when
+/// the header said it.
+fn advice(flag: &str, unit: &str, header: &str, said_by: Option<&str>) -> String {
+    match said_by {
+        Some("the header") => format!("fix the header ({header} ({unit})) or give --{flag} {unit}"),
+        _ => format!("give --{flag} {unit}"),
+    }
+}
+
+/// A position track checked in the units it was read in: refused when its frames are
+/// a second or more apart (ms, not s), or its ball moves at 10 m/s or more (cm or mm,
+/// not m), or below 1 mm/s (metres read as mm), whether the units were stated or
+/// assumed. The message says what the numbers look like and names the unit that fits.
+pub fn check_track(track: &Track, given: &Given) -> Result<(), String> {
     let frame = frame_spacing(&track.t);
-    if !given.time && frame >= LONGEST_FRAME {
-        return Err(format!(
-            "the header gives no time unit and the times do not look like s: frames {} apart (as s: {:.1} frames/s; as ms: {:.0} frames/s); if they are ms, give --time-unit ms (or a unit in the header: t (ms))",
-            significant(frame, 3),
-            1.0 / frame,
-            1e3 / frame
-        ));
+    let (tf, t_by) = given.time;
+    let (lf, l_by) = given.length;
+    if frame >= LONGEST_FRAME {
+        let unit = fitting(&TIMES, tf, frame, 0.01, |f| f < LONGEST_FRAME).unwrap_or("ms");
+        return Err(match t_by {
+            None => format!(
+                "the header gives no time unit and the times do not look like s: frames {} apart (as s: {:.1} frames/s; as ms: {:.0} frames/s); if they are ms, give --time-unit ms (or a unit in the header: t (ms))",
+                significant(frame, 3),
+                1.0 / frame,
+                1e3 / frame
+            ),
+            Some(by) => format!(
+                "in the time unit {by} gives the frames are {} s apart ({:.2} frames/s), slower than any video: if the times are {unit}, {}",
+                significant(frame, 3),
+                1.0 / frame,
+                advice("time-unit", unit, "t", t_by)
+            ),
+        });
     }
     let Some(speed) = approach_speed(track) else {
         return Ok(());
     };
+    let plausible = |v: f64| (SLOWEST_BALL..FASTEST_BALL).contains(&v);
     if speed < SLOWEST_BALL {
+        let named = fitting(&LENGTHS, lf, speed, TYPICAL_SPEED, plausible)
+            .map(|u| {
+                format!(
+                    ": if the positions are {u}, {}",
+                    advice("length-unit", u, "x", l_by)
+                )
+            })
+            .unwrap_or_else(|| ": check the length unit (--length-unit, or the header's)".into());
         return Err(format!(
-            "read in {} the ball approaches at {} m/s, slower than any ball in a groove (at least {SLOWEST_BALL} m/s): check the length unit (--length-unit, or the header's)",
-            if given.length {
-                "the length unit given"
-            } else {
-                "metres"
+            "read in {} the ball approaches at {} m/s, slower than any ball in a groove (at least {SLOWEST_BALL} m/s){named}",
+            match l_by {
+                Some(by) => format!("the length unit {by} gives"),
+                None => "metres".into(),
             },
             significant(speed, 3),
         ));
@@ -92,14 +154,8 @@ pub fn check_track(track: &Track, given: Given) -> Result<(), String> {
     if speed < FASTEST_BALL {
         return Ok(());
     }
-    if !given.length && !given.time {
-        let (unit, _) = [("cm", 1e-2), ("mm", 1e-3)]
-            .into_iter()
-            .min_by(|a, b| {
-                let off = |f: f64| (speed * f / TYPICAL_SPEED).log10().abs();
-                off(a.1).total_cmp(&off(b.1))
-            })
-            .expect("two units");
+    if l_by.is_none() && t_by.is_none() {
+        let unit = fitting(&LENGTHS, lf, speed, TYPICAL_SPEED, plausible).unwrap_or("mm");
         return Err(format!(
             "the header gives no length unit and the positions do not look like metres: as m the ball approaches at {} m/s (as cm {} m/s, as mm {} m/s); if they are {unit}, give --length-unit {unit} (or units in the header: x ({unit}), y ({unit}))",
             significant(speed, 3),
@@ -107,8 +163,15 @@ pub fn check_track(track: &Track, given: Given) -> Result<(), String> {
             significant(speed * 1e-3, 3),
         ));
     }
+    let named = match fitting(&LENGTHS, lf, speed, TYPICAL_SPEED, plausible) {
+        Some(u) if unit_name(&LENGTHS, lf).is_some() => format!(
+            "; if the positions are {u}, {}",
+            advice("length-unit", u, "x", l_by)
+        ),
+        _ => String::new(),
+    };
     Err(format!(
-        "in the units given the frames are {} s apart and the ball approaches at {} m/s, beyond any ball in a groove (below {FASTEST_BALL} m/s): check the time and length units (--time-unit, --length-unit, or the header's)",
+        "in the units given the frames are {} s apart and the ball approaches at {} m/s, beyond any ball in a groove (below {FASTEST_BALL} m/s): check the time and length units (--time-unit, --length-unit, or the header's){named}",
         significant(frame, 3),
         significant(speed, 3),
     ))
@@ -143,33 +206,51 @@ mod tests {
     #[test]
     fn the_unit_named_is_the_one_that_gives_a_lab_speed() {
         let none = Given {
-            time: false,
-            length: false,
+            time: (1.0, None),
+            length: (1.0, None),
         };
-        assert!(check_track(&track(0.6), none).is_ok());
-        // Metres read as mm: 0.6 mm/s.
+        assert!(check_track(&track(0.6), &none).is_ok());
+        // Metres read as mm: 0.6 mm/s; the header said mm.
         let mm = Given {
-            time: false,
-            length: true,
+            time: (1.0, None),
+            length: (1e-3, Some("the header")),
         };
-        let e = check_track(&track(0.6e-3), mm).unwrap_err();
+        let e = check_track(&track(0.6e-3), &mm).unwrap_err();
         assert!(
-            e.contains("slower than any ball") && e.contains("--length-unit"),
+            e.contains("slower than any ball")
+                && e.contains(
+                    "if the positions are m, fix the header (x (m)) or give --length-unit m"
+                ),
             "{e}"
         );
         // Mostly the slow roll after the impact: the approach still decides.
-        let e = check_track(&track(60.0), none).unwrap_err();
+        let e = check_track(&track(60.0), &none).unwrap_err();
         assert!(
             e.contains("approaches at 60 m/s") && e.contains("--length-unit cm"),
             "{e}"
         );
-        let e = check_track(&track(600.0), none).unwrap_err();
+        let e = check_track(&track(600.0), &none).unwrap_err();
         assert!(e.contains("--length-unit mm"), "{e}");
         let given = Given {
-            time: true,
-            length: false,
+            time: (1.0, Some("--time-unit")),
+            length: (1.0, None),
         };
-        let e = check_track(&track(600.0), given).unwrap_err();
-        assert!(e.contains("in the units given"), "{e}");
+        let e = check_track(&track(600.0), &given).unwrap_err();
+        assert!(
+            e.contains("in the units given") && e.contains("give --length-unit mm"),
+            "{e}"
+        );
+        // Times stated in s that are ms: the unit that fits is named.
+        let stated = Given {
+            time: (1.0, Some("the header")),
+            length: (1.0, Some("the header")),
+        };
+        let mut slow = track(0.6);
+        slow.t.iter_mut().for_each(|t| *t *= 1e3);
+        let e = check_track(&slow, &stated).unwrap_err();
+        assert!(
+            e.contains("fix the header (t (ms)) or give --time-unit ms"),
+            "{e}"
+        );
     }
 }

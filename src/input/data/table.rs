@@ -151,16 +151,74 @@ const ALIASES: [(&str, &str); 14] = [
     ("velocità", "v"),
 ];
 
-/// `name` with a leading word of [`ALIASES`] (alone, or before its unit) in English.
+/// `name` with a leading word of [`ALIASES`] (alone, or before its unit) in English;
+/// a position word before the axis it names (`Position x (m)`, `Ort y`) is dropped.
 fn english(name: String) -> String {
     for (from, to) in ALIASES {
         if let Some(rest) = name.strip_prefix(from)
             && (rest.is_empty() || rest.starts_with([' ', '(', '[', '/', '_']))
         {
+            let axis = rest.trim_start_matches([' ', '_']);
+            let names_axis = to == "x"
+                && axis.starts_with(['x', 'y'])
+                && axis[1..]
+                    .trim_start_matches(|c: char| c.is_ascii_digit())
+                    .chars()
+                    .next()
+                    .is_none_or(|c| " ([/_".contains(c));
+            if names_axis {
+                return axis.to_string();
+            }
             return format!("{to}{rest}");
         }
     }
     name
+}
+
+/// Unit names that tools write and the unit table does not hold: microseconds as
+/// `us`, `µs` (micro sign) or `μs` (Greek mu), and units spelt out (`seconds`,
+/// `meters`), as Logger Pro and Arduino sketches write them; each as its table name.
+const UNIT_SPELLINGS: [(&str, &str); 14] = [
+    ("sec", "s"),
+    ("secs", "s"),
+    ("second", "s"),
+    ("seconds", "s"),
+    ("milliseconds", "ms"),
+    ("meter", "m"),
+    ("meters", "m"),
+    ("metre", "m"),
+    ("metres", "m"),
+    ("centimeters", "cm"),
+    ("centimetres", "cm"),
+    ("millimeters", "mm"),
+    ("millimetres", "mm"),
+    ("m/sec", "m/s"),
+];
+
+/// The SI factor of a unit a data file or a data option names: the unit table's
+/// names, microseconds (`us`, `µs`, `μs`) and the spellings of [`UNIT_SPELLINGS`].
+pub fn file_unit(unit: &str, dim: Dimension) -> Result<f64, units::UnitError> {
+    let u = unit.trim();
+    if dim == Dimension::Time && ["us", "µs", "μs", "microseconds"].contains(&u) {
+        return Ok(1e-6);
+    }
+    let lower = u.to_lowercase();
+    let name = UNIT_SPELLINGS
+        .iter()
+        .find(|(from, _)| *from == lower)
+        .map_or(u, |(_, to)| to);
+    units::unit_factor(name, dim).map_err(|e| match e {
+        units::UnitError::UnknownUnit { allowed, .. } => units::UnitError::UnknownUnit {
+            text: u.to_string(),
+            unit: u.to_string(),
+            allowed: if dim == Dimension::Time {
+                format!("{allowed}, us")
+            } else {
+                allowed
+            },
+        },
+        other => other,
+    })
 }
 
 /// The SI factor of a unit written after a column name: `(ms)`, `[cm/s]`, `/ms`,
@@ -176,7 +234,7 @@ pub(crate) fn unit_factor(rest: &str, dim: Dimension) -> Option<Option<f64>> {
     }
     // Only a unit name counts: `t2`, `t_1` or `time0` are other columns, not times in
     // units of 12, 11 or 10 s.
-    units::unit_factor(&unit, dim).ok().map(Some)
+    file_unit(&unit, dim).ok().map(Some)
 }
 
 /// A number as video tools write it: `0.12`, `0,12` (decimal comma), `1.2e-3`,
@@ -226,6 +284,29 @@ mod tests {
         assert_eq!(clean("Zeitpunkt"), "zeitpunkt");
         assert_eq!(clean("orthogonal"), "orthogonal");
         assert_eq!(clean("t"), "t");
+        // A position word before its axis names that axis.
+        assert_eq!(clean("Position x (m)"), "x (m)");
+        assert_eq!(clean("Run 1: Position y [cm]"), "y [cm]");
+        assert_eq!(clean("Position X2 (m)"), "x2 (m)");
+        assert_eq!(clean("Position (m)"), "x (m)");
+        assert_eq!(clean("Position xyz"), "x xyz");
+    }
+
+    #[test]
+    fn microseconds_and_spelt_out_units_are_units() {
+        for us in ["us", "µs", "μs"] {
+            assert_eq!(
+                unit_factor(&format!("({us})"), Dimension::Time),
+                Some(Some(1e-6))
+            );
+        }
+        assert_eq!(unit_factor("(seconds)", Dimension::Time), Some(Some(1.0)));
+        assert_eq!(unit_factor("(Meters)", Dimension::Length), Some(Some(1.0)));
+        assert_eq!(unit_factor("(us)", Dimension::Length), None);
+        let e = file_unit("fortnights", Dimension::Time)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("us"), "{e}");
     }
 
     #[test]

@@ -3,10 +3,14 @@
 //! turned), the time origin moved to the first impact, and numbers that are plainly
 //! in other units than the header says named in the error.
 
+use super::notes::{Notes, UnitNote};
 use super::options::{DataError, MAX_ROWS, Reading};
-use super::scales::{FASTEST_BALL, LONGEST_FRAME, frame_spacing};
+use super::scales::{
+    FASTEST_BALL, LONGEST_FRAME, SLOWEST_BALL, SPEEDS, TIMES, fitting, frame_spacing,
+};
 use super::table::{Table, clean, number, unit_factor};
 use crate::settings::units::Dimension;
+use crate::settings::units::significant;
 use crate::study::measured::Measured;
 
 /// Which quantity a velocity-file header cell names, and the SI factor its unit implies.
@@ -48,15 +52,16 @@ pub(super) fn names_v_cm(cell: &str) -> bool {
 /// Parses `text` (the file named `file`) into a series with the impact at t = 0,
 /// moving toward the other ball (+x) before it.
 pub fn parse(text: &str, file: &str, reading: &Reading) -> Result<Measured, DataError> {
-    from_table(&Table::new(text), file, reading)
+    read_table(&Table::new(text), file, reading).map(|(m, _)| m)
 }
 
-/// [`parse`] of a file already split into rows.
-pub(super) fn from_table(
+/// [`parse`] of a file already split into rows, with what the file said about its
+/// units ([`Notes`]).
+pub(super) fn read_table(
     table: &Table,
     file: &str,
     reading: &Reading,
-) -> Result<Measured, DataError> {
+) -> Result<(Measured, Notes), DataError> {
     let err = |what: String| DataError {
         file: file.to_string(),
         what,
@@ -83,11 +88,7 @@ pub(super) fn from_table(
     let (it, ft) = find("t").ok_or_else(|| missing("t"))?;
     let (ic, fc) = find("v_cm").ok_or_else(|| missing("v_cm"))?;
     let (iv, fv) = find("v_t").ok_or_else(|| missing("v_t"))?;
-    let units = Units {
-        time: ft.or(reading.time_unit),
-        v_cm: fc.or(reading.speed_unit),
-        v_t: fv.or(reading.speed_unit),
-    };
+    let units = Units::decide(reading, ft, fc, fv);
     let (mut t, mut v_cm, mut v_t) = (Vec::new(), Vec::new(), Vec::new());
     for row in rows {
         if t.len() == MAX_ROWS {
@@ -105,7 +106,7 @@ pub(super) fn from_table(
                 ))
             })
         };
-        let time = get(it, "t")? * units.time.unwrap_or(1.0);
+        let time = get(it, "t")? * units.time.0;
         if let Some(&prev) = t.last()
             && time <= prev
         {
@@ -115,8 +116,8 @@ pub(super) fn from_table(
             )));
         }
         t.push(time);
-        v_cm.push(get(ic, "v_cm")? * units.v_cm.unwrap_or(1.0));
-        v_t.push(get(iv, "v_t")? * units.v_t.unwrap_or(1.0));
+        v_cm.push(get(ic, "v_cm")? * units.v_cm.0);
+        v_t.push(get(iv, "v_t")? * units.v_t.0);
     }
     if t.len() < 3 {
         return Err(err(format!("{} data rows, allowed at least 3", t.len())));
@@ -147,54 +148,153 @@ pub(super) fn from_table(
     };
     m.check_magnitudes().map_err(|e| err(e.to_string()))?;
     units.check_plausible(&m.t, &m.v_cm, &m.v_t).map_err(err)?;
-    Ok(m)
+    let notes = Notes {
+        format: "velocities (t, v_cm, v_t)".into(),
+        tracks: Vec::new(),
+        units: units.notes(),
+    };
+    Ok((m, notes))
 }
 
-/// The SI factors of a file's columns; `None` where neither the header nor an option
-/// gave a unit (the numbers are then taken as SI).
+/// The SI factors of a file's columns and who said each (`None`: nobody, the
+/// numbers are taken as SI).
 struct Units {
-    time: Option<f64>,
-    v_cm: Option<f64>,
-    v_t: Option<f64>,
+    time: (f64, Option<&'static str>),
+    v_cm: (f64, Option<&'static str>),
+    v_t: (f64, Option<&'static str>),
+}
+
+/// One unit that does not fit the numbers: what they look like, the unit that fits,
+/// its option and the header cells that would state it.
+struct Misfit {
+    looks: String,
+    unit: &'static str,
+    flag: String,
+    header: Vec<String>,
 }
 
 impl Units {
-    /// Numbers taken as SI because no unit was said, which are plainly not SI: frames
-    /// a second or more apart (ms), speeds of 10 m/s or more (cm/s). The error says
-    /// what the numbers look like and which options read them.
+    /// The units of t, v_cm and v_t from the header's (`ft`, `fc`, `fv`) and the
+    /// options: an option wins over the header, so that a header that states a wrong
+    /// unit is set right by the option its error names.
+    fn decide(reading: &Reading, ft: Option<f64>, fc: Option<f64>, fv: Option<f64>) -> Units {
+        let by =
+            |option: Option<f64>, flag: &'static str, header: Option<f64>| match (option, header) {
+                (Some(f), _) => (f, Some(flag)),
+                (None, Some(f)) => (f, Some("the header")),
+                (None, None) => (1.0, None),
+            };
+        Units {
+            time: by(reading.time_unit, "--time-unit", ft),
+            v_cm: by(reading.speed_unit, "--speed-unit", fc),
+            v_t: by(reading.speed_unit, "--speed-unit", fv),
+        }
+    }
+
+    /// What the file said about its units, for `groovelab data`.
+    fn notes(&self) -> Vec<UnitNote> {
+        vec![
+            UnitNote::of("time", &TIMES, self.time.0, self.time.1),
+            UnitNote::of("v_cm", &SPEEDS, self.v_cm.0, self.v_cm.1),
+            UnitNote::of("v_t", &SPEEDS, self.v_t.0, self.v_t.1),
+        ]
+    }
+
+    /// Numbers that are plainly not in the units they were read in, whether a unit was
+    /// stated or assumed: frames a second or more apart (ms, not s), speeds of 10 m/s
+    /// or more (cm/s, not m/s) or all below 1 mm/s (m/s read as mm/s). The error says
+    /// what the numbers look like and names the unit that fits and its option.
     fn check_plausible(&self, t: &[f64], v_cm: &[f64], v_t: &[f64]) -> Result<(), String> {
         let frame = frame_spacing(t);
         let fastest = v_cm.iter().chain(v_t).fold(0.0_f64, |a, v| a.max(v.abs()));
-        let ms = self.time.is_none() && frame >= LONGEST_FRAME;
-        let cm = (self.v_cm.is_none() || self.v_t.is_none()) && fastest >= FASTEST_BALL;
-        let mut looks = Vec::new();
-        let mut flags = Vec::new();
-        if ms {
-            looks.push(format!(
-                "frames {} apart (as s: {:.1} frames/s; as ms: {:.0} frames/s)",
-                crate::settings::units::significant(frame, 3),
-                1.0 / frame,
-                1e3 / frame
-            ));
-            flags.push("--time-unit ms");
+        let mut misfits = Vec::new();
+        if frame >= LONGEST_FRAME {
+            let unit =
+                fitting(&TIMES, self.time.0, frame, 0.01, |f| f < LONGEST_FRAME).unwrap_or("ms");
+            misfits.push(Misfit {
+                looks: format!(
+                    "frames {} apart (as s: {:.1} frames/s; as {unit}: {:.0} frames/s)",
+                    significant(frame / self.time.0, 3),
+                    1.0 / frame,
+                    1.0 / (frame / self.time.0 * unit_factor_of(&TIMES, unit)),
+                ),
+                unit,
+                flag: format!("--time-unit {unit}"),
+                header: vec![format!("t ({unit})")],
+            });
         }
-        if cm {
-            looks.push(format!(
-                "speeds up to {} (as m/s beyond any ball in a groove; as cm/s {} m/s)",
-                crate::settings::units::significant(fastest, 3),
-                crate::settings::units::significant(fastest / 100.0, 3)
-            ));
-            flags.push("--speed-unit cm/s");
+        let plausible = |v: f64| (SLOWEST_BALL..FASTEST_BALL).contains(&v);
+        if fastest > 0.0 && !plausible(fastest) {
+            let unit = fitting(&SPEEDS, self.v_cm.0, fastest, 0.5, plausible).unwrap_or("cm/s");
+            let as_unit = fastest / self.v_cm.0 * unit_factor_of(&SPEEDS, unit);
+            misfits.push(Misfit {
+                looks: format!(
+                    "speeds up to {} (as m/s {} any ball in a groove; as {unit} {} m/s)",
+                    significant(fastest / self.v_cm.0, 3),
+                    if fastest >= FASTEST_BALL {
+                        "beyond"
+                    } else {
+                        "slower than"
+                    },
+                    significant(as_unit, 3)
+                ),
+                unit,
+                flag: format!("--speed-unit {unit}"),
+                header: vec![format!("v_cm ({unit})"), format!("v_t ({unit})")],
+            });
         }
-        if looks.is_empty() {
+        if misfits.is_empty() {
             return Ok(());
         }
+        let units: Vec<&str> = misfits.iter().map(|m| m.unit).collect();
+        let flags: Vec<&str> = misfits.iter().map(|m| m.flag.as_str()).collect();
+        let header: Vec<String> = misfits.iter().flat_map(|m| m.header.clone()).collect();
+        let looks: Vec<&str> = misfits.iter().map(|m| m.looks.as_str()).collect();
+        let stated: Vec<&str> = [self.time.1, self.v_cm.1, self.v_t.1]
+            .into_iter()
+            .flatten()
+            .collect();
+        let (units, flags, header) = (units.join(" and "), flags.join(" "), header.join(", "));
+        if stated.is_empty() {
+            return Err(format!(
+                "the header gives no units and the numbers do not look like s and m/s: {}; if they are {units}, give {flags} (or units in the header: {header})",
+                looks.join(", ")
+            ));
+        }
+        let fix = if stated.contains(&"the header") {
+            format!("fix the header ({header}) or give {flags}")
+        } else {
+            format!("give {flags}")
+        };
         Err(format!(
-            "the header gives no units and the numbers do not look like s and m/s: {}; if they are ms and cm/s, give {} (or units in the header: t (ms), v_cm (cm/s), v_t (cm/s))",
-            looks.join(", "),
-            flags.join(" ")
+            "the numbers do not fit the units {}: {}; if they are {units}, {fix}",
+            stated_text(&stated),
+            looks.join(", ")
         ))
     }
+}
+
+/// The SI factor of `name` among `units`.
+fn unit_factor_of(units: &[(&'static str, f64)], name: &str) -> f64 {
+    units
+        .iter()
+        .find(|(n, _)| *n == name)
+        .map_or(1.0, |(_, f)| *f)
+}
+
+/// Who stated the units, once each: "the header gives", "the header and --time-unit give".
+fn stated_text(stated: &[&str]) -> String {
+    let mut who: Vec<&str> = Vec::new();
+    for s in stated {
+        if !who.contains(s) {
+            who.push(s);
+        }
+    }
+    format!(
+        "{} give{}",
+        who.join(" and "),
+        if who.len() == 1 { "s" } else { "" }
+    )
 }
 
 /// A file recorded with x pointing away from the other ball: turned, so that the

@@ -12,14 +12,12 @@ use approx::assert_relative_eq;
 #[test]
 fn a_slip_that_ends_at_zero_speed_under_a_push_is_rolling_not_rest() {
     let scene = Scene {
-        radius: 0.0275,
         width: 0.03,
         mu: 0.2,
-        g: 9.81,
         restitution: 0.0,
-        rolling_resistance: 0.0,
         left: crate::physics::scene::Ball { mass: 0.5, v0: 1.0 },
         right: crate::physics::scene::Ball { mass: 0.2, v0: 1.0 },
+        ..Scene::default()
     };
     let mut engine = Engine::new(&scene);
     let (k, mu, g) = (scene.k(), scene.mu, scene.g);
@@ -67,10 +65,8 @@ fn a_slip_that_ends_at_zero_speed_under_a_push_is_rolling_not_rest() {
 
 fn scene(width: f64, mu: f64, e: f64, c_rr: f64, masses: (f64, f64), v0: (f64, f64)) -> Scene {
     Scene {
-        radius: 0.0275,
         width,
         mu,
-        g: 9.81,
         restitution: e,
         rolling_resistance: c_rr,
         left: crate::physics::scene::Ball {
@@ -81,6 +77,7 @@ fn scene(width: f64, mu: f64, e: f64, c_rr: f64, masses: (f64, f64), v0: (f64, f
             mass: masses.1,
             v0: v0.1,
         },
+        ..Scene::default()
     }
 }
 
@@ -386,7 +383,6 @@ fn a_partial_tail_stops_short_of_the_stop_and_agrees_with_each_impact_resolved()
         width: 2.0 * (1.0 - 1e-9),
         mu: 0.0005,
         g: 1.0,
-        restitution: 1.0,
         rolling_resistance: 0.02,
         left: crate::physics::scene::Ball {
             mass: 0.0019,
@@ -396,6 +392,7 @@ fn a_partial_tail_stops_short_of_the_stop_and_agrees_with_each_impact_resolved()
             mass: 57.0,
             v0: 0.385,
         },
+        ..Scene::default()
     };
     let first_stop = |sol: &Solution| {
         *sol.events

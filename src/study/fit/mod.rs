@@ -253,14 +253,9 @@ mod tests {
             v0: 0.79,
         };
         let scene = Scene {
-            radius: 0.0275,
-            width: 0.049,
-            mu: 0.17,
-            g: 9.81,
-            restitution: 1.0,
-            rolling_resistance: 0.0,
             left: ball,
             right: ball,
+            ..Scene::default()
         };
         let sol = crate::physics::engine::solve(
             &scene,
@@ -319,12 +314,9 @@ mod tests {
         let scene = Scene {
             radius: 0.015,
             width: 0.021,
-            mu: 0.17,
-            g: 9.81,
-            restitution: 1.0,
-            rolling_resistance: 0.0,
             left: ball,
             right: ball,
+            ..Scene::default()
         };
         let e = FitError::NotFinite {
             bad: vec!["model fit μ_k"],

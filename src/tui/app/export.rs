@@ -116,7 +116,7 @@ impl App {
             return Ok(());
         }
         self.status = Status::Info(format!("writing {}…", path.display()));
-        self.lab.start_export(move || {
+        self.export.start(&self.jobs, move || {
             let (bytes, what) = work()?;
             crate::output::write_atomically(&path, &bytes)?;
             Ok::<_, ExportError>(Exported { path, what })
@@ -172,7 +172,7 @@ impl App {
                     done(figures::regime_map(&points, &x, Some(&y), &scene, &preset))
                 })
             }
-            Figure::Methods => match self.lab.method_rows() {
+            Figure::Methods => match self.methods.state() {
                 State::Ready(rows) => {
                     let rows = rows.clone();
                     let work = match self.work_axis {
@@ -188,7 +188,7 @@ impl App {
                     );
                 }
             },
-            Figure::Fit => match (self.lab.fits(), self.lab.measured()) {
+            Figure::Fit => match (self.fit.fits(), self.lab.measured()) {
                 (State::Ready(Ok(fits)), Some(m)) => {
                     let (fits, m) = (fits.clone(), m.clone());
                     Box::new(move || done(figures::fit_figure(&scene, &m, &fits)))

@@ -126,8 +126,6 @@ impl App {
             Action::DropData => self.drop_data(),
             Action::CycleWorkAxis => {
                 self.work_axis = self.work_axis.next();
-                self.lab
-                    .want_method_times(self.work_axis == crate::tui::vocabulary::WorkAxis::Time);
                 self.status = Status::Info(format!("work axis: {}", self.work_axis.name()));
             }
             Action::ToggleMap => self.toggle_view(View::Map),
@@ -217,6 +215,10 @@ impl App {
         };
         let sol = &self.lab.solution;
         self.t = self.t.clamp(sol.t_start, sol.t_end);
+        if matches!(edit, Edit::Preset(_) | Edit::DropData) {
+            // The window was chosen for the data before.
+            self.fit.window = (None, None);
+        }
         let back = match edit {
             Edit::Values(changes) => {
                 let mut keys: Vec<Key> = changes.iter().map(|(k, _)| *k).collect();
@@ -249,6 +251,7 @@ impl App {
             self.status = Status::Info("nothing to reset: the scene is the preset's".into());
             return;
         }
+        self.fit.window = (None, None);
         let sol = &self.lab.solution;
         self.t = self.t.clamp(sol.t_start, sol.t_end);
         let flags = self.lab.settings().flags_in_force();
@@ -268,6 +271,7 @@ impl App {
     fn drop_data(&mut self) {
         self.status = Status::Info(match self.lab.drop_data() {
             Some(name) => {
+                self.fit.window = (None, None);
                 let sol = &self.lab.solution;
                 self.t = self.t.clamp(sol.t_start, sol.t_end);
                 let preset = self.lab.preset();
@@ -378,7 +382,7 @@ impl App {
     /// The overlay key: off, then each time-stepping method in turn, then off.
     fn cycle_overlay(&mut self) {
         let all = Method::TIME_STEPPING;
-        let next = match self.lab.overlay_choice() {
+        let next = match self.overlay.choice {
             None => Some(all[0]),
             Some((m, _)) => all
                 .iter()
@@ -386,7 +390,7 @@ impl App {
                 .and_then(|i| all.get(i + 1))
                 .copied(),
         };
-        self.lab.set_overlay(next.map(|m| (m, self.overlay_level)));
+        self.overlay.choice = next.map(|m| (m, self.overlay.level));
         self.status = Status::Info(match next {
             Some(m) => format!("overlay {}", m.name()),
             None => "overlay off".into(),
@@ -395,13 +399,14 @@ impl App {
 
     /// A finer or coarser overlay step, kept for the next overlay too.
     fn overlay_level_by(&mut self, finer: bool) {
-        self.overlay_level = if finer {
-            (self.overlay_level + 1).min(OVERLAY_LEVELS - 1)
+        let level = &mut self.overlay.level;
+        *level = if finer {
+            (*level + 1).min(OVERLAY_LEVELS - 1)
         } else {
-            self.overlay_level.saturating_sub(1)
+            level.saturating_sub(1)
         };
-        if let Some((m, _)) = self.lab.overlay_choice() {
-            self.lab.set_overlay(Some((m, self.overlay_level)));
+        if let Some((m, _)) = self.overlay.choice {
+            self.overlay.choice = Some((m, self.overlay.level));
         }
     }
 
@@ -425,8 +430,6 @@ impl App {
         } else {
             view
         };
-        self.lab.want_methods(self.view == View::Methods);
-        self.lab.want_fits(self.view == View::Fit);
     }
 
     fn open_scrolling(&mut self, mode: Mode) {
@@ -509,7 +512,7 @@ impl App {
     /// the data support; of a position track fitted to the positions), the one the
     /// panel shows first.
     fn fit_to_apply(&self) -> Result<(crate::study::fit::ModelFit, &'static str), String> {
-        match self.lab.fits() {
+        match self.fit.fits() {
             State::Ready(Ok(f)) => Ok((
                 f.model_fit.clone(),
                 match f.model_fit.fitted_to {
@@ -524,7 +527,7 @@ impl App {
     }
 
     fn move_window(&mut self, end: bool, later: bool) {
-        if let Err(e) = self.lab.move_fit_window(end, later) {
+        if let Err(e) = self.fit.move_window(&self.lab, end, later) {
             self.status = Status::Error(e.to_string());
         }
     }

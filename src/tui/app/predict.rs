@@ -31,8 +31,6 @@ impl App {
     /// the impact would have its answer on screen behind it), and the question.
     pub(super) fn ask_prediction(&mut self) {
         self.view = View::Forces;
-        self.lab.want_methods(false);
-        self.lab.want_fits(false);
         self.playing = false;
         self.t = self.lab.solution.t_start;
         self.status = Status::None;

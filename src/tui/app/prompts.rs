@@ -26,6 +26,7 @@ impl App {
                     let (name, description) = (p.name.clone(), p.description.clone());
                     match self.lab.load_preset(p) {
                         Ok(()) => {
+                            self.fit.window = (None, None);
                             self.t = self.lab.solution.t_start;
                             self.status = Status::Info(match self.lab.own_data() {
                                 // The student's data stay (the status line names

@@ -71,7 +71,7 @@ pub fn render_diagram(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let blk = block(title, theme);
     let inner = blk.inner(area);
     blk.render(area, buf);
-    let rows = match app.lab.method_rows() {
+    let rows = match app.methods.state() {
         State::Ready(rows) => rows,
         other => return super::panel::computing(&other, "running every method", inner, buf, theme),
     };
@@ -146,7 +146,7 @@ pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let blk = block(title, theme);
     let inner = blk.inner(area);
     blk.render(area, buf);
-    let rows = match app.lab.method_rows() {
+    let rows = match app.methods.state() {
         State::Ready(rows) => rows,
         other => return super::panel::computing(&other, "running every method", inner, buf, theme),
     };

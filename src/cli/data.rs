@@ -1,0 +1,134 @@
+//! `groovelab data FILE…`: what groovelab reads in each file, before any fit — the
+//! format detected, the tracks and which is the centre and which the mark, frames,
+//! rate and span, the units and who decided them, missing frames, scatter, approach
+//! speed and impacts — as text or JSON. A file that cannot be read is one error line.
+
+use std::fmt::Write as _;
+
+use super::args::{DataArgs, DataCmdArgs, DataFormat};
+use super::error::CliError;
+use super::open::reading_of;
+use crate::input::data::{Report, inspect};
+use crate::settings::units::{Dimension, show_small, significant};
+
+/// Reads each file with the data options and reports it.
+pub fn run(args: &DataCmdArgs, data: &DataArgs) -> Result<String, CliError> {
+    let (reading, derive) = reading_of(data)?;
+    let mut reports = Vec::new();
+    for path in &args.files {
+        let text = crate::input::read_user_file(path, "data file", crate::input::MAX_FILE_BYTES)?;
+        reports.push(inspect(
+            &text,
+            &path.display().to_string(),
+            &reading,
+            &derive,
+        )?);
+    }
+    Ok(match args.format {
+        DataFormat::Json => {
+            serde_json::to_string_pretty(&reports).expect("a report serializes") + "\n"
+        }
+        DataFormat::Table => reports.iter().map(describe).collect::<Vec<_>>().join("\n"),
+    })
+}
+
+/// A track's name as the text says it.
+fn named(n: &str) -> String {
+    if n.is_empty() {
+        "x, y (unnamed)".into()
+    } else {
+        format!("'{n}'")
+    }
+}
+
+/// One file's report as text for people.
+pub fn describe(r: &Report) -> String {
+    let mut s = format!("{}: {}, {}\n", r.file, r.notes.format, r.kind);
+    if let Some(c) = &r.centre {
+        let others: Vec<String> = r
+            .notes
+            .tracks
+            .iter()
+            .filter(|t| Some(*t) != r.centre.as_ref() && Some(*t) != r.mark.as_ref())
+            .map(|t| named(t))
+            .collect();
+        let _ = writeln!(
+            s,
+            "  tracks: centre {}, {}{}",
+            named(c),
+            r.mark.as_ref().map_or(
+                "no rim mark (v_t is not measured)".to_string(),
+                |m| format!("rim mark {}", named(m))
+            ),
+            if others.is_empty() {
+                String::new()
+            } else {
+                format!("; not used: {}", others.join(", "))
+            }
+        );
+    }
+    let _ = writeln!(
+        s,
+        "  {} frames at {} frames/s, t = {} … {} s",
+        r.frames,
+        significant(r.frame_rate, 4),
+        significant(r.t_first, 4),
+        significant(r.t_last, 4)
+    );
+    for u in &r.notes.units {
+        let _ = writeln!(s, "  {} in {}: {}", u.quantity, u.unit, u.how);
+    }
+    if r.missing.is_empty() {
+        s += "  no frames missing\n";
+    } else {
+        let total: usize = r.missing.iter().map(|g| g.frames).sum();
+        let runs: Vec<String> = r
+            .missing
+            .iter()
+            .take(5)
+            .map(|g| {
+                format!(
+                    "{} at t = {:.4} … {:.4} s ({})",
+                    g.frames, g.from, g.to, g.why
+                )
+            })
+            .collect();
+        let more = r.missing.len().saturating_sub(5);
+        let _ = writeln!(
+            s,
+            "  {total} frames missing: {}{}",
+            runs.join(", "),
+            if more > 0 {
+                format!(", and {more} more runs")
+            } else {
+                String::new()
+            }
+        );
+    }
+    if let Some(sc) = r.scatter {
+        let _ = writeln!(
+            s,
+            "  scatter of a position ≈ {}",
+            show_small(sc, Dimension::Length)
+        );
+    }
+    match (r.approach_speed, r.approach_speed_se, r.speed) {
+        (Some(v), Some(se), _) => {
+            let (v, e) = crate::settings::units::with_uncertainty(v, se, 3);
+            let _ = writeln!(s, "  approach speed {v} ± {e} m/s");
+        }
+        (Some(v), None, _) => {
+            let _ = writeln!(s, "  approach speed {} m/s", significant(v, 3));
+        }
+        (None, _, Some(v)) => {
+            let _ = writeln!(
+                s,
+                "  speed between frames up to about {} m/s",
+                significant(v, 3)
+            );
+        }
+        _ => {}
+    }
+    let _ = writeln!(s, "  {}", r.impact_note);
+    s
+}

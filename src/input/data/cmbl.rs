@@ -1,0 +1,180 @@
+//! Logger Pro's own file (`.cmbl`, XML): data sets (`DataSet`), each with columns
+//! (`DataColumn`: a name, a unit, and its cells one number per line). The data set
+//! of a video analysis is taken (else the first with a time and a position column),
+//! its columns laid out as a table and read as a position track. A video that was
+//! never scaled leaves the position columns without a unit: the numbers are then the
+//! video's own units, and the length one of them shows must be given.
+
+use roxmltree::Node;
+
+use super::notes::Notes;
+use super::options::{DataError, Reading};
+use super::positions::{Axis, position_column, read_table};
+use super::table::Table;
+use super::xml::{self, child_text};
+use crate::study::measured::Track;
+
+/// The format's name, as `groovelab data` and the fit say it.
+pub const FORMAT: &str = "Logger Pro file (.cmbl)";
+
+/// True when `text` looks like a Logger Pro file (before it is parsed).
+pub(super) fn is_cmbl(text: &str) -> bool {
+    let head = text[..text.len().min(4000)]
+        .trim_start_matches('\u{feff}')
+        .trim_start();
+    head.starts_with('<') && head.contains("<Document>") && head.contains("<FileCoherence>")
+}
+
+/// One column of a data set.
+struct Column {
+    name: String,
+    unit: String,
+    cells: Vec<String>,
+}
+
+/// A data set's name, whether it is a video analysis, and its columns with cells.
+fn data_set(node: Node<'_, '_>) -> (String, bool, Vec<Column>) {
+    let name = child_text(node, "DataSetName").unwrap_or("").to_string();
+    let video = child_text(node, "DataSetVideoAnalysis") == Some("1");
+    let columns = node
+        .children()
+        .filter(|c| c.has_tag_name("DataColumn"))
+        .map(|c| Column {
+            name: child_text(c, "DataObjectName").unwrap_or("").to_string(),
+            unit: child_text(c, "ColumnUnits").unwrap_or("").to_string(),
+            cells: child_text(c, "ColumnCells")
+                .unwrap_or("")
+                .lines()
+                .map(|l| l.trim().to_string())
+                .collect::<Vec<_>>(),
+        })
+        .filter(|c| c.cells.iter().any(|v| !v.is_empty()))
+        .collect();
+    (name, video, columns)
+}
+
+/// The axis a column's name gives (Time, X, Y, X2 …), if any.
+fn axis(c: &Column) -> Option<Axis> {
+    position_column(&c.name).map(|col| col.axis)
+}
+
+/// The video's scale as the file states it, for the message when it is missing.
+fn video_scale(root: Node<'_, '_>) -> Option<String> {
+    let movie = root
+        .descendants()
+        .find(|n| n.has_tag_name("VAMovieActualDistance"))?;
+    let actual = movie.text()?.trim().to_string();
+    let parent = movie.parent()?;
+    let pixels = child_text(parent, "VAMoviePixelDistance")?;
+    let unit = child_text(parent, "VAMovieScaleUnits").unwrap_or("");
+    Some(format!(
+        "its scale says {actual} {} per {pixels} of the movie's distance",
+        if unit.is_empty() { "(no unit)" } else { unit }
+    ))
+}
+
+/// Reads a Logger Pro file (see the module doc) into a track in SI units and what it
+/// said about itself.
+pub(super) fn read(text: &str, file: &str, reading: &Reading) -> Result<(Track, Notes), DataError> {
+    let err = |what: String| DataError {
+        file: file.to_string(),
+        what,
+    };
+    let doc = xml::parse(text, "Logger Pro file").map_err(err)?;
+    let root = doc.root_element();
+    if !root.has_tag_name("Document") {
+        return Err(err(
+            "not a Logger Pro file: its root is not <Document>".into()
+        ));
+    }
+    let sets: Vec<_> = root
+        .children()
+        .filter(|c| c.has_tag_name("DataSet"))
+        .map(data_set)
+        .filter(|(_, _, cols)| {
+            cols.iter().any(|c| axis(c) == Some(Axis::T))
+                && cols.iter().any(|c| axis(c) == Some(Axis::X))
+        })
+        .collect();
+    let Some((name, _, columns)) = sets.iter().find(|s| s.1).or(sets.first()) else {
+        let names: Vec<String> = root
+            .children()
+            .filter(|c| c.has_tag_name("DataSet"))
+            .filter_map(|c| child_text(c, "DataSetName").map(str::to_string))
+            .collect();
+        return Err(err(format!(
+            "no data set with a time and a position column (X, Position) that holds numbers; data sets found: {}: groovelab needs the positions of the ball's centre over time (a video analysis or a motion detector)",
+            if names.is_empty() {
+                "none".to_string()
+            } else {
+                names.join(", ")
+            }
+        )));
+    };
+    let unscaled = columns
+        .iter()
+        .filter(|c| matches!(axis(c), Some(Axis::X | Axis::Y)))
+        .all(|c| c.unit.is_empty());
+    if unscaled && reading.length_unit.is_none() && reading.scale.is_none() {
+        return Err(err(format!(
+            "the positions of data set '{name}' have no unit: the video was not scaled in Logger Pro{}; set its scale in Logger Pro and save, or give the length one of the file's units shows with --scale (e.g. --scale 1.105mm), or their unit with --length-unit",
+            video_scale(root)
+                .map(|s| format!(" ({s})"))
+                .unwrap_or_default()
+        )));
+    }
+    let table = Table::new(&as_table(columns));
+    let (track, mut notes) = read_table(&table, file, reading).map_err(|e| DataError {
+        what: format!("data set '{name}': {}", rows_not_lines(&e.what)),
+        ..e
+    })?;
+    notes.format = format!("{FORMAT}, data set '{name}'");
+    Ok((
+        Track {
+            format: FORMAT,
+            ..track
+        },
+        notes,
+    ))
+}
+
+/// The columns as a tab-separated table: a header `Name (unit)`, then a row per cell
+/// (a shorter column leaves its cells empty).
+fn as_table(columns: &[Column]) -> String {
+    let rows = columns.iter().map(|c| c.cells.len()).max().unwrap_or(0);
+    let mut out = columns
+        .iter()
+        .map(|c| {
+            if c.unit.is_empty() {
+                c.name.clone()
+            } else {
+                format!("{} ({})", c.name, c.unit)
+            }
+        })
+        .collect::<Vec<_>>()
+        .join("\t");
+    out.push('\n');
+    for i in 0..rows {
+        let row: Vec<&str> = columns
+            .iter()
+            .map(|c| c.cells.get(i).map_or("", String::as_str))
+            .collect();
+        out += &row.join("\t");
+        out.push('\n');
+    }
+    out
+}
+
+/// A table error's `line N` (of the table made here: the header is line 1) as the
+/// data set's row N − 1.
+fn rows_not_lines(what: &str) -> String {
+    match what.strip_prefix("line ").and_then(|r| r.split_once(':')) {
+        Some((n, rest)) if n.parse::<usize>().is_ok() => {
+            format!(
+                "row {}:{rest}",
+                n.parse::<usize>().unwrap_or(1).saturating_sub(1)
+            )
+        }
+        _ => what.to_string(),
+    }
+}

@@ -1,0 +1,105 @@
+//! Which reader a data file needs, from its first lines: a Tracker project (`.trk`),
+//! a Logger Pro file (`.cmbl`) or its text export (Vernier Format 2), else a table (a
+//! velocity file when its header names v_cm, else a position track); and a file of
+//! accelerations only (phyphox), refused with what groovelab needs instead.
+
+use super::notes::Notes;
+use super::options::{DataError, Reading};
+use super::table::{self, Table};
+use super::{cmbl, positions, trk, velocities, vernier};
+use crate::study::measured::{RawSeries, Track};
+
+/// [`read`] with what the file said about itself: its format, its tracks, and how
+/// each unit was decided.
+pub fn read_with_notes(
+    text: &str,
+    file: &str,
+    reading: &Reading,
+) -> Result<(RawSeries, Notes), DataError> {
+    if trk::is_trk(text) {
+        return trk::read(text, file, reading).map(|(t, n)| (RawSeries::Positions(t), n));
+    }
+    if cmbl::is_cmbl(text) {
+        return cmbl::read(text, file, reading).map(|(t, n)| (RawSeries::Positions(t), n));
+    }
+    if text
+        .trim_start_matches('\u{feff}')
+        .trim_start()
+        .starts_with('<')
+    {
+        return Err(DataError {
+            file: file.to_string(),
+            what: "an XML file, but neither a Tracker project (.trk) nor a Logger Pro file (.cmbl), expected one of those or a table of t and x (and y), or t, v_cm and v_t".into(),
+        });
+    }
+    if vernier::is_vernier(text) {
+        let (raw, notes) = read_table(&Table::new(&vernier::as_table(text)), file, reading)?;
+        let raw = match raw {
+            RawSeries::Positions(t) => RawSeries::Positions(Track {
+                format: vernier::FORMAT,
+                ..t
+            }),
+            v => v,
+        };
+        let notes = Notes {
+            format: vernier::FORMAT.into(),
+            ..notes
+        };
+        return Ok((raw, notes));
+    }
+    read_table(&Table::new(text), file, reading)
+}
+
+/// A table's series: velocities when its header names v_cm, else a position track.
+fn read_table(
+    table: &Table,
+    file: &str,
+    reading: &Reading,
+) -> Result<(RawSeries, Notes), DataError> {
+    let velocities = table
+        .rows()
+        .next()
+        .is_some_and(|header| (0..header.len()).any(|i| velocities::names_v_cm(header.cell(i))));
+    if velocities {
+        return velocities::read_table(table, file, reading)
+            .map(|(m, n)| (RawSeries::Velocities(m), n));
+    }
+    accelerations_only(table).map_err(|what| DataError {
+        file: file.to_string(),
+        what,
+    })?;
+    positions::read_table(table, file, reading).map(|(t, n)| (RawSeries::Positions(t), n))
+}
+
+/// A table of accelerations only (phyphox's accelerometer): refused with what
+/// groovelab needs instead.
+fn accelerations_only(table: &Table) -> Result<(), String> {
+    let Some(header) = table.rows().take(4).find(|r| {
+        (0..r.len()).any(|i| {
+            let c = table::clean(r.cell(i));
+            c.starts_with("time") || c == "t" || c.starts_with("t ")
+        })
+    }) else {
+        return Ok(());
+    };
+    let cells: Vec<&str> = (0..header.len()).map(|i| header.cell(i)).collect();
+    let accelerations = cells
+        .iter()
+        .any(|c| c.to_lowercase().contains("acceleration"));
+    let positions = cells
+        .iter()
+        .any(|c| positions::position_column(c).is_some_and(|c| c.axis == positions::Axis::X));
+    if accelerations && !positions {
+        return Err(format!(
+            "line {}: the file holds accelerations only ({}), no positions or velocities: groovelab needs the ball's position over time (a video track: t, x, y) or its velocities (t, v_cm, v_t); a phone's accelerometer (phyphox) cannot give them",
+            header.line,
+            cells
+                .iter()
+                .filter(|c| !c.is_empty())
+                .copied()
+                .collect::<Vec<_>>()
+                .join(", ")
+        ));
+    }
+    Ok(())
+}

@@ -1,0 +1,235 @@
+//! What groovelab makes of a data file before any fit (`groovelab data`): the format,
+//! the tracks and their roles, frames, rate and span, the units and who decided
+//! them, missing frames, scatter, approach speed and the impacts found. A track with
+//! no impact is described too ("a single ball's track, no impact found").
+
+use serde::Serialize;
+
+use super::notes::Notes;
+use super::options::{DataError, Reading};
+use super::scales::{approach_speed, frame_spacing};
+use crate::study::measured::track::derivative::scatter;
+use crate::study::measured::{self, Derive, RawSeries, Series, Track};
+
+/// What a file holds, as groovelab reads it.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Report {
+    pub file: String,
+    #[serde(flatten)]
+    pub notes: Notes,
+    /// "position track" or "velocities".
+    pub kind: &'static str,
+    /// The tracks taken for the ball's centre and its rim mark (position tracks).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub centre: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mark: Option<String>,
+    /// Frames with a time (and, for a track, rows kept).
+    pub frames: usize,
+    /// Frames per second, from the median spacing.
+    pub frame_rate: f64,
+    /// First and last time of the file, s (a velocity file's with the impact at 0).
+    pub t_first: f64,
+    pub t_last: f64,
+    /// Frames missing: runs of rows without a centre position, and jumps in time.
+    pub missing: Vec<Gap>,
+    /// Scatter of a tracked position, m (third differences).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub scatter: Option<f64>,
+    /// Speed toward the other ball before the first impact, m/s, and its ±.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub approach_speed: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub approach_speed_se: Option<f64>,
+    /// A track without an impact: its speed between frames (90th percentile), m/s.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub speed: Option<f64>,
+    /// Impacts in the file's time, s; the first is where the fit puts t = 0.
+    pub impacts: Vec<f64>,
+    /// What was found about impacts, in words.
+    pub impact_note: String,
+}
+
+/// A run of missing frames.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Gap {
+    /// The times around the gap, s (of the rows without a position, or the frames on
+    /// either side of a jump in time).
+    pub from: f64,
+    pub to: f64,
+    /// Frames missing there.
+    pub frames: usize,
+    /// "no position" (an empty or NaN cell) or "no row" (a jump in time).
+    pub why: &'static str,
+}
+
+/// Reads `text` (the file named `file`) and says what it holds; an error only when
+/// it cannot be read at all.
+pub fn inspect(
+    text: &str,
+    file: &str,
+    reading: &Reading,
+    derive: &Derive,
+) -> Result<Report, DataError> {
+    let (raw, notes) = super::detect::read_with_notes(text, file, reading)?;
+    Ok(match raw {
+        RawSeries::Velocities(m) => {
+            let t = &m.t;
+            let before: Vec<f64> = (0..t.len())
+                .filter(|&i| t[i] < 0.0)
+                .map(|i| m.v_cm[i])
+                .collect();
+            Report {
+                file: file.to_string(),
+                notes,
+                kind: "velocities",
+                centre: None,
+                mark: None,
+                frames: t.len(),
+                frame_rate: 1.0 / frame_spacing(t),
+                t_first: t[0],
+                t_last: t[t.len() - 1],
+                missing: jumps(t),
+                scatter: None,
+                approach_speed: (!before.is_empty())
+                    .then(|| before.iter().sum::<f64>() / before.len() as f64),
+                approach_speed_se: None,
+                speed: None,
+                impacts: vec![0.0],
+                impact_note: format!(
+                    "first impact at t = 0 (the times are moved so){}",
+                    if m.mirrored {
+                        "; the file's x runs away from the other ball: read mirrored"
+                    } else {
+                        ""
+                    }
+                ),
+            }
+        }
+        RawSeries::Positions(track) => of_track(track, file, notes, reading, derive),
+    })
+}
+
+/// The report of a position track: its derivation's findings when it shows an impact.
+fn of_track(track: Track, file: &str, notes: Notes, reading: &Reading, derive: &Derive) -> Report {
+    let rows: Vec<usize> = (0..track.t.len())
+        .filter(|&i| track.x[i].is_finite())
+        .collect();
+    let t: Vec<f64> = rows.iter().map(|&i| track.t[i]).collect();
+    let x: Vec<f64> = rows.iter().map(|&i| track.x[i]).collect();
+    let mut missing = no_position(&track);
+    missing.extend(jumps(&track.t));
+    missing.sort_by(|a, b| a.from.total_cmp(&b.from));
+    let mut report = Report {
+        file: file.to_string(),
+        notes,
+        kind: "position track",
+        centre: Some(track.centre_name.clone()),
+        mark: track.mark_name.clone(),
+        frames: rows.len(),
+        frame_rate: 1.0 / frame_spacing(&t),
+        t_first: t.first().copied().unwrap_or(f64::NAN),
+        t_last: t.last().copied().unwrap_or(f64::NAN),
+        missing,
+        scatter: Some(scatter(&x)),
+        approach_speed: None,
+        approach_speed_se: None,
+        speed: None,
+        impacts: Vec::new(),
+        impact_note: String::new(),
+    };
+    let opts = Derive {
+        impact_at: reading.impact_at.or(derive.impact_at),
+        ..*derive
+    };
+    match measured::prepare(RawSeries::Positions(track.clone()), &opts) {
+        Ok(Series::Track(_, found)) => {
+            report.scatter = Some(found.scatter);
+            report.approach_speed = Some(found.approach_speed);
+            report.approach_speed_se = Some(found.approach_speed_se).filter(|s| s.is_finite());
+            report.impacts = std::iter::once(found.impact_t)
+                .chain(found.later_impacts.iter().map(|dt| found.impact_t + dt))
+                .collect();
+            report.impact_note = format!(
+                "first impact {} at t = {:.4} s ({} frames before, {} after); the other ball lies toward {}x{}",
+                if found.impact_detected {
+                    "found"
+                } else {
+                    "given"
+                },
+                found.impact_t,
+                found.frames_before,
+                found.frames_after,
+                if found.direction > 0.0 { "+" } else { "−" },
+                if found.later_impacts.is_empty() {
+                    String::new()
+                } else {
+                    format!(
+                        "; {} later impact{}",
+                        found.later_impacts.len(),
+                        if found.later_impacts.len() == 1 {
+                            ""
+                        } else {
+                            "s"
+                        }
+                    )
+                }
+            );
+        }
+        Ok(Series::Velocities(_)) => {}
+        Err(e) => {
+            report.speed = approach_speed(&track);
+            let what = if track.mark.is_some() {
+                "a ball's track with a rim mark"
+            } else {
+                "a single ball's track"
+            };
+            let e = e.to_string();
+            report.impact_note = match e.strip_prefix("no impact found") {
+                Some(why) => format!("{what}, no impact found{why}"),
+                None => format!("{what}, no impact found ({e})"),
+            };
+        }
+    }
+    report
+}
+
+/// Runs of rows with a time but no centre position.
+fn no_position(track: &Track) -> Vec<Gap> {
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < track.t.len() {
+        if track.x[i].is_finite() {
+            i += 1;
+            continue;
+        }
+        let start = i;
+        while i < track.t.len() && !track.x[i].is_finite() {
+            i += 1;
+        }
+        out.push(Gap {
+            from: track.t[start],
+            to: track.t[i - 1],
+            frames: i - start,
+            why: "no position",
+        });
+    }
+    out
+}
+
+/// Jumps in time of more than one and a half frames: the frames between are missing.
+fn jumps(t: &[f64]) -> Vec<Gap> {
+    let frame = frame_spacing(t);
+    if frame.is_nan() || frame <= 0.0 {
+        return Vec::new();
+    }
+    t.windows(2)
+        .filter(|w| w[1] - w[0] > 1.5 * frame)
+        .map(|w| Gap {
+            from: w[0],
+            to: w[1],
+            frames: ((w[1] - w[0]) / frame).round() as usize - 1,
+            why: "no row",
+        })
+        .collect()
+}
