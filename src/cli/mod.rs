@@ -62,9 +62,10 @@ pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
         Some(Command::Compare(args)) => {
             methods::compare(scene, &cli.data, args).map(Outcome::Print)
         }
-        Some(Command::Fit(args)) => {
-            fit::run(scene, &cli.scene, &cli.data, args).map(Outcome::Print)
-        }
+        Some(Command::Fit(args)) => deliver(args.output.as_deref(), || {
+            fit::run(scene, &cli.scene, &cli.data, args)
+        })
+        .map(Outcome::Print),
         Some(Command::Sweep(args)) => sweep::run(&cli.scene, args).map(Outcome::Print),
         Some(Command::Data(args)) => data::run(args, &cli.data).map(Outcome::Print),
         Some(Command::Presets) => Ok(Outcome::Print(presets())),

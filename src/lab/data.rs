@@ -196,11 +196,26 @@ pub(super) fn same_data(a: Option<&InUse>, b: Option<&InUse>) -> bool {
     }
 }
 
+/// The approach speed of `series` (the scene's v0 it measures): a track's line through
+/// the frames before the first impact, a velocity series' mean v_cm over them
+/// ([`crate::study::fit::of_velocities`]); `None` where the data do not show it.
+pub fn approach(series: &Series) -> Option<crate::study::fit::Approach> {
+    use crate::study::fit::{Approach, of_velocities};
+    match series {
+        Series::Track(_, found) => Approach::of_track(
+            found.approach_speed,
+            found.approach_speed_se,
+            found.frames_before,
+        ),
+        Series::Velocities(m) => of_velocities(&m.t, &m.v_cm),
+    }
+}
+
 /// The scene values a series measures itself: both balls' v0 from the left ball's
-/// approach ([`crate::study::fit::approach`]; the right ball is not tracked, and the
-/// lab's scenes are symmetric); none where the data do not show the approach.
-pub(super) fn measured_values(series: &Series) -> SceneSpec {
-    match crate::study::fit::approach(series) {
+/// approach ([`approach`]; the right ball is not tracked, and the lab's scenes are
+/// symmetric); none where the data do not show the approach.
+pub fn measured_values(series: &Series) -> SceneSpec {
+    match approach(series) {
         Some(a) => SceneSpec::default().with(Key::V0, a.speed),
         None => SceneSpec::default(),
     }

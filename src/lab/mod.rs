@@ -25,7 +25,7 @@ use crate::settings::spec::{SceneError, SceneSpec};
 use crate::study::measured::Series;
 use crate::study::preset::Preset;
 
-pub use data::{Groove, InUse, OtherGroove, OwnData, Whose};
+pub use data::{Groove, InUse, OtherGroove, OwnData, Whose, approach, measured_values};
 pub use resolved::{MeasuredPoints, Pinned, Point, Resolved, Story, differences, value_range};
 pub use settings::{Edit, Settings};
 pub use span::SpanEnd;
@@ -73,10 +73,7 @@ impl Deref for Lab {
 impl Lab {
     /// The lab on its settings, with the user's own series (`--data`) in place of the
     /// preset's, if any.
-    pub fn new(mut settings: Settings, own_data: Option<OwnData>) -> Result<Lab, SceneError> {
-        if let Some(own) = &own_data {
-            settings.from_data = data::measured_values(&own.series);
-        }
+    pub fn new(settings: Settings, own_data: Option<OwnData>) -> Result<Lab, SceneError> {
         let in_use = choose(&settings, own_data.as_ref())?;
         let now = Arc::new(Resolved::build(&settings, in_use.as_ref(), None)?);
         Ok(Lab {

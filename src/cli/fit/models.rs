@@ -3,18 +3,9 @@
 
 use std::fmt::Write as _;
 
+use super::table::{pm, symbol};
 use crate::settings::units::Dimension;
 use crate::study::fit::{self, Candidate};
-
-/// A fitted parameter's symbol and unit for people.
-pub(super) fn symbol(parameter: &str) -> (&'static str, &'static str) {
-    match parameter {
-        "mu" => ("μ_k", ""),
-        "v0" => ("v0", " m/s"),
-        "restitution" => ("e", ""),
-        _ => ("c_rr", ""),
-    }
-}
 
 /// The candidate models compared by AIC and BIC, and the one the data support.
 pub(super) fn table(models: &[Candidate], positions: bool) -> String {
@@ -69,7 +60,7 @@ pub(super) fn table(models: &[Candidate], positions: bool) -> String {
                 match (&e.not_determined, e.se) {
                     (Some(_), _) => format!("{name} not determined"),
                     (None, Some(se)) => {
-                        format!("{name} {}{unit}", super::table::pm(e.value, 2.0 * se))
+                        format!("{name} {}{unit}", pm(e.value, 2.0 * se))
                     }
                     (None, None) => format!("{name} {:.4}{unit}", e.value),
                 }

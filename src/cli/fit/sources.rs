@@ -10,9 +10,10 @@ use serde::Serialize;
 
 use crate::cli::args::{DataArgs, SceneArgs};
 use crate::lab::Lab;
+use crate::lab::approach;
 use crate::settings::params::Key;
 use crate::settings::units::{Dimension, show, show_exact, significant, with_uncertainty};
-use crate::study::fit::{Approach, approach};
+use crate::study::fit::Approach;
 
 /// Where one scene value came from.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]

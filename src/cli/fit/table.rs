@@ -80,7 +80,7 @@ fn rms_text(m: &ModelFit) -> String {
 pub(super) fn model_name(model: &str) -> String {
     model
         .split('+')
-        .map(|p| super::models::symbol(p).0)
+        .map(|p| symbol(p).0)
         .collect::<Vec<_>>()
         .join(" + ")
 }
@@ -297,33 +297,7 @@ pub(super) fn track_table(
         let _ = writeln!(out, "  {name:<33} {a:>24} {b:>24}");
     };
     row(&mut out, "μ_k (± 2σ, 95 %)", mu_cell(v), mu_cell(p));
-    let free =
-        |m: &ModelFit, name: &str, se: Option<f64>| se.is_some() || m.undetermined(name).is_some();
-    if free(v, "v0", v.v0_se) || free(p, "v0", p.v0_se) {
-        row(
-            &mut out,
-            "v0 m/s (± 2σ)",
-            cell(v, "v0", v.v0, v.v0_se),
-            cell(p, "v0", p.v0, p.v0_se),
-        );
-    }
-    if free(v, "restitution", v.restitution_se) || free(p, "restitution", p.restitution_se) {
-        row(
-            &mut out,
-            "e (± 2σ)",
-            cell(v, "restitution", v.restitution, v.restitution_se),
-            cell(p, "restitution", p.restitution, p.restitution_se),
-        );
-    }
-    let c_rr = "rolling_resistance";
-    if free(v, c_rr, v.rolling_resistance_se) || free(p, c_rr, p.rolling_resistance_se) {
-        row(
-            &mut out,
-            "c_rr (± 2σ)",
-            cell(v, c_rr, v.rolling_resistance, v.rolling_resistance_se),
-            cell(p, c_rr, p.rolling_resistance, p.rolling_resistance_se),
-        );
-    }
+    free_rows(&mut out, v, p);
     row(
         &mut out,
         "RMS residual",
@@ -350,7 +324,7 @@ pub(super) fn track_table(
             let _ = writeln!(
                 out,
                 "  {what} fit: {} not determined: {}",
-                super::models::symbol(n.parameter).0,
+                symbol(n.parameter).0,
                 n.reason
             );
         }
@@ -360,6 +334,38 @@ pub(super) fn track_table(
         "  (the velocity fit takes the model through the same local fits as the data, profiles out the impact time and counts the frames neighbouring points share; the position fit needs no derivatives and is the more precise: quote it)"
     );
     out
+}
+
+/// The rows of v0, e and c_rr where either fit freed them: the velocities' `v` and
+/// the positions' `p` side by side.
+fn free_rows(out: &mut String, v: &ModelFit, p: &ModelFit) {
+    let free =
+        |m: &ModelFit, name: &str, se: Option<f64>| se.is_some() || m.undetermined(name).is_some();
+    let rows = [
+        ("v0 m/s (± 2σ)", "v0", (v.v0, v.v0_se), (p.v0, p.v0_se)),
+        (
+            "e (± 2σ)",
+            "restitution",
+            (v.restitution, v.restitution_se),
+            (p.restitution, p.restitution_se),
+        ),
+        (
+            "c_rr (± 2σ)",
+            "rolling_resistance",
+            (v.rolling_resistance, v.rolling_resistance_se),
+            (p.rolling_resistance, p.rolling_resistance_se),
+        ),
+    ];
+    for (label, name, a, b) in rows {
+        if free(v, name, a.1) || free(p, name, b.1) {
+            let _ = writeln!(
+                out,
+                "  {label:<33} {:>24} {:>24}",
+                cell(v, name, a.0, a.1),
+                cell(p, name, b.0, b.1)
+            );
+        }
+    }
 }
 
 /// The fitted μ_k in a column: with its 95 % range, or "not determined" when the data
@@ -396,4 +402,14 @@ fn regime(m: &ModelFit) -> String {
 /// Whether a fit's prediction agrees with what was observed, in a column.
 fn verdict(m: &ModelFit) -> String {
     m.agreement().word().to_string()
+}
+
+/// A fitted parameter's symbol and unit for people.
+pub(super) fn symbol(parameter: &str) -> (&'static str, &'static str) {
+    match parameter {
+        "mu" => ("μ_k", ""),
+        "v0" => ("v0", " m/s"),
+        "restitution" => ("e", ""),
+        _ => ("c_rr", ""),
+    }
 }

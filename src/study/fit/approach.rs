@@ -5,7 +5,6 @@
 use serde::Serialize;
 
 use super::uncertainty::effective_points;
-use crate::study::measured::{Measured, Series};
 
 /// The approach speed the data measure.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -21,38 +20,38 @@ pub struct Approach {
 /// Fewest frames before the impact for the data to give the approach speed.
 pub const APPROACH_FRAMES: usize = 3;
 
-/// The approach speed of `series`: a track's line through the frames before the first
-/// impact ([`crate::study::measured::Found::approach_speed`]), a velocity series' mean
-/// v_cm over the frames before it (the ball rolls in at a steady speed), leaving out
-/// the frame that may straddle the impact; its ± counts frames whose errors go
-/// together as fewer points. `None` with fewer than [`APPROACH_FRAMES`] frames, or
-/// an approach that is no speed toward the impact.
-pub fn approach(series: &Series) -> Option<Approach> {
-    let found = match series {
-        Series::Track(_, found) => Some(Approach {
-            speed: found.approach_speed,
-            se: found.approach_speed_se,
-            frames: found.frames_before,
-        }),
-        Series::Velocities(m) => of_velocities(m),
-    };
-    found.filter(|a| {
-        a.frames >= APPROACH_FRAMES && a.speed > 0.0 && a.speed.is_finite() && a.se.is_finite()
-    })
+impl Approach {
+    /// A track's approach speed (its line through the frames before the first
+    /// impact) with its standard error; `None` when it is no usable approach.
+    pub fn of_track(speed: f64, se: f64, frames: usize) -> Option<Approach> {
+        Some(Approach { speed, se, frames }).filter(Approach::usable)
+    }
+
+    /// At least [`APPROACH_FRAMES`] frames, toward the impact, finite.
+    fn usable(&self) -> bool {
+        self.frames >= APPROACH_FRAMES
+            && self.speed > 0.0
+            && self.speed.is_finite()
+            && self.se.is_finite()
+    }
 }
 
-/// [`approach`] of a velocity series.
-fn of_velocities(m: &Measured) -> Option<Approach> {
-    let frame =
-        m.t.windows(2)
-            .map(|w| w[1] - w[0])
-            .fold(f64::INFINITY, f64::min);
-    let v: Vec<f64> =
-        m.t.iter()
-            .zip(&m.v_cm)
-            .filter(|(t, v)| **t <= -frame && v.is_finite())
-            .map(|(_, v)| *v)
-            .collect();
+/// The approach speed of a velocity series (times `t` from the first impact, `v_cm`):
+/// the mean v_cm over the frames before the impact (the ball rolls in at a steady
+/// speed), leaving out the frame that may straddle it; its ± counts frames whose
+/// errors go together as fewer points. `None` with fewer than [`APPROACH_FRAMES`]
+/// such frames, or no speed toward the impact.
+pub fn of_velocities(t: &[f64], v_cm: &[f64]) -> Option<Approach> {
+    let frame = t
+        .windows(2)
+        .map(|w| w[1] - w[0])
+        .fold(f64::INFINITY, f64::min);
+    let v: Vec<f64> = t
+        .iter()
+        .zip(v_cm)
+        .filter(|(t, v)| **t <= -frame && v.is_finite())
+        .map(|(_, v)| *v)
+        .collect();
     if v.len() < APPROACH_FRAMES {
         return None;
     }
@@ -67,6 +66,7 @@ fn of_velocities(m: &Measured) -> Option<Approach> {
         se: (var / worth).sqrt(),
         frames: v.len(),
     })
+    .filter(Approach::usable)
 }
 
 #[cfg(test)]
@@ -86,8 +86,7 @@ mod tests {
                 _ => 0.5 + if i % 2 == 0 { 0.01 } else { -0.01 },
             })
             .collect();
-        let m = Measured::velocities(t, v_cm, vec![f64::NAN; 20]);
-        let a = approach(&Series::Velocities(std::sync::Arc::new(m))).unwrap();
+        let a = of_velocities(&t, &v_cm).unwrap();
         // −0.095 … −0.015: 9 frames, alternating ±0.01 around 0.5 (mean 0.5 + 0.01/9).
         assert_eq!(a.frames, 9);
         assert!((a.speed - (0.5 + 0.01 / 9.0)).abs() < 1e-12, "{a:?}");
@@ -98,7 +97,6 @@ mod tests {
     #[test]
     fn too_few_frames_before_the_impact_give_no_approach() {
         let t = vec![-0.015, -0.005, 0.005, 0.015];
-        let m = Measured::velocities(t, vec![0.5, 0.5, -0.3, -0.2], vec![f64::NAN; 4]);
-        assert_eq!(approach(&Series::Velocities(std::sync::Arc::new(m))), None);
+        assert_eq!(of_velocities(&t, &[0.5, 0.5, -0.3, -0.2]), None);
     }
 }

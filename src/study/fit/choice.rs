@@ -223,18 +223,26 @@ pub(super) fn candidates_within(
             if fitted[k].1.idx == common {
                 continue;
             }
-            // From its own fit or a smaller model's refit, whichever fits the common
-            // frames better: a larger model must fit them at least as well.
+            // From its own fit, a smaller model's refit, or its own values as another
+            // model fitted them, whichever fits the common frames best: a larger model
+            // must fit them at least as well, and one model fitted from two starts
+            // must not land in two minima (one fit per model).
             let cost_on = |s: &Scene| {
                 let r = labelled_residuals(s, data, &common, target, true, evals).0;
                 r.iter().map(|x| x * x).sum::<f64>()
             };
             let free = fitted[k].0.clone();
+            let own = fitted[k].1.scene;
+            let theirs = fitted.iter().map(|(_, s)| {
+                let values: Vec<f64> = free.iter().map(|f| f.value_in(&s.scene)).collect();
+                with(&own, &free, &values)
+            });
             let start = fitted[..k]
                 .iter()
                 .filter(|(f, _)| f.iter().all(|x| free.contains(x)))
-                .map(|(f, s)| with(&fitted[k].1.scene, f, &s.values))
-                .chain([fitted[k].1.scene])
+                .map(|(f, s)| with(&own, f, &s.values))
+                .chain(theirs)
+                .chain([own])
                 .min_by(|a, b| cost_on(a).total_cmp(&cost_on(b)))
                 .unwrap_or(fitted[k].1.scene);
             fitted[k].1 = scored_fit_within(&start, m, &free, target, Some(&common), evals)?;

@@ -21,7 +21,7 @@ use crate::physics::scene::Scene;
 use crate::study::Progress;
 use crate::study::measured::series::Measured;
 
-pub use approach::{APPROACH_FRAMES, Approach, approach};
+pub use approach::{APPROACH_FRAMES, Approach, of_velocities};
 pub use choice::{Candidate, Estimate, compare_candidates, compare_models};
 pub use least_squares::{NearImpacts, aligned_track};
 pub use line::{
@@ -77,7 +77,7 @@ pub struct Ask {
     pub window: (Option<f64>, Option<f64>),
     /// The model to headline (`fit --free`); `None`: the one the data support.
     pub free: Option<Vec<Free>>,
-    /// The scene's v0 was taken from the data's approach ([`approach`]), not given:
+    /// The scene's v0 was taken from the data's approach ([`Approach`]), not given:
     /// free in every candidate model, so that its error reaches μ_k's ±.
     pub v0_measured: bool,
 }

@@ -477,14 +477,17 @@ impl App {
             ));
             return;
         }
-        // μ_k is always fitted; v0 and e only when the fit freed them (they have an
-        // uncertainty then).
+        // μ_k is always fitted; v0, e and c_rr only when the fit freed them (they have
+        // an uncertainty then): the scene becomes the fitted one.
         let mut changes = vec![(Key::Mu, fitted.mu)];
         if fitted.v0_se.is_some() {
             changes.push((Key::V0, fitted.v0));
         }
         if fitted.restitution_se.is_some() {
             changes.push((Key::Restitution, fitted.restitution));
+        }
+        if fitted.rolling_resistance_se.is_some() {
+            changes.push((Key::RollingResistance, fitted.rolling_resistance));
         }
         // All or nothing: a fit is never left half applied.
         let edits = self.lab.settings().edits().len();
