@@ -7,7 +7,7 @@ use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use groovelab::lab::{Lab, Settings as LabSettings};
-use groovelab::methods::{Method, Model, Observer, Settings, Y, integrate, start_state};
+use groovelab::methods::{Method, Model, Observer, Run, Settings, Y, start_state};
 use groovelab::settings::params::Key;
 use groovelab::settings::spec::SceneSpec;
 use groovelab::study::compare::sweep;
@@ -17,6 +17,17 @@ struct Finite;
 impl Observer for Finite {
     fn step(&mut self, _t: f64, y: &Y) -> bool {
         y.iter().all(|v| v.is_finite())
+    }
+}
+
+/// One run of 1.2 simulated seconds from the run-up's state `y0`, stepped as `s` says.
+fn run<'a>(model: &'a Model, y0: Y, s: &'a Settings) -> Run<'a> {
+    Run {
+        model,
+        y0: black_box(y0),
+        t0: -0.2,
+        t1: 1.0,
+        settings: s,
     }
 }
 
@@ -38,7 +49,7 @@ fn methods(c: &mut Criterion) {
                 ..Settings::default()
             };
             group.bench_function(format!("{} h={h:.0e}", method.name()), |b| {
-                b.iter(|| integrate(method, &model, black_box(y0), -0.2, 1.0, &s, &mut Finite))
+                b.iter(|| method.integrate(&run(&model, y0, &s), &mut Finite))
             });
         }
     }
@@ -49,17 +60,7 @@ fn methods(c: &mut Criterion) {
             ..Settings::default()
         };
         group.bench_function(format!("rk45 tol={tol:.0e}"), |b| {
-            b.iter(|| {
-                integrate(
-                    Method::Rk45,
-                    &model,
-                    black_box(y0),
-                    -0.2,
-                    1.0,
-                    &s,
-                    &mut Finite,
-                )
-            })
+            b.iter(|| Method::Rk45.integrate(&run(&model, y0, &s), &mut Finite))
         });
     }
     group.finish();

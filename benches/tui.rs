@@ -10,8 +10,8 @@ use groovelab::settings::params::Key;
 use groovelab::study::preset::Preset;
 use groovelab::tui::app::{App, Library};
 use groovelab::tui::keys;
+use groovelab::tui::screen;
 use groovelab::tui::theme::{Glyphs, Theme};
-use groovelab::tui::view;
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 
@@ -24,7 +24,7 @@ fn app(name: &str) -> App {
 fn key_to_frame(a: &mut App, keys: &str, area: Rect, theme: &Theme) -> Buffer {
     groovelab::tui::replay(a, &keys::parse_script(keys).unwrap());
     let mut buf = Buffer::empty(area);
-    view::draw(a, area, &mut buf, theme);
+    screen::draw(a, area, &mut buf, theme);
     buf
 }
 
@@ -36,7 +36,7 @@ fn tui(c: &mut Criterion) {
     c.bench_function("draw one 120x40 frame (paper-b4.9)", |b| {
         b.iter(|| {
             let mut buf = Buffer::empty(area);
-            view::draw(black_box(&a), area, &mut buf, &theme);
+            screen::draw(black_box(&a), area, &mut buf, &theme);
             buf
         })
     });
@@ -44,7 +44,7 @@ fn tui(c: &mut Criterion) {
         b.iter(|| {
             let a = app(black_box("paper-b4.9"));
             let mut buf = Buffer::empty(area);
-            view::draw(&a, area, &mut buf, &theme);
+            screen::draw(&a, area, &mut buf, &theme);
             buf
         })
     });

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Smoke test of the real terminal app in tmux: start it, press keys, read the screen,
 # quit; then check that a panic, Ctrl-C, and SIGINT, SIGTERM, SIGHUP or SIGQUIT sent
-# with kill leave the terminal restored (line mode and echo, main screen, cursor shown,
+# with kill leave the terminal restored (and that Ctrl-Z suspends and fg resumes) (line mode and echo, main screen, cursor shown,
 # mouse off) with the right exit status. Needs tmux and a built
 # binary (BIN, default target/debug/groovelab). Exits non-zero on the first failure.
 set -euo pipefail
@@ -93,4 +93,26 @@ for sig in INT TERM HUP QUIT; do
   tmux kill-session -t "$SESSION"
   signals=$((signals + 1))
 done
-echo "smoke: $((3 + signals)) passed, 0 failed"
+# Ctrl-Z suspends as any job does: the terminal restored and the job stopped; `fg`
+# takes the terminal again and draws the whole screen.
+tmux new-session -d -s "$SESSION" -x 100 -y 30 "bash --norc --noprofile -i"
+tmux send-keys -t "$SESSION" "PS1='SHELL> '; $BIN" Enter
+wait_for "RECOLLIDE" 100
+tmux send-keys -t "$SESSION" C-z
+wait_for "Stopped" 50
+tmux send-keys -t "$SESSION" "stty -a | tr ' ' '\\n' | grep -x -e icanon -e -icanon -e echo -e -echo" Enter
+for _ in $(seq 1 30); do screen | grep -qx -e icanon -e -icanon && break; sleep 0.1; done
+screen | grep -qx -- "icanon" || fail "Ctrl-Z: terminal left in raw mode"
+screen | grep -qx -- "echo" || fail "Ctrl-Z: terminal left without echo"
+[ "$(flag alternate_on)" = 0 ] || fail "Ctrl-Z: terminal left on the alternate screen"
+[ "$(flag cursor_flag)" = 1 ] || fail "Ctrl-Z: cursor left hidden"
+tmux send-keys -t "$SESSION" "clear; fg" Enter
+wait_for "RECOLLIDE" 50
+wait_for "preset paper-b4.9"
+[ "$(flag alternate_on)" = 1 ] || fail "fg: the app did not take the alternate screen again"
+tmux send-keys -t "$SESSION" q
+wait_for "SHELL>" 50
+[ "$(flag alternate_on)" = 0 ] || fail "q after fg: terminal left on the alternate screen"
+tmux kill-session -t "$SESSION"
+
+echo "smoke: $((4 + signals)) passed, 0 failed"

@@ -116,6 +116,9 @@ pub enum Command {
     Data(DataCmdArgs),
     /// Regime map over one or two scene parameters.
     Sweep(SweepArgs),
+    /// Track both balls and their marks in a video (or a folder of frames): a
+    /// Tracker-style file for --data, or JSON.
+    Track(super::track_args::TrackArgs),
     /// List the built-in and user presets.
     Presets,
     /// Print a shell completion script (e.g. `groovelab completions bash > groovelab.bash`).

@@ -7,6 +7,7 @@ use serde::Serialize;
 use super::args::{
     CompareArgs, CompareFormat, DataArgs, Format, MAX_SAMPLES, SceneArgs, SimulateArgs,
 };
+use super::deliver::deliver;
 use super::error::{BadValue, CliError, Flag};
 use super::open::lab_of_stated_scene;
 use super::states::{csv_output, samples, state_header, state_row};
@@ -146,18 +147,25 @@ pub(super) fn simulate_method(
         last: None,
         finite: true,
     };
-    let y0 = methods::start_state(scene, t0);
-    let outcome = methods::integrate(args.method, &model, y0, t0, t1, settings, &mut rec);
+    // Every method starts from the exact run-up's state at the span's start.
+    let run = methods::Run {
+        model: &model,
+        y0: methods::state(exact.at(t0)),
+        t0,
+        t1,
+        settings,
+    };
+    let outcome = args.method.integrate(&run, &mut rec);
     if let (Some(why), 0) = (&outcome.stalled, outcome.steps) {
         // Refused before the first step: there is no run to report.
         return Err(BadValue::MethodCannotRun {
             method: args.method,
-            why: why.clone(),
+            why: why.to_string(),
         }
         .into());
     }
     let stalled = match (&outcome.stalled, rec.finite) {
-        (Some(why), _) => Some(why.clone()),
+        (Some(why), _) => Some(why.to_string()),
         (None, false) => Some(format!(
             "the state became non-finite at t = {:.6} s",
             outcome.t
@@ -270,9 +278,18 @@ pub(super) fn compare(
     let lab = lab_of_stated_scene(scene_args, data)?;
     let (scene, span) = (lab.scene, lab.span);
     let base = settings(None, None, args.epsilon)?;
-    if let Some(path) = &args.output {
-        crate::output::check_output(path)?;
-    }
+    deliver(args.output.as_deref(), || {
+        compare_text(&scene, &span, &base, args)
+    })
+}
+
+/// What `compare` prints: the methods' rows in the format asked for.
+fn compare_text(
+    scene: &Scene,
+    span: &Span,
+    base: &Settings,
+    args: &CompareArgs,
+) -> Result<String, CliError> {
     let methods: Vec<Method> = match &args.methods {
         Some(m) if !m.is_empty() => {
             // Exact first, then each method once (a repeated name adds no rows, and
@@ -290,14 +307,14 @@ pub(super) fn compare(
             .collect(),
     };
     let bar = super::progress::Bar::new("runs", true);
-    let rows = cmp::sweep(&scene, &span, &methods, &base, &bar);
+    let rows = cmp::sweep(scene, span, &methods, base, &bar);
     bar.finish();
     let rows = rows.map_err(|_| CliError::Interrupted)?;
-    let text = match args.format {
+    Ok(match args.format {
         CompareFormat::Json => {
             let doc = CompareJson {
-                scene: &scene,
-                span,
+                scene,
+                span: *span,
                 rows: &rows,
             };
             let mut s = serde_json::to_string_pretty(&doc).expect("plain data serializes");
@@ -306,23 +323,14 @@ pub(super) fn compare(
         }
         CompareFormat::Table => table(&rows),
         CompareFormat::Svg => {
-            crate::study::figures::work_precision(&rows, &scene).map_err(|source| {
+            crate::study::figures::work_precision(&rows, scene).map_err(|source| {
                 CliError::Draw {
                     what: "diagram",
                     source,
                 }
             })?
         }
-    };
-    match &args.output {
-        None => Ok(text),
-        Some(path) => {
-            // From here a stop signal removes the temporary file and writes nothing.
-            crate::signals::watch();
-            crate::output::write_atomically(path, text.as_bytes())?;
-            Ok(format!("wrote {}\n", path.display()))
-        }
-    }
+    })
 }
 
 fn table(rows: &[Row]) -> String {

@@ -20,6 +20,7 @@ use crate::tui::{
 
 mod args;
 mod data;
+mod deliver;
 pub mod entry;
 mod error;
 mod fit;
@@ -29,9 +30,12 @@ mod open;
 mod progress;
 mod states;
 mod sweep;
+mod track;
+mod track_args;
 pub use crate::output::{self, write_atomically};
-use crate::settings::units::{Dimension, show, significant};
+use crate::settings::units::{Dimension, show, sig_figs, significant};
 pub use args::*;
+use deliver::deliver;
 pub use error::{BadValue, CliError, Flag, Usage};
 pub use open::{app, lab, opened, scene_of_data};
 use states::{csv_output, samples, state_rows};
@@ -67,29 +71,12 @@ pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
         })
         .map(Outcome::Print),
         Some(Command::Sweep(args)) => sweep::run(&cli.scene, args).map(Outcome::Print),
+        Some(Command::Track(args)) => track::run(&cli.scene, args).map(Outcome::Print),
         Some(Command::Data(args)) => data::run(args, &cli.data).map(Outcome::Print),
         Some(Command::Presets) => Ok(Outcome::Print(presets())),
         Some(Command::Completions { shell }) => Ok(Outcome::Print(manual::completions(*shell))),
         Some(Command::Manpage) => Ok(Outcome::Print(manual::manpage())),
     }
-}
-
-/// What `work` prints, or with `--output FILE` the same bytes written to FILE (the
-/// target checked before the work, written atomically after it) and a line saying
-/// so: the `--output` of `simulate` and `render`, as `compare`, `fit` and `sweep` do.
-fn deliver(
-    output: Option<&std::path::Path>,
-    work: impl FnOnce() -> Result<String, CliError>,
-) -> Result<String, CliError> {
-    let Some(path) = output else {
-        return work();
-    };
-    output::check_output(path)?;
-    let text = work()?;
-    // From here a stop signal removes the temporary file and writes nothing.
-    crate::signals::watch();
-    write_atomically(path, text.as_bytes())?;
-    Ok(format!("wrote {}\n", path.display()))
 }
 
 /// The first global option given that `command` does not use, if any (clap's global
@@ -102,6 +89,7 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         Some(Command::Compare(_)) => ("compare", true, true, false),
         Some(Command::Fit(_)) => ("fit", true, true, false),
         Some(Command::Sweep(_)) => ("sweep", true, false, false),
+        Some(Command::Track(_)) => ("track", true, false, false),
         Some(Command::Data(_)) => ("data", false, true, false),
         Some(Command::Presets) => ("presets", false, false, false),
         Some(Command::Completions { .. }) => ("completions", false, false, false),
@@ -194,7 +182,7 @@ pub fn render_with(
     let (cols, rows) = args.size;
     // Headless output has no colours; NO_COLOR does not change the text.
     let theme = tui::theme::Theme::new(tui::theme::Glyphs::new(ascii), true);
-    Ok(tui::view::to_text(&app, cols, rows, &theme))
+    Ok(tui::screen::to_text(&app, cols, rows, &theme))
 }
 
 /// `--dt`, `--tol` and `--epsilon` only where the method uses them: a setting the run
@@ -398,12 +386,12 @@ fn story_lines(out: &mut String, now: &Resolved) {
         let f = derived.forces;
         let _ = writeln!(
             out,
-            "forces   |N_A| = {:.4} N   F_net = {:.4} N (x)   τ_net = {:.3e} N m (z)   a_cm = {} m/s²   a_t = {} m/s²",
-            f.normal_a.norm(),
-            f.net.x,
-            f.torque.z,
-            significant(rec.a_cm, 4),
-            significant(rec.a_t, 4)
+            "forces   |N_A| = {} N   F_net = {} N (x)   τ_net = {} N m (z)   a_cm = {} m/s²   a_t = {} m/s²",
+            sig_figs(f.normal_a.norm(), 4),
+            sig_figs(f.net.x, 4),
+            sig_figs(f.torque.z, 4),
+            sig_figs(rec.a_cm, 4),
+            sig_figs(rec.a_t, 4)
         );
     }
 }

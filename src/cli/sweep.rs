@@ -90,6 +90,12 @@ pub fn run_with_stop(
     };
     let x = axis(&args.x, nx, "x")?;
     let y = args.y.as_ref().map(|t| axis(t, ny, "y")).transpose()?;
+    if let Some(y) = &y {
+        sweep::check_pair(&x, y).map_err(|source| BadValue::Axis {
+            flag: Flag("y"),
+            source,
+        })?;
+    }
     let ny = y.map_or(1, |_| ny);
     // The grid's corners are checked once, by the sweep itself, before any point is
     // solved or a byte is committed.

@@ -2,7 +2,16 @@
 //! classical RK4 with `tanh(s/ε)` friction. Impacts: see the module above.
 
 use super::grid::{GridStep, run_grid};
-use super::system::{Friction, Method, Model, Observer, RunEnd, Settings, Y, resolve_overlap, rhs};
+use super::run::{Integrator, Observer, Run, RunEnd};
+use super::system::{Friction, Model, Y, resolve_overlap, rhs};
+
+/// The fixed-step methods.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Fixed {
+    Euler,
+    SymplecticEuler,
+    Rk4,
+}
 
 /// Butcher tableau of classical RK4, as data (statics: an unoptimised build copies a
 /// const table whole at every use).
@@ -14,10 +23,10 @@ fn axpy(y: &Y, h: f64, d: &Y) -> Y {
 }
 
 /// One step of `method`; returns the new state and the right-hand-side evaluations.
-fn step(method: Method, m: &Model, law: Friction, y: &Y, h: f64) -> (Y, usize) {
+fn step(method: Fixed, m: &Model, law: Friction, y: &Y, h: f64) -> (Y, usize) {
     match method {
-        Method::Euler => (axpy(y, h, &rhs(m, law, y)), 1),
-        Method::SymplecticEuler => {
+        Fixed::Euler => (axpy(y, h, &rhs(m, law, y)), 1),
+        Fixed::SymplecticEuler => {
             // Velocities first, then positions with the new velocities.
             let d = rhs(m, law, y);
             let mut n = *y;
@@ -28,7 +37,7 @@ fn step(method: Method, m: &Model, law: Friction, y: &Y, h: f64) -> (Y, usize) {
             }
             (n, 1)
         }
-        Method::Rk4 => {
+        Fixed::Rk4 => {
             let mut k = [[0.0; 6]; 4];
             for i in 0..4 {
                 let yi = if i == 0 {
@@ -41,31 +50,26 @@ fn step(method: Method, m: &Model, law: Friction, y: &Y, h: f64) -> (Y, usize) {
             let d: Y = std::array::from_fn(|j| (0..4).map(|i| RK4_B[i] * k[i][j]).sum());
             (axpy(y, h, &d), 4)
         }
-        _ => unreachable!("not a fixed-step method"),
     }
 }
 
-pub(super) fn integrate(
-    method: Method,
-    m: &Model,
-    y0: Y,
-    t0: f64,
-    t1: f64,
-    s: &Settings,
-    obs: &mut dyn Observer,
-) -> RunEnd {
-    let (law, roll_threshold) = if method.regularised() {
-        (Friction::Tanh(s.epsilon), s.epsilon)
-    } else {
-        (Friction::Coulomb, 0.0)
-    };
-    run_grid(y0, t0, t1, s, roll_threshold, obs, |y, h| {
-        let (mut next, rhs_evals) = step(method, m, law, y, h);
-        let impact = resolve_overlap(m, &mut next);
-        GridStep {
-            y: next,
-            rhs_evals,
-            impact,
-        }
-    })
+impl Integrator for Fixed {
+    fn integrate(&self, run: &Run, obs: &mut dyn Observer) -> RunEnd {
+        let (m, s) = (run.model, run.settings);
+        // RK4's friction is regularised (`Method::regularised`).
+        let (law, roll_threshold) = if *self == Fixed::Rk4 {
+            (Friction::Tanh(s.epsilon), s.epsilon)
+        } else {
+            (Friction::Coulomb, 0.0)
+        };
+        run_grid(run, roll_threshold, obs, |y, h| {
+            let (mut next, rhs_evals) = step(*self, m, law, y, h);
+            let impact = resolve_overlap(m, &mut next);
+            GridStep {
+                y: next,
+                rhs_evals,
+                impact,
+            }
+        })
+    }
 }

@@ -1,7 +1,8 @@
 //! What the time-stepping methods share beyond the model: running on a fixed time grid,
 //! and seeing impacts and rolling as a time-stepping method sees them.
 
-use super::system::{Observer, RunEnd, Settings, Y, ball};
+use super::run::{Observer, Run, RunEnd, Stall};
+use super::system::{Y, ball};
 use crate::physics::solution::{Event, EventKind, Who};
 
 /// One step of a fixed-grid method: the new state, right-hand-side evaluations, and
@@ -12,22 +13,23 @@ pub(crate) struct GridStep {
     pub impact: bool,
 }
 
-/// Runs a fixed-step method on the grid `t0 + i h` (the last step lands on `t1`, with
+/// Makes `run` with a fixed-step method on the grid `t0 + i h` (the last step lands on `t1`, with
 /// no drift), reporting steps and events; refuses up front a run beyond the budget.
 pub(crate) fn run_grid(
-    y0: Y,
-    t0: f64,
-    t1: f64,
-    s: &Settings,
+    run: &Run,
     roll_threshold: f64,
     obs: &mut dyn Observer,
     mut step: impl FnMut(&Y, f64) -> GridStep,
 ) -> RunEnd {
+    let (y0, t0, t1, s) = (run.y0, run.t0, run.t1, run.settings);
     let h = s.step;
     let n = ((t1 - t0) / h).ceil() as usize;
     let mut out = RunEnd::at_start(t0, y0);
     if n > s.max_steps {
-        out.stalled = Some(format!("{n} steps needed, budget {}", s.max_steps));
+        out.stalled = Some(Stall::OverBudget {
+            needed: n,
+            budget: s.max_steps,
+        });
         return out;
     }
     let mut tracker = EventTracker::new(roll_threshold);

@@ -1,6 +1,6 @@
 //! Time-stepping methods for the same 1-D model, to weigh against the exact engine:
-//! one signature ([`integrate`]), one result type ([`RunEnd`]), the right-hand side
-//! kept apart from the methods, each method in its own file.
+//! one signature ([`Integrator`] over a [`Run`]), one result type ([`RunEnd`]), the
+//! right-hand side kept apart from the methods, each method in its own file.
 //!
 //! Impacts, for the fixed-step methods (`euler`, `symplectic-euler`, `rk4`), are
 //! found the way game engines find them: after a step, if the balls overlap while
@@ -9,94 +9,48 @@
 //! masses. `rk45` locates impacts and slip reversals on its dense output; `moreau`
 //! treats impacts and friction as set-valued laws at the velocity level.
 
+mod exact;
 mod fixed;
 mod grid;
 mod moreau;
 mod rk45;
+mod run;
 mod system;
 
-use crate::physics::scene::Scene;
+use crate::physics::scene::{Scene, Span};
 
-pub use system::{
-    Friction, Method, Model, Observer, RunEnd, Settings, Y, ball, collide, gap, resolve_overlap,
-    rhs,
-};
+#[cfg(test)]
+pub(crate) use exact::solves;
+pub use exact::{exact_solution, state};
+pub use run::{Integrator, Observer, Run, RunEnd, Stall};
+pub use system::{Friction, Method, Model, Settings, Y, ball, collide, gap, resolve_overlap, rhs};
 
-/// Runs `method` from the state `y0` at `t0` (the rolling run-up is integrated too)
-/// to `t1`, reporting to `obs`.
-pub fn integrate(
-    method: Method,
-    m: &Model,
-    y0: Y,
-    t0: f64,
-    t1: f64,
-    s: &Settings,
-    obs: &mut dyn Observer,
-) -> RunEnd {
-    match method {
-        Method::Exact => exact(m, t0, t1, obs),
-        Method::Euler | Method::SymplecticEuler | Method::Rk4 => {
-            fixed::integrate(method, m, y0, t0, t1, s, obs)
-        }
-        Method::Rk45 => rk45::integrate(m, y0, t0, t1, s, obs),
-        Method::Moreau => moreau::integrate(m, y0, t0, t1, s, obs),
-    }
-}
-
-/// The exact engine behind the same signature: its "steps" are its segments (one
-/// polynomial piece from event to event), reported at each segment start, and its
-/// events are the engine's. It solves the scene itself, from the same run-up state
-/// that [`start_state`] gives every method.
-fn exact(m: &Model, t0: f64, t1: f64, obs: &mut dyn Observer) -> RunEnd {
-    let span = crate::physics::scene::Span {
-        t_start: t0,
-        t_end: Some(t1),
-    };
-    let sol = crate::physics::engine::solve(&m.scene, &span);
-    let state = |s: crate::physics::solution::Snapshot| -> Y {
-        [
-            s.left.x, s.left.v, s.left.u, s.right.x, s.right.v, s.right.u,
-        ]
-    };
-    let mut out = RunEnd {
-        steps: 0,
-        rhs_evals: 0,
-        stalled: sol
-            .truncated
-            .then(|| "the event budget ended the run early".to_string()),
-        aborted: false,
-        t: t0,
-        y: state(sol.at(t0)),
-    };
-    let starts = sol.segments.iter().map(|seg| seg.t0.max(t0));
-    for t in std::iter::once(t0).chain(starts.filter(|&t| t > t0 && t < t1)) {
-        out.steps += 1;
-        if !obs.step(t, &state(sol.at(t))) {
-            out.aborted = true;
-            return out;
+impl Method {
+    /// The method itself: what makes its runs.
+    pub fn integrator(self) -> &'static dyn Integrator {
+        match self {
+            Method::Exact => &exact::Exact,
+            Method::Euler => &fixed::Fixed::Euler,
+            Method::SymplecticEuler => &fixed::Fixed::SymplecticEuler,
+            Method::Rk4 => &fixed::Fixed::Rk4,
+            Method::Rk45 => &rk45::Rk45,
+            Method::Moreau => &moreau::Moreau,
         }
     }
-    for e in sol.visible_events() {
-        obs.event(*e);
+
+    /// Makes `run` with this method, reporting to `obs`.
+    pub fn integrate(self, run: &Run, obs: &mut dyn Observer) -> RunEnd {
+        self.integrator().integrate(run, obs)
     }
-    out.t = t1;
-    out.y = state(sol.at(t1));
-    obs.step(t1, &out.y);
-    out
 }
 
 /// The state at `t_start` that rolls into the first impact at t = 0: the exact
-/// run-up, shared by every method so that they all start alike.
+/// run-up, shared by every method so that they all start alike. (Where the exact
+/// solution over a span from `t_start` is at hand, its state there is the same.)
 pub fn start_state(scene: &Scene, t_start: f64) -> Y {
-    let sol = crate::physics::engine::solve(
-        scene,
-        &crate::physics::scene::Span {
-            t_start,
-            t_end: None,
-        },
-    );
-    let s = sol.at(t_start);
-    [
-        s.left.x, s.left.v, s.left.u, s.right.x, s.right.v, s.right.u,
-    ]
+    let span = Span {
+        t_start,
+        t_end: None,
+    };
+    state(exact_solution(scene, &span).at(t_start))
 }

@@ -4,7 +4,11 @@
 //! located and no step is ever refused: accumulations of impacts cost nothing.
 
 use super::grid::{GridStep, run_grid};
-use super::system::{Model, Observer, RunEnd, Settings, Y, gap};
+use super::run::{Integrator, Observer, Run, RunEnd};
+use super::system::{Model, Y, gap};
+
+/// The Moreau–Jean method.
+pub(super) struct Moreau;
 
 const THETA: f64 = 0.5;
 
@@ -131,15 +135,10 @@ fn step(m: &Model, y: &Y, dt: f64) -> GridStep {
     }
 }
 
-pub(super) fn integrate(
-    m: &Model,
-    y0: Y,
-    t0: f64,
-    t1: f64,
-    s: &Settings,
-    obs: &mut dyn Observer,
-) -> RunEnd {
-    run_grid(y0, t0, t1, s, 0.0, obs, |y, dt| step(m, y, dt))
+impl Integrator for Moreau {
+    fn integrate(&self, run: &Run, obs: &mut dyn Observer) -> RunEnd {
+        run_grid(run, 0.0, obs, |y, dt| step(run.model, y, dt))
+    }
 }
 
 #[cfg(test)]

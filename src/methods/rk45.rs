@@ -6,7 +6,11 @@
 //! accumulation of impacts: every one of infinitely many events costs steps.
 
 use super::grid::EventTracker;
-use super::system::{Model, Observer, RunEnd, Settings, Y, collide, gap};
+use super::run::{Integrator, Observer, Run, RunEnd, Stall};
+use super::system::{Model, Settings, Y, collide, gap};
+
+/// The Dormand–Prince 5(4) method with event location.
+pub(super) struct Rk45;
 
 // The Dormand–Prince 5(4) tableau with Shampine's dense output (as scipy's RK45).
 // The system is autonomous, so the stage times only serve the tableau check.
@@ -34,23 +38,19 @@ static A: [[f64; 6]; 7] = [
         -5103.0 / 18656.0,
         0.0,
     ],
-    [
-        35.0 / 384.0,
-        0.0,
-        500.0 / 1113.0,
-        125.0 / 192.0,
-        -2187.0 / 6784.0,
-        11.0 / 84.0,
-    ],
+    FIFTH,
 ];
-static B: [f64; 7] = [
+/// The 5th-order weights, which are also the last stage's row (first same as last).
+const FIFTH: [f64; 6] = [
     35.0 / 384.0,
     0.0,
     500.0 / 1113.0,
     125.0 / 192.0,
     -2187.0 / 6784.0,
     11.0 / 84.0,
-    0.0,
+];
+static B: [f64; 7] = [
+    FIFTH[0], FIFTH[1], FIFTH[2], FIFTH[3], FIFTH[4], FIFTH[5], 0.0,
 ];
 static E: [f64; 7] = [
     -71.0 / 57600.0,
@@ -255,18 +255,16 @@ fn first_switch(
 
 /// Why the run cannot go on at `t` with step `h`, if it cannot: the step budget
 /// spent, impacts accumulating faster than steps, or the step size collapsed.
-fn stall(out: &RunEnd, impacts: usize, t: f64, h: f64, s: &Settings) -> Option<String> {
+fn stall(out: &RunEnd, impacts: usize, t: f64, h: f64, s: &Settings) -> Option<Stall> {
     if out.steps >= s.max_steps {
-        Some(format!(
-            "step budget of {} reached at t = {t:.6} s",
-            s.max_steps
-        ))
+        Some(Stall::StepBudget {
+            budget: s.max_steps,
+            t,
+        })
     } else if impacts >= MAX_IMPACTS {
-        Some(format!(
-            "{impacts} impacts by t = {t:.9} s: they accumulate faster than steps can follow"
-        ))
+        Some(Stall::Accumulating { impacts, t })
     } else if h < 1e-14 * t.abs().max(1.0) {
-        Some(format!("step size collapsed to {h:.1e} s at t = {t:.9} s"))
+        Some(Stall::Collapsed { h, t })
     } else {
         None
     }
@@ -315,14 +313,14 @@ fn at_switch(m: &Model, y: &mut Y, modes: &Modes, which: usize) -> bool {
     }
 }
 
-pub(super) fn integrate(
-    m: &Model,
-    y0: Y,
-    t0: f64,
-    t1: f64,
-    s: &Settings,
-    obs: &mut dyn Observer,
-) -> RunEnd {
+impl Integrator for Rk45 {
+    fn integrate(&self, run: &Run, obs: &mut dyn Observer) -> RunEnd {
+        integrate(run, obs)
+    }
+}
+
+fn integrate(run: &Run, obs: &mut dyn Observer) -> RunEnd {
+    let (m, y0, t0, t1, s) = (run.model, run.y0, run.t0, run.t1, run.settings);
     // The larger centre speed (at least 1 mm/s) scales the absolute tolerances.
     let scale = [y0[1], y0[4]].iter().map(|v| v.abs()).fold(1e-3, f64::max);
     let tolerances = (s.tolerance, s.tolerance * scale);

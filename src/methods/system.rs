@@ -1,12 +1,11 @@
 //! The one 1-D model every method steps: the state vector, the methods' names and
 //! settings, the friction laws, the right-hand side, the impact map and the overlap
-//! rule, what a method reports while it runs and how a run ends.
+//! rule.
 
 use serde::Serialize;
 
 use crate::physics::model::{self, BallState, Groove};
 use crate::physics::scene::Scene;
-use crate::physics::solution::Event;
 
 /// The state vector `[x_L, v_L, u_L, x_R, v_R, u_R]` (SI).
 pub type Y = [f64; 6];
@@ -217,40 +216,5 @@ pub fn ball(y: &Y, i: usize) -> BallState {
         x: y[3 * i],
         v: y[3 * i + 1],
         u: y[3 * i + 2],
-    }
-}
-
-/// What a method reports while it runs.
-pub trait Observer {
-    /// Called after every accepted step (and at the start). Return false to stop.
-    fn step(&mut self, t: f64, y: &Y) -> bool;
-    /// Called for each event the method detects.
-    fn event(&mut self, _event: Event) {}
-}
-
-/// How a run ended: where, after how much work, and why if early.
-#[derive(Clone, Debug, PartialEq)]
-pub struct RunEnd {
-    pub steps: usize,
-    pub rhs_evals: usize,
-    /// Why the run ended early, if it did (step budget, step-size collapse).
-    pub stalled: Option<String>,
-    /// Stopped by the observer (non-finite state, …).
-    pub aborted: bool,
-    pub t: f64,
-    pub y: Y,
-}
-
-impl RunEnd {
-    /// A run not yet begun: at `t0` in state `y0`, no work done.
-    pub fn at_start(t0: f64, y0: Y) -> RunEnd {
-        RunEnd {
-            steps: 0,
-            rhs_evals: 0,
-            stalled: None,
-            aborted: false,
-            t: t0,
-            y: y0,
-        }
     }
 }

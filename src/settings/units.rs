@@ -464,7 +464,21 @@ pub fn with_uncertainty(value: f64, se: f64, decimals: usize) -> (String, String
 }
 
 /// `v` with `digits` significant digits, without trailing zeros or exponent for lab-sized values.
+/// For a value someone set (μ_k = 0.17, not 0.1700); a computed quantity shown beside
+/// others takes [`sig_figs`].
 pub fn significant(v: f64, digits: usize) -> String {
+    let s = sig_figs(v, digits);
+    if s.contains('.') && !s.contains('e') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
+    }
+}
+
+/// `v` with exactly `digits` significant digits, trailing zeros kept (`-2.600`
+/// beside `3.672`: the same precision), in exponent form outside 1e-4 … 1e6 (so a
+/// tiny force reads `3.607e-9`, never `0.000`). Zero is `0`.
+pub fn sig_figs(v: f64, digits: usize) -> String {
     if v == 0.0 || !v.is_finite() {
         return format!("{v}");
     }
@@ -474,11 +488,12 @@ pub fn significant(v: f64, digits: usize) -> String {
     }
     let decimals = (digits as i32 - 1 - magnitude).max(0) as usize;
     let s = format!("{v:.decimals$}");
-    if s.contains('.') {
-        s.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        s
+    // Rounding may carry into a new digit (9.9996 → 10.000): one decimal fewer.
+    let shown: f64 = s.parse().unwrap_or(v);
+    if shown.abs() >= 10f64.powi(magnitude + 1) && decimals > 0 {
+        return format!("{v:.prec$}", prec = decimals - 1);
     }
+    s
 }
 
 /// `v` in at most `width` characters with as many significant digits as fit, up to
@@ -546,6 +561,20 @@ fn trim_zeros(s: String) -> String {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn sig_figs_keeps_the_same_precision_for_every_value() {
+        use super::sig_figs;
+        assert_eq!(sig_figs(-2.6, 4), "-2.600");
+        assert_eq!(sig_figs(3.672, 4), "3.672");
+        assert_eq!(sig_figs(0.613, 4), "0.6130");
+        assert_eq!(sig_figs(2.16e-8, 4), "2.160e-8");
+        assert_eq!(sig_figs(0.00766, 3), "0.00766");
+        assert_eq!(sig_figs(9.9996, 4), "10.00");
+        assert_eq!(sig_figs(152.0, 3), "152");
+        assert_eq!(sig_figs(0.0, 4), "0");
+        assert_eq!(super::significant(-2.6, 4), "-2.6");
+        assert_eq!(super::significant(2.16e-8, 4), "2.160e-8");
+    }
 
     #[test]
     fn an_uncertainty_is_never_printed_as_zero() {

@@ -12,6 +12,7 @@ pub mod measured;
 pub mod preset;
 pub mod sweep;
 pub mod video;
+pub mod vision;
 
 use std::sync::atomic::{AtomicBool, Ordering};
 

@@ -75,6 +75,9 @@ pub enum SweepError {
     },
     #[error("grid point {x} is not a valid scene")]
     Point { x: GridValue },
+    /// The two axes sweep one value twice (see [`check_pair`]).
+    #[error(transparent)]
+    Axes(AxisError),
     #[error("interrupted: nothing was written")]
     Interrupted,
 }
@@ -111,6 +114,73 @@ pub enum AxisError {
     TooWide { range: String },
     #[error("{n} points on an axis, allowed 1 ..= 10000")]
     Points { n: usize },
+    /// The second axis sweeps the first one's parameter again.
+    #[error("{} is the other axis's parameter already, allowed a parameter other than {}", key.name(), key.name())]
+    Twice { key: Key },
+    /// The second axis would overwrite values the first one sets (`why`: the value
+    /// they share, or which of them replaces which).
+    #[error(
+        "{} would overwrite what the other axis, {}, sets ({why}), allowed a parameter that sets other values",
+        key.name(),
+        other.name()
+    )]
+    Overwrites { key: Key, other: Key, why: Overlap },
+}
+
+/// How two swept parameters would write the same value of a scene.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Overlap {
+    /// Both set this key (`mass` and `mass_left`).
+    Both(Key),
+    /// The first key replaces the second (a release height replaces the speed).
+    Replaces(Key, Key),
+}
+
+impl std::fmt::Display for Overlap {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Overlap::Both(k) => write!(f, "both set {}", k.name()),
+            Overlap::Replaces(a, b) => write!(f, "{} replaces {}", a.name(), b.name()),
+        }
+    }
+}
+
+/// How the parameters `a` and `b` would write the same value of a scene, if they
+/// would: a grid point sets one after the other, so the second would silently undo
+/// part of the first.
+fn overlap(a: Key, b: Key) -> Option<Overlap> {
+    let (sa, sb) = (a.param().sets, b.param().sets);
+    if let Some(&k) = sa.iter().find(|k| sb.contains(k)) {
+        return Some(Overlap::Both(k));
+    }
+    let replacing = |from: &[Key], to: &[Key]| {
+        from.iter().find_map(|&k| {
+            k.param()
+                .replaces
+                .filter(|r| to.contains(r))
+                .map(|r| (k, r))
+        })
+    };
+    replacing(sa, sb)
+        .or_else(|| replacing(sb, sa))
+        .map(|(k, r)| Overlap::Replaces(k, r))
+}
+
+/// Checks that the second axis `y` sweeps values of its own, not the first axis's
+/// `x` again (`width` twice) nor values that overwrite it (`height` against `v0`):
+/// either would print points under values they were not solved at.
+pub fn check_pair(x: &Axis, y: &Axis) -> Result<(), AxisError> {
+    if x.key == y.key {
+        return Err(AxisError::Twice { key: y.key });
+    }
+    match overlap(x.key, y.key) {
+        Some(why) => Err(AxisError::Overwrites {
+            key: y.key,
+            other: x.key,
+            why,
+        }),
+        None => Ok(()),
+    }
 }
 
 /// The parameters an axis may sweep, for the error that names an unknown one.
@@ -163,8 +233,12 @@ pub fn point(spec: &SceneSpec) -> Result<(crate::physics::scene::Scene, Point), 
     ))
 }
 
-/// Checks the grid's corners (and so, for these monotone constraints, every point).
+/// Checks that the axes make one map ([`check_pair`]) and the grid's corners (and
+/// so, for these monotone constraints, every point).
 pub fn check(base: &SceneSpec, x: &Axis, y: Option<&Axis>) -> Result<(), SweepError> {
+    if let Some(y) = y {
+        check_pair(x, y).map_err(SweepError::Axes)?;
+    }
     let nx = x.n.max(1);
     let ny = y.map_or(1, |a| a.n.max(1));
     for (i, j) in [(0, 0), (nx - 1, 0), (0, ny - 1), (nx - 1, ny - 1)] {

@@ -9,7 +9,6 @@ mod normal;
 mod predict;
 mod prompts;
 
-use std::cell::Cell;
 use std::path::PathBuf;
 use std::sync::{Arc, LazyLock};
 
@@ -26,7 +25,6 @@ pub use super::vocabulary::{
 
 use super::jobs::{ExportRun, FitRuns, Jobs, MethodRows, Notice, OverlayRun};
 use super::line::History;
-use super::view_cache::ViewCache;
 use super::vocabulary::{DEFAULT_SPEED, WorkAxis};
 
 /// The rows of the parameters panel, top to bottom: the table's rows that have steps.
@@ -65,19 +63,18 @@ pub struct App {
     pub work_axis: WorkAxis,
     /// First line shown of a scrolling popup (help, data table).
     pub scroll: usize,
-    /// The largest useful `scroll` at the last drawn size (the popup sets it when it
-    /// draws, so a key never scrolls into blank lines).
-    pub scroll_max: Cell<usize>,
+    /// The largest useful `scroll` at the size last laid out (the screen tells it
+    /// before drawing, [`App::laid_out`], so a key never scrolls into blank lines).
+    pub scroll_max: usize,
     /// Where `w`/`W` write a bare file name.
     pub export_dir: PathBuf,
     /// The ball the Forces view's front view shows: 0 left, 1 right.
     pub forces_ball: usize,
-    /// b's value hidden (a class predicts from the picture alone).
-    pub hide_b: bool,
+    /// What the screen hides while b is hidden (a class predicts from the picture
+    /// alone): the one rule.
+    pub hide: super::hide::Hide,
     /// The last prediction (predict, observe, explain).
     pub prediction: Option<Prediction>,
-    /// What the charts and the map draw at the last size, per snapshot.
-    pub view_cache: ViewCache,
     /// What was typed into each kind of prompt this session (↑/↓ bring it back).
     histories: Histories,
     /// False in `render`, the headless twin: a screen dump writes no files, so the
@@ -118,15 +115,20 @@ impl App {
             jobs: Jobs::new(pool),
             work_axis: WorkAxis::default(),
             scroll: 0,
-            scroll_max: Cell::new(usize::MAX),
+            scroll_max: usize::MAX,
             export_dir: PathBuf::from("."),
             forces_ball: 0,
-            hide_b: false,
+            hide: super::hide::Hide::default(),
             prediction: None,
-            view_cache: ViewCache::default(),
             histories: Histories::default(),
             writes_files: true,
         }
+    }
+
+    /// What the screen laid out for the next frame that the keys need: how far the
+    /// open popup scrolls at this size.
+    pub fn laid_out(&mut self, scroll_max: usize) {
+        self.scroll_max = scroll_max;
     }
 
     /// True in the Fit view (charts with fit lines, the Fit panel).
@@ -169,7 +171,7 @@ impl App {
 
     /// A parameter's current value as the status line shows it (b hidden if it is).
     pub(super) fn shown_value(&self, key: Key) -> String {
-        if self.hide_b && key == Key::Width {
+        if self.hide.value(key) {
             "(hidden)".to_string()
         } else {
             show(self.lab.value(key), key.dimension()).to_string()
@@ -225,7 +227,7 @@ impl App {
         if later {
             stops.find(|s| s.t > self.t + eps)
         } else {
-            stops.filter(|s| s.t < self.t - eps).last()
+            stops.rev().find(|s| s.t < self.t - eps)
         }
     }
 
@@ -253,7 +255,6 @@ impl App {
     }
 
     pub fn apply(&mut self, action: Action) {
-        self.view_cache.chart_changed();
         if action == Action::Quit {
             // Ctrl-C quits from anywhere; `q` only reaches here from the normal screen
             // (in a popup the key table makes it close the popup, in a prompt it types).

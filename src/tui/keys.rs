@@ -309,7 +309,7 @@ pub const TABLE: &[Binding] = &[
     Binding {
         keys: &["q", "C-c"],
         action: Action::Quit,
-        help: "quit (q in a popup closes it; Ctrl-C always quits)",
+        help: "quit (q in a popup closes it; Ctrl-C always quits; Ctrl-Z suspends)",
         hint: Some(("quit", 9)),
     },
 ];

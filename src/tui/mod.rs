@@ -1,14 +1,17 @@
 //! The interactive lab (ratatui + crossterm) and its headless twin. `app` holds the
 //! state, `keys` the one key table, `view` draws; this module only wires a real
 //! terminal to them: events in, frames out, the terminal restored on every exit
-//! (quit, error, panic, and SIGINT, SIGTERM, SIGHUP or SIGQUIT from outside).
+//! (quit, error, panic, and SIGINT, SIGTERM, SIGHUP or SIGQUIT from outside), and
+//! given back while Ctrl-Z holds the app stopped.
 
 pub mod app;
 pub mod canvas;
+pub mod hide;
 pub mod jobs;
 pub mod keys;
 pub mod line;
 pub mod plot;
+pub mod screen;
 pub mod theme;
 pub mod view;
 pub mod view_cache;
@@ -21,13 +24,14 @@ use std::sync::{Mutex, PoisonError};
 use std::time::{Duration, Instant};
 
 use ratatui::crossterm::event::{
-    self, DisableMouseCapture, EnableMouseCapture, Event, KeyEvent, KeyEventKind, MouseButton,
-    MouseEvent, MouseEventKind,
+    self, DisableMouseCapture, EnableMouseCapture, Event, KeyCode, KeyEvent, KeyEventKind,
+    KeyModifiers, MouseButton, MouseEvent, MouseEventKind,
 };
 use ratatui::crossterm::{cursor, execute};
 
 use app::{Action, App, FPS, Mode};
 use jobs::Notice;
+use screen::Screen;
 use theme::{Glyphs, Theme};
 
 /// The theme for this terminal: NO_COLOR (any value) asks for no colours.
@@ -74,6 +78,40 @@ fn restore_and_exit(signal: i32) {
     std::process::exit(128 + signal);
 }
 
+/// Ctrl-Z: in raw mode the terminal sends no SIGTSTP for it, so the app reads the key
+/// and suspends itself as a shell's job: the terminal back as it was, then stopped
+/// until `fg`.
+fn is_suspend(event: &Event) -> bool {
+    matches!(event, Event::Key(k) if k.kind == KeyEventKind::Press
+        && k.code == KeyCode::Char('z')
+        && k.modifiers.contains(KeyModifiers::CONTROL))
+}
+
+/// Restores the terminal, stops the process (SIGTSTP's default action, as Ctrl-Z does
+/// to any job), and when the shell continues it (`fg`, SIGCONT) takes the terminal
+/// again and clears it, so the next frame is drawn whole.
+#[cfg(unix)]
+fn suspend(terminal: &mut ratatui::DefaultTerminal, mouse: bool) -> io::Result<()> {
+    use ratatui::crossterm::terminal::{EnterAlternateScreen, enable_raw_mode};
+    restore();
+    signal_hook::low_level::raise(signal_hook::consts::SIGTSTP)?;
+    // Here again after `fg`.
+    ACTIVE.store(true, Ordering::SeqCst);
+    enable_raw_mode()?;
+    execute!(io::stdout(), EnterAlternateScreen, cursor::Hide)?;
+    set_mouse(mouse);
+    // Not `clear()`: it asks the terminal for the cursor, whose answer the input
+    // thread would read. A resize to the present size (it may have changed meanwhile)
+    // clears the screen and the back buffer without asking.
+    let size = terminal.size()?;
+    terminal.resize(ratatui::layout::Rect::new(0, 0, size.width, size.height))
+}
+
+#[cfg(not(unix))]
+fn suspend(_: &mut ratatui::DefaultTerminal, _: bool) -> io::Result<()> {
+    Ok(())
+}
+
 /// Runs the app on the real terminal until the user quits.
 pub fn run(mut app: App, ascii: bool) -> io::Result<()> {
     let theme = theme(ascii);
@@ -97,7 +135,7 @@ pub fn run(mut app: App, ascii: bool) -> io::Result<()> {
         let _ = execute!(io::stdout(), cursor::Show);
     }));
     if std::env::var_os("GROOVELAB_TEST_PANIC").is_some() {
-        terminal.draw(|f| view::draw(&app, f.area(), f.buffer_mut(), &theme))?;
+        terminal.draw(|f| screen::draw(&app, f.area(), f.buffer_mut(), &theme))?;
         panic!("GROOVELAB_TEST_PANIC is set: panicking to test that the terminal is restored");
     }
     set_mouse(app.mouse);
@@ -150,12 +188,21 @@ fn event_loop(
 ) -> io::Result<()> {
     let frame = Duration::from_secs_f64(1.0 / FPS);
     let rx = inputs(app)?;
+    let mut screen = Screen::default();
     let mut dirty = true;
     let mut last_tick = Instant::now();
     let mut mouse = app.mouse;
     while !app.quit {
         if dirty {
-            terminal.draw(|f| view::draw(app, f.area(), f.buffer_mut(), theme))?;
+            // Laid out once, before drawing: the drawing, the keys (a popup's scroll
+            // limit) and the mouse read this one frame.
+            terminal.draw(|f| {
+                screen.prepare(app, f.area(), theme);
+                screen.render(app, f.buffer_mut(), theme);
+            })?;
+            if let Some(frame) = screen.frame() {
+                app.laid_out(frame.scroll_max);
+            }
             dirty = false;
         }
         // Paused: sleep until a key or a job's result comes (no CPU). Playing: wake for
@@ -178,7 +225,22 @@ fn event_loop(
         for input in first.into_iter().chain(rx.try_iter()) {
             let was_playing = app.playing;
             dirty |= match input {
-                Input::Terminal(e) => on_terminal(terminal, app, theme, e)?,
+                Input::Terminal(e) if is_suspend(&e) => {
+                    suspend(terminal, app.mouse)?;
+                    // The stopped time is not played through.
+                    last_tick = Instant::now();
+                    true
+                }
+                Input::Terminal(e) => {
+                    // A click after a key of this batch hits the frame that key made.
+                    if dirty
+                        && matches!(e, Event::Mouse(_))
+                        && let Some(area) = screen.frame().map(|f| f.area)
+                    {
+                        screen.prepare(app, area, theme);
+                    }
+                    on_terminal(app, &screen, e)
+                }
                 Input::Failed(e) => return Err(e),
                 Input::Job(notice) => app.on_job(notice),
             };
@@ -203,14 +265,10 @@ fn event_loop(
     Ok(())
 }
 
-/// What a terminal event does; true if the screen needs a redraw.
-fn on_terminal(
-    terminal: &ratatui::DefaultTerminal,
-    app: &mut App,
-    theme: &Theme,
-    event: Event,
-) -> io::Result<bool> {
-    Ok(match event {
+/// What a terminal event does (the mouse hit-tests the frame on screen); true if the
+/// screen needs a redraw.
+fn on_terminal(app: &mut App, screen: &Screen, event: Event) -> bool {
+    match event {
         Event::Key(key) if key.kind == KeyEventKind::Press => match keys::action(&app.mode, key) {
             Some(action) => {
                 app.apply(action);
@@ -218,14 +276,10 @@ fn on_terminal(
             }
             None => false,
         },
-        Event::Mouse(m) if app.mouse => {
-            let size = terminal.size()?;
-            let area = ratatui::layout::Rect::new(0, 0, size.width, size.height);
-            on_mouse(app, area, theme, m)
-        }
+        Event::Mouse(m) if app.mouse => on_mouse_in(app, screen, m),
         Event::Resize(..) => true,
         _ => false,
-    })
+    }
 }
 
 /// What the mouse does: over an open popup, only the popup's part (a click on a
@@ -234,8 +288,19 @@ fn on_terminal(
 /// or drag on the chart seeks there, a click on a parameter selects it, the wheel over
 /// one nudges it. True if anything changed.
 pub fn on_mouse(app: &mut App, area: ratatui::layout::Rect, theme: &Theme, m: MouseEvent) -> bool {
+    let mut screen = Screen::default();
+    screen.prepare(app, area, theme);
+    on_mouse_in(app, &screen, m)
+}
+
+/// [`on_mouse`] over the frame `screen` prepared last (the one on the terminal).
+pub fn on_mouse_in(app: &mut App, screen: &Screen, m: MouseEvent) -> bool {
+    let Some(frame) = screen.frame() else {
+        return false;
+    };
+    let area = frame.area;
     let action = match app.mode {
-        Mode::Normal => return on_mouse_main(app, area, theme, m),
+        Mode::Normal => return on_mouse_main(app, screen, m),
         _ => on_mouse_popup(app, area, m),
     };
     match action {
@@ -264,10 +329,10 @@ fn on_mouse_popup(app: &App, area: ratatui::layout::Rect, m: MouseEvent) -> Opti
     }
 }
 
-fn on_mouse_main(app: &mut App, area: ratatui::layout::Rect, theme: &Theme, m: MouseEvent) -> bool {
+fn on_mouse_main(app: &mut App, screen: &Screen, m: MouseEvent) -> bool {
     let seek = match m.kind {
         MouseEventKind::Down(MouseButton::Left) | MouseEventKind::Drag(MouseButton::Left) => {
-            view::chart_time_at_in(app, area, theme, m.column, m.row)
+            screen.chart_time_at(app, m.column, m.row)
         }
         _ => None,
     };
@@ -275,7 +340,7 @@ fn on_mouse_main(app: &mut App, area: ratatui::layout::Rect, theme: &Theme, m: M
         app.seek(t);
         return true;
     }
-    let Some(panels) = view::layout(area) else {
+    let Some(panels) = screen.frame().and_then(|f| f.panels) else {
         return false;
     };
     let hit = view::param_at(panels.params, app.selected, m.column, m.row);

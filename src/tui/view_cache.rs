@@ -4,31 +4,24 @@
 //! samples and kinetic energy, the regime grid, and the measured series thinned to
 //! the chart's cells. A new snapshot (any edit) or a new size makes them again; a
 //! frame that only moves the time (playback, a drag on the chart) reuses them. The
-//! app holds one; the views fill it as they draw.
+//! screen (`super::screen`) holds one and fills it while it prepares a frame, before
+//! anything is drawn; drawing only reads.
 
-use std::cell::{Cell, RefCell};
 use std::rc::Rc;
 use std::sync::Arc;
-
-use ratatui::layout::Rect;
 
 use crate::lab::{Lab, Resolved};
 use crate::physics::derived::{Derived, Regime};
 use crate::physics::solution::{EnergySplit, Snapshot, Solution};
-use crate::tui::plot::{Cells, Plot, Points};
-use crate::tui::theme::Theme;
+use crate::tui::plot::{Cells, Points};
 
 /// One cached view of a snapshot: the snapshot it belongs to (held, so its address
 /// cannot be reused by a newer one), the size, the values.
-type Cached<K, T> = RefCell<Option<(Arc<Resolved>, K, Rc<[T]>)>>;
+type Cached<K, T> = Option<(Arc<Resolved>, K, Rc<[T]>)>;
 
-/// The app's per-size caches (UI state: the lab knows no terminal).
+/// The screen's per-size caches (UI state: the lab knows no terminal).
 #[derive(Clone, Debug, Default)]
 pub struct ViewCache {
-    /// Where the chart was last drawn (a click or drag finds its time from it).
-    pub chart_drawn: Cell<Option<ChartDrawn>>,
-    /// How many times a chart was built (work counted, for the tests).
-    pub charts_built: Cell<u64>,
     samples: Cached<usize, Snapshot>,
     energies: Cached<usize, (f64, EnergySplit)>,
     pinned_samples: Cached<usize, Snapshot>,
@@ -37,48 +30,39 @@ pub struct ViewCache {
     /// The measured series a chart draws, thinned to its cells: per grid and which
     /// series (bits in the order of `MeasuredPoints::series`).
     marks: Cached<(Cells, u8), Option<Points>>,
-    /// How many times measured series were thinned (work counted, for the tests).
-    pub marks_thinned: Cell<u64>,
-    /// How many points the last chart drawn handed to the plot (work counted).
-    pub chart_points: Cell<usize>,
 }
 
-/// `cell`'s values if they were made for `now` at `key`, else `make`'s, kept.
+/// `cell`'s values if they were made for `now` at `key`, else `make`'s, kept; and
+/// whether they were made now.
 fn cached<K: PartialEq + Copy, T>(
-    cell: &Cached<K, T>,
+    cell: &mut Cached<K, T>,
     now: &Arc<Resolved>,
     key: K,
     make: impl FnOnce() -> Rc<[T]>,
-) -> Rc<[T]> {
-    if let Some((of, k, values)) = &*cell.borrow()
+) -> (Rc<[T]>, bool) {
+    if let Some((of, k, values)) = &*cell
         && Arc::ptr_eq(of, now)
         && *k == key
     {
-        return values.clone();
+        return (values.clone(), false);
     }
     let values = make();
-    cell.replace(Some((Arc::clone(now), key, values.clone())));
-    values
+    *cell = Some((Arc::clone(now), key, values.clone()));
+    (values, true)
 }
 
 impl ViewCache {
-    /// Forgets where the chart was drawn (an action may change its layout).
-    pub fn chart_changed(&self) {
-        self.chart_drawn.set(None);
-    }
-
     /// The snapshot's measured series marked in `drawn` (bit i: the i-th of
     /// `MeasuredPoints::series`), each thinned to one point per cell of `cells`
     /// ([`Cells::thin`]: the same cells marked), once per snapshot and grid; `None`
-    /// for a series not drawn.
+    /// for a series not drawn. True if they were thinned now.
     pub fn measured_marks(
-        &self,
+        &mut self,
         now: &Arc<Resolved>,
         cells: Cells,
         drawn: u8,
-    ) -> Rc<[Option<Points>]> {
-        cached(&self.marks, now, (cells, drawn), || {
-            self.marks_thinned.set(self.marks_thinned.get() + 1);
+    ) -> (Rc<[Option<Points>]>, bool) {
+        cached(&mut self.marks, now, (cells, drawn), || {
             let Some(m) = &now.points else {
                 return Rc::from(Vec::new());
             };
@@ -91,64 +75,70 @@ impl ViewCache {
 
     /// The exact states at the chart's sample times for a plot `columns` wide: about
     /// four per column plus both sides of every event, once per scene and width.
-    pub fn samples(&self, lab: &Lab, columns: usize) -> Rc<[Snapshot]> {
+    pub fn samples(&mut self, lab: &Lab, columns: usize) -> Rc<[Snapshot]> {
         let now = lab.resolved();
-        cached(&self.samples, now, columns, || {
+        cached(&mut self.samples, now, columns, || {
             let sol = &now.solution;
             sample_times(sol, (sol.t_start, sol.t_end), columns)
                 .into_iter()
                 .map(|t| sol.at(t))
                 .collect()
         })
+        .0
     }
 
     /// The energy split at the same times as [`ViewCache::samples`], once per scene and width.
-    pub fn energies(&self, lab: &Lab, columns: usize) -> Rc<[(f64, EnergySplit)]> {
+    pub fn energies(&mut self, lab: &Lab, columns: usize) -> Rc<[(f64, EnergySplit)]> {
+        let samples = self.samples(lab, columns);
         let now = lab.resolved();
-        cached(&self.energies, now, columns, || {
-            self.samples(lab, columns)
+        cached(&mut self.energies, now, columns, || {
+            samples
                 .iter()
                 .map(|s| (s.t, now.solution.energy_at(s.t)))
                 .collect()
         })
+        .0
     }
 
     /// The pinned run's states over the current span (its own events kept sharp), once
     /// per scene and width; empty when nothing is pinned.
-    pub fn pinned_samples(&self, lab: &Lab, columns: usize) -> Rc<[Snapshot]> {
+    pub fn pinned_samples(&mut self, lab: &Lab, columns: usize) -> Rc<[Snapshot]> {
         let Some(p) = &lab.pinned else {
             return Rc::from(Vec::new());
         };
         let now = lab.resolved();
-        cached(&self.pinned_samples, now, columns, || {
+        cached(&mut self.pinned_samples, now, columns, || {
             let span = (now.solution.t_start, now.solution.t_end);
             sample_times(&p.solution, span, columns)
                 .into_iter()
                 .map(|t| p.solution.at(t))
                 .collect()
         })
+        .0
     }
 
     /// The pinned run's kinetic energy at [`ViewCache::pinned_samples`]' times, J, once per
     /// scene and width (the energy chart's A/B curve); empty when nothing is pinned.
-    pub fn pinned_kinetic(&self, lab: &Lab, columns: usize) -> Rc<[(f64, f64)]> {
+    pub fn pinned_kinetic(&mut self, lab: &Lab, columns: usize) -> Rc<[(f64, f64)]> {
         let Some(p) = &lab.pinned else {
             return Rc::from(Vec::new());
         };
+        let samples = self.pinned_samples(lab, columns);
         let now = lab.resolved();
-        cached(&self.pinned_kinetic, now, columns, || {
-            self.pinned_samples(lab, columns)
+        cached(&mut self.pinned_kinetic, now, columns, || {
+            samples
                 .iter()
                 .map(|s| (s.t, p.solution.energy_at(s.t).kinetic()))
                 .collect()
         })
+        .0
     }
 
     /// The regime over groove width (0 … 0.99 · 2R, across) and restitution (1 … 0,
     /// down) for these balls, `cols × rows` cells, row by row; once per scene and size.
-    pub fn regime_grid(&self, lab: &Lab, cols: usize, rows: usize) -> Rc<[Regime]> {
+    pub fn regime_grid(&mut self, lab: &Lab, cols: usize, rows: usize) -> Rc<[Regime]> {
         let now = lab.resolved();
-        cached(&self.regimes, now, (cols, rows), || {
+        cached(&mut self.regimes, now, (cols, rows), || {
             let b_max = 2.0 * now.scene.radius * 0.99;
             (0..rows)
                 .flat_map(|rr| (0..cols).map(move |c| (rr, c)))
@@ -160,6 +150,7 @@ impl ViewCache {
                 })
                 .collect()
         })
+        .0
     }
 }
 
@@ -177,36 +168,4 @@ fn sample_times(sol: &Solution, (t0, t1): (f64, f64), columns: usize) -> Vec<f64
     ts.sort_by(f64::total_cmp);
     ts.dedup();
     ts
-}
-
-/// Where the chart was last drawn: enough to find the time under a cell without
-/// building the chart again (a drag on the chart sends many events). Any action may
-/// change the chart, so the app forgets it on each; moving the time does not.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ChartDrawn {
-    area: Rect,
-    ascii: bool,
-    monochrome: bool,
-    /// The plot's data cells (`None`: too small to draw).
-    pub data: Option<Rect>,
-    pub x_range: (f64, f64),
-}
-
-impl ChartDrawn {
-    pub fn of(plot: &Plot, area: Rect, inner: Rect, theme: &Theme) -> ChartDrawn {
-        ChartDrawn {
-            area,
-            ascii: theme.glyphs.ascii,
-            monochrome: theme.uncoloured_curves(),
-            data: plot.data_area(inner, theme),
-            x_range: plot.x_range,
-        }
-    }
-
-    /// True if it was drawn in `area` with `theme`'s layout.
-    pub fn is_for(&self, area: Rect, theme: &Theme) -> bool {
-        self.area == area
-            && self.ascii == theme.glyphs.ascii
-            && self.monochrome == theme.uncoloured_curves()
-    }
 }

@@ -8,8 +8,9 @@ use groovelab::settings::params::Key;
 use groovelab::settings::spec::SceneSpec;
 use groovelab::study::preset::Preset;
 use groovelab::tui::app::{App, Library, ROWS};
+use groovelab::tui::screen;
 use groovelab::tui::theme::{Glyphs, Theme};
-use groovelab::tui::{keys, replay, replay_settled, view};
+use groovelab::tui::{keys, replay, replay_settled};
 
 /// The paper's symmetric scene with the given width, friction, speed and restitution.
 pub fn symmetric(radius: f64, width: f64, mu: f64, v0: f64, e: f64) -> Scene {
@@ -199,5 +200,5 @@ pub fn rendered(
 
 /// The screen of `app` at `size` as `render` prints it (no colours), ASCII or Unicode.
 pub fn text(app: &App, size: (u16, u16), ascii: bool) -> String {
-    view::to_text(app, size.0, size.1, &Theme::new(Glyphs::new(ascii), true))
+    screen::to_text(app, size.0, size.1, &Theme::new(Glyphs::new(ascii), true))
 }

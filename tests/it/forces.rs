@@ -7,8 +7,9 @@ use groovelab::cli::DataArgs;
 use groovelab::physics::derived::Regime;
 use groovelab::settings::spec::SceneSpec;
 use groovelab::tui::app::{App, ChartBall, Library, Mode, View};
+use groovelab::tui::keys;
+use groovelab::tui::screen;
 use groovelab::tui::theme::{Glyphs, Theme};
-use groovelab::tui::{keys, view};
 
 use crate::common::{self, press, scene_of, text};
 
@@ -200,7 +201,7 @@ fn a_changed_scene_makes_the_prediction_stale() {
 fn hiding_b_leaves_the_picture_and_hides_what_gives_b_away() {
     let mut a = app("paper-b4.9");
     press(&mut a, "B v");
-    assert!(a.hide_b);
+    assert!(a.hide.b());
     for ascii in [false, true] {
         let s = text(&a, (120, 40), ascii);
         for secret in ["4.90", "k 0.454", "b/R", "1.80 N", "0.613", "D = 0.516"] {
@@ -278,7 +279,7 @@ fn ascii_forces_screens_need_no_stand_ins() {
             let mut a = app(preset);
             press(&mut a, keys);
             for (w, h) in SIZES {
-                let cells = view::non_ascii_cells(&a, w, h, &theme);
+                let cells = screen::non_ascii_cells(&a, w, h, &theme);
                 assert!(cells.is_empty(), "{preset} {keys:?} {w}x{h}: {cells:?}");
             }
         }

@@ -69,14 +69,17 @@ fn compare_skips_levels_over_its_budget_and_says_why() {
     .unwrap();
     let skipped: Vec<_> = rows
         .iter()
-        .filter(|r| r.note.as_deref().is_some_and(|n| n.starts_with("skipped:")))
+        .filter(|r| {
+            r.note
+                .is_some_and(|n| n.to_string().starts_with("skipped:"))
+        })
         .collect();
     // 10^-4, 10^-4.5, 10^-5, 10^-5.5 and 10^-6 s.
     assert_eq!(skipped.len(), 5, "{rows:#?}");
     for r in &skipped {
         assert_eq!(r.status, compare::RunStatus::Stalled);
         assert_eq!(r.steps, 0);
-        let note = r.note.as_deref().unwrap();
+        let note = r.note.unwrap().to_string();
         assert!(
             note.contains("over the budget of 10000 steps per run"),
             "{note}"

@@ -34,3 +34,4 @@ mod story;
 mod sweep;
 mod tracks;
 mod tui;
+mod video;

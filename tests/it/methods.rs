@@ -144,7 +144,7 @@ fn rk45_stalls_or_reaches_the_accumulation_point_within_its_budget() {
         );
         match r.status {
             RunStatus::Stalled => {
-                let note = r.note.as_deref().unwrap_or("");
+                let note = r.note.map(|n| n.to_string()).unwrap_or_default();
                 assert!(
                     note.contains("impacts") || note.contains("collapsed"),
                     "{note}"
@@ -269,7 +269,7 @@ fn no_run_hangs_or_leaks_nan_into_the_numbers() {
 
 #[test]
 fn the_exact_method_behind_the_common_signature_is_the_engine() {
-    // `integrate` takes every method, the exact one included (no panic): its steps are
+    // `Method::integrate` takes every method, the exact one included (no panic): its steps are
     // the engine's segments, its events the engine's, its states the engine's.
     struct Log(
         Vec<(f64, groovelab::methods::Y)>,
@@ -289,15 +289,14 @@ fn the_exact_method_behind_the_common_signature_is_the_engine() {
     let model = Model::of(&scene);
     let y0 = groovelab::methods::start_state(&scene, sol.t_start);
     let mut log = Log(Vec::new(), Vec::new());
-    let out = groovelab::methods::integrate(
-        Method::Exact,
-        &model,
+    let run = groovelab::methods::Run {
+        model: &model,
         y0,
-        sol.t_start,
-        sol.t_end,
-        &Settings::default(),
-        &mut log,
-    );
+        t0: sol.t_start,
+        t1: sol.t_end,
+        settings: &Settings::default(),
+    };
+    let out = Method::Exact.integrate(&run, &mut log);
     assert_eq!(out.stalled, None);
     assert_eq!(log.1, sol.visible_events().copied().collect::<Vec<_>>());
     assert!(out.steps > 10, "one step per segment: {}", out.steps);

@@ -9,8 +9,11 @@ use groovelab::settings::params::Key;
 use groovelab::settings::spec::SceneSpec;
 use groovelab::study::preset::{Origin, Preset};
 use groovelab::tui::app::{App, Library, Status};
+use groovelab::tui::screen;
+use groovelab::tui::screen::Screen;
 use groovelab::tui::theme::{Glyphs, Theme};
 use groovelab::tui::view;
+use groovelab::tui::view_cache::ViewCache;
 use ratatui::layout::Rect;
 
 use crate::common::{self, press, scene_of, select, text};
@@ -434,7 +437,7 @@ fn a_click_on_the_chart_seeks_to_the_time_under_it() {
     let theme = Theme::new(Glyphs::UNICODE, true);
     for at in [-0.15, 0.0, 0.3, 0.85] {
         a.t = at;
-        let s = view::to_text(&a, 120, 40, &theme);
+        let s = screen::to_text(&a, 120, 40, &theme);
         let rows = chart_rows(&s, 40);
         let (row, col) = rows
             .iter()
@@ -442,7 +445,7 @@ fn a_click_on_the_chart_seeks_to_the_time_under_it() {
             .find_map(|(r, l)| l.chars().position(|c| c == '┊').map(|c| (r, c)))
             .expect("the cursor is drawn");
         let top = view::layout(area).unwrap().chart.y;
-        let t = view::chart_time_at(&a, area, col as u16, top + row as u16).unwrap();
+        let t = screen::chart_time_at(&a, area, col as u16, top + row as u16).unwrap();
         // One column of the plot is (t_end − t_start) / (columns − 1) ≈ 13 ms here.
         let column = (a.lab.solution.t_end - a.lab.solution.t_start) / 70.0;
         assert!((t - at).abs() <= 0.5 * column, "{at}: {t}");
@@ -453,12 +456,12 @@ fn a_click_on_the_chart_seeks_to_the_time_under_it() {
         assert!(!b.playing);
     }
     // Outside the plot (the info panel, the axis labels, the params): no seek.
-    assert_eq!(view::chart_time_at(&a, area, 110, 20), None);
-    assert_eq!(view::chart_time_at(&a, area, 1, 20), None);
-    assert_eq!(view::chart_time_at(&a, area, 30, 3), None);
+    assert_eq!(screen::chart_time_at(&a, area, 110, 20), None);
+    assert_eq!(screen::chart_time_at(&a, area, 1, 20), None);
+    assert_eq!(screen::chart_time_at(&a, area, 30, 3), None);
     // Not while another view is shown.
     press(&mut a, "g");
-    assert_eq!(view::chart_time_at(&a, area, 40, 20), None);
+    assert_eq!(screen::chart_time_at(&a, area, 40, 20), None);
 }
 
 #[test]
@@ -470,26 +473,29 @@ fn a_drag_on_the_chart_does_not_build_the_chart_again() {
     let top = view::layout(area).unwrap().chart.y;
     // Never drawn: the chart is laid out to answer.
     let fresh: Vec<Option<f64>> = (0..120)
-        .map(|c| view::chart_time_at(&a, area, c, top + 10))
+        .map(|c| screen::chart_time_at(&a, area, c, top + 10))
         .collect();
-    view::to_text(&a, 120, 40, &theme);
-    let built = a.view_cache.charts_built.get();
+    // Drawn: a drag hit-tests the frame on screen (`Screen::chart_time_at` reads it
+    // and cannot build a chart), and finds the same times while it moves the cursor.
+    let mut screen = Screen::default();
+    screen.text(&a, 120, 40, &theme);
     for (c, want) in fresh.iter().enumerate() {
-        let t = view::chart_time_at(&a, area, c as u16, top + 10);
+        let t = screen.chart_time_at(&a, c as u16, top + 10);
         assert_eq!(t, *want, "column {c}");
         if let Some(t) = t {
             a.seek(t);
         }
     }
-    assert_eq!(
-        a.view_cache.charts_built.get(),
-        built,
-        "a drag builds no chart"
-    );
-    // A key may change the chart: it is laid out again.
+    // A key may change the chart: the next frame lays it out again (the energy chart
+    // has a legend row of its own).
     press(&mut a, "e");
-    view::chart_time_at(&a, area, 60, top + 10);
-    assert_eq!(a.view_cache.charts_built.get(), built + 1);
+    screen.prepare(&a, area, &theme);
+    let energy: Vec<Option<f64>> = (0..120)
+        .map(|c| screen::chart_time_at(&a, area, c, top + 10))
+        .collect();
+    for (c, want) in energy.iter().enumerate() {
+        assert_eq!(screen.chart_time_at(&a, c as u16, top + 10), *want);
+    }
 }
 
 // ---- 3. The energy chart --------------------------------------------------------------
@@ -499,7 +505,7 @@ fn the_energy_chart_splits_the_initial_energy_at_every_sample() {
     let mut a = app("inelastic");
     press(&mut a, "e");
     assert!(a.show_energy);
-    let split = a.view_cache.energies(&a.lab, 100);
+    let split = ViewCache::default().energies(&a.lab, 100);
     let total = split[0].1.total();
     assert!(total > 0.0);
     for (t, e) in split.iter() {
@@ -510,7 +516,7 @@ fn the_energy_chart_splits_the_initial_energy_at_every_sample() {
         split.last().unwrap().1.lost.impacts > 0.0,
         "e < 1 loses in impacts"
     );
-    let s = view::to_text(&a, 120, 40, &Theme::new(Glyphs::UNICODE, false));
+    let s = screen::to_text(&a, 120, 40, &Theme::new(Glyphs::UNICODE, false));
     assert!(s.contains("Energy of both balls"));
     for name in ["total", "trans", "rot", "friction", "impacts", "c_rr 0"] {
         assert!(s.contains(name), "{name}: {s}");
@@ -559,7 +565,7 @@ fn a_pinned_run_is_drawn_beside_the_current_one_with_what_changed() {
     );
     a.t = 0.5;
     let theme = Theme::new(Glyphs::UNICODE, true);
-    let s = view::to_text(&a, 120, 40, &theme);
+    let s = screen::to_text(&a, 120, 40, &theme);
     assert!(
         s.contains("pinned paper-b4.9 (dashed): b 4.9 cm → 4.4 cm"),
         "{s}"
@@ -572,7 +578,7 @@ fn a_pinned_run_is_drawn_beside_the_current_one_with_what_changed() {
     let mut b = a.clone();
     press(&mut b, "P");
     assert!(b.lab.pinned.is_none());
-    let unpinned = view::to_text(&b, 120, 40, &theme);
+    let unpinned = screen::to_text(&b, 120, 40, &theme);
     let scene = |s: &str| -> usize {
         s.lines()
             .take(9)
@@ -588,9 +594,9 @@ fn a_pinned_run_is_drawn_beside_the_current_one_with_what_changed() {
     assert!(!unpinned.contains("pinned run") && !unpinned.contains("(dashed)"));
     // Positions and energy charts draw the pinned run too.
     press(&mut a, "x");
-    assert!(view::to_text(&a, 120, 40, &theme).contains("pinned run"));
+    assert!(screen::to_text(&a, 120, 40, &theme).contains("pinned run"));
     press(&mut a, "e");
-    assert!(view::to_text(&a, 120, 40, &theme).contains("pinned kinetic"));
+    assert!(screen::to_text(&a, 120, 40, &theme).contains("pinned kinetic"));
 }
 
 #[test]
@@ -686,7 +692,7 @@ fn new_screens_need_no_ascii_stand_ins() {
             press(&mut a, keys);
             a.wait();
             for (w, h) in SIZES {
-                let cells = view::non_ascii_cells(&a, w, h, &theme);
+                let cells = screen::non_ascii_cells(&a, w, h, &theme);
                 assert!(cells.is_empty(), "{preset} {keys:?} {w}x{h}: {cells:?}");
             }
         }
@@ -741,10 +747,14 @@ fn with_big_series(rows: usize) -> App {
 fn a_million_measured_rows_draw_as_a_few_points_per_column_thinned_once() {
     let theme = Theme::new(Glyphs::UNICODE, true);
     let mut a = with_big_series(1_000_000);
-    let drawn = |a: &App, (w, h): (u16, u16)| {
-        let screen = view::to_text(a, w, h, &theme);
-        (screen, a.view_cache.chart_points.get())
+    // What a screen draws of `a`: the text, the points handed to the plot, and how
+    // many series it thinned for this frame.
+    let drawn = |screen: &mut Screen, a: &App, (w, h): (u16, u16)| {
+        let (text, work) = screen.text(a, w, h, &theme);
+        let points = screen.frame().unwrap().chart.as_ref().unwrap().points();
+        (text, points, work.marks_thinned)
     };
+    let (mut screen, mut bare_screen) = (Screen::default(), Screen::default());
     let mut without = a.clone();
     without.lab.drop_data();
     for size in [(120, 40), (200, 60)] {
@@ -752,10 +762,9 @@ fn a_million_measured_rows_draw_as_a_few_points_per_column_thinned_once() {
             .unwrap()
             .chart
             .width as usize;
-        let (_, bare) = drawn(&without, size);
-        let before = a.view_cache.marks_thinned.get();
-        let (screen, points) = drawn(&a, size);
-        assert!(screen.contains("big.csv"), "the user's series is drawn");
+        let (_, bare, _) = drawn(&mut bare_screen, &without, size);
+        let (text, points, thinned) = drawn(&mut screen, &a, size);
+        assert!(text.contains("big.csv"), "the user's series is drawn");
         // The exact curves draw about 4 points per column each; the million rows add
         // no more than a few per column (one per cell they mark: a smooth curve).
         assert!(
@@ -763,25 +772,23 @@ fn a_million_measured_rows_draw_as_a_few_points_per_column_thinned_once() {
             "{size:?}: {} measured points drawn for {columns} columns",
             points - bare
         );
-        assert_eq!(a.view_cache.marks_thinned.get(), before + 1, "thinned once");
+        assert_eq!(thinned, 1, "thinned once");
         // Nothing changed, or only the time: no thinning again, the same points.
-        let again = drawn(&a, size);
+        let again = drawn(&mut screen, &a, size);
         a.seek(0.3);
-        let moved = drawn(&a, size);
+        let moved = drawn(&mut screen, &a, size);
         assert_eq!((again.1, moved.1), (points, points));
-        assert_eq!(a.view_cache.marks_thinned.get(), before + 1, "not again");
+        assert_eq!((again.2, moved.2), (0, 0), "not again");
         a.seek(a.lab.solution.t_start);
     }
     // The spike survives thinning: the y axis reaches it (1.5 m/s, the largest value
     // drawn), and it is marked on the plot's top row.
-    let (screen, _) = drawn(&a, (120, 40));
-    let mut rows = screen.lines().skip_while(|l| !l.contains("v (m/s)"));
+    let (text, _, _) = drawn(&mut screen, &a, (120, 40));
+    let mut rows = text.lines().skip_while(|l| !l.contains("v (m/s)"));
     let top = rows.nth(1).unwrap();
     let plot = &top[..top.find("││").unwrap()];
-    assert!(plot.contains('×'), "{screen}");
+    assert!(plot.contains('×'), "{text}");
     // An edit is a new snapshot: its points are thinned again.
-    let before = a.view_cache.marks_thinned.get();
     press(&mut a, "right");
-    drawn(&a, (120, 40));
-    assert_eq!(a.view_cache.marks_thinned.get(), before + 1);
+    assert_eq!(drawn(&mut screen, &a, (120, 40)).2, 1);
 }

@@ -9,6 +9,7 @@ use groovelab::physics::story::{After, after_first_impact};
 use groovelab::settings::params::Key;
 use groovelab::settings::spec::SceneSpec;
 use groovelab::tui::app::{App, ROWS};
+use groovelab::tui::screen;
 use groovelab::tui::theme::{Glyphs, Theme};
 use groovelab::tui::{keys, replay, view};
 use ratatui::layout::Rect;
@@ -35,7 +36,7 @@ fn app(preset: &str, values: SceneSpec, data: Option<&str>, keys_: &str) -> App 
 /// The text inside a panel's border, one string per row.
 fn panel(app: &App, size: (u16, u16), pick: fn(&view::Panels) -> Rect) -> Vec<String> {
     let theme = Theme::new(Glyphs::new(false), true);
-    let text = view::to_text(app, size.0, size.1, &theme);
+    let text = screen::to_text(app, size.0, size.1, &theme);
     let rows: Vec<Vec<char>> = text.lines().map(|l| l.chars().collect()).collect();
     let r = pick(&view::layout(Rect::new(0, 0, size.0, size.1)).unwrap());
     (r.y + 1..r.bottom() - 1)

@@ -170,3 +170,64 @@ fn csv_follows_the_interface_and_bad_grids_are_refused() {
         );
     }
 }
+
+/// `--x width … --y width …` printed each row's b = 0 result under the row's x values
+/// (the second axis overwrote the first): one line, exit 2, nothing on stdout.
+#[test]
+fn one_parameter_on_both_axes_is_refused() {
+    let out = groovelab(&[
+        "sweep",
+        "--x",
+        "width=0..5cm",
+        "--y",
+        "width=0..5cm",
+        "--grid",
+        "3x2",
+    ]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(out.stdout.is_empty());
+    assert_eq!(
+        err,
+        "error: --y width is the other axis's parameter already, allowed a parameter other than width\n"
+    );
+}
+
+/// `--x v0 … --y height …` dropped v0 (a release height replaces the speed, as
+/// `simulate` refuses the pair), and `mass` against `mass_left` half of mass: each is
+/// one line, exit 2; the library refuses them too.
+#[test]
+fn axes_that_overwrite_each_other_are_refused() {
+    for (x, y, want) in [
+        (
+            "v0=0.1..1",
+            "height=1cm..2cm",
+            "error: --y height would overwrite what the other axis, v0, sets (height_left replaces v0_left), allowed a parameter that sets other values\n",
+        ),
+        (
+            "height=1cm..2cm",
+            "v0_right=0.1..1",
+            "error: --y v0_right would overwrite what the other axis, height, sets (height_right replaces v0_right), allowed a parameter that sets other values\n",
+        ),
+        (
+            "mass=1g..2g",
+            "mass-left=1g..2g",
+            "error: --y mass_left would overwrite what the other axis, mass, sets (both set mass_left), allowed a parameter that sets other values\n",
+        ),
+    ] {
+        let out = groovelab(&["sweep", "--x", x, "--y", y, "--grid", "3x2"]);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{x} {y}: {err}");
+        assert!(out.stdout.is_empty(), "{x} {y}");
+        assert_eq!(err, want);
+    }
+    let spec = base("paper-b4.9");
+    let x = sweep::parse_axis("v0=0.1..1", 3).unwrap();
+    let y = sweep::parse_axis("height=1cm..2cm", 2).unwrap();
+    let refused = sweep::run(&spec, &x, Some(&y), &AtomicBool::new(false), &|| {});
+    assert!(matches!(refused, Err(SweepError::Axes(_))), "{refused:?}");
+    // Parameters of different values still make a map.
+    let y = sweep::parse_axis("mass_left=1g..2g", 2).unwrap();
+    let x = sweep::parse_axis("v0_right=0.1..1", 2).unwrap();
+    assert!(sweep::check_pair(&x, &y).is_ok());
+}

@@ -252,7 +252,7 @@ fn the_typing_field_shows_its_cursor_as_a_reversed_cell() {
     let theme = Theme::new(Glyphs::new(false), true);
     let area = Rect::new(0, 0, 120, 40);
     let mut buf = Buffer::empty(area);
-    groovelab::tui::view::draw(&a, area, &mut buf, &theme);
+    groovelab::tui::screen::draw(&a, area, &mut buf, &theme);
     let (x, y) = (0..area.height)
         .find_map(|y| {
             let row: String = (0..area.width).map(|x| buf[(x, y)].symbol()).collect();
@@ -489,7 +489,7 @@ fn ascii_mode_emits_only_seven_bit_characters() {
                 a.t = t.clamp(a.lab.solution.t_start, a.lab.solution.t_end);
                 for size in [(80, 24), (120, 40), (60, 20)] {
                     // One drawing: the cells that needed a stand-in, and the text.
-                    let (s, cells) = groovelab::tui::view::to_text_and_non_ascii_cells(
+                    let (s, cells) = groovelab::tui::screen::to_text_and_non_ascii_cells(
                         &a, size.0, size.1, &theme,
                     );
                     if !cells.is_empty() {
@@ -505,10 +505,21 @@ fn ascii_mode_emits_only_seven_bit_characters() {
 
 #[test]
 fn a_small_terminal_gets_a_clear_message() {
+    // The size it has and the size it needs (issue 28: it said only the latter).
     let s = screen("paper-b4.9", 0.0, (79, 30), false, None);
-    assert!(s.contains("terminal too small (need 80×24)"));
+    assert!(
+        s.contains("terminal 79×30 is too small: groovelab needs 80×24"),
+        "{s}"
+    );
     let s = screen("paper-b4.9", 0.0, (100, 23), true, None);
-    assert!(s.contains("terminal too small (need 80x24)"));
+    assert!(
+        s.contains("terminal 100x23 is too small: groovelab needs 80x24"),
+        "{s}"
+    );
+    // Narrow: both numbers still whole, each on its line.
+    let s = screen("paper-b4.9", 0.0, (16, 5), false, None);
+    assert!(s.contains("terminal 16×5"), "{s}");
+    assert!(s.contains("needs 80×24"), "{s}");
 }
 
 /// Times that show each phase: rolling in, sliding after the impact, rolling again,
@@ -834,7 +845,7 @@ fn every_view_draws_at_many_sizes_without_panicking() {
         ] {
             let theme =
                 groovelab::tui::theme::Theme::new(groovelab::tui::theme::Glyphs::ASCII, false);
-            let s = groovelab::tui::view::to_text(&b, w, h, &theme);
+            let s = groovelab::tui::screen::to_text(&b, w, h, &theme);
             assert_eq!(s.lines().count(), usize::from(h), "{keys:?} at {w}x{h}");
             assert!(s.is_ascii());
         }
@@ -845,8 +856,14 @@ fn every_view_draws_at_many_sizes_without_panicking() {
 
 // ---- issue 11: help, keys and small screens; teachers' tools ----
 
-fn text_of(a: &App, w: u16, h: u16, ascii: bool) -> String {
-    text(a, (w, h), ascii)
+/// The screen of `a` as the terminal draws it: laid out, the keys told what they need
+/// of the frame (how far a popup scrolls at this size), drawn.
+fn text_of(a: &mut App, w: u16, h: u16, ascii: bool) -> String {
+    let theme = Theme::new(Glyphs::new(ascii), true);
+    let mut screen = groovelab::tui::screen::Screen::default();
+    let (text, _) = screen.text(a, w, h, &theme);
+    a.laid_out(screen.frame().unwrap().scroll_max);
+    text
 }
 
 #[test]
@@ -856,15 +873,15 @@ fn help_is_complete_at_every_size_scrolling_where_needed() {
             let mut a = app("paper-b4.9");
             press(&mut a, "?");
             // Page down until nothing is below, collecting every screen.
-            let mut seen = text_of(&a, w, h, ascii);
+            let mut seen = text_of(&mut a, w, h, ascii);
             for _ in 0..20 {
                 if !seen.lines().any(|l| l.contains("more ")) {
                     break;
                 }
                 press(&mut a, "pgdn");
-                seen.push_str(&text_of(&a, w, h, ascii));
-                if !text_of(&a, w, h, ascii).contains("more v")
-                    && !text_of(&a, w, h, ascii).contains("more ↓")
+                seen.push_str(&text_of(&mut a, w, h, ascii));
+                if !text_of(&mut a, w, h, ascii).contains("more v")
+                    && !text_of(&mut a, w, h, ascii).contains("more ↓")
                 {
                     break;
                 }
@@ -903,16 +920,16 @@ fn help_is_complete_at_every_size_scrolling_where_needed() {
     // The help's ↑ takes back what ↓ did; it never scrolls past the end.
     let mut a = app("paper-b4.9");
     press(&mut a, "?");
-    let _ = text_of(&a, 80, 24, false);
+    let _ = text_of(&mut a, 80, 24, false);
     press(&mut a, "end");
-    let bottom = text_of(&a, 80, 24, false);
+    let bottom = text_of(&mut a, 80, 24, false);
     assert!(bottom.contains("Mouse: click"));
     press(&mut a, "down down down up");
-    let _ = text_of(&a, 80, 24, false);
+    let _ = text_of(&mut a, 80, 24, false);
     press(&mut a, "down");
-    assert_eq!(text_of(&a, 80, 24, false), bottom);
+    assert_eq!(text_of(&mut a, 80, 24, false), bottom);
     press(&mut a, "home");
-    assert!(text_of(&a, 80, 24, false).contains("play / pause"));
+    assert!(text_of(&mut a, 80, 24, false).contains("play / pause"));
 }
 
 #[test]
@@ -1195,7 +1212,7 @@ fn long_messages_go_on_in_the_hint_row_and_the_preset_name_stays() {
         "a very long message about what just happened to the scene and why it matters to a class";
     a.status = Status::Info(long.into());
     for ascii in [false, true] {
-        let s = text_of(&a, 80, 24, ascii);
+        let s = text_of(&mut a, 80, 24, ascii);
         let (line, next) = (s.lines().nth(22).unwrap(), s.lines().nth(23).unwrap());
         assert!(
             line.starts_with("t = -0.200 s  paused   a very long"),
@@ -1218,7 +1235,7 @@ fn long_messages_go_on_in_the_hint_row_and_the_preset_name_stays() {
     }
     // Longer than both rows: cut with an ellipsis, and the preset name stays.
     a.status = Status::Error("x".repeat(200));
-    let s = text_of(&a, 80, 24, false);
+    let s = text_of(&mut a, 80, 24, false);
     assert!(s.lines().nth(22).unwrap().ends_with("preset paper-b4.9"));
     let next = s.lines().nth(23).unwrap();
     assert!(
@@ -1402,7 +1419,7 @@ fn the_data_table_of_a_position_track_shows_x_in_cm() {
     }
     let first = rows.iter().find(|r| r[7].is_finite()).unwrap();
     for (w, h) in [(120, 40), (80, 24)] {
-        let s = text_of(&a, w, h, false);
+        let s = text(&a, (w, h), false);
         assert!(s.contains("x (cm)") && s.contains("v_cm (m/s)"), "{s}");
         // In cm, beside the model's.
         let cells = format!("{:+9.3} {:+9.3}", 100.0 * first[7], 100.0 * first[8]);
@@ -1437,9 +1454,9 @@ fn the_data_table_shows_the_model_beside_every_measured_point() {
     assert!(s.contains("v_cm (m/s)") && s.contains("t (s)"), "{s}");
     assert!(s.contains(&format!("{:+.3}", rows[0][1])));
     // It scrolls to the last row (at the size last drawn).
-    let _ = text_of(&a, 80, 24, false);
+    let _ = text_of(&mut a, 80, 24, false);
     press(&mut a, "end");
-    let s = text_of(&a, 80, 24, false);
+    let s = text_of(&mut a, 80, 24, false);
     assert!(
         s.contains(&format!("{:+.4}", rows.last().unwrap()[0])),
         "{s}"

@@ -1,5 +1,9 @@
-//! What every figure is drawn with: the error, axis ranges plotters can draw, the
-//! measured points' marks, and numbers rounded for captions.
+//! What every figure is drawn with: the error, the one set-up of an SVG and its
+//! charts (frame, axes, legend), axis ranges plotters can draw, the measured points'
+//! marks, and numbers rounded for captions.
+
+use plotters::coord::Shift;
+use plotters::prelude::*;
 
 /// Why a figure cannot be drawn.
 #[derive(Debug, thiserror::Error)]
@@ -55,12 +59,112 @@ const AXIS_LIMIT: f64 = 1e300;
 /// A chart on an SVG with linear axes.
 pub(super) type Chart<'a, 'b> = plotters::chart::ChartContext<
     'a,
-    plotters::backend::SVGBackend<'b>,
+    SVGBackend<'b>,
     plotters::coord::cartesian::Cartesian2d<
         plotters::coord::types::RangedCoordf64,
         plotters::coord::types::RangedCoordf64,
     >,
 >;
+
+/// A part of an SVG figure (the whole of it, or a panel).
+pub(super) type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
+
+/// An SVG figure of `size` pixels on white, drawn by `draw` into its whole area.
+pub(super) fn svg(
+    size: (u32, u32),
+    draw: impl FnOnce(&Area) -> Result<(), FigureError>,
+) -> Result<String, FigureError> {
+    let mut svg = String::new();
+    {
+        let root = SVGBackend::with_string(&mut svg, size).into_drawing_area();
+        root.fill(&WHITE)?;
+        draw(&root)?;
+        root.present()?;
+    }
+    Ok(svg)
+}
+
+/// How a chart sits in its area: its caption (text and font size), margin, the sizes
+/// of the label areas below and left of it, and room added to the margin above and
+/// right of it (for labels a figure draws there itself; 0 for none).
+pub(super) struct Frame {
+    pub caption: Option<(String, u32)>,
+    pub margin: u32,
+    pub label_areas: (u32, u32),
+    pub room: (u32, u32),
+}
+
+impl Frame {
+    /// The frame of the run and fit charts: margin 12, label areas 35 and 55.
+    pub(super) fn plain(caption: Option<String>) -> Frame {
+        Frame {
+            caption: caption.map(|c| (c, 18)),
+            margin: 12,
+            label_areas: (35, 55),
+            room: (0, 0),
+        }
+    }
+
+    /// A chart builder on `area` set up as the frame says: every figure's start.
+    pub(super) fn builder<'a, 'b>(
+        &self,
+        area: &'a Area<'b>,
+    ) -> ChartBuilder<'a, 'b, SVGBackend<'b>> {
+        let mut builder = ChartBuilder::on(area);
+        if let Some((text, size)) = &self.caption {
+            builder.caption(text, ("sans-serif", *size));
+        }
+        builder
+            .margin(self.margin)
+            .x_label_area_size(self.label_areas.0)
+            .y_label_area_size(self.label_areas.1)
+            .margin_top(self.margin + self.room.0)
+            .margin_right(self.margin + self.room.1);
+        builder
+    }
+}
+
+/// A chart with linear axes `x` and `y` on `area`, framed by `frame`, its axes named
+/// `desc` and labelled by [`tick`]; with the mesh's grid lines, or (`grid` false)
+/// only its axes and ticks.
+pub(super) fn linear_chart<'a, 'b>(
+    area: &'a Area<'b>,
+    frame: &Frame,
+    (x, y): ((f64, f64), (f64, f64)),
+    desc: (&str, &str),
+    grid: bool,
+) -> Result<Chart<'a, 'b>, FigureError> {
+    let mut chart = frame.builder(area).build_cartesian_2d(x.0..x.1, y.0..y.1)?;
+    let mut mesh = chart.configure_mesh();
+    mesh.x_desc(desc.0)
+        .y_desc(desc.1)
+        .x_label_formatter(&tick)
+        .y_label_formatter(&tick);
+    if !grid {
+        mesh.disable_mesh();
+    }
+    mesh.draw()?;
+    Ok(chart)
+}
+
+/// A line's legend mark: a short line in `style`.
+pub(super) fn line_mark(style: ShapeStyle) -> impl Fn((i32, i32)) -> PathElement<(i32, i32)> {
+    move |(x, y)| PathElement::new(vec![(x, y), (x + 20, y)], style)
+}
+
+/// Draws `chart`'s legend as every figure does, boxed on white, at `position`.
+pub(super) fn draw_legend<'a, 'b: 'a, CT: plotters::coord::CoordTranslate>(
+    chart: &mut ChartContext<'a, SVGBackend<'b>, CT>,
+    position: SeriesLabelPosition,
+) -> Result<(), FigureError> {
+    chart
+        .configure_series_labels()
+        .border_style(BLACK)
+        .background_style(WHITE.mix(0.9))
+        .position(position)
+        .draw()?;
+    Ok(())
+}
 
 /// Measured points as the figures mark them, with their legend entries: v_cm as
 /// crosses, v_t as circles, in the colours given.

@@ -3,17 +3,15 @@
 
 use plotters::prelude::*;
 
-use plotters::coord::Shift;
-
-use super::drawing::{FigureError, draw_measured_marks, finite_bounds, linear_axis, tick};
+use super::drawing::{
+    Area, FigureError, Frame, draw_legend, draw_measured_marks, finite_bounds, line_mark,
+    linear_axis, linear_chart, svg,
+};
 use crate::physics::scene::Scene;
 use crate::physics::solution::Solution;
 use crate::settings::units::Dimension;
 use crate::study::fit::Fits;
 use crate::study::measured::series::Measured;
-
-/// A part of the figure (the velocities above, the residuals below).
-type Area<'a> = DrawingArea<SVGBackend<'a>, Shift>;
 
 const BLUE: RGBColor = RGBColor(31, 119, 180);
 const ORANGE: RGBColor = RGBColor(255, 127, 14);
@@ -44,16 +42,11 @@ pub fn fit_figure(scene: &Scene, m: &Measured, fits: &Fits) -> Result<String, Fi
             t_end: Some(t1.max(1e-3)),
         },
     );
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, (900, 700)).into_drawing_area();
-        root.fill(&WHITE)?;
+    svg((900, 700), |root| {
         let (top, bottom) = root.split_vertically(480);
         draw_fit(&top, scene, m, fits, &sol, (t0, t1))?;
-        draw_residuals(&bottom, m, &sol, (t0, t1))?;
-        root.present()?;
-    }
-    Ok(svg)
+        draw_residuals(&bottom, m, &sol, (t0, t1))
+    })
 }
 
 /// The upper chart: the model (600 points over the time axis) as lines, the data as
@@ -86,29 +79,21 @@ fn draw_fit(
     let (lo, hi) = linear_axis(lo - 0.1, hi + 0.1);
     let fit = |(t, v): (f64, f64)| (near(t, (t0, t1)), near(v, (lo, hi)));
     let mf = &fits.model_fit;
-    let mut chart = ChartBuilder::on(area)
-        .caption(
-            format!(
-                "b = {:.2} {}: model fit mu = {} (2 sigma), line fits mu_cm = {}, mu_t = {}",
-                Dimension::Length.to_display(scene.width),
-                Dimension::Length.display_unit().0,
-                super::drawing::with_error(mf.mu, 2.0 * mf.mu_se),
-                super::drawing::rounded(fits.line_fit.mu_cm),
-                super::drawing::rounded(fits.line_fit.mu_t)
-            ),
-            ("sans-serif", 18),
-        )
-        .margin(12)
-        .x_label_area_size(35)
-        .y_label_area_size(55)
-        .build_cartesian_2d(t0..t1, lo..hi)?;
-    chart
-        .configure_mesh()
-        .x_desc("t (s)")
-        .y_desc("v (m/s)")
-        .x_label_formatter(&tick)
-        .y_label_formatter(&tick)
-        .draw()?;
+    let caption = format!(
+        "b = {:.2} {}: model fit mu = {} (2 sigma), line fits mu_cm = {}, mu_t = {}",
+        Dimension::Length.to_display(scene.width),
+        Dimension::Length.display_unit().0,
+        super::drawing::with_error(mf.mu, 2.0 * mf.mu_se),
+        super::drawing::rounded(fits.line_fit.mu_cm),
+        super::drawing::rounded(fits.line_fit.mu_t)
+    );
+    let mut chart = linear_chart(
+        area,
+        &Frame::plain(Some(caption)),
+        ((t0, t1), (lo, hi)),
+        ("t (s)", "v (m/s)"),
+        true,
+    )?;
     for (j, colour, name) in [(1, BLUE, "v_cm"), (2, ORANGE, "v_t")] {
         let pick = move |p: &(f64, f64, f64)| (p.0, if j == 1 { p.1 } else { p.2 });
         chart
@@ -117,9 +102,7 @@ fn draw_fit(
                 colour.stroke_width(2),
             ))?
             .label(format!("model {name}"))
-            .legend(move |(x, y)| {
-                PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2))
-            });
+            .legend(line_mark(colour.stroke_width(2)));
     }
     let points = |v: &[f64]| {
         m.t.iter()
@@ -146,13 +129,7 @@ fn draw_fit(
             colour.mix(0.6).stroke_width(1),
         ))?;
     }
-    chart
-        .configure_series_labels()
-        .border_style(BLACK)
-        .background_style(WHITE.mix(0.9))
-        .position(SeriesLabelPosition::LowerRight)
-        .draw()?;
-    Ok(())
+    draw_legend(&mut chart, SeriesLabelPosition::LowerRight)
 }
 
 /// The lower chart: data − model at each measured time (v_cm crosses, v_t circles),
@@ -177,17 +154,13 @@ fn draw_residuals(
         .filter(|r| r.is_finite())
         .fold(0.01, f64::max)
         .min(1.0);
-    let mut rc = ChartBuilder::on(area)
-        .margin(12)
-        .x_label_area_size(35)
-        .y_label_area_size(55)
-        .build_cartesian_2d(t0..t1, -rmax..rmax)?;
-    rc.configure_mesh()
-        .x_desc("t (s)")
-        .y_desc("data - model (m/s)")
-        .x_label_formatter(&tick)
-        .y_label_formatter(&tick)
-        .draw()?;
+    let mut rc = linear_chart(
+        area,
+        &Frame::plain(None),
+        ((t0, t1), (-rmax, rmax)),
+        ("t (s)", "data - model (m/s)"),
+        true,
+    )?;
     let fit = |(t, r): (f64, f64)| (near(t, (t0, t1)), near(r, (-rmax, rmax)));
     rc.draw_series(
         res.iter()

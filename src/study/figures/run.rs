@@ -3,7 +3,10 @@
 
 use plotters::prelude::*;
 
-use super::drawing::{Chart, FigureError, draw_measured_marks, linear_axis, tick};
+use super::drawing::{
+    Chart, FigureError, Frame, draw_legend, draw_measured_marks, line_mark, linear_axis,
+    linear_chart, svg,
+};
 use crate::physics::solution::{Snapshot, Solution};
 use crate::settings::units::Dimension;
 use crate::study::measured::series::Measured;
@@ -135,33 +138,22 @@ pub fn run_chart(
     let (t0, t1) = linear_axis(sol.t_start, sol.t_end);
     let scene = &sol.scene;
     let cm = |v: f64| Dimension::Length.to_display(v);
-    let mut svg = String::new();
-    {
-        let root = SVGBackend::with_string(&mut svg, (900, 560)).into_drawing_area();
-        root.fill(&WHITE)?;
-        let mut chart = ChartBuilder::on(&root)
-            .caption(
-                format!(
-                    "{title}: b = {:.2} {unit}, R = {:.2} {unit}, mu_k = {}, e = {}",
-                    cm(scene.width),
-                    cm(scene.radius),
-                    super::drawing::rounded(scene.mu),
-                    super::drawing::rounded(scene.restitution),
-                    unit = Dimension::Length.display_unit().0,
-                ),
-                ("sans-serif", 18),
-            )
-            .margin(12)
-            .x_label_area_size(35)
-            .y_label_area_size(55)
-            .build_cartesian_2d(t0..t1, lo..hi)?;
-        chart
-            .configure_mesh()
-            .x_desc("t (s)")
-            .y_desc(y_desc)
-            .x_label_formatter(&tick)
-            .y_label_formatter(&tick)
-            .draw()?;
+    let caption = format!(
+        "{title}: b = {:.2} {unit}, R = {:.2} {unit}, mu_k = {}, e = {}",
+        cm(scene.width),
+        cm(scene.radius),
+        super::drawing::rounded(scene.mu),
+        super::drawing::rounded(scene.restitution),
+        unit = Dimension::Length.display_unit().0,
+    );
+    svg((900, 560), |root| {
+        let mut chart = linear_chart(
+            root,
+            &Frame::plain(Some(caption)),
+            ((t0, t1), (lo, hi)),
+            ("t (s)", &y_desc),
+            true,
+        )?;
         let grey = RGBColor(150, 150, 150);
         for e in sol.visible_events().filter(|e| e.kind.label().is_some()) {
             chart.draw_series(DashedLineSeries::new(
@@ -178,20 +170,11 @@ pub fn run_chart(
                     colour.stroke_width(2),
                 ))?
                 .label(name)
-                .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 20, y)], colour.stroke_width(2))
-                });
+                .legend(line_mark(colour.stroke_width(2)));
         }
         if let Some(m) = measured {
             draw_measured(&mut chart, m, (t0, t1))?;
         }
-        chart
-            .configure_series_labels()
-            .border_style(BLACK)
-            .background_style(WHITE.mix(0.9))
-            .position(SeriesLabelPosition::UpperRight)
-            .draw()?;
-        root.present()?;
-    }
-    Ok(svg)
+        draw_legend(&mut chart, SeriesLabelPosition::UpperRight)
+    })
 }

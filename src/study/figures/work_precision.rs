@@ -3,7 +3,7 @@
 
 use plotters::prelude::*;
 
-use super::drawing::{FigureError, finite_bounds, log_axis};
+use super::drawing::{FigureError, Frame, draw_legend, finite_bounds, line_mark, log_axis, svg};
 use crate::methods::Method;
 use crate::physics::scene::Scene;
 use crate::settings::units::{Dimension, show};
@@ -62,91 +62,88 @@ pub fn work_precision_against(
     scene: &Scene,
     work: Work,
 ) -> Result<String, FigureError> {
-    let mut svg = String::new();
+    svg((900, 600), |root| draw_diagram(root, rows, scene, work))
+}
+
+/// The diagram into `root`.
+fn draw_diagram(
+    root: &super::drawing::Area,
+    rows: &[Row],
+    scene: &Scene,
+    work: Work,
+) -> Result<(), FigureError> {
+    let pts: Vec<(f64, f64)> = rows
+        .iter()
+        .filter(|r| r.method != Method::Exact || r.err_v > 0.0)
+        .map(|r| (work.of(r), r.err_v.max(1e-16)))
+        .filter(|p| p.0.is_finite() && p.1.is_finite())
+        .collect();
+    if pts.is_empty() {
+        return Err(FigureError::NothingToDraw(
+            "no time-stepping run has a finite error to plot, allowed --methods with at least one of euler, symplectic-euler, rk4, rk45, moreau",
+        ));
+    }
+    let ((lo_t, hi_t), (lo_e, hi_e)) = axis_ranges(rows, &pts, work);
+    let frame = Frame {
+        caption: Some((caption(scene), 20)),
+        margin: 15,
+        label_areas: (45, 70),
+        room: (0, 0),
+    };
+    let mut chart = frame
+        .builder(root)
+        .build_cartesian_2d((lo_t..hi_t).log_scale(), (lo_e..hi_e).log_scale())?;
+    chart
+        .configure_mesh()
+        .x_desc(work.title())
+        .y_desc("max |v_cm - exact| (m/s)")
+        .x_label_formatter(&|v| format!("{v:.0e}"))
+        .y_label_formatter(&|v| format!("{v:.0e}"))
+        .draw()?;
+    // The exact engine has no error to plot: a vertical line at its time.
+    if let Some(exact) = rows
+        .iter()
+        .find(|r| r.method == Method::Exact && work.of(r).is_finite())
     {
-        let root = SVGBackend::with_string(&mut svg, (900, 600)).into_drawing_area();
-        root.fill(&WHITE)?;
-        let pts: Vec<(f64, f64)> = rows
+        let t = work.of(exact);
+        chart
+            .draw_series(LineSeries::new(
+                vec![(t, lo_e), (t, hi_e)],
+                BLACK.stroke_width(2),
+            ))?
+            .label("exact (error 0)")
+            .legend(line_mark(BLACK.stroke_width(2)));
+    }
+    for m in Method::TIME_STEPPING {
+        let mine: Vec<&Row> = rows.iter().filter(|r| r.method == m).collect();
+        if mine.is_empty() {
+            continue;
+        }
+        let c = colour(m);
+        let line: Vec<(f64, f64)> = mine
             .iter()
-            .filter(|r| r.method != Method::Exact || r.err_v > 0.0)
             .map(|r| (work.of(r), r.err_v.max(1e-16)))
             .filter(|p| p.0.is_finite() && p.1.is_finite())
             .collect();
-        if pts.is_empty() {
-            return Err(FigureError::NothingToDraw(
-                "no time-stepping run has a finite error to plot, allowed --methods with at least one of euler, symplectic-euler, rk4, rk45, moreau",
-            ));
-        }
-        let ((lo_t, hi_t), (lo_e, hi_e)) = axis_ranges(rows, &pts, work);
-        let mut chart = ChartBuilder::on(&root)
-            .caption(caption(scene), ("sans-serif", 20))
-            .margin(15)
-            .x_label_area_size(45)
-            .y_label_area_size(70)
-            .build_cartesian_2d((lo_t..hi_t).log_scale(), (lo_e..hi_e).log_scale())?;
         chart
-            .configure_mesh()
-            .x_desc(work.title())
-            .y_desc("max |v_cm - exact| (m/s)")
-            .x_label_formatter(&|v| format!("{v:.0e}"))
-            .y_label_formatter(&|v| format!("{v:.0e}"))
-            .draw()?;
-        // The exact engine has no error to plot: a vertical line at its time.
-        if let Some(exact) = rows
-            .iter()
-            .find(|r| r.method == Method::Exact && work.of(r).is_finite())
-        {
-            let t = work.of(exact);
-            chart
-                .draw_series(LineSeries::new(
-                    vec![(t, lo_e), (t, hi_e)],
-                    BLACK.stroke_width(2),
-                ))?
-                .label("exact (error 0)")
-                .legend(|(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 20, y)], BLACK.stroke_width(2))
-                });
-        }
-        for m in Method::TIME_STEPPING {
-            let mine: Vec<&Row> = rows.iter().filter(|r| r.method == m).collect();
-            if mine.is_empty() {
-                continue;
-            }
-            let c = colour(m);
-            let line: Vec<(f64, f64)> = mine
-                .iter()
-                .map(|r| (work.of(r), r.err_v.max(1e-16)))
-                .filter(|p| p.0.is_finite() && p.1.is_finite())
-                .collect();
-            chart
-                .draw_series(LineSeries::new(line, c.stroke_width(2)))?
-                .label(m.name())
-                .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 20, y)], c.stroke_width(2))
-                });
-            chart.draw_series(
-                mine.iter()
-                    .filter(|r| r.err_v.is_finite() && work.of(r).is_finite())
-                    .map(|r| {
-                        let p = (work.of(r), r.err_v.max(1e-16));
-                        let style = if r.status == crate::study::compare::RunStatus::Ok {
-                            c.filled()
-                        } else {
-                            c.stroke_width(1)
-                        };
-                        Circle::new(p, 4, style)
-                    }),
-            )?;
-        }
-        chart
-            .configure_series_labels()
-            .border_style(BLACK)
-            .background_style(WHITE.mix(0.9))
-            .position(SeriesLabelPosition::LowerRight)
-            .draw()?;
-        root.present()?;
+            .draw_series(LineSeries::new(line, c.stroke_width(2)))?
+            .label(m.name())
+            .legend(line_mark(c.stroke_width(2)));
+        chart.draw_series(
+            mine.iter()
+                .filter(|r| r.err_v.is_finite() && work.of(r).is_finite())
+                .map(|r| {
+                    let p = (work.of(r), r.err_v.max(1e-16));
+                    let style = if r.status == crate::study::compare::RunStatus::Ok {
+                        c.filled()
+                    } else {
+                        c.stroke_width(1)
+                    };
+                    Circle::new(p, 4, style)
+                }),
+        )?;
     }
-    Ok(svg)
+    draw_legend(&mut chart, SeriesLabelPosition::LowerRight)
 }
 
 /// The work and error axes' ranges: every plotted run with room around it (the exact

@@ -78,12 +78,22 @@ impl App {
                     .into(),
             ),
             View::Fit if self.lab.measured().is_some() => Ok(Figure::Fit),
-            _ if self.show_energy => Err(
+            // The Fit view without data shows the charts.
+            View::Charts | View::Fit => self.chart_figure(),
+        }
+    }
+
+    /// The figure of the chart on screen.
+    fn chart_figure(&self) -> Result<Figure, String> {
+        if self.show_energy {
+            Err(
                 "the energy chart has no SVG export yet: press e for the velocities, x for positions"
                     .into(),
-            ),
-            _ if self.show_positions => Ok(Figure::Positions),
-            _ => Ok(Figure::Velocities),
+            )
+        } else if self.show_positions {
+            Ok(Figure::Positions)
+        } else {
+            Ok(Figure::Velocities)
         }
     }
 

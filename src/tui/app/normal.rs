@@ -33,7 +33,7 @@ impl App {
             .any(|v| self.lab.set(p.key, v).is_ok());
         // The row's limits, short enough to stay beside the time in the status line
         // (the refused value would give a hidden b away).
-        let hidden = self.hide_b && p.key == Key::Width;
+        let hidden = self.hide.value(p.key);
         let why = if hidden {
             String::new()
         } else {
@@ -157,8 +157,9 @@ impl App {
                 match stop.burst {
                     // Short enough to stay whole beside the time on most screens.
                     Some((n, dt)) if n > 0 => format!(
-                        "{name} at t = {:.4} s: {n} impacts in {}",
+                        "{name} at t = {:.4} s: {n} {} in {}",
                         stop.t,
+                        if n == 1 { "impact" } else { "impacts" },
                         if dt < 1.0 {
                             format!(
                                 "{}{}",
@@ -358,9 +359,8 @@ impl App {
     }
 
     fn toggle_hide_width(&mut self) {
-        self.hide_b = !self.hide_b;
         self.status = Status::Info(
-            if self.hide_b {
+            if self.hide.toggle() {
                 "b's value hidden: predict from the picture (B shows it)"
             } else {
                 "b's value shown"
@@ -434,7 +434,7 @@ impl App {
 
     fn open_scrolling(&mut self, mode: Mode) {
         self.scroll = 0;
-        self.scroll_max.set(usize::MAX);
+        self.scroll_max = usize::MAX;
         self.mode = mode;
     }
 
@@ -442,7 +442,7 @@ impl App {
     pub(super) fn scroll_popup(&mut self, action: Action) -> bool {
         const PAGE: usize = 10;
         // Never beyond what the last frame could show (a press after the end is felt).
-        let now = self.scroll.min(self.scroll_max.get());
+        let now = self.scroll.min(self.scroll_max);
         self.scroll = match action {
             Action::Up => now.saturating_sub(1),
             Action::Down | Action::NextParam => now + 1,
@@ -452,7 +452,7 @@ impl App {
             Action::End => usize::MAX,
             _ => return false,
         }
-        .min(self.scroll_max.get());
+        .min(self.scroll_max);
         true
     }
 

@@ -15,11 +15,13 @@ use crate::lab::{MeasuredPoints, value_range};
 use crate::physics::model::BallState;
 use crate::physics::solution::{EnergySplit, EventKind, Snapshot, Who};
 use crate::settings::units::Dimension;
-use crate::study::fit::LineFit;
 use crate::tui::app::{App, ChartBall};
 use crate::tui::plot::{Draw, Plot, Series, VLine, nice_ticks};
 use crate::tui::theme::Theme;
-use crate::tui::view_cache::ChartDrawn;
+use crate::tui::view_cache::ViewCache;
+use marks::{line_fit_marks, measured_velocities};
+
+mod marks;
 
 fn event_lines(app: &App, balls: &[Who], theme: &Theme) -> Vec<VLine> {
     app.lab
@@ -41,43 +43,73 @@ fn event_lines(app: &App, balls: &[Who], theme: &Theme) -> Vec<VLine> {
         .collect()
 }
 
-/// The chart shown and its title's wordings, longest first (counted: a click or drag
-/// on the chart must not build it again, see [`ChartDrawn`]).
-fn chart(app: &App, area: Rect, theme: &Theme) -> (Vec<String>, Plot) {
-    app.view_cache
-        .charts_built
-        .set(app.view_cache.charts_built.get() + 1);
-    if app.show_energy {
-        energy(app, area, theme)
-    } else if app.show_positions {
-        positions(app, area, theme)
-    } else {
-        velocities(app, area, theme)
+/// A chart laid out for one frame: its title's wordings (longest first), the plot
+/// with the measured series thinned to its cells, and where its data cells are (a
+/// click or drag finds its time there, without building the chart again).
+#[derive(Clone, Debug)]
+pub struct Chart {
+    titles: Vec<String>,
+    plot: Plot,
+    data: Option<Rect>,
+}
+
+impl Chart {
+    /// How many points the chart hands to the plot (work counted: a million measured
+    /// rows are drawn as the cells they mark).
+    pub fn points(&self) -> usize {
+        self.plot.series.iter().map(|s| s.points.len()).sum()
+    }
+
+    /// The time under screen cell (`column`, `row`), if the cell is inside the plot
+    /// (what a click on the chart seeks to).
+    pub fn time_at(&self, column: u16, row: u16) -> Option<f64> {
+        let plot = self.data?;
+        if row < plot.y || row >= plot.bottom() {
+            return None;
+        }
+        crate::tui::plot::time_at_column(self.plot.x_range, plot.x, plot.width, column)
     }
 }
 
-pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let (titles, mut plot) = chart(app, area, theme);
-    let title = super::panel::title_of(&titles, area, theme);
+/// The chart shown in `area` (before drawing, with the screen's caches), and whether
+/// measured series were thinned for it now.
+pub fn build(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Chart, bool) {
+    let (titles, mut plot) = if app.show_energy {
+        energy(app, cache, area, theme)
+    } else if app.show_positions {
+        positions(app, cache, area, theme)
+    } else {
+        velocities(app, cache, area, theme)
+    };
+    // The title sits on the border: the inside is the same whatever it says.
+    let inner = block("", theme).inner(area);
+    let thinned = thin_measured(app, cache, &mut plot, inner, theme);
+    let data = plot.data_area(inner, theme);
+    (Chart { titles, plot, data }, thinned)
+}
+
+/// Draws `chart` (built for `area`), changing nothing.
+pub fn render(chart: &Chart, area: Rect, buf: &mut Buffer, theme: &Theme) {
+    let title = super::panel::title_of(&chart.titles, area, theme);
     let blk = block(title, theme);
     let inner = blk.inner(area);
     blk.render(area, buf);
-    thin_measured(app, &mut plot, inner, theme);
-    let points = plot.series.iter().map(|s| s.points.len()).sum();
-    app.view_cache.chart_points.set(points);
-    plot.render(inner, buf, theme);
-    app.view_cache
-        .chart_drawn
-        .set(Some(ChartDrawn::of(&plot, area, inner, theme)));
+    chart.plot.render(inner, buf, theme);
 }
 
 /// The snapshot's measured series in `plot` (a file may hold a million rows, drawn
 /// as markers) in their thinned form, one point per cell they mark, made once per
 /// snapshot and grid (the view cache): a frame draws what the cells show, not every
-/// row, and the same cells are marked.
-fn thin_measured(app: &App, plot: &mut Plot, inner: Rect, theme: &Theme) {
+/// row, and the same cells are marked. True if they were thinned now.
+fn thin_measured(
+    app: &App,
+    cache: &mut ViewCache,
+    plot: &mut Plot,
+    inner: Rect,
+    theme: &Theme,
+) -> bool {
     let (Some(m), Some(cells)) = (app.lab.points.as_ref(), plot.cells(inner, theme)) else {
-        return;
+        return false;
     };
     // Markers only: a line through thinned points would be another line.
     let index = |s: &Series| {
@@ -91,38 +123,15 @@ fn thin_measured(app: &App, plot: &mut Plot, inner: Rect, theme: &Theme) {
         .filter_map(index)
         .fold(0u8, |bits, i| bits | 1 << i);
     if drawn == 0 {
-        return;
+        return false;
     }
-    let marks = app
-        .view_cache
-        .measured_marks(app.lab.resolved(), cells, drawn);
+    let (marks, thinned) = cache.measured_marks(app.lab.resolved(), cells, drawn);
     for s in &mut plot.series {
         if let Some(thinned) = index(s).and_then(|i| marks.get(i).cloned().flatten()) {
             s.points = thinned;
         }
     }
-}
-
-/// The time under screen cell (`column`, `row`) of the chart drawn in `area`, if the
-/// cell is inside the plot (what a click on the chart seeks to).
-/// `theme` must be the one the chart is drawn with: the legend's rows (which depend
-/// on the glyph set and, in monochrome, on the series' names) push the plot down.
-pub fn time_at(app: &App, area: Rect, theme: &Theme, column: u16, row: u16) -> Option<f64> {
-    let drawn = app
-        .view_cache
-        .chart_drawn
-        .get()
-        .filter(|d| d.is_for(area, theme));
-    let drawn = drawn.unwrap_or_else(|| {
-        // Not drawn here yet (a caller without a screen): lay the chart out.
-        let (_, plot) = chart(app, area, theme);
-        ChartDrawn::of(&plot, area, block("", theme).inner(area), theme)
-    });
-    let plot = drawn.data?;
-    if row < plot.y || row >= plot.bottom() {
-        return None;
-    }
-    crate::tui::plot::time_at_column(drawn.x_range, plot.x, plot.width, column)
+    thinned
 }
 
 /// The default theme (Unicode, colours), for callers that do not say which one draws.
@@ -139,11 +148,17 @@ type Curve = (&'static str, fn(&Snapshot) -> f64);
 type Part = (&'static str, &'static str, Style, fn(&EnergySplit) -> f64);
 
 /// The pinned run's curves for the chart, drawn first (under the current ones), dimmed.
-fn pinned_series(app: &App, columns: usize, theme: &Theme, curves: &[Curve]) -> Vec<Series> {
+fn pinned_series(
+    app: &App,
+    cache: &mut ViewCache,
+    columns: usize,
+    theme: &Theme,
+    curves: &[Curve],
+) -> Vec<Series> {
     if app.lab.pinned.is_none() {
         return Vec::new();
     }
-    let samples = app.view_cache.pinned_samples(&app.lab, columns);
+    let samples = cache.pinned_samples(&app.lab, columns);
     // Without colour a dimmed braille line looks like the current run's: the pinned
     // run is drawn in dots of its own glyph then, under the current curves (ASCII draws
     // every line in its glyph).
@@ -308,81 +323,10 @@ fn overlay_velocities(app: &App, balls: &[usize], columns: usize, theme: &Theme)
     series
 }
 
-/// The measured v_cm and v_t as marks, with each derived point's ±1σ (a position
-/// track's local fits) as a vertical run of dots under the point's own glyph; the
-/// points are the snapshot's, shared, not copied per frame.
-fn measured_velocities(m: &MeasuredPoints, theme: &Theme) -> Vec<Series> {
-    let mut series = Vec::new();
-    for (n, bars) in [&m.v_cm_bars, &m.v_t_bars].into_iter().enumerate() {
-        if let Some(bars) = bars {
-            series.push(Series {
-                // One legend entry for both series' bars.
-                name: if n == 0 {
-                    theme.glyphs.text("±1σ").replace('σ', "s")
-                } else {
-                    String::new()
-                },
-                points: Arc::clone(bars),
-                style: theme.measured,
-                // Not ':' or '|': the event lines use those.
-                glyph: if theme.glyphs.ascii { "!" } else { "¦" },
-                draw: Draw::Points,
-            });
-        }
-    }
-    series.push(Series {
-        name: "measured v_cm".into(),
-        points: Arc::clone(&m.v_cm),
-        style: theme.measured,
-        glyph: if theme.glyphs.ascii { "x" } else { "×" },
-        draw: Draw::Points,
-    });
-    // A track without a rim mark measures no v_t: no legend entry claims one.
-    if !m.v_t.is_empty() {
-        series.push(Series {
-            name: "measured v_t".into(),
-            points: Arc::clone(&m.v_t),
-            style: theme.measured,
-            glyph: if theme.glyphs.ascii { "o" } else { "+" },
-            draw: Draw::Points,
-        });
-    }
-    series
-}
-
-/// The paper's straight lines over the fit window, and the window's ends.
-fn line_fit_marks(l: &LineFit, theme: &Theme) -> (Vec<Series>, Vec<VLine>) {
-    let lines = l
-        .lines
-        .iter()
-        .zip(["fit lines", ""])
-        .map(|(line, name)| Series {
-            name: name.to_string(),
-            points: [l.from, l.to]
-                .iter()
-                .map(|&t| (t, line.intercept + line.slope * t))
-                .collect(),
-            style: theme.cursor,
-            glyph: "-",
-            draw: Draw::Line,
-        })
-        .collect();
-    let ends = [(l.from, "from"), (l.to, "to")]
-        .into_iter()
-        .map(|(t, label)| VLine {
-            x: t,
-            label: Some(label.to_string()),
-            style: theme.cursor,
-            priority: 2,
-        })
-        .collect();
-    (lines, ends)
-}
-
-fn velocities(app: &App, area: Rect, theme: &Theme) -> (Vec<String>, Plot) {
+fn velocities(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Vec<String>, Plot) {
     let sol = &app.lab.solution;
     let columns = usize::from(area.width.saturating_sub(10));
-    let samples = app.view_cache.samples(&app.lab, columns);
+    let samples = cache.samples(&app.lab, columns);
     let (balls, which) = balls_shown(app.chart_ball);
     let curves: Vec<Curve> = balls
         .iter()
@@ -394,7 +338,7 @@ fn velocities(app: &App, area: Rect, theme: &Theme) -> (Vec<String>, Plot) {
             }
         })
         .collect();
-    let mut series = pinned_series(app, columns, theme, &curves);
+    let mut series = pinned_series(app, cache, columns, theme, &curves);
     series.extend(exact_velocities(&samples, &balls, theme));
     series.extend(overlay_velocities(app, &balls, columns, theme));
     if let Some(m) = app.lab.points.as_ref().filter(|_| balls.contains(&0)) {
@@ -439,12 +383,13 @@ fn thin_to(points: Vec<(f64, f64)>, n: usize) -> Vec<(f64, f64)> {
 /// What the positions chart shows: lengths, in their display unit.
 const POSITION: Dimension = Dimension::Length;
 
-fn positions(app: &App, area: Rect, theme: &Theme) -> (Vec<String>, Plot) {
+fn positions(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Vec<String>, Plot) {
     let sol = &app.lab.solution;
     let columns = usize::from(area.width.saturating_sub(10));
-    let samples = app.view_cache.samples(&app.lab, columns);
+    let samples = cache.samples(&app.lab, columns);
     let mut series = pinned_series(
         app,
+        cache,
         columns,
         theme,
         &[
@@ -501,10 +446,10 @@ fn positions(app: &App, area: Rect, theme: &Theme) -> (Vec<String>, Plot) {
 
 /// Energy against time: the kinetic parts and what friction, impacts and rolling
 /// resistance have taken so far, with their constant sum (the initial energy).
-fn energy(app: &App, area: Rect, theme: &Theme) -> (Vec<String>, Plot) {
+fn energy(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Vec<String>, Plot) {
     let sol = &app.lab.solution;
     let columns = usize::from(area.width.saturating_sub(10));
-    let split = app.view_cache.energies(&app.lab, columns);
+    let split = cache.energies(&app.lab, columns);
     let letters = theme.uncoloured_curves() || theme.glyphs.ascii;
     let draw = if letters && !theme.glyphs.ascii {
         // Braille cannot carry a letter: mark each sample cell instead.
@@ -540,8 +485,7 @@ fn energy(app: &App, area: Rect, theme: &Theme) -> (Vec<String>, Plot) {
             0,
             Series {
                 name: "pinned kinetic".into(),
-                points: app
-                    .view_cache
+                points: cache
                     .pinned_kinetic(&app.lab, columns)
                     .iter()
                     .copied()

@@ -9,7 +9,7 @@ use ratatui::widgets::Widget;
 use super::panel::{Ranked, block, by_priority, draw_lines};
 use crate::physics::derived::{Derived, Summary};
 use crate::physics::story::After;
-use crate::settings::units::{Dimension, show, significant};
+use crate::settings::units::{Dimension, show, sig_figs};
 use crate::tui::app::App;
 use crate::tui::theme::Theme;
 
@@ -33,7 +33,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     // before the rest of the story, the state at the cursor and the forces.
     // With b hidden (`B`), nothing here may give it or the outcome away: only the
     // state at the cursor, which the animation shows anyway.
-    if app.hide_b {
+    if app.hide.derived() {
         let note = theme
             .glyphs
             .text("b hidden: predict from the picture; B shows b and why");
@@ -201,7 +201,7 @@ fn after_impact_lines(app: &App, theme: &Theme) -> Ranked<'static> {
             3,
             Line::from(vec![label("left ball: ", theme), value(crossing, theme)]),
         ));
-        let accel = |a: f64| value(format!("{} m/s{}", significant(a, 4), g.squared), theme);
+        let accel = |a: f64| value(format!("{} m/s{}", sig_figs(a, 4), g.squared), theme);
         lines.push((
             2,
             Line::from(vec![
@@ -224,16 +224,16 @@ fn force_lines(app: &App, theme: &Theme) -> Ranked<'static> {
             1,
             Line::from(vec![
                 label("|N_A| ", theme),
-                value(format!("{:.3} N", f.normal_a.norm()), theme),
+                value(format!("{} N", sig_figs(f.normal_a.norm(), 4)), theme),
                 label("  F_net ", theme),
-                value(format!("{:.3} N", f.net.norm()), theme),
+                value(format!("{} N", sig_figs(f.net.norm(), 4)), theme),
             ]),
         ),
         (
             0,
             Line::from(vec![
                 label(&format!("{}_net ", g.tau), theme),
-                value(format!("{:.5} N m", f.torque.norm()), theme),
+                value(format!("{} N m", sig_figs(f.torque.norm(), 4)), theme),
                 label(&format!(" = {}_k m g R", g.mu), theme),
             ]),
         ),

@@ -13,14 +13,31 @@ use crate::tui::app::App;
 use crate::tui::plot::{Draw, Plot, Series, VLine};
 use crate::tui::theme::Theme;
 
-pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let [left, right] =
-        Layout::horizontal([Constraint::Percentage(55), Constraint::Percentage(45)]).areas(area);
-    regime_map(app, left, buf, theme);
+/// The regime map's half of `area` and the paper figure's.
+fn halves(area: Rect) -> [Rect; 2] {
+    Layout::horizontal([Constraint::Percentage(55), Constraint::Percentage(45)]).areas(area)
+}
+
+/// The regime grid's cells (columns, rows) in the map view drawn in `area`; `None`
+/// when too small to draw one.
+pub fn grid_size(area: Rect) -> Option<(usize, usize)> {
+    let inner =
+        block("", &Theme::new(crate::tui::theme::Glyphs::UNICODE, true)).inner(halves(area)[0]);
+    if inner.width < 12 || inner.height < 4 {
+        return None;
+    }
+    // Bottom row: legend; left column: e ticks (4 wide).
+    Some((usize::from(inner.width - 5), usize::from(inner.height - 2)))
+}
+
+/// Draws the map view with its regime `grid` (made before drawing, [`grid_size`]).
+pub fn render(app: &App, grid: &[Regime], area: Rect, buf: &mut Buffer, theme: &Theme) {
+    let [left, right] = halves(area);
+    regime_map(app, grid, left, buf, theme);
     paper_figure(app, right, buf, theme);
 }
 
-fn regime_map(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
+fn regime_map(app: &App, grid: &[Regime], area: Rect, buf: &mut Buffer, theme: &Theme) {
     let g = theme.glyphs;
     let blk = block(
         super::panel::title_of(
@@ -56,7 +73,9 @@ fn regime_map(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         Regime::Recollide => theme.accent,
     };
     let b_max = 2.0 * radius * 0.99;
-    let grid = app.view_cache.regime_grid(&app.lab, cols, rows);
+    if grid.len() != cols * rows {
+        return;
+    }
     for rr in 0..rows {
         let e = 1.0 - rr as f64 / (rows - 1).max(1) as f64;
         let label = if rr == 0 || rr == rows - 1 || rr == rows / 2 {
@@ -78,7 +97,7 @@ fn regime_map(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     // The scene itself (not while b is hidden: its column would give b away).
     let c = (app.lab.scene.width / b_max * (cols - 1) as f64).round() as u16;
     let r = ((1.0 - app.lab.scene.restitution) * (rows - 1) as f64).round() as u16;
-    if usize::from(c) < cols && usize::from(r) < rows && !app.hide_b {
+    if usize::from(c) < cols && usize::from(r) < rows && !app.hide.derived() {
         buf.set_string(
             inner.x + 5 + c,
             inner.y + r,
@@ -172,7 +191,7 @@ fn paper_figure(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             },
         ]
         .into_iter()
-        .skip(usize::from(app.hide_b))
+        .skip(usize::from(app.hide.derived()))
         .collect(),
         cursor: None,
         x_ticks: None,

@@ -248,7 +248,11 @@ fn legend_lines(app: &App, rows: &[Row], marks: bool, theme: &Theme) -> Ranked<'
         lines.push((
             7,
             Line::from(Span::styled(
-                format!("= outcome right ({}, {impacts} impacts)", outcome.name()),
+                format!(
+                    "= outcome right ({}, {impacts} {})",
+                    outcome.name(),
+                    if impacts == 1 { "impact" } else { "impacts" }
+                ),
                 theme.dim,
             )),
         ));

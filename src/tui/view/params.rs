@@ -38,12 +38,7 @@ const VALUE_W: usize = 11;
 pub fn value_text(app: &App, key: Key) -> String {
     let v = app.lab.value(key);
     let s = &app.lab.scene;
-    // A release height follows from v0 and k, so from b: hidden with it.
-    let gives_b_away = matches!(
-        key,
-        Key::Width | Key::Height | Key::HeightLeft | Key::HeightRight
-    );
-    if gives_b_away && app.hide_b {
+    if app.hide.value(key) {
         return "hidden".into();
     }
     if key == Key::V0 && s.left.v0 != s.right.v0 {
@@ -79,7 +74,7 @@ pub fn note(app: &App, key: Key, room: usize) -> String {
     };
     let text = match key {
         // b/R and k would give b away; b* does not depend on b.
-        Key::Width | Key::Radius if app.hide_b => d
+        Key::Width | Key::Radius if app.hide.derived() => d
             .b_star
             .and_then(|b| pair("b*", Dimension::Length.to_display(b), 2, room))
             .filter(|_| key == Key::Width),

@@ -44,9 +44,45 @@ fn popup(
         .render(rect, buf);
 }
 
+/// Where a scrolling popup of `width` with `head` fixed lines over `count` scrolling
+/// ones goes on a screen of `area`, how many scrolling lines show, and how far it
+/// scrolls.
+fn scroll_frame(area: Rect, width: u16, head: usize, count: usize) -> (Rect, usize, usize) {
+    let rect = centered(
+        area,
+        width,
+        (head + count).min(usize::from(u16::MAX - 2)) as u16 + 2,
+    );
+    let visible = usize::from(rect.height.saturating_sub(2)).saturating_sub(head);
+    (rect, visible, count.saturating_sub(visible))
+}
+
+/// How far the open help or data table scrolls on a screen of `area` (a key never
+/// scrolls into blank lines); `usize::MAX` for anything else.
+pub fn scroll_max(app: &App, area: Rect, theme: &Theme) -> usize {
+    match &app.mode {
+        Mode::Help => {
+            let width = help_width(area);
+            let lines = help_lines(usize::from(width.saturating_sub(2)), theme);
+            scroll_frame(area, width, 0, lines.len()).2
+        }
+        Mode::Table => {
+            let (head, count, width) = table_layout(app, theme);
+            scroll_frame(area, width, head.len(), count).2
+        }
+        Mode::Normal
+        | Mode::Picker(_)
+        | Mode::Edit(_)
+        | Mode::SaveName(_)
+        | Mode::ConfirmOverwrite(_)
+        | Mode::Export(..)
+        | Mode::Predict => usize::MAX,
+    }
+}
+
 /// A popup of `width` whose `lines` scroll: as many as fit from `app.scroll`, "more ↓"
 /// on the bottom border while lines are below, "↑ more" on the top one while lines
-/// are above. Tells the app how far scrolling goes at this size.
+/// are above.
 fn scrolling<'a>(
     app: &App,
     title: &str,
@@ -57,15 +93,8 @@ fn scrolling<'a>(
     theme: &Theme,
 ) {
     let g = theme.glyphs;
-    let rect = centered(
-        area,
-        width,
-        (head.len() + count).min(usize::from(u16::MAX - 2)) as u16 + 2,
-    );
+    let (rect, visible, max) = scroll_frame(area, width, head.len(), count);
     Clear.render(rect, buf);
-    let visible = usize::from(rect.height.saturating_sub(2)).saturating_sub(head.len());
-    let max = count.saturating_sub(visible);
-    app.scroll_max.set(max);
     let first = app.scroll.min(max);
     let mut blk: Block = block(g.text(&format!(" {title} ")), theme);
     if first + visible < count {
@@ -194,20 +223,9 @@ fn data_table(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         }
     };
     let track = app.lab.measured().is_some_and(|m| m.x.is_some());
-    let mut head = data_head(track, theme);
+    let (head, count, width) = table_layout(app, theme);
     let times = app.lab.measured().map_or(&[][..], |m| &m.t[..]);
-    let count = times.len();
-    // The frames the velocity fit leaves out, marked and said why (a residual there
-    // is the jump, not a misfit).
     let near = NearImpacts::of(times, &app.lab.solution);
-    if near.any_in(times) {
-        let why = if track {
-            "* left out of the velocity fit: within a frame of an impact, where v jumps (the position fit keeps it)"
-        } else {
-            "* left out of the fit: within a frame of an impact, where v jumps"
-        };
-        head.push(Line::from(Span::styled(format!(" {why}"), theme.dim)));
-    }
     let line = |i: usize| {
         data_row(app, i).map_or_else(Line::default, |r| {
             let at_cursor = (r[0] - app.t).abs() < 1e-9;
@@ -241,7 +259,6 @@ fn data_table(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     };
     // Room for the title beside "↑ more".
     let title = g.ellipsize(title, usize::from(area.width.saturating_sub(16)));
-    let width = if track { 110 } else { 78 };
     scrolling(app, &title, head, (count, &line), (area, width), buf, theme);
 }
 
@@ -250,7 +267,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         Mode::Normal | Mode::Edit(_) => {}
         Mode::Help => help(app, area, buf, theme),
         Mode::Table => data_table(app, area, buf, theme),
-        Mode::Predict => super::forces::question(app, area, buf, theme),
+        Mode::Predict => super::predict::question(app, area, buf, theme),
         Mode::Picker(selected) => preset_picker(app, *selected, area, buf, theme),
         Mode::SaveName(field) => save_prompt(app, field, area, buf, theme),
         Mode::Export(kind, field) => export_prompt(app, *kind, field, area, buf, theme),
@@ -258,9 +275,32 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     }
 }
 
+/// The data table's fixed lines, its row count and its width.
+fn table_layout(app: &App, theme: &Theme) -> (Vec<Line<'static>>, usize, u16) {
+    let track = app.lab.measured().is_some_and(|m| m.x.is_some());
+    let mut head = data_head(track, theme);
+    let times = app.lab.measured().map_or(&[][..], |m| &m.t[..]);
+    // The frames the velocity fit leaves out, marked and said why (a residual there
+    // is the jump, not a misfit).
+    if NearImpacts::of(times, &app.lab.solution).any_in(times) {
+        let why = if track {
+            "* left out of the velocity fit: within a frame of an impact, where v jumps (the position fit keeps it)"
+        } else {
+            "* left out of the fit: within a frame of an impact, where v jumps"
+        };
+        head.push(Line::from(Span::styled(format!(" {why}"), theme.dim)));
+    }
+    (head, times.len(), if track { 110 } else { 78 })
+}
+
+/// The help's width on a screen of `area`.
+fn help_width(area: Rect) -> u16 {
+    area.width.saturating_sub(2).min(86)
+}
+
 /// The keys, scrolling.
 fn help(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let width = area.width.saturating_sub(2).min(86);
+    let width = help_width(area);
     let lines = help_lines(usize::from(width.saturating_sub(2)), theme);
     let title = if theme.glyphs.ascii {
         "Keys  (Esc or q closes, up/down pgup/pgdn scroll)"

@@ -386,7 +386,7 @@ fn pinned_line(app: &App, width: u16, theme: &Theme) -> Option<String> {
             .map(|(label, was, now)| {
                 let name = label.replace("mu", theme.glyphs.mu);
                 // b hidden (a prediction from the picture): changed, but not to what.
-                if app.hide_b && name == "b" {
+                if app.hide.change(label) {
                     "b changed".to_string()
                 } else {
                     format!("{name} {was} → {now}")

@@ -16,7 +16,7 @@ use crate::tui::theme::{Glyphs, Theme};
 
 /// Draws the status line in `status` and the hint bar (or the rest of a long message
 /// and the help and quit keys) in `hints`.
-pub(super) fn render(app: &App, status: Rect, hints: Rect, buf: &mut Buffer, theme: &Theme) {
+pub fn render(app: &App, status: Rect, hints: Rect, buf: &mut Buffer, theme: &Theme) {
     let g = theme.glyphs;
     let width = usize::from(status.width);
     let right = right_text(app, width, &g);

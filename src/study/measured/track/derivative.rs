@@ -3,6 +3,10 @@
 
 use crate::study::measured::series::Stencil;
 
+/// Fewest frames on each side of a local quadratic fit: with one, its three points
+/// have no residual left to tell the slope's error.
+pub(super) const MIN_HALF_WINDOW: usize = 2;
+
 /// A local quadratic least-squares fit about `t0`: value, slope and the slope's
 /// standard error, and the weights that made the slope from the frames (neighbouring
 /// slopes share frames, so their errors are correlated).

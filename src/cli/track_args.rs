@@ -1,0 +1,52 @@
+//! The options of `groovelab track` (clap), apart from the command so that
+//! `args` can name them without a cycle.
+
+use std::path::PathBuf;
+
+use clap::{Args, ValueEnum};
+
+#[derive(Args, Debug)]
+pub struct TrackArgs {
+    /// The video (mp4, mov, mkv, avi: decoded by the system's ffmpeg) or a folder of
+    /// numbered PNG/JPEG frames.
+    #[arg(value_name = "VIDEO")]
+    pub video: PathBuf,
+    /// Frames per second of the recording [default: a slow-motion capture rate in the
+    /// file's metadata, else the container's; a folder of frames needs it].
+    #[arg(long, value_name = "F", value_parser = positive("frames per second", 1e5))]
+    pub fps: Option<f64>,
+    /// Pixels per metre in the plane of the balls [default: from the balls' fitted
+    /// radius and R (--radius)].
+    #[arg(long, value_name = "PX_PER_M", value_parser = positive("pixels per metre", 1e9))]
+    pub scale: Option<f64>,
+    /// Output: a Tracker-style text file (`--data` reads it) or JSON.
+    #[arg(long, value_enum, default_value_t = TrackFormat::Tracker)]
+    pub format: TrackFormat,
+    /// Write the tracks to this file (atomically) instead of stdout; the notes then
+    /// go to stdout.
+    #[arg(long, value_name = "FILE")]
+    pub output: Option<PathBuf>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum TrackFormat {
+    Tracker,
+    Json,
+}
+
+/// A parser of a positive number at most `max`.
+fn positive(what: &'static str, max: f64) -> impl Fn(&str) -> Result<f64, String> + Clone {
+    move |text: &str| {
+        let v: f64 = text
+            .trim()
+            .parse()
+            .map_err(|_| format!("'{text}' is not a number of {what}"))?;
+        if v.is_finite() && v > 0.0 && v <= max {
+            Ok(v)
+        } else {
+            Err(format!(
+                "{text} is out of range, allowed 0 < {what} ≤ {max:e}"
+            ))
+        }
+    }
+}

@@ -1,0 +1,130 @@
+//! A video's frames streamed from the system's `ffmpeg`: its first video stream
+//! decoded to 8-bit luma (`-pix_fmt gray`, turned as the phone meant it) and piped
+//! raw, one frame read at a time; ffmpeg's own messages gathered on a thread and
+//! said when it fails or stops short (a truncated or damaged file).
+
+use std::io::Read;
+use std::path::Path;
+use std::process::{Child, ChildStdout, Command, Stdio};
+use std::thread::JoinHandle;
+
+use super::info::{Frames, INSTALL_FFMPEG, Info, VideoError};
+use super::probe::url;
+use crate::study::vision::Gray;
+
+/// The frames of the video at `path` (as `info` describes it).
+pub(super) fn frames(path: &Path, info: &Info) -> Result<Frames, VideoError> {
+    let file = path.display().to_string();
+    let mut child = Command::new("ffmpeg")
+        .args(["-v", "error", "-nostdin", "-i"])
+        .arg(url(path))
+        .args([
+            "-map", "0:v:0", "-f", "rawvideo", "-pix_fmt", "gray", "pipe:1",
+        ])
+        .stdin(Stdio::null())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .map_err(|e| VideoError {
+            file: file.clone(),
+            what: match e.kind() {
+                std::io::ErrorKind::NotFound => INSTALL_FFMPEG.into(),
+                _ => format!("cannot run ffmpeg: {e}"),
+            },
+        })?;
+    let stdout = child.stdout.take().expect("piped");
+    let mut stderr = child.stderr.take().expect("piped");
+    let messages = std::thread::spawn(move || {
+        let mut s = String::new();
+        let _ = (&mut stderr).take(64 * 1024).read_to_string(&mut s);
+        // Drain the rest so ffmpeg never blocks on a full pipe.
+        let _ = std::io::copy(&mut stderr, &mut std::io::sink());
+        s
+    });
+    Ok(Box::new(Stream {
+        file,
+        child: Some(child),
+        stdout: std::io::BufReader::with_capacity(1 << 20, stdout),
+        messages: Some(messages),
+        width: info.width,
+        height: info.height,
+        expected: info.frames,
+        next: 0,
+    }))
+}
+
+struct Stream {
+    file: String,
+    child: Option<Child>,
+    stdout: std::io::BufReader<ChildStdout>,
+    messages: Option<JoinHandle<String>>,
+    width: usize,
+    height: usize,
+    expected: u64,
+    next: u64,
+}
+
+impl Stream {
+    /// After the last frame: ffmpeg's verdict. An error when it failed, or when far
+    /// fewer frames came than the file said it holds.
+    fn finish(&mut self) -> Option<VideoError> {
+        let status = self.child.take()?.wait().ok();
+        let messages = self
+            .messages
+            .take()
+            .and_then(|m| m.join().ok())
+            .unwrap_or_default();
+        let said = messages
+            .lines()
+            .rev()
+            .find(|l| !l.trim().is_empty())
+            .map(|l| format!(": ffmpeg says '{}'", l.trim()))
+            .unwrap_or_default();
+        let failed = status.is_none_or(|s| !s.success());
+        let short = self.expected > 0 && self.next * 10 < self.expected * 9;
+        if (failed && self.next == 0) || short {
+            return Some(VideoError {
+                file: self.file.clone(),
+                what: format!(
+                    "only {} of {} frames could be decoded: the file is truncated or damaged{said}",
+                    self.next, self.expected
+                ),
+            });
+        }
+        None
+    }
+}
+
+impl Iterator for Stream {
+    type Item = Result<(u64, Gray), VideoError>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        self.child.as_ref()?;
+        let mut data = vec![0u8; self.width * self.height];
+        match self.stdout.read_exact(&mut data) {
+            Ok(()) => {
+                let k = self.next;
+                self.next += 1;
+                Some(Ok((
+                    k,
+                    Gray {
+                        width: self.width,
+                        height: self.height,
+                        data,
+                    },
+                )))
+            }
+            Err(_) => self.finish().map(Err),
+        }
+    }
+}
+
+impl Drop for Stream {
+    fn drop(&mut self) {
+        // Stopped early (an error, Ctrl-C): end ffmpeg, never leave it running.
+        if let Some(mut c) = self.child.take() {
+            let _ = c.kill();
+            let _ = c.wait();
+        }
+    }
+}

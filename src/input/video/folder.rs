@@ -1,0 +1,128 @@
+//! A folder of numbered frames (`frame0001.png`, `img_12.jpg`, …): the PNG and JPEG
+//! files in it, ordered by the last number in their names, read one at a time with
+//! the `image` crate (no ffmpeg). Missing numbers are gaps: said, and the frames'
+//! times keep them (a frame's time is its number over the rate).
+
+use std::path::{Path, PathBuf};
+
+use super::info::{Frames, Info, Limits, VideoError};
+use crate::study::vision::Gray;
+
+/// True for a file named as a PNG or JPEG image.
+pub(super) fn is_image(path: &Path) -> bool {
+    path.extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| matches!(e.to_ascii_lowercase().as_str(), "png" | "jpg" | "jpeg"))
+}
+
+/// The last run of digits in `name`'s stem.
+fn number(path: &Path) -> Option<u64> {
+    let stem = path.file_stem()?.to_str()?;
+    let end = stem.rfind(|c: char| c.is_ascii_digit())? + 1;
+    let start = stem[..end]
+        .rfind(|c: char| !c.is_ascii_digit())
+        .map_or(0, |i| i + 1);
+    stem[start..end].parse().ok()
+}
+
+/// Opens the folder `dir`.
+pub(super) fn open(dir: &Path, limits: &Limits) -> Result<(Info, Frames), VideoError> {
+    let file = dir.display().to_string();
+    let err = |what: String| VideoError {
+        file: file.clone(),
+        what,
+    };
+    let entries =
+        std::fs::read_dir(dir).map_err(|e| err(format!("cannot read the folder: {e}")))?;
+    let mut frames: Vec<(u64, PathBuf)> = Vec::new();
+    for e in entries.flatten() {
+        let p = e.path();
+        if p.is_file() && is_image(&p) {
+            let Some(n) = number(&p) else {
+                return Err(err(format!(
+                    "{} has no frame number in its name, expected numbered frames (frame0001.png, …)",
+                    p.display()
+                )));
+            };
+            frames.push((n, p));
+        }
+    }
+    frames.sort();
+    if let Some(w) = frames.windows(2).find(|w| w[0].0 == w[1].0) {
+        return Err(err(format!(
+            "{} and {} have the same frame number {}",
+            w[0].1.display(),
+            w[1].1.display(),
+            w[0].0
+        )));
+    }
+    if frames.len() < 2 {
+        return Err(err(format!(
+            "holds {} PNG/JPEG frame{}, expected a folder of numbered frames (at least two)",
+            frames.len(),
+            if frames.len() == 1 { "" } else { "s" }
+        )));
+    }
+    let first = read(&frames[0].1)?;
+    let (w, h) = (first.width, first.height);
+    let pixels = (w * h) as f64 * frames.len() as f64;
+    if pixels > limits.pixels || w > limits.side || h > limits.side {
+        return Err(err(format!(
+            "{} frames of {w}×{h} pixels is too much to track, allowed at most {:.0e} pixels and {} px a side",
+            frames.len(),
+            limits.pixels,
+            limits.side
+        )));
+    }
+    let gaps = frames
+        .windows(2)
+        .filter(|p| p[1].0 > p[0].0 + 1)
+        .map(|p| [p[0].0 + 1, p[1].0 - 1])
+        .collect();
+    let info = Info {
+        kind: format!("folder of {} PNG/JPEG frames", frames.len()),
+        width: w,
+        height: h,
+        frames: frames.len() as u64,
+        container_fps: None,
+        capture_fps: None,
+        gaps,
+    };
+    let iter = frames.into_iter().map(move |(n, p)| {
+        let g = read(&p)?;
+        if (g.width, g.height) != (w, h) {
+            return Err(VideoError {
+                file: p.display().to_string(),
+                what: format!("is {}×{}, the first frame {w}×{h}", g.width, g.height),
+            });
+        }
+        Ok((n, g))
+    });
+    Ok((info, Box::new(iter)))
+}
+
+/// One frame's luma.
+fn read(path: &Path) -> Result<Gray, VideoError> {
+    let img = image::open(path).map_err(|e| VideoError {
+        file: path.display().to_string(),
+        what: format!("cannot read the image: {e}"),
+    })?;
+    let g = img.to_luma8();
+    Ok(Gray {
+        width: g.width() as usize,
+        height: g.height() as usize,
+        data: g.into_raw(),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn frame_numbers_are_the_last_digits() {
+        assert_eq!(number(Path::new("clip2_frame0012.png")), Some(12));
+        assert_eq!(number(Path::new("7.jpg")), Some(7));
+        assert_eq!(number(Path::new("frame.png")), None);
+    }
+}

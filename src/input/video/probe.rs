@@ -1,0 +1,227 @@
+//! What a video file is, from `ffprobe`'s JSON: its first video stream's size (turned
+//! as the phone meant it), the container's frame rate, a slow-motion capture rate
+//! where the metadata holds one (Android's `com.android.capture.fps`, any
+//! `…capture.fps` key), its length; and the refusals: no video stream (audio), a
+//! still image, a file ffprobe cannot read, a video too large to track.
+
+use std::path::Path;
+use std::process::Command;
+
+use serde_json::Value;
+
+use super::info::{INSTALL_FFMPEG, Info, Limits, VideoError};
+
+/// ffprobe's answer for a file.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Probe {
+    pub json: Value,
+}
+
+/// Runs ffprobe on `path`.
+pub fn probe(path: &Path) -> Result<Probe, VideoError> {
+    let file = path.display().to_string();
+    let err = |what: String| VideoError {
+        file: file.clone(),
+        what,
+    };
+    let out = Command::new("ffprobe")
+        .args([
+            "-v",
+            "error",
+            "-print_format",
+            "json",
+            "-show_format",
+            "-show_streams",
+        ])
+        .arg(url(path))
+        .stdin(std::process::Stdio::null())
+        .output()
+        .map_err(|e| match e.kind() {
+            std::io::ErrorKind::NotFound => err(INSTALL_FFMPEG.into()),
+            _ => err(format!("cannot run ffprobe: {e}")),
+        })?;
+    let json: Option<Value> = serde_json::from_slice(&out.stdout).ok();
+    let has_format = json.as_ref().is_some_and(|j| j.get("format").is_some());
+    if !out.status.success() || !has_format {
+        let why = String::from_utf8_lossy(&out.stderr);
+        let why = why
+            .lines()
+            .rev()
+            .find(|l| !l.trim().is_empty())
+            .unwrap_or("")
+            .trim();
+        return Err(err(format!(
+            "is not a video ffmpeg can read (corrupt, truncated or another kind of file){}",
+            if why.is_empty() {
+                String::new()
+            } else {
+                format!(
+                    ": ffprobe says '{}'",
+                    why.trim_start_matches(&format!("{}: ", path.display()))
+                )
+            }
+        )));
+    }
+    Ok(Probe {
+        json: json.unwrap_or(Value::Null),
+    })
+}
+
+/// `path` as ffmpeg's `file:` URL, so a name like `-x.mp4` or `a:b.mp4` is a file.
+pub(super) fn url(path: &Path) -> std::ffi::OsString {
+    let mut s = std::ffi::OsString::from("file:");
+    s.push(path.as_os_str());
+    s
+}
+
+/// A rate written as `30000/1001` or `29.97`; `None` for 0/0 and nonsense.
+fn rate(text: &str) -> Option<f64> {
+    let v = match text.split_once('/') {
+        Some((n, d)) => n.trim().parse::<f64>().ok()? / d.trim().parse::<f64>().ok()?,
+        None => text.trim().parse().ok()?,
+    };
+    (v.is_finite() && v > 0.0 && v < 1e5).then_some(v)
+}
+
+impl Probe {
+    /// What the file holds, refused when it is no video or too large for `limits`.
+    pub fn info(&self, file: &str, limits: &Limits) -> Result<Info, VideoError> {
+        let err = |what: String| VideoError {
+            file: file.to_string(),
+            what,
+        };
+        let streams = self.json["streams"].as_array().cloned().unwrap_or_default();
+        let format = &self.json["format"];
+        let format_name = format["format_name"].as_str().unwrap_or("?");
+        // A music file's cover picture is a "video" stream too, marked attached_pic.
+        let Some(v) = streams
+            .iter()
+            .find(|s| s["codec_type"] == "video" && s["disposition"]["attached_pic"] != 1)
+        else {
+            let audio = streams.iter().find(|s| s["codec_type"] == "audio");
+            return Err(err(match audio {
+                Some(a) => format!(
+                    "has no video, only audio ({}), expected a video",
+                    a["codec_name"].as_str().unwrap_or("?")
+                ),
+                None => "has no video stream, expected a video".into(),
+            }));
+        };
+        let codec = v["codec_name"].as_str().unwrap_or("?");
+        let frames_said = v["nb_frames"].as_str().and_then(|n| n.parse::<u64>().ok());
+        let still = format_name.contains("image2")
+            || format_name.ends_with("_pipe")
+            || (frames_said == Some(1));
+        if still {
+            return Err(err(format!(
+                "is a still image ({codec}), not a video; give a video, or a folder of numbered frames"
+            )));
+        }
+        let (mut w, mut h) = (
+            v["width"].as_u64().unwrap_or(0) as usize,
+            v["height"].as_u64().unwrap_or(0) as usize,
+        );
+        if rotation(v).is_some_and(|r| (r.abs() / 90.0).round() as i64 % 2 == 1) {
+            std::mem::swap(&mut w, &mut h);
+        }
+        if w < 16 || h < 16 || w > limits.side || h > limits.side {
+            return Err(err(format!(
+                "frames of {w}×{h} pixels, allowed 16 to {} on each side",
+                limits.side
+            )));
+        }
+        let container_fps = v["r_frame_rate"]
+            .as_str()
+            .and_then(rate)
+            .or_else(|| v["avg_frame_rate"].as_str().and_then(rate));
+        let duration = v["duration"]
+            .as_str()
+            .or(format["duration"].as_str())
+            .and_then(|d| d.parse::<f64>().ok())
+            .filter(|d| d.is_finite() && *d >= 0.0);
+        let frames = frames_said
+            .or_else(|| Some((duration? * container_fps?).round() as u64))
+            .unwrap_or(0);
+        let pixels = (w * h) as f64 * frames as f64;
+        if pixels > limits.pixels {
+            return Err(err(format!(
+                "{w}×{h} pixels × {frames} frames{} is too much video to track, allowed at most {:.0e} pixels (about 100 s of 1080p at 240 frames/s); cut the clip to the collision first, e.g. ffmpeg -ss START -t 5 -i VIDEO -c copy clip.mp4",
+                duration.map(|d| format!(" ({d:.0} s)")).unwrap_or_default(),
+                limits.pixels
+            )));
+        }
+        Ok(Info {
+            kind: format!("video ({codec}, {format_name})"),
+            width: w,
+            height: h,
+            frames,
+            container_fps,
+            capture_fps: capture_rate(&[&format["tags"], &v["tags"]]),
+            gaps: Vec::new(),
+        })
+    }
+}
+
+/// The stream's rotation in degrees (a phone held upright), if any.
+fn rotation(v: &Value) -> Option<f64> {
+    let side = v["side_data_list"].as_array().and_then(|l| {
+        l.iter().find_map(|d| {
+            d["rotation"]
+                .as_f64()
+                .or_else(|| d["rotation"].as_i64().map(|r| r as f64))
+        })
+    });
+    side.or_else(|| v["tags"]["rotate"].as_str().and_then(|r| r.parse().ok()))
+        .filter(|r: &f64| *r != 0.0)
+}
+
+/// A slow-motion capture rate in the metadata `tags`: a key ending in `capture.fps`
+/// or `capture_fps` (Android writes `com.android.capture.fps`).
+fn capture_rate(tags: &[&Value]) -> Option<(f64, String)> {
+    tags.iter()
+        .filter_map(|t| t.as_object())
+        .flatten()
+        .find_map(|(k, v)| {
+            let key = k.to_ascii_lowercase();
+            if !(key.ends_with("capture.fps") || key.ends_with("capture_fps")) {
+                return None;
+            }
+            let f = v.as_str().and_then(rate).or_else(|| v.as_f64())?;
+            Some((f, k.clone()))
+        })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn info(json: &str) -> Result<Info, VideoError> {
+        Probe {
+            json: serde_json::from_str(json).unwrap(),
+        }
+        .info("v.mp4", &Limits::default())
+    }
+
+    #[test]
+    fn a_phone_slow_motion_file_gives_its_capture_rate() {
+        let i = info(r#"{"format":{"format_name":"mov,mp4","duration":"4.0","tags":{"com.android.capture.fps":"240.000000"}},
+            "streams":[{"codec_type":"video","codec_name":"h264","width":1920,"height":1080,"r_frame_rate":"30/1","nb_frames":"120"}]}"#).unwrap();
+        assert_eq!(i.container_fps, Some(30.0));
+        assert_eq!(
+            i.capture_fps,
+            Some((240.0, "com.android.capture.fps".into()))
+        );
+        assert_eq!(i.rate(None).unwrap().0, 240.0);
+        assert_eq!(i.rate(Some(120.0)).unwrap().0, 120.0);
+    }
+
+    #[test]
+    fn an_upright_phone_video_is_turned_and_an_hour_of_4k_refused() {
+        let i = info(r#"{"format":{"format_name":"mov,mp4"},"streams":[{"codec_type":"video","codec_name":"h264","width":1920,"height":1080,"r_frame_rate":"30/1","nb_frames":"10","side_data_list":[{"rotation":-90}]}]}"#).unwrap();
+        assert_eq!((i.width, i.height), (1080, 1920));
+        let e = info(r#"{"format":{"format_name":"mov,mp4","duration":"3600"},"streams":[{"codec_type":"video","codec_name":"hevc","width":3840,"height":2160,"r_frame_rate":"30/1"}]}"#).unwrap_err();
+        assert!(e.what.contains("too much video"), "{e}");
+        let e = info(r#"{"format":{"format_name":"mp3"},"streams":[{"codec_type":"audio","codec_name":"mp3"}]}"#).unwrap_err();
+        assert!(e.what.contains("only audio (mp3)"), "{e}");
+    }
+}

@@ -1,0 +1,95 @@
+//! Writing frames and videos: PNG frames (the `image` crate) and an H.264 mp4
+//! encoded by the system's `ffmpeg` from raw RGB frames piped to it. For the tests'
+//! and benchmarks' synthetic videos, and for anyone who wants to see them.
+
+use std::io::Write;
+use std::path::Path;
+use std::process::{Command, Stdio};
+
+use super::info::{INSTALL_FFMPEG, VideoError};
+
+/// Writes one RGB frame (`width × height × 3` bytes) as a PNG file.
+pub fn png(path: &Path, rgb: &[u8], width: usize, height: usize) -> Result<(), VideoError> {
+    image::save_buffer(
+        path,
+        rgb,
+        width as u32,
+        height as u32,
+        image::ExtendedColorType::Rgb8,
+    )
+    .map_err(|e| VideoError {
+        file: path.display().to_string(),
+        what: format!("cannot write the image: {e}"),
+    })
+}
+
+/// How a video is encoded.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Encoding {
+    pub width: usize,
+    pub height: usize,
+    /// The container's frame rate.
+    pub fps: f64,
+    /// x264's constant rate factor (0 lossless … 51; 18 looks lossless).
+    pub crf: u32,
+    /// Metadata `key=value` written into the container (e.g. a capture rate).
+    pub metadata: Vec<(String, String)>,
+}
+
+/// Encodes the RGB frames `frames` into the video `path` (mp4, mov or mkv, by its
+/// name) with ffmpeg's libx264.
+pub fn video(
+    path: &Path,
+    enc: &Encoding,
+    frames: impl Iterator<Item = Vec<u8>>,
+) -> Result<(), VideoError> {
+    let err = |what: String| VideoError {
+        file: path.display().to_string(),
+        what,
+    };
+    let mut cmd = Command::new("ffmpeg");
+    cmd.args([
+        "-v", "error", "-y", "-f", "rawvideo", "-pix_fmt", "rgb24", "-s",
+    ])
+    .arg(format!("{}x{}", enc.width, enc.height))
+    .args(["-r", &format!("{}", enc.fps), "-i", "pipe:0"])
+    .args([
+        "-c:v", "libx264", "-preset", "veryfast", "-pix_fmt", "yuv420p", "-crf",
+    ])
+    .arg(enc.crf.to_string());
+    if !enc.metadata.is_empty() {
+        cmd.args(["-movflags", "use_metadata_tags"]);
+    }
+    for (k, v) in &enc.metadata {
+        cmd.arg("-metadata").arg(format!("{k}={v}"));
+    }
+    let mut child = cmd
+        .arg(path)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .map_err(|e| match e.kind() {
+            std::io::ErrorKind::NotFound => err(INSTALL_FFMPEG.into()),
+            _ => err(format!("cannot run ffmpeg: {e}")),
+        })?;
+    let mut stdin = child.stdin.take().expect("piped");
+    let mut broken = None;
+    for f in frames {
+        if let Err(e) = stdin.write_all(&f) {
+            broken = Some(e);
+            break;
+        }
+    }
+    drop(stdin);
+    let out = child
+        .wait_with_output()
+        .map_err(|e| err(format!("ffmpeg: {e}")))?;
+    if !out.status.success() || broken.is_some() {
+        return Err(err(format!(
+            "ffmpeg could not encode: {}",
+            String::from_utf8_lossy(&out.stderr).trim()
+        )));
+    }
+    Ok(())
+}

@@ -1,0 +1,212 @@
+//! What the derivation found in a track, for the user to check: the centre's and
+//! mark's frames, the impact, the window, the scatter, and the gaps, in a few lines.
+
+use serde::Serialize;
+
+use super::derivative::MIN_HALF_WINDOW;
+use crate::settings::units::{Dimension, show, show_small};
+
+/// What the derivation found in the track, for the user to check.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Found {
+    /// "Tracker multi-track", "Tracker single-track" or "CSV".
+    pub format: &'static str,
+    pub centre: String,
+    /// The rim mark's track, `None` when there is none (then v_t is not measured).
+    pub mark: Option<String>,
+    /// Frames with a centre position.
+    pub frames: usize,
+    /// Rows with a time but no centre position (an empty or NaN cell), left out.
+    #[serde(skip_serializing_if = "is_zero")]
+    pub frames_dropped: usize,
+    /// Those rows' times in the file, s, as runs of neighbouring rows `[first, last]`.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub centre_gaps: Vec<[f64; 2]>,
+    /// Frames with a centre but without the rim mark (an empty or NaN cell): no v_t
+    /// there, nothing filled in.
+    #[serde(skip_serializing_if = "is_zero")]
+    pub mark_missing: usize,
+    /// Those frames' times in the file, s, as runs `[first, last]`.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub mark_gaps: Vec<[f64; 2]>,
+    /// Frames per second (from the median spacing).
+    pub frame_rate: f64,
+    /// Estimated scatter of a tracked position, m.
+    pub scatter: f64,
+    /// Half-width of the local fits, s, and in frames.
+    pub half_window: f64,
+    pub half_window_frames: usize,
+    /// The half-width asked for (`--window`), s, when it was under two frames and so
+    /// widened to two (a local quadratic needs them).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub half_window_widened_from: Option<f64>,
+    /// The first impact in the file's time, s (becomes t = 0).
+    pub impact_t: f64,
+    /// True when found in the motion, false when given.
+    pub impact_detected: bool,
+    /// The file's x of the centre at the first impact, m (becomes x = 0).
+    pub impact_x: f64,
+    /// +1 when the other ball lies toward the file's +x, −1 when toward −x.
+    pub direction: f64,
+    /// Speed of the centre toward the other ball before the first impact, m/s: the
+    /// slope of a straight line through every frame of the approach (the ball rolls
+    /// toward the impact at a steady speed; one local slope at the impact scattered
+    /// by several of its own ±).
+    pub approach_speed: f64,
+    /// Its standard error, m/s (the line's, from its residuals: the frames' errors are
+    /// independent).
+    pub approach_speed_se: f64,
+    pub frames_before: usize,
+    pub frames_after: usize,
+    /// Later impacts found in the motion, s from the first; the derivative does not
+    /// reach across them either.
+    pub later_impacts: Vec<f64>,
+    /// Median distance of the mark from the centre, m.
+    pub mark_radius: Option<f64>,
+}
+
+fn is_zero(n: &usize) -> bool {
+    *n == 0
+}
+
+impl Found {
+    /// The least ball radius R the tracked rim mark allows, m: its distance from the
+    /// centre less three times the position scatter (within the noise it may lie on
+    /// the rim); `None` without a mark. A smaller R puts the mark off the ball: a
+    /// wrong R, or the wrong track taken for the mark, and a spin wrong by that ratio.
+    pub fn least_radius(&self) -> Option<f64> {
+        self.mark_radius.map(|m| m - 3.0 * self.scatter)
+    }
+
+    /// What was found, in a few lines for people.
+    pub fn describe(&self) -> String {
+        let name = |n: &str| {
+            if n.is_empty() {
+                "x, y".to_string()
+            } else {
+                format!("'{n}'")
+            }
+        };
+        let mut s = format!(
+            "position track ({}): centre {}, {}; {} frames at {:.1} frames/s, scatter ≈ {:.2}\n",
+            self.format,
+            name(&self.centre),
+            match &self.mark {
+                Some(m) => format!(
+                    "rim mark {} (at {:.1} from the centre)",
+                    name(m),
+                    show_small(self.mark_radius.unwrap_or(f64::NAN), Dimension::Length)
+                ),
+                None => "no rim mark: v_t is not measured, the fits use v_cm (x) only".to_string(),
+            },
+            self.frames,
+            self.frame_rate,
+            show_small(self.scatter, Dimension::Length)
+        );
+        if self.frames_dropped > 0 {
+            s += &format!(
+                "{} of {} rows left out: their centre position is empty or NaN ({} of the file)\n",
+                self.frames_dropped,
+                self.frames + self.frames_dropped,
+                runs_text(&self.centre_gaps)
+            );
+        }
+        if self.mark_missing > 0 {
+            s += &format!(
+                "rim mark missing in {} of {} frames ({} of the file): no v_t there, nothing filled in (the local fits beside a gap reach across it)\n",
+                self.mark_missing,
+                self.frames,
+                runs_text(&self.mark_gaps)
+            );
+        }
+        // Two frames before the impact give a speed but no ± (`--impact-at` early).
+        let approach = if self.approach_speed_se.is_finite() {
+            let (v, e) = crate::settings::units::with_uncertainty(
+                self.approach_speed,
+                self.approach_speed_se,
+                3,
+            );
+            format!("{v} ± {e}")
+        } else {
+            format!("{:.3}", self.approach_speed)
+        };
+        s += &format!(
+            "first impact {} at t = {:.4} s, x = {:.2} of the file ({} frames before, {} after); the other ball lies toward {}x; approach speed {approach} m/s (a line through the frames before it)
+",
+            if self.impact_detected {
+                "found"
+            } else {
+                "given"
+            },
+            self.impact_t,
+            show_small(self.impact_x, Dimension::Length),
+            self.frames_before,
+            self.frames_after,
+            if self.direction > 0.0 { "+" } else { "−" },
+        );
+
+        s += &format!(
+            "velocities by local quadratic fits over ±{:.1} ({} frames), never across an impact",
+            show_small(self.half_window, Dimension::Time),
+            self.half_window_frames
+        );
+        if let Some(asked) = self.half_window_widened_from {
+            s += &format!(
+                " (the ±{} asked for widened: a local quadratic needs at least {MIN_HALF_WINDOW} frames each side)",
+                show(asked, Dimension::Time)
+            );
+        }
+        if !self.later_impacts.is_empty() {
+            let later: Vec<String> = self
+                .later_impacts
+                .iter()
+                .map(|t| format!("{t:.3}"))
+                .collect();
+            s += &format!(" (later impacts at t = {} s)", later.join(", "));
+        }
+        s.push('\n');
+        s
+    }
+}
+
+/// Runs of missing frames said as times: "t = 0.325 … 0.392 s, 0.983 s" (the
+/// first five runs, then how many more).
+fn runs_text(runs: &[[f64; 2]]) -> String {
+    const SHOWN: usize = 5;
+    let mut parts: Vec<String> = runs
+        .iter()
+        .take(SHOWN)
+        .map(|[a, b]| {
+            if a == b {
+                format!("{a:.3}")
+            } else {
+                format!("{a:.3} … {b:.3}")
+            }
+        })
+        .collect();
+    if runs.len() > SHOWN {
+        parts.push(format!("and {} more", runs.len() - SHOWN));
+    }
+    format!("t = {} s", parts.join(", "))
+}
+
+/// The runs of neighbouring entries flagged `missing`, as their first and last
+/// `times`.
+pub(super) fn runs(times: &[f64], missing: &[bool]) -> Vec<[f64; 2]> {
+    let mut out = Vec::new();
+    let mut start = None;
+    for (i, &m) in missing.iter().enumerate() {
+        match (m, start) {
+            (true, None) => start = Some(i),
+            (false, Some(s)) => {
+                out.push([times[s], times[i - 1]]);
+                start = None;
+            }
+            _ => {}
+        }
+    }
+    if let Some(s) = start {
+        out.push([times[s], times[missing.len() - 1]]);
+    }
+    out
+}

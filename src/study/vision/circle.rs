@@ -1,0 +1,264 @@
+//! A ball's outline to sub-pixel accuracy: edge points where the luma gradient peaks
+//! across the expected circle (Sobel gradient, its maximum along the gradient's axis
+//! refined by a parabola through three pixels, as Devernay's sub-pixel Canny does),
+//! only points whose gradient points along the radius (the near rail's straight top
+//! edge does not) and of the ball's polarity; then a circle fitted to them by least
+//! squares of the geometric distance, outliers left out in rounds. The near rail
+//! hides the ball's lower part, so the points cover an arc, not the whole circle.
+
+use super::gray::Gray;
+
+/// A circle in pixels (x right, y down).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Circle {
+    pub x: f64,
+    pub y: f64,
+    pub r: f64,
+}
+
+/// A circle fitted to a ball's visible edge.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Outline {
+    pub circle: Circle,
+    /// Standard errors of the centre's x and y and of the radius, px.
+    pub sigma: [f64; 3],
+    /// Root mean square distance of the kept edge points from the circle, px.
+    pub rms: f64,
+    /// Edge points kept.
+    pub points: usize,
+    /// Share of the circle's 36 sectors of 10° holding kept points (0 … 1).
+    pub coverage: f64,
+    /// The lowest kept edge point, px: the ball is hidden below it (the rail).
+    pub lowest: f64,
+    /// +1 when the ball is brighter than its surroundings, −1 when darker.
+    pub polarity: f64,
+}
+
+/// Fits the outline of the ball near `guess`, searching `band` px either side of it;
+/// `polarity` the ball's (+1 brighter, −1 darker than around it), or 0 to take the
+/// sign most edge points have. `None` when too few edge points are found.
+pub fn fit(img: &Gray, guess: Circle, band: f64, polarity: f64) -> Option<Outline> {
+    let (points, sign) = edge_points(img, guess, band, polarity)?;
+    let mut keep: Vec<[f64; 2]> = points;
+    let mut c = guess;
+    let mut cut = band.max(1.0);
+    for round in 0..6 {
+        if keep.len() < 12 {
+            return None;
+        }
+        c = geometric(&keep, c)?;
+        let d: Vec<f64> = keep.iter().map(|p| dist(p, &c) - c.r).collect();
+        let mut abs: Vec<f64> = d.iter().map(|v| v.abs()).collect();
+        abs.sort_by(f64::total_cmp);
+        let mad = abs[abs.len() / 2] * 1.4826;
+        let next = (3.0 * mad).max(0.25).min(cut);
+        let before = keep.len();
+        keep = keep
+            .into_iter()
+            .zip(&d)
+            .filter(|(_, v)| v.abs() <= next)
+            .map(|(p, _)| p)
+            .collect();
+        if round > 1 && keep.len() == before && next >= cut * 0.99 {
+            break;
+        }
+        cut = next;
+    }
+    if keep.len() < 12 {
+        return None;
+    }
+    let c = geometric(&keep, c)?;
+    Some(describe(&keep, c, sign))
+}
+
+/// The outline's numbers from the kept `points` and their circle `c`.
+fn describe(points: &[[f64; 2]], c: Circle, polarity: f64) -> Outline {
+    let n = points.len() as f64;
+    let res2: f64 = points.iter().map(|p| (dist(p, &c) - c.r).powi(2)).sum();
+    let rms = (res2 / n).sqrt();
+    // Covariance of (x, y, r): σ² (JᵀJ)⁻¹, J's rows (−cos, −sin, −1).
+    let mut a = [[0.0f64; 3]; 3];
+    let mut sectors = [false; 36];
+    let mut lowest = f64::NEG_INFINITY;
+    for p in points {
+        let (dx, dy) = (p[0] - c.x, p[1] - c.y);
+        let rho = dx.hypot(dy).max(1e-9);
+        let j = [dx / rho, dy / rho, 1.0];
+        for i in 0..3 {
+            for k in 0..3 {
+                a[i][k] += j[i] * j[k];
+            }
+        }
+        let a = dy.atan2(dx).rem_euclid(std::f64::consts::TAU);
+        sectors[((a / std::f64::consts::TAU * 36.0) as usize).min(35)] = true;
+        lowest = lowest.max(p[1]);
+    }
+    let s2 = res2 / (n - 3.0).max(1.0);
+    let jtj = nalgebra::Matrix3::from_fn(|i, k| a[i][k]);
+    let cov = jtj.try_inverse().unwrap_or_else(nalgebra::Matrix3::zeros) * s2;
+    Outline {
+        circle: c,
+        sigma: [cov[(0, 0)].sqrt(), cov[(1, 1)].sqrt(), cov[(2, 2)].sqrt()],
+        rms,
+        points: points.len(),
+        coverage: sectors.iter().filter(|&&s| s).count() as f64 / 36.0,
+        lowest,
+        polarity,
+    }
+}
+
+fn dist(p: &[f64; 2], c: &Circle) -> f64 {
+    (p[0] - c.x).hypot(p[1] - c.y)
+}
+
+/// Gauss–Newton on the geometric distances from `start`; `None` if it diverges.
+fn geometric(points: &[[f64; 2]], start: Circle) -> Option<Circle> {
+    let mut c = start;
+    for _ in 0..20 {
+        let (mut a, mut g) = ([[0.0f64; 3]; 3], [0.0f64; 3]);
+        for p in points {
+            let (dx, dy) = (p[0] - c.x, p[1] - c.y);
+            let rho = dx.hypot(dy).max(1e-9);
+            let res = rho - c.r;
+            let j = [-dx / rho, -dy / rho, -1.0];
+            for i in 0..3 {
+                for k in 0..3 {
+                    a[i][k] += j[i] * j[k];
+                }
+                g[i] += j[i] * res;
+            }
+        }
+        let jtj = nalgebra::Matrix3::from_fn(|i, k| a[i][k]);
+        let jtr = nalgebra::Vector3::from_row_slice(&g);
+        let step = jtj.try_inverse()? * jtr;
+        c = Circle {
+            x: c.x - step[0],
+            y: c.y - step[1],
+            r: c.r - step[2],
+        };
+        if !(c.x.is_finite() && c.y.is_finite() && c.r > 1.0) {
+            return None;
+        }
+        if step.norm() < 1e-6 {
+            break;
+        }
+    }
+    Some(c)
+}
+
+/// The Sobel gradient (x, y, magnitude; per pixel) over the box `(x0, y0, x1, y1)`,
+/// computed only where `near(x, y, 1.5)` (zero elsewhere).
+#[allow(clippy::type_complexity)]
+fn gradient(
+    img: &Gray,
+    (x0, y0, x1, y1): (isize, isize, isize, isize),
+    near: &impl Fn(isize, isize, f64) -> bool,
+) -> (Vec<f32>, Vec<f32>, Vec<f32>) {
+    let (bw, bh) = ((x1 - x0 + 1) as usize, (y1 - y0 + 1) as usize);
+    let mut gx = vec![0.0f32; bw * bh];
+    let mut gy = vec![0.0f32; bw * bh];
+    let mut mag = vec![0.0f32; bw * bh];
+    let p = |x: isize, y: isize| img.at(x as usize, y as usize);
+    for y in y0..=y1 {
+        for x in x0..=x1 {
+            if !near(x, y, 1.5) {
+                continue;
+            }
+            let sx = (p(x + 1, y - 1) + 2.0 * p(x + 1, y) + p(x + 1, y + 1))
+                - (p(x - 1, y - 1) + 2.0 * p(x - 1, y) + p(x - 1, y + 1));
+            let sy = (p(x - 1, y + 1) + 2.0 * p(x, y + 1) + p(x + 1, y + 1))
+                - (p(x - 1, y - 1) + 2.0 * p(x, y - 1) + p(x + 1, y - 1));
+            let i = (y - y0) as usize * bw + (x - x0) as usize;
+            gx[i] = sx / 8.0;
+            gy[i] = sy / 8.0;
+            mag[i] = gx[i].hypot(gy[i]);
+        }
+    }
+    (gx, gy, mag)
+}
+
+/// Sub-pixel edge points within `band` of the circle `guess`, of the polarity asked
+/// for (or the most common one), and that polarity.
+fn edge_points(
+    img: &Gray,
+    guess: Circle,
+    band: f64,
+    polarity: f64,
+) -> Option<(Vec<[f64; 2]>, f64)> {
+    let (w, h) = (img.width as isize, img.height as isize);
+    let reach = guess.r + band + 2.0;
+    let x0 = ((guess.x - reach).floor() as isize).max(1);
+    let x1 = ((guess.x + reach).ceil() as isize).min(w - 2);
+    let y0 = ((guess.y - reach).floor() as isize).max(1);
+    let y1 = ((guess.y + reach).ceil() as isize).min(h - 2);
+    if x1 - x0 < 4 || y1 - y0 < 4 {
+        return None;
+    }
+    let bw = (x1 - x0 + 1) as usize;
+    let near = |x: isize, y: isize, extra: f64| {
+        let d = (x as f64 - guess.x).hypot(y as f64 - guess.y) - guess.r;
+        d.abs() <= band + extra
+    };
+    let (gx, gy, mag) = gradient(img, (x0, y0, x1, y1), &near);
+    let mut found: Vec<([f64; 2], f32, f64)> = Vec::new();
+    for y in (y0 + 1)..y1 {
+        for x in (x0 + 1)..x1 {
+            if !near(x, y, 0.0) {
+                continue;
+            }
+            let i = (y - y0) as usize * bw + (x - x0) as usize;
+            let m = mag[i];
+            if m <= 0.0 {
+                continue;
+            }
+            let (rx, ry) = (x as f64 - guess.x, y as f64 - guess.y);
+            let rho = rx.hypot(ry).max(1e-9);
+            let along = (f64::from(gx[i]) * rx + f64::from(gy[i]) * ry) / rho;
+            if along.abs() < 0.9 * f64::from(m) {
+                continue;
+            }
+            let horizontal = gx[i].abs() >= gy[i].abs();
+            let (a, b) = if horizontal {
+                (mag[i - 1], mag[i + 1])
+            } else {
+                (mag[i - bw], mag[i + bw])
+            };
+            if !(m > a && m >= b) {
+                continue;
+            }
+            let den = a - 2.0 * m + b;
+            let eta = if den < 0.0 {
+                f64::from(0.5 * (a - b) / den).clamp(-0.5, 0.5)
+            } else {
+                0.0
+            };
+            let pt = if horizontal {
+                [x as f64 + eta, y as f64]
+            } else {
+                [x as f64, y as f64 + eta]
+            };
+            // Outward luma falls (−) for a bright ball: polarity −sign(along).
+            found.push((pt, m, -along.signum()));
+        }
+    }
+    if found.len() < 12 {
+        return None;
+    }
+    let sign = if polarity != 0.0 {
+        polarity
+    } else {
+        let s: f64 = found.iter().map(|f| f.2 * f64::from(f.1)).sum();
+        if s >= 0.0 { 1.0 } else { -1.0 }
+    };
+    found.retain(|f| f.2 == sign);
+    // Weak maxima are noise: keep those above a quarter of the strong ones.
+    let mut mags: Vec<f32> = found.iter().map(|f| f.1).collect();
+    mags.sort_by(f32::total_cmp);
+    let strong = *mags.get(mags.len() * 3 / 4)?;
+    let pts = found
+        .into_iter()
+        .filter(|f| f.1 >= 0.25 * strong)
+        .map(|f| f.0)
+        .collect();
+    Some((pts, sign))
+}

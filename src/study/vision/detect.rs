@@ -1,0 +1,296 @@
+//! Finding balls in a whole frame, coarsely: the frame reduced to about 320 pixels
+//! across, its background fitted as a smooth surface (a quadratic in x and y, fitted
+//! robustly so that balls and rails do not pull it: a lighting gradient is no ball),
+//! the pixels far from it marked, long horizontal runs of them dropped (the rails run
+//! across the picture; a ball is far narrower) and thin horizontal lines opened away
+//! (a rail's edge broken by noise), and the marked pixels' connected
+//! blobs sorted into ball-like ones (as wide as tall, or wider by the part the near
+//! rail hides), pairs merged at an impact, and the rest.
+
+use super::gray::{Gray, Levels};
+
+/// A blob of the coarse frame, in full-frame pixels.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Blob {
+    pub left: f64,
+    pub right: f64,
+    pub top: f64,
+    pub bottom: f64,
+    /// Marked pixels, in full-frame pixels².
+    pub area: f64,
+}
+
+impl Blob {
+    pub fn width(&self) -> f64 {
+        self.right - self.left
+    }
+    pub fn height(&self) -> f64 {
+        self.bottom - self.top
+    }
+    /// The ball this blob would be if it is one: centre below the top by half the
+    /// width.
+    pub fn guess(&self) -> super::circle::Circle {
+        let r = 0.5 * self.width();
+        super::circle::Circle {
+            x: 0.5 * (self.left + self.right),
+            y: self.top + r,
+            r,
+        }
+    }
+}
+
+/// What a coarse look at one frame found.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Coarse {
+    /// Ball-shaped blobs, left to right.
+    pub balls: Vec<Blob>,
+    /// Blobs about twice as wide as a ball: two balls touching.
+    pub pairs: Vec<Blob>,
+    /// Scatter of the background's luma about its smooth fit (coarse pixels).
+    pub noise: f64,
+}
+
+/// The reduction factor that brings a frame `width` wide to about 320 pixels.
+pub fn factor(width: usize) -> usize {
+    (width / 320).max(1)
+}
+
+/// Looks at the whole of `img` for balls of radius at least `min_radius` px.
+pub fn coarse(img: &Gray, min_radius: f64) -> Coarse {
+    let f = factor(img.width);
+    let small = img.reduced(f);
+    let (bg, noise) = background(&small);
+    let thr = (6.0 * noise).max(12.0);
+    let (w, h) = (small.width, small.height);
+    let mut mask: Vec<bool> = small
+        .data
+        .iter()
+        .zip(&bg)
+        .map(|(v, b)| (v - b).abs() > thr)
+        .collect();
+    drop_long_runs(&mut mask, w, h, w / 4);
+    open_vertically(&mut mask, w, h);
+    let ff = f as f64;
+    let min_area = (min_radius / ff).powi(2);
+    let mut out = Coarse {
+        noise: f64::from(noise),
+        ..Coarse::default()
+    };
+    for b in blobs(&mut mask, w, h) {
+        if (b.area as f64) < min_area {
+            continue;
+        }
+        let blob = Blob {
+            left: b.x0 as f64 * ff,
+            right: (b.x1 + 1) as f64 * ff,
+            top: b.y0 as f64 * ff,
+            bottom: (b.y1 + 1) as f64 * ff,
+            area: b.area as f64 * ff * ff,
+        };
+        let (bw, bh) = (blob.width(), blob.height());
+        let fill = blob.area / (bw * bh);
+        if fill < 0.45 || bw < 2.0 * min_radius {
+            continue;
+        }
+        // A ball: its visible part is at least its upper half (the rails sit below
+        // the centre), at most the whole disc.
+        if bh <= 1.2 * bw + 2.0 * ff && bh >= 0.4 * bw {
+            out.balls.push(blob);
+        } else if bh < 0.4 * bw && bh >= 0.18 * bw {
+            out.pairs.push(blob);
+        }
+    }
+    // The balls are of one size: a blob far smaller than the largest is something
+    // else (a fragment of a rail's edge, a speck).
+    let largest = out.balls.iter().map(|b| b.area).fold(0.0, f64::max);
+    out.balls.retain(|b| b.area >= 0.3 * largest);
+    let largest_pair = out.pairs.iter().map(|b| b.area).fold(0.0, f64::max);
+    out.pairs
+        .retain(|b| b.area >= 0.3 * largest_pair && b.area >= 0.6 * largest);
+    out.balls.sort_by(|a, b| a.left.total_cmp(&b.left));
+    out
+}
+
+/// Drops horizontal runs of marked pixels longer than `longest` (rails), a run
+/// going on across gaps of up to two pixels (noise breaks a rail's edge row).
+fn drop_long_runs(mask: &mut [bool], w: usize, h: usize, longest: usize) {
+    for y in 0..h {
+        let row = &mut mask[y * w..(y + 1) * w];
+        let mut x = 0;
+        while x < w {
+            if !row[x] {
+                x += 1;
+                continue;
+            }
+            let start = x;
+            while x < w && (row[x] || row[x + 1..w.min(x + 3)].iter().any(|&m| m)) {
+                x += 1;
+            }
+            if x - start > longest {
+                row[start..x].iter_mut().for_each(|m| *m = false);
+            }
+        }
+    }
+}
+
+/// A vertical opening (erosion then dilation by three pixels in a column): takes
+/// away horizontal lines one or two pixels thick (a rail's edge that noise broke
+/// into short runs, which would join a ball to the rail), keeps the balls.
+fn open_vertically(mask: &mut [bool], w: usize, h: usize) {
+    if h < 3 {
+        return;
+    }
+    let at = |m: &[bool], x: usize, y: usize| m[y * w + x];
+    let mut eroded = vec![false; w * h];
+    for y in 1..h - 1 {
+        for x in 0..w {
+            eroded[y * w + x] = at(mask, x, y - 1) && at(mask, x, y) && at(mask, x, y + 1);
+        }
+    }
+    for y in 0..h {
+        for x in 0..w {
+            mask[y * w + x] = at(&eroded, x, y)
+                || (y > 0 && at(&eroded, x, y - 1))
+                || (y + 1 < h && at(&eroded, x, y + 1));
+        }
+    }
+}
+
+struct Component {
+    x0: usize,
+    x1: usize,
+    y0: usize,
+    y1: usize,
+    area: usize,
+}
+
+/// The 4-connected components of `mask` (cleared as they are taken).
+fn blobs(mask: &mut [bool], w: usize, h: usize) -> Vec<Component> {
+    let mut out = Vec::new();
+    let mut stack = Vec::new();
+    for start in 0..mask.len() {
+        if !mask[start] {
+            continue;
+        }
+        mask[start] = false;
+        stack.push(start);
+        let mut c = Component {
+            x0: usize::MAX,
+            x1: 0,
+            y0: usize::MAX,
+            y1: 0,
+            area: 0,
+        };
+        while let Some(i) = stack.pop() {
+            let (x, y) = (i % w, i / w);
+            c.x0 = c.x0.min(x);
+            c.x1 = c.x1.max(x);
+            c.y0 = c.y0.min(y);
+            c.y1 = c.y1.max(y);
+            c.area += 1;
+            let mut push = |j: usize| {
+                if mask[j] {
+                    mask[j] = false;
+                    stack.push(j);
+                }
+            };
+            if x > 0 {
+                push(i - 1);
+            }
+            if x + 1 < w {
+                push(i + 1);
+            }
+            if y > 0 {
+                push(i - w);
+            }
+            if y + 1 < h {
+                push(i + w);
+            }
+        }
+        out.push(c);
+    }
+    out
+}
+
+/// The smooth background of a reduced frame (a quadratic surface fitted to every
+/// third pixel, three rounds leaving out those more than three scatters off), per
+/// pixel, and the scatter of the pixels kept.
+fn background(img: &Levels) -> (Vec<f32>, f32) {
+    let (w, h) = (img.width, img.height);
+    let basis = |x: usize, y: usize| {
+        let u = 2.0 * x as f64 / w.max(2) as f64 - 1.0;
+        let v = 2.0 * y as f64 / h.max(2) as f64 - 1.0;
+        [1.0, u, v, u * u, u * v, v * v]
+    };
+    let samples: Vec<(usize, usize)> = (0..h)
+        .step_by(3)
+        .flat_map(|y| (0..w).step_by(3).map(move |x| (x, y)))
+        .collect();
+    let mut coef = [0.0f64; 6];
+    let mut cut = f64::INFINITY;
+    let mut scatter = 0.0;
+    for _ in 0..4 {
+        // The normal equations summed by hand (plain arrays stay fast unoptimized).
+        let mut ata = [[0.0f64; 6]; 6];
+        let mut atb = [0.0f64; 6];
+        let mut res = Vec::with_capacity(samples.len());
+        for &(x, y) in &samples {
+            let b = basis(x, y);
+            let v = f64::from(img.data[y * w + x]);
+            let fit: f64 = b.iter().zip(&coef).map(|(a, c)| a * c).sum();
+            if (v - fit).abs() > cut {
+                continue;
+            }
+            res.push((v - fit).abs());
+            for i in 0..6 {
+                for j in i..6 {
+                    ata[i][j] += b[i] * b[j];
+                }
+                atb[i] += b[i] * v;
+            }
+        }
+        let m: [[f64; 6]; 6] =
+            std::array::from_fn(|i| std::array::from_fn(|j| ata[i.min(j)][i.max(j)]));
+        if let Some(c) = solve(m, atb) {
+            coef = c;
+        }
+        res.sort_by(f64::total_cmp);
+        scatter = res.get(res.len() / 2).copied().unwrap_or(0.0) * 1.4826;
+        cut = (3.0 * scatter).max(3.0);
+    }
+    let mut bg = Vec::with_capacity(w * h);
+    for y in 0..h {
+        for x in 0..w {
+            let b = basis(x, y);
+            bg.push(b.iter().zip(&coef).map(|(a, c)| a * c).sum::<f64>() as f32);
+        }
+    }
+    (bg, scatter.max(0.5) as f32)
+}
+
+/// Solves `a x = b` by Gaussian elimination with partial pivoting; `None` when `a` is
+/// singular.
+fn solve<const N: usize>(mut a: [[f64; N]; N], mut b: [f64; N]) -> Option<[f64; N]> {
+    for col in 0..N {
+        let pivot = (col..N).max_by(|&i, &j| a[i][col].abs().total_cmp(&a[j][col].abs()))?;
+        if a[pivot][col].abs() < 1e-300 {
+            return None;
+        }
+        a.swap(col, pivot);
+        b.swap(col, pivot);
+        let top = a[col];
+        for row in col + 1..N {
+            let f = a[row][col] / top[col];
+            for (v, t) in a[row][col..].iter_mut().zip(&top[col..]) {
+                *v -= f * t;
+            }
+            b[row] -= f * b[col];
+        }
+    }
+    let mut x = [0.0; N];
+    for row in (0..N).rev() {
+        let s: f64 = (row + 1..N).map(|k| a[row][k] * x[k]).sum();
+        x[row] = (b[row] - s) / a[row][row];
+    }
+    x.iter().all(|v| v.is_finite()).then_some(x)
+}

@@ -1,0 +1,76 @@
+//! One video frame as 8-bit luma (what `input::video` decodes and the renderer
+//! draws), with the few reads the tracker needs: a pixel, a box-averaged reduction.
+
+/// A frame's luma, row by row, `width × height` bytes (0 black, 255 white).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Gray {
+    pub width: usize,
+    pub height: usize,
+    pub data: Vec<u8>,
+}
+
+impl Gray {
+    /// A frame of one level.
+    pub fn filled(width: usize, height: usize, level: u8) -> Gray {
+        Gray {
+            width,
+            height,
+            data: vec![level; width * height],
+        }
+    }
+
+    /// The level at column `x`, row `y` (both inside the frame).
+    #[inline]
+    pub fn at(&self, x: usize, y: usize) -> f32 {
+        f32::from(self.data[y * self.width + x])
+    }
+
+    /// The frame reduced `factor` times in each direction, each pixel the mean of its
+    /// block (the last partial blocks dropped), as f32 levels.
+    pub fn reduced(&self, factor: usize) -> Levels {
+        let f = factor.max(1);
+        let (w, h) = (self.width / f, self.height / f);
+        let mut out = vec![0.0f32; w * h];
+        let mut row = vec![0u32; w];
+        for by in 0..h {
+            row.iter_mut().for_each(|v| *v = 0);
+            for y in by * f..(by + 1) * f {
+                let line = &self.data[y * self.width..y * self.width + w * f];
+                for (bx, block) in line.chunks_exact(f).enumerate() {
+                    row[bx] += block.iter().map(|&v| u32::from(v)).sum::<u32>();
+                }
+            }
+            let norm = 1.0 / (f * f) as f32;
+            for (o, &s) in out[by * w..(by + 1) * w].iter_mut().zip(&row) {
+                *o = s as f32 * norm;
+            }
+        }
+        Levels {
+            width: w,
+            height: h,
+            data: out,
+        }
+    }
+}
+
+/// A reduced frame in f32 levels (see [`Gray::reduced`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Levels {
+    pub width: usize,
+    pub height: usize,
+    pub data: Vec<f32>,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reduction_averages_blocks() {
+        let mut g = Gray::filled(5, 4, 10);
+        g.data[0] = 50; // block (0, 0) of 2×2: (50 + 10 + 10 + 10) / 4 = 20
+        let r = g.reduced(2);
+        assert_eq!((r.width, r.height), (2, 2));
+        assert_eq!(r.data, vec![20.0, 10.0, 10.0, 10.0]);
+    }
+}

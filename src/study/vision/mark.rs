@@ -1,0 +1,203 @@
+//! The mark on a ball (a dot drawn on it, seen from the side circling the centre):
+//! the spot inside the visible disc that stands out most from the ball's own shading
+//! (each pixel against the mean of a box around it), then located to sub-pixel by the
+//! centroid of its contrast against the shading fitted as a plane on a ring around it,
+//! twice, the second time about the first centroid. Its standard error follows from
+//! the pixel noise through the centroid's formula.
+
+use super::circle::Outline;
+use super::gray::Gray;
+
+/// A mark found on a ball, in pixels.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Mark {
+    pub x: f64,
+    pub y: f64,
+    /// Standard error of x and of y, px.
+    pub sigma: f64,
+    /// Its contrast against the ball around it, luma levels (signed: − darker).
+    pub contrast: f64,
+}
+
+/// The mark on the ball `ball`, given the pixel noise `noise` (luma levels); `None`
+/// when no spot stands out (the mark is hidden by the rail or turned away) or it lies
+/// too near the limb or the rail to be measured against the ball's shading. The mark
+/// contrasts with the ball the other way than the ball with its surroundings (a dark
+/// dot on a light ball, a light one on a dark ball), which keeps a highlight from
+/// being taken for it.
+pub fn find(img: &Gray, ball: &Outline, noise: f64) -> Option<Mark> {
+    let c = ball.circle;
+    // The search region: inside the limb, above the rail.
+    let inner = c.r - (0.1 * c.r).max(3.0);
+    let bottom = ball.lowest - 1.0;
+    let half = ((0.12 * c.r).round() as isize).max(2);
+    let x0 = ((c.x - inner).floor() as isize).max(half);
+    let x1 = ((c.x + inner).ceil() as isize).min(img.width as isize - 1 - half);
+    let y0 = ((c.y - inner).floor() as isize).max(half);
+    let y1 = ((c.y + inner).ceil() as isize)
+        .min(bottom.floor() as isize)
+        .min(img.height as isize - 1 - half);
+    if x1 <= x0 || y1 <= y0 {
+        return None;
+    }
+    let sums = Integral::new(img, x0 - half, y0 - half, x1 + half, y1 + half);
+    let mut best = (0.0f64, 0isize, 0isize);
+    for y in y0..=y1 {
+        for x in x0..=x1 {
+            if (x as f64 - c.x).hypot(y as f64 - c.y) > inner - 1.5 * half as f64
+                || (y + half) as f64 >= bottom
+            {
+                continue;
+            }
+            let mean = sums.mean(x - half, y - half, x + half, y + half);
+            let d = f64::from(img.at(x as usize, y as usize)) - mean;
+            if -ball.polarity * d > -ball.polarity * best.0 {
+                best = (d, x, y);
+            }
+        }
+    }
+    let (peak, px, py) = best;
+    if peak.abs() < (6.0 * noise).max(10.0) {
+        return None;
+    }
+    let size = spot_radius(img, px, py, peak, half, &sums);
+    // The ring the shading is fitted on must lie on the ball, above the rail.
+    let ring = 2.2 * size + 1.5;
+    let fits = |x: f64, y: f64| (x - c.x).hypot(y - c.y) + ring < c.r - 1.0 && y + ring < bottom;
+    let mut at = (px as f64, py as f64);
+    let mut out = None;
+    for _ in 0..3 {
+        if !fits(at.0, at.1) {
+            return None;
+        }
+        let m = centroid(img, at, size, peak.signum(), noise)?;
+        at = (m.x, m.y);
+        out = Some(m);
+    }
+    out.filter(|m| fits(m.x, m.y))
+}
+
+/// The spot's radius, px: from the pixels beyond half its peak contrast near it.
+fn spot_radius(img: &Gray, px: isize, py: isize, peak: f64, half: isize, sums: &Integral) -> f64 {
+    let mut n = 0usize;
+    for y in (py - 2 * half)..=(py + 2 * half) {
+        for x in (px - 2 * half)..=(px + 2 * half) {
+            if !sums.inside(x - half, y - half, x + half, y + half) {
+                continue;
+            }
+            let d = f64::from(img.at(x as usize, y as usize))
+                - sums.mean(x - half, y - half, x + half, y + half);
+            if d * peak.signum() > 0.5 * peak.abs() {
+                n += 1;
+            }
+        }
+    }
+    ((n as f64 / std::f64::consts::PI).sqrt()).max(1.0)
+}
+
+/// The centroid of the spot's contrast around `at`: the shading fitted as a plane
+/// to the ring from 1.6 to 2.2 spot radii (+ 1 px), the weights the contrast against
+/// it within 1.4 radii (+ 1 px), signed by `sign`.
+fn centroid(img: &Gray, at: (f64, f64), size: f64, sign: f64, noise: f64) -> Option<Mark> {
+    let (inner, ring0, ring1) = (1.4 * size + 1.0, 1.6 * size + 1.0, 2.2 * size + 1.5);
+    let reach = ring1.ceil() as isize;
+    let (cx, cy) = (at.0.round() as isize, at.1.round() as isize);
+    if cx - reach < 0
+        || cy - reach < 0
+        || cx + reach >= img.width as isize
+        || cy + reach >= img.height as isize
+    {
+        return None;
+    }
+    let mut ata = nalgebra::Matrix3::<f64>::zeros();
+    let mut atb = nalgebra::Vector3::<f64>::zeros();
+    for y in (cy - reach)..=(cy + reach) {
+        for x in (cx - reach)..=(cx + reach) {
+            let (dx, dy) = (x as f64 - at.0, y as f64 - at.1);
+            let r = dx.hypot(dy);
+            if (ring0..=ring1).contains(&r) {
+                let b = nalgebra::Vector3::new(1.0, dx, dy);
+                ata += b * b.transpose();
+                atb += b * f64::from(img.at(x as usize, y as usize));
+            }
+        }
+    }
+    let plane = ata.try_inverse()? * atb;
+    let (mut sw, mut sx, mut sy) = (0.0, 0.0, 0.0);
+    let mut pts = Vec::new();
+    for y in (cy - reach)..=(cy + reach) {
+        for x in (cx - reach)..=(cx + reach) {
+            let (dx, dy) = (x as f64 - at.0, y as f64 - at.1);
+            if dx.hypot(dy) > inner {
+                continue;
+            }
+            let shade = plane[0] + plane[1] * dx + plane[2] * dy;
+            let w = sign * (f64::from(img.at(x as usize, y as usize)) - shade);
+            sw += w;
+            sx += w * x as f64;
+            sy += w * y as f64;
+            pts.push((x as f64, y as f64));
+        }
+    }
+    if sw <= 0.0 {
+        return None;
+    }
+    let (mx, my) = (sx / sw, sy / sw);
+    let spread: f64 = pts
+        .iter()
+        .map(|(x, y)| 0.5 * ((x - mx).powi(2) + (y - my).powi(2)))
+        .sum();
+    Some(Mark {
+        x: mx,
+        y: my,
+        sigma: noise.max(0.5) * spread.sqrt() / sw,
+        contrast: sign * sw / (std::f64::consts::PI * size * size),
+    })
+}
+
+/// Sums of a box of the frame for box means in O(1).
+struct Integral {
+    x0: isize,
+    y0: isize,
+    w: usize,
+    h: usize,
+    sum: Vec<f64>,
+}
+
+impl Integral {
+    /// Over columns `x0..=x1`, rows `y0..=y1` (clipped to the frame).
+    fn new(img: &Gray, x0: isize, y0: isize, x1: isize, y1: isize) -> Integral {
+        let x0 = x0.max(0);
+        let y0 = y0.max(0);
+        let x1 = x1.min(img.width as isize - 1);
+        let y1 = y1.min(img.height as isize - 1);
+        let (w, h) = ((x1 - x0 + 1).max(0) as usize, (y1 - y0 + 1).max(0) as usize);
+        let mut sum = vec![0.0; (w + 1) * (h + 1)];
+        for y in 0..h {
+            let mut row = 0.0;
+            for x in 0..w {
+                row += f64::from(img.at(x0 as usize + x, y0 as usize + y));
+                sum[(y + 1) * (w + 1) + x + 1] = sum[y * (w + 1) + x + 1] + row;
+            }
+        }
+        Integral { x0, y0, w, h, sum }
+    }
+
+    fn inside(&self, x0: isize, y0: isize, x1: isize, y1: isize) -> bool {
+        x0 >= self.x0
+            && y0 >= self.y0
+            && x1 < self.x0 + self.w as isize
+            && y1 < self.y0 + self.h as isize
+    }
+
+    /// The mean over columns `x0..=x1`, rows `y0..=y1`, clipped to the box.
+    fn mean(&self, x0: isize, y0: isize, x1: isize, y1: isize) -> f64 {
+        let cx = |x: isize| ((x - self.x0).clamp(0, self.w as isize)) as usize;
+        let cy = |y: isize| ((y - self.y0).clamp(0, self.h as isize)) as usize;
+        let (a, b) = (cx(x0), cx(x1 + 1));
+        let (c, d) = (cy(y0), cy(y1 + 1));
+        let n = ((b - a) * (d - c)).max(1) as f64;
+        let s = |x: usize, y: usize| self.sum[y * (self.w + 1) + x];
+        (s(b, d) - s(a, d) - s(b, c) + s(a, c)) / n
+    }
+}

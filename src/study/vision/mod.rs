@@ -1,0 +1,20 @@
+//! Tracking the balls in a video of the experiment, and videos to test it: frames
+//! as luma (`gray`), a coarse look for ball-shaped blobs (`detect`), each ball's
+//! outline fitted to sub-pixel accuracy on its visible edge (`circle`), its mark
+//! (`mark`), both followed through the frames (`tracker`), turned into metres and
+//! seconds along the groove (`tracks`) and written as a Tracker-style file
+//! (`write`); and synthetic videos of exactly solved scenes (`render`). Pure: the
+//! frames come from `input::video`.
+
+pub mod circle;
+pub mod detect;
+pub mod gray;
+pub mod mark;
+pub mod render;
+pub mod tracker;
+pub mod tracks;
+pub mod write;
+
+pub use gray::Gray;
+pub use tracker::Tracker;
+pub use tracks::{Tracks, TracksError, tracks};

@@ -1,0 +1,270 @@
+//! From pixels to metres: the scale from the balls' fitted radius over all frames
+//! and the known radius R (or given), the groove's direction from the balls' paths
+//! (a straight line through every centre: a tilted phone turns it), and the tracks
+//! turned to it, x along the groove toward the right ball, y up, in metres and
+//! seconds; then written as a Tracker-style multi-track text file (which
+//! `input::data` reads) or as JSON.
+
+use serde::Serialize;
+
+use super::tracker::{LeftOut, Tracker, median};
+
+/// Why tracked frames give no tracks.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum TracksError {
+    #[error(
+        "no ball found in {frames} frames (a ball is a round blob contrasting with the background, at least {min_radius:.0} px in radius)"
+    )]
+    NoBall { frames: usize, min_radius: f64 },
+    #[error(
+        "more than two balls in {crowded} of {frames} frames, expected the two colliding balls (or one)"
+    )]
+    TooMany { crowded: usize, frames: usize },
+}
+
+/// How uncertain the place of a ball's edge is, px, whatever the number of frames:
+/// the gradient's peak sits up to ~0.05 px inside the outline where the ball's
+/// shading rises steeply at its limb (the project's shaded renders: 0.02 px for a
+/// flat ball, 0.06 px for a shaded one), and that carries into the radius and so
+/// the scale.
+pub const EDGE_SYSTEMATIC: f64 = 0.05;
+
+/// How pixels become metres.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Calibration {
+    /// Pixels per metre, and its standard error.
+    pub px_per_m: f64,
+    pub px_per_m_sigma: f64,
+    /// True when given (`--scale`), false when from the fitted radius.
+    pub scale_given: bool,
+    /// The balls' median fitted radius, px, and its standard error (the frames'
+    /// scatter and [`EDGE_SYSTEMATIC`]).
+    pub radius_px: f64,
+    pub radius_px_sigma: f64,
+    /// The radius R the scale comes from, m.
+    pub radius_m: f64,
+    /// The groove's direction in the picture, degrees (positive: turned clockwise,
+    /// the right end lower), and its standard error; 0 when the paths are too short
+    /// to tell (`groove_found` false).
+    pub groove_deg: f64,
+    pub groove_deg_sigma: f64,
+    pub groove_found: bool,
+}
+
+/// One ball's tracks, metres (NaN where left out).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct BallTrack {
+    /// "left" or "right".
+    pub name: &'static str,
+    pub x: Vec<f64>,
+    pub y: Vec<f64>,
+    /// Standard error of x and of y, m.
+    pub sigma: Vec<f64>,
+    pub mark_x: Vec<f64>,
+    pub mark_y: Vec<f64>,
+    pub mark_sigma: Vec<f64>,
+    /// Frames left out: not seen, touching the other ball, poor outline.
+    pub unseen: usize,
+    pub merged: usize,
+    pub poor: usize,
+    /// Frames with the ball but not its mark (hidden by the rail or too near it).
+    pub mark_missing: usize,
+}
+
+/// Both balls' tracks (or one ball's), the times of the frames and the calibration.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Tracks {
+    pub t: Vec<f64>,
+    pub balls: Vec<BallTrack>,
+    pub calibration: Calibration,
+}
+
+/// The tracks of `tracker`'s frames, shown at `times` (s, one per frame), for balls
+/// of radius `radius` (m); `scale` (px/m) overrides the scale from the radius.
+pub fn tracks(
+    tracker: &Tracker,
+    times: Vec<f64>,
+    radius: f64,
+    scale: Option<f64>,
+) -> Result<Tracks, TracksError> {
+    let c = &tracker.counts;
+    if c.crowded * 2 > c.frames {
+        return Err(TracksError::TooMany {
+            crowded: c.crowded,
+            frames: c.frames,
+        });
+    }
+    // A slot seen in too few frames is a passing blob, not a ball.
+    let seen = |s: usize| tracker.frames.iter().filter(|f| f[s].is_ok()).count();
+    let enough = (tracker.frames.len() / 10).max(3);
+    let mut slots: Vec<usize> = (0..2).filter(|&s| seen(s) >= enough).collect();
+    if slots.is_empty() {
+        return Err(TracksError::NoBall {
+            frames: c.frames,
+            min_radius: tracker.min_radius,
+        });
+    }
+    let centres: Vec<Vec<[f64; 2]>> = (0..2).map(|s| centres_of(tracker, s)).collect();
+    let (angle, angle_se, found) =
+        groove(&slots.iter().map(|&s| &centres[s][..]).collect::<Vec<_>>());
+    let (u, n) = ((angle.cos(), angle.sin()), (angle.sin(), -angle.cos()));
+    let along = |p: &[f64; 2]| p[0] * u.0 + p[1] * u.1;
+    let mean_along = |s: usize| centres[s].iter().map(along).sum::<f64>() / centres[s].len() as f64;
+    slots.sort_by(|a, b| mean_along(*a).total_cmp(&mean_along(*b)));
+    let radii = tracker.radii();
+    let r_px = median(radii).unwrap_or(f64::NAN);
+    let mut dev: Vec<f64> = radii.iter().map(|r| (r - r_px).abs()).collect();
+    dev.sort_by(f64::total_cmp);
+    let r_stat = 1.4826 * dev[dev.len() / 2] * 1.2533 / (radii.len() as f64).sqrt();
+    let r_se = r_stat.hypot(EDGE_SYSTEMATIC);
+    let px_per_m = scale.unwrap_or(r_px / radius);
+    let calibration = Calibration {
+        px_per_m,
+        px_per_m_sigma: if scale.is_some() { 0.0 } else { r_se / radius },
+        scale_given: scale.is_some(),
+        radius_px: r_px,
+        radius_px_sigma: r_se,
+        radius_m: radius,
+        groove_deg: angle.to_degrees(),
+        groove_deg_sigma: angle_se.to_degrees(),
+        groove_found: found,
+    };
+    // The origin: the mean of every centre, so y is about 0 along the groove.
+    let all: Vec<&[f64; 2]> = slots.iter().flat_map(|&s| centres[s].iter()).collect();
+    let o = (
+        all.iter().map(|p| p[0]).sum::<f64>() / all.len() as f64,
+        all.iter().map(|p| p[1]).sum::<f64>() / all.len() as f64,
+    );
+    let to_m = |x: f64, y: f64| {
+        let (dx, dy) = (x - o.0, y - o.1);
+        (
+            (dx * u.0 + dy * u.1) / px_per_m,
+            (dx * n.0 + dy * n.1) / px_per_m,
+        )
+    };
+    let names = names_of(&slots, &centres, along);
+    let balls = slots
+        .iter()
+        .zip(names)
+        .map(|(&s, name)| ball_track(tracker, s, name, &to_m, px_per_m))
+        .collect();
+    Ok(Tracks {
+        t: times,
+        balls,
+        calibration,
+    })
+}
+
+/// The names of the balls in `slots` (left to right): with one ball, the side it
+/// comes from (it moves away from it at first).
+fn names_of(
+    slots: &[usize],
+    centres: &[Vec<[f64; 2]>],
+    along: impl Fn(&[f64; 2]) -> f64,
+) -> Vec<&'static str> {
+    if slots.len() == 2 {
+        return vec!["left", "right"];
+    }
+    let c = &centres[slots[0]];
+    let n = (c.len() / 4).max(2).min(c.len());
+    let moves = along(&c[n - 1]) - along(&c[0]);
+    vec![if moves >= 0.0 { "left" } else { "right" }]
+}
+
+fn centres_of(tracker: &Tracker, slot: usize) -> Vec<[f64; 2]> {
+    tracker
+        .frames
+        .iter()
+        .filter_map(|f| f[slot].as_ref().ok())
+        .map(|fix| [fix.outline.circle.x, fix.outline.circle.y])
+        .collect()
+}
+
+/// The groove's angle (rad, image y down: positive turns the right end down), its
+/// standard error, and whether the paths tell it: the principal axis of the centres,
+/// each ball's path about its own mean (two balls in one groove run on one line, but
+/// a path's own direction is what each tells).
+fn groove(paths: &[&[[f64; 2]]]) -> (f64, f64, bool) {
+    let (mut sxx, mut sxy, mut syy, mut n) = (0.0, 0.0, 0.0, 0usize);
+    for p in paths {
+        if p.is_empty() {
+            continue;
+        }
+        let mx = p.iter().map(|q| q[0]).sum::<f64>() / p.len() as f64;
+        let my = p.iter().map(|q| q[1]).sum::<f64>() / p.len() as f64;
+        for q in p.iter() {
+            sxx += (q[0] - mx).powi(2);
+            sxy += (q[0] - mx) * (q[1] - my);
+            syy += (q[1] - my).powi(2);
+        }
+        n += p.len();
+    }
+    let angle = 0.5 * (2.0 * sxy).atan2(sxx - syy);
+    let (c, s) = (angle.cos(), angle.sin());
+    let spread = sxx * c * c + 2.0 * sxy * c * s + syy * s * s;
+    let across = (sxx * s * s - 2.0 * sxy * c * s + syy * c * c).max(0.0);
+    // A path under 5 px long, or no longer than it is wide, tells no direction.
+    if n < 3 || spread < 25.0 * n as f64 || spread < 4.0 * across {
+        return (0.0, 0.0, false);
+    }
+    let se = (across / (n as f64 - 2.0).max(1.0) / spread).sqrt();
+    (angle, se, true)
+}
+
+/// Slot `slot` of `tracker` as a [`BallTrack`] named `name`, through `to_m`.
+fn ball_track(
+    tracker: &Tracker,
+    slot: usize,
+    name: &'static str,
+    to_m: &impl Fn(f64, f64) -> (f64, f64),
+    px_per_m: f64,
+) -> BallTrack {
+    let mut b = BallTrack {
+        name,
+        x: vec![],
+        y: vec![],
+        sigma: vec![],
+        mark_x: vec![],
+        mark_y: vec![],
+        mark_sigma: vec![],
+        unseen: 0,
+        merged: 0,
+        poor: 0,
+        mark_missing: 0,
+    };
+    let nan = f64::NAN;
+    for f in &tracker.frames {
+        let (x, y, s, mx, my, ms) = match &f[slot] {
+            Ok(fix) => {
+                let c = fix.outline.circle;
+                let (x, y) = to_m(c.x, c.y);
+                let (mx, my, ms) = match fix.mark {
+                    Some(m) => {
+                        let (mx, my) = to_m(m.x, m.y);
+                        (mx, my, m.sigma / px_per_m)
+                    }
+                    None => {
+                        b.mark_missing += 1;
+                        (nan, nan, nan)
+                    }
+                };
+                (x, y, fix.sigma / px_per_m, mx, my, ms)
+            }
+            Err(why) => {
+                match why {
+                    LeftOut::Unseen => b.unseen += 1,
+                    LeftOut::Merged => b.merged += 1,
+                    LeftOut::Poor => b.poor += 1,
+                }
+                (nan, nan, nan, nan, nan, nan)
+            }
+        };
+        b.x.push(x);
+        b.y.push(y);
+        b.sigma.push(s);
+        b.mark_x.push(mx);
+        b.mark_y.push(my);
+        b.mark_sigma.push(ms);
+    }
+    b
+}

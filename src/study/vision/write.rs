@@ -1,0 +1,56 @@
+//! Tracks as text: a Tracker-style multi-track data file (`#multi:`, the tracks'
+//! names, then `t x y x y …` in metres and seconds; empty cells where a point is left
+//! out), headed by `#` comment lines saying how it was made, which `input::data`
+//! skips but for `# scene radius = …`, the R the scale comes from.
+
+use std::fmt::Write as _;
+
+use super::tracks::Tracks;
+
+/// The tracks as a Tracker-style multi-track file, the `notes` as comment lines
+/// first. Per ball: its centre ("left ball") then its mark ("left mark").
+pub fn tracker_text(tracks: &Tracks, notes: &[String]) -> String {
+    let mut out = String::new();
+    for n in notes {
+        for line in n.lines() {
+            let _ = writeln!(out, "# {line}");
+        }
+    }
+    let _ = writeln!(
+        out,
+        "# scene radius = {}",
+        crate::settings::units::show_exact(
+            tracks.calibration.radius_m,
+            crate::settings::units::Dimension::Length
+        )
+    );
+    out.push_str("#multi:\n");
+    let mut names = String::new();
+    let mut header = String::from("t");
+    for b in &tracks.balls {
+        let _ = write!(names, "\t{} ball\t\t{} mark\t", b.name, b.name);
+        header.push_str("\tx\ty\tx\ty");
+    }
+    out.push_str(&names);
+    out.push('\n');
+    out.push_str(&header);
+    out.push('\n');
+    let cell = |v: f64| {
+        if v.is_finite() {
+            format!("{v:.6E}")
+        } else {
+            String::new()
+        }
+    };
+    for (k, t) in tracks.t.iter().enumerate() {
+        out.push_str(&cell(*t));
+        for b in &tracks.balls {
+            for v in [b.x[k], b.y[k], b.mark_x[k], b.mark_y[k]] {
+                out.push('\t');
+                out.push_str(&cell(v));
+            }
+        }
+        out.push('\n');
+    }
+    out
+}

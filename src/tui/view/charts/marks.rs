@@ -1,0 +1,86 @@
+//! What the charts mark beside the curves: the measured series with their error
+//! bars, and the line fit's lines and window.
+
+use std::sync::Arc;
+
+use crate::lab::MeasuredPoints;
+use crate::study::fit::LineFit;
+use crate::tui::plot::{Draw, Series, VLine};
+use crate::tui::theme::Theme;
+
+/// The measured v_cm and v_t as marks, with each derived point's ±1σ (a position
+/// track's local fits) as a vertical run of dots under the point's own glyph; the
+/// points are the snapshot's, shared, not copied per frame.
+pub(super) fn measured_velocities(m: &MeasuredPoints, theme: &Theme) -> Vec<Series> {
+    let mut series = Vec::new();
+    for (n, bars) in [&m.v_cm_bars, &m.v_t_bars].into_iter().enumerate() {
+        if let Some(bars) = bars {
+            series.push(Series {
+                // One legend entry for both series' bars.
+                name: if n == 0 {
+                    // σ has no ASCII letter: "sd" (standard deviation), not "s".
+                    if theme.glyphs.ascii {
+                        "+-1 sd"
+                    } else {
+                        "±1σ"
+                    }
+                    .to_string()
+                } else {
+                    String::new()
+                },
+                points: Arc::clone(bars),
+                style: theme.measured,
+                // Not ':' or '|': the event lines use those.
+                glyph: if theme.glyphs.ascii { "!" } else { "¦" },
+                draw: Draw::Points,
+            });
+        }
+    }
+    series.push(Series {
+        name: "measured v_cm".into(),
+        points: Arc::clone(&m.v_cm),
+        style: theme.measured,
+        glyph: if theme.glyphs.ascii { "x" } else { "×" },
+        draw: Draw::Points,
+    });
+    // A track without a rim mark measures no v_t: no legend entry claims one.
+    if !m.v_t.is_empty() {
+        series.push(Series {
+            name: "measured v_t".into(),
+            points: Arc::clone(&m.v_t),
+            style: theme.measured,
+            glyph: if theme.glyphs.ascii { "o" } else { "+" },
+            draw: Draw::Points,
+        });
+    }
+    series
+}
+
+/// The paper's straight lines over the fit window, and the window's ends.
+pub(super) fn line_fit_marks(l: &LineFit, theme: &Theme) -> (Vec<Series>, Vec<VLine>) {
+    let lines = l
+        .lines
+        .iter()
+        .zip(["fit lines", ""])
+        .map(|(line, name)| Series {
+            name: name.to_string(),
+            points: [l.from, l.to]
+                .iter()
+                .map(|&t| (t, line.intercept + line.slope * t))
+                .collect(),
+            style: theme.cursor,
+            glyph: "-",
+            draw: Draw::Line,
+        })
+        .collect();
+    let ends = [(l.from, "from"), (l.to, "to")]
+        .into_iter()
+        .map(|(t, label)| VLine {
+            x: t,
+            label: Some(label.to_string()),
+            style: theme.cursor,
+            priority: 2,
+        })
+        .collect();
+    (lines, ends)
+}

@@ -1,0 +1,91 @@
+//! The predict popup (key `y`): the question before the impact, with its three
+//! answers; a click on an answer answers (the Forces view explains the outcome).
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Clear, Paragraph, Widget, Wrap};
+
+use super::panel::block;
+use crate::physics::derived::Regime;
+use crate::settings::units::{Dimension, significant};
+use crate::tui::app::App;
+use crate::tui::theme::Theme;
+use crate::tui::vocabulary::ANSWERS;
+
+/// Lengths are shown in their display unit.
+const LENGTH: Dimension = Dimension::Length;
+
+pub(super) fn short_answer(r: Regime) -> &'static str {
+    match r {
+        Regime::Depart => "move apart",
+        Regime::Rest => "come to rest",
+        Regime::Recollide => "come back",
+    }
+}
+
+fn answer_text(r: Regime) -> &'static str {
+    match r {
+        Regime::Depart => "they move apart",
+        Regime::Rest => "they come to rest",
+        Regime::Recollide => "they come back and collide again",
+    }
+}
+
+/// Where the question of `lines` lines is drawn on a screen of `area`.
+fn question_rect(area: Rect, lines: usize) -> Rect {
+    let w = 52.min(area.width.saturating_sub(2));
+    let h = (lines as u16 + 4).min(area.height);
+    Rect {
+        x: area.x + (area.width - w) / 2,
+        y: area.y + (area.height - h) / 2,
+        width: w,
+        height: h,
+    }
+}
+
+/// The answer (its key) on screen cell (`column`, `row`) of the question on a screen
+/// of `area`, if one is there (what a click answers): the answers are its 3rd to 5th
+/// lines, none of them wrapped.
+pub fn answer_at(area: Rect, column: u16, row: u16) -> Option<char> {
+    // The title, a blank line, the answers, a blank line, the note.
+    let rect = question_rect(area, ANSWERS.len() + 4);
+    let inside = column > rect.x && column + 1 < rect.right();
+    let i = usize::from(row.checked_sub(rect.y + 3)?);
+    ANSWERS.get(i).filter(|_| inside).map(|(key, _)| *key)
+}
+
+/// The question before the impact (Mode::Predict).
+pub fn question(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
+    let g = theme.glyphs;
+    let mut lines = vec![
+        Line::styled("After the impact, what will the balls do?", theme.title),
+        Line::from(""),
+    ];
+    for (key, r) in ANSWERS {
+        lines.push(Line::from(vec![
+            Span::styled(format!(" {key} "), theme.key),
+            Span::styled(answer_text(r), theme.text),
+        ]));
+    }
+    lines.push(Line::from(""));
+    let b = if app.hide.derived() {
+        "b is hidden: look at the front view".to_string()
+    } else {
+        format!(
+            "b = {}{}",
+            significant(LENGTH.to_display(app.lab.scene.width), 3),
+            LENGTH.suffix()
+        )
+    };
+    lines.push(Line::styled(
+        g.text(&format!("{b}; then it plays and explains. Esc cancels.")),
+        theme.dim,
+    ));
+    let rect = question_rect(area, lines.len());
+    Clear.render(rect, buf);
+    Paragraph::new(lines)
+        .wrap(Wrap { trim: false })
+        .block(block(" Predict ", theme))
+        .render(rect, buf);
+}

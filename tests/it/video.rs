@@ -1,0 +1,491 @@
+//! Tracking balls in videos against truth: synthetic videos of exactly solved scenes
+//! (`study::vision::render`), tracked in memory, from a folder of PNG frames and
+//! from an mp4 encoded with ffmpeg; the recovered centres and marks against the exact
+//! positions, μ_k fitted from the tracks, and bad inputs refused.
+
+use groovelab::physics::scene::Scene;
+use groovelab::study::preset::Preset;
+use groovelab::study::vision::Tracker;
+use groovelab::study::vision::render::{Film, Look};
+
+fn scene(name: &str) -> Scene {
+    Preset::load(name).unwrap().spec.resolve().unwrap().0
+}
+
+/// A tracked point and the true one, px.
+type Pair = ((f64, f64), (f64, f64));
+
+/// RMS distance of tracked points from the truth, px.
+fn rms(pairs: &[Pair]) -> f64 {
+    let s: f64 = pairs
+        .iter()
+        .map(|(a, b)| (a.0 - b.0).powi(2) + (a.1 - b.1).powi(2))
+        .sum();
+    (s / pairs.len() as f64).sqrt()
+}
+
+/// The frames `frames` of `film` tracked in memory: centre and mark pairs
+/// (tracked, true).
+fn tracked(film: &Film, frames: impl Iterator<Item = usize>) -> (Vec<Pair>, Vec<Pair>, Tracker) {
+    let mut tracker = Tracker::new(8.0);
+    let mut ks = Vec::new();
+    for k in frames {
+        tracker.push(&film.gray(k));
+        ks.push(k);
+    }
+    let (mut centres, mut marks) = (Vec::new(), Vec::new());
+    for (fixes, &k) in tracker.frames.iter().zip(&ks) {
+        let truth = film.truth(k);
+        for (slot, fix) in fixes.iter().enumerate() {
+            let Ok(fix) = fix else { continue };
+            let c = fix.outline.circle;
+            // The slot's ball: the truth nearest to it.
+            let t = truth
+                .iter()
+                .min_by(|a, b| {
+                    let da = (a.centre.0 - c.x).hypot(a.centre.1 - c.y);
+                    let db = (b.centre.0 - c.x).hypot(b.centre.1 - c.y);
+                    da.total_cmp(&db)
+                })
+                .unwrap();
+            let _ = slot;
+            centres.push(((c.x, c.y), t.centre));
+            if let Some(m) = fix.mark {
+                marks.push(((m.x, m.y), t.mark));
+            }
+        }
+    }
+    (centres, marks, tracker)
+}
+
+#[test]
+fn centres_and_marks_of_a_720p_clip_within_the_targets() {
+    let s = scene("paper-b4.9");
+    let film = Film::new(&s, Look::default(), 0.5);
+    let (centres, marks, tracker) = tracked(&film, (0..50).step_by(7));
+    // Every frame's two balls found (none touch in these frames), most marks.
+    assert_eq!(centres.len(), 2 * tracker.frames.len());
+    assert!(marks.len() >= centres.len() / 2, "{} marks", marks.len());
+    assert!(rms(&centres) <= 0.2);
+    assert!(rms(&marks) <= 0.5);
+}
+
+// ---- Files: a folder of PNG frames, an mp4 --------------------------------------------
+
+use std::path::{Path, PathBuf};
+use std::sync::OnceLock;
+
+use groovelab::input::video::write::{self, Encoding};
+use serde_json::Value;
+
+use crate::common::groovelab;
+
+/// A small clip: 640×360 at 1000 px/m (R = 27.5 px), 100 frames/s, t = −0.15 … 0.35 s.
+fn small_look() -> Look {
+    Look {
+        width: 640,
+        height: 360,
+        px_per_m: 1000.0,
+        origin: (320.0, 170.0),
+        from: -0.15,
+        ..Look::default()
+    }
+}
+
+const FRAMES: usize = 50;
+
+/// The small clip's RGB frames, rendered once for all tests.
+fn small_frames() -> &'static [Vec<u8>] {
+    static FRAMES_RGB: OnceLock<Vec<Vec<u8>>> = OnceLock::new();
+    FRAMES_RGB.get_or_init(|| {
+        let film = Film::new(&scene("paper-b4.9"), small_look(), 0.4);
+        (0..FRAMES).map(|k| film.rgb(k)).collect()
+    })
+}
+
+fn dir(test: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("groovelab-video-{}-{test}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// Writes `frames` as `frame0001.png` … into `dir`, leaving out the numbers `skip`.
+fn write_pngs(dir: &Path, frames: &[Vec<u8>], look: &Look, skip: &[usize]) {
+    for (k, f) in frames.iter().enumerate() {
+        if !skip.contains(&k) {
+            let p = dir.join(format!("frame{:04}.png", k + 1));
+            write::png(&p, f, look.width, look.height).unwrap();
+        }
+    }
+}
+
+/// True when ffmpeg is installed. Under CI (CI=true) its absence fails the test that
+/// asks: CI installs it, so a missing ffmpeg there is a broken setup, not a skip.
+fn ffmpeg() -> bool {
+    let ok = std::process::Command::new("ffmpeg")
+        .arg("-version")
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if !ok {
+        assert!(
+            std::env::var("CI").is_err(),
+            "ffmpeg is not installed, and CI must have it (.ci/run installs it)"
+        );
+        eprintln!("SKIPPED: ffmpeg is not installed (apt-get install ffmpeg); this test needs it");
+    }
+    ok
+}
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    let out = groovelab(args);
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+/// The model fit's μ_k and its ± from `fit --format json` of a tracks file.
+fn fitted_mu(tracks: &Path) -> (f64, f64, Value) {
+    let (code, out, err) = run(&[
+        "fit",
+        "--data",
+        tracks.to_str().unwrap(),
+        "--radius",
+        "2.75cm",
+        "--width",
+        "4.9cm",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let j: Value = serde_json::from_str(&out).unwrap();
+    let mu = &j["model_fit"];
+    (
+        mu["mu"].as_f64().unwrap_or(f64::NAN),
+        mu["mu_se"].as_f64().unwrap_or(f64::NAN),
+        j,
+    )
+}
+
+#[test]
+fn a_folder_of_frames_tracked_and_fitted_gives_mu_k_within_its_uncertainty() {
+    let d = dir("folder");
+    let look = small_look();
+    // Frames 20 and 21 missing: a gap said, the times kept.
+    write_pngs(&d, small_frames(), &look, &[20, 21]);
+    let out = d.join("tracks.txt");
+    let (code, stdout, err) = run(&[
+        "track",
+        d.to_str().unwrap(),
+        "--fps",
+        "100",
+        "--radius",
+        "2.75cm",
+        "--output",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    eprintln!("{stdout}");
+    assert!(
+        stdout.contains("frame rate 100 frames/s: given (--fps)"),
+        "{stdout}"
+    );
+    assert!(
+        stdout.contains("frames missing from the folder: 21–22"),
+        "{stdout}"
+    );
+    let (mu, se, j) = fitted_mu(&out);
+    // The fit's own ± and the scale's (μ_k goes as 1/scale), as the notes say.
+    let scale: Vec<f64> = stdout
+        .lines()
+        .find_map(|l| l.strip_prefix("scale "))
+        .unwrap()
+        .split_whitespace()
+        .take(3)
+        .filter_map(|w| w.parse().ok())
+        .collect();
+    let sigma = se.hypot(mu * scale[1] / scale[0]);
+    assert!(
+        (mu - 0.17).abs() <= 2.0 * sigma && sigma < 0.002,
+        "μ_k = {mu} ± {sigma}"
+    );
+    assert_eq!(j["model_fit"]["regime_observed"], "recollide");
+    assert_eq!(j["model_fit"]["regime_predicted"], "recollide");
+}
+
+/// The small clip's first `frames` encoded as an mp4 (H.264, crf 18: lossy) in
+/// `dir`, its container at `container_fps`, with `metadata`.
+fn write_mp4(
+    dir: &Path,
+    name: &str,
+    container_fps: f64,
+    metadata: &[(&str, &str)],
+    frames: usize,
+) -> PathBuf {
+    let look = small_look();
+    let path = dir.join(name);
+    let enc = Encoding {
+        width: look.width,
+        height: look.height,
+        fps: container_fps,
+        crf: 18,
+        metadata: metadata
+            .iter()
+            .map(|(k, v)| (k.to_string(), v.to_string()))
+            .collect(),
+    };
+    write::video(&path, &enc, small_frames()[..frames].iter().cloned()).unwrap();
+    path
+}
+
+#[test]
+fn an_mp4_is_tracked_with_its_rate_and_read_by_fit() {
+    if !ffmpeg() {
+        return;
+    }
+    let d = dir("mp4");
+    let clip = write_mp4(&d, "clip.mp4", 100.0, &[], FRAMES);
+    let (code, text, err) = run(&["track", clip.to_str().unwrap(), "--radius", "2.75cm"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        text.contains("# frame rate 100 frames/s: the container's"),
+        "{text}"
+    );
+    assert!(
+        text.contains("#multi:\n\tleft ball\t\tleft mark\t\tright ball\t\tright mark\t\nt\tx\ty"),
+        "{text}"
+    );
+    let tracks = d.join("clip.txt");
+    std::fs::write(&tracks, &text).unwrap();
+    let (mu, se, _) = fitted_mu(&tracks);
+    // Lossy compression: μ_k still within 0.01 of the truth.
+    assert!((mu - 0.17).abs() < 0.01 && se < 0.01, "μ_k = {mu} ± {se}");
+}
+
+#[test]
+fn a_slow_motion_file_is_read_at_its_capture_rate_and_fps_overrides_it() {
+    if !ffmpeg() {
+        return;
+    }
+    let d = dir("slowmo");
+    // A phone's slow motion: 100 frames/s captured, played at 25.
+    let clip = write_mp4(
+        &d,
+        "slow.mp4",
+        25.0,
+        &[("com.android.capture.fps", "100.000000")],
+        12,
+    );
+    let (code, text, err) = run(&["track", clip.to_str().unwrap(), "--radius", "2.75cm"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        text.contains("# frame rate 100 frames/s: the slow-motion capture rate in the file's metadata (com.android.capture.fps); the container says 25"),
+        "{text}"
+    );
+    // --fps wins; JSON gives the tracks frame by frame and how they were found.
+    let (code, json, err) = run(&[
+        "track",
+        clip.to_str().unwrap(),
+        "--fps",
+        "50",
+        "--radius",
+        "2.75cm",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    let j: Value = serde_json::from_str(&json).unwrap();
+    assert_eq!(j["frame_rate"], 50.0);
+    assert_eq!(j["frame_rate_source"], "given");
+    assert_eq!(j["container_frame_rate"], 25.0);
+    assert_eq!(j["frames"], 12);
+    assert_eq!(j["t"][11], 11.0 / 50.0);
+    let balls = j["balls"].as_array().unwrap();
+    assert_eq!(balls.len(), 2);
+    assert_eq!(
+        (balls[0]["name"].as_str(), balls[1]["name"].as_str()),
+        (Some("left"), Some("right"))
+    );
+    // Metres do not depend on the rate: the left ball rolls v0 × 1/100 s (the true
+    // frame spacing) from one frame to the next.
+    let x = &balls[0]["x"];
+    let step = x[1].as_f64().unwrap() - x[0].as_f64().unwrap();
+    assert!((step - 0.7928 / 100.0).abs() < 2e-4, "{step} m per frame");
+    let px = j["calibration"]["px_per_m"].as_f64().unwrap();
+    assert!((px - 1000.0).abs() < 5.0, "{px} px/m");
+    assert!(j["calibration"]["groove_deg"].as_f64().unwrap().abs() < 0.05);
+}
+
+#[test]
+fn one_ball_in_view_is_tracked_and_named() {
+    let d = dir("one");
+    let look = Look {
+        both: false,
+        ..small_look()
+    };
+    let film = Film::new(&scene("paper-b4.9"), look, 0.4);
+    let frames: Vec<Vec<u8>> = (0..12).map(|k| film.rgb(k)).collect();
+    write_pngs(&d, &frames, &look, &[]);
+    let (code, text, err) = run(&["track", d.to_str().unwrap(), "--fps", "100"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        text.contains("one ball in view: tracked as the left ball"),
+        "{text}"
+    );
+    assert!(
+        text.contains("R = 2.75 cm (preset paper-b4.9; give --radius)"),
+        "{text}"
+    );
+    assert!(
+        text.contains("#multi:\n\tleft ball\t\tleft mark\t\nt\tx\ty\tx\ty\n"),
+        "{text}"
+    );
+}
+
+/// `track` refuses `path` with one `error:` line containing `what`, exit 2, and
+/// writes nothing to `--output`.
+fn refused(path: &Path, extra: &[&str], what: &str) {
+    let out = path.with_extension("out.txt");
+    let mut args = vec![
+        "track",
+        path.to_str().unwrap(),
+        "--output",
+        out.to_str().unwrap(),
+    ];
+    args.extend_from_slice(extra);
+    let (code, stdout, err) = run(&args);
+    assert_eq!(code, 2, "{path:?}: {stdout}{err}");
+    assert!(stdout.is_empty(), "{stdout}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(
+        err.starts_with("error: ") && err.contains(what),
+        "{path:?}: {err}"
+    );
+    assert!(!out.exists(), "{out:?} written");
+}
+
+#[test]
+fn frames_without_a_ball_or_with_three_are_refused() {
+    let look = small_look();
+    let film = Film::new(&scene("paper-b4.9"), look, 0.4);
+    // No ball: the empty groove.
+    let empty = dir("empty");
+    let mut frames: Vec<Vec<u8>> = (0..6).map(|k| film.rgb(k)).collect();
+    let bg_only: Vec<Vec<u8>> = frames
+        .iter()
+        .map(|f| {
+            // The background's column at the far left, copied across: no balls.
+            let mut g = f.clone();
+            for y in 0..look.height {
+                for x in 0..look.width {
+                    for c in 0..3 {
+                        g[(y * look.width + x) * 3 + c] = f[(y * look.width + 2) * 3 + c];
+                    }
+                }
+            }
+            g
+        })
+        .collect();
+    write_pngs(&empty, &bg_only, &look, &[]);
+    refused(&empty, &["--fps", "100"], "no ball found in 6 frames");
+    // Three balls: the left ball's picture copied to the far left.
+    let three = dir("three");
+    for f in frames.iter_mut() {
+        for y in 100..215 {
+            for x in 0..70 {
+                for c in 0..3 {
+                    f[(y * look.width + x) * 3 + c] = f[(y * look.width + x + 140) * 3 + c];
+                }
+            }
+        }
+    }
+    write_pngs(&three, &frames, &look, &[]);
+    refused(&three, &["--fps", "100"], "more than two balls in");
+    // A folder of frames needs a rate.
+    refused(&three, &[], "give it with --fps");
+}
+
+#[test]
+fn files_that_are_no_video_are_refused_with_one_line() {
+    let d = dir("bad");
+    let look = small_look();
+    let still = d.join("still.png");
+    write::png(&still, &small_frames()[0], look.width, look.height).unwrap();
+    refused(&still, &[], "is a still image");
+    let zero = d.join("zero.mp4");
+    std::fs::write(&zero, b"").unwrap();
+    refused(&zero, &[], "is empty (0 bytes)");
+    refused(&d.join("missing.mp4"), &[], "cannot open");
+    let one = dir("bad-one");
+    write::png(
+        &one.join("f1.png"),
+        &small_frames()[0],
+        look.width,
+        look.height,
+    )
+    .unwrap();
+    refused(
+        &one,
+        &["--fps", "100"],
+        "holds 1 PNG/JPEG frame, expected a folder",
+    );
+    // Without ffmpeg on the PATH: how to install it.
+    let clip = d.join("clip.mp4");
+    std::fs::write(&clip, b"not really a video").unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_groovelab"))
+        .args(["track", clip.to_str().unwrap()])
+        .env("PATH", d.join("no-such-bin"))
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        err.contains("apt-get install ffmpeg") && err.lines().count() == 1,
+        "{err}"
+    );
+    if !ffmpeg() {
+        return;
+    }
+    refused(&clip, &[], "is not a video ffmpeg can read");
+    // Truncated: the first half of an mp4 (its index is at the end).
+    let whole = write_mp4(&d, "whole.mp4", 100.0, &[], 12);
+    let bytes = std::fs::read(&whole).unwrap();
+    let cut = d.join("cut.mp4");
+    std::fs::write(&cut, &bytes[..bytes.len() / 2]).unwrap();
+    refused(&cut, &[], "is not a video ffmpeg can read");
+    // Audio only.
+    let audio = d.join("tone.m4a");
+    let made = std::process::Command::new("ffmpeg")
+        .args([
+            "-v",
+            "error",
+            "-y",
+            "-f",
+            "lavfi",
+            "-i",
+            "sine=frequency=440:duration=0.5",
+        ])
+        .arg(&audio)
+        .status()
+        .unwrap();
+    assert!(made.success());
+    refused(&audio, &[], "has no video, only audio");
+}
+
+#[test]
+fn a_video_too_large_is_refused_before_decoding() {
+    if !ffmpeg() {
+        return;
+    }
+    let d = dir("large");
+    let clip = write_mp4(&d, "clip.mp4", 100.0, &[], 12);
+    // The same check that refuses an hour of 4K (5e10 pixels), at a small limit.
+    let limits = groovelab::input::video::Limits {
+        pixels: 1e6,
+        ..Default::default()
+    };
+    let e = groovelab::input::video::open(&clip, &limits).err().unwrap();
+    assert!(e.what.contains("is too much video to track"), "{e}");
+}
