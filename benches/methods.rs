@@ -6,7 +6,7 @@
 use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use groovelab::lab::{Lab, Settings as LabSettings};
+use groovelab::lab::{Lab, Layers};
 use groovelab::methods::{Method, Model, Observer, Run, Settings, Y, start_state};
 use groovelab::settings::params::Key;
 use groovelab::settings::spec::SceneSpec;
@@ -76,7 +76,7 @@ fn methods(c: &mut Criterion) {
     // flags, over the snapshot's span (which reaches the preset's measured series).
     let snapshot = |values: SceneSpec| {
         let preset = Preset::load("paper-b4.9").unwrap();
-        let lab = Lab::new(LabSettings::new(preset, values), None).unwrap();
+        let lab = Lab::new(Layers::new(preset, values), None).unwrap();
         (lab.scene, lab.span)
     };
     let scenes = [

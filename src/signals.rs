@@ -76,11 +76,12 @@ pub fn on_signal(listener: impl Fn(i32) + Send + Sync + 'static) -> std::io::Res
         .lock()
         .unwrap_or_else(|e| e.into_inner())
         .push(Box::new(listener));
-    static THREAD: OnceLock<Result<(), String>> = OnceLock::new();
+    // The first start's failure, kept whole for every later caller.
+    static THREAD: OnceLock<Result<(), std::sync::Arc<std::io::Error>>> = OnceLock::new();
     THREAD
-        .get_or_init(|| start_listening().map_err(|e| e.to_string()))
+        .get_or_init(|| start_listening().map_err(std::sync::Arc::new))
         .clone()
-        .map_err(std::io::Error::other)
+        .map_err(|e| std::io::Error::new(e.kind(), e))
 }
 
 /// The thread that hands each ending signal to the listeners.

@@ -7,7 +7,7 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 use crate::methods::Method;
 use crate::settings::params::PARAMS;
 use crate::settings::spec::SceneSpec;
-use crate::settings::units::{Dimension, UnitError, parse_quantity};
+use crate::settings::units::{Dimension, UnitError, parse_option};
 use crate::study::fit::Free;
 
 /// Most samples `--sample` may ask for.
@@ -84,8 +84,32 @@ pub enum TrackRole {
     Mark,
 }
 
-fn track(text: &str) -> Result<(TrackRole, String), String> {
-    let bad = || format!("'{text}' is not ROLE=NAME, allowed centre=NAME or mark=NAME");
+/// Why an option's text is not a value of it (clap prints it after the option's name).
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum ArgError {
+    #[error("'{0}' is not ROLE=NAME, allowed centre=NAME or mark=NAME")]
+    Track(String),
+    /// A screen below the app's smallest (`min`, COLSxROWS).
+    #[error(
+        "'{text}' is smaller than the app's smallest screen, allowed at least {}x{} (up to {MAX_SCREEN}x{MAX_SCREEN})",
+        min.0,
+        min.1
+    )]
+    SmallScreen { text: String, min: (u16, u16) },
+    #[error(
+        "'{text}' is not a size, expected COLSxROWS such as 120x40 (from {}x{} to {MAX_SCREEN}x{MAX_SCREEN})",
+        min.0,
+        min.1
+    )]
+    NotASize { text: String, min: (u16, u16) },
+    #[error("'{0}' is not a pixel's length, expected a length above 0 such as 1.105mm")]
+    NotAPixel(String),
+    #[error(transparent)]
+    Unit(#[from] UnitError),
+}
+
+fn track(text: &str) -> Result<(TrackRole, String), ArgError> {
+    let bad = || ArgError::Track(text.to_string());
     let (role, name) = text.split_once('=').ok_or_else(bad)?;
     let role = match role.trim().to_ascii_lowercase().as_str() {
         "centre" | "center" => TrackRole::Centre,
@@ -134,8 +158,8 @@ pub enum Command {
 #[derive(Args, Debug)]
 pub struct SimulateArgs {
     /// Output format.
-    #[arg(long, value_enum, default_value_t = Format::Table)]
-    pub format: Format,
+    #[arg(long, value_enum, default_value_t = SimulateFormat::Table)]
+    pub format: SimulateFormat,
     /// Also give states on a uniform time grid with this step (e.g. 10ms).
     #[arg(long, value_name = "DT", value_parser = time, allow_hyphen_values = true)]
     pub sample: Option<f64>,
@@ -283,21 +307,20 @@ pub(crate) fn counts(text: &str, max: usize) -> Option<(usize, Option<usize>)> {
 
 /// `--size`: `render` has no terminal to grow, so a screen smaller than the app's
 /// smallest layout is a usage error, not a screen saying "terminal too small".
-fn screen_size(text: &str) -> Result<(u16, u16), String> {
-    let (min_c, min_r) = crate::tui::view::MIN_SIZE;
+fn screen_size(text: &str) -> Result<(u16, u16), ArgError> {
+    let min = crate::tui::view::MIN_SIZE;
+    let text_ = || text.to_string();
     match counts(text, usize::from(MAX_SCREEN)) {
-        Some((c, Some(r))) if c < usize::from(min_c) || r < usize::from(min_r) => Err(format!(
-            "'{text}' is smaller than the app's smallest screen, allowed at least {min_c}x{min_r} (up to {MAX_SCREEN}x{MAX_SCREEN})"
-        )),
+        Some((c, Some(r))) if c < usize::from(min.0) || r < usize::from(min.1) => {
+            Err(ArgError::SmallScreen { text: text_(), min })
+        }
         Some((c, Some(r))) => Ok((c as u16, r as u16)),
-        _ => Err(format!(
-            "'{text}' is not a size, expected COLSxROWS such as 120x40 (from {min_c}x{min_r} to {MAX_SCREEN}x{MAX_SCREEN})"
-        )),
+        _ => Err(ArgError::NotASize { text: text_(), min }),
     }
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum Format {
+pub enum SimulateFormat {
     Table,
     Json,
     Csv,
@@ -305,22 +328,19 @@ pub enum Format {
 
 // clap shows the parser's error after the option's name.
 fn speed(s: &str) -> Result<f64, UnitError> {
-    parse_quantity(s, Dimension::Speed)
+    parse_option(s, Dimension::Speed)
 }
 fn time(s: &str) -> Result<f64, UnitError> {
-    parse_quantity(s, Dimension::Time)
+    parse_option(s, Dimension::Time)
 }
-fn length(s: &str) -> Result<f64, String> {
-    match parse_quantity(s, Dimension::Length) {
-        Ok(v) if v > 0.0 => Ok(v),
-        Ok(_) => Err(format!(
-            "'{s}' is not a pixel's length, expected a length above 0 such as 1.105mm"
-        )),
-        Err(e) => Err(e.to_string()),
+fn length(s: &str) -> Result<f64, ArgError> {
+    match parse_option(s, Dimension::Length)? {
+        v if v > 0.0 => Ok(v),
+        _ => Err(ArgError::NotAPixel(s.to_string())),
     }
 }
 fn ratio(s: &str) -> Result<f64, UnitError> {
-    parse_quantity(s, Dimension::Ratio)
+    parse_option(s, Dimension::Ratio)
 }
 
 /// Scene options shared by every command that takes a scene: `--preset` and one
@@ -367,7 +387,7 @@ impl Args for SceneArgs {
             let arg = clap::Arg::new(p.name)
                 .long(p.flag)
                 .value_name(if dim == Dimension::Ratio { "X" } else { "Q" })
-                .value_parser(move |s: &str| parse_quantity(s, dim))
+                .value_parser(move |s: &str| parse_option(s, dim))
                 .allow_hyphen_values(true)
                 .global(true)
                 .help(p.help_text())

@@ -6,7 +6,7 @@ use std::ffi::OsString;
 
 use clap::Parser;
 
-use super::Outcome;
+use super::Response;
 use super::args::Cli;
 use super::error::CliError;
 use crate::tui::app::App;
@@ -71,11 +71,11 @@ pub fn dispatch(args: &[OsString]) -> Entry {
         }
     };
     match super::run(&cli) {
-        Ok(Outcome::Interactive(app)) => Entry::Interactive {
+        Ok(Response::Interactive(app)) => Entry::Interactive {
             app,
             ascii: cli.ascii,
         },
-        Ok(Outcome::Print(out)) => Entry::Exit(Exit::ok(out)),
+        Ok(Response::Print(out)) => Entry::Exit(Exit::ok(out)),
         Err(CliError::Interrupted) => {
             Entry::Exit(Exit::error(130, &CliError::Interrupted.to_string()))
         }

@@ -5,7 +5,7 @@ use std::fmt::Write as _;
 use serde::Serialize;
 
 use super::args::{
-    CompareArgs, CompareFormat, DataArgs, Format, MAX_SAMPLES, SceneArgs, SimulateArgs,
+    CompareArgs, CompareFormat, DataArgs, MAX_SAMPLES, SceneArgs, SimulateArgs, SimulateFormat,
 };
 use super::deliver::deliver;
 use super::error::{BadValue, CliError, Flag};
@@ -179,7 +179,7 @@ pub(super) fn simulate_method(
     };
     let samples = args.sample.map(|_| rec.samples.as_slice());
     Ok(match args.format {
-        Format::Json => {
+        SimulateFormat::Json => {
             let doc = MethodRunJson {
                 scene,
                 span: Span {
@@ -200,14 +200,14 @@ pub(super) fn simulate_method(
             s.push('\n');
             s
         }
-        Format::Csv => {
+        SimulateFormat::Csv => {
             let detected = Solution {
                 events: rec.events.clone(),
                 ..exact.clone()
             };
             csv_output(&detected, samples)?
         }
-        Format::Table => method_table(args, settings, &outcome, stalled, &rec, final_state),
+        SimulateFormat::Table => method_table(args, settings, &outcome, stalled, &rec, final_state),
     })
 }
 

@@ -33,7 +33,8 @@ mod sweep;
 mod track;
 mod track_args;
 pub use crate::output::{self, write_atomically};
-use crate::settings::units::{Dimension, show, sig_figs, significant};
+use crate::settings::params::{Key, PARAMS};
+use crate::settings::units::{Dimension, show, sig_figs};
 pub use args::*;
 use deliver::deliver;
 pub use error::{BadValue, CliError, Flag, Usage};
@@ -42,7 +43,7 @@ use states::{csv_output, samples, state_rows};
 pub use sweep::run_with_stop as sweep_with_stop;
 
 /// What a command line asks for once it is valid.
-pub enum Outcome {
+pub enum Response {
     /// Text for stdout.
     Print(String),
     /// The interactive app on this scene.
@@ -50,32 +51,32 @@ pub enum Outcome {
 }
 
 /// Runs a parsed command line.
-pub fn run(cli: &Cli) -> Result<Outcome, CliError> {
+pub fn run(cli: &Cli) -> Result<Response, CliError> {
     used_options(cli)?;
     // A data file that names its scene gives it, under the options.
     let scene = &open::with_file_scene(&cli.scene, &cli.data)?;
     match &cli.command {
-        None | Some(Command::Tui) => Ok(Outcome::Interactive(Box::new(app(scene, &cli.data)?))),
+        None | Some(Command::Tui) => Ok(Response::Interactive(Box::new(app(scene, &cli.data)?))),
         Some(Command::Simulate(args)) => {
-            deliver(args.output.as_deref(), || simulate(&cli.scene, args)).map(Outcome::Print)
+            deliver(args.output.as_deref(), || simulate(&cli.scene, args)).map(Response::Print)
         }
         Some(Command::Render(args)) => deliver(args.output.as_deref(), || {
             render(scene, &cli.data, args, cli.ascii)
         })
-        .map(Outcome::Print),
+        .map(Response::Print),
         Some(Command::Compare(args)) => {
-            methods::compare(scene, &cli.data, args).map(Outcome::Print)
+            methods::compare(scene, &cli.data, args).map(Response::Print)
         }
         Some(Command::Fit(args)) => deliver(args.output.as_deref(), || {
             fit::run(scene, &cli.scene, &cli.data, args)
         })
-        .map(Outcome::Print),
-        Some(Command::Sweep(args)) => sweep::run(&cli.scene, args).map(Outcome::Print),
-        Some(Command::Track(args)) => track::run(&cli.scene, args).map(Outcome::Print),
-        Some(Command::Data(args)) => data::run(args, &cli.data).map(Outcome::Print),
-        Some(Command::Presets) => Ok(Outcome::Print(presets())),
-        Some(Command::Completions { shell }) => Ok(Outcome::Print(manual::completions(*shell))),
-        Some(Command::Manpage) => Ok(Outcome::Print(manual::manpage())),
+        .map(Response::Print),
+        Some(Command::Sweep(args)) => sweep::run(&cli.scene, args).map(Response::Print),
+        Some(Command::Track(args)) => track::run(&cli.scene, args).map(Response::Print),
+        Some(Command::Data(args)) => data::run(args, &cli.data).map(Response::Print),
+        Some(Command::Presets) => Ok(Response::Print(presets())),
+        Some(Command::Completions { shell }) => Ok(Response::Print(manual::completions(*shell))),
+        Some(Command::Manpage) => Ok(Response::Print(manual::manpage())),
     }
 }
 
@@ -235,9 +236,9 @@ pub fn simulate(scene_args: &SceneArgs, args: &SimulateArgs) -> Result<String, C
         Some(dt) => Some(samples(&lab.solution, dt)?),
     };
     Ok(match args.format {
-        Format::Json => json(&lab.solution, &lab.derived, samples.as_deref()),
-        Format::Csv => csv_output(&lab.solution, samples.as_deref())?,
-        Format::Table => table(lab.preset(), lab.resolved(), samples.as_deref()),
+        SimulateFormat::Json => json(&lab.solution, &lab.derived, samples.as_deref()),
+        SimulateFormat::Csv => csv_output(&lab.solution, samples.as_deref())?,
+        SimulateFormat::Table => table(lab.preset(), lab.resolved(), samples.as_deref()),
     })
 }
 
@@ -312,18 +313,21 @@ fn scene_lines(out: &mut String, preset: &Preset, now: &Resolved) {
     let b_star = derived
         .b_star
         .map_or("none (e < 2/5)".to_string(), |b| len(b).to_string());
-    let _ = writeln!(
-        out,
-        "scene    R = {}   b = {} (b/R = {:.3}, b* = {})   μ_k = {}   e = {}   c_rr = {}   g = {}",
-        len(sc.radius),
-        len(sc.width),
-        sc.width / sc.radius,
-        b_star,
-        significant(sc.mu, 4),
-        significant(sc.restitution, 4),
-        significant(sc.rolling_resistance, 4),
-        show(sc.g, Dimension::Acceleration),
-    );
+    // The groove's and the scene's own values, from the parameter table (the balls'
+    // follow on lines of their own).
+    let values: Vec<String> = PARAMS
+        .iter()
+        .filter(|p| p.is_own() && p.replaces.is_none() && p.of_scene() && !p.of_ball())
+        .filter_map(|p| {
+            let v = (p.get)(sc, &now.span)?;
+            let mut text = format!("{} = {}", p.screen_label(), show(v, p.dim));
+            if p.key == Key::Width {
+                let _ = write!(text, " (b/R = {:.3}, b* = {b_star})", sc.width / sc.radius);
+            }
+            Some(text)
+        })
+        .collect();
+    let _ = writeln!(out, "scene    {}", values.join("   "));
     for (name, ball) in [("left ", sc.left), ("right", sc.right)] {
         let _ = writeln!(
             out,

@@ -7,7 +7,7 @@ use std::path::Path;
 use super::args::{DataArgs, SceneArgs, TrackRole};
 use super::error::{BadValue, CliError, Flag};
 use crate::input::data::Reading;
-use crate::lab::{Groove, Lab, OwnData, Settings};
+use crate::lab::{Groove, Lab, Layers, OwnData};
 use crate::physics::scene::{Scene, Span};
 use crate::settings::params::Key;
 use crate::settings::spec::SceneSpec;
@@ -18,9 +18,9 @@ use crate::tui::app::{App, Library, Status};
 
 impl SceneArgs {
     /// The settings layers these options give: the preset, then the values given.
-    pub fn settings(&self) -> Result<Settings, CliError> {
+    pub fn settings(&self) -> Result<Layers, CliError> {
         let preset = Preset::load(self.preset.as_deref().unwrap_or(preset::DEFAULT))?;
-        Ok(Settings::new(preset, self.values.clone()))
+        Ok(Layers::new(preset, self.values.clone()))
     }
 
     /// The preset these options start from, and the scene they make (by the lab's

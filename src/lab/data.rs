@@ -12,7 +12,7 @@
 use crate::physics::scene::Scene;
 use crate::settings::params::Key;
 use crate::settings::spec::{SceneError, SceneSpec};
-use crate::settings::units::{Dimension, show, show_exact};
+use crate::settings::units::{Dimension, show};
 use crate::study::measured::Series;
 use crate::study::preset::Preset;
 
@@ -230,14 +230,10 @@ pub(super) fn mark_on_the_ball(in_use: Option<&InUse>, scene: &Scene) -> Result<
         return Ok(());
     };
     match (found.mark_radius, found.least_radius()) {
-        (Some(mark), Some(least)) if scene.radius < least => Err(SceneError::OutOfRange {
-            name: "R",
-            value: show_exact(scene.radius, Dimension::Length),
-            allowed: format!(
-                "R ≥ {} (the rim mark tracked {} from the centre must be on the ball)",
-                show(least, Dimension::Length),
-                show(mark, Dimension::Length)
-            ),
+        (Some(mark), Some(least)) if scene.radius < least => Err(SceneError::MarkOffTheBall {
+            radius: scene.radius,
+            least,
+            mark,
         }),
         _ => Ok(()),
     }

@@ -26,8 +26,8 @@ use crate::study::measured::Series;
 use crate::study::preset::Preset;
 
 pub use data::{Groove, InUse, OtherGroove, OwnData, Whose, approach, measured_values};
-pub use resolved::{MeasuredPoints, Pinned, Point, Resolved, Story, differences, value_range};
-pub use settings::{Edit, Settings};
+pub use resolved::{ChartPoint, MeasuredPoints, Pinned, Resolved, Story, differences, value_range};
+pub use settings::{Edit, Layers};
 pub use span::SpanEnd;
 pub use work::{
     ExportResult, Exported, FitWindowError, METHOD_VIEW_LEVELS, OVERLAY_LEVELS, Overlay,
@@ -46,7 +46,7 @@ pub type FitWindow = (Option<f64>, Option<f64>);
 /// One scene under study.
 #[derive(Clone, Debug)]
 pub struct Lab {
-    settings: Settings,
+    settings: Layers,
     /// The user's own series, used instead of the preset's until dropped.
     own_data: Option<OwnData>,
     /// The data in use by the rule of `data::in_use`, shared by every snapshot built
@@ -73,7 +73,7 @@ impl Deref for Lab {
 impl Lab {
     /// The lab on its settings, with the user's own series (`--data`) in place of the
     /// preset's, if any.
-    pub fn new(settings: Settings, own_data: Option<OwnData>) -> Result<Lab, SceneError> {
+    pub fn new(settings: Layers, own_data: Option<OwnData>) -> Result<Lab, SceneError> {
         let in_use = choose(&settings, own_data.as_ref())?;
         let now = Arc::new(Resolved::build(&settings, in_use.as_ref(), None)?);
         Ok(Lab {
@@ -88,7 +88,7 @@ impl Lab {
 
     /// The lab on a preset as it is (no flags, no data of the user's).
     pub fn of_preset(preset: Preset) -> Result<Lab, SceneError> {
-        Lab::new(Settings::new(preset, SceneSpec::default()), None)
+        Lab::new(Layers::new(preset, SceneSpec::default()), None)
     }
 
     /// The current snapshot, shared (a job or a view cache keeps it whole).
@@ -127,7 +127,7 @@ impl Lab {
     }
 
     /// The settings layers.
-    pub fn settings(&self) -> &Settings {
+    pub fn settings(&self) -> &Layers {
         &self.settings
     }
 
@@ -294,7 +294,7 @@ impl Lab {
 
 /// The data the layers' scene shows, by the rule of `data::in_use`; an error if its
 /// R would put their rim mark off the ball.
-fn choose(settings: &Settings, own: Option<&OwnData>) -> Result<Option<InUse>, SceneError> {
+fn choose(settings: &Layers, own: Option<&OwnData>) -> Result<Option<InUse>, SceneError> {
     let (scene, _, _) = settings.settle()?;
     let in_use = data::in_use(
         own,

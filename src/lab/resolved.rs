@@ -18,7 +18,7 @@ use crate::study::fit;
 use crate::study::measured::{self, InScene, Measured};
 
 use super::data::{Groove, InUse, OtherGroove};
-use super::settings::Settings;
+use super::settings::Layers;
 use super::span::{SpanEnd, solve_shown};
 
 /// A scene pinned for comparison (A/B): drawn dimmed beside the current one.
@@ -36,7 +36,7 @@ pub struct Pinned {
 }
 
 /// A point of a chart (t, value).
-pub type Point = (f64, f64);
+pub type ChartPoint = (f64, f64);
 
 /// Everything about the current scene that changes only when the scene does.
 #[derive(Clone, Debug)]
@@ -80,7 +80,7 @@ impl Resolved {
     /// The snapshot of `settings`, with the data `in_use` derived for its scene and
     /// the span reaching a pinned run's end: the one way a lab's scene is built.
     pub fn build(
-        settings: &Settings,
+        settings: &Layers,
         in_use: Option<&InUse>,
         pinned: Option<&Pinned>,
     ) -> Result<Resolved, SceneError> {
@@ -158,14 +158,14 @@ impl Resolved {
 /// have a million rows: no frame copies them).
 #[derive(Clone, Debug, Default)]
 pub struct MeasuredPoints {
-    pub v_cm: Arc<[Point]>,
-    pub v_t: Arc<[Point]>,
+    pub v_cm: Arc<[ChartPoint]>,
+    pub v_t: Arc<[ChartPoint]>,
     /// Each derived point's ±1σ as a vertical run of points (`None`: no σ given).
-    pub v_cm_bars: Option<Arc<[Point]>>,
-    pub v_t_bars: Option<Arc<[Point]>>,
+    pub v_cm_bars: Option<Arc<[ChartPoint]>>,
+    pub v_t_bars: Option<Arc<[ChartPoint]>>,
     /// A position track's centre where the model's left ball would be (x − R, aligned
     /// by [`fit::aligned_track`]), in the display unit of length (the position chart's).
-    pub x: Option<Arc<[Point]>>,
+    pub x: Option<Arc<[ChartPoint]>>,
     /// Each series' [`value_range`], in the order of [`MeasuredPoints::series`].
     ranges: Vec<Option<(f64, f64)>>,
 }
@@ -194,7 +194,7 @@ impl MeasuredPoints {
     }
 
     /// Every series above, in a fixed order: v_cm, v_t, their error bars, x.
-    pub fn series(&self) -> impl Iterator<Item = &Arc<[Point]>> {
+    pub fn series(&self) -> impl Iterator<Item = &Arc<[ChartPoint]>> {
         [Some(&self.v_cm), Some(&self.v_t)]
             .into_iter()
             .chain([&self.v_cm_bars, &self.v_t_bars, &self.x].map(Option::as_ref))
@@ -203,14 +203,14 @@ impl MeasuredPoints {
 
     /// The [`value_range`] of `points` if it is one of these series (made once per
     /// scene: a chart's y range takes no pass over a million rows); `None` if not.
-    pub fn range_of(&self, points: &Arc<[Point]>) -> Option<Option<(f64, f64)>> {
+    pub fn range_of(&self, points: &Arc<[ChartPoint]>) -> Option<Option<(f64, f64)>> {
         let i = self.series().position(|s| Arc::ptr_eq(s, points))?;
         self.ranges.get(i).copied()
     }
 }
 
 /// The least and the greatest finite value of `points` (`None`: none is finite).
-pub fn value_range(points: &[Point]) -> Option<(f64, f64)> {
+pub fn value_range(points: &[ChartPoint]) -> Option<(f64, f64)> {
     points
         .iter()
         .map(|p| p.1)
@@ -223,7 +223,7 @@ pub fn value_range(points: &[Point]) -> Option<(f64, f64)> {
 /// Points filling `value ± sigma` at each time (12 per bar, enough for a bar a dozen
 /// rows tall), for a series drawn as vertical error bars; points without a finite
 /// value or uncertainty have none.
-fn error_bars(ts: &[f64], values: &[f64], sigma: &[f64]) -> Vec<Point> {
+fn error_bars(ts: &[f64], values: &[f64], sigma: &[f64]) -> Vec<ChartPoint> {
     const STEPS: usize = 12;
     let mut out = Vec::new();
     for ((&t, &v), &s) in ts.iter().zip(values).zip(sigma) {

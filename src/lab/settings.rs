@@ -30,8 +30,8 @@ pub enum Edit {
 
 /// The layers a lab's scene is settled from (the defaults are the table's own).
 #[derive(Clone, Debug)]
-pub struct Settings {
-    /// The preset the lab started from (see [`Settings::preset`] for the one in use).
+pub struct Layers {
+    /// The preset the lab started from (see [`Layers::preset`] for the one in use).
     start: Preset,
     /// The command line's values, SI (in force until another preset is picked).
     pub flags: SceneSpec,
@@ -44,9 +44,9 @@ pub struct Settings {
     edits: Vec<Edit>,
 }
 
-impl Settings {
-    pub fn new(preset: Preset, flags: SceneSpec) -> Settings {
-        Settings {
+impl Layers {
+    pub fn new(preset: Preset, flags: SceneSpec) -> Layers {
+        Layers {
             start: preset,
             flags,
             scene_file: None,
@@ -87,7 +87,7 @@ impl Settings {
         &self.edits
     }
 
-    /// Adds an edit on top (check it with [`Settings::settle`]; [`Settings::undo`]
+    /// Adds an edit on top (check it with [`Layers::settle`]; [`Layers::undo`]
     /// takes it back).
     pub fn push(&mut self, edit: Edit) {
         self.edits.push(edit);

@@ -4,7 +4,7 @@
 
 use serde::Serialize;
 
-use crate::physics::model::{self, BallState, Groove};
+use crate::physics::model::{self, BallState, Rails};
 use crate::physics::scene::Scene;
 
 /// The state vector `[x_L, v_L, u_L, x_R, v_R, u_R]` (SI).
@@ -122,12 +122,12 @@ impl Friction {
 }
 
 /// The scene's constants as the methods need them: the per-ball formulas come from
-/// the physics' [`Groove`], so every method integrates the very model the engine solves.
+/// the physics' [`Rails`], so every method integrates the very model the engine solves.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Model {
     /// The scene itself: the exact method solves it directly.
     pub scene: Scene,
-    pub groove: Groove,
+    pub groove: Rails,
     pub mass: [f64; 2],
     pub radius: f64,
     pub restitution: f64,

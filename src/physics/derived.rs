@@ -9,7 +9,7 @@ use serde::Serialize;
 use crate::physics::closed_form;
 use crate::physics::engine::NEGLIGIBLE_SPEED;
 use crate::physics::forces::Sliding;
-use crate::physics::model::{self, BallState, Groove, slip};
+use crate::physics::model::{self, BallState, Rails, slip};
 use crate::physics::scene::Scene;
 use crate::physics::solution::{EnergySplit, Solution};
 
@@ -243,7 +243,7 @@ pub fn first_impact(scene: &Scene) -> Option<[BallState; 2]> {
 
 /// Right ball's minus left ball's velocity once each rolls again on its own (or,
 /// without friction, right after the impact).
-fn separation_speed(groove: &Groove, scene: &Scene, impact: Option<[BallState; 2]>) -> f64 {
+fn separation_speed(groove: &Rails, scene: &Scene, impact: Option<[BallState; 2]>) -> f64 {
     match impact {
         None => 0.0,
         Some([l, r]) if scene.mu > 0.0 => groove.rolling_speed(r) - groove.rolling_speed(l),
@@ -253,7 +253,7 @@ fn separation_speed(groove: &Groove, scene: &Scene, impact: Option<[BallState; 2
 
 /// A ball sliding from `state` until it rolls (single-ball formulas of physics.md);
 /// needs friction (μ_k > 0).
-pub fn recovery(groove: &Groove, state: BallState) -> Recovery {
+pub fn recovery(groove: &Rails, state: BallState) -> Recovery {
     let s = slip(state);
     let (a, du) = groove.sliding_accelerations(s.signum());
     let t_roll = groove.time_to_roll(s);
@@ -453,14 +453,10 @@ mod tests {
             v0: 0.6,
         };
         let mut sc = Scene {
-            radius: 0.0275,
             width: 0.0426,
-            mu: 0.17,
-            g: 9.81,
-            restitution: 1.0,
-            rolling_resistance: 0.0,
             left: ball,
             right: ball,
+            ..Scene::default()
         };
         let d = Derived::of(&sc);
         // D = 5k²/2 with k² = 1 − (b/2R)² (physics.md): 1 + 2.1e-4 here.

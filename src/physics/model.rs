@@ -51,9 +51,10 @@ pub fn slip(state: BallState) -> f64 {
     state.v - state.u
 }
 
-/// The constants of one ball's motion in a given groove.
+/// The constants of one ball's motion on its groove's two rails (the edges it rolls on):
+/// what the per-ball formulas need of the scene.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Groove {
+pub struct Rails {
     /// `k = r / R`.
     pub k: f64,
     pub mu: f64,
@@ -61,7 +62,7 @@ pub struct Groove {
     pub rolling_resistance: f64,
 }
 
-impl Groove {
+impl Rails {
     /// `(dv/dt, du/dt)` while sliding with slip sign `sign`:
     /// `(−sgn(s) μ_k g / k, +sgn(s) 5/2 k μ_k g)`.
     pub fn sliding_accelerations(&self, sign: f64) -> (f64, f64) {
@@ -150,7 +151,7 @@ mod tests {
     use super::*;
     use approx::assert_relative_eq;
 
-    const GROOVE: Groove = Groove {
+    const GROOVE: Rails = Rails {
         k: 0.6,
         mu: 0.2,
         g: 9.81,
@@ -197,7 +198,7 @@ mod tests {
 
     #[test]
     fn rolling_resistance_force_matches_energy_rate() {
-        let groove = Groove {
+        let groove = Rails {
             rolling_resistance: 0.01,
             ..GROOVE
         };

@@ -4,7 +4,7 @@
 use serde::Serialize;
 
 use crate::physics::closed_form;
-use crate::physics::model::Groove;
+use crate::physics::model::Rails;
 
 /// Standard gravity, used when nothing else is said, m/s².
 pub const STANDARD_GRAVITY: f64 = 9.81;
@@ -111,8 +111,8 @@ impl Scene {
     }
 
     /// One ball's groove: what the per-ball formulas of `model` need.
-    pub fn groove(&self) -> Groove {
-        Groove {
+    pub fn groove(&self) -> Rails {
+        Rails {
             k: self.k(),
             mu: self.mu,
             g: self.g,

@@ -3,7 +3,7 @@
 
 use serde::Serialize;
 
-use crate::physics::model::{BallState, Groove, Phase};
+use crate::physics::model::{BallState, Phase, Rails};
 use crate::physics::scene::{Scene, Span};
 
 /// Which ball an event belongs to.
@@ -207,7 +207,7 @@ impl EnergySplit {
 }
 
 impl Solution {
-    pub fn groove(&self) -> Groove {
+    pub fn groove(&self) -> Rails {
         self.scene.groove()
     }
 
@@ -351,7 +351,7 @@ impl Solution {
 /// Ledger `tau` seconds into segment `seg`: sliding friction `μ m g/k ∫|s|dt` and
 /// rolling resistance `F_rr ∫|v|dt`, each exact because `s` and `v` keep their sign
 /// inside a segment (their zeros are events).
-pub fn segment_losses(groove: &Groove, masses: [f64; 2], seg: &Segment, tau: f64) -> Ledger {
+pub fn segment_losses(groove: &Rails, masses: [f64; 2], seg: &Segment, tau: f64) -> Ledger {
     let mut ledger = seg.ledger0;
     for (i, mass) in masses.into_iter().enumerate() {
         let st = seg.start[i];

@@ -482,6 +482,14 @@ impl Param {
             .filter(move |q| q.sets.iter().any(|k| replaced.contains(k)))
     }
 
+    /// Whether it is a value of the balls (a mass, a speed, a release height), not of
+    /// the groove, the scene as a whole or the span.
+    pub fn of_ball(&self) -> bool {
+        let (mut scene, mut span) = (Scene::DEFAULT, Span::DEFAULT);
+        (self.set)(&mut scene, &mut span, 0.5);
+        scene.left != Scene::DEFAULT.left || scene.right != Scene::DEFAULT.right
+    }
+
     /// Whether it is a value of the scene (what sweeps vary), not of the simulated
     /// span: writing it leaves a span as it was.
     pub fn of_scene(&self) -> bool {
@@ -543,6 +551,35 @@ mod tests {
             assert_eq!(p.flag, p.name.replace('_', "-"));
             assert!(p.range.lo < p.range.hi, "{}", p.name);
         }
+    }
+
+    #[test]
+    fn ball_rows_are_told_from_the_grooves_and_the_spans() {
+        let balls: Vec<&str> = PARAMS
+            .iter()
+            .filter(|p| p.of_ball())
+            .map(|p| p.name)
+            .collect();
+        assert_eq!(
+            balls,
+            [
+                "mass",
+                "mass_left",
+                "mass_right",
+                "v0",
+                "v0_left",
+                "v0_right",
+                "height",
+                "height_left",
+                "height_right"
+            ]
+        );
+        assert!(
+            PARAMS
+                .iter()
+                .filter(|p| !p.of_scene())
+                .all(|p| !p.of_ball())
+        );
     }
 
     /// Every number of a scene is some row's: `resolve` starts from

@@ -3,20 +3,99 @@
 
 use crate::physics::derived::Derived;
 use crate::physics::scene::{Scene, Span};
-use crate::settings::params::{Fallback, Key, PARAMS, Param};
+use std::fmt;
+
+use crate::settings::params::{Fallback, Key, PARAMS, Param, Range};
 use crate::settings::units::{Dimension, show, show_exact};
 
-/// Why a scene is not valid. Each message names the value and what is allowed.
+/// Why a scene is not valid: which parameter, its value (SI) and what is allowed. The
+/// sentence, naming the value and what is allowed, is made only where it is printed.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum SceneError {
-    #[error("{name} = {value} is out of range, allowed {allowed}")]
+    /// `key`'s value (SI) is outside what is allowed.
+    #[error(
+        "{} = {} is out of range, allowed {allowed}",
+        key.param().symbol,
+        show_exact(*value, key.dimension())
+    )]
     OutOfRange {
-        name: &'static str,
-        value: String,
-        allowed: String,
+        key: Key,
+        value: f64,
+        allowed: Allowed,
     },
-    #[error("{0}")]
-    Other(String),
+    /// The release height `key` gives a run-up speed (m/s) beyond the speed range.
+    #[error(
+        "{} = {} is out of range, allowed {} (the run-up from this height is too fast)",
+        Key::V0.param().symbol,
+        show_exact(*speed, Dimension::Speed),
+        Key::V0.param().range.text
+    )]
+    RunUpTooFast { key: Key, speed: f64 },
+    /// A required parameter no layer gives.
+    #[error(
+        "{} is not set, give it with --{} or in the preset",
+        key.param().symbol,
+        key.param().flag
+    )]
+    NotSet { key: Key },
+    /// The balls move apart at t = 0: v0_left + v0_right (m/s) is negative.
+    #[error(
+        "closing speed v0_left + v0_right = {} is out of range, allowed ≥ 0 m/s (the balls meet at t = 0)",
+        show(*closing, Dimension::Speed)
+    )]
+    Receding { closing: f64 },
+    /// R (m) below the least radius (m) that keeps a tracked rim mark, `mark` (m) from
+    /// the centre, on the ball.
+    #[error(
+        "R = {} is out of range, allowed R ≥ {} (the rim mark tracked {} from the centre must be on the ball)",
+        show_exact(*radius, Dimension::Length),
+        show(*least, Dimension::Length),
+        show(*mark, Dimension::Length)
+    )]
+    MarkOffTheBall { radius: f64, least: f64, mark: f64 },
+    /// Every value is in range but a derived number (a time, a force) is not finite.
+    #[error(
+        "this combination of values gives numbers too large to compute (an infinite time or force); move a value toward the middle of its range"
+    )]
+    TooLarge,
+}
+
+impl SceneError {
+    /// The parameter whose value was refused, if the error is about one.
+    pub fn key(&self) -> Option<Key> {
+        match self {
+            SceneError::OutOfRange { key, .. }
+            | SceneError::RunUpTooFast { key, .. }
+            | SceneError::NotSet { key } => Some(*key),
+            SceneError::MarkOffTheBall { .. } => Some(Key::Radius),
+            SceneError::Receding { .. } | SceneError::TooLarge => None,
+        }
+    }
+}
+
+/// What a parameter's value must be.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Allowed {
+    /// Its physical range in the table.
+    Range(Range),
+    /// A groove narrower than 2R for this R, m: `0 ≤ b < 2R`.
+    BelowTwiceRadius { radius: f64 },
+    /// An end after this start, s.
+    After { t_start: f64 },
+}
+
+impl fmt::Display for Allowed {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Allowed::Range(r) => f.write_str(r.text),
+            Allowed::BelowTwiceRadius { radius } => {
+                write!(f, "0 ≤ b < 2R = {}", show(2.0 * radius, Dimension::Length))
+            }
+            Allowed::After { t_start } => {
+                write!(f, "t_end > t_start = {}", show(*t_start, Dimension::Time))
+            }
+        }
+    }
 }
 
 /// One layer of settings (built-in defaults, a preset, the command line, the app), SI
@@ -169,23 +248,14 @@ impl SceneSpec {
                 (None, Fallback::Value(v)) => v,
                 (None, Fallback::Optional) => continue,
                 (None, Fallback::Required) if replaced => continue,
-                (None, Fallback::Required) => {
-                    return Err(SceneError::Other(format!(
-                        "{} is not set, give it with --{} or in the preset",
-                        p.symbol, p.flag
-                    )));
-                }
+                (None, Fallback::Required) => return Err(SceneError::NotSet { key: p.key }),
             };
             (p.set)(&mut scene, &mut span, v);
             relations(p, &scene, &span)?;
         }
-        if scene.left.v0 + scene.right.v0 < 0.0 {
-            let closing = scene.left.v0 + scene.right.v0;
-            return Err(SceneError::OutOfRange {
-                name: "closing speed v0_left + v0_right",
-                value: show(closing, Dimension::Speed).to_string(),
-                allowed: "≥ 0 m/s (the balls meet at t = 0)".into(),
-            });
+        let closing = scene.left.v0 + scene.right.v0;
+        if closing < 0.0 {
+            return Err(SceneError::Receding { closing });
         }
         finite_derived(&scene)?;
         Ok((scene, span))
@@ -196,24 +266,31 @@ impl SceneSpec {
 /// release height's speed within the speed range.
 fn relations(p: &Param, scene: &Scene, span: &Span) -> Result<(), SceneError> {
     match (p.key, p.replaces) {
-        (Key::Width, _) => check(p, scene.width, scene.width < 2.0 * scene.radius, || {
-            format!(
-                "0 ≤ b < 2R = {}",
-                show(2.0 * scene.radius, Dimension::Length)
-            )
-        }),
+        (Key::Width, _) => check(
+            p,
+            scene.width,
+            scene.width < 2.0 * scene.radius,
+            Allowed::BelowTwiceRadius {
+                radius: scene.radius,
+            },
+        ),
         (Key::TEnd, _) => {
             let t_end = span.t_end.unwrap_or(f64::NAN);
-            check(p, t_end, t_end > span.t_start, || {
-                format!("t_end > t_start = {}", show(span.t_start, Dimension::Time))
-            })
+            let allowed = Allowed::After {
+                t_start: span.t_start,
+            };
+            check(p, t_end, t_end > span.t_start, allowed)
         }
         (_, Some(speed)) => {
             let v = (speed.param().get)(scene, span).unwrap_or(f64::NAN);
-            let q = Key::V0.param();
-            check(q, v, q.range.contains(v), || {
-                format!("{} (the run-up from this height is too fast)", q.range.text)
-            })
+            if Key::V0.param().range.contains(v) {
+                Ok(())
+            } else {
+                Err(SceneError::RunUpTooFast {
+                    key: p.key,
+                    speed: v,
+                })
+            }
         }
         _ => Ok(()),
     }
@@ -221,24 +298,19 @@ fn relations(p: &Param, scene: &Scene, span: &Span) -> Result<(), SceneError> {
 
 /// `v` if it lies in the parameter's physical range.
 fn in_range(p: &Param, v: f64) -> Result<f64, SceneError> {
-    check(p, v, p.range.contains(v), || p.range.text.to_string()).map(|()| v)
+    check(p, v, p.range.contains(v), Allowed::Range(p.range)).map(|()| v)
 }
 
-/// `Ok` if `ok` and `value` is finite; the message is only built for an error (this
-/// runs for every point of a sweep).
-fn check(
-    p: &Param,
-    value: f64,
-    ok: bool,
-    allowed: impl FnOnce() -> String,
-) -> Result<(), SceneError> {
+/// `Ok` if `ok` and `value` is finite (this runs for every point of a sweep: no text
+/// is made here).
+fn check(p: &Param, value: f64, ok: bool, allowed: Allowed) -> Result<(), SceneError> {
     if ok && value.is_finite() {
         Ok(())
     } else {
         Err(SceneError::OutOfRange {
-            name: p.symbol,
-            value: show_exact(value, p.dim),
-            allowed: allowed(),
+            key: p.key,
+            value,
+            allowed,
         })
     }
 }
@@ -266,9 +338,7 @@ fn finite_derived(scene: &Scene) -> Result<(), SceneError> {
     if numbers.iter().all(|v| v.is_finite()) {
         Ok(())
     } else {
-        Err(SceneError::Other(
-            "this combination of values gives numbers too large to compute (an infinite time or force); move a value toward the middle of its range".into(),
-        ))
+        Err(SceneError::TooLarge)
     }
 }
 
@@ -294,5 +364,60 @@ mod tests {
     fn negative_zero_is_zero() {
         let s = SceneSpec::default().with(Key::Restitution, -0.0);
         assert!(s.get(Key::Restitution).unwrap().is_sign_positive());
+    }
+
+    /// The typed errors say what the strings said before, and name the parameter.
+    #[test]
+    fn scene_errors_name_the_key_and_print_as_before() {
+        let base = SceneSpec::default()
+            .with(Key::Radius, 0.0275)
+            .with(Key::Width, 0.049)
+            .with(Key::Mass, 0.167)
+            .with(Key::Mu, 0.17)
+            .with(Key::V0, 0.6);
+        assert!(base.resolve().is_ok());
+        let cases = [
+            (
+                base.clone().with(Key::Mass, 2000.0),
+                Some(Key::Mass),
+                "mass = 2000000 g is out of range, allowed 1 mg ≤ m ≤ 1000 kg",
+            ),
+            (
+                base.clone().with(Key::Width, 0.06),
+                Some(Key::Width),
+                "groove width b = 6 cm is out of range, allowed 0 ≤ b < 2R = 5.5 cm",
+            ),
+            (
+                base.clone().with(Key::TEnd, -0.5),
+                Some(Key::TEnd),
+                "t_end = -0.5 s is out of range, allowed t_end > t_start = -0.2 s",
+            ),
+            (
+                base.clone()
+                    .with(Key::HeightLeft, 499.0)
+                    .with(Key::G, 1000.0),
+                Some(Key::HeightLeft),
+                "v0 = ",
+            ),
+            (
+                base.clone().without(Key::Mu),
+                Some(Key::Mu),
+                "μ_k is not set, give it with --mu or in the preset",
+            ),
+            (
+                base.clone().with(Key::V0Right, -1.0),
+                None,
+                "closing speed v0_left + v0_right = -0.4 m/s is out of range, allowed ≥ 0 m/s (the balls meet at t = 0)",
+            ),
+        ];
+        for (spec, key, text) in cases {
+            let e = spec.resolve().unwrap_err();
+            assert_eq!(e.key(), key, "{e}");
+            assert!(e.to_string().starts_with(text), "{e}");
+        }
+        let fast = base.with(Key::HeightLeft, 499.0).with(Key::G, 1000.0);
+        assert!(fast.resolve().unwrap_err().to_string().ends_with(
+            "allowed -100 m/s ≤ v0 ≤ 100 m/s (the run-up from this height is too fast)"
+        ));
     }
 }

@@ -6,8 +6,8 @@ use std::path::PathBuf;
 
 use crate::settings::params::Key;
 use crate::settings::spec::SceneSpec;
-use crate::settings::units::parse_quantity;
-use crate::study::measured::{MAX_ROWS, Measured};
+use crate::settings::units::{UnitError, parse_quantity};
+use crate::study::measured::{MAX_ROWS, Measured, OutOfLabRange};
 
 /// The preset used when none is named.
 pub const DEFAULT: &str = "paper-b4.9";
@@ -54,7 +54,50 @@ pub enum PresetError {
     #[error("cannot read preset file {path}: {reason}")]
     Io { path: String, reason: String },
     #[error("malformed preset {name}: {reason}")]
-    Malformed { name: String, reason: String },
+    Malformed { name: String, reason: Malformed },
+}
+
+/// What is wrong in a preset's text.
+#[derive(Debug, thiserror::Error)]
+pub enum Malformed {
+    /// Not TOML of a preset's shape (toml's own message, without its excerpt).
+    #[error("{}", .0.message())]
+    Toml(toml::de::Error),
+    #[error("unknown scene key '{key}', allowed: {}", Key::ALL.map(|k| k.name()).join(", "))]
+    UnknownKey { key: String },
+    #[error("{}: {source}", key.name())]
+    Quantity { key: Key, source: UnitError },
+    #[error("{} = {value}: expected a number or a quantity such as \"2.75cm\"", key.name())]
+    NotAQuantity { key: Key, value: toml::Value },
+    #[error("{} is not finite", key.name())]
+    NotFinite { key: Key },
+    #[error(transparent)]
+    Measured(MeasuredError),
+}
+
+/// What is wrong in a preset's measured series (`name`: a column's key).
+#[derive(Debug, thiserror::Error)]
+pub enum MeasuredError {
+    #[error("measured series differ in length: t {t}, v_cm {v_cm}, v_t {v_t}")]
+    Lengths { t: usize, v_cm: usize, v_t: usize },
+    #[error("measured series has {0} points, allowed at most {MAX_ROWS}")]
+    TooMany(usize),
+    #[error("measured series needs at least 2 points")]
+    TooFew,
+    #[error("measured t[{0}] is not finite, allowed finite numbers")]
+    TimeNotFinite(usize),
+    #[error("measured {name}[{i}] is not finite, allowed finite numbers or nan (missing)")]
+    Infinite { name: &'static str, i: usize },
+    #[error("measured times must increase")]
+    NotIncreasing,
+    #[error("measured {name} has {len} values, t has {t}: allowed the same length")]
+    ColumnLength {
+        name: &'static str,
+        len: usize,
+        t: usize,
+    },
+    #[error(transparent)]
+    Magnitude(#[from] OutOfLabRange),
 }
 
 #[derive(serde::Deserialize)]
@@ -83,40 +126,36 @@ struct MeasuredFile {
 impl Preset {
     /// Parses a preset's TOML text; `label` names it in errors.
     pub fn parse(text: &str, label: &str, origin: Origin) -> Result<Preset, PresetError> {
-        let malformed = |reason: String| PresetError::Malformed {
+        let malformed = |reason: Malformed| PresetError::Malformed {
             name: label.to_string(),
             reason,
         };
-        let file: PresetFile =
-            toml::from_str(text).map_err(|e| malformed(e.message().to_string()))?;
+        let file: PresetFile = toml::from_str(text).map_err(|e| malformed(Malformed::Toml(e)))?;
         let mut spec = SceneSpec::default();
         for (key_name, value) in &file.scene {
             let key = Key::from_name(key_name).ok_or_else(|| {
-                let allowed: Vec<&str> = Key::ALL.iter().map(|k| k.name()).collect();
-                malformed(format!(
-                    "unknown scene key '{key_name}', allowed: {}",
-                    allowed.join(", ")
-                ))
+                malformed(Malformed::UnknownKey {
+                    key: key_name.clone(),
+                })
             })?;
             let si = match value {
                 toml::Value::Float(f) => *f,
                 toml::Value::Integer(i) => *i as f64,
                 toml::Value::String(s) => parse_quantity(s, key.dimension())
-                    .map_err(|e| malformed(format!("{key_name}: {e}")))?,
+                    .map_err(|source| malformed(Malformed::Quantity { key, source }))?,
                 other => {
-                    return Err(malformed(format!(
-                        "{key_name} = {other}: expected a number or a quantity such as \"2.75cm\""
-                    )));
+                    let value = other.clone();
+                    return Err(malformed(Malformed::NotAQuantity { key, value }));
                 }
             };
             if !si.is_finite() {
-                return Err(malformed(format!("{key_name} is not finite")));
+                return Err(malformed(Malformed::NotFinite { key }));
             }
             spec.set(key, si);
         }
         let measured = file
             .measured
-            .map(|m| check_measured(m).map_err(malformed))
+            .map(|m| check_measured(m).map_err(|e| malformed(Malformed::Measured(e))))
             .transpose()?;
         Ok(Preset {
             name: file.name,
@@ -146,40 +185,32 @@ impl Preset {
     }
 }
 
-fn check_measured(m: MeasuredFile) -> Result<Measured, String> {
+fn check_measured(m: MeasuredFile) -> Result<Measured, MeasuredError> {
     if m.t.len() != m.v_cm.len() || m.t.len() != m.v_t.len() {
-        return Err(format!(
-            "measured series differ in length: t {}, v_cm {}, v_t {}",
-            m.t.len(),
-            m.v_cm.len(),
-            m.v_t.len()
-        ));
+        return Err(MeasuredError::Lengths {
+            t: m.t.len(),
+            v_cm: m.v_cm.len(),
+            v_t: m.v_t.len(),
+        });
     }
     if m.t.len() > MAX_ROWS {
-        return Err(format!(
-            "measured series has {} points, allowed at most {MAX_ROWS}",
-            m.t.len()
-        ));
+        return Err(MeasuredError::TooMany(m.t.len()));
     }
     if m.t.len() < 2 {
-        return Err("measured series needs at least 2 points".into());
+        return Err(MeasuredError::TooFew);
     }
     // TOML writes inf and nan as plain floats. Times must be finite; a value may be
     // nan (a missing mark, as a saved position track has), never infinite.
     if let Some(i) = m.t.iter().position(|v| !v.is_finite()) {
-        return Err(format!(
-            "measured t[{i}] is not finite, allowed finite numbers"
-        ));
+        return Err(MeasuredError::TimeNotFinite(i));
     }
     for (name, series) in [("v_cm", &m.v_cm), ("v_t", &m.v_t)] {
         if let Some(i) = series.iter().position(|v| v.is_infinite()) {
-            return Err(format!(
-                "measured {name}[{i}] is not finite, allowed finite numbers or nan (missing)"
-            ));
+            return Err(MeasuredError::Infinite { name, i });
         }
     }
     if !m.t.windows(2).all(|w| w[0] < w[1]) {
-        return Err("measured times must increase".into());
+        return Err(MeasuredError::NotIncreasing);
     }
     for (name, column) in [
         ("v_cm_sigma", &m.v_cm_sigma),
@@ -188,11 +219,11 @@ fn check_measured(m: MeasuredFile) -> Result<Measured, String> {
         ("angle", &m.angle),
     ] {
         if let Some(c) = column.as_ref().filter(|c| c.len() != m.t.len()) {
-            return Err(format!(
-                "measured {name} has {} values, t has {}: allowed the same length",
-                c.len(),
-                m.t.len()
-            ));
+            return Err(MeasuredError::ColumnLength {
+                name,
+                len: c.len(),
+                t: m.t.len(),
+            });
         }
     }
     let measured = Measured {
@@ -202,7 +233,7 @@ fn check_measured(m: MeasuredFile) -> Result<Measured, String> {
         angle: m.angle,
         ..Measured::velocities(m.t, m.v_cm, m.v_t)
     };
-    measured.check_magnitudes().map_err(|e| e.to_string())?;
+    measured.check_magnitudes()?;
     Ok(measured)
 }
 

@@ -154,9 +154,9 @@ impl App {
                 }
             }
             // A smaller R that the groove's b no longer fits: b is what to change first.
-            Err(SceneError::OutOfRange { name, .. })
-                if key == Key::Radius && name == Key::Width.param().symbol =>
-            {
+            Err(SceneError::OutOfRange {
+                key: Key::Width, ..
+            }) if key == Key::Radius => {
                 self.status = Status::Error(format!(
                     "not applied: R = {} needs b < 2R = {}, and b = {}: set b first",
                     show(value, Dimension::Length),

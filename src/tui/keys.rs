@@ -3,7 +3,7 @@
 
 use ratatui::crossterm::event::{Event, KeyCode, KeyEvent, KeyModifiers};
 
-use super::vocabulary::{Action, Export, Mode};
+use super::vocabulary::{Action, Export, Mode, View};
 
 /// One line of the key table.
 #[derive(Clone, Copy, Debug)]
@@ -164,7 +164,7 @@ pub const TABLE: &[Binding] = &[
     },
     Binding {
         keys: &["c"],
-        action: Action::ToggleMethods,
+        action: Action::ShowView(View::Methods),
         help: "Methods view: error against work of each solution method",
         hint: Some(("methods", 3)),
     },
@@ -176,13 +176,13 @@ pub const TABLE: &[Binding] = &[
     },
     Binding {
         keys: &["g"],
-        action: Action::ToggleMap,
+        action: Action::ShowView(View::Map),
         help: "Map view: regime over b/R and e, this scene marked, paper's figure",
         hint: Some(("map", 3)),
     },
     Binding {
         keys: &["v"],
-        action: Action::ToggleForces,
+        action: Action::ShowView(View::Forces),
         help: "Forces view: the groove's cross-section with forces and torques, motion states, the cause-and-effect chain (b: left or right ball)",
         hint: Some(("forces", 4)),
     },
@@ -200,7 +200,7 @@ pub const TABLE: &[Binding] = &[
     },
     Binding {
         keys: &["f"],
-        action: Action::ToggleFit,
+        action: Action::ShowView(View::Fit),
         help: "Fit view: the paper's line fits and a model fit to the measured data",
         hint: Some(("fit", 4)),
     },

@@ -6,9 +6,12 @@
 
 pub mod app;
 pub mod canvas;
+pub mod chart;
+pub mod component;
 pub mod hide;
 pub mod jobs;
 pub mod keys;
+pub mod layout;
 pub mod line;
 pub mod plot;
 pub mod screen;

@@ -5,30 +5,14 @@
 //! mouse hit-testing reads the same layout. The terminal's runner and the headless
 //! `render` both hold one, so a script sees exactly what a user sees.
 
-use std::rc::Rc;
-
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 
 use super::app::{App, Mode, View};
+use super::component::{Component, Ctx, Frame};
 use super::theme::{Theme, force_ascii};
-use super::view::{self, Panels, charts::Chart};
+use super::view;
 use super::view_cache::ViewCache;
-use crate::physics::derived::Regime;
-
-/// One frame, laid out: what drawing and hit-testing share.
-#[derive(Clone, Debug)]
-pub struct Frame {
-    pub area: Rect,
-    /// Where each panel goes (`None`: the terminal is too small).
-    pub panels: Option<Panels>,
-    /// The chart, in the views that show one.
-    pub chart: Option<Chart>,
-    /// The Map view's regime grid.
-    pub regimes: Option<Rc<[Regime]>>,
-    /// How far the open help or data table scrolls at this size.
-    pub scroll_max: usize,
-}
 
 /// What preparing a frame computed anew (work counted, for the tests: a frame that
 /// only moves the time thins nothing again).
@@ -196,62 +180,91 @@ fn non_ascii(buf: &Buffer) -> Vec<(u16, u16, String)> {
     cells
 }
 
+/// Where a part of the view shown goes: the chart's room, the side panel's, or both.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Place {
+    Chart,
+    Side,
+    Middle,
+}
+
+/// The components of `view` and where each goes (every view names its own: a new
+/// view is a new arm here, which the compiler asks for).
+fn parts_of(view: View) -> Vec<(&'static dyn Component, Place)> {
+    use view::{charts, fit, forces, info, map, methods};
+    match view {
+        View::Charts => vec![
+            (&charts::ChartPanel, Place::Chart),
+            (&info::Why, Place::Side),
+        ],
+        View::Fit => vec![
+            (&charts::ChartPanel, Place::Chart),
+            (&fit::FitPanel, Place::Side),
+        ],
+        View::Map => vec![(&map::Map, Place::Chart), (&info::Why, Place::Side)],
+        View::Methods => vec![
+            (&methods::MethodsDiagram, Place::Chart),
+            (&methods::MethodRows, Place::Side),
+        ],
+        // The Forces view takes the chart's and the side panel's room.
+        View::Forces => vec![(&forces::Forces, Place::Middle)],
+    }
+}
+
+/// The popup `mode` opens, a layer over the screen (none: the main screen, or the
+/// value prompt, typed on the status line).
+fn layer_of(mode: &Mode) -> Option<&'static dyn Component> {
+    use view::{popups, predict, table};
+    match mode {
+        Mode::Normal | Mode::Edit(_) => None,
+        Mode::Help => Some(&popups::Help),
+        Mode::Table => Some(&table::Table),
+        Mode::Predict => Some(&predict::Question),
+        Mode::Picker(_) => Some(&popups::Picker),
+        Mode::SaveName(_) | Mode::Export(..) | Mode::ConfirmOverwrite(_) => Some(&popups::Prompt),
+    }
+}
+
+/// The compositor: the panels, the view shown, the status bar, then the popup open
+/// as a layer over them.
 fn draw_panels(app: &App, frame: &Frame, buf: &mut Buffer, theme: &Theme) {
     let area = frame.area;
-    match frame.panels {
-        None => {
-            let (w, h) = view::MIN_SIZE;
-            let times = if theme.glyphs.ascii { "x" } else { "×" };
-            // The size it has and the size it needs; on two short lines where one does
-            // not fit, so that a narrow terminal still shows both numbers whole.
-            let (has, needs) = (
-                format!("{}{times}{}", area.width, area.height),
-                format!("{w}{times}{h}"),
-            );
-            let one = format!("terminal {has} is too small: groovelab needs {needs}");
-            let lines = if one.chars().count() <= area.width as usize {
-                vec![one]
-            } else {
-                vec![format!("terminal {has}"), format!("needs {needs}")]
-            };
-            let top = area.y + area.height.saturating_sub(2) / 2;
-            for (y, msg) in (top..area.bottom()).zip(&lines) {
-                let x = area.x + area.width.saturating_sub(msg.chars().count() as u16) / 2;
-                buf.set_stringn(x, y, msg, area.width as usize, theme.error);
-            }
+    let Some(p) = frame.panels else {
+        let (w, h) = view::MIN_SIZE;
+        let times = if theme.glyphs.ascii { "x" } else { "×" };
+        // The size it has and the size it needs; on two short lines where one does
+        // not fit, so that a narrow terminal still shows both numbers whole.
+        let (has, needs) = (
+            format!("{}{times}{}", area.width, area.height),
+            format!("{w}{times}{h}"),
+        );
+        let one = format!("terminal {has} is too small: groovelab needs {needs}");
+        let lines = if one.chars().count() <= area.width as usize {
+            vec![one]
+        } else {
+            vec![format!("terminal {has}"), format!("needs {needs}")]
+        };
+        let top = area.y + area.height.saturating_sub(2) / 2;
+        for (y, msg) in (top..area.bottom()).zip(&lines) {
+            let x = area.x + area.width.saturating_sub(msg.chars().count() as u16) / 2;
+            buf.set_stringn(x, y, msg, area.width as usize, theme.error);
         }
-        Some(p) => {
-            view::params::render(app, p.params, buf, theme);
-            view::scene::render(app, p.scene, buf, theme);
-            match app.view {
-                // The Forces view takes the chart's and the info panel's room.
-                View::Forces => view::forces::render(app, p.chart.union(p.info), buf, theme),
-                View::Map => {
-                    if let Some(grid) = &frame.regimes {
-                        view::map::render(app, grid, p.chart, buf, theme);
-                    } else {
-                        view::map::render(app, &[], p.chart, buf, theme);
-                    }
-                    view::info::render(app, p.info, buf, theme);
-                }
-                View::Methods => {
-                    view::methods::render_diagram(app, p.chart, buf, theme);
-                    view::methods::render_rows(app, p.info, buf, theme);
-                }
-                View::Charts | View::Fit => {
-                    if let Some(chart) = &frame.chart {
-                        view::charts::render(chart, p.chart, buf, theme);
-                    }
-                    if app.view == View::Fit {
-                        view::fit::render(app, p.info, buf, theme);
-                    } else {
-                        view::info::render(app, p.info, buf, theme);
-                    }
-                }
-            }
-            view::status::render(app, p.status, p.hints, buf, theme);
-            view::popups::render(app, area, buf, theme);
-        }
+        return;
+    };
+    let cx = Ctx { app, frame, theme };
+    view::params::Params.render(p.params, buf, &cx);
+    view::scene::ScenePanel.render(p.scene, buf, &cx);
+    for (part, place) in parts_of(app.view) {
+        let at = match place {
+            Place::Chart => p.chart,
+            Place::Side => p.info,
+            Place::Middle => p.chart.union(p.info),
+        };
+        part.render(at, buf, &cx);
+    }
+    view::status::StatusBar.render(p.status.union(p.hints), buf, &cx);
+    if let Some(popup) = layer_of(&app.mode) {
+        popup.render(area, buf, &cx);
     }
 }
 

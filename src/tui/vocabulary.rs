@@ -164,11 +164,11 @@ pub enum Action {
     PrevEvent,
     /// Pin the current run for an A/B comparison, or unpin it.
     TogglePin,
-    ToggleMethods,
+    /// Shows a view, or the charts if it is shown already (every view key switches
+    /// directly from any view).
+    ShowView(View),
     /// Methods view: the next work axis (steps, evaluations, time).
     CycleWorkAxis,
-    ToggleMap,
-    ToggleFit,
     FitStartEarlier,
     FitStartLater,
     FitEndEarlier,
@@ -184,8 +184,6 @@ pub enum Action {
     ApplyFit,
     Export(Export),
     DataTable,
-    /// The Forces view.
-    ToggleForces,
     /// Predict, observe, explain: ask, play, explain.
     Predict,
     /// Hide (or show) b's value, for a prediction from the picture alone.

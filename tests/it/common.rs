@@ -82,7 +82,7 @@ pub fn run_in_process(args: &[&str]) -> Result<String, String> {
     let argv = std::iter::once("groovelab").chain(args.iter().copied());
     let cli = groovelab::cli::Cli::try_parse_from(argv).map_err(|e| e.to_string())?;
     match groovelab::cli::run(&cli) {
-        Ok(groovelab::cli::Outcome::Print(text)) => Ok(text),
+        Ok(groovelab::cli::Response::Print(text)) => Ok(text),
         Ok(_) => Err("the app would open: no text".into()),
         Err(e) => Err(e.to_string()),
     }

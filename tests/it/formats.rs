@@ -325,3 +325,195 @@ fn a_vernier_format_2_export_reads_its_units_line_and_fits() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The paper's scene's left ball at 100 frames/s, impact at t = 0 (left out: the
+/// frame at the impact is neither before nor after it).
+fn velocities() -> Vec<(f64, f64, f64)> {
+    let sol = groovelab::physics::engine::solve(
+        &scene(),
+        &groovelab::physics::scene::Span {
+            t_start: -0.2,
+            t_end: Some(0.6),
+        },
+    );
+    (-10..=50)
+        .filter(|&k| k != 0)
+        .map(|k| {
+            let t = f64::from(k) * 0.01;
+            let st = sol.at(t);
+            (t, st.left.v, st.left.u)
+        })
+        .collect()
+}
+
+#[test]
+fn a_header_that_states_the_wrong_unit_is_refused_naming_the_unit_that_fits() {
+    let dir = scratch("mislabelled");
+    // Numbers in cm/s under a header that says m/s: once fitted as μ_k = 13.8.
+    let file = dir.join("mislabelled.csv");
+    let mut text = String::from("t (s),v_cm (m/s),v_t (m/s)\n");
+    for (t, v, u) in velocities() {
+        text += &format!("{t:.3},{:.3},{:.3}\n", 100.0 * v, 100.0 * u);
+    }
+    std::fs::write(&file, &text).unwrap();
+    let f = file.to_str().unwrap();
+    let (code, out, err) = groovelab(&["fit", "--preset", "paper-b4.9", "--data", f]);
+    assert_eq!(code, Some(2), "{out}");
+    assert!(
+        err.contains("do not fit the units the header gives")
+            && err.contains("fix the header (v_cm (cm/s), v_t (cm/s)) or give --speed-unit cm/s")
+            && err.lines().count() == 1,
+        "{err}"
+    );
+    // The option its error names wins over the header and fits the truth.
+    let (code, out, err) = groovelab(&[
+        "fit",
+        "--preset",
+        "paper-b4.9",
+        "--data",
+        f,
+        "--speed-unit",
+        "cm/s",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, Some(0), "{err}");
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    let mu = j["model_fit"]["mu"].as_f64().unwrap();
+    assert!((mu - scene().mu).abs() < 0.002, "μ_k = {mu}");
+    // A file in s and cm/s without units: the hint names cm/s only, not t (ms).
+    let file = dir.join("unitless.csv");
+    std::fs::write(
+        &file,
+        text.replace("t (s),v_cm (m/s),v_t (m/s)", "t,v_cm,v_t"),
+    )
+    .unwrap();
+    let (code, _, err) = groovelab(&["data", file.to_str().unwrap()]);
+    assert_eq!(code, Some(2));
+    assert!(
+        err.contains("give --speed-unit cm/s (or units in the header: v_cm (cm/s), v_t (cm/s))")
+            && !err.contains("ms"),
+        "{err}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A plain CSV track with the header `header` and rows of t (scaled by `tk`), x, y.
+fn csv_track(header: &str, track: &Track, tk: f64, keep: impl Fn(usize) -> bool) -> String {
+    let mut s = format!("{header}\n");
+    for i in (0..track.t.len()).filter(|&i| keep(i)) {
+        s += &format!(
+            "{:.4},{:.6},{:.6}\n",
+            track.t[i] * tk,
+            track.x[i],
+            track.y[i]
+        );
+    }
+    s
+}
+
+#[test]
+fn position_headers_microseconds_and_missing_frames_are_read_and_said() {
+    let track = filmed();
+    let dir = scratch("headers");
+    // `Position x (m)` names the axis; µs as the time unit.
+    let file = dir.join("us.csv");
+    let text = csv_track(
+        "Time (µs),Position x (m),Position y (m)",
+        &track,
+        1e6,
+        |_| true,
+    );
+    std::fs::write(&file, &text).unwrap();
+    let f = file.to_str().unwrap();
+    let (code, out, err) = groovelab(&["data", f, "--format", "json"]);
+    assert_eq!(code, Some(0), "{err}");
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(j[0]["units"][0]["unit"], "us", "{out}");
+    assert_eq!(j[0]["frames"].as_u64(), Some(track.t.len() as u64));
+    assert!(j[0]["missing"].as_array().unwrap().is_empty());
+    // Ten frames missing in the middle: said by `data` and by `fit`.
+    let file = dir.join("gap.csv");
+    let gap = 60..70;
+    let text = csv_track("t (s),x (m),y (m)", &track, 1.0, |i| !gap.contains(&i));
+    std::fs::write(&file, &text).unwrap();
+    let f = file.to_str().unwrap();
+    let (code, out, err) = groovelab(&["data", f]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(out.contains("10 frames missing: 10 at t = "), "{out}");
+    let (code, out, err) = groovelab(&["fit", "--preset", "paper-b4.9", "--data", f]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(out.contains("10 frames missing from the file"), "{out}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn data_describes_any_file_and_refuses_what_it_cannot_use_in_one_line() {
+    let dir = scratch("any");
+    // A ball rolling alone: no impact, described all the same.
+    let file = dir.join("alone.csv");
+    let mut text = String::from("t,x,y\n");
+    for i in 0..100 {
+        let t = f64::from(i) / 100.0;
+        text += &format!("{t:.2},{:.5},0.1\n", 0.4 * t);
+    }
+    std::fs::write(&file, &text).unwrap();
+    let (code, out, err) = groovelab(&["data", file.to_str().unwrap()]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(
+        out.contains("a single ball's track, no impact found") && out.contains("100 frames"),
+        "{out}"
+    );
+    // phyphox: accelerations only.
+    let file = dir.join("phone.csv");
+    std::fs::write(
+        &file,
+        "\"Time (s)\"\t\"Linear Acceleration x (m/s^2)\"\t\"Absolute acceleration (m/s^2)\"\n9.998000000E-3\t1.2E-1\t1.3E-1\n",
+    )
+    .unwrap();
+    let (code, _, err) = groovelab(&["data", file.to_str().unwrap()]);
+    assert_eq!(code, Some(2));
+    assert!(
+        err.contains("accelerations only") && err.lines().count() == 1,
+        "{err}"
+    );
+    // Hostile XML: entities, a node bomb, deep nesting: one line each, at once.
+    let panel = "<object class=\"org.opensourcephysics.cabrillo.tracker.TrackerPanel\">";
+    let laughs = format!(
+        "<?xml version=\"1.0\"?><!DOCTYPE x [<!ENTITY a \"aaaaaaaaaa\"><!ENTITY b \"&a;&a;&a;&a;&a;&a;&a;&a;&a;&a;\">]>{panel}&b;</object>"
+    );
+    let many = format!("{panel}{}</object>", "<p/>".repeat(4_100_000));
+    let deep = format!(
+        "{panel}{}{}</object>",
+        "<p>".repeat(200_000),
+        "</p>".repeat(200_000)
+    );
+    for (name, text, want) in [
+        ("laughs.trk", laughs, "DTD"),
+        ("many.trk", many, "nodes"),
+        ("deep.trk", deep, "no frame duration"),
+    ] {
+        let file = dir.join(name);
+        std::fs::write(&file, text).unwrap();
+        let (code, _, err) = groovelab(&["data", file.to_str().unwrap()]);
+        assert_eq!(code, Some(2), "{name}: {err}");
+        assert!(
+            err.contains(want) && err.lines().count() == 1,
+            "{name}: {err}"
+        );
+    }
+    // A decimal comma on the command line, as the app accepts it.
+    let (code, out, err) = groovelab(&[
+        "simulate",
+        "--preset",
+        "paper-b4.9",
+        "--width",
+        "4,9cm",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(code, Some(0), "{err}");
+    let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert_eq!(j["scene"]["width"].as_f64(), Some(0.049), "{}", j["scene"]);
+    let _ = std::fs::remove_dir_all(&dir);
+}

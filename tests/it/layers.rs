@@ -12,7 +12,7 @@
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
-use groovelab::cli::{DataArgs, Format, SceneArgs, SimulateArgs};
+use groovelab::cli::{DataArgs, SceneArgs, SimulateArgs, SimulateFormat};
 use groovelab::lab::SpanEnd;
 use groovelab::methods::Method;
 use groovelab::settings::params::Key;
@@ -729,7 +729,7 @@ fn pinning_keeps_the_snapshots_analyses_and_an_edit_starts_them_over() {
 }
 
 /// `simulate` on these options, in `format`.
-fn simulate(scene: &SceneArgs, format: Format) -> String {
+fn simulate(scene: &SceneArgs, format: SimulateFormat) -> String {
     let args = SimulateArgs {
         format,
         sample: None,
@@ -770,7 +770,7 @@ fn simulate_prints_the_apps_snapshot_of_the_same_scene_by_flags_or_keys() {
     apps.push((&cases[b_flag], keyed));
     for (args, app) in &apps {
         let now = &app.lab;
-        let json: Value = serde_json::from_str(&simulate(args, Format::Json)).unwrap();
+        let json: Value = serde_json::from_str(&simulate(args, SimulateFormat::Json)).unwrap();
         let name = args.preset.as_deref().unwrap();
         // The same span (a preset's data reach past the motion: paper-b3.5's to 0.64 s),
         // hence the same final state and the same events.
@@ -791,7 +791,7 @@ fn simulate_prints_the_apps_snapshot_of_the_same_scene_by_flags_or_keys() {
         let events = json["events"].as_array().unwrap().len();
         assert_eq!(events, now.solution.visible_events().count(), "{name}");
         // The table's story is the snapshot's: its verdict against the same rest band.
-        let table = simulate(args, Format::Table);
+        let table = simulate(args, SimulateFormat::Table);
         let verdict = table.lines().find_map(|l| l.strip_prefix("verdict  "));
         assert_eq!(
             verdict.map(str::to_string),

@@ -717,7 +717,7 @@ fn unpinning_keeps_the_cursor_inside_the_span() {
 /// The app on unequal-speeds (a preset without data) with a velocity file of `rows` rows of the user's own: a
 /// smooth decay with one spike.
 fn with_big_series(rows: usize) -> App {
-    use groovelab::lab::{OwnData, Settings};
+    use groovelab::lab::{Layers, OwnData};
     use groovelab::study::measured::{Measured, Series};
     let t: Vec<f64> = (0..rows)
         .map(|i| -0.2 + 1.2 * i as f64 / (rows - 1) as f64)
@@ -736,7 +736,7 @@ fn with_big_series(rows: usize) -> App {
         series: Series::Velocities(std::sync::Arc::new(m)),
         groove: None,
     };
-    let settings = Settings::new(
+    let settings = Layers::new(
         Preset::load("unequal-speeds").unwrap(),
         SceneSpec::default(),
     );

@@ -2,7 +2,7 @@
 //! numbers are checked against the closed forms and conservation laws, so a recorded
 //! value is never trusted just because the program printed it.
 
-use groovelab::cli::{Format, SimulateArgs, simulate};
+use groovelab::cli::{SimulateArgs, SimulateFormat, simulate};
 use groovelab::physics::closed_form as cf;
 use groovelab::physics::model;
 use groovelab::settings::spec::SceneSpec;
@@ -17,7 +17,7 @@ fn run_json(preset: &str) -> Value {
     let out = simulate(
         &args,
         &SimulateArgs {
-            format: Format::Json,
+            format: SimulateFormat::Json,
             sample: None,
             method: groovelab::methods::Method::Exact,
             dt: None,

@@ -345,7 +345,7 @@ fn render_in_process(args: &[&str]) -> Result<String, String> {
     full.extend_from_slice(args);
     let cli = groovelab::cli::Cli::try_parse_from(&full).map_err(|e| e.to_string())?;
     match groovelab::cli::run(&cli) {
-        Ok(groovelab::cli::Outcome::Print(text)) => Ok(text),
+        Ok(groovelab::cli::Response::Print(text)) => Ok(text),
         Ok(_) => Err("render gave no text".into()),
         Err(e) => Err(e.to_string()),
     }

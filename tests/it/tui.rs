@@ -729,7 +729,7 @@ fn the_methods_view_of_a_long_span_is_cut_and_says_where() {
     let (_, span) = p.spec.resolve().unwrap();
     let flags = groovelab::settings::spec::SceneSpec::default()
         .with(groovelab::settings::params::Key::Mu, 1e-6);
-    let lab = groovelab::lab::Lab::new(groovelab::lab::Settings::new(p, flags), None).unwrap();
+    let lab = groovelab::lab::Lab::new(groovelab::lab::Layers::new(p, flags), None).unwrap();
     let mut a = App::new(lab, no_user_presets());
     assert!(a.lab.solution.t_end > 1e5);
     press(&mut a, "c");
@@ -1330,7 +1330,7 @@ fn a_applies_the_position_fit_of_a_track() {
 
 #[test]
 fn export_writes_the_run_as_csv_and_the_chart_as_svg() {
-    use groovelab::cli::{Format, SimulateArgs, simulate};
+    use groovelab::cli::{SimulateArgs, SimulateFormat, simulate};
     let dir = std::env::temp_dir().join(format!("groovelab-export-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
@@ -1350,7 +1350,7 @@ fn export_writes_the_run_as_csv_and_the_chart_as_svg() {
     let cli = simulate(
         &scene,
         &SimulateArgs {
-            format: Format::Csv,
+            format: SimulateFormat::Csv,
             sample: Some(1e-3),
             method: groovelab::methods::Method::Exact,
             dt: None,
@@ -1705,4 +1705,49 @@ fn a_step_from_the_limit_says_so() {
         );
         assert!(!status.contains("6 cm"), "{keys}: {status}");
     }
+}
+
+/// A component renders alone, headless, into any area: the Forces view drawn by
+/// itself is the very drawing the screen makes in the view's place (the compositor
+/// adds the panels around it, nothing inside it), so a test of the Forces view does
+/// not depend on the parameters panel.
+#[test]
+fn a_component_renders_alone_as_on_the_screen() {
+    use groovelab::tui::component::{Component, Ctx};
+    use groovelab::tui::screen::Screen;
+    use groovelab::tui::view::forces::Forces;
+    use ratatui::buffer::Buffer;
+    let mut a = app("paper-b4.9");
+    press(&mut a, "v");
+    a.t = 0.05;
+    let theme = Theme::new(Glyphs::UNICODE, true);
+    let area = Rect::new(0, 0, 120, 40);
+    let mut screen = Screen::default();
+    let mut whole = Buffer::empty(area);
+    screen.draw(&a, area, &mut whole, &theme);
+    let frame = screen.frame().unwrap();
+    let p = frame.panels.unwrap();
+    let middle = p.chart.union(p.info);
+    let cx = Ctx {
+        app: &a,
+        frame,
+        theme: &theme,
+    };
+    let mut alone = Buffer::empty(middle);
+    Forces.render(middle, &mut alone, &cx);
+    let text: String = (middle.top()..middle.bottom())
+        .flat_map(|y| (middle.left()..middle.right()).map(move |x| (x, y)))
+        .map(|(x, y)| alone[(x, y)].symbol().to_string())
+        .collect();
+    assert!(text.contains("Forces: side view"), "{text}");
+    for y in middle.top()..middle.bottom() {
+        for x in middle.left()..middle.right() {
+            assert_eq!(alone[(x, y)], whole[(x, y)], "cell ({x}, {y})");
+        }
+    }
+    // Alone in an area of its own (a small one), it draws there and nowhere else.
+    let small = Rect::new(0, 0, 80, 16);
+    let mut buf = Buffer::empty(small);
+    Forces.render(small, &mut buf, &cx);
+    assert!(buf.content.iter().any(|c| c.symbol() != " "));
 }

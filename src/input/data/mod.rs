@@ -64,7 +64,7 @@ pub fn load_pair(
     let rim = one(mark, &reading.mark)?;
     let track = ball.with_mark(&rim).map_err(|what| DataError {
         file: mark.0.clone(),
-        what,
+        what: what.to_string(),
     })?;
     prepare(RawSeries::Positions(track), &centre.0, reading, opts)
 }

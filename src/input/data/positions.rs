@@ -151,24 +151,55 @@ fn find_header(rows: &mut impl Iterator<Item = Row>) -> Result<(Vec<Row>, Row), 
     }
 }
 
+/// Why the lines above a position file's column names do not say its tracks.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum LayoutError {
+    #[error("a '#multi:' file needs a line of track names before the column names")]
+    NoTrackNames,
+    #[error(
+        "line {line}: a multi-track file must be tab, comma or semicolon separated (Tracker writes tabs)"
+    )]
+    SpaceSeparated { line: usize },
+}
+
+/// Why a data row of a position file cannot be read (`line`: the file's line).
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum RowError {
+    #[error("line {line}: more than {MAX_ROWS} data rows, allowed at most {MAX_ROWS}")]
+    TooMany { line: usize },
+    /// The cell of column `name`, as written, is no finite number.
+    #[error(
+        "line {line}: {name} = '{cell}' is not a finite number (an empty cell counts as missing)"
+    )]
+    NotANumber {
+        line: usize,
+        name: &'static str,
+        cell: String,
+    },
+    /// Times in s.
+    #[error(
+        "line {line}: t = {time} s does not increase (previous {prev} s), allowed strictly increasing times"
+    )]
+    NotIncreasing { line: usize, time: f64, prev: f64 },
+}
+
 /// Gives the columns without a track name the one the lines above them say: a
 /// multi-track file's names line, or a single-track file's title; returns the format.
-fn name_tracks(cols: &mut [Option<Col>], before: &[Row], sep: Sep) -> Result<&'static str, String> {
+fn name_tracks(
+    cols: &mut [Option<Col>],
+    before: &[Row],
+    sep: Sep,
+) -> Result<&'static str, LayoutError> {
     let multi = before
         .first()
         .is_some_and(|r| r.cell(0).to_lowercase().starts_with("#multi"));
     if multi {
         // The names line puts each track's name above its first column.
         let Some(names) = before.get(1) else {
-            return Err(
-                "a '#multi:' file needs a line of track names before the column names".into(),
-            );
+            return Err(LayoutError::NoTrackNames);
         };
         if sep == Sep::Space {
-            return Err(format!(
-                "line {}: a multi-track file must be tab, comma or semicolon separated (Tracker writes tabs)",
-                names.line
-            ));
+            return Err(LayoutError::SpaceSeparated { line: names.line });
         }
         let mut current = String::new();
         for (j, col) in cols.iter_mut().enumerate() {
@@ -275,7 +306,7 @@ pub(super) fn read_table(
     let mut cols: Vec<Option<Col>> = (0..header.len())
         .map(|i| position_column(header.cell(i)))
         .collect();
-    let format = name_tracks(&mut cols, &before, table.sep).map_err(err)?;
+    let format = name_tracks(&mut cols, &before, table.sep).map_err(|e| err(e.to_string()))?;
     let format = match format {
         "CSV" if (0..header.len()).any(|i| header.cell(i).contains(':')) => {
             "Logger Pro / Graphical Analysis"
@@ -322,7 +353,7 @@ pub(super) fn read_table(
         y: iy.map(|i| (i, units.factor(i, Axis::Y))),
         mark: im.map(|(a, b)| ((a, units.factor(a, Axis::X)), (b, units.factor(b, Axis::Y)))),
     };
-    read_rows(rows, &columns, &mut track).map_err(err)?;
+    read_rows(rows, &columns, &mut track).map_err(|e| err(e.to_string()))?;
     if track.x.iter().filter(|x| x.is_finite()).count() == 0 {
         return Err(err(format!(
             "no frame with a position x of '{}', expected rows of numbers below the header",
@@ -330,7 +361,7 @@ pub(super) fn read_table(
         )));
     }
     let given = units.given(it, ix);
-    check_track(&track, &given).map_err(err)?;
+    check_track(&track, &given).map_err(|e| err(e.to_string()))?;
     let notes = Notes {
         format: format.to_string(),
         tracks: names,
@@ -429,25 +460,23 @@ fn read_rows(
     rows: impl Iterator<Item = Row>,
     columns: &Columns,
     track: &mut Track,
-) -> Result<(), String> {
+) -> Result<(), RowError> {
     for row in rows {
         if track.t.len() == MAX_ROWS {
-            return Err(format!(
-                "line {}: more than {MAX_ROWS} data rows, allowed at most {MAX_ROWS}",
-                row.line
-            ));
+            return Err(RowError::TooMany { line: row.line });
         }
-        let value = |(i, f): (usize, f64), name: &str| -> Result<f64, String> {
+        let value = |(i, f): (usize, f64), name: &'static str| -> Result<f64, RowError> {
             let c = row.cell(i);
             if missing(c) {
                 return Ok(f64::NAN);
             }
-            number(c).map(|v| v * f).ok_or_else(|| {
-                format!(
-                    "line {}: {name} = '{c}' is not a finite number (an empty cell counts as missing)",
-                    row.line
-                )
-            })
+            number(c)
+                .map(|v| v * f)
+                .ok_or_else(|| RowError::NotANumber {
+                    line: row.line,
+                    name,
+                    cell: c.to_string(),
+                })
         };
         let time = value(columns.t, "t")?;
         if time.is_nan() {
@@ -456,10 +485,11 @@ fn read_rows(
         if let Some(&prev) = track.t.last()
             && time <= prev
         {
-            return Err(format!(
-                "line {}: t = {time} s does not increase (previous {prev} s), allowed strictly increasing times",
-                row.line
-            ));
+            return Err(RowError::NotIncreasing {
+                line: row.line,
+                time,
+                prev,
+            });
         }
         track.t.push(time);
         track.x.push(value(columns.x, "x")?);

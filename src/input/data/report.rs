@@ -97,7 +97,7 @@ pub fn inspect(
                 speed: None,
                 impacts: vec![0.0],
                 impact_note: format!(
-                    "first impact at t = 0 (the times are moved so){}",
+                    "first impact found; the times above are from it (t = 0){}",
                     if m.mirrored {
                         "; the file's x runs away from the other ball: read mirrored"
                     } else {

@@ -2,6 +2,8 @@
 //! size a ball in a groove has: a header without units whose numbers are plainly ms,
 //! cm or mm is refused with what the numbers look like and the option that reads them.
 
+use std::fmt;
+
 use crate::settings::units::significant;
 use crate::study::measured::Track;
 
@@ -104,77 +106,144 @@ fn advice(flag: &str, unit: &str, header: &str, said_by: Option<&str>) -> String
     }
 }
 
+/// Why a position track's numbers are not of a ball in a groove, in the units they
+/// were read in (frame spacing in s, speeds in m/s); each says what the numbers look
+/// like and the unit that fits. `by`: who gave the unit (the header, an option).
+#[derive(Clone, Debug, PartialEq)]
+pub enum ScaleError {
+    /// No time unit given, and the frames are a second or more apart.
+    TimesNotSeconds { frame: f64 },
+    /// The time unit given puts the frames a second or more apart; `unit` fits.
+    FramesTooSlow {
+        frame: f64,
+        by: &'static str,
+        unit: &'static str,
+    },
+    /// The ball approaches slower than any ball in a groove; `unit`, if any, fits.
+    TooSlow {
+        speed: f64,
+        by: Option<&'static str>,
+        unit: Option<&'static str>,
+    },
+    /// No unit given, and as metres the ball is too fast; `unit` fits.
+    LengthsNotMetres { speed: f64, unit: &'static str },
+    /// In the units given the ball is too fast; `unit`, if any, fits.
+    TooFast {
+        frame: f64,
+        speed: f64,
+        by: Option<&'static str>,
+        unit: Option<&'static str>,
+    },
+}
+
+impl std::error::Error for ScaleError {}
+
+impl fmt::Display for ScaleError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            ScaleError::TimesNotSeconds { frame } => write!(
+                f,
+                "the header gives no time unit and the times do not look like s: frames {} apart (as s: {:.1} frames/s; as ms: {:.0} frames/s); if they are ms, give --time-unit ms (or a unit in the header: t (ms))",
+                significant(frame, 3),
+                1.0 / frame,
+                1e3 / frame
+            ),
+            ScaleError::FramesTooSlow { frame, by, unit } => write!(
+                f,
+                "in the time unit {by} gives the frames are {} s apart ({:.2} frames/s), slower than any video: if the times are {unit}, {}",
+                significant(frame, 3),
+                1.0 / frame,
+                advice("time-unit", unit, "t", Some(by))
+            ),
+            ScaleError::TooSlow { speed, by, unit } => {
+                let read_in = match by {
+                    Some(by) => format!("the length unit {by} gives"),
+                    None => "metres".into(),
+                };
+                let named = match unit {
+                    Some(u) => format!(
+                        ": if the positions are {u}, {}",
+                        advice("length-unit", u, "x", by)
+                    ),
+                    None => ": check the length unit (--length-unit, or the header's)".into(),
+                };
+                write!(
+                    f,
+                    "read in {read_in} the ball approaches at {} m/s, slower than any ball in a groove (at least {SLOWEST_BALL} m/s){named}",
+                    significant(speed, 3),
+                )
+            }
+            ScaleError::LengthsNotMetres { speed, unit } => write!(
+                f,
+                "the header gives no length unit and the positions do not look like metres: as m the ball approaches at {} m/s (as cm {} m/s, as mm {} m/s); if they are {unit}, give --length-unit {unit} (or units in the header: x ({unit}), y ({unit}))",
+                significant(speed, 3),
+                significant(speed * 1e-2, 3),
+                significant(speed * 1e-3, 3),
+            ),
+            ScaleError::TooFast {
+                frame,
+                speed,
+                by,
+                unit,
+            } => {
+                let named = match unit {
+                    Some(u) => format!(
+                        "; if the positions are {u}, {}",
+                        advice("length-unit", u, "x", by)
+                    ),
+                    None => String::new(),
+                };
+                write!(
+                    f,
+                    "in the units given the frames are {} s apart and the ball approaches at {} m/s, beyond any ball in a groove (below {FASTEST_BALL} m/s): check the time and length units (--time-unit, --length-unit, or the header's){named}",
+                    significant(frame, 3),
+                    significant(speed, 3),
+                )
+            }
+        }
+    }
+}
+
 /// A position track checked in the units it was read in: refused when its frames are
 /// a second or more apart (ms, not s), or its ball moves at 10 m/s or more (cm or mm,
 /// not m), or below 1 mm/s (metres read as mm), whether the units were stated or
-/// assumed. The message says what the numbers look like and names the unit that fits.
-pub fn check_track(track: &Track, given: &Given) -> Result<(), String> {
+/// assumed.
+pub fn check_track(track: &Track, given: &Given) -> Result<(), ScaleError> {
     let frame = frame_spacing(&track.t);
     let (tf, t_by) = given.time;
     let (lf, l_by) = given.length;
     if frame >= LONGEST_FRAME {
         let unit = fitting(&TIMES, tf, frame, 0.01, |f| f < LONGEST_FRAME).unwrap_or("ms");
         return Err(match t_by {
-            None => format!(
-                "the header gives no time unit and the times do not look like s: frames {} apart (as s: {:.1} frames/s; as ms: {:.0} frames/s); if they are ms, give --time-unit ms (or a unit in the header: t (ms))",
-                significant(frame, 3),
-                1.0 / frame,
-                1e3 / frame
-            ),
-            Some(by) => format!(
-                "in the time unit {by} gives the frames are {} s apart ({:.2} frames/s), slower than any video: if the times are {unit}, {}",
-                significant(frame, 3),
-                1.0 / frame,
-                advice("time-unit", unit, "t", t_by)
-            ),
+            None => ScaleError::TimesNotSeconds { frame },
+            Some(by) => ScaleError::FramesTooSlow { frame, by, unit },
         });
     }
     let Some(speed) = approach_speed(track) else {
         return Ok(());
     };
     let plausible = |v: f64| (SLOWEST_BALL..FASTEST_BALL).contains(&v);
+    let unit = fitting(&LENGTHS, lf, speed, TYPICAL_SPEED, plausible);
     if speed < SLOWEST_BALL {
-        let named = fitting(&LENGTHS, lf, speed, TYPICAL_SPEED, plausible)
-            .map(|u| {
-                format!(
-                    ": if the positions are {u}, {}",
-                    advice("length-unit", u, "x", l_by)
-                )
-            })
-            .unwrap_or_else(|| ": check the length unit (--length-unit, or the header's)".into());
-        return Err(format!(
-            "read in {} the ball approaches at {} m/s, slower than any ball in a groove (at least {SLOWEST_BALL} m/s){named}",
-            match l_by {
-                Some(by) => format!("the length unit {by} gives"),
-                None => "metres".into(),
-            },
-            significant(speed, 3),
-        ));
+        return Err(ScaleError::TooSlow {
+            speed,
+            by: l_by,
+            unit,
+        });
     }
     if speed < FASTEST_BALL {
         return Ok(());
     }
     if l_by.is_none() && t_by.is_none() {
-        let unit = fitting(&LENGTHS, lf, speed, TYPICAL_SPEED, plausible).unwrap_or("mm");
-        return Err(format!(
-            "the header gives no length unit and the positions do not look like metres: as m the ball approaches at {} m/s (as cm {} m/s, as mm {} m/s); if they are {unit}, give --length-unit {unit} (or units in the header: x ({unit}), y ({unit}))",
-            significant(speed, 3),
-            significant(speed * 1e-2, 3),
-            significant(speed * 1e-3, 3),
-        ));
+        let unit = unit.unwrap_or("mm");
+        return Err(ScaleError::LengthsNotMetres { speed, unit });
     }
-    let named = match fitting(&LENGTHS, lf, speed, TYPICAL_SPEED, plausible) {
-        Some(u) if unit_name(&LENGTHS, lf).is_some() => format!(
-            "; if the positions are {u}, {}",
-            advice("length-unit", u, "x", l_by)
-        ),
-        _ => String::new(),
-    };
-    Err(format!(
-        "in the units given the frames are {} s apart and the ball approaches at {} m/s, beyond any ball in a groove (below {FASTEST_BALL} m/s): check the time and length units (--time-unit, --length-unit, or the header's){named}",
-        significant(frame, 3),
-        significant(speed, 3),
-    ))
+    Err(ScaleError::TooFast {
+        frame,
+        speed,
+        by: l_by,
+        unit: unit.filter(|_| unit_name(&LENGTHS, lf).is_some()),
+    })
 }
 
 #[cfg(test)]
@@ -215,7 +284,7 @@ mod tests {
             time: (1.0, None),
             length: (1e-3, Some("the header")),
         };
-        let e = check_track(&track(0.6e-3), &mm).unwrap_err();
+        let e = check_track(&track(0.6e-3), &mm).unwrap_err().to_string();
         assert!(
             e.contains("slower than any ball")
                 && e.contains(
@@ -224,18 +293,18 @@ mod tests {
             "{e}"
         );
         // Mostly the slow roll after the impact: the approach still decides.
-        let e = check_track(&track(60.0), &none).unwrap_err();
+        let e = check_track(&track(60.0), &none).unwrap_err().to_string();
         assert!(
             e.contains("approaches at 60 m/s") && e.contains("--length-unit cm"),
             "{e}"
         );
-        let e = check_track(&track(600.0), &none).unwrap_err();
+        let e = check_track(&track(600.0), &none).unwrap_err().to_string();
         assert!(e.contains("--length-unit mm"), "{e}");
         let given = Given {
             time: (1.0, Some("--time-unit")),
             length: (1.0, None),
         };
-        let e = check_track(&track(600.0), &given).unwrap_err();
+        let e = check_track(&track(600.0), &given).unwrap_err().to_string();
         assert!(
             e.contains("in the units given") && e.contains("give --length-unit mm"),
             "{e}"
@@ -247,7 +316,7 @@ mod tests {
         };
         let mut slow = track(0.6);
         slow.t.iter_mut().for_each(|t| *t *= 1e3);
-        let e = check_track(&slow, &stated).unwrap_err();
+        let e = check_track(&slow, &stated).unwrap_err().to_string();
         assert!(
             e.contains("fix the header (t (ms)) or give --time-unit ms"),
             "{e}"

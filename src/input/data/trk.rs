@@ -234,7 +234,7 @@ pub(super) fn read(text: &str, file: &str, reading: &Reading) -> Result<(Track, 
         time: (1.0, Some("the project")),
         length: (factor.si, Some(factor.by)),
     };
-    check_track(&track, &given).map_err(err)?;
+    check_track(&track, &given).map_err(|e| err(e.to_string()))?;
     let notes = Notes {
         format: FORMAT.into(),
         tracks: names,

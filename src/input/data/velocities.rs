@@ -141,15 +141,17 @@ pub(super) fn read_table(
             )));
         }
     }
-    approach_seen(&t, impact).map_err(err)?;
+    approach_seen(&t, impact).map_err(|e| err(e.to_string()))?;
     let m = Measured {
         mirrored,
         ..Measured::velocities(t, v_cm, v_t)
     };
     m.check_magnitudes().map_err(|e| err(e.to_string()))?;
-    units.check_plausible(&m.t, &m.v_cm, &m.v_t).map_err(err)?;
+    units
+        .check_plausible(&m.t, &m.v_cm, &m.v_t)
+        .map_err(|e| err(e.to_string()))?;
     let notes = Notes {
-        format: "velocities (t, v_cm, v_t)".into(),
+        format: "table (t, v_cm, v_t)".into(),
         tracks: Vec::new(),
         units: units.notes(),
     };
@@ -164,13 +166,115 @@ struct Units {
     v_t: (f64, Option<&'static str>),
 }
 
-/// One unit that does not fit the numbers: what they look like, the unit that fits,
-/// its option and the header cells that would state it.
-struct Misfit {
-    looks: String,
-    unit: &'static str,
-    flag: String,
-    header: Vec<String>,
+/// One unit that does not fit the numbers, what they look like in it and the unit
+/// that fits.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Misfit {
+    /// Frames `frame` apart in the file's time unit, `rate` frames per s read as s,
+    /// `unit_rate` read as `unit`.
+    Times {
+        frame: f64,
+        rate: f64,
+        unit_rate: f64,
+        unit: &'static str,
+    },
+    /// Speeds up to `fastest` in the file's unit (`beyond`: too fast, else too slow
+    /// as m/s), `as_unit` m/s read as `unit`.
+    Speeds {
+        fastest: f64,
+        beyond: bool,
+        as_unit: f64,
+        unit: &'static str,
+    },
+}
+
+impl Misfit {
+    fn unit(&self) -> &'static str {
+        match self {
+            Misfit::Times { unit, .. } | Misfit::Speeds { unit, .. } => unit,
+        }
+    }
+
+    /// The option that reads the numbers in the unit that fits.
+    fn flag(&self) -> String {
+        match self {
+            Misfit::Times { unit, .. } => format!("--time-unit {unit}"),
+            Misfit::Speeds { unit, .. } => format!("--speed-unit {unit}"),
+        }
+    }
+
+    /// The header cells that would state the unit that fits.
+    fn header(&self) -> Vec<String> {
+        match self {
+            Misfit::Times { unit, .. } => vec![format!("t ({unit})")],
+            Misfit::Speeds { unit, .. } => vec![format!("v_cm ({unit})"), format!("v_t ({unit})")],
+        }
+    }
+
+    /// What the numbers look like.
+    fn looks(&self) -> String {
+        match *self {
+            Misfit::Times {
+                frame,
+                rate,
+                unit_rate,
+                unit,
+            } => format!(
+                "frames {} apart (as s: {rate:.1} frames/s; as {unit}: {unit_rate:.0} frames/s)",
+                significant(frame, 3),
+            ),
+            Misfit::Speeds {
+                fastest,
+                beyond,
+                as_unit,
+                unit,
+            } => format!(
+                "speeds up to {} (as m/s {} any ball in a groove; as {unit} {} m/s)",
+                significant(fastest, 3),
+                if beyond { "beyond" } else { "slower than" },
+                significant(as_unit, 3)
+            ),
+        }
+    }
+}
+
+/// A velocity file's numbers that are plainly not in the units they were read in:
+/// what does not fit, and who stated the units (none: they were assumed SI).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Implausible {
+    pub misfits: Vec<Misfit>,
+    pub stated: Vec<&'static str>,
+}
+
+impl std::error::Error for Implausible {}
+
+impl std::fmt::Display for Implausible {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let misfits = &self.misfits;
+        let units: Vec<&str> = misfits.iter().map(|m| m.unit()).collect();
+        let flags: Vec<String> = misfits.iter().map(|m| m.flag()).collect();
+        let header: Vec<String> = misfits.iter().flat_map(|m| m.header()).collect();
+        let looks: Vec<String> = misfits.iter().map(|m| m.looks()).collect();
+        let (units, flags, header) = (units.join(" and "), flags.join(" "), header.join(", "));
+        if self.stated.is_empty() {
+            return write!(
+                f,
+                "the header gives no units and the numbers do not look like s and m/s: {}; if they are {units}, give {flags} (or units in the header: {header})",
+                looks.join(", ")
+            );
+        }
+        let fix = if self.stated.contains(&"the header") {
+            format!("fix the header ({header}) or give {flags}")
+        } else {
+            format!("give {flags}")
+        };
+        write!(
+            f,
+            "the numbers do not fit the units {}: {}; if they are {units}, {fix}",
+            stated_text(&self.stated),
+            looks.join(", ")
+        )
+    }
 }
 
 impl Units {
@@ -204,73 +308,38 @@ impl Units {
     /// stated or assumed: frames a second or more apart (ms, not s), speeds of 10 m/s
     /// or more (cm/s, not m/s) or all below 1 mm/s (m/s read as mm/s). The error says
     /// what the numbers look like and names the unit that fits and its option.
-    fn check_plausible(&self, t: &[f64], v_cm: &[f64], v_t: &[f64]) -> Result<(), String> {
+    fn check_plausible(&self, t: &[f64], v_cm: &[f64], v_t: &[f64]) -> Result<(), Implausible> {
         let frame = frame_spacing(t);
         let fastest = v_cm.iter().chain(v_t).fold(0.0_f64, |a, v| a.max(v.abs()));
         let mut misfits = Vec::new();
         if frame >= LONGEST_FRAME {
             let unit =
                 fitting(&TIMES, self.time.0, frame, 0.01, |f| f < LONGEST_FRAME).unwrap_or("ms");
-            misfits.push(Misfit {
-                looks: format!(
-                    "frames {} apart (as s: {:.1} frames/s; as {unit}: {:.0} frames/s)",
-                    significant(frame / self.time.0, 3),
-                    1.0 / frame,
-                    1.0 / (frame / self.time.0 * unit_factor_of(&TIMES, unit)),
-                ),
+            misfits.push(Misfit::Times {
+                frame: frame / self.time.0,
+                rate: 1.0 / frame,
+                unit_rate: 1.0 / (frame / self.time.0 * unit_factor_of(&TIMES, unit)),
                 unit,
-                flag: format!("--time-unit {unit}"),
-                header: vec![format!("t ({unit})")],
             });
         }
         let plausible = |v: f64| (SLOWEST_BALL..FASTEST_BALL).contains(&v);
         if fastest > 0.0 && !plausible(fastest) {
             let unit = fitting(&SPEEDS, self.v_cm.0, fastest, 0.5, plausible).unwrap_or("cm/s");
-            let as_unit = fastest / self.v_cm.0 * unit_factor_of(&SPEEDS, unit);
-            misfits.push(Misfit {
-                looks: format!(
-                    "speeds up to {} (as m/s {} any ball in a groove; as {unit} {} m/s)",
-                    significant(fastest / self.v_cm.0, 3),
-                    if fastest >= FASTEST_BALL {
-                        "beyond"
-                    } else {
-                        "slower than"
-                    },
-                    significant(as_unit, 3)
-                ),
+            misfits.push(Misfit::Speeds {
+                fastest: fastest / self.v_cm.0,
+                beyond: fastest >= FASTEST_BALL,
+                as_unit: fastest / self.v_cm.0 * unit_factor_of(&SPEEDS, unit),
                 unit,
-                flag: format!("--speed-unit {unit}"),
-                header: vec![format!("v_cm ({unit})"), format!("v_t ({unit})")],
             });
         }
         if misfits.is_empty() {
             return Ok(());
         }
-        let units: Vec<&str> = misfits.iter().map(|m| m.unit).collect();
-        let flags: Vec<&str> = misfits.iter().map(|m| m.flag.as_str()).collect();
-        let header: Vec<String> = misfits.iter().flat_map(|m| m.header.clone()).collect();
-        let looks: Vec<&str> = misfits.iter().map(|m| m.looks.as_str()).collect();
-        let stated: Vec<&str> = [self.time.1, self.v_cm.1, self.v_t.1]
+        let stated = [self.time.1, self.v_cm.1, self.v_t.1]
             .into_iter()
             .flatten()
             .collect();
-        let (units, flags, header) = (units.join(" and "), flags.join(" "), header.join(", "));
-        if stated.is_empty() {
-            return Err(format!(
-                "the header gives no units and the numbers do not look like s and m/s: {}; if they are {units}, give {flags} (or units in the header: {header})",
-                looks.join(", ")
-            ));
-        }
-        let fix = if stated.contains(&"the header") {
-            format!("fix the header ({header}) or give {flags}")
-        } else {
-            format!("give {flags}")
-        };
-        Err(format!(
-            "the numbers do not fit the units {}: {}; if they are {units}, {fix}",
-            stated_text(&stated),
-            looks.join(", ")
-        ))
+        Err(Implausible { misfits, stated })
     }
 }
 
@@ -330,16 +399,25 @@ fn approach_sign(t: &[f64], v_cm: &[f64], impact_at: Option<f64>) -> f64 {
 /// At least [`FRAMES_BEFORE`] of the times `t` (impact at 0, `impact` in the file's
 /// time) up to the impact; a frame that straddles it (the paper's convention) shows
 /// the approach too.
-fn approach_seen(t: &[f64], impact: f64) -> Result<(), String> {
+fn approach_seen(t: &[f64], impact: f64) -> Result<(), TooFewBefore> {
     let before = t.partition_point(|&x| x <= 0.0);
     if before >= FRAMES_BEFORE {
         return Ok(());
     }
-    Err(format!(
-        "only {before} frame{} before the impact at t = {} s, at least {FRAMES_BEFORE} needed to see the approach (start the recording before the balls meet)",
-        if before == 1 { "" } else { "s" },
-        crate::settings::units::significant(impact, 4)
-    ))
+    Err(TooFewBefore { before, impact })
+}
+
+/// A velocity file with fewer than [`FRAMES_BEFORE`] frames up to its first impact
+/// (`impact`: its time in the file's time, s).
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error(
+    "only {before} frame{} before the impact at t = {} s, at least {FRAMES_BEFORE} needed to see the approach (start the recording before the balls meet)",
+    if *before == 1 { "" } else { "s" },
+    crate::settings::units::significant(*impact, 4)
+)]
+pub struct TooFewBefore {
+    pub before: usize,
+    pub impact: f64,
 }
 
 /// Fewest frames up to the first impact (a frame at it counts) a velocity file needs:

@@ -5,7 +5,7 @@
 //! list reports changes, one event each: a ball is called at rest only if it stays at
 //! rest until something acts on it, and a pressed contact starts and ends once.
 
-use crate::physics::model::{self, BallState, Groove, Phase, slip};
+use crate::physics::model::{self, BallState, Phase, Rails, slip};
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{
     Event, EventKind, Ledger, Segment, SeriesSum, Solution, Who, end_time, segment_losses,
@@ -92,7 +92,7 @@ struct ImpactRecord {
 }
 
 struct Engine {
-    groove: Groove,
+    groove: Rails,
     mass: [f64; 2],
     radius: f64,
     restitution: f64,

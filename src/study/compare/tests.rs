@@ -13,14 +13,11 @@ fn own_scene() -> Scene {
         v0: 0.8,
     };
     Scene {
-        radius: 0.0275,
         width: 0.0431,
-        mu: 0.17,
-        g: 9.81,
         restitution: 0.93,
-        rolling_resistance: 0.0,
         left: ball,
         right: Ball { v0: 0.0, ..ball },
+        ..Scene::default()
     }
 }
 

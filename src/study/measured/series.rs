@@ -168,12 +168,27 @@ pub struct Track {
     pub format: &'static str,
 }
 
+/// Two one-track exports with no frame in common: the centre's and the mark's first
+/// and last times, s.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error(
+    "no frame of the mark's track at a time of the centre's (centre t = {} … {} s, mark t = {} … {} s), expected two tracks of the same video",
+    centre.0,
+    centre.1,
+    mark.0,
+    mark.1
+)]
+pub struct NoCommonFrame {
+    pub centre: (f64, f64),
+    pub mark: (f64, f64),
+}
+
 impl Track {
     /// This track (the ball's centre) with the centre of `other` as its rim mark, the
     /// mark's frames matched to this track's by time (within a quarter of a frame; a
     /// frame without a match is a missing mark). For two one-track exports of the same
     /// video.
-    pub fn with_mark(mut self, other: &Track) -> Result<Track, String> {
+    pub fn with_mark(mut self, other: &Track) -> Result<Track, NoCommonFrame> {
         let mut gaps: Vec<f64> = self.t.windows(2).map(|w| w[1] - w[0]).collect();
         gaps.sort_by(f64::total_cmp);
         let frame = gaps.get(gaps.len() / 2).copied().unwrap_or(f64::INFINITY);
@@ -194,13 +209,14 @@ impl Track {
             }
         }
         if matched == 0 {
-            return Err(format!(
-                "no frame of the mark's track at a time of the centre's (centre t = {} … {} s, mark t = {} … {} s), expected two tracks of the same video",
-                self.t.first().unwrap_or(&f64::NAN),
-                self.t.last().unwrap_or(&f64::NAN),
-                other.t.first().unwrap_or(&f64::NAN),
-                other.t.last().unwrap_or(&f64::NAN),
-            ));
+            let span = |t: &[f64]| {
+                let end = |v: Option<&f64>| v.copied().unwrap_or(f64::NAN);
+                (end(t.first()), end(t.last()))
+            };
+            return Err(NoCommonFrame {
+                centre: span(&self.t),
+                mark: span(&other.t),
+            });
         }
         self.mark = Some((mx, my));
         self.mark_name = Some(other.centre_name.clone());

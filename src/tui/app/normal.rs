@@ -44,7 +44,7 @@ impl App {
             if let Status::Info(done) = &self.status {
                 self.status = Status::Info(format!("{done}, at the limit{why}"));
             }
-        } else if matches!(&refused, SceneError::OutOfRange { name, .. } if *name == p.symbol) {
+        } else if matches!(refused, SceneError::OutOfRange { key, .. } if key == p.key) {
             // Already at the limit: say so, never naming a value nobody typed.
             let value = if hidden {
                 String::new()
@@ -117,8 +117,7 @@ impl App {
                 self.show_positions = !self.show_positions;
                 self.show_energy = false;
             }
-            Action::ToggleMethods => self.toggle_view(View::Methods),
-            Action::ToggleForces => self.toggle_view(View::Forces),
+            Action::ShowView(view) => self.toggle_view(view),
             Action::Predict => self.ask_prediction(),
             Action::HideWidth => self.toggle_hide_width(),
             Action::Undo => self.undo(),
@@ -128,8 +127,6 @@ impl App {
                 self.work_axis = self.work_axis.next();
                 self.status = Status::Info(format!("work axis: {}", self.work_axis.name()));
             }
-            Action::ToggleMap => self.toggle_view(View::Map),
-            Action::ToggleFit => self.toggle_fit_view(),
             Action::FitStartEarlier => self.move_window(false, false),
             Action::FitStartLater => self.move_window(false, true),
             Action::FitEndEarlier => self.move_window(true, false),
@@ -369,8 +366,8 @@ impl App {
         );
     }
 
-    fn toggle_fit_view(&mut self) {
-        self.toggle_view(View::Fit);
+    /// What opening `view` says: the Fit view without data, that there is none.
+    fn opened(&mut self) {
         if self.fit_view() && self.lab.measured().is_none() {
             self.status = Status::Error(format!(
                 "preset {} has no measured data to fit (the paper-b* presets have)",
@@ -430,6 +427,7 @@ impl App {
         } else {
             view
         };
+        self.opened();
     }
 
     fn open_scrolling(&mut self, mode: Mode) {

@@ -16,6 +16,8 @@ use crate::physics::model::BallState;
 use crate::physics::solution::{EnergySplit, EventKind, Snapshot, Who};
 use crate::settings::units::Dimension;
 use crate::tui::app::{App, ChartBall};
+use crate::tui::chart::Chart;
+use crate::tui::component::{Component, Ctx};
 use crate::tui::plot::{Draw, Plot, Series, VLine, nice_ticks};
 use crate::tui::theme::Theme;
 use crate::tui::view_cache::ViewCache;
@@ -43,34 +45,6 @@ fn event_lines(app: &App, balls: &[Who], theme: &Theme) -> Vec<VLine> {
         .collect()
 }
 
-/// A chart laid out for one frame: its title's wordings (longest first), the plot
-/// with the measured series thinned to its cells, and where its data cells are (a
-/// click or drag finds its time there, without building the chart again).
-#[derive(Clone, Debug)]
-pub struct Chart {
-    titles: Vec<String>,
-    plot: Plot,
-    data: Option<Rect>,
-}
-
-impl Chart {
-    /// How many points the chart hands to the plot (work counted: a million measured
-    /// rows are drawn as the cells they mark).
-    pub fn points(&self) -> usize {
-        self.plot.series.iter().map(|s| s.points.len()).sum()
-    }
-
-    /// The time under screen cell (`column`, `row`), if the cell is inside the plot
-    /// (what a click on the chart seeks to).
-    pub fn time_at(&self, column: u16, row: u16) -> Option<f64> {
-        let plot = self.data?;
-        if row < plot.y || row >= plot.bottom() {
-            return None;
-        }
-        crate::tui::plot::time_at_column(self.plot.x_range, plot.x, plot.width, column)
-    }
-}
-
 /// The chart shown in `area` (before drawing, with the screen's caches), and whether
 /// measured series were thinned for it now.
 pub fn build(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Chart, bool) {
@@ -89,7 +63,7 @@ pub fn build(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Ch
 }
 
 /// Draws `chart` (built for `area`), changing nothing.
-pub fn render(chart: &Chart, area: Rect, buf: &mut Buffer, theme: &Theme) {
+fn render(chart: &Chart, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let title = super::panel::title_of(&chart.titles, area, theme);
     let blk = block(title, theme);
     let inner = blk.inner(area);
@@ -534,4 +508,15 @@ fn energy(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Vec<S
         "Energy, both balls [e]",
     ];
     (titles.map(String::from).to_vec(), plot)
+}
+
+/// The chart laid out in the frame as a component.
+pub struct ChartPanel;
+
+impl Component for ChartPanel {
+    fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
+        if let Some(chart) = &cx.frame.chart {
+            render(chart, area, buf, cx.theme);
+        }
+    }
 }

@@ -11,6 +11,7 @@ use crate::lab::jobs::State;
 use crate::settings::units::{Dimension, show_small, with_uncertainty};
 use crate::study::fit::{self, ModelFit};
 use crate::tui::app::App;
+use crate::tui::component::{Component, Ctx};
 use crate::tui::theme::Theme;
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
@@ -410,4 +411,13 @@ fn both_fits(v: &ModelFit, p: &ModelFit, width: usize, lines: &mut Ranked<'stati
             theme.dim,
         )),
     ));
+}
+
+/// The Fit panel (the fits of the measured series) as a component.
+pub struct FitPanel;
+
+impl Component for FitPanel {
+    fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
+        render(cx.app, area, buf, cx.theme);
+    }
 }

@@ -11,6 +11,7 @@ use crate::physics::derived::{Derived, Summary};
 use crate::physics::story::After;
 use crate::settings::units::{Dimension, show, sig_figs};
 use crate::tui::app::App;
+use crate::tui::component::{Component, Ctx};
 use crate::tui::theme::Theme;
 
 /// A label (dimmed) and a value (plain): the two kinds of text of the panel.
@@ -389,6 +390,15 @@ pub fn percentages(parts: &[f64]) -> Vec<u32> {
         out[i] += 1;
     }
     out
+}
+
+/// The why panel (what happens and why) as a component.
+pub struct Why;
+
+impl Component for Why {
+    fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
+        render(cx.app, area, buf, cx.theme);
+    }
 }
 
 #[cfg(test)]

@@ -10,6 +10,7 @@ use super::panel::block;
 use crate::physics::closed_form;
 use crate::physics::derived::Regime;
 use crate::tui::app::App;
+use crate::tui::component::{Component, Ctx};
 use crate::tui::plot::{Draw, Plot, Series, VLine};
 use crate::tui::theme::Theme;
 
@@ -198,4 +199,14 @@ fn paper_figure(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         y_ticks: None,
     };
     plot.render(inner, buf, theme);
+}
+
+/// The regime map and the paper's figure as a component.
+pub struct Map;
+
+impl Component for Map {
+    fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
+        let grid = cx.frame.regimes.as_deref().unwrap_or(&[]);
+        render(cx.app, grid, area, buf, cx.theme);
+    }
 }

@@ -12,6 +12,7 @@ use crate::methods::Method;
 use crate::settings::units::{Dimension, fit_number, show};
 use crate::study::compare::{Row, RunStatus, fitted_order, outcome_until};
 use crate::tui::app::App;
+use crate::tui::component::{Component, Ctx};
 use crate::tui::plot::{Draw, Plot, Series};
 use crate::tui::theme::Theme;
 use crate::tui::vocabulary::WorkAxis;
@@ -283,6 +284,24 @@ fn legend_lines(app: &App, rows: &[Row], marks: bool, theme: &Theme) -> Ranked<'
         ));
     }
     lines
+}
+
+/// The Methods view's work–precision diagram as a component.
+pub struct MethodsDiagram;
+
+impl Component for MethodsDiagram {
+    fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
+        render_diagram(cx.app, area, buf, cx.theme);
+    }
+}
+
+/// The Methods view's runs list as a component.
+pub struct MethodRows;
+
+impl Component for MethodRows {
+    fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
+        render_rows(cx.app, area, buf, cx.theme);
+    }
 }
 
 #[cfg(test)]

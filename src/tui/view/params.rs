@@ -9,6 +9,7 @@ use super::panel::block;
 use crate::settings::params::Key;
 use crate::settings::units::{Dimension, fit_number};
 use crate::tui::app::{App, Mode, ROWS};
+use crate::tui::component::{Component, Ctx};
 use crate::tui::line::caret as caret_style;
 use crate::tui::theme::Theme;
 
@@ -144,5 +145,14 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         {
             buf[(inner.x + x, y)].set_style(caret_style(style));
         }
+    }
+}
+
+/// The parameters panel as a component.
+pub struct Params;
+
+impl Component for Params {
+    fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
+        render(cx.app, area, buf, cx.theme);
     }
 }

@@ -10,6 +10,7 @@ use super::panel::block;
 use crate::physics::derived::Regime;
 use crate::settings::units::{Dimension, significant};
 use crate::tui::app::App;
+use crate::tui::component::{Component, Ctx};
 use crate::tui::theme::Theme;
 use crate::tui::vocabulary::ANSWERS;
 
@@ -88,4 +89,13 @@ pub fn question(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         .wrap(Wrap { trim: false })
         .block(block(" Predict ", theme))
         .render(rect, buf);
+}
+
+/// The predict popup (the question before the impact) as a component.
+pub struct Question;
+
+impl Component for Question {
+    fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
+        question(cx.app, area, buf, cx.theme);
+    }
 }

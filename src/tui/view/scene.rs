@@ -12,6 +12,7 @@ use crate::physics::model::Phase;
 use crate::physics::solution::EventKind;
 use crate::tui::app::App;
 use crate::tui::canvas::Canvas;
+use crate::tui::component::{Component, Ctx};
 use crate::tui::theme::Theme;
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
@@ -403,4 +404,13 @@ fn pinned_line(app: &App, width: u16, theme: &Theme) -> Option<String> {
     }
     let cut: String = text.chars().take(width.saturating_sub(4)).collect();
     Some(g.text(&format!("{}… ", cut.trim_end())))
+}
+
+/// The scene panel (the balls in the groove) as a component.
+pub struct ScenePanel;
+
+impl Component for ScenePanel {
+    fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
+        render(cx.app, area, buf, cx.theme);
+    }
 }

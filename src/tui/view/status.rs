@@ -11,6 +11,7 @@ use ratatui::widgets::{Paragraph, Widget};
 use crate::settings::params::Param;
 use crate::settings::units::Dimension;
 use crate::tui::app::{App, Mode, ROWS, Status};
+use crate::tui::component::{Component, Ctx};
 use crate::tui::keys;
 use crate::tui::theme::{Glyphs, Theme};
 
@@ -200,6 +201,18 @@ fn typing_prompt(p: &Param) -> String {
         format!("{name}: a plain number (e.g. 0.17), Enter applies, Esc cancels")
     } else {
         format!("{name} in {unit} (or with a unit, e.g. {example}), Enter applies, Esc cancels")
+    }
+}
+
+/// The status line (top row of `area`) and hint bar (the row under it) as a component.
+pub struct StatusBar;
+
+impl Component for StatusBar {
+    fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
+        let [status, hints] =
+            ratatui::layout::Layout::vertical([ratatui::layout::Constraint::Length(1); 2])
+                .areas(area);
+        render(cx.app, status, hints, buf, cx.theme);
     }
 }
 

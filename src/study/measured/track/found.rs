@@ -29,6 +29,9 @@ pub struct Found {
     /// Those frames' times in the file, s, as runs `[first, last]`.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub mark_gaps: Vec<[f64; 2]>,
+    /// Frames absent from the file (its time jumps).
+    #[serde(flatten)]
+    pub skipped: Skipped,
     /// Frames per second (from the median spacing).
     pub frame_rate: f64,
     /// Estimated scatter of a tracked position, m.
@@ -63,6 +66,35 @@ pub struct Found {
     pub later_impacts: Vec<f64>,
     /// Median distance of the mark from the centre, m.
     pub mark_radius: Option<f64>,
+}
+
+/// Frames absent from a file: where its time jumps by more than one and a half frames.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct Skipped {
+    /// How many frames are missing.
+    #[serde(skip_serializing_if = "is_zero")]
+    pub frames_skipped: usize,
+    /// The times either side of each jump, s.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub skipped_gaps: Vec<[f64; 2]>,
+}
+
+impl Skipped {
+    /// The jumps of the times `t` (frames `dt` apart).
+    pub fn of(t: &[f64], dt: f64) -> Skipped {
+        let gaps: Vec<[f64; 2]> = t
+            .windows(2)
+            .filter(|w| w[1] - w[0] > 1.5 * dt)
+            .map(|w| [w[0], w[1]])
+            .collect();
+        Skipped {
+            frames_skipped: gaps
+                .iter()
+                .map(|g| ((g[1] - g[0]) / dt).round() as usize - 1)
+                .sum(),
+            skipped_gaps: gaps,
+        }
+    }
 }
 
 fn is_zero(n: &usize) -> bool {
@@ -109,6 +141,13 @@ impl Found {
                 self.frames_dropped,
                 self.frames + self.frames_dropped,
                 runs_text(&self.centre_gaps)
+            );
+        }
+        if self.skipped.frames_skipped > 0 {
+            s += &format!(
+                "{} frames missing from the file (its time jumps between {}): nothing filled in, the local fits reach across\n",
+                self.skipped.frames_skipped,
+                runs_text(&self.skipped.skipped_gaps)
             );
         }
         if self.mark_missing > 0 {

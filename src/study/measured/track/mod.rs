@@ -24,7 +24,7 @@ use crate::settings::units::{Dimension, show_small};
 use crate::study::fit::{self, FitError, Free, ModelFit};
 
 pub use derivative::Local;
-pub use found::Found;
+pub use found::{Found, Skipped};
 pub use impacts::TrackError;
 
 use derivative::{MIN_HALF_WINDOW, derivatives, median, scatter, unwrap};
@@ -295,6 +295,7 @@ pub fn derive(
         centre_gaps,
         mark_missing,
         mark_gaps,
+        skipped: Skipped::of(&track.t, dt),
         frame_rate: 1.0 / dt,
         scatter: sigma,
         half_window: n as f64 * dt,

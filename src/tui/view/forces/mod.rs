@@ -12,6 +12,7 @@ mod section;
 
 use parts::*;
 
+use crate::tui::component::{Component, Ctx};
 use chain::chain_view;
 use section::front_view;
 
@@ -137,4 +138,13 @@ fn ball_rows(app: &App, ball: usize, width: usize, theme: &Theme) -> Ranked<'sta
         ),
     ));
     ranked
+}
+
+/// The Forces view (front, side, chain) as a component.
+pub struct Forces;
+
+impl Component for Forces {
+    fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
+        render(cx.app, area, buf, cx.theme);
+    }
 }
