@@ -298,8 +298,21 @@ mod tests {
     fn every_flag_id_in_the_source_is_an_option() {
         let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/src/cli");
         let mut seen = 0;
-        for entry in std::fs::read_dir(dir).unwrap() {
-            let text = std::fs::read_to_string(entry.unwrap().path()).unwrap();
+        // The files of src/cli and of its folders (cli/fit/).
+        let mut files = Vec::new();
+        let mut dirs = vec![std::path::PathBuf::from(dir)];
+        while let Some(d) = dirs.pop() {
+            for entry in std::fs::read_dir(d).unwrap() {
+                let path = entry.unwrap().path();
+                if path.is_dir() {
+                    dirs.push(path);
+                } else {
+                    files.push(path);
+                }
+            }
+        }
+        for path in files {
+            let text = std::fs::read_to_string(path).unwrap();
             for piece in text.split("Flag(\"").skip(1) {
                 let id = piece.split('"').next().unwrap();
                 if id == "id" {

@@ -68,9 +68,10 @@ pub fn run(cli: &Cli) -> Result<Response, CliError> {
         Some(Command::Compare(args)) => {
             methods::compare(scene, &cli.data, args).map(Response::Print)
         }
-        Some(Command::Fit(args)) => {
-            fit::run(scene, &cli.scene, &cli.data, args).map(Response::Print)
-        }
+        Some(Command::Fit(args)) => deliver(args.output.as_deref(), || {
+            fit::run(scene, &cli.scene, &cli.data, args)
+        })
+        .map(Response::Print),
         Some(Command::Sweep(args)) => sweep::run(&cli.scene, args).map(Response::Print),
         Some(Command::Track(args)) => {
             track::run(&cli.scene, cli.data.scale, args).map(Response::Print)

@@ -175,6 +175,11 @@ pub fn lab(scene_args: &SceneArgs, data: &DataArgs) -> Result<Lab, CliError> {
     {
         settings.scene_file = data.data.first().map(|p| p.display().to_string());
     }
+    // Under the default preset (none named), the data give what they measure (v0)
+    // below the options and the file's lines: a preset named is the user's scene.
+    if let Some((series, _)) = loaded.as_ref().filter(|_| scene_args.preset.is_none()) {
+        settings.from_data = crate::lab::measured_values(series);
+    }
     let own = loaded.map(|(series, own_scene)| OwnData {
         groove: stated_groove(settings.preset(), &own_scene),
         name: data

@@ -37,10 +37,16 @@ fn measured(now: &Resolved) -> Option<Arc<Measured>> {
     now.data.as_ref().map(|d| Arc::clone(&d.measured))
 }
 
-/// The fits of the measured series in `window` (μ_k free); `None` without data.
+/// The fits of the measured series in `window` (the model the data support as the
+/// headline; v0 free in every model when the data gave it); `None` without data.
 pub fn fits(now: &Resolved, window: FitWindow) -> Option<impl Work<Result<Fits, FitError>>> {
     let (scene, m) = (now.scene, measured(now)?);
-    Some(move |ticket: &Ticket| fit::fit_all(&scene, &m, window, &[Free::Mu], ticket))
+    let ask = fit::Ask {
+        window,
+        free: None,
+        v0_measured: now.v0_measured,
+    };
+    Some(move |ticket: &Ticket| fit::fit_all(&scene, &m, &ask, ticket))
 }
 
 /// The model fitted to a position track's positions; `None` without one (no data, or

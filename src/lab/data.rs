@@ -10,7 +10,8 @@
 //! scene shows no data ([`in_use`]).
 
 use crate::physics::scene::Scene;
-use crate::settings::spec::SceneError;
+use crate::settings::params::Key;
+use crate::settings::spec::{SceneError, SceneSpec};
 use crate::settings::units::{Dimension, show};
 use crate::study::measured::Series;
 use crate::study::preset::Preset;
@@ -192,6 +193,31 @@ pub(super) fn same_data(a: Option<&InUse>, b: Option<&InUse>) -> bool {
                 && (matches!(a.whose, Whose::Own(_)) || a.series == b.series)
         }
         _ => false,
+    }
+}
+
+/// The approach speed of `series` (the scene's v0 it measures): a track's line through
+/// the frames before the first impact, a velocity series' mean v_cm over them
+/// ([`crate::study::fit::of_velocities`]); `None` where the data do not show it.
+pub fn approach(series: &Series) -> Option<crate::study::fit::Approach> {
+    use crate::study::fit::{Approach, of_velocities};
+    match series {
+        Series::Track(_, found) => Approach::of_track(
+            found.approach_speed,
+            found.approach_speed_se,
+            found.frames_before,
+        ),
+        Series::Velocities(m) => of_velocities(&m.t, &m.v_cm),
+    }
+}
+
+/// The scene values a series measures itself: both balls' v0 from the left ball's
+/// approach ([`approach`]; the right ball is not tracked, and the lab's scenes are
+/// symmetric); none where the data do not show the approach.
+pub fn measured_values(series: &Series) -> SceneSpec {
+    match approach(series) {
+        Some(a) => SceneSpec::default().with(Key::V0, a.speed),
+        None => SceneSpec::default(),
     }
 }
 

@@ -25,7 +25,7 @@ use crate::settings::spec::{SceneError, SceneSpec};
 use crate::study::measured::Series;
 use crate::study::preset::Preset;
 
-pub use data::{Groove, InUse, OtherGroove, OwnData, Whose};
+pub use data::{Groove, InUse, OtherGroove, OwnData, Whose, approach, measured_values};
 pub use resolved::{ChartPoint, MeasuredPoints, Pinned, Resolved, Story, differences, value_range};
 pub use settings::{Edit, Layers};
 pub use span::SpanEnd;

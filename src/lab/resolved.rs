@@ -42,6 +42,9 @@ pub type ChartPoint = (f64, f64);
 #[derive(Clone, Debug)]
 pub struct Resolved {
     pub scene: Scene,
+    /// The scene's v0 is the one the user's data measure (their approach), not one
+    /// given: a fit then frees it in every model.
+    pub v0_measured: bool,
     /// The span shown: `t_end` is always the shown end (see [`SpanEnd`]).
     pub span: Span,
     pub span_end: SpanEnd,
@@ -103,6 +106,7 @@ impl Resolved {
             .and_then(|m| fit::aligned_track(&scene, &solution, m))
             .map(Arc::from);
         Ok(Resolved {
+            v0_measured: settings.from_the_data(Key::V0),
             data_rms: m.map(|m| data_rms(&solution, m)),
             points: m.map(|m| Arc::new(MeasuredPoints::of(m, track_x.as_deref()))),
             track_x,

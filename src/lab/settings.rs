@@ -37,6 +37,9 @@ pub struct Layers {
     pub flags: SceneSpec,
     /// The data file whose `# scene` lines are among `flags`, as the user named it.
     pub scene_file: Option<String>,
+    /// The values the user's own data measure (v0 from the approach): over the
+    /// preset, under the flags, while the flags are in force and the data not dropped.
+    pub from_data: SceneSpec,
     /// The app's edits, oldest first.
     edits: Vec<Edit>,
 }
@@ -47,6 +50,7 @@ impl Layers {
             start: preset,
             flags,
             scene_file: None,
+            from_data: SceneSpec::default(),
             edits: Vec::new(),
         }
     }
@@ -109,6 +113,32 @@ impl Layers {
         self.edits.contains(&Edit::DropData)
     }
 
+    /// True when the settled value of `key` (e.g. `v0`) is the data's own: the data
+    /// layer gives it, and no flag in force or edit sets it or what replaces it (a
+    /// release height).
+    pub fn from_the_data(&self, key: Key) -> bool {
+        let Some(flags) = self.flags_in_force() else {
+            return false;
+        };
+        if self.data_dropped() || self.from_data.get(key).is_none() {
+            return false;
+        }
+        let mut upper = flags.clone();
+        for edit in self.in_force() {
+            if let Edit::Values(changes) = edit {
+                for &(k, v) in changes {
+                    upper.set(k, v);
+                }
+            }
+        }
+        let touched = |k: Key| {
+            crate::settings::params::PARAMS.iter().any(|p| {
+                (p.key == k || p.replaces == Some(k)) && upper.given().any(|(j, _)| j == p.key)
+            })
+        };
+        !key.param().sets.iter().any(|&k| touched(k))
+    }
+
     /// Sets every edit aside (the scene as the preset and the flags give it); false,
     /// and nothing added, when none that changes the scene is in force. Undo brings
     /// them back.
@@ -135,6 +165,9 @@ impl Layers {
             None => SpanEnd::Auto,
         };
         if let Some(flags) = self.flags_in_force() {
+            if !self.data_dropped() {
+                spec = spec.over(&self.from_data);
+            }
             let flags: Vec<(Key, f64)> = flags.given().collect();
             set_values(&mut spec, &mut end, &flags);
         }

@@ -170,7 +170,7 @@ fn a_tracker_one_track_export_reads_its_positions_only() {
     assert_eq!(j["track"]["centre"], "mass_A");
     assert!(j["track"]["mark"].is_null(), "{}", j["track"]);
     assert_eq!(j["track"]["frames"].as_u64(), Some(track.t.len() as u64));
-    let mu = j["position_fit"]["mu"].as_f64().unwrap();
+    let mu = j["model_fit"]["mu"].as_f64().unwrap();
     assert!((mu - MU).abs() < 0.003, "μ_k = {mu}");
     // What a centre alone cannot give is null with a reason, and never NaN on screen.
     assert!(j["line_fit"]["mu_t"].is_null());
@@ -222,7 +222,7 @@ fn the_centre_and_the_mark_as_two_tracker_files() {
     assert_eq!(j["track"]["mark"], "rim_mark");
     let r = j["track"]["mark_radius"].as_f64().unwrap();
     assert!((r - scene().radius).abs() < 1e-3, "mark radius {r}");
-    let mu = j["position_fit"]["mu"].as_f64().unwrap();
+    let mu = j["model_fit"]["mu"].as_f64().unwrap();
     assert!((mu - MU).abs() < 0.003, "μ_k = {mu}");
     // v_t is measured now: the line fit's μ_k,t is a number.
     assert!(
@@ -269,7 +269,7 @@ fn a_logger_pro_two_point_export_gives_centre_and_mark() {
     let j = fit_json(&[&file], &[]);
     assert_eq!(j["track"]["format"], "Logger Pro / Graphical Analysis");
     assert_eq!(j["track"]["mark"], "point 2");
-    let mu = j["position_fit"]["mu"].as_f64().unwrap();
+    let mu = j["model_fit"]["mu"].as_f64().unwrap();
     assert!((mu - MU).abs() < 0.003, "μ_k = {mu}");
     // "Run 1:" is a run prefix as well.
     std::fs::write(&file, text.replace("Latest:", "Run 1:")).unwrap();
@@ -515,7 +515,7 @@ fn a_track_without_units_in_cm_or_mm_names_the_length_unit() {
         );
         // Following the advice fits the truth.
         let j = fit_json(&[&file], &["--length-unit", unit]);
-        let mu = j["position_fit"]["mu"].as_f64().unwrap();
+        let mu = j["model_fit"]["mu"].as_f64().unwrap();
         assert!((mu - MU).abs() < 0.003, "{unit}: μ_k = {mu}");
     }
     // The units of an SI file given wrongly: said in words, not as an overflow.

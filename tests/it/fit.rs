@@ -200,7 +200,10 @@ fn paper_b4_4_has_one_verdict_everywhere() {
         "{}",
         preset.description
     );
-    let fit = String::from_utf8(groovelab(&["fit", "--preset", "paper-b4.4"]).stdout).unwrap();
+    // μ_k alone keeps the preset's v0 and e, so its v' is the preset's.
+    let fit =
+        String::from_utf8(groovelab(&["fit", "--preset", "paper-b4.4", "--free", "mu"]).stdout)
+            .unwrap();
     assert!(
         fit.contains(&format!("regime predicted {verdict}")),
         "{fit}"
@@ -290,6 +293,8 @@ fn a_users_csv_fits_like_the_preset() {
         "paper-b4.9",
         "--data",
         &path,
+        "--free",
+        "mu",
         "--format",
         "json",
     ]);
@@ -311,10 +316,24 @@ fn a_users_csv_fits_like_the_preset() {
             "{key}: {x} vs {y}"
         );
     }
-    assert!(
-        (a["model_fit"]["mu"].as_f64().unwrap() - b["model_fit"]["mu"].as_f64().unwrap()).abs()
-            < 1e-6
-    );
+    // The user's file gives v0 (its approach, 0.79278 m/s), the preset states it
+    // (0.7928 m/s): then v0 is free in every candidate model of the user's, and the
+    // models are compared on other frames (each leaves out those its impacts
+    // straddle), so the same μ_k model lands within its ± of the preset's, not on it.
+    let mu = |j: &serde_json::Value| {
+        let c = j["models"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|c| c["name"] == "mu");
+        let c = c.unwrap().clone();
+        (
+            c["parameters"][0]["value"].as_f64().unwrap(),
+            c["parameters"][0]["se"].as_f64().unwrap(),
+        )
+    };
+    let ((x, _), (y, se)) = (mu(&a), mu(&b));
+    assert!((x - y).abs() < 2.0 * se, "{x} vs {y} ± {se}");
     assert_eq!(a["model_fit"]["regime_observed"], "recollide");
     // The interface's fields are all there.
     for key in [
@@ -465,12 +484,15 @@ fn the_papers_table_disagrees_with_itself_and_fit_says_so() {
 fn a_mu_the_positions_do_not_determine_is_not_reported_as_fitted() {
     // A centre-only track on a flat table (b = 0): the position fit runs μ_k to the
     // edge of its physical range (it once returned μ_k ≈ 1e10 and said "agree").
+    // μ_k alone (`--free mu`): the headline would be the model the data support.
     let out = groovelab(&[
         "fit",
         "--preset",
         "flat-table",
         "--data",
         "docs/video/ball.txt",
+        "--free",
+        "mu",
     ]);
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(out.status.success(), "{text}");
@@ -493,11 +515,13 @@ fn a_mu_the_positions_do_not_determine_is_not_reported_as_fitted() {
         "flat-table",
         "--data",
         "docs/video/ball.txt",
+        "--free",
+        "mu",
         "--format",
         "json",
     ]);
     let json: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    let p = &json["position_fit"];
+    let p = &json["model_fit"];
     assert!(p["mu"].is_null() && p["mu_se"].is_null(), "{p}");
     assert_eq!(p["agrees"], false, "{p}");
     assert_eq!(p["not_identified"][0]["parameter"], "mu", "{p}");
@@ -801,9 +825,10 @@ fn flat_table() -> (
     );
     let screen = text(&app, (120, 40), false);
     let view = words(&screen, "verdict");
-    let State::Ready(Ok(p)) = app.fit.position_fit() else {
-        panic!("no position fit")
+    let State::Ready(Ok(f)) = app.fit.fits() else {
+        panic!("no fits")
     };
+    let p = &f.model_fit;
     // The table's model rows: a mark, the name (34 columns), RMS, AIC, BIC.
     let table_models: Vec<(String, f64)> = table
         .lines()
@@ -847,22 +872,21 @@ fn models_in_one_order((table, view): Listed) {
     );
 }
 
-/// Issue 19: the Fit view and `fit` give one verdict from one rule: a position fit
-/// whose μ_k lies on the edge of its range has none ("no verdict"), in both; it never
-/// DISAGREES in the view while the command says μ_k is not determined.
+/// Issue 19: the Fit view and `fit` give one verdict from one rule: a model that does
+/// not describe the data (the flat table's headline here: POOR FIT; its μ_k alone
+/// runs to the edge of its range) gets none that holds, in both; the view never
+/// DISAGREES while the command says otherwise.
 #[test]
 fn the_fit_view_and_the_fit_command_give_the_same_verdict() {
-    use groovelab::study::fit::Agreement;
     let ((cli, view, position), listed) = flat_table();
     models_in_one_order(listed);
-    assert_eq!(position, Agreement::MuNotDetermined);
+    assert!(!position.holds(), "{position:?}");
     assert_eq!(cli.len(), 2, "{cli:?}");
     assert_eq!(
         cli, view,
         "the table's verdicts {cli:?}, the view's {view:?}"
     );
     assert_eq!(cli[1], position.word());
-    assert_eq!(cli[1], "no verdict");
 }
 
 /// Issue 19: in the models table a value the data do not determine (here e, which the
@@ -1343,4 +1367,90 @@ fn rolling_resistance_is_found_from_a_start_without_it() {
         // The truth's own residual: about the 0.3 mm of noise, not millimetres.
         assert!(named.rms < 5e-4, "c_rr {c_rr}: RMS {}", named.rms);
     }
+}
+
+/// One synthetic measurement of the coverage test: a track (centre only, or with a
+/// rim mark) or a velocity series of `truth`, at `fps`, with seeded noise.
+fn synthetic(
+    truth: &Scene,
+    fps: f64,
+    kind: usize,
+    seed: u64,
+) -> groovelab::study::measured::Series {
+    use groovelab::study::video::{self, Format, Video};
+    let text = match kind {
+        0 | 1 => {
+            let v = Video {
+                fps,
+                seed,
+                mark: kind == 1,
+                ..Video::default()
+            };
+            video::write(&video::track(truth, &v), Format::TrackerMulti)
+        }
+        _ => velocity_file(truth, fps, 0.01, (seed as f64 * 0.618_034).fract(), seed),
+    };
+    data::load(
+        &text,
+        "synthetic.txt",
+        &data::Reading::default(),
+        &Default::default(),
+    )
+    .unwrap()
+}
+
+/// Issue 27: a track or velocity series at 60–240 frames/s, fitted with R and b only
+/// (no v0, no m: v0 from the data's approach, free in every model), gives the headline
+/// μ_k (the model the data support) within its stated ± of the truth at the stated
+/// rates: 68 % within 1σ and 95 % within 2σ, to binomial limits; and the headline is
+/// the very fit of its row in the models table.
+#[test]
+fn the_headline_intervals_cover_the_truth_at_their_rates() {
+    // 30 measurements: tracks without and with a mark and velocity series, each at 60,
+    // 120 and 240 frames/s, in scenes of other R, b, μ_k and v0 than any preset.
+    let mut z = Vec::new();
+    for k in 0..30u64 {
+        let kind = (k % 3) as usize;
+        let fps = [60.0, 120.0, 240.0][(k / 3 % 3) as usize];
+        let f = k as f64 / 30.0;
+        let truth = crate::common::symmetric(
+            0.015 + 0.0125 * f,
+            (0.6 + 0.9 * ((k * 7 % 30) as f64 / 30.0)) * (0.015 + 0.0125 * f),
+            0.12 + 0.13 * ((k * 11 % 30) as f64 / 30.0),
+            0.35 + 0.45 * ((k * 13 % 30) as f64 / 30.0),
+            1.0,
+        );
+        let series = synthetic(&truth, fps, kind, 2700 + k);
+        // What the user gives: R and b; v0 is what the data measure, the rest the
+        // default preset's (m = 167 g, μ_k = 0.17 to start from).
+        let v0 = groovelab::lab::approach(&series)
+            .expect("the approach is in the data")
+            .speed;
+        let scene = Scene {
+            radius: truth.radius,
+            width: truth.width,
+            ..crate::common::symmetric(0.0275, 0.049, 0.17, v0, 1.0)
+        };
+        let m = groovelab::study::measured::for_scene(&series, &scene).measured;
+        let ask = fit::Ask {
+            v0_measured: true,
+            ..fit::Ask::default()
+        };
+        let fits = fit::fit_all(&scene, &m, &ask, &groovelab::study::Quiet).unwrap();
+        let h = &fits.model_fit;
+        let row = fits.models.iter().find(|c| c.name == h.model).unwrap();
+        assert_eq!(
+            row.parameters[0].value, h.mu,
+            "{k}: the headline is its row's fit"
+        );
+        assert_eq!(row.parameters[0].se, Some(h.mu_se), "{k}");
+        z.push((h.mu - truth.mu) / h.mu_se);
+    }
+    let within = |n: f64| z.iter().filter(|z| z.abs() <= n).count();
+    let (one, two) = (within(1.0), within(2.0));
+    println!("within 1σ {one} of 30, within 2σ {two} of 30: {z:.2?}");
+    // Binomial(30, 0.683): mean 20.5, sd 2.55; binomial(30, 0.954): mean 28.6, sd 1.15;
+    // each within 2.5 sd.
+    assert!((15..=27).contains(&one), "{one} of 30 within 1σ: {z:.2?}");
+    assert!(two >= 26, "{two} of 30 within 2σ: {z:.2?}");
 }

@@ -242,7 +242,7 @@ fn fits_the_truth(file: &std::path::Path, extra: &[&str]) {
     let (code, out, err) = groovelab(&args);
     assert_eq!(code, Some(0), "{err}");
     let j: serde_json::Value = serde_json::from_str(&out).unwrap();
-    let fit = &j["position_fit"];
+    let fit = &j["model_fit"];
     let (mu, se) = (fit["mu"].as_f64().unwrap(), fit["mu_se"].as_f64().unwrap());
     let truth = scene().mu;
     assert!(

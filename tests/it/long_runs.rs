@@ -267,7 +267,16 @@ fn finer(m: &Measured, factor: usize) -> Measured {
 fn fit_thins_a_long_series_and_says_so() {
     let (scene, _, m) = paper();
     // The paper's series has 50-odd frames: used whole, and the JSON has no `every`.
-    let short = fit::fit_all(&scene, &m, (None, None), &[fit::Free::Mu], &Quiet).unwrap();
+    let short = fit::fit_all(
+        &scene,
+        &m,
+        &fit::Ask {
+            free: Some(vec![fit::Free::Mu]),
+            ..Default::default()
+        },
+        &Quiet,
+    )
+    .unwrap();
     assert_eq!(short.model_fit.every, None);
     let json = serde_json::to_string(&short).unwrap();
     assert!(!json.contains("\"every\""), "{json}");
@@ -298,22 +307,34 @@ fn fit_thins_a_long_series_and_says_so() {
 fn fit_stops_when_asked_and_matches_when_not() {
     let (scene, _, m) = paper();
     let stop = stop_after(5);
-    let r = fit::fit_all(&scene, &m, (None, None), &[fit::Free::Mu], &stop);
+    let r = fit::fit_all(
+        &scene,
+        &m,
+        &fit::Ask {
+            free: Some(vec![fit::Free::Mu]),
+            ..Default::default()
+        },
+        &stop,
+    );
     assert_eq!(r, Err(fit::FitError::Cancelled));
     assert_eq!(stop.ticks.load(Ordering::Relaxed), 5);
     let watched = fit::fit_all(
         &scene,
         &m,
-        (None, None),
-        &[fit::Free::Mu, fit::Free::V0],
+        &fit::Ask {
+            free: Some(vec![fit::Free::Mu, fit::Free::V0]),
+            ..Default::default()
+        },
         &stop_after(u64::MAX),
     )
     .unwrap();
     let quiet = fit::fit_all(
         &scene,
         &m,
-        (None, None),
-        &[fit::Free::Mu, fit::Free::V0],
+        &fit::Ask {
+            free: Some(vec![fit::Free::Mu, fit::Free::V0]),
+            ..Default::default()
+        },
         &Quiet,
     )
     .unwrap();

@@ -262,8 +262,10 @@ fn without_a_mark_the_fits_use_the_centre_only() {
     let all = fit::fit_all(
         &s,
         &l.measured,
-        (None, None),
-        &[Free::Mu],
+        &fit::Ask {
+            free: Some(vec![Free::Mu]),
+            ..Default::default()
+        },
         &groovelab::study::Quiet,
     )
     .unwrap();
@@ -396,17 +398,19 @@ fn cli_fits_the_example_video_end_to_end() {
     ]);
     assert!(out.status.success());
     let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    for key in ["line_fit", "model_fit", "position_fit", "track"] {
+    for key in ["line_fit", "model_fit", "velocity_fit", "track"] {
         assert!(j.get(key).is_some(), "{key}");
     }
-    let mu = j["position_fit"]["mu"].as_f64().unwrap();
+    // The headline is fitted to the positions; the same model to the velocities.
+    assert_eq!(j["model_fit"]["fitted_to"], "positions");
+    let mu = j["model_fit"]["mu"].as_f64().unwrap();
     assert!((mu - MU).abs() <= 0.002, "{mu}");
-    assert!((j["model_fit"]["mu"].as_f64().unwrap() - MU).abs() <= 0.004);
+    assert!((j["velocity_fit"]["mu"].as_f64().unwrap() - MU).abs() <= 0.004);
     assert_eq!(j["track"]["direction"].as_f64(), Some(1.0));
     // A velocity file still prints no position fit.
     let out = groovelab(&["fit", "--format", "json"]);
     let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
-    assert!(j.get("position_fit").is_none() && j.get("model_fit").is_some());
+    assert!(j.get("velocity_fit").is_none() && j["model_fit"]["fitted_to"] == "velocities");
 }
 
 #[test]
@@ -518,8 +522,10 @@ fn the_line_fits_of_a_marked_track_stop_at_rolling_and_the_regime_holds() {
         let f = fit::fit_all(
             &s,
             &l.measured,
-            (None, None),
-            &[Free::Mu],
+            &fit::Ask {
+                free: Some(vec![Free::Mu]),
+                ..Default::default()
+            },
             &groovelab::study::Quiet,
         )
         .unwrap();

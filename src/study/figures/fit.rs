@@ -201,8 +201,7 @@ mod tests {
         let fits = crate::study::fit::fit_all(
             &scene,
             &measured,
-            (None, None),
-            &[crate::study::fit::Free::Mu],
+            &crate::study::fit::Ask::default(),
             &crate::study::Quiet,
         )
         .unwrap();

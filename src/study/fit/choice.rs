@@ -11,10 +11,11 @@
 
 use serde::Serialize;
 
+use super::approach::APPROACH_FRAMES;
 use super::least_squares::{Target, labelled_residuals, with};
-use super::model::{Scored, scored_fit, scored_fit_within, thinned};
+use super::model::{ModelFit, Scored, scored_fit, scored_fit_within, thinned};
 use super::problem::{Evals, FitError, Free};
-use super::uncertainty::{Label, NotIdentified};
+use super::uncertainty::{Label, NotIdentified, effective_points};
 use crate::physics::scene::Scene;
 use crate::study::Progress;
 use crate::study::measured::series::Measured;
@@ -68,6 +69,13 @@ pub struct Candidate {
     pub bic: f64,
     /// True for the model named as the simplest the data support.
     pub supported: bool,
+    /// Its free values.
+    #[serde(skip)]
+    pub free: Vec<Free>,
+    /// The whole fit these values, ± and RMS are from: the headline and the app show
+    /// this one (one fit per model, the same everywhere).
+    #[serde(skip)]
+    pub fit: Box<ModelFit>,
 }
 
 impl Candidate {
@@ -97,15 +105,13 @@ fn supported(models: &[Candidate]) -> Option<usize> {
         .map(|(i, _)| i)
 }
 
-/// Fewest frames before the impact for v0 to be a candidate: the approach must be
-/// seen to be measured.
-const APPROACH_FRAMES: usize = 3;
-
 /// BIC difference below which a larger model is not preferred.
 const BIC_MARGIN: f64 = 2.0;
 
 /// The candidate models' free values for the series `m`.
-fn candidates(m: &Measured) -> Vec<Vec<Free>> {
+/// With `v0_measured` (the scene's v0 was taken from the data, not given) v0 is free
+/// in every one: a measured value carries its error into μ_k, a given one does not.
+pub(super) fn candidates(m: &Measured, v0_measured: bool) -> Vec<Vec<Free>> {
     let base = [
         vec![Free::Mu],
         vec![Free::Mu, Free::Restitution],
@@ -118,6 +124,9 @@ fn candidates(m: &Measured) -> Vec<Vec<Free>> {
         f.insert(1, Free::V0);
         f
     });
+    if v0_measured && approach {
+        return with_v0.collect();
+    }
     base.iter().cloned().chain(with_v0).collect()
 }
 
@@ -139,7 +148,7 @@ pub(super) fn compare_within(
     m: &Measured,
     evals: &Evals,
 ) -> Result<Vec<Candidate>, FitError> {
-    let mut models = candidates_within(scene, m, candidates(m), evals)?;
+    let mut models = candidates_within(scene, m, candidates(m, false), evals)?;
     by_bic(&mut models);
     Ok(models)
 }
@@ -166,7 +175,7 @@ pub fn compare_candidates(
 }
 
 /// [`compare_candidates`], counting its work in `evals`.
-fn candidates_within(
+pub(super) fn candidates_within(
     scene: &Scene,
     m: &Measured,
     candidates: Vec<Vec<Free>>,
@@ -190,7 +199,7 @@ fn candidates_within(
         // A model with more values than the data have points is not a candidate.
         match scored_fit(&start, m, &free, target, evals) {
             Ok(s) => fitted.push((free, s)),
-            Err(FitError::Data(_)) => continue,
+            Err(FitError::TooFewPoints { .. }) => continue,
             Err(e) => return Err(e),
         }
     }
@@ -214,18 +223,26 @@ fn candidates_within(
             if fitted[k].1.idx == common {
                 continue;
             }
-            // From its own fit or a smaller model's refit, whichever fits the common
-            // frames better: a larger model must fit them at least as well.
+            // From its own fit, a smaller model's refit, or its own values as another
+            // model fitted them, whichever fits the common frames best: a larger model
+            // must fit them at least as well, and one model fitted from two starts
+            // must not land in two minima (one fit per model).
             let cost_on = |s: &Scene| {
                 let r = labelled_residuals(s, data, &common, target, true, evals).0;
                 r.iter().map(|x| x * x).sum::<f64>()
             };
             let free = fitted[k].0.clone();
+            let own = fitted[k].1.scene;
+            let theirs = fitted.iter().map(|(_, s)| {
+                let values: Vec<f64> = free.iter().map(|f| f.value_in(&s.scene)).collect();
+                with(&own, &free, &values)
+            });
             let start = fitted[..k]
                 .iter()
                 .filter(|(f, _)| f.iter().all(|x| free.contains(x)))
-                .map(|(f, s)| with(&fitted[k].1.scene, f, &s.values))
-                .chain([fitted[k].1.scene])
+                .map(|(f, s)| with(&own, f, &s.values))
+                .chain(theirs)
+                .chain([own])
                 .min_by(|a, b| cost_on(a).total_cmp(&cost_on(b)))
                 .unwrap_or(fitted[k].1.scene);
             fitted[k].1 = scored_fit_within(&start, m, &free, target, Some(&common), evals)?;
@@ -264,35 +281,6 @@ fn shared_frames(fitted: &[(Vec<Free>, Scored)]) -> Vec<usize> {
         .collect()
 }
 
-/// How many independent points the residuals `r` (labelled by frame and channel, in
-/// frame order) are worth: `n (1 − ρ) / (1 + ρ)` with ρ the correlation of each
-/// channel's residuals between neighbouring frames (as for errors that drift from
-/// frame to frame, a first-order autoregression: a tracker's error, a velocity file
-/// some tool smoothed), taken as 0 when negative. White noise gives about n; the same
-/// motion filmed at twice the frame rate with the same drift (in seconds) is worth
-/// about as many points as before, not twice as many.
-fn effective_points(r: &[f64], labels: &[Label]) -> f64 {
-    let n = r.len() as f64;
-    let var: f64 = r.iter().map(|x| x * x).sum();
-    if !(var > 0.0 && var.is_finite()) || labels.len() != r.len() {
-        return n;
-    }
-    // Pairs of the same channel on neighbouring frames (a missing frame breaks one).
-    let mut next = 0.0;
-    for (k, ((i, c), x)) in labels.iter().zip(r).enumerate() {
-        let partner = labels[k + 1..]
-            .iter()
-            .zip(&r[k + 1..])
-            .take(2)
-            .find(|((j, d), _)| *j == i + 1 && d == c);
-        if let Some((_, y)) = partner {
-            next += x * y;
-        }
-    }
-    let rho = (next / var).clamp(0.0, 0.99);
-    n * (1.0 - rho) / (1.0 + rho)
-}
-
 /// The scores of one fitted candidate with weighted residual sum of squares `cost`
 /// over `n` residuals worth `n_eff` independent points ([`effective_points`]): the
 /// Gaussian log-likelihood of correlated residuals is, for the smooth changes a
@@ -324,6 +312,8 @@ fn candidate(free: &[Free], s: &Scored, cost: f64, n: usize, n_eff: f64) -> Cand
         aic: fit_term + 2.0 * k,
         bic: fit_term + k * n_eff.ln(),
         supported: false,
+        free: free.to_vec(),
+        fit: Box::new(s.fit.clone()),
     }
 }
 
@@ -354,38 +344,9 @@ mod tests {
             aic: bic,
             bic,
             supported: false,
+            free: Vec::new(),
+            fit: Box::new(crate::study::fit::model::tests::blank()),
         }
-    }
-
-    #[test]
-    fn residuals_that_drift_are_worth_fewer_points() {
-        // Two channels interleaved frame by frame (x and the mark's angle), as the
-        // position residuals come: white, and drifting with φ = 0.8 from frame to frame.
-        let mut noise = crate::study::video::Noise::new(7);
-        let frames = 4000;
-        let labels: Vec<Label> = (0..frames).flat_map(|i| [(i, false), (i, true)]).collect();
-        let white: Vec<f64> = labels.iter().map(|_| noise.gauss()).collect();
-        let n = labels.len() as f64;
-        // ρ = 0 ± 1/√4000 each channel: within 0.05 of n relative.
-        assert!((effective_points(&white, &labels) / n - 1.0).abs() < 0.05);
-        let phi = 0.8;
-        let mut e = [noise.gauss(), noise.gauss()];
-        let drift: Vec<f64> = labels
-            .iter()
-            .map(|&(_, c)| {
-                let c = usize::from(c);
-                e[c] = phi * e[c] + (1.0f64 - phi * phi).sqrt() * noise.gauss();
-                e[c]
-            })
-            .collect();
-        // n (1 − φ)/(1 + φ) = n / 9, to the sampling error of ρ (±0.01: ±5 %).
-        let worth = effective_points(&drift, &labels);
-        assert!((worth / (n / 9.0) - 1.0).abs() < 0.1, "{worth} of {n}");
-        // A missing frame breaks the pair across it, never pairs frames apart.
-        let gap: Vec<Label> = vec![(0, false), (2, false), (3, false)];
-        // ρ = 1/3 from frames 2 and 3 alone (with 0 and 2 paired it would be 2/3).
-        let worth = effective_points(&[1.0, 1.0, 1.0], &gap);
-        assert!((worth - 1.5).abs() < 1e-12, "{worth}");
     }
 
     #[test]

@@ -431,11 +431,15 @@ pub(super) fn scan_mu(
     target: Target,
     evals: &Evals,
 ) -> Result<f64, FitError> {
+    // On the frames the start leaves (a μ whose later impacts pass more frames would
+    // otherwise leave out the ones it fits worst, and look better than it is).
+    let idx = fit_points(m, &with(scene, free, p), target, evals);
     let cost = |mu: f64| {
         evals.next()?;
         let mut q = p.to_vec();
         q[i] = mu;
-        Ok(mean_cost(&with(scene, free, &q), m, target, evals))
+        let r = residuals(&with(scene, free, &q), m, &idx, target, evals);
+        Ok(r.iter().map(|x| x * x).sum::<f64>() / r.len().max(1) as f64)
     };
     let grid = mu_grid(80);
     let costs = grid
@@ -580,11 +584,10 @@ pub(super) fn least_squares(
     evals: &Evals,
 ) -> Result<Vec<f64>, FitError> {
     if idx.len() < free.len() + 2 {
-        return Err(FitError::Data(format!(
-            "{} usable points, allowed at least {}",
-            idx.len(),
-            free.len() + 2
-        )));
+        return Err(FitError::TooFewPoints {
+            usable: idx.len(),
+            needed: free.len() + 2,
+        });
     }
     let cost = |p: &[f64]| -> f64 {
         residuals(&with(scene, free, p), m, idx, target, evals)

@@ -234,9 +234,7 @@ pub fn line_fit(
         .0
         .or(auto.map(|w| w.0))
         .or(first_after)
-        .ok_or_else(|| {
-            FitError::Data("no measured points after the impact (t > 0) to fit".into())
-        })?;
+        .ok_or(FitError::NothingAfterImpact)?;
     let to = window.1.or(auto.map(|w| w.1)).unwrap_or(from);
     // A window reaching past the data's ends fits what the data hold: report that span
     // (a fitted model may roll again only after the track ends; `--to 5` on a 1 s track).
@@ -251,15 +249,11 @@ pub fn line_fit(
         .filter(|&i| m.t[i] >= from - 1e-12 && m.t[i] <= to + 1e-12)
         .collect();
     if idx.len() < 3 {
-        let sig = |v: f64| crate::settings::units::significant(v, 4);
-        return Err(FitError::Data(format!(
-            "the window {} … {} s holds {} points (the data run from t = {} to {} s after the impact), allowed at least 3",
-            sig(asked.0),
-            sig(asked.1),
-            idx.len(),
-            sig(span.0),
-            sig(span.1)
-        )));
+        return Err(FitError::ShortWindow {
+            asked,
+            points: idx.len(),
+            data: span,
+        });
     }
     let cm = line_of(
         m,

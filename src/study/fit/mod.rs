@@ -6,6 +6,7 @@
 //! stops in `problem`), the comparison of models in `choice`; here both fits of a
 //! series are made together.
 
+mod approach;
 mod choice;
 mod least_squares;
 mod line;
@@ -20,6 +21,7 @@ use crate::physics::scene::Scene;
 use crate::study::Progress;
 use crate::study::measured::series::Measured;
 
+pub use approach::{APPROACH_FRAMES, Approach, of_velocities};
 pub use choice::{Candidate, Estimate, compare_candidates, compare_models};
 pub use least_squares::{NearImpacts, aligned_track};
 pub use line::{
@@ -29,53 +31,121 @@ pub use line::{
 pub use model::{
     Agreement, MAX_MODEL_POINTS, ModelFit, POOR_FIT, model_fit, position_fit, thinned,
 };
-pub use problem::{FitError, Free, WORK_BUDGET};
+pub use problem::{DataLooks, FitError, Free, WORK_BUDGET};
 pub use regime::{observed_regime, rest_band};
 pub use uncertainty::NotIdentified;
 
-/// Both fits of one series.
+/// The fits of one series: the paper's line fits, and one fit per candidate model,
+/// the headline among them.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Fits {
     pub line_fit: LineFit,
+    /// The headline: the fit of the model the data support (or of the one the caller
+    /// chose), fitted to a track's positions, else to the velocities: the very fit of
+    /// its row in `models`, its numbers the same wherever it is shown.
     pub model_fit: ModelFit,
+    /// Why the headline is this model.
+    pub chosen: Chosen,
+    /// μ_k alone: the `mu` row of `models` (`mu+v0` when v0 was measured in the data),
+    /// said beside the headline.
+    pub mu_alone: ModelFit,
+    /// For a position track: the headline's model fitted to the derived velocities,
+    /// a check of it (the positions' fit is the one to quote).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub velocity_fit: Option<ModelFit>,
     /// The candidate models compared by AIC and BIC ([`compare_models`]), one marked
     /// `supported`.
     pub models: Vec<Candidate>,
 }
 
-/// Line fit over `window` and model fit with `free`, on `scene` and `m`; stops when
-/// `progress` says so (`FitError::Cancelled`), or when the model fit and the
-/// candidate models together spend the work budget ([`WORK_BUDGET`]:
-/// `FitError::Budget`).
+/// Why the headline of [`Fits`] is its model.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Chosen {
+    /// The simplest model the data support (by BIC, every value determined).
+    Supported,
+    /// The model the caller asked for (`fit --free`).
+    Asked,
+    /// No model is supported: μ_k alone, the simplest.
+    Simplest,
+}
+
+/// What a whole fit of a series is asked ([`fit_all`]).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Ask {
+    /// The line fits' window, s from the impact (`None`: the sliding phase's ends).
+    pub window: (Option<f64>, Option<f64>),
+    /// The model to headline (`fit --free`); `None`: the one the data support.
+    pub free: Option<Vec<Free>>,
+    /// The scene's v0 was taken from the data's approach ([`Approach`]), not given:
+    /// free in every candidate model, so that its error reaches μ_k's ±.
+    pub v0_measured: bool,
+}
+
+/// Line fit over the window asked and every candidate model fitted to `m` on
+/// `scene` ([`compare_models`], with the model `ask.free` among them when given): the
+/// headline is that model when given, else the one the data support. Stops when
+/// `progress` says so (`FitError::Cancelled`), or when the fits together spend the
+/// work budget ([`WORK_BUDGET`]: `FitError::Budget`).
 pub fn fit_all(
     scene: &Scene,
     m: &Measured,
-    window: (Option<f64>, Option<f64>),
-    free: &[Free],
+    ask: &Ask,
     progress: &dyn Progress,
 ) -> Result<Fits, FitError> {
+    let (window, free) = (ask.window, ask.free.as_deref());
     let evals = problem::Evals::new(progress);
-    let model_fit = model::scored_fit(scene, m, free, least_squares::Target::Velocity, &evals)?.fit;
+    let same = |a: &[Free], b: &[Free]| a.len() == b.len() && a.iter().all(|f| b.contains(f));
+    let mut sets = choice::candidates(m, ask.v0_measured);
+    let simplest = sets[0].clone();
+    if let Some(f) = free.filter(|f| !sets.iter().any(|s| same(s, f))) {
+        sets.push(f.to_vec());
+    }
+    let mut models = choice::candidates_within(scene, m, sets, &evals)?;
+    choice::by_bic(&mut models);
+    let find = |f: &[Free]| models.iter().find(|c| same(&c.free, f));
+    let (head, chosen) = match free {
+        Some(f) => (find(f), Chosen::Asked),
+        None => match models.iter().find(|c| c.supported) {
+            Some(c) => (Some(c), Chosen::Supported),
+            None => (find(&simplest), Chosen::Simplest),
+        },
+    };
+    let Some(head) = head else {
+        return Err(FitError::TooFewPoints {
+            usable: m.t.len(),
+            needed: free.map_or(1, <[Free]>::len) + 2,
+        });
+    };
+    let fitted = least_squares::with(
+        scene,
+        &head.free,
+        &head.parameters.iter().map(|e| e.value).collect::<Vec<_>>(),
+    );
+    let mu_alone = find(&simplest).map_or_else(|| (*head.fit).clone(), |c| (*c.fit).clone());
+    // A track's headline is fitted to its positions: the same model to its derived
+    // velocities as a check.
+    let velocity_fit = match head.fit.fitted_to {
+        "positions" => Some(
+            model::scored_fit(
+                scene,
+                m,
+                &head.free,
+                least_squares::Target::Velocity,
+                &evals,
+            )?
+            .fit,
+        ),
+        _ => None,
+    };
     let given = [window.0.is_some(), window.1.is_some()];
     // Without v_t the data cannot say when sliding ends, and a track's derived v_t
     // says it poorly: the fitted model does ([`regime::sliding_end`]).
+    // (Of a track, by the fit to the velocities it derives.)
     let window = match window {
         (from, None) if m.stencils.is_some() || !m.has_v_t() => {
-            let fitted = Scene {
-                mu: model_fit.mu,
-                restitution: model_fit.restitution,
-                rolling_resistance: model_fit.rolling_resistance,
-                left: crate::physics::scene::Ball {
-                    v0: model_fit.v0,
-                    ..scene.left
-                },
-                right: crate::physics::scene::Ball {
-                    v0: model_fit.v0,
-                    ..scene.right
-                },
-                ..*scene
-            };
-            (from, regime::sliding_end(m, &fitted))
+            let by = velocity_fit.as_ref().map_or(fitted, |v| v.scene_of(scene));
+            (from, regime::sliding_end(m, &by))
         }
         w => w,
     };
@@ -84,8 +154,11 @@ pub fn fit_all(
             given,
             ..line_fit(m, scene, window)?
         },
-        model_fit,
-        models: choice::compare_within(scene, m, &evals)?,
+        model_fit: (*head.fit).clone(),
+        chosen,
+        mu_alone,
+        velocity_fit,
+        models,
     };
     check_finite(&fits, m, scene)?;
     Ok(fits)
@@ -125,7 +198,7 @@ fn check_finite(f: &Fits, data: &Measured, scene: &Scene) -> Result<(), FitError
         ("model fit RMS residual", m.rms),
         ("model fit rolling speed v'", m.v_roll),
     ];
-    let bad: Vec<&str> = named
+    let bad: Vec<&'static str> = named
         .iter()
         .filter(|(_, v)| !v.is_finite())
         .map(|(n, _)| *n)
@@ -133,46 +206,35 @@ fn check_finite(f: &Fits, data: &Measured, scene: &Scene) -> Result<(), FitError
     if bad.is_empty() {
         return Ok(());
     }
-    Err(FitError::Data(not_finite(&bad, data, scene)))
+    Err(FitError::NotFinite {
+        bad,
+        looks: looks(data, scene),
+    })
 }
 
-/// Why a fit gave no finite `bad` values, for a student: what the data's numbers and
-/// the scene's v0 look like, and the options that read a file's numbers in other
-/// units (numbers in ms, cm/s or cm taken as s, m/s or m are the usual cause).
-fn not_finite(bad: &[&str], data: &Measured, scene: &Scene) -> String {
-    let sig = |v: f64| crate::settings::units::significant(v, 3);
+/// What the series `data` looks like in `scene`, for a fit that gives no finite
+/// number ([`FitError::NotFinite`]).
+fn looks(data: &Measured, scene: &Scene) -> DataLooks {
     let mut steps: Vec<f64> = data.t.windows(2).map(|w| w[1] - w[0]).collect();
     steps.sort_by(f64::total_cmp);
-    let frame = steps.get(steps.len() / 2).copied().unwrap_or(f64::NAN);
-    let fastest = data
-        .v_cm
-        .iter()
-        .chain(&data.v_t)
-        .filter(|v| v.is_finite())
-        .fold(0.0_f64, |a, v| a.max(v.abs()));
     let span = |v: &[f64]| {
         v.iter()
             .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &x| {
                 (lo.min(x), hi.max(x))
             })
     };
-    let (t0, t1) = span(&data.t);
-    let mut looks = format!(
-        "the data run over t = {} … {} s with frames {} s apart and speeds up to {} m/s",
-        sig(t0),
-        sig(t1),
-        sig(frame),
-        sig(fastest)
-    );
-    if let Some(x) = data.x.as_deref() {
-        let (x0, x1) = span(x);
-        looks += &format!(", positions {} … {} m", sig(x0), sig(x1));
+    DataLooks {
+        t: span(&data.t),
+        frame: steps.get(steps.len() / 2).copied().unwrap_or(f64::NAN),
+        fastest: data
+            .v_cm
+            .iter()
+            .chain(&data.v_t)
+            .filter(|v| v.is_finite())
+            .fold(0.0_f64, |a, v| a.max(v.abs())),
+        positions: data.x.as_deref().map(span),
+        v0: scene.left.v0.abs().max(scene.right.v0.abs()),
     }
-    format!(
-        "the fit gives no finite {} for this scene and data: {looks}, and the scene's v0 is {} m/s (a lab's frames are ms apart and its balls roll at about 0.1 to 2 m/s); if the file's numbers are in other units, say so with --time-unit (e.g. ms), --speed-unit (e.g. cm/s) or --length-unit (e.g. cm), or with units in its header",
-        bad.join(", "),
-        sig(scene.left.v0.abs().max(scene.right.v0.abs()))
-    )
 }
 
 #[cfg(test)]
@@ -256,7 +318,11 @@ mod tests {
             right: ball,
             ..Scene::default()
         };
-        let e = not_finite(&["model fit μ_k"], &data, &scene);
+        let e = FitError::NotFinite {
+            bad: vec!["model fit μ_k"],
+            looks: looks(&data, &scene),
+        }
+        .to_string();
         for want in [
             "no finite model fit μ_k",
             "t = -25 … 25 s with frames 8.33 s apart and speeds up to 50 m/s",

@@ -18,7 +18,7 @@ use super::least_squares::{
 };
 use super::problem::{Evals, FitError, Free};
 use super::regime::{data_scatter, observed_after, rest_band, sliding_end};
-use super::uncertainty::{NotIdentified, shared_noise, uncertainties};
+use super::uncertainty::{NotIdentified, effective_points, shared_noise, uncertainties};
 
 /// Most frames the model fit uses. A longer series is thinned to every k-th frame
 /// (the output says so): each model evaluation walks every point used, and a fit
@@ -30,6 +30,11 @@ pub const MAX_MODEL_POINTS: usize = 20_000;
 /// The whole-model least-squares fit.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct ModelFit {
+    /// The model: its free values joined by `+` (`mu`, `mu+v0`), as in
+    /// [`super::Candidate::name`].
+    pub model: String,
+    /// What it was fitted to: `velocities` (`rms` in m/s) or `positions` (`rms` in m).
+    pub fitted_to: &'static str,
     pub mu: f64,
     pub mu_se: f64,
     /// Fitted v0, e and c_rr (the scene's when not free) and their standard errors.
@@ -39,7 +44,8 @@ pub struct ModelFit {
     pub restitution_se: Option<f64>,
     pub rolling_resistance: f64,
     pub rolling_resistance_se: Option<f64>,
-    /// Root-mean-square residual over all v_cm and v_t points used, m/s.
+    /// Root-mean-square residual over all v_cm and v_t points used, m/s (of a fit to
+    /// positions: over x and the mark's arc, m).
     pub rms: f64,
     pub points: usize,
     pub regime_predicted: Regime,
@@ -76,6 +82,17 @@ impl ModelFit {
         self.not_identified
             .iter()
             .find(|n| n.parameter == parameter)
+    }
+
+    /// `scene` with this fit's values (μ_k, both v0, e, c_rr).
+    pub fn scene_of(&self, scene: &Scene) -> Scene {
+        let mut s = *scene;
+        s.mu = self.mu;
+        s.restitution = self.restitution;
+        s.rolling_resistance = self.rolling_resistance;
+        s.left.v0 = self.v0;
+        s.right.v0 = self.v0;
+        s
     }
 
     /// The one verdict of the fit against what was observed, for every place that
@@ -223,9 +240,7 @@ pub fn position_fit(
     progress: &dyn Progress,
 ) -> Result<ModelFit, FitError> {
     if m.x.is_none() {
-        return Err(FitError::Data(
-            "the data hold no positions (a velocity file): no position fit".into(),
-        ));
+        return Err(FitError::NoPositions);
     }
     model_fit_of(scene, m, free, Target::Position, progress)
 }
@@ -320,8 +335,14 @@ fn best_values(
 /// factor of about 3 apart (a rolling ball's c_rr lies in 0.001 … 0.05).
 const ROLLING_RESISTANCE_STARTS: [f64; 4] = [0.003, 0.01, 0.03, 0.1];
 
+/// Factors on the start's v0 a fit with v0 free also starts from: the approach
+/// speed is known to a few per cent, and the cost between is rough (impacts move past
+/// frames as v0 changes): a start a few per cent off found another minimum.
+const V0_STARTS: [f64; 4] = [0.94, 0.97, 1.03, 1.06];
+
 /// The starts of a fit of `free` from the values `p`: `p` itself, and with c_rr free
-/// `p` with each of [`ROLLING_RESISTANCE_STARTS`] in its place.
+/// `p` with each of [`ROLLING_RESISTANCE_STARTS`] in its place, and with v0 free each
+/// of those with v0 moved by [`V0_STARTS`].
 fn starts(free: &[Free], p: &[f64]) -> Vec<Vec<f64>> {
     let mut out = vec![p.to_vec()];
     if let Some(i) = free.iter().position(|f| *f == Free::RollingResistance) {
@@ -330,6 +351,16 @@ fn starts(free: &[Free], p: &[f64]) -> Vec<Vec<f64>> {
             q[i] = c;
             q
         }));
+    }
+    if let Some(i) = free.iter().position(|f| *f == Free::V0) {
+        let base = out.clone();
+        for q in &base {
+            out.extend(V0_STARTS.iter().map(|&k| {
+                let mut q = q.clone();
+                q[i] *= k;
+                q
+            }));
+        }
     }
     out
 }
@@ -388,12 +419,18 @@ pub(super) fn scored_fit_within(
     let (r, labels) = labelled_residuals(&fitted, m, &idx, target, true, evals);
     let n = p.len();
     let cost: f64 = r.iter().map(|x| x * x).sum();
-    let s2 = cost / r.len().saturating_sub(n + nuisance(m, target)).max(1) as f64;
+    let mut s2 = cost / r.len().saturating_sub(n + nuisance(m, target)).max(1) as f64;
     let j = smooth_jacobian(scene, m, free, &idx, &p, &r, target, evals);
-    // Velocities derived from a track share frames: their errors are correlated.
+    // Velocities derived from a track share frames: their errors are correlated, by
+    // the stencils. Other residuals that go together from frame to frame (a tracker's
+    // drift, a velocity some tool smoothed, a model that misses the data's shape) are
+    // worth fewer independent points: their variance counts for that many.
     let shared = match (&m.stencils, target) {
         (Some(st), Target::Velocity) => Some(shared_noise(&j, &labels, st)),
-        _ => None,
+        _ => {
+            s2 *= r.len() as f64 / effective_points(&r, &labels).max(1.0);
+            None
+        }
     };
     let (ses, not_identified) = uncertainties(&normal_matrix(&j), shared.as_deref(), s2, free, &p);
     let se = |f: Free| free.iter().position(|x| *x == f).and_then(|i| ses[i]);
@@ -413,6 +450,11 @@ pub(super) fn scored_fit_within(
     let verdict = Verdict::of(&sol, &derived, Some(rest_band));
     let regime_observed = observed_after(m, rest_band, sliding_end(m, &fitted));
     Ok(scored(ModelFit {
+        model: free.iter().map(|f| f.name()).collect::<Vec<_>>().join("+"),
+        fitted_to: match target {
+            Target::Velocity => "velocities",
+            Target::Position => "positions",
+        },
         mu: fitted.mu,
         mu_se: se(Free::Mu).unwrap_or(f64::NAN),
         v0: fitted.left.v0,
@@ -442,4 +484,37 @@ pub(super) fn scored_fit_within(
         scatter: data_scatter(m, target == Target::Position),
         every,
     }))
+}
+
+#[cfg(test)]
+pub(super) mod tests {
+    use super::*;
+
+    /// A fit of nothing, for tests of what is made from fits.
+    pub(crate) fn blank() -> ModelFit {
+        ModelFit {
+            model: "mu".into(),
+            fitted_to: "velocities",
+            mu: 0.2,
+            mu_se: 0.01,
+            v0: 0.5,
+            v0_se: None,
+            restitution: 1.0,
+            restitution_se: None,
+            rolling_resistance: 0.0,
+            rolling_resistance_se: None,
+            rms: 0.01,
+            points: 10,
+            regime_predicted: Regime::Recollide,
+            regime_observed: Regime::Recollide,
+            rest_band: 0.03,
+            v_roll: 0.1,
+            verdict: String::new(),
+            indistinguishable_from_rest: false,
+            agrees: true,
+            not_identified: Vec::new(),
+            scatter: None,
+            every: None,
+        }
+    }
 }

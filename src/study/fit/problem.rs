@@ -7,13 +7,40 @@ use serde::Serialize;
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::Solution;
+use crate::settings::units::significant;
 use crate::study::Progress;
 
 /// Why a fit cannot be made.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum FitError {
-    #[error("{0}")]
-    Data(String),
+    /// Fewer usable points than the fit's values need (two more than the free values).
+    #[error("{usable} usable points, allowed at least {needed}")]
+    TooFewPoints { usable: usize, needed: usize },
+    /// A position fit of data without positions.
+    #[error("the data hold no positions (a velocity file): no position fit")]
+    NoPositions,
+    /// No measured point after the impact for the line fits.
+    #[error("no measured points after the impact (t > 0) to fit")]
+    NothingAfterImpact,
+    /// The line fits' window holds too few points.
+    #[error(
+        "the window {} … {} s holds {points} points (the data run from t = {} to {} s after the impact), allowed at least 3",
+        significant(asked.0, 4), significant(asked.1, 4), significant(data.0, 4), significant(data.1, 4)
+    )]
+    ShortWindow {
+        /// The window asked for, s.
+        asked: (f64, f64),
+        points: usize,
+        /// The data's first and last time, s.
+        data: (f64, f64),
+    },
+    /// A fitted number is not finite: the data's numbers are in other units than read,
+    /// most likely.
+    #[error("the fit gives no finite {} for this scene and data: {looks}", bad.join(", "))]
+    NotFinite {
+        bad: Vec<&'static str>,
+        looks: DataLooks,
+    },
     /// The fit used up its work budget ([`WORK_BUDGET`]) before it settled.
     #[error(
         "the fit stopped at its work budget ({evaluations} model evaluations, {segments} motion segments computed) before it settled: each run of this scene's model has up to {longest} segments (near b = 2R the balls meet again and again), so μ_k is not determined here; a scene farther from its limits fits in a moment"
@@ -26,6 +53,42 @@ pub enum FitError {
     /// The caller's [`Progress`] asked to stop.
     #[error("cancelled")]
     Cancelled,
+}
+
+/// What a series' numbers look like, said when a fit of them gives no finite number
+/// (numbers in ms, cm/s or cm read as s, m/s or m are the usual cause).
+#[derive(Clone, Debug, PartialEq)]
+pub struct DataLooks {
+    /// The first and last time, s; the median frame interval, s.
+    pub t: (f64, f64),
+    pub frame: f64,
+    /// The fastest speed, m/s; the positions' span, m (a track's).
+    pub fastest: f64,
+    pub positions: Option<(f64, f64)>,
+    /// The scene's larger v0, m/s.
+    pub v0: f64,
+}
+
+impl std::fmt::Display for DataLooks {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let sig = |v: f64| significant(v, 3);
+        write!(
+            f,
+            "the data run over t = {} … {} s with frames {} s apart and speeds up to {} m/s",
+            sig(self.t.0),
+            sig(self.t.1),
+            sig(self.frame),
+            sig(self.fastest)
+        )?;
+        if let Some((x0, x1)) = self.positions {
+            write!(f, ", positions {} … {} m", sig(x0), sig(x1))?;
+        }
+        write!(
+            f,
+            ", and the scene's v0 is {} m/s (a lab's frames are ms apart and its balls roll at about 0.1 to 2 m/s); if the file's numbers are in other units, say so with --time-unit (e.g. ms), --speed-unit (e.g. cm/s) or --length-unit (e.g. cm), or with units in its header",
+            sig(self.v0)
+        )
+    }
 }
 
 /// The most work one fit (`fit_all`: the model fit and every candidate model) may

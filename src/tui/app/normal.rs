@@ -475,14 +475,17 @@ impl App {
             ));
             return;
         }
-        // μ_k is always fitted; v0 and e only when the fit freed them (they have an
-        // uncertainty then).
+        // μ_k is always fitted; v0, e and c_rr only when the fit freed them (they have
+        // an uncertainty then): the scene becomes the fitted one.
         let mut changes = vec![(Key::Mu, fitted.mu)];
         if fitted.v0_se.is_some() {
             changes.push((Key::V0, fitted.v0));
         }
         if fitted.restitution_se.is_some() {
             changes.push((Key::Restitution, fitted.restitution));
+        }
+        if fitted.rolling_resistance_se.is_some() {
+            changes.push((Key::RollingResistance, fitted.rolling_resistance));
         }
         // All or nothing: a fit is never left half applied.
         let edits = self.lab.settings().edits().len();
@@ -506,20 +509,18 @@ impl App {
         });
     }
 
-    /// The model fit `a` applies, and what to call it: of a position track the fit to
-    /// the positions (the more precise, whose ± the panel says to quote), else the one
-    /// fit of the velocities.
+    /// The model fit `a` applies, and what to call it: the headline fit (of the model
+    /// the data support; of a position track fitted to the positions), the one the
+    /// panel shows first.
     fn fit_to_apply(&self) -> Result<(crate::study::fit::ModelFit, &'static str), String> {
-        match self.fit.position_fit() {
-            State::Ready(Ok(p)) => return Ok((p.clone(), "the position fit")),
-            State::Computing { .. } => {
-                return Err("the position fit is still running: try again".into());
-            }
-            State::Ready(Err(e)) => return Err(format!("no fit to apply: the position fit: {e}")),
-            State::Idle => {}
-        }
         match self.fit.fits() {
-            State::Ready(Ok(f)) => Ok((f.model_fit.clone(), "the fit")),
+            State::Ready(Ok(f)) => Ok((
+                f.model_fit.clone(),
+                match f.model_fit.fitted_to {
+                    "positions" => "the position fit",
+                    _ => "the fit",
+                },
+            )),
             State::Ready(Err(e)) => Err(format!("no fit to apply: {e}")),
             State::Computing { .. } => Err("the fit is still running: try again".into()),
             State::Idle => Err("no fit to apply: this preset has no data".into()),

@@ -42,13 +42,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         State::Ready(Ok(f)) => {
             let mut lines = line_fit_lines(&f.line_fit, theme);
             paper_row_lines(app, &mut lines, theme);
-            model_fits_lines(
-                app,
-                &f.model_fit,
-                usize::from(inner.width),
-                &mut lines,
-                theme,
-            );
+            model_fits_lines(f, usize::from(inner.width), &mut lines, theme);
             model_choice_lines(&f.models, &mut lines, theme);
             lines
         }
@@ -159,34 +153,45 @@ fn paper_row_lines(app: &App, lines: &mut Ranked<'static>, theme: &Theme) {
     }
 }
 
-/// The model fit to the velocities, and beside it the fit to the positions once a
-/// position track's is done (its progress or failure meanwhile).
-fn model_fits_lines(
-    app: &App,
-    m: &ModelFit,
-    width: usize,
-    lines: &mut Ranked<'static>,
-    theme: &Theme,
-) {
-    let g = theme.glyphs;
-    match app.fit.position_fit() {
-        State::Idle => model_fit_lines(m, lines, theme),
-        State::Computing { .. } => {
-            model_fit_lines(m, lines, theme);
-            lines.push((
-                4,
-                Line::from(Span::styled(g.text("position fit: computing…"), theme.dim)),
-            ));
-        }
-        State::Ready(Err(e)) => {
-            model_fit_lines(m, lines, theme);
-            lines.push((
-                6,
-                Line::from(Span::styled(g.text(&e.to_string()), theme.error)),
-            ));
-        }
-        State::Ready(Ok(p)) => both_fits(m, p, width, lines, theme),
+/// The headline: the fit of the model the data support (of a position track, fitted
+/// to the positions, beside the same model fitted to the derived velocities), the
+/// numbers `fit` prints; then μ_k alone.
+fn model_fits_lines(f: &fit::Fits, width: usize, lines: &mut Ranked<'static>, theme: &Theme) {
+    match &f.velocity_fit {
+        None => model_fit_lines(&f.model_fit, lines, theme),
+        Some(v) => both_fits(v, &f.model_fit, width, lines, theme),
     }
+    let g = theme.glyphs;
+    let a = &f.mu_alone;
+    let text = if a.model == f.model_fit.model {
+        format!("({}_k alone is that model)", g.mu)
+    } else {
+        format!("{}_k alone: {}  RMS {}", g.mu, pm(a, 4, g.ascii), rms(a))
+    };
+    lines.push((6, Line::from(Span::styled(g.text(&text), theme.dim))));
+}
+
+/// A fit's RMS residual in its data's unit.
+fn rms(m: &ModelFit) -> String {
+    match m.fitted_to {
+        "positions" => format!("{:.2}", show_small(m.rms, Dimension::Length)),
+        _ => format!("{:.4} m/s", m.rms),
+    }
+}
+
+/// A model's name: `mu+v0` → `μ_k+v0`.
+fn model_name(model: &str, theme: &Theme) -> String {
+    let mu = format!("{}_k", theme.glyphs.mu);
+    let names: Vec<&str> = model
+        .split('+')
+        .map(|p| match p {
+            "mu" => mu.as_str(),
+            "restitution" => "e",
+            "rolling_resistance" => "c_rr",
+            other => other,
+        })
+        .collect();
+    names.join("+")
 }
 
 /// The candidate models by BIC (lower is better), the one the data support marked;
@@ -269,7 +274,10 @@ fn model_fit_lines(m: &ModelFit, lines: &mut Ranked<'static>, theme: &Theme) {
     let value = |s: String| Span::styled(g.text(&s), theme.text);
     lines.push((
         5,
-        Line::from(Span::styled("model fit to every frame", theme.title)),
+        Line::from(Span::styled(
+            g.text(&format!("model fit: {}", model_name(&m.model, theme))),
+            theme.title,
+        )),
     ));
     lines.push((
         9,
@@ -277,7 +285,7 @@ fn model_fit_lines(m: &ModelFit, lines: &mut Ranked<'static>, theme: &Theme) {
             label(&format!("{}_k ", g.mu)),
             value(pm(m, 4, g.ascii)),
             label("  RMS "),
-            value(format!("{:.4} m/s", m.rms)),
+            value(rms(m)),
         ]),
     ));
     verdict_lines(m, lines, theme);
@@ -356,7 +364,7 @@ fn both_fits(v: &ModelFit, p: &ModelFit, width: usize, lines: &mut Ranked<'stati
     lines.push((
         6,
         row(
-            "model fits",
+            &model_name(&p.model, theme),
             "velocities".into(),
             "positions".into(),
             theme.title,

@@ -1,0 +1,154 @@
+//! The candidate models compared by AIC and BIC, the one the data support marked,
+//! and the values some models leave undetermined.
+
+use std::fmt::Write as _;
+
+use super::table::{pm, symbol};
+use crate::settings::units::Dimension;
+use crate::study::fit::{self, Candidate};
+
+/// The candidate models compared by AIC and BIC, and the one the data support.
+pub(super) fn table(models: &[Candidate], positions: bool) -> String {
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "\nwhich model the data support (fitted to the {}; AIC and BIC, lower is better, listed by BIC, lowest first; the simplest model within 2 of the lowest BIC whose values are all determined is named):",
+        if positions { "positions" } else { "velocities" }
+    );
+    // What AIC and BIC count as n: the points the residuals are worth.
+    if let Some(c) = models.first() {
+        let _ = if c.effective_points < c.residuals as f64 {
+            writeln!(
+                out,
+                "  (the {} residuals count as {:.0} independent points: neighbouring frames' errors are correlated)",
+                c.residuals, c.effective_points
+            )
+        } else {
+            writeln!(
+                out,
+                "  (the {} residuals count as independent points: neighbouring frames' errors are not correlated)",
+                c.residuals
+            )
+        };
+    }
+    let unit = if positions {
+        Dimension::Length.small_unit().0
+    } else {
+        Dimension::Speed.display_unit().0
+    };
+    let _ = writeln!(
+        out,
+        "  {:<34} {:>10} {:>10} {:>10}   values (± 2σ)",
+        "model",
+        format!("RMS {unit}"),
+        "AIC",
+        "BIC"
+    );
+    let names = |c: &Candidate| {
+        c.parameters
+            .iter()
+            .map(|e| symbol(e.parameter).0)
+            .collect::<Vec<_>>()
+            .join(" + ")
+    };
+    for c in models {
+        let values: Vec<String> = c
+            .parameters
+            .iter()
+            .map(|e| {
+                let (name, unit) = symbol(e.parameter);
+                match (&e.not_determined, e.se) {
+                    (Some(_), _) => format!("{name} not determined"),
+                    (None, Some(se)) => {
+                        format!("{name} {}{unit}", pm(e.value, 2.0 * se))
+                    }
+                    (None, None) => format!("{name} {:.4}{unit}", e.value),
+                }
+            })
+            .collect();
+        let rms = if positions {
+            Dimension::Length.to_small(c.rms)
+        } else {
+            c.rms
+        };
+        let _ = writeln!(
+            out,
+            "{} {:<34} {:>10.4} {:>10.1} {:>10.1}   {}",
+            if c.supported { "*" } else { " " },
+            names(c),
+            rms,
+            c.aic,
+            c.bic,
+            values.join(", ")
+        );
+    }
+    out += &undetermined_notes(models, &names);
+    match models.iter().find(|c| c.supported) {
+        Some(c) => {
+            let _ = writeln!(
+                out,
+                "  the data support: {} (marked *); a larger model does not lower the BIC by 2 or more",
+                names(c)
+            );
+        }
+        None if !models.is_empty() => {
+            let best = models
+                .iter()
+                .min_by(|a, b| a.bic.total_cmp(&b.bic))
+                .expect("not empty");
+            let _ = writeln!(
+                out,
+                "  no model is named: the lowest BIC is {}'s, and no model within 2 of it has every value determined",
+                names(best)
+            );
+        }
+        None => {}
+    }
+    out
+}
+
+/// Below the models table: each value some model leaves undetermined, in which models
+/// and why; such a model is never the one named.
+fn undetermined_notes(models: &[Candidate], names: &dyn Fn(&Candidate) -> String) -> String {
+    let mut out = String::new();
+    // (parameter, reason) → the models where it is so, in table order.
+    let mut seen: Vec<(&fit::NotIdentified, Vec<String>)> = Vec::new();
+    for c in models {
+        for n in c
+            .parameters
+            .iter()
+            .filter_map(|e| e.not_determined.as_ref())
+        {
+            match seen
+                .iter_mut()
+                .find(|(m, _)| m.parameter == n.parameter && m.reason == n.reason)
+            {
+                Some((_, list)) => list.push(names(c)),
+                None => seen.push((n, vec![names(c)])),
+            }
+        }
+    }
+    for (n, list) in &seen {
+        let name = symbol(n.parameter).0;
+        let models = list.join("; ");
+        let _ = match n.on_edge_of {
+            // μ_k is in every model: on its edge, those models do not fit the data.
+            Some(range) if n.parameter == "mu" => writeln!(
+                out,
+                "  {name} lies on the edge of its physical range ({range}) in {models}: not determined, those models do not fit these data"
+            ),
+            Some(range) => writeln!(
+                out,
+                "  {name} lies on the edge of its physical range ({range}) in {models}: the data do not support {name} as a free value"
+            ),
+            None => writeln!(out, "  {name} not determined in {models}: {}", n.reason),
+        };
+    }
+    if !seen.is_empty() {
+        let _ = writeln!(
+            out,
+            "  (a model with a value the data do not determine is never the one named)"
+        );
+    }
+    out
+}
