@@ -1377,7 +1377,7 @@ fn synthetic(
     kind: usize,
     seed: u64,
 ) -> groovelab::study::measured::Series {
-    use groovelab::study::video::{self, Format, Video};
+    use groovelab::study::video::{self, TrackFormat, Video};
     let text = match kind {
         0 | 1 => {
             let v = Video {
@@ -1386,7 +1386,7 @@ fn synthetic(
                 mark: kind == 1,
                 ..Video::default()
             };
-            video::write(&video::track(truth, &v), Format::TrackerMulti)
+            video::write(&video::track(truth, &v), TrackFormat::TrackerMulti)
         }
         _ => velocity_file(truth, fps, 0.01, (seed as f64 * 0.618_034).fract(), seed),
     };
