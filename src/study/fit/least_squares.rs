@@ -277,6 +277,10 @@ fn position_rows(
         return Vec::new();
     };
     let theta0 = sol.angle_at(0.0)[0];
+    let turn = m
+        .angle
+        .as_ref()
+        .map(|a| branch_offset(idx.iter().map(|&i| sol.angle_at(m.t[i])[0] - theta0 - a[i])));
     let mut rows: Vec<([f64; 4], Label)> = Vec::with_capacity(2 * idx.len());
     for &i in idx {
         let s = sol.at(m.t[i]);
@@ -284,13 +288,30 @@ fn position_rows(
             [s.left.x + scene.radius - x[i], s.left.v, -1.0, 0.0],
             (i, false),
         ));
-        if let Some(a) = &m.angle {
-            let model = sol.angle_at(m.t[i])[0] - theta0;
-            rows.push(([radius * (model - a[i]), s.left.u, 0.0, -radius], (i, true)));
+        if let (Some(a), Some(c)) = (&m.angle, turn) {
+            let d = same_turn(sol.angle_at(m.t[i])[0] - theta0 - a[i], c);
+            rows.push(([radius * d, s.left.u, 0.0, -radius], (i, true)));
         }
     }
     rows.retain(|(row, _)| row.iter().all(|v| v.is_finite()));
     rows
+}
+
+/// The common offset (rad) of model-minus-measured mark angles, as their circular mean:
+/// a mark hidden by the rail for a few frames turns by more than π meanwhile, so the
+/// measured angles' unwrapping can be off by whole turns after a gap.
+fn branch_offset(diffs: impl Iterator<Item = f64>) -> f64 {
+    let (s, c) = diffs
+        .filter(|d| d.is_finite())
+        .fold((0.0, 0.0), |(s, c), d| (s + d.sin(), c + d.cos()));
+    s.atan2(c)
+}
+
+/// `d` moved by whole turns to within π of `centre`: the residual of a mark angle does
+/// not depend on which turn the measured angle was unwrapped to.
+fn same_turn(d: f64, centre: f64) -> f64 {
+    let tau = std::f64::consts::TAU;
+    centre + (d - centre - tau * ((d - centre) / tau).round())
 }
 
 /// The impact's time and place, and the mark's angle then, were estimated from the
@@ -641,7 +662,23 @@ pub(super) fn least_squares(
 
 #[cfg(test)]
 mod tests {
-    use super::NearImpacts;
+    use super::{NearImpacts, branch_offset, same_turn};
+
+    #[test]
+    fn a_mark_angle_unwrapped_a_turn_off_leaves_its_residual_unchanged() {
+        use std::f64::consts::TAU;
+        // Model-minus-measured angles 0.3 rad apart, two of them a whole turn off
+        // (the mark hidden across a gap longer than half a turn).
+        let diffs = [0.30, 0.31, 0.29 + TAU, 0.30, 0.32 - 2.0 * TAU];
+        let c = branch_offset(diffs.iter().copied());
+        assert!((c - 0.304).abs() < 0.01, "{c}");
+        for d in diffs {
+            let r = same_turn(d, c);
+            assert!((r - 0.30).abs() < 0.03, "{d} -> {r}");
+        }
+        // Near ±π the branch follows the common offset, not the principal value.
+        assert!((same_turn(-3.1, 3.1) - (TAU - 3.1)).abs() < 1e-12);
+    }
 
     #[test]
     fn any_in_agrees_with_every_frame_looked_at() {
