@@ -1061,6 +1061,9 @@ const NULLABLE: &[&str] = &[
     // determine it (with its reason).
     "value",
     "se",
+    // fit's sources: the approach speed of the user's own data, `null` where there are
+    // none (the preset's series) or they measure none.
+    "approach",
 ];
 
 fn nulls(v: &serde_json::Value, key: &str, out: &mut Vec<String>) {
