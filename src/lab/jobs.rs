@@ -123,6 +123,20 @@ impl<N> fmt::Debug for Jobs<N> {
     }
 }
 
+impl<N> Jobs<N> {
+    fn add(&self, delta: isize) {
+        let mut n = self
+            .shared
+            .pending
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner);
+        *n = n.saturating_add_signed(delta);
+        if *n == 0 {
+            self.shared.idle.notify_all();
+        }
+    }
+}
+
 impl<N: Clone + Send + Sync + 'static> Jobs<N> {
     /// Jobs on `pool`, notifying no one until [`Jobs::listen`].
     pub fn new(pool: Arc<Pool>) -> Jobs<N> {
@@ -183,18 +197,6 @@ impl<N: Clone + Send + Sync + 'static> Jobs<N> {
         }
     }
 
-    fn add(&self, delta: isize) {
-        let mut n = self
-            .shared
-            .pending
-            .lock()
-            .unwrap_or_else(PoisonError::into_inner);
-        *n = n.saturating_add_signed(delta);
-        if *n == 0 {
-            self.shared.idle.notify_all();
-        }
-    }
-
     /// Queues `work` on the pool; its result fills `slot` unless superseded first.
     fn submit<T: Send + Sync + 'static>(
         &self,
@@ -237,16 +239,7 @@ struct Done<'a, N>(&'a Jobs<N>);
 
 impl<N> Drop for Done<'_, N> {
     fn drop(&mut self) {
-        let mut n = self
-            .0
-            .shared
-            .pending
-            .lock()
-            .unwrap_or_else(PoisonError::into_inner);
-        *n = n.saturating_sub(1);
-        if *n == 0 {
-            self.0.shared.idle.notify_all();
-        }
+        self.0.add(-1);
     }
 }
 

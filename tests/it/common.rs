@@ -202,3 +202,20 @@ pub fn rendered(
 pub fn text(app: &App, size: (u16, u16), ascii: bool) -> String {
     screen::to_text(app, size.0, size.1, &Theme::new(Glyphs::new(ascii), true))
 }
+
+/// The scene of the preset paper-b4.9, resolved (the data generators' truth).
+pub fn paper_scene() -> groovelab::physics::scene::Scene {
+    groovelab::study::preset::Preset::load("paper-b4.9")
+        .unwrap()
+        .spec
+        .resolve()
+        .unwrap()
+        .0
+}
+
+/// A fresh scratch folder for one test of an area, named by the process.
+pub fn scratch_dir(area: &str, test: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("groovelab-{area}-{}-{test}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}

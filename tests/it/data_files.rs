@@ -10,24 +10,16 @@ use groovelab::input::data::{self, Reading};
 use groovelab::physics::engine;
 use groovelab::physics::scene::{Scene, Span};
 use groovelab::study::measured::{Derive, Track};
-use groovelab::study::preset::Preset;
 use groovelab::study::video::{self, Video};
 
 const MU: f64 = 0.17;
 
 fn scene() -> Scene {
-    Preset::load("paper-b4.9")
-        .unwrap()
-        .spec
-        .resolve()
-        .unwrap()
-        .0
+    crate::common::paper_scene()
 }
 
 fn scratch(test: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("groovelab-files-{}-{test}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+    crate::common::scratch_dir("files", test)
 }
 
 fn groovelab(args: &[&str]) -> (bool, String, String) {

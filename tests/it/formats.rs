@@ -14,22 +14,14 @@ use std::path::PathBuf;
 use groovelab::input::data::{self, Reading};
 use groovelab::physics::scene::Scene;
 use groovelab::study::measured::{RawSeries, Track};
-use groovelab::study::preset::Preset;
 use groovelab::study::video::{self, Video};
 
 fn scene() -> Scene {
-    Preset::load("paper-b4.9")
-        .unwrap()
-        .spec
-        .resolve()
-        .unwrap()
-        .0
+    crate::common::paper_scene()
 }
 
 fn scratch(test: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("groovelab-formats-{}-{test}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+    crate::common::scratch_dir("formats", test)
 }
 
 fn groovelab(args: &[&str]) -> (Option<i32>, String, String) {
