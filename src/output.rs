@@ -29,9 +29,25 @@ pub enum OutputError {
     /// words about that folder (the OS error alone, "No such file or directory" for an
     /// existing `/proc/version`, names the wrong thing).
     #[error("cannot write {}: {why} (the file is written beside it first, then renamed into place)", path.display())]
-    Folder { path: PathBuf, why: String },
+    Folder { path: PathBuf, why: FolderError },
     #[error("interrupted: nothing was written")]
     Interrupted,
+}
+
+/// Why no new file could be made in a target's folder, said of the folder.
+#[derive(Debug, thiserror::Error)]
+pub enum FolderError {
+    #[error("its folder {} does not exist", .0.display())]
+    Missing(PathBuf),
+    /// The folder is there but refuses new names: a pseudo-file system (/proc, /sys).
+    #[error("its folder {} takes no new files", .0.display())]
+    TakesNoFiles(PathBuf),
+    #[error("its folder {} is not writable (permission denied)", .0.display())]
+    NotWritable(PathBuf),
+    #[error("its folder {} is on a read-only file system", .0.display())]
+    ReadOnly(PathBuf),
+    #[error("no new file can be made in its folder {}: {source}", folder.display())]
+    Other { folder: PathBuf, source: io::Error },
 }
 
 /// The target's metadata if it is an existing regular file, `None` if nothing is
@@ -68,18 +84,13 @@ fn io_error(path: &Path, source: io::Error) -> OutputError {
 
 /// Why no new file could be made in `dir`, the target's folder, said of the folder.
 fn folder_error(target: &Path, dir: &Path, e: io::Error) -> OutputError {
-    let folder = dir.display();
+    let folder = dir.to_path_buf();
     let why = match e.kind() {
-        io::ErrorKind::NotFound if !dir.is_dir() => format!("its folder {folder} does not exist"),
-        // The folder is there but refuses new names: a pseudo-file system (/proc, /sys).
-        io::ErrorKind::NotFound => format!("its folder {folder} takes no new files"),
-        io::ErrorKind::PermissionDenied => {
-            format!("its folder {folder} is not writable (permission denied)")
-        }
-        io::ErrorKind::ReadOnlyFilesystem => {
-            format!("its folder {folder} is on a read-only file system")
-        }
-        _ => format!("no new file can be made in its folder {folder}: {e}"),
+        io::ErrorKind::NotFound if !dir.is_dir() => FolderError::Missing(folder),
+        io::ErrorKind::NotFound => FolderError::TakesNoFiles(folder),
+        io::ErrorKind::PermissionDenied => FolderError::NotWritable(folder),
+        io::ErrorKind::ReadOnlyFilesystem => FolderError::ReadOnly(folder),
+        _ => FolderError::Other { folder, source: e },
     };
     OutputError::Folder {
         path: target.to_path_buf(),

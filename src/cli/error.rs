@@ -68,7 +68,7 @@ pub enum CliError {
     #[error(transparent)]
     Scene(#[from] crate::settings::spec::SceneError),
     #[error(transparent)]
-    Preset(#[from] crate::study::preset::PresetError),
+    Preset(#[from] crate::input::preset::LoadError),
     #[error(transparent)]
     File(#[from] crate::input::FileError),
     #[error(transparent)]
@@ -216,7 +216,10 @@ pub enum BadValue {
         method.name(),
         Flag("dt")
     )]
-    MethodCannotRun { method: Method, why: String },
+    MethodCannotRun {
+        method: Method,
+        why: crate::methods::Stall,
+    },
     #[error(
         "preset {preset} has no measured data, allowed: a paper-b* preset or {} FILE",
         Flag("data")

@@ -160,7 +160,7 @@ pub(super) fn simulate_method(
         // Refused before the first step: there is no run to report.
         return Err(BadValue::MethodCannotRun {
             method: args.method,
-            why: why.to_string(),
+            why: *why,
         }
         .into());
     }

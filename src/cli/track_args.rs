@@ -30,19 +30,35 @@ pub enum TrackFormat {
     Json,
 }
 
+/// Why an option's text is not a positive number in range (clap prints it after the
+/// option's name).
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum PositiveError {
+    #[error("'{text}' is not a number of {what}")]
+    NotANumber { text: String, what: &'static str },
+    #[error("{text} is out of range, allowed 0 < {what} ≤ {max:e}")]
+    OutOfRange {
+        text: String,
+        what: &'static str,
+        max: f64,
+    },
+}
+
 /// A parser of a positive number at most `max`.
-fn positive(what: &'static str, max: f64) -> impl Fn(&str) -> Result<f64, String> + Clone {
+fn positive(what: &'static str, max: f64) -> impl Fn(&str) -> Result<f64, PositiveError> + Clone {
     move |text: &str| {
-        let v: f64 = text
-            .trim()
-            .parse()
-            .map_err(|_| format!("'{text}' is not a number of {what}"))?;
+        let v: f64 = text.trim().parse().map_err(|_| PositiveError::NotANumber {
+            text: text.into(),
+            what,
+        })?;
         if v.is_finite() && v > 0.0 && v <= max {
             Ok(v)
         } else {
-            Err(format!(
-                "{text} is out of range, allowed 0 < {what} ≤ {max:e}"
-            ))
+            Err(PositiveError::OutOfRange {
+                text: text.into(),
+                what,
+                max,
+            })
         }
     }
 }

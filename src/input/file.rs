@@ -10,13 +10,34 @@ use std::path::Path;
 pub const MAX_FILE_BYTES: u64 = 64 * 1024 * 1024;
 
 /// Why a user file was not read; one line naming the file and what is allowed.
-#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[derive(Debug, thiserror::Error)]
 #[error("cannot read {what} {path}: {why}")]
 pub struct FileError {
     /// What the file is for (`--data`, `preset file`).
     pub what: String,
     pub path: String,
-    pub why: String,
+    pub why: Unreadable,
+}
+
+/// What is wrong with a user file.
+#[derive(Debug, thiserror::Error)]
+pub enum Unreadable {
+    /// The system's own words (no such file, permission denied).
+    #[error(transparent)]
+    Io(#[from] std::io::Error),
+    /// A directory, a FIFO, a device (see [`kind`]).
+    #[error("it is {0}, allowed a regular file")]
+    NotRegular(&'static str),
+    /// Over `limit` bytes: `size` of them, or `None` when it grew while read.
+    #[error(
+        "it has {} bytes, allowed a file of at most {limit} bytes ({} MiB)",
+        size.map_or(format!("more than {limit}"), |s| s.to_string()),
+        limit / (1024 * 1024)
+    )]
+    TooBig { size: Option<u64>, limit: u64 },
+    /// The `byte`-th byte (from 1) starts no UTF-8 character.
+    #[error("byte {byte} is not UTF-8 text, allowed a UTF-8 text file")]
+    NotUtf8 { byte: usize },
 }
 
 /// The kind of a non-regular file, for messages ("a FIFO", "a directory").
@@ -45,50 +66,39 @@ pub fn kind(meta: &std::fs::Metadata) -> &'static str {
 /// Reads `path` as UTF-8 text if it is a regular file of at most `limit` bytes;
 /// `what` names the file's role in errors.
 pub fn read_user_file(path: &Path, what: &str, limit: u64) -> Result<String, FileError> {
-    let fail = |why: String| FileError {
+    let fail = |why: Unreadable| FileError {
         what: what.to_string(),
         path: path.display().to_string(),
         why,
     };
-    let too_big = |size: String| {
-        fail(format!(
-            "it has {size} bytes, allowed a file of at most {limit} bytes ({} MiB)",
-            limit / (1024 * 1024)
-        ))
-    };
+    let io = |e: std::io::Error| fail(Unreadable::Io(e));
     // Checked before opening: opening a FIFO would block until a writer comes.
-    let meta = std::fs::metadata(path).map_err(|e| fail(e.to_string()))?;
+    let meta = std::fs::metadata(path).map_err(io)?;
     if !meta.is_file() {
-        return Err(fail(format!(
-            "it is {}, allowed a regular file",
-            kind(&meta)
-        )));
+        return Err(fail(Unreadable::NotRegular(kind(&meta))));
     }
     if meta.len() > limit {
-        return Err(too_big(meta.len().to_string()));
+        return Err(fail(Unreadable::TooBig {
+            size: Some(meta.len()),
+            limit,
+        }));
     }
-    let file = std::fs::File::open(path).map_err(|e| fail(e.to_string()))?;
+    let file = std::fs::File::open(path).map_err(io)?;
     // The path may have been swapped between the check and the open.
-    let meta = file.metadata().map_err(|e| fail(e.to_string()))?;
+    let meta = file.metadata().map_err(io)?;
     if !meta.is_file() {
-        return Err(fail(format!(
-            "it is {}, allowed a regular file",
-            kind(&meta)
-        )));
+        return Err(fail(Unreadable::NotRegular(kind(&meta))));
     }
     // A file growing while read is still cut at the limit.
     let mut bytes = Vec::with_capacity(meta.len().min(limit) as usize);
-    file.take(limit + 1)
-        .read_to_end(&mut bytes)
-        .map_err(|e| fail(e.to_string()))?;
+    file.take(limit + 1).read_to_end(&mut bytes).map_err(io)?;
     if bytes.len() as u64 > limit {
-        return Err(too_big(format!("more than {limit}")));
+        return Err(fail(Unreadable::TooBig { size: None, limit }));
     }
     String::from_utf8(bytes).map_err(|e| {
-        fail(format!(
-            "byte {} is not UTF-8 text, allowed a UTF-8 text file",
-            e.utf8_error().valid_up_to() + 1
-        ))
+        fail(Unreadable::NotUtf8 {
+            byte: e.utf8_error().valid_up_to() + 1,
+        })
     })
 }
 

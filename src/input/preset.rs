@@ -4,9 +4,20 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::input::file::{MAX_FILE_BYTES, read_user_file};
+use crate::input::file::{FileError, MAX_FILE_BYTES, read_user_file};
 use crate::lab::Lab;
 use crate::study::preset::{self, Origin, Preset, PresetError};
+
+/// Why a preset named on the command line or in the app could not be loaded.
+#[derive(Debug, thiserror::Error)]
+pub enum LoadError {
+    #[error("unknown preset '{0}', allowed: a name from `groovelab presets` or a .toml file")]
+    Unknown(String),
+    #[error(transparent)]
+    Io(FileError),
+    #[error(transparent)]
+    Malformed(#[from] PresetError),
+}
 
 /// Why a scene could not be saved as a preset.
 #[derive(Debug, thiserror::Error)]
@@ -31,9 +42,9 @@ pub enum SaveError {
 
 impl Preset {
     /// A built-in preset by name, or a preset file by path.
-    pub fn load(name_or_path: &str) -> Result<Preset, PresetError> {
+    pub fn load(name_or_path: &str) -> Result<Preset, LoadError> {
         if let Some(preset) = Preset::built_in_named(name_or_path) {
-            return preset;
+            return Ok(preset?);
         }
         let user = user_dir().map(|d| d.join(format!("{name_or_path}.toml")));
         let path = match user {
@@ -41,26 +52,26 @@ impl Preset {
             _ => PathBuf::from(name_or_path),
         };
         if !path.exists() {
-            return Err(PresetError::Unknown(name_or_path.to_string()));
+            return Err(LoadError::Unknown(name_or_path.to_string()));
         }
         // Something is there: it must be a regular file of sane size (not a FIFO
         // that would block, not /dev/zero).
-        let text =
-            read_user_file(&path, "preset file", MAX_FILE_BYTES).map_err(|e| PresetError::Io {
-                path: path.display().to_string(),
-                reason: e.why,
-            })?;
-        Preset::parse(&text, &path.display().to_string(), Origin::File(path))
+        let text = read_user_file(&path, "preset file", MAX_FILE_BYTES).map_err(LoadError::Io)?;
+        Ok(Preset::parse(
+            &text,
+            &path.display().to_string(),
+            Origin::File(path),
+        )?)
     }
 
     /// Built-in presets, then the user's (from [`user_dir`]); unreadable user files are
     /// returned as errors beside the good ones.
-    pub fn all() -> (Vec<Preset>, Vec<PresetError>) {
+    pub fn all() -> (Vec<Preset>, Vec<LoadError>) {
         Preset::all_in(user_dir().as_deref())
     }
 
     /// Built-in presets, then those in `dir` (if any).
-    pub fn all_in(dir: Option<&Path>) -> (Vec<Preset>, Vec<PresetError>) {
+    pub fn all_in(dir: Option<&Path>) -> (Vec<Preset>, Vec<LoadError>) {
         let mut presets = Preset::built_in();
         let mut errors = Vec::new();
         if let Some(dir) = dir

@@ -49,10 +49,6 @@ pub struct Preset {
 
 #[derive(Debug, thiserror::Error)]
 pub enum PresetError {
-    #[error("unknown preset '{0}', allowed: a name from `groovelab presets` or a .toml file")]
-    Unknown(String),
-    #[error("cannot read preset file {path}: {reason}")]
-    Io { path: String, reason: String },
     #[error("malformed preset {name}: {reason}")]
     Malformed { name: String, reason: Malformed },
 }

@@ -208,14 +208,10 @@ pub fn file_unit(unit: &str, dim: Dimension) -> Result<f64, units::UnitError> {
         .find(|(from, _)| *from == lower)
         .map_or(u, |(_, to)| to);
     units::unit_factor(name, dim).map_err(|e| match e {
-        units::UnitError::UnknownUnit { allowed, .. } => units::UnitError::UnknownUnit {
+        units::UnitError::UnknownUnit { .. } => units::UnitError::UnknownUnit {
             text: u.to_string(),
             unit: u.to_string(),
-            allowed: if dim == Dimension::Time {
-                format!("{allowed}, us")
-            } else {
-                allowed
-            },
+            allowed: units::Expected::FileUnit(dim),
         },
         other => other,
     })

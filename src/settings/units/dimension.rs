@@ -138,28 +138,6 @@ impl Dimension {
     pub fn si_unit(self) -> &'static str {
         self.units().first().map_or("", |u| u.0)
     }
-
-    pub(super) fn allowed(self) -> String {
-        let names: Vec<&str> = self.units().iter().map(|u| u.0).collect();
-        if names.is_empty() {
-            "a plain number".to_string()
-        } else {
-            format!("a number with unit {} (bare number = SI)", names.join(", "))
-        }
-    }
-
-    /// What the app's typing field takes: there a bare number is in the display unit,
-    /// not SI (the command line's rule would set b to 0.049 cm for "0.049").
-    pub(super) fn allowed_typed(self) -> String {
-        let names: Vec<&str> = self.units().iter().map(|u| u.0).collect();
-        match self.table().display {
-            "" => "a plain number".to_string(),
-            unit => format!(
-                "a number in {unit} (a bare number is in {unit}) or with a unit {}",
-                names.join(", ")
-            ),
-        }
-    }
 }
 
 /// `value` (SI) in the unit `shift` decimal places from SI (cm: −2): one

@@ -7,7 +7,9 @@ mod parse;
 mod show;
 
 pub use dimension::Dimension;
-pub use parse::{MIN_MAGNITUDE, UnitError, parse_option, parse_quantity, parse_typed, unit_factor};
+pub use parse::{
+    Expected, MIN_MAGNITUDE, UnitError, parse_option, parse_quantity, parse_typed, unit_factor,
+};
 pub use show::{
     SMALLEST_UNCERTAINTY, Shown, fit_digits, fit_number, show, show_exact, show_small, sig_figs,
     significant, with_uncertainty,

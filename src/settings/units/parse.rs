@@ -1,18 +1,20 @@
 //! Reading quantities: `2.75cm`, `167g`, `60cm/s` into SI, strictly (command line,
 //! presets) or as typed into the app, and why a text is refused.
 
+use std::fmt;
+
 use super::dimension::Dimension;
 
 /// Why a quantity could not be read.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum UnitError {
     #[error("'{text}' is not a number, expected {allowed}")]
-    NotANumber { text: String, allowed: String },
+    NotANumber { text: String, allowed: Expected },
     #[error("unknown unit '{unit}' in '{text}', expected {allowed}")]
     UnknownUnit {
         text: String,
         unit: String,
-        allowed: String,
+        allowed: Expected,
     },
     #[error("'{text}' is not finite, expected a finite number")]
     NotFinite { text: String },
@@ -21,6 +23,55 @@ pub enum UnitError {
         "'{text}' is out of range ({why}), expected 0 or a magnitude from about 2.2e-308 to 1.8e308 in SI units"
     )]
     OutOfRange { text: String, why: &'static str },
+}
+
+/// What a quantity's text may be, as an error says it after "expected".
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Expected {
+    /// A number with a unit of the dimension, a bare number in SI (the command line,
+    /// presets).
+    Si(Dimension),
+    /// What the app's typing field takes: a bare number is in the display unit.
+    Typed(Dimension),
+    /// One of the dimension's unit names, alone.
+    UnitName(Dimension),
+    /// A unit a data file names: the dimension's unit names, and `us` for a time.
+    FileUnit(Dimension),
+}
+
+impl fmt::Display for Expected {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let names = |dim: Dimension| {
+            dim.units()
+                .iter()
+                .map(|u| u.0)
+                .collect::<Vec<_>>()
+                .join(", ")
+        };
+        match *self {
+            Expected::Si(dim) if dim.units().is_empty() => write!(f, "a plain number"),
+            Expected::Si(dim) => write!(f, "a number with unit {} (bare number = SI)", names(dim)),
+            Expected::Typed(dim) => match dim.display_unit().0 {
+                "" => write!(f, "a plain number"),
+                unit => write!(
+                    f,
+                    "a number in {unit} (a bare number is in {unit}) or with a unit {}",
+                    names(dim)
+                ),
+            },
+            Expected::UnitName(dim) if dim.units().is_empty() => {
+                write!(f, "no unit (a plain number)")
+            }
+            Expected::UnitName(dim) => write!(f, "one of {}", names(dim)),
+            Expected::FileUnit(dim) => {
+                write!(f, "{}", Expected::UnitName(dim))?;
+                if dim == Dimension::Time {
+                    write!(f, ", us")?;
+                }
+                Ok(())
+            }
+        }
+    }
 }
 
 /// Smallest non-zero magnitude a quantity may have (SI): the smallest normal double,
@@ -35,17 +86,10 @@ pub fn unit_factor(unit: &str, dim: Dimension) -> Result<f64, UnitError> {
         .iter()
         .find(|(name, _)| *name == unit)
         .map(|&(_, shift)| shift_exponent("1", shift))
-        .ok_or_else(|| {
-            let names: Vec<&str> = dim.units().iter().map(|u| u.0).collect();
-            UnitError::UnknownUnit {
-                text: unit.to_string(),
-                unit: unit.to_string(),
-                allowed: if names.is_empty() {
-                    "no unit (a plain number)".to_string()
-                } else {
-                    format!("one of {}", names.join(", "))
-                },
-            }
+        .ok_or_else(|| UnitError::UnknownUnit {
+            text: unit.to_string(),
+            unit: unit.to_string(),
+            allowed: Expected::UnitName(dim),
         })
 }
 
@@ -62,7 +106,7 @@ pub fn parse_quantity(text: &str, dim: Dimension) -> Result<f64, UnitError> {
     let Some(split) = split else {
         return Err(UnitError::NotANumber {
             text: text.to_string(),
-            allowed: dim.allowed(),
+            allowed: Expected::Si(dim),
         });
     };
     let digits = trimmed[..split].trim();
@@ -84,7 +128,7 @@ pub fn parse_quantity(text: &str, dim: Dimension) -> Result<f64, UnitError> {
             .ok_or_else(|| UnitError::UnknownUnit {
                 text: text.to_string(),
                 unit: unit.to_string(),
-                allowed: dim.allowed(),
+                allowed: Expected::Si(dim),
             })?
     };
     let value = shift_exponent(digits, shift);
@@ -198,12 +242,12 @@ fn about_typed(e: UnitError, typed: &str, dim: Dimension) -> UnitError {
     match e {
         UnitError::NotANumber { .. } => UnitError::NotANumber {
             text,
-            allowed: dim.allowed_typed(),
+            allowed: Expected::Typed(dim),
         },
         UnitError::UnknownUnit { unit, .. } => UnitError::UnknownUnit {
             text,
             unit,
-            allowed: dim.allowed_typed(),
+            allowed: Expected::Typed(dim),
         },
         UnitError::NotFinite { .. } => UnitError::NotFinite { text },
         UnitError::OutOfRange { why, .. } => UnitError::OutOfRange { text, why },
