@@ -28,12 +28,12 @@ pub enum Draw {
 
 /// A series' points, shared: what does not change from frame to frame (the measured
 /// points of a scene) is drawn without being copied.
-pub type Points = std::sync::Arc<[(f64, f64)]>;
+pub type PlotPoints = std::sync::Arc<[(f64, f64)]>;
 
 #[derive(Clone, Debug)]
-pub struct Series {
+pub struct PlotLine {
     pub name: String,
-    pub points: Points,
+    pub points: PlotPoints,
     pub style: Style,
     /// The glyph in ASCII mode (lines) or the marker (points, both modes).
     pub glyph: &'static str,
@@ -56,7 +56,7 @@ pub struct Plot {
     pub y_range: (f64, f64),
     pub x_title: String,
     pub y_title: String,
-    pub series: Vec<Series>,
+    pub series: Vec<PlotLine>,
     pub vlines: Vec<VLine>,
     pub cursor: Option<f64>,
     /// Replaces the automatic x ticks (e.g. for log axes): positions and labels.

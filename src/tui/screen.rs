@@ -204,10 +204,10 @@ fn parts_of(view: View) -> Vec<(&'static dyn Component, Place)> {
         View::Map => vec![(&map::Map, Place::Chart), (&info::Why, Place::Side)],
         View::Methods => vec![
             (&methods::MethodsDiagram, Place::Chart),
-            (&methods::MethodRows, Place::Side),
+            (&methods::MethodsTable, Place::Side),
         ],
         // The Forces view takes the chart's and the side panel's room.
-        View::Forces => vec![(&forces::Forces, Place::Middle)],
+        View::Forces => vec![(&forces::ForcesView, Place::Middle)],
     }
 }
 
@@ -218,7 +218,7 @@ fn layer_of(mode: &Mode) -> Option<&'static dyn Component> {
     match mode {
         Mode::Normal | Mode::Edit(_) => None,
         Mode::Help => Some(&popups::Help),
-        Mode::Table => Some(&table::Table),
+        Mode::Table => Some(&table::TableView),
         Mode::Predict => Some(&predict::Question),
         Mode::Picker(_) => Some(&popups::Picker),
         Mode::SaveName(_) | Mode::Export(..) | Mode::ConfirmOverwrite(_) => Some(&popups::Prompt),

@@ -13,7 +13,7 @@ use std::sync::Arc;
 use crate::lab::{Lab, Resolved};
 use crate::physics::derived::{Derived, Regime};
 use crate::physics::solution::{EnergySplit, Snapshot, Solution};
-use crate::tui::plot::{Cells, Points};
+use crate::tui::plot::{Cells, PlotPoints};
 
 /// One cached view of a snapshot: the snapshot it belongs to (held, so its address
 /// cannot be reused by a newer one), the size, the values.
@@ -29,7 +29,7 @@ pub struct ViewCache {
     regimes: Cached<(usize, usize), Regime>,
     /// The measured series a chart draws, thinned to its cells: per grid and which
     /// series (bits in the order of `MeasuredPoints::series`).
-    marks: Cached<(Cells, u8), Option<Points>>,
+    marks: Cached<(Cells, u8), Option<PlotPoints>>,
 }
 
 /// `cell`'s values if they were made for `now` at `key`, else `make`'s, kept; and
@@ -61,7 +61,7 @@ impl ViewCache {
         now: &Arc<Resolved>,
         cells: Cells,
         drawn: u8,
-    ) -> (Rc<[Option<Points>]>, bool) {
+    ) -> (Rc<[Option<PlotPoints>]>, bool) {
         cached(&mut self.marks, now, (cells, drawn), || {
             let Some(m) = &now.points else {
                 return Rc::from(Vec::new());

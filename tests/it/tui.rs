@@ -1717,7 +1717,7 @@ fn a_step_from_the_limit_says_so() {
 fn a_component_renders_alone_as_on_the_screen() {
     use groovelab::tui::component::{Component, Ctx};
     use groovelab::tui::screen::Screen;
-    use groovelab::tui::view::forces::Forces;
+    use groovelab::tui::view::forces::ForcesView;
     use ratatui::buffer::Buffer;
     let mut a = app("paper-b4.9");
     press(&mut a, "v");
@@ -1736,7 +1736,7 @@ fn a_component_renders_alone_as_on_the_screen() {
         theme: &theme,
     };
     let mut alone = Buffer::empty(middle);
-    Forces.render(middle, &mut alone, &cx);
+    ForcesView.render(middle, &mut alone, &cx);
     let text: String = (middle.top()..middle.bottom())
         .flat_map(|y| (middle.left()..middle.right()).map(move |x| (x, y)))
         .map(|(x, y)| alone[(x, y)].symbol().to_string())
@@ -1750,6 +1750,6 @@ fn a_component_renders_alone_as_on_the_screen() {
     // Alone in an area of its own (a small one), it draws there and nowhere else.
     let small = Rect::new(0, 0, 80, 16);
     let mut buf = Buffer::empty(small);
-    Forces.render(small, &mut buf, &cx);
+    ForcesView.render(small, &mut buf, &cx);
     assert!(buf.content.iter().any(|c| c.symbol() != " "));
 }

@@ -45,7 +45,7 @@ fn thinned_markers_mark_the_same_cells_as_all_of_them() {
             (t, v)
         })
         .collect();
-    let marks = |points: Vec<(f64, f64)>| Series {
+    let marks = |points: Vec<(f64, f64)>| PlotLine {
         name: "measured".into(),
         points: points.into(),
         style: Style::default(),
@@ -58,7 +58,7 @@ fn thinned_markers_mark_the_same_cells_as_all_of_them() {
         x_title: "t (s)".into(),
         y_title: "v (m/s)".into(),
         series: vec![
-            Series {
+            PlotLine {
                 draw: Draw::Line,
                 glyph: "*",
                 ..marks(vec![(0.0, -1.0), (1.0, 1.0)])
@@ -100,7 +100,7 @@ fn a_plot_of_extreme_ranges_does_not_panic() {
     ];
     for x_range in ranges {
         for y_range in ranges {
-            let series = Series {
+            let series = PlotLine {
                 name: "v_cm".into(),
                 points: vec![x_range, y_range, (x_range.0, y_range.1), (f64::NAN, 0.0)].into(),
                 style: Style::default(),
@@ -114,7 +114,7 @@ fn a_plot_of_extreme_ranges_does_not_panic() {
                 y_title: "v (m/s)".into(),
                 series: vec![
                     series.clone(),
-                    Series {
+                    PlotLine {
                         draw: Draw::Points,
                         ..series
                     },
@@ -173,7 +173,7 @@ fn a_column_maps_back_to_the_value_drawn_there() {
 
 #[test]
 fn legend_rows_push_the_data_area_down_and_clicks_follow() {
-    let line = |name: &str| Series {
+    let line = |name: &str| PlotLine {
         name: name.into(),
         points: vec![(0.0, 0.0), (1.0, 1.0)].into(),
         style: Style::default(),

@@ -18,7 +18,7 @@ use crate::settings::units::Dimension;
 use crate::tui::app::{App, ChartBall};
 use crate::tui::chart::Chart;
 use crate::tui::component::{Component, Ctx};
-use crate::tui::plot::{Draw, Plot, Series, VLine, nice_ticks};
+use crate::tui::plot::{Draw, Plot, PlotLine, VLine, nice_ticks};
 use crate::tui::theme::Theme;
 use crate::tui::view_cache::ViewCache;
 use marks::{line_fit_marks, measured_velocities};
@@ -91,7 +91,7 @@ fn thin_measured(
         return false;
     };
     // Markers only: a line through thinned points would be another line.
-    let index = |s: &Series| {
+    let index = |s: &PlotLine| {
         (s.draw != Draw::Line)
             .then(|| m.series().position(|p| Arc::ptr_eq(p, &s.points)))
             .flatten()
@@ -133,7 +133,7 @@ fn pinned_series(
     columns: usize,
     theme: &Theme,
     curves: &[Curve],
-) -> Vec<Series> {
+) -> Vec<PlotLine> {
     if app.lab.pinned.is_none() {
         return Vec::new();
     }
@@ -149,7 +149,7 @@ fn pinned_series(
     curves
         .iter()
         .enumerate()
-        .map(|(k, (name, value))| Series {
+        .map(|(k, (name, value))| PlotLine {
             name: if k == 0 {
                 format!("pinned {name}")
             } else {
@@ -169,8 +169,8 @@ fn series_of(
     value: impl Fn(&Snapshot) -> f64,
     style: Style,
     glyph: &'static str,
-) -> Series {
-    Series {
+) -> PlotLine {
+    PlotLine {
         name: name.to_string(),
         points: samples.iter().map(|s| (s.t, value(s))).collect(),
         style,
@@ -182,7 +182,7 @@ fn series_of(
 /// The y range and ticks over every series' finite values (the snapshot's measured
 /// series by their range made once per scene, not a pass over their rows).
 fn bounds(
-    series: &[Series],
+    series: &[PlotLine],
     measured: Option<&MeasuredPoints>,
     rows: usize,
 ) -> ((f64, f64), Vec<f64>) {
@@ -209,7 +209,7 @@ fn balls_shown(chart_ball: ChartBall) -> (Vec<usize>, &'static str) {
 }
 
 /// The exact run's v_cm and v_t of each ball shown (tagged L/R when both are).
-fn exact_velocities(samples: &[Snapshot], balls: &[usize], theme: &Theme) -> Vec<Series> {
+fn exact_velocities(samples: &[Snapshot], balls: &[usize], theme: &Theme) -> Vec<PlotLine> {
     let mut series = Vec::new();
     for &i in balls {
         let (style, side) = if i == 0 {
@@ -238,11 +238,11 @@ fn exact_velocities(samples: &[Snapshot], balls: &[usize], theme: &Theme) -> Vec
 
 /// The time-stepping overlay: its progress while it runs (a legend entry), then its
 /// v_cm and v_t over the exact curves, so its chatter shows.
-fn overlay_velocities(app: &App, balls: &[usize], columns: usize, theme: &Theme) -> Vec<Series> {
+fn overlay_velocities(app: &App, balls: &[usize], columns: usize, theme: &Theme) -> Vec<PlotLine> {
     let o = match app.overlay.state() {
         State::Computing { done, total } => {
             let name = app.overlay.choice.map_or("", |(m, _)| m.name());
-            return vec![Series {
+            return vec![PlotLine {
                 name: format!("{name} {}", super::panel::progress_text(done, total)),
                 points: Vec::new().into(),
                 style: theme.overlay,
@@ -280,7 +280,7 @@ fn overlay_velocities(app: &App, balls: &[usize], columns: usize, theme: &Theme)
             (_, 0) => " L",
             _ => " R",
         };
-        series.push(Series {
+        series.push(PlotLine {
             name: format!(
                 "{} {setting} ({}) v_cm{side}",
                 o.method.name(),
@@ -291,7 +291,7 @@ fn overlay_velocities(app: &App, balls: &[usize], columns: usize, theme: &Theme)
             glyph: glyph_v,
             draw,
         });
-        series.push(Series {
+        series.push(PlotLine {
             name: format!("v_t{side}"),
             points: pts(2).into(),
             style: theme.overlay_t,
@@ -394,7 +394,7 @@ fn positions(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Ve
     ]);
     // A position track's centre, where the model's left ball would be (x − R).
     if let Some(x) = app.lab.points.as_ref().and_then(|m| m.x.as_ref()) {
-        series.push(Series {
+        series.push(PlotLine {
             name: "tracked x".into(),
             points: Arc::clone(x),
             style: theme.measured,
@@ -451,7 +451,7 @@ fn energy(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Vec<S
         }),
     ];
     let total = split.first().map_or(0.0, |(_, e)| e.total());
-    let mut series = vec![Series {
+    let mut series = vec![PlotLine {
         name: name("total", "sum").into(),
         points: split.iter().map(|(t, e)| (*t, e.total())).collect(),
         style: theme.dim,
@@ -462,7 +462,7 @@ fn energy(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Vec<S
         // The pinned run's kinetic energy, for the A/B comparison.
         series.insert(
             0,
-            Series {
+            PlotLine {
                 name: "pinned kinetic".into(),
                 points: cache
                     .pinned_kinetic(&app.lab, columns)
@@ -485,7 +485,7 @@ fn energy(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Vec<S
         } else {
             name.to_string()
         };
-        series.push(Series {
+        series.push(PlotLine {
             name,
             points: if zero { Vec::new() } else { points }.into(),
             style,

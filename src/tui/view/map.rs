@@ -11,7 +11,7 @@ use crate::physics::closed_form;
 use crate::physics::derived::Regime;
 use crate::tui::app::App;
 use crate::tui::component::{Component, Ctx};
-use crate::tui::plot::{Draw, Plot, Series, VLine};
+use crate::tui::plot::{Draw, Plot, PlotLine, VLine};
 use crate::tui::theme::Theme;
 
 /// The regime map's half of `area` and the paper figure's.
@@ -149,7 +149,7 @@ fn paper_figure(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let n = 200;
     let xs: Vec<f64> = (0..=n).map(|i| 1.95 * i as f64 / n as f64).collect();
     let k = |x: f64| closed_form::contact_ratio(1.0, x);
-    let series = |name: &str, f: &dyn Fn(f64) -> f64, style, glyph| Series {
+    let series = |name: &str, f: &dyn Fn(f64) -> f64, style, glyph| PlotLine {
         name: name.to_string(),
         points: xs.iter().map(|&x| (x, f(x))).collect(),
         style,

@@ -13,7 +13,7 @@ use crate::settings::units::{Dimension, fit_number, show};
 use crate::study::compare::{Row, RunStatus, fitted_order, outcome_until};
 use crate::tui::app::App;
 use crate::tui::component::{Component, Ctx};
-use crate::tui::plot::{Draw, Plot, Series};
+use crate::tui::plot::{Draw, Plot, PlotLine};
 use crate::tui::theme::Theme;
 use crate::tui::vocabulary::WorkAxis;
 
@@ -90,14 +90,14 @@ pub fn render_diagram(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             _ => theme.measured,
         };
         let pts: Vec<(f64, f64)> = rows.iter().filter(|r| r.method == m).map(point).collect();
-        series.push(Series {
+        series.push(PlotLine {
             name: m.name().to_string(),
             points: pts.clone().into(),
             style,
             glyph: ".",
             draw: Draw::Line,
         });
-        series.push(Series {
+        series.push(PlotLine {
             name: String::new(),
             points: pts.into(),
             style,
@@ -296,9 +296,9 @@ impl Component for MethodsDiagram {
 }
 
 /// The Methods view's runs list as a component.
-pub struct MethodRows;
+pub struct MethodsTable;
 
-impl Component for MethodRows {
+impl Component for MethodsTable {
     fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
         render_rows(cx.app, area, buf, cx.theme);
     }

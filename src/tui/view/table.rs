@@ -150,9 +150,9 @@ pub(super) fn table_layout(app: &App, theme: &Theme) -> (Vec<Line<'static>>, usi
 }
 
 /// The data table popup as a component.
-pub struct Table;
+pub struct TableView;
 
-impl Component for Table {
+impl Component for TableView {
     fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
         data_table(cx.app, area, buf, cx.theme);
     }

@@ -5,17 +5,17 @@ use std::sync::Arc;
 
 use crate::lab::MeasuredPoints;
 use crate::study::fit::LineFit;
-use crate::tui::plot::{Draw, Series, VLine};
+use crate::tui::plot::{Draw, PlotLine, VLine};
 use crate::tui::theme::Theme;
 
 /// The measured v_cm and v_t as marks, with each derived point's ±1σ (a position
 /// track's local fits) as a vertical run of dots under the point's own glyph; the
 /// points are the snapshot's, shared, not copied per frame.
-pub(super) fn measured_velocities(m: &MeasuredPoints, theme: &Theme) -> Vec<Series> {
+pub(super) fn measured_velocities(m: &MeasuredPoints, theme: &Theme) -> Vec<PlotLine> {
     let mut series = Vec::new();
     for (n, bars) in [&m.v_cm_bars, &m.v_t_bars].into_iter().enumerate() {
         if let Some(bars) = bars {
-            series.push(Series {
+            series.push(PlotLine {
                 // One legend entry for both series' bars.
                 name: if n == 0 {
                     // σ has no ASCII letter: "sd" (standard deviation), not "s".
@@ -36,7 +36,7 @@ pub(super) fn measured_velocities(m: &MeasuredPoints, theme: &Theme) -> Vec<Seri
             });
         }
     }
-    series.push(Series {
+    series.push(PlotLine {
         name: "measured v_cm".into(),
         points: Arc::clone(&m.v_cm),
         style: theme.measured,
@@ -45,7 +45,7 @@ pub(super) fn measured_velocities(m: &MeasuredPoints, theme: &Theme) -> Vec<Seri
     });
     // A track without a rim mark measures no v_t: no legend entry claims one.
     if !m.v_t.is_empty() {
-        series.push(Series {
+        series.push(PlotLine {
             name: "measured v_t".into(),
             points: Arc::clone(&m.v_t),
             style: theme.measured,
@@ -57,12 +57,12 @@ pub(super) fn measured_velocities(m: &MeasuredPoints, theme: &Theme) -> Vec<Seri
 }
 
 /// The paper's straight lines over the fit window, and the window's ends.
-pub(super) fn line_fit_marks(l: &LineFit, theme: &Theme) -> (Vec<Series>, Vec<VLine>) {
+pub(super) fn line_fit_marks(l: &LineFit, theme: &Theme) -> (Vec<PlotLine>, Vec<VLine>) {
     let lines = l
         .lines
         .iter()
         .zip(["fit lines", ""])
-        .map(|(line, name)| Series {
+        .map(|(line, name)| PlotLine {
             name: name.to_string(),
             points: [l.from, l.to]
                 .iter()

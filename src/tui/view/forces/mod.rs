@@ -157,9 +157,9 @@ fn hide_number(line: &str, unit: &str) -> String {
 }
 
 /// The Forces view (front, side, chain) as a component.
-pub struct Forces;
+pub struct ForcesView;
 
-impl Component for Forces {
+impl Component for ForcesView {
     fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
         render(cx.app, area, buf, cx.theme);
     }
