@@ -9,7 +9,7 @@
 use super::notes::{Notes, UnitNote};
 use super::options::{DataError, MAX_ROWS, Reading};
 use super::scales::{Given, LENGTHS, TIMES, check_track};
-use super::table::{Row, Sep, Table, clean, missing, number, unit_factor};
+use super::table::{Sep, Table, TableRow, clean, missing, number, unit_factor};
 use crate::settings::units::Dimension;
 use crate::study::measured::Track;
 
@@ -127,7 +127,9 @@ fn same(a: &str, b: &str) -> bool {
 
 /// The column header and the lines before it (Tracker's `#multi:` and track names, or
 /// a single track's name): the first row with a time column, within four rows.
-fn find_header(rows: &mut impl Iterator<Item = Row>) -> Result<(Vec<Row>, Row), String> {
+fn find_header(
+    rows: &mut impl Iterator<Item = TableRow>,
+) -> Result<(Vec<TableRow>, TableRow), String> {
     let mut before = Vec::new();
     loop {
         let Some(row) = rows.next() else {
@@ -187,7 +189,7 @@ pub enum RowError {
 /// multi-track file's names line, or a single-track file's title; returns the format.
 fn name_tracks(
     cols: &mut [Option<Col>],
-    before: &[Row],
+    before: &[TableRow],
     sep: Sep,
 ) -> Result<&'static str, LayoutError> {
     let multi = before
@@ -425,7 +427,7 @@ impl Decided<'_> {
 }
 
 /// The tracks with an x column, in file order, or why the header has none.
-fn tracks_with_x(cols: &[Option<Col>], header: &Row) -> Result<Vec<String>, String> {
+fn tracks_with_x(cols: &[Option<Col>], header: &TableRow) -> Result<Vec<String>, String> {
     let mut names: Vec<String> = Vec::new();
     for c in cols.iter().flatten() {
         if c.axis == Axis::X && !names.contains(&c.track) {
@@ -457,7 +459,7 @@ struct Columns {
 /// Appends the data rows to `track`: rows without a time are dropped, an empty or
 /// `NaN` cell is a missing value (NaN).
 fn read_rows(
-    rows: impl Iterator<Item = Row>,
+    rows: impl Iterator<Item = TableRow>,
     columns: &Columns,
     track: &mut Track,
 ) -> Result<(), RowError> {

@@ -35,12 +35,12 @@ impl Sep {
 }
 
 /// One row of a file: its line number (from 1) and its cells, trimmed.
-pub(crate) struct Row {
+pub(crate) struct TableRow {
     pub line: usize,
     pub cells: csv::StringRecord,
 }
 
-impl Row {
+impl TableRow {
     /// Cell `i` without quotes and blanks; "" past the row's end.
     pub fn cell(&self, i: usize) -> &str {
         self.cells.get(i).map_or("", |c| c.trim().trim_matches('"'))
@@ -92,7 +92,7 @@ impl Table {
     }
 
     /// The rows in file order.
-    pub fn rows(&self) -> impl Iterator<Item = Row> + '_ {
+    pub fn rows(&self) -> impl Iterator<Item = TableRow> + '_ {
         let delimiter = match self.sep {
             Sep::Tab | Sep::Space => b'\t',
             Sep::Semicolon => b';',
@@ -108,7 +108,7 @@ impl Table {
         // so the record's own line is looked up, not counted).
         reader.into_records().filter_map(Result::ok).map(|cells| {
             let k = cells.position().map_or(0, |p| p.line() as usize - 1);
-            Row {
+            TableRow {
                 line: self.lines.get(k).copied().unwrap_or(0),
                 cells,
             }
@@ -259,7 +259,7 @@ mod tests {
         let text = "\u{feff}# a comment\n\"Latest: Time (s)\",\"Latest: X (m)\"\r\n\r\n0,\"1.5\"\n# c\n0.1,2\n";
         let t = Table::new(text);
         assert_eq!(t.sep, Sep::Comma);
-        let rows: Vec<Row> = t.rows().collect();
+        let rows: Vec<TableRow> = t.rows().collect();
         assert_eq!(rows.len(), 3);
         assert_eq!(
             rows.iter().map(|r| r.line).collect::<Vec<_>>(),
@@ -309,7 +309,7 @@ mod tests {
     fn the_separator_comes_from_the_lines_that_have_one() {
         let t = Table::new("mass_A\nt\tx\ty\n0\t1,5\t2\n");
         assert_eq!(t.sep, Sep::Tab);
-        let rows: Vec<Row> = t.rows().collect();
+        let rows: Vec<TableRow> = t.rows().collect();
         assert_eq!(rows[0].len(), 1);
         assert_eq!(number(rows[2].cell(1)), Some(1.5));
         let t = Table::new("t   x\n0  1\n");

@@ -156,7 +156,7 @@ fn open_vertically(mask: &mut [bool], w: usize, h: usize) {
     }
 }
 
-struct Component {
+struct Region {
     x0: usize,
     x1: usize,
     y0: usize,
@@ -165,7 +165,7 @@ struct Component {
 }
 
 /// The 4-connected components of `mask` (cleared as they are taken).
-fn blobs(mask: &mut [bool], w: usize, h: usize) -> Vec<Component> {
+fn blobs(mask: &mut [bool], w: usize, h: usize) -> Vec<Region> {
     let mut out = Vec::new();
     let mut stack = Vec::new();
     for start in 0..mask.len() {
@@ -174,7 +174,7 @@ fn blobs(mask: &mut [bool], w: usize, h: usize) -> Vec<Component> {
         }
         mask[start] = false;
         stack.push(start);
-        let mut c = Component {
+        let mut c = Region {
             x0: usize::MAX,
             x1: 0,
             y0: usize::MAX,
