@@ -9,7 +9,7 @@ use super::args::{SceneArgs, SweepArgs, SweepFormat};
 use super::error::{BadValue, CliError, Flag, size_text};
 use super::progress::Bar;
 use crate::output::AtomicFile;
-use crate::study::sweep::{self, Axis, GridPoint};
+use crate::study::sweep::{self, GridPoint, SweepAxis};
 
 fn grid(text: &str, two: bool) -> Result<(usize, usize), CliError> {
     match super::args::counts(text, 10_000) {
@@ -133,7 +133,7 @@ pub fn run_with_stop(
     let bar = Bar::with_stop("points", total >= 20_000, stop);
     bar.set_total(total);
     let tick = || bar.inc();
-    let map = Map {
+    let map = SweepJob {
         base: &base,
         x: &x,
         y: y.as_ref(),
@@ -174,10 +174,10 @@ fn output_error(path: &std::path::Path, source: std::io::Error) -> CliError {
 }
 
 /// What one sweep computes.
-struct Map<'a> {
+struct SweepJob<'a> {
     base: &'a crate::settings::spec::SceneSpec,
-    x: &'a Axis,
-    y: Option<&'a Axis>,
+    x: &'a SweepAxis,
+    y: Option<&'a SweepAxis>,
     preset: &'a str,
     stop: &'a AtomicBool,
     tick: &'a (dyn Fn() + Sync),
@@ -186,7 +186,7 @@ struct Map<'a> {
 /// Computes the map and writes it to `out`: CSV and JSON row batch by row batch
 /// (bounded memory), SVG whole (its grid is capped).
 fn emit(
-    map: &Map,
+    map: &SweepJob,
     format: SweepFormat,
     out: &mut dyn Write,
     io_error: &dyn Fn(std::io::Error) -> CliError,

@@ -8,7 +8,7 @@ use serde::Serialize;
 use super::args::SceneArgs;
 use super::error::CliError;
 use super::progress::Bar;
-use super::track_args::{TrackArgs, TrackFormat};
+use super::track_args::{TrackArgs, TrackOutput};
 use crate::input::data::DataError;
 use crate::input::video::{self, Info, Limits, RateSource, VideoError};
 use crate::settings::params::Key;
@@ -44,8 +44,8 @@ pub fn run(scene: &SceneArgs, scale: Option<f64>, args: &TrackArgs) -> Result<St
     }
     let done = tracked(&args.video, scene, args.fps, scale)?;
     let text = match args.format {
-        TrackFormat::Tracker => write::tracker_text(&done.tracks, &done.notes),
-        TrackFormat::Json => {
+        TrackOutput::Tracker => write::tracker_text(&done.tracks, &done.notes),
+        TrackOutput::Json => {
             let (info, tracks) = (&done.info, &done.tracks);
             let j = TrackJson {
                 video: args.video.display().to_string(),

@@ -16,8 +16,8 @@ pub struct TrackArgs {
     #[arg(long, value_name = "F", value_parser = positive("frames per second", 1e5))]
     pub fps: Option<f64>,
     /// Output: a Tracker-style text file (`--data` reads it) or JSON.
-    #[arg(long, value_enum, default_value_t = TrackFormat::Tracker)]
-    pub format: TrackFormat,
+    #[arg(long, value_enum, default_value_t = TrackOutput::Tracker)]
+    pub format: TrackOutput,
     /// Write the tracks to this file (atomically) instead of stdout; the notes then
     /// go to stdout.
     #[arg(long, value_name = "FILE")]
@@ -25,7 +25,7 @@ pub struct TrackArgs {
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum TrackFormat {
+pub enum TrackOutput {
     Tracker,
     Json,
 }

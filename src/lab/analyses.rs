@@ -1,7 +1,7 @@
 //! The lab's slow analyses of a snapshot, as work a job runs (the Methods rows, the
 //! overlay run, the fits of the measured series), and the fit window's rule. The lab
 //! holds no job and knows no view: whoever shows an analysis asks for it on its own
-//! [`super::jobs::Jobs`], keyed by [`super::Lab::generation`], and drops a result made
+//! [`super::jobs::JobSet`], keyed by [`super::Lab::generation`], and drops a result made
 //! for an earlier one (their work is in `work`).
 
 use std::sync::Arc;
@@ -16,18 +16,18 @@ use super::work::{self, FitWindowError, Overlay};
 use super::{FitWindow, Resolved};
 
 /// The work of one analysis: what a job runs on a worker.
-pub trait Work<T>: FnOnce(&Ticket) -> T + Send + 'static {}
-impl<T, F: FnOnce(&Ticket) -> T + Send + 'static> Work<T> for F {}
+pub trait JobFn<T>: FnOnce(&Ticket) -> T + Send + 'static {}
+impl<T, F: FnOnce(&Ticket) -> T + Send + 'static> JobFn<T> for F {}
 
 /// Every time-stepping method at the Methods view's levels, timed if `timed` (else
 /// their times are 0).
-pub fn method_rows(now: &Resolved, timed: bool) -> impl Work<Vec<Row>> {
+pub fn method_rows(now: &Resolved, timed: bool) -> impl JobFn<Vec<Row>> {
     let (scene, span) = (now.scene, now.span);
     move |ticket: &Ticket| work::method_rows(&scene, &span, timed, ticket)
 }
 
 /// `method` at `level` over the exact curves (`None`: stopped before it finished).
-pub fn overlay(now: &Resolved, method: Method, level: u8) -> impl Work<Option<Overlay>> {
+pub fn overlay(now: &Resolved, method: Method, level: u8) -> impl JobFn<Option<Overlay>> {
     let (scene, span) = (now.scene, now.span);
     move |ticket: &Ticket| work::overlay(method, level, &scene, &span, ticket)
 }
@@ -39,7 +39,7 @@ fn measured(now: &Resolved) -> Option<Arc<Measured>> {
 
 /// The fits of the measured series in `window` (the model the data support as the
 /// headline; v0 free in every model when the data gave it); `None` without data.
-pub fn fits(now: &Resolved, window: FitWindow) -> Option<impl Work<Result<Fits, FitError>>> {
+pub fn fits(now: &Resolved, window: FitWindow) -> Option<impl JobFn<Result<Fits, FitError>>> {
     let (scene, m) = (now.scene, measured(now)?);
     let ask = fit::Ask {
         window,
@@ -51,7 +51,7 @@ pub fn fits(now: &Resolved, window: FitWindow) -> Option<impl Work<Result<Fits, 
 
 /// The model fitted to a position track's positions; `None` without one (no data, or
 /// a velocity file).
-pub fn position_fit(now: &Resolved) -> Option<impl Work<Result<ModelFit, FitError>>> {
+pub fn position_fit(now: &Resolved) -> Option<impl JobFn<Result<ModelFit, FitError>>> {
     let (scene, m) = (now.scene, measured(now).filter(|m| m.x.is_some())?);
     Some(move |ticket: &Ticket| fit::position_fit(&scene, &m, &[Free::Mu], ticket))
 }

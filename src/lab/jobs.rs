@@ -3,7 +3,7 @@
 //! takes requests from one queue; a [`Job`] is keyed by what it was asked for (the
 //! snapshot it belongs to and the job's settings), so a repeat is not recomputed and a
 //! superseded result is dropped unseen; a finished job (and each percent of progress)
-//! sends its typed notice `N` to whoever listens ([`Jobs::listen`]: the app's event
+//! sends its typed notice `N` to whoever listens ([`JobSet::listen`]: the app's event
 //! loop, on the one channel it waits on; no polling). `render` waits for every job so
 //! headless output is deterministic.
 
@@ -24,7 +24,7 @@ type Task = Box<dyn FnOnce() + Send>;
 pub type OnRun = Arc<dyn Fn() + Send + Sync>;
 
 /// A fixed set of worker threads and their one queue, started on first use; they end
-/// when the pool is dropped (clones of a [`Jobs`] share it).
+/// when the pool is dropped (clones of a [`JobSet`] share it).
 pub struct Pool {
     workers: usize,
     queue: Mutex<Option<Sender<Task>>>,
@@ -91,39 +91,39 @@ impl fmt::Debug for Pool {
 }
 
 /// Whom a job's notice goes to.
-type Listener<N> = Arc<dyn Fn(N) + Send + Sync>;
+type Notify<N> = Arc<dyn Fn(N) + Send + Sync>;
 
 /// What the jobs of one owner share: how many are queued or running (to wait for
 /// them all), and whom to notify.
 struct Shared<N> {
     pending: Mutex<usize>,
     idle: Condvar,
-    listener: Mutex<Option<Listener<N>>>,
+    listener: Mutex<Option<Notify<N>>>,
 }
 
 /// The jobs of one owner on a pool, each finished one notified as an `N` (clones
 /// share them).
-pub struct Jobs<N> {
+pub struct JobSet<N> {
     shared: Arc<Shared<N>>,
     pool: Arc<Pool>,
 }
 
-impl<N> Clone for Jobs<N> {
+impl<N> Clone for JobSet<N> {
     fn clone(&self) -> Self {
-        Jobs {
+        JobSet {
             shared: Arc::clone(&self.shared),
             pool: Arc::clone(&self.pool),
         }
     }
 }
 
-impl<N> fmt::Debug for Jobs<N> {
+impl<N> fmt::Debug for JobSet<N> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "Jobs on {:?}", self.pool)
     }
 }
 
-impl<N> Jobs<N> {
+impl<N> JobSet<N> {
     fn add(&self, delta: isize) {
         let mut n = self
             .shared
@@ -137,10 +137,10 @@ impl<N> Jobs<N> {
     }
 }
 
-impl<N: Clone + Send + Sync + 'static> Jobs<N> {
-    /// Jobs on `pool`, notifying no one until [`Jobs::listen`].
-    pub fn new(pool: Arc<Pool>) -> Jobs<N> {
-        Jobs {
+impl<N: Clone + Send + Sync + 'static> JobSet<N> {
+    /// Jobs on `pool`, notifying no one until [`JobSet::listen`].
+    pub fn new(pool: Arc<Pool>) -> JobSet<N> {
+        JobSet {
             shared: Arc::new(Shared {
                 pending: Mutex::new(0),
                 idle: Condvar::new(),
@@ -235,7 +235,7 @@ impl<N: Clone + Send + Sync + 'static> Jobs<N> {
 }
 
 /// Counts a job down when its task ends.
-struct Done<'a, N>(&'a Jobs<N>);
+struct Done<'a, N>(&'a JobSet<N>);
 
 impl<N> Drop for Done<'_, N> {
     fn drop(&mut self) {
@@ -345,7 +345,7 @@ impl<K: PartialEq, T: Send + Sync + 'static> Job<K, T> {
     /// True if `work` was queued.
     pub fn request<N: Clone + Send + Sync + 'static>(
         &mut self,
-        jobs: &Jobs<N>,
+        jobs: &JobSet<N>,
         key: K,
         notice: N,
         work: impl FnOnce(&Ticket) -> T + Send + 'static,
@@ -421,7 +421,7 @@ mod tests {
     use std::sync::atomic::AtomicU32;
 
     /// Jobs on a pool of their own, and how many bodies ran.
-    fn counted() -> (Jobs<u8>, Arc<AtomicUsize>) {
+    fn counted() -> (JobSet<u8>, Arc<AtomicUsize>) {
         let runs = Arc::new(AtomicUsize::new(0));
         let r = Arc::clone(&runs);
         let pool = Pool::observed(
@@ -430,7 +430,7 @@ mod tests {
                 r.fetch_add(1, Ordering::SeqCst);
             }),
         );
-        (Jobs::new(Arc::new(pool)), runs)
+        (JobSet::new(Arc::new(pool)), runs)
     }
 
     #[test]

@@ -406,9 +406,9 @@ mod tests {
     }
 
     /// A small deterministic generator (the same edits on every run).
-    struct Draw(u64);
+    struct Seeded(u64);
 
-    impl Draw {
+    impl Seeded {
         fn below(&mut self, n: usize) -> usize {
             self.0 = self
                 .0
@@ -420,7 +420,7 @@ mod tests {
 
     /// A random edit: values (in range or not, several at once), a span end, a reset,
     /// another preset, the data dropped.
-    fn edit(draw: &mut Draw, presets: &[Preset]) -> Edit {
+    fn edit(draw: &mut Seeded, presets: &[Preset]) -> Edit {
         const KEYS: [(Key, [f64; 3]); 9] = [
             (Key::Width, [0.049, 0.050, 0.5]),
             (Key::TEnd, [0.8, 2.0, -1.0]),
@@ -466,7 +466,7 @@ mod tests {
         timed.spec.set(Key::TEnd, 0.9);
         presets.push(timed);
         for seed in 0..40 {
-            let mut draw = Draw(seed);
+            let mut draw = Seeded(seed);
             // Every fourth lab starts from the preset with a `t_end`.
             let start = presets[if seed % 4 == 0 {
                 presets.len() - 1

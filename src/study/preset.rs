@@ -98,7 +98,7 @@ pub enum MeasuredError {
 
 #[derive(serde::Deserialize)]
 #[serde(deny_unknown_fields)]
-struct PresetFile {
+struct PresetToml {
     name: String,
     description: String,
     source: Option<String>,
@@ -126,7 +126,7 @@ impl Preset {
             name: label.to_string(),
             reason,
         };
-        let file: PresetFile = toml::from_str(text).map_err(|e| malformed(Malformed::Toml(e)))?;
+        let file: PresetToml = toml::from_str(text).map_err(|e| malformed(Malformed::Toml(e)))?;
         let mut spec = SceneSpec::default();
         for (key_name, value) in &file.scene {
             let key = Key::from_name(key_name).ok_or_else(|| {

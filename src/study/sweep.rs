@@ -15,7 +15,7 @@ use crate::settings::units::{UnitError, parse_quantity};
 
 /// One swept parameter: `key` from `lo` to `hi` (SI) in `n` points, both ends included.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Axis {
+pub struct SweepAxis {
     #[serde(serialize_with = "key_name")]
     pub key: Key,
     pub lo: f64,
@@ -27,7 +27,7 @@ fn key_name<S: serde::Serializer>(k: &Key, s: S) -> Result<S::Ok, S::Error> {
     s.serialize_str(k.name())
 }
 
-impl Axis {
+impl SweepAxis {
     pub fn value(&self, i: usize) -> f64 {
         if self.n <= 1 {
             self.lo
@@ -169,7 +169,7 @@ fn overlap(a: Key, b: Key) -> Option<Overlap> {
 /// Checks that the second axis `y` sweeps values of its own, not the first axis's
 /// `x` again (`width` twice) nor values that overwrite it (`height` against `v0`):
 /// either would print points under values they were not solved at.
-pub fn check_pair(x: &Axis, y: &Axis) -> Result<(), AxisError> {
+pub fn check_pair(x: &SweepAxis, y: &SweepAxis) -> Result<(), AxisError> {
     if x.key == y.key {
         return Err(AxisError::Twice { key: y.key });
     }
@@ -194,10 +194,16 @@ fn sweepable_names() -> String {
 }
 
 /// The scene at grid point (i, j).
-fn spec_at(base: &SceneSpec, x: &Axis, y: Option<&Axis>, i: usize, j: usize) -> SceneSpec {
+fn spec_at(
+    base: &SceneSpec,
+    x: &SweepAxis,
+    y: Option<&SweepAxis>,
+    i: usize,
+    j: usize,
+) -> SceneSpec {
     let mut spec = base.clone();
     // A swept speed replaces a release height (SceneSpec::set).
-    let mut set = |axis: &Axis, k: usize| spec.set(axis.key, axis.value(k));
+    let mut set = |axis: &SweepAxis, k: usize| spec.set(axis.key, axis.value(k));
     set(x, i);
     if let Some(y) = y {
         set(y, j);
@@ -235,7 +241,7 @@ pub fn point(spec: &SceneSpec) -> Result<(crate::physics::scene::Scene, GridPoin
 
 /// Checks that the axes make one map ([`check_pair`]) and the grid's corners (and
 /// so, for these monotone constraints, every point).
-pub fn check(base: &SceneSpec, x: &Axis, y: Option<&Axis>) -> Result<(), SweepError> {
+pub fn check(base: &SceneSpec, x: &SweepAxis, y: Option<&SweepAxis>) -> Result<(), SweepError> {
     if let Some(y) = y {
         check_pair(x, y).map_err(SweepError::Axes)?;
     }
@@ -252,7 +258,7 @@ pub fn check(base: &SceneSpec, x: &Axis, y: Option<&Axis>) -> Result<(), SweepEr
     Ok(())
 }
 
-fn at(a: &Axis, i: usize) -> GridValue {
+fn at(a: &SweepAxis, i: usize) -> GridValue {
     GridValue {
         key: a.key,
         value: a.value(i),
@@ -270,8 +276,8 @@ pub const BATCH: usize = 16_384;
 /// A failing `sink` ends the sweep with its own error.
 pub fn run_streamed<E: From<SweepError>>(
     base: &SceneSpec,
-    x: &Axis,
-    y: Option<&Axis>,
+    x: &SweepAxis,
+    y: Option<&SweepAxis>,
     stop: &AtomicBool,
     tick: &(dyn Fn() + Sync),
     sink: &mut dyn FnMut(&[GridPoint]) -> Result<(), E>,
@@ -324,8 +330,8 @@ pub fn run_streamed<E: From<SweepError>>(
 /// `tick` is called once per point (for a progress bar).
 pub fn run(
     base: &SceneSpec,
-    x: &Axis,
-    y: Option<&Axis>,
+    x: &SweepAxis,
+    y: Option<&SweepAxis>,
     stop: &AtomicBool,
     tick: &(dyn Fn() + Sync),
 ) -> Result<Vec<GridPoint>, SweepError> {
@@ -339,7 +345,7 @@ pub fn run(
 
 /// Parses `name=lo..hi` with units (`width=0..5.4cm`: a bare bound takes the other's
 /// unit) into an axis of `n` points.
-pub fn parse_axis(text: &str, n: usize) -> Result<Axis, AxisError> {
+pub fn parse_axis(text: &str, n: usize) -> Result<SweepAxis, AxisError> {
     let (name, range) = text.split_once('=').ok_or_else(|| AxisError::NotAnAxis {
         text: text.to_string(),
     })?;
@@ -386,7 +392,7 @@ pub fn parse_axis(text: &str, n: usize) -> Result<Axis, AxisError> {
     if n == 0 || n > 10_000 {
         return Err(AxisError::Points { n });
     }
-    Ok(Axis { key, lo, hi, n })
+    Ok(SweepAxis { key, lo, hi, n })
 }
 
 #[cfg(test)]

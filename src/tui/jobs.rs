@@ -24,7 +24,7 @@ pub enum Notice {
 }
 
 /// The app's jobs on its worker pool.
-pub type Jobs = crate::lab::jobs::Jobs<Notice>;
+pub type Jobs = crate::lab::jobs::JobSet<Notice>;
 
 /// The Methods view's rows, timed or not.
 #[derive(Clone, Debug, Default)]

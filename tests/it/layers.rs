@@ -64,12 +64,12 @@ fn no_layer_uses_a_later_one() {
 
 /// One token of a source with its comments, strings and characters taken out: a word
 /// (an identifier, keyword or lifetime), `::`, or one other character; with its line.
-struct Token {
-    text: String,
-    line: usize,
+pub(crate) struct Token {
+    pub(crate) text: String,
+    pub(crate) line: usize,
 }
 
-fn tokens(text: &str) -> Vec<Token> {
+pub(crate) fn tokens(text: &str) -> Vec<Token> {
     let c: Vec<char> = text.chars().collect();
     let word = |ch: char| ch.is_alphanumeric() || ch == '_';
     let (mut out, mut i, mut line) = (Vec::new(), 0, 1);
@@ -330,7 +330,7 @@ fn circles(edges: &BTreeMap<PathBuf, BTreeSet<PathBuf>>) -> Vec<Vec<PathBuf>> {
 }
 
 /// The library's source files (`main.rs` is another crate: nothing can import it).
-fn library_sources() -> (PathBuf, Vec<PathBuf>) {
+pub(crate) fn library_sources() -> (PathBuf, Vec<PathBuf>) {
     let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
     let mut files = Vec::new();
     sources(&src, &mut files);

@@ -22,6 +22,7 @@ mod long_runs;
 mod manual;
 mod methods;
 mod motion;
+mod names;
 mod numbers;
 mod params;
 mod presets;

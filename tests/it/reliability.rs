@@ -607,8 +607,8 @@ fn a_streamed_sweep_equals_the_whole_map() {
     // What the command wrote before streaming: one serde_json document.
     #[derive(serde::Serialize)]
     struct Whole<'a> {
-        x: &'a sweep::Axis,
-        y: Option<&'a sweep::Axis>,
+        x: &'a sweep::SweepAxis,
+        y: Option<&'a sweep::SweepAxis>,
         points: &'a [sweep::GridPoint],
     }
     let whole = Whole {

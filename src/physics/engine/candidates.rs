@@ -1,16 +1,16 @@
-//! Candidate events of a segment: every time at which the current polynomial motion
+//! EventCandidate events of a segment: every time at which the current polynomial motion
 //! can end (rolling starts, pure gliding or slipping, a stop, an impact) as a
 //! closed-form root, and how a non-impact event changes a ball when it comes.
 
-use super::{Candidate, Candidates, Engine};
+use super::{Candidates, Engine, EventCandidate};
 use crate::physics::model::{BallState, Phase, slip};
 use crate::physics::solution::{EventKind, Who};
 
 impl Engine {
     /// Applies a non-impact event to ball `i`; `before` is the segment's start state.
-    pub(super) fn apply(&mut self, c: Candidate, before: &[BallState; 2]) -> (EventKind, Who) {
+    pub(super) fn apply(&mut self, c: EventCandidate, before: &[BallState; 2]) -> (EventKind, Who) {
         match c {
-            Candidate::Roll(i) => {
+            EventCandidate::Roll(i) => {
                 // While sliding freely `u + 5/2 k² v` is conserved: the rolling speed
                 // comes from it, not from the rounded end of the polynomial.
                 let v = if self.together {
@@ -28,19 +28,19 @@ impl Engine {
                     (EventKind::Rolling, Who::ball(i))
                 }
             }
-            Candidate::Glide(i) => {
+            EventCandidate::Glide(i) => {
                 self.state[i].u = 0.0;
                 (EventKind::PureGliding, Who::ball(i))
             }
-            Candidate::Slip(i) => {
+            EventCandidate::Slip(i) => {
                 self.state[i].v = 0.0;
                 (EventKind::PureSlipping, Who::ball(i))
             }
-            Candidate::Stop(i) => {
+            EventCandidate::Stop(i) => {
                 self.stop(i);
                 (EventKind::Rest, Who::ball(i))
             }
-            Candidate::Impact => unreachable!("impacts are applied by collide"),
+            EventCandidate::Impact => unreachable!("impacts are applied by collide"),
         }
     }
 
@@ -68,20 +68,20 @@ impl Engine {
                         None
                     };
                     if let Some(t) = t_roll {
-                        out.push((t, Candidate::Roll(i)));
+                        out.push((t, EventCandidate::Roll(i)));
                     }
                     let before_roll =
                         |t: f64| t > 0.0 && t_roll.is_none_or(|tr| t < tr * (1.0 - 1e-12));
                     if s.u * du < 0.0 && before_roll(-s.u / du) {
-                        out.push((-s.u / du, Candidate::Glide(i)));
+                        out.push((-s.u / du, EventCandidate::Glide(i)));
                     }
                     if s.v * a < 0.0 && before_roll(-s.v / a) {
-                        out.push((-s.v / a, Candidate::Slip(i)));
+                        out.push((-s.v / a, EventCandidate::Slip(i)));
                     }
                 }
                 Phase::Rolling => {
                     if s.v * a < 0.0 {
-                        out.push((-s.v / a, Candidate::Stop(i)));
+                        out.push((-s.v / a, EventCandidate::Stop(i)));
                     }
                 }
                 Phase::Resting => {}
@@ -91,7 +91,7 @@ impl Engine {
             let w = self.state[1].v - self.state[0].v;
             let c = self.accel[1].0 - self.accel[0].0;
             if let Some(t) = closing_time(self.gap, w, c) {
-                out.push((t, Candidate::Impact));
+                out.push((t, EventCandidate::Impact));
             }
         }
         out

@@ -42,33 +42,33 @@ const CYCLES_BEFORE_SUMMING: usize = 5000;
 /// (rolling, pure gliding, pure slipping) and the impact.
 #[derive(Clone, Copy, Debug)]
 struct Candidates {
-    items: [(f64, Candidate); 7],
+    items: [(f64, EventCandidate); 7],
     len: usize,
 }
 
 impl Default for Candidates {
     fn default() -> Self {
         Candidates {
-            items: [(0.0, Candidate::Impact); 7],
+            items: [(0.0, EventCandidate::Impact); 7],
             len: 0,
         }
     }
 }
 
 impl Candidates {
-    fn push(&mut self, c: (f64, Candidate)) {
+    fn push(&mut self, c: (f64, EventCandidate)) {
         self.items[self.len] = c;
         self.len += 1;
     }
 
-    fn as_slice(&self) -> &[(f64, Candidate)] {
+    fn as_slice(&self) -> &[(f64, EventCandidate)] {
         &self.items[..self.len]
     }
 }
 
 /// A possible next event of the current segment.
 #[derive(Clone, Copy, Debug, PartialEq)]
-enum Candidate {
+enum EventCandidate {
     Roll(usize),
     Glide(usize),
     Slip(usize),
@@ -257,12 +257,12 @@ impl Engine {
                 due.push(c);
             }
         }
-        let due: Vec<Candidate> = due.as_slice().iter().map(|c| c.1).collect();
+        let due: Vec<EventCandidate> = due.as_slice().iter().map(|c| c.1).collect();
         let before = self.state;
         let phase_before = self.phase;
         self.advance(tau);
         let mut kinds = Vec::new();
-        for &c in due.iter().filter(|c| **c != Candidate::Impact) {
+        for &c in due.iter().filter(|c| **c != EventCandidate::Impact) {
             kinds.push(self.apply(c, &before));
         }
         if self.together {
@@ -275,7 +275,7 @@ impl Engine {
             self.state[0].v = v;
             self.state[1].v = v;
         }
-        let impact = due.contains(&Candidate::Impact);
+        let impact = due.contains(&EventCandidate::Impact);
         if impact {
             self.collide();
             kinds.push((EventKind::Collision, Who::Both));

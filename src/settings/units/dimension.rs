@@ -14,7 +14,7 @@ pub enum Dimension {
 }
 
 /// How one dimension is written: the units accepted and the one people read.
-struct Units {
+struct UnitRow {
     /// Accepted units and their decimal exponent to SI (cm: −2); the first entry is
     /// the SI unit.
     accepted: &'static [(&'static str, i32)],
@@ -30,39 +30,39 @@ struct Units {
 
 impl Dimension {
     /// The one table of units: everything else about units reads it.
-    fn table(self) -> &'static Units {
+    fn table(self) -> &'static UnitRow {
         match self {
-            Dimension::Length => &Units {
+            Dimension::Length => &UnitRow {
                 accepted: &[("m", 0), ("cm", -2), ("mm", -3)],
                 display: "cm",
                 decimals: Some(2),
                 small: "mm",
             },
-            Dimension::Mass => &Units {
+            Dimension::Mass => &UnitRow {
                 accepted: &[("kg", 0), ("g", -3), ("mg", -6)],
                 display: "g",
                 decimals: Some(1),
                 small: "g",
             },
-            Dimension::Speed => &Units {
+            Dimension::Speed => &UnitRow {
                 accepted: &[("m/s", 0), ("cm/s", -2), ("mm/s", -3)],
                 display: "m/s",
                 decimals: Some(3),
                 small: "m/s",
             },
-            Dimension::Time => &Units {
+            Dimension::Time => &UnitRow {
                 accepted: &[("s", 0), ("ms", -3)],
                 display: "s",
                 decimals: Some(3),
                 small: "ms",
             },
-            Dimension::Acceleration => &Units {
+            Dimension::Acceleration => &UnitRow {
                 accepted: &[("m/s^2", 0), ("m/s²", 0), ("m/s2", 0)],
                 display: "m/s²",
                 decimals: Some(2),
                 small: "m/s²",
             },
-            Dimension::Ratio => &Units {
+            Dimension::Ratio => &UnitRow {
                 accepted: &[],
                 display: "",
                 decimals: None,

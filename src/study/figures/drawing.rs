@@ -57,7 +57,7 @@ pub(super) fn tick(v: &f64) -> String {
 const AXIS_LIMIT: f64 = 1e300;
 
 /// A chart on an SVG with linear axes.
-pub(super) type Chart<'a, 'b> = plotters::chart::ChartContext<
+pub(super) type SvgChart<'a, 'b> = plotters::chart::ChartContext<
     'a,
     SVGBackend<'b>,
     plotters::coord::cartesian::Cartesian2d<
@@ -87,17 +87,17 @@ pub(super) fn svg(
 /// How a chart sits in its area: its caption (text and font size), margin, the sizes
 /// of the label areas below and left of it, and room added to the margin above and
 /// right of it (for labels a figure draws there itself; 0 for none).
-pub(super) struct Frame {
+pub(super) struct FigureFrame {
     pub caption: Option<(String, u32)>,
     pub margin: u32,
     pub label_areas: (u32, u32),
     pub room: (u32, u32),
 }
 
-impl Frame {
+impl FigureFrame {
     /// The frame of the run and fit charts: margin 12, label areas 35 and 55.
-    pub(super) fn plain(caption: Option<String>) -> Frame {
-        Frame {
+    pub(super) fn plain(caption: Option<String>) -> FigureFrame {
+        FigureFrame {
             caption: caption.map(|c| (c, 18)),
             margin: 12,
             label_areas: (35, 55),
@@ -129,11 +129,11 @@ impl Frame {
 /// only its axes and ticks.
 pub(super) fn linear_chart<'a, 'b>(
     area: &'a Area<'b>,
-    frame: &Frame,
+    frame: &FigureFrame,
     (x, y): ((f64, f64), (f64, f64)),
     desc: (&str, &str),
     grid: bool,
-) -> Result<Chart<'a, 'b>, FigureError> {
+) -> Result<SvgChart<'a, 'b>, FigureError> {
     let mut chart = frame.builder(area).build_cartesian_2d(x.0..x.1, y.0..y.1)?;
     let mut mesh = chart.configure_mesh();
     mesh.x_desc(desc.0)
@@ -169,7 +169,7 @@ pub(super) fn draw_legend<'a, 'b: 'a, CT: plotters::coord::CoordTranslate>(
 /// Measured points as the figures mark them, with their legend entries: v_cm as
 /// crosses, v_t as circles, in the colours given.
 pub(super) fn draw_measured_marks(
-    chart: &mut Chart,
+    chart: &mut SvgChart,
     v_cm: impl Iterator<Item = (f64, f64)>,
     v_t: impl Iterator<Item = (f64, f64)>,
     (cm, t): (plotters::style::RGBColor, plotters::style::RGBColor),

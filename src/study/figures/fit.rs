@@ -4,7 +4,7 @@
 use plotters::prelude::*;
 
 use super::drawing::{
-    Area, FigureError, Frame, draw_legend, draw_measured_marks, finite_bounds, line_mark,
+    Area, FigureError, FigureFrame, draw_legend, draw_measured_marks, finite_bounds, line_mark,
     linear_axis, linear_chart, svg,
 };
 use crate::physics::scene::Scene;
@@ -89,7 +89,7 @@ fn draw_fit(
     );
     let mut chart = linear_chart(
         area,
-        &Frame::plain(Some(caption)),
+        &FigureFrame::plain(Some(caption)),
         ((t0, t1), (lo, hi)),
         ("t (s)", "v (m/s)"),
         true,
@@ -156,7 +156,7 @@ fn draw_residuals(
         .min(1.0);
     let mut rc = linear_chart(
         area,
-        &Frame::plain(None),
+        &FigureFrame::plain(None),
         ((t0, t1), (-rmax, rmax)),
         ("t (s)", "data - model (m/s)"),
         true,

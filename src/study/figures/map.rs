@@ -5,13 +5,14 @@ use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
 
 use super::drawing::{
-    Area, Chart, FigureError, Frame, draw_legend, line_mark, linear_axis, linear_chart, svg, tick,
+    Area, FigureError, FigureFrame, SvgChart, draw_legend, line_mark, linear_axis, linear_chart,
+    svg, tick,
 };
 use crate::physics::closed_form;
 use crate::physics::derived::Regime;
 use crate::physics::scene::Scene;
 use crate::settings::params::Key;
-use crate::study::sweep::{Axis, GridPoint};
+use crate::study::sweep::{GridPoint, SweepAxis};
 
 fn regime_colour(r: Regime) -> RGBColor {
     match r {
@@ -26,8 +27,8 @@ fn regime_colour(r: Regime) -> RGBColor {
 /// and that axis labelled in b/R too (opposite its labels in m) when R is the scene's.
 pub fn regime_map(
     points: &[GridPoint],
-    x: &Axis,
-    y: Option<&Axis>,
+    x: &SweepAxis,
+    y: Option<&SweepAxis>,
     scene: &Scene,
     preset: &str,
 ) -> Result<String, FigureError> {
@@ -44,7 +45,7 @@ pub fn regime_map(
     // b/R above the plot goes between the caption and the plot: the caption is then
     // the figure's title, drawn above the chart's frame.
     let on_top = ratio == Some(RatioAxis::Top);
-    let frame = Frame {
+    let frame = FigureFrame {
         caption: (!on_top).then(|| (caption.clone(), 18)),
         margin: 15,
         label_areas: (45, 60),
@@ -86,7 +87,7 @@ enum RatioAxis {
 }
 
 impl RatioAxis {
-    fn of(x: &Axis, y: Option<&Axis>) -> Option<RatioAxis> {
+    fn of(x: &SweepAxis, y: Option<&SweepAxis>) -> Option<RatioAxis> {
         let keys = (x.key, y.map(|y| y.key));
         match keys {
             (Key::Width, Some(Key::Radius)) | (Key::Radius, Some(Key::Width)) => None,
@@ -103,7 +104,7 @@ impl RatioAxis {
     fn draw(
         self,
         root: &Area,
-        chart: &Chart,
+        chart: &SvgChart,
         ((x0, x1), (y0, y1)): ((f64, f64), (f64, f64)),
         r: f64,
     ) -> Result<(), FigureError> {
@@ -169,7 +170,7 @@ fn round_values(lo: f64, hi: f64) -> Vec<f64> {
 
 /// An axis's range with half a cell beyond each end, and the cell's width; a
 /// one-point or overflowing axis gets a safe range.
-fn padded_range(a: &Axis) -> (f64, f64, f64) {
+fn padded_range(a: &SweepAxis) -> (f64, f64, f64) {
     let step = if a.n > 1 {
         (a.hi - a.lo) / (a.n - 1) as f64
     } else {
@@ -186,7 +187,7 @@ fn padded_range(a: &Axis) -> (f64, f64, f64) {
 
 /// A two-axis sweep: one filled cell of the regime's colour per grid point.
 fn draw_cells(
-    chart: &mut Chart,
+    chart: &mut SvgChart,
     points: &[GridPoint],
     (dx, dy): (f64, f64),
 ) -> Result<(), FigureError> {
@@ -206,7 +207,7 @@ fn draw_cells(
 /// A one-axis sweep: the rolling speed after the impact over v0 (clamped to ±1) of
 /// each point in its regime's colour, and the line v' = 0.
 fn draw_speed_ratios(
-    chart: &mut Chart,
+    chart: &mut SvgChart,
     points: &[GridPoint],
     (x0, x1): (f64, f64),
 ) -> Result<(), FigureError> {
@@ -226,9 +227,9 @@ fn draw_speed_ratios(
 /// against e when the other axis is e, else a vertical line at the scene's e; with
 /// its legend.
 fn draw_critical_width<'a, 'b: 'a>(
-    chart: &mut Chart<'a, 'b>,
+    chart: &mut SvgChart<'a, 'b>,
     scene: &Scene,
-    y: Option<&Axis>,
+    y: Option<&SweepAxis>,
     (y0, y1): (f64, f64),
 ) -> Result<(), FigureError> {
     let b_star = |e: f64| closed_form::critical_width(scene.radius, e);

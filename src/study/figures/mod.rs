@@ -13,4 +13,4 @@ pub use drawing::FigureError;
 pub use fit::fit_figure;
 pub use map::regime_map;
 pub use run::{Beside, RunChart, run_chart};
-pub use work_precision::{Work, work_precision, work_precision_against};
+pub use work_precision::{Cost, work_precision, work_precision_against};

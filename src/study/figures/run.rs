@@ -4,7 +4,7 @@
 use plotters::prelude::*;
 
 use super::drawing::{
-    Chart, FigureError, Frame, draw_legend, draw_measured_marks, line_mark, linear_axis,
+    FigureError, FigureFrame, SvgChart, draw_legend, draw_measured_marks, line_mark, linear_axis,
     linear_chart, svg,
 };
 use crate::physics::solution::{Snapshot, Solution};
@@ -22,7 +22,7 @@ pub enum RunChart {
 type Pick = fn(&Snapshot) -> f64;
 
 /// A curve of the chart: legend name, what it plots of a state, colour.
-type Curve = (String, Pick, RGBColor);
+type Trace = (String, Pick, RGBColor);
 
 const BLUE: RGBColor = RGBColor(31, 119, 180);
 const ORANGE: RGBColor = RGBColor(255, 127, 14);
@@ -44,7 +44,7 @@ fn run_samples(sol: &Solution) -> Vec<Snapshot> {
 
 /// The curves of `which`, the y axis's name and the chart's title. Positions are in
 /// the display unit of lengths.
-fn curves_of(which: RunChart) -> (Vec<Curve>, String, &'static str) {
+fn curves_of(which: RunChart) -> (Vec<Trace>, String, &'static str) {
     match which {
         RunChart::Positions => {
             let unit = Dimension::Length.display_unit().0;
@@ -66,7 +66,7 @@ fn curves_of(which: RunChart) -> (Vec<Curve>, String, &'static str) {
             )
         }
         RunChart::Velocities { left, right } => {
-            let mut c: Vec<Curve> = Vec::new();
+            let mut c: Vec<Trace> = Vec::new();
             if left {
                 c.push(("v_cm left".into(), |s| s.left.v, BLUE));
                 c.push(("v_t left".into(), |s| s.left.u, ORANGE));
@@ -87,7 +87,7 @@ fn curves_of(which: RunChart) -> (Vec<Curve>, String, &'static str) {
 /// The y range that holds every curve and measured value, padded by 5 %.
 /// linear_axis first clamps the range (so the pad is finite), then again after the
 /// pad: no data (an infinite fold), NaN or a flat run still give a drawable axis.
-fn value_range(curves: &[Curve], samples: &[Snapshot], measured: Option<&Measured>) -> (f64, f64) {
+fn value_range(curves: &[Trace], samples: &[Snapshot], measured: Option<&Measured>) -> (f64, f64) {
     let values = curves
         .iter()
         .flat_map(|(_, f, _)| samples.iter().map(f))
@@ -106,7 +106,11 @@ fn value_range(curves: &[Curve], samples: &[Snapshot], measured: Option<&Measure
 }
 
 /// The measured left-ball points within the time axis: v_cm as crosses, v_t as circles.
-fn draw_measured(chart: &mut Chart, m: &Measured, (t0, t1): (f64, f64)) -> Result<(), FigureError> {
+fn draw_measured(
+    chart: &mut SvgChart,
+    m: &Measured,
+    (t0, t1): (f64, f64),
+) -> Result<(), FigureError> {
     let inside = |(t, v): &(f64, f64)| (t0..=t1).contains(t) && v.is_finite();
     let points = |v: &[f64]| {
         m.t.iter()
@@ -164,7 +168,7 @@ pub fn run_chart(
         super::drawing::rounded(scene.restitution),
         unit = Dimension::Length.display_unit().0,
     );
-    let mut frame = Frame::plain(Some(caption));
+    let mut frame = FigureFrame::plain(Some(caption));
     if beside.note.is_some() {
         // Room under the axis for the note.
         frame.label_areas.0 += 22;

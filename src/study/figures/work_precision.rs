@@ -3,7 +3,9 @@
 
 use plotters::prelude::*;
 
-use super::drawing::{FigureError, Frame, draw_legend, finite_bounds, line_mark, log_axis, svg};
+use super::drawing::{
+    FigureError, FigureFrame, draw_legend, finite_bounds, line_mark, log_axis, svg,
+};
 use crate::methods::Method;
 use crate::physics::scene::Scene;
 use crate::settings::units::{Dimension, show};
@@ -23,28 +25,28 @@ fn colour(m: Method) -> RGBColor {
 /// What the diagram puts across: a run's time (`compare --format svg`), or its steps
 /// or right-hand-side evaluations (the Methods view's other work axes).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Work {
+pub enum Cost {
     Time,
     Steps,
     RhsEvals,
 }
 
-impl Work {
+impl Cost {
     /// The row's work on this axis, at least the axis' floor (a run refused before its
     /// first step, or a time under a nanosecond, sits there rather than at −∞).
     fn of(self, r: &Row) -> f64 {
         match self {
-            Work::Time => r.time_median_s.max(1e-9),
-            Work::Steps => (r.steps as f64).max(1.0),
-            Work::RhsEvals => (r.rhs_evals as f64).max(1.0),
+            Cost::Time => r.time_median_s.max(1e-9),
+            Cost::Steps => (r.steps as f64).max(1.0),
+            Cost::RhsEvals => (r.rhs_evals as f64).max(1.0),
         }
     }
 
     fn title(self) -> &'static str {
         match self {
-            Work::Time => "time per run (s, median)",
-            Work::Steps => "steps per run",
-            Work::RhsEvals => "rhs evaluations per run",
+            Cost::Time => "time per run (s, median)",
+            Cost::Steps => "steps per run",
+            Cost::RhsEvals => "rhs evaluations per run",
         }
     }
 }
@@ -53,14 +55,14 @@ impl Work {
 /// `ok` are drawn as hollow markers so failures stay visible. The exact engine, with
 /// no error, is the vertical line at its time.
 pub fn work_precision(rows: &[Row], scene: &Scene) -> Result<String, FigureError> {
-    work_precision_against(rows, scene, Work::Time)
+    work_precision_against(rows, scene, Cost::Time)
 }
 
 /// [`work_precision`] with `work` across.
 pub fn work_precision_against(
     rows: &[Row],
     scene: &Scene,
-    work: Work,
+    work: Cost,
 ) -> Result<String, FigureError> {
     svg((900, 600), |root| draw_diagram(root, rows, scene, work))
 }
@@ -70,7 +72,7 @@ fn draw_diagram(
     root: &super::drawing::Area,
     rows: &[Row],
     scene: &Scene,
-    work: Work,
+    work: Cost,
 ) -> Result<(), FigureError> {
     let pts: Vec<(f64, f64)> = rows
         .iter()
@@ -84,7 +86,7 @@ fn draw_diagram(
         ));
     }
     let ((lo_t, hi_t), (lo_e, hi_e)) = axis_ranges(rows, &pts, work);
-    let frame = Frame {
+    let frame = FigureFrame {
         caption: Some((caption(scene), 20)),
         margin: 15,
         label_areas: (45, 70),
@@ -149,7 +151,7 @@ fn draw_diagram(
 /// The work and error axes' ranges: every plotted run with room around it (the exact
 /// engine's work on the work axis too), as log axes plotters can draw. `pts` is not
 /// empty.
-fn axis_ranges(rows: &[Row], pts: &[(f64, f64)], work: Work) -> ((f64, f64), (f64, f64)) {
+fn axis_ranges(rows: &[Row], pts: &[(f64, f64)], work: Cost) -> ((f64, f64), (f64, f64)) {
     let exact_t = rows
         .iter()
         .filter(|r| r.method == Method::Exact)
@@ -166,7 +168,7 @@ fn axis_ranges(rows: &[Row], pts: &[(f64, f64)], work: Work) -> ((f64, f64), (f6
 /// The diagram's title: the scene it was run on.
 fn caption(scene: &Scene) -> String {
     format!(
-        "Work-precision, b = {:.2}, R = {:.2}, mu = {}, e = {}",
+        "Cost-precision, b = {:.2}, R = {:.2}, mu = {}, e = {}",
         show(scene.width, Dimension::Length),
         show(scene.radius, Dimension::Length),
         super::drawing::rounded(scene.mu),

@@ -228,9 +228,9 @@ impl App {
                 State::Ready(rows) => {
                     let rows = rows.clone();
                     let work = match self.work_axis {
-                        WorkAxis::Steps => figures::Work::Steps,
-                        WorkAxis::RhsEvals => figures::Work::RhsEvals,
-                        WorkAxis::Time => figures::Work::Time,
+                        WorkAxis::Steps => figures::Cost::Steps,
+                        WorkAxis::RhsEvals => figures::Cost::RhsEvals,
+                        WorkAxis::Time => figures::Cost::Time,
                     };
                     Box::new(move || done(figures::work_precision_against(&rows, &scene, work)))
                 }
@@ -258,18 +258,18 @@ fn regime_grid(
     scene: &crate::physics::scene::Scene,
 ) -> (
     Vec<crate::study::sweep::GridPoint>,
-    crate::study::sweep::Axis,
-    crate::study::sweep::Axis,
+    crate::study::sweep::SweepAxis,
+    crate::study::sweep::SweepAxis,
 ) {
     use crate::settings::params::Key;
-    use crate::study::sweep::{Axis, GridPoint};
-    let x = Axis {
+    use crate::study::sweep::{GridPoint, SweepAxis};
+    let x = SweepAxis {
         key: Key::Width,
         lo: 0.0,
         hi: 2.0 * scene.radius * 0.99,
         n: MAP_GRID.0,
     };
-    let y = Axis {
+    let y = SweepAxis {
         key: Key::Restitution,
         lo: 0.0,
         hi: 1.0,
