@@ -6,10 +6,13 @@ use std::hint::black_box;
 use criterion::{Criterion, criterion_group, criterion_main};
 use groovelab::physics::engine::solve;
 use groovelab::physics::scene::{Scene, Span};
-use groovelab::study::preset::Preset;
 
 fn preset(name: &str) -> (Scene, Span) {
-    Preset::load(name).unwrap().spec.resolve().unwrap()
+    groovelab::input::preset::load(name)
+        .unwrap()
+        .spec
+        .resolve()
+        .unwrap()
 }
 
 fn engine(c: &mut Criterion) {

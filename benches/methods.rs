@@ -11,7 +11,6 @@ use groovelab::methods::{Method, Model, Observer, Run, Stepping, Y, start_state}
 use groovelab::settings::params::Key;
 use groovelab::settings::spec::SceneSpec;
 use groovelab::study::compare::sweep;
-use groovelab::study::preset::Preset;
 
 struct Finite;
 impl Observer for Finite {
@@ -32,7 +31,11 @@ fn run<'a>(model: &'a Model, y0: Y, s: &'a Stepping) -> Run<'a> {
 }
 
 fn methods(c: &mut Criterion) {
-    let (scene, span) = Preset::load("paper-b4.9").unwrap().spec.resolve().unwrap();
+    let (scene, span) = groovelab::input::preset::load("paper-b4.9")
+        .unwrap()
+        .spec
+        .resolve()
+        .unwrap();
     let model = Model::of(&scene);
     let y0 = start_state(&scene, span.t_start);
     let mut group = c.benchmark_group("paper-b4.9, 1.2 simulated s");
@@ -75,7 +78,7 @@ fn methods(c: &mut Criterion) {
     // as `groovelab compare` takes it: the lab's snapshot of the preset under the
     // flags, over the snapshot's span (which reaches the preset's measured series).
     let snapshot = |values: SceneSpec| {
-        let preset = Preset::load("paper-b4.9").unwrap();
+        let preset = groovelab::input::preset::load("paper-b4.9").unwrap();
         let lab = Lab::new(Layers::new(preset, values), None).unwrap();
         (lab.scene, lab.span)
     };

@@ -5,11 +5,10 @@ use std::hint::black_box;
 use std::sync::atomic::AtomicBool;
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use groovelab::study::preset::Preset;
 use groovelab::study::sweep::{self, point};
 
 fn sweeps(c: &mut Criterion) {
-    let spec = Preset::load("paper-b3.5").unwrap().spec;
+    let spec = groovelab::input::preset::load("paper-b3.5").unwrap().spec;
     c.bench_function("one grid point, single-impact scene (paper-b3.5)", |b| {
         b.iter(|| point(black_box(&spec)).unwrap())
     });
@@ -25,7 +24,7 @@ fn sweeps(c: &mut Criterion) {
             single.install(|| sweep::run(&spec, &x, None, &AtomicBool::new(false), &|| {}).unwrap())
         })
     });
-    let paper = Preset::load("paper-b4.9").unwrap().spec;
+    let paper = groovelab::input::preset::load("paper-b4.9").unwrap().spec;
     let x = sweep::parse_axis("width=0..5.4cm", 400).unwrap();
     let y = sweep::parse_axis("restitution=0.3..1", 200).unwrap();
     g.bench_function(

@@ -7,11 +7,10 @@ use criterion::{Criterion, criterion_group, criterion_main};
 use groovelab::input::data;
 use groovelab::input::data::Reading;
 use groovelab::study::measured::{self, Derive};
-use groovelab::study::preset::Preset;
 use groovelab::study::video::{self, TrackFormat, Video};
 
 fn tracks(c: &mut Criterion) {
-    let scene = Preset::load("paper-b4.9")
+    let scene = groovelab::input::preset::load("paper-b4.9")
         .unwrap()
         .spec
         .resolve()

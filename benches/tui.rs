@@ -7,7 +7,6 @@ use std::hint::black_box;
 use criterion::{Criterion, criterion_group, criterion_main};
 use groovelab::lab::Lab;
 use groovelab::settings::params::Key;
-use groovelab::study::preset::Preset;
 use groovelab::tui::app::{App, Library};
 use groovelab::tui::keys;
 use groovelab::tui::screen::{self, Screen};
@@ -16,7 +15,7 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 
 fn app(name: &str) -> App {
-    let p = Preset::load(name).unwrap();
+    let p = groovelab::input::preset::load(name).unwrap();
     App::new(Lab::of_preset(p).unwrap(), Library::at(None))
 }
 

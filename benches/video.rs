@@ -9,12 +9,11 @@ use std::path::Path;
 use criterion::{Criterion, criterion_group, criterion_main};
 use groovelab::input::video::{self, Limits, write};
 use groovelab::physics::scene::Scene;
-use groovelab::study::preset::Preset;
 use groovelab::study::vision::render::{Film, Look};
 use groovelab::study::vision::{self, Tracker};
 
 fn scene() -> Scene {
-    Preset::load("paper-b4.9")
+    groovelab::input::preset::load("paper-b4.9")
         .unwrap()
         .spec
         .resolve()

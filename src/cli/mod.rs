@@ -483,7 +483,7 @@ fn recovery_line(rec: &crate::physics::derived::Recovery) -> String {
 }
 
 fn presets() -> String {
-    let (presets, errors) = Preset::all();
+    let (presets, errors) = crate::input::preset::all();
     let width = presets.iter().map(|p| p.name.len()).max().unwrap_or(0);
     let mut out = String::new();
     for p in &presets {

@@ -19,7 +19,7 @@ use crate::tui::app::{App, Library, Status};
 impl SceneArgs {
     /// The settings layers these options give: the preset, then the values given.
     pub fn settings(&self) -> Result<Layers, CliError> {
-        let preset = Preset::load(self.preset.as_deref().unwrap_or(preset::DEFAULT))?;
+        let preset = crate::input::preset::load(self.preset.as_deref().unwrap_or(preset::DEFAULT))?;
         Ok(Layers::new(preset, self.values.clone()))
     }
 

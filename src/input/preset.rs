@@ -1,11 +1,12 @@
 //! Presets as files: a preset named on the command line or in the app (built-in, in
-//! the user's preset folder, or a path), the user's folder listed, and the lab's scene
+//! the user's preset folder, or a path), the user's folder listed, and a scene
 //! saved there. The text form itself is `study::preset`'s.
 
 use std::path::{Path, PathBuf};
 
 use crate::input::file::{FileError, MAX_FILE_BYTES, read_user_file};
-use crate::lab::Lab;
+use crate::settings::spec::SceneSpec;
+use crate::study::measured::Measured;
 use crate::study::preset::{self, Origin, Preset, PresetError};
 
 /// Why a preset named on the command line or in the app could not be loaded.
@@ -40,68 +41,75 @@ pub enum SaveError {
     Write(crate::output::OutputError),
 }
 
-impl Preset {
-    /// A built-in preset by name, or a preset file by path.
-    pub fn load(name_or_path: &str) -> Result<Preset, LoadError> {
-        if let Some(preset) = Preset::built_in_named(name_or_path) {
-            return Ok(preset?);
-        }
-        let user = user_dir().map(|d| d.join(format!("{name_or_path}.toml")));
-        let path = match user {
-            Some(p) if p.exists() => p,
-            _ => PathBuf::from(name_or_path),
-        };
-        if !path.exists() {
-            return Err(LoadError::Unknown(name_or_path.to_string()));
-        }
-        // Something is there: it must be a regular file of sane size (not a FIFO
-        // that would block, not /dev/zero).
-        let text = read_user_file(&path, "preset file", MAX_FILE_BYTES).map_err(LoadError::Io)?;
-        Ok(Preset::parse(
-            &text,
-            &path.display().to_string(),
-            Origin::File(path),
-        )?)
+/// A built-in preset by name, or a preset file by path.
+pub fn load(name_or_path: &str) -> Result<Preset, LoadError> {
+    if let Some(preset) = Preset::built_in_named(name_or_path) {
+        return Ok(preset?);
     }
-
-    /// Built-in presets, then the user's (from [`user_dir`]); unreadable user files are
-    /// returned as errors beside the good ones.
-    pub fn all() -> (Vec<Preset>, Vec<LoadError>) {
-        Preset::all_in(user_dir().as_deref())
+    let user = user_dir().map(|d| d.join(format!("{name_or_path}.toml")));
+    let path = match user {
+        Some(p) if p.exists() => p,
+        _ => PathBuf::from(name_or_path),
+    };
+    if !path.exists() {
+        return Err(LoadError::Unknown(name_or_path.to_string()));
     }
-
-    /// Built-in presets, then those in `dir` (if any).
-    pub fn all_in(dir: Option<&Path>) -> (Vec<Preset>, Vec<LoadError>) {
-        let mut presets = Preset::built_in();
-        let mut errors = Vec::new();
-        if let Some(dir) = dir
-            && let Ok(entries) = std::fs::read_dir(dir)
-        {
-            let mut paths: Vec<PathBuf> = entries
-                .filter_map(|e| e.ok().map(|e| e.path()))
-                .filter(|p| p.extension().is_some_and(|x| x == "toml"))
-                .collect();
-            paths.sort();
-            for path in paths {
-                match Preset::load(&path.display().to_string()) {
-                    Ok(p) => presets.push(p),
-                    Err(e) => errors.push(e),
-                }
-            }
-        }
-        (presets, errors)
-    }
+    // Something is there: it must be a regular file of sane size (not a FIFO
+    // that would block, not /dev/zero).
+    let text = read_user_file(&path, "preset file", MAX_FILE_BYTES).map_err(LoadError::Io)?;
+    Ok(Preset::parse(
+        &text,
+        &path.display().to_string(),
+        Origin::File(path),
+    )?)
 }
 
-/// Saves the lab's scene (and its measured series) as a user preset in `dir`; never
-/// over an existing file unless `overwrite`. Returns the path written.
+/// Built-in presets, then the user's (from [`user_dir`]); unreadable user files are
+/// returned as errors beside the good ones.
+pub fn all() -> (Vec<Preset>, Vec<LoadError>) {
+    all_in(user_dir().as_deref())
+}
+
+/// Built-in presets, then those in `dir` (if any).
+pub fn all_in(dir: Option<&Path>) -> (Vec<Preset>, Vec<LoadError>) {
+    let mut presets = Preset::built_in();
+    let mut errors = Vec::new();
+    if let Some(dir) = dir
+        && let Ok(entries) = std::fs::read_dir(dir)
+    {
+        let mut paths: Vec<PathBuf> = entries
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .filter(|p| p.extension().is_some_and(|x| x == "toml"))
+            .collect();
+        paths.sort();
+        for path in paths {
+            match load(&path.display().to_string()) {
+                Ok(p) => presets.push(p),
+                Err(e) => errors.push(e),
+            }
+        }
+    }
+    (presets, errors)
+}
+
+/// What a user preset is saved from: the scene's settings (SI), its measured series,
+/// and the preset it started from (named in a new file's description).
+#[derive(Clone, Copy, Debug)]
+pub struct ToSave<'a> {
+    pub spec: &'a SceneSpec,
+    pub measured: Option<&'a Measured>,
+    pub started_from: &'a str,
+}
+
+/// Saves a scene (and its measured series) as a user preset in `dir`; never over an
+/// existing file unless `overwrite`. Returns the path written.
 pub fn save(
-    lab: &Lab,
+    scene: ToSave,
     dir: Option<&Path>,
     name: &str,
     overwrite: bool,
 ) -> Result<PathBuf, SaveError> {
-    PresetFile::new(lab, dir, name, overwrite)?.write()
+    PresetFile::new(scene, dir, name, overwrite)?.write()
 }
 
 /// A user preset ready to be written: its path and its text, checked to load again.
@@ -114,7 +122,7 @@ pub struct PresetFile {
 impl PresetFile {
     /// The preset [`save`] would write, or why it would not.
     pub fn new(
-        lab: &Lab,
+        scene: ToSave,
         dir: Option<&Path>,
         name: &str,
         overwrite: bool,
@@ -137,13 +145,13 @@ impl PresetFile {
         // Overwriting keeps the description of the file it replaces.
         let kept = path
             .is_file()
-            .then(|| Preset::load(&path.display().to_string()).ok())
+            .then(|| load(&path.display().to_string()).ok())
             .flatten()
             .map(|p| p.description);
         let description = kept.unwrap_or_else(|| {
-            format!("Saved from groovelab (started from {})", lab.preset().name)
+            format!("Saved from groovelab (started from {})", scene.started_from)
         });
-        let text = preset::to_toml(name, &description, &lab.saved_spec(), lab.measured())
+        let text = preset::to_toml(name, &description, scene.spec, scene.measured)
             .map_err(SaveError::Text)?;
         // What is written must load again: check before reporting success.
         Preset::parse(&text, name, Origin::BuiltIn).map_err(SaveError::WouldNotLoad)?;
@@ -180,11 +188,11 @@ mod tests {
     #[test]
     fn preset_files_must_be_regular_files() {
         let dir = std::env::temp_dir();
-        let e = Preset::load(&dir.display().to_string()).unwrap_err();
+        let e = load(&dir.display().to_string()).unwrap_err();
         assert!(e.to_string().contains("a directory"), "{e}");
         #[cfg(unix)]
         {
-            let e = Preset::load("/dev/zero").unwrap_err();
+            let e = load("/dev/zero").unwrap_err();
             assert!(e.to_string().contains("a device"), "{e}");
         }
     }

@@ -222,7 +222,7 @@ pub struct Library {
 impl Library {
     /// Built-in presets and those in `dir`, where the app also saves.
     pub fn at(dir: Option<PathBuf>) -> Library {
-        let presets = Preset::all_in(dir.as_deref()).0;
+        let presets = crate::input::preset::all_in(dir.as_deref()).0;
         Library { dir, presets }
     }
 

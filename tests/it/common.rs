@@ -6,7 +6,6 @@ use groovelab::lab::Lab;
 use groovelab::physics::scene::{Ball, Scene, Span};
 use groovelab::settings::params::Key;
 use groovelab::settings::spec::SceneSpec;
-use groovelab::study::preset::Preset;
 use groovelab::tui::app::{App, Library, ROWS};
 use groovelab::tui::screen;
 use groovelab::tui::theme::{Glyphs, Theme};
@@ -126,7 +125,7 @@ pub fn no_user_presets(area: &str) -> Library {
 
 /// The app on a built-in preset as it starts.
 pub fn app(preset: &str, library: Library) -> App {
-    let p = Preset::load(preset).unwrap();
+    let p = groovelab::input::preset::load(preset).unwrap();
     App::new(Lab::of_preset(p).unwrap(), library)
 }
 
@@ -159,7 +158,7 @@ pub fn counted_lab(lab: Lab, library: Library) -> (App, Runs) {
 
 /// [`app`], its analyses counted.
 pub fn counted(preset: &str, library: Library) -> (App, Runs) {
-    let p = Preset::load(preset).unwrap();
+    let p = groovelab::input::preset::load(preset).unwrap();
     counted_lab(Lab::of_preset(p).unwrap(), library)
 }
 
@@ -205,7 +204,7 @@ pub fn text(app: &App, size: (u16, u16), ascii: bool) -> String {
 
 /// The scene of the preset paper-b4.9, resolved (the data generators' truth).
 pub fn paper_scene() -> groovelab::physics::scene::Scene {
-    groovelab::study::preset::Preset::load("paper-b4.9")
+    groovelab::input::preset::load("paper-b4.9")
         .unwrap()
         .spec
         .resolve()

@@ -204,9 +204,8 @@ fn a_files_stated_groove_is_kept_and_compared() {
 /// by their ratio), naming the least R allowed; an R above it is taken.
 #[test]
 fn an_r_edited_below_the_rim_marks_distance_is_refused() {
-    use groovelab::study::preset::Preset;
     use groovelab::study::video::{self, TrackFormat, Video};
-    let truth = Preset::load("paper-b4.9")
+    let truth = groovelab::input::preset::load("paper-b4.9")
         .unwrap()
         .spec
         .resolve()

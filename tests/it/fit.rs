@@ -6,12 +6,11 @@ use groovelab::physics::engine::solve;
 use groovelab::physics::scene::{Scene, Span};
 use groovelab::study::fit::{self, Free, PAPER_TABLE};
 use groovelab::study::measured::Measured;
-use groovelab::study::preset::Preset;
 
 use crate::common::groovelab;
 
 fn paper(width: &str) -> (Scene, Measured) {
-    let p = Preset::load(&format!("paper-b{width}")).unwrap();
+    let p = groovelab::input::preset::load(&format!("paper-b{width}")).unwrap();
     let (scene, _) = p.spec.resolve().unwrap();
     (scene, p.measured.unwrap())
 }
@@ -194,7 +193,7 @@ fn paper_b4_4_has_one_verdict_everywhere() {
         verdict,
         "recollide (v' = +0.028 m/s, within the data's ±0.042 m/s rest band: indistinguishable from rest)"
     );
-    let preset = Preset::load("paper-b4.4").unwrap();
+    let preset = groovelab::input::preset::load("paper-b4.4").unwrap();
     assert!(
         preset.description.contains(&verdict),
         "{}",
@@ -1124,7 +1123,7 @@ fn drifting_video(scene: &Scene, fps: f64, seed: u64, sd: f64, tau: f64) -> Meas
 /// μ_k + v0 for 2 of these 6 (and for none at 120 frames/s).
 #[test]
 fn oversampling_a_track_does_not_make_extra_parameters_supported() {
-    let scene = Preset::load("paper-b4.9")
+    let scene = groovelab::input::preset::load("paper-b4.9")
         .unwrap()
         .spec
         .resolve()

@@ -7,7 +7,6 @@ use groovelab::lab::jobs::State;
 use groovelab::lab::{Lab, analyses};
 use groovelab::methods::Method;
 use groovelab::settings::params::Key;
-use groovelab::study::preset::Preset;
 use groovelab::tui::app::{App, Library};
 use groovelab::tui::keys::parse_script;
 use groovelab::tui::replay;
@@ -94,7 +93,7 @@ fn a_fit_is_applied_whole_and_solved_once() {
 /// fit run in place gives what the Fit view shows.
 #[test]
 fn the_labs_analyses_are_work_without_a_view() {
-    let lab = Lab::of_preset(Preset::load("paper-b4.9").unwrap()).unwrap();
+    let lab = Lab::of_preset(groovelab::input::preset::load("paper-b4.9").unwrap()).unwrap();
     let work = analyses::fits(&lab, (None, None)).expect("the preset has data");
     let in_place = work(&groovelab::lab::jobs::Ticket::detached()).unwrap();
     let (mut a, _) = app("paper-b4.9");

@@ -744,7 +744,7 @@ fn simulate(scene: &SceneArgs, format: SimulateFormat) -> String {
 
 #[test]
 fn simulate_prints_the_apps_snapshot_of_the_same_scene_by_flags_or_keys() {
-    let mut cases: Vec<SceneArgs> = Preset::all()
+    let mut cases: Vec<SceneArgs> = groovelab::input::preset::all()
         .0
         .iter()
         .map(|p| common::scene_of(&p.name, SceneSpec::default()))
@@ -901,7 +901,7 @@ fn u_after_picking_a_preset_brings_back_the_preset_its_edits_and_data() {
     let b49_data = a.lab.measured().unwrap().t.clone();
     // The picker opens on paper-b4.9; the one above it is paper-b4.4.
     press(&mut a, "p up enter");
-    let b44 = Preset::load("paper-b4.4").unwrap();
+    let b44 = groovelab::input::preset::load("paper-b4.4").unwrap();
     assert_eq!(a.lab.preset().name, "paper-b4.4");
     assert_eq!(a.lab.value(Key::Width), 0.044, "the preset alone: no flag");
     assert_eq!(

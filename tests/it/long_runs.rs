@@ -11,7 +11,6 @@ use std::time::Duration;
 use groovelab::methods::{Method, Stepping};
 use groovelab::physics::scene::{Scene, Span};
 use groovelab::study::measured::Measured;
-use groovelab::study::preset::Preset;
 use groovelab::study::{Cancelled, Progress, Quiet, compare, fit};
 
 /// Counts ticks and asks to stop once `after` of them have passed; counts the looks at
@@ -45,7 +44,7 @@ fn stop_after(after: u64) -> StopAfter {
 }
 
 fn paper() -> (groovelab::physics::scene::Scene, Span, Measured) {
-    let preset = Preset::load("paper-b4.9").unwrap();
+    let preset = groovelab::input::preset::load("paper-b4.9").unwrap();
     let (scene, span) = preset.spec.resolve().unwrap();
     (scene, span, preset.measured.unwrap())
 }

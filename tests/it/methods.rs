@@ -6,10 +6,13 @@ use groovelab::physics::derived::Outcome;
 use groovelab::physics::engine::solve;
 use groovelab::physics::scene::{Scene, Span};
 use groovelab::study::compare::{Reference, Row, RunStatus, fitted_order, run};
-use groovelab::study::preset::Preset;
 
 fn preset(name: &str) -> (Scene, Span) {
-    Preset::load(name).unwrap().spec.resolve().unwrap()
+    groovelab::input::preset::load(name)
+        .unwrap()
+        .spec
+        .resolve()
+        .unwrap()
 }
 
 fn row(method: Method, scene: &Scene, span: &Span, settings: Stepping) -> Row {

@@ -238,15 +238,26 @@ fn the_span_key_cycles_auto_double_half() {
     assert!(close(a.lab.solution.t_end, auto2));
 }
 
+/// Saves the app's scene as a user preset, as `s` in the app does.
+fn save(a: &groovelab::tui::app::App, dir: &std::path::Path, name: &str) -> std::path::PathBuf {
+    let spec = a.lab.saved_spec();
+    let scene = groovelab::input::preset::ToSave {
+        spec: &spec,
+        measured: a.lab.measured(),
+        started_from: &a.lab.preset().name,
+    };
+    groovelab::input::preset::save(scene, Some(dir), name, true).unwrap()
+}
+
 #[test]
 fn saving_keeps_only_a_set_span_end() {
     let dir = std::env::temp_dir().join(format!("groovelab-motion-save-{}", std::process::id()));
     let mut a = app("paper-b4.9");
-    let path = groovelab::input::preset::save(&a.lab, Some(&dir), "auto-span", true).unwrap();
+    let path = save(&a, &dir, "auto-span");
     let text = std::fs::read_to_string(&path).unwrap();
     assert!(!text.contains("t_end"), "{text}");
     a.lab.set(Key::TEnd, 0.7).unwrap();
-    let path = groovelab::input::preset::save(&a.lab, Some(&dir), "fixed-span", true).unwrap();
+    let path = save(&a, &dir, "fixed-span");
     let text = std::fs::read_to_string(&path).unwrap();
     assert!(text.contains("t_end"), "{text}");
     let _ = std::fs::remove_dir_all(&dir);
@@ -737,7 +748,7 @@ fn with_big_series(rows: usize) -> App {
         groove: None,
     };
     let settings = Layers::new(
-        Preset::load("unequal-speeds").unwrap(),
+        groovelab::input::preset::load("unequal-speeds").unwrap(),
         SceneSpec::default(),
     );
     App::new(Lab::new(settings, Some(own)).unwrap(), no_user_presets())

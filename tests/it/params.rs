@@ -114,7 +114,7 @@ fn every_table_row_is_an_option_with_its_help() {
 
 /// The default preset's scene and span, with its end fixed (so `t_end` has a value).
 fn base() -> (Scene, Span) {
-    let p = Preset::load(preset::DEFAULT).unwrap();
+    let p = groovelab::input::preset::load(preset::DEFAULT).unwrap();
     let (scene, span) = p.spec.resolve().unwrap();
     (
         scene,

@@ -217,7 +217,7 @@ fn unequal_presets_conserve_momentum_and_end_as_physics_says() {
 fn paper_presets_carry_the_measured_series() {
     let data = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("data");
     for width in ["3.5", "4.4", "4.9"] {
-        let preset = Preset::load(&format!("paper-b{width}")).unwrap();
+        let preset = groovelab::input::preset::load(&format!("paper-b{width}")).unwrap();
         let measured = preset.measured.expect("measured data");
         assert!(preset.source.unwrap().contains("Gröber"));
         // v0 is the mean measured v_cm before the impact.

@@ -594,9 +594,7 @@ fn a_stopped_sweep_writes_nothing_to_stdout_or_a_file() {
 fn a_streamed_sweep_equals_the_whole_map() {
     // CSV and JSON are written batch by batch; they must be what the whole map gives.
     use groovelab::study::sweep;
-    let base = groovelab::study::preset::Preset::load("paper-b4.9")
-        .unwrap()
-        .spec;
+    let base = groovelab::input::preset::load("paper-b4.9").unwrap().spec;
     let x = sweep::parse_axis("width=0..5cm", 181).unwrap();
     let y = sweep::parse_axis("restitution=0.3..1", 97).unwrap();
     let stop = std::sync::atomic::AtomicBool::new(false);
@@ -716,9 +714,7 @@ fn a_stop_after_the_last_point_is_computed_still_writes_nothing() {
     // written). Now a stop at any time before the commit wins.
     use groovelab::study::sweep;
     use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
-    let base = groovelab::study::preset::Preset::load("paper-b4.9")
-        .unwrap()
-        .spec;
+    let base = groovelab::input::preset::load("paper-b4.9").unwrap().spec;
     let x = sweep::parse_axis("width=0..5cm", 40).unwrap();
     let stop = AtomicBool::new(false);
     let done = AtomicUsize::new(0);

@@ -8,7 +8,6 @@ use groovelab::physics::engine::solve;
 use groovelab::physics::story::{After, after_first_impact};
 use groovelab::settings::params::Key;
 use groovelab::settings::spec::SceneSpec;
-use groovelab::study::preset::Preset;
 
 fn groovelab(args: &[&str]) -> String {
     let out = common::groovelab(args);
@@ -21,7 +20,7 @@ fn groovelab(args: &[&str]) -> String {
 }
 
 fn story(preset: &str, extra: &[(Key, f64)]) -> After {
-    let p = Preset::load(preset).unwrap();
+    let p = groovelab::input::preset::load(preset).unwrap();
     let spec = extra
         .iter()
         .fold(SceneSpec::default(), |s, &(k, v)| s.with(k, v));
@@ -99,7 +98,7 @@ fn the_closed_forms_stand_where_the_run_rolls_again_at_t_prime() {
 #[test]
 fn headings_and_reasons_follow_the_run() {
     let case = |extra: &[(Key, f64)]| {
-        let p = Preset::load("paper-b4.9").unwrap();
+        let p = groovelab::input::preset::load("paper-b4.9").unwrap();
         let spec = extra
             .iter()
             .fold(SceneSpec::default(), |s, &(k, v)| s.with(k, v));
@@ -221,7 +220,7 @@ fn rest_without_friction_says_the_balls_keep_spinning() {
 fn balls_that_never_meet_get_no_regime_verdict() {
     use groovelab::physics::story::Verdict;
     let verdict = |extra: &[(Key, f64)]| {
-        let p = Preset::load("paper-b4.9").unwrap();
+        let p = groovelab::input::preset::load("paper-b4.9").unwrap();
         let spec = extra
             .iter()
             .fold(SceneSpec::default(), |s, &(k, v)| s.with(k, v));

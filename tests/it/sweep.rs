@@ -8,13 +8,12 @@ use groovelab::physics::closed_form;
 use groovelab::physics::derived::Regime;
 use groovelab::settings::params::Key;
 use groovelab::settings::spec::SceneSpec;
-use groovelab::study::preset::Preset;
 use groovelab::study::sweep::{self, GridPoint, SweepError};
 
 use crate::common::groovelab;
 
 fn base(preset: &str) -> SceneSpec {
-    Preset::load(preset).unwrap().spec
+    groovelab::input::preset::load(preset).unwrap().spec
 }
 
 fn map(spec: &SceneSpec, x: &str, y: Option<&str>, nx: usize, ny: usize) -> Vec<GridPoint> {

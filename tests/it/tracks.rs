@@ -7,7 +7,6 @@ use groovelab::physics::scene::Scene;
 use groovelab::study::fit::{self, Free};
 use groovelab::study::measured::track::{self, TrackFits};
 use groovelab::study::measured::{self, Derive, Found, Measured, RawSeries};
-use groovelab::study::preset::Preset;
 use groovelab::study::video::{self, TrackFormat, Video};
 
 use crate::common::groovelab;
@@ -15,7 +14,12 @@ use crate::common::groovelab;
 const MU: f64 = 0.17;
 
 fn scene(name: &str) -> Scene {
-    Preset::load(name).unwrap().spec.resolve().unwrap().0
+    groovelab::input::preset::load(name)
+        .unwrap()
+        .spec
+        .resolve()
+        .unwrap()
+        .0
 }
 
 /// A data file read and derived for a scene, with what was found in a track.

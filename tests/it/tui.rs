@@ -382,7 +382,7 @@ fn saving_writes_a_loadable_preset_and_never_overwrites_silently() {
     press(&mut a, "right");
     press(&mut a, "s enter");
     let path = dir.join("my-inelastic.toml");
-    let saved = Preset::load(path.to_str().unwrap()).unwrap();
+    let saved = groovelab::input::preset::load(path.to_str().unwrap()).unwrap();
     let (scene, _) = saved.spec.resolve().unwrap();
     assert_eq!(
         scene, a.lab.scene,
@@ -527,7 +527,7 @@ fn a_small_terminal_gets_a_clear_message() {
 /// Times that show each phase: rolling in, sliding after the impact, rolling again,
 /// and the end (after the accumulation point where there is one).
 fn phase_times(preset: &str) -> Vec<f64> {
-    let p = Preset::load(preset).unwrap();
+    let p = groovelab::input::preset::load(preset).unwrap();
     let (scene, span) = p.spec.resolve().unwrap();
     let sol = groovelab::physics::engine::solve(&scene, &span);
     let first_roll = sol
@@ -727,7 +727,7 @@ fn methods_view_and_overlay() {
 #[test]
 fn the_methods_view_of_a_long_span_is_cut_and_says_where() {
     use groovelab::study::compare::WINDOW;
-    let p = Preset::load("paper-b4.9").unwrap();
+    let p = groovelab::input::preset::load("paper-b4.9").unwrap();
     let (_, span) = p.spec.resolve().unwrap();
     let flags = groovelab::settings::spec::SceneSpec::default()
         .with(groovelab::settings::params::Key::Mu, 1e-6);
@@ -1186,7 +1186,7 @@ fn save_keeps_the_data_and_the_description_and_explains_bad_names() {
     press(&mut a, "backspace backspace enter");
     assert_eq!(a.mode, Mode::Normal);
     let path = dir.join("my-paper-b4.4.toml");
-    let saved = Preset::load(path.to_str().unwrap()).unwrap();
+    let saved = groovelab::input::preset::load(path.to_str().unwrap()).unwrap();
     assert_eq!(
         saved.measured,
         a.lab.preset().measured,
@@ -1201,7 +1201,7 @@ fn save_keeps_the_data_and_the_description_and_explains_bad_names() {
     std::fs::write(&path, text).unwrap();
     select(&mut a, Key::Mu);
     press(&mut a, "right s enter y");
-    let again = Preset::load(path.to_str().unwrap()).unwrap();
+    let again = groovelab::input::preset::load(path.to_str().unwrap()).unwrap();
     assert_eq!(again.description, "my class, lesson 3");
     assert_eq!(again.spec.resolve().unwrap().0.mu, a.lab.scene.mu);
     let _ = std::fs::remove_dir_all(&dir);

@@ -4,12 +4,16 @@
 //! positions, μ_k fitted from the tracks, and bad inputs refused.
 
 use groovelab::physics::scene::Scene;
-use groovelab::study::preset::Preset;
 use groovelab::study::vision::Tracker;
 use groovelab::study::vision::render::{Film, Look};
 
 fn scene(name: &str) -> Scene {
-    Preset::load(name).unwrap().spec.resolve().unwrap().0
+    groovelab::input::preset::load(name)
+        .unwrap()
+        .spec
+        .resolve()
+        .unwrap()
+        .0
 }
 
 /// A tracked point and the true one, px.

@@ -62,7 +62,7 @@ mod tests {
 
     #[test]
     fn the_exported_scene_reads_back_within_its_rounding() {
-        let p = crate::study::preset::Preset::load("paper-b4.9").unwrap();
+        let p = crate::input::preset::load("paper-b4.9").unwrap();
         let (scene, _) = p.spec.resolve().unwrap();
         let scene = crate::physics::scene::Scene {
             mu: 0.16667742330550958,

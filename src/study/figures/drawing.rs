@@ -273,7 +273,7 @@ pub(super) mod tests {
     }
 
     pub(crate) fn paper() -> (Scene, crate::study::measured::series::Measured) {
-        let p = Preset::load("paper-b4.9").unwrap();
+        let p = Preset::built_in_named("paper-b4.9").unwrap().unwrap();
         let (scene, _) = p.spec.resolve().unwrap();
         (scene, p.measured.unwrap())
     }

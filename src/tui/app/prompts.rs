@@ -2,7 +2,7 @@
 //! (typing a value, a save name, an export file name), and what confirming them does
 //! (set the value, save the preset, write the export).
 
-use crate::input::preset::{PresetFile, SaveError};
+use crate::input::preset::{PresetFile, SaveError, ToSave};
 use crate::settings::units::parse_typed;
 
 use super::{Action, App, Field, Library, Mode, NO_FILES, ROWS, Status, TextTarget};
@@ -107,7 +107,13 @@ impl App {
 
     /// Saves the scene as a user preset, asking before it replaces a file.
     pub(super) fn save(&mut self, name: &str, overwrite: bool) {
-        let file = PresetFile::new(&self.lab, self.library.dir.as_deref(), name, overwrite);
+        let spec = self.lab.saved_spec();
+        let scene = ToSave {
+            spec: &spec,
+            measured: self.lab.measured(),
+            started_from: &self.lab.preset().name,
+        };
+        let file = PresetFile::new(scene, self.library.dir.as_deref(), name, overwrite);
         let file = match file {
             Ok(file) if !self.writes_files => {
                 self.status = Status::Info(format!(
