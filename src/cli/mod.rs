@@ -11,8 +11,9 @@ use crate::methods::Method;
 use crate::physics::derived::{Derived, Summary};
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::{Snapshot, Solution};
-use crate::physics::story::{self, After};
+use crate::physics::story::After;
 use crate::study::preset::{self, Preset};
+use crate::study::story;
 use crate::tui::{
     self,
     app::{App, Library},

@@ -10,12 +10,13 @@ use std::sync::Arc;
 use crate::physics::derived::{Derived, Summary};
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::Solution;
-use crate::physics::story::{self, After, Verdict};
+use crate::physics::story::{After, Verdict};
 use crate::settings::params::{Key, PARAMS};
 use crate::settings::spec::SceneError;
 use crate::settings::units::{Dimension, show};
 use crate::study::fit;
 use crate::study::measured::{self, InScene, Measured};
+use crate::study::story;
 
 use super::data::{Groove, InUse, OtherGroove};
 use super::settings::Layers;
@@ -311,7 +312,7 @@ impl Story {
         Story {
             headline: story::headline(sol, derived),
             criterion_note: story::criterion_note(sol, derived),
-            after: story::after_first_impact(sol, derived),
+            after: crate::physics::story::after_first_impact(sol, derived),
             verdict: Verdict::of(sol, derived, band),
         }
     }

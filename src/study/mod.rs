@@ -1,7 +1,7 @@
 //! Slow, pure analyses of a scene: methods against the exact solution (`compare`),
 //! the model against measured data (`fit`), regime maps (`sweep`), and the SVG
 //! figures of all three and of a run (`figures`), a run as CSV (`export`), presets' text
-//! form (`preset`), measured series for a scene (`measured`: a position
+//! form (`preset`), the story of a run in words (`story`), measured series for a scene (`measured`: a position
 //! track's velocities, the rest band, the ghost ball) and synthetic tracked videos to test them against truth (`video`).
 
 pub mod compare;
@@ -10,6 +10,7 @@ pub mod figures;
 pub mod fit;
 pub mod measured;
 pub mod preset;
+pub mod story;
 pub mod sweep;
 pub mod video;
 pub mod vision;

@@ -105,7 +105,7 @@ fn headings_and_reasons_follow_the_run() {
         let (scene, span) = p.spec.over(&spec).resolve().unwrap();
         let sol = solve(&scene, &span);
         let d = Derived::of(&scene);
-        (groovelab::physics::story::headline(&sol, &d), d.why())
+        (groovelab::study::story::headline(&sol, &d), d.why())
     };
     let (h, _) = case(&[(Key::RollingResistance, 0.05)]);
     assert_eq!(h, "STOPPED: they stop before they meet again");
