@@ -5,15 +5,9 @@ use std::hint::black_box;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use groovelab::physics::engine::solve;
-use groovelab::physics::scene::{Scene, Span};
 
-fn preset(name: &str) -> (Scene, Span) {
-    groovelab::input::preset::load(name)
-        .unwrap()
-        .spec
-        .resolve()
-        .unwrap()
-}
+mod common;
+use common::preset;
 
 fn engine(c: &mut Criterion) {
     let (single, span) = preset("paper-b3.5");

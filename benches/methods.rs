@@ -5,6 +5,8 @@
 
 use std::hint::black_box;
 
+mod common;
+
 use criterion::{Criterion, criterion_group, criterion_main};
 use groovelab::lab::{Lab, Layers};
 use groovelab::methods::{Method, Model, Observer, Run, Stepping, Y, start_state};
@@ -31,11 +33,7 @@ fn run<'a>(model: &'a Model, y0: Y, s: &'a Stepping) -> Run<'a> {
 }
 
 fn methods(c: &mut Criterion) {
-    let (scene, span) = groovelab::input::preset::load("paper-b4.9")
-        .unwrap()
-        .spec
-        .resolve()
-        .unwrap();
+    let (scene, span) = common::preset("paper-b4.9");
     let model = Model::of(&scene);
     let y0 = start_state(&scene, span.t_start);
     let mut group = c.benchmark_group("paper-b4.9, 1.2 simulated s");

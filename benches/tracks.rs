@@ -3,6 +3,8 @@
 
 use std::hint::black_box;
 
+mod common;
+
 use criterion::{Criterion, criterion_group, criterion_main};
 use groovelab::input::data;
 use groovelab::input::data::Reading;
@@ -10,12 +12,7 @@ use groovelab::study::measured::{self, Derive};
 use groovelab::study::video::{self, TrackFormat, Video};
 
 fn tracks(c: &mut Criterion) {
-    let scene = groovelab::input::preset::load("paper-b4.9")
-        .unwrap()
-        .spec
-        .resolve()
-        .unwrap()
-        .0;
+    let (scene, _) = common::preset("paper-b4.9");
     // 10,000 frames at 240 frames/s with 0.3 mm noise, centre and rim mark.
     let v = Video {
         fps: 240.0,

@@ -12,13 +12,10 @@ use groovelab::physics::scene::Scene;
 use groovelab::study::vision::render::{Film, Look};
 use groovelab::study::vision::{self, Tracker};
 
+mod common;
+
 fn scene() -> Scene {
-    groovelab::input::preset::load("paper-b4.9")
-        .unwrap()
-        .spec
-        .resolve()
-        .unwrap()
-        .0
+    common::preset("paper-b4.9").0
 }
 
 /// Centre and mark RMS errors (px) of `frames` frames of `film` tracked in memory.
