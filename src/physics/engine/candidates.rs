@@ -1,4 +1,4 @@
-//! EventCandidate events of a segment: every time at which the current polynomial motion
+//! Candidate events of a segment: every time at which the current polynomial motion
 //! can end (rolling starts, pure gliding or slipping, a stop, an impact) as a
 //! closed-form root, and how a non-impact event changes a ball when it comes.
 
