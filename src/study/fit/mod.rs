@@ -33,7 +33,7 @@ pub use model::{
 };
 pub use problem::{DataLooks, FitError, Free, WORK_BUDGET};
 pub use regime::{observed_regime, rest_band};
-pub use uncertainty::NotIdentified;
+pub use uncertainty::{NotIdentified, ScalePart};
 
 /// The fits of one series: the paper's line fits, and one fit per candidate model,
 /// the headline among them.

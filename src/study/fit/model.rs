@@ -18,7 +18,9 @@ use super::least_squares::{
 };
 use super::problem::{Evals, FitError, Free};
 use super::regime::{data_scatter, observed_after, rest_band, sliding_end};
-use super::uncertainty::{NotIdentified, effective_points, shared_noise, uncertainties};
+use super::uncertainty::{
+    NotIdentified, ScalePart, effective_points, shared_noise, uncertainties, with_scale,
+};
 
 /// Most frames the model fit uses. A longer series is thinned to every k-th frame
 /// (the output says so): each model evaluation walks every point used, and a fit
@@ -72,6 +74,10 @@ pub struct ModelFit {
     /// every this-many-th frame.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub every: Option<usize>,
+    /// Where the data state their scale's ± (a video's): `mu_se` and `v0_se` hold it
+    /// added in quadrature to the fit's own, and this says both parts.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub scale: Option<ScalePart>,
 }
 
 impl ModelFit {
@@ -211,6 +217,7 @@ pub fn thinned(m: &Measured) -> Option<(Measured, usize)> {
                 })
             }),
             mirrored: m.mirrored,
+            scale_rel_se: m.scale_rel_se,
         },
         k,
     ))
@@ -432,7 +439,11 @@ pub(super) fn scored_fit_within(
             None
         }
     };
-    let (ses, not_identified) = uncertainties(&normal_matrix(&j), shared.as_deref(), s2, free, &p);
+    let (mut ses, not_identified) =
+        uncertainties(&normal_matrix(&j), shared.as_deref(), s2, free, &p);
+    let scale = m
+        .scale_rel_se
+        .and_then(|rel| with_scale(rel, free, &p, &mut ses));
     let se = |f: Free| free.iter().position(|x| *x == f).and_then(|i| ses[i]);
     let scored = |fit: ModelFit| Scored {
         fit,
@@ -483,6 +494,7 @@ pub(super) fn scored_fit_within(
         not_identified,
         scatter: data_scatter(m, target == Target::Position),
         every,
+        scale,
     }))
 }
 
@@ -515,6 +527,7 @@ pub(super) mod tests {
             not_identified: Vec::new(),
             scatter: None,
             every: None,
+            scale: None,
         }
     }
 }
