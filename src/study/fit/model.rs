@@ -13,11 +13,11 @@ use crate::study::Progress;
 use crate::study::measured::series::{Measured, Stencils};
 
 use super::least_squares::{
-    Target, coarse_mu, fit_points, labelled_residuals, least_squares, mean_cost, normal_matrix,
-    nuisance, residuals_of, scan_mu, smooth_jacobian, with,
+    coarse_mu, least_squares, normal_matrix, scan_mu, smooth_jacobian, with,
 };
-use super::problem::{Evals, FitError, Free};
+use super::problem::{Evals, FitError, Free, Problem};
 use super::regime::{data_scatter, observed_after, rest_band, sliding_end};
+use super::residuals::{Target, fit_points, labelled_residuals, mean_cost, nuisance, residuals_of};
 use super::uncertainty::{
     NotIdentified, ScalePart, effective_points, shared_noise, uncertainties, with_scale,
 };
@@ -280,14 +280,14 @@ pub(super) struct Scored {
 /// fitted on: those away from the model's impacts, and among `within` when given
 /// (a refit on frames shared with other models, started from a fit already made: no
 /// scan of μ_k again).
-fn best_values(
-    scene: &Scene,
-    m: &Measured,
-    free: &[Free],
-    target: Target,
-    within: Option<&[usize]>,
-    evals: &Evals,
-) -> Result<(Vec<f64>, Vec<usize>), FitError> {
+fn best_values(pb: &Problem, within: Option<&[usize]>) -> Result<(Vec<f64>, Vec<usize>), FitError> {
+    let Problem {
+        scene,
+        m,
+        free,
+        target,
+        evals,
+    } = *pb;
     let p: Vec<f64> = free
         .iter()
         .map(|f| match f {
@@ -304,7 +304,7 @@ fn best_values(
     };
     // A refit starts from a fit already made: no scan again.
     if within.is_some() {
-        return refined(scene, m, free, target, p, &frames, evals);
+        return refined(pb, p, &frames);
     }
     // From the start that fits best (the scene's values, or others of c_rr: from
     // c_rr = 0 a μ_k that also brakes the rolling fits nearly as well, and
@@ -319,7 +319,7 @@ fn best_values(
         let mut best = (f64::INFINITY, p.clone());
         for q in tries {
             let (q, cost) = match mu {
-                Some(i) => coarse_mu(scene, m, free, &q, i, target, evals)?,
+                Some(i) => coarse_mu(pb, &q, i)?,
                 None => {
                     evals.next()?;
                     let cost = mean_cost(&with(scene, free, &q), m, target, evals);
@@ -333,9 +333,9 @@ fn best_values(
         p = best.1;
     }
     if let Some(i) = mu {
-        p[i] = scan_mu(scene, m, free, &p, i, target, evals)?;
+        p[i] = scan_mu(pb, &p, i)?;
     }
-    refined(scene, m, free, target, p, &frames, evals)
+    refined(pb, p, &frames)
 }
 
 /// Other values of c_rr a fit may start from besides the scene's: 0.003 to 0.1, a
@@ -375,17 +375,13 @@ fn starts(free: &[Free], p: &[f64]) -> Vec<Vec<f64>> {
 /// Every free value together by Levenberg–Marquardt from `p`, on the frames `frames`
 /// picks (away from the model's impacts: chosen again once the fit has moved them).
 fn refined(
-    scene: &Scene,
-    m: &Measured,
-    free: &[Free],
-    target: Target,
+    pb: &Problem,
     mut p: Vec<f64>,
     frames: &dyn Fn(&[f64]) -> Vec<usize>,
-    evals: &Evals,
 ) -> Result<(Vec<f64>, Vec<usize>), FitError> {
     let mut idx = frames(&p);
     for _ in 0..3 {
-        p = least_squares(scene, m, free, &idx, p, target, evals)?;
+        p = least_squares(pb, &idx, p)?;
         let next = frames(&p);
         if next == idx {
             break;
@@ -421,13 +417,20 @@ pub(super) fn scored_fit_within(
         Some((t, k)) => (t, Some(*k)),
         None => (m, None),
     };
-    let (p, idx) = best_values(scene, m, free, target, within, evals)?;
+    let pb = Problem {
+        scene,
+        m,
+        free,
+        target,
+        evals,
+    };
+    let (p, idx) = best_values(&pb, within)?;
     let fitted = with(scene, free, &p);
     let (r, labels) = labelled_residuals(&fitted, m, &idx, target, true, evals);
     let n = p.len();
     let cost: f64 = r.iter().map(|x| x * x).sum();
     let mut s2 = cost / r.len().saturating_sub(n + nuisance(m, target)).max(1) as f64;
-    let j = smooth_jacobian(scene, m, free, &idx, &p, &r, target, evals);
+    let j = smooth_jacobian(&pb, &idx, &p, &r);
     // Velocities derived from a track share frames: their errors are correlated, by
     // the stencils. Other residuals that go together from frame to frame (a tracker's
     // drift, a velocity some tool smoothed, a model that misses the data's shape) are
