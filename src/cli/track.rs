@@ -221,7 +221,7 @@ fn notes(
         let (v, e) = with_uncertainty(c.px_per_m, c.px_per_m_sigma.max(1e-9), 2);
         let (rv, re) = with_uncertainty(c.radius_px, c.radius_px_sigma.max(1e-9), 2);
         format!(
-            "scale {v} ± {e} px/m: the balls' fitted radius {rv} ± {re} px for R = {} ({radius_from}); speeds and μ_k from these tracks carry its {:.2} % besides their own ±",
+            "scale {v} ± {e} px/m: the balls' fitted radius {rv} ± {re} px for R = {} ({radius_from}); speeds and μ_k from these tracks carry its {:.2} %, which `fit` adds to their own ±",
             show(c.radius_m, Dimension::Length),
             100.0 * c.px_per_m_sigma / c.px_per_m
         )

@@ -737,3 +737,61 @@ fn a_tracks_positions_are_aligned_as_the_position_fit_aligns_them() {
         assert!(rms < 1.3 * v.noise, "seed {seed}: RMS {rms:e} m");
     }
 }
+
+/// Issue 29: a video's scale (px per metre from the balls' fitted radius) has a ±
+/// that every length carries, and so μ_k and v0: `fit` adds it in quadrature to the
+/// fit's own and says both parts. A 10 % scale ± must widen μ_k's ± to at least
+/// 10 % of μ_k (it is μ_k · 0.1 in quadrature with the fit's), and the model table's
+/// row for the same model says the same.
+#[test]
+fn the_scales_uncertainty_widens_mu_ks() {
+    let s = scene("paper-b4.9");
+    let text = example_text();
+    let with_scale = text.replacen("#multi:", "# scale = 1000 ± 100 px/m\n#multi:", 1);
+    let (plain, _) = fits_of(&s, &text);
+    let (scaled, f) = fits_of(&s, &with_scale);
+    assert_eq!(plain.measured.scale_rel_se, None);
+    assert_eq!(scaled.measured.scale_rel_se, Some(0.1));
+    for fit in [&f.position, &f.velocity] {
+        let part = fit.scale.expect("the scale's part");
+        assert!((part.mu_se_scale - 0.1 * fit.mu).abs() < 1e-12, "{part:?}");
+        let whole = part.mu_se_fit.hypot(part.mu_se_scale);
+        assert!((fit.mu_se - whole).abs() < 1e-12 * whole, "{fit:?}");
+        assert!(fit.mu_se >= 0.1 * fit.mu && part.mu_se_fit < 0.01 * fit.mu);
+    }
+    // The CLI's headline says both parts; the model table's row is the headline.
+    let dir = std::env::temp_dir().join(format!("groovelab-scale-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("scaled.txt");
+    std::fs::write(&path, &with_scale).unwrap();
+    let out = groovelab(&[
+        "fit",
+        "--preset",
+        "paper-b4.9",
+        "--data",
+        path.to_str().unwrap(),
+        "--format",
+        "json",
+    ]);
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(out.status.success());
+    let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let head = &j["model_fit"];
+    assert!(
+        head["scale"]["mu_se_scale"].as_f64().unwrap() > 0.0,
+        "{head}"
+    );
+    let row = j["models"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| c["name"] == head["model"])
+        .unwrap();
+    let mu_row = row["parameters"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|p| p["parameter"] == "mu")
+        .unwrap();
+    assert_eq!(mu_row["se"], head["mu_se"]);
+}

@@ -229,8 +229,14 @@ fn a_folder_of_frames_tracked_and_fitted_gives_mu_k_within_its_uncertainty() {
         stdout.contains("frames missing from the folder: 21–22"),
         "{stdout}"
     );
-    // The fit's own ± and the scale's (μ_k goes as 1/scale), as the notes say.
-    let sigma = se.hypot(mu * scale_rel_se(stdout));
+    // The stated ± holds the fit's own and the scale's (μ_k goes as 1/scale).
+    let rel = scale_rel_se(stdout);
+    let part = &j["model_fit"]["scale"];
+    assert!(
+        (part["rel_se"].as_f64().unwrap() - rel).abs() < 0.01 * rel,
+        "{part}"
+    );
+    let sigma = *se;
     assert!(
         (mu - 0.17).abs() <= 2.0 * sigma && sigma < 0.002,
         "μ_k = {mu} ± {sigma}"
@@ -245,11 +251,14 @@ fn a_folder_of_frames_tracked_and_fitted_gives_mu_k_within_its_uncertainty() {
 /// 0.16 m/s, POOR FIT). Its turn is now taken from the spin beside the gap.
 #[test]
 fn the_velocity_fit_of_a_video_track_agrees_and_holds_the_truth() {
-    let (stdout, (_, _, j)) = folder_tracked();
+    let (_, (_, _, j)) = folder_tracked();
     let v = &j["velocity_fit"];
     let (mu, se) = (v["mu"].as_f64().unwrap(), v["mu_se"].as_f64().unwrap());
-    // Its own ± and the scale's (v_cm, and so μ_k, scale with the lengths).
-    let sigma = se.hypot(mu * scale_rel_se(stdout));
+    // Its stated ± holds its own and the scale's (v_cm, and so μ_k, scale with the
+    // lengths: 0.18 % here, twice the fit's own).
+    let part = &v["scale"];
+    assert!(part["mu_se_scale"].as_f64().unwrap() > part["mu_se_fit"].as_f64().unwrap());
+    let sigma = se;
     assert!(
         (mu - 0.17).abs() <= 2.0 * sigma && sigma < 0.002,
         "μ_k = {mu} ± {sigma}"

@@ -63,7 +63,20 @@ pub(super) fn summary(f: &Fits) -> String {
 fn mu_text(m: &ModelFit) -> String {
     match m.undetermined("mu") {
         Some(n) => format!("not determined ({})", n.reason),
-        None if m.mu_se.is_finite() => format!("{} (± 2σ, 95 %)", pm(m.mu, 2.0 * m.mu_se)),
+        None if m.mu_se.is_finite() => match &m.scale {
+            // Both parts in the precision of the whole.
+            Some(s) => {
+                let part = |e: f64| pm(m.mu, 2.0 * e).split(" ± ").nth(1).map(str::to_string);
+                format!(
+                    "{} (± 2σ, 95 %: the fit's ± {} and the scale's ± {} ({:.2} %), in quadrature)",
+                    pm(m.mu, 2.0 * m.mu_se),
+                    part(s.mu_se_fit).unwrap_or_default(),
+                    part(s.mu_se_scale).unwrap_or_default(),
+                    100.0 * s.rel_se
+                )
+            }
+            None => format!("{} (± 2σ, 95 %)", pm(m.mu, 2.0 * m.mu_se)),
+        },
         None => format!("{:.4}", m.mu),
     }
 }

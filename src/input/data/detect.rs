@@ -16,6 +16,19 @@ pub fn read_with_notes(
     file: &str,
     reading: &Reading,
 ) -> Result<(RawSeries, Notes), DataError> {
+    let (raw, notes) = read_any(text, file, reading)?;
+    let raw = match raw {
+        RawSeries::Positions(t) => RawSeries::Positions(Track {
+            scale_rel_se: super::scene::scale_rel_se(text),
+            ..t
+        }),
+        v => v,
+    };
+    Ok((raw, notes))
+}
+
+/// [`read_with_notes`] but for the scale's ± a comment line states.
+fn read_any(text: &str, file: &str, reading: &Reading) -> Result<(RawSeries, Notes), DataError> {
     if trk::is_trk(text) {
         return trk::read(text, file, reading).map(|(t, n)| (RawSeries::Positions(t), n));
     }

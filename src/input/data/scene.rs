@@ -55,10 +55,32 @@ pub fn scene_of(text: &str, file: &str) -> Result<SceneSpec, DataError> {
     Ok(spec)
 }
 
+/// The relative standard error of the scale a `# scale = S ± σ px/m` comment line of
+/// `text` states (`groovelab track` writes it); `None` without one, or with one that
+/// does not read as two positive numbers (a comment, then, like any other).
+pub fn scale_rel_se(text: &str) -> Option<f64> {
+    use crate::study::vision::write::SCALE_COMMENT;
+    let rest = text
+        .lines()
+        .take_while(|l| l.trim_start().starts_with('#') || l.trim().is_empty())
+        .find_map(|l| l.trim().strip_prefix(SCALE_COMMENT))?;
+    let (s, e) = rest.trim().trim_end_matches("px/m").split_once('±')?;
+    let (s, e): (f64, f64) = (s.trim().parse().ok()?, e.trim().parse().ok()?);
+    (s > 0.0 && s.is_finite() && e >= 0.0 && e.is_finite()).then(|| e / s)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::physics::scene::Span;
+
+    #[test]
+    fn the_scale_comment_gives_its_relative_error() {
+        let text = "# groovelab track clip.mp4\n# scale = 1000.000000 ± 2.500000 px/m\n#multi:\n";
+        assert!((scale_rel_se(text).unwrap() - 0.0025).abs() < 1e-15);
+        assert_eq!(scale_rel_se("# scale = big ± small px/m\nt,x\n"), None);
+        assert_eq!(scale_rel_se("t,x\n# scale = 1 ± 1 px/m\n"), None);
+    }
 
     #[test]
     fn the_exported_scene_reads_back_within_its_rounding() {

@@ -12,9 +12,10 @@
 use serde::Serialize;
 
 use super::approach::APPROACH_FRAMES;
-use super::least_squares::{Target, labelled_residuals, with};
+use super::least_squares::with;
 use super::model::{ModelFit, Scored, scored_fit, scored_fit_within, thinned};
 use super::problem::{Evals, FitError, Free};
+use super::residuals::{Target, labelled_residuals};
 use super::uncertainty::{Label, NotIdentified, effective_points};
 use crate::physics::scene::Scene;
 use crate::study::Progress;

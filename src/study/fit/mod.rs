@@ -13,6 +13,7 @@ mod line;
 mod model;
 mod problem;
 mod regime;
+mod residuals;
 mod uncertainty;
 
 use serde::Serialize;
@@ -23,7 +24,6 @@ use crate::study::measured::series::Measured;
 
 pub use approach::{APPROACH_FRAMES, Approach, of_velocities};
 pub use choice::{Candidate, Estimate, compare_candidates, compare_models};
-pub use least_squares::{NearImpacts, aligned_track};
 pub use line::{
     Line, LineFit, PAPER_TABLE, PaperDisagreement, line, line_fit, paper_disagreements, paper_row,
     sliding_window,
@@ -33,7 +33,8 @@ pub use model::{
 };
 pub use problem::{DataLooks, FitError, Free, WORK_BUDGET};
 pub use regime::{observed_regime, rest_band};
-pub use uncertainty::NotIdentified;
+pub use residuals::{NearImpacts, aligned_track};
+pub use uncertainty::{NotIdentified, ScalePart};
 
 /// The fits of one series: the paper's line fits, and one fit per candidate model,
 /// the headline among them.
@@ -126,16 +127,9 @@ pub fn fit_all(
     // A track's headline is fitted to its positions: the same model to its derived
     // velocities as a check.
     let velocity_fit = match head.fit.fitted_to {
-        "positions" => Some(
-            model::scored_fit(
-                scene,
-                m,
-                &head.free,
-                least_squares::Target::Velocity,
-                &evals,
-            )?
-            .fit,
-        ),
+        "positions" => {
+            Some(model::scored_fit(scene, m, &head.free, residuals::Target::Velocity, &evals)?.fit)
+        }
         _ => None,
     };
     let given = [window.0.is_some(), window.1.is_some()];
@@ -269,7 +263,7 @@ mod tests {
         let v_t = t.iter().map(|&t| sol.at(t).left.u).collect();
         let m = Measured::velocities(t, v_cm, v_t);
         let (quiet, free) = (&crate::study::Quiet, &[Free::Mu]);
-        let velocity = least_squares::Target::Velocity;
+        let velocity = residuals::Target::Velocity;
         let near = Scene {
             width: 0.054999,
             ..scene

@@ -13,12 +13,14 @@ use crate::study::Progress;
 use crate::study::measured::series::{Measured, Stencils};
 
 use super::least_squares::{
-    Target, coarse_mu, fit_points, labelled_residuals, least_squares, mean_cost, normal_matrix,
-    nuisance, residuals_of, scan_mu, smooth_jacobian, with,
+    coarse_mu, least_squares, normal_matrix, scan_mu, smooth_jacobian, with,
 };
-use super::problem::{Evals, FitError, Free};
+use super::problem::{Evals, FitError, Free, Problem};
 use super::regime::{data_scatter, observed_after, rest_band, sliding_end};
-use super::uncertainty::{NotIdentified, effective_points, shared_noise, uncertainties};
+use super::residuals::{Target, fit_points, labelled_residuals, mean_cost, nuisance, residuals_of};
+use super::uncertainty::{
+    NotIdentified, ScalePart, effective_points, shared_noise, uncertainties, with_scale,
+};
 
 /// Most frames the model fit uses. A longer series is thinned to every k-th frame
 /// (the output says so): each model evaluation walks every point used, and a fit
@@ -72,6 +74,10 @@ pub struct ModelFit {
     /// every this-many-th frame.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub every: Option<usize>,
+    /// Where the data state their scale's ± (a video's): `mu_se` and `v0_se` hold it
+    /// added in quadrature to the fit's own, and this says both parts.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub scale: Option<ScalePart>,
 }
 
 impl ModelFit {
@@ -211,6 +217,7 @@ pub fn thinned(m: &Measured) -> Option<(Measured, usize)> {
                 })
             }),
             mirrored: m.mirrored,
+            scale_rel_se: m.scale_rel_se,
         },
         k,
     ))
@@ -273,14 +280,14 @@ pub(super) struct Scored {
 /// fitted on: those away from the model's impacts, and among `within` when given
 /// (a refit on frames shared with other models, started from a fit already made: no
 /// scan of μ_k again).
-fn best_values(
-    scene: &Scene,
-    m: &Measured,
-    free: &[Free],
-    target: Target,
-    within: Option<&[usize]>,
-    evals: &Evals,
-) -> Result<(Vec<f64>, Vec<usize>), FitError> {
+fn best_values(pb: &Problem, within: Option<&[usize]>) -> Result<(Vec<f64>, Vec<usize>), FitError> {
+    let Problem {
+        scene,
+        m,
+        free,
+        target,
+        evals,
+    } = *pb;
     let p: Vec<f64> = free
         .iter()
         .map(|f| match f {
@@ -297,7 +304,7 @@ fn best_values(
     };
     // A refit starts from a fit already made: no scan again.
     if within.is_some() {
-        return refined(scene, m, free, target, p, &frames, evals);
+        return refined(pb, p, &frames);
     }
     // From the start that fits best (the scene's values, or others of c_rr: from
     // c_rr = 0 a μ_k that also brakes the rolling fits nearly as well, and
@@ -312,7 +319,7 @@ fn best_values(
         let mut best = (f64::INFINITY, p.clone());
         for q in tries {
             let (q, cost) = match mu {
-                Some(i) => coarse_mu(scene, m, free, &q, i, target, evals)?,
+                Some(i) => coarse_mu(pb, &q, i)?,
                 None => {
                     evals.next()?;
                     let cost = mean_cost(&with(scene, free, &q), m, target, evals);
@@ -326,9 +333,9 @@ fn best_values(
         p = best.1;
     }
     if let Some(i) = mu {
-        p[i] = scan_mu(scene, m, free, &p, i, target, evals)?;
+        p[i] = scan_mu(pb, &p, i)?;
     }
-    refined(scene, m, free, target, p, &frames, evals)
+    refined(pb, p, &frames)
 }
 
 /// Other values of c_rr a fit may start from besides the scene's: 0.003 to 0.1, a
@@ -368,17 +375,13 @@ fn starts(free: &[Free], p: &[f64]) -> Vec<Vec<f64>> {
 /// Every free value together by Levenberg–Marquardt from `p`, on the frames `frames`
 /// picks (away from the model's impacts: chosen again once the fit has moved them).
 fn refined(
-    scene: &Scene,
-    m: &Measured,
-    free: &[Free],
-    target: Target,
+    pb: &Problem,
     mut p: Vec<f64>,
     frames: &dyn Fn(&[f64]) -> Vec<usize>,
-    evals: &Evals,
 ) -> Result<(Vec<f64>, Vec<usize>), FitError> {
     let mut idx = frames(&p);
     for _ in 0..3 {
-        p = least_squares(scene, m, free, &idx, p, target, evals)?;
+        p = least_squares(pb, &idx, p)?;
         let next = frames(&p);
         if next == idx {
             break;
@@ -414,13 +417,20 @@ pub(super) fn scored_fit_within(
         Some((t, k)) => (t, Some(*k)),
         None => (m, None),
     };
-    let (p, idx) = best_values(scene, m, free, target, within, evals)?;
+    let pb = Problem {
+        scene,
+        m,
+        free,
+        target,
+        evals,
+    };
+    let (p, idx) = best_values(&pb, within)?;
     let fitted = with(scene, free, &p);
     let (r, labels) = labelled_residuals(&fitted, m, &idx, target, true, evals);
     let n = p.len();
     let cost: f64 = r.iter().map(|x| x * x).sum();
     let mut s2 = cost / r.len().saturating_sub(n + nuisance(m, target)).max(1) as f64;
-    let j = smooth_jacobian(scene, m, free, &idx, &p, &r, target, evals);
+    let j = smooth_jacobian(&pb, &idx, &p, &r);
     // Velocities derived from a track share frames: their errors are correlated, by
     // the stencils. Other residuals that go together from frame to frame (a tracker's
     // drift, a velocity some tool smoothed, a model that misses the data's shape) are
@@ -432,7 +442,11 @@ pub(super) fn scored_fit_within(
             None
         }
     };
-    let (ses, not_identified) = uncertainties(&normal_matrix(&j), shared.as_deref(), s2, free, &p);
+    let (mut ses, not_identified) =
+        uncertainties(&normal_matrix(&j), shared.as_deref(), s2, free, &p);
+    let scale = m
+        .scale_rel_se
+        .and_then(|rel| with_scale(rel, free, &p, &mut ses));
     let se = |f: Free| free.iter().position(|x| *x == f).and_then(|i| ses[i]);
     let scored = |fit: ModelFit| Scored {
         fit,
@@ -483,6 +497,7 @@ pub(super) fn scored_fit_within(
         not_identified,
         scatter: data_scatter(m, target == Target::Position),
         every,
+        scale,
     }))
 }
 
@@ -515,6 +530,7 @@ pub(super) mod tests {
             not_identified: Vec::new(),
             scatter: None,
             every: None,
+            scale: None,
         }
     }
 }

@@ -337,6 +337,49 @@ fn inverse(a: &[Vec<f64>]) -> Option<Vec<Vec<f64>>> {
     )
 }
 
+/// The two parts of μ_k's and v0's standard errors where the lengths' scale has a
+/// ± of its own (a video's px per metre from the balls' fitted radius): a scale off
+/// by a factor multiplies every length, speed and deceleration by it, and so μ_k
+/// (`k|a_cm|/g`) and v0. The fit's `mu_se` and `v0_se` are both parts in quadrature.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct ScalePart {
+    /// The scale's relative standard error.
+    pub rel_se: f64,
+    /// μ_k's standard error from the fit alone, and from the scale (μ_k · rel_se).
+    pub mu_se_fit: f64,
+    pub mu_se_scale: f64,
+    /// v0's, where v0 was fitted and determined.
+    pub v0_se_fit: Option<f64>,
+    pub v0_se_scale: Option<f64>,
+}
+
+/// Adds the scale's relative standard error `rel` to the standard errors `ses` of
+/// μ_k and v0 among `free` (fitted to `p`), in quadrature; the parts, or `None`
+/// when the scale has no ± or μ_k is not determined.
+pub(super) fn with_scale(
+    rel: f64,
+    free: &[Free],
+    p: &[f64],
+    ses: &mut [Option<f64>],
+) -> Option<ScalePart> {
+    let at = |f: Free| free.iter().position(|x| *x == f);
+    let mu = at(Free::Mu)?;
+    let mu_se_fit = ses[mu].filter(|_| rel > 0.0 && rel.is_finite())?;
+    let mu_se_scale = p[mu].abs() * rel;
+    ses[mu] = Some(mu_se_fit.hypot(mu_se_scale));
+    let v0 = at(Free::V0).and_then(|i| Some((i, ses[i]?)));
+    if let Some((i, fit)) = v0 {
+        ses[i] = Some(fit.hypot(p[i].abs() * rel));
+    }
+    Some(ScalePart {
+        rel_se: rel,
+        mu_se_fit,
+        mu_se_scale,
+        v0_se_fit: v0.map(|(_, fit)| fit),
+        v0_se_scale: v0.map(|(i, _)| p[i].abs() * rel),
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -45,6 +45,11 @@ pub struct Measured {
     /// ball approaches toward −x) and was read mirrored, x → −x, to match the model.
     #[serde(skip)]
     pub mirrored: bool,
+    /// The relative standard error of the lengths' scale (a video's px per metre from
+    /// the balls' fitted radius), where the file states one: every length, and so
+    /// μ_k and v0, carries it besides the fit's own ±.
+    #[serde(skip)]
+    pub scale_rel_se: Option<f64>,
 }
 
 /// The weights with which a derived velocity was made from tracked frames `lo..=hi`
@@ -166,6 +171,9 @@ pub struct Track {
     pub mark_name: Option<String>,
     /// The format found: "Tracker multi-track", "Tracker single-track" or "CSV".
     pub format: &'static str,
+    /// The relative standard error of the lengths' scale, where the file states one
+    /// (`# scale = S ± σ px/m`, as `groovelab track` writes it).
+    pub scale_rel_se: Option<f64>,
 }
 
 /// Two one-track exports with no frame in common: the centre's and the mark's first

@@ -1,11 +1,15 @@
 //! Tracks as text: a Tracker-style multi-track data file (`#multi:`, the tracks'
 //! names, then `t x y x y …` in metres and seconds; empty cells where a point is left
 //! out), headed by `#` comment lines saying how it was made, which `input::data`
-//! skips but for `# scene radius = …`, the R the scale comes from.
+//! skips but for `# scene radius = …`, the R the scale comes from, and
+//! `# scale = S ± σ px/m`, the scale's ± that the fit adds to μ_k's.
 
 use std::fmt::Write as _;
 
 use super::tracks::Tracks;
+
+/// The comment line that states the scale and its ±: `# scale = S ± σ px/m`.
+pub const SCALE_COMMENT: &str = "# scale =";
 
 /// The tracks as a Tracker-style multi-track file, the `notes` as comment lines
 /// first. Per ball: its centre ("left ball") then its mark ("left mark").
@@ -24,6 +28,15 @@ pub fn tracker_text(tracks: &Tracks, notes: &[String]) -> String {
             crate::settings::units::Dimension::Length
         )
     );
+    let c = &tracks.calibration;
+    if !c.scale_given && c.px_per_m_sigma > 0.0 {
+        // Read back by `input::data` ([`SCALE_COMMENT`]): the fit adds its ± to μ_k's.
+        let _ = writeln!(
+            out,
+            "{SCALE_COMMENT} {:.6} ± {:.6} px/m",
+            c.px_per_m, c.px_per_m_sigma
+        );
+    }
     out.push_str("#multi:\n");
     let mut names = String::new();
     let mut header = String::from("t");

@@ -289,6 +289,7 @@ pub fn derive(
     }
     // Recorded with x away from the other ball: turned, and said so.
     m.mirrored = dir < 0.0;
+    m.scale_rel_se = track.scale_rel_se;
     m.v_cm_sigma = Some(sig_cm);
     m.stencils = Some(std::sync::Arc::new(stencils));
     m.x = Some(pos);

@@ -1,0 +1,436 @@
+//! The model fit's residuals: what it compares with the data ([`Target`]), the frames
+//! it uses (away from the model's impacts), the derived velocities the model is put
+//! through as the data were, and the positions with the impact's time, place and
+//! mark angle profiled out.
+
+use super::problem::Evals;
+use super::uncertainty::{Label, solve};
+use crate::physics::scene::Scene;
+use crate::physics::solution::Solution;
+use crate::study::measured::series::{Measured, Stencil, Stencils};
+
+/// Points the model fit uses: all but the frames that straddle an impact of the
+/// model `scene` (a frame holding a jump measures neither side of it).
+pub(super) fn fit_points(m: &Measured, scene: &Scene, target: Target, evals: &Evals) -> Vec<usize> {
+    // Positions do not jump at an impact: every frame counts.
+    if target == Target::Position {
+        return (0..m.t.len()).collect();
+    }
+    let sol = evals.solve(scene, m.t[0].min(-1e-3));
+    let near = NearImpacts::of(&m.t, &sol);
+    (0..m.t.len())
+        .filter(|&i| !near.straddles(m.t[i]))
+        .collect()
+}
+
+/// The frames a velocity fit leaves out: those within one frame interval (the
+/// shortest of the series) of an impact of the model, where the derived velocity
+/// straddles the jump and measures neither side of it.
+#[derive(Clone, Debug)]
+pub struct NearImpacts {
+    frame: f64,
+    impacts: Vec<f64>,
+}
+
+impl NearImpacts {
+    /// For the frame times `t` (sorted) against the impacts of `sol`.
+    pub fn of(t: &[f64], sol: &Solution) -> NearImpacts {
+        NearImpacts {
+            frame: t
+                .windows(2)
+                .map(|w| w[1] - w[0])
+                .fold(f64::INFINITY, f64::min),
+            impacts: sol
+                .events
+                .iter()
+                .filter(|e| e.kind == crate::physics::solution::EventKind::Collision)
+                .map(|e| e.t)
+                .collect(),
+        }
+    }
+
+    /// Whether the frame at time `t` is left out.
+    pub fn straddles(&self, t: f64) -> bool {
+        self.impacts.iter().any(|&a| (t - a).abs() < self.frame)
+    }
+
+    /// Whether any frame of `t` (sorted) is left out: the frames nearest each impact
+    /// are looked at, not every frame (a series may hold a million).
+    pub fn any_in(&self, t: &[f64]) -> bool {
+        self.impacts.iter().any(|&a| {
+            let i = t.partition_point(|&x| x < a);
+            [i.checked_sub(1), Some(i)]
+                .into_iter()
+                .flatten()
+                .filter_map(|k| t.get(k))
+                .any(|&x| self.straddles(x))
+        })
+    }
+}
+
+/// What a model fit compares with the data.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Target {
+    /// v_cm and v_t, each residual divided by its uncertainty when the data carry one.
+    Velocity,
+    /// The centre's x (m) and the mark's angle as an arc of the contact circle (r θ, m).
+    Position,
+}
+
+/// Residuals of `scene` against `m` at `idx`, weighted (divided by the points'
+/// uncertainties, where known) or not; points not measured (NaN) are left out.
+pub(super) fn residuals_of(
+    scene: &Scene,
+    m: &Measured,
+    idx: &[usize],
+    target: Target,
+    weighted: bool,
+    evals: &Evals,
+) -> Vec<f64> {
+    labelled_residuals(scene, m, idx, target, weighted, evals).0
+}
+
+/// [`residuals_of`], with each velocity residual's [`Label`] (none for positions).
+pub(super) fn labelled_residuals(
+    scene: &Scene,
+    m: &Measured,
+    idx: &[usize],
+    target: Target,
+    weighted: bool,
+    evals: &Evals,
+) -> (Vec<f64>, Vec<Label>) {
+    let sol = evals.solve(scene, m.t[0].min(-1e-3));
+    match target {
+        Target::Velocity => velocity_residuals(&sol, m, idx, weighted),
+        Target::Position => position_residuals(scene, &sol, m, idx),
+    }
+}
+
+/// One over a residual's uncertainty (1 unweighted or without one); `None` for a
+/// residual that is not a number or whose uncertainty is not usable (left out).
+fn weight(d: f64, sigma: Option<&Vec<f64>>, i: usize, weighted: bool) -> Option<f64> {
+    if !d.is_finite() {
+        return None;
+    }
+    match sigma.filter(|_| weighted).map(|s| s[i]) {
+        None => Some(1.0),
+        Some(s) if s > 0.0 && s.is_finite() => Some(1.0 / s),
+        Some(_) => None,
+    }
+}
+
+/// [`labelled_residuals`] of v_cm and v_t.
+///
+/// The impact time was estimated from the same noisy data (a track's positions, or a
+/// velocity file's drop, which only says between which two frames it lies): the
+/// model's time gets the best shift δt, profiled out of the fit as the position fit
+/// does — else its error lands in μ_k and the ± leaves it out.
+fn velocity_residuals(
+    sol: &Solution,
+    m: &Measured,
+    idx: &[usize],
+    weighted: bool,
+) -> (Vec<f64>, Vec<Label>) {
+    let rows = match &m.stencils {
+        // A track's impact is found to a fraction of a frame: the shift is small, and
+        // linearised (v moves by a δt) it keeps the stencils on the tracked frames.
+        Some(_) => {
+            let rows = velocity_rows(sol, m, idx, weighted, 0.0);
+            let shift = newton_step(&rows);
+            rows.into_iter()
+                .map(|(r, s, l)| (r + s * shift, s, l))
+                .collect()
+        }
+        // A velocity file's shift can be most of a frame, and a linearised one is wrong
+        // where a data point lies between the model's end of sliding and its shifted
+        // time (the residuals then jump as the end of sliding passes the point): the
+        // model is evaluated at the shifted times, by Newton steps (exact in one within
+        // a phase of constant acceleration).
+        None => {
+            let half = 0.5 * frame_at_impact(&m.t);
+            let mut shift = 0.0;
+            let mut rows = velocity_rows(sol, m, idx, weighted, shift);
+            for _ in 0..6 {
+                let next = eased(shift + newton_step(&rows), half);
+                if (next - shift).abs() <= 1e-12 {
+                    break;
+                }
+                shift = next;
+                rows = velocity_rows(sol, m, idx, weighted, shift);
+            }
+            rows
+        }
+    };
+    rows.into_iter().map(|(r, _, l)| (r, l)).unzip()
+}
+
+/// (residual, ∂/∂δt, label) of each v_cm and v_t at `idx`, each over its uncertainty
+/// when `weighted`, with the model's clock moved by `shift` (s): the data's t is the
+/// model's t + shift.
+fn velocity_rows(
+    sol: &Solution,
+    m: &Measured,
+    idx: &[usize],
+    weighted: bool,
+    shift: f64,
+) -> Vec<(f64, f64, Label)> {
+    let mut rows = Vec::with_capacity(2 * idx.len());
+    for &i in idx {
+        let t = m.t[i] + shift;
+        let s = sol.at(t);
+        let (a, du) = sol.segment_at(t).accel[0];
+        let (v, u) = match &m.stencils {
+            Some(st) => as_derived(sol, st, i, (s.left.v, s.left.u)),
+            None => (s.left.v, s.left.u),
+        };
+        let values = [
+            (v - m.v_cm[i], a, m.v_cm_sigma.as_ref(), false),
+            (u - m.v_t[i], du, m.v_t_sigma.as_ref(), true),
+        ];
+        for (d, slope, sigma, spin) in values {
+            if let Some(w) = weight(d, sigma, i, weighted) {
+                rows.push((d * w, slope * w, (i, spin)));
+            }
+        }
+    }
+    rows
+}
+
+/// The shift of the model's clock that minimises the residuals `rows` linearised
+/// (each moves by its slope times the shift); 0 when none has a slope.
+fn newton_step(rows: &[(f64, f64, Label)]) -> f64 {
+    let (num, den) = rows
+        .iter()
+        .fold((0.0, 0.0), |(n, d), (r, s, _)| (n + r * s, d + s * s));
+    if den > 0.0 { -num / den } else { 0.0 }
+}
+
+/// A velocity file's impact shift `shift`, kept near the frames of the drop: as is
+/// within `half` (half a frame: the drop puts the impact there), beyond it eased
+/// smoothly toward a whole frame and never past it. A larger shift would only hide a
+/// misfit of the model (the paper's series would take 20–30 ms); a hard stop at half a
+/// frame would push the estimate's own scatter into μ_k (measured: 2 of 40 synthetic
+/// files then 5σ off), and its kink stalls the search.
+fn eased(shift: f64, half: f64) -> f64 {
+    if shift.abs() <= half {
+        return shift;
+    }
+    let over = (shift.abs() - half) / half;
+    (half + half * over.tanh()).copysign(shift)
+}
+
+/// The spacing of the two frames around t = 0 (the impact), s; 0 when the series
+/// does not hold both.
+fn frame_at_impact(t: &[f64]) -> f64 {
+    let i = t.partition_point(|&x| x < 0.0);
+    match (i.checked_sub(1).and_then(|j| t.get(j)), t.get(i)) {
+        (Some(a), Some(b)) => b - a,
+        _ => 0.0,
+    }
+}
+
+/// The position residuals (x, and r θ of the mark), unweighted.
+fn position_residuals(
+    scene: &Scene,
+    sol: &Solution,
+    m: &Measured,
+    idx: &[usize],
+) -> (Vec<f64>, Vec<Label>) {
+    let rows = position_rows(scene, sol, m, idx);
+    let shift = profiled_shift(&rows, m.angle.is_some());
+    rows.iter()
+        .map(|(row, label)| {
+            let d = row[0] + (0..shift.len()).map(|a| row[1 + a] * shift[a]).sum::<f64>();
+            (d, *label)
+        })
+        .filter(|(d, _)| d.is_finite())
+        .unzip()
+}
+
+/// Each position residual of `scene`'s run `sol` against the track `m` at `idx`, with
+/// its derivatives by the impact's time, place and mark angle shifts (δt, δx, δθ:
+/// linearised, x moves by v δt, r θ by u δt), and which frame and whether the mark's.
+/// Rows not all finite are left out.
+fn position_rows(
+    scene: &Scene,
+    sol: &Solution,
+    m: &Measured,
+    idx: &[usize],
+) -> Vec<([f64; 4], Label)> {
+    let (Some(x), radius) = (m.x.as_ref(), scene.k() * scene.radius) else {
+        return Vec::new();
+    };
+    let theta0 = sol.angle_at(0.0)[0];
+    let turn = m
+        .angle
+        .as_ref()
+        .map(|a| branch_offset(idx.iter().map(|&i| sol.angle_at(m.t[i])[0] - theta0 - a[i])));
+    let mut rows: Vec<([f64; 4], Label)> = Vec::with_capacity(2 * idx.len());
+    for &i in idx {
+        let s = sol.at(m.t[i]);
+        rows.push((
+            [s.left.x + scene.radius - x[i], s.left.v, -1.0, 0.0],
+            (i, false),
+        ));
+        if let (Some(a), Some(c)) = (&m.angle, turn) {
+            let d = same_turn(sol.angle_at(m.t[i])[0] - theta0 - a[i], c);
+            rows.push(([radius * d, s.left.u, 0.0, -radius], (i, true)));
+        }
+    }
+    rows.retain(|(row, _)| row.iter().all(|v| v.is_finite()));
+    rows
+}
+
+/// The common offset (rad) of model-minus-measured mark angles, as their circular mean:
+/// a mark hidden by the rail for a few frames turns by more than π meanwhile, so the
+/// measured angles' unwrapping can be off by whole turns after a gap.
+fn branch_offset(diffs: impl Iterator<Item = f64>) -> f64 {
+    let (s, c) = diffs
+        .filter(|d| d.is_finite())
+        .fold((0.0, 0.0), |(s, c), d| (s + d.sin(), c + d.cos()));
+    s.atan2(c)
+}
+
+/// `d` moved by whole turns to within π of `centre`: the residual of a mark angle does
+/// not depend on which turn the measured angle was unwrapped to.
+fn same_turn(d: f64, centre: f64) -> f64 {
+    let tau = std::f64::consts::TAU;
+    centre + (d - centre - tau * ((d - centre) / tau).round())
+}
+
+/// The impact's time and place, and the mark's angle then, were estimated from the
+/// same noisy track: the least-squares shifts (δt, δx and, with a mark, δθ) of the
+/// [`position_rows`], profiled out of the fit (zero when they cannot be solved).
+fn profiled_shift(rows: &[([f64; 4], Label)], mark: bool) -> Vec<f64> {
+    let k = if mark { 3 } else { 2 };
+    let mut ata = vec![vec![0.0; k]; k];
+    let mut atb = vec![0.0; k];
+    for (row, _) in rows {
+        for a in 0..k {
+            atb[a] -= row[1 + a] * row[0];
+            for b in 0..k {
+                ata[a][b] += row[1 + a] * row[1 + b];
+            }
+        }
+    }
+    solve(ata, atb).unwrap_or_else(|| vec![0.0; k])
+}
+
+/// A position track's centre where the model's left ball would be (x − R, m) at each
+/// frame, moved by the impact time and place shifts the position fit profiles out
+/// ([`profiled_shift`]; the detected impact is one noisy frame's estimate, and without
+/// them every residual leans one way): model minus this is the position fit's
+/// residual. NaN outside the run `sol` of `scene` and where x is not measured; `None`
+/// without positions.
+pub fn aligned_track(scene: &Scene, sol: &Solution, m: &Measured) -> Option<Vec<f64>> {
+    let x = m.x.as_ref()?;
+    let idx: Vec<usize> = (0..m.t.len())
+        .filter(|&i| (sol.t_start..=sol.t_end).contains(&m.t[i]))
+        .collect();
+    let rows = position_rows(scene, sol, m, &idx);
+    let shift = profiled_shift(&rows, m.angle.is_some());
+    let mut out = vec![f64::NAN; m.t.len()];
+    for &i in &idx {
+        let v = sol.at(m.t[i]).left.v;
+        out[i] = x[i] - scene.radius + shift[1] - v * shift[0];
+    }
+    Some(out)
+}
+
+/// The model's v_cm and v_t at point `i` (`exact` there) as the data were made: a
+/// velocity derived from a track is a local fit's slope over frames, which rounds the
+/// corners of v(t) (the end of sliding, an impact), so the model's positions go
+/// through the same stencil and get the same rounding — else the fit bends μ_k to
+/// match the rounded corner. Within one segment the positions are quadratic in t and
+/// the stencil gives the exact slope back: only windows over a boundary are summed.
+fn as_derived(sol: &Solution, st: &Stencils, i: usize, exact: (f64, f64)) -> (f64, f64) {
+    let one_segment = |times: &[f64], s: &Stencil| {
+        std::ptr::eq(sol.segment_at(times[s.lo]), sol.segment_at(times[s.hi]))
+    };
+    let v = match st.v_cm.get(i) {
+        Some(Some(s)) if !one_segment(&st.centre_times, s) => s
+            .weights(&st.centre_times)
+            .map(|(k, w)| w * sol.at(st.centre_times[k]).left.x)
+            .sum(),
+        _ => exact.0,
+    };
+    let r = sol.scene.k() * sol.scene.radius;
+    let u = match st.v_t.get(i) {
+        Some(Some(s)) if !one_segment(&st.mark_times, s) => {
+            r * s
+                .weights(&st.mark_times)
+                .map(|(k, w)| w * sol.angle_at(st.mark_times[k])[0])
+                .sum::<f64>()
+        }
+        _ => exact.1,
+    };
+    (v, u)
+}
+
+/// Parameters a fit to `target` estimates besides the free scene values.
+pub(super) fn nuisance(m: &Measured, target: Target) -> usize {
+    match (target, m.angle.is_some()) {
+        // The impact time ([`velocity_residuals`]).
+        (Target::Velocity, _) => 1,
+        (Target::Position, false) => 2,
+        (Target::Position, true) => 3,
+    }
+}
+
+pub(super) fn residuals(
+    scene: &Scene,
+    m: &Measured,
+    idx: &[usize],
+    target: Target,
+    evals: &Evals,
+) -> Vec<f64> {
+    residuals_of(scene, m, idx, target, true, evals)
+}
+
+/// Mean squared residual of `scene`, over the frames away from its own impacts.
+pub(super) fn mean_cost(scene: &Scene, m: &Measured, target: Target, evals: &Evals) -> f64 {
+    let idx = fit_points(m, scene, target, evals);
+    let r = residuals(scene, m, &idx, target, evals);
+    r.iter().map(|x| x * x).sum::<f64>() / r.len().max(1) as f64
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{NearImpacts, branch_offset, same_turn};
+
+    #[test]
+    fn a_mark_angle_unwrapped_a_turn_off_leaves_its_residual_unchanged() {
+        use std::f64::consts::TAU;
+        // Model-minus-measured angles 0.3 rad apart, two of them a whole turn off
+        // (the mark hidden across a gap longer than half a turn).
+        let diffs = [0.30, 0.31, 0.29 + TAU, 0.30, 0.32 - 2.0 * TAU];
+        let c = branch_offset(diffs.iter().copied());
+        assert!((c - 0.304).abs() < 0.01, "{c}");
+        for d in diffs {
+            let r = same_turn(d, c);
+            assert!((r - 0.30).abs() < 0.03, "{d} -> {r}");
+        }
+        // Near ±π the branch follows the common offset, not the principal value.
+        assert!((same_turn(-3.1, 3.1) - (TAU - 3.1)).abs() < 1e-12);
+    }
+
+    #[test]
+    fn any_in_agrees_with_every_frame_looked_at() {
+        let t: Vec<f64> = (0..50).map(|i| -0.2 + 0.02 * f64::from(i)).collect();
+        for impacts in [
+            vec![],
+            vec![0.0],
+            vec![0.3, 0.61],
+            vec![-1.0, 5.0],
+            vec![-0.21],
+            vec![0.79],
+        ] {
+            let near = NearImpacts {
+                frame: 0.02 - 1e-12,
+                impacts: impacts.clone(),
+            };
+            let every = t.iter().any(|&x| near.straddles(x));
+            assert_eq!(near.any_in(&t), every, "{impacts:?}");
+        }
+    }
+}
