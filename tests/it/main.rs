@@ -35,3 +35,4 @@ mod sweep;
 mod tracks;
 mod tui;
 mod video;
+mod video_app;
