@@ -40,9 +40,9 @@ pub use args::*;
 use deliver::deliver;
 pub use error::{BadValue, CliError, Flag, Usage};
 pub use open::{app, lab, opened, opened_tracking, scene_of_data};
-pub use video_data::pending as pending_video;
 use states::{csv_output, samples, state_rows};
 pub use sweep::run_with_stop as sweep_with_stop;
+pub use video_data::pending as pending_video;
 
 /// What a command line asks for once it is valid.
 pub enum Response {
@@ -125,9 +125,8 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         .map(|_| "preset")
         .or_else(|| cli.scene.values.given().next().map(|(k, _)| k.param().name));
     // `track` reads --scale (the length a pixel shows) and --fps, its only data options.
-    let track_scale = |id: &str| {
-        matches!(id, "scale" | "fps") && matches!(cli.command, Some(Command::Track(_)))
-    };
+    let track_scale =
+        |id: &str| matches!(id, "scale" | "fps") && matches!(cli.command, Some(Command::Track(_)));
     let data_flag = data_given
         .iter()
         .find(|(id, g)| *g && !track_scale(id))

@@ -90,10 +90,7 @@ pub fn load_series(
 
 /// The series of the data texts `(file, text)` (one, or a centre and a mark track)
 /// read with the data options, and the first file's `# scene` values.
-fn series_of(
-    texts: &[(String, String)],
-    args: &DataArgs,
-) -> Result<(Series, SceneSpec), CliError> {
+fn series_of(texts: &[(String, String)], args: &DataArgs) -> Result<(Series, SceneSpec), CliError> {
     // A video's --scale went into its tracking: its tracks are in metres.
     let video = args.data.iter().any(|p| super::video_data::is_video(p));
     let (mut reading, derive) = reading_of(args)?;

@@ -85,7 +85,6 @@ pub fn run(
     }
 }
 
-
 /// What `track` (and `--data VIDEO`) asks of the tracking: R from the scene options,
 /// `fps` and `scale` (the length a pixel shows, m) as given.
 pub fn options(

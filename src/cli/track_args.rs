@@ -27,7 +27,10 @@ pub enum TrackFormat {
 }
 
 /// A parser of a positive number at most `max`.
-pub(super) fn positive(what: &'static str, max: f64) -> impl Fn(&str) -> Result<f64, String> + Clone {
+pub(super) fn positive(
+    what: &'static str,
+    max: f64,
+) -> impl Fn(&str) -> Result<f64, String> + Clone {
     move |text: &str| {
         let v: f64 = text
             .trim()

@@ -11,14 +11,12 @@ use crate::lab::analyses;
 use crate::lab::jobs::{Job, State};
 use std::sync::Arc;
 
-use crate::lab::{
-    ExportResult, FitWindow, FitWindowError, Generation, Lab, Overlay, OwnData,
-};
-use crate::settings::spec::SceneSpec;
-use crate::study::vision::thumbs::VideoView;
+use crate::lab::{ExportResult, FitWindow, FitWindowError, Generation, Lab, Overlay, OwnData};
 use crate::methods::Method;
+use crate::settings::spec::SceneSpec;
 use crate::study::compare::Row;
 use crate::study::fit::{FitError, Fits, ModelFit};
+use crate::study::vision::thumbs::VideoView;
 
 /// Which job finished (or moved on a percent): what the event loop is told.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

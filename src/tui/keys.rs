@@ -255,7 +255,7 @@ pub const TABLE: &[Binding] = &[
     Binding {
         keys: &["V"],
         action: Action::ToggleVideo,
-        help: "Scene panel: the drawn scene or the video (--data VIDEO), its frame at the cursor with the tracked points (+ centre, x mark) and the model's balls (o) over it",
+        help: "Scene panel: the drawn scene or the video (--data VIDEO)",
         hint: None,
     },
     Binding {

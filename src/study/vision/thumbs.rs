@@ -38,7 +38,9 @@ impl Thumbs {
         let n = frames.max(1) as f64;
         let aspect = w as f64 / h as f64;
         let area = BUDGET as f64 / n;
-        let tw = ((area * aspect).sqrt() as usize).clamp(32, MAX_WIDTH).min(w);
+        let tw = ((area * aspect).sqrt() as usize)
+            .clamp(32, MAX_WIDTH)
+            .min(w);
         let th = ((tw as f64 / aspect).round() as usize).clamp(1, h);
         let every = ((n * (tw * th) as f64 / BUDGET as f64).ceil() as usize).max(1);
         Thumbs {
@@ -61,9 +63,7 @@ impl Thumbs {
     fn reduce(&self, img: &Gray) -> Vec<u8> {
         let (tw, th) = (self.width, self.height);
         let mut out = Vec::with_capacity(tw * th);
-        let cols: Vec<(usize, usize)> = (0..tw)
-            .map(|x| span(x, tw, img.width))
-            .collect::<Vec<_>>();
+        let cols: Vec<(usize, usize)> = (0..tw).map(|x| span(x, tw, img.width)).collect::<Vec<_>>();
         for y in 0..th {
             let (y0, y1) = span(y, th, img.height);
             for &(x0, x1) in &cols {
@@ -246,10 +246,9 @@ fn levels(pictures: &[Vec<u8>]) -> [u8; 3] {
         }
         255
     };
-    let (n, sum) = hist
-        .iter()
-        .enumerate()
-        .fold((0.0, 0.0), |(n, s), (v, &c)| (n + c as f64, s + (v as f64) * c as f64));
+    let (n, sum) = hist.iter().enumerate().fold((0.0, 0.0), |(n, s), (v, &c)| {
+        (n + c as f64, s + (v as f64) * c as f64)
+    });
     let (mut best, mut split) = (-1.0, 128u8);
     let (mut n0, mut s0) = (0.0, 0.0);
     for (v, &c) in hist.iter().enumerate().take(255) {
@@ -279,7 +278,10 @@ mod tests {
             // Only the size matters: push the kept ones as empty frames would be.
             let kept = frames.div_ceil(t.every as u64) as usize;
             // Within the budget but for the last picture's rounding.
-            assert!(kept * t.width * t.height <= BUDGET + t.width * t.height, "{frames}: {t:?}");
+            assert!(
+                kept * t.width * t.height <= BUDGET + t.width * t.height,
+                "{frames}: {t:?}"
+            );
             assert!(t.width >= 32 && t.width <= MAX_WIDTH);
             t.push(0, &img);
             assert_eq!(t.picture(0).unwrap(), vec![7; t.width * t.height]);

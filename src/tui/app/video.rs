@@ -18,7 +18,8 @@ impl App {
         work: impl FnOnce(&Ticket) -> VideoResult + Send + 'static,
     ) {
         self.status = Status::Info(format!(
-            "tracking {name} on a worker: its data join the scene when done (V: the video)"
+            "tracking {} on a worker: its data join the scene when done (V: the video)",
+            short(&name)
         ));
         self.video
             .start(&self.jobs, self.lab.generation(), name, work);
@@ -36,7 +37,7 @@ impl App {
         let Some(result) = self.video.take() else {
             return false;
         };
-        let name = self.video.name.clone().unwrap_or_default();
+        let name = short(self.video.name.as_deref().unwrap_or_default());
         match result {
             Ok(done) => match self
                 .lab
@@ -60,16 +61,25 @@ impl App {
     /// `V`: the Scene panel shows the video or the drawn scene.
     pub(super) fn toggle_video(&mut self) {
         let Some(name) = self.video.name.clone() else {
-            self.status = Status::Error(
-                "no video: give one with --data (groovelab --data clip.mp4)".into(),
-            );
+            self.status =
+                Status::Error("no video: give one with --data (groovelab --data clip.mp4)".into());
             return;
         };
         self.video.shown = !self.video.shown;
         self.status = Status::Info(if self.video.shown {
-            format!("Scene panel: the video {name} (V: the drawn scene)")
+            format!(
+                "Scene panel: the video {} (V: the drawn scene)",
+                short(&name)
+            )
         } else {
             "Scene panel: the drawn scene (V: the video)".into()
         });
     }
+}
+
+/// A video's name as the status line says it: its file's name, without the folders.
+fn short(name: &str) -> String {
+    std::path::Path::new(name)
+        .file_name()
+        .map_or(name.into(), |f| f.to_string_lossy().into_owned())
 }

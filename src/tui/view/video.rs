@@ -17,8 +17,8 @@ use crate::study::vision::thumbs::VideoView;
 use crate::tui::app::App;
 use crate::tui::theme::Theme;
 
-/// Characters from dark to bright for the ASCII glyph set.
-const RAMP: &[u8] = b" .:-=+*#%@";
+/// Characters from dark to bright for the ASCII glyph set (none of the marks: + x o).
+const RAMP: &[u8] = b" .:-=*#%@";
 
 /// Draws the video panel into `area`.
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
@@ -84,7 +84,9 @@ fn titles(app: &App, view: &VideoView, frame: Option<usize>) -> Vec<String> {
         .file_name()
         .map_or(name.into(), |f| f.to_string_lossy().into_owned());
     let n = view.t.len();
-    let at = frame.map_or("no frame".to_string(), |k| format!("frame {} of {n}", k + 1));
+    let at = frame.map_or("no frame".to_string(), |k| {
+        format!("frame {} of {n}", k + 1)
+    });
     vec![
         format!(" Video {file}  t = {:.3} s  {at} ", app.t),
         format!(" Video  t = {:.3} s  {at} ", app.t),
@@ -258,7 +260,8 @@ fn draw_picture(view: &VideoView, k: usize, fit: &Fit, buf: &mut Buffer, theme: 
 fn draw_model(app: &App, view: &VideoView, l: &Link, fit: &Fit, buf: &mut Buffer, theme: &Theme) {
     let snap = app.lab.solution.at(app.t);
     let radius = app.lab.scene.radius;
-    let r_px = radius * view.px_per_m;
+    // Half a cell outside the ball's edge, so that a small ball stays seen inside.
+    let r_px = radius * view.px_per_m + 0.5 / fit.k;
     // A dot per cell of the ring, about.
     let n = ((std::f64::consts::TAU * r_px * fit.k).ceil() as usize).clamp(8, 720);
     for (x, style) in [(snap.left.x, theme.left), (snap.right.x, theme.right)] {
