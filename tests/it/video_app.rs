@@ -241,6 +241,32 @@ fn the_app_tracks_on_a_worker_and_takes_the_data_in_when_done() {
         "{:?}",
         app.status
     );
+    // The model's balls where the film has them: at every frame with both tracked,
+    // the exact solution's centres mapped into the video by the tracker's scale,
+    // groove and origin lie on the tracked ones (the film was made with this scene;
+    // 0.1 px of centre noise, 0.4 % of scale: well under a pixel).
+    let view = app.video.view.clone().unwrap();
+    app.lab.set(Key::Mu, 0.17).unwrap();
+    let (mut compared, mut worst) = (0, 0.0f64);
+    for k in 0..FRAMES {
+        let (Some(Some(l)), Some(Some(r))) = (
+            view.balls[0].centre.get(k),
+            view.balls.get(1).and_then(|b| b.centre.get(k)),
+        ) else {
+            continue;
+        };
+        app.t = groovelab::tui::view::video::frame_time(&app, &view, k).unwrap();
+        let model = groovelab::tui::view::video::model_centres(&app, &view).unwrap();
+        for (m, t) in model.iter().zip([l, r]) {
+            let d = (m.0 - f64::from(t.0)).hypot(m.1 - f64::from(t.1));
+            assert!(d < 1.0, "frame {k}: model {m:?}, tracked {t:?}: {d} px");
+            worst = worst.max(d);
+        }
+        compared += 1;
+    }
+    eprintln!("model against tracked centres: {compared} frames, worst {worst:.2} px");
+    assert!(compared >= 40, "{compared} frames");
+    app.lab.set(Key::Mu, 0.2).unwrap();
     // Kept in this process: a second open needs no tracking.
     assert!(
         groovelab::cli::pending_video(&scene, &data)

@@ -302,4 +302,63 @@ mod tests {
         t.push(0, &img);
         assert_eq!(t.picture(0), Some(&[10u8, 0][..]));
     }
+
+    fn view() -> VideoView {
+        let mut thumbs = Thumbs::sized(64, 36, 3);
+        for k in 0..3 {
+            let mut img = Gray::filled(64, 36, 40);
+            img.data[k * 70] = 250;
+            thumbs.push(k, &img);
+        }
+        VideoView {
+            thumbs,
+            t: vec![0.0, 0.01, 0.02],
+            px_per_m: 1234.5,
+            groove: 0.05,
+            origin: (31.5, 17.25),
+            radius_px: 13.6,
+            balls: vec![BallPixels {
+                name: "left".into(),
+                centre: vec![Some((1.0, 2.0)), None, Some((3.5, 4.25))],
+                mark: vec![None, Some((5.0, 6.0)), None],
+            }],
+            levels: [40, 100, 250],
+        }
+    }
+
+    #[test]
+    fn metres_go_back_to_the_pixels_they_came_from() {
+        // The tracks' metres of pixel p, as `tracks::tracks` makes them (x along the
+        // groove turned by its angle, y up, about the origin, over the scale).
+        let v = view();
+        let (c, s) = (v.groove.cos(), v.groove.sin());
+        for p in [(0.0, 0.0), (10.0, 30.0), (63.0, 1.5)] {
+            let (dx, dy) = (p.0 - v.origin.0, p.1 - v.origin.1);
+            let m = (
+                (dx * c + dy * s) / v.px_per_m,
+                (dx * s - dy * c) / v.px_per_m,
+            );
+            let back = v.pixel(m.0, m.1);
+            assert!((back.0 - p.0).abs() < 1e-9 && (back.1 - p.1).abs() < 1e-9);
+        }
+    }
+
+    #[test]
+    fn a_view_survives_its_bytes_and_damaged_bytes_are_refused() {
+        let v = view();
+        let bytes = v.to_bytes();
+        assert_eq!(VideoView::from_bytes(&bytes), Ok(v));
+        assert!(VideoView::from_bytes(&bytes[..bytes.len() - 1]).is_err());
+        assert!(VideoView::from_bytes(b"garbage").is_err());
+    }
+
+    #[test]
+    fn the_frame_at_a_time_is_the_nearest() {
+        let v = view();
+        assert_eq!(v.frame_at(-1.0), Some(0));
+        assert_eq!(v.frame_at(0.004), Some(0));
+        assert_eq!(v.frame_at(0.006), Some(1));
+        assert_eq!(v.frame_at(9.0), Some(2));
+        assert_eq!(v.frame_at(f64::NAN), None);
+    }
 }

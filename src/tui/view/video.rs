@@ -71,9 +71,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         return;
     };
     draw_picture(view, k, &fit, buf, theme);
-    if let Some(l) = link {
-        draw_model(app, view, &l, &fit, buf, theme);
-    }
+    draw_model(app, view, &fit, buf, theme);
     draw_tracked(view, k, &fit, buf, theme);
 }
 
@@ -256,16 +254,31 @@ fn draw_picture(view: &VideoView, k: usize, fit: &Fit, buf: &mut Buffer, theme: 
     }
 }
 
-/// The model's balls at the cursor's time: rings of the scene's R.
-fn draw_model(app: &App, view: &VideoView, l: &Link, fit: &Fit, buf: &mut Buffer, theme: &Theme) {
+/// The model's ball centres at the cursor's time in the video's pixels (left, right),
+/// while the data in use are the video's.
+pub fn model_centres(app: &App, view: &VideoView) -> Option<[(f64, f64); 2]> {
+    let l = Link::of(app, view)?;
     let snap = app.lab.solution.at(app.t);
     let radius = app.lab.scene.radius;
+    Some([snap.left.x, snap.right.x].map(|x| view.pixel(l.file_x(x, radius), 0.0)))
+}
+
+/// The lab's time of the video's frame `k`, while the data in use are the video's.
+pub fn frame_time(app: &App, view: &VideoView, k: usize) -> Option<f64> {
+    let l = Link::of(app, view)?;
+    Some(view.t.get(k)? - l.impact_t)
+}
+
+/// The model's balls at the cursor's time: rings of the scene's R.
+fn draw_model(app: &App, view: &VideoView, fit: &Fit, buf: &mut Buffer, theme: &Theme) {
+    let Some(centres) = model_centres(app, view) else {
+        return;
+    };
     // Half a cell outside the ball's edge, so that a small ball stays seen inside.
-    let r_px = radius * view.px_per_m + 0.5 / fit.k;
+    let r_px = app.lab.scene.radius * view.px_per_m + 0.5 / fit.k;
     // A dot per cell of the ring, about.
     let n = ((std::f64::consts::TAU * r_px * fit.k).ceil() as usize).clamp(8, 720);
-    for (x, style) in [(snap.left.x, theme.left), (snap.right.x, theme.right)] {
-        let centre = view.pixel(l.file_x(x, radius), 0.0);
+    for (centre, style) in centres.into_iter().zip([theme.left, theme.right]) {
         for i in 0..n {
             let a = i as f64 / n as f64 * std::f64::consts::TAU;
             let p = (centre.0 + r_px * a.cos(), centre.1 + r_px * a.sin());
