@@ -75,6 +75,12 @@ pub struct DataArgs {
     /// [default: chosen from the frame rate and the scatter].
     #[arg(long, value_name = "T", value_parser = time, global = true)]
     pub window: Option<f64>,
+    /// Frames per second of a video (`track`, `--data VIDEO`) [default: a slow-motion
+    /// capture rate in the file's metadata, else the container's; a folder of frames
+    /// needs it].
+    #[arg(long, value_name = "F", global = true,
+          value_parser = super::track_args::positive("frames per second", 1e5))]
+    pub fps: Option<f64>,
 }
 
 /// What a named track of a position file holds.
@@ -217,7 +223,8 @@ pub struct FitArgs {
 
 #[derive(Args, Debug)]
 pub struct DataCmdArgs {
-    /// The files to read (Tracker .trk or export, Logger Pro .cmbl or text, CSV/TSV).
+    /// The files to read (Tracker .trk or export, Logger Pro .cmbl or text, CSV/TSV; a
+    /// video or a folder of numbered frames is tracked first, as `track` does).
     #[arg(value_name = "FILE", required = true)]
     pub files: Vec<std::path::PathBuf>,
     /// Output: text for people, or JSON (one object per file, in an array).

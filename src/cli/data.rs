@@ -5,18 +5,29 @@
 
 use std::fmt::Write as _;
 
-use super::args::{DataArgs, DataCmdArgs, DataFormat};
+use super::args::{DataArgs, DataCmdArgs, DataFormat, SceneArgs};
 use super::error::CliError;
 use super::open::reading_of;
 use crate::input::data::{Report, inspect};
 use crate::settings::units::{Dimension, show_small, significant};
 
-/// Reads each file with the data options and reports it.
-pub fn run(args: &DataCmdArgs, data: &DataArgs) -> Result<String, CliError> {
+/// Reads each file with the data options and reports it; a video (or a folder of
+/// frames) is tracked for the scene's R first, its tracks read as the file.
+pub fn run(args: &DataCmdArgs, scene: &SceneArgs, data: &DataArgs) -> Result<String, CliError> {
     let (reading, derive) = reading_of(data)?;
     let mut reports = Vec::new();
     for path in &args.files {
-        let text = crate::input::read_user_file(path, "data file", crate::input::MAX_FILE_BYTES)?;
+        let video = super::video_data::is_video(path);
+        let text = if video {
+            super::video_data::text(path, scene, data)?
+        } else {
+            crate::input::read_user_file(path, "data file", crate::input::MAX_FILE_BYTES)?
+        };
+        // A video's --scale went into its tracking: its tracks are in metres.
+        let reading = crate::input::data::Reading {
+            scale: reading.scale.filter(|_| !video),
+            ..reading.clone()
+        };
         reports.push(inspect(
             &text,
             &path.display().to_string(),

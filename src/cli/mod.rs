@@ -40,9 +40,10 @@ use crate::settings::units::{Dimension, show, sig_figs};
 pub use args::*;
 use deliver::deliver;
 pub use error::{BadValue, CliError, Flag, Usage};
-pub use open::{app, lab, opened, scene_of_data};
+pub use open::{app, lab, opened, opened_tracking, scene_of_data};
 use states::{csv_output, samples, state_rows};
 pub use sweep::run_with_stop as sweep_with_stop;
+pub use video_data::pending as pending_video;
 
 /// What a command line asks for once it is valid.
 pub enum Response {
@@ -75,9 +76,9 @@ pub fn run(cli: &Cli) -> Result<Response, CliError> {
         .map(Response::Print),
         Some(Command::Sweep(args)) => sweep::run(&cli.scene, args).map(Response::Print),
         Some(Command::Track(args)) => {
-            track::run(&cli.scene, cli.data.scale, args).map(Response::Print)
+            track::run(&cli.scene, cli.data.scale, cli.data.fps, args).map(Response::Print)
         }
-        Some(Command::Data(args)) => data::run(args, &cli.data).map(Response::Print),
+        Some(Command::Data(args)) => data::run(args, &cli.scene, &cli.data).map(Response::Print),
         Some(Command::Presets) => Ok(Response::Print(presets())),
         Some(Command::Completions { shell }) => Ok(Response::Print(manual::completions(*shell))),
         Some(Command::Manpage) => Ok(Response::Print(manual::manpage())),
@@ -95,7 +96,13 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         Some(Command::Fit(_)) => ("fit", true, true, false),
         Some(Command::Sweep(_)) => ("sweep", true, false, false),
         Some(Command::Track(_)) => ("track", true, false, false),
-        Some(Command::Data(_)) => ("data", false, true, false),
+        // A video among its files is tracked for balls of R (the scene's).
+        Some(Command::Data(a)) => (
+            "data",
+            a.files.iter().any(|p| video_data::is_video(p)),
+            true,
+            false,
+        ),
         Some(Command::Presets) => ("presets", false, false, false),
         Some(Command::Completions { .. }) => ("completions", false, false, false),
         Some(Command::Manpage) => ("manpage", false, false, false),
@@ -110,6 +117,7 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         ("length_unit", d.length_unit.is_some()),
         ("scale", d.scale.is_some()),
         ("window", d.window.is_some()),
+        ("fps", d.fps.is_some()),
     ];
     let scene_given = cli
         .scene
@@ -117,8 +125,9 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         .as_ref()
         .map(|_| "preset")
         .or_else(|| cli.scene.values.given().next().map(|(k, _)| k.param().name));
-    // `track` reads --scale (the length a pixel shows), its only data option.
-    let track_scale = |id: &str| id == "scale" && matches!(cli.command, Some(Command::Track(_)));
+    // `track` reads --scale (the length a pixel shows) and --fps, its only data options.
+    let track_scale =
+        |id: &str| matches!(id, "scale" | "fps") && matches!(cli.command, Some(Command::Track(_)));
     let data_flag = data_given
         .iter()
         .find(|(id, g)| *g && !track_scale(id))
@@ -153,6 +162,13 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
             Usage::WithoutData { flag: Flag(id) }
         }
         _ if !ascii && cli.ascii => unused("ascii", "render and the app"),
+        // --fps is a video's: a data file has its times.
+        _ if d.fps.is_some()
+            && !matches!(cli.command, Some(Command::Track(_) | Command::Data(_)))
+            && !d.data.iter().any(|p| video_data::is_video(p)) =>
+        {
+            unused("fps", "track, and --data VIDEO or a folder of frames")
+        }
         _ => return Ok(()),
     };
     Err(error.into())

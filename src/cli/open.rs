@@ -3,6 +3,7 @@
 //! for data without a scene, the lab on all of it and the app on the lab.
 
 use std::path::Path;
+use std::sync::Arc;
 
 use super::args::{DataArgs, SceneArgs, TrackRole};
 use super::error::{BadValue, CliError, Flag};
@@ -44,22 +45,26 @@ pub fn with_file_scene(scene: &SceneArgs, data: &DataArgs) -> Result<SceneArgs, 
     let Some(path) = data.data.first() else {
         return Ok(scene.clone());
     };
-    let text = if super::video_data::is_video(path) {
-        super::video_data::text(path, scene)?
+    // A video's tracks state the R their scale came from, known before tracking.
+    let own = if super::video_data::is_video(path) {
+        super::video_data::own_scene(scene, data)?
     } else {
-        crate::input::read_user_file(path, "--data", crate::input::MAX_FILE_BYTES)?
+        let text = crate::input::read_user_file(path, "--data", crate::input::MAX_FILE_BYTES)?;
+        crate::input::data::scene_of(&text, &path.display().to_string())?
     };
-    let own = crate::input::data::scene_of(&text, &path.display().to_string())?;
     Ok(SceneArgs {
         values: own.over(&scene.values),
         ..scene.clone()
     })
 }
 
-/// The measured series that `--data` names (one file, or a centre and a mark track),
-/// read with the data options, and the scene values its (first) file's `# scene`
-/// lines give; `None` without `--data`.
-pub fn load_series(args: &DataArgs) -> Result<Option<(Series, SceneSpec)>, CliError> {
+/// The measured series that `--data` names (one file, or a centre and a mark track;
+/// a video tracked for the scene `scene`), read with the data options, and the scene
+/// values its (first) file's `# scene` lines give; `None` without `--data`.
+pub fn load_series(
+    args: &DataArgs,
+    scene: &SceneArgs,
+) -> Result<Option<(Series, SceneSpec)>, CliError> {
     let texts = match args.data.as_slice() {
         [] => return Ok(None),
         [_] | [_, _] => args
@@ -68,9 +73,7 @@ pub fn load_series(args: &DataArgs) -> Result<Option<(Series, SceneSpec)>, CliEr
             .map(|path| {
                 let what = Flag("data").to_string();
                 if super::video_data::is_video(path) {
-                    // Tracked (and kept) when the scene was read from it.
-                    let scene = SceneArgs::default();
-                    return super::video_data::text(path, &scene)
+                    return super::video_data::text(path, scene, args)
                         .map(|text| (path.display().to_string(), text));
                 }
                 crate::input::read_user_file(path, &what, crate::input::MAX_FILE_BYTES)
@@ -82,8 +85,19 @@ pub fn load_series(args: &DataArgs) -> Result<Option<(Series, SceneSpec)>, CliEr
             return Err(BadValue::DataTooOften { count: more.len() }.into());
         }
     };
-    let (reading, derive) = reading_of(args)?;
-    let series = match texts.as_slice() {
+    series_of(&texts, args).map(Some)
+}
+
+/// The series of the data texts `(file, text)` (one, or a centre and a mark track)
+/// read with the data options, and the first file's `# scene` values.
+fn series_of(texts: &[(String, String)], args: &DataArgs) -> Result<(Series, SceneSpec), CliError> {
+    // A video's --scale went into its tracking: its tracks are in metres.
+    let video = args.data.iter().any(|p| super::video_data::is_video(p));
+    let (mut reading, derive) = reading_of(args)?;
+    if video {
+        reading.scale = None;
+    }
+    let series = match texts {
         [(file, text)] => crate::input::data::load(text, file, &reading, &derive),
         [centre, mark] => crate::input::data::load_pair(centre, mark, &reading, &derive),
         _ => unreachable!("one or two files"),
@@ -96,7 +110,7 @@ pub fn load_series(args: &DataArgs) -> Result<Option<(Series, SceneSpec)>, CliEr
         .map_err(|source| CliError::Implausible { file, source })?;
     let (file, text) = &texts[0];
     let own_scene = crate::input::data::scene_of(text, file)?;
-    Ok(Some((series, own_scene)))
+    Ok((series, own_scene))
 }
 
 /// How the data options say to read a file, and to derive velocities from a track.
@@ -164,7 +178,32 @@ pub fn lab_of_stated_scene(scene_args: &SceneArgs, data: &DataArgs) -> Result<La
 /// it shows).
 pub fn lab(scene_args: &SceneArgs, data: &DataArgs) -> Result<Lab, CliError> {
     let mut settings = scene_args.settings()?;
-    let loaded = load_series(data)?;
+    let loaded = load_series(data, scene_args)?;
+    let joined = join(scene_args, data, &settings, loaded)?;
+    settings.scene_file = joined.scene_file;
+    settings.from_data = joined.from_data;
+    Ok(Lab::new(settings, joined.own)?)
+}
+
+/// What loaded data give the lab on `settings`: the user's own series, the values
+/// they measure, and the file whose `# scene` lines are among the options.
+struct Joined {
+    own: Option<OwnData>,
+    from_data: SceneSpec,
+    scene_file: Option<String>,
+}
+
+fn join(
+    scene_args: &SceneArgs,
+    data: &DataArgs,
+    settings: &Layers,
+    loaded: Option<(Series, SceneSpec)>,
+) -> Result<Joined, CliError> {
+    let mut joined = Joined {
+        own: None,
+        from_data: SceneSpec::default(),
+        scene_file: None,
+    };
     // The file's own scene lines are among the options when they were read with them
     // (`with_file_scene`): the scene is then the file's.
     if let Some((_, own_scene)) = &loaded
@@ -173,14 +212,14 @@ pub fn lab(scene_args: &SceneArgs, data: &DataArgs) -> Result<Lab, CliError> {
             .given()
             .all(|(k, _)| scene_args.values.given().any(|(j, _)| j == k))
     {
-        settings.scene_file = data.data.first().map(|p| p.display().to_string());
+        joined.scene_file = data.data.first().map(|p| p.display().to_string());
     }
     // Under the default preset (none named), the data give what they measure (v0)
     // below the options and the file's lines: a preset named is the user's scene.
     if let Some((series, _)) = loaded.as_ref().filter(|_| scene_args.preset.is_none()) {
-        settings.from_data = crate::lab::measured_values(series);
+        joined.from_data = crate::lab::measured_values(series);
     }
-    let own = loaded.map(|(series, own_scene)| OwnData {
+    joined.own = loaded.map(|(series, own_scene)| OwnData {
         groove: stated_groove(settings.preset(), &own_scene),
         name: data
             .data
@@ -192,10 +231,53 @@ pub fn lab(scene_args: &SceneArgs, data: &DataArgs) -> Result<Lab, CliError> {
     });
     // Said here with the options that set it right; the lab refuses it too (an R
     // edited in the app below the mark's distance).
-    if let Some(found) = own.as_ref().and_then(|o| o.series.found()) {
-        mark_on_the_ball(found, settings.settle()?.0.radius)?;
+    if let Some(found) = joined.own.as_ref().and_then(|o| o.series.found()) {
+        let mut with = settings.clone();
+        with.from_data = joined.from_data.clone();
+        mark_on_the_ball(found, with.settle()?.0.radius)?;
     }
-    Ok(Lab::new(settings, own)?)
+    Ok(joined)
+}
+
+/// The work of tracking the `--data` video on a worker and reading its tracks as the
+/// lab's data, as [`lab`] would have read them (`options`: what it is tracked for).
+fn video_work(
+    scene_args: &SceneArgs,
+    data: &DataArgs,
+    options: crate::input::video::tracked::Options,
+) -> impl FnOnce(&crate::lab::jobs::Ticket) -> crate::tui::jobs::VideoResult + Send + 'static {
+    let (scene_args, data) = (scene_args.clone(), data.clone());
+    move |ticket| {
+        let path = data.data.first()?.clone();
+        let kept = match crate::input::video::cache::tracks(&path, &options, &Ticked(ticket)) {
+            Ok(k) => k?,
+            Err(e) => return Some(Err(Arc::new(e) as _)),
+        };
+        let read = || -> Result<crate::tui::jobs::TrackedVideo, CliError> {
+            let texts = [(path.display().to_string(), kept.text.clone())];
+            let loaded = series_of(&texts, &data)?;
+            let joined = join(&scene_args, &data, &scene_args.settings()?, Some(loaded))?;
+            Ok(crate::tui::jobs::TrackedVideo {
+                own: joined.own.expect("a series was loaded"),
+                from_data: joined.from_data,
+                scene_file: joined.scene_file,
+                view: kept.view.clone(),
+            })
+        };
+        Some(read().map_err(|e| Arc::new(e) as _))
+    }
+}
+
+/// A job's ticket as the tracking's progress: each frame counted, its stop obeyed.
+struct Ticked<'a>(&'a crate::lab::jobs::Ticket);
+
+impl crate::study::Progress for Ticked<'_> {
+    fn tick(&self, done: u64, total: u64) {
+        self.0.progress(done as usize, total as usize);
+    }
+    fn cancelled(&self) -> bool {
+        self.0.cancelled()
+    }
 }
 
 /// The groove a data file states it was measured in: its `# scene` lines' R and b
@@ -226,15 +308,49 @@ fn mark_on_the_ball(found: &Found, radius: f64) -> Result<(), CliError> {
     Ok(())
 }
 
-/// The app on that lab, with the user's presets.
+/// The app on that lab, with the user's presets. A `--data` video not tracked yet
+/// is tracked on a worker while the app runs ([`opened_tracking`]).
 pub fn app(scene_args: &SceneArgs, data: &DataArgs) -> Result<App, CliError> {
-    opened(scene_args, data, Library::user())
+    match super::video_data::pending(scene_args, data)? {
+        Some(options) => opened_tracking(scene_args, data, Library::user(), options),
+        None => opened(scene_args, data, Library::user()),
+    }
+}
+
+/// The app opened on the options without their `--data` video, which is tracked on a
+/// worker for `options` (checked readable first): its data join the lab when they
+/// arrive, the tracking's progress shows meanwhile.
+pub fn opened_tracking(
+    scene_args: &SceneArgs,
+    data: &DataArgs,
+    library: Library,
+    options: crate::input::video::tracked::Options,
+) -> Result<App, CliError> {
+    let without = DataArgs {
+        data: Vec::new(),
+        ..DataArgs::default()
+    };
+    let mut app = App::new(lab(scene_args, &without)?, library);
+    let name = data.data.first().map(|p| p.display().to_string());
+    app.track_video(
+        name.unwrap_or_default(),
+        video_work(scene_args, data, options),
+    );
+    Ok(app)
 }
 
 /// The app as it opens on the options: the lab, and the status line asking for the
 /// data's scene when none was named ([`scene_of_data`]).
 pub fn opened(scene_args: &SceneArgs, data: &DataArgs, library: Library) -> Result<App, CliError> {
     let mut app = App::new(lab(scene_args, data)?, library);
+    // A video's tracks were read (and kept) with the lab: its pictures too.
+    if let [path] = data.data.as_slice()
+        && super::video_data::is_video(path)
+    {
+        let options = super::video_data::options(scene_args, data)?;
+        let kept = crate::input::video::cache::kept(path, &options);
+        app.set_video(path.display().to_string(), kept.and_then(|k| k.view));
+    }
     if scene_of_data(scene_args, data).is_some() {
         // Short enough for the status line's second row at 80 columns: the file and
         // the preset are named at the line's right end.

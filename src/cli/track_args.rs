@@ -11,10 +11,6 @@ pub struct TrackArgs {
     /// numbered PNG/JPEG frames.
     #[arg(value_name = "VIDEO")]
     pub video: PathBuf,
-    /// Frames per second of the recording [default: a slow-motion capture rate in the
-    /// file's metadata, else the container's; a folder of frames needs it].
-    #[arg(long, value_name = "F", value_parser = positive("frames per second", 1e5))]
-    pub fps: Option<f64>,
     /// Output: a Tracker-style text file (`--data` reads it) or JSON.
     #[arg(long, value_enum, default_value_t = TrackOutput::Tracker)]
     pub format: TrackOutput,
@@ -45,7 +41,10 @@ pub enum PositiveError {
 }
 
 /// A parser of a positive number at most `max`.
-fn positive(what: &'static str, max: f64) -> impl Fn(&str) -> Result<f64, PositiveError> + Clone {
+pub(super) fn positive(
+    what: &'static str,
+    max: f64,
+) -> impl Fn(&str) -> Result<f64, PositiveError> + Clone {
     move |text: &str| {
         let v: f64 = text.trim().parse().map_err(|_| PositiveError::NotANumber {
             text: text.into(),

@@ -1,98 +1,82 @@
-//! `--data VIDEO`: a video given where a data file is read is
-//! tracked as `groovelab track` would, and its Tracker-style text read as the data
-//! file. The text is cached in the user's cache folder
-//! (`$XDG_CACHE_HOME/groovelab/tracks`, else `~/.cache/groovelab/tracks`), keyed by
-//! the video's content, R and the program's version, so a second run reads it at once; and kept for this process,
-//! so the scene's and the series' reading track once.
+//! `--data VIDEO` and `--data FOLDER` (numbered PNG/JPEG frames): a video given where
+//! a data file is read is tracked as `groovelab track` would, and its Tracker-style
+//! text read as the data file; kept in this process and in the user's cache folder
+//! (`input::video::cache`), so a second run reads it at once. The app tracks on a
+//! worker instead ([`pending`]): a key never waits for it.
 
-use std::collections::HashMap;
-use std::hash::{Hash, Hasher};
-use std::io::Read;
-use std::path::{Path, PathBuf};
-use std::sync::Mutex;
+use std::path::Path;
 
-use super::args::SceneArgs;
+use super::args::{DataArgs, SceneArgs};
 use super::error::CliError;
+use super::progress::Bar;
 use super::track;
+use crate::input::video::cache::{self, Kept};
+use crate::input::video::tracked::Options;
+use crate::settings::params::Key;
+use crate::settings::spec::SceneSpec;
 
-/// Names of video files (by their extension); a folder is frames.
+/// Names of video files (by their extension).
 const VIDEO_EXTENSIONS: [&str; 10] = [
     "mp4", "mov", "m4v", "mkv", "avi", "webm", "3gp", "mts", "m2ts", "mpg",
 ];
 
-/// True when `path` is named as a video, not a data file. (A folder stays refused
-/// as `--data`, which takes files; `track` reads a folder of frames.)
+/// True when `path` is a video (named as one) or a folder of numbered frames, not a
+/// data file. (Any other folder stays refused as `--data`, which takes files.)
 pub fn is_video(path: &Path) -> bool {
-    path.extension()
+    let named = path
+        .extension()
         .and_then(|e| e.to_str())
-        .is_some_and(|e| VIDEO_EXTENSIONS.contains(&e.to_ascii_lowercase().as_str()))
+        .is_some_and(|e| VIDEO_EXTENSIONS.contains(&e.to_ascii_lowercase().as_str()));
+    named || crate::input::video::is_frame_folder(path)
 }
 
-static DONE: Mutex<Option<HashMap<PathBuf, String>>> = Mutex::new(None);
+/// What the tracking of a `--data` video is asked: R of the scene options, `--fps`
+/// and `--scale`.
+pub fn options(scene: &SceneArgs, data: &DataArgs) -> Result<Options, CliError> {
+    track::options(scene, data.fps, data.scale)
+}
 
-/// The Tracker-style text of the video `path` for the scene `scene` (its R sets the
-/// scale): from this process, the cache, or tracked now (and cached).
-pub fn text(path: &Path, scene: &SceneArgs) -> Result<String, CliError> {
-    if let Some(t) = DONE
-        .lock()
-        .ok()
-        .and_then(|d| d.as_ref()?.get(path).cloned())
-    {
-        return Ok(t);
-    }
-    let (_, s, _) = scene.resolve()?;
-    let key = key(path, s.radius)?;
-    let cached = cache_dir().map(|d| d.join(format!("{key:016x}.txt")));
-    let text = match cached
-        .as_ref()
-        .and_then(|c| std::fs::read_to_string(c).ok())
-    {
-        Some(t) => t,
-        None => {
-            let done = track::tracked(path, scene, None, None)?;
-            let t = crate::study::vision::write::tracker_text(&done.tracks, &done.notes);
-            if let Some(c) = &cached {
-                // A cache that cannot be written is only slower next time.
-                let _ =
-                    std::fs::create_dir_all(c.parent().unwrap_or(Path::new("."))).and_then(|()| {
-                        crate::output::write_atomically(c, t.as_bytes())
-                            .map_err(std::io::Error::other)
-                    });
-            }
-            t
-        }
+/// The scene a video's tracks state: the R its scale came from (the text's
+/// `# scene radius` line), known before tracking.
+pub fn own_scene(scene: &SceneArgs, data: &DataArgs) -> Result<SceneSpec, CliError> {
+    Ok(SceneSpec::default().with(Key::Radius, options(scene, data)?.radius))
+}
+
+/// The tracks of the video `path` for the scene `scene`: kept, or tracked now with a
+/// progress bar on a terminal (Ctrl-C stops it).
+pub fn tracks(path: &Path, scene: &SceneArgs, data: &DataArgs) -> Result<Kept, CliError> {
+    let options = options(scene, data)?;
+    let bar = Bar::new("frames", true);
+    let done = cache::tracks(path, &options, &bar).map_err(track::data_error);
+    bar.finish();
+    done?.ok_or(CliError::Interrupted)
+}
+
+/// The Tracker-style text of the video `path` ([`tracks`]).
+pub fn text(path: &Path, scene: &SceneArgs, data: &DataArgs) -> Result<String, CliError> {
+    tracks(path, scene, data).map(|k| k.text)
+}
+
+/// A `--data` video the app will track on a worker: not kept yet, and readable (a
+/// video ffprobe reads, or a folder of frames: checked now, so bad input is refused
+/// before the app starts). `None` when there is none to track (none given, or kept).
+pub fn pending(scene: &SceneArgs, data: &DataArgs) -> Result<Option<Options>, CliError> {
+    let [path] = data.data.as_slice() else {
+        return Ok(None);
     };
-    if let Ok(mut d) = DONE.lock() {
-        d.get_or_insert_with(HashMap::new)
-            .insert(path.to_path_buf(), text.clone());
+    if !is_video(path) {
+        return Ok(None);
     }
-    Ok(text)
-}
-
-/// The user's cache folder for tracks, if there is one.
-fn cache_dir() -> Option<PathBuf> {
-    let base = std::env::var_os("XDG_CACHE_HOME")
-        .filter(|v| !v.is_empty())
-        .map(PathBuf::from)
-        .or_else(|| std::env::var_os("HOME").map(|h| PathBuf::from(h).join(".cache")))?;
-    Some(base.join("groovelab").join("tracks"))
-}
-
-/// The cache key: the content of the video, R, and the program's version.
-fn key(path: &Path, radius: f64) -> Result<u64, CliError> {
-    let mut h = std::collections::hash_map::DefaultHasher::new();
-    env!("CARGO_PKG_VERSION").hash(&mut h);
-    radius.to_bits().hash(&mut h);
-    {
-        let mut f = std::fs::File::open(path)?;
-        let mut buf = vec![0u8; 1 << 20];
-        loop {
-            let n = f.read(&mut buf)?;
-            if n == 0 {
-                break;
-            }
-            buf[..n].hash(&mut h);
-        }
+    let options = options(scene, data)?;
+    if cache::kept(path, &options).is_some() {
+        return Ok(None);
     }
-    Ok(h.finish())
+    let info = crate::input::video::check(path, &Default::default()).map_err(track::data_error)?;
+    if info.rate(options.fps).is_none() {
+        return Err(track::data_error(crate::input::video::VideoError {
+            file: path.display().to_string(),
+            what: crate::input::video::tracked::NO_RATE.into(),
+        }));
+    }
+    Ok(Some(options))
 }

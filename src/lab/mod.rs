@@ -226,6 +226,34 @@ impl Lab {
         Some(name)
     }
 
+    /// The user's own series arriving after the lab opened (a video tracked on a
+    /// worker), as if given at the start: in place of the preset's, the values they
+    /// measure (`from_data`) and the file whose `# scene` lines are among the flags
+    /// (`scene_file`); the app's edits stay. Nothing changes if the scene would not
+    /// be valid with them (a rim mark off a ball of the scene's R).
+    pub fn attach_data(
+        &mut self,
+        own: OwnData,
+        from_data: SceneSpec,
+        scene_file: Option<String>,
+    ) -> Result<(), SceneError> {
+        let before = (
+            self.own_data.replace(own),
+            std::mem::replace(&mut self.settings.from_data, from_data),
+            std::mem::replace(&mut self.settings.scene_file, scene_file),
+        );
+        let built = self.rebuild();
+        if built.is_err() {
+            (
+                self.own_data,
+                self.settings.from_data,
+                self.settings.scene_file,
+            ) = before;
+            self.rebuild().expect("the scene before the data was valid");
+        }
+        built
+    }
+
     /// Pins the current run for an A/B comparison, or unpins it; true if now pinned.
     pub fn toggle_pin(&mut self) -> bool {
         self.pinned = match self.pinned {

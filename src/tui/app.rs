@@ -8,6 +8,7 @@ pub mod export;
 mod normal;
 mod predict;
 mod prompts;
+mod video;
 
 use std::path::PathBuf;
 use std::sync::{Arc, LazyLock};
@@ -23,7 +24,7 @@ pub use super::vocabulary::{
     Action, ChartBall, Export, FPS, Field, Library, Mode, Prediction, SPEEDS, Status, View,
 };
 
-use super::jobs::{ExportRun, FitRuns, Jobs, MethodRows, Notice, OverlayRun};
+use super::jobs::{ExportRun, FitRuns, Jobs, MethodRows, Notice, OverlayRun, VideoRun};
 use super::line::History;
 use super::vocabulary::{DEFAULT_SPEED, WorkAxis};
 
@@ -57,6 +58,9 @@ pub struct App {
     pub fit: FitRuns,
     /// The file being written (its job).
     export: ExportRun,
+    /// The `--data` video: its tracking (a job), its pictures, and whether the Scene
+    /// panel shows it.
+    pub video: VideoRun,
     /// The app's jobs on its worker pool.
     jobs: Jobs,
     /// What the Methods view puts on its work axis.
@@ -112,6 +116,7 @@ impl App {
             methods: MethodRows::default(),
             fit: FitRuns::default(),
             export: ExportRun::default(),
+            video: VideoRun::default(),
             jobs: Jobs::new(pool),
             work_axis: WorkAxis::default(),
             scroll: 0,
@@ -324,8 +329,14 @@ impl App {
     /// A job's notice: a finished export's message goes to the status line; true if
     /// the screen changes (every notice: a result or a new percent to show).
     pub fn on_job(&mut self, notice: Notice) -> bool {
-        if notice == Notice::Export {
-            self.take_export();
+        match notice {
+            Notice::Export => {
+                self.take_export();
+            }
+            Notice::Video => {
+                self.take_video();
+            }
+            _ => {}
         }
         true
     }
@@ -336,6 +347,11 @@ impl App {
         self.sync_jobs();
         self.jobs.wait();
         self.take_export();
+        // A video's data arrived: the views' analyses of the scene with them.
+        if self.take_video() {
+            self.sync_jobs();
+            self.jobs.wait();
+        }
     }
 
     fn take_export(&mut self) -> bool {

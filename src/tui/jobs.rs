@@ -1,6 +1,7 @@
 //! The app's slow analyses, each owned by the view that shows it (gitui's asyncgit
-//! shape): the Methods view's rows, the charts' overlay run, the Fit view's fits, and
-//! the export the prompt started. Each asks the lab for its work on the app's
+//! shape): the Methods view's rows, the charts' overlay run, the Fit view's fits, the
+//! export the prompt started, and the tracking of a `--data` video (the Scene
+//! panel's, which draws the video). Each asks the lab for its work on the app's
 //! [`Jobs`], keyed by the snapshot's generation (a result made for an earlier scene is
 //! dropped unseen), and a finished one arrives as its [`Notice`] on the event loop's
 //! one channel. [`sync`](Analyses::sync) requests what the views shown want after every
@@ -8,10 +9,14 @@
 
 use crate::lab::analyses;
 use crate::lab::jobs::{Job, State};
-use crate::lab::{ExportResult, FitWindow, FitWindowError, Generation, Lab, Overlay};
+use std::sync::Arc;
+
+use crate::lab::{ExportResult, FitWindow, FitWindowError, Generation, Lab, Overlay, OwnData};
 use crate::methods::Method;
+use crate::settings::spec::SceneSpec;
 use crate::study::compare::Row;
 use crate::study::fit::{FitError, Fits, ModelFit};
+use crate::study::vision::thumbs::VideoView;
 
 /// Which job finished (or moved on a percent): what the event loop is told.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -21,6 +26,7 @@ pub enum Notice {
     Fits,
     PositionFit,
     Export,
+    Video,
 }
 
 /// The app's jobs on its worker pool.
@@ -181,5 +187,62 @@ impl ExportRun {
     /// The finished export's result, once; `None` while it runs or when there is none.
     pub fn take(&mut self) -> Option<ExportResult> {
         self.run.take()
+    }
+}
+
+/// A video tracked for the lab: its series as the user's own data (with what they
+/// measure and the file whose `# scene` lines the scene took), and the pictures the
+/// Scene panel draws.
+#[derive(Clone, Debug)]
+pub struct TrackedVideo {
+    pub own: OwnData,
+    pub from_data: SceneSpec,
+    pub scene_file: Option<String>,
+    pub view: Option<Arc<VideoView>>,
+}
+
+/// What a tracking job reports: the video tracked, or why not (the edge's own error,
+/// kept whole); `None` when it was stopped.
+pub type VideoResult = Option<Result<TrackedVideo, Arc<dyn std::error::Error + Send + Sync>>>;
+
+/// The `--data` video of the Scene panel: tracked on a worker while the app runs
+/// (started once, keyed by the generation it was asked in: an edit of the scene does
+/// not track the video again), its pictures once there, and whether the panel shows
+/// the video or the drawn scene.
+#[derive(Clone, Debug, Default)]
+pub struct VideoRun {
+    /// The video as the user named it.
+    pub name: Option<String>,
+    run: Job<Generation, VideoResult>,
+    /// The tracked video's pictures and points.
+    pub view: Option<Arc<VideoView>>,
+    /// The Scene panel shows the video (`V`).
+    pub shown: bool,
+}
+
+impl VideoRun {
+    /// Tracks the video `name` off the key path: `work` makes it, telling its ticket.
+    pub fn start(
+        &mut self,
+        jobs: &Jobs,
+        generation: Generation,
+        name: String,
+        work: impl FnOnce(&crate::lab::jobs::Ticket) -> VideoResult + Send + 'static,
+    ) {
+        self.name = Some(name);
+        self.run.request(jobs, generation, Notice::Video, work);
+    }
+
+    /// The tracking's progress while it runs: frames done of the total (0: unknown).
+    pub fn progress(&self) -> Option<(usize, usize)> {
+        match self.run.state() {
+            State::Computing { done, total } => Some((done, total)),
+            _ => None,
+        }
+    }
+
+    /// The finished tracking's result, once.
+    pub fn take(&mut self) -> VideoResult {
+        self.run.take().flatten()
     }
 }

@@ -253,6 +253,12 @@ pub const TABLE: &[Binding] = &[
         hint: None,
     },
     Binding {
+        keys: &["V"],
+        action: Action::ToggleVideo,
+        help: "Scene panel: the drawn scene or the video (--data VIDEO)",
+        hint: None,
+    },
+    Binding {
         keys: &["d"],
         action: Action::DataTable,
         help: "table of the measured data beside the model (scrolls)",

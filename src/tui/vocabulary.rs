@@ -188,6 +188,8 @@ pub enum Action {
     Predict,
     /// Hide (or show) b's value, for a prediction from the picture alone.
     HideWidth,
+    /// The Scene panel: the drawn scene or the video (`--data VIDEO`).
+    ToggleVideo,
     /// Take back the last parameter change.
     Undo,
     /// Every parameter back to the preset (and the command line's values).

@@ -36,3 +36,4 @@ mod sweep;
 mod tracks;
 mod tui;
 mod video;
+mod video_app;

@@ -9,8 +9,10 @@
 //! a fresh folder beside `NAME.in/`, which holds the files the examples read (`bad.csv`,
 //! the video tracks), and `NAME.out/`, which makes trycmd copy that folder before
 //! running (so `--output map.svg` writes into the copy). User presets come from an empty
-//! folder, so `presets` lists exactly the built-in ones. The failure report names the
-//! copy; fix the document itself.
+//! folder, so `presets` lists exactly the built-in ones, and a video's tracks are kept
+//! in a cache folder of the sandbox's. The guide's film (`frames/`) is rendered here
+//! from the exact solution (`video_app::folder`). The failure report names the copy;
+//! fix the document itself.
 
 use std::fs;
 use std::path::{Path, PathBuf};
@@ -48,6 +50,11 @@ fn sandbox() -> PathBuf {
             "t,v_cm,v_t\n0.00,0.61,0.55\n0.01,abc,0.56\n",
         )
         .unwrap();
+        // The guide's film: a folder of frames rendered from the exact solution.
+        for e in fs::read_dir(crate::video_app::folder()).unwrap() {
+            let p = e.unwrap().path();
+            copy(&p, &input.join("frames").join(p.file_name().unwrap()));
+        }
         let out = dir.join(format!("{name}.out"));
         fs::create_dir_all(&out).unwrap();
         fs::write(out.join(".keep"), "").unwrap();
@@ -64,7 +71,8 @@ fn examples_run(dir: &Path) -> trycmd::TestCases {
             "GROOVELAB_PRESETS",
             dir.join("no-presets").display().to_string(),
         )
-        .env("NO_COLOR", "1");
+        .env("NO_COLOR", "1")
+        .env("XDG_CACHE_HOME", dir.join("cache").display().to_string());
     cases
 }
 

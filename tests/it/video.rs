@@ -126,7 +126,7 @@ fn write_pngs(dir: &Path, frames: &[Vec<u8>], look: &Look, skip: &[usize]) {
 
 /// True when ffmpeg is installed. Under CI (CI=true) its absence fails the test that
 /// asks: CI installs it, so a missing ffmpeg there is a broken setup, not a skip.
-fn ffmpeg() -> bool {
+pub fn ffmpeg() -> bool {
     let ok = std::process::Command::new("ffmpeg")
         .arg("-version")
         .output()
@@ -329,9 +329,11 @@ fn fit_reads_an_mp4_directly_and_caches_its_tracks() {
     assert!((mu - 0.17).abs() < 0.01 && se < 0.01, "μ_k = {mu} ± {se}");
     assert_eq!(j["model_fit"]["regime_observed"], "recollide");
     // The tracks were cached, as `track` writes them; a second run reads them.
+    // The text --data reads (beside it, the app's pictures: `.view`).
     let cached: Vec<PathBuf> = std::fs::read_dir(cache.join("groovelab/tracks"))
         .unwrap()
         .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "txt"))
         .collect();
     assert_eq!(cached.len(), 1, "{cached:?}");
     let text = std::fs::read_to_string(&cached[0]).unwrap();

@@ -2,14 +2,17 @@
 //! `ffprobe`, its size, frame rate and a phone's slow-motion capture rate), its
 //! frames streamed as luma (`decode`: the system's `ffmpeg` through a pipe, one frame
 //! in memory at a time), a folder of numbered PNG/JPEG frames (`folder`, no ffmpeg
-//! needed), and writing frames and videos (`write`: for tests and benchmarks). Never
+//! needed), a video tracked (`tracked`) and kept (`cache`), and writing frames and
+//! videos (`write`: for tests and benchmarks). Never
 //! a binary fetched at run time: without ffmpeg a video is refused with how to
 //! install it.
 
+pub mod cache;
 mod decode;
 mod folder;
 mod info;
 mod probe;
+pub mod tracked;
 pub mod write;
 
 use std::path::Path;
@@ -21,6 +24,29 @@ pub use probe::Probe;
 /// Refuses what is no video (empty, an image, audio, unreadable) and what is too
 /// large for `limits`, each with one line.
 pub fn open(path: &Path, limits: &Limits) -> Result<(Info, Frames), VideoError> {
+    match checked(path, limits)? {
+        Opened::Folder(info, frames) => Ok((info, frames)),
+        Opened::Video(info) => {
+            let frames = decode::frames(path, &info)?;
+            Ok((info, frames))
+        }
+    }
+}
+
+/// What `path` is, as [`open`] would refuse it, without decoding a frame (a
+/// folder's first frame is read).
+pub fn check(path: &Path, limits: &Limits) -> Result<Info, VideoError> {
+    match checked(path, limits)? {
+        Opened::Folder(info, _) | Opened::Video(info) => Ok(info),
+    }
+}
+
+enum Opened {
+    Folder(Info, Frames),
+    Video(Info),
+}
+
+fn checked(path: &Path, limits: &Limits) -> Result<Opened, VideoError> {
     let file = path.display().to_string();
     let err = |what: String| VideoError {
         file: file.clone(),
@@ -28,7 +54,8 @@ pub fn open(path: &Path, limits: &Limits) -> Result<(Info, Frames), VideoError> 
     };
     let meta = std::fs::metadata(path).map_err(|e| err(format!("cannot open: {e}")))?;
     if meta.is_dir() {
-        return folder::open(path, limits);
+        let (info, frames) = folder::open(path, limits)?;
+        return Ok(Opened::Folder(info, frames));
     }
     if !meta.is_file() {
         return Err(err(
@@ -45,7 +72,16 @@ pub fn open(path: &Path, limits: &Limits) -> Result<(Info, Frames), VideoError> 
         ));
     }
     let probe = probe::probe(path)?;
-    let info = probe.info(&file, limits)?;
-    let frames = decode::frames(path, &info)?;
-    Ok((info, frames))
+    Ok(Opened::Video(probe.info(&file, limits)?))
+}
+
+/// True when `path` holds numbered PNG/JPEG frames (a folder `open` reads; any
+/// other folder is no video).
+pub fn is_frame_folder(path: &Path) -> bool {
+    path.is_dir()
+        && std::fs::read_dir(path).is_ok_and(|entries| {
+            entries
+                .flatten()
+                .any(|e| e.path().is_file() && folder::is_image(&e.path()))
+        })
 }

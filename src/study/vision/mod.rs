@@ -3,7 +3,7 @@
 //! outline fitted to sub-pixel accuracy on its visible edge (`circle`), its mark
 //! (`mark`), both followed through the frames (`tracker`), turned into metres and
 //! seconds along the groove (`tracks`) and written as a Tracker-style file
-//! (`write`); and synthetic videos of exactly solved scenes (`render`). Pure: the
+//! (`write`), with small pictures of the frames for the app (`thumbs`); and synthetic videos of exactly solved scenes (`render`). Pure: the
 //! frames come from `input::video`.
 
 pub mod circle;
@@ -11,6 +11,7 @@ pub mod detect;
 pub mod gray;
 pub mod mark;
 pub mod render;
+pub mod thumbs;
 pub mod tracker;
 pub mod tracks;
 pub mod write;

@@ -49,6 +49,11 @@ pub struct Calibration {
     pub groove_deg: f64,
     pub groove_deg_sigma: f64,
     pub groove_found: bool,
+    /// The picture's point that is x = y = 0 of the tracks (the mean of every
+    /// centre), px: with the scale and the groove's angle it turns metres back into
+    /// pixels (the app draws the model over the video). Not in the JSON.
+    #[serde(skip)]
+    pub origin_px: (f64, f64),
 }
 
 /// One ball's tracks, metres (NaN where left out).
@@ -118,6 +123,12 @@ pub fn tracks(
     let r_stat = 1.4826 * dev[dev.len() / 2] * 1.2533 / (radii.len() as f64).sqrt();
     let r_se = r_stat.hypot(EDGE_SYSTEMATIC);
     let px_per_m = scale.unwrap_or(r_px / radius);
+    // The origin: the mean of every centre, so y is about 0 along the groove.
+    let all: Vec<&[f64; 2]> = slots.iter().flat_map(|&s| centres[s].iter()).collect();
+    let o = (
+        all.iter().map(|p| p[0]).sum::<f64>() / all.len() as f64,
+        all.iter().map(|p| p[1]).sum::<f64>() / all.len() as f64,
+    );
     let calibration = Calibration {
         px_per_m,
         px_per_m_sigma: if scale.is_some() { 0.0 } else { r_se / radius },
@@ -128,13 +139,8 @@ pub fn tracks(
         groove_deg: angle.to_degrees(),
         groove_deg_sigma: angle_se.to_degrees(),
         groove_found: found,
+        origin_px: o,
     };
-    // The origin: the mean of every centre, so y is about 0 along the groove.
-    let all: Vec<&[f64; 2]> = slots.iter().flat_map(|&s| centres[s].iter()).collect();
-    let o = (
-        all.iter().map(|p| p[0]).sum::<f64>() / all.len() as f64,
-        all.iter().map(|p| p[1]).sum::<f64>() / all.len() as f64,
-    );
     let to_m = |x: f64, y: f64| {
         let (dx, dy) = (x - o.0, y - o.1);
         (

@@ -120,6 +120,7 @@ impl App {
             Action::ShowView(view) => self.toggle_view(view),
             Action::Predict => self.ask_prediction(),
             Action::HideWidth => self.toggle_hide_width(),
+            Action::ToggleVideo => self.toggle_video(),
             Action::Undo => self.undo(),
             Action::Reset => self.reset(),
             Action::DropData => self.drop_data(),

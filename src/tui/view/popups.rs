@@ -69,7 +69,7 @@ fn help_lines(width: usize, theme: &Theme) -> Vec<Line<'static>> {
 
 /// The help's width on a screen of `area`.
 fn help_width(area: Rect) -> u16 {
-    area.width.saturating_sub(2).min(86)
+    area.width.saturating_sub(2).min(100)
 }
 
 /// The keys, scrolling.

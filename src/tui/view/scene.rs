@@ -16,6 +16,9 @@ use crate::tui::component::{Component, Ctx};
 use crate::tui::theme::Theme;
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
+    if app.video.shown {
+        return super::video::render(app, area, buf, theme);
+    }
     let (title, flashing) = title(app, theme);
     let blk = with_legend(block(title, theme), app, area, theme);
     let inner = blk.inner(area);
@@ -64,8 +67,15 @@ fn title(app: &App, theme: &Theme) -> (String, bool) {
         .events
         .iter()
         .any(|e| e.kind == EventKind::Collision && (e.t - t).abs() <= flash_window);
+    // A video tracked on a worker: how far (its data join the scene when done).
+    let tracking = app.video.progress().map_or(String::new(), |(done, total)| {
+        format!(
+            "  tracking video {} %",
+            (100 * done.min(total)).checked_div(total).unwrap_or(0)
+        )
+    });
     let title = format!(
-        " Scene  t = {t:.3} s   impacts {impacts_so_far}{} ",
+        " Scene  t = {t:.3} s   impacts {impacts_so_far}{}{tracking} ",
         if flashing {
             format!("  {} IMPACT", theme.glyphs.flash)
         } else {

@@ -1,0 +1,160 @@
+//! Tracks of a video kept, so a video is tracked once: in this process (the scene's
+//! and the series' reading of `--data` share one tracking), and in the user's cache
+//! folder (`$XDG_CACHE_HOME/groovelab/tracks`, else `~/.cache/groovelab/tracks`) as
+//! the Tracker-style text and the app's pictures, keyed by the video's content (a
+//! folder's: its files' names and bytes), the options and the program's version.
+//! A cache that cannot be written or read is only slower. The folder is the
+//! options' (`Options::cache`), so a test keeps its own.
+
+use std::collections::HashMap;
+use std::hash::{Hash, Hasher};
+use std::io::Read;
+use std::path::{Path, PathBuf};
+use std::sync::{Arc, Mutex, PoisonError};
+
+use super::VideoError;
+use super::tracked::{self, Options};
+use crate::study::Progress;
+use crate::study::vision::thumbs::VideoView;
+
+/// A video's tracks as `--data` reads them, and the app's view of it (`None` when
+/// its cached pictures were lost or damaged).
+#[derive(Clone, Debug)]
+pub struct Kept {
+    pub text: String,
+    pub view: Option<Arc<VideoView>>,
+}
+
+type Done = HashMap<(PathBuf, String), Kept>;
+
+static DONE: Mutex<Option<Done>> = Mutex::new(None);
+
+/// The process's key of a tracking: the path and the options.
+fn process_key(path: &Path, o: &Options) -> (PathBuf, String) {
+    let k = format!(
+        "{:x} {:?} {:?}",
+        o.radius.to_bits(),
+        o.fps.map(f64::to_bits),
+        o.px_per_m.map(f64::to_bits)
+    );
+    (path.to_path_buf(), k)
+}
+
+/// The tracks of `path` kept in this process or in the cache folder, if any.
+pub fn kept(path: &Path, options: &Options) -> Option<Kept> {
+    let pk = process_key(path, options);
+    if let Some(k) = DONE
+        .lock()
+        .unwrap_or_else(PoisonError::into_inner)
+        .as_ref()
+        .and_then(|d| d.get(&pk).cloned())
+    {
+        return Some(k);
+    }
+    let base = cache_file(path, options)?;
+    let text = std::fs::read_to_string(base.with_extension("txt")).ok()?;
+    let view = std::fs::read(base.with_extension("view"))
+        .ok()
+        .and_then(|b| VideoView::from_bytes(&b).ok())
+        .map(Arc::new);
+    let k = Kept { text, view };
+    remember(pk, &k);
+    Some(k)
+}
+
+fn remember(pk: (PathBuf, String), k: &Kept) {
+    DONE.lock()
+        .unwrap_or_else(PoisonError::into_inner)
+        .get_or_insert_with(HashMap::new)
+        .insert(pk, k.clone());
+}
+
+/// The tracks of `path`: kept ones, or tracked now (telling `progress`) and kept;
+/// `Ok(None)` when `progress` asked to stop.
+pub fn tracks(
+    path: &Path,
+    options: &Options,
+    progress: &dyn Progress,
+) -> Result<Option<Kept>, VideoError> {
+    if let Some(k) = kept(path, options) {
+        return Ok(Some(k));
+    }
+    let Some(done) = tracked::track(path, options, progress)? else {
+        return Ok(None);
+    };
+    let k = Kept {
+        text: done.text(),
+        view: Some(Arc::new(done.view)),
+    };
+    if let Some(base) = cache_file(path, options) {
+        store(&base, &k);
+    }
+    remember(process_key(path, options), &k);
+    Ok(Some(k))
+}
+
+/// Writes `k` under `base` (.txt, .view); failures are ignored (slower next time).
+fn store(base: &Path, k: &Kept) {
+    let Some(dir) = base.parent() else { return };
+    if std::fs::create_dir_all(dir).is_err() {
+        return;
+    }
+    let _ = crate::output::write_atomically(&base.with_extension("txt"), k.text.as_bytes());
+    if let Some(v) = &k.view {
+        let _ = crate::output::write_atomically(&base.with_extension("view"), &v.to_bytes());
+    }
+}
+
+/// The cache file's path without its extension, if there is a cache folder and the
+/// video can be read.
+fn cache_file(path: &Path, options: &Options) -> Option<PathBuf> {
+    let dir = options.cache.as_ref()?;
+    let key = key(path, options).ok()?;
+    Some(dir.join(format!("{key:016x}")))
+}
+
+/// The user's cache folder for tracks, if there is one.
+pub fn user_folder() -> Option<PathBuf> {
+    let base = std::env::var_os("XDG_CACHE_HOME")
+        .filter(|v| !v.is_empty())
+        .map(PathBuf::from)
+        .or_else(|| std::env::var_os("HOME").map(|h| PathBuf::from(h).join(".cache")))?;
+    Some(base.join("groovelab").join("tracks"))
+}
+
+/// The cache key: the content of the video (a folder's files, names and bytes, in
+/// order), the options and the program's version.
+fn key(path: &Path, o: &Options) -> std::io::Result<u64> {
+    let mut h = std::collections::hash_map::DefaultHasher::new();
+    env!("CARGO_PKG_VERSION").hash(&mut h);
+    o.radius.to_bits().hash(&mut h);
+    o.fps.map(f64::to_bits).hash(&mut h);
+    o.px_per_m.map(f64::to_bits).hash(&mut h);
+    if path.is_dir() {
+        let mut files: Vec<PathBuf> = std::fs::read_dir(path)?
+            .flatten()
+            .map(|e| e.path())
+            .filter(|p| p.is_file())
+            .collect();
+        files.sort();
+        for f in files {
+            f.file_name().hash(&mut h);
+            hash_file(&f, &mut h)?;
+        }
+    } else {
+        hash_file(path, &mut h)?;
+    }
+    Ok(h.finish())
+}
+
+fn hash_file(path: &Path, h: &mut impl Hasher) -> std::io::Result<()> {
+    let mut f = std::fs::File::open(path)?;
+    let mut buf = vec![0u8; 1 << 20];
+    loop {
+        let n = f.read(&mut buf)?;
+        if n == 0 {
+            return Ok(());
+        }
+        buf[..n].hash(h);
+    }
+}

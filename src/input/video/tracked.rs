@@ -1,0 +1,231 @@
+//! A video (or a folder of frames) tracked, for `track`, `--data VIDEO` and the app:
+//! its frames streamed through the tracker one at a time, small pictures of them
+//! kept for the app (`study::vision::thumbs`), the tracks in metres along the
+//! groove, and what was found said in lines for people (the file's comment lines,
+//! the JSON's notes). Progress and a stop request go through a `Progress`.
+
+use super::{Info, Limits, RateSource, VideoError};
+use crate::settings::units::{Dimension, show, show_small, with_uncertainty};
+use crate::study::Progress;
+use crate::study::vision::thumbs::{Thumbs, VideoView};
+use crate::study::vision::tracks::{BallTrack, Tracks};
+use crate::study::vision::{self, Tracker};
+
+/// What a tracking is asked for: the balls' radius R (m; the scale comes from it),
+/// the frame rate given (`--fps`), the scale given (px/m, from `--scale`), where R
+/// came from (said in the notes: "--radius", "preset NAME; give --radius"), and the
+/// folder its tracks are kept in (`cache::user_folder`; `None`: this process only).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Options {
+    pub radius: f64,
+    pub fps: Option<f64>,
+    pub px_per_m: Option<f64>,
+    pub radius_from: String,
+    pub cache: Option<std::path::PathBuf>,
+}
+
+/// Said when a folder of frames is given without `--fps`.
+pub const NO_RATE: &str =
+    "a folder of frames says no frame rate; give it with --fps (e.g. --fps 240)";
+
+/// A video tracked: what it is, the rate used and why, the tracks, the notes, and
+/// the pictures the app draws.
+pub struct Tracked {
+    pub info: Info,
+    pub fps: f64,
+    pub source: RateSource,
+    pub tracks: Tracks,
+    pub notes: Vec<String>,
+    pub view: VideoView,
+}
+
+impl Tracked {
+    /// The tracks as the Tracker-style text `--data` reads (the notes as comments).
+    pub fn text(&self) -> String {
+        vision::write::tracker_text(&self.tracks, &self.notes)
+    }
+}
+
+/// Tracks the video (or folder) `video` as `options` ask, telling `progress` each
+/// frame; `Ok(None)` when `progress` asked to stop.
+pub fn track(
+    video: &std::path::Path,
+    options: &Options,
+    progress: &dyn Progress,
+) -> Result<Option<Tracked>, VideoError> {
+    let file = video.display().to_string();
+    let err = |what: String| VideoError {
+        file: file.clone(),
+        what,
+    };
+    let (info, frames) = super::open(video, &Limits::default())?;
+    let Some((fps, source)) = info.rate(options.fps) else {
+        return Err(err(NO_RATE.into()));
+    };
+    let mut tracker = Tracker::new(8.0);
+    let mut thumbs = Thumbs::sized(info.width, info.height, info.frames);
+    let mut numbers = Vec::new();
+    for (i, frame) in frames.enumerate() {
+        if progress.cancelled() {
+            return Ok(None);
+        }
+        let (n, img) = frame?;
+        tracker.push(&img);
+        thumbs.push(i, &img);
+        numbers.push(n);
+        progress.tick(i as u64 + 1, info.frames.max(i as u64 + 1));
+    }
+    if numbers.len() < 2 {
+        return Err(err(format!(
+            "holds {} frame(s), expected a video",
+            numbers.len()
+        )));
+    }
+    let first = numbers[0];
+    let times = numbers.iter().map(|n| (n - first) as f64 / fps).collect();
+    let tracks = vision::tracks(&tracker, times, options.radius, options.px_per_m)
+        .map_err(|e| err(e.to_string()))?;
+    let notes = notes(&file, &info, fps, &source, &tracks, &options.radius_from);
+    let view = VideoView::new(thumbs, &tracks);
+    Ok(Some(Tracked {
+        info,
+        fps,
+        source,
+        tracks,
+        notes,
+        view,
+    }))
+}
+
+/// What was found, in lines for people (the file's comment lines, the JSON's notes).
+fn notes(
+    file: &str,
+    info: &Info,
+    fps: f64,
+    source: &RateSource,
+    tracks: &Tracks,
+    radius_from: &str,
+) -> Vec<String> {
+    let mut n = vec![format!(
+        "groovelab track {file}: {}, {}×{}, {} frames",
+        info.kind,
+        info.width,
+        info.height,
+        tracks.t.len()
+    )];
+    let container = info
+        .container_fps
+        .map(|f| {
+            format!(
+                "; the container says {}",
+                crate::settings::units::significant(f, 6)
+            )
+        })
+        .unwrap_or_default();
+    let rate = crate::settings::units::significant(fps, 6);
+    n.push(match source {
+        RateSource::Given => format!("frame rate {rate} frames/s: given (--fps){container}"),
+        RateSource::Capture(key) => format!(
+            "frame rate {rate} frames/s: the slow-motion capture rate in the file's metadata ({key}){container}"
+        ),
+        RateSource::Container => format!("frame rate {rate} frames/s: the container's"),
+    });
+    if !info.gaps.is_empty() {
+        let g: Vec<String> = info
+            .gaps
+            .iter()
+            .take(5)
+            .map(|[a, b]| {
+                if a == b {
+                    format!("{a}")
+                } else {
+                    format!("{a}–{b}")
+                }
+            })
+            .collect();
+        n.push(format!(
+            "frames missing from the folder: {}{} (the times keep the gaps)",
+            g.join(", "),
+            if info.gaps.len() > 5 { ", …" } else { "" }
+        ));
+    }
+    let c = &tracks.calibration;
+    n.push(if c.scale_given {
+        format!(
+            "scale {} px/m: given (--scale {} a pixel)",
+            crate::settings::units::significant(c.px_per_m, 6),
+            show_small(1.0 / c.px_per_m, Dimension::Length)
+        )
+    } else {
+        let (v, e) = with_uncertainty(c.px_per_m, c.px_per_m_sigma.max(1e-9), 2);
+        let (rv, re) = with_uncertainty(c.radius_px, c.radius_px_sigma.max(1e-9), 2);
+        format!(
+            "scale {v} ± {e} px/m: the balls' fitted radius {rv} ± {re} px for R = {} ({radius_from}); speeds and μ_k from these tracks carry its {:.2} %, which `fit` adds to their own ±",
+            show(c.radius_m, Dimension::Length),
+            100.0 * c.px_per_m_sigma / c.px_per_m
+        )
+    });
+    n.push(if c.groove_found {
+        let (v, e) = with_uncertainty(c.groove_deg, c.groove_deg_sigma.max(1e-9), 2);
+        format!("groove at {v} ± {e}° in the picture (found from the paths; + is the right end lower): the tracks are turned to it")
+    } else {
+        "groove direction not found (the paths are too short): taken as level in the picture".into()
+    });
+    if tracks.balls.len() == 1 {
+        let b = &tracks.balls[0];
+        n.push(format!(
+            "one ball in view: tracked as the {} ball (it moves {} at first); no second ball",
+            b.name,
+            if b.name == "left" {
+                "right, coming from the left"
+            } else {
+                "left, coming from the right"
+            }
+        ));
+    }
+    for b in &tracks.balls {
+        n.push(ball_line(b, tracks.t.len()));
+    }
+    n.push(format!(
+        "x along the groove toward the right, y up, in metres (position scatter ≈ {}); t in s from the first frame",
+        show_small(scatter(tracks), Dimension::Length)
+    ));
+    n
+}
+
+/// The median of the centres' standard errors, m.
+fn scatter(tracks: &Tracks) -> f64 {
+    let s: Vec<f64> = tracks
+        .balls
+        .iter()
+        .flat_map(|b| b.sigma.iter().copied())
+        .filter(|v| v.is_finite())
+        .collect();
+    vision::tracker::median(&s).unwrap_or(f64::NAN)
+}
+
+/// One ball's line: frames tracked, left out and why, marks found.
+fn ball_line(b: &BallTrack, frames: usize) -> String {
+    let tracked = frames - b.unseen - b.merged - b.poor;
+    let mut out: Vec<String> = Vec::new();
+    for (n, why) in [
+        (b.unseen, "not seen"),
+        (b.merged, "touching the other ball"),
+        (b.poor, "outline blurred or too little of it visible"),
+    ] {
+        if n > 0 {
+            out.push(format!("{n} {why}"));
+        }
+    }
+    let left_out = if out.is_empty() {
+        String::new()
+    } else {
+        format!(" (left out, not filled in: {})", out.join(", "))
+    };
+    format!(
+        "{} ball: centre in {tracked} of {frames} frames{left_out}; mark in {} ({} hidden by the rail or too near it)",
+        b.name,
+        tracked - b.mark_missing,
+        b.mark_missing
+    )
+}
