@@ -88,6 +88,15 @@ impl App {
             }
             Action::NextEvent | Action::PrevEvent => self.jump_to_event(action),
             Action::CycleSpan => self.cycle_span(),
+            Action::ZoomIn => self.zoom_around(self.t, true),
+            Action::ZoomOut => self.zoom_around(self.t, false),
+            Action::ZoomWhole => {
+                self.status = Status::Info(if self.zoom.whole() {
+                    "time zoom off: the whole run".into()
+                } else {
+                    "the charts show the whole run (z zooms in)".into()
+                });
+            }
             Action::ToggleEnergy => {
                 self.show_energy = !self.show_energy;
                 self.show_positions = false;
