@@ -269,10 +269,15 @@ impl App {
         self.zoom.follow(self.t, self.chart_span());
     }
 
-    /// The time span the charts' x axis covers unzoomed: the run's span.
+    /// The time span the charts' x axis covers unzoomed: the run's span, or while
+    /// the outcome is hidden one that does not tell it ([`super::hide::neutral_span`]).
     pub fn chart_span(&self) -> (f64, f64) {
         let sol = &self.lab.solution;
-        (sol.t_start, sol.t_end)
+        if self.hidden().derived() {
+            super::hide::neutral_span(sol.t_start, self.t)
+        } else {
+            (sol.t_start, sol.t_end)
+        }
     }
 
     /// The time range the charts show: the span, or the zoomed window of it.
@@ -411,10 +416,15 @@ impl App {
         }
     }
 
-    /// A one-line summary of playback for the status line.
+    /// A one-line summary of playback for the status line (without the span's end
+    /// while the outcome is hidden: it would tell it).
     pub fn playback(&self) -> String {
         let speed = self.speed_text();
         let sol = &self.lab.solution;
+        if self.hidden().derived() {
+            let state = if self.playing { "playing" } else { "paused" };
+            return format!("t = {:.3} s   {state}  speed ×{speed}", self.t);
+        }
         format!(
             "t = {:.3} s of {:.3} … {:.3} s   {}  speed ×{speed}",
             self.t,

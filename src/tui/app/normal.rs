@@ -88,8 +88,11 @@ impl App {
             }
             Action::NextEvent | Action::PrevEvent => self.jump_to_event(action),
             Action::CycleSpan => self.cycle_span(),
-            Action::ZoomIn => self.zoom_around(self.t, true),
-            Action::ZoomOut => self.zoom_around(self.t, false),
+            Action::ZoomIn | Action::ZoomOut => {
+                // Around the cursor: a window the wheel moved away from it comes back.
+                self.zoom.follow(self.t, self.chart_span());
+                self.zoom_around(self.t, action == Action::ZoomIn);
+            }
             Action::ZoomWhole => {
                 self.status = Status::Info(if self.zoom.whole() {
                     "time zoom off: the whole run".into()
@@ -191,12 +194,13 @@ impl App {
             Ok(()) => {
                 let sol = &self.lab.solution;
                 self.t = self.t.clamp(sol.t_start, sol.t_end);
-                self.status = Status::Info(format!(
-                    "span {}: {:.3} … {:.3} s",
-                    next.describe(),
-                    sol.t_start,
-                    sol.t_end
-                ));
+                // The span's end would tell a hidden outcome.
+                let ends = if self.hidden().derived() {
+                    String::new()
+                } else {
+                    format!(": {:.3} … {:.3} s", sol.t_start, sol.t_end)
+                };
+                self.status = Status::Info(format!("span {}{ends}", next.describe()));
             }
             Err(e) => self.status = Status::Error(format!("span not changed: {e}")),
         }

@@ -69,8 +69,16 @@ pub fn build(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Ch
     let thinned = thin_measured(app, cache, &mut plot, inner, theme);
     // The curves and event labels past the cursor show the outcome: while it is to
     // be predicted (b hidden, a prediction pending) the chart grows as the run plays.
+    // Its y range then comes from what is shown: the whole run's would tell (a
+    // velocity that turns negative is a ball that comes back), and a velocity axis
+    // is symmetric about zero, so that the sign of what is to come is not implied.
     if app.hidden().derived() {
         plot.until(app.t);
+        let velocities = !(app.show_energy || app.show_positions);
+        if !app.show_energy {
+            let rows = usize::from(area.height.saturating_sub(4));
+            plot.y_range = shown_y_range(&plot.series, velocities, rows);
+        }
     }
     let data = plot.data_area(inner, theme);
     (Chart { titles, plot, data }, thinned)
@@ -211,6 +219,21 @@ fn bounds(
         }
     }
     nice_ticks(lo, hi, (rows / 3).max(2))
+}
+
+/// The y range of `series` as they are (cut at the cursor), symmetric about zero if
+/// `symmetric`, with round ticks.
+fn shown_y_range(series: &[Series], symmetric: bool, rows: usize) -> (f64, f64) {
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for (a, b) in series.iter().filter_map(|s| value_range(&s.points)) {
+        lo = lo.min(a);
+        hi = hi.max(b);
+    }
+    if symmetric && lo <= hi {
+        let m = lo.abs().max(hi.abs());
+        (lo, hi) = (-m, m);
+    }
+    nice_ticks(lo, hi, (rows / 3).max(2)).0
 }
 
 /// The balls drawn (0 left, 1 right) and how the title names them.

@@ -22,5 +22,6 @@ pub mod predict;
 pub mod scene;
 pub mod status;
 pub mod table;
+pub mod withheld;
 
 pub use crate::tui::layout::{MIN_SIZE, Panels, layout};
