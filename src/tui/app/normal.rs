@@ -335,11 +335,16 @@ impl App {
     fn ask_export(&mut self, kind: Export) {
         self.status = Status::None;
         let what = match kind {
+            Export::Csv if self.hidden().derived() => {
+                let e = super::export::NoExport::Hidden("the run");
+                self.status = Status::Error(e.to_string());
+                return;
+            }
             Export::Csv => "run",
             Export::Svg => match self.figure_on_screen() {
                 Ok(figure) => figure.name(),
                 Err(e) => {
-                    self.status = Status::Error(e);
+                    self.status = Status::Error(e.to_string());
                     return;
                 }
             },
@@ -348,7 +353,7 @@ impl App {
             kind,
             Field::suggested(format!(
                 "{}-{what}.{}",
-                super::export::shown_name(&self.lab, self.scene_edited()),
+                super::export::shown_name(&self.lab, self.scene_edited(), self.hidden().derived()),
                 kind.extension()
             )),
         );
