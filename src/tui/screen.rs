@@ -129,13 +129,9 @@ fn stand_ins(buf: &mut Buffer, theme: &Theme) {
     }
 }
 
-/// The cells of an ASCII screen that would have needed a stand-in: `(x, y, symbol)`.
-pub fn non_ascii_cells(
-    app: &App,
-    width: u16,
-    height: u16,
-    theme: &Theme,
-) -> Vec<(u16, u16, String)> {
+/// A new frame of `width` × `height` of `app`, drawn without the ASCII stand-ins
+/// (what the two functions below look at).
+fn drawn_bare(app: &App, width: u16, height: u16, theme: &Theme) -> Buffer {
     let area = Rect::new(0, 0, width, height);
     let mut buf = Buffer::empty(area);
     let mut screen = Screen::default();
@@ -143,7 +139,17 @@ pub fn non_ascii_cells(
     if let Some(frame) = screen.frame() {
         draw_panels(app, frame, &mut buf, theme);
     }
-    non_ascii(&buf)
+    buf
+}
+
+/// The cells of an ASCII screen that would have needed a stand-in: `(x, y, symbol)`.
+pub fn non_ascii_cells(
+    app: &App,
+    width: u16,
+    height: u16,
+    theme: &Theme,
+) -> Vec<(u16, u16, String)> {
+    non_ascii(&drawn_bare(app, width, height, theme))
 }
 
 /// [`to_text`] and [`non_ascii_cells`] of one drawing (a test of every screen draws
@@ -154,13 +160,7 @@ pub fn to_text_and_non_ascii_cells(
     height: u16,
     theme: &Theme,
 ) -> (String, Vec<(u16, u16, String)>) {
-    let area = Rect::new(0, 0, width, height);
-    let mut buf = Buffer::empty(area);
-    let mut screen = Screen::default();
-    screen.prepare(app, area, theme);
-    if let Some(frame) = screen.frame() {
-        draw_panels(app, frame, &mut buf, theme);
-    }
+    let mut buf = drawn_bare(app, width, height, theme);
     let cells = non_ascii(&buf);
     stand_ins(&mut buf, theme);
     (text_of(&buf), cells)

@@ -482,7 +482,7 @@ impl App {
         let (fitted, which) = match self.fit_to_apply() {
             Ok(f) => f,
             Err(e) => {
-                self.status = Status::Error(e);
+                self.status = Status::Error(e.to_string());
                 return;
             }
         };
@@ -530,7 +530,7 @@ impl App {
     /// The model fit `a` applies, and what to call it: the headline fit (of the model
     /// the data support; of a position track fitted to the positions), the one the
     /// panel shows first.
-    fn fit_to_apply(&self) -> Result<(crate::study::fit::ModelFit, &'static str), String> {
+    fn fit_to_apply(&self) -> Result<(crate::study::fit::ModelFit, &'static str), NoFitToApply> {
         match self.fit.fits() {
             State::Ready(Ok(f)) => Ok((
                 f.model_fit.clone(),
@@ -539,9 +539,9 @@ impl App {
                     _ => "the fit",
                 },
             )),
-            State::Ready(Err(e)) => Err(format!("no fit to apply: {e}")),
-            State::Computing { .. } => Err("the fit is still running: try again".into()),
-            State::Idle => Err("no fit to apply: this preset has no data".into()),
+            State::Ready(Err(e)) => Err(NoFitToApply::Failed(e.clone())),
+            State::Computing { .. } => Err(NoFitToApply::Running),
+            State::Idle => Err(NoFitToApply::NoData),
         }
     }
 
@@ -550,6 +550,17 @@ impl App {
             self.status = Status::Error(e.to_string());
         }
     }
+}
+
+/// Why `a` finds no fit to apply.
+#[derive(Debug, thiserror::Error)]
+enum NoFitToApply {
+    #[error("no fit to apply: {0}")]
+    Failed(crate::study::fit::FitError),
+    #[error("the fit is still running: try again")]
+    Running,
+    #[error("no fit to apply: this preset has no data")]
+    NoData,
 }
 
 /// Where a step from `current` toward `target` (refused) may stop instead, nearest the
