@@ -26,6 +26,7 @@ pub use super::vocabulary::{
 
 use super::jobs::{ExportRun, FitRuns, Jobs, MethodRows, Notice, OverlayRun, VideoRun};
 use super::line::History;
+use super::view::charts::zoom::{self, TimeZoom};
 use super::vocabulary::{DEFAULT_SPEED, WorkAxis};
 
 /// The rows of the parameters panel, top to bottom: the table's rows that have steps.
@@ -45,6 +46,8 @@ pub struct App {
     pub show_positions: bool,
     /// The energy chart (instead of velocities or positions).
     pub show_energy: bool,
+    /// The charts' time zoom.
+    pub zoom: TimeZoom,
     pub mouse: bool,
     pub status: Status,
     pub quit: bool,
@@ -107,6 +110,7 @@ impl App {
             chart_ball: ChartBall::Left,
             show_positions: false,
             show_energy: false,
+            zoom: TimeZoom::default(),
             mouse: true,
             status: Status::None,
             quit: false,
@@ -255,20 +259,57 @@ impl App {
         self.t = t.clamp(sol.t_start, sol.t_end);
     }
 
-    /// Advances playback by `wall` real seconds; stops at the end.
+    /// Advances playback by `wall` real seconds; stops at the end. A zoomed chart
+    /// follows the cursor.
     pub fn tick(&mut self, wall: f64) {
         if !self.playing {
             return;
         }
         let before = self.t;
         self.t += wall * self.speed_factor();
-        if self.pause_at_outcome(before) {
-            return;
-        }
-        if self.t >= self.lab.solution.t_end {
+        if !self.pause_at_outcome(before) && self.t >= self.lab.solution.t_end {
             self.t = self.lab.solution.t_end;
             self.playing = false;
         }
+        self.zoom.follow(self.t, self.chart_span());
+    }
+
+    /// The time span the charts' x axis covers unzoomed: the run's span, or while
+    /// the outcome is hidden one that does not tell it ([`super::hide::neutral_span`]).
+    pub fn chart_span(&self) -> (f64, f64) {
+        let sol = &self.lab.solution;
+        if self.hidden().derived() {
+            super::hide::neutral_span(sol.t_start, self.t)
+        } else {
+            (sol.t_start, sol.t_end)
+        }
+    }
+
+    /// The time range the charts show: the span, or the zoomed window of it.
+    pub fn chart_range(&self) -> (f64, f64) {
+        self.zoom.range(self.chart_span())
+    }
+
+    /// Zooms the charts' time axis in (`inward`) or out around `at` (the cursor's
+    /// time for the keys, the pointer's for the wheel) and says so.
+    pub fn zoom_around(&mut self, at: f64, inward: bool) {
+        if !matches!(self.view, View::Charts | View::Fit) {
+            self.status =
+                Status::Info("the time zoom is the charts' (Charts and Fit views)".into());
+            return;
+        }
+        let by = if inward { zoom::STEP } else { 1.0 / zoom::STEP };
+        let before = self.zoom;
+        let factor = self.zoom.zoom(self.chart_span(), at, by);
+        let (a, b) = self.chart_range();
+        self.status = Status::Info(match (factor > 1.0, self.zoom == before) {
+            (false, _) => "time zoom off: the whole run".into(),
+            (true, same) => format!(
+                "time zoom ×{}{}: {a:.3} … {b:.3} s (0: the whole run)",
+                super::view::charts::zoom_text(factor),
+                if same { " (the deepest)" } else { "" }
+            ),
+        });
     }
 
     pub fn apply(&mut self, action: Action) {
@@ -278,7 +319,12 @@ impl App {
             self.quit = true;
             return;
         }
+        let t = self.t;
         self.apply_in_mode(action);
+        // A cursor moved by a key (a step, a jump, the start) takes a zoomed chart along.
+        if self.t != t {
+            self.zoom.follow(self.t, self.chart_span());
+        }
         self.sync_jobs();
     }
 
@@ -386,10 +432,15 @@ impl App {
         }
     }
 
-    /// A one-line summary of playback for the status line.
+    /// A one-line summary of playback for the status line (without the span's end
+    /// while the outcome is hidden: it would tell it).
     pub fn playback(&self) -> String {
         let speed = self.speed_text();
         let sol = &self.lab.solution;
+        if self.hidden().derived() {
+            let state = if self.playing { "playing" } else { "paused" };
+            return format!("t = {:.3} s   {state}  speed ×{speed}", self.t);
+        }
         format!(
             "t = {:.3} s of {:.3} … {:.3} s   {}  speed ×{speed}",
             self.t,

@@ -85,6 +85,18 @@ impl Hide {
     }
 }
 
+/// The time axis the charts show while the outcome is hidden: from `t_start` over the
+/// first of 1, 2, 4, … s that reaches the cursor `t`. It depends on nothing but the
+/// time played so far: the span's own end would tell the outcome (a pair that comes
+/// back runs longer than one that departs).
+pub fn neutral_span(t_start: f64, t: f64) -> (f64, f64) {
+    let mut length = 1.0;
+    while t_start + length < t && length < 1e7 {
+        length *= 2.0;
+    }
+    (t_start, t_start + length)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -98,6 +110,14 @@ mod tests {
         assert!(!hide.value(Key::Mu) && !hide.value(Key::Radius));
         assert!(hide.change(Key::Width.param().label) && !hide.change("R"));
         assert!(hide.derived() && hide.forces());
+    }
+
+    #[test]
+    fn the_neutral_span_grows_with_the_cursor_only() {
+        assert_eq!(neutral_span(-0.2, -0.2), (-0.2, 0.8));
+        assert_eq!(neutral_span(-0.2, 0.8), (-0.2, 0.8));
+        assert_eq!(neutral_span(-0.2, 0.9), (-0.2, 1.8));
+        assert_eq!(neutral_span(0.0, 5.0), (0.0, 8.0));
     }
 
     #[test]

@@ -121,6 +121,24 @@ pub const TABLE: &[Binding] = &[
         hint: None,
     },
     Binding {
+        keys: &["z"],
+        action: Action::ZoomIn,
+        help: "charts: zoom in on time, around the cursor (the mouse wheel over a chart: around the pointer)",
+        hint: None,
+    },
+    Binding {
+        keys: &["Z"],
+        action: Action::ZoomOut,
+        help: "charts: zoom out on time, around the cursor",
+        hint: None,
+    },
+    Binding {
+        keys: &["0"],
+        action: Action::ZoomWhole,
+        help: "charts: the whole run again (no time zoom)",
+        hint: None,
+    },
+    Binding {
         keys: &["home"],
         action: Action::Start,
         help: "go to the start",
@@ -484,7 +502,8 @@ mod tests {
             }
         }
         for k in [
-            "e", "w", "W", "a", "d", "t", "P", ">", "<", "x", "b", "c", "g", "f", "o",
+            "e", "w", "W", "a", "d", "t", "P", ">", "<", "x", "b", "c", "g", "f", "o", "z", "Z",
+            "0",
         ] {
             assert!(seen.contains(k), "{k} is not bound");
         }

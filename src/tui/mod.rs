@@ -343,6 +343,18 @@ fn on_mouse_main(app: &mut App, screen: &Screen, m: MouseEvent) -> bool {
         app.seek(t);
         return true;
     }
+    // The wheel over the chart zooms its time axis around the pointer's time.
+    let wheel = match m.kind {
+        MouseEventKind::ScrollUp => Some(true),
+        MouseEventKind::ScrollDown => Some(false),
+        _ => None,
+    };
+    if let Some(inward) = wheel
+        && let Some(t) = screen.chart_time_at(app, m.column, m.row)
+    {
+        app.zoom_around(t, inward);
+        return true;
+    }
     let Some(panels) = screen.frame().and_then(|f| f.panels) else {
         return false;
     };

@@ -12,6 +12,7 @@ use super::app::{App, Mode, View};
 use super::component::{Component, Ctx, Frame};
 use super::theme::{Theme, force_ascii};
 use super::view;
+use super::view::withheld::Withheld;
 use super::view_cache::ViewCache;
 
 /// What preparing a frame computed anew (work counted, for the tests: a frame that
@@ -128,13 +129,9 @@ fn stand_ins(buf: &mut Buffer, theme: &Theme) {
     }
 }
 
-/// The cells of an ASCII screen that would have needed a stand-in: `(x, y, symbol)`.
-pub fn non_ascii_cells(
-    app: &App,
-    width: u16,
-    height: u16,
-    theme: &Theme,
-) -> Vec<(u16, u16, String)> {
+/// A new frame of `width` × `height` of `app`, drawn without the ASCII stand-ins
+/// (what the two functions below look at).
+fn drawn_bare(app: &App, width: u16, height: u16, theme: &Theme) -> Buffer {
     let area = Rect::new(0, 0, width, height);
     let mut buf = Buffer::empty(area);
     let mut screen = Screen::default();
@@ -142,7 +139,17 @@ pub fn non_ascii_cells(
     if let Some(frame) = screen.frame() {
         draw_panels(app, frame, &mut buf, theme);
     }
-    non_ascii(&buf)
+    buf
+}
+
+/// The cells of an ASCII screen that would have needed a stand-in: `(x, y, symbol)`.
+pub fn non_ascii_cells(
+    app: &App,
+    width: u16,
+    height: u16,
+    theme: &Theme,
+) -> Vec<(u16, u16, String)> {
+    non_ascii(&drawn_bare(app, width, height, theme))
 }
 
 /// [`to_text`] and [`non_ascii_cells`] of one drawing (a test of every screen draws
@@ -153,13 +160,7 @@ pub fn to_text_and_non_ascii_cells(
     height: u16,
     theme: &Theme,
 ) -> (String, Vec<(u16, u16, String)>) {
-    let area = Rect::new(0, 0, width, height);
-    let mut buf = Buffer::empty(area);
-    let mut screen = Screen::default();
-    screen.prepare(app, area, theme);
-    if let Some(frame) = screen.frame() {
-        draw_panels(app, frame, &mut buf, theme);
-    }
+    let mut buf = drawn_bare(app, width, height, theme);
     let cells = non_ascii(&buf);
     stand_ins(&mut buf, theme);
     (text_of(&buf), cells)
@@ -188,11 +189,57 @@ enum Place {
     Middle,
 }
 
-/// The components of `view` and where each goes (every view names its own: a new
-/// view is a new arm here, which the compiler asks for).
-fn parts_of(view: View) -> Vec<(&'static dyn Component, Place)> {
+/// The Methods view's panels while the outcome is hidden: its runs name it.
+const METHODS_WITHHELD: [Withheld; 2] = [
+    Withheld {
+        title: "Methods",
+        what: "error against work",
+    },
+    Withheld {
+        title: "Runs",
+        what: "each method's run and outcome",
+    },
+];
+
+/// The Map view's panels while a prediction is pending (b shown: its place on the
+/// map is the answer).
+const MAP_WITHHELD: [Withheld; 2] = [
+    Withheld {
+        title: "Regime map",
+        what: "the regime map",
+    },
+    Withheld {
+        title: "Why",
+        what: "why",
+    },
+];
+
+/// The Fit panel while the outcome is hidden: it names the predicted and observed
+/// regimes.
+const FIT_WITHHELD: Withheld = Withheld {
+    title: "Fit",
+    what: "the fit",
+};
+
+/// The components of the view shown and where each goes (every view names its own:
+/// a new view is a new arm here, which the compiler asks for). While the outcome is
+/// hidden, the panels that would tell it are withheld.
+fn parts_of(app: &App) -> Vec<(&'static dyn Component, Place)> {
     use view::{charts, fit, forces, info, map, methods};
-    match view {
+    let hide = app.hidden();
+    match app.view {
+        View::Methods if hide.derived() => vec![
+            (&METHODS_WITHHELD[0], Place::Chart),
+            (&METHODS_WITHHELD[1], Place::Side),
+        ],
+        View::Map if hide.pending() && !hide.b() => vec![
+            (&MAP_WITHHELD[0], Place::Chart),
+            (&MAP_WITHHELD[1], Place::Side),
+        ],
+        View::Fit if hide.derived() => vec![
+            (&charts::ChartPanel, Place::Chart),
+            (&FIT_WITHHELD, Place::Side),
+        ],
         View::Charts => vec![
             (&charts::ChartPanel, Place::Chart),
             (&info::Why, Place::Side),
@@ -254,7 +301,7 @@ fn draw_panels(app: &App, frame: &Frame, buf: &mut Buffer, theme: &Theme) {
     let cx = Ctx { app, frame, theme };
     view::params::Params.render(p.params, buf, &cx);
     view::scene::ScenePanel.render(p.scene, buf, &cx);
-    for (part, place) in parts_of(app.view) {
+    for (part, place) in parts_of(app) {
         let at = match place {
             Place::Chart => p.chart,
             Place::Side => p.info,

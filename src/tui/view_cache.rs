@@ -22,15 +22,19 @@ type Cached<K, T> = Option<(Arc<Resolved>, K, Rc<[T]>)>;
 /// The screen's per-size caches (UI state: the lab knows no terminal).
 #[derive(Clone, Debug, Default)]
 pub struct ViewCache {
-    samples: Cached<usize, Snapshot>,
-    energies: Cached<usize, (f64, EnergySplit)>,
-    pinned_samples: Cached<usize, Snapshot>,
-    pinned_kinetic: Cached<usize, (f64, f64)>,
+    samples: Cached<Window, Snapshot>,
+    energies: Cached<Window, (f64, EnergySplit)>,
+    pinned_samples: Cached<Window, Snapshot>,
+    pinned_kinetic: Cached<Window, (f64, f64)>,
     regimes: Cached<(usize, usize), Regime>,
     /// The measured series a chart draws, thinned to its cells: per grid and which
     /// series (bits in the order of `MeasuredPoints::series`).
     marks: Cached<(Cells, u8), Option<PlotPoints>>,
 }
+
+/// What a chart's samples are made for: its width in columns and its time range
+/// (the span, or the zoomed window of it), s.
+pub type Window = (usize, (f64, f64));
 
 /// `cell`'s values if they were made for `now` at `key`, else `make`'s, kept; and
 /// whether they were made now.
@@ -73,13 +77,14 @@ impl ViewCache {
         })
     }
 
-    /// The exact states at the chart's sample times for a plot `columns` wide: about
-    /// four per column plus both sides of every event, once per scene and width.
-    pub fn samples(&mut self, lab: &Lab, columns: usize) -> Rc<[Snapshot]> {
+    /// The exact states at the chart's sample times for a plot `columns` wide over
+    /// `range`: about four per column plus both sides of every event, once per scene
+    /// and window.
+    pub fn samples(&mut self, lab: &Lab, (columns, range): Window) -> Rc<[Snapshot]> {
         let now = lab.resolved();
-        cached(&mut self.samples, now, columns, || {
+        cached(&mut self.samples, now, (columns, range), || {
             let sol = &now.solution;
-            sample_times(sol, (sol.t_start, sol.t_end), columns)
+            sample_times(sol, range, columns)
                 .into_iter()
                 .map(|t| sol.at(t))
                 .collect()
@@ -87,11 +92,11 @@ impl ViewCache {
         .0
     }
 
-    /// The energy split at the same times as [`ViewCache::samples`], once per scene and width.
-    pub fn energies(&mut self, lab: &Lab, columns: usize) -> Rc<[(f64, EnergySplit)]> {
-        let samples = self.samples(lab, columns);
+    /// The energy split at the same times as [`ViewCache::samples`], once per scene and window.
+    pub fn energies(&mut self, lab: &Lab, window: Window) -> Rc<[(f64, EnergySplit)]> {
+        let samples = self.samples(lab, window);
         let now = lab.resolved();
-        cached(&mut self.energies, now, columns, || {
+        cached(&mut self.energies, now, window, || {
             samples
                 .iter()
                 .map(|s| (s.t, now.solution.energy_at(s.t)))
@@ -100,16 +105,15 @@ impl ViewCache {
         .0
     }
 
-    /// The pinned run's states over the current span (its own events kept sharp), once
-    /// per scene and width; empty when nothing is pinned.
-    pub fn pinned_samples(&mut self, lab: &Lab, columns: usize) -> Rc<[Snapshot]> {
+    /// The pinned run's states over the chart's range (its own events kept sharp),
+    /// once per scene and window; empty when nothing is pinned.
+    pub fn pinned_samples(&mut self, lab: &Lab, (columns, range): Window) -> Rc<[Snapshot]> {
         let Some(p) = &lab.pinned else {
             return Rc::from(Vec::new());
         };
         let now = lab.resolved();
-        cached(&mut self.pinned_samples, now, columns, || {
-            let span = (now.solution.t_start, now.solution.t_end);
-            sample_times(&p.solution, span, columns)
+        cached(&mut self.pinned_samples, now, (columns, range), || {
+            sample_times(&p.solution, range, columns)
                 .into_iter()
                 .map(|t| p.solution.at(t))
                 .collect()
@@ -118,14 +122,14 @@ impl ViewCache {
     }
 
     /// The pinned run's kinetic energy at [`ViewCache::pinned_samples`]' times, J, once per
-    /// scene and width (the energy chart's A/B curve); empty when nothing is pinned.
-    pub fn pinned_kinetic(&mut self, lab: &Lab, columns: usize) -> Rc<[(f64, f64)]> {
+    /// scene and window (the energy chart's A/B curve); empty when nothing is pinned.
+    pub fn pinned_kinetic(&mut self, lab: &Lab, window: Window) -> Rc<[(f64, f64)]> {
         let Some(p) = &lab.pinned else {
             return Rc::from(Vec::new());
         };
-        let samples = self.pinned_samples(lab, columns);
+        let samples = self.pinned_samples(lab, window);
         let now = lab.resolved();
-        cached(&mut self.pinned_kinetic, now, columns, || {
+        cached(&mut self.pinned_kinetic, now, window, || {
             samples
                 .iter()
                 .map(|s| (s.t, p.solution.energy_at(s.t).kinetic()))

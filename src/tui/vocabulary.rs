@@ -160,6 +160,12 @@ pub enum Action {
     ToggleEnergy,
     /// The span key: auto, ×2, ×½ (see [`crate::lab::SpanEnd`]).
     CycleSpan,
+    /// The charts' time zoom: in (twice) around the cursor's time.
+    ZoomIn,
+    /// The charts' time zoom: out (by half) around the cursor's time.
+    ZoomOut,
+    /// The charts' time zoom: the whole run again.
+    ZoomWhole,
     NextEvent,
     PrevEvent,
     /// Pin the current run for an A/B comparison, or unpin it.

@@ -178,3 +178,41 @@ fn predict_mode_can_show_the_forces_as_givens() {
     let asked = screen(&["--keys", "y g", "--size", "120x40"]);
     assert!(asked.contains("the forces: shown as givens"), "{asked}");
 }
+
+/// The rows of `screen` below the parameter and scene panels (the view and the
+/// status and hint lines): what the keys of a view put on screen.
+fn below_the_scene(screen: &str) -> String {
+    let lines: Vec<&str> = screen.lines().collect();
+    let top = 1 + lines[1..].iter().position(|l| l.starts_with('╭')).unwrap();
+    lines[top..].join("\n")
+}
+
+/// Predict mode at 80×24, 120×40 and 200×60, answered and watched up to just before
+/// the impact, shows the same view whatever the outcome: a pair that departs (b = 3.5
+/// cm), one that comes back within a second (4.9 cm) and one that comes back over 13
+/// s (4.3 cm). The span's end (the chart's x axis, the status line), the y range of
+/// the whole run (a velocity that turns negative), the Methods runs, the map with b
+/// on it and the fit each told the outcome.
+#[test]
+fn predict_mode_shows_the_same_view_whatever_the_outcome() {
+    for size in ["80x24", "120x40", "200x60"] {
+        // Asked: the status line names no span (it said "of -0.200 … 1.077 s").
+        let asked = screen(&["--keys", "y", "--size", size]);
+        assert!(
+            !asked.contains("1.077") && !asked.contains(" of -0.200"),
+            "{asked}"
+        );
+        // (The energy chart differs: a rolling ball's energy depends on b through k.)
+        for keys in ["y 3 v", "y 3 c", "y 3 g", "y 3 f", "y 3 v x"] {
+            let views: Vec<String> = ["3.5cm", "4.3cm", "4.9cm"]
+                .iter()
+                .map(|b| {
+                    let s = screen(&["--width", b, "--keys", keys, "--at", "-0.1", "--size", size]);
+                    below_the_scene(&s)
+                })
+                .collect();
+            assert_eq!(views[0], views[1], "'{keys}' {size}: 3.5 cm and 4.3 cm");
+            assert_eq!(views[1], views[2], "'{keys}' {size}: 4.3 cm and 4.9 cm");
+        }
+    }
+}

@@ -185,3 +185,105 @@ fn shift_w_exports_what_is_on_the_screen() {
     assert!(dir.join("run.csv").is_file(), "{:?}", a.status);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// The `<text>` elements of an SVG, in order.
+fn texts(svg: &str) -> Vec<String> {
+    svg.split("<text")
+        .skip(1)
+        .filter_map(|t| Some(t.split_once('>')?.1.split_once("</text>")?.0.to_string()))
+        .collect()
+}
+
+/// The x axis' last tick of a run chart's SVG (the last number before the legend).
+fn last_time_tick(svg: &str) -> f64 {
+    texts(svg)
+        .iter()
+        .skip(1)
+        .take_while(|t| !t.contains("v_cm"))
+        .filter_map(|t| t.trim().parse::<f64>().ok())
+        .last()
+        .unwrap()
+}
+
+/// Issue 28: `W` writes what the screen shows of a zoomed chart: its time range, not
+/// the whole run.
+#[test]
+fn shift_w_writes_the_zoomed_chart() {
+    let dir = scratch("zoomed");
+    let mut a = app_in(&dir, "paper-b4.9");
+    let (_, whole) = export_figure(&mut a);
+    assert!(last_time_tick(&whole) >= 1.0, "{:?}", texts(&whole));
+    press(&mut a, "> z z z");
+    let (lo, hi) = a.chart_range();
+    let (_, zoomed) = export_figure(&mut a);
+    let last = last_time_tick(&zoomed);
+    assert!(
+        last <= hi && last > lo + 0.5 * (hi - lo),
+        "{last} in {lo} … {hi}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The SVG `W` writes in predict mode (answered, paused before the impact) at groove
+/// width `b` with the `critical` preset (no data), its caption's b taken out, and
+/// the file's name.
+fn predicted_svg(dir: &std::path::Path, b: f64, keys: &str) -> (String, String) {
+    let mut a = app_in(dir, "critical");
+    a.set_value(Key::Width, b);
+    press(&mut a, keys);
+    a.playing = false;
+    a.t = -0.1;
+    let (name, svg) = export_figure(&mut a);
+    let shown = format!("b = {:.2} cm", b * 100.0);
+    (name, svg.replace(&shown, "b = ?"))
+}
+
+/// Issue 28: in predict mode `W` writes what the screen shows: the chart up to the
+/// cursor on a time axis that does not tell the outcome, named for no preset (a
+/// preset's name may say b or the outcome); the same file whatever the outcome
+/// (b = 3.5 cm departs, 4.3 and 4.9 cm come back, at ~13 s and ~1 s). `w` (the whole
+/// run) is refused until the outcome shows.
+#[test]
+fn shift_w_in_predict_mode_writes_no_outcome() {
+    let dir = scratch("predicted");
+    let files: Vec<(String, String)> = [0.035, 0.043, 0.049]
+        .iter()
+        .map(|&b| predicted_svg(&dir, b, "y 3 v"))
+        .collect();
+    assert_eq!(files[0].0, "prediction-chart.svg");
+    assert!(files[0].1.contains("b = ?"), "{}", files[0].1);
+    assert_eq!(files[0], files[1], "3.5 cm and 4.3 cm");
+    assert_eq!(files[1], files[2], "4.3 cm and 4.9 cm");
+    let mut a = app_in(&dir, "critical");
+    press(&mut a, "y 3 w");
+    assert!(
+        matches!(&a.status, Status::Error(e) if e.contains("would tell the hidden outcome")),
+        "{:?}",
+        a.status
+    );
+    assert_eq!(a.mode, Mode::Normal);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Issue 28: with b hidden (`B`), `W` writes no b: not in the caption, the pinned
+/// run's label, the data's caption or the file's name.
+#[test]
+fn shift_w_with_b_hidden_writes_no_b() {
+    let dir = scratch("hidden-b");
+    let mut a = app_in(&dir, "paper-b4.9");
+    press(&mut a, "P");
+    a.set_value(Key::Width, 0.035);
+    press(&mut a, "B");
+    a.t = 0.1;
+    let (name, svg) = export_figure(&mut a);
+    assert_eq!(name, "prediction-chart.svg");
+    for b in ["3.5", "3.50", "4.9", "4.90"] {
+        let texts = texts(&svg).join("|");
+        assert!(!texts.contains(&format!("{b} cm")), "{b}: {texts}");
+    }
+    assert!(
+        svg.contains("b hidden") && svg.contains("pinned run"),
+        "{svg}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -4,6 +4,7 @@
 #[macro_use]
 mod common;
 
+mod chart_zoom;
 mod classroom;
 mod cli;
 mod closed_forms;

@@ -516,7 +516,7 @@ fn the_energy_chart_splits_the_initial_energy_at_every_sample() {
     let mut a = app("inelastic");
     press(&mut a, "e");
     assert!(a.show_energy);
-    let split = ViewCache::default().energies(&a.lab, 100);
+    let split = ViewCache::default().energies(&a.lab, (100, a.chart_span()));
     let total = split[0].1.total();
     assert!(total > 0.0);
     for (t, e) in split.iter() {

@@ -18,11 +18,10 @@ use serde_json::Value;
 
 use crate::common;
 use groovelab::physics::scene::Scene;
-use groovelab::study::preset::Preset;
 use groovelab::study::vision::render::{Film, Look};
 
 fn scene() -> Scene {
-    Preset::load("paper-b4.9")
+    groovelab::input::preset::load("paper-b4.9")
         .unwrap()
         .spec
         .resolve()

@@ -31,12 +31,15 @@ const BROWN: RGBColor = RGBColor(140, 86, 75);
 const RED: RGBColor = RGBColor(214, 39, 40);
 
 /// About one state per SVG pixel column, and one at each event, in time order.
-fn run_samples(sol: &Solution) -> Vec<Snapshot> {
-    let (t0, t1) = (sol.t_start, sol.t_end);
+fn run_samples(sol: &Solution, (t0, t1): (f64, f64)) -> Vec<Snapshot> {
     let n = 800;
     let mut samples: Vec<Snapshot> = (0..=n)
         .map(|i| sol.at(t0 + (t1 - t0) * i as f64 / n as f64))
-        .chain(sol.visible_events().map(|e| sol.at(e.t)))
+        .chain(
+            sol.visible_events()
+                .filter(|e| (t0..=t1).contains(&e.t))
+                .map(|e| sol.at(e.t)),
+        )
         .collect();
     samples.sort_by(|a, b| a.t.total_cmp(&b.t));
     samples
@@ -87,15 +90,26 @@ fn curves_of(which: RunChart) -> (Vec<Trace>, String, &'static str) {
 /// The y range that holds every curve and measured value, padded by 5 %.
 /// linear_axis first clamps the range (so the pad is finite), then again after the
 /// pad: no data (an infinite fold), NaN or a flat run still give a drawable axis.
-fn value_range(curves: &[Trace], samples: &[Snapshot], measured: Option<&Measured>) -> (f64, f64) {
+fn value_range(
+    curves: &[Trace],
+    samples: &[Snapshot],
+    measured: Option<&Measured>,
+    (t0, t1): (f64, f64),
+) -> (f64, f64) {
+    let shown = |m: &'_ Measured| {
+        let at = |v: &'_ [f64]| {
+            m.t.iter()
+                .zip(v.to_vec())
+                .filter(|(t, _)| (t0..=t1).contains(*t))
+                .map(|(_, v)| v)
+                .collect::<Vec<f64>>()
+        };
+        [at(&m.v_cm), at(&m.v_t)].concat()
+    };
     let values = curves
         .iter()
         .flat_map(|(_, f, _)| samples.iter().map(f))
-        .chain(
-            measured
-                .iter()
-                .flat_map(|m| m.v_cm.iter().chain(&m.v_t).copied()),
-        )
+        .chain(measured.into_iter().flat_map(shown))
         .filter(|v| v.is_finite());
     let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |a, v| {
         (a.0.min(v), a.1.max(v))
@@ -127,12 +141,38 @@ fn draw_measured(
     )
 }
 
+/// The chart's caption: what it shows and the scene (b left out where it is hidden).
+fn caption(title: &str, scene: &crate::physics::scene::Scene, b_hidden: bool) -> String {
+    let unit = Dimension::Length.display_unit().0;
+    let cm = |v: f64| Dimension::Length.to_display(v);
+    let b = if b_hidden {
+        "b hidden".to_string()
+    } else {
+        format!("b = {:.2} {unit}", cm(scene.width))
+    };
+    format!(
+        "{title}: {b}, R = {:.2} {unit}, mu_k = {}, e = {}",
+        cm(scene.radius),
+        super::drawing::rounded(scene.mu),
+        super::drawing::rounded(scene.restitution),
+    )
+}
+
 /// What the app's chart shows beside the run: a pinned run (drawn dashed, labelled
-/// with `label`) and a note under the chart (data measured in another groove).
+/// with `label`) and a note under the chart (data measured in another groove); and
+/// how much of it the screen shows.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Beside<'a> {
     pub pinned: Option<(&'a Solution, &'a str)>,
     pub note: Option<&'a str>,
+    /// The time axis (the screen's time zoom, or a span that tells no outcome);
+    /// `None`: the run's span, reaching a pinned run's end.
+    pub range: Option<(f64, f64)>,
+    /// Nothing after this time is drawn (the screen hides the outcome): curves,
+    /// events and data end there.
+    pub until: Option<f64>,
+    /// The caption does not state b (the screen hides it).
+    pub b_hidden: bool,
 }
 
 /// A run's chart, as the app's chart panel shows it: v_cm(t) and v_t(t) of the chosen
@@ -144,30 +184,30 @@ pub fn run_chart(
     measured: Option<&Measured>,
     beside: Beside,
 ) -> Result<String, FigureError> {
-    let samples = run_samples(sol);
+    let t_end = beside
+        .pinned
+        .map_or(sol.t_end, |(p, _)| p.t_end.max(sol.t_end));
+    let range = beside.range.unwrap_or((sol.t_start, t_end));
+    // What is drawn: the range, up to `until`.
+    let drawn = (range.0, range.1.min(beside.until.unwrap_or(f64::INFINITY)));
+    let cut = |mut s: Vec<Snapshot>| {
+        s.retain(|s| s.t <= drawn.1);
+        s
+    };
+    let samples = cut(run_samples(sol, range));
     let (curves, y_desc, title) = curves_of(which);
     let measured = measured.filter(|_| which != RunChart::Positions);
-    let pinned = beside.pinned.map(|(p, label)| (run_samples(p), label));
+    let pinned = beside
+        .pinned
+        .map(|(p, label)| (cut(run_samples(p, range)), label));
     let both: Vec<Snapshot> = samples
         .iter()
         .chain(pinned.iter().flat_map(|(p, _)| p))
         .copied()
         .collect();
-    let (lo, hi) = value_range(&curves, &both, measured);
-    let t_end = beside
-        .pinned
-        .map_or(sol.t_end, |(p, _)| p.t_end.max(sol.t_end));
-    let (t0, t1) = linear_axis(sol.t_start, t_end);
-    let scene = &sol.scene;
-    let cm = |v: f64| Dimension::Length.to_display(v);
-    let caption = format!(
-        "{title}: b = {:.2} {unit}, R = {:.2} {unit}, mu_k = {}, e = {}",
-        cm(scene.width),
-        cm(scene.radius),
-        super::drawing::rounded(scene.mu),
-        super::drawing::rounded(scene.restitution),
-        unit = Dimension::Length.display_unit().0,
-    );
+    let (lo, hi) = value_range(&curves, &both, measured, drawn);
+    let (t0, t1) = linear_axis(range.0, range.1);
+    let caption = caption(title, &sol.scene, beside.b_hidden);
     let mut frame = FigureFrame::plain(Some(caption));
     if beside.note.is_some() {
         // Room under the axis for the note.
@@ -183,7 +223,11 @@ pub fn run_chart(
         }
         let mut chart = linear_chart(root, &frame, ((t0, t1), (lo, hi)), ("t (s)", &y_desc), true)?;
         let grey = RGBColor(150, 150, 150);
-        for e in sol.visible_events().filter(|e| e.kind.label().is_some()) {
+        let shown = |t: &f64| (drawn.0..=drawn.1).contains(t);
+        for e in sol
+            .visible_events()
+            .filter(|e| e.kind.label().is_some() && shown(&e.t))
+        {
             chart.draw_series(DashedLineSeries::new(
                 [(e.t, lo), (e.t, hi)],
                 4,
@@ -214,7 +258,7 @@ pub fn run_chart(
             }
         }
         if let Some(m) = measured {
-            draw_measured(&mut chart, m, (t0, t1))?;
+            draw_measured(&mut chart, m, (drawn.0.max(t0), drawn.1.min(t1)))?;
         }
         draw_legend(&mut chart, SeriesLabelPosition::UpperRight)
     })

@@ -53,6 +53,34 @@ impl Figure {
 /// Grid of the exported regime map: finer than a terminal's cells.
 const MAP_GRID: (usize, usize) = (160, 80);
 
+/// Why `w` or `W` writes nothing, told before any job starts (the prompt stays open
+/// or is not opened, and the status line says this).
+#[derive(Debug, thiserror::Error)]
+pub enum NoExport {
+    #[error(
+        "the Forces view has no SVG export: W writes the charts, the Map, the Methods and the Fit view"
+    )]
+    Forces,
+    #[error("the energy chart has no SVG export yet: press e for the velocities, x for positions")]
+    Energy,
+    /// The screen withholds what the file would show (predict mode, b hidden).
+    #[error("{0} would tell the hidden outcome: it can be written once the outcome shows")]
+    Hidden(&'static str),
+    #[error("give a file name")]
+    NoName,
+    #[error("cannot write {}: no folder {}", path.display(), dir.display())]
+    NoFolder {
+        path: std::path::PathBuf,
+        dir: std::path::PathBuf,
+    },
+    #[error("the methods are still running: export when the diagram is drawn")]
+    MethodsRunning,
+    #[error("no fit to draw: {0}")]
+    NoFit(crate::study::fit::FitError),
+    #[error("the fit is still being computed: export when it is shown")]
+    FitRunning,
+}
+
 /// Why an export job wrote nothing.
 #[derive(Debug, thiserror::Error)]
 pub enum ExportError {
@@ -83,15 +111,19 @@ impl App {
                 .is_some_and(|f| f.given().any(|(k, _)| k == Key::Width))
     }
 
-    /// The figure `W` writes from the view on screen, or why there is none.
-    pub fn figure_on_screen(&self) -> Result<Figure, String> {
+    /// The figure `W` writes from the view on screen, or why there is none (a view
+    /// the screen withholds while the outcome is hidden is not written either).
+    pub fn figure_on_screen(&self) -> Result<Figure, NoExport> {
+        let hide = self.hidden();
         match self.view {
+            View::Map if hide.pending() && !hide.b() => Err(NoExport::Hidden("the regime map")),
             View::Map => Ok(Figure::Map),
+            View::Methods if hide.derived() => Err(NoExport::Hidden("the Methods diagram")),
             View::Methods => Ok(Figure::Methods),
-            View::Forces => Err(
-                "the Forces view has no SVG export: W writes the charts, the Map, the Methods and the Fit view"
-                    .into(),
-            ),
+            View::Forces => Err(NoExport::Forces),
+            View::Fit if self.lab.measured().is_some() && hide.derived() => {
+                Err(NoExport::Hidden("the fit"))
+            }
             View::Fit if self.lab.measured().is_some() => Ok(Figure::Fit),
             // The Fit view without data shows the charts.
             View::Charts | View::Fit => self.chart_figure(),
@@ -99,12 +131,9 @@ impl App {
     }
 
     /// The figure of the chart on screen.
-    fn chart_figure(&self) -> Result<Figure, String> {
+    fn chart_figure(&self) -> Result<Figure, NoExport> {
         if self.show_energy {
-            Err(
-                "the energy chart has no SVG export yet: press e for the velocities, x for positions"
-                    .into(),
-            )
+            Err(NoExport::Energy)
         } else if self.show_positions {
             Ok(Figure::Positions)
         } else {
@@ -114,10 +143,10 @@ impl App {
 
     /// Writes the run (CSV) or the figure on screen (SVG) to `name` (in `export_dir`
     /// unless absolute), through a temporary file; says where in the status line.
-    pub(super) fn export(&mut self, kind: Export, name: &str) -> Result<(), String> {
+    pub(super) fn export(&mut self, kind: Export, name: &str) -> Result<(), NoExport> {
         let name = name.trim();
         if name.is_empty() {
-            return Err("give a file name".into());
+            return Err(NoExport::NoName);
         }
         // A name without an extension gets the file's kind's (a typed "run" is
         // run.csv; "fig.v2" keeps its own).
@@ -133,13 +162,14 @@ impl App {
             .parent()
             .filter(|d| !d.as_os_str().is_empty() && !d.is_dir())
         {
-            return Err(format!(
-                "cannot write {}: no folder {}",
-                path.display(),
-                dir.display()
-            ));
+            return Err(NoExport::NoFolder {
+                dir: dir.to_path_buf(),
+                path,
+            });
         }
         let work = match kind {
+            // The run's file holds the whole run (and b): nothing of it while hidden.
+            Export::Csv if self.hidden().derived() => return Err(NoExport::Hidden("the run")),
             Export::Csv => self.csv_work(),
             Export::Svg => self.svg_work(self.figure_on_screen()?)?,
         };
@@ -175,7 +205,7 @@ impl App {
     }
 
     /// `figure`, with what it needs taken from the lab now.
-    fn svg_work(&self, figure: Figure) -> Result<Box<ExportWork>, String> {
+    fn svg_work(&self, figure: Figure) -> Result<Box<ExportWork>, NoExport> {
         let scene = self.lab.scene;
         let what = figure.describe().trim_start_matches("the ").to_string();
         let done = move |svg: Result<String, figures::FigureError>| Ok((svg?.into_bytes(), what));
@@ -196,23 +226,38 @@ impl App {
                     .filter(|_| self.chart_ball != ChartBall::Right && figure == Figure::Velocities)
                     .cloned();
                 // What the screen shows beside the run: the pinned run, and the caption
-                // of data measured in another groove.
+                // of data measured in another groove; and as much of it as the screen
+                // shows: its time zoom, nothing past the cursor while the outcome is
+                // hidden, no b while b is.
+                let hide = self.hidden();
+                let label = |scene| match hide.b() {
+                    true => "run".to_string(),
+                    false => pinned_label(scene),
+                };
                 let pinned = self
                     .lab
                     .pinned
                     .as_ref()
-                    .map(|p| (std::sync::Arc::clone(&p.solution), pinned_label(&p.scene)));
-                let note = measured.as_ref().and(
-                    self.lab
-                        .resolved()
-                        .other_groove
-                        .as_ref()
-                        .map(|o| o.describe()),
-                );
+                    .map(|p| (std::sync::Arc::clone(&p.solution), label(&p.scene)));
+                let note = measured
+                    .as_ref()
+                    .and(self.lab.resolved().other_groove.as_ref().map(|o| {
+                        if hide.b() {
+                            "the data were measured in another groove (b hidden)".to_string()
+                        } else {
+                            o.describe()
+                        }
+                    }));
+                let range = (hide.derived() || self.chart_range() != self.chart_span())
+                    .then(|| self.chart_range());
+                let until = hide.derived().then_some(self.t);
                 Box::new(move || {
                     let beside = figures::Beside {
                         pinned: pinned.as_ref().map(|(p, l)| (p.as_ref(), l.as_str())),
                         note: note.as_deref(),
+                        range,
+                        until,
+                        b_hidden: hide.b(),
                     };
                     done(figures::run_chart(&sol, which, measured.as_ref(), beside))
                 })
@@ -234,19 +279,15 @@ impl App {
                     };
                     Box::new(move || done(figures::work_precision_against(&rows, &scene, work)))
                 }
-                _ => {
-                    return Err(
-                        "the methods are still running: export when the diagram is drawn".into(),
-                    );
-                }
+                _ => return Err(NoExport::MethodsRunning),
             },
             Figure::Fit => match (self.fit.fits(), self.lab.measured()) {
                 (State::Ready(Ok(fits)), Some(m)) => {
                     let (fits, m) = (fits.clone(), m.clone());
                     Box::new(move || done(figures::fit_figure(&scene, &m, &fits)))
                 }
-                (State::Ready(Err(e)), _) => return Err(format!("no fit to draw: {e}")),
-                _ => return Err("the fit is still being computed: export when it is shown".into()),
+                (State::Ready(Err(e)), _) => return Err(NoExport::NoFit(e.clone())),
+                _ => return Err(NoExport::FitRunning),
             },
         })
     }
@@ -317,8 +358,13 @@ fn pinned_label(scene: &crate::physics::scene::Scene) -> String {
 
 /// The part of an export's file name that says which scene it shows: the preset's
 /// name (or the data file's) while b is the preset's, else the groove width shown
-/// (`b3.5cm`), and the pinned run's beside it (`b3.5cm-vs-b4.9cm`).
-pub fn shown_name(lab: &crate::lab::Lab, edited: bool) -> String {
+/// (`b3.5cm`), and the pinned run's beside it (`b3.5cm-vs-b4.9cm`); while the outcome
+/// is hidden (`hidden`) neither (a preset's name may state b or the outcome), only
+/// `prediction`.
+pub fn shown_name(lab: &crate::lab::Lab, edited: bool, hidden: bool) -> String {
+    if hidden {
+        return "prediction".into();
+    }
     let width = |scene: &crate::physics::scene::Scene| {
         let shown = Dimension::Length.to_display(scene.width);
         let unit = Dimension::Length.display_unit().0;

@@ -88,6 +88,18 @@ impl App {
             }
             Action::NextEvent | Action::PrevEvent => self.jump_to_event(action),
             Action::CycleSpan => self.cycle_span(),
+            Action::ZoomIn | Action::ZoomOut => {
+                // Around the cursor: a window the wheel moved away from it comes back.
+                self.zoom.follow(self.t, self.chart_span());
+                self.zoom_around(self.t, action == Action::ZoomIn);
+            }
+            Action::ZoomWhole => {
+                self.status = Status::Info(if self.zoom.whole() {
+                    "time zoom off: the whole run".into()
+                } else {
+                    "the charts show the whole run (z zooms in)".into()
+                });
+            }
             Action::ToggleEnergy => {
                 self.show_energy = !self.show_energy;
                 self.show_positions = false;
@@ -183,12 +195,13 @@ impl App {
             Ok(()) => {
                 let sol = &self.lab.solution;
                 self.t = self.t.clamp(sol.t_start, sol.t_end);
-                self.status = Status::Info(format!(
-                    "span {}: {:.3} … {:.3} s",
-                    next.describe(),
-                    sol.t_start,
-                    sol.t_end
-                ));
+                // The span's end would tell a hidden outcome.
+                let ends = if self.hidden().derived() {
+                    String::new()
+                } else {
+                    format!(": {:.3} … {:.3} s", sol.t_start, sol.t_end)
+                };
+                self.status = Status::Info(format!("span {}{ends}", next.describe()));
             }
             Err(e) => self.status = Status::Error(format!("span not changed: {e}")),
         }
@@ -323,11 +336,16 @@ impl App {
     fn ask_export(&mut self, kind: Export) {
         self.status = Status::None;
         let what = match kind {
+            Export::Csv if self.hidden().derived() => {
+                let e = super::export::NoExport::Hidden("the run");
+                self.status = Status::Error(e.to_string());
+                return;
+            }
             Export::Csv => "run",
             Export::Svg => match self.figure_on_screen() {
                 Ok(figure) => figure.name(),
                 Err(e) => {
-                    self.status = Status::Error(e);
+                    self.status = Status::Error(e.to_string());
                     return;
                 }
             },
@@ -336,7 +354,7 @@ impl App {
             kind,
             Field::suggested(format!(
                 "{}-{what}.{}",
-                super::export::shown_name(&self.lab, self.scene_edited()),
+                super::export::shown_name(&self.lab, self.scene_edited(), self.hidden().derived()),
                 kind.extension()
             )),
         );
@@ -465,7 +483,7 @@ impl App {
         let (fitted, which) = match self.fit_to_apply() {
             Ok(f) => f,
             Err(e) => {
-                self.status = Status::Error(e);
+                self.status = Status::Error(e.to_string());
                 return;
             }
         };
@@ -513,7 +531,7 @@ impl App {
     /// The model fit `a` applies, and what to call it: the headline fit (of the model
     /// the data support; of a position track fitted to the positions), the one the
     /// panel shows first.
-    fn fit_to_apply(&self) -> Result<(crate::study::fit::ModelFit, &'static str), String> {
+    fn fit_to_apply(&self) -> Result<(crate::study::fit::ModelFit, &'static str), NoFitToApply> {
         match self.fit.fits() {
             State::Ready(Ok(f)) => Ok((
                 f.model_fit.clone(),
@@ -522,9 +540,9 @@ impl App {
                     _ => "the fit",
                 },
             )),
-            State::Ready(Err(e)) => Err(format!("no fit to apply: {e}")),
-            State::Computing { .. } => Err("the fit is still running: try again".into()),
-            State::Idle => Err("no fit to apply: this preset has no data".into()),
+            State::Ready(Err(e)) => Err(NoFitToApply::Failed(e.clone())),
+            State::Computing { .. } => Err(NoFitToApply::Running),
+            State::Idle => Err(NoFitToApply::NoData),
         }
     }
 
@@ -533,6 +551,17 @@ impl App {
             self.status = Status::Error(e.to_string());
         }
     }
+}
+
+/// Why `a` finds no fit to apply.
+#[derive(Debug, thiserror::Error)]
+enum NoFitToApply {
+    #[error("no fit to apply: {0}")]
+    Failed(crate::study::fit::FitError),
+    #[error("the fit is still running: try again")]
+    Running,
+    #[error("no fit to apply: this preset has no data")]
+    NoData,
 }
 
 /// Where a step from `current` toward `target` (refused) may stop instead, nearest the

@@ -24,6 +24,7 @@ use crate::tui::view_cache::ViewCache;
 use marks::{line_fit_marks, measured_velocities};
 
 mod marks;
+pub mod zoom;
 
 fn event_lines(app: &App, balls: &[Who], theme: &Theme) -> Vec<VLine> {
     app.lab
@@ -48,23 +49,44 @@ fn event_lines(app: &App, balls: &[Who], theme: &Theme) -> Vec<VLine> {
 /// The chart shown in `area` (before drawing, with the screen's caches), and whether
 /// measured series were thinned for it now.
 pub fn build(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Chart, bool) {
-    let (titles, mut plot) = if app.show_energy {
+    let (mut titles, mut plot) = if app.show_energy {
         energy(app, cache, area, theme)
     } else if app.show_positions {
         positions(app, cache, area, theme)
     } else {
         velocities(app, cache, area, theme)
     };
+    let factor = app.zoom.factor(app.chart_span());
+    if factor > 1.0 + 1e-9 {
+        // Each wording keeps its room: the zoom is said first, briefly.
+        let zoomed = format!("zoom {}{}  ", theme.glyphs.text("×"), zoom_text(factor));
+        for t in &mut titles {
+            t.insert_str(0, &zoomed);
+        }
+    }
     // The title sits on the border: the inside is the same whatever it says.
     let inner = block("", theme).inner(area);
     let thinned = thin_measured(app, cache, &mut plot, inner, theme);
     // The curves and event labels past the cursor show the outcome: while it is to
     // be predicted (b hidden, a prediction pending) the chart grows as the run plays.
+    // Its y range then comes from what is shown: the whole run's would tell (a
+    // velocity that turns negative is a ball that comes back), and a velocity axis
+    // is symmetric about zero, so that the sign of what is to come is not implied.
     if app.hidden().derived() {
         plot.until(app.t);
+        let velocities = !(app.show_energy || app.show_positions);
+        if !app.show_energy {
+            let rows = usize::from(area.height.saturating_sub(4));
+            plot.y_range = shown_y_range(&plot.series, velocities, rows);
+        }
     }
     let data = plot.data_area(inner, theme);
     (Chart { titles, plot, data }, thinned)
+}
+
+/// A zoom factor as the title and the status line say it: 2, 4, … 4096.
+pub fn zoom_text(factor: f64) -> String {
+    crate::settings::units::significant(factor, 3)
 }
 
 /// Draws `chart` (built for `area`), changing nothing.
@@ -137,7 +159,7 @@ fn pinned_series(
     if app.lab.pinned.is_none() {
         return Vec::new();
     }
-    let samples = cache.pinned_samples(&app.lab, columns);
+    let samples = cache.pinned_samples(&app.lab, (columns, app.chart_range()));
     // Without colour a dimmed braille line looks like the current run's: the pinned
     // run is drawn in dots of its own glyph then, under the current curves (ASCII draws
     // every line in its glyph).
@@ -197,6 +219,21 @@ fn bounds(
         }
     }
     nice_ticks(lo, hi, (rows / 3).max(2))
+}
+
+/// The y range of `series` as they are (cut at the cursor), symmetric about zero if
+/// `symmetric`, with round ticks.
+fn shown_y_range(series: &[PlotLine], symmetric: bool, rows: usize) -> (f64, f64) {
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    for (a, b) in series.iter().filter_map(|s| value_range(&s.points)) {
+        lo = lo.min(a);
+        hi = hi.max(b);
+    }
+    if symmetric && lo <= hi {
+        let m = lo.abs().max(hi.abs());
+        (lo, hi) = (-m, m);
+    }
+    nice_ticks(lo, hi, (rows / 3).max(2)).0
 }
 
 /// The balls drawn (0 left, 1 right) and how the title names them.
@@ -303,9 +340,8 @@ fn overlay_velocities(app: &App, balls: &[usize], columns: usize, theme: &Theme)
 }
 
 fn velocities(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Vec<String>, Plot) {
-    let sol = &app.lab.solution;
     let columns = usize::from(area.width.saturating_sub(10));
-    let samples = cache.samples(&app.lab, columns);
+    let samples = cache.samples(&app.lab, (columns, app.chart_range()));
     let (balls, which) = balls_shown(app.chart_ball);
     let curves: Vec<Curve> = balls
         .iter()
@@ -334,7 +370,7 @@ fn velocities(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (V
     let whos: Vec<Who> = balls.iter().map(|&i| Who::ball(i)).collect();
     vlines.extend(event_lines(app, &whos, theme));
     let plot = Plot {
-        x_range: (sol.t_start, sol.t_end),
+        x_range: app.chart_range(),
         y_range: (y0, y1),
         x_title: "t (s)".into(),
         y_title: "v (m/s)".into(),
@@ -363,9 +399,8 @@ fn thin_to(points: Vec<(f64, f64)>, n: usize) -> Vec<(f64, f64)> {
 const POSITION: Dimension = Dimension::Length;
 
 fn positions(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Vec<String>, Plot) {
-    let sol = &app.lab.solution;
     let columns = usize::from(area.width.saturating_sub(10));
-    let samples = cache.samples(&app.lab, columns);
+    let samples = cache.samples(&app.lab, (columns, app.chart_range()));
     let mut series = pinned_series(
         app,
         cache,
@@ -405,7 +440,7 @@ fn positions(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Ve
     let rows = usize::from(area.height.saturating_sub(4));
     let ((y0, y1), _) = bounds(&series, app.lab.points.as_deref(), rows);
     let plot = Plot {
-        x_range: (sol.t_start, sol.t_end),
+        x_range: app.chart_range(),
         y_range: (y0, y1),
         x_title: "t (s)".into(),
         y_title: format!("x ({})", POSITION.display_unit().0),
@@ -426,9 +461,8 @@ fn positions(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Ve
 /// Energy against time: the kinetic parts and what friction, impacts and rolling
 /// resistance have taken so far, with their constant sum (the initial energy).
 fn energy(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Vec<String>, Plot) {
-    let sol = &app.lab.solution;
     let columns = usize::from(area.width.saturating_sub(10));
-    let split = cache.energies(&app.lab, columns);
+    let split = cache.energies(&app.lab, (columns, app.chart_range()));
     let letters = theme.uncoloured_curves() || theme.glyphs.ascii;
     let draw = if letters && !theme.glyphs.ascii {
         // Braille cannot carry a letter: mark each sample cell instead.
@@ -465,7 +499,7 @@ fn energy(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Vec<S
             PlotLine {
                 name: "pinned kinetic".into(),
                 points: cache
-                    .pinned_kinetic(&app.lab, columns)
+                    .pinned_kinetic(&app.lab, (columns, app.chart_range()))
                     .iter()
                     .copied()
                     .collect(),
@@ -497,7 +531,7 @@ fn energy(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Vec<S
     // Room above the total for the event labels on the top row.
     let ((_, y1), _) = nice_ticks(0.0, 1.1 * total, (rows / 3).max(2));
     let plot = Plot {
-        x_range: (sol.t_start, sol.t_end),
+        x_range: app.chart_range(),
         y_range: (0.0, y1.max(f64::MIN_POSITIVE)),
         x_title: "t (s)".into(),
         y_title: name("E (J)", "J").into(),

@@ -23,5 +23,6 @@ pub mod scene;
 pub mod status;
 pub mod table;
 pub mod video;
+pub mod withheld;
 
 pub use crate::tui::layout::{MIN_SIZE, Panels, layout};

@@ -60,16 +60,17 @@ fn help_lines(width: usize, theme: &Theme) -> Vec<Line<'static>> {
             lines.push(Line::from(spans));
         }
     }
-    let mouse = "Mouse: click a parameter to select it, scroll on it to change it; click or drag on the chart to seek; click a preset to select it, again to load it.";
+    let mouse = "Mouse: click a parameter to select it, scroll on it to change it; click or drag on the chart to seek, scroll on it to zoom its time; click a preset to select it, again to load it.";
     for row in wrap(Line::from(format!(" {mouse}")), width) {
         lines.push(row.style(theme.dim));
     }
     lines
 }
 
-/// The help's width on a screen of `area`.
+/// The help's width on a screen of `area`: wide enough on a wide screen (200
+/// columns) for every description on one line, so that the whole table fits 60 rows.
 fn help_width(area: Rect) -> u16 {
-    area.width.saturating_sub(2).min(100)
+    area.width.saturating_sub(2).min(152)
 }
 
 /// The keys, scrolling.
