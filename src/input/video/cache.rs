@@ -25,9 +25,9 @@ pub struct Kept {
     pub view: Option<Arc<VideoView>>,
 }
 
-type Done = HashMap<(PathBuf, String), Kept>;
+type Memo = HashMap<(PathBuf, String), Kept>;
 
-static DONE: Mutex<Option<Done>> = Mutex::new(None);
+static DONE: Mutex<Option<Memo>> = Mutex::new(None);
 
 /// The process's key of a tracking: the path and the options.
 fn process_key(path: &Path, o: &Options) -> (PathBuf, String) {

@@ -80,7 +80,7 @@ pub(super) fn open(dir: &Path, limits: &Limits) -> Result<(Info, Frames), VideoE
         .map(|p| [p[0].0 + 1, p[1].0 - 1])
         .collect();
     let info = Info {
-        kind: format!("folder of {} PNG/JPEG frames", frames.len()),
+        kind: "folder of PNG/JPEG frames".into(),
         width: w,
         height: h,
         frames: frames.len() as u64,

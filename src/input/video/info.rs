@@ -29,7 +29,7 @@ pub enum RateSource {
 /// What was opened, before any frame is read.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Info {
-    /// "video (h264, mov,mp4,m4a,3gp,3g2,mj2)" or "folder of 120 PNG/JPEG frames".
+    /// "video (h264, mov,mp4,m4a,3gp,3g2,mj2)" or "folder of PNG/JPEG frames".
     pub kind: String,
     pub width: usize,
     pub height: usize,
