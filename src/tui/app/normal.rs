@@ -8,7 +8,7 @@ use crate::settings::params::Key;
 use crate::settings::spec::SceneError;
 use crate::settings::units::{Dimension, show, significant};
 
-use super::{Action, App, ChartBall, Export, Field, Mode, ROWS, SPEEDS, Status, View};
+use super::{Action, App, Export, Field, Mode, ROWS, SPEEDS, Status, View};
 
 impl App {
     /// One fine or coarse step of the selected parameter. A step past a limit stops at
@@ -58,6 +58,9 @@ impl App {
     }
 
     pub(super) fn apply_normal(&mut self, action: Action) {
+        if self.offer(action) {
+            return;
+        }
         let n = ROWS.len();
         let (t0, t1) = (self.lab.solution.t_start, self.lab.solution.t_end);
         match action {
@@ -88,22 +91,12 @@ impl App {
             }
             Action::NextEvent | Action::PrevEvent => self.jump_to_event(action),
             Action::CycleSpan => self.cycle_span(),
-            Action::ZoomIn | Action::ZoomOut => {
-                // Around the cursor: a window the wheel moved away from it comes back.
-                self.zoom.follow(self.t, self.chart_span());
-                self.zoom_around(self.t, action == Action::ZoomIn);
-            }
-            Action::ZoomWhole => {
-                self.status = Status::Info(if self.zoom.whole() {
-                    "time zoom off: the whole run".into()
-                } else {
-                    "the charts show the whole run (z zooms in)".into()
-                });
-            }
-            Action::ToggleEnergy => {
-                self.show_energy = !self.show_energy;
-                self.show_positions = false;
-            }
+            // The charts' own keys (offered to them first, see `offer`).
+            Action::ZoomIn
+            | Action::ZoomOut
+            | Action::ZoomWhole
+            | Action::ToggleEnergy
+            | Action::TogglePositions => {}
             Action::TogglePin => self.toggle_pin(),
             Action::Start => self.t = t0,
             Action::End => {
@@ -125,10 +118,6 @@ impl App {
             Action::Export(kind) => self.ask_export(kind),
             Action::ApplyFit => self.apply_fit(),
             Action::SwitchBall => self.switch_ball(),
-            Action::TogglePositions => {
-                self.show_positions = !self.show_positions;
-                self.show_energy = false;
-            }
             Action::ShowView(view) => self.toggle_view(view),
             Action::Predict => self.ask_prediction(),
             Action::HideWidth => self.toggle_hide_width(),
@@ -359,18 +348,10 @@ impl App {
         );
     }
 
-    /// The ball key: in the Forces view the ball of the front view and the chain,
-    /// else the velocity chart's ball (left, right, both).
+    /// The ball key in the Forces view: the ball of the front view and the chain (the
+    /// charts take it in the other views, see `offer`).
     fn switch_ball(&mut self) {
-        if self.view == View::Forces {
-            self.forces_ball = 1 - self.forces_ball;
-            return;
-        }
-        self.chart_ball = match self.chart_ball {
-            ChartBall::Left => ChartBall::Right,
-            ChartBall::Right => ChartBall::Both,
-            ChartBall::Both => ChartBall::Left,
-        }
+        self.forces_ball = 1 - self.forces_ball;
     }
 
     fn toggle_hide_width(&mut self) {
