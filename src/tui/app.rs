@@ -26,6 +26,7 @@ pub use super::vocabulary::{
 use super::jobs::{ExportRun, FitRuns, Jobs, MethodRows, Notice, OverlayRun};
 use super::line::History;
 use super::view::charts::state::{ChartState, Moment};
+use super::view::forces::state::ForcesState;
 use super::vocabulary::{DEFAULT_SPEED, Handled, WorkAxis};
 
 /// The rows of the parameters panel, top to bottom: the table's rows that have steps.
@@ -68,7 +69,7 @@ pub struct App {
     /// Where `w`/`W` write a bare file name.
     pub export_dir: PathBuf,
     /// The ball the Forces view's front view shows: 0 left, 1 right.
-    pub forces_ball: usize,
+    forces: ForcesState,
     /// What the screen hides while b is hidden (a class predicts from the picture
     /// alone): the one rule.
     pub hide: super::hide::Hide,
@@ -114,7 +115,7 @@ impl App {
             scroll: 0,
             scroll_max: usize::MAX,
             export_dir: PathBuf::from("."),
-            forces_ball: 0,
+            forces: ForcesState::default(),
             hide: super::hide::Hide::default(),
             prediction: None,
             histories: Histories::default(),
@@ -267,6 +268,11 @@ impl App {
         &self.charts
     }
 
+    /// The Forces view's state.
+    pub fn forces(&self) -> &ForcesState {
+        &self.forces
+    }
+
     /// Where the charts' keys act now.
     fn moment(&self) -> Moment {
         Moment {
@@ -314,8 +320,12 @@ impl App {
     /// Offers `action` to the component of the view shown that owns it (the Forces
     /// view's ball key is its own); true if one took it.
     pub(super) fn offer(&mut self, action: Action) -> bool {
-        if self.view == View::Forces && action == Action::SwitchBall {
-            return false;
+        let answer = match self.view {
+            View::Forces => self.forces.handle(action),
+            _ => Handled::Ignored,
+        };
+        if self.handled(answer) {
+            return true;
         }
         let moment = self.moment();
         let answer = self.charts.handle(action, moment);

@@ -96,7 +96,8 @@ impl App {
             | Action::ZoomOut
             | Action::ZoomWhole
             | Action::ToggleEnergy
-            | Action::TogglePositions => {}
+            | Action::TogglePositions
+            | Action::SwitchBall => {}
             Action::TogglePin => self.toggle_pin(),
             Action::Start => self.t = t0,
             Action::End => {
@@ -117,7 +118,6 @@ impl App {
             Action::DataTable => self.open_data_table(),
             Action::Export(kind) => self.ask_export(kind),
             Action::ApplyFit => self.apply_fit(),
-            Action::SwitchBall => self.switch_ball(),
             Action::ShowView(view) => self.toggle_view(view),
             Action::Predict => self.ask_prediction(),
             Action::HideWidth => self.toggle_hide_width(),
@@ -346,12 +346,6 @@ impl App {
                 kind.extension()
             )),
         );
-    }
-
-    /// The ball key in the Forces view: the ball of the front view and the chain (the
-    /// charts take it in the other views, see `offer`).
-    fn switch_ball(&mut self) {
-        self.forces_ball = 1 - self.forces_ball;
     }
 
     fn toggle_hide_width(&mut self) {
