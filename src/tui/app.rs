@@ -27,6 +27,7 @@ use super::jobs::{ExportRun, FitRuns, Jobs, MethodRows, Notice, OverlayRun};
 use super::line::History;
 use super::view::charts::state::{ChartState, Moment};
 use super::view::forces::state::ForcesState;
+use super::view::methods::state::MethodsState;
 use super::vocabulary::{DEFAULT_SPEED, Handled, WorkAxis};
 
 /// The rows of the parameters panel, top to bottom: the table's rows that have steps.
@@ -60,7 +61,7 @@ pub struct App {
     /// The app's jobs on its worker pool.
     jobs: Jobs,
     /// What the Methods view puts on its work axis.
-    pub work_axis: WorkAxis,
+    methods_state: MethodsState,
     /// First line shown of a scrolling popup (help, data table).
     pub scroll: usize,
     /// The largest useful `scroll` at the size last laid out (the screen tells it
@@ -111,7 +112,7 @@ impl App {
             fit: FitRuns::default(),
             export: ExportRun::default(),
             jobs: Jobs::new(pool),
-            work_axis: WorkAxis::default(),
+            methods_state: MethodsState::default(),
             scroll: 0,
             scroll_max: usize::MAX,
             export_dir: PathBuf::from("."),
@@ -273,6 +274,11 @@ impl App {
         &self.forces
     }
 
+    /// The Methods view's state.
+    pub fn methods_state(&self) -> &MethodsState {
+        &self.methods_state
+    }
+
     /// Where the charts' keys act now.
     fn moment(&self) -> Moment {
         Moment {
@@ -327,6 +333,10 @@ impl App {
         if self.handled(answer) {
             return true;
         }
+        let answer = self.methods_state.handle(action);
+        if self.handled(answer) {
+            return true;
+        }
         let moment = self.moment();
         let answer = self.charts.handle(action, moment);
         self.handled(answer)
@@ -351,7 +361,7 @@ impl App {
     /// Requests what the views shown want of this scene (a request already made for
     /// it runs on; one made for an earlier scene is superseded, its result dropped).
     pub fn sync_jobs(&mut self) {
-        let timed = self.work_axis == WorkAxis::Time;
+        let timed = self.methods_state.axis() == WorkAxis::Time;
         let methods = self.view == View::Methods;
         self.methods.sync(methods, timed, &self.lab, &self.jobs);
         self.overlay.sync(&self.lab, &self.jobs);

@@ -274,7 +274,7 @@ impl App {
             Figure::Methods => match self.methods.state() {
                 State::Ready(rows) => {
                     let rows = rows.clone();
-                    let work = match self.work_axis {
+                    let work = match self.methods_state.axis() {
                         WorkAxis::Steps => figures::Work::Steps,
                         WorkAxis::RhsEvals => figures::Work::RhsEvals,
                         WorkAxis::Time => figures::Work::Time,

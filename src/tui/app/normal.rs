@@ -97,7 +97,8 @@ impl App {
             | Action::ZoomWhole
             | Action::ToggleEnergy
             | Action::TogglePositions
-            | Action::SwitchBall => {}
+            | Action::SwitchBall
+            | Action::CycleWorkAxis => {}
             Action::TogglePin => self.toggle_pin(),
             Action::Start => self.t = t0,
             Action::End => {
@@ -124,10 +125,6 @@ impl App {
             Action::Undo => self.undo(),
             Action::Reset => self.reset(),
             Action::DropData => self.drop_data(),
-            Action::CycleWorkAxis => {
-                self.work_axis = self.work_axis.next();
-                self.status = Status::Info(format!("work axis: {}", self.work_axis.name()));
-            }
             Action::FitStartEarlier => self.move_window(false, false),
             Action::FitStartLater => self.move_window(false, true),
             Action::FitEndEarlier => self.move_window(true, false),
