@@ -7,19 +7,20 @@ use super::residuals::{fit_points, mean_cost};
 use super::uncertainty::{clamped, solve};
 use crate::physics::scene::Scene;
 
-/// Scene with the fit parameters `p` applied.
+/// Scene with the fit parameters `p` applied, each written by its row of the
+/// parameter table; a step of the search that leaves the physical range is held at
+/// its edge (μ_k just above 0, 0 ≤ e ≤ 1, c_rr ≥ 0).
 pub(super) fn with(scene: &Scene, free: &[Free], p: &[f64]) -> Scene {
     let mut s = *scene;
+    let mut span = crate::physics::scene::Span::default();
     for (f, &v) in free.iter().zip(p) {
-        match f {
-            Free::Mu => s.mu = v.max(1e-6),
-            Free::V0 => {
-                s.left.v0 = v;
-                s.right.v0 = v;
-            }
-            Free::Restitution => s.restitution = v.clamp(0.0, 1.0),
-            Free::RollingResistance => s.rolling_resistance = v.max(0.0),
-        }
+        let v = match f {
+            Free::Mu => v.max(1e-6),
+            Free::V0 => v,
+            Free::Restitution => v.clamp(0.0, 1.0),
+            Free::RollingResistance => v.max(0.0),
+        };
+        (f.key().param().set)(&mut s, &mut span, v);
     }
     s
 }

@@ -7,6 +7,7 @@ use serde::Serialize;
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::Solution;
+use crate::settings::params::Key;
 use crate::settings::units::significant;
 use crate::study::Progress;
 use crate::study::measured::series::Measured;
@@ -214,21 +215,22 @@ pub enum Free {
 impl Free {
     /// Its value in `scene` (v0: the left ball's).
     pub fn value_in(self, scene: &Scene) -> f64 {
-        match self {
-            Free::Mu => scene.mu,
-            Free::V0 => scene.left.v0,
-            Free::Restitution => scene.restitution,
-            Free::RollingResistance => scene.rolling_resistance,
-        }
+        (self.key().param().get)(scene, &Span::default()).unwrap_or(f64::NAN)
     }
 
     /// The name on the command line and in JSON.
     pub fn name(self) -> &'static str {
+        self.key().param().name
+    }
+
+    /// Its row of the scene parameter table, which gives its name, symbol, label,
+    /// unit and physical range (a fitted value is a scene parameter set free).
+    pub fn key(self) -> Key {
         match self {
-            Free::Mu => "mu",
-            Free::V0 => "v0",
-            Free::Restitution => "restitution",
-            Free::RollingResistance => "rolling_resistance",
+            Free::Mu => Key::Mu,
+            Free::V0 => Key::V0,
+            Free::Restitution => Key::Restitution,
+            Free::RollingResistance => Key::RollingResistance,
         }
     }
 }
