@@ -2,7 +2,7 @@
 //! symbol, unit, range, steps, default, help and how it is read from and written to
 //! a scene, as data.
 
-use super::{Fallback, Key, Param, Range, Steps};
+use super::row::{Fallback, Key, Param, Range, Steps};
 use crate::physics::closed_form::{release_height, release_speed};
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::LATEST_END;

@@ -2,10 +2,35 @@
 //! Levenberg–Marquardt with numerical derivatives of the residuals
 //! ([`super::residuals`]).
 
-use super::problem::{FitError, Free, Problem};
-use super::residuals::{fit_points, mean_cost};
+use super::problem::{Evals, FitError, Free};
+use super::residuals::{Target, fit_points, mean_cost, residuals};
 use super::uncertainty::{clamped, solve};
 use crate::physics::scene::Scene;
+use crate::study::measured::series::Measured;
+
+/// One fit's problem, which the search and its derivatives take whole: the scene it
+/// starts from, the data, the values it frees, what it compares with the data, and
+/// the counter of its model evaluations.
+#[derive(Clone, Copy)]
+pub(super) struct Problem<'a> {
+    pub scene: &'a Scene,
+    pub m: &'a Measured,
+    pub free: &'a [Free],
+    pub target: Target,
+    pub evals: &'a Evals<'a>,
+}
+
+impl Problem<'_> {
+    /// The scene with the free values `p`.
+    pub fn at(&self, p: &[f64]) -> Scene {
+        with(self.scene, self.free, p)
+    }
+
+    /// The weighted residuals of the free values `p` at the frames `idx`.
+    pub fn residuals(&self, p: &[f64], idx: &[usize]) -> Vec<f64> {
+        residuals(&self.at(p), self.m, idx, self.target, self.evals)
+    }
+}
 
 /// Scene with the fit parameters `p` applied, each written by its row of the
 /// parameter table; a step of the search that leaves the physical range is held at

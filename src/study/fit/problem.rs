@@ -10,9 +10,6 @@ use crate::physics::solution::Solution;
 use crate::settings::params::Key;
 use crate::settings::units::significant;
 use crate::study::Progress;
-use crate::study::measured::series::Measured;
-
-use super::residuals::Target;
 
 /// Why a fit cannot be made.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -175,30 +172,6 @@ impl<'a> Evals<'a> {
     #[cfg(test)]
     pub(super) fn segments(&self) -> u64 {
         self.segments.get()
-    }
-}
-
-/// One fit's problem, which the search and its derivatives take whole: the scene it
-/// starts from, the data, the values it frees, what it compares with the data, and
-/// the counter of its model evaluations.
-#[derive(Clone, Copy)]
-pub(super) struct Problem<'a> {
-    pub scene: &'a Scene,
-    pub m: &'a Measured,
-    pub free: &'a [Free],
-    pub target: Target,
-    pub evals: &'a Evals<'a>,
-}
-
-impl Problem<'_> {
-    /// The scene with the free values `p`.
-    pub fn at(&self, p: &[f64]) -> Scene {
-        super::least_squares::with(self.scene, self.free, p)
-    }
-
-    /// The weighted residuals of the free values `p` at the frames `idx`.
-    pub fn residuals(&self, p: &[f64], idx: &[usize]) -> Vec<f64> {
-        super::residuals::residuals(&self.at(p), self.m, idx, self.target, self.evals)
     }
 }
 
