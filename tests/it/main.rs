@@ -26,6 +26,7 @@ mod motion;
 mod names;
 mod numbers;
 mod params;
+mod point_sigma;
 mod presets;
 mod pressed_contact;
 mod properties;

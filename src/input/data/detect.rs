@@ -18,10 +18,13 @@ pub fn read_with_notes(
 ) -> Result<(RawSeries, Notes), DataError> {
     let (raw, notes) = read_any(text, file, reading)?;
     let raw = match raw {
-        RawSeries::Positions(t) => RawSeries::Positions(Track {
-            scale_rel_se: super::scene::scale_rel_se(text),
-            ..t
-        }),
+        RawSeries::Positions(t) => RawSeries::Positions(super::sigmas::with_sigmas(
+            text,
+            Track {
+                scale_rel_se: super::scene::scale_rel_se(text),
+                ..t
+            },
+        )),
         v => v,
     };
     Ok((raw, notes))

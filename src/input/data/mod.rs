@@ -12,6 +12,7 @@ mod positions;
 mod report;
 mod scales;
 mod scene;
+mod sigmas;
 mod table;
 mod trk;
 mod velocities;

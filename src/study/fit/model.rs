@@ -208,6 +208,8 @@ pub fn thinned(m: &Measured) -> Option<(Measured, usize)> {
             v_t_sigma: pick_opt(&m.v_t_sigma),
             x: pick_opt(&m.x),
             angle: pick_opt(&m.angle),
+            x_sigma: pick_opt(&m.x_sigma),
+            angle_sigma: pick_opt(&m.angle_sigma),
             stencils: m.stencils.as_ref().map(|s| {
                 let pick = |v: &[Option<_>]| v.iter().step_by(k).copied().collect();
                 std::sync::Arc::new(Stencils {

@@ -102,7 +102,7 @@ pub(super) fn labelled_residuals(
     let sol = evals.solve(scene, m.t[0].min(-1e-3));
     match target {
         Target::Velocity => velocity_residuals(&sol, m, idx, weighted),
-        Target::Position => position_residuals(scene, &sol, m, idx),
+        Target::Position => position_residuals(scene, &sol, m, idx, weighted),
     }
 }
 
@@ -229,14 +229,16 @@ fn frame_at_impact(t: &[f64]) -> f64 {
     }
 }
 
-/// The position residuals (x, and r θ of the mark), unweighted.
+/// The position residuals (x, and r θ of the mark), each over its point's σ when
+/// `weighted` and the track states them ([`point_weights`]).
 fn position_residuals(
     scene: &Scene,
     sol: &Solution,
     m: &Measured,
     idx: &[usize],
+    weighted: bool,
 ) -> (Vec<f64>, Vec<Label>) {
-    let rows = position_rows(scene, sol, m, idx);
+    let rows = position_rows(scene, sol, m, idx, weighted);
     let shift = profiled_shift(&rows, m.angle.is_some());
     rows.iter()
         .map(|(row, label)| {
@@ -249,13 +251,15 @@ fn position_residuals(
 
 /// Each position residual of `scene`'s run `sol` against the track `m` at `idx`, with
 /// its derivatives by the impact's time, place and mark angle shifts (δt, δx, δθ:
-/// linearised, x moves by v δt, r θ by u δt), and which frame and whether the mark's.
-/// Rows not all finite are left out.
+/// linearised, x moves by v δt, r θ by u δt), and which frame and whether the mark's;
+/// each row over its point's σ when `weighted` ([`point_weights`]). Rows not all
+/// finite are left out.
 fn position_rows(
     scene: &Scene,
     sol: &Solution,
     m: &Measured,
     idx: &[usize],
+    weighted: bool,
 ) -> Vec<([f64; 4], Label)> {
     let (Some(x), radius) = (m.x.as_ref(), scene.k() * scene.radius) else {
         return Vec::new();
@@ -265,20 +269,60 @@ fn position_rows(
         .angle
         .as_ref()
         .map(|a| branch_offset(idx.iter().map(|&i| sol.angle_at(m.t[i])[0] - theta0 - a[i])));
+    let w = point_weights(m, weighted, radius);
+    let times = |row: [f64; 4], w: f64| row.map(|v| v * w);
     let mut rows: Vec<([f64; 4], Label)> = Vec::with_capacity(2 * idx.len());
     for &i in idx {
         let s = sol.at(m.t[i]);
         rows.push((
-            [s.left.x + scene.radius - x[i], s.left.v, -1.0, 0.0],
+            times(
+                [s.left.x + scene.radius - x[i], s.left.v, -1.0, 0.0],
+                w.0(i),
+            ),
             (i, false),
         ));
         if let (Some(a), Some(c)) = (&m.angle, turn) {
             let d = same_turn(sol.angle_at(m.t[i])[0] - theta0 - a[i], c);
-            rows.push(([radius * d, s.left.u, 0.0, -radius], (i, true)));
+            rows.push((
+                times([radius * d, s.left.u, 0.0, -radius], w.1(i)),
+                (i, true),
+            ));
         }
     }
     rows.retain(|(row, _)| row.iter().all(|v| v.is_finite()));
     rows
+}
+
+/// The weights of a point's x residual and of its mark's r θ residual (1/σ of each,
+/// from `x_sigma`, and `angle_sigma` times the contact radius `radius`), when
+/// `weighted` and the track states the σ of x and (with a mark) of the angle; else 1
+/// for all, as without σ. A weight that is not a number leaves its row out.
+fn point_weights(
+    m: &Measured,
+    weighted: bool,
+    radius: f64,
+) -> (impl Fn(usize) -> f64 + '_, impl Fn(usize) -> f64 + '_) {
+    let x = m.x_sigma.as_deref().filter(|_| weighted);
+    let angle = m.angle_sigma.as_deref();
+    // Both or neither: x in metres beside unweighted angles would mix units.
+    let on = x.is_some() && (m.angle.is_none() || angle.is_some());
+    let inverse = |s: Option<&f64>, scale: f64| s.map_or(f64::NAN, |s| 1.0 / (s * scale));
+    (
+        move |i: usize| {
+            if on {
+                inverse(x.and_then(|s| s.get(i)), 1.0)
+            } else {
+                1.0
+            }
+        },
+        move |i: usize| {
+            if on {
+                inverse(angle.and_then(|s| s.get(i)), radius)
+            } else {
+                1.0
+            }
+        },
+    )
 }
 
 /// The common offset (rad) of model-minus-measured mark angles, as their circular mean:
@@ -327,7 +371,7 @@ pub fn aligned_track(scene: &Scene, sol: &Solution, m: &Measured) -> Option<Vec<
     let idx: Vec<usize> = (0..m.t.len())
         .filter(|&i| (sol.t_start..=sol.t_end).contains(&m.t[i]))
         .collect();
-    let rows = position_rows(scene, sol, m, &idx);
+    let rows = position_rows(scene, sol, m, &idx, true);
     let shift = profiled_shift(&rows, m.angle.is_some());
     let mut out = vec![f64::NAN; m.t.len()];
     for &i in &idx {

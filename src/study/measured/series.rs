@@ -50,6 +50,13 @@ pub struct Measured {
     /// μ_k and v0, carries it besides the fit's own ±.
     #[serde(skip)]
     pub scale_rel_se: Option<f64>,
+    /// The standard error of each point's `x`, m, where the track stated its points'
+    /// σ (`groovelab track` does): the position fit weights by it.
+    #[serde(skip)]
+    pub x_sigma: Option<Vec<f64>>,
+    /// The same for each point's `angle`, rad (NaN where the mark is missing).
+    #[serde(skip)]
+    pub angle_sigma: Option<Vec<f64>>,
 }
 
 /// The weights with which a derived velocity was made from tracked frames `lo..=hi`
@@ -174,6 +181,11 @@ pub struct Track {
     /// The relative standard error of the lengths' scale, where the file states one
     /// (`# scale = S ± σ px/m`, as `groovelab track` writes it).
     pub scale_rel_se: Option<f64>,
+    /// Each frame's standard error of the centre's x and y, m, where the file states
+    /// it (`groovelab track`'s `# σ` lines); NaN for a frame without one.
+    pub sigma: Option<Vec<f64>>,
+    /// The same for the rim mark, m.
+    pub mark_sigma: Option<Vec<f64>>,
 }
 
 /// Two one-track exports with no frame in common: the centre's and the mark's first

@@ -15,6 +15,7 @@
 pub mod derivative;
 mod found;
 mod impacts;
+mod sigmas;
 
 use serde::Serialize;
 
@@ -292,6 +293,7 @@ pub fn derive(
     m.v_cm_sigma = Some(sig_cm);
     m.stencils = Some(std::sync::Arc::new(stencils));
     m.x = Some(pos);
+    (m.x_sigma, m.angle_sigma) = sigmas::point_sigmas(track, &rows, &dx, spin.is_some());
     if spin.is_some() {
         m.v_t_sigma = Some(sig_t);
         m.angle = Some(ang);
