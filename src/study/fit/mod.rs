@@ -1,7 +1,8 @@
 //! Fitting the model to measured series of the left ball: the paper's line fits over
 //! the sliding phase (table 1), and least-squares fits of the exact model to every
 //! point — of the velocities (weighted by their uncertainties when known) or of the
-//! tracked positions — with uncertainties and the regime compared with what was seen.
+//! tracked positions (weighted by each point's σ when the track states them) — with
+//! uncertainties and the regime compared with what was seen.
 //! The line fits are in `line`, the model fit in `model` (what it is asked and how it
 //! stops in `problem`), the comparison of models in `choice`; here both fits of a
 //! series are made together.

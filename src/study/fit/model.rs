@@ -241,7 +241,9 @@ pub fn model_fit(
 
 /// Least squares of the exact model's positions to a tracked series (`m.x`, and
 /// `m.angle` when the rim mark was tracked): no differentiation, so its uncertainty
-/// comes from independent residuals. `rms` is then in metres (x and r θ).
+/// comes from independent residuals. Points with a σ (`x_sigma`, `angle_sigma`) count
+/// by its inverse square; the ± then still comes from the weighted residuals'
+/// scatter. `rms` is in metres (x and r θ), unweighted.
 pub fn position_fit(
     scene: &Scene,
     m: &Measured,
