@@ -295,8 +295,7 @@ pub fn derive(
     m.x = Some(pos);
     (m.x_sigma, m.angle_sigma) = sigmas::point_sigmas(track, &rows, &dx, spin.is_some());
     if spin.is_some() {
-        m.v_t_sigma = Some(sig_t);
-        m.angle = Some(ang);
+        (m.v_t_sigma, m.angle) = (Some(sig_t), Some(ang));
     }
     let (centre_gaps, mark_missing, mark_gaps) = gaps(track, &rows, &ts, spin.as_ref());
     let found = Found {
