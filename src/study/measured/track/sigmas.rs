@@ -7,8 +7,9 @@ use super::super::series::Track;
 use super::derivative::{Local, median};
 
 /// The σ of each point of the derived series (the frames `rows[i]` whose `dx[i]` is
-/// a fit): of the centre's x, m, and with a mark (`spin`) of its angle, rad; `None`
-/// where the track states no σ. A frame without a usable σ gets the median of the
+/// a fit): of the centre's x, m, and with a mark (`spin`) of its angle, rad (the
+/// centre's σ standing in for a mark without its own); `None` where the track states
+/// no σ for the centre. A frame without a usable σ gets the median of the
 /// others (a typical point), and none counts for more than a hundred typical ones
 /// (σ at least a tenth of the median: a σ of zero would decide the fit alone).
 pub(super) fn point_sigmas(
@@ -27,8 +28,12 @@ pub(super) fn point_sigmas(
         return (None, None);
     };
     let angle = match (&track.mark, track.mark_sigma.as_deref(), spin) {
-        (Some((mx, my)), Some(ms), true) => {
-            let mark = usable(ms, &points).unwrap_or_else(|| centre.clone());
+        (Some((mx, my)), ms, true) => {
+            // Without the mark's own σ, the centre's stands in (both are points of
+            // the same picture).
+            let mark = ms
+                .and_then(|s| usable(s, &points))
+                .unwrap_or_else(|| centre.clone());
             let a = points
                 .iter()
                 .enumerate()
@@ -63,4 +68,64 @@ fn usable(sigma: &[f64], points: &[usize]) -> Option<Vec<f64>> {
             .map(|s| if ok(s) { s.max(0.1 * mid) } else { mid })
             .collect(),
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::study::measured::series::Stencil;
+
+    #[test]
+    fn each_point_gets_its_frames_sigma_filled_and_floored() {
+        let local = Some(Local {
+            value: 0.0,
+            slope: 0.0,
+            slope_se: 0.0,
+            stencil: Stencil {
+                lo: 0,
+                hi: 0,
+                t0: 0.0,
+                h: 1.0,
+                c: [0.0; 3],
+            },
+        });
+        // Five frames, the fourth without a centre fit (no point); the mark 3 cm from
+        // the centre, straight above it.
+        let track = Track {
+            t: vec![0.0, 0.01, 0.02, 0.03, 0.04],
+            x: vec![0.0; 5],
+            y: vec![0.0; 5],
+            mark: Some((vec![0.0; 5], vec![0.03; 5])),
+            sigma: Some(vec![1e-4, f64::NAN, 1e-9, 5.0, 3e-4]),
+            mark_sigma: Some(vec![1e-4; 5]),
+            ..Track::default()
+        };
+        let dx = [local, local, local, None, local];
+        let (x, angle) = point_sigmas(&track, &[0, 1, 2, 3, 4], &dx, true);
+        let (x, angle) = (x.unwrap(), angle.unwrap());
+        // Points at frames 0, 1, 2, 4: the usable σ 1e-4, 1e-9, 3e-4 have the median
+        // 1e-4; the missing one gets it, the tiny one a tenth of it.
+        assert_eq!(x, vec![1e-4, 1e-4, 1e-5, 3e-4]);
+        // σ_θ = √(σ_c² + σ_m²)/ρ.
+        let want = 1e-4f64.hypot(1e-4) / 0.03;
+        assert!((angle[0] - want).abs() <= 1e-12 * want, "{angle:?}");
+        // Without a mark's σ the centre's stands in; without the centre's, none.
+        let no_mark = Track {
+            mark_sigma: None,
+            ..track.clone()
+        };
+        let angle = point_sigmas(&no_mark, &[0, 1, 2, 3, 4], &dx, true)
+            .1
+            .unwrap();
+        let want = 1e-5f64.hypot(1e-5) / 0.03;
+        assert!((angle[2] - want).abs() <= 1e-12 * want, "{angle:?}");
+        let none = Track {
+            sigma: None,
+            ..track
+        };
+        assert_eq!(
+            point_sigmas(&none, &[0, 1, 2, 3, 4], &dx, true),
+            (None, None)
+        );
+    }
 }
