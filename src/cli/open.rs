@@ -175,10 +175,17 @@ pub fn lab(scene_args: &SceneArgs, data: &DataArgs) -> Result<Lab, CliError> {
     {
         settings.scene_file = data.data.first().map(|p| p.display().to_string());
     }
-    // Under the default preset (none named), the data give what they measure (v0)
-    // below the options and the file's lines: a preset named is the user's scene.
-    if let Some((series, _)) = loaded.as_ref().filter(|_| scene_args.preset.is_none()) {
-        settings.from_data = crate::lab::measured_values(series);
+    // The data give what they measure (v0) below the options and the file's lines,
+    // over whichever preset is the template.
+    if let Some((series, own_scene)) = &loaded {
+        settings.from_data = Some(crate::lab::measured_values(series));
+        // The file's lines among the options (an option typed over one wins, and
+        // differs from it).
+        settings.file_keys = own_scene
+            .given()
+            .filter(|&(k, v)| scene_args.values.given().any(|(j, w)| j == k && w == v))
+            .map(|(k, _)| k)
+            .collect();
     }
     let own = loaded.map(|(series, own_scene)| OwnData {
         groove: stated_groove(settings.preset(), &own_scene),

@@ -25,9 +25,11 @@ use crate::settings::spec::{SceneError, SceneSpec};
 use crate::study::measured::Series;
 use crate::study::preset::Preset;
 
-pub use data::{Groove, InUse, OtherGroove, OwnData, Whose, approach, measured_values};
+pub use data::{
+    Contradiction, Groove, InUse, OtherGroove, OwnData, Whose, approach, measured_values,
+};
 pub use resolved::{ChartPoint, MeasuredPoints, Pinned, Resolved, Story, differences, value_range};
-pub use settings::{Edit, Layers};
+pub use settings::{Edit, Layers, Origin};
 pub use span::SpanEnd;
 pub use work::{
     ExportResult, Exported, FitWindowError, METHOD_VIEW_LEVELS, OVERLAY_LEVELS, Overlay,

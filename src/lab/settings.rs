@@ -3,7 +3,11 @@
 //! settles them into a checked scene, its span and how the span ends. An edit is a
 //! layer entry: undo pops it; a reset is an entry too (the edits before it stop
 //! counting), and so is another preset picked (the scene starts over from it), so an
-//! accidental reset or pick can be undone like any change.
+//! accidental reset or pick can be undone like any change. Under the flags, over the
+//! preset, lie the values the data in use measure (v0 from the approach): the user's
+//! own data while loaded and not dropped, else the preset's own series — whichever
+//! preset is the template, it gives only what the data leave out. [`Origin`] says
+//! where each settled value came from.
 
 use crate::physics::scene::{Scene, Span};
 use crate::settings::params::Key;
@@ -37,9 +41,13 @@ pub struct Layers {
     pub flags: SceneSpec,
     /// The data file whose `# scene` lines are among `flags`, as the user named it.
     pub scene_file: Option<String>,
-    /// The values the user's own data measure (v0 from the approach): over the
-    /// preset, under the flags, while the flags are in force and the data not dropped.
-    pub from_data: SceneSpec,
+    /// The values the user's own data measure (v0 from the approach), `Some` while
+    /// the user's own data are loaded: over the preset (any preset, picked or not),
+    /// under the flags and edits, until the data are dropped (then the preset's own
+    /// series give theirs, [`Layers::data_values`]).
+    pub from_data: Option<SceneSpec>,
+    /// The keys (per ball) among `flags` that the data file's `# scene` lines gave.
+    pub file_keys: Vec<Key>,
     /// The app's edits, oldest first.
     edits: Vec<Edit>,
 }
@@ -50,7 +58,8 @@ impl Layers {
             start: preset,
             flags,
             scene_file: None,
-            from_data: SceneSpec::default(),
+            from_data: None,
+            file_keys: Vec::new(),
             edits: Vec::new(),
         }
     }
@@ -113,30 +122,71 @@ impl Layers {
         self.edits.contains(&Edit::DropData)
     }
 
-    /// True when the settled value of `key` (e.g. `v0`) is the data's own: the data
-    /// layer gives it, and no flag in force or edit sets it or what replaces it (a
-    /// release height).
-    pub fn from_the_data(&self, key: Key) -> bool {
-        let Some(flags) = self.flags_in_force() else {
-            return false;
-        };
-        if self.data_dropped() || self.from_data.get(key).is_none() {
-            return false;
+    /// The values the data in use measure: the user's own while loaded and not
+    /// dropped, else the preset's own series' (a preset's series are its data; its
+    /// file's values give only what they leave out).
+    pub fn data_values(&self) -> SceneSpec {
+        match (&self.from_data, self.data_dropped()) {
+            (Some(own), false) => own.clone(),
+            _ => values_of_preset(self.preset()),
         }
-        let mut upper = flags.clone();
+    }
+
+    /// True when the user's own data are loaded and not dropped.
+    pub fn own_data_in_use(&self) -> bool {
+        self.from_data.is_some() && !self.data_dropped()
+    }
+
+    /// True when the settled value of `key` (e.g. `v0`) is the data's own: the data
+    /// give it, and no flag in force or edit sets it or what replaces it (a release
+    /// height).
+    pub fn from_the_data(&self, key: Key) -> bool {
+        self.origin(key) == Origin::Data
+    }
+
+    /// Where the settled value of `key` came from: an edit in force, a flag in force
+    /// (or the data file's `# scene` line among them), the data in use, else the
+    /// preset (named assumed for a value no data measure — the masses — while the
+    /// user's own data are in use). A key setting both balls' (`v0`) is named by its
+    /// left ball's.
+    pub fn origin(&self, key: Key) -> Origin {
+        // A release height shows the v0 it stands for: its origin is that v0's.
+        let k = key.param().replaces.unwrap_or(key).param().sets[0];
+        let mut edited = SceneSpec::default();
         for edit in self.in_force() {
             if let Edit::Values(changes) = edit {
                 for &(k, v) in changes {
-                    upper.set(k, v);
+                    edited.set(k, v);
                 }
             }
         }
-        let touched = |k: Key| {
-            crate::settings::params::PARAMS.iter().any(|p| {
-                (p.key == k || p.replaces == Some(k)) && upper.given().any(|(j, _)| j == p.key)
-            })
-        };
-        !key.param().sets.iter().any(|&k| touched(k))
+        if touches(&edited, k) {
+            return Origin::Edited;
+        }
+        if let Some(flags) = self.flags_in_force()
+            && touches(flags, k)
+        {
+            return if self.file_keys.contains(&k) {
+                Origin::File
+            } else {
+                Origin::Flag
+            };
+        }
+        if self.data_values().get(k).is_some() {
+            return Origin::Data;
+        }
+        if matches!(k, Key::MassLeft | Key::MassRight) && self.own_data_in_use() {
+            return Origin::Assumed;
+        }
+        Origin::Preset
+    }
+
+    /// True when a ball's mass is assumed ([`Origin::Assumed`]): what F_net, τ_net
+    /// and the energies say beside them.
+    pub fn mass_assumed(&self) -> bool {
+        [Key::MassLeft, Key::MassRight]
+            .into_iter()
+            .any(|k| self.origin(k) == Origin::Assumed)
     }
 
     /// Sets every edit aside (the scene as the preset and the flags give it); false,
@@ -164,10 +214,8 @@ impl Layers {
             },
             None => SpanEnd::Auto,
         };
+        spec = spec.over(&self.data_values());
         if let Some(flags) = self.flags_in_force() {
-            if !self.data_dropped() {
-                spec = spec.over(&self.from_data);
-            }
             let flags: Vec<(Key, f64)> = flags.given().collect();
             set_values(&mut spec, &mut end, &flags);
         }
@@ -188,6 +236,96 @@ impl Layers {
         let (scene, span) = spec.resolve()?;
         Ok((scene, span, end))
     }
+}
+
+/// The scene values a preset's own series measure (its v0: the approach), as its
+/// file states them where they agree within the series' ± 2σ (the preset's value is
+/// that measurement, rounded as the preset wrote it), else as the series give them.
+pub fn values_of_preset(preset: &Preset) -> SceneSpec {
+    let Some(a) = preset
+        .measured
+        .as_ref()
+        .and_then(|m| crate::study::fit::of_velocities(&m.t, &m.v_cm))
+    else {
+        return SceneSpec::default();
+    };
+    let stated = preset
+        .spec
+        .get(Key::V0)
+        .filter(|v| (v - a.speed).abs() <= 2.0 * a.se);
+    SceneSpec::default().with(Key::V0, stated.unwrap_or(a.speed))
+}
+
+/// Where a settled scene value came from: the mark beside it on every screen.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Origin {
+    /// Changed in the app.
+    Edited,
+    /// An option on the command line.
+    Flag,
+    /// The data file's own `# scene` lines.
+    File,
+    /// Measured in the data in use (v0: their approach speed).
+    Data,
+    /// The preset's (or the table's default), the data being silent.
+    Preset,
+    /// The preset's value for one no data measure (the masses), while the user's own
+    /// data are in use: an assumption that enters F_net, τ_net and the energies.
+    Assumed,
+}
+
+impl Origin {
+    /// Every origin, in the order the legend lists them.
+    pub const ALL: [Origin; 6] = [
+        Origin::Data,
+        Origin::Flag,
+        Origin::File,
+        Origin::Preset,
+        Origin::Edited,
+        Origin::Assumed,
+    ];
+
+    /// The one-letter mark beside a value in the app's parameters panel.
+    pub fn mark(self) -> char {
+        match self {
+            Origin::Edited => 'e',
+            Origin::Flag => 'f',
+            Origin::File => 'h',
+            Origin::Data => 'd',
+            Origin::Preset => 'p',
+            Origin::Assumed => 'a',
+        }
+    }
+
+    /// The legend's word for the mark: "data", "flag", "header" (the data file's
+    /// `# scene` lines), "preset", "edited", "assumed".
+    pub fn legend(self) -> &'static str {
+        match self {
+            Origin::File => "header",
+            o => o.word(),
+        }
+    }
+
+    /// The word for it: "data", "flag", "file", "preset", "edited", "assumed".
+    pub fn word(self) -> &'static str {
+        match self {
+            Origin::Edited => "edited",
+            Origin::Flag => "flag",
+            Origin::File => "file",
+            Origin::Data => "data",
+            Origin::Preset => "preset",
+            Origin::Assumed => "assumed",
+        }
+    }
+}
+
+/// True when the layer `spec` sets the per-ball key `k` or what replaces it (a
+/// release height replaces v0).
+fn touches(spec: &SceneSpec, k: Key) -> bool {
+    crate::settings::params::PARAMS
+        .iter()
+        .any(|p| (p.key == k || p.replaces == Some(k)) && spec.given().any(|(j, _)| j == p.key))
 }
 
 /// The last part of a path (`ball.csv` of `runs/ball.csv`).

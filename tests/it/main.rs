@@ -23,6 +23,7 @@ mod manual;
 mod methods;
 mod motion;
 mod numbers;
+mod origins;
 mod params;
 mod presets;
 mod pressed_contact;
