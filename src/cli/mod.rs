@@ -128,9 +128,20 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         by: name,
         allowed,
     };
+    // `track` takes R (for the scale) from a preset or --radius, and nothing else of
+    // the scene: it tracks what was filmed, it simulates nothing.
+    let track_unused = matches!(cli.command, Some(Command::Track(_)))
+        .then(|| cli.scene.values.given().map(|(k, _)| k.param().name))
+        .into_iter()
+        .flatten()
+        .find(|&n| n != "radius");
     let error = match (scene_given, data_flag) {
         (Some(id), _) if !scene => unused(id, "commands that take a scene"),
-        (_, Some(id)) if !data => unused(id, "compare, fit, render and the app"),
+        _ if track_unused.is_some() => unused(
+            track_unused.unwrap_or_default(),
+            "commands that simulate a scene (track takes --radius and --preset only)",
+        ),
+        (_, Some(id)) if !data => unused(id, "compare, fit, render, data and the app"),
         // `data` takes its files as arguments.
         (_, Some(_)) if data_command && !d.data.is_empty() => unused(
             "data",

@@ -9,7 +9,8 @@
 //! preset's come back only while the model's groove is the preset's: in any other the
 //! scene shows no data ([`in_use`]).
 
-use super::settings::{Layers, Origin};
+use super::origin::Origin;
+use super::settings::Layers;
 use crate::physics::scene::Scene;
 use crate::settings::params::Key;
 use crate::settings::spec::{SceneError, SceneSpec};

@@ -12,6 +12,7 @@
 pub mod analyses;
 mod data;
 pub mod jobs;
+mod origin;
 mod resolved;
 mod settings;
 mod span;
@@ -28,8 +29,9 @@ use crate::study::preset::Preset;
 pub use data::{
     Contradiction, Groove, InUse, OtherGroove, OwnData, Whose, approach, measured_values,
 };
+pub use origin::Origin;
 pub use resolved::{ChartPoint, MeasuredPoints, Pinned, Resolved, Story, differences, value_range};
-pub use settings::{Edit, Layers, Origin};
+pub use settings::{Edit, Layers};
 pub use span::SpanEnd;
 pub use work::{
     ExportResult, Exported, FitWindowError, METHOD_VIEW_LEVELS, OVERLAY_LEVELS, Overlay,

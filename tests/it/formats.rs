@@ -34,7 +34,7 @@ fn groovelab(args: &[&str]) -> (Option<i32>, String, String) {
 }
 
 /// The paper's scene filmed at 120 frames/s, centre and rim mark, 0.2 mm of noise.
-fn filmed() -> Track {
+pub(crate) fn filmed() -> Track {
     video::track(
         &scene(),
         &Video {
@@ -47,10 +47,10 @@ fn filmed() -> Track {
 
 /// A Tracker coordinate system: origin (px), x axis turned by `angle` (degrees, ccw
 /// as the viewer sees it) and `scale` px per metre, image y downward.
-struct Coords {
-    origin: (f64, f64),
-    angle: f64,
-    scale: f64,
+pub(crate) struct Coords {
+    pub(crate) origin: (f64, f64),
+    pub(crate) angle: f64,
+    pub(crate) scale: f64,
 }
 
 impl Coords {
@@ -83,7 +83,7 @@ fn point_mass(name: &str, first_frame: usize, x: &[f64], y: &[f64], c: &Coords) 
 /// A Tracker 4.11 project (`.trk`) of `track` (centre "mass A", rim mark "mass B"), as
 /// V10.trk of the NTNU lab is laid out: the clip starting at frame `start`, Δt from
 /// the frame rate, one coordinate frame, a calibration stick, positions in pixels.
-fn trk(track: &Track, start: usize, c: &Coords) -> String {
+pub(crate) fn trk(track: &Track, start: usize, c: &Coords) -> String {
     let dt = (track.t[1] - track.t[0]) * 1e3;
     let (mx, my) = track.mark.clone().unwrap();
     let mut s = format!(
@@ -149,7 +149,7 @@ fn trk(track: &Track, start: usize, c: &Coords) -> String {
 /// XML declaration, a `VideoAnalysis` data set whose columns hold one cell per line
 /// (Time, X, Y, X2, Y2 in `unit`, "" when the video was never scaled), calculated
 /// velocity columns without cells, and a curve-fit data set with entities in its name.
-fn cmbl(track: &Track, unit: &str) -> String {
+pub(crate) fn cmbl(track: &Track, unit: &str) -> String {
     let (mx, my) = track.mark.clone().unwrap();
     let column = |id: usize, name: &str, short: &str, unit: &str, cells: &[f64]| {
         let cells: String = cells.iter().map(|v| format!("{v}\n")).collect();
@@ -173,7 +173,7 @@ fn cmbl(track: &Track, unit: &str) -> String {
 /// Logger Pro's "Export As Text" (Vernier Format 2) of `track`, CRLF line ends,
 /// positions in cm with a decimal comma (a German Logger Pro), velocity columns
 /// computed beside them.
-fn vernier(track: &Track) -> String {
+pub(crate) fn vernier(track: &Track) -> String {
     let (mx, my) = track.mark.clone().unwrap();
     let mut s = String::from(
         "Vernier Format 2\r\nball.cmbl 11/26/2026 09:41:07 .\r\nLatest\r\nTime\tX\tY\tX2\tY2\tX Velocity\r\nt\tX\tY\tX2\tY2\tVx\r\ns\tcm\tcm\tcm\tcm\tcm/s\r\n\r\n",

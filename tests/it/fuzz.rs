@@ -12,7 +12,7 @@
 //! A short run is part of `cargo test`. The long run:
 //! `GROOVELAB_FUZZ_CASES=100000 cargo test --release --test it fuzz:: -- --nocapture`
 //! (`GROOVELAB_FUZZ_SEED=N` picks another sequence; the default is fixed, so a failure
-//! in CI reproduces).
+//! in CI reproduces; `GROOVELAB_FUZZ_KEEP=1` keeps the fixture files a report names).
 
 use std::collections::BTreeMap;
 use std::ffi::OsString;
@@ -114,7 +114,9 @@ impl Case {
     }
 }
 
-const COMMANDS: [&str; 6] = ["simulate", "render", "compare", "fit", "sweep", "presets"];
+const COMMANDS: [&str; 8] = [
+    "simulate", "render", "compare", "fit", "sweep", "presets", "data", "track",
+];
 
 /// Fixture files and paths, made once per process in a temporary folder.
 struct Fixtures {
@@ -133,6 +135,10 @@ fn fixtures() -> &'static Fixtures {
         // environment only through `std` (which serialises it with this write) and load
         // built-in presets or explicit paths, which the variable does not change.
         unsafe { std::env::set_var("GROOVELAB_PRESETS", dir.join("user-presets")) };
+        // Tracking a video caches its tracks in the user's cache folder: here, never
+        // the user's (same reasoning as above).
+        unsafe { std::env::set_var("XDG_CACHE_HOME", dir.join("cache")) };
+        hostile_files(&dir);
         std::fs::write(dir.join("empty.csv"), b"").unwrap();
         std::fs::write(dir.join("good.csv"), good_csv()).unwrap();
         let mut noise = Vec::new();
@@ -387,6 +393,13 @@ fn data_paths() -> BoxedStrategy<String> {
     prop::sample::select(vec![
         f.path("good.csv"),
         f.path("good.csv"),
+        f.path("good.trk"),
+        f.path("good.cmbl"),
+        f.path("vernier.txt"),
+        f.path("laughs.trk"),
+        f.path("deep.cmbl"),
+        f.path("external.trk"),
+        f.path("frames"),
         f.path("empty.csv"),
         f.path("random.bin"),
         f.path("a-directory"),
@@ -412,6 +425,185 @@ fn data_options() -> Vec<Opt> {
         ),
         ("--impact-at", Some(quantity(&["0", "0.18", "10ms"], 'T'))),
     ]
+}
+
+/// What `track` is given: frame folders (good, gappy, empty, junk inside), files that
+/// are no video, devices.
+fn video_paths() -> BoxedStrategy<String> {
+    let f = fixtures();
+    prop::sample::select(vec![
+        f.path("frames"),
+        f.path("frames"),
+        f.path("frames-gappy"),
+        f.path("a-directory"),
+        f.path("frames-junk"),
+        f.path("junk.mp4"),
+        f.path("empty.mp4"),
+        f.path("still.png"),
+        f.path("good.trk"),
+        f.path("missing.mp4"),
+        f.path("fifo"),
+        "/dev/zero".into(),
+        String::new(),
+    ])
+    .boxed()
+}
+
+/// The hostile and the good files of the formats groovelab reads besides CSV: a
+/// Tracker project, a Logger Pro file and its text export (made by the formats tests'
+/// generators), XML that attacks the parser (entity expansion, deep nesting, an
+/// external entity), and frame folders for `track`.
+fn hostile_files(dir: &std::path::Path) {
+    use crate::formats::{Coords, cmbl, filmed, trk, vernier};
+    let track = filmed();
+    let c = Coords {
+        origin: (640.0, 360.0),
+        angle: 2.0,
+        scale: 2000.0,
+    };
+    std::fs::write(dir.join("good.trk"), trk(&track, 5, &c)).unwrap();
+    std::fs::write(dir.join("good.cmbl"), cmbl(&track, "m")).unwrap();
+    std::fs::write(dir.join("vernier.txt"), vernier(&track)).unwrap();
+    let mut laughs =
+        String::from("<?xml version=\"1.0\"?>\n<!DOCTYPE lolz [\n<!ENTITY lol \"lol\">\n");
+    for i in 1..10 {
+        let prev = if i == 1 {
+            "lol".to_string()
+        } else {
+            format!("lol{}", i - 1)
+        };
+        laughs += &format!("<!ENTITY lol{i} \"{}\">\n", format!("&{prev};").repeat(10));
+    }
+    laughs += "]>\n<object class=\"x\"><property name=\"name\">&lol9;</property></object>\n";
+    std::fs::write(dir.join("laughs.trk"), laughs).unwrap();
+    let deep = format!(
+        "<Document>{}{}</Document>",
+        "<a>".repeat(200_000),
+        "</a>".repeat(200_000)
+    );
+    std::fs::write(dir.join("deep.cmbl"), deep).unwrap();
+    std::fs::write(
+        dir.join("external.trk"),
+        "<?xml version=\"1.0\"?>\n<!DOCTYPE x [<!ENTITY e SYSTEM \"file:///etc/passwd\">]>\n<object>&e;</object>\n",
+    )
+    .unwrap();
+    // Frames: the paper's scene at 320×180, 500 px/m (R = 13.75 px), 100 frames/s.
+    use groovelab::input::video::write;
+    use groovelab::study::vision::render::{Film, Look};
+    let look = Look {
+        width: 320,
+        height: 180,
+        px_per_m: 500.0,
+        origin: (160.0, 85.0),
+        from: -0.06,
+        ..Look::default()
+    };
+    let film = Film::new(&crate::common::paper_scene(), look, 0.06);
+    for (folder, skip) in [("frames", &[][..]), ("frames-gappy", &[3usize, 4, 7][..])] {
+        let d = dir.join(folder);
+        std::fs::create_dir_all(&d).unwrap();
+        for k in 0..12 {
+            if !skip.contains(&k) {
+                let p = d.join(format!("frame{:04}.png", k + 1));
+                write::png(&p, &film.rgb(k), look.width, look.height).unwrap();
+            }
+        }
+    }
+    let junk = dir.join("frames-junk");
+    std::fs::create_dir_all(&junk).unwrap();
+    std::fs::write(junk.join("frame0001.png"), b"not a png").unwrap();
+    std::fs::write(junk.join("frame0002.jpg"), [0xff, 0xd8, 0xff, 0x00]).unwrap();
+    write::png(
+        &dir.join("still.png"),
+        &film.rgb(0),
+        look.width,
+        look.height,
+    )
+    .unwrap();
+    let mut noise = Vec::new();
+    let mut x: u32 = 777;
+    for _ in 0..20_000 {
+        x = x.wrapping_mul(1_103_515_245).wrapping_add(12345);
+        noise.push((x >> 16) as u8);
+    }
+    std::fs::write(dir.join("junk.mp4"), noise).unwrap();
+    std::fs::write(dir.join("empty.mp4"), b"").unwrap();
+}
+
+/// A Tracker project, a Logger Pro file or its text export, damaged at random (a cut,
+/// a repeat, a splice of hostile text, an early end), read by `data` or `fit`.
+fn damaged_file_case() -> BoxedStrategy<Case> {
+    const SPLICE: &[&str] = &[
+        "<",
+        ">",
+        "&",
+        "&amp;",
+        "&#0;",
+        "&#xFFFFFF;",
+        "<!DOCTYPE a [<!ENTITY b \"c\">]>",
+        "]]>",
+        "<![CDATA[",
+        "\u{0}",
+        "NaN",
+        "1e308",
+        "-",
+        "\r\n\r\n",
+        "\t\t",
+        "<property name=\"x\" type=\"double\">",
+        "</object>",
+        "<object class=\"org.opensourcephysics.cabrillo.tracker.PointMass\">",
+        "<ColumnCells>",
+        "</ColumnCells>",
+        "inf\n",
+        "Vernier Format 2\r\n",
+    ];
+    let base = prop::sample::select(vec!["good.trk", "good.cmbl", "vernier.txt"]);
+    let damage = prop::collection::vec(
+        (0u8..4, any::<prop::sample::Index>(), 1usize..400, s(SPLICE)),
+        1..4,
+    );
+    (
+        base,
+        damage,
+        s(&[
+            "data",
+            "data --format json",
+            "fit --radius 2.75cm --width 4.9cm",
+            "fit --format json",
+        ]),
+    )
+        .prop_map(|(base, damage, command)| {
+            let f = fixtures();
+            let mut bytes = std::fs::read(f.dir.join(base)).unwrap();
+            for (kind, at, len, splice) in damage {
+                let i = at.index(bytes.len().max(1)).min(bytes.len());
+                let j = (i + len).min(bytes.len());
+                match kind {
+                    0 => {
+                        bytes.drain(i..j);
+                    }
+                    1 => {
+                        let piece = bytes[i..j].to_vec();
+                        bytes.splice(i..i, piece);
+                    }
+                    2 => {
+                        bytes.splice(i..i, splice.bytes());
+                    }
+                    _ => bytes.truncate(i),
+                }
+            }
+            let ext = base.rsplit('.').next().unwrap();
+            let file = f.dir.join(format!("damaged.{ext}"));
+            let mut args: Vec<String> = command.split(' ').map(String::from).collect();
+            if command.starts_with("fit") {
+                args.push("--data".into());
+            }
+            args.push(file.display().to_string());
+            let mut case = to_case("damaged", args);
+            case.files.push((file, bytes));
+            case
+        })
+        .boxed()
 }
 
 fn output_paths() -> BoxedStrategy<String> {
@@ -481,6 +673,18 @@ fn command_options(cmd: &str) -> Vec<Opt> {
             ("--to", Some(quantity(&["0.2", "0.3", "250ms", "0.04"], 'T'))),
             ("--free", Some(s(&["mu", "v0", "restitution", "mu,v0", "mu,restitution", "mu,v0,restitution", "v0,restitution", "", "bogus", "mu,mu"]))),
             ("--format", Some(fmt3("table"))),
+            ("--output", Some(output_paths())),
+        ],
+        "data" => vec![
+            ("--format", Some(s(&["table", "json", "csv", ""]))),
+            ("--length-unit", Some(prop_oneof![s(&["m", "cm", "mm", "px"]), s(WRONG_UNITS), s(HOSTILE)].boxed())),
+            ("--scale", Some(quantity(&["1mm", "1.105mm", "0.5cm"], 'L'))),
+            ("--track", Some(s(&["centre=mass A", "mark=mass B", "centre=", "mark=nothing", "bogus", "centre=mass B"]))),
+            ("--window", Some(quantity(&["20ms", "0.01", "1s"], 'T'))),
+        ],
+        "track" => vec![
+            ("--fps", Some(prop_oneof![s(&["100", "240", "30", "1"]), s(HOSTILE)].boxed())),
+            ("--format", Some(s(&["tracker", "json", "csv", ""]))),
             ("--output", Some(output_paths())),
         ],
         "sweep" => vec![
@@ -641,7 +845,13 @@ fn cli_case() -> BoxedStrategy<Case> {
                 // budget, not by this harness): keep it short.
                 scene.retain(|(f, _)| !matches!(*f, "--t-start" | "--t-end"));
             }
-            local.extend(data_options());
+            // `track` takes no data options, and `data` names its files without
+            // `--data`: those are refused by design, so rarely worth a case.
+            match cmd {
+                "track" => {}
+                "data" => local.extend(data_options().into_iter().filter(|(f, _)| *f != "--data")),
+                _ => local.extend(data_options()),
+            }
             let required = match cmd {
                 "sweep" => axis().prop_map(|a| vec!["--x".to_string(), a]).boxed(),
                 "compare" => (
@@ -653,6 +863,8 @@ fn cli_case() -> BoxedStrategy<Case> {
                         vec!["--t-start".into(), a, "--t-end".into(), b, "--methods".into(), m]
                     })
                     .boxed(),
+                "data" => prop::collection::vec(data_paths(), 1..3).boxed(),
+                "track" => video_paths().prop_map(|v| vec![v]).boxed(),
                 _ => Just(vec![]).boxed(),
             };
             (some_of(scene.clone()), some_of(scene), some_of(local), required, junk.clone(), any::<bool>())
@@ -1064,6 +1276,14 @@ const NULLABLE: &[&str] = &[
     // fit's sources: the approach speed of the user's own data, `null` where there are
     // none (the preset's series) or they measure none.
     "approach",
+    // track's JSON: a ball's centre (`x`, `y`, `sigma`) or its mark (`mark_x`,
+    // `mark_y`, `mark_sigma`) in a frame where it is left out, never filled in.
+    "x",
+    "y",
+    "sigma",
+    "mark_x",
+    "mark_y",
+    "mark_sigma",
 ];
 
 fn nulls(v: &serde_json::Value, key: &str, out: &mut Vec<String>) {
@@ -1079,9 +1299,19 @@ fn nulls(v: &serde_json::Value, key: &str, out: &mut Vec<String>) {
 fn nonfinite_words(text: &str) -> Vec<String> {
     // The accumulation time's label T∞ (ASCII: Tinf) is a name,
     // also where a popup's border hides its first letters.
-    let text = ["Tinf", "T∞", "|inf", "+inf", "│∞", "╮∞", "╯∞"]
-        .iter()
-        .fold(text.to_string(), |t, label| t.replace(label, "T"));
+    // A note about the file's cells names a NaN cell it left out ("empty or NaN").
+    let text = [
+        "Tinf",
+        "T∞",
+        "|inf",
+        "+inf",
+        "│∞",
+        "╮∞",
+        "╯∞",
+        "empty or NaN",
+    ]
+    .iter()
+    .fold(text.to_string(), |t, label| t.replace(label, "T"));
     let mut found: Vec<String> = text
         .split(|c: char| !(c.is_alphanumeric() || c == '.'))
         .filter(|w| matches!(*w, "NaN" | "nan" | "inf" | "Inf" | "infinity" | "∞"))
@@ -1226,6 +1456,9 @@ struct Tally {
     /// Failure class → (count, the shortest reproducer and its detail).
     failures: BTreeMap<String, (usize, String, String)>,
     by_kind: BTreeMap<&'static str, usize>,
+    /// Per command: how many cases it accepted (exit 0) and refused (exit 2), so a run
+    /// shows that each command was reached past its argument checks.
+    outcomes: BTreeMap<&'static str, (usize, usize)>,
     /// Seconds spent per kind, and the slowest case.
     time_by_kind: BTreeMap<&'static str, f64>,
     slowest: (f64, String),
@@ -1270,6 +1503,16 @@ fn fuzz(name: &'static str, strategy: BoxedStrategy<Case>, n: usize, tally: &mut
         let verdict = judge(&case, &result);
         tally.run += 1;
         *tally.by_kind.entry(case.kind).or_default() += 1;
+        if let Ok(Ok(exit)) = &result {
+            let counts = tally
+                .outcomes
+                .entry(case.command().unwrap_or("(none)"))
+                .or_default();
+            match exit.code {
+                0 => counts.0 += 1,
+                _ => counts.1 += 1,
+            }
+        }
         let took = started.elapsed().as_secs_f64();
         *tally.time_by_kind.entry(case.kind).or_default() += took;
         if took > tally.slowest.0 {
@@ -1331,6 +1574,15 @@ fn report(tally: &Tally, elapsed: Duration) -> String {
         tally.slowest.0,
         tally.slowest.1
     ));
+    let outcomes: Vec<String> = tally
+        .outcomes
+        .iter()
+        .map(|(c, (ok, refused))| format!("{c} {ok}/{refused}"))
+        .collect();
+    out.push_str(&format!(
+        "  accepted/refused by command: {}\n",
+        outcomes.join(", ")
+    ));
     for (id, n) in &tally.skipped {
         out.push_str(&format!("  skipped (KNOWN_OPEN {id}, would hang): {n}\n"));
     }
@@ -1363,14 +1615,18 @@ fn fuzz_the_command_line() {
     let mut tally = Tally::default();
     fuzz("cli", cli_case(), n * 55 / 100, &mut tally);
     fuzz("preset", preset_case(), n * 15 / 100, &mut tally);
-    fuzz("csv", csv_case(), n * 15 / 100, &mut tally);
+    fuzz("csv", csv_case(), n * 10 / 100, &mut tally);
+    fuzz("damaged", damaged_file_case(), n * 5 / 100, &mut tally);
     fuzz("keys", keys_case(), n - n * 85 / 100, &mut tally);
     let text = report(&tally, started.elapsed());
     eprintln!("{text}");
     if let Ok(path) = std::env::var("GROOVELAB_FUZZ_REPORT") {
         std::fs::write(path, &text).unwrap();
     }
-    let _ = std::fs::remove_dir_all(&fixtures().dir);
+    // GROOVELAB_FUZZ_KEEP=1 keeps the fixtures, so a reported case can be rerun by hand.
+    if std::env::var_os("GROOVELAB_FUZZ_KEEP").is_none() {
+        let _ = std::fs::remove_dir_all(&fixtures().dir);
+    }
     assert!(tally.failures.is_empty(), "{text}");
     assert!(tally.run >= n / 2, "most cases were skipped: {text}");
 }

@@ -761,6 +761,15 @@ fn options_a_command_would_ignore_are_errors() {
             "--time-unit is not used by simulate",
         ),
         (&["fit", "--time-unit", "ms"][..], "none is given"),
+        // track takes R for the scale, and nothing else of the scene.
+        (
+            &["track", "clip.mp4", "--width", "4cm"][..],
+            "--width is not used by track",
+        ),
+        (
+            &["track", "clip.mp4", "--radius", "2cm", "--g", "1.62"][..],
+            "--g is not used by track",
+        ),
         (
             &["simulate", "--dt", "1ms"][..],
             "--dt is not used by the exact method",

@@ -151,8 +151,9 @@ pub(super) fn median(mut v: Vec<f64>) -> f64 {
     *m
 }
 
-/// Unwraps angles (rad) so that neighbours differ by less than π.
-pub(super) fn unwrap(angles: &mut [f64]) {
+/// Unwraps angles (rad) so that neighbours differ by less than π: within a run of
+/// consecutive frames, where the mark turns by far less than π from one to the next.
+fn unwrap_run(angles: &mut [f64]) {
     let tau = std::f64::consts::TAU;
     let mut shift = 0.0;
     for i in 1..angles.len() {
@@ -160,6 +161,81 @@ pub(super) fn unwrap(angles: &mut [f64]) {
         shift -= tau * (d / tau).round();
         angles[i] += shift;
     }
+}
+
+/// With the spin measured on one side of a gap only, how much it may have changed
+/// across the gap, as a share of itself (the rails' friction slows a sliding ball's
+/// spin by ~10 % in a tenth of a second; twice that, to be safe).
+const ONE_SIDED_DOUBT: f64 = 0.25;
+
+/// Largest sum of the miss (measured turn across a gap against the predicted one)
+/// and the prediction's doubt, rad, for which the gap's whole turns are taken as
+/// known: beyond it, the nearest branch could be the wrong one.
+const MOST_DOUBT: f64 = std::f64::consts::FRAC_PI_2;
+
+/// The spin (rad/s) at one end of a run of frames: the slope of a line through its
+/// last (`last`) or first few frames; `None` for a run of one frame.
+fn end_rate(ts: &[f64], angles: &[f64], last: bool) -> Option<f64> {
+    const FRAMES: usize = 4;
+    let n = ts.len().min(FRAMES);
+    if n < 2 {
+        return None;
+    }
+    let r = if last { ts.len() - n..ts.len() } else { 0..n };
+    let (t, a) = (&ts[r.clone()], &angles[r]);
+    let mt = t.iter().sum::<f64>() / n as f64;
+    let ma = a.iter().sum::<f64>() / n as f64;
+    let (sxy, sxx) = t.iter().zip(a).fold((0.0, 0.0), |(sxy, sxx), (t, a)| {
+        (sxy + (t - mt) * (a - ma), sxx + (t - mt) * (t - mt))
+    });
+    (sxx > 0.0).then(|| sxy / sxx)
+}
+
+/// Unwraps the mark's angles (rad) at the times `ts` (frames `dt` apart), and returns
+/// the times where their local fits must not reach across a gap.
+///
+/// Within a run of consecutive frames neighbours differ by less than π. Across a gap
+/// (the mark hidden by the rail, the ball merged with the other at the impact) the
+/// mark may turn by more than π, so the turn is predicted from the spin measured at
+/// the runs' ends beside it (their mean: exact for a steady angular deceleration)
+/// and the branch nearest the prediction taken. Where the prediction is too doubtful
+/// to tell the branch ([`MOST_DOUBT`]: the spins beside the gap differ, or only one
+/// side has two frames), the gap is left out: its middle is returned as a cut, and
+/// the angles after it are unwrapped as if it were a single frame step (their
+/// whole turn then unknown, which the position fit does not depend on).
+pub(super) fn unwrap(ts: &[f64], angles: &mut [f64], dt: f64) -> Vec<f64> {
+    let tau = std::f64::consts::TAU;
+    let mut starts = vec![0];
+    starts.extend((1..ts.len()).filter(|&i| ts[i] - ts[i - 1] > 1.5 * dt));
+    starts.push(ts.len());
+    for w in starts.windows(2) {
+        unwrap_run(&mut angles[w[0]..w[1]]);
+    }
+    let mut cuts = Vec::new();
+    for w in starts.windows(3) {
+        let (a, b, c) = (w[0], w[1], w[2]);
+        let before = end_rate(&ts[a..b], &angles[a..b], true);
+        let after = end_rate(&ts[b..c], &angles[b..c], false);
+        let gap = ts[b] - ts[b - 1];
+        let (predicted, doubt) = match (before, after) {
+            (Some(w0), Some(w1)) => (0.5 * (w0 + w1) * gap, 0.5 * (w0 - w1).abs() * gap),
+            (Some(w), None) | (None, Some(w)) => (w * gap, ONE_SIDED_DOUBT * w.abs() * gap),
+            (None, None) => (0.0, f64::INFINITY),
+        };
+        let d = angles[b] - angles[b - 1];
+        let turns = ((predicted - d) / tau).round();
+        let miss = (d + tau * turns - predicted).abs();
+        let shift = if miss + doubt <= MOST_DOUBT {
+            tau * turns
+        } else {
+            cuts.push(0.5 * (ts[b - 1] + ts[b]));
+            -tau * (d / tau).round()
+        };
+        for x in &mut angles[b..] {
+            *x += shift;
+        }
+    }
+    cuts
 }
 
 /// Derivatives of `ys` at each of `ts` by local quadratic fits over ±`n` frames that
@@ -227,8 +303,56 @@ mod tests {
     #[test]
     fn unwrap_removes_jumps_of_two_pi() {
         let mut a = vec![3.0, -3.0, -2.5];
-        unwrap(&mut a);
+        let cuts = unwrap(&[0.0, 0.01, 0.02], &mut a, 0.01);
         assert!((a[1] - (-3.0 + std::f64::consts::TAU)).abs() < 1e-12);
         assert!(a[2] > a[1]);
+        assert!(cuts.is_empty());
+    }
+
+    /// The mark's principal angle atan2 of a ball turning at `w0` rad/s, slowing at
+    /// `alpha` rad/s², at the frames `ts`.
+    fn wrapped(ts: &[f64], w0: f64, alpha: f64) -> (Vec<f64>, Vec<f64>) {
+        let truth: Vec<f64> = ts.iter().map(|t| w0 * t - 0.5 * alpha * t * t).collect();
+        let seen = truth.iter().map(|a| a.sin().atan2(a.cos())).collect();
+        (truth, seen)
+    }
+
+    #[test]
+    fn a_gap_longer_than_half_a_turn_takes_the_turn_the_spin_predicts() {
+        use std::f64::consts::PI;
+        // 100 frames/s, 63 rad/s slowing at 125 rad/s² (a paper ball sliding on its
+        // rails); frames 5–10 hidden: the mark turns by 3.8 rad > π across the gap.
+        let dt = 0.01;
+        let ts: Vec<f64> = (0..20)
+            .filter(|k| !(5..=10).contains(k))
+            .map(|k| k as f64 * dt)
+            .collect();
+        let (truth, mut a) = wrapped(&ts, 63.0, 125.0);
+        assert!(truth[5] - truth[4] > PI);
+        let cuts = unwrap(&ts, &mut a, dt);
+        assert!(cuts.is_empty(), "{cuts:?}");
+        for (got, want) in a.iter().zip(&truth) {
+            assert!((got - want).abs() < 1e-9, "{got} vs {want}");
+        }
+        // Plain unwrapping of neighbours takes the wrong branch across that gap.
+        let (_, mut plain) = wrapped(&ts, 63.0, 125.0);
+        unwrap_run(&mut plain);
+        assert!((plain[5] - truth[5]).abs() > 1.0);
+    }
+
+    #[test]
+    fn a_gap_whose_turn_is_doubtful_is_left_out() {
+        // One frame before the gap (no spin there), a long gap after it, and a spin
+        // known from one side only: the turn across 0.25 s at 63 rad/s (≈ 16 rad)
+        // could be off by a turn, so the gap is cut, not guessed.
+        let dt = 0.01;
+        let ts = [0.0, 0.25, 0.26, 0.27, 0.28];
+        let (_, mut a) = wrapped(&ts, 63.0, 0.0);
+        let cuts = unwrap(&ts, &mut a, dt);
+        assert_eq!(cuts, vec![0.125]);
+        // Within the run after the gap, neighbours still agree with the spin.
+        for w in a[1..].windows(2) {
+            assert!((w[1] - w[0] - 0.63).abs() < 1e-9, "{w:?}");
+        }
     }
 }

@@ -91,8 +91,14 @@ struct Spin {
 }
 
 /// The mark's [`Spin`] over the centre's `rows` (moving in direction `dir`), fitted
-/// over ±`n` frames between the impacts `cuts`; `None` without a mark.
-fn spin_of(track: &Track, rows: &[usize], dir: f64, n: usize, cuts: &[f64]) -> Option<Spin> {
+/// over ±`n` frames (`dt` apart) between the impacts `cuts`; `None` without a mark.
+fn spin_of(
+    track: &Track,
+    rows: &[usize],
+    dir: f64,
+    (n, dt): (usize, f64),
+    cuts: &[f64],
+) -> Option<Spin> {
     let (mx, my) = track.mark.as_ref()?;
     let valid: Vec<usize> = rows
         .iter()
@@ -104,7 +110,9 @@ fn spin_of(track: &Track, rows: &[usize], dir: f64, n: usize, cuts: &[f64]) -> O
         .iter()
         .map(|&i| (dir * (mx[i] - track.x[i])).atan2(my[i] - track.y[i]))
         .collect();
-    unwrap(&mut theta);
+    // The fits reach across neither an impact nor a gap whose turn is unknown.
+    let mut cuts = [cuts, &unwrap(&at, &mut theta, dt)].concat();
+    cuts.sort_by(f64::total_cmp);
     let radius = median(
         valid
             .iter()
@@ -112,7 +120,7 @@ fn spin_of(track: &Track, rows: &[usize], dir: f64, n: usize, cuts: &[f64]) -> O
             .collect(),
     );
     let s_theta = scatter(&theta).max(1e-7);
-    let fits = derivatives(&at, &theta, n, cuts, s_theta);
+    let fits = derivatives(&at, &theta, n, &cuts, s_theta);
     Some(Spin {
         at,
         theta,
@@ -240,7 +248,7 @@ pub fn derive(
     let approach = fit::line(&ts[..before], &xs[..before]);
     let cuts: Vec<f64> = kinks.iter().map(|k| k.t).collect();
     let dx = derivatives(&ts, &xs, n, &cuts, sigma);
-    let spin = mark_off_the_centre(spin_of(track, &rows, dir, n, &cuts), sigma)?;
+    let spin = mark_off_the_centre(spin_of(track, &rows, dir, (n, dt), &cuts), sigma)?;
     let spin_sign = spin
         .as_ref()
         .map_or(1.0, |s| s.sign(&ts, &dx, first.t, dir));
