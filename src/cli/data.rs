@@ -150,6 +150,9 @@ pub fn describe(shown: &Shown) -> String {
         (Some(v), None, _) => {
             let _ = writeln!(s, "  approach speed {} m/s", significant(v, 3));
         }
+        (None, _, Some(v)) if r.kind == "velocities" => {
+            let _ = writeln!(s, "  |v_cm| up to {} m/s", significant(v, 3));
+        }
         (None, _, Some(v)) => {
             let _ = writeln!(
                 s,

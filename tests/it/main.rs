@@ -30,6 +30,7 @@ mod pressed_contact;
 mod properties;
 mod readme;
 mod reliability;
+mod side_by_side;
 mod small_screens;
 mod story;
 mod sweep;
