@@ -60,11 +60,7 @@ type Columns = (Vec<f64>, Vec<f64>, Vec<f64>);
 
 /// The columns t, v_cm and v_t of a velocity table in SI units, as the file has
 /// them (no impact sought), and how their units were decided.
-fn columns(
-    table: &Table,
-    file: &str,
-    reading: &Reading,
-) -> Result<(Columns, Units), DataError> {
+fn columns(table: &Table, file: &str, reading: &Reading) -> Result<(Columns, Units), DataError> {
     let err = |what: String| DataError {
         file: file.to_string(),
         what,
