@@ -97,9 +97,9 @@ fn accelerations_only(table: &Table) -> Result<(), AccelerationsOnly> {
     let accelerations = cells
         .iter()
         .any(|c| c.to_lowercase().contains("acceleration"));
-    let positions = cells
-        .iter()
-        .any(|c| positions::position_column(c).is_some_and(|c| c.axis == positions::Axis::X));
+    let positions = cells.iter().any(|c| {
+        super::layout::position_column(c).is_some_and(|c| c.axis == super::layout::Axis::X)
+    });
     if accelerations && !positions {
         return Err(AccelerationsOnly {
             line: header.line,

@@ -1,11 +1,116 @@
 //! Which columns of a position file are whose: the column header and the lines above
 //! it (Tracker's `#multi:` and track names, a single track's title, or a spreadsheet's
 //! names above tracks side by side, each with its own time column), the track each
-//! column belongs to, and which track is the centre and which the rim mark.
+//! column belongs to (a header cell's track, axis and unit), and which track is the
+//! centre and which the rim mark.
 
 use super::options::Reading;
-use super::positions::{Axis, Col, position_column};
-use super::table::{Row, Sep};
+use crate::settings::units::Dimension;
+
+use super::table::{Row, Sep, clean, unit_factor};
+
+/// One header cell of a position file: which track, which axis, its SI factor.
+#[derive(Clone, Debug, PartialEq)]
+pub(super) struct Col {
+    pub track: String,
+    pub axis: Axis,
+    pub factor: Option<f64>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Axis {
+    T,
+    X,
+    Y,
+}
+
+/// Symbols and names of other quantities that share a column name with an axis:
+/// Tracker's `v_x`, `a_y`, `p_x`, Logger Pro's `X Velocity` are a velocity, an
+/// acceleration and a momentum, not positions.
+const OTHER_QUANTITIES: [&str; 10] = [
+    "v",
+    "a",
+    "p",
+    "f",
+    "θ",
+    "ω",
+    "velocity",
+    "acceleration",
+    "speed",
+    "momentum",
+];
+
+/// Reads a header cell such as `t`, `t/ms`, `x (cm)`, `mass A x`, `x_mark [mm]`,
+/// `y_cm` (unit as suffix), `Latest: X2 (m)` (a second point). `None` for other
+/// columns (`v_x`, `v_{x}`, `frame`, …) and for a unit that does not fit the axis.
+pub(super) fn position_column(cell: &str) -> Option<Col> {
+    let h = clean(cell);
+    // A unit in brackets or after a slash.
+    let (name, unit) = match h.find(['(', '[', '/']) {
+        Some(i) => (&h[..i], &h[i..]),
+        None => (h.as_str(), ""),
+    };
+    let tokens: Vec<&str> = name
+        .split([' ', '_', '.', '-'])
+        .filter(|t| !t.is_empty())
+        .collect();
+    // `x2`, `y2`: Logger Pro's second point.
+    let axis_of = |t: &str| -> Option<(Axis, Option<String>)> {
+        let (letter, digits) = t.split_at(t.find(|c: char| c.is_ascii_digit()).unwrap_or(t.len()));
+        let point = (!digits.is_empty() && digits.chars().all(|c| c.is_ascii_digit()))
+            .then(|| format!("point {digits}"));
+        if !digits.is_empty() && point.is_none() {
+            return None;
+        }
+        match (letter, &point) {
+            ("t" | "time", None) => Some((Axis::T, None)),
+            ("x", _) => Some((Axis::X, point)),
+            ("y", _) => Some((Axis::Y, point)),
+            _ => None,
+        }
+    };
+    let mut axes = tokens
+        .iter()
+        .enumerate()
+        .filter_map(|(i, t)| axis_of(t).map(|a| (i, a)));
+    let (at, (axis, point)) = axes.next()?;
+    if axes.next().is_some() {
+        return None;
+    }
+    let dim = if axis == Axis::T {
+        Dimension::Time
+    } else {
+        Dimension::Length
+    };
+    let mut rest: Vec<&str> = tokens
+        .iter()
+        .enumerate()
+        .filter(|&(i, _)| i != at)
+        .map(|(_, t)| *t)
+        .collect();
+    if rest.iter().any(|t| OTHER_QUANTITIES.contains(t)) {
+        return None;
+    }
+    let mut factor = unit_factor(unit, dim)?;
+    // `x_cm`, `t_s`: a trailing unit token rather than a track name.
+    if factor.is_none()
+        && rest.len() == 1
+        && let Some(Some(f)) = unit_factor(rest[0], dim)
+    {
+        factor = Some(f);
+        rest.clear();
+    }
+    let track = match point {
+        Some(p) if rest.is_empty() => p,
+        Some(p) => format!("{} {p}", rest.join(" ")),
+        None => rest.join(" "),
+    };
+    Some(Col {
+        track,
+        axis,
+        factor,
+    })
+}
 
 /// Names that say "the centre" or "the mark" when no option does.
 const CENTRE_NAMES: [&str; 6] = ["centre", "center", "ball", "cm", "c", "mass a"];

@@ -6,116 +6,12 @@
 //! columns only (velocities and the like are ignored), converts to SI, keeps empty and
 //! `NaN` cells as missing. The velocities are derived in `study::measured`.
 
-use super::layout::{find_header, name_tracks, pick_roles};
+use super::layout::{Axis, Col, find_header, name_tracks, pick_roles, position_column};
 use super::notes::{Notes, UnitNote};
 use super::options::{DataError, MAX_ROWS, Reading};
 use super::scales::{Given, LENGTHS, TIMES, check_track};
-use super::table::{Row, Table, clean, missing, number, unit_factor};
-use crate::settings::units::Dimension;
+use super::table::{Row, Table, missing, number};
 use crate::study::measured::Track;
-
-/// One header cell of a position file: which track, which axis, its SI factor.
-#[derive(Clone, Debug, PartialEq)]
-pub(super) struct Col {
-    pub track: String,
-    pub axis: Axis,
-    pub factor: Option<f64>,
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) enum Axis {
-    T,
-    X,
-    Y,
-}
-
-/// Symbols and names of other quantities that share a column name with an axis:
-/// Tracker's `v_x`, `a_y`, `p_x`, Logger Pro's `X Velocity` are a velocity, an
-/// acceleration and a momentum, not positions.
-const OTHER_QUANTITIES: [&str; 10] = [
-    "v",
-    "a",
-    "p",
-    "f",
-    "θ",
-    "ω",
-    "velocity",
-    "acceleration",
-    "speed",
-    "momentum",
-];
-
-/// Reads a header cell such as `t`, `t/ms`, `x (cm)`, `mass A x`, `x_mark [mm]`,
-/// `y_cm` (unit as suffix), `Latest: X2 (m)` (a second point). `None` for other
-/// columns (`v_x`, `v_{x}`, `frame`, …) and for a unit that does not fit the axis.
-pub(super) fn position_column(cell: &str) -> Option<Col> {
-    let h = clean(cell);
-    // A unit in brackets or after a slash.
-    let (name, unit) = match h.find(['(', '[', '/']) {
-        Some(i) => (&h[..i], &h[i..]),
-        None => (h.as_str(), ""),
-    };
-    let tokens: Vec<&str> = name
-        .split([' ', '_', '.', '-'])
-        .filter(|t| !t.is_empty())
-        .collect();
-    // `x2`, `y2`: Logger Pro's second point.
-    let axis_of = |t: &str| -> Option<(Axis, Option<String>)> {
-        let (letter, digits) = t.split_at(t.find(|c: char| c.is_ascii_digit()).unwrap_or(t.len()));
-        let point = (!digits.is_empty() && digits.chars().all(|c| c.is_ascii_digit()))
-            .then(|| format!("point {digits}"));
-        if !digits.is_empty() && point.is_none() {
-            return None;
-        }
-        match (letter, &point) {
-            ("t" | "time", None) => Some((Axis::T, None)),
-            ("x", _) => Some((Axis::X, point)),
-            ("y", _) => Some((Axis::Y, point)),
-            _ => None,
-        }
-    };
-    let mut axes = tokens
-        .iter()
-        .enumerate()
-        .filter_map(|(i, t)| axis_of(t).map(|a| (i, a)));
-    let (at, (axis, point)) = axes.next()?;
-    if axes.next().is_some() {
-        return None;
-    }
-    let dim = if axis == Axis::T {
-        Dimension::Time
-    } else {
-        Dimension::Length
-    };
-    let mut rest: Vec<&str> = tokens
-        .iter()
-        .enumerate()
-        .filter(|&(i, _)| i != at)
-        .map(|(_, t)| *t)
-        .collect();
-    if rest.iter().any(|t| OTHER_QUANTITIES.contains(t)) {
-        return None;
-    }
-    let mut factor = unit_factor(unit, dim)?;
-    // `x_cm`, `t_s`: a trailing unit token rather than a track name.
-    if factor.is_none()
-        && rest.len() == 1
-        && let Some(Some(f)) = unit_factor(rest[0], dim)
-    {
-        factor = Some(f);
-        rest.clear();
-    }
-    let track = match point {
-        Some(p) if rest.is_empty() => p,
-        Some(p) => format!("{} {p}", rest.join(" ")),
-        None => rest.join(" "),
-    };
-    Some(Col {
-        track,
-        axis,
-        factor,
-    })
-}
 
 /// Why a data row of a position file cannot be read (`line`: the file's line).
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -226,21 +122,14 @@ pub(super) fn read_table(
     // A mark with its own time column: read as a track of its own, matched to the
     // centre's frames by time (as two one-track exports are).
     if let (Some(t), Some((a, b))) = (mark_t, im) {
-        let mut rim = Track {
-            centre_name: mark.clone().unwrap_or_default(),
-            ..Track::default()
-        };
         let own = Columns {
             t: (t, units.factor(t, Axis::T)),
             x: (a, units.factor(a, Axis::X)),
             y: Some((b, units.factor(b, Axis::Y))),
             mark: None,
         };
-        let mut rows = table.rows();
-        find_header(&mut rows).map_err(err)?;
-        read_rows(rows, &own, &mut rim).map_err(|e| err(e.to_string()))?;
-        track = track.with_mark(&rim).map_err(|e| err(e.to_string()))?;
-        track.format = format;
+        let name = mark.clone().unwrap_or_default();
+        track = with_own_time_mark(track, table, &own, name).map_err(err)?;
     }
     if track.x.iter().filter(|x| x.is_finite()).count() == 0 {
         return Err(err(format!(
@@ -250,15 +139,19 @@ pub(super) fn read_table(
     }
     let given = units.given(it, ix);
     check_track(&track, &given).map_err(|e| err(e.to_string()))?;
-    let notes = Notes {
+    Ok((track, notes(format, names, &given)))
+}
+
+/// What a position file said about itself: its format, tracks and units.
+fn notes(format: &str, tracks: Vec<String>, given: &Given) -> Notes {
+    Notes {
         format: format.to_string(),
-        tracks: names,
+        tracks,
         units: vec![
             UnitNote::of("time", &TIMES, given.time.0, given.time.1),
             UnitNote::of("length", &LENGTHS, given.length.0, given.length.1),
         ],
-    };
-    Ok((track, notes))
+    }
 }
 
 /// Each column's unit: an option given wins over the header (a header that states a
@@ -332,6 +225,27 @@ fn tracks_with_x(cols: &[Option<Col>], header: &Row) -> Result<Vec<String>, Stri
         ));
     }
     Ok(names)
+}
+
+/// `track` with the mark read from `table`'s `columns` (its own time column) and
+/// matched to the centre's frames by time.
+fn with_own_time_mark(
+    track: Track,
+    table: &Table,
+    columns: &Columns,
+    name: String,
+) -> Result<Track, String> {
+    let mut rim = Track {
+        centre_name: name,
+        ..Track::default()
+    };
+    let mut rows = table.rows();
+    find_header(&mut rows)?;
+    read_rows(rows, columns, &mut rim).map_err(|e| e.to_string())?;
+    let format = track.format;
+    let mut track = track.with_mark(&rim).map_err(|e| e.to_string())?;
+    track.format = format;
+    Ok(track)
 }
 
 /// Where a track's values are in a row, and their SI factors.
