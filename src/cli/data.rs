@@ -1,9 +1,14 @@
 //! `groovelab data FILE…`: what groovelab reads in each file, before any fit — the
 //! format detected, the tracks and which is the centre and which the mark, frames,
 //! rate and span, the units and who decided them, missing frames, scatter, approach
-//! speed and impacts — as text or JSON. A file that cannot be read is one error line.
+//! speed and impacts — and which scene values a fit or the app would take from it
+//! (v0 from its approach; the mass assumed, as no data measure it) — as text or JSON.
+//! A file that cannot be read is one error line.
 
+use std::collections::BTreeMap;
 use std::fmt::Write as _;
+
+use serde::Serialize;
 
 use super::args::{DataArgs, DataCmdArgs, DataFormat, SceneArgs};
 use super::error::CliError;
@@ -28,12 +33,23 @@ pub fn run(args: &DataCmdArgs, scene: &SceneArgs, data: &DataArgs) -> Result<Str
             scale: reading.scale.filter(|_| !video),
             ..reading.clone()
         };
-        reports.push(inspect(
-            &text,
-            &path.display().to_string(),
-            &reading,
-            &derive,
-        )?);
+        let file = path.display().to_string();
+        let report = inspect(&text, &file, &reading, &derive)?;
+        // What the lab would take from the file: the same rule as `fit` and the app.
+        let scene_values = crate::input::data::load(&text, &file, &reading, &derive)
+            .map(|series| {
+                let values = crate::lab::measured_values(&series);
+                let rows = values.rows();
+                rows.into_iter()
+                    .filter_map(|k| values.get(k).map(|v| (k.name(), v)))
+                    .collect()
+            })
+            .unwrap_or_default();
+        reports.push(DataReport {
+            report,
+            scene_values,
+            assumed: ["mass_left", "mass_right"],
+        });
     }
     Ok(match args.format {
         DataFormat::Json => {
@@ -41,6 +57,19 @@ pub fn run(args: &DataCmdArgs, scene: &SceneArgs, data: &DataArgs) -> Result<Str
         }
         DataFormat::Table => reports.iter().map(describe).collect::<Vec<_>>().join("\n"),
     })
+}
+
+/// One file's report and the scene values it gives.
+#[derive(Serialize)]
+pub struct DataReport {
+    #[serde(flatten)]
+    pub report: Report,
+    /// The scene values the data measure (by parameter name, SI): what `fit` and the
+    /// app take from them where no option or edit sets them (v0: the approach).
+    pub scene_values: BTreeMap<&'static str, f64>,
+    /// The values no data measure that enter F_net, τ_net and the energies: assumed
+    /// (the preset's) unless given.
+    pub assumed: [&'static str; 2],
 }
 
 /// A track's name as the text says it.
@@ -53,7 +82,8 @@ fn named(n: &str) -> String {
 }
 
 /// One file's report as text for people.
-pub fn describe(r: &Report) -> String {
+pub fn describe(shown: &DataReport) -> String {
+    let r = &shown.report;
     let mut s = format!("{}: {}, {}\n", r.file, r.notes.format, r.kind);
     if let Some(c) = &r.centre {
         let others: Vec<String> = r
@@ -131,6 +161,9 @@ pub fn describe(r: &Report) -> String {
         (Some(v), None, _) => {
             let _ = writeln!(s, "  approach speed {} m/s", significant(v, 3));
         }
+        (None, _, Some(v)) if r.kind == "velocities" => {
+            let _ = writeln!(s, "  |v_cm| up to {} m/s", significant(v, 3));
+        }
         (None, _, Some(v)) => {
             let _ = writeln!(
                 s,
@@ -141,5 +174,22 @@ pub fn describe(r: &Report) -> String {
         _ => {}
     }
     let _ = writeln!(s, "  {}", r.impact_note);
+    s += &scene_line(&shown.scene_values);
     s
+}
+
+/// "  the scene takes from it: v0 = 0.791 m/s (both balls: the approach); R, b, μ_k,
+/// e from the preset or the options; m assumed unless given (no data measure it)".
+fn scene_line(values: &BTreeMap<&'static str, f64>) -> String {
+    let rest =
+        "R, b, μ_k, e from the preset or the options; m assumed unless given (no data measure it)";
+    match values.get("v0").or(values.get("v0_left")) {
+        Some(&v) => format!(
+            "  the scene takes from it: v0 = {} (both balls: the approach); {rest}\n",
+            crate::settings::units::show(v, Dimension::Speed)
+        ),
+        None => format!(
+            "  the scene takes nothing from it (no approach before an impact): v0, {rest}\n"
+        ),
+    }
 }

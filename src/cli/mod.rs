@@ -505,12 +505,12 @@ fn presets() -> String {
     let mut out = String::new();
     for p in &presets {
         let tag = match &p.origin {
-            preset::Origin::BuiltIn => String::new(),
+            preset::PresetOrigin::BuiltIn => String::new(),
             // `--preset NAME` finds the built-in first: say so where a file has its name.
-            preset::Origin::File(path)
+            preset::PresetOrigin::File(path)
                 if presets
                     .iter()
-                    .any(|q| q.origin == preset::Origin::BuiltIn && q.name == p.name) =>
+                    .any(|q| q.origin == preset::PresetOrigin::BuiltIn && q.name == p.name) =>
             {
                 format!(
                     " [{}; hidden: --preset {} is the built-in one, give the file's path or rename it]",
@@ -518,7 +518,7 @@ fn presets() -> String {
                     p.name
                 )
             }
-            preset::Origin::File(path) => format!(" [{}]", path.display()),
+            preset::PresetOrigin::File(path) => format!(" [{}]", path.display()),
         };
         let data = if p.measured.is_some() {
             " (with measured data)"

@@ -182,6 +182,7 @@ pub fn lab(scene_args: &SceneArgs, data: &DataArgs) -> Result<Lab, CliError> {
     let joined = join(scene_args, data, &settings, loaded)?;
     settings.scene_file = joined.scene_file;
     settings.from_data = joined.from_data;
+    settings.file_keys = joined.file_keys;
     Ok(Lab::new(settings, joined.own)?)
 }
 
@@ -189,7 +190,8 @@ pub fn lab(scene_args: &SceneArgs, data: &DataArgs) -> Result<Lab, CliError> {
 /// they measure, and the file whose `# scene` lines are among the options.
 struct Joined {
     own: Option<OwnData>,
-    from_data: SceneSpec,
+    from_data: Option<SceneSpec>,
+    file_keys: Vec<Key>,
     scene_file: Option<String>,
 }
 
@@ -201,7 +203,8 @@ fn join(
 ) -> Result<Joined, CliError> {
     let mut joined = Joined {
         own: None,
-        from_data: SceneSpec::default(),
+        from_data: None,
+        file_keys: Vec::new(),
         scene_file: None,
     };
     // The file's own scene lines are among the options when they were read with them
@@ -214,10 +217,17 @@ fn join(
     {
         joined.scene_file = data.data.first().map(|p| p.display().to_string());
     }
-    // Under the default preset (none named), the data give what they measure (v0)
-    // below the options and the file's lines: a preset named is the user's scene.
-    if let Some((series, _)) = loaded.as_ref().filter(|_| scene_args.preset.is_none()) {
-        joined.from_data = crate::lab::measured_values(series);
+    // The data give what they measure (v0) below the options and the file's lines,
+    // over whichever preset is the template.
+    if let Some((series, own_scene)) = &loaded {
+        joined.from_data = Some(crate::lab::measured_values(series));
+        // The file's lines among the options (an option typed over one wins, and
+        // differs from it).
+        joined.file_keys = own_scene
+            .given()
+            .filter(|&(k, v)| scene_args.values.given().any(|(j, w)| j == k && w == v))
+            .map(|(k, _)| k)
+            .collect();
     }
     joined.own = loaded.map(|(series, own_scene)| OwnData {
         groove: stated_groove(settings.preset(), &own_scene),
@@ -260,6 +270,7 @@ fn video_work(
             Ok(crate::tui::jobs::TrackedVideo {
                 own: joined.own.expect("a series was loaded"),
                 from_data: joined.from_data,
+                file_keys: joined.file_keys,
                 scene_file: joined.scene_file,
                 view: kept.view.clone(),
             })

@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use crate::input::file::{FileError, MAX_FILE_BYTES, read_user_file};
 use crate::settings::spec::SceneSpec;
 use crate::study::measured::Measured;
-use crate::study::preset::{self, Origin, Preset, PresetError};
+use crate::study::preset::{self, Preset, PresetError, PresetOrigin};
 
 /// Why a preset named on the command line or in the app could not be loaded.
 #[derive(Debug, thiserror::Error)]
@@ -60,7 +60,7 @@ pub fn load(name_or_path: &str) -> Result<Preset, LoadError> {
     Ok(Preset::parse(
         &text,
         &path.display().to_string(),
-        Origin::File(path),
+        PresetOrigin::File(path),
     )?)
 }
 
@@ -154,7 +154,7 @@ impl PresetFile {
         let text = preset::to_toml(name, &description, scene.spec, scene.measured)
             .map_err(SaveError::Text)?;
         // What is written must load again: check before reporting success.
-        Preset::parse(&text, name, Origin::BuiltIn).map_err(SaveError::WouldNotLoad)?;
+        Preset::parse(&text, name, PresetOrigin::BuiltIn).map_err(SaveError::WouldNotLoad)?;
         Ok(PresetFile { path, text })
     }
 

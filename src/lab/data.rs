@@ -9,6 +9,8 @@
 //! preset's come back only while the model's groove is the preset's: in any other the
 //! scene shows no data ([`in_use`]).
 
+use super::origin::Origin;
+use super::settings::Layers;
 use crate::physics::scene::Scene;
 use crate::settings::params::Key;
 use crate::settings::spec::{SceneError, SceneSpec};
@@ -218,6 +220,47 @@ pub fn measured_values(series: &Series) -> SceneSpec {
     match approach(series) {
         Some(a) => SceneSpec::default().with(Key::V0, a.speed),
         None => SceneSpec::default(),
+    }
+}
+
+/// A value given (an option, the data file's `# scene` line, an edit in the app)
+/// that the data contradict: the left ball's v0 farther from their approach speed
+/// than its ± 2σ (the given value is used: a flag wins over the data).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Contradiction {
+    /// The left ball's v0 given, m/s.
+    pub value: f64,
+    /// Who gave it.
+    pub origin: Origin,
+    /// What the data measure.
+    pub approach: crate::study::fit::Approach,
+}
+
+impl Contradiction {
+    /// The contradiction of `scene`'s v0, set as `settings` say, by the data `series`.
+    pub fn of(settings: &Layers, series: Option<&Series>, scene: &Scene) -> Option<Contradiction> {
+        let approach = approach(series?)?;
+        let origin = settings.origin(Key::V0Left);
+        let value = scene.left.v0;
+        (matches!(origin, Origin::Flag | Origin::File | Origin::Edited)
+            && (value - approach.speed).abs() > 2.0 * approach.se)
+            .then_some(Contradiction {
+                value,
+                origin,
+                approach,
+            })
+    }
+
+    /// "the left ball's v0 = 0.79 m/s (BY) contradicts the data: they approach at
+    /// 0.448 ± 0.002 m/s (± 2σ, 25 frames before the impact); the value given is used".
+    pub fn describe(&self, by: &str) -> String {
+        let a = &self.approach;
+        let (speed, pm) = crate::settings::units::with_uncertainty(a.speed, 2.0 * a.se, 3);
+        format!(
+            "the left ball's v0 = {} ({by}) contradicts the data: they approach at {speed} ± {pm} m/s (± 2σ, {} frames before the impact); the value given is used",
+            show(self.value, Dimension::Speed),
+            a.frames
+        )
     }
 }
 

@@ -12,6 +12,7 @@
 pub mod analyses;
 mod data;
 pub mod jobs;
+mod origin;
 mod resolved;
 mod settings;
 mod span;
@@ -25,7 +26,10 @@ use crate::settings::spec::{SceneError, SceneSpec};
 use crate::study::measured::Series;
 use crate::study::preset::Preset;
 
-pub use data::{Groove, InUse, OtherGroove, OwnData, Whose, approach, measured_values};
+pub use data::{
+    Contradiction, Groove, InUse, OtherGroove, OwnData, Whose, approach, measured_values,
+};
+pub use origin::Origin;
 pub use resolved::{ChartPoint, MeasuredPoints, Pinned, Resolved, Story, differences, value_range};
 pub use settings::{Edit, Layers};
 pub use span::SpanEnd;
@@ -234,12 +238,14 @@ impl Lab {
     pub fn attach_data(
         &mut self,
         own: OwnData,
-        from_data: SceneSpec,
+        from_data: Option<SceneSpec>,
+        file_keys: Vec<Key>,
         scene_file: Option<String>,
     ) -> Result<(), SceneError> {
         let before = (
             self.own_data.replace(own),
             std::mem::replace(&mut self.settings.from_data, from_data),
+            std::mem::replace(&mut self.settings.file_keys, file_keys),
             std::mem::replace(&mut self.settings.scene_file, scene_file),
         );
         let built = self.rebuild();
@@ -247,6 +253,7 @@ impl Lab {
             (
                 self.own_data,
                 self.settings.from_data,
+                self.settings.file_keys,
                 self.settings.scene_file,
             ) = before;
             self.rebuild().expect("the scene before the data was valid");

@@ -46,6 +46,8 @@ pub struct Resolved {
     /// The scene's v0 is the one the user's data measure (their approach), not one
     /// given: a fit then frees it in every model.
     pub v0_measured: bool,
+    /// A v0 given that the data in use contradict (said wherever v0 is shown).
+    pub contradiction: Option<super::data::Contradiction>,
     /// The span shown: `t_end` is always the shown end (see [`SpanEnd`]).
     pub span: Span,
     pub span_end: SpanEnd,
@@ -108,6 +110,11 @@ impl Resolved {
             .map(Arc::from);
         Ok(Resolved {
             v0_measured: settings.from_the_data(Key::V0),
+            contradiction: super::data::Contradiction::of(
+                settings,
+                in_use.map(|d| &d.series),
+                &scene,
+            ),
             data_rms: m.map(|m| data_rms(&solution, m)),
             points: m.map(|m| Arc::new(MeasuredPoints::of(m, track_x.as_deref()))),
             track_x,

@@ -3,7 +3,11 @@
 //! settles them into a checked scene, its span and how the span ends. An edit is a
 //! layer entry: undo pops it; a reset is an entry too (the edits before it stop
 //! counting), and so is another preset picked (the scene starts over from it), so an
-//! accidental reset or pick can be undone like any change.
+//! accidental reset or pick can be undone like any change. Under the flags, over the
+//! preset, lie the values the data in use measure (v0 from the approach): the user's
+//! own data while loaded and not dropped, else the preset's own series — whichever
+//! preset is the template, it gives only what the data leave out. Where each settled
+//! value came from is `origin`'s.
 
 use crate::physics::scene::{Scene, Span};
 use crate::settings::params::Key;
@@ -37,9 +41,13 @@ pub struct Layers {
     pub flags: SceneSpec,
     /// The data file whose `# scene` lines are among `flags`, as the user named it.
     pub scene_file: Option<String>,
-    /// The values the user's own data measure (v0 from the approach): over the
-    /// preset, under the flags, while the flags are in force and the data not dropped.
-    pub from_data: SceneSpec,
+    /// The values the user's own data measure (v0 from the approach), `Some` while
+    /// the user's own data are loaded: over the preset (any preset, picked or not),
+    /// under the flags and edits, until the data are dropped (then the preset's own
+    /// series give theirs, [`Layers::data_values`]).
+    pub from_data: Option<SceneSpec>,
+    /// The keys (per ball) among `flags` that the data file's `# scene` lines gave.
+    pub file_keys: Vec<Key>,
     /// The app's edits, oldest first.
     edits: Vec<Edit>,
     /// What the edits up to each one add up to (`sums[i]` after `edits[i]`), so that
@@ -169,7 +177,8 @@ impl Layers {
             start: preset,
             flags,
             scene_file: None,
-            from_data: SceneSpec::default(),
+            from_data: None,
+            file_keys: Vec::new(),
             edits: Vec::new(),
             sums: Vec::new(),
         }
@@ -239,23 +248,24 @@ impl Layers {
         self.top().dropped
     }
 
-    /// True when the settled value of `key` (e.g. `v0`) is the data's own: the data
-    /// layer gives it, and no flag in force or edit sets it or what replaces it (a
-    /// release height).
-    pub fn from_the_data(&self, key: Key) -> bool {
-        let Some(flags) = self.flags_in_force() else {
-            return false;
-        };
-        if self.data_dropped() || self.from_data.get(key).is_none() {
-            return false;
+    /// The values the data in use measure: the user's own while loaded and not
+    /// dropped, else the preset's own series' (a preset's series are its data; its
+    /// file's values give only what they leave out).
+    pub fn data_values(&self) -> SceneSpec {
+        match (&self.from_data, self.data_dropped()) {
+            (Some(own), false) => own.clone(),
+            _ => values_of_preset(self.preset()),
         }
-        let upper = flags.over(&self.top().values);
-        let touched = |k: Key| {
-            crate::settings::params::PARAMS.iter().any(|p| {
-                (p.key == k || p.replaces == Some(k)) && upper.given().any(|(j, _)| j == p.key)
-            })
-        };
-        !key.param().sets.iter().any(|&k| touched(k))
+    }
+
+    /// True when the user's own data are loaded and not dropped.
+    pub fn own_data_in_use(&self) -> bool {
+        self.from_data.is_some() && !self.data_dropped()
+    }
+
+    /// The values the edits in force set, newer over older.
+    pub(super) fn edited(&self) -> SceneSpec {
+        self.top().values.clone()
     }
 
     /// Sets every edit aside (the scene as the preset and the flags give it); false,
@@ -283,10 +293,8 @@ impl Layers {
             },
             None => SpanEnd::Auto,
         };
+        spec = spec.over(&self.data_values());
         if let Some(flags) = self.flags_in_force() {
-            if !self.data_dropped() {
-                spec = spec.over(&self.from_data);
-            }
             let flags: Vec<(Key, f64)> = flags.given().collect();
             set_values(&mut spec, &mut end, &flags);
         }
@@ -303,6 +311,24 @@ impl Layers {
         let (scene, span) = spec.resolve()?;
         Ok((scene, span, end))
     }
+}
+
+/// The scene values a preset's own series measure (its v0: the approach), as its
+/// file states them where they agree within the series' ± 2σ (the preset's value is
+/// that measurement, rounded as the preset wrote it), else as the series give them.
+pub fn values_of_preset(preset: &Preset) -> SceneSpec {
+    let Some(a) = preset
+        .measured
+        .as_ref()
+        .and_then(|m| crate::study::fit::of_velocities(&m.t, &m.v_cm))
+    else {
+        return SceneSpec::default();
+    };
+    let stated = preset
+        .spec
+        .get(Key::V0)
+        .filter(|v| (v - a.speed).abs() <= 2.0 * a.se);
+    SceneSpec::default().with(Key::V0, stated.unwrap_or(a.speed))
 }
 
 /// The last part of a path (`ball.csv` of `runs/ball.csv`).
@@ -349,10 +375,12 @@ mod tests {
             None => SpanEnd::Auto,
         };
         let mut upper = flags.cloned().unwrap_or_default();
+        let data = match (&layers.from_data, dropped) {
+            (Some(own), false) => own.clone(),
+            _ => values_of_preset(preset),
+        };
+        spec = spec.over(&data);
         if let Some(flags) = flags {
-            if !dropped {
-                spec = spec.over(&layers.from_data);
-            }
             let flags: Vec<(Key, f64)> = flags.given().collect();
             replay_values(&mut spec, &mut end, &flags);
         }
@@ -378,10 +406,8 @@ mod tests {
                 (p.key == k || p.replaces == Some(k)) && upper.given().any(|(j, _)| j == p.key)
             })
         };
-        let own_v0 = flags.is_some()
-            && !dropped
-            && layers.from_data.get(Key::V0).is_some()
-            && !Key::V0.param().sets.iter().any(|&k| touched(k));
+        let own_v0 =
+            data.get(Key::V0).is_some() && !Key::V0.param().sets.iter().any(|&k| touched(k));
         (settled, dropped, own_v0)
     }
 
@@ -483,7 +509,7 @@ mod tests {
             }
             let mut layers = Layers::new(start, flags);
             if seed % 4 != 1 {
-                layers.from_data.set(Key::V0, 0.45);
+                layers.from_data = Some(SceneSpec::default().with(Key::V0, 0.45));
             }
             for _ in 0..60 {
                 match draw.below(6) {
@@ -511,7 +537,7 @@ mod tests {
     fn an_edit_costs_the_same_however_long_the_history() {
         let preset = Preset::built_in().swap_remove(0);
         let mut layers = Layers::new(preset, SceneSpec::default().with(Key::Mu, 0.2));
-        layers.from_data.set(Key::V0, 0.45);
+        layers.from_data = Some(SceneSpec::default().with(Key::V0, 0.45));
         for i in 0..1000 {
             let width = if i % 2 == 0 { 0.049 } else { 0.050 };
             layers.push(Edit::Values(vec![(Key::Width, width)]));

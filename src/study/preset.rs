@@ -32,7 +32,7 @@ const BUILT_IN: &[(&str, &str)] = &[
 
 /// Where a preset came from.
 #[derive(Clone, Debug, PartialEq)]
-pub enum Origin {
+pub enum PresetOrigin {
     BuiltIn,
     File(PathBuf),
 }
@@ -44,7 +44,7 @@ pub struct Preset {
     pub source: Option<String>,
     pub spec: SceneSpec,
     pub measured: Option<Measured>,
-    pub origin: Origin,
+    pub origin: PresetOrigin,
 }
 
 #[derive(Debug, thiserror::Error)]
@@ -121,7 +121,7 @@ struct MeasuredFile {
 
 impl Preset {
     /// Parses a preset's TOML text; `label` names it in errors.
-    pub fn parse(text: &str, label: &str, origin: Origin) -> Result<Preset, PresetError> {
+    pub fn parse(text: &str, label: &str, origin: PresetOrigin) -> Result<Preset, PresetError> {
         let malformed = |reason: Malformed| PresetError::Malformed {
             name: label.to_string(),
             reason,
@@ -168,14 +168,15 @@ impl Preset {
         BUILT_IN
             .iter()
             .find(|(n, _)| *n == name)
-            .map(|(n, text)| Preset::parse(text, n, Origin::BuiltIn))
+            .map(|(n, text)| Preset::parse(text, n, PresetOrigin::BuiltIn))
     }
 
     pub fn built_in() -> Vec<Preset> {
         BUILT_IN
             .iter()
             .map(|(name, text)| {
-                Preset::parse(text, name, Origin::BuiltIn).expect("built-in presets are tested")
+                Preset::parse(text, name, PresetOrigin::BuiltIn)
+                    .expect("built-in presets are tested")
             })
             .collect()
     }
@@ -280,10 +281,10 @@ mod tests {
     #[test]
     fn unknown_keys_are_errors() {
         let text = "name = \"x\"\ndescription = \"d\"\n[scene]\nradius = 0.02\nwidht = 0.01\n";
-        let err = Preset::parse(text, "x", Origin::BuiltIn).unwrap_err();
+        let err = Preset::parse(text, "x", PresetOrigin::BuiltIn).unwrap_err();
         assert!(err.to_string().contains("widht"), "{err}");
         let text = "name = \"x\"\ndescription = \"d\"\ncolour = 1\n[scene]\n";
-        assert!(Preset::parse(text, "x", Origin::BuiltIn).is_err());
+        assert!(Preset::parse(text, "x", PresetOrigin::BuiltIn).is_err());
     }
 
     #[test]
@@ -297,7 +298,7 @@ mod tests {
         m.v_cm_sigma = Some(vec![0.01; 3]);
         let spec = SceneSpec::default().with(Key::Radius, 0.0275);
         let text = to_toml("x", "d", &spec, Some(&m)).unwrap();
-        let back = Preset::parse(&text, "x", Origin::BuiltIn).unwrap();
+        let back = Preset::parse(&text, "x", PresetOrigin::BuiltIn).unwrap();
         let got = back.measured.unwrap();
         assert_eq!((got.t, got.v_cm, got.x), (m.t, m.v_cm, m.x));
         assert!(got.v_t[1].is_nan() && got.v_t[2] == 0.3);
@@ -305,14 +306,14 @@ mod tests {
         assert_eq!(got.angle, None);
         let short = text.replace("x = [-0.08, 0.0, 0.01]", "x = [-0.08]");
         assert!(short != text, "{text}");
-        let err = Preset::parse(&short, "x", Origin::BuiltIn).unwrap_err();
+        let err = Preset::parse(&short, "x", PresetOrigin::BuiltIn).unwrap_err();
         assert!(err.to_string().contains("measured x has 1 values"), "{err}");
     }
 
     #[test]
     fn measured_series_must_be_finite() {
         let text = "name = \"x\"\ndescription = \"d\"\n[scene]\n[measured]\nt = [0.0, 0.01, 0.02]\nv_cm = [1.0, inf, -1.0]\nv_t = [1.0, 1.0, 1.0]\n";
-        let e = Preset::parse(text, "x", Origin::BuiltIn).unwrap_err();
+        let e = Preset::parse(text, "x", PresetOrigin::BuiltIn).unwrap_err();
         assert!(e.to_string().contains("v_cm[1] is not finite"), "{e}");
     }
 
@@ -320,10 +321,10 @@ mod tests {
     fn quantities_with_units_are_read() {
         let text =
             "name = \"x\"\ndescription = \"d\"\n[scene]\nradius = \"2.75cm\"\nmass = \"167g\"\n";
-        let p = Preset::parse(text, "x", Origin::BuiltIn).unwrap();
+        let p = Preset::parse(text, "x", PresetOrigin::BuiltIn).unwrap();
         assert_eq!(p.spec.get(Key::Radius), Some(0.0275));
         assert_eq!(p.spec.get(Key::MassRight), Some(0.167));
         let bad = "name = \"x\"\ndescription = \"d\"\n[scene]\nradius = \"2.75kg\"\n";
-        assert!(Preset::parse(bad, "x", Origin::BuiltIn).is_err());
+        assert!(Preset::parse(bad, "x", PresetOrigin::BuiltIn).is_err());
     }
 }

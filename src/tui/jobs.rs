@@ -179,7 +179,8 @@ impl ExportRun {
 #[derive(Clone, Debug)]
 pub struct TrackedVideo {
     pub own: OwnData,
-    pub from_data: SceneSpec,
+    pub from_data: Option<SceneSpec>,
+    pub file_keys: Vec<crate::settings::params::Key>,
     pub scene_file: Option<String>,
     pub view: Option<Arc<VideoView>>,
 }

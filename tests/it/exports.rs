@@ -63,7 +63,7 @@ fn shift_w_writes_the_figure_of_the_view_on_screen() {
     a.wait();
     let (name, svg) = export_figure(&mut a);
     assert_eq!(name, "paper-b4.9-fit.svg");
-    assert!(svg.contains("model fit mu = ") && svg.contains("(2 sigma)"));
+    said_as_fit_says(&svg, &["--preset", "paper-b4.9"]);
     assert!(!svg.contains("NaN"));
     press(&mut a, "f c");
     a.wait();
@@ -79,6 +79,60 @@ fn shift_w_writes_the_figure_of_the_view_on_screen() {
     let written = std::fs::read_dir(&dir).unwrap().count();
     assert_eq!(written, 5);
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The fit figure's caption says the headline `fit` prints for the same scene and
+/// data (`args`): its model and μ_k ± 2σ, to the same digits; and JSON's model.
+fn said_as_fit_says(svg: &str, args: &[&str]) {
+    let cli = common::run_in_process(&[&["fit"], args].concat()).unwrap();
+    let head = cli.lines().nth(1).unwrap();
+    // "μ_k = 0.1484 ± 0.0138 (± 2σ, 95 %): μ_k + v0 + c_rr (the model …"
+    let mu = head
+        .strip_prefix("μ_k = ")
+        .and_then(|r| r.split(" (± 2σ").next())
+        .unwrap_or_else(|| panic!("{head}"));
+    let model = head.split(": ").nth(1).unwrap().split(" (").next().unwrap();
+    let caption = svg
+        .lines()
+        .find(|l| l.contains(": model "))
+        .unwrap_or_else(|| panic!("no caption in {}", &svg[..400.min(svg.len())]));
+    let want = format!(
+        "model {}, mu = {} (2 sigma);",
+        model.replace("μ_k", "mu_k"),
+        mu.replace('±', "+-")
+    );
+    assert!(caption.contains(&want), "{caption}\nwants {want}\n{cli}");
+    let json = common::run_in_process(&[&["fit"], args, &["--format", "json"]].concat()).unwrap();
+    let j: serde_json::Value = serde_json::from_str(&json).unwrap();
+    let named = j["model_fit"]["model"]
+        .as_str()
+        .unwrap()
+        .replace("rolling_resistance", "c_rr")
+        .replace("restitution", "e");
+    assert_eq!(
+        named.replace("mu", "mu_k").replace('+', " + "),
+        model.replace("μ_k", "mu_k")
+    );
+}
+
+/// `fit --format svg` draws the same headline as the table and JSON, for the paper's
+/// series and for a student's track.
+#[test]
+fn the_fit_figure_says_what_fit_says() {
+    for args in [
+        &["--preset", "paper-b4.9"][..],
+        &[
+            "--data",
+            "docs/video/ball.txt",
+            "--radius",
+            "2cm",
+            "--width",
+            "3.5cm",
+        ][..],
+    ] {
+        let svg = common::run_in_process(&[&["fit"], args, &["--format", "svg"]].concat()).unwrap();
+        said_as_fit_says(&svg, args);
+    }
 }
 
 #[test]

@@ -241,6 +241,34 @@ fn screen(preset: &str, values: SceneSpec, file: Option<&str>, keys: &str) -> St
     rows[..rows.len() - 2].join("\n")
 }
 
+/// `screen` without where each value came from (the parameters panel's marks and
+/// their legend: `f` by flags, `e` by keys), and R's mark.
+fn without_origins(screen: &str) -> (String, char) {
+    let mut r_mark = ' ';
+    let rows: Vec<String> = screen
+        .lines()
+        .enumerate()
+        .map(|(i, l)| {
+            let mut c: Vec<char> = l.chars().collect();
+            match i {
+                1..=12 => {
+                    if i == 1 {
+                        r_mark = c[23];
+                    }
+                    c[23] = '·';
+                }
+                13 => {
+                    let end = c.iter().position(|&x| x == '╯').unwrap();
+                    c[1..end].fill('─');
+                }
+                _ => {}
+            }
+            c.into_iter().collect()
+        })
+        .collect();
+    (rows.join("\n"), r_mark)
+}
+
 #[test]
 fn the_same_scene_by_flags_or_by_keys_draws_the_same_screen() {
     // R = 2.8 cm and b = 4.4 cm typed in the app (a bare number is in the row's unit,
@@ -260,6 +288,9 @@ fn the_same_scene_by_flags_or_by_keys_draws_the_same_screen() {
         let by_keys = screen(preset, SceneSpec::default(), file, keys);
         assert!(by_flags.contains("▸b            4.40 cm"), "{by_flags}");
         assert!(by_flags.contains("R            2.80 cm"), "{by_flags}");
+        let ((by_keys, typed), (by_flags, given)) =
+            (without_origins(&by_keys), without_origins(&by_flags));
+        assert_eq!((typed, given), ('e', 'f'), "{by_keys}\n{by_flags}");
         assert_eq!(by_keys, by_flags, "{preset} with {file:?}");
     }
 }

@@ -7,7 +7,7 @@ use groovelab::lab::{Lab, SpanEnd};
 use groovelab::physics::solution::EventKind;
 use groovelab::settings::params::Key;
 use groovelab::settings::spec::SceneSpec;
-use groovelab::study::preset::{Origin, Preset};
+use groovelab::study::preset::{Preset, PresetOrigin};
 use groovelab::tui::app::{App, Library, Status};
 use groovelab::tui::screen;
 use groovelab::tui::screen::Screen;
@@ -165,7 +165,7 @@ v0 = 0.7928
 t_start = -0.2
 t_end = 0.5
 "#;
-    Preset::parse(text, "short", Origin::BuiltIn).unwrap()
+    Preset::parse(text, "short", PresetOrigin::BuiltIn).unwrap()
 }
 
 #[test]

@@ -9,7 +9,7 @@ use groovelab::physics::scene::{Scene, Span};
 use groovelab::settings::params::{Fallback, Key, PARAMS, Param};
 use groovelab::settings::spec::SceneSpec;
 use groovelab::settings::units::{parse_quantity, parse_typed, show};
-use groovelab::study::preset::{self, Origin, Preset, to_toml};
+use groovelab::study::preset::{self, Preset, PresetOrigin, to_toml};
 use proptest::prelude::*;
 
 /// A scene given entirely on the command line (SI numbers, as `{:?}` prints them).
@@ -65,7 +65,7 @@ proptest! {
             prop_assert_eq!(spec.get(k), Some(v), "{:?}", k);
         }
         let text = to_toml("round-trip", "d", &spec, None).unwrap();
-        let back = Preset::parse(&text, "round-trip", Origin::BuiltIn).unwrap();
+        let back = Preset::parse(&text, "round-trip", PresetOrigin::BuiltIn).unwrap();
         let (again, span) = back.spec.resolve().unwrap();
         prop_assert_eq!(again, scene);
         prop_assert_eq!(span.t_end, Some(t_end));
@@ -84,7 +84,7 @@ fn a_release_height_survives_as_the_speed_it_gives() {
 fn names_with_quotes_and_newlines_make_loadable_files() {
     let spec = SceneSpec::default().with(Key::Radius, 0.02);
     let text = to_toml("a \"quoted\"\nname", "it's \"fine\"", &spec, None).unwrap();
-    let p = Preset::parse(&text, "x", Origin::BuiltIn).unwrap();
+    let p = Preset::parse(&text, "x", PresetOrigin::BuiltIn).unwrap();
     assert_eq!(p.name, "a \"quoted\"\nname");
     assert_eq!(p.spec.get(Key::Radius), Some(0.02));
 }
@@ -184,7 +184,7 @@ fn every_row_reads_back_what_it_writes_through_scene_layer_cli_and_preset() {
             assert_eq!((c, d), (a, b), "{argv:?}");
             // Through a preset file and back: the same scene.
             let text = to_toml("x", "d", &SceneSpec::of(&a, &b), None).unwrap();
-            let back = Preset::parse(&text, "x", Origin::BuiltIn).unwrap();
+            let back = Preset::parse(&text, "x", PresetOrigin::BuiltIn).unwrap();
             assert_eq!(back.spec.resolve().unwrap(), (a, b), "{}", p.name);
         }
     }

@@ -1023,7 +1023,7 @@ fn small_screens_keep_the_important_lines() {
     // prints it) and the regime verdict.
     let s = screen("paper-b4.9", 0.3, (80, 24), false, Some("f"));
     let fit = right_panel(&s);
-    assert!(fit.contains("μ_k 0.1577"), "{fit}");
+    assert!(fit.contains("μ_k 0.1484"), "{fit}");
     // The verdict (with its margin) and what was observed (issue 11b's one verdict).
     assert!(fit.contains("predicted recollide"), "{fit}");
     assert!(fit.contains("observed recollide"), "{fit}");
@@ -1410,11 +1410,16 @@ fn the_data_table_of_a_position_track_shows_x_in_cm() {
     let x = m.x.as_ref().unwrap();
     for (r, i) in rows.iter().zip(0..) {
         // The tracked centre where the model's left ball would be: x − R, aligned
-        // by the impact's time and place shift the position fit profiles out (a
-        // fraction of a millimetre here: the 0.3 mm noise moves the detected place).
+        // by the impact's time and place shift the position fit profiles out (about a
+        // millimetre here, 1.1 mm before the impact with the track's own v0 and the
+        // preset's μ_k: the 0.3 mm noise moves the detected place).
         let model = a.lab.solution.at(m.t[i]).left.x;
         let want = a.lab.track_x.as_ref().unwrap()[i];
-        assert!(want.is_nan() || (want - (x[i] - a.lab.scene.radius)).abs() < 1e-3);
+        assert!(
+            want.is_nan() || (want - (x[i] - a.lab.scene.radius)).abs() < 1.5e-3,
+            "row {i}: {want} vs {}",
+            x[i] - a.lab.scene.radius
+        );
         assert!(r[7] == want || (r[7].is_nan() && want.is_nan()), "row {i}");
         assert_eq!(r[8], model);
         assert!(r[9] == want - model || want.is_nan(), "row {i}");

@@ -43,7 +43,7 @@ pub fn run(
         fit::FitError::Cancelled => CliError::Interrupted,
         e => CliError::Fit(e),
     })?;
-    let sources = sources::Sources::of(&lab, typed, scene_args, data);
+    let sources = sources::Sources::of(&lab, typed, data);
     Ok(match args.format {
         FitFormat::Json => json::text(json::FitJson {
             scene: &scene,

@@ -1,5 +1,6 @@
-//! Where each value of a fit's scene came from — the command line, the data file's
-//! `# scene` lines, the data themselves (v0 from the approach), or the preset — the
+//! Where each value of a fit's scene came from ([`crate::lab::Origin`], the lab's one
+//! rule) — the command line, the data file's `# scene` lines, the data themselves (v0
+//! from the approach: the user's, else the preset's own series), or the preset — the
 //! values that nobody measured or gave yet enter a reported number (the mass, in F_net
 //! and τ_net: assumed), and an option that contradicts the data: said on the scene
 //! line and in JSON.
@@ -10,24 +11,12 @@ use serde::Serialize;
 
 use crate::cli::args::{DataArgs, SceneArgs};
 use crate::lab::Lab;
-use crate::lab::approach;
+use crate::lab::{Contradiction, Whose, approach};
 use crate::settings::params::Key;
-use crate::settings::units::{Dimension, show, show_exact, significant, with_uncertainty};
+use crate::settings::units::{Dimension, show, show_exact, significant};
 use crate::study::fit::Approach;
 
-/// Where one scene value came from.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "snake_case")]
-pub(super) enum Source {
-    /// An option on the command line.
-    Flag,
-    /// The data file's own `# scene` lines.
-    File,
-    /// Measured in the data (v0: the approach speed).
-    Data,
-    /// The preset under the rest.
-    Preset,
-}
+use crate::lab::Origin as Source;
 
 /// The values of a scene, each with its source.
 const SCENE: [Key; 10] = [
@@ -51,8 +40,12 @@ pub(super) struct Sources {
     /// Each scene value (by its parameter name) and where it came from.
     pub values: BTreeMap<&'static str, Source>,
     /// Values no option, file line or measurement gives that enter a reported number
-    /// (the masses, in |F_net| and |τ_net|): the preset's, assumed for the user's data.
+    /// (the masses, in |F_net|, |τ_net| and the energies): the preset's, assumed for
+    /// the user's data.
     pub assumed: Vec<&'static str>,
+    /// Whose data the `data` values were measured in: the file(s) named, or `preset
+    /// NAME's series`; `null` without data.
+    pub data: Option<String>,
     /// The approach speed the data measure (the v0 they give), m/s.
     pub approach: Option<Approach>,
     /// Values given that contradict the data by more than the data's ± 2σ.
@@ -67,50 +60,45 @@ pub(super) struct Sources {
 }
 
 impl Sources {
-    /// The sources of `lab`'s scene: the command line's `typed` values, the data
-    /// file's own scene lines (the rest of `used`), the data's own values.
-    pub fn of(lab: &Lab, typed: &SceneArgs, used: &SceneArgs, data: &DataArgs) -> Sources {
-        let given = |spec: &crate::settings::spec::SceneSpec, k: Key| {
-            let height = match k {
-                Key::V0Left => Some(Key::HeightLeft),
-                Key::V0Right => Some(Key::HeightRight),
-                _ => None,
-            };
-            spec.given().any(|(j, _)| j == k || Some(j) == height)
-        };
-        let own = lab.own_data().is_some();
-        let source = |k: Key| {
-            if given(&typed.values, k) {
-                Source::Flag
-            } else if given(&used.values, k) {
-                Source::File
-            } else if own && given(&lab.settings().from_data, k) {
-                Source::Data
-            } else {
-                Source::Preset
-            }
-        };
-        let values: BTreeMap<&'static str, Source> =
-            SCENE.iter().map(|&k| (k.name(), source(k))).collect();
-        let assumed = [Key::MassLeft, Key::MassRight]
-            .into_iter()
-            .filter(|&k| own && typed.preset.is_none() && source(k) == Source::Preset)
-            .map(Key::name)
+    /// The sources of `lab`'s scene ([`crate::lab::Layers::origin`]): the command
+    /// line's `typed` values, the data file's own scene lines, the data's own values.
+    pub fn of(lab: &Lab, typed: &SceneArgs, data: &DataArgs) -> Sources {
+        let settings = lab.settings();
+        let values: BTreeMap<&'static str, Source> = SCENE
+            .iter()
+            .map(|&k| (k.name(), settings.origin(k)))
             .collect();
-        let approach = lab.own_data().and_then(|o| approach(&o.series));
+        let assumed = SCENE
+            .iter()
+            .filter(|k| values.get(k.name()) == Some(&Source::Assumed))
+            .map(|k| k.name())
+            .collect();
         let file = data.data.first().map(|p| p.display().to_string());
-        let mut out = Sources {
+        let whose = match lab.data_in_use().map(|d| &d.whose) {
+            Some(Whose::Own(name)) => Some(name.clone()),
+            Some(Whose::Preset(name)) => Some(format!("preset {name}'s series")),
+            None => None,
+        };
+        let by = |c: &Contradiction| match c.origin {
+            Source::Flag => "--v0".to_string(),
+            Source::File => format!("{}'s header", file.as_deref().unwrap_or("the file")),
+            _ => "edited".to_string(),
+        };
+        Sources {
             preset: lab.preset().name.clone(),
             values,
             assumed,
-            approach,
-            contradictions: Vec::new(),
+            data: whose,
+            approach: lab.series().and_then(approach),
+            contradictions: lab
+                .contradiction
+                .iter()
+                .map(|c| c.describe(&by(c)))
+                .collect(),
             typed_rows: typed.values.rows(),
             preset_asked: typed.preset.is_some(),
             file,
-        };
-        out.contradictions = out.contradicted(lab);
-        out
+        }
     }
 
     fn source(&self, k: Key) -> Source {
@@ -123,28 +111,6 @@ impl Sources {
             .copied()
             .filter(|&k| self.source(k) == s)
             .collect()
-    }
-
-    /// The given v0 that the data's approach speed contradicts by more than its ± 2σ.
-    fn contradicted(&self, lab: &Lab) -> Vec<String> {
-        let Some(a) = self.approach else {
-            return Vec::new();
-        };
-        let v0 = lab.scene.left.v0;
-        let by = match self.source(Key::V0Left) {
-            Source::Flag => "--v0".to_string(),
-            Source::File => format!("{}'s header", self.file.as_deref().unwrap_or("the file")),
-            _ => return Vec::new(),
-        };
-        if (v0 - a.speed).abs() <= 2.0 * a.se {
-            return Vec::new();
-        }
-        let (speed, pm) = with_uncertainty(a.speed, 2.0 * a.se, 3);
-        vec![format!(
-            "the left ball's v0 = {} ({by}) contradicts the data: they approach at {speed} ± {pm} m/s (± 2σ, {} frames before the impact); the value given is used",
-            show(v0, Dimension::Speed),
-            a.frames
-        )]
     }
 
     /// "m = 167 g (assumed: preset paper-b4.9's)", for the note under |F_net| and
@@ -171,7 +137,8 @@ impl Sources {
             self.keys(Source::Data),
         );
         let mut parts = Vec::new();
-        if self.preset_asked || !self.keys(Source::Preset).is_empty() {
+        let from_preset = !self.keys(Source::Preset).is_empty() || !self.assumed.is_empty();
+        if self.preset_asked || from_preset {
             // Named as it came: the user's `--preset`, or the default under the rest.
             let default = if self.preset_asked { "" } else { "default " };
             parts.push(format!("{default}preset {}", self.preset));
@@ -185,7 +152,12 @@ impl Sources {
             });
         }
         if !data.is_empty() {
-            parts.push("v0 from the data's approach".to_string());
+            parts.push(
+                match self.data.as_deref().filter(|w| w.starts_with("preset ")) {
+                    Some(_) => "v0 from the approach in its series".to_string(),
+                    None => "v0 from the data's approach".to_string(),
+                },
+            );
         }
         if !flags.is_empty() {
             let typed: Vec<String> = self

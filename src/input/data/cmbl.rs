@@ -7,9 +7,10 @@
 
 use roxmltree::Node;
 
+use super::layout::{Axis, position_column};
 use super::notes::Notes;
 use super::options::{DataError, Reading};
-use super::positions::{Axis, position_column, read_table};
+use super::positions::read_table;
 use super::table::Table;
 use super::xml::{self, child_text};
 use crate::study::measured::Track;

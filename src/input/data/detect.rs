@@ -80,16 +80,27 @@ fn read_table(
         return velocities::read_table(table, file, reading)
             .map(|(m, n)| (RawSeries::Velocities(m), n));
     }
-    accelerations_only(table).map_err(|what| DataError {
+    accelerations_only(table).map_err(|e| DataError {
         file: file.to_string(),
-        what,
+        what: e.to_string(),
     })?;
     positions::read_table(table, file, reading).map(|(t, n)| (RawSeries::Positions(t), n))
 }
 
+/// A table of accelerations only (phyphox's accelerometer), at its header's `line`
+/// with those `columns`: what groovelab needs instead.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error(
+    "line {line}: the file holds accelerations only ({columns}), no positions or velocities: groovelab needs the ball's position over time (a video track: t, x, y) or its velocities (t, v_cm, v_t); a phone's accelerometer (phyphox) cannot give them"
+)]
+pub struct AccelerationsOnly {
+    pub line: usize,
+    pub columns: String,
+}
+
 /// A table of accelerations only (phyphox's accelerometer): refused with what
 /// groovelab needs instead.
-fn accelerations_only(table: &Table) -> Result<(), String> {
+fn accelerations_only(table: &Table) -> Result<(), AccelerationsOnly> {
     let Some(header) = table.rows().take(4).find(|r| {
         (0..r.len()).any(|i| {
             let c = table::clean(r.cell(i));
@@ -102,20 +113,19 @@ fn accelerations_only(table: &Table) -> Result<(), String> {
     let accelerations = cells
         .iter()
         .any(|c| c.to_lowercase().contains("acceleration"));
-    let positions = cells
-        .iter()
-        .any(|c| positions::position_column(c).is_some_and(|c| c.axis == positions::Axis::X));
+    let positions = cells.iter().any(|c| {
+        super::layout::position_column(c).is_some_and(|c| c.axis == super::layout::Axis::X)
+    });
     if accelerations && !positions {
-        return Err(format!(
-            "line {}: the file holds accelerations only ({}), no positions or velocities: groovelab needs the ball's position over time (a video track: t, x, y) or its velocities (t, v_cm, v_t); a phone's accelerometer (phyphox) cannot give them",
-            header.line,
-            cells
+        return Err(AccelerationsOnly {
+            line: header.line,
+            columns: cells
                 .iter()
                 .filter(|c| !c.is_empty())
                 .copied()
                 .collect::<Vec<_>>()
-                .join(", ")
-        ));
+                .join(", "),
+        });
     }
     Ok(())
 }

@@ -6,6 +6,7 @@
 
 mod cmbl;
 mod detect;
+mod layout;
 mod notes;
 mod options;
 mod positions;

@@ -6,163 +6,12 @@
 //! columns only (velocities and the like are ignored), converts to SI, keeps empty and
 //! `NaN` cells as missing. The velocities are derived in `study::measured`.
 
+use super::layout::{Axis, Col, find_header, name_tracks, pick_roles, position_column};
 use super::notes::{Notes, UnitNote};
 use super::options::{DataError, MAX_ROWS, Reading};
 use super::scales::{Given, LENGTHS, TIMES, check_track};
-use super::table::{Sep, Table, TableRow, clean, missing, number, unit_factor};
-use crate::settings::units::Dimension;
+use super::table::{Table, TableRow, missing, number};
 use crate::study::measured::Track;
-
-/// One header cell of a position file: which track, which axis, its SI factor.
-#[derive(Clone, Debug, PartialEq)]
-pub(super) struct Col {
-    pub track: String,
-    pub axis: Axis,
-    pub factor: Option<f64>,
-}
-
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) enum Axis {
-    T,
-    X,
-    Y,
-}
-
-/// Symbols and names of other quantities that share a column name with an axis:
-/// Tracker's `v_x`, `a_y`, `p_x`, Logger Pro's `X Velocity` are a velocity, an
-/// acceleration and a momentum, not positions.
-const OTHER_QUANTITIES: [&str; 10] = [
-    "v",
-    "a",
-    "p",
-    "f",
-    "θ",
-    "ω",
-    "velocity",
-    "acceleration",
-    "speed",
-    "momentum",
-];
-
-/// Reads a header cell such as `t`, `t/ms`, `x (cm)`, `mass A x`, `x_mark [mm]`,
-/// `y_cm` (unit as suffix), `Latest: X2 (m)` (a second point). `None` for other
-/// columns (`v_x`, `v_{x}`, `frame`, …) and for a unit that does not fit the axis.
-pub(super) fn position_column(cell: &str) -> Option<Col> {
-    let h = clean(cell);
-    // A unit in brackets or after a slash.
-    let (name, unit) = match h.find(['(', '[', '/']) {
-        Some(i) => (&h[..i], &h[i..]),
-        None => (h.as_str(), ""),
-    };
-    let tokens: Vec<&str> = name
-        .split([' ', '_', '.', '-'])
-        .filter(|t| !t.is_empty())
-        .collect();
-    // `x2`, `y2`: Logger Pro's second point.
-    let axis_of = |t: &str| -> Option<(Axis, Option<String>)> {
-        let (letter, digits) = t.split_at(t.find(|c: char| c.is_ascii_digit()).unwrap_or(t.len()));
-        let point = (!digits.is_empty() && digits.chars().all(|c| c.is_ascii_digit()))
-            .then(|| format!("point {digits}"));
-        if !digits.is_empty() && point.is_none() {
-            return None;
-        }
-        match (letter, &point) {
-            ("t" | "time", None) => Some((Axis::T, None)),
-            ("x", _) => Some((Axis::X, point)),
-            ("y", _) => Some((Axis::Y, point)),
-            _ => None,
-        }
-    };
-    let mut axes = tokens
-        .iter()
-        .enumerate()
-        .filter_map(|(i, t)| axis_of(t).map(|a| (i, a)));
-    let (at, (axis, point)) = axes.next()?;
-    if axes.next().is_some() {
-        return None;
-    }
-    let dim = if axis == Axis::T {
-        Dimension::Time
-    } else {
-        Dimension::Length
-    };
-    let mut rest: Vec<&str> = tokens
-        .iter()
-        .enumerate()
-        .filter(|&(i, _)| i != at)
-        .map(|(_, t)| *t)
-        .collect();
-    if rest.iter().any(|t| OTHER_QUANTITIES.contains(t)) {
-        return None;
-    }
-    let mut factor = unit_factor(unit, dim)?;
-    // `x_cm`, `t_s`: a trailing unit token rather than a track name.
-    if factor.is_none()
-        && rest.len() == 1
-        && let Some(Some(f)) = unit_factor(rest[0], dim)
-    {
-        factor = Some(f);
-        rest.clear();
-    }
-    let track = match point {
-        Some(p) if rest.is_empty() => p,
-        Some(p) => format!("{} {p}", rest.join(" ")),
-        None => rest.join(" "),
-    };
-    Some(Col {
-        track,
-        axis,
-        factor,
-    })
-}
-
-/// Names that say "the centre" or "the mark" when no option does.
-const CENTRE_NAMES: [&str; 6] = ["centre", "center", "ball", "cm", "c", "mass a"];
-const MARK_NAMES: [&str; 6] = ["mark", "rim", "spot", "m", "mass b", "point 2"];
-
-fn same(a: &str, b: &str) -> bool {
-    let norm = |s: &str| s.to_lowercase().replace([' ', '_'], "");
-    norm(a) == norm(b)
-}
-
-/// The column header and the lines before it (Tracker's `#multi:` and track names, or
-/// a single track's name): the first row with a time column, within four rows.
-fn find_header(
-    rows: &mut impl Iterator<Item = TableRow>,
-) -> Result<(Vec<TableRow>, TableRow), String> {
-    let mut before = Vec::new();
-    loop {
-        let Some(row) = rows.next() else {
-            return Err(
-                "no header with a time column t found, expected columns t and x (and y), or t, v_cm and v_t"
-                    .into(),
-            );
-        };
-        let has_t =
-            (0..row.len()).any(|i| position_column(row.cell(i)).is_some_and(|c| c.axis == Axis::T));
-        if has_t {
-            return Ok((before, row));
-        }
-        if before.len() == 3 {
-            return Err(format!(
-                "line {}: no header with a time column t in the first lines, expected columns t and x (and y) for a position track, or t, v_cm and v_t for velocities",
-                row.line
-            ));
-        }
-        before.push(row);
-    }
-}
-
-/// Why the lines above a position file's column names do not say its tracks.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-pub enum LayoutError {
-    #[error("a '#multi:' file needs a line of track names before the column names")]
-    NoTrackNames,
-    #[error(
-        "line {line}: a multi-track file must be tab, comma or semicolon separated (Tracker writes tabs)"
-    )]
-    SpaceSeparated { line: usize },
-}
 
 /// Why a data row of a position file cannot be read (`line`: the file's line).
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -183,104 +32,6 @@ pub enum RowError {
         "line {line}: t = {time} s does not increase (previous {prev} s), allowed strictly increasing times"
     )]
     NotIncreasing { line: usize, time: f64, prev: f64 },
-}
-
-/// Gives the columns without a track name the one the lines above them say: a
-/// multi-track file's names line, or a single-track file's title; returns the format.
-fn name_tracks(
-    cols: &mut [Option<Col>],
-    before: &[TableRow],
-    sep: Sep,
-) -> Result<&'static str, LayoutError> {
-    let multi = before
-        .first()
-        .is_some_and(|r| r.cell(0).to_lowercase().starts_with("#multi"));
-    if multi {
-        // The names line puts each track's name above its first column.
-        let Some(names) = before.get(1) else {
-            return Err(LayoutError::NoTrackNames);
-        };
-        if sep == Sep::Space {
-            return Err(LayoutError::SpaceSeparated { line: names.line });
-        }
-        let mut current = String::new();
-        for (j, col) in cols.iter_mut().enumerate() {
-            let name = names.cell(j);
-            if !name.is_empty() {
-                current = name.to_string();
-            }
-            if let Some(c) = col
-                && c.axis != Axis::T
-                && c.track.is_empty()
-            {
-                c.track = current.clone();
-            }
-        }
-        Ok("Tracker multi-track")
-    } else if let Some(title) = before.last() {
-        // Tracker's single-track export: the track's name above the header.
-        let name = title.cell(0).to_string();
-        for c in cols.iter_mut().flatten() {
-            if c.axis != Axis::T && c.track.is_empty() {
-                c.track = name.clone();
-            }
-        }
-        Ok("Tracker single-track")
-    } else {
-        Ok("CSV")
-    }
-}
-
-/// The centre's and the mark's track names among `names` (tracks with an x column, in
-/// file order): as the options say, else by their names, else the first two.
-pub(super) fn pick_roles(
-    names: &[String],
-    reading: &Reading,
-) -> Result<(String, Option<String>), String> {
-    let pick = |want: &Option<String>, defaults: &[&str], role: &str| match want {
-        Some(w) => names
-            .iter()
-            .find(|n| same(n, w))
-            .cloned()
-            .map(Some)
-            .ok_or_else(|| {
-                let found: Vec<&str> = names
-                    .iter()
-                    .map(|n| {
-                        if n.is_empty() {
-                            "(unnamed)"
-                        } else {
-                            n.as_str()
-                        }
-                    })
-                    .collect();
-                format!(
-                    "no track '{w}' for the {role} in the file, tracks found: {}",
-                    found.join(", ")
-                )
-            }),
-        None => Ok(names
-            .iter()
-            .find(|n| defaults.iter().any(|d| same(n, d)))
-            .cloned()),
-    };
-    let centre = match pick(&reading.centre, &CENTRE_NAMES, "centre")? {
-        Some(c) => c,
-        None => names
-            .iter()
-            .find(|n| n.is_empty())
-            .unwrap_or(&names[0])
-            .clone(),
-    };
-    let mark = match pick(&reading.mark, &MARK_NAMES, "mark")? {
-        Some(m) if m != centre => Some(m),
-        Some(_) => None,
-        None => names.iter().find(|n| **n != centre).cloned(),
-    };
-    if reading.mark.is_some() && mark.is_none() {
-        return Err("the mark and the centre name the same track".into());
-    }
-    Ok((centre, mark))
 }
 
 /// Parses a position file (see the module doc) into a [`Track`] in SI units.
@@ -315,10 +66,6 @@ pub(super) fn read_table(
         }
         f => f,
     };
-    let it = cols
-        .iter()
-        .position(|c| c.as_ref().is_some_and(|c| c.axis == Axis::T))
-        .expect("the header has a t column");
     let names = tracks_with_x(&cols, &header).map_err(err)?;
     let (centre, mark) = pick_roles(&names, reading).map_err(err)?;
     let index = |track: &str, axis: Axis| {
@@ -327,6 +74,17 @@ pub(super) fn read_table(
                 .is_some_and(|c| c.axis == axis && c.track == track)
         })
     };
+    // A track's own time column where it has one (tracks side by side), else the
+    // first (one time for every track).
+    let first_t = cols
+        .iter()
+        .position(|c| c.as_ref().is_some_and(|c| c.axis == Axis::T))
+        .expect("the header has a t column");
+    let it = index(&centre, Axis::T).unwrap_or(first_t);
+    let mark_t = mark
+        .as_ref()
+        .map(|m| index(m, Axis::T).unwrap_or(first_t))
+        .filter(|&t| t != it);
     let ix = index(&centre, Axis::X).expect("the centre has an x column");
     let iy = index(&centre, Axis::Y);
     let im = match &mark {
@@ -353,9 +111,26 @@ pub(super) fn read_table(
         t: (it, units.factor(it, Axis::T)),
         x: (ix, units.factor(ix, Axis::X)),
         y: iy.map(|i| (i, units.factor(i, Axis::Y))),
-        mark: im.map(|(a, b)| ((a, units.factor(a, Axis::X)), (b, units.factor(b, Axis::Y)))),
+        mark: im
+            .filter(|_| mark_t.is_none())
+            .map(|(a, b)| ((a, units.factor(a, Axis::X)), (b, units.factor(b, Axis::Y)))),
     };
+    if mark_t.is_some() {
+        track.mark = None;
+    }
     read_rows(rows, &columns, &mut track).map_err(|e| err(e.to_string()))?;
+    // A mark with its own time column: read as a track of its own, matched to the
+    // centre's frames by time (as two one-track exports are).
+    if let (Some(t), Some((a, b))) = (mark_t, im) {
+        let own = Columns {
+            t: (t, units.factor(t, Axis::T)),
+            x: (a, units.factor(a, Axis::X)),
+            y: Some((b, units.factor(b, Axis::Y))),
+            mark: None,
+        };
+        let name = mark.clone().unwrap_or_default();
+        track = with_own_time_mark(track, table, &own, name).map_err(err)?;
+    }
     if track.x.iter().filter(|x| x.is_finite()).count() == 0 {
         return Err(err(format!(
             "no frame with a position x of '{}', expected rows of numbers below the header",
@@ -364,15 +139,19 @@ pub(super) fn read_table(
     }
     let given = units.given(it, ix);
     check_track(&track, &given).map_err(|e| err(e.to_string()))?;
-    let notes = Notes {
+    Ok((track, notes(format, names, &given)))
+}
+
+/// What a position file said about itself: its format, tracks and units.
+fn notes(format: &str, tracks: Vec<String>, given: &Given) -> Notes {
+    Notes {
         format: format.to_string(),
-        tracks: names,
+        tracks,
         units: vec![
             UnitNote::of("time", &TIMES, given.time.0, given.time.1),
             UnitNote::of("length", &LENGTHS, given.length.0, given.length.1),
         ],
-    };
-    Ok((track, notes))
+    }
 }
 
 /// Each column's unit: an option given wins over the header (a header that states a
@@ -446,6 +225,27 @@ fn tracks_with_x(cols: &[Option<Col>], header: &TableRow) -> Result<Vec<String>,
         ));
     }
     Ok(names)
+}
+
+/// `track` with the mark read from `table`'s `columns` (its own time column) and
+/// matched to the centre's frames by time.
+fn with_own_time_mark(
+    track: Track,
+    table: &Table,
+    columns: &Columns,
+    name: String,
+) -> Result<Track, String> {
+    let mut rim = Track {
+        centre_name: name,
+        ..Track::default()
+    };
+    let mut rows = table.rows();
+    find_header(&mut rows)?;
+    read_rows(rows, columns, &mut rim).map_err(|e| e.to_string())?;
+    let format = track.format;
+    let mut track = track.with_mark(&rim).map_err(|e| e.to_string())?;
+    track.format = format;
+    Ok(track)
 }
 
 /// Where a track's values are in a row, and their SI factors.

@@ -71,7 +71,15 @@ pub fn inspect(
     reading: &Reading,
     derive: &Derive,
 ) -> Result<Report, DataError> {
-    let (raw, notes) = super::detect::read_with_notes(text, file, reading)?;
+    let (raw, notes) = match super::detect::read_with_notes(text, file, reading) {
+        Err(e) if e.what.starts_with("no impact found") => {
+            // A velocity file without an impact: what it holds all the same.
+            let table = super::table::Table::new(text);
+            let (m, notes) = super::velocities::without_impact(&table, file, reading)?;
+            return Ok(single_ball(m, file, notes));
+        }
+        read => read?,
+    };
     Ok(match raw {
         RawSeries::Velocities(m) => {
             let t = &m.t;
@@ -108,6 +116,30 @@ pub fn inspect(
         }
         RawSeries::Positions(track) => of_track(track, file, notes, reading, derive),
     })
+}
+
+/// The report of a velocity file with no impact in it: a single ball's velocities.
+fn single_ball(m: crate::study::measured::Measured, file: &str, notes: Notes) -> Report {
+    let t = &m.t;
+    let fastest = m.v_cm.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
+    Report {
+        file: file.to_string(),
+        notes,
+        kind: "velocities",
+        centre: None,
+        mark: None,
+        frames: t.len(),
+        frame_rate: 1.0 / frame_spacing(t),
+        t_first: t[0],
+        t_last: t[t.len() - 1],
+        missing: jumps(t),
+        scatter: None,
+        approach_speed: None,
+        approach_speed_se: None,
+        speed: Some(fastest),
+        impacts: Vec::new(),
+        impact_note: "a single ball's velocities, no impact found (v_cm never drops sharply): a fit needs one; give its time with --impact-at".into(),
+    }
 }
 
 /// The report of a position track: its derivation's findings when it shows an impact.

@@ -8,9 +8,9 @@
 
 use roxmltree::Node;
 
+use super::layout::pick_roles;
 use super::notes::{Notes, UnitNote};
 use super::options::{DataError, MAX_ROWS, Reading};
-use super::positions::pick_roles;
 use super::scales::{Given, LENGTHS, check_track};
 use super::xml::{self, child};
 use crate::settings::units::{Dimension, significant};

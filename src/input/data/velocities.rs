@@ -55,13 +55,16 @@ pub fn parse(text: &str, file: &str, reading: &Reading) -> Result<Measured, Data
     read_table(&Table::new(text), file, reading).map(|(m, _)| m)
 }
 
-/// [`parse`] of a file already split into rows, with what the file said about its
-/// units ([`Notes`]).
-pub(super) fn read_table(
+/// A velocity table's t, v_cm and v_t, SI.
+type VelocityColumns = (Vec<f64>, Vec<f64>, Vec<f64>);
+
+/// The columns t, v_cm and v_t of a velocity table in SI units, as the file has
+/// them (no impact sought), and how their units were decided.
+fn columns(
     table: &Table,
     file: &str,
     reading: &Reading,
-) -> Result<(Measured, Notes), DataError> {
+) -> Result<(VelocityColumns, Units), DataError> {
     let err = |what: String| DataError {
         file: file.to_string(),
         what,
@@ -122,6 +125,37 @@ pub(super) fn read_table(
     if t.len() < 3 {
         return Err(err(format!("{} data rows, allowed at least 3", t.len())));
     }
+    Ok(((t, v_cm, v_t), units))
+}
+
+/// A velocity table read as the file has it, its times not moved (for `data` on a
+/// file with no impact in it: a single ball's velocities).
+pub(super) fn without_impact(
+    table: &Table,
+    file: &str,
+    reading: &Reading,
+) -> Result<(Measured, Notes), DataError> {
+    let ((t, v_cm, v_t), units) = columns(table, file, reading)?;
+    let notes = Notes {
+        format: "table (t, v_cm, v_t)".into(),
+        tracks: Vec::new(),
+        units: units.notes(),
+    };
+    Ok((Measured::velocities(t, v_cm, v_t), notes))
+}
+
+/// [`parse`] of a file already split into rows, with what the file said about its
+/// units ([`Notes`]).
+pub(super) fn read_table(
+    table: &Table,
+    file: &str,
+    reading: &Reading,
+) -> Result<(Measured, Notes), DataError> {
+    let err = |what: String| DataError {
+        file: file.to_string(),
+        what,
+    };
+    let ((mut t, mut v_cm, mut v_t), units) = columns(table, file, reading)?;
     let mirrored = turn_if_reversed(&t, &mut v_cm, &mut v_t, reading.impact_at);
     let impact = match reading.impact_at {
         Some(at) => at,

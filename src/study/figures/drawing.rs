@@ -26,18 +26,6 @@ pub(crate) fn rounded(v: f64) -> String {
     }
 }
 
-/// `v +- e` with both to the decimal of `e`'s first significant digit (0.1698 +- 0.0004,
-/// not 0.16980177 +- 0.00040326), by the rule of every ± (`settings::units::with_uncertainty`: an `e`
-/// below 1e-6 is "< 1e-6"); `v` alone ([`rounded`]) when `e` is not a number.
-pub(crate) fn with_error(v: f64, e: f64) -> String {
-    if !(e.is_finite() && e > 0.0 && v.is_finite()) {
-        return format!("{} (no +-)", rounded(v));
-    }
-    let decimals = (-e.log10().floor()).clamp(0.0, 12.0) as usize;
-    let (v, e) = crate::settings::units::with_uncertainty(v, e, decimals);
-    format!("{v} +- {e}")
-}
-
 /// An axis label as plotters writes it (one to five decimals), but never "-0.0": a key
 /// point a rounding below zero is 0.
 pub(super) fn tick(v: &f64) -> String {
@@ -253,10 +241,6 @@ pub(super) mod tests {
     fn caption_numbers_are_rounded_to_their_meaning() {
         assert_eq!(rounded(0.16667742330550958), "0.1667");
         assert_eq!(rounded(f64::NAN), "not measured");
-        assert_eq!(with_error(0.16980177, 0.00040326), "0.1698 +- 0.0004");
-        assert_eq!(with_error(0.1698, 0.0), "0.1698 (no +-)");
-        assert_eq!(with_error(0.17, 3e-9), "0.170000 +- < 1e-6");
-        assert_eq!(with_error(0.17, f64::NAN), "0.17 (no +-)");
     }
     use crate::physics::scene::Scene;
     use crate::study::preset::Preset;

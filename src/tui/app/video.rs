@@ -39,10 +39,12 @@ impl App {
         };
         let name = short(self.video.name.as_deref().unwrap_or_default());
         match result {
-            Ok(done) => match self
-                .lab
-                .attach_data(done.own, done.from_data, done.scene_file)
-            {
+            Ok(done) => match self.lab.attach_data(
+                done.own,
+                done.from_data,
+                done.file_keys,
+                done.scene_file,
+            ) {
                 Ok(()) => {
                     self.video.view = done.view;
                     let sol = &self.lab.solution;

@@ -40,7 +40,8 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         }
         State::Ready(Err(e)) => vec![(9, Line::from(Span::styled(e.to_string(), theme.error)))],
         State::Ready(Ok(f)) => {
-            let mut lines = line_fit_lines(&f.line_fit, theme);
+            let mut lines = sources_lines(app, theme);
+            lines.extend(line_fit_lines(&f.line_fit, app, theme));
             paper_row_lines(app, &mut lines, theme);
             model_fits_lines(f, usize::from(inner.width), &mut lines, theme);
             model_choice_lines(&f.models, &mut lines, theme);
@@ -50,9 +51,73 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     draw_lines(by_priority(lines, inner), inner, buf);
 }
 
+/// Where the fitted scene's values came from, by origin ("data: v0 0.448 m/s  flag:
+/// R, b  preset: μ_k (start), e, c_rr  assumed: m 167 g"), and a v0 given that the
+/// data contradict.
+fn sources_lines(app: &App, theme: &Theme) -> Ranked<'static> {
+    use crate::lab::Origin;
+    use crate::settings::params::Key;
+    let g = theme.glyphs;
+    let settings = app.lab.settings();
+    let scene = &app.lab.scene;
+    let rows = [
+        (Key::Radius, "R".to_string()),
+        (Key::Width, "b".to_string()),
+        (
+            Key::MassLeft,
+            format!(
+                "m {}",
+                crate::settings::units::show(scene.left.mass, Dimension::Mass)
+            ),
+        ),
+        (Key::Mu, format!("{}_k (start)", g.mu)),
+        (
+            Key::V0Left,
+            format!(
+                "v0 {}",
+                crate::settings::units::show(scene.left.v0, Dimension::Speed)
+            ),
+        ),
+        (Key::Restitution, "e".to_string()),
+        (Key::RollingResistance, "c_rr".to_string()),
+    ];
+    let mut spans = vec![Span::styled("scene from ", theme.dim)];
+    for origin in Origin::ALL {
+        let names: Vec<&str> = rows
+            .iter()
+            .filter(|(k, _)| settings.origin(*k) == origin)
+            .map(|(_, n)| n.as_str())
+            .collect();
+        if names.is_empty() {
+            continue;
+        }
+        spans.push(Span::styled(format!("{}: ", origin.legend()), theme.dim));
+        spans.push(Span::styled(
+            g.text(&format!("{}  ", names.join(", "))),
+            theme.text,
+        ));
+    }
+    let mut lines = vec![(3, Line::from(spans))];
+    if let Some(c) = &app.lab.contradiction {
+        let by = match c.origin {
+            Origin::Edited => "edited",
+            Origin::File => "the file's header",
+            _ => "an option",
+        };
+        lines.push((
+            8,
+            Line::from(Span::styled(
+                g.text(&format!("note: {}", c.describe(by))),
+                theme.error,
+            )),
+        ));
+    }
+    lines
+}
+
 /// The paper's method: straight lines over the sliding phase, their accelerations,
 /// μ_k and the net force and torque.
-fn line_fit_lines(l: &fit::LineFit, theme: &Theme) -> Ranked<'static> {
+fn line_fit_lines(l: &fit::LineFit, app: &App, theme: &Theme) -> Ranked<'static> {
     let g = theme.glyphs;
     let label = |s: &str| Span::styled(g.text(s), theme.dim);
     let value = |s: String| Span::styled(g.text(&s), theme.text);
@@ -115,6 +180,11 @@ fn line_fit_lines(l: &fit::LineFit, theme: &Theme) -> Ranked<'static> {
                 value(format!("{:.3} N", l.f_net)),
                 label(&format!("  |{}_net| ", g.tau)),
                 value(format!("{:.4} N m", l.tau_net)),
+                label(if app.lab.settings().mass_assumed() {
+                    "  (m assumed)"
+                } else {
+                    ""
+                }),
             ]),
         ),
     ]

@@ -218,6 +218,16 @@ fn after_impact_lines(app: &App, theme: &Theme) -> Ranked<'static> {
     lines
 }
 
+/// " (m assumed)" after a number the mass enters while it is assumed (the user's data
+/// do not measure it), else nothing.
+fn assumed(app: &App) -> &'static str {
+    if app.lab.settings().mass_assumed() {
+        " (m assumed)"
+    } else {
+        ""
+    }
+}
+
 /// The contact force, the net force and the net torque.
 fn force_lines(app: &App, theme: &Theme) -> Ranked<'static> {
     let g = theme.glyphs;
@@ -230,6 +240,7 @@ fn force_lines(app: &App, theme: &Theme) -> Ranked<'static> {
                 value(format!("{} N", sig_figs(f.normal_a.norm(), 4)), theme),
                 label("  F_net ", theme),
                 value(format!("{} N", sig_figs(f.net.norm(), 4)), theme),
+                label(assumed(app), theme),
             ]),
         ),
         (
@@ -238,6 +249,7 @@ fn force_lines(app: &App, theme: &Theme) -> Ranked<'static> {
                 label(&format!("{}_net ", g.tau), theme),
                 value(format!("{} N m", sig_figs(f.torque.norm(), 4)), theme),
                 label(&format!(" = {}_k m g R", g.mu), theme),
+                label(assumed(app), theme),
             ]),
         ),
     ]
@@ -326,7 +338,7 @@ fn energy_lines(app: &App, width: u16, theme: &Theme) -> Ranked<'static> {
         e.lost.rolling_resistance,
     ]);
     let pct = |i: usize| value(format!("{}%", shares[i]), theme);
-    let total = || value(format!("{:.4} J", e.total()), theme);
+    let total = || value(format!("{:.4} J{}", e.total(), assumed(app)), theme);
     let rows: Vec<Vec<Span>> = if width >= 40 {
         vec![
             vec![

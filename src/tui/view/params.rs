@@ -1,11 +1,15 @@
-//! The parameters panel: every editable value with its unit, the selected row
-//! highlighted, the typing field in place of the value while editing.
+//! The parameters panel: every editable value with its unit and a one-letter mark of
+//! where it came from ([`Origin::mark`]: d data, f flag, h the data file's header, p
+//! preset, e edited, a assumed; the marks in use are the legend on the bottom
+//! border), the selected row highlighted, the typing field in place of the value
+//! while editing.
 
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::widgets::Widget;
 
 use super::panel::block;
+use crate::lab::Origin;
 use crate::settings::params::Key;
 use crate::settings::units::{Dimension, fit_number};
 use crate::tui::app::{App, Mode, ROWS};
@@ -29,7 +33,8 @@ pub fn param_at(area: Rect, selected: usize, x: u16, y: u16) -> Option<usize> {
     (inside && i < ROWS.len()).then_some(i)
 }
 
-/// Columns of a row: marker, label, value (right-aligned), two spaces, note.
+/// Columns of a row: marker, label, value (right-aligned), its origin's mark between
+/// spaces, note.
 const LABEL_W: usize = 9;
 const VALUE_W: usize = 11;
 
@@ -112,7 +117,13 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     } else {
         " Parameters ".to_string()
     };
-    let blk = block(title, theme);
+    // A hidden value hides whether it was changed too: `?`, and not in the legend.
+    let origins: Vec<Option<Origin>> = ROWS
+        .iter()
+        .map(|p| (!app.hide.value(p.key)).then(|| app.lab.settings().origin(p.key)))
+        .collect();
+    let used: Vec<Origin> = origins.iter().flatten().copied().collect();
+    let blk = block(title, theme).title_bottom(legend(&used));
     let inner = blk.inner(area);
     blk.render(area, buf);
     let g = theme.glyphs;
@@ -134,9 +145,10 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             _ => (value_text(app, p.key), None),
         };
         let marker = if selected { g.selected } else { " " };
-        let room = usize::from(inner.width).saturating_sub(1 + LABEL_W + VALUE_W + 2);
+        let room = usize::from(inner.width).saturating_sub(1 + LABEL_W + VALUE_W + 3);
+        let mark = origins[i].map_or('?', Origin::mark);
         let line = format!(
-            "{marker}{label:<LABEL_W$}{value:>VALUE_W$}  {}",
+            "{marker}{label:<LABEL_W$}{value:>VALUE_W$} {mark} {}",
             note(app, p.key, room)
         );
         let style = if selected { theme.selected } else { theme.text };
@@ -147,6 +159,17 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
             buf[(inner.x + x, y)].set_style(caret_style(style));
         }
     }
+}
+
+/// The bottom border's legend: each mark in use and its word, in [`Origin::ALL`]'s
+/// order (" d data  f flag  p preset ").
+pub fn legend(origins: &[Origin]) -> String {
+    let used: Vec<String> = Origin::ALL
+        .into_iter()
+        .filter(|o| origins.contains(o))
+        .map(|o| format!("{} {}", o.mark(), o.legend()))
+        .collect();
+    format!(" {} ", used.join("  "))
 }
 
 /// The parameters panel as a component.

@@ -8,7 +8,7 @@ use ratatui::text::{Line, Span};
 use super::panel::wrap;
 use super::popup::{centered, popup, scroll_frame, scrolling};
 use super::table::table_layout;
-use crate::study::preset::Origin;
+use crate::study::preset::PresetOrigin;
 use crate::tui::app::export::export_step;
 use crate::tui::app::{App, Export, Field, Mode, Status};
 use crate::tui::component::{Component, Ctx};
@@ -130,12 +130,12 @@ fn preset_picker(app: &App, selected: usize, area: Rect, buf: &mut Buffer, theme
             let mark = if i == selected { g.selected } else { " " };
             // A file of the user's named like a built-in one: both are listed, and
             // this row loads the file (`--preset NAME` finds the built-in).
-            let twin = matches!(p.origin, Origin::File(_))
+            let twin = matches!(p.origin, PresetOrigin::File(_))
                 && app
                     .library
                     .presets
                     .iter()
-                    .any(|q| q.origin == Origin::BuiltIn && q.name == p.name);
+                    .any(|q| q.origin == PresetOrigin::BuiltIn && q.name == p.name);
             let tag = if twin {
                 "[your file, named like a built-in] "
             } else {

@@ -38,14 +38,21 @@ pub(super) fn chains(app: &App, pending: bool, compact: bool, theme: &Theme) -> 
             trend(app.lab.scene.width, pinned.map(|p| p.1), theme)
         )
     };
-    let translation = vec![
-        b,
-        item("k", s.k, "", hide, was(|p| p.k)),
+    let mut translation = vec![b, item("k", s.k, "", hide, was(|p| p.k))];
+    if app.lab.settings().mass_assumed() {
+        // The forces scale with m, which the user's data do not measure.
+        let m = app.lab.scene.left.mass;
+        translation.push(format!(
+            "m {} assumed",
+            crate::settings::units::show(m, Dimension::Mass)
+        ));
+    }
+    translation.extend([
         item("|N|", s.normal, " N", hide, was(|p| p.normal)),
         item("|F|", s.friction, " N", hide, was(|p| p.friction)),
         item("F_net", s.net_force, " N", hide, was(|p| p.net_force)),
         item("|a_cm|", s.a_cm, " m/s²", hide_a, was(|p| p.a_cm)),
-    ];
+    ]);
     let rotation = vec![
         item(
             "τ_net",
