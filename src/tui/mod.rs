@@ -36,6 +36,7 @@ use app::{Action, App, FPS, Mode};
 use jobs::Notice;
 use screen::Screen;
 use theme::{Glyphs, Theme};
+use view::video_image::{self, Switch};
 
 /// The theme for this terminal: NO_COLOR (any value) asks for no colours.
 pub fn theme(ascii: bool) -> Theme {
@@ -118,6 +119,7 @@ fn suspend(_: &mut ratatui::DefaultTerminal, _: bool) -> io::Result<()> {
 /// Runs the app on the real terminal until the user quits.
 pub fn run(mut app: App, ascii: bool) -> io::Result<()> {
     let theme = theme(ascii);
+    let switch = Switch::from_env().map_err(|e| io::Error::new(io::ErrorKind::InvalidInput, e))?;
     // Before the terminal changes, so that no moment is left unguarded.
     crate::signals::on_signal(restore_and_exit)?;
     ACTIVE.store(true, Ordering::SeqCst);
@@ -141,8 +143,10 @@ pub fn run(mut app: App, ascii: bool) -> io::Result<()> {
         terminal.draw(|f| screen::draw(&app, f.area(), f.buffer_mut(), &theme))?;
         panic!("GROOVELAB_TEST_PANIC is set: panicking to test that the terminal is restored");
     }
+    // Once, on the real terminal, before its events are read (bounded by a timeout).
+    let screen = Screen::with_graphics(video_image::detect(switch));
     set_mouse(app.mouse);
-    let result = event_loop(&mut terminal, &mut app, &theme);
+    let result = event_loop(&mut terminal, &mut app, &theme, screen);
     restore();
     result
 }
@@ -188,10 +192,10 @@ fn event_loop(
     terminal: &mut ratatui::DefaultTerminal,
     app: &mut App,
     theme: &Theme,
+    mut screen: Screen,
 ) -> io::Result<()> {
     let frame = Duration::from_secs_f64(1.0 / FPS);
     let rx = inputs(app)?;
-    let mut screen = Screen::default();
     let mut dirty = true;
     let mut last_tick = Instant::now();
     let mut mouse = app.mouse;
