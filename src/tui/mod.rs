@@ -22,7 +22,7 @@ pub mod vocabulary;
 
 use std::io::{self, Write};
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::mpsc::{self, Receiver, RecvTimeoutError};
+use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
 use std::sync::{Mutex, PoisonError};
 use std::time::{Duration, Instant};
 
@@ -144,9 +144,9 @@ pub fn run(mut app: App, ascii: bool) -> io::Result<()> {
         panic!("GROOVELAB_TEST_PANIC is set: panicking to test that the terminal is restored");
     }
     // Once, on the real terminal, before its events are read (bounded by a timeout).
-    let screen = Screen::with_graphics(video_image::detect(switch));
+    let picker = video_image::detect(switch);
     set_mouse(app.mouse);
-    let result = event_loop(&mut terminal, &mut app, &theme, screen);
+    let result = event_loop(&mut terminal, &mut app, &theme, picker);
     restore();
     result
 }
@@ -157,13 +157,16 @@ enum Input {
     /// Reading the terminal failed: the app ends with this error.
     Failed(io::Error),
     Job(Notice),
+    /// The video's picture is ready: draw again.
+    Picture,
 }
 
 /// Starts the thread that reads terminal events (blocked, no CPU, until one comes)
 /// into the event loop's channel, and points the lab's jobs at the same channel:
 /// keys and job results arrive in one queue, and the loop sleeps until either comes.
-fn inputs(app: &App) -> io::Result<Receiver<Input>> {
+fn inputs(app: &App) -> io::Result<(Sender<Input>, Receiver<Input>)> {
     let (tx, rx) = mpsc::channel();
+    let wake = tx.clone();
     let jobs = Mutex::new(tx.clone());
     app.listen(move |notice| {
         let _ = jobs
@@ -185,17 +188,23 @@ fn inputs(app: &App) -> io::Result<Receiver<Input>> {
                 }
             }
         })?;
-    Ok(rx)
+    Ok((wake, rx))
 }
 
 fn event_loop(
     terminal: &mut ratatui::DefaultTerminal,
     app: &mut App,
     theme: &Theme,
-    mut screen: Screen,
+    picker: Option<ratatui_image::picker::Picker>,
 ) -> io::Result<()> {
     let frame = Duration::from_secs_f64(1.0 / FPS);
-    let rx = inputs(app)?;
+    let (wake, rx) = inputs(app)?;
+    let mut screen = Screen::with_graphics(
+        picker,
+        Box::new(move || {
+            let _ = wake.send(Input::Picture);
+        }),
+    );
     let mut dirty = true;
     let mut last_tick = Instant::now();
     let mut mouse = app.mouse;
@@ -250,6 +259,7 @@ fn event_loop(
                 }
                 Input::Failed(e) => return Err(e),
                 Input::Job(notice) => app.on_job(notice),
+                Input::Picture => true,
             };
             if app.playing && !was_playing {
                 last_tick = Instant::now();

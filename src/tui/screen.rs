@@ -34,10 +34,14 @@ pub struct Screen {
 }
 
 impl Screen {
-    /// A screen whose video panel draws pictures with `picker`'s graphics protocol.
-    pub fn with_graphics(picker: Option<ratatui_image::picker::Picker>) -> Screen {
+    /// A screen whose video panel draws pictures with `picker`'s graphics protocol,
+    /// made on a worker that calls `wake` when one is ready.
+    pub fn with_graphics(
+        picker: Option<ratatui_image::picker::Picker>,
+        wake: Box<dyn Fn() + Send>,
+    ) -> Screen {
         Screen {
-            video: VideoImage::new(picker),
+            video: VideoImage::new(picker, wake),
             ..Screen::default()
         }
     }
@@ -75,6 +79,11 @@ impl Screen {
             scroll_max: view::scroll_max(app, area, theme),
         });
         work
+    }
+
+    /// How many pictures of the video panel were asked of the graphics worker.
+    pub fn video_pictures(&self) -> usize {
+        self.video.encoded
     }
 
     /// The frame prepared last, if any.

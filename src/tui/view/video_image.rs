@@ -3,10 +3,13 @@
 //! the tracked centres (+) and marks (×) and the model's balls (rings) drawn into its
 //! pixels (text cannot lie over a graphic). The protocol is chosen once at startup
 //! ([`detect`]); `GROOVELAB_GRAPHICS=off` keeps the half-blocks. The encoded picture
-//! is kept here, in the screen's video state, and made anew only when what it shows
-//! (the frame, the marks' pixels, the panel's size) changes; headless drawing and the
-//! tests never have a picker, so they draw half-blocks only.
+//! is kept here, in the screen's video state, and made anew, on a worker (a sixel takes
+//! tens of milliseconds), only when what it shows (the frame, the marks' pixels, the
+//! panel's size) changes; headless drawing and the tests never have a picker, so they
+//! draw half-blocks only.
 
+use std::sync::mpsc::{self, Receiver, Sender};
+use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
 use image::{DynamicImage, Rgb, RgbImage};
@@ -33,7 +36,7 @@ const QUERY_TIMEOUT: Duration = Duration::from_millis(800);
 
 /// The largest picture sent, px (long side): a bigger panel gets it scaled up by the
 /// terminal, never a slower encoding.
-const MAX_SIDE: u32 = 960;
+const MAX_SIDE: u32 = 640;
 
 /// What `GROOVELAB_GRAPHICS` asks for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -109,13 +112,62 @@ struct Key {
     model: Option<[(i64, i64); 2]>,
 }
 
-/// The screen's video state: the terminal's picker (`None`: half-blocks) and the
-/// picture encoded last.
+/// A picture to make: frame, marks, size.
+struct Job {
+    key: Key,
+    view: Arc<VideoView>,
+    marks: Marks,
+}
+
+/// The thread that draws and encodes pictures (a sixel takes tens of milliseconds or
+/// more: never on the key's path). It takes the newest job waiting, and tells the
+/// event loop (`wake`) when a picture is ready.
+struct Worker {
+    jobs: Sender<Job>,
+    done: Mutex<Receiver<(Key, Protocol)>>,
+}
+
+impl Worker {
+    fn start(picker: Picker, wake: Box<dyn Fn() + Send>) -> Option<Worker> {
+        let (jobs, inbox) = mpsc::channel::<Job>();
+        let (outbox, done) = mpsc::channel();
+        std::thread::Builder::new()
+            .name("groovelab-video-picture".into())
+            .spawn(move || {
+                while let Ok(first) = inbox.recv() {
+                    let job = inbox.try_iter().last().unwrap_or(first);
+                    let img = picture(&job.view, job.key.frame, job.key.size, &job.marks);
+                    let size = Size::new(job.key.area.width, job.key.area.height);
+                    let image = DynamicImage::ImageRgb8(img);
+                    let Ok(p) = picker.new_protocol(image, size, Resize::Fit(None)) else {
+                        continue;
+                    };
+                    if outbox.send((job.key, p)).is_err() {
+                        break;
+                    }
+                    wake();
+                }
+            })
+            .ok()?;
+        Some(Worker {
+            jobs,
+            done: Mutex::new(done),
+        })
+    }
+}
+
+/// The screen's video state: the terminal's picker (`None`: half-blocks), the worker
+/// that encodes, the picture asked for last and the one encoded last (shown until
+/// the next is ready, if of the same panel).
 #[derive(Clone, Default)]
 pub struct VideoImage {
     picker: Option<Picker>,
+    worker: Option<Arc<Worker>>,
+    asked: Option<Key>,
     shown: Option<(Key, Protocol)>,
-    /// How many pictures were encoded (to check the cache).
+    /// Shown only while the panel shows the video.
+    on: bool,
+    /// How many pictures were asked for (to check that a redraw asks for none).
     pub encoded: usize,
 }
 
@@ -123,6 +175,7 @@ impl std::fmt::Debug for VideoImage {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("VideoImage")
             .field("protocol", &self.picker.as_ref().map(Picker::protocol_type))
+            .field("asked", &self.asked)
             .field("shown", &self.shown.as_ref().map(|s| &s.0))
             .field("encoded", &self.encoded)
             .finish()
@@ -130,87 +183,99 @@ impl std::fmt::Debug for VideoImage {
 }
 
 impl VideoImage {
-    /// Drawing with `picker`'s protocol.
-    pub fn new(picker: Option<Picker>) -> VideoImage {
+    /// Drawing with `picker`'s protocol, on a worker that calls `wake` when a picture
+    /// is ready (the screen is to be drawn again).
+    pub fn new(picker: Option<Picker>, wake: Box<dyn Fn() + Send>) -> VideoImage {
+        let worker = picker
+            .clone()
+            .and_then(|p| Worker::start(p, wake))
+            .map(Arc::new);
         VideoImage {
+            worker,
             picker,
             ..VideoImage::default()
         }
     }
 
-    /// Encodes the picture the video panel in `scene` shows now, unless it is the one
-    /// encoded last; forgets it when there is none (not shown, no frame, no graphics).
+    /// Asks the worker for the picture the video panel in `scene` shows now, unless
+    /// it was asked for last; takes the pictures it finished.
     pub fn prepare(&mut self, app: &App, scene: Option<Rect>, theme: &Theme) {
-        let Some(picker) = &self.picker else {
+        let (Some(picker), Some(worker)) = (&self.picker, &self.worker) else {
             return;
         };
-        let wanted = scene.and_then(|s| self.wanted(app, s, picker));
+        if let Ok(done) = worker.done.lock()
+            && let Some(last) = done.try_iter().last()
+        {
+            self.shown = Some(last);
+        }
+        let wanted = scene.and_then(|s| wanted(app, s, picker));
+        self.on = wanted.is_some();
         let Some((key, view)) = wanted else {
-            self.shown = None;
             return;
         };
-        if self.shown.as_ref().is_some_and(|(k, _)| *k == key) {
+        // The picture of another panel's size is not shown meanwhile.
+        if self.shown.as_ref().is_some_and(|(k, _)| k.area != key.area) {
+            self.shown = None;
+        }
+        if self.asked.as_ref() == Some(&key) {
             return;
         }
         let centres = model_centres(app, view);
         let ring = app.lab.scene.radius * view.px_per_m;
-        let marks = Marks::of(theme, centres, ring);
-        let img = picture(view, key.frame, key.size, &marks);
-        let size = Size::new(key.area.width, key.area.height);
-        let protocol = picker.new_protocol(DynamicImage::ImageRgb8(img), size, Resize::Fit(None));
-        self.encoded += 1;
-        self.shown = protocol.ok().map(|p| (key, p));
-    }
-
-    /// The key of the picture wanted in the video panel of `scene`, and the video.
-    fn wanted<'a>(
-        &self,
-        app: &'a App,
-        scene: Rect,
-        picker: &Picker,
-    ) -> Option<(Key, &'a VideoView)> {
-        if !app.video.shown {
-            return None;
+        let job = Job {
+            key: key.clone(),
+            view: Arc::clone(view),
+            marks: Marks::of(theme, centres, ring),
+        };
+        if worker.jobs.send(job).is_ok() {
+            self.encoded += 1;
+            self.asked = Some(key);
         }
-        let view = app.video.view.as_deref()?;
-        let area = Block::bordered().inner(scene);
-        if area.height < 2 || area.width < 8 {
-            return None;
-        }
-        let frame = shown_frame(app, view)?;
-        let font = picker.font_size();
-        let size = fitted(view, area, (u32::from(font.width), u32::from(font.height)));
-        let fit = PixelFit::new(view, size);
-        let model = model_centres(app, view).map(|c| {
-            c.map(|p| fit.at(p))
-                .map(|(x, y)| (x.round() as i64, y.round() as i64))
-        });
-        Some((
-            Key {
-                frame,
-                area,
-                size,
-                model,
-            },
-            view,
-        ))
     }
 
     /// Draws the picture encoded last over the video panel's half-blocks.
     pub fn render(&self, buf: &mut Buffer) {
-        if let Some((key, protocol)) = &self.shown {
-            Clear.render(key.area, buf);
-            let s = protocol.size();
-            let (w, h) = (s.width.min(key.area.width), s.height.min(key.area.height));
-            let at = Rect::new(
-                key.area.x + (key.area.width - w) / 2,
-                key.area.y + (key.area.height - h) / 2,
-                w,
-                h,
-            );
-            Image::new(protocol).render(at, buf);
-        }
+        let Some((key, protocol)) = self.shown.as_ref().filter(|_| self.on) else {
+            return;
+        };
+        Clear.render(key.area, buf);
+        let s = protocol.size();
+        let (w, h) = (s.width.min(key.area.width), s.height.min(key.area.height));
+        let at = Rect::new(
+            key.area.x + (key.area.width - w) / 2,
+            key.area.y + (key.area.height - h) / 2,
+            w,
+            h,
+        );
+        Image::new(protocol).render(at, buf);
     }
+}
+
+/// The key of the picture wanted in the video panel of `scene`, and the video.
+fn wanted<'a>(app: &'a App, scene: Rect, picker: &Picker) -> Option<(Key, &'a Arc<VideoView>)> {
+    if !app.video.shown {
+        return None;
+    }
+    let view = app.video.view.as_ref()?;
+    let area = Block::bordered().inner(scene);
+    if area.height < 2 || area.width < 8 {
+        return None;
+    }
+    let frame = shown_frame(app, view)?;
+    let font = picker.font_size();
+    let size = fitted(view, area, (u32::from(font.width), u32::from(font.height)));
+    let fit = PixelFit::new(view, size);
+    let model = model_centres(app, view).map(|c| {
+        c.map(|p| fit.at(p))
+            .map(|(x, y)| (x.round() as i64, y.round() as i64))
+    });
+    let key = Key {
+        frame,
+        area,
+        size,
+        model,
+    };
+    Some((key, view))
 }
 
 /// The picture's size, px: the band about the groove (its aspect kept) as large as the
