@@ -75,6 +75,17 @@ impl Switch {
         Switch::parse(std::env::var(SWITCH).ok().as_deref())
     }
 
+    /// Whether to ask the terminal at all: not when off, nor by default inside tmux or
+    /// screen (they pass graphics on only when set to, and a query wrapped for the
+    /// terminal outside that nobody answers would take the app's first key).
+    pub fn queries(self, multiplexed: bool) -> bool {
+        match self {
+            Switch::Off => false,
+            Switch::Auto => !multiplexed,
+            Switch::Force(_) => true,
+        }
+    }
+
     /// The protocol to draw with, given what the terminal answered; `None`: half-blocks.
     pub fn choose(self, detected: ProtocolType) -> Option<ProtocolType> {
         let p = match self {
@@ -89,7 +100,11 @@ impl Switch {
 /// Asks the real terminal (once, before the event loop; at most [`QUERY_TIMEOUT`]) what
 /// it can draw; `None` when it has no graphics protocol or the switch is off.
 pub fn detect(switch: Switch) -> Option<Picker> {
-    if switch == Switch::Off {
+    let multiplexed = ["TMUX", "STY"]
+        .iter()
+        .any(|v| std::env::var_os(v).is_some())
+        || std::env::var("TERM").is_ok_and(|t| t.starts_with("tmux") || t.starts_with("screen"));
+    if !switch.queries(multiplexed) {
         return None;
     }
     let options = QueryStdioOptions {

@@ -65,8 +65,12 @@ fn the_protocol_is_the_terminals_unless_switched_off_or_forced() {
     assert_eq!(Switch::Auto.choose(Halfblocks), None);
     assert_eq!(Switch::Force(Sixel).choose(Halfblocks), Some(Sixel));
     assert_eq!(Switch::Force(Kitty).choose(Iterm2), Some(Kitty));
-    // Off never asks the terminal.
+    // Off never asks the terminal; inside tmux only a forced protocol does.
     assert!(detect(Switch::Off).is_none());
+    assert!(!Switch::Off.queries(false));
+    assert!(Switch::Auto.queries(false));
+    assert!(!Switch::Auto.queries(true));
+    assert!(Switch::Force(Kitty).queries(true));
 }
 
 #[test]
