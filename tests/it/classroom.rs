@@ -192,27 +192,47 @@ fn below_the_scene(screen: &str) -> String {
 /// cm), one that comes back within a second (4.9 cm) and one that comes back over 13
 /// s (4.3 cm). The span's end (the chart's x axis, the status line), the y range of
 /// the whole run (a velocity that turns negative), the Methods runs, the map with b
-/// on it and the fit each told the outcome.
+/// on it and the fit each told the outcome. (One app per scene and keys, drawn at
+/// each size, as `render` draws it: its analyses run once.)
 #[test]
 fn predict_mode_shows_the_same_view_whatever_the_outcome() {
-    for size in ["80x24", "120x40", "200x60"] {
+    use groovelab::cli::DataArgs;
+    use groovelab::settings::params::Key;
+    use groovelab::settings::spec::SceneSpec;
+
+    use crate::common::{no_user_presets, rendered, scene_of, text};
+    let sizes = [(80, 24), (120, 40), (200, 60)];
+    for size in sizes {
         // Asked: the status line names no span (it said "of -0.200 … 1.077 s").
-        let asked = screen(&["--keys", "y", "--size", size]);
+        let asked = screen(&["--keys", "y", "--size", &format!("{}x{}", size.0, size.1)]);
         assert!(
             !asked.contains("1.077") && !asked.contains(" of -0.200"),
             "{asked}"
         );
-        // (The energy chart differs: a rolling ball's energy depends on b through k.)
-        for keys in ["y 3 v", "y 3 c", "y 3 g", "y 3 f", "y 3 v x"] {
-            let views: Vec<String> = ["3.5cm", "4.3cm", "4.9cm"]
+    }
+    // (The energy chart differs: a rolling ball's energy depends on b through k.)
+    for keys in ["y 3 v", "y 3 c", "y 3 g", "y 3 f", "y 3 v x"] {
+        let apps: Vec<_> = [0.035, 0.043, 0.049]
+            .iter()
+            .map(|&b| {
+                let scene = scene_of("paper-b4.9", SceneSpec::default().with(Key::Width, b));
+                let library = no_user_presets("classroom");
+                rendered(
+                    &scene,
+                    &DataArgs::default(),
+                    Some(-0.1),
+                    Some(keys),
+                    library,
+                )
+            })
+            .collect();
+        for size in sizes {
+            let views: Vec<String> = apps
                 .iter()
-                .map(|b| {
-                    let s = screen(&["--width", b, "--keys", keys, "--at", "-0.1", "--size", size]);
-                    below_the_scene(&s)
-                })
+                .map(|a| below_the_scene(&text(a, size, false)))
                 .collect();
-            assert_eq!(views[0], views[1], "'{keys}' {size}: 3.5 cm and 4.3 cm");
-            assert_eq!(views[1], views[2], "'{keys}' {size}: 4.3 cm and 4.9 cm");
+            assert_eq!(views[0], views[1], "'{keys}' {size:?}: 3.5 cm and 4.3 cm");
+            assert_eq!(views[1], views[2], "'{keys}' {size:?}: 4.3 cm and 4.9 cm");
         }
     }
 }
