@@ -119,7 +119,7 @@ pub fn detect(switch: Switch) -> Option<Picker> {
 
 /// What a picture shows: when it is equal, the encoded picture is reused.
 #[derive(Clone, Debug, PartialEq)]
-struct Key {
+struct PictureKey {
     frame: usize,
     area: Rect,
     size: (u32, u32),
@@ -128,8 +128,8 @@ struct Key {
 }
 
 /// A picture to make: frame, marks, size.
-struct Job {
-    key: Key,
+struct PictureJob {
+    key: PictureKey,
     view: Arc<VideoView>,
     marks: Marks,
 }
@@ -138,13 +138,13 @@ struct Job {
 /// more: never on the key's path). It takes the newest job waiting, and tells the
 /// event loop (`wake`) when a picture is ready.
 struct Worker {
-    jobs: Sender<Job>,
-    done: Mutex<Receiver<(Key, Protocol)>>,
+    jobs: Sender<PictureJob>,
+    done: Mutex<Receiver<(PictureKey, Protocol)>>,
 }
 
 impl Worker {
     fn start(picker: Picker, wake: Box<dyn Fn() + Send>) -> Option<Worker> {
-        let (jobs, inbox) = mpsc::channel::<Job>();
+        let (jobs, inbox) = mpsc::channel::<PictureJob>();
         let (outbox, done) = mpsc::channel();
         std::thread::Builder::new()
             .name("groovelab-video-picture".into())
@@ -178,8 +178,8 @@ impl Worker {
 pub struct VideoImage {
     picker: Option<Picker>,
     worker: Option<Arc<Worker>>,
-    asked: Option<Key>,
-    shown: Option<(Key, Protocol)>,
+    asked: Option<PictureKey>,
+    shown: Option<(PictureKey, Protocol)>,
     /// Shown only while the panel shows the video.
     on: bool,
     /// How many pictures were asked for (to check that a redraw asks for none).
@@ -237,7 +237,7 @@ impl VideoImage {
         }
         let centres = model_centres(app, view);
         let ring = app.lab.scene.radius * view.px_per_m;
-        let job = Job {
+        let job = PictureJob {
             key: key.clone(),
             view: Arc::clone(view),
             marks: Marks::of(theme, centres, ring),
@@ -267,7 +267,11 @@ impl VideoImage {
 }
 
 /// The key of the picture wanted in the video panel of `scene`, and the video.
-fn wanted<'a>(app: &'a App, scene: Rect, picker: &Picker) -> Option<(Key, &'a Arc<VideoView>)> {
+fn wanted<'a>(
+    app: &'a App,
+    scene: Rect,
+    picker: &Picker,
+) -> Option<(PictureKey, &'a Arc<VideoView>)> {
     if !app.video.shown {
         return None;
     }
@@ -284,7 +288,7 @@ fn wanted<'a>(app: &'a App, scene: Rect, picker: &Picker) -> Option<(Key, &'a Ar
         c.map(|p| fit.at(p))
             .map(|(x, y)| (x.round() as i64, y.round() as i64))
     });
-    let key = Key {
+    let key = PictureKey {
         frame,
         area,
         size,
