@@ -8,7 +8,7 @@ use std::sync::Arc;
 
 use crate::methods::Method;
 use crate::study::compare::Row;
-use crate::study::fit::{self, FitError, Fits, Free, ModelFit};
+use crate::study::fit::{self, FitError, Fits};
 use crate::study::measured::Measured;
 
 use super::jobs::Ticket;
@@ -47,13 +47,6 @@ pub fn fits(now: &Resolved, window: FitWindow) -> Option<impl JobFn<Result<Fits,
         v0_measured: now.v0_measured,
     };
     Some(move |ticket: &Ticket| fit::fit_all(&scene, &m, &ask, ticket))
-}
-
-/// The model fitted to a position track's positions; `None` without one (no data, or
-/// a velocity file).
-pub fn position_fit(now: &Resolved) -> Option<impl JobFn<Result<ModelFit, FitError>>> {
-    let (scene, m) = (now.scene, measured(now).filter(|m| m.x.is_some())?);
-    Some(move |ticket: &Ticket| fit::position_fit(&scene, &m, &[Free::Mu], ticket))
 }
 
 /// The line-fit window after moving one end (`end`, else the start) by one measured

@@ -26,8 +26,10 @@ pub use super::vocabulary::{
 
 use super::jobs::{ExportRun, FitRuns, Jobs, MethodRows, Notice, OverlayRun, VideoRun};
 use super::line::History;
-use super::view::charts::zoom::{self, TimeZoom};
-use super::vocabulary::{DEFAULT_SPEED, WorkAxis};
+use super::view::charts::state::{ChartState, Moment};
+use super::view::forces::state::ForcesState;
+use super::view::methods::state::MethodsState;
+use super::vocabulary::{DEFAULT_SPEED, Handled, WorkAxis};
 
 /// The rows of the parameters panel, top to bottom: the table's rows that have steps.
 pub static ROWS: LazyLock<Vec<&'static Param>> =
@@ -42,12 +44,8 @@ pub struct App {
     pub speed: usize,
     pub selected: usize,
     pub mode: Mode,
-    pub chart_ball: ChartBall,
-    pub show_positions: bool,
-    /// The energy chart (instead of velocities or positions).
-    pub show_energy: bool,
-    /// The charts' time zoom.
-    pub zoom: TimeZoom,
+    /// The Charts view's own state: which chart, which ball, the time zoom.
+    charts: ChartState,
     pub mouse: bool,
     pub status: Status,
     pub quit: bool,
@@ -67,7 +65,7 @@ pub struct App {
     /// The app's jobs on its worker pool.
     jobs: Jobs,
     /// What the Methods view puts on its work axis.
-    pub work_axis: WorkAxis,
+    methods_state: MethodsState,
     /// First line shown of a scrolling popup (help, data table).
     pub scroll: usize,
     /// The largest useful `scroll` at the size last laid out (the screen tells it
@@ -76,7 +74,7 @@ pub struct App {
     /// Where `w`/`W` write a bare file name.
     pub export_dir: PathBuf,
     /// The ball the Forces view's front view shows: 0 left, 1 right.
-    pub forces_ball: usize,
+    forces: ForcesState,
     /// What the screen hides while b is hidden (a class predicts from the picture
     /// alone): the one rule.
     pub hide: super::hide::Hide,
@@ -107,10 +105,7 @@ impl App {
             speed: DEFAULT_SPEED,
             selected: 1,
             mode: Mode::Normal,
-            chart_ball: ChartBall::Left,
-            show_positions: false,
-            show_energy: false,
-            zoom: TimeZoom::default(),
+            charts: ChartState::default(),
             mouse: true,
             status: Status::None,
             quit: false,
@@ -122,11 +117,11 @@ impl App {
             export: ExportRun::default(),
             video: VideoRun::default(),
             jobs: Jobs::new(pool),
-            work_axis: WorkAxis::default(),
+            methods_state: MethodsState::default(),
             scroll: 0,
             scroll_max: usize::MAX,
             export_dir: PathBuf::from("."),
-            forces_ball: 0,
+            forces: ForcesState::default(),
             hide: super::hide::Hide::default(),
             prediction: None,
             histories: Histories::default(),
@@ -271,7 +266,42 @@ impl App {
             self.t = self.lab.solution.t_end;
             self.playing = false;
         }
-        self.zoom.follow(self.t, self.chart_span());
+        self.charts.follow(self.t, self.chart_span());
+    }
+
+    /// The Charts view's state.
+    pub fn charts(&self) -> &ChartState {
+        &self.charts
+    }
+
+    /// The Forces view's state.
+    pub fn forces(&self) -> &ForcesState {
+        &self.forces
+    }
+
+    /// The Methods view's state.
+    pub fn methods_state(&self) -> &MethodsState {
+        &self.methods_state
+    }
+
+    /// Where the charts' keys act now.
+    fn moment(&self) -> Moment {
+        Moment {
+            t: self.t,
+            span: self.chart_span(),
+            shown: matches!(self.view, View::Charts | View::Fit),
+        }
+    }
+
+    /// A component's answer to a key: true if it was its key (a message goes to the
+    /// status line).
+    fn handled(&mut self, answer: Handled) -> bool {
+        match answer {
+            Handled::Ignored => return false,
+            Handled::Consumed => {}
+            Handled::Say(message) => self.status = Status::Info(message),
+        }
+        true
     }
 
     /// The time span the charts' x axis covers unzoomed: the run's span, or while
@@ -287,29 +317,34 @@ impl App {
 
     /// The time range the charts show: the span, or the zoomed window of it.
     pub fn chart_range(&self) -> (f64, f64) {
-        self.zoom.range(self.chart_span())
+        self.charts.zoom().range(self.chart_span())
     }
 
-    /// Zooms the charts' time axis in (`inward`) or out around `at` (the cursor's
-    /// time for the keys, the pointer's for the wheel) and says so.
+    /// Zooms the charts' time axis in (`inward`) or out around `at` (the pointer's
+    /// time under the wheel) and says so.
     pub fn zoom_around(&mut self, at: f64, inward: bool) {
-        if !matches!(self.view, View::Charts | View::Fit) {
-            self.status =
-                Status::Info("the time zoom is the charts' (Charts and Fit views)".into());
-            return;
+        let moment = self.moment();
+        let answer = self.charts.zoom_around(at, inward, moment);
+        self.handled(answer);
+    }
+
+    /// Offers `action` to the component of the view shown that owns it (the Forces
+    /// view's ball key is its own); true if one took it.
+    pub(super) fn offer(&mut self, action: Action) -> bool {
+        let answer = match self.view {
+            View::Forces => self.forces.handle(action),
+            _ => Handled::Ignored,
+        };
+        if self.handled(answer) {
+            return true;
         }
-        let by = if inward { zoom::STEP } else { 1.0 / zoom::STEP };
-        let before = self.zoom;
-        let factor = self.zoom.zoom(self.chart_span(), at, by);
-        let (a, b) = self.chart_range();
-        self.status = Status::Info(match (factor > 1.0, self.zoom == before) {
-            (false, _) => "time zoom off: the whole run".into(),
-            (true, same) => format!(
-                "time zoom ×{}{}: {a:.3} … {b:.3} s (0: the whole run)",
-                super::view::charts::zoom_text(factor),
-                if same { " (the deepest)" } else { "" }
-            ),
-        });
+        let answer = self.methods_state.handle(action);
+        if self.handled(answer) {
+            return true;
+        }
+        let moment = self.moment();
+        let answer = self.charts.handle(action, moment);
+        self.handled(answer)
     }
 
     pub fn apply(&mut self, action: Action) {
@@ -323,7 +358,7 @@ impl App {
         self.apply_in_mode(action);
         // A cursor moved by a key (a step, a jump, the start) takes a zoomed chart along.
         if self.t != t {
-            self.zoom.follow(self.t, self.chart_span());
+            self.charts.follow(self.t, self.chart_span());
         }
         self.sync_jobs();
     }
@@ -331,7 +366,7 @@ impl App {
     /// Requests what the views shown want of this scene (a request already made for
     /// it runs on; one made for an earlier scene is superseded, its result dropped).
     pub fn sync_jobs(&mut self) {
-        let timed = self.work_axis == WorkAxis::Time;
+        let timed = self.methods_state.axis() == WorkAxis::Time;
         let methods = self.view == View::Methods;
         self.methods.sync(methods, timed, &self.lab, &self.jobs);
         self.overlay.sync(&self.lab, &self.jobs);

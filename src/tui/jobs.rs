@@ -15,7 +15,7 @@ use crate::lab::{ExportResult, FitWindow, FitWindowError, Generation, Lab, Overl
 use crate::methods::Method;
 use crate::settings::spec::SceneSpec;
 use crate::study::compare::Row;
-use crate::study::fit::{FitError, Fits, ModelFit};
+use crate::study::fit::{FitError, Fits};
 use crate::study::vision::thumbs::VideoView;
 
 /// Which job finished (or moved on a percent): what the event loop is told.
@@ -24,7 +24,6 @@ pub enum Notice {
     MethodRows,
     Overlay,
     Fits,
-    PositionFit,
     Export,
     Video,
 }
@@ -110,44 +109,28 @@ pub struct FitRuns {
     /// Line-fit window (None: the sliding phase).
     pub window: FitWindow,
     fits: Job<(Generation, FitWindow), Result<Fits, FitError>>,
-    /// The model fitted to a position track's positions (none for a velocity file).
-    position_fit: Job<Generation, Result<ModelFit, FitError>>,
 }
 
 impl FitRuns {
     /// Asks for this scene's fits while the Fit view is `shown`; leaving it stops a
-    /// running fit (a finished one is kept); without data both are forgotten, so a fit
-    /// of data no longer shown is neither drawn nor applied.
+    /// running fit (a finished one is kept); without data it is forgotten, so a fit of
+    /// data no longer shown is neither drawn nor applied.
     pub fn sync(&mut self, shown: bool, lab: &Lab, jobs: &Jobs) {
         let Some(fits) = analyses::fits(lab, self.window) else {
             self.fits.cancel();
-            self.position_fit.cancel();
             return;
         };
         if !shown {
             self.fits.stop_running();
-            self.position_fit.stop_running();
             return;
         }
         let generation = lab.generation();
-        match analyses::position_fit(lab) {
-            Some(work) => {
-                self.position_fit
-                    .request(jobs, generation, Notice::PositionFit, work);
-            }
-            None => self.position_fit.cancel(),
-        }
         self.fits
             .request(jobs, (generation, self.window), Notice::Fits, fits);
     }
 
     pub fn fits(&self) -> State<'_, Result<Fits, FitError>> {
         self.fits.state()
-    }
-
-    /// The model fitted directly to a position track (Idle for a velocity file).
-    pub fn position_fit(&self) -> State<'_, Result<ModelFit, FitError>> {
-        self.position_fit.state()
     }
 
     /// Moves one end of the line-fit window by one measured frame (the fits follow at

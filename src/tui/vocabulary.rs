@@ -11,8 +11,9 @@ use crate::study::preset::Preset;
 pub use super::line::Field;
 
 /// Which ball the velocity chart shows.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum ChartBall {
+    #[default]
     Left,
     Right,
     Both,
@@ -202,6 +203,15 @@ pub enum Action {
     Reset,
     /// Drop the user's own data (`--data`): the preset's are shown again.
     DropData,
+}
+
+/// What a component did with a key's action: not its key, done, or done with a
+/// message for the status line. The app acts on it.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Handled {
+    Ignored,
+    Consumed,
+    Say(String),
 }
 
 /// Playback speeds (simulated seconds per real second); slow motion by default, as

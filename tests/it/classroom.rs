@@ -1,11 +1,7 @@
 //! Issue 28, "the classroom": what a class sees on a projector, each item a regression
 //! test through the binary as a user runs it (`render` draws the app's very screen).
 
-use groovelab::cli::{DataArgs, SceneArgs};
-use groovelab::settings::params::Key;
-use groovelab::settings::spec::SceneSpec;
-
-use crate::common::{self, groovelab};
+use crate::common::groovelab;
 
 /// The screen `render` prints for `args` (which must succeed).
 fn screen(args: &[&str]) -> String {
@@ -196,17 +192,19 @@ fn below_the_scene(screen: &str) -> String {
 /// cm), one that comes back within a second (4.9 cm) and one that comes back over 13
 /// s (4.3 cm). The span's end (the chart's x axis, the status line), the y range of
 /// the whole run (a velocity that turns negative), the Methods runs, the map with b
-/// on it and the fit each told the outcome.
-///
-/// Each answered app is drawn at the three sizes ([`common::rendered`], held to
-/// `render` by `tui::drawing_one_app_at_every_size_is_render_at_every_size`): its
-/// Methods runs and fits are computed once, not once a size.
+/// on it and the fit each told the outcome. (One app per scene and keys, drawn at
+/// each size, as `render` draws it: its analyses run once.)
 #[test]
 fn predict_mode_shows_the_same_view_whatever_the_outcome() {
-    const SIZES: [(u16, u16); 3] = [(80, 24), (120, 40), (200, 60)];
-    for size in ["80x24", "120x40", "200x60"] {
+    use groovelab::cli::DataArgs;
+    use groovelab::settings::params::Key;
+    use groovelab::settings::spec::SceneSpec;
+
+    use crate::common::{no_user_presets, rendered, scene_of, text};
+    let sizes = [(80, 24), (120, 40), (200, 60)];
+    for size in sizes {
         // Asked: the status line names no span (it said "of -0.200 … 1.077 s").
-        let asked = screen(&["--keys", "y", "--size", size]);
+        let asked = screen(&["--keys", "y", "--size", &format!("{}x{}", size.0, size.1)]);
         assert!(
             !asked.contains("1.077") && !asked.contains(" of -0.200"),
             "{asked}"
@@ -214,36 +212,27 @@ fn predict_mode_shows_the_same_view_whatever_the_outcome() {
     }
     // (The energy chart differs: a rolling ball's energy depends on b through k.)
     for keys in ["y 3 v", "y 3 c", "y 3 g", "y 3 f", "y 3 v x"] {
-        // views[b][size]
-        let views: Vec<Vec<String>> = [0.035, 0.043, 0.049]
+        let apps: Vec<_> = [0.035, 0.043, 0.049]
             .iter()
             .map(|&b| {
-                let scene = SceneArgs {
-                    preset: None,
-                    values: SceneSpec::default().with(Key::Width, b),
-                };
-                let library = common::no_user_presets("classroom");
-                let app = common::rendered(
+                let scene = scene_of("paper-b4.9", SceneSpec::default().with(Key::Width, b));
+                let library = no_user_presets("classroom");
+                rendered(
                     &scene,
                     &DataArgs::default(),
                     Some(-0.1),
                     Some(keys),
                     library,
-                );
-                SIZES
-                    .map(|size| below_the_scene(&common::text(&app, size, false)))
-                    .into()
+                )
             })
             .collect();
-        for (i, size) in SIZES.iter().enumerate() {
-            assert_eq!(
-                views[0][i], views[1][i],
-                "'{keys}' {size:?}: 3.5 cm and 4.3 cm"
-            );
-            assert_eq!(
-                views[1][i], views[2][i],
-                "'{keys}' {size:?}: 4.3 cm and 4.9 cm"
-            );
+        for size in sizes {
+            let views: Vec<String> = apps
+                .iter()
+                .map(|a| below_the_scene(&text(a, size, false)))
+                .collect();
+            assert_eq!(views[0], views[1], "'{keys}' {size:?}: 3.5 cm and 4.3 cm");
+            assert_eq!(views[1], views[2], "'{keys}' {size:?}: 4.3 cm and 4.9 cm");
         }
     }
 }

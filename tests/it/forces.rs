@@ -34,19 +34,19 @@ fn v_shows_the_forces_view_and_b_picks_its_ball() {
     press(&mut a, "v");
     assert_eq!(a.view, View::Forces);
     press(&mut a, "b");
-    assert_eq!(a.forces_ball, 1);
+    assert_eq!(a.forces().ball(), 1);
     assert_eq!(
-        a.chart_ball,
+        a.charts().ball(),
         ChartBall::Left,
         "b in the Forces view leaves the chart's ball"
     );
     let s = text(&a, (120, 40), false);
     assert!(s.contains("Forces: front view, right ball"), "{s}");
     press(&mut a, "b v");
-    assert_eq!((a.forces_ball, a.view), (0, View::Charts));
+    assert_eq!((a.forces().ball(), a.view), (0, View::Charts));
     // Outside the Forces view b still switches the chart's ball.
     press(&mut a, "b");
-    assert_eq!(a.chart_ball, ChartBall::Right);
+    assert_eq!(a.charts().ball(), ChartBall::Right);
 }
 
 #[test]

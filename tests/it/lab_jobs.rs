@@ -103,5 +103,4 @@ fn the_labs_analyses_are_work_without_a_view() {
         panic!("fit ready");
     };
     assert_eq!(in_place.model_fit.mu, shown.model_fit.mu);
-    assert!(analyses::position_fit(&lab).is_none(), "a velocity file");
 }

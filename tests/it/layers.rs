@@ -670,9 +670,9 @@ fn a_preset_picked_keeps_the_students_data_until_d_drops_them() {
 #[test]
 fn the_methods_views_work_axis_moved_to_capital_x() {
     let mut a = common::app("paper-b4.9", library());
-    let axis = a.work_axis;
+    let axis = a.methods_state().axis();
     press(&mut a, "X");
-    assert_ne!(a.work_axis, axis);
+    assert_ne!(a.methods_state().axis(), axis);
 }
 
 #[test]

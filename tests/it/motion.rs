@@ -515,7 +515,7 @@ fn a_drag_on_the_chart_does_not_build_the_chart_again() {
 fn the_energy_chart_splits_the_initial_energy_at_every_sample() {
     let mut a = app("inelastic");
     press(&mut a, "e");
-    assert!(a.show_energy);
+    assert!(a.charts().energy());
     let split = ViewCache::default().energies(&a.lab, (100, a.chart_span()));
     let total = split[0].1.total();
     assert!(total > 0.0);
@@ -534,9 +534,9 @@ fn the_energy_chart_splits_the_initial_energy_at_every_sample() {
     }
     // `x` and `e` replace each other; `e` again goes back to the velocities.
     press(&mut a, "x");
-    assert!(a.show_positions && !a.show_energy);
+    assert!(a.charts().positions() && !a.charts().energy());
     press(&mut a, "e e");
-    assert!(!a.show_positions && !a.show_energy);
+    assert!(!a.charts().positions() && !a.charts().energy());
 }
 
 #[test]

@@ -2,24 +2,50 @@
 //! Levenberg–Marquardt with numerical derivatives of the residuals
 //! ([`super::residuals`]).
 
-use super::problem::{FitError, Free, Problem};
-use super::residuals::{fit_points, mean_cost};
+use super::problem::{Evals, FitError, Free};
+use super::residuals::{Target, fit_points, mean_cost, residuals};
 use super::uncertainty::{clamped, solve};
 use crate::physics::scene::Scene;
+use crate::study::measured::series::Measured;
 
-/// Scene with the fit parameters `p` applied.
+/// One fit's problem, which the search and its derivatives take whole: the scene it
+/// starts from, the data, the values it frees, what it compares with the data, and
+/// the counter of its model evaluations.
+#[derive(Clone, Copy)]
+pub(super) struct Problem<'a> {
+    pub scene: &'a Scene,
+    pub m: &'a Measured,
+    pub free: &'a [Free],
+    pub target: Target,
+    pub evals: &'a Evals<'a>,
+}
+
+impl Problem<'_> {
+    /// The scene with the free values `p`.
+    pub fn at(&self, p: &[f64]) -> Scene {
+        with(self.scene, self.free, p)
+    }
+
+    /// The weighted residuals of the free values `p` at the frames `idx`.
+    pub fn residuals(&self, p: &[f64], idx: &[usize]) -> Vec<f64> {
+        residuals(&self.at(p), self.m, idx, self.target, self.evals)
+    }
+}
+
+/// Scene with the fit parameters `p` applied, each written by its row of the
+/// parameter table; a step of the search that leaves the physical range is held at
+/// its edge (μ_k just above 0, 0 ≤ e ≤ 1, c_rr ≥ 0).
 pub(super) fn with(scene: &Scene, free: &[Free], p: &[f64]) -> Scene {
     let mut s = *scene;
+    let mut span = crate::physics::scene::Span::default();
     for (f, &v) in free.iter().zip(p) {
-        match f {
-            Free::Mu => s.mu = v.max(1e-6),
-            Free::V0 => {
-                s.left.v0 = v;
-                s.right.v0 = v;
-            }
-            Free::Restitution => s.restitution = v.clamp(0.0, 1.0),
-            Free::RollingResistance => s.rolling_resistance = v.max(0.0),
-        }
+        let v = match f {
+            Free::Mu => v.max(1e-6),
+            Free::V0 => v,
+            Free::Restitution => v.clamp(0.0, 1.0),
+            Free::RollingResistance => v.max(0.0),
+        };
+        (f.key().param().set)(&mut s, &mut span, v);
     }
     s
 }

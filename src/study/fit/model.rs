@@ -13,9 +13,9 @@ use crate::study::Progress;
 use crate::study::measured::series::{Measured, Stencils};
 
 use super::least_squares::{
-    coarse_mu, least_squares, normal_matrix, scan_mu, smooth_jacobian, with,
+    Problem, coarse_mu, least_squares, normal_matrix, scan_mu, smooth_jacobian, with,
 };
-use super::problem::{Evals, FitError, Free, Problem};
+use super::problem::{Evals, FitError, Free};
 use super::regime::{data_scatter, observed_after, rest_band, sliding_end};
 use super::residuals::{Target, fit_points, labelled_residuals, mean_cost, nuisance, residuals_of};
 use super::uncertainty::{

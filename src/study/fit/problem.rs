@@ -7,11 +7,9 @@ use serde::Serialize;
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::Solution;
+use crate::settings::params::Key;
 use crate::settings::units::significant;
 use crate::study::Progress;
-use crate::study::measured::series::Measured;
-
-use super::residuals::Target;
 
 /// Why a fit cannot be made.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -177,30 +175,6 @@ impl<'a> Evals<'a> {
     }
 }
 
-/// One fit's problem, which the search and its derivatives take whole: the scene it
-/// starts from, the data, the values it frees, what it compares with the data, and
-/// the counter of its model evaluations.
-#[derive(Clone, Copy)]
-pub(super) struct Problem<'a> {
-    pub scene: &'a Scene,
-    pub m: &'a Measured,
-    pub free: &'a [Free],
-    pub target: Target,
-    pub evals: &'a Evals<'a>,
-}
-
-impl Problem<'_> {
-    /// The scene with the free values `p`.
-    pub fn at(&self, p: &[f64]) -> Scene {
-        super::least_squares::with(self.scene, self.free, p)
-    }
-
-    /// The weighted residuals of the free values `p` at the frames `idx`.
-    pub fn residuals(&self, p: &[f64], idx: &[usize]) -> Vec<f64> {
-        super::residuals::residuals(&self.at(p), self.m, idx, self.target, self.evals)
-    }
-}
-
 /// Which scene values a model fit may change.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
@@ -214,21 +188,22 @@ pub enum Free {
 impl Free {
     /// Its value in `scene` (v0: the left ball's).
     pub fn value_in(self, scene: &Scene) -> f64 {
-        match self {
-            Free::Mu => scene.mu,
-            Free::V0 => scene.left.v0,
-            Free::Restitution => scene.restitution,
-            Free::RollingResistance => scene.rolling_resistance,
-        }
+        (self.key().param().get)(scene, &Span::default()).unwrap_or(f64::NAN)
     }
 
     /// The name on the command line and in JSON.
     pub fn name(self) -> &'static str {
+        self.key().param().name
+    }
+
+    /// Its row of the scene parameter table, which gives its name, symbol, label,
+    /// unit and physical range (a fitted value is a scene parameter set free).
+    pub fn key(self) -> Key {
         match self {
-            Free::Mu => "mu",
-            Free::V0 => "v0",
-            Free::Restitution => "restitution",
-            Free::RollingResistance => "rolling_resistance",
+            Free::Mu => Key::Mu,
+            Free::V0 => Key::V0,
+            Free::Restitution => Key::Restitution,
+            Free::RollingResistance => Key::RollingResistance,
         }
     }
 }

@@ -5,7 +5,6 @@
 use serde::Serialize;
 
 use super::problem::Free;
-use crate::settings::params::Key;
 use crate::study::measured::series::Stencils;
 
 /// Which measured value a residual compares with: the point's index and whether it is
@@ -26,23 +25,13 @@ pub struct NotIdentified {
 /// A fitted value's bounds: its physical range in the parameter table (a fit is no
 /// better than the scenes it may propose: μ_k = 1e10 is no friction coefficient).
 pub(super) fn bounds(f: Free) -> (f64, f64) {
-    let range = key(f).param().range;
+    let range = f.key().param().range;
     (range.lo, range.hi)
-}
-
-/// The parameter-table row of a free value.
-fn key(f: Free) -> Key {
-    match f {
-        Free::Mu => Key::Mu,
-        Free::V0 => Key::V0,
-        Free::Restitution => Key::Restitution,
-        Free::RollingResistance => Key::RollingResistance,
-    }
 }
 
 /// A fitted value's range as people read it.
 fn range_text(f: Free) -> &'static str {
-    key(f).param().range.text
+    f.key().param().range.text
 }
 
 /// True when the fitted value `v` of `f` lies on the edge of its physical range: at a

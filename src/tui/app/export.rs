@@ -132,9 +132,9 @@ impl App {
 
     /// The figure of the chart on screen.
     fn chart_figure(&self) -> Result<Figure, NoExport> {
-        if self.show_energy {
+        if self.charts.energy() {
             Err(NoExport::Energy)
-        } else if self.show_positions {
+        } else if self.charts.positions() {
             Ok(Figure::Positions)
         } else {
             Ok(Figure::Velocities)
@@ -216,14 +216,16 @@ impl App {
                     figures::RunChart::Positions
                 } else {
                     figures::RunChart::Velocities {
-                        left: self.chart_ball != ChartBall::Right,
-                        right: self.chart_ball != ChartBall::Left,
+                        left: self.charts.ball() != ChartBall::Right,
+                        right: self.charts.ball() != ChartBall::Left,
                     }
                 };
                 let measured = self
                     .lab
                     .measured()
-                    .filter(|_| self.chart_ball != ChartBall::Right && figure == Figure::Velocities)
+                    .filter(|_| {
+                        self.charts.ball() != ChartBall::Right && figure == Figure::Velocities
+                    })
                     .cloned();
                 // What the screen shows beside the run: the pinned run, and the caption
                 // of data measured in another groove; and as much of it as the screen
@@ -272,7 +274,7 @@ impl App {
             Figure::Methods => match self.methods.state() {
                 State::Ready(rows) => {
                     let rows = rows.clone();
-                    let work = match self.work_axis {
+                    let work = match self.methods_state.axis() {
                         WorkAxis::Steps => figures::Cost::Steps,
                         WorkAxis::RhsEvals => figures::Cost::RhsEvals,
                         WorkAxis::Time => figures::Cost::Time,

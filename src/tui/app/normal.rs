@@ -8,7 +8,7 @@ use crate::settings::params::Key;
 use crate::settings::spec::SceneError;
 use crate::settings::units::{Dimension, show, significant};
 
-use super::{Action, App, ChartBall, Export, Field, Mode, ROWS, SPEEDS, Status, View};
+use super::{Action, App, Export, Field, Mode, ROWS, SPEEDS, Status, View};
 
 impl App {
     /// One fine or coarse step of the selected parameter. A step past a limit stops at
@@ -58,6 +58,9 @@ impl App {
     }
 
     pub(super) fn apply_normal(&mut self, action: Action) {
+        if self.offer(action) {
+            return;
+        }
         let n = ROWS.len();
         let (t0, t1) = (self.lab.solution.t_start, self.lab.solution.t_end);
         match action {
@@ -88,22 +91,14 @@ impl App {
             }
             Action::NextEvent | Action::PrevEvent => self.jump_to_event(action),
             Action::CycleSpan => self.cycle_span(),
-            Action::ZoomIn | Action::ZoomOut => {
-                // Around the cursor: a window the wheel moved away from it comes back.
-                self.zoom.follow(self.t, self.chart_span());
-                self.zoom_around(self.t, action == Action::ZoomIn);
-            }
-            Action::ZoomWhole => {
-                self.status = Status::Info(if self.zoom.whole() {
-                    "time zoom off: the whole run".into()
-                } else {
-                    "the charts show the whole run (z zooms in)".into()
-                });
-            }
-            Action::ToggleEnergy => {
-                self.show_energy = !self.show_energy;
-                self.show_positions = false;
-            }
+            // The charts' own keys (offered to them first, see `offer`).
+            Action::ZoomIn
+            | Action::ZoomOut
+            | Action::ZoomWhole
+            | Action::ToggleEnergy
+            | Action::TogglePositions
+            | Action::SwitchBall
+            | Action::CycleWorkAxis => {}
             Action::TogglePin => self.toggle_pin(),
             Action::Start => self.t = t0,
             Action::End => {
@@ -124,11 +119,6 @@ impl App {
             Action::DataTable => self.open_data_table(),
             Action::Export(kind) => self.ask_export(kind),
             Action::ApplyFit => self.apply_fit(),
-            Action::SwitchBall => self.switch_ball(),
-            Action::TogglePositions => {
-                self.show_positions = !self.show_positions;
-                self.show_energy = false;
-            }
             Action::ShowView(view) => self.toggle_view(view),
             Action::Predict => self.ask_prediction(),
             Action::HideWidth => self.toggle_hide_width(),
@@ -136,10 +126,6 @@ impl App {
             Action::Undo => self.undo(),
             Action::Reset => self.reset(),
             Action::DropData => self.drop_data(),
-            Action::CycleWorkAxis => {
-                self.work_axis = self.work_axis.next();
-                self.status = Status::Info(format!("work axis: {}", self.work_axis.name()));
-            }
             Action::FitStartEarlier => self.move_window(false, false),
             Action::FitStartLater => self.move_window(false, true),
             Action::FitEndEarlier => self.move_window(true, false),
@@ -358,20 +344,6 @@ impl App {
                 kind.extension()
             )),
         );
-    }
-
-    /// The ball key: in the Forces view the ball of the front view and the chain,
-    /// else the velocity chart's ball (left, right, both).
-    fn switch_ball(&mut self) {
-        if self.view == View::Forces {
-            self.forces_ball = 1 - self.forces_ball;
-            return;
-        }
-        self.chart_ball = match self.chart_ball {
-            ChartBall::Left => ChartBall::Right,
-            ChartBall::Right => ChartBall::Both,
-            ChartBall::Both => ChartBall::Left,
-        }
     }
 
     fn toggle_hide_width(&mut self) {

@@ -24,6 +24,7 @@ use crate::tui::view_cache::ViewCache;
 use marks::{line_fit_marks, measured_velocities};
 
 mod marks;
+pub mod state;
 pub mod zoom;
 
 fn event_lines(app: &App, balls: &[Who], theme: &Theme) -> Vec<VLine> {
@@ -49,17 +50,17 @@ fn event_lines(app: &App, balls: &[Who], theme: &Theme) -> Vec<VLine> {
 /// The chart shown in `area` (before drawing, with the screen's caches), and whether
 /// measured series were thinned for it now.
 pub fn build(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Chart, bool) {
-    let (mut titles, mut plot) = if app.show_energy {
+    let (mut titles, mut plot) = if app.charts().energy() {
         energy(app, cache, area, theme)
-    } else if app.show_positions {
+    } else if app.charts().positions() {
         positions(app, cache, area, theme)
     } else {
         velocities(app, cache, area, theme)
     };
-    let factor = app.zoom.factor(app.chart_span());
+    let factor = app.charts().zoom().factor(app.chart_span());
     if factor > 1.0 + 1e-9 {
         // Each wording keeps its room: the zoom is said first, briefly.
-        let zoomed = format!("zoom {}{}  ", theme.glyphs.text("×"), zoom_text(factor));
+        let zoomed = format!("zoom {}{}  ", theme.glyphs.text("×"), zoom::text(factor));
         for t in &mut titles {
             t.insert_str(0, &zoomed);
         }
@@ -74,19 +75,14 @@ pub fn build(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Ch
     // is symmetric about zero, so that the sign of what is to come is not implied.
     if app.hidden().derived() {
         plot.until(app.t);
-        let velocities = !(app.show_energy || app.show_positions);
-        if !app.show_energy {
+        let velocities = !(app.charts().energy() || app.charts().positions());
+        if !app.charts().energy() {
             let rows = usize::from(area.height.saturating_sub(4));
             plot.y_range = shown_y_range(&plot.series, velocities, rows);
         }
     }
     let data = plot.data_area(inner, theme);
     (Chart { titles, plot, data }, thinned)
-}
-
-/// A zoom factor as the title and the status line say it: 2, 4, … 4096.
-pub fn zoom_text(factor: f64) -> String {
-    crate::settings::units::significant(factor, 3)
 }
 
 /// Draws `chart` (built for `area`), changing nothing.
@@ -342,7 +338,7 @@ fn overlay_velocities(app: &App, balls: &[usize], columns: usize, theme: &Theme)
 fn velocities(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Vec<String>, Plot) {
     let columns = usize::from(area.width.saturating_sub(10));
     let samples = cache.samples(&app.lab, (columns, app.chart_range()));
-    let (balls, which) = balls_shown(app.chart_ball);
+    let (balls, which) = balls_shown(app.charts().ball());
     let curves: Vec<Curve> = balls
         .iter()
         .flat_map(|&i| -> [Curve; 2] {

@@ -181,17 +181,21 @@ fn rms(m: &ModelFit) -> String {
 
 /// A model's name: `mu+v0` → `μ_k+v0`.
 fn model_name(model: &str, theme: &Theme) -> String {
-    let mu = format!("{}_k", theme.glyphs.mu);
-    let names: Vec<&str> = model
-        .split('+')
-        .map(|p| match p {
-            "mu" => mu.as_str(),
-            "restitution" => "e",
-            "rolling_resistance" => "c_rr",
-            other => other,
-        })
-        .collect();
+    let names: Vec<String> = model.split('+').map(|p| symbol(p, theme)).collect();
     names.join("+")
+}
+
+/// A fitted value's symbol from the parameter table: its row's label up to the first
+/// blank (`mu_k` drawn as μ_k where the screen can, `v0`, `e`, `c_rr`).
+fn symbol(parameter: &str, theme: &Theme) -> String {
+    match crate::settings::params::Key::from_name(parameter) {
+        Some(k) => {
+            let label = k.param().label;
+            let first = label.split(' ').next().unwrap_or(label);
+            first.replace("mu", theme.glyphs.mu)
+        }
+        None => parameter.to_string(),
+    }
 }
 
 /// The candidate models by BIC (lower is better), the one the data support marked;
@@ -199,12 +203,7 @@ fn model_name(model: &str, theme: &Theme) -> String {
 /// determine is said so (as `fit` says it), and its model is never the one named.
 fn model_choice_lines(models: &[fit::Candidate], lines: &mut Ranked<'static>, theme: &Theme) {
     let g = theme.glyphs;
-    let symbol = |parameter: &str| match parameter {
-        "mu" => format!("{}_k", g.mu),
-        "restitution" => "e".to_string(),
-        "rolling_resistance" => "c_rr".to_string(),
-        other => other.to_string(),
-    };
+    let symbol = |parameter: &str| symbol(parameter, theme);
     let name = |c: &fit::Candidate| {
         let names: Vec<String> = c.parameters.iter().map(|e| symbol(e.parameter)).collect();
         names.join("+")

@@ -287,9 +287,8 @@ pub fn derive(
         sig_t.push(st);
         ang.push(a);
     }
-    // Recorded with x away from the other ball: turned, and said so.
-    m.mirrored = dir < 0.0;
-    m.scale_rel_se = track.scale_rel_se;
+    // Recorded with x away from the other ball: turned, and said so; the scale's ±.
+    (m.mirrored, m.scale_rel_se) = (dir < 0.0, track.scale_rel_se);
     m.v_cm_sigma = Some(sig_cm);
     m.stencils = Some(std::sync::Arc::new(stencils));
     m.x = Some(pos);

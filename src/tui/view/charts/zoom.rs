@@ -4,6 +4,11 @@
 //! wheel), kept in the span, and the whole span again. The axis' ticks, the curves'
 //! samples and the event lines all follow the window the chart is built with.
 
+/// A zoom factor as the title and the status line say it: 2, 4, … 4096.
+pub fn text(factor: f64) -> String {
+    crate::settings::units::significant(factor, 3)
+}
+
 /// How much one zoom key or wheel notch zooms.
 pub const STEP: f64 = 2.0;
 

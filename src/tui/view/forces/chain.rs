@@ -9,7 +9,7 @@ use crate::tui::view::predict::short_answer;
 /// (an item and its arrow are never split), `?` where they would give away what b or
 /// a `pending` prediction hides. `compact` drops the magnitude bars.
 pub(super) fn chains(app: &App, pending: bool, compact: bool, theme: &Theme) -> [Vec<String>; 2] {
-    let s = app.lab.derived.sliding[app.forces_ball];
+    let s = app.lab.derived.sliding[app.forces().ball()];
     let pinned = pinned_sliding(app);
     let hide = app.hidden().forces();
     // While a prediction is pending the two accelerations stay hidden too: their
@@ -62,7 +62,7 @@ pub(super) fn chains(app: &App, pending: bool, compact: bool, theme: &Theme) -> 
 
 /// D and what it decides: `?` while the prediction is pending or b is hidden.
 pub(super) fn outcome_items(app: &App, pending: bool, compact: bool, theme: &Theme) -> Vec<String> {
-    let s = app.lab.derived.sliding[app.forces_ball];
+    let s = app.lab.derived.sliding[app.forces().ball()];
     let d = if compact {
         "D = a_t/a_cm"
     } else {

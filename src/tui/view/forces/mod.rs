@@ -9,6 +9,7 @@
 mod chain;
 mod parts;
 mod section;
+pub mod state;
 
 use parts::*;
 

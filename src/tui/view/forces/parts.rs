@@ -109,7 +109,7 @@ pub(super) fn trend(now: f64, was: Option<f64>, theme: &Theme) -> String {
 /// The pinned run's sliding values for the ball shown, and its b.
 pub(super) fn pinned_sliding(app: &App) -> Option<(Sliding, f64)> {
     app.lab.pinned.as_ref().map(|p| {
-        let mass = if app.forces_ball == 0 {
+        let mass = if app.forces().ball() == 0 {
             p.scene.left.mass
         } else {
             p.scene.right.mass

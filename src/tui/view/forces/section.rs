@@ -4,7 +4,7 @@
 use super::parts::*;
 
 pub(super) fn front_view(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let ball = app.forces_ball;
+    let ball = app.forces().ball();
     let title = format!("Forces: front view, {} ball [b]", ball_name(ball));
     let out = along_x(theme, true);
     let inn = along_x(theme, false);

@@ -1,6 +1,8 @@
 //! The Methods view: each time-stepping method's error against its work, on log axes
 //! drawn by transforming the data and labelling the ticks, with the rows beside it.
 
+pub mod state;
+
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
@@ -53,7 +55,7 @@ fn work(axis: WorkAxis, r: &Row) -> f64 {
 }
 
 pub fn render_diagram(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let axis = app.work_axis;
+    let axis = app.methods_state().axis();
     let (per_run, short, x_title) = match axis {
         WorkAxis::Steps => ("steps per run", "steps", "steps"),
         WorkAxis::RhsEvals => ("rhs evaluations per run", "rhs evals", "rhs evals"),
