@@ -198,9 +198,20 @@ fn step_error(k: &Stages, h: f64, y: &Y, y_new: &Y, (rtol, atol): (f64, f64)) ->
 /// The dense output of an accepted step at the fraction `theta` of it.
 fn dense(y: &Y, k: &Stages, h: f64, theta: f64) -> Y {
     let q = [theta, theta * theta, theta.powi(3), theta.powi(4)];
-    // Each stage's weight at θ, the same for every component.
-    let b: [f64; 7] = std::array::from_fn(|i| (0..4).map(|p| P[i][p] * q[p]).sum::<f64>());
-    std::array::from_fn(|j| y[j] + h * (0..7).map(|i| k[i][j] * b[i]).sum::<f64>())
+    // Each stage's weight at θ, the same for every component. The sums are written
+    // out (same terms, same order as an iterator's sum): the event search calls this
+    // in its bisection, and iterator chains are slow in the debug build the tests use.
+    let b: [f64; 7] = P.map(|p| p[0] * q[0] + p[1] * q[1] + p[2] * q[2] + p[3] * q[3]);
+    std::array::from_fn(|j| {
+        let s = k[0][j] * b[0]
+            + k[1][j] * b[1]
+            + k[2][j] * b[2]
+            + k[3][j] * b[3]
+            + k[4][j] * b[4]
+            + k[5][j] * b[5]
+            + k[6][j] * b[6];
+        y[j] + h * s
+    })
 }
 
 /// The first switching-function zero inside an accepted step (its fraction of the

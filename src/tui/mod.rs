@@ -22,7 +22,7 @@ pub mod vocabulary;
 
 use std::io::{self, Write};
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::mpsc::{self, Receiver, RecvTimeoutError};
+use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
 use std::sync::{Mutex, PoisonError};
 use std::time::{Duration, Instant};
 
@@ -36,6 +36,7 @@ use app::{Action, App, FPS, Mode};
 use jobs::Notice;
 use screen::Screen;
 use theme::{Glyphs, Theme};
+use view::video_image::{self, Switch};
 
 /// The theme for this terminal: NO_COLOR (any value) asks for no colours.
 pub fn theme(ascii: bool) -> Theme {
@@ -118,6 +119,7 @@ fn suspend(_: &mut ratatui::DefaultTerminal, _: bool) -> io::Result<()> {
 /// Runs the app on the real terminal until the user quits.
 pub fn run(mut app: App, ascii: bool) -> io::Result<()> {
     let theme = theme(ascii);
+    let switch = Switch::from_env().map_err(|e| io::Error::new(io::ErrorKind::InvalidInput, e))?;
     // Before the terminal changes, so that no moment is left unguarded.
     crate::signals::on_signal(restore_and_exit)?;
     ACTIVE.store(true, Ordering::SeqCst);
@@ -141,8 +143,10 @@ pub fn run(mut app: App, ascii: bool) -> io::Result<()> {
         terminal.draw(|f| screen::draw(&app, f.area(), f.buffer_mut(), &theme))?;
         panic!("GROOVELAB_TEST_PANIC is set: panicking to test that the terminal is restored");
     }
+    // Once, on the real terminal, before its events are read (bounded by a timeout).
+    let picker = video_image::detect(switch);
     set_mouse(app.mouse);
-    let result = event_loop(&mut terminal, &mut app, &theme);
+    let result = event_loop(&mut terminal, &mut app, &theme, picker);
     restore();
     result
 }
@@ -153,13 +157,16 @@ enum Input {
     /// Reading the terminal failed: the app ends with this error.
     Failed(io::Error),
     Job(Notice),
+    /// The video's picture is ready: draw again.
+    Picture,
 }
 
 /// Starts the thread that reads terminal events (blocked, no CPU, until one comes)
 /// into the event loop's channel, and points the lab's jobs at the same channel:
 /// keys and job results arrive in one queue, and the loop sleeps until either comes.
-fn inputs(app: &App) -> io::Result<Receiver<Input>> {
+fn inputs(app: &App) -> io::Result<(Sender<Input>, Receiver<Input>)> {
     let (tx, rx) = mpsc::channel();
+    let wake = tx.clone();
     let jobs = Mutex::new(tx.clone());
     app.listen(move |notice| {
         let _ = jobs
@@ -181,17 +188,23 @@ fn inputs(app: &App) -> io::Result<Receiver<Input>> {
                 }
             }
         })?;
-    Ok(rx)
+    Ok((wake, rx))
 }
 
 fn event_loop(
     terminal: &mut ratatui::DefaultTerminal,
     app: &mut App,
     theme: &Theme,
+    picker: Option<ratatui_image::picker::Picker>,
 ) -> io::Result<()> {
     let frame = Duration::from_secs_f64(1.0 / FPS);
-    let rx = inputs(app)?;
-    let mut screen = Screen::default();
+    let (wake, rx) = inputs(app)?;
+    let mut screen = Screen::with_graphics(
+        picker,
+        Box::new(move || {
+            let _ = wake.send(Input::Picture);
+        }),
+    );
     let mut dirty = true;
     let mut last_tick = Instant::now();
     let mut mouse = app.mouse;
@@ -246,6 +259,7 @@ fn event_loop(
                 }
                 Input::Failed(e) => return Err(e),
                 Input::Job(notice) => app.on_job(notice),
+                Input::Picture => true,
             };
             if app.playing && !was_playing {
                 last_tick = Instant::now();

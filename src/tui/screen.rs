@@ -12,6 +12,7 @@ use super::app::{App, Mode, View};
 use super::component::{Component, Ctx, Frame};
 use super::theme::{Theme, force_ascii};
 use super::view;
+use super::view::video_image::VideoImage;
 use super::view::withheld::Withheld;
 use super::view_cache::ViewCache;
 
@@ -28,9 +29,23 @@ pub struct Work {
 pub struct Screen {
     cache: ViewCache,
     frame: Option<Frame>,
+    /// The video panel's picture in a graphics protocol (none headless).
+    video: VideoImage,
 }
 
 impl Screen {
+    /// A screen whose video panel draws pictures with `picker`'s graphics protocol,
+    /// made on a worker that calls `wake` when one is ready.
+    pub fn with_graphics(
+        picker: Option<ratatui_image::picker::Picker>,
+        wake: Box<dyn Fn() + Send>,
+    ) -> Screen {
+        Screen {
+            video: VideoImage::new(picker, wake),
+            ..Screen::default()
+        }
+    }
+
     /// Lays out the frame of `app` on `area`: the one layout, the chart and the grid
     /// of the view shown, a popup's scroll limit; what only a new snapshot or size
     /// changes is taken from the cache.
@@ -53,6 +68,9 @@ impl Screen {
                 View::Methods | View::Forces => {}
             }
         }
+        // A popup lies over the panels: no graphic then (text cannot cover it).
+        let scene = panels.filter(|_| matches!(app.mode, Mode::Normal | Mode::Edit(_)));
+        self.video.prepare(app, scene.map(|p| p.scene), theme);
         self.frame = Some(Frame {
             area,
             panels,
@@ -61,6 +79,11 @@ impl Screen {
             scroll_max: view::scroll_max(app, area, theme),
         });
         work
+    }
+
+    /// How many pictures of the video panel were asked of the graphics worker.
+    pub fn video_pictures(&self) -> usize {
+        self.video.encoded
     }
 
     /// The frame prepared last, if any.
@@ -72,6 +95,7 @@ impl Screen {
     pub fn render(&self, app: &App, buf: &mut Buffer, theme: &Theme) {
         if let Some(frame) = &self.frame {
             render(app, frame, buf, theme);
+            self.video.render(buf);
         }
     }
 

@@ -19,6 +19,7 @@ use serde_json::Value;
 use crate::common;
 use groovelab::physics::scene::Scene;
 use groovelab::study::vision::render::{Film, Look};
+use groovelab::study::vision::thumbs::VideoView;
 
 fn scene() -> Scene {
     groovelab::input::preset::load("paper-b4.9")
@@ -276,8 +277,46 @@ fn the_app_tracks_on_a_worker_and_takes_the_data_in_when_done() {
     app.apply(Action::ToggleVideo);
     let text = common::text(&app, (120, 40), false);
     assert!(text.contains("Video frames"), "{text}");
+    graphics_once_per_frame(&app, &view);
     app.apply(Action::ToggleVideo);
     assert!(common::text(&app, (120, 40), false).contains(" Scene  t = "));
+}
+
+/// With a graphics protocol (kitty, forced: no terminal here), the video panel's
+/// picture is made on a worker once per picture shown, not per redraw, and drawn
+/// into the panel's cells.
+fn graphics_once_per_frame(app: &groovelab::tui::app::App, view: &VideoView) {
+    use groovelab::tui::screen::Screen;
+    use ratatui::buffer::Buffer;
+    use ratatui::layout::Rect;
+    use ratatui_image::picker::{Picker, ProtocolType};
+    let mut app = app.clone();
+    let (tx, rx) = std::sync::mpsc::channel();
+    let mut picker = Picker::halfblocks();
+    picker.set_protocol_type(ProtocolType::Kitty);
+    let wake = Box::new(move || {
+        let _ = tx.send(());
+    });
+    let mut screen = Screen::with_graphics(Some(picker), wake);
+    let (area, theme) = (Rect::new(0, 0, 120, 40), groovelab::tui::theme(false));
+    let mut buf = Buffer::empty(area);
+    app.t = groovelab::tui::view::video::frame_time(&app, view, 20).unwrap();
+    screen.draw(&app, area, &mut buf, &theme);
+    // A hang guard, not a measurement.
+    rx.recv_timeout(std::time::Duration::from_secs(60))
+        .expect("the picture made");
+    let symbols = |buf: &Buffer| -> String { buf.content().iter().map(|c| c.symbol()).collect() };
+    // Sent once (kitty keeps it), then placed by its placeholder characters.
+    screen.draw(&app, area, &mut buf, &theme);
+    assert!(symbols(&buf).contains("\x1b_G"), "kitty's escape sends it");
+    for _ in 0..3 {
+        screen.draw(&app, area, &mut buf, &theme);
+    }
+    assert!(symbols(&buf).contains('\u{10EEEE}'), "kitty's placeholders");
+    assert_eq!(screen.video_pictures(), 1, "one picture for five redraws");
+    app.t = groovelab::tui::view::video::frame_time(&app, view, 21).unwrap();
+    screen.draw(&app, area, &mut buf, &theme);
+    assert_eq!(screen.video_pictures(), 2, "the next frame: a new picture");
 }
 
 #[test]

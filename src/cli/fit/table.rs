@@ -42,7 +42,15 @@ pub(super) fn summary(f: &Fits) -> String {
         _ => "μ_k alone (with v0 fitted: the data measure it)".to_string(),
     };
     if h.model == f.mu_alone.model {
-        let _ = writeln!(out, "  ({alone} is that model)");
+        let _ = writeln!(
+            out,
+            "  μ_k alone: the same fit{}",
+            if f.mu_alone.model == "mu" {
+                ""
+            } else {
+                " (v0 is fitted with μ_k wherever the data measure it)"
+            }
+        );
     } else {
         let a = &f.mu_alone;
         let _ = writeln!(

@@ -234,7 +234,7 @@ fn model_fits_lines(f: &fit::Fits, width: usize, lines: &mut Ranked<'static>, th
     let g = theme.glyphs;
     let a = &f.mu_alone;
     let text = if a.model == f.model_fit.model {
-        format!("({}_k alone is that model)", g.mu)
+        format!("{}_k alone: the same fit", g.mu)
     } else {
         format!("{}_k alone: {}  RMS {}", g.mu, pm(a, 4, g.ascii), rms(a))
     };

@@ -23,6 +23,7 @@ pub mod scene;
 pub mod status;
 pub mod table;
 pub mod video;
+pub mod video_image;
 pub mod withheld;
 
 pub use crate::tui::layout::{MIN_SIZE, Panels, layout};

@@ -186,7 +186,7 @@ impl Fit {
 /// The video's rows about the groove, px: from three radii above its line (at both
 /// edges of the picture: a tilted phone) to two and a half below (the rail); the
 /// whole height when the radius is not known.
-fn band(view: &VideoView) -> (f64, f64) {
+pub(super) fn band(view: &VideoView) -> (f64, f64) {
     let (vw, vh) = (view.thumbs.video.0 as f64, view.thumbs.video.1 as f64);
     let r = view.radius_px;
     if !(r.is_finite() && r > 0.0 && view.origin.1.is_finite()) {
@@ -261,6 +261,12 @@ pub fn model_centres(app: &App, view: &VideoView) -> Option<[(f64, f64); 2]> {
     let snap = app.lab.solution.at(app.t);
     let radius = app.lab.scene.radius;
     Some([snap.left.x, snap.right.x].map(|x| view.pixel(l.file_x(x, radius), 0.0)))
+}
+
+/// The index of the frame shown at the cursor's time, while the data in use are the
+/// video's.
+pub fn shown_frame(app: &App, view: &VideoView) -> Option<usize> {
+    Link::of(app, view).and_then(|l| view.frame_at(l.file_time(app.t)))
 }
 
 /// The lab's time of the video's frame `k`, while the data in use are the video's.
