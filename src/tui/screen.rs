@@ -245,6 +245,14 @@ const FIT_WITHHELD: Withheld = Withheld {
     what: "the fit",
 };
 
+/// The energy chart while the outcome is hidden: before the impact its rotational
+/// over translational energy is 2/(5k²) = 1/D, the answer (rot above trans: they
+/// come back).
+const ENERGY_WITHHELD: Withheld = Withheld {
+    title: "Energy",
+    what: "the energy chart",
+};
+
 /// The components of the view shown and where each goes (every view names its own:
 /// a new view is a new arm here, which the compiler asks for). While the outcome is
 /// hidden, the panels that would tell it are withheld.
@@ -252,6 +260,13 @@ fn parts_of(app: &App) -> Vec<(&'static dyn Component, Place)> {
     use view::{charts, fit, forces, info, map, methods};
     let hide = app.hidden();
     match app.view {
+        View::Charts if hide.derived() && app.charts().energy() => {
+            vec![(&ENERGY_WITHHELD, Place::Chart), (&info::Why, Place::Side)]
+        }
+        View::Fit if hide.derived() && app.charts().energy() => vec![
+            (&ENERGY_WITHHELD, Place::Chart),
+            (&FIT_WITHHELD, Place::Side),
+        ],
         View::Methods if hide.derived() => vec![
             (&METHODS_WITHHELD[0], Place::Chart),
             (&METHODS_WITHHELD[1], Place::Side),

@@ -236,3 +236,38 @@ fn predict_mode_shows_the_same_view_whatever_the_outcome() {
         }
     }
 }
+
+/// The energy chart before the impact shows rotational over translational energy,
+/// 2/(5k²) = 1/D: the answer. While the outcome is hidden (b hidden, or a prediction
+/// pending) it is withheld, and shows again once the outcome does.
+#[test]
+fn the_energy_chart_waits_for_the_outcome() {
+    for keys in ["B e", "y 3 v e"] {
+        let s = screen(&["--keys", keys, "--at", "-0.1", "--size", "120x40"]);
+        assert!(!s.contains("Energy of both balls"), "'{keys}':\n{s}");
+        assert!(s.contains("the energy chart shows"), "'{keys}':\n{s}");
+    }
+    let after = screen(&["--keys", "y 3 v e", "--at", "0.9", "--size", "120x40"]);
+    assert!(after.contains("Energy of both balls"), "{after}");
+}
+
+/// The data table's rows after the cursor hold the speeds after the impact (the
+/// paper's b = 3.5 cm data end at -0.119 m/s: they depart). While the outcome is
+/// hidden the table ends at the cursor, as the charts do.
+#[test]
+fn the_data_table_ends_at_the_cursor_while_the_outcome_is_hidden() {
+    let rows = |s: &str| {
+        s.lines()
+            .filter(|l| l.contains("+0.") || l.contains("-0."))
+            .filter(|l| l.matches('.').count() >= 7)
+            .count()
+    };
+    for keys in ["B d", "y 1 d"] {
+        let s = screen(&["--preset", "paper-b3.5", "--keys", keys, "--at", "-0.1"]);
+        assert!(s.contains("rows up to the cursor"), "'{keys}':\n{s}");
+        // Frames at -0.18, -0.16, -0.14, -0.12, -0.10 s: five rows, none after.
+        assert_eq!(rows(&s), 5, "'{keys}':\n{s}");
+    }
+    let open = screen(&["--preset", "paper-b3.5", "--keys", "d", "--at", "-0.1"]);
+    assert!(rows(&open) > 5, "{open}");
+}

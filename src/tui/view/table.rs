@@ -146,7 +146,17 @@ pub(super) fn table_layout(app: &App, theme: &Theme) -> (Vec<Line<'static>>, usi
         };
         head.push(Line::from(Span::styled(format!(" {why}"), theme.dim)));
     }
-    (head, times.len(), if track { 110 } else { 78 })
+    // While the outcome is hidden the rows end at the cursor, as the charts do: the
+    // frames after it (their speeds after the impact) are the answer.
+    let count = if app.hidden().derived() {
+        let shown = times.iter().take_while(|&&t| t <= app.t + 1e-12).count();
+        let note = "rows up to the cursor: the rest shows once the outcome does";
+        head.push(Line::from(Span::styled(format!(" {note}"), theme.dim)));
+        shown
+    } else {
+        times.len()
+    };
+    (head, count, if track { 110 } else { 78 })
 }
 
 /// The data table popup as a component.
