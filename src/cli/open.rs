@@ -109,7 +109,13 @@ fn series_of(texts: &[(String, String)], args: &DataArgs) -> Result<(Series, Sce
     m.check_magnitudes()
         .map_err(|source| CliError::Implausible { file, source })?;
     let (file, text) = &texts[0];
-    let own_scene = crate::input::data::scene_of(text, file)?;
+    // A video's tracks state the R they were scaled with, which came from an option
+    // or the preset, not from a file: it is not the file's own scene.
+    let own_scene = if video {
+        SceneSpec::default()
+    } else {
+        crate::input::data::scene_of(text, file)?
+    };
     Ok((series, own_scene))
 }
 
