@@ -211,6 +211,16 @@ impl MeasuredPoints {
 
     /// The [`value_range`] of `points` if it is one of these series (made once per
     /// scene: a chart's y range takes no pass over a million rows); `None` if not.
+    /// Whether `points` are one of the error-bar series: a chart's y range leaves them
+    /// out (a derived point beside a gap in a track can carry a σ many times the
+    /// speeds; its bar is cut at the chart's edge rather than squeezing the curves).
+    pub fn is_bars(&self, points: &Arc<[ChartPoint]>) -> bool {
+        [&self.v_cm_bars, &self.v_t_bars]
+            .into_iter()
+            .flatten()
+            .any(|b| Arc::ptr_eq(b, points))
+    }
+
     pub fn range_of(&self, points: &Arc<[ChartPoint]>) -> Option<Option<(f64, f64)>> {
         let i = self.series().position(|s| Arc::ptr_eq(s, points))?;
         self.ranges.get(i).copied()

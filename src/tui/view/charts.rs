@@ -205,7 +205,10 @@ fn bounds(
     rows: usize,
 ) -> ((f64, f64), Vec<f64>) {
     let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
-    for s in series {
+    for s in series
+        .iter()
+        .filter(|s| !measured.is_some_and(|m| m.is_bars(&s.points)))
+    {
         let range = measured
             .and_then(|m| m.range_of(&s.points))
             .unwrap_or_else(|| value_range(&s.points));

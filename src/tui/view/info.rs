@@ -339,16 +339,19 @@ fn energy_lines(app: &App, width: u16, theme: &Theme) -> Ranked<'static> {
     ]);
     let pct = |i: usize| value(format!("{}%", shares[i]), theme);
     let total = || value(format!("{:.4} J{}", e.total(), assumed(app)), theme);
-    let rows: Vec<Vec<Span>> = if width >= 40 {
+    let first = vec![
+        label("energy ", theme),
+        total(),
+        label(" = trans ", theme),
+        pct(0),
+        label(" + rot ", theme),
+        pct(1),
+    ];
+    // Two rows where the first fits (with "(m assumed)" it may not at 40 columns).
+    let fits = Line::from(first.clone()).width() <= usize::from(width);
+    let rows: Vec<Vec<Span>> = if fits {
         vec![
-            vec![
-                label("energy ", theme),
-                total(),
-                label(" = trans ", theme),
-                pct(0),
-                label(" + rot ", theme),
-                pct(1),
-            ],
+            first,
             vec![
                 label("  + friction ", theme),
                 pct(2),
