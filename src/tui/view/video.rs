@@ -293,7 +293,8 @@ fn draw_model(app: &App, view: &VideoView, fit: &Fit, buf: &mut Buffer, theme: &
 fn draw_tracked(view: &VideoView, k: usize, fit: &Fit, buf: &mut Buffer, theme: &Theme) {
     let mark = if theme.glyphs.ascii { "x" } else { "×" };
     for b in &view.balls {
-        let points = [(b.centre.get(k), "+"), (b.mark.get(k), mark)];
+        // The centre last: where both fall in one cell it is the one shown.
+        let points = [(b.mark.get(k), mark), (b.centre.get(k), "+")];
         for (p, glyph) in points {
             if let Some(Some((x, y))) = p
                 && let Some((cx, cy)) = fit.cell((f64::from(*x), f64::from(*y)))
