@@ -138,9 +138,10 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         by: name,
         allowed,
     };
-    // `track` takes R (for the scale) from a preset or --radius, and nothing else of
-    // the scene: it tracks what was filmed, it simulates nothing.
-    let track_unused = matches!(cli.command, Some(Command::Track(_)))
+    // `track` (and `data` on a video) takes R (for the scale) from a preset or
+    // --radius, and nothing else of the scene: it tracks what was filmed, it
+    // simulates nothing.
+    let track_unused = matches!(cli.command, Some(Command::Track(_) | Command::Data(_)))
         .then(|| cli.scene.values.given().map(|(k, _)| k.param().name))
         .into_iter()
         .flatten()
@@ -149,7 +150,7 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         (Some(id), _) if !scene => unused(id, "commands that take a scene"),
         _ if track_unused.is_some() => unused(
             track_unused.unwrap_or_default(),
-            "commands that simulate a scene (track takes --radius and --preset only)",
+            "commands that simulate a scene (track, and data on a video, take --radius and --preset only)",
         ),
         (_, Some(id)) if !data => unused(id, "compare, fit, render, data and the app"),
         // `data` takes its files as arguments.

@@ -40,7 +40,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         }
         return;
     };
-    let link = Link::of(app, view);
+    let link = Link::of(app);
     let frame = link.and_then(|l| view.frame_at(l.file_time(app.t)));
     let titles = titles(app, view, frame);
     let legend = Line::styled(
@@ -105,7 +105,7 @@ struct Link {
 
 impl Link {
     /// The link while the data in use are this video's.
-    fn of(app: &App, _view: &VideoView) -> Option<Link> {
+    fn of(app: &App) -> Option<Link> {
         let own = app.lab.own_data()?;
         if Some(own.name.as_str()) != app.video.name.as_deref() {
             return None;
@@ -257,7 +257,7 @@ fn draw_picture(view: &VideoView, k: usize, fit: &Fit, buf: &mut Buffer, theme: 
 /// The model's ball centres at the cursor's time in the video's pixels (left, right),
 /// while the data in use are the video's.
 pub fn model_centres(app: &App, view: &VideoView) -> Option<[(f64, f64); 2]> {
-    let l = Link::of(app, view)?;
+    let l = Link::of(app)?;
     let snap = app.lab.solution.at(app.t);
     let radius = app.lab.scene.radius;
     Some([snap.left.x, snap.right.x].map(|x| view.pixel(l.file_x(x, radius), 0.0)))
@@ -271,7 +271,7 @@ pub fn shown_frame(app: &App, view: &VideoView) -> Option<usize> {
 
 /// The lab's time of the video's frame `k`, while the data in use are the video's.
 pub fn frame_time(app: &App, view: &VideoView, k: usize) -> Option<f64> {
-    let l = Link::of(app, view)?;
+    let l = Link::of(app)?;
     Some(view.t.get(k)? - l.impact_t)
 }
 
@@ -299,7 +299,8 @@ fn draw_model(app: &App, view: &VideoView, fit: &Fit, buf: &mut Buffer, theme: &
 fn draw_tracked(view: &VideoView, k: usize, fit: &Fit, buf: &mut Buffer, theme: &Theme) {
     let mark = if theme.glyphs.ascii { "x" } else { "×" };
     for b in &view.balls {
-        let points = [(b.centre.get(k), "+"), (b.mark.get(k), mark)];
+        // The centre last: where both fall in one cell it is the one shown.
+        let points = [(b.mark.get(k), mark), (b.centre.get(k), "+")];
         for (p, glyph) in points {
             if let Some(Some((x, y))) = p
                 && let Some((cx, cy)) = fit.cell((f64::from(*x), f64::from(*y)))
