@@ -266,7 +266,7 @@ pub fn model_centres(app: &App, view: &VideoView) -> Option<[(f64, f64); 2]> {
 /// The index of the frame shown at the cursor's time, while the data in use are the
 /// video's.
 pub fn shown_frame(app: &App, view: &VideoView) -> Option<usize> {
-    Link::of(app, view).and_then(|l| view.frame_at(l.file_time(app.t)))
+    Link::of(app).and_then(|l| view.frame_at(l.file_time(app.t)))
 }
 
 /// The lab's time of the video's frame `k`, while the data in use are the video's.
