@@ -108,11 +108,16 @@ pub fn describe(shown: &DataReport) -> String {
             }
         );
     }
+    let rate = r
+        .frame_rate
+        .map_or("no frame rate (too few times)".to_string(), |f| {
+            format!("{} frames/s", significant(f, 4))
+        });
     let _ = writeln!(
         s,
-        "  {} frames at {} frames/s, t = {} … {} s",
+        "  {} frame{} at {rate}, t = {} … {} s",
         r.frames,
-        significant(r.frame_rate, 4),
+        if r.frames == 1 { "" } else { "s" },
         significant(r.t_first, 4),
         significant(r.t_last, 4)
     );

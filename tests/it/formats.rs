@@ -509,3 +509,22 @@ fn data_describes_any_file_and_refuses_what_it_cannot_use_in_one_line() {
     assert_eq!(j["scene"]["width"].as_f64(), Some(0.049), "{}", j["scene"]);
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A file of one frame has no frame rate: `data` says so (it said "NaN frames/s") and
+/// its JSON has `null` (the fuzz harness found it in a damaged Vernier export).
+#[test]
+fn a_file_of_one_frame_has_no_frame_rate() {
+    let dir = scratch("one-frame");
+    let file = dir.join("one.csv");
+    std::fs::write(&file, "t,x,y\n0.0,0.10,0.02\n").unwrap();
+    let path = file.display().to_string();
+    let (code, out, err) = groovelab(&["data", &path]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(out.contains("1 frame at no frame rate"), "{out}");
+    assert!(!out.contains("NaN"), "{out}");
+    let (code, out, err) = groovelab(&["data", "--format", "json", &path]);
+    assert_eq!(code, Some(0), "{err}");
+    let v: serde_json::Value = serde_json::from_str(&out).unwrap();
+    assert!(v[0]["frame_rate"].is_null(), "{out}");
+    assert_eq!(v[0]["frames"], 1, "{out}");
+}

@@ -1284,6 +1284,8 @@ const NULLABLE: &[&str] = &[
     "mark_x",
     "mark_y",
     "mark_sigma",
+    // data's report: a file with fewer than two distinct times has no frame rate.
+    "frame_rate",
 ];
 
 fn nulls(v: &serde_json::Value, key: &str, out: &mut Vec<String>) {

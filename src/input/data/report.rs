@@ -26,8 +26,9 @@ pub struct Report {
     pub mark: Option<String>,
     /// Frames with a time (and, for a track, rows kept).
     pub frames: usize,
-    /// Frames per second, from the median spacing.
-    pub frame_rate: f64,
+    /// Frames per second, from the median spacing; `None` (JSON `null`) where fewer
+    /// than two distinct times give none.
+    pub frame_rate: Option<f64>,
     /// First and last time of the file, s (a velocity file's with the impact at 0).
     pub t_first: f64,
     pub t_last: f64,
@@ -94,7 +95,7 @@ pub fn inspect(
                 centre: None,
                 mark: None,
                 frames: t.len(),
-                frame_rate: 1.0 / frame_spacing(t),
+                frame_rate: rate_of(t),
                 t_first: t[0],
                 t_last: t[t.len() - 1],
                 missing: jumps(t),
@@ -129,7 +130,7 @@ fn single_ball(m: crate::study::measured::Measured, file: &str, notes: Notes) ->
         centre: None,
         mark: None,
         frames: t.len(),
-        frame_rate: 1.0 / frame_spacing(t),
+        frame_rate: rate_of(t),
         t_first: t[0],
         t_last: t[t.len() - 1],
         missing: jumps(t),
@@ -159,7 +160,7 @@ fn of_track(track: Track, file: &str, notes: Notes, reading: &Reading, derive: &
         centre: Some(track.centre_name.clone()),
         mark: track.mark_name.clone(),
         frames: rows.len(),
-        frame_rate: 1.0 / frame_spacing(&t),
+        frame_rate: rate_of(&t),
         t_first: t.first().copied().unwrap_or(f64::NAN),
         t_last: t.last().copied().unwrap_or(f64::NAN),
         missing,
@@ -264,4 +265,10 @@ fn jumps(t: &[f64]) -> Vec<Gap> {
             why: "no row",
         })
         .collect()
+}
+
+/// Frames per second from the median spacing of `t`, where it gives a finite one.
+fn rate_of(t: &[f64]) -> Option<f64> {
+    let rate = 1.0 / frame_spacing(t);
+    (rate.is_finite() && rate > 0.0).then_some(rate)
 }
