@@ -89,21 +89,8 @@ pub fn inspect(
                 .map(|i| m.v_cm[i])
                 .collect();
             Report {
-                file: file.to_string(),
-                notes,
-                kind: "velocities",
-                centre: None,
-                mark: None,
-                frames: t.len(),
-                frame_rate: rate_of(t),
-                t_first: t[0],
-                t_last: t[t.len() - 1],
-                missing: jumps(t),
-                scatter: None,
                 approach_speed: (!before.is_empty())
                     .then(|| before.iter().sum::<f64>() / before.len() as f64),
-                approach_speed_se: None,
-                speed: None,
                 impacts: vec![0.0],
                 impact_note: format!(
                     "first impact found; the times above are from it (t = 0){}",
@@ -113,6 +100,7 @@ pub fn inspect(
                         ""
                     }
                 ),
+                ..velocities(t, file, notes)
             }
         }
         RawSeries::Positions(track) => of_track(track, file, notes, reading, derive),
@@ -123,6 +111,16 @@ pub fn inspect(
 fn single_ball(m: crate::study::measured::Measured, file: &str, notes: Notes) -> Report {
     let t = &m.t;
     let fastest = m.v_cm.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
+    Report {
+        speed: Some(fastest),
+        impact_note: "a single ball's velocities, no impact found (v_cm never drops sharply): a fit needs one; give its time with --impact-at".into(),
+        ..velocities(t, file, notes)
+    }
+}
+
+/// What every velocity file's report says of its times (no impact, approach or
+/// speed yet: the callers say those).
+fn velocities(t: &[f64], file: &str, notes: Notes) -> Report {
     Report {
         file: file.to_string(),
         notes,
@@ -137,9 +135,9 @@ fn single_ball(m: crate::study::measured::Measured, file: &str, notes: Notes) ->
         scatter: None,
         approach_speed: None,
         approach_speed_se: None,
-        speed: Some(fastest),
+        speed: None,
         impacts: Vec::new(),
-        impact_note: "a single ball's velocities, no impact found (v_cm never drops sharply): a fit needs one; give its time with --impact-at".into(),
+        impact_note: String::new(),
     }
 }
 
