@@ -178,36 +178,13 @@ pub(super) fn name_tracks(
         if sep == Sep::Space {
             return Err(LayoutError::SpaceSeparated { line: names.line });
         }
-        let mut current = String::new();
-        for (j, col) in cols.iter_mut().enumerate() {
-            let name = names.cell(j);
-            if !name.is_empty() {
-                current = name.to_string();
-            }
-            if let Some(c) = col
-                && c.axis != Axis::T
-                && c.track.is_empty()
-            {
-                c.track = current.clone();
-            }
-        }
+        name_below(cols, names, false);
         Ok("Tracker multi-track")
     } else if let Some(names) = before.last().filter(|r| named_cells(r) > 1) {
         // Tracks side by side (a spreadsheet of several tracks, `A;;;B;;` above
         // `t;x;y;t;x;y`): each name above its track's first column, its own time
         // column included.
-        let mut current = String::new();
-        for (j, col) in cols.iter_mut().enumerate() {
-            let name = names.cell(j);
-            if !name.is_empty() {
-                current = name.to_string();
-            }
-            if let Some(c) = col
-                && c.track.is_empty()
-            {
-                c.track = current.clone();
-            }
-        }
+        name_below(cols, names, true);
         Ok("tracks side by side")
     } else if let Some(title) = before.last() {
         // Tracker's single-track export: the track's name above the header.
@@ -220,6 +197,25 @@ pub(super) fn name_tracks(
         Ok("Tracker single-track")
     } else {
         Ok("CSV")
+    }
+}
+
+/// Gives each column without a track name the last name at or left of it in `names`
+/// (a name stands above its track's first column); time columns too when `times`
+/// (tracks side by side each have their own), else they stay shared.
+fn name_below(cols: &mut [Option<Col>], names: &TableRow, times: bool) {
+    let mut current = String::new();
+    for (j, col) in cols.iter_mut().enumerate() {
+        let name = names.cell(j);
+        if !name.is_empty() {
+            current = name.to_string();
+        }
+        if let Some(c) = col
+            && (times || c.axis != Axis::T)
+            && c.track.is_empty()
+        {
+            c.track = current.clone();
+        }
     }
 }
 

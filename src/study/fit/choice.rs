@@ -15,7 +15,7 @@ use super::approach::APPROACH_FRAMES;
 use super::least_squares::with;
 use super::model::{ModelFit, Scored, scored_fit, scored_fit_within, thinned};
 use super::problem::{Evals, FitError, Free};
-use super::residuals::{Target, labelled_residuals};
+use super::residuals::{Target, labelled_residuals, residuals};
 use super::uncertainty::{Label, NotIdentified, effective_points};
 use crate::physics::scene::Scene;
 use crate::study::Progress;
@@ -229,7 +229,7 @@ pub(super) fn candidates_within(
             // must fit them at least as well, and one model fitted from two starts
             // must not land in two minima (one fit per model).
             let cost_on = |s: &Scene| {
-                let r = labelled_residuals(s, data, &common, target, true, evals).0;
+                let r = residuals(s, data, &common, target, evals);
                 r.iter().map(|x| x * x).sum::<f64>()
             };
             let free = fitted[k].0.clone();

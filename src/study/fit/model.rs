@@ -17,7 +17,7 @@ use super::least_squares::{
 };
 use super::problem::{Evals, FitError, Free};
 use super::regime::{data_scatter, observed_after, rest_band, sliding_end};
-use super::residuals::{Target, fit_points, labelled_residuals, mean_cost, nuisance, residuals_of};
+use super::residuals::{Target, fit_points, labelled_residuals, mean_cost, nuisance};
 use super::uncertainty::{
     NotIdentified, ScalePart, effective_points, shared_noise, uncertainties, with_scale,
 };
@@ -483,7 +483,7 @@ pub(super) fn scored_fit_within(
         rolling_resistance_se: se(Free::RollingResistance),
         rms: {
             // In the data's own units, whatever the weights.
-            let raw = residuals_of(&fitted, m, &idx, target, false, evals);
+            let raw = labelled_residuals(&fitted, m, &idx, target, false, evals).0;
             (raw.iter().map(|x| x * x).sum::<f64>() / raw.len().max(1) as f64).sqrt()
         },
         points: idx.len(),

@@ -78,19 +78,8 @@ pub(super) enum Target {
 }
 
 /// Residuals of `scene` against `m` at `idx`, weighted (divided by the points'
-/// uncertainties, where known) or not; points not measured (NaN) are left out.
-pub(super) fn residuals_of(
-    scene: &Scene,
-    m: &Measured,
-    idx: &[usize],
-    target: Target,
-    weighted: bool,
-    evals: &Evals,
-) -> Vec<f64> {
-    labelled_residuals(scene, m, idx, target, weighted, evals).0
-}
-
-/// [`residuals_of`], with each velocity residual's [`Label`] (none for positions).
+/// uncertainties, where known) or not, with each velocity residual's [`Label`] (none
+/// for positions); points not measured (NaN) are left out.
 pub(super) fn labelled_residuals(
     scene: &Scene,
     m: &Measured,
@@ -421,6 +410,8 @@ pub(super) fn nuisance(m: &Measured, target: Target) -> usize {
     }
 }
 
+/// The weighted residuals of [`labelled_residuals`], without their labels: what a
+/// fit minimises.
 pub(super) fn residuals(
     scene: &Scene,
     m: &Measured,
@@ -428,7 +419,7 @@ pub(super) fn residuals(
     target: Target,
     evals: &Evals,
 ) -> Vec<f64> {
-    residuals_of(scene, m, idx, target, true, evals)
+    labelled_residuals(scene, m, idx, target, true, evals).0
 }
 
 /// Mean squared residual of `scene`, over the frames away from its own impacts.
