@@ -74,6 +74,18 @@ pub fn groovelab(args: &[&str]) -> std::process::Output {
         .unwrap()
 }
 
+/// Runs the binary with `args` ([`groovelab`]), which must succeed (else the test
+/// fails with its `error:` line), and reads what it printed as JSON.
+pub fn json(args: &[&str]) -> serde_json::Value {
+    let out = groovelab(args);
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).unwrap()
+}
+
 /// Runs the command line `args` (a subcommand first) in this process, with the user's
 /// presets as the command finds them: what it would print, or its error message.
 pub fn run_in_process(args: &[&str]) -> Result<String, String> {
@@ -202,14 +214,19 @@ pub fn text(app: &App, size: (u16, u16), ascii: bool) -> String {
     screen::to_text(app, size.0, size.1, &Theme::new(Glyphs::new(ascii), true))
 }
 
-/// The scene of the preset paper-b4.9, resolved (the data generators' truth).
-pub fn paper_scene() -> groovelab::physics::scene::Scene {
-    groovelab::input::preset::load("paper-b4.9")
+/// The scene of the built-in preset `name`, resolved.
+pub fn preset_scene(name: &str) -> groovelab::physics::scene::Scene {
+    groovelab::input::preset::load(name)
         .unwrap()
         .spec
         .resolve()
         .unwrap()
         .0
+}
+
+/// The scene of the preset paper-b4.9, resolved (the data generators' truth).
+pub fn paper_scene() -> groovelab::physics::scene::Scene {
+    preset_scene("paper-b4.9")
 }
 
 /// A fresh scratch folder for one test of an area, named by the process.

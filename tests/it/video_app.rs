@@ -17,18 +17,8 @@ use groovelab::tui::app::{Action, Status};
 use serde_json::Value;
 
 use crate::common;
-use groovelab::physics::scene::Scene;
 use groovelab::study::vision::render::{Film, Look};
 use groovelab::study::vision::thumbs::VideoView;
-
-fn scene() -> Scene {
-    groovelab::input::preset::load("paper-b4.9")
-        .unwrap()
-        .spec
-        .resolve()
-        .unwrap()
-        .0
-}
 
 /// A small clip: 320×180 at 500 px/m (R = 13.75 px), 100 frames/s, t = −0.15 … 0.34 s.
 pub fn look() -> Look {
@@ -60,7 +50,7 @@ pub fn folder() -> &'static Path {
         let _ = std::fs::remove_dir_all(&d);
         std::fs::create_dir_all(&d).unwrap();
         let look = look();
-        let film = Film::new(&scene(), look, 0.4);
+        let film = Film::new(&common::paper_scene(), look, 0.4);
         for k in 0..FRAMES {
             let p = d.join(format!("frame{:04}.png", k + 1));
             write::png(&p, &film.rgb(k), look.width, look.height).unwrap();
@@ -356,7 +346,7 @@ fn an_mp4_is_data_for_the_app_and_render() {
         return;
     }
     let look = look();
-    let film = Film::new(&scene(), look, 0.4);
+    let film = Film::new(&common::paper_scene(), look, 0.4);
     let clip = scratch().join("clip.mp4");
     let enc = write::Encoding {
         width: look.width,
