@@ -263,7 +263,7 @@ fn model_fit_of(
     target: Target,
     progress: &dyn Progress,
 ) -> Result<ModelFit, FitError> {
-    scored_fit(scene, m, free, target, &Evals::new(progress)).map(|s| s.fit)
+    scored_fit(scene, m, free, target, &mut Evals::new(progress)).map(|s| s.fit)
 }
 
 /// A model fit with what information criteria need: the weighted residual sum of
@@ -284,13 +284,16 @@ pub(super) struct Scored {
 /// fitted on: those away from the model's impacts, and among `within` when given
 /// (a refit on frames shared with other models, started from a fit already made: no
 /// scan of μ_k again).
-fn best_values(pb: &Problem, within: Option<&[usize]>) -> Result<(Vec<f64>, Vec<usize>), FitError> {
+fn best_values(
+    pb: &Problem,
+    evals: &mut Evals,
+    within: Option<&[usize]>,
+) -> Result<(Vec<f64>, Vec<usize>), FitError> {
     let Problem {
         scene,
         m,
         free,
         target,
-        evals,
     } = *pb;
     let p: Vec<f64> = free
         .iter()
@@ -299,7 +302,7 @@ fn best_values(pb: &Problem, within: Option<&[usize]>) -> Result<(Vec<f64>, Vec<
             other => other.value_in(scene),
         })
         .collect();
-    let frames = |p: &[f64]| {
+    let frames = |p: &[f64], evals: &mut Evals| {
         let mut idx = fit_points(m, &with(scene, free, p), target, evals);
         if let Some(w) = within {
             idx.retain(|i| w.binary_search(i).is_ok());
@@ -308,7 +311,7 @@ fn best_values(pb: &Problem, within: Option<&[usize]>) -> Result<(Vec<f64>, Vec<
     };
     // A refit starts from a fit already made: no scan again.
     if within.is_some() {
-        return refined(pb, p, &frames);
+        return refined(pb, evals, p, &frames);
     }
     // From the start that fits best (the scene's values, or others of c_rr: from
     // c_rr = 0 a μ_k that also brakes the rolling fits nearly as well, and
@@ -323,7 +326,7 @@ fn best_values(pb: &Problem, within: Option<&[usize]>) -> Result<(Vec<f64>, Vec<
         let mut best = (f64::INFINITY, p.clone());
         for q in tries {
             let (q, cost) = match mu {
-                Some(i) => coarse_mu(pb, &q, i)?,
+                Some(i) => coarse_mu(pb, evals, &q, i)?,
                 None => {
                     evals.next()?;
                     let cost = mean_cost(&with(scene, free, &q), m, target, evals);
@@ -337,9 +340,9 @@ fn best_values(pb: &Problem, within: Option<&[usize]>) -> Result<(Vec<f64>, Vec<
         p = best.1;
     }
     if let Some(i) = mu {
-        p[i] = scan_mu(pb, &p, i)?;
+        p[i] = scan_mu(pb, evals, &p, i)?;
     }
-    refined(pb, p, &frames)
+    refined(pb, evals, p, &frames)
 }
 
 /// Other values of c_rr a fit may start from besides the scene's: 0.003 to 0.1, a
@@ -380,13 +383,14 @@ fn starts(free: &[Free], p: &[f64]) -> Vec<Vec<f64>> {
 /// picks (away from the model's impacts: chosen again once the fit has moved them).
 fn refined(
     pb: &Problem,
+    evals: &mut Evals,
     mut p: Vec<f64>,
-    frames: &dyn Fn(&[f64]) -> Vec<usize>,
+    frames: &dyn Fn(&[f64], &mut Evals) -> Vec<usize>,
 ) -> Result<(Vec<f64>, Vec<usize>), FitError> {
-    let mut idx = frames(&p);
+    let mut idx = frames(&p, evals);
     for _ in 0..3 {
-        p = least_squares(pb, &idx, p)?;
-        let next = frames(&p);
+        p = least_squares(pb, evals, &idx, p)?;
+        let next = frames(&p, evals);
         if next == idx {
             break;
         }
@@ -400,7 +404,7 @@ pub(super) fn scored_fit(
     m: &Measured,
     free: &[Free],
     target: Target,
-    evals: &Evals,
+    evals: &mut Evals,
 ) -> Result<Scored, FitError> {
     scored_fit_within(scene, m, free, target, None, evals)
 }
@@ -414,7 +418,7 @@ pub(super) fn scored_fit_within(
     free: &[Free],
     target: Target,
     within: Option<&[usize]>,
-    evals: &Evals,
+    evals: &mut Evals,
 ) -> Result<Scored, FitError> {
     let thin = thinned(m);
     let (m, every) = match &thin {
@@ -426,15 +430,14 @@ pub(super) fn scored_fit_within(
         m,
         free,
         target,
-        evals,
     };
-    let (p, idx) = best_values(&pb, within)?;
+    let (p, idx) = best_values(&pb, evals, within)?;
     let fitted = with(scene, free, &p);
     let (r, labels) = labelled_residuals(&fitted, m, &idx, target, true, evals);
     let n = p.len();
     let cost: f64 = r.iter().map(|x| x * x).sum();
     let mut s2 = cost / r.len().saturating_sub(n + nuisance(m, target)).max(1) as f64;
-    let j = smooth_jacobian(&pb, &idx, &p, &r);
+    let j = smooth_jacobian(&pb, evals, &idx, &p, &r);
     // Velocities derived from a track share frames: their errors are correlated, by
     // the stencils. Other residuals that go together from frame to frame (a tracker's
     // drift, a velocity some tool smoothed, a model that misses the data's shape) are

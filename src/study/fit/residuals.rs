@@ -11,7 +11,12 @@ use crate::study::measured::series::{Measured, Stencil, Stencils};
 
 /// Points the model fit uses: all but the frames that straddle an impact of the
 /// model `scene` (a frame holding a jump measures neither side of it).
-pub(super) fn fit_points(m: &Measured, scene: &Scene, target: Target, evals: &Evals) -> Vec<usize> {
+pub(super) fn fit_points(
+    m: &Measured,
+    scene: &Scene,
+    target: Target,
+    evals: &mut Evals,
+) -> Vec<usize> {
     // Positions do not jump at an impact: every frame counts.
     if target == Target::Position {
         return (0..m.t.len()).collect();
@@ -86,7 +91,7 @@ pub(super) fn labelled_residuals(
     idx: &[usize],
     target: Target,
     weighted: bool,
-    evals: &Evals,
+    evals: &mut Evals,
 ) -> (Vec<f64>, Vec<Label>) {
     let sol = evals.solve(scene, m.t[0].min(-1e-3));
     match target {
@@ -417,13 +422,13 @@ pub(super) fn residuals(
     m: &Measured,
     idx: &[usize],
     target: Target,
-    evals: &Evals,
+    evals: &mut Evals,
 ) -> Vec<f64> {
     labelled_residuals(scene, m, idx, target, true, evals).0
 }
 
 /// Mean squared residual of `scene`, over the frames away from its own impacts.
-pub(super) fn mean_cost(scene: &Scene, m: &Measured, target: Target, evals: &Evals) -> f64 {
+pub(super) fn mean_cost(scene: &Scene, m: &Measured, target: Target, evals: &mut Evals) -> f64 {
     let idx = fit_points(m, scene, target, evals);
     let r = residuals(scene, m, &idx, target, evals);
     r.iter().map(|x| x * x).sum::<f64>() / r.len().max(1) as f64
