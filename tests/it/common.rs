@@ -74,16 +74,21 @@ pub fn groovelab(args: &[&str]) -> std::process::Output {
         .unwrap()
 }
 
-/// Runs the binary with `args` ([`groovelab`]), which must succeed (else the test
-/// fails with its `error:` line), and reads what it printed as JSON.
-pub fn json(args: &[&str]) -> serde_json::Value {
+/// What the binary printed for `args` ([`groovelab`]), which must succeed (else the
+/// test fails with its `error:` line).
+pub fn stdout(args: &[&str]) -> String {
     let out = groovelab(args);
     assert!(
         out.status.success(),
         "{args:?}: {}",
         String::from_utf8_lossy(&out.stderr)
     );
-    serde_json::from_slice(&out.stdout).unwrap()
+    String::from_utf8(out.stdout).unwrap()
+}
+
+/// What the binary printed for `args` ([`stdout`]: it must succeed), read as JSON.
+pub fn json(args: &[&str]) -> serde_json::Value {
+    serde_json::from_str(&stdout(args)).unwrap()
 }
 
 /// Runs the command line `args` (a subcommand first) in this process, with the user's
