@@ -594,14 +594,8 @@ fn damaged_file_case() -> BoxedStrategy<Case> {
             }
             let ext = base.rsplit('.').next().unwrap();
             let file = f.dir.join(format!("damaged.{ext}"));
-            let mut args: Vec<String> = command.split(' ').map(String::from).collect();
-            if command.starts_with("fit") {
-                args.push("--data".into());
-            }
-            args.push(file.display().to_string());
-            let mut case = to_case("damaged", args);
-            case.files.push((file, bytes));
-            case
+            let flag = command.starts_with("fit").then_some("--data");
+            file_case("damaged", &command, flag, (file, bytes), Vec::new())
         })
         .boxed()
 }
@@ -827,6 +821,24 @@ fn to_case(kind: &'static str, args: Vec<String>) -> Case {
     }
 }
 
+/// A case that writes a file (its path and bytes) and runs `command` (words split at
+/// spaces) on it: the path after `flag` when there is one, then `extra`.
+fn file_case(
+    kind: &'static str,
+    command: &str,
+    flag: Option<&str>,
+    (file, bytes): (PathBuf, Vec<u8>),
+    extra: Vec<String>,
+) -> Case {
+    let mut args: Vec<String> = command.split(' ').map(String::from).collect();
+    args.extend(flag.map(String::from));
+    args.push(file.display().to_string());
+    args.extend(extra);
+    let mut case = to_case(kind, args);
+    case.files.push((file, bytes));
+    case
+}
+
 /// Random command lines over every command and option.
 fn cli_case() -> BoxedStrategy<Case> {
     let junk = prop_oneof![
@@ -1003,12 +1015,13 @@ fn preset_case() -> BoxedStrategy<Case> {
     (text, command)
         .prop_map(|(text, command)| {
             let file = fixtures().dir.join("fuzz-preset.toml");
-            let mut args: Vec<String> = command.split(' ').map(String::from).collect();
-            args.push("--preset".into());
-            args.push(file.display().to_string());
-            let mut case = to_case("preset", args);
-            case.files.push((file, text));
-            case
+            file_case(
+                "preset",
+                &command,
+                Some("--preset"),
+                (file, text),
+                Vec::new(),
+            )
         })
         .boxed()
 }
@@ -1128,13 +1141,8 @@ fn csv_case() -> BoxedStrategy<Case> {
         })
         .prop_map(|(text, extra, command)| {
             let file = fixtures().dir.join("fuzz-data.csv");
-            let mut args: Vec<String> = command.split(' ').map(String::from).collect();
-            args.push("--data".into());
-            args.push(file.display().to_string());
-            args.extend(extra);
-            let mut case = to_case("csv", args);
-            case.files.push((file, text.into_bytes()));
-            case
+            let written = (file, text.into_bytes());
+            file_case("csv", &command, Some("--data"), written, extra)
         })
         .boxed()
 }
