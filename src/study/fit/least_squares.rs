@@ -145,22 +145,25 @@ pub(super) fn normal_matrix(j: &[Vec<f64>]) -> Vec<Vec<f64>> {
         .collect()
 }
 
+/// Where a derivative is taken: the frames `idx`, the free values `p` and their
+/// residuals `r0` there.
+pub(super) struct At<'a> {
+    pub idx: &'a [usize],
+    pub p: &'a [f64],
+    pub r0: &'a [f64],
+}
+
 /// ∂r/∂p by forward differences (backward at the upper bound of e); one row per
 /// parameter.
-pub(super) fn jacobian(
-    pb: &Problem,
-    evals: &mut Evals,
-    idx: &[usize],
-    p: &[f64],
-    r0: &[f64],
-) -> Vec<Vec<f64>> {
+pub(super) fn jacobian(pb: &Problem, evals: &mut Evals, at: &At) -> Vec<Vec<f64>> {
+    let p = at.p;
     (0..p.len())
         .map(|j| {
             let mut h = step(p[j]);
             if pb.free[j] == Free::Restitution && p[j] + h > 1.0 {
                 h = -h;
             }
-            difference(pb, evals, idx, p, r0, (j, h))
+            difference(pb, evals, at, (j, h))
         })
         .collect()
 }
@@ -171,17 +174,11 @@ fn step(v: f64) -> f64 {
 }
 
 /// (r(p + h e_j) − r(p)) / h, for `(j, h)`.
-fn difference(
-    pb: &Problem,
-    evals: &mut Evals,
-    idx: &[usize],
-    p: &[f64],
-    r0: &[f64],
-    (j, h): (usize, f64),
-) -> Vec<f64> {
-    let mut q = p.to_vec();
+fn difference(pb: &Problem, evals: &mut Evals, at: &At, (j, h): (usize, f64)) -> Vec<f64> {
+    let r0 = at.r0;
+    let mut q = at.p.to_vec();
     q[j] += h;
-    let r = pb.residuals(&q, idx, evals);
+    let r = pb.residuals(&q, at.idx, evals);
     if r.len() != r0.len() {
         // A point dropped or gained at the step: no derivative to take.
         return vec![0.0; r0.len()];
@@ -195,23 +192,18 @@ fn difference(
 /// passes, a window that starts to hold a corner): a one-sided difference over the
 /// jump is the jump over the step, huge, and would make the ± collapse to nothing.
 /// Where the residual is smooth both differences agree to O(step).
-pub(super) fn smooth_jacobian(
-    pb: &Problem,
-    evals: &mut Evals,
-    idx: &[usize],
-    p: &[f64],
-    r0: &[f64],
-) -> Vec<Vec<f64>> {
+pub(super) fn smooth_jacobian(pb: &Problem, evals: &mut Evals, at: &At) -> Vec<Vec<f64>> {
+    let p = at.p;
     (0..p.len())
         .map(|j| {
             let h = step(p[j]);
-            let up = difference(pb, evals, idx, p, r0, (j, h));
+            let up = difference(pb, evals, at, (j, h));
             // At a bound the step back or forward leaves the allowed range.
             let (lo, hi) = super::uncertainty::bounds(pb.free[j]);
             if p[j] - h <= lo || p[j] + h >= hi {
                 return up;
             }
-            let down = difference(pb, evals, idx, p, r0, (j, -h));
+            let down = difference(pb, evals, at, (j, -h));
             up.iter()
                 .zip(&down)
                 .map(|(&a, &b)| if a.abs() <= b.abs() { a } else { b })
@@ -239,7 +231,15 @@ pub(super) fn least_squares(
     for _ in 0..100 {
         evals.next()?;
         let r0 = pb.residuals(&p, idx, evals);
-        let j = jacobian(pb, evals, idx, &p, &r0);
+        let j = jacobian(
+            pb,
+            evals,
+            &At {
+                idx,
+                p: &p,
+                r0: &r0,
+            },
+        );
         let jtj = normal_matrix(&j);
         let jtr: Vec<f64> = j
             .iter()

@@ -13,7 +13,7 @@ use crate::study::Progress;
 use crate::study::measured::series::{Measured, Stencils};
 
 use super::least_squares::{
-    Problem, coarse_mu, least_squares, normal_matrix, scan_mu, smooth_jacobian, with,
+    At, Problem, coarse_mu, least_squares, normal_matrix, scan_mu, smooth_jacobian, with,
 };
 use super::problem::{Evals, FitError, Free};
 use super::regime::{data_scatter, observed_after, rest_band, sliding_end};
@@ -437,7 +437,15 @@ pub(super) fn scored_fit_within(
     let n = p.len();
     let cost: f64 = r.iter().map(|x| x * x).sum();
     let mut s2 = cost / r.len().saturating_sub(n + nuisance(m, target)).max(1) as f64;
-    let j = smooth_jacobian(&pb, evals, &idx, &p, &r);
+    let j = smooth_jacobian(
+        &pb,
+        evals,
+        &At {
+            idx: &idx,
+            p: &p,
+            r0: &r,
+        },
+    );
     // Velocities derived from a track share frames: their errors are correlated, by
     // the stencils. Other residuals that go together from frame to frame (a tracker's
     // drift, a velocity some tool smoothed, a model that misses the data's shape) are
