@@ -24,12 +24,15 @@ pub use super::vocabulary::{
     Action, ChartBall, Export, FPS, Field, Library, Mode, Prediction, SPEEDS, Status, View,
 };
 
+use super::interact::{Input, Interactive};
 use super::jobs::{ExportRun, FitRuns, Jobs, MethodRows, Notice, OverlayRun, VideoRun};
-use super::line::History;
+use super::layer::{Compositor, Histories, Layer, LayerCx};
 use super::view::charts::state::{ChartState, Moment};
 use super::view::forces::state::ForcesState;
 use super::view::methods::state::MethodsState;
 use super::vocabulary::{DEFAULT_SPEED, Handled, WorkAxis};
+use ratatui::crossterm::event::MouseEvent;
+use ratatui::layout::Rect;
 
 /// The rows of the parameters panel, top to bottom: the table's rows that have steps.
 pub static ROWS: LazyLock<Vec<&'static Param>> =
@@ -43,7 +46,8 @@ pub struct App {
     pub playing: bool,
     pub speed: usize,
     pub selected: usize,
-    pub mode: Mode,
+    /// The popups open over the main screen, top last: they take input first.
+    layers: Compositor,
     /// The Charts view's own state: which chart, which ball, the time zoom.
     charts: ChartState,
     pub mouse: bool,
@@ -66,11 +70,6 @@ pub struct App {
     jobs: Jobs,
     /// What the Methods view puts on its work axis.
     methods_state: MethodsState,
-    /// First line shown of a scrolling popup (help, data table).
-    pub scroll: usize,
-    /// The largest useful `scroll` at the size last laid out (the screen tells it
-    /// before drawing, [`App::laid_out`], so a key never scrolls into blank lines).
-    pub scroll_max: usize,
     /// Where `w`/`W` write a bare file name.
     pub export_dir: PathBuf,
     /// The ball the Forces view's front view shows: 0 left, 1 right.
@@ -104,7 +103,7 @@ impl App {
             playing: false,
             speed: DEFAULT_SPEED,
             selected: 1,
-            mode: Mode::Normal,
+            layers: Compositor::default(),
             charts: ChartState::default(),
             mouse: true,
             status: Status::None,
@@ -118,8 +117,6 @@ impl App {
             video: VideoRun::default(),
             jobs: Jobs::new(pool),
             methods_state: MethodsState::default(),
-            scroll: 0,
-            scroll_max: usize::MAX,
             export_dir: PathBuf::from("."),
             forces: ForcesState::default(),
             hide: super::hide::Hide::default(),
@@ -132,7 +129,31 @@ impl App {
     /// What the screen laid out for the next frame that the keys need: how far the
     /// open popup scrolls at this size.
     pub fn laid_out(&mut self, scroll_max: usize) {
-        self.scroll_max = scroll_max;
+        self.layers.laid_out(scroll_max);
+    }
+
+    /// The popups open, top last (the screen draws them over the panels).
+    pub fn layers(&self) -> &Compositor {
+        &self.layers
+    }
+
+    /// What is open, as plain data: [`Mode::Normal`] if no popup is.
+    pub fn mode(&self) -> Mode {
+        self.layers.top().map_or(Mode::Normal, Layer::mode)
+    }
+
+    /// The line of the value prompt while a value is typed (on the status line and
+    /// in the selected parameter's row).
+    pub fn editing(&self) -> Option<&Field> {
+        match self.layers.top() {
+            Some(Layer::Prompt(p)) => p.editing_value(),
+            _ => None,
+        }
+    }
+
+    /// Opens `layer` over the screen.
+    fn open(&mut self, layer: Layer) {
+        self.layers.push(layer);
     }
 
     /// True in the Fit view (charts with fit lines, the Fit panel).
@@ -181,7 +202,8 @@ impl App {
             .prediction
             .as_ref()
             .filter(|p| p.scene == self.lab.scene);
-        let pending = self.mode == Mode::Predict || made.is_some_and(|p| self.t < p.reveal_at);
+        let asking = matches!(self.layers.top(), Some(Layer::Question(_)));
+        let pending = asking || made.is_some_and(|p| self.t < p.reveal_at);
         self.hide.with_pending(pending)
     }
 
@@ -300,6 +322,7 @@ impl App {
             Handled::Ignored => return false,
             Handled::Consumed => {}
             Handled::Say(message) => self.status = Status::Info(message),
+            Handled::Close(then) | Handled::Ask(then) => self.then(then),
         }
         true
     }
@@ -331,36 +354,75 @@ impl App {
     /// Offers `action` to the component of the view shown that owns it (the Forces
     /// view's ball key is its own); true if one took it.
     pub(super) fn offer(&mut self, action: Action) -> bool {
+        let key = Input::Key(action);
         let answer = match self.view {
-            View::Forces => self.forces.handle(action),
-            _ => Handled::Ignored,
+            View::Forces => self.forces.handle(&key, ()),
+            View::Charts | View::Methods | View::Map | View::Fit => Handled::Ignored,
         };
         if self.handled(answer) {
             return true;
         }
-        let answer = self.methods_state.handle(action);
+        let answer = self.methods_state.handle(&key, ());
         if self.handled(answer) {
             return true;
         }
         let moment = self.moment();
-        let answer = self.charts.handle(action, moment);
+        let answer = self.charts.handle(&key, moment);
         self.handled(answer)
     }
 
-    pub fn apply(&mut self, action: Action) {
-        if action == Action::Quit {
-            // Ctrl-C quits from anywhere; `q` only reaches here from the normal screen
-            // (in a popup the key table makes it close the popup, in a prompt it types).
-            self.quit = true;
-            return;
+    /// Offers `input` to the popups open, top first; true if one took it (what it
+    /// asks of the app done).
+    fn offer_layers(&mut self, input: &Input) -> bool {
+        let cx = LayerCx {
+            presets: self.library.presets.len(),
+            histories: &self.histories,
+        };
+        match self.layers.handle(input, &cx) {
+            Handled::Ignored => false,
+            Handled::Consumed => true,
+            Handled::Say(message) => {
+                self.status = Status::Info(message);
+                true
+            }
+            Handled::Close(then) | Handled::Ask(then) => {
+                self.then(then);
+                true
+            }
         }
+    }
+
+    /// What a key's `action` does: the popups open take it first, top first; what
+    /// none takes reaches the view shown and the main screen's keys. (Ctrl-C falls
+    /// through every popup and quits; `q` quits only from the main screen: in a
+    /// popup the key table makes it close the popup, in a prompt it types.)
+    pub fn apply(&mut self, action: Action) {
+        self.dispatch(&Input::Key(action));
+    }
+
+    /// A mouse event over the open popups, on a frame of `area` (they hold the mouse:
+    /// nothing under a popup is clicked); true if one took it.
+    pub fn mouse_on_layers(&mut self, m: MouseEvent, area: Rect) -> bool {
+        self.dispatch(&Input::Mouse(m, area))
+    }
+
+    fn dispatch(&mut self, input: &Input) -> bool {
         let t = self.t;
-        self.apply_in_mode(action);
+        let taken = self.offer_layers(input);
+        match input {
+            Input::Key(action) if !taken => self.apply_normal(*action),
+            Input::Key(_) | Input::Mouse(..) if !taken => return false,
+            _ => {}
+        }
+        if self.quit {
+            return true;
+        }
         // A cursor moved by a key (a step, a jump, the start) takes a zoomed chart along.
         if self.t != t {
             self.charts.follow(self.t, self.chart_span());
         }
         self.sync_jobs();
+        true
     }
 
     /// Requests what the views shown want of this scene (a request already made for
@@ -381,30 +443,6 @@ impl App {
     /// True while an analysis or an export is queued or runs.
     pub fn busy(&self) -> bool {
         self.jobs.busy()
-    }
-
-    fn apply_in_mode(&mut self, action: Action) {
-        match self.mode.clone() {
-            Mode::Normal => self.apply_normal(action),
-            // Scroll keys scroll the help, any other key closes it.
-            Mode::Help | Mode::Table => {
-                if !self.scroll_popup(action) {
-                    self.mode = Mode::Normal;
-                }
-            }
-            Mode::Picker(i) => self.apply_picker(i, action),
-            Mode::Predict => self.apply_predict(action),
-            Mode::Edit(field) => self.apply_text(field, action, TextTarget::Value),
-            Mode::SaveName(field) => self.apply_text(field, action, TextTarget::Name),
-            Mode::Export(kind, field) => self.apply_text(field, action, TextTarget::Export(kind)),
-            Mode::ConfirmOverwrite(name) => {
-                self.mode = Mode::Normal;
-                match action {
-                    Action::Type('y' | 'Y') => self.save(&name, true),
-                    _ => self.status = Status::Info("not saved".into()),
-                }
-            }
-        }
     }
 
     /// A job's notice: a finished export's message goes to the status line; true if
@@ -485,17 +523,6 @@ impl App {
         )
     }
 }
-
-/// Which prompt text is typed into: a value, a preset's name, an export's file name.
-#[derive(Clone, Copy)]
-enum TextTarget {
-    Value,
-    Name,
-    Export(Export),
-}
-
-/// One history per kind of prompt ([`TextTarget::index`]).
-type Histories = [History; 3];
 
 /// A time `>` and `<` stop at: an event's, with its label, and for T∞ how many impacts
 /// of the burst before it the stop stands for.

@@ -9,8 +9,10 @@ pub mod canvas;
 pub mod chart;
 pub mod component;
 pub mod hide;
+pub mod interact;
 pub mod jobs;
 pub mod keys;
+pub mod layer;
 pub mod layout;
 pub mod line;
 pub mod plot;
@@ -32,7 +34,7 @@ use ratatui::crossterm::event::{
 };
 use ratatui::crossterm::{cursor, execute};
 
-use app::{Action, App, FPS, Mode};
+use app::{Action, App, FPS};
 use jobs::Notice;
 use screen::Screen;
 use theme::{Glyphs, Theme};
@@ -152,7 +154,7 @@ pub fn run(mut app: App, ascii: bool) -> io::Result<()> {
 }
 
 /// What wakes the event loop: a terminal event, or a job that finished or moved on.
-enum Input {
+enum Wake {
     Terminal(Event),
     /// Reading the terminal failed: the app ends with this error.
     Failed(io::Error),
@@ -164,7 +166,7 @@ enum Input {
 /// Starts the thread that reads terminal events (blocked, no CPU, until one comes)
 /// into the event loop's channel, and points the lab's jobs at the same channel:
 /// keys and job results arrive in one queue, and the loop sleeps until either comes.
-fn inputs(app: &App) -> io::Result<(Sender<Input>, Receiver<Input>)> {
+fn inputs(app: &App) -> io::Result<(Sender<Wake>, Receiver<Wake>)> {
     let (tx, rx) = mpsc::channel();
     let wake = tx.clone();
     let jobs = Mutex::new(tx.clone());
@@ -172,17 +174,17 @@ fn inputs(app: &App) -> io::Result<(Sender<Input>, Receiver<Input>)> {
         let _ = jobs
             .lock()
             .unwrap_or_else(PoisonError::into_inner)
-            .send(Input::Job(notice));
+            .send(Wake::Job(notice));
     });
     std::thread::Builder::new()
         .name("groovelab-terminal".into())
         .spawn(move || {
             loop {
                 let input = match event::read() {
-                    Ok(e) => Input::Terminal(e),
-                    Err(e) => Input::Failed(e),
+                    Ok(e) => Wake::Terminal(e),
+                    Err(e) => Wake::Failed(e),
                 };
-                let failed = matches!(input, Input::Failed(_));
+                let failed = matches!(input, Wake::Failed(_));
                 if tx.send(input).is_err() || failed {
                     break;
                 }
@@ -202,7 +204,7 @@ fn event_loop(
     let mut screen = Screen::with_graphics(
         picker,
         Box::new(move || {
-            let _ = wake.send(Input::Picture);
+            let _ = wake.send(Wake::Picture);
         }),
     );
     let mut dirty = true;
@@ -241,13 +243,13 @@ fn event_loop(
         for input in first.into_iter().chain(rx.try_iter()) {
             let was_playing = app.playing;
             dirty |= match input {
-                Input::Terminal(e) if is_suspend(&e) => {
+                Wake::Terminal(e) if is_suspend(&e) => {
                     suspend(terminal, app.mouse)?;
                     // The stopped time is not played through.
                     last_tick = Instant::now();
                     true
                 }
-                Input::Terminal(e) => {
+                Wake::Terminal(e) => {
                     // A click after a key of this batch hits the frame that key made.
                     if dirty
                         && matches!(e, Event::Mouse(_))
@@ -257,9 +259,9 @@ fn event_loop(
                     }
                     on_terminal(app, &screen, e)
                 }
-                Input::Failed(e) => return Err(e),
-                Input::Job(notice) => app.on_job(notice),
-                Input::Picture => true,
+                Wake::Failed(e) => return Err(e),
+                Wake::Job(notice) => app.on_job(notice),
+                Wake::Picture => true,
             };
             if app.playing && !was_playing {
                 last_tick = Instant::now();
@@ -286,13 +288,15 @@ fn event_loop(
 /// screen needs a redraw.
 fn on_terminal(app: &mut App, screen: &Screen, event: Event) -> bool {
     match event {
-        Event::Key(key) if key.kind == KeyEventKind::Press => match keys::action(&app.mode, key) {
-            Some(action) => {
-                app.apply(action);
-                true
+        Event::Key(key) if key.kind == KeyEventKind::Press => {
+            match keys::action(&app.mode(), key) {
+                Some(action) => {
+                    app.apply(action);
+                    true
+                }
+                None => false,
             }
-            None => false,
-        },
+        }
         Event::Mouse(m) if app.mouse => on_mouse_in(app, screen, m),
         Event::Resize(..) => true,
         _ => false,
@@ -315,34 +319,10 @@ pub fn on_mouse_in(app: &mut App, screen: &Screen, m: MouseEvent) -> bool {
     let Some(frame) = screen.frame() else {
         return false;
     };
-    let area = frame.area;
-    let action = match app.mode {
-        Mode::Normal => return on_mouse_main(app, screen, m),
-        _ => on_mouse_popup(app, area, m),
-    };
-    match action {
-        Some(action) => {
-            app.apply(action);
-            true
-        }
-        None => false,
-    }
-}
-
-/// The action of a mouse event over an open popup; prompts take none (a click must
-/// not end the typing).
-fn on_mouse_popup(app: &App, area: ratatui::layout::Rect, m: MouseEvent) -> Option<Action> {
-    let click = m.kind == MouseEventKind::Down(MouseButton::Left);
-    match (&app.mode, m.kind) {
-        (Mode::Picker(_), _) if click => {
-            view::picker_row_at(app, area, m.column, m.row).map(Action::Select)
-        }
-        (Mode::Predict, _) if click => view::answer_at(area, m.column, m.row).map(Action::Type),
-        (Mode::Picker(_) | Mode::Help | Mode::Table, MouseEventKind::ScrollUp) => Some(Action::Up),
-        (Mode::Picker(_) | Mode::Help | Mode::Table, MouseEventKind::ScrollDown) => {
-            Some(Action::Down)
-        }
-        _ => None,
+    if app.layers().is_empty() {
+        on_mouse_main(app, screen, m)
+    } else {
+        app.mouse_on_layers(m, frame.area)
     }
 }
 
@@ -389,7 +369,7 @@ pub fn replay(app: &mut App, keys: &[KeyEvent]) {
         if app.quit {
             break;
         }
-        if let Some(action) = keys::action(&app.mode, key) {
+        if let Some(action) = keys::action(&app.mode(), key) {
             app.apply(action);
         }
     }

@@ -25,7 +25,7 @@ fn app_in(dir: &std::path::Path, preset: &str) -> App {
 /// Presses `W` and Enter; the file written and its text.
 fn export_figure(a: &mut App) -> (String, String) {
     press(a, "W");
-    let name = match &a.mode {
+    let name = match &a.mode() {
         Mode::Export(_, field) => field.value().to_string(),
         _ => panic!("no export prompt: {:?}", a.status),
     };
@@ -74,7 +74,7 @@ fn shift_w_writes_the_figure_of_the_view_on_screen() {
     assert!(svg.contains("steps per run"), "{}", &svg[..400]);
     // The energy chart has none yet: said at once, no prompt.
     press(&mut a, "c e W");
-    assert_eq!(a.mode, Mode::Normal);
+    assert_eq!(a.mode(), Mode::Normal);
     assert!(matches!(&a.status, Status::Error(e) if e.contains("energy chart has no SVG")));
     let written = std::fs::read_dir(&dir).unwrap().count();
     assert_eq!(written, 5);
@@ -315,7 +315,7 @@ fn shift_w_in_predict_mode_writes_no_outcome() {
         "{:?}",
         a.status
     );
-    assert_eq!(a.mode, Mode::Normal);
+    assert_eq!(a.mode(), Mode::Normal);
     let _ = std::fs::remove_dir_all(&dir);
 }
 

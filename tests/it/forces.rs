@@ -128,7 +128,7 @@ fn a_pinned_run_gives_arrows_in_the_chain() {
 fn predict_asks_plays_and_explains() {
     let mut a = app("paper-b4.9");
     press(&mut a, "y");
-    assert_eq!(a.mode, Mode::Predict);
+    assert_eq!(a.mode(), Mode::Predict);
     assert_eq!(a.view, View::Forces);
     let q = text(&a, (80, 24), false);
     assert!(
@@ -143,7 +143,7 @@ fn predict_asks_plays_and_explains() {
     press(&mut a, "1");
     let p = a.prediction.clone().unwrap();
     assert_eq!(p.guess, Regime::Depart);
-    assert!(a.playing && a.t == a.lab.solution.t_start && a.mode == Mode::Normal);
+    assert!(a.playing && a.t == a.lab.solution.t_start && a.mode() == Mode::Normal);
     // Before the outcome shows, nothing gives it away.
     a.t = 0.5 * p.reveal_at;
     let s = text(&a, (120, 40), false);
@@ -178,12 +178,12 @@ fn predict_asks_plays_and_explains() {
     a.t = a.lab.solution.t_end;
     assert!(text(&a, (120, 40), true).contains("right"), "ascii verdict");
     press(&mut a, "y esc");
-    assert_eq!(a.mode, Mode::Normal);
+    assert_eq!(a.mode(), Mode::Normal);
     assert!(!a.quit, "esc in the question does not quit");
     // Asked after the impact, the question rewinds first: the outcome on screen
     // behind it would give the answer away.
     press(&mut a, "end y");
-    assert_eq!(a.mode, Mode::Predict);
+    assert_eq!(a.mode(), Mode::Predict);
     assert_eq!(a.t, a.lab.solution.t_start);
     let s = text(&a, (120, 40), false);
     assert!(!s.contains("RECOLLIDE"), "{s}");

@@ -162,7 +162,7 @@ fn typed_values_take_units_and_escape_cancels() {
     assert_eq!(a.lab.scene.width, 0.044);
     press(&mut a, "enter 3 c m esc");
     assert_eq!(a.lab.scene.width, 0.044, "Esc cancels typing");
-    assert_eq!(a.mode, Mode::Normal);
+    assert_eq!(a.mode(), Mode::Normal);
     assert!(!a.quit);
     press(&mut a, "enter 3 k g enter");
     assert_eq!(a.lab.scene.width, 0.044);
@@ -193,22 +193,22 @@ fn prompts_edit_like_a_terminal_line() {
     // Ctrl-U clears the line, Ctrl-W the word before the cursor, Ctrl-A/E go to the
     // start and end, Ctrl-K deletes to the end: none of them is typed as a letter.
     press(&mut a, "enter 9 9 C-u 4 . 1");
-    assert_eq!(a.mode, Mode::Edit("4.1".into()));
+    assert_eq!(a.mode(), Mode::Edit("4.1".into()));
     press(&mut a, "enter");
     assert_eq!(b(&a), 0.041);
     press(&mut a, "enter 4 . 4 space x y z C-w");
     assert!(
-        matches!(&a.mode, Mode::Edit(f) if f.value() == "4.4 "),
+        matches!(&a.mode(), Mode::Edit(f) if f.value() == "4.4 "),
         "{:?}",
-        a.mode
+        a.mode()
     );
     press(&mut a, "enter");
     assert_eq!(b(&a), 0.044);
     press(&mut a, "enter 7 c m C-a 4 . C-e C-a right right right C-k");
     assert!(
-        matches!(&a.mode, Mode::Edit(f) if f.value() == "4.7"),
+        matches!(&a.mode(), Mode::Edit(f) if f.value() == "4.7"),
         "{:?}",
-        a.mode
+        a.mode()
     );
     press(&mut a, "enter");
     assert_eq!(b(&a), 0.047);
@@ -219,24 +219,24 @@ fn prompts_edit_like_a_terminal_line() {
     press(&mut a, "enter up up up enter");
     assert_eq!(b(&a), 0.041);
     press(&mut a, "enter 3 up up down down");
-    assert_eq!(a.mode, Mode::Edit("3".into()));
+    assert_eq!(a.mode(), Mode::Edit("3".into()));
     press(&mut a, "esc");
     // The save and export prompts are the same line editor, with their own history.
     press(&mut a, "s C-u n e w left left C-k");
-    assert_eq!(a.mode, Mode::SaveName("n".into()));
+    assert_eq!(a.mode(), Mode::SaveName("n".into()));
     press(&mut a, "esc w C-a delete delete delete delete delete");
     assert!(
         // Suggested "b4.1cm-run.csv" (named for the b it holds), five characters gone.
-        matches!(&a.mode, Mode::Export(_, f) if f.value() == "m-run.csv"),
+        matches!(&a.mode(), Mode::Export(_, f) if f.value() == "m-run.csv"),
         "{:?}",
-        a.mode
+        a.mode()
     );
     press(&mut a, "up");
     assert!(
         // Suggested "b4.1cm-run.csv" (named for the b it holds), five characters gone.
-        matches!(&a.mode, Mode::Export(_, f) if f.value() == "m-run.csv"),
+        matches!(&a.mode(), Mode::Export(_, f) if f.value() == "m-run.csv"),
         "no file name was confirmed yet, so ↑ has nothing to bring: {:?}",
-        a.mode
+        a.mode()
     );
     press(&mut a, "esc");
     assert!(!a.quit);
@@ -346,12 +346,12 @@ fn picker_loads_presets_and_quit_keys_quit() {
     press(&mut a, "p down enter");
     assert_eq!(a.lab.preset().name, a.library.presets[3].name);
     press(&mut a, "p up up esc");
-    assert_eq!(a.mode, Mode::Normal);
+    assert_eq!(a.mode(), Mode::Normal);
     assert_eq!(a.lab.preset().name, a.library.presets[3].name);
     press(&mut a, "?");
-    assert_eq!(a.mode, Mode::Help);
+    assert_eq!(a.mode(), Mode::Help);
     press(&mut a, "esc");
-    assert_eq!(a.mode, Mode::Normal);
+    assert_eq!(a.mode(), Mode::Normal);
     assert!(!a.quit);
     press(&mut a, "q");
     assert!(a.quit);
@@ -391,7 +391,7 @@ fn saving_writes_a_loadable_preset_and_never_overwrites_silently() {
     // Saving again asks first; anything but y keeps the file.
     std::fs::write(&path, "sentinel").unwrap();
     press(&mut a, "s enter");
-    assert!(matches!(a.mode, Mode::ConfirmOverwrite(_)));
+    assert!(matches!(a.mode(), Mode::ConfirmOverwrite(_)));
     press(&mut a, "n");
     assert_eq!(std::fs::read_to_string(&path).unwrap(), "sentinel");
     press(&mut a, "s enter y");
@@ -406,9 +406,9 @@ fn saving_writes_a_loadable_preset_and_never_overwrites_silently() {
         "{:?}",
         a.status
     );
-    assert_eq!(a.mode, Mode::SaveName("/".into()));
+    assert_eq!(a.mode(), Mode::SaveName("/".into()));
     press(&mut a, "esc");
-    assert_eq!(a.mode, Mode::Normal);
+    assert_eq!(a.mode(), Mode::Normal);
     assert!(
         !dir.join(".my-inelastic.toml.tmp").exists(),
         "no temporary file left"
@@ -888,7 +888,7 @@ fn help_is_complete_at_every_size_scrolling_where_needed() {
                     break;
                 }
             }
-            assert_eq!(a.mode, Mode::Help, "scrolling keeps the help open");
+            assert_eq!(a.mode(), Mode::Help, "scrolling keeps the help open");
             let flat = seen.split_whitespace().collect::<Vec<_>>().join(" ");
             for b in keys::TABLE {
                 let first: String = b
@@ -915,7 +915,7 @@ fn help_is_complete_at_every_size_scrolling_where_needed() {
                 assert!(!seen.contains("more "), "{w}x{h}: {seen}");
             }
             press(&mut a, "q");
-            assert_eq!(a.mode, Mode::Normal);
+            assert_eq!(a.mode(), Mode::Normal);
             assert!(!a.quit, "q in the help closes the help, not the app");
         }
     }
@@ -939,20 +939,20 @@ fn q_closes_every_popup_and_quits_only_the_main_screen() {
     let mut a = app("paper-b4.9");
     for open in ["?", "p", "d"] {
         press(&mut a, open);
-        assert_ne!(a.mode, Mode::Normal, "{open}");
+        assert_ne!(a.mode(), Mode::Normal, "{open}");
         press(&mut a, "q");
-        assert_eq!(a.mode, Mode::Normal, "{open}");
+        assert_eq!(a.mode(), Mode::Normal, "{open}");
         assert!(!a.quit, "{open} q");
         press(&mut a, open);
         press(&mut a, "esc");
-        assert_eq!(a.mode, Mode::Normal, "{open} esc");
+        assert_eq!(a.mode(), Mode::Normal, "{open} esc");
         assert!(!a.quit);
     }
     // In text fields q is a letter.
     press(&mut a, "s q");
-    assert!(matches!(&a.mode, Mode::SaveName(t) if t.value().ends_with('q')));
+    assert!(matches!(&a.mode(), Mode::SaveName(t) if t.value().ends_with('q')));
     press(&mut a, "esc w q");
-    assert!(matches!(&a.mode, Mode::Export(_, t) if t.value().ends_with('q')));
+    assert!(matches!(&a.mode(), Mode::Export(_, t) if t.value().ends_with('q')));
     press(&mut a, "esc");
     assert!(!a.quit);
     press(&mut a, "? C-c");
@@ -1124,22 +1124,22 @@ fn typing_replaces_a_suggested_name_and_enter_on_nothing_cancels() {
     // my-paper-b4.9x), and a name typed as its file's is not doubled.
     press(&mut a, "s x . t o m l");
     assert!(
-        matches!(&a.mode, Mode::SaveName(n) if n.value() == "x.toml"),
+        matches!(&a.mode(), Mode::SaveName(n) if n.value() == "x.toml"),
         "{:?}",
-        a.mode
+        a.mode()
     );
     press(&mut a, "enter");
     assert!(dir.join("x.toml").is_file() && !dir.join("x.toml.toml").exists());
     // The export prompt likewise.
     press(&mut a, "w r . c s v");
     assert!(
-        matches!(&a.mode, Mode::Export(_, f) if f.value() == "r.csv"),
+        matches!(&a.mode(), Mode::Export(_, f) if f.value() == "r.csv"),
         "{:?}",
-        a.mode
+        a.mode()
     );
     // Enter on an empty line closes a prompt as Esc does, with no error.
     press(&mut a, "C-u enter");
-    assert_eq!(a.mode, Mode::Normal);
+    assert_eq!(a.mode(), Mode::Normal);
     assert!(
         matches!(&a.status, Status::Info(i) if i.starts_with("cancelled")),
         "{:?}",
@@ -1148,7 +1148,7 @@ fn typing_replaces_a_suggested_name_and_enter_on_nothing_cancels() {
     select(&mut a, Key::Width);
     let b = a.lab.scene.width;
     press(&mut a, "enter C-u enter");
-    assert_eq!((a.mode.clone(), a.lab.scene.width), (Mode::Normal, b));
+    assert_eq!((a.mode(), a.lab.scene.width), (Mode::Normal, b));
     assert!(
         matches!(&a.status, Status::Info(i) if i.starts_with("cancelled")),
         "{:?}",
@@ -1180,11 +1180,11 @@ fn save_keeps_the_data_and_the_description_and_explains_bad_names() {
     a.library = Library::at(Some(dir.clone()));
     // A name with a space: refused, the dialog stays open and says why.
     press(&mut a, "s end space x enter");
-    assert!(matches!(&a.mode, Mode::SaveName(n) if n.value() == "my-paper-b4.4 x"));
+    assert!(matches!(&a.mode(), Mode::SaveName(n) if n.value() == "my-paper-b4.4 x"));
     let s = screen_of(&a);
     assert!(s.contains("allowed letters, digits"), "{s}");
     press(&mut a, "backspace backspace enter");
-    assert_eq!(a.mode, Mode::Normal);
+    assert_eq!(a.mode(), Mode::Normal);
     let path = dir.join("my-paper-b4.4.toml");
     let saved = groovelab::input::preset::load(path.to_str().unwrap()).unwrap();
     assert_eq!(
@@ -1339,7 +1339,7 @@ fn export_writes_the_run_as_csv_and_the_chart_as_svg() {
     let mut a = app("paper-b4.9");
     a.export_dir = dir.clone();
     press(&mut a, "w");
-    assert!(matches!(&a.mode, Mode::Export(_, n) if n.value() == "paper-b4.9-run.csv"));
+    assert!(matches!(&a.mode(), Mode::Export(_, n) if n.value() == "paper-b4.9-run.csv"));
     press(&mut a, "enter");
     // The file is written off the key press; the status line says so, then where.
     assert!(matches!(&a.status, Status::Info(i) if i.starts_with("writing")));
@@ -1378,9 +1378,10 @@ fn export_writes_the_run_as_csv_and_the_chart_as_svg() {
     );
     // A file that cannot be written: the prompt stays open and says why; no temp file.
     press(&mut a, "w");
-    a.mode = Mode::Export(groovelab::tui::app::Export::Csv, "no/such/dir/x.csv".into());
+    let typed: Vec<String> = "no/such/dir/x.csv".chars().map(String::from).collect();
+    press(&mut a, &format!("C-u {}", typed.join(" ")));
     press(&mut a, "enter");
-    assert!(matches!(a.mode, Mode::Export(..)));
+    assert!(matches!(a.mode(), Mode::Export(..)));
     assert!(matches!(&a.status, Status::Error(e) if e.contains("cannot write")));
     press(&mut a, "esc");
     let left: Vec<_> = std::fs::read_dir(&dir)
@@ -1445,7 +1446,7 @@ fn the_data_table_of_a_position_track_shows_x_in_cm() {
 fn the_data_table_shows_the_model_beside_every_measured_point() {
     let mut a = app("paper-b4.9");
     press(&mut a, "d");
-    assert_eq!(a.mode, Mode::Table);
+    assert_eq!(a.mode(), Mode::Table);
     let rows = groovelab::tui::view::data_rows(&a);
     let m = a.lab.measured().unwrap().clone();
     assert_eq!(rows.len(), m.t.len());
@@ -1469,10 +1470,10 @@ fn the_data_table_shows_the_model_beside_every_measured_point() {
         "{s}"
     );
     press(&mut a, "q");
-    assert_eq!(a.mode, Mode::Normal);
+    assert_eq!(a.mode(), Mode::Normal);
     let mut b = app("flat-table");
     press(&mut b, "d");
-    assert_eq!(b.mode, Mode::Normal);
+    assert_eq!(b.mode(), Mode::Normal);
     assert!(matches!(&b.status, Status::Error(e) if e.contains("no measured data")));
 }
 
@@ -1638,26 +1639,26 @@ fn a_click_selects_a_preset_and_a_click_on_the_selected_one_loads_it() {
         .unwrap();
     let (x, y) = cell_of(&text(&a, (120, 40), false), " flat-table ");
     assert!(on_mouse(&mut a, area, &theme, mouse(click, x + 5, y)));
-    assert_eq!(a.mode, Mode::Picker(flat), "a first click selects");
+    assert_eq!(a.mode(), Mode::Picker(flat), "a first click selects");
     assert_eq!(a.lab.preset().name, "paper-b4.9", "and loads nothing");
     assert!(text(&a, (120, 40), false).contains("▸flat-table"));
     on_mouse(&mut a, area, &theme, mouse(click, x + 5, y));
     assert_eq!(
-        (a.mode.clone(), a.lab.preset().name.as_str()),
+        (a.mode(), a.lab.preset().name.as_str()),
         (Mode::Normal, "flat-table")
     );
     // The wheel moves through the list; a click beside the popup does nothing.
     press(&mut a, "p");
-    let Mode::Picker(at) = a.mode else { panic!() };
+    let Mode::Picker(at) = a.mode() else { panic!() };
     on_mouse(
         &mut a,
         area,
         &theme,
         mouse(MouseEventKind::ScrollDown, 60, 20),
     );
-    assert_eq!(a.mode, Mode::Picker(at + 1));
+    assert_eq!(a.mode(), Mode::Picker(at + 1));
     assert!(!on_mouse(&mut a, area, &theme, mouse(click, 0, 0)));
-    assert_eq!(a.mode, Mode::Picker(at + 1));
+    assert_eq!(a.mode(), Mode::Picker(at + 1));
 }
 
 #[test]
@@ -1672,29 +1673,33 @@ fn over_a_popup_the_mouse_acts_on_the_popup_alone() {
     press(&mut a, "?");
     let _ = text(&a, (120, 40), false);
     assert!(!on_mouse(&mut a, area, &theme, mouse(click, x + 1, y)));
-    assert_eq!((a.mode.clone(), a.selected), (Mode::Help, 1));
+    assert_eq!((a.mode(), a.selected), (Mode::Help, 1));
     on_mouse(
         &mut a,
         area,
         &theme,
         mouse(MouseEventKind::ScrollDown, 60, 20),
     );
-    assert_eq!(a.scroll, 1);
+    let scrolled = a.layers().top().map(|l| match l {
+        groovelab::tui::layer::Layer::Help(h) => h.scroll().first(),
+        _ => 0,
+    });
+    assert_eq!(scrolled, Some(1));
     // The data table: a click on the chart behind it does not seek.
     press(&mut a, "esc d");
     let t = a.t;
     assert!(!on_mouse(&mut a, area, &theme, mouse(click, 30, 25)));
-    assert_eq!((a.mode.clone(), a.t), (Mode::Table, t));
+    assert_eq!((a.mode(), a.t), (Mode::Table, t));
     // The prediction: a click on an answer answers.
     press(&mut a, "esc y");
     let (x, y) = cell_of(&text(&a, (120, 40), false), " 2 they come to rest");
     on_mouse(&mut a, area, &theme, mouse(click, x + 4, y));
-    assert_eq!(a.mode, Mode::Normal);
+    assert_eq!(a.mode(), Mode::Normal);
     assert_eq!(a.prediction.as_ref().map(|p| p.guess), Some(Regime::Rest));
     // A prompt takes no click: the typing goes on.
     press(&mut a, "enter");
     assert!(!on_mouse(&mut a, area, &theme, mouse(click, x, y)));
-    assert!(matches!(a.mode, Mode::Edit(_)));
+    assert!(matches!(a.mode(), Mode::Edit(_)));
 }
 
 /// A step from the limit says the row is at its limit (issue 19: "a coarse step past

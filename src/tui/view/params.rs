@@ -12,7 +12,7 @@ use super::panel::block;
 use crate::lab::Origin;
 use crate::settings::params::Key;
 use crate::settings::units::{Dimension, fit_number};
-use crate::tui::app::{App, Mode, ROWS};
+use crate::tui::app::{App, ROWS};
 use crate::tui::component::{Component, Ctx};
 use crate::tui::line::caret as caret_style;
 use crate::tui::theme::Theme;
@@ -136,8 +136,8 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         let selected = i == app.selected;
         let label = p.label.replace("mu", g.mu);
         // The typing field: the part of the line around its cursor, in brackets.
-        let (value, caret) = match (&app.mode, selected) {
-            (Mode::Edit(field), true) => {
+        let (value, caret) = match (app.editing(), selected) {
+            (Some(field), true) => {
                 let (shown, at) = field.shown(VALUE_W - 2);
                 let x = 1 + LABEL_W + VALUE_W - shown.chars().count() - 1 + at;
                 (format!("[{shown}]"), Some(x))

@@ -10,7 +10,7 @@ use ratatui::widgets::{Paragraph, Widget};
 
 use crate::settings::params::Param;
 use crate::settings::units::Dimension;
-use crate::tui::app::{App, Mode, ROWS, Status};
+use crate::tui::app::{App, ROWS, Status};
 use crate::tui::component::{Component, Ctx};
 use crate::tui::keys;
 use crate::tui::theme::{Glyphs, Theme};
@@ -29,8 +29,8 @@ pub fn render(app: &App, status: Rect, hints: Rect, buf: &mut Buffer, theme: &Th
         &right,
         theme.dim,
     );
-    let (message, style) = match (&app.mode, &app.status) {
-        (Mode::Edit(_), _) => {
+    let (message, style) = match (app.editing(), &app.status) {
+        (Some(_), _) => {
             let prompt = typing_prompt(ROWS[app.selected]);
             buf.set_stringn(
                 status.x,

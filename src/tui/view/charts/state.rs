@@ -4,6 +4,7 @@
 //! ([`Handled`]); the chart is built from this state and the snapshot.
 
 use super::zoom::{self, TimeZoom};
+use crate::tui::interact::{Input, Interactive};
 use crate::tui::vocabulary::{Action, ChartBall, Handled};
 
 /// Where the charts' keys act: the cursor's time, the time span the x axis covers
@@ -47,7 +48,7 @@ impl ChartState {
 
     /// What `action` does to the charts: handled (and what the status line says), or
     /// not theirs.
-    pub fn handle(&mut self, action: Action, at: Moment) -> Handled {
+    fn key(&mut self, action: Action, at: Moment) -> Handled {
         match action {
             Action::SwitchBall => {
                 self.ball = match self.ball {
@@ -104,5 +105,16 @@ impl ChartState {
     /// Keeps the cursor at `t` inside a zoomed window (playback, a key that moved it).
     pub fn follow(&mut self, t: f64, span: (f64, f64)) {
         self.zoom.follow(t, span);
+    }
+}
+
+impl Interactive<Moment> for ChartState {
+    /// The charts' keys (the wheel over a chart zooms through [`ChartState::zoom_around`]:
+    /// the pointer's time is the frame's to tell).
+    fn handle(&mut self, input: &Input, at: Moment) -> Handled {
+        match input {
+            Input::Key(action) => self.key(*action, at),
+            Input::Mouse(..) => Handled::Ignored,
+        }
     }
 }

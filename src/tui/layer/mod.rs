@@ -1,0 +1,148 @@
+//! The compositor (issue 26, as helix has it): the popups open over the main screen,
+//! a stack of layers. Each layer is a component that owns its state (a scroll, a
+//! typed line, a highlighted row) and handles its own keys and mouse; an input goes
+//! to the top layer first and falls through the stack when a layer ignores it (the
+//! app's view and main keys lie below). A layer that is done closes itself
+//! ([`Handled::Close`]) and says what the app should do then.
+//!
+//! The layers render in `view/` (they read the whole app there); this file and its
+//! children know nothing of the app, which holds the stack.
+
+mod picker;
+mod place;
+mod prompt;
+mod question;
+mod scroll;
+
+pub use picker::Picker;
+pub use place::centered;
+pub use prompt::{Confirm, Histories, Prompt};
+pub use question::{Question, answer_at, question_rect};
+pub use scroll::{DataTable, Help, Scroll};
+
+use super::interact::{Input, Interactive};
+use super::vocabulary::{Handled, Mode};
+
+/// One popup over the main screen.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Layer {
+    /// The keys, scrolling.
+    Help(Help),
+    /// The measured data beside the model's values at those times, scrolling.
+    Table(DataTable),
+    /// The preset picker.
+    Picker(Picker),
+    /// Typing a value (on the status line), a save name or an export's file name.
+    Prompt(Prompt),
+    /// The preset file exists: overwrite it?
+    Confirm(Confirm),
+    /// Predict, observe, explain: the question before the impact.
+    Question(Question),
+}
+
+/// What the layers need to know of the app to handle an input.
+#[derive(Clone, Copy, Debug)]
+pub struct LayerCx<'a> {
+    /// How many presets the picker offers.
+    pub presets: usize,
+    /// The prompts' earlier entries (↑/↓ bring them back).
+    pub histories: &'a Histories,
+}
+
+impl Layer {
+    /// What is open, as plain data (the key table's modes, the tests' view of it).
+    pub fn mode(&self) -> Mode {
+        match self {
+            Layer::Help(_) => Mode::Help,
+            Layer::Table(_) => Mode::Table,
+            Layer::Picker(p) => Mode::Picker(p.selected()),
+            Layer::Prompt(p) => p.mode(),
+            Layer::Confirm(c) => Mode::ConfirmOverwrite(c.name().to_string()),
+            Layer::Question(_) => Mode::Predict,
+        }
+    }
+
+    /// True if the layer is drawn over the panels (the value prompt is typed on the
+    /// status line: the screen under it stays whole).
+    pub fn covers(&self) -> bool {
+        !matches!(self, Layer::Prompt(p) if p.editing_value().is_some())
+    }
+
+    /// The scroll of a scrolling layer.
+    fn scroll_mut(&mut self) -> Option<&mut Scroll> {
+        match self {
+            Layer::Help(h) => Some(h.scroll_mut()),
+            Layer::Table(t) => Some(t.scroll_mut()),
+            Layer::Picker(_) | Layer::Prompt(_) | Layer::Confirm(_) | Layer::Question(_) => None,
+        }
+    }
+}
+
+impl Interactive<&LayerCx<'_>> for Layer {
+    fn handle(&mut self, input: &Input, cx: &LayerCx<'_>) -> Handled {
+        match self {
+            Layer::Help(h) => h.handle(input, ()),
+            Layer::Table(t) => t.handle(input, ()),
+            Layer::Picker(p) => p.handle(input, cx.presets),
+            Layer::Prompt(p) => p.handle(input, cx.histories),
+            Layer::Confirm(c) => c.handle(input, ()),
+            Layer::Question(q) => q.handle(input, ()),
+        }
+    }
+}
+
+/// The stack of layers, bottom first.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Compositor {
+    layers: Vec<Layer>,
+}
+
+impl Compositor {
+    /// Opens `layer` on top.
+    pub fn push(&mut self, layer: Layer) {
+        self.layers.push(layer);
+    }
+
+    /// The top layer, if any is open.
+    pub fn top(&self) -> Option<&Layer> {
+        self.layers.last()
+    }
+
+    /// The layers, bottom first (the order they are drawn in).
+    pub fn iter(&self) -> impl Iterator<Item = &Layer> {
+        self.layers.iter()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.layers.is_empty()
+    }
+
+    /// True if a layer is drawn over the panels.
+    pub fn covers(&self) -> bool {
+        self.layers.iter().any(Layer::covers)
+    }
+
+    /// What the screen laid out for the next frame: how far the top layer scrolls at
+    /// this size (a key never scrolls into blank lines).
+    pub fn laid_out(&mut self, scroll_max: usize) {
+        if let Some(scroll) = self.layers.last_mut().and_then(Layer::scroll_mut) {
+            scroll.laid_out(scroll_max);
+        }
+    }
+
+    /// Offers `input` to the layers, top first, until one takes it; a layer that
+    /// closes is taken off the stack. [`Handled::Ignored`]: no layer took it.
+    pub fn handle(&mut self, input: &Input, cx: &LayerCx<'_>) -> Handled {
+        for i in (0..self.layers.len()).rev() {
+            match self.layers[i].handle(input, cx) {
+                Handled::Ignored => {}
+                closed @ Handled::Close(_) => {
+                    self.layers.remove(i);
+                    return closed;
+                }
+                answer => return answer,
+            }
+        }
+        Handled::Ignored
+    }
+}
