@@ -341,6 +341,26 @@ fn playback_runs_on_the_clock_at_the_chosen_speed() {
 }
 
 #[test]
+fn the_picker_takes_home_end_and_the_page_keys() {
+    let mut a = app("paper-b4.9");
+    let n = a.library.presets.len();
+    assert!(n > 3, "presets to move through: {n}");
+    press(&mut a, "p home");
+    assert_eq!(a.mode(), Mode::Picker(0));
+    press(&mut a, "end");
+    assert_eq!(a.mode(), Mode::Picker(n - 1));
+    // A page is ten rows, and stops at either end (no wrap, unlike the arrows).
+    press(&mut a, "pgup");
+    assert_eq!(a.mode(), Mode::Picker((n - 1).saturating_sub(10)));
+    press(&mut a, "home down pgdn");
+    assert_eq!(a.mode(), Mode::Picker(11.min(n - 1)));
+    press(&mut a, "pgdn");
+    assert_eq!(a.mode(), Mode::Picker(n - 1));
+    press(&mut a, "home enter");
+    assert_eq!(a.lab.preset().name, a.library.presets[0].name);
+}
+
+#[test]
 fn picker_loads_presets_and_quit_keys_quit() {
     let mut a = app("paper-b4.9");
     press(&mut a, "p down enter");
