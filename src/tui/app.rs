@@ -38,52 +38,56 @@ use ratatui::layout::Rect;
 pub static ROWS: LazyLock<Vec<&'static Param>> =
     LazyLock::new(|| PARAMS.iter().filter(|p| p.steps.is_some()).collect());
 
+/// The app: playback, the view shown and its components' state, the popups open
+/// (a stack of layers), and the lab. The lab, the time, playing and the status line
+/// are open to the edges (the runner, `render` and the tests set scenes, times and
+/// read messages); everything else is read through accessors and changed by actions.
 #[derive(Clone, Debug)]
 pub struct App {
     pub lab: Lab,
     /// Simulated time shown, s.
     pub t: f64,
     pub playing: bool,
-    pub speed: usize,
-    pub selected: usize,
+    speed: usize,
+    selected: usize,
     /// The popups open over the main screen, top last: they take input first.
     layers: Compositor,
     /// The Charts view's own state: which chart, which ball, the time zoom.
     charts: ChartState,
-    pub mouse: bool,
+    mouse: bool,
     pub status: Status,
-    pub quit: bool,
-    pub library: Library,
-    pub view: View,
+    quit: bool,
+    library: Library,
+    view: View,
     /// The charts' time-stepping overlay: which run, and its job.
-    pub overlay: OverlayRun,
+    overlay: OverlayRun,
     /// The Methods view's rows (its job).
-    pub methods: MethodRows,
+    methods: MethodRows,
     /// The Fit view's fits and window (their jobs).
-    pub fit: FitRuns,
+    fit: FitRuns,
     /// The file being written (its job).
     export: ExportRun,
     /// The `--data` video: its tracking (a job), its pictures, and whether the Scene
     /// panel shows it.
-    pub video: VideoRun,
+    video: VideoRun,
     /// The app's jobs on its worker pool.
     jobs: Jobs,
     /// What the Methods view puts on its work axis.
     methods_state: MethodsState,
     /// Where `w`/`W` write a bare file name.
-    pub export_dir: PathBuf,
+    export_dir: PathBuf,
     /// The ball the Forces view's front view shows: 0 left, 1 right.
     forces: ForcesState,
     /// What the screen hides while b is hidden (a class predicts from the picture
     /// alone): the one rule.
-    pub hide: super::hide::Hide,
+    hide: super::hide::Hide,
     /// The last prediction (predict, observe, explain).
-    pub prediction: Option<Prediction>,
+    prediction: Option<Prediction>,
     /// What was typed into each kind of prompt this session (↑/↓ bring it back).
     histories: Histories,
     /// False in `render`, the headless twin: a screen dump writes no files, so the
     /// export and save keys say what they would write and write nothing.
-    pub writes_files: bool,
+    writes_files: bool,
 }
 
 /// What the export and save keys say where files are not written.
@@ -154,6 +158,98 @@ impl App {
     /// Opens `layer` over the screen.
     fn open(&mut self, layer: Layer) {
         self.layers.push(layer);
+    }
+
+    /// The playback speed's index in [`SPEEDS`].
+    pub fn speed(&self) -> usize {
+        self.speed
+    }
+
+    /// The parameter row selected (an index in [`ROWS`]).
+    pub fn selected(&self) -> usize {
+        self.selected
+    }
+
+    /// True while the app takes the mouse.
+    pub fn mouse(&self) -> bool {
+        self.mouse
+    }
+
+    /// True once the user quit.
+    pub fn quitting(&self) -> bool {
+        self.quit
+    }
+
+    /// The presets the picker offers and the folder the app saves to.
+    pub fn library(&self) -> &Library {
+        &self.library
+    }
+
+    /// Offers the presets of `library` and saves into its folder.
+    pub fn set_library(&mut self, library: Library) {
+        self.library = library;
+    }
+
+    /// The view shown.
+    pub fn view(&self) -> View {
+        self.view
+    }
+
+    /// The charts' time-stepping overlay and its job.
+    pub fn overlay(&self) -> &OverlayRun {
+        &self.overlay
+    }
+
+    /// Overlays `choice` (a method and its step level) on the charts, or none.
+    pub fn set_overlay(&mut self, choice: Option<(crate::methods::Method, u8)>) {
+        self.overlay.choice = choice;
+        self.sync_jobs();
+    }
+
+    /// The Methods view's rows and their job.
+    pub fn methods(&self) -> &MethodRows {
+        &self.methods
+    }
+
+    /// The Fit view's fits, their window and their jobs.
+    pub fn fit(&self) -> &FitRuns {
+        &self.fit
+    }
+
+    /// The `--data` video: its tracking, its pictures, whether the Scene panel shows it.
+    pub fn video(&self) -> &VideoRun {
+        &self.video
+    }
+
+    /// Where `w`/`W` write a bare file name.
+    pub fn export_dir(&self) -> &std::path::Path {
+        &self.export_dir
+    }
+
+    /// Makes `w`/`W` write a bare file name into `dir`.
+    pub fn set_export_dir(&mut self, dir: PathBuf) {
+        self.export_dir = dir;
+    }
+
+    /// What b hidden hides (the rule; [`App::hidden`] adds a pending prediction).
+    pub fn hide(&self) -> super::hide::Hide {
+        self.hide
+    }
+
+    /// The last prediction made.
+    pub fn prediction(&self) -> Option<&Prediction> {
+        self.prediction.as_ref()
+    }
+
+    /// True unless the app is `render`'s headless twin.
+    pub fn writes_files(&self) -> bool {
+        self.writes_files
+    }
+
+    /// Makes the app `render`'s headless twin: the export and save keys say what they
+    /// would write and write nothing.
+    pub fn write_no_files(&mut self) {
+        self.writes_files = false;
     }
 
     /// True in the Fit view (charts with fit lines, the Fit panel).

@@ -147,7 +147,7 @@ pub fn run(mut app: App, ascii: bool) -> io::Result<()> {
     }
     // Once, on the real terminal, before its events are read (bounded by a timeout).
     let picker = video_image::detect(switch);
-    set_mouse(app.mouse);
+    set_mouse(app.mouse());
     let result = event_loop(&mut terminal, &mut app, &theme, picker);
     restore();
     result
@@ -209,8 +209,8 @@ fn event_loop(
     );
     let mut dirty = true;
     let mut last_tick = Instant::now();
-    let mut mouse = app.mouse;
-    while !app.quit {
+    let mut mouse = app.mouse();
+    while !app.quitting() {
         if dirty {
             // Laid out once, before drawing: the drawing, the keys (a popup's scroll
             // limit) and the mouse read this one frame.
@@ -244,7 +244,7 @@ fn event_loop(
             let was_playing = app.playing;
             dirty |= match input {
                 Wake::Terminal(e) if is_suspend(&e) => {
-                    suspend(terminal, app.mouse)?;
+                    suspend(terminal, app.mouse())?;
                     // The stopped time is not played through.
                     last_tick = Instant::now();
                     true
@@ -266,12 +266,12 @@ fn event_loop(
             if app.playing && !was_playing {
                 last_tick = Instant::now();
             }
-            if app.quit {
+            if app.quitting() {
                 return Ok(());
             }
         }
-        if app.mouse != mouse {
-            mouse = app.mouse;
+        if app.mouse() != mouse {
+            mouse = app.mouse();
             set_mouse(mouse);
         }
         if app.playing && last_tick.elapsed() >= frame {
@@ -297,7 +297,7 @@ fn on_terminal(app: &mut App, screen: &Screen, event: Event) -> bool {
                 None => false,
             }
         }
-        Event::Mouse(m) if app.mouse => on_mouse_in(app, screen, m),
+        Event::Mouse(m) if app.mouse() => on_mouse_in(app, screen, m),
         Event::Resize(..) => true,
         _ => false,
     }
@@ -352,7 +352,7 @@ fn on_mouse_main(app: &mut App, screen: &Screen, m: MouseEvent) -> bool {
     let Some(panels) = screen.frame().and_then(|f| f.panels) else {
         return false;
     };
-    let hit = view::param_at(panels.params, app.selected, m.column, m.row);
+    let hit = view::param_at(panels.params, app.selected(), m.column, m.row);
     let action = match (m.kind, hit) {
         (MouseEventKind::Down(MouseButton::Left), Some(i)) => Action::Select(i),
         (MouseEventKind::ScrollUp, Some(i)) => Action::ScrollParam(i, true),
@@ -366,7 +366,7 @@ fn on_mouse_main(app: &mut App, screen: &Screen, m: MouseEvent) -> bool {
 /// Replays `keys` on `app` as the terminal would.
 pub fn replay(app: &mut App, keys: &[KeyEvent]) {
     for &key in keys {
-        if app.quit {
+        if app.quitting() {
             break;
         }
         if let Some(action) = keys::action(&app.mode(), key) {

@@ -55,7 +55,7 @@ impl Screen {
         let mut work = Work::default();
         let (mut chart, mut regimes) = (None, None);
         if let Some(p) = panels {
-            match app.view {
+            match app.view() {
                 View::Charts | View::Fit => {
                     let (built, thinned) =
                         view::charts::build(app, &mut self.cache, p.chart, theme);
@@ -119,7 +119,7 @@ impl Screen {
     /// The time under a click at (`column`, `row`) of the frame prepared last: inside
     /// the chart's plot while the charts are shown and no popup is open.
     pub fn chart_time_at(&self, app: &App, column: u16, row: u16) -> Option<f64> {
-        if app.view != View::Charts || !app.layers().is_empty() {
+        if app.view() != View::Charts || !app.layers().is_empty() {
             return None;
         }
         self.frame.as_ref()?.chart.as_ref()?.time_at(column, row)
@@ -260,7 +260,7 @@ const ENERGY_WITHHELD: Withheld = Withheld {
 fn parts_of(app: &App) -> Vec<(&'static dyn Component, Place)> {
     use view::{charts, fit, forces, info, map, methods};
     let hide = app.hidden();
-    match app.view {
+    match app.view() {
         View::Charts if hide.derived() && app.charts().energy() => {
             vec![(&ENERGY_WITHHELD, Place::Chart), (&info::Why, Place::Side)]
         }

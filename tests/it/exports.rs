@@ -18,7 +18,7 @@ fn scratch(test: &str) -> PathBuf {
 
 fn app_in(dir: &std::path::Path, preset: &str) -> App {
     let mut a = common::app(preset, common::no_user_presets("exports"));
-    a.export_dir = dir.to_path_buf();
+    a.set_export_dir(dir.to_path_buf());
     a
 }
 
@@ -36,7 +36,7 @@ fn export_figure(a: &mut App) -> (String, String) {
         "{:?}",
         a.status
     );
-    let svg = std::fs::read_to_string(a.export_dir.join(&name)).unwrap();
+    let svg = std::fs::read_to_string(a.export_dir().join(&name)).unwrap();
     assert!(svg.starts_with("<svg"), "{name}");
     (name, svg)
 }

@@ -163,7 +163,7 @@ fn typed_values_take_units_and_escape_cancels() {
     press(&mut a, "enter 3 c m esc");
     assert_eq!(a.lab.scene.width, 0.044, "Esc cancels typing");
     assert_eq!(a.mode(), Mode::Normal);
-    assert!(!a.quit);
+    assert!(!a.quitting());
     press(&mut a, "enter 3 k g enter");
     assert_eq!(a.lab.scene.width, 0.044);
     assert!(matches!(&a.status, Status::Error(e) if e.contains("unknown unit")));
@@ -239,7 +239,7 @@ fn prompts_edit_like_a_terminal_line() {
         a.mode()
     );
     press(&mut a, "esc");
-    assert!(!a.quit);
+    assert!(!a.quitting());
 }
 
 #[test]
@@ -343,7 +343,7 @@ fn playback_runs_on_the_clock_at_the_chosen_speed() {
 #[test]
 fn the_picker_takes_home_end_and_the_page_keys() {
     let mut a = app("paper-b4.9");
-    let n = a.library.presets.len();
+    let n = a.library().presets.len();
     assert!(n > 3, "presets to move through: {n}");
     press(&mut a, "p home");
     assert_eq!(a.mode(), Mode::Picker(0));
@@ -357,39 +357,39 @@ fn the_picker_takes_home_end_and_the_page_keys() {
     press(&mut a, "pgdn");
     assert_eq!(a.mode(), Mode::Picker(n - 1));
     press(&mut a, "home enter");
-    assert_eq!(a.lab.preset().name, a.library.presets[0].name);
+    assert_eq!(a.lab.preset().name, a.library().presets[0].name);
 }
 
 #[test]
 fn picker_loads_presets_and_quit_keys_quit() {
     let mut a = app("paper-b4.9");
     press(&mut a, "p down enter");
-    assert_eq!(a.lab.preset().name, a.library.presets[3].name);
+    assert_eq!(a.lab.preset().name, a.library().presets[3].name);
     press(&mut a, "p up up esc");
     assert_eq!(a.mode(), Mode::Normal);
-    assert_eq!(a.lab.preset().name, a.library.presets[3].name);
+    assert_eq!(a.lab.preset().name, a.library().presets[3].name);
     press(&mut a, "?");
     assert_eq!(a.mode(), Mode::Help);
     press(&mut a, "esc");
     assert_eq!(a.mode(), Mode::Normal);
-    assert!(!a.quit);
+    assert!(!a.quitting());
     press(&mut a, "q");
-    assert!(a.quit);
+    assert!(a.quitting());
     let mut a = app("paper-b4.9");
     press(&mut a, "enter 4 C-c");
-    assert!(a.quit, "Ctrl-C quits even while typing");
+    assert!(a.quitting(), "Ctrl-C quits even while typing");
     // Esc on the main screen never quits (a reflex Esc ended the session): it says
     // how to quit instead.
     let mut a = app("paper-b4.9");
     press(&mut a, "esc esc");
-    assert!(!a.quit);
+    assert!(!a.quitting());
     assert!(
         matches!(&a.status, Status::Info(s) if s.contains("q quits")),
         "{:?}",
         a.status
     );
     press(&mut a, "q");
-    assert!(a.quit);
+    assert!(a.quitting());
 }
 
 #[test]
@@ -397,7 +397,7 @@ fn saving_writes_a_loadable_preset_and_never_overwrites_silently() {
     let dir = std::env::temp_dir().join(format!("groovelab-save-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     let mut a = app("inelastic");
-    a.library = Library::at(Some(dir.clone()));
+    a.set_library(Library::at(Some(dir.clone())));
     select(&mut a, Key::Mu);
     press(&mut a, "right");
     press(&mut a, "s enter");
@@ -660,12 +660,12 @@ fn mouse_clicks_select_and_scrolls_change_parameters() {
     assert_eq!(param_at(short, 9, short.x + 3, short.y + 1), Some(3));
     let mut a = app("paper-b4.9");
     a.apply(Action::Select(4));
-    assert_eq!(ROWS[a.selected].key, Key::Mu);
+    assert_eq!(ROWS[a.selected()].key, Key::Mu);
     a.apply(Action::ScrollParam(4, true));
     assert!((a.lab.scene.mu - 0.18).abs() < 1e-12);
     let e_row = ROWS.iter().position(|p| p.key == Key::Restitution).unwrap();
     a.apply(Action::ScrollParam(e_row, false));
-    assert_eq!(ROWS[a.selected].key, Key::Restitution);
+    assert_eq!(ROWS[a.selected()].key, Key::Restitution);
     assert!((a.lab.scene.restitution - 0.99).abs() < 1e-12);
 }
 
@@ -693,9 +693,9 @@ fn no_color_means_no_colours() {
 fn methods_view_and_overlay() {
     let mut a = app("paper-b4.9");
     press(&mut a, "c");
-    assert_eq!(a.view, View::Methods);
+    assert_eq!(a.view(), View::Methods);
     a.wait();
-    let State::Ready(rows) = a.methods.state() else {
+    let State::Ready(rows) = a.methods().state() else {
         panic!("the rows are there once the lab has waited")
     };
     assert_eq!(rows.len(), 20, "five methods at four levels");
@@ -715,7 +715,7 @@ fn methods_view_and_overlay() {
     a.t = t;
     press(&mut a, "c o");
     a.wait();
-    let State::Ready(o) = a.overlay.state() else {
+    let State::Ready(o) = a.overlay().state() else {
         panic!("an overlay")
     };
     assert_eq!(o.method, groovelab::methods::Method::Euler);
@@ -723,7 +723,7 @@ fn methods_view_and_overlay() {
     assert!(screen_of(&a).contains("euler h 1e-3 (chatter)"));
     press(&mut a, "[ [");
     a.wait();
-    let overlay = |a: &App| match a.overlay.state() {
+    let overlay = |a: &App| match a.overlay().state() {
         State::Ready(o) => Some(o.clone()),
         _ => None,
     };
@@ -756,7 +756,7 @@ fn the_methods_view_of_a_long_span_is_cut_and_says_where() {
     assert!(a.lab.solution.t_end > 1e5);
     press(&mut a, "c");
     a.wait();
-    let State::Ready(rows) = a.methods.state() else {
+    let State::Ready(rows) = a.methods().state() else {
         panic!("the rows are there once the lab has waited")
     };
     let end = span.t_start + WINDOW;
@@ -790,7 +790,7 @@ fn methods_view_work_axis_outcome_and_order() {
     let (mut a, counted) = common::counted("paper-b3.5", no_user_presets());
     press(&mut a, "c");
     a.wait();
-    let times = |a: &App| match a.methods.state() {
+    let times = |a: &App| match a.methods().state() {
         State::Ready(rows) => rows.iter().map(|r| r.time_median_s).collect::<Vec<_>>(),
         _ => panic!("the rows are there once the lab has waited"),
     };
@@ -936,7 +936,7 @@ fn help_is_complete_at_every_size_scrolling_where_needed() {
             }
             press(&mut a, "q");
             assert_eq!(a.mode(), Mode::Normal);
-            assert!(!a.quit, "q in the help closes the help, not the app");
+            assert!(!a.quitting(), "q in the help closes the help, not the app");
         }
     }
     // The help's ↑ takes back what ↓ did; it never scrolls past the end.
@@ -962,11 +962,11 @@ fn q_closes_every_popup_and_quits_only_the_main_screen() {
         assert_ne!(a.mode(), Mode::Normal, "{open}");
         press(&mut a, "q");
         assert_eq!(a.mode(), Mode::Normal, "{open}");
-        assert!(!a.quit, "{open} q");
+        assert!(!a.quitting(), "{open} q");
         press(&mut a, open);
         press(&mut a, "esc");
         assert_eq!(a.mode(), Mode::Normal, "{open} esc");
-        assert!(!a.quit);
+        assert!(!a.quitting());
     }
     // In text fields q is a letter.
     press(&mut a, "s q");
@@ -974,12 +974,12 @@ fn q_closes_every_popup_and_quits_only_the_main_screen() {
     press(&mut a, "esc w q");
     assert!(matches!(&a.mode(), Mode::Export(_, t) if t.value().ends_with('q')));
     press(&mut a, "esc");
-    assert!(!a.quit);
+    assert!(!a.quitting());
     press(&mut a, "? C-c");
-    assert!(a.quit, "Ctrl-C quits from a popup");
+    assert!(a.quitting(), "Ctrl-C quits from a popup");
     let mut a = app("paper-b4.9");
     press(&mut a, "q");
-    assert!(a.quit);
+    assert!(a.quitting());
 }
 
 #[test]
@@ -1054,16 +1054,16 @@ fn small_screens_keep_the_important_lines() {
 fn f_switches_to_the_fit_view_from_any_view() {
     let mut a = app("paper-b4.9");
     press(&mut a, "c f");
-    assert_eq!(a.view, View::Fit);
+    assert_eq!(a.view(), View::Fit);
     assert!(a.fit_view());
     a.wait();
     assert!(screen_of(&a).contains("model fit: μ_k+v0+c_rr"));
     press(&mut a, "g");
-    assert_eq!(a.view, View::Map, "g leaves the Fit view for the map");
+    assert_eq!(a.view(), View::Map, "g leaves the Fit view for the map");
     press(&mut a, "f f");
-    assert_eq!(a.view, View::Charts, "f again goes back to the charts");
+    assert_eq!(a.view(), View::Charts, "f again goes back to the charts");
     press(&mut a, "f c");
-    assert_eq!(a.view, View::Methods);
+    assert_eq!(a.view(), View::Methods);
 }
 
 #[test]
@@ -1139,7 +1139,7 @@ fn typing_replaces_a_suggested_name_and_enter_on_nothing_cancels() {
     let dir = std::env::temp_dir().join(format!("groovelab-suggest-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     let mut a = app("paper-b4.9");
-    a.library = Library::at(Some(dir.clone()));
+    a.set_library(Library::at(Some(dir.clone())));
     // The save prompt offers a name; typing replaces it (it once appended:
     // my-paper-b4.9x), and a name typed as its file's is not doubled.
     press(&mut a, "s x . t o m l");
@@ -1197,7 +1197,7 @@ fn save_keeps_the_data_and_the_description_and_explains_bad_names() {
     let dir = std::env::temp_dir().join(format!("groovelab-save11-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     let mut a = app("paper-b4.4");
-    a.library = Library::at(Some(dir.clone()));
+    a.set_library(Library::at(Some(dir.clone())));
     // A name with a space: refused, the dialog stays open and says why.
     press(&mut a, "s end space x enter");
     assert!(matches!(&a.mode(), Mode::SaveName(n) if n.value() == "my-paper-b4.4 x"));
@@ -1297,7 +1297,7 @@ fn a_applies_the_fitted_mu_in_the_fit_view() {
     assert!(matches!(&a.status, Status::Error(e) if e.contains("Fit view")));
     press(&mut a, "f");
     a.wait();
-    let State::Ready(Ok(f)) = a.fit.fits() else {
+    let State::Ready(Ok(f)) = a.fit().fits() else {
         panic!("a fit")
     };
     let mu = f.model_fit.mu;
@@ -1334,7 +1334,7 @@ fn a_applies_the_position_fit_of_a_track() {
         common::no_user_presets("tui"),
     );
     a.wait();
-    let State::Ready(Ok(f)) = a.fit.fits() else {
+    let State::Ready(Ok(f)) = a.fit().fits() else {
         panic!("the fits")
     };
     let velocity = f.velocity_fit.as_ref().map(|v| v.mu).unwrap();
@@ -1357,7 +1357,7 @@ fn export_writes_the_run_as_csv_and_the_chart_as_svg() {
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     let mut a = app("paper-b4.9");
-    a.export_dir = dir.clone();
+    a.set_export_dir(dir.clone());
     press(&mut a, "w");
     assert!(matches!(&a.mode(), Mode::Export(_, n) if n.value() == "paper-b4.9-run.csv"));
     press(&mut a, "enter");
@@ -1611,10 +1611,10 @@ fn the_fit_window_stays_after_the_impact_and_never_runs_backwards() {
             press(&mut a, keys);
         }
         a.wait();
-        let (from, to) = (a.fit.window.0.unwrap(), a.fit.window.1.unwrap());
+        let (from, to) = (a.fit().window.0.unwrap(), a.fit().window.1.unwrap());
         assert!(from > 0.0 && from < to, "{keys}: {from} … {to}");
         assert!(
-            matches!(a.fit.fits(), State::Ready(Ok(_))),
+            matches!(a.fit().fits(), State::Ready(Ok(_))),
             "{keys}: the fit stays"
         );
     }
@@ -1652,7 +1652,7 @@ fn a_click_selects_a_preset_and_a_click_on_the_selected_one_loads_it() {
     let mut a = app("paper-b4.9");
     press(&mut a, "p");
     let flat = a
-        .library
+        .library()
         .presets
         .iter()
         .position(|p| p.name == "flat-table")
@@ -1693,7 +1693,7 @@ fn over_a_popup_the_mouse_acts_on_the_popup_alone() {
     press(&mut a, "?");
     let _ = text(&a, (120, 40), false);
     assert!(!on_mouse(&mut a, area, &theme, mouse(click, x + 1, y)));
-    assert_eq!((a.mode(), a.selected), (Mode::Help, 1));
+    assert_eq!((a.mode(), a.selected()), (Mode::Help, 1));
     on_mouse(
         &mut a,
         area,
@@ -1715,7 +1715,7 @@ fn over_a_popup_the_mouse_acts_on_the_popup_alone() {
     let (x, y) = cell_of(&text(&a, (120, 40), false), " 2 they come to rest");
     on_mouse(&mut a, area, &theme, mouse(click, x + 4, y));
     assert_eq!(a.mode(), Mode::Normal);
-    assert_eq!(a.prediction.as_ref().map(|p| p.guess), Some(Regime::Rest));
+    assert_eq!(a.prediction().map(|p| p.guess), Some(Regime::Rest));
     // A prompt takes no click: the typing goes on.
     press(&mut a, "enter");
     assert!(!on_mouse(&mut a, area, &theme, mouse(click, x, y)));

@@ -88,7 +88,7 @@ fn help(first: usize, area: Rect, buf: &mut Buffer, theme: &Theme) {
 fn preset_picker(app: &App, selected: usize, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let g = theme.glyphs;
     let name_width = app
-        .library
+        .library()
         .presets
         .iter()
         .map(|p| p.name.len())
@@ -97,7 +97,7 @@ fn preset_picker(app: &App, selected: usize, area: Rect, buf: &mut Buffer, theme
     // One row per preset: the description cut with an ellipsis, never wrapped.
     let room = usize::from(area.width.saturating_sub(8));
     let lines: Vec<Line> = app
-        .library
+        .library()
         .presets
         .iter()
         .enumerate()
@@ -112,7 +112,7 @@ fn preset_picker(app: &App, selected: usize, area: Rect, buf: &mut Buffer, theme
             // this row loads the file (`--preset NAME` finds the built-in).
             let twin = matches!(p.origin, PresetOrigin::File(_))
                 && app
-                    .library
+                    .library()
                     .presets
                     .iter()
                     .any(|q| q.origin == PresetOrigin::BuiltIn && q.name == p.name);
@@ -144,7 +144,7 @@ fn preset_picker(app: &App, selected: usize, area: Rect, buf: &mut Buffer, theme
 /// The name to save the scene under, and where it goes.
 fn save_prompt(app: &App, field: &Field, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let dir = app
-        .library
+        .library()
         .dir
         .as_ref()
         .map_or("(no preset folder)".to_string(), |d| {
@@ -207,10 +207,10 @@ fn export_prompt(
         (" file: ", field),
         &[
             what,
-            if app.export_dir == std::path::Path::new(".") {
+            if app.export_dir() == std::path::Path::new(".") {
                 " in the folder groovelab was started in, unless a path is given".into()
             } else {
-                format!(" in {} unless a path is given", app.export_dir.display())
+                format!(" in {} unless a path is given", app.export_dir().display())
             },
             " Enter writes (replacing a file of that name), Esc cancels".into(),
         ]

@@ -48,7 +48,7 @@ pub fn question(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         ]));
     }
     lines.push(Line::from(""));
-    let b = if app.hide.b() {
+    let b = if app.hide().b() {
         "b is hidden: look at the front view".to_string()
     } else {
         format!(
@@ -61,7 +61,7 @@ pub fn question(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         g.text(&format!("{b}; then it plays and explains. Esc cancels.")),
         theme.dim,
     ));
-    let forces = if app.hide.forces_givens() {
+    let forces = if app.hide().forces_givens() {
         "shown as givens (g hides them)"
     } else {
         "hidden (g shows them as givens)"

@@ -31,7 +31,7 @@ pub fn render(app: &App, status: Rect, hints: Rect, buf: &mut Buffer, theme: &Th
     );
     let (message, style) = match (app.editing(), &app.status) {
         (Some(_), _) => {
-            let prompt = typing_prompt(ROWS[app.selected]);
+            let prompt = typing_prompt(ROWS[app.selected()]);
             buf.set_stringn(
                 status.x,
                 status.y,
@@ -75,7 +75,7 @@ pub fn render(app: &App, status: Rect, hints: Rect, buf: &mut Buffer, theme: &Th
 fn right_text(app: &App, width: usize, g: &Glyphs) -> String {
     // A preset's name may say b or the outcome (paper-b4.9, critical): hidden with
     // what follows from b.
-    let source = if app.hide.b() {
+    let source = if app.hide().b() {
         "preset hidden with b".to_string()
     } else if app.hidden().derived() {
         "preset hidden until the outcome shows".to_string()

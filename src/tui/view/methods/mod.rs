@@ -74,7 +74,7 @@ pub fn render_diagram(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let blk = block(title, theme);
     let inner = blk.inner(area);
     blk.render(area, buf);
-    let rows = match app.methods.state() {
+    let rows = match app.methods().state() {
         State::Ready(rows) => rows,
         other => return super::panel::computing(&other, "running every method", inner, buf, theme),
     };
@@ -149,7 +149,7 @@ pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let blk = block(title, theme);
     let inner = blk.inner(area);
     blk.render(area, buf);
-    let rows = match app.methods.state() {
+    let rows = match app.methods().state() {
         State::Ready(rows) => rows,
         other => return super::panel::computing(&other, "running every method", inner, buf, theme),
     };
