@@ -453,7 +453,7 @@ impl App {
         let key = Input::Key(action);
         let answer = match self.view {
             View::Forces => self.forces.handle(&key, ()),
-            View::Charts | View::Methods | View::Map | View::Fit | View::Notes => Handled::Ignored,
+            View::Charts | View::Methods | View::Map | View::Fit => Handled::Ignored,
         };
         if self.handled(answer) {
             return true;

@@ -66,7 +66,7 @@ impl Screen {
                     regimes = view::map::grid_size(p.chart)
                         .map(|(cols, rows)| self.cache.regime_grid(&app.lab, cols, rows));
                 }
-                View::Methods | View::Forces | View::Notes => {}
+                View::Methods | View::Forces => {}
             }
         }
         // A popup lies over the panels: no graphic then (text cannot cover it).
@@ -295,7 +295,6 @@ fn parts_of(app: &App) -> Vec<(&'static dyn Component, Place)> {
         ],
         // The Forces view takes the chart's and the side panel's room.
         View::Forces => vec![(&forces::ForcesView, Place::Middle)],
-        View::Notes => vec![(&view::notes::Notes, Place::Middle)],
     }
 }
 

@@ -31,8 +31,6 @@ pub enum View {
     Fit,
     /// The paper's figures of forces, torques and motion states, and the chain.
     Forces,
-    /// A throwaway view (one panel).
-    Notes,
 }
 
 /// What the Methods view puts on its work axis (`X` cycles it).

@@ -120,7 +120,7 @@ impl App {
             View::Map => Ok(Figure::Map),
             View::Methods if hide.derived() => Err(NoExport::Hidden("the Methods diagram")),
             View::Methods => Ok(Figure::Methods),
-            View::Forces | View::Notes => Err(NoExport::Forces),
+            View::Forces => Err(NoExport::Forces),
             View::Fit if self.lab.measured().is_some() && hide.derived() => {
                 Err(NoExport::Hidden("the fit"))
             }

@@ -216,12 +216,6 @@ pub const TABLE: &[Binding] = &[
         hint: None,
     },
     Binding {
-        keys: &["N"],
-        action: Action::ShowView(View::Notes),
-        help: "Notes view: a throwaway",
-        hint: None,
-    },
-    Binding {
         keys: &["f"],
         action: Action::ShowView(View::Fit),
         help: "Fit view: the paper's line fits and a model fit to the measured data",

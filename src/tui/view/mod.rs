@@ -9,7 +9,6 @@ pub mod forces;
 pub mod info;
 pub mod map;
 pub mod methods;
-pub mod notes;
 mod panel;
 pub mod params;
 
