@@ -2,7 +2,8 @@
 //! which view is shown. Everything computed about the scene is asked of the [`Lab`].
 //! No terminal here: keys arrive as [`Action`]s, so the whole app is testable without one.
 //! The types it speaks in live in [`super::vocabulary`]; what the main screen's keys do in
-//! `normal`, the picker and text prompts in `prompts`.
+//! `normal`, what the popups ask when they answer in `prompts` (the popups themselves
+//! are layers, [`super::layer`]: a key goes to them first).
 
 pub mod export;
 mod normal;

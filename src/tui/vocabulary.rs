@@ -78,7 +78,8 @@ impl Export {
     }
 }
 
-/// A popup or prompt over the main screen, which takes the keys while open.
+/// What is open over the main screen, as plain data ([`super::app::App::mode`], made
+/// from the top layer): the key table reads a key by it (in a prompt `q` is a letter).
 #[derive(Clone, Debug, PartialEq)]
 pub enum Mode {
     Normal,

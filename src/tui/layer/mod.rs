@@ -146,3 +146,81 @@ impl Compositor {
         Handled::Ignored
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::tui::vocabulary::{Action, Then};
+
+    fn offer(stack: &mut Compositor, action: Action) -> Handled {
+        let histories = Histories::default();
+        let cx = LayerCx {
+            presets: 5,
+            histories: &histories,
+        };
+        stack.handle(&Input::Key(action), &cx)
+    }
+
+    #[test]
+    fn the_top_layer_takes_a_key_first_and_closes_alone() {
+        let mut stack = Compositor::default();
+        stack.push(Layer::Help(Help::default()));
+        stack.push(Layer::Picker(Picker::on(2)));
+        assert_eq!(offer(&mut stack, Action::Down), Handled::Consumed);
+        assert_eq!(stack.top(), Some(&Layer::Picker(Picker::on(3))));
+        assert_eq!(
+            offer(&mut stack, Action::Confirm),
+            Handled::Close(Then::Load(3))
+        );
+        // The picker closed; the help under it is the top again, its scroll untouched.
+        assert_eq!(stack.top(), Some(&Layer::Help(Help::default())));
+        assert_eq!(stack.iter().count(), 1);
+    }
+
+    #[test]
+    fn a_key_no_layer_takes_falls_through_the_stack() {
+        let mut stack = Compositor::default();
+        stack.push(Layer::Table(DataTable::default()));
+        stack.push(Layer::Question(Question));
+        // Ctrl-C is no popup's key: it reaches the app, which quits.
+        assert_eq!(offer(&mut stack, Action::Quit), Handled::Ignored);
+        assert_eq!(stack.iter().count(), 2);
+        assert_eq!(Compositor::default().top(), None);
+        assert_eq!(
+            offer(&mut Compositor::default(), Action::Down),
+            Handled::Ignored
+        );
+    }
+
+    #[test]
+    fn a_scrolling_layer_stops_at_the_end_the_frame_laid_out() {
+        let mut stack = Compositor::default();
+        stack.push(Layer::Help(Help::default()));
+        stack.laid_out(3);
+        for _ in 0..5 {
+            offer(&mut stack, Action::Down);
+        }
+        let Some(Layer::Help(help)) = stack.top() else {
+            panic!("the help is open");
+        };
+        assert_eq!(help.scroll().first(), 3);
+        // Any other key closes it.
+        assert_eq!(
+            offer(&mut stack, Action::Presets),
+            Handled::Close(Then::Nothing)
+        );
+        assert!(stack.is_empty());
+    }
+
+    #[test]
+    fn the_value_prompt_leaves_the_screen_uncovered() {
+        let value = Prompt::new(crate::tui::vocabulary::TextTarget::Value, "4".into());
+        let name = Prompt::new(crate::tui::vocabulary::TextTarget::Name, "x".into());
+        assert!(!Layer::Prompt(value).covers());
+        assert!(Layer::Prompt(name).covers());
+        assert_eq!(
+            Layer::Confirm(Confirm::new("x")).mode(),
+            Mode::ConfirmOverwrite("x".into())
+        );
+    }
+}
