@@ -5,10 +5,12 @@
 //! `normal`, what the popups ask when they answer in `prompts` (the popups themselves
 //! are layers, [`super::layer`]: a key goes to them first).
 
+mod access;
 pub mod export;
 mod normal;
 mod predict;
 mod prompts;
+mod stops;
 mod video;
 
 use std::path::PathBuf;
@@ -16,7 +18,6 @@ use std::sync::{Arc, LazyLock};
 
 use crate::lab::Lab;
 use crate::lab::jobs::Pool;
-use crate::physics::solution::{EventKind, Solution};
 use crate::settings::params::{Key, PARAMS, Param};
 use crate::settings::spec::SceneError;
 use crate::settings::units::{Dimension, show, significant};
@@ -24,6 +25,7 @@ use crate::settings::units::{Dimension, show, significant};
 pub use super::vocabulary::{
     Action, ChartBall, Export, FPS, Field, Library, Mode, Prediction, SPEEDS, Status, View,
 };
+pub use stops::{EventStop, event_stops};
 
 use super::interact::{Input, Interactive};
 use super::jobs::{ExportRun, FitRuns, Jobs, MethodRows, Notice, OverlayRun, VideoRun};
@@ -159,98 +161,6 @@ impl App {
     /// Opens `layer` over the screen.
     fn open(&mut self, layer: Layer) {
         self.layers.push(layer);
-    }
-
-    /// The playback speed's index in [`SPEEDS`].
-    pub fn speed(&self) -> usize {
-        self.speed
-    }
-
-    /// The parameter row selected (an index in [`ROWS`]).
-    pub fn selected(&self) -> usize {
-        self.selected
-    }
-
-    /// True while the app takes the mouse.
-    pub fn mouse(&self) -> bool {
-        self.mouse
-    }
-
-    /// True once the user quit.
-    pub fn quitting(&self) -> bool {
-        self.quit
-    }
-
-    /// The presets the picker offers and the folder the app saves to.
-    pub fn library(&self) -> &Library {
-        &self.library
-    }
-
-    /// Offers the presets of `library` and saves into its folder.
-    pub fn set_library(&mut self, library: Library) {
-        self.library = library;
-    }
-
-    /// The view shown.
-    pub fn view(&self) -> View {
-        self.view
-    }
-
-    /// The charts' time-stepping overlay and its job.
-    pub fn overlay(&self) -> &OverlayRun {
-        &self.overlay
-    }
-
-    /// Overlays `choice` (a method and its step level) on the charts, or none.
-    pub fn set_overlay(&mut self, choice: Option<(crate::methods::Method, u8)>) {
-        self.overlay.choice = choice;
-        self.sync_jobs();
-    }
-
-    /// The Methods view's rows and their job.
-    pub fn methods(&self) -> &MethodRows {
-        &self.methods
-    }
-
-    /// The Fit view's fits, their window and their jobs.
-    pub fn fit(&self) -> &FitRuns {
-        &self.fit
-    }
-
-    /// The `--data` video: its tracking, its pictures, whether the Scene panel shows it.
-    pub fn video(&self) -> &VideoRun {
-        &self.video
-    }
-
-    /// Where `w`/`W` write a bare file name.
-    pub fn export_dir(&self) -> &std::path::Path {
-        &self.export_dir
-    }
-
-    /// Makes `w`/`W` write a bare file name into `dir`.
-    pub fn set_export_dir(&mut self, dir: PathBuf) {
-        self.export_dir = dir;
-    }
-
-    /// What b hidden hides (the rule; [`App::hidden`] adds a pending prediction).
-    pub fn hide(&self) -> super::hide::Hide {
-        self.hide
-    }
-
-    /// The last prediction made.
-    pub fn prediction(&self) -> Option<&Prediction> {
-        self.prediction.as_ref()
-    }
-
-    /// True unless the app is `render`'s headless twin.
-    pub fn writes_files(&self) -> bool {
-        self.writes_files
-    }
-
-    /// Makes the app `render`'s headless twin: the export and save keys say what they
-    /// would write and write nothing.
-    pub fn write_no_files(&mut self) {
-        self.writes_files = false;
     }
 
     /// True in the Fit view (charts with fit lines, the Fit panel).
@@ -619,67 +529,4 @@ impl App {
             if self.playing { "playing" } else { "paused" },
         )
     }
-}
-
-/// A time `>` and `<` stop at: an event's, with its label, and for T∞ how many impacts
-/// of the burst before it the stop stands for.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct EventStop {
-    pub t: f64,
-    pub label: &'static str,
-    /// Impacts merged into this stop (T∞ only), and the time they take.
-    pub burst: Option<(usize, f64)>,
-}
-
-/// The share of the span within which impacts before T∞ are one burst: closer together
-/// than a few pixel columns of the chart, so a stop per impact would show nothing new.
-const BURST_SHARE: f64 = 0.02;
-
-/// Where `>`/`<` stop in `sol`'s span, in time order, once per time: each labelled event
-/// (impact, rolling, gliding, slipping, rest, T∞), except that the impacts accumulating
-/// at T∞ (with the slips between them) within [`BURST_SHARE`] of the span before it are
-/// stepped over as one, T∞ itself.
-pub fn event_stops(sol: &Solution) -> Vec<EventStop> {
-    let window = BURST_SHARE * (sol.t_end - sol.t_start);
-    let zeno: Vec<f64> = sol
-        .visible_events()
-        .filter(|e| matches!(e.kind, EventKind::ZenoRest | EventKind::ZenoContact))
-        .map(|e| e.t)
-        .collect();
-    // The T∞ that an event at `t` accumulates toward, if it is inside its burst.
-    let in_burst = |t: f64| zeno.iter().any(|&z| t < z && z - t < window);
-    let mut stops: Vec<EventStop> = Vec::new();
-    for e in sol.visible_events() {
-        let Some(label) = e.kind.label() else {
-            continue;
-        };
-        if in_burst(e.t) {
-            continue;
-        }
-        // One stop per time; the last impact falls on T∞ itself, and T∞ names it.
-        let zeno_here = zeno.contains(&e.t);
-        if stops.last().is_some_and(|s| s.t == e.t) {
-            if !zeno_here {
-                continue;
-            }
-            stops.pop();
-        }
-        let burst = zeno_here.then(|| {
-            let impacts: Vec<f64> = sol
-                .visible_events()
-                .filter(|i| i.kind == EventKind::Collision && i.t <= e.t && e.t - i.t < window)
-                .map(|i| i.t)
-                .collect();
-            (
-                impacts.len(),
-                impacts.first().map_or(0.0, |first| e.t - first),
-            )
-        });
-        stops.push(EventStop {
-            t: e.t,
-            label,
-            burst,
-        });
-    }
-    stops
 }
