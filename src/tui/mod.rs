@@ -154,7 +154,7 @@ pub fn run(mut app: App, ascii: bool) -> io::Result<()> {
 }
 
 /// What wakes the event loop: a terminal event, or a job that finished or moved on.
-enum Wake {
+enum Incoming {
     Terminal(Event),
     /// Reading the terminal failed: the app ends with this error.
     Failed(io::Error),
@@ -166,7 +166,7 @@ enum Wake {
 /// Starts the thread that reads terminal events (blocked, no CPU, until one comes)
 /// into the event loop's channel, and points the lab's jobs at the same channel:
 /// keys and job results arrive in one queue, and the loop sleeps until either comes.
-fn inputs(app: &App) -> io::Result<(Sender<Wake>, Receiver<Wake>)> {
+fn inputs(app: &App) -> io::Result<(Sender<Incoming>, Receiver<Incoming>)> {
     let (tx, rx) = mpsc::channel();
     let wake = tx.clone();
     let jobs = Mutex::new(tx.clone());
@@ -174,17 +174,17 @@ fn inputs(app: &App) -> io::Result<(Sender<Wake>, Receiver<Wake>)> {
         let _ = jobs
             .lock()
             .unwrap_or_else(PoisonError::into_inner)
-            .send(Wake::Job(notice));
+            .send(Incoming::Job(notice));
     });
     std::thread::Builder::new()
         .name("groovelab-terminal".into())
         .spawn(move || {
             loop {
                 let input = match event::read() {
-                    Ok(e) => Wake::Terminal(e),
-                    Err(e) => Wake::Failed(e),
+                    Ok(e) => Incoming::Terminal(e),
+                    Err(e) => Incoming::Failed(e),
                 };
-                let failed = matches!(input, Wake::Failed(_));
+                let failed = matches!(input, Incoming::Failed(_));
                 if tx.send(input).is_err() || failed {
                     break;
                 }
@@ -204,7 +204,7 @@ fn event_loop(
     let mut screen = Screen::with_graphics(
         picker,
         Box::new(move || {
-            let _ = wake.send(Wake::Picture);
+            let _ = wake.send(Incoming::Picture);
         }),
     );
     let mut dirty = true;
@@ -243,13 +243,13 @@ fn event_loop(
         for input in first.into_iter().chain(rx.try_iter()) {
             let was_playing = app.playing;
             dirty |= match input {
-                Wake::Terminal(e) if is_suspend(&e) => {
+                Incoming::Terminal(e) if is_suspend(&e) => {
                     suspend(terminal, app.mouse())?;
                     // The stopped time is not played through.
                     last_tick = Instant::now();
                     true
                 }
-                Wake::Terminal(e) => {
+                Incoming::Terminal(e) => {
                     // A click after a key of this batch hits the frame that key made.
                     if dirty
                         && matches!(e, Event::Mouse(_))
@@ -259,9 +259,9 @@ fn event_loop(
                     }
                     on_terminal(app, &screen, e)
                 }
-                Wake::Failed(e) => return Err(e),
-                Wake::Job(notice) => app.on_job(notice),
-                Wake::Picture => true,
+                Incoming::Failed(e) => return Err(e),
+                Incoming::Job(notice) => app.on_job(notice),
+                Incoming::Picture => true,
             };
             if app.playing && !was_playing {
                 last_tick = Instant::now();
