@@ -319,6 +319,7 @@ impl App {
             t: self.t,
             span: self.chart_span(),
             shown: matches!(self.view, View::Charts | View::Fit),
+            pointer: None,
         }
     }
 
@@ -350,12 +351,16 @@ impl App {
         self.charts.zoom().range(self.chart_span())
     }
 
-    /// Zooms the charts' time axis in (`inward`) or out around `at` (the pointer's
-    /// time under the wheel) and says so.
-    pub fn zoom_around(&mut self, at: f64, inward: bool) {
-        let moment = self.moment();
-        let answer = self.charts.zoom_around(at, inward, moment);
-        self.handled(answer);
+    /// A mouse event on the main screen offered to the view shown (the wheel over
+    /// the chart zooms its time axis): `pointer` is the time under it if it is over
+    /// the chart's plot of the frame on screen. True if the view took it.
+    pub fn mouse_on_view(&mut self, m: MouseEvent, area: Rect, pointer: Option<f64>) -> bool {
+        let moment = Moment {
+            pointer,
+            ..self.moment()
+        };
+        let answer = self.charts.handle(&Input::Mouse(m, area), moment);
+        self.handled(answer)
     }
 
     /// Offers `action` to the component of the view shown that owns it (the Forces

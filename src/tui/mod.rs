@@ -337,19 +337,16 @@ fn on_mouse_main(app: &mut App, screen: &Screen, m: MouseEvent) -> bool {
         app.seek(t);
         return true;
     }
-    // The wheel over the chart zooms its time axis around the pointer's time.
-    let wheel = match m.kind {
-        MouseEventKind::ScrollUp => Some(true),
-        MouseEventKind::ScrollDown => Some(false),
-        _ => None,
+    let Some(frame) = screen.frame() else {
+        return false;
     };
-    if let Some(inward) = wheel
-        && let Some(t) = screen.chart_time_at(app, m.column, m.row)
-    {
-        app.zoom_around(t, inward);
+    // The view shown takes its mouse events (the wheel over the chart zooms its time
+    // axis around the pointer's time).
+    let pointer = screen.chart_time_at(app, m.column, m.row);
+    if app.mouse_on_view(m, frame.area, pointer) {
         return true;
     }
-    let Some(panels) = screen.frame().and_then(|f| f.panels) else {
+    let Some(panels) = frame.panels else {
         return false;
     };
     let hit = view::param_at(panels.params, app.selected(), m.column, m.row);
