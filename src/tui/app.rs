@@ -420,11 +420,13 @@ impl App {
 
     fn dispatch(&mut self, input: &Input) -> bool {
         let t = self.t;
-        let taken = self.offer_layers(input);
-        match input {
-            Input::Key(action) if !taken => self.apply_normal(*action),
-            Input::Key(_) | Input::Mouse(..) if !taken => return false,
-            _ => {}
+        match (self.offer_layers(input), input) {
+            (true, _) => {}
+            // What no popup took reaches the view shown and the main screen's keys.
+            (false, Input::Key(action)) => self.apply_normal(*action),
+            // A popup holds the mouse (the main screen's is offered only when none is
+            // open: `crate::tui::on_mouse_in`).
+            (false, Input::Mouse(..)) => return false,
         }
         if self.quit {
             return true;
