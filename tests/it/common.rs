@@ -186,7 +186,9 @@ pub fn press(app: &mut App, script: &str) {
 
 /// Selects the parameter row of `key`.
 pub fn select(app: &mut App, key: Key) {
-    app.selected = ROWS.iter().position(|p| p.key == key).unwrap();
+    app.apply(groovelab::tui::app::Action::Select(
+        ROWS.iter().position(|p| p.key == key).unwrap(),
+    ));
 }
 
 /// The app as `render` leaves it just before drawing: the lab of `scene` and `data`,
@@ -202,7 +204,7 @@ pub fn rendered(
     library: Library,
 ) -> App {
     let mut app = cli::opened(scene, data, library).unwrap();
-    app.writes_files = false;
+    app.write_no_files();
     let keys = keys.map_or(Ok(Vec::new()), keys::parse_script).unwrap();
     replay_settled(&mut app, &keys);
     if let Some(t) = at {

@@ -819,7 +819,7 @@ fn flat_table() -> (
     );
     let screen = text(&app, (120, 40), false);
     let view = words(&screen, "verdict");
-    let State::Ready(Ok(f)) = app.fit.fits() else {
+    let State::Ready(Ok(f)) = app.fit().fits() else {
         panic!("no fits")
     };
     let p = &f.model_fit;

@@ -225,7 +225,7 @@ fn the_app_tracks_on_a_worker_and_takes_the_data_in_when_done() {
     assert_eq!(own.name, dir.display().to_string());
     assert!(app.lab.generation() > before);
     assert_eq!(app.lab.scene.mu, 0.2);
-    assert!(app.video.view.is_some(), "the pictures");
+    assert!(app.video().view.is_some(), "the pictures");
     assert!(
         matches!(&app.status, Status::Info(s) if s.starts_with("tracked ")),
         "{:?}",
@@ -235,7 +235,7 @@ fn the_app_tracks_on_a_worker_and_takes_the_data_in_when_done() {
     // the exact solution's centres mapped into the video by the tracker's scale,
     // groove and origin lie on the tracked ones (the film was made with this scene;
     // 0.1 px of centre noise, 0.4 % of scale: well under a pixel).
-    let view = app.video.view.clone().unwrap();
+    let view = app.video().view.clone().unwrap();
     app.lab.set(Key::Mu, 0.17).unwrap();
     let (mut compared, mut worst) = (0, 0.0f64);
     for k in 0..FRAMES {
@@ -322,7 +322,7 @@ fn the_tracking_shows_its_progress_and_a_key_never_waits_for_it() {
         None
     });
     let mut spins = 0u64;
-    while app.video.progress() != Some((3, 10)) {
+    while app.video().progress() != Some((3, 10)) {
         std::thread::yield_now();
         spins += 1;
         assert!(spins < 1 << 32, "the job never started");
@@ -337,7 +337,7 @@ fn the_tracking_shows_its_progress_and_a_key_never_waits_for_it() {
     assert!(text.contains("tracking clip.mp4: frame 3 of 10"), "{text}");
     tx.send(()).unwrap();
     app.wait();
-    assert_eq!(app.video.progress(), None);
+    assert_eq!(app.video().progress(), None);
 }
 
 #[test]

@@ -66,7 +66,7 @@ fn framed_rows<'a>(
     let blk = block(title, theme);
     let inner = blk.inner(area);
     blk.render(area, buf);
-    match app.methods.state() {
+    match app.methods().state() {
         State::Ready(rows) => Some((rows, inner)),
         other => {
             super::panel::computing(&other, "running every method", inner, buf, theme);
