@@ -236,9 +236,18 @@ pub fn paper_scene() -> groovelab::physics::scene::Scene {
     preset_scene("paper-b4.9")
 }
 
-/// A fresh scratch folder for one test of an area, named by the process.
+/// Where the tests of `area` keep their files: `target/tmp/AREA` (cargo's folder for
+/// integration tests' files). Each run empties the folders it uses and leaves them for
+/// the next run to reuse, so runs do not pile folders up in the system's temporary
+/// folder, and a failed test's files are there to look at.
+pub fn scratch_root(area: &str) -> std::path::PathBuf {
+    std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(area)
+}
+
+/// A fresh, empty scratch folder for one test of an area (`target/tmp/AREA/TEST`).
 pub fn scratch_dir(area: &str, test: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("groovelab-{area}-{}-{test}", std::process::id()));
+    let dir = scratch_root(area).join(test);
+    let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     dir
 }

@@ -10,10 +10,7 @@ use groovelab::tui::app::{App, Mode, Status};
 use crate::common::{self, press};
 
 fn scratch(test: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("groovelab-exports-{}-{test}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+    crate::common::scratch_dir("exports", test)
 }
 
 fn app_in(dir: &std::path::Path, preset: &str) -> App {

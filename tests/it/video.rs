@@ -98,10 +98,7 @@ fn small_frames() -> &'static [Vec<u8>] {
 }
 
 fn dir(test: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("groovelab-video-{}-{test}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    crate::common::scratch_dir("video", test)
 }
 
 /// Writes `frames` as `frame0001.png` … into `dir`, leaving out the numbers `skip`.

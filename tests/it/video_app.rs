@@ -34,9 +34,9 @@ pub fn look() -> Look {
 
 pub const FRAMES: usize = 50;
 
-/// This run's scratch folder.
+/// The scratch folder of these tests (`target/tmp/video-app`, reused by each run).
 fn scratch() -> PathBuf {
-    let d = std::env::temp_dir().join(format!("groovelab-video-app-{}", std::process::id()));
+    let d = crate::common::scratch_root("video-app");
     std::fs::create_dir_all(&d).unwrap();
     d
 }
