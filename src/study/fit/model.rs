@@ -492,11 +492,7 @@ pub(super) fn scored_fit_within(
         restitution_se: se(Free::Restitution),
         rolling_resistance: fitted.rolling_resistance,
         rolling_resistance_se: se(Free::RollingResistance),
-        rms: {
-            // In the data's own units, whatever the weights.
-            let raw = labelled_residuals(&fitted, m, &idx, target, false, evals).0;
-            (raw.iter().map(|x| x * x).sum::<f64>() / raw.len().max(1) as f64).sqrt()
-        },
+        rms: raw_rms(&fitted, m, &idx, target, evals),
         points: idx.len(),
         regime_predicted: derived.regime,
         regime_observed,
@@ -514,6 +510,12 @@ pub(super) fn scored_fit_within(
         every,
         scale,
     }))
+}
+
+/// The RMS of the unweighted residuals: in the data's own units, whatever the weights.
+fn raw_rms(fitted: &Scene, m: &Measured, idx: &[usize], target: Target, evals: &mut Evals) -> f64 {
+    let raw = labelled_residuals(fitted, m, idx, target, false, evals).0;
+    (raw.iter().map(|x| x * x).sum::<f64>() / raw.len().max(1) as f64).sqrt()
 }
 
 #[cfg(test)]
