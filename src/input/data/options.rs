@@ -2,12 +2,24 @@
 
 pub use crate::study::measured::MAX_ROWS;
 
-/// Why a data file cannot be used; each message names the line.
+pub use super::problem::{DataProblem, VideoScale};
+
+/// Why the data file `file` cannot be used; each message names the line.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
-#[error("{file}: {what}")]
+#[error("{}: {what}", file.display())]
 pub struct DataError {
-    pub file: String,
-    pub what: String,
+    pub file: std::path::PathBuf,
+    pub what: DataProblem,
+}
+
+impl DataError {
+    /// `what` is wrong with the file named `file`.
+    pub fn new(file: &str, what: impl Into<DataProblem>) -> DataError {
+        DataError {
+            file: file.into(),
+            what: what.into(),
+        }
+    }
 }
 
 /// How to read a file beyond what its header says.

@@ -4,7 +4,8 @@
 //! in other units than the header says named in the error.
 
 use super::notes::{Notes, UnitNote};
-use super::options::{DataError, MAX_ROWS, Reading};
+use super::options::{DataError, DataProblem, MAX_ROWS, Reading};
+use super::positions::RowError;
 use super::scales::{
     FASTEST_BALL, LONGEST_FRAME, SLOWEST_BALL, SPEEDS, TIMES, fitting, frame_spacing,
 };
@@ -65,14 +66,9 @@ fn columns(
     file: &str,
     reading: &Reading,
 ) -> Result<(VelocityColumns, Units), DataError> {
-    let err = |what: String| DataError {
-        file: file.to_string(),
-        what,
-    };
+    let err = |what: DataProblem| DataError::new(file, what);
     let mut rows = table.rows();
-    let header = rows
-        .next()
-        .ok_or_else(|| err("the file is empty, expected a header with t, v_cm and v_t".into()))?;
+    let header = rows.next().ok_or_else(|| err(DataProblem::Empty))?;
     let find = |want: &str| {
         (0..header.len()).find_map(|i| {
             column(header.cell(i))
@@ -80,13 +76,14 @@ fn columns(
                 .map(|(_, f)| (i, f))
         })
     };
-    let missing = |name: &str| {
-        let cells: Vec<&str> = (0..header.len()).map(|i| header.cell(i)).collect();
-        err(format!(
-            "line {}: no column '{name}' in the header '{}', expected columns t, v_cm and v_t (units in brackets or as options)",
-            header.line,
-            cells.join(" ")
-        ))
+    let missing = |name: &'static str| {
+        err(DataProblem::NoColumn {
+            line: header.line,
+            name,
+            header: (0..header.len())
+                .map(|i| header.cell(i).to_string())
+                .collect(),
+        })
     };
     let (it, ft) = find("t").ok_or_else(|| missing("t"))?;
     let (ic, fc) = find("v_cm").ok_or_else(|| missing("v_cm"))?;
@@ -95,35 +92,35 @@ fn columns(
     let (mut t, mut v_cm, mut v_t) = (Vec::new(), Vec::new(), Vec::new());
     for row in rows {
         if t.len() == MAX_ROWS {
-            return Err(err(format!(
-                "line {}: more than {MAX_ROWS} data rows, allowed at most {MAX_ROWS}",
-                row.line
-            )));
+            return Err(err(RowError::TooMany { line: row.line }.into()));
         }
-        let get = |i: usize, name: &str| {
+        let get = |i: usize, name: &'static str| {
             let cell = row.cell(i);
             number(cell).ok_or_else(|| {
-                err(format!(
-                    "line {}: {name} = '{cell}' is not a finite number",
-                    row.line
-                ))
+                err(DataProblem::NotANumber {
+                    line: row.line,
+                    name,
+                    cell: cell.to_string(),
+                })
             })
         };
         let time = get(it, "t")? * units.time.0;
         if let Some(&prev) = t.last()
             && time <= prev
         {
-            return Err(err(format!(
-                "line {}: t = {time} s does not increase (previous {prev} s), allowed strictly increasing times",
-                row.line
-            )));
+            return Err(err(RowError::NotIncreasing {
+                line: row.line,
+                time,
+                prev,
+            }
+            .into()));
         }
         t.push(time);
         v_cm.push(get(ic, "v_cm")? * units.v_cm.0);
         v_t.push(get(iv, "v_t")? * units.v_t.0);
     }
     if t.len() < 3 {
-        return Err(err(format!("{} data rows, allowed at least 3", t.len())));
+        return Err(err(DataProblem::TooFewRows { rows: t.len() }));
     }
     Ok(((t, v_cm, v_t), units))
 }
@@ -151,17 +148,12 @@ pub(super) fn read_table(
     file: &str,
     reading: &Reading,
 ) -> Result<(Measured, Notes), DataError> {
-    let err = |what: String| DataError {
-        file: file.to_string(),
-        what,
-    };
+    let err = |what: DataProblem| DataError::new(file, what);
     let ((mut t, mut v_cm, mut v_t), units) = columns(table, file, reading)?;
     let mirrored = turn_if_reversed(&t, &mut v_cm, &mut v_t, reading.impact_at);
     let impact = match reading.impact_at {
         Some(at) => at,
-        None => detect_impact(&t, &v_cm).ok_or_else(|| {
-            err("no impact found (v_cm never drops sharply); give its time with --impact-at".into())
-        })?,
+        None => detect_impact(&t, &v_cm).ok_or_else(|| err(DataProblem::NoImpact))?,
     };
     for x in &mut t {
         *x -= impact;
@@ -169,21 +161,18 @@ pub(super) fn read_table(
     // Huge but finite values can still overflow once scaled or shifted.
     for (name, series) in [("t", &t), ("v_cm", &v_cm), ("v_t", &v_t)] {
         if let Some(i) = series.iter().position(|v| !v.is_finite()) {
-            return Err(err(format!(
-                "data row {}: {name} is not finite once in SI units with the impact at t = 0, allowed finite values",
-                i + 1
-            )));
+            return Err(err(DataProblem::NotFiniteInSi { row: i + 1, name }));
         }
     }
-    approach_seen(&t, impact).map_err(|e| err(e.to_string()))?;
+    approach_seen(&t, impact).map_err(|e| err(e.into()))?;
     let m = Measured {
         mirrored,
         ..Measured::velocities(t, v_cm, v_t)
     };
-    m.check_magnitudes().map_err(|e| err(e.to_string()))?;
+    m.check_magnitudes().map_err(|e| err(e.into()))?;
     units
         .check_plausible(&m.t, &m.v_cm, &m.v_t)
-        .map_err(|e| err(e.to_string()))?;
+        .map_err(|e| err(e.into()))?;
     let notes = Notes {
         format: "table (t, v_cm, v_t)".into(),
         tracks: Vec::new(),
