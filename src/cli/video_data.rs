@@ -73,10 +73,10 @@ pub fn pending(scene: &SceneArgs, data: &DataArgs) -> Result<Option<Options>, Cl
     }
     let info = crate::input::video::check(path, &Default::default()).map_err(CliError::from)?;
     if info.rate(options.fps).is_none() {
-        return Err(CliError::from(crate::input::video::VideoError {
-            file: path.display().to_string(),
-            what: crate::input::video::tracked::NO_RATE.into(),
-        }));
+        return Err(CliError::from(crate::input::video::VideoError::new(
+            path,
+            crate::input::video::VideoProblem::NoRate,
+        )));
     }
     Ok(Some(options))
 }

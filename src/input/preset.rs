@@ -4,7 +4,7 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::input::file::{FileError, MAX_FILE_BYTES, read_user_file};
+use crate::input::file::{FileError, FileRole, MAX_FILE_BYTES, read_user_file};
 use crate::settings::spec::SceneSpec;
 use crate::study::measured::Measured;
 use crate::study::preset::{self, Preset, PresetError, PresetOrigin};
@@ -56,7 +56,7 @@ pub fn load(name_or_path: &str) -> Result<Preset, LoadError> {
     }
     // Something is there: it must be a regular file of sane size (not a FIFO
     // that would block, not /dev/zero).
-    let text = read_user_file(&path, "preset file", MAX_FILE_BYTES).map_err(LoadError::Io)?;
+    let text = read_user_file(&path, FileRole::Preset, MAX_FILE_BYTES).map_err(LoadError::Io)?;
     Ok(Preset::parse(
         &text,
         &path.display().to_string(),

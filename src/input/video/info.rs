@@ -3,12 +3,24 @@
 
 use crate::study::vision::Gray;
 
-/// Why a video or folder cannot be read: `{file}: {what}`.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-#[error("{file}: {what}")]
+pub use super::problem::VideoProblem;
+
+/// Why the video or folder `file` cannot be read (or written): `{file}: {what}`.
+#[derive(Debug, thiserror::Error)]
+#[error("{}: {what}", file.display())]
 pub struct VideoError {
-    pub file: String,
-    pub what: String,
+    pub file: std::path::PathBuf,
+    pub what: VideoProblem,
+}
+
+impl VideoError {
+    /// `what` is wrong with the video or folder `file`.
+    pub fn new(file: &std::path::Path, what: impl Into<VideoProblem>) -> VideoError {
+        VideoError {
+            file: file.to_path_buf(),
+            what: what.into(),
+        }
+    }
 }
 
 /// The install hint when ffmpeg or ffprobe is missing.
