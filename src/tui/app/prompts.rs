@@ -131,7 +131,7 @@ impl App {
                 self.status = Status::Info(format!("saved {}", path.display()));
             }
             Err(SaveError::Exists(_)) => self.mode = Mode::ConfirmOverwrite(name.trim().into()),
-            Err(e @ SaveError::BadName(_)) => {
+            Err(e @ SaveError::BadName { .. }) => {
                 // Keep the dialog open with the name as typed, and say why.
                 self.status = Status::Error(format!("not saved: {e}"));
                 self.mode = Mode::SaveName(Field::new(name));
