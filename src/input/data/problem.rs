@@ -142,7 +142,7 @@ pub enum DataProblem {
         line: usize,
         key: Key,
         value: String,
-        error: UnitError,
+        error: Box<UnitError>,
     },
 }
 

@@ -44,7 +44,7 @@ pub fn scene_of(text: &str, file: &str) -> Result<SceneSpec, DataError> {
                 line: n + 1,
                 key,
                 value: value.trim().to_string(),
-                error,
+                error: Box::new(error),
             })
         })?;
         spec.set(key, v);
