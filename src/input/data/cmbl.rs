@@ -9,8 +9,9 @@ use roxmltree::Node;
 
 use super::layout::{Axis, position_column};
 use super::notes::Notes;
-use super::options::{DataError, DataProblem, Reading, VideoScale};
+use super::options::Reading;
 use super::positions::read_table;
+use super::problem::{DataError, DataProblem, VideoScale};
 use super::table::Table;
 use super::xml::{self, child_text};
 use crate::study::measured::Track;

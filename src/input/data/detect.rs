@@ -4,7 +4,8 @@
 //! accelerations only (phyphox), refused with what groovelab needs instead.
 
 use super::notes::Notes;
-use super::options::{DataError, DataProblem, Reading};
+use super::options::Reading;
+use super::problem::{AccelerationsOnly, DataError, DataProblem};
 use super::table::{self, Table};
 use super::{cmbl, positions, trk, velocities, vernier};
 use crate::study::measured::{RawSeries, Track};
@@ -79,17 +80,6 @@ fn read_table(
     }
     accelerations_only(table).map_err(|e| DataError::new(file, e))?;
     positions::read_table(table, file, reading).map(|(t, n)| (RawSeries::Positions(t), n))
-}
-
-/// A table of accelerations only (phyphox's accelerometer), at its header's `line`
-/// with those `columns`: what groovelab needs instead.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-#[error(
-    "line {line}: the file holds accelerations only ({columns}), no positions or velocities: groovelab needs the ball's position over time (a video track: t, x, y) or its velocities (t, v_cm, v_t); a phone's accelerometer (phyphox) cannot give them"
-)]
-pub struct AccelerationsOnly {
-    pub line: usize,
-    pub columns: String,
 }
 
 /// A table of accelerations only (phyphox's accelerometer): refused with what

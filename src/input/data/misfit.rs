@@ -131,7 +131,12 @@ impl Units {
     /// The units of t, v_cm and v_t from the header's (`ft`, `fc`, `fv`) and the
     /// options: an option wins over the header, so that a header that states a wrong
     /// unit is set right by the option its error names.
-    pub(super) fn decide(reading: &Reading, ft: Option<f64>, fc: Option<f64>, fv: Option<f64>) -> Units {
+    pub(super) fn decide(
+        reading: &Reading,
+        ft: Option<f64>,
+        fc: Option<f64>,
+        fv: Option<f64>,
+    ) -> Units {
         let by =
             |option: Option<f64>, flag: &'static str, header: Option<f64>| match (option, header) {
                 (Some(f), _) => (f, Some(flag)),
@@ -158,7 +163,12 @@ impl Units {
     /// stated or assumed: frames a second or more apart (ms, not s), speeds of 10 m/s
     /// or more (cm/s, not m/s) or all below 1 mm/s (m/s read as mm/s). The error says
     /// what the numbers look like and names the unit that fits and its option.
-    pub(super) fn check_plausible(&self, t: &[f64], v_cm: &[f64], v_t: &[f64]) -> Result<(), Implausible> {
+    pub(super) fn check_plausible(
+        &self,
+        t: &[f64],
+        v_cm: &[f64],
+        v_t: &[f64],
+    ) -> Result<(), Implausible> {
         let frame = frame_spacing(t);
         let fastest = v_cm.iter().chain(v_t).fold(0.0_f64, |a, v| a.max(v.abs()));
         let mut misfits = Vec::new();

@@ -24,7 +24,8 @@ mod xml;
 
 pub use detect::read_with_notes;
 pub use notes::{Notes, UnitNote};
-pub use options::{DataError, DataProblem, MAX_ROWS, Reading, VideoScale};
+pub use options::{MAX_ROWS, Reading};
+pub use problem::{DataError, DataProblem, VideoScale};
 pub use report::{Gap, Report, inspect};
 pub use scene::scene_of;
 pub use table::file_unit;

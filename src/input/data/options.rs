@@ -1,26 +1,6 @@
-//! How a data file is to be read beyond what it says itself, and why it cannot be.
+//! How a data file is to be read beyond what it says itself.
 
 pub use crate::study::measured::MAX_ROWS;
-
-pub use super::problem::{DataProblem, VideoScale};
-
-/// Why the data file `file` cannot be used; each message names the line.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-#[error("{}: {what}", file.display())]
-pub struct DataError {
-    pub file: std::path::PathBuf,
-    pub what: DataProblem,
-}
-
-impl DataError {
-    /// `what` is wrong with the file named `file`.
-    pub fn new(file: &str, what: impl Into<DataProblem>) -> DataError {
-        DataError {
-            file: file.into(),
-            what: what.into(),
-        }
-    }
-}
 
 /// How to read a file beyond what its header says.
 #[derive(Clone, Debug, Default, PartialEq)]

@@ -10,31 +10,11 @@ use super::layout::{
     Axis, Col, LayoutError, find_header, name_tracks, pick_roles, position_column,
 };
 use super::notes::{Notes, UnitNote};
-use super::options::{DataError, DataProblem, MAX_ROWS, Reading};
+use super::options::{MAX_ROWS, Reading};
+use super::problem::{DataError, DataProblem, RowError};
 use super::scales::{Given, LENGTHS, TIMES, check_track};
 use super::table::{Table, TableRow, missing, number};
 use crate::study::measured::Track;
-
-/// Why a data row of a position file cannot be read (`line`: the file's line).
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-pub enum RowError {
-    #[error("line {line}: more than {MAX_ROWS} data rows, allowed at most {MAX_ROWS}")]
-    TooMany { line: usize },
-    /// The cell of column `name`, as written, is no finite number.
-    #[error(
-        "line {line}: {name} = '{cell}' is not a finite number (an empty cell counts as missing)"
-    )]
-    NotANumber {
-        line: usize,
-        name: &'static str,
-        cell: String,
-    },
-    /// Times in s.
-    #[error(
-        "line {line}: t = {time} s does not increase (previous {prev} s), allowed strictly increasing times"
-    )]
-    NotIncreasing { line: usize, time: f64, prev: f64 },
-}
 
 /// Parses a position file (see the module doc) into a [`Track`] in SI units.
 pub fn parse(text: &str, file: &str, reading: &Reading) -> Result<Track, DataError> {

@@ -1,17 +1,35 @@
 //! Why a data file cannot be used, as values: the line, the column, the unit, the
 //! text the file has where it has it; the sentence is made only by `Display`, where
-//! the error is printed.
+//! the error is printed. The readers' own errors that a `DataProblem` holds live here
+//! too (the row, accelerations-only and approach errors), so that this file imports
+//! no reader and every reader imports it.
 
-use super::detect::AccelerationsOnly;
 use super::layout::LayoutError;
-use super::positions::RowError;
-use super::scales::ScaleError;
 use super::misfit::Implausible;
-use super::velocities::TooFewBefore;
+use super::options::MAX_ROWS;
+use super::scales::ScaleError;
 use super::xml::XmlError;
 use crate::settings::params::{Key, PARAMS};
 use crate::settings::units::UnitError;
 use crate::study::measured::{NoCommonFrame, OutOfLabRange, TrackError};
+
+/// Why the data file `file` cannot be used; each message names the line.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error("{}: {what}", file.display())]
+pub struct DataError {
+    pub file: std::path::PathBuf,
+    pub what: DataProblem,
+}
+
+impl DataError {
+    /// `what` is wrong with the file named `file`.
+    pub fn new(file: &str, what: impl Into<DataProblem>) -> DataError {
+        DataError {
+            file: file.into(),
+            what: what.into(),
+        }
+    }
+}
 
 /// What is wrong with a data file (the file itself is named by `DataError`).
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -87,7 +105,7 @@ pub enum DataProblem {
     NoFrameDuration,
     #[error(
         "track '{track}' has more than {max} frames, allowed at most {max}",
-        max = super::MAX_ROWS
+        max = MAX_ROWS
     )]
     TooManyFrames { track: String },
     #[error(
@@ -194,3 +212,52 @@ fn rows_not_lines(what: &str) -> String {
         _ => what.to_string(),
     }
 }
+
+/// Why a data row of a position file cannot be read (`line`: the file's line).
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum RowError {
+    #[error("line {line}: more than {MAX_ROWS} data rows, allowed at most {MAX_ROWS}")]
+    TooMany { line: usize },
+    /// The cell of column `name`, as written, is no finite number.
+    #[error(
+        "line {line}: {name} = '{cell}' is not a finite number (an empty cell counts as missing)"
+    )]
+    NotANumber {
+        line: usize,
+        name: &'static str,
+        cell: String,
+    },
+    /// Times in s.
+    #[error(
+        "line {line}: t = {time} s does not increase (previous {prev} s), allowed strictly increasing times"
+    )]
+    NotIncreasing { line: usize, time: f64, prev: f64 },
+}
+
+/// A table of accelerations only (phyphox's accelerometer), at its header's `line`
+/// with those `columns`: what groovelab needs instead.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error(
+    "line {line}: the file holds accelerations only ({columns}), no positions or velocities: groovelab needs the ball's position over time (a video track: t, x, y) or its velocities (t, v_cm, v_t); a phone's accelerometer (phyphox) cannot give them"
+)]
+pub struct AccelerationsOnly {
+    pub line: usize,
+    pub columns: String,
+}
+
+/// A velocity file with fewer than [`FRAMES_BEFORE`] frames up to its first impact
+/// (`impact`: its time in the file's time, s).
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error(
+    "only {before} frame{} before the impact at t = {} s, at least {FRAMES_BEFORE} needed to see the approach (start the recording before the balls meet)",
+    if *before == 1 { "" } else { "s" },
+    crate::settings::units::significant(*impact, 4)
+)]
+pub struct TooFewBefore {
+    pub before: usize,
+    pub impact: f64,
+}
+
+/// Fewest frames up to the first impact (a frame at it counts) a velocity file needs:
+/// the approach must be seen, not only guessed from one frame.
+pub(super) const FRAMES_BEFORE: usize = 2;

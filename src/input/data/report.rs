@@ -6,7 +6,8 @@
 use serde::Serialize;
 
 use super::notes::Notes;
-use super::options::{DataError, DataProblem, Reading};
+use super::options::Reading;
+use super::problem::{DataError, DataProblem};
 use super::scales::{approach_speed, frame_spacing};
 use crate::study::measured::track::derivative::scatter;
 use crate::study::measured::{self, Derive, RawSeries, Series, Track};

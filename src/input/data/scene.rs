@@ -1,7 +1,7 @@
 //! The scene a data file says it was taken in: `# scene NAME = VALUE` comment lines,
 //! as the app's CSV export writes them (`study::export::scene_comments`).
 
-use super::options::{DataError, DataProblem};
+use super::problem::{DataError, DataProblem};
 use crate::settings::params::Key;
 use crate::settings::spec::SceneSpec;
 use crate::settings::units::parse_quantity;

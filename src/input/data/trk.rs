@@ -10,7 +10,8 @@ use roxmltree::Node;
 
 use super::layout::pick_roles;
 use super::notes::{Notes, UnitNote};
-use super::options::{DataError, DataProblem, MAX_ROWS, Reading};
+use super::options::{MAX_ROWS, Reading};
+use super::problem::{DataError, DataProblem};
 use super::scales::{Given, LENGTHS, check_track};
 use super::xml::{self, child};
 use crate::settings::units::{Dimension, significant};

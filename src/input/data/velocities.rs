@@ -5,8 +5,8 @@
 
 use super::misfit::Units;
 use super::notes::Notes;
-use super::options::{DataError, DataProblem, MAX_ROWS, Reading};
-use super::positions::RowError;
+use super::options::{MAX_ROWS, Reading};
+use super::problem::{DataError, DataProblem, FRAMES_BEFORE, RowError, TooFewBefore};
 use super::table::{Table, clean, number, unit_factor};
 use crate::settings::units::Dimension;
 use crate::study::measured::Measured;
@@ -218,23 +218,6 @@ fn approach_seen(t: &[f64], impact: f64) -> Result<(), TooFewBefore> {
     }
     Err(TooFewBefore { before, impact })
 }
-
-/// A velocity file with fewer than [`FRAMES_BEFORE`] frames up to its first impact
-/// (`impact`: its time in the file's time, s).
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-#[error(
-    "only {before} frame{} before the impact at t = {} s, at least {FRAMES_BEFORE} needed to see the approach (start the recording before the balls meet)",
-    if *before == 1 { "" } else { "s" },
-    crate::settings::units::significant(*impact, 4)
-)]
-pub struct TooFewBefore {
-    pub before: usize,
-    pub impact: f64,
-}
-
-/// Fewest frames up to the first impact (a frame at it counts) a velocity file needs:
-/// the approach must be seen, not only guessed from one frame.
-const FRAMES_BEFORE: usize = 2;
 
 /// The first impact: where v_cm drops the most between neighbouring frames (the left
 /// ball reverses), if the drop is at least a third of the speed before it. When the

@@ -8,8 +8,9 @@ use std::path::Path;
 use std::process::{Child, ChildStdout, Command, Stdio};
 use std::thread::JoinHandle;
 
-use super::info::{Frames, Info, VideoError, VideoProblem};
+use super::info::{Frames, Info};
 use super::probe::url;
+use super::problem::{VideoError, VideoProblem};
 use crate::study::vision::Gray;
 
 /// The frames of the video at `path` (as `info` describes it).

@@ -5,7 +5,8 @@
 
 use std::path::{Path, PathBuf};
 
-use super::info::{Frames, Info, Limits, VideoError, VideoProblem};
+use super::info::{Frames, Info, Limits};
+use super::problem::{VideoError, VideoProblem};
 use crate::study::vision::Gray;
 
 /// True for a file named as a PNG or JPEG image.

@@ -1,30 +1,9 @@
-//! What a video or a folder of frames is, before its frames are read, and why one
-//! cannot be read: the types the readers share.
+//! What a video or a folder of frames is, before its frames are read: the types the
+//! readers share (why one cannot be read is `problem`'s).
 
 use crate::study::vision::Gray;
 
-pub use super::problem::VideoProblem;
-
-/// Why the video or folder `file` cannot be read (or written): `{file}: {what}`.
-#[derive(Debug, thiserror::Error)]
-#[error("{}: {what}", file.display())]
-pub struct VideoError {
-    pub file: std::path::PathBuf,
-    pub what: VideoProblem,
-}
-
-impl VideoError {
-    /// `what` is wrong with the video or folder `file`.
-    pub fn new(file: &std::path::Path, what: impl Into<VideoProblem>) -> VideoError {
-        VideoError {
-            file: file.to_path_buf(),
-            what: what.into(),
-        }
-    }
-}
-
-/// The install hint when ffmpeg or ffprobe is missing.
-pub const INSTALL_FFMPEG: &str = "reading a video needs ffmpeg and ffprobe, which are not installed (Debian/Ubuntu: apt-get install ffmpeg; macOS: brew install ffmpeg); a folder of numbered PNG/JPEG frames needs neither";
+use super::problem::VideoError;
 
 /// Where the frame rate comes from.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]

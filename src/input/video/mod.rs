@@ -18,8 +18,9 @@ pub mod write;
 
 use std::path::Path;
 
-pub use info::{Frames, INSTALL_FFMPEG, Info, Limits, RateSource, VideoError, VideoProblem};
+pub use info::{Frames, Info, Limits, RateSource};
 pub use probe::Probe;
+pub use problem::{INSTALL_FFMPEG, VideoError, VideoProblem};
 
 /// Opens `path`: a folder of numbered frames, or a video through ffprobe and ffmpeg.
 /// Refuses what is no video (empty, an image, audio, unreadable) and what is too

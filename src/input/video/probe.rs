@@ -9,7 +9,8 @@ use std::process::Command;
 
 use serde_json::Value;
 
-use super::info::{Info, Limits, VideoError, VideoProblem};
+use super::info::{Info, Limits};
+use super::problem::{VideoError, VideoProblem};
 
 /// ffprobe's answer for a file.
 #[derive(Clone, Debug, PartialEq)]

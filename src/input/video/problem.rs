@@ -2,10 +2,30 @@
 //! counts, the frames' paths, the system's own error and the words ffmpeg said; the
 //! sentence is made only by `Display`, where the error is printed.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
-use super::info::INSTALL_FFMPEG;
 use crate::study::vision::TracksError;
+
+/// Why the video or folder `file` cannot be read (or written): `{file}: {what}`.
+#[derive(Debug, thiserror::Error)]
+#[error("{}: {what}", file.display())]
+pub struct VideoError {
+    pub file: PathBuf,
+    pub what: VideoProblem,
+}
+
+impl VideoError {
+    /// `what` is wrong with the video or folder `file`.
+    pub fn new(file: &Path, what: impl Into<VideoProblem>) -> VideoError {
+        VideoError {
+            file: file.to_path_buf(),
+            what: what.into(),
+        }
+    }
+}
+
+/// The install hint when ffmpeg or ffprobe is missing.
+pub const INSTALL_FFMPEG: &str = "reading a video needs ffmpeg and ffprobe, which are not installed (Debian/Ubuntu: apt-get install ffmpeg; macOS: brew install ffmpeg); a folder of numbered PNG/JPEG frames needs neither";
 
 /// What is wrong with a video or folder (the file itself is named by `VideoError`).
 #[derive(Debug, thiserror::Error)]

@@ -6,7 +6,7 @@ use std::io::Write;
 use std::path::Path;
 use std::process::{Command, Stdio};
 
-use super::info::{VideoError, VideoProblem};
+use super::problem::{VideoError, VideoProblem};
 
 /// Writes one RGB frame (`width × height × 3` bytes) as a PNG file.
 pub fn png(path: &Path, rgb: &[u8], width: usize, height: usize) -> Result<(), VideoError> {
