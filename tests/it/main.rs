@@ -10,6 +10,7 @@ mod cli;
 mod closed_forms;
 mod data_files;
 mod data_scene;
+mod errors;
 mod exports;
 mod fit;
 mod forces;

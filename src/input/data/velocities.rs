@@ -3,14 +3,12 @@
 //! turned), the time origin moved to the first impact, and numbers that are plainly
 //! in other units than the header says named in the error.
 
-use super::notes::{Notes, UnitNote};
-use super::options::{DataError, MAX_ROWS, Reading};
-use super::scales::{
-    FASTEST_BALL, LONGEST_FRAME, SLOWEST_BALL, SPEEDS, TIMES, fitting, frame_spacing,
-};
+use super::misfit::Units;
+use super::notes::Notes;
+use super::options::{MAX_ROWS, Reading};
+use super::problem::{DataError, DataProblem, FRAMES_BEFORE, RowError, TooFewBefore};
 use super::table::{Table, clean, number, unit_factor};
 use crate::settings::units::Dimension;
-use crate::settings::units::significant;
 use crate::study::measured::Measured;
 
 /// Which quantity a velocity-file header cell names, and the SI factor its unit implies.
@@ -65,14 +63,9 @@ fn columns(
     file: &str,
     reading: &Reading,
 ) -> Result<(VelocityColumns, Units), DataError> {
-    let err = |what: String| DataError {
-        file: file.to_string(),
-        what,
-    };
+    let err = |what: DataProblem| DataError::new(file, what);
     let mut rows = table.rows();
-    let header = rows
-        .next()
-        .ok_or_else(|| err("the file is empty, expected a header with t, v_cm and v_t".into()))?;
+    let header = rows.next().ok_or_else(|| err(DataProblem::Empty))?;
     let find = |want: &str| {
         (0..header.len()).find_map(|i| {
             column(header.cell(i))
@@ -80,13 +73,14 @@ fn columns(
                 .map(|(_, f)| (i, f))
         })
     };
-    let missing = |name: &str| {
-        let cells: Vec<&str> = (0..header.len()).map(|i| header.cell(i)).collect();
-        err(format!(
-            "line {}: no column '{name}' in the header '{}', expected columns t, v_cm and v_t (units in brackets or as options)",
-            header.line,
-            cells.join(" ")
-        ))
+    let missing = |name: &'static str| {
+        err(DataProblem::NoColumn {
+            line: header.line,
+            name,
+            header: (0..header.len())
+                .map(|i| header.cell(i).to_string())
+                .collect(),
+        })
     };
     let (it, ft) = find("t").ok_or_else(|| missing("t"))?;
     let (ic, fc) = find("v_cm").ok_or_else(|| missing("v_cm"))?;
@@ -95,35 +89,35 @@ fn columns(
     let (mut t, mut v_cm, mut v_t) = (Vec::new(), Vec::new(), Vec::new());
     for row in rows {
         if t.len() == MAX_ROWS {
-            return Err(err(format!(
-                "line {}: more than {MAX_ROWS} data rows, allowed at most {MAX_ROWS}",
-                row.line
-            )));
+            return Err(err(RowError::TooMany { line: row.line }.into()));
         }
-        let get = |i: usize, name: &str| {
+        let get = |i: usize, name: &'static str| {
             let cell = row.cell(i);
             number(cell).ok_or_else(|| {
-                err(format!(
-                    "line {}: {name} = '{cell}' is not a finite number",
-                    row.line
-                ))
+                err(DataProblem::NotANumber {
+                    line: row.line,
+                    name,
+                    cell: cell.to_string(),
+                })
             })
         };
         let time = get(it, "t")? * units.time.0;
         if let Some(&prev) = t.last()
             && time <= prev
         {
-            return Err(err(format!(
-                "line {}: t = {time} s does not increase (previous {prev} s), allowed strictly increasing times",
-                row.line
-            )));
+            return Err(err(RowError::NotIncreasing {
+                line: row.line,
+                time,
+                prev,
+            }
+            .into()));
         }
         t.push(time);
         v_cm.push(get(ic, "v_cm")? * units.v_cm.0);
         v_t.push(get(iv, "v_t")? * units.v_t.0);
     }
     if t.len() < 3 {
-        return Err(err(format!("{} data rows, allowed at least 3", t.len())));
+        return Err(err(DataProblem::TooFewRows { rows: t.len() }));
     }
     Ok(((t, v_cm, v_t), units))
 }
@@ -151,17 +145,12 @@ pub(super) fn read_table(
     file: &str,
     reading: &Reading,
 ) -> Result<(Measured, Notes), DataError> {
-    let err = |what: String| DataError {
-        file: file.to_string(),
-        what,
-    };
+    let err = |what: DataProblem| DataError::new(file, what);
     let ((mut t, mut v_cm, mut v_t), units) = columns(table, file, reading)?;
     let mirrored = turn_if_reversed(&t, &mut v_cm, &mut v_t, reading.impact_at);
     let impact = match reading.impact_at {
         Some(at) => at,
-        None => detect_impact(&t, &v_cm).ok_or_else(|| {
-            err("no impact found (v_cm never drops sharply); give its time with --impact-at".into())
-        })?,
+        None => detect_impact(&t, &v_cm).ok_or_else(|| err(DataProblem::NoImpact))?,
     };
     for x in &mut t {
         *x -= impact;
@@ -169,235 +158,24 @@ pub(super) fn read_table(
     // Huge but finite values can still overflow once scaled or shifted.
     for (name, series) in [("t", &t), ("v_cm", &v_cm), ("v_t", &v_t)] {
         if let Some(i) = series.iter().position(|v| !v.is_finite()) {
-            return Err(err(format!(
-                "data row {}: {name} is not finite once in SI units with the impact at t = 0, allowed finite values",
-                i + 1
-            )));
+            return Err(err(DataProblem::NotFiniteInSi { row: i + 1, name }));
         }
     }
-    approach_seen(&t, impact).map_err(|e| err(e.to_string()))?;
+    approach_seen(&t, impact).map_err(|e| err(e.into()))?;
     let m = Measured {
         mirrored,
         ..Measured::velocities(t, v_cm, v_t)
     };
-    m.check_magnitudes().map_err(|e| err(e.to_string()))?;
+    m.check_magnitudes().map_err(|e| err(e.into()))?;
     units
         .check_plausible(&m.t, &m.v_cm, &m.v_t)
-        .map_err(|e| err(e.to_string()))?;
+        .map_err(|e| err(e.into()))?;
     let notes = Notes {
         format: "table (t, v_cm, v_t)".into(),
         tracks: Vec::new(),
         units: units.notes(),
     };
     Ok((m, notes))
-}
-
-/// The SI factors of a file's columns and who said each (`None`: nobody, the
-/// numbers are taken as SI).
-struct Units {
-    time: (f64, Option<&'static str>),
-    v_cm: (f64, Option<&'static str>),
-    v_t: (f64, Option<&'static str>),
-}
-
-/// One unit that does not fit the numbers, what they look like in it and the unit
-/// that fits.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Misfit {
-    /// Frames `frame` apart in the file's time unit, `rate` frames per s read as s,
-    /// `unit_rate` read as `unit`.
-    Times {
-        frame: f64,
-        rate: f64,
-        unit_rate: f64,
-        unit: &'static str,
-    },
-    /// Speeds up to `fastest` in the file's unit (`beyond`: too fast, else too slow
-    /// as m/s), `as_unit` m/s read as `unit`.
-    Speeds {
-        fastest: f64,
-        beyond: bool,
-        as_unit: f64,
-        unit: &'static str,
-    },
-}
-
-impl Misfit {
-    fn unit(&self) -> &'static str {
-        match self {
-            Misfit::Times { unit, .. } | Misfit::Speeds { unit, .. } => unit,
-        }
-    }
-
-    /// The option that reads the numbers in the unit that fits.
-    fn flag(&self) -> String {
-        match self {
-            Misfit::Times { unit, .. } => format!("--time-unit {unit}"),
-            Misfit::Speeds { unit, .. } => format!("--speed-unit {unit}"),
-        }
-    }
-
-    /// The header cells that would state the unit that fits.
-    fn header(&self) -> Vec<String> {
-        match self {
-            Misfit::Times { unit, .. } => vec![format!("t ({unit})")],
-            Misfit::Speeds { unit, .. } => vec![format!("v_cm ({unit})"), format!("v_t ({unit})")],
-        }
-    }
-
-    /// What the numbers look like.
-    fn looks(&self) -> String {
-        match *self {
-            Misfit::Times {
-                frame,
-                rate,
-                unit_rate,
-                unit,
-            } => format!(
-                "frames {} apart (as s: {rate:.1} frames/s; as {unit}: {unit_rate:.0} frames/s)",
-                significant(frame, 3),
-            ),
-            Misfit::Speeds {
-                fastest,
-                beyond,
-                as_unit,
-                unit,
-            } => format!(
-                "speeds up to {} (as m/s {} any ball in a groove; as {unit} {} m/s)",
-                significant(fastest, 3),
-                if beyond { "beyond" } else { "slower than" },
-                significant(as_unit, 3)
-            ),
-        }
-    }
-}
-
-/// A velocity file's numbers that are plainly not in the units they were read in:
-/// what does not fit, and who stated the units (none: they were assumed SI).
-#[derive(Clone, Debug, PartialEq)]
-pub struct Implausible {
-    pub misfits: Vec<Misfit>,
-    pub stated: Vec<&'static str>,
-}
-
-impl std::error::Error for Implausible {}
-
-impl std::fmt::Display for Implausible {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let misfits = &self.misfits;
-        let units: Vec<&str> = misfits.iter().map(|m| m.unit()).collect();
-        let flags: Vec<String> = misfits.iter().map(|m| m.flag()).collect();
-        let header: Vec<String> = misfits.iter().flat_map(|m| m.header()).collect();
-        let looks: Vec<String> = misfits.iter().map(|m| m.looks()).collect();
-        let (units, flags, header) = (units.join(" and "), flags.join(" "), header.join(", "));
-        if self.stated.is_empty() {
-            return write!(
-                f,
-                "the header gives no units and the numbers do not look like s and m/s: {}; if they are {units}, give {flags} (or units in the header: {header})",
-                looks.join(", ")
-            );
-        }
-        let fix = if self.stated.contains(&"the header") {
-            format!("fix the header ({header}) or give {flags}")
-        } else {
-            format!("give {flags}")
-        };
-        write!(
-            f,
-            "the numbers do not fit the units {}: {}; if they are {units}, {fix}",
-            stated_text(&self.stated),
-            looks.join(", ")
-        )
-    }
-}
-
-impl Units {
-    /// The units of t, v_cm and v_t from the header's (`ft`, `fc`, `fv`) and the
-    /// options: an option wins over the header, so that a header that states a wrong
-    /// unit is set right by the option its error names.
-    fn decide(reading: &Reading, ft: Option<f64>, fc: Option<f64>, fv: Option<f64>) -> Units {
-        let by =
-            |option: Option<f64>, flag: &'static str, header: Option<f64>| match (option, header) {
-                (Some(f), _) => (f, Some(flag)),
-                (None, Some(f)) => (f, Some("the header")),
-                (None, None) => (1.0, None),
-            };
-        Units {
-            time: by(reading.time_unit, "--time-unit", ft),
-            v_cm: by(reading.speed_unit, "--speed-unit", fc),
-            v_t: by(reading.speed_unit, "--speed-unit", fv),
-        }
-    }
-
-    /// What the file said about its units, for `groovelab data`.
-    fn notes(&self) -> Vec<UnitNote> {
-        vec![
-            UnitNote::of("time", &TIMES, self.time.0, self.time.1),
-            UnitNote::of("v_cm", &SPEEDS, self.v_cm.0, self.v_cm.1),
-            UnitNote::of("v_t", &SPEEDS, self.v_t.0, self.v_t.1),
-        ]
-    }
-
-    /// Numbers that are plainly not in the units they were read in, whether a unit was
-    /// stated or assumed: frames a second or more apart (ms, not s), speeds of 10 m/s
-    /// or more (cm/s, not m/s) or all below 1 mm/s (m/s read as mm/s). The error says
-    /// what the numbers look like and names the unit that fits and its option.
-    fn check_plausible(&self, t: &[f64], v_cm: &[f64], v_t: &[f64]) -> Result<(), Implausible> {
-        let frame = frame_spacing(t);
-        let fastest = v_cm.iter().chain(v_t).fold(0.0_f64, |a, v| a.max(v.abs()));
-        let mut misfits = Vec::new();
-        if frame >= LONGEST_FRAME {
-            let unit =
-                fitting(&TIMES, self.time.0, frame, 0.01, |f| f < LONGEST_FRAME).unwrap_or("ms");
-            misfits.push(Misfit::Times {
-                frame: frame / self.time.0,
-                rate: 1.0 / frame,
-                unit_rate: 1.0 / (frame / self.time.0 * unit_factor_of(&TIMES, unit)),
-                unit,
-            });
-        }
-        let plausible = |v: f64| (SLOWEST_BALL..FASTEST_BALL).contains(&v);
-        if fastest > 0.0 && !plausible(fastest) {
-            let unit = fitting(&SPEEDS, self.v_cm.0, fastest, 0.5, plausible).unwrap_or("cm/s");
-            misfits.push(Misfit::Speeds {
-                fastest: fastest / self.v_cm.0,
-                beyond: fastest >= FASTEST_BALL,
-                as_unit: fastest / self.v_cm.0 * unit_factor_of(&SPEEDS, unit),
-                unit,
-            });
-        }
-        if misfits.is_empty() {
-            return Ok(());
-        }
-        let stated = [self.time.1, self.v_cm.1, self.v_t.1]
-            .into_iter()
-            .flatten()
-            .collect();
-        Err(Implausible { misfits, stated })
-    }
-}
-
-/// The SI factor of `name` among `units`.
-fn unit_factor_of(units: &[(&'static str, f64)], name: &str) -> f64 {
-    units
-        .iter()
-        .find(|(n, _)| *n == name)
-        .map_or(1.0, |(_, f)| *f)
-}
-
-/// Who stated the units, once each: "the header gives", "the header and --time-unit give".
-fn stated_text(stated: &[&str]) -> String {
-    let mut who: Vec<&str> = Vec::new();
-    for s in stated {
-        if !who.contains(s) {
-            who.push(s);
-        }
-    }
-    format!(
-        "{} give{}",
-        who.join(" and "),
-        if who.len() == 1 { "s" } else { "" }
-    )
 }
 
 /// A file recorded with x pointing away from the other ball: turned, so that the
@@ -440,23 +218,6 @@ fn approach_seen(t: &[f64], impact: f64) -> Result<(), TooFewBefore> {
     }
     Err(TooFewBefore { before, impact })
 }
-
-/// A velocity file with fewer than [`FRAMES_BEFORE`] frames up to its first impact
-/// (`impact`: its time in the file's time, s).
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-#[error(
-    "only {before} frame{} before the impact at t = {} s, at least {FRAMES_BEFORE} needed to see the approach (start the recording before the balls meet)",
-    if *before == 1 { "" } else { "s" },
-    crate::settings::units::significant(*impact, 4)
-)]
-pub struct TooFewBefore {
-    pub before: usize,
-    pub impact: f64,
-}
-
-/// Fewest frames up to the first impact (a frame at it counts) a velocity file needs:
-/// the approach must be seen, not only guessed from one frame.
-const FRAMES_BEFORE: usize = 2;
 
 /// The first impact: where v_cm drops the most between neighbouring frames (the left
 /// ball reverses), if the drop is at least a third of the speed before it. When the

@@ -97,7 +97,7 @@ impl App {
                 self.status = Status::Info(format!("saved {}", path.display()));
             }
             Err(SaveError::Exists(_)) => self.open(Layer::Confirm(Confirm::new(name.trim()))),
-            Err(e @ SaveError::BadName(_)) => {
+            Err(e @ SaveError::BadName { .. }) => {
                 // Keep the dialog open with the name as typed, and say why.
                 self.status = Status::Error(format!("not saved: {e}"));
                 self.open(Layer::Prompt(Prompt::new(
