@@ -66,6 +66,13 @@ impl Pool {
             let _ = std::thread::Builder::new()
                 .name(format!("groovelab-worker-{i}"))
                 .spawn(move || {
+                    // Analyses yield the cores to the thread that reads keys and draws:
+                    // a key press never waits for them, even on two cores. Lowering a
+                    // thread's own priority needs no privilege; where it fails, the
+                    // work runs at the usual priority.
+                    let _ = thread_priority::set_current_thread_priority(
+                        thread_priority::ThreadPriority::Min,
+                    );
                     loop {
                         let task = rx.lock().unwrap_or_else(PoisonError::into_inner).recv();
                         let Ok(task) = task else { break };
