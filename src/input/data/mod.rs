@@ -7,6 +7,7 @@
 mod cmbl;
 mod detect;
 mod layout;
+mod misfit;
 mod notes;
 mod options;
 mod positions;
