@@ -39,5 +39,6 @@ mod story;
 mod sweep;
 mod tracks;
 mod tui;
+mod units_checked;
 mod video;
 mod video_app;

@@ -18,6 +18,59 @@ pub const FASTEST_BALL: f64 = 10.0;
 /// in a length unit too small (metres read as mm).
 pub const SLOWEST_BALL: f64 = 1e-3;
 
+/// The fastest change of a ball's spin speed v_t (m/s²): in a groove it changes only by
+/// kinetic friction, at (5/2) k μ_k g with k ≤ 1 (physics.md §3), so 10 g would need
+/// μ_k ≥ 4, beyond any pair of solid surfaces (rubber on dry concrete is about 1); the
+/// impact, a force through the centre, leaves v_t as it was. A file in cm/s read as m/s
+/// shows a hundred times the real change (1 to 3 m/s² in the lab: 100 to 300 m/s²).
+pub const FASTEST_SPIN_CHANGE: f64 = 10.0 * 9.806_65;
+
+/// A change of v_t a ball in this experiment typically shows while it slides (m/s²):
+/// of the speed units a file may be in, the one that brings the change nearest to it
+/// is named.
+pub const TYPICAL_SPIN_CHANGE: f64 = 2.0;
+
+/// The shortest span (s) over which [`steepest_change`] fits a line: long enough that
+/// a tracker's scatter (0.1 m/s between frames at 240 frames/s) shows as a few m/s²,
+/// short enough to see a slow ball's slide (a few hundredths of a second).
+const CHANGE_SPAN: f64 = 0.02;
+
+/// The steepest change of `v` over time `t` (|dv/dt|, units of v per s): the largest
+/// slope of a least-squares line through the points of any stretch of at least
+/// [`CHANGE_SPAN`] and two frame intervals (at most 17 points of it, evenly spaced, in
+/// a very dense file). `None` with fewer than three points or no such stretch.
+pub fn steepest_change(t: &[f64], v: &[f64]) -> Option<f64> {
+    let n = t.len().min(v.len());
+    let mut steepest: Option<f64> = None;
+    let mut j = 0;
+    for i in 0..n {
+        j = j.max(i + 2);
+        while j < n && t[j] - t[i] < CHANGE_SPAN {
+            j += 1;
+        }
+        if j >= n {
+            break;
+        }
+        let stride = (j - i).div_ceil(16);
+        let points: Vec<(f64, f64)> = (i..=j)
+            .step_by(stride)
+            .map(|k| (t[k] - t[i], v[k]))
+            .collect();
+        let m = points.len() as f64;
+        let (mt, mv) = points
+            .iter()
+            .fold((0.0, 0.0), |(a, b), &(x, y)| (a + x / m, b + y / m));
+        let (sxy, sxx) = points.iter().fold((0.0, 0.0), |(a, b), &(x, y)| {
+            (a + (x - mt) * (y - mv), b + (x - mt) * (x - mt))
+        });
+        let slope = (sxy / sxx).abs();
+        if slope.is_finite() && steepest.is_none_or(|s| slope > s) {
+            steepest = Some(slope);
+        }
+    }
+    steepest
+}
+
 /// A speed a ball in this experiment typically has (m/s): of the length units a file
 /// may be in, the one that brings the numbers nearest to it is named.
 const TYPICAL_SPEED: f64 = 0.5;

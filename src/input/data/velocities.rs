@@ -133,6 +133,12 @@ pub(super) fn without_impact(
     reading: &Reading,
 ) -> Result<(Measured, Notes), DataError> {
     let ((t, v_cm, v_t), units) = columns(table, file, reading)?;
+    units
+        .check_plausible(&t, &v_cm, &v_t)
+        .map_err(|e| DataError {
+            file: file.to_string(),
+            what: e.to_string(),
+        })?;
     let notes = Notes {
         format: "table (t, v_cm, v_t)".into(),
         tracks: Vec::new(),

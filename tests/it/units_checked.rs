@@ -1,0 +1,124 @@
+//! Units checked beyond the speeds (issue 27): a velocity file whose speed unit makes
+//! the ball's spin change faster than friction can (a slow ball's cm/s under an m/s
+//! header) is refused naming the unit that fits, while genuine noisy files open; and
+//! options that do not apply to what a file holds are refused.
+
+use groovelab::physics::engine;
+use groovelab::physics::scene::{Scene, Span};
+use groovelab::study::video::Noise;
+
+fn groovelab(args: &[&str]) -> (Option<i32>, String, String) {
+    let out = crate::common::groovelab(args);
+    (
+        out.status.code(),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+/// The paper's groove (R = 2 cm, b = 4.9 cm, μ_k = 0.16 … ) with both balls at `v0`.
+fn scene(v0: f64) -> Scene {
+    let mut s = crate::common::paper_scene();
+    s.left.v0 = v0;
+    s.right.v0 = v0;
+    s
+}
+
+/// The left ball's v_cm and v_t from −0.2 s to 0.6 s at `fps`, the impact between two
+/// frames, with Gaussian noise `sigma` (m/s), written multiplied by `scale` (100: cm/s)
+/// under `header`.
+fn velocity_file(v0: f64, fps: f64, sigma: f64, scale: f64, header: &str) -> String {
+    let sol = engine::solve(
+        &scene(v0),
+        &Span {
+            t_start: -0.3,
+            t_end: Some(0.7),
+        },
+    );
+    let mut noise = Noise::new(7);
+    let mut text = format!("{header}\n");
+    let first = (-0.2 * fps).round() as i32;
+    for k in first..=(0.6 * fps).round() as i32 {
+        let t = (f64::from(k) + 0.4) / fps;
+        let st = sol.at(t);
+        let v = st.left.v + sigma * noise.gauss();
+        let u = st.left.u + sigma * noise.gauss();
+        text += &format!("{t:.5},{:.4},{:.4}\n", v * scale, u * scale);
+    }
+    text
+}
+
+#[test]
+fn a_slow_ball_in_cm_per_s_under_an_m_per_s_header_is_refused_naming_cm_per_s() {
+    let dir = crate::common::scratch_dir("units_checked", "slow");
+    // A ball at 8 cm/s: its numbers (8 → 0) are below 10 m/s, so the speeds alone
+    // passed; its spin changes at (5/2) k μ_k g ≈ 3 m/s², 300 "m/s²" as written.
+    for fps in [60.0, 100.0, 240.0] {
+        let file = dir.join(format!("slow{fps}.csv"));
+        let text = velocity_file(0.08, fps, 0.0, 100.0, "t (s),v_cm (m/s),v_t (m/s)");
+        std::fs::write(&file, &text).unwrap();
+        let f = file.to_str().unwrap();
+        for command in ["data", "fit"] {
+            let args: Vec<&str> = if command == "data" {
+                vec!["data", f]
+            } else {
+                vec!["fit", "--preset", "paper-b4.9", "--data", f]
+            };
+            let (code, out, err) = groovelab(&args);
+            assert_eq!(code, Some(2), "{fps} {command}: {out}");
+            assert!(
+                err.contains("v_t changing by up to")
+                    && err.contains(
+                        "fix the header (v_cm (cm/s), v_t (cm/s)) or give --speed-unit cm/s"
+                    )
+                    && err.lines().count() == 1,
+                "{fps} {command}: {err}"
+            );
+        }
+        // The option it names reads the file as the ball was.
+        let (code, out, err) = groovelab(&["data", f, "--speed-unit", "cm/s"]);
+        assert_eq!(code, Some(0), "{fps}: {err}");
+        assert!(out.contains("v_cm in cm/s: --speed-unit"), "{out}");
+        // Without units the hint names cm/s too.
+        let bare = dir.join(format!("bare{fps}.csv"));
+        std::fs::write(
+            &bare,
+            text.replacen("t (s),v_cm (m/s),v_t (m/s)", "t,v_cm,v_t", 1),
+        )
+        .unwrap();
+        let (code, _, err) = groovelab(&["data", bare.to_str().unwrap()]);
+        assert_eq!(code, Some(2));
+        assert!(err.contains("give --speed-unit cm/s"), "{err}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn genuine_noisy_velocity_files_open_whatever_their_speed() {
+    let dir = crate::common::scratch_dir("units_checked", "genuine");
+    // Slow and fast balls in m/s and in cm/s (stated), with a tracker's scatter of
+    // derived velocities (0.01 m/s to 0.15 m/s between frames): none is refused.
+    for (v0, fps, sigma) in [
+        (0.08, 240.0, 0.02),
+        (0.08, 60.0, 0.01),
+        (0.45, 240.0, 0.15),
+        (0.8, 120.0, 0.1),
+        (2.0, 240.0, 0.15),
+        (0.8, 30.0, 0.05),
+    ] {
+        for (scale, header) in [
+            (1.0, "t (s),v_cm (m/s),v_t (m/s)"),
+            (100.0, "t (s),v_cm (cm/s),v_t (cm/s)"),
+        ] {
+            let file = dir.join("genuine.csv");
+            std::fs::write(&file, velocity_file(v0, fps, sigma, scale, header)).unwrap();
+            let (code, _, err) = groovelab(&["data", file.to_str().unwrap()]);
+            assert_eq!(
+                code,
+                Some(0),
+                "v0 {v0} at {fps} ± {sigma} in {header}: {err}"
+            );
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
