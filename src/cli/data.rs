@@ -21,6 +21,7 @@ use crate::settings::units::{Dimension, show_small, significant};
 pub fn run(args: &DataCmdArgs, scene: &SceneArgs, data: &DataArgs) -> Result<String, CliError> {
     let (reading, derive) = reading_of(data)?;
     let mut reports = Vec::new();
+    let mut kinds = Vec::new();
     for path in &args.files {
         let video = super::video_data::is_video(path);
         let text = if video {
@@ -45,12 +46,14 @@ pub fn run(args: &DataCmdArgs, scene: &SceneArgs, data: &DataArgs) -> Result<Str
                     .collect()
             })
             .unwrap_or_default();
+        kinds.push((file.clone(), report.holds_velocities()));
         reports.push(DataReport {
             report,
             scene_values,
             assumed: ["mass_left", "mass_right"],
         });
     }
+    super::open::options_apply(data, &kinds)?;
     Ok(match args.format {
         DataFormat::Json => {
             serde_json::to_string_pretty(&reports).expect("a report serializes") + "\n"

@@ -122,3 +122,80 @@ fn genuine_noisy_velocity_files_open_whatever_their_speed() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn an_option_for_what_the_file_does_not_hold_is_refused_naming_both() {
+    let dir = crate::common::scratch_dir("units_checked", "options");
+    let velocities = dir.join("v.csv");
+    std::fs::write(
+        &velocities,
+        velocity_file(0.5, 100.0, 0.0, 1.0, "t (s),v_cm (m/s),v_t (m/s)"),
+    )
+    .unwrap();
+    let track = dir.join("track.csv");
+    let mut text = String::from("t (s),x (m),y (m)\n");
+    for k in 0..40 {
+        let t = f64::from(k) * 0.01;
+        // Toward the other ball at 0.5 m/s, back at 0.1 m/s after an impact at 0.2 s.
+        let x = if t < 0.2 { 0.5 * t } else { 0.1 - 0.1 * (t - 0.2) };
+        text += &format!("{t:.2},{x:.4},0\n");
+    }
+    std::fs::write(&track, &text).unwrap();
+    let (v, p) = (velocities.to_str().unwrap(), track.to_str().unwrap());
+    let cases: [(&[&str], &str); 5] = [
+        (
+            &["data", v, "--length-unit", "cm"],
+            "--length-unit does not apply to",
+        ),
+        (
+            &["data", v, "--scale", "0.5mm"],
+            "--scale does not apply to",
+        ),
+        (
+            &[
+                "fit",
+                "--preset",
+                "paper-b4.9",
+                "--data",
+                v,
+                "--length-unit",
+                "mm",
+            ],
+            "--length-unit does not apply to",
+        ),
+        (
+            &["data", p, "--speed-unit", "cm/s"],
+            "--speed-unit does not apply to",
+        ),
+        (
+            &[
+                "fit",
+                "--preset",
+                "paper-b4.9",
+                "--data",
+                p,
+                "--speed-unit",
+                "cm/s",
+            ],
+            "--speed-unit does not apply to",
+        ),
+    ];
+    for (args, want) in cases {
+        let (code, _, err) = groovelab(args);
+        assert_eq!(code, Some(2), "{args:?}: {err}");
+        assert!(
+            err.contains(want) && err.lines().count() == 1,
+            "{args:?}: {err}"
+        );
+        let holds = if want.contains("speed") {
+            "it holds a position track"
+        } else {
+            "it holds velocities (t, v_cm, v_t)"
+        };
+        assert!(err.contains(holds), "{err}");
+    }
+    // With both kinds among data's files each option applies to one of them.
+    let (code, _, err) = groovelab(&["data", v, p, "--speed-unit", "m/s", "--length-unit", "m"]);
+    assert_eq!(code, Some(0), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
