@@ -137,7 +137,11 @@ fn an_option_for_what_the_file_does_not_hold_is_refused_naming_both() {
     for k in 0..40 {
         let t = f64::from(k) * 0.01;
         // Toward the other ball at 0.5 m/s, back at 0.1 m/s after an impact at 0.2 s.
-        let x = if t < 0.2 { 0.5 * t } else { 0.1 - 0.1 * (t - 0.2) };
+        let x = if t < 0.2 {
+            0.5 * t
+        } else {
+            0.1 - 0.1 * (t - 0.2)
+        };
         text += &format!("{t:.2},{x:.4},0\n");
     }
     std::fs::write(&track, &text).unwrap();
@@ -197,5 +201,54 @@ fn an_option_for_what_the_file_does_not_hold_is_refused_naming_both() {
     // With both kinds among data's files each option applies to one of them.
     let (code, _, err) = groovelab(&["data", v, p, "--speed-unit", "m/s", "--length-unit", "m"]);
     assert_eq!(code, Some(0), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A Tracker single-track export (its track's name, then `t x y`, numbers as Tracker
+/// writes them: 1.234567890E2) of a ball approaching at `v` units per s for 0.2 s and
+/// rolling back at v/5, at 100 frames/s: pixels when the video was never calibrated.
+fn tracker_export(v: f64) -> String {
+    let mut text = String::from("mass_A\nt x y\n");
+    for k in 0..50 {
+        let t = f64::from(k) * 0.01;
+        let x = if t < 0.2 {
+            v * t
+        } else {
+            0.2 * v - 0.2 * v * (t - 0.2)
+        };
+        text += &format!("{t:.9E} {:.9E} {:.9E}\n", 320.0 + x, 240.0);
+    }
+    text
+}
+
+#[test]
+fn pixels_of_a_video_never_calibrated_are_named_with_scale_not_only_a_length_unit() {
+    let dir = crate::common::scratch_dir("units_checked", "pixels");
+    // 0.6 m/s at 2 pixels per mm: 1200 pixels/s (as mm 1.2 m/s, which fits too).
+    let file = dir.join("px.txt");
+    std::fs::write(&file, tracker_export(1200.0)).unwrap();
+    let (code, _, err) = groovelab(&["data", file.to_str().unwrap()]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("give --length-unit mm")
+            && err.contains("if they are pixels of a video never calibrated, give the length one pixel shows with --scale (e.g. --scale 0.5mm)")
+            && err.lines().count() == 1,
+        "{err}"
+    );
+    // The option it names reads it: 0.5 mm a pixel, 0.6 m/s.
+    let (code, out, err) = groovelab(&["data", file.to_str().unwrap(), "--scale", "0.5mm"]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(out.contains("approach speed 0.6"), "{out}");
+    // A high-resolution video: 24,000 pixels/s is beyond even mm; no length unit
+    // guessed, pixels and both options named.
+    std::fs::write(&file, tracker_export(24_000.0)).unwrap();
+    let (code, _, err) = groovelab(&["data", file.to_str().unwrap()]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("they are not m, cm or mm: if they are pixels")
+            && err.contains("--scale (e.g. --scale 0.5mm), or their unit with --length-unit")
+            && !err.contains("give --length-unit mm"),
+        "{err}"
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -178,8 +178,12 @@ pub enum ScaleError {
         by: Option<&'static str>,
         unit: Option<&'static str>,
     },
-    /// No unit given, and as metres the ball is too fast; `unit` fits.
-    LengthsNotMetres { speed: f64, unit: &'static str },
+    /// No unit given, and as metres the ball is too fast; `unit`, if any, fits (the
+    /// numbers may be pixels of a video never calibrated too: `--scale` is named).
+    LengthsNotMetres {
+        speed: f64,
+        unit: Option<&'static str>,
+    },
     /// In the units given the ball is too fast; `unit`, if any, fits.
     TooFast {
         frame: f64,
@@ -226,13 +230,26 @@ impl fmt::Display for ScaleError {
                     significant(speed, 3),
                 )
             }
-            ScaleError::LengthsNotMetres { speed, unit } => write!(
-                f,
-                "the header gives no length unit and the positions do not look like metres: as m the ball approaches at {} m/s (as cm {} m/s, as mm {} m/s); if they are {unit}, give --length-unit {unit} (or units in the header: x ({unit}), y ({unit}))",
-                significant(speed, 3),
-                significant(speed * 1e-2, 3),
-                significant(speed * 1e-3, 3),
-            ),
+            ScaleError::LengthsNotMetres { speed, unit } => {
+                let named = match unit {
+                    Some(u) => format!(
+                        "if they are {u}, give --length-unit {u} (or units in the header: x ({u}), y ({u})); if they are pixels"
+                    ),
+                    None => "they are not m, cm or mm: if they are pixels".into(),
+                };
+                write!(
+                    f,
+                    "the header gives no length unit and the positions do not look like metres: as m the ball approaches at {} m/s (as cm {} m/s, as mm {} m/s); {named} of a video never calibrated, give the length one pixel shows with --scale (e.g. --scale 0.5mm){}",
+                    significant(speed, 3),
+                    significant(speed * 1e-2, 3),
+                    significant(speed * 1e-3, 3),
+                    if unit.is_none() {
+                        ", or their unit with --length-unit"
+                    } else {
+                        ""
+                    }
+                )
+            }
             ScaleError::TooFast {
                 frame,
                 speed,
@@ -288,7 +305,6 @@ pub fn check_track(track: &Track, given: &Given) -> Result<(), ScaleError> {
         return Ok(());
     }
     if l_by.is_none() && t_by.is_none() {
-        let unit = unit.unwrap_or("mm");
         return Err(ScaleError::LengthsNotMetres { speed, unit });
     }
     Err(ScaleError::TooFast {
