@@ -13,8 +13,9 @@ use serde::Serialize;
 use super::args::{DataArgs, DataCmdArgs, DataFormat, SceneArgs};
 use super::error::CliError;
 use super::open::reading_of;
-use crate::input::data::{Report, inspect};
+use crate::input::data::{Notes, Report, UnitNote, inspect};
 use crate::settings::units::{Dimension, show_small, significant};
+use crate::study::vision::write::SCALE_COMMENT;
 
 /// Reads each file with the data options and reports it; a video (or a folder of
 /// frames) is tracked for the scene's R first, its tracks read as the file.
@@ -35,7 +36,10 @@ pub fn run(args: &DataCmdArgs, scene: &SceneArgs, data: &DataArgs) -> Result<Str
             ..reading.clone()
         };
         let file = path.display().to_string();
-        let report = inspect(&text, &file, &reading, &derive)?;
+        let mut report = inspect(&text, &file, &reading, &derive)?;
+        if video {
+            report.notes = video_notes(&text, report.notes);
+        }
         // What the lab would take from the file: the same rule as `fit` and the app.
         let scene_values = crate::input::data::load(&text, &file, &reading, &derive)
             .map(|series| {
@@ -60,6 +64,61 @@ pub fn run(args: &DataCmdArgs, scene: &SceneArgs, data: &DataArgs) -> Result<Str
         }
         DataFormat::Table => reports.iter().map(describe).collect::<Vec<_>>().join("\n"),
     })
+}
+
+/// What a video's tracks say about themselves (read from the text groovelab wrote for
+/// them, not a Tracker file's: "none stated" would be wrong): tracked by groovelab,
+/// times from its frame rate, metres from the scale the ball's radius gives in the
+/// frames (or `--scale`).
+fn video_notes(text: &str, notes: Notes) -> Notes {
+    let comment = |start: &str| {
+        text.lines()
+            .take_while(|l| l.starts_with('#'))
+            .find_map(|l| l.strip_prefix('#')?.trim().strip_prefix(start))
+            .map(str::trim)
+    };
+    let rate = comment("frame rate ");
+    let radius = comment("scene radius =");
+    let scale = comment(SCALE_COMMENT.trim_start_matches('#').trim());
+    let units = notes
+        .units
+        .into_iter()
+        .map(|u| {
+            let how = match (u.quantity, rate, radius, scale) {
+                ("time", Some(rate), ..) => format!("the video's frames ({rate})"),
+                ("length", _, Some(r), Some(s)) => {
+                    format!(
+                        "the scale from the ball's radius R = {r} in the frames ({})",
+                        shown_scale(s)
+                    )
+                }
+                ("length", ..) => "the scale given (--scale)".into(),
+                _ => u.how,
+            };
+            UnitNote { how, ..u }
+        })
+        .collect();
+    Notes {
+        format: "video tracked by groovelab".into(),
+        units,
+        ..notes
+    }
+}
+
+/// A scale comment's `S ± σ px/m` to the digits its ± warrants (as written, if not).
+fn shown_scale(text: &str) -> String {
+    let numbers: Vec<f64> = text
+        .trim_end_matches("px/m")
+        .split('±')
+        .filter_map(|n| n.trim().parse().ok())
+        .collect();
+    match numbers[..] {
+        [s, se] => {
+            let (s, se) = crate::settings::units::with_uncertainty(s, se, 2);
+            format!("{s} ± {se} px/m")
+        }
+        _ => text.to_string(),
+    }
 }
 
 /// One file's report and the scene values it gives.
