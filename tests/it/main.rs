@@ -9,6 +9,7 @@ mod classroom;
 mod cli;
 mod closed_forms;
 mod data_files;
+mod data_hints;
 mod data_scene;
 mod exports;
 mod fit;

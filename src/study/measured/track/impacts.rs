@@ -21,7 +21,8 @@ pub enum TrackError {
     )]
     ChangeAtTheStart { at: f64 },
     #[error(
-        "no impact found: at t = {at:.4} s the centre's velocity goes from {before:.3} to {after:.3} m/s, an impact slows the ball by at least a third"
+        "no impact found: the sharpest change of the centre's velocity, at t = {at:.4} s, {}; an impact would slow it by at least a third",
+        seen(*before, *after)
     )]
     NoSlowDown { at: f64, before: f64, after: f64 },
     #[error(
@@ -55,6 +56,25 @@ pub enum TrackError {
         need: usize,
         min: usize,
     },
+}
+
+/// What a change of the centre's velocity from `before` to `after` (m/s, the file's
+/// x) that is no impact did: started the ball, sped it up, or slowed it a little (a
+/// reversal is an impact: it slows the ball by more than its speed).
+fn seen(before: f64, after: f64) -> String {
+    let (b, a) = (before.abs(), after.abs());
+    if b < 1e-9 {
+        format!("starts the ball from rest to {after:.3} m/s (a push or a release)")
+    } else if a >= b {
+        format!(
+            "speeds the ball up from {before:.3} to {after:.3} m/s (a push, a release or a slope)"
+        )
+    } else {
+        format!(
+            "slows the ball by only {:.0} % (from {before:.3} to {after:.3} m/s)",
+            100.0 * (b - a) / b
+        )
+    }
 }
 
 /// Least-squares slope of a straight line through `ys` over `ts`.
