@@ -57,3 +57,60 @@ fn a_track_without_an_impact_says_what_its_sharpest_change_did() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A filmed track of the paper's scene (centre and rim mark, 0.2 mm scatter) as CSV
+/// `t,x,y,x_mark,y_mark`, the two points' columns swapped when `swap`.
+fn filmed_csv(swap: bool, fps: f64, from: f64, to: f64) -> String {
+    use groovelab::study::video::{self, Video};
+    let track = video::track(
+        &crate::common::paper_scene(),
+        &Video {
+            seed: 3,
+            noise: 2e-4,
+            fps,
+            from,
+            to,
+            ..Video::default()
+        },
+    );
+    let (mx, my) = track.mark.clone().expect("a mark");
+    let mut s = String::from("t,x,y,x_mark,y_mark\n");
+    for i in 0..track.t.len() {
+        let (c, m) = ((track.x[i], track.y[i]), (mx[i], my[i]));
+        let (a, b) = if swap { (m, c) } else { (c, m) };
+        s += &format!(
+            "{:.5},{:.6},{:.6},{:.6},{:.6}\n",
+            track.t[i], a.0, a.1, b.0, b.1
+        );
+    }
+    s
+}
+
+#[test]
+fn swapped_centre_and_mark_are_noticed_and_the_right_order_is_not() {
+    let dir = crate::common::scratch_dir("data_hints", "swapped");
+    let file = dir.join("track.csv");
+    let f = file.to_str().unwrap();
+    // The mark strays ~17 mm from a straight line, the centre by its scatter.
+    for (fps, from, to) in [(120.0, -0.2, 0.8), (240.0, -0.1, 0.3), (60.0, -0.3, 1.0)] {
+        std::fs::write(&file, filmed_csv(false, fps, from, to)).unwrap();
+        let (code, _, err) = groovelab(&["data", f]);
+        assert_eq!(code, Some(0), "{fps}: {err}");
+        std::fs::write(&file, filmed_csv(true, fps, from, to)).unwrap();
+        for args in [
+            vec!["data", f],
+            vec!["fit", "--preset", "paper-b4.9", "--data", f],
+        ] {
+            let (code, _, err) = groovelab(&args);
+            assert_eq!(code, Some(2), "{fps}");
+            assert!(
+                err.contains("the track taken for the ball's centre strays")
+                    && err.contains("the two look swapped")
+                    && err.contains("swap the columns")
+                    && err.lines().count() == 1,
+                "{fps}: {err}"
+            );
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

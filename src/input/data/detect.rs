@@ -17,6 +17,12 @@ pub fn read_with_notes(
     reading: &Reading,
 ) -> Result<(RawSeries, Notes), DataError> {
     let (raw, notes) = read_any(text, file, reading)?;
+    if let RawSeries::Positions(t) = &raw {
+        super::roles::swapped(t).map_err(|e| DataError {
+            file: file.to_string(),
+            what: e.to_string(),
+        })?;
+    }
     let raw = match raw {
         RawSeries::Positions(t) => RawSeries::Positions(super::sigmas::with_sigmas(
             text,

@@ -12,6 +12,7 @@ mod notes;
 mod options;
 mod positions;
 mod report;
+mod roles;
 mod scales;
 mod scene;
 mod sigmas;
@@ -68,6 +69,10 @@ pub fn load_pair(
     let track = ball.with_mark(&rim).map_err(|what| DataError {
         file: mark.0.clone(),
         what: what.to_string(),
+    })?;
+    roles::swapped(&track).map_err(|e| DataError {
+        file: centre.0.clone(),
+        what: e.to_string(),
     })?;
     prepare(RawSeries::Positions(track), &centre.0, reading, opts)
 }
