@@ -43,3 +43,4 @@ mod tui;
 mod units_checked;
 mod video;
 mod video_app;
+mod wrong_scene;
