@@ -204,7 +204,8 @@ pub fn describe(shown: &DataReport) -> String {
         let more = r.missing.len().saturating_sub(5);
         let _ = writeln!(
             s,
-            "  {total} frames missing: {}{}",
+            "  {total} frame{} missing: {}{}",
+            if total == 1 { "" } else { "s" },
             runs.join(", "),
             if more > 0 {
                 format!(", and {more} more runs")

@@ -114,3 +114,57 @@ fn swapped_centre_and_mark_are_noticed_and_the_right_order_is_not() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn small_messages_say_what_happened() {
+    let dir = crate::common::scratch_dir("data_hints", "small");
+    // One frame left out (a jump in time): "1 frame missing", not "1 frames".
+    let file = dir.join("gap.csv");
+    let text: String = filmed_csv(false, 120.0, -0.2, 0.8)
+        .lines()
+        .enumerate()
+        .filter(|&(i, _)| i != 60)
+        .map(|(_, l)| format!("{l}\n"))
+        .collect();
+    std::fs::write(&file, text).unwrap();
+    let f = file.to_str().unwrap();
+    let (code, out, err) = groovelab(&["data", f]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(out.contains("  1 frame missing: 1 at t = "), "{out}");
+    let (code, out, err) = groovelab(&["fit", "--preset", "paper-b4.9", "--data", f]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(out.contains("1 frame missing from the file"), "{out}");
+    // An impact given far outside the times names its flag and the times allowed.
+    let (code, _, err) = groovelab(&[
+        "fit",
+        "--preset",
+        "paper-b4.9",
+        "--data",
+        f,
+        "--impact-at",
+        "1e308",
+    ]);
+    assert_eq!(code, Some(2));
+    assert!(
+        err.contains("--impact-at 1e308 s leaves fewer than 3 frames on one side")
+            && err.contains("t = 0 … 1 s")
+            && err.lines().count() == 1,
+        "{err}"
+    );
+    // A negative scale without `=`: the value's error, not "unexpected argument '-1'".
+    for args in [
+        vec!["data", f, "--scale", "-1mm"],
+        vec!["track", f, "--scale", "-1mm"],
+    ] {
+        let (code, _, err) = groovelab(&args);
+        assert_eq!(code, Some(2));
+        assert!(
+            err.contains("'-1mm' is not a pixel's length, expected a length above 0"),
+            "{err}"
+        );
+    }
+    let (code, _, err) = groovelab(&["data", f, "--window", "-1ms"]);
+    assert_eq!(code, Some(2));
+    assert!(err.contains("--window -0.001 s is out of range"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}

@@ -159,6 +159,12 @@ pub(super) fn read_table(
         what,
     };
     let ((mut t, mut v_cm, mut v_t), units) = columns(table, file, reading)?;
+    if let Some(at) = reading.impact_at
+        && !(t[0]..=t[t.len() - 1]).contains(&at)
+    {
+        let (first, last) = (t[0], t[t.len() - 1]);
+        return Err(err(ImpactOutside { at, first, last }.to_string()));
+    }
     let mirrored = turn_if_reversed(&t, &mut v_cm, &mut v_t, reading.impact_at);
     let impact = match reading.impact_at {
         Some(at) => at,
@@ -247,6 +253,20 @@ fn approach_seen(t: &[f64], impact: f64) -> Result<(), TooFewBefore> {
 pub struct TooFewBefore {
     pub before: usize,
     pub impact: f64,
+}
+
+/// `--impact-at` outside a velocity file's times (s).
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error(
+    "--impact-at {} lies outside the file's times, t = {} … {} s: allowed a time within them",
+    crate::settings::units::show_exact(*at, crate::settings::units::Dimension::Time),
+    crate::settings::units::significant(*first, 6),
+    crate::settings::units::significant(*last, 6)
+)]
+pub struct ImpactOutside {
+    pub at: f64,
+    pub first: f64,
+    pub last: f64,
 }
 
 /// Fewest frames up to the first impact (a frame at it counts) a velocity file needs:
@@ -353,11 +373,27 @@ mod tests {
         let e = parse(&text, "d.csv", &Reading::default()).unwrap_err();
         assert!(e.to_string().contains("at most 1000000"), "{e}");
         let r = Reading {
-            impact_at: Some(-1.7e308),
+            impact_at: Some(1.5e308),
             ..Reading::default()
         };
-        let e = parse("t,v_cm,v_t\n0,1,1\n1e308,1,1\n1.5e308,1,1\n", "d.csv", &r).unwrap_err();
+        let e = parse(
+            "t,v_cm,v_t\n-1.7e308,1,1\n0,1,1\n1.5e308,1,1\n",
+            "d.csv",
+            &r,
+        )
+        .unwrap_err();
         assert!(e.to_string().contains("not finite"), "{e}");
+        // An impact given outside the file's times names the option.
+        let r = Reading {
+            impact_at: Some(1e308),
+            ..Reading::default()
+        };
+        let e = parse("t,v_cm,v_t\n0,1,1\n0.01,1,1\n0.02,1,1\n", "d.csv", &r).unwrap_err();
+        assert!(
+            e.to_string()
+                .contains("--impact-at 1e308 s lies outside the file's times, t = 0 … 0.02 s"),
+            "{e}"
+        );
     }
 
     #[test]
