@@ -186,34 +186,7 @@ pub fn describe(shown: &DataReport) -> String {
     for u in &r.notes.units {
         let _ = writeln!(s, "  {} in {}: {}", u.quantity, u.unit, u.how);
     }
-    if r.missing.is_empty() {
-        s += "  no frames missing\n";
-    } else {
-        let total: usize = r.missing.iter().map(|g| g.frames).sum();
-        let runs: Vec<String> = r
-            .missing
-            .iter()
-            .take(5)
-            .map(|g| {
-                format!(
-                    "{} at t = {:.4} … {:.4} s ({})",
-                    g.frames, g.from, g.to, g.why
-                )
-            })
-            .collect();
-        let more = r.missing.len().saturating_sub(5);
-        let _ = writeln!(
-            s,
-            "  {total} frame{} missing: {}{}",
-            if total == 1 { "" } else { "s" },
-            runs.join(", "),
-            if more > 0 {
-                format!(", and {more} more runs")
-            } else {
-                String::new()
-            }
-        );
-    }
+    s += &missing_line(&r.missing);
     if let Some(sc) = r.scatter {
         let _ = writeln!(
             s,
@@ -243,6 +216,39 @@ pub fn describe(shown: &DataReport) -> String {
     }
     let _ = writeln!(s, "  {}", r.impact_note);
     s += &scene_line(&shown.scene_values);
+    s
+}
+
+/// "  no frames missing", or how many and where (the first five runs).
+fn missing_line(missing: &[crate::input::data::Gap]) -> String {
+    let mut s = String::new();
+    if missing.is_empty() {
+        s += "  no frames missing\n";
+    } else {
+        let total: usize = missing.iter().map(|g| g.frames).sum();
+        let runs: Vec<String> = missing
+            .iter()
+            .take(5)
+            .map(|g| {
+                format!(
+                    "{} at t = {:.4} … {:.4} s ({})",
+                    g.frames, g.from, g.to, g.why
+                )
+            })
+            .collect();
+        let more = missing.len().saturating_sub(5);
+        let _ = writeln!(
+            s,
+            "  {total} frame{} missing: {}{}",
+            if total == 1 { "" } else { "s" },
+            runs.join(", "),
+            if more > 0 {
+                format!(", and {more} more runs")
+            } else {
+                String::new()
+            }
+        );
+    }
     s
 }
 

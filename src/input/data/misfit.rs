@@ -105,8 +105,9 @@ impl Misfit {
                 as_unit,
                 unit,
             } => format!(
-                "v_t changing by up to {} per s (as m/s {} g, beyond the {:.0} g at most of any ball in a groove; as {unit} {} m/s²)",
+                "v_t changing by up to {} per s (as m/s {} m/s², {}× g, beyond the {:.0}× g at most of any ball in a groove; as {unit} {} m/s²)",
                 significant(steepest, 3),
+                significant(si, 3),
                 significant(si / G, 3),
                 FASTEST_SPIN_CHANGE / G,
                 significant(as_unit, 3)
