@@ -120,6 +120,30 @@ fn genuine_noisy_velocity_files_open_whatever_their_speed() {
             );
         }
     }
+    // One glitch of the tracked v_t (3 m/s up and back, a mark mistaken for a frame)
+    // is no change of the spin.
+    for (fps, row) in [100.0, 240.0]
+        .into_iter()
+        .flat_map(|f| [5, 20, 21, 22, 30, 40, 41, 60].map(|r| (f, r)))
+    {
+        let text = velocity_file(0.5, fps, 0.01, 1.0, "t (s),v_cm (m/s),v_t (m/s)");
+        let glitched: String = text
+            .lines()
+            .enumerate()
+            .map(|(i, l)| {
+                if i != row {
+                    return format!("{l}\n");
+                }
+                let c: Vec<&str> = l.split(',').collect();
+                let u: f64 = c[2].parse().unwrap();
+                format!("{},{},{:.4}\n", c[0], c[1], u + 3.0)
+            })
+            .collect();
+        let file = dir.join("glitch.csv");
+        std::fs::write(&file, glitched).unwrap();
+        let (code, _, err) = groovelab(&["data", file.to_str().unwrap()]);
+        assert_eq!(code, Some(0), "glitch in row {row} at {fps}: {err}");
+    }
     let _ = std::fs::remove_dir_all(&dir);
 }
 

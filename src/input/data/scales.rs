@@ -37,10 +37,20 @@ const CHANGE_SPAN: f64 = 0.02;
 
 /// The steepest change of `v` over time `t` (|dv/dt|, units of v per s): the largest
 /// slope of a least-squares line through the points of any stretch of at least
-/// [`CHANGE_SPAN`] and two frame intervals (at most 17 points of it, evenly spaced, in
-/// a very dense file). `None` with fewer than three points or no such stretch.
+/// [`CHANGE_SPAN`] and two frame intervals (at most 17 points of it, evenly spaced,
+/// in a very dense file), each point the median of itself and its neighbours, so
+/// that one glitch (a tracker's jump up and back) is no change while a ramp (a slow
+/// ball's slide, two frames at 60 frames/s) keeps every value. `None` with fewer than
+/// three points.
 pub fn steepest_change(t: &[f64], v: &[f64]) -> Option<f64> {
     let n = t.len().min(v.len());
+    let v: Vec<f64> = (0..n)
+        .map(|k| {
+            let mut three = [v[k.saturating_sub(1)], v[k], v[(k + 1).min(n - 1)]];
+            three.sort_by(f64::total_cmp);
+            three[1]
+        })
+        .collect();
     let mut steepest: Option<f64> = None;
     let mut j = 0;
     for i in 0..n {
@@ -56,19 +66,24 @@ pub fn steepest_change(t: &[f64], v: &[f64]) -> Option<f64> {
             .step_by(stride)
             .map(|k| (t[k] - t[i], v[k]))
             .collect();
-        let m = points.len() as f64;
-        let (mt, mv) = points
-            .iter()
-            .fold((0.0, 0.0), |(a, b), &(x, y)| (a + x / m, b + y / m));
-        let (sxy, sxx) = points.iter().fold((0.0, 0.0), |(a, b), &(x, y)| {
-            (a + (x - mt) * (y - mv), b + (x - mt) * (x - mt))
-        });
-        let slope = (sxy / sxx).abs();
-        if slope.is_finite() && steepest.is_none_or(|s| slope > s) {
-            steepest = Some(slope);
+        let s = slope(&points).abs();
+        if s.is_finite() && steepest.is_none_or(|x| s > x) {
+            steepest = Some(s);
         }
     }
     steepest
+}
+
+/// The slope of the least-squares line through `points` (t, v).
+fn slope(points: &[(f64, f64)]) -> f64 {
+    let m = points.len() as f64;
+    let (mt, mv) = points
+        .iter()
+        .fold((0.0, 0.0), |(a, b), &(x, y)| (a + x / m, b + y / m));
+    let (sxy, sxx) = points.iter().fold((0.0, 0.0), |(a, b), &(x, y)| {
+        (a + (x - mt) * (y - mv), b + (x - mt) * (x - mt))
+    });
+    sxy / sxx
 }
 
 /// A speed a ball in this experiment typically has (m/s): of the length units a file
@@ -339,6 +354,20 @@ mod tests {
             t,
             ..Track::default()
         }
+    }
+
+    #[test]
+    fn the_steepest_change_is_a_lines_slope_and_a_glitch_is_none() {
+        let t: Vec<f64> = (0..50).map(|i| f64::from(i) / 120.0).collect();
+        // Steady for 0.2 s, then falling at 3 units per s.
+        let v: Vec<f64> = t.iter().map(|&t| 1.0 - 3.0 * (t - 0.2).max(0.0)).collect();
+        let s = steepest_change(&t, &v).unwrap();
+        assert!((s - 3.0).abs() < 1e-9, "{s}");
+        // One value up by 5 and back: no change, whatever its size.
+        let mut flat = vec![0.4; 50];
+        flat[25] += 5.0;
+        assert_eq!(steepest_change(&t, &flat), Some(0.0));
+        assert_eq!(steepest_change(&t[..2], &v[..2]), None);
     }
 
     #[test]
