@@ -93,8 +93,8 @@ pub enum TrackRole {
 /// Why an option's text is not a value of it (clap prints it after the option's name).
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum ArgError {
-    #[error("'{0}' is not ROLE=NAME, allowed centre=NAME or mark=NAME")]
-    Track(String),
+    #[error("'{text}' is not ROLE=NAME, allowed centre=NAME or mark=NAME")]
+    Track { text: String },
     /// A screen below the app's smallest (`min`, COLSxROWS).
     #[error(
         "'{text}' is smaller than the app's smallest screen, allowed at least {}x{} (up to {MAX_SCREEN}x{MAX_SCREEN})",
@@ -108,14 +108,16 @@ pub enum ArgError {
         min.1
     )]
     NotASize { text: String, min: (u16, u16) },
-    #[error("'{0}' is not a pixel's length, expected a length above 0 such as 1.105mm")]
-    NotAPixel(String),
+    #[error("'{text}' is not a pixel's length, expected a length above 0 such as 1.105mm")]
+    NotAPixel { text: String },
     #[error(transparent)]
     Unit(#[from] UnitError),
 }
 
 fn track(text: &str) -> Result<(TrackRole, String), ArgError> {
-    let bad = || ArgError::Track(text.to_string());
+    let bad = || ArgError::Track {
+        text: text.to_string(),
+    };
     let (role, name) = text.split_once('=').ok_or_else(bad)?;
     let role = match role.trim().to_ascii_lowercase().as_str() {
         "centre" | "center" => TrackRole::Centre,
@@ -343,7 +345,9 @@ fn time(s: &str) -> Result<f64, UnitError> {
 fn length(s: &str) -> Result<f64, ArgError> {
     match parse_option(s, Dimension::Length)? {
         v if v > 0.0 => Ok(v),
-        _ => Err(ArgError::NotAPixel(s.to_string())),
+        _ => Err(ArgError::NotAPixel {
+            text: s.to_string(),
+        }),
     }
 }
 fn ratio(s: &str) -> Result<f64, UnitError> {

@@ -28,7 +28,11 @@ pub fn run(args: &DataCmdArgs, scene: &SceneArgs, data: &DataArgs) -> Result<Str
         let text = if video {
             super::video_data::text(path, scene, data)?
         } else {
-            crate::input::read_user_file(path, "data file", crate::input::MAX_FILE_BYTES)?
+            crate::input::read_user_file(
+                path,
+                crate::input::FileRole::Data,
+                crate::input::MAX_FILE_BYTES,
+            )?
         };
         // A video's --scale went into its tracking: its tracks are in metres.
         let reading = crate::input::data::Reading {

@@ -74,6 +74,8 @@ pub enum CliError {
     #[error(transparent)]
     Data(#[from] crate::input::data::DataError),
     #[error(transparent)]
+    Video(#[from] crate::input::video::VideoError),
+    #[error(transparent)]
     Output(crate::output::OutputError),
     #[error(transparent)]
     Fit(crate::study::fit::FitError),

@@ -195,7 +195,7 @@ pub fn render_with(
 ) -> Result<String, CliError> {
     let mut app = opened(scene_args, data, library)?;
     // A screen dump writes no files: `w`, `W` and `s` say what they would write.
-    app.writes_files = false;
+    app.write_no_files();
     let keys = match &args.keys {
         Some(script) => {
             tui::keys::parse_script(script).map_err(|source| BadValue::Keys { source })?

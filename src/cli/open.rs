@@ -49,7 +49,11 @@ pub fn with_file_scene(scene: &SceneArgs, data: &DataArgs) -> Result<SceneArgs, 
     let own = if super::video_data::is_video(path) {
         super::video_data::own_scene(scene, data)?
     } else {
-        let text = crate::input::read_user_file(path, "--data", crate::input::MAX_FILE_BYTES)?;
+        let text = crate::input::read_user_file(
+            path,
+            crate::input::FileRole::DataOption,
+            crate::input::MAX_FILE_BYTES,
+        )?;
         crate::input::data::scene_of(&text, &path.display().to_string())?
     };
     Ok(SceneArgs {
@@ -71,14 +75,17 @@ pub fn load_series(
             .data
             .iter()
             .map(|path| {
-                let what = Flag("data").to_string();
                 if super::video_data::is_video(path) {
                     return super::video_data::text(path, scene, args)
                         .map(|text| (path.display().to_string(), text));
                 }
-                crate::input::read_user_file(path, &what, crate::input::MAX_FILE_BYTES)
-                    .map(|text| (path.display().to_string(), text))
-                    .map_err(CliError::from)
+                crate::input::read_user_file(
+                    path,
+                    crate::input::FileRole::DataOption,
+                    crate::input::MAX_FILE_BYTES,
+                )
+                .map(|text| (path.display().to_string(), text))
+                .map_err(CliError::from)
             })
             .collect::<Result<Vec<_>, _>>()?,
         more => {

@@ -9,9 +9,8 @@ use super::args::SceneArgs;
 use super::error::CliError;
 use super::progress::Bar;
 use super::track_args::{TrackArgs, TrackOutput};
-use crate::input::data::DataError;
+use crate::input::video::RateSource;
 use crate::input::video::tracked::{self, Options, Tracked};
-use crate::input::video::{RateSource, VideoError};
 use crate::settings::params::Key;
 use crate::study::vision::tracks::{BallTrack, Calibration};
 
@@ -46,7 +45,7 @@ pub fn run(
     }
     let options = options(scene, fps, scale)?;
     let bar = Bar::new("frames", true);
-    let done = tracked::track(&args.video, &options, &bar).map_err(data_error);
+    let done = tracked::track(&args.video, &options, &bar).map_err(CliError::from);
     bar.finish();
     let done: Tracked = done?.ok_or(CliError::Interrupted)?;
     let text = match args.format {
@@ -105,13 +104,4 @@ pub fn options(
         radius_from,
         cache: crate::input::video::cache::user_folder(),
     })
-}
-
-/// A video that cannot be tracked, as the data error it is at the command line.
-pub fn data_error(e: VideoError) -> CliError {
-    DataError {
-        file: e.file,
-        what: e.what,
-    }
-    .into()
 }

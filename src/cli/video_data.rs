@@ -47,7 +47,7 @@ pub fn own_scene(scene: &SceneArgs, data: &DataArgs) -> Result<SceneSpec, CliErr
 pub fn tracks(path: &Path, scene: &SceneArgs, data: &DataArgs) -> Result<Kept, CliError> {
     let options = options(scene, data)?;
     let bar = Bar::new("frames", true);
-    let done = cache::tracks(path, &options, &bar).map_err(track::data_error);
+    let done = cache::tracks(path, &options, &bar).map_err(CliError::from);
     bar.finish();
     done?.ok_or(CliError::Interrupted)
 }
@@ -71,12 +71,12 @@ pub fn pending(scene: &SceneArgs, data: &DataArgs) -> Result<Option<Options>, Cl
     if cache::kept(path, &options).is_some() {
         return Ok(None);
     }
-    let info = crate::input::video::check(path, &Default::default()).map_err(track::data_error)?;
+    let info = crate::input::video::check(path, &Default::default()).map_err(CliError::from)?;
     if info.rate(options.fps).is_none() {
-        return Err(track::data_error(crate::input::video::VideoError {
-            file: path.display().to_string(),
-            what: crate::input::video::tracked::NO_RATE.into(),
-        }));
+        return Err(CliError::from(crate::input::video::VideoError::new(
+            path,
+            crate::input::video::VideoProblem::NoRate,
+        )));
     }
     Ok(Some(options))
 }

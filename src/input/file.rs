@@ -11,12 +11,32 @@ pub const MAX_FILE_BYTES: u64 = 64 * 1024 * 1024;
 
 /// Why a user file was not read; one line naming the file and what is allowed.
 #[derive(Debug, thiserror::Error)]
-#[error("cannot read {what} {path}: {why}")]
+#[error("cannot read {what} {}: {why}", path.display())]
 pub struct FileError {
-    /// What the file is for (`--data`, `preset file`).
-    pub what: String,
-    pub path: String,
+    pub what: FileRole,
+    pub path: std::path::PathBuf,
     pub why: Unreadable,
+}
+
+/// What a user file is for, as its errors name it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FileRole {
+    /// A preset's TOML file.
+    Preset,
+    /// A file `groovelab data` reports on.
+    Data,
+    /// A file `--data` names.
+    DataOption,
+}
+
+impl std::fmt::Display for FileRole {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            FileRole::Preset => "preset file",
+            FileRole::Data => "data file",
+            FileRole::DataOption => "--data",
+        })
+    }
 }
 
 /// What is wrong with a user file.
@@ -65,10 +85,10 @@ pub fn kind(meta: &std::fs::Metadata) -> &'static str {
 
 /// Reads `path` as UTF-8 text if it is a regular file of at most `limit` bytes;
 /// `what` names the file's role in errors.
-pub fn read_user_file(path: &Path, what: &str, limit: u64) -> Result<String, FileError> {
+pub fn read_user_file(path: &Path, what: FileRole, limit: u64) -> Result<String, FileError> {
     let fail = |why: Unreadable| FileError {
-        what: what.to_string(),
-        path: path.display().to_string(),
+        what,
+        path: path.to_path_buf(),
         why,
     };
     let io = |e: std::io::Error| fail(Unreadable::Io(e));
@@ -116,26 +136,34 @@ mod tests {
     fn regular_files_are_read_others_refused_at_once() {
         let p = scratch("ok.csv");
         std::fs::write(&p, "t,v_cm,v_t\n").unwrap();
-        assert_eq!(read_user_file(&p, "--data", 100).unwrap(), "t,v_cm,v_t\n");
-        let e = read_user_file(&p, "--data", 5).unwrap_err().to_string();
+        assert_eq!(
+            read_user_file(&p, FileRole::DataOption, 100).unwrap(),
+            "t,v_cm,v_t\n"
+        );
+        let e = read_user_file(&p, FileRole::DataOption, 5)
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("at most 5 bytes"), "{e}");
-        let e = read_user_file(p.parent().unwrap(), "--data", 100).unwrap_err();
+        let e = read_user_file(p.parent().unwrap(), FileRole::DataOption, 100).unwrap_err();
         assert!(e.to_string().contains("a directory"), "{e}");
         #[cfg(unix)]
         {
             for dev in ["/dev/zero", "/dev/urandom", "/dev/null"] {
-                let e = read_user_file(Path::new(dev), "--data", MAX_FILE_BYTES).unwrap_err();
+                let e = read_user_file(Path::new(dev), FileRole::DataOption, MAX_FILE_BYTES)
+                    .unwrap_err();
                 assert!(e.to_string().contains("a device"), "{e}");
             }
             let link = scratch("link.csv");
             let _ = std::fs::remove_file(&link);
             std::os::unix::fs::symlink(&p, &link).unwrap();
-            assert!(read_user_file(&link, "--data", 100).is_ok());
+            assert!(read_user_file(&link, FileRole::DataOption, 100).is_ok());
         }
         std::fs::write(&p, [b'a', 0xff, b'b']).unwrap();
-        let e = read_user_file(&p, "--data", 100).unwrap_err().to_string();
+        let e = read_user_file(&p, FileRole::DataOption, 100)
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("byte 2 is not UTF-8"), "{e}");
-        let e = read_user_file(&scratch("missing"), "--data", 100).unwrap_err();
+        let e = read_user_file(&scratch("missing"), FileRole::DataOption, 100).unwrap_err();
         assert!(e.to_string().starts_with("cannot read --data "), "{e}");
     }
 }

@@ -6,5 +6,5 @@
 pub mod data;
 pub mod file;
 pub mod video;
-pub use file::{FileError, MAX_FILE_BYTES, read_user_file};
+pub use file::{FileError, FileRole, MAX_FILE_BYTES, read_user_file};
 pub mod preset;

@@ -4,7 +4,7 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::input::file::{FileError, MAX_FILE_BYTES, read_user_file};
+use crate::input::file::{FileError, FileRole, MAX_FILE_BYTES, read_user_file};
 use crate::settings::spec::SceneSpec;
 use crate::study::measured::Measured;
 use crate::study::preset::{self, Preset, PresetError, PresetOrigin};
@@ -12,8 +12,9 @@ use crate::study::preset::{self, Preset, PresetError, PresetOrigin};
 /// Why a preset named on the command line or in the app could not be loaded.
 #[derive(Debug, thiserror::Error)]
 pub enum LoadError {
-    #[error("unknown preset '{0}', allowed: a name from `groovelab presets` or a .toml file")]
-    Unknown(String),
+    /// No built-in preset, no file: `name` as the user typed it.
+    #[error("unknown preset '{name}', allowed: a name from `groovelab presets` or a .toml file")]
+    Unknown { name: String },
     #[error(transparent)]
     Io(FileError),
     #[error(transparent)]
@@ -23,8 +24,11 @@ pub enum LoadError {
 /// Why a scene could not be saved as a preset.
 #[derive(Debug, thiserror::Error)]
 pub enum SaveError {
-    #[error("name '{0}', allowed letters, digits, - _ . (no spaces: it is typed after --preset)")]
-    BadName(String),
+    /// A name, as the user typed it, that cannot name a preset file.
+    #[error(
+        "name '{name}', allowed letters, digits, - _ . (no spaces: it is typed after --preset)"
+    )]
+    BadName { name: String },
     #[error("no preset folder (set GROOVELAB_PRESETS)")]
     NoFolder,
     #[error("{0} exists")]
@@ -52,11 +56,13 @@ pub fn load(name_or_path: &str) -> Result<Preset, LoadError> {
         _ => PathBuf::from(name_or_path),
     };
     if !path.exists() {
-        return Err(LoadError::Unknown(name_or_path.to_string()));
+        return Err(LoadError::Unknown {
+            name: name_or_path.to_string(),
+        });
     }
     // Something is there: it must be a regular file of sane size (not a FIFO
     // that would block, not /dev/zero).
-    let text = read_user_file(&path, "preset file", MAX_FILE_BYTES).map_err(LoadError::Io)?;
+    let text = read_user_file(&path, FileRole::Preset, MAX_FILE_BYTES).map_err(LoadError::Io)?;
     Ok(Preset::parse(
         &text,
         &path.display().to_string(),
@@ -135,7 +141,9 @@ impl PresetFile {
                 .chars()
                 .all(|c| c.is_ascii_alphanumeric() || c == '-' || c == '_' || c == '.');
         if !valid {
-            return Err(SaveError::BadName(name.to_string()));
+            return Err(SaveError::BadName {
+                name: name.to_string(),
+            });
         }
         let dir = dir.ok_or(SaveError::NoFolder)?;
         let path = dir.join(format!("{name}.toml"));

@@ -2,12 +2,15 @@
 //! which view is shown. Everything computed about the scene is asked of the [`Lab`].
 //! No terminal here: keys arrive as [`Action`]s, so the whole app is testable without one.
 //! The types it speaks in live in [`super::vocabulary`]; what the main screen's keys do in
-//! `normal`, the picker and text prompts in `prompts`.
+//! `normal`, what the popups ask when they answer in `prompts` (the popups themselves
+//! are layers, [`super::layer`]: a key goes to them first).
 
+mod access;
 pub mod export;
 mod normal;
 mod predict;
 mod prompts;
+mod stops;
 mod video;
 
 use std::path::PathBuf;
@@ -15,7 +18,6 @@ use std::sync::{Arc, LazyLock};
 
 use crate::lab::Lab;
 use crate::lab::jobs::Pool;
-use crate::physics::solution::{EventKind, Solution};
 use crate::settings::params::{Key, PARAMS, Param};
 use crate::settings::spec::SceneError;
 use crate::settings::units::{Dimension, show, significant};
@@ -23,68 +25,72 @@ use crate::settings::units::{Dimension, show, significant};
 pub use super::vocabulary::{
     Action, ChartBall, Export, FPS, Field, Library, Mode, Prediction, SPEEDS, Status, View,
 };
+pub use stops::{EventStop, event_stops};
 
+use super::interact::{Input, Interactive};
 use super::jobs::{ExportRun, FitRuns, Jobs, MethodRows, Notice, OverlayRun, VideoRun};
-use super::line::History;
+use super::layer::{Compositor, Histories, Layer, LayerCx};
 use super::view::charts::state::{ChartState, Moment};
 use super::view::forces::state::ForcesState;
 use super::view::methods::state::MethodsState;
 use super::vocabulary::{DEFAULT_SPEED, Handled, WorkAxis};
+use ratatui::crossterm::event::MouseEvent;
+use ratatui::layout::Rect;
 
 /// The rows of the parameters panel, top to bottom: the table's rows that have steps.
 pub static ROWS: LazyLock<Vec<&'static Param>> =
     LazyLock::new(|| PARAMS.iter().filter(|p| p.steps.is_some()).collect());
 
+/// The app: playback, the view shown and its components' state, the popups open
+/// (a stack of layers), and the lab. The lab, the time, playing and the status line
+/// are open to the edges (the runner, `render` and the tests set scenes, times and
+/// read messages); everything else is read through accessors and changed by actions.
 #[derive(Clone, Debug)]
 pub struct App {
     pub lab: Lab,
     /// Simulated time shown, s.
     pub t: f64,
     pub playing: bool,
-    pub speed: usize,
-    pub selected: usize,
-    pub mode: Mode,
+    speed: usize,
+    selected: usize,
+    /// The popups open over the main screen, top last: they take input first.
+    layers: Compositor,
     /// The Charts view's own state: which chart, which ball, the time zoom.
     charts: ChartState,
-    pub mouse: bool,
+    mouse: bool,
     pub status: Status,
-    pub quit: bool,
-    pub library: Library,
-    pub view: View,
+    quit: bool,
+    library: Library,
+    view: View,
     /// The charts' time-stepping overlay: which run, and its job.
-    pub overlay: OverlayRun,
+    overlay: OverlayRun,
     /// The Methods view's rows (its job).
-    pub methods: MethodRows,
+    methods: MethodRows,
     /// The Fit view's fits and window (their jobs).
-    pub fit: FitRuns,
+    fit: FitRuns,
     /// The file being written (its job).
     export: ExportRun,
     /// The `--data` video: its tracking (a job), its pictures, and whether the Scene
     /// panel shows it.
-    pub video: VideoRun,
+    video: VideoRun,
     /// The app's jobs on its worker pool.
     jobs: Jobs,
     /// What the Methods view puts on its work axis.
     methods_state: MethodsState,
-    /// First line shown of a scrolling popup (help, data table).
-    pub scroll: usize,
-    /// The largest useful `scroll` at the size last laid out (the screen tells it
-    /// before drawing, [`App::laid_out`], so a key never scrolls into blank lines).
-    pub scroll_max: usize,
     /// Where `w`/`W` write a bare file name.
-    pub export_dir: PathBuf,
+    export_dir: PathBuf,
     /// The ball the Forces view's front view shows: 0 left, 1 right.
     forces: ForcesState,
     /// What the screen hides while b is hidden (a class predicts from the picture
     /// alone): the one rule.
-    pub hide: super::hide::Hide,
+    hide: super::hide::Hide,
     /// The last prediction (predict, observe, explain).
-    pub prediction: Option<Prediction>,
+    prediction: Option<Prediction>,
     /// What was typed into each kind of prompt this session (↑/↓ bring it back).
     histories: Histories,
     /// False in `render`, the headless twin: a screen dump writes no files, so the
     /// export and save keys say what they would write and write nothing.
-    pub writes_files: bool,
+    writes_files: bool,
 }
 
 /// What the export and save keys say where files are not written.
@@ -104,7 +110,7 @@ impl App {
             playing: false,
             speed: DEFAULT_SPEED,
             selected: 1,
-            mode: Mode::Normal,
+            layers: Compositor::default(),
             charts: ChartState::default(),
             mouse: true,
             status: Status::None,
@@ -118,8 +124,6 @@ impl App {
             video: VideoRun::default(),
             jobs: Jobs::new(pool),
             methods_state: MethodsState::default(),
-            scroll: 0,
-            scroll_max: usize::MAX,
             export_dir: PathBuf::from("."),
             forces: ForcesState::default(),
             hide: super::hide::Hide::default(),
@@ -132,7 +136,31 @@ impl App {
     /// What the screen laid out for the next frame that the keys need: how far the
     /// open popup scrolls at this size.
     pub fn laid_out(&mut self, scroll_max: usize) {
-        self.scroll_max = scroll_max;
+        self.layers.laid_out(scroll_max);
+    }
+
+    /// The popups open, top last (the screen draws them over the panels).
+    pub fn layers(&self) -> &Compositor {
+        &self.layers
+    }
+
+    /// What is open, as plain data: [`Mode::Normal`] if no popup is.
+    pub fn mode(&self) -> Mode {
+        self.layers.top().map_or(Mode::Normal, Layer::mode)
+    }
+
+    /// The line of the value prompt while a value is typed (on the status line and
+    /// in the selected parameter's row).
+    pub fn editing(&self) -> Option<&Field> {
+        match self.layers.top() {
+            Some(Layer::Prompt(p)) => p.editing_value(),
+            _ => None,
+        }
+    }
+
+    /// Opens `layer` over the screen.
+    fn open(&mut self, layer: Layer) {
+        self.layers.push(layer);
     }
 
     /// True in the Fit view (charts with fit lines, the Fit panel).
@@ -181,7 +209,8 @@ impl App {
             .prediction
             .as_ref()
             .filter(|p| p.scene == self.lab.scene);
-        let pending = self.mode == Mode::Predict || made.is_some_and(|p| self.t < p.reveal_at);
+        let asking = matches!(self.layers.top(), Some(Layer::Question(_)));
+        let pending = asking || made.is_some_and(|p| self.t < p.reveal_at);
         self.hide.with_pending(pending)
     }
 
@@ -290,6 +319,7 @@ impl App {
             t: self.t,
             span: self.chart_span(),
             shown: matches!(self.view, View::Charts | View::Fit),
+            pointer: None,
         }
     }
 
@@ -300,6 +330,7 @@ impl App {
             Handled::Ignored => return false,
             Handled::Consumed => {}
             Handled::Say(message) => self.status = Status::Info(message),
+            Handled::Close(then) | Handled::Ask(then) => self.then(then),
         }
         true
     }
@@ -320,47 +351,92 @@ impl App {
         self.charts.zoom().range(self.chart_span())
     }
 
-    /// Zooms the charts' time axis in (`inward`) or out around `at` (the pointer's
-    /// time under the wheel) and says so.
-    pub fn zoom_around(&mut self, at: f64, inward: bool) {
-        let moment = self.moment();
-        let answer = self.charts.zoom_around(at, inward, moment);
-        self.handled(answer);
+    /// A mouse event on the main screen offered to the view shown (the wheel over
+    /// the chart zooms its time axis): `pointer` is the time under it if it is over
+    /// the chart's plot of the frame on screen. True if the view took it.
+    pub fn mouse_on_view(&mut self, m: MouseEvent, area: Rect, pointer: Option<f64>) -> bool {
+        let moment = Moment {
+            pointer,
+            ..self.moment()
+        };
+        let answer = self.charts.handle(&Input::Mouse(m, area), moment);
+        self.handled(answer)
     }
 
     /// Offers `action` to the component of the view shown that owns it (the Forces
     /// view's ball key is its own); true if one took it.
     pub(super) fn offer(&mut self, action: Action) -> bool {
+        let key = Input::Key(action);
         let answer = match self.view {
-            View::Forces => self.forces.handle(action),
-            _ => Handled::Ignored,
+            View::Forces => self.forces.handle(&key, ()),
+            View::Charts | View::Methods | View::Map | View::Fit => Handled::Ignored,
         };
         if self.handled(answer) {
             return true;
         }
-        let answer = self.methods_state.handle(action);
+        let answer = self.methods_state.handle(&key, ());
         if self.handled(answer) {
             return true;
         }
         let moment = self.moment();
-        let answer = self.charts.handle(action, moment);
+        let answer = self.charts.handle(&key, moment);
         self.handled(answer)
     }
 
-    pub fn apply(&mut self, action: Action) {
-        if action == Action::Quit {
-            // Ctrl-C quits from anywhere; `q` only reaches here from the normal screen
-            // (in a popup the key table makes it close the popup, in a prompt it types).
-            self.quit = true;
-            return;
+    /// Offers `input` to the popups open, top first; true if one took it (what it
+    /// asks of the app done).
+    fn offer_layers(&mut self, input: &Input) -> bool {
+        let cx = LayerCx {
+            presets: self.library.presets.len(),
+            histories: &self.histories,
+        };
+        match self.layers.handle(input, &cx) {
+            Handled::Ignored => false,
+            Handled::Consumed => true,
+            Handled::Say(message) => {
+                self.status = Status::Info(message);
+                true
+            }
+            Handled::Close(then) | Handled::Ask(then) => {
+                self.then(then);
+                true
+            }
         }
+    }
+
+    /// What a key's `action` does: the popups open take it first, top first; what
+    /// none takes reaches the view shown and the main screen's keys. (Ctrl-C falls
+    /// through every popup and quits; `q` quits only from the main screen: in a
+    /// popup the key table makes it close the popup, in a prompt it types.)
+    pub fn apply(&mut self, action: Action) {
+        self.dispatch(&Input::Key(action));
+    }
+
+    /// A mouse event over the open popups, on a frame of `area` (they hold the mouse:
+    /// nothing under a popup is clicked); true if one took it.
+    pub fn mouse_on_layers(&mut self, m: MouseEvent, area: Rect) -> bool {
+        self.dispatch(&Input::Mouse(m, area))
+    }
+
+    fn dispatch(&mut self, input: &Input) -> bool {
         let t = self.t;
-        self.apply_in_mode(action);
+        match (self.offer_layers(input), input) {
+            (true, _) => {}
+            // What no popup took reaches the view shown and the main screen's keys.
+            (false, Input::Key(action)) => self.apply_normal(*action),
+            // A popup holds the mouse (the main screen's is offered only when none is
+            // open: `crate::tui::on_mouse_in`).
+            (false, Input::Mouse(..)) => return false,
+        }
+        if self.quit {
+            return true;
+        }
         // A cursor moved by a key (a step, a jump, the start) takes a zoomed chart along.
         if self.t != t {
             self.charts.follow(self.t, self.chart_span());
         }
         self.sync_jobs();
+        true
     }
 
     /// Requests what the views shown want of this scene (a request already made for
@@ -381,30 +457,6 @@ impl App {
     /// True while an analysis or an export is queued or runs.
     pub fn busy(&self) -> bool {
         self.jobs.busy()
-    }
-
-    fn apply_in_mode(&mut self, action: Action) {
-        match self.mode.clone() {
-            Mode::Normal => self.apply_normal(action),
-            // Scroll keys scroll the help, any other key closes it.
-            Mode::Help | Mode::Table => {
-                if !self.scroll_popup(action) {
-                    self.mode = Mode::Normal;
-                }
-            }
-            Mode::Picker(i) => self.apply_picker(i, action),
-            Mode::Predict => self.apply_predict(action),
-            Mode::Edit(field) => self.apply_text(field, action, TextTarget::Value),
-            Mode::SaveName(field) => self.apply_text(field, action, TextTarget::Name),
-            Mode::Export(kind, field) => self.apply_text(field, action, TextTarget::Export(kind)),
-            Mode::ConfirmOverwrite(name) => {
-                self.mode = Mode::Normal;
-                match action {
-                    Action::Type('y' | 'Y') => self.save(&name, true),
-                    _ => self.status = Status::Info("not saved".into()),
-                }
-            }
-        }
     }
 
     /// A job's notice: a finished export's message goes to the status line; true if
@@ -484,78 +536,4 @@ impl App {
             if self.playing { "playing" } else { "paused" },
         )
     }
-}
-
-/// Which prompt text is typed into: a value, a preset's name, an export's file name.
-#[derive(Clone, Copy)]
-enum TextTarget {
-    Value,
-    Name,
-    Export(Export),
-}
-
-/// One history per kind of prompt ([`TextTarget::index`]).
-type Histories = [History; 3];
-
-/// A time `>` and `<` stop at: an event's, with its label, and for T∞ how many impacts
-/// of the burst before it the stop stands for.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct EventStop {
-    pub t: f64,
-    pub label: &'static str,
-    /// Impacts merged into this stop (T∞ only), and the time they take.
-    pub burst: Option<(usize, f64)>,
-}
-
-/// The share of the span within which impacts before T∞ are one burst: closer together
-/// than a few pixel columns of the chart, so a stop per impact would show nothing new.
-const BURST_SHARE: f64 = 0.02;
-
-/// Where `>`/`<` stop in `sol`'s span, in time order, once per time: each labelled event
-/// (impact, rolling, gliding, slipping, rest, T∞), except that the impacts accumulating
-/// at T∞ (with the slips between them) within [`BURST_SHARE`] of the span before it are
-/// stepped over as one, T∞ itself.
-pub fn event_stops(sol: &Solution) -> Vec<EventStop> {
-    let window = BURST_SHARE * (sol.t_end - sol.t_start);
-    let zeno: Vec<f64> = sol
-        .visible_events()
-        .filter(|e| matches!(e.kind, EventKind::ZenoRest | EventKind::ZenoContact))
-        .map(|e| e.t)
-        .collect();
-    // The T∞ that an event at `t` accumulates toward, if it is inside its burst.
-    let in_burst = |t: f64| zeno.iter().any(|&z| t < z && z - t < window);
-    let mut stops: Vec<EventStop> = Vec::new();
-    for e in sol.visible_events() {
-        let Some(label) = e.kind.label() else {
-            continue;
-        };
-        if in_burst(e.t) {
-            continue;
-        }
-        // One stop per time; the last impact falls on T∞ itself, and T∞ names it.
-        let zeno_here = zeno.contains(&e.t);
-        if stops.last().is_some_and(|s| s.t == e.t) {
-            if !zeno_here {
-                continue;
-            }
-            stops.pop();
-        }
-        let burst = zeno_here.then(|| {
-            let impacts: Vec<f64> = sol
-                .visible_events()
-                .filter(|i| i.kind == EventKind::Collision && i.t <= e.t && e.t - i.t < window)
-                .map(|i| i.t)
-                .collect();
-            (
-                impacts.len(),
-                impacts.first().map_or(0.0, |first| e.t - first),
-            )
-        });
-        stops.push(EventStop {
-            t: e.t,
-            label,
-            burst,
-        });
-    }
-    stops
 }

@@ -1,10 +1,12 @@
 //! Components as helix has them: each view (scene, chart, why, forces, methods, map,
-//! fit, data table) and each popup (help, presets, prompts, predict) is a type of its
-//! own file implementing [`Component`]: it renders from the app's state and the
-//! [`Frame`] the screen prepared, into any area it is given, changing nothing. The
-//! screen (`super::screen`) is the compositor: it lays the frame out once, draws the
-//! panels, the view shown (chosen by an exhaustive match on `View`) and the popup
-//! open (a layer over them, chosen by an exhaustive match on `Mode`).
+//! fit) and each popup (help, data table, presets, prompts, predict) is a type
+//! implementing [`Component`]: it renders from the app's state and the [`Frame`] the
+//! screen prepared, into any area it is given, changing nothing. Input is the sibling
+//! trait's ([`super::interact::Interactive`]): the popups are layers that own their
+//! state ([`super::layer`]), the views' states take the keys the layers leave. The
+//! screen (`super::screen`) lays the frame out once and draws the panels, the view
+//! shown (chosen by an exhaustive match on `View`) and the layers open over them
+//! (each drawn by its own component, an exhaustive match on `Layer`).
 
 use std::rc::Rc;
 

@@ -9,8 +9,10 @@ pub mod canvas;
 pub mod chart;
 pub mod component;
 pub mod hide;
+pub mod interact;
 pub mod jobs;
 pub mod keys;
+pub mod layer;
 pub mod layout;
 pub mod line;
 pub mod plot;
@@ -32,7 +34,7 @@ use ratatui::crossterm::event::{
 };
 use ratatui::crossterm::{cursor, execute};
 
-use app::{Action, App, FPS, Mode};
+use app::{Action, App, FPS};
 use jobs::Notice;
 use screen::Screen;
 use theme::{Glyphs, Theme};
@@ -145,14 +147,14 @@ pub fn run(mut app: App, ascii: bool) -> io::Result<()> {
     }
     // Once, on the real terminal, before its events are read (bounded by a timeout).
     let picker = video_image::detect(switch);
-    set_mouse(app.mouse);
+    set_mouse(app.mouse());
     let result = event_loop(&mut terminal, &mut app, &theme, picker);
     restore();
     result
 }
 
 /// What wakes the event loop: a terminal event, or a job that finished or moved on.
-enum Input {
+enum Incoming {
     Terminal(Event),
     /// Reading the terminal failed: the app ends with this error.
     Failed(io::Error),
@@ -164,7 +166,7 @@ enum Input {
 /// Starts the thread that reads terminal events (blocked, no CPU, until one comes)
 /// into the event loop's channel, and points the lab's jobs at the same channel:
 /// keys and job results arrive in one queue, and the loop sleeps until either comes.
-fn inputs(app: &App) -> io::Result<(Sender<Input>, Receiver<Input>)> {
+fn inputs(app: &App) -> io::Result<(Sender<Incoming>, Receiver<Incoming>)> {
     let (tx, rx) = mpsc::channel();
     let wake = tx.clone();
     let jobs = Mutex::new(tx.clone());
@@ -172,17 +174,17 @@ fn inputs(app: &App) -> io::Result<(Sender<Input>, Receiver<Input>)> {
         let _ = jobs
             .lock()
             .unwrap_or_else(PoisonError::into_inner)
-            .send(Input::Job(notice));
+            .send(Incoming::Job(notice));
     });
     std::thread::Builder::new()
         .name("groovelab-terminal".into())
         .spawn(move || {
             loop {
                 let input = match event::read() {
-                    Ok(e) => Input::Terminal(e),
-                    Err(e) => Input::Failed(e),
+                    Ok(e) => Incoming::Terminal(e),
+                    Err(e) => Incoming::Failed(e),
                 };
-                let failed = matches!(input, Input::Failed(_));
+                let failed = matches!(input, Incoming::Failed(_));
                 if tx.send(input).is_err() || failed {
                     break;
                 }
@@ -202,13 +204,13 @@ fn event_loop(
     let mut screen = Screen::with_graphics(
         picker,
         Box::new(move || {
-            let _ = wake.send(Input::Picture);
+            let _ = wake.send(Incoming::Picture);
         }),
     );
     let mut dirty = true;
     let mut last_tick = Instant::now();
-    let mut mouse = app.mouse;
-    while !app.quit {
+    let mut mouse = app.mouse();
+    while !app.quitting() {
         if dirty {
             // Laid out once, before drawing: the drawing, the keys (a popup's scroll
             // limit) and the mouse read this one frame.
@@ -241,13 +243,13 @@ fn event_loop(
         for input in first.into_iter().chain(rx.try_iter()) {
             let was_playing = app.playing;
             dirty |= match input {
-                Input::Terminal(e) if is_suspend(&e) => {
-                    suspend(terminal, app.mouse)?;
+                Incoming::Terminal(e) if is_suspend(&e) => {
+                    suspend(terminal, app.mouse())?;
                     // The stopped time is not played through.
                     last_tick = Instant::now();
                     true
                 }
-                Input::Terminal(e) => {
+                Incoming::Terminal(e) => {
                     // A click after a key of this batch hits the frame that key made.
                     if dirty
                         && matches!(e, Event::Mouse(_))
@@ -257,19 +259,19 @@ fn event_loop(
                     }
                     on_terminal(app, &screen, e)
                 }
-                Input::Failed(e) => return Err(e),
-                Input::Job(notice) => app.on_job(notice),
-                Input::Picture => true,
+                Incoming::Failed(e) => return Err(e),
+                Incoming::Job(notice) => app.on_job(notice),
+                Incoming::Picture => true,
             };
             if app.playing && !was_playing {
                 last_tick = Instant::now();
             }
-            if app.quit {
+            if app.quitting() {
                 return Ok(());
             }
         }
-        if app.mouse != mouse {
-            mouse = app.mouse;
+        if app.mouse() != mouse {
+            mouse = app.mouse();
             set_mouse(mouse);
         }
         if app.playing && last_tick.elapsed() >= frame {
@@ -286,14 +288,16 @@ fn event_loop(
 /// screen needs a redraw.
 fn on_terminal(app: &mut App, screen: &Screen, event: Event) -> bool {
     match event {
-        Event::Key(key) if key.kind == KeyEventKind::Press => match keys::action(&app.mode, key) {
-            Some(action) => {
-                app.apply(action);
-                true
+        Event::Key(key) if key.kind == KeyEventKind::Press => {
+            match keys::action(&app.mode(), key) {
+                Some(action) => {
+                    app.apply(action);
+                    true
+                }
+                None => false,
             }
-            None => false,
-        },
-        Event::Mouse(m) if app.mouse => on_mouse_in(app, screen, m),
+        }
+        Event::Mouse(m) if app.mouse() => on_mouse_in(app, screen, m),
         Event::Resize(..) => true,
         _ => false,
     }
@@ -315,34 +319,10 @@ pub fn on_mouse_in(app: &mut App, screen: &Screen, m: MouseEvent) -> bool {
     let Some(frame) = screen.frame() else {
         return false;
     };
-    let area = frame.area;
-    let action = match app.mode {
-        Mode::Normal => return on_mouse_main(app, screen, m),
-        _ => on_mouse_popup(app, area, m),
-    };
-    match action {
-        Some(action) => {
-            app.apply(action);
-            true
-        }
-        None => false,
-    }
-}
-
-/// The action of a mouse event over an open popup; prompts take none (a click must
-/// not end the typing).
-fn on_mouse_popup(app: &App, area: ratatui::layout::Rect, m: MouseEvent) -> Option<Action> {
-    let click = m.kind == MouseEventKind::Down(MouseButton::Left);
-    match (&app.mode, m.kind) {
-        (Mode::Picker(_), _) if click => {
-            view::picker_row_at(app, area, m.column, m.row).map(Action::Select)
-        }
-        (Mode::Predict, _) if click => view::answer_at(area, m.column, m.row).map(Action::Type),
-        (Mode::Picker(_) | Mode::Help | Mode::Table, MouseEventKind::ScrollUp) => Some(Action::Up),
-        (Mode::Picker(_) | Mode::Help | Mode::Table, MouseEventKind::ScrollDown) => {
-            Some(Action::Down)
-        }
-        _ => None,
+    if app.layers().is_empty() {
+        on_mouse_main(app, screen, m)
+    } else {
+        app.mouse_on_layers(m, frame.area)
     }
 }
 
@@ -357,22 +337,19 @@ fn on_mouse_main(app: &mut App, screen: &Screen, m: MouseEvent) -> bool {
         app.seek(t);
         return true;
     }
-    // The wheel over the chart zooms its time axis around the pointer's time.
-    let wheel = match m.kind {
-        MouseEventKind::ScrollUp => Some(true),
-        MouseEventKind::ScrollDown => Some(false),
-        _ => None,
-    };
-    if let Some(inward) = wheel
-        && let Some(t) = screen.chart_time_at(app, m.column, m.row)
-    {
-        app.zoom_around(t, inward);
-        return true;
-    }
-    let Some(panels) = screen.frame().and_then(|f| f.panels) else {
+    let Some(frame) = screen.frame() else {
         return false;
     };
-    let hit = view::param_at(panels.params, app.selected, m.column, m.row);
+    // The view shown takes its mouse events (the wheel over the chart zooms its time
+    // axis around the pointer's time).
+    let pointer = screen.chart_time_at(app, m.column, m.row);
+    if app.mouse_on_view(m, frame.area, pointer) {
+        return true;
+    }
+    let Some(panels) = frame.panels else {
+        return false;
+    };
+    let hit = view::param_at(panels.params, app.selected(), m.column, m.row);
     let action = match (m.kind, hit) {
         (MouseEventKind::Down(MouseButton::Left), Some(i)) => Action::Select(i),
         (MouseEventKind::ScrollUp, Some(i)) => Action::ScrollParam(i, true),
@@ -386,10 +363,10 @@ fn on_mouse_main(app: &mut App, screen: &Screen, m: MouseEvent) -> bool {
 /// Replays `keys` on `app` as the terminal would.
 pub fn replay(app: &mut App, keys: &[KeyEvent]) {
     for &key in keys {
-        if app.quit {
+        if app.quitting() {
             break;
         }
-        if let Some(action) = keys::action(&app.mode, key) {
+        if let Some(action) = keys::action(&app.mode(), key) {
             app.apply(action);
         }
     }

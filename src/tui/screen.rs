@@ -8,8 +8,9 @@
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 
-use super::app::{App, Mode, View};
+use super::app::{App, View};
 use super::component::{Component, Ctx, Frame};
+use super::layer::Layer;
 use super::theme::{Theme, force_ascii};
 use super::view;
 use super::view::video_image::VideoImage;
@@ -54,7 +55,7 @@ impl Screen {
         let mut work = Work::default();
         let (mut chart, mut regimes) = (None, None);
         if let Some(p) = panels {
-            match app.view {
+            match app.view() {
                 View::Charts | View::Fit => {
                     let (built, thinned) =
                         view::charts::build(app, &mut self.cache, p.chart, theme);
@@ -69,7 +70,7 @@ impl Screen {
             }
         }
         // A popup lies over the panels: no graphic then (text cannot cover it).
-        let scene = panels.filter(|_| matches!(app.mode, Mode::Normal | Mode::Edit(_)));
+        let scene = panels.filter(|_| !app.layers().covers());
         self.video.prepare(app, scene.map(|p| p.scene), theme);
         self.frame = Some(Frame {
             area,
@@ -118,7 +119,7 @@ impl Screen {
     /// The time under a click at (`column`, `row`) of the frame prepared last: inside
     /// the chart's plot while the charts are shown and no popup is open.
     pub fn chart_time_at(&self, app: &App, column: u16, row: u16) -> Option<f64> {
-        if app.view != View::Charts || app.mode != Mode::Normal {
+        if app.view() != View::Charts || !app.layers().is_empty() {
             return None;
         }
         self.frame.as_ref()?.chart.as_ref()?.time_at(column, row)
@@ -259,7 +260,7 @@ const ENERGY_WITHHELD: Withheld = Withheld {
 fn parts_of(app: &App) -> Vec<(&'static dyn Component, Place)> {
     use view::{charts, fit, forces, info, map, methods};
     let hide = app.hidden();
-    match app.view {
+    match app.view() {
         View::Charts if hide.derived() && app.charts().energy() => {
             vec![(&ENERGY_WITHHELD, Place::Chart), (&info::Why, Place::Side)]
         }
@@ -297,22 +298,21 @@ fn parts_of(app: &App) -> Vec<(&'static dyn Component, Place)> {
     }
 }
 
-/// The popup `mode` opens, a layer over the screen (none: the main screen, or the
-/// value prompt, typed on the status line).
-fn layer_of(mode: &Mode) -> Option<&'static dyn Component> {
-    use view::{popups, predict, table};
-    match mode {
-        Mode::Normal | Mode::Edit(_) => None,
-        Mode::Help => Some(&popups::Help),
-        Mode::Table => Some(&table::TableView),
-        Mode::Predict => Some(&predict::Question),
-        Mode::Picker(_) => Some(&popups::Picker),
-        Mode::SaveName(_) | Mode::Export(..) | Mode::ConfirmOverwrite(_) => Some(&popups::Prompt),
+/// The component of a popup open (every layer draws itself: a new popup is a new
+/// arm here, which the compiler asks for).
+fn component_of(layer: &Layer) -> &dyn Component {
+    match layer {
+        Layer::Help(help) => help,
+        Layer::Table(table) => table,
+        Layer::Picker(picker) => picker,
+        Layer::Prompt(prompt) => prompt,
+        Layer::Confirm(confirm) => confirm,
+        Layer::Question(question) => question,
     }
 }
 
-/// The compositor: the panels, the view shown, the status bar, then the popup open
-/// as a layer over them.
+/// The compositor: the panels, the view shown, the status bar, then the popups open
+/// as layers over them, bottom first.
 fn draw_panels(app: &App, frame: &Frame, buf: &mut Buffer, theme: &Theme) {
     let area = frame.area;
     let Some(p) = frame.panels else {
@@ -349,8 +349,8 @@ fn draw_panels(app: &App, frame: &Frame, buf: &mut Buffer, theme: &Theme) {
         part.render(at, buf, &cx);
     }
     view::status::StatusBar.render(p.status.union(p.hints), buf, &cx);
-    if let Some(popup) = layer_of(&app.mode) {
-        popup.render(area, buf, &cx);
+    for layer in app.layers().iter() {
+        component_of(layer).render(area, buf, &cx);
     }
 }
 

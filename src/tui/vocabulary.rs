@@ -78,7 +78,8 @@ impl Export {
     }
 }
 
-/// A popup or prompt over the main screen, which takes the keys while open.
+/// What is open over the main screen, as plain data ([`super::app::App::mode`], made
+/// from the top layer): the key table reads a key by it (in a prompt `q` is a letter).
 #[derive(Clone, Debug, PartialEq)]
 pub enum Mode {
     Normal,
@@ -205,13 +206,45 @@ pub enum Action {
     DropData,
 }
 
-/// What a component did with a key's action: not its key, done, or done with a
-/// message for the status line. The app acts on it.
+/// What a component did with an input: not its input (it falls through to what lies
+/// below), done, or done with a message for the status line; a popup also closes
+/// itself, or asks the app for what only the app can do. The app acts on it.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Handled {
     Ignored,
     Consumed,
     Say(String),
+    /// The layer is done: the compositor takes it off, then the app does this.
+    Close(Then),
+    /// The layer stays open and asks the app for this.
+    Ask(Then),
+}
+
+/// What a popup asks of the app when it answers (the lab, the files and the
+/// playback are the app's, not the popup's).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Then {
+    Nothing,
+    /// A message for the status line.
+    Say(String),
+    /// Load the library's preset of this index.
+    Load(usize),
+    /// A prompt's line, confirmed with something typed.
+    Typed(TextTarget, Field),
+    /// Save the scene over the preset file of this name.
+    Overwrite(String),
+    /// The prediction made: play and watch.
+    Predict(Regime),
+    /// The forces shown as givens until the outcome, or hidden (predict's `g`).
+    ToggleGivens,
+}
+
+/// Which prompt text is typed into: a value, a preset's name, an export's file name.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TextTarget {
+    Value,
+    Name,
+    Export(Export),
 }
 
 /// Playback speeds (simulated seconds per real second); slow motion by default, as

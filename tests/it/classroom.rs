@@ -1,17 +1,11 @@
 //! Issue 28, "the classroom": what a class sees on a projector, each item a regression
 //! test through the binary as a user runs it (`render` draws the app's very screen).
 
-use crate::common::groovelab;
+use crate::common::{groovelab, stdout};
 
 /// The screen `render` prints for `args` (which must succeed).
 fn screen(args: &[&str]) -> String {
-    let out = groovelab(&[&["render"], args].concat());
-    assert!(
-        out.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).unwrap()
+    stdout(&[&["render"], args].concat())
 }
 
 /// Typing the b* the screen shows (4.26 cm, rounded from 4.2603 cm) gives D e =

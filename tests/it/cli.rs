@@ -4,7 +4,7 @@
 use std::io::Write;
 use std::process::{Command, Stdio};
 
-use crate::common::groovelab;
+use crate::common::{groovelab, json};
 
 fn assert_rejected(args: &[&str], mentions: &str) {
     let out = groovelab(args);
@@ -192,15 +192,9 @@ fn a_preset_file_with_units_runs() {
 
 #[test]
 fn json_follows_the_interface() {
-    let out = groovelab(&[
+    let doc = json(&[
         "simulate", "--format", "json", "--sample", "10ms", "--width", "4.4cm",
     ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     for key in ["scene", "derived", "method", "events", "samples", "final"] {
         assert!(!doc[key].is_null(), "missing {key}");
     }

@@ -74,6 +74,23 @@ pub fn groovelab(args: &[&str]) -> std::process::Output {
         .unwrap()
 }
 
+/// What the binary printed for `args` ([`groovelab`]), which must succeed (else the
+/// test fails with its `error:` line).
+pub fn stdout(args: &[&str]) -> String {
+    let out = groovelab(args);
+    assert!(
+        out.status.success(),
+        "{args:?}: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).unwrap()
+}
+
+/// What the binary printed for `args` ([`stdout`]: it must succeed), read as JSON.
+pub fn json(args: &[&str]) -> serde_json::Value {
+    serde_json::from_str(&stdout(args)).unwrap()
+}
+
 /// Runs the command line `args` (a subcommand first) in this process, with the user's
 /// presets as the command finds them: what it would print, or its error message.
 pub fn run_in_process(args: &[&str]) -> Result<String, String> {
@@ -169,7 +186,9 @@ pub fn press(app: &mut App, script: &str) {
 
 /// Selects the parameter row of `key`.
 pub fn select(app: &mut App, key: Key) {
-    app.selected = ROWS.iter().position(|p| p.key == key).unwrap();
+    app.apply(groovelab::tui::app::Action::Select(
+        ROWS.iter().position(|p| p.key == key).unwrap(),
+    ));
 }
 
 /// The app as `render` leaves it just before drawing: the lab of `scene` and `data`,
@@ -185,7 +204,7 @@ pub fn rendered(
     library: Library,
 ) -> App {
     let mut app = cli::opened(scene, data, library).unwrap();
-    app.writes_files = false;
+    app.write_no_files();
     let keys = keys.map_or(Ok(Vec::new()), keys::parse_script).unwrap();
     replay_settled(&mut app, &keys);
     if let Some(t) = at {
@@ -202,9 +221,9 @@ pub fn text(app: &App, size: (u16, u16), ascii: bool) -> String {
     screen::to_text(app, size.0, size.1, &Theme::new(Glyphs::new(ascii), true))
 }
 
-/// The scene of the preset paper-b4.9, resolved (the data generators' truth).
-pub fn paper_scene() -> groovelab::physics::scene::Scene {
-    groovelab::input::preset::load("paper-b4.9")
+/// The scene of the built-in preset `name`, resolved.
+pub fn preset_scene(name: &str) -> groovelab::physics::scene::Scene {
+    groovelab::input::preset::load(name)
         .unwrap()
         .spec
         .resolve()
@@ -212,9 +231,23 @@ pub fn paper_scene() -> groovelab::physics::scene::Scene {
         .0
 }
 
-/// A fresh scratch folder for one test of an area, named by the process.
+/// The scene of the preset paper-b4.9, resolved (the data generators' truth).
+pub fn paper_scene() -> groovelab::physics::scene::Scene {
+    preset_scene("paper-b4.9")
+}
+
+/// Where the tests of `area` keep their files: `target/tmp/AREA` (cargo's folder for
+/// integration tests' files). Each run empties the folders it uses and leaves them for
+/// the next run to reuse, so runs do not pile folders up in the system's temporary
+/// folder, and a failed test's files are there to look at.
+pub fn scratch_root(area: &str) -> std::path::PathBuf {
+    std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(area)
+}
+
+/// A fresh, empty scratch folder for one test of an area (`target/tmp/AREA/TEST`).
 pub fn scratch_dir(area: &str, test: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("groovelab-{area}-{}-{test}", std::process::id()));
+    let dir = scratch_root(area).join(test);
+    let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     dir
 }

@@ -205,12 +205,7 @@ fn a_files_stated_groove_is_kept_and_compared() {
 #[test]
 fn an_r_edited_below_the_rim_marks_distance_is_refused() {
     use groovelab::study::video::{self, TrackFormat, Video};
-    let truth = groovelab::input::preset::load("paper-b4.9")
-        .unwrap()
-        .spec
-        .resolve()
-        .unwrap()
-        .0;
+    let truth = crate::common::paper_scene();
     let shot = Video {
         fps: 120.0,
         noise: 3e-4,

@@ -10,22 +10,19 @@ use groovelab::tui::app::{App, Mode, Status};
 use crate::common::{self, press};
 
 fn scratch(test: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("groovelab-exports-{}-{test}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+    crate::common::scratch_dir("exports", test)
 }
 
 fn app_in(dir: &std::path::Path, preset: &str) -> App {
     let mut a = common::app(preset, common::no_user_presets("exports"));
-    a.export_dir = dir.to_path_buf();
+    a.set_export_dir(dir.to_path_buf());
     a
 }
 
 /// Presses `W` and Enter; the file written and its text.
 fn export_figure(a: &mut App) -> (String, String) {
     press(a, "W");
-    let name = match &a.mode {
+    let name = match &a.mode() {
         Mode::Export(_, field) => field.value().to_string(),
         _ => panic!("no export prompt: {:?}", a.status),
     };
@@ -36,7 +33,7 @@ fn export_figure(a: &mut App) -> (String, String) {
         "{:?}",
         a.status
     );
-    let svg = std::fs::read_to_string(a.export_dir.join(&name)).unwrap();
+    let svg = std::fs::read_to_string(a.export_dir().join(&name)).unwrap();
     assert!(svg.starts_with("<svg"), "{name}");
     (name, svg)
 }
@@ -74,7 +71,7 @@ fn shift_w_writes_the_figure_of_the_view_on_screen() {
     assert!(svg.contains("steps per run"), "{}", &svg[..400]);
     // The energy chart has none yet: said at once, no prompt.
     press(&mut a, "c e W");
-    assert_eq!(a.mode, Mode::Normal);
+    assert_eq!(a.mode(), Mode::Normal);
     assert!(matches!(&a.status, Status::Error(e) if e.contains("energy chart has no SVG")));
     let written = std::fs::read_dir(&dir).unwrap().count();
     assert_eq!(written, 5);
@@ -315,7 +312,7 @@ fn shift_w_in_predict_mode_writes_no_outcome() {
         "{:?}",
         a.status
     );
-    assert_eq!(a.mode, Mode::Normal);
+    assert_eq!(a.mode(), Mode::Normal);
     let _ = std::fs::remove_dir_all(&dir);
 }
 

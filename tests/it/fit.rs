@@ -7,7 +7,7 @@ use groovelab::physics::scene::{Scene, Span};
 use groovelab::study::fit::{self, Free, PAPER_TABLE};
 use groovelab::study::measured::Measured;
 
-use crate::common::groovelab;
+use crate::common::{groovelab, json};
 
 fn paper(width: &str) -> (Scene, Measured) {
     let p = groovelab::input::preset::load(&format!("paper-b{width}")).unwrap();
@@ -351,7 +351,7 @@ fn a_users_csv_fits_like_the_preset() {
         "plain.csv",
         "t,v_cm,v_t\n0,60,60\n10,61,61\n20,0,61\n30,-60,58\n40,-55,54\n50,-50,50\n60,-45,46\n",
     );
-    let out = groovelab(&[
+    let v = json(&[
         "fit",
         "--preset",
         "paper-b3.5",
@@ -366,12 +366,6 @@ fn a_users_csv_fits_like_the_preset() {
         "--format",
         "json",
     ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert!((v["line_fit"]["from"].as_f64().unwrap() - 0.01).abs() < 1e-12);
 }
 
@@ -825,7 +819,7 @@ fn flat_table() -> (
     );
     let screen = text(&app, (120, 40), false);
     let view = words(&screen, "verdict");
-    let State::Ready(Ok(f)) = app.fit.fits() else {
+    let State::Ready(Ok(f)) = app.fit().fits() else {
         panic!("no fits")
     };
     let p = &f.model_fit;
@@ -1126,12 +1120,7 @@ fn drifting_video(scene: &Scene, fps: f64, seed: u64, sd: f64, tau: f64) -> Meas
 /// μ_k + v0 for 2 of these 6 (and for none at 120 frames/s).
 #[test]
 fn oversampling_a_track_does_not_make_extra_parameters_supported() {
-    let scene = groovelab::input::preset::load("paper-b4.9")
-        .unwrap()
-        .spec
-        .resolve()
-        .unwrap()
-        .0;
+    let scene = crate::common::paper_scene();
     // (how many videos name μ_k + v0, the points they are worth in all)
     let named = |fps: f64| -> (usize, f64) {
         (1..=6).fold((0, 0.0), |(named, worth), seed| {

@@ -32,7 +32,7 @@ const SIZES: [(u16, u16); 3] = [(80, 24), (120, 40), (200, 60)];
 fn v_shows_the_forces_view_and_b_picks_its_ball() {
     let mut a = app("paper-b3.5");
     press(&mut a, "v");
-    assert_eq!(a.view, View::Forces);
+    assert_eq!(a.view(), View::Forces);
     press(&mut a, "b");
     assert_eq!(a.forces().ball(), 1);
     assert_eq!(
@@ -43,7 +43,7 @@ fn v_shows_the_forces_view_and_b_picks_its_ball() {
     let s = text(&a, (120, 40), false);
     assert!(s.contains("Forces: front view, right ball"), "{s}");
     press(&mut a, "b v");
-    assert_eq!((a.forces().ball(), a.view), (0, View::Charts));
+    assert_eq!((a.forces().ball(), a.view()), (0, View::Charts));
     // Outside the Forces view b still switches the chart's ball.
     press(&mut a, "b");
     assert_eq!(a.charts().ball(), ChartBall::Right);
@@ -128,8 +128,8 @@ fn a_pinned_run_gives_arrows_in_the_chain() {
 fn predict_asks_plays_and_explains() {
     let mut a = app("paper-b4.9");
     press(&mut a, "y");
-    assert_eq!(a.mode, Mode::Predict);
-    assert_eq!(a.view, View::Forces);
+    assert_eq!(a.mode(), Mode::Predict);
+    assert_eq!(a.view(), View::Forces);
     let q = text(&a, (80, 24), false);
     assert!(
         q.contains("what will the balls do?") && q.contains("come back"),
@@ -141,9 +141,9 @@ fn predict_asks_plays_and_explains() {
         assert!(!q.contains("recollide") && !q.contains("D = 0.5"), "{q}");
     }
     press(&mut a, "1");
-    let p = a.prediction.clone().unwrap();
+    let p = a.prediction().cloned().unwrap();
     assert_eq!(p.guess, Regime::Depart);
-    assert!(a.playing && a.t == a.lab.solution.t_start && a.mode == Mode::Normal);
+    assert!(a.playing && a.t == a.lab.solution.t_start && a.mode() == Mode::Normal);
     // Before the outcome shows, nothing gives it away.
     a.t = 0.5 * p.reveal_at;
     let s = text(&a, (120, 40), false);
@@ -165,7 +165,7 @@ fn predict_asks_plays_and_explains() {
     assert!(s.contains("spin rolls them back"), "{s}");
     // Playing stops where the outcome shows, then plays on.
     press(&mut a, "y 2");
-    let reveal = a.prediction.as_ref().unwrap().reveal_at;
+    let reveal = a.prediction().unwrap().reveal_at;
     while a.playing {
         a.tick(0.05);
     }
@@ -178,12 +178,12 @@ fn predict_asks_plays_and_explains() {
     a.t = a.lab.solution.t_end;
     assert!(text(&a, (120, 40), true).contains("right"), "ascii verdict");
     press(&mut a, "y esc");
-    assert_eq!(a.mode, Mode::Normal);
-    assert!(!a.quit, "esc in the question does not quit");
+    assert_eq!(a.mode(), Mode::Normal);
+    assert!(!a.quitting(), "esc in the question does not quit");
     // Asked after the impact, the question rewinds first: the outcome on screen
     // behind it would give the answer away.
     press(&mut a, "end y");
-    assert_eq!(a.mode, Mode::Predict);
+    assert_eq!(a.mode(), Mode::Predict);
     assert_eq!(a.t, a.lab.solution.t_start);
     let s = text(&a, (120, 40), false);
     assert!(!s.contains("RECOLLIDE"), "{s}");
@@ -201,7 +201,7 @@ fn a_changed_scene_makes_the_prediction_stale() {
 fn hiding_b_leaves_the_picture_and_hides_what_gives_b_away() {
     let mut a = app("paper-b4.9");
     press(&mut a, "B v");
-    assert!(a.hide.b());
+    assert!(a.hide().b());
     for ascii in [false, true] {
         let s = text(&a, (120, 40), ascii);
         for secret in ["4.90", "k 0.454", "b/R", "1.80 N", "0.613", "D = 0.516"] {

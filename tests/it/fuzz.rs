@@ -75,11 +75,11 @@ impl Case {
             .map(|w| w[1].to_string_lossy().into_owned())
     }
 
+    /// The command: the first argument that names one.
     fn command(&self) -> Option<&'static str> {
-        COMMANDS
+        self.args
             .iter()
-            .copied()
-            .find(|c| self.args.iter().any(|a| a == *c))
+            .find_map(|a| COMMANDS.iter().copied().find(|c| a == *c))
     }
 
     /// The command line as a shell would take it (for reports).
@@ -594,14 +594,8 @@ fn damaged_file_case() -> BoxedStrategy<Case> {
             }
             let ext = base.rsplit('.').next().unwrap();
             let file = f.dir.join(format!("damaged.{ext}"));
-            let mut args: Vec<String> = command.split(' ').map(String::from).collect();
-            if command.starts_with("fit") {
-                args.push("--data".into());
-            }
-            args.push(file.display().to_string());
-            let mut case = to_case("damaged", args);
-            case.files.push((file, bytes));
-            case
+            let flag = command.starts_with("fit").then_some("--data");
+            file_case("damaged", &command, flag, (file, bytes), Vec::new())
         })
         .boxed()
 }
@@ -827,6 +821,24 @@ fn to_case(kind: &'static str, args: Vec<String>) -> Case {
     }
 }
 
+/// A case that writes a file (its path and bytes) and runs `command` (words split at
+/// spaces) on it: the path after `flag` when there is one, then `extra`.
+fn file_case(
+    kind: &'static str,
+    command: &str,
+    flag: Option<&str>,
+    (file, bytes): (PathBuf, Vec<u8>),
+    extra: Vec<String>,
+) -> Case {
+    let mut args: Vec<String> = command.split(' ').map(String::from).collect();
+    args.extend(flag.map(String::from));
+    args.push(file.display().to_string());
+    args.extend(extra);
+    let mut case = to_case(kind, args);
+    case.files.push((file, bytes));
+    case
+}
+
 /// Random command lines over every command and option.
 fn cli_case() -> BoxedStrategy<Case> {
     let junk = prop_oneof![
@@ -1003,12 +1015,13 @@ fn preset_case() -> BoxedStrategy<Case> {
     (text, command)
         .prop_map(|(text, command)| {
             let file = fixtures().dir.join("fuzz-preset.toml");
-            let mut args: Vec<String> = command.split(' ').map(String::from).collect();
-            args.push("--preset".into());
-            args.push(file.display().to_string());
-            let mut case = to_case("preset", args);
-            case.files.push((file, text));
-            case
+            file_case(
+                "preset",
+                &command,
+                Some("--preset"),
+                (file, text),
+                Vec::new(),
+            )
         })
         .boxed()
 }
@@ -1128,13 +1141,8 @@ fn csv_case() -> BoxedStrategy<Case> {
         })
         .prop_map(|(text, extra, command)| {
             let file = fixtures().dir.join("fuzz-data.csv");
-            let mut args: Vec<String> = command.split(' ').map(String::from).collect();
-            args.push("--data".into());
-            args.push(file.display().to_string());
-            args.extend(extra);
-            let mut case = to_case("csv", args);
-            case.files.push((file, text.into_bytes()));
-            case
+            let written = (file, text.into_bytes());
+            file_case("csv", &command, Some("--data"), written, extra)
         })
         .boxed()
 }
@@ -1243,56 +1251,74 @@ fn run(case: &Case) -> Result<Result<Exit, String>, Duration> {
     rx.recv_timeout(limit()).map_err(|_| limit())
 }
 
-/// Keys whose value may be `null` in JSON output (the `Option`s of the schema).
-const NULLABLE: &[&str] = &[
-    "t_pure_gliding",
-    "t_pure_slipping",
-    "b_star",
-    "left_after_impact",
-    "accumulation_time",
-    "bridge",
-    "accumulation",
-    "t_end",
-    "y",
-    "v_ratio",
-    "t_roll",
-    "t_accumulation",
-    "step",
-    "tolerance",
-    "err_t_roll",
-    "err_t_impact",
-    "note",
-    "v0_se",
-    "restitution_se",
-    "rolling_resistance_se",
-    "stalled",
-    "label",
-    // compare: where the step budget cut the span, `null` when it covered it all.
-    "cut",
+/// Every command: keys of the parts several commands print (the scene, its derived
+/// values, the run's summary and its solution).
+const ANY: &[&str] = &COMMANDS;
+
+/// Keys whose value may be `null` in JSON output (the `Option`s of the schema), each
+/// with the commands whose output documents the `null` (docs/interface.md). A `null`
+/// under a key elsewhere (say `frame_rate` from `fit`, where it is always a number)
+/// is a non-finite number and fails.
+const NULLABLE: &[(&str, &[&str])] = &[
+    ("t_pure_gliding", ANY),
+    ("t_pure_slipping", ANY),
+    ("b_star", ANY),
+    ("left_after_impact", ANY),
+    ("accumulation_time", ANY),
+    ("bridge", ANY),
+    ("accumulation", ANY),
+    ("t_end", ANY),
+    ("label", ANY),
+    // simulate --method: why a time-stepping run stalled, `null` when it did not.
+    ("stalled", &["simulate"]),
+    // compare's rows: the step or the tolerance (the other `null`), the errors a run
+    // has no counterpart for, a stalled run's note, and where the step budget cut the
+    // span (`null` when it covered it all).
+    ("step", &["compare"]),
+    ("tolerance", &["compare"]),
+    ("err_t_roll", &["compare"]),
+    ("err_t_impact", &["compare"]),
+    ("note", &["compare"]),
+    ("cut", &["compare"]),
     // fit's models: a value and its standard error, `null` where the data do not
-    // determine it (with its reason).
-    "value",
-    "se",
-    // fit's sources: the approach speed of the user's own data, `null` where there are
-    // none (the preset's series) or they measure none.
-    "approach",
+    // determine it (with its reason), and the approach speed of the user's own data,
+    // `null` where there are none (the preset's series) or they measure none.
+    ("v0_se", &["fit"]),
+    ("restitution_se", &["fit"]),
+    ("rolling_resistance_se", &["fit"]),
+    ("value", &["fit"]),
+    ("se", &["fit"]),
+    ("approach", &["fit"]),
+    // sweep: a 1-D sweep's `y`; v'/v0 and t' without friction or impact; no
+    // accumulation point.
+    ("y", &["sweep", "track"]),
+    ("v_ratio", &["sweep"]),
+    ("t_roll", &["sweep"]),
+    ("t_accumulation", &["sweep"]),
     // track's JSON: a ball's centre (`x`, `y`, `sigma`) or its mark (`mark_x`,
     // `mark_y`, `mark_sigma`) in a frame where it is left out, never filled in.
-    "x",
-    "y",
-    "sigma",
-    "mark_x",
-    "mark_y",
-    "mark_sigma",
+    ("x", &["track"]),
+    ("sigma", &["track"]),
+    ("mark_x", &["track"]),
+    ("mark_y", &["track"]),
+    ("mark_sigma", &["track"]),
     // data's report: a file with fewer than two distinct times has no frame rate.
-    "frame_rate",
+    ("frame_rate", &["data"]),
 ];
 
-fn nulls(v: &serde_json::Value, key: &str, out: &mut Vec<String>) {
+/// May `key` be `null` in the JSON of `command`?
+fn nullable(command: Option<&str>, key: &str) -> bool {
+    NULLABLE
+        .iter()
+        .any(|(k, cs)| *k == key && command.is_some_and(|c| cs.contains(&c)))
+}
+
+/// The keys under which `v` holds a `null` that `command` may not print.
+fn nulls(v: &serde_json::Value, command: Option<&str>, key: &str, out: &mut Vec<String>) {
     match v {
-        serde_json::Value::Null if !NULLABLE.contains(&key) => out.push(key.to_string()),
-        serde_json::Value::Array(a) => a.iter().for_each(|x| nulls(x, key, out)),
-        serde_json::Value::Object(o) => o.iter().for_each(|(k, x)| nulls(x, k, out)),
+        serde_json::Value::Null if !nullable(command, key) => out.push(key.to_string()),
+        serde_json::Value::Array(a) => a.iter().for_each(|x| nulls(x, command, key, out)),
+        serde_json::Value::Object(o) => o.iter().for_each(|(k, x)| nulls(x, command, k, out)),
         _ => {}
     }
 }
@@ -1397,7 +1423,7 @@ fn judge(case: &Case, result: &Result<Result<Exit, String>, Duration>) -> Verdic
                     }
                     Ok(v) => {
                         let mut found = Vec::new();
-                        nulls(&v, "", &mut found);
+                        nulls(&v, case.command(), "", &mut found);
                         found.sort();
                         found.dedup();
                         if !found.is_empty() {
@@ -1664,6 +1690,19 @@ fn the_harness_sees_a_broken_contract() {
     assert!(class(exit(130, "", "error: interrupted\n")).is_some());
     assert_eq!(class(exit(0, "{\"b_star\": null, \"k\": 1.0}", "")), None);
     assert!(class(exit(0, "{\"k\": null}", "")).is_some());
+    // A `null` is allowed only where the command documents it: `data` reports a file
+    // with one time as having no frame rate; `fit`'s frame rate is always a number.
+    let rate = "{\"frame_rate\": null}";
+    let of = |command: &str| {
+        let case = to_case(
+            "cli",
+            vec![command.into(), "--format".into(), "json".into()],
+        );
+        judge(&case, &exit(0, rate, "")).class().map(String::from)
+    };
+    assert_eq!(of("data"), None);
+    assert!(of("fit").is_some());
+    assert!(of("simulate").is_some());
     assert!(class(Ok(Err("boom".into()))).is_some());
     assert!(class(Err(Duration::from_secs(1))).is_some());
     let table = to_case("cli", vec!["simulate".into()]);

@@ -128,13 +128,7 @@ fn the_track_flags_reach_the_reader() {
             "json",
         ];
         all.extend_from_slice(args);
-        let out = groovelab(&all);
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        serde_json::from_slice(&out.stdout).unwrap()
+        crate::common::json(&all)
     };
     let w = json(&["--window", "50ms"]);
     assert_eq!(w["track"]["half_window_frames"], 6);

@@ -22,8 +22,7 @@ fn keys(a: &mut App, script: &str) {
 }
 
 fn set_overlay(a: &mut App, choice: Option<(Method, u8)>) {
-    a.overlay.choice = choice;
-    a.sync_jobs();
+    a.set_overlay(choice);
 }
 
 #[test]
@@ -33,7 +32,7 @@ fn a_repeated_request_is_not_recomputed() {
     keys(&mut a, "o");
     a.wait();
     assert_eq!(runs.get(), 1, "the overlay");
-    let choice = a.overlay.choice;
+    let choice = a.overlay().choice;
     set_overlay(&mut a, choice);
     // The Methods view opened, closed and opened again; the Fit view likewise (a
     // velocity series: one fit, no position fit).
@@ -44,7 +43,7 @@ fn a_repeated_request_is_not_recomputed() {
     keys(&mut a, "f f");
     a.wait();
     assert_eq!(runs.get(), 3, "overlay, Methods rows, fit: each once");
-    assert!(matches!(a.fit.fits(), State::Ready(Ok(_))));
+    assert!(matches!(a.fit().fits(), State::Ready(Ok(_))));
     // A new scene: what is wanted (the fit and the overlay) runs again, once.
     a.set_value(Key::Width, 0.050);
     a.wait();
@@ -63,7 +62,8 @@ fn a_result_for_an_earlier_scene_is_never_shown() {
     fresh.set_value(Key::Width, 0.047);
     set_overlay(&mut fresh, Some((Method::Euler, 4)));
     fresh.wait();
-    let (State::Ready(got), State::Ready(want)) = (a.overlay.state(), fresh.overlay.state()) else {
+    let (State::Ready(got), State::Ready(want)) = (a.overlay().state(), fresh.overlay().state())
+    else {
         panic!("both overlays ready");
     };
     assert_eq!(got.points, want.points);
@@ -78,7 +78,7 @@ fn a_fit_is_applied_whole_and_solved_once() {
     let (mut a, runs) = app("paper-b4.9");
     keys(&mut a, "f");
     a.wait();
-    let State::Ready(Ok(f)) = a.fit.fits() else {
+    let State::Ready(Ok(f)) = a.fit().fits() else {
         panic!("fit ready");
     };
     let mu = f.model_fit.mu;
@@ -99,7 +99,7 @@ fn the_labs_analyses_are_work_without_a_view() {
     let (mut a, _) = app("paper-b4.9");
     keys(&mut a, "f");
     a.wait();
-    let State::Ready(Ok(shown)) = a.fit.fits() else {
+    let State::Ready(Ok(shown)) = a.fit().fits() else {
         panic!("fit ready");
     };
     assert_eq!(in_place.model_fit.mu, shown.model_fit.mu);

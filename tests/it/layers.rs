@@ -590,7 +590,7 @@ fn a_repeat_that_changes_nothing_adds_no_undo_step() {
     let fitted = a.lab.scene.mu;
     assert_ne!(fitted, 0.17, "the fit moved μ_k");
     assert_eq!(a.lab.settings().edits().len(), 1);
-    let groovelab::lab::jobs::State::Ready(Ok(f)) = a.fit.fits() else {
+    let groovelab::lab::jobs::State::Ready(Ok(f)) = a.fit().fits() else {
         panic!("the refit")
     };
     let (refit, se) = (f.model_fit.mu, f.model_fit.mu_se);

@@ -11,6 +11,7 @@ mod closed_forms;
 mod data_files;
 mod data_hints;
 mod data_scene;
+mod errors;
 mod exports;
 mod fit;
 mod forces;

@@ -219,7 +219,7 @@ fn the_why_panel_shows_the_labs_numbers() {
 fn the_methods_runs_panel_never_cuts_an_error() {
     let a = app("paper-b4.9", SceneSpec::default(), None, "c");
     for size in SIZES {
-        let State::Ready(rows) = a.methods.state() else {
+        let State::Ready(rows) = a.methods().state() else {
             panic!("the rows are computed");
         };
         let lines = panel(&a, size, |p| p.info);
@@ -271,7 +271,7 @@ fn the_methods_runs_panel_never_cuts_an_error() {
 fn the_fit_panel_shows_the_fits_numbers() {
     let a = app("paper-b4.9", SceneSpec::default(), None, "f");
     for size in SIZES {
-        let State::Ready(Ok(f)) = a.fit.fits() else {
+        let State::Ready(Ok(f)) = a.fit().fits() else {
             panic!("the fit is computed");
         };
         let text = joined(&panel(&a, size, |p| p.info));
@@ -314,7 +314,7 @@ fn the_fit_panel_shows_the_fits_numbers() {
         "f",
     );
     for size in SIZES {
-        let State::Ready(Ok(f)) = a.fit.fits() else {
+        let State::Ready(Ok(f)) = a.fit().fits() else {
             panic!("the fits are computed");
         };
         let (v, p) = (f.velocity_fit.as_ref().unwrap(), &f.model_fit);

@@ -11,20 +11,10 @@ use groovelab::settings::params::Key;
 use groovelab::settings::spec::SceneSpec;
 use serde_json::Value;
 
-use crate::common::{groovelab, no_user_presets, rendered, text};
+use crate::common::{groovelab, json, no_user_presets, rendered, text};
 
 /// A single ball's Tracker track (no rim mark): it approaches at 0.791 m/s.
 const BALL: &str = "docs/video/ball.txt";
-
-fn json(args: &[&str]) -> Value {
-    let out = groovelab(args);
-    assert!(
-        out.status.success(),
-        "{args:?}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    serde_json::from_slice(&out.stdout).unwrap()
-}
 
 fn fit_json(extra: &[&str]) -> Value {
     let mut args = vec!["fit", "--data", BALL, "--radius", "2cm", "--width", "3.5cm"];

@@ -9,16 +9,9 @@ use groovelab::study::video::{self, Noise, Video};
 use groovelab::study::vision::tracks::{BallTrack, Calibration, Tracks};
 use groovelab::study::vision::write::tracker_text;
 
-const MU: f64 = 0.17;
+use crate::common::paper_scene;
 
-fn scene() -> Scene {
-    groovelab::input::preset::load("paper-b4.9")
-        .unwrap()
-        .spec
-        .resolve()
-        .unwrap()
-        .0
-}
+const MU: f64 = 0.17;
 
 /// The exact left ball of `scene` tracked at 120 frames/s with its mark, every
 /// coordinate off by a Gaussian of its frame's σ: `small` (m), and `big` on every
@@ -68,7 +61,7 @@ fn position_fit(scene: &Scene, m: &Measured) -> ModelFit {
 /// ± on most seeds and several times as far as the weighted fit's on the average.
 #[test]
 fn the_position_fit_weights_each_point_by_its_sigma() {
-    let s = scene();
+    let s = paper_scene();
     let (mut dw2, mut du2, mut pulled) = (0.0, 0.0, 0);
     let seeds = 6;
     for seed in 1..=seeds {
@@ -105,7 +98,7 @@ fn the_position_fit_weights_each_point_by_its_sigma() {
 /// the track never had σ or had them taken away.
 #[test]
 fn a_track_without_sigma_fits_as_before() {
-    let s = scene();
+    let s = paper_scene();
     let mut track = noisy_track(&s, 3, 2e-4, 2e-4);
     let with = measured_of(&s, track.clone());
     (track.sigma, track.mark_sigma) = (None, None);

@@ -78,13 +78,7 @@ fn assert_refused(args: &[&str], mentions: &str) -> String {
 
 /// A fresh scratch directory for one test.
 fn scratch(test: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!(
-        "groovelab-reliability-{}-{test}",
-        std::process::id()
-    ));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
+    crate::common::scratch_dir("reliability", test)
 }
 
 fn s(p: &Path) -> &str {

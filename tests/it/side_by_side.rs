@@ -9,7 +9,7 @@ use std::path::PathBuf;
 use groovelab::study::measured::Track;
 use groovelab::study::video::{self, Video};
 
-use crate::common::groovelab;
+use crate::common::{groovelab, json};
 
 const MU: f64 = 0.17;
 
@@ -93,7 +93,7 @@ fn tracks_side_by_side_are_read_each_with_its_own_time() {
         text.contains(&format!("{} frames", track.t.len())),
         "{text}"
     );
-    let out = groovelab(&[
+    let j = json(&[
         "fit",
         "--preset",
         "paper-b4.9",
@@ -102,12 +102,6 @@ fn tracks_side_by_side_are_read_each_with_its_own_time() {
         "--format",
         "json",
     ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(j["track"]["format"], "tracks side by side");
     // The mark's own times matched to the centre's: it lies on the rim, and v_t is
     // measured.

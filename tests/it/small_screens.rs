@@ -162,10 +162,10 @@ fn picking_a_preset_keeps_the_selected_row() {
         let mut a = opened(Some("paper-b4.9"), files, None, None);
         for key in [Key::Restitution, Key::MassRight, Key::Width] {
             select(&mut a, key);
-            let row = a.selected;
+            let row = a.selected();
             press(&mut a, "p down enter");
-            assert_eq!(ROWS[a.selected].key, key, "{files:?}");
-            assert_eq!(a.selected, row);
+            assert_eq!(ROWS[a.selected()].key, key, "{files:?}");
+            assert_eq!(a.selected(), row);
             // And on screen: the marker on that row at 80×24 (the list scrolls).
             let screen = text(&a, (80, 24), false);
             let label = ROWS[row].label;

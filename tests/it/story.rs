@@ -1,30 +1,26 @@
 //! What the exact run does, in words: the closed-form recovery only where the run
 //! bears it out (issue 11: paper-b3.5 with e = 0.2 accumulates before t').
 
-use crate::common;
+use crate::common::stdout;
 
 use groovelab::physics::derived::Derived;
 use groovelab::physics::engine::solve;
+use groovelab::physics::scene::{Scene, Span};
 use groovelab::physics::story::{After, after_first_impact};
 use groovelab::settings::params::Key;
 use groovelab::settings::spec::SceneSpec;
 
-fn groovelab(args: &[&str]) -> String {
-    let out = common::groovelab(args);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8(out.stdout).unwrap()
-}
-
-fn story(preset: &str, extra: &[(Key, f64)]) -> After {
+/// The scene and span of `preset` with the values `extra` over it.
+fn scene_of(preset: &str, extra: &[(Key, f64)]) -> (Scene, Span) {
     let p = groovelab::input::preset::load(preset).unwrap();
     let spec = extra
         .iter()
         .fold(SceneSpec::default(), |s, &(k, v)| s.with(k, v));
-    let (scene, span) = p.spec.over(&spec).resolve().unwrap();
+    p.spec.over(&spec).resolve().unwrap()
+}
+
+fn story(preset: &str, extra: &[(Key, f64)]) -> After {
+    let (scene, span) = scene_of(preset, extra);
     let sol = solve(&scene, &span);
     after_first_impact(&sol, &Derived::of(&scene)).unwrap()
 }
@@ -45,7 +41,7 @@ fn low_restitution_tells_the_runs_events_not_the_closed_form() {
         (rest - 0.189141).abs() < 1e-6 && pressed,
         "{rest} {pressed}"
     );
-    let table = groovelab(&["simulate", "--preset", "paper-b3.5", "--restitution", "0.2"]);
+    let table = stdout(&["simulate", "--preset", "paper-b3.5", "--restitution", "0.2"]);
     let line = table
         .lines()
         .find(|l| l.starts_with("left ball after the first impact"))
@@ -56,7 +52,7 @@ fn low_restitution_tells_the_runs_events_not_the_closed_form() {
     );
     assert!(!table.contains("x' ="), "{table}");
     // The Why panel says the same.
-    let screen = groovelab(&[
+    let screen = stdout(&[
         "render",
         "--preset",
         "paper-b3.5",
@@ -88,7 +84,7 @@ fn the_closed_forms_stand_where_the_run_rolls_again_at_t_prime() {
     ] {
         assert!(matches!(story(preset, &[]), After::Recovers(_)), "{preset}");
     }
-    let table = groovelab(&["simulate", "--preset", "paper-b4.9"]);
+    let table = stdout(&["simulate", "--preset", "paper-b4.9"]);
     assert!(table.contains("rolls again after t' = 0.2849 s"), "{table}");
 }
 
@@ -98,11 +94,7 @@ fn the_closed_forms_stand_where_the_run_rolls_again_at_t_prime() {
 #[test]
 fn headings_and_reasons_follow_the_run() {
     let case = |extra: &[(Key, f64)]| {
-        let p = groovelab::input::preset::load("paper-b4.9").unwrap();
-        let spec = extra
-            .iter()
-            .fold(SceneSpec::default(), |s, &(k, v)| s.with(k, v));
-        let (scene, span) = p.spec.over(&spec).resolve().unwrap();
+        let (scene, span) = scene_of("paper-b4.9", extra);
         let sol = solve(&scene, &span);
         let d = Derived::of(&scene);
         (groovelab::study::story::headline(&sol, &d), d.why())
@@ -151,11 +143,11 @@ fn simulate_reports_the_outcome_beside_the_criterion() {
     ] {
         let mut json_args = vec!["simulate", "--format", "json"];
         json_args.extend(args);
-        let doc: serde_json::Value = serde_json::from_str(&groovelab(&json_args)).unwrap();
+        let doc: serde_json::Value = serde_json::from_str(&stdout(&json_args)).unwrap();
         assert_eq!(doc["summary"]["outcome"], outcome, "{args:?}");
         let mut table_args = vec!["simulate"];
         table_args.extend(args);
-        let table = groovelab(&table_args);
+        let table = stdout(&table_args);
         let line = table.lines().find(|l| l.starts_with("outcome  ")).unwrap();
         assert!(line.starts_with(&format!("outcome  {outcome}: ")), "{line}");
         // The criterion is named where the run does otherwise.
@@ -168,7 +160,7 @@ fn simulate_reports_the_outcome_beside_the_criterion() {
 fn rest_without_friction_says_the_balls_keep_spinning() {
     // μ_k = 0 and e = 0: the impact stops the centres, and nothing takes the spin
     // (v = 0, u = v0 for ever: 0.20 J of rotation left in the trial's scene).
-    let frictionless = groovelab(&[
+    let frictionless = stdout(&[
         "simulate",
         "--preset",
         "paper-b4.9",
@@ -184,7 +176,7 @@ fn rest_without_friction_says_the_balls_keep_spinning() {
         "{frictionless}"
     );
     // The Why panel's heading says the same (wrapped in the panel).
-    let why = groovelab(&[
+    let why = stdout(&[
         "render",
         "--preset",
         "paper-b4.9",
@@ -206,7 +198,7 @@ fn rest_without_friction_says_the_balls_keep_spinning() {
         "{why}"
     );
     // The critical groove's rest is a true stop: both balls roll to rest together.
-    let critical = groovelab(&["simulate", "--preset", "critical"]);
+    let critical = stdout(&["simulate", "--preset", "critical"]);
     assert!(
         critical.contains("outcome  rest: the balls stop"),
         "{critical}"
@@ -220,11 +212,7 @@ fn rest_without_friction_says_the_balls_keep_spinning() {
 fn balls_that_never_meet_get_no_regime_verdict() {
     use groovelab::physics::story::Verdict;
     let verdict = |extra: &[(Key, f64)]| {
-        let p = groovelab::input::preset::load("paper-b4.9").unwrap();
-        let spec = extra
-            .iter()
-            .fold(SceneSpec::default(), |s, &(k, v)| s.with(k, v));
-        let (scene, span) = p.spec.over(&spec).resolve().unwrap();
+        let (scene, span) = scene_of("paper-b4.9", extra);
         Verdict::of(&solve(&scene, &span), &Derived::of(&scene), None).text("±")
     };
     let never = "no impact: the balls never meet";
@@ -235,6 +223,6 @@ fn balls_that_never_meet_get_no_regime_verdict() {
     assert_eq!(verdict(&[(Key::V0Left, 0.0), (Key::V0Right, 0.0)]), never);
     // A head-on run keeps its regime.
     assert!(verdict(&[]).starts_with("recollide"));
-    let out = groovelab(&["simulate", "--v0-left", "100", "--v0-right", "-100"]);
+    let out = stdout(&["simulate", "--v0-left", "100", "--v0-right", "-100"]);
     assert!(out.contains("verdict  no impact"), "{out}");
 }

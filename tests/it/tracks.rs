@@ -9,18 +9,9 @@ use groovelab::study::measured::track::{self, TrackFits};
 use groovelab::study::measured::{self, Derive, Found, Measured, RawSeries};
 use groovelab::study::video::{self, TrackFormat, Video};
 
-use crate::common::groovelab;
+use crate::common::{groovelab, json, preset_scene};
 
 const MU: f64 = 0.17;
-
-fn scene(name: &str) -> Scene {
-    groovelab::input::preset::load(name)
-        .unwrap()
-        .spec
-        .resolve()
-        .unwrap()
-        .0
-}
 
 /// A data file read and derived for a scene, with what was found in a track.
 #[derive(Debug)]
@@ -54,7 +45,7 @@ fn fits(scene: &Scene, video: &Video, format: TrackFormat) -> (Loaded, TrackFits
 /// rate and noise, for both fits, with the bounds the issue asks for.
 #[test]
 fn mu_is_recovered_at_every_frame_rate_and_noise() {
-    let s = scene("paper-b4.9");
+    let s = preset_scene("paper-b4.9");
     println!(
         "| frames/s | noise | position fit: max abs(Δμ_k) | its 2σ | velocity fit: max abs(Δμ_k) |"
     );
@@ -94,7 +85,7 @@ fn mu_is_recovered_at_every_frame_rate_and_noise() {
 
 #[test]
 fn the_position_fit_uncertainty_covers_the_truth() {
-    let s = scene("paper-b4.9");
+    let s = preset_scene("paper-b4.9");
     let seeds = 20;
     let inside = (1..=seeds)
         .filter(|&seed| {
@@ -116,7 +107,7 @@ fn the_position_fit_uncertainty_covers_the_truth() {
 #[test]
 fn every_format_reads_and_fits() {
     for preset in ["paper-b3.5", "paper-b4.9"] {
-        let s = scene(preset);
+        let s = preset_scene(preset);
         for format in TrackFormat::ALL {
             let v = Video::default();
             let (l, f) = fits(&s, &v, format);
@@ -145,7 +136,7 @@ fn every_format_reads_and_fits() {
 
 #[test]
 fn either_direction_any_origin_flipped_axes_and_clip_start() {
-    let s = scene("paper-b4.9");
+    let s = preset_scene("paper-b4.9");
     for (flip_x, flip_y) in [(false, true), (true, false), (true, true)] {
         let v = Video {
             flip_x,
@@ -173,7 +164,7 @@ fn either_direction_any_origin_flipped_axes_and_clip_start() {
 
 #[test]
 fn gaps_in_the_track_are_bridged() {
-    let s = scene("paper-b4.9");
+    let s = preset_scene("paper-b4.9");
     let mut t = video::track(&s, &Video::default());
     // Missing rows: every 7th frame dropped; empty cells: some centres, some marks.
     let keep: Vec<usize> = (0..t.t.len()).filter(|i| i % 7 != 3).collect();
@@ -205,7 +196,7 @@ fn gaps_in_the_track_are_bridged() {
 /// ball) and the centre missing in 2 rows.
 #[test]
 fn missing_marks_and_centres_are_counted_with_their_times() {
-    let s = scene("paper-b4.9");
+    let s = preset_scene("paper-b4.9");
     let mut t = video::track(&s, &Video::default());
     let (mut mx, mut my) = t.mark.take().unwrap();
     // Rows 60..69 (t = 0.300 … 0.367 s of the file at 120 frames/s, impact at 0).
@@ -252,7 +243,7 @@ fn missing_marks_and_centres_are_counted_with_their_times() {
 
 #[test]
 fn without_a_mark_the_fits_use_the_centre_only() {
-    let s = scene("paper-b4.9");
+    let s = preset_scene("paper-b4.9");
     let v = Video {
         mark: false,
         ..Video::default()
@@ -283,7 +274,7 @@ fn without_a_mark_the_fits_use_the_centre_only() {
 
 #[test]
 fn missing_pieces_give_one_line_errors() {
-    let s = scene("paper-b4.9");
+    let s = preset_scene("paper-b4.9");
     let cut = |from: f64, to: f64| {
         let v = Video {
             from,
@@ -325,14 +316,14 @@ fn velocity_files_read_as_before() {
     };
     assert_eq!(m.t, vec![-0.02, 0.0, 0.02, 0.04]);
     assert!(m.x.is_none() && m.v_cm_sigma.is_none());
-    let l = try_load(&scene("paper-b4.9"), text).unwrap();
+    let l = try_load(&preset_scene("paper-b4.9"), text).unwrap();
     assert!(l.found.is_none());
 }
 
 /// The example "video" in docs/: regenerate with `GROOVELAB_REGENERATE=1 cargo test
 /// --test it tracks::example_file`.
 fn example_text() -> String {
-    let s = scene("paper-b4.9");
+    let s = preset_scene("paper-b4.9");
     video::write(
         &video::track(&s, &example_video()),
         TrackFormat::TrackerMulti,
@@ -391,7 +382,7 @@ fn cli_fits_the_example_video_end_to_end() {
     ] {
         assert!(table.contains(want), "{want}:\n{table}");
     }
-    let out = groovelab(&[
+    let j = json(&[
         "fit",
         "--preset",
         "paper-b4.9",
@@ -400,8 +391,6 @@ fn cli_fits_the_example_video_end_to_end() {
         "--format",
         "json",
     ]);
-    assert!(out.status.success());
-    let j: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     for key in ["line_fit", "model_fit", "velocity_fit", "track"] {
         assert!(j.get(key).is_some(), "{key}");
     }
@@ -422,7 +411,7 @@ fn cli_error_for_a_track_without_an_impact_is_one_line() {
     let dir = std::env::temp_dir().join(format!("groovelab-tracks-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let file = dir.join("late.txt");
-    let s = scene("paper-b4.9");
+    let s = preset_scene("paper-b4.9");
     let v = Video {
         from: -0.2,
         to: 0.02,
@@ -454,7 +443,7 @@ fn cli_error_for_a_track_without_an_impact_is_one_line() {
 /// truth about 68 % of the time.
 #[test]
 fn the_velocity_fit_uncertainty_covers_the_truth() {
-    let s = scene("paper-b4.9");
+    let s = preset_scene("paper-b4.9");
     let settings = [
         (60.0, 3e-4, true),
         (120.0, 3e-4, true),
@@ -502,7 +491,7 @@ fn the_velocity_fit_uncertainty_covers_the_truth() {
 /// the true regime.
 #[test]
 fn the_line_fits_of_a_marked_track_stop_at_rolling_and_the_regime_holds() {
-    let s = scene("paper-b4.9");
+    let s = preset_scene("paper-b4.9");
     let truth = groovelab::physics::derived::Derived::of(&s);
     let t_roll = groovelab::physics::engine::solve(&s, &Default::default())
         .events
@@ -550,7 +539,7 @@ fn the_line_fits_of_a_marked_track_stop_at_rolling_and_the_regime_holds() {
 /// steps are 8.3 and 8.4 ms; their median made it 120.5 frames/s.
 #[test]
 fn rounded_times_give_the_true_frame_rate() {
-    let s = scene("paper-b4.9");
+    let s = preset_scene("paper-b4.9");
     let mut t = video::track(&s, &Video::default());
     for x in &mut t.t {
         *x = (*x * 1e4).round() / 1e4;
@@ -571,7 +560,7 @@ fn rounded_times_give_the_true_frame_rate() {
 /// t'), here with the true t' so that only the line fit's ± is under test.
 #[test]
 fn the_line_fit_uncertainty_covers_the_truth() {
-    let s = scene("paper-b4.9");
+    let s = preset_scene("paper-b4.9");
     let t_roll = groovelab::physics::engine::solve(&s, &Default::default())
         .events
         .iter()
@@ -645,7 +634,7 @@ fn the_line_fit_uncertainty_covers_the_truth() {
 /// about 68 % of the time, and every one lies within 4σ.
 #[test]
 fn the_approach_speed_is_fitted_over_the_approach_with_its_uncertainty() {
-    let s = scene("paper-b4.9");
+    let s = preset_scene("paper-b4.9");
     let tracks = 40;
     let mut inside = 0;
     for seed in 0..tracks {
@@ -695,7 +684,7 @@ fn a_tracks_positions_are_aligned_as_the_position_fit_aligns_them() {
     use groovelab::physics::scene::Span;
     let s = Scene {
         mu: MU,
-        ..scene("paper-b4.9")
+        ..preset_scene("paper-b4.9")
     };
     for seed in [49, 50, 51] {
         let v = Video {
@@ -745,7 +734,7 @@ fn a_tracks_positions_are_aligned_as_the_position_fit_aligns_them() {
 /// row for the same model says the same.
 #[test]
 fn the_scales_uncertainty_widens_mu_ks() {
-    let s = scene("paper-b4.9");
+    let s = preset_scene("paper-b4.9");
     let text = example_text();
     let with_scale = text.replacen("#multi:", "# scale = 1000 ± 100 px/m\n#multi:", 1);
     let (plain, _) = fits_of(&s, &text);

@@ -162,8 +162,8 @@ fn typed_values_take_units_and_escape_cancels() {
     assert_eq!(a.lab.scene.width, 0.044);
     press(&mut a, "enter 3 c m esc");
     assert_eq!(a.lab.scene.width, 0.044, "Esc cancels typing");
-    assert_eq!(a.mode, Mode::Normal);
-    assert!(!a.quit);
+    assert_eq!(a.mode(), Mode::Normal);
+    assert!(!a.quitting());
     press(&mut a, "enter 3 k g enter");
     assert_eq!(a.lab.scene.width, 0.044);
     assert!(matches!(&a.status, Status::Error(e) if e.contains("unknown unit")));
@@ -193,22 +193,22 @@ fn prompts_edit_like_a_terminal_line() {
     // Ctrl-U clears the line, Ctrl-W the word before the cursor, Ctrl-A/E go to the
     // start and end, Ctrl-K deletes to the end: none of them is typed as a letter.
     press(&mut a, "enter 9 9 C-u 4 . 1");
-    assert_eq!(a.mode, Mode::Edit("4.1".into()));
+    assert_eq!(a.mode(), Mode::Edit("4.1".into()));
     press(&mut a, "enter");
     assert_eq!(b(&a), 0.041);
     press(&mut a, "enter 4 . 4 space x y z C-w");
     assert!(
-        matches!(&a.mode, Mode::Edit(f) if f.value() == "4.4 "),
+        matches!(&a.mode(), Mode::Edit(f) if f.value() == "4.4 "),
         "{:?}",
-        a.mode
+        a.mode()
     );
     press(&mut a, "enter");
     assert_eq!(b(&a), 0.044);
     press(&mut a, "enter 7 c m C-a 4 . C-e C-a right right right C-k");
     assert!(
-        matches!(&a.mode, Mode::Edit(f) if f.value() == "4.7"),
+        matches!(&a.mode(), Mode::Edit(f) if f.value() == "4.7"),
         "{:?}",
-        a.mode
+        a.mode()
     );
     press(&mut a, "enter");
     assert_eq!(b(&a), 0.047);
@@ -219,27 +219,27 @@ fn prompts_edit_like_a_terminal_line() {
     press(&mut a, "enter up up up enter");
     assert_eq!(b(&a), 0.041);
     press(&mut a, "enter 3 up up down down");
-    assert_eq!(a.mode, Mode::Edit("3".into()));
+    assert_eq!(a.mode(), Mode::Edit("3".into()));
     press(&mut a, "esc");
     // The save and export prompts are the same line editor, with their own history.
     press(&mut a, "s C-u n e w left left C-k");
-    assert_eq!(a.mode, Mode::SaveName("n".into()));
+    assert_eq!(a.mode(), Mode::SaveName("n".into()));
     press(&mut a, "esc w C-a delete delete delete delete delete");
     assert!(
         // Suggested "b4.1cm-run.csv" (named for the b it holds), five characters gone.
-        matches!(&a.mode, Mode::Export(_, f) if f.value() == "m-run.csv"),
+        matches!(&a.mode(), Mode::Export(_, f) if f.value() == "m-run.csv"),
         "{:?}",
-        a.mode
+        a.mode()
     );
     press(&mut a, "up");
     assert!(
         // Suggested "b4.1cm-run.csv" (named for the b it holds), five characters gone.
-        matches!(&a.mode, Mode::Export(_, f) if f.value() == "m-run.csv"),
+        matches!(&a.mode(), Mode::Export(_, f) if f.value() == "m-run.csv"),
         "no file name was confirmed yet, so ↑ has nothing to bring: {:?}",
-        a.mode
+        a.mode()
     );
     press(&mut a, "esc");
-    assert!(!a.quit);
+    assert!(!a.quitting());
 }
 
 #[test]
@@ -341,35 +341,55 @@ fn playback_runs_on_the_clock_at_the_chosen_speed() {
 }
 
 #[test]
+fn the_picker_takes_home_end_and_the_page_keys() {
+    let mut a = app("paper-b4.9");
+    let n = a.library().presets.len();
+    assert!(n > 3, "presets to move through: {n}");
+    press(&mut a, "p home");
+    assert_eq!(a.mode(), Mode::Picker(0));
+    press(&mut a, "end");
+    assert_eq!(a.mode(), Mode::Picker(n - 1));
+    // A page is ten rows, and stops at either end (no wrap, unlike the arrows).
+    press(&mut a, "pgup");
+    assert_eq!(a.mode(), Mode::Picker((n - 1).saturating_sub(10)));
+    press(&mut a, "home down pgdn");
+    assert_eq!(a.mode(), Mode::Picker(11.min(n - 1)));
+    press(&mut a, "pgdn");
+    assert_eq!(a.mode(), Mode::Picker(n - 1));
+    press(&mut a, "home enter");
+    assert_eq!(a.lab.preset().name, a.library().presets[0].name);
+}
+
+#[test]
 fn picker_loads_presets_and_quit_keys_quit() {
     let mut a = app("paper-b4.9");
     press(&mut a, "p down enter");
-    assert_eq!(a.lab.preset().name, a.library.presets[3].name);
+    assert_eq!(a.lab.preset().name, a.library().presets[3].name);
     press(&mut a, "p up up esc");
-    assert_eq!(a.mode, Mode::Normal);
-    assert_eq!(a.lab.preset().name, a.library.presets[3].name);
+    assert_eq!(a.mode(), Mode::Normal);
+    assert_eq!(a.lab.preset().name, a.library().presets[3].name);
     press(&mut a, "?");
-    assert_eq!(a.mode, Mode::Help);
+    assert_eq!(a.mode(), Mode::Help);
     press(&mut a, "esc");
-    assert_eq!(a.mode, Mode::Normal);
-    assert!(!a.quit);
+    assert_eq!(a.mode(), Mode::Normal);
+    assert!(!a.quitting());
     press(&mut a, "q");
-    assert!(a.quit);
+    assert!(a.quitting());
     let mut a = app("paper-b4.9");
     press(&mut a, "enter 4 C-c");
-    assert!(a.quit, "Ctrl-C quits even while typing");
+    assert!(a.quitting(), "Ctrl-C quits even while typing");
     // Esc on the main screen never quits (a reflex Esc ended the session): it says
     // how to quit instead.
     let mut a = app("paper-b4.9");
     press(&mut a, "esc esc");
-    assert!(!a.quit);
+    assert!(!a.quitting());
     assert!(
         matches!(&a.status, Status::Info(s) if s.contains("q quits")),
         "{:?}",
         a.status
     );
     press(&mut a, "q");
-    assert!(a.quit);
+    assert!(a.quitting());
 }
 
 #[test]
@@ -377,7 +397,7 @@ fn saving_writes_a_loadable_preset_and_never_overwrites_silently() {
     let dir = std::env::temp_dir().join(format!("groovelab-save-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     let mut a = app("inelastic");
-    a.library = Library::at(Some(dir.clone()));
+    a.set_library(Library::at(Some(dir.clone())));
     select(&mut a, Key::Mu);
     press(&mut a, "right");
     press(&mut a, "s enter");
@@ -391,7 +411,7 @@ fn saving_writes_a_loadable_preset_and_never_overwrites_silently() {
     // Saving again asks first; anything but y keeps the file.
     std::fs::write(&path, "sentinel").unwrap();
     press(&mut a, "s enter");
-    assert!(matches!(a.mode, Mode::ConfirmOverwrite(_)));
+    assert!(matches!(a.mode(), Mode::ConfirmOverwrite(_)));
     press(&mut a, "n");
     assert_eq!(std::fs::read_to_string(&path).unwrap(), "sentinel");
     press(&mut a, "s enter y");
@@ -406,9 +426,9 @@ fn saving_writes_a_loadable_preset_and_never_overwrites_silently() {
         "{:?}",
         a.status
     );
-    assert_eq!(a.mode, Mode::SaveName("/".into()));
+    assert_eq!(a.mode(), Mode::SaveName("/".into()));
     press(&mut a, "esc");
-    assert_eq!(a.mode, Mode::Normal);
+    assert_eq!(a.mode(), Mode::Normal);
     assert!(
         !dir.join(".my-inelastic.toml.tmp").exists(),
         "no temporary file left"
@@ -640,12 +660,12 @@ fn mouse_clicks_select_and_scrolls_change_parameters() {
     assert_eq!(param_at(short, 9, short.x + 3, short.y + 1), Some(3));
     let mut a = app("paper-b4.9");
     a.apply(Action::Select(4));
-    assert_eq!(ROWS[a.selected].key, Key::Mu);
+    assert_eq!(ROWS[a.selected()].key, Key::Mu);
     a.apply(Action::ScrollParam(4, true));
     assert!((a.lab.scene.mu - 0.18).abs() < 1e-12);
     let e_row = ROWS.iter().position(|p| p.key == Key::Restitution).unwrap();
     a.apply(Action::ScrollParam(e_row, false));
-    assert_eq!(ROWS[a.selected].key, Key::Restitution);
+    assert_eq!(ROWS[a.selected()].key, Key::Restitution);
     assert!((a.lab.scene.restitution - 0.99).abs() < 1e-12);
 }
 
@@ -673,9 +693,9 @@ fn no_color_means_no_colours() {
 fn methods_view_and_overlay() {
     let mut a = app("paper-b4.9");
     press(&mut a, "c");
-    assert_eq!(a.view, View::Methods);
+    assert_eq!(a.view(), View::Methods);
     a.wait();
-    let State::Ready(rows) = a.methods.state() else {
+    let State::Ready(rows) = a.methods().state() else {
         panic!("the rows are there once the lab has waited")
     };
     assert_eq!(rows.len(), 20, "five methods at four levels");
@@ -695,7 +715,7 @@ fn methods_view_and_overlay() {
     a.t = t;
     press(&mut a, "c o");
     a.wait();
-    let State::Ready(o) = a.overlay.state() else {
+    let State::Ready(o) = a.overlay().state() else {
         panic!("an overlay")
     };
     assert_eq!(o.method, groovelab::methods::Method::Euler);
@@ -703,7 +723,7 @@ fn methods_view_and_overlay() {
     assert!(screen_of(&a).contains("euler h 1e-3 (chatter)"));
     press(&mut a, "[ [");
     a.wait();
-    let overlay = |a: &App| match a.overlay.state() {
+    let overlay = |a: &App| match a.overlay().state() {
         State::Ready(o) => Some(o.clone()),
         _ => None,
     };
@@ -736,7 +756,7 @@ fn the_methods_view_of_a_long_span_is_cut_and_says_where() {
     assert!(a.lab.solution.t_end > 1e5);
     press(&mut a, "c");
     a.wait();
-    let State::Ready(rows) = a.methods.state() else {
+    let State::Ready(rows) = a.methods().state() else {
         panic!("the rows are there once the lab has waited")
     };
     let end = span.t_start + WINDOW;
@@ -770,7 +790,7 @@ fn methods_view_work_axis_outcome_and_order() {
     let (mut a, counted) = common::counted("paper-b3.5", no_user_presets());
     press(&mut a, "c");
     a.wait();
-    let times = |a: &App| match a.methods.state() {
+    let times = |a: &App| match a.methods().state() {
         State::Ready(rows) => rows.iter().map(|r| r.time_median_s).collect::<Vec<_>>(),
         _ => panic!("the rows are there once the lab has waited"),
     };
@@ -888,7 +908,7 @@ fn help_is_complete_at_every_size_scrolling_where_needed() {
                     break;
                 }
             }
-            assert_eq!(a.mode, Mode::Help, "scrolling keeps the help open");
+            assert_eq!(a.mode(), Mode::Help, "scrolling keeps the help open");
             let flat = seen.split_whitespace().collect::<Vec<_>>().join(" ");
             for b in keys::TABLE {
                 let first: String = b
@@ -915,8 +935,8 @@ fn help_is_complete_at_every_size_scrolling_where_needed() {
                 assert!(!seen.contains("more "), "{w}x{h}: {seen}");
             }
             press(&mut a, "q");
-            assert_eq!(a.mode, Mode::Normal);
-            assert!(!a.quit, "q in the help closes the help, not the app");
+            assert_eq!(a.mode(), Mode::Normal);
+            assert!(!a.quitting(), "q in the help closes the help, not the app");
         }
     }
     // The help's ↑ takes back what ↓ did; it never scrolls past the end.
@@ -939,27 +959,27 @@ fn q_closes_every_popup_and_quits_only_the_main_screen() {
     let mut a = app("paper-b4.9");
     for open in ["?", "p", "d"] {
         press(&mut a, open);
-        assert_ne!(a.mode, Mode::Normal, "{open}");
+        assert_ne!(a.mode(), Mode::Normal, "{open}");
         press(&mut a, "q");
-        assert_eq!(a.mode, Mode::Normal, "{open}");
-        assert!(!a.quit, "{open} q");
+        assert_eq!(a.mode(), Mode::Normal, "{open}");
+        assert!(!a.quitting(), "{open} q");
         press(&mut a, open);
         press(&mut a, "esc");
-        assert_eq!(a.mode, Mode::Normal, "{open} esc");
-        assert!(!a.quit);
+        assert_eq!(a.mode(), Mode::Normal, "{open} esc");
+        assert!(!a.quitting());
     }
     // In text fields q is a letter.
     press(&mut a, "s q");
-    assert!(matches!(&a.mode, Mode::SaveName(t) if t.value().ends_with('q')));
+    assert!(matches!(&a.mode(), Mode::SaveName(t) if t.value().ends_with('q')));
     press(&mut a, "esc w q");
-    assert!(matches!(&a.mode, Mode::Export(_, t) if t.value().ends_with('q')));
+    assert!(matches!(&a.mode(), Mode::Export(_, t) if t.value().ends_with('q')));
     press(&mut a, "esc");
-    assert!(!a.quit);
+    assert!(!a.quitting());
     press(&mut a, "? C-c");
-    assert!(a.quit, "Ctrl-C quits from a popup");
+    assert!(a.quitting(), "Ctrl-C quits from a popup");
     let mut a = app("paper-b4.9");
     press(&mut a, "q");
-    assert!(a.quit);
+    assert!(a.quitting());
 }
 
 #[test]
@@ -1034,16 +1054,16 @@ fn small_screens_keep_the_important_lines() {
 fn f_switches_to_the_fit_view_from_any_view() {
     let mut a = app("paper-b4.9");
     press(&mut a, "c f");
-    assert_eq!(a.view, View::Fit);
+    assert_eq!(a.view(), View::Fit);
     assert!(a.fit_view());
     a.wait();
     assert!(screen_of(&a).contains("model fit: μ_k+v0+c_rr"));
     press(&mut a, "g");
-    assert_eq!(a.view, View::Map, "g leaves the Fit view for the map");
+    assert_eq!(a.view(), View::Map, "g leaves the Fit view for the map");
     press(&mut a, "f f");
-    assert_eq!(a.view, View::Charts, "f again goes back to the charts");
+    assert_eq!(a.view(), View::Charts, "f again goes back to the charts");
     press(&mut a, "f c");
-    assert_eq!(a.view, View::Methods);
+    assert_eq!(a.view(), View::Methods);
 }
 
 #[test]
@@ -1119,27 +1139,27 @@ fn typing_replaces_a_suggested_name_and_enter_on_nothing_cancels() {
     let dir = std::env::temp_dir().join(format!("groovelab-suggest-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     let mut a = app("paper-b4.9");
-    a.library = Library::at(Some(dir.clone()));
+    a.set_library(Library::at(Some(dir.clone())));
     // The save prompt offers a name; typing replaces it (it once appended:
     // my-paper-b4.9x), and a name typed as its file's is not doubled.
     press(&mut a, "s x . t o m l");
     assert!(
-        matches!(&a.mode, Mode::SaveName(n) if n.value() == "x.toml"),
+        matches!(&a.mode(), Mode::SaveName(n) if n.value() == "x.toml"),
         "{:?}",
-        a.mode
+        a.mode()
     );
     press(&mut a, "enter");
     assert!(dir.join("x.toml").is_file() && !dir.join("x.toml.toml").exists());
     // The export prompt likewise.
     press(&mut a, "w r . c s v");
     assert!(
-        matches!(&a.mode, Mode::Export(_, f) if f.value() == "r.csv"),
+        matches!(&a.mode(), Mode::Export(_, f) if f.value() == "r.csv"),
         "{:?}",
-        a.mode
+        a.mode()
     );
     // Enter on an empty line closes a prompt as Esc does, with no error.
     press(&mut a, "C-u enter");
-    assert_eq!(a.mode, Mode::Normal);
+    assert_eq!(a.mode(), Mode::Normal);
     assert!(
         matches!(&a.status, Status::Info(i) if i.starts_with("cancelled")),
         "{:?}",
@@ -1148,7 +1168,7 @@ fn typing_replaces_a_suggested_name_and_enter_on_nothing_cancels() {
     select(&mut a, Key::Width);
     let b = a.lab.scene.width;
     press(&mut a, "enter C-u enter");
-    assert_eq!((a.mode.clone(), a.lab.scene.width), (Mode::Normal, b));
+    assert_eq!((a.mode(), a.lab.scene.width), (Mode::Normal, b));
     assert!(
         matches!(&a.status, Status::Info(i) if i.starts_with("cancelled")),
         "{:?}",
@@ -1177,14 +1197,14 @@ fn save_keeps_the_data_and_the_description_and_explains_bad_names() {
     let dir = std::env::temp_dir().join(format!("groovelab-save11-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     let mut a = app("paper-b4.4");
-    a.library = Library::at(Some(dir.clone()));
+    a.set_library(Library::at(Some(dir.clone())));
     // A name with a space: refused, the dialog stays open and says why.
     press(&mut a, "s end space x enter");
-    assert!(matches!(&a.mode, Mode::SaveName(n) if n.value() == "my-paper-b4.4 x"));
+    assert!(matches!(&a.mode(), Mode::SaveName(n) if n.value() == "my-paper-b4.4 x"));
     let s = screen_of(&a);
     assert!(s.contains("allowed letters, digits"), "{s}");
     press(&mut a, "backspace backspace enter");
-    assert_eq!(a.mode, Mode::Normal);
+    assert_eq!(a.mode(), Mode::Normal);
     let path = dir.join("my-paper-b4.4.toml");
     let saved = groovelab::input::preset::load(path.to_str().unwrap()).unwrap();
     assert_eq!(
@@ -1277,7 +1297,7 @@ fn a_applies_the_fitted_mu_in_the_fit_view() {
     assert!(matches!(&a.status, Status::Error(e) if e.contains("Fit view")));
     press(&mut a, "f");
     a.wait();
-    let State::Ready(Ok(f)) = a.fit.fits() else {
+    let State::Ready(Ok(f)) = a.fit().fits() else {
         panic!("a fit")
     };
     let mu = f.model_fit.mu;
@@ -1314,7 +1334,7 @@ fn a_applies_the_position_fit_of_a_track() {
         common::no_user_presets("tui"),
     );
     a.wait();
-    let State::Ready(Ok(f)) = a.fit.fits() else {
+    let State::Ready(Ok(f)) = a.fit().fits() else {
         panic!("the fits")
     };
     let velocity = f.velocity_fit.as_ref().map(|v| v.mu).unwrap();
@@ -1337,9 +1357,9 @@ fn export_writes_the_run_as_csv_and_the_chart_as_svg() {
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     let mut a = app("paper-b4.9");
-    a.export_dir = dir.clone();
+    a.set_export_dir(dir.clone());
     press(&mut a, "w");
-    assert!(matches!(&a.mode, Mode::Export(_, n) if n.value() == "paper-b4.9-run.csv"));
+    assert!(matches!(&a.mode(), Mode::Export(_, n) if n.value() == "paper-b4.9-run.csv"));
     press(&mut a, "enter");
     // The file is written off the key press; the status line says so, then where.
     assert!(matches!(&a.status, Status::Info(i) if i.starts_with("writing")));
@@ -1378,9 +1398,10 @@ fn export_writes_the_run_as_csv_and_the_chart_as_svg() {
     );
     // A file that cannot be written: the prompt stays open and says why; no temp file.
     press(&mut a, "w");
-    a.mode = Mode::Export(groovelab::tui::app::Export::Csv, "no/such/dir/x.csv".into());
+    let typed: Vec<String> = "no/such/dir/x.csv".chars().map(String::from).collect();
+    press(&mut a, &format!("C-u {}", typed.join(" ")));
     press(&mut a, "enter");
-    assert!(matches!(a.mode, Mode::Export(..)));
+    assert!(matches!(a.mode(), Mode::Export(..)));
     assert!(matches!(&a.status, Status::Error(e) if e.contains("cannot write")));
     press(&mut a, "esc");
     let left: Vec<_> = std::fs::read_dir(&dir)
@@ -1445,7 +1466,7 @@ fn the_data_table_of_a_position_track_shows_x_in_cm() {
 fn the_data_table_shows_the_model_beside_every_measured_point() {
     let mut a = app("paper-b4.9");
     press(&mut a, "d");
-    assert_eq!(a.mode, Mode::Table);
+    assert_eq!(a.mode(), Mode::Table);
     let rows = groovelab::tui::view::data_rows(&a);
     let m = a.lab.measured().unwrap().clone();
     assert_eq!(rows.len(), m.t.len());
@@ -1469,10 +1490,10 @@ fn the_data_table_shows_the_model_beside_every_measured_point() {
         "{s}"
     );
     press(&mut a, "q");
-    assert_eq!(a.mode, Mode::Normal);
+    assert_eq!(a.mode(), Mode::Normal);
     let mut b = app("flat-table");
     press(&mut b, "d");
-    assert_eq!(b.mode, Mode::Normal);
+    assert_eq!(b.mode(), Mode::Normal);
     assert!(matches!(&b.status, Status::Error(e) if e.contains("no measured data")));
 }
 
@@ -1590,10 +1611,10 @@ fn the_fit_window_stays_after_the_impact_and_never_runs_backwards() {
             press(&mut a, keys);
         }
         a.wait();
-        let (from, to) = (a.fit.window.0.unwrap(), a.fit.window.1.unwrap());
+        let (from, to) = (a.fit().window.0.unwrap(), a.fit().window.1.unwrap());
         assert!(from > 0.0 && from < to, "{keys}: {from} … {to}");
         assert!(
-            matches!(a.fit.fits(), State::Ready(Ok(_))),
+            matches!(a.fit().fits(), State::Ready(Ok(_))),
             "{keys}: the fit stays"
         );
     }
@@ -1631,33 +1652,33 @@ fn a_click_selects_a_preset_and_a_click_on_the_selected_one_loads_it() {
     let mut a = app("paper-b4.9");
     press(&mut a, "p");
     let flat = a
-        .library
+        .library()
         .presets
         .iter()
         .position(|p| p.name == "flat-table")
         .unwrap();
     let (x, y) = cell_of(&text(&a, (120, 40), false), " flat-table ");
     assert!(on_mouse(&mut a, area, &theme, mouse(click, x + 5, y)));
-    assert_eq!(a.mode, Mode::Picker(flat), "a first click selects");
+    assert_eq!(a.mode(), Mode::Picker(flat), "a first click selects");
     assert_eq!(a.lab.preset().name, "paper-b4.9", "and loads nothing");
     assert!(text(&a, (120, 40), false).contains("▸flat-table"));
     on_mouse(&mut a, area, &theme, mouse(click, x + 5, y));
     assert_eq!(
-        (a.mode.clone(), a.lab.preset().name.as_str()),
+        (a.mode(), a.lab.preset().name.as_str()),
         (Mode::Normal, "flat-table")
     );
     // The wheel moves through the list; a click beside the popup does nothing.
     press(&mut a, "p");
-    let Mode::Picker(at) = a.mode else { panic!() };
+    let Mode::Picker(at) = a.mode() else { panic!() };
     on_mouse(
         &mut a,
         area,
         &theme,
         mouse(MouseEventKind::ScrollDown, 60, 20),
     );
-    assert_eq!(a.mode, Mode::Picker(at + 1));
+    assert_eq!(a.mode(), Mode::Picker(at + 1));
     assert!(!on_mouse(&mut a, area, &theme, mouse(click, 0, 0)));
-    assert_eq!(a.mode, Mode::Picker(at + 1));
+    assert_eq!(a.mode(), Mode::Picker(at + 1));
 }
 
 #[test]
@@ -1672,29 +1693,33 @@ fn over_a_popup_the_mouse_acts_on_the_popup_alone() {
     press(&mut a, "?");
     let _ = text(&a, (120, 40), false);
     assert!(!on_mouse(&mut a, area, &theme, mouse(click, x + 1, y)));
-    assert_eq!((a.mode.clone(), a.selected), (Mode::Help, 1));
+    assert_eq!((a.mode(), a.selected()), (Mode::Help, 1));
     on_mouse(
         &mut a,
         area,
         &theme,
         mouse(MouseEventKind::ScrollDown, 60, 20),
     );
-    assert_eq!(a.scroll, 1);
+    let scrolled = a.layers().top().map(|l| match l {
+        groovelab::tui::layer::Layer::Help(h) => h.scroll().first(),
+        _ => 0,
+    });
+    assert_eq!(scrolled, Some(1));
     // The data table: a click on the chart behind it does not seek.
     press(&mut a, "esc d");
     let t = a.t;
     assert!(!on_mouse(&mut a, area, &theme, mouse(click, 30, 25)));
-    assert_eq!((a.mode.clone(), a.t), (Mode::Table, t));
+    assert_eq!((a.mode(), a.t), (Mode::Table, t));
     // The prediction: a click on an answer answers.
     press(&mut a, "esc y");
     let (x, y) = cell_of(&text(&a, (120, 40), false), " 2 they come to rest");
     on_mouse(&mut a, area, &theme, mouse(click, x + 4, y));
-    assert_eq!(a.mode, Mode::Normal);
-    assert_eq!(a.prediction.as_ref().map(|p| p.guess), Some(Regime::Rest));
+    assert_eq!(a.mode(), Mode::Normal);
+    assert_eq!(a.prediction().map(|p| p.guess), Some(Regime::Rest));
     // A prompt takes no click: the typing goes on.
     press(&mut a, "enter");
     assert!(!on_mouse(&mut a, area, &theme, mouse(click, x, y)));
-    assert!(matches!(a.mode, Mode::Edit(_)));
+    assert!(matches!(a.mode(), Mode::Edit(_)));
 }
 
 /// A step from the limit says the row is at its limit (issue 19: "a coarse step past

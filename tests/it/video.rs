@@ -3,18 +3,8 @@
 //! from an mp4 encoded with ffmpeg; the recovered centres and marks against the exact
 //! positions, μ_k fitted from the tracks, and bad inputs refused.
 
-use groovelab::physics::scene::Scene;
 use groovelab::study::vision::Tracker;
 use groovelab::study::vision::render::{Film, Look};
-
-fn scene(name: &str) -> Scene {
-    groovelab::input::preset::load(name)
-        .unwrap()
-        .spec
-        .resolve()
-        .unwrap()
-        .0
-}
 
 /// A tracked point and the true one, px.
 type Pair = ((f64, f64), (f64, f64));
@@ -64,7 +54,7 @@ fn tracked(film: &Film, frames: impl Iterator<Item = usize>) -> (Vec<Pair>, Vec<
 
 #[test]
 fn centres_and_marks_of_a_720p_clip_within_the_targets() {
-    let s = scene("paper-b4.9");
+    let s = preset_scene("paper-b4.9");
     let film = Film::new(&s, Look::default(), 0.5);
     let (centres, marks, tracker) = tracked(&film, (0..50).step_by(7));
     // Every frame's two balls found (none touch in these frames), most marks.
@@ -82,7 +72,7 @@ use std::sync::OnceLock;
 use groovelab::input::video::write::{self, Encoding};
 use serde_json::Value;
 
-use crate::common::groovelab;
+use crate::common::{groovelab, preset_scene};
 
 /// A small clip: 640×360 at 1000 px/m (R = 27.5 px), 100 frames/s, t = −0.15 … 0.35 s.
 fn small_look() -> Look {
@@ -102,16 +92,13 @@ const FRAMES: usize = 50;
 fn small_frames() -> &'static [Vec<u8>] {
     static FRAMES_RGB: OnceLock<Vec<Vec<u8>>> = OnceLock::new();
     FRAMES_RGB.get_or_init(|| {
-        let film = Film::new(&scene("paper-b4.9"), small_look(), 0.4);
+        let film = Film::new(&preset_scene("paper-b4.9"), small_look(), 0.4);
         (0..FRAMES).map(|k| film.rgb(k)).collect()
     })
 }
 
 fn dir(test: &str) -> PathBuf {
-    let d = std::env::temp_dir().join(format!("groovelab-video-{}-{test}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    crate::common::scratch_dir("video", test)
 }
 
 /// Writes `frames` as `frame0001.png` … into `dir`, leaving out the numbers `skip`.
@@ -411,7 +398,7 @@ fn one_ball_in_view_is_tracked_and_named() {
         both: false,
         ..small_look()
     };
-    let film = Film::new(&scene("paper-b4.9"), look, 0.4);
+    let film = Film::new(&preset_scene("paper-b4.9"), look, 0.4);
     let frames: Vec<Vec<u8>> = (0..12).map(|k| film.rgb(k)).collect();
     write_pngs(&d, &frames, &look, &[]);
     let (code, text, err) = run(&["track", d.to_str().unwrap(), "--fps", "100"]);
@@ -466,7 +453,7 @@ fn refused(path: &Path, extra: &[&str], what: &str) {
 #[test]
 fn frames_without_a_ball_or_with_three_are_refused() {
     let look = small_look();
-    let film = Film::new(&scene("paper-b4.9"), look, 0.4);
+    let film = Film::new(&preset_scene("paper-b4.9"), look, 0.4);
     // No ball: the empty groove.
     let empty = dir("empty");
     let mut frames: Vec<Vec<u8>> = (0..6).map(|k| film.rgb(k)).collect();
@@ -597,5 +584,12 @@ fn a_video_too_large_is_refused_before_decoding() {
         ..Default::default()
     };
     let e = groovelab::input::video::open(&clip, &limits).err().unwrap();
-    assert!(e.what.contains("is too much video to track"), "{e}");
+    assert!(
+        matches!(
+            e.what,
+            groovelab::input::video::VideoProblem::TooMuchVideo { max_pixels, .. } if max_pixels == 1e6
+        ),
+        "{e}"
+    );
+    assert!(e.to_string().contains("is too much video to track"), "{e}");
 }

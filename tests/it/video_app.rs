@@ -17,18 +17,8 @@ use groovelab::tui::app::{Action, Status};
 use serde_json::Value;
 
 use crate::common;
-use groovelab::physics::scene::Scene;
 use groovelab::study::vision::render::{Film, Look};
 use groovelab::study::vision::thumbs::VideoView;
-
-fn scene() -> Scene {
-    groovelab::input::preset::load("paper-b4.9")
-        .unwrap()
-        .spec
-        .resolve()
-        .unwrap()
-        .0
-}
 
 /// A small clip: 320×180 at 500 px/m (R = 13.75 px), 100 frames/s, t = −0.15 … 0.34 s.
 pub fn look() -> Look {
@@ -44,9 +34,9 @@ pub fn look() -> Look {
 
 pub const FRAMES: usize = 50;
 
-/// This run's scratch folder.
+/// The scratch folder of these tests (`target/tmp/video-app`, reused by each run).
 fn scratch() -> PathBuf {
-    let d = std::env::temp_dir().join(format!("groovelab-video-app-{}", std::process::id()));
+    let d = crate::common::scratch_root("video-app");
     std::fs::create_dir_all(&d).unwrap();
     d
 }
@@ -60,7 +50,7 @@ pub fn folder() -> &'static Path {
         let _ = std::fs::remove_dir_all(&d);
         std::fs::create_dir_all(&d).unwrap();
         let look = look();
-        let film = Film::new(&scene(), look, 0.4);
+        let film = Film::new(&common::paper_scene(), look, 0.4);
         for k in 0..FRAMES {
             let p = d.join(format!("frame{:04}.png", k + 1));
             write::png(&p, &film.rgb(k), look.width, look.height).unwrap();
@@ -245,7 +235,7 @@ fn the_app_tracks_on_a_worker_and_takes_the_data_in_when_done() {
     assert_eq!(own.name, dir.display().to_string());
     assert!(app.lab.generation() > before);
     assert_eq!(app.lab.scene.mu, 0.2);
-    assert!(app.video.view.is_some(), "the pictures");
+    assert!(app.video().view.is_some(), "the pictures");
     assert!(
         matches!(&app.status, Status::Info(s) if s.starts_with("tracked ")),
         "{:?}",
@@ -255,7 +245,7 @@ fn the_app_tracks_on_a_worker_and_takes_the_data_in_when_done() {
     // the exact solution's centres mapped into the video by the tracker's scale,
     // groove and origin lie on the tracked ones (the film was made with this scene;
     // 0.1 px of centre noise, 0.4 % of scale: well under a pixel).
-    let view = app.video.view.clone().unwrap();
+    let view = app.video().view.clone().unwrap();
     app.lab.set(Key::Mu, 0.17).unwrap();
     let (mut compared, mut worst) = (0, 0.0f64);
     for k in 0..FRAMES {
@@ -342,7 +332,7 @@ fn the_tracking_shows_its_progress_and_a_key_never_waits_for_it() {
         None
     });
     let mut spins = 0u64;
-    while app.video.progress() != Some((3, 10)) {
+    while app.video().progress() != Some((3, 10)) {
         std::thread::yield_now();
         spins += 1;
         assert!(spins < 1 << 32, "the job never started");
@@ -357,7 +347,7 @@ fn the_tracking_shows_its_progress_and_a_key_never_waits_for_it() {
     assert!(text.contains("tracking clip.mp4: frame 3 of 10"), "{text}");
     tx.send(()).unwrap();
     app.wait();
-    assert_eq!(app.video.progress(), None);
+    assert_eq!(app.video().progress(), None);
 }
 
 #[test]
@@ -366,7 +356,7 @@ fn an_mp4_is_data_for_the_app_and_render() {
         return;
     }
     let look = look();
-    let film = Film::new(&scene(), look, 0.4);
+    let film = Film::new(&common::paper_scene(), look, 0.4);
     let clip = scratch().join("clip.mp4");
     let enc = write::Encoding {
         width: look.width,

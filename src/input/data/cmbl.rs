@@ -9,8 +9,9 @@ use roxmltree::Node;
 
 use super::layout::{Axis, position_column};
 use super::notes::Notes;
-use super::options::{DataError, Reading};
+use super::options::Reading;
 use super::positions::read_table;
+use super::problem::{DataError, DataProblem, VideoScale};
 use super::table::Table;
 use super::xml::{self, child_text};
 use crate::study::measured::Track;
@@ -60,7 +61,7 @@ fn axis(c: &Column) -> Option<Axis> {
 }
 
 /// The video's scale as the file states it, for the message when it is missing.
-fn video_scale(root: Node<'_, '_>) -> Option<String> {
+fn video_scale(root: Node<'_, '_>) -> Option<VideoScale> {
     let movie = root
         .descendants()
         .find(|n| n.has_tag_name("VAMovieActualDistance"))?;
@@ -68,25 +69,21 @@ fn video_scale(root: Node<'_, '_>) -> Option<String> {
     let parent = movie.parent()?;
     let pixels = child_text(parent, "VAMoviePixelDistance")?;
     let unit = child_text(parent, "VAMovieScaleUnits").unwrap_or("");
-    Some(format!(
-        "its scale says {actual} {} per {pixels} of the movie's distance",
-        if unit.is_empty() { "(no unit)" } else { unit }
-    ))
+    Some(VideoScale {
+        actual,
+        unit: unit.to_string(),
+        pixels: pixels.to_string(),
+    })
 }
 
 /// Reads a Logger Pro file (see the module doc) into a track in SI units and what it
 /// said about itself.
 pub(super) fn read(text: &str, file: &str, reading: &Reading) -> Result<(Track, Notes), DataError> {
-    let err = |what: String| DataError {
-        file: file.to_string(),
-        what,
-    };
-    let doc = xml::parse(text, "Logger Pro file").map_err(err)?;
+    let err = |what: DataProblem| DataError::new(file, what);
+    let doc = xml::parse(text, "Logger Pro file").map_err(|e| err(e.into()))?;
     let root = doc.root_element();
     if !root.has_tag_name("Document") {
-        return Err(err(
-            "not a Logger Pro file: its root is not <Document>".into()
-        ));
+        return Err(err(DataProblem::NotLoggerPro));
     }
     let sets: Vec<_> = root
         .children()
@@ -98,35 +95,29 @@ pub(super) fn read(text: &str, file: &str, reading: &Reading) -> Result<(Track, 
         })
         .collect();
     let Some((name, _, columns)) = sets.iter().find(|s| s.1).or(sets.first()) else {
-        let names: Vec<String> = root
+        let found: Vec<String> = root
             .children()
             .filter(|c| c.has_tag_name("DataSet"))
             .filter_map(|c| child_text(c, "DataSetName").map(str::to_string))
             .collect();
-        return Err(err(format!(
-            "no data set with a time and a position column (X, Position) that holds numbers; data sets found: {}: groovelab needs the positions of the ball's centre over time (a video analysis or a motion detector)",
-            if names.is_empty() {
-                "none".to_string()
-            } else {
-                names.join(", ")
-            }
-        )));
+        return Err(err(DataProblem::NoDataSet { found }));
     };
     let unscaled = columns
         .iter()
         .filter(|c| matches!(axis(c), Some(Axis::X | Axis::Y)))
         .all(|c| c.unit.is_empty());
     if unscaled && reading.length_unit.is_none() && reading.scale.is_none() {
-        return Err(err(format!(
-            "the positions of data set '{name}' have no unit: the video was not scaled in Logger Pro{}; set its scale in Logger Pro and save, or give the length one of the file's units shows with --scale (e.g. --scale 1.105mm), or their unit with --length-unit",
-            video_scale(root)
-                .map(|s| format!(" ({s})"))
-                .unwrap_or_default()
-        )));
+        return Err(err(DataProblem::Unscaled {
+            set: name.clone(),
+            scale: video_scale(root),
+        }));
     }
     let table = Table::new(&as_table(columns));
     let (track, mut notes) = read_table(&table, file, reading).map_err(|e| DataError {
-        what: format!("data set '{name}': {}", rows_not_lines(&e.what)),
+        what: DataProblem::InDataSet {
+            set: name.clone(),
+            problem: Box::new(e.what),
+        },
         ..e
     })?;
     notes.format = format!("{FORMAT}, data set '{name}'");
@@ -164,18 +155,4 @@ fn as_table(columns: &[Column]) -> String {
         out.push('\n');
     }
     out
-}
-
-/// A table error's `line N` (of the table made here: the header is line 1) as the
-/// data set's row N − 1.
-fn rows_not_lines(what: &str) -> String {
-    match what.strip_prefix("line ").and_then(|r| r.split_once(':')) {
-        Some((n, rest)) if n.parse::<usize>().is_ok() => {
-            format!(
-                "row {}:{rest}",
-                n.parse::<usize>().unwrap_or(1).saturating_sub(1)
-            )
-        }
-        _ => what.to_string(),
-    }
 }

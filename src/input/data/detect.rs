@@ -4,7 +4,8 @@
 //! accelerations only (phyphox), refused with what groovelab needs instead.
 
 use super::notes::Notes;
-use super::options::{DataError, Reading};
+use super::options::Reading;
+use super::problem::{AccelerationsOnly, DataError, DataProblem};
 use super::table::{self, Table};
 use super::{cmbl, positions, trk, velocities, vernier};
 use crate::study::measured::{RawSeries, Track};
@@ -18,10 +19,7 @@ pub fn read_with_notes(
 ) -> Result<(RawSeries, Notes), DataError> {
     let (raw, notes) = read_any(text, file, reading)?;
     if let RawSeries::Positions(t) = &raw {
-        super::roles::swapped(t).map_err(|e| DataError {
-            file: file.to_string(),
-            what: e.to_string(),
-        })?;
+        super::roles::swapped(t).map_err(|e| DataError::new(file, e))?;
     }
     let raw = match raw {
         RawSeries::Positions(t) => RawSeries::Positions(super::sigmas::with_sigmas(
@@ -49,10 +47,7 @@ fn read_any(text: &str, file: &str, reading: &Reading) -> Result<(RawSeries, Not
         .trim_start()
         .starts_with('<')
     {
-        return Err(DataError {
-            file: file.to_string(),
-            what: "an XML file, but neither a Tracker project (.trk) nor a Logger Pro file (.cmbl), expected one of those or a table of t and x (and y), or t, v_cm and v_t".into(),
-        });
+        return Err(DataError::new(file, DataProblem::OtherXml));
     }
     if vernier::is_vernier(text) {
         let (raw, notes) = read_table(&Table::new(&vernier::as_table(text)), file, reading)?;
@@ -86,22 +81,8 @@ fn read_table(
         return velocities::read_table(table, file, reading)
             .map(|(m, n)| (RawSeries::Velocities(m), n));
     }
-    accelerations_only(table).map_err(|e| DataError {
-        file: file.to_string(),
-        what: e.to_string(),
-    })?;
+    accelerations_only(table).map_err(|e| DataError::new(file, e))?;
     positions::read_table(table, file, reading).map(|(t, n)| (RawSeries::Positions(t), n))
-}
-
-/// A table of accelerations only (phyphox's accelerometer), at its header's `line`
-/// with those `columns`: what groovelab needs instead.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-#[error(
-    "line {line}: the file holds accelerations only ({columns}), no positions or velocities: groovelab needs the ball's position over time (a video track: t, x, y) or its velocities (t, v_cm, v_t); a phone's accelerometer (phyphox) cannot give them"
-)]
-pub struct AccelerationsOnly {
-    pub line: usize,
-    pub columns: String,
 }
 
 /// A table of accelerations only (phyphox's accelerometer): refused with what

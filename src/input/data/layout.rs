@@ -125,14 +125,11 @@ fn same(a: &str, b: &str) -> bool {
 /// a single track's name): the first row with a time column, within four rows.
 pub(super) fn find_header(
     rows: &mut impl Iterator<Item = TableRow>,
-) -> Result<(Vec<TableRow>, TableRow), String> {
+) -> Result<(Vec<TableRow>, TableRow), LayoutError> {
     let mut before = Vec::new();
     loop {
         let Some(row) = rows.next() else {
-            return Err(
-                "no header with a time column t found, expected columns t and x (and y), or t, v_cm and v_t"
-                    .into(),
-            );
+            return Err(LayoutError::NoHeader);
         };
         let has_t =
             (0..row.len()).any(|i| position_column(row.cell(i)).is_some_and(|c| c.axis == Axis::T));
@@ -140,18 +137,43 @@ pub(super) fn find_header(
             return Ok((before, row));
         }
         if before.len() == 3 {
-            return Err(format!(
-                "line {}: no header with a time column t in the first lines, expected columns t and x (and y) for a position track, or t, v_cm and v_t for velocities",
-                row.line
-            ));
+            return Err(LayoutError::NoHeaderNearTop { line: row.line });
         }
         before.push(row);
     }
 }
 
-/// Why the lines above a position file's column names do not say its tracks.
+/// Why a position file's header and the lines above it do not say its columns and
+/// tracks, or the tracks the options name.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum LayoutError {
+    #[error(
+        "no header with a time column t found, expected columns t and x (and y), or t, v_cm and v_t"
+    )]
+    NoHeader,
+    #[error(
+        "line {line}: no header with a time column t in the first lines, expected columns t and x (and y) for a position track, or t, v_cm and v_t for velocities"
+    )]
+    NoHeaderNearTop { line: usize },
+    /// The header at `line` (its cells) has no x column.
+    #[error(
+        "line {line}: no position column x in '{}', expected t and x (and y) for a position track, or t, v_cm and v_t for velocities",
+        cells.join(" ")
+    )]
+    NoPositionColumn { line: usize, cells: Vec<String> },
+    /// No track named `want` (as the option gave it) for the `role` ("centre",
+    /// "mark") among the file's tracks (`found`; an empty name is an unnamed track).
+    #[error(
+        "no track '{want}' for the {role} in the file, tracks found: {}",
+        found.iter().map(|n| if n.is_empty() { "(unnamed)" } else { n }).collect::<Vec<_>>().join(", ")
+    )]
+    NoTrack {
+        want: String,
+        role: &'static str,
+        found: Vec<String>,
+    },
+    #[error("the mark and the centre name the same track")]
+    SameTrack,
     #[error("a '#multi:' file needs a line of track names before the column names")]
     NoTrackNames,
     #[error(
@@ -178,36 +200,13 @@ pub(super) fn name_tracks(
         if sep == Sep::Space {
             return Err(LayoutError::SpaceSeparated { line: names.line });
         }
-        let mut current = String::new();
-        for (j, col) in cols.iter_mut().enumerate() {
-            let name = names.cell(j);
-            if !name.is_empty() {
-                current = name.to_string();
-            }
-            if let Some(c) = col
-                && c.axis != Axis::T
-                && c.track.is_empty()
-            {
-                c.track = current.clone();
-            }
-        }
+        name_below(cols, names, false);
         Ok("Tracker multi-track")
     } else if let Some(names) = before.last().filter(|r| named_cells(r) > 1) {
         // Tracks side by side (a spreadsheet of several tracks, `A;;;B;;` above
         // `t;x;y;t;x;y`): each name above its track's first column, its own time
         // column included.
-        let mut current = String::new();
-        for (j, col) in cols.iter_mut().enumerate() {
-            let name = names.cell(j);
-            if !name.is_empty() {
-                current = name.to_string();
-            }
-            if let Some(c) = col
-                && c.track.is_empty()
-            {
-                c.track = current.clone();
-            }
-        }
+        name_below(cols, names, true);
         Ok("tracks side by side")
     } else if let Some(title) = before.last() {
         // Tracker's single-track export: the track's name above the header.
@@ -223,6 +222,25 @@ pub(super) fn name_tracks(
     }
 }
 
+/// Gives each column without a track name the last name at or left of it in `names`
+/// (a name stands above its track's first column); time columns too when `times`
+/// (tracks side by side each have their own), else they stay shared.
+fn name_below(cols: &mut [Option<Col>], names: &TableRow, times: bool) {
+    let mut current = String::new();
+    for (j, col) in cols.iter_mut().enumerate() {
+        let name = names.cell(j);
+        if !name.is_empty() {
+            current = name.to_string();
+        }
+        if let Some(c) = col
+            && (times || c.axis != Axis::T)
+            && c.track.is_empty()
+        {
+            c.track = current.clone();
+        }
+    }
+}
+
 /// How many cells of `row` are not empty.
 fn named_cells(row: &TableRow) -> usize {
     (0..row.len()).filter(|&i| !row.cell(i).is_empty()).count()
@@ -230,28 +248,20 @@ fn named_cells(row: &TableRow) -> usize {
 
 /// The centre's and the mark's track names among `names` (tracks with an x column, in
 /// file order): as the options say, else by their names, else the first two.
-pub fn pick_roles(names: &[String], reading: &Reading) -> Result<(String, Option<String>), String> {
-    let pick = |want: &Option<String>, defaults: &[&str], role: &str| match want {
+pub fn pick_roles(
+    names: &[String],
+    reading: &Reading,
+) -> Result<(String, Option<String>), LayoutError> {
+    let pick = |want: &Option<String>, defaults: &[&str], role: &'static str| match want {
         Some(w) => names
             .iter()
             .find(|n| same(n, w))
             .cloned()
             .map(Some)
-            .ok_or_else(|| {
-                let found: Vec<&str> = names
-                    .iter()
-                    .map(|n| {
-                        if n.is_empty() {
-                            "(unnamed)"
-                        } else {
-                            n.as_str()
-                        }
-                    })
-                    .collect();
-                format!(
-                    "no track '{w}' for the {role} in the file, tracks found: {}",
-                    found.join(", ")
-                )
+            .ok_or_else(|| LayoutError::NoTrack {
+                want: w.clone(),
+                role,
+                found: names.to_vec(),
             }),
         None => Ok(names
             .iter()
@@ -272,7 +282,7 @@ pub fn pick_roles(names: &[String], reading: &Reading) -> Result<(String, Option
         None => names.iter().find(|n| **n != centre).cloned(),
     };
     if reading.mark.is_some() && mark.is_none() {
-        return Err("the mark and the centre name the same track".into());
+        return Err(LayoutError::SameTrack);
     }
     Ok((centre, mark))
 }

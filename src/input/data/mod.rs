@@ -11,6 +11,7 @@ mod misfit;
 mod notes;
 mod options;
 mod positions;
+mod problem;
 mod report;
 mod roles;
 mod scales;
@@ -24,7 +25,8 @@ mod xml;
 
 pub use detect::read_with_notes;
 pub use notes::{Notes, UnitNote};
-pub use options::{DataError, MAX_ROWS, Reading};
+pub use options::{MAX_ROWS, Reading};
+pub use problem::{DataError, DataProblem, VideoScale};
 pub use report::{Gap, Report, inspect};
 pub use scene::scene_of;
 pub use table::file_unit;
@@ -66,14 +68,10 @@ pub fn load_pair(
     };
     let ball = one(centre, &reading.centre)?;
     let rim = one(mark, &reading.mark)?;
-    let track = ball.with_mark(&rim).map_err(|what| DataError {
-        file: mark.0.clone(),
-        what: what.to_string(),
-    })?;
-    roles::swapped(&track).map_err(|e| DataError {
-        file: centre.0.clone(),
-        what: e.to_string(),
-    })?;
+    let track = ball
+        .with_mark(&rim)
+        .map_err(|what| DataError::new(&mark.0, what))?;
+    roles::swapped(&track).map_err(|e| DataError::new(&centre.0, e))?;
     prepare(RawSeries::Positions(track), &centre.0, reading, opts)
 }
 
@@ -88,10 +86,7 @@ fn prepare(
         impact_at: reading.impact_at.or(opts.impact_at),
         ..*opts
     };
-    measured::prepare(raw, &opts).map_err(|e| DataError {
-        file: file.to_string(),
-        what: e.to_string(),
-    })
+    measured::prepare(raw, &opts).map_err(|e| DataError::new(file, e))
 }
 
 /// Reads a velocity file or a position track and derives what does not depend on the

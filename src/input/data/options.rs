@@ -1,14 +1,6 @@
-//! How a data file is to be read beyond what it says itself, and why it cannot be.
+//! How a data file is to be read beyond what it says itself.
 
 pub use crate::study::measured::MAX_ROWS;
-
-/// Why a data file cannot be used; each message names the line.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-#[error("{file}: {what}")]
-pub struct DataError {
-    pub file: String,
-    pub what: String,
-}
 
 /// How to read a file beyond what its header says.
 #[derive(Clone, Debug, Default, PartialEq)]

@@ -6,33 +6,15 @@
 //! columns only (velocities and the like are ignored), converts to SI, keeps empty and
 //! `NaN` cells as missing. The velocities are derived in `study::measured`.
 
-use super::layout::{Axis, Col, find_header, name_tracks, pick_roles, position_column};
+use super::layout::{
+    Axis, Col, LayoutError, find_header, name_tracks, pick_roles, position_column,
+};
 use super::notes::{Notes, UnitNote};
-use super::options::{DataError, MAX_ROWS, Reading};
+use super::options::{MAX_ROWS, Reading};
+use super::problem::{DataError, DataProblem, RowError};
 use super::scales::{Given, LENGTHS, TIMES, check_track};
 use super::table::{Table, TableRow, missing, number};
 use crate::study::measured::Track;
-
-/// Why a data row of a position file cannot be read (`line`: the file's line).
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-pub enum RowError {
-    #[error("line {line}: more than {MAX_ROWS} data rows, allowed at most {MAX_ROWS}")]
-    TooMany { line: usize },
-    /// The cell of column `name`, as written, is no finite number.
-    #[error(
-        "line {line}: {name} = '{cell}' is not a finite number (an empty cell counts as missing)"
-    )]
-    NotANumber {
-        line: usize,
-        name: &'static str,
-        cell: String,
-    },
-    /// Times in s.
-    #[error(
-        "line {line}: t = {time} s does not increase (previous {prev} s), allowed strictly increasing times"
-    )]
-    NotIncreasing { line: usize, time: f64, prev: f64 },
-}
 
 /// Parses a position file (see the module doc) into a [`Track`] in SI units.
 pub fn parse(text: &str, file: &str, reading: &Reading) -> Result<Track, DataError> {
@@ -50,24 +32,21 @@ pub(super) fn read_table(
     file: &str,
     reading: &Reading,
 ) -> Result<(Track, Notes), DataError> {
-    let err = |what: String| DataError {
-        file: file.to_string(),
-        what,
-    };
+    let err = |what: DataProblem| DataError::new(file, what);
     let mut rows = table.rows();
-    let (before, header) = find_header(&mut rows).map_err(err)?;
+    let (before, header) = find_header(&mut rows).map_err(|e| err(e.into()))?;
     let mut cols: Vec<Option<Col>> = (0..header.len())
         .map(|i| position_column(header.cell(i)))
         .collect();
-    let format = name_tracks(&mut cols, &before, table.sep).map_err(|e| err(e.to_string()))?;
+    let format = name_tracks(&mut cols, &before, table.sep).map_err(|e| err(e.into()))?;
     let format = match format {
         "CSV" if (0..header.len()).any(|i| header.cell(i).contains(':')) => {
             "Logger Pro / Graphical Analysis"
         }
         f => f,
     };
-    let names = tracks_with_x(&cols, &header).map_err(err)?;
-    let (centre, mark) = pick_roles(&names, reading).map_err(err)?;
+    let names = tracks_with_x(&cols, &header).map_err(|e| err(e.into()))?;
+    let (centre, mark) = pick_roles(&names, reading).map_err(|e| err(e.into()))?;
     let index = |track: &str, axis: Axis| {
         cols.iter().position(|c| {
             c.as_ref()
@@ -91,9 +70,7 @@ pub(super) fn read_table(
         Some(m) => match (index(m, Axis::X), index(m, Axis::Y), iy) {
             (Some(a), Some(b), Some(_)) => Some((a, b)),
             _ if reading.mark.is_some() => {
-                return Err(err(format!(
-                    "the mark '{m}' needs x and y columns, and the centre a y column, to give the spin angle"
-                )));
+                return Err(err(DataProblem::MarkWithoutXy { mark: m.clone() }));
             }
             _ => None,
         },
@@ -118,7 +95,7 @@ pub(super) fn read_table(
     if mark_t.is_some() {
         track.mark = None;
     }
-    read_rows(rows, &columns, &mut track).map_err(|e| err(e.to_string()))?;
+    read_rows(rows, &columns, &mut track).map_err(|e| err(e.into()))?;
     // A mark with its own time column: read as a track of its own, matched to the
     // centre's frames by time (as two one-track exports are).
     if let (Some(t), Some((a, b))) = (mark_t, im) {
@@ -132,13 +109,10 @@ pub(super) fn read_table(
         track = with_own_time_mark(track, table, &own, name).map_err(err)?;
     }
     if track.x.iter().filter(|x| x.is_finite()).count() == 0 {
-        return Err(err(format!(
-            "no frame with a position x of '{}', expected rows of numbers below the header",
-            if centre.is_empty() { "x" } else { &centre }
-        )));
+        return Err(err(DataProblem::NoPosition { centre }));
     }
     let given = units.given(it, ix);
-    check_track(&track, &given).map_err(|e| err(e.to_string()))?;
+    check_track(&track, &given).map_err(|e| err(e.into()))?;
     Ok((track, notes(format, names, &given)))
 }
 
@@ -206,7 +180,7 @@ impl Decided<'_> {
 }
 
 /// The tracks with an x column, in file order, or why the header has none.
-fn tracks_with_x(cols: &[Option<Col>], header: &TableRow) -> Result<Vec<String>, String> {
+fn tracks_with_x(cols: &[Option<Col>], header: &TableRow) -> Result<Vec<String>, LayoutError> {
     let mut names: Vec<String> = Vec::new();
     for c in cols.iter().flatten() {
         if c.axis == Axis::X && !names.contains(&c.track) {
@@ -214,15 +188,14 @@ fn tracks_with_x(cols: &[Option<Col>], header: &TableRow) -> Result<Vec<String>,
         }
     }
     if names.is_empty() {
-        let found: Vec<&str> = (0..header.len())
-            .map(|i| header.cell(i))
-            .filter(|c| !c.is_empty())
-            .collect();
-        return Err(format!(
-            "line {}: no position column x in '{}', expected t and x (and y) for a position track, or t, v_cm and v_t for velocities",
-            header.line,
-            found.join(" ")
-        ));
+        return Err(LayoutError::NoPositionColumn {
+            line: header.line,
+            cells: (0..header.len())
+                .map(|i| header.cell(i))
+                .filter(|c| !c.is_empty())
+                .map(str::to_string)
+                .collect(),
+        });
     }
     Ok(names)
 }
@@ -234,16 +207,16 @@ fn with_own_time_mark(
     table: &Table,
     columns: &Columns,
     name: String,
-) -> Result<Track, String> {
+) -> Result<Track, DataProblem> {
     let mut rim = Track {
         centre_name: name,
         ..Track::default()
     };
     let mut rows = table.rows();
     find_header(&mut rows)?;
-    read_rows(rows, columns, &mut rim).map_err(|e| e.to_string())?;
+    read_rows(rows, columns, &mut rim)?;
     let format = track.format;
-    let mut track = track.with_mark(&rim).map_err(|e| e.to_string())?;
+    let mut track = track.with_mark(&rim)?;
     track.format = format;
     Ok(track)
 }

@@ -6,7 +6,8 @@
 use serde::Serialize;
 
 use super::notes::Notes;
-use super::options::{DataError, Reading};
+use super::options::Reading;
+use super::problem::{DataError, DataProblem};
 use super::scales::{approach_speed, frame_spacing};
 use crate::study::measured::track::derivative::scatter;
 use crate::study::measured::{self, Derive, RawSeries, Series, Track};
@@ -80,7 +81,7 @@ pub fn inspect(
     derive: &Derive,
 ) -> Result<Report, DataError> {
     let (raw, notes) = match super::detect::read_with_notes(text, file, reading) {
-        Err(e) if e.what.starts_with("no impact found") => {
+        Err(e) if e.what == DataProblem::NoImpact => {
             // A velocity file without an impact: what it holds all the same.
             let table = super::table::Table::new(text);
             let (m, notes) = super::velocities::without_impact(&table, file, reading)?;

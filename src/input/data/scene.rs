@@ -1,7 +1,7 @@
 //! The scene a data file says it was taken in: `# scene NAME = VALUE` comment lines,
 //! as the app's CSV export writes them (`study::export::scene_comments`).
 
-use super::options::DataError;
+use super::problem::{DataError, DataProblem};
 use crate::settings::params::Key;
 use crate::settings::spec::SceneSpec;
 use crate::settings::units::parse_quantity;
@@ -24,32 +24,29 @@ pub fn scene_of(text: &str, file: &str) -> Result<SceneSpec, DataError> {
         else {
             continue;
         };
-        let err = |what: String| DataError {
-            file: file.to_string(),
-            what: format!("line {}: {what}", n + 1),
-        };
+        let err = |what: DataProblem| DataError::new(file, what);
         let (name, value) = rest.split_once('=').ok_or_else(|| {
-            err(format!(
-                "'{}' is not a scene value, expected '# scene NAME = VALUE'",
-                line.trim()
-            ))
+            err(DataProblem::NotSceneValue {
+                line: n + 1,
+                text: line.trim().to_string(),
+            })
         })?;
         let key = Key::from_name(name.trim())
             .filter(|k| k.param().of_scene())
             .ok_or_else(|| {
-                let names: Vec<&str> = crate::settings::params::PARAMS
-                    .iter()
-                    .filter(|p| p.of_scene())
-                    .map(|p| p.name)
-                    .collect();
-                err(format!(
-                    "scene value '{}' is not a parameter, allowed {}",
-                    name.trim(),
-                    names.join(", ")
-                ))
+                err(DataProblem::NotParameter {
+                    line: n + 1,
+                    name: name.trim().to_string(),
+                })
             })?;
-        let v = parse_quantity(value, key.dimension())
-            .map_err(|e| err(format!("scene {} = {}: {e}", key.name(), value.trim())))?;
+        let v = parse_quantity(value, key.dimension()).map_err(|error| {
+            err(DataProblem::SceneValue {
+                line: n + 1,
+                key,
+                value: value.trim().to_string(),
+                error: Box::new(error),
+            })
+        })?;
         spec.set(key, v);
     }
     Ok(spec)
@@ -112,13 +109,25 @@ mod tests {
     fn a_bad_scene_line_names_its_line() {
         let e = scene_of("# note\n# scene widht = 4 cm\n", "f.csv").unwrap_err();
         assert!(
-            e.what.starts_with(
+            e.what.to_string().starts_with(
                 "line 2: scene value 'widht' is not a parameter, allowed radius, width"
             ),
             "{e}"
         );
         let e = scene_of("# scene width = 4 kg\n", "f.csv").unwrap_err();
-        assert!(e.what.contains("line 1: scene width = 4 kg"), "{e}");
+        assert!(
+            e.to_string()
+                .starts_with("f.csv: line 1: scene width = 4 kg: "),
+            "{e}"
+        );
+        assert!(matches!(
+            e.what,
+            DataProblem::SceneValue {
+                line: 1,
+                key: Key::Width,
+                ..
+            }
+        ));
         assert_eq!(
             scene_of("t,x\n# scenery\n", "f").unwrap(),
             SceneSpec::default()

@@ -10,7 +10,8 @@ use roxmltree::Node;
 
 use super::layout::pick_roles;
 use super::notes::{Notes, UnitNote};
-use super::options::{DataError, MAX_ROWS, Reading};
+use super::options::{MAX_ROWS, Reading};
+use super::problem::{DataError, DataProblem};
 use super::scales::{Given, LENGTHS, check_track};
 use super::xml::{self, child};
 use crate::settings::units::{Dimension, significant};
@@ -91,7 +92,7 @@ struct Points {
 }
 
 /// The point-mass tracks of the project, in file order.
-fn point_masses(root: Node<'_, '_>) -> Result<Vec<Points>, String> {
+fn point_masses(root: Node<'_, '_>) -> Result<Vec<Points>, DataProblem> {
     let mut out = Vec::new();
     let Some(tracks) = prop(root, "tracks") else {
         return Ok(out);
@@ -112,9 +113,7 @@ fn point_masses(root: Node<'_, '_>) -> Result<Vec<Points>, String> {
         if let Some(data) = prop(item, "framedata") {
             for (n, f) in frames(data) {
                 if at.len() == MAX_ROWS {
-                    return Err(format!(
-                        "track '{name}' has more than {MAX_ROWS} frames, allowed at most {MAX_ROWS}"
-                    ));
+                    return Err(DataProblem::TooManyFrames { track: name });
                 }
                 if let (Some(x), Some(y)) = (number(f, "x"), number(f, "y")) {
                     at.push((n, x, y));
@@ -152,7 +151,7 @@ fn coords(root: Node<'_, '_>) -> Vec<(usize, Coords)> {
 }
 
 /// The clip's timing: start frame, start time (s) and frame duration (s).
-fn timing(root: Node<'_, '_>) -> Result<(usize, f64, f64), String> {
+fn timing(root: Node<'_, '_>) -> Result<(usize, f64, f64), DataProblem> {
     let clip = prop(root, "videoclip").and_then(object);
     let start_frame = clip.and_then(|c| number(c, "startframe")).unwrap_or(0.0);
     let start_time = clip.and_then(|c| number(c, "starttime")).unwrap_or(0.0) / 1e3;
@@ -160,26 +159,21 @@ fn timing(root: Node<'_, '_>) -> Result<(usize, f64, f64), String> {
         .and_then(object)
         .and_then(|c| number(c, "delta_t"))
         .filter(|&dt| dt > 0.0)
-        .ok_or("the project gives no frame duration (clipcontrol's delta_t): open it in Tracker and save it again")?;
+        .ok_or(DataProblem::NoFrameDuration)?;
     Ok((start_frame.max(0.0) as usize, start_time, dt / 1e3))
 }
 
 /// Reads a Tracker project (see the module doc) into a track in SI units and what it
 /// said about itself.
 pub(super) fn read(text: &str, file: &str, reading: &Reading) -> Result<(Track, Notes), DataError> {
-    let err = |what: String| DataError {
-        file: file.to_string(),
-        what,
-    };
-    let doc = xml::parse(text, "Tracker project").map_err(err)?;
+    let err = |what: DataProblem| DataError::new(file, what);
+    let doc = xml::parse(text, "Tracker project").map_err(|e| err(e.into()))?;
     let root = doc.root_element();
     if !root
         .attribute("class")
         .is_some_and(|c| c.ends_with("TrackerPanel"))
     {
-        return Err(err(
-            "not a Tracker project: its root is not a TrackerPanel object".into(),
-        ));
+        return Err(err(DataProblem::NotTracker));
     }
     let (start_frame, start_time, dt) = timing(root).map_err(err)?;
     let tracks = point_masses(root).map_err(err)?;
@@ -189,9 +183,9 @@ pub(super) fn read(text: &str, file: &str, reading: &Reading) -> Result<(Track, 
         .map(|p| p.name.clone())
         .collect();
     if names.is_empty() {
-        return Err(err("the project has no point-mass track with marked frames: mark the ball's centre in Tracker (a point mass) and save".into()));
+        return Err(err(DataProblem::NoPointMass));
     }
-    let (centre, mark) = pick_roles(&names, reading).map_err(err)?;
+    let (centre, mark) = pick_roles(&names, reading).map_err(|e| err(e.into()))?;
     let coords = coords(root);
     let (factor, length) = length_unit(root, &coords, reading).map_err(err)?;
     let points = |name: &str| {
@@ -234,7 +228,7 @@ pub(super) fn read(text: &str, file: &str, reading: &Reading) -> Result<(Track, 
         time: (1.0, Some("the project")),
         length: (factor.si, Some(factor.by)),
     };
-    check_track(&track, &given).map_err(|e| err(e.to_string()))?;
+    check_track(&track, &given).map_err(|e| err(e.into()))?;
     let notes = Notes {
         format: FORMAT.into(),
         tracks: names,
@@ -298,7 +292,7 @@ fn length_unit(
     root: Node<'_, '_>,
     coords: &[(usize, Coords)],
     reading: &Reading,
-) -> Result<(Factor, UnitNote), String> {
+) -> Result<(Factor, UnitNote), DataProblem> {
     let calibrated = coords.iter().any(|(_, c)| c.scale != (1.0, 1.0));
     if let Some(px) = reading.scale {
         let f = Factor {
@@ -328,16 +322,15 @@ fn length_unit(
         ));
     }
     if !calibrated {
-        return Err("the video was not calibrated (the project's scale is 1 pixel per unit): its positions are pixels; calibrate it in Tracker (a calibration stick or tape of known length) and save, or give the length one pixel shows with --scale (e.g. --scale 1.105mm)".into());
+        return Err(DataProblem::Uncalibrated);
     }
     let named = prop(root, "length_unit")
         .and_then(|n| n.text())
         .map(str::trim);
     let si = match named {
         None | Some("") => 1.0,
-        Some(u) => super::table::file_unit(u, Dimension::Length).map_err(|_| {
-            format!("the project's length unit '{u}' is not one groovelab reads (m, cm, mm): give the unit of its numbers with --length-unit (e.g. --length-unit m)")
-        })?,
+        Some(u) => super::table::file_unit(u, Dimension::Length)
+            .map_err(|_| DataProblem::ProjectUnit { unit: u.into() })?,
     };
     let (_, c) = coords[0];
     let how = format!(

@@ -5,7 +5,10 @@
 
 use super::misfit::Units;
 use super::notes::Notes;
-use super::options::{DataError, MAX_ROWS, Reading};
+use super::options::{MAX_ROWS, Reading};
+use super::problem::{
+    DataError, DataProblem, FRAMES_BEFORE, ImpactOutside, RowError, TooFewBefore,
+};
 use super::table::{Table, clean, number, unit_factor};
 use crate::settings::units::Dimension;
 use crate::study::measured::Measured;
@@ -62,14 +65,9 @@ fn columns(
     file: &str,
     reading: &Reading,
 ) -> Result<(VelocityColumns, Units), DataError> {
-    let err = |what: String| DataError {
-        file: file.to_string(),
-        what,
-    };
+    let err = |what: DataProblem| DataError::new(file, what);
     let mut rows = table.rows();
-    let header = rows
-        .next()
-        .ok_or_else(|| err("the file is empty, expected a header with t, v_cm and v_t".into()))?;
+    let header = rows.next().ok_or_else(|| err(DataProblem::Empty))?;
     let find = |want: &str| {
         (0..header.len()).find_map(|i| {
             column(header.cell(i))
@@ -77,13 +75,14 @@ fn columns(
                 .map(|(_, f)| (i, f))
         })
     };
-    let missing = |name: &str| {
-        let cells: Vec<&str> = (0..header.len()).map(|i| header.cell(i)).collect();
-        err(format!(
-            "line {}: no column '{name}' in the header '{}', expected columns t, v_cm and v_t (units in brackets or as options)",
-            header.line,
-            cells.join(" ")
-        ))
+    let missing = |name: &'static str| {
+        err(DataProblem::NoColumn {
+            line: header.line,
+            name,
+            header: (0..header.len())
+                .map(|i| header.cell(i).to_string())
+                .collect(),
+        })
     };
     let (it, ft) = find("t").ok_or_else(|| missing("t"))?;
     let (ic, fc) = find("v_cm").ok_or_else(|| missing("v_cm"))?;
@@ -92,35 +91,35 @@ fn columns(
     let (mut t, mut v_cm, mut v_t) = (Vec::new(), Vec::new(), Vec::new());
     for row in rows {
         if t.len() == MAX_ROWS {
-            return Err(err(format!(
-                "line {}: more than {MAX_ROWS} data rows, allowed at most {MAX_ROWS}",
-                row.line
-            )));
+            return Err(err(RowError::TooMany { line: row.line }.into()));
         }
-        let get = |i: usize, name: &str| {
+        let get = |i: usize, name: &'static str| {
             let cell = row.cell(i);
             number(cell).ok_or_else(|| {
-                err(format!(
-                    "line {}: {name} = '{cell}' is not a finite number",
-                    row.line
-                ))
+                err(DataProblem::NotANumber {
+                    line: row.line,
+                    name,
+                    cell: cell.to_string(),
+                })
             })
         };
         let time = get(it, "t")? * units.time.0;
         if let Some(&prev) = t.last()
             && time <= prev
         {
-            return Err(err(format!(
-                "line {}: t = {time} s does not increase (previous {prev} s), allowed strictly increasing times",
-                row.line
-            )));
+            return Err(err(RowError::NotIncreasing {
+                line: row.line,
+                time,
+                prev,
+            }
+            .into()));
         }
         t.push(time);
         v_cm.push(get(ic, "v_cm")? * units.v_cm.0);
         v_t.push(get(iv, "v_t")? * units.v_t.0);
     }
     if t.len() < 3 {
-        return Err(err(format!("{} data rows, allowed at least 3", t.len())));
+        return Err(err(DataProblem::TooFewRows { rows: t.len() }));
     }
     Ok(((t, v_cm, v_t), units))
 }
@@ -135,10 +134,7 @@ pub(super) fn without_impact(
     let ((t, v_cm, v_t), units) = columns(table, file, reading)?;
     units
         .check_plausible(&t, &v_cm, &v_t)
-        .map_err(|e| DataError {
-            file: file.to_string(),
-            what: e.to_string(),
-        })?;
+        .map_err(|e| DataError::new(file, e))?;
     let notes = Notes {
         format: "table (t, v_cm, v_t)".into(),
         tracks: Vec::new(),
@@ -154,23 +150,18 @@ pub(super) fn read_table(
     file: &str,
     reading: &Reading,
 ) -> Result<(Measured, Notes), DataError> {
-    let err = |what: String| DataError {
-        file: file.to_string(),
-        what,
-    };
+    let err = |what: DataProblem| DataError::new(file, what);
     let ((mut t, mut v_cm, mut v_t), units) = columns(table, file, reading)?;
     if let Some(at) = reading.impact_at
         && !(t[0]..=t[t.len() - 1]).contains(&at)
     {
         let (first, last) = (t[0], t[t.len() - 1]);
-        return Err(err(ImpactOutside { at, first, last }.to_string()));
+        return Err(err(ImpactOutside { at, first, last }.into()));
     }
     let mirrored = turn_if_reversed(&t, &mut v_cm, &mut v_t, reading.impact_at);
     let impact = match reading.impact_at {
         Some(at) => at,
-        None => detect_impact(&t, &v_cm).ok_or_else(|| {
-            err("no impact found (v_cm never drops sharply); give its time with --impact-at".into())
-        })?,
+        None => detect_impact(&t, &v_cm).ok_or_else(|| err(DataProblem::NoImpact))?,
     };
     for x in &mut t {
         *x -= impact;
@@ -178,21 +169,18 @@ pub(super) fn read_table(
     // Huge but finite values can still overflow once scaled or shifted.
     for (name, series) in [("t", &t), ("v_cm", &v_cm), ("v_t", &v_t)] {
         if let Some(i) = series.iter().position(|v| !v.is_finite()) {
-            return Err(err(format!(
-                "data row {}: {name} is not finite once in SI units with the impact at t = 0, allowed finite values",
-                i + 1
-            )));
+            return Err(err(DataProblem::NotFiniteInSi { row: i + 1, name }));
         }
     }
-    approach_seen(&t, impact).map_err(|e| err(e.to_string()))?;
+    approach_seen(&t, impact).map_err(|e| err(e.into()))?;
     let m = Measured {
         mirrored,
         ..Measured::velocities(t, v_cm, v_t)
     };
-    m.check_magnitudes().map_err(|e| err(e.to_string()))?;
+    m.check_magnitudes().map_err(|e| err(e.into()))?;
     units
         .check_plausible(&m.t, &m.v_cm, &m.v_t)
-        .map_err(|e| err(e.to_string()))?;
+        .map_err(|e| err(e.into()))?;
     let notes = Notes {
         format: "table (t, v_cm, v_t)".into(),
         tracks: Vec::new(),
@@ -241,37 +229,6 @@ fn approach_seen(t: &[f64], impact: f64) -> Result<(), TooFewBefore> {
     }
     Err(TooFewBefore { before, impact })
 }
-
-/// A velocity file with fewer than [`FRAMES_BEFORE`] frames up to its first impact
-/// (`impact`: its time in the file's time, s).
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-#[error(
-    "only {before} frame{} before the impact at t = {} s, at least {FRAMES_BEFORE} needed to see the approach (start the recording before the balls meet)",
-    if *before == 1 { "" } else { "s" },
-    crate::settings::units::significant(*impact, 4)
-)]
-pub struct TooFewBefore {
-    pub before: usize,
-    pub impact: f64,
-}
-
-/// `--impact-at` outside a velocity file's times (s).
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-#[error(
-    "--impact-at {} lies outside the file's times, t = {} … {} s: allowed a time within them",
-    crate::settings::units::show_exact(*at, crate::settings::units::Dimension::Time),
-    crate::settings::units::significant(*first, 6),
-    crate::settings::units::significant(*last, 6)
-)]
-pub struct ImpactOutside {
-    pub at: f64,
-    pub first: f64,
-    pub last: f64,
-}
-
-/// Fewest frames up to the first impact (a frame at it counts) a velocity file needs:
-/// the approach must be seen, not only guessed from one frame.
-const FRAMES_BEFORE: usize = 2;
 
 /// The first impact: where v_cm drops the most between neighbouring frames (the left
 /// ball reverses), if the drop is at least a third of the speed before it. When the

@@ -9,21 +9,32 @@ use roxmltree::{Document, Node, ParsingOptions};
 /// about 1.5 million; each node costs roughly a hundred bytes.
 const MAX_NODES: u32 = 4_000_000;
 
-/// The text of a video tool's XML file as a tree, or why it is not one (one line).
-pub(super) fn parse<'i>(text: &'i str, what: &str) -> Result<Document<'i>, String> {
+/// Why a video tool's XML file (`what`: "Tracker project", "Logger Pro file") is not
+/// one.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum XmlError {
+    #[error("not a {what}: it declares a DTD (entities), which {what}s never have; refused unread")]
+    Dtd { what: &'static str },
+    #[error("not a {what}: more than {MAX_NODES} XML nodes, far beyond any real recording")]
+    TooManyNodes { what: &'static str },
+    #[error("not a readable {what}: {error}")]
+    Unreadable {
+        what: &'static str,
+        error: roxmltree::Error,
+    },
+}
+
+/// The text of a video tool's XML file as a tree, or why it is not one.
+pub(super) fn parse<'i>(text: &'i str, what: &'static str) -> Result<Document<'i>, XmlError> {
     let options = ParsingOptions {
         allow_dtd: false,
         nodes_limit: MAX_NODES,
         ..ParsingOptions::default()
     };
     Document::parse_with_options(text, options).map_err(|e| match e {
-        roxmltree::Error::DtdDetected => format!(
-            "not a {what}: it declares a DTD (entities), which {what}s never have; refused unread"
-        ),
-        roxmltree::Error::NodesLimitReached => {
-            format!("not a {what}: more than {MAX_NODES} XML nodes, far beyond any real recording")
-        }
-        e => format!("not a readable {what}: {e}"),
+        roxmltree::Error::DtdDetected => XmlError::Dtd { what },
+        roxmltree::Error::NodesLimitReached => XmlError::TooManyNodes { what },
+        error => XmlError::Unreadable { what, error },
     })
 }
 

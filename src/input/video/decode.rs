@@ -8,13 +8,14 @@ use std::path::Path;
 use std::process::{Child, ChildStdout, Command, Stdio};
 use std::thread::JoinHandle;
 
-use super::info::{Frames, INSTALL_FFMPEG, Info, VideoError};
+use super::info::{Frames, Info};
 use super::probe::url;
+use super::problem::{VideoError, VideoProblem};
 use crate::study::vision::Gray;
 
 /// The frames of the video at `path` (as `info` describes it).
 pub(super) fn frames(path: &Path, info: &Info) -> Result<Frames, VideoError> {
-    let file = path.display().to_string();
+    let file = path.to_path_buf();
     let mut child = Command::new("ffmpeg")
         .args(["-v", "error", "-nostdin", "-i"])
         .arg(url(path))
@@ -25,13 +26,7 @@ pub(super) fn frames(path: &Path, info: &Info) -> Result<Frames, VideoError> {
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
-        .map_err(|e| VideoError {
-            file: file.clone(),
-            what: match e.kind() {
-                std::io::ErrorKind::NotFound => INSTALL_FFMPEG.into(),
-                _ => format!("cannot run ffmpeg: {e}"),
-            },
-        })?;
+        .map_err(|e| VideoError::new(path, VideoProblem::cannot_run("ffmpeg", e)))?;
     let stdout = child.stdout.take().expect("piped");
     let mut stderr = child.stderr.take().expect("piped");
     let messages = std::thread::spawn(move || {
@@ -54,7 +49,7 @@ pub(super) fn frames(path: &Path, info: &Info) -> Result<Frames, VideoError> {
 }
 
 struct Stream {
-    file: String,
+    file: std::path::PathBuf,
     child: Option<Child>,
     stdout: std::io::BufReader<ChildStdout>,
     messages: Option<JoinHandle<String>>,
@@ -78,18 +73,18 @@ impl Stream {
             .lines()
             .rev()
             .find(|l| !l.trim().is_empty())
-            .map(|l| format!(": ffmpeg says '{}'", l.trim()))
-            .unwrap_or_default();
+            .map(|l| l.trim().to_string());
         let failed = status.is_none_or(|s| !s.success());
         let short = self.expected > 0 && self.next * 10 < self.expected * 9;
         if (failed && self.next == 0) || short {
-            return Some(VideoError {
-                file: self.file.clone(),
-                what: format!(
-                    "only {} of {} frames could be decoded: the file is truncated or damaged{said}",
-                    self.next, self.expected
-                ),
-            });
+            return Some(VideoError::new(
+                &self.file,
+                VideoProblem::Undecodable {
+                    decoded: self.next,
+                    expected: self.expected,
+                    ffmpeg_says: said,
+                },
+            ));
         }
         None
     }

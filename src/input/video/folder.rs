@@ -5,7 +5,8 @@
 
 use std::path::{Path, PathBuf};
 
-use super::info::{Frames, Info, Limits, VideoError};
+use super::info::{Frames, Info, Limits};
+use super::problem::{VideoError, VideoProblem};
 use crate::study::vision::Gray;
 
 /// True for a file named as a PNG or JPEG image.
@@ -27,52 +28,42 @@ fn number(path: &Path) -> Option<u64> {
 
 /// Opens the folder `dir`.
 pub(super) fn open(dir: &Path, limits: &Limits) -> Result<(Info, Frames), VideoError> {
-    let file = dir.display().to_string();
-    let err = |what: String| VideoError {
-        file: file.clone(),
-        what,
-    };
-    let entries =
-        std::fs::read_dir(dir).map_err(|e| err(format!("cannot read the folder: {e}")))?;
+    let err = |what: VideoProblem| VideoError::new(dir, what);
+    let entries = std::fs::read_dir(dir).map_err(|e| err(VideoProblem::Folder(e)))?;
     let mut frames: Vec<(u64, PathBuf)> = Vec::new();
     for e in entries.flatten() {
         let p = e.path();
         if p.is_file() && is_image(&p) {
             let Some(n) = number(&p) else {
-                return Err(err(format!(
-                    "{} has no frame number in its name, expected numbered frames (frame0001.png, …)",
-                    p.display()
-                )));
+                return Err(err(VideoProblem::NoFrameNumber { frame: p }));
             };
             frames.push((n, p));
         }
     }
     frames.sort();
     if let Some(w) = frames.windows(2).find(|w| w[0].0 == w[1].0) {
-        return Err(err(format!(
-            "{} and {} have the same frame number {}",
-            w[0].1.display(),
-            w[1].1.display(),
-            w[0].0
-        )));
+        return Err(err(VideoProblem::SameFrameNumber {
+            first: w[0].1.clone(),
+            second: w[1].1.clone(),
+            number: w[0].0,
+        }));
     }
     if frames.len() < 2 {
-        return Err(err(format!(
-            "holds {} PNG/JPEG frame{}, expected a folder of numbered frames (at least two)",
-            frames.len(),
-            if frames.len() == 1 { "" } else { "s" }
-        )));
+        return Err(err(VideoProblem::TooFewImages {
+            frames: frames.len(),
+        }));
     }
     let first = read(&frames[0].1)?;
     let (w, h) = (first.width, first.height);
     let pixels = (w * h) as f64 * frames.len() as f64;
     if pixels > limits.pixels || w > limits.side || h > limits.side {
-        return Err(err(format!(
-            "{} frames of {w}×{h} pixels is too much to track, allowed at most {:.0e} pixels and {} px a side",
-            frames.len(),
-            limits.pixels,
-            limits.side
-        )));
+        return Err(err(VideoProblem::FolderTooLarge {
+            frames: frames.len(),
+            width: w,
+            height: h,
+            max_pixels: limits.pixels,
+            max_side: limits.side,
+        }));
     }
     let gaps = frames
         .windows(2)
@@ -91,10 +82,13 @@ pub(super) fn open(dir: &Path, limits: &Limits) -> Result<(Info, Frames), VideoE
     let iter = frames.into_iter().map(move |(n, p)| {
         let g = read(&p)?;
         if (g.width, g.height) != (w, h) {
-            return Err(VideoError {
-                file: p.display().to_string(),
-                what: format!("is {}×{}, the first frame {w}×{h}", g.width, g.height),
-            });
+            return Err(VideoError::new(
+                &p,
+                VideoProblem::FrameSize {
+                    size: (g.width, g.height),
+                    first: (w, h),
+                },
+            ));
         }
         Ok((n, g))
     });
@@ -103,10 +97,7 @@ pub(super) fn open(dir: &Path, limits: &Limits) -> Result<(Info, Frames), VideoE
 
 /// One frame's luma.
 fn read(path: &Path) -> Result<Gray, VideoError> {
-    let img = image::open(path).map_err(|e| VideoError {
-        file: path.display().to_string(),
-        what: format!("cannot read the image: {e}"),
-    })?;
+    let img = image::open(path).map_err(|e| VideoError::new(path, VideoProblem::ReadImage(e)))?;
     let g = img.to_luma8();
     Ok(Gray {
         width: g.width() as usize,

@@ -1,18 +1,9 @@
-//! What a video or a folder of frames is, before its frames are read, and why one
-//! cannot be read: the types the readers share.
+//! What a video or a folder of frames is, before its frames are read: the types the
+//! readers share (why one cannot be read is `problem`'s).
 
 use crate::study::vision::Gray;
 
-/// Why a video or folder cannot be read: `{file}: {what}`.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-#[error("{file}: {what}")]
-pub struct VideoError {
-    pub file: String,
-    pub what: String,
-}
-
-/// The install hint when ffmpeg or ffprobe is missing.
-pub const INSTALL_FFMPEG: &str = "reading a video needs ffmpeg and ffprobe, which are not installed (Debian/Ubuntu: apt-get install ffmpeg; macOS: brew install ffmpeg); a folder of numbered PNG/JPEG frames needs neither";
+use super::problem::VideoError;
 
 /// Where the frame rate comes from.
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]

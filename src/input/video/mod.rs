@@ -12,13 +12,15 @@ mod decode;
 mod folder;
 mod info;
 mod probe;
+mod problem;
 pub mod tracked;
 pub mod write;
 
 use std::path::Path;
 
-pub use info::{Frames, INSTALL_FFMPEG, Info, Limits, RateSource, VideoError};
+pub use info::{Frames, Info, Limits, RateSource};
 pub use probe::Probe;
+pub use problem::{INSTALL_FFMPEG, VideoError, VideoProblem};
 
 /// Opens `path`: a folder of numbered frames, or a video through ffprobe and ffmpeg.
 /// Refuses what is no video (empty, an image, audio, unreadable) and what is too
@@ -47,32 +49,23 @@ enum Opened {
 }
 
 fn checked(path: &Path, limits: &Limits) -> Result<Opened, VideoError> {
-    let file = path.display().to_string();
-    let err = |what: String| VideoError {
-        file: file.clone(),
-        what,
-    };
-    let meta = std::fs::metadata(path).map_err(|e| err(format!("cannot open: {e}")))?;
+    let err = |what: VideoProblem| VideoError::new(path, what);
+    let meta = std::fs::metadata(path).map_err(|e| err(VideoProblem::Open(e)))?;
     if meta.is_dir() {
         let (info, frames) = folder::open(path, limits)?;
         return Ok(Opened::Folder(info, frames));
     }
     if !meta.is_file() {
-        return Err(err(
-            "is not a regular file, expected a video or a folder of frames".into(),
-        ));
+        return Err(err(VideoProblem::NotRegular));
     }
     if meta.len() == 0 {
-        return Err(err("is empty (0 bytes), expected a video".into()));
+        return Err(err(VideoProblem::Empty));
     }
     if folder::is_image(path) {
-        return Err(err(
-            "is a still image, not a video; give a video, or a folder of numbered frames (frame0001.png, …)"
-                .into(),
-        ));
+        return Err(err(VideoProblem::StillImage));
     }
     let probe = probe::probe(path)?;
-    Ok(Opened::Video(probe.info(&file, limits)?))
+    Ok(Opened::Video(probe.info(path, limits)?))
 }
 
 /// True when `path` holds numbered PNG/JPEG frames (a folder `open` reads; any

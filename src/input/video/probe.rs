@@ -9,7 +9,8 @@ use std::process::Command;
 
 use serde_json::Value;
 
-use super::info::{INSTALL_FFMPEG, Info, Limits, VideoError};
+use super::info::{Info, Limits};
+use super::problem::{VideoError, VideoProblem};
 
 /// ffprobe's answer for a file.
 #[derive(Clone, Debug, PartialEq)]
@@ -19,11 +20,7 @@ pub struct Probe {
 
 /// Runs ffprobe on `path`.
 pub fn probe(path: &Path) -> Result<Probe, VideoError> {
-    let file = path.display().to_string();
-    let err = |what: String| VideoError {
-        file: file.clone(),
-        what,
-    };
+    let err = |what: VideoProblem| VideoError::new(path, what);
     let out = Command::new("ffprobe")
         .args([
             "-v",
@@ -36,10 +33,7 @@ pub fn probe(path: &Path) -> Result<Probe, VideoError> {
         .arg(url(path))
         .stdin(std::process::Stdio::null())
         .output()
-        .map_err(|e| match e.kind() {
-            std::io::ErrorKind::NotFound => err(INSTALL_FFMPEG.into()),
-            _ => err(format!("cannot run ffprobe: {e}")),
-        })?;
+        .map_err(|e| err(VideoProblem::cannot_run("ffprobe", e)))?;
     let json: Option<Value> = serde_json::from_slice(&out.stdout).ok();
     let has_format = json.as_ref().is_some_and(|j| j.get("format").is_some());
     if !out.status.success() || !has_format {
@@ -50,17 +44,12 @@ pub fn probe(path: &Path) -> Result<Probe, VideoError> {
             .find(|l| !l.trim().is_empty())
             .unwrap_or("")
             .trim();
-        return Err(err(format!(
-            "is not a video ffmpeg can read (corrupt, truncated or another kind of file){}",
-            if why.is_empty() {
-                String::new()
-            } else {
-                format!(
-                    ": ffprobe says '{}'",
-                    why.trim_start_matches(&format!("{}: ", path.display()))
-                )
-            }
-        )));
+        return Err(err(VideoProblem::Unreadable {
+            ffprobe_says: (!why.is_empty()).then(|| {
+                why.trim_start_matches(&format!("{}: ", path.display()))
+                    .to_string()
+            }),
+        }));
     }
     Ok(Probe {
         json: json.unwrap_or(Value::Null),
@@ -85,11 +74,8 @@ fn rate(text: &str) -> Option<f64> {
 
 impl Probe {
     /// What the file holds, refused when it is no video or too large for `limits`.
-    pub fn info(&self, file: &str, limits: &Limits) -> Result<Info, VideoError> {
-        let err = |what: String| VideoError {
-            file: file.to_string(),
-            what,
-        };
+    pub fn info(&self, file: &Path, limits: &Limits) -> Result<Info, VideoError> {
+        let err = |what: VideoProblem| VideoError::new(file, what);
         let streams = self.json["streams"].as_array().cloned().unwrap_or_default();
         let format = &self.json["format"];
         let format_name = format["format_name"].as_str().unwrap_or("?");
@@ -100,11 +86,10 @@ impl Probe {
         else {
             let audio = streams.iter().find(|s| s["codec_type"] == "audio");
             return Err(err(match audio {
-                Some(a) => format!(
-                    "has no video, only audio ({}), expected a video",
-                    a["codec_name"].as_str().unwrap_or("?")
-                ),
-                None => "has no video stream, expected a video".into(),
+                Some(a) => VideoProblem::OnlyAudio {
+                    codec: a["codec_name"].as_str().unwrap_or("?").to_string(),
+                },
+                None => VideoProblem::NoVideoStream,
             }));
         };
         let codec = v["codec_name"].as_str().unwrap_or("?");
@@ -113,9 +98,9 @@ impl Probe {
             || format_name.ends_with("_pipe")
             || (frames_said == Some(1));
         if still {
-            return Err(err(format!(
-                "is a still image ({codec}), not a video; give a video, or a folder of numbered frames"
-            )));
+            return Err(err(VideoProblem::StillVideo {
+                codec: codec.to_string(),
+            }));
         }
         let (mut w, mut h) = (
             v["width"].as_u64().unwrap_or(0) as usize,
@@ -125,10 +110,11 @@ impl Probe {
             std::mem::swap(&mut w, &mut h);
         }
         if w < 16 || h < 16 || w > limits.side || h > limits.side {
-            return Err(err(format!(
-                "frames of {w}×{h} pixels, allowed 16 to {} on each side",
-                limits.side
-            )));
+            return Err(err(VideoProblem::FrameSide {
+                width: w,
+                height: h,
+                max_side: limits.side,
+            }));
         }
         let container_fps = v["r_frame_rate"]
             .as_str()
@@ -144,11 +130,13 @@ impl Probe {
             .unwrap_or(0);
         let pixels = (w * h) as f64 * frames as f64;
         if pixels > limits.pixels {
-            return Err(err(format!(
-                "{w}×{h} pixels × {frames} frames{} is too much video to track, allowed at most {:.0e} pixels (about 100 s of 1080p at 240 frames/s); cut the clip to the collision first, e.g. ffmpeg -ss START -t 5 -i VIDEO -c copy clip.mp4",
-                duration.map(|d| format!(" ({d:.0} s)")).unwrap_or_default(),
-                limits.pixels
-            )));
+            return Err(err(VideoProblem::TooMuchVideo {
+                width: w,
+                height: h,
+                frames,
+                duration,
+                max_pixels: limits.pixels,
+            }));
         }
         Ok(Info {
             kind: format!("video ({codec}, {format_name})"),
@@ -199,7 +187,7 @@ mod tests {
         Probe {
             json: serde_json::from_str(json).unwrap(),
         }
-        .info("v.mp4", &Limits::default())
+        .info(Path::new("v.mp4"), &Limits::default())
     }
 
     #[test]
@@ -220,8 +208,9 @@ mod tests {
         let i = info(r#"{"format":{"format_name":"mov,mp4"},"streams":[{"codec_type":"video","codec_name":"h264","width":1920,"height":1080,"r_frame_rate":"30/1","nb_frames":"10","side_data_list":[{"rotation":-90}]}]}"#).unwrap();
         assert_eq!((i.width, i.height), (1080, 1920));
         let e = info(r#"{"format":{"format_name":"mov,mp4","duration":"3600"},"streams":[{"codec_type":"video","codec_name":"hevc","width":3840,"height":2160,"r_frame_rate":"30/1"}]}"#).unwrap_err();
-        assert!(e.what.contains("too much video"), "{e}");
+        assert!(matches!(e.what, VideoProblem::TooMuchVideo { .. }), "{e}");
+        assert!(e.to_string().contains("too much video"), "{e}");
         let e = info(r#"{"format":{"format_name":"mp3"},"streams":[{"codec_type":"audio","codec_name":"mp3"}]}"#).unwrap_err();
-        assert!(e.what.contains("only audio (mp3)"), "{e}");
+        assert!(e.to_string().contains("only audio (mp3)"), "{e}");
     }
 }

@@ -4,7 +4,7 @@
 //! groove, and what was found said in lines for people (the file's comment lines,
 //! the JSON's notes). Progress and a stop request go through a `Progress`.
 
-use super::{Info, Limits, RateSource, VideoError};
+use super::{Info, Limits, RateSource, VideoError, VideoProblem};
 use crate::settings::units::{Dimension, show, show_small, with_uncertainty};
 use crate::study::Progress;
 use crate::study::vision::thumbs::{Thumbs, VideoView};
@@ -23,10 +23,6 @@ pub struct Options {
     pub radius_from: String,
     pub cache: Option<std::path::PathBuf>,
 }
-
-/// Said when a folder of frames is given without `--fps`.
-pub const NO_RATE: &str =
-    "a folder of frames says no frame rate; give it with --fps (e.g. --fps 240)";
 
 /// A video tracked: what it is, the rate used and why, the tracks, the notes, and
 /// the pictures the app draws.
@@ -54,13 +50,10 @@ pub fn track(
     progress: &dyn Progress,
 ) -> Result<Option<Tracked>, VideoError> {
     let file = video.display().to_string();
-    let err = |what: String| VideoError {
-        file: file.clone(),
-        what,
-    };
+    let err = |what: VideoProblem| VideoError::new(video, what);
     let (info, frames) = super::open(video, &Limits::default())?;
     let Some((fps, source)) = info.rate(options.fps) else {
-        return Err(err(NO_RATE.into()));
+        return Err(err(VideoProblem::NoRate));
     };
     let mut tracker = Tracker::new(8.0);
     let mut thumbs = Thumbs::sized(info.width, info.height, info.frames);
@@ -76,15 +69,14 @@ pub fn track(
         progress.tick(i as u64 + 1, info.frames.max(i as u64 + 1));
     }
     if numbers.len() < 2 {
-        return Err(err(format!(
-            "holds {} frame(s), expected a video",
-            numbers.len()
-        )));
+        return Err(err(VideoProblem::TooFewFrames {
+            frames: numbers.len(),
+        }));
     }
     let first = numbers[0];
     let times = numbers.iter().map(|n| (n - first) as f64 / fps).collect();
     let tracks = vision::tracks(&tracker, times, options.radius, options.px_per_m)
-        .map_err(|e| err(e.to_string()))?;
+        .map_err(|e| err(e.into()))?;
     let notes = notes(&file, &info, fps, &source, &tracks, &options.radius_from);
     let view = VideoView::new(thumbs, &tracks);
     Ok(Some(Tracked {

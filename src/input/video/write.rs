@@ -6,7 +6,7 @@ use std::io::Write;
 use std::path::Path;
 use std::process::{Command, Stdio};
 
-use super::info::{INSTALL_FFMPEG, VideoError};
+use super::problem::{VideoError, VideoProblem};
 
 /// Writes one RGB frame (`width × height × 3` bytes) as a PNG file.
 pub fn png(path: &Path, rgb: &[u8], width: usize, height: usize) -> Result<(), VideoError> {
@@ -17,10 +17,7 @@ pub fn png(path: &Path, rgb: &[u8], width: usize, height: usize) -> Result<(), V
         height as u32,
         image::ExtendedColorType::Rgb8,
     )
-    .map_err(|e| VideoError {
-        file: path.display().to_string(),
-        what: format!("cannot write the image: {e}"),
-    })
+    .map_err(|e| VideoError::new(path, VideoProblem::WriteImage(e)))
 }
 
 /// How a video is encoded.
@@ -43,10 +40,7 @@ pub fn video(
     enc: &Encoding,
     frames: impl Iterator<Item = Vec<u8>>,
 ) -> Result<(), VideoError> {
-    let err = |what: String| VideoError {
-        file: path.display().to_string(),
-        what,
-    };
+    let err = |what: VideoProblem| VideoError::new(path, what);
     let mut cmd = Command::new("ffmpeg");
     cmd.args([
         "-v", "error", "-y", "-f", "rawvideo", "-pix_fmt", "rgb24", "-s",
@@ -69,10 +63,7 @@ pub fn video(
         .stdout(Stdio::null())
         .stderr(Stdio::piped())
         .spawn()
-        .map_err(|e| match e.kind() {
-            std::io::ErrorKind::NotFound => err(INSTALL_FFMPEG.into()),
-            _ => err(format!("cannot run ffmpeg: {e}")),
-        })?;
+        .map_err(|e| err(VideoProblem::cannot_run("ffmpeg", e)))?;
     let mut stdin = child.stdin.take().expect("piped");
     let mut broken = None;
     for f in frames {
@@ -84,12 +75,11 @@ pub fn video(
     drop(stdin);
     let out = child
         .wait_with_output()
-        .map_err(|e| err(format!("ffmpeg: {e}")))?;
+        .map_err(|e| err(VideoProblem::Ffmpeg(e)))?;
     if !out.status.success() || broken.is_some() {
-        return Err(err(format!(
-            "ffmpeg could not encode: {}",
-            String::from_utf8_lossy(&out.stderr).trim()
-        )));
+        return Err(err(VideoProblem::Encode {
+            ffmpeg_says: String::from_utf8_lossy(&out.stderr).trim().to_string(),
+        }));
     }
     Ok(())
 }

@@ -8,6 +8,7 @@ use crate::physics::scene::{Scene, Span};
 use crate::physics::solution::LATEST_END;
 use crate::settings::units::Dimension;
 
+/// A physical range, SI, and its text for messages and `--help`.
 const fn range(lo: f64, hi: f64, lo_open: bool, text: &'static str) -> Range {
     Range {
         lo,
@@ -17,21 +18,18 @@ const fn range(lo: f64, hi: f64, lo_open: bool, text: &'static str) -> Range {
     }
 }
 
+/// A row of the app's parameter panel, stepped by `fine` (←/→) and `coarse`
+/// (Shift+←/→), SI.
+const fn steps(fine: f64, coarse: f64) -> Option<Steps> {
+    Some(Steps { fine, coarse })
+}
+
 const MASS: Range = range(1e-6, 1000.0, false, "1 mg ≤ m ≤ 1000 kg");
 const SPEED: Range = range(-100.0, 100.0, false, "-100 m/s ≤ v0 ≤ 100 m/s");
-const MASS_STEPS: Option<Steps> = Some(Steps {
-    fine: 0.001,
-    coarse: 0.01,
-});
+const MASS_STEPS: Option<Steps> = steps(0.001, 0.01);
 const HEIGHT: Range = range(0.0, 500.0, false, "0 ≤ h ≤ 500 m");
-const HEIGHT_STEPS: Option<Steps> = Some(Steps {
-    fine: 0.002,
-    coarse: 0.02,
-});
-const SPEED_STEPS: Option<Steps> = Some(Steps {
-    fine: 0.01,
-    coarse: 0.1,
-});
+const HEIGHT_STEPS: Option<Steps> = steps(0.002, 0.02);
+const SPEED_STEPS: Option<Steps> = steps(0.01, 0.1);
 
 /// Every scene parameter, in the order of `--help`, preset files and the app's panel
 /// (an array, so `&PARAMS` iterates; its length is counted from [`ROWS`]).
@@ -56,10 +54,7 @@ const ROWS: &[Param] = &[
         dim: Dimension::Length,
         range: range(1e-4, 10.0, false, "0.1 mm ≤ R ≤ 10 m"),
         sets: &[Key::Radius],
-        steps: Some(Steps {
-            fine: 0.0005,
-            coarse: 0.005,
-        }),
+        steps: steps(0.0005, 0.005),
         help: "Ball radius R (e.g. 2.75cm)",
         default: Fallback::Required,
         replaces: None,
@@ -76,10 +71,7 @@ const ROWS: &[Param] = &[
         // The upper end, 2R, depends on R: checked in `resolve`.
         range: range(0.0, 20.0, false, "0 ≤ b < 2R"),
         sets: &[Key::Width],
-        steps: Some(Steps {
-            fine: 0.0005,
-            coarse: 0.005,
-        }),
+        steps: steps(0.0005, 0.005),
         help: "Groove width b, 0 ≤ b < 2R (e.g. 4.9cm)",
         default: Fallback::Required,
         replaces: None,
@@ -143,10 +135,7 @@ const ROWS: &[Param] = &[
         dim: Dimension::Ratio,
         range: range(0.0, 10.0, false, "0 ≤ μ_k ≤ 10"),
         sets: &[Key::Mu],
-        steps: Some(Steps {
-            fine: 0.01,
-            coarse: 0.05,
-        }),
+        steps: steps(0.01, 0.05),
         help: "Kinetic friction coefficient μ_k, 0 ≤ μ_k ≤ 10",
         default: Fallback::Required,
         replaces: None,
@@ -263,10 +252,7 @@ const ROWS: &[Param] = &[
         dim: Dimension::Ratio,
         range: range(0.0, 1.0, false, "0 ≤ e ≤ 1"),
         sets: &[Key::Restitution],
-        steps: Some(Steps {
-            fine: 0.01,
-            coarse: 0.1,
-        }),
+        steps: steps(0.01, 0.1),
         help: "Coefficient of restitution e, 0 ≤ e ≤ 1",
         default: Fallback::Value(Scene::DEFAULT.restitution),
         replaces: None,
@@ -282,10 +268,7 @@ const ROWS: &[Param] = &[
         dim: Dimension::Ratio,
         range: range(0.0, 1.0, false, "0 ≤ c_rr ≤ 1"),
         sets: &[Key::RollingResistance],
-        steps: Some(Steps {
-            fine: 0.001,
-            coarse: 0.01,
-        }),
+        steps: steps(0.001, 0.01),
         help: "Rolling-resistance coefficient c_rr, 0 ≤ c_rr ≤ 1",
         default: Fallback::Value(Scene::DEFAULT.rolling_resistance),
         replaces: None,

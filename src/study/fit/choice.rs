@@ -15,7 +15,7 @@ use super::approach::APPROACH_FRAMES;
 use super::least_squares::with;
 use super::model::{ModelFit, Scored, scored_fit, scored_fit_within, thinned};
 use super::problem::{Evals, FitError, Free};
-use super::residuals::{Target, labelled_residuals};
+use super::residuals::{Target, labelled_residuals, residuals};
 use super::uncertainty::{Label, NotIdentified, effective_points};
 use crate::physics::scene::Scene;
 use crate::study::Progress;
@@ -140,14 +140,14 @@ pub fn compare_models(
     m: &Measured,
     progress: &dyn Progress,
 ) -> Result<Vec<Candidate>, FitError> {
-    compare_within(scene, m, &Evals::new(progress))
+    compare_within(scene, m, &mut Evals::new(progress))
 }
 
 /// [`compare_models`], counting its work in `evals` (the budget of a whole fit).
 pub(super) fn compare_within(
     scene: &Scene,
     m: &Measured,
-    evals: &Evals,
+    evals: &mut Evals,
 ) -> Result<Vec<Candidate>, FitError> {
     let mut models = candidates_within(scene, m, candidates(m, false), evals)?;
     by_bic(&mut models);
@@ -172,7 +172,7 @@ pub fn compare_candidates(
     candidates: Vec<Vec<Free>>,
     progress: &dyn Progress,
 ) -> Result<Vec<Candidate>, FitError> {
-    candidates_within(scene, m, candidates, &Evals::new(progress))
+    candidates_within(scene, m, candidates, &mut Evals::new(progress))
 }
 
 /// [`compare_candidates`], counting its work in `evals`.
@@ -180,7 +180,7 @@ pub(super) fn candidates_within(
     scene: &Scene,
     m: &Measured,
     candidates: Vec<Vec<Free>>,
-    evals: &Evals,
+    evals: &mut Evals,
 ) -> Result<Vec<Candidate>, FitError> {
     let target = if m.x.is_some() {
         Target::Position
@@ -228,8 +228,8 @@ pub(super) fn candidates_within(
             // model fitted them, whichever fits the common frames best: a larger model
             // must fit them at least as well, and one model fitted from two starts
             // must not land in two minima (one fit per model).
-            let cost_on = |s: &Scene| {
-                let r = labelled_residuals(s, data, &common, target, true, evals).0;
+            let mut cost_on = |s: &Scene| {
+                let r = residuals(s, data, &common, target, evals);
                 r.iter().map(|x| x * x).sum::<f64>()
             };
             let free = fitted[k].0.clone();

@@ -9,15 +9,14 @@ use crate::physics::scene::Scene;
 use crate::study::measured::series::Measured;
 
 /// One fit's problem, which the search and its derivatives take whole: the scene it
-/// starts from, the data, the values it frees, what it compares with the data, and
-/// the counter of its model evaluations.
+/// starts from, the data, the values it frees and what it compares with the data.
+/// The search takes the counter of its model evaluations ([`Evals`]) beside it.
 #[derive(Clone, Copy)]
 pub(super) struct Problem<'a> {
     pub scene: &'a Scene,
     pub m: &'a Measured,
     pub free: &'a [Free],
     pub target: Target,
-    pub evals: &'a Evals<'a>,
 }
 
 impl Problem<'_> {
@@ -27,8 +26,13 @@ impl Problem<'_> {
     }
 
     /// The weighted residuals of the free values `p` at the frames `idx`.
-    pub fn residuals(&self, p: &[f64], idx: &[usize]) -> Vec<f64> {
-        residuals(&self.at(p), self.m, idx, self.target, self.evals)
+    pub fn residuals(&self, p: &[f64], idx: &[usize], evals: &mut Evals) -> Vec<f64> {
+        residuals(&self.at(p), self.m, idx, self.target, evals)
+    }
+
+    /// The sum of the squared weighted residuals of `p` at `idx`.
+    fn cost(&self, p: &[f64], idx: &[usize], evals: &mut Evals) -> f64 {
+        self.residuals(p, idx, evals).iter().map(|r| r * r).sum()
     }
 }
 
@@ -59,13 +63,18 @@ fn mu_grid(n: u32) -> Vec<f64> {
 
 /// The values `p` with the μ (at `i`) of a coarse scan (21 values) that fits best, and
 /// their [`mean_cost`]: to choose among starts of a fit.
-pub(super) fn coarse_mu(pb: &Problem, p: &[f64], i: usize) -> Result<(Vec<f64>, f64), FitError> {
+pub(super) fn coarse_mu(
+    pb: &Problem,
+    evals: &mut Evals,
+    p: &[f64],
+    i: usize,
+) -> Result<(Vec<f64>, f64), FitError> {
     let mut best = (p.to_vec(), f64::INFINITY);
     for mu in mu_grid(20) {
-        pb.evals.next()?;
+        evals.next()?;
         let mut q = p.to_vec();
         q[i] = mu;
-        let cost = mean_cost(&pb.at(&q), pb.m, pb.target, pb.evals);
+        let cost = mean_cost(&pb.at(&q), pb.m, pb.target, evals);
         if cost < best.1 {
             best = (q, cost);
         }
@@ -75,15 +84,20 @@ pub(super) fn coarse_mu(pb: &Problem, p: &[f64], i: usize) -> Result<(Vec<f64>, 
 
 /// The μ that minimises [`mean_cost`]: a log-spaced scan of 0.01 … 1, then golden
 /// section between the neighbours of the best scan point.
-pub(super) fn scan_mu(pb: &Problem, p: &[f64], i: usize) -> Result<f64, FitError> {
+pub(super) fn scan_mu(
+    pb: &Problem,
+    evals: &mut Evals,
+    p: &[f64],
+    i: usize,
+) -> Result<f64, FitError> {
     // On the frames the start leaves (a μ whose later impacts pass more frames would
     // otherwise leave out the ones it fits worst, and look better than it is).
-    let idx = fit_points(pb.m, &pb.at(p), pb.target, pb.evals);
-    let cost = |mu: f64| {
-        pb.evals.next()?;
+    let idx = fit_points(pb.m, &pb.at(p), pb.target, evals);
+    let mut cost = |mu: f64| {
+        evals.next()?;
         let mut q = p.to_vec();
         q[i] = mu;
-        let r = pb.residuals(&q, &idx);
+        let r = pb.residuals(&q, &idx, evals);
         Ok(r.iter().map(|x| x * x).sum::<f64>() / r.len().max(1) as f64)
     };
     let grid = mu_grid(80);
@@ -131,16 +145,25 @@ pub(super) fn normal_matrix(j: &[Vec<f64>]) -> Vec<Vec<f64>> {
         .collect()
 }
 
+/// Where a derivative is taken: the frames `idx`, the free values `p` and their
+/// residuals `r0` there.
+pub(super) struct At<'a> {
+    pub idx: &'a [usize],
+    pub p: &'a [f64],
+    pub r0: &'a [f64],
+}
+
 /// ∂r/∂p by forward differences (backward at the upper bound of e); one row per
 /// parameter.
-pub(super) fn jacobian(pb: &Problem, idx: &[usize], p: &[f64], r0: &[f64]) -> Vec<Vec<f64>> {
+pub(super) fn jacobian(pb: &Problem, evals: &mut Evals, at: &At) -> Vec<Vec<f64>> {
+    let p = at.p;
     (0..p.len())
         .map(|j| {
             let mut h = step(p[j]);
             if pb.free[j] == Free::Restitution && p[j] + h > 1.0 {
                 h = -h;
             }
-            difference(pb, idx, p, r0, (j, h))
+            difference(pb, evals, at, (j, h))
         })
         .collect()
 }
@@ -151,16 +174,11 @@ fn step(v: f64) -> f64 {
 }
 
 /// (r(p + h e_j) − r(p)) / h, for `(j, h)`.
-fn difference(
-    pb: &Problem,
-    idx: &[usize],
-    p: &[f64],
-    r0: &[f64],
-    (j, h): (usize, f64),
-) -> Vec<f64> {
-    let mut q = p.to_vec();
+fn difference(pb: &Problem, evals: &mut Evals, at: &At, (j, h): (usize, f64)) -> Vec<f64> {
+    let r0 = at.r0;
+    let mut q = at.p.to_vec();
     q[j] += h;
-    let r = pb.residuals(&q, idx);
+    let r = pb.residuals(&q, at.idx, evals);
     if r.len() != r0.len() {
         // A point dropped or gained at the step: no derivative to take.
         return vec![0.0; r0.len()];
@@ -174,17 +192,18 @@ fn difference(
 /// passes, a window that starts to hold a corner): a one-sided difference over the
 /// jump is the jump over the step, huge, and would make the ± collapse to nothing.
 /// Where the residual is smooth both differences agree to O(step).
-pub(super) fn smooth_jacobian(pb: &Problem, idx: &[usize], p: &[f64], r0: &[f64]) -> Vec<Vec<f64>> {
+pub(super) fn smooth_jacobian(pb: &Problem, evals: &mut Evals, at: &At) -> Vec<Vec<f64>> {
+    let p = at.p;
     (0..p.len())
         .map(|j| {
             let h = step(p[j]);
-            let up = difference(pb, idx, p, r0, (j, h));
+            let up = difference(pb, evals, at, (j, h));
             // At a bound the step back or forward leaves the allowed range.
             let (lo, hi) = super::uncertainty::bounds(pb.free[j]);
             if p[j] - h <= lo || p[j] + h >= hi {
                 return up;
             }
-            let down = difference(pb, idx, p, r0, (j, -h));
+            let down = difference(pb, evals, at, (j, -h));
             up.iter()
                 .zip(&down)
                 .map(|(&a, &b)| if a.abs() <= b.abs() { a } else { b })
@@ -196,23 +215,31 @@ pub(super) fn smooth_jacobian(pb: &Problem, idx: &[usize], p: &[f64], r0: &[f64]
 /// Levenberg–Marquardt from `p` on the points `idx`.
 pub(super) fn least_squares(
     pb: &Problem,
+    evals: &mut Evals,
     idx: &[usize],
     mut p: Vec<f64>,
 ) -> Result<Vec<f64>, FitError> {
-    let (free, evals) = (pb.free, pb.evals);
+    let free = pb.free;
     if idx.len() < free.len() + 2 {
         return Err(FitError::TooFewPoints {
             usable: idx.len(),
             needed: free.len() + 2,
         });
     }
-    let cost = |p: &[f64]| -> f64 { pb.residuals(p, idx).iter().map(|r| r * r).sum() };
     let mut lambda = 1e-3;
-    let mut c = cost(&p);
+    let mut c = pb.cost(&p, idx, evals);
     for _ in 0..100 {
         evals.next()?;
-        let r0 = pb.residuals(&p, idx);
-        let j = jacobian(pb, idx, &p, &r0);
+        let r0 = pb.residuals(&p, idx, evals);
+        let j = jacobian(
+            pb,
+            evals,
+            &At {
+                idx,
+                p: &p,
+                r0: &r0,
+            },
+        );
         let jtj = normal_matrix(&j);
         let jtr: Vec<f64> = j
             .iter()
@@ -234,7 +261,7 @@ pub(super) fn least_squares(
                 &p.iter().zip(&step).map(|(a, b)| a + b).collect::<Vec<_>>(),
             );
             evals.next()?;
-            let cq = cost(&q);
+            let cq = pb.cost(&q, idx, evals);
             if cq < c {
                 improved = (c - cq) > 1e-12 * c;
                 p = q;

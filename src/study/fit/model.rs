@@ -13,11 +13,11 @@ use crate::study::Progress;
 use crate::study::measured::series::{Measured, Stencils};
 
 use super::least_squares::{
-    Problem, coarse_mu, least_squares, normal_matrix, scan_mu, smooth_jacobian, with,
+    At, Problem, coarse_mu, least_squares, normal_matrix, scan_mu, smooth_jacobian, with,
 };
 use super::problem::{Evals, FitError, Free};
 use super::regime::{data_scatter, observed_after, rest_band, sliding_end};
-use super::residuals::{Target, fit_points, labelled_residuals, mean_cost, nuisance, residuals_of};
+use super::residuals::{Target, fit_points, labelled_residuals, mean_cost, nuisance};
 use super::uncertainty::{
     NotIdentified, ScalePart, effective_points, shared_noise, uncertainties, with_scale,
 };
@@ -277,7 +277,7 @@ fn model_fit_of(
     target: Target,
     progress: &dyn Progress,
 ) -> Result<ModelFit, FitError> {
-    scored_fit(scene, m, free, target, &Evals::new(progress)).map(|s| s.fit)
+    scored_fit(scene, m, free, target, &mut Evals::new(progress)).map(|s| s.fit)
 }
 
 /// A model fit with what information criteria need: the weighted residual sum of
@@ -298,13 +298,16 @@ pub(super) struct Scored {
 /// fitted on: those away from the model's impacts, and among `within` when given
 /// (a refit on frames shared with other models, started from a fit already made: no
 /// scan of μ_k again).
-fn best_values(pb: &Problem, within: Option<&[usize]>) -> Result<(Vec<f64>, Vec<usize>), FitError> {
+fn best_values(
+    pb: &Problem,
+    evals: &mut Evals,
+    within: Option<&[usize]>,
+) -> Result<(Vec<f64>, Vec<usize>), FitError> {
     let Problem {
         scene,
         m,
         free,
         target,
-        evals,
     } = *pb;
     let p: Vec<f64> = free
         .iter()
@@ -313,7 +316,7 @@ fn best_values(pb: &Problem, within: Option<&[usize]>) -> Result<(Vec<f64>, Vec<
             other => other.value_in(scene),
         })
         .collect();
-    let frames = |p: &[f64]| {
+    let frames = |p: &[f64], evals: &mut Evals| {
         let mut idx = fit_points(m, &with(scene, free, p), target, evals);
         if let Some(w) = within {
             idx.retain(|i| w.binary_search(i).is_ok());
@@ -322,7 +325,7 @@ fn best_values(pb: &Problem, within: Option<&[usize]>) -> Result<(Vec<f64>, Vec<
     };
     // A refit starts from a fit already made: no scan again.
     if within.is_some() {
-        return refined(pb, p, &frames);
+        return refined(pb, evals, p, &frames);
     }
     // From the start that fits best (the scene's values, or others of c_rr: from
     // c_rr = 0 a μ_k that also brakes the rolling fits nearly as well, and
@@ -337,7 +340,7 @@ fn best_values(pb: &Problem, within: Option<&[usize]>) -> Result<(Vec<f64>, Vec<
         let mut best = (f64::INFINITY, p.clone());
         for q in tries {
             let (q, cost) = match mu {
-                Some(i) => coarse_mu(pb, &q, i)?,
+                Some(i) => coarse_mu(pb, evals, &q, i)?,
                 None => {
                     evals.next()?;
                     let cost = mean_cost(&with(scene, free, &q), m, target, evals);
@@ -351,9 +354,9 @@ fn best_values(pb: &Problem, within: Option<&[usize]>) -> Result<(Vec<f64>, Vec<
         p = best.1;
     }
     if let Some(i) = mu {
-        p[i] = scan_mu(pb, &p, i)?;
+        p[i] = scan_mu(pb, evals, &p, i)?;
     }
-    refined(pb, p, &frames)
+    refined(pb, evals, p, &frames)
 }
 
 /// Other values of c_rr a fit may start from besides the scene's: 0.003 to 0.1, a
@@ -394,13 +397,14 @@ fn starts(free: &[Free], p: &[f64]) -> Vec<Vec<f64>> {
 /// picks (away from the model's impacts: chosen again once the fit has moved them).
 fn refined(
     pb: &Problem,
+    evals: &mut Evals,
     mut p: Vec<f64>,
-    frames: &dyn Fn(&[f64]) -> Vec<usize>,
+    frames: &dyn Fn(&[f64], &mut Evals) -> Vec<usize>,
 ) -> Result<(Vec<f64>, Vec<usize>), FitError> {
-    let mut idx = frames(&p);
+    let mut idx = frames(&p, evals);
     for _ in 0..3 {
-        p = least_squares(pb, &idx, p)?;
-        let next = frames(&p);
+        p = least_squares(pb, evals, &idx, p)?;
+        let next = frames(&p, evals);
         if next == idx {
             break;
         }
@@ -414,7 +418,7 @@ pub(super) fn scored_fit(
     m: &Measured,
     free: &[Free],
     target: Target,
-    evals: &Evals,
+    evals: &mut Evals,
 ) -> Result<Scored, FitError> {
     scored_fit_within(scene, m, free, target, None, evals)
 }
@@ -428,7 +432,7 @@ pub(super) fn scored_fit_within(
     free: &[Free],
     target: Target,
     within: Option<&[usize]>,
-    evals: &Evals,
+    evals: &mut Evals,
 ) -> Result<Scored, FitError> {
     let thin = thinned(m);
     let (m, every) = match &thin {
@@ -440,15 +444,22 @@ pub(super) fn scored_fit_within(
         m,
         free,
         target,
-        evals,
     };
-    let (p, idx) = best_values(&pb, within)?;
+    let (p, idx) = best_values(&pb, evals, within)?;
     let fitted = with(scene, free, &p);
     let (r, labels) = labelled_residuals(&fitted, m, &idx, target, true, evals);
     let n = p.len();
     let cost: f64 = r.iter().map(|x| x * x).sum();
     let mut s2 = cost / r.len().saturating_sub(n + nuisance(m, target)).max(1) as f64;
-    let j = smooth_jacobian(&pb, &idx, &p, &r);
+    let j = smooth_jacobian(
+        &pb,
+        evals,
+        &At {
+            idx: &idx,
+            p: &p,
+            r0: &r,
+        },
+    );
     // Velocities derived from a track share frames: their errors are correlated, by
     // the stencils. Other residuals that go together from frame to frame (a tracker's
     // drift, a velocity some tool smoothed, a model that misses the data's shape) are
@@ -495,11 +506,7 @@ pub(super) fn scored_fit_within(
         restitution_se: se(Free::Restitution),
         rolling_resistance: fitted.rolling_resistance,
         rolling_resistance_se: se(Free::RollingResistance),
-        rms: {
-            // In the data's own units, whatever the weights.
-            let raw = residuals_of(&fitted, m, &idx, target, false, evals);
-            (raw.iter().map(|x| x * x).sum::<f64>() / raw.len().max(1) as f64).sqrt()
-        },
+        rms: raw_rms(&fitted, m, &idx, target, evals),
         points: idx.len(),
         regime_predicted: derived.regime,
         regime_observed,
@@ -519,6 +526,12 @@ pub(super) fn scored_fit_within(
         // Set by `fits`, which has the line fits.
         lines_disagree: None,
     }))
+}
+
+/// The RMS of the unweighted residuals: in the data's own units, whatever the weights.
+fn raw_rms(fitted: &Scene, m: &Measured, idx: &[usize], target: Target, evals: &mut Evals) -> f64 {
+    let raw = labelled_residuals(fitted, m, idx, target, false, evals).0;
+    (raw.iter().map(|x| x * x).sum::<f64>() / raw.len().max(1) as f64).sqrt()
 }
 
 #[cfg(test)]

@@ -103,14 +103,15 @@ impl std::fmt::Display for DataLooks {
 pub const WORK_BUDGET: u64 = 5_000_000;
 
 /// Counts model evaluations and the work they took, for [`Progress`] and the work
-/// budget; stops the fit when asked or when the budget is spent.
+/// budget; stops the fit when asked or when the budget is spent. The fit hands it on
+/// as `&mut`: each motion solved is counted where it is solved.
 pub(super) struct Evals<'a> {
     progress: &'a dyn Progress,
     /// Model evaluations (motions solved) so far.
-    done: std::cell::Cell<u64>,
+    done: u64,
     /// Their motion segments so far, and the most of one.
-    segments: std::cell::Cell<u64>,
-    longest: std::cell::Cell<usize>,
+    segments: u64,
+    longest: usize,
     budget: u64,
 }
 
@@ -123,15 +124,15 @@ impl<'a> Evals<'a> {
     pub(super) fn with_budget(progress: &'a dyn Progress, budget: u64) -> Evals<'a> {
         Evals {
             progress,
-            done: std::cell::Cell::new(0),
-            segments: std::cell::Cell::new(0),
-            longest: std::cell::Cell::new(0),
+            done: 0,
+            segments: 0,
+            longest: 0,
             budget,
         }
     }
 
     /// The motion of `scene` from `t_start` on, counted as one model evaluation.
-    pub(super) fn solve(&self, scene: &Scene, t_start: f64) -> Solution {
+    pub(super) fn solve(&mut self, scene: &Scene, t_start: f64) -> Solution {
         let sol = engine::solve(
             scene,
             &Span {
@@ -140,38 +141,26 @@ impl<'a> Evals<'a> {
             },
         );
         let n = sol.segments.len();
-        self.done.set(self.done.get() + 1);
-        self.segments.set(self.segments.get() + n as u64);
-        self.longest.set(self.longest.get().max(n));
+        self.done += 1;
+        self.segments += n as u64;
+        self.longest = self.longest.max(n);
         sol
     }
 
     /// Before each step of a search: stops when asked or when the budget is spent.
     pub(super) fn next(&self) -> Result<(), FitError> {
-        self.progress.tick(self.done.get(), 0);
+        self.progress.tick(self.done, 0);
         if self.progress.cancelled() {
             Err(FitError::Cancelled)
-        } else if self.segments.get() > self.budget {
+        } else if self.segments > self.budget {
             Err(FitError::Budget {
-                evaluations: self.done.get(),
-                segments: self.segments.get(),
-                longest: self.longest.get(),
+                evaluations: self.done,
+                segments: self.segments,
+                longest: self.longest,
             })
         } else {
             Ok(())
         }
-    }
-
-    /// Model evaluations so far.
-    #[cfg(test)]
-    pub(super) fn evaluations(&self) -> u64 {
-        self.done.get()
-    }
-
-    /// Motion segments computed so far.
-    #[cfg(test)]
-    pub(super) fn segments(&self) -> u64 {
-        self.segments.get()
     }
 }
 

@@ -11,7 +11,12 @@ use crate::study::measured::series::{Measured, Stencil, Stencils};
 
 /// Points the model fit uses: all but the frames that straddle an impact of the
 /// model `scene` (a frame holding a jump measures neither side of it).
-pub(super) fn fit_points(m: &Measured, scene: &Scene, target: Target, evals: &Evals) -> Vec<usize> {
+pub(super) fn fit_points(
+    m: &Measured,
+    scene: &Scene,
+    target: Target,
+    evals: &mut Evals,
+) -> Vec<usize> {
     // Positions do not jump at an impact: every frame counts.
     if target == Target::Position {
         return (0..m.t.len()).collect();
@@ -78,26 +83,15 @@ pub(super) enum Target {
 }
 
 /// Residuals of `scene` against `m` at `idx`, weighted (divided by the points'
-/// uncertainties, where known) or not; points not measured (NaN) are left out.
-pub(super) fn residuals_of(
-    scene: &Scene,
-    m: &Measured,
-    idx: &[usize],
-    target: Target,
-    weighted: bool,
-    evals: &Evals,
-) -> Vec<f64> {
-    labelled_residuals(scene, m, idx, target, weighted, evals).0
-}
-
-/// [`residuals_of`], with each velocity residual's [`Label`] (none for positions).
+/// uncertainties, where known) or not, with each velocity residual's [`Label`] (none
+/// for positions); points not measured (NaN) are left out.
 pub(super) fn labelled_residuals(
     scene: &Scene,
     m: &Measured,
     idx: &[usize],
     target: Target,
     weighted: bool,
-    evals: &Evals,
+    evals: &mut Evals,
 ) -> (Vec<f64>, Vec<Label>) {
     let sol = evals.solve(scene, m.t[0].min(-1e-3));
     match target {
@@ -421,18 +415,20 @@ pub(super) fn nuisance(m: &Measured, target: Target) -> usize {
     }
 }
 
+/// The weighted residuals of [`labelled_residuals`], without their labels: what a
+/// fit minimises.
 pub(super) fn residuals(
     scene: &Scene,
     m: &Measured,
     idx: &[usize],
     target: Target,
-    evals: &Evals,
+    evals: &mut Evals,
 ) -> Vec<f64> {
-    residuals_of(scene, m, idx, target, true, evals)
+    labelled_residuals(scene, m, idx, target, true, evals).0
 }
 
 /// Mean squared residual of `scene`, over the frames away from its own impacts.
-pub(super) fn mean_cost(scene: &Scene, m: &Measured, target: Target, evals: &Evals) -> f64 {
+pub(super) fn mean_cost(scene: &Scene, m: &Measured, target: Target, evals: &mut Evals) -> f64 {
     let idx = fit_points(m, scene, target, evals);
     let r = residuals(scene, m, &idx, target, evals);
     r.iter().map(|x| x * x).sum::<f64>() / r.len().max(1) as f64

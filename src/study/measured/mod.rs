@@ -10,7 +10,7 @@ pub mod track;
 
 use std::sync::Arc;
 
-pub use series::{Measured, OutOfLabRange, RawSeries, Track};
+pub use series::{Measured, NoCommonFrame, OutOfLabRange, RawSeries, Track};
 pub use track::{Derive, Found, TrackError};
 
 use crate::physics::scene::Scene;

@@ -127,9 +127,16 @@ pub struct VideoView {
 }
 
 /// Why cached bytes are no [`VideoView`].
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-#[error("the cached pictures are damaged ({0})")]
-pub struct Damaged(String);
+#[derive(Debug, thiserror::Error)]
+pub enum Damaged {
+    #[error("the cached pictures are damaged (no header)")]
+    NoHeader,
+    #[error("the cached pictures are damaged ({0})")]
+    Header(serde_json::Error),
+    /// `bytes` of pictures, not a whole number of pictures of `size` bytes (or too many).
+    #[error("the cached pictures are damaged ({bytes} bytes of pictures of {size})")]
+    Pictures { bytes: usize, size: usize },
+}
 
 impl VideoView {
     /// The view of `tracks` with `thumbs` made from the same frames.
@@ -208,16 +215,15 @@ impl VideoView {
         let nl = bytes
             .iter()
             .position(|&b| b == b'\n')
-            .ok_or_else(|| Damaged("no header".into()))?;
-        let mut view: VideoView =
-            serde_json::from_slice(&bytes[..nl]).map_err(|e| Damaged(e.to_string()))?;
+            .ok_or(Damaged::NoHeader)?;
+        let mut view: VideoView = serde_json::from_slice(&bytes[..nl]).map_err(Damaged::Header)?;
         let size = view.thumbs.width * view.thumbs.height;
         let rest = &bytes[nl + 1..];
         if size == 0 || !rest.len().is_multiple_of(size) || rest.len() > 4 * BUDGET {
-            return Err(Damaged(format!(
-                "{} bytes of pictures of {size}",
-                rest.len()
-            )));
+            return Err(Damaged::Pictures {
+                bytes: rest.len(),
+                size,
+            });
         }
         view.thumbs.pictures = rest.chunks_exact(size).map(<[u8]>::to_vec).collect();
         Ok(view)
@@ -347,7 +353,7 @@ mod tests {
     fn a_view_survives_its_bytes_and_damaged_bytes_are_refused() {
         let v = view();
         let bytes = v.to_bytes();
-        assert_eq!(VideoView::from_bytes(&bytes), Ok(v));
+        assert_eq!(VideoView::from_bytes(&bytes).unwrap(), v);
         assert!(VideoView::from_bytes(&bytes[..bytes.len() - 1]).is_err());
         assert!(VideoView::from_bytes(b"garbage").is_err());
     }

@@ -8,7 +8,9 @@ use crate::settings::params::Key;
 use crate::settings::spec::SceneError;
 use crate::settings::units::{Dimension, show, significant};
 
-use super::{Action, App, Export, Field, Mode, ROWS, SPEEDS, Status, View};
+use super::{Action, App, Export, Field, ROWS, SPEEDS, Status, View};
+use crate::tui::layer::{DataTable, Help, Layer, Picker, Prompt};
+use crate::tui::vocabulary::TextTarget;
 
 impl App {
     /// One fine or coarse step of the selected parameter. A step past a limit stops at
@@ -76,7 +78,10 @@ impl App {
             Action::Decrease => self.nudge(false, false),
             Action::IncreaseCoarse => self.nudge(true, true),
             Action::DecreaseCoarse => self.nudge(false, true),
-            Action::Edit | Action::Confirm => self.mode = Mode::Edit(Field::default()),
+            Action::Edit | Action::Confirm => self.open(Layer::Prompt(Prompt::new(
+                TextTarget::Value,
+                Field::default(),
+            ))),
             Action::PlayPause => {
                 if !self.playing && self.t >= t1 {
                     self.t = t0;
@@ -112,10 +117,10 @@ impl App {
             Action::Presets => self.open_picker(),
             Action::Save => {
                 self.status = Status::None;
-                self.mode =
-                    Mode::SaveName(Field::suggested(format!("my-{}", self.lab.preset().name)));
+                let name = Field::suggested(format!("my-{}", self.lab.preset().name));
+                self.open(Layer::Prompt(Prompt::new(TextTarget::Name, name)));
             }
-            Action::Help => self.open_scrolling(Mode::Help),
+            Action::Help => self.open(Layer::Help(Help::default())),
             Action::DataTable => self.open_data_table(),
             Action::Export(kind) => self.ask_export(kind),
             Action::ApplyFit => self.apply_fit(),
@@ -301,12 +306,12 @@ impl App {
             .iter()
             .position(|p| p.name == self.lab.preset().name)
             .unwrap_or(0);
-        self.mode = Mode::Picker(i);
+        self.open(Layer::Picker(Picker::on(i)));
     }
 
     fn open_data_table(&mut self) {
         match self.lab.measured() {
-            Some(_) => self.open_scrolling(Mode::Table),
+            Some(_) => self.open(Layer::Table(DataTable::default())),
             None => {
                 self.status = Status::Error(format!(
                     "preset {} has no measured data to show (the paper-b* presets have)",
@@ -336,14 +341,12 @@ impl App {
                 }
             },
         };
-        self.mode = Mode::Export(
-            kind,
-            Field::suggested(format!(
-                "{}-{what}.{}",
-                super::export::shown_name(&self.lab, self.scene_edited(), self.hidden().derived()),
-                kind.extension()
-            )),
-        );
+        let name = Field::suggested(format!(
+            "{}-{what}.{}",
+            super::export::shown_name(&self.lab, self.scene_edited(), self.hidden().derived()),
+            kind.extension()
+        ));
+        self.open(Layer::Prompt(Prompt::new(TextTarget::Export(kind), name)));
     }
 
     fn toggle_hide_width(&mut self) {
@@ -419,30 +422,6 @@ impl App {
             view
         };
         self.opened();
-    }
-
-    fn open_scrolling(&mut self, mode: Mode) {
-        self.scroll = 0;
-        self.scroll_max = usize::MAX;
-        self.mode = mode;
-    }
-
-    /// Scrolls the open help or table if `action` is a scroll key; false otherwise.
-    pub(super) fn scroll_popup(&mut self, action: Action) -> bool {
-        const PAGE: usize = 10;
-        // Never beyond what the last frame could show (a press after the end is felt).
-        let now = self.scroll.min(self.scroll_max);
-        self.scroll = match action {
-            Action::Up => now.saturating_sub(1),
-            Action::Down | Action::NextParam => now + 1,
-            Action::IncreaseCoarse => now.saturating_sub(PAGE),
-            Action::DecreaseCoarse => now + PAGE,
-            Action::Start => 0,
-            Action::End => usize::MAX,
-            _ => return false,
-        }
-        .min(self.scroll_max);
-        true
     }
 
     /// Fit view: puts the fitted μ_k (and v0, e where the fit freed them) into the

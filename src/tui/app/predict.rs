@@ -1,10 +1,11 @@
 //! Predict, observe, explain: the question before the impact, the run played from the
 //! start, and the time from which the outcome shows (the view then explains it).
 
+use crate::physics::derived::Regime;
 use crate::physics::solution::{EventKind, Solution, Who};
-use crate::tui::vocabulary::ANSWERS;
+use crate::tui::layer::{Layer, Question};
 
-use super::{Action, App, Mode, Prediction, Status, View};
+use super::{App, Prediction, Status, View};
 
 /// When the run shows what the balls do after the first impact: the first thing that
 /// ends the left ball's slide (it rolls again or rests, the next impact, a push, the
@@ -34,7 +35,7 @@ impl App {
         self.playing = false;
         self.t = self.lab.solution.t_start;
         self.status = Status::None;
-        self.mode = Mode::Predict;
+        self.open(Layer::Question(Question));
         // A new round: the last round's answer must not stand beside the question.
         self.prediction = None;
     }
@@ -55,39 +56,28 @@ impl App {
         true
     }
 
-    /// An answer (1, 2, 3) is the prediction: play from the start. Esc cancels.
-    pub(super) fn apply_predict(&mut self, action: Action) {
-        match action {
-            Action::Type('g') => {
-                self.status = Status::Info(
-                    if self.hide.toggle_forces_givens() {
-                        "the forces are shown as givens until the outcome (g hides them)"
-                    } else {
-                        "the forces are hidden until the outcome (g shows them as givens)"
-                    }
-                    .into(),
-                );
+    /// The prediction made (the question's answer): play from the start.
+    pub(super) fn predicted(&mut self, guess: Regime) {
+        let sol = &self.lab.solution;
+        self.prediction = Some(Prediction {
+            guess,
+            scene: self.lab.scene,
+            reveal_at: reveal_time(sol),
+        });
+        self.t = sol.t_start;
+        self.playing = true;
+        self.status = Status::Info("predicted: now watch (space pauses)".into());
+    }
+
+    /// The question's `g`: the forces shown as givens until the outcome, or hidden.
+    pub(super) fn toggle_givens(&mut self) {
+        self.status = Status::Info(
+            if self.hide.toggle_forces_givens() {
+                "the forces are shown as givens until the outcome (g hides them)"
+            } else {
+                "the forces are hidden until the outcome (g shows them as givens)"
             }
-            Action::Type(c) => {
-                let Some((_, guess)) = ANSWERS.iter().find(|(k, _)| *k == c) else {
-                    return;
-                };
-                let sol = &self.lab.solution;
-                self.prediction = Some(Prediction {
-                    guess: *guess,
-                    scene: self.lab.scene,
-                    reveal_at: reveal_time(sol),
-                });
-                self.t = sol.t_start;
-                self.playing = true;
-                self.mode = Mode::Normal;
-                self.status = Status::Info("predicted: now watch (space pauses)".into());
-            }
-            Action::Cancel => {
-                self.mode = Mode::Normal;
-                self.status = Status::Info("no prediction".into());
-            }
-            _ => {}
-        }
+            .into(),
+        );
     }
 }

@@ -275,9 +275,9 @@ fn exact_velocities(samples: &[Snapshot], balls: &[usize], theme: &Theme) -> Vec
 /// The time-stepping overlay: its progress while it runs (a legend entry), then its
 /// v_cm and v_t over the exact curves, so its chatter shows.
 fn overlay_velocities(app: &App, balls: &[usize], columns: usize, theme: &Theme) -> Vec<PlotLine> {
-    let o = match app.overlay.state() {
+    let o = match app.overlay().state() {
         State::Computing { done, total } => {
-            let name = app.overlay.choice.map_or("", |(m, _)| m.name());
+            let name = app.overlay().choice.map_or("", |(m, _)| m.name());
             return vec![PlotLine {
                 name: format!("{name} {}", super::panel::progress_text(done, total)),
                 points: Vec::new().into(),
@@ -359,7 +359,7 @@ fn velocities(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (V
         series.extend(measured_velocities(m, theme));
     }
     let mut vlines = Vec::new();
-    if let (true, State::Ready(Ok(f))) = (app.fit_view(), app.fit.fits()) {
+    if let (true, State::Ready(Ok(f))) = (app.fit_view(), app.fit().fits()) {
         let (lines, ends) = line_fit_marks(&f.line_fit, theme);
         series.extend(lines);
         vlines.extend(ends);

@@ -27,7 +27,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     blk.render(area, buf);
     // Priorities (9 most important): the model's μ_k and whether it predicts what was
     // seen stay on the smallest screen; the paper's forces and table row go first.
-    let lines: Ranked = match app.fit.fits() {
+    let lines: Ranked = match app.fit().fits() {
         State::Idle => vec![(
             9,
             Line::from(Span::styled(

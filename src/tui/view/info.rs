@@ -35,7 +35,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     // With b hidden (`B`), nothing here may give it or the outcome away: only the
     // state at the cursor, which the animation shows anyway.
     if app.hidden().derived() {
-        let note = theme.glyphs.text(if app.hide.b() {
+        let note = theme.glyphs.text(if app.hide().b() {
             "b hidden: predict from the picture; B shows b and why"
         } else {
             "predict first: why shows once the outcome does"

@@ -13,8 +13,7 @@ mod panel;
 pub mod params;
 
 pub use params::param_at;
-pub use popups::{picker_row_at, scroll_max};
-pub use predict::answer_at;
+pub use popups::scroll_max;
 pub use table::data_rows;
 mod popup;
 pub mod popups;

@@ -12,7 +12,7 @@ use super::panel::block;
 use crate::lab::Origin;
 use crate::settings::params::Key;
 use crate::settings::units::{Dimension, fit_number};
-use crate::tui::app::{App, Mode, ROWS};
+use crate::tui::app::{App, ROWS};
 use crate::tui::component::{Component, Ctx};
 use crate::tui::line::caret as caret_style;
 use crate::tui::theme::Theme;
@@ -44,7 +44,7 @@ const VALUE_W: usize = 11;
 pub fn value_text(app: &App, key: Key) -> String {
     let v = app.lab.value(key);
     let s = &app.lab.scene;
-    if app.hide.value(key) {
+    if app.hide().value(key) {
         return "hidden".into();
     }
     if key == Key::V0 && s.left.v0 != s.right.v0 {
@@ -84,7 +84,7 @@ pub fn note(app: &App, key: Key, room: usize) -> String {
         Key::Width | Key::Radius if app.hidden().derived() => d
             .b_star
             .and_then(|b| pair("b*", Dimension::Length.to_display(b), 2, room))
-            .filter(|_| key == Key::Width && app.hide.b()),
+            .filter(|_| key == Key::Width && app.hide().b()),
         Key::Width => {
             let star = match d.b_star {
                 None => Some("no b*".to_string()).filter(|s| s.len() <= room),
@@ -113,31 +113,31 @@ pub fn note(app: &App, key: Key, room: usize) -> String {
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let shown = usize::from(area.height.saturating_sub(2));
     let title = if shown < ROWS.len() {
-        format!(" Parameters ({}/{}) ", app.selected + 1, ROWS.len())
+        format!(" Parameters ({}/{}) ", app.selected() + 1, ROWS.len())
     } else {
         " Parameters ".to_string()
     };
     // A hidden value hides whether it was changed too: `?`, and not in the legend.
     let origins: Vec<Option<Origin>> = ROWS
         .iter()
-        .map(|p| (!app.hide.value(p.key)).then(|| app.lab.settings().origin(p.key)))
+        .map(|p| (!app.hide().value(p.key)).then(|| app.lab.settings().origin(p.key)))
         .collect();
     let used: Vec<Origin> = origins.iter().flatten().copied().collect();
     let blk = block(title, theme).title_bottom(legend(&used));
     let inner = blk.inner(area);
     blk.render(area, buf);
     let g = theme.glyphs;
-    let first = first_shown(area, app.selected);
+    let first = first_shown(area, app.selected());
     for (i, p) in ROWS.iter().enumerate().skip(first) {
         let y = inner.y + (i - first) as u16;
         if y >= inner.bottom() {
             break;
         }
-        let selected = i == app.selected;
+        let selected = i == app.selected();
         let label = p.label.replace("mu", g.mu);
         // The typing field: the part of the line around its cursor, in brackets.
-        let (value, caret) = match (&app.mode, selected) {
-            (Mode::Edit(field), true) => {
+        let (value, caret) = match (app.editing(), selected) {
+            (Some(field), true) => {
                 let (shown, at) = field.shown(VALUE_W - 2);
                 let x = 1 + LABEL_W + VALUE_W - shown.chars().count() - 1 + at;
                 (format!("[{shown}]"), Some(x))

@@ -7,19 +7,8 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Clear, Paragraph, Widget, Wrap};
 
 use super::panel::block;
-use crate::tui::app::App;
+use crate::tui::layer::centered;
 use crate::tui::theme::Theme;
-
-pub(super) fn centered(area: Rect, width: u16, height: u16) -> Rect {
-    let w = width.min(area.width.saturating_sub(2));
-    let h = height.min(area.height.saturating_sub(2));
-    Rect {
-        x: area.x + (area.width - w) / 2,
-        y: area.y + (area.height - h) / 2,
-        width: w,
-        height: h,
-    }
-}
 
 pub(super) fn popup(
     title: &str,
@@ -56,11 +45,11 @@ pub(super) fn scroll_frame(
     (rect, visible, count.saturating_sub(visible))
 }
 
-/// A popup of `width` whose `lines` scroll: as many as fit from `app.scroll`, "more ↓"
+/// A popup of `width` whose `lines` scroll: as many as fit from line `first`, "more ↓"
 /// on the bottom border while lines are below, "↑ more" on the top one while lines
 /// are above.
 pub(super) fn scrolling<'a>(
-    app: &App,
+    first: usize,
     title: &str,
     head: Vec<Line<'a>>,
     (count, line): (usize, &dyn Fn(usize) -> Line<'a>),
@@ -71,7 +60,7 @@ pub(super) fn scrolling<'a>(
     let g = theme.glyphs;
     let (rect, visible, max) = scroll_frame(area, width, head.len(), count);
     Clear.render(rect, buf);
-    let first = app.scroll.min(max);
+    let first = first.min(max);
     let mut blk: Block = block(g.text(&format!(" {title} ")), theme);
     if first + visible < count {
         let more = g.text(&format!(" more ↓ ({} of {count}) ", first + visible));

@@ -6,36 +6,33 @@ use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
 
 use super::panel::wrap;
-use super::popup::{centered, popup, scroll_frame, scrolling};
+use super::popup::{popup, scroll_frame, scrolling};
 use super::table::table_layout;
 use crate::study::preset::PresetOrigin;
 use crate::tui::app::export::export_step;
-use crate::tui::app::{App, Export, Field, Mode, Status};
+use crate::tui::app::{App, Export, Field, Status};
 use crate::tui::component::{Component, Ctx};
 use crate::tui::keys::TABLE;
+use crate::tui::layer::{Confirm, Help, Layer, Picker, Prompt};
 use crate::tui::line::caret;
 use crate::tui::theme::Theme;
+use crate::tui::vocabulary::TextTarget;
 
 /// How far the open help or data table scrolls on a screen of `area` (a key never
 /// scrolls into blank lines); `usize::MAX` for anything else.
 pub fn scroll_max(app: &App, area: Rect, theme: &Theme) -> usize {
-    match &app.mode {
-        Mode::Help => {
+    match app.layers().top() {
+        Some(Layer::Help(_)) => {
             let width = help_width(area);
             let lines = help_lines(usize::from(width.saturating_sub(2)), theme);
             scroll_frame(area, width, 0, lines.len()).2
         }
-        Mode::Table => {
+        Some(Layer::Table(_)) => {
             let (head, count, width) = table_layout(app, theme);
             scroll_frame(area, width, head.len(), count).2
         }
-        Mode::Normal
-        | Mode::Picker(_)
-        | Mode::Edit(_)
-        | Mode::SaveName(_)
-        | Mode::ConfirmOverwrite(_)
-        | Mode::Export(..)
-        | Mode::Predict => usize::MAX,
+        Some(Layer::Picker(_) | Layer::Prompt(_) | Layer::Confirm(_) | Layer::Question(_))
+        | None => usize::MAX,
     }
 }
 
@@ -74,7 +71,7 @@ fn help_width(area: Rect) -> u16 {
 }
 
 /// The keys, scrolling.
-fn help(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
+fn help(first: usize, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let width = help_width(area);
     let lines = help_lines(usize::from(width.saturating_sub(2)), theme);
     let title = if theme.glyphs.ascii {
@@ -84,31 +81,14 @@ fn help(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     };
     let line = |i: usize| lines[i].clone();
     let source: (usize, &dyn Fn(usize) -> Line<'static>) = (lines.len(), &line);
-    scrolling(app, title, Vec::new(), source, (area, width), buf, theme);
-}
-
-/// Where the preset picker is drawn on a screen of `area`, and how many of its rows
-/// show.
-fn picker_rect(app: &App, area: Rect) -> (Rect, usize) {
-    let n = app.library.presets.len();
-    let rect = centered(area, area.width.saturating_sub(4), n as u16 + 2);
-    (rect, n.min(usize::from(rect.height.saturating_sub(2))))
-}
-
-/// The preset under screen cell (`column`, `row`) of the picker on a screen of
-/// `area`, if a row of it is there (what a click picks).
-pub fn picker_row_at(app: &App, area: Rect, column: u16, row: u16) -> Option<usize> {
-    let (rect, shown) = picker_rect(app, area);
-    let inside = column > rect.x && column + 1 < rect.right() && row > rect.y;
-    let i = usize::from(row.checked_sub(rect.y + 1)?);
-    (inside && i < shown).then_some(i)
+    scrolling(first, title, Vec::new(), source, (area, width), buf, theme);
 }
 
 /// The presets to load, one row each with the `selected` one marked.
 fn preset_picker(app: &App, selected: usize, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let g = theme.glyphs;
     let name_width = app
-        .library
+        .library()
         .presets
         .iter()
         .map(|p| p.name.len())
@@ -117,7 +97,7 @@ fn preset_picker(app: &App, selected: usize, area: Rect, buf: &mut Buffer, theme
     // One row per preset: the description cut with an ellipsis, never wrapped.
     let room = usize::from(area.width.saturating_sub(8));
     let lines: Vec<Line> = app
-        .library
+        .library()
         .presets
         .iter()
         .enumerate()
@@ -132,7 +112,7 @@ fn preset_picker(app: &App, selected: usize, area: Rect, buf: &mut Buffer, theme
             // this row loads the file (`--preset NAME` finds the built-in).
             let twin = matches!(p.origin, PresetOrigin::File(_))
                 && app
-                    .library
+                    .library()
                     .presets
                     .iter()
                     .any(|q| q.origin == PresetOrigin::BuiltIn && q.name == p.name);
@@ -164,7 +144,7 @@ fn preset_picker(app: &App, selected: usize, area: Rect, buf: &mut Buffer, theme
 /// The name to save the scene under, and where it goes.
 fn save_prompt(app: &App, field: &Field, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let dir = app
-        .library
+        .library()
         .dir
         .as_ref()
         .map_or("(no preset folder)".to_string(), |d| {
@@ -227,10 +207,10 @@ fn export_prompt(
         (" file: ", field),
         &[
             what,
-            if app.export_dir == std::path::Path::new(".") {
+            if app.export_dir() == std::path::Path::new(".") {
                 " in the folder groovelab was started in, unless a path is given".into()
             } else {
-                format!(" in {} unless a path is given", app.export_dir.display())
+                format!(" in {} unless a path is given", app.export_dir().display())
             },
             " Enter writes (replacing a file of that name), Esc cancels".into(),
         ]
@@ -300,43 +280,34 @@ fn prompt(
     popup(title, lines, area, width, buf, theme);
 }
 
-/// The help popup (the key table, scrolling).
-pub struct Help;
-
 impl Component for Help {
     fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
-        help(cx.app, area, buf, cx.theme);
+        help(self.scroll().first(), area, buf, cx.theme);
     }
 }
-
-/// The preset picker popup.
-pub struct Picker;
 
 impl Component for Picker {
     fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
-        if let Mode::Picker(selected) = cx.app.mode {
-            preset_picker(cx.app, selected, area, buf, cx.theme);
+        preset_picker(cx.app, self.selected(), area, buf, cx.theme);
+    }
+}
+
+/// The prompts drawn as popups: the name to save under, the file to export to (the
+/// value prompt is typed on the status line: the status bar and the parameters
+/// panel draw it).
+impl Component for Prompt {
+    fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
+        let (app, theme, field) = (cx.app, cx.theme, self.field());
+        match self.target() {
+            TextTarget::Value => {}
+            TextTarget::Name => save_prompt(app, field, area, buf, theme),
+            TextTarget::Export(kind) => export_prompt(app, kind, field, area, buf, theme),
         }
     }
 }
 
-/// The text prompts' popup: the name to save under, the file to export to, whether
-/// to replace a saved preset (the value prompt is typed on the status line).
-pub struct Prompt;
-
-impl Component for Prompt {
+impl Component for Confirm {
     fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
-        let (app, theme) = (cx.app, cx.theme);
-        match &app.mode {
-            Mode::SaveName(field) => save_prompt(app, field, area, buf, theme),
-            Mode::Export(kind, field) => export_prompt(app, *kind, field, area, buf, theme),
-            Mode::ConfirmOverwrite(name) => confirm_overwrite(name, area, buf, theme),
-            Mode::Normal
-            | Mode::Help
-            | Mode::Picker(_)
-            | Mode::Edit(_)
-            | Mode::Table
-            | Mode::Predict => {}
-        }
+        confirm_overwrite(self.name(), area, buf, cx.theme);
     }
 }

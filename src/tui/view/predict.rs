@@ -11,6 +11,7 @@ use crate::physics::derived::Regime;
 use crate::settings::units::{Dimension, significant};
 use crate::tui::app::App;
 use crate::tui::component::{Component, Ctx};
+use crate::tui::layer::{Question, question_rect};
 use crate::tui::theme::Theme;
 use crate::tui::vocabulary::ANSWERS;
 
@@ -33,30 +34,7 @@ fn answer_text(r: Regime) -> &'static str {
     }
 }
 
-/// Where the question of `lines` lines is drawn on a screen of `area`.
-fn question_rect(area: Rect, lines: usize) -> Rect {
-    let w = 52.min(area.width.saturating_sub(2));
-    let h = (lines as u16 + 4).min(area.height);
-    Rect {
-        x: area.x + (area.width - w) / 2,
-        y: area.y + (area.height - h) / 2,
-        width: w,
-        height: h,
-    }
-}
-
-/// The answer (its key) on screen cell (`column`, `row`) of the question on a screen
-/// of `area`, if one is there (what a click answers): the answers are its 3rd to 5th
-/// lines, none of them wrapped.
-pub fn answer_at(area: Rect, column: u16, row: u16) -> Option<char> {
-    // The title, a blank line, the answers, a blank line, the note.
-    let rect = question_rect(area, ANSWERS.len() + 4);
-    let inside = column > rect.x && column + 1 < rect.right();
-    let i = usize::from(row.checked_sub(rect.y + 3)?);
-    ANSWERS.get(i).filter(|_| inside).map(|(key, _)| *key)
-}
-
-/// The question before the impact (Mode::Predict).
+/// The question before the impact.
 pub fn question(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let g = theme.glyphs;
     let mut lines = vec![
@@ -70,7 +48,7 @@ pub fn question(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         ]));
     }
     lines.push(Line::from(""));
-    let b = if app.hide.b() {
+    let b = if app.hide().b() {
         "b is hidden: look at the front view".to_string()
     } else {
         format!(
@@ -83,7 +61,7 @@ pub fn question(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         g.text(&format!("{b}; then it plays and explains. Esc cancels.")),
         theme.dim,
     ));
-    let forces = if app.hide.forces_givens() {
+    let forces = if app.hide().forces_givens() {
         "shown as givens (g hides them)"
     } else {
         "hidden (g shows them as givens)"
@@ -99,9 +77,6 @@ pub fn question(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         .block(block(" Predict ", theme))
         .render(rect, buf);
 }
-
-/// The predict popup (the question before the impact) as a component.
-pub struct Question;
 
 impl Component for Question {
     fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {

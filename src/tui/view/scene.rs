@@ -16,7 +16,7 @@ use crate::tui::component::{Component, Ctx};
 use crate::tui::theme::Theme;
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    if app.video.shown {
+    if app.video().shown {
         return super::video::render(app, area, buf, theme);
     }
     let (title, flashing) = title(app, theme);
@@ -68,12 +68,15 @@ fn title(app: &App, theme: &Theme) -> (String, bool) {
         .iter()
         .any(|e| e.kind == EventKind::Collision && (e.t - t).abs() <= flash_window);
     // A video tracked on a worker: how far (its data join the scene when done).
-    let tracking = app.video.progress().map_or(String::new(), |(done, total)| {
-        format!(
-            "  tracking video {} %",
-            (100 * done.min(total)).checked_div(total).unwrap_or(0)
-        )
-    });
+    let tracking = app
+        .video()
+        .progress()
+        .map_or(String::new(), |(done, total)| {
+            format!(
+                "  tracking video {} %",
+                (100 * done.min(total)).checked_div(total).unwrap_or(0)
+            )
+        });
     let title = format!(
         " Scene  t = {t:.3} s   impacts {impacts_so_far}{}{tracking} ",
         if flashing {
@@ -397,7 +400,7 @@ fn pinned_line(app: &App, width: u16, theme: &Theme) -> Option<String> {
             .map(|(label, was, now)| {
                 let name = label.replace("mu", theme.glyphs.mu);
                 // b hidden (a prediction from the picture): changed, but not to what.
-                if app.hide.change(label) {
+                if app.hide().change(label) {
                     "b changed".to_string()
                 } else {
                     format!("{name} {was} → {now}")

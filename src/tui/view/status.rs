@@ -10,7 +10,7 @@ use ratatui::widgets::{Paragraph, Widget};
 
 use crate::settings::params::Param;
 use crate::settings::units::Dimension;
-use crate::tui::app::{App, Mode, ROWS, Status};
+use crate::tui::app::{App, ROWS, Status};
 use crate::tui::component::{Component, Ctx};
 use crate::tui::keys;
 use crate::tui::theme::{Glyphs, Theme};
@@ -29,9 +29,9 @@ pub fn render(app: &App, status: Rect, hints: Rect, buf: &mut Buffer, theme: &Th
         &right,
         theme.dim,
     );
-    let (message, style) = match (&app.mode, &app.status) {
-        (Mode::Edit(_), _) => {
-            let prompt = typing_prompt(ROWS[app.selected]);
+    let (message, style) = match (app.editing(), &app.status) {
+        (Some(_), _) => {
+            let prompt = typing_prompt(ROWS[app.selected()]);
             buf.set_stringn(
                 status.x,
                 status.y,
@@ -75,7 +75,7 @@ pub fn render(app: &App, status: Rect, hints: Rect, buf: &mut Buffer, theme: &Th
 fn right_text(app: &App, width: usize, g: &Glyphs) -> String {
     // A preset's name may say b or the outcome (paper-b4.9, critical): hidden with
     // what follows from b.
-    let source = if app.hide.b() {
+    let source = if app.hide().b() {
         "preset hidden with b".to_string()
     } else if app.hidden().derived() {
         "preset hidden until the outcome shows".to_string()

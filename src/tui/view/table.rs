@@ -10,6 +10,7 @@ use crate::settings::units::Dimension;
 use crate::study::fit::NearImpacts;
 use crate::tui::app::App;
 use crate::tui::component::{Component, Ctx};
+use crate::tui::layer::DataTable;
 use crate::tui::theme::Theme;
 
 /// The data table's rows: t, then v_cm measured, model, measured − model, then the
@@ -81,7 +82,7 @@ pub(super) fn data_head(track: bool, theme: &Theme) -> Vec<Line<'static>> {
 /// What the data table shows of a position, in the position chart's unit.
 const POSITION: Dimension = Dimension::Length;
 
-pub(super) fn data_table(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
+fn data_table(app: &App, first: usize, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let g = theme.glyphs;
     let dash = if g.ascii { "-" } else { "–" };
     let cell = |v: f64| {
@@ -128,7 +129,15 @@ pub(super) fn data_table(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme)
     };
     // Room for the title beside "↑ more".
     let title = g.ellipsize(title, usize::from(area.width.saturating_sub(16)));
-    scrolling(app, &title, head, (count, &line), (area, width), buf, theme);
+    scrolling(
+        first,
+        &title,
+        head,
+        (count, &line),
+        (area, width),
+        buf,
+        theme,
+    );
 }
 
 /// The data table's fixed lines, its row count and its width.
@@ -159,11 +168,8 @@ pub(super) fn table_layout(app: &App, theme: &Theme) -> (Vec<Line<'static>>, usi
     (head, count, if track { 110 } else { 78 })
 }
 
-/// The data table popup as a component.
-pub struct TableView;
-
-impl Component for TableView {
+impl Component for DataTable {
     fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
-        data_table(cx.app, area, buf, cx.theme);
+        data_table(cx.app, self.scroll().first(), area, buf, cx.theme);
     }
 }

@@ -22,9 +22,9 @@ const RAMP: &[u8] = b" .:-=*#%@";
 
 /// Draws the video panel into `area`.
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let name = app.video.name.as_deref().unwrap_or("");
-    let Some(view) = app.video.view.as_deref() else {
-        let what = match app.video.progress() {
+    let name = app.video().name.as_deref().unwrap_or("");
+    let Some(view) = app.video().view.as_deref() else {
+        let what = match app.video().progress() {
             Some((done, total)) => {
                 format!("tracking {name}: frame {done} of {total}")
             }
@@ -77,7 +77,7 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
 
 /// The panel's titles, longest first.
 fn titles(app: &App, view: &VideoView, frame: Option<usize>) -> Vec<String> {
-    let name = app.video.name.as_deref().unwrap_or("");
+    let name = app.video().name.as_deref().unwrap_or("");
     let file = std::path::Path::new(name)
         .file_name()
         .map_or(name.into(), |f| f.to_string_lossy().into_owned());
@@ -107,7 +107,7 @@ impl Link {
     /// The link while the data in use are this video's.
     fn of(app: &App) -> Option<Link> {
         let own = app.lab.own_data()?;
-        if Some(own.name.as_str()) != app.video.name.as_deref() {
+        if Some(own.name.as_str()) != app.video().name.as_deref() {
             return None;
         }
         let f = app.lab.series()?.found()?;

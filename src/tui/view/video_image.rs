@@ -272,10 +272,10 @@ fn wanted<'a>(
     scene: Rect,
     picker: &Picker,
 ) -> Option<(PictureKey, &'a Arc<VideoView>)> {
-    if !app.video.shown {
+    if !app.video().shown {
         return None;
     }
-    let view = app.video.view.as_ref()?;
+    let view = app.video().view.as_ref()?;
     let area = Block::bordered().inner(scene);
     if area.height < 2 || area.width < 8 {
         return None;

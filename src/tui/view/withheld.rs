@@ -23,7 +23,7 @@ impl Component for Withheld {
         let blk = block(title_within(self.title, area, theme), theme);
         let inner = blk.inner(area);
         blk.render(area, buf);
-        let note = if cx.app.hide.b() {
+        let note = if cx.app.hide().b() {
             format!("b hidden: {} shows with b (B)", self.what)
         } else {
             format!("predict first: {} shows once the outcome does", self.what)

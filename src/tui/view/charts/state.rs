@@ -4,15 +4,19 @@
 //! ([`Handled`]); the chart is built from this state and the snapshot.
 
 use super::zoom::{self, TimeZoom};
+use crate::tui::interact::{Input, Interactive, wheel};
 use crate::tui::vocabulary::{Action, ChartBall, Handled};
 
 /// Where the charts' keys act: the cursor's time, the time span the x axis covers
-/// unzoomed, and whether a chart is on screen (the Charts and Fit views).
+/// unzoomed, whether a chart is on screen (the Charts and Fit views), and for a mouse
+/// event the time under the pointer if it is over the chart's plot (the frame laid
+/// out tells it).
 #[derive(Clone, Copy, Debug)]
 pub struct Moment {
     pub t: f64,
     pub span: (f64, f64),
     pub shown: bool,
+    pub pointer: Option<f64>,
 }
 
 /// What the charts show.
@@ -47,7 +51,7 @@ impl ChartState {
 
     /// What `action` does to the charts: handled (and what the status line says), or
     /// not theirs.
-    pub fn handle(&mut self, action: Action, at: Moment) -> Handled {
+    fn key(&mut self, action: Action, at: Moment) -> Handled {
         match action {
             Action::SwitchBall => {
                 self.ball = match self.ball {
@@ -104,5 +108,17 @@ impl ChartState {
     /// Keeps the cursor at `t` inside a zoomed window (playback, a key that moved it).
     pub fn follow(&mut self, t: f64, span: (f64, f64)) {
         self.zoom.follow(t, span);
+    }
+}
+
+impl Interactive<Moment> for ChartState {
+    /// The charts' keys, and the wheel over the chart's plot: it zooms the time axis
+    /// around the pointer's time.
+    fn handle(&mut self, input: &Input, at: Moment) -> Handled {
+        match (input, wheel(input), at.pointer) {
+            (Input::Key(action), ..) => self.key(*action, at),
+            (Input::Mouse(..), Some(inward), Some(t)) => self.zoom_around(t, inward, at),
+            (Input::Mouse(..), ..) => Handled::Ignored,
+        }
     }
 }

@@ -29,7 +29,7 @@ pub(super) fn chains(app: &App, pending: bool, compact: bool, theme: &Theme) -> 
         };
         format!("{label} {}{unit}{tr}", num(v, hidden))
     };
-    let b = if app.hide.b() {
+    let b = if app.hide().b() {
         "b ?".to_string()
     } else {
         format!(
@@ -135,7 +135,7 @@ pub(super) fn chain_block(
 
 pub(super) fn chain_view(app: &App, area: Rect, joined: bool, buf: &mut Buffer, theme: &Theme) {
     let g = theme.glyphs;
-    let prediction = app.prediction.as_ref().filter(|p| p.scene == app.lab.scene);
+    let prediction = app.prediction().filter(|p| p.scene == app.lab.scene);
     // While the question is asked, and until the outcome shows, the chain keeps D and
     // the outcome to itself: the answer must not stand beside the question.
     let pending = app.hidden().pending();
@@ -185,7 +185,7 @@ pub(super) fn chain_view(app: &App, area: Rect, joined: bool, buf: &mut Buffer, 
     }
     if let Some(p) = prediction {
         ranked.extend(prediction_lines(app, p, pending, theme));
-    } else if app.prediction.is_some() {
+    } else if app.prediction().is_some() {
         ranked.push((
             9,
             Line::styled(

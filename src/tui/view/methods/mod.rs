@@ -54,6 +54,27 @@ fn work(axis: WorkAxis, r: &Row) -> f64 {
     }
 }
 
+/// Draws the panel's frame titled `title`; the rows of every method's runs and the
+/// area inside the frame, or `None` with the progress of the runs drawn there.
+fn framed_rows<'a>(
+    app: &'a App,
+    title: impl Into<Line<'a>>,
+    area: Rect,
+    buf: &mut Buffer,
+    theme: &Theme,
+) -> Option<(&'a [Row], Rect)> {
+    let blk = block(title, theme);
+    let inner = blk.inner(area);
+    blk.render(area, buf);
+    match app.methods().state() {
+        State::Ready(rows) => Some((rows, inner)),
+        other => {
+            super::panel::computing(&other, "running every method", inner, buf, theme);
+            None
+        }
+    }
+}
+
 pub fn render_diagram(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let axis = app.methods_state().axis();
     let (per_run, short, x_title) = match axis {
@@ -71,12 +92,8 @@ pub fn render_diagram(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         area,
         theme,
     );
-    let blk = block(title, theme);
-    let inner = blk.inner(area);
-    blk.render(area, buf);
-    let rows = match app.methods.state() {
-        State::Ready(rows) => rows,
-        other => return super::panel::computing(&other, "running every method", inner, buf, theme),
+    let Some((rows, inner)) = framed_rows(app, title, area, buf, theme) else {
+        return;
     };
     // Work below one unit (a run refused before its first step, or a time under a
     // nanosecond) sits at the axis' floor rather than at −∞.
@@ -146,12 +163,8 @@ pub fn render_rows(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     } else {
         " Runs (marker, setting, status, outcome, err_v) "
     };
-    let blk = block(title, theme);
-    let inner = blk.inner(area);
-    blk.render(area, buf);
-    let rows = match app.methods.state() {
-        State::Ready(rows) => rows,
-        other => return super::panel::computing(&other, "running every method", inner, buf, theme),
+    let Some((rows, inner)) = framed_rows(app, title, area, buf, theme) else {
+        return;
     };
     let width = usize::from(inner.width);
     let marks = width >= 42;

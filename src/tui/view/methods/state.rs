@@ -1,6 +1,7 @@
 //! The Methods view's own state and keys (issue 26): what its work axis shows. Its
 //! key works from every view (the axis is kept for when the view opens).
 
+use crate::tui::interact::{Input, Interactive};
 use crate::tui::vocabulary::{Action, Handled, WorkAxis};
 
 /// The Methods view's work axis.
@@ -16,13 +17,22 @@ impl MethodsState {
     }
 
     /// What `action` does to the view: `X` cycles the work axis.
-    pub fn handle(&mut self, action: Action) -> Handled {
+    fn key(&mut self, action: Action) -> Handled {
         match action {
             Action::CycleWorkAxis => {
                 self.axis = self.axis.next();
                 Handled::Say(format!("work axis: {}", self.axis.name()))
             }
             _ => Handled::Ignored,
+        }
+    }
+}
+
+impl Interactive<()> for MethodsState {
+    fn handle(&mut self, input: &Input, (): ()) -> Handled {
+        match input {
+            Input::Key(action) => self.key(*action),
+            Input::Mouse(..) => Handled::Ignored,
         }
     }
 }

@@ -1,0 +1,159 @@
+//! Why a video or a folder of frames cannot be read or written, as values: sizes,
+//! counts, the frames' paths, the system's own error and the words ffmpeg said; the
+//! sentence is made only by `Display`, where the error is printed.
+
+use std::path::{Path, PathBuf};
+
+use crate::study::vision::TracksError;
+
+/// Why the video or folder `file` cannot be read (or written): `{file}: {what}`.
+#[derive(Debug, thiserror::Error)]
+#[error("{}: {what}", file.display())]
+pub struct VideoError {
+    pub file: PathBuf,
+    pub what: VideoProblem,
+}
+
+impl VideoError {
+    /// `what` is wrong with the video or folder `file`.
+    pub fn new(file: &Path, what: impl Into<VideoProblem>) -> VideoError {
+        VideoError {
+            file: file.to_path_buf(),
+            what: what.into(),
+        }
+    }
+}
+
+/// The install hint when ffmpeg or ffprobe is missing.
+pub const INSTALL_FFMPEG: &str = "reading a video needs ffmpeg and ffprobe, which are not installed (Debian/Ubuntu: apt-get install ffmpeg; macOS: brew install ffmpeg); a folder of numbered PNG/JPEG frames needs neither";
+
+/// What is wrong with a video or folder (the file itself is named by `VideoError`).
+#[derive(Debug, thiserror::Error)]
+pub enum VideoProblem {
+    #[error("{INSTALL_FFMPEG}")]
+    NoFfmpeg,
+    /// `program` (ffmpeg, ffprobe) is installed but could not be started.
+    #[error("cannot run {program}: {error}")]
+    CannotRun {
+        program: &'static str,
+        error: std::io::Error,
+    },
+    #[error("cannot open: {0}")]
+    Open(std::io::Error),
+    #[error("is not a regular file, expected a video or a folder of frames")]
+    NotRegular,
+    #[error("is empty (0 bytes), expected a video")]
+    Empty,
+    #[error(
+        "is a still image, not a video; give a video, or a folder of numbered frames (frame0001.png, …)"
+    )]
+    StillImage,
+    /// ffprobe could not read the file; its last line, if it said one.
+    #[error(
+        "is not a video ffmpeg can read (corrupt, truncated or another kind of file){}",
+        ffprobe_says.as_ref().map(|s| format!(": ffprobe says '{s}'")).unwrap_or_default()
+    )]
+    Unreadable { ffprobe_says: Option<String> },
+    #[error("has no video, only audio ({codec}), expected a video")]
+    OnlyAudio { codec: String },
+    #[error("has no video stream, expected a video")]
+    NoVideoStream,
+    #[error(
+        "is a still image ({codec}), not a video; give a video, or a folder of numbered frames"
+    )]
+    StillVideo { codec: String },
+    /// Frames of `width × height` px, beyond 16 … `max_side` px a side.
+    #[error("frames of {width}×{height} pixels, allowed 16 to {max_side} on each side")]
+    FrameSide {
+        width: usize,
+        height: usize,
+        max_side: usize,
+    },
+    /// A video of more than `max_pixels` pixels over all its frames (`duration`, s).
+    #[error(
+        "{width}×{height} pixels × {frames} frames{} is too much video to track, allowed at most {max_pixels:.0e} pixels (about 100 s of 1080p at 240 frames/s); cut the clip to the collision first, e.g. ffmpeg -ss START -t 5 -i VIDEO -c copy clip.mp4",
+        duration.map(|d| format!(" ({d:.0} s)")).unwrap_or_default()
+    )]
+    TooMuchVideo {
+        width: usize,
+        height: usize,
+        frames: u64,
+        duration: Option<f64>,
+        max_pixels: f64,
+    },
+    /// ffmpeg decoded `decoded` frames of the `expected`; its last line, if any.
+    #[error(
+        "only {decoded} of {expected} frames could be decoded: the file is truncated or damaged{}",
+        ffmpeg_says.as_ref().map(|s| format!(": ffmpeg says '{s}'")).unwrap_or_default()
+    )]
+    Undecodable {
+        decoded: u64,
+        expected: u64,
+        ffmpeg_says: Option<String>,
+    },
+    #[error("cannot read the folder: {0}")]
+    Folder(std::io::Error),
+    #[error(
+        "{} has no frame number in its name, expected numbered frames (frame0001.png, …)",
+        frame.display()
+    )]
+    NoFrameNumber { frame: PathBuf },
+    #[error(
+        "{} and {} have the same frame number {number}",
+        first.display(),
+        second.display()
+    )]
+    SameFrameNumber {
+        first: PathBuf,
+        second: PathBuf,
+        number: u64,
+    },
+    #[error(
+        "holds {frames} PNG/JPEG frame{}, expected a folder of numbered frames (at least two)",
+        if *frames == 1 { "" } else { "s" }
+    )]
+    TooFewImages { frames: usize },
+    /// A folder of `frames` frames of `width × height` px, beyond the limits.
+    #[error(
+        "{frames} frames of {width}×{height} pixels is too much to track, allowed at most {max_pixels:.0e} pixels and {max_side} px a side"
+    )]
+    FolderTooLarge {
+        frames: usize,
+        width: usize,
+        height: usize,
+        max_pixels: f64,
+        max_side: usize,
+    },
+    /// A frame of `size` px in a folder whose first frame is `first` px.
+    #[error("is {}×{}, the first frame {}×{}", size.0, size.1, first.0, first.1)]
+    FrameSize {
+        size: (usize, usize),
+        first: (usize, usize),
+    },
+    #[error("cannot read the image: {0}")]
+    ReadImage(image::ImageError),
+    #[error("cannot write the image: {0}")]
+    WriteImage(image::ImageError),
+    #[error("a folder of frames says no frame rate; give it with --fps (e.g. --fps 240)")]
+    NoRate,
+    #[error("holds {frames} frame(s), expected a video")]
+    TooFewFrames { frames: usize },
+    #[error(transparent)]
+    Tracks(#[from] TracksError),
+    /// Waiting for ffmpeg failed.
+    #[error("ffmpeg: {0}")]
+    Ffmpeg(std::io::Error),
+    /// ffmpeg ended with an error; what it wrote to its stderr.
+    #[error("ffmpeg could not encode: {ffmpeg_says}")]
+    Encode { ffmpeg_says: String },
+}
+
+impl VideoProblem {
+    /// `program` could not be started: not installed, or `error`.
+    pub fn cannot_run(program: &'static str, error: std::io::Error) -> VideoProblem {
+        match error.kind() {
+            std::io::ErrorKind::NotFound => VideoProblem::NoFfmpeg,
+            _ => VideoProblem::CannotRun { program, error },
+        }
+    }
+}
