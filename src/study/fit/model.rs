@@ -79,7 +79,8 @@ pub struct ModelFit {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub scale: Option<ScalePart>,
     /// The line fits' μ_k,cm and μ_k,t where they disagree ([`LineFit::disagree`]):
-    /// the scene's k (b or R) does not fit the data, and there is no verdict.
+    /// the scene's k (b or R) does not fit the data, and there is no verdict. Set by
+    /// `fit_all`, which has the line fits.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub lines_disagree: Option<(f64, f64)>,
 }
@@ -523,7 +524,6 @@ pub(super) fn scored_fit_within(
         scatter: data_scatter(m, target == Target::Position),
         every,
         scale,
-        // Set by `fits`, which has the line fits.
         lines_disagree: None,
     }))
 }
