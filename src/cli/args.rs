@@ -69,16 +69,16 @@ pub struct DataArgs {
     /// The length one pixel shows, for a video track in pixels (a Tracker or Logger Pro
     /// file whose video was not calibrated; e.g. 1.105mm for a 1 m ruler 905 pixels
     /// long) [default: the file's calibration].
-    #[arg(long, value_name = "LENGTH", value_parser = length, global = true, conflicts_with = "length_unit")]
+    #[arg(long, value_name = "LENGTH", value_parser = length, allow_hyphen_values = true, global = true, conflicts_with = "length_unit")]
     pub scale: Option<f64>,
     /// Half-width of the local fit that derives velocities from positions (e.g. 20ms)
     /// [default: chosen from the frame rate and the scatter].
-    #[arg(long, value_name = "T", value_parser = time, global = true)]
+    #[arg(long, value_name = "T", value_parser = time, allow_hyphen_values = true, global = true)]
     pub window: Option<f64>,
     /// Frames per second of a video (`track`, `--data VIDEO`) [default: a slow-motion
     /// capture rate in the file's metadata, else the container's; a folder of frames
     /// needs it].
-    #[arg(long, value_name = "F", global = true,
+    #[arg(long, value_name = "F", global = true, allow_negative_numbers = true,
           value_parser = super::track_args::positive("frames per second", 1e5))]
     pub fps: Option<f64>,
 }

@@ -13,14 +13,16 @@ use serde::Serialize;
 use super::args::{DataArgs, DataCmdArgs, DataFormat, SceneArgs};
 use super::error::CliError;
 use super::open::reading_of;
-use crate::input::data::{Report, inspect};
+use crate::input::data::{Notes, Report, UnitNote, inspect};
 use crate::settings::units::{Dimension, show_small, significant};
+use crate::study::vision::write::SCALE_COMMENT;
 
 /// Reads each file with the data options and reports it; a video (or a folder of
 /// frames) is tracked for the scene's R first, its tracks read as the file.
 pub fn run(args: &DataCmdArgs, scene: &SceneArgs, data: &DataArgs) -> Result<String, CliError> {
     let (reading, derive) = reading_of(data)?;
     let mut reports = Vec::new();
+    let mut kinds = Vec::new();
     for path in &args.files {
         let video = super::video_data::is_video(path);
         let text = if video {
@@ -38,7 +40,10 @@ pub fn run(args: &DataCmdArgs, scene: &SceneArgs, data: &DataArgs) -> Result<Str
             ..reading.clone()
         };
         let file = path.display().to_string();
-        let report = inspect(&text, &file, &reading, &derive)?;
+        let mut report = inspect(&text, &file, &reading, &derive)?;
+        if video {
+            report.notes = video_notes(&text, report.notes);
+        }
         // What the lab would take from the file: the same rule as `fit` and the app.
         let scene_values = crate::input::data::load(&text, &file, &reading, &derive)
             .map(|series| {
@@ -49,18 +54,75 @@ pub fn run(args: &DataCmdArgs, scene: &SceneArgs, data: &DataArgs) -> Result<Str
                     .collect()
             })
             .unwrap_or_default();
+        kinds.push((file.clone(), report.holds_velocities()));
         reports.push(DataReport {
             report,
             scene_values,
             assumed: ["mass_left", "mass_right"],
         });
     }
+    super::open::options_apply(data, &kinds)?;
     Ok(match args.format {
         DataFormat::Json => {
             serde_json::to_string_pretty(&reports).expect("a report serializes") + "\n"
         }
         DataFormat::Table => reports.iter().map(describe).collect::<Vec<_>>().join("\n"),
     })
+}
+
+/// What a video's tracks say about themselves (read from the text groovelab wrote for
+/// them, not a Tracker file's: "none stated" would be wrong): tracked by groovelab,
+/// times from its frame rate, metres from the scale the ball's radius gives in the
+/// frames (or `--scale`).
+fn video_notes(text: &str, notes: Notes) -> Notes {
+    let comment = |start: &str| {
+        text.lines()
+            .take_while(|l| l.starts_with('#'))
+            .find_map(|l| l.strip_prefix('#')?.trim().strip_prefix(start))
+            .map(str::trim)
+    };
+    let rate = comment("frame rate ");
+    let radius = comment("scene radius =");
+    let scale = comment(SCALE_COMMENT.trim_start_matches('#').trim());
+    let units = notes
+        .units
+        .into_iter()
+        .map(|u| {
+            let how = match (u.quantity, rate, radius, scale) {
+                ("time", Some(rate), ..) => format!("the video's frames ({rate})"),
+                ("length", _, Some(r), Some(s)) => {
+                    format!(
+                        "the scale from the ball's radius R = {r} in the frames ({})",
+                        shown_scale(s)
+                    )
+                }
+                ("length", ..) => "the scale given (--scale)".into(),
+                _ => u.how,
+            };
+            UnitNote { how, ..u }
+        })
+        .collect();
+    Notes {
+        format: "video tracked by groovelab".into(),
+        units,
+        ..notes
+    }
+}
+
+/// A scale comment's `S ± σ px/m` to the digits its ± warrants (as written, if not).
+fn shown_scale(text: &str) -> String {
+    let numbers: Vec<f64> = text
+        .trim_end_matches("px/m")
+        .split('±')
+        .filter_map(|n| n.trim().parse().ok())
+        .collect();
+    match numbers[..] {
+        [s, se] => {
+            let (s, se) = crate::settings::units::with_uncertainty(s, se, 2);
+            format!("{s} ± {se} px/m")
+        }
+        _ => text.to_string(),
+    }
 }
 
 /// One file's report and the scene values it gives.
@@ -128,33 +190,7 @@ pub fn describe(shown: &DataReport) -> String {
     for u in &r.notes.units {
         let _ = writeln!(s, "  {} in {}: {}", u.quantity, u.unit, u.how);
     }
-    if r.missing.is_empty() {
-        s += "  no frames missing\n";
-    } else {
-        let total: usize = r.missing.iter().map(|g| g.frames).sum();
-        let runs: Vec<String> = r
-            .missing
-            .iter()
-            .take(5)
-            .map(|g| {
-                format!(
-                    "{} at t = {:.4} … {:.4} s ({})",
-                    g.frames, g.from, g.to, g.why
-                )
-            })
-            .collect();
-        let more = r.missing.len().saturating_sub(5);
-        let _ = writeln!(
-            s,
-            "  {total} frames missing: {}{}",
-            runs.join(", "),
-            if more > 0 {
-                format!(", and {more} more runs")
-            } else {
-                String::new()
-            }
-        );
-    }
+    s += &missing_line(&r.missing);
     if let Some(sc) = r.scatter {
         let _ = writeln!(
             s,
@@ -184,6 +220,39 @@ pub fn describe(shown: &DataReport) -> String {
     }
     let _ = writeln!(s, "  {}", r.impact_note);
     s += &scene_line(&shown.scene_values);
+    s
+}
+
+/// "  no frames missing", or how many and where (the first five runs).
+fn missing_line(missing: &[crate::input::data::Gap]) -> String {
+    let mut s = String::new();
+    if missing.is_empty() {
+        s += "  no frames missing\n";
+    } else {
+        let total: usize = missing.iter().map(|g| g.frames).sum();
+        let runs: Vec<String> = missing
+            .iter()
+            .take(5)
+            .map(|g| {
+                format!(
+                    "{} at t = {:.4} … {:.4} s ({})",
+                    g.frames, g.from, g.to, g.why
+                )
+            })
+            .collect();
+        let more = missing.len().saturating_sub(5);
+        let _ = writeln!(
+            s,
+            "  {total} frame{} missing: {}{}",
+            if total == 1 { "" } else { "s" },
+            runs.join(", "),
+            if more > 0 {
+                format!(", and {more} more runs")
+            } else {
+                String::new()
+            }
+        );
+    }
     s
 }
 

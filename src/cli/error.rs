@@ -140,6 +140,14 @@ pub enum Usage {
         data = Flag("data")
     )]
     WithoutData { flag: Flag },
+    /// A data option for what none of the files given holds (`--length-unit` for
+    /// velocities, `--speed-unit` for a position track).
+    #[error("{flag} does not apply to {file}: it holds {holds}")]
+    NotForFile {
+        flag: Flag,
+        file: String,
+        holds: &'static str,
+    },
     #[error("{flag} is not used by the {} method, allowed only with {allowed}", method.name())]
     NotForMethod {
         flag: Flag,

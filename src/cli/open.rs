@@ -110,6 +110,8 @@ fn series_of(texts: &[(String, String)], args: &DataArgs) -> Result<(Series, Sce
         _ => unreachable!("one or two files"),
     }?;
     let file = texts[0].0.clone();
+    let velocities = matches!(series, Series::Velocities(_));
+    options_apply(args, &[(file.clone(), velocities)])?;
     let m = match &series {
         Series::Velocities(m) | Series::Track(m, _) => m,
     };
@@ -124,6 +126,43 @@ fn series_of(texts: &[(String, String)], args: &DataArgs) -> Result<(Series, Sce
         crate::input::data::scene_of(text, file)?
     };
     Ok((series, own_scene))
+}
+
+/// The data options for what none of the files holds are refused: `files` are each
+/// file's name and whether it holds velocities (else a position track). An option
+/// that applies to one of them is taken (`data` reads several files with one set).
+pub fn options_apply(args: &DataArgs, files: &[(String, bool)]) -> Result<(), CliError> {
+    const VELOCITIES: &str = "velocities (t, v_cm, v_t), whose speeds --speed-unit reads";
+    const TRACK: &str =
+        "a position track (t, x, y), whose lengths --length-unit (or --scale, for pixels) reads";
+    let for_tracks = [
+        ("length_unit", args.length_unit.is_some()),
+        ("scale", args.scale.is_some()),
+        ("track", !args.track.is_empty()),
+        ("window", args.window.is_some()),
+    ];
+    let refused = |velocities: bool, id: &'static str, holds: &'static str| match files
+        .iter()
+        .find(|(_, v)| *v == velocities)
+    {
+        Some((file, _)) if files.iter().all(|(_, v)| *v == velocities) => {
+            Err(CliError::from(super::error::Usage::NotForFile {
+                flag: Flag(id),
+                file: file.clone(),
+                holds,
+            }))
+        }
+        _ => Ok(()),
+    };
+    if args.speed_unit.is_some() {
+        refused(false, "speed_unit", TRACK)?;
+    }
+    for (id, given) in for_tracks {
+        if given {
+            refused(true, id, VELOCITIES)?;
+        }
+    }
+    Ok(())
 }
 
 /// How the data options say to read a file, and to derive velocities from a track.

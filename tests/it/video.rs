@@ -492,6 +492,19 @@ fn frames_without_a_ball_or_with_three_are_refused() {
 }
 
 #[test]
+fn two_frames_are_too_few_not_no_ball() {
+    // The balls are in both frames: once "no ball found in 2 frames".
+    let look = small_look();
+    let two = dir("two");
+    write_pngs(&two, &small_frames()[..2], &look, &[]);
+    refused(
+        &two,
+        &["--fps", "100"],
+        "only 2 frames, at least 3 needed: a ball is a blob seen in 3 frames or more",
+    );
+}
+
+#[test]
 fn files_that_are_no_video_are_refused_with_one_line() {
     let d = dir("bad");
     let look = small_look();

@@ -91,7 +91,17 @@ fn a_folder_of_frames_is_data_for_data_and_fit_and_is_kept_in_the_cache() {
     let c = cache("data-fit");
     let (code, out, err) = run(&["data", dir, "--fps", "100", "--radius", "2.75cm"], &c);
     assert_eq!(code, 0, "{err}");
-    assert!(out.contains("Tracker multi-track, position track"), "{out}");
+    // Said as what it is: not a Tracker file with no units stated.
+    assert!(
+        out.contains("video tracked by groovelab, position track")
+            && out.contains(
+                "length in m: the scale from the ball's radius R = 2.75 cm in the frames ("
+            )
+            && out.contains("time in s: the video's frames (100 frames/s: given (--fps)")
+            && !out.contains("Tracker")
+            && !out.contains("none stated"),
+        "{out}"
+    );
     assert!(out.contains("49 frames at 100 frames/s"), "{out}");
     // Tracked once: the text --data reads and the app's pictures, in the cache.
     let kept: Vec<String> = std::fs::read_dir(c.join("groovelab/tracks"))

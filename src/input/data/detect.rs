@@ -18,6 +18,9 @@ pub fn read_with_notes(
     reading: &Reading,
 ) -> Result<(RawSeries, Notes), DataError> {
     let (raw, notes) = read_any(text, file, reading)?;
+    if let RawSeries::Positions(t) = &raw {
+        super::roles::swapped(t).map_err(|e| DataError::new(file, e))?;
+    }
     let raw = match raw {
         RawSeries::Positions(t) => RawSeries::Positions(super::sigmas::with_sigmas(
             text,

@@ -4,7 +4,8 @@
 use super::notes::UnitNote;
 use super::options::Reading;
 use super::scales::{
-    FASTEST_BALL, LONGEST_FRAME, SLOWEST_BALL, SPEEDS, TIMES, fitting, frame_spacing,
+    FASTEST_BALL, FASTEST_SPIN_CHANGE, LONGEST_FRAME, SLOWEST_BALL, SPEEDS, TIMES,
+    TYPICAL_SPIN_CHANGE, fitting, frame_spacing, steepest_change,
 };
 use crate::settings::units::significant;
 
@@ -36,12 +37,22 @@ pub enum Misfit {
         as_unit: f64,
         unit: &'static str,
     },
+    /// v_t changing by up to `steepest` (the file's unit per s), `si` m/s² as read:
+    /// beyond any ball's spin; `as_unit` m/s² read as `unit`.
+    SpinChange {
+        steepest: f64,
+        si: f64,
+        as_unit: f64,
+        unit: &'static str,
+    },
 }
 
 impl Misfit {
     fn unit(&self) -> &'static str {
         match self {
-            Misfit::Times { unit, .. } | Misfit::Speeds { unit, .. } => unit,
+            Misfit::Times { unit, .. }
+            | Misfit::Speeds { unit, .. }
+            | Misfit::SpinChange { unit, .. } => unit,
         }
     }
 
@@ -49,7 +60,9 @@ impl Misfit {
     fn flag(&self) -> String {
         match self {
             Misfit::Times { unit, .. } => format!("--time-unit {unit}"),
-            Misfit::Speeds { unit, .. } => format!("--speed-unit {unit}"),
+            Misfit::Speeds { unit, .. } | Misfit::SpinChange { unit, .. } => {
+                format!("--speed-unit {unit}")
+            }
         }
     }
 
@@ -57,7 +70,9 @@ impl Misfit {
     fn header(&self) -> Vec<String> {
         match self {
             Misfit::Times { unit, .. } => vec![format!("t ({unit})")],
-            Misfit::Speeds { unit, .. } => vec![format!("v_cm ({unit})"), format!("v_t ({unit})")],
+            Misfit::Speeds { unit, .. } | Misfit::SpinChange { unit, .. } => {
+                vec![format!("v_cm ({unit})"), format!("v_t ({unit})")]
+            }
         }
     }
 
@@ -82,6 +97,19 @@ impl Misfit {
                 "speeds up to {} (as m/s {} any ball in a groove; as {unit} {} m/s)",
                 significant(fastest, 3),
                 if beyond { "beyond" } else { "slower than" },
+                significant(as_unit, 3)
+            ),
+            Misfit::SpinChange {
+                steepest,
+                si,
+                as_unit,
+                unit,
+            } => format!(
+                "v_t changing by up to {} per s (as m/s {} m/s², {}× g, beyond the {:.0}× g at most of any ball in a groove; as {unit} {} m/s²)",
+                significant(steepest, 3),
+                significant(si, 3),
+                significant(si / G, 3),
+                FASTEST_SPIN_CHANGE / G,
                 significant(as_unit, 3)
             ),
         }
@@ -161,7 +189,9 @@ impl Units {
 
     /// Numbers that are plainly not in the units they were read in, whether a unit was
     /// stated or assumed: frames a second or more apart (ms, not s), speeds of 10 m/s
-    /// or more (cm/s, not m/s) or all below 1 mm/s (m/s read as mm/s). The error says
+    /// or more (cm/s, not m/s) or all below 1 mm/s (m/s read as mm/s), or a spin that
+    /// changes faster than friction can change it (a slow ball's cm/s read as m/s,
+    /// [`FASTEST_SPIN_CHANGE`]). The error says
     /// what the numbers look like and names the unit that fits and its option.
     pub(super) fn check_plausible(
         &self,
@@ -191,6 +221,8 @@ impl Units {
                 as_unit: fastest / self.v_cm.0 * unit_factor_of(&SPEEDS, unit),
                 unit,
             });
+        } else if let Some(misfit) = self.spin_change(t, v_t, fastest) {
+            misfits.push(misfit);
         }
         if misfits.is_empty() {
             return Ok(());
@@ -202,6 +234,27 @@ impl Units {
         Err(Implausible { misfits, stated })
     }
 }
+
+impl Units {
+    /// v_t changing faster than any ball's spin can (a stated or assumed speed unit too
+    /// large: cm/s read as m/s, which the speeds alone do not show for a ball slower
+    /// than 10 cm/s), and the speed unit under which it would not, the speeds
+    /// (`fastest`, m/s as read) still of a ball in a groove.
+    fn spin_change(&self, t: &[f64], v_t: &[f64], fastest: f64) -> Option<Misfit> {
+        let si = steepest_change(t, v_t).filter(|&a| a > FASTEST_SPIN_CHANGE)?;
+        let fits = |a: f64| a < FASTEST_SPIN_CHANGE && fastest * a / si >= SLOWEST_BALL;
+        let unit = fitting(&SPEEDS, self.v_t.0, si, TYPICAL_SPIN_CHANGE, fits)?;
+        Some(Misfit::SpinChange {
+            steepest: si / self.v_t.0,
+            si,
+            as_unit: si / self.v_t.0 * unit_factor_of(&SPEEDS, unit),
+            unit,
+        })
+    }
+}
+
+/// Standard gravity (m/s²), the scale a change of speed is told in.
+const G: f64 = 9.806_65;
 
 /// The SI factor of `name` among `units`.
 fn unit_factor_of(units: &[(&'static str, f64)], name: &str) -> f64 {

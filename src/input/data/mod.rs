@@ -13,6 +13,7 @@ mod options;
 mod positions;
 mod problem;
 mod report;
+mod roles;
 mod scales;
 mod scene;
 mod sigmas;
@@ -70,6 +71,7 @@ pub fn load_pair(
     let track = ball
         .with_mark(&rim)
         .map_err(|what| DataError::new(&mark.0, what))?;
+    roles::swapped(&track).map_err(|e| DataError::new(&centre.0, e))?;
     prepare(RawSeries::Positions(track), &centre.0, reading, opts)
 }
 

@@ -7,6 +7,7 @@
 use super::layout::LayoutError;
 use super::misfit::Implausible;
 use super::options::MAX_ROWS;
+use super::roles::Swapped;
 use super::scales::ScaleError;
 use super::xml::XmlError;
 use crate::settings::params::{Key, PARAMS};
@@ -54,6 +55,10 @@ pub enum DataProblem {
     NoCommonFrame(#[from] NoCommonFrame),
     #[error(transparent)]
     Track(#[from] TrackError),
+    #[error(transparent)]
+    ImpactOutside(#[from] ImpactOutside),
+    #[error(transparent)]
+    Swapped(#[from] Swapped),
     #[error(
         "an XML file, but neither a Tracker project (.trk) nor a Logger Pro file (.cmbl), expected one of those or a table of t and x (and y), or t, v_cm and v_t"
     )]
@@ -261,3 +266,17 @@ pub struct TooFewBefore {
 /// Fewest frames up to the first impact (a frame at it counts) a velocity file needs:
 /// the approach must be seen, not only guessed from one frame.
 pub(super) const FRAMES_BEFORE: usize = 2;
+
+/// `--impact-at` outside a velocity file's times (s).
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[error(
+    "--impact-at {} lies outside the file's times, t = {} … {} s: allowed a time within them",
+    crate::settings::units::show_exact(*at, crate::settings::units::Dimension::Time),
+    crate::settings::units::significant(*first, 6),
+    crate::settings::units::significant(*last, 6)
+)]
+pub struct ImpactOutside {
+    pub at: f64,
+    pub first: f64,
+    pub last: f64,
+}

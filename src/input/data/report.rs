@@ -52,6 +52,13 @@ pub struct Report {
     pub impact_note: String,
 }
 
+impl Report {
+    /// True when the file holds velocities (else a position track).
+    pub fn holds_velocities(&self) -> bool {
+        self.kind == "velocities"
+    }
+}
+
 /// A run of missing frames.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Gap {

@@ -18,6 +18,74 @@ pub const FASTEST_BALL: f64 = 10.0;
 /// in a length unit too small (metres read as mm).
 pub const SLOWEST_BALL: f64 = 1e-3;
 
+/// The fastest change of a ball's spin speed v_t (m/s²): in a groove it changes only by
+/// kinetic friction, at (5/2) k μ_k g with k ≤ 1 (physics.md §3), so 10 g would need
+/// μ_k ≥ 4, beyond any pair of solid surfaces (rubber on dry concrete is about 1); the
+/// impact, a force through the centre, leaves v_t as it was. A file in cm/s read as m/s
+/// shows a hundred times the real change (1 to 3 m/s² in the lab: 100 to 300 m/s²).
+pub const FASTEST_SPIN_CHANGE: f64 = 10.0 * 9.806_65;
+
+/// A change of v_t a ball in this experiment typically shows while it slides (m/s²):
+/// of the speed units a file may be in, the one that brings the change nearest to it
+/// is named.
+pub const TYPICAL_SPIN_CHANGE: f64 = 2.0;
+
+/// The shortest span (s) over which [`steepest_change`] fits a line: long enough that
+/// a tracker's scatter (0.1 m/s between frames at 240 frames/s) shows as a few m/s²,
+/// short enough to see a slow ball's slide (a few hundredths of a second).
+const CHANGE_SPAN: f64 = 0.02;
+
+/// The steepest change of `v` over time `t` (|dv/dt|, units of v per s): the largest
+/// slope of a least-squares line through the points of any stretch of at least
+/// [`CHANGE_SPAN`] and two frame intervals (at most 17 points of it, evenly spaced,
+/// in a very dense file), each point the median of itself and its neighbours, so
+/// that one glitch (a tracker's jump up and back) is no change while a ramp (a slow
+/// ball's slide, two frames at 60 frames/s) keeps every value. `None` with fewer than
+/// three points.
+pub fn steepest_change(t: &[f64], v: &[f64]) -> Option<f64> {
+    let n = t.len().min(v.len());
+    let v: Vec<f64> = (0..n)
+        .map(|k| {
+            let mut three = [v[k.saturating_sub(1)], v[k], v[(k + 1).min(n - 1)]];
+            three.sort_by(f64::total_cmp);
+            three[1]
+        })
+        .collect();
+    let mut steepest: Option<f64> = None;
+    let mut j = 0;
+    for i in 0..n {
+        j = j.max(i + 2);
+        while j < n && t[j] - t[i] < CHANGE_SPAN {
+            j += 1;
+        }
+        if j >= n {
+            break;
+        }
+        let stride = (j - i).div_ceil(16);
+        let points: Vec<(f64, f64)> = (i..=j)
+            .step_by(stride)
+            .map(|k| (t[k] - t[i], v[k]))
+            .collect();
+        let s = slope(&points).abs();
+        if s.is_finite() && steepest.is_none_or(|x| s > x) {
+            steepest = Some(s);
+        }
+    }
+    steepest
+}
+
+/// The slope of the least-squares line through `points` (t, v).
+fn slope(points: &[(f64, f64)]) -> f64 {
+    let m = points.len() as f64;
+    let (mt, mv) = points
+        .iter()
+        .fold((0.0, 0.0), |(a, b), &(x, y)| (a + x / m, b + y / m));
+    let (sxy, sxx) = points.iter().fold((0.0, 0.0), |(a, b), &(x, y)| {
+        (a + (x - mt) * (y - mv), b + (x - mt) * (x - mt))
+    });
+    sxy / sxx
+}
+
 /// A speed a ball in this experiment typically has (m/s): of the length units a file
 /// may be in, the one that brings the numbers nearest to it is named.
 const TYPICAL_SPEED: f64 = 0.5;
@@ -125,8 +193,12 @@ pub enum ScaleError {
         by: Option<&'static str>,
         unit: Option<&'static str>,
     },
-    /// No unit given, and as metres the ball is too fast; `unit` fits.
-    LengthsNotMetres { speed: f64, unit: &'static str },
+    /// No unit given, and as metres the ball is too fast; `unit`, if any, fits (the
+    /// numbers may be pixels of a video never calibrated too: `--scale` is named).
+    LengthsNotMetres {
+        speed: f64,
+        unit: Option<&'static str>,
+    },
     /// In the units given the ball is too fast; `unit`, if any, fits.
     TooFast {
         frame: f64,
@@ -173,13 +245,26 @@ impl fmt::Display for ScaleError {
                     significant(speed, 3),
                 )
             }
-            ScaleError::LengthsNotMetres { speed, unit } => write!(
-                f,
-                "the header gives no length unit and the positions do not look like metres: as m the ball approaches at {} m/s (as cm {} m/s, as mm {} m/s); if they are {unit}, give --length-unit {unit} (or units in the header: x ({unit}), y ({unit}))",
-                significant(speed, 3),
-                significant(speed * 1e-2, 3),
-                significant(speed * 1e-3, 3),
-            ),
+            ScaleError::LengthsNotMetres { speed, unit } => {
+                let named = match unit {
+                    Some(u) => format!(
+                        "if they are {u}, give --length-unit {u} (or units in the header: x ({u}), y ({u})); if they are pixels"
+                    ),
+                    None => "they are not m, cm or mm: if they are pixels".into(),
+                };
+                write!(
+                    f,
+                    "the header gives no length unit and the positions do not look like metres: as m the ball approaches at {} m/s (as cm {} m/s, as mm {} m/s); {named} of a video never calibrated, give the length one pixel shows with --scale (e.g. --scale 0.5mm){}",
+                    significant(speed, 3),
+                    significant(speed * 1e-2, 3),
+                    significant(speed * 1e-3, 3),
+                    if unit.is_none() {
+                        ", or their unit with --length-unit"
+                    } else {
+                        ""
+                    }
+                )
+            }
             ScaleError::TooFast {
                 frame,
                 speed,
@@ -235,7 +320,6 @@ pub fn check_track(track: &Track, given: &Given) -> Result<(), ScaleError> {
         return Ok(());
     }
     if l_by.is_none() && t_by.is_none() {
-        let unit = unit.unwrap_or("mm");
         return Err(ScaleError::LengthsNotMetres { speed, unit });
     }
     Err(ScaleError::TooFast {
@@ -270,6 +354,20 @@ mod tests {
             t,
             ..Track::default()
         }
+    }
+
+    #[test]
+    fn the_steepest_change_is_a_lines_slope_and_a_glitch_is_none() {
+        let t: Vec<f64> = (0..50).map(|i| f64::from(i) / 120.0).collect();
+        // Steady for 0.2 s, then falling at 3 units per s.
+        let v: Vec<f64> = t.iter().map(|&t| 1.0 - 3.0 * (t - 0.2).max(0.0)).collect();
+        let s = steepest_change(&t, &v).unwrap();
+        assert!((s - 3.0).abs() < 1e-9, "{s}");
+        // One value up by 5 and back: no change, whatever its size.
+        let mut flat = vec![0.4; 50];
+        flat[25] += 5.0;
+        assert_eq!(steepest_change(&t, &flat), Some(0.0));
+        assert_eq!(steepest_change(&t[..2], &v[..2]), None);
     }
 
     #[test]

@@ -6,7 +6,9 @@
 use super::misfit::Units;
 use super::notes::Notes;
 use super::options::{MAX_ROWS, Reading};
-use super::problem::{DataError, DataProblem, FRAMES_BEFORE, RowError, TooFewBefore};
+use super::problem::{
+    DataError, DataProblem, FRAMES_BEFORE, ImpactOutside, RowError, TooFewBefore,
+};
 use super::table::{Table, clean, number, unit_factor};
 use crate::settings::units::Dimension;
 use crate::study::measured::Measured;
@@ -130,6 +132,9 @@ pub(super) fn without_impact(
     reading: &Reading,
 ) -> Result<(Measured, Notes), DataError> {
     let ((t, v_cm, v_t), units) = columns(table, file, reading)?;
+    units
+        .check_plausible(&t, &v_cm, &v_t)
+        .map_err(|e| DataError::new(file, e))?;
     let notes = Notes {
         format: "table (t, v_cm, v_t)".into(),
         tracks: Vec::new(),
@@ -147,6 +152,12 @@ pub(super) fn read_table(
 ) -> Result<(Measured, Notes), DataError> {
     let err = |what: DataProblem| DataError::new(file, what);
     let ((mut t, mut v_cm, mut v_t), units) = columns(table, file, reading)?;
+    if let Some(at) = reading.impact_at
+        && !(t[0]..=t[t.len() - 1]).contains(&at)
+    {
+        let (first, last) = (t[0], t[t.len() - 1]);
+        return Err(err(ImpactOutside { at, first, last }.into()));
+    }
     let mirrored = turn_if_reversed(&t, &mut v_cm, &mut v_t, reading.impact_at);
     let impact = match reading.impact_at {
         Some(at) => at,
@@ -319,11 +330,27 @@ mod tests {
         let e = parse(&text, "d.csv", &Reading::default()).unwrap_err();
         assert!(e.to_string().contains("at most 1000000"), "{e}");
         let r = Reading {
-            impact_at: Some(-1.7e308),
+            impact_at: Some(1.5e308),
             ..Reading::default()
         };
-        let e = parse("t,v_cm,v_t\n0,1,1\n1e308,1,1\n1.5e308,1,1\n", "d.csv", &r).unwrap_err();
+        let e = parse(
+            "t,v_cm,v_t\n-1.7e308,1,1\n0,1,1\n1.5e308,1,1\n",
+            "d.csv",
+            &r,
+        )
+        .unwrap_err();
         assert!(e.to_string().contains("not finite"), "{e}");
+        // An impact given outside the file's times names the option.
+        let r = Reading {
+            impact_at: Some(1e308),
+            ..Reading::default()
+        };
+        let e = parse("t,v_cm,v_t\n0,1,1\n0.01,1,1\n0.02,1,1\n", "d.csv", &r).unwrap_err();
+        assert!(
+            e.to_string()
+                .contains("--impact-at 1e308 s lies outside the file's times, t = 0 … 0.02 s"),
+            "{e}"
+        );
     }
 
     #[test]

@@ -221,6 +221,25 @@ pub fn sliding_window(m: &Measured) -> Option<(f64, f64)> {
     Some((m.t[first], m.t[*last]))
 }
 
+/// How far apart μ_k,cm and μ_k,t may lie, relative to their mean, beyond their ±,
+/// in data whose scene fits: the paper's own three series put them up to 19 % apart
+/// (b = 4.9 cm: 0.149 and 0.180, each ± 0.004), the line fits' ± leaving out the
+/// correlated errors of neighbouring frames. A wrong k = r/R (b or R) scales their
+/// ratio by (k_wrong/k)²: 2.3 at b = 4 cm for 4.9 cm.
+pub const LINES_APART: f64 = 0.25;
+
+impl LineFit {
+    /// μ_k,cm and μ_k,t when they disagree: by more than twice their combined ± and
+    /// more than [`LINES_APART`] of their mean. `None` without a measured v_t.
+    pub fn disagree(&self) -> Option<(f64, f64)> {
+        let (a, b) = (self.mu_cm, self.mu_t);
+        let apart = (a - b).abs();
+        let se = self.mu_cm_se.hypot(self.mu_t_se);
+        (apart.is_finite() && apart > 2.0 * se && apart > LINES_APART * 0.5 * (a + b).abs())
+            .then_some((a, b))
+    }
+}
+
 /// Line fits of v_cm and v_t over `[from, to]` (default: the sliding phase).
 pub fn line_fit(
     m: &Measured,

@@ -151,15 +151,26 @@ pub fn fit_all(
         }
         w => w,
     };
+    let line_fit = LineFit {
+        given,
+        ..line_fit(m, scene, window)?
+    };
+    // μ_k,cm against μ_k,t: a verdict of every model fit (the same line fits).
+    let lines_disagree = line_fit.disagree();
+    let judged = |f: ModelFit| ModelFit {
+        lines_disagree,
+        ..f
+    };
+    let model_fit = judged((*head.fit).clone());
+    for c in &mut models {
+        c.fit.lines_disagree = lines_disagree;
+    }
     let fits = Fits {
-        line_fit: LineFit {
-            given,
-            ..line_fit(m, scene, window)?
-        },
-        model_fit: (*head.fit).clone(),
+        line_fit,
+        model_fit,
         chosen,
-        mu_alone,
-        velocity_fit,
+        mu_alone: judged(mu_alone),
+        velocity_fit: velocity_fit.map(judged),
         models,
     };
     check_finite(&fits, m, scene)?;

@@ -78,6 +78,11 @@ pub struct ModelFit {
     /// added in quadrature to the fit's own, and this says both parts.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub scale: Option<ScalePart>,
+    /// The line fits' μ_k,cm and μ_k,t where they disagree ([`LineFit::disagree`]):
+    /// the scene's k (b or R) does not fit the data, and there is no verdict. Set by
+    /// `fit_all`, which has the line fits.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub lines_disagree: Option<(f64, f64)>,
 }
 
 impl ModelFit {
@@ -108,6 +113,8 @@ impl ModelFit {
             Agreement::MuNotDetermined
         } else if self.scatter.is_some_and(|s| self.rms > POOR_FIT * s) {
             Agreement::PoorFit
+        } else if self.lines_disagree.is_some() {
+            Agreement::LinesDisagree
         } else if !self.agrees {
             Agreement::Disagrees
         } else if self.indistinguishable_from_rest {
@@ -135,6 +142,9 @@ pub enum Agreement {
     /// does not describe the data (wrong units, wrong scene, another experiment), so
     /// its predicted regime says nothing either.
     PoorFit,
+    /// μ_k from v_cm and from v_t (the line fits) disagree ([`LineFit::disagree`]):
+    /// k = r/R enters them as k and 1/k, so the scene's b or R does not fit the data.
+    LinesDisagree,
 }
 
 /// How many times the data's scatter an RMS residual may be before the fit is poor.
@@ -152,6 +162,7 @@ impl Agreement {
             Agreement::Disagrees => "DISAGREES",
             Agreement::MuNotDetermined => "no verdict",
             Agreement::PoorFit => "POOR FIT",
+            Agreement::LinesDisagree => "μ_k,cm ≠ μ_k,t",
         }
     }
 
@@ -169,6 +180,9 @@ impl Agreement {
             Agreement::PoorFit => {
                 "no verdict: the RMS residual is over 10× the data's scatter, so the model does not describe these data (check the units and the scene)"
             }
+            Agreement::LinesDisagree => {
+                "no verdict: μ_k,cm and μ_k,t of the line fits disagree beyond their ± and by over a quarter, so the scene's b or R does not fit these data (k = r/R enters μ_k,cm as k, μ_k,t as 1/k): check --width and --radius"
+            }
         }
     }
 
@@ -180,6 +194,7 @@ impl Agreement {
             Agreement::Disagrees => "the model does NOT predict what was seen",
             Agreement::MuNotDetermined => "no verdict: μ_k not determined",
             Agreement::PoorFit => "no verdict: RMS ≫ the data's scatter",
+            Agreement::LinesDisagree => "no verdict: μ_k,cm ≠ μ_k,t (b, R?)",
         }
     }
 
@@ -509,6 +524,7 @@ pub(super) fn scored_fit_within(
         scatter: data_scatter(m, target == Target::Position),
         every,
         scale,
+        lines_disagree: None,
     }))
 }
 
@@ -548,6 +564,7 @@ pub(super) mod tests {
             scatter: None,
             every: None,
             scale: None,
+            lines_disagree: None,
         }
     }
 }

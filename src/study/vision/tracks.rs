@@ -17,10 +17,18 @@ pub enum TracksError {
     )]
     NoBall { frames: usize, min_radius: f64 },
     #[error(
+        "only {frames} frame{}, at least {need} needed: a ball is a blob seen in {need} frames or more",
+        if *frames == 1 { "" } else { "s" }
+    )]
+    TooFewFrames { frames: usize, need: usize },
+    #[error(
         "more than two balls in {crowded} of {frames} frames, expected the two colliding balls (or one)"
     )]
     TooMany { crowded: usize, frames: usize },
 }
+
+/// Fewest frames a ball must be seen in to be one (not a passing blob).
+const FEWEST_SEEN: usize = 3;
 
 /// How uncertain the place of a ball's edge is, px, whatever the number of frames:
 /// the gradient's peak sits up to ~0.05 px inside the outline where the ball's
@@ -101,7 +109,13 @@ pub fn tracks(
     }
     // A slot seen in too few frames is a passing blob, not a ball.
     let seen = |s: usize| tracker.frames.iter().filter(|f| f[s].is_ok()).count();
-    let enough = (tracker.frames.len() / 10).max(3);
+    let enough = (tracker.frames.len() / 10).max(FEWEST_SEEN);
+    if c.frames < FEWEST_SEEN {
+        return Err(TracksError::TooFewFrames {
+            frames: c.frames,
+            need: FEWEST_SEEN,
+        });
+    }
     let mut slots: Vec<usize> = (0..2).filter(|&s| seen(s) >= enough).collect();
     if slots.is_empty() {
         return Err(TracksError::NoBall {

@@ -145,8 +145,13 @@ impl Found {
         }
         if self.skipped.frames_skipped > 0 {
             s += &format!(
-                "{} frames missing from the file (its time jumps between {}): nothing filled in, the local fits reach across\n",
+                "{} frame{} missing from the file (its time jumps between {}): nothing filled in, the local fits reach across\n",
                 self.skipped.frames_skipped,
+                if self.skipped.frames_skipped == 1 {
+                    ""
+                } else {
+                    "s"
+                },
                 runs_text(&self.skipped.skipped_gaps)
             );
         }

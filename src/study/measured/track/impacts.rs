@@ -3,15 +3,18 @@
 //! quadratics meet; and why a track cannot be used (`TrackError`, for the whole derivation).
 
 use super::derivative::{Quadratic, quadratic};
-use crate::settings::units::{Dimension, show_small};
+use crate::settings::units::{Dimension, show_exact, show_small, significant};
 
 /// Why a track cannot be used (times in s, speeds in m/s, lengths in m).
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum TrackError {
     #[error(
-        "the given impact at t = {at} s has fewer than 3 frames on one side, at least 3 needed on each"
+        "--impact-at {} leaves fewer than 3 frames on one side of the impact, at least 3 needed on each: allowed a time within the track's, t = {} … {} s, 3 frames from either end",
+        show_exact(*at, Dimension::Time),
+        short(*first),
+        short(*last)
     )]
-    GivenImpactAtAnEnd { at: f64 },
+    GivenImpactAtAnEnd { at: f64, first: f64, last: f64 },
     #[error(
         "no impact found: the centre's velocity never changes sharply (largest change {biggest:.3} m/s, noise {noise:.3} m/s); give its time with --impact-at"
     )]
@@ -21,7 +24,8 @@ pub enum TrackError {
     )]
     ChangeAtTheStart { at: f64 },
     #[error(
-        "no impact found: at t = {at:.4} s the centre's velocity goes from {before:.3} to {after:.3} m/s, an impact slows the ball by at least a third"
+        "no impact found: the sharpest change of the centre's velocity, at t = {at:.4} s, {}; an impact would slow it by at least a third",
+        seen(*before, *after)
     )]
     NoSlowDown { at: f64, before: f64, after: f64 },
     #[error(
@@ -55,6 +59,34 @@ pub enum TrackError {
         need: usize,
         min: usize,
     },
+}
+
+/// A time as a person writes it: 0.25, 1e308.
+fn short(t: f64) -> String {
+    if t != 0.0 && !(1e-3..1e6).contains(&t.abs()) {
+        format!("{t:e}")
+    } else {
+        significant(t, 6)
+    }
+}
+
+/// What a change of the centre's velocity from `before` to `after` (m/s, the file's
+/// x) that is no impact did: started the ball, sped it up, or slowed it a little (a
+/// reversal is an impact: it slows the ball by more than its speed).
+fn seen(before: f64, after: f64) -> String {
+    let (b, a) = (before.abs(), after.abs());
+    if b < 1e-9 {
+        format!("starts the ball from rest to {after:.3} m/s (a push or a release)")
+    } else if a >= b {
+        format!(
+            "speeds the ball up from {before:.3} to {after:.3} m/s (a push, a release or a slope)"
+        )
+    } else {
+        format!(
+            "slows the ball by only {:.0} % (from {before:.3} to {after:.3} m/s)",
+            100.0 * (b - a) / b
+        )
+    }
 }
 
 /// Least-squares slope of a straight line through `ys` over `ts`.
@@ -168,7 +200,11 @@ fn first_impact(
     if let Some(at) = given {
         let i = nearest_frame(ts, at);
         if j[i].1.is_nan() {
-            return Err(TrackError::GivenImpactAtAnEnd { at });
+            return Err(TrackError::GivenImpactAtAnEnd {
+                at,
+                first: ts[0],
+                last: ts[ts.len() - 1],
+            });
         }
         return Ok(i);
     }

@@ -1,0 +1,170 @@
+//! What `data` and the readers say when a file is not what they expect (issue 27): a
+//! track with no impact says what its sharpest change was; swapped centre and mark
+//! tracks are noticed; small messages say what happened.
+
+fn groovelab(args: &[&str]) -> (Option<i32>, String, String) {
+    let out = crate::common::groovelab(args);
+    (
+        out.status.code(),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+/// A plain CSV track (`t,x,y` in s and m) at 100 frames/s of a ball moving at `v1`
+/// for 0.3 s, then at `v2` for 0.3 s (the change at t = 0.3 s, between frames).
+fn two_speeds(v1: f64, v2: f64) -> String {
+    let mut text = String::from("t (s),x (m),y (m)\n");
+    for k in 0..60 {
+        let t = f64::from(k) * 0.01 + 0.005;
+        let x = if t < 0.3 {
+            v1 * t
+        } else {
+            0.3 * v1 + v2 * (t - 0.3)
+        };
+        text += &format!("{t:.3},{x:.6},0.1\n");
+    }
+    text
+}
+
+#[test]
+fn a_track_without_an_impact_says_what_its_sharpest_change_did() {
+    let dir = crate::common::scratch_dir("data_hints", "no-impact");
+    let file = dir.join("track.csv");
+    let f = file.to_str().unwrap();
+    // A push from 0.1 to 0.6 m/s was quoted as if an impact had been seen there.
+    // (The speed after is a line's over frames that straddle the change.)
+    let cases = [
+        (0.1, 0.6, "speeds the ball up from 0.100 to 0.5"),
+        (-0.6, -0.9, "speeds the ball up from -0.600 to -0.8"),
+        (0.6, 0.5, "slows the ball by only 1"),
+    ];
+    for (v1, v2, want) in cases {
+        std::fs::write(&file, two_speeds(v1, v2)).unwrap();
+        let (code, out, err) = groovelab(&["data", f]);
+        assert_eq!(code, Some(0), "{err}");
+        assert!(
+            out.contains(
+                "no impact found: the sharpest change of the centre's velocity, at t = 0."
+            ) && out.contains(want)
+                && out.contains("an impact would slow it by at least a third"),
+            "{v1} → {v2}: {out}"
+        );
+        // fit refuses it with the same words, in one line.
+        let (code, _, err) = groovelab(&["fit", "--preset", "paper-b4.9", "--data", f]);
+        assert_eq!(code, Some(2));
+        assert!(err.contains(want) && err.lines().count() == 1, "{err}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A filmed track of the paper's scene (centre and rim mark, 0.2 mm scatter) as CSV
+/// `t,x,y,x_mark,y_mark`, the two points' columns swapped when `swap`.
+fn filmed_csv(swap: bool, fps: f64, from: f64, to: f64) -> String {
+    use groovelab::study::video::{self, Video};
+    let track = video::track(
+        &crate::common::paper_scene(),
+        &Video {
+            seed: 3,
+            noise: 2e-4,
+            fps,
+            from,
+            to,
+            ..Video::default()
+        },
+    );
+    let (mx, my) = track.mark.clone().expect("a mark");
+    let mut s = String::from("t,x,y,x_mark,y_mark\n");
+    for i in 0..track.t.len() {
+        let (c, m) = ((track.x[i], track.y[i]), (mx[i], my[i]));
+        let (a, b) = if swap { (m, c) } else { (c, m) };
+        s += &format!(
+            "{:.5},{:.6},{:.6},{:.6},{:.6}\n",
+            track.t[i], a.0, a.1, b.0, b.1
+        );
+    }
+    s
+}
+
+#[test]
+fn swapped_centre_and_mark_are_noticed_and_the_right_order_is_not() {
+    let dir = crate::common::scratch_dir("data_hints", "swapped");
+    let file = dir.join("track.csv");
+    let f = file.to_str().unwrap();
+    // The mark strays ~17 mm from a straight line, the centre by its scatter.
+    for (fps, from, to) in [(120.0, -0.2, 0.8), (240.0, -0.1, 0.3), (60.0, -0.3, 1.0)] {
+        std::fs::write(&file, filmed_csv(false, fps, from, to)).unwrap();
+        let (code, _, err) = groovelab(&["data", f]);
+        assert_eq!(code, Some(0), "{fps}: {err}");
+        std::fs::write(&file, filmed_csv(true, fps, from, to)).unwrap();
+        for args in [
+            vec!["data", f],
+            vec!["fit", "--preset", "paper-b4.9", "--data", f],
+        ] {
+            let (code, _, err) = groovelab(&args);
+            assert_eq!(code, Some(2), "{fps}");
+            assert!(
+                err.contains("the track taken for the ball's centre strays")
+                    && err.contains("the two look swapped")
+                    && err.contains("swap the columns")
+                    && err.lines().count() == 1,
+                "{fps}: {err}"
+            );
+        }
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn small_messages_say_what_happened() {
+    let dir = crate::common::scratch_dir("data_hints", "small");
+    // One frame left out (a jump in time): "1 frame missing", not "1 frames".
+    let file = dir.join("gap.csv");
+    let text: String = filmed_csv(false, 120.0, -0.2, 0.8)
+        .lines()
+        .enumerate()
+        .filter(|&(i, _)| i != 60)
+        .map(|(_, l)| format!("{l}\n"))
+        .collect();
+    std::fs::write(&file, text).unwrap();
+    let f = file.to_str().unwrap();
+    let (code, out, err) = groovelab(&["data", f]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(out.contains("  1 frame missing: 1 at t = "), "{out}");
+    let (code, out, err) = groovelab(&["fit", "--preset", "paper-b4.9", "--data", f]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(out.contains("1 frame missing from the file"), "{out}");
+    // An impact given far outside the times names its flag and the times allowed.
+    let (code, _, err) = groovelab(&[
+        "fit",
+        "--preset",
+        "paper-b4.9",
+        "--data",
+        f,
+        "--impact-at",
+        "1e308",
+    ]);
+    assert_eq!(code, Some(2));
+    assert!(
+        err.contains("--impact-at 1e308 s leaves fewer than 3 frames on one side")
+            && err.contains("t = 0 … 1 s")
+            && err.lines().count() == 1,
+        "{err}"
+    );
+    // A negative scale without `=`: the value's error, not "unexpected argument '-1'".
+    for args in [
+        vec!["data", f, "--scale", "-1mm"],
+        vec!["track", f, "--scale", "-1mm"],
+    ] {
+        let (code, _, err) = groovelab(&args);
+        assert_eq!(code, Some(2));
+        assert!(
+            err.contains("'-1mm' is not a pixel's length, expected a length above 0"),
+            "{err}"
+        );
+    }
+    let (code, _, err) = groovelab(&["data", f, "--window", "-1ms"]);
+    assert_eq!(code, Some(2));
+    assert!(err.contains("--window -0.001 s is out of range"), "{err}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
