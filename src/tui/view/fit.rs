@@ -257,7 +257,7 @@ fn model_name(model: &str, theme: &Theme) -> String {
 
 /// A fitted value's symbol from the parameter table: its row's label up to the first
 /// blank (`mu_k` drawn as μ_k where the screen can, `v0`, `e`, `c_rr`).
-fn symbol(parameter: &str, theme: &Theme) -> String {
+pub(super) fn symbol(parameter: &str, theme: &Theme) -> String {
     match crate::settings::params::Key::from_name(parameter) {
         Some(k) => {
             let label = k.param().label;
@@ -298,34 +298,24 @@ fn model_choice_lines(models: &[fit::Candidate], lines: &mut Ranked<'static>, th
         )),
         None => {}
     }
-    if models.iter().any(|c| !c.determined()) {
-        lines.push((
-            0,
-            Line::from(Span::styled(
-                "? a value not determined: never named",
-                theme.dim,
-            )),
-        ));
+    if models.is_empty() {
+        return;
     }
-    // In the order `fit` lists them (`fit::compare_models`): by BIC, lowest first.
+    // In the order `fit` lists them (`fit::compare_models`): by BIC, lowest first; the
+    // rows the room leaves, all of them in the M popup (the header says so, and stays
+    // when no row fits).
     lines.push((
-        0,
-        Line::from(Span::styled("models by BIC, lowest first:", theme.dim)),
+        1,
+        Line::from(Span::styled(
+            format!("models by BIC, lowest first (M: all {}):", models.len()),
+            theme.dim,
+        )),
     ));
     for c in models {
-        let mark = match (c.supported, c.determined()) {
-            (true, _) => "* ",
-            (false, true) => "  ",
-            (false, false) => "? ",
-        };
-        lines.push((
-            0,
-            Line::from(vec![
-                Span::styled(mark, theme.info),
-                Span::styled(g.text(&format!("{:<14}", name(c))), theme.text),
-                Span::styled(format!(" BIC {:>7.1} AIC {:>7.1}", c.bic, c.aic), theme.dim),
-            ]),
-        ));
+        lines.push((0, super::models::row(c, theme)));
+    }
+    if let Some(text) = super::models::legend(models) {
+        lines.push((0, Line::from(Span::styled(text, theme.dim))));
     }
 }
 

@@ -31,6 +31,10 @@ pub fn scroll_max(app: &App, area: Rect, theme: &Theme) -> usize {
             let (head, count, width) = table_layout(app, theme);
             scroll_frame(area, width, head.len(), count).2
         }
+        Some(Layer::Models(_)) => {
+            let (lines, width) = super::models::lines(app, theme);
+            scroll_frame(area, width, 0, lines.len()).2
+        }
         Some(Layer::Picker(_) | Layer::Prompt(_) | Layer::Confirm(_) | Layer::Question(_))
         | None => usize::MAX,
     }
@@ -44,7 +48,7 @@ fn help_lines(width: usize, theme: &Theme) -> Vec<Line<'static>> {
     let text_width = width.saturating_sub(keys_width + 2).max(10);
     let mut lines = Vec::new();
     for b in TABLE {
-        let keys = b.keys.join(" ");
+        let keys = crate::tui::keys::display_keys(b, g.ascii);
         let rows = wrap(Line::from(g.text(b.help)), text_width);
         for (i, row) in rows.into_iter().enumerate() {
             let lead = if i == 0 {
@@ -75,9 +79,9 @@ fn help(first: usize, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let width = help_width(area);
     let lines = help_lines(usize::from(width.saturating_sub(2)), theme);
     let title = if theme.glyphs.ascii {
-        "Keys  (Esc or q closes, up/down pgup/pgdn scroll)"
+        "Keys  (Esc or q closes, up/down PgUp/PgDn scroll; other keys act)"
     } else {
-        "Keys  (Esc or q closes, ↑↓ PgUp PgDn scroll)"
+        "Keys  (Esc or q closes, ↑↓ PgUp PgDn scroll; other keys act)"
     };
     let line = |i: usize| lines[i].clone();
     let source: (usize, &dyn Fn(usize) -> Line<'static>) = (lines.len(), &line);
