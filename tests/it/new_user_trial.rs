@@ -39,7 +39,12 @@ fn every_model_of_the_fit_is_reachable() {
     let mut a = rendered("f M", None);
     assert_eq!(a.mode(), Mode::Models);
     let popup = text(&a, (120, 40), false);
-    let rows = popup.lines().filter(|l| l.contains(" BIC ")).count();
+    let rows = popup
+        .lines()
+        .skip_while(|l| !l.contains("Models by BIC"))
+        .take_while(|l| !l.contains('╰'))
+        .filter(|l| l.contains(" AIC "))
+        .count();
     assert_eq!(rows, n, "{popup}");
     assert!(popup.contains("* = the model the data support"), "{popup}");
     press(&mut a, "esc");

@@ -6,6 +6,7 @@ use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::Widget;
 
+use super::models::symbol;
 use super::panel::{Ranked, block, by_priority, draw_lines};
 use crate::lab::jobs::State;
 use crate::settings::units::{Dimension, show_small, with_uncertainty};
@@ -253,19 +254,6 @@ fn rms(m: &ModelFit) -> String {
 fn model_name(model: &str, theme: &Theme) -> String {
     let names: Vec<String> = model.split('+').map(|p| symbol(p, theme)).collect();
     names.join("+")
-}
-
-/// A fitted value's symbol from the parameter table: its row's label up to the first
-/// blank (`mu_k` drawn as μ_k where the screen can, `v0`, `e`, `c_rr`).
-pub(super) fn symbol(parameter: &str, theme: &Theme) -> String {
-    match crate::settings::params::Key::from_name(parameter) {
-        Some(k) => {
-            let label = k.param().label;
-            let first = label.split(' ').next().unwrap_or(label);
-            first.replace("mu", theme.glyphs.mu)
-        }
-        None => parameter.to_string(),
-    }
 }
 
 /// The candidate models by BIC (lower is better), the one the data support marked;

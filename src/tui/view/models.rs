@@ -14,6 +14,19 @@ use crate::tui::component::{Component, Ctx};
 use crate::tui::layer::Models;
 use crate::tui::theme::Theme;
 
+/// A fitted value's symbol from the parameter table: its row's label up to the first
+/// blank (`mu_k` drawn as μ_k where the screen can, `v0`, `e`, `c_rr`).
+pub(super) fn symbol(parameter: &str, theme: &Theme) -> String {
+    match crate::settings::params::Key::from_name(parameter) {
+        Some(k) => {
+            let label = k.param().label;
+            let first = label.split(' ').next().unwrap_or(label);
+            first.replace("mu", theme.glyphs.mu)
+        }
+        None => parameter.to_string(),
+    }
+}
+
 /// The legend of the marks, or `None` when no row is marked `?`.
 pub(super) fn legend(models: &[Candidate]) -> Option<&'static str> {
     let undetermined = models.iter().any(|c| !c.determined());
@@ -27,7 +40,7 @@ pub(super) fn row(c: &Candidate, theme: &Theme) -> Line<'static> {
     let names: Vec<String> = c
         .parameters
         .iter()
-        .map(|e| super::fit::symbol(e.parameter, theme))
+        .map(|e| symbol(e.parameter, theme))
         .collect();
     let mark = match (c.supported, c.determined()) {
         (true, _) => "* ",

@@ -44,7 +44,13 @@ pub fn scroll_max(app: &App, area: Rect, theme: &Theme) -> usize {
 /// under themselves, then the mouse.
 fn help_lines(width: usize, theme: &Theme) -> Vec<Line<'static>> {
     let g = theme.glyphs;
-    let keys_width = 14;
+    // The widest keys' names (Shift-right PgUp in ASCII), 14 columns at least.
+    let keys_width = TABLE
+        .iter()
+        .map(|b| crate::tui::keys::display_keys(b, g.ascii).chars().count())
+        .max()
+        .unwrap_or(0)
+        .max(14);
     let text_width = width.saturating_sub(keys_width + 2).max(10);
     let mut lines = Vec::new();
     for b in TABLE {
@@ -61,7 +67,8 @@ fn help_lines(width: usize, theme: &Theme) -> Vec<Line<'static>> {
             lines.push(Line::from(spans));
         }
     }
-    let mouse = "Mouse: click a parameter to select it, scroll on it to change it; click or drag on the chart to seek, scroll on it to zoom its time; click a preset to select it, again to load it.";
+    // One line at 200 columns (the whole help then fits 60 rows).
+    let mouse = "Mouse: click a parameter to select it, scroll on it to change it; click or drag the chart to seek, scroll to zoom; click a preset twice to load it.";
     for row in wrap(Line::from(format!(" {mouse}")), width) {
         lines.push(row.style(theme.dim));
     }
