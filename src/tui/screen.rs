@@ -304,6 +304,7 @@ fn component_of(layer: &Layer) -> &dyn Component {
     match layer {
         Layer::Help(help) => help,
         Layer::Table(table) => table,
+        Layer::Models(models) => models,
         Layer::Picker(picker) => picker,
         Layer::Prompt(prompt) => prompt,
         Layer::Confirm(confirm) => confirm,

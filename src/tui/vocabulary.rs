@@ -96,6 +96,8 @@ pub enum Mode {
     Export(Export, Field),
     /// The measured data beside the model's values at those times (scrolls).
     Table,
+    /// The Fit view's candidate models by BIC (scrolls).
+    Models,
     /// Predict, observe, explain: the question before the impact (keys 1, 2, 3).
     Predict,
 }
@@ -192,6 +194,8 @@ pub enum Action {
     ApplyFit,
     Export(Export),
     DataTable,
+    /// Fit view: every candidate model by BIC, in a scrolling popup.
+    ModelsTable,
     /// Predict, observe, explain: ask, play, explain.
     Predict,
     /// Hide (or show) b's value, for a prediction from the picture alone.
@@ -225,6 +229,9 @@ pub enum Handled {
 #[derive(Clone, Debug, PartialEq)]
 pub enum Then {
     Nothing,
+    /// Nothing of the popup's: the key that closed it acts on what lies below (the
+    /// compositor offers it on; the app never sees this).
+    Pass,
     /// A message for the status line.
     Say(String),
     /// Load the library's preset of this index.
@@ -259,6 +266,10 @@ pub const FPS: f64 = 30.0;
 #[derive(Clone, Debug, PartialEq)]
 pub enum Status {
     None,
+    /// The prediction's line: what was predicted, and once the outcome shows, what
+    /// happened beside it (drawn from the prediction, in every view; `Status::None`
+    /// shows it too once the outcome shows).
+    Predicted,
     Info(String),
     Error(String),
 }

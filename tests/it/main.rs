@@ -26,6 +26,7 @@ mod manual;
 mod methods;
 mod motion;
 mod names;
+mod new_user_trial;
 mod numbers;
 mod origins;
 mod params;

@@ -9,7 +9,7 @@ use crate::settings::spec::SceneError;
 use crate::settings::units::{Dimension, show, significant};
 
 use super::{Action, App, Export, Field, ROWS, SPEEDS, Status, View};
-use crate::tui::layer::{DataTable, Help, Layer, Picker, Prompt};
+use crate::tui::layer::{DataTable, Help, Layer, Models, Picker, Prompt};
 use crate::tui::vocabulary::TextTarget;
 
 impl App {
@@ -122,6 +122,7 @@ impl App {
             }
             Action::Help => self.open(Layer::Help(Help::default())),
             Action::DataTable => self.open_data_table(),
+            Action::ModelsTable => self.open_models(),
             Action::Export(kind) => self.ask_export(kind),
             Action::ApplyFit => self.apply_fit(),
             Action::ShowView(view) => self.toggle_view(view),
@@ -307,6 +308,18 @@ impl App {
             .position(|p| p.name == self.lab.preset().name)
             .unwrap_or(0);
         self.open(Layer::Picker(Picker::on(i)));
+    }
+
+    /// The Fit view's models, once its fits are there (and the panel shows them).
+    fn open_models(&mut self) {
+        let ready = matches!(self.fit.fits(), State::Ready(Ok(_)));
+        if ready && self.view == View::Fit && !self.hidden().derived() {
+            self.open(Layer::Models(Models::default()));
+        } else {
+            self.status = Status::Error(
+                "M lists the fit's models: in the Fit view (f), once the fit is there".into(),
+            );
+        }
     }
 
     fn open_data_table(&mut self) {

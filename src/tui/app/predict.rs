@@ -52,7 +52,7 @@ impl App {
         }
         self.t = p.reveal_at;
         self.playing = false;
-        self.status = Status::Info("the outcome beside the prediction (space plays on)".into());
+        self.status = Status::Predicted;
         true
     }
 
@@ -66,7 +66,7 @@ impl App {
         });
         self.t = sol.t_start;
         self.playing = true;
-        self.status = Status::Info("predicted: now watch (space pauses)".into());
+        self.status = Status::Predicted;
     }
 
     /// The question's `g`: the forces shown as givens until the outcome, or hidden.

@@ -14,7 +14,7 @@ impl App {
     /// Does what a popup asked for when it answered.
     pub(super) fn then(&mut self, then: Then) {
         match then {
-            Then::Nothing => {}
+            Then::Nothing | Then::Pass => {}
             Then::Say(message) => self.status = Status::Info(message),
             Then::Load(i) => self.load_preset(i),
             Then::Typed(target, field) => self.typed(target, field),

@@ -9,9 +9,59 @@ mod table;
 
 pub use table::{Binding, TABLE};
 
+/// A key name of the table as the help and the hint bar show it: arrows as arrows
+/// (`up` ↑, `S-right` Shift-→; spelt out in ASCII), `pgup` PgUp, `C-c` Ctrl-C; the
+/// rest as named. [`parse`] reads both.
+pub fn display(name: &str, ascii: bool) -> String {
+    let (prefix, base) = match name.split_at_checked(2) {
+        Some(("S-", base)) if !base.is_empty() => ("Shift-", base),
+        Some(("C-", base)) if !base.is_empty() => ("Ctrl-", base),
+        _ => ("", name),
+    };
+    let base = match (base, ascii) {
+        ("up", false) => "↑".to_string(),
+        ("down", false) => "↓".to_string(),
+        ("left", false) => "←".to_string(),
+        ("right", false) => "→".to_string(),
+        ("pgup", _) => "PgUp".to_string(),
+        ("pgdn", _) => "PgDn".to_string(),
+        (c, _) if prefix == "Ctrl-" => c.to_uppercase(),
+        (other, _) => other.to_string(),
+    };
+    format!("{prefix}{base}")
+}
+
+/// A binding's keys as the help shows them, blank-separated.
+pub fn display_keys(b: &Binding, ascii: bool) -> String {
+    let names: Vec<String> = b.keys.iter().map(|k| display(k, ascii)).collect();
+    names.join(" ")
+}
+
+/// A name as [`display`] shows it, back to the table's (`Shift-→` is `S-right`).
+fn from_display(name: &str) -> String {
+    let (prefix, base) = if let Some(b) = name.strip_prefix("Shift-").filter(|b| !b.is_empty()) {
+        ("S-", b)
+    } else if let Some(b) = name.strip_prefix("Ctrl-").filter(|b| !b.is_empty()) {
+        ("C-", b)
+    } else {
+        ("", name)
+    };
+    let base = match base {
+        "↑" => "up",
+        "↓" => "down",
+        "←" => "left",
+        "→" => "right",
+        other => other,
+    };
+    format!("{prefix}{base}")
+}
+
 /// Parses a key name of the table (`space`, `S-left`, `C-c`, `pgup`, …), in any case
-/// (`End`, `PgUp`, `c-c`), or a single character (typed as itself: `R` is not `r`).
+/// (`End`, `PgUp`, `c-c`), as the help shows it (`↑`, `Shift-→`, `Ctrl-C`), or a
+/// single character (typed as itself: `R` is not `r`).
 pub fn parse(name: &str) -> Option<KeyEvent> {
+    let name = from_display(name);
+    let name = name.as_str();
     let prefix = |p: &str| {
         name.get(..2)
             .filter(|head| head.eq_ignore_ascii_case(p) && name.len() > 2)
@@ -165,7 +215,7 @@ pub fn hints(ascii: bool) -> Vec<(String, &'static str)> {
                 (Action::Down, false) => "↑↓",
                 (Action::Down, true) => "up/down",
                 (Action::Slower, _) => "+-",
-                _ => b.keys[0],
+                _ => return Some((display(b.keys[0], ascii), label)),
             };
             Some((keys.to_string(), label))
         })
@@ -305,6 +355,29 @@ mod tests {
         );
         // `S-` and `C-` alone are characters' names, not prefixes.
         assert_eq!(parse("S-"), None);
+    }
+
+    #[test]
+    fn the_help_shows_the_hint_bars_names_and_they_parse() {
+        assert_eq!(display("up", false), "↑");
+        assert_eq!(display("up", true), "up");
+        assert_eq!(display("S-right", false), "Shift-→");
+        assert_eq!(display("S-right", true), "Shift-right");
+        assert_eq!(display("pgup", false), "PgUp");
+        assert_eq!(display("C-c", false), "Ctrl-C");
+        assert_eq!(display("space", false), "space");
+        assert_eq!(display("S", false), "S");
+        for b in TABLE {
+            for name in b.keys {
+                for ascii in [false, true] {
+                    let shown = display(name, ascii);
+                    assert_eq!(parse(&shown), parse(name), "{name} shown as {shown}");
+                }
+            }
+        }
+        // The names `--keys` took before stay.
+        assert_eq!(parse("S-right"), parse("Shift-→"));
+        assert_eq!(parse("c-c"), parse("Ctrl-C"));
     }
 
     #[test]

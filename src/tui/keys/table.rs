@@ -246,6 +246,12 @@ pub const TABLE: &[Binding] = &[
         hint: None,
     },
     Binding {
+        keys: &["M"],
+        action: Action::ModelsTable,
+        help: "Fit view: every model compared, by BIC (scrolls)",
+        hint: None,
+    },
+    Binding {
         keys: &["o"],
         action: Action::CycleOverlay,
         help: "overlay a time-stepping method on the exact curves (cycles, off)",
@@ -320,7 +326,7 @@ pub const TABLE: &[Binding] = &[
     Binding {
         keys: &["?"],
         action: Action::Help,
-        help: "this help (up/down, pgup/pgdn scroll)",
+        help: "this help (it scrolls; Esc closes it, another key closes it and acts)",
         hint: Some(("help", 9)),
     },
     Binding {

@@ -18,10 +18,10 @@ pub use picker::Picker;
 pub use place::centered;
 pub use prompt::{Confirm, Histories, Prompt};
 pub use question::{Question, answer_at, question_rect};
-pub use scroll::{DataTable, Help, Scroll};
+pub use scroll::{DataTable, Help, Models, Scroll};
 
 use super::interact::{Input, Interactive};
-use super::vocabulary::{Handled, Mode};
+use super::vocabulary::{Handled, Mode, Then};
 
 /// One popup over the main screen.
 #[derive(Clone, Debug, PartialEq)]
@@ -30,6 +30,8 @@ pub enum Layer {
     Help(Help),
     /// The measured data beside the model's values at those times, scrolling.
     Table(DataTable),
+    /// The Fit view's candidate models by BIC, scrolling.
+    Models(Models),
     /// The preset picker.
     Picker(Picker),
     /// Typing a value (on the status line), a save name or an export's file name.
@@ -55,6 +57,7 @@ impl Layer {
         match self {
             Layer::Help(_) => Mode::Help,
             Layer::Table(_) => Mode::Table,
+            Layer::Models(_) => Mode::Models,
             Layer::Picker(p) => Mode::Picker(p.selected()),
             Layer::Prompt(p) => p.mode(),
             Layer::Confirm(c) => Mode::ConfirmOverwrite(c.name().to_string()),
@@ -73,6 +76,7 @@ impl Layer {
         match self {
             Layer::Help(h) => Some(h.scroll_mut()),
             Layer::Table(t) => Some(t.scroll_mut()),
+            Layer::Models(m) => Some(m.scroll_mut()),
             Layer::Picker(_) | Layer::Prompt(_) | Layer::Confirm(_) | Layer::Question(_) => None,
         }
     }
@@ -83,6 +87,7 @@ impl Interactive<&LayerCx<'_>> for Layer {
         match self {
             Layer::Help(h) => h.handle(input, ()),
             Layer::Table(t) => t.handle(input, ()),
+            Layer::Models(m) => m.handle(input, ()),
             Layer::Picker(p) => p.handle(input, cx.presets),
             Layer::Prompt(p) => p.handle(input, cx.histories),
             Layer::Confirm(c) => c.handle(input, ()),
@@ -131,11 +136,15 @@ impl Compositor {
     }
 
     /// Offers `input` to the layers, top first, until one takes it; a layer that
-    /// closes is taken off the stack. [`Handled::Ignored`]: no layer took it.
+    /// closes is taken off the stack (one that closes passing the key on,
+    /// [`Then::Pass`], lets it go on down). [`Handled::Ignored`]: no layer took it.
     pub fn handle(&mut self, input: &Input, cx: &LayerCx<'_>) -> Handled {
         for i in (0..self.layers.len()).rev() {
             match self.layers[i].handle(input, cx) {
                 Handled::Ignored => {}
+                Handled::Close(Then::Pass) => {
+                    self.layers.remove(i);
+                }
                 closed @ Handled::Close(_) => {
                     self.layers.remove(i);
                     return closed;
@@ -150,7 +159,7 @@ impl Compositor {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::tui::vocabulary::{Action, Then};
+    use crate::tui::vocabulary::Action;
 
     fn offer(stack: &mut Compositor, action: Action) -> Handled {
         let histories = Histories::default();
@@ -204,12 +213,15 @@ mod tests {
             panic!("the help is open");
         };
         assert_eq!(help.scroll().first(), 3);
-        // Any other key closes it.
-        assert_eq!(
-            offer(&mut stack, Action::Presets),
-            Handled::Close(Then::Nothing)
-        );
+        // Any other key closes it and passes on (to the main screen: `p` opens the
+        // picker, as in helix); Esc and its own key only close it.
+        assert_eq!(offer(&mut stack, Action::Presets), Handled::Ignored);
         assert!(stack.is_empty());
+        for closing in [Action::Cancel, Action::Help] {
+            stack.push(Layer::Help(Help::default()));
+            assert_eq!(offer(&mut stack, closing), Handled::Close(Then::Nothing));
+            assert!(stack.is_empty());
+        }
     }
 
     #[test]

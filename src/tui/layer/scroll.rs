@@ -1,5 +1,7 @@
-//! The scrolling popups, help and the data table: each owns its scroll, moved by the
-//! scroll keys and the wheel; any other key closes it.
+//! The scrolling popups, help, the data table and the fit's models: each owns its scroll, moved by the
+//! scroll keys and the wheel; Esc (q) and the key that opened it close it, and any
+//! other key closes it and acts as on the main screen (as helix's popups do: `p` in
+//! the help opens the picker).
 
 use crate::tui::interact::{Input, Interactive, wheel};
 use crate::tui::vocabulary::{Action, Handled, Then};
@@ -52,10 +54,11 @@ impl Scroll {
     }
 }
 
-impl Interactive<()> for Scroll {
-    /// Scroll keys and the wheel scroll; Ctrl-C falls through (it quits); any other
-    /// key closes the popup.
-    fn handle(&mut self, input: &Input, (): ()) -> Handled {
+impl Interactive<Action> for Scroll {
+    /// Scroll keys and the wheel scroll; Ctrl-C falls through (it quits); Esc and
+    /// `opened_by` (the popup's own key) close the popup; any other key closes it and
+    /// passes on to what lies below.
+    fn handle(&mut self, input: &Input, opened_by: Action) -> Handled {
         let action = match (input, wheel(input)) {
             (_, Some(true)) => Action::Up,
             (_, Some(false)) => Action::Down,
@@ -65,7 +68,8 @@ impl Interactive<()> for Scroll {
         match action {
             Action::Quit => Handled::Ignored,
             a if self.scroll(a) => Handled::Consumed,
-            _ => Handled::Close(Then::Nothing),
+            a if a == Action::Cancel || a == opened_by => Handled::Close(Then::Nothing),
+            _ => Handled::Close(Then::Pass),
         }
     }
 }
@@ -80,6 +84,28 @@ pub struct Help {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct DataTable {
     scroll: Scroll,
+}
+
+/// The Fit view's models popup: every candidate model by BIC, scrolling.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Models {
+    scroll: Scroll,
+}
+
+impl Models {
+    pub fn scroll(&self) -> Scroll {
+        self.scroll
+    }
+
+    pub(super) fn scroll_mut(&mut self) -> &mut Scroll {
+        &mut self.scroll
+    }
+}
+
+impl Interactive<()> for Models {
+    fn handle(&mut self, input: &Input, (): ()) -> Handled {
+        self.scroll.handle(input, Action::ModelsTable)
+    }
 }
 
 impl Help {
@@ -103,13 +129,13 @@ impl DataTable {
 }
 
 impl Interactive<()> for Help {
-    fn handle(&mut self, input: &Input, cx: ()) -> Handled {
-        self.scroll.handle(input, cx)
+    fn handle(&mut self, input: &Input, (): ()) -> Handled {
+        self.scroll.handle(input, Action::Help)
     }
 }
 
 impl Interactive<()> for DataTable {
-    fn handle(&mut self, input: &Input, cx: ()) -> Handled {
-        self.scroll.handle(input, cx)
+    fn handle(&mut self, input: &Input, (): ()) -> Handled {
+        self.scroll.handle(input, Action::DataTable)
     }
 }

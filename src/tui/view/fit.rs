@@ -6,6 +6,7 @@ use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::Widget;
 
+use super::models::symbol;
 use super::panel::{Ranked, block, by_priority, draw_lines};
 use crate::lab::jobs::State;
 use crate::settings::units::{Dimension, show_small, with_uncertainty};
@@ -255,19 +256,6 @@ fn model_name(model: &str, theme: &Theme) -> String {
     names.join("+")
 }
 
-/// A fitted value's symbol from the parameter table: its row's label up to the first
-/// blank (`mu_k` drawn as μ_k where the screen can, `v0`, `e`, `c_rr`).
-fn symbol(parameter: &str, theme: &Theme) -> String {
-    match crate::settings::params::Key::from_name(parameter) {
-        Some(k) => {
-            let label = k.param().label;
-            let first = label.split(' ').next().unwrap_or(label);
-            first.replace("mu", theme.glyphs.mu)
-        }
-        None => parameter.to_string(),
-    }
-}
-
 /// The candidate models by BIC (lower is better), the one the data support marked;
 /// below the fits, the first to go on a small screen. A value the data do not
 /// determine is said so (as `fit` says it), and its model is never the one named.
@@ -298,34 +286,24 @@ fn model_choice_lines(models: &[fit::Candidate], lines: &mut Ranked<'static>, th
         )),
         None => {}
     }
-    if models.iter().any(|c| !c.determined()) {
-        lines.push((
-            0,
-            Line::from(Span::styled(
-                "? a value not determined: never named",
-                theme.dim,
-            )),
-        ));
+    if models.is_empty() {
+        return;
     }
-    // In the order `fit` lists them (`fit::compare_models`): by BIC, lowest first.
+    // In the order `fit` lists them (`fit::compare_models`): by BIC, lowest first; the
+    // rows the room leaves, all of them in the M popup (the header says so, and stays
+    // when no row fits).
     lines.push((
-        0,
-        Line::from(Span::styled("models by BIC, lowest first:", theme.dim)),
+        1,
+        Line::from(Span::styled(
+            format!("models by BIC, lowest first (M: all {}):", models.len()),
+            theme.dim,
+        )),
     ));
     for c in models {
-        let mark = match (c.supported, c.determined()) {
-            (true, _) => "* ",
-            (false, true) => "  ",
-            (false, false) => "? ",
-        };
-        lines.push((
-            0,
-            Line::from(vec![
-                Span::styled(mark, theme.info),
-                Span::styled(g.text(&format!("{:<14}", name(c))), theme.text),
-                Span::styled(format!(" BIC {:>7.1} AIC {:>7.1}", c.bic, c.aic), theme.dim),
-            ]),
-        ));
+        lines.push((0, super::models::row(c, theme)));
+    }
+    if let Some(text) = super::models::legend(models) {
+        lines.push((0, Line::from(Span::styled(text, theme.dim))));
     }
 }
 

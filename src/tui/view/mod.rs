@@ -9,6 +9,7 @@ pub mod forces;
 pub mod info;
 pub mod map;
 pub mod methods;
+pub mod models;
 mod panel;
 pub mod params;
 

@@ -31,6 +31,10 @@ pub fn scroll_max(app: &App, area: Rect, theme: &Theme) -> usize {
             let (head, count, width) = table_layout(app, theme);
             scroll_frame(area, width, head.len(), count).2
         }
+        Some(Layer::Models(_)) => {
+            let (lines, width) = super::models::lines(app, theme);
+            scroll_frame(area, width, 0, lines.len()).2
+        }
         Some(Layer::Picker(_) | Layer::Prompt(_) | Layer::Confirm(_) | Layer::Question(_))
         | None => usize::MAX,
     }
@@ -40,11 +44,17 @@ pub fn scroll_max(app: &App, area: Rect, theme: &Theme) -> usize {
 /// under themselves, then the mouse.
 fn help_lines(width: usize, theme: &Theme) -> Vec<Line<'static>> {
     let g = theme.glyphs;
-    let keys_width = 14;
+    // The widest keys' names (Shift-right PgUp in ASCII), 14 columns at least.
+    let keys_width = TABLE
+        .iter()
+        .map(|b| crate::tui::keys::display_keys(b, g.ascii).chars().count())
+        .max()
+        .unwrap_or(0)
+        .max(14);
     let text_width = width.saturating_sub(keys_width + 2).max(10);
     let mut lines = Vec::new();
     for b in TABLE {
-        let keys = b.keys.join(" ");
+        let keys = crate::tui::keys::display_keys(b, g.ascii);
         let rows = wrap(Line::from(g.text(b.help)), text_width);
         for (i, row) in rows.into_iter().enumerate() {
             let lead = if i == 0 {
@@ -57,7 +67,8 @@ fn help_lines(width: usize, theme: &Theme) -> Vec<Line<'static>> {
             lines.push(Line::from(spans));
         }
     }
-    let mouse = "Mouse: click a parameter to select it, scroll on it to change it; click or drag on the chart to seek, scroll on it to zoom its time; click a preset to select it, again to load it.";
+    // One line at 200 columns (the whole help then fits 60 rows).
+    let mouse = "Mouse: click a parameter to select it, scroll on it to change it; click or drag the chart to seek, scroll to zoom; click a preset twice to load it.";
     for row in wrap(Line::from(format!(" {mouse}")), width) {
         lines.push(row.style(theme.dim));
     }
@@ -75,9 +86,9 @@ fn help(first: usize, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let width = help_width(area);
     let lines = help_lines(usize::from(width.saturating_sub(2)), theme);
     let title = if theme.glyphs.ascii {
-        "Keys  (Esc or q closes, up/down pgup/pgdn scroll)"
+        "Keys  (Esc or q closes, up/down PgUp/PgDn scroll; other keys act)"
     } else {
-        "Keys  (Esc or q closes, ↑↓ PgUp PgDn scroll)"
+        "Keys  (Esc or q closes, ↑↓ PgUp PgDn scroll; other keys act)"
     };
     let line = |i: usize| lines[i].clone();
     let source: (usize, &dyn Fn(usize) -> Line<'static>) = (lines.len(), &line);

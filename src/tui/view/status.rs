@@ -44,7 +44,10 @@ pub fn render(app: &App, status: Rect, hints: Rect, buf: &mut Buffer, theme: &Th
         }
         (_, Status::Error(e)) => (g.text(e), theme.error),
         (_, Status::Info(i)) => (g.text(i), theme.text),
-        (_, Status::None) => (String::new(), theme.text),
+        (_, Status::Predicted | Status::None) => match prediction_text(app, &g) {
+            Some(text) => (g.text(&text), theme.info),
+            None => (String::new(), theme.text),
+        },
     };
     let tail = help_and_quit(g.ascii);
     let second_room = usize::from(hints.width).saturating_sub(tail.chars().count() + 2);
@@ -67,6 +70,36 @@ pub fn render(app: &App, status: Rect, hints: Rect, buf: &mut Buffer, theme: &Th
         ]);
         buf.set_line(x, hints.y, &line, hints.width);
     }
+}
+
+/// The prediction's line: what was predicted and, once the outcome shows, what was
+/// observed and whether they agree ("predicted: move apart, observed: RECOLLIDE ✗"),
+/// in every view; before the outcome shows it gives nothing away. `None` without a
+/// prediction for this scene, or (the status line empty) before its outcome shows.
+fn prediction_text(app: &App, g: &Glyphs) -> Option<String> {
+    let p = app.prediction().filter(|p| p.scene == app.lab.scene)?;
+    let guess = super::predict::short_answer(p.guess);
+    if app.hidden().pending() {
+        return matches!(app.status, Status::Predicted)
+            .then(|| format!("predicted: {guess}; now watch (space pauses)"));
+    }
+    let headline = &app.lab.story.headline;
+    let observed = headline.split(':').next().unwrap_or(headline);
+    let mark = match (app.lab.story.verdict.agrees_with(p.guess), g.ascii) {
+        (true, false) => "✓",
+        (false, false) => "✗",
+        (true, true) => "(right)",
+        (false, true) => "(not quite)",
+    };
+    // Stopped where the outcome shows: how to watch on.
+    let more = if !app.playing && app.t == p.reveal_at {
+        " (space plays on)"
+    } else {
+        ""
+    };
+    Some(format!(
+        "predicted: {guess}, observed: {observed} {mark}{more}"
+    ))
 }
 
 /// Where the scene comes from (the preset, or the data file whose `# scene` lines

@@ -123,7 +123,7 @@ fn data_table(app: &App, first: usize, area: Rect, buf: &mut Buffer, theme: &The
         })
     };
     let title = if g.ascii {
-        "Data and model  (up/down pgup/pgdn scroll, Esc or q closes)"
+        "Data and model  (up/down PgUp/PgDn scroll, Esc or q closes)"
     } else {
         "Data and model  (↑↓ PgUp PgDn scroll, Esc or q closes)"
     };

@@ -1,0 +1,94 @@
+//! The Fit view's models popup (key `M`): every candidate model by BIC, lowest first,
+//! the one the data support marked, scrolling; the Fit panel shows as many rows as
+//! its room leaves, drawn by the same [`row`].
+
+use ratatui::buffer::Buffer;
+use ratatui::layout::Rect;
+use ratatui::text::{Line, Span};
+
+use super::popup::scrolling;
+use crate::lab::jobs::State;
+use crate::study::fit::Candidate;
+use crate::tui::app::App;
+use crate::tui::component::{Component, Ctx};
+use crate::tui::layer::Models;
+use crate::tui::theme::Theme;
+
+/// A fitted value's symbol from the parameter table: its row's label up to the first
+/// blank (`mu_k` drawn as μ_k where the screen can, `v0`, `e`, `c_rr`).
+pub(super) fn symbol(parameter: &str, theme: &Theme) -> String {
+    match crate::settings::params::Key::from_name(parameter) {
+        Some(k) => {
+            let label = k.param().label;
+            let first = label.split(' ').next().unwrap_or(label);
+            first.replace("mu", theme.glyphs.mu)
+        }
+        None => parameter.to_string(),
+    }
+}
+
+/// The legend of the marks, or `None` when no row is marked `?`.
+pub(super) fn legend(models: &[Candidate]) -> Option<&'static str> {
+    let undetermined = models.iter().any(|c| !c.determined());
+    undetermined.then_some("? = a value these data do not determine (never the model named)")
+}
+
+/// One candidate: its mark (`*` the model the data support, `?` a value not
+/// determined), its free values, BIC and AIC.
+pub(super) fn row(c: &Candidate, theme: &Theme) -> Line<'static> {
+    let g = theme.glyphs;
+    let names: Vec<String> = c
+        .parameters
+        .iter()
+        .map(|e| symbol(e.parameter, theme))
+        .collect();
+    let mark = match (c.supported, c.determined()) {
+        (true, _) => "* ",
+        (false, true) => "  ",
+        (false, false) => "? ",
+    };
+    Line::from(vec![
+        Span::styled(mark, theme.info),
+        Span::styled(g.text(&format!("{:<14}", names.join("+"))), theme.text),
+        Span::styled(format!(" BIC {:>7.1} AIC {:>7.1}", c.bic, c.aic), theme.dim),
+    ])
+}
+
+/// The popup's lines (the rows, then the legend) and its width.
+pub(super) fn lines(app: &App, theme: &Theme) -> (Vec<Line<'static>>, u16) {
+    let State::Ready(Ok(f)) = app.fit().fits() else {
+        return (Vec::new(), 50);
+    };
+    let mut lines: Vec<Line> = f.models.iter().map(|c| row(c, theme)).collect();
+    lines.push(Line::from(Span::styled(
+        "* = the model the data support",
+        theme.dim,
+    )));
+    if let Some(text) = legend(&f.models) {
+        lines.push(Line::from(Span::styled(text, theme.dim)));
+    }
+    (lines, 70)
+}
+
+impl Component for Models {
+    fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
+        let (lines, width) = lines(cx.app, cx.theme);
+        let title = if cx.theme.glyphs.ascii {
+            "Models by BIC, lowest first  (Esc closes, up/down scroll)"
+        } else {
+            "Models by BIC, lowest first  (Esc closes, ↑↓ scroll)"
+        };
+        let line = |i: usize| lines[i].clone();
+        let source: (usize, &dyn Fn(usize) -> Line<'static>) = (lines.len(), &line);
+        let first = self.scroll().first();
+        scrolling(
+            first,
+            title,
+            Vec::new(),
+            source,
+            (area, width),
+            buf,
+            cx.theme,
+        );
+    }
+}
