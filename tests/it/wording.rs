@@ -1,0 +1,38 @@
+//! What error lines and notes say to a new user: echoed text cut to a sane length,
+//! numbers rounded, the same names and origins in every command.
+
+use crate::common::{groovelab, scratch_dir};
+
+/// The `error:` line of a command that must fail with status 2.
+fn refusal(args: &[&str]) -> String {
+    let out = groovelab(args);
+    assert_eq!(out.status.code(), Some(2), "{args:?} should be refused");
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert!(err.starts_with("error: "), "{err}");
+    err
+}
+
+#[test]
+fn a_five_megabyte_cell_is_not_echoed_whole() {
+    let dir = scratch_dir("wording", "long_cell");
+    let file = dir.join("longline.csv");
+    let cell = "1".repeat(5_000_000);
+    std::fs::write(&file, format!("t,v_cm,v_t\n0,{cell},0\n")).unwrap();
+    let err = refusal(&["data", file.to_str().unwrap()]);
+    assert!(err.len() < 500, "{} bytes", err.len());
+    assert!(err.contains("v_cm = '1111") && err.contains("…'"), "{err}");
+}
+
+#[test]
+fn a_long_option_value_is_cut_in_the_error_line() {
+    let long = format!("{}x", "9".repeat(10_000));
+    for args in [
+        vec!["simulate", "--v0", &long],
+        vec!["simulate", "--preset", &long],
+        vec!["fit", "--track", &long],
+    ] {
+        let err = refusal(&args);
+        assert!(err.len() < 600, "{args:?}: {} bytes", err.len());
+        assert!(err.contains("…"), "{err}");
+    }
+}
