@@ -36,3 +36,21 @@ fn a_long_option_value_is_cut_in_the_error_line() {
         assert!(err.contains("…"), "{err}");
     }
 }
+
+#[test]
+fn a_negative_width_names_the_value_of_2r() {
+    let err = refusal(&["simulate", "--radius", "2.75cm", "--width", "-1cm"]);
+    assert!(err.contains("allowed 0 ≤ b < 2R = 5.5 cm"), "{err}");
+}
+
+#[test]
+fn a_computed_width_is_rounded_in_the_scene_line_but_stays_below_2r() {
+    use groovelab::settings::units::{Dimension, show_below};
+    // b* of the critical preset: many digits, shown as four.
+    assert_eq!(
+        show_below(0.04260281680828159, 0.055, Dimension::Length),
+        "4.26 cm"
+    );
+    // Four digits would read 5.5 cm = 2R: more are kept.
+    assert_eq!(show_below(0.054999, 0.055, Dimension::Length), "5.4999 cm");
+}
