@@ -54,3 +54,31 @@ fn a_computed_width_is_rounded_in_the_scene_line_but_stays_below_2r() {
     // Four digits would read 5.5 cm = 2R: more are kept.
     assert_eq!(show_below(0.054999, 0.055, Dimension::Length), "5.4999 cm");
 }
+
+#[test]
+fn a_given_impact_time_without_an_impact_is_called_the_given_time() {
+    let dir = scratch_dir("wording", "given_impact");
+    let file = dir.join("steady.csv");
+    // A ball rolling steadily at 0.25 m/s: no impact anywhere.
+    let rows: String = (0..100)
+        .map(|i| {
+            let t = f64::from(i) * 0.01;
+            format!("{t},{},0\n", 0.25 * t)
+        })
+        .collect();
+    std::fs::write(&file, format!("t,x,y\n{rows}")).unwrap();
+    let out = groovelab(&["data", file.to_str().unwrap(), "--impact-at", "0.5"]);
+    let text =
+        String::from_utf8_lossy(&out.stdout).to_string() + &String::from_utf8_lossy(&out.stderr);
+    assert!(
+        text.contains("no impact at the time --impact-at gives, t = 0.5000 s"),
+        "{text}"
+    );
+    assert!(!text.contains("sharpest change"), "{text}");
+}
+
+#[test]
+fn a_mass_is_named_as_the_panel_names_it_in_every_error() {
+    let range = refusal(&["simulate", "--mass-right", "1e308g"]);
+    assert!(range.contains("m right = 1e308 g"), "{range}");
+}
