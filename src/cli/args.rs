@@ -6,6 +6,7 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 
 use crate::methods::Method;
 use crate::settings::params::PARAMS;
+use crate::settings::quote::clip;
 use crate::settings::spec::SceneSpec;
 use crate::settings::units::{Dimension, UnitError, parse_option};
 use crate::study::fit::Free;
@@ -93,22 +94,27 @@ pub enum TrackRole {
 /// Why an option's text is not a value of it (clap prints it after the option's name).
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum ArgError {
-    #[error("'{text}' is not ROLE=NAME, allowed centre=NAME or mark=NAME")]
+    #[error("'{}' is not ROLE=NAME, allowed centre=NAME or mark=NAME", clip(text))]
     Track { text: String },
     /// A screen below the app's smallest (`min`, COLSxROWS).
     #[error(
-        "'{text}' is smaller than the app's smallest screen, allowed at least {}x{} (up to {MAX_SCREEN}x{MAX_SCREEN})",
+        "'{}' is smaller than the app's smallest screen, allowed at least {}x{} (up to {MAX_SCREEN}x{MAX_SCREEN})",
+        clip(text),
         min.0,
         min.1
     )]
     SmallScreen { text: String, min: (u16, u16) },
     #[error(
-        "'{text}' is not a size, expected COLSxROWS such as 120x40 (from {}x{} to {MAX_SCREEN}x{MAX_SCREEN})",
+        "'{}' is not a size, expected COLSxROWS such as 120x40 (from {}x{} to {MAX_SCREEN}x{MAX_SCREEN})",
+        clip(text),
         min.0,
         min.1
     )]
     NotASize { text: String, min: (u16, u16) },
-    #[error("'{text}' is not a pixel's length, expected a length above 0 such as 1.105mm")]
+    #[error(
+        "'{}' is not a pixel's length, expected a length above 0 such as 1.105mm",
+        clip(text)
+    )]
     NotAPixel { text: String },
     #[error(transparent)]
     Unit(#[from] UnitError),

@@ -106,7 +106,7 @@ fn with_allowed(e: &clap::Error, line: String, args: &[OsString]) -> String {
     use clap::CommandFactory;
     use clap::error::{ContextKind, ContextValue, ErrorKind};
     if e.kind() != ErrorKind::UnknownArgument {
-        return line;
+        return clip_invalid_value(e, line);
     }
     match e.get(ContextKind::SuggestedArg) {
         Some(ContextValue::String(similar)) => {
@@ -141,6 +141,18 @@ fn with_allowed(e: &clap::Error, line: String, args: &[OsString]) -> String {
         "{line}, allowed options of `{name}`: {} (`{name} --help` says what each does)",
         options.join(", ")
     )
+}
+
+/// clap's message with the value it echoes (`invalid value '…'`) cut to a sane length.
+fn clip_invalid_value(e: &clap::Error, line: String) -> String {
+    use clap::error::{ContextKind, ContextValue};
+    match e.get(ContextKind::InvalidValue) {
+        Some(ContextValue::String(value)) => {
+            let clipped = crate::settings::quote::clip(value).to_string();
+            line.replacen(&format!("'{value}'"), &format!("'{clipped}'"), 1)
+        }
+        _ => line,
+    }
 }
 
 /// `\n` and `\r` inside a message, spelt out.

@@ -183,7 +183,7 @@ pub enum BadValue {
         dim: Dimension,
         allowed: &'static str,
     },
-    #[error("{flag} {text}: {source}")]
+    #[error("{flag} {}: {source}", crate::settings::quote::clip(text))]
     Unit {
         flag: Flag,
         text: String,
@@ -195,8 +195,9 @@ pub enum BadValue {
         source: crate::study::sweep::AxisError,
     },
     #[error(
-        "{} {text} is not a grid, expected NX or NXxNY (1 ..= 10000 each), e.g. 400x200",
-        Flag("grid")
+        "{} {} is not a grid, expected NX or NXxNY (1 ..= 10000 each), e.g. 400x200",
+        Flag("grid"),
+        crate::settings::quote::clip(text)
     )]
     Grid { text: String },
     #[error(

@@ -30,9 +30,12 @@ pub enum TrackOutput {
 /// option's name).
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum PositiveError {
-    #[error("'{text}' is not a number of {what}")]
+    #[error("'{}' is not a number of {what}", crate::settings::quote::clip(text))]
     NotANumber { text: String, what: &'static str },
-    #[error("{text} is out of range, allowed 0 < {what} ≤ {max:e}")]
+    #[error(
+        "{} is out of range, allowed 0 < {what} ≤ {max:e}",
+        crate::settings::quote::clip(text)
+    )]
     OutOfRange {
         text: String,
         what: &'static str,

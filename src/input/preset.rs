@@ -13,7 +13,10 @@ use crate::study::preset::{self, Preset, PresetError, PresetOrigin};
 #[derive(Debug, thiserror::Error)]
 pub enum LoadError {
     /// No built-in preset, no file: `name` as the user typed it.
-    #[error("unknown preset '{name}', allowed: a name from `groovelab presets` or a .toml file")]
+    #[error(
+        "unknown preset '{}', allowed: a name from `groovelab presets` or a .toml file",
+        crate::settings::quote::clip(name)
+    )]
     Unknown { name: String },
     #[error(transparent)]
     Io(FileError),

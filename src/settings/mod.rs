@@ -4,5 +4,6 @@
 //! (`units`: the one display-unit table). Pure: no files, no flags, no terminal.
 
 pub mod params;
+pub mod quote;
 pub mod spec;
 pub mod units;

@@ -244,7 +244,7 @@ impl SceneSpec {
                 .any(|q| q.replaces == Some(p.key) && self.values[q.key as usize].is_some());
             let v = match (given, p.default) {
                 // Out of range under the name the user gave: `mass` for both balls'.
-                (Some(v), _) => in_range(self.given_as(p), v)?,
+                (Some(v), _) => in_range(self.given_as(p), v, &scene)?,
                 (None, Fallback::Value(v)) => v,
                 (None, Fallback::Optional) => continue,
                 (None, Fallback::Required) if replaced => continue,
@@ -296,9 +296,16 @@ fn relations(p: &Param, scene: &Scene, span: &Span) -> Result<(), SceneError> {
     }
 }
 
-/// `v` if it lies in the parameter's physical range.
-fn in_range(p: &Param, v: f64) -> Result<f64, SceneError> {
-    check(p, v, p.range.contains(v), Allowed::Range(p.range)).map(|()| v)
+/// `v` if it lies in the parameter's physical range; a width's refusal names 2R's
+/// value (the radius is written before the width).
+fn in_range(p: &Param, v: f64, scene: &Scene) -> Result<f64, SceneError> {
+    let allowed = match p.key {
+        Key::Width => Allowed::BelowTwiceRadius {
+            radius: scene.radius,
+        },
+        _ => Allowed::Range(p.range),
+    };
+    check(p, v, p.range.contains(v), allowed).map(|()| v)
 }
 
 /// `Ok` if `ok` and `value` is finite (this runs for every point of a sweep: no text

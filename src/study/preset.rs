@@ -59,7 +59,7 @@ pub enum Malformed {
     /// Not TOML of a preset's shape (toml's own message, without its excerpt).
     #[error("{}", .0.message())]
     Toml(toml::de::Error),
-    #[error("unknown scene key '{key}', allowed: {}", Key::ALL.map(|k| k.name()).join(", "))]
+    #[error("unknown scene key '{}', allowed: {}", crate::settings::quote::clip(key), Key::ALL.map(|k| k.name()).join(", "))]
     UnknownKey { key: String },
     #[error("{}: {source}", key.name())]
     Quantity { key: Key, source: UnitError },

@@ -98,19 +98,35 @@ impl std::fmt::Display for GridValue {
 /// Why an axis (`NAME=LO..HI` of `n` points) cannot be swept.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum AxisError {
-    #[error("'{text}' is not NAME=LO..HI, e.g. width=0..5.4cm")]
+    #[error(
+        "'{}' is not NAME=LO..HI, e.g. width=0..5.4cm",
+        crate::settings::quote::clip(text)
+    )]
     NotAnAxis { text: String },
-    #[error("unknown parameter '{name}', allowed: {}", sweepable_names())]
+    #[error(
+        "unknown parameter '{}', allowed: {}",
+        crate::settings::quote::clip(name),
+        sweepable_names()
+    )]
     UnknownParameter { name: String },
     #[error("{} is not a scene parameter to sweep", key.name())]
     NotOfScene { key: Key },
-    #[error("'{range}' is not LO..HI, e.g. 0..5.4cm")]
+    #[error(
+        "'{}' is not LO..HI, e.g. 0..5.4cm",
+        crate::settings::quote::clip(range)
+    )]
     NotARange { range: String },
     #[error(transparent)]
     Bound(#[from] UnitError),
-    #[error("'{range}' runs backwards, allowed LO ≤ HI")]
+    #[error(
+        "'{}' runs backwards, allowed LO ≤ HI",
+        crate::settings::quote::clip(range)
+    )]
     Backwards { range: String },
-    #[error("'{range}' is too wide to step through, allowed HI − LO below 1.8e308")]
+    #[error(
+        "'{}' is too wide to step through, allowed HI − LO below 1.8e308",
+        crate::settings::quote::clip(range)
+    )]
     TooWide { range: String },
     #[error("{n} points on an axis, allowed 1 ..= 10000")]
     Points { n: usize },

@@ -45,4 +45,5 @@ mod tui;
 mod units_checked;
 mod video;
 mod video_app;
+mod wording;
 mod wrong_scene;

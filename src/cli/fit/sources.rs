@@ -13,7 +13,7 @@ use crate::cli::args::{DataArgs, SceneArgs};
 use crate::lab::Lab;
 use crate::lab::{Contradiction, Whose, approach};
 use crate::settings::params::Key;
-use crate::settings::units::{Dimension, show, show_exact, significant};
+use crate::settings::units::{Dimension, show, show_below, significant};
 use crate::study::fit::Approach;
 
 use crate::lab::Origin as Source;
@@ -189,7 +189,7 @@ impl Sources {
             "scene ({source}): R = {}, b = {}, m = {} / {}{assumed}, v0 = {} / {}, μ_k = {} (start), e = {}\n{tail}",
             len(scene.radius),
             // Every digit given: b = 5.4999 cm at four digits reads 5.5 cm = 2R.
-            show_exact(scene.width, Dimension::Length),
+            show_below(scene.width, 2.0 * scene.radius, Dimension::Length),
             show(scene.left.mass, Dimension::Mass),
             show(scene.right.mass, Dimension::Mass),
             show(scene.left.v0, Dimension::Speed),

@@ -158,14 +158,15 @@ pub enum LayoutError {
     /// The header at `line` (its cells) has no x column.
     #[error(
         "line {line}: no position column x in '{}', expected t and x (and y) for a position track, or t, v_cm and v_t for velocities",
-        cells.join(" ")
+        crate::settings::quote::clip(&cells.join(" "))
     )]
     NoPositionColumn { line: usize, cells: Vec<String> },
     /// No track named `want` (as the option gave it) for the `role` ("centre",
     /// "mark") among the file's tracks (`found`; an empty name is an unnamed track).
     #[error(
-        "no track '{want}' for the {role} in the file, tracks found: {}",
-        found.iter().map(|n| if n.is_empty() { "(unnamed)" } else { n }).collect::<Vec<_>>().join(", ")
+        "no track '{}' for the {role} in the file, tracks found: {}",
+        crate::settings::quote::clip(want),
+        crate::settings::quote::clip(&found.iter().map(|n| if n.is_empty() { "(unnamed)" } else { n }).collect::<Vec<_>>().join(", "))
     )]
     NoTrack {
         want: String,

@@ -11,6 +11,7 @@ use super::roles::Swapped;
 use super::scales::ScaleError;
 use super::xml::XmlError;
 use crate::settings::params::{Key, PARAMS};
+use crate::settings::quote::clip;
 use crate::settings::units::UnitError;
 use crate::study::measured::{NoCommonFrame, OutOfLabRange, TrackError};
 
@@ -65,13 +66,14 @@ pub enum DataProblem {
     OtherXml,
     /// A position file's mark, by the name the option gave, without x and y.
     #[error(
-        "the mark '{mark}' needs x and y columns, and the centre a y column, to give the spin angle"
+        "the mark '{}' needs x and y columns, and the centre a y column, to give the spin angle",
+        clip(mark)
     )]
     MarkWithoutXy { mark: String },
     /// No frame with a position of the centre's track (`centre`: its name, maybe empty).
     #[error(
         "no frame with a position x of '{}', expected rows of numbers below the header",
-        if centre.is_empty() { "x" } else { centre }
+        clip(if centre.is_empty() { "x" } else { centre })
     )]
     NoPosition { centre: String },
     #[error("the file is empty, expected a header with t, v_cm and v_t")]
@@ -79,7 +81,7 @@ pub enum DataProblem {
     /// A velocity file's header (its cells) without the column `name`.
     #[error(
         "line {line}: no column '{name}' in the header '{}', expected columns t, v_cm and v_t (units in brackets or as options)",
-        header.join(" ")
+        clip(&header.join(" "))
     )]
     NoColumn {
         line: usize,
@@ -87,7 +89,7 @@ pub enum DataProblem {
         header: Vec<String>,
     },
     /// A velocity file's cell of column `name`, as written, is no finite number.
-    #[error("line {line}: {name} = '{cell}' is not a finite number")]
+    #[error("line {line}: {name} = '{}' is not a finite number", clip(cell))]
     NotANumber {
         line: usize,
         name: &'static str,
@@ -109,7 +111,8 @@ pub enum DataProblem {
     )]
     NoFrameDuration,
     #[error(
-        "track '{track}' has more than {max} frames, allowed at most {max}",
+        "track '{}' has more than {max} frames, allowed at most {max}",
+        clip(track),
         max = MAX_ROWS
     )]
     TooManyFrames { track: String },
@@ -123,7 +126,8 @@ pub enum DataProblem {
     Uncalibrated,
     /// A Tracker project's length unit, as it names it.
     #[error(
-        "the project's length unit '{unit}' is not one groovelab reads (m, cm, mm): give the unit of its numbers with --length-unit (e.g. --length-unit m)"
+        "the project's length unit '{}' is not one groovelab reads (m, cm, mm): give the unit of its numbers with --length-unit (e.g. --length-unit m)",
+        clip(unit)
     )]
     ProjectUnit { unit: String },
     #[error("not a Logger Pro file: its root is not <Document>")]
@@ -131,13 +135,14 @@ pub enum DataProblem {
     /// A Logger Pro file without a data set of positions (`found`: its data sets).
     #[error(
         "no data set with a time and a position column (X, Position) that holds numbers; data sets found: {}: groovelab needs the positions of the ball's centre over time (a video analysis or a motion detector)",
-        if found.is_empty() { "none".to_string() } else { found.join(", ") }
+        if found.is_empty() { "none".to_string() } else { clip(&found.join(", ")).to_string() }
     )]
     NoDataSet { found: Vec<String> },
     /// A Logger Pro data set whose positions have no unit, and the video's scale as
     /// the file states it.
     #[error(
-        "the positions of data set '{set}' have no unit: the video was not scaled in Logger Pro{}; set its scale in Logger Pro and save, or give the length one of the file's units shows with --scale (e.g. --scale 1.105mm), or their unit with --length-unit",
+        "the positions of data set '{}' have no unit: the video was not scaled in Logger Pro{}; set its scale in Logger Pro and save, or give the length one of the file's units shows with --scale (e.g. --scale 1.105mm), or their unit with --length-unit",
+        clip(set),
         scale.as_ref().map(|s| format!(" ({s})")).unwrap_or_default()
     )]
     Unscaled {
@@ -146,22 +151,26 @@ pub enum DataProblem {
     },
     /// What is wrong in the Logger Pro data set `set`, read as a table whose header
     /// is line 1: its `line N` is the data set's row N − 1.
-    #[error("data set '{set}': {}", rows_not_lines(&problem.to_string()))]
+    #[error("data set '{}': {}", clip(set), rows_not_lines(&problem.to_string()))]
     InDataSet {
         set: String,
         problem: Box<DataProblem>,
     },
     /// A `# scene` comment line without `=` (`text`: the line, trimmed).
-    #[error("line {line}: '{text}' is not a scene value, expected '# scene NAME = VALUE'")]
+    #[error(
+        "line {line}: '{}' is not a scene value, expected '# scene NAME = VALUE'",
+        clip(text)
+    )]
     NotSceneValue { line: usize, text: String },
     /// A `# scene` comment line naming no parameter of the scene.
     #[error(
-        "line {line}: scene value '{name}' is not a parameter, allowed {}",
+        "line {line}: scene value '{}' is not a parameter, allowed {}",
+        clip(name),
         scene_names()
     )]
     NotParameter { line: usize, name: String },
     /// A `# scene` comment line whose value does not read (`value`: as written).
-    #[error("line {line}: scene {} = {value}: {error}", key.name())]
+    #[error("line {line}: scene {} = {}: {error}", key.name(), clip(value))]
     SceneValue {
         line: usize,
         key: Key,
@@ -188,8 +197,10 @@ impl std::fmt::Display for VideoScale {
         };
         write!(
             f,
-            "its scale says {} {unit} per {} of the movie's distance",
-            self.actual, self.pixels
+            "its scale says {} {} per {} of the movie's distance",
+            clip(&self.actual),
+            clip(unit),
+            clip(&self.pixels)
         )
     }
 }
@@ -225,7 +236,8 @@ pub enum RowError {
     TooMany { line: usize },
     /// The cell of column `name`, as written, is no finite number.
     #[error(
-        "line {line}: {name} = '{cell}' is not a finite number (an empty cell counts as missing)"
+        "line {line}: {name} = '{}' is not a finite number (an empty cell counts as missing)",
+        clip(cell)
     )]
     NotANumber {
         line: usize,
@@ -243,7 +255,8 @@ pub enum RowError {
 /// with those `columns`: what groovelab needs instead.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 #[error(
-    "line {line}: the file holds accelerations only ({columns}), no positions or velocities: groovelab needs the ball's position over time (a video track: t, x, y) or its velocities (t, v_cm, v_t); a phone's accelerometer (phyphox) cannot give them"
+    "line {line}: the file holds accelerations only ({}), no positions or velocities: groovelab needs the ball's position over time (a video track: t, x, y) or its velocities (t, v_cm, v_t); a phone's accelerometer (phyphox) cannot give them",
+    clip(columns)
 )]
 pub struct AccelerationsOnly {
     pub line: usize,

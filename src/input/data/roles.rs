@@ -19,9 +19,9 @@ const STRAYS_MORE: f64 = 3.0;
 #[error(
     "the track taken for the ball's centre{} strays {} from a straight line and the rim mark's{} only {}: a centre moves along the groove and a mark turns around it, so the two look swapped; {}",
     named(centre),
-    show_small(*centre_off, Dimension::Length),
+    straightness(*centre_off),
     named(mark),
-    show_small(*mark_off, Dimension::Length),
+    straightness(*mark_off),
     advice(centre, mark)
 )]
 pub struct Swapped {
@@ -35,7 +35,17 @@ fn named(name: &str) -> String {
     if name.is_empty() {
         String::new()
     } else {
-        format!(" ('{name}')")
+        format!(" ('{}')", crate::settings::quote::clip(name))
+    }
+}
+
+/// A path's RMS distance from its straight line (m) as a sentence says it: below a
+/// micrometre (far under any video's resolution: rounding noise) as "under 0.001 mm".
+fn straightness(off: f64) -> String {
+    if off < 1e-6 {
+        "under 0.001 mm".to_string()
+    } else {
+        show_small(off, Dimension::Length).to_string()
     }
 }
 

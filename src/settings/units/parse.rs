@@ -4,23 +4,29 @@
 use std::fmt;
 
 use super::dimension::Dimension;
+use crate::settings::quote::clip;
 
 /// Why a quantity could not be read.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum UnitError {
-    #[error("'{text}' is not a number, expected {allowed}")]
+    #[error("'{}' is not a number, expected {allowed}", clip(text))]
     NotANumber { text: String, allowed: Expected },
-    #[error("unknown unit '{unit}' in '{text}', expected {allowed}")]
+    #[error(
+        "unknown unit '{}' in '{}', expected {allowed}",
+        clip(unit),
+        clip(text)
+    )]
     UnknownUnit {
         text: String,
         unit: String,
         allowed: Expected,
     },
-    #[error("'{text}' is not finite, expected a finite number")]
+    #[error("'{}' is not finite, expected a finite number", clip(text))]
     NotFinite { text: String },
     /// The text is a number, but its value (after the unit) overflows or rounds to 0.
     #[error(
-        "'{text}' is out of range ({why}), expected 0 or a magnitude from about 2.2e-308 to 1.8e308 in SI units"
+        "'{}' is out of range ({why}), expected 0 or a magnitude from about 2.2e-308 to 1.8e308 in SI units",
+        clip(text)
     )]
     OutOfRange { text: String, why: &'static str },
 }

@@ -119,6 +119,18 @@ pub fn with_uncertainty(value: f64, se: f64, decimals: usize) -> (String, String
     (format!("{value:.places$}"), format!("{se:.places$}"))
 }
 
+/// `value` (SI, below `limit`) with the fewest digits from four up that still read
+/// below `limit`: a computed b = 4.260281680828159 cm reads 4.26 cm, while
+/// b = 5.4999 cm beside 2R = 5.5 cm keeps its digits (5.5 cm would read as 2R).
+pub fn show_below(value: f64, limit: f64, dim: Dimension) -> String {
+    let limit_shown = dim.to_display(limit);
+    (4..=17)
+        .map(|digits| significant(dim.to_display(value), digits))
+        .find(|text| text.parse::<f64>().is_ok_and(|v| v < limit_shown))
+        .map(|text| format!("{text}{}", dim.suffix()))
+        .unwrap_or_else(|| show_exact(value, dim).to_string())
+}
+
 /// `v` with `digits` significant digits, without trailing zeros or exponent for lab-sized values.
 /// For a value someone set (μ_k = 0.17, not 0.1700); a computed quantity shown beside
 /// others takes [`sig_figs`].

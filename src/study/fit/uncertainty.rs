@@ -172,8 +172,8 @@ pub(super) fn uncertainties(
             Some(se) if se.is_finite() && 2.0 * se >= hi - lo => why.push(NotIdentified {
                 parameter: f.name(),
                 reason: format!(
-                    "its ± 2σ ({:.3}) spans more than its whole physical range ({}), so the data do not determine it",
-                    2.0 * se,
+                    "its ± 2σ ({}) spans more than its whole physical range ({}), so the data do not determine it",
+                    crate::settings::units::significant(2.0 * se, 3),
                     range_text(f)
                 ),
                 on_edge_of: None,

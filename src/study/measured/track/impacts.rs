@@ -24,10 +24,17 @@ pub enum TrackError {
     )]
     ChangeAtTheStart { at: f64 },
     #[error(
-        "no impact found: the sharpest change of the centre's velocity, at t = {at:.4} s, {}; an impact would slow it by at least a third",
+        "{} {}; an impact would slow it by at least a third",
+        if *given { format!("no impact at the time --impact-at gives, t = {at:.4} s: the change of the centre's velocity there") } else { format!("no impact found: the sharpest change of the centre's velocity, at t = {at:.4} s,") },
         seen(*before, *after)
     )]
-    NoSlowDown { at: f64, before: f64, after: f64 },
+    NoSlowDown {
+        at: f64,
+        before: f64,
+        after: f64,
+        /// Whether `at` is the time `--impact-at` gave (else the one found).
+        given: bool,
+    },
     #[error(
         "the track starts too late: before the sharpest slow-down (t = {at:.4} s) the ball does not approach steadily (mean {mean:.3} m/s against {before:.3} m/s); it needs frames from before the first impact"
     )]
@@ -240,6 +247,7 @@ fn check_first(
             at: ts[first],
             before,
             after: before + jump,
+            given: given.is_some(),
         });
     }
     if given.is_none() && first > 0 {
