@@ -26,6 +26,7 @@ mod manual;
 mod methods;
 mod motion;
 mod names;
+mod nested_fits;
 mod numbers;
 mod origins;
 mod params;
