@@ -14,6 +14,7 @@ mod data_scene;
 mod errors;
 mod exports;
 mod fit;
+mod fit_verdicts;
 mod forces;
 mod formats;
 mod fuzz;

@@ -36,6 +36,16 @@ pub(super) fn summary(f: &Fits) -> String {
         h.agreement().word(),
         rms_text(h)
     );
+    if let Some(w) = &f.line_fit.width_from_lines {
+        let cm = |b: f64| significant(b * 100.0, 3);
+        let _ = writeln!(
+            out,
+            "  the measured a_t/a_cm gives b ≈ {} ± {} cm, not {} cm: check --width",
+            cm(w.width),
+            significant(200.0 * w.width_se, 1),
+            cm(w.given)
+        );
+    }
     // μ_k alone, with v0 free when the data measured it (not given).
     let alone = match f.mu_alone.model.as_str() {
         "mu" => "μ_k alone".to_string(),

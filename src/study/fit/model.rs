@@ -83,7 +83,16 @@ pub struct ModelFit {
     /// `fit_all`, which has the line fits.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub lines_disagree: Option<(f64, f64)>,
+    /// True when the fitted μ_k is beyond [`MAX_PLAUSIBLE_MU`]: no ball rolls in a
+    /// groove with that, so the data's unit is likely wrong (speeds in cm/s read as m/s
+    /// make every deceleration, and μ_k, 100× too large); there is no verdict.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub mu_implausible: bool,
 }
+
+/// The largest μ_k a ball rolling in a groove may plausibly have: beyond it the fit
+/// says the data's units are likely wrong ([`Agreement::ImplausibleMu`]).
+pub const MAX_PLAUSIBLE_MU: f64 = 1.0;
 
 impl ModelFit {
     /// Why the data do not determine the free value `parameter` ([`Free::name`]), if
@@ -111,6 +120,8 @@ impl ModelFit {
     pub fn agreement(&self) -> Agreement {
         if self.undetermined(Free::Mu.name()).is_some() {
             Agreement::MuNotDetermined
+        } else if self.mu_implausible {
+            Agreement::ImplausibleMu
         } else if self.scatter.is_some_and(|s| self.rms > POOR_FIT * s) {
             Agreement::PoorFit
         } else if self.lines_disagree.is_some() {
@@ -145,6 +156,9 @@ pub enum Agreement {
     /// μ_k from v_cm and from v_t (the line fits) disagree ([`LineFit::disagree`]):
     /// k = r/R enters them as k and 1/k, so the scene's b or R does not fit the data.
     LinesDisagree,
+    /// μ_k is beyond [`MAX_PLAUSIBLE_MU`] ([`ModelFit::mu_implausible`]): the data's
+    /// unit is likely wrong.
+    ImplausibleMu,
 }
 
 /// How many times the data's scatter an RMS residual may be before the fit is poor.
@@ -163,6 +177,7 @@ impl Agreement {
             Agreement::MuNotDetermined => "no verdict",
             Agreement::PoorFit => "POOR FIT",
             Agreement::LinesDisagree => "μ_k,cm ≠ μ_k,t",
+            Agreement::ImplausibleMu => "μ_k > 1: units?",
         }
     }
 
@@ -183,6 +198,9 @@ impl Agreement {
             Agreement::LinesDisagree => {
                 "no verdict: μ_k,cm and μ_k,t of the line fits disagree beyond their ± and by over a quarter, so the scene's b or R does not fit these data (k = r/R enters μ_k,cm as k, μ_k,t as 1/k): check --width and --radius"
             }
+            Agreement::ImplausibleMu => {
+                "no verdict: a μ_k beyond 1 is no ball rolling in a groove, so the data's unit is likely wrong (speeds in cm/s read as m/s make μ_k 100× too large): give --speed-unit cm/s (a track in cm: --length-unit cm), or fix the header"
+            }
         }
     }
 
@@ -195,6 +213,7 @@ impl Agreement {
             Agreement::MuNotDetermined => "no verdict: μ_k not determined",
             Agreement::PoorFit => "no verdict: RMS ≫ the data's scatter",
             Agreement::LinesDisagree => "no verdict: μ_k,cm ≠ μ_k,t (b, R?)",
+            Agreement::ImplausibleMu => "no verdict: μ_k > 1 (units?)",
         }
     }
 
@@ -525,6 +544,7 @@ pub(super) fn scored_fit_within(
         every,
         scale,
         lines_disagree: None,
+        mu_implausible: fitted.mu > MAX_PLAUSIBLE_MU,
     }))
 }
 
@@ -565,6 +585,7 @@ pub(super) mod tests {
             every: None,
             scale: None,
             lines_disagree: None,
+            mu_implausible: false,
         }
     }
 }
