@@ -36,6 +36,17 @@ pub(super) fn summary(f: &Fits) -> String {
         h.agreement().word(),
         rms_text(h)
     );
+    if h.mu_implausible {
+        let (what, option) = match h.fitted_to {
+            "positions" => ("lengths are likely in cm", "--length-unit cm"),
+            _ => ("speeds are likely in cm/s", "--speed-unit cm/s"),
+        };
+        let _ = writeln!(
+            out,
+            "  a μ_k beyond 1 is no ball rolling in a groove: the {what} (then μ_k ≈ {}): give {option}, or fix the header",
+            significant(h.mu / 100.0, 3)
+        );
+    }
     if let Some(w) = &f.line_fit.width_from_lines {
         let cm = |b: f64| significant(b * 100.0, 3);
         let _ = writeln!(
