@@ -368,17 +368,7 @@ fn velocities(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (V
     let ((y0, y1), _) = bounds(&series, app.lab.points.as_deref(), rows);
     let whos: Vec<Who> = balls.iter().map(|&i| Who::ball(i)).collect();
     vlines.extend(event_lines(app, &whos, theme));
-    let plot = Plot {
-        x_range: app.chart_range(),
-        y_range: (y0, y1),
-        x_title: "t (s)".into(),
-        y_title: "v (m/s)".into(),
-        series,
-        vlines,
-        cursor: Some(app.t),
-        x_ticks: None,
-        y_ticks: None,
-    };
+    let plot = time_plot(app, (y0, y1), "v (m/s)", series, vlines);
     // The file the points come from is named on the status line, in every view.
     let titles = vec![
         format!("v_cm(t) and v_t(t), {which}  [b] switches"),
@@ -386,6 +376,27 @@ fn velocities(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (V
         format!("v_cm, v_t, {which} [b]"),
     ];
     (titles, plot)
+}
+
+/// A chart against the shown time window, with the cursor at the shown time.
+fn time_plot(
+    app: &App,
+    y_range: (f64, f64),
+    y_title: impl Into<String>,
+    series: Vec<PlotLine>,
+    vlines: Vec<VLine>,
+) -> Plot {
+    Plot {
+        x_range: app.chart_range(),
+        y_range,
+        x_title: "t (s)".into(),
+        y_title: y_title.into(),
+        series,
+        vlines,
+        cursor: Some(app.t),
+        x_ticks: None,
+        y_ticks: None,
+    }
 }
 
 /// At most about `n` of `points`, evenly picked (markers one per two columns).
@@ -438,17 +449,13 @@ fn positions(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Ve
     }
     let rows = usize::from(area.height.saturating_sub(4));
     let ((y0, y1), _) = bounds(&series, app.lab.points.as_deref(), rows);
-    let plot = Plot {
-        x_range: app.chart_range(),
-        y_range: (y0, y1),
-        x_title: "t (s)".into(),
-        y_title: format!("x ({})", POSITION.display_unit().0),
+    let plot = time_plot(
+        app,
+        (y0, y1),
+        format!("x ({})", POSITION.display_unit().0),
         series,
-        vlines: event_lines(app, &[Who::Left, Who::Right], theme),
-        cursor: Some(app.t),
-        x_ticks: None,
-        y_ticks: None,
-    };
+        event_lines(app, &[Who::Left, Who::Right], theme),
+    );
     let titles = [
         "x(t) of both balls  [x] back to velocities",
         "x(t) of both balls  [x] velocities",
@@ -529,17 +536,13 @@ fn energy(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Vec<S
     let rows = usize::from(area.height.saturating_sub(4));
     // Room above the total for the event labels on the top row.
     let ((_, y1), _) = nice_ticks(0.0, 1.1 * total, (rows / 3).max(2));
-    let plot = Plot {
-        x_range: app.chart_range(),
-        y_range: (0.0, y1.max(f64::MIN_POSITIVE)),
-        x_title: "t (s)".into(),
-        y_title: name("E (J)", "J").into(),
+    let plot = time_plot(
+        app,
+        (0.0, y1.max(f64::MIN_POSITIVE)),
+        name("E (J)", "J"),
         series,
-        vlines: event_lines(app, &[Who::Left, Who::Right], theme),
-        cursor: Some(app.t),
-        x_ticks: None,
-        y_ticks: None,
-    };
+        event_lines(app, &[Who::Left, Who::Right], theme),
+    );
     let titles = [
         "Energy of both balls  [e] back to velocities",
         "Energy, both balls  [e] velocities",

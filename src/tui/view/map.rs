@@ -4,7 +4,6 @@
 
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
-use ratatui::widgets::Widget;
 
 use super::panel::block;
 use crate::physics::closed_form;
@@ -40,21 +39,17 @@ pub fn render(app: &App, grid: &[Regime], area: Rect, buf: &mut Buffer, theme: &
 
 fn regime_map(app: &App, grid: &[Regime], area: Rect, buf: &mut Buffer, theme: &Theme) {
     let g = theme.glyphs;
-    let blk = block(
-        super::panel::title_of(
-            &[
-                "Regime: b/R across, e up  [g] back",
-                "Regime: b/R, e up  [g]",
-                "Regime b/R, e [g]",
-                "Regime [g]",
-            ],
-            area,
-            theme,
-        ),
+    let inner = super::panel::framed(
+        &[
+            "Regime: b/R across, e up  [g] back",
+            "Regime: b/R, e up  [g]",
+            "Regime b/R, e [g]",
+            "Regime [g]",
+        ],
+        area,
+        buf,
         theme,
     );
-    let inner = blk.inner(area);
-    blk.render(area, buf);
     if inner.width < 12 || inner.height < 4 {
         return;
     }
@@ -131,21 +126,17 @@ fn regime_map(app: &App, grid: &[Regime], area: Rect, buf: &mut Buffer, theme: &
 }
 
 fn paper_figure(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
-    let blk = block(
-        super::panel::title_of(
-            &[
-                "Paper fig.: a/(μ g) and D against b/R",
-                "Paper fig.: a/(μ g), D vs b/R",
-                "Paper fig.: a/(μ g) and D",
-                "Paper fig.",
-            ],
-            area,
-            theme,
-        ),
+    let inner = super::panel::framed(
+        &[
+            "Paper fig.: a/(μ g) and D against b/R",
+            "Paper fig.: a/(μ g), D vs b/R",
+            "Paper fig.: a/(μ g) and D",
+            "Paper fig.",
+        ],
+        area,
+        buf,
         theme,
     );
-    let inner = blk.inner(area);
-    blk.render(area, buf);
     let n = 200;
     let xs: Vec<f64> = (0..=n).map(|i| 1.95 * i as f64 / n as f64).collect();
     let k = |x: f64| closed_form::contact_ratio(1.0, x);

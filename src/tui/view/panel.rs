@@ -5,7 +5,7 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::Style;
 use ratatui::text::{Line, Span};
-use ratatui::widgets::Block;
+use ratatui::widgets::{Block, Widget};
 
 use crate::lab::jobs::State;
 use crate::tui::theme::Theme;
@@ -16,6 +16,19 @@ pub(crate) fn block<'a>(title: impl Into<Line<'a>>, theme: &Theme) -> Block<'a> 
         .border_set(theme.glyphs.border)
         .border_style(theme.dim)
         .title(title.into().style(theme.title))
+}
+
+/// A panel's frame drawn with the longest of `titles` that fits; the area inside it.
+pub(crate) fn framed<S: AsRef<str>>(
+    titles: &[S],
+    area: Rect,
+    buf: &mut Buffer,
+    theme: &Theme,
+) -> Rect {
+    let blk = block(title_of(titles, area, theme), theme);
+    let inner = blk.inner(area);
+    blk.render(area, buf);
+    inner
 }
 
 /// A block title (` text `) that fits on the border of `area`, cut with an ellipsis.

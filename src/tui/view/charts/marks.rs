@@ -36,22 +36,17 @@ pub(super) fn measured_velocities(m: &MeasuredPoints, theme: &Theme) -> Vec<Plot
             });
         }
     }
-    series.push(PlotLine {
-        name: "measured v_cm".into(),
-        points: Arc::clone(&m.v_cm),
+    let marks = |name: &str, points, ascii, unicode| PlotLine {
+        name: name.into(),
+        points,
         style: theme.measured,
-        glyph: if theme.glyphs.ascii { "x" } else { "×" },
+        glyph: if theme.glyphs.ascii { ascii } else { unicode },
         draw: Draw::Points,
-    });
+    };
+    series.push(marks("measured v_cm", Arc::clone(&m.v_cm), "x", "×"));
     // A track without a rim mark measures no v_t: no legend entry claims one.
     if !m.v_t.is_empty() {
-        series.push(PlotLine {
-            name: "measured v_t".into(),
-            points: Arc::clone(&m.v_t),
-            style: theme.measured,
-            glyph: if theme.glyphs.ascii { "o" } else { "+" },
-            draw: Draw::Points,
-        });
+        series.push(marks("measured v_t", Arc::clone(&m.v_t), "o", "+"));
     }
     series
 }
