@@ -5,7 +5,7 @@
 use std::fmt::Write as _;
 
 use crate::physics::scene::Scene;
-use crate::settings::units::{Dimension, show_small, significant, with_uncertainty};
+use crate::settings::units::{Dimension, show, show_small, significant, with_uncertainty};
 use crate::study::fit::{self, Chosen, Fits, LineFit, ModelFit};
 use crate::study::measured::Found;
 
@@ -48,13 +48,12 @@ pub(super) fn summary(f: &Fits) -> String {
         );
     }
     if let Some(w) = &f.line_fit.width_from_lines {
-        let cm = |b: f64| significant(b * 100.0, 3);
         let _ = writeln!(
             out,
-            "  the measured a_t/a_cm gives b ≈ {} ± {} cm, not {} cm: check --width",
-            cm(w.width),
-            significant(200.0 * w.width_se, 1),
-            cm(w.given)
+            "  the measured a_t/a_cm gives b ≈ {:.2} ± {}, not {}: check --width",
+            show(w.width, Dimension::Length),
+            show(2.0 * w.width_se, Dimension::Length),
+            show(w.given, Dimension::Length)
         );
     }
     // μ_k alone, with v0 free when the data measured it (not given).

@@ -188,32 +188,7 @@ pub(super) fn candidates_within(
         Target::Velocity
     };
     let mut out = Vec::new();
-    let mut fitted: Vec<(Vec<Free>, Scored)> = Vec::new();
-    for free in candidates {
-        // From its usual start and from the best fit of a smaller model inside this
-        // one, the better of the two: a larger model must fit at least as well, and
-        // either start alone may end in a worse minimum (issue 27's trial: from the
-        // smaller model's optimum μ_k + v0 + e stopped at e = 1 with 2 mm RMS).
-        let nested = fitted
-            .iter()
-            .filter(|(f, _)| f.iter().all(|x| free.contains(x)))
-            .min_by(|a, b| mean(&a.1).total_cmp(&mean(&b.1)))
-            .map(|(f, s)| with(scene, f, &s.values));
-        // A model with more values than the data have points is not a candidate.
-        let s = match scored_fit(scene, m, &free, target, evals) {
-            Ok(s) => s,
-            Err(FitError::TooFewPoints { .. }) => continue,
-            Err(e) => return Err(e),
-        };
-        let s = match nested {
-            Some(start) => {
-                let other = scored_fit(&start, m, &free, target, evals)?;
-                if mean(&other) < mean(&s) { other } else { s }
-            }
-            None => s,
-        };
-        fitted.push((free, s));
-    }
+    let mut fitted = first_fits(scene, m, candidates, target, evals)?;
     if fitted.is_empty() {
         return Ok(out);
     }
@@ -280,6 +255,45 @@ pub(super) fn candidates_within(
         out[i].supported = true;
     }
     Ok(out)
+}
+
+/// Each candidate fitted on its own frames, from its usual start and from the best
+/// fit of a smaller model inside it ([`candidates_within`]); one with more values than
+/// the data have points is left out.
+fn first_fits(
+    scene: &Scene,
+    m: &Measured,
+    candidates: Vec<Vec<Free>>,
+    target: Target,
+    evals: &mut Evals,
+) -> Result<Vec<(Vec<Free>, Scored)>, FitError> {
+    let mut fitted: Vec<(Vec<Free>, Scored)> = Vec::new();
+    for free in candidates {
+        // From its usual start and from the best fit of a smaller model inside this
+        // one, the better of the two: a larger model must fit at least as well, and
+        // either start alone may end in a worse minimum (issue 27's trial: from the
+        // smaller model's optimum μ_k + v0 + e stopped at e = 1 with 2 mm RMS).
+        let nested = fitted
+            .iter()
+            .filter(|(f, _)| f.iter().all(|x| free.contains(x)))
+            .min_by(|a, b| mean(&a.1).total_cmp(&mean(&b.1)))
+            .map(|(f, s)| with(scene, f, &s.values));
+        // A model with more values than the data have points is not a candidate.
+        let s = match scored_fit(scene, m, &free, target, evals) {
+            Ok(s) => s,
+            Err(FitError::TooFewPoints { .. }) => continue,
+            Err(e) => return Err(e),
+        };
+        let s = match nested {
+            Some(start) => {
+                let other = scored_fit(&start, m, &free, target, evals)?;
+                if mean(&other) < mean(&s) { other } else { s }
+            }
+            None => s,
+        };
+        fitted.push((free, s));
+    }
+    Ok(fitted)
 }
 
 /// Refits, on the frames `common`, every model that fits them worse than a smaller

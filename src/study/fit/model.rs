@@ -62,7 +62,8 @@ pub struct ModelFit {
     /// True when the predicted v' lies inside the rest band.
     pub indistinguishable_from_rest: bool,
     /// True when what was observed agrees with the prediction (the same regime, or
-    /// rest where the prediction cannot be told from rest).
+    /// rest where the prediction cannot be told from rest); never where μ_k is not
+    /// determined (a regime predicted from it agrees with nothing).
     pub agrees: bool,
     /// Free values the data cannot pin down, and why (their `_se` is null).
     pub not_identified: Vec<NotIdentified>,
@@ -534,7 +535,6 @@ pub(super) fn scored_fit_within(
         v_roll,
         verdict: verdict.text("±"),
         indistinguishable_from_rest: verdict.indistinguishable_from_rest(),
-        // A regime predicted from a μ_k the data do not determine agrees with nothing.
         agrees: verdict.agrees_with(regime_observed)
             && !not_identified
                 .iter()
