@@ -5,7 +5,7 @@
 use std::fmt::Write as _;
 
 use crate::physics::scene::Scene;
-use crate::settings::units::{Dimension, show_small, significant, with_uncertainty};
+use crate::settings::units::{Dimension, show, show_small, significant, with_uncertainty};
 use crate::study::fit::{self, Chosen, Fits, LineFit, ModelFit};
 use crate::study::measured::Found;
 
@@ -36,6 +36,26 @@ pub(super) fn summary(f: &Fits) -> String {
         h.agreement().word(),
         rms_text(h)
     );
+    if h.mu_implausible {
+        let (what, option) = match h.fitted_to {
+            "positions" => ("lengths are likely in cm", "--length-unit cm"),
+            _ => ("speeds are likely in cm/s", "--speed-unit cm/s"),
+        };
+        let _ = writeln!(
+            out,
+            "  a μ_k beyond 1 is no ball rolling in a groove: the {what} (then μ_k ≈ {}): give {option}, or fix the header",
+            significant(h.mu / 100.0, 3)
+        );
+    }
+    if let Some(w) = &f.line_fit.width_from_lines {
+        let _ = writeln!(
+            out,
+            "  the measured a_t/a_cm gives b ≈ {:.2} ± {}, not {}: check --width",
+            show(w.width, Dimension::Length),
+            show(2.0 * w.width_se, Dimension::Length),
+            show(w.given, Dimension::Length)
+        );
+    }
     // μ_k alone, with v0 free when the data measured it (not given).
     let alone = match f.mu_alone.model.as_str() {
         "mu" => "μ_k alone".to_string(),

@@ -188,22 +188,7 @@ pub(super) fn candidates_within(
         Target::Velocity
     };
     let mut out = Vec::new();
-    let mut fitted: Vec<(Vec<Free>, Scored)> = Vec::new();
-    for free in candidates {
-        // From the best fit of a smaller model inside this one: a larger model
-        // should fit at least as well, and a cold start may end in a worse minimum.
-        let start = fitted
-            .iter()
-            .filter(|(f, _)| f.iter().all(|x| free.contains(x)))
-            .min_by(|a, b| a.1.cost.total_cmp(&b.1.cost))
-            .map_or(*scene, |(f, s)| with(scene, f, &s.values));
-        // A model with more values than the data have points is not a candidate.
-        match scored_fit(&start, m, &free, target, evals) {
-            Ok(s) => fitted.push((free, s)),
-            Err(FitError::TooFewPoints { .. }) => continue,
-            Err(e) => return Err(e),
-        }
-    }
+    let mut fitted = first_fits(scene, m, candidates, target, evals)?;
     if fitted.is_empty() {
         return Ok(out);
     }
@@ -250,6 +235,7 @@ pub(super) fn candidates_within(
         }
         common = shared_frames(&fitted);
     }
+    nested_no_worse(m, target, &common, &mut fitted, evals)?;
     let scored: Vec<(Vec<f64>, Vec<Label>)> = fitted
         .iter()
         .map(|(_, s)| labelled_residuals(&s.scene, data, &common, target, true, evals))
@@ -269,6 +255,95 @@ pub(super) fn candidates_within(
         out[i].supported = true;
     }
     Ok(out)
+}
+
+/// Each candidate fitted on its own frames, from its usual start and from the best
+/// fit of a smaller model inside it ([`candidates_within`]); one with more values than
+/// the data have points is left out.
+fn first_fits(
+    scene: &Scene,
+    m: &Measured,
+    candidates: Vec<Vec<Free>>,
+    target: Target,
+    evals: &mut Evals,
+) -> Result<Vec<(Vec<Free>, Scored)>, FitError> {
+    let mut fitted: Vec<(Vec<Free>, Scored)> = Vec::new();
+    for free in candidates {
+        // From its usual start and from the best fit of a smaller model inside this
+        // one, the better of the two: a larger model must fit at least as well, and
+        // either start alone may end in a worse minimum (issue 27's trial: from the
+        // smaller model's optimum μ_k + v0 + e stopped at e = 1 with 2 mm RMS).
+        let nested = fitted
+            .iter()
+            .filter(|(f, _)| f.iter().all(|x| free.contains(x)))
+            .min_by(|a, b| mean(&a.1).total_cmp(&mean(&b.1)))
+            .map(|(f, s)| with(scene, f, &s.values));
+        // A model with more values than the data have points is not a candidate.
+        let s = match scored_fit(scene, m, &free, target, evals) {
+            Ok(s) => s,
+            Err(FitError::TooFewPoints { .. }) => continue,
+            Err(e) => return Err(e),
+        };
+        let s = match nested {
+            Some(start) => {
+                let other = scored_fit(&start, m, &free, target, evals)?;
+                if mean(&other) < mean(&s) { other } else { s }
+            }
+            None => s,
+        };
+        fitted.push((free, s));
+    }
+    Ok(fitted)
+}
+
+/// Refits, on the frames `common`, every model that fits them worse than a smaller
+/// model inside it, from that model's values (its own extra values where the smaller
+/// model's scene has them), and keeps the refit where it is better: a model with one
+/// more free value must never fit worse than the one without it.
+fn nested_no_worse(
+    m: &Measured,
+    target: Target,
+    common: &[usize],
+    fitted: &mut [(Vec<Free>, Scored)],
+    evals: &mut Evals,
+) -> Result<(), FitError> {
+    let thin = thinned(m);
+    let data = thin.as_ref().map_or(m, |(t, _)| t);
+    let cost_on = |s: &Scene, evals: &mut Evals| {
+        let r = residuals(s, data, common, target, evals);
+        r.iter().map(|x| x * x).sum::<f64>()
+    };
+    for k in 0..fitted.len() {
+        for j in 0..fitted.len() {
+            let (small, large) = (&fitted[j].0, &fitted[k].0);
+            if j == k || small.len() >= large.len() || !small.iter().all(|x| large.contains(x)) {
+                continue;
+            }
+            let (cj, ck) = (
+                cost_on(&fitted[j].1.scene, evals),
+                cost_on(&fitted[k].1.scene, evals),
+            );
+            if ck <= cj * (1.0 + 1e-12) {
+                continue;
+            }
+            // From the smaller model's optimum: its scene holds the larger model's
+            // extra values where the smaller one keeps them fixed, so the start fits
+            // exactly as well as the smaller model, and the refit only improves on it.
+            let free = large.clone();
+            let start = fitted[j].1.scene;
+            let refit = scored_fit_within(&start, m, &free, target, Some(common), evals)?;
+            if refit.idx == common && cost_on(&refit.scene, evals) < ck {
+                fitted[k].1 = refit;
+            }
+        }
+    }
+    Ok(())
+}
+
+/// A fit's weighted residual sum of squares per residual: fits of one model from two
+/// starts may keep different frames.
+fn mean(s: &Scored) -> f64 {
+    s.cost / s.idx.len().max(1) as f64
 }
 
 /// The frames (of the thinned series) every fitted candidate used, in order.

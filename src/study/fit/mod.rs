@@ -26,8 +26,8 @@ use crate::study::measured::series::Measured;
 pub use approach::{APPROACH_FRAMES, Approach, of_velocities};
 pub use choice::{Candidate, Estimate, compare_candidates, compare_models};
 pub use line::{
-    Line, LineFit, PAPER_TABLE, PaperDisagreement, line, line_fit, paper_disagreements, paper_row,
-    sliding_window,
+    Line, LineFit, PAPER_TABLE, PaperDisagreement, WidthFromLines, line, line_fit,
+    paper_disagreements, paper_row, sliding_window,
 };
 pub use model::{
     Agreement, MAX_MODEL_POINTS, ModelFit, POOR_FIT, model_fit, position_fit, thinned,

@@ -62,7 +62,8 @@ pub struct ModelFit {
     /// True when the predicted v' lies inside the rest band.
     pub indistinguishable_from_rest: bool,
     /// True when what was observed agrees with the prediction (the same regime, or
-    /// rest where the prediction cannot be told from rest).
+    /// rest where the prediction cannot be told from rest); never where μ_k is not
+    /// determined (a regime predicted from it agrees with nothing).
     pub agrees: bool,
     /// Free values the data cannot pin down, and why (their `_se` is null).
     pub not_identified: Vec<NotIdentified>,
@@ -83,7 +84,16 @@ pub struct ModelFit {
     /// `fit_all`, which has the line fits.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub lines_disagree: Option<(f64, f64)>,
+    /// True when the fitted μ_k is beyond [`MAX_PLAUSIBLE_MU`]: no ball rolls in a
+    /// groove with that, so the data's unit is likely wrong (speeds in cm/s read as m/s
+    /// make every deceleration, and μ_k, 100× too large); there is no verdict.
+    #[serde(skip_serializing_if = "std::ops::Not::not")]
+    pub mu_implausible: bool,
 }
+
+/// The largest μ_k a ball rolling in a groove may plausibly have: beyond it the fit
+/// says the data's units are likely wrong ([`Agreement::ImplausibleMu`]).
+pub const MAX_PLAUSIBLE_MU: f64 = 1.0;
 
 impl ModelFit {
     /// Why the data do not determine the free value `parameter` ([`Free::name`]), if
@@ -111,6 +121,8 @@ impl ModelFit {
     pub fn agreement(&self) -> Agreement {
         if self.undetermined(Free::Mu.name()).is_some() {
             Agreement::MuNotDetermined
+        } else if self.mu_implausible {
+            Agreement::ImplausibleMu
         } else if self.scatter.is_some_and(|s| self.rms > POOR_FIT * s) {
             Agreement::PoorFit
         } else if self.lines_disagree.is_some() {
@@ -145,6 +157,9 @@ pub enum Agreement {
     /// μ_k from v_cm and from v_t (the line fits) disagree ([`LineFit::disagree`]):
     /// k = r/R enters them as k and 1/k, so the scene's b or R does not fit the data.
     LinesDisagree,
+    /// μ_k is beyond [`MAX_PLAUSIBLE_MU`] ([`ModelFit::mu_implausible`]): the data's
+    /// unit is likely wrong.
+    ImplausibleMu,
 }
 
 /// How many times the data's scatter an RMS residual may be before the fit is poor.
@@ -163,6 +178,7 @@ impl Agreement {
             Agreement::MuNotDetermined => "no verdict",
             Agreement::PoorFit => "POOR FIT",
             Agreement::LinesDisagree => "μ_k,cm ≠ μ_k,t",
+            Agreement::ImplausibleMu => "μ_k > 1: units?",
         }
     }
 
@@ -183,6 +199,9 @@ impl Agreement {
             Agreement::LinesDisagree => {
                 "no verdict: μ_k,cm and μ_k,t of the line fits disagree beyond their ± and by over a quarter, so the scene's b or R does not fit these data (k = r/R enters μ_k,cm as k, μ_k,t as 1/k): check --width and --radius"
             }
+            Agreement::ImplausibleMu => {
+                "no verdict: a μ_k beyond 1 is no ball rolling in a groove, so the data's unit is likely wrong (speeds in cm/s read as m/s make μ_k 100× too large): give --speed-unit cm/s (a track in cm: --length-unit cm), or fix the header"
+            }
         }
     }
 
@@ -195,6 +214,7 @@ impl Agreement {
             Agreement::MuNotDetermined => "no verdict: μ_k not determined",
             Agreement::PoorFit => "no verdict: RMS ≫ the data's scatter",
             Agreement::LinesDisagree => "no verdict: μ_k,cm ≠ μ_k,t (b, R?)",
+            Agreement::ImplausibleMu => "no verdict: μ_k > 1 (units?)",
         }
     }
 
@@ -515,7 +535,6 @@ pub(super) fn scored_fit_within(
         v_roll,
         verdict: verdict.text("±"),
         indistinguishable_from_rest: verdict.indistinguishable_from_rest(),
-        // A regime predicted from a μ_k the data do not determine agrees with nothing.
         agrees: verdict.agrees_with(regime_observed)
             && !not_identified
                 .iter()
@@ -525,6 +544,7 @@ pub(super) fn scored_fit_within(
         every,
         scale,
         lines_disagree: None,
+        mu_implausible: fitted.mu > MAX_PLAUSIBLE_MU,
     }))
 }
 
@@ -565,6 +585,7 @@ pub(super) mod tests {
             every: None,
             scale: None,
             lines_disagree: None,
+            mu_implausible: false,
         }
     }
 }

@@ -1,0 +1,100 @@
+//! Verdicts that name the likely mistake (issue 27's trial): a μ_k beyond 1 (a file's
+//! speeds in cm/s under a header that says m/s) never "agrees", and a `--width` that
+//! the measured a_t/a_cm contradicts is named in the summary.
+
+use groovelab::physics::engine::solve;
+use groovelab::physics::scene::{Scene, Span};
+
+use crate::common::{json, scratch_dir, stdout, symmetric};
+
+/// A noise-free velocity file of `scene` at 120 frames/s from 0.1 s before the
+/// impact to 0.8 s after, its speeds multiplied by `factor` under an m/s header.
+fn velocity_file(scene: &Scene, factor: f64) -> String {
+    let sol = solve(
+        scene,
+        &Span {
+            t_start: -0.2,
+            t_end: None,
+        },
+    );
+    let mut out = String::from("t (s),v_cm (m/s),v_t (m/s)\n");
+    for k in 0..=108 {
+        let t = -0.1 + f64::from(k) / 120.0 + 0.3 / 120.0;
+        let s = sol.at(t);
+        out += &format!(
+            "{:.6},{:.6},{:.6}\n",
+            t,
+            factor * s.left.v,
+            factor * s.left.u
+        );
+    }
+    out
+}
+
+/// A slow ball (μ_k = 0.03, v0 = 8 cm/s) written in cm/s under an m/s header fits
+/// μ_k = 100 × 0.03 = 3 and v0 = 8 m/s (every deceleration read 100× too large):
+/// no verdict that agrees, in the table and in JSON, and the unit to give is named.
+#[test]
+fn a_mu_beyond_one_does_not_agree_and_names_the_unit() {
+    let scene = symmetric(0.0275, 0.049, 0.03, 0.08, 1.0);
+    let dir = scratch_dir("fit_verdicts", "mu_beyond_one");
+    let path = dir.join("slow.csv");
+    std::fs::write(&path, velocity_file(&scene, 100.0)).unwrap();
+    let path = path.display().to_string();
+    let args = [
+        "fit", "--data", &path, "--radius", "2.75cm", "--width", "4.9cm",
+    ];
+    let text = stdout(&args);
+    let head = text.lines().nth(1).unwrap();
+    assert!(head.contains("μ_k > 1: units?"), "{text}");
+    assert!(!head.contains("agrees"), "{text}");
+    assert!(text.contains("--speed-unit cm/s"), "{text}");
+    let j = json(&[&args[..], &["--format", "json"]].concat());
+    let mf = &j["model_fit"];
+    assert!(mf["mu"].as_f64().unwrap() > 1.0, "{mf}");
+    assert_eq!(mf["mu_implausible"], true, "{mf}");
+    // The same ball in m/s: μ_k 0.03, no such field.
+    std::fs::write(dir.join("right.csv"), velocity_file(&scene, 1.0)).unwrap();
+    let right = dir.join("right.csv").display().to_string();
+    let j = json(&[
+        "fit", "--data", &right, "--radius", "2.75cm", "--width", "4.9cm", "--format", "json",
+    ]);
+    assert!(
+        (j["model_fit"]["mu"].as_f64().unwrap() - 0.03).abs() < 1e-3,
+        "{j}"
+    );
+    assert!(j["model_fit"].get("mu_implausible").is_none());
+}
+
+/// Data made at b = 4.26 cm (R = 2.75 cm) fitted with --width 3cm: the summary says
+/// the b that D = |a_t|/|a_cm| = 5/2 (1 − b²/4R²) gives; with the right width it
+/// says nothing.
+#[test]
+fn a_wrong_width_is_named_in_the_summary() {
+    let scene = symmetric(0.0275, 0.0426, 0.15, 0.7, 1.0);
+    let dir = scratch_dir("fit_verdicts", "wrong_width");
+    let path = dir.join("vel.csv");
+    std::fs::write(&path, velocity_file(&scene, 1.0)).unwrap();
+    let path = path.display().to_string();
+    let fit = |width: &str| {
+        stdout(&[
+            "fit", "--data", &path, "--radius", "2.75cm", "--width", width,
+        ])
+    };
+    let wrong = fit("3cm");
+    let summary: Vec<&str> = wrong.lines().take(4).collect();
+    let line = summary
+        .iter()
+        .find(|l| l.contains("check --width"))
+        .unwrap_or_else(|| panic!("{wrong}"));
+    assert!(
+        line.contains("b ≈ 4.26") && line.contains("not 3 cm"),
+        "{line}"
+    );
+    assert!(!fit("4.26cm").contains("check --width"));
+    let j = json(&[
+        "fit", "--data", &path, "--radius", "2.75cm", "--width", "3cm", "--format", "json",
+    ]);
+    let b = j["line_fit"]["width_from_lines"]["width"].as_f64().unwrap();
+    assert!((b - 0.0426).abs() < 2e-4, "{b}");
+}
