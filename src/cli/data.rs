@@ -14,7 +14,8 @@ use super::args::{DataArgs, DataCmdArgs, DataFormat, SceneArgs};
 use super::error::CliError;
 use super::open::reading_of;
 use crate::input::data::{Notes, Report, UnitNote, inspect};
-use crate::settings::units::{Dimension, show_small, significant};
+use crate::settings::params::{Key, PARAMS};
+use crate::settings::units::{Dimension, show, show_small, significant};
 use crate::study::vision::write::SCALE_COMMENT;
 
 /// Reads each file with the data options and reports it; a video (or a folder of
@@ -54,11 +55,21 @@ pub fn run(args: &DataCmdArgs, scene: &SceneArgs, data: &DataArgs) -> Result<Str
                     .collect()
             })
             .unwrap_or_default();
+        // The scene the file says it was taken in (`# scene` lines): `fit` and the app
+        // take it under the options, so the report says it too.
+        let header: Vec<(Key, f64)> = crate::input::data::scene_of(&text, &file)
+            .map(|spec| spec.given().collect())
+            .unwrap_or_default();
+        let assumed = ["mass_left", "mass_right"]
+            .into_iter()
+            .filter(|m| !header.iter().any(|(k, _)| k.name() == *m))
+            .collect();
         kinds.push((file.clone(), report.holds_velocities()));
         reports.push(DataReport {
             report,
             scene_values,
-            assumed: ["mass_left", "mass_right"],
+            header_values: header.iter().map(|(k, v)| (k.name(), *v)).collect(),
+            assumed,
         });
     }
     super::open::options_apply(data, &kinds)?;
@@ -133,9 +144,13 @@ pub struct DataReport {
     /// The scene values the data measure (by parameter name, SI): what `fit` and the
     /// app take from them where no option or edit sets them (v0: the approach).
     pub scene_values: BTreeMap<&'static str, f64>,
+    /// The scene values the file's `# scene` lines give (by parameter name, SI), as
+    /// the app's CSV export writes them; absent when it has none.
+    #[serde(skip_serializing_if = "BTreeMap::is_empty")]
+    pub header_values: BTreeMap<&'static str, f64>,
     /// The values no data measure that enter F_net, τ_net and the energies: assumed
-    /// (the preset's) unless given.
-    pub assumed: [&'static str; 2],
+    /// (the preset's) unless given (here or in the file's header).
+    pub assumed: Vec<&'static str>,
 }
 
 /// A track's name as the text says it.
@@ -219,7 +234,7 @@ pub fn describe(shown: &DataReport) -> String {
         _ => {}
     }
     let _ = writeln!(s, "  {}", r.impact_note);
-    s += &scene_line(&shown.scene_values);
+    s += &scene_line(&shown.scene_values, &shown.header_values);
     s
 }
 
@@ -257,17 +272,55 @@ fn missing_line(missing: &[crate::input::data::Gap]) -> String {
 }
 
 /// "  the scene takes from it: v0 = 0.791 m/s (both balls: the approach); R, b, μ_k,
-/// e from the preset or the options; m assumed unless given (no data measure it)".
-fn scene_line(values: &BTreeMap<&'static str, f64>) -> String {
-    let rest =
-        "R, b, μ_k, e from the preset or the options; m assumed unless given (no data measure it)";
-    match values.get("v0").or(values.get("v0_left")) {
+/// e from the preset or the options; m assumed unless given (no data measure it)";
+/// what the file's `# scene` lines give is named as its header's.
+fn scene_line(
+    values: &BTreeMap<&'static str, f64>,
+    header: &BTreeMap<&'static str, f64>,
+) -> String {
+    let given = |name: &str| header.contains_key(name);
+    // In the table's order (R, b, m …), as the parameters panel shows them.
+    let from_header: Vec<String> = PARAMS
+        .iter()
+        .filter_map(|p| {
+            let v = header.get(p.name)?;
+            let label = p.label.replace("mu_k", "μ_k");
+            Some(format!("{label} = {}", show(*v, p.dim)))
+        })
+        .collect();
+    let v0 = values.get("v0").or(values.get("v0_left"));
+    let others: Vec<&str> = [
+        ("v0", "v0"),
+        ("radius", "R"),
+        ("width", "b"),
+        ("mu", "μ_k"),
+        ("restitution", "e"),
+    ]
+    .into_iter()
+    .filter(|&(name, _)| !(given(name) || name == "v0" && v0.is_some()))
+    .map(|(_, symbol)| symbol)
+    .collect();
+    let mut rest = Vec::new();
+    if !from_header.is_empty() {
+        rest.push(format!("its header gives {}", from_header.join(", ")));
+    }
+    if !others.is_empty() {
+        rest.push(format!(
+            "{} from the preset or the options",
+            others.join(", ")
+        ));
+    }
+    if !(given("mass_left") && given("mass_right")) {
+        rest.push("m assumed unless given (no data measure it)".into());
+    }
+    let rest = rest.join("; ");
+    match v0 {
         Some(&v) => format!(
             "  the scene takes from it: v0 = {} (both balls: the approach); {rest}\n",
-            crate::settings::units::show(v, Dimension::Speed)
+            show(v, Dimension::Speed)
         ),
-        None => format!(
-            "  the scene takes nothing from it (no approach before an impact): v0, {rest}\n"
-        ),
+        None => {
+            format!("  the scene takes nothing from it (no approach before an impact): {rest}\n")
+        }
     }
 }

@@ -307,3 +307,46 @@ fn the_source_of_the_scene_is_named_as_it_came() {
         "{fit}"
     );
 }
+
+/// `data` says what a file's `# scene` lines give, as `fit` takes them: the header's
+/// values named, the masses no longer "assumed" when it states them; a file without
+/// them keeps the preset-or-options line.
+#[test]
+fn data_names_what_a_files_header_gives() {
+    let stated = velocity_file(
+        "data-stated.csv",
+        "# scene radius = 1.5 cm\n# scene width = 2.1 cm\n# scene mass = 110 g\n",
+    );
+    let out = common::run_in_process(&["data", &stated]).unwrap();
+    assert!(
+        out.contains("its header gives R = 1.5 cm, b = 2.1 cm, m left = 110 g, m right = 110 g"),
+        "{out}"
+    );
+    assert!(
+        out.contains("μ_k, e from the preset or the options"),
+        "{out}"
+    );
+    assert!(!out.contains("m assumed"), "{out}");
+    let json: serde_json::Value = serde_json::from_str(
+        &common::run_in_process(&["data", &stated, "--format", "json"]).unwrap(),
+    )
+    .unwrap();
+    let width = json[0]["header_values"]["width"].as_f64().unwrap();
+    assert!((width - 0.021).abs() < 1e-15, "{width}");
+    assert_eq!(json[0]["assumed"], serde_json::json!([]));
+    let plain = velocity_file("data-plain.csv", "");
+    let out = common::run_in_process(&["data", &plain]).unwrap();
+    assert!(
+        out.contains("R, b, μ_k, e from the preset or the options; m assumed"),
+        "{out}"
+    );
+    let json: serde_json::Value = serde_json::from_str(
+        &common::run_in_process(&["data", &plain, "--format", "json"]).unwrap(),
+    )
+    .unwrap();
+    assert!(json[0].get("header_values").is_none());
+    assert_eq!(
+        json[0]["assumed"],
+        serde_json::json!(["mass_left", "mass_right"])
+    );
+}
