@@ -213,10 +213,6 @@ pub(super) fn candidates_within(
             // model fitted them, whichever fits the common frames best: a larger model
             // must fit them at least as well, and one model fitted from two starts
             // must not land in two minima (one fit per model).
-            let mut cost_on = |s: &Scene| {
-                let r = residuals(s, data, &common, target, evals);
-                r.iter().map(|x| x * x).sum::<f64>()
-            };
             let free = fitted[k].0.clone();
             let own = fitted[k].1.scene;
             let theirs = fitted.iter().map(|(_, s)| {
@@ -229,8 +225,9 @@ pub(super) fn candidates_within(
                 .map(|(f, s)| with(&own, f, &s.values))
                 .chain(theirs)
                 .chain([own])
-                .min_by(|a, b| cost_on(a).total_cmp(&cost_on(b)))
-                .unwrap_or(fitted[k].1.scene);
+                .map(|start| (cost_on(&start, data, &common, target, evals), start))
+                .min_by(|a, b| a.0.total_cmp(&b.0))
+                .map_or(fitted[k].1.scene, |(_, start)| start);
             fitted[k].1 = scored_fit_within(&start, m, &free, target, Some(&common), evals)?;
         }
         common = shared_frames(&fitted);
@@ -309,21 +306,17 @@ fn nested_no_worse(
 ) -> Result<(), FitError> {
     let thin = thinned(m);
     let data = thin.as_ref().map_or(m, |(t, _)| t);
-    let cost_on = |s: &Scene, evals: &mut Evals| {
-        let r = residuals(s, data, common, target, evals);
-        r.iter().map(|x| x * x).sum::<f64>()
-    };
+    let mut costs: Vec<f64> = fitted
+        .iter()
+        .map(|(_, s)| cost_on(&s.scene, data, common, target, evals))
+        .collect();
     for k in 0..fitted.len() {
         for j in 0..fitted.len() {
             let (small, large) = (&fitted[j].0, &fitted[k].0);
             if j == k || small.len() >= large.len() || !small.iter().all(|x| large.contains(x)) {
                 continue;
             }
-            let (cj, ck) = (
-                cost_on(&fitted[j].1.scene, evals),
-                cost_on(&fitted[k].1.scene, evals),
-            );
-            if ck <= cj * (1.0 + 1e-12) {
+            if costs[k] <= costs[j] * (1.0 + 1e-12) {
                 continue;
             }
             // From the smaller model's optimum: its scene holds the larger model's
@@ -332,12 +325,27 @@ fn nested_no_worse(
             let free = large.clone();
             let start = fitted[j].1.scene;
             let refit = scored_fit_within(&start, m, &free, target, Some(common), evals)?;
-            if refit.idx == common && cost_on(&refit.scene, evals) < ck {
+            let refit_cost = cost_on(&refit.scene, data, common, target, evals);
+            if refit.idx == common && refit_cost < costs[k] {
                 fitted[k].1 = refit;
+                costs[k] = refit_cost;
             }
         }
     }
     Ok(())
+}
+
+/// The weighted residual sum of squares of `scene` on `frames` of `data`: what the
+/// fits of different models are compared by on the frames they share.
+fn cost_on(
+    scene: &Scene,
+    data: &Measured,
+    frames: &[usize],
+    target: Target,
+    evals: &mut Evals,
+) -> f64 {
+    let r = residuals(scene, data, frames, target, evals);
+    r.iter().map(|x| x * x).sum()
 }
 
 /// A fit's weighted residual sum of squares per residual: fits of one model from two
