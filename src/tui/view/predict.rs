@@ -26,6 +26,16 @@ pub(super) fn short_answer(r: Regime) -> &'static str {
     }
 }
 
+/// How a prediction fared: its mark and its word (✓ right, ✗ not quite); the status
+/// line and the Forces view say it alike.
+pub(super) fn agreement(right: bool) -> (&'static str, &'static str) {
+    if right {
+        ("✓", "right")
+    } else {
+        ("✗", "not quite")
+    }
+}
+
 fn answer_text(r: Regime) -> &'static str {
     match r {
         Regime::Depart => "they move apart",

@@ -85,11 +85,11 @@ fn prediction_text(app: &App, g: &Glyphs) -> Option<String> {
     }
     let headline = &app.lab.story.headline;
     let observed = headline.split(':').next().unwrap_or(headline);
-    let mark = match (app.lab.story.verdict.agrees_with(p.guess), g.ascii) {
-        (true, false) => "✓",
-        (false, false) => "✗",
-        (true, true) => "(right)",
-        (false, true) => "(not quite)",
+    let (mark, word) = super::predict::agreement(app.lab.story.verdict.agrees_with(p.guess));
+    let mark = if g.ascii {
+        format!("({word})")
+    } else {
+        mark.to_string()
     };
     // Stopped where the outcome shows: how to watch on.
     let more = if !app.playing && app.t == p.reveal_at {

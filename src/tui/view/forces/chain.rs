@@ -2,7 +2,7 @@
 //! the outcome, with ↑/↓ against a pinned run; and the predict–observe–explain lines.
 
 use super::parts::*;
-use crate::tui::view::predict::short_answer;
+use crate::tui::view::predict::{agreement, short_answer};
 
 /// The two chains' items for the ball shown: b → k → |N| → |F| → F_net → |a_cm| and
 /// τ_net → |α| → |a_t|, each with its unit and, with a run pinned, ↑/↓/= against it
@@ -219,11 +219,11 @@ pub(super) fn prediction_lines<'a>(
     let d = &app.lab.derived;
     let verdict = &app.lab.story.verdict;
     let right = verdict.agrees_with(p.guess);
-    let mark = match (right, g.ascii) {
-        (true, false) => "✓ right",
-        (false, false) => "✗ not quite",
-        (true, true) => "right",
-        (false, true) => "not quite",
+    let (mark, word) = agreement(right);
+    let mark = if g.ascii {
+        word.to_string()
+    } else {
+        format!("{mark} {word}")
     };
     let pm = if g.ascii { "+-" } else { "±" };
     // With b hidden, the reason in words: D's value (or v') would give b away.
