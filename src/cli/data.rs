@@ -14,7 +14,7 @@ use super::args::{DataArgs, DataCmdArgs, DataFormat, SceneArgs};
 use super::error::CliError;
 use super::open::reading_of;
 use crate::input::data::{Notes, Report, UnitNote, inspect};
-use crate::settings::params::{Key, PARAMS};
+use crate::settings::params::{Key, PARAMS, Param};
 use crate::settings::units::{Dimension, show, show_small, significant};
 use crate::study::vision::write::SCALE_COMMENT;
 
@@ -278,28 +278,32 @@ fn scene_line(
     values: &BTreeMap<&'static str, f64>,
     header: &BTreeMap<&'static str, f64>,
 ) -> String {
-    let given = |name: &str| header.contains_key(name);
+    // A value is given when the header sets every value it stands for (v0: both balls').
+    let given = |k: Key| k.param().sets.iter().all(|s| header.contains_key(s.name()));
+    let short = |p: &Param| p.label.replace("mu_k", "μ_k");
     // In the table's order (R, b, m …), as the parameters panel shows them.
     let from_header: Vec<String> = PARAMS
         .iter()
         .filter_map(|p| {
-            let v = header.get(p.name)?;
-            let label = p.label.replace("mu_k", "μ_k");
-            Some(format!("{label} = {}", show(*v, p.dim)))
+            Some(format!(
+                "{} = {}",
+                short(p),
+                show(*header.get(p.name)?, p.dim)
+            ))
         })
         .collect();
     let v0 = values.get("v0").or(values.get("v0_left"));
-    let others: Vec<&str> = [
-        ("v0", "v0"),
-        ("radius", "R"),
-        ("width", "b"),
-        ("mu", "μ_k"),
-        ("restitution", "e"),
-    ]
-    .into_iter()
-    .filter(|&(name, _)| !(given(name) || name == "v0" && v0.is_some()))
-    .map(|(_, symbol)| symbol)
-    .collect();
+    let others: Vec<String> = [Key::V0, Key::Radius, Key::Width, Key::Mu, Key::Restitution]
+        .into_iter()
+        .filter(|&k| !(given(k) || k == Key::V0 && v0.is_some()))
+        .map(|k| {
+            if k == Key::V0 {
+                "v0".into()
+            } else {
+                short(k.param())
+            }
+        })
+        .collect();
     let mut rest = Vec::new();
     if !from_header.is_empty() {
         rest.push(format!("its header gives {}", from_header.join(", ")));
@@ -310,7 +314,7 @@ fn scene_line(
             others.join(", ")
         ));
     }
-    if !(given("mass_left") && given("mass_right")) {
+    if !given(Key::Mass) {
         rest.push("m assumed unless given (no data measure it)".into());
     }
     let rest = rest.join("; ");

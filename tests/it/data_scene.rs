@@ -350,3 +350,23 @@ fn data_names_what_a_files_header_gives() {
         serde_json::json!(["mass_left", "mass_right"])
     );
 }
+
+/// A header that gives both balls' v0 leaves v0 out of "from the preset", also where
+/// the data have no approach of their own to give it.
+#[test]
+fn data_counts_a_headers_v0_as_given() {
+    let dir = common::scratch_dir("datascene", "header_v0");
+    let file = dir.join("no-impact.csv");
+    std::fs::write(
+        &file,
+        "# scene v0 = 0.5 m/s\nt,v_cm,v_t\n0,0.5,0.5\n0.01,0.49,0.48\n0.02,0.48,0.46\n0.03,0.47,0.44\n",
+    )
+    .unwrap();
+    let out = common::run_in_process(&["data", file.to_str().unwrap()]).unwrap();
+    assert!(
+        out.contains(
+            "its header gives v0 left = 0.5 m/s, v0 right = 0.5 m/s; R, b, μ_k, e from the preset"
+        ),
+        "{out}"
+    );
+}
