@@ -9,8 +9,8 @@ use std::path::Path;
 use criterion::{Criterion, criterion_group, criterion_main};
 use groovelab::input::video::{self, Limits, write};
 use groovelab::physics::scene::Scene;
-use groovelab::study::vision::render::{Film, Look};
-use groovelab::study::vision::{self, Tracker};
+use groovelab::vision::render::{Film, Look};
+use groovelab::vision::{self, Tracker};
 
 mod common;
 

@@ -16,7 +16,7 @@ use super::open::reading_of;
 use crate::input::data::{Notes, Report, UnitNote, inspect};
 use crate::settings::params::{Key, PARAMS, Param};
 use crate::settings::units::{Dimension, show, show_small, significant};
-use crate::study::vision::write::SCALE_COMMENT;
+use crate::vision::write::SCALE_COMMENT;
 
 /// Reads each file with the data options and reports it; a video (or a folder of
 /// frames) is tracked for the scene's R first, its tracks read as the file.

@@ -12,7 +12,7 @@ use super::track_args::{TrackArgs, TrackOutput};
 use crate::input::video::RateSource;
 use crate::input::video::tracked::{self, Options, Tracked};
 use crate::settings::params::Key;
-use crate::study::vision::tracks::{BallTrack, Calibration};
+use crate::vision::tracks::{BallTrack, Calibration};
 
 #[derive(Serialize)]
 struct TrackJson<'a> {

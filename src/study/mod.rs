@@ -13,7 +13,6 @@ pub mod preset;
 pub mod story;
 pub mod sweep;
 pub mod video;
-pub mod vision;
 
 use std::sync::atomic::{AtomicBool, Ordering};
 

@@ -16,7 +16,7 @@ use crate::methods::Method;
 use crate::settings::spec::SceneSpec;
 use crate::study::compare::Row;
 use crate::study::fit::{FitError, Fits};
-use crate::study::vision::thumbs::VideoView;
+use crate::vision::thumbs::VideoView;
 
 /// Which job finished (or moved on a percent): what the event loop is told.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

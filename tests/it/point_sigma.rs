@@ -6,8 +6,8 @@ use groovelab::physics::scene::Scene;
 use groovelab::study::fit::{self, Free, ModelFit};
 use groovelab::study::measured::{self, Derive, Measured, RawSeries, Track};
 use groovelab::study::video::{self, Noise, Video};
-use groovelab::study::vision::tracks::{BallTrack, Calibration, Tracks};
-use groovelab::study::vision::write::tracker_text;
+use groovelab::vision::tracks::{BallTrack, Calibration, Tracks};
+use groovelab::vision::write::tracker_text;
 
 use crate::common::paper_scene;
 

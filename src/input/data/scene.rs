@@ -56,7 +56,7 @@ pub fn scene_of(text: &str, file: &str) -> Result<SceneSpec, DataError> {
 /// `text` states (`groovelab track` writes it); `None` without one, or with one that
 /// does not read as two positive numbers (a comment, then, like any other).
 pub fn scale_rel_se(text: &str) -> Option<f64> {
-    use crate::study::vision::write::SCALE_COMMENT;
+    use crate::vision::write::SCALE_COMMENT;
     let rest = text
         .lines()
         .take_while(|l| l.trim_start().starts_with('#') || l.trim().is_empty())

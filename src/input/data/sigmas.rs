@@ -1,12 +1,12 @@
 //! Each tracked point's standard error, read from the `#` lines `groovelab track`
 //! writes after its table (`# sigma (m)` naming the tracks, then one `# sigma` line
-//! per frame: t and each track's σ, m, tab-separated; `study::vision::write`), and
+//! per frame: t and each track's σ, m, tab-separated; `vision::write`), and
 //! put beside the centre's and the mark's positions of a track already read. A file
 //! without them, or with lines that do not read, keeps no σ: the fit then weights
 //! every point alike, as before.
 
 use crate::study::measured::Track;
-use crate::study::vision::write::{SIGMA_HEADER, SIGMA_ROW};
+use crate::vision::write::{SIGMA_HEADER, SIGMA_ROW};
 
 /// `track` with the σ of its centre and mark where `text` states them (the tracks
 /// named as `track.centre_name` and `track.mark_name`), matched to its frames by time

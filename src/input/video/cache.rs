@@ -15,7 +15,7 @@ use std::sync::{Arc, Mutex, PoisonError};
 use super::VideoError;
 use super::tracked::{self, Options};
 use crate::study::Progress;
-use crate::study::vision::thumbs::VideoView;
+use crate::vision::thumbs::VideoView;
 
 /// A video's tracks as `--data` reads them, and the app's view of it (`None` when
 /// its cached pictures were lost or damaged).

@@ -11,7 +11,7 @@ use std::thread::JoinHandle;
 use super::info::{Frames, Info};
 use super::probe::url;
 use super::problem::{VideoError, VideoProblem};
-use crate::study::vision::Gray;
+use crate::vision::Gray;
 
 /// The frames of the video at `path` (as `info` describes it).
 pub(super) fn frames(path: &Path, info: &Info) -> Result<Frames, VideoError> {

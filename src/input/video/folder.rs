@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 use super::info::{Frames, Info, Limits};
 use super::problem::{VideoError, VideoProblem};
-use crate::study::vision::Gray;
+use crate::vision::Gray;
 
 /// True for a file named as a PNG or JPEG image.
 pub(super) fn is_image(path: &Path) -> bool {

@@ -1,7 +1,7 @@
 //! What a video or a folder of frames is, before its frames are read: the types the
 //! readers share (why one cannot be read is `problem`'s).
 
-use crate::study::vision::Gray;
+use crate::vision::Gray;
 
 use super::problem::VideoError;
 

@@ -4,7 +4,7 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::study::vision::TracksError;
+use crate::vision::TracksError;
 
 /// Why the video or folder `file` cannot be read (or written): `{file}: {what}`.
 #[derive(Debug, thiserror::Error)]

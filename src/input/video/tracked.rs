@@ -1,15 +1,15 @@
 //! A video (or a folder of frames) tracked, for `track`, `--data VIDEO` and the app:
 //! its frames streamed through the tracker one at a time, small pictures of them
-//! kept for the app (`study::vision::thumbs`), the tracks in metres along the
+//! kept for the app (`vision::thumbs`), the tracks in metres along the
 //! groove, and what was found said in lines for people (the file's comment lines,
 //! the JSON's notes). Progress and a stop request go through a `Progress`.
 
 use super::{Info, Limits, RateSource, VideoError, VideoProblem};
 use crate::settings::units::{Dimension, show, show_small, with_uncertainty};
 use crate::study::Progress;
-use crate::study::vision::thumbs::{Thumbs, VideoView};
-use crate::study::vision::tracks::{BallTrack, Tracks};
-use crate::study::vision::{self, Tracker};
+use crate::vision::thumbs::{Thumbs, VideoView};
+use crate::vision::tracks::{BallTrack, Tracks};
+use crate::vision::{self, Tracker};
 
 /// What a tracking is asked for: the balls' radius R (m; the scale comes from it),
 /// the frame rate given (`--fps`), the scale given (px/m, from `--scale`), where R

@@ -6,7 +6,7 @@ use std::sync::Arc;
 
 use super::{App, Status};
 use crate::lab::jobs::Ticket;
-use crate::study::vision::thumbs::VideoView;
+use crate::vision::thumbs::VideoView;
 use crate::tui::jobs::VideoResult;
 
 impl App {

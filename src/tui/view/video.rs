@@ -13,7 +13,7 @@ use ratatui::text::Line;
 use ratatui::widgets::Widget;
 
 use super::panel::{block, title_of};
-use crate::study::vision::thumbs::VideoView;
+use crate::vision::thumbs::VideoView;
 use crate::tui::app::App;
 use crate::tui::theme::Theme;
 

@@ -23,7 +23,7 @@ use ratatui_image::protocol::Protocol;
 use ratatui_image::{Image, Resize};
 
 use super::video::{band, model_centres, shown_frame};
-use crate::study::vision::thumbs::VideoView;
+use crate::vision::thumbs::VideoView;
 use crate::tui::app::App;
 use crate::tui::theme::Theme;
 

@@ -1,5 +1,5 @@
 use super::*;
-use crate::study::vision::thumbs::{BallPixels, Thumbs};
+use crate::vision::thumbs::{BallPixels, Thumbs};
 
 const GREY: u8 = 40;
 
@@ -8,7 +8,7 @@ const GREY: u8 = 40;
 /// the band is the whole picture.
 fn view() -> VideoView {
     let mut thumbs = Thumbs::sized(64, 36, 1);
-    let img = crate::study::vision::gray::Gray::filled(64, 36, GREY);
+    let img = crate::vision::gray::Gray::filled(64, 36, GREY);
     thumbs.push(0, &img);
     assert_eq!((thumbs.width, thumbs.height), (64, 36), "kept whole");
     VideoView {
