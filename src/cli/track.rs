@@ -103,5 +103,7 @@ pub fn options(
         px_per_m: scale.map(|l| 1.0 / l),
         radius_from,
         cache: crate::input::video::cache::user_folder(),
+        roi: None,
+        ball_at: None,
     })
 }

@@ -217,6 +217,8 @@ fn the_app_tracks_on_a_worker_and_takes_the_data_in_when_done() {
         px_per_m: None,
         radius_from: "--radius".into(),
         cache: None,
+        roi: None,
+        ball_at: None,
     };
     let library = common::no_user_presets("video-app");
     let mut app = groovelab::cli::opened_tracking(&scene, &data, library, options).unwrap();

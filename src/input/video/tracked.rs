@@ -22,6 +22,20 @@ pub struct Options {
     pub px_per_m: Option<f64>,
     pub radius_from: String,
     pub cache: Option<std::path::PathBuf>,
+    /// Where to look (`--roi X,Y,W,H`, pixels of the frame): `None`, the whole frame.
+    pub roi: Option<Roi>,
+    /// A point on one ball in the first frame, pixels (`--ball-at X,Y`, or a click on
+    /// the ball in the app's video view): the tracker's seed.
+    pub ball_at: Option<(f64, f64)>,
+}
+
+/// A rectangle of the frame, pixels: left, top, width, height.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Roi {
+    pub x: f64,
+    pub y: f64,
+    pub width: f64,
+    pub height: f64,
 }
 
 /// A video tracked: what it is, the rate used and why, the tracks, the notes, and
