@@ -331,6 +331,20 @@ fn video_work(
     }
 }
 
+/// How the app tracks the video again with other options (a click on a ball seeds
+/// it): [`video_work`] for them.
+fn video_tracker(
+    scene_args: &SceneArgs,
+    data: &DataArgs,
+    options: crate::input::video::tracked::Options,
+) -> crate::tui::layer::main::video::Tracker {
+    let (scene_args, data) = (scene_args.clone(), data.clone());
+    crate::tui::layer::main::video::Tracker {
+        options,
+        work: Arc::new(move |o| Box::new(video_work(&scene_args, &data, o))),
+    }
+}
+
 /// A job's ticket as the tracking's progress: each frame counted, its stop obeyed.
 struct Ticked<'a>(&'a crate::lab::jobs::Ticket);
 
@@ -395,6 +409,7 @@ pub fn opened_tracking(
     };
     let mut app = App::new(lab(scene_args, &without)?, library);
     let name = data.data.first().map(|p| p.display().to_string());
+    app.set_video_tracker(video_tracker(scene_args, data, options.clone()));
     app.track_video(
         name.unwrap_or_default(),
         video_work(scene_args, data, options),
@@ -413,6 +428,7 @@ pub fn opened(scene_args: &SceneArgs, data: &DataArgs, library: Library) -> Resu
         let options = super::video_data::options(scene_args, data)?;
         let kept = crate::input::video::cache::kept(path, &options);
         app.set_video(path.display().to_string(), kept.and_then(|k| k.view));
+        app.set_video_tracker(video_tracker(scene_args, data, options));
     }
     if scene_of_data(scene_args, data).is_some() {
         // Short enough for the status line's second row at 80 columns: the file and

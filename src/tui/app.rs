@@ -1,13 +1,15 @@
-//! The app's UI state and what every action does to it: selection, popups, playback,
-//! which view is shown. Everything computed about the scene is asked of the [`Lab`].
-//! No terminal here: keys arrive as [`Action`]s, so the whole app is testable without one.
-//! The types it speaks in live in [`super::vocabulary`]; what the main screen's keys do in
-//! `normal`, what the popups ask when they answer in `prompts` (the popups themselves
-//! are layers, [`super::layer`]: a key goes to them first).
+//! The app: the lab, the layer stack (the main screen's views at the bottom, the
+//! popups over them) and the job pool, and what is the whole app's: playback, the
+//! parameter selected, the status line. Everything computed about the scene is asked
+//! of the [`Lab`]. No terminal here: keys arrive as [`Action`]s, so the whole app is
+//! testable without one. A key goes to the popups first, then to the views
+//! ([`super::layer::main`], each owning its state, keys and jobs), then to the app's
+//! own keys (`normal`); what the popups and views ask of the app is done in `prompts`.
 
 mod access;
 pub mod export;
 mod normal;
+mod playback;
 mod predict;
 mod prompts;
 mod stops;
@@ -20,20 +22,18 @@ use crate::lab::Lab;
 use crate::lab::jobs::Pool;
 use crate::settings::params::{Key, PARAMS, Param};
 use crate::settings::spec::SceneError;
-use crate::settings::units::{Dimension, show, significant};
+use crate::settings::units::{Dimension, show};
 
 pub use super::vocabulary::{
     Action, ChartBall, Export, FPS, Field, Library, Mode, Prediction, SPEEDS, Status, View,
 };
 pub use stops::{EventStop, event_stops};
 
-use super::interact::{Input, Interactive};
-use super::jobs::{ExportRun, FitRuns, Jobs, MethodRows, Notice, OverlayRun, VideoRun};
+use super::interact::Input;
+use super::jobs::{ExportRun, Jobs, Notice};
+use super::layer::main::{PaneCx, Pointer};
 use super::layer::{Compositor, Histories, Layer, LayerCx};
-use super::view::charts::state::{ChartState, Moment};
-use super::view::forces::state::ForcesState;
-use super::view::methods::state::MethodsState;
-use super::vocabulary::{DEFAULT_SPEED, Handled, WorkAxis};
+use super::vocabulary::{DEFAULT_SPEED, Handled};
 use ratatui::crossterm::event::MouseEvent;
 use ratatui::layout::Rect;
 
@@ -41,8 +41,8 @@ use ratatui::layout::Rect;
 pub static ROWS: LazyLock<Vec<&'static Param>> =
     LazyLock::new(|| PARAMS.iter().filter(|p| p.steps.is_some()).collect());
 
-/// The app: playback, the view shown and its components' state, the popups open
-/// (a stack of layers), and the lab. The lab, the time, playing and the status line
+/// The app: the lab, the layers (the main screen's views, the popups open over them)
+/// and the jobs; playback, the parameter selected and the status line. The lab, the time, playing and the status line
 /// are open to the edges (the runner, `render` and the tests set scenes, times and
 /// read messages); everything else is read through accessors and changed by actions.
 #[derive(Clone, Debug)]
@@ -53,34 +53,19 @@ pub struct App {
     pub playing: bool,
     speed: usize,
     selected: usize,
-    /// The popups open over the main screen, top last: they take input first.
+    /// The main screen's views at the bottom, the popups open over them, top last:
+    /// they take input first.
     layers: Compositor,
-    /// The Charts view's own state: which chart, which ball, the time zoom.
-    charts: ChartState,
     mouse: bool,
     pub status: Status,
     quit: bool,
     library: Library,
-    view: View,
-    /// The charts' time-stepping overlay: which run, and its job.
-    overlay: OverlayRun,
-    /// The Methods view's rows (its job).
-    methods: MethodRows,
-    /// The Fit view's fits and window (their jobs).
-    fit: FitRuns,
     /// The file being written (its job).
     export: ExportRun,
-    /// The `--data` video: its tracking (a job), its pictures, and whether the Scene
-    /// panel shows it.
-    video: VideoRun,
     /// The app's jobs on its worker pool.
     jobs: Jobs,
-    /// What the Methods view puts on its work axis.
-    methods_state: MethodsState,
     /// Where `w`/`W` write a bare file name.
     export_dir: PathBuf,
-    /// The ball the Forces view's front view shows: 0 left, 1 right.
-    forces: ForcesState,
     /// What the screen hides while b is hidden (a class predicts from the picture
     /// alone): the one rule.
     hide: super::hide::Hide,
@@ -111,21 +96,13 @@ impl App {
             speed: DEFAULT_SPEED,
             selected: 1,
             layers: Compositor::default(),
-            charts: ChartState::default(),
             mouse: true,
             status: Status::None,
             quit: false,
             library,
-            view: View::Charts,
-            overlay: OverlayRun::default(),
-            methods: MethodRows::default(),
-            fit: FitRuns::default(),
             export: ExportRun::default(),
-            video: VideoRun::default(),
             jobs: Jobs::new(pool),
-            methods_state: MethodsState::default(),
             export_dir: PathBuf::from("."),
-            forces: ForcesState::default(),
             hide: super::hide::Hide::default(),
             prediction: None,
             histories: Histories::default(),
@@ -161,15 +138,6 @@ impl App {
     /// Opens `layer` over the screen.
     fn open(&mut self, layer: Layer) {
         self.layers.push(layer);
-    }
-
-    /// True in the Fit view (charts with fit lines, the Fit panel).
-    pub fn fit_view(&self) -> bool {
-        self.view == View::Fit
-    }
-
-    pub fn speed_factor(&self) -> f64 {
-        SPEEDS[self.speed]
     }
 
     /// Sets a parameter if the scene stays valid; otherwise says why in the status line.
@@ -239,147 +207,51 @@ impl App {
         }
     }
 
-    /// How far one animation frame moves the simulated time.
-    pub fn frame_step(&self) -> f64 {
-        self.speed_factor() / FPS
-    }
-
-    /// The time one `.` (`later`) or `,` moves to: the next or previous measured frame
-    /// when the preset carries measured data and there is one, else one animation frame.
-    pub fn step_target(&self, later: bool) -> f64 {
-        let (t0, t1) = (self.lab.solution.t_start, self.lab.solution.t_end);
-        // Times within a nanosecond of the cursor are where it is, not a step away.
-        let eps = 1e-9;
-        let frame = self.lab.measured().and_then(|m| {
-            if later {
-                m.t.iter().copied().find(|&x| x > self.t + eps)
-            } else {
-                m.t.iter().rev().copied().find(|&x| x < self.t - eps)
-            }
-        });
-        let t = frame.unwrap_or(if later {
-            self.t + self.frame_step()
-        } else {
-            self.t - self.frame_step()
-        });
-        t.clamp(t0, t1)
-    }
-
-    /// The next (or previous) stop of `>` (`<`) in the span: see [`event_stops`].
-    pub fn event_target(&self, later: bool) -> Option<EventStop> {
-        let eps = 1e-9;
-        let mut stops = event_stops(&self.lab.solution).into_iter();
-        if later {
-            stops.find(|s| s.t > self.t + eps)
-        } else {
-            stops.rev().find(|s| s.t < self.t - eps)
-        }
-    }
-
-    /// Moves the cursor to `t` (a click on the chart), paused.
-    pub fn seek(&mut self, t: f64) {
-        let sol = &self.lab.solution;
-        self.playing = false;
-        self.t = t.clamp(sol.t_start, sol.t_end);
-    }
-
-    /// Advances playback by `wall` real seconds; stops at the end. A zoomed chart
-    /// follows the cursor.
-    pub fn tick(&mut self, wall: f64) {
-        if !self.playing {
-            return;
-        }
-        let before = self.t;
-        self.t += wall * self.speed_factor();
-        if !self.pause_at_outcome(before) && self.t >= self.lab.solution.t_end {
-            self.t = self.lab.solution.t_end;
-            self.playing = false;
-        }
-        self.charts.follow(self.t, self.chart_span());
-    }
-
-    /// The Charts view's state.
-    pub fn charts(&self) -> &ChartState {
-        &self.charts
-    }
-
-    /// The Forces view's state.
-    pub fn forces(&self) -> &ForcesState {
-        &self.forces
-    }
-
-    /// The Methods view's state.
-    pub fn methods_state(&self) -> &MethodsState {
-        &self.methods_state
-    }
-
-    /// Where the charts' keys act now.
-    fn moment(&self) -> Moment {
-        Moment {
+    /// What the views need of the app to handle an input or ask for their work.
+    fn pane_cx(&mut self, pointer: Pointer) -> (&mut super::layer::main::MainScreen, PaneCx<'_>) {
+        let span = self.chart_span();
+        let derived = self.hidden().derived();
+        let main = self.layers.main_mut();
+        let cx = PaneCx {
+            lab: &mut self.lab,
+            jobs: &self.jobs,
             t: self.t,
-            span: self.chart_span(),
-            shown: matches!(self.view, View::Charts | View::Fit),
-            pointer: None,
-        }
+            span,
+            derived,
+            shown: main.shown(),
+            pointer,
+        };
+        (main, cx)
     }
 
-    /// A component's answer to a key: true if it was its key (a message goes to the
-    /// status line).
+    /// A component's answer: true if it took the input (a message goes to the status
+    /// line, what a popup asks is done).
     fn handled(&mut self, answer: Handled) -> bool {
         match answer {
             Handled::Ignored => return false,
             Handled::Consumed => {}
             Handled::Say(message) => self.status = Status::Info(message),
+            Handled::Refused(message) => self.status = Status::Error(message),
             Handled::Close(then) | Handled::Ask(then) => self.then(then),
         }
         true
     }
 
-    /// The time span the charts' x axis covers unzoomed: the run's span, or while
-    /// the outcome is hidden one that does not tell it ([`super::hide::neutral_span`]).
-    pub fn chart_span(&self) -> (f64, f64) {
-        let sol = &self.lab.solution;
-        if self.hidden().derived() {
-            super::hide::neutral_span(sol.t_start, self.t)
-        } else {
-            (sol.t_start, sol.t_end)
-        }
+    /// A mouse event on the main screen offered to the views (the wheel over the
+    /// chart zooms its time axis, a click on the video's picture seeds its tracking):
+    /// `pointer` says what lies under it on the frame on screen. True if one took it.
+    pub fn mouse_on_view(&mut self, m: MouseEvent, area: Rect, pointer: Pointer) -> bool {
+        let (main, mut cx) = self.pane_cx(pointer);
+        let answer = main.handle(&Input::Mouse(m, area), &mut cx);
+        let took = self.handled(answer);
+        self.settled();
+        took
     }
 
-    /// The time range the charts show: the span, or the zoomed window of it.
-    pub fn chart_range(&self) -> (f64, f64) {
-        self.charts.zoom().range(self.chart_span())
-    }
-
-    /// A mouse event on the main screen offered to the view shown (the wheel over
-    /// the chart zooms its time axis): `pointer` is the time under it if it is over
-    /// the chart's plot of the frame on screen. True if the view took it.
-    pub fn mouse_on_view(&mut self, m: MouseEvent, area: Rect, pointer: Option<f64>) -> bool {
-        let moment = Moment {
-            pointer,
-            ..self.moment()
-        };
-        let answer = self.charts.handle(&Input::Mouse(m, area), moment);
-        self.handled(answer)
-    }
-
-    /// Offers `action` to the component of the view shown that owns it (the Forces
-    /// view's ball key is its own); true if one took it.
+    /// Offers `action` to the views, the one shown first; true if one took it.
     pub(super) fn offer(&mut self, action: Action) -> bool {
-        let key = Input::Key(action);
-        let answer = match self.view {
-            View::Forces => self.forces.handle(&key, ()),
-            View::Charts | View::Methods | View::Map | View::Fit => Handled::Ignored,
-        };
-        if self.handled(answer) {
-            return true;
-        }
-        let answer = self.methods_state.handle(&key, ());
-        if self.handled(answer) {
-            return true;
-        }
-        let moment = self.moment();
-        let answer = self.charts.handle(&key, moment);
+        let (main, mut cx) = self.pane_cx(Pointer::default());
+        let answer = main.handle(&Input::Key(action), &mut cx);
         self.handled(answer)
     }
 
@@ -390,22 +262,12 @@ impl App {
             presets: self.library.presets.len(),
             histories: &self.histories,
         };
-        match self.layers.handle(input, &cx) {
-            Handled::Ignored => false,
-            Handled::Consumed => true,
-            Handled::Say(message) => {
-                self.status = Status::Info(message);
-                true
-            }
-            Handled::Close(then) | Handled::Ask(then) => {
-                self.then(then);
-                true
-            }
-        }
+        let answer = self.layers.handle(input, &cx);
+        self.handled(answer)
     }
 
     /// What a key's `action` does: the popups open take it first, top first; what
-    /// none takes reaches the view shown and the main screen's keys. (Ctrl-C falls
+    /// none takes reaches the views and then the app's own keys. (Ctrl-C falls
     /// through every popup and quits; `q` quits only from the main screen: in a
     /// popup the key table makes it close the popup, in a prompt it types.)
     pub fn apply(&mut self, action: Action) {
@@ -422,7 +284,7 @@ impl App {
         let t = self.t;
         match (self.offer_layers(input), input) {
             (true, _) => {}
-            // What no popup took reaches the view shown and the main screen's keys.
+            // What no popup took reaches the views and the app's own keys.
             (false, Input::Key(action)) => self.apply_normal(*action),
             // A popup holds the mouse (the main screen's is offered only when none is
             // open: `crate::tui::on_mouse_in`).
@@ -433,20 +295,26 @@ impl App {
         }
         // A cursor moved by a key (a step, a jump, the start) takes a zoomed chart along.
         if self.t != t {
-            self.charts.follow(self.t, self.chart_span());
+            let span = self.chart_span();
+            self.layers.main_mut().moved(self.t, span);
         }
-        self.sync_jobs();
+        self.settled();
         true
     }
 
-    /// Requests what the views shown want of this scene (a request already made for
-    /// it runs on; one made for an earlier scene is superseded, its result dropped).
+    /// After an input: the cursor kept in the span (a view may have changed the
+    /// scene) and the views' work asked for.
+    fn settled(&mut self) {
+        let sol = &self.lab.solution;
+        self.t = self.t.clamp(sol.t_start, sol.t_end);
+        self.sync_jobs();
+    }
+
+    /// Requests what the views want of this scene (a request already made for it
+    /// runs on; one made for an earlier scene is superseded, its result dropped).
     pub fn sync_jobs(&mut self) {
-        let timed = self.methods_state.axis() == WorkAxis::Time;
-        let methods = self.view == View::Methods;
-        self.methods.sync(methods, timed, &self.lab, &self.jobs);
-        self.overlay.sync(&self.lab, &self.jobs);
-        self.fit.sync(self.fit_view(), &self.lab, &self.jobs);
+        let (main, cx) = self.pane_cx(Pointer::default());
+        main.sync(&cx);
     }
 
     /// Whom a finished job notifies (the event loop, on its one channel).
@@ -459,30 +327,37 @@ impl App {
         self.jobs.busy()
     }
 
-    /// A job's notice: a finished export's message goes to the status line; true if
-    /// the screen changes (every notice: a result or a new percent to show).
+    /// A job's notice: a finished export's message goes to the status line, a view's
+    /// finished job is its own to take; true if the screen changes (every notice: a
+    /// result or a new percent to show).
     pub fn on_job(&mut self, notice: Notice) -> bool {
-        match notice {
-            Notice::Export => {
-                self.take_export();
-            }
-            Notice::Video => {
-                self.take_video();
-            }
-            _ => {}
-        }
+        self.take(notice);
         true
     }
 
-    /// Waits for every analysis the views shown want and every export (headless
-    /// output is deterministic).
+    /// Takes a finished job's result where one is taken (the export's, a view's);
+    /// true if one was.
+    fn take(&mut self, notice: Notice) -> bool {
+        if notice == Notice::Export {
+            return self.take_export();
+        }
+        let (main, mut cx) = self.pane_cx(Pointer::default());
+        let answer = main.notice(notice, &mut cx);
+        let took = self.handled(answer);
+        if took {
+            self.settled();
+        }
+        took
+    }
+
+    /// Waits for every analysis the views want and every export (headless output is
+    /// deterministic).
     pub fn wait(&mut self) {
         self.sync_jobs();
         self.jobs.wait();
         self.take_export();
         // A video's data arrived: the views' analyses of the scene with them.
-        if self.take_video() {
-            self.sync_jobs();
+        if self.take(Notice::Video) {
             self.jobs.wait();
         }
     }
@@ -497,43 +372,5 @@ impl App {
             None => return false,
         }
         true
-    }
-
-    /// Playback in few words, for a status line that also holds a message: the time,
-    /// playing or paused, and the speed if `with_speed`.
-    pub fn playback_short(&self, with_speed: bool) -> String {
-        let state = if self.playing { "playing" } else { "paused" };
-        if with_speed {
-            format!("t = {:.3} s  {state}  ×{}", self.t, self.speed_text())
-        } else {
-            format!("t = {:.3} s  {state}", self.t)
-        }
-    }
-
-    fn speed_text(&self) -> String {
-        let speed = self.speed_factor();
-        if speed < 1.0 {
-            format!("1/{}", (1.0 / speed).round())
-        } else {
-            significant(speed, 2)
-        }
-    }
-
-    /// A one-line summary of playback for the status line (without the span's end
-    /// while the outcome is hidden: it would tell it).
-    pub fn playback(&self) -> String {
-        let speed = self.speed_text();
-        let sol = &self.lab.solution;
-        if self.hidden().derived() {
-            let state = if self.playing { "playing" } else { "paused" };
-            return format!("t = {:.3} s   {state}  speed ×{speed}", self.t);
-        }
-        format!(
-            "t = {:.3} s of {:.3} … {:.3} s   {}  speed ×{speed}",
-            self.t,
-            sol.t_start,
-            sol.t_end,
-            if self.playing { "playing" } else { "paused" },
-        )
     }
 }

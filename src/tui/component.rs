@@ -3,7 +3,8 @@
 //! implementing [`Component`]: it renders from the app's state and the [`Frame`] the
 //! screen prepared, into any area it is given, changing nothing. Input is the sibling
 //! trait's ([`super::interact::Interactive`]): the popups are layers that own their
-//! state ([`super::layer`]), the views' states take the keys the layers leave. The
+//! state ([`super::layer`]), and the views are the bottom layer's panes
+//! ([`super::layer::main`]), owning their state, keys and jobs. The
 //! screen (`super::screen`) lays the frame out once and draws the panels, the view
 //! shown (chosen by an exhaustive match on `View`) and the layers open over them
 //! (each drawn by its own component, an exhaustive match on `Layer`).

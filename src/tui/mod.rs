@@ -340,9 +340,10 @@ fn on_mouse_main(app: &mut App, screen: &Screen, m: MouseEvent) -> bool {
     let Some(frame) = screen.frame() else {
         return false;
     };
-    // The view shown takes its mouse events (the wheel over the chart zooms its time
-    // axis around the pointer's time).
-    let pointer = screen.chart_time_at(app, m.column, m.row);
+    // The views take their mouse events (the wheel over the chart zooms its time
+    // axis around the pointer's time, a click on the video's picture seeds its
+    // tracking there).
+    let pointer = screen.pointer_at(app, m.column, m.row);
     if app.mouse_on_view(m, frame.area, pointer) {
         return true;
     }

@@ -11,6 +11,7 @@ use ratatui::layout::Rect;
 use super::app::{App, View};
 use super::component::{Component, Ctx, Frame};
 use super::layer::Layer;
+use super::layer::main::Pointer;
 use super::theme::{Theme, force_ascii};
 use super::view;
 use super::view::video_image::VideoImage;
@@ -114,6 +115,23 @@ impl Screen {
         let mut buf = Buffer::empty(area);
         let work = self.draw(app, area, &mut buf, theme);
         (text_of(&buf), work)
+    }
+
+    /// What lies under the mouse at (`column`, `row`) of the frame prepared last: the
+    /// chart's time, the video's pixel (while the Scene panel shows its picture).
+    pub fn pointer_at(&self, app: &App, column: u16, row: u16) -> Pointer {
+        let pixel = (|| {
+            let video = app.video();
+            let scene = self.frame.as_ref()?.panels?.scene;
+            if !video.shown || !app.layers().is_empty() {
+                return None;
+            }
+            view::video::pixel_at(video.view.as_deref()?, scene, column, row)
+        })();
+        Pointer {
+            time: self.chart_time_at(app, column, row),
+            pixel,
+        }
     }
 
     /// The time under a click at (`column`, `row`) of the frame prepared last: inside

@@ -218,6 +218,8 @@ pub enum Handled {
     Ignored,
     Consumed,
     Say(String),
+    /// Not done, and why (an error on the status line).
+    Refused(String),
     /// The layer is done: the compositor takes it off, then the app does this.
     Close(Then),
     /// The layer stays open and asks the app for this.
@@ -244,6 +246,8 @@ pub enum Then {
     Predict(Regime),
     /// The forces shown as givens until the outcome, or hidden (predict's `g`).
     ToggleGivens,
+    /// Open the Fit view's models (`M`, asked by the Fit view).
+    OpenModels,
 }
 
 /// Which prompt text is typed into: a value, a preset's name, an export's file name.

@@ -47,5 +47,6 @@ mod tui;
 mod units_checked;
 mod video;
 mod video_app;
+mod video_seed;
 mod wording;
 mod wrong_scene;

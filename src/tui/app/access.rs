@@ -1,11 +1,16 @@
 //! What the edges read of the app (the screen, the runner, `render`, the tests), and
 //! the few settings they make before the first key: the app's fields stay private.
+//! The views' states are read through here from the main screen that owns them.
 
 use std::path::{Path, PathBuf};
 
 use super::{App, Library, Prediction, View};
 use crate::tui::hide::Hide;
-use crate::tui::jobs::{FitRuns, MethodRows, OverlayRun, VideoRun};
+use crate::tui::layer::main::charts::{ChartState, Charts, OverlayRun};
+use crate::tui::layer::main::fit::FitRuns;
+use crate::tui::layer::main::forces::ForcesState;
+use crate::tui::layer::main::methods::{MethodRows, Methods, MethodsState};
+use crate::tui::layer::main::video::VideoRun;
 
 impl App {
     /// The playback speed's index in [`super::SPEEDS`].
@@ -40,33 +45,69 @@ impl App {
 
     /// The view shown.
     pub fn view(&self) -> View {
-        self.view
+        self.layers.main().shown()
+    }
+
+    /// True in the Fit view (charts with fit lines, the Fit panel).
+    pub fn fit_view(&self) -> bool {
+        self.view() == View::Fit
+    }
+
+    /// The Charts view's state.
+    pub fn charts(&self) -> &ChartState {
+        &self.layers.main().get::<Charts>().state
+    }
+
+    /// The Forces view's state.
+    pub fn forces(&self) -> &ForcesState {
+        self.layers.main().get::<ForcesState>()
+    }
+
+    /// The Methods view's state.
+    pub fn methods_state(&self) -> &MethodsState {
+        &self.layers.main().get::<Methods>().state
     }
 
     /// The charts' time-stepping overlay and its job.
     pub fn overlay(&self) -> &OverlayRun {
-        &self.overlay
+        &self.layers.main().get::<Charts>().overlay
     }
 
     /// Overlays `choice` (a method and its step level) on the charts, or none.
     pub fn set_overlay(&mut self, choice: Option<(crate::methods::Method, u8)>) {
-        self.overlay.choice = choice;
+        self.layers.main_mut().get_mut::<Charts>().overlay.choice = choice;
         self.sync_jobs();
     }
 
     /// The Methods view's rows and their job.
     pub fn methods(&self) -> &MethodRows {
-        &self.methods
+        &self.layers.main().get::<Methods>().rows
     }
 
     /// The Fit view's fits, their window and their jobs.
     pub fn fit(&self) -> &FitRuns {
-        &self.fit
+        self.layers.main().get::<FitRuns>()
     }
 
     /// The `--data` video: its tracking, its pictures, whether the Scene panel shows it.
     pub fn video(&self) -> &VideoRun {
-        &self.video
+        self.layers.main().get::<VideoRun>()
+    }
+
+    /// The time span the charts' x axis covers unzoomed: the run's span, or while
+    /// the outcome is hidden one that does not tell it ([`crate::tui::hide::neutral_span`]).
+    pub fn chart_span(&self) -> (f64, f64) {
+        let sol = &self.lab.solution;
+        if self.hidden().derived() {
+            crate::tui::hide::neutral_span(sol.t_start, self.t)
+        } else {
+            (sol.t_start, sol.t_end)
+        }
+    }
+
+    /// The time range the charts show: the span, or the zoomed window of it.
+    pub fn chart_range(&self) -> (f64, f64) {
+        self.charts().zoom().range(self.chart_span())
     }
 
     /// Where `w`/`W` write a bare file name.

@@ -115,7 +115,7 @@ impl App {
     /// the screen withholds while the outcome is hidden is not written either).
     pub fn figure_on_screen(&self) -> Result<Figure, NoExport> {
         let hide = self.hidden();
-        match self.view {
+        match self.view() {
             View::Map if hide.pending() && !hide.b() => Err(NoExport::Hidden("the regime map")),
             View::Map => Ok(Figure::Map),
             View::Methods if hide.derived() => Err(NoExport::Hidden("the Methods diagram")),
@@ -132,9 +132,9 @@ impl App {
 
     /// The figure of the chart on screen.
     fn chart_figure(&self) -> Result<Figure, NoExport> {
-        if self.charts.energy() {
+        if self.charts().energy() {
             Err(NoExport::Energy)
-        } else if self.charts.positions() {
+        } else if self.charts().positions() {
             Ok(Figure::Positions)
         } else {
             Ok(Figure::Velocities)
@@ -216,15 +216,15 @@ impl App {
                     figures::RunChart::Positions
                 } else {
                     figures::RunChart::Velocities {
-                        left: self.charts.ball() != ChartBall::Right,
-                        right: self.charts.ball() != ChartBall::Left,
+                        left: self.charts().ball() != ChartBall::Right,
+                        right: self.charts().ball() != ChartBall::Left,
                     }
                 };
                 let measured = self
                     .lab
                     .measured()
                     .filter(|_| {
-                        self.charts.ball() != ChartBall::Right && figure == Figure::Velocities
+                        self.charts().ball() != ChartBall::Right && figure == Figure::Velocities
                     })
                     .cloned();
                 // What the screen shows beside the run: the pinned run, and the caption
@@ -271,10 +271,10 @@ impl App {
                     done(figures::regime_map(&points, &x, Some(&y), &scene, &preset))
                 })
             }
-            Figure::Methods => match self.methods.state() {
+            Figure::Methods => match self.methods().state() {
                 State::Ready(rows) => {
                     let rows = rows.clone();
-                    let work = match self.methods_state.axis() {
+                    let work = match self.methods_state().axis() {
                         WorkAxis::Steps => figures::Cost::Steps,
                         WorkAxis::RhsEvals => figures::Cost::RhsEvals,
                         WorkAxis::Time => figures::Cost::Time,
@@ -283,7 +283,7 @@ impl App {
                 }
                 _ => return Err(NoExport::MethodsRunning),
             },
-            Figure::Fit => match (self.fit.fits(), self.lab.measured()) {
+            Figure::Fit => match (self.fit().fits(), self.lab.measured()) {
                 (State::Ready(Ok(fits)), Some(m)) => {
                     let (fits, m) = (fits.clone(), m.clone());
                     Box::new(move || done(figures::fit_figure(&scene, &m, &fits)))

@@ -1,15 +1,15 @@
-//! What each action does on the main screen (no popup open): selection and nudging,
-//! playback, views, the overlay, the fit, and opening the popups and prompts.
+//! What the app's own keys do on the main screen (no popup open, no view took the
+//! key): selection and nudging, playback, the span, the settings' undo and reset,
+//! and opening the popups and prompts. The views' keys are their own
+//! ([`crate::tui::layer::main`]).
 
-use crate::lab::jobs::State;
-use crate::lab::{Edit, Groove, OVERLAY_LEVELS};
-use crate::methods::Method;
+use crate::lab::{Edit, Groove};
 use crate::settings::params::Key;
 use crate::settings::spec::SceneError;
 use crate::settings::units::{Dimension, show, significant};
 
-use super::{Action, App, Export, Field, ROWS, SPEEDS, Status, View};
-use crate::tui::layer::{DataTable, Help, Layer, Models, Picker, Prompt};
+use super::{Action, App, Export, Field, ROWS, SPEEDS, Status};
+use crate::tui::layer::{DataTable, Help, Layer, Picker, Prompt};
 use crate::tui::vocabulary::TextTarget;
 
 impl App {
@@ -96,14 +96,6 @@ impl App {
             }
             Action::NextEvent | Action::PrevEvent => self.jump_to_event(action),
             Action::CycleSpan => self.cycle_span(),
-            // The charts' own keys (offered to them first, see `offer`).
-            Action::ZoomIn
-            | Action::ZoomOut
-            | Action::ZoomWhole
-            | Action::ToggleEnergy
-            | Action::TogglePositions
-            | Action::SwitchBall
-            | Action::CycleWorkAxis => {}
             Action::TogglePin => self.toggle_pin(),
             Action::Start => self.t = t0,
             Action::End => {
@@ -122,30 +114,21 @@ impl App {
             }
             Action::Help => self.open(Layer::Help(Help::default())),
             Action::DataTable => self.open_data_table(),
-            Action::ModelsTable => self.open_models(),
             Action::Export(kind) => self.ask_export(kind),
-            Action::ApplyFit => self.apply_fit(),
-            Action::ShowView(view) => self.toggle_view(view),
             Action::Predict => self.ask_prediction(),
             Action::HideWidth => self.toggle_hide_width(),
-            Action::ToggleVideo => self.toggle_video(),
             Action::Undo => self.undo(),
             Action::Reset => self.reset(),
             Action::DropData => self.drop_data(),
-            Action::FitStartEarlier => self.move_window(false, false),
-            Action::FitStartLater => self.move_window(false, true),
-            Action::FitEndEarlier => self.move_window(true, false),
-            Action::FitEndLater => self.move_window(true, true),
-            Action::CycleOverlay => self.cycle_overlay(),
-            Action::OverlayFiner => self.overlay_level_by(true),
-            Action::OverlayCoarser => self.overlay_level_by(false),
             Action::ToggleMouse => self.toggle_mouse(),
             Action::Select(i) if i < n => self.selected = i,
             Action::ScrollParam(i, up) if i < n => {
                 self.selected = i;
                 self.nudge(up, false);
             }
-            Action::Select(_) | Action::ScrollParam(..) | Action::Line(_) | Action::Type(_) => {}
+            // Every other key is a view's (offered to the views first, see `offer`) or
+            // a popup's.
+            _ => {}
         }
     }
 
@@ -221,7 +204,7 @@ impl App {
         self.t = self.t.clamp(sol.t_start, sol.t_end);
         if matches!(edit, Edit::Preset(_) | Edit::DropData) {
             // The window was chosen for the data before.
-            self.fit.window = (None, None);
+            self.layers.main_mut().data_changed();
         }
         let back = match edit {
             Edit::Values(changes) => {
@@ -255,7 +238,7 @@ impl App {
             self.status = Status::Info("nothing to reset: the scene is the preset's".into());
             return;
         }
-        self.fit.window = (None, None);
+        self.layers.main_mut().data_changed();
         let sol = &self.lab.solution;
         self.t = self.t.clamp(sol.t_start, sol.t_end);
         let flags = self.lab.settings().flags_in_force();
@@ -275,7 +258,7 @@ impl App {
     fn drop_data(&mut self) {
         self.status = Status::Info(match self.lab.drop_data() {
             Some(name) => {
-                self.fit.window = (None, None);
+                self.layers.main_mut().data_changed();
                 let sol = &self.lab.solution;
                 self.t = self.t.clamp(sol.t_start, sol.t_end);
                 let preset = self.lab.preset();
@@ -308,18 +291,6 @@ impl App {
             .position(|p| p.name == self.lab.preset().name)
             .unwrap_or(0);
         self.open(Layer::Picker(Picker::on(i)));
-    }
-
-    /// The Fit view's models, once its fits are there (and the panel shows them).
-    fn open_models(&mut self) {
-        let ready = matches!(self.fit.fits(), State::Ready(Ok(_)));
-        if ready && self.view == View::Fit && !self.hidden().derived() {
-            self.open(Layer::Models(Models::default()));
-        } else {
-            self.status = Status::Error(
-                "M lists the fit's models: in the Fit view (f), once the fit is there".into(),
-            );
-        }
     }
 
     fn open_data_table(&mut self) {
@@ -373,47 +344,6 @@ impl App {
         );
     }
 
-    /// What opening `view` says: the Fit view without data, that there is none.
-    fn opened(&mut self) {
-        if self.fit_view() && self.lab.measured().is_none() {
-            self.status = Status::Error(format!(
-                "preset {} has no measured data to fit (the paper-b* presets have)",
-                self.lab.preset().name
-            ));
-        }
-    }
-
-    /// The overlay key: off, then each time-stepping method in turn, then off.
-    fn cycle_overlay(&mut self) {
-        let all = Method::TIME_STEPPING;
-        let next = match self.overlay.choice {
-            None => Some(all[0]),
-            Some((m, _)) => all
-                .iter()
-                .position(|x| *x == m)
-                .and_then(|i| all.get(i + 1))
-                .copied(),
-        };
-        self.overlay.choice = next.map(|m| (m, self.overlay.level));
-        self.status = Status::Info(match next {
-            Some(m) => format!("overlay {}", m.name()),
-            None => "overlay off".into(),
-        });
-    }
-
-    /// A finer or coarser overlay step, kept for the next overlay too.
-    fn overlay_level_by(&mut self, finer: bool) {
-        let level = &mut self.overlay.level;
-        *level = if finer {
-            (*level + 1).min(OVERLAY_LEVELS - 1)
-        } else {
-            level.saturating_sub(1)
-        };
-        if let Some((m, _)) = self.overlay.choice {
-            self.overlay.choice = Some((m, self.overlay.level));
-        }
-    }
-
     fn toggle_mouse(&mut self) {
         self.mouse = !self.mouse;
         self.status = Status::Info(format!(
@@ -425,107 +355,6 @@ impl App {
             }
         ));
     }
-
-    /// Shows `view`, or the charts if it is shown already: every view key switches
-    /// directly from any view.
-    fn toggle_view(&mut self, view: View) {
-        self.view = if self.view == view {
-            View::Charts
-        } else {
-            view
-        };
-        self.opened();
-    }
-
-    /// Fit view: puts the fitted μ_k (and v0, e where the fit freed them) into the
-    /// scene: of a position track the position fit, the one the panel says to quote.
-    fn apply_fit(&mut self) {
-        if !self.fit_view() {
-            self.status = Status::Error("a applies a fit: open the Fit view first (f)".into());
-            return;
-        }
-        let (fitted, which) = match self.fit_to_apply() {
-            Ok(f) => f,
-            Err(e) => {
-                self.status = Status::Error(e.to_string());
-                return;
-            }
-        };
-        if let Some(n) = fitted.undetermined("mu") {
-            self.status = Status::Error(format!(
-                "not applied: {which} does not determine μ_k ({})",
-                n.reason
-            ));
-            return;
-        }
-        // μ_k is always fitted; v0, e and c_rr only when the fit freed them (they have
-        // an uncertainty then): the scene becomes the fitted one.
-        let mut changes = vec![(Key::Mu, fitted.mu)];
-        if fitted.v0_se.is_some() {
-            changes.push((Key::V0, fitted.v0));
-        }
-        if fitted.restitution_se.is_some() {
-            changes.push((Key::Restitution, fitted.restitution));
-        }
-        if fitted.rolling_resistance_se.is_some() {
-            changes.push((Key::RollingResistance, fitted.rolling_resistance));
-        }
-        // All or nothing: a fit is never left half applied.
-        let edits = self.lab.settings().edits().len();
-        if let Err(e) = self.lab.set_all(&changes) {
-            self.status = Status::Error(format!("fit not applied: {e}"));
-            return;
-        }
-        let applied: Vec<String> = changes
-            .iter()
-            .map(|&(key, value)| {
-                format!("{} = {}", key.param().symbol, show(value, key.dimension()))
-            })
-            .collect();
-        let sol = &self.lab.solution;
-        self.t = self.t.clamp(sol.t_start, sol.t_end);
-        // A second `a` changes nothing: no undo step, and it says so.
-        self.status = Status::Info(if self.lab.settings().edits().len() == edits {
-            format!("{which} is in the scene already: {}", applied.join(", "))
-        } else {
-            format!("applied {which}: {}", applied.join(", "))
-        });
-    }
-
-    /// The model fit `a` applies, and what to call it: the headline fit (of the model
-    /// the data support; of a position track fitted to the positions), the one the
-    /// panel shows first.
-    fn fit_to_apply(&self) -> Result<(crate::study::fit::ModelFit, &'static str), NoFitToApply> {
-        match self.fit.fits() {
-            State::Ready(Ok(f)) => Ok((
-                f.model_fit.clone(),
-                match f.model_fit.fitted_to {
-                    "positions" => "the position fit",
-                    _ => "the fit",
-                },
-            )),
-            State::Ready(Err(e)) => Err(NoFitToApply::Failed(e.clone())),
-            State::Computing { .. } => Err(NoFitToApply::Running),
-            State::Idle => Err(NoFitToApply::NoData),
-        }
-    }
-
-    fn move_window(&mut self, end: bool, later: bool) {
-        if let Err(e) = self.fit.move_window(&self.lab, end, later) {
-            self.status = Status::Error(e.to_string());
-        }
-    }
-}
-
-/// Why `a` finds no fit to apply.
-#[derive(Debug, thiserror::Error)]
-enum NoFitToApply {
-    #[error("no fit to apply: {0}")]
-    Failed(crate::study::fit::FitError),
-    #[error("the fit is still running: try again")]
-    Running,
-    #[error("no fit to apply: this preset has no data")]
-    NoData,
 }
 
 /// Where a step from `current` toward `target` (refused) may stop instead, nearest the

@@ -31,7 +31,7 @@ impl App {
     /// The predict key: the Forces view, paused at the start (a question asked after
     /// the impact would have its answer on screen behind it), and the question.
     pub(super) fn ask_prediction(&mut self) {
-        self.view = View::Forces;
+        self.layers.main_mut().show(View::Forces);
         self.playing = false;
         self.t = self.lab.solution.t_start;
         self.status = Status::None;

@@ -7,7 +7,7 @@ use crate::input::preset::{PresetFile, SaveError, ToSave};
 use crate::settings::units::parse_typed;
 
 use super::{App, Field, Library, NO_FILES, ROWS, Status};
-use crate::tui::layer::{Confirm, Layer, Prompt};
+use crate::tui::layer::{Confirm, Layer, Models, Prompt};
 use crate::tui::vocabulary::{TextTarget, Then};
 
 impl App {
@@ -21,6 +21,7 @@ impl App {
             Then::Overwrite(name) => self.save(&name, true),
             Then::Predict(guess) => self.predicted(guess),
             Then::ToggleGivens => self.toggle_givens(),
+            Then::OpenModels => self.open(Layer::Models(Models::default())),
         }
     }
 
@@ -32,7 +33,7 @@ impl App {
         let (name, description) = (p.name.clone(), p.description.clone());
         match self.lab.load_preset(p) {
             Ok(()) => {
-                self.fit.window = (None, None);
+                self.layers.main_mut().data_changed();
                 self.t = self.lab.solution.t_start;
                 self.status = Status::Info(match self.lab.own_data() {
                     // The student's data stay (the status line names them); the

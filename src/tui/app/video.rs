@@ -1,13 +1,15 @@
-//! The `--data` video in the app: tracked on a worker when the app opens (its data
-//! join the lab when they arrive, the user's edits kept), and `V`, which switches
-//! the Scene panel between the drawn scene and the video.
+//! The `--data` video in the app, as the edges start it: tracked on a worker when the
+//! app opens (the Scene panel's video view owns the job, [`VideoRun`], and takes its
+//! data into the lab when they arrive), its pictures when its tracks were kept, and
+//! how to track it again (a click on a ball seeds it).
 
 use std::sync::Arc;
 
 use super::{App, Status};
 use crate::lab::jobs::Ticket;
-use crate::vision::thumbs::VideoView;
 use crate::tui::jobs::VideoResult;
+use crate::tui::layer::main::video::{Tracker, VideoRun, short};
+use crate::vision::thumbs::VideoView;
 
 impl App {
     /// Tracks the video `name` on a worker (`work` does it); the app runs on meanwhile
@@ -21,67 +23,21 @@ impl App {
             "tracking {} on a worker: its data join the scene when done (V: the video)",
             short(&name)
         ));
-        self.video
-            .start(&self.jobs, self.lab.generation(), name, work);
+        let generation = self.lab.generation();
+        let video: &mut VideoRun = self.layers.main_mut().get_mut::<VideoRun>();
+        video.start(&self.jobs, generation, name, work);
     }
 
     /// The video's pictures, when its tracks were kept (no tracking needed).
     pub fn set_video(&mut self, name: String, view: Option<Arc<VideoView>>) {
-        self.video.name = Some(name);
-        self.video.view = view;
+        let video = self.layers.main_mut().get_mut::<VideoRun>();
+        video.name = Some(name);
+        video.view = view;
     }
 
-    /// A finished tracking: its data into the lab, its pictures to the Scene panel,
-    /// or why not in the status line; true if one finished.
-    pub(super) fn take_video(&mut self) -> bool {
-        let Some(result) = self.video.take() else {
-            return false;
-        };
-        let name = short(self.video.name.as_deref().unwrap_or_default());
-        match result {
-            Ok(done) => match self.lab.attach_data(
-                done.own,
-                done.from_data,
-                done.file_keys,
-                done.scene_file,
-            ) {
-                Ok(()) => {
-                    self.video.view = done.view;
-                    let sol = &self.lab.solution;
-                    self.t = self.t.clamp(sol.t_start, sol.t_end);
-                    self.status = Status::Info(format!(
-                        "tracked {name}: its data are in the scene (V: the video)"
-                    ));
-                }
-                Err(e) => self.status = Status::Error(format!("{name}: not used: {e}")),
-            },
-            Err(e) => self.status = Status::Error(format!("not tracked: {e}")),
-        }
-        true
+    /// How the video is tracked again when a click on its picture seeds a ball
+    /// (`tracker.options`, its `ball_at` set to the click).
+    pub fn set_video_tracker(&mut self, tracker: Tracker) {
+        self.layers.main_mut().get_mut::<VideoRun>().tracker = Some(tracker);
     }
-
-    /// `V`: the Scene panel shows the video or the drawn scene.
-    pub(super) fn toggle_video(&mut self) {
-        let Some(name) = self.video.name.clone() else {
-            self.status =
-                Status::Error("no video: give one with --data (groovelab --data clip.mp4)".into());
-            return;
-        };
-        self.video.shown = !self.video.shown;
-        self.status = Status::Info(if self.video.shown {
-            format!(
-                "Scene panel: the video {} (V: the drawn scene)",
-                short(&name)
-            )
-        } else {
-            "Scene panel: the drawn scene (V: the video)".into()
-        });
-    }
-}
-
-/// A video's name as the status line says it: its file's name, without the folders.
-fn short(name: &str) -> String {
-    std::path::Path::new(name)
-        .file_name()
-        .map_or(name.into(), |f| f.to_string_lossy().into_owned())
 }

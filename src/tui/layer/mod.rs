@@ -1,5 +1,5 @@
-//! The compositor (issue 26, as helix has it): the popups open over the main screen,
-//! a stack of layers. Each layer is a component that owns its state (a scroll, a
+//! The compositor (issue 26, as helix has it): the main screen at the bottom (its
+//! views, [`main`], issue 36) and the popups open over it, a stack of layers. Each layer is a component that owns its state (a scroll, a
 //! typed line, a highlighted row) and handles its own keys and mouse; an input goes
 //! to the top layer first and falls through the stack when a layer ignores it (the
 //! app's view and main keys lie below). A layer that is done closes itself
@@ -8,6 +8,7 @@
 //! The layers render in `view/` (they read the whole app there); this file and its
 //! children know nothing of the app, which holds the stack.
 
+pub mod main;
 mod picker;
 mod place;
 mod prompt;
@@ -96,13 +97,24 @@ impl Interactive<&LayerCx<'_>> for Layer {
     }
 }
 
-/// The stack of layers, bottom first.
-#[derive(Clone, Debug, Default, PartialEq)]
+/// The stack of layers: the main screen at the bottom, the popups over it, bottom
+/// first.
+#[derive(Clone, Debug, Default)]
 pub struct Compositor {
+    main: main::MainScreen,
     layers: Vec<Layer>,
 }
 
 impl Compositor {
+    /// The bottom layer: the main screen's views.
+    pub fn main(&self) -> &main::MainScreen {
+        &self.main
+    }
+
+    pub fn main_mut(&mut self) -> &mut main::MainScreen {
+        &mut self.main
+    }
+
     /// Opens `layer` on top.
     pub fn push(&mut self, layer: Layer) {
         self.layers.push(layer);
@@ -118,6 +130,7 @@ impl Compositor {
         self.layers.iter()
     }
 
+    /// True while no popup is open (the main screen is always there).
     pub fn is_empty(&self) -> bool {
         self.layers.is_empty()
     }
@@ -135,9 +148,10 @@ impl Compositor {
         }
     }
 
-    /// Offers `input` to the layers, top first, until one takes it; a layer that
+    /// Offers `input` to the popups, top first, until one takes it; a layer that
     /// closes is taken off the stack (one that closes passing the key on,
-    /// [`Then::Pass`], lets it go on down). [`Handled::Ignored`]: no layer took it.
+    /// [`Then::Pass`], lets it go on down). [`Handled::Ignored`]: no popup took it
+    /// (the app offers it to the main screen then, with what the views need).
     pub fn handle(&mut self, input: &Input, cx: &LayerCx<'_>) -> Handled {
         for i in (0..self.layers.len()).rev() {
             match self.layers[i].handle(input, cx) {

@@ -24,8 +24,6 @@ use crate::tui::view_cache::ViewCache;
 use marks::{line_fit_marks, measured_velocities};
 
 mod marks;
-pub mod state;
-pub mod zoom;
 
 fn event_lines(app: &App, balls: &[Who], theme: &Theme) -> Vec<VLine> {
     app.lab
@@ -60,7 +58,11 @@ pub fn build(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Ch
     let factor = app.charts().zoom().factor(app.chart_span());
     if factor > 1.0 + 1e-9 {
         // Each wording keeps its room: the zoom is said first, briefly.
-        let zoomed = format!("zoom {}{}  ", theme.glyphs.text("×"), zoom::text(factor));
+        let zoomed = format!(
+            "zoom {}{}  ",
+            theme.glyphs.text("×"),
+            crate::tui::layer::main::zoom::text(factor)
+        );
         for t in &mut titles {
             t.insert_str(0, &zoomed);
         }

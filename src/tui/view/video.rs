@@ -13,9 +13,9 @@ use ratatui::text::Line;
 use ratatui::widgets::Widget;
 
 use super::panel::{block, title_of};
-use crate::vision::thumbs::VideoView;
 use crate::tui::app::App;
 use crate::tui::theme::Theme;
+use crate::vision::thumbs::VideoView;
 
 /// Characters from dark to bright for the ASCII glyph set (none of the marks: + x o).
 const RAMP: &[u8] = b" .:-=*#%@";
@@ -169,6 +169,16 @@ impl Fit {
         ((col + 0.5) / self.k, self.top + (half_row + 0.5) / self.k)
     }
 
+    /// The video's pixel at the middle of the terminal cell (`column`, `row`), if the
+    /// picture covers it (the inverse of [`Fit::cell`]).
+    fn pixel_of_cell(&self, column: u16, row: u16) -> Option<(f64, f64)> {
+        let c = f64::from(column) - f64::from(self.area.x) - self.x0;
+        let r = f64::from(row) - f64::from(self.area.y) - self.y0;
+        let inside = c >= 0.0 && r >= 0.0 && c < f64::from(self.cols) && r < f64::from(self.rows);
+        // The cell's two half-block pixel rows meet at its middle.
+        inside.then(|| self.pixel(c, 2.0 * r + 0.5))
+    }
+
     /// The cell of the video's pixel `(x, y)`, if inside the picture.
     fn cell(&self, (x, y): (f64, f64)) -> Option<(u16, u16)> {
         let c = x * self.k;
@@ -181,6 +191,25 @@ impl Fit {
             )
         })
     }
+}
+
+/// The video's pixel under the cell (`column`, `row`) of a Scene panel drawn in
+/// `area` showing `view` (a click on a ball seeds the tracker there): `None` off the
+/// picture. The graphics protocols place the same band about the groove, scaled to the
+/// panel and centred, so this holds for their pictures too, to within a cell.
+pub fn pixel_at(view: &VideoView, area: Rect, column: u16, row: u16) -> Option<(f64, f64)> {
+    let inner = ratatui::widgets::Block::bordered().inner(area);
+    if inner.height < 2 || inner.width < 8 {
+        return None;
+    }
+    Fit::new(view, inner).pixel_of_cell(column, row)
+}
+
+/// The cell of the Scene panel drawn in `area` showing `view` where the video's pixel
+/// `(x, y)` is drawn, if inside the picture.
+pub fn cell_at(view: &VideoView, area: Rect, (x, y): (f64, f64)) -> Option<(u16, u16)> {
+    let inner = ratatui::widgets::Block::bordered().inner(area);
+    Fit::new(view, inner).cell((x, y))
 }
 
 /// The video's rows about the groove, px: from three radii above its line (at both

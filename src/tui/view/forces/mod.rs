@@ -9,7 +9,6 @@
 mod chain;
 mod parts;
 mod section;
-pub mod state;
 
 use parts::*;
 

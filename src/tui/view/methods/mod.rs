@@ -1,8 +1,6 @@
 //! The Methods view: each time-stepping method's error against its work, on log axes
 //! drawn by transforming the data and labelling the ticks, with the rows beside it.
 
-pub mod state;
-
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};

@@ -1,8 +1,9 @@
 //! The Forces view's own state and keys (issue 26): which ball its front view and
-//! chain show. The app offers it the keys while the view is shown.
+//! chain show. Its ball key is its own while it is shown (the charts' otherwise).
 
+use super::{Pane, PaneCx};
 use crate::tui::interact::{Input, Interactive};
-use crate::tui::vocabulary::{Action, Handled};
+use crate::tui::vocabulary::{Action, Handled, View};
 
 /// Which ball the Forces view shows: 0 left, 1 right.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -34,5 +35,18 @@ impl Interactive<()> for ForcesState {
             Input::Key(action) => self.key(*action),
             Input::Mouse(..) => Handled::Ignored,
         }
+    }
+}
+
+impl Pane for ForcesState {
+    fn view(&self) -> Option<View> {
+        Some(View::Forces)
+    }
+
+    fn handle(&mut self, input: &Input, cx: &mut PaneCx<'_>) -> Handled {
+        if cx.shown != View::Forces {
+            return Handled::Ignored;
+        }
+        Interactive::handle(self, input, ())
     }
 }

@@ -1,0 +1,180 @@
+//! The Fit view's own state, keys and jobs (issue 36, a gitui tab holding its own
+//! job): the line fit's window, the fits of the measured series (asked while the view
+//! is shown), the window's keys, `a` (the fit into the scene) and `M` (its models).
+
+use super::{Pane, PaneCx};
+use crate::lab::jobs::{Job, State};
+use crate::lab::{FitWindow, FitWindowError, Generation, Lab, analyses};
+use crate::settings::params::Key;
+use crate::settings::units::show;
+use crate::study::fit::{FitError, Fits, ModelFit};
+use crate::tui::interact::Input;
+use crate::tui::jobs::{Jobs, Notice};
+use crate::tui::vocabulary::{Action, Handled, Then, View};
+
+/// The Fit view's fits of the measured series, and the line fit's window.
+#[derive(Clone, Debug, Default)]
+pub struct FitRuns {
+    /// Line-fit window (None: the sliding phase).
+    pub window: FitWindow,
+    fits: Job<(Generation, FitWindow), Result<Fits, FitError>>,
+}
+
+impl FitRuns {
+    /// Asks for this scene's fits while the Fit view is `shown`; leaving it stops a
+    /// running fit (a finished one is kept); without data it is forgotten, so a fit of
+    /// data no longer shown is neither drawn nor applied.
+    pub fn sync(&mut self, shown: bool, lab: &Lab, jobs: &Jobs) {
+        let Some(fits) = analyses::fits(lab, self.window) else {
+            self.fits.cancel();
+            return;
+        };
+        if !shown {
+            self.fits.stop_running();
+            return;
+        }
+        let generation = lab.generation();
+        self.fits
+            .request(jobs, (generation, self.window), Notice::Fits, fits);
+    }
+
+    pub fn fits(&self) -> State<'_, Result<Fits, FitError>> {
+        self.fits.state()
+    }
+
+    /// Moves one end of the line-fit window by one measured frame (the fits follow at
+    /// the next [`FitRuns::sync`]).
+    pub fn move_window(&mut self, lab: &Lab, end: bool, later: bool) -> Result<(), FitWindowError> {
+        let fitted = match self.fits.ready() {
+            Some(Ok(f)) => Some((f.line_fit.from, f.line_fit.to)),
+            _ => None,
+        };
+        self.window = analyses::moved_fit_window(lab, self.window, fitted, end, later)?;
+        Ok(())
+    }
+
+    /// The model fit `a` applies, and what to call it: the headline fit (of the model
+    /// the data support; of a position track fitted to the positions), the one the
+    /// panel shows first.
+    fn to_apply(&self) -> Result<(ModelFit, &'static str), NoFitToApply> {
+        match self.fits() {
+            State::Ready(Ok(f)) => Ok((
+                f.model_fit.clone(),
+                match f.model_fit.fitted_to {
+                    "positions" => "the position fit",
+                    _ => "the fit",
+                },
+            )),
+            State::Ready(Err(e)) => Err(NoFitToApply::Failed(e.clone())),
+            State::Computing { .. } => Err(NoFitToApply::Running),
+            State::Idle => Err(NoFitToApply::NoData),
+        }
+    }
+
+    /// Fit view: puts the fitted μ_k (and v0, e where the fit freed them) into the
+    /// scene: of a position track the position fit, the one the panel says to quote.
+    fn apply(&self, lab: &mut Lab) -> Handled {
+        let (fitted, which) = match self.to_apply() {
+            Ok(f) => f,
+            Err(e) => return Handled::Refused(e.to_string()),
+        };
+        if let Some(n) = fitted.undetermined("mu") {
+            return Handled::Refused(format!(
+                "not applied: {which} does not determine μ_k ({})",
+                n.reason
+            ));
+        }
+        // μ_k is always fitted; v0, e and c_rr only when the fit freed them (they have
+        // an uncertainty then): the scene becomes the fitted one.
+        let mut changes = vec![(Key::Mu, fitted.mu)];
+        if fitted.v0_se.is_some() {
+            changes.push((Key::V0, fitted.v0));
+        }
+        if fitted.restitution_se.is_some() {
+            changes.push((Key::Restitution, fitted.restitution));
+        }
+        if fitted.rolling_resistance_se.is_some() {
+            changes.push((Key::RollingResistance, fitted.rolling_resistance));
+        }
+        // All or nothing: a fit is never left half applied.
+        let edits = lab.settings().edits().len();
+        if let Err(e) = lab.set_all(&changes) {
+            return Handled::Refused(format!("fit not applied: {e}"));
+        }
+        let applied: Vec<String> = changes
+            .iter()
+            .map(|&(key, value)| {
+                format!("{} = {}", key.param().symbol, show(value, key.dimension()))
+            })
+            .collect();
+        // A second `a` changes nothing: no undo step, and it says so.
+        Handled::Say(if lab.settings().edits().len() == edits {
+            format!("{which} is in the scene already: {}", applied.join(", "))
+        } else {
+            format!("applied {which}: {}", applied.join(", "))
+        })
+    }
+}
+
+/// Why `a` finds no fit to apply.
+#[derive(Debug, thiserror::Error)]
+enum NoFitToApply {
+    #[error("no fit to apply: {0}")]
+    Failed(FitError),
+    #[error("the fit is still running: try again")]
+    Running,
+    #[error("no fit to apply: this preset has no data")]
+    NoData,
+}
+
+impl Pane for FitRuns {
+    fn view(&self) -> Option<View> {
+        Some(View::Fit)
+    }
+
+    fn handle(&mut self, input: &Input, cx: &mut PaneCx<'_>) -> Handled {
+        let Input::Key(action) = *input else {
+            return Handled::Ignored;
+        };
+        let shown = cx.shown == View::Fit;
+        let moved = |fit: &mut FitRuns, end, later| match fit.move_window(cx.lab, end, later) {
+            Ok(()) => Handled::Consumed,
+            Err(e) => Handled::Refused(e.to_string()),
+        };
+        match action {
+            // Opening the view without data says there are none to fit.
+            Action::ShowView(View::Fit) if shown && cx.lab.measured().is_none() => {
+                Handled::Refused(format!(
+                    "preset {} has no measured data to fit (the paper-b* presets have)",
+                    cx.lab.preset().name
+                ))
+            }
+            Action::FitStartEarlier => moved(self, false, false),
+            Action::FitStartLater => moved(self, false, true),
+            Action::FitEndEarlier => moved(self, true, false),
+            Action::FitEndLater => moved(self, true, true),
+            Action::ApplyFit if !shown => {
+                Handled::Refused("a applies a fit: open the Fit view first (f)".into())
+            }
+            Action::ApplyFit => self.apply(cx.lab),
+            Action::ModelsTable
+                if shown && !cx.derived && matches!(self.fits(), State::Ready(Ok(_))) =>
+            {
+                Handled::Ask(Then::OpenModels)
+            }
+            Action::ModelsTable => Handled::Refused(
+                "M lists the fit's models: in the Fit view (f), once the fit is there".into(),
+            ),
+            _ => Handled::Ignored,
+        }
+    }
+
+    fn sync(&mut self, cx: &PaneCx<'_>) {
+        self.sync(cx.shown == View::Fit, cx.lab, cx.jobs);
+    }
+
+    fn data_changed(&mut self) {
+        // The window was chosen for the data before.
+        self.window = (None, None);
+    }
+}

@@ -1,0 +1,226 @@
+//! The main screen, the bottom layer of the compositor (issue 36, helix's editor view
+//! at the bottom of its stack): the views, each a component that owns its state, its
+//! keys (its rows of the one key table) and its slow work (a gitui tab holding its own
+//! job), and which of them is shown. What the popups leave reaches here: the view shown
+//! first, then the others whose keys work from every view; what none takes is the
+//! app's (playback, the parameters, the popups' keys). Like the popups, this knows
+//! nothing of the app: it is handed the lab, the jobs and the moment ([`PaneCx`]).
+//! The views draw in `view/` (they read the whole app there).
+
+pub mod charts;
+pub mod fit;
+pub mod forces;
+pub mod methods;
+pub mod video;
+pub mod zoom;
+
+use std::any::Any;
+
+use crate::lab::Lab;
+use crate::tui::interact::Input;
+use crate::tui::jobs::{Jobs, Notice};
+use crate::tui::vocabulary::{Action, Handled, View};
+
+/// What a view needs of the app to handle an input or ask for its work.
+#[derive(Debug)]
+pub struct PaneCx<'a> {
+    pub lab: &'a mut Lab,
+    pub jobs: &'a Jobs,
+    /// The cursor's time, s, and the span the charts' x axis covers unzoomed.
+    pub t: f64,
+    pub span: (f64, f64),
+    /// True while the outcome is hidden (b hidden, a prediction pending).
+    pub derived: bool,
+    /// The view shown.
+    pub shown: View,
+    /// Where a mouse event points, as the frame on screen laid it out.
+    pub pointer: Pointer,
+}
+
+impl PaneCx<'_> {
+    /// True while a chart is on screen (the Charts and Fit views).
+    pub fn charts_shown(&self) -> bool {
+        matches!(self.shown, View::Charts | View::Fit)
+    }
+}
+
+/// What lies under the mouse: the time under it on the chart's plot, the video's
+/// pixel under it on the Scene panel's picture.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Pointer {
+    pub time: Option<f64>,
+    pub pixel: Option<(f64, f64)>,
+}
+
+/// A view of the main screen: its keys and mouse, and its jobs.
+pub trait Pane: AnyPane + std::fmt::Debug {
+    /// The view it is (the one shown is offered an input first); `None` for a part
+    /// of every view (the Scene panel's video).
+    fn view(&self) -> Option<View>;
+    /// Handles `input` (its own keys; [`Handled::Ignored`] lets it go on).
+    fn handle(&mut self, input: &Input, cx: &mut PaneCx<'_>) -> Handled;
+    /// Asks for the work it wants of this scene (a request already made for it runs
+    /// on; one made for an earlier scene is superseded, its result dropped).
+    fn sync(&mut self, _cx: &PaneCx<'_>) {}
+    /// A job of its finished: what it says.
+    fn notice(&mut self, _notice: Notice, _cx: &mut PaneCx<'_>) -> Handled {
+        Handled::Ignored
+    }
+    /// Other data than before (a preset, a drop, an undo): what was chosen for them goes.
+    fn data_changed(&mut self) {}
+    /// The cursor moved to `t` (playback, a key), the charts' unzoomed span `span`.
+    fn moved(&mut self, _t: f64, _span: (f64, f64)) {}
+}
+
+/// What every pane is without writing it: found by its type (helix's
+/// `Compositor::find`), and cloned with the app.
+pub trait AnyPane {
+    fn as_any(&self) -> &dyn Any;
+    fn as_any_mut(&mut self) -> &mut dyn Any;
+    fn boxed(&self) -> Box<dyn Pane>;
+}
+
+impl<T: Pane + Clone + 'static> AnyPane for T {
+    fn as_any(&self) -> &dyn Any {
+        self
+    }
+    fn as_any_mut(&mut self) -> &mut dyn Any {
+        self
+    }
+    fn boxed(&self) -> Box<dyn Pane> {
+        Box::new(self.clone())
+    }
+}
+
+/// The main screen: the view shown and every view's pane.
+#[derive(Debug)]
+pub struct MainScreen {
+    shown: View,
+    panes: Vec<Box<dyn Pane>>,
+}
+
+impl Default for MainScreen {
+    /// The views, registered: a new view is its line here.
+    fn default() -> Self {
+        MainScreen {
+            shown: View::Charts,
+            panes: vec![
+                Box::new(charts::Charts::default()),
+                Box::new(forces::ForcesState::default()),
+                Box::new(methods::Methods::default()),
+                Box::new(fit::FitRuns::default()),
+                Box::new(video::VideoRun::default()),
+            ],
+        }
+    }
+}
+
+impl Clone for MainScreen {
+    fn clone(&self) -> Self {
+        MainScreen {
+            shown: self.shown,
+            panes: self.panes.iter().map(|p| p.boxed()).collect(),
+        }
+    }
+}
+
+impl MainScreen {
+    /// The pane of type `T` (every view's is registered).
+    pub fn get<T: Pane + 'static>(&self) -> &T {
+        self.panes
+            .iter()
+            .find_map(|p| p.as_any().downcast_ref())
+            .expect("every pane is registered in MainScreen::default")
+    }
+
+    pub fn get_mut<T: Pane + 'static>(&mut self) -> &mut T {
+        self.panes
+            .iter_mut()
+            .find_map(|p| p.as_any_mut().downcast_mut())
+            .expect("every pane is registered in MainScreen::default")
+    }
+
+    /// The panes, the one of the view shown first (its keys before the others': the
+    /// ball key is the Forces view's there, the charts' elsewhere).
+    fn panes(&mut self) -> impl Iterator<Item = &mut Box<dyn Pane>> {
+        let shown = Some(self.shown);
+        let first = self.panes.iter().position(|p| p.view() == shown);
+        let (before, from) = self.panes.split_at_mut(first.unwrap_or(0));
+        let (own, after) = from.split_at_mut(from.len().min(1));
+        own.iter_mut()
+            .chain(before.iter_mut())
+            .chain(after.iter_mut())
+    }
+
+    /// The view shown.
+    pub fn shown(&self) -> View {
+        self.shown
+    }
+
+    /// Shows `view` (the predict key shows the Forces view).
+    pub fn show(&mut self, view: View) {
+        self.shown = view;
+    }
+
+    /// Offers `input` to the views, the one shown first; a view key shows its view
+    /// (or the charts again) and tells the views. [`Handled::Ignored`]: none took it.
+    pub fn handle(&mut self, input: &Input, cx: &mut PaneCx<'_>) -> Handled {
+        if let Input::Key(Action::ShowView(view)) = *input {
+            self.shown = if self.shown == view {
+                View::Charts
+            } else {
+                view
+            };
+            cx.shown = self.shown;
+            let answer = self.offer(input, cx);
+            return if answer == Handled::Ignored {
+                Handled::Consumed
+            } else {
+                answer
+            };
+        }
+        self.offer(input, cx)
+    }
+
+    fn offer(&mut self, input: &Input, cx: &mut PaneCx<'_>) -> Handled {
+        for pane in self.panes() {
+            let answer = pane.handle(input, cx);
+            if answer != Handled::Ignored {
+                return answer;
+            }
+        }
+        Handled::Ignored
+    }
+
+    /// Every view asks for the work it wants of this scene.
+    pub fn sync(&mut self, cx: &PaneCx<'_>) {
+        for pane in self.panes() {
+            pane.sync(cx);
+        }
+    }
+
+    /// A job's notice offered to the views: what the one whose job it was says.
+    pub fn notice(&mut self, notice: Notice, cx: &mut PaneCx<'_>) -> Handled {
+        for pane in self.panes() {
+            let answer = pane.notice(notice, cx);
+            if answer != Handled::Ignored {
+                return answer;
+            }
+        }
+        Handled::Ignored
+    }
+
+    /// The cursor moved to `t`; the charts' unzoomed span is `span`.
+    pub fn moved(&mut self, t: f64, span: (f64, f64)) {
+        for pane in self.panes() {
+            pane.moved(t, span);
+        }
+    }
+
+    /// Other data than before: what the views chose for the old ones goes.
+    pub fn data_changed(&mut self) {
+        for pane in self.panes() {
+            pane.data_changed();
+        }
+    }
+}

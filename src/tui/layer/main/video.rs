@@ -1,0 +1,176 @@
+//! The Scene panel's video (`--data VIDEO`, `V`) as a view of its own (issue 36): the
+//! tracking job it owns (started when the app opens, keyed by the generation it was
+//! asked in and the seed: an edit of the scene does not track the video again), its
+//! pictures once there, whether the panel shows the video or the drawn scene, and a
+//! click on a ball in the picture (issue 34), which tracks the video again seeded
+//! there. Its data join the lab when they arrive, the user's edits kept.
+
+use std::sync::Arc;
+
+use super::{Pane, PaneCx};
+use crate::input::video::tracked::Options;
+use crate::lab::jobs::{Job, State, Ticket};
+use crate::lab::{Generation, Lab};
+use crate::tui::interact::{Input, click};
+use crate::tui::jobs::{Jobs, Notice, VideoResult};
+use crate::tui::vocabulary::{Action, Handled, View};
+use crate::vision::thumbs::VideoView;
+
+/// One tracking's work, as the pool runs it.
+pub type VideoWork = Box<dyn FnOnce(&Ticket) -> VideoResult + Send>;
+
+/// What tracks the app's video for the options given (the edge makes it: it knows the
+/// file, the scene's options and the cache), and the options it was opened with.
+#[derive(Clone)]
+pub struct Tracker {
+    pub options: Options,
+    pub work: Arc<dyn Fn(Options) -> VideoWork + Send + Sync>,
+}
+
+impl std::fmt::Debug for Tracker {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Tracker")
+            .field("options", &self.options)
+            .finish_non_exhaustive()
+    }
+}
+
+/// The `--data` video of the Scene panel and its tracking.
+#[derive(Clone, Debug, Default)]
+pub struct VideoRun {
+    /// The video as the user named it.
+    pub name: Option<String>,
+    /// Keyed by the generation it was asked in and the how-many-th tracking it is.
+    run: Job<(Generation, u64), VideoResult>,
+    count: u64,
+    /// The tracked video's pictures and points.
+    pub view: Option<Arc<VideoView>>,
+    /// The Scene panel shows the video (`V`).
+    pub shown: bool,
+    /// How to track it again (a click on a ball seeds it); none: it cannot be.
+    pub tracker: Option<Tracker>,
+    /// The seed of the tracking asked last, video pixels (a click on a ball).
+    pub seed: Option<(f64, f64)>,
+}
+
+impl VideoRun {
+    /// Tracks the video `name` off the key path: `work` makes it, telling its ticket.
+    pub fn start(
+        &mut self,
+        jobs: &Jobs,
+        generation: Generation,
+        name: String,
+        work: impl FnOnce(&Ticket) -> VideoResult + Send + 'static,
+    ) {
+        self.name = Some(name);
+        self.count += 1;
+        self.run
+            .request(jobs, (generation, self.count), Notice::Video, work);
+    }
+
+    /// The tracking's progress while it runs: frames done of the total (0: unknown).
+    pub fn progress(&self) -> Option<(usize, usize)> {
+        match self.run.state() {
+            State::Computing { done, total } => Some((done, total)),
+            _ => None,
+        }
+    }
+
+    /// The finished tracking's result, once.
+    pub fn take(&mut self) -> VideoResult {
+        self.run.take().flatten()
+    }
+
+    /// A finished tracking: its data into the lab, its pictures kept, or why not;
+    /// [`Handled::Ignored`] if none finished.
+    fn arrived(&mut self, lab: &mut Lab) -> Handled {
+        let Some(result) = self.take() else {
+            return Handled::Ignored;
+        };
+        let name = short(self.name.as_deref().unwrap_or_default());
+        match result {
+            Ok(done) => {
+                match lab.attach_data(done.own, done.from_data, done.file_keys, done.scene_file) {
+                    Ok(()) => {
+                        self.view = done.view;
+                        Handled::Say(format!(
+                            "tracked {name}: its data are in the scene (V: the video)"
+                        ))
+                    }
+                    Err(e) => Handled::Refused(format!("{name}: not used: {e}")),
+                }
+            }
+            Err(e) => Handled::Refused(format!("not tracked: {e}")),
+        }
+    }
+
+    /// `V`: the Scene panel shows the video or the drawn scene.
+    fn toggle(&mut self) -> Handled {
+        let Some(name) = self.name.clone() else {
+            return Handled::Refused(
+                "no video: give one with --data (groovelab --data clip.mp4)".into(),
+            );
+        };
+        self.shown = !self.shown;
+        Handled::Say(if self.shown {
+            format!(
+                "Scene panel: the video {} (V: the drawn scene; click a ball to track from it)",
+                short(&name)
+            )
+        } else {
+            "Scene panel: the drawn scene (V: the video)".into()
+        })
+    }
+
+    /// A click on the picture at the video's pixel `at`: the tracking again, seeded
+    /// there (`Options::ball_at`).
+    fn seed_at(&mut self, at: (f64, f64), cx: &PaneCx<'_>) -> Handled {
+        let Some(tracker) = &self.tracker else {
+            return Handled::Refused("this video cannot be tracked again here".into());
+        };
+        let options = Options {
+            ball_at: Some(at),
+            ..tracker.options.clone()
+        };
+        let work = (tracker.work)(options);
+        let name = self.name.clone().unwrap_or_default();
+        self.start(cx.jobs, cx.lab.generation(), name.clone(), work);
+        self.seed = Some(at);
+        Handled::Say(format!(
+            "tracking {} again from the ball at ({:.0}, {:.0}) px",
+            short(&name),
+            at.0,
+            at.1
+        ))
+    }
+}
+
+impl Pane for VideoRun {
+    fn view(&self) -> Option<View> {
+        None
+    }
+
+    fn handle(&mut self, input: &Input, cx: &mut PaneCx<'_>) -> Handled {
+        match (input, cx.pointer.pixel) {
+            (Input::Key(Action::ToggleVideo), _) => self.toggle(),
+            (Input::Mouse(..), Some(at)) if self.shown && click(input).is_some() => {
+                self.seed_at(at, cx)
+            }
+            _ => Handled::Ignored,
+        }
+    }
+
+    fn notice(&mut self, notice: Notice, cx: &mut PaneCx<'_>) -> Handled {
+        match notice {
+            Notice::Video => self.arrived(cx.lab),
+            _ => Handled::Ignored,
+        }
+    }
+}
+
+/// A video's name as the status line says it: its file's name, without the folders.
+pub fn short(name: &str) -> String {
+    std::path::Path::new(name)
+        .file_name()
+        .map_or(name.into(), |f| f.to_string_lossy().into_owned())
+}
