@@ -337,9 +337,9 @@ fn video_tracker(
     scene_args: &SceneArgs,
     data: &DataArgs,
     options: crate::input::video::tracked::Options,
-) -> crate::tui::layer::main::video::Tracker {
+) -> crate::tui::layer::main::video::VideoTracker {
     let (scene_args, data) = (scene_args.clone(), data.clone());
-    crate::tui::layer::main::video::Tracker {
+    crate::tui::layer::main::video::VideoTracker {
         options,
         work: Arc::new(move |o| Box::new(video_work(&scene_args, &data, o))),
     }

@@ -9,7 +9,7 @@ use std::sync::mpsc;
 use groovelab::cli::{DataArgs, SceneArgs};
 use groovelab::input::video::tracked::Options;
 use groovelab::tui::app::{Action, App, Status};
-use groovelab::tui::layer::main::video::{Tracker, VideoWork};
+use groovelab::tui::layer::main::video::{VideoTracker, VideoWork};
 use groovelab::tui::screen::Screen;
 use groovelab::tui::view::video::{cell_at, pixel_at};
 use groovelab::vision::thumbs::{BallPixels, Thumbs, VideoView};
@@ -99,7 +99,7 @@ fn app_with_video(view: VideoView) -> (App, mpsc::Receiver<Options>) {
     app.set_video("clips/clip.mp4".into(), Some(Arc::new(view)));
     let (tx, rx) = mpsc::channel();
     let tx = std::sync::Mutex::new(tx);
-    app.set_video_tracker(Tracker {
+    app.set_video_tracker(VideoTracker {
         options: options(),
         work: Arc::new(move |o: Options| -> VideoWork {
             tx.lock().unwrap().send(o).unwrap();

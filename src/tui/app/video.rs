@@ -8,7 +8,7 @@ use std::sync::Arc;
 use super::{App, Status};
 use crate::lab::jobs::Ticket;
 use crate::tui::jobs::VideoResult;
-use crate::tui::layer::main::video::{Tracker, VideoRun, short};
+use crate::tui::layer::main::video::{VideoRun, VideoTracker, short};
 use crate::vision::thumbs::VideoView;
 
 impl App {
@@ -37,7 +37,7 @@ impl App {
 
     /// How the video is tracked again when a click on its picture seeds a ball
     /// (`tracker.options`, its `ball_at` set to the click).
-    pub fn set_video_tracker(&mut self, tracker: Tracker) {
+    pub fn set_video_tracker(&mut self, tracker: VideoTracker) {
         self.layers.main_mut().get_mut::<VideoRun>().tracker = Some(tracker);
     }
 }

@@ -278,7 +278,7 @@ pub const TABLE: &[Binding] = &[
     Binding {
         keys: &["V"],
         action: Action::ToggleVideo,
-        help: "Scene panel: the drawn scene or the video (--data VIDEO; click a ball in it to track from there)",
+        help: "Scene panel: the drawn scene or the video (--data VIDEO)",
         hint: None,
     },
     Binding {

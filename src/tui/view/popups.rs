@@ -68,7 +68,7 @@ fn help_lines(width: usize, theme: &Theme) -> Vec<Line<'static>> {
         }
     }
     // One line at 200 columns (the whole help then fits 60 rows).
-    let mouse = "Mouse: click a parameter to select it, scroll on it to change it; click or drag the chart to seek, scroll to zoom; click a ball in the video (V) to track from it; click a preset twice to load it.";
+    let mouse = "Mouse: click a parameter to select it, scroll on it to change it; click or drag the chart to seek, scroll to zoom; click a preset twice to load it.";
     for row in wrap(Line::from(format!(" {mouse}")), width) {
         lines.push(row.style(theme.dim));
     }

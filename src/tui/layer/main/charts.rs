@@ -5,8 +5,8 @@
 //! the charts too; elsewhere the zoom says whose it is); the chart is built from this
 //! state and the snapshot.
 
+use super::pane::{Pane, PaneCx};
 use super::zoom::{self, TimeZoom};
-use super::{Pane, PaneCx};
 use crate::lab::jobs::{Job, State};
 use crate::lab::{Generation, Lab, OVERLAY_LEVELS, Overlay, analyses};
 use crate::methods::Method;

@@ -2,7 +2,7 @@
 //! job): the line fit's window, the fits of the measured series (asked while the view
 //! is shown), the window's keys, `a` (the fit into the scene) and `M` (its models).
 
-use super::{Pane, PaneCx};
+use super::pane::{Pane, PaneCx};
 use crate::lab::jobs::{Job, State};
 use crate::lab::{FitWindow, FitWindowError, Generation, Lab, analyses};
 use crate::settings::params::Key;

@@ -1,7 +1,7 @@
 //! The Forces view's own state and keys (issue 26): which ball its front view and
 //! chain show. Its ball key is its own while it is shown (the charts' otherwise).
 
-use super::{Pane, PaneCx};
+use super::pane::{Pane, PaneCx};
 use crate::tui::interact::{Input, Interactive};
 use crate::tui::vocabulary::{Action, Handled, View};
 

@@ -2,7 +2,7 @@
 //! shows, and its rows (every method's run, timed or not), asked while it is shown.
 //! Its key works from every view (the axis is kept for when the view opens).
 
-use super::{Pane, PaneCx};
+use super::pane::{Pane, PaneCx};
 use crate::lab::jobs::{Job, State};
 use crate::lab::{Generation, Lab, analyses};
 use crate::study::compare::Row;

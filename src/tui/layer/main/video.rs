@@ -7,7 +7,7 @@
 
 use std::sync::Arc;
 
-use super::{Pane, PaneCx};
+use super::pane::{Pane, PaneCx};
 use crate::input::video::tracked::Options;
 use crate::lab::jobs::{Job, State, Ticket};
 use crate::lab::{Generation, Lab};
@@ -22,14 +22,14 @@ pub type VideoWork = Box<dyn FnOnce(&Ticket) -> VideoResult + Send>;
 /// What tracks the app's video for the options given (the edge makes it: it knows the
 /// file, the scene's options and the cache), and the options it was opened with.
 #[derive(Clone)]
-pub struct Tracker {
+pub struct VideoTracker {
     pub options: Options,
     pub work: Arc<dyn Fn(Options) -> VideoWork + Send + Sync>,
 }
 
-impl std::fmt::Debug for Tracker {
+impl std::fmt::Debug for VideoTracker {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.debug_struct("Tracker")
+        f.debug_struct("VideoTracker")
             .field("options", &self.options)
             .finish_non_exhaustive()
     }
@@ -48,7 +48,7 @@ pub struct VideoRun {
     /// The Scene panel shows the video (`V`).
     pub shown: bool,
     /// How to track it again (a click on a ball seeds it); none: it cannot be.
-    pub tracker: Option<Tracker>,
+    pub tracker: Option<VideoTracker>,
     /// The seed of the tracking asked last, video pixels (a click on a ball).
     pub seed: Option<(f64, f64)>,
 }
@@ -114,7 +114,7 @@ impl VideoRun {
         self.shown = !self.shown;
         Handled::Say(if self.shown {
             format!(
-                "Scene panel: the video {} (V: the drawn scene; click a ball to track from it)",
+                "Scene panel: the video {} (V: the drawn scene)",
                 short(&name)
             )
         } else {
