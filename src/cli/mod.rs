@@ -17,6 +17,8 @@ use crate::study::story;
 use crate::tui::{
     self,
     app::{App, Library},
+    look,
+    theme::ThemeChoice,
 };
 
 mod args;
@@ -56,6 +58,9 @@ pub enum Response {
 /// Runs a parsed command line.
 pub fn run(cli: &Cli) -> Result<Response, CliError> {
     used_options(cli)?;
+    if matches!(cli.command, None | Some(Command::Tui | Command::Render(_))) {
+        theme_choice(cli)?;
+    }
     // A data file that names its scene gives it, under the options.
     let scene = &open::with_file_scene(&cli.scene, &cli.data)?;
     match &cli.command {
@@ -163,6 +168,7 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
             Usage::WithoutData { flag: Flag(id) }
         }
         _ if !ascii && cli.ascii => unused("ascii", "render and the app"),
+        _ if !ascii && cli.theme.is_some() => unused("theme", "render and the app"),
         // --fps is a video's: a data file has its times.
         _ if d.fps.is_some()
             && !matches!(cli.command, Some(Command::Track(_) | Command::Data(_)))
@@ -173,6 +179,15 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         _ => return Ok(()),
     };
     Err(error.into())
+}
+
+/// `--theme`, else `GROOVELAB_THEME`, else auto.
+pub(crate) fn theme_choice(cli: &Cli) -> Result<ThemeChoice, CliError> {
+    match cli.theme {
+        Some(choice) => Ok(choice),
+        None => look::parse_switch(std::env::var(look::SWITCH).ok().as_deref())
+            .map_err(|source| BadValue::ThemeSwitch { source }.into()),
+    }
 }
 
 /// `render`: the app's screen after `--keys`, at `--at`, as text.
@@ -218,7 +233,9 @@ pub fn render_with(
     }
     app.playing = false;
     let (cols, rows) = args.size;
-    // Headless output has no colours; NO_COLOR does not change the text.
+    // Headless output is text without colours: the monochrome theme, whose curves are
+    // told apart by letters, whatever `--theme` (headless, its auto is dark) or
+    // NO_COLOR say; the same input gives the same bytes.
     let theme = tui::theme::Theme::new(tui::theme::Glyphs::new(ascii), true);
     Ok(tui::screen::to_text(&app, cols, rows, &theme))
 }
