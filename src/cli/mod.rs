@@ -38,7 +38,7 @@ mod track_args;
 mod video_data;
 pub use crate::output::{self, write_atomically};
 use crate::settings::params::{Key, PARAMS};
-use crate::settings::units::{Dimension, show, sig_figs};
+use crate::settings::units::{Dimension, fixed, show, sig_figs};
 pub use args::*;
 use deliver::deliver;
 pub use error::{BadValue, CliError, Flag, Usage};
@@ -477,14 +477,14 @@ fn run_lines(out: &mut String, solution: &Solution) {
     let (e0, e1) = (summary.energy_start, summary.energy_end);
     let _ = writeln!(
         out,
-        "energy   {:.5} J at t = {}; at t = {}: kinetic {:.5} J, lost to friction {:.5} J, in impacts {:.5} J, to rolling resistance {:.5} J",
-        e0.total(),
+        "energy   {} J at t = {}; at t = {}: kinetic {} J, lost to friction {} J, in impacts {} J, to rolling resistance {} J",
+        fixed(e0.total(), 5),
         show(solution.t_start, Dimension::Time),
         show(solution.t_end, Dimension::Time),
-        e1.kinetic(),
-        e1.lost.friction,
-        e1.lost.impacts,
-        e1.lost.rolling_resistance
+        fixed(e1.kinetic(), 5),
+        fixed(e1.lost.friction, 5),
+        fixed(e1.lost.impacts, 5),
+        fixed(e1.lost.rolling_resistance, 5)
     );
 }
 
