@@ -7,7 +7,7 @@
 //! value, not a sentence about it. The sentence is made by `Display`, where it is
 //! printed.
 
-use crate::layers::{Token, library_sources, tokens};
+use crate::code::layers::{Token, library_sources, tokens};
 
 /// Field names that say a `String` holds a sentence rather than a value.
 const SENTENCES: [&str; 11] = [

@@ -51,7 +51,7 @@ fn sandbox() -> PathBuf {
         )
         .unwrap();
         // The guide's film: a folder of frames rendered from the exact solution.
-        for e in fs::read_dir(crate::video_app::folder()).unwrap() {
+        for e in fs::read_dir(crate::video::app::folder()).unwrap() {
             let p = e.unwrap().path();
             copy(&p, &input.join("frames").join(p.file_name().unwrap()));
         }

@@ -5,7 +5,7 @@
 
 use std::collections::BTreeMap;
 
-use crate::layers::{library_sources, tokens};
+use crate::code::layers::{library_sources, tokens};
 
 /// Every type name a source defines, with its line: the word after `struct`, `enum`,
 /// `trait` or `type`, except a `type` directly inside an `impl` or trait block.

@@ -354,7 +354,7 @@ fn the_tracking_shows_its_progress_and_a_key_never_waits_for_it() {
 
 #[test]
 fn an_mp4_is_data_for_the_app_and_render() {
-    if !crate::video::ffmpeg() {
+    if !crate::video::tracking::ffmpeg() {
         return;
     }
     let look = look();
