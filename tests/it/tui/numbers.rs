@@ -275,7 +275,7 @@ fn the_fit_panel_shows_the_fits_numbers() {
             panic!("the fit is computed");
         };
         let text = joined(&panel(&a, size, |p| p.info));
-        // The paper's row holds the paper's constants (checked in tests/it/fit.rs).
+        // The paper's row holds the paper's constants (checked in tests/it/fit/).
         let text = match (text.find("paper:"), text.find("model fit")) {
             (Some(a), Some(b)) => format!("{}{}", &text[..a], &text[b..]),
             (Some(a), None) => text[..a].to_string(),
