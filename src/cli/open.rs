@@ -222,7 +222,10 @@ pub fn lab_of_stated_scene(scene_args: &SceneArgs, data: &DataArgs) -> Result<La
         // find one in vain.
         if !super::video_data::is_video(path)
             && let Err(CliError::Data(e)) = load_series(data, scene_args)
-            && matches!(e.what, crate::input::data::DataProblem::AccelerationsOnly(_))
+            && matches!(
+                e.what,
+                crate::input::data::DataProblem::AccelerationsOnly(_)
+            )
         {
             return Err(CliError::Data(e));
         }

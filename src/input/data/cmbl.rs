@@ -181,9 +181,15 @@ mod tests {
         );
         assert!(is_cmbl(&plain));
         // The tag alone, or data columns not in a data set, or another root: not one.
-        assert!(!is_cmbl("<Document><FileCoherence>1</FileCoherence></Document>"));
-        assert!(!is_cmbl(&format!("<Document><FileCoherence>1</FileCoherence>{COLUMN}</Document>")));
-        assert!(!is_cmbl(&format!("<object class=\"x\"><DataSet>{COLUMN}</DataSet></object>")));
+        assert!(!is_cmbl(
+            "<Document><FileCoherence>1</FileCoherence></Document>"
+        ));
+        assert!(!is_cmbl(&format!(
+            "<Document><FileCoherence>1</FileCoherence>{COLUMN}</Document>"
+        )));
+        assert!(!is_cmbl(&format!(
+            "<object class=\"x\"><DataSet>{COLUMN}</DataSet></object>"
+        )));
         assert!(!is_cmbl("<Document><DataSet>"));
         assert!(!is_cmbl("t,x\n0,1\n"));
     }

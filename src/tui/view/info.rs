@@ -355,11 +355,16 @@ fn energy_lines(app: &App, width: u16, theme: &Theme) -> Ranked<'static> {
         e.lost.rolling_resistance,
     ]);
     let pct = |i: usize| value(format!("{}%", shares[i]), theme);
-    let total = || value(format!(
-            "{} J{}",
-            crate::settings::units::fixed(e.total(), 4),
-            assumed(app)
-        ), theme);
+    let total = || {
+        value(
+            format!(
+                "{} J{}",
+                crate::settings::units::fixed(e.total(), 4),
+                assumed(app)
+            ),
+            theme,
+        )
+    };
     let first = vec![
         label("energy ", theme),
         total(),

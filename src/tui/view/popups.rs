@@ -96,13 +96,7 @@ fn help(first: usize, area: Rect, buf: &mut Buffer, theme: &Theme) {
 }
 
 /// The presets to load, one row each with the `selected` one marked.
-fn preset_picker(
-    app: &App,
-    selected: Option<usize>,
-    area: Rect,
-    buf: &mut Buffer,
-    theme: &Theme,
-) {
+fn preset_picker(app: &App, selected: Option<usize>, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let g = theme.glyphs;
     let name_width = app
         .library()

@@ -6,8 +6,7 @@ use groovelab::lab::Lab;
 use crate::common;
 use groovelab::study::figures::{Beside, RunChart, run_chart};
 
-/// The fill or stroke colours of the SVG elements after the legend entry `label`'s
-/// text and before the next text: what a series' marks are drawn in.
+/// The stroke colours of the SVG elements of `kind` (`<circle`, `<line`).
 fn colours_of_marks(svg: &str, kind: &str) -> std::collections::BTreeSet<String> {
     svg.lines()
         .filter(|l| l.trim_start().starts_with(kind))
@@ -28,13 +27,14 @@ fn the_run_chart_gives_measured_v_cm_and_v_t_their_own_colours_and_the_screens_s
         right: false,
     };
     let svg = run_chart(&lab.solution, which, Some(&measured), Beside::default()).unwrap();
-    // Crosses are paths (two strokes), circles circles: the measured marks.
+    // Measured v_cm: crosses, each two `<line>`s; measured v_t: `<circle>`s (the
+    // model's curves are polylines). Before, both marks were red.
     let circles = colours_of_marks(&svg, "<circle");
-    let crosses = colours_of_marks(&svg, "<polyline");
+    let lines = colours_of_marks(&svg, "<line");
     assert_eq!(circles.len(), 1, "v_t circles in one colour: {circles:?}");
     assert!(
-        !crosses.is_superset(&circles),
-        "v_t's colour {circles:?} is not among the lines' and crosses' {crosses:?}"
+        lines.is_disjoint(&circles),
+        "v_t's colour {circles:?} is also the crosses' or another line's: {lines:?}"
     );
     assert!(svg.contains("μ_k = ") && !svg.contains("mu_k") && !svg.contains("mu ="));
 }
@@ -47,8 +47,8 @@ fn microseconds_are_typed_as_us_wherever_a_time_is() {
         assert!((t - 1e-4).abs() < 1e-18, "{text}: {t}");
     }
     // `--sample 100us` is accepted: one sample every 0.1 ms over the span.
-    let out = common::run_in_process(&["simulate", "--sample", "100us", "--format", "json"])
-        .unwrap();
+    let out =
+        common::run_in_process(&["simulate", "--sample", "100us", "--format", "json"]).unwrap();
     let j: serde_json::Value = serde_json::from_str(&out).unwrap();
     let samples = j["samples"].as_array().unwrap();
     let dt = samples[1]["t"].as_f64().unwrap() - samples[0]["t"].as_f64().unwrap();
@@ -94,11 +94,18 @@ fn fit_on_accelerations_only_says_so_before_asking_for_the_scene() {
     let path = file.to_str().unwrap();
     for command in ["fit", "compare"] {
         let e = common::run_in_process(&[command, "--data", path]).unwrap_err();
-        assert!(e.contains("accelerations only") && !e.contains("names no scene"), "{e}");
+        assert!(
+            e.contains("accelerations only") && !e.contains("names no scene"),
+            "{e}"
+        );
     }
     // A fittable file without its scene is still asked for one.
     let csv = dir.join("velocities.csv");
-    std::fs::write(&csv, "t,v_cm,v_t\n0,0.5,0.5\n0.01,0.49,0.48\n0.02,0.48,0.46\n").unwrap();
+    std::fs::write(
+        &csv,
+        "t,v_cm,v_t\n0,0.5,0.5\n0.01,0.49,0.48\n0.02,0.48,0.46\n",
+    )
+    .unwrap();
     let e = common::run_in_process(&["fit", "--data", csv.to_str().unwrap()]).unwrap_err();
     assert!(e.contains("names no scene"), "{e}");
 }

@@ -29,7 +29,11 @@ fn the_picker_marks_no_preset_while_b_is_hidden_or_a_prediction_pends() {
             press(&mut a, &format!("{hide} p"));
             assert!(matches!(a.mode(), Mode::Picker(_)), "{name} {hide}");
             let screen = text(&a, (120, 40), false);
-            assert_eq!(marked_row(&screen), None, "{name} after {hide:?}:\n{screen}");
+            assert_eq!(
+                marked_row(&screen),
+                None,
+                "{name} after {hide:?}:\n{screen}"
+            );
             // Enter has nothing to load yet; a first arrow marks the first row.
             press(&mut a, "enter");
             assert_eq!(a.lab.preset().name, *name);

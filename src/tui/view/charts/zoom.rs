@@ -110,7 +110,10 @@ mod tests {
             let (x, y) = text.trim_end_matches(" s").split_once(" … ").unwrap();
             assert_ne!(x, y, "{text}");
             let (x, y): (f64, f64) = (x.parse().unwrap(), y.parse().unwrap());
-            assert!((x - a).abs() <= 0.1 * (b - a) && (y - b).abs() <= 0.1 * (b - a), "{text}");
+            assert!(
+                (x - a).abs() <= 0.1 * (b - a) && (y - b).abs() <= 0.1 * (b - a),
+                "{text}"
+            );
         }
         assert_eq!(window_text(-0.2, 0.8), "-0.200 … 0.800 s");
     }
