@@ -9,10 +9,12 @@ use std::path::Path;
 use criterion::{Criterion, criterion_group, criterion_main};
 use groovelab::input::video::{self, Limits, write};
 use groovelab::physics::scene::Scene;
-use groovelab::vision::render::{Film, Look};
+use film::{Film, Look, Truth};
 use groovelab::vision::{self, Tracker};
 
 mod common;
+#[path = "../tests/support/film/mod.rs"]
+mod film;
 
 fn scene() -> Scene {
     common::preset("paper-b4.9").0
@@ -32,7 +34,7 @@ fn accuracy(film: &Film, frames: usize) -> (f64, f64, usize, usize) {
             let t = truth
                 .iter()
                 .min_by(|a, b| {
-                    let d = |t: &vision::render::Truth| (t.centre.0 - c.x).hypot(t.centre.1 - c.y);
+                    let d = |t: &Truth| (t.centre.0 - c.x).hypot(t.centre.1 - c.y);
                     d(a).total_cmp(&d(b))
                 })
                 .unwrap();

@@ -9,7 +9,7 @@ use super::args::SceneArgs;
 use super::error::CliError;
 use super::progress::Bar;
 use super::track_args::{TrackArgs, TrackOutput};
-use crate::input::video::RateSource;
+use crate::input::video::{RateSource, overlay};
 use crate::input::video::tracked::{self, Options, Tracked};
 use crate::settings::params::Key;
 use crate::vision::tracks::{BallTrack, Calibration};
@@ -43,11 +43,23 @@ pub fn run(
     if let Some(path) = &args.output {
         crate::output::check_output(path)?;
     }
+    // A bad overlay name is refused before the tracking, not after it.
+    if let Some(path) = &args.overlay {
+        overlay::kind(path)?;
+        crate::output::check_output(path)?;
+    }
     let options = options(scene, fps, scale)?;
     let bar = Bar::new("frames", true);
     let done = tracked::track(&args.video, &options, &bar).map_err(CliError::from);
     bar.finish();
     let done: Tracked = done?.ok_or(CliError::Interrupted)?;
+    let drawn = match &args.overlay {
+        Some(path) => {
+            overlay::write_overlay(&args.video, &done, path)?;
+            format!("wrote the overlay {}\n", path.display())
+        }
+        None => String::new(),
+    };
     let text = match args.format {
         TrackOutput::Tracker => done.text(),
         TrackOutput::Json => {
@@ -73,11 +85,16 @@ pub fn run(
         }
     };
     match &args.output {
-        None => Ok(text),
+        None => {
+            // Stdout holds the tracks: the overlay's line goes beside the progress.
+            eprint!("{drawn}");
+            Ok(text)
+        }
         Some(path) => {
             crate::signals::watch();
             crate::output::write_atomically(path, text.as_bytes())?;
             let mut out: String = done.notes.iter().map(|n| format!("{n}\n")).collect();
+            out += &drawn;
             out += &format!("wrote {}\n", path.display());
             Ok(out)
         }

@@ -3,6 +3,8 @@
 
 #[macro_use]
 mod common;
+#[path = "../support/film/mod.rs"]
+mod film;
 
 mod chart_zoom;
 mod classroom;
@@ -47,5 +49,6 @@ mod tui;
 mod units_checked;
 mod video;
 mod video_app;
+mod video_looks;
 mod wording;
 mod wrong_scene;

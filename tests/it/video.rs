@@ -1,10 +1,10 @@
 //! Tracking balls in videos against truth: synthetic videos of exactly solved scenes
-//! (`vision::render`), tracked in memory, from a folder of PNG frames and
+//! (`tests/support/film`), tracked in memory, from a folder of PNG frames and
 //! from an mp4 encoded with ffmpeg; the recovered centres and marks against the exact
 //! positions, μ_k fitted from the tracks, and bad inputs refused.
 
 use groovelab::vision::Tracker;
-use groovelab::vision::render::{Film, Look};
+use crate::film::{Film, Look};
 
 /// A tracked point and the true one, px.
 type Pair = ((f64, f64), (f64, f64));

@@ -2,8 +2,8 @@
 //! `ffprobe`, its size, frame rate and a phone's slow-motion capture rate), its
 //! frames streamed as luma (`decode`: the system's `ffmpeg` through a pipe, one frame
 //! in memory at a time), a folder of numbered PNG/JPEG frames (`folder`, no ffmpeg
-//! needed), a video tracked (`tracked`) and kept (`cache`), and writing frames and
-//! videos (`write`: for tests and benchmarks). Never
+//! needed), a video tracked (`tracked`) and kept (`cache`), what was tracked drawn over
+//! its frames (`overlay`), and writing frames and videos (`write`). Never
 //! a binary fetched at run time: without ffmpeg a video is refused with how to
 //! install it.
 
@@ -11,6 +11,7 @@ pub mod cache;
 mod decode;
 mod folder;
 mod info;
+pub mod overlay;
 mod probe;
 mod problem;
 pub mod tracked;
