@@ -50,5 +50,6 @@ mod units_checked;
 mod video;
 mod video_app;
 mod video_looks;
+mod video_overlay;
 mod wording;
 mod wrong_scene;

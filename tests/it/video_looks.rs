@@ -252,3 +252,170 @@ fn sheet() {
         }
     }
 }
+
+// ---- The looks table (BENCHMARKS.md) ----------------------------------------------
+
+/// One look's row of the looks table.
+struct Row {
+    name: String,
+    /// "tracked", "refused: …", "fit refused: …" or "panic".
+    tracked: String,
+    /// Pooled centre and mark errors (sum of squares, count), px.
+    centre: (f64, usize),
+    mark: (f64, usize),
+    /// The scale's error in units of its ±.
+    scale_z: Option<f64>,
+    /// μ_k and its ±.
+    mu: Option<(f64, f64)>,
+}
+
+/// Tracks `clip` in this process (its pixels against the truth) and fits its tracks
+/// with the command line, as a user would.
+fn measure(dir: &Path, clip: &Clip) -> Row {
+    use groovelab::input::video::tracked::{self, Options};
+    let film = &clip.film;
+    let path = dir.join("clip.mp4");
+    h264::write(&path, film, clip.frames).unwrap();
+    let options = Options {
+        radius: film.scene.radius,
+        fps: Some(film.look.fps),
+        px_per_m: None,
+        radius_from: "--radius".into(),
+        cache: None,
+        roi: None,
+        ball_at: None,
+    };
+    let mut row = Row {
+        name: clip.name.clone(),
+        tracked: String::new(),
+        centre: (0.0, 0),
+        mark: (0.0, 0),
+        scale_z: None,
+        mu: None,
+    };
+    let done = std::panic::catch_unwind(|| {
+        tracked::track(&path, &options, &groovelab::study::Quiet)
+    });
+    let done = match done {
+        Err(_) => {
+            row.tracked = "panic".into();
+            return row;
+        }
+        Ok(Err(e)) => {
+            row.tracked = format!("refused: {}", e.what);
+            return row;
+        }
+        Ok(Ok(None)) => unreachable!("never cancelled"),
+        Ok(Ok(Some(done))) => done,
+    };
+    let c = &done.tracks.calibration;
+    row.scale_z = Some((c.px_per_m - film.px_per_m()) / c.px_per_m_sigma.max(1e-12));
+    for b in &done.view.balls {
+        for (k, (centre, mark)) in b.centre.iter().zip(&b.mark).enumerate() {
+            let Some(p) = centre else { continue };
+            let truth = film.truth(k);
+            let d = |t: &crate::film::Truth| {
+                (t.centre.0 - f64::from(p.0)).hypot(t.centre.1 - f64::from(p.1))
+            };
+            let t = if d(&truth[0]) <= d(&truth[1]) { truth[0] } else { truth[1] };
+            row.centre.0 += d(&t).powi(2);
+            row.centre.1 += 1;
+            if let Some(m) = mark {
+                row.mark.0 += (t.mark.0 - f64::from(m.0)).hypot(t.mark.1 - f64::from(m.1)).powi(2);
+                row.mark.1 += 1;
+            }
+        }
+    }
+    let tracks = dir.join("tracks.txt");
+    std::fs::write(&tracks, done.text()).unwrap();
+    let (code, out, err) = run(
+        dir,
+        &[
+            "fit", "--data", tracks.to_str().unwrap(), "--radius", "2.75cm", "--width", "4.9cm",
+            "--format", "json",
+        ],
+    );
+    match code {
+        0 => {
+            let j: serde_json::Value = serde_json::from_str(&out).unwrap();
+            let m = &j["model_fit"];
+            row.mu = Some((
+                m["mu"].as_f64().unwrap_or(f64::NAN),
+                m["mu_se"].as_f64().unwrap_or(f64::NAN),
+            ));
+            row.tracked = "tracked".into();
+        }
+        101 => row.tracked = "panic (fit)".into(),
+        _ => row.tracked = format!("fit refused: {}", err.trim().trim_start_matches("error: ")),
+    }
+    row
+}
+
+/// The looks table of BENCHMARKS.md: `LOOKS` random full-size looks (480p–1080p, ≤ 150
+/// frames, H.264 at their crf or 18) tracked and fitted, a row each and a summary,
+/// written to `target/tmp/video_looks/table.md`:
+/// `LOOKS=100 cargo test --release --test it video_looks::looks_table -- --ignored --nocapture`.
+#[test]
+#[ignore = "the big run: minutes per dozen looks"]
+fn looks_table() {
+    if !crate::video::ffmpeg() {
+        return;
+    }
+    let n: u64 = std::env::var("LOOKS").ok().and_then(|v| v.parse().ok()).unwrap_or(100);
+    let first: u64 = std::env::var("LOOKS_FROM").ok().and_then(|v| v.parse().ok()).unwrap_or(0);
+    let scene = paper_scene();
+    let truth = scene.mu;
+    let root = crate::common::scratch_root("video_looks");
+    std::fs::create_dir_all(&root).unwrap();
+    let mut text = String::from(
+        "| seed | look | tracked | centre RMS px | mark RMS px | scale − truth (its ±) | μ_k ± vs truth |\n|---|---|---|---|---|---|---|\n",
+    );
+    let (mut good, mut wrong1, mut wrong2, mut panics, mut refused) = (0, 0, 0, 0, 0);
+    let (mut c_all, mut m_all) = ((0.0, 0), (0.0, 0));
+    for seed in first..first + n {
+        let clip = looks::random(&scene, seed, Size::Full);
+        let dir = scratch_dir("video_looks", "run");
+        let row = measure(&dir, &clip);
+        let rms = |(s, n): (f64, usize)| {
+            if n == 0 { "–".to_string() } else { format!("{:.2}", (s / n as f64).sqrt()) }
+        };
+        let ok = row.mu.is_some_and(|(m, se)| (m - truth).abs() <= se.max(0.015));
+        good += usize::from(ok);
+        panics += usize::from(row.tracked.starts_with("panic"));
+        refused += usize::from(row.tracked.contains("refused"));
+        if let Some(z) = row.scale_z {
+            wrong1 += usize::from(z.abs() > 1.0);
+            wrong2 += usize::from(z.abs() > 2.0);
+        }
+        if row.tracked == "tracked" {
+            c_all = (c_all.0 + row.centre.0, c_all.1 + row.centre.1);
+            m_all = (m_all.0 + row.mark.0, m_all.1 + row.mark.1);
+        }
+        let line = format!(
+            "| {seed} | {} | {} | {} | {} | {} | {} |\n",
+            row.name,
+            row.tracked.chars().take(90).collect::<String>().replace('|', "/"),
+            rms(row.centre),
+            rms(row.mark),
+            row.scale_z.map(|z| format!("{z:+.1} ±")).unwrap_or("–".into()),
+            row.mu
+                .map(|(m, se)| format!("{m:.3} ± {se:.3} ({}{:.3})", if ok { "✓ " } else { "✗ " }, m - truth))
+                .unwrap_or("–".into()),
+        );
+        print!("{line}");
+        text += &line;
+        std::fs::write(root.join("table.md"), &text).unwrap();
+    }
+    let pct = |k: usize| 100.0 * k as f64 / n as f64;
+    let summary = format!(
+        "\n{n} looks: {good} ({:.0} %) tracked to μ_k within max(0.015, ±) of the truth; {refused} refused; \
+         scales beyond ± {wrong1} (beyond 2 ± {wrong2}); panics {panics}; \
+         centre RMS {:.2} px, mark RMS {:.2} px (over the looks fitted)\n",
+        pct(good),
+        (c_all.0 / c_all.1.max(1) as f64).sqrt(),
+        (m_all.0 / m_all.1.max(1) as f64).sqrt(),
+    );
+    print!("{summary}");
+    text += &summary;
+    std::fs::write(root.join("table.md"), &text).unwrap();
+}
