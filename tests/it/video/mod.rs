@@ -1,0 +1,7 @@
+//! Videos: tracking balls against truth, random looks, the overlay, and a video given
+//! as `--data` everywhere.
+
+pub(crate) mod app;
+pub(crate) mod looks;
+pub(crate) mod overlay;
+pub(crate) mod tracking;
