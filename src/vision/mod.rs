@@ -6,16 +6,21 @@
 //! (`write`), with small pictures of the frames for the app (`thumbs`); and synthetic videos of exactly solved scenes (`render`). Pure: the
 //! frames come from `input::video`.
 
+pub mod background;
 pub mod circle;
 pub mod detect;
+pub mod frame;
 pub mod gray;
 pub mod mark;
+pub mod params;
 pub mod render;
 pub mod thumbs;
 pub mod tracker;
 pub mod tracks;
 pub mod write;
 
+pub use frame::Frame;
 pub use gray::Gray;
-pub use tracker::Tracker;
+pub use params::{Params, Roi};
+pub use tracker::{Tracker, track};
 pub use tracks::{Tracks, TracksError, tracks};

@@ -158,7 +158,18 @@ impl Film {
         out
     }
 
-    /// Frame `k` as the tracker sees it (the luma of [`Film::rgb`]).
+    /// Frame `k` as an RGB picture.
+    pub fn image(&self, k: usize) -> image::RgbImage {
+        let (w, h) = (self.look.width as u32, self.look.height as u32);
+        image::RgbImage::from_raw(w, h, self.rgb(k)).unwrap_or_else(|| image::RgbImage::new(w, h))
+    }
+
+    /// Frame `k` as the tracker takes it (from [`Film::image`]).
+    pub fn frame(&self, k: usize) -> super::frame::Frame {
+        super::frame::Frame::from_rgb(&self.image(k))
+    }
+
+    /// Frame `k`'s luma (of [`Film::rgb`], full range).
     pub fn gray(&self, k: usize) -> Gray {
         let rgb = self.rgb(k);
         let data = rgb

@@ -120,7 +120,7 @@ pub fn tracks(
     if slots.is_empty() {
         return Err(TracksError::NoBall {
             frames: c.frames,
-            min_radius: tracker.min_radius,
+            min_radius: tracker.params.min_radius,
         });
     }
     let centres: Vec<Vec<[f64; 2]>> = (0..2).map(|s| centres_of(tracker, s)).collect();
