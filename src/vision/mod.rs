@@ -6,6 +6,10 @@
 //! (`write`), with small pictures of the frames for the app (`thumbs`); and synthetic videos of exactly solved scenes (`render`). Pure: the
 //! frames come from `input::video`.
 
+/// The tracker's own version: raised whenever a change makes it find other numbers
+/// in the same video (cached tracks are keyed by it, not by the program's version).
+pub const VERSION: u32 = 2;
+
 pub mod background;
 pub mod circle;
 pub mod detect;
