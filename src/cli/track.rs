@@ -5,7 +5,7 @@
 
 use serde::Serialize;
 
-use super::args::SceneArgs;
+use super::args::{DataArgs, SceneArgs};
 use super::error::CliError;
 use super::progress::Bar;
 use super::track_args::{TrackArgs, TrackOutput};
@@ -33,13 +33,9 @@ struct TrackJson<'a> {
     notes: &'a [String],
 }
 
-/// Runs `track`; `scale` is `--scale`, the length one pixel shows (m), `fps` `--fps`.
-pub fn run(
-    scene: &SceneArgs,
-    scale: Option<f64>,
-    fps: Option<f64>,
-    args: &TrackArgs,
-) -> Result<String, CliError> {
+/// Runs `track`; of the data options it reads `--scale` (the length one pixel
+/// shows), `--fps`, `--roi` and `--ball-at`.
+pub fn run(scene: &SceneArgs, data: &DataArgs, args: &TrackArgs) -> Result<String, CliError> {
     if let Some(path) = &args.output {
         crate::output::check_output(path)?;
     }
@@ -48,7 +44,7 @@ pub fn run(
         overlay::kind(path)?;
         crate::output::check_output(path)?;
     }
-    let options = options(scene, fps, scale)?;
+    let options = options(scene, data)?;
     let bar = Bar::new("frames", true);
     let done = tracked::track(&args.video, &options, &bar).map_err(CliError::from);
     bar.finish();
@@ -102,12 +98,9 @@ pub fn run(
 }
 
 /// What `track` (and `--data VIDEO`) asks of the tracking: R from the scene options,
-/// `fps` and `scale` (the length a pixel shows, m) as given.
-pub fn options(
-    scene: &SceneArgs,
-    fps: Option<f64>,
-    scale: Option<f64>,
-) -> Result<Options, CliError> {
+/// `--fps`, `--scale` (the length a pixel shows, m), `--roi` and `--ball-at` as given.
+pub fn options(scene: &SceneArgs, data: &DataArgs) -> Result<Options, CliError> {
+    let (fps, scale) = (data.fps, data.scale);
     let (preset, s, _) = scene.resolve()?;
     let radius_from = if scene.values.get(Key::Radius).is_some() {
         "--radius".to_string()
@@ -120,7 +113,7 @@ pub fn options(
         px_per_m: scale.map(|l| 1.0 / l),
         radius_from,
         cache: crate::input::video::cache::user_folder(),
-        roi: None,
-        ball_at: None,
+        roi: data.roi,
+        ball_at: data.ball_at,
     })
 }

@@ -7,16 +7,25 @@
 //! (`overlay`). Pure: the frames come from `input::video`. The synthetic
 //! films that test it are test support (`tests/support/film`).
 
+/// The tracker's own version: raised whenever a change makes it find other numbers
+/// in the same video (cached tracks are keyed by it, not by the program's version).
+pub const VERSION: u32 = 2;
+
+pub mod background;
 pub mod circle;
 pub mod detect;
+pub mod frame;
 pub mod gray;
 pub mod mark;
 pub mod overlay;
+pub mod params;
 pub mod thumbs;
 pub mod tracker;
 pub mod tracks;
 pub mod write;
 
+pub use frame::Frame;
 pub use gray::Gray;
-pub use tracker::Tracker;
+pub use params::{Params, Roi};
+pub use tracker::{Tracker, track};
 pub use tracks::{Tracks, TracksError, tracks};

@@ -10,6 +10,7 @@ use image::RgbImage;
 use super::tracked::Tracked;
 use super::write::{self, Encoding};
 use super::{Limits, VideoError, VideoProblem};
+use crate::vision::Frame;
 use crate::vision::overlay::{self, Found};
 use crate::vision::thumbs::VideoView;
 
@@ -128,8 +129,24 @@ pub fn write_overlay(video: &Path, done: &Tracked, file: &Path) -> Result<(), Vi
     }
 }
 
-/// A luma frame as grey RGB.
-fn to_rgb(img: &crate::vision::Gray) -> RgbImage {
-    let data = img.data.iter().flat_map(|&v| [v, v, v]).collect();
-    RgbImage::from_raw(img.width as u32, img.height as u32, data).expect("sized")
+/// A decoded frame (yuv420p, BT.601 video range) as RGB, as a player shows it.
+fn to_rgb(f: &Frame) -> RgbImage {
+    let (w, h) = (f.width(), f.height());
+    let mut out = Vec::with_capacity(3 * w * h);
+    for y in 0..h {
+        for x in 0..w {
+            let j = (y / 2) * f.chroma_width + x / 2;
+            let l = (f32::from(f.luma.data[y * w + x]) - 16.0) * 255.0 / 219.0;
+            let cb = (f32::from(f.u.get(j).copied().unwrap_or(128)) - 128.0) * 255.0 / 224.0;
+            let cr = (f32::from(f.v.get(j).copied().unwrap_or(128)) - 128.0) * 255.0 / 224.0;
+            for c in [
+                l + 1.402 * cr,
+                l - 0.344_136 * cb - 0.714_136 * cr,
+                l + 1.772 * cb,
+            ] {
+                out.push(c.round().clamp(0.0, 255.0) as u8);
+            }
+        }
+    }
+    RgbImage::from_raw(w as u32, h as u32, out).expect("sized")
 }

@@ -251,7 +251,12 @@ impl Film {
         RgbImage::from_raw(l.width as u32, l.height as u32, out).expect("sized")
     }
 
-    /// Frame `k` as luma (BT.601 of [`Film::rgb`]).
+    /// Frame `k` as the tracker takes it (from [`Film::image`]).
+    pub fn frame(&self, k: usize) -> groovelab::vision::Frame {
+        groovelab::vision::Frame::from_rgb(&self.image(k))
+    }
+
+    /// Frame `k`'s luma (BT.601 of [`Film::rgb`], full range).
     pub fn gray(&self, k: usize) -> Gray {
         let rgb = self.rgb(k);
         let data = rgb
