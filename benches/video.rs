@@ -8,9 +8,9 @@
 use std::path::Path;
 
 use criterion::{Criterion, criterion_group, criterion_main};
+use film::{Film, Look, Truth};
 use groovelab::input::video::{tracked, write};
 use groovelab::physics::scene::Scene;
-use film::{Film, Look, Truth};
 use groovelab::study::Quiet;
 use groovelab::vision;
 

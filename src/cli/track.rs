@@ -9,8 +9,8 @@ use super::args::{DataArgs, SceneArgs};
 use super::error::CliError;
 use super::progress::Bar;
 use super::track_args::{TrackArgs, TrackOutput};
-use crate::input::video::{RateSource, overlay};
 use crate::input::video::tracked::{self, Options, Tracked};
+use crate::input::video::{RateSource, overlay};
 use crate::settings::params::Key;
 use crate::vision::tracks::{BallTrack, Calibration};
 

@@ -200,8 +200,8 @@ pub fn tracks(
         let c = &centres[s];
         let across = |p: &[f64; 2]| p[0] * n.0 + p[1] * n.1;
         let mean = c.iter().map(across).sum::<f64>() / c.len() as f64;
-        let rms = (c.iter().map(|p| (across(p) - mean).powi(2)).sum::<f64>() / c.len() as f64)
-            .sqrt();
+        let rms =
+            (c.iter().map(|p| (across(p) - mean).powi(2)).sum::<f64>() / c.len() as f64).sqrt();
         if rms > tracker.params.max_across * r_px {
             return Err(TracksError::Swings {
                 name,

@@ -21,10 +21,7 @@ enum Outcome {
     /// `track` or `fit` refused it in one line, exit status 2: the line.
     Refused(String),
     /// Tracked: the scale and its ± (px/m), and μ_k and its ± from `fit`.
-    Fitted {
-        scale: (f64, f64),
-        mu: (f64, f64),
-    },
+    Fitted { scale: (f64, f64), mu: (f64, f64) },
     /// Tracked, its scale said, and then `fit` refused the tracks (exit 2): the line.
     Unfitted { scale: (f64, f64), line: String },
 }
@@ -225,12 +222,22 @@ fn assert_ball_drawn(film: &Film, name: &str) {
     for dy in -(r as i64) / 2..0 {
         for dx in -(r as i64) / 2..(r as i64) / 2 {
             let (x, y) = (t.centre.0 as i64 + dx, t.centre.1 as i64 + dy);
-            let (a, b) = (full.get_pixel(x as u32, y as u32), bare.get_pixel(x as u32, y as u32));
-            diff += (0..3).map(|c| (f64::from(a[c]) - f64::from(b[c])).abs()).sum::<f64>() / 3.0;
+            let (a, b) = (
+                full.get_pixel(x as u32, y as u32),
+                bare.get_pixel(x as u32, y as u32),
+            );
+            diff += (0..3)
+                .map(|c| (f64::from(a[c]) - f64::from(b[c])).abs())
+                .sum::<f64>()
+                / 3.0;
             n += 1;
         }
     }
-    assert!(diff / n as f64 > 3.0, "{name}: the ball is not drawn ({})", diff / n as f64);
+    assert!(
+        diff / n as f64 > 3.0,
+        "{name}: the ball is not drawn ({})",
+        diff / n as f64
+    );
 }
 
 /// Writes the first frame of 12 random looks of each size as PNGs into
@@ -293,9 +300,8 @@ fn measure(dir: &Path, clip: &Clip) -> Row {
         scale_z: None,
         mu: None,
     };
-    let done = std::panic::catch_unwind(|| {
-        tracked::track(&path, &options, &groovelab::study::Quiet)
-    });
+    let done =
+        std::panic::catch_unwind(|| tracked::track(&path, &options, &groovelab::study::Quiet));
     let done = match done {
         Err(_) => {
             row.tracked = "panic".into();
@@ -317,11 +323,17 @@ fn measure(dir: &Path, clip: &Clip) -> Row {
             let d = |t: &crate::film::Truth| {
                 (t.centre.0 - f64::from(p.0)).hypot(t.centre.1 - f64::from(p.1))
             };
-            let t = if d(&truth[0]) <= d(&truth[1]) { truth[0] } else { truth[1] };
+            let t = if d(&truth[0]) <= d(&truth[1]) {
+                truth[0]
+            } else {
+                truth[1]
+            };
             row.centre.0 += d(&t).powi(2);
             row.centre.1 += 1;
             if let Some(m) = mark {
-                row.mark.0 += (t.mark.0 - f64::from(m.0)).hypot(t.mark.1 - f64::from(m.1)).powi(2);
+                row.mark.0 += (t.mark.0 - f64::from(m.0))
+                    .hypot(t.mark.1 - f64::from(m.1))
+                    .powi(2);
                 row.mark.1 += 1;
             }
         }
@@ -331,8 +343,15 @@ fn measure(dir: &Path, clip: &Clip) -> Row {
     let (code, out, err) = run(
         dir,
         &[
-            "fit", "--data", tracks.to_str().unwrap(), "--radius", "2.75cm", "--width", "4.9cm",
-            "--format", "json",
+            "fit",
+            "--data",
+            tracks.to_str().unwrap(),
+            "--radius",
+            "2.75cm",
+            "--width",
+            "4.9cm",
+            "--format",
+            "json",
         ],
     );
     match code {
@@ -361,8 +380,14 @@ fn looks_table() {
     if !crate::video::tracking::ffmpeg() {
         return;
     }
-    let n: u64 = std::env::var("LOOKS").ok().and_then(|v| v.parse().ok()).unwrap_or(100);
-    let first: u64 = std::env::var("LOOKS_FROM").ok().and_then(|v| v.parse().ok()).unwrap_or(0);
+    let n: u64 = std::env::var("LOOKS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(100);
+    let first: u64 = std::env::var("LOOKS_FROM")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(0);
     let scene = paper_scene();
     let truth = scene.mu;
     let root = crate::common::scratch_root("video_looks");
@@ -377,9 +402,15 @@ fn looks_table() {
         let dir = scratch_dir("video_looks", "run");
         let row = measure(&dir, &clip);
         let rms = |(s, n): (f64, usize)| {
-            if n == 0 { "–".to_string() } else { format!("{:.2}", (s / n as f64).sqrt()) }
+            if n == 0 {
+                "–".to_string()
+            } else {
+                format!("{:.2}", (s / n as f64).sqrt())
+            }
         };
-        let ok = row.mu.is_some_and(|(m, se)| (m - truth).abs() <= se.max(0.015));
+        let ok = row
+            .mu
+            .is_some_and(|(m, se)| (m - truth).abs() <= se.max(0.015));
         good += usize::from(ok);
         panics += usize::from(row.tracked.starts_with("panic"));
         refused += usize::from(row.tracked.contains("refused"));
@@ -394,12 +425,22 @@ fn looks_table() {
         let line = format!(
             "| {seed} | {} | {} | {} | {} | {} | {} |\n",
             row.name,
-            row.tracked.chars().take(90).collect::<String>().replace('|', "/"),
+            row.tracked
+                .chars()
+                .take(90)
+                .collect::<String>()
+                .replace('|', "/"),
             rms(row.centre),
             rms(row.mark),
-            row.scale_z.map(|z| format!("{z:+.1} ±")).unwrap_or("–".into()),
+            row.scale_z
+                .map(|z| format!("{z:+.1} ±"))
+                .unwrap_or("–".into()),
             row.mu
-                .map(|(m, se)| format!("{m:.3} ± {se:.3} ({}{:.3})", if ok { "✓ " } else { "✗ " }, m - truth))
+                .map(|(m, se)| format!(
+                    "{m:.3} ± {se:.3} ({}{:.3})",
+                    if ok { "✓ " } else { "✗ " },
+                    m - truth
+                ))
                 .unwrap_or("–".into()),
         );
         print!("{line}");

@@ -40,9 +40,9 @@ fn run(args: &[&str]) -> (i32, String, String) {
 /// True when the pixel is one of the drawing's colours (within 40 levels a channel:
 /// the anti-aliased edge blends it with the frame).
 fn drawn(p: &image::Rgb<u8>) -> bool {
-    COLOURS.iter().any(|c| {
-        (0..3).all(|i| (i32::from(p[i]) - i32::from(c[i])).abs() <= 40)
-    })
+    COLOURS
+        .iter()
+        .any(|c| (0..3).all(|i| (i32::from(p[i]) - i32::from(c[i])).abs() <= 40))
 }
 
 /// The share of 36 directions over the upper half of the circle of radius `r` about
@@ -93,7 +93,10 @@ fn the_overlay_sheet_draws_each_outline_on_its_ball() {
     let shown: Vec<usize> = (0..12).map(|i| i * 29 / 11).collect();
     let mut checked = 0;
     for (tile, &k) in shown.iter().enumerate() {
-        let (ox, oy) = (4.0 + 324.0 * (tile % 4) as f64, 4.0 + 184.0 * (tile / 4) as f64);
+        let (ox, oy) = (
+            4.0 + 324.0 * (tile % 4) as f64,
+            4.0 + 184.0 * (tile / 4) as f64,
+        );
         let truth = film.truth(k);
         // Balls apart by more than a radius (at the impact neither is measured).
         let gap = (truth[0].centre.0 - truth[1].centre.0).abs() - 2.0 * truth[0].radius;
@@ -106,11 +109,17 @@ fn the_overlay_sheet_draws_each_outline_on_its_ball() {
             // On the ball's outline: drawn nearly all round (within 1.5 px: the fitted
             // radius and centre are within a few tenths of a pixel of the truth).
             let on = drawn_share(&img, c, r, 1.5);
-            assert!(on >= 0.9, "frame {k}: outline drawn in {on:.2} of the directions");
+            assert!(
+                on >= 0.9,
+                "frame {k}: outline drawn in {on:.2} of the directions"
+            );
             // Well inside and well outside: not drawn (the mark's ring reaches 0.7 R).
             for f in [0.8, 1.35] {
                 let off = drawn_share(&img, c, f * r, 0.0);
-                assert!(off <= 0.1, "frame {k}: drawn at {f} R in {off:.2} of the directions");
+                assert!(
+                    off <= 0.1,
+                    "frame {k}: drawn at {f} R in {off:.2} of the directions"
+                );
             }
             checked += 1;
         }
@@ -141,7 +150,10 @@ fn a_bad_overlay_name_is_refused_in_one_line_before_tracking() {
         ]);
         assert_eq!(code, 2, "{err}");
         let line = err.trim();
-        assert!(line.starts_with("error: ") && line.lines().count() == 1, "{err}");
+        assert!(
+            line.starts_with("error: ") && line.lines().count() == 1,
+            "{err}"
+        );
         assert!(line.contains(says), "{line}");
         assert!(!file.exists());
     }

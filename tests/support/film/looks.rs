@@ -30,9 +30,7 @@ pub struct Clip {
 }
 
 /// The kinds of ball.
-const BALLS: [&str; 6] = [
-    "white", "black", "steel", "wooden", "glossy", "coloured",
-];
+const BALLS: [&str; 6] = ["white", "black", "steel", "wooden", "glossy", "coloured"];
 
 /// The kinds of wall.
 const TEXTURES: [&str; 6] = ["plain", "grain", "stripes", "checker", "wood", "clutter"];
@@ -81,7 +79,11 @@ pub fn random(scene: &Scene, seed: u64, size: Size) -> Clip {
         Size::Full => 150.0,
     };
     let to = from + (most / fps).min(g.range(0.5, 0.9));
-    let tilt_deg = if g.chance(0.4) { g.range(-4.0, 4.0) } else { 0.0 };
+    let tilt_deg = if g.chance(0.4) {
+        g.range(-4.0, 4.0)
+    } else {
+        0.0
+    };
 
     // Frame the balls' travel: the scale no larger than fits it.
     let (lo, hi) = extent(scene, from, to);
@@ -153,7 +155,11 @@ pub fn random(scene: &Scene, seed: u64, size: Size) -> Clip {
     let mark = if dark_mark {
         g.pick(&[[20.0, 20.0, 22.0], [90.0, 10.0, 10.0], [10.0, 20.0, 80.0]])
     } else {
-        g.pick(&[[250.0, 250.0, 245.0], [250.0, 230.0, 60.0], [120.0, 240.0, 255.0]])
+        g.pick(&[
+            [250.0, 250.0, 245.0],
+            [250.0, 230.0, 60.0],
+            [120.0, 240.0, 255.0],
+        ])
     };
     words.push(format!("{} mark", if dark_mark { "dark" } else { "light" }));
 
@@ -228,7 +234,12 @@ pub fn random(scene: &Scene, seed: u64, size: Size) -> Clip {
     }
     if g.chance(0.3) {
         for s in &mut light.spots {
-            *s = (g.unit(), g.range(0.1, 0.9), g.range(0.1, 0.4), g.range(0.2, 0.5));
+            *s = (
+                g.unit(),
+                g.range(0.1, 0.9),
+                g.range(0.1, 0.4),
+                g.range(0.2, 0.5),
+            );
         }
         words.push("spots".into());
     }
@@ -328,7 +339,11 @@ pub fn clutter(look: &Look) -> Vec<Shape> {
             let a = g.range(0.3, 1.4) * r;
             Shape {
                 centre: (g.range(0.0, w), g.range(0.0, h)),
-                size: if disc { (a, a) } else { (a, g.range(0.3, 1.4) * r) },
+                size: if disc {
+                    (a, a)
+                } else {
+                    (a, g.range(0.3, 1.4) * r)
+                },
                 disc,
                 colour: hsv(g.unit(), g.range(0.0, 0.9), g.range(20.0, 245.0)),
             }

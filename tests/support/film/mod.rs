@@ -242,7 +242,11 @@ impl Film {
         let mut out = Vec::with_capacity(img.len() * 3);
         for px in img {
             // Sensor noise, the same on the three channels (as in luma).
-            let n = if l.noise > 0.0 { l.noise * noise.gauss() } else { 0.0 };
+            let n = if l.noise > 0.0 {
+                l.noise * noise.gauss()
+            } else {
+                0.0
+            };
             for c in 0..3 {
                 let v = (f64::from(px[c]) + n) * tint[c];
                 out.push(v.round().clamp(0.0, 255.0) as u8);
@@ -303,12 +307,19 @@ impl Film {
         let balls = if l.both { 2 } else { 1 };
         for t in self.truth(k).iter().take(balls) {
             let r = t.radius;
-            let (cx, cy) = (t.centre.0 + cast.offset.0 * r, t.centre.1 + cast.offset.1 * r);
+            let (cx, cy) = (
+                t.centre.0 + cast.offset.0 * r,
+                t.centre.1 + cast.offset.1 * r,
+            );
             let (rx, ry) = (1.1 * r, 0.9 * r);
             let soft = (cast.blur * r).max(0.5);
             let reach = rx + 2.0 * soft;
-            for y in ((cy - reach).floor() as isize).max(0)..=((cy + reach).ceil() as isize).min(h - 1) {
-                for x in ((cx - reach).floor() as isize).max(0)..=((cx + reach).ceil() as isize).min(w - 1) {
+            for y in
+                ((cy - reach).floor() as isize).max(0)..=((cy + reach).ceil() as isize).min(h - 1)
+            {
+                for x in ((cx - reach).floor() as isize).max(0)
+                    ..=((cx + reach).ceil() as isize).min(w - 1)
+                {
                     let (dx, dy) = ((x as f64 - cx) / rx, (y as f64 - cy) / ry);
                     // Distance outside the ellipse, px (approximately).
                     let d = (dx.hypot(dy) - 1.0) * r;

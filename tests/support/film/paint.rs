@@ -43,16 +43,30 @@ pub enum Finish {
 pub enum Texture {
     Plain,
     /// Fixed grain of `amp` levels (standard deviation).
-    Grain { amp: f64 },
+    Grain {
+        amp: f64,
+    },
     /// Stripes of `period` px at `angle` degrees, the colour scaled by 1 ± `amp`.
-    Stripes { period: f64, angle: f64, amp: f64 },
+    Stripes {
+        period: f64,
+        angle: f64,
+        amp: f64,
+    },
     /// Squares of `size` px, alternately the wall colour and `other`.
-    Checker { size: f64, other: Rgb },
+    Checker {
+        size: f64,
+        other: Rgb,
+    },
     /// Wood grain: wavy bands of `period` px, darker by up to `amp` (0–1).
-    Wood { period: f64, amp: f64 },
+    Wood {
+        period: f64,
+        amp: f64,
+    },
     /// `count` other shapes (discs of about the balls' size and smaller, boxes) in
     /// colours of their own, seeded.
-    Clutter { count: usize },
+    Clutter {
+        count: usize,
+    },
 }
 
 /// The light over the whole picture (wall, balls and rail alike), a factor per pixel.
