@@ -37,12 +37,14 @@ fn run(args: &[&str]) -> (i32, String, String) {
     )
 }
 
-/// True when the pixel is one of the drawing's colours (within 40 levels a channel:
-/// the anti-aliased edge blends it with the frame).
+/// True when the pixel has the hue of one of the drawing's colours (yellow: red and
+/// green well above blue; cyan: green and blue well above red): the anti-aliased edge
+/// blends them with the black halo and the frame, which is grey.
 fn drawn(p: &image::Rgb<u8>) -> bool {
-    COLOURS
-        .iter()
-        .any(|c| (0..3).all(|i| (i32::from(p[i]) - i32::from(c[i])).abs() <= 40))
+    let [r, g, b] = p.0.map(i32::from);
+    let yellow = r > b + 60 && g > b + 60;
+    let cyan = g > r + 60 && b > r + 60;
+    yellow || cyan
 }
 
 /// The share of 36 directions over the upper half of the circle of radius `r` about
@@ -87,6 +89,8 @@ fn the_overlay_sheet_draws_each_outline_on_its_ball() {
     ]);
     assert_eq!(code, 0, "{err}");
     assert!(out.contains("wrote the overlay "), "{out}");
+    // The hue test knows the drawing's colours.
+    assert!(COLOURS.iter().all(|c| drawn(&image::Rgb(*c))));
     let img = image::open(&sheet).unwrap().to_rgb8();
     // 12 tiles of 320×180 (not shrunk: narrower than 480 px), 4 to a row, 4 px apart.
     assert_eq!((img.width(), img.height()), (4 + 4 * 324, 4 + 3 * 184));
