@@ -163,7 +163,7 @@ pub fn tracks(
     // Never a confident wrong scale: radii that disagree are no ball's (the mark, a
     // highlight or clutter taken for one in part of the frames).
     let spread = 1.4826 * dev.get(dev.len() / 2).copied().unwrap_or(0.0) / r_px;
-    if scale.is_none() && !(spread <= MAX_RADIUS_SPREAD) {
+    if scale.is_none() && (spread.is_nan() || spread > MAX_RADIUS_SPREAD) {
         return Err(TracksError::RadiiDisagree {
             median_px: r_px,
             scatter: spread,
