@@ -87,6 +87,50 @@ pub struct DataArgs {
     #[arg(long, value_name = "F", global = true, allow_negative_numbers = true,
           value_parser = super::track_args::positive("frames per second", 1e5))]
     pub fps: Option<f64>,
+    /// Where the tracker looks in a video (`track`, `--data VIDEO`): a rectangle of
+    /// the frame in pixels, X,Y,W,H from the top-left corner (e.g. 0,300,1920,250:
+    /// only the groove) [default: the whole frame].
+    #[arg(long, value_name = "X,Y,W,H", value_parser = roi, global = true)]
+    pub roi: Option<crate::vision::Roi>,
+    /// A point on one ball in the video's first frame, pixels X,Y from the top-left
+    /// corner (`track`, `--data VIDEO`): the tracker's seed, the ball's radius taken
+    /// from it [default: the balls found by themselves].
+    #[arg(long, value_name = "X,Y", value_parser = ball_at, global = true)]
+    pub ball_at: Option<(f64, f64)>,
+}
+
+/// Pixel numbers separated by commas: `n` of them, each finite and ≥ 0.
+fn pixels(text: &str, n: usize) -> Option<Vec<f64>> {
+    let v: Vec<f64> = text
+        .split(',')
+        .map(|p| p.trim().parse::<f64>())
+        .collect::<Result<_, _>>()
+        .ok()?;
+    (v.len() == n && v.iter().all(|x| x.is_finite() && *x >= 0.0 && *x <= 1e5)).then_some(v)
+}
+
+fn roi(text: &str) -> Result<crate::vision::Roi, ArgError> {
+    let bad = || ArgError::Roi {
+        text: text.to_string(),
+    };
+    match pixels(text, 4).as_deref() {
+        Some(&[x, y, width, height]) if width >= 1.0 && height >= 1.0 => Ok(crate::vision::Roi {
+            x,
+            y,
+            width,
+            height,
+        }),
+        _ => Err(bad()),
+    }
+}
+
+fn ball_at(text: &str) -> Result<(f64, f64), ArgError> {
+    match pixels(text, 2).as_deref() {
+        Some(&[x, y]) => Ok((x, y)),
+        _ => Err(ArgError::BallAt {
+            text: text.to_string(),
+        }),
+    }
 }
 
 /// What a named track of a position file holds.
@@ -121,6 +165,16 @@ pub enum ArgError {
         clip(text)
     )]
     NotAPixel { text: String },
+    #[error(
+        "'{}' is not a rectangle of the frame, expected X,Y,W,H in pixels such as 0,300,1920,250 (X, Y ≥ 0; W, H ≥ 1)",
+        clip(text)
+    )]
+    Roi { text: String },
+    #[error(
+        "'{}' is not a point of the frame, expected X,Y in pixels such as 640,330 (both ≥ 0)",
+        clip(text)
+    )]
+    BallAt { text: String },
     #[error(transparent)]
     Unit(#[from] UnitError),
 }

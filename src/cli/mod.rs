@@ -80,9 +80,7 @@ pub fn run(cli: &Cli) -> Result<Response, CliError> {
         })
         .map(Response::Print),
         Some(Command::Sweep(args)) => sweep::run(&cli.scene, args).map(Response::Print),
-        Some(Command::Track(args)) => {
-            track::run(&cli.scene, cli.data.scale, cli.data.fps, args).map(Response::Print)
-        }
+        Some(Command::Track(args)) => track::run(&cli.scene, &cli.data, args).map(Response::Print),
         Some(Command::Data(args)) => data::run(args, &cli.scene, &cli.data).map(Response::Print),
         Some(Command::Presets) => Ok(Response::Print(presets())),
         Some(Command::Completions { shell }) => Ok(Response::Print(manual::completions(*shell))),
@@ -123,6 +121,8 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         ("scale", d.scale.is_some()),
         ("window", d.window.is_some()),
         ("fps", d.fps.is_some()),
+        ("roi", d.roi.is_some()),
+        ("ball_at", d.ball_at.is_some()),
     ];
     let scene_given = cli
         .scene
@@ -130,9 +130,12 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         .as_ref()
         .map(|_| "preset")
         .or_else(|| cli.scene.values.given().next().map(|(k, _)| k.param().name));
-    // `track` reads --scale (the length a pixel shows) and --fps, its only data options.
-    let track_scale =
-        |id: &str| matches!(id, "scale" | "fps") && matches!(cli.command, Some(Command::Track(_)));
+    // `track` reads --scale (the length a pixel shows), --fps, --roi and --ball-at,
+    // its only data options.
+    let track_scale = |id: &str| {
+        matches!(id, "scale" | "fps" | "roi" | "ball_at")
+            && matches!(cli.command, Some(Command::Track(_)))
+    };
     let data_flag = data_given
         .iter()
         .find(|(id, g)| *g && !track_scale(id))
@@ -175,6 +178,16 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
             && !d.data.iter().any(|p| video_data::is_video(p)) =>
         {
             unused("fps", "track, and --data VIDEO or a folder of frames")
+        }
+        // --roi and --ball-at are the tracker's: a data file is tracked already.
+        _ if (d.roi.is_some() || d.ball_at.is_some())
+            && !matches!(cli.command, Some(Command::Track(_) | Command::Data(_)))
+            && !d.data.iter().any(|p| video_data::is_video(p)) =>
+        {
+            unused(
+                if d.roi.is_some() { "roi" } else { "ball_at" },
+                "track, and --data VIDEO or a folder of frames",
+            )
         }
         _ => return Ok(()),
     };

@@ -5,12 +5,12 @@
 
 use serde::Serialize;
 
-use super::args::SceneArgs;
+use super::args::{DataArgs, SceneArgs};
 use super::error::CliError;
 use super::progress::Bar;
 use super::track_args::{TrackArgs, TrackOutput};
-use crate::input::video::RateSource;
 use crate::input::video::tracked::{self, Options, Tracked};
+use crate::input::video::{RateSource, overlay};
 use crate::settings::params::Key;
 use crate::vision::tracks::{BallTrack, Calibration};
 
@@ -33,21 +33,29 @@ struct TrackJson<'a> {
     notes: &'a [String],
 }
 
-/// Runs `track`; `scale` is `--scale`, the length one pixel shows (m), `fps` `--fps`.
-pub fn run(
-    scene: &SceneArgs,
-    scale: Option<f64>,
-    fps: Option<f64>,
-    args: &TrackArgs,
-) -> Result<String, CliError> {
+/// Runs `track`; of the data options it reads `--scale` (the length one pixel
+/// shows), `--fps`, `--roi` and `--ball-at`.
+pub fn run(scene: &SceneArgs, data: &DataArgs, args: &TrackArgs) -> Result<String, CliError> {
     if let Some(path) = &args.output {
         crate::output::check_output(path)?;
     }
-    let options = options(scene, fps, scale)?;
+    // A bad overlay name is refused before the tracking, not after it.
+    if let Some(path) = &args.overlay {
+        overlay::kind(path)?;
+        crate::output::check_output(path)?;
+    }
+    let options = options(scene, data)?;
     let bar = Bar::new("frames", true);
     let done = tracked::track(&args.video, &options, &bar).map_err(CliError::from);
     bar.finish();
     let done: Tracked = done?.ok_or(CliError::Interrupted)?;
+    let drawn = match &args.overlay {
+        Some(path) => {
+            overlay::write_overlay(&args.video, &done, path)?;
+            format!("wrote the overlay {}\n", path.display())
+        }
+        None => String::new(),
+    };
     let text = match args.format {
         TrackOutput::Tracker => done.text(),
         TrackOutput::Json => {
@@ -73,11 +81,16 @@ pub fn run(
         }
     };
     match &args.output {
-        None => Ok(text),
+        None => {
+            // Stdout holds the tracks: the overlay's line goes beside the progress.
+            eprint!("{drawn}");
+            Ok(text)
+        }
         Some(path) => {
             crate::signals::watch();
             crate::output::write_atomically(path, text.as_bytes())?;
             let mut out: String = done.notes.iter().map(|n| format!("{n}\n")).collect();
+            out += &drawn;
             out += &format!("wrote {}\n", path.display());
             Ok(out)
         }
@@ -85,12 +98,9 @@ pub fn run(
 }
 
 /// What `track` (and `--data VIDEO`) asks of the tracking: R from the scene options,
-/// `fps` and `scale` (the length a pixel shows, m) as given.
-pub fn options(
-    scene: &SceneArgs,
-    fps: Option<f64>,
-    scale: Option<f64>,
-) -> Result<Options, CliError> {
+/// `--fps`, `--scale` (the length a pixel shows, m), `--roi` and `--ball-at` as given.
+pub fn options(scene: &SceneArgs, data: &DataArgs) -> Result<Options, CliError> {
+    let (fps, scale) = (data.fps, data.scale);
     let (preset, s, _) = scene.resolve()?;
     let radius_from = if scene.values.get(Key::Radius).is_some() {
         "--radius".to_string()
@@ -103,7 +113,7 @@ pub fn options(
         px_per_m: scale.map(|l| 1.0 / l),
         radius_from,
         cache: crate::input::video::cache::user_folder(),
-        roi: None,
-        ball_at: None,
+        roi: data.roi,
+        ball_at: data.ball_at,
     })
 }

@@ -18,6 +18,11 @@ pub struct TrackArgs {
     /// go to stdout.
     #[arg(long, value_name = "FILE")]
     pub output: Option<PathBuf>,
+    /// Also write what was found drawn over the frames (each ball's outline, centre
+    /// and mark), to check the tracking at a glance: a video (FILE ending in .mp4,
+    /// .mov or .mkv; needs ffmpeg) or a contact sheet of 12 frames (.png).
+    #[arg(long, value_name = "FILE")]
+    pub overlay: Option<PathBuf>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]

@@ -30,10 +30,10 @@ pub fn is_video(path: &Path) -> bool {
     named || crate::input::video::is_frame_folder(path)
 }
 
-/// What the tracking of a `--data` video is asked: R of the scene options, `--fps`
-/// and `--scale`.
+/// What the tracking of a `--data` video is asked: R of the scene options, `--fps`,
+/// `--scale`, `--roi` and `--ball-at`.
 pub fn options(scene: &SceneArgs, data: &DataArgs) -> Result<Options, CliError> {
-    track::options(scene, data.fps, data.scale)
+    track::options(scene, data)
 }
 
 /// The scene a video's tracks state: the R its scale came from (the text's

@@ -7,7 +7,9 @@
 //! blobs sorted into ball-like ones (as wide as tall, or wider by the part the near
 //! rail hides), pairs merged at an impact, and the rest.
 
+use super::background::{Background, Small, differences, threshold};
 use super::gray::{Gray, Levels};
+use super::params::Params;
 
 /// A blob of the coarse frame, in full-frame pixels.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -55,7 +57,8 @@ pub fn factor(width: usize) -> usize {
     (width / 320).max(1)
 }
 
-/// Looks at the whole of `img` for balls of radius at least `min_radius` px.
+/// Looks at the whole of `img` for balls of radius at least `min_radius` px, with no
+/// background learned: the background taken as a smooth surface of luma.
 pub fn coarse(img: &Gray, min_radius: f64) -> Coarse {
     let f = factor(img.width);
     let small = img.reduced(f);
@@ -70,13 +73,40 @@ pub fn coarse(img: &Gray, min_radius: f64) -> Coarse {
         .collect();
     drop_long_runs(&mut mask, w, h, w / 4);
     open_vertically(&mut mask, w, h);
+    let mut out = classify(&mut mask, w, h, f, min_radius);
+    out.noise = f64::from(noise);
+    out
+}
+
+/// Looks at the coarse frame `small` for what differs from the background `bg` in
+/// brightness or colour (not shadows), inside `params.roi`.
+pub fn against(small: &Small, bg: &Background, params: &Params) -> Coarse {
+    let (w, h, f) = (small.width, small.height, small.factor);
+    let (d, _) = differences(small, &bg.image, params);
+    let thr = threshold(&d, params);
+    let mut mask: Vec<bool> = d.iter().map(|&v| v > thr).collect();
+    if let Some(roi) = params.roi {
+        for (i, m) in mask.iter_mut().enumerate() {
+            let (x, y) = (((i % w) * f) as f64, ((i / w) * f) as f64);
+            let c = 0.5 * f as f64;
+            *m &= roi.contains(x + c, y + c);
+        }
+    }
+    // A change of the whole picture's light is no ball: rows marked across most of
+    // the frame are dropped.
+    drop_long_runs(&mut mask, w, h, (w / 3).max(4));
+    let mut out = classify(&mut mask, w, h, f, params.min_radius);
+    out.noise = f64::from(thr) / params.differ_sigmas.max(1.0);
+    out
+}
+
+/// The blobs of `mask` (coarse pixels, `f` full pixels each) sorted into balls,
+/// pairs and the rest.
+fn classify(mask: &mut [bool], w: usize, h: usize, f: usize, min_radius: f64) -> Coarse {
     let ff = f as f64;
     let min_area = (min_radius / ff).powi(2);
-    let mut out = Coarse {
-        noise: f64::from(noise),
-        ..Coarse::default()
-    };
-    for b in blobs(&mut mask, w, h) {
+    let mut out = Coarse::default();
+    for b in blobs(mask, w, h) {
         if (b.area as f64) < min_area {
             continue;
         }

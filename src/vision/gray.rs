@@ -25,6 +25,17 @@ impl Gray {
         f32::from(self.data[y * self.width + x])
     }
 
+    /// The level at column `x`, row `y`; 0 outside the frame.
+    #[inline]
+    pub fn get(&self, x: usize, y: usize) -> f32 {
+        if x >= self.width {
+            return 0.0;
+        }
+        self.data
+            .get(y * self.width + x)
+            .map_or(0.0, |&v| f32::from(v))
+    }
+
     /// The frame reduced `factor` times in each direction, each pixel the mean of its
     /// block (the last partial blocks dropped), as f32 levels.
     pub fn reduced(&self, factor: usize) -> Levels {

@@ -22,10 +22,11 @@ pub struct Mark {
 /// The mark on the ball `ball`, given the pixel noise `noise` (luma levels); `None`
 /// when no spot stands out (the mark is hidden by the rail or turned away) or it lies
 /// too near the limb or the rail to be measured against the ball's shading. The mark
-/// contrasts with the ball the other way than the ball with its surroundings (a dark
-/// dot on a light ball, a light one on a dark ball), which keeps a highlight from
-/// being taken for it.
-pub fn find(img: &Gray, ball: &Outline, noise: f64) -> Option<Mark> {
+/// is whatever contrasts most with the ball's own surface, darker or lighter (`sign`
+/// 0), or of the sign found before (−1 darker, +1 lighter: once known, a highlight
+/// of the other sign is not taken for it); it must stand out by `levels` (luma
+/// levels, at least).
+pub fn find(img: &Gray, ball: &Outline, noise: f64, sign: f64, levels: (f64, f64)) -> Option<Mark> {
     let c = ball.circle;
     // The search region: inside the limb, above the rail.
     let inner = c.r - (0.1 * c.r).max(3.0);
@@ -51,13 +52,18 @@ pub fn find(img: &Gray, ball: &Outline, noise: f64) -> Option<Mark> {
             }
             let mean = sums.mean(x - half, y - half, x + half, y + half);
             let d = f64::from(img.at(x as usize, y as usize)) - mean;
-            if -ball.polarity * d > -ball.polarity * best.0 {
+            let better = if sign == 0.0 {
+                d.abs() > best.0.abs()
+            } else {
+                sign * d > sign * best.0
+            };
+            if better {
                 best = (d, x, y);
             }
         }
     }
     let (peak, px, py) = best;
-    if peak.abs() < (6.0 * noise).max(10.0) {
+    if peak.abs() < (levels.0 * noise).max(levels.1) || (sign != 0.0 && peak * sign <= 0.0) {
         return None;
     }
     let size = spot_radius(img, px, py, peak, half, &sums);

@@ -6,10 +6,13 @@
 //! two balls touch (at an impact their outlines merge), or when its outline is poor
 //! (blurred, or too little of it visible); nothing is filled in.
 
+use super::background::{Background, Learner, Small};
 use super::circle::{self, Circle, Outline};
 use super::detect;
+use super::frame::Frame;
 use super::gray::Gray;
 use super::mark::{self, Mark};
+use super::params::Params;
 
 /// One ball in one frame, in pixels.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -44,25 +47,48 @@ pub struct Counts {
     pub empty: usize,
 }
 
-/// The state of tracking: the balls' last fits and every frame's result.
+/// The state of tracking: the background (learned first, from the clip), the balls'
+/// last fits and every frame's result.
+///
+/// Use: [`Tracker::learn`] every frame of the clip (or a sample, in order), then
+/// [`Tracker::push`] every frame; or [`track`] for frames in memory. Frames pushed
+/// with nothing learned are looked at against a smooth surface of luma instead.
 #[derive(Clone, Debug, Default)]
 pub struct Tracker {
-    /// Smallest ball radius looked for, px.
-    pub min_radius: f64,
+    pub params: Params,
     pub frames: Vec<FrameFixes>,
     pub counts: Counts,
     /// Each slot's last two fits (frame index, circle), newest last.
     last: [Vec<(usize, Circle)>; 2],
     polarity: f64,
     radii: Vec<f64>,
-    /// The median of `radii`, renewed while they are few and then every 256.
+    /// The median of `radii`, renewed while they are few and then every 256; or
+    /// the seeded ball's radius (`Params::ball_at`).
     radius: Option<f64>,
+    seeded: bool,
+    learner: Option<Learner>,
+    background: Option<Background>,
+    /// Marks found darker and lighter than their ball, before the sign is settled.
+    mark_votes: [usize; 2],
+}
+
+/// Marks looked at before their sign (darker or lighter than the ball) is settled.
+const MARK_VOTES: usize = 9;
+
+/// Tracks frames held in memory: the background learned from all of them, then
+/// each one followed.
+pub fn track(frames: &[Frame], params: Params) -> Tracker {
+    let mut t = Tracker::new(params);
+    frames.iter().for_each(|f| t.learn(f));
+    frames.iter().for_each(|f| t.push(f));
+    t
 }
 
 impl Tracker {
-    pub fn new(min_radius: f64) -> Tracker {
+    pub fn new(params: Params) -> Tracker {
         Tracker {
-            min_radius,
+            params,
+            learner: Some(Learner::new(params)),
             ..Tracker::default()
         }
     }
@@ -77,30 +103,99 @@ impl Tracker {
         &self.radii
     }
 
+    /// Offers one frame to learn the background from (before any [`Tracker::push`]).
+    pub fn learn(&mut self, frame: &Frame) {
+        if let Some(l) = &mut self.learner {
+            l.push(frame);
+        }
+    }
+
+    /// The background learned, if any.
+    pub fn background(&self) -> Option<&Background> {
+        self.background.as_ref()
+    }
+
     /// Tracks one more frame.
-    pub fn push(&mut self, img: &Gray) {
+    pub fn push(&mut self, frame: &Frame) {
+        if self.learner.as_ref().is_some_and(|l| l.seen() > 0) {
+            self.background = self.learner.take().and_then(Learner::finish);
+        }
+        self.learner = None;
+        let img = &frame.luma;
         let k = self.frames.len();
         self.counts.frames += 1;
-        let coarse = detect::coarse(img, self.min_radius);
+        let p = self.params;
+        let coarse = match &self.background {
+            Some(bg) => detect::against(&Small::of(frame, bg.image.factor), bg, &p),
+            None => {
+                let mut c = detect::coarse(img, p.min_radius);
+                if let Some(roi) = p.roi {
+                    c.balls.retain(|b| {
+                        let g = b.guess();
+                        roi.contains(g.x, g.y)
+                    });
+                }
+                c
+            }
+        };
         if coarse.balls.len() > 2 {
             self.counts.crowded += 1;
         }
         let noise = pixel_noise(img);
-        let mut fits: Vec<Result<Outline, LeftOut>> = coarse
-            .balls
-            .iter()
-            .take(3)
-            .map(|b| self.refine(img, b.guess(), detect::factor(img.width) as f64))
-            .collect();
-        let merged = !coarse.pairs.is_empty() && coarse.balls.len() < 2 && self.both_seen();
+        let f = coarse.balls.first().map_or(1.0, |_| {
+            self.background
+                .as_ref()
+                .map_or(detect::factor(img.width), |b| b.image.factor) as f64
+        });
+        let mut fits: Vec<Result<Outline, LeftOut>> = Vec::new();
+        for b in coarse.balls.iter().take(4) {
+            let fit = self
+                .refine(img, b.guess(), (1.5 * f).max(4.0))
+                .and_then(|o| {
+                    // The mark or a highlight fitted in a ball's blob: not the ball.
+                    if o.circle.r < p.smallest_in_blob * 0.5 * b.width() {
+                        Err(LeftOut::Poor)
+                    } else {
+                        Ok(o)
+                    }
+                });
+            fits.push(fit);
+        }
+        self.follow(img, &mut fits);
+        self.seed(img, &mut fits);
+        // One fit per ball: of fits of one ball (a blob and the follower), the first.
+        let mut kept: Vec<Result<Outline, LeftOut>> = Vec::new();
+        for fit in fits {
+            let same = |o: &Outline| {
+                kept.iter().flatten().any(|q: &Outline| {
+                    (q.circle.x - o.circle.x).hypot(q.circle.y - o.circle.y) < q.circle.r
+                })
+            };
+            match fit {
+                Ok(o) if same(&o) => {}
+                other => kept.push(other),
+            }
+        }
+        kept.sort_by(|a, b| match (a, b) {
+            (Ok(a), Ok(b)) => a.circle.x.total_cmp(&b.circle.x),
+            (Ok(_), Err(_)) => std::cmp::Ordering::Less,
+            (Err(_), Ok(_)) => std::cmp::Ordering::Greater,
+            _ => std::cmp::Ordering::Equal,
+        });
+        let mut fits = kept;
+        let merged =
+            !coarse.pairs.is_empty() && fits.iter().flatten().count() < 2 && self.both_seen();
         if fits.is_empty() && !merged {
             self.counts.empty += 1;
         }
         // Two outlines touching: the impact; neither is measured.
         let good: Vec<Outline> = fits.iter().filter_map(|f| f.ok()).collect();
-        let touching = good.len() == 2 && {
-            let (a, b) = (good[0].circle, good[1].circle);
-            (a.x - b.x).hypot(a.y - b.y) < a.r + b.r + 2.0
+        let touching = match good.as_slice() {
+            [a, b] => {
+                let (a, b) = (a.circle, b.circle);
+                (a.x - b.x).hypot(a.y - b.y) < a.r + b.r + p.touch_gap
+            }
+            _ => false,
         };
         let mut out: FrameFixes = [Err(LeftOut::Unseen), Err(LeftOut::Unseen)];
         if merged || touching {
@@ -108,42 +203,138 @@ impl Tracker {
             self.frames.push(out);
             return;
         }
+        // Two balls at most: the good fits first.
         fits.truncate(2);
         for (slot, fit) in self.assign(fits) {
-            out[slot] = fit.map(|o| {
-                self.last[slot].push((k, o.circle));
-                if self.last[slot].len() > 2 {
-                    self.last[slot].remove(0);
+            let fix = fit.map(|o| {
+                if let Some(l) = self.last.get_mut(slot) {
+                    l.push((k, o.circle));
+                    if l.len() > 2 {
+                        l.remove(0);
+                    }
                 }
                 self.radii.push(o.circle.r);
-                if self.radii.len() <= 64 || self.radii.len().is_multiple_of(256) {
+                if !self.seeded && (self.radii.len() <= 64 || self.radii.len().is_multiple_of(256))
+                {
                     self.radius = median(&self.radii);
                 }
                 Fix {
                     outline: o,
                     sigma: 0.5 * (o.sigma[0] + o.sigma[1]),
-                    mark: mark::find(img, &o, noise),
+                    mark: self.mark(img, &o, noise),
                 }
             });
+            if let Some(o) = out.get_mut(slot) {
+                *o = fix;
+            }
         }
         self.frames.push(out);
+    }
+
+    /// The mark on the ball `o`: of either sign while few are found, then of the
+    /// sign most had.
+    fn mark(&mut self, img: &Gray, o: &Outline, noise: f64) -> Option<Mark> {
+        let [dark, light] = self.mark_votes;
+        let sign = if dark + light < MARK_VOTES {
+            0.0
+        } else if dark >= light {
+            -1.0
+        } else {
+            1.0
+        };
+        let p = self.params;
+        let m = mark::find(img, o, noise, sign, (p.mark_sigmas, p.mark_levels))?;
+        if sign == 0.0 {
+            let [d, l] = &mut self.mark_votes;
+            if m.contrast < 0.0 {
+                *d += 1;
+            } else {
+                *l += 1;
+            }
+        }
+        Some(m)
+    }
+
+    /// The follower: each ball seen in the last frames looked for about where it is
+    /// predicted now, when no blob gave it (a ball at rest over the pixels the
+    /// background learned it at, or faint).
+    fn follow(&mut self, img: &Gray, fits: &mut Vec<Result<Outline, LeftOut>>) {
+        let k = self.frames.len();
+        for slot in 0..2 {
+            let Some(l) = self.last.get(slot) else {
+                continue;
+            };
+            let recent = l.last().is_some_and(|(k1, _)| k - k1 <= 3);
+            let Some(pred) = predict(l, k).filter(|_| recent) else {
+                continue;
+            };
+            let found = fits
+                .iter()
+                .flatten()
+                .any(|o| (o.circle.x - pred.x).hypot(o.circle.y - pred.y) < 0.5 * pred.r);
+            if found {
+                continue;
+            }
+            let band = (self.params.window_radii * pred.r).max(3.0);
+            if let Ok(o) = self.refine(img, pred, band) {
+                fits.push(Ok(o));
+            }
+        }
+    }
+
+    /// In the first frame with a ball seen, the seed (`Params::ball_at`): the fit
+    /// whose disc holds it is a ball and sets the radius; fits of another radius are
+    /// not balls. Without such a fit, the outline is sought about the seed itself.
+    fn seed(&mut self, img: &Gray, fits: &mut Vec<Result<Outline, LeftOut>>) {
+        let Some((sx, sy)) = self.params.ball_at else {
+            return;
+        };
+        if self.seeded {
+            return;
+        }
+        let holds = |o: &Outline| (o.circle.x - sx).hypot(o.circle.y - sy) <= o.circle.r;
+        let mut at = fits.iter().flatten().find(|o| holds(o)).copied();
+        if at.is_none() {
+            at = seed_fit(img, (sx, sy), self.params.min_radius)
+                .and_then(|c| self.refine(img, c, (0.2 * c.r).max(3.0)).ok())
+                .filter(holds);
+            if let Some(o) = at {
+                fits.push(Ok(o));
+            }
+        }
+        let Some(o) = at else { return };
+        let r = o.circle.r;
+        self.seeded = true;
+        self.radius = Some(r);
+        let tol = self.params.radius_tolerance;
+        for f in fits.iter_mut() {
+            if f.as_ref().is_ok_and(|q| (q.circle.r - r).abs() >= tol * r) {
+                *f = Err(LeftOut::Poor);
+            }
+        }
     }
 
     fn both_seen(&self) -> bool {
         self.last.iter().all(|l| !l.is_empty())
     }
 
-    /// The outline near `guess` (from a blob reduced `factor` times), twice: in a band
-    /// as wide as the coarse look's error, then narrowly about the first fit.
-    fn refine(&mut self, img: &Gray, guess: Circle, factor: f64) -> Result<Outline, LeftOut> {
+    /// The outline near `guess`, twice: in a band `band` px wide either side (the
+    /// coarse look's error, or the search window), then narrowly about the first fit.
+    fn refine(&mut self, img: &Gray, guess: Circle, band: f64) -> Result<Outline, LeftOut> {
         let guess = self.predicted_near(guess).unwrap_or(guess);
-        let band = (1.5 * factor).max(4.0);
+        let p = self.params;
         let first = circle::fit(img, guess, band, self.polarity).ok_or(LeftOut::Poor)?;
         let o = circle::fit(img, first.circle, 2.5, first.polarity).ok_or(LeftOut::Poor)?;
         let r_ok = self
             .radius()
-            .is_none_or(|r| (o.circle.r - r).abs() < 0.15 * r);
-        if o.coverage < 0.35 || o.rms > 1.0 || !r_ok {
+            .is_none_or(|r| (o.circle.r - r).abs() < p.radius_tolerance * r);
+        if o.coverage < p.min_coverage
+            || o.rms > p.max_rms
+            || !r_ok
+            || o.circle.r < p.min_radius
+            || p.roi
+                .is_some_and(|roi| !roi.contains(o.circle.x, o.circle.y))
+        {
             return Err(LeftOut::Poor);
         }
         if self.polarity == 0.0 {
@@ -170,32 +361,31 @@ impl Tracker {
     ) -> Vec<(usize, Result<Outline, LeftOut>)> {
         let k = self.frames.len();
         let pred: Vec<Option<Circle>> = self.last.iter().map(|l| predict(l, k)).collect();
-        match fits.len() {
-            0 => Vec::new(),
-            2 => {
+        let (p0, p1) = (
+            pred.first().copied().flatten(),
+            pred.get(1).copied().flatten(),
+        );
+        let mut it = fits.into_iter();
+        match (it.next(), it.next()) {
+            (None, _) => Vec::new(),
+            (Some(a), Some(b)) => {
                 // Both seen: the slots' left-to-right order, once known, is kept.
-                let swapped = match (pred[0], pred[1]) {
+                let swapped = match (p0, p1) {
                     (Some(a), Some(b)) => a.x > b.x,
                     _ => false,
                 };
-                let mut it = fits.into_iter();
-                let (a, b) = (
-                    it.next().unwrap_or(Err(LeftOut::Poor)),
-                    it.next().unwrap_or(Err(LeftOut::Poor)),
-                );
                 if swapped {
                     vec![(1, a), (0, b)]
                 } else {
                     vec![(0, a), (1, b)]
                 }
             }
-            _ => {
-                let fit = fits.into_iter().next().unwrap_or(Err(LeftOut::Poor));
+            (Some(fit), None) => {
                 let x = match &fit {
                     Ok(o) => o.circle.x,
                     Err(_) => return Vec::new(),
                 };
-                let slot = match (pred[0], pred[1]) {
+                let slot = match (p0, p1) {
                     (Some(a), Some(b)) => usize::from((b.x - x).abs() < (a.x - x).abs()),
                     (None, Some(b)) if (b.x - x).abs() > 2.0 * b.r => 0,
                     (None, Some(_)) => 1,
@@ -206,6 +396,59 @@ impl Tracker {
             }
         }
     }
+}
+
+/// A first circle about the seed `at` (a point on a ball): along 32 rays from it,
+/// the first strong luma step; the circle through those steps (least squares of
+/// the algebraic distance), `None` when they do not make one.
+fn seed_fit(img: &Gray, at: (f64, f64), min_radius: f64) -> Option<Circle> {
+    let reach = (img.width.min(img.height) as f64 / 3.0).max(2.0 * min_radius);
+    let inside = |x: f64, y: f64| {
+        x >= 0.0 && y >= 0.0 && x < img.width as f64 - 1.0 && y < img.height as f64 - 1.0
+    };
+    let level = |x: f64, y: f64| {
+        if inside(x, y) {
+            Some(img.get(x.round() as usize, y.round() as usize))
+        } else {
+            None
+        }
+    };
+    let start = level(at.0, at.1)?;
+    let mut pts = Vec::new();
+    for i in 0..32 {
+        let a = f64::from(i) * std::f64::consts::TAU / 32.0;
+        let (dx, dy) = (a.cos(), a.sin());
+        let mut s = 1.0;
+        while s < reach {
+            let Some(v) = level(at.0 + s * dx, at.1 + s * dy) else {
+                break;
+            };
+            if (v - start).abs() > 25.0 {
+                pts.push([at.0 + s * dx, at.1 + s * dy]);
+                break;
+            }
+            s += 1.0;
+        }
+    }
+    if pts.len() < 12 {
+        return None;
+    }
+    // Kåsa's fit: x² + y² + D x + E y + F = 0.
+    let mut ata = nalgebra::Matrix3::<f64>::zeros();
+    let mut atb = nalgebra::Vector3::<f64>::zeros();
+    for p in &pts {
+        let row = nalgebra::Vector3::new(p[0], p[1], 1.0);
+        ata += row * row.transpose();
+        atb -= row * (p[0] * p[0] + p[1] * p[1]);
+    }
+    let sol = ata.try_inverse()? * atb;
+    let (cx, cy) = (-0.5 * sol[0], -0.5 * sol[1]);
+    let r2 = cx * cx + cy * cy - sol[2];
+    (r2 > min_radius * min_radius && cx.is_finite() && cy.is_finite()).then(|| Circle {
+        x: cx,
+        y: cy,
+        r: r2.sqrt(),
+    })
 }
 
 /// A slot's circle extrapolated to frame `k` from its last two fits.

@@ -13,7 +13,7 @@ use super::tracker::{LeftOut, Tracker, median};
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum TracksError {
     #[error(
-        "no ball found in {frames} frames (a ball is a round blob contrasting with the background, at least {min_radius:.0} px in radius)"
+        "no ball found in {frames} frames (a ball is a round blob contrasting with the background, at least {min_radius:.0} px in radius); {TRY}"
     )]
     NoBall { frames: usize, min_radius: f64 },
     #[error(
@@ -22,10 +22,34 @@ pub enum TracksError {
     )]
     TooFewFrames { frames: usize, need: usize },
     #[error(
-        "more than two balls in {crowded} of {frames} frames, expected the two colliding balls (or one)"
+        "more than two balls in {crowded} of {frames} frames, expected the two colliding balls (or one); {TRY}"
     )]
     TooMany { crowded: usize, frames: usize },
+    /// The fitted radii disagree: no scale is given from them.
+    #[error(
+        "tracking unsure: the balls' fitted radii scatter by {:.0} % about {median_px:.1} px (both balls have one radius), so no scale is given; {TRY}",
+        100.0 * scatter
+    )]
+    RadiiDisagree { median_px: f64, scatter: f64 },
+    /// A "ball" whose centre swings across the groove's line.
+    #[error(
+        "tracking unsure: the {name} ball's centre swings {across_px:.1} px (RMS) across the groove's line, {:.0} % of its radius (a ball rolls along it), so no tracks are given; {TRY}",
+        100.0 * across_px / radius_px
+    )]
+    Swings {
+        name: &'static str,
+        across_px: f64,
+        radius_px: f64,
+    },
 }
+
+/// What to try when the tracker is unsure (every refusal says it).
+const TRY: &str = "try --roi X,Y,W,H (pixels) around the groove, --ball-at X,Y on a ball in the first frame, or --scale LENGTH (a pixel's length)";
+
+/// Largest scatter of the fitted radii (robust, a share of their median) that still
+/// gives a scale: a sharp ball's radius scatters by under 1 %, a blurred one's by a
+/// few; both balls have one radius.
+const MAX_RADIUS_SPREAD: f64 = 0.05;
 
 /// Fewest frames a ball must be seen in to be one (not a passing blob).
 const FEWEST_SEEN: usize = 3;
@@ -120,7 +144,7 @@ pub fn tracks(
     if slots.is_empty() {
         return Err(TracksError::NoBall {
             frames: c.frames,
-            min_radius: tracker.min_radius,
+            min_radius: tracker.params.min_radius,
         });
     }
     let centres: Vec<Vec<[f64; 2]>> = (0..2).map(|s| centres_of(tracker, s)).collect();
@@ -136,6 +160,15 @@ pub fn tracks(
     dev.sort_by(f64::total_cmp);
     let r_stat = 1.4826 * dev[dev.len() / 2] * 1.2533 / (radii.len() as f64).sqrt();
     let r_se = r_stat.hypot(EDGE_SYSTEMATIC);
+    // Never a confident wrong scale: radii that disagree are no ball's (the mark, a
+    // highlight or clutter taken for one in part of the frames).
+    let spread = 1.4826 * dev.get(dev.len() / 2).copied().unwrap_or(0.0) / r_px;
+    if scale.is_none() && (spread.is_nan() || spread > MAX_RADIUS_SPREAD) {
+        return Err(TracksError::RadiiDisagree {
+            median_px: r_px,
+            scatter: spread,
+        });
+    }
     let px_per_m = scale.unwrap_or(r_px / radius);
     // The origin: the mean of every centre, so y is about 0 along the groove.
     let all: Vec<&[f64; 2]> = slots.iter().flat_map(|&s| centres[s].iter()).collect();
@@ -163,6 +196,20 @@ pub fn tracks(
         )
     };
     let names = names_of(&slots, &centres, along);
+    for (&s, &name) in slots.iter().zip(&names) {
+        let c = &centres[s];
+        let across = |p: &[f64; 2]| p[0] * n.0 + p[1] * n.1;
+        let mean = c.iter().map(across).sum::<f64>() / c.len() as f64;
+        let rms =
+            (c.iter().map(|p| (across(p) - mean).powi(2)).sum::<f64>() / c.len() as f64).sqrt();
+        if rms > tracker.params.max_across * r_px {
+            return Err(TracksError::Swings {
+                name,
+                across_px: rms,
+                radius_px: r_px,
+            });
+        }
+    }
     let balls = slots
         .iter()
         .zip(names)

@@ -4,6 +4,8 @@
 
 #[macro_use]
 mod common;
+#[path = "../support/film/mod.rs"]
+mod film;
 
 mod cli;
 mod code;

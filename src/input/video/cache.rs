@@ -2,7 +2,9 @@
 //! and the series' reading of `--data` share one tracking), and in the user's cache
 //! folder (`$XDG_CACHE_HOME/groovelab/tracks`, else `~/.cache/groovelab/tracks`) as
 //! the Tracker-style text and the app's pictures, keyed by the video's content (a
-//! folder's: its files' names and bytes), the options and the program's version.
+//! folder's: its files' names and bytes), the options and the tracker's own version
+//! (`vision::VERSION`, raised whenever the tracker finds other numbers: the
+//! program's version would keep old tracks of a better tracker).
 //! A cache that cannot be written or read is only slower. The folder is the
 //! options' (`Options::cache`), so a test keeps its own.
 
@@ -31,13 +33,22 @@ static DONE: Mutex<Option<Memo>> = Mutex::new(None);
 
 /// The process's key of a tracking: the path and the options.
 fn process_key(path: &Path, o: &Options) -> (PathBuf, String) {
-    let k = format!(
-        "{:x} {:?} {:?}",
+    (path.to_path_buf(), options_key(o))
+}
+
+/// The options that change the tracks, as text (exact: floats by their bits).
+fn options_key(o: &Options) -> String {
+    let bits = |v: Option<f64>| v.map(f64::to_bits);
+    format!(
+        "v{} {:x} {:?} {:?} {:?} {:?}",
+        crate::vision::VERSION,
         o.radius.to_bits(),
-        o.fps.map(f64::to_bits),
-        o.px_per_m.map(f64::to_bits)
-    );
-    (path.to_path_buf(), k)
+        bits(o.fps),
+        bits(o.px_per_m),
+        o.roi
+            .map(|r| [r.x, r.y, r.width, r.height].map(f64::to_bits)),
+        o.ball_at.map(|(x, y)| [x, y].map(f64::to_bits)),
+    )
 }
 
 /// The tracks of `path` kept in this process or in the cache folder, if any.
@@ -123,13 +134,10 @@ pub fn user_folder() -> Option<PathBuf> {
 }
 
 /// The cache key: the content of the video (a folder's files, names and bytes, in
-/// order), the options and the program's version.
+/// order), the options and the tracker's version.
 fn key(path: &Path, o: &Options) -> std::io::Result<u64> {
     let mut h = std::collections::hash_map::DefaultHasher::new();
-    env!("CARGO_PKG_VERSION").hash(&mut h);
-    o.radius.to_bits().hash(&mut h);
-    o.fps.map(f64::to_bits).hash(&mut h);
-    o.px_per_m.map(f64::to_bits).hash(&mut h);
+    options_key(o).hash(&mut h);
     if path.is_dir() {
         let mut files: Vec<PathBuf> = std::fs::read_dir(path)?
             .flatten()

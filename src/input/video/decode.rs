@@ -1,6 +1,7 @@
 //! A video's frames streamed from the system's `ffmpeg`: its first video stream
-//! decoded to 8-bit luma (`-pix_fmt gray`, turned as the phone meant it) and piped
-//! raw, one frame read at a time; ffmpeg's own messages gathered on a thread and
+//! decoded to yuv420p (h264's own format: no conversion, colour kept; turned as the
+//! phone meant it) and piped raw, one frame read at a time, all of them or every
+//! k-th (the sample the background is learned from); ffmpeg's own messages gathered on a thread and
 //! said when it fails or stops short (a truncated or damaged file).
 
 use std::io::Read;
@@ -11,24 +12,40 @@ use std::thread::JoinHandle;
 use super::info::{Frames, Info};
 use super::probe::url;
 use super::problem::{VideoError, VideoProblem};
-use crate::vision::Gray;
+use crate::vision::Frame;
 
-/// The frames of the video at `path` (as `info` describes it).
-pub(super) fn frames(path: &Path, info: &Info) -> Result<Frames, VideoError> {
+/// The frames of the video at `path` (as `info` describes it): every `every`-th
+/// (1: all), numbered as in the video.
+pub(super) fn frames(path: &Path, info: &Info, every: usize) -> Result<Frames, VideoError> {
     let file = path.to_path_buf();
-    let mut child = Command::new("ffmpeg")
-        .args(["-v", "error", "-nostdin", "-i"])
+    let every = every.max(1);
+    let mut cmd = Command::new("ffmpeg");
+    cmd.args(["-v", "error", "-nostdin", "-i"])
         .arg(url(path))
-        .args([
-            "-map", "0:v:0", "-f", "rawvideo", "-pix_fmt", "gray", "pipe:1",
-        ])
+        .args(["-map", "0:v:0"]);
+    if every > 1 {
+        cmd.args([
+            "-vf",
+            &format!("select=not(mod(n\\,{every}))"),
+            "-fps_mode",
+            "passthrough",
+        ]);
+    }
+    let mut child = cmd
+        .args(["-f", "rawvideo", "-pix_fmt", "yuv420p", "pipe:1"])
         .stdin(Stdio::null())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
         .map_err(|e| VideoError::new(path, VideoProblem::cannot_run("ffmpeg", e)))?;
-    let stdout = child.stdout.take().expect("piped");
-    let mut stderr = child.stderr.take().expect("piped");
+    let piped = |e: &str| {
+        VideoError::new(
+            path,
+            VideoProblem::cannot_run("ffmpeg", std::io::Error::other(e.to_string())),
+        )
+    };
+    let stdout = child.stdout.take().ok_or_else(|| piped("no stdout"))?;
+    let mut stderr = child.stderr.take().ok_or_else(|| piped("no stderr"))?;
     let messages = std::thread::spawn(move || {
         let mut s = String::new();
         let _ = (&mut stderr).take(64 * 1024).read_to_string(&mut s);
@@ -43,7 +60,8 @@ pub(super) fn frames(path: &Path, info: &Info) -> Result<Frames, VideoError> {
         messages: Some(messages),
         width: info.width,
         height: info.height,
-        expected: info.frames,
+        expected: info.frames.div_ceil(every as u64),
+        every: every as u64,
         next: 0,
     }))
 }
@@ -56,6 +74,7 @@ struct Stream {
     width: usize,
     height: usize,
     expected: u64,
+    every: u64,
     next: u64,
 }
 
@@ -91,23 +110,16 @@ impl Stream {
 }
 
 impl Iterator for Stream {
-    type Item = Result<(u64, Gray), VideoError>;
+    type Item = Result<(u64, Frame), VideoError>;
 
     fn next(&mut self) -> Option<Self::Item> {
         self.child.as_ref()?;
-        let mut data = vec![0u8; self.width * self.height];
+        let mut data = vec![0u8; Frame::bytes(self.width, self.height)];
         match self.stdout.read_exact(&mut data) {
             Ok(()) => {
-                let k = self.next;
+                let k = self.next * self.every;
                 self.next += 1;
-                Some(Ok((
-                    k,
-                    Gray {
-                        width: self.width,
-                        height: self.height,
-                        data,
-                    },
-                )))
+                Frame::from_yuv420p(self.width, self.height, data).map(|f| Ok((k, f)))
             }
             Err(_) => self.finish().map(Err),
         }

@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 use super::info::{Frames, Info, Limits};
 use super::problem::{VideoError, VideoProblem};
-use crate::vision::Gray;
+use crate::vision::Frame;
 
 /// True for a file named as a PNG or JPEG image.
 pub(super) fn is_image(path: &Path) -> bool {
@@ -54,7 +54,7 @@ pub(super) fn open(dir: &Path, limits: &Limits) -> Result<(Info, Frames), VideoE
         }));
     }
     let first = read(&frames[0].1)?;
-    let (w, h) = (first.width, first.height);
+    let (w, h) = (first.width(), first.height());
     let pixels = (w * h) as f64 * frames.len() as f64;
     if pixels > limits.pixels || w > limits.side || h > limits.side {
         return Err(err(VideoProblem::FolderTooLarge {
@@ -81,11 +81,11 @@ pub(super) fn open(dir: &Path, limits: &Limits) -> Result<(Info, Frames), VideoE
     };
     let iter = frames.into_iter().map(move |(n, p)| {
         let g = read(&p)?;
-        if (g.width, g.height) != (w, h) {
+        if (g.width(), g.height()) != (w, h) {
             return Err(VideoError::new(
                 &p,
                 VideoProblem::FrameSize {
-                    size: (g.width, g.height),
+                    size: (g.width(), g.height()),
                     first: (w, h),
                 },
             ));
@@ -95,15 +95,10 @@ pub(super) fn open(dir: &Path, limits: &Limits) -> Result<(Info, Frames), VideoE
     Ok((info, Box::new(iter)))
 }
 
-/// One frame's luma.
-fn read(path: &Path) -> Result<Gray, VideoError> {
+/// One frame, in colour.
+fn read(path: &Path) -> Result<Frame, VideoError> {
     let img = image::open(path).map_err(|e| VideoError::new(path, VideoProblem::ReadImage(e)))?;
-    let g = img.to_luma8();
-    Ok(Gray {
-        width: g.width() as usize,
-        height: g.height() as usize,
-        data: g.into_raw(),
-    })
+    Ok(Frame::from_rgb(&img.to_rgb8()))
 }
 
 #[cfg(test)]

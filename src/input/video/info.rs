@@ -1,7 +1,7 @@
 //! What a video or a folder of frames is, before its frames are read: the types the
 //! readers share (why one cannot be read is `problem`'s).
 
-use crate::vision::Gray;
+use crate::vision::Frame;
 
 use super::problem::VideoError;
 
@@ -47,9 +47,9 @@ impl Info {
     }
 }
 
-/// A frame source: each item one frame's luma and its number (a folder's numbers
+/// A frame source: each item one frame (in colour) and its number (a folder's numbers
 /// may skip; a video's count up from 0).
-pub type Frames = Box<dyn Iterator<Item = Result<(u64, Gray), VideoError>>>;
+pub type Frames = Box<dyn Iterator<Item = Result<(u64, Frame), VideoError>>>;
 
 /// How much video `track` takes on: larger is refused before any frame is decoded.
 #[derive(Clone, Copy, Debug, PartialEq)]

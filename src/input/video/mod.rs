@@ -1,9 +1,9 @@
 //! Videos and folders of frames at the edge: what a video is (`probe`: the system's
 //! `ffprobe`, its size, frame rate and a phone's slow-motion capture rate), its
-//! frames streamed as luma (`decode`: the system's `ffmpeg` through a pipe, one frame
+//! frames streamed in colour (`decode`: the system's `ffmpeg` through a pipe, one frame
 //! in memory at a time), a folder of numbered PNG/JPEG frames (`folder`, no ffmpeg
-//! needed), a video tracked (`tracked`) and kept (`cache`), and writing frames and
-//! videos (`write`: for tests and benchmarks). Never
+//! needed), a video tracked (`tracked`) and kept (`cache`), what was tracked drawn over
+//! its frames (`overlay`), and writing frames and videos (`write`). Never
 //! a binary fetched at run time: without ffmpeg a video is refused with how to
 //! install it.
 
@@ -11,6 +11,7 @@ pub mod cache;
 mod decode;
 mod folder;
 mod info;
+pub mod overlay;
 mod probe;
 mod problem;
 pub mod tracked;
@@ -26,10 +27,29 @@ pub use problem::{INSTALL_FFMPEG, VideoError, VideoProblem};
 /// Refuses what is no video (empty, an image, audio, unreadable) and what is too
 /// large for `limits`, each with one line.
 pub fn open(path: &Path, limits: &Limits) -> Result<(Info, Frames), VideoError> {
+    open_every(path, limits, 1)
+}
+
+/// As [`open`], but only every `every`-th frame (a video still decodes all of them,
+/// but only those are piped and read).
+pub fn open_every(
+    path: &Path,
+    limits: &Limits,
+    every: usize,
+) -> Result<(Info, Frames), VideoError> {
+    let every = every.max(1);
     match checked(path, limits)? {
-        Opened::Folder(info, frames) => Ok((info, frames)),
+        Opened::Folder(info, frames) => Ok((
+            info,
+            Box::new(
+                frames
+                    .enumerate()
+                    .filter(move |(i, _)| i % every == 0)
+                    .map(|(_, f)| f),
+            ),
+        )),
         Opened::Video(info) => {
-            let frames = decode::frames(path, &info)?;
+            let frames = decode::frames(path, &info, every)?;
             Ok((info, frames))
         }
     }

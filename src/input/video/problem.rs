@@ -146,6 +146,12 @@ pub enum VideoProblem {
     /// ffmpeg ended with an error; what it wrote to its stderr.
     #[error("ffmpeg could not encode: {ffmpeg_says}")]
     Encode { ffmpeg_says: String },
+    /// An overlay file's name ends in neither a picture's nor a video's ending.
+    #[error(
+        "is no overlay file: --overlay writes a contact sheet (.png) or a video (.mp4, .mov, .mkv), not {}",
+        if ending.is_empty() { "a name without an ending".to_string() } else { format!("'.{ending}'") }
+    )]
+    OverlayKind { ending: String },
 }
 
 impl VideoProblem {

@@ -29,13 +29,17 @@ pub struct Options {
     pub ball_at: Option<(f64, f64)>,
 }
 
-/// A rectangle of the frame, pixels: left, top, width, height.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Roi {
-    pub x: f64,
-    pub y: f64,
-    pub width: f64,
-    pub height: f64,
+pub use crate::vision::Roi;
+
+impl Options {
+    /// The tracker's parameters these options set (the rest at their defaults).
+    pub fn params(&self) -> vision::Params {
+        vision::Params {
+            roi: self.roi,
+            ball_at: self.ball_at,
+            ..vision::Params::default()
+        }
+    }
 }
 
 /// A video tracked: what it is, the rate used and why, the tracks, the notes, and
@@ -65,11 +69,28 @@ pub fn track(
 ) -> Result<Option<Tracked>, VideoError> {
     let file = video.display().to_string();
     let err = |what: VideoProblem| VideoError::new(video, what);
-    let (info, frames) = super::open(video, &Limits::default())?;
+    let info = super::check(video, &Limits::default())?;
     let Some((fps, source)) = info.rate(options.fps) else {
         return Err(err(VideoProblem::NoRate));
     };
-    let mut tracker = Tracker::new(8.0);
+    let params = options.params();
+    let mut tracker = Tracker::new(params);
+    // Two passes: a sample of the frames to learn the background from (the bench
+    // as it is without the balls), then every frame tracked against it. Progress
+    // counts the sample as a fifth of the work.
+    let every = (info.frames as usize / params.background_frames.max(1)).max(1);
+    let (_, sample) = super::open_every(video, &Limits::default(), every)?;
+    let total = info.frames.max(1);
+    let sampled = total.div_ceil(every as u64).max(1);
+    for (i, frame) in sample.enumerate() {
+        if progress.cancelled() {
+            return Ok(None);
+        }
+        let (_, img) = frame?;
+        tracker.learn(&img);
+        progress.tick((i as u64 + 1) * total / (5 * sampled), total + total / 5);
+    }
+    let (info, frames) = super::open(video, &Limits::default())?;
     let mut thumbs = Thumbs::sized(info.width, info.height, info.frames);
     let mut numbers = Vec::new();
     for (i, frame) in frames.enumerate() {
@@ -78,9 +99,10 @@ pub fn track(
         }
         let (n, img) = frame?;
         tracker.push(&img);
-        thumbs.push(i, &img);
+        thumbs.push(i, &img.luma);
         numbers.push(n);
-        progress.tick(i as u64 + 1, info.frames.max(i as u64 + 1));
+        let done = i as u64 + 1;
+        progress.tick(total / 5 + done, total.max(done) + total / 5);
     }
     if numbers.len() < 2 {
         return Err(err(VideoProblem::TooFewFrames {

@@ -17,7 +17,7 @@ use groovelab::tui::app::{Action, Status};
 use serde_json::Value;
 
 use crate::common;
-use groovelab::vision::render::{Film, Look};
+use crate::film::{Film, Look};
 use groovelab::vision::thumbs::VideoView;
 
 /// A small clip: 320×180 at 500 px/m (R = 13.75 px), 100 frames/s, t = −0.15 … 0.34 s.

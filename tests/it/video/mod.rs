@@ -1,5 +1,8 @@
-//! Videos: tracking balls against truth, and a video given as `--data` everywhere.
+//! Videos: tracking balls against truth, random looks, the overlay, and a video given
+//! as `--data` everywhere.
 
 pub(crate) mod app;
+pub(crate) mod looks;
+pub(crate) mod overlay;
 pub(crate) mod seed;
 pub(crate) mod tracking;

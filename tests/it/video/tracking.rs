@@ -1,10 +1,10 @@
 //! Tracking balls in videos against truth: synthetic videos of exactly solved scenes
-//! (`vision::render`), tracked in memory, from a folder of PNG frames and
+//! (`tests/support/film`), tracked in memory, from a folder of PNG frames and
 //! from an mp4 encoded with ffmpeg; the recovered centres and marks against the exact
 //! positions, μ_k fitted from the tracks, and bad inputs refused.
 
-use groovelab::vision::Tracker;
-use groovelab::vision::render::{Film, Look};
+use crate::film::{Film, Look};
+use groovelab::vision::{self, Params, Tracker};
 
 /// A tracked point and the true one, px.
 type Pair = ((f64, f64), (f64, f64));
@@ -21,12 +21,9 @@ fn rms(pairs: &[Pair]) -> f64 {
 /// The frames `frames` of `film` tracked in memory: centre and mark pairs
 /// (tracked, true).
 fn tracked(film: &Film, frames: impl Iterator<Item = usize>) -> (Vec<Pair>, Vec<Pair>, Tracker) {
-    let mut tracker = Tracker::new(8.0);
-    let mut ks = Vec::new();
-    for k in frames {
-        tracker.push(&film.gray(k));
-        ks.push(k);
-    }
+    let ks: Vec<usize> = frames.collect();
+    let images: Vec<_> = ks.iter().map(|&k| film.frame(k)).collect();
+    let tracker = vision::track(&images, Params::default());
     let (mut centres, mut marks) = (Vec::new(), Vec::new());
     for (fixes, &k) in tracker.frames.iter().zip(&ks) {
         let truth = film.truth(k);

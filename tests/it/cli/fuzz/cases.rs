@@ -41,8 +41,8 @@ pub(super) fn hostile_files(dir: &std::path::Path) {
     )
     .unwrap();
     // Frames: the paper's scene at 320×180, 500 px/m (R = 13.75 px), 100 frames/s.
+    use crate::film::{Film, Look};
     use groovelab::input::video::write;
-    use groovelab::vision::render::{Film, Look};
     let look = Look {
         width: 320,
         height: 180,

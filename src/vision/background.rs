@@ -1,0 +1,297 @@
+//! The scene's background learned from the clip itself (the balls move, the bench
+//! does not): frames reduced to the coarse look's size, a bounded sample of them
+//! kept while the clip streams by (every k-th, k doubling when the sample is full),
+//! and per coarse pixel and plane (Y, U, V) their median; then the median again with
+//! each kept frame's differing pixels (the balls, their shadows) masked out, so a
+//! ball that rests in one place for part of the clip weighs less. What differs
+//! from it in a frame, in brightness or colour but not as a shadow, is a ball
+//! candidate (`detect`).
+
+use super::frame::Frame;
+use super::params::Params;
+
+/// A frame reduced to the coarse size: Y, U and V per coarse pixel.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Small {
+    pub width: usize,
+    pub height: usize,
+    /// Full-frame pixels per coarse pixel, each way.
+    pub factor: usize,
+    pub y: Vec<f32>,
+    pub u: Vec<f32>,
+    pub v: Vec<f32>,
+}
+
+/// The reduction factor that brings a frame `width` wide to about `coarse` px.
+pub fn factor(width: usize, coarse: usize) -> usize {
+    (width / coarse.max(16)).max(1)
+}
+
+impl Small {
+    /// `frame` reduced `factor` times: luma as block means, colour sampled at each
+    /// block's middle (the colour planes are smooth already: half size, and what an
+    /// encoder keeps least of).
+    pub fn of(frame: &Frame, factor: usize) -> Small {
+        let f = factor.max(1);
+        let luma = frame.luma.reduced(f);
+        let (w, h) = (luma.width, luma.height);
+        let (cw, ch) = (frame.chroma_width, frame.chroma_height);
+        let mut u = Vec::with_capacity(w * h);
+        let mut v = Vec::with_capacity(w * h);
+        for by in 0..h {
+            let cy = ((by * f + f / 2) / 2).min(ch.saturating_sub(1));
+            for bx in 0..w {
+                let cx = ((bx * f + f / 2) / 2).min(cw.saturating_sub(1));
+                let i = cy * cw + cx;
+                u.push(frame.u.get(i).map_or(128.0, |&c| f32::from(c)));
+                v.push(frame.v.get(i).map_or(128.0, |&c| f32::from(c)));
+            }
+        }
+        Small {
+            width: w,
+            height: h,
+            factor: f,
+            y: luma.data,
+            u,
+            v,
+        }
+    }
+}
+
+/// The background: per coarse pixel, Y, U and V (see [`Small`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Background {
+    pub image: Small,
+}
+
+/// Gathers the sample of frames the background is learned from.
+#[derive(Clone, Debug)]
+pub struct Learner {
+    params: Params,
+    every: usize,
+    seen: usize,
+    kept: Vec<Small>,
+}
+
+impl Learner {
+    pub fn new(params: Params) -> Learner {
+        Learner {
+            params,
+            every: 1,
+            seen: 0,
+            kept: Vec::new(),
+        }
+    }
+
+    /// Frames offered so far.
+    pub fn seen(&self) -> usize {
+        self.seen
+    }
+
+    /// Offers one more frame (in the clip's order).
+    pub fn push(&mut self, frame: &Frame) {
+        if self.seen.is_multiple_of(self.every) {
+            let f = factor(frame.width(), self.params.coarse_width);
+            let small = Small::of(frame, f);
+            // Frames of another size than the first are not of this clip's bench.
+            if self
+                .kept
+                .first()
+                .is_none_or(|k| (k.width, k.height) == (small.width, small.height))
+            {
+                self.kept.push(small);
+            }
+            let cap = self.params.background_frames.max(3);
+            if self.kept.len() >= 2 * cap {
+                // Full: keep every other, and take every other frame from now on.
+                let mut i = 0;
+                self.kept.retain(|_| {
+                    i += 1;
+                    i % 2 == 1
+                });
+                self.every *= 2;
+            }
+        }
+        self.seen += 1;
+    }
+
+    /// The background, `None` before any frame.
+    pub fn finish(self) -> Option<Background> {
+        let first = self.kept.first()?;
+        let (w, h, f) = (first.width, first.height, first.factor);
+        let n = w * h;
+        let mut bg = Small {
+            width: w,
+            height: h,
+            factor: f,
+            y: median_plane(&self.kept, n, |s| &s.y, None),
+            u: median_plane(&self.kept, n, |s| &s.u, None),
+            v: median_plane(&self.kept, n, |s| &s.v, None),
+        };
+        // Again, each frame's differing pixels (and their neighbours) left out.
+        let masks: Vec<Vec<bool>> = self
+            .kept
+            .iter()
+            .map(|s| {
+                let (d, _) = differences(s, &bg, &self.params);
+                let thr = threshold(&d, &self.params);
+                dilate(&d.iter().map(|&v| v > thr).collect::<Vec<_>>(), w, h)
+            })
+            .collect();
+        bg.y = median_plane(&self.kept, n, |s| &s.y, Some(&masks));
+        bg.u = median_plane(&self.kept, n, |s| &s.u, Some(&masks));
+        bg.v = median_plane(&self.kept, n, |s| &s.v, Some(&masks));
+        Some(Background { image: bg })
+    }
+}
+
+/// Per pixel, the median of `plane` over `frames`, leaving out masked samples (but
+/// taking them all when fewer than a quarter are left).
+fn median_plane(
+    frames: &[Small],
+    n: usize,
+    plane: impl Fn(&Small) -> &Vec<f32>,
+    masks: Option<&Vec<Vec<bool>>>,
+) -> Vec<f32> {
+    let mut out = Vec::with_capacity(n);
+    let mut vals: Vec<f32> = Vec::with_capacity(frames.len());
+    for i in 0..n {
+        vals.clear();
+        for (k, s) in frames.iter().enumerate() {
+            let masked = masks
+                .and_then(|m| m.get(k))
+                .and_then(|m| m.get(i))
+                .copied()
+                .unwrap_or(false);
+            if !masked && let Some(&v) = plane(s).get(i) {
+                vals.push(v);
+            }
+        }
+        if vals.len() * 4 < frames.len() {
+            vals.clear();
+            vals.extend(frames.iter().filter_map(|s| plane(s).get(i).copied()));
+        }
+        out.push(median_f32(&mut vals).unwrap_or(0.0));
+    }
+    out
+}
+
+fn median_f32(v: &mut [f32]) -> Option<f32> {
+    if v.is_empty() {
+        return None;
+    }
+    let mid = v.len() / 2;
+    let (_, m, _) = v.select_nth_unstable_by(mid, f32::total_cmp);
+    Some(*m)
+}
+
+/// How much each coarse pixel of `s` differs from the background `bg` (levels:
+/// the larger of the brightness difference and the weighted colour differences; 0
+/// for a shadow: darker by at most [`Params::shadow_darkest`] and of the same hue),
+/// and per pixel whether it was a shadow.
+pub fn differences(s: &Small, bg: &Small, p: &Params) -> (Vec<f32>, usize) {
+    let cw = p.colour_weight as f32;
+    let darkest = p.shadow_darkest as f32;
+    let hue = p.shadow_hue_levels as f32;
+    let mut shadows = 0;
+    let d =
+        s.y.iter()
+            .zip(&s.u)
+            .zip(&s.v)
+            .zip(bg.y.iter().zip(&bg.u).zip(&bg.v))
+            .map(|(((&y, &u), &v), ((&by, &bu), &bv))| {
+                let dy = y - by;
+                let lit = (by - 16.0).max(1.0);
+                let a = (y - 16.0) / lit;
+                if dy < 0.0
+                    && a >= 1.0 - darkest
+                    && ((u - 128.0) - a * (bu - 128.0)).abs() <= hue
+                    && ((v - 128.0) - a * (bv - 128.0)).abs() <= hue
+                {
+                    shadows += 1;
+                    return 0.0;
+                }
+                dy.abs().max(cw * (u - bu).abs()).max(cw * (v - bv).abs())
+            })
+            .collect();
+    (d, shadows)
+}
+
+/// The level above which a difference marks a pixel: [`Params::differ_sigmas`]
+/// times the differences' robust scatter (their median absolute value, most pixels
+/// being background), at least [`Params::differ_levels`].
+pub fn threshold(d: &[f32], p: &Params) -> f32 {
+    let step = (d.len() / 4096).max(1);
+    let mut s: Vec<f32> = d.iter().step_by(step).copied().collect();
+    let med = median_f32(&mut s).unwrap_or(0.0);
+    (p.differ_sigmas as f32 * 1.4826 * med).max(p.differ_levels as f32)
+}
+
+/// The mask grown by one pixel each way (8-neighbours).
+fn dilate(m: &[bool], w: usize, h: usize) -> Vec<bool> {
+    let mut out = vec![false; m.len()];
+    for y in 0..h {
+        for x in 0..w {
+            if !m.get(y * w + x).copied().unwrap_or(false) {
+                continue;
+            }
+            for yy in y.saturating_sub(1)..(y + 2).min(h) {
+                for xx in x.saturating_sub(1)..(x + 2).min(w) {
+                    if let Some(o) = out.get_mut(yy * w + xx) {
+                        *o = true;
+                    }
+                }
+            }
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::vision::gray::Gray;
+
+    fn flat(w: usize, h: usize, level: u8) -> Frame {
+        Frame::from_gray(Gray::filled(w, h, level))
+    }
+
+    #[test]
+    fn the_median_leaves_out_what_passes() {
+        // A bright square visits each place in fewer than half the frames.
+        let p = Params {
+            coarse_width: 16,
+            ..Params::default()
+        };
+        let mut l = Learner::new(p);
+        for k in 0..9 {
+            let mut f = flat(16, 8, 60);
+            for y in 2..6 {
+                for x in k..k + 4 {
+                    if x < 16 {
+                        f.luma.data[y * 16 + x] = 200;
+                    }
+                }
+            }
+            l.push(&f);
+        }
+        let bg = l.finish().unwrap();
+        assert!(bg.image.y.iter().all(|&v| v == 60.0), "{:?}", bg.image.y);
+    }
+
+    #[test]
+    fn a_shadow_is_not_a_difference_but_a_dark_ball_is() {
+        let p = Params::default();
+        let bg = Small::of(&flat(4, 2, 180), 1);
+        let mut s = bg.clone();
+        s.y[0] = 16.0 + 0.7 * (180.0 - 16.0); // a shadow: 70 % of the light
+        s.y[1] = 16.0 + 0.2 * (180.0 - 16.0); // a black ball
+        s.u[2] = 150.0; // a blue ball of the wall's brightness
+        let (d, shadows) = differences(&s, &bg, &p);
+        assert_eq!(shadows, 1);
+        assert_eq!(d[0], 0.0);
+        assert!(d[1] > 100.0);
+        assert_eq!(d[2], 44.0);
+        assert_eq!(d[3], 0.0);
+    }
+}

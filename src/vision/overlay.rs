@@ -1,0 +1,184 @@
+//! What was tracked, drawn over the frames (`track --overlay`): each found ball's
+//! outline, centre and mark, and a contact sheet of a few such frames, so a student
+//! checks the tracking at a glance, as in Tracker. Pure: pictures in, pictures out.
+//! Drawn by hand rather than with imageproc, whose circles sit on whole pixels: the
+//! fitted centres are sub-pixel, and the drawing is anti-aliased by distance.
+
+use image::{Rgb, RgbImage};
+
+/// One ball found in one frame, pixels: its centre, radius and mark (if found).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Found {
+    pub centre: (f64, f64),
+    pub radius: f64,
+    pub mark: Option<(f64, f64)>,
+}
+
+/// The colours of the two balls' drawings (first, second), bright on the dark halo
+/// drawn under them so they show on any background.
+pub const COLOURS: [[u8; 3]; 2] = [[255, 220, 0], [0, 220, 255]];
+const HALO: [u8; 3] = [0, 0, 0];
+
+/// Draws each ball of `found` (the i-th in `COLOURS[i]`) onto `img`: its outline, a
+/// cross at its centre, a line to its mark and a ring around the mark.
+pub fn draw(img: &mut RgbImage, found: &[Option<Found>]) {
+    for (i, f) in found.iter().enumerate() {
+        let Some(f) = f else { continue };
+        let colour = COLOURS[i % COLOURS.len()];
+        let width = (f.radius / 25.0).clamp(1.2, 4.0);
+        let arm = (0.25 * f.radius).max(4.0);
+        let (cx, cy) = f.centre;
+        let mark_ring = (0.15 * f.radius).max(3.0);
+        // The halo first, then the colour over it.
+        for (c, w) in [(HALO, width + 2.0), (colour, width)] {
+            ring(img, f.centre, f.radius, w, c);
+            segment(img, (cx - arm, cy), (cx + arm, cy), w, c);
+            segment(img, (cx, cy - arm), (cx, cy + arm), w, c);
+            if let Some(m) = f.mark {
+                ring(img, m, mark_ring, w, c);
+                // The line from the centre to the mark's ring (the spin angle).
+                let (dx, dy) = (m.0 - cx, m.1 - cy);
+                let d = dx.hypot(dy);
+                if d > mark_ring {
+                    let s = (d - mark_ring) / d;
+                    segment(img, f.centre, (cx + s * dx, cy + s * dy), w, c);
+                }
+            }
+        }
+    }
+}
+
+/// Blends `colour` into the pixel `(x, y)` by `alpha` (0–1).
+fn blend(img: &mut RgbImage, x: i64, y: i64, colour: [u8; 3], alpha: f64) {
+    if alpha <= 0.0 || x < 0 || y < 0 || x >= i64::from(img.width()) || y >= i64::from(img.height())
+    {
+        return;
+    }
+    let p = img.get_pixel_mut(x as u32, y as u32);
+    let a = alpha.min(1.0);
+    for c in 0..3 {
+        p[c] = (f64::from(p[c]) * (1.0 - a) + f64::from(colour[c]) * a).round() as u8;
+    }
+}
+
+/// The pixels within `reach` of the box `(x0, y0)–(x1, y1)`, clipped to the picture.
+fn pixels(img: &RgbImage, lo: (f64, f64), hi: (f64, f64), reach: f64) -> Vec<(i64, i64)> {
+    let clip = |v: f64, n: u32| (v.max(-1.0) as i64).min(i64::from(n));
+    let (x0, x1) = (
+        clip((lo.0 - reach).floor(), img.width()),
+        clip((hi.0 + reach).ceil(), img.width()),
+    );
+    let (y0, y1) = (
+        clip((lo.1 - reach).floor(), img.height()),
+        clip((hi.1 + reach).ceil(), img.height()),
+    );
+    (y0..=y1)
+        .flat_map(|y| (x0..=x1).map(move |x| (x, y)))
+        .collect()
+}
+
+/// A circle of radius `r` about `c`, `width` px wide, anti-aliased.
+fn ring(img: &mut RgbImage, c: (f64, f64), r: f64, width: f64, colour: [u8; 3]) {
+    if !(c.0.is_finite() && c.1.is_finite() && r.is_finite()) {
+        return;
+    }
+    for (x, y) in pixels(img, (c.0 - r, c.1 - r), (c.0 + r, c.1 + r), width + 1.0) {
+        let d = ((x as f64 - c.0).hypot(y as f64 - c.1) - r).abs();
+        blend(img, x, y, colour, 0.5 * width + 0.5 - d);
+    }
+}
+
+/// A line from `a` to `b`, `width` px wide, anti-aliased.
+fn segment(img: &mut RgbImage, a: (f64, f64), b: (f64, f64), width: f64, colour: [u8; 3]) {
+    if !(a.0.is_finite() && a.1.is_finite() && b.0.is_finite() && b.1.is_finite()) {
+        return;
+    }
+    let (lo, hi) = ((a.0.min(b.0), a.1.min(b.1)), (a.0.max(b.0), a.1.max(b.1)));
+    let (dx, dy) = (b.0 - a.0, b.1 - a.1);
+    let len2 = (dx * dx + dy * dy).max(1e-12);
+    for (x, y) in pixels(img, lo, hi, width + 1.0) {
+        let (px, py) = (x as f64 - a.0, y as f64 - a.1);
+        let t = ((px * dx + py * dy) / len2).clamp(0.0, 1.0);
+        let d = (px - t * dx).hypot(py - t * dy);
+        blend(img, x, y, colour, 0.5 * width + 0.5 - d);
+    }
+}
+
+/// The frames to show on a contact sheet of `frames` frames: at most `count`, evenly
+/// spread from the first to the last.
+pub fn sheet_frames(frames: usize, count: usize) -> Vec<usize> {
+    if frames == 0 || count == 0 {
+        return Vec::new();
+    }
+    let n = count.min(frames);
+    if n == 1 {
+        return vec![0];
+    }
+    (0..n).map(|i| i * (frames - 1) / (n - 1)).collect()
+}
+
+/// A contact sheet: `tiles` (drawn frames, all one size) shrunk to at most `tile_width`
+/// px wide, `columns` to a row, on a dark grey ground with a gap between.
+pub fn sheet(tiles: &[RgbImage], columns: usize, tile_width: u32) -> RgbImage {
+    const GAP: u32 = 4;
+    let Some(first) = tiles.first() else {
+        return RgbImage::new(1, 1);
+    };
+    let w = first.width().min(tile_width).max(1);
+    let h = ((f64::from(first.height()) * f64::from(w) / f64::from(first.width())).round() as u32)
+        .max(1);
+    let cols = columns.clamp(1, tiles.len()) as u32;
+    let rows = (tiles.len() as u32).div_ceil(cols);
+    let mut out = RgbImage::from_pixel(
+        GAP + cols * (w + GAP),
+        GAP + rows * (h + GAP),
+        Rgb([40, 40, 40]),
+    );
+    for (i, t) in tiles.iter().enumerate() {
+        let small = if t.width() == w {
+            t.clone()
+        } else {
+            image::imageops::resize(t, w, h, image::imageops::FilterType::Triangle)
+        };
+        let (c, r) = (i as u32 % cols, i as u32 / cols);
+        image::imageops::replace(
+            &mut out,
+            &small,
+            i64::from(GAP + c * (w + GAP)),
+            i64::from(GAP + r * (h + GAP)),
+        );
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_outline_is_drawn_at_the_radius_and_not_inside() {
+        let mut img = RgbImage::from_pixel(100, 100, Rgb([128, 128, 128]));
+        let f = Found {
+            centre: (50.3, 49.6),
+            radius: 30.0,
+            mark: None,
+        };
+        draw(&mut img, &[Some(f)]);
+        // On the circle (to the right of the centre): the first ball's colour.
+        let on = img.get_pixel((50.3 + 30.0f64).round() as u32, 50);
+        assert_eq!(on.0, COLOURS[0], "{on:?}");
+        // Halfway in, between the cross and the outline: untouched.
+        assert_eq!(img.get_pixel(50 + 15, 50 + 15).0, [128, 128, 128]);
+    }
+
+    #[test]
+    fn a_sheet_of_frames_spreads_them_and_keeps_their_shape() {
+        assert_eq!(sheet_frames(100, 4), vec![0, 33, 66, 99]);
+        assert_eq!(sheet_frames(2, 12), vec![0, 1]);
+        assert!(sheet_frames(0, 12).is_empty());
+        let tiles = vec![RgbImage::new(1920, 1080); 5];
+        let s = sheet(&tiles, 4, 480);
+        // 4 columns of 480 px and 2 rows of 270 px, with 4 px gaps.
+        assert_eq!((s.width(), s.height()), (4 + 4 * 484, 4 + 2 * 274));
+    }
+}

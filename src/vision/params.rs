@@ -1,0 +1,119 @@
+//! Every threshold of the tracker in one place, with its default and why (as
+//! rapier's `IntegrationParameters` does for a physics step): `track`'s options fill
+//! the few a user sets (`--roi`, `--ball-at`), the rest are the tracker's own.
+
+/// A rectangle of the frame, px: left, top, width, height.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Roi {
+    pub x: f64,
+    pub y: f64,
+    pub width: f64,
+    pub height: f64,
+}
+
+impl Roi {
+    /// True when the point `(x, y)` (px) lies inside.
+    pub fn contains(&self, x: f64, y: f64) -> bool {
+        x >= self.x && x < self.x + self.width && y >= self.y && y < self.y + self.height
+    }
+}
+
+/// The tracker's parameters.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Params {
+    /// Where to look (`--roi`); `None`, the whole frame. Default `None`.
+    pub roi: Option<Roi>,
+    /// A point on one ball in the first frame, px (`--ball-at`, a click in the app):
+    /// the blob under it is a ball whatever else the frame holds. Default `None`.
+    pub ball_at: Option<(f64, f64)>,
+    /// Smallest ball radius looked for, px. Default 8: below that the outline has
+    /// too few edge pixels for a sub-pixel circle (≈ 50 points on a half circle).
+    pub min_radius: f64,
+    /// Width the frame is reduced to for the coarse look (the background and the
+    /// blobs), px. Default 320: a 1080p frame by 6, which keeps a ball of 8 px
+    /// radius over 2 coarse pixels and costs ~1/36 of the frame's pixels.
+    pub coarse_width: usize,
+    /// Frames kept (reduced) to learn the background from: their per-pixel median.
+    /// Default 48: enough that a ball resting for a third of the clip is outvoted,
+    /// few enough that the median costs little (48 × 320 × 180 bytes a plane).
+    pub background_frames: usize,
+    /// A coarse pixel differs from the background when its difference exceeds this
+    /// many times the frame's scatter of differences. Default 5: noise passes one
+    /// pixel in ~10⁵ (a 320 × 180 frame: under one).
+    pub differ_sigmas: f64,
+    /// … and at least this many levels. Default 10: the step an h264 encode at high
+    /// compression leaves at sharp edges of the bench (ringing, blocks).
+    pub differ_levels: f64,
+    /// Weight of a colour difference (U, V) against one of brightness. Default 2: the
+    /// colour planes span about half the levels brightness does for the same
+    /// saturation change, and a coloured ball on a wall of its brightness differs
+    /// only in them.
+    pub colour_weight: f64,
+    /// A shadow: darker than the background, by no more than this share of its
+    /// brightness, and of the same hue (colour difference scaled as the brightness,
+    /// within [`Params::shadow_hue_levels`]). Default 0.5: a cast shadow under a lamp
+    /// keeps at least half the light; a black ball on a grey wall is darker still.
+    pub shadow_darkest: f64,
+    /// Colour difference levels a shadow's hue may differ from the lit background's.
+    /// Default 6: compression and noise move U and V by a few levels.
+    pub shadow_hue_levels: f64,
+    /// An outline is poor below this share of its circle's 10° sectors covered by
+    /// edge points. Default 0.35: the rail hides up to the lower half, a blurred or
+    /// touching ball leaves less.
+    pub min_coverage: f64,
+    /// An outline is poor when its edge points scatter more than this about the
+    /// circle, px RMS. Default 1.0: a sharp edge gives 0.1–0.3 px, a blur or a
+    /// non-round blob more.
+    pub max_rms: f64,
+    /// Both balls have one radius: a fit farther than this share from the radius
+    /// found so far is not a ball. Default 0.15 (a blur widens the edge by a few %).
+    pub radius_tolerance: f64,
+    /// A ball fitted smaller than this share of the blob it was found in is not the
+    /// ball (the mark, a highlight). Default 0.6: the blob of a ball is the ball
+    /// plus at most a shadow's fringe.
+    pub smallest_in_blob: f64,
+    /// The search window about the predicted centre, in radii. Default 0.5: a ball
+    /// moves under a radius a frame at any rate used for this experiment (1 m/s at
+    /// 30 frames/s is 33 mm, over a 12 mm ball's radius: there the window grows with
+    /// the speed seen).
+    pub window_radii: f64,
+    /// Two balls touch (an impact, outlines merge) when their gap is under this, px.
+    /// Default 2.
+    pub touch_gap: f64,
+    /// Refuse when the centres scatter across the groove's line by more than this
+    /// share of the radius (RMS). Default 0.15: a ball rolls on the rail, its
+    /// centre's height stays within the pixel noise; a "ball" that swings across
+    /// the groove is something else.
+    pub max_across: f64,
+    /// The mark stands out from the ball's surface by at least this many pixel-noise
+    /// scatters … Default 6.
+    pub mark_sigmas: f64,
+    /// … and this many levels. Default 10 (a glossy ball's shading texture is less).
+    pub mark_levels: f64,
+}
+
+impl Default for Params {
+    fn default() -> Self {
+        Params {
+            roi: None,
+            ball_at: None,
+            min_radius: 8.0,
+            coarse_width: 320,
+            background_frames: 48,
+            differ_sigmas: 5.0,
+            differ_levels: 10.0,
+            colour_weight: 2.0,
+            shadow_darkest: 0.5,
+            shadow_hue_levels: 6.0,
+            min_coverage: 0.35,
+            max_rms: 1.0,
+            radius_tolerance: 0.15,
+            smallest_in_blob: 0.6,
+            window_radii: 0.5,
+            touch_gap: 2.0,
+            max_across: 0.15,
+            mark_sigmas: 6.0,
+            mark_levels: 10.0,
+        }
+    }
+}

@@ -1,0 +1,164 @@
+//! `track --overlay FILE` (issue 34): what was found drawn over the film, checked on
+//! the picture itself: the drawn outline sits on the true outline of each ball (not
+//! inside it, not beside it); bad FILE names refused in one line before tracking.
+
+use std::path::Path;
+
+use crate::common::{paper_scene, scratch_dir};
+use crate::film::{Film, Look};
+use groovelab::input::video::write;
+use groovelab::vision::overlay::COLOURS;
+
+/// A 320×180 clip of 30 frames (R = 13.75 px, 100 frames/s) as a folder of PNGs.
+fn film(dir: &Path) -> Film {
+    let look = Look {
+        width: 320,
+        height: 180,
+        px_per_m: 500.0,
+        origin: (160.0, 85.0),
+        from: -0.15,
+        ..Look::default()
+    };
+    let film = Film::new(&paper_scene(), look, 0.3);
+    std::fs::create_dir_all(dir).unwrap();
+    for k in 0..30 {
+        let p = dir.join(format!("frame{:04}.png", k + 1));
+        write::png(&p, &film.rgb(k), look.width, look.height).unwrap();
+    }
+    film
+}
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    let out = crate::common::groovelab(args);
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+/// True when the pixel has the hue of one of the drawing's colours (yellow: red and
+/// green well above blue; cyan: green and blue well above red): the anti-aliased edge
+/// blends them with the black halo and the frame, which is grey.
+fn drawn(p: &image::Rgb<u8>) -> bool {
+    let [r, g, b] = p.0.map(i32::from);
+    let yellow = r > b + 60 && g > b + 60;
+    let cyan = g > r + 60 && b > r + 60;
+    yellow || cyan
+}
+
+/// The share of 36 directions over the upper half of the circle of radius `r` about
+/// `c` in which a drawn pixel lies within `slack` px of the circle.
+fn drawn_share(img: &image::RgbImage, c: (f64, f64), r: f64, slack: f64) -> f64 {
+    let mut hits = 0;
+    for j in 0..36 {
+        // From 10° to 170° above the horizontal (the rail hides the lower half).
+        let a = (10.0 + 160.0 * j as f64 / 35.0).to_radians();
+        let mut hit = false;
+        let mut s = -slack;
+        while s <= slack {
+            let (x, y) = (c.0 + (r + s) * a.cos(), c.1 - (r + s) * a.sin());
+            let (xi, yi) = (x.round() as i64, y.round() as i64);
+            if xi >= 0 && yi >= 0 && (xi as u32) < img.width() && (yi as u32) < img.height() {
+                hit |= drawn(img.get_pixel(xi as u32, yi as u32));
+            }
+            s += 0.25;
+        }
+        hits += usize::from(hit);
+    }
+    hits as f64 / 36.0
+}
+
+#[test]
+fn the_overlay_sheet_draws_each_outline_on_its_ball() {
+    let dir = scratch_dir("video_overlay", "sheet");
+    let frames = dir.join("frames");
+    let film = film(&frames);
+    let sheet = dir.join("check.png");
+    let (code, out, err) = run(&[
+        "track",
+        frames.to_str().unwrap(),
+        "--fps",
+        "100",
+        "--radius",
+        "2.75cm",
+        "--output",
+        dir.join("tracks.txt").to_str().unwrap(),
+        "--overlay",
+        sheet.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("wrote the overlay "), "{out}");
+    // The hue test knows the drawing's colours.
+    assert!(COLOURS.iter().all(|c| drawn(&image::Rgb(*c))));
+    let img = image::open(&sheet).unwrap().to_rgb8();
+    // 12 tiles of 320×180 (not shrunk: narrower than 480 px), 4 to a row, 4 px apart.
+    assert_eq!((img.width(), img.height()), (4 + 4 * 324, 4 + 3 * 184));
+    let shown: Vec<usize> = (0..12).map(|i| i * 29 / 11).collect();
+    let mut checked = 0;
+    for (tile, &k) in shown.iter().enumerate() {
+        let (ox, oy) = (
+            4.0 + 324.0 * (tile % 4) as f64,
+            4.0 + 184.0 * (tile / 4) as f64,
+        );
+        let truth = film.truth(k);
+        // Balls apart by more than a radius (at the impact neither is measured).
+        let gap = (truth[0].centre.0 - truth[1].centre.0).abs() - 2.0 * truth[0].radius;
+        if gap < 3.0 {
+            continue;
+        }
+        for t in truth {
+            let c = (ox + t.centre.0, oy + t.centre.1);
+            let r = t.radius;
+            // On the ball's outline: drawn nearly all round (within 1.5 px: the fitted
+            // radius and centre are within a few tenths of a pixel of the truth).
+            let on = drawn_share(&img, c, r, 1.5);
+            assert!(
+                on >= 0.9,
+                "frame {k}: outline drawn in {on:.2} of the directions"
+            );
+            // Well inside and well outside: not drawn (the mark's ring reaches 0.7 R).
+            for f in [0.8, 1.35] {
+                let off = drawn_share(&img, c, f * r, 0.0);
+                assert!(
+                    off <= 0.1,
+                    "frame {k}: drawn at {f} R in {off:.2} of the directions"
+                );
+            }
+            checked += 1;
+        }
+    }
+    assert!(checked >= 16, "{checked} balls checked");
+}
+
+#[test]
+fn a_bad_overlay_name_is_refused_in_one_line_before_tracking() {
+    let dir = scratch_dir("video_overlay", "bad");
+    let frames = dir.join("frames");
+    film(&frames);
+    let missing = dir.join("no-such-folder").join("check.png");
+    for (file, says) in [
+        (dir.join("check.txt"), "not '.txt'"),
+        (dir.join("check"), "a name without an ending"),
+        (missing, "no-such-folder"),
+    ] {
+        let (code, _, err) = run(&[
+            "track",
+            frames.to_str().unwrap(),
+            "--fps",
+            "100",
+            "--radius",
+            "2.75cm",
+            "--overlay",
+            file.to_str().unwrap(),
+        ]);
+        assert_eq!(code, 2, "{err}");
+        let line = err.trim();
+        assert!(
+            line.starts_with("error: ") && line.lines().count() == 1,
+            "{err}"
+        );
+        assert!(line.contains(says), "{line}");
+        assert!(!file.exists());
+    }
+}
