@@ -75,9 +75,7 @@ pub fn run(cli: &Cli) -> Result<Response, CliError> {
         })
         .map(Response::Print),
         Some(Command::Sweep(args)) => sweep::run(&cli.scene, args).map(Response::Print),
-        Some(Command::Track(args)) => {
-            track::run(&cli.scene, &cli.data, args).map(Response::Print)
-        }
+        Some(Command::Track(args)) => track::run(&cli.scene, &cli.data, args).map(Response::Print),
         Some(Command::Data(args)) => data::run(args, &cli.scene, &cli.data).map(Response::Print),
         Some(Command::Presets) => Ok(Response::Print(presets())),
         Some(Command::Completions { shell }) => Ok(Response::Print(manual::completions(*shell))),

@@ -112,6 +112,7 @@ impl Film {
     }
 
     /// Both balls at time `t`: their centres and marks, px.
+    #[allow(clippy::indexing_slicing)] // the two balls of a fixed pair
     pub fn at(&self, t: f64) -> [Truth; 2] {
         let (u, up) = self.axes();
         let s = self.look.px_per_m;
@@ -170,6 +171,7 @@ impl Film {
     }
 
     /// Frame `k`'s luma (of [`Film::rgb`], full range).
+    #[allow(clippy::indexing_slicing)] // test films: pixels inside their own size
     pub fn gray(&self, k: usize) -> Gray {
         let rgb = self.rgb(k);
         let data = rgb
@@ -188,6 +190,7 @@ impl Film {
     }
 
     /// Frame `k`'s luma before quantization, with noise.
+    #[allow(clippy::indexing_slicing)] // test films: pixels inside their own size
     fn luma(&self, k: usize) -> Vec<f64> {
         let l = &self.look;
         let (w, h) = (l.width, l.height);
@@ -224,6 +227,7 @@ impl Film {
     }
 
     /// The balls, blurred over the exposure, onto `img`.
+    #[allow(clippy::indexing_slicing)] // the two balls of a fixed pair
     fn draw_balls(&self, img: &mut [f64], k: usize) {
         let l = &self.look;
         let t = self.time(k);
@@ -248,6 +252,7 @@ impl Film {
     }
 
     /// One ball at each of its `poses` over the exposure, averaged.
+    #[allow(clippy::indexing_slicing)] // test films: the box is clipped to the picture; poses is never empty
     fn draw_ball(&self, img: &mut [f64], poses: &[Truth]) {
         let l = &self.look;
         let (w, h) = (l.width as isize, l.height as isize);

@@ -118,6 +118,7 @@ pub struct Tracks {
 
 /// The tracks of `tracker`'s frames, shown at `times` (s, one per frame), for balls
 /// of radius `radius` (m); `scale` (px/m) overrides the scale from the radius.
+#[allow(clippy::indexing_slicing)] // slots are 0 or 1, the two slots' centres; the radii are never empty here (a ball was seen)
 pub fn tracks(
     tracker: &Tracker,
     times: Vec<f64>,
@@ -163,7 +164,7 @@ pub fn tracks(
     // Never a confident wrong scale: radii that disagree are no ball's (the mark, a
     // highlight or clutter taken for one in part of the frames).
     let spread = 1.4826 * dev.get(dev.len() / 2).copied().unwrap_or(0.0) / r_px;
-    if scale.is_none() && !(spread <= MAX_RADIUS_SPREAD) {
+    if scale.is_none() && (spread.is_nan() || spread > MAX_RADIUS_SPREAD) {
         return Err(TracksError::RadiiDisagree {
             median_px: r_px,
             scatter: spread,
@@ -200,8 +201,8 @@ pub fn tracks(
         let c = &centres[s];
         let across = |p: &[f64; 2]| p[0] * n.0 + p[1] * n.1;
         let mean = c.iter().map(across).sum::<f64>() / c.len() as f64;
-        let rms = (c.iter().map(|p| (across(p) - mean).powi(2)).sum::<f64>() / c.len() as f64)
-            .sqrt();
+        let rms =
+            (c.iter().map(|p| (across(p) - mean).powi(2)).sum::<f64>() / c.len() as f64).sqrt();
         if rms > tracker.params.max_across * r_px {
             return Err(TracksError::Swings {
                 name,
@@ -224,6 +225,7 @@ pub fn tracks(
 
 /// The names of the balls in `slots` (left to right): with one ball, the side it
 /// comes from (it moves away from it at first).
+#[allow(clippy::indexing_slicing)] // one slot, seen in at least 3 frames
 fn names_of(
     slots: &[usize],
     centres: &[Vec<[f64; 2]>],
@@ -238,6 +240,7 @@ fn names_of(
     vec![if moves >= 0.0 { "left" } else { "right" }]
 }
 
+#[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
 fn centres_of(tracker: &Tracker, slot: usize) -> Vec<[f64; 2]> {
     tracker
         .frames
@@ -279,6 +282,7 @@ fn groove(paths: &[&[[f64; 2]]]) -> (f64, f64, bool) {
 }
 
 /// Slot `slot` of `tracker` as a [`BallTrack`] named `name`, through `to_m`.
+#[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
 fn ball_track(
     tracker: &Tracker,
     slot: usize,

@@ -42,6 +42,7 @@ mod side_by_side;
 mod small_screens;
 mod story;
 mod sweep;
+mod tracking;
 mod tracks;
 mod tui;
 mod units_checked;
