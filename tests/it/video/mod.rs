@@ -1,0 +1,5 @@
+//! Videos: tracking balls against truth, and a video given as `--data` everywhere.
+
+pub(crate) mod app;
+pub(crate) mod tracker_looks;
+pub(crate) mod tracking;
