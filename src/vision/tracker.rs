@@ -133,20 +133,25 @@ impl Tracker {
         let k = self.frames.len();
         self.counts.frames += 1;
         let p = self.params;
-        let coarse = match &self.background {
-            Some(bg) => detect::against(&Small::of(frame, bg.image.factor), bg, &p),
-            None => {
-                let mut c = detect::coarse(img, p.min_radius);
-                if let Some(roi) = p.roi {
-                    c.balls.retain(|b| {
-                        let g = b.guess();
-                        roi.contains(g.x, g.y)
-                    });
-                }
-                c
-            }
-        };
-        if coarse.balls.len() > 2 {
+        // The look against a smooth surface of luma, as before a background: it
+        // sees a ball at rest where the background learned it (a target ball
+        // waiting for the impact); the look against the background adds what
+        // differs in colour or against a busy bench. Crowded counts each look alone.
+        let mut coarse = detect::coarse(img, p.min_radius);
+        if let Some(roi) = p.roi {
+            coarse.balls.retain(|b| {
+                let g = b.guess();
+                roi.contains(g.x, g.y)
+            });
+        }
+        let mut crowded = coarse.balls.len() > 2;
+        if let Some(bg) = &self.background {
+            let more = detect::against(&Small::of(frame, bg.image.factor), bg, &p);
+            crowded &= more.balls.len() > 2;
+            coarse.balls.extend(more.balls);
+            coarse.pairs.extend(more.pairs);
+        }
+        if crowded {
             self.counts.crowded += 1;
         }
         let noise = pixel_noise(img);
@@ -156,7 +161,7 @@ impl Tracker {
                 .map_or(detect::factor(img.width), |b| b.image.factor) as f64
         });
         let mut fits: Vec<Result<Outline, LeftOut>> = Vec::new();
-        for b in coarse.balls.iter().take(4) {
+        for b in coarse.balls.iter().take(6) {
             let fit = self
                 .refine(frame, b.guess(), (1.5 * f).max(4.0))
                 .and_then(|o| {
