@@ -37,6 +37,7 @@ pub struct Outline {
 /// Fits the outline of the ball near `guess`, searching `band` px either side of it;
 /// `polarity` the ball's (+1 brighter, −1 darker than around it), or 0 to take the
 /// sign most edge points have. `None` when too few edge points are found.
+#[allow(clippy::indexing_slicing)] // the median of a non-empty list (at least 12 points, checked above)
 pub fn fit(img: &Gray, guess: Circle, band: f64, polarity: f64) -> Option<Outline> {
     let (points, sign) = edge_points(img, guess, band, polarity)?;
     let mut keep: Vec<[f64; 2]> = points;
@@ -72,6 +73,7 @@ pub fn fit(img: &Gray, guess: Circle, band: f64, polarity: f64) -> Option<Outlin
 }
 
 /// The outline's numbers from the kept `points` and their circle `c`.
+#[allow(clippy::indexing_slicing)] // fixed 3×3 sums over 0..3, and a sector index clamped to 0..=35
 fn describe(points: &[[f64; 2]], c: Circle, polarity: f64) -> Outline {
     let n = points.len() as f64;
     let res2: f64 = points.iter().map(|p| (dist(p, &c) - c.r).powi(2)).sum();
@@ -112,6 +114,7 @@ fn dist(p: &[f64; 2], c: &Circle) -> f64 {
 }
 
 /// Gauss–Newton on the geometric distances from `start`; `None` if it diverges.
+#[allow(clippy::indexing_slicing)] // fixed 3×3 sums over 0..3
 fn geometric(points: &[[f64; 2]], start: Circle) -> Option<Circle> {
     let mut c = start;
     for _ in 0..20 {
@@ -149,6 +152,7 @@ fn geometric(points: &[[f64; 2]], start: Circle) -> Option<Circle> {
 /// The Sobel gradient (x, y, magnitude; per pixel) over the box `(x0, y0, x1, y1)`,
 /// computed only where `near(x, y, 1.5)` (zero elsewhere).
 #[allow(clippy::type_complexity)]
+#[allow(clippy::indexing_slicing)] // the box is clipped one pixel inside the frame, and the buffers are its size
 fn gradient(
     img: &Gray,
     (x0, y0, x1, y1): (isize, isize, isize, isize),
@@ -179,6 +183,7 @@ fn gradient(
 
 /// Sub-pixel edge points within `band` of the circle `guess`, of the polarity asked
 /// for (or the most common one), and that polarity.
+#[allow(clippy::indexing_slicing)] // pixels one inside the clipped box, so their neighbours are in it
 fn edge_points(
     img: &Gray,
     guess: Circle,

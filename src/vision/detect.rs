@@ -143,6 +143,7 @@ fn classify(mask: &mut [bool], w: usize, h: usize, f: usize, min_radius: f64) ->
 
 /// Drops horizontal runs of marked pixels longer than `longest` (rails), a run
 /// going on across gaps of up to two pixels (noise breaks a rail's edge row).
+#[allow(clippy::indexing_slicing)] // rows of a w × h mask, columns checked against w
 fn drop_long_runs(mask: &mut [bool], w: usize, h: usize, longest: usize) {
     for y in 0..h {
         let row = &mut mask[y * w..(y + 1) * w];
@@ -166,6 +167,7 @@ fn drop_long_runs(mask: &mut [bool], w: usize, h: usize, longest: usize) {
 /// A vertical opening (erosion then dilation by three pixels in a column): takes
 /// away horizontal lines one or two pixels thick (a rail's edge that noise broke
 /// into short runs, which would join a ball to the rail), keeps the balls.
+#[allow(clippy::indexing_slicing)] // x < w, y < h of a w × h mask (h ≥ 3 checked)
 fn open_vertically(mask: &mut [bool], w: usize, h: usize) {
     if h < 3 {
         return;
@@ -195,6 +197,7 @@ struct Region {
 }
 
 /// The 4-connected components of `mask` (cleared as they are taken).
+#[allow(clippy::indexing_slicing)] // neighbours pushed only when inside the w × h mask
 fn blobs(mask: &mut [bool], w: usize, h: usize) -> Vec<Region> {
     let mut out = Vec::new();
     let mut stack = Vec::new();
@@ -245,6 +248,7 @@ fn blobs(mask: &mut [bool], w: usize, h: usize) -> Vec<Region> {
 /// The smooth background of a reduced frame (a quadratic surface fitted to every
 /// third pixel, three rounds leaving out those more than three scatters off), per
 /// pixel, and the scatter of the pixels kept.
+#[allow(clippy::indexing_slicing)] // fixed 6 × 6 sums, samples inside the w × h image
 fn background(img: &Levels) -> (Vec<f32>, f32) {
     let (w, h) = (img.width, img.height);
     let basis = |x: usize, y: usize| {
@@ -300,6 +304,7 @@ fn background(img: &Levels) -> (Vec<f32>, f32) {
 
 /// Solves `a x = b` by Gaussian elimination with partial pivoting; `None` when `a` is
 /// singular.
+#[allow(clippy::indexing_slicing)] // indices below N of N × N arrays
 fn solve<const N: usize>(mut a: [[f64; N]; N], mut b: [f64; N]) -> Option<[f64; N]> {
     for col in 0..N {
         let pivot = (col..N).max_by(|&i, &j| a[i][col].abs().total_cmp(&a[j][col].abs()))?;

@@ -21,6 +21,7 @@ impl Gray {
 
     /// The level at column `x`, row `y` (both inside the frame).
     #[inline]
+    #[allow(clippy::indexing_slicing)] // the hot read of the outline fit, callers keep x, y inside the frame (the fit's box is clipped to it)
     pub fn at(&self, x: usize, y: usize) -> f32 {
         f32::from(self.data[y * self.width + x])
     }
@@ -38,6 +39,7 @@ impl Gray {
 
     /// The frame reduced `factor` times in each direction, each pixel the mean of its
     /// block (the last partial blocks dropped), as f32 levels.
+    #[allow(clippy::indexing_slicing)] // whole blocks only: rows below h·f ≤ height, columns below w·f ≤ width
     pub fn reduced(&self, factor: usize) -> Levels {
         let f = factor.max(1);
         let (w, h) = (self.width / f, self.height / f);

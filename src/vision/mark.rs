@@ -104,6 +104,7 @@ fn spot_radius(img: &Gray, px: isize, py: isize, peak: f64, half: isize, sums: &
 /// The centroid of the spot's contrast around `at`: the shading fitted as a plane
 /// to the ring from 1.6 to 2.2 spot radii (+ 1 px), the weights the contrast against
 /// it within 1.4 radii (+ 1 px), signed by `sign`.
+#[allow(clippy::indexing_slicing)] // the plane's three coefficients
 fn centroid(img: &Gray, at: (f64, f64), size: f64, sign: f64, noise: f64) -> Option<Mark> {
     let (inner, ring0, ring1) = (1.4 * size + 1.0, 1.6 * size + 1.0, 2.2 * size + 1.5);
     let reach = ring1.ceil() as isize;
@@ -172,6 +173,7 @@ struct Integral {
 
 impl Integral {
     /// Over columns `x0..=x1`, rows `y0..=y1` (clipped to the frame).
+    #[allow(clippy::indexing_slicing)] // the box is clipped to the frame; the sums are (w + 1) × (h + 1)
     fn new(img: &Gray, x0: isize, y0: isize, x1: isize, y1: isize) -> Integral {
         let x0 = x0.max(0);
         let y0 = y0.max(0);
@@ -197,6 +199,7 @@ impl Integral {
     }
 
     /// The mean over columns `x0..=x1`, rows `y0..=y1`, clipped to the box.
+    #[allow(clippy::indexing_slicing)] // corners clamped to the sums' size
     fn mean(&self, x0: isize, y0: isize, x1: isize, y1: isize) -> f64 {
         let cx = |x: isize| ((x - self.x0).clamp(0, self.w as isize)) as usize;
         let cy = |y: isize| ((y - self.y0).clamp(0, self.h as isize)) as usize;

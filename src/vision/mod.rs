@@ -1,11 +1,32 @@
-//! Tracking the balls in a video of the experiment: frames as luma (`gray`), a coarse
-//! look for ball-shaped blobs (`detect`), each ball's outline fitted to sub-pixel
-//! accuracy on its visible edge (`circle`), its mark (`mark`), both followed through
-//! the frames (`tracker`), turned into metres and seconds along the groove (`tracks`)
-//! and written as a Tracker-style file (`write`), with small pictures of the frames
-//! for the app (`thumbs`), and drawn over the frames for a user to check
-//! (`overlay`). Pure: the frames come from `input::video`. The synthetic
-//! films that test it are test support (`tests/support/film`).
+//! Tracking the balls in a video of the experiment: frames
+//! in colour (`frame`, with their luma as `gray`), every threshold in one
+//! `params::Params`, the bench's background learned from the clip (`background`),
+//! a coarse look for what differs from it in ball-shaped blobs (`detect`), each
+//! ball's outline fitted to sub-pixel accuracy on its visible edge (`circle`), its
+//! mark (`mark`), both followed through the frames (`tracker`), turned into metres
+//! and seconds along the groove (`tracks`) and written as a Tracker-style file
+//! (`write`), with small pictures of the frames for the app (`thumbs`), and drawn
+//! over the frames for a user to check (`overlay`). Pure: the frames come from
+//! `input::video`; the synthetic films that test it are test support
+//! (`tests/support/film`). How it works and when it refuses: docs/tracking.md.
+
+// Bad frames never panic the tracker: no unchecked index, unwrap or panic here (a
+// short `allow` with its reason where an index is provably in range). Tests may.
+#![deny(
+    clippy::indexing_slicing,
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::panic
+)]
+#![cfg_attr(
+    test,
+    allow(
+        clippy::indexing_slicing,
+        clippy::unwrap_used,
+        clippy::expect_used,
+        clippy::panic
+    )
+)]
 
 /// The tracker's own version: raised whenever a change makes it find other numbers
 /// in the same video (cached tracks are keyed by it, not by the program's version).

@@ -60,6 +60,7 @@ impl Thumbs {
     }
 
     /// `img` reduced to a picture: each pixel the mean of its box of the frame.
+    #[allow(clippy::indexing_slicing)] // whole boxes inside the frame
     fn reduce(&self, img: &Gray) -> Vec<u8> {
         let (tw, th) = (self.width, self.height);
         let mut out = Vec::with_capacity(tw * th);
@@ -187,6 +188,7 @@ impl VideoView {
     }
 
     /// The frame shown at time `t` (s from the first frame): the nearest.
+    #[allow(clippy::indexing_slicing)] // j comes from a search of self.t
     pub fn frame_at(&self, t: f64) -> Option<usize> {
         if self.t.is_empty() || !t.is_finite() {
             return None;
@@ -201,6 +203,7 @@ impl VideoView {
     }
 
     /// The view as bytes: a JSON line, then the pictures.
+    #[allow(clippy::expect_used)] // plain data (numbers and byte vectors) always serializes
     pub fn to_bytes(&self) -> Vec<u8> {
         let mut out = serde_json::to_vec(self).expect("plain data serializes");
         out.push(b'\n');
@@ -211,6 +214,7 @@ impl VideoView {
     }
 
     /// The view from [`VideoView::to_bytes`].
+    #[allow(clippy::indexing_slicing)] // lengths checked before each slice
     pub fn from_bytes(bytes: &[u8]) -> Result<VideoView, Damaged> {
         let nl = bytes
             .iter()
@@ -233,6 +237,7 @@ impl VideoView {
 /// The pictures' dark and bright ends (their 1st and 99th percentiles: the balls
 /// are a small share of a frame) and the level that best parts them in two (Otsu's:
 /// the most variance between the two parts).
+#[allow(clippy::indexing_slicing)] // a 256-bin histogram indexed by a byte
 fn levels(pictures: &[Vec<u8>]) -> [u8; 3] {
     let mut hist = [0u64; 256];
     for p in pictures {

@@ -72,6 +72,14 @@ pub struct Tracker {
     mark_votes: [usize; 2],
 }
 
+/// An outline and how it was found.
+struct Found {
+    outline: Outline,
+    /// In colour (the ball of the wall's brightness), not in brightness.
+    colour: bool,
+    polarity: f64,
+}
+
 /// Marks looked at before their sign (darker or lighter than the ball) is settled.
 const MARK_VOTES: usize = 9;
 
@@ -125,20 +133,25 @@ impl Tracker {
         let k = self.frames.len();
         self.counts.frames += 1;
         let p = self.params;
-        let coarse = match &self.background {
-            Some(bg) => detect::against(&Small::of(frame, bg.image.factor), bg, &p),
-            None => {
-                let mut c = detect::coarse(img, p.min_radius);
-                if let Some(roi) = p.roi {
-                    c.balls.retain(|b| {
-                        let g = b.guess();
-                        roi.contains(g.x, g.y)
-                    });
-                }
-                c
-            }
-        };
-        if coarse.balls.len() > 2 {
+        // The look against a smooth surface of luma, as before a background: it
+        // sees a ball at rest where the background learned it (a target ball
+        // waiting for the impact); the look against the background adds what
+        // differs in colour or against a busy bench. Crowded counts each look alone.
+        let mut coarse = detect::coarse(img, p.min_radius);
+        if let Some(roi) = p.roi {
+            coarse.balls.retain(|b| {
+                let g = b.guess();
+                roi.contains(g.x, g.y)
+            });
+        }
+        let mut crowded = coarse.balls.len() > 2;
+        if let Some(bg) = &self.background {
+            let more = detect::against(&Small::of(frame, bg.image.factor), bg, &p);
+            crowded &= more.balls.len() > 2;
+            coarse.balls.extend(more.balls);
+            coarse.pairs.extend(more.pairs);
+        }
+        if crowded {
             self.counts.crowded += 1;
         }
         let noise = pixel_noise(img);
@@ -148,9 +161,9 @@ impl Tracker {
                 .map_or(detect::factor(img.width), |b| b.image.factor) as f64
         });
         let mut fits: Vec<Result<Outline, LeftOut>> = Vec::new();
-        for b in coarse.balls.iter().take(4) {
+        for b in coarse.balls.iter().take(6) {
             let fit = self
-                .refine(img, b.guess(), (1.5 * f).max(4.0))
+                .refine(frame, b.guess(), (1.5 * f).max(4.0))
                 .and_then(|o| {
                     // The mark or a highlight fitted in a ball's blob: not the ball.
                     if o.circle.r < p.smallest_in_blob * 0.5 * b.width() {
@@ -161,8 +174,8 @@ impl Tracker {
                 });
             fits.push(fit);
         }
-        self.follow(img, &mut fits);
-        self.seed(img, &mut fits);
+        self.follow(frame, &mut fits);
+        self.seed(frame, &mut fits);
         // One fit per ball: of fits of one ball (a blob and the follower), the first.
         let mut kept: Vec<Result<Outline, LeftOut>> = Vec::new();
         for fit in fits {
@@ -258,7 +271,7 @@ impl Tracker {
     /// The follower: each ball seen in the last frames looked for about where it is
     /// predicted now, when no blob gave it (a ball at rest over the pixels the
     /// background learned it at, or faint).
-    fn follow(&mut self, img: &Gray, fits: &mut Vec<Result<Outline, LeftOut>>) {
+    fn follow(&mut self, frame: &Frame, fits: &mut Vec<Result<Outline, LeftOut>>) {
         let k = self.frames.len();
         for slot in 0..2 {
             let Some(l) = self.last.get(slot) else {
@@ -276,7 +289,7 @@ impl Tracker {
                 continue;
             }
             let band = (self.params.window_radii * pred.r).max(3.0);
-            if let Ok(o) = self.refine(img, pred, band) {
+            if let Ok(o) = self.refine(frame, pred, band) {
                 fits.push(Ok(o));
             }
         }
@@ -285,7 +298,7 @@ impl Tracker {
     /// In the first frame with a ball seen, the seed (`Params::ball_at`): the fit
     /// whose disc holds it is a ball and sets the radius; fits of another radius are
     /// not balls. Without such a fit, the outline is sought about the seed itself.
-    fn seed(&mut self, img: &Gray, fits: &mut Vec<Result<Outline, LeftOut>>) {
+    fn seed(&mut self, frame: &Frame, fits: &mut Vec<Result<Outline, LeftOut>>) {
         let Some((sx, sy)) = self.params.ball_at else {
             return;
         };
@@ -295,8 +308,8 @@ impl Tracker {
         let holds = |o: &Outline| (o.circle.x - sx).hypot(o.circle.y - sy) <= o.circle.r;
         let mut at = fits.iter().flatten().find(|o| holds(o)).copied();
         if at.is_none() {
-            at = seed_fit(img, (sx, sy), self.params.min_radius)
-                .and_then(|c| self.refine(img, c, (0.2 * c.r).max(3.0)).ok())
+            at = seed_fit(&frame.luma, (sx, sy), self.params.min_radius)
+                .and_then(|c| self.refine(frame, c, (0.2 * c.r).max(3.0)).ok())
                 .filter(holds);
             if let Some(o) = at {
                 fits.push(Ok(o));
@@ -320,27 +333,123 @@ impl Tracker {
 
     /// The outline near `guess`, twice: in a band `band` px wide either side (the
     /// coarse look's error, or the search window), then narrowly about the first fit.
-    fn refine(&mut self, img: &Gray, guess: Circle, band: f64) -> Result<Outline, LeftOut> {
+    fn refine(&mut self, frame: &Frame, guess: Circle, band: f64) -> Result<Outline, LeftOut> {
         let guess = self.predicted_near(guess).unwrap_or(guess);
         let p = self.params;
-        let first = circle::fit(img, guess, band, self.polarity).ok_or(LeftOut::Poor)?;
-        let o = circle::fit(img, first.circle, 2.5, first.polarity).ok_or(LeftOut::Poor)?;
+        let o = match self.outline(&frame.luma, guess, band, self.polarity) {
+            Some(o) => o,
+            // A ball of the wall's brightness: its outline in colour.
+            None => self
+                .colour_outline(frame, guess, band)
+                .ok_or(LeftOut::Poor)?,
+        };
+        let c = o.outline.circle;
         let r_ok = self
             .radius()
-            .is_none_or(|r| (o.circle.r - r).abs() < p.radius_tolerance * r);
-        if o.coverage < p.min_coverage
-            || o.rms > p.max_rms
+            .is_none_or(|r| (c.r - r).abs() < p.radius_tolerance * r);
+        if o.outline.coverage < p.min_coverage
+            || o.outline.rms > p.max_rms
             || !r_ok
-            || o.circle.r < p.min_radius
-            || p.roi
-                .is_some_and(|roi| !roi.contains(o.circle.x, o.circle.y))
+            || c.r < p.min_radius
+            || p.roi.is_some_and(|roi| !roi.contains(c.x, c.y))
         {
             return Err(LeftOut::Poor);
         }
-        if self.polarity == 0.0 {
+        if self.polarity == 0.0 && !o.colour {
             self.polarity = o.polarity;
         }
-        Ok(o)
+        Ok(o.outline)
+    }
+
+    /// The outline near `guess` in `img`: in a band `band` px wide, then narrowly.
+    fn outline(&self, img: &Gray, guess: Circle, band: f64, polarity: f64) -> Option<Found> {
+        let first = circle::fit(img, guess, band, polarity)?;
+        let o = circle::fit(img, first.circle, 2.5, first.polarity)?;
+        Some(Found {
+            outline: o,
+            colour: false,
+            polarity: o.polarity,
+        })
+    }
+
+    /// The outline near `guess` in colour: the frame's colour difference from the
+    /// background, along the ball's own colour difference at its middle, as an
+    /// image of its own about the ball (the colour planes bilinearly brought to full
+    /// size); `None` without a background or colour to go by.
+    fn colour_outline(&self, frame: &Frame, guess: Circle, band: f64) -> Option<Found> {
+        let bg = &self.background.as_ref()?.image;
+        let reach = guess.r + band + 4.0;
+        let x0 = (guess.x - reach).floor().max(0.0) as usize;
+        let y0 = (guess.y - reach).floor().max(0.0) as usize;
+        let x1 = ((guess.x + reach).ceil() as usize).min(frame.width().saturating_sub(1));
+        let y1 = ((guess.y + reach).ceil() as usize).min(frame.height().saturating_sub(1));
+        if x1 <= x0 + 8 || y1 <= y0 + 8 {
+            return None;
+        }
+        let chroma = |plane: &[u8], x: f64, y: f64| -> f32 {
+            // Chroma sample (i, j) sits at full-size (2i + 0.5, 2j + 0.5).
+            let (cx, cy) = ((x - 0.5) / 2.0, (y - 0.5) / 2.0);
+            let (cw, ch) = (frame.chroma_width, frame.chroma_height);
+            let (i0, j0) = (cx.floor().max(0.0) as usize, cy.floor().max(0.0) as usize);
+            let (i1, j1) = (
+                (i0 + 1).min(cw.saturating_sub(1)),
+                (j0 + 1).min(ch.saturating_sub(1)),
+            );
+            let (fx, fy) = (
+                (cx - i0 as f64).clamp(0.0, 1.0) as f32,
+                (cy - j0 as f64).clamp(0.0, 1.0) as f32,
+            );
+            let at = |i: usize, j: usize| plane.get(j * cw + i).map_or(128.0, |&v| f32::from(v));
+            (at(i0, j0) * (1.0 - fx) + at(i1, j0) * fx) * (1.0 - fy)
+                + (at(i0, j1) * (1.0 - fx) + at(i1, j1) * fx) * fy
+        };
+        let f = bg.factor as f64;
+        let back = |plane: &[f32], x: f64, y: f64| -> f32 {
+            let (i, j) = ((x / f) as usize, (y / f) as usize);
+            plane
+                .get(
+                    j.min(bg.height.saturating_sub(1)) * bg.width
+                        + i.min(bg.width.saturating_sub(1)),
+                )
+                .copied()
+                .unwrap_or(128.0)
+        };
+        // The ball's colour difference at its middle (upper half: above the rail).
+        let (mx, my) = (guess.x, guess.y - 0.3 * guess.r);
+        let du = chroma(&frame.u, mx, my) - back(&bg.u, mx, my);
+        let dv = chroma(&frame.v, mx, my) - back(&bg.v, mx, my);
+        let norm = du.hypot(dv);
+        if norm < self.params.differ_levels as f32 / 2.0 {
+            return None;
+        }
+        let (su, sv) = (du / norm, dv / norm);
+        let gain = self.params.colour_weight as f32;
+        let (w, h) = (x1 - x0 + 1, y1 - y0 + 1);
+        let mut data = Vec::with_capacity(w * h);
+        for y in y0..=y1 {
+            for x in x0..=x1 {
+                let (fx, fy) = (x as f64, y as f64);
+                let d = (chroma(&frame.u, fx, fy) - back(&bg.u, fx, fy)) * su
+                    + (chroma(&frame.v, fx, fy) - back(&bg.v, fx, fy)) * sv;
+                data.push((64.0 + gain * d).round().clamp(0.0, 255.0) as u8);
+            }
+        }
+        let patch = Gray {
+            width: w,
+            height: h,
+            data,
+        };
+        let local = Circle {
+            x: guess.x - x0 as f64,
+            y: guess.y - y0 as f64,
+            r: guess.r,
+        };
+        let mut found = self.outline(&patch, local, band.max(3.0), 1.0)?;
+        found.outline.circle.x += x0 as f64;
+        found.outline.circle.y += y0 as f64;
+        found.outline.lowest += y0 as f64;
+        found.colour = true;
+        Some(found)
     }
 
     /// Where a slot's ball is expected now (moving on as between its last two fits),
@@ -401,6 +510,7 @@ impl Tracker {
 /// A first circle about the seed `at` (a point on a ball): along 32 rays from it,
 /// the first strong luma step; the circle through those steps (least squares of
 /// the algebraic distance), `None` when they do not make one.
+#[allow(clippy::indexing_slicing)] // the Kåsa fit's three coefficients
 fn seed_fit(img: &Gray, at: (f64, f64), min_radius: f64) -> Option<Circle> {
     let reach = (img.width.min(img.height) as f64 / 3.0).max(2.0 * min_radius);
     let inside = |x: f64, y: f64| {
@@ -469,6 +579,7 @@ fn predict(last: &[(usize, Circle)], k: usize) -> Option<Circle> {
 
 /// The pixel noise of a frame, luma levels: from neighbouring pixels' differences
 /// over a sparse sample (their median, so edges do not count).
+#[allow(clippy::indexing_slicing)] // i + 1 < len checked by the loop
 pub fn pixel_noise(img: &Gray) -> f64 {
     let mut d = Vec::with_capacity(4096);
     let step = ((img.width * img.height) / 4096).max(1);
@@ -484,10 +595,7 @@ pub fn pixel_noise(img: &Gray) -> f64 {
 
 /// The median of `v`, `None` when empty.
 pub fn median(v: &[f64]) -> Option<f64> {
-    if v.is_empty() {
-        return None;
-    }
     let mut s = v.to_vec();
     s.sort_by(f64::total_cmp);
-    Some(s[s.len() / 2])
+    s.get(s.len() / 2).copied()
 }

@@ -118,6 +118,7 @@ pub struct Tracks {
 
 /// The tracks of `tracker`'s frames, shown at `times` (s, one per frame), for balls
 /// of radius `radius` (m); `scale` (px/m) overrides the scale from the radius.
+#[allow(clippy::indexing_slicing)] // slots are 0 or 1, the two slots' centres; the radii are never empty here (a ball was seen)
 pub fn tracks(
     tracker: &Tracker,
     times: Vec<f64>,
@@ -224,6 +225,7 @@ pub fn tracks(
 
 /// The names of the balls in `slots` (left to right): with one ball, the side it
 /// comes from (it moves away from it at first).
+#[allow(clippy::indexing_slicing)] // one slot, seen in at least 3 frames
 fn names_of(
     slots: &[usize],
     centres: &[Vec<[f64; 2]>],
@@ -238,6 +240,7 @@ fn names_of(
     vec![if moves >= 0.0 { "left" } else { "right" }]
 }
 
+#[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
 fn centres_of(tracker: &Tracker, slot: usize) -> Vec<[f64; 2]> {
     tracker
         .frames
@@ -279,6 +282,7 @@ fn groove(paths: &[&[[f64; 2]]]) -> (f64, f64, bool) {
 }
 
 /// Slot `slot` of `tracker` as a [`BallTrack`] named `name`, through `to_m`.
+#[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
 fn ball_track(
     tracker: &Tracker,
     slot: usize,

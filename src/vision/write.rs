@@ -23,6 +23,7 @@ pub const SIGMA_ROW: &str = "# sigma";
 
 /// The tracks as a Tracker-style multi-track file, the `notes` as comment lines
 /// first. Per ball: its centre ("left ball") then its mark ("left mark").
+#[allow(clippy::indexing_slicing)] // every track has one value per time
 pub fn tracker_text(tracks: &Tracks, notes: &[String]) -> String {
     let mut out = String::new();
     for n in notes {

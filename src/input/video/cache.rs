@@ -166,3 +166,61 @@ fn hash_file(path: &Path, h: &mut impl Hasher) -> std::io::Result<()> {
         buf[..n].hash(h);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn options() -> Options {
+        Options {
+            radius: 0.0275,
+            fps: Some(240.0),
+            px_per_m: None,
+            radius_from: "--radius".into(),
+            cache: None,
+            roi: None,
+            ball_at: None,
+        }
+    }
+
+    #[test]
+    fn the_key_changes_with_every_option_that_changes_the_tracks() {
+        let base = options_key(&options());
+        assert_eq!(base, options_key(&options()));
+        assert!(base.starts_with(&format!("v{} ", crate::vision::VERSION)));
+        let roi = Options {
+            roi: Some(crate::vision::Roi {
+                x: 0.0,
+                y: 10.0,
+                width: 100.0,
+                height: 50.0,
+            }),
+            ..options()
+        };
+        let seed = Options {
+            ball_at: Some((12.0, 30.0)),
+            ..options()
+        };
+        let fps = Options {
+            fps: Some(120.0),
+            ..options()
+        };
+        let keys = [
+            base,
+            options_key(&roi),
+            options_key(&seed),
+            options_key(&fps),
+        ];
+        for (i, a) in keys.iter().enumerate() {
+            for b in &keys[i + 1..] {
+                assert_ne!(a, b);
+            }
+        }
+        // Where the tracks are kept (not what they are) is no part of the key.
+        let elsewhere = Options {
+            cache: Some(PathBuf::from("elsewhere")),
+            ..options()
+        };
+        assert_eq!(options_key(&elsewhere), keys[0]);
+    }
+}

@@ -5,4 +5,5 @@ pub(crate) mod app;
 pub(crate) mod looks;
 pub(crate) mod overlay;
 pub(crate) mod seed;
+pub(crate) mod tracker_looks;
 pub(crate) mod tracking;
