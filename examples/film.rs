@@ -1,12 +1,17 @@
 //! Writes a short synthetic clip of the paper-b4.9 preset as a folder of numbered PNG
-//! frames (`vision::render`, what the video tests track), for trying `--data FOLDER`
+//! frames (the test support's synthetic film, what the video tests track), for trying `--data FOLDER`
 //! and the app's video view (`V`) without a camera:
 //! `cargo run --example film -- /tmp/clip` then
 //! `groovelab --data /tmp/clip --fps 100 --radius 2.75cm --width 4.9cm`.
 
 use groovelab::input::video::write;
 use groovelab::physics::scene::Scene;
-use groovelab::vision::render::{Film, Look};
+use film::{Film, Look};
+
+// The synthetic film is test support, shared with the tests and the benches.
+#[allow(dead_code)]
+#[path = "../tests/support/film/mod.rs"]
+mod film;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let dir = std::env::args_os()
