@@ -6,8 +6,8 @@ use std::sync::Arc;
 
 use super::{App, Status};
 use crate::lab::jobs::Ticket;
-use crate::vision::thumbs::VideoView;
 use crate::tui::jobs::VideoResult;
+use crate::vision::thumbs::VideoView;
 
 impl App {
     /// Tracks the video `name` on a worker (`work` does it); the app runs on meanwhile

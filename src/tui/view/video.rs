@@ -13,9 +13,9 @@ use ratatui::text::Line;
 use ratatui::widgets::Widget;
 
 use super::panel::{block, title_of};
-use crate::vision::thumbs::VideoView;
 use crate::tui::app::App;
 use crate::tui::theme::Theme;
+use crate::vision::thumbs::VideoView;
 
 /// Characters from dark to bright for the ASCII glyph set (none of the marks: + x o).
 const RAMP: &[u8] = b" .:-=*#%@";

@@ -23,9 +23,9 @@ use ratatui_image::protocol::Protocol;
 use ratatui_image::{Image, Resize};
 
 use super::video::{band, model_centres, shown_frame};
-use crate::vision::thumbs::VideoView;
 use crate::tui::app::App;
 use crate::tui::theme::Theme;
+use crate::vision::thumbs::VideoView;
 
 /// The environment variable that chooses the graphics: `off`, `auto` (the default) or
 /// a protocol forced (`kitty`, `sixel`, `iterm2`).
