@@ -1,0 +1,15 @@
+//! Measured data in: students' files and the video tools' formats, tracks, hints,
+//! units, where scene values come from, and data beside their scene in the lab.
+
+mod files;
+pub(crate) mod formats;
+mod hints;
+mod lab_data;
+mod origins;
+mod point_sigma;
+mod rules;
+mod scene;
+mod side_by_side;
+mod table_shapes;
+mod tracks;
+mod units_checked;

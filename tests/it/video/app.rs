@@ -1,0 +1,380 @@
+//! A video given as `--data` everywhere data are read: `data`, `fit`, `render` and
+//! the app, from a folder of frames rendered here (small: no ffmpeg needed) or an mp4
+//! (where ffmpeg is installed; CI has it). The app tracks on a worker, shows how far,
+//! takes the data in when done and keeps them; `V` draws the frame at the cursor with
+//! the tracked points and the model's balls over it.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::sync::OnceLock;
+
+use groovelab::cli::{DataArgs, SceneArgs};
+use groovelab::input::video::tracked::Options;
+use groovelab::input::video::write;
+use groovelab::settings::params::Key;
+use groovelab::settings::spec::SceneSpec;
+use groovelab::tui::app::{Action, Status};
+use serde_json::Value;
+
+use crate::common;
+use groovelab::vision::render::{Film, Look};
+use groovelab::vision::thumbs::VideoView;
+
+/// A small clip: 320×180 at 500 px/m (R = 13.75 px), 100 frames/s, t = −0.15 … 0.34 s.
+pub fn look() -> Look {
+    Look {
+        width: 320,
+        height: 180,
+        px_per_m: 500.0,
+        origin: (160.0, 85.0),
+        from: -0.15,
+        ..Look::default()
+    }
+}
+
+pub const FRAMES: usize = 50;
+
+/// The scratch folder of these tests (`target/tmp/video-app`, reused by each run).
+fn scratch() -> PathBuf {
+    let d = crate::common::scratch_root("video-app");
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// The small clip as a folder of PNG frames, `…/frames` (made once per test run: its
+/// name is in the screens).
+pub fn folder() -> &'static Path {
+    static DIR: OnceLock<PathBuf> = OnceLock::new();
+    DIR.get_or_init(|| {
+        let d = scratch().join("frames");
+        let _ = std::fs::remove_dir_all(&d);
+        std::fs::create_dir_all(&d).unwrap();
+        let look = look();
+        let film = Film::new(&common::paper_scene(), look, 0.4);
+        for k in 0..FRAMES {
+            let p = d.join(format!("frame{:04}.png", k + 1));
+            write::png(&p, &film.rgb(k), look.width, look.height).unwrap();
+        }
+        d
+    })
+}
+
+/// `groovelab args` in the scratch folder (where `frames` is the clip's folder),
+/// with a cache folder of the test's own (`cache`): exit status, stdout, stderr.
+fn run(args: &[&str], cache: &Path) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_groovelab"))
+        .args(args)
+        .current_dir(scratch())
+        .env("XDG_CACHE_HOME", cache)
+        .env("GROOVELAB_PRESETS", "/nonexistent-groovelab-presets")
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+fn cache(test: &str) -> PathBuf {
+    let d = scratch().join(format!("cache-{test}"));
+    let _ = std::fs::remove_dir_all(&d);
+    d
+}
+
+/// The folder's options: R = 2.75 cm, b = 4.9 cm, 100 frames/s.
+const OPTIONS: [&str; 6] = ["--fps", "100", "--radius", "2.75cm", "--width", "4.9cm"];
+
+#[test]
+fn a_folder_of_frames_is_data_for_data_and_fit_and_is_kept_in_the_cache() {
+    let dir = folder().to_str().unwrap();
+    let c = cache("data-fit");
+    let (code, out, err) = run(&["data", dir, "--fps", "100", "--radius", "2.75cm"], &c);
+    assert_eq!(code, 0, "{err}");
+    // Said as what it is: not a Tracker file with no units stated.
+    assert!(
+        out.contains("video tracked by groovelab, position track")
+            && out.contains(
+                "length in m: the scale from the ball's radius R = 2.75 cm in the frames ("
+            )
+            && out.contains("time in s: the video's frames (100 frames/s: given (--fps)")
+            && !out.contains("Tracker")
+            && !out.contains("none stated"),
+        "{out}"
+    );
+    assert!(out.contains("49 frames at 100 frames/s"), "{out}");
+    // Tracked once: the text --data reads and the app's pictures, in the cache.
+    let kept: Vec<String> = std::fs::read_dir(c.join("groovelab/tracks"))
+        .unwrap()
+        .map(|e| {
+            e.unwrap()
+                .path()
+                .extension()
+                .unwrap()
+                .to_string_lossy()
+                .into_owned()
+        })
+        .collect();
+    assert_eq!(kept.len(), 2, "{kept:?}");
+    assert!(kept.contains(&"txt".into()) && kept.contains(&"view".into()));
+    let mut args = vec!["fit", "--data", dir, "--format", "json"];
+    args.extend(OPTIONS);
+    let (code, out, err) = run(&args, &c);
+    assert_eq!(code, 0, "{err}");
+    let j: Value = serde_json::from_str(&out).unwrap();
+    let (mu, se) = (
+        j["model_fit"]["mu"].as_f64().unwrap(),
+        j["model_fit"]["mu_se"].as_f64().unwrap(),
+    );
+    // The scale's ± (0.4 % at R = 13.7 px) adds to the fit's own.
+    let sigma = se.hypot(0.004 * mu);
+    assert!((mu - 0.17).abs() <= 2.0 * sigma, "μ_k = {mu} ± {sigma}");
+    assert_eq!(j["model_fit"]["regime_observed"], "recollide");
+}
+
+#[test]
+fn video_options_refused_where_they_mean_nothing() {
+    let dir = folder().to_str().unwrap();
+    let c = cache("refused");
+    let csv = scratch().join("v.csv");
+    std::fs::write(
+        &csv,
+        "t,v_cm,v_t\n-0.02,0.8,0.8\n0,0.1,0.8\n0.02,-0.6,0.7\n",
+    )
+    .unwrap();
+    let empty = scratch().join("empty");
+    std::fs::create_dir_all(&empty).unwrap();
+    for (args, says) in [
+        (vec!["render", "--data", dir], "give it with --fps"),
+        (
+            vec!["fit", "--preset", "paper-b4.9", "--fps", "100"],
+            "--fps describes a --data file and none is given",
+        ),
+        (
+            vec!["fit", "--data", csv.to_str().unwrap(), "--fps", "100"],
+            "--fps is not used by fit, allowed only with track, and --data VIDEO",
+        ),
+        // A folder without frames is no video: --data takes files.
+        (
+            vec!["render", "--data", empty.to_str().unwrap()],
+            "allowed a regular file",
+        ),
+    ] {
+        let (code, out, err) = run(&args, &c);
+        assert_eq!(code, 2, "{args:?}: {out}{err}");
+        assert!(
+            err.starts_with("error: ") && err.contains(says),
+            "{args:?}: {err}"
+        );
+        assert_eq!(err.lines().count(), 1, "{err}");
+    }
+}
+
+/// `render` of the folder with `V` (the video) at `--at 0.1`, at `size`.
+fn video_screen(size: &str, ascii: bool, c: &Path) -> String {
+    folder();
+    let mut args = vec!["render", "--data", "frames", "--keys", "V", "--at", "0.1"];
+    args.extend(OPTIONS);
+    args.extend(["--size", size]);
+    if ascii {
+        args.push("--ascii");
+    }
+    let (code, out, err) = run(&args, c);
+    assert_eq!(code, 0, "{err}");
+    out
+}
+
+#[test]
+fn render_prints_the_video_with_the_tracks_and_the_model_over_it() {
+    let c = cache("render");
+    for size in ["80x24", "120x40", "200x60"] {
+        let screen = video_screen(size, false, &c);
+        assert!(screen.contains("Video frames"), "{screen}");
+        insta::assert_snapshot!(format!("video-{size}"), screen);
+    }
+    let ascii = video_screen("80x24", true, &c);
+    assert!(ascii.is_ascii(), "{ascii}");
+    insta::assert_snapshot!("video-80x24-ascii", ascii);
+}
+
+#[test]
+fn the_app_tracks_on_a_worker_and_takes_the_data_in_when_done() {
+    let dir = folder().to_path_buf();
+    let scene = SceneArgs {
+        values: SceneSpec::default()
+            .with(Key::Radius, 0.0275)
+            .with(Key::Width, 0.049),
+        ..SceneArgs::default()
+    };
+    let data = DataArgs {
+        data: vec![dir.clone()],
+        fps: Some(100.0),
+        ..DataArgs::default()
+    };
+    let options = Options {
+        radius: 0.0275,
+        fps: Some(100.0),
+        px_per_m: None,
+        radius_from: "--radius".into(),
+        cache: None,
+        roi: None,
+        ball_at: None,
+    };
+    let library = common::no_user_presets("video-app");
+    let mut app = groovelab::cli::opened_tracking(&scene, &data, library, options).unwrap();
+    // Open at once, without the data: they join when the job's result is taken.
+    assert!(app.lab.own_data().is_none());
+    assert!(
+        matches!(&app.status, Status::Info(s) if s.starts_with("tracking ")),
+        "{:?}",
+        app.status
+    );
+    let before = app.lab.generation();
+    // An edit meanwhile is kept.
+    app.set_value(Key::Mu, 0.2);
+    app.wait();
+    let own = app.lab.own_data().expect("the video's data in the lab");
+    assert_eq!(own.name, dir.display().to_string());
+    assert!(app.lab.generation() > before);
+    assert_eq!(app.lab.scene.mu, 0.2);
+    assert!(app.video().view.is_some(), "the pictures");
+    assert!(
+        matches!(&app.status, Status::Info(s) if s.starts_with("tracked ")),
+        "{:?}",
+        app.status
+    );
+    // The model's balls where the film has them: at every frame with both tracked,
+    // the exact solution's centres mapped into the video by the tracker's scale,
+    // groove and origin lie on the tracked ones (the film was made with this scene;
+    // 0.1 px of centre noise, 0.4 % of scale: well under a pixel).
+    let view = app.video().view.clone().unwrap();
+    app.lab.set(Key::Mu, 0.17).unwrap();
+    let (mut compared, mut worst) = (0, 0.0f64);
+    for k in 0..FRAMES {
+        let (Some(Some(l)), Some(Some(r))) = (
+            view.balls[0].centre.get(k),
+            view.balls.get(1).and_then(|b| b.centre.get(k)),
+        ) else {
+            continue;
+        };
+        app.t = groovelab::tui::view::video::frame_time(&app, &view, k).unwrap();
+        let model = groovelab::tui::view::video::model_centres(&app, &view).unwrap();
+        for (m, t) in model.iter().zip([l, r]) {
+            let d = (m.0 - f64::from(t.0)).hypot(m.1 - f64::from(t.1));
+            assert!(d < 1.0, "frame {k}: model {m:?}, tracked {t:?}: {d} px");
+            worst = worst.max(d);
+        }
+        compared += 1;
+    }
+    eprintln!("model against tracked centres: {compared} frames, worst {worst:.2} px");
+    assert!(compared >= 40, "{compared} frames");
+    app.lab.set(Key::Mu, 0.2).unwrap();
+    // Kept in this process: a second open needs no tracking.
+    assert!(
+        groovelab::cli::pending_video(&scene, &data)
+            .unwrap()
+            .is_none()
+    );
+    // V shows the video, V again the drawn scene.
+    app.apply(Action::ToggleVideo);
+    let text = common::text(&app, (120, 40), false);
+    assert!(text.contains("Video frames"), "{text}");
+    graphics_once_per_frame(&app, &view);
+    app.apply(Action::ToggleVideo);
+    assert!(common::text(&app, (120, 40), false).contains(" Scene  t = "));
+}
+
+/// With a graphics protocol (kitty, forced: no terminal here), the video panel's
+/// picture is made on a worker once per picture shown, not per redraw, and drawn
+/// into the panel's cells.
+fn graphics_once_per_frame(app: &groovelab::tui::app::App, view: &VideoView) {
+    use groovelab::tui::screen::Screen;
+    use ratatui::buffer::Buffer;
+    use ratatui::layout::Rect;
+    use ratatui_image::picker::{Picker, ProtocolType};
+    let mut app = app.clone();
+    let (tx, rx) = std::sync::mpsc::channel();
+    let mut picker = Picker::halfblocks();
+    picker.set_protocol_type(ProtocolType::Kitty);
+    let wake = Box::new(move || {
+        let _ = tx.send(());
+    });
+    let mut screen = Screen::with_graphics(Some(picker), wake);
+    let (area, theme) = (Rect::new(0, 0, 120, 40), groovelab::tui::theme(false));
+    let mut buf = Buffer::empty(area);
+    app.t = groovelab::tui::view::video::frame_time(&app, view, 20).unwrap();
+    screen.draw(&app, area, &mut buf, &theme);
+    // A hang guard, not a measurement.
+    rx.recv_timeout(std::time::Duration::from_secs(60))
+        .expect("the picture made");
+    let symbols = |buf: &Buffer| -> String { buf.content().iter().map(|c| c.symbol()).collect() };
+    // Sent once (kitty keeps it), then placed by its placeholder characters.
+    screen.draw(&app, area, &mut buf, &theme);
+    assert!(symbols(&buf).contains("\x1b_G"), "kitty's escape sends it");
+    for _ in 0..3 {
+        screen.draw(&app, area, &mut buf, &theme);
+    }
+    assert!(symbols(&buf).contains('\u{10EEEE}'), "kitty's placeholders");
+    assert_eq!(screen.video_pictures(), 1, "one picture for five redraws");
+    app.t = groovelab::tui::view::video::frame_time(&app, view, 21).unwrap();
+    screen.draw(&app, area, &mut buf, &theme);
+    assert_eq!(screen.video_pictures(), 2, "the next frame: a new picture");
+}
+
+#[test]
+fn the_tracking_shows_its_progress_and_a_key_never_waits_for_it() {
+    let library = common::no_user_presets("video-progress");
+    let mut app =
+        groovelab::cli::opened(&SceneArgs::default(), &DataArgs::default(), library).unwrap();
+    let (tx, rx) = std::sync::mpsc::channel::<()>();
+    app.track_video("clip.mp4".into(), move |ticket| {
+        ticket.progress(3, 10);
+        // Held until the test lets it go: the app runs on meanwhile.
+        let _ = rx.recv();
+        None
+    });
+    let mut spins = 0u64;
+    while app.video().progress() != Some((3, 10)) {
+        std::thread::yield_now();
+        spins += 1;
+        assert!(spins < 1 << 32, "the job never started");
+    }
+    // Keys act while it runs.
+    app.apply(Action::PlayPause);
+    assert!(app.playing);
+    let text = common::text(&app, (120, 40), false);
+    assert!(text.contains("tracking video 30 %"), "{text}");
+    app.apply(Action::ToggleVideo);
+    let text = common::text(&app, (120, 40), false);
+    assert!(text.contains("tracking clip.mp4: frame 3 of 10"), "{text}");
+    tx.send(()).unwrap();
+    app.wait();
+    assert_eq!(app.video().progress(), None);
+}
+
+#[test]
+fn an_mp4_is_data_for_the_app_and_render() {
+    if !crate::video::tracking::ffmpeg() {
+        return;
+    }
+    let look = look();
+    let film = Film::new(&common::paper_scene(), look, 0.4);
+    let clip = scratch().join("clip.mp4");
+    let enc = write::Encoding {
+        width: look.width,
+        height: look.height,
+        fps: 100.0,
+        crf: 18,
+        metadata: Vec::new(),
+    };
+    write::video(&clip, &enc, (0..FRAMES).map(|k| film.rgb(k))).unwrap();
+    let c = cache("mp4");
+    let mut args = vec!["render", "--data", clip.to_str().unwrap(), "--keys", "V"];
+    args.extend(&OPTIONS[2..]);
+    let (code, out, err) = run(&args, &c);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        out.contains("Video clip.mp4") && out.contains("of 50"),
+        "{out}"
+    );
+}
