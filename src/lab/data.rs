@@ -74,7 +74,10 @@ impl Groove {
     }
 
     /// The values both state that differ: (name, this one's, the other's).
-    fn differing<'a>(&'a self, other: &'a Groove) -> impl Iterator<Item = (&'static str, f64, f64)> + 'a {
+    fn differing<'a>(
+        &'a self,
+        other: &'a Groove,
+    ) -> impl Iterator<Item = (&'static str, f64, f64)> + 'a {
         [
             ("R", self.radius, other.radius, 0),
             ("b", self.width, other.width, 1),

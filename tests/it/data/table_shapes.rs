@@ -35,10 +35,14 @@ impl Motion {
         match self {
             Motion::Stands => (0.1, 0.2),
             Motion::Impact { v, after } => {
-                let x = if t < 0.3 { v * t } else { 0.3 * v + after * (t - 0.3) };
+                let x = if t < 0.3 {
+                    v * t
+                } else {
+                    0.3 * v + after * (t - 0.3)
+                };
                 (x, 0.1)
             }
-            Motion::Jumps { by } => (if k % 2 == 0 { by } else { -by }, 0.0),
+            Motion::Jumps { by } => (if k.is_multiple_of(2) { by } else { -by }, 0.0),
             Motion::Circles { r, w } => ((w * t).cos() * r, (w * t).sin() * r),
             Motion::Crosses { v } => (-0.2 + v * t, 0.05),
         }
@@ -85,7 +89,13 @@ struct Table {
 fn table() -> impl Strategy<Value = Table> {
     (
         prop_oneof![0..20usize, 20..200usize, 200..=1000usize],
-        prop_oneof![Just(1.0 / 30.0), Just(0.01), Just(1.0 / 240.0), Just(1e-6), Just(2.0)],
+        prop_oneof![
+            Just(1.0 / 30.0),
+            Just(0.01),
+            Just(1.0 / 240.0),
+            Just(1e-6),
+            Just(2.0)
+        ],
         prop_oneof![
             4 => Just(Times::Steady),
             1 => Just(Times::Repeats),
@@ -214,7 +224,10 @@ fn keeps_the_contract(what: &str, exit: &groovelab::cli::entry::Exit) -> Result<
                 .filter(|w| matches!(*w, "NaN" | "nan" | "inf" | "Inf" | "infinity"))
                 .collect();
             prop_assert!(bad.is_empty(), "{what}: printed {bad:?}:\n{}", exit.stdout);
-            prop_assert!(!exit.stdout.contains('∞') || exit.stdout.contains("T∞"), "{what}");
+            prop_assert!(
+                !exit.stdout.contains('∞') || exit.stdout.contains("T∞"),
+                "{what}"
+            );
         }
         2 => {
             prop_assert!(exit.stdout.is_empty(), "{what}: {}", exit.stdout);
@@ -240,7 +253,7 @@ proptest! {
         let f = file.to_str().unwrap();
         keeps_the_contract("data", &run(&["data", f]))?;
         keeps_the_contract("data json", &run(&["data", "--format", "json", f]))?;
-        if id % 4 == 0 {
+        if id.is_multiple_of(4) {
             keeps_the_contract("fit", &run(&["fit", "--preset", "paper-b4.9", "--data", f]))?;
             keeps_the_contract(
                 "render",
