@@ -9,12 +9,12 @@ use groovelab::cli::entry::{self, Entry, Exit};
 fn main() -> ExitCode {
     let args: Vec<_> = std::env::args_os().collect();
     let exit = match entry::dispatch(&args) {
-        Entry::Interactive { app, ascii } => {
+        Entry::Interactive { app, ascii, theme } => {
             if !(std::io::stdout().is_terminal() && std::io::stdin().is_terminal()) {
                 eprintln!("error: {}", entry::NO_TERMINAL);
                 return ExitCode::from(2);
             }
-            return match groovelab::tui::run(*app, ascii) {
+            return match groovelab::tui::run(*app, ascii, theme) {
                 Ok(()) => ExitCode::SUCCESS,
                 Err(e) => {
                     eprintln!("error: terminal: {e}");

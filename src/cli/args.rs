@@ -32,6 +32,11 @@ pub struct Cli {
     /// Pure 7-bit ASCII drawing (app and render) instead of Unicode.
     #[arg(long, global = true)]
     pub ascii: bool,
+    /// Colours for a dark or a light terminal background (app and render); auto asks
+    /// the terminal (OSC 11), then reads COLORFGBG, else dark; render's auto is dark
+    /// [default: $GROOVELAB_THEME, else auto].
+    #[arg(long, value_name = "THEME", value_enum, global = true)]
+    pub theme: Option<crate::tui::theme::ThemeChoice>,
     #[command(flatten)]
     pub data: DataArgs,
 }

@@ -10,6 +10,7 @@ use super::Response;
 use super::args::Cli;
 use super::error::CliError;
 use crate::tui::app::App;
+use crate::tui::theme::ThemeChoice;
 
 /// How a non-interactive run ends: the exit status and everything it prints.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -44,7 +45,11 @@ impl Exit {
 /// the real terminal, so only `main.rs` can run it).
 pub enum Entry {
     Exit(Exit),
-    Interactive { app: Box<App>, ascii: bool },
+    Interactive {
+        app: Box<App>,
+        ascii: bool,
+        theme: ThemeChoice,
+    },
 }
 
 /// The message when the app is asked for without a terminal.
@@ -74,6 +79,8 @@ pub fn dispatch(args: &[OsString]) -> Entry {
         Ok(Response::Interactive(app)) => Entry::Interactive {
             app,
             ascii: cli.ascii,
+            // Checked by `run`: an unknown GROOVELAB_THEME is an error before this.
+            theme: super::theme_choice(&cli).unwrap_or_default(),
         },
         Ok(Response::Print(out)) => Entry::Exit(Exit::ok(out)),
         Err(CliError::Interrupted) => {

@@ -300,6 +300,9 @@ pub enum BadValue {
     Keys {
         source: crate::tui::keys::UnknownKey,
     },
+    /// `GROOVELAB_THEME` (`--theme`'s default) is none of its words.
+    #[error("{source}")]
+    ThemeSwitch { source: crate::tui::look::BadSwitch },
 }
 
 #[cfg(test)]

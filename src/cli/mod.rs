@@ -17,6 +17,8 @@ use crate::study::story;
 use crate::tui::{
     self,
     app::{App, Library},
+    look,
+    theme::ThemeChoice,
 };
 
 mod args;
@@ -36,7 +38,7 @@ mod track_args;
 mod video_data;
 pub use crate::output::{self, write_atomically};
 use crate::settings::params::{Key, PARAMS};
-use crate::settings::units::{Dimension, show, sig_figs};
+use crate::settings::units::{Dimension, fixed, show, sig_figs};
 pub use args::*;
 use deliver::deliver;
 pub use error::{BadValue, CliError, Flag, Usage};
@@ -56,6 +58,9 @@ pub enum Response {
 /// Runs a parsed command line.
 pub fn run(cli: &Cli) -> Result<Response, CliError> {
     used_options(cli)?;
+    if matches!(cli.command, None | Some(Command::Tui | Command::Render(_))) {
+        theme_choice(cli)?;
+    }
     // A data file that names its scene gives it, under the options.
     let scene = &open::with_file_scene(&cli.scene, &cli.data)?;
     match &cli.command {
@@ -163,6 +168,7 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
             Usage::WithoutData { flag: Flag(id) }
         }
         _ if !ascii && cli.ascii => unused("ascii", "render and the app"),
+        _ if !ascii && cli.theme.is_some() => unused("theme", "render and the app"),
         // --fps is a video's: a data file has its times.
         _ if d.fps.is_some()
             && !matches!(cli.command, Some(Command::Track(_) | Command::Data(_)))
@@ -173,6 +179,15 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         _ => return Ok(()),
     };
     Err(error.into())
+}
+
+/// `--theme`, else `GROOVELAB_THEME`, else auto.
+pub(crate) fn theme_choice(cli: &Cli) -> Result<ThemeChoice, CliError> {
+    match cli.theme {
+        Some(choice) => Ok(choice),
+        None => look::parse_switch(std::env::var(look::SWITCH).ok().as_deref())
+            .map_err(|source| BadValue::ThemeSwitch { source }.into()),
+    }
 }
 
 /// `render`: the app's screen after `--keys`, at `--at`, as text.
@@ -218,7 +233,9 @@ pub fn render_with(
     }
     app.playing = false;
     let (cols, rows) = args.size;
-    // Headless output has no colours; NO_COLOR does not change the text.
+    // Headless output is text without colours: the monochrome theme, whose curves are
+    // told apart by letters, whatever `--theme` (headless, its auto is dark) or
+    // NO_COLOR say; the same input gives the same bytes.
     let theme = tui::theme::Theme::new(tui::theme::Glyphs::new(ascii), true);
     Ok(tui::screen::to_text(&app, cols, rows, &theme))
 }
@@ -460,14 +477,14 @@ fn run_lines(out: &mut String, solution: &Solution) {
     let (e0, e1) = (summary.energy_start, summary.energy_end);
     let _ = writeln!(
         out,
-        "energy   {:.5} J at t = {}; at t = {}: kinetic {:.5} J, lost to friction {:.5} J, in impacts {:.5} J, to rolling resistance {:.5} J",
-        e0.total(),
+        "energy   {} J at t = {}; at t = {}: kinetic {} J, lost to friction {} J, in impacts {} J, to rolling resistance {} J",
+        fixed(e0.total(), 5),
         show(solution.t_start, Dimension::Time),
         show(solution.t_end, Dimension::Time),
-        e1.kinetic(),
-        e1.lost.friction,
-        e1.lost.impacts,
-        e1.lost.rolling_resistance
+        fixed(e1.kinetic(), 5),
+        fixed(e1.lost.friction, 5),
+        fixed(e1.lost.impacts, 5),
+        fixed(e1.lost.rolling_resistance, 5)
     );
 }
 

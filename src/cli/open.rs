@@ -217,6 +217,18 @@ pub fn reading_of(args: &DataArgs) -> Result<(Reading, Derive), CliError> {
 /// the default preset's groove would be a silent guess.
 pub fn lab_of_stated_scene(scene_args: &SceneArgs, data: &DataArgs) -> Result<Lab, CliError> {
     if let Some(path) = scene_of_data(scene_args, data) {
+        // A file that no scene could make fittable (accelerations only) says so
+        // first: asking for the scene it was measured in would send the user to
+        // find one in vain.
+        if !super::video_data::is_video(path)
+            && let Err(CliError::Data(e)) = load_series(data, scene_args)
+            && matches!(
+                e.what,
+                crate::input::data::DataProblem::AccelerationsOnly(_)
+            )
+        {
+            return Err(CliError::Data(e));
+        }
         return Err(BadValue::DataWithoutScene {
             path: path.to_path_buf(),
         }

@@ -95,10 +95,11 @@ pub fn outcome_says(outcome: Outcome, sol: &Solution, derived: &Derived) -> Stri
 
 /// An energy in J with two decimals, in mJ below 0.01 J (a small scene's spin).
 fn joules(e: f64) -> String {
+    use crate::settings::units::fixed;
     if e.abs() >= 0.01 {
-        format!("{e:.2} J")
+        format!("{} J", fixed(e, 2))
     } else {
-        format!("{:.2} mJ", 1e3 * e)
+        format!("{} mJ", fixed(1e3 * e, 2))
     }
 }
 

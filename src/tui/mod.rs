@@ -15,6 +15,7 @@ pub mod keys;
 pub mod layer;
 pub mod layout;
 pub mod line;
+pub mod look;
 pub mod plot;
 pub mod screen;
 pub mod theme;
@@ -37,13 +38,13 @@ use ratatui::crossterm::{cursor, execute};
 use app::{Action, App, FPS};
 use jobs::Notice;
 use screen::Screen;
-use theme::{Glyphs, Theme};
+use theme::{Glyphs, Theme, ThemeChoice};
 use view::video_image::{self, Switch};
 
-/// The theme for this terminal: NO_COLOR (any value) asks for no colours.
+/// The dark theme, or the monochrome one under NO_COLOR (any value), without asking
+/// the terminal anything.
 pub fn theme(ascii: bool) -> Theme {
-    let monochrome = std::env::var_os("NO_COLOR").is_some_and(|v| !v.is_empty());
-    Theme::new(Glyphs::new(ascii), monochrome)
+    Theme::new(Glyphs::new(ascii), look::no_color())
 }
 
 fn set_mouse(on: bool) {
@@ -119,8 +120,9 @@ fn suspend(_: &mut ratatui::DefaultTerminal, _: bool) -> io::Result<()> {
 }
 
 /// Runs the app on the real terminal until the user quits.
-pub fn run(mut app: App, ascii: bool) -> io::Result<()> {
-    let theme = theme(ascii);
+pub fn run(mut app: App, ascii: bool, choice: ThemeChoice) -> io::Result<()> {
+    // Asked before the terminal is ours (the query takes raw mode for itself).
+    let theme = Theme::with(Glyphs::new(ascii), look::detect(choice));
     let switch = Switch::from_env().map_err(|e| io::Error::new(io::ErrorKind::InvalidInput, e))?;
     // Before the terminal changes, so that no moment is left unguarded.
     crate::signals::on_signal(restore_and_exit)?;

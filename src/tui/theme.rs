@@ -1,5 +1,6 @@
-//! Looks: colours (readable on dark and light terminals, monochrome under NO_COLOR),
-//! and the glyph set, Unicode or pure ASCII, decided in this one place.
+//! Looks: colours (a palette for dark and one for light backgrounds, each measured for
+//! contrast; monochrome under NO_COLOR), and the glyph set, Unicode or pure ASCII,
+//! decided in this one place. Which palette a terminal gets is `tui::look`'s.
 
 use ratatui::buffer::Buffer;
 use ratatui::style::{Color, Modifier, Style};
@@ -157,6 +158,186 @@ pub fn ellipsize_with(text: &str, width: usize, mark: &str) -> String {
     format!("{kept}{mark}")
 }
 
+/// Which background a palette is made for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Background {
+    Dark,
+    Light,
+}
+
+/// `--theme`: a palette for a dark or a light background, or `auto` (ask the terminal).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+pub enum ThemeChoice {
+    /// Ask the terminal for its background (OSC 11), then `COLORFGBG`, else dark.
+    #[default]
+    Auto,
+    /// Colours for a dark background.
+    Dark,
+    /// Colours for a light background (xterm's default: black on white).
+    Light,
+}
+
+/// How the app colours: not at all (NO_COLOR), or with the palette for a background,
+/// as xterm-256 indices or, where the terminal says it takes 24-bit colour, the same
+/// colours as RGB.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Colours {
+    Monochrome,
+    Palette {
+        background: Background,
+        truecolor: bool,
+    },
+}
+
+/// The colours of one palette, as xterm-256 indices (16–255: the 6×6×6 cube and the
+/// grey ramp, whose RGB every xterm-like terminal shares, unlike the 16 ANSI colours
+/// that terminal themes redefine). Text roles read at 4.5:1 or better on the palette's
+/// background, lines at 3:1 (`theme_tests` measures them).
+struct Palette {
+    dim: u8,
+    title: u8,
+    error: u8,
+    info: u8,
+    left: u8,
+    left_t: u8,
+    right: u8,
+    right_t: u8,
+    measured: u8,
+    overlay: u8,
+    overlay_t: u8,
+    event: u8,
+    cursor: u8,
+    groove: u8,
+    key: u8,
+}
+
+/// Light colours for a dark background.
+const DARK: Palette = Palette {
+    dim: 247,      // #9e9e9e
+    title: 117,    // #87d7ff
+    error: 203,    // #ff5f5f
+    info: 114,     // #87d787
+    left: 75,      // #5fafff, blue
+    left_t: 153,   // #afd7ff, paler blue
+    right: 207,    // #ff5fff, magenta
+    right_t: 219,  // #ffafff, paler magenta
+    measured: 203, // #ff5f5f, red
+    overlay: 221,  // #ffd75f, gold
+    overlay_t: 78, // #5fd787, green
+    event: 246,    // #949494
+    cursor: 120,   // #87ff87
+    groove: 244,   // #808080
+    key: 81,       // #5fd7ff
+};
+
+/// Dark colours for a light background.
+const LIGHT: Palette = Palette {
+    dim: 241,      // #626262
+    title: 24,     // #005f87
+    error: 124,    // #af0000
+    info: 22,      // #005f00
+    left: 19,      // #0000af, blue
+    left_t: 25,    // #005faf, lighter blue
+    right: 127,    // #af00af, magenta
+    right_t: 90,   // #870087, darker magenta
+    measured: 160, // #d70000, red
+    overlay: 94,   // #875f00, brown
+    overlay_t: 22, // #005f00, green
+    event: 242,    // #6c6c6c
+    cursor: 22,    // #005f00
+    groove: 244,   // #808080
+    key: 25,       // #005faf
+};
+
+/// RGB of an xterm-256 colour index (xterm's defaults: the 16 ANSI colours of its
+/// resources, the 6×6×6 cube with levels 0, 95, 135, …, 255, and the grey ramp 8, 18,
+/// …, 238).
+pub const fn xterm_256(i: u8) -> [u8; 3] {
+    const ANSI: [[u8; 3]; 16] = [
+        [0, 0, 0],
+        [205, 0, 0],
+        [0, 205, 0],
+        [205, 205, 0],
+        [0, 0, 238],
+        [205, 0, 205],
+        [0, 205, 205],
+        [229, 229, 229],
+        [127, 127, 127],
+        [255, 0, 0],
+        [0, 255, 0],
+        [255, 255, 0],
+        [92, 92, 255],
+        [255, 0, 255],
+        [0, 255, 255],
+        [255, 255, 255],
+    ];
+    const LEVEL: [u8; 6] = [0, 95, 135, 175, 215, 255];
+    match i {
+        0..=15 => ANSI[i as usize],
+        16..=231 => {
+            let n = (i - 16) as usize;
+            [LEVEL[n / 36], LEVEL[(n / 6) % 6], LEVEL[n % 6]]
+        }
+        _ => {
+            let v = 8 + 10 * (i - 232);
+            [v, v, v]
+        }
+    }
+}
+
+/// The RGB an xterm with its default colours shows for `colour`; `None` for the
+/// terminal's own foreground or background (`Reset`).
+pub fn xterm_rgb(colour: Color) -> Option<[u8; 3]> {
+    let index = match colour {
+        Color::Reset => return None,
+        Color::Rgb(r, g, b) => return Some([r, g, b]),
+        Color::Indexed(i) => i,
+        Color::Black => 0,
+        Color::Red => 1,
+        Color::Green => 2,
+        Color::Yellow => 3,
+        Color::Blue => 4,
+        Color::Magenta => 5,
+        Color::Cyan => 6,
+        Color::Gray => 7,
+        Color::DarkGray => 8,
+        Color::LightRed => 9,
+        Color::LightGreen => 10,
+        Color::LightYellow => 11,
+        Color::LightBlue => 12,
+        Color::LightMagenta => 13,
+        Color::LightCyan => 14,
+        Color::White => 15,
+    };
+    Some(xterm_256(index))
+}
+
+/// WCAG 2 relative luminance of an sRGB colour, 0 (black) to 1 (white).
+pub fn luminance([r, g, b]: [u8; 3]) -> f64 {
+    let linear = |c: u8| {
+        let c = f64::from(c) / 255.0;
+        if c <= 0.04045 {
+            c / 12.92
+        } else {
+            ((c + 0.055) / 1.055).powf(2.4)
+        }
+    };
+    0.2126 * linear(r) + 0.7152 * linear(g) + 0.0722 * linear(b)
+}
+
+/// WCAG 2 contrast ratio of two colours, 1 (equal) to 21 (black on white).
+pub fn contrast(a: [u8; 3], b: [u8; 3]) -> f64 {
+    let (la, lb) = (luminance(a), luminance(b));
+    (la.max(lb) + 0.05) / (la.min(lb) + 0.05)
+}
+
+/// What a role's colour draws: text (WCAG asks 4.5:1) or only lines and marks (3:1).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Use {
+    Text,
+    Line,
+}
+
 /// Styles of the app.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Theme {
@@ -171,8 +352,10 @@ pub struct Theme {
     pub info: Style,
     pub left: Style,
     pub right: Style,
-    /// Second series of a ball (v_t) and the like.
+    /// Second series of the left ball (v_t) and the like.
     pub accent: Style,
+    /// Second series of the right ball (v_t).
+    pub right_accent: Style,
     pub measured: Style,
     /// A time-stepping overlay's v_cm and v_t: never the measured data's colour.
     pub overlay: Style,
@@ -191,54 +374,143 @@ impl Theme {
         self.left.fg.is_none() && self.right.fg.is_none()
     }
 
-    /// Colours that read on dark and light backgrounds (no white or black text), or
-    /// modifiers only when `monochrome` (NO_COLOR).
+    /// The dark palette in xterm-256 colours, or modifiers only when `monochrome`
+    /// (NO_COLOR).
     pub fn new(glyphs: Glyphs, monochrome: bool) -> Theme {
+        let colours = if monochrome {
+            Colours::Monochrome
+        } else {
+            Colours::Palette {
+                background: Background::Dark,
+                truecolor: false,
+            }
+        };
+        Theme::with(glyphs, colours)
+    }
+
+    /// The theme of `colours`.
+    pub fn with(glyphs: Glyphs, colours: Colours) -> Theme {
         let plain = Style::default();
-        if monochrome {
-            return Theme {
-                glyphs,
-                monochrome,
-                text: plain,
-                dim: plain.add_modifier(Modifier::DIM),
-                title: plain.add_modifier(Modifier::BOLD),
-                selected: plain.add_modifier(Modifier::REVERSED),
-                error: plain.add_modifier(Modifier::BOLD | Modifier::UNDERLINED),
-                info: plain,
-                left: plain.add_modifier(Modifier::BOLD),
-                right: plain,
-                accent: plain.add_modifier(Modifier::DIM),
-                measured: plain.add_modifier(Modifier::BOLD),
-                overlay: plain.add_modifier(Modifier::ITALIC),
-                overlay_t: plain.add_modifier(Modifier::ITALIC | Modifier::DIM),
-                event: plain.add_modifier(Modifier::DIM),
-                cursor: plain.add_modifier(Modifier::BOLD),
-                flash: plain.add_modifier(Modifier::BOLD | Modifier::REVERSED),
-                groove: plain.add_modifier(Modifier::DIM),
-                key: plain.add_modifier(Modifier::BOLD),
-            };
-        }
+        let (background, truecolor) = match colours {
+            Colours::Monochrome => return Theme::monochrome(glyphs),
+            Colours::Palette {
+                background,
+                truecolor,
+            } => (background, truecolor),
+        };
+        let p = match background {
+            Background::Dark => &DARK,
+            Background::Light => &LIGHT,
+        };
+        let colour = |i: u8| {
+            if truecolor {
+                let [r, g, b] = xterm_256(i);
+                Color::Rgb(r, g, b)
+            } else {
+                Color::Indexed(i)
+            }
+        };
+        let fg = |i: u8| plain.fg(colour(i));
+        let bold = |i: u8| fg(i).add_modifier(Modifier::BOLD);
         Theme {
             glyphs,
-            monochrome,
+            monochrome: false,
+            // The terminal's own foreground: made for its background.
             text: plain,
-            dim: plain.fg(Color::Gray),
-            title: plain.fg(Color::Cyan).add_modifier(Modifier::BOLD),
+            dim: fg(p.dim),
+            title: bold(p.title),
             selected: plain.add_modifier(Modifier::REVERSED),
-            error: plain.fg(Color::Red).add_modifier(Modifier::BOLD),
-            info: plain.fg(Color::Green),
-            left: plain.fg(Color::Blue).add_modifier(Modifier::BOLD),
-            right: plain.fg(Color::Magenta).add_modifier(Modifier::BOLD),
-            accent: plain.fg(Color::Yellow),
-            measured: plain.fg(Color::Red),
-            overlay: plain.fg(Color::LightCyan),
-            overlay_t: plain.fg(Color::LightGreen),
-            event: plain.fg(Color::DarkGray),
-            cursor: plain.fg(Color::Green).add_modifier(Modifier::BOLD),
-            flash: plain.fg(Color::Red).add_modifier(Modifier::BOLD),
-            groove: plain.fg(Color::DarkGray),
-            key: plain.fg(Color::Cyan).add_modifier(Modifier::BOLD),
+            error: bold(p.error),
+            info: fg(p.info),
+            left: bold(p.left),
+            right: bold(p.right),
+            accent: fg(p.left_t),
+            right_accent: fg(p.right_t),
+            measured: fg(p.measured),
+            overlay: fg(p.overlay),
+            overlay_t: fg(p.overlay_t),
+            event: fg(p.event),
+            cursor: bold(p.cursor),
+            flash: bold(p.error),
+            groove: fg(p.groove),
+            key: bold(p.key),
         }
+    }
+
+    fn monochrome(glyphs: Glyphs) -> Theme {
+        let plain = Style::default();
+        Theme {
+            glyphs,
+            monochrome: true,
+            text: plain,
+            dim: plain.add_modifier(Modifier::DIM),
+            title: plain.add_modifier(Modifier::BOLD),
+            selected: plain.add_modifier(Modifier::REVERSED),
+            error: plain.add_modifier(Modifier::BOLD | Modifier::UNDERLINED),
+            info: plain,
+            left: plain.add_modifier(Modifier::BOLD),
+            right: plain,
+            accent: plain.add_modifier(Modifier::DIM),
+            right_accent: plain.add_modifier(Modifier::DIM),
+            measured: plain.add_modifier(Modifier::BOLD),
+            overlay: plain.add_modifier(Modifier::ITALIC),
+            overlay_t: plain.add_modifier(Modifier::ITALIC | Modifier::DIM),
+            event: plain.add_modifier(Modifier::DIM),
+            cursor: plain.add_modifier(Modifier::BOLD),
+            flash: plain.add_modifier(Modifier::BOLD | Modifier::REVERSED),
+            groove: plain.add_modifier(Modifier::DIM),
+            key: plain.add_modifier(Modifier::BOLD),
+        }
+    }
+
+    /// Every style of the theme with its name and what it draws: the contrast test
+    /// reads them all (a new field must be added here, or this does not compile).
+    pub fn roles(&self) -> Vec<(&'static str, Style, Use)> {
+        let Theme {
+            glyphs: _,
+            monochrome: _,
+            text,
+            dim,
+            title,
+            selected,
+            error,
+            info,
+            left,
+            right,
+            accent,
+            right_accent,
+            measured,
+            overlay,
+            overlay_t,
+            event,
+            cursor,
+            flash,
+            groove,
+            key,
+        } = *self;
+        use Use::{Line, Text};
+        vec![
+            ("text", text, Text),
+            ("dim", dim, Text),
+            ("title", title, Text),
+            ("selected", selected, Text),
+            ("error", error, Text),
+            ("info", info, Text),
+            ("left", left, Text),
+            ("right", right, Text),
+            ("accent", accent, Text),
+            ("right_accent", right_accent, Text),
+            ("measured", measured, Text),
+            // Legends and progress name the overlay in its colours: text.
+            ("overlay", overlay, Text),
+            ("overlay_t", overlay_t, Text),
+            // Events are lines with a label in their colour: text.
+            ("event", event, Text),
+            ("cursor", cursor, Text),
+            ("flash", flash, Text),
+            ("groove", groove, Line),
+            ("key", key, Text),
+        ]
     }
 }
 
@@ -268,6 +540,10 @@ pub fn force_ascii(buf: &mut Buffer) {
         cell.set_symbol(stand_in);
     }
 }
+
+#[cfg(test)]
+#[path = "theme_tests.rs"]
+mod contrast_tests;
 
 #[cfg(test)]
 mod tests {

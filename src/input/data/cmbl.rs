@@ -19,12 +19,22 @@ use crate::study::measured::Track;
 /// The format's name, as `groovelab data` and the fit say it.
 pub const FORMAT: &str = "Logger Pro file (.cmbl)";
 
-/// True when `text` looks like a Logger Pro file (before it is parsed).
+/// True when `text` is a Logger Pro file by its structure: XML whose root is a
+/// `Document` holding a `DataSet` of `DataColumn`s (not by one incidental tag such
+/// as `FileCoherence`, which files of other versions may lack).
 pub(super) fn is_cmbl(text: &str) -> bool {
-    let head = text[..text.len().min(4000)]
-        .trim_start_matches('\u{feff}')
-        .trim_start();
-    head.starts_with('<') && head.contains("<Document>") && head.contains("<FileCoherence>")
+    let body = text.trim_start_matches('\u{feff}').trim_start();
+    if !body.starts_with('<') {
+        return false;
+    }
+    let Ok(doc) = xml::parse(body, FORMAT) else {
+        return false;
+    };
+    let root = doc.root_element();
+    root.has_tag_name("Document")
+        && root.children().any(|set| {
+            set.has_tag_name("DataSet") && set.children().any(|c| c.has_tag_name("DataColumn"))
+        })
 }
 
 /// One column of a data set.
@@ -155,4 +165,32 @@ fn as_table(columns: &[Column]) -> String {
         out.push('\n');
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::is_cmbl;
+
+    const COLUMN: &str = "<DataColumn><DataObjectName>Time</DataObjectName><ColumnCells>0\n0.01\n</ColumnCells></DataColumn>";
+
+    #[test]
+    fn a_logger_pro_file_is_known_by_its_data_sets_not_one_tag() {
+        // Without FileCoherence (and with a BOM and an XML declaration): still one.
+        let plain = format!(
+            "\u{feff}<?xml version=\"1.0\"?>\n<Document><Version>3.8</Version><DataSet>{COLUMN}</DataSet></Document>"
+        );
+        assert!(is_cmbl(&plain));
+        // The tag alone, or data columns not in a data set, or another root: not one.
+        assert!(!is_cmbl(
+            "<Document><FileCoherence>1</FileCoherence></Document>"
+        ));
+        assert!(!is_cmbl(&format!(
+            "<Document><FileCoherence>1</FileCoherence>{COLUMN}</Document>"
+        )));
+        assert!(!is_cmbl(&format!(
+            "<object class=\"x\"><DataSet>{COLUMN}</DataSet></object>"
+        )));
+        assert!(!is_cmbl("<Document><DataSet>"));
+        assert!(!is_cmbl("t,x\n0,1\n"));
+    }
 }

@@ -51,7 +51,7 @@ impl Dimension {
                 small: "m/s",
             },
             Dimension::Time => &UnitRow {
-                accepted: &[("s", 0), ("ms", -3)],
+                accepted: &[("s", 0), ("ms", -3), ("us", -6), ("µs", -6), ("μs", -6)],
                 display: "s",
                 decimals: Some(3),
                 small: "ms",

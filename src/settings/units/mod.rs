@@ -11,6 +11,6 @@ pub use parse::{
     Expected, MIN_MAGNITUDE, UnitError, parse_option, parse_quantity, parse_typed, unit_factor,
 };
 pub use show::{
-    SMALLEST_UNCERTAINTY, Shown, fit_digits, fit_number, show, show_below, show_exact, show_small,
-    sig_figs, significant, with_uncertainty,
+    SMALLEST_UNCERTAINTY, Shown, fit_digits, fit_number, fixed, show, show_below, show_exact,
+    show_small, sig_figs, significant, with_uncertainty,
 };

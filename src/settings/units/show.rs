@@ -119,6 +119,16 @@ pub fn with_uncertainty(value: f64, se: f64, decimals: usize) -> (String, String
     (format!("{value:.places$}"), format!("{se:.places$}"))
 }
 
+/// `v` to `decimals` places, without the sign of a value that rounds to zero (an
+/// energy of −1e-18 J is `0.00000 J`, never `-0.00000 J`).
+pub fn fixed(v: f64, decimals: usize) -> String {
+    let s = format!("{v:.decimals$}");
+    match s.strip_prefix('-') {
+        Some(rest) if rest.chars().all(|c| c == '0' || c == '.') => rest.to_string(),
+        _ => s,
+    }
+}
+
 /// `value` (SI, below `limit`) with the fewest digits from four up that still read
 /// below `limit`: a computed b = 4.260281680828159 cm reads 4.26 cm, while
 /// b = 5.4999 cm beside 2R = 5.5 cm keeps its digits (5.5 cm would read as 2R).
@@ -229,6 +239,18 @@ fn trim_zeros(s: String) -> String {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn fixed_drops_the_sign_of_a_rounded_zero_only() {
+        use super::fixed;
+        assert_eq!(fixed(-1e-18, 5), "0.00000");
+        assert_eq!(fixed(-0.0, 2), "0.00");
+        assert_eq!(fixed(-0.000004, 5), "0.00000");
+        assert_eq!(fixed(-0.000006, 5), "-0.00001");
+        assert_eq!(fixed(-1.5, 1), "-1.5");
+        assert_eq!(fixed(2.0, 0), "2");
+        assert_eq!(fixed(f64::NAN, 3), "NaN");
+    }
+
     use super::*;
 
     #[test]

@@ -79,23 +79,24 @@ fn draw_fit(
     let (lo, hi) = linear_axis(lo - 0.1, hi + 0.1);
     let fit = |(t, v): (f64, f64)| (near(t, (t0, t1)), near(v, (lo, hi)));
     let mf = &fits.model_fit;
-    // The headline as `fit` prints it: the same model, μ_k and ± (4 places).
+    // The headline as `fit` prints it, in its signs: the same model, μ_k and ± 2σ (4
+    // places).
     let mu = if mf.undetermined("mu").is_some() {
         "not determined".to_string()
     } else if mf.mu_se.is_finite() {
         let (v, e) = crate::settings::units::with_uncertainty(mf.mu, 2.0 * mf.mu_se, 4);
-        format!("{v} +- {e} (2 sigma)")
+        format!("{v} ± {e} (2σ)")
     } else {
         super::drawing::rounded(mf.mu)
     };
     let caption = format!(
-        "b = {:.2} {}: model {}, mu = {mu}; line fits mu_cm = {}, mu_t = {}",
+        "b = {:.2} {}: model {}, μ_k = {mu}; line fits μ_cm = {}, μ_t = {}",
         Dimension::Length.to_display(scene.width),
         Dimension::Length.display_unit().0,
         mf.model
             .split('+')
             .map(|p| match p {
-                "mu" => "mu_k",
+                "mu" => "μ_k",
                 "restitution" => "e",
                 "rolling_resistance" => "c_rr",
                 other => other,

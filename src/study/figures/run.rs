@@ -29,6 +29,7 @@ const ORANGE: RGBColor = RGBColor(255, 127, 14);
 const PURPLE: RGBColor = RGBColor(148, 103, 189);
 const BROWN: RGBColor = RGBColor(140, 86, 75);
 const RED: RGBColor = RGBColor(214, 39, 40);
+const GREEN: RGBColor = RGBColor(44, 160, 44);
 
 /// About one state per SVG pixel column, and one at each event, in time order.
 fn run_samples(sol: &Solution, (t0, t1): (f64, f64)) -> Vec<Snapshot> {
@@ -137,7 +138,8 @@ fn draw_measured(
         chart,
         points(&m.v_cm).into_iter(),
         points(&m.v_t).into_iter(),
-        (RED, RED),
+        // Two colours, as the model's v_cm and v_t have two.
+        (RED, GREEN),
     )
 }
 
@@ -151,7 +153,7 @@ fn caption(title: &str, scene: &crate::physics::scene::Scene, b_hidden: bool) ->
         format!("b = {:.2} {unit}", cm(scene.width))
     };
     format!(
-        "{title}: {b}, R = {:.2} {unit}, mu_k = {}, e = {}",
+        "{title}: {b}, R = {:.2} {unit}, μ_k = {}, e = {}",
         cm(scene.radius),
         super::drawing::rounded(scene.mu),
         super::drawing::rounded(scene.restitution),

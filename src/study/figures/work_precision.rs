@@ -168,7 +168,7 @@ fn axis_ranges(rows: &[Row], pts: &[(f64, f64)], work: Cost) -> ((f64, f64), (f6
 /// The diagram's title: the scene it was run on.
 fn caption(scene: &Scene) -> String {
     format!(
-        "Work-precision, b = {:.2}, R = {:.2}, mu = {}, e = {}",
+        "Work-precision, b = {:.2}, R = {:.2}, μ_k = {}, e = {}",
         show(scene.width, Dimension::Length),
         show(scene.radius, Dimension::Length),
         super::drawing::rounded(scene.mu),

@@ -299,8 +299,13 @@ impl App {
         });
     }
 
-    /// The preset picker, on the preset the scene came from.
+    /// The preset picker, on the preset the scene came from; on none while b is
+    /// hidden or a prediction pends (the status line hides its name for that).
     fn open_picker(&mut self) {
+        if self.hidden().derived() {
+            self.open(Layer::Picker(Picker::unmarked()));
+            return;
+        }
         let i = self
             .library
             .presets

@@ -11,26 +11,63 @@ use crate::tui::vocabulary::{Action, Handled, Then};
 /// Rows moved by PgUp and PgDn.
 const PAGE: usize = 10;
 
-/// The preset picker with its highlighted row.
+/// The preset picker with its highlighted row, or none yet (while b is hidden or a
+/// prediction pends, the loaded preset's name would give the outcome away).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Picker {
     selected: usize,
+    /// Whether a row is highlighted at all.
+    marked: bool,
 }
 
 impl Picker {
     /// The picker with preset `selected` highlighted.
     pub fn on(selected: usize) -> Picker {
-        Picker { selected }
+        Picker {
+            selected,
+            marked: true,
+        }
     }
 
-    /// The highlighted preset.
+    /// The picker with no row highlighted until a key or a click picks one.
+    pub fn unmarked() -> Picker {
+        Picker {
+            selected: 0,
+            marked: false,
+        }
+    }
+
+    /// The highlighted preset (the first while none is).
     pub fn selected(&self) -> usize {
         self.selected
+    }
+
+    /// The highlighted preset, if one is.
+    pub fn marked(&self) -> Option<usize> {
+        self.marked.then_some(self.selected)
     }
 
     /// What `action` does among `presets` presets.
     fn key(&mut self, action: Action, presets: usize) -> Handled {
         let (i, n) = (self.selected, presets.max(1));
+        if !self.marked {
+            // The first move highlights the first row (Up and End the last); Enter
+            // has nothing to load yet.
+            self.selected = match action {
+                Action::Up | Action::End => n - 1,
+                Action::Down
+                | Action::NextParam
+                | Action::Start
+                | Action::IncreaseCoarse
+                | Action::DecreaseCoarse => 0,
+                Action::Select(j) if j < presets => j,
+                Action::Cancel | Action::Presets => return Handled::Close(Then::Nothing),
+                Action::Quit => return Handled::Ignored,
+                _ => return Handled::Consumed,
+            };
+            self.marked = true;
+            return Handled::Consumed;
+        }
         self.selected = match action {
             Action::Up => (i + n - 1) % n,
             Action::Down | Action::NextParam => (i + 1) % n,

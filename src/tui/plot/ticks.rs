@@ -62,7 +62,9 @@ fn label_on_axis(v: f64, step: f64, scale: f64) -> String {
         return format!("{v}");
     }
     let step = step.abs();
-    let scientific = scale >= 1e6 || (scale != 0.0 && scale < 1e-4) || (step > 0.0 && step < 1e-4);
+    // A fine step on an axis of ordinary values (a deep time zoom: 0.21590, 0.21595 s)
+    // keeps decimals; only a step finer than they write goes scientific.
+    let scientific = scale >= 1e6 || (scale != 0.0 && scale < 1e-4) || (step > 0.0 && step < 1e-7);
     if scientific && v == 0.0 {
         return "0".into();
     }
@@ -75,12 +77,12 @@ fn label_on_axis(v: f64, step: f64, scale: f64) -> String {
         return format!("{v:.digits$e}");
     }
     // Enough decimals to write the step exactly (0.25 needs two).
-    let decimals = (0..6)
+    let decimals = (0..7)
         .find(|&d| {
             let scaled = step.abs() * 10f64.powi(d);
             (scaled - scaled.round()).abs() < 1e-9 * scaled.max(1.0)
         })
-        .unwrap_or(6) as usize;
+        .unwrap_or(7) as usize;
     let s = format!("{v:.decimals$}");
     if s.starts_with('-') && s[1..].chars().all(|c| c == '0' || c == '.') {
         s[1..].to_string()
@@ -105,6 +107,21 @@ pub(super) fn ticks_with_labels(ticks: &[f64]) -> Vec<(f64, String)> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_deep_time_zoom_labels_its_ticks_in_decimals() {
+        // Issue 37: ×4096 of a 1 s run labelled its ticks `2.1590e-1`.
+        let (lo, hi) = (0.2159, 0.2159 + 1.0 / 4096.0);
+        let (_, ticks) = nice_ticks(lo, hi, 5);
+        let labels = ticks_with_labels(&ticks);
+        for (t, l) in &labels {
+            assert!(!l.contains('e'), "{l}");
+            let v: f64 = l.parse().unwrap();
+            assert!((v - t).abs() < 1e-9, "{l} for {t}");
+        }
+        let distinct: std::collections::BTreeSet<_> = labels.iter().map(|l| &l.1).collect();
+        assert_eq!(distinct.len(), labels.len(), "{labels:?}");
+    }
 
     #[test]
     fn ticks_are_round_and_cover_the_range() {

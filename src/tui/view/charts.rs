@@ -265,7 +265,7 @@ fn exact_velocities(samples: &[Snapshot], balls: &[usize], theme: &Theme) -> Vec
         let accent = if i == 0 {
             theme.accent
         } else {
-            theme.right.patch(theme.dim)
+            theme.right_accent
         };
         series.push(series_of(&tag("v_t"), samples, |s| ball(s).u, accent, "+"));
     }

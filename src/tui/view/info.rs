@@ -104,6 +104,23 @@ fn regime_lines(app: &App, width: u16, theme: &Theme) -> Ranked<'static> {
     lines
 }
 
+/// A speed to `decimals` places, or to two significant digits where those places
+/// would round a speed that is not zero to `0.000` (a pair that comes back barely,
+/// v' = 2e-5 m/s, must not read as one at rest).
+pub(crate) fn speed_shown(v: f64, decimals: usize, signed: bool) -> String {
+    let half_place = 0.5 * 10f64.powi(-(decimals as i32));
+    let text = if v != 0.0 && v.abs() < half_place {
+        crate::settings::units::sig_figs(v, 2)
+    } else {
+        crate::settings::units::fixed(v, decimals)
+    };
+    if signed && !text.starts_with('-') {
+        format!("+{text}")
+    } else {
+        text
+    }
+}
+
 /// A run's key numbers for the A/B table: outcome, t' and v' of the left ball (when
 /// the closed forms hold), impacts, T∞, the share of the energy lost by the end.
 fn key_numbers(derived: &Derived, summary: &Summary, theme: &Theme) -> [String; 6] {
@@ -113,7 +130,7 @@ fn key_numbers(derived: &Derived, summary: &Summary, theme: &Theme) -> [String; 
     [
         summary.outcome.name().to_string(),
         after.map_or_else(none, |a| format!("{:.4} s", a.t_roll)),
-        after.map_or_else(none, |a| format!("{:+.3} m/s", a.v_roll)),
+        after.map_or_else(none, |a| format!("{} m/s", speed_shown(a.v_roll, 3, true))),
         summary.impacts.to_string(),
         summary
             .accumulation_time
@@ -190,7 +207,7 @@ fn after_impact_lines(app: &App, theme: &Theme) -> Ranked<'static> {
                 label("t' ", theme),
                 value(format!("{:.4} s", rec.t_roll), theme),
                 label("  v' ", theme),
-                value(format!("{:.4} m/s", rec.v_roll), theme),
+                value(format!("{} m/s", speed_shown(rec.v_roll, 4, false)), theme),
                 label("  x' ", theme),
                 value(format!("{:.2}", show(rec.x_roll, Dimension::Length)), theme),
             ]),
@@ -338,7 +355,16 @@ fn energy_lines(app: &App, width: u16, theme: &Theme) -> Ranked<'static> {
         e.lost.rolling_resistance,
     ]);
     let pct = |i: usize| value(format!("{}%", shares[i]), theme);
-    let total = || value(format!("{:.4} J{}", e.total(), assumed(app)), theme);
+    let total = || {
+        value(
+            format!(
+                "{} J{}",
+                crate::settings::units::fixed(e.total(), 4),
+                assumed(app)
+            ),
+            theme,
+        )
+    };
     let first = vec![
         label("energy ", theme),
         total(),
@@ -420,6 +446,16 @@ impl Component for Why {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn a_slow_speed_that_is_not_zero_never_reads_zero() {
+        use super::speed_shown;
+        assert_eq!(speed_shown(2e-5, 3, true), "+2.0e-5");
+        assert_eq!(speed_shown(-0.00031, 4, false), "-0.00031");
+        assert_eq!(speed_shown(0.0, 3, true), "+0.000");
+        assert!(speed_shown(-1e-19, 4, false).parse::<f64>().unwrap() < 0.0);
+        assert_eq!(speed_shown(0.1234, 3, true), "+0.123");
+    }
+
     use super::percentages;
 
     #[test]

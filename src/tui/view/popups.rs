@@ -96,7 +96,7 @@ fn help(first: usize, area: Rect, buf: &mut Buffer, theme: &Theme) {
 }
 
 /// The presets to load, one row each with the `selected` one marked.
-fn preset_picker(app: &App, selected: usize, area: Rect, buf: &mut Buffer, theme: &Theme) {
+fn preset_picker(app: &App, selected: Option<usize>, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let g = theme.glyphs;
     let name_width = app
         .library()
@@ -113,12 +113,12 @@ fn preset_picker(app: &App, selected: usize, area: Rect, buf: &mut Buffer, theme
         .iter()
         .enumerate()
         .map(|(i, p)| {
-            let style = if i == selected {
+            let style = if Some(i) == selected {
                 theme.selected
             } else {
                 theme.text
             };
-            let mark = if i == selected { g.selected } else { " " };
+            let mark = if Some(i) == selected { g.selected } else { " " };
             // A file of the user's named like a built-in one: both are listed, and
             // this row loads the file (`--preset NAME` finds the built-in).
             let twin = matches!(p.origin, PresetOrigin::File(_))
@@ -299,7 +299,7 @@ impl Component for Help {
 
 impl Component for Picker {
     fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
-        preset_picker(cx.app, self.selected(), area, buf, cx.theme);
+        preset_picker(cx.app, self.marked(), area, buf, cx.theme);
     }
 }
 

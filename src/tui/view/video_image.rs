@@ -15,7 +15,7 @@ use std::time::Duration;
 use image::{DynamicImage, Rgb, RgbImage};
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Rect, Size};
-use ratatui::style::{Color, Style};
+use ratatui::style::Style;
 use ratatui::widgets::{Block, Clear, Widget};
 use ratatui_image::picker::cap_parser::QueryStdioOptions;
 use ratatui_image::picker::{Picker, ProtocolType};
@@ -346,6 +346,10 @@ struct Marks {
 
 impl Marks {
     fn of(theme: &Theme, model: Option<[(f64, f64); 2]>, ring: f64) -> Marks {
+        // Drawn on the video's pixels, not on the terminal's background: the dark
+        // palette's light colours whatever the terminal's theme (none under NO_COLOR).
+        let bright = Theme::new(theme.glyphs, theme.monochrome);
+        let theme = &bright;
         Marks {
             model,
             ring,
@@ -356,19 +360,13 @@ impl Marks {
     }
 }
 
-/// A style's colour as RGB (`or` when it has none the picture can use).
+/// A style's colour as RGB (`or` when it has none the picture can use): xterm's RGB
+/// of the theme's colour.
 fn rgb(style: Style, or: [u8; 3]) -> Rgb<u8> {
-    Rgb(match style.fg {
-        Some(Color::Rgb(r, g, b)) => [r, g, b],
-        Some(Color::Red | Color::LightRed) => [255, 90, 90],
-        Some(Color::Green | Color::LightGreen) => [90, 230, 90],
-        Some(Color::Yellow | Color::LightYellow) => [240, 220, 80],
-        Some(Color::Blue | Color::LightBlue) => [100, 150, 255],
-        Some(Color::Magenta | Color::LightMagenta) => [230, 110, 230],
-        Some(Color::Cyan | Color::LightCyan) => [80, 220, 230],
-        Some(Color::White | Color::Gray) => [230, 230, 230],
-        _ => or,
-    })
+    Rgb(style
+        .fg
+        .and_then(crate::tui::theme::xterm_rgb)
+        .unwrap_or(or))
 }
 
 /// Frame `k` of `view` at `size` px (the band about the groove), with `marks` drawn in.

@@ -4,4 +4,5 @@
 mod fuzz;
 mod options;
 mod params;
+mod themes;
 mod wording;

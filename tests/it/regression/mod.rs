@@ -6,6 +6,7 @@ mod classroom;
 mod new_user_trial;
 mod reliability_inputs;
 mod reliability_outputs;
+mod small_words;
 
 use std::path::{Path, PathBuf};
 use std::process::{Command, Stdio};

@@ -47,7 +47,7 @@ fn shift_w_writes_the_figure_of_the_view_on_screen() {
     let (name, svg) = export_figure(&mut a);
     assert_eq!(name, "paper-b4.9-chart.svg");
     assert!(svg.contains("v_cm(t) and v_t(t)") && svg.contains("measured v_cm"));
-    assert!(svg.contains("mu_k = 0.1667,") && !svg.contains("0.16667742"));
+    assert!(svg.contains("μ_k = 0.1667,") && !svg.contains("0.16667742"));
     press(&mut a, "x");
     let (name, svg) = export_figure(&mut a);
     assert_eq!(name, "paper-b4.9-positions.svg");
@@ -66,7 +66,7 @@ fn shift_w_writes_the_figure_of_the_view_on_screen() {
     a.wait();
     let (name, svg) = export_figure(&mut a);
     assert_eq!(name, "paper-b4.9-methods.svg");
-    assert!(svg.contains("Work-precision") && svg.contains("mu = 0.1667,"));
+    assert!(svg.contains("Work-precision") && svg.contains("μ_k = 0.1667,"));
     // Against the work the view shows (steps by default; the rows are untimed then).
     assert!(svg.contains("steps per run"), "{}", &svg[..400]);
     // The energy chart has none yet: said at once, no prompt.
@@ -93,11 +93,8 @@ fn said_as_fit_says(svg: &str, args: &[&str]) {
         .lines()
         .find(|l| l.contains(": model "))
         .unwrap_or_else(|| panic!("no caption in {}", &svg[..400.min(svg.len())]));
-    let want = format!(
-        "model {}, mu = {} (2 sigma);",
-        model.replace("μ_k", "mu_k"),
-        mu.replace('±', "+-")
-    );
+    // In the screen's signs (issue 37: not mu, +- and 2 sigma).
+    let want = format!("model {model}, μ_k = {mu} (2σ);");
     assert!(caption.contains(&want), "{caption}\nwants {want}\n{cli}");
     let json = common::run_in_process(&[&["fit"], args, &["--format", "json"]].concat()).unwrap();
     let j: serde_json::Value = serde_json::from_str(&json).unwrap();

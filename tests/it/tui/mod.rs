@@ -13,6 +13,7 @@ mod lab_jobs;
 mod lab_keys;
 mod motion;
 mod numbers;
+mod picker_hides;
 mod screens;
 mod settings_layers;
 mod small_screens;

@@ -98,9 +98,10 @@ impl ChartState {
         Handled::Say(match (factor > 1.0, self.zoom == before) {
             (false, _) => "time zoom off: the whole run".into(),
             (true, same) => format!(
-                "time zoom ×{}{}: {a:.3} … {b:.3} s (0: the whole run)",
+                "time zoom ×{}{}: {} (0: the whole run)",
                 zoom::text(factor),
-                if same { " (the deepest)" } else { "" }
+                if same { " (the deepest)" } else { "" },
+                zoom::window_text(a, b)
             ),
         })
     }

@@ -9,6 +9,19 @@ pub fn text(factor: f64) -> String {
     crate::settings::units::significant(factor, 3)
 }
 
+/// A zoomed window as the status line says it, `a … b s`, with the decimals that tell
+/// its ends apart (at ×4096 a window is a fraction of a millisecond: three decimals
+/// would write `0.216 … 0.216 s`).
+pub fn window_text(a: f64, b: f64) -> String {
+    let width = (b - a).abs();
+    let decimals = if width > 0.0 && width.is_finite() {
+        ((-width.log10()).ceil() as i64 + 1).clamp(3, 9) as usize
+    } else {
+        3
+    };
+    format!("{a:.decimals$} … {b:.decimals$} s")
+}
+
 /// How much one zoom key or wheel notch zooms.
 pub const STEP: f64 = 2.0;
 
@@ -87,6 +100,23 @@ impl TimeZoom {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_deepest_window_reads_as_two_times() {
+        // Issue 37: ×4096 of a 1 s run said `0.216 … 0.216 s`.
+        for (a, span) in [(0.2159, 1.0), (-0.2, 13.0), (0.0, 0.05), (3.9, 2000.0)] {
+            let b = a + span / MAX;
+            let text = window_text(a, b);
+            let (x, y) = text.trim_end_matches(" s").split_once(" … ").unwrap();
+            assert_ne!(x, y, "{text}");
+            let (x, y): (f64, f64) = (x.parse().unwrap(), y.parse().unwrap());
+            assert!(
+                (x - a).abs() <= 0.1 * (b - a) && (y - b).abs() <= 0.1 * (b - a),
+                "{text}"
+            );
+        }
+        assert_eq!(window_text(-0.2, 0.8), "-0.200 … 0.800 s");
+    }
 
     const SPAN: (f64, f64) = (-0.2, 12.8);
 
