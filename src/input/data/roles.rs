@@ -88,8 +88,7 @@ pub fn swapped(track: &Track) -> Result<(), Swapped> {
     }
     // The frames where both have a position (a column shorter than the times has
     // none past its end: `Track::at`).
-    type Points = Vec<(f64, f64)>;
-    let (centre, mark): (Points, Points) = (0..track.t.len())
+    let (centre, mark): (Vec<_>, Vec<_>) = (0..track.t.len())
         .map(|i| track.at(i))
         .filter(|f| [f.x, f.y, f.mark_x, f.mark_y].iter().all(|v| v.is_finite()))
         .map(|f| ((f.x, f.y), (f.mark_x, f.mark_y)))

@@ -207,7 +207,7 @@ pub struct NoCommonFrame {
 /// One frame of a [`Track`], its columns read together: NaN where a cell is
 /// missing (or the frame is past a column's end).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Frame {
+pub struct TrackFrame {
     pub t: f64,
     pub x: f64,
     pub y: f64,
@@ -216,7 +216,7 @@ pub struct Frame {
     pub mark_y: f64,
 }
 
-impl Frame {
+impl TrackFrame {
     /// The mark's offset from the centre (x, y), m; NaN where either is missing.
     pub fn mark_offset(&self) -> (f64, f64) {
         (self.mark_x - self.x, self.mark_y - self.y)
@@ -227,13 +227,13 @@ impl Track {
     /// Frame `i`, all its columns; a frame or cell the track does not have reads as
     /// NaN (a missing value), so a column shorter than the times is never read past
     /// its end.
-    pub fn at(&self, i: usize) -> Frame {
+    pub fn at(&self, i: usize) -> TrackFrame {
         let cell = |v: &[f64]| v.get(i).copied().unwrap_or(f64::NAN);
         let (mark_x, mark_y) = match &self.mark {
             Some((mx, my)) => (cell(mx), cell(my)),
             None => (f64::NAN, f64::NAN),
         };
-        Frame {
+        TrackFrame {
             t: cell(&self.t),
             x: cell(&self.x),
             y: cell(&self.y),

@@ -255,19 +255,10 @@ pub fn derive(
     let sigma = scatter(&xs).max(1e-7);
     let n = half_window(dt, sigma, opts);
     let kinks = impacts(&ts, &xs, n.max(3), sigma, dt, opts.impact_at)?;
-    let Some(&first) = kinks.first() else {
-        // `impacts` finds the first impact or says why not.
-        return Err(TrackError::NoSharpChange {
-            biggest: 0.0,
-            noise: f64::NAN,
-        });
-    };
+    let first = first_kink(&kinks)?;
     let dir = first.before.signum();
     let (before, after) = frames_around(&ts, first.t, opts.min_frames)?;
-    let approach = fit::line(
-        ts.get(..before).unwrap_or_default(),
-        xs.get(..before).unwrap_or_default(),
-    );
+    let approach = approach_line(&ts, &xs, before);
     let cuts: Vec<f64> = kinks.iter().map(|k| k.t).collect();
     let dx = derivatives(&ts, &xs, n, &cuts, sigma);
     let spin = mark_off_the_centre(spin_of(track, &rows, dir, (n, dt), &cuts), sigma)?;
@@ -348,6 +339,22 @@ pub fn derive(
         mark_radius: spin.as_ref().map(|s| s.radius),
     };
     Ok((m, found))
+}
+
+/// The first impact of those `impacts` found (it finds one or says why not).
+fn first_kink(kinks: &[impacts::Kink]) -> Result<impacts::Kink, TrackError> {
+    kinks.first().copied().ok_or(TrackError::NoSharpChange {
+        biggest: 0.0,
+        noise: f64::NAN,
+    })
+}
+
+/// The straight line through the centre's first `before` frames: the approach.
+fn approach_line(ts: &[f64], xs: &[f64], before: usize) -> fit::Line {
+    fit::line(
+        ts.get(..before).unwrap_or_default(),
+        xs.get(..before).unwrap_or_default(),
+    )
 }
 
 /// At least `2 · max(min_frames, 3)` frames with a centre position (`frames`).
