@@ -65,7 +65,12 @@ pub fn run(args: &DataCmdArgs, scene: &SceneArgs, data: &DataArgs) -> Result<Str
             .filter(|m| !header.iter().any(|(k, _)| k.name() == *m))
             .collect();
         kinds.push((file.clone(), report.holds_velocities()));
+        let mark_doubt = scene
+            .resolve()
+            .ok()
+            .and_then(|(_, sc, _)| mark_doubt(&report, sc.radius));
         reports.push(DataReport {
+            mark_doubt,
             report,
             scene_values,
             header_values: header.iter().map(|(k, v)| (k.name(), *v)).collect(),
@@ -151,6 +156,24 @@ pub struct DataReport {
     /// The values no data measure that enter F_net, τ_net and the energies: assumed
     /// (the preset's) unless given (here or in the file's header).
     pub assumed: Vec<&'static str>,
+    /// Why the track taken for the rim mark cannot be one (it lies farther from the
+    /// centre than twice the scene's R), naming it; absent when it can.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mark_doubt: Option<String>,
+}
+
+/// Why `report`'s rim mark cannot be one: its median distance from the centre is more
+/// than twice the ball's radius `radius` (a second ball, or another run side by side).
+fn mark_doubt(report: &Report, radius: f64) -> Option<String> {
+    let (mark, d) = (report.mark.as_ref()?, report.mark_distance?);
+    (d > 2.0 * radius).then(|| {
+        format!(
+            "track {} is no rim mark: it lies {} from the centre (median), more than twice the ball's R = {} (a second ball, or another run?); name the mark's track with --track mark=NAME, or give the ball's --radius",
+            named(mark),
+            show(d, Dimension::Length),
+            show(radius, Dimension::Length)
+        )
+    })
 }
 
 /// A track's name as the text says it.
@@ -202,6 +225,15 @@ pub fn describe(shown: &DataReport) -> String {
         significant(r.t_first, 4),
         significant(r.t_last, 4)
     );
+    if let Some(doubt) = &shown.mark_doubt {
+        let _ = writeln!(s, "  {doubt}");
+    }
+    if let Some(line) = r.notes.cut_row {
+        let _ = writeln!(
+            s,
+            "  line {line}, the last, is cut short (no line end, fewer cells than the line before): dropped"
+        );
+    }
     for u in &r.notes.units {
         let _ = writeln!(s, "  {} in {}: {}", u.quantity, u.unit, u.how);
     }

@@ -370,13 +370,21 @@ impl crate::study::Progress for Ticked<'_> {
 }
 
 /// The groove a data file states it was measured in: its `# scene` lines' R and b
-/// (the preset's for the one they leave out); `None` if they give neither.
+/// (the one they leave out is not stated: the preset's value stands in, and is never
+/// said to be the data's); `None` if they give neither.
 fn stated_groove(preset: &Preset, own_scene: &SceneSpec) -> Option<Groove> {
-    if own_scene.get(Key::Radius).is_none() && own_scene.get(Key::Width).is_none() {
+    let stated = [
+        own_scene.get(Key::Radius).is_some(),
+        own_scene.get(Key::Width).is_some(),
+    ];
+    if stated == [false; 2] {
         return None;
     }
     let (scene, _) = preset.spec.over(own_scene).resolve().ok()?;
-    Some(Groove::of(&scene))
+    Some(Groove {
+        stated,
+        ..Groove::of(&scene)
+    })
 }
 
 /// A rim mark tracked farther from the centre than the ball's radius (beyond the

@@ -3,6 +3,13 @@
 //! tracks), and the safe reading of a user's file (`file`). The parameter table and
 //! units they read through are `settings`'.
 
+#![deny(
+    clippy::indexing_slicing,
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::panic
+)]
+
 pub mod data;
 pub mod file;
 pub mod video;

@@ -51,6 +51,10 @@ impl OwnData {
 pub struct Groove {
     pub radius: f64,
     pub width: f64,
+    /// Whether R and b were stated (a data file's `# scene` lines may give one of
+    /// them; the other is then the preset's, and no measurement of the data's).
+    #[serde(skip)]
+    pub stated: [bool; 2],
 }
 
 impl Groove {
@@ -58,13 +62,33 @@ impl Groove {
         Groove {
             radius: scene.radius,
             width: scene.width,
+            stated: [true; 2],
         }
     }
 
     /// The same groove: R and b agree to far below any measurement (a value typed
-    /// in another unit, 4.9 cm or 49 mm, rounds differently in its last bits).
+    /// in another unit, 4.9 cm or 49 mm, rounds differently in its last bits), where
+    /// both state them.
     pub fn same(&self, other: &Groove) -> bool {
-        Groove::near(self.radius, other.radius) && Groove::near(self.width, other.width)
+        self.differing(other).next().is_none()
+    }
+
+    /// The values both state that differ: (name, this one's, the other's).
+    fn differing<'a>(
+        &'a self,
+        other: &'a Groove,
+    ) -> impl Iterator<Item = (&'static str, f64, f64)> + 'a {
+        [
+            ("R", self.radius, other.radius, 0),
+            ("b", self.width, other.width, 1),
+        ]
+        .into_iter()
+        .filter(move |&(_, a, b, i)| {
+            self.stated.get(i).copied().unwrap_or(true)
+                && other.stated.get(i).copied().unwrap_or(true)
+                && !Groove::near(a, b)
+        })
+        .map(|(name, a, b, _)| (name, a, b))
     }
 
     fn near(a: f64, b: f64) -> bool {
@@ -136,11 +160,11 @@ impl OtherGroove {
         let len = |v: f64| show(v, Dimension::Length);
         let mut data = Vec::new();
         let mut model = Vec::new();
-        for (name, a, b) in [("R", d.radius, m.radius), ("b", d.width, m.width)] {
-            if !Groove::near(a, b) {
-                data.push(format!("{name} = {}", len(a)));
-                model.push(format!("{name} = {}", len(b)));
-            }
+        // Only what the data state: a value their file leaves out is the preset's,
+        // and the data were never "measured at" it.
+        for (name, a, b) in d.differing(m) {
+            data.push(format!("{name} = {}", len(a)));
+            model.push(format!("{name} = {}", len(b)));
         }
         let whose = match &self.whose {
             Whose::Preset(name) => format!("{name}'s data were"),

@@ -17,7 +17,8 @@ pub fn read_with_notes(
     file: &str,
     reading: &Reading,
 ) -> Result<(RawSeries, Notes), DataError> {
-    let (raw, notes) = read_any(text, file, reading)?;
+    let (raw, mut notes) = read_any(text, file, reading)?;
+    notes.cut_row = table::cut_short_last(text);
     if let RawSeries::Positions(t) = &raw {
         super::roles::swapped(t).map_err(|e| DataError::new(file, e))?;
     }

@@ -2,6 +2,15 @@
 //! the tracks in the file, and how each unit was decided (the header, an option, a
 //! video's calibration, or nobody: SI assumed and checked for plausibility).
 
+// Not yet converted to `get`, iterators and typed errors (issue 35, open): its
+// indices come from its own loops over vectors of one length.
+#![allow(
+    clippy::indexing_slicing,
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::panic
+)]
+
 use serde::Serialize;
 
 /// What a file said about itself.
@@ -13,6 +22,10 @@ pub struct Notes {
     pub tracks: Vec<String>,
     /// How each quantity's unit was decided.
     pub units: Vec<UnitNote>,
+    /// The line number of the file's last line when it is cut short (no line end,
+    /// fewer cells than the line before: an export stopped mid-row), dropped.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cut_row: Option<usize>,
 }
 
 /// One quantity's unit and who decided it.

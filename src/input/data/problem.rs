@@ -249,7 +249,22 @@ pub enum RowError {
         "line {line}: t = {time} s does not increase (previous {prev} s), allowed strictly increasing times"
     )]
     NotIncreasing { line: usize, time: f64, prev: f64 },
+    /// A number beyond [`MOST_CELL`] in the file's own unit: no experiment's.
+    #[error(
+        "line {line}: {name} = {value:e} is beyond any measurement, allowed |{name}| ≤ 1e12 in the file's unit"
+    )]
+    Beyond {
+        line: usize,
+        name: &'static str,
+        value: f64,
+    },
 }
+
+/// The largest magnitude a cell of a track may have in the file's own unit (pixels,
+/// µs, mm …): 1e12 is more than any clip's pixels or microseconds; beyond it the
+/// numbers are no measurement, and their differences would overflow (±1e308
+/// alternating gave "largest change 0.000 m/s").
+pub const MOST_CELL: f64 = 1e12;
 
 /// A table of accelerations only (phyphox's accelerometer), at its header's `line`
 /// with those `columns`: what groovelab needs instead.

@@ -83,28 +83,26 @@ fn off_line(points: &[(f64, f64)]) -> f64 {
 /// have a position, the centre's path strays from a straight line [`STRAYS_MORE`]
 /// times as far as the mark's, and by more than a fifth of their distance apart.
 pub fn swapped(track: &Track) -> Result<(), Swapped> {
-    let Some((mx, my)) = &track.mark else {
-        return Ok(());
-    };
-    let both: Vec<usize> = (0..track.t.len())
-        .filter(|&i| {
-            [track.x[i], track.y[i], mx[i], my[i]]
-                .iter()
-                .all(|v| v.is_finite())
-        })
-        .collect();
-    if both.len() < 10 {
+    if track.mark.is_none() {
         return Ok(());
     }
-    let centre: Vec<(f64, f64)> = both.iter().map(|&i| (track.x[i], track.y[i])).collect();
-    let mark: Vec<(f64, f64)> = both.iter().map(|&i| (mx[i], my[i])).collect();
+    // The frames where both have a position (a column shorter than the times has
+    // none past its end: `Track::at`).
+    let (centre, mark): (Vec<_>, Vec<_>) = (0..track.t.len())
+        .map(|i| track.at(i))
+        .filter(|f| [f.x, f.y, f.mark_x, f.mark_y].iter().all(|v| v.is_finite()))
+        .map(|f| ((f.x, f.y), (f.mark_x, f.mark_y)))
+        .unzip();
+    if centre.len() < 10 {
+        return Ok(());
+    }
     let mut apart: Vec<f64> = centre
         .iter()
         .zip(&mark)
         .map(|(c, m)| (c.0 - m.0).hypot(c.1 - m.1))
         .collect();
     apart.sort_by(f64::total_cmp);
-    let apart = apart[apart.len() / 2];
+    let apart = apart.get(apart.len() / 2).copied().unwrap_or(f64::NAN);
     let (centre_off, mark_off) = (off_line(&centre), off_line(&mark));
     if centre_off > STRAYS_MORE * mark_off && centre_off > 0.2 * apart {
         return Err(Swapped {

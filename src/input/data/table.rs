@@ -58,6 +58,35 @@ pub(crate) struct Table {
     text: String,
     /// The file's line number of each kept line.
     lines: Vec<usize>,
+    /// The last line's number when it is cut short ([`cut_short_last`]): not a row.
+    cut: Option<usize>,
+}
+
+/// The line number (from 1) of the file's last line when the file was cut off in the
+/// middle of it: no line end after it, and fewer cells than the line before it (an
+/// export stopped mid-row; its last number may be cut too, 0.0345 read as 0).
+pub(crate) fn cut_short_last(text: &str) -> Option<usize> {
+    if text.ends_with('\n') || text.ends_with('\r') {
+        return None;
+    }
+    let total = text.lines().count();
+    let mut kept = text
+        .lines()
+        .rev()
+        .enumerate()
+        .map(|(j, l)| (total - 1 - j, l))
+        .filter(|(_, l)| !l.trim().is_empty() && !l.trim_start().starts_with('#'));
+    let (n, last) = kept.next()?;
+    let (_, before) = kept.next()?;
+    // Both counted by the separator of the complete line.
+    let sep = Sep::of(std::iter::once(before));
+    let cells = |l: &str| match sep {
+        Sep::Tab => l.split('\t').count(),
+        Sep::Semicolon => l.split(';').count(),
+        Sep::Comma => l.split(',').count(),
+        Sep::Space => l.split_whitespace().count(),
+    };
+    (cells(last) < cells(before)).then_some(n + 1)
 }
 
 impl Table {
@@ -88,6 +117,7 @@ impl Table {
             sep,
             text: out,
             lines,
+            cut: cut_short_last(text),
         }
     }
 
@@ -106,13 +136,17 @@ impl Table {
             .from_reader(self.text.as_bytes());
         // Each kept line is one record (a quoted line break would shift the numbers,
         // so the record's own line is looked up, not counted).
-        reader.into_records().filter_map(Result::ok).map(|cells| {
-            let k = cells.position().map_or(0, |p| p.line() as usize - 1);
-            TableRow {
-                line: self.lines.get(k).copied().unwrap_or(0),
-                cells,
-            }
-        })
+        reader
+            .into_records()
+            .filter_map(Result::ok)
+            .map(|cells| {
+                let k = cells.position().map_or(0, |p| p.line() as usize - 1);
+                TableRow {
+                    line: self.lines.get(k).copied().unwrap_or(0),
+                    cells,
+                }
+            })
+            .filter(|row| Some(row.line) != self.cut)
     }
 }
 

@@ -5,6 +5,15 @@
 //! cells and the rest is read as any table (a position track or velocities); the
 //! other header lines become comments, so every error still names the file's line.
 
+// Not yet converted to `get`, iterators and typed errors (issue 35, open): its
+// indices come from its own loops over vectors of one length.
+#![allow(
+    clippy::indexing_slicing,
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::panic
+)]
+
 use super::table::file_unit;
 use crate::settings::units::Dimension;
 

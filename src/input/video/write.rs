@@ -2,6 +2,15 @@
 //! encoded by the system's `ffmpeg` from raw RGB frames piped to it. For the tests'
 //! and benchmarks' synthetic videos, and for anyone who wants to see them.
 
+// Tracker rewrites this file (src/input/video is being reworked beside issue 35);
+// its indexing, unwrap and expect are converted to `get` and errors after that.
+#![allow(
+    clippy::indexing_slicing,
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::panic
+)]
+
 use std::io::Write;
 use std::path::Path;
 use std::process::{Command, Stdio};

@@ -7,6 +7,13 @@
 //! stops in `problem`), the comparison of models in `choice`; here both fits of a
 //! series are made together.
 
+#![deny(
+    clippy::indexing_slicing,
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::panic
+)]
+
 mod approach;
 mod choice;
 mod least_squares;
@@ -99,7 +106,7 @@ pub fn fit_all(
     let mut evals = problem::Evals::new(progress);
     let same = |a: &[Free], b: &[Free]| a.len() == b.len() && a.iter().all(|f| b.contains(f));
     let mut sets = choice::candidates(m, ask.v0_measured);
-    let simplest = sets[0].clone();
+    let simplest = sets.first().cloned().unwrap_or_default();
     if let Some(f) = free.filter(|f| !sets.iter().any(|s| same(s, f))) {
         sets.push(f.to_vec());
     }
@@ -228,7 +235,11 @@ fn check_finite(f: &Fits, data: &Measured, scene: &Scene) -> Result<(), FitError
 /// What the series `data` looks like in `scene`, for a fit that gives no finite
 /// number ([`FitError::NotFinite`]).
 fn looks(data: &Measured, scene: &Scene) -> DataLooks {
-    let mut steps: Vec<f64> = data.t.windows(2).map(|w| w[1] - w[0]).collect();
+    let mut steps: Vec<f64> = data
+        .t
+        .windows(2)
+        .filter_map(|w| w.last().zip(w.first()).map(|(b, a)| b - a))
+        .collect();
     steps.sort_by(f64::total_cmp);
     let span = |v: &[f64]| {
         v.iter()

@@ -1,6 +1,15 @@
 //! The regime the data show, to hold against the model's: the band of speeds that
 //! counts as rest and the mean motion after the sliding phase.
 
+// Not yet converted to `get`, iterators and typed errors (issue 35, open): its
+// indices come from its own loops over vectors of one length.
+#![allow(
+    clippy::indexing_slicing,
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::panic
+)]
+
 use super::line::{line, sliding_window};
 use crate::physics::derived::Regime;
 use crate::physics::engine;

@@ -2,6 +2,15 @@
 //! from the normal matrix, and why a value gets none ([`NotIdentified`]); with the
 //! small dense solves the fit needs.
 
+// Not yet converted to `get`, iterators and typed errors (issue 35, open): its
+// indices come from its own loops over vectors of one length.
+#![allow(
+    clippy::indexing_slicing,
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::panic
+)]
+
 use serde::Serialize;
 
 use super::problem::Free;

@@ -4,6 +4,13 @@
 //! the lab runs on every scene change: a track's v_t from the scene's contact radius
 //! r = kR, the rest band, and the ghost ball's track (`ghost`).
 
+#![deny(
+    clippy::indexing_slicing,
+    clippy::unwrap_used,
+    clippy::expect_used,
+    clippy::panic
+)]
+
 mod ghost;
 pub mod series;
 pub mod track;

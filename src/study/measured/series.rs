@@ -74,9 +74,10 @@ pub struct Stencil {
 impl Stencil {
     /// (frame, weight) over the frames whose times are `times`.
     pub fn weights<'a>(&'a self, times: &'a [f64]) -> impl Iterator<Item = (usize, f64)> + 'a {
-        (self.lo..=self.hi).map(move |k| {
-            let u = (times[k] - self.t0) / self.h;
-            (k, self.c[0] + self.c[1] * u + self.c[2] * u * u)
+        // Frames past the end of `times` have no time, and so no weight.
+        (self.lo..=self.hi).filter_map(move |k| {
+            let u = (times.get(k)? - self.t0) / self.h;
+            Some((k, self.c[0] + self.c[1] * u + self.c[2] * u * u))
         })
     }
 }
@@ -203,13 +204,54 @@ pub struct NoCommonFrame {
     pub mark: (f64, f64),
 }
 
+/// One frame of a [`Track`], its columns read together: NaN where a cell is
+/// missing (or the frame is past a column's end).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct TrackFrame {
+    pub t: f64,
+    pub x: f64,
+    pub y: f64,
+    /// The rim mark's x and y, m; NaN without a mark.
+    pub mark_x: f64,
+    pub mark_y: f64,
+}
+
+impl TrackFrame {
+    /// The mark's offset from the centre (x, y), m; NaN where either is missing.
+    pub fn mark_offset(&self) -> (f64, f64) {
+        (self.mark_x - self.x, self.mark_y - self.y)
+    }
+}
+
 impl Track {
+    /// Frame `i`, all its columns; a frame or cell the track does not have reads as
+    /// NaN (a missing value), so a column shorter than the times is never read past
+    /// its end.
+    pub fn at(&self, i: usize) -> TrackFrame {
+        let cell = |v: &[f64]| v.get(i).copied().unwrap_or(f64::NAN);
+        let (mark_x, mark_y) = match &self.mark {
+            Some((mx, my)) => (cell(mx), cell(my)),
+            None => (f64::NAN, f64::NAN),
+        };
+        TrackFrame {
+            t: cell(&self.t),
+            x: cell(&self.x),
+            y: cell(&self.y),
+            mark_x,
+            mark_y,
+        }
+    }
+
     /// This track (the ball's centre) with the centre of `other` as its rim mark, the
     /// mark's frames matched to this track's by time (within a quarter of a frame; a
     /// frame without a match is a missing mark). For two one-track exports of the same
     /// video.
     pub fn with_mark(mut self, other: &Track) -> Result<Track, NoCommonFrame> {
-        let mut gaps: Vec<f64> = self.t.windows(2).map(|w| w[1] - w[0]).collect();
+        let mut gaps: Vec<f64> = self
+            .t
+            .windows(2)
+            .filter_map(|w| w.last().zip(w.first()).map(|(b, a)| b - a))
+            .collect();
         gaps.sort_by(f64::total_cmp);
         let frame = gaps.get(gaps.len() / 2).copied().unwrap_or(f64::INFINITY);
         let (mut mx, mut my) = (Vec::new(), Vec::new());
@@ -219,8 +261,9 @@ impl Track {
             match other.t.get(j).filter(|&&s| (s - t).abs() <= 0.25 * frame) {
                 Some(_) => {
                     matched += 1;
-                    mx.push(other.x[j]);
-                    my.push(other.y[j]);
+                    let f = other.at(j);
+                    mx.push(f.x);
+                    my.push(f.y);
                 }
                 None => {
                     mx.push(f64::NAN);

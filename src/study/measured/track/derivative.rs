@@ -46,13 +46,12 @@ pub(super) fn quadratic(ts: &[f64], ys: &[f64], t0: f64) -> Option<Quadratic> {
     let mut b = [0.0; 3];
     for (&t, &y) in ts.iter().zip(ys) {
         let u = (t - t0) / h;
-        let mut p = 1.0;
-        for (k, sk) in s.iter_mut().enumerate() {
+        let powers = [1.0, u, u * u, u * u * u, u * u * u * u];
+        for (sk, p) in s.iter_mut().zip(powers) {
             *sk += p;
-            if k < 3 {
-                b[k] += p * y;
-            }
-            p *= u;
+        }
+        for (bk, p) in b.iter_mut().zip(powers) {
+            *bk += p * y;
         }
     }
     let a = [[s[0], s[1], s[2]], [s[1], s[2], s[3]], [s[2], s[3], s[4]]];
@@ -80,9 +79,12 @@ pub(super) fn quadratic(ts: &[f64], ys: &[f64], t0: f64) -> Option<Quadratic> {
             a[0][0] * a[1][1] - a[0][1] * a[1][0],
         ],
     ];
-    let inv = |i: usize, j: usize| adj[i][j] / det;
-    let c: [f64; 3] =
-        std::array::from_fn(|i| (0..3).map(|j| inv(i, j) * b[j]).sum::<f64>() / h.powi(i as i32));
+    let inv = adj.map(|row| row.map(|v| v / det));
+    // Coefficient i of τ^i is row i of the inverse times b, over h^i.
+    let mut c = [0.0; 3];
+    for ((ci, row), scale) in c.iter_mut().zip(&inv).zip([1.0, h, h * h]) {
+        *ci = row.iter().zip(&b).map(|(r, b)| r * b).sum::<f64>() / scale;
+    }
     let rss: f64 = ts
         .iter()
         .zip(ys)
@@ -92,16 +94,17 @@ pub(super) fn quadratic(ts: &[f64], ys: &[f64], t0: f64) -> Option<Quadratic> {
         })
         .sum();
     // The slope c1 = Σ_j inv(1, j) b_j / h with b_j = Σ_k u_k^j y_k: linear in the ys.
+    let [_, slope_row, _] = inv;
     let stencil = Stencil {
         lo: 0,
-        hi: ts.len() - 1,
+        hi: ts.len().saturating_sub(1),
         t0,
         h,
-        c: std::array::from_fn(|j| inv(1, j) / h),
+        c: slope_row.map(|v| v / h),
     };
     Some(Quadratic {
         c,
-        v11: inv(1, 1) / (h * h),
+        v11: slope_row[1] / (h * h),
         rss,
         stencil,
     })
@@ -112,7 +115,7 @@ pub(super) fn quadratic(ts: &[f64], ys: &[f64], t0: f64) -> Option<Quadratic> {
 /// does not claim a tiny error by chance.
 fn local(ts: &[f64], ys: &[f64], i: usize, lo: usize, hi: usize, sigma: f64) -> Option<Local> {
     const PRIOR: f64 = 4.0;
-    let q = quadratic(&ts[lo..=hi], &ys[lo..=hi], ts[i])?;
+    let q = quadratic(ts.get(lo..=hi)?, ys.get(lo..=hi)?, *ts.get(i)?)?;
     let dof = (hi + 1 - lo) as f64 - 3.0;
     let s2 = (q.rss + PRIOR * sigma * sigma) / (dof + PRIOR);
     Some(Local {
@@ -131,7 +134,10 @@ fn local(ts: &[f64], ys: &[f64], i: usize, lo: usize, hi: usize, sigma: f64) -> 
 pub fn scatter(ys: &[f64]) -> f64 {
     let mut d: Vec<f64> = ys
         .windows(4)
-        .map(|w| (w[3] - 3.0 * w[2] + 3.0 * w[1] - w[0]).abs())
+        .filter_map(|w| match *w {
+            [a, b, c, d] => Some((d - 3.0 * c + 3.0 * b - a).abs()),
+            _ => None,
+        })
         .filter(|v| v.is_finite())
         .collect();
     if d.is_empty() {
@@ -156,10 +162,15 @@ pub(super) fn median(mut v: Vec<f64>) -> f64 {
 fn unwrap_run(angles: &mut [f64]) {
     let tau = std::f64::consts::TAU;
     let mut shift = 0.0;
-    for i in 1..angles.len() {
-        let d = angles[i] + shift - angles[i - 1];
+    let Some((&mut first, rest)) = angles.split_first_mut() else {
+        return;
+    };
+    let mut previous = first;
+    for a in rest {
+        let d = *a + shift - previous;
         shift -= tau * (d / tau).round();
-        angles[i] += shift;
+        *a += shift;
+        previous = *a;
     }
 }
 
@@ -182,7 +193,7 @@ fn end_rate(ts: &[f64], angles: &[f64], last: bool) -> Option<f64> {
         return None;
     }
     let r = if last { ts.len() - n..ts.len() } else { 0..n };
-    let (t, a) = (&ts[r.clone()], &angles[r]);
+    let (t, a) = (ts.get(r.clone())?, angles.get(r)?);
     let mt = t.iter().sum::<f64>() / n as f64;
     let ma = a.iter().sum::<f64>() / n as f64;
     let (sxy, sxx) = t.iter().zip(a).fold((0.0, 0.0), |(sxy, sxx), (t, a)| {
@@ -205,33 +216,59 @@ fn end_rate(ts: &[f64], angles: &[f64], last: bool) -> Option<f64> {
 /// whole turn then unknown, which the position fit does not depend on).
 pub(super) fn unwrap(ts: &[f64], angles: &mut [f64], dt: f64) -> Vec<f64> {
     let tau = std::f64::consts::TAU;
+    let len = ts.len().min(angles.len());
+    // The first frame of each run of consecutive frames, then the end.
     let mut starts = vec![0];
-    starts.extend((1..ts.len()).filter(|&i| ts[i] - ts[i - 1] > 1.5 * dt));
-    starts.push(ts.len());
+    starts.extend(
+        ts.windows(2)
+            .enumerate()
+            .filter(|(_, w)| matches!(**w, [t0, t1] if t1 - t0 > 1.5 * dt))
+            .map(|(i, _)| i + 1)
+            .filter(|&i| i < len),
+    );
+    starts.push(len);
     for w in starts.windows(2) {
-        unwrap_run(&mut angles[w[0]..w[1]]);
+        if let [a, b] = *w
+            && let Some(run) = angles.get_mut(a..b)
+        {
+            unwrap_run(run);
+        }
     }
     let mut cuts = Vec::new();
     for w in starts.windows(3) {
-        let (a, b, c) = (w[0], w[1], w[2]);
-        let before = end_rate(&ts[a..b], &angles[a..b], true);
-        let after = end_rate(&ts[b..c], &angles[b..c], false);
-        let gap = ts[b] - ts[b - 1];
+        let [a, b, c] = *w else { continue };
+        let (Some(t_run), Some(t_next_run)) = (ts.get(a..b), ts.get(b..c)) else {
+            continue;
+        };
+        let (Some(a_run), Some(a_next_run)) = (angles.get(a..b), angles.get(b..c)) else {
+            continue;
+        };
+        let before = end_rate(t_run, a_run, true);
+        let after = end_rate(t_next_run, a_next_run, false);
+        let (Some(&t_last), Some(&t_next), Some(&a_last), Some(&a_next)) = (
+            t_run.last(),
+            t_next_run.first(),
+            a_run.last(),
+            a_next_run.first(),
+        ) else {
+            continue;
+        };
+        let gap = t_next - t_last;
         let (predicted, doubt) = match (before, after) {
             (Some(w0), Some(w1)) => (0.5 * (w0 + w1) * gap, 0.5 * (w0 - w1).abs() * gap),
             (Some(w), None) | (None, Some(w)) => (w * gap, ONE_SIDED_DOUBT * w.abs() * gap),
             (None, None) => (0.0, f64::INFINITY),
         };
-        let d = angles[b] - angles[b - 1];
+        let d = a_next - a_last;
         let turns = ((predicted - d) / tau).round();
         let miss = (d + tau * turns - predicted).abs();
         let shift = if miss + doubt <= MOST_DOUBT {
             tau * turns
         } else {
-            cuts.push(0.5 * (ts[b - 1] + ts[b]));
+            cuts.push(0.5 * (t_last + t_next));
             -tau * (d / tau).round()
         };
-        for x in &mut angles[b..] {
+        for x in angles.iter_mut().skip(b) {
             *x += shift;
         }
     }
@@ -239,7 +276,8 @@ pub(super) fn unwrap(ts: &[f64], angles: &mut [f64], dt: f64) -> Vec<f64> {
 }
 
 /// Derivatives of `ys` at each of `ts` by local quadratic fits over ±`n` frames that
-/// stay between consecutive `cuts` (impact times).
+/// stay between consecutive `cuts` (impact times); empty for an empty series (the
+/// frames of a mark that never shows with its centre).
 pub(super) fn derivatives(
     ts: &[f64],
     ys: &[f64],
@@ -247,8 +285,8 @@ pub(super) fn derivatives(
     cuts: &[f64],
     sigma: f64,
 ) -> Vec<Option<Local>> {
-    let len = ts.len();
-    // The first index of each piece between cuts.
+    let len = ts.len().min(ys.len());
+    // The first index of each piece between cuts, then the end.
     let mut starts = vec![0];
     for &c in cuts {
         let s = ts.partition_point(|&t| t <= c);
@@ -259,10 +297,11 @@ pub(super) fn derivatives(
     starts.push(len);
     let mut out = Vec::with_capacity(len);
     for p in starts.windows(2) {
-        let (a, b) = (p[0], p[1] - 1);
-        for i in a..=b {
+        let [a, end] = *p else { continue };
+        for i in a..end {
+            // i < end, so end ≥ 1: the piece's last index.
             let lo = i.saturating_sub(n).max(a);
-            let hi = (i + n).min(b);
+            let hi = (i + n).min(end - 1);
             out.push(local(ts, ys, i, lo, hi, sigma));
         }
     }
@@ -298,6 +337,17 @@ mod tests {
             .collect();
         let s = scatter(&ys);
         assert!((s - 8e-3 / 0.6745 / 20f64.sqrt()).abs() < 1e-9, "{s}");
+    }
+
+    #[test]
+    fn an_empty_series_has_no_derivatives_and_nothing_to_unwrap() {
+        // A mark never seen with its centre gives no frames: this once panicked.
+        assert!(derivatives(&[], &[], 2, &[0.05], 1e-4).is_empty());
+        assert!(unwrap(&[], &mut [], 0.01).is_empty());
+        // Lengths that differ read only the common frames.
+        let d = derivatives(&[0.0, 0.01, 0.02, 0.03], &[0.0, 1.0], 2, &[], 1e-4);
+        assert_eq!(d.len(), 2);
+        assert!(d.iter().all(Option::is_none), "two points fit no quadratic");
     }
 
     #[test]

@@ -84,8 +84,10 @@ impl Skipped {
     pub fn of(t: &[f64], dt: f64) -> Skipped {
         let gaps: Vec<[f64; 2]> = t
             .windows(2)
-            .filter(|w| w[1] - w[0] > 1.5 * dt)
-            .map(|w| [w[0], w[1]])
+            .filter_map(|w| match *w {
+                [a, b] if b - a > 1.5 * dt => Some([a, b]),
+                _ => None,
+            })
             .collect();
         Skipped {
             frames_skipped: gaps
@@ -243,14 +245,18 @@ pub(super) fn runs(times: &[f64], missing: &[bool]) -> Vec<[f64; 2]> {
         match (m, start) {
             (true, None) => start = Some(i),
             (false, Some(s)) => {
-                out.push([times[s], times[i - 1]]);
+                if let (Some(&a), Some(&b)) = (times.get(s), times.get(i - 1)) {
+                    out.push([a, b]);
+                }
                 start = None;
             }
             _ => {}
         }
     }
-    if let Some(s) = start {
-        out.push([times[s], times[missing.len() - 1]]);
+    if let Some(s) = start
+        && let (Some(&a), Some(&b)) = (times.get(s), times.get(missing.len() - 1))
+    {
+        out.push([a, b]);
     }
     out
 }

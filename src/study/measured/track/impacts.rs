@@ -50,6 +50,11 @@ pub enum TrackError {
         scatters: f64,
     },
     #[error(
+        "the centre's velocity near t = {} s is not a finite number (velocity before it {before:e} m/s): positions this large are no measurement",
+        short(*at)
+    )]
+    NotFinite { at: f64, before: f64 },
+    #[error(
         "only {count} frames {side} the impact at t = {at:.4} s, at least {min} needed to fit the motion {side} it"
     )]
     FewFramesBeside {
@@ -121,16 +126,20 @@ pub(super) struct Kink {
 /// Velocity jumps across each frame: slope of the line over the `k` frames after it
 /// minus that over the `k` frames before (each side at least 3 frames).
 fn jumps(ts: &[f64], xs: &[f64], k: usize) -> Vec<(f64, f64)> {
-    let n = ts.len();
+    let n = ts.len().min(xs.len());
     (0..n)
         .map(|i| {
-            let (a, b) = (i.saturating_sub(k), (i + k).min(n - 1));
+            let (a, b) = (i.saturating_sub(k), (i + k).min(n.saturating_sub(1)));
             if i < a + 2 || b < i + 2 {
                 return (0.0, f64::NAN);
             }
-            let before = line_slope(&ts[a..=i], &xs[a..=i]);
-            let after = line_slope(&ts[i..=b], &xs[i..=b]);
-            (after - before, before)
+            match (ts.get(a..=i), xs.get(a..=i), ts.get(i..=b), xs.get(i..=b)) {
+                (Some(tb), Some(xb), Some(ta), Some(xa)) => {
+                    let before = line_slope(tb, xb);
+                    (line_slope(ta, xa) - before, before)
+                }
+                _ => (0.0, f64::NAN),
+            }
         })
         .collect()
 }
@@ -138,19 +147,29 @@ fn jumps(ts: &[f64], xs: &[f64], k: usize) -> Vec<(f64, f64)> {
 /// Where the two quadratics fitted on each side of frame `i` (frames `lo..i` and
 /// `i+1..=hi`) meet: the impact time and place. Falls back to frame `i` itself.
 fn locate(ts: &[f64], xs: &[f64], i: usize, lo: usize, hi: usize) -> (f64, f64) {
-    let t0 = ts[i];
-    let fallback = (t0, xs[i]);
+    let (Some(&t0), Some(&x0)) = (ts.get(i), xs.get(i)) else {
+        // Never: `i` is one of the track's frames.
+        return (f64::NAN, f64::NAN);
+    };
+    let fallback = (t0, x0);
     if i < lo + 3 || hi < i + 3 {
         return fallback;
     }
     let (Some(Quadratic { c: b, .. }), Some(Quadratic { c: a, .. })) = (
-        quadratic(&ts[lo..i], &xs[lo..i], t0),
-        quadratic(&ts[i + 1..=hi], &xs[i + 1..=hi], t0),
+        ts.get(lo..i)
+            .zip(xs.get(lo..i))
+            .and_then(|(t, x)| quadratic(t, x, t0)),
+        ts.get(i + 1..=hi)
+            .zip(xs.get(i + 1..=hi))
+            .and_then(|(t, x)| quadratic(t, x, t0)),
     ) else {
         return fallback;
     };
     let (qa, qb, qc) = (a[2] - b[2], a[1] - b[1], a[0] - b[0]);
-    let span = (ts[i - 1] - t0, ts[i + 1] - t0);
+    let (Some(&t_prev), Some(&t_next)) = (ts.get(i - 1), ts.get(i + 1)) else {
+        return fallback;
+    };
+    let span = (t_prev - t0, t_next - t0);
     let mut roots = Vec::new();
     if qa.abs() > 1e-300 {
         let disc = qb * qb - 4.0 * qa * qc;
@@ -177,19 +196,20 @@ fn locate(ts: &[f64], xs: &[f64], i: usize, lo: usize, hi: usize) -> (f64, f64) 
 
 /// The frame nearest the time `at` (the earlier one on a tie).
 fn nearest_frame(ts: &[f64], at: f64) -> usize {
-    let i = ts.partition_point(|&t| t < at).min(ts.len() - 1);
-    if i > 0 && at - ts[i - 1] < ts[i] - at {
-        i - 1
-    } else {
-        i
+    let i = ts
+        .partition_point(|&t| t < at)
+        .min(ts.len().saturating_sub(1));
+    match (i.checked_sub(1).and_then(|p| ts.get(p)), ts.get(i)) {
+        (Some(&before), Some(&here)) if at - before < here - at => i - 1,
+        _ => i,
     }
 }
 
 /// True if the jump at frame `i` is finite and none within `k` frames is larger.
 fn is_peak(j: &[(f64, f64)], k: usize, i: usize) -> bool {
-    let size = |i: usize| j[i].0.abs();
-    j[i].0.is_finite()
-        && (i.saturating_sub(k)..=(i + k).min(j.len() - 1))
+    let size = |l: usize| j.get(l).map_or(f64::NAN, |v| v.0.abs());
+    size(i).is_finite()
+        && (i.saturating_sub(k)..=(i + k).min(j.len().saturating_sub(1)))
             .all(|l| size(l).partial_cmp(&size(i)) != Some(std::cmp::Ordering::Greater) || l == i)
 }
 
@@ -203,28 +223,39 @@ fn first_impact(
     se: f64,
     given: Option<f64>,
 ) -> Result<usize, TrackError> {
-    let size = |i: usize| j[i].0.abs();
+    let size = |i: usize| j.get(i).map_or(f64::NAN, |v| v.0.abs());
     if let Some(at) = given {
         let i = nearest_frame(ts, at);
-        if j[i].1.is_nan() {
+        if j.get(i).is_none_or(|v| v.1.is_nan()) {
             return Err(TrackError::GivenImpactAtAnEnd {
                 at,
-                first: ts[0],
-                last: ts[ts.len() - 1],
+                first: ts.first().copied().unwrap_or(f64::NAN),
+                last: ts.last().copied().unwrap_or(f64::NAN),
             });
         }
         return Ok(i);
     }
+    // A frame whose side fits are not finite numbers (positions near the largest
+    // float: their differences overflow) has no velocity to compare: refused, not
+    // read as "no change".
+    if let Some((&(_, before), &at)) = j
+        .iter()
+        .zip(ts)
+        .find(|((jump, before), _)| !(jump.is_finite() && (before.is_finite() || *jump == 0.0)))
+    {
+        return Err(TrackError::NotFinite { at, before });
+    }
     let biggest = (0..j.len())
-        .filter(|&i| j[i].0.is_finite())
         .map(size)
+        .filter(|v| v.is_finite())
         .fold(0.0, f64::max);
     if biggest.partial_cmp(&(8.0 * se)) != Some(std::cmp::Ordering::Greater) {
         return Err(TrackError::NoSharpChange { biggest, noise: se });
     }
-    Ok((0..j.len())
+    // The largest jump is a peak, so this finds one; were it not, no impact is found.
+    (0..j.len())
         .find(|&i| size(i) >= 0.5 * biggest && is_peak(j, k, i))
-        .expect("the biggest jump is a peak"))
+        .ok_or(TrackError::NoSharpChange { biggest, noise: se })
 }
 
 /// Whether the jump at `first` is an impact the track shows whole: it slows the ball
@@ -239,22 +270,31 @@ fn check_first(
     given: Option<f64>,
 ) -> Result<(), TrackError> {
     let dir = before.signum();
+    let (Some(&at), Some(&x_at), Some(&t_start), Some(&x_start)) =
+        (ts.get(first), xs.get(first), ts.first(), xs.first())
+    else {
+        return Err(TrackError::FewFrames {
+            frames: ts.len().min(xs.len()),
+            need: first + 1,
+            min: 0,
+        });
+    };
     if before == 0.0 || jump * dir >= 0.0 || jump.abs() < before.abs() / 3.0 {
         if first < k {
-            return Err(TrackError::ChangeAtTheStart { at: ts[first] });
+            return Err(TrackError::ChangeAtTheStart { at });
         }
         return Err(TrackError::NoSlowDown {
-            at: ts[first],
+            at,
             before,
             after: before + jump,
             given: given.is_some(),
         });
     }
     if given.is_none() && first > 0 {
-        let mean = (xs[first] - xs[0]) / (ts[first] - ts[0]) * dir;
+        let mean = (x_at - x_start) / (at - t_start) * dir;
         if mean < 0.5 * before.abs() {
             return Err(TrackError::NoSteadyApproach {
-                at: ts[first],
+                at,
                 mean,
                 before: before.abs(),
             });
@@ -289,14 +329,14 @@ pub(super) fn impacts(
     dt: f64,
     given: Option<f64>,
 ) -> Result<Vec<Kink>, TrackError> {
-    let n = ts.len();
+    let n = ts.len().min(xs.len());
     let j = jumps(ts, xs, k);
     // Standard error of one jump: two line slopes over k+1 frames.
     let m = (k + 1) as f64;
     let se = 2f64.sqrt() * sigma / (dt * (m * (m * m - 1.0) / 12.0).sqrt());
     let first = first_impact(ts, &j, k, se, given)?;
-    check_first((ts, xs), j[first], first, k, given)?;
-    let (jump, before) = j[first];
+    let (jump, before) = j.get(first).copied().unwrap_or((0.0, 0.0));
+    check_first((ts, xs), (jump, before), first, k, given)?;
     let dir = before.signum();
     // The side fits that place the impact reach over 60 ms (the motion on each side is
     // one parabola for much longer than that in a lab groove), at least 2k frames.
@@ -306,20 +346,22 @@ pub(super) fn impacts(
     let mut i = first;
     loop {
         let next = (i + k + 1..n).find(|&l| {
-            j[l].0.abs() >= (0.1 * jump.abs()).max(8.0 * se)
-                && j[l].0 * dir < 0.0
-                && is_peak(&j, k, l)
+            j.get(l).is_some_and(|&(jl, _)| {
+                jl.abs() >= (0.1 * jump.abs()).max(8.0 * se) && jl * dir < 0.0
+            }) && is_peak(&j, k, l)
         });
-        let hi = next.map_or(n - 1, |l| l - 1).min(i + wide);
-        let (t, x) = if found.is_empty() && given.is_some() {
-            (given.unwrap_or(ts[i]), xs[i])
+        let hi = next.map_or(n.saturating_sub(1), |l| l - 1).min(i + wide);
+        let (t, x) = if found.is_empty()
+            && let Some(at) = given
+        {
+            (at, xs.get(i).copied().unwrap_or(f64::NAN))
         } else {
             located(ts, xs, i, (lo, hi), wide)
         };
         found.push(Kink {
             t,
             x,
-            before: j[i].1,
+            before: j.get(i).map_or(f64::NAN, |v| v.1),
         });
         match next {
             Some(l) => {

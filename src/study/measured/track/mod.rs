@@ -100,16 +100,26 @@ fn spin_of(
     (n, dt): (usize, f64),
     cuts: &[f64],
 ) -> Option<Spin> {
-    let (mx, my) = track.mark.as_ref()?;
+    track.mark.as_ref()?;
     let valid: Vec<usize> = rows
         .iter()
         .copied()
-        .filter(|&i| mx[i].is_finite() && my[i].is_finite() && track.y[i].is_finite())
+        .filter(|&i| {
+            let f = track.at(i);
+            [f.mark_x, f.mark_y, f.y].iter().all(|v| v.is_finite())
+        })
         .collect();
-    let at: Vec<f64> = valid.iter().map(|&i| track.t[i]).collect();
+    // A mark never seen with its centre is no mark to derive a spin from.
+    if valid.is_empty() {
+        return None;
+    }
+    let at: Vec<f64> = valid.iter().map(|&i| track.at(i).t).collect();
     let mut theta: Vec<f64> = valid
         .iter()
-        .map(|&i| (dir * (mx[i] - track.x[i])).atan2(my[i] - track.y[i]))
+        .map(|&i| {
+            let (dx, dy) = track.at(i).mark_offset();
+            (dir * dx).atan2(dy)
+        })
         .collect();
     // The fits reach across neither an impact nor a gap whose turn is unknown.
     let mut cuts = [cuts, &unwrap(&at, &mut theta, dt)].concat();
@@ -117,7 +127,10 @@ fn spin_of(
     let radius = median(
         valid
             .iter()
-            .map(|&i| (mx[i] - track.x[i]).hypot(my[i] - track.y[i]))
+            .map(|&i| {
+                let (dx, dy) = track.at(i).mark_offset();
+                dx.hypot(dy)
+            })
             .collect(),
     );
     let s_theta = scatter(&theta).max(1e-7);
@@ -152,11 +165,9 @@ impl Spin {
     /// The angle at the impact at `t_impact`: from the last local fit before it.
     fn angle_at(&self, t_impact: f64) -> Option<f64> {
         let i = self.at.partition_point(|&t| t < t_impact);
-        let (j, l) = (
-            i.checked_sub(1).or(Some(i))?,
-            self.fits.get(i.checked_sub(1).unwrap_or(i))?.as_ref()?,
-        );
-        Some(l.value + l.slope * (t_impact - self.at[j]))
+        let j = i.checked_sub(1).unwrap_or(i);
+        let l = self.fits.get(j)?.as_ref()?;
+        Some(l.value + l.slope * (t_impact - self.at.get(j)?))
     }
 
     /// At the centre's frame `t`: v_t (ω times the contact radius `r`), its standard
@@ -177,7 +188,8 @@ impl Spin {
             (true, Some(ld)) => (
                 sign * ld.slope * r,
                 ld.slope_se * r,
-                sign * (self.theta[k] - theta0.unwrap_or(f64::NAN)),
+                sign * (self.theta.get(k).copied().unwrap_or(f64::NAN)
+                    - theta0.unwrap_or(f64::NAN)),
                 Some(ld.stencil),
             ),
             _ => (f64::NAN, f64::NAN, f64::NAN, None),
@@ -234,19 +246,19 @@ pub fn derive(
     opts: &Derive,
 ) -> Result<(Measured, Found), TrackError> {
     let rows: Vec<usize> = (0..track.t.len())
-        .filter(|&i| track.x[i].is_finite())
+        .filter(|&i| track.at(i).x.is_finite())
         .collect();
-    let ts: Vec<f64> = rows.iter().map(|&i| track.t[i]).collect();
-    let xs: Vec<f64> = rows.iter().map(|&i| track.x[i]).collect();
+    let ts: Vec<f64> = rows.iter().map(|&i| track.at(i).t).collect();
+    let xs: Vec<f64> = rows.iter().map(|&i| track.at(i).x).collect();
     enough_frames(ts.len(), opts)?;
     let dt = frame_step(&ts);
     let sigma = scatter(&xs).max(1e-7);
     let n = half_window(dt, sigma, opts);
     let kinks = impacts(&ts, &xs, n.max(3), sigma, dt, opts.impact_at)?;
-    let first = kinks[0];
+    let first = first_kink(&kinks)?;
     let dir = first.before.signum();
     let (before, after) = frames_around(&ts, first.t, opts.min_frames)?;
-    let approach = fit::line(&ts[..before], &xs[..before]);
+    let approach = approach_line(&ts, &xs, before);
     let cuts: Vec<f64> = kinks.iter().map(|k| k.t).collect();
     let dx = derivatives(&ts, &xs, n, &cuts, sigma);
     let spin = mark_off_the_centre(spin_of(track, &rows, dir, (n, dt), &cuts), sigma)?;
@@ -272,15 +284,15 @@ pub fn derive(
         ..s
     };
     let theta0 = spin.as_ref().and_then(|s| s.angle_at(first.t));
-    for (i, l) in dx.iter().enumerate() {
+    for ((l, &t), &x) in dx.iter().zip(&ts).zip(&xs) {
         let Some(l) = l else { continue };
-        m.t.push(ts[i] - first.t);
+        m.t.push(t - first.t);
         m.v_cm.push(dir * l.slope);
         sig_cm.push(l.slope_se);
         stencils.v_cm.push(Some(shift(l.stencil)));
-        pos.push(dir * (xs[i] - first.x));
+        pos.push(dir * (x - first.x));
         let (vt, st, a, stencil) = match &spin {
-            Some(spin) => spin.rim_at(ts[i], spin_sign, theta0, contact_radius),
+            Some(spin) => spin.rim_at(t, spin_sign, theta0, contact_radius),
             None => (f64::NAN, f64::NAN, f64::NAN, None),
         };
         stencils.v_t.push(stencil.map(shift));
@@ -323,10 +335,26 @@ pub fn derive(
         approach_speed_se: approach.slope_se,
         frames_before: before,
         frames_after: after,
-        later_impacts: kinks[1..].iter().map(|k| k.t - first.t).collect(),
+        later_impacts: kinks.iter().skip(1).map(|k| k.t - first.t).collect(),
         mark_radius: spin.as_ref().map(|s| s.radius),
     };
     Ok((m, found))
+}
+
+/// The first impact of those `impacts` found (it finds one or says why not).
+fn first_kink(kinks: &[impacts::Kink]) -> Result<impacts::Kink, TrackError> {
+    kinks.first().copied().ok_or(TrackError::NoSharpChange {
+        biggest: 0.0,
+        noise: f64::NAN,
+    })
+}
+
+/// The straight line through the centre's first `before` frames: the approach.
+fn approach_line(ts: &[f64], xs: &[f64], before: usize) -> fit::Line {
+    fit::line(
+        ts.get(..before).unwrap_or_default(),
+        xs.get(..before).unwrap_or_default(),
+    )
 }
 
 /// At least `2 · max(min_frames, 3)` frames with a centre position (`frames`).
@@ -377,13 +405,14 @@ fn mark_frames(
     dir: f64,
     spin_sign: f64,
 ) -> Vec<(usize, f64, f64)> {
-    let Some((mx, my)) = &track.mark else {
+    if track.mark.is_none() {
         return Vec::new();
-    };
+    }
     valid
         .iter()
         .map(|&i| {
-            let (dx, dy) = (dir * (mx[i] - track.x[i]), my[i] - track.y[i]);
+            let (dx, dy) = track.at(i).mark_offset();
+            let dx = dir * dx;
             let rho2 = (dx * dx + dy * dy).max(f64::MIN_POSITIVE);
             // θ = atan2(dx, dy): ∂θ/∂dx = dy/ρ², ∂θ/∂dy = −dx/ρ², and the centre's
             // x enters dx as −dir·x, its y enters dy as −y.
@@ -428,7 +457,10 @@ pub fn fit_tracks(
 /// exported rounded (Logger Pro's 0.1 ms at 120 frames/s: 8.3 and 8.4 ms) would give
 /// 8.3 ms, 120.5 frames/s.
 fn frame_step(ts: &[f64]) -> f64 {
-    let steps: Vec<f64> = ts.windows(2).map(|w| w[1] - w[0]).collect();
+    let steps: Vec<f64> = ts
+        .windows(2)
+        .filter_map(|w| w.last().zip(w.first()).map(|(b, a)| b - a))
+        .collect();
     let mid = median(steps.clone());
     let near: Vec<f64> = steps
         .into_iter()

@@ -28,7 +28,7 @@ pub(super) fn point_sigmas(
         return (None, None);
     };
     let angle = match (&track.mark, track.mark_sigma.as_deref(), spin) {
-        (Some((mx, my)), ms, true) => {
+        (Some(_), ms, true) => {
             // Without the mark's own σ, the centre's stands in (both are points of
             // the same picture).
             let mark = ms
@@ -36,10 +36,10 @@ pub(super) fn point_sigmas(
                 .unwrap_or_else(|| centre.clone());
             let a = points
                 .iter()
-                .enumerate()
-                .map(|(k, &r)| {
-                    let rho = (mx[r] - track.x[r]).hypot(my[r] - track.y[r]);
-                    let s = centre[k].hypot(mark[k]) / rho;
+                .zip(centre.iter().zip(&mark))
+                .map(|(&r, (c, m))| {
+                    let (dx, dy) = track.at(r).mark_offset();
+                    let s = c.hypot(*m) / dx.hypot(dy);
                     if s.is_finite() { s } else { f64::NAN }
                 })
                 .collect();
