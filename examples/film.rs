@@ -4,12 +4,11 @@
 //! `cargo run --example film -- /tmp/clip` then
 //! `groovelab --data /tmp/clip --fps 100 --radius 2.75cm --width 4.9cm`.
 
+use film::{Film, Look};
 use groovelab::input::video::write;
 use groovelab::physics::scene::Scene;
-use film::{Film, Look};
 
 // The synthetic film is test support, shared with the tests and the benches.
-#[allow(dead_code)]
 #[path = "../tests/support/film/mod.rs"]
 mod film;
 

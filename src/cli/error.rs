@@ -302,7 +302,7 @@ pub enum BadValue {
     },
     /// `GROOVELAB_THEME` (`--theme`'s default) is none of its words.
     #[error("{source}")]
-    ThemeSwitch { source: crate::tui::look::BadSwitch },
+    ThemeSwitch { source: crate::tui::look::BadTheme },
 }
 
 #[cfg(test)]

@@ -88,10 +88,10 @@ pub fn run(cli: &Cli) -> Result<Response, CliError> {
     }
 }
 
-/// The first global option given that `command` does not use, if any (clap's global
-/// options are accepted anywhere; a command must not ignore one silently).
-fn used_options(cli: &Cli) -> Result<(), CliError> {
-    let (name, scene, data, ascii) = match &cli.command {
+/// What `cli`'s command takes: its name, and whether it takes scene options, data
+/// options and the drawing options (`--ascii`, `--theme`).
+fn takes(cli: &Cli) -> (&'static str, bool, bool, bool) {
+    match &cli.command {
         None | Some(Command::Tui) => ("the app", true, true, true),
         Some(Command::Simulate(_)) => ("simulate", true, false, false),
         Some(Command::Render(_)) => ("render", true, true, true),
@@ -109,7 +109,13 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         Some(Command::Presets) => ("presets", false, false, false),
         Some(Command::Completions { .. }) => ("completions", false, false, false),
         Some(Command::Manpage) => ("manpage", false, false, false),
-    };
+    }
+}
+
+/// The first global option given that `command` does not use, if any (clap's global
+/// options are accepted anywhere; a command must not ignore one silently).
+fn used_options(cli: &Cli) -> Result<(), CliError> {
+    let (name, scene, data, ascii) = takes(cli);
     let d = &cli.data;
     let data_given = [
         ("data", !d.data.is_empty()),

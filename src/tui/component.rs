@@ -1,6 +1,6 @@
 //! Components as helix has them: each view (scene, chart, why, forces, methods, map,
 //! fit) and each popup (help, data table, presets, prompts, predict) is a type
-//! implementing [`Component`]: it renders from the app's state and the [`Frame`] the
+//! implementing [`Component`]: it renders from the app's state and the [`Laid`] (one frame, laid out) the
 //! screen prepared, into any area it is given, changing nothing. Input is the sibling
 //! trait's ([`super::interact::Interactive`]): the popups are layers that own their
 //! state ([`super::layer`]), and the views are the bottom layer's panes
@@ -22,7 +22,7 @@ use crate::physics::derived::Regime;
 
 /// One frame, laid out: what drawing and hit-testing share.
 #[derive(Clone, Debug)]
-pub struct Frame {
+pub struct Laid {
     pub area: Rect,
     /// Where each panel goes (`None`: the terminal is too small).
     pub panels: Option<Panels>,
@@ -39,7 +39,7 @@ pub struct Frame {
 #[derive(Clone, Copy)]
 pub struct Ctx<'a> {
     pub app: &'a App,
-    pub frame: &'a Frame,
+    pub frame: &'a Laid,
     pub theme: &'a Theme,
 }
 

@@ -6,7 +6,7 @@
 
 use std::time::Duration;
 
-use super::theme::{Background, Colours, ThemeChoice};
+use super::theme::{Backdrop, Colours, ThemeChoice};
 
 /// The environment variable that gives `--theme` a default: `auto`, `dark` or `light`.
 pub const SWITCH: &str = "GROOVELAB_THEME";
@@ -19,17 +19,17 @@ const QUERY_TIMEOUT: Duration = Duration::from_millis(500);
 /// A `GROOVELAB_THEME` value that is none of the allowed ones.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 #[error("{SWITCH}={value:?}: expected auto, dark or light")]
-pub struct BadSwitch {
+pub struct BadTheme {
     value: String,
 }
 
 /// The choice of a `GROOVELAB_THEME` value (unset or empty: auto).
-pub fn parse_switch(value: Option<&str>) -> Result<ThemeChoice, BadSwitch> {
+pub fn parse_switch(value: Option<&str>) -> Result<ThemeChoice, BadTheme> {
     match value.map(|v| v.trim().to_ascii_lowercase()).as_deref() {
         None | Some("" | "auto") => Ok(ThemeChoice::Auto),
         Some("dark") => Ok(ThemeChoice::Dark),
         Some("light") => Ok(ThemeChoice::Light),
-        Some(_) => Err(BadSwitch {
+        Some(_) => Err(BadTheme {
             value: value.unwrap_or_default().to_string(),
         }),
     }
@@ -37,11 +37,11 @@ pub fn parse_switch(value: Option<&str>) -> Result<ThemeChoice, BadSwitch> {
 
 /// The background `COLORFGBG` names (`fg;bg` or `fg;default;bg`, as rxvt and
 /// Konsole set it): ANSI colours 7 and 9–15 are light backgrounds, 0–6 and 8 dark.
-pub fn from_colorfgbg(value: &str) -> Option<Background> {
+pub fn from_colorfgbg(value: &str) -> Option<Backdrop> {
     let bg: u8 = value.rsplit(';').next()?.trim().parse().ok()?;
     match bg {
-        7 | 9..=15 => Some(Background::Light),
-        0..=6 | 8 => Some(Background::Dark),
+        7 | 9..=15 => Some(Backdrop::Light),
+        0..=6 | 8 => Some(Backdrop::Dark),
         _ => None,
     }
 }
@@ -53,11 +53,11 @@ pub fn truecolor(colorterm: Option<&str>) -> bool {
 
 /// The background that an sRGB colour is: light when its relative luminance is above
 /// the middle grey's (a contrast of 4.5:1 to black or to white meets there).
-pub fn background_of(rgb: [u8; 3]) -> Background {
+pub fn background_of(rgb: [u8; 3]) -> Backdrop {
     if super::theme::luminance(rgb) > 0.18 {
-        Background::Light
+        Backdrop::Light
     } else {
-        Background::Dark
+        Backdrop::Dark
     }
 }
 
@@ -66,7 +66,7 @@ pub fn background_of(rgb: [u8; 3]) -> Background {
 pub fn resolve(
     choice: ThemeChoice,
     no_color: bool,
-    ask: impl FnOnce() -> Option<Background>,
+    ask: impl FnOnce() -> Option<Backdrop>,
     colorfgbg: Option<&str>,
     colorterm: Option<&str>,
 ) -> Colours {
@@ -74,11 +74,11 @@ pub fn resolve(
         return Colours::Monochrome;
     }
     let background = match choice {
-        ThemeChoice::Dark => Background::Dark,
-        ThemeChoice::Light => Background::Light,
+        ThemeChoice::Dark => Backdrop::Dark,
+        ThemeChoice::Light => Backdrop::Light,
         ThemeChoice::Auto => ask()
             .or_else(|| colorfgbg.and_then(from_colorfgbg))
-            .unwrap_or(Background::Dark),
+            .unwrap_or(Backdrop::Dark),
     };
     Colours::Palette {
         background,
@@ -88,7 +88,7 @@ pub fn resolve(
 
 /// Asks the real terminal for its background colour (OSC 11), at most
 /// [`QUERY_TIMEOUT`]; `None` when it does not say.
-pub fn ask_terminal() -> Option<Background> {
+pub fn ask_terminal() -> Option<Backdrop> {
     let mut options = terminal_colorsaurus::QueryOptions::default();
     options.timeout = QUERY_TIMEOUT;
     let colour = terminal_colorsaurus::background_color(options).ok()?;
@@ -125,10 +125,10 @@ mod tests {
 
     #[test]
     fn colorfgbg_names_the_background_by_its_last_field() {
-        assert_eq!(from_colorfgbg("0;15"), Some(Background::Light));
-        assert_eq!(from_colorfgbg("15;0"), Some(Background::Dark));
-        assert_eq!(from_colorfgbg("0;default;7"), Some(Background::Light));
-        assert_eq!(from_colorfgbg("7;8"), Some(Background::Dark));
+        assert_eq!(from_colorfgbg("0;15"), Some(Backdrop::Light));
+        assert_eq!(from_colorfgbg("15;0"), Some(Backdrop::Dark));
+        assert_eq!(from_colorfgbg("0;default;7"), Some(Backdrop::Light));
+        assert_eq!(from_colorfgbg("7;8"), Some(Backdrop::Dark));
         assert_eq!(from_colorfgbg("default;default"), None);
         assert_eq!(from_colorfgbg("15;200"), None);
         assert_eq!(from_colorfgbg(""), None);
@@ -137,22 +137,22 @@ mod tests {
     #[test]
     fn auto_asks_then_colorfgbg_then_dark_and_no_color_wins() {
         let light = |_| Colours::Palette {
-            background: Background::Light,
+            background: Backdrop::Light,
             truecolor: false,
         };
         let dark = Colours::Palette {
-            background: Background::Dark,
+            background: Backdrop::Dark,
             truecolor: false,
         };
         let auto = ThemeChoice::Auto;
         assert_eq!(
-            resolve(auto, false, || Some(Background::Light), Some("15;0"), None),
+            resolve(auto, false, || Some(Backdrop::Light), Some("15;0"), None),
             light(())
         );
         assert_eq!(resolve(auto, false, || None, Some("0;15"), None), light(()));
         assert_eq!(resolve(auto, false, || None, None, None), dark);
         // An explicit choice is not asked about.
-        let never = || -> Option<Background> { panic!("asked the terminal") };
+        let never = || -> Option<Backdrop> { panic!("asked the terminal") };
         assert_eq!(
             resolve(ThemeChoice::Light, false, never, Some("15;0"), None),
             light(())
@@ -164,7 +164,7 @@ mod tests {
         assert_eq!(
             resolve(ThemeChoice::Dark, false, never, None, Some("truecolor")),
             Colours::Palette {
-                background: Background::Dark,
+                background: Backdrop::Dark,
                 truecolor: true
             }
         );
@@ -172,11 +172,11 @@ mod tests {
 
     #[test]
     fn backgrounds_split_at_middle_grey() {
-        assert_eq!(background_of([255, 255, 255]), Background::Light);
-        assert_eq!(background_of([253, 246, 227]), Background::Light); // Solarized light
-        assert_eq!(background_of([0, 0, 0]), Background::Dark);
-        assert_eq!(background_of([0, 43, 54]), Background::Dark); // Solarized dark
-        assert_eq!(background_of([40, 44, 52]), Background::Dark); // One Dark
+        assert_eq!(background_of([255, 255, 255]), Backdrop::Light);
+        assert_eq!(background_of([253, 246, 227]), Backdrop::Light); // Solarized light
+        assert_eq!(background_of([0, 0, 0]), Backdrop::Dark);
+        assert_eq!(background_of([0, 43, 54]), Backdrop::Dark); // Solarized dark
+        assert_eq!(background_of([40, 44, 52]), Backdrop::Dark); // One Dark
     }
 
     #[test]

@@ -9,7 +9,7 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 
 use super::app::{App, View};
-use super::component::{Component, Ctx, Frame};
+use super::component::{Component, Ctx, Laid};
 use super::layer::Layer;
 use super::layer::main::Pointer;
 use super::theme::{Theme, force_ascii};
@@ -30,7 +30,7 @@ pub struct Work {
 #[derive(Clone, Debug, Default)]
 pub struct Screen {
     cache: ViewCache,
-    frame: Option<Frame>,
+    frame: Option<Laid>,
     /// The video panel's picture in a graphics protocol (none headless).
     video: VideoImage,
 }
@@ -73,7 +73,7 @@ impl Screen {
         // A popup lies over the panels: no graphic then (text cannot cover it).
         let scene = panels.filter(|_| !app.layers().covers());
         self.video.prepare(app, scene.map(|p| p.scene), theme);
-        self.frame = Some(Frame {
+        self.frame = Some(Laid {
             area,
             panels,
             chart,
@@ -89,7 +89,7 @@ impl Screen {
     }
 
     /// The frame prepared last, if any.
-    pub fn frame(&self) -> Option<&Frame> {
+    pub fn frame(&self) -> Option<&Laid> {
         self.frame.as_ref()
     }
 
@@ -160,7 +160,7 @@ pub fn draw(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
 
 /// Draws the prepared `frame` (in ASCII mode, any symbol a widget still drew outside
 /// 7-bit ASCII gets a stand-in; [`non_ascii_cells`] lets tests see that none was needed).
-fn render(app: &App, frame: &Frame, buf: &mut Buffer, theme: &Theme) {
+fn render(app: &App, frame: &Laid, buf: &mut Buffer, theme: &Theme) {
     draw_panels(app, frame, buf, theme);
     stand_ins(buf, theme);
 }
@@ -332,7 +332,7 @@ fn component_of(layer: &Layer) -> &dyn Component {
 
 /// The compositor: the panels, the view shown, the status bar, then the popups open
 /// as layers over them, bottom first.
-fn draw_panels(app: &App, frame: &Frame, buf: &mut Buffer, theme: &Theme) {
+fn draw_panels(app: &App, frame: &Laid, buf: &mut Buffer, theme: &Theme) {
     let area = frame.area;
     let Some(p) = frame.panels else {
         let (w, h) = view::MIN_SIZE;
@@ -357,7 +357,7 @@ fn draw_panels(app: &App, frame: &Frame, buf: &mut Buffer, theme: &Theme) {
         return;
     };
     let cx = Ctx { app, frame, theme };
-    view::params::Params.render(p.params, buf, &cx);
+    view::params::ParamsPanel.render(p.params, buf, &cx);
     view::scene::ScenePanel.render(p.scene, buf, &cx);
     for (part, place) in parts_of(app) {
         let at = match place {

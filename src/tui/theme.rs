@@ -160,7 +160,7 @@ pub fn ellipsize_with(text: &str, width: usize, mark: &str) -> String {
 
 /// Which background a palette is made for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Background {
+pub enum Backdrop {
     Dark,
     Light,
 }
@@ -184,7 +184,7 @@ pub enum ThemeChoice {
 pub enum Colours {
     Monochrome,
     Palette {
-        background: Background,
+        background: Backdrop,
         truecolor: bool,
     },
 }
@@ -381,7 +381,7 @@ impl Theme {
             Colours::Monochrome
         } else {
             Colours::Palette {
-                background: Background::Dark,
+                background: Backdrop::Dark,
                 truecolor: false,
             }
         };
@@ -399,8 +399,8 @@ impl Theme {
             } => (background, truecolor),
         };
         let p = match background {
-            Background::Dark => &DARK,
-            Background::Light => &LIGHT,
+            Backdrop::Dark => &DARK,
+            Backdrop::Light => &LIGHT,
         };
         let colour = |i: u8| {
             if truecolor {

@@ -10,12 +10,12 @@ use super::*;
 /// #262626 for dark, grey 255 #eeeeee for light). Contrast falls monotonically as the
 /// background moves toward the text's luminance, so these bound every background
 /// between them and the extreme.
-const CASES: [(Background, [[u8; 3]; 2]); 2] = [
-    (Background::Dark, [[0, 0, 0], [38, 38, 38]]),
-    (Background::Light, [[255, 255, 255], [238, 238, 238]]),
+const CASES: [(Backdrop, [[u8; 3]; 2]); 2] = [
+    (Backdrop::Dark, [[0, 0, 0], [38, 38, 38]]),
+    (Backdrop::Light, [[255, 255, 255], [238, 238, 238]]),
 ];
 
-fn themes(background: Background) -> [Theme; 2] {
+fn themes(background: Backdrop) -> [Theme; 2] {
     [false, true].map(|truecolor| {
         Theme::with(
             Glyphs::UNICODE,
@@ -121,7 +121,7 @@ proptest! {
     fn any_background_of_its_kind_keeps_the_contrast(rgb in prop::array::uniform3(0u8..=255)) {
         let dark = rgb.map(|c| (u16::from(c) * 38 / 255) as u8);
         let light = rgb.map(|c| 238 + (u16::from(c) * 17 / 255) as u8);
-        for (background, bg) in [(Background::Dark, dark), (Background::Light, light)] {
+        for (background, bg) in [(Backdrop::Dark, dark), (Backdrop::Light, light)] {
             for theme in themes(background) {
                 let short = short_of(&theme, bg);
                 prop_assert!(short.is_empty(), "{:?} on {:?}: {:?}", background, bg, short);

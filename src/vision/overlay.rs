@@ -8,7 +8,7 @@ use image::{Rgb, RgbImage};
 
 /// One ball found in one frame, pixels: its centre, radius and mark (if found).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Found {
+pub struct Drawn {
     pub centre: (f64, f64),
     pub radius: f64,
     pub mark: Option<(f64, f64)>,
@@ -21,10 +21,10 @@ const HALO: [u8; 3] = [0, 0, 0];
 
 /// Draws each ball of `found` (the i-th in `COLOURS[i]`) onto `img`: its outline, a
 /// cross at its centre, a line to its mark and a ring around the mark.
-pub fn draw(img: &mut RgbImage, found: &[Option<Found>]) {
+pub fn draw(img: &mut RgbImage, found: &[Option<Drawn>]) {
     for (i, f) in found.iter().enumerate() {
         let Some(f) = f else { continue };
-        let colour = COLOURS[i % COLOURS.len()];
+        let colour = if i % 2 == 0 { COLOURS[0] } else { COLOURS[1] };
         let width = (f.radius / 25.0).clamp(1.2, 4.0);
         let arm = (0.25 * f.radius).max(4.0);
         let (cx, cy) = f.centre;
@@ -56,8 +56,8 @@ fn blend(img: &mut RgbImage, x: i64, y: i64, colour: [u8; 3], alpha: f64) {
     }
     let p = img.get_pixel_mut(x as u32, y as u32);
     let a = alpha.min(1.0);
-    for c in 0..3 {
-        p[c] = (f64::from(p[c]) * (1.0 - a) + f64::from(colour[c]) * a).round() as u8;
+    for (v, c) in p.0.iter_mut().zip(colour) {
+        *v = (f64::from(*v) * (1.0 - a) + f64::from(c) * a).round() as u8;
     }
 }
 
@@ -158,15 +158,22 @@ mod tests {
     #[test]
     fn the_outline_is_drawn_at_the_radius_and_not_inside() {
         let mut img = RgbImage::from_pixel(100, 100, Rgb([128, 128, 128]));
-        let f = Found {
+        let f = Drawn {
             centre: (50.3, 49.6),
             radius: 30.0,
             mark: None,
         };
         draw(&mut img, &[Some(f)]);
         // On the circle (to the right of the centre): the first ball's colour.
-        let on = img.get_pixel((50.3 + 30.0f64).round() as u32, 50);
-        assert_eq!(on.0, COLOURS[0], "{on:?}");
+        // The edge is anti-aliased by coverage, so the pixel is the colour blended
+        // with the grey: far from the grey, and of the colour's hue (no blue).
+        let on = img.get_pixel((50.3 + 30.0f64).round() as u32, 50).0;
+        let [r, g, b] = on;
+        assert!(
+            r > 180 && g > 150 && b < 40,
+            "{on:?} against {:?}",
+            COLOURS[0]
+        );
         // Halfway in, between the cross and the outline: untouched.
         assert_eq!(img.get_pixel(50 + 15, 50 + 15).0, [128, 128, 128]);
     }

@@ -73,7 +73,7 @@ pub struct Tracker {
 }
 
 /// An outline and how it was found.
-struct Found {
+struct OutlineFound {
     outline: Outline,
     /// In colour (the ball of the wall's brightness), not in brightness.
     colour: bool,
@@ -123,6 +123,33 @@ impl Tracker {
         self.background.as_ref()
     }
 
+    /// Ball-shaped blobs in `frame`, by two looks. The look against a smooth surface
+    /// of luma, as before a background: it sees a ball at rest where the background
+    /// learned it (a target ball waiting for the impact); the look against the
+    /// background adds what differs in colour or against a busy bench. A frame where
+    /// either look sees more than two balls is counted crowded.
+    fn look(&mut self, frame: &Frame) -> detect::Coarse {
+        let p = self.params;
+        let mut coarse = detect::coarse(&frame.luma, p.min_radius);
+        if let Some(roi) = p.roi {
+            coarse.balls.retain(|b| {
+                let g = b.guess();
+                roi.contains(g.x, g.y)
+            });
+        }
+        let mut crowded = coarse.balls.len() > 2;
+        if let Some(bg) = &self.background {
+            let more = detect::against(&Small::of(frame, bg.image.factor), bg, &p);
+            crowded |= more.balls.len() > 2;
+            coarse.balls.extend(more.balls);
+            coarse.pairs.extend(more.pairs);
+        }
+        if crowded {
+            self.counts.crowded += 1;
+        }
+        coarse
+    }
+
     /// Tracks one more frame.
     pub fn push(&mut self, frame: &Frame) {
         if self.learner.as_ref().is_some_and(|l| l.seen() > 0) {
@@ -133,27 +160,7 @@ impl Tracker {
         let k = self.frames.len();
         self.counts.frames += 1;
         let p = self.params;
-        // The look against a smooth surface of luma, as before a background: it
-        // sees a ball at rest where the background learned it (a target ball
-        // waiting for the impact); the look against the background adds what
-        // differs in colour or against a busy bench. Crowded counts each look alone.
-        let mut coarse = detect::coarse(img, p.min_radius);
-        if let Some(roi) = p.roi {
-            coarse.balls.retain(|b| {
-                let g = b.guess();
-                roi.contains(g.x, g.y)
-            });
-        }
-        let mut crowded = coarse.balls.len() > 2;
-        if let Some(bg) = &self.background {
-            let more = detect::against(&Small::of(frame, bg.image.factor), bg, &p);
-            crowded &= more.balls.len() > 2;
-            coarse.balls.extend(more.balls);
-            coarse.pairs.extend(more.pairs);
-        }
-        if crowded {
-            self.counts.crowded += 1;
-        }
+        let coarse = self.look(frame);
         let noise = pixel_noise(img);
         let f = coarse.balls.first().map_or(1.0, |_| {
             self.background
@@ -362,10 +369,10 @@ impl Tracker {
     }
 
     /// The outline near `guess` in `img`: in a band `band` px wide, then narrowly.
-    fn outline(&self, img: &Gray, guess: Circle, band: f64, polarity: f64) -> Option<Found> {
+    fn outline(&self, img: &Gray, guess: Circle, band: f64, polarity: f64) -> Option<OutlineFound> {
         let first = circle::fit(img, guess, band, polarity)?;
         let o = circle::fit(img, first.circle, 2.5, first.polarity)?;
-        Some(Found {
+        Some(OutlineFound {
             outline: o,
             colour: false,
             polarity: o.polarity,
@@ -376,7 +383,7 @@ impl Tracker {
     /// background, along the ball's own colour difference at its middle, as an
     /// image of its own about the ball (the colour planes bilinearly brought to full
     /// size); `None` without a background or colour to go by.
-    fn colour_outline(&self, frame: &Frame, guess: Circle, band: f64) -> Option<Found> {
+    fn colour_outline(&self, frame: &Frame, guess: Circle, band: f64) -> Option<OutlineFound> {
         let bg = &self.background.as_ref()?.image;
         let reach = guess.r + band + 4.0;
         let x0 = (guess.x - reach).floor().max(0.0) as usize;

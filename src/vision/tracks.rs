@@ -198,15 +198,11 @@ pub fn tracks(
     };
     let names = names_of(&slots, &centres, along);
     for (&s, &name) in slots.iter().zip(&names) {
-        let c = &centres[s];
-        let across = |p: &[f64; 2]| p[0] * n.0 + p[1] * n.1;
-        let mean = c.iter().map(across).sum::<f64>() / c.len() as f64;
-        let rms =
-            (c.iter().map(|p| (across(p) - mean).powi(2)).sum::<f64>() / c.len() as f64).sqrt();
-        if rms > tracker.params.max_across * r_px {
+        let across_px = across_rms(&centres[s], n);
+        if across_px > tracker.params.max_across * r_px {
             return Err(TracksError::Swings {
                 name,
-                across_px: rms,
+                across_px,
                 radius_px: r_px,
             });
         }
@@ -221,6 +217,20 @@ pub fn tracks(
         balls,
         calibration,
     })
+}
+
+/// How far `centres` scatter across the groove (whose normal is `n`), RMS px: a
+/// ball rolls along its groove, so a large scatter is no ball's path.
+fn across_rms(centres: &[[f64; 2]], n: (f64, f64)) -> f64 {
+    let across = |p: &[f64; 2]| p[0] * n.0 + p[1] * n.1;
+    let count = centres.len() as f64;
+    let mean = centres.iter().map(across).sum::<f64>() / count;
+    (centres
+        .iter()
+        .map(|p| (across(p) - mean).powi(2))
+        .sum::<f64>()
+        / count)
+        .sqrt()
 }
 
 /// The names of the balls in `slots` (left to right): with one ball, the side it

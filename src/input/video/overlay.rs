@@ -11,7 +11,7 @@ use super::tracked::Tracked;
 use super::write::{self, Encoding};
 use super::{Limits, VideoError, VideoProblem};
 use crate::vision::Frame;
-use crate::vision::overlay::{self, Found};
+use crate::vision::overlay::{self, Drawn};
 use crate::vision::thumbs::VideoView;
 
 /// What an overlay file is, by its name's ending.
@@ -46,12 +46,12 @@ pub fn kind(file: &Path) -> Result<Kind, VideoError> {
 }
 
 /// Each frame's balls found, in the video's pixels, from the tracked `view`.
-fn found(view: &VideoView, frame: usize) -> Vec<Option<Found>> {
+fn found(view: &VideoView, frame: usize) -> Vec<Option<Drawn>> {
     view.balls
         .iter()
         .map(|b| {
             let c = b.centre.get(frame).copied().flatten()?;
-            Some(Found {
+            Some(Drawn {
                 centre: (f64::from(c.0), f64::from(c.1)),
                 radius: view.radius_px,
                 mark: b
@@ -136,7 +136,8 @@ fn to_rgb(f: &Frame) -> RgbImage {
     for y in 0..h {
         for x in 0..w {
             let j = (y / 2) * f.chroma_width + x / 2;
-            let l = (f32::from(f.luma.data[y * w + x]) - 16.0) * 255.0 / 219.0;
+            let l = (f32::from(f.luma.data.get(y * w + x).copied().unwrap_or(16)) - 16.0) * 255.0
+                / 219.0;
             let cb = (f32::from(f.u.get(j).copied().unwrap_or(128)) - 128.0) * 255.0 / 224.0;
             let cr = (f32::from(f.v.get(j).copied().unwrap_or(128)) - 128.0) * 255.0 / 224.0;
             for c in [
@@ -148,5 +149,6 @@ fn to_rgb(f: &Frame) -> RgbImage {
             }
         }
     }
-    RgbImage::from_raw(w as u32, h as u32, out).expect("sized")
+    // `out` holds exactly 3·w·h values, so `from_raw` always succeeds.
+    RgbImage::from_raw(w as u32, h as u32, out).unwrap_or_default()
 }

@@ -450,7 +450,8 @@ mod tests {
     fn a_slow_speed_that_is_not_zero_never_reads_zero() {
         use super::speed_shown;
         assert_eq!(speed_shown(2e-5, 3, true), "+2.0e-5");
-        assert_eq!(speed_shown(-0.00031, 4, false), "-0.00031");
+        assert_eq!(speed_shown(-0.00031, 4, false), "-0.0003");
+        assert_eq!(speed_shown(-0.00003, 4, false), "-3.0e-5");
         assert_eq!(speed_shown(0.0, 3, true), "+0.000");
         assert!(speed_shown(-1e-19, 4, false).parse::<f64>().unwrap() < 0.0);
         assert_eq!(speed_shown(0.1234, 3, true), "+0.123");

@@ -173,9 +173,9 @@ pub fn legend(origins: &[Origin]) -> String {
 }
 
 /// The parameters panel as a component.
-pub struct Params;
+pub struct ParamsPanel;
 
-impl Component for Params {
+impl Component for ParamsPanel {
     fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
         render(cx.app, area, buf, cx.theme);
     }

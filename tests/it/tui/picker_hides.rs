@@ -6,10 +6,18 @@ use groovelab::tui::app::Mode;
 use crate::common::{self, press, text};
 
 /// The picker's row that carries the selection mark, if any.
-fn marked_row(screen: &str) -> Option<String> {
+/// The picker's marked row: a line with the marker and a preset's name (the
+/// parameters panel marks its selected parameter with the same glyph).
+fn marked_row(screen: &str, names: &[String]) -> Option<String> {
     screen
         .lines()
-        .find(|l| l.contains('▸'))
+        .find(|l| {
+            l.split('▸').nth(1).is_some_and(|after| {
+                names
+                    .iter()
+                    .any(|n| after.trim_start().starts_with(n.as_str()))
+            })
+        })
         .map(|l| l.trim().to_string())
 }
 
@@ -30,7 +38,7 @@ fn the_picker_marks_no_preset_while_b_is_hidden_or_a_prediction_pends() {
             assert!(matches!(a.mode(), Mode::Picker(_)), "{name} {hide}");
             let screen = text(&a, (120, 40), false);
             assert_eq!(
-                marked_row(&screen),
+                marked_row(&screen, &names),
                 None,
                 "{name} after {hide:?}:\n{screen}"
             );
@@ -38,7 +46,7 @@ fn the_picker_marks_no_preset_while_b_is_hidden_or_a_prediction_pends() {
             press(&mut a, "enter");
             assert_eq!(a.lab.preset().name, *name);
             press(&mut a, "down");
-            let row = marked_row(&text(&a, (120, 40), false)).unwrap_or_default();
+            let row = marked_row(&text(&a, (120, 40), false), &names).unwrap_or_default();
             assert!(row.contains(&format!("▸{}", names[0])), "{row}");
         }
     }
@@ -46,6 +54,6 @@ fn the_picker_marks_no_preset_while_b_is_hidden_or_a_prediction_pends() {
     let last = names.last().unwrap();
     let mut a = common::app(last, library);
     press(&mut a, "p");
-    let row = marked_row(&text(&a, (120, 40), false)).unwrap_or_default();
+    let row = marked_row(&text(&a, (120, 40), false), &names).unwrap_or_default();
     assert!(row.contains(&format!("▸{last}")), "{row}");
 }

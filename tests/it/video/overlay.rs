@@ -117,11 +117,12 @@ fn the_overlay_sheet_draws_each_outline_on_its_ball() {
                 on >= 0.9,
                 "frame {k}: outline drawn in {on:.2} of the directions"
             );
-            // Well inside and well outside: not drawn (the mark's ring reaches 0.7 R).
+            // Well inside and well outside: not drawn (the mark's ring reaches 0.7 R,
+            // its dark halo a pixel beyond: up to ~0.1 of the circle at 0.8 R).
             for f in [0.8, 1.35] {
                 let off = drawn_share(&img, c, f * r, 0.0);
                 assert!(
-                    off <= 0.1,
+                    off <= 0.15,
                     "frame {k}: drawn at {f} R in {off:.2} of the directions"
                 );
             }
