@@ -74,6 +74,17 @@ pub fn groovelab(args: &[&str]) -> std::process::Output {
         .unwrap()
 }
 
+/// The binary's exit code (-1 when a signal ended it), stdout and stderr for `args`
+/// ([`groovelab`]).
+pub fn run(args: &[&str]) -> (i32, String, String) {
+    let out = groovelab(args);
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
 /// What the binary printed for `args` ([`groovelab`]), which must succeed (else the
 /// test fails with its `error:` line).
 pub fn stdout(args: &[&str]) -> String {

@@ -4,7 +4,7 @@
 
 use std::path::Path;
 
-use crate::common::{paper_scene, scratch_dir};
+use crate::common::{paper_scene, run, scratch_dir};
 use crate::film::{Film, Look};
 use groovelab::input::video::write;
 use groovelab::vision::overlay::COLOURS;
@@ -26,15 +26,6 @@ fn film(dir: &Path) -> Film {
         write::png(&p, &film.rgb(k), look.width, look.height).unwrap();
     }
     film
-}
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = crate::common::groovelab(args);
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
 }
 
 /// True when the pixel has the hue of one of the drawing's colours (yellow: red and

@@ -69,7 +69,7 @@ use std::sync::OnceLock;
 use groovelab::input::video::write::{self, Encoding};
 use serde_json::Value;
 
-use crate::common::{groovelab, preset_scene};
+use crate::common::{preset_scene, run};
 
 /// A small clip: 640×360 at 1000 px/m (R = 27.5 px), 100 frames/s, t = −0.15 … 0.35 s.
 fn small_look() -> Look {
@@ -123,15 +123,6 @@ pub fn ffmpeg() -> bool {
         eprintln!("SKIPPED: ffmpeg is not installed (apt-get install ffmpeg); this test needs it");
     }
     ok
-}
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = groovelab(args);
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stdout).into_owned(),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
 }
 
 /// The model fit's μ_k and its ± from `fit --format json` of a tracks file.
