@@ -63,6 +63,11 @@ pub struct Report {
     pub impacts: Vec<f64>,
     /// What was found about impacts, in words.
     pub impact_note: String,
+    /// The lengths are in the file's own unit, not known to be metres (none stated and
+    /// the numbers not metres, or a video never scaled): why, and what to give. Every
+    /// length and speed of the report is then in that unit (per s).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub length_unit_doubt: Option<String>,
 }
 
 impl Report {
@@ -94,6 +99,24 @@ pub fn inspect(
     derive: &Derive,
 ) -> Result<Report, DataError> {
     let (raw, notes) = match super::detect::read_with_notes(text, file, reading) {
+        // A length unit in doubt: the file in its own unit, with the doubt and the fix.
+        Err(e) if !reading.own_lengths && lengths_in_doubt(&e.what) => {
+            let own = Reading {
+                own_lengths: true,
+                ..reading.clone()
+            };
+            let mut report = inspect(text, file, &own, derive)?;
+            for u in &mut report.notes.units {
+                if u.quantity == "length" {
+                    u.unit = "the file's own unit".into();
+                    u.how = "not known to be metres (see below)".into();
+                }
+            }
+            // Its speeds, too, are in the file's unit per second.
+            report.impact_note = report.impact_note.replace(" m/s", " units/s");
+            report.length_unit_doubt = Some(e.what.to_string());
+            return Ok(report);
+        }
         Err(e) if e.what == DataProblem::NoImpact => {
             // A velocity file without an impact: what it holds all the same.
             let table = super::table::Table::new(text);
@@ -128,6 +151,22 @@ pub fn inspect(
     })
 }
 
+/// A problem that is only the lengths' unit: none stated and the numbers not metres,
+/// or a Logger Pro video never scaled.
+fn lengths_in_doubt(what: &DataProblem) -> bool {
+    match what {
+        // Only where nobody stated the unit: a unit stated and implausible is an error.
+        DataProblem::Scale(e) => matches!(
+            e,
+            super::scales::ScaleError::LengthsNotMetres { .. }
+                | super::scales::ScaleError::TooSlow { by: None, .. }
+        ),
+        DataProblem::Unscaled { .. } => true,
+        DataProblem::InDataSet { problem, .. } => lengths_in_doubt(problem),
+        _ => false,
+    }
+}
+
 /// The report of a velocity file with no impact in it: a single ball's velocities.
 fn single_ball(m: crate::study::measured::Measured, file: &str, notes: Notes) -> Report {
     let t = &m.t;
@@ -160,6 +199,7 @@ fn velocities(t: &[f64], file: &str, notes: Notes) -> Report {
         speed: None,
         impacts: Vec::new(),
         impact_note: String::new(),
+        length_unit_doubt: None,
     }
 }
 
@@ -191,6 +231,7 @@ fn of_track(track: Track, file: &str, notes: Notes, reading: &Reading, derive: &
         speed: None,
         impacts: Vec::new(),
         impact_note: String::new(),
+        length_unit_doubt: None,
     };
     let opts = Derive {
         impact_at: reading.impact_at.or(derive.impact_at),

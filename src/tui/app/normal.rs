@@ -299,9 +299,15 @@ impl App {
     }
 
     fn open_data_table(&mut self) {
-        match self.lab.measured() {
-            Some(_) => self.open(Layer::Table(DataTable::default())),
-            None => {
+        let unfit = self.lab.unfit().map(|u| (u.in_file_time.is_some(), u.name.clone()));
+        match (self.lab.measured(), unfit) {
+            (Some(_), _) | (None, Some((true, _))) => self.open(Layer::Table(DataTable::default())),
+            (None, Some((false, name))) => {
+                self.status = Status::Error(format!(
+                    "no rows to show: {name}'s lengths are in doubt (f says why); groovelab data shows what it holds"
+                ))
+            }
+            (None, None) => {
                 self.status = Status::Error(format!(
                     "preset {} has no measured data to show (the paper-b* presets have)",
                     self.lab.preset().name

@@ -12,4 +12,5 @@ mod scene;
 mod side_by_side;
 mod table_shapes;
 mod tracks;
+mod unfit;
 mod units_checked;

@@ -143,7 +143,9 @@ impl Pane for FitRuns {
         };
         match action {
             // Opening the view without data says there are none to fit.
-            Action::ShowView(View::Fit) if shown && cx.lab.measured().is_none() => {
+            Action::ShowView(View::Fit)
+                if shown && cx.lab.measured().is_none() && cx.lab.unfit().is_none() =>
+            {
                 Handled::Refused(format!(
                     "preset {} has no measured data to fit (the paper-b* presets have)",
                     cx.lab.preset().name
