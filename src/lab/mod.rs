@@ -111,7 +111,9 @@ impl Lab {
     /// The user's data shown without a fit, unless dropped or replaced by data of
     /// their own that can be fitted.
     pub fn unfit(&self) -> Option<&Unfit> {
-        self.unfit.as_ref().filter(|_| self.own_data.is_none())
+        self.unfit
+            .as_ref()
+            .filter(|_| self.own_data.is_none() && !self.settings.data_dropped())
     }
 
     /// The current snapshot, shared (a job or a view cache keeps it whole).
@@ -243,7 +245,11 @@ impl Lab {
     /// preset's data are shown while the groove is the preset's, else none (see
     /// `data::in_use`). The dropped series' name, if there was one.
     pub fn drop_data(&mut self) -> Option<String> {
-        let name = self.own_data()?.name.clone();
+        let name = match (self.own_data(), self.unfit()) {
+            (Some(own), _) => own.name.clone(),
+            (None, Some(unfit)) => unfit.name.clone(),
+            (None, None) => return None,
+        };
         self.edit(Edit::DropData)
             .expect("dropping the data leaves a valid scene");
         Some(name)
