@@ -329,11 +329,31 @@ fn video_work(
             Err(e) => return Some(Err(Arc::new(e) as _)),
         };
         let read = || -> Result<crate::tui::jobs::TrackedVideo, CliError> {
-            let texts = [(path.display().to_string(), kept.text.clone())];
-            let loaded = series_of(&texts, &data)?;
-            let joined = join(&scene_args, &data, &scene_args.settings()?, Some(loaded))?;
+            let file = path.display().to_string();
+            let texts = [(file.clone(), kept.text.clone())];
+            let joined = series_of(&texts, &data).and_then(|loaded| {
+                join(&scene_args, &data, &scene_args.settings()?, Some(loaded))
+            });
+            let (joined, unfit) = match joined {
+                Ok(joined) => (joined, None),
+                // Tracks that no fit can use (no impact in the clip): shown without.
+                Err(e) => {
+                    // Its tracks are in metres: the scale went into the tracking.
+                    let (mut reading, _) = reading_of(&data)?;
+                    reading.scale = None;
+                    let unfit = unfit_of(&file, &kept.text, &reading, e)?;
+                    let none = Joined {
+                        own: None,
+                        from_data: None,
+                        file_keys: Vec::new(),
+                        scene_file: None,
+                    };
+                    (none, Some(unfit))
+                }
+            };
             Ok(crate::tui::jobs::TrackedVideo {
-                own: joined.own.expect("a series was loaded"),
+                own: joined.own,
+                unfit,
                 from_data: joined.from_data,
                 file_keys: joined.file_keys,
                 scene_file: joined.scene_file,
@@ -446,7 +466,7 @@ pub fn opened(scene_args: &SceneArgs, data: &DataArgs, library: Library) -> Resu
         // Data that `groovelab data` reads but no fit can use: the app opens on the
         // scene without them, shows what it can and says why there is no fit.
         Err(e) => {
-            let unfit = unfit(data, e)?;
+            let unfit = unfit(scene_args, data, e)?;
             let lab = lab(scene_args, &DataArgs::default())?.with_unfit(unfit.clone());
             (lab, Some(unfit))
         }
@@ -499,30 +519,43 @@ pub fn scene_of_data<'a>(scene_args: &SceneArgs, data: &'a DataArgs) -> Option<&
 /// `error` (the fit's refusal) as why. `error` itself where it is not the data's, or
 /// `data` cannot read them either (and for a video or two files, which keep their
 /// own paths).
-fn unfit(data: &DataArgs, error: CliError) -> Result<Unfit, CliError> {
+fn unfit(scene_args: &SceneArgs, data: &DataArgs, error: CliError) -> Result<Unfit, CliError> {
     let [path] = data.data.as_slice() else {
         return Err(error);
     };
-    if super::video_data::is_video(path)
-        || !matches!(error, CliError::Data(_) | CliError::Implausible { .. })
-    {
+    if !matches!(error, CliError::Data(_) | CliError::Implausible { .. }) {
         return Err(error);
     }
-    let Ok(text) = crate::input::read_user_file(
-        path,
-        crate::input::FileRole::DataOption,
-        crate::input::MAX_FILE_BYTES,
-    ) else {
+    let (mut reading, _) = reading_of(data)?;
+    let text = if super::video_data::is_video(path) {
+        // Its tracks (kept from the tracking that just read them) are in metres.
+        reading.scale = None;
+        super::video_data::text(path, scene_args, data)
+    } else {
+        crate::input::read_user_file(
+            path,
+            crate::input::FileRole::DataOption,
+            crate::input::MAX_FILE_BYTES,
+        )
+        .map_err(CliError::from)
+    };
+    let Ok(text) = text else {
         return Err(error);
     };
-    let file = path.display().to_string();
-    let (reading, derive) = reading_of(data)?;
-    if crate::input::data::inspect(&text, &file, &reading, &derive).is_err() {
+    unfit_of(&path.display().to_string(), &text, &reading, error)
+}
+
+/// [`unfit`] of the text `text` of file `file` (a data file, or a video's tracks)
+/// read as `reading` says.
+fn unfit_of(file: &str, text: &str, reading: &Reading, error: CliError) -> Result<Unfit, CliError> {
+    let file = file.to_string();
+    let (reading, derive) = (reading.clone(), Derive::default());
+    if crate::input::data::inspect(text, &file, &reading, &derive).is_err() {
         return Err(error);
     }
     // The centre's v_cm in the file's own time, where its lengths are metres (a
     // file whose unit is in doubt is not read at all: its table alone is shown).
-    let in_file_time = match crate::input::data::read(&text, &file, &reading) {
+    let in_file_time = match crate::input::data::read(text, &file, &reading) {
         Ok(RawSeries::Positions(track)) => in_file_time(&track).map(Arc::new),
         _ => None,
     };

@@ -101,11 +101,17 @@ impl Lab {
     /// The lab with the user's data that could be read but not fitted (`--data` of a
     /// track with no impact): shown in the file's own time, with no fit.
     pub fn with_unfit(mut self, unfit: Unfit) -> Lab {
-        self.unfit = Some(unfit);
         // They are the user's data: the preset's are not shown beside them.
+        self.set_unfit(unfit);
+        self
+    }
+
+    /// The user's data without a fit arriving after the lab opened (a video tracked
+    /// on a worker whose clip shows no impact): as [`Lab::with_unfit`].
+    pub fn set_unfit(&mut self, unfit: Unfit) {
+        self.unfit = Some(unfit);
         self.rebuild()
             .expect("data without a fit change nothing the scene depends on");
-        self
     }
 
     /// The user's data shown without a fit, unless dropped or replaced by data of
