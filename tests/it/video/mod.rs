@@ -7,3 +7,4 @@ pub(crate) mod overlay;
 pub(crate) mod seed;
 pub(crate) mod tracker_looks;
 pub(crate) mod tracking;
+mod unfit;
