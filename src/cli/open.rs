@@ -331,9 +331,8 @@ fn video_work(
         let read = || -> Result<crate::tui::jobs::TrackedVideo, CliError> {
             let file = path.display().to_string();
             let texts = [(file.clone(), kept.text.clone())];
-            let joined = series_of(&texts, &data).and_then(|loaded| {
-                join(&scene_args, &data, &scene_args.settings()?, Some(loaded))
-            });
+            let joined = series_of(&texts, &data)
+                .and_then(|loaded| join(&scene_args, &data, &scene_args.settings()?, Some(loaded)));
             let (joined, unfit) = match joined {
                 Ok(joined) => (joined, None),
                 // Tracks that no fit can use (no impact in the clip): shown without.

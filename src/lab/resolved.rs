@@ -141,16 +141,14 @@ impl Resolved {
         if self.data.is_some() {
             return;
         }
-        self.points = unfit
-            .and_then(|u| u.in_file_time.as_ref())
-            .map(|m| {
-                let mut points = MeasuredPoints::of(m, None);
-                points.v_t = Arc::from(Vec::new());
-                points.v_t_bars = None;
-                points.ranges = points.series().map(|s| value_range(s)).collect();
-                points.in_file_time = true;
-                Arc::new(points)
-            });
+        self.points = unfit.and_then(|u| u.in_file_time.as_ref()).map(|m| {
+            let mut points = MeasuredPoints::of(m, None);
+            points.v_t = Arc::from(Vec::new());
+            points.v_t_bars = None;
+            points.ranges = points.series().map(|s| value_range(s)).collect();
+            points.in_file_time = true;
+            Arc::new(points)
+        });
     }
 
     /// The measured series in this scene.

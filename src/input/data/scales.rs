@@ -234,7 +234,11 @@ impl ScaleError {
 
 /// [`check_track`], leaving out the lengths' checks where the file is read in its own
 /// length unit ([`super::Reading::own_lengths`]).
-pub fn check_track_as_read(track: &Track, given: &Given, own_lengths: bool) -> Result<(), ScaleError> {
+pub fn check_track_as_read(
+    track: &Track,
+    given: &Given,
+    own_lengths: bool,
+) -> Result<(), ScaleError> {
     match check_track(track, given) {
         Err(e) if own_lengths && e.about_lengths() => Ok(()),
         checked => checked,

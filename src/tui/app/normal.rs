@@ -287,7 +287,10 @@ impl App {
     }
 
     fn open_data_table(&mut self) {
-        let unfit = self.lab.unfit().map(|u| (u.in_file_time.is_some(), u.name.clone()));
+        let unfit = self
+            .lab
+            .unfit()
+            .map(|u| (u.in_file_time.is_some(), u.name.clone()));
         match (self.lab.measured(), unfit) {
             (Some(_), _) | (None, Some((true, _))) => self.open(Layer::Table(DataTable::default())),
             (None, Some((false, name))) => {

@@ -29,7 +29,9 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     // Priorities (9 most important): the model's μ_k and whether it predicts what was
     // seen stay on the smallest screen; the paper's forces and table row go first.
     let lines: Ranked = match app.fit().fits() {
-        State::Idle if app.lab.unfit().is_some() => unfit_lines(app, usize::from(inner.width), theme),
+        State::Idle if app.lab.unfit().is_some() => {
+            unfit_lines(app, usize::from(inner.width), theme)
+        }
         State::Idle => vec![(
             9,
             Line::from(Span::styled(

@@ -288,7 +288,10 @@ fn a_logger_pro_file_gives_its_video_analysis_and_fits() {
     // `data` shows it in its own unit, with the doubt; `fit` refuses it.
     let (code, out, _) = groovelab(&["data", f]);
     assert_eq!(code, Some(0));
-    assert!(out.contains("lengths shown in the file's own unit") && out.contains("no unit"), "{out}");
+    assert!(
+        out.contains("lengths shown in the file's own unit") && out.contains("no unit"),
+        "{out}"
+    );
     let (code, _, err) = groovelab(&["fit", "--preset", "paper-b4.9", "--data", f]);
     assert_eq!(code, Some(2), "{err}");
     assert!(

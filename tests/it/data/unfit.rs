@@ -29,13 +29,17 @@ fn written(test: &str, text: &str) -> String {
 
 /// The first number after `label` in `text`.
 fn number_after(text: &str, label: &str) -> f64 {
-    let rest = &text[text.find(label).unwrap_or_else(|| panic!("{label}: {text}")) + label.len()..];
+    let rest = &text[text
+        .find(label)
+        .unwrap_or_else(|| panic!("{label}: {text}"))
+        + label.len()..];
     let n: String = rest
         .trim_start()
         .chars()
         .take_while(|c| c.is_ascii_digit() || matches!(c, '.' | '-' | '+' | 'e' | 'E'))
         .collect();
-    n.parse().unwrap_or_else(|_| panic!("no number after {label}: {rest}"))
+    n.parse()
+        .unwrap_or_else(|_| panic!("no number after {label}: {rest}"))
 }
 
 #[test]
@@ -49,7 +53,10 @@ fn a_track_with_no_impact_opens_with_its_rows_and_says_why_there_is_no_fit() {
         // The app's screen opens on it.
         let (code, screen, err) = run(&["render", "--data", &f, "--size", "100x30"]);
         assert_eq!(code, 0, "{err}");
-        assert!(screen.contains("track.txt: no fit (f says why; d shows its rows)"), "{screen}");
+        assert!(
+            screen.contains("track.txt: no fit (f says why; d shows its rows)"),
+            "{screen}"
+        );
         // Its v_cm on the chart, said to be in the file's time; not the preset's data.
         assert!(screen.contains("v_cm, file's t"), "{screen}");
         assert!(!screen.contains("measured v_t"), "{screen}");
@@ -58,6 +65,8 @@ fn a_track_with_no_impact_opens_with_its_rows_and_says_why_there_is_no_fit() {
         assert_eq!(code, 0);
         assert!(fit.contains("no fit of"), "{fit}");
         assert!(fit.contains("no impact found"), "{fit}");
+        let (_, applied, _) = run(&["render", "--data", &f, "--size", "100x30", "--keys", "f a"]);
+        assert!(applied.contains("no fit to apply"), "{applied}");
         // The table: the file's own time, x from its first frame, v_cm = v0 + a t.
         let (code, table, _) = run(&["render", "--data", &f, "--size", "100x40", "--keys", "d"]);
         assert_eq!(code, 0);
@@ -99,7 +108,10 @@ fn lengths_in_no_stated_unit_are_shown_in_the_files_own_unit_with_the_fix() {
         // 80 % and at the end of the 0.59 s run (v0 + a t).
         let fastest = number_after(&out, "speed between frames up to about");
         let (lo, hi) = (100.0 * (v0 + a * 0.8 * 0.59), 100.0 * (v0 + a * 0.59));
-        assert!(lo <= fastest && fastest <= hi, "{fastest} units/s, not in {lo} … {hi}: {out}");
+        assert!(
+            lo <= fastest && fastest <= hi,
+            "{fastest} units/s, not in {lo} … {hi}: {out}"
+        );
         assert!(out.contains("units/s"), "{out}");
         // No speed of the file's own is called m/s (the doubt's "as m … m/s" is).
         assert!(
@@ -108,12 +120,18 @@ fn lengths_in_no_stated_unit_are_shown_in_the_files_own_unit_with_the_fix() {
                 .all(|l| !l.contains("m/s")),
             "{out}"
         );
-        let json: serde_json::Value = serde_json::from_str(
-            &run(&["data", "--format", "json", &f]).1,
-        )
-        .unwrap();
-        assert!(json[0]["length_unit_doubt"].as_str().unwrap().contains("--length-unit "));
-        assert!(json[0]["scene_values"].as_object().unwrap().is_empty(), "{json}");
+        let json: serde_json::Value =
+            serde_json::from_str(&run(&["data", "--format", "json", &f]).1).unwrap();
+        assert!(
+            json[0]["length_unit_doubt"]
+                .as_str()
+                .unwrap()
+                .contains("--length-unit ")
+        );
+        assert!(
+            json[0]["scene_values"].as_object().unwrap().is_empty(),
+            "{json}"
+        );
         // With the unit given, it is read as such and no doubt is said.
         let (code, out, _) = run(&["data", "--length-unit", "cm", &f]);
         assert_eq!(code, 0);
@@ -121,7 +139,10 @@ fn lengths_in_no_stated_unit_are_shown_in_the_files_own_unit_with_the_fix() {
         // The app opens on it, draws nothing of it and says why in the Fit view.
         let (code, screen, err) = run(&["render", "--data", &f, "--size", "100x30"]);
         assert_eq!(code, 0, "{err}");
-        assert!(screen.contains("track.txt: no fit (f says why)"), "{screen}");
+        assert!(
+            screen.contains("track.txt: no fit (f says why)"),
+            "{screen}"
+        );
         assert!(!screen.contains("v_cm, file's t"), "{screen}");
     }
 }
@@ -133,5 +154,8 @@ fn a_stated_unit_that_cannot_be_right_is_still_refused() {
     let f = written("stated-unit", &text);
     let (code, out, err) = run(&["data", &f]);
     assert_eq!(code, 2, "{out}");
-    assert!(err.starts_with("error: ") && err.trim_end().lines().count() == 1, "{err}");
+    assert!(
+        err.starts_with("error: ") && err.trim_end().lines().count() == 1,
+        "{err}"
+    );
 }

@@ -254,8 +254,17 @@ fn pixels_of_a_video_never_calibrated_are_named_with_scale_not_only_a_length_uni
     // `fit` refuses it; `data` shows it in the file's own unit with the same words.
     let (code, out, _) = groovelab(&["data", file.to_str().unwrap()]);
     assert_eq!(code, Some(0));
-    assert!(out.contains("lengths shown in the file's own unit") && out.contains("--scale"), "{out}");
-    let fit = ["fit", "--preset", "paper-b4.9", "--data", file.to_str().unwrap()];
+    assert!(
+        out.contains("lengths shown in the file's own unit") && out.contains("--scale"),
+        "{out}"
+    );
+    let fit = [
+        "fit",
+        "--preset",
+        "paper-b4.9",
+        "--data",
+        file.to_str().unwrap(),
+    ];
     let (code, _, err) = groovelab(&fit);
     assert_eq!(code, Some(2), "{err}");
     assert!(

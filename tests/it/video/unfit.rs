@@ -25,10 +25,15 @@ fn a_clip_with_no_impact_opens_with_its_frames_and_says_why_there_is_no_fit() {
         .unwrap();
     assert!(made.success());
     let c = clip.to_str().unwrap();
-    let base = ["render", "--data", c, "--radius", "2.75cm", "--size", "100x30"];
+    let base = [
+        "render", "--data", c, "--radius", "2.75cm", "--size", "100x30",
+    ];
     let (code, screen, err) = run(&base);
     assert_eq!(code, 0, "{err}");
-    assert!(screen.contains("pushed.mp4: no fit (f says why; d shows its rows)"), "{screen}");
+    assert!(
+        screen.contains("pushed.mp4: no fit (f says why; d shows its rows)"),
+        "{screen}"
+    );
     let with = |keys: &str| {
         let mut args = base.to_vec();
         args.extend(["--keys", keys]);
@@ -37,7 +42,10 @@ fn a_clip_with_no_impact_opens_with_its_frames_and_says_why_there_is_no_fit() {
         out
     };
     let fit = with("f");
-    assert!(fit.contains("no fit of") && fit.contains("no impact found"), "{fit}");
+    assert!(
+        fit.contains("no fit of") && fit.contains("no impact found"),
+        "{fit}"
+    );
     // The video view shows a frame of the clip (45 frames) at the cursor's time, not
     // "no time to show".
     let video = with("V");
