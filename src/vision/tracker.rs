@@ -174,17 +174,32 @@ impl Tracker {
             let small = Small::of(frame, bg.image.factor);
             let (d, _) = differences(&small, &bg.image, &p);
             let thr = threshold(&d, &p);
+            let more = detect::against_differences(&small, &d, thr, &p);
             // What the luma look sees but does not differ from the background is the
-            // bench (a disc of clutter, a stripe's end, a checker's square): not a
-            // ball, and no crowd.
-            coarse
+            // bench (a disc of clutter, a stripe's end, a checker's square), unless
+            // it lies on the line of a ball that moves, at its size: a ball at rest
+            // where the background learned it (a target waiting for the impact).
+            let moving: Vec<Circle> = coarse
                 .balls
-                .retain(|b| differing_share(&d, thr, &small, b) >= MOVED_SHARE);
+                .iter()
+                .filter(|b| differing_share(&d, thr, &small, b) >= MOVED_SHARE)
+                .chain(&more.balls)
+                .map(Blob::guess)
+                .chain(self.last.iter().filter_map(|l| l.last().map(|(_, c)| *c)))
+                .collect();
+            let on_line = |b: &Blob| {
+                let g = b.guess();
+                moving.iter().any(|m| {
+                    (g.y - m.y).abs() < 0.5 * m.r && (g.r - m.r).abs() < 0.35 * m.r
+                })
+            };
+            coarse.balls.retain(|b| {
+                differing_share(&d, thr, &small, b) >= MOVED_SHARE || on_line(b)
+            });
             coarse
                 .pairs
                 .retain(|b| differing_share(&d, thr, &small, b) >= MOVED_SHARE);
             crowded = coarse.balls.len() > 2;
-            let more = detect::against_differences(&small, &d, thr, &p);
             crowded |= more.balls.len() > 2;
             coarse.balls.extend(more.balls);
             coarse.pairs.extend(more.pairs);
