@@ -431,8 +431,11 @@ impl Tracker {
         if stands_out(frame, &o.outline.circle, p.colour_weight) < p.differ_levels {
             return Err(LeftOut::Unseen);
         }
+        // The colour planes are half size, brought to full size bilinearly: their
+        // edge points scatter about twice as far as the brightness edge's.
+        let max_rms = if o.colour { 2.0 * p.max_rms } else { p.max_rms };
         if o.outline.coverage < p.min_coverage
-            || o.outline.rms > p.max_rms
+            || o.outline.rms > max_rms
             || !r_ok
             || c.r < p.min_radius
             || p.roi.is_some_and(|roi| !roi.contains(c.x, c.y))
