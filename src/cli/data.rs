@@ -228,7 +228,11 @@ pub fn describe(shown: &DataReport) -> String {
         s,
         "  {}{of} frame{} at {rate}, t = {} … {} s",
         r.frames,
-        if r.frames == 1 && of.is_empty() { "" } else { "s" },
+        if r.frames == 1 && of.is_empty() {
+            ""
+        } else {
+            "s"
+        },
         significant(r.t_first, 4),
         significant(r.t_last, 4)
     );

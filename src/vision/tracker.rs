@@ -7,9 +7,9 @@
 //! (blurred, or too little of it visible); nothing is filled in.
 
 use super::background::{Background, Learner, Small, differences, threshold};
-use super::detect::Blob;
 use super::circle::{self, Circle, Outline};
 use super::detect;
+use super::detect::Blob;
 use super::frame::Frame;
 use super::gray::Gray;
 use super::mark::{self, Mark};
@@ -52,7 +52,9 @@ pub struct Counts {
 /// last fits and every frame's result.
 ///
 /// Use: [`Tracker::learn`] every frame of the clip (or a sample, in order), then
-/// [`Tracker::push`] every frame; or [`track`] for frames in memory. Frames pushed
+/// [`Tracker::push`] every frame; or learn each frame as it comes and push it some
+/// frames later (one pass: the background is learned anew as it learns more); or
+/// [`track`] for frames in memory. Frames pushed
 /// with nothing learned are looked at against a smooth surface of luma instead.
 #[derive(Clone, Debug, Default)]
 pub struct Tracker {
@@ -189,13 +191,13 @@ impl Tracker {
                 .collect();
             let on_line = |b: &Blob| {
                 let g = b.guess();
-                moving.iter().any(|m| {
-                    (g.y - m.y).abs() < 0.5 * m.r && (g.r - m.r).abs() < 0.35 * m.r
-                })
+                moving
+                    .iter()
+                    .any(|m| (g.y - m.y).abs() < 0.5 * m.r && (g.r - m.r).abs() < 0.35 * m.r)
             };
-            coarse.balls.retain(|b| {
-                differing_share(&d, thr, &small, b) >= MOVED_SHARE || on_line(b)
-            });
+            coarse
+                .balls
+                .retain(|b| differing_share(&d, thr, &small, b) >= MOVED_SHARE || on_line(b));
             coarse
                 .pairs
                 .retain(|b| differing_share(&d, thr, &small, b) >= MOVED_SHARE);
