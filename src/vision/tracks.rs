@@ -133,39 +133,8 @@ pub fn tracks(
     radius: f64,
     scale: Option<f64>,
 ) -> Result<Tracks, TracksError> {
-    let c = &tracker.counts;
-    if c.crowded * 2 > c.frames {
-        return Err(TracksError::TooMany {
-            crowded: c.crowded,
-            frames: c.frames,
-        });
-    }
     let frames = &ordered(&tracker.frames);
-    // A slot seen in too few frames is a passing blob, not a ball.
-    let seen = |s: usize| frames.iter().filter(|f| f[s].is_ok()).count();
-    let enough = (tracker.frames.len() / 10).max(FEWEST_SEEN);
-    if c.frames < FEWEST_SEEN {
-        return Err(TracksError::TooFewFrames {
-            frames: c.frames,
-            need: FEWEST_SEEN,
-        });
-    }
-    let mut slots: Vec<usize> = (0..2).filter(|&s| seen(s) >= enough).collect();
-    if slots.is_empty() {
-        return Err(TracksError::NoBall {
-            frames: c.frames,
-            min_radius: tracker.params.min_radius,
-        });
-    }
-    // A ball found in few of the frames: what was found may be something else (a
-    // mark, a highlight) in the frames where the ball itself was missed.
-    let best = slots.iter().map(|&s| seen(s)).max().unwrap_or(0);
-    if best * SPARSEST < c.frames {
-        return Err(TracksError::Sparse {
-            seen: best,
-            frames: c.frames,
-        });
-    }
+    let mut slots = balls_seen(tracker, frames)?;
     let centres: Vec<Vec<[f64; 2]>> = (0..2).map(|s| centres_of(frames, s)).collect();
     let (angle, angle_se, found) =
         groove(&slots.iter().map(|&s| &centres[s][..]).collect::<Vec<_>>());
@@ -235,6 +204,45 @@ pub fn tracks(
         balls,
         calibration,
     })
+}
+
+/// The slots that hold a ball (seen in enough frames), or why the frames give no
+/// tracks: crowded, too few, no ball, or the balls found too rarely.
+#[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
+fn balls_seen(tracker: &Tracker, frames: &[FrameFixes]) -> Result<Vec<usize>, TracksError> {
+    let c = &tracker.counts;
+    if c.crowded * 2 > c.frames {
+        return Err(TracksError::TooMany {
+            crowded: c.crowded,
+            frames: c.frames,
+        });
+    }
+    // A slot seen in too few frames is a passing blob, not a ball.
+    let seen = |s: usize| frames.iter().filter(|f| f[s].is_ok()).count();
+    let enough = (frames.len() / 10).max(FEWEST_SEEN);
+    if c.frames < FEWEST_SEEN {
+        return Err(TracksError::TooFewFrames {
+            frames: c.frames,
+            need: FEWEST_SEEN,
+        });
+    }
+    let slots: Vec<usize> = (0..2).filter(|&s| seen(s) >= enough).collect();
+    if slots.is_empty() {
+        return Err(TracksError::NoBall {
+            frames: c.frames,
+            min_radius: tracker.params.min_radius,
+        });
+    }
+    // A ball found in few of the frames: what was found may be something else (a
+    // mark, a highlight) in the frames where the ball itself was missed.
+    let best = slots.iter().map(|&s| seen(s)).max().unwrap_or(0);
+    if best * SPARSEST < c.frames {
+        return Err(TracksError::Sparse {
+            seen: best,
+            frames: c.frames,
+        });
+    }
+    Ok(slots)
 }
 
 /// How far `centres` scatter across the groove (whose normal is `n`), RMS px: a
