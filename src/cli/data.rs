@@ -217,11 +217,22 @@ pub fn describe(shown: &DataReport) -> String {
         .map_or("no frame rate (too few times)".to_string(), |f| {
             format!("{} frames/s", significant(f, 4))
         });
+    // Found frames counted against the span's frames at its rate ("11 of 58 frames
+    // at 60 frames/s"), never as a rate of their own.
+    let of = if r.frames_spanned > r.frames {
+        format!(" of {}", r.frames_spanned)
+    } else {
+        String::new()
+    };
     let _ = writeln!(
         s,
-        "  {} frame{} at {rate}, t = {} … {} s",
+        "  {}{of} frame{} at {rate}, t = {} … {} s",
         r.frames,
-        if r.frames == 1 { "" } else { "s" },
+        if r.frames == 1 && of.is_empty() {
+            ""
+        } else {
+            "s"
+        },
         significant(r.t_first, 4),
         significant(r.t_last, 4)
     );

@@ -40,8 +40,12 @@ pub struct Report {
     pub mark_distance: Option<f64>,
     /// Frames with a time (and, for a track, rows kept).
     pub frames: usize,
-    /// Frames per second, from the median spacing; `None` (JSON `null`) where fewer
-    /// than two distinct times give none.
+    /// The frames of the file's time span at its rate, found or not (a video's
+    /// frames: 11 found of 58 at 60 frames/s is `frames` 11 of `frames_spanned` 58).
+    pub frames_spanned: usize,
+    /// Frames per second, from the median spacing of every row's time (the clip's
+    /// rate, not the found frames'); `None` (JSON `null`) where fewer than two
+    /// distinct times give none.
     pub frame_rate: Option<f64>,
     /// First and last time of the file, s (a velocity file's with the impact at 0).
     pub t_first: f64,
@@ -189,6 +193,7 @@ fn velocities(t: &[f64], file: &str, notes: Notes) -> Report {
         mark: None,
         mark_distance: None,
         frames: t.len(),
+        frames_spanned: spanned(t),
         frame_rate: rate_of(t),
         t_first: t[0],
         t_last: t[t.len() - 1],
@@ -221,7 +226,10 @@ fn of_track(track: Track, file: &str, notes: Notes, reading: &Reading, derive: &
         mark: track.mark_name.clone(),
         mark_distance: mark_distance(&track),
         frames: rows.len(),
-        frame_rate: rate_of(&t),
+        // The rate and span of every row: a video's frames left out (no position)
+        // are frames of the clip all the same.
+        frames_spanned: spanned(&track.t),
+        frame_rate: rate_of(&track.t),
         t_first: t.first().copied().unwrap_or(f64::NAN),
         t_last: t.last().copied().unwrap_or(f64::NAN),
         missing,
@@ -345,6 +353,20 @@ fn jumps(t: &[f64]) -> Vec<Gap> {
 }
 
 /// Frames per second from the median spacing of `t`, where it gives a finite one.
+/// The frames from the first time of `t` to its last at its rate (at least its
+/// rows; all of them when it has no rate).
+fn spanned(t: &[f64]) -> usize {
+    let (Some(first), Some(last), Some(rate)) = (t.first(), t.last(), rate_of(t)) else {
+        return t.len();
+    };
+    let n = ((last - first) * rate).round() + 1.0;
+    if n.is_finite() && n < 1e9 {
+        (n as usize).max(t.len())
+    } else {
+        t.len()
+    }
+}
+
 fn rate_of(t: &[f64]) -> Option<f64> {
     let rate = 1.0 / frame_spacing(t);
     (rate.is_finite() && rate > 0.0).then_some(rate)

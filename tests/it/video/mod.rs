@@ -2,6 +2,7 @@
 //! as `--data` everywhere.
 
 pub(crate) mod app;
+pub(crate) mod found_frames;
 pub(crate) mod looks;
 pub(crate) mod overlay;
 pub(crate) mod seed;
