@@ -249,7 +249,22 @@ pub fn describe(shown: &DataReport) -> String {
         let _ = writeln!(s, "  {} in {}: {}", u.quantity, u.unit, u.how);
     }
     s += &missing_line(&r.missing);
-    // In the file's own length unit where it is in doubt: "units", "units/s".
+    s += &motion_lines(r);
+    if let Some(doubt) = &r.length_unit_doubt {
+        let _ = writeln!(
+            s,
+            "  lengths shown in the file's own unit (\"units\"), as nothing says what it is: {doubt}"
+        );
+    }
+    let _ = writeln!(s, "  {}", r.impact_note);
+    s += &scene_line(&shown.scene_values, &shown.header_values);
+    s
+}
+
+/// The scatter of a position and the approach speed (or the speed between frames), in
+/// the file's own length unit where it is in doubt ("units", "units/s").
+fn motion_lines(r: &Report) -> String {
+    let mut s = String::new();
     let own = r.length_unit_doubt.is_some();
     let speed_unit = if own { "units/s" } else { "m/s" };
     if let Some(sc) = r.scatter {
@@ -283,14 +298,6 @@ pub fn describe(shown: &DataReport) -> String {
         }
         _ => {}
     }
-    if let Some(doubt) = &r.length_unit_doubt {
-        let _ = writeln!(
-            s,
-            "  lengths shown in the file's own unit (\"units\"), as nothing says what it is: {doubt}"
-        );
-    }
-    let _ = writeln!(s, "  {}", r.impact_note);
-    s += &scene_line(&shown.scene_values, &shown.header_values);
     s
 }
 

@@ -137,7 +137,7 @@ impl Resolved {
 
     /// Without measured data in use, the unfitted data's points in the file's own
     /// time (no impact aligns them with the model's).
-    pub(super) fn show_in_file_time(&mut self, unfit: Option<&super::Unfit>) {
+    pub(super) fn show_in_file_time(&mut self, unfit: Option<&super::data::Unfit>) {
         if self.data.is_some() {
             return;
         }
@@ -193,7 +193,7 @@ pub struct MeasuredPoints {
     /// Each series' [`value_range`], in the order of [`MeasuredPoints::series`].
     ranges: Vec<Option<(f64, f64)>>,
     /// The points are in the file's own time, not aligned with the model's (no
-    /// impact was found to align them: `super::Unfit`).
+    /// impact was found to align them: `super::data::Unfit`).
     pub in_file_time: bool,
 }
 

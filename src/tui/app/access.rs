@@ -24,7 +24,7 @@ impl App {
     }
 
     /// The parameters panel (its row selected).
-    pub fn params(&self) -> &crate::tui::layer::main::params::ParamsPanel {
+    pub fn params(&self) -> &crate::tui::layer::main::params::ParamsState {
         self.layers.main().get()
     }
 

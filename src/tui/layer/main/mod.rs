@@ -41,7 +41,7 @@ impl Default for MainScreen {
                 Box::new(fit::FitRuns::default()),
                 Box::new(video::VideoRun::default()),
                 // Last: a view's own arrows (the zoom's, the fit window's) go first.
-                Box::new(params::ParamsPanel::default()),
+                Box::new(params::ParamsState::default()),
             ],
         }
     }

@@ -16,18 +16,18 @@ pub static ROWS: LazyLock<Vec<&'static Param>> =
 
 /// The parameters panel: the row selected.
 #[derive(Clone, Debug)]
-pub struct ParamsPanel {
+pub struct ParamsState {
     selected: usize,
 }
 
-impl Default for ParamsPanel {
+impl Default for ParamsState {
     /// On b, the groove's width: what the experiment varies.
     fn default() -> Self {
-        ParamsPanel { selected: 1 }
+        ParamsState { selected: 1 }
     }
 }
 
-impl ParamsPanel {
+impl ParamsState {
     /// The row selected (an index in [`ROWS`]).
     pub fn selected(&self) -> usize {
         self.selected
@@ -51,7 +51,7 @@ impl ParamsPanel {
     }
 }
 
-impl Pane for ParamsPanel {
+impl Pane for ParamsState {
     fn view(&self) -> Option<View> {
         None
     }
