@@ -436,13 +436,6 @@ pub(super) fn residuals(
     labelled_residuals(scene, m, idx, target, true, evals).0
 }
 
-/// Mean squared residual of `scene`, over the frames away from its own impacts.
-pub(super) fn mean_cost(scene: &Scene, m: &Measured, target: Target, evals: &mut Evals) -> f64 {
-    let idx = fit_points(m, scene, target, evals);
-    let r = residuals(scene, m, &idx, target, evals);
-    r.iter().map(|x| x * x).sum::<f64>() / r.len().max(1) as f64
-}
-
 #[cfg(test)]
 mod tests {
     use super::{NearImpacts, branch_offset, same_turn};
