@@ -103,8 +103,8 @@ fn draw_fit(
             })
             .collect::<Vec<_>>()
             .join(" + "),
-        super::drawing::rounded(fits.line_fit.mu_cm),
-        super::drawing::rounded(fits.line_fit.mu_t)
+        super::drawing::rounded(fits.line_fit.as_ref().map_or(f64::NAN, |l| l.mu_cm)),
+        super::drawing::rounded(fits.line_fit.as_ref().map_or(f64::NAN, |l| l.mu_t))
     );
     let mut chart = linear_chart(
         area,
@@ -137,8 +137,11 @@ fn draw_fit(
         points(&m.v_t).into_iter(),
         (BLUE, ORANGE),
     )?;
-    let l = &fits.line_fit;
-    for (line, colour) in l.lines.iter().zip([BLUE, ORANGE]) {
+    for (l, (line, colour)) in fits
+        .line_fit
+        .iter()
+        .flat_map(|l| l.lines.iter().zip([BLUE, ORANGE]).map(move |lc| (l, lc)))
+    {
         chart.draw_series(LineSeries::new(
             [l.from, l.to]
                 .map(|t| (t, line.intercept + line.slope * t))

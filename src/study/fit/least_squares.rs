@@ -59,9 +59,9 @@ pub(super) fn with(scene: &Scene, free: &[Free], p: &[f64]) -> Scene {
     s
 }
 
-/// How many values of μ_k the profile scan visits ([`profile_mu`]): spaced evenly in
-/// log over [`PROFILE_RANGE`], about 10 % apart, so the profile's lowest grid value
-/// lies within one step of its minimum.
+/// How many steps apart the profile scan's ends are ([`profile_mu`]: 49 values of
+/// μ_k), spaced evenly in log over [`PROFILE_RANGE`], about 10 % apart, so the
+/// profile's lowest grid value lies within one step of its minimum.
 const PROFILE_POINTS: u32 = 48;
 
 /// The range of μ_k the profile scan covers: every plausible μ_k of a ball in a
@@ -95,15 +95,20 @@ fn mean_square(r: &[f64]) -> f64 {
 /// smooth where impacts move past data points, and local steps get caught there).
 /// A local search alone stopped in another minimum: an exact track at μ_k = 0.18
 /// fitted to 0.1966 with 1.6 mm RMS (issue 35).
+/// On the frames the start leaves (a μ whose later impacts pass more frames would
+/// otherwise leave out the ones it fits worst, and look better than it is), among
+/// `within` when given.
 pub(super) fn profile_mu(
     pb: &Problem,
     evals: &mut Evals,
     p: &[f64],
     i: usize,
+    within: Option<&[usize]>,
 ) -> Result<Vec<f64>, FitError> {
-    // On the frames the start leaves (a μ whose later impacts pass more frames would
-    // otherwise leave out the ones it fits worst, and look better than it is).
-    let idx = fit_points(pb.m, &pb.at(p), pb.target, evals);
+    let mut idx = fit_points(pb.m, &pb.at(p), pb.target, evals);
+    if let Some(w) = within {
+        idx.retain(|k| w.binary_search(k).is_ok());
+    }
     let others: Vec<Free> = pb
         .free
         .iter()

@@ -391,11 +391,55 @@ fn best_values(
         }
         idx
     };
-    let p = match free.iter().position(|f| *f == Free::Mu) {
-        Some(i) if search == Search::Profile => profile_mu(pb, evals, &p, i)?,
-        _ => p,
+    let Some(i) = free
+        .iter()
+        .position(|f| *f == Free::Mu)
+        .filter(|_| search == Search::Profile)
+    else {
+        return refined(pb, evals, p, &frames);
     };
-    refined(pb, evals, p, &frames)
+    // The profile over every frame, and where the ball comes back to hit again also
+    // over the frames before that: after many recollisions (b near 2R) the cost
+    // over every frame has a valley too narrow for any grid, while up to the first
+    // return it is smooth in μ_k. Each then fitted on every frame; the better kept.
+    let mut best: Option<(f64, (Vec<f64>, Vec<usize>))> = None;
+    for within in [None, before_return(m)] {
+        if best.is_some() && within.is_none() {
+            continue;
+        }
+        let start = profile_mu(pb, evals, &p, i, within.as_deref())?;
+        let (q, idx) = refined(pb, evals, start, &frames)?;
+        let r = pb.residuals(&q, &idx, evals);
+        let cost = r.iter().map(|x| x * x).sum::<f64>() / r.len().max(1) as f64;
+        if best.as_ref().is_none_or(|b| cost < b.0) {
+            best = Some((cost, (q, idx)));
+        }
+    }
+    best.map(|b| b.1).ok_or(FitError::TooFewPoints {
+        usable: 0,
+        needed: free.len() + 2,
+    })
+}
+
+/// The frames of a track before its ball first comes back to where it hit: from the
+/// first frame after the impact, the ball moves away (x below 0 by more than five
+/// scatters and 1 mm) and a frame back over half the way from its farthest point
+/// ends them (at 30 frames/s a ball that hits again at once is never seen nearer). `None` without positions, without such a return, or with fewer than
+/// six frames after the impact before it.
+fn before_return(m: &Measured) -> Option<Vec<usize>> {
+    let x = m.x.as_ref()?;
+    let away = (5.0 * m.stencils.as_ref().map_or(0.0, |s| s.scatter)).max(1e-3);
+    let mut farthest = 0.0_f64;
+    let mut after = 0;
+    let back = m.t.iter().zip(x).position(|(&t, &x)| {
+        if t <= 0.0 || !x.is_finite() {
+            return false;
+        }
+        after += 1;
+        farthest = farthest.min(x);
+        farthest < -away && x > 0.5 * farthest
+    })?;
+    (after > 6).then(|| (0..back).collect())
 }
 
 /// Every free value together by Levenberg–Marquardt from `p`, on the frames `frames`

@@ -125,13 +125,18 @@ impl Found {
             "position track ({}): centre {}, {}; {} frames at {:.1} frames/s, scatter ≈ {:.2}\n",
             self.format,
             name(&self.centre),
-            match &self.mark {
-                Some(m) => format!(
+            match (&self.mark, self.mark_radius) {
+                (Some(m), Some(r)) => format!(
                     "rim mark {} (at {:.1} from the centre)",
                     name(m),
-                    show_small(self.mark_radius.unwrap_or(f64::NAN), Dimension::Length)
+                    show_small(r, Dimension::Length)
                 ),
-                None => "no rim mark: v_t is not measured, the fits use v_cm (x) only".to_string(),
+                // Never in a frame with the centre: nothing shows it is a mark.
+                (Some(m), None) => format!(
+                    "second track {} (never in a frame with the centre: not known to be a rim mark, no spin measured)",
+                    name(m)
+                ),
+                (None, _) => "no rim mark: v_t is not measured, the fits use v_cm (x) only".to_string(),
             },
             self.frames,
             self.frame_rate,
