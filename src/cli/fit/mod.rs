@@ -57,7 +57,10 @@ pub fn run(
             mirrored: lab.series().is_some_and(|s| s.mirrored()),
             fits: &fits,
             track: found.as_ref(),
-            data_groove: lab.other_groove.as_ref().map(|o| json::DataGroove::of(&o.data)),
+            data_groove: lab
+                .other_groove
+                .as_ref()
+                .map(|o| json::DataGroove::of(&o.data)),
             not_measured: json::not_measured(&fits, aliased.as_deref()),
         }),
         FitFormat::Table => {

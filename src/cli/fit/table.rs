@@ -47,7 +47,11 @@ pub(super) fn summary(f: &Fits) -> String {
             significant(h.mu / 100.0, 3)
         );
     }
-    if let Some(w) = f.line_fit.as_ref().and_then(|l| l.width_from_lines.as_ref()) {
+    if let Some(w) = f
+        .line_fit
+        .as_ref()
+        .and_then(|l| l.width_from_lines.as_ref())
+    {
         let _ = writeln!(
             out,
             "  the measured a_t/a_cm gives b ≈ {:.2} ± {}, not {}: check --width",
@@ -140,7 +144,13 @@ pub(super) fn table(scene: &Scene, f: &Fits, mass: Option<&str>, paper_data: boo
 /// the paper's table-1 row with where it contradicts itself when `paper_data`; the
 /// `mass` assumed, if it was, under them. Where the line fits cannot be made, why, on
 /// their line: the model fits below need none.
-fn line_fit_or_why(out: &mut String, scene: &Scene, f: &Fits, mass: Option<&str>, paper_data: bool) {
+fn line_fit_or_why(
+    out: &mut String,
+    scene: &Scene,
+    f: &Fits,
+    mass: Option<&str>,
+    paper_data: bool,
+) {
     match (&f.line_fit, &f.no_line_fit) {
         (Some(l), _) => line_fit_lines(out, scene, l, mass, paper_data),
         (None, why) => {

@@ -392,9 +392,13 @@ fn projected_down(
             if cost_on(&start, data, common, target, evals) >= cost {
                 continue;
             }
-            let refit = scored_fit_within(&start, m, &small, target, Search::Within(common), evals)?;
+            let refit =
+                scored_fit_within(&start, m, &small, target, Search::Within(common), evals)?;
             let refit_cost = cost_on(&refit.scene, data, common, target, evals);
-            if let Some(slot) = fitted.get_mut(j).filter(|_| refit.idx == common && refit_cost < cost) {
+            if let Some(slot) = fitted
+                .get_mut(j)
+                .filter(|_| refit.idx == common && refit_cost < cost)
+            {
                 slot.1 = refit;
                 cost = refit_cost;
                 moved = true;

@@ -38,7 +38,6 @@ impl Problem<'_> {
     pub fn residuals(&self, p: &[f64], idx: &[usize], evals: &mut Evals) -> Vec<f64> {
         residuals(&self.at(p), self.m, idx, self.target, evals)
     }
-
 }
 
 /// Scene with the fit parameters `p` applied, each written by its row of the
@@ -81,6 +80,25 @@ fn mu_grid(n: u32) -> Vec<f64> {
         .collect()
 }
 
+/// `p` with the μ_k (at `i`) of 21 values over [`PROFILE_RANGE`] that fits best, each
+/// on the frames its own impacts leave.
+fn coarse_mu(pb: &Problem, evals: &mut Evals, p: &[f64], i: usize) -> Result<Vec<f64>, FitError> {
+    let mut best = (f64::INFINITY, p.to_vec());
+    for mu in mu_grid(20) {
+        evals.next()?;
+        let mut q = p.to_vec();
+        if let Some(v) = q.get_mut(i) {
+            *v = mu;
+        }
+        let idx = fit_points(pb.m, &pb.at(&q), pb.target, evals);
+        let cost = mean_square(&pb.residuals(&q, &idx, evals));
+        if cost < best.0 {
+            best = (cost, q);
+        }
+    }
+    Ok(best.1)
+}
+
 /// The mean squared weighted residual of `r`.
 fn mean_square(r: &[f64]) -> f64 {
     r.iter().map(|x| x * x).sum::<f64>() / r.len().max(1) as f64
@@ -105,7 +123,14 @@ pub(super) fn profile_mu(
     i: usize,
     within: Option<&[usize]>,
 ) -> Result<Vec<f64>, FitError> {
-    let mut idx = fit_points(pb.m, &pb.at(p), pb.target, evals);
+    // The frames of the μ_k a coarse scan finds (each μ_k on the frames its own
+    // impacts leave), not of the start's μ_k: the fit must not depend on where μ_k
+    // started (the app's fitted μ_k against `fit`'s preset one).
+    let coarse = match pb.target {
+        Target::Velocity => coarse_mu(pb, evals, p, i)?,
+        Target::Position => p.to_vec(),
+    };
+    let mut idx = fit_points(pb.m, &pb.at(&coarse), pb.target, evals);
     if let Some(w) = within {
         idx.retain(|k| w.binary_search(k).is_ok());
     }

@@ -143,12 +143,13 @@ impl ModelFit {
             Agreement::MuNotDetermined
         } else if self.mu_implausible {
             Agreement::ImplausibleMu
+        } else if self.lines_disagree.is_some() {
+            // Before a poor fit: the cause named (a wrong b or R fits poorly too).
+            Agreement::LinesDisagree
         } else if self.scatter.is_some_and(|s| self.rms > POOR_FIT * s)
             && self.rms > self.perfect_rms()
         {
             Agreement::PoorFit
-        } else if self.lines_disagree.is_some() {
-            Agreement::LinesDisagree
         } else if !self.agrees {
             Agreement::Disagrees
         } else if self.indistinguishable_from_rest {
@@ -402,7 +403,7 @@ fn best_values(
     // over the frames before that: after many recollisions (b near 2R) the cost
     // over every frame has a valley too narrow for any grid, while up to the first
     // return it is smooth in μ_k. Each then fitted on every frame; the better kept.
-    let mut best: Option<(f64, (Vec<f64>, Vec<usize>))> = None;
+    let mut best: Option<(f64, Fitted)> = None;
     for within in [None, before_return(m)] {
         if best.is_some() && within.is_none() {
             continue;
@@ -420,6 +421,9 @@ fn best_values(
         needed: free.len() + 2,
     })
 }
+
+/// Fitted free values and the frames they were fitted on.
+type Fitted = (Vec<f64>, Vec<usize>);
 
 /// The frames of a track before its ball first comes back to where it hit: from the
 /// first frame after the impact, the ball moves away (x below 0 by more than five

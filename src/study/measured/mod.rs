@@ -125,16 +125,19 @@ pub fn for_scene(series: &Series, scene: &Scene) -> InScene {
 /// on the contact radius `r` (m), rad: the fastest |v_cm| before the impact times the
 /// median frame interval over r. `None` without both.
 fn mark_turn_per_frame(m: &Measured, r: f64) -> Option<f64> {
-    let mut steps: Vec<f64> = m.t.windows(2).map(|w| w[1] - w[0]).collect();
+    let mut steps: Vec<f64> =
+        m.t.iter()
+            .zip(m.t.iter().skip(1))
+            .map(|(a, b)| b - a)
+            .collect();
     steps.sort_by(f64::total_cmp);
     let dt = *steps.get(steps.len() / 2)?;
-    let fastest = m
-        .t
-        .iter()
-        .zip(&m.v_cm)
-        .filter(|(t, v)| **t < 0.0 && v.is_finite())
-        .map(|(_, v)| v.abs())
-        .fold(None, |a: Option<f64>, v| Some(a.map_or(v, |a| a.max(v))))?;
+    let fastest =
+        m.t.iter()
+            .zip(&m.v_cm)
+            .filter(|(t, v)| **t < 0.0 && v.is_finite())
+            .map(|(_, v)| v.abs())
+            .fold(None, |a: Option<f64>, v| Some(a.map_or(v, |a| a.max(v))))?;
     (r > 0.0).then(|| fastest * dt / r)
 }
 

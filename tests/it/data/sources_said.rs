@@ -36,10 +36,16 @@ fn data_groove_holds_only_what_the_file_states() {
         j["data_groove"].clone()
     };
     let g = groove(&only_r);
-    assert!((g["radius"].as_f64().unwrap() - 0.0275).abs() < 1e-12, "{g}");
+    assert!(
+        (g["radius"].as_f64().unwrap() - 0.0275).abs() < 1e-12,
+        "{g}"
+    );
     assert!(g["width"].is_null(), "{g}");
     let g = groove(&both);
-    assert!((g["radius"].as_f64().unwrap() - 0.0275).abs() < 1e-12, "{g}");
+    assert!(
+        (g["radius"].as_f64().unwrap() - 0.0275).abs() < 1e-12,
+        "{g}"
+    );
     assert!((g["width"].as_f64().unwrap() - 0.049).abs() < 1e-12, "{g}");
 }
 

@@ -188,7 +188,9 @@ fn a_line_fit_that_cannot_be_made_is_said_beside_the_headline() {
         noise: 0.0,
     };
     let path = csv("short-sliding.txt", &case.file(1));
-    let args = ["fit", "--radius", "2.75cm", "--width", "5.3cm", "--data", &path];
+    let args = [
+        "fit", "--radius", "2.75cm", "--width", "5.3cm", "--data", &path,
+    ];
     let (code, out, err) = run(&args);
     assert_eq!(code, 0, "{err}");
     let headline = out.lines().nth(1).unwrap_or_default();
@@ -214,5 +216,8 @@ fn a_line_fit_that_cannot_be_made_is_said_beside_the_headline() {
     // A window the user gave that holds too few points is still their input to fix.
     let (code, _, err) = run(&[&args[..], &["--from", "0.05", "--to", "0.06"]].concat());
     assert_eq!(code, 2);
-    assert!(err.starts_with("error: ") && err.contains("the window"), "{err}");
+    assert!(
+        err.starts_with("error: ") && err.contains("the window"),
+        "{err}"
+    );
 }
