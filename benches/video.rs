@@ -54,8 +54,8 @@ fn accuracy(film: &Film, frames: usize) -> (f64, f64, usize, usize) {
     )
 }
 
-/// Tracks the video at `path` as `groovelab track` does (both passes: the
-/// background's sample, then every frame), with no cache: its frames tracked.
+/// Tracks the video at `path` as `groovelab track` does (one decode: each frame
+/// learned into the background, then tracked), with no cache: its frames tracked.
 fn track(path: &Path) -> usize {
     let options = tracked::Options {
         radius: 0.0275,

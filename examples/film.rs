@@ -1,10 +1,16 @@
-//! Writes a short synthetic clip of the paper-b4.9 preset as a folder of numbered PNG
-//! frames (the test support's synthetic film, what the video tests track), for trying `--data FOLDER`
-//! and the app's video view (`V`) without a camera:
-//! `cargo run --example film -- /tmp/clip` then
+//! Writes a short synthetic clip of the paper-b4.9 preset (the test support's
+//! synthetic film, what the video tests track), for trying `--data FOLDER` and the
+//! app's video view (`V`) without a camera:
+//! `cargo run --example film -- /tmp/clip` writes the default look as a folder of
+//! numbered PNG frames, then
 //! `groovelab --data /tmp/clip --fps 100 --radius 2.75cm --width 4.9cm`.
+//! `cargo run --example film -- /tmp/look7 7` writes random look 7 of the looks table
+//! (full size; `7 small` for the small looks of `cargo test`) as `clip.mp4`, and says
+//! its rate, the truth's scale and the look in words, to watch the tracker on it:
+//! `groovelab track /tmp/look7/clip.mp4 --fps RATE --radius 2.75cm --overlay /tmp/look7/o.png`.
 
-use film::{Film, Look};
+use film::looks::{self, Size};
+use film::{Film, Look, h264};
 use groovelab::input::video::write;
 use groovelab::physics::scene::Scene;
 
@@ -13,14 +19,42 @@ use groovelab::physics::scene::Scene;
 mod film;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let dir = std::env::args_os()
-        .nth(1)
-        .ok_or("usage: film FOLDER (written: frame0001.png …)")?;
+    let mut args = std::env::args().skip(1);
+    let dir = args
+        .next()
+        .ok_or("usage: film FOLDER [SEED [small]] (written: frame0001.png … or clip.mp4)")?;
     let dir = std::path::PathBuf::from(dir);
     std::fs::create_dir_all(&dir)?;
     let preset = groovelab::input::preset::load("paper-b4.9")?;
     let lab = groovelab::lab::Lab::of_preset(preset)?;
     let scene: &Scene = &lab.scene;
+    if let Some(seed) = args.next() {
+        let seed: u64 = seed
+            .parse()
+            .map_err(|_| format!("error: SEED {seed:?}: a whole number expected"))?;
+        let size = match args.next().as_deref() {
+            Some("small") => Size::Small,
+            None | Some("full") => Size::Full,
+            Some(other) => return Err(format!("error: size {other:?}: small or full").into()),
+        };
+        let clip = looks::random(scene, seed, size);
+        let path = dir.join("clip.mp4");
+        h264::write(&path, &clip.film, clip.frames)?;
+        let l = &clip.film.look;
+        println!(
+            "{} frames in {} ({}×{}, {} frames/s, the first {:.3} s before the impact; truth: {:.2} px/m, R {:.2} px)\n{}",
+            clip.frames,
+            path.display(),
+            l.width,
+            l.height,
+            l.fps,
+            -l.from,
+            clip.film.px_per_m(),
+            scene.radius * clip.film.px_per_m(),
+            clip.name
+        );
+        return Ok(());
+    }
     // 640×360 at 1000 px/m, 100 frames/s from 0.15 s before the impact.
     let look = Look {
         width: 640,

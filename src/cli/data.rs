@@ -227,11 +227,22 @@ pub fn describe(shown: &DataReport) -> String {
         .map_or("no frame rate (too few times)".to_string(), |f| {
             format!("{} frames/s", significant(f, 4))
         });
+    // Found frames counted against the span's frames at its rate ("11 of 58 frames
+    // at 60 frames/s"), never as a rate of their own.
+    let of = if r.frames_spanned > r.frames {
+        format!(" of {}", r.frames_spanned)
+    } else {
+        String::new()
+    };
     let _ = writeln!(
         s,
-        "  {} frame{} at {rate}, t = {} … {} s",
+        "  {}{of} frame{} at {rate}, t = {} … {} s",
         r.frames,
-        if r.frames == 1 { "" } else { "s" },
+        if r.frames == 1 && of.is_empty() {
+            ""
+        } else {
+            "s"
+        },
         significant(r.t_first, 4),
         significant(r.t_last, 4)
     );
@@ -248,20 +259,27 @@ pub fn describe(shown: &DataReport) -> String {
         let _ = writeln!(s, "  {} in {}: {}", u.quantity, u.unit, u.how);
     }
     s += &missing_line(&r.missing);
+    // In the file's own length unit where it is in doubt: "units", "units/s".
+    let own = r.length_unit_doubt.is_some();
+    let speed_unit = if own { "units/s" } else { "m/s" };
     if let Some(sc) = r.scatter {
         let _ = writeln!(
             s,
             "  scatter of a position ≈ {}",
-            show_small(sc, Dimension::Length)
+            if own {
+                format!("{} units", significant(sc, 3))
+            } else {
+                show_small(sc, Dimension::Length).to_string()
+            }
         );
     }
     match (r.approach_speed, r.approach_speed_se, r.speed) {
         (Some(v), Some(se), _) => {
             let (v, e) = crate::settings::units::with_uncertainty(v, se, 3);
-            let _ = writeln!(s, "  approach speed {v} ± {e} m/s");
+            let _ = writeln!(s, "  approach speed {v} ± {e} {speed_unit}");
         }
         (Some(v), None, _) => {
-            let _ = writeln!(s, "  approach speed {} m/s", significant(v, 3));
+            let _ = writeln!(s, "  approach speed {} {speed_unit}", significant(v, 3));
         }
         (None, _, Some(v)) if r.kind == "velocities" => {
             let _ = writeln!(s, "  |v_cm| up to {} m/s", significant(v, 3));
@@ -269,11 +287,17 @@ pub fn describe(shown: &DataReport) -> String {
         (None, _, Some(v)) => {
             let _ = writeln!(
                 s,
-                "  speed between frames up to about {} m/s",
+                "  speed between frames up to about {} {speed_unit}",
                 significant(v, 3)
             );
         }
         _ => {}
+    }
+    if let Some(doubt) = &r.length_unit_doubt {
+        let _ = writeln!(
+            s,
+            "  lengths shown in the file's own unit (\"units\"), as nothing says what it is: {doubt}"
+        );
     }
     let _ = writeln!(s, "  {}", r.impact_note);
     s += &scene_line(&shown.scene_values, &shown.header_values);

@@ -8,12 +8,12 @@ use std::sync::Arc;
 use super::args::{DataArgs, SceneArgs, TrackRole};
 use super::error::{BadValue, CliError, Flag};
 use crate::input::data::Reading;
-use crate::lab::{Groove, Lab, Layers, OwnData};
+use crate::lab::{Groove, Lab, Layers, OwnData, Unfit};
 use crate::physics::scene::{Scene, Span};
 use crate::settings::params::Key;
 use crate::settings::spec::SceneSpec;
 use crate::settings::units::{Dimension, show};
-use crate::study::measured::{Derive, Found, Series};
+use crate::study::measured::{Derive, Found, RawSeries, Series, in_file_time};
 use crate::study::preset::{self, Preset};
 use crate::tui::app::{App, Library, Status};
 
@@ -193,6 +193,7 @@ pub fn reading_of(args: &DataArgs) -> Result<(Reading, Derive), CliError> {
         impact_at: args.impact_at,
         centre: named(TrackRole::Centre),
         mark: named(TrackRole::Mark),
+        own_lengths: false,
     };
     if let Some(w) = args.window
         && !(w > 0.0 && w <= 1.0)
@@ -328,11 +329,30 @@ fn video_work(
             Err(e) => return Some(Err(Arc::new(e) as _)),
         };
         let read = || -> Result<crate::tui::jobs::TrackedVideo, CliError> {
-            let texts = [(path.display().to_string(), kept.text.clone())];
-            let loaded = series_of(&texts, &data)?;
-            let joined = join(&scene_args, &data, &scene_args.settings()?, Some(loaded))?;
+            let file = path.display().to_string();
+            let texts = [(file.clone(), kept.text.clone())];
+            let joined = series_of(&texts, &data)
+                .and_then(|loaded| join(&scene_args, &data, &scene_args.settings()?, Some(loaded)));
+            let (joined, unfit) = match joined {
+                Ok(joined) => (joined, None),
+                // Tracks that no fit can use (no impact in the clip): shown without.
+                Err(e) => {
+                    // Its tracks are in metres: the scale went into the tracking.
+                    let (mut reading, _) = reading_of(&data)?;
+                    reading.scale = None;
+                    let unfit = unfit_of(&file, &kept.text, &reading, e)?;
+                    let none = Joined {
+                        own: None,
+                        from_data: None,
+                        file_keys: Vec::new(),
+                        scene_file: None,
+                    };
+                    (none, Some(unfit))
+                }
+            };
             Ok(crate::tui::jobs::TrackedVideo {
-                own: joined.own.expect("a series was loaded"),
+                own: joined.own,
+                unfit,
                 from_data: joined.from_data,
                 file_keys: joined.file_keys,
                 scene_file: joined.scene_file,
@@ -440,7 +460,17 @@ pub fn opened_tracking(
 /// The app as it opens on the options: the lab, and the status line asking for the
 /// data's scene when none was named ([`scene_of_data`]).
 pub fn opened(scene_args: &SceneArgs, data: &DataArgs, library: Library) -> Result<App, CliError> {
-    let mut app = App::new(lab(scene_args, data)?, library);
+    let (lab, unfit) = match lab(scene_args, data) {
+        Ok(lab) => (lab, None),
+        // Data that `groovelab data` reads but no fit can use: the app opens on the
+        // scene without them, shows what it can and says why there is no fit.
+        Err(e) => {
+            let unfit = unfit(scene_args, data, e)?;
+            let lab = lab(scene_args, &DataArgs::default())?.with_unfit(unfit.clone());
+            (lab, Some(unfit))
+        }
+    };
+    let mut app = App::new(lab, library);
     // A video's tracks were read (and kept) with the lab: its pictures too.
     if let [path] = data.data.as_slice()
         && super::video_data::is_video(path)
@@ -450,7 +480,17 @@ pub fn opened(scene_args: &SceneArgs, data: &DataArgs, library: Library) -> Resu
         app.set_video(path.display().to_string(), kept.and_then(|k| k.view));
         app.set_video_tracker(video_tracker(scene_args, data, options));
     }
-    if scene_of_data(scene_args, data).is_some() {
+    if let Some(u) = unfit {
+        app.status = Status::Error(format!(
+            "{}: no fit (f says why{})",
+            short_name(&u.name),
+            if u.in_file_time.is_some() {
+                "; d shows its rows"
+            } else {
+                ""
+            }
+        ));
+    } else if scene_of_data(scene_args, data).is_some() {
         // Short enough for the status line's second row at 80 columns: the file and
         // the preset are named at the line's right end.
         let s = &app.lab.scene;
@@ -471,4 +511,69 @@ pub fn opened(scene_args: &SceneArgs, data: &DataArgs, library: Library) -> Resu
 pub fn scene_of_data<'a>(scene_args: &SceneArgs, data: &'a DataArgs) -> Option<&'a Path> {
     let path = data.data.first()?;
     (!scene_args.names_a_scene()).then_some(path.as_path())
+}
+
+/// Data that `groovelab data` reads but no fit can use (no impact found, too few
+/// frames on a side of it, a unit in doubt): what the app shows of them, with
+/// `error` (the fit's refusal) as why. `error` itself where it is not the data's, or
+/// `data` cannot read them either (and for a video or two files, which keep their
+/// own paths).
+fn unfit(scene_args: &SceneArgs, data: &DataArgs, error: CliError) -> Result<Unfit, CliError> {
+    let [path] = data.data.as_slice() else {
+        return Err(error);
+    };
+    if !matches!(error, CliError::Data(_) | CliError::Implausible { .. }) {
+        return Err(error);
+    }
+    let (mut reading, _) = reading_of(data)?;
+    let text = if super::video_data::is_video(path) {
+        // Its tracks (kept from the tracking that just read them) are in metres.
+        reading.scale = None;
+        super::video_data::text(path, scene_args, data)
+    } else {
+        crate::input::read_user_file(
+            path,
+            crate::input::FileRole::DataOption,
+            crate::input::MAX_FILE_BYTES,
+        )
+        .map_err(CliError::from)
+    };
+    let Ok(text) = text else {
+        return Err(error);
+    };
+    unfit_of(&path.display().to_string(), &text, &reading, error)
+}
+
+/// [`unfit`] of the text `text` of file `file` (a data file, or a video's tracks)
+/// read as `reading` says.
+fn unfit_of(file: &str, text: &str, reading: &Reading, error: CliError) -> Result<Unfit, CliError> {
+    let file = file.to_string();
+    let (reading, derive) = (reading.clone(), Derive::default());
+    if crate::input::data::inspect(text, &file, &reading, &derive).is_err() {
+        return Err(error);
+    }
+    // The centre's v_cm in the file's own time, where its lengths are metres (a
+    // file whose unit is in doubt is not read at all: its table alone is shown).
+    let in_file_time = match crate::input::data::read(text, &file, &reading) {
+        Ok(RawSeries::Positions(track)) => in_file_time(&track).map(Arc::new),
+        _ => None,
+    };
+    // The Fit view names the file first: its name is not said twice.
+    let why = error.to_string();
+    let why = why
+        .strip_prefix(&format!("{file}: "))
+        .map_or(why.clone(), str::to_string);
+    Ok(Unfit {
+        name: file,
+        why,
+        in_file_time,
+    })
+}
+
+/// A path's last part, for the status line (its whole path is in the Fit view).
+fn short_name(name: &str) -> &str {
+    Path::new(name)
+        .file_name()
+        .and_then(|n| n.to_str())
+        .unwrap_or(name)
 }

@@ -15,7 +15,9 @@ use crate::physics::scene::Scene;
 use crate::settings::params::Key;
 use crate::settings::spec::{SceneError, SceneSpec};
 use crate::settings::units::{Dimension, show};
-use crate::study::measured::Series;
+use std::sync::Arc;
+
+use crate::study::measured::{Measured, Series};
 use crate::study::preset::Preset;
 
 /// A measured series of the user's own (`--data`), kept when another preset is
@@ -42,6 +44,21 @@ impl OwnData {
             )
         })
     }
+}
+
+/// The user's data that can be read and shown but not fitted (no impact found, too
+/// few frames on a side of it, a unit in doubt): the app opens with them rather than
+/// refusing, shows what it can (the table, the centre's v_cm in the file's own time)
+/// and says why there is no fit and what to give.
+#[derive(Clone, Debug)]
+pub struct Unfit {
+    /// The file(s), as the user named them.
+    pub name: String,
+    /// Why there is no fit, with what to give: the line the fit's refusal says.
+    pub why: String,
+    /// The centre's velocities in the file's own time (`measured::in_file_time`);
+    /// `None` where the file's lengths are not known to be metres, or it is too short.
+    pub in_file_time: Option<Arc<Measured>>,
 }
 
 /// A groove's geometry, m: the balls' radius R and the groove's width b (what a

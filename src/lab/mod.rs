@@ -27,7 +27,7 @@ use crate::study::measured::Series;
 use crate::study::preset::Preset;
 
 pub use data::{
-    Contradiction, Groove, InUse, OtherGroove, OwnData, Whose, approach, measured_values,
+    Contradiction, Groove, InUse, OtherGroove, OwnData, Unfit, Whose, approach, measured_values,
 };
 pub use origin::Origin;
 pub use resolved::{ChartPoint, MeasuredPoints, Pinned, Resolved, Story, differences, value_range};
@@ -56,6 +56,8 @@ pub struct Lab {
     /// The data in use by the rule of `data::in_use`, shared by every snapshot built
     /// from it.
     in_use: Option<InUse>,
+    /// The user's data that could be read but not fitted, shown without a fit.
+    unfit: Option<Unfit>,
     /// The run pinned for an A/B comparison.
     pub pinned: Option<Pinned>,
     /// The current snapshot, built from the layers by [`Resolved::build`].
@@ -78,12 +80,13 @@ impl Lab {
     /// The lab on its settings, with the user's own series (`--data`) in place of the
     /// preset's, if any.
     pub fn new(settings: Layers, own_data: Option<OwnData>) -> Result<Lab, SceneError> {
-        let in_use = choose(&settings, own_data.as_ref())?;
+        let in_use = choose(&settings, own_data.as_ref(), None)?;
         let now = Arc::new(Resolved::build(&settings, in_use.as_ref(), None)?);
         Ok(Lab {
             settings,
             own_data,
             in_use,
+            unfit: None,
             pinned: None,
             now,
             generation: 0,
@@ -93,6 +96,30 @@ impl Lab {
     /// The lab on a preset as it is (no flags, no data of the user's).
     pub fn of_preset(preset: Preset) -> Result<Lab, SceneError> {
         Lab::new(Layers::new(preset, SceneSpec::default()), None)
+    }
+
+    /// The lab with the user's data that could be read but not fitted (`--data` of a
+    /// track with no impact): shown in the file's own time, with no fit.
+    pub fn with_unfit(mut self, unfit: Unfit) -> Lab {
+        // They are the user's data: the preset's are not shown beside them.
+        self.set_unfit(unfit);
+        self
+    }
+
+    /// The user's data without a fit arriving after the lab opened (a video tracked
+    /// on a worker whose clip shows no impact): as [`Lab::with_unfit`].
+    pub fn set_unfit(&mut self, unfit: Unfit) {
+        self.unfit = Some(unfit);
+        self.rebuild()
+            .expect("data without a fit change nothing the scene depends on");
+    }
+
+    /// The user's data shown without a fit, unless dropped or replaced by data of
+    /// their own that can be fitted.
+    pub fn unfit(&self) -> Option<&Unfit> {
+        self.unfit
+            .as_ref()
+            .filter(|_| self.own_data.is_none() && !self.settings.data_dropped())
     }
 
     /// The current snapshot, shared (a job or a view cache keeps it whole).
@@ -224,7 +251,11 @@ impl Lab {
     /// preset's data are shown while the groove is the preset's, else none (see
     /// `data::in_use`). The dropped series' name, if there was one.
     pub fn drop_data(&mut self) -> Option<String> {
-        let name = self.own_data()?.name.clone();
+        let name = match (self.own_data(), self.unfit()) {
+            (Some(own), _) => own.name.clone(),
+            (None, Some(unfit)) => unfit.name.clone(),
+            (None, None) => return None,
+        };
         self.edit(Edit::DropData)
             .expect("dropping the data leaves a valid scene");
         Some(name)
@@ -290,14 +321,15 @@ impl Lab {
     /// Builds the snapshot of the layers, the series in use and the pin; its
     /// generation moves on only if the scene, its span or its data changed.
     fn rebuild(&mut self) -> Result<(), SceneError> {
-        let chosen = choose(&self.settings, self.own_data.as_ref())?;
+        let chosen = choose(&self.settings, self.own_data.as_ref(), self.unfit())?;
         let same = data::same_data(chosen.as_ref(), self.in_use.as_ref());
         let in_use = if same {
             self.in_use.as_ref()
         } else {
             chosen.as_ref()
         };
-        let now = Resolved::build(&self.settings, in_use, self.pinned.as_ref())?;
+        let mut now = Resolved::build(&self.settings, in_use, self.pinned.as_ref())?;
+        now.show_in_file_time(self.unfit());
         let moved = now.scene != self.now.scene || now.span != self.now.span || !same;
         if !same {
             self.in_use = chosen;
@@ -327,10 +359,19 @@ impl Lab {
     }
 }
 
-/// The data the layers' scene shows, by the rule of `data::in_use`; an error if its
+/// The data the layers' scene shows, by the rule of `data::in_use` (none beside the
+/// user's data without a fit); an error if its
 /// R would put their rim mark off the ball.
-fn choose(settings: &Layers, own: Option<&OwnData>) -> Result<Option<InUse>, SceneError> {
+fn choose(
+    settings: &Layers,
+    own: Option<&OwnData>,
+    unfit: Option<&Unfit>,
+) -> Result<Option<InUse>, SceneError> {
     let (scene, _, _) = settings.settle()?;
+    // The user's data without a fit stand in for their own: not the preset's.
+    if unfit.is_some() {
+        return Ok(None);
+    }
     let in_use = data::in_use(
         own,
         settings.data_dropped(),

@@ -135,6 +135,22 @@ impl Resolved {
         })
     }
 
+    /// Without measured data in use, the unfitted data's points in the file's own
+    /// time (no impact aligns them with the model's).
+    pub(super) fn show_in_file_time(&mut self, unfit: Option<&super::Unfit>) {
+        if self.data.is_some() {
+            return;
+        }
+        self.points = unfit.and_then(|u| u.in_file_time.as_ref()).map(|m| {
+            let mut points = MeasuredPoints::of(m, None);
+            points.v_t = Arc::from(Vec::new());
+            points.v_t_bars = None;
+            points.ranges = points.series().map(|s| value_range(s)).collect();
+            points.in_file_time = true;
+            Arc::new(points)
+        });
+    }
+
     /// The measured series in this scene.
     pub fn measured(&self) -> Option<&Measured> {
         self.data.as_ref().map(|d| &*d.measured)
@@ -176,6 +192,9 @@ pub struct MeasuredPoints {
     pub x: Option<Arc<[ChartPoint]>>,
     /// Each series' [`value_range`], in the order of [`MeasuredPoints::series`].
     ranges: Vec<Option<(f64, f64)>>,
+    /// The points are in the file's own time, not aligned with the model's (no
+    /// impact was found to align them: `super::Unfit`).
+    pub in_file_time: bool,
 }
 
 impl MeasuredPoints {
@@ -196,6 +215,7 @@ impl MeasuredPoints {
                     .collect()
             }),
             ranges: Vec::new(),
+            in_file_time: false,
         };
         points.ranges = points.series().map(|s| value_range(s)).collect();
         points

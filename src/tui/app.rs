@@ -16,11 +16,11 @@ mod stops;
 mod video;
 
 use std::path::PathBuf;
-use std::sync::{Arc, LazyLock};
+use std::sync::Arc;
 
 use crate::lab::Lab;
 use crate::lab::jobs::Pool;
-use crate::settings::params::{Key, PARAMS, Param};
+use crate::settings::params::Key;
 use crate::settings::spec::SceneError;
 use crate::settings::units::{Dimension, show};
 
@@ -37,9 +37,7 @@ use super::vocabulary::{DEFAULT_SPEED, Handled};
 use ratatui::crossterm::event::MouseEvent;
 use ratatui::layout::Rect;
 
-/// The rows of the parameters panel, top to bottom: the table's rows that have steps.
-pub static ROWS: LazyLock<Vec<&'static Param>> =
-    LazyLock::new(|| PARAMS.iter().filter(|p| p.steps.is_some()).collect());
+pub use super::layer::main::params::ROWS;
 
 /// The app: the lab, the layers (the main screen's views, the popups open over them)
 /// and the jobs; playback, the parameter selected and the status line. The lab, the time, playing and the status line
@@ -52,7 +50,6 @@ pub struct App {
     pub t: f64,
     pub playing: bool,
     speed: usize,
-    selected: usize,
     /// The main screen's views at the bottom, the popups open over them, top last:
     /// they take input first.
     layers: Compositor,
@@ -94,7 +91,6 @@ impl App {
             lab,
             playing: false,
             speed: DEFAULT_SPEED,
-            selected: 1,
             layers: Compositor::default(),
             mouse: true,
             status: Status::None,

@@ -60,7 +60,10 @@ impl ExportRun {
 /// Scene panel draws.
 #[derive(Clone, Debug)]
 pub struct TrackedVideo {
-    pub own: OwnData,
+    /// The tracks as the lab's data; `None` where no fit can use them (`unfit`).
+    pub own: Option<OwnData>,
+    /// Tracks `data` reads but no fit can use (no impact in the clip).
+    pub unfit: Option<crate::lab::Unfit>,
     pub from_data: Option<SceneSpec>,
     pub file_keys: Vec<crate::settings::params::Key>,
     pub scene_file: Option<String>,

@@ -248,6 +248,13 @@ pub enum Then {
     ToggleGivens,
     /// Open the Fit view's models (`M`, asked by the Fit view).
     OpenModels,
+    /// One step (fine or `coarse`) of the parameter `key`, up or down (asked by the
+    /// parameters panel for its row).
+    Step {
+        key: crate::settings::params::Key,
+        up: bool,
+        coarse: bool,
+    },
 }
 
 /// Which prompt text is typed into: a value, a preset's name, an export's file name.

@@ -117,6 +117,11 @@ impl Learner {
 
     /// The background, `None` before any frame.
     pub fn finish(self) -> Option<Background> {
+        self.background()
+    }
+
+    /// The background of the frames offered so far, `None` before any frame.
+    pub fn background(&self) -> Option<Background> {
         let first = self.kept.first()?;
         let (w, h, f) = (first.width, first.height, first.factor);
         let n = w * h;

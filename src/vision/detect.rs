@@ -81,9 +81,15 @@ pub fn coarse(img: &Gray, min_radius: f64) -> Coarse {
 /// Looks at the coarse frame `small` for what differs from the background `bg` in
 /// brightness or colour (not shadows), inside `params.roi`.
 pub fn against(small: &Small, bg: &Background, params: &Params) -> Coarse {
-    let (w, h, f) = (small.width, small.height, small.factor);
     let (d, _) = differences(small, &bg.image, params);
     let thr = threshold(&d, params);
+    against_differences(small, &d, thr, params)
+}
+
+/// As [`against`], from the coarse frame's differences `d` from the background
+/// and their threshold `thr` (`background::differences`, `background::threshold`).
+pub fn against_differences(small: &Small, d: &[f32], thr: f32, params: &Params) -> Coarse {
+    let (w, h, f) = (small.width, small.height, small.factor);
     let mut mask: Vec<bool> = d.iter().map(|&v| v > thr).collect();
     if let Some(roi) = params.roi {
         for (i, m) in mask.iter_mut().enumerate() {

@@ -6,9 +6,10 @@
 //! two balls touch (at an impact their outlines merge), or when its outline is poor
 //! (blurred, or too little of it visible); nothing is filled in.
 
-use super::background::{Background, Learner, Small};
+use super::background::{Background, Learner, Small, differences, threshold};
 use super::circle::{self, Circle, Outline};
 use super::detect;
+use super::detect::Blob;
 use super::frame::Frame;
 use super::gray::Gray;
 use super::mark::{self, Mark};
@@ -51,7 +52,9 @@ pub struct Counts {
 /// last fits and every frame's result.
 ///
 /// Use: [`Tracker::learn`] every frame of the clip (or a sample, in order), then
-/// [`Tracker::push`] every frame; or [`track`] for frames in memory. Frames pushed
+/// [`Tracker::push`] every frame; or learn each frame as it comes and push it some
+/// frames later (one pass: the background is learned anew as it learns more); or
+/// [`track`] for frames in memory. Frames pushed
 /// with nothing learned are looked at against a smooth surface of luma instead.
 #[derive(Clone, Debug, Default)]
 pub struct Tracker {
@@ -68,6 +71,8 @@ pub struct Tracker {
     seeded: bool,
     learner: Option<Learner>,
     background: Option<Background>,
+    /// Frames the learner had seen when `background` was last learned.
+    learned_at: usize,
     /// Marks found darker and lighter than their ball, before the sign is settled.
     mark_votes: [usize; 2],
 }
@@ -78,6 +83,35 @@ struct OutlineFound {
     /// In colour (the ball of the wall's brightness), not in brightness.
     colour: bool,
     polarity: f64,
+}
+
+/// Least share of a luma blob's upper half that differs from the background for the
+/// blob to be taken as a ball (a ball that moved; a still disc of the bench gives
+/// about none, a ball about a half or more).
+const MOVED_SHARE: f64 = 0.15;
+
+/// The share of the coarse pixels in the upper half of `blob` (above the rail) whose
+/// difference `d` from the background is over half the threshold `thr`.
+fn differing_share(d: &[f32], thr: f32, small: &Small, blob: &Blob) -> f64 {
+    let f = small.factor.max(1) as f64;
+    let g = blob.guess();
+    let x0 = (blob.left / f).floor().max(0.0) as usize;
+    let x1 = ((blob.right / f).ceil() as usize).min(small.width);
+    let y0 = (blob.top / f).floor().max(0.0) as usize;
+    let y1 = ((g.y / f).ceil() as usize).min(small.height);
+    let (mut hit, mut n) = (0usize, 0usize);
+    for y in y0..y1 {
+        for x in x0..x1 {
+            if let Some(&v) = d.get(y * small.width + x) {
+                n += 1;
+                hit += usize::from(v > 0.5 * thr);
+            }
+        }
+    }
+    if n == 0 {
+        return 0.0;
+    }
+    hit as f64 / n as f64
 }
 
 /// Marks looked at before their sign (darker or lighter than the ball) is settled.
@@ -139,7 +173,35 @@ impl Tracker {
         }
         let mut crowded = coarse.balls.len() > 2;
         if let Some(bg) = &self.background {
-            let more = detect::against(&Small::of(frame, bg.image.factor), bg, &p);
+            let small = Small::of(frame, bg.image.factor);
+            let (d, _) = differences(&small, &bg.image, &p);
+            let thr = threshold(&d, &p);
+            let more = detect::against_differences(&small, &d, thr, &p);
+            // What the luma look sees but does not differ from the background is the
+            // bench (a disc of clutter, a stripe's end, a checker's square), unless
+            // it lies on the line of a ball that moves, at its size: a ball at rest
+            // where the background learned it (a target waiting for the impact).
+            let moving: Vec<Circle> = coarse
+                .balls
+                .iter()
+                .filter(|b| differing_share(&d, thr, &small, b) >= MOVED_SHARE)
+                .chain(&more.balls)
+                .map(Blob::guess)
+                .chain(self.last.iter().filter_map(|l| l.last().map(|(_, c)| *c)))
+                .collect();
+            let on_line = |b: &Blob| {
+                let g = b.guess();
+                moving
+                    .iter()
+                    .any(|m| (g.y - m.y).abs() < 0.5 * m.r && (g.r - m.r).abs() < 0.35 * m.r)
+            };
+            coarse
+                .balls
+                .retain(|b| differing_share(&d, thr, &small, b) >= MOVED_SHARE || on_line(b));
+            coarse
+                .pairs
+                .retain(|b| differing_share(&d, thr, &small, b) >= MOVED_SHARE);
+            crowded = coarse.balls.len() > 2;
             crowded |= more.balls.len() > 2;
             coarse.balls.extend(more.balls);
             coarse.pairs.extend(more.pairs);
@@ -150,12 +212,23 @@ impl Tracker {
         coarse
     }
 
+    /// The background learned anew when the learner has seen enough frames more
+    /// than when it was last learned (a quarter more, at least 32): frames learned
+    /// while frames are pushed (one pass over a long clip, the learner running ahead
+    /// of the tracker) keep improving it; all learned first, it is learned once.
+    fn relearn(&mut self) {
+        let Some(l) = &self.learner else { return };
+        let seen = l.seen();
+        let due = self.learned_at + (self.learned_at / 4).max(32);
+        if seen > 0 && (self.background.is_none() || seen >= due) {
+            self.background = l.background();
+            self.learned_at = seen;
+        }
+    }
+
     /// Tracks one more frame.
     pub fn push(&mut self, frame: &Frame) {
-        if self.learner.as_ref().is_some_and(|l| l.seen() > 0) {
-            self.background = self.learner.take().and_then(Learner::finish);
-        }
-        self.learner = None;
+        self.relearn();
         let img = &frame.luma;
         let k = self.frames.len();
         self.counts.frames += 1;
@@ -354,8 +427,17 @@ impl Tracker {
         let r_ok = self
             .radius()
             .is_none_or(|r| (c.r - r).abs() < p.radius_tolerance * r);
+        // A ghost (where the background learned a ball that is not there now) or a
+        // circle fitted to the wall's own pattern: nothing inside differs from
+        // around it. Not a ball, and no poor outline of one either.
+        if stands_out(frame, &o.outline.circle, p.colour_weight) < p.differ_levels {
+            return Err(LeftOut::Unseen);
+        }
+        // The colour planes are half size, brought to full size bilinearly: their
+        // edge points scatter about twice as far as the brightness edge's.
+        let max_rms = if o.colour { 2.0 * p.max_rms } else { p.max_rms };
         if o.outline.coverage < p.min_coverage
-            || o.outline.rms > p.max_rms
+            || o.outline.rms > max_rms
             || !r_ok
             || c.r < p.min_radius
             || p.roi.is_some_and(|roi| !roi.contains(c.x, c.y))
@@ -484,17 +566,15 @@ impl Tracker {
         let mut it = fits.into_iter();
         match (it.next(), it.next()) {
             (None, _) => Vec::new(),
+            // Both seen (sorted left to right): slot 0 is the left ball, always. Two
+            // balls in one groove never pass each other, so the order in the picture
+            // is who is who (a slot kept from an earlier, wrong lock would swap them).
+            (Some(a @ Ok(_)), Some(b @ Ok(_))) => vec![(0, a), (1, b)],
             (Some(a), Some(b)) => {
-                // Both seen: the slots' left-to-right order, once known, is kept.
-                let swapped = match (p0, p1) {
-                    (Some(a), Some(b)) => a.x > b.x,
-                    _ => false,
-                };
-                if swapped {
-                    vec![(1, a), (0, b)]
-                } else {
-                    vec![(0, a), (1, b)]
-                }
+                let mut out = self.assign(vec![a]);
+                let other = out.first().map_or(1, |(s, _)| 1 - s);
+                out.push((other, b));
+                out
             }
             (Some(fit), None) => {
                 let x = match &fit {
@@ -566,6 +646,58 @@ fn seed_fit(img: &Gray, at: (f64, f64), min_radius: f64) -> Option<Circle> {
         y: cy,
         r: r2.sqrt(),
     })
+}
+
+/// How much the upper half of the disc `c` differs from a ring around it above its
+/// centre (the rail hides the lower half), in `frame` itself, levels: the larger of
+/// the mean brightness difference and the weighted mean colour differences (as
+/// `background::differences` weighs them, by `colour_weight`). A ball differs from the wall around it
+/// in brightness or colour; a ghost of the background or a circle fitted to a
+/// textured wall does not, on average.
+fn stands_out(frame: &Frame, c: &Circle, colour_weight: f64) -> f64 {
+    let (mut inner, mut outer) = ([0.0f64; 4], [0.0f64; 4]);
+    let step = (c.r / 8.0).max(1.0);
+    let reach = 1.6 * c.r;
+    let (w, h) = (frame.width() as f64, frame.height() as f64);
+    let mut dy = -reach;
+    while dy < 0.0 {
+        let mut dx = -reach;
+        while dx <= reach {
+            let (x, y) = (c.x + dx, c.y + dy);
+            let d = dx.hypot(dy);
+            let sum = if d < 0.8 * c.r {
+                Some(&mut inner)
+            } else if d > 1.2 * c.r && d < reach {
+                Some(&mut outer)
+            } else {
+                None
+            };
+            if let Some(sum) = sum
+                && x >= 0.0
+                && y >= 0.0
+                && x < w
+                && y < h
+            {
+                let (ix, iy) = (x as usize, y as usize);
+                let ci = (iy / 2) * frame.chroma_width + ix / 2;
+                sum[0] += f64::from(frame.luma.get(ix, iy));
+                sum[1] += frame.u.get(ci).map_or(128.0, |&v| f64::from(v));
+                sum[2] += frame.v.get(ci).map_or(128.0, |&v| f64::from(v));
+                sum[3] += 1.0;
+            }
+            dx += step;
+        }
+        dy += step;
+    }
+    if inner[3] < 1.0 || outer[3] < 1.0 {
+        // Too little of it in the picture to tell: not ruled out here.
+        return f64::INFINITY;
+    }
+    let mean = |s: &[f64; 4], i: usize| s.get(i).copied().unwrap_or(0.0) / s[3];
+    let dl = (mean(&inner, 0) - mean(&outer, 0)).abs();
+    let du = (mean(&inner, 1) - mean(&outer, 1)).abs();
+    let dv = (mean(&inner, 2) - mean(&outer, 2)).abs();
+    dl.max(colour_weight * du.max(dv))
 }
 
 /// A slot's circle extrapolated to frame `k` from its last two fits.

@@ -7,7 +7,7 @@
 
 use serde::Serialize;
 
-use super::tracker::{LeftOut, Tracker, median};
+use super::tracker::{FrameFixes, LeftOut, Tracker, median};
 
 /// Why tracked frames give no tracks.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -25,6 +25,11 @@ pub enum TracksError {
         "more than two balls in {crowded} of {frames} frames, expected the two colliding balls (or one); {TRY}"
     )]
     TooMany { crowded: usize, frames: usize },
+    /// Neither ball found in a third of the frames.
+    #[error(
+        "tracking unsure: neither ball was found in a third of the frames (at most in {seen} of {frames}), so no tracks are given; {TRY}"
+    )]
+    Sparse { seen: usize, frames: usize },
     /// The fitted radii disagree: no scale is given from them.
     #[error(
         "tracking unsure: the balls' fitted radii scatter by {:.0} % about {median_px:.1} px (both balls have one radius), so no scale is given; {TRY}",
@@ -50,6 +55,9 @@ const TRY: &str = "try --roi X,Y,W,H (pixels) around the groove, --ball-at X,Y o
 /// gives a scale: a sharp ball's radius scatters by under 1 %, a blurred one's by a
 /// few; both balls have one radius.
 const MAX_RADIUS_SPREAD: f64 = 0.05;
+
+/// A ball must be found in at least one in this many frames for tracks to be given.
+const SPARSEST: usize = 3;
 
 /// Fewest frames a ball must be seen in to be one (not a passing blob).
 const FEWEST_SEEN: usize = 3;
@@ -125,30 +133,9 @@ pub fn tracks(
     radius: f64,
     scale: Option<f64>,
 ) -> Result<Tracks, TracksError> {
-    let c = &tracker.counts;
-    if c.crowded * 2 > c.frames {
-        return Err(TracksError::TooMany {
-            crowded: c.crowded,
-            frames: c.frames,
-        });
-    }
-    // A slot seen in too few frames is a passing blob, not a ball.
-    let seen = |s: usize| tracker.frames.iter().filter(|f| f[s].is_ok()).count();
-    let enough = (tracker.frames.len() / 10).max(FEWEST_SEEN);
-    if c.frames < FEWEST_SEEN {
-        return Err(TracksError::TooFewFrames {
-            frames: c.frames,
-            need: FEWEST_SEEN,
-        });
-    }
-    let mut slots: Vec<usize> = (0..2).filter(|&s| seen(s) >= enough).collect();
-    if slots.is_empty() {
-        return Err(TracksError::NoBall {
-            frames: c.frames,
-            min_radius: tracker.params.min_radius,
-        });
-    }
-    let centres: Vec<Vec<[f64; 2]>> = (0..2).map(|s| centres_of(tracker, s)).collect();
+    let frames = &ordered(&tracker.frames);
+    let mut slots = balls_seen(tracker, frames)?;
+    let centres: Vec<Vec<[f64; 2]>> = (0..2).map(|s| centres_of(frames, s)).collect();
     let (angle, angle_se, found) =
         groove(&slots.iter().map(|&s| &centres[s][..]).collect::<Vec<_>>());
     let (u, n) = ((angle.cos(), angle.sin()), (angle.sin(), -angle.cos()));
@@ -210,13 +197,52 @@ pub fn tracks(
     let balls = slots
         .iter()
         .zip(names)
-        .map(|(&s, name)| ball_track(tracker, s, name, &to_m, px_per_m))
+        .map(|(&s, name)| ball_track(frames, s, name, &to_m, px_per_m))
         .collect();
     Ok(Tracks {
         t: times,
         balls,
         calibration,
     })
+}
+
+/// The slots that hold a ball (seen in enough frames), or why the frames give no
+/// tracks: crowded, too few, no ball, or the balls found too rarely.
+#[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
+fn balls_seen(tracker: &Tracker, frames: &[FrameFixes]) -> Result<Vec<usize>, TracksError> {
+    let c = &tracker.counts;
+    if c.crowded * 2 > c.frames {
+        return Err(TracksError::TooMany {
+            crowded: c.crowded,
+            frames: c.frames,
+        });
+    }
+    // A slot seen in too few frames is a passing blob, not a ball.
+    let seen = |s: usize| frames.iter().filter(|f| f[s].is_ok()).count();
+    let enough = (frames.len() / 10).max(FEWEST_SEEN);
+    if c.frames < FEWEST_SEEN {
+        return Err(TracksError::TooFewFrames {
+            frames: c.frames,
+            need: FEWEST_SEEN,
+        });
+    }
+    let slots: Vec<usize> = (0..2).filter(|&s| seen(s) >= enough).collect();
+    if slots.is_empty() {
+        return Err(TracksError::NoBall {
+            frames: c.frames,
+            min_radius: tracker.params.min_radius,
+        });
+    }
+    // A ball found in few of the frames: what was found may be something else (a
+    // mark, a highlight) in the frames where the ball itself was missed.
+    let best = slots.iter().map(|&s| seen(s)).max().unwrap_or(0);
+    if best * SPARSEST < c.frames {
+        return Err(TracksError::Sparse {
+            seen: best,
+            frames: c.frames,
+        });
+    }
+    Ok(slots)
 }
 
 /// How far `centres` scatter across the groove (whose normal is `n`), RMS px: a
@@ -250,10 +276,45 @@ fn names_of(
     vec![if moves >= 0.0 { "left" } else { "right" }]
 }
 
+/// The frames with each ball in its own slot, the left ball in slot 0: two balls in
+/// one groove never pass each other, so where both are seen their order in the
+/// picture says who is who; a frame with one ball seen gives it to the slot whose
+/// ball was nearest in the nearest frame with both seen (a slot kept by the tracker
+/// from a first, wrong lock would swap the balls for a stretch of frames).
 #[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
-fn centres_of(tracker: &Tracker, slot: usize) -> Vec<[f64; 2]> {
-    tracker
-        .frames
+pub fn ordered(frames: &[FrameFixes]) -> Vec<FrameFixes> {
+    let x = |f: &Result<super::tracker::Fix, LeftOut>| f.as_ref().ok().map(|q| q.outline.circle.x);
+    let both: Vec<(usize, f64, f64)> = frames
+        .iter()
+        .enumerate()
+        .filter_map(|(k, f)| Some((k, x(&f[0])?, x(&f[1])?)))
+        .collect();
+    frames
+        .iter()
+        .enumerate()
+        .map(|(k, f)| {
+            let mut f = *f;
+            match (x(&f[0]), x(&f[1])) {
+                (Some(a), Some(b)) if a > b => f.swap(0, 1),
+                (Some(c), None) | (None, Some(c)) => {
+                    let near = both.iter().min_by_key(|(j, _, _)| j.abs_diff(k));
+                    if let Some(&(_, l, r)) = near {
+                        let slot = usize::from((c - r).abs() < (c - l).abs());
+                        if f[slot].is_err() {
+                            f.swap(0, 1);
+                        }
+                    }
+                }
+                _ => {}
+            }
+            f
+        })
+        .collect()
+}
+
+#[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
+fn centres_of(frames: &[FrameFixes], slot: usize) -> Vec<[f64; 2]> {
+    frames
         .iter()
         .filter_map(|f| f[slot].as_ref().ok())
         .map(|fix| [fix.outline.circle.x, fix.outline.circle.y])
@@ -294,7 +355,7 @@ fn groove(paths: &[&[[f64; 2]]]) -> (f64, f64, bool) {
 /// Slot `slot` of `tracker` as a [`BallTrack`] named `name`, through `to_m`.
 #[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
 fn ball_track(
-    tracker: &Tracker,
+    frames: &[FrameFixes],
     slot: usize,
     name: &'static str,
     to_m: &impl Fn(f64, f64) -> (f64, f64),
@@ -314,7 +375,7 @@ fn ball_track(
         mark_missing: 0,
     };
     let nan = f64::NAN;
-    for f in &tracker.frames {
+    for f in frames {
         let (x, y, s, mx, my, ms) = match &f[slot] {
             Ok(fix) => {
                 let c = fix.outline.circle;

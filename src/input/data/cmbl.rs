@@ -116,7 +116,8 @@ pub(super) fn read(text: &str, file: &str, reading: &Reading) -> Result<(Track, 
         .iter()
         .filter(|c| matches!(axis(c), Some(Axis::X | Axis::Y)))
         .all(|c| c.unit.is_empty());
-    if unscaled && reading.length_unit.is_none() && reading.scale.is_none() {
+    if unscaled && reading.length_unit.is_none() && reading.scale.is_none() && !reading.own_lengths
+    {
         return Err(err(DataProblem::Unscaled {
             set: name.clone(),
             scale: video_scale(root),

@@ -19,6 +19,11 @@ pub struct Reading {
     /// Which track (Tracker) or column prefix holds the ball's centre, e.g. "mass A"
     /// [default: a track named centre/center/ball, else the first].
     pub centre: Option<String>,
+    /// Keep a position file's lengths in its own unit, unchecked: `groovelab data` and
+    /// the app show a file whose length unit is in doubt (none stated and the numbers
+    /// not metres, or a video never scaled) in its own units rather than not at all;
+    /// nothing fits such a reading.
+    pub own_lengths: bool,
     /// Which track holds the mark on its rim, e.g. "mass B" [default: a track named
     /// mark/rim/spot, else the second; none: v_t is not measured].
     pub mark: Option<String>,

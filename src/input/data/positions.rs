@@ -21,7 +21,7 @@ use super::layout::{
 use super::notes::{Notes, UnitNote};
 use super::options::{MAX_ROWS, Reading};
 use super::problem::{DataError, DataProblem, RowError};
-use super::scales::{Given, LENGTHS, TIMES, check_track};
+use super::scales::{Given, LENGTHS, TIMES, check_track_as_read};
 use super::table::{Table, TableRow, missing, number};
 use crate::study::measured::Track;
 
@@ -121,7 +121,7 @@ pub(super) fn read_table(
         return Err(err(DataProblem::NoPosition { centre }));
     }
     let given = units.given(it, ix);
-    check_track(&track, &given).map_err(|e| err(e.into()))?;
+    check_track_as_read(&track, &given, reading.own_lengths).map_err(|e| err(e.into()))?;
     Ok((track, notes(format, names, &given)))
 }
 

@@ -40,8 +40,12 @@ pub struct Report {
     pub mark_distance: Option<f64>,
     /// Frames with a time (and, for a track, rows kept).
     pub frames: usize,
-    /// Frames per second, from the median spacing; `None` (JSON `null`) where fewer
-    /// than two distinct times give none.
+    /// The frames of the file's time span at its rate, found or not (a video's
+    /// frames: 11 found of 58 at 60 frames/s is `frames` 11 of `frames_spanned` 58).
+    pub frames_spanned: usize,
+    /// Frames per second, from the median spacing of every row's time (the clip's
+    /// rate, not the found frames'); `None` (JSON `null`) where fewer than two
+    /// distinct times give none.
     pub frame_rate: Option<f64>,
     /// First and last time of the file, s (a velocity file's with the impact at 0).
     pub t_first: f64,
@@ -63,6 +67,11 @@ pub struct Report {
     pub impacts: Vec<f64>,
     /// What was found about impacts, in words.
     pub impact_note: String,
+    /// The lengths are in the file's own unit, not known to be metres (none stated and
+    /// the numbers not metres, or a video never scaled): why, and what to give. Every
+    /// length and speed of the report is then in that unit (per s).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub length_unit_doubt: Option<String>,
 }
 
 impl Report {
@@ -94,6 +103,24 @@ pub fn inspect(
     derive: &Derive,
 ) -> Result<Report, DataError> {
     let (raw, notes) = match super::detect::read_with_notes(text, file, reading) {
+        // A length unit in doubt: the file in its own unit, with the doubt and the fix.
+        Err(e) if !reading.own_lengths && lengths_in_doubt(&e.what) => {
+            let own = Reading {
+                own_lengths: true,
+                ..reading.clone()
+            };
+            let mut report = inspect(text, file, &own, derive)?;
+            for u in &mut report.notes.units {
+                if u.quantity == "length" {
+                    u.unit = "the file's own unit".into();
+                    u.how = "not known to be metres (see below)".into();
+                }
+            }
+            // Its speeds, too, are in the file's unit per second.
+            report.impact_note = report.impact_note.replace(" m/s", " units/s");
+            report.length_unit_doubt = Some(e.what.to_string());
+            return Ok(report);
+        }
         Err(e) if e.what == DataProblem::NoImpact => {
             // A velocity file without an impact: what it holds all the same.
             let table = super::table::Table::new(text);
@@ -128,6 +155,22 @@ pub fn inspect(
     })
 }
 
+/// A problem that is only the lengths' unit: none stated and the numbers not metres,
+/// or a Logger Pro video never scaled.
+fn lengths_in_doubt(what: &DataProblem) -> bool {
+    match what {
+        // Only where nobody stated the unit: a unit stated and implausible is an error.
+        DataProblem::Scale(e) => matches!(
+            e,
+            super::scales::ScaleError::LengthsNotMetres { .. }
+                | super::scales::ScaleError::TooSlow { by: None, .. }
+        ),
+        DataProblem::Unscaled { .. } => true,
+        DataProblem::InDataSet { problem, .. } => lengths_in_doubt(problem),
+        _ => false,
+    }
+}
+
 /// The report of a velocity file with no impact in it: a single ball's velocities.
 fn single_ball(m: crate::study::measured::Measured, file: &str, notes: Notes) -> Report {
     let t = &m.t;
@@ -150,6 +193,7 @@ fn velocities(t: &[f64], file: &str, notes: Notes) -> Report {
         mark: None,
         mark_distance: None,
         frames: t.len(),
+        frames_spanned: spanned(t),
         frame_rate: rate_of(t),
         t_first: t[0],
         t_last: t[t.len() - 1],
@@ -160,6 +204,7 @@ fn velocities(t: &[f64], file: &str, notes: Notes) -> Report {
         speed: None,
         impacts: Vec::new(),
         impact_note: String::new(),
+        length_unit_doubt: None,
     }
 }
 
@@ -181,7 +226,10 @@ fn of_track(track: Track, file: &str, notes: Notes, reading: &Reading, derive: &
         mark: track.mark_name.clone(),
         mark_distance: mark_distance(&track),
         frames: rows.len(),
-        frame_rate: rate_of(&t),
+        // The rate and span of every row: a video's frames left out (no position)
+        // are frames of the clip all the same.
+        frames_spanned: spanned(&track.t),
+        frame_rate: rate_of(&track.t),
         t_first: t.first().copied().unwrap_or(f64::NAN),
         t_last: t.last().copied().unwrap_or(f64::NAN),
         missing,
@@ -191,6 +239,7 @@ fn of_track(track: Track, file: &str, notes: Notes, reading: &Reading, derive: &
         speed: None,
         impacts: Vec::new(),
         impact_note: String::new(),
+        length_unit_doubt: None,
     };
     let opts = Derive {
         impact_at: reading.impact_at.or(derive.impact_at),
@@ -304,6 +353,20 @@ fn jumps(t: &[f64]) -> Vec<Gap> {
 }
 
 /// Frames per second from the median spacing of `t`, where it gives a finite one.
+/// The frames from the first time of `t` to its last at its rate (at least its
+/// rows; all of them when it has no rate).
+fn spanned(t: &[f64]) -> usize {
+    let (Some(first), Some(last), Some(rate)) = (t.first(), t.last(), rate_of(t)) else {
+        return t.len();
+    };
+    let n = ((last - first) * rate).round() + 1.0;
+    if n.is_finite() && n < 1e9 {
+        (n as usize).max(t.len())
+    } else {
+        t.len()
+    }
+}
+
 fn rate_of(t: &[f64]) -> Option<f64> {
     let rate = 1.0 / frame_spacing(t);
     (rate.is_finite() && rate > 0.0).then_some(rate)

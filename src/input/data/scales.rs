@@ -219,6 +219,32 @@ pub enum ScaleError {
 
 impl std::error::Error for ScaleError {}
 
+impl ScaleError {
+    /// The lengths' unit is in doubt (the times are fine): the file can still be
+    /// shown in its own length unit ([`super::Reading::own_lengths`]).
+    pub fn about_lengths(&self) -> bool {
+        matches!(
+            self,
+            ScaleError::TooSlow { .. }
+                | ScaleError::LengthsNotMetres { .. }
+                | ScaleError::TooFast { .. }
+        )
+    }
+}
+
+/// [`check_track`], leaving out the lengths' checks where the file is read in its own
+/// length unit ([`super::Reading::own_lengths`]).
+pub fn check_track_as_read(
+    track: &Track,
+    given: &Given,
+    own_lengths: bool,
+) -> Result<(), ScaleError> {
+    match check_track(track, given) {
+        Err(e) if own_lengths && e.about_lengths() => Ok(()),
+        checked => checked,
+    }
+}
+
 impl fmt::Display for ScaleError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match *self {

@@ -21,7 +21,7 @@ use super::layout::pick_roles;
 use super::notes::{Notes, UnitNote};
 use super::options::{MAX_ROWS, Reading};
 use super::problem::{DataError, DataProblem};
-use super::scales::{Given, LENGTHS, check_track};
+use super::scales::{Given, LENGTHS, check_track_as_read};
 use super::xml::{self, child};
 use crate::settings::units::{Dimension, significant};
 use crate::study::measured::Track;
@@ -237,7 +237,7 @@ pub(super) fn read(text: &str, file: &str, reading: &Reading) -> Result<(Track, 
         time: (1.0, Some("the project")),
         length: (factor.si, Some(factor.by)),
     };
-    check_track(&track, &given).map_err(|e| err(e.into()))?;
+    check_track_as_read(&track, &given, reading.own_lengths).map_err(|e| err(e.into()))?;
     let notes = Notes {
         cut_row: None,
         format: FORMAT.into(),

@@ -1,8 +1,9 @@
 //! A video's frames streamed from the system's `ffmpeg`: its first video stream
 //! decoded to yuv420p (h264's own format: no conversion, colour kept; turned as the
 //! phone meant it) and piped raw, one frame read at a time, all of them or every
-//! k-th (the sample the background is learned from); ffmpeg's own messages gathered on a thread and
-//! said when it fails or stops short (a truncated or damaged file).
+//! k-th (`open_every`'s sample; `track` decodes once, all of them); ffmpeg's own
+//! messages gathered on a thread and said when it fails or stops short (a truncated
+//! or damaged file).
 
 // Tracker rewrites this file (src/input/video is being reworked beside issue 35);
 // its indexing, unwrap and expect are converted to `get` and errors after that.

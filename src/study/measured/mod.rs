@@ -18,7 +18,7 @@ pub mod track;
 use std::sync::Arc;
 
 pub use series::{Measured, NoCommonFrame, OutOfLabRange, RawSeries, Track};
-pub use track::{Derive, Found, TrackError};
+pub use track::{Derive, Found, TrackError, in_file_time};
 
 use crate::physics::scene::Scene;
 

@@ -20,7 +20,12 @@ impl App {
 
     /// The parameter row selected (an index in [`super::ROWS`]).
     pub fn selected(&self) -> usize {
-        self.selected
+        self.params().selected()
+    }
+
+    /// The parameters panel (its row selected).
+    pub fn params(&self) -> &crate::tui::layer::main::params::ParamsPanel {
+        self.layers.main().get()
     }
 
     /// True while the app takes the mouse.

@@ -8,7 +8,7 @@ use crate::settings::params::Key;
 use crate::settings::spec::SceneError;
 use crate::settings::units::{Dimension, show, significant};
 
-use super::{Action, App, Export, Field, ROWS, SPEEDS, Status};
+use super::{Action, App, Export, Field, SPEEDS, Status};
 use crate::tui::layer::{DataTable, Help, Layer, Picker, Prompt};
 use crate::tui::vocabulary::TextTarget;
 
@@ -16,8 +16,8 @@ impl App {
     /// One fine or coarse step of the selected parameter. A step past a limit stops at
     /// the last value allowed on the way (the limit itself when it is allowed, else the
     /// last fine step before it), and says so; only a step from the limit is refused.
-    fn nudge(&mut self, up: bool, coarse: bool) {
-        let p = ROWS[self.selected];
+    pub(super) fn nudge(&mut self, key: Key, up: bool, coarse: bool) {
+        let p = key.param();
         let Some(steps) = p.steps else { return };
         let step = if coarse { steps.coarse } else { steps.fine };
         let current = self.lab.value(p.key);
@@ -63,7 +63,6 @@ impl App {
         if self.offer(action) {
             return;
         }
-        let n = ROWS.len();
         let (t0, t1) = (self.lab.solution.t_start, self.lab.solution.t_end);
         match action {
             Action::Quit => self.quit = true,
@@ -72,12 +71,6 @@ impl App {
             Action::Cancel => {
                 self.status = Status::Info("q quits (Esc closes popups, cancels typing)".into())
             }
-            Action::Up => self.selected = (self.selected + n - 1) % n,
-            Action::Down | Action::NextParam => self.selected = (self.selected + 1) % n,
-            Action::Increase => self.nudge(true, false),
-            Action::Decrease => self.nudge(false, false),
-            Action::IncreaseCoarse => self.nudge(true, true),
-            Action::DecreaseCoarse => self.nudge(false, true),
             Action::Edit | Action::Confirm => self.open(Layer::Prompt(Prompt::new(
                 TextTarget::Value,
                 Field::default(),
@@ -121,13 +114,8 @@ impl App {
             Action::Reset => self.reset(),
             Action::DropData => self.drop_data(),
             Action::ToggleMouse => self.toggle_mouse(),
-            Action::Select(i) if i < n => self.selected = i,
-            Action::ScrollParam(i, up) if i < n => {
-                self.selected = i;
-                self.nudge(up, false);
-            }
-            // Every other key is a view's (offered to the views first, see `offer`) or
-            // a popup's.
+            // Every other key is a view's or the parameters panel's (offered to them
+            // first, see `offer`) or a popup's.
             _ => {}
         }
     }
@@ -299,9 +287,18 @@ impl App {
     }
 
     fn open_data_table(&mut self) {
-        match self.lab.measured() {
-            Some(_) => self.open(Layer::Table(DataTable::default())),
-            None => {
+        let unfit = self
+            .lab
+            .unfit()
+            .map(|u| (u.in_file_time.is_some(), u.name.clone()));
+        match (self.lab.measured(), unfit) {
+            (Some(_), _) | (None, Some((true, _))) => self.open(Layer::Table(DataTable::default())),
+            (None, Some((false, name))) => {
+                self.status = Status::Error(format!(
+                    "no rows to show: {name}'s lengths are in doubt (f says why); groovelab data shows what it holds"
+                ))
+            }
+            (None, None) => {
                 self.status = Status::Error(format!(
                     "preset {} has no measured data to show (the paper-b* presets have)",
                     self.lab.preset().name

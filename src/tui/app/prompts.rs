@@ -6,7 +6,7 @@
 use crate::input::preset::{PresetFile, SaveError, ToSave};
 use crate::settings::units::parse_typed;
 
-use super::{App, Field, Library, NO_FILES, ROWS, Status};
+use super::{App, Field, Library, NO_FILES, Status};
 use crate::tui::layer::{Confirm, Layer, Models, Prompt};
 use crate::tui::vocabulary::{TextTarget, Then};
 
@@ -22,6 +22,7 @@ impl App {
             Then::Predict(guess) => self.predicted(guess),
             Then::ToggleGivens => self.toggle_givens(),
             Then::OpenModels => self.open(Layer::Models(Models::default())),
+            Then::Step { key, up, coarse } => self.nudge(key, up, coarse),
         }
     }
 
@@ -65,7 +66,7 @@ impl App {
     }
 
     fn typed_value(&mut self, text: &str) {
-        let p = ROWS[self.selected];
+        let p = self.params().param();
         match parse_typed(text, p.dim) {
             Ok(v) => self.set_value(p.key, v),
             Err(e) => self.status = Status::Error(format!("not applied: {} {e}", p.screen_label())),

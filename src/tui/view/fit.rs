@@ -29,6 +29,9 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     // Priorities (9 most important): the model's μ_k and whether it predicts what was
     // seen stay on the smallest screen; the paper's forces and table row go first.
     let lines: Ranked = match app.fit().fits() {
+        State::Idle if app.lab.unfit().is_some() => {
+            unfit_lines(app, usize::from(inner.width), theme)
+        }
         State::Idle => vec![(
             9,
             Line::from(Span::styled(
@@ -63,6 +66,28 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         }
     };
     draw_lines(by_priority(lines, inner), inner, buf);
+}
+
+/// The user's data that no fit can use: why, what to give, and what is shown of
+/// them instead.
+fn unfit_lines(app: &App, width: usize, theme: &Theme) -> Ranked<'static> {
+    let Some(u) = app.lab.unfit() else {
+        return Vec::new();
+    };
+    let mut lines: Ranked = vec![(
+        9,
+        Line::from(Span::styled(format!("no fit of {}:", u.name), theme.error)),
+    )];
+    let why = Line::from(Span::styled(u.why.clone(), theme.error));
+    lines.extend(super::panel::wrap(why, width).into_iter().map(|l| (8, l)));
+    let shown = if u.in_file_time.is_some() {
+        "shown without a fit: d its rows; the chart its v_cm in the file's own time (×), not aligned with the model's"
+    } else {
+        "its lengths are not known to be metres: nothing of it is drawn; groovelab data FILE shows what it holds"
+    };
+    let shown = Line::from(Span::styled(shown, theme.dim));
+    lines.extend(super::panel::wrap(shown, width).into_iter().map(|l| (7, l)));
+    lines
 }
 
 /// Where the fitted scene's values came from, by origin ("data: v0 0.448 m/s  flag:

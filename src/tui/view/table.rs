@@ -8,6 +8,7 @@ use ratatui::text::{Line, Span};
 use super::popup::scrolling;
 use crate::settings::units::Dimension;
 use crate::study::fit::NearImpacts;
+use crate::study::measured::Measured;
 use crate::tui::app::App;
 use crate::tui::component::{Component, Ctx};
 use crate::tui::layer::DataTable;
@@ -142,6 +143,9 @@ fn data_table(app: &App, first: usize, area: Rect, buf: &mut Buffer, theme: &The
 
 /// The data table's fixed lines, its row count and its width.
 pub(super) fn table_layout(app: &App, theme: &Theme) -> (Vec<Line<'static>>, usize, u16) {
+    if let Some(m) = in_file_time(app) {
+        return (unfit_head(theme), m.t.len(), UNFIT_WIDTH);
+    }
     let track = app.lab.measured().is_some_and(|m| m.x.is_some());
     let mut head = data_head(track, theme);
     let times = app.lab.measured().map_or(&[][..], |m| &m.t[..]);
@@ -170,6 +174,81 @@ pub(super) fn table_layout(app: &App, theme: &Theme) -> (Vec<Line<'static>>, usi
 
 impl Component for DataTable {
     fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
-        data_table(cx.app, self.scroll().first(), area, buf, cx.theme);
+        match in_file_time(cx.app) {
+            Some(m) => unfit_table(m, self.scroll().first(), area, buf, cx.theme),
+            None => data_table(cx.app, self.scroll().first(), area, buf, cx.theme),
+        }
     }
+}
+
+/// The user's data without a fit, in the file's own time, where no measured data
+/// are in use (`lab::Unfit`).
+fn in_file_time(app: &App) -> Option<&Measured> {
+    if app.lab.measured().is_some() {
+        return None;
+    }
+    app.lab.unfit()?.in_file_time.as_deref()
+}
+
+/// Width of the table of data without a fit.
+const UNFIT_WIDTH: u16 = 60;
+
+/// The header of the table of data without a fit: no model column (nothing aligns
+/// the file's time with the model's).
+fn unfit_head(theme: &Theme) -> Vec<Line<'static>> {
+    let unit = POSITION.display_unit().0;
+    let columns = format!(
+        "   t (s)  {:>10}  {:>10}  {:>10}",
+        format!("x ({unit})"),
+        "v_cm (m/s)",
+        "±1σ (m/s)"
+    );
+    vec![
+        Line::from(Span::styled(
+            " the file's own time, x from its first frame; no fit",
+            theme.dim,
+        )),
+        Line::from(Span::styled(theme.glyphs.text(&columns), theme.title)),
+    ]
+}
+
+/// The rows of the user's data without a fit: t, x, v_cm and its σ.
+fn unfit_table(m: &Measured, first: usize, area: Rect, buf: &mut Buffer, theme: &Theme) {
+    let g = theme.glyphs;
+    let dash = if g.ascii { "-" } else { "–" };
+    let cell = |v: Option<f64>| match v {
+        Some(v) if v.is_finite() => format!("{v:>+10.4}"),
+        _ => format!("{dash:>10}"),
+    };
+    let at = |v: &Option<Vec<f64>>, i: usize| v.as_ref().and_then(|v| v.get(i).copied());
+    let line = |i: usize| {
+        let Some(t) = m.t.get(i) else {
+            return Line::default();
+        };
+        let x = at(&m.x, i).map(|x| POSITION.to_display(x));
+        Line::from(Span::styled(
+            format!(
+                "{t:>+8.4}  {}  {}  {}",
+                cell(x),
+                cell(m.v_cm.get(i).copied()),
+                cell(at(&m.v_cm_sigma, i)).replace('+', " ")
+            ),
+            theme.text,
+        ))
+    };
+    let title = if g.ascii {
+        "Data, no fit  (up/down PgUp/PgDn scroll, Esc or q closes)"
+    } else {
+        "Data, no fit  (↑↓ PgUp PgDn scroll, Esc or q closes)"
+    };
+    let title = g.ellipsize(title, usize::from(area.width.saturating_sub(16)));
+    scrolling(
+        first,
+        &title,
+        unfit_head(theme),
+        (m.t.len(), &line),
+        (area, UNFIT_WIDTH),
+        buf,
+        theme,
+    );
 }

@@ -101,13 +101,26 @@ struct Link {
     impact_t: f64,
     impact_x: f64,
     direction: f64,
+    /// False for a video whose tracks no fit can use (no impact in the clip): the
+    /// lab's time is the video's own, and no model ball is drawn on it (nothing
+    /// places the model in its picture).
+    aligned: bool,
 }
 
 impl Link {
     /// The link while the data in use are this video's.
     fn of(app: &App) -> Option<Link> {
-        let own = app.lab.own_data()?;
-        if Some(own.name.as_str()) != app.video().name.as_deref() {
+        let video = app.video().name.as_deref();
+        let Some(own) = app.lab.own_data() else {
+            let unfit = app.lab.unfit()?;
+            return (Some(unfit.name.as_str()) == video).then_some(Link {
+                impact_t: 0.0,
+                impact_x: 0.0,
+                direction: 1.0,
+                aligned: false,
+            });
+        };
+        if Some(own.name.as_str()) != video {
             return None;
         }
         let f = app.lab.series()?.found()?;
@@ -115,6 +128,7 @@ impl Link {
             impact_t: f.impact_t,
             impact_x: f.impact_x,
             direction: f.direction,
+            aligned: true,
         })
     }
 
@@ -286,7 +300,7 @@ fn draw_picture(view: &VideoView, k: usize, fit: &Fit, buf: &mut Buffer, theme: 
 /// The model's ball centres at the cursor's time in the video's pixels (left, right),
 /// while the data in use are the video's.
 pub fn model_centres(app: &App, view: &VideoView) -> Option<[(f64, f64); 2]> {
-    let l = Link::of(app)?;
+    let l = Link::of(app).filter(|l| l.aligned)?;
     let snap = app.lab.solution.at(app.t);
     let radius = app.lab.scene.radius;
     Some([snap.left.x, snap.right.x].map(|x| view.pixel(l.file_x(x, radius), 0.0)))

@@ -285,7 +285,14 @@ fn a_logger_pro_file_gives_its_video_analysis_and_fits() {
     let file = dir.join("unscaled.cmbl");
     std::fs::write(&file, cmbl(&track, "")).unwrap();
     let f = file.to_str().unwrap();
-    let (code, _, err) = groovelab(&["data", f]);
+    // `data` shows it in its own unit, with the doubt; `fit` refuses it.
+    let (code, out, _) = groovelab(&["data", f]);
+    assert_eq!(code, Some(0));
+    assert!(
+        out.contains("lengths shown in the file's own unit") && out.contains("no unit"),
+        "{out}"
+    );
+    let (code, _, err) = groovelab(&["fit", "--preset", "paper-b4.9", "--data", f]);
     assert_eq!(code, Some(2), "{err}");
     assert!(
         err.contains("no unit") && err.contains("--scale") && err.contains("--length-unit"),

@@ -13,4 +13,5 @@ mod side_by_side;
 mod sources_said;
 mod table_shapes;
 mod tracks;
+mod unfit;
 mod units_checked;

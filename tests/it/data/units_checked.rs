@@ -251,7 +251,21 @@ fn pixels_of_a_video_never_calibrated_are_named_with_scale_not_only_a_length_uni
     // 0.6 m/s at 2 pixels per mm: 1200 pixels/s (as mm 1.2 m/s, which fits too).
     let file = dir.join("px.txt");
     std::fs::write(&file, tracker_export(1200.0)).unwrap();
-    let (code, _, err) = groovelab(&["data", file.to_str().unwrap()]);
+    // `fit` refuses it; `data` shows it in the file's own unit with the same words.
+    let (code, out, _) = groovelab(&["data", file.to_str().unwrap()]);
+    assert_eq!(code, Some(0));
+    assert!(
+        out.contains("lengths shown in the file's own unit") && out.contains("--scale"),
+        "{out}"
+    );
+    let fit = [
+        "fit",
+        "--preset",
+        "paper-b4.9",
+        "--data",
+        file.to_str().unwrap(),
+    ];
+    let (code, _, err) = groovelab(&fit);
     assert_eq!(code, Some(2), "{err}");
     assert!(
         err.contains("give --length-unit mm")
@@ -266,7 +280,7 @@ fn pixels_of_a_video_never_calibrated_are_named_with_scale_not_only_a_length_uni
     // A high-resolution video: 24,000 pixels/s is beyond even mm; no length unit
     // guessed, pixels and both options named.
     std::fs::write(&file, tracker_export(24_000.0)).unwrap();
-    let (code, _, err) = groovelab(&["data", file.to_str().unwrap()]);
+    let (code, _, err) = groovelab(&fit);
     assert_eq!(code, Some(2), "{err}");
     assert!(
         err.contains("they are not m, cm or mm: if they are pixels")

@@ -102,7 +102,8 @@ fn a_folder_of_frames_is_data_for_data_and_fit_and_is_kept_in_the_cache() {
             && !out.contains("none stated"),
         "{out}"
     );
-    assert!(out.contains("49 frames at 100 frames/s"), "{out}");
+    // 49 found (one frame touching at the impact) of the clip's 50 at its rate.
+    assert!(out.contains("49 of 50 frames at 100 frames/s"), "{out}");
     // Tracked once: the text --data reads and the app's pictures, in the cache.
     let kept: Vec<String> = std::fs::read_dir(c.join("groovelab/tracks"))
         .unwrap()

@@ -2,8 +2,10 @@
 //! as `--data` everywhere.
 
 pub(crate) mod app;
+pub(crate) mod found_frames;
 pub(crate) mod looks;
 pub(crate) mod overlay;
 pub(crate) mod seed;
 pub(crate) mod tracker_looks;
 pub(crate) mod tracking;
+mod unfit;

@@ -111,7 +111,7 @@ fn two_balls(colour: [f64; 3]) -> (Vec<Disc>, Vec<f64>) {
 }
 
 #[test]
-#[ignore = "issue 34 open: the colour-only outline fit succeeds in few frames"]
+#[ignore = "issue 34 open (tracker of 2026-11-28, one pass): the colour-only outline fit succeeds in 4 of 32 frames"]
 fn a_red_ball_on_green_felt_of_its_brightness_is_found_by_its_colour() {
     // Equal BT.601 luma: red (200, 60, 60) ≈ 101.5, green (60, 130, 80) ≈ 103.5.
     let (balls, speed) = two_balls([200.0, 60.0, 60.0]);
@@ -131,7 +131,7 @@ fn a_red_ball_on_green_felt_of_its_brightness_is_found_by_its_colour() {
 }
 
 #[test]
-#[ignore = "issue 34 open: a ball at rest over the pixels the background learned it at is found in half the frames"]
+#[ignore = "issue 34 open (tracker of 2026-11-28, one pass): a ball at rest through the whole clip is part of the background, and the bright board hides it from the look against a smooth surface: found in 16 of 32"]
 fn a_rail_board_far_brighter_than_the_wall_leaves_the_balls_found() {
     // Grey balls on a dark wall, a near-white board hiding their lower third.
     let (balls, speed) = two_balls([170.0, 170.0, 170.0]);

@@ -16,9 +16,11 @@ use super::{Film, Look};
 /// How large the random looks are.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Size {
-    /// Small pictures and short clips, for `cargo test` (about 480×270, ≤ 48 frames).
+    /// Small pictures and short clips, for `cargo test` (about 480×270, 30–100
+    /// frames/s, 0.35–0.45 s before the impact and 0.3–0.4 s after: 20–85 frames).
     Small,
-    /// The cameras' own sizes: 480p, 720p, 1080p (≤ 150 frames).
+    /// The cameras' own sizes: 480p, 720p, 1080p, 30–240 frames/s (0.35–0.45 s before
+    /// the impact, 0.3–0.6 s after: up to 250 frames).
     Full,
 }
 
@@ -62,7 +64,12 @@ pub fn random(scene: &Scene, seed: u64, size: Size) -> Clip {
     let mut words: Vec<String> = Vec::new();
 
     // The camera.
-    let fps = g.pick(&[30.0, 50.0, 60.0, 100.0, 120.0, 240.0]);
+    // Small clips keep to ≤ 100 frames/s: at 240 frames/s the ≥ 0.35 s before the
+    // impact alone would be 84 frames (the full-size looks have every rate).
+    let fps = match size {
+        Size::Small => g.pick(&[30.0, 50.0, 60.0, 100.0]),
+        Size::Full => g.pick(&[30.0, 50.0, 60.0, 100.0, 120.0, 240.0]),
+    };
     let (width, height) = match size {
         Size::Small => g.pick(&[(480, 270), (400, 300)]),
         Size::Full => g.pick(&[(854, 480), (1280, 720), (1920, 1080)]),
@@ -73,12 +80,15 @@ pub fn random(scene: &Scene, seed: u64, size: Size) -> Clip {
         Size::Full if small_balls => g.range(9.0, 14.0),
         Size::Full => g.range(height as f64 / 22.0, height as f64 / 9.0),
     };
-    let from = -g.range(0.05, 0.2);
-    let most: f64 = match size {
-        Size::Small => 48.0,
-        Size::Full => 150.0,
+    // What `fit` needs: a steady approach before the impact (at least 0.35 s and 12
+    // frames, so the first impact is found and the approach speed has a ±), and the
+    // sliding after it (about 0.26 s in paper-b4.9) with some rolling beyond.
+    let from = -(0.35f64.max(12.0 / fps) + g.range(0.0, 0.1));
+    let after = match size {
+        Size::Small => g.range(0.3, 0.4),
+        Size::Full => g.range(0.3, 0.6),
     };
-    let to = from + (most / fps).min(g.range(0.5, 0.9));
+    let to = after.max(12.0 / fps);
     let tilt_deg = if g.chance(0.4) {
         g.range(-4.0, 4.0)
     } else {

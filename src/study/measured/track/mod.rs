@@ -13,6 +13,7 @@
 //! ends of the track the window keeps only the frames on its own side, so it shrinks.
 
 pub mod derivative;
+mod file_time;
 mod found;
 mod impacts;
 mod sigmas;
@@ -25,6 +26,7 @@ use crate::physics::scene::Scene;
 use crate::study::fit::{self, FitError, Free, ModelFit};
 
 pub use derivative::Local;
+pub use file_time::in_file_time;
 pub use found::{Found, Skipped};
 pub use impacts::TrackError;
 

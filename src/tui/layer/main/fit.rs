@@ -74,6 +74,12 @@ impl FitRuns {
     /// Fit view: puts the fitted μ_k (and v0, e where the fit freed them) into the
     /// scene: of a position track the position fit, the one the panel says to quote.
     fn apply(&self, lab: &mut Lab) -> Handled {
+        if let (None, Some(unfit)) = (lab.measured(), lab.unfit()) {
+            return Handled::Refused(format!(
+                "no fit to apply: {} has none (f says why)",
+                unfit.name
+            ));
+        }
         let (fitted, which) = match self.to_apply() {
             Ok(f) => f,
             Err(e) => return Handled::Refused(e.to_string()),
@@ -143,7 +149,9 @@ impl Pane for FitRuns {
         };
         match action {
             // Opening the view without data says there are none to fit.
-            Action::ShowView(View::Fit) if shown && cx.lab.measured().is_none() => {
+            Action::ShowView(View::Fit)
+                if shown && cx.lab.measured().is_none() && cx.lab.unfit().is_none() =>
+            {
                 Handled::Refused(format!(
                     "preset {} has no measured data to fit (the paper-b* presets have)",
                     cx.lab.preset().name

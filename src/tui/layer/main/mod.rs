@@ -12,6 +12,7 @@ pub mod fit;
 pub mod forces;
 pub mod methods;
 mod pane;
+pub mod params;
 pub mod video;
 pub mod zoom;
 
@@ -39,6 +40,8 @@ impl Default for MainScreen {
                 Box::new(methods::Methods::default()),
                 Box::new(fit::FitRuns::default()),
                 Box::new(video::VideoRun::default()),
+                // Last: a view's own arrows (the zoom's, the fit window's) go first.
+                Box::new(params::ParamsPanel::default()),
             ],
         }
     }

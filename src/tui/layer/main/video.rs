@@ -90,7 +90,16 @@ impl VideoRun {
         let name = short(self.name.as_deref().unwrap_or_default());
         match result {
             Ok(done) => {
-                match lab.attach_data(done.own, done.from_data, done.file_keys, done.scene_file) {
+                let Some(own) = done.own else {
+                    self.view = done.view;
+                    if let Some(unfit) = done.unfit {
+                        lab.set_unfit(unfit);
+                    }
+                    return Handled::Refused(format!(
+                        "tracked {name}: no fit (f says why; V: the video)"
+                    ));
+                };
+                match lab.attach_data(own, done.from_data, done.file_keys, done.scene_file) {
                     Ok(()) => {
                         self.view = done.view;
                         Handled::Say(format!(

@@ -43,7 +43,13 @@ pub(super) fn measured_velocities(m: &MeasuredPoints, theme: &Theme) -> Vec<Plot
         glyph: if theme.glyphs.ascii { ascii } else { unicode },
         draw: Draw::Points,
     };
-    series.push(marks("measured v_cm", Arc::clone(&m.v_cm), "x", "×"));
+    // Not aligned with the model's time (no impact found): said in the legend.
+    let v_cm = if m.in_file_time {
+        "v_cm, file's t"
+    } else {
+        "measured v_cm"
+    };
+    series.push(marks(v_cm, Arc::clone(&m.v_cm), "x", "×"));
     // A track without a rim mark measures no v_t: no legend entry claims one.
     if !m.v_t.is_empty() {
         series.push(marks("measured v_t", Arc::clone(&m.v_t), "o", "+"));
