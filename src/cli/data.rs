@@ -193,6 +193,16 @@ fn named(n: &str) -> String {
     }
 }
 
+/// The rim mark as the tracks line names it; a second track never beside the centre
+/// is no mark for being the second (its doubt says so below the line).
+fn mark_named(r: &Report) -> String {
+    match (&r.mark, r.mark_distance) {
+        (None, _) => "no rim mark (v_t is not measured)".to_string(),
+        (Some(m), Some(_)) => format!("rim mark {}", named(m)),
+        (Some(m), None) => format!("second track {}", named(m)),
+    }
+}
+
 /// One file's report as text for people.
 pub fn describe(shown: &DataReport) -> String {
     let r = &shown.report;
@@ -209,12 +219,7 @@ pub fn describe(shown: &DataReport) -> String {
             s,
             "  tracks: centre {}, {}{}",
             named(c),
-            match (&r.mark, r.mark_distance) {
-                (None, _) => "no rim mark (v_t is not measured)".to_string(),
-                (Some(m), Some(_)) => format!("rim mark {}", named(m)),
-                // Said by its doubt below: a track is no mark for being the second.
-                (Some(m), None) => format!("second track {}", named(m)),
-            },
+            mark_named(r),
             if others.is_empty() {
                 String::new()
             } else {
