@@ -157,15 +157,23 @@ pub struct DataReport {
     /// (the preset's) unless given (here or in the file's header).
     pub assumed: Vec<&'static str>,
     /// Why the track taken for the rim mark cannot be one (it lies farther from the
-    /// centre than twice the scene's R), naming it; absent when it can.
+    /// centre than twice the scene's R, or it is never in a frame with the centre),
+    /// naming it; absent when it can.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub mark_doubt: Option<String>,
 }
 
 /// Why `report`'s rim mark cannot be one: its median distance from the centre is more
-/// than twice the ball's radius `radius` (a second ball, or another run side by side).
+/// than twice the ball's radius `radius` (a second ball, or another run side by side),
+/// or it has none (never in a frame with the centre: nothing says it is a mark).
 fn mark_doubt(report: &Report, radius: f64) -> Option<String> {
-    let (mark, d) = (report.mark.as_ref()?, report.mark_distance?);
+    let mark = report.mark.as_ref()?;
+    let Some(d) = report.mark_distance else {
+        return Some(format!(
+            "track {} is not known to be a rim mark: it is never in a frame with the centre, so neither its distance from the centre nor a spin can be measured",
+            named(mark)
+        ));
+    };
     (d > 2.0 * radius).then(|| {
         format!(
             "track {} is no rim mark: it lies {} from the centre (median), more than twice the ball's R = {} (a second ball, or another run?); name the mark's track with --track mark=NAME, or give the ball's --radius",
@@ -185,6 +193,16 @@ fn named(n: &str) -> String {
     }
 }
 
+/// The rim mark as the tracks line names it; a second track never beside the centre
+/// is no mark for being the second (its doubt says so below the line).
+fn mark_named(r: &Report) -> String {
+    match (&r.mark, r.mark_distance) {
+        (None, _) => "no rim mark (v_t is not measured)".to_string(),
+        (Some(m), Some(_)) => format!("rim mark {}", named(m)),
+        (Some(m), None) => format!("second track {}", named(m)),
+    }
+}
+
 /// One file's report as text for people.
 pub fn describe(shown: &DataReport) -> String {
     let r = &shown.report;
@@ -201,10 +219,7 @@ pub fn describe(shown: &DataReport) -> String {
             s,
             "  tracks: centre {}, {}{}",
             named(c),
-            r.mark.as_ref().map_or(
-                "no rim mark (v_t is not measured)".to_string(),
-                |m| format!("rim mark {}", named(m))
-            ),
+            mark_named(r),
             if others.is_empty() {
                 String::new()
             } else {

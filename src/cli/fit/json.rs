@@ -22,12 +22,31 @@ pub(super) struct FitJson<'a> {
     /// For a position track: what was found in it (impact, direction, window).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub track: Option<&'a Found>,
-    /// The groove the data were measured in, where it is not the model's (R and b, m).
+    /// The groove the data were measured in, where it is not the model's (R and b, m;
+    /// null where the data do not state it).
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub data_groove: Option<crate::lab::Groove>,
+    pub data_groove: Option<DataGroove>,
     /// The values that are null because the data cannot give them, and why.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub not_measured: Vec<NotMeasured>,
+}
+
+/// The groove the data state they were measured in (`data_groove`), m: a value their
+/// file leaves out is null, never the preset's (the data were not "measured at" it).
+#[derive(Serialize)]
+pub(super) struct DataGroove {
+    radius: Option<f64>,
+    width: Option<f64>,
+}
+
+impl DataGroove {
+    pub(super) fn of(g: &crate::lab::Groove) -> DataGroove {
+        let [r, b] = g.stated;
+        DataGroove {
+            radius: r.then_some(g.radius),
+            width: b.then_some(g.width),
+        }
+    }
 }
 
 /// `fit --format json`: values the data do not determine null, times rounded.
@@ -100,13 +119,23 @@ fn round_times(json: &mut serde_json::Value) {
 #[derive(Serialize)]
 pub(super) struct NotMeasured {
     quantity: &'static str,
-    reason: &'static str,
+    reason: String,
 }
 
-/// The line fit's values that are null for `fits`: a_t and μ_k,t without a rim mark.
-pub(super) fn not_measured(fits: &Fits) -> Vec<NotMeasured> {
-    let l = &fits.line_fit;
-    let reason = "no rim mark was tracked: v_t is not measured";
+/// The line fit's values that are null for `fits`: a_t and μ_k,t without a rim mark
+/// (or with one whose turn a frame cannot be followed, `no_v_t` saying so);
+/// the whole `line_fit` where it could not be made, with why.
+pub(super) fn not_measured(fits: &Fits, no_v_t: Option<&str>) -> Vec<NotMeasured> {
+    let Some(l) = &fits.line_fit else {
+        return vec![NotMeasured {
+            quantity: "line_fit",
+            reason: fits
+                .no_line_fit
+                .as_ref()
+                .map_or_else(|| "not possible".into(), |e| format!("not possible: {e}")),
+        }];
+    };
+    let reason = no_v_t.unwrap_or("no rim mark was tracked: v_t is not measured");
     [
         ("line_fit.a_t", l.a_t),
         ("line_fit.a_t_se", l.a_t_se),
@@ -115,6 +144,9 @@ pub(super) fn not_measured(fits: &Fits) -> Vec<NotMeasured> {
     ]
     .into_iter()
     .filter(|(_, v)| !v.is_finite())
-    .map(|(quantity, _)| NotMeasured { quantity, reason })
+    .map(|(quantity, _)| NotMeasured {
+        quantity,
+        reason: reason.into(),
+    })
     .collect()
 }

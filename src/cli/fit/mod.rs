@@ -44,6 +44,12 @@ pub fn run(
         e => CliError::Fit(e),
     })?;
     let sources = sources::Sources::of(&lab, typed, data);
+    // A rim mark that turns over half a turn a frame in this scene: left out, said.
+    let aliased = lab.data.as_ref().and_then(|d| d.mark_aliased).map(|w| {
+        format!(
+            "the rim mark turns {w:.1} rad (over half a turn) between frames in this scene, so its angle cannot be followed at this frame rate: v_t is not measured and the fits use the centre alone (film faster to measure the spin)"
+        )
+    });
     Ok(match args.format {
         FitFormat::Json => json::text(json::FitJson {
             scene: &scene,
@@ -51,8 +57,11 @@ pub fn run(
             mirrored: lab.series().is_some_and(|s| s.mirrored()),
             fits: &fits,
             track: found.as_ref(),
-            data_groove: lab.other_groove.as_ref().map(|o| o.data),
-            not_measured: json::not_measured(&fits),
+            data_groove: lab
+                .other_groove
+                .as_ref()
+                .map(|o| json::DataGroove::of(&o.data)),
+            not_measured: json::not_measured(&fits, aliased.as_deref()),
         }),
         FitFormat::Table => {
             // The scene and where it came from, then the short summary, the detail after.
@@ -62,6 +71,10 @@ pub fn run(
                 out.push('\n');
             }
             out += &table::summary(&fits);
+            if let Some(note) = &aliased {
+                out += note;
+                out.push('\n');
+            }
             let own = data.data.is_empty();
             let mass = sources.assumed_mass(&lab);
             out += &match &found {

@@ -47,7 +47,11 @@ pub(super) fn summary(f: &Fits) -> String {
             significant(h.mu / 100.0, 3)
         );
     }
-    if let Some(w) = &f.line_fit.width_from_lines {
+    if let Some(w) = f
+        .line_fit
+        .as_ref()
+        .and_then(|l| l.width_from_lines.as_ref())
+    {
         let _ = writeln!(
             out,
             "  the measured a_t/a_cm gives b ≈ {:.2} ± {}, not {}: check --width",
@@ -130,7 +134,7 @@ pub(super) fn model_name(model: &str) -> String {
 /// preset's own (the paper's) data, `paper_data`.
 pub(super) fn table(scene: &Scene, f: &Fits, mass: Option<&str>, paper_data: bool) -> String {
     let mut out = String::new();
-    line_fit_lines(&mut out, scene, &f.line_fit, mass, paper_data);
+    line_fit_or_why(&mut out, scene, f, mass, paper_data);
     let _ = writeln!(out);
     model_fit_lines(&mut out, &f.model_fit);
     out
@@ -138,7 +142,28 @@ pub(super) fn table(scene: &Scene, f: &Fits, mass: Option<&str>, paper_data: boo
 
 /// The line fits over their window (the sliding phase unless --from/--to set it), and
 /// the paper's table-1 row with where it contradicts itself when `paper_data`; the
-/// `mass` assumed, if it was, under them.
+/// `mass` assumed, if it was, under them. Where the line fits cannot be made, why, on
+/// their line: the model fits below need none.
+fn line_fit_or_why(
+    out: &mut String,
+    scene: &Scene,
+    f: &Fits,
+    mass: Option<&str>,
+    paper_data: bool,
+) {
+    match (&f.line_fit, &f.no_line_fit) {
+        (Some(l), _) => line_fit_lines(out, scene, l, mass, paper_data),
+        (None, why) => {
+            let _ = writeln!(
+                out,
+                "line fit: not possible ({}); the model fits need none",
+                why.as_ref().map_or_else(String::new, ToString::to_string)
+            );
+        }
+    }
+}
+
+/// [`line_fit_or_why`] of line fits that were made.
 fn line_fit_lines(
     out: &mut String,
     scene: &Scene,
@@ -310,7 +335,7 @@ pub(super) fn track_table(
     let mut out = found.describe();
     out.push('\n');
     // The line fits as for a velocity file; the model fits in two columns below.
-    line_fit_lines(&mut out, scene, &f.line_fit, mass, paper_data);
+    line_fit_or_why(&mut out, scene, f, mass, paper_data);
     if found.mark.is_none() {
         let _ = writeln!(
             out,

@@ -49,6 +49,20 @@ pub fn fit_figure(scene: &Scene, m: &Measured, fits: &Fits) -> Result<String, Fi
     })
 }
 
+/// A model's name in symbols: `mu+rolling_resistance` → `μ_k + c_rr`.
+fn model_symbols(model: &str) -> String {
+    model
+        .split('+')
+        .map(|p| match p {
+            "mu" => "μ_k",
+            "restitution" => "e",
+            "rolling_resistance" => "c_rr",
+            other => other,
+        })
+        .collect::<Vec<_>>()
+        .join(" + ")
+}
+
 /// The upper chart: the model (600 points over the time axis) as lines, the data as
 /// markers (v_cm blue, v_t orange), and the paper's line fits over their window.
 fn draw_fit(
@@ -93,18 +107,9 @@ fn draw_fit(
         "b = {:.2} {}: model {}, μ_k = {mu}; line fits μ_cm = {}, μ_t = {}",
         Dimension::Length.to_display(scene.width),
         Dimension::Length.display_unit().0,
-        mf.model
-            .split('+')
-            .map(|p| match p {
-                "mu" => "μ_k",
-                "restitution" => "e",
-                "rolling_resistance" => "c_rr",
-                other => other,
-            })
-            .collect::<Vec<_>>()
-            .join(" + "),
-        super::drawing::rounded(fits.line_fit.mu_cm),
-        super::drawing::rounded(fits.line_fit.mu_t)
+        model_symbols(&mf.model),
+        super::drawing::rounded(fits.line_fit.as_ref().map_or(f64::NAN, |l| l.mu_cm)),
+        super::drawing::rounded(fits.line_fit.as_ref().map_or(f64::NAN, |l| l.mu_t))
     );
     let mut chart = linear_chart(
         area,
@@ -137,8 +142,11 @@ fn draw_fit(
         points(&m.v_t).into_iter(),
         (BLUE, ORANGE),
     )?;
-    let l = &fits.line_fit;
-    for (line, colour) in l.lines.iter().zip([BLUE, ORANGE]) {
+    for (l, (line, colour)) in fits
+        .line_fit
+        .iter()
+        .flat_map(|l| l.lines.iter().zip([BLUE, ORANGE]).map(move |lc| (l, lc)))
+    {
         chart.draw_series(LineSeries::new(
             [l.from, l.to]
                 .map(|t| (t, line.intercept + line.slope * t))

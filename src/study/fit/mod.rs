@@ -48,7 +48,13 @@ pub use uncertainty::{NotIdentified, ScalePart};
 /// the headline among them.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Fits {
-    pub line_fit: LineFit,
+    /// The paper's line fits over the sliding phase; `None` where they cannot be made
+    /// (`no_line_fit` says why: a window of one frame at 30 frames/s and a high μ_k),
+    /// which never stops the model fits, which need none.
+    pub line_fit: Option<LineFit>,
+    /// Why there is no `line_fit`.
+    #[serde(skip)]
+    pub no_line_fit: Option<FitError>,
     /// The headline: the fit of the model the data support (or of the one the caller
     /// chose), fitted to a track's positions, else to the velocities: the very fit of
     /// its row in `models`, its numbers the same wherever it is shown.
@@ -158,12 +164,16 @@ pub fn fit_all(
         }
         w => w,
     };
-    let line_fit = LineFit {
-        given,
-        ..line_fit(m, scene, window)?
+    // A window the user gave that holds too few points is their input to fix; the
+    // automatic one that does (a sliding phase of one frame) only leaves the line fits
+    // out, said beside the headline.
+    let (line_fit, no_line_fit) = match line_fit(m, scene, window) {
+        Ok(l) => (Some(LineFit { given, ..l }), None),
+        Err(e) if given.iter().any(|g| *g) => return Err(e),
+        Err(e) => (None, Some(e)),
     };
     // μ_k,cm against μ_k,t: a verdict of every model fit (the same line fits).
-    let lines_disagree = line_fit.disagree();
+    let lines_disagree = line_fit.as_ref().and_then(LineFit::disagree);
     let judged = |f: ModelFit| ModelFit {
         lines_disagree,
         ..f
@@ -174,6 +184,7 @@ pub fn fit_all(
     }
     let fits = Fits {
         line_fit,
+        no_line_fit,
         model_fit,
         chosen,
         mu_alone: judged(mu_alone),
@@ -189,8 +200,9 @@ pub fn fit_all(
 /// measured v_t (a track without a rim mark) its line fit is not a number by design.
 fn check_finite(f: &Fits, data: &Measured, scene: &Scene) -> Result<(), FitError> {
     let has_v_t = data.has_v_t();
-    let (l, m) = (&f.line_fit, &f.model_fit);
+    let m = &f.model_fit;
     let spin = |v: f64| if has_v_t { v } else { 0.0 };
+    let line = |v: fn(&LineFit) -> f64| f.line_fit.as_ref().map_or(0.0, v);
     let named = [
         ("model fit v0 error", m.v0_se.unwrap_or(0.0)),
         ("model fit e error", m.restitution_se.unwrap_or(0.0)),
@@ -198,10 +210,10 @@ fn check_finite(f: &Fits, data: &Measured, scene: &Scene) -> Result<(), FitError
             "model fit c_rr error",
             m.rolling_resistance_se.unwrap_or(0.0),
         ),
-        ("line fit a_cm", l.a_cm),
-        ("line fit a_t", spin(l.a_t)),
-        ("line fit μ_k,cm", l.mu_cm),
-        ("line fit μ_k,t", spin(l.mu_t)),
+        ("line fit a_cm", line(|l| l.a_cm)),
+        ("line fit a_t", spin(line(|l| l.a_t))),
+        ("line fit μ_k,cm", line(|l| l.mu_cm)),
+        ("line fit μ_k,t", spin(line(|l| l.mu_t))),
         ("model fit μ_k", m.mu),
         // An undetermined μ_k has no error, by design (said in words).
         (

@@ -22,11 +22,11 @@ use crate::study::Progress;
 use crate::study::measured::series::{Measured, Stencils};
 
 use super::least_squares::{
-    At, Problem, coarse_mu, least_squares, normal_matrix, scan_mu, smooth_jacobian, with,
+    At, Problem, least_squares, normal_matrix, profile_mu, smooth_jacobian, with,
 };
 use super::problem::{Evals, FitError, Free};
 use super::regime::{data_scatter, observed_after, rest_band, sliding_end};
-use super::residuals::{Target, fit_points, labelled_residuals, mean_cost, nuisance};
+use super::residuals::{Target, fit_points, labelled_residuals, nuisance};
 use super::uncertainty::{
     NotIdentified, ScalePart, effective_points, shared_noise, uncertainties, with_scale,
 };
@@ -143,12 +143,13 @@ impl ModelFit {
             Agreement::MuNotDetermined
         } else if self.mu_implausible {
             Agreement::ImplausibleMu
+        } else if self.lines_disagree.is_some() {
+            // Before a poor fit: the cause named (a wrong b or R fits poorly too).
+            Agreement::LinesDisagree
         } else if self.scatter.is_some_and(|s| self.rms > POOR_FIT * s)
             && self.rms > self.perfect_rms()
         {
             Agreement::PoorFit
-        } else if self.lines_disagree.is_some() {
-            Agreement::LinesDisagree
         } else if !self.agrees {
             Agreement::Disagrees
         } else if self.indistinguishable_from_rest {
@@ -346,14 +347,26 @@ pub(super) struct Scored {
     pub idx: Vec<usize>,
 }
 
+/// How a fit searches ([`best_values`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum Search<'a> {
+    /// The profile of μ_k over its whole range first ([`profile_mu`]), then every free
+    /// value together from its lowest point: a fit from nothing.
+    Profile,
+    /// Levenberg–Marquardt from the scene's values: a fit carried from another
+    /// model's optimum (a smaller one inside it, a larger one projected down).
+    From,
+    /// [`Search::From`] on these frames only (indices of the [`thinned`] series,
+    /// sorted): the refit of a model on the frames every candidate shares.
+    Within(&'a [usize]),
+}
+
 /// The free values that fit `m` best, from the scene's, and the frames they were
-/// fitted on: those away from the model's impacts, and among `within` when given
-/// (a refit on frames shared with other models, started from a fit already made: no
-/// scan of μ_k again).
+/// fitted on: those away from the model's impacts (and among those `search` names).
 fn best_values(
     pb: &Problem,
     evals: &mut Evals,
-    within: Option<&[usize]>,
+    search: Search,
 ) -> Result<(Vec<f64>, Vec<usize>), FitError> {
     let Problem {
         scene,
@@ -364,10 +377,14 @@ fn best_values(
     let p: Vec<f64> = free
         .iter()
         .map(|f| match f {
-            Free::Mu if within.is_none() => scene.mu.max(0.01),
+            Free::Mu if search == Search::Profile => scene.mu.max(0.01),
             other => other.value_in(scene),
         })
         .collect();
+    let within = match search {
+        Search::Within(w) => Some(w),
+        _ => None,
+    };
     let frames = |p: &[f64], evals: &mut Evals| {
         let mut idx = fit_points(m, &with(scene, free, p), target, evals);
         if let Some(w) = within {
@@ -375,74 +392,58 @@ fn best_values(
         }
         idx
     };
-    // A refit starts from a fit already made: no scan again.
-    if within.is_some() {
+    let Some(i) = free
+        .iter()
+        .position(|f| *f == Free::Mu)
+        .filter(|_| search == Search::Profile)
+    else {
         return refined(pb, evals, p, &frames);
-    }
-    // From the start that fits best (the scene's values, or others of c_rr: from
-    // c_rr = 0 a μ_k that also brakes the rolling fits nearly as well, and
-    // Levenberg–Marquardt stays on the edge — seen with c_rr = 0.02 and 0.05 in the
-    // data), each tried with its best μ on a coarse scan; then μ by a global scan
-    // and golden-section search (the cost is not smooth where impacts move past data
-    // points, and local steps get caught there), then every free value together.
-    let mu = free.iter().position(|f| *f == Free::Mu);
-    let mut p = p;
-    let tries = starts(free, &p);
-    if tries.len() > 1 {
-        let mut best = (f64::INFINITY, p.clone());
-        for q in tries {
-            let (q, cost) = match mu {
-                Some(i) => coarse_mu(pb, evals, &q, i)?,
-                None => {
-                    evals.next()?;
-                    let cost = mean_cost(&with(scene, free, &q), m, target, evals);
-                    (q, cost)
-                }
-            };
-            if cost < best.0 {
-                best = (cost, q);
-            }
+    };
+    // The profile over every frame, and where the ball comes back to hit again also
+    // over the frames before that: after many recollisions (b near 2R) the cost
+    // over every frame has a valley too narrow for any grid, while up to the first
+    // return it is smooth in μ_k. Each then fitted on every frame; the better kept.
+    let mut best: Option<(f64, Fitted)> = None;
+    for within in [None, before_return(m)] {
+        if best.is_some() && within.is_none() {
+            continue;
         }
-        p = best.1;
+        let start = profile_mu(pb, evals, &p, i, within.as_deref())?;
+        let (q, idx) = refined(pb, evals, start, &frames)?;
+        let r = pb.residuals(&q, &idx, evals);
+        let cost = r.iter().map(|x| x * x).sum::<f64>() / r.len().max(1) as f64;
+        if best.as_ref().is_none_or(|b| cost < b.0) {
+            best = Some((cost, (q, idx)));
+        }
     }
-    if let Some(i) = mu {
-        p[i] = scan_mu(pb, evals, &p, i)?;
-    }
-    refined(pb, evals, p, &frames)
+    best.map(|b| b.1).ok_or(FitError::TooFewPoints {
+        usable: 0,
+        needed: free.len() + 2,
+    })
 }
 
-/// Other values of c_rr a fit may start from besides the scene's: 0.003 to 0.1, a
-/// factor of about 3 apart (a rolling ball's c_rr lies in 0.001 … 0.05).
-const ROLLING_RESISTANCE_STARTS: [f64; 4] = [0.003, 0.01, 0.03, 0.1];
+/// Fitted free values and the frames they were fitted on.
+type Fitted = (Vec<f64>, Vec<usize>);
 
-/// Factors on the start's v0 a fit with v0 free also starts from: the approach
-/// speed is known to a few per cent, and the cost between is rough (impacts move past
-/// frames as v0 changes): a start a few per cent off found another minimum.
-const V0_STARTS: [f64; 4] = [0.94, 0.97, 1.03, 1.06];
-
-/// The starts of a fit of `free` from the values `p`: `p` itself, and with c_rr free
-/// `p` with each of [`ROLLING_RESISTANCE_STARTS`] in its place, and with v0 free each
-/// of those with v0 moved by [`V0_STARTS`].
-fn starts(free: &[Free], p: &[f64]) -> Vec<Vec<f64>> {
-    let mut out = vec![p.to_vec()];
-    if let Some(i) = free.iter().position(|f| *f == Free::RollingResistance) {
-        out.extend(ROLLING_RESISTANCE_STARTS.iter().map(|&c| {
-            let mut q = p.to_vec();
-            q[i] = c;
-            q
-        }));
-    }
-    if let Some(i) = free.iter().position(|f| *f == Free::V0) {
-        let base = out.clone();
-        for q in &base {
-            out.extend(V0_STARTS.iter().map(|&k| {
-                let mut q = q.clone();
-                q[i] *= k;
-                q
-            }));
+/// The frames of a track before its ball first comes back to where it hit: from the
+/// first frame after the impact, the ball moves away (x below 0 by more than five
+/// scatters and 1 mm) and a frame back over half the way from its farthest point
+/// ends them (at 30 frames/s a ball that hits again at once is never seen nearer). `None` without positions, without such a return, or with fewer than
+/// six frames after the impact before it.
+fn before_return(m: &Measured) -> Option<Vec<usize>> {
+    let x = m.x.as_ref()?;
+    let away = (5.0 * m.stencils.as_ref().map_or(0.0, |s| s.scatter)).max(1e-3);
+    let mut farthest = 0.0_f64;
+    let mut after = 0;
+    let back = m.t.iter().zip(x).position(|(&t, &x)| {
+        if t <= 0.0 || !x.is_finite() {
+            return false;
         }
-    }
-    out
+        after += 1;
+        farthest = farthest.min(x);
+        farthest < -away && x > 0.5 * farthest
+    })?;
+    (after > 6).then(|| (0..back).collect())
 }
 
 /// Every free value together by Levenberg–Marquardt from `p`, on the frames `frames`
@@ -472,18 +473,18 @@ pub(super) fn scored_fit(
     target: Target,
     evals: &mut Evals,
 ) -> Result<Scored, FitError> {
-    scored_fit_within(scene, m, free, target, None, evals)
+    scored_fit_within(scene, m, free, target, Search::Profile, evals)
 }
 
-/// [`scored_fit`] on the frames `within` only (indices of the [`thinned`] series,
-/// sorted), started from `scene`'s values: the refit of a model on the frames every
-/// candidate shares ([`super::choice`]).
+/// [`scored_fit`] searching as `search` says: from `scene`'s values (a model's
+/// optimum carried from another), on the frames every candidate shares
+/// ([`super::choice`]).
 pub(super) fn scored_fit_within(
     scene: &Scene,
     m: &Measured,
     free: &[Free],
     target: Target,
-    within: Option<&[usize]>,
+    search: Search,
     evals: &mut Evals,
 ) -> Result<Scored, FitError> {
     let thin = thinned(m);
@@ -497,7 +498,7 @@ pub(super) fn scored_fit_within(
         free,
         target,
     };
-    let (p, idx) = best_values(&pb, evals, within)?;
+    let (p, idx) = best_values(&pb, evals, search)?;
     let fitted = with(scene, free, &p);
     let (r, labels) = labelled_residuals(&fitted, m, &idx, target, true, evals);
     let n = p.len();

@@ -79,28 +79,66 @@ pub struct InScene {
     pub rest_band: f64,
     /// The measured ball's centre at each measured time, model's x (`ghost`).
     ghost: Vec<f64>,
+    /// Where a track's rim mark turns more than half a turn between frames in this
+    /// scene (rad per frame, [`mark_turn_per_frame`]): its angle cannot be unwrapped
+    /// (each frame's turn read as its nearest branch runs backward), so the mark is
+    /// left out of `measured` (no v_t, no angle) and the fit uses the centre alone.
+    pub mark_aliased: Option<f64>,
 }
 
 /// The series `series` in `scene`: pure, and cheap beside a solve (one pass over the
 /// points), so the lab calls it on every scene change.
 pub fn for_scene(series: &Series, scene: &Scene) -> InScene {
+    let mut mark_aliased = None;
     let measured = match series {
         Series::Velocities(m) => m.clone(),
         Series::Track(m, _) => {
             let r = scene.k() * scene.radius;
+            let turn = m.angle.as_ref().and(mark_turn_per_frame(m, r));
+            mark_aliased = turn.filter(|w| *w > std::f64::consts::PI);
             let scale = |v: &[f64]| v.iter().map(|w| w * r).collect::<Vec<f64>>();
-            Arc::new(Measured {
-                v_t: scale(&m.v_t),
-                v_t_sigma: m.v_t_sigma.as_deref().map(scale),
-                ..(**m).clone()
+            Arc::new(match mark_aliased {
+                Some(_) => Measured {
+                    v_t: vec![f64::NAN; m.v_t.len()],
+                    v_t_sigma: None,
+                    angle: None,
+                    angle_sigma: None,
+                    ..(**m).clone()
+                },
+                None => Measured {
+                    v_t: scale(&m.v_t),
+                    v_t_sigma: m.v_t_sigma.as_deref().map(scale),
+                    ..(**m).clone()
+                },
             })
         }
     };
     InScene {
+        mark_aliased,
         rest_band: crate::study::fit::rest_band(&measured),
         ghost: ghost::track(&measured, scene.radius),
         measured,
     }
+}
+
+/// How far a ball rolling in at the track's approach speed turns between two frames
+/// on the contact radius `r` (m), rad: the fastest |v_cm| before the impact times the
+/// median frame interval over r. `None` without both.
+fn mark_turn_per_frame(m: &Measured, r: f64) -> Option<f64> {
+    let mut steps: Vec<f64> =
+        m.t.iter()
+            .zip(m.t.iter().skip(1))
+            .map(|(a, b)| b - a)
+            .collect();
+    steps.sort_by(f64::total_cmp);
+    let dt = *steps.get(steps.len() / 2)?;
+    let fastest =
+        m.t.iter()
+            .zip(&m.v_cm)
+            .filter(|(t, v)| **t < 0.0 && v.is_finite())
+            .map(|(_, v)| v.abs())
+            .fold(None, |a: Option<f64>, v| Some(a.map_or(v, |a| a.max(v))))?;
+    (r > 0.0).then(|| fastest * dt / r)
 }
 
 impl InScene {

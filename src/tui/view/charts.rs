@@ -361,8 +361,10 @@ fn velocities(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (V
         series.extend(measured_velocities(m, theme));
     }
     let mut vlines = Vec::new();
-    if let (true, State::Ready(Ok(f))) = (app.fit_view(), app.fit().fits()) {
-        let (lines, ends) = line_fit_marks(&f.line_fit, theme);
+    if let (true, State::Ready(Ok(f))) = (app.fit_view(), app.fit().fits())
+        && let Some(l) = &f.line_fit
+    {
+        let (lines, ends) = line_fit_marks(l, theme);
         series.extend(lines);
         vlines.extend(ends);
     }

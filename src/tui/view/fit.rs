@@ -45,7 +45,20 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         State::Ready(Err(e)) => vec![(9, Line::from(Span::styled(e.to_string(), theme.error)))],
         State::Ready(Ok(f)) => {
             let mut lines = sources_lines(app, theme);
-            lines.extend(line_fit_lines(&f.line_fit, app, theme));
+            match (&f.line_fit, &f.no_line_fit) {
+                (Some(l), _) => lines.extend(line_fit_lines(l, app, theme)),
+                // Beside the model fits, which need none.
+                (None, why) => lines.push((
+                    5,
+                    Line::from(Span::styled(
+                        theme.glyphs.text(&format!(
+                            "line fit: not possible ({})",
+                            why.as_ref().map_or_else(String::new, ToString::to_string)
+                        )),
+                        theme.dim,
+                    )),
+                )),
+            }
             paper_row_lines(app, &mut lines, theme);
             model_fits_lines(f, usize::from(inner.width), &mut lines, theme);
             model_choice_lines(&f.models, &mut lines, theme);

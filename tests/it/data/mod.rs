@@ -10,6 +10,7 @@ mod point_sigma;
 mod rules;
 mod scene;
 mod side_by_side;
+mod sources_said;
 mod table_shapes;
 mod tracks;
 mod unfit;

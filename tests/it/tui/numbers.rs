@@ -281,7 +281,7 @@ fn the_fit_panel_shows_the_fits_numbers() {
             (Some(a), None) => text[..a].to_string(),
             _ => text,
         };
-        let (l, m) = (&f.line_fit, &f.model_fit);
+        let (l, m) = (f.line_fit.as_ref().expect("a line fit"), &f.model_fit);
         let what = format!("fit {size:?}");
         let mut checked = 0;
         // μ_k alone has its own line: its numbers are the μ_k row of the models.

@@ -112,6 +112,23 @@ impl Found {
         self.mark_radius.map(|m| m - 3.0 * self.scatter)
     }
 
+    /// The rim mark as [`Found::describe`] names it, `name` quoting a track's name.
+    fn mark_text(&self, name: impl Fn(&str) -> String) -> String {
+        match (&self.mark, self.mark_radius) {
+            (Some(m), Some(r)) => format!(
+                "rim mark {} (at {:.1} from the centre)",
+                name(m),
+                show_small(r, Dimension::Length)
+            ),
+            // Never in a frame with the centre: nothing shows it is a mark.
+            (Some(m), None) => format!(
+                "second track {} (never in a frame with the centre: not known to be a rim mark, no spin measured)",
+                name(m)
+            ),
+            (None, _) => "no rim mark: v_t is not measured, the fits use v_cm (x) only".to_string(),
+        }
+    }
+
     /// What was found, in a few lines for people.
     pub fn describe(&self) -> String {
         let name = |n: &str| {
@@ -125,14 +142,7 @@ impl Found {
             "position track ({}): centre {}, {}; {} frames at {:.1} frames/s, scatter ≈ {:.2}\n",
             self.format,
             name(&self.centre),
-            match &self.mark {
-                Some(m) => format!(
-                    "rim mark {} (at {:.1} from the centre)",
-                    name(m),
-                    show_small(self.mark_radius.unwrap_or(f64::NAN), Dimension::Length)
-                ),
-                None => "no rim mark: v_t is not measured, the fits use v_cm (x) only".to_string(),
-            },
+            self.mark_text(name),
             self.frames,
             self.frame_rate,
             show_small(self.scatter, Dimension::Length)

@@ -46,7 +46,7 @@ impl FitRuns {
     /// the next [`FitRuns::sync`]).
     pub fn move_window(&mut self, lab: &Lab, end: bool, later: bool) -> Result<(), FitWindowError> {
         let fitted = match self.fits.ready() {
-            Some(Ok(f)) => Some((f.line_fit.from, f.line_fit.to)),
+            Some(Ok(f)) => f.line_fit.as_ref().map(|l| (l.from, l.to)),
             _ => None,
         };
         self.window = analyses::moved_fit_window(lab, self.window, fitted, end, later)?;
