@@ -497,7 +497,9 @@ fn the_line_fits_of_a_marked_track_stop_at_rolling_and_the_regime_holds() {
         .unwrap()
         .t;
     let mut mean = 0.0;
-    for seed in 1..=12 {
+    // Six seeds: each track's μ_k,cm has a ± of about 0.002, so their mean's is
+    // under 0.001, well inside the 0.004 asked.
+    for seed in 1..=6 {
         let v = Video {
             fps: 120.0,
             noise: 3e-4,
@@ -526,9 +528,9 @@ fn the_line_fits_of_a_marked_track_stop_at_rolling_and_the_regime_holds() {
             line.to
         );
         assert_eq!(f.model_fit.regime_observed, truth.regime, "seed {seed}");
-        mean += line.mu_cm / 12.0;
+        mean += line.mu_cm / 6.0;
     }
-    // Measured: 0.1719 (12 tracks, each ± about 0.002).
+    // Measured with 12 tracks: 0.1719 (each ± about 0.002).
     assert!((mean - MU).abs() < 0.004, "mean μ_k,cm {mean}");
 }
 

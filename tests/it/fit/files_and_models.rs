@@ -191,9 +191,16 @@ fn no_fit_output_prints_nan() {
             "mu,v0,restitution,rolling_resistance",
         ],
     ];
-    for input in inputs {
-        for format in ["table", "json", "svg"] {
-            let args = [&["fit"], input, &["--format", format]].concat();
+    // The formats print one fit: the figure (svg) is checked on the fit with the most
+    // values free, where a NaN would most likely be.
+    for (i, input) in inputs.iter().enumerate() {
+        let formats: &[&str] = if i + 1 == inputs.len() {
+            &["table", "json", "svg"]
+        } else {
+            &["table", "json"]
+        };
+        for &format in formats {
+            let args = [&["fit"], *input, &["--format", format]].concat();
             let out = groovelab(&args);
             let text = String::from_utf8_lossy(&out.stdout);
             assert!(out.status.success(), "{args:?}: {text}");

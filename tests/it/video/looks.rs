@@ -186,7 +186,7 @@ proptest! {
     // Each case renders, encodes, tracks and fits a clip (a second or more each): few
     // cases, every one a fresh look.
     #![proptest_config(ProptestConfig {
-        cases: 6,
+        cases: 3,
         max_shrink_iters: 0,
         failure_persistence: None,
         ..ProptestConfig::default()
