@@ -266,6 +266,13 @@ pub enum BadValue {
         Flag("free")
     )]
     FreeTwice { name: &'static str },
+    /// `--free` without `mu`: every model the fit knows fits μ_k.
+    #[error(
+        "{} {list} leaves out mu, allowed lists that free μ_k (every model fits it): give {} mu,{list}",
+        Flag("free"),
+        Flag("free")
+    )]
+    FreeWithoutMu { list: String },
     #[error("{} {from} s must be before {} {to} s", Flag("from"), Flag("to"))]
     FitWindowBackwards { from: f64, to: f64 },
     #[error(

@@ -122,5 +122,12 @@ fn free_values(args: &FitArgs) -> Result<Option<Vec<Free>>, CliError> {
         }
         free.push(f);
     }
+    if !free.contains(&Free::Mu) {
+        let names: Vec<&str> = free.iter().map(|f| f.name()).collect();
+        return Err(BadValue::FreeWithoutMu {
+            list: names.join(","),
+        }
+        .into());
+    }
     Ok(Some(free))
 }

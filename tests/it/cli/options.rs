@@ -106,6 +106,13 @@ fn every_option_rejects_bad_values() {
             "--free names mu twice, allowed each value once",
         ),
         (&["--free", "v0,mu,v0"], "names v0 twice"),
+        // Every model fits μ_k: a list without it is refused, naming the fix (it
+        // once failed with "no finite model fit μ_k error").
+        (&["--free", "v0"], "--free v0 leaves out mu"),
+        (
+            &["--free", "v0,restitution"],
+            "give --free mu,v0,restitution",
+        ),
     ];
     for (args, mentions) in fit_cases {
         let mut full = vec!["fit", "--preset", "paper-b4.9"];
