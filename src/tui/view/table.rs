@@ -123,13 +123,7 @@ fn data_table(app: &App, first: usize, area: Rect, buf: &mut Buffer, theme: &The
             ))
         })
     };
-    let title = if g.ascii {
-        "Data and model  (up/down PgUp/PgDn scroll, Esc or q closes)"
-    } else {
-        "Data and model  (↑↓ PgUp PgDn scroll, Esc or q closes)"
-    };
-    // Room for the title beside "↑ more".
-    let title = g.ellipsize(title, usize::from(area.width.saturating_sub(16)));
+    let title = title("Data and model", area, theme);
     scrolling(
         first,
         &title,
@@ -139,6 +133,21 @@ fn data_table(app: &App, first: usize, area: Rect, buf: &mut Buffer, theme: &The
         buf,
         theme,
     );
+}
+
+/// The table's title: `what`, then its keys, cut to leave room beside "↑ more".
+fn title(what: &str, area: Rect, theme: &Theme) -> String {
+    let g = theme.glyphs;
+    let keys = if g.ascii {
+        "up/down PgUp/PgDn scroll, Esc or q closes"
+    } else {
+        "↑↓ PgUp PgDn scroll, Esc or q closes"
+    };
+    g.ellipsize(
+        &format!("{what}  ({keys})"),
+        usize::from(area.width.saturating_sub(16)),
+    )
+    .to_string()
 }
 
 /// The data table's fixed lines, its row count and its width.
@@ -236,12 +245,7 @@ fn unfit_table(m: &Measured, first: usize, area: Rect, buf: &mut Buffer, theme: 
             theme.text,
         ))
     };
-    let title = if g.ascii {
-        "Data, no fit  (up/down PgUp/PgDn scroll, Esc or q closes)"
-    } else {
-        "Data, no fit  (↑↓ PgUp PgDn scroll, Esc or q closes)"
-    };
-    let title = g.ellipsize(title, usize::from(area.width.saturating_sub(16)));
+    let title = title("Data, no fit", area, theme);
     scrolling(
         first,
         &title,

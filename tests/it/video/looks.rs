@@ -26,6 +26,16 @@ enum Outcome {
     Unfitted { scale: (f64, f64), line: String },
 }
 
+/// `fit` of the tracks file `tracks` in the scene the looks are filmed in (R = 2.75 cm,
+/// b = 4.9 cm), as JSON: exit status, stdout, stderr.
+fn fit_json(dir: &Path, tracks: &Path) -> (i32, String, String) {
+    let tracks = tracks.to_str().unwrap();
+    let args = [
+        "fit", "--data", tracks, "--radius", "2.75cm", "--width", "4.9cm", "--format", "json",
+    ];
+    run(dir, &args)
+}
+
 /// Runs the binary with `args`, its cache in `dir`: exit status, stdout, stderr.
 fn run(dir: &Path, args: &[&str]) -> (i32, String, String) {
     let out = Command::new(env!("CARGO_BIN_EXE_groovelab"))
@@ -105,20 +115,7 @@ fn outcome(dir: &Path, clip: &Clip) -> Outcome {
         return Outcome::Refused(refusal(code, &err, "track"));
     }
     let scale = scale_line(&out).unwrap_or_else(|| panic!("no scale line:\n{out}"));
-    let (code, out, err) = run(
-        dir,
-        &[
-            "fit",
-            "--data",
-            tracks.to_str().unwrap(),
-            "--radius",
-            "2.75cm",
-            "--width",
-            "4.9cm",
-            "--format",
-            "json",
-        ],
-    );
+    let (code, out, err) = fit_json(dir, &tracks);
     if code != 0 {
         let line = refusal(code, &err, "fit");
         return Outcome::Unfitted { scale, line };
@@ -365,20 +362,7 @@ fn measure(dir: &Path, clip: &Clip) -> Row {
     }
     let tracks = dir.join("tracks.txt");
     std::fs::write(&tracks, done.text()).unwrap();
-    let (code, out, err) = run(
-        dir,
-        &[
-            "fit",
-            "--data",
-            tracks.to_str().unwrap(),
-            "--radius",
-            "2.75cm",
-            "--width",
-            "4.9cm",
-            "--format",
-            "json",
-        ],
-    );
+    let (code, out, err) = fit_json(dir, &tracks);
     match code {
         0 => {
             let j: serde_json::Value = serde_json::from_str(&out).unwrap();
