@@ -14,8 +14,6 @@ use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicBool, Ordering};
 
-use crate::input::file::kind;
-
 /// Why an output was not written.
 #[derive(Debug, thiserror::Error)]
 pub enum OutputError {
@@ -220,6 +218,29 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
     let mut file = AtomicFile::create(path)?;
     file.write_bytes(bytes)?;
     file.commit(crate::signals::stop_flag())
+}
+
+/// The kind of a non-regular file, for messages ("a FIFO", "a directory").
+pub fn kind(meta: &std::fs::Metadata) -> &'static str {
+    let t = meta.file_type();
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        if t.is_fifo() {
+            return "a FIFO";
+        }
+        if t.is_char_device() || t.is_block_device() {
+            return "a device";
+        }
+        if t.is_socket() {
+            return "a socket";
+        }
+    }
+    if t.is_dir() {
+        "a directory"
+    } else {
+        "not a regular file"
+    }
 }
 
 #[cfg(test)]

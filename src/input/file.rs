@@ -2,6 +2,7 @@
 //! symlinks), checked against a size limit before a byte is read, so `/dev/zero`, a
 //! FIFO or a directory fail at once instead of hanging or filling memory.
 
+use crate::output::kind;
 use std::io::Read;
 use std::path::Path;
 
@@ -58,29 +59,6 @@ pub enum Unreadable {
     /// The `byte`-th byte (from 1) starts no UTF-8 character.
     #[error("byte {byte} is not UTF-8 text, allowed a UTF-8 text file")]
     NotUtf8 { byte: usize },
-}
-
-/// The kind of a non-regular file, for messages ("a FIFO", "a directory").
-pub fn kind(meta: &std::fs::Metadata) -> &'static str {
-    let t = meta.file_type();
-    #[cfg(unix)]
-    {
-        use std::os::unix::fs::FileTypeExt;
-        if t.is_fifo() {
-            return "a FIFO";
-        }
-        if t.is_char_device() || t.is_block_device() {
-            return "a device";
-        }
-        if t.is_socket() {
-            return "a socket";
-        }
-    }
-    if t.is_dir() {
-        "a directory"
-    } else {
-        "not a regular file"
-    }
 }
 
 /// Reads `path` as UTF-8 text if it is a regular file of at most `limit` bytes;

@@ -266,6 +266,17 @@ impl Solution {
         })
     }
 
+    /// Ball `i`'s state and spin angle at `t` from one segment lookup: what
+    /// [`Solution::at`] and [`Solution::angle_at`] give, for the fit's inner loop.
+    pub fn ball_and_angle(&self, i: usize, t: f64) -> (BallState, f64) {
+        let seg = self.segment_at(t);
+        let r = self.scene.k() * self.scene.radius;
+        let tau = t - seg.t0;
+        let (_, du) = seg.accel[i];
+        let angle = seg.angle0[i] + (seg.start[i].u * tau + 0.5 * du * tau * tau) / r;
+        (Self::ball_at(seg, i, t), angle)
+    }
+
     /// The energy at the start of the span, before anything that happens at that
     /// instant: with `t_start = 0` the energy just before the first impact (both balls
     /// rolling in at v0, nothing lost yet), not after it.

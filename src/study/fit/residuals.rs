@@ -314,31 +314,30 @@ fn position_rows(
         return Vec::new();
     };
     let theta0 = sol.angle_at(0.0)[0];
-    let turn = m.angle.as_ref().map(|a| {
-        branch_offset(
-            idx.iter()
-                .map(|&i| sol.angle_at(m.t[i] + clock)[0] - theta0 - a[i]),
-        )
-    });
+    // One segment lookup per frame: the state and the angle come from the same one.
+    let at: Vec<(usize, crate::physics::model::BallState, f64)> = idx
+        .iter()
+        .map(|&i| {
+            let t = m.t[i] + clock;
+            let (s, angle) = sol.ball_and_angle(0, t);
+            (i, s, angle)
+        })
+        .collect();
+    let turn = m
+        .angle
+        .as_ref()
+        .map(|a| branch_offset(at.iter().map(|&(i, _, angle)| angle - theta0 - a[i])));
     let w = point_weights(m, weighted, radius);
     let times = |row: [f64; 4], w: f64| row.map(|v| v * w);
     let mut rows: Vec<([f64; 4], Label)> = Vec::with_capacity(2 * idx.len());
-    for &i in idx {
-        let t = m.t[i] + clock;
-        let s = sol.at(t);
+    for &(i, s, angle) in &at {
         rows.push((
-            times(
-                [s.left.x + scene.radius - x[i], s.left.v, -1.0, 0.0],
-                w.0(i),
-            ),
+            times([s.x + scene.radius - x[i], s.v, -1.0, 0.0], w.0(i)),
             (i, false),
         ));
         if let (Some(a), Some(c)) = (&m.angle, turn) {
-            let d = same_turn(sol.angle_at(t)[0] - theta0 - a[i], c);
-            rows.push((
-                times([radius * d, s.left.u, 0.0, -radius], w.1(i)),
-                (i, true),
-            ));
+            let d = same_turn(angle - theta0 - a[i], c);
+            rows.push((times([radius * d, s.u, 0.0, -radius], w.1(i)), (i, true)));
         }
     }
     rows.retain(|(row, _)| row.iter().all(|v| v.is_finite()));
@@ -399,17 +398,20 @@ fn same_turn(d: f64, centre: f64) -> f64 {
 /// [`position_rows`], profiled out of the fit (zero when they cannot be solved).
 fn profiled_shift(rows: &[([f64; 4], Label)], mark: bool) -> Vec<f64> {
     let k = if mark { 3 } else { 2 };
-    let mut ata = vec![vec![0.0; k]; k];
-    let mut atb = vec![0.0; k];
+    // Fixed-size sums: this runs on every row of every model evaluation.
+    let mut ata = [[0.0; 3]; 3];
+    let mut atb = [0.0; 3];
     for (row, _) in rows {
-        for a in 0..k {
-            atb[a] -= row[1 + a] * row[0];
-            for b in 0..k {
-                ata[a][b] += row[1 + a] * row[1 + b];
+        let [r, d @ ..] = *row;
+        for a in 0..3 {
+            atb[a] -= d[a] * r;
+            for b in 0..3 {
+                ata[a][b] += d[a] * d[b];
             }
         }
     }
-    solve(ata, atb).unwrap_or_else(|| vec![0.0; k])
+    let ata = ata.iter().take(k).map(|row| row[..k].to_vec()).collect();
+    solve(ata, atb[..k].to_vec()).unwrap_or_else(|| vec![0.0; k])
 }
 
 /// A position track's centre where the model's left ball would be (x − R, m) at each

@@ -1,14 +1,15 @@
-//! Layers of the source: folders, each using only those above it (physics → settings → methods → study → lab → the
-//! edges): no source file of a layer names a later one, none imports itself through
-//! others, no function runs over 100 lines, and no number is put in a unit by hand
-//! outside the one unit table.
+//! Layers of the source: folders, each using only those above it (physics → settings →
+//! methods → vision → study → lab → the edges): no source file of a layer names a later
+//! one, none imports itself through others, no two folders import each other, `output`
+//! needs nothing from `input`, no function runs over 100 lines, and no number is put in
+//! a unit by hand outside the one unit table.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::path::{Path, PathBuf};
 
 /// The inner layers in order; everything else (`input`, `output`, `signals`, `cli`,
 /// `tui`) is an edge and may use them all.
-const LAYERS: [&str; 5] = ["physics", "settings", "methods", "study", "lab"];
+const LAYERS: [&str; 6] = ["physics", "settings", "methods", "vision", "study", "lab"];
 
 const EDGES: [&str; 5] = ["input", "output", "signals", "cli", "tui"];
 
@@ -44,6 +45,28 @@ fn no_layer_uses_a_later_one() {
         }
     }
     assert!(bad.is_empty(), "upward imports:\n{}", bad.join("\n"));
+}
+
+/// The edges use the inner layers, and `output` (the one file writer) none of the
+/// other edges: what a writer needs to name a file's kind lives with it.
+#[test]
+fn output_uses_no_other_edge() {
+    let src = Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let text = std::fs::read_to_string(src.join("output.rs")).unwrap();
+    let bad: Vec<&str> = text
+        .lines()
+        .filter(|line| {
+            let code = line.split("//").next().unwrap_or("");
+            ["input", "cli", "tui"]
+                .iter()
+                .any(|e| code.contains(&format!("crate::{e}::")))
+        })
+        .collect();
+    assert!(
+        bad.is_empty(),
+        "output.rs uses another edge:\n{}",
+        bad.join("\n")
+    );
 }
 
 /// One token of a source with its comments, strings and characters taken out: a word
