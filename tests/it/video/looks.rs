@@ -337,6 +337,13 @@ fn measure(dir: &Path, clip: &Clip) -> Row {
         Ok(Ok(Some(done))) => done,
     };
     let c = &done.tracks.calibration;
+    eprintln!(
+        "{}: radius {:.3} ± {:.3} px, truth {:.3}",
+        clip.name,
+        c.radius_px,
+        c.radius_px_sigma,
+        film.scene.radius * film.px_per_m()
+    );
     row.scale_z = Some((c.px_per_m - film.px_per_m()) / c.px_per_m_sigma.max(1e-12));
     for b in &done.view.balls {
         for (k, (centre, mark)) in b.centre.iter().zip(&b.mark).enumerate() {
