@@ -152,7 +152,7 @@ pub struct BallTrack {
     pub unseen: usize,
     pub merged: usize,
     pub poor: usize,
-    /// Frames with the ball but not its mark (hidden by the rail or too near it).
+    /// Frames with the ball but not its mark (hidden by the rail, too near it, or left out by `mark_check`: not turning with the ball).
     pub mark_missing: usize,
 }
 

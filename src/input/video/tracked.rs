@@ -274,7 +274,7 @@ fn ball_line(b: &BallTrack, frames: usize) -> String {
         format!(" (left out, not filled in: {})", out.join(", "))
     };
     format!(
-        "{} ball: centre in {tracked} of {frames} frames{left_out}; mark in {} ({} hidden by the rail or too near it)",
+        "{} ball: centre in {tracked} of {frames} frames{left_out}; mark in {} ({} not found: hidden by the rail, too near it, or not turning with the ball)",
         b.name,
         tracked - b.mark_missing,
         b.mark_missing
