@@ -34,9 +34,15 @@ pub struct Outline {
     pub polarity: f64,
 }
 
+/// The polarity that keeps edge points of both signs: a ball on a wall of its own
+/// brightness (stripes, squares, grain) is brighter than some of it and darker
+/// than the rest.
+pub const EITHER: f64 = 2.0;
+
 /// Fits the outline of the ball near `guess`, searching `band` px either side of it;
-/// `polarity` the ball's (+1 brighter, −1 darker than around it), or 0 to take the
-/// sign most edge points have. `None` when too few edge points are found.
+/// `polarity` the ball's (+1 brighter, −1 darker than around it), 0 to take the
+/// sign most edge points have, or [`EITHER`] to take both. `None` when too few edge
+/// points are found.
 #[allow(clippy::indexing_slicing)] // the median of a non-empty list (at least 12 points, checked above)
 pub fn fit(img: &Gray, guess: Circle, band: f64, polarity: f64) -> Option<Outline> {
     let (points, sign) = edge_points(img, guess, band, polarity)?;
@@ -249,6 +255,10 @@ fn edge_points(
     if found.len() < 12 {
         return None;
     }
+    if polarity == EITHER {
+        found.retain(|f| f.2 != 0.0);
+        return Some((strong_points(found)?, EITHER));
+    }
     let sign = if polarity != 0.0 {
         polarity
     } else {
@@ -256,14 +266,108 @@ fn edge_points(
         if s >= 0.0 { 1.0 } else { -1.0 }
     };
     found.retain(|f| f.2 == sign);
-    // Weak maxima are noise: keep those above a quarter of the strong ones.
+    Some((strong_points(found)?, sign))
+}
+
+/// The edge points of `found` (point, gradient, sign) above a quarter of the strong
+/// ones' gradient: weak maxima are noise.
+fn strong_points(found: Vec<([f64; 2], f32, f64)>) -> Option<Vec<[f64; 2]>> {
     let mut mags: Vec<f32> = found.iter().map(|f| f.1).collect();
     mags.sort_by(f32::total_cmp);
     let strong = *mags.get(mags.len() * 3 / 4)?;
-    let pts = found
-        .into_iter()
-        .filter(|f| f.1 >= 0.25 * strong)
-        .map(|f| f.0)
-        .collect();
-    Some((pts, sign))
+    Some(
+        found
+            .into_iter()
+            .filter(|f| f.1 >= 0.25 * strong)
+            .map(|f| f.0)
+            .collect(),
+    )
+}
+
+/// How far the outline's edge moves when it is defined otherwise, px, per ray of
+/// the visible arc (above `lowest`, where the rail hides the ball): the crossing of
+/// the level half-way between the luma `k` px inside and `k` px outside the fitted
+/// circle, for `k` 2 and 4 px, each the median over the rays with a step there
+/// (signed, + outward). A clean blurred step gives the same edge by every
+/// definition (all about 0); a ball whose own shading runs steeply into a limb of
+/// little contrast with the wall (shaded, glossy, wooden balls) gives edges that
+/// differ by up to a pixel, and that spread is how unsure the edge, and so the
+/// radius and the scale, is. `None` when too few rays show a step.
+pub fn edge_offsets(img: &Gray, o: &Outline) -> Option<[f64; 2]> {
+    let c = o.circle;
+    let mut offsets: [Vec<f64>; 2] = [Vec::new(), Vec::new()];
+    for i in 0..72 {
+        let a = f64::from(i) * std::f64::consts::TAU / 72.0;
+        let (ux, uy) = (a.cos(), a.sin());
+        // Below the lowest edge point the rail hides the ball.
+        if c.y + (c.r + 4.0) * uy > o.lowest {
+            continue;
+        }
+        let level = |s: f64| bilinear(img, c.x + (c.r + s) * ux, c.y + (c.r + s) * uy);
+        for (k, list) in [2.0, 4.0].into_iter().zip(offsets.iter_mut()) {
+            if let Some(s) = crossing(&level, k) {
+                list.push(s);
+            }
+        }
+    }
+    let [a, b] = offsets;
+    if a.len() < 8 || b.len() < 8 {
+        return None;
+    }
+    Some([middle(a)?, middle(b)?])
+}
+
+/// Where the profile `level(s)` (s px outward from the circle) crosses the level
+/// half-way between `level(−k)` and `level(k)`, nearest to 0; `None` without a
+/// step of at least 8 levels there.
+fn crossing(level: &impl Fn(f64) -> Option<f64>, k: f64) -> Option<f64> {
+    let (inner, outer) = (level(-k)?, level(k)?);
+    if (inner - outer).abs() < 8.0 {
+        return None;
+    }
+    let half = 0.5 * (inner + outer);
+    let step = 0.25;
+    let n = (2.0 * k / step).round() as usize;
+    let mut best: Option<f64> = None;
+    let mut prev = (-k, inner - half);
+    for j in 1..=n {
+        let s = -k + j as f64 * step;
+        let v = level(s)? - half;
+        if prev.1 == 0.0 || prev.1.signum() != v.signum() {
+            let at = if v == prev.1 {
+                prev.0
+            } else {
+                prev.0 + step * prev.1 / (prev.1 - v)
+            };
+            if best.is_none_or(|b| at.abs() < b.abs()) {
+                best = Some(at);
+            }
+        }
+        prev = (s, v);
+    }
+    best
+}
+
+/// The median of `v`, `None` when empty.
+fn middle(mut v: Vec<f64>) -> Option<f64> {
+    v.sort_by(f64::total_cmp);
+    v.get(v.len() / 2).copied()
+}
+
+/// The luma at `(x, y)` interpolated between the four pixels around it; `None`
+/// outside the frame.
+fn bilinear(img: &Gray, x: f64, y: f64) -> Option<f64> {
+    if !(x >= 0.0 && y >= 0.0) {
+        return None;
+    }
+    let (i, j) = (x.floor() as usize, y.floor() as usize);
+    if i + 1 >= img.width || j + 1 >= img.height {
+        return None;
+    }
+    let (fx, fy) = (x - i as f64, y - j as f64);
+    let p = |a: usize, b: usize| f64::from(img.get(a, b));
+    Some(
+        (p(i, j) * (1.0 - fx) + p(i + 1, j) * fx) * (1.0 - fy)
+            + (p(i, j + 1) * (1.0 - fx) + p(i + 1, j + 1) * fx) * fy,
+    )
 }

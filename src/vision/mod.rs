@@ -3,7 +3,8 @@
 //! `params::Params`, the bench's background learned from the clip (`background`),
 //! a coarse look for what differs from it in ball-shaped blobs (`detect`), each
 //! ball's outline fitted to sub-pixel accuracy on its visible edge (`circle`), its
-//! mark (`mark`), both followed through the frames (`tracker`), turned into metres
+//! mark (`mark`), both followed through the frames (`tracker`), marks that do not
+//! turn with their ball left out (`mark_check`), turned into metres
 //! and seconds along the groove (`tracks`) and written as a Tracker-style file
 //! (`write`), with small pictures of the frames for the app (`thumbs`), and drawn
 //! over the frames for a user to check (`overlay`). Pure: the frames come from
@@ -30,7 +31,7 @@
 
 /// The tracker's own version: raised whenever a change makes it find other numbers
 /// in the same video (cached tracks are keyed by it, not by the program's version).
-pub const VERSION: u32 = 2;
+pub const VERSION: u32 = 3;
 
 pub mod background;
 pub mod circle;
@@ -38,6 +39,7 @@ pub mod detect;
 pub mod frame;
 pub mod gray;
 pub mod mark;
+pub mod mark_check;
 pub mod overlay;
 pub mod params;
 pub mod thumbs;

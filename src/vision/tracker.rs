@@ -75,6 +75,8 @@ pub struct Tracker {
     learned_at: usize,
     /// Marks found darker and lighter than their ball, before the sign is settled.
     mark_votes: [usize; 2],
+    /// Each fit's edge by other definitions (`circle::edge_offsets`), px.
+    edges: Vec<[f64; 2]>,
 }
 
 /// An outline and how it was found.
@@ -143,6 +145,12 @@ impl Tracker {
     /// Every radius fitted, px.
     pub fn radii(&self) -> &[f64] {
         &self.radii
+    }
+
+    /// How far each fit's edge moves by other definitions of it
+    /// (`circle::edge_offsets`), px.
+    pub fn edge_offsets(&self) -> &[[f64; 2]] {
+        &self.edges
     }
 
     /// Offers one frame to learn the background from (before any [`Tracker::push`]).
@@ -307,6 +315,9 @@ impl Tracker {
                     }
                 }
                 self.radii.push(o.circle.r);
+                if let Some(e) = circle::edge_offsets(img, &o) {
+                    self.edges.push(e);
+                }
                 if !self.seeded && (self.radii.len() <= 64 || self.radii.len().is_multiple_of(256))
                 {
                     self.radius = median(&self.radii);
@@ -417,11 +428,22 @@ impl Tracker {
         let guess = self.predicted_near(guess).unwrap_or(guess);
         let p = self.params;
         let o = match self.outline(&frame.luma, guess, band, self.polarity) {
-            Some(o) => o,
-            // A ball of the wall's brightness: its outline in colour.
-            None => self
-                .colour_outline(frame, guess, band)
-                .ok_or(LeftOut::Poor)?,
+            Some(o) if o.outline.coverage >= p.min_coverage => o,
+            // Too little outline of one sign: a ball on a wall of its brightness,
+            // brighter than part of the wall and darker than the rest. Its edge of
+            // both signs, else (a ball of the wall's brightness) in colour.
+            weak => {
+                let either = (self.polarity != circle::EITHER)
+                    .then(|| self.outline(&frame.luma, guess, band, circle::EITHER))
+                    .flatten()
+                    .filter(|o| o.outline.coverage >= p.min_coverage);
+                match (either, weak) {
+                    (Some(o), _) | (None, Some(o)) => o,
+                    (None, None) => self
+                        .colour_outline(frame, guess, band)
+                        .ok_or(LeftOut::Poor)?,
+                }
+            }
         };
         let c = o.outline.circle;
         let r_ok = self

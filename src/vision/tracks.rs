@@ -69,6 +69,45 @@ const FEWEST_SEEN: usize = 3;
 /// the scale.
 pub const EDGE_SYSTEMATIC: f64 = 0.05;
 
+/// How unsure the balls' edge is, px: the spread of the edge's place by its
+/// definitions (the gradient's peak the fit uses, 0, and the half-way crossings of
+/// `circle::edge_offsets`, each the median over the frames), at least
+/// [`EDGE_SYSTEMATIC`]. Nothing tells which definition is right on a ball whose
+/// shading runs into a limb of little contrast, so the whole spread is taken.
+fn edge_systematic(offsets: &[[f64; 2]]) -> f64 {
+    let at = |i: usize| {
+        median(
+            &offsets
+                .iter()
+                .filter_map(|o| o.get(i).copied())
+                .collect::<Vec<_>>(),
+        )
+    };
+    let (a, b) = (at(0).unwrap_or(0.0), at(1).unwrap_or(0.0));
+    let spread = a.max(b).max(0.0) - a.min(b).min(0.0);
+    spread.max(EDGE_SYSTEMATIC)
+}
+
+/// How far the two balls' median fitted radii differ, px (0 with one ball).
+#[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
+fn between_balls(frames: &[FrameFixes], slots: &[usize]) -> f64 {
+    let medians: Vec<f64> = slots
+        .iter()
+        .filter_map(|&s| {
+            let r: Vec<f64> = frames
+                .iter()
+                .filter_map(|f| f[s].as_ref().ok())
+                .map(|fix| fix.outline.circle.r)
+                .collect();
+            median(&r)
+        })
+        .collect();
+    match medians.as_slice() {
+        [a, b] => (a - b).abs(),
+        _ => 0.0,
+    }
+}
+
 /// How pixels become metres.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct Calibration {
@@ -77,8 +116,9 @@ pub struct Calibration {
     pub px_per_m_sigma: f64,
     /// True when given (`--scale`), false when from the fitted radius.
     pub scale_given: bool,
-    /// The balls' median fitted radius, px, and its standard error (the frames'
-    /// scatter and [`EDGE_SYSTEMATIC`]).
+    /// The balls' median fitted radius, px, and its standard error: the median's
+    /// own and the edge's systematic (the larger of the edge's definitions' spread,
+    /// the single frames' scatter, the two balls' difference, and [`EDGE_SYSTEMATIC`]).
     pub radius_px: f64,
     pub radius_px_sigma: f64,
     /// The radius R the scale comes from, m.
@@ -112,7 +152,7 @@ pub struct BallTrack {
     pub unseen: usize,
     pub merged: usize,
     pub poor: usize,
-    /// Frames with the ball but not its mark (hidden by the rail or too near it).
+    /// Frames with the ball but not its mark (hidden by the rail, too near it, or left out by `mark_check`: not turning with the ball).
     pub mark_missing: usize,
 }
 
@@ -133,7 +173,7 @@ pub fn tracks(
     radius: f64,
     scale: Option<f64>,
 ) -> Result<Tracks, TracksError> {
-    let frames = &ordered(&tracker.frames);
+    let frames = &super::mark_check::checked(&ordered(&tracker.frames));
     let mut slots = balls_seen(tracker, frames)?;
     let centres: Vec<Vec<[f64; 2]>> = (0..2).map(|s| centres_of(frames, s)).collect();
     let (angle, angle_se, found) =
@@ -147,7 +187,16 @@ pub fn tracks(
     let mut dev: Vec<f64> = radii.iter().map(|r| (r - r_px).abs()).collect();
     dev.sort_by(f64::total_cmp);
     let r_stat = 1.4826 * dev[dev.len() / 2] * 1.2533 / (radii.len() as f64).sqrt();
-    let r_se = r_stat.hypot(EDGE_SYSTEMATIC);
+    // How unsure the edge is beyond the frames' mean: the edge's definitions
+    // disagreeing, the single frames' radii scattering (a bias that the shading, a
+    // blur or the wall puts into every frame alike does not average out over them:
+    // the frames' scatter, not its standard error, bounds it), and the two balls'
+    // radii differing (both have one radius).
+    let frame_sd = 1.4826 * dev.get(dev.len() / 2).copied().unwrap_or(0.0);
+    let systematic = edge_systematic(tracker.edge_offsets())
+        .max(frame_sd)
+        .max(between_balls(frames, &slots));
+    let r_se = r_stat.hypot(systematic);
     // Never a confident wrong scale: radii that disagree are no ball's (the mark, a
     // highlight or clutter taken for one in part of the frames).
     let spread = 1.4826 * dev.get(dev.len() / 2).copied().unwrap_or(0.0) / r_px;

@@ -7,13 +7,6 @@
 
 // Tracker rewrites this file (src/input/video is being reworked beside issue 35);
 // its indexing, unwrap and expect are converted to `get` and errors after that.
-#![allow(
-    clippy::indexing_slicing,
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::panic
-)]
-
 use std::io::Read;
 use std::path::Path;
 use std::process::{Child, ChildStdout, Command, Stdio};

@@ -5,13 +5,6 @@
 
 // Tracker rewrites this file (src/input/video is being reworked beside issue 35);
 // its indexing, unwrap and expect are converted to `get` and errors after that.
-#![allow(
-    clippy::indexing_slicing,
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::panic
-)]
-
 use std::path::{Path, PathBuf};
 
 use super::info::{Frames, Info, Limits};
@@ -50,19 +43,25 @@ pub(super) fn open(dir: &Path, limits: &Limits) -> Result<(Info, Frames), VideoE
         }
     }
     frames.sort();
-    if let Some(w) = frames.windows(2).find(|w| w[0].0 == w[1].0) {
+    let same = frames.windows(2).find_map(|w| match w {
+        [a, b] if a.0 == b.0 => Some((a, b)),
+        _ => None,
+    });
+    if let Some((a, b)) = same {
         return Err(err(VideoProblem::SameFrameNumber {
-            first: w[0].1.clone(),
-            second: w[1].1.clone(),
-            number: w[0].0,
+            first: a.1.clone(),
+            second: b.1.clone(),
+            number: a.0,
         }));
     }
-    if frames.len() < 2 {
-        return Err(err(VideoProblem::TooFewImages {
-            frames: frames.len(),
-        }));
-    }
-    let first = read(&frames[0].1)?;
+    let first = match frames.as_slice() {
+        [first, _, ..] => read(&first.1)?,
+        _ => {
+            return Err(err(VideoProblem::TooFewImages {
+                frames: frames.len(),
+            }));
+        }
+    };
     let (w, h) = (first.width(), first.height());
     let pixels = (w * h) as f64 * frames.len() as f64;
     if pixels > limits.pixels || w > limits.side || h > limits.side {
@@ -76,8 +75,10 @@ pub(super) fn open(dir: &Path, limits: &Limits) -> Result<(Info, Frames), VideoE
     }
     let gaps = frames
         .windows(2)
-        .filter(|p| p[1].0 > p[0].0 + 1)
-        .map(|p| [p[0].0 + 1, p[1].0 - 1])
+        .filter_map(|p| match p {
+            [a, b] if b.0 > a.0 + 1 => Some([a.0 + 1, b.0 - 1]),
+            _ => None,
+        })
         .collect();
     let info = Info {
         kind: "folder of PNG/JPEG frames".into(),

@@ -6,13 +6,6 @@
 
 // Tracker rewrites this file (src/input/video is being reworked beside issue 35);
 // its indexing, unwrap and expect are converted to `get` and errors after that.
-#![allow(
-    clippy::indexing_slicing,
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::panic
-)]
-
 use std::path::Path;
 use std::process::Command;
 
@@ -83,6 +76,7 @@ fn rate(text: &str) -> Option<f64> {
 
 impl Probe {
     /// What the file holds, refused when it is no video or too large for `limits`.
+    #[allow(clippy::indexing_slicing)] // serde_json's `Value[key]` gives Null for a missing key, never panics
     pub fn info(&self, file: &Path, limits: &Limits) -> Result<Info, VideoError> {
         let err = |what: VideoProblem| VideoError::new(file, what);
         let streams = self.json["streams"].as_array().cloned().unwrap_or_default();
@@ -160,6 +154,7 @@ impl Probe {
 }
 
 /// The stream's rotation in degrees (a phone held upright), if any.
+#[allow(clippy::indexing_slicing)] // serde_json's `Value[key]` gives Null for a missing key, never panics
 fn rotation(v: &Value) -> Option<f64> {
     let side = v["side_data_list"].as_array().and_then(|l| {
         l.iter().find_map(|d| {

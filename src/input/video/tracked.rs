@@ -6,13 +6,6 @@
 
 // Tracker rewrites this file (src/input/video is being reworked beside issue 35);
 // its indexing, unwrap and expect are converted to `get` and errors after that.
-#![allow(
-    clippy::indexing_slicing,
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::panic
-)]
-
 use super::{Info, Limits, RateSource, VideoError, VideoProblem};
 use crate::settings::units::{Dimension, show, show_small, with_uncertainty};
 use crate::study::Progress;
@@ -123,12 +116,14 @@ pub fn track(
         }
         track_one(&img, &mut tracker);
     }
-    if numbers.len() < 2 {
-        return Err(err(VideoProblem::TooFewFrames {
-            frames: numbers.len(),
-        }));
-    }
-    let first = numbers[0];
+    let first = match numbers.as_slice() {
+        [first, _, ..] => *first,
+        _ => {
+            return Err(err(VideoProblem::TooFewFrames {
+                frames: numbers.len(),
+            }));
+        }
+    };
     let times = numbers.iter().map(|n| (n - first) as f64 / fps).collect();
     let tracks = vision::tracks(&tracker, times, options.radius, options.px_per_m)
         .map_err(|e| err(e.into()))?;
@@ -228,8 +223,7 @@ fn notes(
     } else {
         "groove direction not found (the paths are too short): taken as level in the picture".into()
     });
-    if tracks.balls.len() == 1 {
-        let b = &tracks.balls[0];
+    if let [b] = tracks.balls.as_slice() {
         n.push(format!(
             "one ball in view: tracked as the {} ball (it moves {} at first); no second ball",
             b.name,
@@ -280,7 +274,7 @@ fn ball_line(b: &BallTrack, frames: usize) -> String {
         format!(" (left out, not filled in: {})", out.join(", "))
     };
     format!(
-        "{} ball: centre in {tracked} of {frames} frames{left_out}; mark in {} ({} hidden by the rail or too near it)",
+        "{} ball: centre in {tracked} of {frames} frames{left_out}; mark in {} ({} not found: hidden by the rail, too near it, or not turning with the ball)",
         b.name,
         tracked - b.mark_missing,
         b.mark_missing

@@ -4,13 +4,6 @@
 
 // Tracker rewrites this file (src/input/video is being reworked beside issue 35);
 // its indexing, unwrap and expect are converted to `get` and errors after that.
-#![allow(
-    clippy::indexing_slicing,
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::panic
-)]
-
 use std::io::Write;
 use std::path::Path;
 use std::process::{Command, Stdio};
@@ -73,7 +66,12 @@ pub fn video(
         .stderr(Stdio::piped())
         .spawn()
         .map_err(|e| err(VideoProblem::cannot_run("ffmpeg", e)))?;
-    let mut stdin = child.stdin.take().expect("piped");
+    let mut stdin = child.stdin.take().ok_or_else(|| {
+        err(VideoProblem::cannot_run(
+            "ffmpeg",
+            std::io::Error::other("its input could not be opened"),
+        ))
+    })?;
     let mut broken = None;
     for f in frames {
         if let Err(e) = stdin.write_all(&f) {

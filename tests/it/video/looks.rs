@@ -199,7 +199,7 @@ proptest! {
     /// Whatever the look: μ_k within max(0.015, 2 ±) of the truth or a one-line
     /// refusal; the scale within 2 of its ±; never a panic.
     #[test]
-    #[ignore = "fails on the tracker of 2026-11-28 (one pass): a confident wrong scale (448.8 ± 3.1 px/m for 439.9, a glossy ball whose shaded limb pulls the fitted edge outward) on a glossy ball on a same-brightness checkered wall, 300p; see BENCHMARKS.md, the looks table"]
+    #[ignore = "fails on the tracker of 2026-11-28 (vision::VERSION 3): a wrong scale beyond 2 of its ± on some small looks (555.0 ± 21.8 px/m for 471.0: a coloured ball on a light cluttered wall, 270p, 50 fps, radii consistent within 5 % but of something else); the 48 full-size looks of BENCHMARKS.md have none beyond 2 ±"]
     fn every_random_look_is_measured_right_or_refused_in_one_line(seed in any::<u64>()) {
         check(seed, true)?;
     }
@@ -337,6 +337,13 @@ fn measure(dir: &Path, clip: &Clip) -> Row {
         Ok(Ok(Some(done))) => done,
     };
     let c = &done.tracks.calibration;
+    eprintln!(
+        "{}: radius {:.3} ± {:.3} px, truth {:.3}",
+        clip.name,
+        c.radius_px,
+        c.radius_px_sigma,
+        film.scene.radius * film.px_per_m()
+    );
     row.scale_z = Some((c.px_per_m - film.px_per_m()) / c.px_per_m_sigma.max(1e-12));
     for b in &done.view.balls {
         for (k, (centre, mark)) in b.centre.iter().zip(&b.mark).enumerate() {
