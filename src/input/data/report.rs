@@ -131,10 +131,10 @@ pub fn inspect(
     };
     Ok(match raw {
         RawSeries::Velocities(m) => {
-            let t = &m.t;
+            let t = &m.t();
             let before: Vec<f64> = (0..t.len())
                 .filter(|&i| t[i] < 0.0)
-                .map(|i| m.v_cm[i])
+                .map(|i| m.v_cm()[i])
                 .collect();
             Report {
                 approach_speed: (!before.is_empty())
@@ -142,7 +142,7 @@ pub fn inspect(
                 impacts: vec![0.0],
                 impact_note: format!(
                     "first impact found; the times above are from it (t = 0){}",
-                    if m.mirrored {
+                    if m.mirrored() {
                         "; the file's x runs away from the other ball: read mirrored"
                     } else {
                         ""
@@ -173,8 +173,8 @@ fn lengths_in_doubt(what: &DataProblem) -> bool {
 
 /// The report of a velocity file with no impact in it: a single ball's velocities.
 fn single_ball(m: crate::study::measured::Measured, file: &str, notes: Notes) -> Report {
-    let t = &m.t;
-    let fastest = m.v_cm.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
+    let t = &m.t();
+    let fastest = m.v_cm().iter().fold(0.0_f64, |a, v| a.max(v.abs()));
     Report {
         speed: Some(fastest),
         impact_note: "a single ball's velocities, no impact found (v_cm never drops sharply): a fit needs one; give its time with --impact-at".into(),
@@ -210,26 +210,26 @@ fn velocities(t: &[f64], file: &str, notes: Notes) -> Report {
 
 /// The report of a position track: its derivation's findings when it shows an impact.
 fn of_track(track: Track, file: &str, notes: Notes, reading: &Reading, derive: &Derive) -> Report {
-    let rows: Vec<usize> = (0..track.t.len())
-        .filter(|&i| track.x[i].is_finite())
+    let rows: Vec<usize> = (0..track.t().len())
+        .filter(|&i| track.x()[i].is_finite())
         .collect();
-    let t: Vec<f64> = rows.iter().map(|&i| track.t[i]).collect();
-    let x: Vec<f64> = rows.iter().map(|&i| track.x[i]).collect();
+    let t: Vec<f64> = rows.iter().map(|&i| track.t()[i]).collect();
+    let x: Vec<f64> = rows.iter().map(|&i| track.x()[i]).collect();
     let mut missing = no_position(&track);
-    missing.extend(jumps(&track.t));
+    missing.extend(jumps(track.t()));
     missing.sort_by(|a, b| a.from.total_cmp(&b.from));
     let mut report = Report {
         file: file.to_string(),
         notes,
         kind: "position track",
-        centre: Some(track.centre_name.clone()),
-        mark: track.mark_name.clone(),
+        centre: Some(track.centre_name().to_string()),
+        mark: track.mark_name().map(str::to_string),
         mark_distance: mark_distance(&track),
         frames: rows.len(),
         // The rate and span of every row: a video's frames left out (no position)
         // are frames of the clip all the same.
-        frames_spanned: spanned(&track.t),
-        frame_rate: rate_of(&track.t),
+        frames_spanned: spanned(track.t()),
+        frame_rate: rate_of(track.t()),
         t_first: t.first().copied().unwrap_or(f64::NAN),
         t_last: t.last().copied().unwrap_or(f64::NAN),
         missing,
@@ -282,7 +282,7 @@ fn of_track(track: Track, file: &str, notes: Notes, reading: &Reading, derive: &
         Ok(Series::Velocities(_)) => {}
         Err(e) => {
             report.speed = approach_speed(&track);
-            let what = if track.mark.is_some() {
+            let what = if track.mark().is_some() {
                 "a ball's track with a rim mark"
             } else {
                 "a single ball's track"
@@ -300,8 +300,8 @@ fn of_track(track: Track, file: &str, notes: Notes, reading: &Reading, derive: &
 /// The median distance of the track's mark from its centre, m, over the frames that
 /// have both; `None` without a mark or such a frame.
 fn mark_distance(track: &Track) -> Option<f64> {
-    track.mark.as_ref()?;
-    let mut d: Vec<f64> = (0..track.t.len())
+    track.mark().as_ref()?;
+    let mut d: Vec<f64> = (0..track.t().len())
         .map(|i| {
             let (dx, dy) = track.at(i).mark_offset();
             dx.hypot(dy)
@@ -316,18 +316,18 @@ fn mark_distance(track: &Track) -> Option<f64> {
 fn no_position(track: &Track) -> Vec<Gap> {
     let mut out = Vec::new();
     let mut i = 0;
-    while i < track.t.len() {
-        if track.x[i].is_finite() {
+    while i < track.t().len() {
+        if track.x()[i].is_finite() {
             i += 1;
             continue;
         }
         let start = i;
-        while i < track.t.len() && !track.x[i].is_finite() {
+        while i < track.t().len() && !track.x()[i].is_finite() {
             i += 1;
         }
         out.push(Gap {
-            from: track.t[start],
-            to: track.t[i - 1],
+            from: track.t()[start],
+            to: track.t()[i - 1],
             frames: i - start,
             why: "no position",
         });

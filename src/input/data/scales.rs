@@ -15,6 +15,8 @@ use std::fmt;
 
 use crate::settings::units::significant;
 use crate::study::measured::Track;
+#[cfg(test)]
+use crate::study::measured::TrackParts;
 
 /// Slowest frame rate a measurement of this experiment has (a frame a second), and
 /// the largest speed a ball in a groove reaches (m/s): numbers beyond them, with no
@@ -112,16 +114,16 @@ pub fn frame_spacing(t: &[f64]) -> f64 {
 /// frames. Not the median: a recording may roll slowly for most of its frames after
 /// the impact; not the largest: one glitch would be it.
 pub fn approach_speed(track: &Track) -> Option<f64> {
-    let mut speeds: Vec<f64> = (1..track.t.len())
+    let mut speeds: Vec<f64> = (1..track.t().len())
         .filter_map(|i| {
-            let dx = track.x[i] - track.x[i - 1];
-            let dy = track.y[i] - track.y[i - 1];
+            let dx = track.x()[i] - track.x()[i - 1];
+            let dy = track.y()[i] - track.y()[i - 1];
             let d = if dy.is_finite() {
                 dx.hypot(dy)
             } else {
                 dx.abs()
             };
-            let v = d / (track.t[i] - track.t[i - 1]);
+            let v = d / (track.t()[i] - track.t()[i - 1]);
             v.is_finite().then_some(v)
         })
         .collect();
@@ -329,7 +331,7 @@ impl fmt::Display for ScaleError {
 /// not m), or below 1 mm/s (metres read as mm), whether the units were stated or
 /// assumed.
 pub fn check_track(track: &Track, given: &Given) -> Result<(), ScaleError> {
-    let frame = frame_spacing(&track.t);
+    let frame = frame_spacing(track.t());
     let (tf, t_by) = given.time;
     let (lf, l_by) = given.length;
     if frame >= LONGEST_FRAME {
@@ -383,12 +385,13 @@ mod tests {
                 }
             })
             .collect();
-        Track {
+        Track::new(TrackParts {
             y: vec![0.0; t.len()],
             x,
             t,
-            ..Track::default()
-        }
+            ..TrackParts::default()
+        })
+        .unwrap()
     }
 
     #[test]
@@ -447,8 +450,9 @@ mod tests {
             time: (1.0, Some("the header")),
             length: (1.0, Some("the header")),
         };
-        let mut slow = track(0.6);
+        let mut slow = track(0.6).into_parts();
         slow.t.iter_mut().for_each(|t| *t *= 1e3);
+        let slow = Track::new(slow).unwrap();
         let e = check_track(&slow, &stated).unwrap_err().to_string();
         assert!(
             e.contains("fix the header (t (ms)) or give --time-unit ms"),

@@ -24,7 +24,7 @@ use super::problem::{DataError, DataProblem};
 use super::scales::{Given, LENGTHS, check_track_as_read};
 use super::xml::{self, child};
 use crate::settings::units::{Dimension, significant};
-use crate::study::measured::Track;
+use crate::study::measured::{Track, TrackParts};
 
 /// The format's name, as `groovelab data` and the fit say it.
 pub const FORMAT: &str = "Tracker project (.trk)";
@@ -215,12 +215,12 @@ pub(super) fn read(text: &str, file: &str, reading: &Reading) -> Result<(Track, 
             Err(_) => (f64::NAN, f64::NAN),
         }
     };
-    let mut track = Track {
+    let mut track = TrackParts {
         centre_name: centre.clone(),
         mark_name: mark.clone(),
         format: FORMAT,
         mark: mark.as_ref().map(|_| (Vec::new(), Vec::new())),
-        ..Track::default()
+        ..TrackParts::default()
     };
     for &f in &frame_list {
         track.t.push(time(f));
@@ -237,6 +237,7 @@ pub(super) fn read(text: &str, file: &str, reading: &Reading) -> Result<(Track, 
         time: (1.0, Some("the project")),
         length: (factor.si, Some(factor.by)),
     };
+    let track = Track::new(track).map_err(|e| err(e.into()))?;
     check_track_as_read(&track, &given, reading.own_lengths).map_err(|e| err(e.into()))?;
     let notes = Notes {
         cut_row: None,

@@ -20,7 +20,7 @@ use super::problem::{
 };
 use super::table::{Table, clean, number, unit_factor};
 use crate::settings::units::Dimension;
-use crate::study::measured::Measured;
+use crate::study::measured::{Measured, MeasuredParts};
 
 /// Which quantity a velocity-file header cell names, and the SI factor its unit implies.
 fn column(header: &str) -> Option<(&'static str, Option<f64>)> {
@@ -150,7 +150,9 @@ pub(super) fn without_impact(
         tracks: Vec::new(),
         units: units.notes(),
     };
-    Ok((Measured::velocities(t, v_cm, v_t), notes))
+    let m = Measured::velocities(t, v_cm, v_t)
+        .map_err(|e| DataError::new(file, DataProblem::from(e)))?;
+    Ok((m, notes))
 }
 
 /// [`parse`] of a file already split into rows, with what the file said about its
@@ -183,13 +185,17 @@ pub(super) fn read_table(
         }
     }
     approach_seen(&t, impact).map_err(|e| err(e.into()))?;
-    let m = Measured {
+    let m = Measured::new(MeasuredParts {
+        t,
+        v_cm,
+        v_t,
         mirrored,
-        ..Measured::velocities(t, v_cm, v_t)
-    };
+        ..MeasuredParts::default()
+    })
+    .map_err(|e| err(e.into()))?;
     m.check_magnitudes().map_err(|e| err(e.into()))?;
     units
-        .check_plausible(&m.t, &m.v_cm, &m.v_t)
+        .check_plausible(m.t(), m.v_cm(), m.v_t())
         .map_err(|e| err(e.into()))?;
     let notes = Notes {
         cut_row: None,
@@ -272,8 +278,8 @@ mod tests {
     fn reads_the_shared_format_and_finds_the_impact() {
         let text = "t_s,v_cm_m_per_s,v_t_m_per_s\n-0.02,0.79,0.78\n0,0.0925,0.78\n0.02,-0.64,0.70\n0.04,-0.63,0.68\n";
         let m = parse(text, "x.csv", &Reading::default()).unwrap();
-        assert_eq!(m.t, vec![-0.02, 0.0, 0.02, 0.04]);
-        assert_eq!(m.v_cm[2], -0.64);
+        assert_eq!(m.t(), vec![-0.02, 0.0, 0.02, 0.04]);
+        assert_eq!(m.v_cm()[2], -0.64);
         // One frame before an impact mid-way to the next: the approach is not seen.
         let text = "t,v_cm,v_t\n0,0.79,0.78\n0.02,-0.64,0.70\n0.04,-0.63,0.68\n";
         let e = parse(text, "x.csv", &Reading::default())
@@ -298,8 +304,8 @@ mod tests {
             );
         }
         let m = parse(&text, "x.csv", &Reading::default()).unwrap();
-        assert_eq!(m.v_cm[0], 0.5, "not turned");
-        assert!((m.t[0] + 0.015).abs() < 1e-12, "{:?}", &m.t[..3]);
+        assert_eq!(m.v_cm()[0], 0.5, "not turned");
+        assert!((m.t()[0] + 0.015).abs() < 1e-12, "{:?}", &m.t()[..3]);
     }
 
     #[test]
@@ -307,8 +313,8 @@ mod tests {
         let text = "time (ms);v_cm (cm/s);v_t [cm/s]\n0;79,5;78\n10;80;78\n20;9;78\n30;-64;70\n";
         let m = parse(text, "x.csv", &Reading::default()).unwrap();
         // Impact in the frame at 20 ms (v_cm mid-way): that becomes t = 0.
-        assert!((m.t[0] + 0.02).abs() < 1e-12, "{:?}", m.t);
-        assert!((m.v_cm[0] - 0.795).abs() < 1e-12);
+        assert!((m.t()[0] + 0.02).abs() < 1e-12, "{:?}", m.t());
+        assert!((m.v_cm()[0] - 0.795).abs() < 1e-12);
     }
 
     #[test]
@@ -329,7 +335,7 @@ mod tests {
     fn a_byte_order_mark_is_ignored() {
         let text = "\u{feff}t_s,v_cm_m_per_s,v_t_m_per_s\n-0.02,0.79,0.78\n0,0.0925,0.78\n0.02,-0.64,0.70\n0.04,-0.63,0.68\n";
         let m = parse(text, "x.csv", &Reading::default()).unwrap();
-        assert_eq!(m.t, vec![-0.02, 0.0, 0.02, 0.04]);
+        assert_eq!(m.t(), vec![-0.02, 0.0, 0.02, 0.04]);
     }
 
     #[test]

@@ -143,8 +143,8 @@ fn line_shared(ts: &[f64], ys: &[f64], shared: &[Vec<(usize, f64)>], sigma: f64)
 /// velocities derived from a track (the v_t if `spin`, else the v_cm). A v_t's
 /// stencil makes the spin rate dθ/dt; times the contact radius `r` it makes v_t.
 fn line_of(m: &Measured, idx: &[usize], ys: &[f64], spin: bool, r: f64) -> Line {
-    let ts: Vec<f64> = idx.iter().map(|&i| m.t[i]).collect();
-    match &m.stencils {
+    let ts: Vec<f64> = idx.iter().map(|&i| m.t()[i]).collect();
+    match &m.stencils() {
         Some(st) => {
             let shared: Vec<Vec<(usize, f64)>> = idx
                 .iter()
@@ -264,16 +264,16 @@ impl LineFit {
 /// it until the measured v_cm and v_t meet (the last frame before they cross).
 pub fn sliding_window(m: &Measured) -> Option<(f64, f64)> {
     // Frames without a measured v_t (a track without its rim mark) cannot say.
-    let after: Vec<usize> = (0..m.t.len())
-        .filter(|&i| m.t[i] > 0.0 && m.v_t[i].is_finite())
+    let after: Vec<usize> = (0..m.t().len())
+        .filter(|&i| m.t()[i] > 0.0 && m.v_t()[i].is_finite())
         .collect();
     let first = *after.first()?;
-    let sign0 = (m.v_cm[first] - m.v_t[first]).signum();
+    let sign0 = (m.v_cm()[first] - m.v_t()[first]).signum();
     let last = after
         .iter()
-        .take_while(|&&i| (m.v_cm[i] - m.v_t[i]).signum() == sign0)
+        .take_while(|&&i| (m.v_cm()[i] - m.v_t()[i]).signum() == sign0)
         .last()?;
-    Some((m.t[first], m.t[*last]))
+    Some((m.t()[first], m.t()[*last]))
 }
 
 /// How far apart μ_k,cm and μ_k,t may lie, relative to their mean, beyond their ±,
@@ -303,7 +303,7 @@ pub fn line_fit(
 ) -> Result<LineFit, FitError> {
     let auto = sliding_window(m);
     // Without v_t the window still starts at the first frame after the impact.
-    let first_after = m.t.iter().copied().find(|&t| t > 0.0);
+    let first_after = m.t().iter().copied().find(|&t| t > 0.0);
     let from = window
         .0
         .or(auto.map(|w| w.0))
@@ -312,15 +312,16 @@ pub fn line_fit(
     let to = window.1.or(auto.map(|w| w.1)).unwrap_or(from);
     // A window reaching past the data's ends fits what the data hold: report that span
     // (a fitted model may roll again only after the track ends; `--to 5` on a 1 s track).
-    let span =
-        m.t.iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &t| {
-                (lo.min(t), hi.max(t))
-            });
+    let span = m
+        .t()
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &t| {
+            (lo.min(t), hi.max(t))
+        });
     let asked = (from, to);
     let (from, to) = (from.max(span.0), to.min(span.1));
-    let idx: Vec<usize> = (0..m.t.len())
-        .filter(|&i| m.t[i] >= from - 1e-12 && m.t[i] <= to + 1e-12)
+    let idx: Vec<usize> = (0..m.t().len())
+        .filter(|&i| m.t()[i] >= from - 1e-12 && m.t()[i] <= to + 1e-12)
         .collect();
     if idx.len() < 3 {
         return Err(FitError::ShortWindow {
@@ -332,7 +333,7 @@ pub fn line_fit(
     let cm = line_of(
         m,
         &idx,
-        &idx.iter().map(|&i| m.v_cm[i]).collect::<Vec<_>>(),
+        &idx.iter().map(|&i| m.v_cm()[i]).collect::<Vec<_>>(),
         false,
         scene.k() * scene.radius,
     );
@@ -340,13 +341,13 @@ pub fn line_fit(
     let with_t: Vec<usize> = idx
         .iter()
         .copied()
-        .filter(|&i| m.v_t[i].is_finite())
+        .filter(|&i| m.v_t()[i].is_finite())
         .collect();
     let vt = if with_t.len() >= 3 {
         line_of(
             m,
             &with_t,
-            &with_t.iter().map(|&i| m.v_t[i]).collect::<Vec<_>>(),
+            &with_t.iter().map(|&i| m.v_t()[i]).collect::<Vec<_>>(),
             true,
             scene.k() * scene.radius,
         )

@@ -24,7 +24,7 @@ use crate::study::measured::track::derivative::scatter;
 /// a rim mark a few millimetres from the centre and several times noisier, which made
 /// the band (and the observed regime) swing from one track to the next.
 pub fn rest_band(m: &Measured) -> f64 {
-    let noise = match &m.v_cm_sigma {
+    let noise = match &m.v_cm_sigma() {
         Some(sigma) => median(sigma),
         None => sliding_noise(m),
     };
@@ -46,26 +46,26 @@ fn median(v: &[f64]) -> Option<f64> {
 /// rolling, and a local fit over the corner at t' rounds it (the window ran 40 ms
 /// into rolling and bent |a_cm| from 2.75 to 2.29 m/s²).
 pub(super) fn sliding_end(m: &Measured, fitted: &Scene) -> Option<f64> {
-    if m.stencils.is_none() && m.has_v_t() {
+    if m.stencils().is_none() && m.has_v_t() {
         return sliding_window(m).map(|w| w.1);
     }
     let t_roll = rolling_time(fitted)?;
-    let Some(st) = &m.stencils else {
+    let Some(st) = &m.stencils() else {
         return Some(t_roll - 1e-9);
     };
     let before = |stencil: Option<&Option<Stencil>>, times: &[f64]| match stencil {
         Some(Some(s)) => times.get(s.hi).is_some_and(|&t| t < t_roll),
         _ => true,
     };
-    (0..m.t.len())
+    (0..m.t().len())
         .rev()
         .find(|&i| {
-            m.t[i] > 0.0
-                && m.t[i] < t_roll
+            m.t()[i] > 0.0
+                && m.t()[i] < t_roll
                 && before(st.v_cm.get(i), &st.centre_times)
                 && before(st.v_t.get(i), &st.mark_times)
         })
-        .map(|i| m.t[i])
+        .map(|i| m.t()[i])
         .or(Some(t_roll - 1e-9))
 }
 
@@ -73,13 +73,13 @@ pub(super) fn sliding_end(m: &Measured, fitted: &Scene) -> Option<f64> {
 /// a v_t is missing); `None` without a sliding phase of three points.
 fn sliding_noise(m: &Measured) -> Option<f64> {
     let (from, to) = sliding_window(m)?;
-    let idx: Vec<usize> = (0..m.t.len())
-        .filter(|&i| m.t[i] >= from && m.t[i] <= to)
+    let idx: Vec<usize> = (0..m.t().len())
+        .filter(|&i| m.t()[i] >= from && m.t()[i] <= to)
         .collect();
     (idx.len() >= 3).then(|| {
-        let ts: Vec<f64> = idx.iter().map(|&i| m.t[i]).collect();
+        let ts: Vec<f64> = idx.iter().map(|&i| m.t()[i]).collect();
         let mut sq = 0.0;
-        for series in [&m.v_cm, &m.v_t] {
+        for series in [m.v_cm(), m.v_t()] {
             let ys: Vec<f64> = idx.iter().map(|&i| series[i]).collect();
             let l = line(&ts, &ys);
             sq += ts
@@ -99,7 +99,7 @@ fn sliding_noise(m: &Measured) -> Option<f64> {
 /// its rest band takes it (about lines over the sliding phase: digitised points are
 /// smoother than their error, which third differences would take for the scatter).
 pub(super) fn data_scatter(m: &Measured, positions: bool) -> Option<f64> {
-    let s = match (positions, &m.x, &m.v_cm_sigma) {
+    let s = match (positions, m.x(), &m.v_cm_sigma()) {
         (true, Some(x), _) => scatter(x),
         (true, None, _) => return None,
         (false, _, Some(sigma)) => {
@@ -137,12 +137,12 @@ pub(super) fn observed_after(m: &Measured, band: f64, to: Option<f64>) -> Regime
     let Some(to) = to else {
         return Regime::Rest;
     };
-    let after: Vec<usize> = (0..m.t.len()).filter(|&i| m.t[i] > to).collect();
+    let after: Vec<usize> = (0..m.t().len()).filter(|&i| m.t()[i] > to).collect();
     let mut speeds = Vec::new();
     for w in after.windows(2) {
-        speeds.push(m.v_cm[w[0]]);
+        speeds.push(m.v_cm()[w[0]]);
         // A jump down of more than half the speed is the next impact.
-        if m.v_cm[w[1]] < m.v_cm[w[0]] - 0.5 * m.v_cm[w[0]].abs().max(band) {
+        if m.v_cm()[w[1]] < m.v_cm()[w[0]] - 0.5 * m.v_cm()[w[0]].abs().max(band) {
             break;
         }
     }
