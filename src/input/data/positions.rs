@@ -6,15 +6,6 @@
 //! columns only (velocities and the like are ignored), converts to SI, keeps empty and
 //! `NaN` cells as missing. The velocities are derived in `study::measured`.
 
-// Not yet converted to `get`, iterators and typed errors (issue 35, open): its
-// indices come from its own loops over vectors of one length.
-#![allow(
-    clippy::indexing_slicing,
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::panic
-)]
-
 use super::layout::{
     Axis, Col, LayoutError, find_header, name_tracks, pick_roles, position_column,
 };
@@ -64,16 +55,21 @@ pub(super) fn read_table(
     };
     // A track's own time column where it has one (tracks side by side), else the
     // first (one time for every track).
+    // `find_header` found a t column; were it gone, the header would be no header.
     let first_t = cols
         .iter()
         .position(|c| c.as_ref().is_some_and(|c| c.axis == Axis::T))
-        .expect("the header has a t column");
+        .ok_or_else(|| err(LayoutError::NoHeaderNearTop { line: header.line }.into()))?;
     let it = index(&centre, Axis::T).unwrap_or(first_t);
     let mark_t = mark
         .as_ref()
         .map(|m| index(m, Axis::T).unwrap_or(first_t))
         .filter(|&t| t != it);
-    let ix = index(&centre, Axis::X).expect("the centre has an x column");
+    let ix = index(&centre, Axis::X).ok_or_else(|| {
+        err(DataProblem::NoPosition {
+            centre: centre.clone(),
+        })
+    })?;
     let iy = index(&centre, Axis::Y);
     let im = match &mark {
         Some(m) => match (index(m, Axis::X), index(m, Axis::Y), iy) {
@@ -163,7 +159,7 @@ impl Decided<'_> {
     }
 
     fn header(&self, i: usize) -> Option<f64> {
-        self.cols[i].as_ref().and_then(|c| c.factor)
+        self.cols.get(i)?.as_ref().and_then(|c| c.factor)
     }
 
     fn factor(&self, i: usize, axis: Axis) -> f64 {

@@ -5,15 +5,6 @@
 //! without them, or with lines that do not read, keeps no σ: the fit then weights
 //! every point alike, as before.
 
-// Not yet converted to `get`, iterators and typed errors (issue 35, open): its
-// indices come from its own loops over vectors of one length.
-#![allow(
-    clippy::indexing_slicing,
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::panic
-)]
-
 use crate::study::measured::{Rule, Track, TrackParts};
 use crate::vision::write::{SIGMA_HEADER, SIGMA_ROW};
 
@@ -73,7 +64,10 @@ fn sigma_lines(text: &str) -> Option<(Vec<String>, Vec<Vec<f64>>)> {
 /// positive finite σ put on the frame within a quarter of a frame of its time.
 fn on_frames(t: &[f64], rows: &[Vec<f64>], col: usize) -> Vec<f64> {
     let mut out = vec![f64::NAN; t.len()];
-    let mut gaps: Vec<f64> = t.windows(2).map(|w| w[1] - w[0]).collect();
+    let mut gaps: Vec<f64> = t
+        .windows(2)
+        .filter_map(|w| w.last().zip(w.first()).map(|(b, a)| b - a))
+        .collect();
     gaps.sort_by(f64::total_cmp);
     let near = 0.25 * gaps.get(gaps.len() / 2).copied().unwrap_or(f64::INFINITY);
     for row in rows {
@@ -84,8 +78,10 @@ fn on_frames(t: &[f64], rows: &[Vec<f64>], col: usize) -> Vec<f64> {
             continue;
         }
         let j = t.partition_point(|&x| x < at - near);
-        if let Some(k) = (j..t.len().min(j + 2)).find(|&k| (t[k] - at).abs() <= near) {
-            out[k] = s;
+        let near_frame =
+            (j..t.len().min(j + 2)).find(|&k| t.get(k).is_some_and(|tk| (tk - at).abs() <= near));
+        if let Some(cell) = near_frame.and_then(|k| out.get_mut(k)) {
+            *cell = s;
         }
     }
     out

@@ -15,39 +15,9 @@ use serde::Serialize;
 use super::problem::FitError;
 use super::uncertainty::noise_vector;
 use crate::physics::scene::Scene;
+pub use crate::study::measured::line::{Line, line};
+pub use crate::study::measured::noise::sliding_window;
 use crate::study::measured::series::Measured;
-
-/// A straight line `y = a + b t` by least squares, with standard errors.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Line {
-    pub intercept: f64,
-    pub slope: f64,
-    pub slope_se: f64,
-    pub intercept_se: f64,
-}
-
-/// Ordinary least squares of `ys` on `ts` (at least 3 points).
-pub fn line(ts: &[f64], ys: &[f64]) -> Line {
-    let n = ts.len() as f64;
-    let mt = ts.iter().sum::<f64>() / n;
-    let my = ys.iter().sum::<f64>() / n;
-    let sxx: f64 = ts.iter().map(|t| (t - mt).powi(2)).sum();
-    let sxy: f64 = ts.iter().zip(ys).map(|(t, y)| (t - mt) * (y - my)).sum();
-    let slope = sxy / sxx;
-    let intercept = my - slope * mt;
-    let rss: f64 = ts
-        .iter()
-        .zip(ys)
-        .map(|(t, y)| (y - intercept - slope * t).powi(2))
-        .sum();
-    let s2 = if n > 2.0 { rss / (n - 2.0) } else { f64::NAN };
-    Line {
-        intercept,
-        slope,
-        slope_se: (s2 / sxx).sqrt(),
-        intercept_se: (s2 * (1.0 / n + mt * mt / sxx)).sqrt(),
-    }
-}
 
 /// [`line`] through velocities derived from a track, whose neighbours share frames:
 /// point i is `e_i·x` over the tracked coordinates `x` (`shared[i]`,
@@ -258,22 +228,6 @@ impl LineFit {
         }
         out
     }
-}
-
-/// The sliding phase after the first impact (at t = 0): from the first frame after
-/// it until the measured v_cm and v_t meet (the last frame before they cross).
-pub fn sliding_window(m: &Measured) -> Option<(f64, f64)> {
-    // Frames without a measured v_t (a track without its rim mark) cannot say.
-    let after: Vec<usize> = (0..m.t().len())
-        .filter(|&i| m.t()[i] > 0.0 && m.v_t()[i].is_finite())
-        .collect();
-    let first = *after.first()?;
-    let sign0 = (m.v_cm()[first] - m.v_t()[first]).signum();
-    let last = after
-        .iter()
-        .take_while(|&&i| (m.v_cm()[i] - m.v_t()[i]).signum() == sign0)
-        .last()?;
-    Some((m.t()[first], m.t()[*last]))
 }
 
 /// How far apart μ_k,cm and μ_k,t may lie, relative to their mean, beyond their ±,

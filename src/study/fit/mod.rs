@@ -22,6 +22,7 @@ mod model;
 mod problem;
 mod regime;
 mod residuals;
+mod tracks;
 mod uncertainty;
 
 use serde::Serialize;
@@ -42,6 +43,7 @@ pub use model::{
 pub use problem::{DataLooks, FitError, Free, WORK_BUDGET};
 pub use regime::{observed_regime, rest_band};
 pub use residuals::{NearImpacts, aligned_track};
+pub use tracks::{TrackFits, fit_tracks};
 pub use uncertainty::{NotIdentified, ScalePart};
 
 /// The fits of one series: the paper's line fits, and one fit per candidate model,

@@ -10,33 +10,13 @@
     clippy::panic
 )]
 
-use super::line::{line, sliding_window};
 use crate::physics::derived::Regime;
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
+pub use crate::study::measured::noise::rest_band;
+use crate::study::measured::noise::{sliding_noise, sliding_window};
 use crate::study::measured::series::{Measured, Stencil};
 use crate::study::measured::track::derivative::scatter;
-
-/// Speeds within ± this of zero count as rest: three times the data's own resolution
-/// of v_cm (the speed the regime is read from), at least 2 cm/s. Of a velocity file,
-/// the scatter of its points about straight lines over the sliding phase; of a track,
-/// the median uncertainty of its derived v_cm — not the scatter of v_t, derived from
-/// a rim mark a few millimetres from the centre and several times noisier, which made
-/// the band (and the observed regime) swing from one track to the next.
-pub fn rest_band(m: &Measured) -> f64 {
-    let noise = match &m.v_cm_sigma() {
-        Some(sigma) => median(sigma),
-        None => sliding_noise(m),
-    };
-    (3.0 * noise.unwrap_or(0.0)).max(0.02)
-}
-
-/// The median of the finite values of `v`; `None` without one.
-fn median(v: &[f64]) -> Option<f64> {
-    let mut s: Vec<f64> = v.iter().copied().filter(|x| x.is_finite()).collect();
-    s.sort_by(f64::total_cmp);
-    s.get(s.len() / 2).copied()
-}
 
 /// Where the sliding phase after the first impact ends for the line fits and the
 /// observed regime, given the fitted model `fitted`: of a velocity file where its
@@ -67,29 +47,6 @@ pub(super) fn sliding_end(m: &Measured, fitted: &Scene) -> Option<f64> {
         })
         .map(|i| m.t()[i])
         .or(Some(t_roll - 1e-9))
-}
-
-/// The scatter of v_cm and v_t about straight lines over the sliding phase (NaN where
-/// a v_t is missing); `None` without a sliding phase of three points.
-fn sliding_noise(m: &Measured) -> Option<f64> {
-    let (from, to) = sliding_window(m)?;
-    let idx: Vec<usize> = (0..m.t().len())
-        .filter(|&i| m.t()[i] >= from && m.t()[i] <= to)
-        .collect();
-    (idx.len() >= 3).then(|| {
-        let ts: Vec<f64> = idx.iter().map(|&i| m.t()[i]).collect();
-        let mut sq = 0.0;
-        for series in [m.v_cm(), m.v_t()] {
-            let ys: Vec<f64> = idx.iter().map(|&i| series[i]).collect();
-            let l = line(&ts, &ys);
-            sq += ts
-                .iter()
-                .zip(&ys)
-                .map(|(t, y)| (y - l.intercept - l.slope * t).powi(2))
-                .sum::<f64>();
-        }
-        (sq / (2 * idx.len()) as f64).sqrt()
-    })
 }
 
 /// The data's scatter in the units of a fit's RMS residual (positions: m; velocities:

@@ -12,6 +12,8 @@
 )]
 
 mod ghost;
+pub mod line;
+pub mod noise;
 pub mod series;
 pub mod track;
 
@@ -77,7 +79,7 @@ pub fn prepare(raw: RawSeries, opts: &Derive) -> Result<Series, TrackError> {
 pub struct InScene {
     /// The left ball's velocities: a track's v_t with this scene's r.
     pub measured: Arc<Measured>,
-    /// Speeds within ± this of zero cannot be told from rest (`fit::rest_band`).
+    /// Speeds within ± this of zero cannot be told from rest ([`noise::rest_band`]).
     pub rest_band: f64,
     /// The measured ball's centre at each measured time, model's x (`ghost`).
     ghost: Vec<f64>,
@@ -106,7 +108,7 @@ pub fn for_scene(series: &Series, scene: &Scene) -> InScene {
     };
     InScene {
         mark_aliased,
-        rest_band: crate::study::fit::rest_band(&measured),
+        rest_band: noise::rest_band(&measured),
         ghost: ghost::track(&measured, scene.radius),
         measured,
     }

@@ -368,6 +368,35 @@ fn no_source_file_imports_itself_through_others() {
     assert!(found.is_empty(), "import cycles:\n{}", report.join("\n"));
 }
 
+/// Folders of one layer that import one way only (issue 36): the first never names the
+/// second (measured data know nothing of the fits made to them).
+const ONE_WAY: [(&str, &str); 1] = [("study/measured", "study/fit")];
+
+#[test]
+fn folders_that_import_one_way_never_import_back() {
+    let (src, files) = library_sources();
+    let mut bad = Vec::new();
+    for (lower, upper) in ONE_WAY {
+        let (lower, upper) = (Path::new(lower), Path::new(upper));
+        let inside = files.iter().filter(|f| f.starts_with(src.join(lower)));
+        assert!(
+            inside.clone().count() > 3,
+            "{} has its files",
+            lower.display()
+        );
+        for file in inside {
+            for (path, line) in named_paths(&src, file) {
+                let to = file_of(&src, &path);
+                if to.starts_with(src.join(upper)) {
+                    let at = file.strip_prefix(&src).unwrap().display();
+                    bad.push(format!("{at}:{line}: {}", path.join("::")));
+                }
+            }
+        }
+    }
+    assert!(bad.is_empty(), "imports the wrong way:\n{}", bad.join("\n"));
+}
+
 /// Each function with a body in a source: its name, and its first and last line (of
 /// `fn` and of the closing brace).
 fn function_spans(t: &[Token]) -> Vec<(String, usize, usize)> {

@@ -4,8 +4,7 @@
 
 use groovelab::input::data::{self, Reading};
 use groovelab::physics::scene::Scene;
-use groovelab::study::fit::{self, Free};
-use groovelab::study::measured::track::{self, TrackFits};
+use groovelab::study::fit::{self, Free, TrackFits};
 use groovelab::study::measured::{self, Derive, Found, Measured, RawSeries, Track};
 use groovelab::study::video::{self, TrackFormat, Video};
 
@@ -33,7 +32,7 @@ fn try_load(scene: &Scene, text: &str) -> Result<Loaded, String> {
 fn fits_of(scene: &Scene, text: &str) -> (Loaded, TrackFits) {
     let l = try_load(scene, text).unwrap();
     let start = Scene { mu: 0.3, ..*scene };
-    let f = track::fit_tracks(&start, &l.measured, &[Free::Mu], &groovelab::study::Quiet).unwrap();
+    let f = fit::fit_tracks(&start, &l.measured, &[Free::Mu], &groovelab::study::Quiet).unwrap();
     (l, f)
 }
 

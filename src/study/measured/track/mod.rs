@@ -17,12 +17,9 @@ mod found;
 mod impacts;
 mod sigmas;
 
-use serde::Serialize;
-
 use super::series::{Measured, MeasuredParts, Stencil, Stencils, Track};
-use crate::physics::scene::Scene;
 
-use crate::study::fit::{self, FitError, Free, ModelFit};
+use super::line::{Line, line};
 
 pub use derivative::Local;
 pub use found::{Found, Skipped};
@@ -309,7 +306,6 @@ pub fn derive(
     if spin.is_some() {
         (m.v_t_sigma, m.angle) = (Some(sig_t), Some(ang));
     }
-    let m = Measured::new(m)?;
     let (centre_gaps, mark_missing, mark_gaps) = gaps(track, &rows, &ts, spin.as_ref());
     let found = Found {
         format: track.format(),
@@ -339,7 +335,7 @@ pub fn derive(
         later_impacts: kinks.iter().skip(1).map(|k| k.t - first.t).collect(),
         mark_radius: spin.as_ref().map(|s| s.radius),
     };
-    Ok((m, found))
+    Ok((Measured::new(m)?, found))
 }
 
 /// The first impact of those `impacts` found (it finds one or says why not).
@@ -351,8 +347,8 @@ fn first_kink(kinks: &[impacts::Kink]) -> Result<impacts::Kink, TrackError> {
 }
 
 /// The straight line through the centre's first `before` frames: the approach.
-fn approach_line(ts: &[f64], xs: &[f64], before: usize) -> fit::Line {
-    fit::line(
+fn approach_line(ts: &[f64], xs: &[f64], before: usize) -> Line {
+    line(
         ts.get(..before).unwrap_or_default(),
         xs.get(..before).unwrap_or_default(),
     )
@@ -424,33 +420,6 @@ fn mark_frames(
             )
         })
         .collect()
-}
-
-/// Both model fits of a tracked series, side by side.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct TrackFits {
-    /// The model's v_cm and v_t against the derived velocities, weighted by their
-    /// uncertainties.
-    pub velocity: ModelFit,
-    /// The model's x(t) (and the mark's angle) against the track itself.
-    pub position: ModelFit,
-    /// False when no rim mark was tracked: both fits use the centre only.
-    pub uses_spin: bool,
-}
-
-/// Fits the model to the derived velocities and directly to the positions of `m`
-/// (which must carry `x`), freeing `free`.
-pub fn fit_tracks(
-    scene: &Scene,
-    m: &Measured,
-    free: &[Free],
-    progress: &dyn crate::study::Progress,
-) -> Result<TrackFits, FitError> {
-    Ok(TrackFits {
-        velocity: fit::model_fit(scene, m, free, progress)?,
-        position: fit::position_fit(scene, m, free, progress)?,
-        uses_spin: m.has_v_t(),
-    })
 }
 
 /// The time between frames, s: the mean of the steps within half a frame of their
