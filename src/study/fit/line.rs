@@ -1,15 +1,6 @@
 //! The paper's line fits over the sliding phase (its table 1): straight lines through
 //! the measured v_cm and v_t, the window they cover, and the paper's own numbers.
 
-// Not yet converted to `get`, iterators and typed errors (issue 35, open): its
-// indices come from its own loops over vectors of one length.
-#![allow(
-    clippy::indexing_slicing,
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::panic
-)]
-
 use serde::Serialize;
 
 use super::problem::FitError;
@@ -87,9 +78,12 @@ fn line_shared(ts: &[f64], ys: &[f64], shared: &[Vec<(usize, f64)>], sigma: f64)
             }
         }
     }
-    let squares = sums
-        .values()
-        .fold(own, |acc, s| std::array::from_fn(|j| acc[j] + s[j] * s[j]));
+    let squares = sums.values().fold(own, |mut acc, s| {
+        for (a, v) in acc.iter_mut().zip(s) {
+            *a += v * v;
+        }
+        acc
+    });
     // tr(H E Eᵀ) with H = 1 1ᵀ/n + u uᵀ/Sxx.
     let tr_he = squares[0] / n + squares[1] / sxx;
     let rss: f64 = ts
@@ -102,9 +96,10 @@ fn line_shared(ts: &[f64], ys: &[f64], shared: &[Vec<(usize, f64)>], sigma: f64)
     } else {
         rss / (trace - tr_he).max(f64::MIN_POSITIVE)
     };
+    let [_, _, slope_sq, intercept_sq] = squares;
     Line {
-        slope_se: (s2 * squares[2]).sqrt(),
-        intercept_se: (s2 * squares[3]).sqrt(),
+        slope_se: (s2 * slope_sq).sqrt(),
+        intercept_se: (s2 * intercept_sq).sqrt(),
         ..l
     }
 }
@@ -112,6 +107,9 @@ fn line_shared(ts: &[f64], ys: &[f64], shared: &[Vec<(usize, f64)>], sigma: f64)
 /// [`line`] of `ys` on the times of the points `idx` of `m`: [`line_shared`] for
 /// velocities derived from a track (the v_t if `spin`, else the v_cm). A v_t's
 /// stencil makes the spin rate dθ/dt; times the contact radius `r` it makes v_t.
+// `idx` holds points of `m` (from `0..m.len()`, as `line_fit` makes them), whose
+// columns all have one value per time (the rules of `Measured`).
+#[allow(clippy::indexing_slicing)]
 fn line_of(m: &Measured, idx: &[usize], ys: &[f64], spin: bool, r: f64) -> Line {
     let ts: Vec<f64> = idx.iter().map(|&i| m.t()[i]).collect();
     match &m.stencils() {
@@ -250,6 +248,9 @@ impl LineFit {
 }
 
 /// Line fits of v_cm and v_t over `[from, to]` (default: the sliding phase).
+// Its points `idx` come from `0..m.len()`, and every column of `m` has one value per
+// time (the rules of `Measured`).
+#[allow(clippy::indexing_slicing)]
 pub fn line_fit(
     m: &Measured,
     scene: &Scene,

@@ -1,15 +1,6 @@
 //! The regime the data show, to hold against the model's: the band of speeds that
 //! counts as rest and the mean motion after the sliding phase.
 
-// Not yet converted to `get`, iterators and typed errors (issue 35, open): its
-// indices come from its own loops over vectors of one length.
-#![allow(
-    clippy::indexing_slicing,
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::panic
-)]
-
 use crate::physics::derived::Regime;
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
@@ -37,15 +28,17 @@ pub(super) fn sliding_end(m: &Measured, fitted: &Scene) -> Option<f64> {
         Some(Some(s)) => times.get(s.hi).is_some_and(|&t| t < t_roll),
         _ => true,
     };
-    (0..m.t().len())
+    m.t()
+        .iter()
+        .enumerate()
         .rev()
-        .find(|&i| {
-            m.t()[i] > 0.0
-                && m.t()[i] < t_roll
+        .find(|&(i, &t)| {
+            t > 0.0
+                && t < t_roll
                 && before(st.v_cm.get(i), &st.centre_times)
                 && before(st.v_t.get(i), &st.mark_times)
         })
-        .map(|i| m.t()[i])
+        .map(|(_, &t)| t)
         .or(Some(t_roll - 1e-9))
 }
 
@@ -94,12 +87,18 @@ pub(super) fn observed_after(m: &Measured, band: f64, to: Option<f64>) -> Regime
     let Some(to) = to else {
         return Regime::Rest;
     };
-    let after: Vec<usize> = (0..m.t().len()).filter(|&i| m.t()[i] > to).collect();
+    let after: Vec<f64> = m
+        .t()
+        .iter()
+        .zip(m.v_cm())
+        .filter(|(t, _)| **t > to)
+        .map(|(_, v)| *v)
+        .collect();
     let mut speeds = Vec::new();
-    for w in after.windows(2) {
-        speeds.push(m.v_cm()[w[0]]);
+    for (&v0, &v1) in after.iter().zip(after.iter().skip(1)) {
+        speeds.push(v0);
         // A jump down of more than half the speed is the next impact.
-        if m.v_cm()[w[1]] < m.v_cm()[w[0]] - 0.5 * m.v_cm()[w[0]].abs().max(band) {
+        if v1 < v0 - 0.5 * v0.abs().max(band) {
             break;
         }
     }
