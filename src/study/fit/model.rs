@@ -2,15 +2,6 @@
 //! or of its tracked positions, with uncertainties and the regime compared with what
 //! was seen; a long series thinned first.
 
-// Not yet converted to `get`, iterators and typed errors (issue 35, open): its
-// indices come from its own loops over vectors of one length.
-#![allow(
-    clippy::indexing_slicing,
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::panic
-)]
-
 use serde::Serialize;
 
 use crate::physics::closed_form;
@@ -504,7 +495,11 @@ pub(super) fn scored_fit_within(
     let scale = m
         .scale_rel_se()
         .and_then(|rel| with_scale(rel, free, &p, &mut ses));
-    let se = |f: Free| free.iter().position(|x| *x == f).and_then(|i| ses[i]);
+    let se = |f: Free| {
+        free.iter()
+            .position(|x| *x == f)
+            .and_then(|i| ses.get(i).copied().flatten())
+    };
     let scored = |fit: ModelFit| Scored {
         fit,
         cost,
