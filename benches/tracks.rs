@@ -21,7 +21,10 @@ fn tracks(c: &mut Criterion) {
         to: -0.2 + 9999.0 / 240.0,
         ..Video::default()
     };
-    let text = video::write(&video::track(&scene, &v), TrackFormat::TrackerMulti);
+    let text = video::write(
+        &video::track(&scene, &v).unwrap(),
+        TrackFormat::TrackerMulti,
+    );
     c.bench_function("read and differentiate a 10,000-frame track", |b| {
         b.iter(|| {
             let series = data::load(

@@ -67,23 +67,25 @@ pub fn moved_fit_window(
         (window.0.unwrap_or(auto.0), window.1.unwrap_or(auto.1))
     });
     let here = if end { current.1 } else { current.0 };
-    let i =
-        m.t.iter()
-            .position(|&t| (t - here).abs() < 1e-9)
-            .unwrap_or(0);
+    let i = m
+        .t()
+        .iter()
+        .position(|&t| (t - here).abs() < 1e-9)
+        .unwrap_or(0);
     let j = if later {
-        (i + 1).min(m.t.len() - 1)
+        (i + 1).min(m.t().len() - 1)
     } else {
         i.saturating_sub(1)
     };
-    let t = m.t[j];
+    let t = m.t()[j];
     // The window stays after the impact (the sliding phase starts there) and holds
     // at least three frames (a line needs them); a move past either is refused.
     let (from, to) = if end { (current.0, t) } else { (t, current.1) };
-    let frames =
-        m.t.iter()
-            .filter(|&&x| x >= from - 1e-12 && x <= to + 1e-12)
-            .count();
+    let frames = m
+        .t()
+        .iter()
+        .filter(|&&x| x >= from - 1e-12 && x <= to + 1e-12)
+        .count();
     if from <= 0.0 || frames < 3 {
         return Err(FitWindowError::Refused { from, to });
     }

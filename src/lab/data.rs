@@ -250,7 +250,7 @@ pub fn approach(series: &Series) -> Option<crate::study::fit::Approach> {
             found.approach_speed_se,
             found.frames_before,
         ),
-        Series::Velocities(m) => of_velocities(&m.t, &m.v_cm),
+        Series::Velocities(m) => of_velocities(m.t(), m.v_cm()),
     }
 }
 

@@ -199,16 +199,16 @@ pub struct MeasuredPoints {
 
 impl MeasuredPoints {
     fn of(m: &Measured, track_x: Option<&[f64]>) -> MeasuredPoints {
-        let pts = |v: &[f64]| m.t.iter().copied().zip(v.iter().copied()).collect();
-        let bars =
-            |v: &[f64], s: &Option<Vec<f64>>| s.as_ref().map(|s| error_bars(&m.t, v, s).into());
+        let pts = |v: &[f64]| m.t().iter().copied().zip(v.iter().copied()).collect();
+        let bars = |v: &[f64], s: Option<&[f64]>| s.map(|s| error_bars(m.t(), v, s).into());
         let mut points = MeasuredPoints {
-            v_cm: pts(&m.v_cm),
-            v_t: pts(&m.v_t),
-            v_cm_bars: bars(&m.v_cm, &m.v_cm_sigma),
-            v_t_bars: bars(&m.v_t, &m.v_t_sigma),
+            v_cm: pts(m.v_cm()),
+            v_t: pts(m.v_t()),
+            v_cm_bars: bars(m.v_cm(), m.v_cm_sigma()),
+            v_t_bars: bars(m.v_t(), m.v_t_sigma()),
             x: track_x.map(|x| {
-                m.t.iter()
+                m.t()
+                    .iter()
                     .zip(x)
                     .filter(|(_, x)| x.is_finite())
                     .map(|(t, x)| (*t, Dimension::Length.to_display(*x)))
@@ -320,12 +320,12 @@ fn extent(sol: &Solution, radius: f64) -> (f64, f64) {
 /// the impact left out; a v_t that was not measured left out, `None` if none was).
 fn data_rms(sol: &Solution, m: &Measured) -> (f64, Option<f64>) {
     let (mut sc, mut st, mut n, mut nt) = (0.0, 0.0, 0usize, 0usize);
-    for i in (0..m.t.len()).filter(|&i| m.t[i].abs() >= 0.005) {
-        let s = sol.at(m.t[i]);
-        sc += (s.left.v - m.v_cm[i]).powi(2);
+    for i in (0..m.t().len()).filter(|&i| m.t()[i].abs() >= 0.005) {
+        let s = sol.at(m.t()[i]);
+        sc += (s.left.v - m.v_cm()[i]).powi(2);
         n += 1;
-        if m.v_t[i].is_finite() {
-            st += (s.left.u - m.v_t[i]).powi(2);
+        if m.v_t()[i].is_finite() {
+            st += (s.left.u - m.v_t()[i]).powi(2);
             nt += 1;
         }
     }

@@ -320,7 +320,7 @@ pub fn values_of_preset(preset: &Preset) -> SceneSpec {
     let Some(a) = preset
         .measured
         .as_ref()
-        .and_then(|m| crate::study::fit::of_velocities(&m.t, &m.v_cm))
+        .and_then(|m| crate::study::fit::of_velocities(m.t(), m.v_cm()))
     else {
         return SceneSpec::default();
     };

@@ -61,7 +61,7 @@ pub(super) fn solve_shown(
         t_end: None,
     };
     let mut sol = engine::solve(scene, &auto_span);
-    let last_measured = measured.and_then(|m| m.t.last().copied());
+    let last_measured = measured.and_then(|m| m.t().last().copied());
     let auto = sol
         .t_end
         .max(last_measured.unwrap_or(f64::NEG_INFINITY))

@@ -7,7 +7,7 @@ use std::path::PathBuf;
 use crate::settings::params::Key;
 use crate::settings::spec::SceneSpec;
 use crate::settings::units::{UnitError, parse_quantity};
-use crate::study::measured::{MAX_ROWS, Measured, OutOfLabRange};
+use crate::study::measured::{MAX_ROWS, Measured, MeasuredParts, OutOfLabRange, Rule};
 
 /// The preset used when none is named.
 pub const DEFAULT: &str = "paper-b4.9";
@@ -94,6 +94,8 @@ pub enum MeasuredError {
     },
     #[error(transparent)]
     Magnitude(#[from] OutOfLabRange),
+    #[error("measured series: {0}")]
+    Rule(#[from] Rule),
 }
 
 #[derive(serde::Deserialize)]
@@ -223,13 +225,16 @@ fn check_measured(m: MeasuredFile) -> Result<Measured, MeasuredError> {
             });
         }
     }
-    let measured = Measured {
+    let measured = Measured::new(MeasuredParts {
+        t: m.t,
+        v_cm: m.v_cm,
+        v_t: m.v_t,
         v_cm_sigma: m.v_cm_sigma,
         v_t_sigma: m.v_t_sigma,
         x: m.x,
         angle: m.angle,
-        ..Measured::velocities(m.t, m.v_cm, m.v_t)
-    };
+        ..MeasuredParts::default()
+    })?;
     measured.check_magnitudes()?;
     Ok(measured)
 }
@@ -289,21 +294,23 @@ mod tests {
 
     #[test]
     fn measured_series_round_trip_with_their_optional_columns() {
-        let mut m = Measured::velocities(
-            vec![-0.1, 0.0, 0.1],
-            vec![0.8, 0.7, -0.2],
-            vec![0.8, f64::NAN, 0.3],
-        );
-        m.x = Some(vec![-0.08, 0.0, 0.01]);
-        m.v_cm_sigma = Some(vec![0.01; 3]);
+        let m = Measured::new(MeasuredParts {
+            t: vec![-0.1, 0.0, 0.1],
+            v_cm: vec![0.8, 0.7, -0.2],
+            v_t: vec![0.8, f64::NAN, 0.3],
+            x: Some(vec![-0.08, 0.0, 0.01]),
+            v_cm_sigma: Some(vec![0.01; 3]),
+            ..MeasuredParts::default()
+        })
+        .unwrap();
         let spec = SceneSpec::default().with(Key::Radius, 0.0275);
         let text = to_toml("x", "d", &spec, Some(&m)).unwrap();
         let back = Preset::parse(&text, "x", PresetOrigin::BuiltIn).unwrap();
         let got = back.measured.unwrap();
-        assert_eq!((got.t, got.v_cm, got.x), (m.t, m.v_cm, m.x));
-        assert!(got.v_t[1].is_nan() && got.v_t[2] == 0.3);
-        assert_eq!(got.v_cm_sigma, m.v_cm_sigma);
-        assert_eq!(got.angle, None);
+        assert_eq!((got.t(), got.v_cm(), got.x()), (m.t(), m.v_cm(), m.x()));
+        assert!(got.v_t()[1].is_nan() && got.v_t()[2] == 0.3);
+        assert_eq!(got.v_cm_sigma(), m.v_cm_sigma());
+        assert_eq!(got.angle(), None);
         let short = text.replace("x = [-0.08, 0.0, 0.01]", "x = [-0.08]");
         assert!(short != text, "{text}");
         let err = Preset::parse(&short, "x", PresetOrigin::BuiltIn).unwrap_err();

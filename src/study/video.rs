@@ -5,7 +5,7 @@
 
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
-use crate::study::measured::series::Track;
+use crate::study::measured::series::{Rule, Track, TrackParts};
 
 /// How the synthetic video is taken and tracked.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -78,7 +78,7 @@ impl Noise {
 /// The left ball of `scene` as a tracked video: its centre and (with `video.mark`) a
 /// mark on its visible rim, at `x + R sin θ`, `y + R cos θ` with θ the spin angle
 /// (on top at the first frame), in the file's frame.
-pub fn track(scene: &Scene, video: &Video) -> Track {
+pub fn track(scene: &Scene, video: &Video) -> Result<Track, Rule> {
     let sol = engine::solve(
         scene,
         &Span {
@@ -92,12 +92,12 @@ pub fn track(scene: &Scene, video: &Video) -> Track {
     let r = scene.radius;
     let theta0 = sol.angle_at(video.from)[0];
     let frames = ((video.to - video.from) * video.fps).floor() as usize;
-    let mut out = Track {
+    let mut out = TrackParts {
         centre_name: "mass A".into(),
         mark_name: video.mark.then(|| "mass B".into()),
         format: "synthetic",
         mark: video.mark.then(|| (Vec::new(), Vec::new())),
-        ..Track::default()
+        ..TrackParts::default()
     };
     for k in 0..=frames {
         let t = video.from + k as f64 / video.fps;
@@ -112,7 +112,7 @@ pub fn track(scene: &Scene, video: &Video) -> Track {
             my.push(video.origin.1 + sy * r * theta.cos() + video.noise * noise.gauss());
         }
     }
-    out
+    Track::new(out)
 }
 
 /// The file formats `input::data` reads.
@@ -154,12 +154,12 @@ impl TrackFormat {
 /// `track` as the text of a file in `format`; NaN becomes an empty cell.
 pub fn write(track: &Track, format: TrackFormat) -> String {
     let (head, sep, t_unit, l_unit): (String, &str, f64, f64) = match format {
-        TrackFormat::TrackerSingle => (format!("{}\nt\tx\ty", track.centre_name), "\t", 1.0, 1.0),
+        TrackFormat::TrackerSingle => (format!("{}\nt\tx\ty", track.centre_name()), "\t", 1.0, 1.0),
         TrackFormat::TrackerMulti => (
             format!(
                 "#multi:\n\t{}\t\t{}\t\nt\tx\ty\tx\ty",
-                track.centre_name,
-                track.mark_name.as_deref().unwrap_or("mass B")
+                track.centre_name(),
+                track.mark_name().unwrap_or("mass B")
             ),
             "\t",
             1.0,
@@ -179,12 +179,12 @@ pub fn write(track: &Track, format: TrackFormat) -> String {
         ),
         TrackFormat::Tsv => ("t_s\tx_m\ty_m\tx rim\ty rim".into(), "\t", 1.0, 1.0),
     };
-    let with_mark = format != TrackFormat::TrackerSingle && track.mark.is_some();
+    let with_mark = format != TrackFormat::TrackerSingle && track.mark().is_some();
     let mut head = head;
     if !with_mark && format != TrackFormat::TrackerSingle {
         // Drop the mark's columns (and, for Tracker, its name).
         head = match format {
-            TrackFormat::TrackerMulti => format!("#multi:\n\t{}\t\nt\tx\ty", track.centre_name),
+            TrackFormat::TrackerMulti => format!("#multi:\n\t{}\t\nt\tx\ty", track.centre_name()),
             _ => head.split(sep).take(3).collect::<Vec<_>>().join(sep),
         };
     }
@@ -201,13 +201,13 @@ pub fn write(track: &Track, format: TrackFormat) -> String {
     };
     let mut out = head;
     out.push('\n');
-    for i in 0..track.t.len() {
+    for i in 0..track.t().len() {
         let mut row = vec![
-            cell(track.t[i], t_unit),
-            cell(track.x[i], l_unit),
-            cell(track.y[i], l_unit),
+            cell(track.t()[i], t_unit),
+            cell(track.x()[i], l_unit),
+            cell(track.y()[i], l_unit),
         ];
-        if let (true, Some((mx, my))) = (with_mark, &track.mark) {
+        if let (true, Some((mx, my))) = (with_mark, &track.mark()) {
             row.push(cell(mx[i], l_unit));
             row.push(cell(my[i], l_unit));
         }

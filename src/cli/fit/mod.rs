@@ -29,7 +29,7 @@ pub fn run(
     let found = lab.series().and_then(|s| s.found().cloned());
     let free = free_values(args)?;
     // A series long enough to take a noticeable time shows a counter.
-    let bar = super::progress::Bar::counter("model evaluations", m.t.len() > 5_000);
+    let bar = super::progress::Bar::counter("model evaluations", m.t().len() > 5_000);
     let ask = fit::Ask {
         window: (args.from, args.to),
         free,

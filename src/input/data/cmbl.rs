@@ -132,13 +132,7 @@ pub(super) fn read(text: &str, file: &str, reading: &Reading) -> Result<(Track, 
         ..e
     })?;
     notes.format = format!("{FORMAT}, data set '{name}'");
-    Ok((
-        Track {
-            format: FORMAT,
-            ..track
-        },
-        notes,
-    ))
+    Ok((track.with_format(FORMAT), notes))
 }
 
 /// The columns as a tab-separated table: a header `Name (unit)`, then a row per cell

@@ -8,7 +8,7 @@ use super::options::Reading;
 use super::problem::{AccelerationsOnly, DataError, DataProblem};
 use super::table::{self, Table};
 use super::{cmbl, positions, trk, velocities, vernier};
-use crate::study::measured::{RawSeries, Track};
+use crate::study::measured::{RawSeries, Track, TrackParts};
 
 /// [`read`] with what the file said about itself: its format, its tracks, and how
 /// each unit was decided.
@@ -23,13 +23,14 @@ pub fn read_with_notes(
         super::roles::swapped(t).map_err(|e| DataError::new(file, e))?;
     }
     let raw = match raw {
-        RawSeries::Positions(t) => RawSeries::Positions(super::sigmas::with_sigmas(
-            text,
-            Track {
+        RawSeries::Positions(t) => RawSeries::Positions(
+            Track::new(TrackParts {
                 scale_rel_se: super::scene::scale_rel_se(text),
-                ..t
-            },
-        )),
+                ..t.into_parts()
+            })
+            .and_then(|t| super::sigmas::with_sigmas(text, t))
+            .map_err(|e| DataError::new(file, DataProblem::from(e)))?,
+        ),
         v => v,
     };
     Ok((raw, notes))
@@ -53,10 +54,7 @@ fn read_any(text: &str, file: &str, reading: &Reading) -> Result<(RawSeries, Not
     if vernier::is_vernier(text) {
         let (raw, notes) = read_table(&Table::new(&vernier::as_table(text)), file, reading)?;
         let raw = match raw {
-            RawSeries::Positions(t) => RawSeries::Positions(Track {
-                format: vernier::FORMAT,
-                ..t
-            }),
+            RawSeries::Positions(t) => RawSeries::Positions(t.with_format(vernier::FORMAT)),
             v => v,
         };
         let notes = Notes {

@@ -4,15 +4,6 @@
 //! column belongs to (a header cell's track, axis and unit), and which track is the
 //! centre and which the rim mark.
 
-// Not yet converted to `get`, iterators and typed errors (issue 35, open): its
-// indices come from its own loops over vectors of one length.
-#![allow(
-    clippy::indexing_slicing,
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::panic
-)]
-
 use super::options::Reading;
 use crate::settings::units::Dimension;
 
@@ -103,8 +94,8 @@ pub(super) fn position_column(cell: &str) -> Option<Col> {
     let mut factor = unit_factor(unit, dim)?;
     // `x_cm`, `t_s`: a trailing unit token rather than a track name.
     if factor.is_none()
-        && rest.len() == 1
-        && let Some(Some(f)) = unit_factor(rest[0], dim)
+        && let [only] = rest.as_slice()
+        && let Some(Some(f)) = unit_factor(only, dim)
     {
         factor = Some(f);
         rest.clear();
@@ -283,8 +274,9 @@ pub fn pick_roles(
         None => names
             .iter()
             .find(|n| n.is_empty())
-            .unwrap_or(&names[0])
-            .clone(),
+            .or(names.first())
+            .cloned()
+            .unwrap_or_default(),
     };
     let mark = match pick(&reading.mark, &MARK_NAMES, "mark")? {
         Some(m) if m != centre => Some(m),

@@ -2,15 +2,6 @@
 //! the tracks in the file, and how each unit was decided (the header, an option, a
 //! video's calibration, or nobody: SI assumed and checked for plausibility).
 
-// Not yet converted to `get`, iterators and typed errors (issue 35, open): its
-// indices come from its own loops over vectors of one length.
-#![allow(
-    clippy::indexing_slicing,
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::panic
-)]
-
 use serde::Serialize;
 
 /// What a file said about itself.
@@ -49,7 +40,7 @@ impl UnitNote {
         factor: f64,
         by: Option<&'static str>,
     ) -> UnitNote {
-        let si = units[0].0;
+        let si = units.first().map_or("", |u| u.0);
         let unit = super::scales::unit_name(units, factor).map_or_else(
             || format!("{} {si}", crate::settings::units::significant(factor, 4)),
             str::to_string,

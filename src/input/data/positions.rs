@@ -6,15 +6,6 @@
 //! columns only (velocities and the like are ignored), converts to SI, keeps empty and
 //! `NaN` cells as missing. The velocities are derived in `study::measured`.
 
-// Not yet converted to `get`, iterators and typed errors (issue 35, open): its
-// indices come from its own loops over vectors of one length.
-#![allow(
-    clippy::indexing_slicing,
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::panic
-)]
-
 use super::layout::{
     Axis, Col, LayoutError, find_header, name_tracks, pick_roles, position_column,
 };
@@ -23,7 +14,7 @@ use super::options::{MAX_ROWS, Reading};
 use super::problem::{DataError, DataProblem, RowError};
 use super::scales::{Given, LENGTHS, TIMES, check_track_as_read};
 use super::table::{Table, TableRow, missing, number};
-use crate::study::measured::Track;
+use crate::study::measured::{Track, TrackParts};
 
 /// Parses a position file (see the module doc) into a [`Track`] in SI units.
 pub fn parse(text: &str, file: &str, reading: &Reading) -> Result<Track, DataError> {
@@ -64,16 +55,21 @@ pub(super) fn read_table(
     };
     // A track's own time column where it has one (tracks side by side), else the
     // first (one time for every track).
+    // `find_header` found a t column; were it gone, the header would be no header.
     let first_t = cols
         .iter()
         .position(|c| c.as_ref().is_some_and(|c| c.axis == Axis::T))
-        .expect("the header has a t column");
+        .ok_or_else(|| err(LayoutError::NoHeaderNearTop { line: header.line }.into()))?;
     let it = index(&centre, Axis::T).unwrap_or(first_t);
     let mark_t = mark
         .as_ref()
         .map(|m| index(m, Axis::T).unwrap_or(first_t))
         .filter(|&t| t != it);
-    let ix = index(&centre, Axis::X).expect("the centre has an x column");
+    let ix = index(&centre, Axis::X).ok_or_else(|| {
+        err(DataProblem::NoPosition {
+            centre: centre.clone(),
+        })
+    })?;
     let iy = index(&centre, Axis::Y);
     let im = match &mark {
         Some(m) => match (index(m, Axis::X), index(m, Axis::Y), iy) {
@@ -86,12 +82,12 @@ pub(super) fn read_table(
         None => None,
     };
     let units = Decided::new(&cols, reading);
-    let mut track = Track {
+    let mut parts = TrackParts {
         centre_name: centre.clone(),
         mark_name: im.and(mark.clone()),
         format,
         mark: im.map(|_| (Vec::new(), Vec::new())),
-        ..Track::default()
+        ..TrackParts::default()
     };
     let columns = Columns {
         t: (it, units.factor(it, Axis::T)),
@@ -102,9 +98,10 @@ pub(super) fn read_table(
             .map(|(a, b)| ((a, units.factor(a, Axis::X)), (b, units.factor(b, Axis::Y)))),
     };
     if mark_t.is_some() {
-        track.mark = None;
+        parts.mark = None;
     }
-    read_rows(rows, &columns, &mut track).map_err(|e| err(e.into()))?;
+    read_rows(rows, &columns, &mut parts).map_err(|e| err(e.into()))?;
+    let mut track = Track::new(parts).map_err(|e| err(e.into()))?;
     // A mark with its own time column: read as a track of its own, matched to the
     // centre's frames by time (as two one-track exports are).
     if let (Some(t), Some((a, b))) = (mark_t, im) {
@@ -117,7 +114,7 @@ pub(super) fn read_table(
         let name = mark.clone().unwrap_or_default();
         track = with_own_time_mark(track, table, &own, name).map_err(err)?;
     }
-    if track.x.iter().filter(|x| x.is_finite()).count() == 0 {
+    if track.x().iter().filter(|x| x.is_finite()).count() == 0 {
         return Err(err(DataProblem::NoPosition { centre }));
     }
     let given = units.given(it, ix);
@@ -162,7 +159,7 @@ impl Decided<'_> {
     }
 
     fn header(&self, i: usize) -> Option<f64> {
-        self.cols[i].as_ref().and_then(|c| c.factor)
+        self.cols.get(i)?.as_ref().and_then(|c| c.factor)
     }
 
     fn factor(&self, i: usize, axis: Axis) -> f64 {
@@ -218,17 +215,19 @@ fn with_own_time_mark(
     columns: &Columns,
     name: String,
 ) -> Result<Track, DataProblem> {
-    let mut rim = Track {
+    let mut rim = TrackParts {
         centre_name: name,
-        ..Track::default()
+        ..TrackParts::default()
     };
     let mut rows = table.rows();
     find_header(&mut rows)?;
     read_rows(rows, columns, &mut rim)?;
-    let format = track.format;
-    let mut track = track.with_mark(&rim)?;
-    track.format = format;
-    Ok(track)
+    let format = track.format();
+    let track = track.with_mark(&Track::new(rim)?)?;
+    Ok(Track::new(TrackParts {
+        format,
+        ..track.into_parts()
+    })?)
 }
 
 /// Where a track's values are in a row, and their SI factors.
@@ -244,7 +243,7 @@ struct Columns {
 fn read_rows(
     rows: impl Iterator<Item = TableRow>,
     columns: &Columns,
-    track: &mut Track,
+    track: &mut TrackParts,
 ) -> Result<(), RowError> {
     for row in rows {
         if track.t.len() == MAX_ROWS {
@@ -328,12 +327,12 @@ mod tests {
     fn tracker_single_track_with_scientific_numbers_and_gaps() {
         let text = "mass A\nt\tx\ty\tv_{x}\n0.000000000E0\t1.0E-1\t2.0E-2\t\n3.200000000E-2\t\t2.0E-2\t1.5\n6.4E-2\t1.2E-1\t2.0E-2\t\n";
         let t = read(text, &Reading::default()).unwrap();
-        assert_eq!(t.format, "Tracker single-track");
-        assert_eq!(t.centre_name, "mass A");
-        assert_eq!(t.t, vec![0.0, 0.032, 0.064]);
-        assert!(t.x[1].is_nan());
-        assert_eq!(t.x[2], 0.12);
-        assert!(t.mark.is_none());
+        assert_eq!(t.format(), "Tracker single-track");
+        assert_eq!(t.centre_name(), "mass A");
+        assert_eq!(t.t(), vec![0.0, 0.032, 0.064]);
+        assert!(t.x()[1].is_nan());
+        assert_eq!(t.x()[2], 0.12);
+        assert!(t.mark().is_none());
     }
 
     #[test]
@@ -341,13 +340,13 @@ mod tests {
         let text =
             "#multi:\n\tmass A\t\tmass B\t\n t\tx\ty\tx\ty\n0\t1\t2\t1\t2,5\n0,01\t1,001\t2\t\t\n";
         let t = read(text, &Reading::default()).unwrap();
-        assert_eq!(t.format, "Tracker multi-track");
-        assert_eq!(t.centre_name, "mass A");
-        assert_eq!(t.mark_name.as_deref(), Some("mass B"));
-        let (mx, my) = t.mark.unwrap();
+        assert_eq!(t.format(), "Tracker multi-track");
+        assert_eq!(t.centre_name(), "mass A");
+        assert_eq!(t.mark_name(), Some("mass B"));
+        let (mx, my) = t.mark().unwrap();
         assert_eq!(my[0], 2.5);
         assert!(mx[1].is_nan());
-        assert_eq!(t.t[1], 0.01);
+        assert_eq!(t.t()[1], 0.01);
         // Named the other way round by options.
         let swapped = Reading {
             centre: Some("mass b".into()),
@@ -355,18 +354,18 @@ mod tests {
             ..Reading::default()
         };
         let t = read(text, &swapped).unwrap();
-        assert_eq!(t.x[0], 1.0);
-        assert_eq!(t.y[0], 2.5);
+        assert_eq!(t.x()[0], 1.0);
+        assert_eq!(t.y()[0], 2.5);
     }
 
     #[test]
     fn csv_with_units_semicolons_and_decimal_commas() {
         let text = "t/ms;x (cm);y (cm);x_mark (cm);y_mark (cm)\n0;1,5;0;1,5;2\n10;2,5;0;2,5;2\n";
         let t = read(text, &Reading::default()).unwrap();
-        assert_eq!(t.format, "CSV");
-        assert_eq!(t.t, vec![0.0, 0.01]);
-        assert!((t.x[1] - 0.025).abs() < 1e-15);
-        assert_eq!(t.mark_name.as_deref(), Some("mark"));
+        assert_eq!(t.format(), "CSV");
+        assert_eq!(t.t(), vec![0.0, 0.01]);
+        assert!((t.x()[1] - 0.025).abs() < 1e-15);
+        assert_eq!(t.mark_name(), Some("mark"));
         // Units from options where the header has none.
         let text = "t,x\n0,1\n20,2\n";
         let r = Reading {
@@ -375,7 +374,7 @@ mod tests {
             ..Reading::default()
         };
         let t = read(text, &r).unwrap();
-        assert_eq!((t.t[1], t.x[1]), (0.02, 0.02));
+        assert_eq!((t.t()[1], t.x()[1]), (0.02, 0.02));
     }
 
     #[test]

@@ -57,6 +57,8 @@ pub enum DataProblem {
     #[error(transparent)]
     Track(#[from] TrackError),
     #[error(transparent)]
+    Rule(#[from] crate::study::measured::Rule),
+    #[error(transparent)]
     ImpactOutside(#[from] ImpactOutside),
     #[error(transparent)]
     Swapped(#[from] Swapped),

@@ -3,15 +3,6 @@
 //! them, missing frames, scatter, approach speed and the impacts found. A track with
 //! no impact is described too ("a single ball's track, no impact found").
 
-// Not yet converted to `get`, iterators and typed errors (issue 35, open): its
-// indices come from its own loops over vectors of one length.
-#![allow(
-    clippy::indexing_slicing,
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::panic
-)]
-
 use serde::Serialize;
 
 use super::notes::Notes;
@@ -131,10 +122,12 @@ pub fn inspect(
     };
     Ok(match raw {
         RawSeries::Velocities(m) => {
-            let t = &m.t;
-            let before: Vec<f64> = (0..t.len())
-                .filter(|&i| t[i] < 0.0)
-                .map(|i| m.v_cm[i])
+            let t = m.t();
+            let before: Vec<f64> = t
+                .iter()
+                .zip(m.v_cm())
+                .filter(|(t, _)| **t < 0.0)
+                .map(|(_, v)| *v)
                 .collect();
             Report {
                 approach_speed: (!before.is_empty())
@@ -142,7 +135,7 @@ pub fn inspect(
                 impacts: vec![0.0],
                 impact_note: format!(
                     "first impact found; the times above are from it (t = 0){}",
-                    if m.mirrored {
+                    if m.mirrored() {
                         "; the file's x runs away from the other ball: read mirrored"
                     } else {
                         ""
@@ -173,8 +166,8 @@ fn lengths_in_doubt(what: &DataProblem) -> bool {
 
 /// The report of a velocity file with no impact in it: a single ball's velocities.
 fn single_ball(m: crate::study::measured::Measured, file: &str, notes: Notes) -> Report {
-    let t = &m.t;
-    let fastest = m.v_cm.iter().fold(0.0_f64, |a, v| a.max(v.abs()));
+    let t = &m.t();
+    let fastest = m.v_cm().iter().fold(0.0_f64, |a, v| a.max(v.abs()));
     Report {
         speed: Some(fastest),
         impact_note: "a single ball's velocities, no impact found (v_cm never drops sharply): a fit needs one; give its time with --impact-at".into(),
@@ -195,8 +188,8 @@ fn velocities(t: &[f64], file: &str, notes: Notes) -> Report {
         frames: t.len(),
         frames_spanned: spanned(t),
         frame_rate: rate_of(t),
-        t_first: t[0],
-        t_last: t[t.len() - 1],
+        t_first: t.first().copied().unwrap_or(f64::NAN),
+        t_last: t.last().copied().unwrap_or(f64::NAN),
         missing: jumps(t),
         scatter: None,
         approach_speed: None,
@@ -210,26 +203,27 @@ fn velocities(t: &[f64], file: &str, notes: Notes) -> Report {
 
 /// The report of a position track: its derivation's findings when it shows an impact.
 fn of_track(track: Track, file: &str, notes: Notes, reading: &Reading, derive: &Derive) -> Report {
-    let rows: Vec<usize> = (0..track.t.len())
-        .filter(|&i| track.x[i].is_finite())
-        .collect();
-    let t: Vec<f64> = rows.iter().map(|&i| track.t[i]).collect();
-    let x: Vec<f64> = rows.iter().map(|&i| track.x[i]).collect();
+    let (t, x): (Vec<f64>, Vec<f64>) = track
+        .t()
+        .iter()
+        .zip(track.x())
+        .filter(|(_, x)| x.is_finite())
+        .unzip();
     let mut missing = no_position(&track);
-    missing.extend(jumps(&track.t));
+    missing.extend(jumps(track.t()));
     missing.sort_by(|a, b| a.from.total_cmp(&b.from));
     let mut report = Report {
         file: file.to_string(),
         notes,
         kind: "position track",
-        centre: Some(track.centre_name.clone()),
-        mark: track.mark_name.clone(),
+        centre: Some(track.centre_name().to_string()),
+        mark: track.mark_name().map(str::to_string),
         mark_distance: mark_distance(&track),
-        frames: rows.len(),
+        frames: t.len(),
         // The rate and span of every row: a video's frames left out (no position)
         // are frames of the clip all the same.
-        frames_spanned: spanned(&track.t),
-        frame_rate: rate_of(&track.t),
+        frames_spanned: spanned(track.t()),
+        frame_rate: rate_of(track.t()),
         t_first: t.first().copied().unwrap_or(f64::NAN),
         t_last: t.last().copied().unwrap_or(f64::NAN),
         missing,
@@ -282,7 +276,7 @@ fn of_track(track: Track, file: &str, notes: Notes, reading: &Reading, derive: &
         Ok(Series::Velocities(_)) => {}
         Err(e) => {
             report.speed = approach_speed(&track);
-            let what = if track.mark.is_some() {
+            let what = if track.mark().is_some() {
                 "a ball's track with a rim mark"
             } else {
                 "a single ball's track"
@@ -300,8 +294,8 @@ fn of_track(track: Track, file: &str, notes: Notes, reading: &Reading, derive: &
 /// The median distance of the track's mark from its centre, m, over the frames that
 /// have both; `None` without a mark or such a frame.
 fn mark_distance(track: &Track) -> Option<f64> {
-    track.mark.as_ref()?;
-    let mut d: Vec<f64> = (0..track.t.len())
+    track.mark().as_ref()?;
+    let mut d: Vec<f64> = (0..track.t().len())
         .map(|i| {
             let (dx, dy) = track.at(i).mark_offset();
             dx.hypot(dy)
@@ -314,23 +308,23 @@ fn mark_distance(track: &Track) -> Option<f64> {
 
 /// Runs of rows with a time but no centre position.
 fn no_position(track: &Track) -> Vec<Gap> {
-    let mut out = Vec::new();
-    let mut i = 0;
-    while i < track.t.len() {
-        if track.x[i].is_finite() {
-            i += 1;
-            continue;
+    let mut out: Vec<Gap> = Vec::new();
+    let mut open = false;
+    for (&t, x) in track.t().iter().zip(track.x()) {
+        match out.last_mut() {
+            Some(gap) if open && !x.is_finite() => {
+                gap.to = t;
+                gap.frames += 1;
+            }
+            _ if !x.is_finite() => out.push(Gap {
+                from: t,
+                to: t,
+                frames: 1,
+                why: "no position",
+            }),
+            _ => {}
         }
-        let start = i;
-        while i < track.t.len() && !track.x[i].is_finite() {
-            i += 1;
-        }
-        out.push(Gap {
-            from: track.t[start],
-            to: track.t[i - 1],
-            frames: i - start,
-            why: "no position",
-        });
+        open = !x.is_finite();
     }
     out
 }
@@ -341,12 +335,13 @@ fn jumps(t: &[f64]) -> Vec<Gap> {
     if frame.is_nan() || frame <= 0.0 {
         return Vec::new();
     }
-    t.windows(2)
-        .filter(|w| w[1] - w[0] > 1.5 * frame)
-        .map(|w| Gap {
-            from: w[0],
-            to: w[1],
-            frames: ((w[1] - w[0]) / frame).round() as usize - 1,
+    t.iter()
+        .zip(t.iter().skip(1))
+        .filter(|(a, b)| *b - *a > 1.5 * frame)
+        .map(|(&a, &b)| Gap {
+            from: a,
+            to: b,
+            frames: ((b - a) / frame).round() as usize - 1,
             why: "no row",
         })
         .collect()

@@ -83,12 +83,12 @@ fn off_line(points: &[(f64, f64)]) -> f64 {
 /// have a position, the centre's path strays from a straight line [`STRAYS_MORE`]
 /// times as far as the mark's, and by more than a fifth of their distance apart.
 pub fn swapped(track: &Track) -> Result<(), Swapped> {
-    if track.mark.is_none() {
+    if track.mark().is_none() {
         return Ok(());
     }
     // The frames where both have a position (a column shorter than the times has
     // none past its end: `Track::at`).
-    let (centre, mark): (Vec<_>, Vec<_>) = (0..track.t.len())
+    let (centre, mark): (Vec<_>, Vec<_>) = (0..track.t().len())
         .map(|i| track.at(i))
         .filter(|f| [f.x, f.y, f.mark_x, f.mark_y].iter().all(|v| v.is_finite()))
         .map(|f| ((f.x, f.y), (f.mark_x, f.mark_y)))
@@ -106,8 +106,8 @@ pub fn swapped(track: &Track) -> Result<(), Swapped> {
     let (centre_off, mark_off) = (off_line(&centre), off_line(&mark));
     if centre_off > STRAYS_MORE * mark_off && centre_off > 0.2 * apart {
         return Err(Swapped {
-            centre: track.centre_name.clone(),
-            mark: track.mark_name.clone().unwrap_or_default(),
+            centre: track.centre_name().to_string(),
+            mark: track.mark_name().unwrap_or_default().to_string(),
             centre_off,
             mark_off,
         });

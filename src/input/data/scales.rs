@@ -2,19 +2,12 @@
 //! size a ball in a groove has: a header without units whose numbers are plainly ms,
 //! cm or mm is refused with what the numbers look like and the option that reads them.
 
-// Not yet converted to `get`, iterators and typed errors (issue 35, open): its
-// indices come from its own loops over vectors of one length.
-#![allow(
-    clippy::indexing_slicing,
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::panic
-)]
-
 use std::fmt;
 
 use crate::settings::units::significant;
 use crate::study::measured::Track;
+#[cfg(test)]
+use crate::study::measured::TrackParts;
 
 /// Slowest frame rate a measurement of this experiment has (a frame a second), and
 /// the largest speed a ball in a groove reaches (m/s): numbers beyond them, with no
@@ -51,6 +44,7 @@ const CHANGE_SPAN: f64 = 0.02;
 /// that one glitch (a tracker's jump up and back) is no change while a ramp (a slow
 /// ball's slide, two frames at 60 frames/s) keeps every value. `None` with fewer than
 /// three points.
+#[allow(clippy::indexing_slicing)] // every index is below n, the shorter column's length
 pub fn steepest_change(t: &[f64], v: &[f64]) -> Option<f64> {
     let n = t.len().min(v.len());
     let v: Vec<f64> = (0..n)
@@ -101,7 +95,7 @@ const TYPICAL_SPEED: f64 = 0.5;
 
 /// The median spacing of neighbouring times.
 pub fn frame_spacing(t: &[f64]) -> f64 {
-    let mut spacing: Vec<f64> = t.windows(2).map(|w| w[1] - w[0]).collect();
+    let mut spacing: Vec<f64> = t.iter().zip(t.iter().skip(1)).map(|(a, b)| b - a).collect();
     spacing.sort_by(f64::total_cmp);
     spacing.get(spacing.len() / 2).copied().unwrap_or(f64::NAN)
 }
@@ -112,24 +106,22 @@ pub fn frame_spacing(t: &[f64]) -> f64 {
 /// frames. Not the median: a recording may roll slowly for most of its frames after
 /// the impact; not the largest: one glitch would be it.
 pub fn approach_speed(track: &Track) -> Option<f64> {
-    let mut speeds: Vec<f64> = (1..track.t.len())
+    let mut speeds: Vec<f64> = (1..track.len())
         .filter_map(|i| {
-            let dx = track.x[i] - track.x[i - 1];
-            let dy = track.y[i] - track.y[i - 1];
+            let (a, b) = (track.at(i - 1), track.at(i));
+            let (dx, dy) = (b.x - a.x, b.y - a.y);
             let d = if dy.is_finite() {
                 dx.hypot(dy)
             } else {
                 dx.abs()
             };
-            let v = d / (track.t[i] - track.t[i - 1]);
+            let v = d / (b.t - a.t);
             v.is_finite().then_some(v)
         })
         .collect();
-    if speeds.is_empty() {
-        return None;
-    }
     speeds.sort_by(f64::total_cmp);
-    Some(speeds[(speeds.len() * 9 / 10).min(speeds.len() - 1)])
+    let at = (speeds.len() * 9 / 10).min(speeds.len().saturating_sub(1));
+    speeds.get(at).copied()
 }
 
 /// How a position file's units were decided: each unit's SI factor and who said it
@@ -329,7 +321,7 @@ impl fmt::Display for ScaleError {
 /// not m), or below 1 mm/s (metres read as mm), whether the units were stated or
 /// assumed.
 pub fn check_track(track: &Track, given: &Given) -> Result<(), ScaleError> {
-    let frame = frame_spacing(&track.t);
+    let frame = frame_spacing(track.t());
     let (tf, t_by) = given.time;
     let (lf, l_by) = given.length;
     if frame >= LONGEST_FRAME {
@@ -383,12 +375,13 @@ mod tests {
                 }
             })
             .collect();
-        Track {
+        Track::new(TrackParts {
             y: vec![0.0; t.len()],
             x,
             t,
-            ..Track::default()
-        }
+            ..TrackParts::default()
+        })
+        .unwrap()
     }
 
     #[test]
@@ -447,8 +440,9 @@ mod tests {
             time: (1.0, Some("the header")),
             length: (1.0, Some("the header")),
         };
-        let mut slow = track(0.6);
+        let mut slow = track(0.6).into_parts();
         slow.t.iter_mut().for_each(|t| *t *= 1e3);
+        let slow = Track::new(slow).unwrap();
         let e = check_track(&slow, &stated).unwrap_err().to_string();
         assert!(
             e.contains("fix the header (t (ms)) or give --time-unit ms"),

@@ -5,41 +5,32 @@
 //! without them, or with lines that do not read, keeps no σ: the fit then weights
 //! every point alike, as before.
 
-// Not yet converted to `get`, iterators and typed errors (issue 35, open): its
-// indices come from its own loops over vectors of one length.
-#![allow(
-    clippy::indexing_slicing,
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::panic
-)]
-
-use crate::study::measured::Track;
+use crate::study::measured::{Rule, Track, TrackParts};
 use crate::vision::write::{SIGMA_HEADER, SIGMA_ROW};
 
 /// `track` with the σ of its centre and mark where `text` states them (the tracks
 /// named as `track.centre_name` and `track.mark_name`), matched to its frames by time
 /// (within a quarter of a frame; a frame without a σ line gets NaN).
-pub fn with_sigmas(text: &str, track: Track) -> Track {
+/// A σ the track's rules refuse (a negative one) is said as such.
+pub fn with_sigmas(text: &str, track: Track) -> Result<Track, Rule> {
     let Some((names, rows)) = sigma_lines(text) else {
-        return track;
+        return Ok(track);
     };
     let column = |name: &str| names.iter().position(|n| same(n, name));
-    let Some(centre) = column(&track.centre_name) else {
-        return track;
+    let Some(centre) = column(track.centre_name()) else {
+        return Ok(track);
     };
     let mark = track
-        .mark_name
-        .as_deref()
-        .filter(|_| track.mark.is_some())
+        .mark_name()
+        .filter(|_| track.mark().is_some())
         .and_then(column);
-    let sigma = Some(on_frames(&track.t, &rows, centre));
-    let mark_sigma = mark.map(|m| on_frames(&track.t, &rows, m));
-    Track {
+    let sigma = Some(on_frames(track.t(), &rows, centre));
+    let mark_sigma = mark.map(|m| on_frames(track.t(), &rows, m));
+    Track::new(TrackParts {
         sigma,
         mark_sigma,
-        ..track
-    }
+        ..track.into_parts()
+    })
 }
 
 fn same(a: &str, b: &str) -> bool {
@@ -73,7 +64,10 @@ fn sigma_lines(text: &str) -> Option<(Vec<String>, Vec<Vec<f64>>)> {
 /// positive finite σ put on the frame within a quarter of a frame of its time.
 fn on_frames(t: &[f64], rows: &[Vec<f64>], col: usize) -> Vec<f64> {
     let mut out = vec![f64::NAN; t.len()];
-    let mut gaps: Vec<f64> = t.windows(2).map(|w| w[1] - w[0]).collect();
+    let mut gaps: Vec<f64> = t
+        .windows(2)
+        .filter_map(|w| w.last().zip(w.first()).map(|(b, a)| b - a))
+        .collect();
     gaps.sort_by(f64::total_cmp);
     let near = 0.25 * gaps.get(gaps.len() / 2).copied().unwrap_or(f64::INFINITY);
     for row in rows {
@@ -84,8 +78,10 @@ fn on_frames(t: &[f64], rows: &[Vec<f64>], col: usize) -> Vec<f64> {
             continue;
         }
         let j = t.partition_point(|&x| x < at - near);
-        if let Some(k) = (j..t.len().min(j + 2)).find(|&k| (t[k] - at).abs() <= near) {
-            out[k] = s;
+        let near_frame =
+            (j..t.len().min(j + 2)).find(|&k| t.get(k).is_some_and(|tk| (tk - at).abs() <= near));
+        if let Some(cell) = near_frame.and_then(|k| out.get_mut(k)) {
+            *cell = s;
         }
     }
     out
@@ -96,15 +92,16 @@ mod tests {
     use super::*;
 
     fn track() -> Track {
-        Track {
+        Track::new(TrackParts {
             t: vec![0.0, 0.01, 0.02],
             x: vec![0.1, 0.2, 0.3],
             y: vec![0.0; 3],
             mark: Some((vec![0.1; 3], vec![0.01; 3])),
             centre_name: "left ball".into(),
             mark_name: Some("left mark".into()),
-            ..Track::default()
-        }
+            ..TrackParts::default()
+        })
+        .unwrap()
     }
 
     #[test]
@@ -113,11 +110,11 @@ mod tests {
                     # sigma (m)\tt\tleft ball\tleft mark\n\
                     # sigma\t0.0E0\t1.0E-5\t3.0E-5\n\
                     # sigma\t2.0E-2\t2.0E-5\t\n";
-        let t = with_sigmas(text, track());
-        let s = t.sigma.unwrap();
+        let t = with_sigmas(text, track()).unwrap();
+        let s = t.sigma().unwrap();
         assert_eq!((s[0], s[2]), (1e-5, 2e-5));
         assert!(s[1].is_nan(), "no line for t = 0.01");
-        let m = t.mark_sigma.unwrap();
+        let m = t.mark_sigma().unwrap();
         assert_eq!(m[0], 3e-5);
         assert!(m[2].is_nan(), "an empty cell is no σ");
     }
@@ -130,8 +127,8 @@ mod tests {
             "# sigma (m)\tt\tright ball\n# sigma\t0\t1e-5\n",
             "# sigma\t0\t1e-5\n",
         ] {
-            let t = with_sigmas(text, track());
-            assert_eq!((t.sigma, t.mark_sigma), (None, None), "{text}");
+            let t = with_sigmas(text, track()).unwrap();
+            assert_eq!((t.sigma(), t.mark_sigma()), (None, None), "{text}");
         }
     }
 }

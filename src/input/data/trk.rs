@@ -6,15 +6,6 @@
 //! (pixel y down, world y up, the x axis turned by the angle, in the project's length
 //! unit); times are `start time + (frame − start frame)·Δt`.
 
-// Not yet converted to `get`, iterators and typed errors (issue 35, open): its
-// indices come from its own loops over vectors of one length.
-#![allow(
-    clippy::indexing_slicing,
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::panic
-)]
-
 use roxmltree::Node;
 
 use super::layout::pick_roles;
@@ -24,7 +15,7 @@ use super::problem::{DataError, DataProblem};
 use super::scales::{Given, LENGTHS, check_track_as_read};
 use super::xml::{self, child};
 use crate::settings::units::{Dimension, significant};
-use crate::study::measured::Track;
+use crate::study::measured::{Track, TrackParts};
 
 /// The format's name, as `groovelab data` and the fit say it.
 pub const FORMAT: &str = "Tracker project (.trk)";
@@ -197,38 +188,39 @@ pub(super) fn read(text: &str, file: &str, reading: &Reading) -> Result<(Track, 
     let (centre, mark) = pick_roles(&names, reading).map_err(|e| err(e.into()))?;
     let coords = coords(root);
     let (factor, length) = length_unit(root, &coords, reading).map_err(err)?;
-    let points = |name: &str| {
-        tracks
-            .iter()
-            .find(|p| p.name == name)
-            .expect("a named track")
+    // The roles are picked among these tracks' names, so both are found.
+    let points = |name: &str| tracks.iter().find(|p| p.name == name);
+    let Some(centre_points) = points(&centre) else {
+        return Err(err(DataProblem::NoPointMass));
     };
-    let frame_list = frame_union(points(&centre), mark.as_deref().map(points));
+    let mark_points = mark.as_deref().and_then(points);
+    let frame_list = frame_union(centre_points, mark_points);
     let time = |f: usize| start_time + (f as f64 - start_frame as f64) * dt;
     let at = |p: &Points, f: usize| -> (f64, f64) {
-        match p.at.binary_search_by_key(&f, |a| a.0) {
-            Ok(i) => {
+        let found = p.at.binary_search_by_key(&f, |a| a.0).ok();
+        match found.and_then(|i| p.at.get(i)) {
+            Some(&(_, px, py)) => {
                 let c = coords_at(&coords, f, factor.is_pixels);
-                let (x, y) = c.world(p.at[i].1, p.at[i].2);
+                let (x, y) = c.world(px, py);
                 (x * factor.si, y * factor.si)
             }
-            Err(_) => (f64::NAN, f64::NAN),
+            None => (f64::NAN, f64::NAN),
         }
     };
-    let mut track = Track {
+    let mut track = TrackParts {
         centre_name: centre.clone(),
         mark_name: mark.clone(),
         format: FORMAT,
         mark: mark.as_ref().map(|_| (Vec::new(), Vec::new())),
-        ..Track::default()
+        ..TrackParts::default()
     };
     for &f in &frame_list {
         track.t.push(time(f));
-        let (x, y) = at(points(&centre), f);
+        let (x, y) = at(centre_points, f);
         track.x.push(x);
         track.y.push(y);
-        if let (Some(m), Some((mx, my))) = (&mark, track.mark.as_mut()) {
-            let (a, b) = at(points(m), f);
+        if let (Some(m), Some((mx, my))) = (mark_points, track.mark.as_mut()) {
+            let (a, b) = at(m, f);
             mx.push(a);
             my.push(b);
         }
@@ -237,6 +229,7 @@ pub(super) fn read(text: &str, file: &str, reading: &Reading) -> Result<(Track, 
         time: (1.0, Some("the project")),
         length: (factor.si, Some(factor.by)),
     };
+    let track = Track::new(track).map_err(|e| err(e.into()))?;
     check_track_as_read(&track, &given, reading.own_lengths).map_err(|e| err(e.into()))?;
     let notes = Notes {
         cut_row: None,
@@ -342,7 +335,9 @@ fn length_unit(
         Some(u) => super::table::file_unit(u, Dimension::Length)
             .map_err(|_| DataProblem::ProjectUnit { unit: u.into() })?,
     };
-    let (_, c) = coords[0];
+    let Some(&(_, c)) = coords.first() else {
+        return Err(DataProblem::Uncalibrated);
+    };
     let how = format!(
         "the project's calibration ({} pixels per {}){}",
         significant(c.scale.0, 5),

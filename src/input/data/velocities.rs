@@ -3,15 +3,6 @@
 //! turned), the time origin moved to the first impact, and numbers that are plainly
 //! in other units than the header says named in the error.
 
-// Not yet converted to `get`, iterators and typed errors (issue 35, open): its
-// indices come from its own loops over vectors of one length.
-#![allow(
-    clippy::indexing_slicing,
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::panic
-)]
-
 use super::misfit::Units;
 use super::notes::Notes;
 use super::options::{MAX_ROWS, Reading};
@@ -20,7 +11,7 @@ use super::problem::{
 };
 use super::table::{Table, clean, number, unit_factor};
 use crate::settings::units::Dimension;
-use crate::study::measured::Measured;
+use crate::study::measured::{Measured, MeasuredParts};
 
 /// Which quantity a velocity-file header cell names, and the SI factor its unit implies.
 fn column(header: &str) -> Option<(&'static str, Option<f64>)> {
@@ -150,7 +141,9 @@ pub(super) fn without_impact(
         tracks: Vec::new(),
         units: units.notes(),
     };
-    Ok((Measured::velocities(t, v_cm, v_t), notes))
+    let m = Measured::velocities(t, v_cm, v_t)
+        .map_err(|e| DataError::new(file, DataProblem::from(e)))?;
+    Ok((m, notes))
 }
 
 /// [`parse`] of a file already split into rows, with what the file said about its
@@ -162,10 +155,11 @@ pub(super) fn read_table(
 ) -> Result<(Measured, Notes), DataError> {
     let err = |what: DataProblem| DataError::new(file, what);
     let ((mut t, mut v_cm, mut v_t), units) = columns(table, file, reading)?;
+    let end = |v: Option<&f64>| v.copied().unwrap_or(f64::NAN);
+    let (first, last) = (end(t.first()), end(t.last()));
     if let Some(at) = reading.impact_at
-        && !(t[0]..=t[t.len() - 1]).contains(&at)
+        && !(first..=last).contains(&at)
     {
-        let (first, last) = (t[0], t[t.len() - 1]);
         return Err(err(ImpactOutside { at, first, last }.into()));
     }
     let mirrored = turn_if_reversed(&t, &mut v_cm, &mut v_t, reading.impact_at);
@@ -183,13 +177,17 @@ pub(super) fn read_table(
         }
     }
     approach_seen(&t, impact).map_err(|e| err(e.into()))?;
-    let m = Measured {
+    let m = Measured::new(MeasuredParts {
+        t,
+        v_cm,
+        v_t,
         mirrored,
-        ..Measured::velocities(t, v_cm, v_t)
-    };
+        ..MeasuredParts::default()
+    })
+    .map_err(|e| err(e.into()))?;
     m.check_magnitudes().map_err(|e| err(e.into()))?;
     units
-        .check_plausible(&m.t, &m.v_cm, &m.v_t)
+        .check_plausible(m.t(), m.v_cm(), m.v_t())
         .map_err(|e| err(e.into()))?;
     let notes = Notes {
         cut_row: None,
@@ -220,13 +218,14 @@ fn approach_sign(t: &[f64], v_cm: &[f64], impact_at: Option<f64>) -> f64 {
     let n = match impact_at {
         Some(at) => t.partition_point(|&x| x < at),
         None => v_cm
-            .windows(2)
-            .map(|w| (w[1] - w[0]).abs())
+            .iter()
+            .zip(v_cm.iter().skip(1))
+            .map(|(a, b)| (b - a).abs())
             .enumerate()
             .max_by(|a, b| a.1.total_cmp(&b.1))
             .map_or(1, |(i, _)| i + 1),
     };
-    let sum: f64 = v_cm[..n.clamp(1, v_cm.len())].iter().sum();
+    let sum: f64 = v_cm.iter().take(n.max(1)).sum();
     if sum < 0.0 { -1.0 } else { 1.0 }
 }
 
@@ -246,9 +245,15 @@ fn approach_seen(t: &[f64], impact: f64) -> Result<(), TooFewBefore> {
 /// drop is spread over two frames, the frame in between straddles the impact (the
 /// paper's convention) and is the impact time; otherwise the impact is put mid-way.
 pub fn detect_impact(t: &[f64], v_cm: &[f64]) -> Option<f64> {
-    let drops: Vec<f64> = v_cm.windows(2).map(|w| w[0] - w[1]).collect();
+    let drops: Vec<f64> = v_cm
+        .iter()
+        .zip(v_cm.iter().skip(1))
+        .map(|(a, b)| a - b)
+        .collect();
     let (i, &drop) = drops.iter().enumerate().max_by(|a, b| a.1.total_cmp(b.1))?;
-    if drop <= 0.0 || drop < v_cm[i].abs().max(v_cm[i + 1].abs()) / 3.0 {
+    // A drop at i lies between frames i and i + 1, both in `t` and `v_cm`.
+    let (&t0, &t1, &v0, &v1) = (t.get(i)?, t.get(i + 1)?, v_cm.get(i)?, v_cm.get(i + 1)?);
+    if drop <= 0.0 || drop < v0.abs().max(v1.abs()) / 3.0 {
         return None;
     }
     let big = |j: Option<usize>| {
@@ -256,11 +261,11 @@ pub fn detect_impact(t: &[f64], v_cm: &[f64]) -> Option<f64> {
             .is_some_and(|&d| d >= drop / 3.0)
     };
     Some(if big(i.checked_sub(1)) {
-        t[i]
+        t0
     } else if big(Some(i + 1)) {
-        t[i + 1]
+        t1
     } else {
-        0.5 * (t[i] + t[i + 1])
+        0.5 * (t0 + t1)
     })
 }
 
@@ -272,8 +277,8 @@ mod tests {
     fn reads_the_shared_format_and_finds_the_impact() {
         let text = "t_s,v_cm_m_per_s,v_t_m_per_s\n-0.02,0.79,0.78\n0,0.0925,0.78\n0.02,-0.64,0.70\n0.04,-0.63,0.68\n";
         let m = parse(text, "x.csv", &Reading::default()).unwrap();
-        assert_eq!(m.t, vec![-0.02, 0.0, 0.02, 0.04]);
-        assert_eq!(m.v_cm[2], -0.64);
+        assert_eq!(m.t(), vec![-0.02, 0.0, 0.02, 0.04]);
+        assert_eq!(m.v_cm()[2], -0.64);
         // One frame before an impact mid-way to the next: the approach is not seen.
         let text = "t,v_cm,v_t\n0,0.79,0.78\n0.02,-0.64,0.70\n0.04,-0.63,0.68\n";
         let e = parse(text, "x.csv", &Reading::default())
@@ -298,8 +303,8 @@ mod tests {
             );
         }
         let m = parse(&text, "x.csv", &Reading::default()).unwrap();
-        assert_eq!(m.v_cm[0], 0.5, "not turned");
-        assert!((m.t[0] + 0.015).abs() < 1e-12, "{:?}", &m.t[..3]);
+        assert_eq!(m.v_cm()[0], 0.5, "not turned");
+        assert!((m.t()[0] + 0.015).abs() < 1e-12, "{:?}", &m.t()[..3]);
     }
 
     #[test]
@@ -307,8 +312,8 @@ mod tests {
         let text = "time (ms);v_cm (cm/s);v_t [cm/s]\n0;79,5;78\n10;80;78\n20;9;78\n30;-64;70\n";
         let m = parse(text, "x.csv", &Reading::default()).unwrap();
         // Impact in the frame at 20 ms (v_cm mid-way): that becomes t = 0.
-        assert!((m.t[0] + 0.02).abs() < 1e-12, "{:?}", m.t);
-        assert!((m.v_cm[0] - 0.795).abs() < 1e-12);
+        assert!((m.t()[0] + 0.02).abs() < 1e-12, "{:?}", m.t());
+        assert!((m.v_cm()[0] - 0.795).abs() < 1e-12);
     }
 
     #[test]
@@ -329,7 +334,7 @@ mod tests {
     fn a_byte_order_mark_is_ignored() {
         let text = "\u{feff}t_s,v_cm_m_per_s,v_t_m_per_s\n-0.02,0.79,0.78\n0,0.0925,0.78\n0.02,-0.64,0.70\n0.04,-0.63,0.68\n";
         let m = parse(text, "x.csv", &Reading::default()).unwrap();
-        assert_eq!(m.t, vec![-0.02, 0.0, 0.02, 0.04]);
+        assert_eq!(m.t(), vec![-0.02, 0.0, 0.02, 0.04]);
     }
 
     #[test]

@@ -5,15 +5,6 @@
 //! cells and the rest is read as any table (a position track or velocities); the
 //! other header lines become comments, so every error still names the file's line.
 
-// Not yet converted to `get`, iterators and typed errors (issue 35, open): its
-// indices come from its own loops over vectors of one length.
-#![allow(
-    clippy::indexing_slicing,
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::panic
-)]
-
 use super::table::file_unit;
 use crate::settings::units::Dimension;
 
@@ -59,20 +50,22 @@ pub(super) fn as_table(text: &str) -> String {
     // The lines of names below the title, file and data-set lines: the long names
     // first, the units (if any) last.
     let named: Vec<usize> = (title + 1..first_data)
-        .filter(|&i| lines[i].contains('\t'))
+        .filter(|&i| lines.get(i).is_some_and(|l| l.contains('\t')))
         .collect();
     let long = named.first().copied();
     let units = named
         .iter()
         .rev()
         .copied()
-        .find(|&i| Some(i) != long && is_units(&lines[i].split('\t').collect::<Vec<_>>()));
+        .filter_map(|i| Some((i, *lines.get(i)?)))
+        .find(|&(i, l)| Some(i) != long && is_units(&l.split('\t').collect::<Vec<_>>()))
+        .map(|(_, l)| l);
     let mut out = String::with_capacity(text.len() + 64);
     for (i, line) in lines.iter().enumerate() {
         if i >= first_data {
             out += line;
         } else if Some(i) == long {
-            out += &header(line, units.map(|u| lines[u]));
+            out += &header(line, units);
         } else if !line.trim().is_empty() {
             out += "# ";
             out += line;

@@ -29,7 +29,7 @@ fn fitted_scene(scene: &Scene, fits: &Fits) -> Scene {
 /// The fit figure: measured v_cm and v_t, the fitted model, the paper's line fits over
 /// their window, and the residuals below.
 pub fn fit_figure(scene: &Scene, m: &Measured, fits: &Fits) -> Result<String, FigureError> {
-    let Some((t0, t1)) = finite_bounds(m.t.iter().copied()) else {
+    let Some((t0, t1)) = finite_bounds(m.t().iter().copied()) else {
         return Err(FigureError::NothingToDraw(
             "the measured series has no finite time to plot",
         ));
@@ -82,9 +82,9 @@ fn draw_fit(
         })
         .collect();
     let values = m
-        .v_cm
+        .v_cm()
         .iter()
-        .chain(&m.v_t)
+        .chain(m.v_t())
         .copied()
         .chain(model.iter().flat_map(|p| [p.1, p.2]));
     // Non-finite values (a model that overflowed) are left out of the range and
@@ -129,7 +129,8 @@ fn draw_fit(
             .legend(line_mark(colour.stroke_width(2)));
     }
     let points = |v: &[f64]| {
-        m.t.iter()
+        m.t()
+            .iter()
             .zip(v)
             .map(|(t, v)| (*t, *v))
             .filter(|p| finite(*p))
@@ -138,8 +139,8 @@ fn draw_fit(
     };
     draw_measured_marks(
         &mut chart,
-        points(&m.v_cm).into_iter(),
-        points(&m.v_t).into_iter(),
+        points(m.v_cm()).into_iter(),
+        points(m.v_t()).into_iter(),
         (BLUE, ORANGE),
     )?;
     for (l, (line, colour)) in fits
@@ -167,14 +168,15 @@ fn draw_residuals(
     sol: &Solution,
     (t0, t1): (f64, f64),
 ) -> Result<(), FigureError> {
-    let res: Vec<(f64, f64, f64)> =
-        m.t.iter()
-            .enumerate()
-            .map(|(i, &t)| {
-                let s = sol.at(t);
-                (t, m.v_cm[i] - s.left.v, m.v_t[i] - s.left.u)
-            })
-            .collect();
+    let res: Vec<(f64, f64, f64)> = m
+        .t()
+        .iter()
+        .enumerate()
+        .map(|(i, &t)| {
+            let s = sol.at(t);
+            (t, m.v_cm()[i] - s.left.v, m.v_t()[i] - s.left.u)
+        })
+        .collect();
     let rmax = res
         .iter()
         .flat_map(|r| [r.1.abs(), r.2.abs()])
@@ -232,19 +234,21 @@ mod tests {
             &crate::study::Quiet,
         )
         .unwrap();
-        // A fitted v0 of 1e308 (the model overflows) and inf in the data.
+        // A fitted v0 of 1e308 (the model overflows) and a gap in the data (a series
+        // cannot hold ±∞: `Measured::new` refuses it).
         let mut wild = fits.clone();
         wild.model_fit.v0 = 1e308;
-        let mut m = measured.clone();
-        m.v_cm[3] = f64::INFINITY;
+        let mut m = measured.to_parts();
         m.v_t[4] = f64::NAN;
+        let m = Measured::new(m).unwrap();
         let svg =
             within_30s(move || fit_figure(&scene, &m, &wild).map_err(|e| e.to_string())).unwrap();
         assert!(svg.starts_with("<svg"));
         // Huge but finite data give a huge but finite axis.
-        let mut big = measured.clone();
+        let mut big = measured.to_parts();
         big.v_cm[3] = 1e308;
         big.v_t[3] = -1e308;
+        let big = Measured::new(big).unwrap();
         let svg =
             within_30s(move || fit_figure(&scene, &big, &fits).map_err(|e| e.to_string())).unwrap();
         assert!(svg.starts_with("<svg"));

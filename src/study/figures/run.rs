@@ -99,13 +99,14 @@ fn value_range(
 ) -> (f64, f64) {
     let shown = |m: &'_ Measured| {
         let at = |v: &'_ [f64]| {
-            m.t.iter()
+            m.t()
+                .iter()
                 .zip(v.to_vec())
                 .filter(|(t, _)| (t0..=t1).contains(*t))
                 .map(|(_, v)| v)
                 .collect::<Vec<f64>>()
         };
-        [at(&m.v_cm), at(&m.v_t)].concat()
+        [at(m.v_cm()), at(m.v_t())].concat()
     };
     let values = curves
         .iter()
@@ -128,7 +129,8 @@ fn draw_measured(
 ) -> Result<(), FigureError> {
     let inside = |(t, v): &(f64, f64)| (t0..=t1).contains(t) && v.is_finite();
     let points = |v: &[f64]| {
-        m.t.iter()
+        m.t()
+            .iter()
             .zip(v)
             .map(|(t, v)| (*t, *v))
             .filter(inside)
@@ -136,8 +138,8 @@ fn draw_measured(
     };
     draw_measured_marks(
         chart,
-        points(&m.v_cm).into_iter(),
-        points(&m.v_t).into_iter(),
+        points(m.v_cm()).into_iter(),
+        points(m.v_t()).into_iter(),
         // Two colours, as the model's v_cm and v_t have two.
         (RED, GREEN),
     )

@@ -2,15 +2,6 @@
 //! as it approaches the first impact (the scene's v0, which the user need not give),
 //! with its standard error.
 
-// Not yet converted to `get`, iterators and typed errors (issue 35, open): its
-// indices come from its own loops over vectors of one length.
-#![allow(
-    clippy::indexing_slicing,
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::panic
-)]
-
 use serde::Serialize;
 
 use super::uncertainty::effective_points;
@@ -52,8 +43,9 @@ impl Approach {
 /// such frames, or no speed toward the impact.
 pub fn of_velocities(t: &[f64], v_cm: &[f64]) -> Option<Approach> {
     let frame = t
-        .windows(2)
-        .map(|w| w[1] - w[0])
+        .iter()
+        .zip(t.iter().skip(1))
+        .map(|(a, b)| b - a)
         .fold(f64::INFINITY, f64::min);
     let v: Vec<f64> = t
         .iter()

@@ -128,7 +128,7 @@ pub(super) fn candidates(m: &Measured, v0_measured: bool) -> Vec<Vec<Free>> {
         vec![Free::Mu, Free::RollingResistance],
         vec![Free::Mu, Free::Restitution, Free::RollingResistance],
     ];
-    let approach = m.t.iter().filter(|&&t| t < 0.0).count() >= APPROACH_FRAMES;
+    let approach = m.t().iter().filter(|&&t| t < 0.0).count() >= APPROACH_FRAMES;
     let with_v0 = base.iter().filter(|_| approach).map(|f| {
         let mut f = f.clone();
         f.insert(1, Free::V0);
@@ -191,7 +191,7 @@ pub(super) fn candidates_within(
     candidates: Vec<Vec<Free>>,
     evals: &mut Evals,
 ) -> Result<Vec<Candidate>, FitError> {
-    let target = if m.x.is_some() {
+    let target = if m.x().is_some() {
         Target::Position
     } else {
         Target::Velocity

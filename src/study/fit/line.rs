@@ -1,53 +1,14 @@
 //! The paper's line fits over the sliding phase (its table 1): straight lines through
 //! the measured v_cm and v_t, the window they cover, and the paper's own numbers.
 
-// Not yet converted to `get`, iterators and typed errors (issue 35, open): its
-// indices come from its own loops over vectors of one length.
-#![allow(
-    clippy::indexing_slicing,
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::panic
-)]
-
 use serde::Serialize;
 
 use super::problem::FitError;
 use super::uncertainty::noise_vector;
 use crate::physics::scene::Scene;
+pub use crate::study::measured::line::{Line, line};
+pub use crate::study::measured::noise::sliding_window;
 use crate::study::measured::series::Measured;
-
-/// A straight line `y = a + b t` by least squares, with standard errors.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Line {
-    pub intercept: f64,
-    pub slope: f64,
-    pub slope_se: f64,
-    pub intercept_se: f64,
-}
-
-/// Ordinary least squares of `ys` on `ts` (at least 3 points).
-pub fn line(ts: &[f64], ys: &[f64]) -> Line {
-    let n = ts.len() as f64;
-    let mt = ts.iter().sum::<f64>() / n;
-    let my = ys.iter().sum::<f64>() / n;
-    let sxx: f64 = ts.iter().map(|t| (t - mt).powi(2)).sum();
-    let sxy: f64 = ts.iter().zip(ys).map(|(t, y)| (t - mt) * (y - my)).sum();
-    let slope = sxy / sxx;
-    let intercept = my - slope * mt;
-    let rss: f64 = ts
-        .iter()
-        .zip(ys)
-        .map(|(t, y)| (y - intercept - slope * t).powi(2))
-        .sum();
-    let s2 = if n > 2.0 { rss / (n - 2.0) } else { f64::NAN };
-    Line {
-        intercept,
-        slope,
-        slope_se: (s2 / sxx).sqrt(),
-        intercept_se: (s2 * (1.0 / n + mt * mt / sxx)).sqrt(),
-    }
-}
 
 /// [`line`] through velocities derived from a track, whose neighbours share frames:
 /// point i is `e_i·x` over the tracked coordinates `x` (`shared[i]`,
@@ -117,9 +78,12 @@ fn line_shared(ts: &[f64], ys: &[f64], shared: &[Vec<(usize, f64)>], sigma: f64)
             }
         }
     }
-    let squares = sums
-        .values()
-        .fold(own, |acc, s| std::array::from_fn(|j| acc[j] + s[j] * s[j]));
+    let squares = sums.values().fold(own, |mut acc, s| {
+        for (a, v) in acc.iter_mut().zip(s) {
+            *a += v * v;
+        }
+        acc
+    });
     // tr(H E Eᵀ) with H = 1 1ᵀ/n + u uᵀ/Sxx.
     let tr_he = squares[0] / n + squares[1] / sxx;
     let rss: f64 = ts
@@ -132,9 +96,10 @@ fn line_shared(ts: &[f64], ys: &[f64], shared: &[Vec<(usize, f64)>], sigma: f64)
     } else {
         rss / (trace - tr_he).max(f64::MIN_POSITIVE)
     };
+    let [_, _, slope_sq, intercept_sq] = squares;
     Line {
-        slope_se: (s2 * squares[2]).sqrt(),
-        intercept_se: (s2 * squares[3]).sqrt(),
+        slope_se: (s2 * slope_sq).sqrt(),
+        intercept_se: (s2 * intercept_sq).sqrt(),
         ..l
     }
 }
@@ -142,9 +107,12 @@ fn line_shared(ts: &[f64], ys: &[f64], shared: &[Vec<(usize, f64)>], sigma: f64)
 /// [`line`] of `ys` on the times of the points `idx` of `m`: [`line_shared`] for
 /// velocities derived from a track (the v_t if `spin`, else the v_cm). A v_t's
 /// stencil makes the spin rate dθ/dt; times the contact radius `r` it makes v_t.
+// `idx` holds points of `m` (from `0..m.len()`, as `line_fit` makes them), whose
+// columns all have one value per time (the rules of `Measured`).
+#[allow(clippy::indexing_slicing)]
 fn line_of(m: &Measured, idx: &[usize], ys: &[f64], spin: bool, r: f64) -> Line {
-    let ts: Vec<f64> = idx.iter().map(|&i| m.t[i]).collect();
-    match &m.stencils {
+    let ts: Vec<f64> = idx.iter().map(|&i| m.t()[i]).collect();
+    match &m.stencils() {
         Some(st) => {
             let shared: Vec<Vec<(usize, f64)>> = idx
                 .iter()
@@ -260,22 +228,6 @@ impl LineFit {
     }
 }
 
-/// The sliding phase after the first impact (at t = 0): from the first frame after
-/// it until the measured v_cm and v_t meet (the last frame before they cross).
-pub fn sliding_window(m: &Measured) -> Option<(f64, f64)> {
-    // Frames without a measured v_t (a track without its rim mark) cannot say.
-    let after: Vec<usize> = (0..m.t.len())
-        .filter(|&i| m.t[i] > 0.0 && m.v_t[i].is_finite())
-        .collect();
-    let first = *after.first()?;
-    let sign0 = (m.v_cm[first] - m.v_t[first]).signum();
-    let last = after
-        .iter()
-        .take_while(|&&i| (m.v_cm[i] - m.v_t[i]).signum() == sign0)
-        .last()?;
-    Some((m.t[first], m.t[*last]))
-}
-
 /// How far apart μ_k,cm and μ_k,t may lie, relative to their mean, beyond their ±,
 /// in data whose scene fits: the paper's own three series put them up to 19 % apart
 /// (b = 4.9 cm: 0.149 and 0.180, each ± 0.004), the line fits' ± leaving out the
@@ -296,6 +248,9 @@ impl LineFit {
 }
 
 /// Line fits of v_cm and v_t over `[from, to]` (default: the sliding phase).
+// Its points `idx` come from `0..m.len()`, and every column of `m` has one value per
+// time (the rules of `Measured`).
+#[allow(clippy::indexing_slicing)]
 pub fn line_fit(
     m: &Measured,
     scene: &Scene,
@@ -303,7 +258,7 @@ pub fn line_fit(
 ) -> Result<LineFit, FitError> {
     let auto = sliding_window(m);
     // Without v_t the window still starts at the first frame after the impact.
-    let first_after = m.t.iter().copied().find(|&t| t > 0.0);
+    let first_after = m.t().iter().copied().find(|&t| t > 0.0);
     let from = window
         .0
         .or(auto.map(|w| w.0))
@@ -312,15 +267,16 @@ pub fn line_fit(
     let to = window.1.or(auto.map(|w| w.1)).unwrap_or(from);
     // A window reaching past the data's ends fits what the data hold: report that span
     // (a fitted model may roll again only after the track ends; `--to 5` on a 1 s track).
-    let span =
-        m.t.iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &t| {
-                (lo.min(t), hi.max(t))
-            });
+    let span = m
+        .t()
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &t| {
+            (lo.min(t), hi.max(t))
+        });
     let asked = (from, to);
     let (from, to) = (from.max(span.0), to.min(span.1));
-    let idx: Vec<usize> = (0..m.t.len())
-        .filter(|&i| m.t[i] >= from - 1e-12 && m.t[i] <= to + 1e-12)
+    let idx: Vec<usize> = (0..m.t().len())
+        .filter(|&i| m.t()[i] >= from - 1e-12 && m.t()[i] <= to + 1e-12)
         .collect();
     if idx.len() < 3 {
         return Err(FitError::ShortWindow {
@@ -332,7 +288,7 @@ pub fn line_fit(
     let cm = line_of(
         m,
         &idx,
-        &idx.iter().map(|&i| m.v_cm[i]).collect::<Vec<_>>(),
+        &idx.iter().map(|&i| m.v_cm()[i]).collect::<Vec<_>>(),
         false,
         scene.k() * scene.radius,
     );
@@ -340,13 +296,13 @@ pub fn line_fit(
     let with_t: Vec<usize> = idx
         .iter()
         .copied()
-        .filter(|&i| m.v_t[i].is_finite())
+        .filter(|&i| m.v_t()[i].is_finite())
         .collect();
     let vt = if with_t.len() >= 3 {
         line_of(
             m,
             &with_t,
-            &with_t.iter().map(|&i| m.v_t[i]).collect::<Vec<_>>(),
+            &with_t.iter().map(|&i| m.v_t()[i]).collect::<Vec<_>>(),
             true,
             scene.k() * scene.radius,
         )

@@ -22,6 +22,7 @@ mod model;
 mod problem;
 mod regime;
 mod residuals;
+mod tracks;
 mod uncertainty;
 
 use serde::Serialize;
@@ -42,6 +43,7 @@ pub use model::{
 pub use problem::{DataLooks, FitError, Free, WORK_BUDGET};
 pub use regime::{observed_regime, rest_band};
 pub use residuals::{NearImpacts, aligned_track};
+pub use tracks::{TrackFits, fit_tracks};
 pub use uncertainty::{NotIdentified, ScalePart};
 
 /// The fits of one series: the paper's line fits, and one fit per candidate model,
@@ -128,7 +130,7 @@ pub fn fit_all(
     };
     let Some(head) = head else {
         return Err(FitError::TooFewPoints {
-            usable: m.t.len(),
+            usable: m.t().len(),
             needed: free.map_or(1, <[Free]>::len) + 2,
         });
     };
@@ -158,7 +160,7 @@ pub fn fit_all(
     // says it poorly: the fitted model does ([`regime::sliding_end`]).
     // (Of a track, by the fit to the velocities it derives.)
     let window = match window {
-        (from, None) if m.stencils.is_some() || !m.has_v_t() => {
+        (from, None) if m.stencils().is_some() || !m.has_v_t() => {
             let by = velocity_fit.as_ref().map_or(fitted, |v| v.scene_of(scene));
             (from, regime::sliding_end(m, &by))
         }
@@ -248,7 +250,7 @@ fn check_finite(f: &Fits, data: &Measured, scene: &Scene) -> Result<(), FitError
 /// number ([`FitError::NotFinite`]).
 fn looks(data: &Measured, scene: &Scene) -> DataLooks {
     let mut steps: Vec<f64> = data
-        .t
+        .t()
         .windows(2)
         .filter_map(|w| w.last().zip(w.first()).map(|(b, a)| b - a))
         .collect();
@@ -260,15 +262,15 @@ fn looks(data: &Measured, scene: &Scene) -> DataLooks {
             })
     };
     DataLooks {
-        t: span(&data.t),
+        t: span(data.t()),
         frame: steps.get(steps.len() / 2).copied().unwrap_or(f64::NAN),
         fastest: data
-            .v_cm
+            .v_cm()
             .iter()
-            .chain(&data.v_t)
+            .chain(data.v_t())
             .filter(|v| v.is_finite())
             .fold(0.0_f64, |a, v| a.max(v.abs())),
-        positions: data.x.as_deref().map(span),
+        positions: data.x().map(span),
         v0: scene.left.v0.abs().max(scene.right.v0.abs()),
     }
 }
@@ -314,7 +316,7 @@ mod tests {
         let t: Vec<f64> = (0..30).map(|i| -0.1 + f64::from(i) / 50.0).collect();
         let v_cm = t.iter().map(|&t| sol.at(t).left.v).collect();
         let v_t = t.iter().map(|&t| sol.at(t).left.u).collect();
-        let m = Measured::velocities(t, v_cm, v_t);
+        let m = Measured::velocities(t, v_cm, v_t).unwrap();
         let free = &[Free::Mu];
         let velocity = residuals::Target::Velocity;
         let near = Scene {
@@ -355,7 +357,7 @@ mod tests {
     fn a_fit_without_finite_numbers_says_what_the_numbers_look_like_and_which_options_read_them() {
         // ms and cm/s read as s and m/s: frames 8.33 "s" apart, speeds of 50 "m/s".
         let t: Vec<f64> = (-3..=3).map(|i| f64::from(i) * 8.333).collect();
-        let data = Measured::velocities(t, vec![50.0; 7], vec![50.0; 7]);
+        let data = Measured::velocities(t, vec![50.0; 7], vec![50.0; 7]).unwrap();
         let ball = Ball {
             mass: 0.11,
             v0: 0.5,

@@ -2,15 +2,6 @@
 //! or of its tracked positions, with uncertainties and the regime compared with what
 //! was seen; a long series thinned first.
 
-// Not yet converted to `get`, iterators and typed errors (issue 35, open): its
-// indices come from its own loops over vectors of one length.
-#![allow(
-    clippy::indexing_slicing,
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::panic
-)]
-
 use serde::Serialize;
 
 use crate::physics::closed_form;
@@ -19,7 +10,7 @@ use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
 use crate::physics::story::Verdict;
 use crate::study::Progress;
-use crate::study::measured::series::{Measured, Stencils};
+use crate::study::measured::series::Measured;
 
 use super::least_squares::{
     At, Problem, least_squares, normal_matrix, profile_mu, smooth_jacobian, with,
@@ -259,37 +250,12 @@ impl Agreement {
 /// Every `k`-th frame of `m`, with `k` the smallest that leaves at most
 /// [`MAX_MODEL_POINTS`] frames; `None` if the series is short enough already.
 pub fn thinned(m: &Measured) -> Option<(Measured, usize)> {
-    let n = m.t.len();
+    let n = m.t().len();
     if n <= MAX_MODEL_POINTS {
         return None;
     }
     let k = n.div_ceil(MAX_MODEL_POINTS);
-    let pick = |v: &[f64]| -> Vec<f64> { v.iter().step_by(k).copied().collect() };
-    let pick_opt = |v: &Option<Vec<f64>>| v.as_deref().map(pick);
-    Some((
-        Measured {
-            t: pick(&m.t),
-            v_cm: pick(&m.v_cm),
-            v_t: pick(&m.v_t),
-            v_cm_sigma: pick_opt(&m.v_cm_sigma),
-            v_t_sigma: pick_opt(&m.v_t_sigma),
-            x: pick_opt(&m.x),
-            angle: pick_opt(&m.angle),
-            x_sigma: pick_opt(&m.x_sigma),
-            angle_sigma: pick_opt(&m.angle_sigma),
-            stencils: m.stencils.as_ref().map(|s| {
-                let pick = |v: &[Option<_>]| v.iter().step_by(k).copied().collect();
-                std::sync::Arc::new(Stencils {
-                    v_cm: pick(&s.v_cm),
-                    v_t: pick(&s.v_t),
-                    ..(**s).clone()
-                })
-            }),
-            mirrored: m.mirrored,
-            scale_rel_se: m.scale_rel_se,
-        },
-        k,
-    ))
+    Some((m.retain_points(|i| i % k == 0), k))
 }
 
 /// Least squares of the exact model's v_cm and v_t of the left ball to all measured
@@ -317,7 +283,7 @@ pub fn position_fit(
     free: &[Free],
     progress: &dyn Progress,
 ) -> Result<ModelFit, FitError> {
-    if m.x.is_none() {
+    if m.x().is_none() {
         return Err(FitError::NoPositions);
     }
     model_fit_of(scene, m, free, Target::Position, progress)
@@ -431,11 +397,11 @@ type Fitted = (Vec<f64>, Vec<usize>);
 /// ends them (at 30 frames/s a ball that hits again at once is never seen nearer). `None` without positions, without such a return, or with fewer than
 /// six frames after the impact before it.
 fn before_return(m: &Measured) -> Option<Vec<usize>> {
-    let x = m.x.as_ref()?;
-    let away = (5.0 * m.stencils.as_ref().map_or(0.0, |s| s.scatter)).max(1e-3);
+    let x = m.x()?;
+    let away = (5.0 * m.stencils().as_ref().map_or(0.0, |s| s.scatter)).max(1e-3);
     let mut farthest = 0.0_f64;
     let mut after = 0;
-    let back = m.t.iter().zip(x).position(|(&t, &x)| {
+    let back = m.t().iter().zip(x).position(|(&t, &x)| {
         if t <= 0.0 || !x.is_finite() {
             return false;
         }
@@ -503,33 +469,15 @@ pub(super) fn scored_fit_within(
     let (r, labels) = labelled_residuals(&fitted, m, &idx, target, true, evals);
     let n = p.len();
     let cost: f64 = r.iter().map(|x| x * x).sum();
-    let mut s2 = cost / r.len().saturating_sub(n + nuisance(m, target)).max(1) as f64;
-    let j = smooth_jacobian(
-        &pb,
-        evals,
-        &At {
-            idx: &idx,
-            p: &p,
-            r0: &r,
-        },
-    );
-    // Velocities derived from a track share frames: their errors are correlated, by
-    // the stencils. Other residuals that go together from frame to frame (a tracker's
-    // drift, a velocity some tool smoothed, a model that misses the data's shape) are
-    // worth fewer independent points: their variance counts for that many.
-    let shared = match (&m.stencils, target) {
-        (Some(st), Target::Velocity) => Some(shared_noise(&j, &labels, st)),
-        _ => {
-            s2 *= r.len() as f64 / effective_points(&r, &labels).max(1.0);
-            None
-        }
-    };
-    let (mut ses, not_identified) =
-        uncertainties(&normal_matrix(&j), shared.as_deref(), s2, free, &p);
+    let (mut ses, not_identified) = standard_errors(&pb, evals, (&p, &idx), (&r, &labels));
     let scale = m
-        .scale_rel_se
+        .scale_rel_se()
         .and_then(|rel| with_scale(rel, free, &p, &mut ses));
-    let se = |f: Free| free.iter().position(|x| *x == f).and_then(|i| ses[i]);
+    let se = |f: Free| {
+        free.iter()
+            .position(|x| *x == f)
+            .and_then(|i| ses.get(i).copied().flatten())
+    };
     let scored = |fit: ModelFit| Scored {
         fit,
         cost,
@@ -578,6 +526,32 @@ pub(super) fn scored_fit_within(
         lines_disagree: None,
         mu_implausible: fitted.mu > MAX_PLAUSIBLE_MU,
     }))
+}
+
+/// The free values' standard errors at the optimum `p` (fitted on the frames `idx`,
+/// with residuals `r` labelled `labels`), and the values the data do not determine.
+fn standard_errors(
+    pb: &Problem,
+    evals: &mut Evals,
+    (p, idx): (&[f64], &[usize]),
+    (r, labels): (&[f64], &[super::uncertainty::Label]),
+) -> (Vec<Option<f64>>, Vec<NotIdentified>) {
+    let (m, target) = (pb.m, pb.target);
+    let cost: f64 = r.iter().map(|x| x * x).sum();
+    let mut s2 = cost / r.len().saturating_sub(p.len() + nuisance(m, target)).max(1) as f64;
+    let j = smooth_jacobian(pb, evals, &At { idx, p, r0: r });
+    // Velocities derived from a track share frames: their errors are correlated, by
+    // the stencils. Other residuals that go together from frame to frame (a tracker's
+    // drift, a velocity some tool smoothed, a model that misses the data's shape) are
+    // worth fewer independent points: their variance counts for that many.
+    let shared = match (&m.stencils(), target) {
+        (Some(st), Target::Velocity) => Some(shared_noise(&j, labels, st)),
+        _ => {
+            s2 *= r.len() as f64 / effective_points(r, labels).max(1.0);
+            None
+        }
+    };
+    uncertainties(&normal_matrix(&j), shared.as_deref(), s2, pb.free, p)
 }
 
 /// The RMS of the unweighted residuals: in the data's own units, whatever the weights.

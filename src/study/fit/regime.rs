@@ -1,42 +1,13 @@
 //! The regime the data show, to hold against the model's: the band of speeds that
 //! counts as rest and the mean motion after the sliding phase.
 
-// Not yet converted to `get`, iterators and typed errors (issue 35, open): its
-// indices come from its own loops over vectors of one length.
-#![allow(
-    clippy::indexing_slicing,
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::panic
-)]
-
-use super::line::{line, sliding_window};
 use crate::physics::derived::Regime;
 use crate::physics::engine;
 use crate::physics::scene::{Scene, Span};
+pub use crate::study::measured::noise::rest_band;
+use crate::study::measured::noise::{sliding_noise, sliding_window};
 use crate::study::measured::series::{Measured, Stencil};
 use crate::study::measured::track::derivative::scatter;
-
-/// Speeds within ± this of zero count as rest: three times the data's own resolution
-/// of v_cm (the speed the regime is read from), at least 2 cm/s. Of a velocity file,
-/// the scatter of its points about straight lines over the sliding phase; of a track,
-/// the median uncertainty of its derived v_cm — not the scatter of v_t, derived from
-/// a rim mark a few millimetres from the centre and several times noisier, which made
-/// the band (and the observed regime) swing from one track to the next.
-pub fn rest_band(m: &Measured) -> f64 {
-    let noise = match &m.v_cm_sigma {
-        Some(sigma) => median(sigma),
-        None => sliding_noise(m),
-    };
-    (3.0 * noise.unwrap_or(0.0)).max(0.02)
-}
-
-/// The median of the finite values of `v`; `None` without one.
-fn median(v: &[f64]) -> Option<f64> {
-    let mut s: Vec<f64> = v.iter().copied().filter(|x| x.is_finite()).collect();
-    s.sort_by(f64::total_cmp);
-    s.get(s.len() / 2).copied()
-}
 
 /// Where the sliding phase after the first impact ends for the line fits and the
 /// observed regime, given the fitted model `fitted`: of a velocity file where its
@@ -46,50 +17,29 @@ fn median(v: &[f64]) -> Option<f64> {
 /// rolling, and a local fit over the corner at t' rounds it (the window ran 40 ms
 /// into rolling and bent |a_cm| from 2.75 to 2.29 m/s²).
 pub(super) fn sliding_end(m: &Measured, fitted: &Scene) -> Option<f64> {
-    if m.stencils.is_none() && m.has_v_t() {
+    if m.stencils().is_none() && m.has_v_t() {
         return sliding_window(m).map(|w| w.1);
     }
     let t_roll = rolling_time(fitted)?;
-    let Some(st) = &m.stencils else {
+    let Some(st) = &m.stencils() else {
         return Some(t_roll - 1e-9);
     };
     let before = |stencil: Option<&Option<Stencil>>, times: &[f64]| match stencil {
         Some(Some(s)) => times.get(s.hi).is_some_and(|&t| t < t_roll),
         _ => true,
     };
-    (0..m.t.len())
+    m.t()
+        .iter()
+        .enumerate()
         .rev()
-        .find(|&i| {
-            m.t[i] > 0.0
-                && m.t[i] < t_roll
+        .find(|&(i, &t)| {
+            t > 0.0
+                && t < t_roll
                 && before(st.v_cm.get(i), &st.centre_times)
                 && before(st.v_t.get(i), &st.mark_times)
         })
-        .map(|i| m.t[i])
+        .map(|(_, &t)| t)
         .or(Some(t_roll - 1e-9))
-}
-
-/// The scatter of v_cm and v_t about straight lines over the sliding phase (NaN where
-/// a v_t is missing); `None` without a sliding phase of three points.
-fn sliding_noise(m: &Measured) -> Option<f64> {
-    let (from, to) = sliding_window(m)?;
-    let idx: Vec<usize> = (0..m.t.len())
-        .filter(|&i| m.t[i] >= from && m.t[i] <= to)
-        .collect();
-    (idx.len() >= 3).then(|| {
-        let ts: Vec<f64> = idx.iter().map(|&i| m.t[i]).collect();
-        let mut sq = 0.0;
-        for series in [&m.v_cm, &m.v_t] {
-            let ys: Vec<f64> = idx.iter().map(|&i| series[i]).collect();
-            let l = line(&ts, &ys);
-            sq += ts
-                .iter()
-                .zip(&ys)
-                .map(|(t, y)| (y - l.intercept - l.slope * t).powi(2))
-                .sum::<f64>();
-        }
-        (sq / (2 * idx.len()) as f64).sqrt()
-    })
 }
 
 /// The data's scatter in the units of a fit's RMS residual (positions: m; velocities:
@@ -99,7 +49,7 @@ fn sliding_noise(m: &Measured) -> Option<f64> {
 /// its rest band takes it (about lines over the sliding phase: digitised points are
 /// smoother than their error, which third differences would take for the scatter).
 pub(super) fn data_scatter(m: &Measured, positions: bool) -> Option<f64> {
-    let s = match (positions, &m.x, &m.v_cm_sigma) {
+    let s = match (positions, m.x(), &m.v_cm_sigma()) {
         (true, Some(x), _) => scatter(x),
         (true, None, _) => return None,
         (false, _, Some(sigma)) => {
@@ -137,12 +87,18 @@ pub(super) fn observed_after(m: &Measured, band: f64, to: Option<f64>) -> Regime
     let Some(to) = to else {
         return Regime::Rest;
     };
-    let after: Vec<usize> = (0..m.t.len()).filter(|&i| m.t[i] > to).collect();
+    let after: Vec<f64> = m
+        .t()
+        .iter()
+        .zip(m.v_cm())
+        .filter(|(t, _)| **t > to)
+        .map(|(_, v)| *v)
+        .collect();
     let mut speeds = Vec::new();
-    for w in after.windows(2) {
-        speeds.push(m.v_cm[w[0]]);
+    for (&v0, &v1) in after.iter().zip(after.iter().skip(1)) {
+        speeds.push(v0);
         // A jump down of more than half the speed is the next impact.
-        if m.v_cm[w[1]] < m.v_cm[w[0]] - 0.5 * m.v_cm[w[0]].abs().max(band) {
+        if v1 < v0 - 0.5 * v0.abs().max(band) {
             break;
         }
     }

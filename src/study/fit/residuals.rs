@@ -28,12 +28,12 @@ pub(super) fn fit_points(
 ) -> Vec<usize> {
     // Positions do not jump at an impact: every frame counts.
     if target == Target::Position {
-        return (0..m.t.len()).collect();
+        return (0..m.t().len()).collect();
     }
-    let sol = evals.solve(scene, m.t[0].min(-1e-3));
-    let near = NearImpacts::of(&m.t, &sol);
-    (0..m.t.len())
-        .filter(|&i| !near.straddles(m.t[i]))
+    let sol = evals.solve(scene, m.t()[0].min(-1e-3));
+    let near = NearImpacts::of(m.t(), &sol);
+    (0..m.t().len())
+        .filter(|&i| !near.straddles(m.t()[i]))
         .collect()
 }
 
@@ -102,7 +102,7 @@ pub(super) fn labelled_residuals(
     weighted: bool,
     evals: &mut Evals,
 ) -> (Vec<f64>, Vec<Label>) {
-    let sol = evals.solve(scene, m.t[0].min(-1e-3));
+    let sol = evals.solve(scene, m.t()[0].min(-1e-3));
     match target {
         Target::Velocity => velocity_residuals(&sol, m, idx, weighted),
         Target::Position => position_residuals(scene, &sol, m, idx, weighted),
@@ -111,7 +111,7 @@ pub(super) fn labelled_residuals(
 
 /// One over a residual's uncertainty (1 unweighted or without one); `None` for a
 /// residual that is not a number or whose uncertainty is not usable (left out).
-fn weight(d: f64, sigma: Option<&Vec<f64>>, i: usize, weighted: bool) -> Option<f64> {
+fn weight(d: f64, sigma: Option<&[f64]>, i: usize, weighted: bool) -> Option<f64> {
     if !d.is_finite() {
         return None;
     }
@@ -134,7 +134,7 @@ fn velocity_residuals(
     idx: &[usize],
     weighted: bool,
 ) -> (Vec<f64>, Vec<Label>) {
-    let rows = match &m.stencils {
+    let rows = match &m.stencils() {
         // A track's impact is found to a fraction of a frame: the shift is small, and
         // linearised (v moves by a δt) it keeps the stencils on the tracked frames.
         Some(_) => {
@@ -150,7 +150,7 @@ fn velocity_residuals(
         // model is evaluated at the shifted times, by Newton steps (exact in one within
         // a phase of constant acceleration).
         None => {
-            let half = 0.5 * frame_at_impact(&m.t);
+            let half = 0.5 * frame_at_impact(m.t());
             let mut shift = 0.0;
             let mut rows = velocity_rows(sol, m, idx, weighted, shift);
             for _ in 0..6 {
@@ -179,16 +179,16 @@ fn velocity_rows(
 ) -> Vec<(f64, f64, Label)> {
     let mut rows = Vec::with_capacity(2 * idx.len());
     for &i in idx {
-        let t = m.t[i] + shift;
+        let t = m.t()[i] + shift;
         let s = sol.at(t);
         let (a, du) = sol.segment_at(t).accel[0];
-        let (v, u) = match &m.stencils {
+        let (v, u) = match &m.stencils() {
             Some(st) => as_derived(sol, st, i, (s.left.v, s.left.u)),
             None => (s.left.v, s.left.u),
         };
         let values = [
-            (v - m.v_cm[i], a, m.v_cm_sigma.as_ref(), false),
-            (u - m.v_t[i], du, m.v_t_sigma.as_ref(), true),
+            (v - m.v_cm()[i], a, m.v_cm_sigma(), false),
+            (u - m.v_t()[i], du, m.v_t_sigma(), true),
         ];
         for (d, slope, sigma, spin) in values {
             if let Some(w) = weight(d, sigma, i, weighted) {
@@ -269,7 +269,7 @@ fn aligned(
     idx: &[usize],
     weighted: bool,
 ) -> (Vec<([f64; 4], Label)>, Vec<f64>) {
-    let mark = m.angle.is_some();
+    let mark = m.angle().is_some();
     let square = |rows: &[([f64; 4], Label)], shift: &[f64]| -> f64 {
         rows.iter()
             .map(|(row, _)| {
@@ -310,7 +310,7 @@ fn position_rows(
     weighted: bool,
     clock: f64,
 ) -> Vec<([f64; 4], Label)> {
-    let (Some(x), radius) = (m.x.as_ref(), scene.k() * scene.radius) else {
+    let (Some(x), radius) = (m.x(), scene.k() * scene.radius) else {
         return Vec::new();
     };
     let theta0 = sol.angle_at(0.0)[0];
@@ -318,14 +318,13 @@ fn position_rows(
     let at: Vec<(usize, crate::physics::model::BallState, f64)> = idx
         .iter()
         .map(|&i| {
-            let t = m.t[i] + clock;
+            let t = m.t()[i] + clock;
             let (s, angle) = sol.ball_and_angle(0, t);
             (i, s, angle)
         })
         .collect();
     let turn = m
-        .angle
-        .as_ref()
+        .angle()
         .map(|a| branch_offset(at.iter().map(|&(i, _, angle)| angle - theta0 - a[i])));
     let w = point_weights(m, weighted, radius);
     let times = |row: [f64; 4], w: f64| row.map(|v| v * w);
@@ -335,7 +334,7 @@ fn position_rows(
             times([s.x + scene.radius - x[i], s.v, -1.0, 0.0], w.0(i)),
             (i, false),
         ));
-        if let (Some(a), Some(c)) = (&m.angle, turn) {
+        if let (Some(a), Some(c)) = (&m.angle(), turn) {
             let d = same_turn(angle - theta0 - a[i], c);
             rows.push((times([radius * d, s.u, 0.0, -radius], w.1(i)), (i, true)));
         }
@@ -353,10 +352,10 @@ fn point_weights(
     weighted: bool,
     radius: f64,
 ) -> (impl Fn(usize) -> f64 + '_, impl Fn(usize) -> f64 + '_) {
-    let x = m.x_sigma.as_deref().filter(|_| weighted);
-    let angle = m.angle_sigma.as_deref();
+    let x = m.x_sigma().filter(|_| weighted);
+    let angle = m.angle_sigma();
     // Both or neither: x in metres beside unweighted angles would mix units.
-    let on = x.is_some() && (m.angle.is_none() || angle.is_some());
+    let on = x.is_some() && (m.angle().is_none() || angle.is_some());
     let inverse = |s: Option<&f64>, scale: f64| s.map_or(f64::NAN, |s| 1.0 / (s * scale));
     (
         move |i: usize| {
@@ -421,16 +420,16 @@ fn profiled_shift(rows: &[([f64; 4], Label)], mark: bool) -> Vec<f64> {
 /// residual. NaN outside the run `sol` of `scene` and where x is not measured; `None`
 /// without positions.
 pub fn aligned_track(scene: &Scene, sol: &Solution, m: &Measured) -> Option<Vec<f64>> {
-    m.x.as_ref()?;
-    let idx: Vec<usize> = (0..m.t.len())
-        .filter(|&i| (sol.t_start..=sol.t_end).contains(&m.t[i]))
+    m.x()?;
+    let idx: Vec<usize> = (0..m.t().len())
+        .filter(|&i| (sol.t_start..=sol.t_end).contains(&m.t()[i]))
         .collect();
     let (rows, shift) = aligned(scene, sol, m, &idx, true);
-    let mut out = vec![f64::NAN; m.t.len()];
+    let mut out = vec![f64::NAN; m.t().len()];
     // The model's x at each frame minus the frame's residual (each row holds its
     // weight w as ∂/∂δx = −w): model minus the aligned track is the residual.
     for (row, (i, spin)) in &rows {
-        let (Some(o), Some(&t), false) = (out.get_mut(*i), m.t.get(*i), *spin) else {
+        let (Some(o), Some(&t), false) = (out.get_mut(*i), m.t().get(*i), *spin) else {
             continue;
         };
         let d = row[0] + row[1] * shift[0] + row[2] * shift[1];
@@ -471,7 +470,7 @@ fn as_derived(sol: &Solution, st: &Stencils, i: usize, exact: (f64, f64)) -> (f6
 
 /// Parameters a fit to `target` estimates besides the free scene values.
 pub(super) fn nuisance(m: &Measured, target: Target) -> usize {
-    match (target, m.angle.is_some()) {
+    match (target, m.angle().is_some()) {
         // The impact time ([`velocity_residuals`]).
         (Target::Velocity, _) => 1,
         (Target::Position, false) => 2,

@@ -12,12 +12,16 @@
 )]
 
 mod ghost;
+pub mod line;
+pub mod noise;
 pub mod series;
 pub mod track;
 
 use std::sync::Arc;
 
-pub use series::{Measured, NoCommonFrame, OutOfLabRange, RawSeries, Track};
+pub use series::{
+    Measured, MeasuredParts, NoCommonFrame, OutOfLabRange, RawSeries, Rule, Track, TrackParts,
+};
 pub use track::{Derive, Found, TrackError, in_file_time};
 
 use crate::physics::scene::Scene;
@@ -46,7 +50,7 @@ impl Series {
 
     /// True when the file was read mirrored (its x ran away from the other ball).
     pub fn mirrored(&self) -> bool {
-        self.measured().mirrored
+        self.measured().mirrored()
     }
 
     /// What the derivation found in a position track; `None` for velocities.
@@ -75,7 +79,7 @@ pub fn prepare(raw: RawSeries, opts: &Derive) -> Result<Series, TrackError> {
 pub struct InScene {
     /// The left ball's velocities: a track's v_t with this scene's r.
     pub measured: Arc<Measured>,
-    /// Speeds within ± this of zero cannot be told from rest (`fit::rest_band`).
+    /// Speeds within ± this of zero cannot be told from rest ([`noise::rest_band`]).
     pub rest_band: f64,
     /// The measured ball's centre at each measured time, model's x (`ghost`).
     ghost: Vec<f64>,
@@ -94,28 +98,17 @@ pub fn for_scene(series: &Series, scene: &Scene) -> InScene {
         Series::Velocities(m) => m.clone(),
         Series::Track(m, _) => {
             let r = scene.k() * scene.radius;
-            let turn = m.angle.as_ref().and(mark_turn_per_frame(m, r));
+            let turn = m.angle().and(mark_turn_per_frame(m, r));
             mark_aliased = turn.filter(|w| *w > std::f64::consts::PI);
-            let scale = |v: &[f64]| v.iter().map(|w| w * r).collect::<Vec<f64>>();
             Arc::new(match mark_aliased {
-                Some(_) => Measured {
-                    v_t: vec![f64::NAN; m.v_t.len()],
-                    v_t_sigma: None,
-                    angle: None,
-                    angle_sigma: None,
-                    ..(**m).clone()
-                },
-                None => Measured {
-                    v_t: scale(&m.v_t),
-                    v_t_sigma: m.v_t_sigma.as_deref().map(scale),
-                    ..(**m).clone()
-                },
+                Some(_) => m.without_mark(),
+                None => m.v_t_scaled(r),
             })
         }
     };
     InScene {
         mark_aliased,
-        rest_band: crate::study::fit::rest_band(&measured),
+        rest_band: noise::rest_band(&measured),
         ghost: ghost::track(&measured, scene.radius),
         measured,
     }
@@ -125,19 +118,21 @@ pub fn for_scene(series: &Series, scene: &Scene) -> InScene {
 /// on the contact radius `r` (m), rad: the fastest |v_cm| before the impact times the
 /// median frame interval over r. `None` without both.
 fn mark_turn_per_frame(m: &Measured, r: f64) -> Option<f64> {
-    let mut steps: Vec<f64> =
-        m.t.iter()
-            .zip(m.t.iter().skip(1))
-            .map(|(a, b)| b - a)
-            .collect();
+    let mut steps: Vec<f64> = m
+        .t()
+        .iter()
+        .zip(m.t().iter().skip(1))
+        .map(|(a, b)| b - a)
+        .collect();
     steps.sort_by(f64::total_cmp);
     let dt = *steps.get(steps.len() / 2)?;
-    let fastest =
-        m.t.iter()
-            .zip(&m.v_cm)
-            .filter(|(t, v)| **t < 0.0 && v.is_finite())
-            .map(|(_, v)| v.abs())
-            .fold(None, |a: Option<f64>, v| Some(a.map_or(v, |a| a.max(v))))?;
+    let fastest = m
+        .t()
+        .iter()
+        .zip(m.v_cm())
+        .filter(|(t, v)| **t < 0.0 && v.is_finite())
+        .map(|(_, v)| v.abs())
+        .fold(None, |a: Option<f64>, v| Some(a.map_or(v, |a| a.max(v))))?;
     (r > 0.0).then(|| fastest * dt / r)
 }
 

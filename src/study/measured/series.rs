@@ -14,49 +14,436 @@ pub enum RawSeries {
 
 /// A measured series of the left ball: time (s, first impact at 0), v_cm and v_t (m/s).
 ///
+/// Built only by [`Measured::new`] (or [`Measured::velocities`]), which keeps its
+/// rules ([`Rule`]): every column has one value per time, the times are finite and
+/// strictly increasing, every value is finite or a gap (NaN: a point without that
+/// value, e.g. v_t where no rim mark was tracked; never ±∞), and every σ is ≥ 0. An
+/// empty series is allowed; each caller asks for the points it needs (the fits
+/// refuse too few). Its columns are read through accessors (`t()`, `v_cm()`, …).
+///
 /// Velocity files fill `t`, `v_cm` and `v_t` only. A series derived from a position
 /// track (`study::track`) also carries each derived point's standard uncertainty and
 /// the tracked positions; its `v_t` is NaN where no rim mark was tracked.
-#[derive(Clone, Debug, Default, PartialEq, serde::Serialize)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct Measured {
+    t: Vec<f64>,
+    v_cm: Vec<f64>,
+    v_t: Vec<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    v_cm_sigma: Option<Vec<f64>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    v_t_sigma: Option<Vec<f64>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    x: Option<Vec<f64>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    angle: Option<Vec<f64>>,
+    #[serde(skip)]
+    stencils: Option<std::sync::Arc<Stencils>>,
+    #[serde(skip)]
+    mirrored: bool,
+    #[serde(skip)]
+    scale_rel_se: Option<f64>,
+    #[serde(skip)]
+    x_sigma: Option<Vec<f64>>,
+    #[serde(skip)]
+    angle_sigma: Option<Vec<f64>>,
+}
+
+/// The columns of a [`Measured`] before their rules are checked: what a reader or a
+/// derivation fills in, then hands to [`Measured::new`].
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct MeasuredParts {
     pub t: Vec<f64>,
     pub v_cm: Vec<f64>,
     pub v_t: Vec<f64>,
     /// Standard uncertainty of each `v_cm`, m/s (from the local fit's residuals).
-    #[serde(skip_serializing_if = "Option::is_none")]
     pub v_cm_sigma: Option<Vec<f64>>,
     /// Standard uncertainty of each `v_t`, m/s (NaN where `v_t` is).
-    #[serde(skip_serializing_if = "Option::is_none")]
     pub v_t_sigma: Option<Vec<f64>>,
     /// The tracked centre, m: its displacement from where it was at the first impact,
     /// positive toward the other ball (the model's left ball is at `x − R`).
-    #[serde(skip_serializing_if = "Option::is_none")]
     pub x: Option<Vec<f64>>,
     /// The rim mark's angle about the centre, rad, from its angle at the first impact,
     /// signed like the spin (`d angle/dt · r = v_t`); NaN where the mark is missing.
-    #[serde(skip_serializing_if = "Option::is_none")]
     pub angle: Option<Vec<f64>>,
     /// How each derived velocity was made from the tracked frames: neighbouring points
     /// share frames, so their errors are correlated and a fit must not count them as
     /// independent (`study::fit` uses this for its ±).
-    #[serde(skip)]
     pub stencils: Option<std::sync::Arc<Stencils>>,
     /// True when the file was recorded with x pointing away from the other ball (the
     /// ball approaches toward −x) and was read mirrored, x → −x, to match the model.
-    #[serde(skip)]
     pub mirrored: bool,
     /// The relative standard error of the lengths' scale (a video's px per metre from
     /// the balls' fitted radius), where the file states one: every length, and so
     /// μ_k and v0, carries it besides the fit's own ±.
-    #[serde(skip)]
     pub scale_rel_se: Option<f64>,
     /// The standard error of each point's `x`, m, where the track stated its points'
     /// σ (`groovelab track` does): the position fit weights by it.
-    #[serde(skip)]
     pub x_sigma: Option<Vec<f64>>,
     /// The same for each point's `angle`, rad (NaN where the mark is missing).
-    #[serde(skip)]
     pub angle_sigma: Option<Vec<f64>>,
+}
+
+/// A rule of a [`Measured`] or a [`Track`] that the values given to its constructor
+/// break: which column, which point (1-based), and what is allowed.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum Rule {
+    #[error("{name} has {len} values for {times} times, expected one value per time")]
+    Length {
+        name: &'static str,
+        len: usize,
+        times: usize,
+    },
+    #[error("t = {value} s (point {point}) is not a finite time, allowed finite seconds")]
+    TimeNotFinite { value: f64, point: usize },
+    #[error(
+        "t = {value} s (point {point}) does not increase (previous {previous} s), allowed strictly increasing times"
+    )]
+    TimeNotRising {
+        value: f64,
+        previous: f64,
+        point: usize,
+    },
+    #[error(
+        "{name} = {value} (point {point}) is infinite, allowed a finite value or a gap (empty or NaN)"
+    )]
+    Infinite {
+        name: &'static str,
+        value: f64,
+        point: usize,
+    },
+    #[error("{name} = {value} (point {point}) is negative, allowed an uncertainty ≥ 0")]
+    NegativeSigma {
+        name: &'static str,
+        value: f64,
+        point: usize,
+    },
+    #[error("the scale's relative standard error {value} is not a finite number ≥ 0")]
+    ScaleSe { value: f64 },
+}
+
+/// Finite, strictly increasing times.
+fn check_times(t: &[f64]) -> Result<(), Rule> {
+    if let Some((i, &value)) = t.iter().enumerate().find(|(_, v)| !v.is_finite()) {
+        return Err(Rule::TimeNotFinite {
+            value,
+            point: i + 1,
+        });
+    }
+    match t.windows(2).enumerate().find_map(|(i, w)| match *w {
+        [a, b] if b <= a => Some((i, a, b)),
+        _ => None,
+    }) {
+        Some((i, previous, value)) => Err(Rule::TimeNotRising {
+            value,
+            previous,
+            point: i + 2,
+        }),
+        None => Ok(()),
+    }
+}
+
+/// Column `name` has one value per time, each finite or NaN (a gap); a σ is ≥ 0 too.
+fn check_column(name: &'static str, v: &[f64], times: usize, sigma: bool) -> Result<(), Rule> {
+    if v.len() != times {
+        return Err(Rule::Length {
+            name,
+            len: v.len(),
+            times,
+        });
+    }
+    if let Some((i, &value)) = v.iter().enumerate().find(|(_, v)| v.is_infinite()) {
+        return Err(Rule::Infinite {
+            name,
+            value,
+            point: i + 1,
+        });
+    }
+    match v.iter().enumerate().find(|(_, v)| sigma && **v < 0.0) {
+        Some((i, &value)) => Err(Rule::NegativeSigma {
+            name,
+            value,
+            point: i + 1,
+        }),
+        None => Ok(()),
+    }
+}
+
+/// An optional column, checked like [`check_column`] where present.
+fn check_optional(
+    name: &'static str,
+    v: Option<&[f64]>,
+    times: usize,
+    sigma: bool,
+) -> Result<(), Rule> {
+    v.map_or(Ok(()), |v| check_column(name, v, times, sigma))
+}
+
+/// A relative standard error, where given, is finite and ≥ 0.
+fn check_scale_se(se: Option<f64>) -> Result<(), Rule> {
+    match se {
+        Some(value) if !(value.is_finite() && value >= 0.0) => Err(Rule::ScaleSe { value }),
+        _ => Ok(()),
+    }
+}
+
+impl Measured {
+    /// The series `parts`, if it keeps the rules of [`Measured`]; else the first rule
+    /// broken.
+    pub fn new(parts: MeasuredParts) -> Result<Measured, Rule> {
+        let n = parts.t.len();
+        check_times(&parts.t)?;
+        check_column("v_cm", &parts.v_cm, n, false)?;
+        check_column("v_t", &parts.v_t, n, false)?;
+        check_optional("v_cm σ", parts.v_cm_sigma.as_deref(), n, true)?;
+        check_optional("v_t σ", parts.v_t_sigma.as_deref(), n, true)?;
+        check_optional("x", parts.x.as_deref(), n, false)?;
+        check_optional("angle", parts.angle.as_deref(), n, false)?;
+        check_optional("x σ", parts.x_sigma.as_deref(), n, true)?;
+        check_optional("angle σ", parts.angle_sigma.as_deref(), n, true)?;
+        check_scale_se(parts.scale_rel_se)?;
+        let MeasuredParts {
+            t,
+            v_cm,
+            v_t,
+            v_cm_sigma,
+            v_t_sigma,
+            x,
+            angle,
+            stencils,
+            mirrored,
+            scale_rel_se,
+            x_sigma,
+            angle_sigma,
+        } = parts;
+        Ok(Measured {
+            t,
+            v_cm,
+            v_t,
+            v_cm_sigma,
+            v_t_sigma,
+            x,
+            angle,
+            stencils,
+            mirrored,
+            scale_rel_se,
+            x_sigma,
+            angle_sigma,
+        })
+    }
+
+    /// A velocity series without uncertainties or positions, if it keeps the rules.
+    pub fn velocities(t: Vec<f64>, v_cm: Vec<f64>, v_t: Vec<f64>) -> Result<Measured, Rule> {
+        Measured::new(MeasuredParts {
+            t,
+            v_cm,
+            v_t,
+            ..MeasuredParts::default()
+        })
+    }
+
+    /// The series with no points.
+    pub fn empty() -> Measured {
+        Measured {
+            t: Vec::new(),
+            v_cm: Vec::new(),
+            v_t: Vec::new(),
+            v_cm_sigma: None,
+            v_t_sigma: None,
+            x: None,
+            angle: None,
+            stencils: None,
+            mirrored: false,
+            scale_rel_se: None,
+            x_sigma: None,
+            angle_sigma: None,
+        }
+    }
+
+    /// Its columns, to change and check again with [`Measured::new`].
+    pub fn into_parts(self) -> MeasuredParts {
+        let Measured {
+            t,
+            v_cm,
+            v_t,
+            v_cm_sigma,
+            v_t_sigma,
+            x,
+            angle,
+            stencils,
+            mirrored,
+            scale_rel_se,
+            x_sigma,
+            angle_sigma,
+        } = self;
+        MeasuredParts {
+            t,
+            v_cm,
+            v_t,
+            v_cm_sigma,
+            v_t_sigma,
+            x,
+            angle,
+            stencils,
+            mirrored,
+            scale_rel_se,
+            x_sigma,
+            angle_sigma,
+        }
+    }
+
+    /// A copy of its columns ([`Measured::into_parts`] of a clone).
+    pub fn to_parts(&self) -> MeasuredParts {
+        self.clone().into_parts()
+    }
+
+    /// The number of points.
+    pub fn len(&self) -> usize {
+        self.t.len()
+    }
+
+    /// True without points.
+    pub fn is_empty(&self) -> bool {
+        self.t.is_empty()
+    }
+
+    /// Times, s, first impact at 0: finite, strictly increasing.
+    pub fn t(&self) -> &[f64] {
+        &self.t
+    }
+    /// The centre's velocity, m/s, one per time (NaN: a gap).
+    pub fn v_cm(&self) -> &[f64] {
+        &self.v_cm
+    }
+    /// The rim's velocity, m/s, one per time (NaN where no mark was tracked).
+    pub fn v_t(&self) -> &[f64] {
+        &self.v_t
+    }
+    /// Standard uncertainty of each `v_cm`, m/s.
+    pub fn v_cm_sigma(&self) -> Option<&[f64]> {
+        self.v_cm_sigma.as_deref()
+    }
+    /// Standard uncertainty of each `v_t`, m/s (NaN where `v_t` is).
+    pub fn v_t_sigma(&self) -> Option<&[f64]> {
+        self.v_t_sigma.as_deref()
+    }
+    /// The tracked centre, m, from where it was at the first impact, toward the other
+    /// ball.
+    pub fn x(&self) -> Option<&[f64]> {
+        self.x.as_deref()
+    }
+    /// The rim mark's angle from the first impact, rad, signed like the spin.
+    pub fn angle(&self) -> Option<&[f64]> {
+        self.angle.as_deref()
+    }
+    /// How each derived velocity was made from the tracked frames.
+    pub fn stencils(&self) -> Option<&std::sync::Arc<Stencils>> {
+        self.stencils.as_ref()
+    }
+    /// True when the file was read mirrored (x → −x).
+    pub fn mirrored(&self) -> bool {
+        self.mirrored
+    }
+    /// The relative standard error of the lengths' scale, where the file states one.
+    pub fn scale_rel_se(&self) -> Option<f64> {
+        self.scale_rel_se
+    }
+    /// The standard error of each point's `x`, m.
+    pub fn x_sigma(&self) -> Option<&[f64]> {
+        self.x_sigma.as_deref()
+    }
+    /// The standard error of each point's `angle`, rad.
+    pub fn angle_sigma(&self) -> Option<&[f64]> {
+        self.angle_sigma.as_deref()
+    }
+
+    /// The points whose index `keep` accepts, every column (and the stencils' per-point
+    /// lists) cut alike: the rules hold for any subset (times still increase), so no
+    /// check is needed.
+    pub fn retain_points(&self, keep: impl Fn(usize) -> bool) -> Measured {
+        let pick = |v: &[f64]| -> Vec<f64> {
+            v.iter()
+                .enumerate()
+                .filter(|(i, _)| keep(*i))
+                .map(|(_, v)| *v)
+                .collect()
+        };
+        let opt = |v: &Option<Vec<f64>>| v.as_deref().map(pick);
+        Measured {
+            t: pick(&self.t),
+            v_cm: pick(&self.v_cm),
+            v_t: pick(&self.v_t),
+            v_cm_sigma: opt(&self.v_cm_sigma),
+            v_t_sigma: opt(&self.v_t_sigma),
+            x: opt(&self.x),
+            angle: opt(&self.angle),
+            // The stencils' frames stay whole: the points left still index them.
+            stencils: self.stencils.as_ref().map(|s| {
+                let pick = |v: &[Option<Stencil>]| -> Vec<Option<Stencil>> {
+                    v.iter()
+                        .enumerate()
+                        .filter(|(i, _)| keep(*i))
+                        .map(|(_, v)| *v)
+                        .collect()
+                };
+                std::sync::Arc::new(Stencils {
+                    v_cm: pick(&s.v_cm),
+                    v_t: pick(&s.v_t),
+                    ..(**s).clone()
+                })
+            }),
+            mirrored: self.mirrored,
+            scale_rel_se: self.scale_rel_se,
+            x_sigma: opt(&self.x_sigma),
+            angle_sigma: opt(&self.angle_sigma),
+        }
+    }
+
+    /// The series with v_t (and its σ) times `r`: a spin rate (rad/s) made a rim
+    /// speed on the contact radius `r` (m). Finite `r` keeps the rules.
+    pub fn v_t_scaled(&self, r: f64) -> Measured {
+        let scale = |v: &[f64]| -> Vec<f64> {
+            v.iter()
+                .map(|w| {
+                    let s = w * r;
+                    if s.is_finite() { s } else { f64::NAN }
+                })
+                .collect()
+        };
+        let sigma = |v: &[f64]| -> Vec<f64> {
+            v.iter()
+                .map(|w| {
+                    let s = w * r.abs();
+                    if s.is_finite() { s } else { f64::NAN }
+                })
+                .collect()
+        };
+        Measured {
+            v_t: scale(&self.v_t),
+            v_t_sigma: self.v_t_sigma.as_deref().map(sigma),
+            ..self.clone()
+        }
+    }
+
+    /// The series without its rim mark: v_t all gaps, no angle.
+    pub fn without_mark(&self) -> Measured {
+        Measured {
+            v_t: vec![f64::NAN; self.v_t.len()],
+            v_t_sigma: None,
+            angle: None,
+            angle_sigma: None,
+            ..self.clone()
+        }
+    }
+
+    /// The series with its times moved by `dt` s (finite): they still increase. A
+    /// shift that would make a time non-finite or merge two is refused.
+    pub fn shifted(&self, dt: f64) -> Result<Measured, Rule> {
+        Measured::new(MeasuredParts {
+            t: self.t.iter().map(|t| t + dt).collect(),
+            ..self.to_parts()
+        })
+    }
 }
 
 /// The weights with which a derived velocity was made from tracked frames `lo..=hi`
@@ -104,16 +491,6 @@ pub struct Stencils {
 }
 
 impl Measured {
-    /// A velocity series without uncertainties or positions.
-    pub fn velocities(t: Vec<f64>, v_cm: Vec<f64>, v_t: Vec<f64>) -> Measured {
-        Measured {
-            t,
-            v_cm,
-            v_t,
-            ..Measured::default()
-        }
-    }
-
     /// A lab measurement's numbers stay within lab sizes: times within ±1e6 s, speeds
     /// within ±1000 m/s, positions within ±1000 m (NaN marks a missing value). Beyond
     /// them a series is not a measurement of this experiment, and squares of its
@@ -162,10 +539,30 @@ pub struct OutOfLabRange {
 }
 
 /// A position track in the file's own frame (origin, axis directions and time origin
-/// as the user set them), SI units. Rows without a time are dropped; a missing cell
-/// is NaN.
-#[derive(Clone, Debug, Default, PartialEq)]
+/// as the user set them), SI units. Built only by [`Track::new`], which keeps its
+/// rules ([`Rule`]): every column (x, y, the mark's, the σs) has one value per time,
+/// the times are finite and strictly increasing, and every value is finite or a gap
+/// (NaN: a missing cell; never ±∞), every σ ≥ 0. Rows without a time are dropped by
+/// the readers. How many frames are enough is the caller's to say (`derive` needs
+/// `2 · min_frames`).
+#[derive(Clone, Debug, PartialEq)]
 pub struct Track {
+    t: Vec<f64>,
+    x: Vec<f64>,
+    y: Vec<f64>,
+    mark: Option<(Vec<f64>, Vec<f64>)>,
+    centre_name: String,
+    mark_name: Option<String>,
+    format: &'static str,
+    scale_rel_se: Option<f64>,
+    sigma: Option<Vec<f64>>,
+    mark_sigma: Option<Vec<f64>>,
+}
+
+/// The columns of a [`Track`] before their rules are checked: what a reader fills in,
+/// then hands to [`Track::new`].
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct TrackParts {
     /// Times, s, strictly increasing.
     pub t: Vec<f64>,
     /// The ball's centre, m.
@@ -187,6 +584,139 @@ pub struct Track {
     pub sigma: Option<Vec<f64>>,
     /// The same for the rim mark, m.
     pub mark_sigma: Option<Vec<f64>>,
+}
+
+impl Track {
+    /// The track `parts`, if it keeps the rules of [`Track`]; else the first rule
+    /// broken.
+    pub fn new(parts: TrackParts) -> Result<Track, Rule> {
+        let n = parts.t.len();
+        check_times(&parts.t)?;
+        check_column("x", &parts.x, n, false)?;
+        check_column("y", &parts.y, n, false)?;
+        if let Some((mx, my)) = &parts.mark {
+            check_column("mark x", mx, n, false)?;
+            check_column("mark y", my, n, false)?;
+        }
+        check_optional("σ", parts.sigma.as_deref(), n, true)?;
+        check_optional("mark σ", parts.mark_sigma.as_deref(), n, true)?;
+        check_scale_se(parts.scale_rel_se)?;
+        let TrackParts {
+            t,
+            x,
+            y,
+            mark,
+            centre_name,
+            mark_name,
+            format,
+            scale_rel_se,
+            sigma,
+            mark_sigma,
+        } = parts;
+        Ok(Track {
+            t,
+            x,
+            y,
+            mark,
+            centre_name,
+            mark_name,
+            format,
+            scale_rel_se,
+            sigma,
+            mark_sigma,
+        })
+    }
+
+    /// Its columns, to change and check again with [`Track::new`].
+    pub fn into_parts(self) -> TrackParts {
+        let Track {
+            t,
+            x,
+            y,
+            mark,
+            centre_name,
+            mark_name,
+            format,
+            scale_rel_se,
+            sigma,
+            mark_sigma,
+        } = self;
+        TrackParts {
+            t,
+            x,
+            y,
+            mark,
+            centre_name,
+            mark_name,
+            format,
+            scale_rel_se,
+            sigma,
+            mark_sigma,
+        }
+    }
+
+    /// A copy of its columns ([`Track::into_parts`] of a clone).
+    pub fn to_parts(&self) -> TrackParts {
+        self.clone().into_parts()
+    }
+
+    /// The same track, said to be of format `format` (no rule is about the format).
+    pub fn with_format(self, format: &'static str) -> Track {
+        Track { format, ..self }
+    }
+
+    /// The number of frames.
+    pub fn len(&self) -> usize {
+        self.t.len()
+    }
+
+    /// True without frames.
+    pub fn is_empty(&self) -> bool {
+        self.t.is_empty()
+    }
+
+    /// Times, s: finite, strictly increasing.
+    pub fn t(&self) -> &[f64] {
+        &self.t
+    }
+    /// The ball's centre's x, m, one per time (NaN: a gap).
+    pub fn x(&self) -> &[f64] {
+        &self.x
+    }
+    /// The centre's y, m, one per time (all NaN when the file has none).
+    pub fn y(&self) -> &[f64] {
+        &self.y
+    }
+    /// The rim mark's x and y, m, one each per time, when the file has a mark.
+    pub fn mark(&self) -> Option<(&[f64], &[f64])> {
+        self.mark
+            .as_ref()
+            .map(|(x, y)| (x.as_slice(), y.as_slice()))
+    }
+    /// Name of the centre's track ("" for a plain `x, y` file).
+    pub fn centre_name(&self) -> &str {
+        &self.centre_name
+    }
+    /// Name of the mark's track, when it has one.
+    pub fn mark_name(&self) -> Option<&str> {
+        self.mark_name.as_deref()
+    }
+    /// The format found.
+    pub fn format(&self) -> &'static str {
+        self.format
+    }
+    /// The relative standard error of the lengths' scale, where the file states one.
+    pub fn scale_rel_se(&self) -> Option<f64> {
+        self.scale_rel_se
+    }
+    /// Each frame's standard error of the centre, m, where the file states it.
+    pub fn sigma(&self) -> Option<&[f64]> {
+        self.sigma.as_deref()
+    }
+    /// Each frame's standard error of the mark, m, where the file states it.
+    pub fn mark_sigma(&self) -> Option<&[f64]> {
+        self.mark_sigma.as_deref()
+    }
 }
 
 /// Two one-track exports with no frame in common: the centre's and the mark's first

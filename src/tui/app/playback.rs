@@ -22,9 +22,9 @@ impl App {
         let eps = 1e-9;
         let frame = self.lab.measured().and_then(|m| {
             if later {
-                m.t.iter().copied().find(|&x| x > self.t + eps)
+                m.t().iter().copied().find(|&x| x > self.t + eps)
             } else {
-                m.t.iter().rev().copied().find(|&x| x < self.t - eps)
+                m.t().iter().rev().copied().find(|&x| x < self.t - eps)
             }
         });
         let t = frame.unwrap_or(if later {

@@ -236,7 +236,7 @@ fn paper_row_lines(app: &App, lines: &mut Ranked<'static>, theme: &Theme) {
     let g = theme.glyphs;
     let label = |s: &str| Span::styled(g.text(s), theme.dim);
     let value = |s: String| Span::styled(g.text(&s), theme.text);
-    let paper_data = app.lab.measured().is_some_and(|m| m.x.is_none());
+    let paper_data = app.lab.measured().is_some_and(|m| m.x().is_none());
     let Some(p) = fit::paper_row(app.lab.scene.width).filter(|_| paper_data) else {
         return;
     };

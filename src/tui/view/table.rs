@@ -19,7 +19,7 @@ use crate::tui::theme::Theme;
 /// model's left ball would be: x − R), SI; NaN where the data have no value (x: a
 /// velocity file) or the time is outside the run.
 pub fn data_rows(app: &App) -> Vec<[f64; 10]> {
-    let n = app.lab.measured().map_or(0, |m| m.t.len());
+    let n = app.lab.measured().map_or(0, |m| m.t().len());
     (0..n).filter_map(|i| data_row(app, i)).collect()
 }
 
@@ -27,7 +27,7 @@ pub fn data_rows(app: &App) -> Vec<[f64; 10]> {
 pub(super) fn data_row(app: &App, i: usize) -> Option<[f64; 10]> {
     let m = app.lab.measured()?;
     let sol = &app.lab.solution;
-    let t = *m.t.get(i)?;
+    let t = *m.t().get(i)?;
     let model = (sol.t_start..=sol.t_end)
         .contains(&t)
         .then(|| sol.at(t).left);
@@ -42,12 +42,12 @@ pub(super) fn data_row(app: &App, i: usize) -> Option<[f64; 10]> {
         .unwrap_or(f64::NAN);
     Some([
         t,
-        m.v_cm[i],
+        m.v_cm()[i],
         model_v,
-        m.v_cm[i] - model_v,
-        m.v_t[i],
+        m.v_cm()[i] - model_v,
+        m.v_t()[i],
         model_u,
-        m.v_t[i] - model_u,
+        m.v_t()[i] - model_u,
         x,
         model_x,
         x - model_x,
@@ -93,9 +93,9 @@ fn data_table(app: &App, first: usize, area: Rect, buf: &mut Buffer, theme: &The
             format!("{dash:>9}")
         }
     };
-    let track = app.lab.measured().is_some_and(|m| m.x.is_some());
+    let track = app.lab.measured().is_some_and(|m| m.x().is_some());
     let (head, count, width) = table_layout(app, theme);
-    let times = app.lab.measured().map_or(&[][..], |m| &m.t[..]);
+    let times = app.lab.measured().map_or(&[][..], |m| m.t());
     let near = NearImpacts::of(times, &app.lab.solution);
     let line = |i: usize| {
         data_row(app, i).map_or_else(Line::default, |r| {
@@ -153,11 +153,11 @@ fn title(what: &str, area: Rect, theme: &Theme) -> String {
 /// The data table's fixed lines, its row count and its width.
 pub(super) fn table_layout(app: &App, theme: &Theme) -> (Vec<Line<'static>>, usize, u16) {
     if let Some(m) = in_file_time(app) {
-        return (unfit_head(theme), m.t.len(), UNFIT_WIDTH);
+        return (unfit_head(theme), m.t().len(), UNFIT_WIDTH);
     }
-    let track = app.lab.measured().is_some_and(|m| m.x.is_some());
+    let track = app.lab.measured().is_some_and(|m| m.x().is_some());
     let mut head = data_head(track, theme);
-    let times = app.lab.measured().map_or(&[][..], |m| &m.t[..]);
+    let times = app.lab.measured().map_or(&[][..], |m| m.t());
     // The frames the velocity fit leaves out, marked and said why (a residual there
     // is the jump, not a misfit).
     if NearImpacts::of(times, &app.lab.solution).any_in(times) {
@@ -229,18 +229,18 @@ fn unfit_table(m: &Measured, first: usize, area: Rect, buf: &mut Buffer, theme: 
         Some(v) if v.is_finite() => format!("{v:>+10.4}"),
         _ => format!("{dash:>10}"),
     };
-    let at = |v: &Option<Vec<f64>>, i: usize| v.as_ref().and_then(|v| v.get(i).copied());
+    let at = |v: Option<&[f64]>, i: usize| v.and_then(|v| v.get(i).copied());
     let line = |i: usize| {
-        let Some(t) = m.t.get(i) else {
+        let Some(t) = m.t().get(i) else {
             return Line::default();
         };
-        let x = at(&m.x, i).map(|x| POSITION.to_display(x));
+        let x = at(m.x(), i).map(|x| POSITION.to_display(x));
         Line::from(Span::styled(
             format!(
                 "{t:>+8.4}  {}  {}  {}",
                 cell(x),
-                cell(m.v_cm.get(i).copied()),
-                cell(at(&m.v_cm_sigma, i)).replace('+', " ")
+                cell(m.v_cm().get(i).copied()),
+                cell(at(m.v_cm_sigma(), i)).replace('+', " ")
             ),
             theme.text,
         ))
@@ -250,7 +250,7 @@ fn unfit_table(m: &Measured, first: usize, area: Rect, buf: &mut Buffer, theme: 
         first,
         &title,
         unfit_head(theme),
-        (m.t.len(), &line),
+        (m.t().len(), &line),
         (area, UNFIT_WIDTH),
         buf,
         theme,

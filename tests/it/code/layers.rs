@@ -391,6 +391,64 @@ fn no_source_file_imports_itself_through_others() {
     assert!(found.is_empty(), "import cycles:\n{}", report.join("\n"));
 }
 
+/// No two sibling modules (folders or files of one folder) import each other: a pair
+/// that does is one module in two places, and neither can be read, tested or moved
+/// without the other (`study/measured` and `study/fit` once did).
+#[test]
+fn no_two_modules_import_each_other() {
+    let (src, files) = library_sources();
+    // The sibling modules a file's import runs between: where the two paths part,
+    // each side's component named as a module (`fit.rs` and `fit/` are one).
+    let module = |c: &std::path::Component| {
+        let name = c.as_os_str().to_string_lossy();
+        name.strip_suffix(".rs").unwrap_or(&name).to_string()
+    };
+    let mut pairs: BTreeMap<(String, String), String> = BTreeMap::new();
+    // A module's own tests (`tests.rs`) may use its siblings to check it against them.
+    for file in files.iter().filter(|f| !f.ends_with("tests.rs")) {
+        let from = file.strip_prefix(&src).unwrap().to_path_buf();
+        for (path, line) in named_paths(&src, file) {
+            let to = file_of(&src, &path)
+                .strip_prefix(&src)
+                .unwrap()
+                .to_path_buf();
+            let (a, b): (Vec<_>, Vec<_>) = (from.components().collect(), to.components().collect());
+            let shared = a
+                .iter()
+                .zip(&b)
+                .take_while(|(x, y)| module(x) == module(y))
+                .count();
+            let (Some(x), Some(y)) = (a.get(shared), b.get(shared)) else {
+                continue;
+            };
+            let parent: Vec<String> = a[..shared].iter().map(&module).collect();
+            let name = |c| [&parent[..], &[module(c)]].concat().join("/");
+            let (x, y) = (name(x), name(y));
+            if x == "mod" || y == "mod" || x.ends_with("/mod") || y.ends_with("/mod") {
+                continue;
+            }
+            pairs
+                .entry((x, y))
+                .or_insert_with(|| format!("{}:{line}: {}", from.display(), path.join("::")));
+        }
+    }
+    let both: Vec<String> = pairs
+        .iter()
+        .filter(|((x, y), _)| x < y && pairs.contains_key(&(y.clone(), x.clone())))
+        .map(|((x, y), why)| {
+            format!(
+                "  {x} <-> {y} ({why}; back: {})",
+                pairs[&(y.clone(), x.clone())]
+            )
+        })
+        .collect();
+    assert!(
+        both.is_empty(),
+        "modules importing each other:\n{}",
+        both.join("\n")
+    );
+}
+
 /// Each function with a body in a source: its name, and its first and last line (of
 /// `fn` and of the closing brace).
 fn function_spans(t: &[Token]) -> Vec<(String, usize, usize)> {

@@ -85,14 +85,18 @@ fn tracker_export(name: &str, t: &[f64], x: &[f64], y: &[f64]) -> String {
 /// Logger Pro / Graphical Analysis's CSV export of a video analysis with two points
 /// (the centre, and the rim mark as the second point), CRLF line ends.
 fn logger_pro_export(track: &Track) -> String {
-    let (mx, my) = track.mark.clone().unwrap();
+    let (mx, my) = track.mark().unwrap();
     let mut text = String::from(
         "\"Latest: Time (s)\",\"Latest: X (m)\",\"Latest: Y (m)\",\"Latest: X2 (m)\",\"Latest: Y2 (m)\"\r\n",
     );
-    for i in 0..track.t.len() {
+    for i in 0..track.t().len() {
         text += &format!(
             "{:.4},{:.5},{:.5},{:.5},{:.5}\r\n",
-            track.t[i], track.x[i], track.y[i], mx[i], my[i]
+            track.t()[i],
+            track.x()[i],
+            track.y()[i],
+            mx[i],
+            my[i]
         );
     }
     text
@@ -104,15 +108,15 @@ fn student_files() -> Vec<(&'static str, String)> {
     let example = std::fs::read_to_string("docs/video/paper-b4.9-tracker.txt").unwrap();
     let track =
         groovelab::input::data::read_track(&example, "example", &Default::default()).unwrap();
-    let (mx, my) = track.mark.clone().unwrap();
+    let (mx, my) = track.mark().unwrap();
     vec![
         (
             "docs/video/ball.txt",
-            tracker_export("ball", &track.t, &track.x, &track.y),
+            tracker_export("ball", track.t(), track.x(), track.y()),
         ),
         (
             "docs/video/mark.txt",
-            tracker_export("rim mark", &track.t, &mx, &my),
+            tracker_export("rim mark", track.t(), mx, my),
         ),
         ("docs/video/logger-pro.csv", logger_pro_export(&track)),
     ]
@@ -144,6 +148,7 @@ fn video_track(seed: u64) -> Track {
             ..Video::default()
         },
     )
+    .unwrap()
 }
 
 #[test]
@@ -153,7 +158,7 @@ fn a_tracker_one_track_export_reads_its_positions_only() {
     let ball = dir.join("ball.txt");
     std::fs::write(
         &ball,
-        tracker_export("mass A", &track.t, &track.x, &track.y),
+        tracker_export("mass A", track.t(), track.x(), track.y()),
     )
     .unwrap();
     let j = fit_json(&[&ball], &[]);
@@ -161,7 +166,7 @@ fn a_tracker_one_track_export_reads_its_positions_only() {
     assert_eq!(j["track"]["format"], "Tracker single-track");
     assert_eq!(j["track"]["centre"], "mass_A");
     assert!(j["track"]["mark"].is_null(), "{}", j["track"]);
-    assert_eq!(j["track"]["frames"].as_u64(), Some(track.t.len() as u64));
+    assert_eq!(j["track"]["frames"].as_u64(), Some(track.t().len() as u64));
     let mu = j["model_fit"]["mu"].as_f64().unwrap();
     assert!((mu - MU).abs() < 0.003, "μ_k = {mu}");
     // What a centre alone cannot give is null with a reason, and never NaN on screen.
@@ -199,14 +204,18 @@ fn a_tracker_one_track_export_reads_its_positions_only() {
 #[test]
 fn the_centre_and_the_mark_as_two_tracker_files() {
     let track = video_track(4);
-    let (mx, my) = track.mark.clone().unwrap();
+    let (mx, my) = track.mark().unwrap();
     let dir = scratch("tracker-two");
     let (ball, mark) = (dir.join("ball.txt"), dir.join("mark.txt"));
-    std::fs::write(&ball, tracker_export("ball", &track.t, &track.x, &track.y)).unwrap();
+    std::fs::write(
+        &ball,
+        tracker_export("ball", track.t(), track.x(), track.y()),
+    )
+    .unwrap();
     // The mark's file starts two frames later: matched by time, not by row.
     std::fs::write(
         &mark,
-        tracker_export("rim mark", &track.t[2..], &mx[2..], &my[2..]),
+        tracker_export("rim mark", &track.t()[2..], &mx[2..], &my[2..]),
     )
     .unwrap();
     let j = fit_json(&[&ball, &mark], &[]);
@@ -365,12 +374,12 @@ fn headers_in_other_languages_are_read_or_the_error_names_the_columns() {
     }
     let german = data::load(&text, "de.csv", &r, &d).unwrap();
     let (a, b) = (english.measured(), german.measured());
-    assert_eq!(a.t.len(), b.t.len());
-    assert!(a.t.iter().zip(&b.t).all(|(x, y)| (x - y).abs() < 1e-9));
+    assert_eq!(a.t().len(), b.t().len());
+    assert!(a.t().iter().zip(b.t()).all(|(x, y)| (x - y).abs() < 1e-9));
     assert!(
-        a.v_cm
+        a.v_cm()
             .iter()
-            .zip(&b.v_cm)
+            .zip(b.v_cm())
             .all(|(x, y)| (x - y).abs() < 1e-5)
     );
     // Position tracks: French and Spanish names for time and position.
@@ -380,12 +389,12 @@ fn headers_in_other_languages_are_read_or_the_error_names_the_columns() {
         ("tiempo (s);posición (m)", ';'),
     ] {
         let mut text = format!("{head}\n");
-        for (t, x) in track.t.iter().zip(&track.x) {
+        for (t, x) in track.t().iter().zip(track.x()) {
             text += &format!("{t:.5}{sep}{x:.6}\n");
         }
         let series = data::load(&text, "pos.csv", &r, &d).unwrap_or_else(|e| panic!("{head}: {e}"));
         let found = series.found().unwrap();
-        assert_eq!(found.frames, track.t.len(), "{head}");
+        assert_eq!(found.frames, track.t().len(), "{head}");
     }
     // Time and a velocity only: which columns would do is said.
     let e = data::load(
@@ -433,11 +442,15 @@ fn a_header_without_units_over_ms_and_cm_per_s_names_the_options() {
 #[test]
 fn a_rim_mark_beyond_the_ball_is_refused_and_a_narrow_window_is_widened() {
     let track = video_track(6);
-    let (mx, my) = track.mark.clone().unwrap();
+    let (mx, my) = track.mark().unwrap();
     let dir = scratch("mark-off");
     let (ball, mark) = (dir.join("ball.txt"), dir.join("mark.txt"));
-    std::fs::write(&ball, tracker_export("ball", &track.t, &track.x, &track.y)).unwrap();
-    std::fs::write(&mark, tracker_export("rim mark", &track.t, &mx, &my)).unwrap();
+    std::fs::write(
+        &ball,
+        tracker_export("ball", track.t(), track.x(), track.y()),
+    )
+    .unwrap();
+    std::fs::write(&mark, tracker_export("rim mark", track.t(), mx, my)).unwrap();
     let (b, m) = (ball.to_str().unwrap(), mark.to_str().unwrap());
     // The mark was tracked on a ball of R = 2.75 cm; told R = 2.5 cm (b = 4.9 cm still
     // fits), it lies 2.5 mm beyond the ball: 12 times the 0.2 mm scatter.
@@ -487,9 +500,9 @@ fn a_track_without_units_in_cm_or_mm_names_the_length_unit() {
     let track = video_track(5);
     let dir = scratch("track-units");
     let scaled = |k: f64| {
-        let x: Vec<f64> = track.x.iter().map(|v| v * k).collect();
-        let y: Vec<f64> = track.y.iter().map(|v| v * k).collect();
-        tracker_export("ball", &track.t, &x, &y)
+        let x: Vec<f64> = track.x().iter().map(|v| v * k).collect();
+        let y: Vec<f64> = track.y().iter().map(|v| v * k).collect();
+        tracker_export("ball", track.t(), &x, &y)
     };
     for (unit, k) in [("cm", 100.0), ("mm", 1000.0)] {
         let file = dir.join(format!("ball_{unit}.txt"));
@@ -550,7 +563,7 @@ fn noisy_velocities(scene: &Scene, seed: u64) -> groovelab::study::measured::Mea
         v.push(s.left.v + 0.01 * noise.gauss());
         u.push(s.left.u + 0.01 * noise.gauss());
     }
-    groovelab::study::measured::Measured::velocities(t, v, u)
+    groovelab::study::measured::Measured::velocities(t, v, u).unwrap()
 }
 
 #[test]
@@ -647,7 +660,7 @@ fn a_mark_at_the_centre_and_metres_read_as_mm_are_refused() {
     let ball = dir.join("ball.txt");
     std::fs::write(
         &ball,
-        tracker_export("mass A", &track.t, &track.x, &track.y),
+        tracker_export("mass A", track.t(), track.x(), track.y()),
     )
     .unwrap();
     let f = ball.to_str().unwrap();

@@ -43,6 +43,7 @@ pub(crate) fn filmed() -> Track {
             ..Video::default()
         },
     )
+    .unwrap()
 }
 
 /// A Tracker coordinate system: origin (px), x axis turned by `angle` (degrees, ccw
@@ -84,8 +85,8 @@ fn point_mass(name: &str, first_frame: usize, x: &[f64], y: &[f64], c: &Coords) 
 /// V10.trk of the NTNU lab is laid out: the clip starting at frame `start`, Δt from
 /// the frame rate, one coordinate frame, a calibration stick, positions in pixels.
 pub(crate) fn trk(track: &Track, start: usize, c: &Coords) -> String {
-    let dt = (track.t[1] - track.t[0]) * 1e3;
-    let (mx, my) = track.mark.clone().unwrap();
+    let dt = (track.t()[1] - track.t()[0]) * 1e3;
+    let (mx, my) = track.mark().unwrap();
     let mut s = format!(
         r#"<?xml version="1.0" encoding="UTF-8"?>
 <object class="org.opensourcephysics.cabrillo.tracker.TrackerPanel">
@@ -133,15 +134,15 @@ pub(crate) fn trk(track: &Track, start: usize, c: &Coords) -> String {
         </object>
         </property>
 "#,
-        frames = start + track.t.len(),
-        t0 = track.t[0] * 1e3,
+        frames = start + track.t().len(),
+        t0 = track.t()[0] * 1e3,
         ox = c.origin.0,
         oy = c.origin.1,
         angle = c.angle,
         scale = c.scale,
     );
-    s += &point_mass("mass A", start, &track.x, &track.y, c);
-    s += &point_mass("mass B", start, &mx, &my, c);
+    s += &point_mass("mass A", start, track.x(), track.y(), c);
+    s += &point_mass("mass B", start, mx, my, c);
     s + "    </property>\n    <property name=\"selectedtrack\" type=\"string\">mass A</property>\n</object>\n"
 }
 
@@ -150,7 +151,7 @@ pub(crate) fn trk(track: &Track, start: usize, c: &Coords) -> String {
 /// (Time, X, Y, X2, Y2 in `unit`, "" when the video was never scaled), calculated
 /// velocity columns without cells, and a curve-fit data set with entities in its name.
 pub(crate) fn cmbl(track: &Track, unit: &str) -> String {
-    let (mx, my) = track.mark.clone().unwrap();
+    let (mx, my) = track.mark().unwrap();
     let column = |id: usize, name: &str, short: &str, unit: &str, cells: &[f64]| {
         let cells: String = cells.iter().map(|v| format!("{v}\n")).collect();
         format!(
@@ -160,11 +161,11 @@ pub(crate) fn cmbl(track: &Track, unit: &str) -> String {
     let mut s = String::from(
         "<Document>\n  <FileCoherence>1</FileCoherence>\n  <Version>3.8.7</Version>\n  <Copyright>Copyright (c) 2012 Vernier Software &#38; Technology</Copyright>\n  <Page>\n    <PageMovie>\n      <VAMovieActualDistance>1</VAMovieActualDistance>\n      <VAMoviePixelDistance>0.00625250824844</VAMoviePixelDistance>\n      <VAMovieScaleUnits></VAMovieScaleUnits>\n    </PageMovie>\n  </Page>\n  <DataSet>\n    <ID>109 </ID>\n    <DataSetName>VideoAnalysis</DataSetName>\n    <DataSetVideoAnalysis>1</DataSetVideoAnalysis>\n",
     );
-    s += &column(110, "Time", "t", "s", &track.t);
-    s += &column(112, "X", "X", unit, &track.x);
-    s += &column(114, "Y", "Y", unit, &track.y);
-    s += &column(115, "X2", "X2", unit, &mx);
-    s += &column(116, "Y2", "Y2", unit, &my);
+    s += &column(110, "Time", "t", "s", track.t());
+    s += &column(112, "X", "X", unit, track.x());
+    s += &column(114, "Y", "Y", unit, track.y());
+    s += &column(115, "X2", "X2", unit, mx);
+    s += &column(116, "Y2", "Y2", unit, my);
     s += "    <DataColumn>\n      <DataObjectName>X Velocity</DataObjectName>\n      <ColumnUnits></ColumnUnits>\n    </DataColumn>\n  </DataSet>\n";
     s += "  <DataSet>\n    <DataSetName>&#38;&#38;^% CurveFitFunctions %^&#38;&#38;</DataSetName>\n  </DataSet>\n</Document>\n";
     s
@@ -174,22 +175,22 @@ pub(crate) fn cmbl(track: &Track, unit: &str) -> String {
 /// positions in cm with a decimal comma (a German Logger Pro), velocity columns
 /// computed beside them.
 pub(crate) fn vernier(track: &Track) -> String {
-    let (mx, my) = track.mark.clone().unwrap();
+    let (mx, my) = track.mark().unwrap();
     let mut s = String::from(
         "Vernier Format 2\r\nball.cmbl 11/26/2026 09:41:07 .\r\nLatest\r\nTime\tX\tY\tX2\tY2\tX Velocity\r\nt\tX\tY\tX2\tY2\tVx\r\ns\tcm\tcm\tcm\tcm\tcm/s\r\n\r\n",
     );
     let comma = |v: f64| format!("{:.4}", 100.0 * v).replace('.', ",");
-    for i in 0..track.t.len() {
-        let vx = if i + 1 < track.t.len() {
-            comma((track.x[i + 1] - track.x[i]) / (track.t[i + 1] - track.t[i]))
+    for i in 0..track.t().len() {
+        let vx = if i + 1 < track.t().len() {
+            comma((track.x()[i + 1] - track.x()[i]) / (track.t()[i + 1] - track.t()[i]))
         } else {
             String::new()
         };
         s += &format!(
             "{:.6}\t{}\t{}\t{}\t{}\t{vx}\r\n",
-            track.t[i],
-            comma(track.x[i]),
-            comma(track.y[i]),
+            track.t()[i],
+            comma(track.x()[i]),
+            comma(track.y()[i]),
             comma(mx[i]),
             comma(my[i])
         );
@@ -202,14 +203,14 @@ fn same_positions(got: &RawSeries, want: &Track, tol: f64) {
     let RawSeries::Positions(got) = got else {
         panic!("not a track");
     };
-    assert_eq!(got.t.len(), want.t.len());
-    let (gx, gy) = got.mark.clone().unwrap();
-    let (wx, wy) = want.mark.clone().unwrap();
-    for i in 0..want.t.len() {
-        assert!((got.t[i] - want.t[i]).abs() < tol, "t[{i}]");
+    assert_eq!(got.t().len(), want.t().len());
+    let (gx, gy) = got.mark().unwrap();
+    let (wx, wy) = want.mark().unwrap();
+    for i in 0..want.t().len() {
+        assert!((got.t()[i] - want.t()[i]).abs() < tol, "t[{i}]");
         for (a, b) in [
-            (got.x[i], want.x[i]),
-            (got.y[i], want.y[i]),
+            (got.x()[i], want.x()[i]),
+            (got.y()[i], want.y()[i]),
             (gx[i], wx[i]),
             (gy[i], wy[i]),
         ] {
@@ -400,12 +401,12 @@ fn a_header_that_states_the_wrong_unit_is_refused_naming_the_unit_that_fits() {
 /// A plain CSV track with the header `header` and rows of t (scaled by `tk`), x, y.
 fn csv_track(header: &str, track: &Track, tk: f64, keep: impl Fn(usize) -> bool) -> String {
     let mut s = format!("{header}\n");
-    for i in (0..track.t.len()).filter(|&i| keep(i)) {
+    for i in (0..track.t().len()).filter(|&i| keep(i)) {
         s += &format!(
             "{:.4},{:.6},{:.6}\n",
-            track.t[i] * tk,
-            track.x[i],
-            track.y[i]
+            track.t()[i] * tk,
+            track.x()[i],
+            track.y()[i]
         );
     }
     s
@@ -429,7 +430,7 @@ fn position_headers_microseconds_and_missing_frames_are_read_and_said() {
     assert_eq!(code, Some(0), "{err}");
     let j: serde_json::Value = serde_json::from_str(&out).unwrap();
     assert_eq!(j[0]["units"][0]["unit"], "us", "{out}");
-    assert_eq!(j[0]["frames"].as_u64(), Some(track.t.len() as u64));
+    assert_eq!(j[0]["frames"].as_u64(), Some(track.t().len() as u64));
     assert!(j[0]["missing"].as_array().unwrap().is_empty());
     // Ten frames missing in the middle: said by `data` and by `fit`.
     let file = dir.join("gap.csv");

@@ -72,15 +72,20 @@ fn filmed_csv(swap: bool, fps: f64, from: f64, to: f64) -> String {
             to,
             ..Video::default()
         },
-    );
-    let (mx, my) = track.mark.clone().expect("a mark");
+    )
+    .unwrap();
+    let (mx, my) = track.mark().expect("a mark");
     let mut s = String::from("t,x,y,x_mark,y_mark\n");
-    for i in 0..track.t.len() {
-        let (c, m) = ((track.x[i], track.y[i]), (mx[i], my[i]));
+    for i in 0..track.t().len() {
+        let (c, m) = ((track.x()[i], track.y()[i]), (mx[i], my[i]));
         let (a, b) = if swap { (m, c) } else { (c, m) };
         s += &format!(
             "{:.5},{:.6},{:.6},{:.6},{:.6}\n",
-            track.t[i], a.0, a.1, b.0, b.1
+            track.t()[i],
+            a.0,
+            a.1,
+            b.0,
+            b.1
         );
     }
     s

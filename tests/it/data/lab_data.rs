@@ -37,46 +37,46 @@ fn the_lab_derives_v_t_with_the_scene_shown_overrides_included() {
     )
     .unwrap();
     let (a, b) = (plain.measured().unwrap(), narrow.measured().unwrap());
-    assert!(a.x.is_some(), "a position track");
+    assert!(a.x().is_some(), "a position track");
     // v_t = (dθ/dt) r: the same angle track, scaled by the ratio of the contact radii.
     let ratio = narrow.derived.r / plain.derived.r;
     assert!((ratio - 1.0).abs() > 0.05, "the override changes r");
     let mut compared = 0;
-    for (x, y) in a.v_t.iter().zip(&b.v_t) {
+    for (x, y) in a.v_t().iter().zip(b.v_t()) {
         if x.is_finite() && x.abs() > 0.01 {
             assert!((y / x - ratio).abs() < 1e-9, "{y} / {x} against {ratio}");
             compared += 1;
         }
     }
     assert!(compared > 50, "{compared}");
-    assert_eq!(a.v_cm, b.v_cm, "v_cm does not depend on r");
+    assert_eq!(a.v_cm(), b.v_cm(), "v_cm does not depend on r");
 }
 
 #[test]
 fn the_ghost_replays_the_tracked_centre_and_mark() {
     let lab = cli::lab(&scene(SceneSpec::default()), &data(|_| {})).unwrap();
     let m = lab.measured().unwrap();
-    let (x, angle) = (m.x.as_ref().unwrap(), m.angle.as_ref().unwrap());
+    let (x, angle) = (m.x().unwrap(), m.angle().unwrap());
     let r = lab.scene.radius;
-    for i in (0..m.t.len()).step_by(7) {
-        let g = lab.ghost_x(m.t[i]).unwrap();
+    for i in (0..m.t().len()).step_by(7) {
+        let g = lab.ghost_x(m.t()[i]).unwrap();
         assert!(
             (g - (x[i] - r)).abs() < 1e-12,
             "t = {}: {g} against {}",
-            m.t[i],
+            m.t()[i],
             x[i] - r
         );
         if angle[i].is_finite() {
-            let a = lab.ghost_angle(m.t[i]).unwrap();
+            let a = lab.ghost_angle(m.t()[i]).unwrap();
             let want = lab.solution.angle_at(0.0)[0] + angle[i];
-            assert!((a - want).abs() < 1e-12, "t = {}", m.t[i]);
+            assert!((a - want).abs() < 1e-12, "t = {}", m.t()[i]);
         }
     }
     // Between two frames: linear between them; outside the series: none.
-    let mid = 0.5 * (m.t[10] + m.t[11]);
+    let mid = 0.5 * (m.t()[10] + m.t()[11]);
     let g = lab.ghost_x(mid).unwrap();
     assert!((g - (0.5 * (x[10] + x[11]) - r)).abs() < 1e-12);
-    assert_eq!(lab.ghost_x(m.t[0] - 0.01), None);
+    assert_eq!(lab.ghost_x(m.t()[0] - 0.01), None);
     // The tracked ghost stays within a few mm of the model's ball it was made from.
     let model = lab.solution.at(0.1).left.x;
     assert!((lab.ghost_x(0.1).unwrap() - model).abs() < 0.005);
@@ -306,15 +306,15 @@ fn data_follow_the_scene_when_it_changes_in_the_lab() {
     )
     .unwrap();
     let mut by_keys = cli::lab(&scene(SceneSpec::default()), &data(|_| {})).unwrap();
-    let before = by_keys.measured().unwrap().v_t.clone();
+    let before = by_keys.measured().unwrap().v_t().to_vec();
     by_keys.set(Key::Width, 0.044).unwrap();
     let (a, b) = (by_flags.measured().unwrap(), by_keys.measured().unwrap());
-    assert_ne!(before, b.v_t, "v_t follows r");
+    assert_ne!(before, b.v_t(), "v_t follows r");
     // The same numbers, bit for bit: one derivation, scaled by the same r.
-    assert_eq!(format!("{:?}", a.v_t), format!("{:?}", b.v_t));
+    assert_eq!(format!("{:?}", a.v_t()), format!("{:?}", b.v_t()));
     assert_eq!(by_flags.rest_band, by_keys.rest_band);
     assert_eq!(by_flags.data_rms, by_keys.data_rms);
-    let t = a.t[a.t.len() / 2];
+    let t = a.t()[a.t().len() / 2];
     assert_eq!(by_flags.ghost_x(t), by_keys.ghost_x(t));
 }
 

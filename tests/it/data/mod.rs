@@ -9,6 +9,7 @@ mod origins;
 mod point_sigma;
 mod rules;
 mod scene;
+mod series_rules;
 mod side_by_side;
 mod sources_said;
 mod table_shapes;

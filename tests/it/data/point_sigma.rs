@@ -4,7 +4,9 @@
 use groovelab::input::data::{self, Reading};
 use groovelab::physics::scene::Scene;
 use groovelab::study::fit::{self, Free, ModelFit};
-use groovelab::study::measured::{self, Derive, Measured, RawSeries, Track};
+use groovelab::study::measured::{
+    self, Derive, Measured, MeasuredParts, RawSeries, Track, TrackParts,
+};
 use groovelab::study::video::{self, Noise, Video};
 use groovelab::vision::tracks::{BallTrack, Calibration, Tracks};
 use groovelab::vision::write::tracker_text;
@@ -23,7 +25,9 @@ fn noisy_track(scene: &Scene, seed: u64, small: f64, big: f64) -> Track {
             noise: 0.0,
             ..Video::default()
         },
-    );
+    )
+    .unwrap()
+    .into_parts();
     let sigma: Vec<f64> = (0..exact.t.len())
         .map(|k| if k % 4 == 1 { big } else { small })
         .collect();
@@ -35,14 +39,15 @@ fn noisy_track(scene: &Scene, seed: u64, small: f64, big: f64) -> Track {
             .collect()
     };
     let (mx, my) = exact.mark.clone().unwrap();
-    Track {
+    Track::new(TrackParts {
         x: off(&exact.x),
         y: off(&exact.y),
         mark: Some((off(&mx), off(&my))),
         sigma: Some(sigma.clone()),
         mark_sigma: Some(sigma.clone()),
         ..exact
-    }
+    })
+    .unwrap()
 }
 
 fn measured_of(scene: &Scene, track: Track) -> Measured {
@@ -66,12 +71,13 @@ fn the_position_fit_weights_each_point_by_its_sigma() {
     let seeds = 6;
     for seed in 1..=seeds {
         let m = measured_of(&s, noisy_track(&s, seed, 1e-4, 3e-3));
-        assert!(m.x_sigma.is_some() && m.angle_sigma.is_some());
-        let plain = Measured {
+        assert!(m.x_sigma().is_some() && m.angle_sigma().is_some());
+        let plain = Measured::new(MeasuredParts {
             x_sigma: None,
             angle_sigma: None,
-            ..m.clone()
-        };
+            ..m.to_parts()
+        })
+        .unwrap();
         let (w, u) = (position_fit(&s, &m), position_fit(&s, &plain));
         let (dw, du) = (w.mu - MU, u.mu - MU);
         println!(
@@ -99,16 +105,22 @@ fn the_position_fit_weights_each_point_by_its_sigma() {
 #[test]
 fn a_track_without_sigma_fits_as_before() {
     let s = paper_scene();
-    let mut track = noisy_track(&s, 3, 2e-4, 2e-4);
+    let track = noisy_track(&s, 3, 2e-4, 2e-4);
     let with = measured_of(&s, track.clone());
-    (track.sigma, track.mark_sigma) = (None, None);
+    let track = Track::new(TrackParts {
+        sigma: None,
+        mark_sigma: None,
+        ..track.into_parts()
+    })
+    .unwrap();
     let without = measured_of(&s, track);
-    assert!(without.x_sigma.is_none() && without.angle_sigma.is_none());
-    let stripped = Measured {
+    assert!(without.x_sigma().is_none() && without.angle_sigma().is_none());
+    let stripped = Measured::new(MeasuredParts {
         x_sigma: None,
         angle_sigma: None,
-        ..with.clone()
-    };
+        ..with.to_parts()
+    })
+    .unwrap();
     let (a, b) = (position_fit(&s, &without), position_fit(&s, &stripped));
     assert_eq!((a.mu, a.mu_se), (b.mu, b.mu_se));
     // Equal σ everywhere weigh the frames alike, but the mark's angle now by its own
@@ -185,9 +197,9 @@ fn the_tracker_text_keeps_each_points_sigma() {
                 .zip(b)
                 .all(|(a, b)| (a.is_nan() && b.is_nan()) || (a - b).abs() <= 5e-7 * b.abs())
     };
-    let (s, ms) = (read.sigma.unwrap(), read.mark_sigma.unwrap());
-    assert!(close(&s, &sigma), "{s:?}");
-    assert!(close(&ms, &ball.mark_sigma), "{ms:?}");
+    let (s, ms) = (read.sigma().unwrap(), read.mark_sigma().unwrap());
+    assert!(close(s, &sigma), "{s:?}");
+    assert!(close(ms, &ball.mark_sigma), "{ms:?}");
     // The positions read as before the σ lines were there.
-    assert!(close(&read.x, &ball.x), "{:?}", read.x);
+    assert!(close(read.x(), &ball.x), "{:?}", read.x());
 }

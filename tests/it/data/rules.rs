@@ -161,7 +161,8 @@ fn an_exact_track_is_a_perfect_fit_never_a_poor_one() {
             ..Video::default()
         },
     );
-    let series = measured::prepare(RawSeries::Positions(track), &Derive::default()).unwrap();
+    let series =
+        measured::prepare(RawSeries::Positions(track.unwrap()), &Derive::default()).unwrap();
     let m = measured::for_scene(&series, &scene).measured;
     let f = position_fit(&scene, &m, &[Free::Mu], &groovelab::study::Quiet).unwrap();
     assert!((f.mu - 0.18).abs() < 1e-3, "μ_k = {}", f.mu);

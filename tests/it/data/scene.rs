@@ -222,7 +222,11 @@ fn an_r_edited_below_the_rim_marks_distance_is_refused() {
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join("marked-track.txt");
     let track = video::track(&truth, &shot);
-    std::fs::write(&path, video::write(&track, TrackFormat::TrackerMulti)).unwrap();
+    std::fs::write(
+        &path,
+        video::write(&track.unwrap(), TrackFormat::TrackerMulti),
+    )
+    .unwrap();
     let file = path.display().to_string();
     let mut a = rendered(
         &scene_of("paper-b4.9", SceneSpec::default()),

@@ -33,8 +33,8 @@ fn comma(v: f64) -> String {
 /// 0, the rim mark from frame 2 (its rows shifted up: matched by time, not by row),
 /// the other ball from frame 0 with a frame skipped; rows padded with empty cells.
 fn spreadsheet(track: &Track) -> String {
-    let (mx, my) = track.mark.clone().unwrap();
-    let n = track.t.len();
+    let (mx, my) = track.mark().unwrap();
+    let n = track.t().len();
     let centre: Vec<usize> = (0..n).collect();
     let mark: Vec<usize> = (2..n).collect();
     let other: Vec<usize> = (0..n).filter(|&i| i != 30).collect();
@@ -43,7 +43,7 @@ fn spreadsheet(track: &Track) -> String {
         let cell = |rows: &[usize], x: &[f64], y: &[f64], sign: f64| match rows.get(row) {
             Some(&i) => format!(
                 "{};{};{}",
-                comma(track.t[i]),
+                comma(track.t()[i]),
                 comma(sign * x[i]),
                 comma(y[i])
             ),
@@ -51,9 +51,9 @@ fn spreadsheet(track: &Track) -> String {
         };
         out += &format!(
             "{};{};{}\r\n",
-            cell(&centre, &track.x, &track.y, 1.0),
-            cell(&mark, &mx, &my, 1.0),
-            cell(&other, &track.x, &track.y, -1.0),
+            cell(&centre, track.x(), track.y(), 1.0),
+            cell(&mark, mx, my, 1.0),
+            cell(&other, track.x(), track.y(), -1.0),
         );
     }
     out
@@ -69,7 +69,8 @@ fn tracks_side_by_side_are_read_each_with_its_own_time() {
             noise: 2e-4,
             ..Video::default()
         },
-    );
+    )
+    .unwrap();
     let dir = scratch("three");
     let file = dir.join("input.csv");
     std::fs::write(&file, spreadsheet(&track)).unwrap();
@@ -90,7 +91,7 @@ fn tracks_side_by_side_are_read_each_with_its_own_time() {
         "{text}"
     );
     assert!(
-        text.contains(&format!("{} frames", track.t.len())),
+        text.contains(&format!("{} frames", track.t().len())),
         "{text}"
     );
     let j = json(&[

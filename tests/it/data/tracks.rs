@@ -4,9 +4,8 @@
 
 use groovelab::input::data::{self, Reading};
 use groovelab::physics::scene::Scene;
-use groovelab::study::fit::{self, Free};
-use groovelab::study::measured::track::{self, TrackFits};
-use groovelab::study::measured::{self, Derive, Found, Measured, RawSeries};
+use groovelab::study::fit::{self, Free, TrackFits};
+use groovelab::study::measured::{self, Derive, Found, Measured, RawSeries, Track};
 use groovelab::study::video::{self, TrackFormat, Video};
 
 use crate::common::{groovelab, json, preset_scene};
@@ -33,12 +32,15 @@ fn try_load(scene: &Scene, text: &str) -> Result<Loaded, String> {
 fn fits_of(scene: &Scene, text: &str) -> (Loaded, TrackFits) {
     let l = try_load(scene, text).unwrap();
     let start = Scene { mu: 0.3, ..*scene };
-    let f = track::fit_tracks(&start, &l.measured, &[Free::Mu], &groovelab::study::Quiet).unwrap();
+    let f = fit::fit_tracks(&start, &l.measured, &[Free::Mu], &groovelab::study::Quiet).unwrap();
     (l, f)
 }
 
 fn fits(scene: &Scene, video: &Video, format: TrackFormat) -> (Loaded, TrackFits) {
-    fits_of(scene, &video::write(&video::track(scene, video), format))
+    fits_of(
+        scene,
+        &video::write(&video::track(scene, video).unwrap(), format),
+    )
 }
 
 /// The README's recovery table: the largest |μ_k − 0.17| over 5 seeds at each frame
@@ -149,23 +151,23 @@ fn either_direction_any_origin_flipped_axes_and_clip_start() {
         let found = l.found.unwrap();
         assert_eq!(found.direction, if flip_x { -1.0 } else { 1.0 });
         // A track along −x is read mirrored, and says so (the series carries it).
-        assert_eq!(l.measured.mirrored, flip_x);
+        assert_eq!(l.measured.mirrored(), flip_x);
         assert!((found.impact_t - 3.7).abs() < 1e-3, "{}", found.impact_t);
         assert!((found.impact_x - 1.234).abs() < 1e-3, "{}", found.impact_x);
         assert!((f.position.mu - MU).abs() <= 0.002, "μ {}", f.position.mu);
         // Rolling before the impact: v_t = v_cm (> 0 toward the other ball) whatever
         // the axes; 0.7928 m/s is the preset's approach speed.
         let m = &l.measured;
-        let i = m.t.partition_point(|&t| t < -0.1);
-        assert!((m.v_cm[i] - 0.7928).abs() < 0.02, "v_cm {}", m.v_cm[i]);
-        assert!((m.v_t[i] - 0.7928).abs() < 0.03, "v_t {}", m.v_t[i]);
+        let i = m.t().partition_point(|&t| t < -0.1);
+        assert!((m.v_cm()[i] - 0.7928).abs() < 0.02, "v_cm {}", m.v_cm()[i]);
+        assert!((m.v_t()[i] - 0.7928).abs() < 0.03, "v_t {}", m.v_t()[i]);
     }
 }
 
 #[test]
 fn gaps_in_the_track_are_bridged() {
     let s = preset_scene("paper-b4.9");
-    let mut t = video::track(&s, &Video::default());
+    let mut t = video::track(&s, &Video::default()).unwrap().into_parts();
     // Missing rows: every 7th frame dropped; empty cells: some centres, some marks.
     let keep: Vec<usize> = (0..t.t.len()).filter(|i| i % 7 != 3).collect();
     let pick = |v: &Vec<f64>| keep.iter().map(|&i| v[i]).collect::<Vec<f64>>();
@@ -181,14 +183,14 @@ fn gaps_in_the_track_are_bridged() {
         mx[i] = f64::NAN;
     }
     t.mark = Some((mx, my));
-    let text = video::write(&t, TrackFormat::TrackerMulti);
+    let text = video::write(&Track::new(t).unwrap(), TrackFormat::TrackerMulti);
     assert!(text.contains("\t\t"), "the file has empty cells");
     let (l, f) = fits_of(&s, &text);
     assert!((f.position.mu - MU).abs() <= 0.003, "μ {}", f.position.mu);
     assert!((f.velocity.mu - MU).abs() <= 0.006, "μ {}", f.velocity.mu);
     // Frames without a mark have no v_t; the others do.
     let m = &l.measured;
-    assert!(m.v_t.iter().any(|v| v.is_nan()) && m.has_v_t());
+    assert!(m.v_t().iter().any(|v| v.is_nan()) && m.has_v_t());
 }
 
 /// Issue 19: frames without the rim mark (or the centre) are counted and their times
@@ -197,7 +199,7 @@ fn gaps_in_the_track_are_bridged() {
 #[test]
 fn missing_marks_and_centres_are_counted_with_their_times() {
     let s = preset_scene("paper-b4.9");
-    let mut t = video::track(&s, &Video::default());
+    let mut t = video::track(&s, &Video::default()).unwrap().into_parts();
     let (mut mx, mut my) = t.mark.take().unwrap();
     // Rows 60..69 (t = 0.300 … 0.367 s of the file at 120 frames/s, impact at 0).
     for i in 60..69 {
@@ -209,7 +211,11 @@ fn missing_marks_and_centres_are_counted_with_their_times() {
     t.x[40] = f64::NAN;
     t.x[41] = f64::NAN;
     let (from, to) = (t.t[60], t.t[68]);
-    let l = try_load(&s, &video::write(&t, TrackFormat::TrackerMulti)).unwrap();
+    let l = try_load(
+        &s,
+        &video::write(&Track::new(t).unwrap(), TrackFormat::TrackerMulti),
+    )
+    .unwrap();
     let found = l.found.unwrap();
     assert_eq!(found.frames_dropped, 2);
     assert_eq!(found.centre_gaps.len(), 1);
@@ -222,12 +228,12 @@ fn missing_marks_and_centres_are_counted_with_their_times() {
     assert!(close(m0, from) && close(m1, to), "{:?}", found.mark_gaps);
     // No v_t in those frames: nothing interpolated.
     let m = &l.measured;
-    let file_t = |k: usize| m.t[k] + found.impact_t;
-    let inside: Vec<usize> = (0..m.t.len())
+    let file_t = |k: usize| m.t()[k] + found.impact_t;
+    let inside: Vec<usize> = (0..m.t().len())
         .filter(|&k| file_t(k) >= from - 1e-9 && file_t(k) <= to + 1e-9)
         .collect();
     assert_eq!(inside.len(), 9);
-    assert!(inside.iter().all(|&k| m.v_t[k].is_nan()));
+    assert!(inside.iter().all(|&k| m.v_t()[k].is_nan()));
     let text = found.describe();
     for want in [
         format!("2 of {} rows left out", found.frames + 2),
@@ -248,10 +254,10 @@ fn without_a_mark_the_fits_use_the_centre_only() {
         mark: false,
         ..Video::default()
     };
-    let text = video::write(&video::track(&s, &v), TrackFormat::CsvSemicolon);
+    let text = video::write(&video::track(&s, &v).unwrap(), TrackFormat::CsvSemicolon);
     let (l, f) = fits_of(&s, &text);
     assert!(!f.uses_spin);
-    assert!(l.measured.v_t.iter().all(|v| v.is_nan()));
+    assert!(l.measured.v_t().iter().all(|v| v.is_nan()));
     assert!((f.position.mu - MU).abs() <= 0.003, "μ {}", f.position.mu);
     // The line fits still work: a_cm from v_cm, over the fitted model's sliding phase.
     let all = fit::fit_all(
@@ -280,7 +286,7 @@ fn missing_pieces_give_one_line_errors() {
         };
         try_load(
             &s,
-            &video::write(&video::track(&s, &v), TrackFormat::TrackerMulti),
+            &video::write(&video::track(&s, &v).unwrap(), TrackFormat::TrackerMulti),
         )
         .map(|_| ())
         .unwrap_err()
@@ -311,8 +317,8 @@ fn velocity_files_read_as_before() {
     let RawSeries::Velocities(m) = data::read(text, "v.csv", &Reading::default()).unwrap() else {
         panic!("a velocity file");
     };
-    assert_eq!(m.t, vec![-0.02, 0.0, 0.02, 0.04]);
-    assert!(m.x.is_none() && m.v_cm_sigma.is_none());
+    assert_eq!(m.t(), vec![-0.02, 0.0, 0.02, 0.04]);
+    assert!(m.x().is_none() && m.v_cm_sigma().is_none());
     let l = try_load(&preset_scene("paper-b4.9"), text).unwrap();
     assert!(l.found.is_none());
 }
@@ -322,7 +328,7 @@ fn velocity_files_read_as_before() {
 fn example_text() -> String {
     let s = preset_scene("paper-b4.9");
     video::write(
-        &video::track(&s, &example_video()),
+        &video::track(&s, &example_video()).unwrap(),
         TrackFormat::TrackerMulti,
     )
 }
@@ -414,7 +420,11 @@ fn cli_error_for_a_track_without_an_impact_is_one_line() {
         to: 0.02,
         ..Video::default()
     };
-    std::fs::write(&file, video::write(&video::track(&s, &v), TrackFormat::Tsv)).unwrap();
+    std::fs::write(
+        &file,
+        video::write(&video::track(&s, &v).unwrap(), TrackFormat::Tsv),
+    )
+    .unwrap();
     let out = groovelab(&[
         "fit",
         "--preset",
@@ -461,7 +471,7 @@ fn the_velocity_fit_uncertainty_covers_the_truth() {
             };
             let l = try_load(
                 &s,
-                &video::write(&video::track(&s, &v), TrackFormat::CsvComma),
+                &video::write(&video::track(&s, &v).unwrap(), TrackFormat::CsvComma),
             )
             .unwrap();
             let start = Scene { mu: 0.3, ..s };
@@ -508,7 +518,7 @@ fn the_line_fits_of_a_marked_track_stop_at_rolling_and_the_regime_holds() {
         };
         let l = try_load(
             &s,
-            &video::write(&video::track(&s, &v), TrackFormat::CsvComma),
+            &video::write(&video::track(&s, &v).unwrap(), TrackFormat::CsvComma),
         )
         .unwrap();
         let f = fit::fit_all(
@@ -539,11 +549,15 @@ fn the_line_fits_of_a_marked_track_stop_at_rolling_and_the_regime_holds() {
 #[test]
 fn rounded_times_give_the_true_frame_rate() {
     let s = preset_scene("paper-b4.9");
-    let mut t = video::track(&s, &Video::default());
+    let mut t = video::track(&s, &Video::default()).unwrap().into_parts();
     for x in &mut t.t {
         *x = (*x * 1e4).round() / 1e4;
     }
-    let l = try_load(&s, &video::write(&t, TrackFormat::CsvComma)).unwrap();
+    let l = try_load(
+        &s,
+        &video::write(&Track::new(t).unwrap(), TrackFormat::CsvComma),
+    )
+    .unwrap();
     let rate = l.found.unwrap().frame_rate;
     assert!((rate - 120.0).abs() < 0.05, "{rate}");
 }
@@ -591,7 +605,7 @@ fn the_line_fit_uncertainty_covers_the_truth() {
                 ..Video::default()
             };
             let series = measured::prepare(
-                RawSeries::Positions(video::track(&s, &v)),
+                RawSeries::Positions(video::track(&s, &v).unwrap()),
                 &Derive::default(),
             )
             .unwrap();
@@ -644,7 +658,7 @@ fn the_approach_speed_is_fitted_over_the_approach_with_its_uncertainty() {
             ..Video::default()
         };
         let series = measured::prepare(
-            RawSeries::Positions(video::track(&s, &v)),
+            RawSeries::Positions(video::track(&s, &v).unwrap()),
             &Derive::default(),
         )
         .unwrap();
@@ -692,21 +706,21 @@ fn a_tracks_positions_are_aligned_as_the_position_fit_aligns_them() {
         };
         let l = try_load(
             &s,
-            &video::write(&video::track(&s, &v), TrackFormat::TrackerMulti),
+            &video::write(&video::track(&s, &v).unwrap(), TrackFormat::TrackerMulti),
         )
         .unwrap();
         let m = &l.measured;
         let sol = solve(
             &s,
             &Span {
-                t_start: m.t[0],
-                t_end: Some(*m.t.last().unwrap()),
+                t_start: m.t()[0],
+                t_end: Some(*m.t().last().unwrap()),
             },
         );
         let x = fit::aligned_track(&s, &sol, m).unwrap();
-        let r: Vec<f64> = (0..m.t.len())
+        let r: Vec<f64> = (0..m.t().len())
             .filter(|&i| x[i].is_finite())
-            .map(|i| sol.at(m.t[i]).left.x - x[i])
+            .map(|i| sol.at(m.t()[i]).left.x - x[i])
             .collect();
         let n = r.len() as f64;
         assert!(n > 100.0, "{n} frames aligned");
@@ -738,8 +752,8 @@ fn the_scales_uncertainty_widens_mu_ks() {
     let with_scale = text.replacen("#multi:", "# scale = 1000 ± 100 px/m\n#multi:", 1);
     let (plain, _) = fits_of(&s, &text);
     let (scaled, f) = fits_of(&s, &with_scale);
-    assert_eq!(plain.measured.scale_rel_se, None);
-    assert_eq!(scaled.measured.scale_rel_se, Some(0.1));
+    assert_eq!(plain.measured.scale_rel_se(), None);
+    assert_eq!(scaled.measured.scale_rel_se(), Some(0.1));
     for fit in [&f.position, &f.velocity] {
         let part = fit.scale.expect("the scale's part");
         assert!((part.mu_se_scale - 0.1 * fit.mu).abs() < 1e-12, "{part:?}");

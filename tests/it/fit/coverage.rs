@@ -100,7 +100,7 @@ fn rolling_resistance_is_found_from_a_start_without_it() {
             ..Video::default()
         };
         let series = measured::prepare(
-            RawSeries::Positions(video::track(&truth, &v)),
+            RawSeries::Positions(video::track(&truth, &v).unwrap()),
             &Derive::default(),
         )
         .unwrap();

@@ -15,7 +15,7 @@ use groovelab::physics::derived::Regime;
 use groovelab::physics::engine::solve;
 use groovelab::physics::scene::{Scene, Span};
 use groovelab::study::fit::{self, Free, PAPER_TABLE};
-use groovelab::study::measured::Measured;
+use groovelab::study::measured::{Measured, Track};
 
 use crate::common::{groovelab, json};
 
@@ -225,7 +225,7 @@ fn drifting_video(scene: &Scene, fps: f64, seed: u64, sd: f64, tau: f64) -> Meas
         to: 0.5,
         ..Video::default()
     };
-    let mut track = video::track(scene, &v);
+    let mut track = video::track(scene, &v).unwrap().into_parts();
     let mut noise = Noise::new(seed);
     let phi = (-1.0 / (fps * tau)).exp();
     let mut drift = |values: &mut Vec<f64>| {
@@ -241,7 +241,11 @@ fn drifting_video(scene: &Scene, fps: f64, seed: u64, sd: f64, tau: f64) -> Meas
         drift(mx);
         drift(my);
     }
-    let series = measured::prepare(RawSeries::Positions(track), &Derive::default()).unwrap();
+    let series = measured::prepare(
+        RawSeries::Positions(Track::new(track).unwrap()),
+        &Derive::default(),
+    )
+    .unwrap();
     (*measured::for_scene(&series, scene).measured).clone()
 }
 
@@ -284,7 +288,7 @@ fn synthetic(
                 mark: kind == 1,
                 ..Video::default()
             };
-            video::write(&video::track(truth, &v), TrackFormat::TrackerMulti)
+            video::write(&video::track(truth, &v).unwrap(), TrackFormat::TrackerMulti)
         }
         _ => velocity_file(truth, fps, 0.01, (seed as f64 * 0.618_034).fract(), seed),
     };

@@ -20,7 +20,7 @@ fn track_text(mark: bool, noise: f64, seed: u64) -> String {
         mark,
         ..Video::default()
     };
-    video::write(&video::track(&s, &v), TrackFormat::TrackerMulti)
+    video::write(&video::track(&s, &v).unwrap(), TrackFormat::TrackerMulti)
 }
 
 fn measured(text: &str) -> Measured {

@@ -75,7 +75,11 @@ fn model_fits_and_regimes_match_the_three_experiments() {
 fn the_paper_data_already_has_its_impact_at_zero() {
     for width in ["3.5", "4.4", "4.9"] {
         let (_, m) = paper(width);
-        assert_eq!(data::detect_impact(&m.t, &m.v_cm), Some(0.0), "b = {width}");
+        assert_eq!(
+            data::detect_impact(m.t(), m.v_cm()),
+            Some(0.0),
+            "b = {width}"
+        );
     }
 }
 
@@ -105,7 +109,7 @@ fn synthetic_data_give_back_mu_within_the_reported_uncertainty() {
         let m = Measured::velocities(frames.clone(), v_cm, v_t);
         // Start the fit away from the truth.
         let start = Scene { mu: 0.3, ..scene };
-        let f = fit::model_fit(&start, &m, &[Free::Mu], &groovelab::study::Quiet).unwrap();
+        let f = fit::model_fit(&start, &m.unwrap(), &[Free::Mu], &groovelab::study::Quiet).unwrap();
         if (f.mu - 0.17).abs() <= 2.0 * f.mu_se {
             inside += 1;
         }
@@ -238,12 +242,12 @@ fn a_users_csv_fits_like_the_preset() {
     // cm/s, milliseconds, and the time origin elsewhere.
     let (_, m) = paper("4.9");
     let mut text = String::from("time (ms);v_cm (cm/s);v_t (cm/s)\n");
-    for i in 0..m.t.len() {
+    for i in 0..m.t().len() {
         let row = format!(
             "{};{};{}\n",
-            (m.t[i] + 1.0) * 1000.0,
-            m.v_cm[i] * 100.0,
-            m.v_t[i] * 100.0
+            (m.t()[i] + 1.0) * 1000.0,
+            m.v_cm()[i] * 100.0,
+            m.v_t()[i] * 100.0
         );
         text.push_str(&row.replace('.', ","));
     }

@@ -37,7 +37,10 @@ impl Case {
             mark: true,
             ..Video::default()
         };
-        video::write(&video::track(&self.truth(), &v), TrackFormat::TrackerMulti)
+        video::write(
+            &video::track(&self.truth(), &v).unwrap(),
+            TrackFormat::TrackerMulti,
+        )
     }
 
     /// The fits `fit` makes of the file: R and b given, v0 from the approach (free in

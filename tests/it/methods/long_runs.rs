@@ -250,16 +250,17 @@ fn a_cancelled_measure_stops_inside_the_run() {
 
 /// The paper's series resampled `factor` times finer (linear interpolation).
 fn finer(m: &Measured, factor: usize) -> Measured {
-    let mut out = Measured::velocities(Vec::new(), Vec::new(), Vec::new());
-    for i in 0..m.t.len() - 1 {
+    let mut out = groovelab::study::measured::MeasuredParts::default();
+    for i in 0..m.t().len() - 1 {
         for k in 0..factor {
             let f = k as f64 / factor as f64;
-            out.t.push(m.t[i] + f * (m.t[i + 1] - m.t[i]));
-            out.v_cm.push(m.v_cm[i] + f * (m.v_cm[i + 1] - m.v_cm[i]));
-            out.v_t.push(m.v_t[i] + f * (m.v_t[i + 1] - m.v_t[i]));
+            out.t.push(m.t()[i] + f * (m.t()[i + 1] - m.t()[i]));
+            out.v_cm
+                .push(m.v_cm()[i] + f * (m.v_cm()[i + 1] - m.v_cm()[i]));
+            out.v_t.push(m.v_t()[i] + f * (m.v_t()[i + 1] - m.v_t()[i]));
         }
     }
-    out
+    Measured::new(out).unwrap()
 }
 
 #[test]
@@ -281,10 +282,10 @@ fn fit_thins_a_long_series_and_says_so() {
     assert!(!json.contains("\"every\""), "{json}");
 
     let long = finer(&m, 500);
-    assert!(long.t.len() > fit::MAX_MODEL_POINTS);
+    assert!(long.t().len() > fit::MAX_MODEL_POINTS);
     let (thin, k) = fit::thinned(&long).unwrap();
-    assert!(thin.t.len() <= fit::MAX_MODEL_POINTS);
-    assert_eq!(k, long.t.len().div_ceil(fit::MAX_MODEL_POINTS));
+    assert!(thin.t().len() <= fit::MAX_MODEL_POINTS);
+    assert_eq!(k, long.t().len().div_ceil(fit::MAX_MODEL_POINTS));
     let f = fit::model_fit(&scene, &long, &[fit::Free::Mu], &Quiet).unwrap();
     assert_eq!(f.every, Some(k));
     assert!(f.points <= fit::MAX_MODEL_POINTS);

@@ -222,9 +222,9 @@ fn paper_presets_carry_the_measured_series() {
         assert!(preset.source.unwrap().contains("Gröber"));
         // v0 is the mean measured v_cm before the impact.
         let before: Vec<f64> = measured
-            .t
+            .t()
             .iter()
-            .zip(&measured.v_cm)
+            .zip(measured.v_cm())
             .filter(|(t, _)| **t < 0.0)
             .map(|(_, v)| *v)
             .collect();
@@ -245,11 +245,11 @@ fn paper_presets_carry_the_measured_series() {
             .skip(1)
             .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
             .collect();
-        assert_eq!(rows.len(), measured.t.len());
+        assert_eq!(rows.len(), measured.t().len());
         for (i, row) in rows.iter().enumerate() {
             assert_eq!(
                 [row[0], row[1], row[2]],
-                [measured.t[i], measured.v_cm[i], measured.v_t[i]]
+                [measured.t()[i], measured.v_cm()[i], measured.v_t()[i]]
             );
         }
     }

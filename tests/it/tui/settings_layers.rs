@@ -166,11 +166,11 @@ fn undo_reaches_a_span_set_with_t_end_and_keeps_the_command_lines_values() {
 fn a_preset_picked_keeps_the_students_data_until_d_drops_them() {
     let d = data(&[PathBuf::from(TRACK)]);
     let mut a = rendered(&scene(SceneSpec::default()), &d, None, None, library());
-    assert!(a.lab.measured().unwrap().x.is_some(), "a position track");
+    assert!(a.lab.measured().unwrap().x().is_some(), "a position track");
     // The picker opens on paper-b4.9; the one above it is paper-b4.4.
     press(&mut a, "p up enter");
     assert_eq!(a.lab.preset().name, "paper-b4.4");
-    assert!(a.lab.measured().unwrap().x.is_some(), "still the track");
+    assert!(a.lab.measured().unwrap().x().is_some(), "still the track");
     assert!(
         matches!(&a.status, Status::Info(s) if s.contains("your data") && s.contains("kept")),
         "{:?}",
@@ -178,8 +178,8 @@ fn a_preset_picked_keeps_the_students_data_until_d_drops_them() {
     );
     press(&mut a, "D");
     let m = a.lab.measured().unwrap();
-    assert!(m.x.is_none(), "the preset's own velocities");
-    assert_eq!(m.t, a.lab.preset().measured.as_ref().unwrap().t);
+    assert!(m.x().is_none(), "the preset's own velocities");
+    assert_eq!(m.t(), a.lab.preset().measured.as_ref().unwrap().t());
     assert!(
         matches!(&a.status, Status::Info(s) if s.starts_with("dropped ")),
         "{:?}",
@@ -420,15 +420,15 @@ fn u_after_picking_a_preset_brings_back_the_preset_its_edits_and_data() {
     press(&mut a, "left");
     press(&mut a, "down down down enter 0 . 3 enter");
     let edited = (a.lab.scene, a.lab.span_end);
-    let b49_data = a.lab.measured().unwrap().t.clone();
+    let b49_data = a.lab.measured().unwrap().t().to_vec();
     // The picker opens on paper-b4.9; the one above it is paper-b4.4.
     press(&mut a, "p up enter");
     let b44 = groovelab::input::preset::load("paper-b4.4").unwrap();
     assert_eq!(a.lab.preset().name, "paper-b4.4");
     assert_eq!(a.lab.value(Key::Width), 0.044, "the preset alone: no flag");
     assert_eq!(
-        a.lab.measured().unwrap().t,
-        b44.measured.as_ref().unwrap().t
+        a.lab.measured().unwrap().t(),
+        b44.measured.as_ref().unwrap().t()
     );
     // An edit on the picked preset, and a reset to it, are undone first.
     press(&mut a, "right R");
@@ -449,7 +449,7 @@ fn u_after_picking_a_preset_brings_back_the_preset_its_edits_and_data() {
     );
     assert_eq!(a.lab.preset().name, "paper-b4.9");
     assert_eq!((a.lab.scene, a.lab.span_end), edited);
-    assert_eq!(a.lab.measured().unwrap().t, b49_data);
+    assert_eq!(a.lab.measured().unwrap().t(), b49_data);
     // The older steps survive: μ_k, then b, then nothing.
     press(&mut a, "u u");
     assert_eq!(a.lab.scene, fresh);
@@ -466,6 +466,6 @@ fn u_after_picking_a_preset_keeps_the_students_data() {
     press(&mut a, "p up enter u");
     assert_eq!(a.lab.preset().name, "paper-b4.9");
     assert_eq!(a.lab.scene, before);
-    assert!(a.lab.measured().unwrap().x.is_some(), "still the track");
+    assert!(a.lab.measured().unwrap().x().is_some(), "still the track");
     assert_eq!(a.lab.own_data().unwrap().name, TRACK);
 }

@@ -80,13 +80,13 @@ fn the_data_table_of_a_position_track_shows_x_in_cm() {
     );
     let rows = groovelab::tui::view::data_rows(&a);
     let m = a.lab.measured().unwrap();
-    let x = m.x.as_ref().unwrap();
+    let x = m.x().unwrap();
     for (r, i) in rows.iter().zip(0..) {
         // The tracked centre where the model's left ball would be: x − R, aligned
         // by the impact's time and place shift the position fit profiles out (about a
         // millimetre here, 1.1 mm before the impact with the track's own v0 and the
         // preset's μ_k: the 0.3 mm noise moves the detected place).
-        let model = a.lab.solution.at(m.t[i]).left.x;
+        let model = a.lab.solution.at(m.t()[i]).left.x;
         let want = a.lab.track_x.as_ref().unwrap()[i];
         assert!(
             want.is_nan() || (want - (x[i] - a.lab.scene.radius)).abs() < 1.5e-3,
@@ -121,14 +121,14 @@ fn the_data_table_shows_the_model_beside_every_measured_point() {
     assert_eq!(a.mode(), Mode::Table);
     let rows = groovelab::tui::view::data_rows(&a);
     let m = a.lab.measured().unwrap().clone();
-    assert_eq!(rows.len(), m.t.len());
+    assert_eq!(rows.len(), m.t().len());
     for (r, i) in rows.iter().zip(0..) {
-        let model = a.lab.solution.at(m.t[i]).left;
+        let model = a.lab.solution.at(m.t()[i]).left;
         assert_eq!(
             (r[0], r[1], r[2], r[4], r[5]),
-            (m.t[i], m.v_cm[i], model.v, m.v_t[i], model.u)
+            (m.t()[i], m.v_cm()[i], model.v, m.v_t()[i], model.u)
         );
-        assert!((r[3] - (m.v_cm[i] - model.v)).abs() < 1e-15);
+        assert!((r[3] - (m.v_cm()[i] - model.v)).abs() < 1e-15);
     }
     let s = screen_of(&a);
     assert!(s.contains("v_cm (m/s)") && s.contains("t (s)"), "{s}");

@@ -8,6 +8,9 @@ use crate::settings::units::{Dimension, show_exact, show_small, significant};
 /// Why a track cannot be used (times in s, speeds in m/s, lengths in m).
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum TrackError {
+    /// The derived series broke a rule of `Measured` (a bug: a derivation keeps them).
+    #[error(transparent)]
+    Rule(#[from] crate::study::measured::series::Rule),
     #[error(
         "--impact-at {} leaves fewer than 3 frames on one side of the impact, at least 3 needed on each: allowed a time within the track's, t = {} … {} s, 3 frames from either end",
         show_exact(*at, Dimension::Time),

@@ -17,12 +17,9 @@ mod found;
 mod impacts;
 mod sigmas;
 
-use serde::Serialize;
+use super::series::{Measured, MeasuredParts, Stencil, Stencils, Track};
 
-use super::series::{Measured, Stencil, Stencils, Track};
-use crate::physics::scene::Scene;
-
-use crate::study::fit::{self, FitError, Free, ModelFit};
+use super::line::{Line, line};
 
 pub use derivative::Local;
 pub use found::{Found, Skipped};
@@ -100,7 +97,7 @@ fn spin_of(
     (n, dt): (usize, f64),
     cuts: &[f64],
 ) -> Option<Spin> {
-    track.mark.as_ref()?;
+    track.mark().as_ref()?;
     let valid: Vec<usize> = rows
         .iter()
         .copied()
@@ -245,7 +242,7 @@ pub fn derive(
     contact_radius: f64,
     opts: &Derive,
 ) -> Result<(Measured, Found), TrackError> {
-    let rows: Vec<usize> = (0..track.t.len())
+    let rows: Vec<usize> = (0..track.t().len())
         .filter(|&i| track.at(i).x.is_finite())
         .collect();
     let ts: Vec<f64> = rows.iter().map(|&i| track.at(i).t).collect();
@@ -265,7 +262,7 @@ pub fn derive(
     let spin_sign = spin
         .as_ref()
         .map_or(1.0, |s| s.sign(&ts, &dx, first.t, dir));
-    let mut m = Measured::default();
+    let mut m = MeasuredParts::default();
     let (mut sig_cm, mut sig_t, mut pos, mut ang) = (vec![], vec![], vec![], vec![]);
     // The stencils in the model's time (first impact at 0), as the points are.
     let shifted = |ts: &[f64]| ts.iter().map(|t| t - first.t).collect();
@@ -301,7 +298,7 @@ pub fn derive(
         ang.push(a);
     }
     // Recorded with x away from the other ball: turned, and said so; the scale's ±.
-    (m.mirrored, m.scale_rel_se) = (dir < 0.0, track.scale_rel_se);
+    (m.mirrored, m.scale_rel_se) = (dir < 0.0, track.scale_rel_se());
     m.v_cm_sigma = Some(sig_cm);
     m.stencils = Some(std::sync::Arc::new(stencils));
     m.x = Some(pos);
@@ -311,15 +308,15 @@ pub fn derive(
     }
     let (centre_gaps, mark_missing, mark_gaps) = gaps(track, &rows, &ts, spin.as_ref());
     let found = Found {
-        format: track.format,
-        centre: track.centre_name.clone(),
-        mark: spin.as_ref().and(track.mark_name.clone()),
+        format: track.format(),
+        centre: track.centre_name().to_string(),
+        mark: spin.as_ref().and(track.mark_name().map(str::to_string)),
         frames: ts.len(),
-        frames_dropped: track.t.len() - ts.len(),
+        frames_dropped: track.t().len() - ts.len(),
         centre_gaps,
         mark_missing,
         mark_gaps,
-        skipped: Skipped::of(&track.t, dt),
+        skipped: Skipped::of(track.t(), dt),
         frame_rate: 1.0 / dt,
         scatter: sigma,
         half_window: n as f64 * dt,
@@ -338,7 +335,7 @@ pub fn derive(
         later_impacts: kinks.iter().skip(1).map(|k| k.t - first.t).collect(),
         mark_radius: spin.as_ref().map(|s| s.radius),
     };
-    Ok((m, found))
+    Ok((Measured::new(m)?, found))
 }
 
 /// The first impact of those `impacts` found (it finds one or says why not).
@@ -350,8 +347,8 @@ fn first_kink(kinks: &[impacts::Kink]) -> Result<impacts::Kink, TrackError> {
 }
 
 /// The straight line through the centre's first `before` frames: the approach.
-fn approach_line(ts: &[f64], xs: &[f64], before: usize) -> fit::Line {
-    fit::line(
+fn approach_line(ts: &[f64], xs: &[f64], before: usize) -> Line {
+    line(
         ts.get(..before).unwrap_or_default(),
         xs.get(..before).unwrap_or_default(),
     )
@@ -379,7 +376,7 @@ fn gaps(
     ts: &[f64],
     spin: Option<&Spin>,
 ) -> (Vec<[f64; 2]>, usize, Vec<[f64; 2]>) {
-    let no_centre: Vec<bool> = track.x.iter().map(|x| !x.is_finite()).collect();
+    let no_centre: Vec<bool> = track.x().iter().map(|x| !x.is_finite()).collect();
     let no_mark: Vec<bool> = match spin {
         Some(sp) => rows
             .iter()
@@ -388,7 +385,7 @@ fn gaps(
         None => Vec::new(),
     };
     (
-        runs(&track.t, &no_centre),
+        runs(track.t(), &no_centre),
         no_mark.iter().filter(|&&m| m).count(),
         runs(ts, &no_mark),
     )
@@ -405,7 +402,7 @@ fn mark_frames(
     dir: f64,
     spin_sign: f64,
 ) -> Vec<(usize, f64, f64)> {
-    if track.mark.is_none() {
+    if track.mark().is_none() {
         return Vec::new();
     }
     valid
@@ -423,33 +420,6 @@ fn mark_frames(
             )
         })
         .collect()
-}
-
-/// Both model fits of a tracked series, side by side.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct TrackFits {
-    /// The model's v_cm and v_t against the derived velocities, weighted by their
-    /// uncertainties.
-    pub velocity: ModelFit,
-    /// The model's x(t) (and the mark's angle) against the track itself.
-    pub position: ModelFit,
-    /// False when no rim mark was tracked: both fits use the centre only.
-    pub uses_spin: bool,
-}
-
-/// Fits the model to the derived velocities and directly to the positions of `m`
-/// (which must carry `x`), freeing `free`.
-pub fn fit_tracks(
-    scene: &Scene,
-    m: &Measured,
-    free: &[Free],
-    progress: &dyn crate::study::Progress,
-) -> Result<TrackFits, FitError> {
-    Ok(TrackFits {
-        velocity: fit::model_fit(scene, m, free, progress)?,
-        position: fit::position_fit(scene, m, free, progress)?,
-        uses_spin: m.has_v_t(),
-    })
 }
 
 /// The time between frames, s: the mean of the steps within half a frame of their
@@ -482,9 +452,9 @@ fn frame_step(ts: &[f64]) -> f64 {
 /// for one local fit.
 pub fn in_file_time(track: &Track) -> Option<Measured> {
     let (ts, xs): (Vec<f64>, Vec<f64>) = track
-        .t
+        .t()
         .iter()
-        .zip(&track.x)
+        .zip(track.x())
         .filter(|(t, x)| t.is_finite() && x.is_finite())
         .map(|(t, x)| (*t, *x))
         .unzip();
@@ -498,7 +468,7 @@ pub fn in_file_time(track: &Track) -> Option<Measured> {
     let sigma = scatter(&xs).max(1e-7);
     let n = half_window(dt, sigma, &Derive::default());
     let x0 = *xs.first()?;
-    let mut m = Measured::default();
+    let mut m = MeasuredParts::default();
     let (mut sig, mut pos) = (Vec::new(), Vec::new());
     for ((local, t), x) in derivatives(&ts, &xs, n, &[], sigma)
         .into_iter()
@@ -520,7 +490,7 @@ pub fn in_file_time(track: &Track) -> Option<Measured> {
     }
     m.v_cm_sigma = Some(sig);
     m.x = Some(pos);
-    Some(m)
+    Measured::new(m).ok()
 }
 
 #[cfg(test)]
@@ -529,7 +499,7 @@ mod file_time_tests {
 
     fn track(t: Vec<f64>, x: Vec<f64>) -> Track {
         let n = t.len();
-        Track {
+        Track::new(super::super::series::TrackParts {
             t,
             x,
             y: vec![f64::NAN; n],
@@ -540,7 +510,8 @@ mod file_time_tests {
             scale_rel_se: None,
             sigma: None,
             mark_sigma: None,
-        }
+        })
+        .unwrap()
     }
 
     #[test]
@@ -550,15 +521,15 @@ mod file_time_tests {
         let t: Vec<f64> = (0..40).map(|k| 2.0 + k as f64 * 0.01).collect();
         let x = t.iter().map(|t| 0.3 + 0.5 * t - 0.4 * t * t).collect();
         let m = in_file_time(&track(t.clone(), x)).unwrap();
-        assert_eq!(m.t, t);
-        for (t, v) in m.t.iter().zip(&m.v_cm) {
+        assert_eq!(m.t(), t);
+        for (t, v) in m.t().iter().zip(m.v_cm()) {
             assert!((v - (0.5 - 0.8 * t)).abs() < 1e-9, "t = {t}: {v}");
         }
-        let x = m.x.unwrap();
+        let x = m.x().unwrap();
         assert_eq!(x.first(), Some(&0.0));
         let last = 0.5 * 0.39 - 0.4 * (2.39f64.powi(2) - 4.0);
         assert!((x.last().unwrap() - last).abs() < 1e-12);
-        assert!(m.v_t.iter().all(|v| v.is_nan()));
+        assert!(m.v_t().iter().all(|v| v.is_nan()));
     }
 
     #[test]

@@ -24,10 +24,10 @@ pub(super) fn point_sigmas(
         .filter(|(l, _)| l.is_some())
         .map(|(_, &r)| r)
         .collect();
-    let Some(centre) = track.sigma.as_deref().and_then(|s| usable(s, &points)) else {
+    let Some(centre) = track.sigma().and_then(|s| usable(s, &points)) else {
         return (None, None);
     };
-    let angle = match (&track.mark, track.mark_sigma.as_deref(), spin) {
+    let angle = match (&track.mark(), track.mark_sigma(), spin) {
         (Some(_), ms, true) => {
             // Without the mark's own σ, the centre's stands in (both are points of
             // the same picture).
@@ -73,7 +73,7 @@ fn usable(sigma: &[f64], points: &[usize]) -> Option<Vec<f64>> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::study::measured::series::Stencil;
+    use crate::study::measured::series::{Stencil, TrackParts};
 
     #[test]
     fn each_point_gets_its_frames_sigma_filled_and_floored() {
@@ -91,15 +91,16 @@ mod tests {
         });
         // Five frames, the fourth without a centre fit (no point); the mark 3 cm from
         // the centre, straight above it.
-        let track = Track {
+        let parts = TrackParts {
             t: vec![0.0, 0.01, 0.02, 0.03, 0.04],
             x: vec![0.0; 5],
             y: vec![0.0; 5],
             mark: Some((vec![0.0; 5], vec![0.03; 5])),
             sigma: Some(vec![1e-4, f64::NAN, 1e-9, 5.0, 3e-4]),
             mark_sigma: Some(vec![1e-4; 5]),
-            ..Track::default()
+            ..TrackParts::default()
         };
+        let track = Track::new(parts.clone()).unwrap();
         let dx = [local, local, local, None, local];
         let (x, angle) = point_sigmas(&track, &[0, 1, 2, 3, 4], &dx, true);
         let (x, angle) = (x.unwrap(), angle.unwrap());
@@ -110,19 +111,21 @@ mod tests {
         let want = 1e-4f64.hypot(1e-4) / 0.03;
         assert!((angle[0] - want).abs() <= 1e-12 * want, "{angle:?}");
         // Without a mark's σ the centre's stands in; without the centre's, none.
-        let no_mark = Track {
+        let no_mark = Track::new(TrackParts {
             mark_sigma: None,
-            ..track.clone()
-        };
+            ..parts.clone()
+        })
+        .unwrap();
         let angle = point_sigmas(&no_mark, &[0, 1, 2, 3, 4], &dx, true)
             .1
             .unwrap();
         let want = 1e-5f64.hypot(1e-5) / 0.03;
         assert!((angle[2] - want).abs() <= 1e-12 * want, "{angle:?}");
-        let none = Track {
+        let none = Track::new(TrackParts {
             sigma: None,
-            ..track
-        };
+            ..parts
+        })
+        .unwrap();
         assert_eq!(
             point_sigmas(&none, &[0, 1, 2, 3, 4], &dx, true),
             (None, None)

@@ -116,12 +116,7 @@ fn with_big_series(rows: usize) -> App {
     let mut v_cm: Vec<f64> = t.iter().map(|t| 0.6 * (-2.0 * t.abs()).exp()).collect();
     v_cm[rows / 3] = 1.5;
     let v_t = t.iter().map(|t| -0.3 * (-3.0 * t.abs()).exp()).collect();
-    let m = Measured {
-        t,
-        v_cm,
-        v_t,
-        ..Measured::default()
-    };
+    let m = Measured::velocities(t, v_cm, v_t).unwrap();
     let own = OwnData {
         name: "big.csv".into(),
         series: Series::Velocities(std::sync::Arc::new(m)),

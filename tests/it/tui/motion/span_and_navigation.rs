@@ -74,7 +74,7 @@ fn paper_b4_4_shows_its_nine_impacts_up_to_t_inf() {
 fn the_automatic_span_also_covers_the_measured_points() {
     // paper-b4.9 (μ_k 0.17) is over at 0.86 s; its measured series runs to 0.88 s.
     let a = app("paper-b4.9");
-    let last = *a.lab.measured().unwrap().t.last().unwrap();
+    let last = *a.lab.measured().unwrap().t().last().unwrap();
     assert!(a.lab.solution.t_end >= last);
     assert_eq!(a.lab.span_end, SpanEnd::Auto);
 }
@@ -322,7 +322,7 @@ fn a_pinned_run_is_compared_side_by_side_and_keeps_its_own_glyph() {
 #[test]
 fn dot_and_comma_step_by_measured_frames_when_data_are_shown() {
     let mut a = app("paper-b4.9");
-    let m = a.lab.measured().unwrap().t.clone();
+    let m = a.lab.measured().unwrap().t().to_vec();
     assert_eq!(a.t, a.lab.solution.t_start);
     assert!(a.t < m[0]);
     press(&mut a, ". .");
