@@ -9,15 +9,6 @@
 //! the data do not determine (on the edge of its range: the data do not support it as
 //! a free value).
 
-// Not yet converted to `get`, iterators and typed errors (issue 35, open): its
-// indices come from its own loops over vectors of one length.
-#![allow(
-    clippy::indexing_slicing,
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::panic
-)]
-
 use serde::Serialize;
 
 use super::approach::APPROACH_FRAMES;
@@ -185,6 +176,9 @@ pub fn compare_candidates(
 }
 
 /// [`compare_candidates`], counting its work in `evals`.
+// Indices `k` and `j` run over `0..fitted.len()`, whose length the loops never
+// change: each model is refitted in place while the others are read.
+#[allow(clippy::indexing_slicing)]
 pub(super) fn candidates_within(
     scene: &Scene,
     m: &Measured,
@@ -267,9 +261,8 @@ pub(super) fn candidates_within(
     for ((free, s), (r, _)) in fitted.iter().zip(&scored) {
         out.push(candidate(free, s, cost(r), r.len(), n_eff));
     }
-    let pick = supported(&out);
-    if let Some(i) = pick {
-        out[i].supported = true;
+    if let Some(c) = supported(&out).and_then(|i| out.get_mut(i)) {
+        c.supported = true;
     }
     Ok(out)
 }
@@ -318,6 +311,9 @@ fn first_fits(
 /// model's scene has them), and keeps the refit where it is better: a model with one
 /// more free value must never fit worse than the one without it. True when any
 /// model moved.
+// Indices `k` and `j` run over `0..fitted.len()`, whose length the loops never
+// change: each model is refitted in place while the others are read.
+#[allow(clippy::indexing_slicing)]
 fn nested_no_worse(
     m: &Measured,
     target: Target,
@@ -364,6 +360,9 @@ fn nested_no_worse(
 /// the larger model found its extra values at their "off" values, e = 1 or
 /// c_rr = 0, that is the smaller model's own better optimum), from that projection;
 /// keeps the refit where it is better. True when any model moved.
+// Indices `k` and `j` run over `0..fitted.len()`, whose length the loops never
+// change: each model is refitted in place while the others are read.
+#[allow(clippy::indexing_slicing)]
 fn projected_down(
     m: &Measured,
     target: Target,
@@ -429,13 +428,14 @@ fn mean(s: &Scored) -> f64 {
 
 /// The frames (of the thinned series) every fitted candidate used, in order.
 fn shared_frames(fitted: &[(Vec<Free>, Scored)]) -> Vec<usize> {
-    fitted[0]
-        .1
-        .idx
-        .iter()
-        .copied()
-        .filter(|i| fitted.iter().all(|(_, s)| s.idx.binary_search(i).is_ok()))
-        .collect()
+    fitted.first().map_or_else(Vec::new, |(_, first)| {
+        first
+            .idx
+            .iter()
+            .copied()
+            .filter(|i| fitted.iter().all(|(_, s)| s.idx.binary_search(i).is_ok()))
+            .collect()
+    })
 }
 
 /// The scores of one fitted candidate with weighted residual sum of squares `cost`

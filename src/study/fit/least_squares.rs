@@ -2,15 +2,6 @@
 //! μ_k over its range, then Levenberg–Marquardt with numerical derivatives of the residuals
 //! ([`super::residuals`]).
 
-// Not yet converted to `get`, iterators and typed errors (issue 35, open): its
-// indices come from its own loops over vectors of one length.
-#![allow(
-    clippy::indexing_slicing,
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::panic
-)]
-
 use super::problem::{Evals, FitError, Free};
 use super::residuals::{Target, fit_points, residuals};
 use super::uncertainty::{clamped, solve};
@@ -249,11 +240,10 @@ fn golden_mu(
 }
 
 pub(super) fn normal_matrix(j: &[Vec<f64>]) -> Vec<Vec<f64>> {
-    let n = j.len();
-    (0..n)
+    j.iter()
         .map(|a| {
-            (0..n)
-                .map(|b| j[a].iter().zip(&j[b]).map(|(x, y)| x * y).sum())
+            j.iter()
+                .map(|b| a.iter().zip(b).map(|(x, y)| x * y).sum())
                 .collect()
         })
         .collect()
@@ -270,11 +260,12 @@ pub(super) struct At<'a> {
 /// ∂r/∂p by forward differences (backward at the upper bound of e); one row per
 /// parameter.
 pub(super) fn jacobian(pb: &Problem, evals: &mut Evals, at: &At) -> Vec<Vec<f64>> {
-    let p = at.p;
-    (0..p.len())
-        .map(|j| {
-            let mut h = step(p[j]);
-            if pb.free[j] == Free::Restitution && p[j] + h > 1.0 {
+    at.p.iter()
+        .zip(pb.free)
+        .enumerate()
+        .map(|(j, (&v, &free))| {
+            let mut h = step(v);
+            if free == Free::Restitution && v + h > 1.0 {
                 h = -h;
             }
             difference(pb, evals, at, (j, h))
@@ -291,7 +282,9 @@ fn step(v: f64) -> f64 {
 fn difference(pb: &Problem, evals: &mut Evals, at: &At, (j, h): (usize, f64)) -> Vec<f64> {
     let r0 = at.r0;
     let mut q = at.p.to_vec();
-    q[j] += h;
+    if let Some(v) = q.get_mut(j) {
+        *v += h;
+    }
     let r = pb.residuals(&q, at.idx, evals);
     if r.len() != r0.len() {
         // A point dropped or gained at the step: no derivative to take.
@@ -307,14 +300,15 @@ fn difference(pb: &Problem, evals: &mut Evals, at: &At, (j, h): (usize, f64)) ->
 /// jump is the jump over the step, huge, and would make the ± collapse to nothing.
 /// Where the residual is smooth both differences agree to O(step).
 pub(super) fn smooth_jacobian(pb: &Problem, evals: &mut Evals, at: &At) -> Vec<Vec<f64>> {
-    let p = at.p;
-    (0..p.len())
-        .map(|j| {
-            let h = step(p[j]);
+    at.p.iter()
+        .zip(pb.free)
+        .enumerate()
+        .map(|(j, (&v, &free))| {
+            let h = step(v);
             let up = difference(pb, evals, at, (j, h));
             // At a bound the step back or forward leaves the allowed range.
-            let (lo, hi) = super::uncertainty::bounds(pb.free[j]);
-            if p[j] - h <= lo || p[j] + h >= hi {
+            let (lo, hi) = super::uncertainty::bounds(free);
+            if v - h <= lo || v + h >= hi {
                 return up;
             }
             let down = difference(pb, evals, at, (j, -h));
