@@ -277,6 +277,18 @@ fn first_fits(
     target: Target,
     evals: &mut Evals,
 ) -> Result<Vec<(Vec<Free>, Scored)>, FitError> {
+    // With v0 measured the models without it are no candidates, but μ_k alone at the
+    // measured v0 is still a start for every model with v0, which must fit at least
+    // as well (an exact 30 frames/s track: μ_k + v0 stopped at 0.1979 with 0.25 mm
+    // RMS where μ_k alone at the approach's v0 fitted 0.2000 to 2e-11 m).
+    let alone = vec![Free::Mu];
+    let held = if !candidates.contains(&alone) && candidates.iter().any(|f| f.contains(&Free::V0)) {
+        scored_fit(scene, m, &alone, target, evals)
+            .ok()
+            .map(|s| (alone, s))
+    } else {
+        None
+    };
     let mut fitted: Vec<(Vec<Free>, Scored)> = Vec::new();
     for free in candidates {
         // From its usual start and from the best fit of a smaller model inside this
@@ -285,6 +297,7 @@ fn first_fits(
         // smaller model's optimum μ_k + v0 + e stopped at e = 1 with 2 mm RMS).
         let nested = fitted
             .iter()
+            .chain(&held)
             .filter(|(f, _)| f.iter().all(|x| free.contains(x)))
             .min_by(|a, b| mean(&a.1).total_cmp(&mean(&b.1)))
             .map(|(f, s)| with(scene, f, &s.values));

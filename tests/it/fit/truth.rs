@@ -102,7 +102,8 @@ fn outcome(case: Case, seed: u64) -> Outcome {
 /// (μ_k 0.18, b 4.9 cm, 100 frames/s, noise-free: once μ_k 0.1966 ± 0.0107, POOR FIT,
 /// while μ_k + v0 + c_rr found 0.18 exactly), the 30 frames/s corner whose impact
 /// time, linearised, left 0.02 mm residuals (then μ_k + v0 + e + c_rr was named with
-/// μ_k 0.3452), and noisy tables at both ends of the ranges.
+/// μ_k 0.3452), noisy tables at both ends of the ranges, and the grid's one noise-free
+/// miss (μ_k 0.2, b 3 cm, 30 frames/s).
 #[test]
 fn exact_and_noisy_tables_give_the_truth() {
     let cases = [
@@ -110,6 +111,9 @@ fn exact_and_noisy_tables_give_the_truth() {
         (0.35, 0.053, 0.3, 30.0, 0.0),
         (0.05, 0.03, 0.9, 240.0, 2e-4),
         (0.28, 0.042, 0.6, 60.0, 3e-4),
+        // μ_k + v0 stopped at 0.1979 (0.25 mm RMS) where μ_k alone at the approach's
+        // v0 fitted 0.2 exactly: the smaller model is now a start of the larger.
+        (0.2, 0.03, 0.6, 30.0, 0.0),
     ];
     for (k, (mu, width, v0, fps, noise)) in cases.into_iter().enumerate() {
         let case = Case {
