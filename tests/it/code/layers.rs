@@ -346,6 +346,18 @@ pub(crate) fn library_sources() -> (PathBuf, Vec<PathBuf>) {
     (src, files)
 }
 
+/// Each import of `file`: the source file it names (relative to `src`), its line and
+/// its path as written.
+fn imports_of(src: &Path, file: &Path) -> Vec<(PathBuf, usize, String)> {
+    named_paths(src, file)
+        .into_iter()
+        .map(|(path, line)| {
+            let to = file_of(src, &path).strip_prefix(src).unwrap().to_path_buf();
+            (to, line, path.join("::"))
+        })
+        .collect()
+}
+
 #[test]
 fn no_source_file_imports_itself_through_others() {
     let (src, files) = library_sources();
@@ -353,15 +365,11 @@ fn no_source_file_imports_itself_through_others() {
     let mut why: BTreeMap<(PathBuf, PathBuf), String> = BTreeMap::new();
     for file in &files {
         let from = file.strip_prefix(&src).unwrap().to_path_buf();
-        for (path, line) in named_paths(&src, file) {
-            let to = file_of(&src, &path)
-                .strip_prefix(&src)
-                .unwrap()
-                .to_path_buf();
+        for (to, line, path) in imports_of(&src, file) {
             if to != from {
                 edges.entry(from.clone()).or_default().insert(to.clone());
                 why.entry((from.clone(), to))
-                    .or_insert_with(|| format!("line {line}: {}", path.join("::")));
+                    .or_insert_with(|| format!("line {line}: {path}"));
             }
         }
     }
@@ -407,11 +415,7 @@ fn no_two_modules_import_each_other() {
     // A module's own tests (`tests.rs`) may use its siblings to check it against them.
     for file in files.iter().filter(|f| !f.ends_with("tests.rs")) {
         let from = file.strip_prefix(&src).unwrap().to_path_buf();
-        for (path, line) in named_paths(&src, file) {
-            let to = file_of(&src, &path)
-                .strip_prefix(&src)
-                .unwrap()
-                .to_path_buf();
+        for (to, line, path) in imports_of(&src, file) {
             let (a, b): (Vec<_>, Vec<_>) = (from.components().collect(), to.components().collect());
             let shared = a
                 .iter()
@@ -429,7 +433,7 @@ fn no_two_modules_import_each_other() {
             }
             pairs
                 .entry((x, y))
-                .or_insert_with(|| format!("{}:{line}: {}", from.display(), path.join("::")));
+                .or_insert_with(|| format!("{}:{line}: {path}", from.display()));
         }
     }
     let both: Vec<String> = pairs
