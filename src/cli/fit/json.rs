@@ -123,9 +123,10 @@ pub(super) struct NotMeasured {
 }
 
 /// The line fit's values that are null for `fits`: a_t and μ_k,t without a rim mark
-/// (or with one whose turn a frame cannot be followed, `no_v_t` saying so);
+/// (or with one whose turn a frame cannot be followed, `no_v_t` saying so; or one
+/// followed in too few frames of the window, when the data `has_v_t`);
 /// the whole `line_fit` where it could not be made, with why.
-pub(super) fn not_measured(fits: &Fits, no_v_t: Option<&str>) -> Vec<NotMeasured> {
+pub(super) fn not_measured(fits: &Fits, no_v_t: Option<&str>, has_v_t: bool) -> Vec<NotMeasured> {
     let Some(l) = &fits.line_fit else {
         return vec![NotMeasured {
             quantity: "line_fit",
@@ -135,7 +136,11 @@ pub(super) fn not_measured(fits: &Fits, no_v_t: Option<&str>) -> Vec<NotMeasured
                 .map_or_else(|| "not possible".into(), |e| format!("not possible: {e}")),
         }];
     };
-    let reason = no_v_t.unwrap_or("no rim mark was tracked: v_t is not measured");
+    let reason = no_v_t.unwrap_or(if has_v_t {
+        "the rim mark was followed in fewer than 3 frames of the line fits' window: v_t is not measured there"
+    } else {
+        "no rim mark was tracked: v_t is not measured"
+    });
     [
         ("line_fit.a_t", l.a_t),
         ("line_fit.a_t_se", l.a_t_se),

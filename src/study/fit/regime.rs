@@ -9,6 +9,19 @@ use crate::study::measured::noise::{sliding_noise, sliding_window};
 use crate::study::measured::series::{Measured, Stencil};
 use crate::study::measured::track::derivative::scatter;
 
+/// The data's own v_cm and v_t say when sliding ends: measured velocities (not a
+/// track's derived ones) with v_t in at least three frames after the impact. Without
+/// (no rim mark, or one lost soon after the impact) the fitted model says.
+pub(super) fn v_t_says_sliding_end(m: &Measured) -> bool {
+    let v_t_after = m
+        .t()
+        .iter()
+        .zip(m.v_t())
+        .filter(|(t, v_t)| **t > 0.0 && v_t.is_finite())
+        .count();
+    m.stencils().is_none() && v_t_after >= 3
+}
+
 /// Where the sliding phase after the first impact ends for the line fits and the
 /// observed regime, given the fitted model `fitted`: of a velocity file where its
 /// measured v_cm and v_t meet ([`sliding_window`]). Of a track, where the model rolls
@@ -17,7 +30,7 @@ use crate::study::measured::track::derivative::scatter;
 /// rolling, and a local fit over the corner at t' rounds it (the window ran 40 ms
 /// into rolling and bent |a_cm| from 2.75 to 2.29 m/s²).
 pub(super) fn sliding_end(m: &Measured, fitted: &Scene) -> Option<f64> {
-    if m.stencils().is_none() && m.has_v_t() {
+    if v_t_says_sliding_end(m) {
         return sliding_window(m).map(|w| w.1);
     }
     let t_roll = rolling_time(fitted)?;
