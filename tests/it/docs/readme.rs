@@ -6,7 +6,7 @@
 //! they cut, and say so beside each example.
 //!
 //! The examples run in a sandbox: a copy of each document (`README.md`, `guide.md`) in
-//! a fresh folder beside `NAME.in/`, which holds the files the examples read (`bad.csv`,
+//! a fresh folder of its own (the two run side by side) beside `NAME.in/`, which holds the files the examples read (`bad.csv`,
 //! the video tracks), and `NAME.out/`, which makes trycmd copy that folder before
 //! running (so `--output map.svg` writes into the copy). User presets come from an empty
 //! folder, so `presets` lists exactly the built-in ones, and a video's tracks are kept
@@ -27,38 +27,37 @@ fn copy(from: &Path, to: &Path) {
 /// The documents whose examples are tests, by path in the repository.
 const DOCUMENTS: [&str; 2] = ["README.md", "docs/guide.md"];
 
-/// A fresh folder for the examples, with each document and its fixtures.
-fn sandbox() -> PathBuf {
+/// A fresh folder for the examples of the document `doc`, with its fixtures: one
+/// folder a document, so the documents' examples run side by side.
+fn sandbox(doc: &str) -> PathBuf {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("readme-examples");
+    let name = Path::new(doc).file_stem().unwrap().to_str().unwrap();
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("{name}-examples"));
     let _ = fs::remove_dir_all(&dir);
-    for doc in DOCUMENTS {
-        let name = Path::new(doc).file_stem().unwrap().to_str().unwrap();
-        copy(&root.join(doc), &dir.join(format!("{name}.md")));
-        let input = dir.join(format!("{name}.in"));
-        for file in [
-            "docs/video/paper-b4.9-tracker.txt",
-            "docs/video/ball.txt",
-            "docs/video/mark.txt",
-            "docs/video/logger-pro.csv",
-        ] {
-            copy(&root.join(file), &input.join(file));
-        }
-        // The guide's broken file: line 3 holds a v_cm that is not a number.
-        fs::write(
-            input.join("bad.csv"),
-            "t,v_cm,v_t\n0.00,0.61,0.55\n0.01,abc,0.56\n",
-        )
-        .unwrap();
-        // The guide's film: a folder of frames rendered from the exact solution.
-        for e in fs::read_dir(crate::video::app::folder()).unwrap() {
-            let p = e.unwrap().path();
-            copy(&p, &input.join("frames").join(p.file_name().unwrap()));
-        }
-        let out = dir.join(format!("{name}.out"));
-        fs::create_dir_all(&out).unwrap();
-        fs::write(out.join(".keep"), "").unwrap();
+    copy(&root.join(doc), &dir.join(format!("{name}.md")));
+    let input = dir.join(format!("{name}.in"));
+    for file in [
+        "docs/video/paper-b4.9-tracker.txt",
+        "docs/video/ball.txt",
+        "docs/video/mark.txt",
+        "docs/video/logger-pro.csv",
+    ] {
+        copy(&root.join(file), &input.join(file));
     }
+    // The guide's broken file: line 3 holds a v_cm that is not a number.
+    fs::write(
+        input.join("bad.csv"),
+        "t,v_cm,v_t\n0.00,0.61,0.55\n0.01,abc,0.56\n",
+    )
+    .unwrap();
+    // The guide's film: a folder of frames rendered from the exact solution.
+    for e in fs::read_dir(crate::video::app::folder()).unwrap() {
+        let p = e.unwrap().path();
+        copy(&p, &input.join("frames").join(p.file_name().unwrap()));
+    }
+    let out = dir.join(format!("{name}.out"));
+    fs::create_dir_all(&out).unwrap();
+    fs::write(out.join(".keep"), "").unwrap();
     fs::create_dir_all(dir.join("no-presets")).unwrap();
     dir
 }
@@ -76,14 +75,21 @@ fn examples_run(dir: &Path) -> trycmd::TestCases {
     cases
 }
 
+/// Runs the console examples of the document `doc` in its own sandbox.
+fn examples_of(doc: &str) {
+    let dir = sandbox(doc);
+    let name = Path::new(doc).file_stem().unwrap().to_str().unwrap();
+    examples_run(&dir).case(dir.join(format!("{name}.md")));
+}
+
 #[test]
-fn every_console_example_prints_what_the_documents_show() {
-    let dir = sandbox();
-    let cases = examples_run(&dir);
-    for doc in DOCUMENTS {
-        let name = Path::new(doc).file_stem().unwrap().to_str().unwrap();
-        cases.case(dir.join(format!("{name}.md")));
-    }
+fn every_readme_example_prints_what_the_readme_shows() {
+    examples_of(DOCUMENTS[0]);
+}
+
+#[test]
+fn every_guide_example_prints_what_the_guide_shows() {
+    examples_of(DOCUMENTS[1]);
 }
 
 /// Each document holds examples: a document whose blocks stopped being ```console
