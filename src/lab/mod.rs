@@ -110,6 +110,10 @@ impl Lab {
     /// on a worker whose clip shows no impact): as [`Lab::with_unfit`].
     pub fn set_unfit(&mut self, unfit: Unfit) {
         self.unfit = Some(unfit);
+        // The user's data are in use and measure nothing the scene takes: no value is
+        // named as the data's (the preset's own series gave v0 'd' before), and the
+        // masses are assumed.
+        self.settings.from_data = Some(SceneSpec::default());
         self.rebuild()
             .expect("data without a fit change nothing the scene depends on");
     }

@@ -60,6 +60,18 @@ fn a_track_with_no_impact_opens_with_its_rows_and_says_why_there_is_no_fit() {
         // Its v_cm on the chart, said to be in the file's time; not the preset's data.
         assert!(screen.contains("v_cm, file's t"), "{screen}");
         assert!(!screen.contains("measured v_t"), "{screen}");
+        // The file measures no value the scene takes: v0 is the preset's (it was
+        // tagged 'd', the data's, from the preset's own series) and the masses are
+        // assumed, as with any data of the user's.
+        let row = |name: &str| {
+            screen
+                .lines()
+                .find(|l| l.contains(name))
+                .unwrap_or_else(|| panic!("{name}: {screen}"))
+                .to_string()
+        };
+        assert!(row("v0 (both)").contains(" m/s p"), "{}", row("v0 (both)"));
+        assert!(row("m left").contains(" g a"), "{}", row("m left"));
         // The Fit view says why, and what to give.
         let (code, fit, _) = run(&["render", "--data", &f, "--size", "100x30", "--keys", "f"]);
         assert_eq!(code, 0);

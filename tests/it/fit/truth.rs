@@ -228,3 +228,44 @@ fn a_line_fit_that_cannot_be_made_is_said_beside_the_headline() {
         "{err}"
     );
 }
+
+/// The grid's one miss is a noisy table (μ_k 0.35, b 3 cm, 120 frames/s, 0.3 mm) at
+/// 2.8σ: is it the fit or the noise? The same table under many noise draws: the
+/// headline's error over its σ has mean near 0 and spread near 1 (the fit is unbiased
+/// and its ± honest), and the draws beyond 2σ are about the 4.6 % a 2σ interval
+/// leaves. `TRUTH_DRAWS` sets the draws (default 40 a v0).
+#[test]
+#[ignore = "many fits of one noisy table, minutes in debug: run in release, result in BENCHMARKS.md"]
+fn the_grid_miss_is_the_noise_not_the_fit() {
+    let draws: u64 = std::env::var("TRUTH_DRAWS")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(40);
+    let (mut z, mut beyond, mut beyond_floor) = (Vec::new(), 0, 0);
+    for v0 in [0.3, 0.6, 0.9] {
+        let case = Case {
+            mu: 0.35,
+            width: 0.03,
+            v0,
+            fps: 120.0,
+            noise: 3e-4,
+        };
+        for seed in 0..draws {
+            let o = outcome(case, 90_000 + seed);
+            let s = o.error / (0.5 * o.two_sigma);
+            z.push(s);
+            beyond += usize::from(s.abs() > 2.0);
+            beyond_floor += usize::from(!o.holds);
+        }
+    }
+    let n = z.len() as f64;
+    let mean = z.iter().sum::<f64>() / n;
+    let sd = (z.iter().map(|s| (s - mean).powi(2)).sum::<f64>() / (n - 1.0)).sqrt();
+    println!(
+        "{} draws: error/σ mean {mean:.3}, sd {sd:.3}; beyond 2σ {beyond}; beyond max(0.002, ± 2σ) {beyond_floor}",
+        z.len()
+    );
+    // Unbiased (the mean's own standard error is sd/√n) and honest (sd near 1).
+    assert!(mean.abs() < 3.0 * sd / n.sqrt(), "{mean}");
+    assert!((0.7..1.3).contains(&sd), "{sd}");
+}
