@@ -311,12 +311,9 @@ mod tests {
         }
     }
 
-    /// Looks table seeds 5, 17, 31: a track whose rim mark was followed before the
-    /// impact but in fewer than three frames of the sliding phase made the whole fit
-    /// refuse ("no finite line fit a_t"), although the model fits need no line fit.
-    /// The headline stands; the line fit keeps a_cm and says a_t is not measured.
-    #[test]
-    fn a_rim_mark_lost_in_the_sliding_phase_leaves_the_headline_and_a_cm() {
+    /// The default scene with the paper's balls (167 g at 0.79 m/s), and its exact
+    /// motion from `t_start`.
+    fn paper_balls_from(t_start: f64) -> (Scene, crate::physics::solution::Solution) {
         let ball = Ball {
             mass: 0.167,
             v0: 0.79,
@@ -327,10 +324,19 @@ mod tests {
             ..Scene::default()
         };
         let span = crate::physics::scene::Span {
-            t_start: -0.1,
+            t_start,
             t_end: None,
         };
-        let sol = crate::physics::engine::solve(&scene, &span);
+        (scene, crate::physics::engine::solve(&scene, &span))
+    }
+
+    /// Looks table seeds 5, 17, 31: a track whose rim mark was followed before the
+    /// impact but in fewer than three frames of the sliding phase made the whole fit
+    /// refuse ("no finite line fit a_t"), although the model fits need no line fit.
+    /// The headline stands; the line fit keeps a_cm and says a_t is not measured.
+    #[test]
+    fn a_rim_mark_lost_in_the_sliding_phase_leaves_the_headline_and_a_cm() {
+        let (scene, sol) = paper_balls_from(-0.1);
         let t: Vec<f64> = (0..40).map(|i| -0.1 + f64::from(i) / 100.0).collect();
         let v_cm = t.iter().map(|&t| sol.at(t).left.v).collect();
         // The mark followed until the impact and in one frame after it.
@@ -369,22 +375,7 @@ mod tests {
     /// the same data in their own scene fit far within the real budget.
     #[test]
     fn a_fit_near_b_2r_stops_at_its_work_budget_and_says_so() {
-        let ball = Ball {
-            mass: 0.167,
-            v0: 0.79,
-        };
-        let scene = Scene {
-            left: ball,
-            right: ball,
-            ..Scene::default()
-        };
-        let sol = crate::physics::engine::solve(
-            &scene,
-            &crate::physics::scene::Span {
-                t_start: -0.1,
-                t_end: None,
-            },
-        );
+        let (scene, sol) = paper_balls_from(-0.1);
         let t: Vec<f64> = (0..30).map(|i| -0.1 + f64::from(i) / 50.0).collect();
         let v_cm = t.iter().map(|&t| sol.at(t).left.v).collect();
         let v_t = t.iter().map(|&t| sol.at(t).left.u).collect();
