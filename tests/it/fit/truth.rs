@@ -133,7 +133,8 @@ fn exact_and_noisy_tables_give_the_truth() {
 }
 
 /// The whole grid: 5 μ_k × 3 b × 3 v0 × 4 frame rates × 3 noise levels (540
-/// tables), each within max(0.002, ± 2σ), none of the noise-free "POOR FIT"; and the
+/// tables), each noise-free one within max(0.002, ± 2σ) and none "POOR FIT", the
+/// noisy ones beyond it at most at the 5 % a 95 % interval leaves; and the
 /// noisy ones' ± 2σ covers the truth at about its 95 %. Too slow for `cargo test`:
 /// `cargo test --release --test it fit::truth::the_whole_grid -- --ignored --nocapture`
 /// (result in BENCHMARKS.md).
@@ -142,6 +143,7 @@ fn exact_and_noisy_tables_give_the_truth() {
 fn the_whole_grid() {
     let mut failed = Vec::new();
     let (mut cases, mut worst, mut noisy, mut covered) = (0, 0.0_f64, 0, 0);
+    let mut noisy_missed = 0;
     let mut seed = 3500;
     for mu in [0.05, 0.12, 0.2, 0.28, 0.35] {
         for width in [0.03, 0.042, 0.053] {
@@ -165,7 +167,11 @@ fn the_whole_grid() {
                         }
                         if !o.holds {
                             println!("MISS {}", o.said);
-                            failed.push(o.said);
+                            if noise > 0.0 {
+                                noisy_missed += 1;
+                            } else {
+                                failed.push(o.said);
+                            }
                         }
                     }
                 }
@@ -173,12 +179,17 @@ fn the_whole_grid() {
         }
     }
     println!(
-        "{cases} tables, worst |μ_k − truth| {worst:.5}, {} missed; noisy: {covered} of {noisy} within ± 2σ",
+        "{cases} tables, worst |μ_k − truth| {worst:.5}, {} noise-free and {noisy_missed} noisy missed; noisy: {covered} of {noisy} within ± 2σ",
         failed.len()
     );
+    // Noise-free: every table.
     assert!(failed.is_empty(), "{failed:#?}");
-    // Binomial(360, 0.954): mean 343, sd 4.0; 4 sd below.
+    // Noisy: an honest 95 % interval leaves about 5 % of draws outside it, so "every
+    // table" cannot hold there; their rate is what is checked (and a miss's own noise
+    // draws, `the_grid_miss_is_the_noise_not_the_fit`). Binomial(360, 0.954): mean
+    // 343, sd 4.0; 4 sd below.
     assert!(covered * 100 >= noisy * 90, "{covered} of {noisy}");
+    assert!(noisy_missed * 100 <= noisy * 5, "{noisy_missed} of {noisy}");
 }
 
 /// At 30 frames/s and μ_k 0.18 in a 5.3 cm groove the sliding phase holds two frames:
