@@ -512,6 +512,33 @@ mod tests {
         assert!(se.iter().all(Option::is_some) && why.is_empty(), "{why:?}");
     }
 
+    /// No matrix the fit makes is smaller than its values, but the data path never
+    /// panics (issue 35): an entry outside the matrix is not a number, so a value
+    /// without one gets a reason, and the others their ± as before.
+    #[test]
+    fn a_matrix_too_small_for_its_values_gives_reasons_not_a_panic() {
+        let free = [Free::Mu, Free::V0];
+        let (se, why) = uncertainties(&[vec![4.0]], None, 1.0, &free, &[0.2, 0.5]);
+        // μ alone: 1/sqrt(4).
+        assert!((se[0].unwrap() - 0.5).abs() < 1e-12, "{se:?}");
+        assert_eq!(se[1], None);
+        assert_eq!(why.len(), 1, "{why:?}");
+        assert_eq!(why[0].parameter, "v0");
+        // A Jacobian row shorter than the residuals: the shared noise is not a
+        // number, and the ± "cannot be computed", never a zero read as none.
+        let st = Stencils {
+            centre_times: vec![0.0, 1.0],
+            centre_sign: 1.0,
+            ..Stencils::default()
+        };
+        let labels = [(0, false), (1, false)];
+        let meat = shared_noise(&[vec![1.0]], &labels, &st);
+        assert!(meat[0][0].is_nan(), "{meat:?}");
+        let (se, why) = uncertainties(&[vec![4.0]], Some(&meat), 1.0, &[Free::Mu], &[0.2]);
+        assert_eq!(se[0], None);
+        assert!(why[0].reason.contains("cannot be computed"), "{why:?}");
+    }
+
     #[test]
     fn a_value_on_its_bound_or_along_an_unseen_direction_gets_a_reason_not_a_nan() {
         let free = [Free::Mu, Free::V0, Free::Restitution];
