@@ -4,10 +4,11 @@
 //! screen prepared, into any area it is given, changing nothing. Input is the sibling
 //! trait's ([`super::interact::Interactive`]): the popups are layers that own their
 //! state ([`super::layer`]), and the views are the bottom layer's panes
-//! ([`super::layer::main`]), owning their state, keys and jobs. The
-//! screen (`super::screen`) lays the frame out once and draws the panels, the view
-//! shown (chosen by an exhaustive match on `View`) and the layers open over them
-//! (each drawn by its own component, an exhaustive match on `Layer`).
+//! ([`super::layer::main`]), owning their state, keys and jobs; as drawn, each view
+//! is a [`MainView`]: what it prepares for a frame and which components draw it
+//! where. The screen (`super::screen`) lays the frame out once and draws the panels,
+//! the view shown (the [`MainView`] registered for it asked) and the layers open over
+//! them (each drawn by its own component, an exhaustive match on `Layer`).
 
 use std::rc::Rc;
 
@@ -18,6 +19,8 @@ use super::app::App;
 use super::chart::Chart;
 use super::layout::Panels;
 use super::theme::Theme;
+use super::view_cache::ViewCache;
+use super::vocabulary::View;
 use crate::physics::derived::Regime;
 
 /// One frame, laid out: what drawing and hit-testing share.
@@ -47,4 +50,44 @@ pub struct Ctx<'a> {
 pub trait Component {
     /// Draws into `area` of `buf` from `cx`, changing nothing.
     fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>);
+}
+
+/// Where a part of the view shown goes: the chart's room, the side panel's, or both.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Place {
+    Chart,
+    Side,
+    Middle,
+}
+
+/// What a view computes for a frame before drawing (on the chart's room, at this
+/// size): the chart built, the regime grid.
+#[derive(Debug, Default)]
+pub struct Prepared {
+    pub chart: Option<Chart>,
+    pub regimes: Option<Rc<[Regime]>>,
+    /// True when the measured series were thinned to the chart's cells anew.
+    pub marks_thinned: bool,
+}
+
+/// A view of the main screen as drawn (its state, keys and jobs are its pane in
+/// `layer/main`): what it prepares for a frame, and which components draw it where.
+/// The screen asks the view shown, as `view/` registers it.
+pub trait MainView {
+    /// The view it draws.
+    fn view(&self) -> View;
+    /// What it computes before drawing, on `chart` (the chart's room); nothing by
+    /// default.
+    fn prepare(
+        &self,
+        _app: &App,
+        _cache: &mut ViewCache,
+        _chart: Rect,
+        _theme: &Theme,
+    ) -> Prepared {
+        Prepared::default()
+    }
+    /// Its components and where each goes; while the outcome is hidden, the panels
+    /// that would tell it are withheld.
+    fn parts(&self, app: &App) -> Vec<(&'static dyn Component, Place)>;
 }

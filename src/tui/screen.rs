@@ -9,13 +9,12 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 
 use super::app::{App, View};
-use super::component::{Component, Ctx, Laid};
+use super::component::{Component, Ctx, Laid, Place, Prepared};
 use super::layer::Layer;
 use super::layer::main::Pointer;
 use super::theme::{Theme, force_ascii};
 use super::view;
 use super::view::video_image::VideoImage;
-use super::view::withheld::Withheld;
 use super::view_cache::ViewCache;
 
 /// What preparing a frame computed anew (work counted, for the tests: a frame that
@@ -54,22 +53,12 @@ impl Screen {
     pub fn prepare(&mut self, app: &App, area: Rect, theme: &Theme) -> Work {
         let panels = view::layout(area);
         let mut work = Work::default();
-        let (mut chart, mut regimes) = (None, None);
-        if let Some(p) = panels {
-            match app.view() {
-                View::Charts | View::Fit => {
-                    let (built, thinned) =
-                        view::charts::build(app, &mut self.cache, p.chart, theme);
-                    work.marks_thinned += usize::from(thinned);
-                    chart = Some(built);
-                }
-                View::Map => {
-                    regimes = view::map::grid_size(p.chart)
-                        .map(|(cols, rows)| self.cache.regime_grid(&app.lab, cols, rows));
-                }
-                View::Methods | View::Forces => {}
-            }
-        }
+        // The view shown prepares its own: the chart, the regime grid.
+        let prepared = panels.map_or_else(Prepared::default, |p| {
+            view::shown(app).prepare(app, &mut self.cache, p.chart, theme)
+        });
+        work.marks_thinned += usize::from(prepared.marks_thinned);
+        let Prepared { chart, regimes, .. } = prepared;
         // A popup lies over the panels: no graphic then (text cannot cover it).
         let scene = panels.filter(|_| !app.layers().covers());
         self.video.prepare(app, scene.map(|p| p.scene), theme);
@@ -224,98 +213,6 @@ fn non_ascii(buf: &Buffer) -> Vec<(u16, u16, String)> {
     cells
 }
 
-/// Where a part of the view shown goes: the chart's room, the side panel's, or both.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Place {
-    Chart,
-    Side,
-    Middle,
-}
-
-/// The Methods view's panels while the outcome is hidden: its runs name it.
-const METHODS_WITHHELD: [Withheld; 2] = [
-    Withheld {
-        title: "Methods",
-        what: "error against work",
-    },
-    Withheld {
-        title: "Runs",
-        what: "each method's run and outcome",
-    },
-];
-
-/// The Map view's panels while a prediction is pending (b shown: its place on the
-/// map is the answer).
-const MAP_WITHHELD: [Withheld; 2] = [
-    Withheld {
-        title: "Regime map",
-        what: "the regime map",
-    },
-    Withheld {
-        title: "Why",
-        what: "why",
-    },
-];
-
-/// The Fit panel while the outcome is hidden: it names the predicted and observed
-/// regimes.
-const FIT_WITHHELD: Withheld = Withheld {
-    title: "Fit",
-    what: "the fit",
-};
-
-/// The energy chart while the outcome is hidden: before the impact its rotational
-/// over translational energy is 2/(5k²) = 1/D, the answer (rot above trans: they
-/// come back).
-const ENERGY_WITHHELD: Withheld = Withheld {
-    title: "Energy",
-    what: "the energy chart",
-};
-
-/// The components of the view shown and where each goes (every view names its own:
-/// a new view is a new arm here, which the compiler asks for). While the outcome is
-/// hidden, the panels that would tell it are withheld.
-fn parts_of(app: &App) -> Vec<(&'static dyn Component, Place)> {
-    use view::{charts, fit, forces, info, map, methods};
-    let hide = app.hidden();
-    match app.view() {
-        View::Charts if hide.derived() && app.charts().energy() => {
-            vec![(&ENERGY_WITHHELD, Place::Chart), (&info::Why, Place::Side)]
-        }
-        View::Fit if hide.derived() && app.charts().energy() => vec![
-            (&ENERGY_WITHHELD, Place::Chart),
-            (&FIT_WITHHELD, Place::Side),
-        ],
-        View::Methods if hide.derived() => vec![
-            (&METHODS_WITHHELD[0], Place::Chart),
-            (&METHODS_WITHHELD[1], Place::Side),
-        ],
-        View::Map if hide.pending() && !hide.b() => vec![
-            (&MAP_WITHHELD[0], Place::Chart),
-            (&MAP_WITHHELD[1], Place::Side),
-        ],
-        View::Fit if hide.derived() => vec![
-            (&charts::ChartPanel, Place::Chart),
-            (&FIT_WITHHELD, Place::Side),
-        ],
-        View::Charts => vec![
-            (&charts::ChartPanel, Place::Chart),
-            (&info::Why, Place::Side),
-        ],
-        View::Fit => vec![
-            (&charts::ChartPanel, Place::Chart),
-            (&fit::FitPanel, Place::Side),
-        ],
-        View::Map => vec![(&map::Map, Place::Chart), (&info::Why, Place::Side)],
-        View::Methods => vec![
-            (&methods::MethodsDiagram, Place::Chart),
-            (&methods::MethodsTable, Place::Side),
-        ],
-        // The Forces view takes the chart's and the side panel's room.
-        View::Forces => vec![(&forces::ForcesView, Place::Middle)],
-    }
-}
-
 /// The component of a popup open (every layer draws itself: a new popup is a new
 /// arm here, which the compiler asks for).
 fn component_of(layer: &Layer) -> &dyn Component {
@@ -359,7 +256,7 @@ fn draw_panels(app: &App, frame: &Laid, buf: &mut Buffer, theme: &Theme) {
     let cx = Ctx { app, frame, theme };
     view::params::ParamsPanel.render(p.params, buf, &cx);
     view::scene::ScenePanel.render(p.scene, buf, &cx);
-    for (part, place) in parts_of(app) {
+    for (part, place) in view::shown(app).parts(app) {
         let at = match place {
             Place::Chart => p.chart,
             Place::Side => p.info,

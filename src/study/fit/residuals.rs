@@ -3,15 +3,6 @@
 //! through as the data were, and the positions with the impact's time, place and
 //! mark angle profiled out.
 
-// Not yet converted to `get`, iterators and typed errors (issue 35, open): its
-// indices come from its own loops over vectors of one length.
-#![allow(
-    clippy::indexing_slicing,
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::panic
-)]
-
 use super::problem::Evals;
 use super::uncertainty::{Label, solve};
 use crate::physics::scene::Scene;
@@ -30,11 +21,20 @@ pub(super) fn fit_points(
     if target == Target::Position {
         return (0..m.t().len()).collect();
     }
-    let sol = evals.solve(scene, m.t()[0].min(-1e-3));
+    let sol = evals.solve(scene, start(m));
     let near = NearImpacts::of(m.t(), &sol);
-    (0..m.t().len())
-        .filter(|&i| !near.straddles(m.t()[i]))
+    m.t()
+        .iter()
+        .enumerate()
+        .filter(|&(_, &t)| !near.straddles(t))
+        .map(|(i, _)| i)
         .collect()
+}
+
+/// Where the model's run starts for the series `m`: at its first point, and at the
+/// latest a millisecond before the impact (t = 0); an empty series has no first point.
+fn start(m: &Measured) -> f64 {
+    m.t().first().map_or(-1e-3, |t0| t0.min(-1e-3))
 }
 
 /// The frames a velocity fit leaves out: those within one frame interval (the
@@ -51,8 +51,9 @@ impl NearImpacts {
     pub fn of(t: &[f64], sol: &Solution) -> NearImpacts {
         NearImpacts {
             frame: t
-                .windows(2)
-                .map(|w| w[1] - w[0])
+                .iter()
+                .zip(t.iter().skip(1))
+                .map(|(a, b)| b - a)
                 .fold(f64::INFINITY, f64::min),
             impacts: sol
                 .events
@@ -102,7 +103,7 @@ pub(super) fn labelled_residuals(
     weighted: bool,
     evals: &mut Evals,
 ) -> (Vec<f64>, Vec<Label>) {
-    let sol = evals.solve(scene, m.t()[0].min(-1e-3));
+    let sol = evals.solve(scene, start(m));
     match target {
         Target::Velocity => velocity_residuals(&sol, m, idx, weighted),
         Target::Position => position_residuals(scene, &sol, m, idx, weighted),
@@ -110,12 +111,16 @@ pub(super) fn labelled_residuals(
 }
 
 /// One over a residual's uncertainty (1 unweighted or without one); `None` for a
-/// residual that is not a number or whose uncertainty is not usable (left out).
+/// residual that is not a number or whose uncertainty is not usable (left out; a
+/// column without point `i` has none usable).
 fn weight(d: f64, sigma: Option<&[f64]>, i: usize, weighted: bool) -> Option<f64> {
     if !d.is_finite() {
         return None;
     }
-    match sigma.filter(|_| weighted).map(|s| s[i]) {
+    match sigma
+        .filter(|_| weighted)
+        .map(|s| s.get(i).copied().unwrap_or(f64::NAN))
+    {
         None => Some(1.0),
         Some(s) if s > 0.0 && s.is_finite() => Some(1.0 / s),
         Some(_) => None,
@@ -179,7 +184,12 @@ fn velocity_rows(
 ) -> Vec<(f64, f64, Label)> {
     let mut rows = Vec::with_capacity(2 * idx.len());
     for &i in idx {
-        let t = m.t()[i] + shift;
+        // A point the series does not hold has nothing to compare with.
+        let (Some(&t), Some(&v_cm), Some(&v_t)) = (m.t().get(i), m.v_cm().get(i), m.v_t().get(i))
+        else {
+            continue;
+        };
+        let t = t + shift;
         let s = sol.at(t);
         let (a, du) = sol.segment_at(t).accel[0];
         let (v, u) = match &m.stencils() {
@@ -187,8 +197,8 @@ fn velocity_rows(
             None => (s.left.v, s.left.u),
         };
         let values = [
-            (v - m.v_cm()[i], a, m.v_cm_sigma(), false),
-            (u - m.v_t()[i], du, m.v_t_sigma(), true),
+            (v - v_cm, a, m.v_cm_sigma(), false),
+            (u - v_t, du, m.v_t_sigma(), true),
         ];
         for (d, slope, sigma, spin) in values {
             if let Some(w) = weight(d, sigma, i, weighted) {
@@ -244,12 +254,16 @@ fn position_residuals(
 ) -> (Vec<f64>, Vec<Label>) {
     let (rows, shift) = aligned(scene, sol, m, idx, weighted);
     rows.iter()
-        .map(|(row, label)| {
-            let d = row[0] + (0..shift.len()).map(|a| row[1 + a] * shift[a]).sum::<f64>();
-            (d, *label)
-        })
+        .map(|(row, label)| (shifted(row, &shift), *label))
         .filter(|(d, _)| d.is_finite())
         .unzip()
+}
+
+/// A [`position_rows`] row's residual with the linear shifts `shift` (δt, δx and, with
+/// a mark, δθ) applied: the residual plus each derivative times its shift.
+fn shifted(row: &[f64; 4], shift: &[f64]) -> f64 {
+    let [r, d @ ..] = row;
+    r + d.iter().zip(shift).map(|(d, s)| d * s).sum::<f64>()
 }
 
 /// Most Newton steps of the impact time's shift ([`aligned`]).
@@ -273,7 +287,7 @@ fn aligned(
     let square = |rows: &[([f64; 4], Label)], shift: &[f64]| -> f64 {
         rows.iter()
             .map(|(row, _)| {
-                let d = row[0] + (0..shift.len()).map(|a| row[1 + a] * shift[a]).sum::<f64>();
+                let d = shifted(row, shift);
                 d * d
             })
             .sum()
@@ -315,27 +329,32 @@ fn position_rows(
     };
     let theta0 = sol.angle_at(0.0)[0];
     // One segment lookup per frame: the state and the angle come from the same one.
+    // (frame, the left ball's state, its angle); a frame the series does not hold
+    // has no time and is left out. Every column has the times' length ([`Measured`]),
+    // so a frame with a time has its x and angle (NaN where not measured: such a row
+    // is left out below).
     let at: Vec<(usize, crate::physics::model::BallState, f64)> = idx
         .iter()
-        .map(|&i| {
-            let t = m.t()[i] + clock;
+        .filter_map(|&i| {
+            let t = m.t().get(i)? + clock;
             let (s, angle) = sol.ball_and_angle(0, t);
-            (i, s, angle)
+            Some((i, s, angle))
         })
         .collect();
+    let value = |column: &[f64], i: usize| column.get(i).copied().unwrap_or(f64::NAN);
     let turn = m
         .angle()
-        .map(|a| branch_offset(at.iter().map(|&(i, _, angle)| angle - theta0 - a[i])));
+        .map(|a| branch_offset(at.iter().map(|&(i, _, angle)| angle - theta0 - value(a, i))));
     let w = point_weights(m, weighted, radius);
     let times = |row: [f64; 4], w: f64| row.map(|v| v * w);
     let mut rows: Vec<([f64; 4], Label)> = Vec::with_capacity(2 * idx.len());
     for &(i, s, angle) in &at {
         rows.push((
-            times([s.x + scene.radius - x[i], s.v, -1.0, 0.0], w.0(i)),
+            times([s.x + scene.radius - value(x, i), s.v, -1.0, 0.0], w.0(i)),
             (i, false),
         ));
         if let (Some(a), Some(c)) = (&m.angle(), turn) {
-            let d = same_turn(angle - theta0 - a[i], c);
+            let d = same_turn(angle - theta0 - value(a, i), c);
             rows.push((times([radius * d, s.u, 0.0, -radius], w.1(i)), (i, true)));
         }
     }
@@ -402,15 +421,19 @@ fn profiled_shift(rows: &[([f64; 4], Label)], mark: bool) -> Vec<f64> {
     let mut atb = [0.0; 3];
     for (row, _) in rows {
         let [r, d @ ..] = *row;
-        for a in 0..3 {
-            atb[a] -= d[a] * r;
-            for b in 0..3 {
-                ata[a][b] += d[a] * d[b];
+        for ((atb_a, ata_a), da) in atb.iter_mut().zip(&mut ata).zip(d) {
+            *atb_a -= da * r;
+            for (x, db) in ata_a.iter_mut().zip(d) {
+                *x += da * db;
             }
         }
     }
-    let ata = ata.iter().take(k).map(|row| row[..k].to_vec()).collect();
-    solve(ata, atb[..k].to_vec()).unwrap_or_else(|| vec![0.0; k])
+    let ata = ata
+        .iter()
+        .take(k)
+        .map(|row| row.iter().take(k).copied().collect())
+        .collect();
+    solve(ata, atb.iter().take(k).copied().collect()).unwrap_or_else(|| vec![0.0; k])
 }
 
 /// A position track's centre where the model's left ball would be (x − R, m) at each
@@ -421,10 +444,19 @@ fn profiled_shift(rows: &[([f64; 4], Label)], mark: bool) -> Vec<f64> {
 /// without positions.
 pub fn aligned_track(scene: &Scene, sol: &Solution, m: &Measured) -> Option<Vec<f64>> {
     m.x()?;
-    let idx: Vec<usize> = (0..m.t().len())
-        .filter(|&i| (sol.t_start..=sol.t_end).contains(&m.t()[i]))
+    let idx: Vec<usize> = m
+        .t()
+        .iter()
+        .enumerate()
+        .filter(|(_, t)| (sol.t_start..=sol.t_end).contains(*t))
+        .map(|(i, _)| i)
         .collect();
     let (rows, shift) = aligned(scene, sol, m, &idx, true);
+    // The time and place shifts, zero where they could not be solved (as there).
+    let (dt, dx) = match shift.as_slice() {
+        [dt, dx, ..] => (*dt, *dx),
+        _ => (0.0, 0.0),
+    };
     let mut out = vec![f64::NAN; m.t().len()];
     // The model's x at each frame minus the frame's residual (each row holds its
     // weight w as ∂/∂δx = −w): model minus the aligned track is the residual.
@@ -432,7 +464,7 @@ pub fn aligned_track(scene: &Scene, sol: &Solution, m: &Measured) -> Option<Vec<
         let (Some(o), Some(&t), false) = (out.get_mut(*i), m.t().get(*i), *spin) else {
             continue;
         };
-        let d = row[0] + row[1] * shift[0] + row[2] * shift[1];
+        let d = row[0] + row[1] * dt + row[2] * dx;
         *o = sol.at(t).left.x + d / row[2];
     }
     Some(out)
@@ -445,13 +477,18 @@ pub fn aligned_track(scene: &Scene, sol: &Solution, m: &Measured) -> Option<Vec<
 /// match the rounded corner. Within one segment the positions are quadratic in t and
 /// the stencil gives the exact slope back: only windows over a boundary are summed.
 fn as_derived(sol: &Solution, st: &Stencils, i: usize, exact: (f64, f64)) -> (f64, f64) {
-    let one_segment = |times: &[f64], s: &Stencil| {
-        std::ptr::eq(sol.segment_at(times[s.lo]), sol.segment_at(times[s.hi]))
+    // A stencil whose ends lie past the frames has no times there: the model's exact
+    // value stands (`weights` gives frames without a time no weight either).
+    let one_segment = |times: &[f64], s: &Stencil| match (times.get(s.lo), times.get(s.hi)) {
+        (Some(&lo), Some(&hi)) => std::ptr::eq(sol.segment_at(lo), sol.segment_at(hi)),
+        _ => true,
     };
+    // `weights` yields only frames with a time.
+    let at = |times: &[f64], k: usize| times.get(k).copied().unwrap_or(f64::NAN);
     let v = match st.v_cm.get(i) {
         Some(Some(s)) if !one_segment(&st.centre_times, s) => s
             .weights(&st.centre_times)
-            .map(|(k, w)| w * sol.at(st.centre_times[k]).left.x)
+            .map(|(k, w)| w * sol.at(at(&st.centre_times, k)).left.x)
             .sum(),
         _ => exact.0,
     };
@@ -460,7 +497,7 @@ fn as_derived(sol: &Solution, st: &Stencils, i: usize, exact: (f64, f64)) -> (f6
         Some(Some(s)) if !one_segment(&st.mark_times, s) => {
             r * s
                 .weights(&st.mark_times)
-                .map(|(k, w)| w * sol.angle_at(st.mark_times[k])[0])
+                .map(|(k, w)| w * sol.angle_at(at(&st.mark_times, k))[0])
                 .sum::<f64>()
         }
         _ => exact.1,

@@ -2,15 +2,6 @@
 //! from the normal matrix, and why a value gets none ([`NotIdentified`]); with the
 //! small dense solves the fit needs.
 
-// Not yet converted to `get`, iterators and typed errors (issue 35, open): its
-// indices come from its own loops over vectors of one length.
-#![allow(
-    clippy::indexing_slicing,
-    clippy::unwrap_used,
-    clippy::expect_used,
-    clippy::panic
-)]
-
 use serde::Serialize;
 
 use super::problem::Free;
@@ -79,22 +70,31 @@ pub(super) fn shared_noise(j: &[Vec<f64>], labels: &[Label], st: &Stencils) -> V
     let mut g = vec![vec![0.0; n]; 2 * centre + 2 * mark];
     let mut meat = vec![vec![0.0; n]; n];
     let mut e: Vec<(usize, f64)> = Vec::new();
+    let mut column = vec![0.0; n];
     for (r, &(i, spin)) in labels.iter().enumerate() {
+        // Residual r's column of `j`; a row too short to hold it is no Jacobian of
+        // these residuals, and its entry is not a number (the ± then cannot be
+        // computed), never a zero that would read as "does not depend on it".
+        for (c, row) in column.iter_mut().zip(j) {
+            *c = row.get(r).copied().unwrap_or(f64::NAN);
+        }
         noise_vector(st, i, spin, &mut e);
         let norm = e.iter().map(|(_, x)| x * x).sum::<f64>().sqrt();
         if e.is_empty() || !(norm > 0.0 && norm.is_finite()) {
             // A point of its own: its noise shared with none.
-            add_outer(&mut meat, |a| j[a][r]);
+            add_outer(&mut meat, &column);
             continue;
         }
         for &(k, x) in &e {
-            for a in 0..n {
-                g[k][a] += x / norm * j[a][r];
+            // `noise_vector` numbers the coordinates below `g`'s length.
+            let Some(gk) = g.get_mut(k) else { continue };
+            for (ga, ja) in gk.iter_mut().zip(&column) {
+                *ga += x / norm * ja;
             }
         }
     }
     for row in &g {
-        add_outer(&mut meat, |a| row[a]);
+        add_outer(&mut meat, row);
     }
     meat
 }
@@ -130,13 +130,29 @@ pub(super) fn noise_vector(st: &Stencils, i: usize, spin: bool, e: &mut Vec<(usi
     }
 }
 
-/// `m += v vᵀ`.
-fn add_outer(m: &mut [Vec<f64>], v: impl Fn(usize) -> f64) {
-    for (a, row) in m.iter_mut().enumerate() {
-        for (b, x) in row.iter_mut().enumerate() {
-            *x += v(a) * v(b);
+/// `m += v vᵀ` (`m` square, of `v`'s length).
+fn add_outer(m: &mut [Vec<f64>], v: &[f64]) {
+    for (row, va) in m.iter_mut().zip(v) {
+        for (x, vb) in row.iter_mut().zip(v) {
+            *x += va * vb;
         }
     }
+}
+
+/// Entry (a, b) of a matrix held as rows; not a number outside it, so that a
+/// matrix of the wrong size gives "cannot be computed", never a panic.
+fn entry(m: &[Vec<f64>], a: usize, b: usize) -> f64 {
+    m.get(a)
+        .and_then(|row| row.get(b))
+        .copied()
+        .unwrap_or(f64::NAN)
+}
+
+/// The square matrix of `m`'s rows and columns `idx` ([`entry`]).
+fn sub_matrix(m: &[Vec<f64>], idx: &[usize]) -> Vec<Vec<f64>> {
+    idx.iter()
+        .map(|&a| idx.iter().map(|&b| entry(m, a, b)).collect())
+        .collect()
 }
 
 /// Standard errors from the normal matrix `jtj` (residual variance `s2`) of the free
@@ -155,28 +171,24 @@ pub(super) fn uncertainties(
 ) -> (Vec<Option<f64>>, Vec<NotIdentified>) {
     let mut out = vec![None; free.len()];
     let (active, mut why) = determinable(jtj, free, p);
-    let m = active.len();
-    let unseen = unseen_directions(jtj, &active, free, &mut why);
-    let kept: Vec<usize> = (0..m).filter(|&a| !unseen[a]).collect();
-    let sub: Vec<Vec<f64>> = kept
+    let unseen = unseen_directions(jtj, &active, &mut why);
+    // The values kept: (index into `free`, the value).
+    let kept: Vec<(usize, Free)> = active
         .iter()
-        .map(|&a| kept.iter().map(|&b| jtj[active[a]][active[b]]).collect())
+        .zip(&unseen)
+        .filter(|(_, unseen)| !**unseen)
+        .map(|(&kept, _)| kept)
         .collect();
+    let rows: Vec<usize> = kept.iter().map(|&(i, _)| i).collect();
+    let sub = sub_matrix(jtj, &rows);
     let cov = inverse(&sub).map(|inv| match shared {
         None => inv,
-        Some(c) => {
-            let meat: Vec<Vec<f64>> = kept
-                .iter()
-                .map(|&a| kept.iter().map(|&b| c[active[a]][active[b]]).collect())
-                .collect();
-            product(&product(&inv, &meat), &inv)
-        }
+        Some(c) => product(&product(&inv, &sub_matrix(c, &rows)), &inv),
     });
     // Every value without a ± has its reason: none reads as fitted without one.
-    for (x, &a) in kept.iter().enumerate() {
-        let f = free[active[a]];
+    for (x, &(i, f)) in kept.iter().enumerate() {
         let (lo, hi) = bounds(f);
-        match cov.as_ref().map(|cov| (s2 * cov[x][x]).sqrt()) {
+        match cov.as_ref().map(|cov| (s2 * entry(cov, x, x)).sqrt()) {
             // A ± wider than the whole physical range says nothing of the value.
             Some(se) if se.is_finite() && 2.0 * se >= hi - lo => why.push(NotIdentified {
                 parameter: f.name(),
@@ -187,9 +199,13 @@ pub(super) fn uncertainties(
                 ),
                 on_edge_of: None,
             }),
-            Some(se) if se.is_finite() => out[active[a]] = Some(se),
+            Some(se) if se.is_finite() => {
+                if let Some(o) = out.get_mut(i) {
+                    *o = Some(se);
+                }
+            }
             _ => why.push(NotIdentified {
-                parameter: free[active[a]].name(),
+                parameter: f.name(),
                 reason: "its uncertainty cannot be computed from these data".into(),
                 on_edge_of: None,
             }),
@@ -198,29 +214,35 @@ pub(super) fn uncertainties(
     (out, why)
 }
 
-/// The free values the fit can give a ± (indices into `free`), and why each other one
-/// cannot: on the edge of its physical range, or the fitted points not depending on it.
-fn determinable(jtj: &[Vec<f64>], free: &[Free], p: &[f64]) -> (Vec<usize>, Vec<NotIdentified>) {
+/// The free values the fit can give a ± (each with its index into `free`), and why
+/// each other one cannot: on the edge of its physical range, or the fitted points not
+/// depending on it.
+fn determinable(
+    jtj: &[Vec<f64>],
+    free: &[Free],
+    p: &[f64],
+) -> (Vec<(usize, Free)>, Vec<NotIdentified>) {
     let mut why = Vec::new();
     let mut active = Vec::new();
-    for i in 0..free.len() {
-        if on_edge(free[i], p[i]) {
+    for (i, (&f, &v)) in free.iter().zip(p).enumerate() {
+        let diagonal = entry(jtj, i, i);
+        if on_edge(f, v) {
             why.push(NotIdentified {
-                parameter: free[i].name(),
+                parameter: f.name(),
                 reason: format!(
                     "the best fit lies on the edge of its physical range ({}), so the data do not determine it (fix it and fit the others)",
-                    range_text(free[i])
+                    range_text(f)
                 ),
-                on_edge_of: Some(range_text(free[i])),
+                on_edge_of: Some(range_text(f)),
             });
-        } else if !(jtj[i][i] > 0.0 && jtj[i][i].is_finite()) {
+        } else if !(diagonal > 0.0 && diagonal.is_finite()) {
             why.push(NotIdentified {
-                parameter: free[i].name(),
+                parameter: f.name(),
                 reason: "the fitted points do not depend on it".into(),
                 on_edge_of: None,
             });
         } else {
-            active.push(i);
+            active.push((i, f));
         }
     }
     (active, why)
@@ -232,34 +254,42 @@ fn determinable(jtj: &[Vec<f64>], free: &[Free], p: &[f64]) -> (Vec<usize>, Vec<
 /// identifiable.
 fn unseen_directions(
     jtj: &[Vec<f64>],
-    active: &[usize],
-    free: &[Free],
+    active: &[(usize, Free)],
     why: &mut Vec<NotIdentified>,
 ) -> Vec<bool> {
     let m = active.len();
-    let d: Vec<f64> = active.iter().map(|&i| jtj[i][i].sqrt()).collect();
-    let scaled = nalgebra::DMatrix::from_fn(m, m, |a, b| jtj[active[a]][active[b]] / (d[a] * d[b]));
+    let rows: Vec<usize> = active.iter().map(|&(i, _)| i).collect();
+    let sub = sub_matrix(jtj, &rows);
+    let d: Vec<f64> = (0..m).map(|a| entry(&sub, a, a).sqrt()).collect();
+    let scale = |a: usize| d.get(a).copied().unwrap_or(f64::NAN);
+    let scaled = nalgebra::DMatrix::from_fn(m, m, |a, b| entry(&sub, a, b) / (scale(a) * scale(b)));
     let mut unseen = vec![false; m];
     if m > 0 {
         let eig = scaled.symmetric_eigen();
-        for (k, &lambda) in eig.eigenvalues.iter().enumerate() {
+        for (&lambda, v) in eig.eigenvalues.iter().zip(eig.eigenvectors.column_iter()) {
             if lambda > 1e-9 {
                 continue;
             }
-            let v = eig.eigenvectors.column(k);
-            let involved: Vec<usize> = (0..m).filter(|&a| v[a].abs() > 0.2).collect();
-            for &a in &involved {
-                if unseen[a] {
-                    continue;
+            // (position in `active`, the value) of each value with a large share.
+            let involved: Vec<(usize, Free)> = v
+                .iter()
+                .zip(active)
+                .enumerate()
+                .filter(|(_, (x, _))| x.abs() > 0.2)
+                .map(|(a, (_, &(_, f)))| (a, f))
+                .collect();
+            for &(a, f) in &involved {
+                match unseen.get_mut(a) {
+                    Some(seen) if !*seen => *seen = true,
+                    _ => continue,
                 }
-                unseen[a] = true;
                 let others: Vec<&str> = involved
                     .iter()
-                    .filter(|&&b| b != a)
-                    .map(|&b| free[active[b]].name())
+                    .filter(|&&(b, _)| b != a)
+                    .map(|&(_, g)| g.name())
                     .collect();
                 why.push(NotIdentified {
-                    parameter: free[active[a]].name(),
+                    parameter: f.name(),
                     reason: if others.is_empty() {
                         "not identifiable from these data".into()
                     } else {
@@ -291,10 +321,10 @@ pub(super) fn effective_points(r: &[f64], labels: &[Label]) -> f64 {
     }
     // Pairs of the same channel on neighbouring frames (a missing frame breaks one).
     let mut next = 0.0;
-    for (k, ((i, c), x)) in labels.iter().zip(r).enumerate() {
-        let partner = labels[k + 1..]
-            .iter()
-            .zip(&r[k + 1..])
+    let mut points = labels.iter().zip(r);
+    while let Some(((i, c), x)) = points.next() {
+        let partner = points
+            .clone()
             .take(2)
             .find(|((j, d), _)| *j == i + 1 && d == c);
         if let Some((_, y)) = partner {
@@ -308,7 +338,7 @@ pub(super) fn effective_points(r: &[f64], labels: &[Label]) -> f64 {
 /// Solves the small system `a x = b` (LU with partial pivoting, nalgebra).
 pub(super) fn solve(a: Vec<Vec<f64>>, b: Vec<f64>) -> Option<Vec<f64>> {
     let n = b.len();
-    let m = nalgebra::DMatrix::from_fn(n, n, |i, j| a[i][j]);
+    let m = nalgebra::DMatrix::from_fn(n, n, |i, j| entry(&a, i, j));
     let x = m.lu().solve(&nalgebra::DVector::from_vec(b))?;
     x.iter()
         .all(|v| v.is_finite())
@@ -319,7 +349,12 @@ fn product(a: &[Vec<f64>], b: &[Vec<f64>]) -> Vec<Vec<f64>> {
     a.iter()
         .map(|row| {
             (0..b.first().map_or(0, Vec::len))
-                .map(|j| row.iter().zip(b).map(|(x, r)| x * r[j]).sum())
+                .map(|j| {
+                    row.iter()
+                        .zip(b)
+                        .map(|(x, r)| x * r.get(j).copied().unwrap_or(f64::NAN))
+                        .sum()
+                })
                 .collect()
         })
         .collect()
@@ -327,10 +362,10 @@ fn product(a: &[Vec<f64>], b: &[Vec<f64>]) -> Vec<Vec<f64>> {
 
 fn inverse(a: &[Vec<f64>]) -> Option<Vec<Vec<f64>>> {
     let n = a.len();
-    let inv = nalgebra::DMatrix::from_fn(n, n, |i, j| a[i][j]).try_inverse()?;
+    let inv = nalgebra::DMatrix::from_fn(n, n, |i, j| entry(a, i, j)).try_inverse()?;
     Some(
-        (0..n)
-            .map(|i| (0..n).map(|j| inv[(i, j)]).collect())
+        inv.row_iter()
+            .map(|row| row.iter().copied().collect())
             .collect(),
     )
 }
@@ -362,19 +397,27 @@ pub(super) fn with_scale(
 ) -> Option<ScalePart> {
     let at = |f: Free| free.iter().position(|x| *x == f);
     let mu = at(Free::Mu)?;
-    let mu_se_fit = ses[mu].filter(|_| rel > 0.0 && rel.is_finite())?;
-    let mu_se_scale = p[mu].abs() * rel;
-    ses[mu] = Some(mu_se_fit.hypot(mu_se_scale));
-    let v0 = at(Free::V0).and_then(|i| Some((i, ses[i]?)));
-    if let Some((i, fit)) = v0 {
-        ses[i] = Some(fit.hypot(p[i].abs() * rel));
+    let mu_se_fit = ses
+        .get(mu)
+        .copied()
+        .flatten()
+        .filter(|_| rel > 0.0 && rel.is_finite())?;
+    let mu_se_scale = p.get(mu)?.abs() * rel;
+    let mu_se = ses.get_mut(mu)?;
+    *mu_se = Some(mu_se_fit.hypot(mu_se_scale));
+    // v0's index, its fit's standard error and its scale's.
+    let v0 = at(Free::V0).and_then(|i| Some((i, (*ses.get(i)?)?, p.get(i)?.abs() * rel)));
+    if let Some((i, fit, scale)) = v0
+        && let Some(se) = ses.get_mut(i)
+    {
+        *se = Some(fit.hypot(scale));
     }
     Some(ScalePart {
         rel_se: rel,
         mu_se_fit,
         mu_se_scale,
-        v0_se_fit: v0.map(|(_, fit)| fit),
-        v0_se_scale: v0.map(|(i, _)| p[i].abs() * rel),
+        v0_se_fit: v0.map(|(_, fit, _)| fit),
+        v0_se_scale: v0.map(|(_, _, scale)| scale),
     })
 }
 
@@ -467,6 +510,33 @@ mod tests {
         // Away from the bounds both are fitted values.
         let (se, why) = uncertainties(&jtj, None, 1.0, &free, &[9.99, 0.001]);
         assert!(se.iter().all(Option::is_some) && why.is_empty(), "{why:?}");
+    }
+
+    /// No matrix the fit makes is smaller than its values, but the data path never
+    /// panics (issue 35): an entry outside the matrix is not a number, so a value
+    /// without one gets a reason, and the others their ± as before.
+    #[test]
+    fn a_matrix_too_small_for_its_values_gives_reasons_not_a_panic() {
+        let free = [Free::Mu, Free::V0];
+        let (se, why) = uncertainties(&[vec![4.0]], None, 1.0, &free, &[0.2, 0.5]);
+        // μ alone: 1/sqrt(4).
+        assert!((se[0].unwrap() - 0.5).abs() < 1e-12, "{se:?}");
+        assert_eq!(se[1], None);
+        assert_eq!(why.len(), 1, "{why:?}");
+        assert_eq!(why[0].parameter, "v0");
+        // A Jacobian row shorter than the residuals: the shared noise is not a
+        // number, and the ± "cannot be computed", never a zero read as none.
+        let st = Stencils {
+            centre_times: vec![0.0, 1.0],
+            centre_sign: 1.0,
+            ..Stencils::default()
+        };
+        let labels = [(0, false), (1, false)];
+        let meat = shared_noise(&[vec![1.0]], &labels, &st);
+        assert!(meat[0][0].is_nan(), "{meat:?}");
+        let (se, why) = uncertainties(&[vec![4.0]], Some(&meat), 1.0, &[Free::Mu], &[0.2]);
+        assert_eq!(se[0], None);
+        assert!(why[0].reason.contains("cannot be computed"), "{why:?}");
     }
 
     #[test]

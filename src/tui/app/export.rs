@@ -8,47 +8,11 @@ use crate::lab::jobs::State;
 use crate::settings::units::{Dimension, show};
 use crate::study::figures;
 
-use super::{App, ChartBall, Export, NO_FILES, Status, View};
+pub use crate::tui::layer::main::Figure;
+use crate::tui::layer::main::{FigureCx, NoFigure};
+
+use super::{App, ChartBall, Export, NO_FILES, Status};
 use crate::tui::vocabulary::WorkAxis;
-
-/// The figure `W` writes: the one on screen.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Figure {
-    Velocities,
-    Positions,
-    /// The regime over b and e (the Map view).
-    Map,
-    /// Error against work of every method (the Methods view).
-    Methods,
-    /// The measured series, the fitted model and the residuals (the Fit view).
-    Fit,
-}
-
-impl Figure {
-    /// The file name's part after the preset's name.
-    pub fn name(self) -> &'static str {
-        match self {
-            Figure::Velocities => "chart",
-            Figure::Positions => "positions",
-            Figure::Map => "map",
-            Figure::Methods => "methods",
-            Figure::Fit => "fit",
-        }
-    }
-
-    /// What the file will hold, for the prompt.
-    pub fn describe(self) -> &'static str {
-        match self {
-            Figure::Velocities => "the velocity chart on screen",
-            Figure::Positions => "the position chart on screen",
-            Figure::Map => "the regime map over b and e (the Map view)",
-            Figure::Methods => {
-                "error against work of every method, as on screen (the Methods view)"
-            }
-            Figure::Fit => "the data, the fitted model and the residuals (the Fit view)",
-        }
-    }
-}
 
 /// Grid of the exported regime map: finer than a terminal's cells.
 const MAP_GRID: (usize, usize) = (160, 80);
@@ -79,6 +43,16 @@ pub enum NoExport {
     NoFit(crate::study::fit::FitError),
     #[error("the fit is still being computed: export when it is shown")]
     FitRunning,
+}
+
+impl From<NoFigure> for NoExport {
+    fn from(why: NoFigure) -> NoExport {
+        match why {
+            NoFigure::Forces => NoExport::Forces,
+            NoFigure::Energy => NoExport::Energy,
+            NoFigure::Hidden(what) => NoExport::Hidden(what),
+        }
+    }
 }
 
 /// Why an export job wrote nothing.
@@ -112,33 +86,14 @@ impl App {
     }
 
     /// The figure `W` writes from the view on screen, or why there is none (a view
-    /// the screen withholds while the outcome is hidden is not written either).
+    /// the screen withholds while the outcome is hidden is not written either): the
+    /// view shown answers.
     pub fn figure_on_screen(&self) -> Result<Figure, NoExport> {
-        let hide = self.hidden();
-        match self.view() {
-            View::Map if hide.pending() && !hide.b() => Err(NoExport::Hidden("the regime map")),
-            View::Map => Ok(Figure::Map),
-            View::Methods if hide.derived() => Err(NoExport::Hidden("the Methods diagram")),
-            View::Methods => Ok(Figure::Methods),
-            View::Forces => Err(NoExport::Forces),
-            View::Fit if self.lab.measured().is_some() && hide.derived() => {
-                Err(NoExport::Hidden("the fit"))
-            }
-            View::Fit if self.lab.measured().is_some() => Ok(Figure::Fit),
-            // The Fit view without data shows the charts.
-            View::Charts | View::Fit => self.chart_figure(),
-        }
-    }
-
-    /// The figure of the chart on screen.
-    fn chart_figure(&self) -> Result<Figure, NoExport> {
-        if self.charts().energy() {
-            Err(NoExport::Energy)
-        } else if self.charts().positions() {
-            Ok(Figure::Positions)
-        } else {
-            Ok(Figure::Velocities)
-        }
+        let cx = FigureCx {
+            hide: self.hidden(),
+            measured: self.lab.measured().is_some(),
+        };
+        Ok(self.layers().main().figure(&cx)?)
     }
 
     /// Writes the run (CSV) or the figure on screen (SVG) to `name` (in `export_dir`

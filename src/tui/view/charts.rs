@@ -9,7 +9,9 @@ use ratatui::layout::Rect;
 use ratatui::style::Style;
 use ratatui::widgets::Widget;
 
+use super::info;
 use super::panel::block;
+use super::withheld::Withheld;
 use crate::lab::jobs::State;
 use crate::lab::{MeasuredPoints, value_range};
 use crate::physics::model::BallState;
@@ -17,10 +19,11 @@ use crate::physics::solution::{EnergySplit, EventKind, Snapshot, Who};
 use crate::settings::units::Dimension;
 use crate::tui::app::{App, ChartBall};
 use crate::tui::chart::Chart;
-use crate::tui::component::{Component, Ctx};
+use crate::tui::component::{Component, Ctx, MainView, Place, Prepared};
 use crate::tui::plot::{Draw, Plot, PlotLine, VLine, nice_ticks};
 use crate::tui::theme::Theme;
 use crate::tui::view_cache::ViewCache;
+use crate::tui::vocabulary::View;
 use marks::{line_fit_marks, measured_velocities};
 
 mod marks;
@@ -562,6 +565,45 @@ impl Component for ChartPanel {
     fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
         if let Some(chart) = &cx.frame.chart {
             render(chart, area, buf, cx.theme);
+        }
+    }
+}
+
+/// The energy chart while the outcome is hidden: before the impact its rotational
+/// over translational energy is 2/(5k²) = 1/D, the answer (rot above trans: they
+/// come back).
+pub(super) const ENERGY_WITHHELD: Withheld = Withheld {
+    title: "Energy",
+    what: "the energy chart",
+};
+
+/// The chart of the views that show one, built on `area` ([`build`]).
+pub(super) fn prepared(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> Prepared {
+    let (chart, marks_thinned) = build(app, cache, area, theme);
+    Prepared {
+        chart: Some(chart),
+        regimes: None,
+        marks_thinned,
+    }
+}
+
+/// The Charts view: the chart and the Why panel beside it.
+pub struct ChartsView;
+
+impl MainView for ChartsView {
+    fn view(&self) -> View {
+        View::Charts
+    }
+
+    fn prepare(&self, app: &App, cache: &mut ViewCache, chart: Rect, theme: &Theme) -> Prepared {
+        prepared(app, cache, chart, theme)
+    }
+
+    fn parts(&self, app: &App) -> Vec<(&'static dyn Component, Place)> {
+        if app.hidden().derived() && app.charts().energy() {
+            vec![(&ENERGY_WITHHELD, Place::Chart), (&info::Why, Place::Side)]
+        } else {
+            vec![(&ChartPanel, Place::Chart), (&info::Why, Place::Side)]
         }
     }
 }

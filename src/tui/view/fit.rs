@@ -6,14 +6,18 @@ use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::Widget;
 
+use super::charts::{ChartPanel, ENERGY_WITHHELD};
 use super::models::symbol;
 use super::panel::{Ranked, block, by_priority, draw_lines};
+use super::withheld::Withheld;
 use crate::lab::jobs::State;
 use crate::settings::units::{Dimension, show_small, with_uncertainty};
 use crate::study::fit::{self, ModelFit};
 use crate::tui::app::App;
-use crate::tui::component::{Component, Ctx};
+use crate::tui::component::{Component, Ctx, MainView, Place, Prepared};
 use crate::tui::theme::Theme;
+use crate::tui::view_cache::ViewCache;
+use crate::tui::vocabulary::View;
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     // The long title where it fits on the border whole, else the short one.
@@ -504,5 +508,37 @@ pub struct FitPanel;
 impl Component for FitPanel {
     fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
         render(cx.app, area, buf, cx.theme);
+    }
+}
+
+/// The Fit panel while the outcome is hidden: it names the predicted and observed
+/// regimes.
+const FIT_WITHHELD: Withheld = Withheld {
+    title: "Fit",
+    what: "the fit",
+};
+
+/// The Fit view: the charts with the fit lines, and the Fit panel beside them.
+pub struct FitView;
+
+impl MainView for FitView {
+    fn view(&self) -> View {
+        View::Fit
+    }
+
+    fn prepare(&self, app: &App, cache: &mut ViewCache, chart: Rect, theme: &Theme) -> Prepared {
+        super::charts::prepared(app, cache, chart, theme)
+    }
+
+    fn parts(&self, app: &App) -> Vec<(&'static dyn Component, Place)> {
+        let hide = app.hidden();
+        match (hide.derived(), app.charts().energy()) {
+            (true, true) => vec![
+                (&ENERGY_WITHHELD, Place::Chart),
+                (&FIT_WITHHELD, Place::Side),
+            ],
+            (true, false) => vec![(&ChartPanel, Place::Chart), (&FIT_WITHHELD, Place::Side)],
+            (false, _) => vec![(&ChartPanel, Place::Chart), (&FitPanel, Place::Side)],
+        }
     }
 }

@@ -5,13 +5,17 @@
 use ratatui::buffer::Buffer;
 use ratatui::layout::{Constraint, Layout, Rect};
 
+use super::info;
 use super::panel::block;
+use super::withheld::Withheld;
 use crate::physics::closed_form;
 use crate::physics::derived::Regime;
 use crate::tui::app::App;
-use crate::tui::component::{Component, Ctx};
+use crate::tui::component::{Component, Ctx, MainView, Place, Prepared};
 use crate::tui::plot::{Draw, Plot, PlotLine, VLine};
 use crate::tui::theme::Theme;
+use crate::tui::view_cache::ViewCache;
+use crate::tui::vocabulary::View;
 
 /// The regime map's half of `area` and the paper figure's.
 fn halves(area: Rect) -> [Rect; 2] {
@@ -199,5 +203,47 @@ impl Component for Map {
     fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
         let grid = cx.frame.regimes.as_deref().unwrap_or(&[]);
         render(cx.app, grid, area, buf, cx.theme);
+    }
+}
+
+/// The Map view's panels while a prediction is pending (b shown: its place on the
+/// map is the answer).
+const MAP_WITHHELD: [Withheld; 2] = [
+    Withheld {
+        title: "Regime map",
+        what: "the regime map",
+    },
+    Withheld {
+        title: "Why",
+        what: "why",
+    },
+];
+
+/// The Map view: the regime map and the paper's figure, and the Why panel.
+pub struct MapView;
+
+impl MainView for MapView {
+    fn view(&self) -> View {
+        View::Map
+    }
+
+    /// The regime grid at this size, from the screen's cache.
+    fn prepare(&self, app: &App, cache: &mut ViewCache, chart: Rect, _: &Theme) -> Prepared {
+        Prepared {
+            regimes: grid_size(chart).map(|(cols, rows)| cache.regime_grid(&app.lab, cols, rows)),
+            ..Prepared::default()
+        }
+    }
+
+    fn parts(&self, app: &App) -> Vec<(&'static dyn Component, Place)> {
+        let hide = app.hidden();
+        if hide.pending() && !hide.b() {
+            vec![
+                (&MAP_WITHHELD[0], Place::Chart),
+                (&MAP_WITHHELD[1], Place::Side),
+            ]
+        } else {
+            vec![(&Map, Place::Chart), (&info::Why, Place::Side)]
+        }
     }
 }

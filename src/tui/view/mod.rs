@@ -27,3 +27,25 @@ pub mod video_image;
 pub mod withheld;
 
 pub use crate::tui::layout::{MIN_SIZE, Panels, layout};
+
+use crate::tui::app::App;
+use crate::tui::component::MainView;
+
+/// The main screen's views as drawn, registered: a new view is its line here.
+const VIEWS: [&dyn MainView; 5] = [
+    &charts::ChartsView,
+    &forces::ForcesView,
+    &methods::MethodsView,
+    &map::MapView,
+    &fit::FitView,
+];
+
+/// The view shown, as drawn (the charts for a view not registered).
+pub fn shown(app: &App) -> &'static dyn MainView {
+    let view = app.view();
+    VIEWS
+        .iter()
+        .copied()
+        .find(|v| v.view() == view)
+        .unwrap_or(&charts::ChartsView)
+}

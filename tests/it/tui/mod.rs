@@ -18,6 +18,7 @@ mod screens;
 mod settings_layers;
 mod small_screens;
 mod tables_and_mouse;
+mod view_answers;
 
 use groovelab::cli::DataArgs;
 use groovelab::lab::jobs::State;

@@ -5,6 +5,7 @@
 //! the charts too; elsewhere the zoom says whose it is); the chart is built from this
 //! state and the snapshot.
 
+use super::figure::{Figure, FigureCx, NoFigure};
 use super::pane::{Pane, PaneCx};
 use super::zoom::{self, TimeZoom};
 use crate::lab::jobs::{Job, State};
@@ -54,6 +55,17 @@ impl ChartState {
     /// The time zoom.
     pub fn zoom(&self) -> TimeZoom {
         self.zoom
+    }
+
+    /// The figure of the chart shown (the energy chart has none yet).
+    pub fn figure(&self) -> Result<Figure, NoFigure> {
+        if self.energy {
+            Err(NoFigure::Energy)
+        } else if self.positions {
+            Ok(Figure::Positions)
+        } else {
+            Ok(Figure::Velocities)
+        }
     }
 
     /// What `action` does to the charts: handled (and what the status line says), or
@@ -223,6 +235,10 @@ pub struct Charts {
 impl Pane for Charts {
     fn view(&self) -> Option<View> {
         Some(View::Charts)
+    }
+
+    fn figure(&self, _: &FigureCx) -> Option<Result<Figure, NoFigure>> {
+        Some(self.state.figure())
     }
 
     fn handle(&mut self, input: &Input, cx: &mut PaneCx<'_>) -> Handled {

@@ -2,6 +2,7 @@
 //! job): the line fit's window, the fits of the measured series (asked while the view
 //! is shown), the window's keys, `a` (the fit into the scene) and `M` (its models).
 
+use super::figure::{Figure, FigureCx, NoFigure};
 use super::pane::{Pane, PaneCx};
 use crate::lab::jobs::{Job, State};
 use crate::lab::{FitWindow, FitWindowError, Generation, Lab, analyses};
@@ -136,6 +137,16 @@ enum NoFitToApply {
 impl Pane for FitRuns {
     fn view(&self) -> Option<View> {
         Some(View::Fit)
+    }
+
+    /// The fit's figure with data (withheld with the Fit panel: it names the regimes);
+    /// without data the view shows the charts.
+    fn figure(&self, cx: &FigureCx) -> Option<Result<Figure, NoFigure>> {
+        cx.measured.then_some(if cx.hide.derived() {
+            Err(NoFigure::Hidden("the fit"))
+        } else {
+            Ok(Figure::Fit)
+        })
     }
 
     fn handle(&mut self, input: &Input, cx: &mut PaneCx<'_>) -> Handled {

@@ -1,6 +1,7 @@
 //! The Forces view's own state and keys (issue 26): which ball its front view and
 //! chain show. Its ball key is its own while it is shown (the charts' otherwise).
 
+use super::figure::{Figure, FigureCx, NoFigure};
 use super::pane::{Pane, PaneCx};
 use crate::tui::interact::{Input, Interactive};
 use crate::tui::vocabulary::{Action, Handled, View};
@@ -41,6 +42,10 @@ impl Interactive<()> for ForcesState {
 impl Pane for ForcesState {
     fn view(&self) -> Option<View> {
         Some(View::Forces)
+    }
+
+    fn figure(&self, _: &FigureCx) -> Option<Result<Figure, NoFigure>> {
+        Some(Err(NoFigure::Forces))
     }
 
     fn handle(&mut self, input: &Input, cx: &mut PaneCx<'_>) -> Handled {

@@ -2,6 +2,7 @@
 //! shows, and its rows (every method's run, timed or not), asked while it is shown.
 //! Its key works from every view (the axis is kept for when the view opens).
 
+use super::figure::{Figure, FigureCx, NoFigure};
 use super::pane::{Pane, PaneCx};
 use crate::lab::jobs::{Job, State};
 use crate::lab::{Generation, Lab, analyses};
@@ -84,6 +85,15 @@ pub struct Methods {
 impl Pane for Methods {
     fn view(&self) -> Option<View> {
         Some(View::Methods)
+    }
+
+    /// The diagram, withheld while the outcome is hidden (its runs name it).
+    fn figure(&self, cx: &FigureCx) -> Option<Result<Figure, NoFigure>> {
+        Some(if cx.hide.derived() {
+            Err(NoFigure::Hidden("the Methods diagram"))
+        } else {
+            Ok(Figure::Methods)
+        })
     }
 
     fn handle(&mut self, input: &Input, _: &mut PaneCx<'_>) -> Handled {

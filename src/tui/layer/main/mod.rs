@@ -8,8 +8,10 @@
 //! The views draw in `view/` (they read the whole app there).
 
 pub mod charts;
+mod figure;
 pub mod fit;
 pub mod forces;
+pub mod map;
 pub mod methods;
 mod pane;
 pub mod params;
@@ -20,6 +22,7 @@ use crate::tui::interact::Input;
 use crate::tui::jobs::Notice;
 use crate::tui::vocabulary::{Action, Handled, View};
 
+pub use figure::{Figure, FigureCx, NoFigure};
 pub use pane::{AnyPane, Pane, PaneCx, Pointer};
 
 /// The main screen: the view shown and every view's pane.
@@ -38,6 +41,7 @@ impl Default for MainScreen {
                 Box::new(charts::Charts::default()),
                 Box::new(forces::ForcesState::default()),
                 Box::new(methods::Methods::default()),
+                Box::new(map::MapPane),
                 Box::new(fit::FitRuns::default()),
                 Box::new(video::VideoRun::default()),
                 // Last: a view's own arrows (the zoom's, the fit window's) go first.
@@ -92,6 +96,16 @@ impl MainScreen {
     /// Shows `view` (the predict key shows the Forces view).
     pub fn show(&mut self, view: View) {
         self.shown = view;
+    }
+
+    /// What `W` writes from the view shown: its figure or why none; a view that shows
+    /// the charts writes theirs.
+    pub fn figure(&self, cx: &FigureCx) -> Result<Figure, NoFigure> {
+        self.panes
+            .iter()
+            .filter(|p| p.view() == Some(self.shown))
+            .find_map(|p| p.figure(cx))
+            .unwrap_or_else(|| self.get::<charts::Charts>().state.figure())
     }
 
     /// Offers `input` to the views, the one shown first; a view key shows its view

@@ -4,6 +4,7 @@
 
 use std::any::Any;
 
+use super::figure::{Figure, FigureCx, NoFigure};
 use crate::lab::Lab;
 use crate::tui::interact::Input;
 use crate::tui::jobs::{Jobs, Notice};
@@ -58,6 +59,12 @@ pub trait Pane: AnyPane + std::fmt::Debug {
     fn data_changed(&mut self) {}
     /// The cursor moved to `t` (playback, a key), the charts' unzoomed span `span`.
     fn moved(&mut self, _t: f64, _span: (f64, f64)) {}
+    /// What `W` writes while it is shown: its figure, or why there is none (what it
+    /// withholds while the outcome is hidden is not written either); `None` while it
+    /// shows the charts, whose figure is written then. Asked of the view shown only.
+    fn figure(&self, _cx: &FigureCx) -> Option<Result<Figure, NoFigure>> {
+        None
+    }
 }
 
 /// What every pane is without writing it: found by its type (helix's

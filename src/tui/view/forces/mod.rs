@@ -12,7 +12,8 @@ mod section;
 
 use parts::*;
 
-use crate::tui::component::{Component, Ctx};
+use crate::tui::component::{Component, Ctx, MainView, Place};
+use crate::tui::vocabulary::View;
 use chain::chain_view;
 use section::front_view;
 
@@ -162,5 +163,16 @@ pub struct ForcesView;
 impl Component for ForcesView {
     fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
         render(cx.app, area, buf, cx.theme);
+    }
+}
+
+impl MainView for ForcesView {
+    fn view(&self) -> View {
+        View::Forces
+    }
+
+    /// It takes the chart's and the side panel's room.
+    fn parts(&self, _: &App) -> Vec<(&'static dyn Component, Place)> {
+        vec![(&ForcesView, Place::Middle)]
     }
 }

@@ -7,15 +7,16 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::Widget;
 
 use super::panel::{Ranked, block, by_priority, draw_lines};
+use super::withheld::Withheld;
 use crate::lab::jobs::State;
 use crate::methods::Method;
 use crate::settings::units::{Dimension, fit_number, show};
 use crate::study::compare::{Row, RunStatus, fitted_order, outcome_until};
 use crate::tui::app::App;
-use crate::tui::component::{Component, Ctx};
+use crate::tui::component::{Component, Ctx, MainView, Place};
 use crate::tui::plot::{Draw, Plot, PlotLine};
 use crate::tui::theme::Theme;
-use crate::tui::vocabulary::WorkAxis;
+use crate::tui::vocabulary::{View, WorkAxis};
 
 fn glyph(m: Method) -> &'static str {
     match m {
@@ -314,6 +315,41 @@ pub struct MethodsTable;
 impl Component for MethodsTable {
     fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
         render_rows(cx.app, area, buf, cx.theme);
+    }
+}
+
+/// The Methods view's panels while the outcome is hidden: its runs name it.
+const METHODS_WITHHELD: [Withheld; 2] = [
+    Withheld {
+        title: "Methods",
+        what: "error against work",
+    },
+    Withheld {
+        title: "Runs",
+        what: "each method's run and outcome",
+    },
+];
+
+/// The Methods view: the work–precision diagram and the runs beside it.
+pub struct MethodsView;
+
+impl MainView for MethodsView {
+    fn view(&self) -> View {
+        View::Methods
+    }
+
+    fn parts(&self, app: &App) -> Vec<(&'static dyn Component, Place)> {
+        if app.hidden().derived() {
+            vec![
+                (&METHODS_WITHHELD[0], Place::Chart),
+                (&METHODS_WITHHELD[1], Place::Side),
+            ]
+        } else {
+            vec![
+                (&MethodsDiagram, Place::Chart),
+                (&MethodsTable, Place::Side),
+            ]
+        }
     }
 }
 
