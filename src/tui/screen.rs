@@ -124,9 +124,10 @@ impl Screen {
     }
 
     /// The time under a click at (`column`, `row`) of the frame prepared last: inside
-    /// the chart's plot while the charts are shown and no popup is open.
+    /// the chart's plot while a view with the charts (Charts, Fit) is shown and no
+    /// popup is open.
     pub fn chart_time_at(&self, app: &App, column: u16, row: u16) -> Option<f64> {
-        if app.view() != View::Charts || !app.layers().is_empty() {
+        if !matches!(app.view(), View::Charts | View::Fit) || !app.layers().is_empty() {
             return None;
         }
         self.frame.as_ref()?.chart.as_ref()?.time_at(column, row)

@@ -370,7 +370,12 @@ fn a_click_on_the_chart_seeks_to_the_time_under_it() {
     assert_eq!(screen::chart_time_at(&a, area, 110, 20), None);
     assert_eq!(screen::chart_time_at(&a, area, 1, 20), None);
     assert_eq!(screen::chart_time_at(&a, area, 30, 3), None);
-    // Not while another view is shown.
+    // The Fit view's chart seeks too (the guide: "click or drag on the chart").
+    let inside = screen::chart_time_at(&a, area, 40, 20);
+    press(&mut a, "f");
+    assert!(inside.is_some());
+    assert_eq!(screen::chart_time_at(&a, area, 40, 20), inside);
+    // Not while a view without the chart is shown.
     press(&mut a, "g");
     assert_eq!(screen::chart_time_at(&a, area, 40, 20), None);
 }
