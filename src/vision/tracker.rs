@@ -284,8 +284,10 @@ impl Tracker {
             _ => std::cmp::Ordering::Equal,
         });
         let mut fits = kept;
-        let merged =
-            !coarse.pairs.is_empty() && fits.iter().flatten().count() < 2 && self.both_seen();
+        let merged = !coarse.pairs.is_empty()
+            && fits.iter().flatten().count() < 2
+            && self.both_seen()
+            && self.predicted_close();
         if fits.is_empty() && !merged {
             self.counts.empty += 1;
         }
@@ -420,6 +422,19 @@ impl Tracker {
 
     fn both_seen(&self) -> bool {
         self.last.iter().all(|l| !l.is_empty())
+    }
+
+    /// True when the two balls are predicted within a radius of touching now (or
+    /// either cannot be predicted): a wide blob far from that is no impact.
+    fn predicted_close(&self) -> bool {
+        let k = self.frames.len();
+        match (
+            self.last.first().and_then(|l| predict(l, k)),
+            self.last.get(1).and_then(|l| predict(l, k)),
+        ) {
+            (Some(a), Some(b)) => (a.x - b.x).hypot(a.y - b.y) < a.r + b.r + a.r.max(b.r),
+            _ => true,
+        }
     }
 
     /// The outline near `guess`, twice: in a band `band` px wide either side (the
