@@ -219,7 +219,8 @@ fn common_spot(frames: &[FrameFixes]) -> Option<(f64, f64)> {
 #[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
 fn staying_spot(frames: &[FrameFixes]) -> Option<(f64, f64)> {
     // Each mark: its slot, frame, ball's x and radius, and its place in the disc.
-    let marks: Vec<(usize, usize, f64, f64, (f64, f64))> = frames
+    type Found = (usize, usize, f64, f64, (f64, f64));
+    let marks: Vec<Found> = frames
         .iter()
         .enumerate()
         .flat_map(|(k, f)| {
