@@ -219,8 +219,8 @@ fn common_spot(frames: &[FrameFixes]) -> Option<(f64, f64)> {
 #[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
 fn staying_spot(frames: &[FrameFixes]) -> Option<(f64, f64)> {
     // Each mark: its slot, frame, ball's x and radius, and its place in the disc.
-    type Found = (usize, usize, f64, f64, (f64, f64));
-    let marks: Vec<Found> = frames
+    type DiscMark = (usize, usize, f64, f64, (f64, f64));
+    let marks: Vec<DiscMark> = frames
         .iter()
         .enumerate()
         .flat_map(|(k, f)| {

@@ -284,10 +284,7 @@ impl Tracker {
             _ => std::cmp::Ordering::Equal,
         });
         let mut fits = kept;
-        let merged = !coarse.pairs.is_empty()
-            && fits.iter().flatten().count() < 2
-            && self.both_seen()
-            && self.predicted_close();
+        let merged = self.merged(&coarse, &fits);
         if fits.is_empty() && !merged {
             self.counts.empty += 1;
         }
@@ -422,6 +419,15 @@ impl Tracker {
 
     fn both_seen(&self) -> bool {
         self.last.iter().all(|l| !l.is_empty())
+    }
+
+    /// True when this frame shows the impact: a blob about two balls wide, fewer
+    /// than two outlines, both balls seen before and predicted near each other.
+    fn merged(&self, coarse: &detect::Coarse, fits: &[Result<Outline, LeftOut>]) -> bool {
+        !coarse.pairs.is_empty()
+            && fits.iter().flatten().count() < 2
+            && self.both_seen()
+            && self.predicted_close()
     }
 
     /// True when the two balls are predicted within a radius of touching now (or
