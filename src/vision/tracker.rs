@@ -284,8 +284,7 @@ impl Tracker {
             _ => std::cmp::Ordering::Equal,
         });
         let mut fits = kept;
-        let merged =
-            !coarse.pairs.is_empty() && fits.iter().flatten().count() < 2 && self.both_seen();
+        let merged = self.merged(&coarse, &fits);
         if fits.is_empty() && !merged {
             self.counts.empty += 1;
         }
@@ -420,6 +419,28 @@ impl Tracker {
 
     fn both_seen(&self) -> bool {
         self.last.iter().all(|l| !l.is_empty())
+    }
+
+    /// True when this frame shows the impact: a blob about two balls wide, fewer
+    /// than two outlines, both balls seen before and predicted near each other.
+    fn merged(&self, coarse: &detect::Coarse, fits: &[Result<Outline, LeftOut>]) -> bool {
+        !coarse.pairs.is_empty()
+            && fits.iter().flatten().count() < 2
+            && self.both_seen()
+            && self.predicted_close()
+    }
+
+    /// True when the two balls are predicted within a radius of touching now (or
+    /// either cannot be predicted): a wide blob far from that is no impact.
+    fn predicted_close(&self) -> bool {
+        let k = self.frames.len();
+        match (
+            self.last.first().and_then(|l| predict(l, k)),
+            self.last.get(1).and_then(|l| predict(l, k)),
+        ) {
+            (Some(a), Some(b)) => (a.x - b.x).hypot(a.y - b.y) < a.r + b.r + a.r.max(b.r),
+            _ => true,
+        }
     }
 
     /// The outline near `guess`, twice: in a band `band` px wide either side (the

@@ -1,0 +1,134 @@
+//! Which marks the tracker keeps (`vision::mark_check`, issue 34): a mark drawn on a
+//! ball turns with it, by Δx / R as it rolls and by less while it slides, at one
+//! distance from the centre; a glossy highlight stays at one spot of the disc while
+//! the ball rolls on, and spots found anywhere in the disc are no one mark. Only the
+//! drawn mark's positions may reach the tracks (a wrong mark gives a wrong spin, or
+//! `fit` refuses the "rim mark" lying off the ball). Numbers only, no pictures: cheap.
+
+use groovelab::vision::circle::{Circle, Outline};
+use groovelab::vision::mark::Mark;
+use groovelab::vision::mark_check::checked;
+use groovelab::vision::tracker::{Fix, FrameFixes, LeftOut};
+use proptest::prelude::*;
+
+/// A ball at `(x, y)` of radius `r` with its mark (if any) at `mark`, px.
+fn fix(x: f64, y: f64, r: f64, mark: Option<(f64, f64)>) -> Result<Fix, LeftOut> {
+    Ok(Fix {
+        outline: Outline {
+            circle: Circle { x, y, r },
+            sigma: [0.05; 3],
+            rms: 0.2,
+            points: 100,
+            coverage: 0.6,
+            lowest: y + 0.3 * r,
+            polarity: 1.0,
+        },
+        sigma: 0.05,
+        mark: mark.map(|(x, y)| Mark {
+            x,
+            y,
+            sigma: 0.1,
+            contrast: -40.0,
+        }),
+    })
+}
+
+/// Where a mark at `d` radii from the centre, turned by `angle` rad from the top,
+/// lies on the ball at `(x, y)` of radius `r` (image y down).
+fn drawn(x: f64, y: f64, r: f64, d: f64, angle: f64) -> (f64, f64) {
+    (x + d * r * angle.sin(), y - d * r * angle.cos())
+}
+
+/// The marks kept of `slot`, with their frames.
+fn kept(frames: &[FrameFixes], slot: usize) -> Vec<(usize, (f64, f64))> {
+    checked(frames)
+        .iter()
+        .enumerate()
+        .filter_map(|(k, f)| {
+            let m = f[slot].as_ref().ok()?.mark?;
+            Some((k, (m.x, m.y)))
+        })
+        .collect()
+}
+
+/// The left ball rolls 200 px (8 radii) to the right; in every other frame the spot
+/// found is a highlight at one place of its disc, in the others its drawn mark. The
+/// right ball rests, its mark at one place (it does not move, so it need not turn).
+#[test]
+fn a_highlight_that_stays_while_the_ball_rolls_is_left_out_the_drawn_mark_kept() {
+    let r = 25.0;
+    let highlight = (-0.3 * r, -0.4 * r);
+    let frames: Vec<FrameFixes> = (0..40)
+        .map(|k| {
+            let x = 100.0 + 5.0 * k as f64;
+            let mark = if k % 2 == 0 {
+                drawn(x, 200.0, r, 0.55, (x - 100.0) / r)
+            } else {
+                (x + highlight.0, 200.0 + highlight.1)
+            };
+            let rest = drawn(500.0, 200.0, r, 0.55, 0.4);
+            [
+                fix(x, 200.0, r, Some(mark)),
+                fix(500.0, 200.0, r, Some(rest)),
+            ]
+        })
+        .collect();
+    let left = kept(&frames, 0);
+    for (k, m) in &left {
+        let x = 100.0 + 5.0 * *k as f64;
+        let truth = drawn(x, 200.0, r, 0.55, (x - 100.0) / r);
+        assert!(
+            (m.0 - truth.0).hypot(m.1 - truth.1) < 1e-9,
+            "frame {k}: kept {m:?}, not the drawn mark {truth:?}"
+        );
+    }
+    assert!(left.len() >= 15, "the drawn marks kept: {}", left.len());
+    assert_eq!(kept(&frames, 1).len(), 40, "the resting ball's mark");
+}
+
+/// Spots found anywhere in the disc (the wall's texture, the shading, compression)
+/// keep to no circle about the centre: no mark at all.
+#[test]
+fn spots_anywhere_in_the_disc_give_no_mark() {
+    let r = 20.0;
+    let frames: Vec<FrameFixes> = (0..30)
+        .map(|k| {
+            let x = 100.0 + 4.0 * k as f64;
+            // A spread of distances 0.1 … 0.85 R and of angles, frame to frame.
+            let d = 0.1 + 0.75 * ((k * 7) % 11) as f64 / 10.0;
+            let a = (k * 5 % 13) as f64;
+            [
+                fix(x, 150.0, r, Some(drawn(x, 150.0, r, d, a))),
+                Err(LeftOut::Unseen),
+            ]
+        })
+        .collect();
+    assert_eq!(kept(&frames, 0), vec![]);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+
+    /// A drawn mark on a ball that rolls (its angle changing by Δx / R) or slides
+    /// with its spin growing (a share of that) is kept in every frame, whatever its
+    /// radius, speed, direction, the mark's distance and its first angle.
+    #[test]
+    fn a_mark_that_turns_with_its_ball_is_kept(
+        r in 10.0f64..45.0,
+        speed in 0.5f64..12.0,
+        dir in prop::sample::select(vec![-1.0, 1.0]),
+        d in 0.3f64..0.8,
+        start in 0.0f64..std::f64::consts::TAU,
+        turning in 0.4f64..1.0,
+        frames in 12usize..60,
+    ) {
+        let fixes: Vec<FrameFixes> = (0..frames)
+            .map(|k| {
+                let x = 400.0 + dir * speed * k as f64;
+                let a = start + turning * (x - 400.0) / r;
+                [fix(x, 200.0, r, Some(drawn(x, 200.0, r, d, a))), Err(LeftOut::Unseen)]
+            })
+            .collect();
+        prop_assert_eq!(kept(&fixes, 0).len(), frames);
+    }
+}
