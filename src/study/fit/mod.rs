@@ -166,23 +166,7 @@ pub fn fit_all(
         }
         w => w,
     };
-    // A window the user gave that holds too few points is their input to fix; the
-    // automatic one that does (a sliding phase of one frame) only leaves the line fits
-    // out, said beside the headline.
-    let (line_fit, no_line_fit) = match line_fit(m, scene, window) {
-        Ok(l) => match line_fit_overflow(&l) {
-            bad if bad.is_empty() => (Some(LineFit { given, ..l }), None),
-            bad => (
-                None,
-                Some(FitError::NotFinite {
-                    bad,
-                    looks: looks(m, scene),
-                }),
-            ),
-        },
-        Err(e) if given.iter().any(|g| *g) => return Err(e),
-        Err(e) => (None, Some(e)),
-    };
+    let (line_fit, no_line_fit) = line_fits(m, scene, window, given)?;
     // μ_k,cm against μ_k,t: a verdict of every model fit (the same line fits).
     let lines_disagree = line_fit.as_ref().and_then(LineFit::disagree);
     let judged = |f: ModelFit| ModelFit {
@@ -204,6 +188,32 @@ pub fn fit_all(
     };
     check_finite(&fits, m, scene)?;
     Ok(fits)
+}
+
+/// The line fits over `window` (`given`: which ends the user set), or why they
+/// cannot be made, said beside the headline. A window the user gave that holds too
+/// few points is their input to fix (the error); the automatic one that does (a
+/// sliding phase of one frame), or line fits that overflow, only leave them out.
+fn line_fits(
+    m: &Measured,
+    scene: &Scene,
+    window: (Option<f64>, Option<f64>),
+    given: [bool; 2],
+) -> Result<(Option<LineFit>, Option<FitError>), FitError> {
+    Ok(match line_fit(m, scene, window) {
+        Ok(l) => match line_fit_overflow(&l) {
+            bad if bad.is_empty() => (Some(LineFit { given, ..l }), None),
+            bad => (
+                None,
+                Some(FitError::NotFinite {
+                    bad,
+                    looks: looks(m, scene),
+                }),
+            ),
+        },
+        Err(e) if given.iter().any(|g| *g) => return Err(e),
+        Err(e) => (None, Some(e)),
+    })
 }
 
 /// The line fit's numbers that are not finite where they were measured: a_cm and
