@@ -54,8 +54,9 @@ fn line_shared(ts: &[f64], ys: &[f64], shared: &[Vec<(usize, f64)>], sigma: f64)
         with.iter().sum::<f64>() / with.len() as f64
     };
     // Per coordinate: Σ e, Σ u e (u = t − mean t), then the slope's and the
-    // intercept's weights times e; and tr(E Eᵀ) = Σ |e_i|².
-    let mut sums: std::collections::HashMap<usize, [f64; 4]> = std::collections::HashMap::new();
+    // intercept's weights times e; and tr(E Eᵀ) = Σ |e_i|². (In the coordinates'
+    // order: a hash map's order changed the sums' last bits from run to run.)
+    let mut sums: std::collections::BTreeMap<usize, [f64; 4]> = std::collections::BTreeMap::new();
     let mut own = [0.0; 4];
     let mut trace = 0.0;
     for (i, &t) in ts.iter().enumerate() {

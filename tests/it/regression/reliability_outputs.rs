@@ -468,3 +468,24 @@ fn measured_values_beyond_lab_sizes_are_refused() {
         "allowed |t| ≤ 1e6 s",
     );
 }
+
+/// The line fits' standard errors once changed in their last digits from run to run of
+/// the same command (a hash map's order in the sums over shared frames): the same
+/// `fit` prints the same bytes every time.
+#[test]
+fn the_same_fit_prints_the_same_bytes_every_run() {
+    let args = [
+        "fit",
+        "--preset",
+        "paper-b4.9",
+        "--data",
+        concat!(env!("CARGO_MANIFEST_DIR"), "/docs/video/ball.txt"),
+        "--data",
+        concat!(env!("CARGO_MANIFEST_DIR"), "/docs/video/mark.txt"),
+        "--format",
+        "json",
+    ];
+    let first = crate::common::stdout(&args);
+    assert!(first.contains("\"a_cm_se\""), "{first}");
+    assert_eq!(crate::common::stdout(&args), first);
+}
