@@ -8,7 +8,7 @@
 use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 
-use super::app::{App, View};
+use super::app::App;
 use super::component::{Component, Ctx, Laid, Place, Prepared};
 use super::layer::Layer;
 use super::layer::main::Pointer;
@@ -124,10 +124,10 @@ impl Screen {
     }
 
     /// The time under a click at (`column`, `row`) of the frame prepared last: inside
-    /// the chart's plot while a view with the charts (Charts, Fit) is shown and no
-    /// popup is open.
+    /// the chart's plot while the view shown drew one (it prepared it: Charts, Fit) and
+    /// no popup is open.
     pub fn chart_time_at(&self, app: &App, column: u16, row: u16) -> Option<f64> {
-        if !matches!(app.view(), View::Charts | View::Fit) || !app.layers().is_empty() {
+        if !app.layers().is_empty() {
             return None;
         }
         self.frame.as_ref()?.chart.as_ref()?.time_at(column, row)
