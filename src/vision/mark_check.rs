@@ -5,83 +5,54 @@
 //! on. Marks of either kind are left out (the centre alone still gives the tracks);
 //! a wrong mark is worse than none.
 
+use super::params::MarkChecks;
 use super::tracker::FrameFixes;
-
-/// Two spots of a disc this near (in radii) are one spot.
-const SAME_SPOT: f64 = 0.08;
-
-/// Share of a ball's marks at one spot of its disc that makes the spot a highlight,
-/// when the ball moved by at least [`ROLLED`] radii meanwhile (a mark on a ball that
-/// rolls one radius turns by one radian, and even a ball sliding after the impact
-/// turns by half that over its sliding).
-const FIXED_SHARE: f64 = 0.6;
-const ROLLED: f64 = 2.0;
-
-/// A mark that moves less than this share of its ball's move between two frames
-/// stays put in the picture: a spot of the wall (a mark on a rolling ball moves at
-/// a third of the ball's speed or more where it can be seen, above the rail).
-const STILL_SHARE: f64 = 0.15;
-
-/// Least move of the ball, px, between two frames for [`STILL_SHARE`] to tell.
-const MOVED_PX: f64 = 2.0;
 
 /// The frames (slot 0 the left ball, as `tracks::ordered` gives them) with every
 /// mark that is not the ball's own left out.
 #[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
-pub fn checked(frames: &[FrameFixes]) -> Vec<FrameFixes> {
+pub fn checked(frames: &[FrameFixes], p: &MarkChecks) -> Vec<FrameFixes> {
     let mut out = frames.to_vec();
-    let spot = common_spot(frames);
-    let staying = staying_spot(frames);
+    let spot = common_spot(frames, p);
+    let staying = staying_spot(frames, p);
     for slot in 0..2 {
-        let own = spot.or_else(|| fixed_spot(frames, slot));
+        let own = spot.or_else(|| fixed_spot(frames, slot, p));
         for h in own.into_iter().chain(staying) {
             for f in out.iter_mut() {
                 if let Ok(fix) = &mut f[slot]
-                    && offset(fix).is_some_and(|o| near(o, h, 2.0 * SAME_SPOT))
+                    && offset(fix).is_some_and(|o| near(o, h, 2.0 * p.same_spot))
                 {
                     fix.mark = None;
                 }
             }
         }
-        for k in still_marks(&out, slot) {
-            if let Some(Ok(fix)) = out.get_mut(k).map(|f| &mut f[slot]) {
-                fix.mark = None;
-            }
-        }
-        for k in off_the_circle(&out, slot) {
-            if let Some(Ok(fix)) = out.get_mut(k).map(|f| &mut f[slot]) {
-                fix.mark = None;
-            }
-        }
-        if !turns_with_the_ball(&out, slot) {
-            for f in out.iter_mut() {
-                if let Ok(fix) = &mut f[slot] {
-                    fix.mark = None;
-                }
-            }
+        // Each check reads the marks the one before it left.
+        let still = still_marks(&out, slot, p);
+        left_out(&mut out, slot, still);
+        let off = off_the_circle(&out, slot, p);
+        left_out(&mut out, slot, off);
+        if !turns_with_the_ball(&out, slot, p) {
+            left_out(&mut out, slot, 0..frames.len());
         }
     }
     out
 }
 
-/// How far (in radii) a mark may lie from the circle its ball's marks keep to: a
-/// drawn mark stays at one distance from the centre as the ball turns (the fit of
-/// the spot's centroid moves it by a few hundredths of a radius).
-const ON_CIRCLE: f64 = 0.12;
-
-/// Share of a ball's marks that must keep to one circle about the centre for them
-/// to be a drawn mark's (not a highlight here, a wall's spot there, the rail's edge).
-const KEPT_SHARE: f64 = 0.6;
-
-/// Fewest marks of a ball from which their circle is told.
-const FEWEST_MARKS: usize = 5;
+/// The marks of `slot` in the frames `at` left out.
+fn left_out(frames: &mut [FrameFixes], slot: usize, at: impl IntoIterator<Item = usize>) {
+    for k in at {
+        if let Some(Ok(fix)) = frames.get_mut(k).and_then(|f| f.get_mut(slot)) {
+            fix.mark = None;
+        }
+    }
+}
 
 /// The frames whose mark in `slot` lies off the circle (about the centre) that the
-/// ball's marks keep to, by more than [`ON_CIRCLE`] radii; every frame's mark when
-/// fewer than [`KEPT_SHARE`] of them keep to one circle or that circle lies too near
+/// ball's marks keep to, by more than [`MarkChecks::on_circle`] radii; every frame's mark when
+/// fewer than [`MarkChecks::kept_share`] of them keep to one circle or that circle lies too near
 /// the centre for an angle (a fifth of the radius) — then no mark is the ball's.
 #[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
-fn off_the_circle(frames: &[FrameFixes], slot: usize) -> Vec<usize> {
+fn off_the_circle(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Vec<usize> {
     let at: Vec<(usize, f64)> = frames
         .iter()
         .enumerate()
@@ -94,7 +65,7 @@ fn off_the_circle(frames: &[FrameFixes], slot: usize) -> Vec<usize> {
         return Vec::new();
     }
     let all = || at.iter().map(|(k, _)| *k).collect();
-    if at.len() < FEWEST_MARKS {
+    if at.len() < p.fewest_marks {
         return all();
     }
     let Some(d) = middle(&at.iter().map(|(_, d)| *d).collect::<Vec<_>>()) else {
@@ -102,32 +73,21 @@ fn off_the_circle(frames: &[FrameFixes], slot: usize) -> Vec<usize> {
     };
     let off: Vec<usize> = at
         .iter()
-        .filter(|(_, e)| (e - d).abs() > ON_CIRCLE)
+        .filter(|(_, e)| (e - d).abs() > p.on_circle)
         .map(|(k, _)| *k)
         .collect();
-    if d < 0.2 || ((at.len() - off.len()) as f64) < KEPT_SHARE * at.len() as f64 {
+    if d < 0.2 || ((at.len() - off.len()) as f64) < p.kept_share * at.len() as f64 {
         return all();
     }
     off
 }
-
-/// Largest turn of a drawn mark per radius its ball moves (a rolling ball turns by
-/// one radian; 1.6 leaves room for the centroid's and the centre's errors), and
-/// the turn allowed whatever the move, rad (noise on a mark at half the radius).
-const TURN_PER_RADIUS: f64 = 1.6;
-const TURN_SLACK: f64 = 0.35;
-
-/// Share of the steps between a ball's marked frames that may turn faster than
-/// rolling allows before its marks are taken for something else (a spot that jumps
-/// between the mark, a highlight and the wall).
-const JUMPS_SHARE: f64 = 0.2;
 
 /// True when the marks of `slot` turn with the ball: between consecutive frames
 /// with a mark, the mark's angle about the centre changes by no more than rolling
 /// the ball's move turns it (plus noise), in most steps. A ball turns as it moves;
 /// a spot that jumps by more is not one drawn mark.
 #[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
-fn turns_with_the_ball(frames: &[FrameFixes], slot: usize) -> bool {
+fn turns_with_the_ball(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> bool {
     let marked: Vec<(f64, f64, f64)> = frames
         .iter()
         .filter_map(|f| {
@@ -138,7 +98,7 @@ fn turns_with_the_ball(frames: &[FrameFixes], slot: usize) -> bool {
         })
         .collect();
     let steps = marked.len().saturating_sub(1);
-    if steps < FEWEST_MARKS {
+    if steps < p.fewest_marks {
         return true;
     }
     // Per step between marked frames: the mark's turn and the ball's roll, rad.
@@ -153,23 +113,16 @@ fn turns_with_the_ball(frames: &[FrameFixes], slot: usize) -> bool {
         .collect();
     let jumps = turns
         .iter()
-        .filter(|(turn, roll)| *turn > TURN_PER_RADIUS * roll + TURN_SLACK)
+        .filter(|(turn, roll)| *turn > p.turn_per_radius * roll + p.turn_slack)
         .count();
     // Over the clip, a drawn mark turns by a good part of what its ball rolled (all
     // of it rolling, less while a struck ball slides); a highlight or the shading's
     // darkest spot stays put in the disc however far the ball goes.
     let turned: f64 = turns.iter().map(|t| t.0).sum();
     let rolled: f64 = turns.iter().map(|t| t.1).sum();
-    let stays = rolled >= MIN_ROLL && turned < LEAST_TURN_SHARE * rolled;
-    (jumps as f64) <= JUMPS_SHARE * steps as f64 && !stays
+    let stays = rolled >= p.min_roll && turned < p.least_turn_share * rolled;
+    (jumps as f64) <= p.jumps_share * steps as f64 && !stays
 }
-
-/// Roll (rad, the ball's move over its radius, summed between marked frames) from
-/// which a mark that does not turn is told from one that does …
-const MIN_ROLL: f64 = 1.5;
-/// … and the least share of that roll a drawn mark turns by (a struck ball slides
-/// with its spin growing from none; over a clip with rolling in it, a third or more).
-const LEAST_TURN_SHARE: f64 = 0.3;
 
 /// A mark's place in its ball's disc, in radii from the centre.
 fn offset(fix: &super::tracker::Fix) -> Option<(f64, f64)> {
@@ -186,7 +139,7 @@ fn near(a: (f64, f64), b: (f64, f64), within: f64) -> bool {
 /// highlight (two marks drawn on two balls meet at one spot of their discs only by
 /// chance, and briefly).
 #[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
-fn common_spot(frames: &[FrameFixes]) -> Option<(f64, f64)> {
+fn common_spot(frames: &[FrameFixes], p: &MarkChecks) -> Option<(f64, f64)> {
     let pairs: Vec<((f64, f64), (f64, f64))> = frames
         .iter()
         .filter_map(|f| {
@@ -200,7 +153,7 @@ fn common_spot(frames: &[FrameFixes]) -> Option<(f64, f64)> {
     }
     let same = pairs
         .iter()
-        .filter(|(a, b)| near(*a, *b, SAME_SPOT))
+        .filter(|(a, b)| near(*a, *b, p.same_spot))
         .count();
     if same * 2 < pairs.len() {
         return None;
@@ -211,13 +164,13 @@ fn common_spot(frames: &[FrameFixes]) -> Option<(f64, f64)> {
 }
 
 /// The spot of the disc where the "marks" of either ball sit most often, when they
-/// sit there while their ball rolls on by [`ROLLED`] radii or more (summed over the
+/// sit there while their ball rolls on by [`MarkChecks::rolled`] radii or more (summed over the
 /// steps between frames with the mark there): a highlight, or the shading's darkest
 /// spot, found in part of the frames and the drawn mark in others. A drawn mark
 /// passes a spot of the disc as the ball turns, and stays there only while its ball
 /// is at rest or slides without turning (a struck ball, briefly).
 #[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
-fn staying_spot(frames: &[FrameFixes]) -> Option<(f64, f64)> {
+fn staying_spot(frames: &[FrameFixes], p: &MarkChecks) -> Option<(f64, f64)> {
     // Each mark: its slot, frame, ball's x and radius, and its place in the disc.
     type DiscMark = (usize, usize, f64, f64, (f64, f64));
     let marks: Vec<DiscMark> = frames
@@ -239,7 +192,7 @@ fn staying_spot(frames: &[FrameFixes]) -> Option<(f64, f64)> {
         for slot in 0..2 {
             let at: Vec<_> = marks
                 .iter()
-                .filter(|m| m.0 == slot && near(m.4, h, SAME_SPOT))
+                .filter(|m| m.0 == slot && near(m.4, h, p.same_spot))
                 .collect();
             let mut start = 0;
             for i in 1..=at.len() {
@@ -256,13 +209,13 @@ fn staying_spot(frames: &[FrameFixes]) -> Option<(f64, f64)> {
         .iter()
         .map(|m| (m.4, rolled_at(m.4)))
         .max_by(|a, b| a.1.total_cmp(&b.1))?;
-    (rolled >= ROLLED).then_some(h)
+    (rolled >= p.rolled).then_some(h)
 }
 
 /// The spot of its disc where one ball's "mark" sits in most frames while the ball
-/// rolls on by [`ROLLED`] radii or more: a highlight.
+/// rolls on by [`MarkChecks::rolled`] radii or more: a highlight.
 #[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
-fn fixed_spot(frames: &[FrameFixes], slot: usize) -> Option<(f64, f64)> {
+fn fixed_spot(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Option<(f64, f64)> {
     let fixes: Vec<&super::tracker::Fix> = frames
         .iter()
         .filter_map(|f| f[slot].as_ref().ok())
@@ -276,21 +229,21 @@ fn fixed_spot(frames: &[FrameFixes], slot: usize) -> Option<(f64, f64)> {
     let h = (middle(&xs)?, middle(&ys)?);
     let at: Vec<&&super::tracker::Fix> = fixes
         .iter()
-        .filter(|f| offset(f).is_some_and(|o| near(o, h, SAME_SPOT)))
+        .filter(|f| offset(f).is_some_and(|o| near(o, h, p.same_spot)))
         .collect();
-    if (at.len() as f64) < FIXED_SHARE * offs.len() as f64 {
+    if (at.len() as f64) < p.fixed_share * offs.len() as f64 {
         return None;
     }
     let x = at.iter().map(|f| f.outline.circle.x);
     let travel = x.clone().fold(f64::NEG_INFINITY, f64::max) - x.fold(f64::INFINITY, f64::min);
     let r = at.first()?.outline.circle.r;
-    (travel >= ROLLED * r).then_some(h)
+    (travel >= p.rolled * r).then_some(h)
 }
 
 /// The frames whose mark in `slot` stayed put in the picture while its ball moved
 /// on, against the ball's previous frame with a mark.
 #[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
-fn still_marks(frames: &[FrameFixes], slot: usize) -> Vec<usize> {
+fn still_marks(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Vec<usize> {
     let mut out = Vec::new();
     // The last frame with a mark: its index, the ball's centre and the mark, px.
     type Seen = (usize, (f64, f64), (f64, f64));
@@ -302,7 +255,7 @@ fn still_marks(frames: &[FrameFixes], slot: usize) -> Vec<usize> {
         if let Some((k0, c0, m0)) = prev {
             let moved = (c.0 - c0.0).hypot(c.1 - c0.1);
             let mark_moved = (m.0 - m0.0).hypot(m.1 - m0.1);
-            if moved >= MOVED_PX && mark_moved < STILL_SHARE * moved {
+            if moved >= p.moved_px && mark_moved < p.still_share * moved {
                 out.extend([k0, k]);
             }
         }

@@ -90,6 +90,85 @@ pub struct Params {
     pub mark_sigmas: f64,
     /// … and this many levels. Default 10 (a glossy ball's shading texture is less).
     pub mark_levels: f64,
+    /// Which marks found are a ball's own ([`super::mark_check`]).
+    pub marks: MarkChecks,
+    /// A fit farther than this share of the radius across the groove from where its
+    /// ball's other fits put the line is not the ball (a circle fitted to the smear a
+    /// moving ball leaves in a compressed clip, to the wall's pattern): a ball rolls
+    /// along its groove, its centre's height within the pixel noise. Default 0.25.
+    pub off_the_line: f64,
+}
+
+/// The thresholds that tell a ball's drawn mark from a highlight, a spot of the wall
+/// or a mark that jumps ([`super::mark_check`]); lengths in the ball's radii unless
+/// said.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MarkChecks {
+    /// Two spots of a disc this near are one spot. Default 0.08.
+    pub same_spot: f64,
+    /// Share of a ball's marks at one spot of its disc that makes the spot a
+    /// highlight, when the ball moved by at least `rolled` radii meanwhile (a mark
+    /// on a ball that rolls one radius turns by one radian, and even a ball sliding
+    /// after the impact turns by half that over its sliding). Default 0.6 …
+    pub fixed_share: f64,
+    /// … and that move, radii. Default 2.
+    pub rolled: f64,
+    /// A mark that moves less than this share of its ball's move between two frames
+    /// stays put in the picture: a spot of the wall (a mark on a rolling ball moves
+    /// at a third of the ball's speed or more where it can be seen, above the rail).
+    /// Default 0.15 …
+    pub still_share: f64,
+    /// … told only where the ball moved this far, px. Default 2.
+    pub moved_px: f64,
+    /// How far a mark may lie from the circle its ball's marks keep to: a drawn mark
+    /// stays at one distance from the centre as the ball turns (the fit of the
+    /// spot's centroid moves it by a few hundredths of a radius). Default 0.12.
+    pub on_circle: f64,
+    /// Share of a ball's marks that must keep to one circle about the centre for
+    /// them to be a drawn mark's (not a highlight here, a wall's spot there, the
+    /// rail's edge). Default 0.6.
+    pub kept_share: f64,
+    /// Fewest marks of a ball from which their circle and their turning are told.
+    /// Default 5.
+    pub fewest_marks: usize,
+    /// Largest turn of a drawn mark per radius its ball moves (a rolling ball turns
+    /// by one radian; 1.6 leaves room for the centroid's and the centre's errors).
+    /// Default 1.6 …
+    pub turn_per_radius: f64,
+    /// … and the turn allowed whatever the move, rad (noise on a mark at half the
+    /// radius). Default 0.35.
+    pub turn_slack: f64,
+    /// Share of the steps between a ball's marked frames that may turn faster than
+    /// rolling allows before its marks are taken for something else (a spot that
+    /// jumps between the mark, a highlight and the wall). Default 0.2.
+    pub jumps_share: f64,
+    /// Roll (rad, the ball's move over its radius, summed between marked frames)
+    /// from which a mark that does not turn is told from one that does. Default 1.5 …
+    pub min_roll: f64,
+    /// … and the least share of that roll a drawn mark turns by (a struck ball
+    /// slides with its spin growing from none; over a clip with rolling in it, a
+    /// third or more). Default 0.3.
+    pub least_turn_share: f64,
+}
+
+impl Default for MarkChecks {
+    fn default() -> Self {
+        MarkChecks {
+            same_spot: 0.08,
+            fixed_share: 0.6,
+            rolled: 2.0,
+            still_share: 0.15,
+            moved_px: 2.0,
+            on_circle: 0.12,
+            kept_share: 0.6,
+            fewest_marks: 5,
+            turn_per_radius: 1.6,
+            turn_slack: 0.35,
+            jumps_share: 0.2,
+            min_roll: 1.5,
+            least_turn_share: 0.3,
+        }
+    }
 }
 
 impl Default for Params {
@@ -114,6 +193,8 @@ impl Default for Params {
             max_across: 0.15,
             mark_sigmas: 6.0,
             mark_levels: 10.0,
+            marks: MarkChecks::default(),
+            off_the_line: 0.25,
         }
     }
 }

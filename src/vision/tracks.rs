@@ -173,9 +173,10 @@ pub fn tracks(
     radius: f64,
     scale: Option<f64>,
 ) -> Result<Tracks, TracksError> {
-    let mut frames = super::mark_check::checked(&ordered(&tracker.frames));
+    let p = &tracker.params;
+    let mut frames = super::mark_check::checked(&ordered(&tracker.frames), &p.marks);
     if let Some(r) = median(tracker.radii()) {
-        off_the_line(&mut frames, r);
+        off_the_line(&mut frames, p.off_the_line * r);
     }
     let frames = &frames;
     let mut slots = balls_seen(tracker, frames)?;
@@ -298,17 +299,11 @@ fn balls_seen(tracker: &Tracker, frames: &[FrameFixes]) -> Result<Vec<usize>, Tr
     Ok(slots)
 }
 
-/// A fit farther than this share of the radius across the groove from where its
-/// ball's other fits put the line is not the ball (a circle fitted to the smear a
-/// moving ball leaves in a compressed clip, to the wall's pattern): a ball rolls
-/// along its groove, its centre's height within the pixel noise.
-const OFF_THE_LINE: f64 = 0.25;
-
 /// Leaves out (as poor outlines) the fits that lie off their ball's line across the
-/// groove by more than [`OFF_THE_LINE`] radii `r` (px): the line's direction from
-/// every fit, each ball's place across it the median of its fits'.
+/// groove by more than `within` px (`Params::off_the_line` radii): the line's
+/// direction from every fit, each ball's place across it the median of its fits'.
 #[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
-fn off_the_line(frames: &mut [FrameFixes], r: f64) {
+fn off_the_line(frames: &mut [FrameFixes], within: f64) {
     let centres: Vec<Vec<[f64; 2]>> = (0..2).map(|s| centres_of(frames, s)).collect();
     let (angle, _, found) = groove(&[&centres[0][..], &centres[1][..]]);
     let angle = if found { angle } else { 0.0 };
@@ -324,7 +319,7 @@ fn off_the_line(frames: &mut [FrameFixes], r: f64) {
         for f in frames.iter_mut() {
             if let Ok(fix) = &f[slot] {
                 let c = fix.outline.circle;
-                if (c.x * n.0 + c.y * n.1 - line).abs() > OFF_THE_LINE * r {
+                if (c.x * n.0 + c.y * n.1 - line).abs() > within {
                     f[slot] = Err(LeftOut::Poor);
                 }
             }

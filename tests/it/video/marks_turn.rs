@@ -8,6 +8,7 @@
 use groovelab::vision::circle::{Circle, Outline};
 use groovelab::vision::mark::Mark;
 use groovelab::vision::mark_check::checked;
+use groovelab::vision::params::MarkChecks;
 use groovelab::vision::tracker::{Fix, FrameFixes, LeftOut};
 use proptest::prelude::*;
 
@@ -41,7 +42,7 @@ fn drawn(x: f64, y: f64, r: f64, d: f64, angle: f64) -> (f64, f64) {
 
 /// The marks kept of `slot`, with their frames.
 fn kept(frames: &[FrameFixes], slot: usize) -> Vec<(usize, (f64, f64))> {
-    checked(frames)
+    checked(frames, &MarkChecks::default())
         .iter()
         .enumerate()
         .filter_map(|(k, f)| {
