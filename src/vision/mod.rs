@@ -38,6 +38,7 @@ pub mod circle;
 pub mod detect;
 pub mod frame;
 pub mod gray;
+pub mod hough;
 pub mod mark;
 pub mod mark_check;
 pub mod overlay;

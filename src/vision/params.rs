@@ -90,6 +90,17 @@ pub struct Params {
     pub mark_sigmas: f64,
     /// … and this many levels. Default 10 (a glossy ball's shading texture is less).
     pub mark_levels: f64,
+    /// A blob wider than this many balls (the radius known) is searched for balls
+    /// of that radius on the frame's edges even where a ball was fitted in it (a
+    /// ball and the smear of changed blocks it drags in a compressed clip).
+    /// Default 1.3: a ball's blob is its width, plus a pixel or two of blur.
+    pub wide_blob: f64,
+    /// A circle of the balls' radius on the frame's edges needs edge votes from at
+    /// least this share of its length (`hough::centres`). Default 0.2: the upper
+    /// half shows above the rail, its edge two or three pixels thick, so a ball's
+    /// arc gives about 0.5 or more; a wall's grain and a smear's blocks scatter
+    /// theirs.
+    pub hough_arc: f64,
     /// Which marks found are a ball's own ([`super::mark_check`]).
     pub marks: MarkChecks,
     /// A fit farther than this share of the radius across the groove from where its
@@ -97,6 +108,45 @@ pub struct Params {
     /// moving ball leaves in a compressed clip, to the wall's pattern): a ball rolls
     /// along its groove, its centre's height within the pixel noise. Default 0.25.
     pub off_the_line: f64,
+    /// A fit whose radius is farther than this many robust scatters of every fit's
+    /// radius from their median … Default 3: a circle fitted partly to something
+    /// else (the wall's pattern, a compression smear) is off in its radius and its
+    /// centre alike.
+    pub odd_radius: f64,
+    /// … and farther than this share of it is left out. Default 0.02 (half a pixel
+    /// of a 25 px radius: a sharp ball's fits scatter by under 1 %).
+    pub odd_radius_share: f64,
+    /// The largest deceleration of a ball along the groove, m/s², from which how far
+    /// its motion bends away from a straight line between neighbouring fits is
+    /// allowed (`tracks::off_the_path`: fits far along the groove from where the
+    /// ball's motion puts them are not the ball). Default 10: μ_k 0.5 with a groove
+    /// that doubles the normal force.
+    pub max_deceleration: f64,
+    /// Least share of a luma blob's upper half that differs from the background for
+    /// the blob to be taken as a ball. Default 0.15: a ball that moved gives about a
+    /// half or more, a still disc of the bench about none.
+    pub moved_share: f64,
+    /// Marks looked at before their sign (darker or lighter than the ball) is
+    /// settled. Default 9: a highlight of the other sign in a few of the first
+    /// frames is outvoted.
+    pub mark_votes: usize,
+    /// Largest scatter of the fitted radii (robust, a share of their median) that
+    /// still gives a scale. Default 0.05: a sharp ball's radius scatters by under
+    /// 1 %, a blurred one's by a few; both balls have one radius.
+    pub max_radius_spread: f64,
+    /// A ball must be found in at least one in this many frames for tracks to be
+    /// given. Default 3: found more rarely, what was found may be something else (a
+    /// mark, a highlight) in the frames where the ball itself was missed.
+    pub sparsest: usize,
+    /// Fewest frames a ball must be seen in to be one (not a passing blob), and
+    /// fewest frames a clip must have. Default 3.
+    pub fewest_seen: usize,
+    /// How uncertain the place of a ball's edge is at least, px, whatever the number
+    /// of frames. Default 0.05: the gradient's peak sits up to ~0.05 px inside the
+    /// outline where the ball's shading rises steeply at its limb (the project's
+    /// shaded renders: 0.02 px for a flat ball, 0.06 px for a shaded one), and that
+    /// carries into the radius and so the scale.
+    pub edge_systematic: f64,
 }
 
 /// The thresholds that tell a ball's drawn mark from a highlight, a spot of the wall
@@ -193,8 +243,19 @@ impl Default for Params {
             max_across: 0.15,
             mark_sigmas: 6.0,
             mark_levels: 10.0,
+            wide_blob: 1.3,
+            hough_arc: 0.2,
             marks: MarkChecks::default(),
             off_the_line: 0.25,
+            odd_radius: 3.0,
+            odd_radius_share: 0.02,
+            max_deceleration: 10.0,
+            moved_share: 0.15,
+            mark_votes: 9,
+            max_radius_spread: 0.05,
+            sparsest: 3,
+            fewest_seen: 3,
+            edge_systematic: 0.05,
         }
     }
 }

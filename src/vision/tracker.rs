@@ -12,6 +12,7 @@ use super::detect;
 use super::detect::Blob;
 use super::frame::Frame;
 use super::gray::Gray;
+use super::hough;
 use super::mark::{self, Mark};
 use super::params::Params;
 
@@ -87,11 +88,6 @@ struct OutlineFound {
     polarity: f64,
 }
 
-/// Least share of a luma blob's upper half that differs from the background for the
-/// blob to be taken as a ball (a ball that moved; a still disc of the bench gives
-/// about none, a ball about a half or more).
-const MOVED_SHARE: f64 = 0.15;
-
 /// The share of the coarse pixels in the upper half of `blob` (above the rail) whose
 /// difference `d` from the background is over half the threshold `thr`.
 fn differing_share(d: &[f32], thr: f32, small: &Small, blob: &Blob) -> f64 {
@@ -115,9 +111,6 @@ fn differing_share(d: &[f32], thr: f32, small: &Small, blob: &Blob) -> f64 {
     }
     hit as f64 / n as f64
 }
-
-/// Marks looked at before their sign (darker or lighter than the ball) is settled.
-const MARK_VOTES: usize = 9;
 
 /// Tracks frames held in memory: the background learned from all of them, then
 /// each one followed.
@@ -192,7 +185,7 @@ impl Tracker {
             let moving: Vec<Circle> = coarse
                 .balls
                 .iter()
-                .filter(|b| differing_share(&d, thr, &small, b) >= MOVED_SHARE)
+                .filter(|b| differing_share(&d, thr, &small, b) >= p.moved_share)
                 .chain(&more.balls)
                 .map(Blob::guess)
                 .chain(self.last.iter().filter_map(|l| l.last().map(|(_, c)| *c)))
@@ -205,10 +198,10 @@ impl Tracker {
             };
             coarse
                 .balls
-                .retain(|b| differing_share(&d, thr, &small, b) >= MOVED_SHARE || on_line(b));
+                .retain(|b| differing_share(&d, thr, &small, b) >= p.moved_share || on_line(b));
             coarse
                 .pairs
-                .retain(|b| differing_share(&d, thr, &small, b) >= MOVED_SHARE);
+                .retain(|b| differing_share(&d, thr, &small, b) >= p.moved_share);
             crowded = coarse.balls.len() > 2;
             crowded |= more.balls.len() > 2;
             coarse.balls.extend(more.balls);
@@ -262,6 +255,7 @@ impl Tracker {
                 });
             fits.push(fit);
         }
+        self.search_wide(frame, &coarse, &mut fits, f);
         self.follow(frame, &mut fits);
         self.seed(frame, &mut fits);
         // One fit per ball: of fits of one ball (a blob and the follower), the first.
@@ -338,7 +332,7 @@ impl Tracker {
     /// sign most had.
     fn mark(&mut self, img: &Gray, o: &Outline, noise: f64) -> Option<Mark> {
         let [dark, light] = self.mark_votes;
-        let sign = if dark + light < MARK_VOTES {
+        let sign = if dark + light < self.params.mark_votes {
             0.0
         } else if dark >= light {
             -1.0
@@ -356,6 +350,66 @@ impl Tracker {
             }
         }
         Some(m)
+    }
+
+    /// Balls inside blobs that gave no outline about their middle, or are wider
+    /// than a ball (in a compressed clip a moving ball drags a smear of changed
+    /// blocks that joins its blob): once the balls' radius is known, the centres of
+    /// circles of that radius on the frame's edges inside the blob
+    /// (`hough::centres`), each outline fitted about them. Not before the radius is
+    /// known: a first lock comes from a blob of a ball's shape.
+    fn search_wide(
+        &mut self,
+        frame: &Frame,
+        coarse: &detect::Coarse,
+        fits: &mut Vec<Result<Outline, LeftOut>>,
+        f: f64,
+    ) {
+        let Some(r) = self.radius() else { return };
+        let p = self.params;
+        let gave: Vec<bool> = fits.iter().map(Result::is_ok).collect();
+        let blobs = coarse
+            .balls
+            .iter()
+            .take(6)
+            .zip(gave.iter().copied().chain(std::iter::repeat(true)))
+            .filter(|(b, ok)| !ok || b.width() > p.wide_blob * 2.0 * r)
+            .map(|(b, _)| b)
+            .chain(coarse.pairs.iter().take(2));
+        let mut guesses: Vec<Circle> = Vec::new();
+        for b in blobs {
+            let window = hough::Window {
+                left: b.left,
+                right: b.right,
+                top: b.top + 0.5 * r,
+                bottom: (b.top + 1.5 * r).min(b.bottom + 0.5 * r),
+            };
+            let polarity = if self.polarity.abs() == 1.0 {
+                self.polarity
+            } else {
+                0.0
+            };
+            guesses.extend(hough::centres(
+                &frame.luma,
+                window,
+                r,
+                polarity,
+                p.differ_levels,
+                p.hough_arc,
+                2,
+            ));
+        }
+        for g in guesses.into_iter().take(4) {
+            let near = |o: &Outline| (o.circle.x - g.x).hypot(o.circle.y - g.y) < o.circle.r;
+            if fits.iter().flatten().any(near) {
+                continue;
+            }
+            if let Ok(o) = self.refine(frame, g, (1.5 * f).max(4.0)) {
+                if !fits.iter().flatten().any(|q| near(q)) {
+                    fits.push(Ok(o));
+                }
+            }
+        }
     }
 
     /// The follower: each ball seen in the last frames looked for about where it is

@@ -51,30 +51,12 @@ pub enum TracksError {
 /// What to try when the tracker is unsure (every refusal says it).
 const TRY: &str = "try --roi X,Y,W,H (pixels) around the groove, --ball-at X,Y on a ball in the first frame, or --scale LENGTH (a pixel's length)";
 
-/// Largest scatter of the fitted radii (robust, a share of their median) that still
-/// gives a scale: a sharp ball's radius scatters by under 1 %, a blurred one's by a
-/// few; both balls have one radius.
-const MAX_RADIUS_SPREAD: f64 = 0.05;
-
-/// A ball must be found in at least one in this many frames for tracks to be given.
-const SPARSEST: usize = 3;
-
-/// Fewest frames a ball must be seen in to be one (not a passing blob).
-const FEWEST_SEEN: usize = 3;
-
-/// How uncertain the place of a ball's edge is, px, whatever the number of frames:
-/// the gradient's peak sits up to ~0.05 px inside the outline where the ball's
-/// shading rises steeply at its limb (the project's shaded renders: 0.02 px for a
-/// flat ball, 0.06 px for a shaded one), and that carries into the radius and so
-/// the scale.
-pub const EDGE_SYSTEMATIC: f64 = 0.05;
-
 /// How unsure the balls' edge is, px: the spread of the edge's place by its
 /// definitions (the gradient's peak the fit uses, 0, and the half-way crossings of
-/// `circle::edge_offsets`, each the median over the frames), at least
-/// [`EDGE_SYSTEMATIC`]. Nothing tells which definition is right on a ball whose
+/// `circle::edge_offsets`, each the median over the frames), at least `least`
+/// (`Params::edge_systematic`). Nothing tells which definition is right on a ball whose
 /// shading runs into a limb of little contrast, so the whole spread is taken.
-fn edge_systematic(offsets: &[[f64; 2]]) -> f64 {
+fn edge_systematic(offsets: &[[f64; 2]], least: f64) -> f64 {
     let at = |i: usize| {
         median(
             &offsets
@@ -85,7 +67,7 @@ fn edge_systematic(offsets: &[[f64; 2]]) -> f64 {
     };
     let (a, b) = (at(0).unwrap_or(0.0), at(1).unwrap_or(0.0));
     let spread = a.max(b).max(0.0) - a.min(b).min(0.0);
-    spread.max(EDGE_SYSTEMATIC)
+    spread.max(least)
 }
 
 /// How far the two balls' median fitted radii differ, px (0 with one ball).
@@ -118,7 +100,7 @@ pub struct Calibration {
     pub scale_given: bool,
     /// The balls' median fitted radius, px, and its standard error: the median's
     /// own and the edge's systematic (the larger of the edge's definitions' spread,
-    /// the single frames' scatter, the two balls' difference, and [`EDGE_SYSTEMATIC`]).
+    /// the single frames' scatter, the two balls' difference, and `Params::edge_systematic`).
     pub radius_px: f64,
     pub radius_px_sigma: f64,
     /// The radius R the scale comes from, m.
@@ -174,11 +156,21 @@ pub fn tracks(
     scale: Option<f64>,
 ) -> Result<Tracks, TracksError> {
     let p = &tracker.params;
-    let mut frames = super::mark_check::checked(&ordered(&tracker.frames), &p.marks);
+    let mut frames = ordered(&tracker.frames);
     if let Some(r) = median(tracker.radii()) {
         off_the_line(&mut frames, p.off_the_line * r);
+        odd_radius(&mut frames, p.odd_radius, p.odd_radius_share * r);
+        // Deceleration in px/s²: the scale given, or the one the radius gives.
+        let px_per_m = scale.unwrap_or(r / radius);
+        off_the_path(
+            &mut frames,
+            &times,
+            p.off_the_line * r,
+            p.max_deceleration * px_per_m,
+        );
     }
-    let frames = &frames;
+    // The marks judged on the fits kept (a mark of a fit left out is no ball's).
+    let frames = &super::mark_check::checked(&frames, &p.marks);
     let mut slots = balls_seen(tracker, frames)?;
     let centres: Vec<Vec<[f64; 2]>> = (0..2).map(|s| centres_of(frames, s)).collect();
     let (angle, angle_se, found) =
@@ -198,14 +190,14 @@ pub fn tracks(
     // the frames' scatter, not its standard error, bounds it), and the two balls'
     // radii differing (both have one radius).
     let frame_sd = 1.4826 * dev.get(dev.len() / 2).copied().unwrap_or(0.0);
-    let systematic = edge_systematic(tracker.edge_offsets())
+    let systematic = edge_systematic(tracker.edge_offsets(), p.edge_systematic)
         .max(frame_sd)
         .max(between_balls(frames, &slots));
     let r_se = r_stat.hypot(systematic);
     // Never a confident wrong scale: radii that disagree are no ball's (the mark, a
     // highlight or clutter taken for one in part of the frames).
     let spread = 1.4826 * dev.get(dev.len() / 2).copied().unwrap_or(0.0) / r_px;
-    if scale.is_none() && (spread.is_nan() || spread > MAX_RADIUS_SPREAD) {
+    if scale.is_none() && (spread.is_nan() || spread > p.max_radius_spread) {
         return Err(TracksError::RadiiDisagree {
             median_px: r_px,
             scatter: spread,
@@ -273,11 +265,12 @@ fn balls_seen(tracker: &Tracker, frames: &[FrameFixes]) -> Result<Vec<usize>, Tr
     }
     // A slot seen in too few frames is a passing blob, not a ball.
     let seen = |s: usize| frames.iter().filter(|f| f[s].is_ok()).count();
-    let enough = (frames.len() / 10).max(FEWEST_SEEN);
-    if c.frames < FEWEST_SEEN {
+    let fewest = tracker.params.fewest_seen;
+    let enough = (frames.len() / 10).max(fewest);
+    if c.frames < fewest {
         return Err(TracksError::TooFewFrames {
             frames: c.frames,
-            need: FEWEST_SEEN,
+            need: fewest,
         });
     }
     let slots: Vec<usize> = (0..2).filter(|&s| seen(s) >= enough).collect();
@@ -290,7 +283,7 @@ fn balls_seen(tracker: &Tracker, frames: &[FrameFixes]) -> Result<Vec<usize>, Tr
     // A ball found in few of the frames: what was found may be something else (a
     // mark, a highlight) in the frames where the ball itself was missed.
     let best = slots.iter().map(|&s| seen(s)).max().unwrap_or(0);
-    if best * SPARSEST < c.frames {
+    if best * tracker.params.sparsest < c.frames {
         return Err(TracksError::Sparse {
             seen: best,
             frames: c.frames,
@@ -325,6 +318,122 @@ fn off_the_line(frames: &mut [FrameFixes], within: f64) {
             }
         }
     }
+}
+
+/// Leaves out (as poor outlines) the fits whose radius lies farther from the
+/// median of every fit's than `sigmas` robust scatters of them, and `floor` px:
+/// both balls have one radius, and a circle fitted partly to something else (the
+/// wall's pattern, a compression smear, the shading inside the ball) is off in its
+/// radius and its centre alike.
+#[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
+fn odd_radius(frames: &mut [FrameFixes], sigmas: f64, floor: f64) {
+    let radii: Vec<f64> = frames
+        .iter()
+        .flat_map(|f| f.iter().flatten().map(|fix| fix.outline.circle.r))
+        .collect();
+    let Some(mid) = median(&radii) else { return };
+    let dev: Vec<f64> = radii.iter().map(|r| (r - mid).abs()).collect();
+    let sd = 1.4826 * median(&dev).unwrap_or(0.0);
+    let within = (sigmas * sd).max(floor);
+    for f in frames.iter_mut() {
+        for slot in f.iter_mut() {
+            if slot
+                .as_ref()
+                .is_ok_and(|fix| (fix.outline.circle.r - mid).abs() > within)
+            {
+                *slot = Err(LeftOut::Poor);
+            }
+        }
+    }
+}
+
+/// Leaves out (as poor outlines) the fits that lie along the groove far from where
+/// their ball's motion puts them: each fit against the line through its ball's
+/// neighbouring fits (one either side, or the two before, or the two after, never
+/// across the impact), which must agree with one of them within `within` px plus
+/// what a deceleration of `decel` px/s² bends the motion away from that line. The
+/// worst fit is left out first and the rest judged again (an outlier does not
+/// condemn its neighbours). A circle fitted to the wall's squares where the ball was
+/// missed lies on the ball's line but far along it; a ball moves smoothly between
+/// impacts.
+#[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame; fit indices below the fits' count
+fn off_the_path(frames: &mut [FrameFixes], times: &[f64], within: f64, decel: f64) {
+    let centres: Vec<Vec<[f64; 2]>> = (0..2).map(|s| centres_of(frames, s)).collect();
+    let (angle, _, found) = groove(&[&centres[0][..], &centres[1][..]]);
+    let angle = if found { angle } else { 0.0 };
+    let u = (angle.cos(), angle.sin());
+    let t = |k: usize| times.get(k).copied().unwrap_or(k as f64);
+    let path = |frames: &[FrameFixes], slot: usize| -> Vec<(usize, f64)> {
+        frames
+            .iter()
+            .enumerate()
+            .filter_map(|(k, f)| {
+                let c = f[slot].as_ref().ok()?.outline.circle;
+                Some((k, c.x * u.0 + c.y * u.1))
+            })
+            .collect()
+    };
+    let impact = closest_approach(&path(frames, 0), &path(frames, 1), frames.len());
+    // -1 before the impact, +1 after, 0 at it (or none found): two fits are on
+    // one stretch of smooth motion when their sides' product is not negative.
+    let side = |k: usize| impact.map_or(0, |i: usize| (k as i64 - i as i64).signum());
+    let together = |ks: &[usize]| {
+        ks.iter()
+            .all(|&a| ks.iter().all(|&b| side(a) * side(b) >= 0))
+    };
+    for slot in 0..2 {
+        let mut fits = path(frames, slot);
+        loop {
+            let ratio = |i: usize| -> Option<f64> {
+                let (k, s) = fits[i];
+                let line = |a: usize, b: usize| -> Option<f64> {
+                    let ((ka, sa), (kb, sb)) = (*fits.get(a)?, *fits.get(b)?);
+                    if !together(&[ka, kb, k]) || t(kb) == t(ka) {
+                        return None;
+                    }
+                    let at = sa + (sb - sa) * (t(k) - t(ka)) / (t(kb) - t(ka));
+                    let bend = 0.5 * decel * ((t(k) - t(ka)) * (t(k) - t(kb))).abs();
+                    Some((s - at).abs() / (within + bend))
+                };
+                [
+                    i.checked_sub(1).and_then(|a| line(a, i + 1)),
+                    i.checked_sub(2).and_then(|a| line(a, i - 1)),
+                    line(i + 1, i + 2),
+                ]
+                .into_iter()
+                .flatten()
+                .reduce(f64::min)
+            };
+            let worst = (0..fits.len())
+                .filter_map(|i| Some((i, ratio(i)?)))
+                .max_by(|a, b| a.1.total_cmp(&b.1));
+            match worst {
+                Some((i, r)) if r > 1.0 => {
+                    let (k, _) = fits.remove(i);
+                    frames[k][slot] = Err(LeftOut::Poor);
+                }
+                _ => break,
+            }
+        }
+    }
+}
+
+/// The frame where the two balls' paths (frame, place along the groove) come
+/// closest, each followed linearly between its fits; `None` without both.
+fn closest_approach(a: &[(usize, f64)], b: &[(usize, f64)], frames: usize) -> Option<usize> {
+    let at = |p: &[(usize, f64)], k: usize| -> Option<f64> {
+        let i = p.partition_point(|&(j, _)| j < k);
+        let (kb, sb) = *p.get(i)?;
+        if kb == k {
+            return Some(sb);
+        }
+        let (ka, sa) = *p.get(i.checked_sub(1)?)?;
+        Some(sa + (sb - sa) * (k - ka) as f64 / (kb - ka) as f64)
+    };
+    (0..frames)
+        .filter_map(|k| Some((k, (at(b, k)? - at(a, k)?).abs())))
+        .min_by(|x, y| x.1.total_cmp(&y.1))
+        .map(|(k, _)| k)
 }
 
 /// How far `centres` scatter across the groove (whose normal is `n`), RMS px: a
@@ -491,4 +600,93 @@ fn ball_track(
         b.mark_sigma.push(ms);
     }
     b
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::vision::circle::{Circle, Outline};
+    use crate::vision::tracker::Fix;
+
+    fn fix(x: f64, y: f64, r: f64) -> Result<Fix, LeftOut> {
+        Ok(Fix {
+            outline: Outline {
+                circle: Circle { x, y, r },
+                sigma: [0.1; 3],
+                rms: 0.2,
+                points: 60,
+                coverage: 0.5,
+                lowest: y + 0.3 * r,
+                polarity: 1.0,
+            },
+            sigma: 0.1,
+            mark: None,
+        })
+    }
+
+    /// Two balls meeting at frame 10 at 30 frames/s, 1400 px/m, R 38 px: the left
+    /// comes at 1 m/s and stops (decelerating at 3 m/s² after), the right waits and
+    /// leaves at 1 m/s decelerating at 3.7 m/s² (as a struck ball slides).
+    fn collision() -> (Vec<FrameFixes>, Vec<f64>) {
+        let (ppm, fps, r) = (1400.0, 30.0, 38.0);
+        let times: Vec<f64> = (0..24).map(|k| f64::from(k) / fps).collect();
+        let ti = 10.0 / fps;
+        let frames = times
+            .iter()
+            .map(|&t| {
+                let (a, b) = if t < ti {
+                    (300.0 + ppm * (t - ti), 300.0 + 2.0 * r)
+                } else {
+                    let s = t - ti;
+                    (300.0, 300.0 + 2.0 * r + ppm * (s - 0.5 * 3.7 * s * s))
+                };
+                [fix(a, 200.0, r), fix(b, 200.0, r)]
+            })
+            .collect();
+        (frames, times)
+    }
+
+    fn kept(frames: &[FrameFixes]) -> usize {
+        frames.iter().flatten().filter(|f| f.is_ok()).count()
+    }
+
+    #[test]
+    fn a_smooth_collision_keeps_every_fit() {
+        let (mut frames, times) = collision();
+        off_the_path(&mut frames, &times, 0.25 * 38.0, 10.0 * 1400.0);
+        assert_eq!(kept(&frames), 48);
+    }
+
+    #[test]
+    fn a_fit_far_along_the_groove_is_left_out_and_only_it() {
+        // Seed 2 of the looks table: a circle on the wall's squares where the ball
+        // was missed, on the ball's line but 80 px along it; before the impact, at
+        // it and after.
+        for k in [4usize, 10, 11, 17] {
+            let (mut frames, times) = collision();
+            if let Ok(f) = &mut frames[k][1] {
+                f.outline.circle.x += 80.0;
+            }
+            off_the_path(&mut frames, &times, 0.25 * 38.0, 10.0 * 1400.0);
+            assert!(frames[k][1].is_err(), "frame {k}");
+            assert_eq!(kept(&frames), 47, "frame {k}");
+        }
+    }
+
+    #[test]
+    fn a_fit_of_another_radius_is_left_out() {
+        let (mut frames, _) = collision();
+        // Fits scatter by 0.3 px; one is 4 px (10 %) too large.
+        for (k, f) in frames.iter_mut().enumerate() {
+            if let Ok(g) = &mut f[0] {
+                g.outline.circle.r += 0.3 * (k as f64 * 1.7).sin();
+            }
+        }
+        if let Ok(g) = &mut frames[7][1] {
+            g.outline.circle.r = 42.0;
+        }
+        odd_radius(&mut frames, 3.0, 0.02 * 38.0);
+        assert!(frames[7][1].is_err());
+        assert_eq!(kept(&frames), 47);
+    }
 }
