@@ -61,6 +61,12 @@ pub struct Params {
     /// edge points. Default 0.35: the rail hides up to the lower half, a blurred or
     /// touching ball leaves less.
     pub min_coverage: f64,
+    /// … once the balls' radius is known (from the first fits), below this share.
+    /// Default 0.28: a steel or white ball on a wall of its brightness shows an edge
+    /// only along its top (31–33 % of the circle on such looks); the fit's radius
+    /// must then agree with the known one within `max_radius_spread` (not only
+    /// `radius_tolerance`) and with the clip's other fits (`odd_radius`).
+    pub min_coverage_known: f64,
     /// An outline is poor when its edge points scatter more than this about the
     /// circle, px RMS. Default 1.0: a sharp edge gives 0.1–0.3 px, a blur or a
     /// non-round blob more.
@@ -235,6 +241,7 @@ impl Default for Params {
             shadow_darkest: 0.5,
             shadow_hue_levels: 6.0,
             min_coverage: 0.35,
+            min_coverage_known: 0.28,
             max_rms: 1.0,
             radius_tolerance: 0.15,
             smallest_in_blob: 0.6,

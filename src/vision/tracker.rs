@@ -501,7 +501,14 @@ impl Tracker {
     /// coarse look's error, or the search window), then narrowly about the first fit.
     fn refine(&mut self, frame: &Frame, guess: Circle, band: f64) -> Result<Outline, LeftOut> {
         let guess = self.predicted_near(guess).unwrap_or(guess);
-        let p = self.params;
+        let clear = self.params.min_coverage;
+        let mut p = self.params;
+        // A first lock needs a clear outline; once the balls' radius is known, a
+        // circle of that radius needs less of it, if its radius agrees closely with
+        // the known one (and odd fits are left out over the clip).
+        if self.radius().is_some() {
+            p.min_coverage = p.min_coverage.min(p.min_coverage_known);
+        }
         let o = match self.outline(&frame.luma, guess, band, self.polarity) {
             Some(o) if o.outline.coverage >= p.min_coverage => o,
             // Too little outline of one sign: a ball on a wall of its brightness,
@@ -521,9 +528,14 @@ impl Tracker {
             }
         };
         let c = o.outline.circle;
+        let tolerance = if o.outline.coverage < clear {
+            p.radius_tolerance.min(p.max_radius_spread)
+        } else {
+            p.radius_tolerance
+        };
         let r_ok = self
             .radius()
-            .is_none_or(|r| (c.r - r).abs() < p.radius_tolerance * r);
+            .is_none_or(|r| (c.r - r).abs() < tolerance * r);
         // A ghost (where the background learned a ball that is not there now) or a
         // circle fitted to the wall's own pattern: nothing inside differs from
         // around it. Not a ball, and no poor outline of one either.

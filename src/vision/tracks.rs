@@ -156,7 +156,7 @@ pub fn tracks(
     scale: Option<f64>,
 ) -> Result<Tracks, TracksError> {
     let p = &tracker.params;
-    let mut frames = ordered(&tracker.frames);
+    let mut frames = super::mark_check::checked(&ordered(&tracker.frames), &p.marks);
     if let Some(r) = median(tracker.radii()) {
         off_the_line(&mut frames, p.off_the_line * r);
         odd_radius(&mut frames, p.odd_radius, p.odd_radius_share * r);
@@ -169,8 +169,7 @@ pub fn tracks(
             p.max_deceleration * px_per_m,
         );
     }
-    // The marks judged on the fits kept (a mark of a fit left out is no ball's).
-    let frames = &super::mark_check::checked(&frames, &p.marks);
+    let frames = &frames;
     let mut slots = balls_seen(tracker, frames)?;
     let centres: Vec<Vec<[f64; 2]>> = (0..2).map(|s| centres_of(frames, s)).collect();
     let (angle, angle_se, found) =
