@@ -348,8 +348,8 @@ fn odd_radius(frames: &mut [FrameFixes], sigmas: f64, floor: f64) {
 
 /// Leaves out (as poor outlines) the fits that lie along the groove far from where
 /// their ball's motion puts them: each fit against the line through its ball's
-/// neighbouring fits (one either side, or the two before, or the two after, never
-/// across the impact), which must agree with one of them within `within` px plus
+/// neighbouring fits (one either side; at the end of a stretch, the two before or
+/// the two after; never across the impact), which must agree within `within` px plus
 /// what a deceleration of `decel` px/s² bends the motion away from that line. The
 /// worst fit is left out first and the rest judged again (an outlier does not
 /// condemn its neighbours). A circle fitted to the wall's squares where the ball was
@@ -394,14 +394,22 @@ fn off_the_path(frames: &mut [FrameFixes], times: &[f64], within: f64, decel: f6
                     let bend = 0.5 * decel * ((t(k) - t(ka)) * (t(k) - t(kb))).abs();
                     Some((s - at).abs() / (within + bend))
                 };
-                [
-                    i.checked_sub(1).and_then(|a| line(a, i + 1)),
-                    i.checked_sub(2).and_then(|a| line(a, i - 1)),
-                    line(i + 1, i + 2),
-                ]
-                .into_iter()
-                .flatten()
-                .reduce(f64::min)
+                // Between two neighbours of one stretch, the line between them
+                // (two wrong fits in a row would vouch for each other by the
+                // lines before and after); at a stretch's end, either line.
+                // Next to the impact (its frame is found within one: an outlier
+                // can move it), either line too.
+                let at_impact = impact.is_some_and(|j| k.abs_diff(j) <= 1);
+                let between = i.checked_sub(1).filter(|_| !at_impact);
+                between.and_then(|a| line(a, i + 1)).or_else(|| {
+                    [
+                        i.checked_sub(2).and_then(|a| line(a, i - 1)),
+                        line(i + 1, i + 2),
+                    ]
+                    .into_iter()
+                    .flatten()
+                    .reduce(f64::min)
+                })
             };
             let worst = (0..fits.len())
                 .filter_map(|i| Some((i, ratio(i)?)))
@@ -670,6 +678,23 @@ mod tests {
             assert!(frames[k][1].is_err(), "frame {k}");
             assert_eq!(kept(&frames), 47, "frame {k}");
         }
+    }
+
+    #[test]
+    fn two_wrong_fits_in_a_row_do_not_vouch_for_each_other() {
+        // Seed 2 again: after the impact, circles on the wall's squares in frames 14
+        // and 16, 80 and 150 px along the left ball's line, moving away as a ball
+        // would.
+        let (mut frames, times) = collision();
+        for (k, dx) in [(14usize, 80.0), (16, 150.0)] {
+            if let Ok(f) = &mut frames[k][0] {
+                f.outline.circle.x += dx;
+            }
+            frames[k - 1][0] = Err(LeftOut::Poor);
+        }
+        off_the_path(&mut frames, &times, 0.25 * 38.0, 10.0 * 1400.0);
+        assert!(frames[14][0].is_err() && frames[16][0].is_err());
+        assert_eq!(kept(&frames), 44);
     }
 
     #[test]
