@@ -12,14 +12,14 @@ use super::gray::Gray;
 
 /// Where to look: the window's corners, px (left, top, right, bottom).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Window {
+pub struct Area {
     pub left: f64,
     pub top: f64,
     pub right: f64,
     pub bottom: f64,
 }
 
-/// Up to `most` centres of circles of radius `r` px whose centre lies in `window`,
+/// Up to `most` centres of circles of radius `r` px whose centre lies in `area`,
 /// strongest first; `polarity` +1 for a ball brighter than around it, −1 darker,
 /// anything else either. `min_step` is the smallest brightness step (levels) an
 /// edge must have to vote; a centre needs votes from at least `min_arc` of the
@@ -27,7 +27,7 @@ pub struct Window {
 #[allow(clippy::indexing_slicing)] // accumulator cells inside its aw × ah, pixels inside the frame (the box is clipped)
 pub fn centres(
     img: &Gray,
-    window: Window,
+    area: Area,
     r: f64,
     polarity: f64,
     min_step: f64,
@@ -37,20 +37,20 @@ pub fn centres(
     if !(r.is_finite() && r >= 2.0) || img.width < 3 || img.height < 3 {
         return Vec::new();
     }
-    // Edge pixels that can vote for a centre in the window: within r + 1 of it.
+    // Edge pixels that can vote for a centre in the window: within r + 1 of the area.
     let reach = r + 1.0;
     let clip = |v: f64, hi: usize| v.max(1.0).min(hi as f64 - 2.0);
     let (x0, x1) = (
-        clip((window.left - reach).floor(), img.width),
-        clip((window.right + reach).ceil(), img.width),
+        clip((area.left - reach).floor(), img.width),
+        clip((area.right + reach).ceil(), img.width),
     );
     let (y0, y1) = (
-        clip((window.top - reach).floor(), img.height),
-        clip((window.bottom + reach).ceil(), img.height),
+        clip((area.top - reach).floor(), img.height),
+        clip((area.bottom + reach).ceil(), img.height),
     );
-    let (cx0, cy0) = (window.left.floor(), window.top.floor());
-    let aw = (window.right.ceil() - cx0).max(0.0) as usize + 1;
-    let ah = (window.bottom.ceil() - cy0).max(0.0) as usize + 1;
+    let (cx0, cy0) = (area.left.floor(), area.top.floor());
+    let aw = (area.right.ceil() - cx0).max(0.0) as usize + 1;
+    let ah = (area.bottom.ceil() - cy0).max(0.0) as usize + 1;
     if x1 <= x0 || y1 <= y0 || aw * ah > 4_000_000 {
         return Vec::new();
     }
@@ -92,6 +92,22 @@ pub fn centres(
             }
         }
     }
+    let need = (min_arc * std::f64::consts::TAU * r) as f32;
+    strongest(&acc, (aw, ah), (cx0, cy0), r, need, most)
+}
+
+/// The cells of the accumulator `acc` (`aw × ah`, its cell (0, 0) at `origin`, px)
+/// with the most votes within a pixel, at least `need`, no two within `r`; up to
+/// `most`, strongest first.
+#[allow(clippy::indexing_slicing)] // cells inside the aw × ah accumulator
+fn strongest(
+    acc: &[f32],
+    (aw, ah): (usize, usize),
+    (cx0, cy0): (f64, f64),
+    r: f64,
+    need: f32,
+    most: usize,
+) -> Vec<Circle> {
     // Votes within a pixel of each cell (a ball's edge is two or three pixels thick,
     // its centre found within a pixel).
     let sum = |i: usize, j: usize| -> f32 {
@@ -109,7 +125,6 @@ pub fn centres(
             summed[j * aw + i] = sum(i, j);
         }
     }
-    let need = (min_arc * std::f64::consts::TAU * r) as f32;
     let mut out: Vec<Circle> = Vec::new();
     while out.len() < most {
         let Some((best, &v)) = summed.iter().enumerate().max_by(|a, b| a.1.total_cmp(b.1)) else {
@@ -171,7 +186,7 @@ mod tests {
                 g.data[y * w + x] = 60;
             }
         }
-        let win = Window {
+        let win = Area {
             left: 20.0,
             top: 20.0,
             right: 180.0,
@@ -190,7 +205,7 @@ mod tests {
     #[test]
     fn a_plain_frame_has_no_centre() {
         let g = Gray::filled(100, 60, 120);
-        let win = Window {
+        let win = Area {
             left: 10.0,
             top: 10.0,
             right: 90.0,

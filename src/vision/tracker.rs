@@ -378,7 +378,7 @@ impl Tracker {
             .chain(coarse.pairs.iter().take(2));
         let mut guesses: Vec<Circle> = Vec::new();
         for b in blobs {
-            let window = hough::Window {
+            let area = hough::Area {
                 left: b.left,
                 right: b.right,
                 top: b.top + 0.5 * r,
@@ -391,7 +391,7 @@ impl Tracker {
             };
             guesses.extend(hough::centres(
                 &frame.luma,
-                window,
+                area,
                 r,
                 polarity,
                 p.differ_levels,
@@ -405,9 +405,7 @@ impl Tracker {
                 continue;
             }
             if let Ok(o) = self.refine(frame, g, (1.5 * f).max(4.0)) {
-                if !fits.iter().flatten().any(|q| near(q)) {
-                    fits.push(Ok(o));
-                }
+                fits.push(Ok(o));
             }
         }
     }

@@ -157,18 +157,7 @@ pub fn tracks(
 ) -> Result<Tracks, TracksError> {
     let p = &tracker.params;
     let mut frames = super::mark_check::checked(&ordered(&tracker.frames), &p.marks);
-    if let Some(r) = median(tracker.radii()) {
-        off_the_line(&mut frames, p.off_the_line * r);
-        odd_radius(&mut frames, p.odd_radius, p.odd_radius_share * r);
-        // Deceleration in px/s²: the scale given, or the one the radius gives.
-        let px_per_m = scale.unwrap_or(r / radius);
-        off_the_path(
-            &mut frames,
-            &times,
-            p.off_the_line * r,
-            p.max_deceleration * px_per_m,
-        );
-    }
+    leave_out_odd_fits(&mut frames, tracker, &times, radius, scale);
     let frames = &frames;
     let mut slots = balls_seen(tracker, frames)?;
     let centres: Vec<Vec<[f64; 2]>> = (0..2).map(|s| centres_of(frames, s)).collect();
@@ -316,6 +305,30 @@ fn off_the_line(frames: &mut [FrameFixes], within: f64) {
                 }
             }
         }
+    }
+}
+
+/// Leaves out (as poor outlines) the fits that are no ball's: off their ball's
+/// line, of an odd radius, far along the groove from where the motion puts them.
+fn leave_out_odd_fits(
+    frames: &mut [FrameFixes],
+    tracker: &Tracker,
+    times: &[f64],
+    radius: f64,
+    scale: Option<f64>,
+) {
+    let p = &tracker.params;
+    if let Some(r) = median(tracker.radii()) {
+        off_the_line(frames, p.off_the_line * r);
+        odd_radius(frames, p.odd_radius, p.odd_radius_share * r);
+        // Deceleration in px/s²: the scale given, or the one the radius gives.
+        let px_per_m = scale.unwrap_or(r / radius);
+        off_the_path(
+            frames,
+            times,
+            p.off_the_line * r,
+            p.max_deceleration * px_per_m,
+        );
     }
 }
 
