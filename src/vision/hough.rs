@@ -12,7 +12,7 @@ use super::gray::Gray;
 
 /// Where to look: the window's corners, px (left, top, right, bottom).
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Area {
+pub struct HoughArea {
     pub left: f64,
     pub top: f64,
     pub right: f64,
@@ -27,7 +27,7 @@ pub struct Area {
 #[allow(clippy::indexing_slicing)] // accumulator cells inside its aw × ah, pixels inside the frame (the box is clipped)
 pub fn centres(
     img: &Gray,
-    area: Area,
+    area: HoughArea,
     r: f64,
     polarity: f64,
     min_step: f64,
@@ -186,7 +186,7 @@ mod tests {
                 g.data[y * w + x] = 60;
             }
         }
-        let win = Area {
+        let win = HoughArea {
             left: 20.0,
             top: 20.0,
             right: 180.0,
@@ -205,7 +205,7 @@ mod tests {
     #[test]
     fn a_plain_frame_has_no_centre() {
         let g = Gray::filled(100, 60, 120);
-        let win = Area {
+        let win = HoughArea {
             left: 10.0,
             top: 10.0,
             right: 90.0,

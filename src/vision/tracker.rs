@@ -378,7 +378,7 @@ impl Tracker {
             .chain(coarse.pairs.iter().take(2));
         let mut guesses: Vec<Circle> = Vec::new();
         for b in blobs {
-            let area = hough::Area {
+            let area = hough::HoughArea {
                 left: b.left,
                 right: b.right,
                 top: b.top + 0.5 * r,
