@@ -425,67 +425,97 @@ fn verdict_lines(m: &ModelFit, lines: &mut Ranked<'static>, theme: &Theme) {
     ));
 }
 
-/// A position track's two model fits side by side: to the derived velocities and to
-/// the positions themselves, each with μ_k ± 2σ, RMS and its verdict.
+/// The model fit of a position track beside the same model fitted to its derived
+/// velocities: a table of two columns where the panel holds both at the widths they
+/// print; else the position fit (the one to quote) alone, and a line for the other.
 fn both_fits(v: &ModelFit, p: &ModelFit, width: usize, lines: &mut Ranked<'static>, theme: &Theme) {
     let g = theme.glyphs;
-    // Two value columns of up to 15 characters, the label column takes the rest.
-    let col = ((width.saturating_sub(6)) / 2).min(15);
-    let decimals = if col >= 15 { 4 } else { 3 };
-    let head = width.saturating_sub(2 * col);
-    let cell = |m: &ModelFit| {
-        if m.undetermined("mu").is_some() {
+    let len = |s: &str| s.chars().count();
+    let mu_label = g.text(&format!("{}_k 2{}", g.mu, if g.ascii { "s" } else { "σ" }));
+    let labels = [mu_label.as_str(), "RMS", "predicted", "observed", "verdict"];
+    let head = labels.iter().map(|l| len(l)).max().unwrap_or(0) + 1;
+    let cells = |m: &ModelFit, decimals: usize| -> [String; 5] {
+        let mu = if m.undetermined("mu").is_some() {
             "not determined".to_string()
         } else if m.mu_se.is_finite() {
             pm_tight(m.mu, 2.0 * m.mu_se, decimals)
         } else {
             format!("{:.decimals$}", m.mu)
+        };
+        let rms = match m.fitted_to {
+            "positions" => format!("{:.2}", show_small(m.rms, Dimension::Length)),
+            _ => format!("{:.3} m/s", m.rms),
+        };
+        [
+            mu,
+            rms,
+            m.regime_predicted.name().into(),
+            m.regime_observed.name().into(),
+            m.agreement().word().into(),
+        ]
+        .map(|c| g.text(&c))
+    };
+    // Each column one space wider than its widest cell; fewer decimals before fewer
+    // columns.
+    let col_of =
+        |c: &[String], title: &str| c.iter().map(|s| len(s)).max().unwrap_or(0).max(len(title)) + 1;
+    let two = [4, 3].into_iter().find_map(|d| {
+        let (cv, cp) = (cells(v, d), cells(p, d));
+        let (wv, wp) = (col_of(&cv, "velocities"), col_of(&cp, "positions"));
+        (head + wv + wp <= width).then_some((cv, cp, wv, wp))
+    });
+    let model = g.text(&model_name(&p.model, theme));
+    // Priorities: μ_k and whether the fit agrees with what was seen stay on the
+    // smallest screen; the note on which ± to quote goes first.
+    let ranks = [9, 5, 8, 7, 9];
+    match two {
+        Some((cv, cp, wv, wp)) => {
+            let head = width - wv - wp;
+            let row = |name: &str, a: &str, b: &str| format!("{name:<head$}{a:>wv$}{b:>wp$}");
+            let title = if len(&model) < head {
+                row(&model, "velocities", "positions")
+            } else {
+                lines.push((6, Line::from(Span::styled(model.clone(), theme.title))));
+                row("", "velocities", "positions")
+            };
+            lines.push((6, Line::from(Span::styled(title, theme.title))));
+            for (i, label) in labels.iter().enumerate() {
+                let (a, b) = (cv.get(i), cp.get(i));
+                let text = row(label, a.map_or("", |s| s), b.map_or("", |s| s));
+                lines.push((ranks[i], Line::from(Span::styled(text, theme.text))));
+            }
         }
-    };
-    let row = |name: &str, a: String, b: String, style| {
-        Line::from(Span::styled(
-            g.text(&format!("{name:<head$}{a:>col$}{b:>col$}")),
-            style,
-        ))
-    };
-    // Priorities: μ_k of both fits and whether each agrees with what was seen stay
-    // on the smallest screen; the note on which ± to quote goes first.
-    lines.push((
-        6,
-        row(
-            &model_name(&p.model, theme),
-            "velocities".into(),
-            "positions".into(),
-            theme.title,
-        ),
-    ));
-    lines.push((
-        9,
-        row(
-            &format!("{}_k 2{}", g.mu, if g.ascii { "s" } else { "σ" }),
-            cell(v),
-            cell(p),
-            theme.text,
-        ),
-    ));
-    lines.push((
-        5,
-        row(
-            "RMS",
-            format!("{:.3} m/s", v.rms),
-            format!("{:.2}", show_small(p.rms, Dimension::Length)),
-            theme.text,
-        ),
-    ));
-    // One row per question, each labelled by what it says: the regime each fit
-    // predicts, the one each observed, and whether they agree (in the words `fit`
-    // prints: one rule, `ModelFit::agreement`).
-    let regimes = |name: &str, f: fn(&ModelFit) -> &'static str| {
-        row(name, f(v).into(), f(p).into(), theme.text)
-    };
-    lines.push((8, regimes("predicted", |m| m.regime_predicted.name())));
-    lines.push((7, regimes("observed", |m| m.regime_observed.name())));
-    lines.push((9, regimes("verdict", |m| m.agreement().word())));
+        None => {
+            let cp = cells(p, 4);
+            let cp = if head + col_of(&cp, "") <= width {
+                cp
+            } else {
+                cells(p, 3)
+            };
+            lines.push((
+                6,
+                Line::from(Span::styled(format!("{model}, positions"), theme.title)),
+            ));
+            for (i, label) in labels.iter().enumerate() {
+                let value = cp.get(i).map_or("", |s| s);
+                lines.push((
+                    ranks[i],
+                    Line::from(vec![
+                        Span::styled(format!("{label:<head$}"), theme.dim),
+                        Span::styled(value.to_string(), theme.text),
+                    ]),
+                ));
+            }
+            let cv = cells(v, 3);
+            lines.push((
+                6,
+                Line::from(vec![
+                    Span::styled("velocities: ", theme.dim),
+                    Span::styled(format!("{} {}", cv[0], cv[4]), theme.text),
+                ]),
+            ));
+        }
+    }
     lines.push((
         7,
         Line::from(vec![
@@ -527,7 +557,7 @@ impl MainView for FitView {
     }
 
     fn prepare(&self, app: &App, cache: &mut ViewCache, chart: Rect, theme: &Theme) -> Prepared {
-        super::charts::prepared(app, cache, chart, theme)
+        super::charts::prepared(app, cache, chart, theme, super::charts::Extras::LineFits)
     }
 
     fn parts(&self, app: &App) -> Vec<(&'static dyn Component, Place)> {
