@@ -50,7 +50,9 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         State::Ready(Ok(f)) => {
             let mut lines = sources_lines(app, theme);
             match (&f.line_fit, &f.no_line_fit) {
-                (Some(l), _) => lines.extend(line_fit_lines(l, app, theme)),
+                (Some(l), _) => {
+                    lines.extend(line_fit_lines(l, app, usize::from(inner.width), theme))
+                }
                 // Beside the model fits, which need none.
                 (None, why) => lines.push((
                     5,
@@ -160,11 +162,11 @@ fn sources_lines(app: &App, theme: &Theme) -> Ranked<'static> {
 
 /// The paper's method: straight lines over the sliding phase, their accelerations,
 /// μ_k and the net force and torque.
-fn line_fit_lines(l: &fit::LineFit, app: &App, theme: &Theme) -> Ranked<'static> {
+fn line_fit_lines(l: &fit::LineFit, app: &App, width: usize, theme: &Theme) -> Ranked<'static> {
     let g = theme.glyphs;
     let label = |s: &str| Span::styled(g.text(s), theme.dim);
     let value = |s: String| Span::styled(g.text(&s), theme.text);
-    vec![
+    let mut lines: Ranked<'static> = vec![
         (
             5,
             Line::from(Span::styled(
@@ -186,51 +188,60 @@ fn line_fit_lines(l: &fit::LineFit, app: &App, theme: &Theme) -> Ranked<'static>
                 )),
             ]),
         ),
-        (
-            7,
-            Line::from(vec![
-                label("|a_cm| "),
-                value(format!(
-                    "{} m/s{}",
-                    pm_tight(l.a_cm, l.a_cm_se, 2),
-                    g.squared
-                )),
-                label(&format!("  {}_cm ", g.mu)),
-                value(format!("{:.3}", l.mu_cm)),
-            ]),
-        ),
-        (
-            7,
-            Line::from(vec![
-                label("|a_t|  "),
-                value(if l.a_t.is_finite() {
-                    format!(
-                        "{} m/s{}  {}_t {:.3}",
-                        pm_tight(l.a_t, l.a_t_se, 2),
-                        g.squared,
-                        g.mu,
-                        l.mu_t
-                    )
-                } else {
-                    format!("and {}_t not measured (no rim mark)", g.mu)
-                }),
-            ]),
-        ),
-        (
-            1,
-            Line::from(vec![
-                label("|F_net| "),
-                value(format!("{:.3} N", l.f_net)),
-                label(&format!("  |{}_net| ", g.tau)),
-                value(format!("{:.4} N m", l.tau_net)),
-                label(if app.lab.settings().mass_assumed() {
-                    "  (m assumed)"
-                } else {
-                    ""
-                }),
-            ]),
-        ),
-    ]
+    ];
+    // Each acceleration with its μ_k on one line where the panel holds it, else the
+    // μ_k on the line below (not a word wrapped off on its own).
+    let mut accelerations = |name: &str, a: String, mu: Option<String>| {
+        let a = g.text(&a);
+        let mu = mu.map(|m| g.text(&m));
+        let len = name.chars().count()
+            + a.chars().count()
+            + mu.as_ref().map_or(0, |m| m.chars().count() + 2);
+        match mu {
+            Some(m) if len > width => {
+                lines.push((7, Line::from(vec![label(name), value(a)])));
+                lines.push((7, Line::from(vec![label("       "), value(m)])));
+            }
+            Some(m) => lines.push((
+                7,
+                Line::from(vec![label(name), value(a), label("  "), value(m)]),
+            )),
+            None => lines.push((7, Line::from(vec![label(name), value(a)]))),
+        }
+    };
+    accelerations(
+        "|a_cm| ",
+        format!("{} m/s{}", pm_tight(l.a_cm, l.a_cm_se, 2), g.squared),
+        Some(format!("{}_cm {:.3}", g.mu, l.mu_cm)),
+    );
+    if l.a_t.is_finite() {
+        accelerations(
+            "|a_t|  ",
+            format!("{} m/s{}", pm_tight(l.a_t, l.a_t_se, 2), g.squared),
+            Some(format!("{}_t {:.3}", g.mu, l.mu_t)),
+        );
+    } else {
+        accelerations(
+            "|a_t|  ",
+            format!("and {}_t not measured (no rim mark)", g.mu),
+            None,
+        );
+    }
+    lines.push((
+        1,
+        Line::from(vec![
+            label("|F_net| "),
+            value(format!("{:.3} N", l.f_net)),
+            label(&format!("  |{}_net| ", g.tau)),
+            value(format!("{:.4} N m", l.tau_net)),
+            label(if app.lab.settings().mass_assumed() {
+                "  (m assumed)"
+            } else {
+                ""
+            }),
+        ]),
+    ));
+    lines
 }
 
 /// The paper's table-1 row for this width, and where that row contradicts itself
@@ -478,7 +489,8 @@ fn both_fits(v: &ModelFit, p: &ModelFit, width: usize, lines: &mut Ranked<'stati
                 lines.push((6, Line::from(Span::styled(model.clone(), theme.title))));
                 row("", "velocities", "positions")
             };
-            lines.push((6, Line::from(Span::styled(title, theme.title))));
+            // The columns' heads stay while their cells do.
+            lines.push((9, Line::from(Span::styled(title, theme.title))));
             for (i, label) in labels.iter().enumerate() {
                 let (a, b) = (cv.get(i), cp.get(i));
                 let text = row(label, a.map_or("", |s| s), b.map_or("", |s| s));
