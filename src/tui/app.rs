@@ -215,6 +215,7 @@ impl App {
             span,
             derived,
             shown: main.shown(),
+            charts_shown: main.charts_shown(),
             pointer,
         };
         (main, cx)

@@ -90,7 +90,7 @@ fn describe(points: &[[f64; 2]], c: Circle, polarity: f64) -> Outline {
     let mut lowest = f64::NEG_INFINITY;
     for p in points {
         let (dx, dy) = (p[0] - c.x, p[1] - c.y);
-        let rho = dx.hypot(dy).max(1e-9);
+        let rho = length(dx, dy).max(1e-9);
         let j = [dx / rho, dy / rho, 1.0];
         for i in 0..3 {
             for k in 0..3 {
@@ -116,7 +116,15 @@ fn describe(points: &[[f64; 2]], c: Circle, polarity: f64) -> Outline {
 }
 
 fn dist(p: &[f64; 2], c: &Circle) -> f64 {
-    (p[0] - c.x).hypot(p[1] - c.y)
+    length(p[0] - c.x, p[1] - c.y)
+}
+
+/// The length of (dx, dy) in pixels: a plain square root, as pixel offsets neither
+/// overflow nor underflow (`f64::hypot` guards against both, at several times the
+/// cost, in the fit's innermost loops).
+#[inline]
+fn length(dx: f64, dy: f64) -> f64 {
+    (dx * dx + dy * dy).sqrt()
 }
 
 /// Gauss–Newton on the geometric distances from `start`; `None` if it diverges.
@@ -127,7 +135,7 @@ fn geometric(points: &[[f64; 2]], start: Circle) -> Option<Circle> {
         let (mut a, mut g) = ([[0.0f64; 3]; 3], [0.0f64; 3]);
         for p in points {
             let (dx, dy) = (p[0] - c.x, p[1] - c.y);
-            let rho = dx.hypot(dy).max(1e-9);
+            let rho = length(dx, dy).max(1e-9);
             let res = rho - c.r;
             let j = [-dx / rho, -dy / rho, -1.0];
             for i in 0..3 {
@@ -181,7 +189,7 @@ fn gradient(
             let i = (y - y0) as usize * bw + (x - x0) as usize;
             gx[i] = sx / 8.0;
             gy[i] = sy / 8.0;
-            mag[i] = gx[i].hypot(gy[i]);
+            mag[i] = (gx[i] * gx[i] + gy[i] * gy[i]).sqrt();
         }
     }
     (gx, gy, mag)
@@ -206,9 +214,18 @@ fn edge_points(
         return None;
     }
     let bw = (x1 - x0 + 1) as usize;
+    // Within band + extra of the circle: between two squared radii, no root taken
+    // per pixel of the box.
+    let squared = |extra: f64| {
+        let (lo, hi) = ((guess.r - band - extra).max(0.0), guess.r + band + extra);
+        (lo * lo, hi * hi)
+    };
+    let (inner, outer) = (squared(0.0), squared(1.5));
     let near = |x: isize, y: isize, extra: f64| {
-        let d = (x as f64 - guess.x).hypot(y as f64 - guess.y) - guess.r;
-        d.abs() <= band + extra
+        let (lo, hi) = if extra > 0.0 { outer } else { inner };
+        let (dx, dy) = (x as f64 - guess.x, y as f64 - guess.y);
+        let d2 = dx * dx + dy * dy;
+        lo <= d2 && d2 <= hi
     };
     let (gx, gy, mag) = gradient(img, (x0, y0, x1, y1), &near);
     let mut found: Vec<([f64; 2], f32, f64)> = Vec::new();
@@ -223,7 +240,7 @@ fn edge_points(
                 continue;
             }
             let (rx, ry) = (x as f64 - guess.x, y as f64 - guess.y);
-            let rho = rx.hypot(ry).max(1e-9);
+            let rho = length(rx, ry).max(1e-9);
             let along = (f64::from(gx[i]) * rx + f64::from(gy[i]) * ry) / rho;
             if along.abs() < 0.9 * f64::from(m) {
                 continue;

@@ -44,18 +44,24 @@ impl Gray {
         let f = factor.max(1);
         let (w, h) = (self.width / f, self.height / f);
         let mut out = vec![0.0f32; w * h];
-        let mut row = vec![0u32; w];
+        // Each block row's lines summed per column first (a plain add the compiler
+        // vectorises), then each block's columns: a pass over the frame's bytes
+        // costs one add each, not a short sum per block per line.
+        let mut columns = vec![0u32; w * f];
         for by in 0..h {
-            row.iter_mut().for_each(|v| *v = 0);
+            columns.iter_mut().for_each(|v| *v = 0);
             for y in by * f..(by + 1) * f {
                 let line = &self.data[y * self.width..y * self.width + w * f];
-                for (bx, block) in line.chunks_exact(f).enumerate() {
-                    row[bx] += block.iter().map(|&v| u32::from(v)).sum::<u32>();
+                for (c, &v) in columns.iter_mut().zip(line) {
+                    *c += u32::from(v);
                 }
             }
             let norm = 1.0 / (f * f) as f32;
-            for (o, &s) in out[by * w..(by + 1) * w].iter_mut().zip(&row) {
-                *o = s as f32 * norm;
+            for (o, block) in out[by * w..(by + 1) * w]
+                .iter_mut()
+                .zip(columns.chunks_exact(f))
+            {
+                *o = block.iter().sum::<u32>() as f32 * norm;
             }
         }
         Levels {

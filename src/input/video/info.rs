@@ -49,7 +49,7 @@ impl Info {
 
 /// A frame source: each item one frame (in colour) and its number (a folder's numbers
 /// may skip; a video's count up from 0).
-pub type Frames = Box<dyn Iterator<Item = Result<(u64, Frame), VideoError>>>;
+pub type Frames = Box<dyn Iterator<Item = Result<(u64, Frame), VideoError>> + Send>;
 
 /// How much video `track` takes on: larger is refused before any frame is decoded.
 #[derive(Clone, Copy, Debug, PartialEq)]

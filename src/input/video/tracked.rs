@@ -94,7 +94,19 @@ pub fn track(
         thumbs.push(tracked, &img.luma);
         tracked += 1;
     };
-    for frame in frames {
+    // The frames are read (piped from ffmpeg, or decoded from a folder) on a thread
+    // of their own, a few ahead, while this one tracks: reading a 1080p frame is a
+    // copy of 3 MB. Dropping the receiver (an error, Ctrl-C) ends the reader at its
+    // next frame, and the decoder with it.
+    let (sender, received) = std::sync::mpsc::sync_channel(READ_AHEAD);
+    std::thread::spawn(move || {
+        for frame in frames {
+            if sender.send(frame).is_err() {
+                break;
+            }
+        }
+    });
+    for frame in received {
         if progress.cancelled() {
             return Ok(None);
         }
@@ -138,6 +150,9 @@ pub fn track(
         view,
     }))
 }
+
+/// Frames the reader may decode ahead of the tracker (on top of its look-ahead).
+const READ_AHEAD: usize = 4;
 
 /// Most bytes of decoded frames held at once while the background learns ahead of
 /// the tracker: 256 MiB (82 frames of 1080p, 185 of 720p, 420 of 480p).

@@ -53,11 +53,6 @@ impl App {
         self.layers.main().shown()
     }
 
-    /// True in the Fit view (charts with fit lines, the Fit panel).
-    pub fn fit_view(&self) -> bool {
-        self.view() == View::Fit
-    }
-
     /// The Charts view's state.
     pub fn charts(&self) -> &ChartState {
         &self.layers.main().get::<Charts>().state

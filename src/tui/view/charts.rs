@@ -48,15 +48,30 @@ fn event_lines(app: &App, balls: &[Who], theme: &Theme) -> Vec<VLine> {
         .collect()
 }
 
+/// What a view's chart shows beside the runs and the data.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Extras {
+    /// Nothing more (the Charts view).
+    None,
+    /// The line fits over the sliding phase, where a fit is ready (the Fit view).
+    LineFits,
+}
+
 /// The chart shown in `area` (before drawing, with the screen's caches), and whether
 /// measured series were thinned for it now.
-pub fn build(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Chart, bool) {
+pub fn build(
+    app: &App,
+    cache: &mut ViewCache,
+    area: Rect,
+    theme: &Theme,
+    extras: Extras,
+) -> (Chart, bool) {
     let (mut titles, mut plot) = if app.charts().energy() {
         energy(app, cache, area, theme)
     } else if app.charts().positions() {
         positions(app, cache, area, theme)
     } else {
-        velocities(app, cache, area, theme)
+        velocities(app, cache, area, theme, extras)
     };
     let factor = app.charts().zoom().factor(app.chart_span());
     if factor > 1.0 + 1e-9 {
@@ -343,7 +358,13 @@ fn overlay_velocities(app: &App, balls: &[usize], columns: usize, theme: &Theme)
     series
 }
 
-fn velocities(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (Vec<String>, Plot) {
+fn velocities(
+    app: &App,
+    cache: &mut ViewCache,
+    area: Rect,
+    theme: &Theme,
+    extras: Extras,
+) -> (Vec<String>, Plot) {
     let columns = usize::from(area.width.saturating_sub(10));
     let samples = cache.samples(&app.lab, (columns, app.chart_range()));
     let (balls, which) = balls_shown(app.charts().ball());
@@ -364,7 +385,7 @@ fn velocities(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> (V
         series.extend(measured_velocities(m, theme));
     }
     let mut vlines = Vec::new();
-    if let (true, State::Ready(Ok(f))) = (app.fit_view(), app.fit().fits())
+    if let (Extras::LineFits, State::Ready(Ok(f))) = (extras, app.fit().fits())
         && let Some(l) = &f.line_fit
     {
         let (lines, ends) = line_fit_marks(l, theme);
@@ -578,8 +599,14 @@ pub(super) const ENERGY_WITHHELD: Withheld = Withheld {
 };
 
 /// The chart of the views that show one, built on `area` ([`build`]).
-pub(super) fn prepared(app: &App, cache: &mut ViewCache, area: Rect, theme: &Theme) -> Prepared {
-    let (chart, marks_thinned) = build(app, cache, area, theme);
+pub(super) fn prepared(
+    app: &App,
+    cache: &mut ViewCache,
+    area: Rect,
+    theme: &Theme,
+    extras: Extras,
+) -> Prepared {
+    let (chart, marks_thinned) = build(app, cache, area, theme, extras);
     Prepared {
         chart: Some(chart),
         regimes: None,
@@ -596,7 +623,7 @@ impl MainView for ChartsView {
     }
 
     fn prepare(&self, app: &App, cache: &mut ViewCache, chart: Rect, theme: &Theme) -> Prepared {
-        prepared(app, cache, chart, theme)
+        prepared(app, cache, chart, theme, Extras::None)
     }
 
     fn parts(&self, app: &App) -> Vec<(&'static dyn Component, Place)> {

@@ -50,7 +50,9 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         State::Ready(Ok(f)) => {
             let mut lines = sources_lines(app, theme);
             match (&f.line_fit, &f.no_line_fit) {
-                (Some(l), _) => lines.extend(line_fit_lines(l, app, theme)),
+                (Some(l), _) => {
+                    lines.extend(line_fit_lines(l, app, usize::from(inner.width), theme))
+                }
                 // Beside the model fits, which need none.
                 (None, why) => lines.push((
                     5,
@@ -160,11 +162,11 @@ fn sources_lines(app: &App, theme: &Theme) -> Ranked<'static> {
 
 /// The paper's method: straight lines over the sliding phase, their accelerations,
 /// μ_k and the net force and torque.
-fn line_fit_lines(l: &fit::LineFit, app: &App, theme: &Theme) -> Ranked<'static> {
+fn line_fit_lines(l: &fit::LineFit, app: &App, width: usize, theme: &Theme) -> Ranked<'static> {
     let g = theme.glyphs;
     let label = |s: &str| Span::styled(g.text(s), theme.dim);
     let value = |s: String| Span::styled(g.text(&s), theme.text);
-    vec![
+    let mut lines: Ranked<'static> = vec![
         (
             5,
             Line::from(Span::styled(
@@ -186,51 +188,60 @@ fn line_fit_lines(l: &fit::LineFit, app: &App, theme: &Theme) -> Ranked<'static>
                 )),
             ]),
         ),
-        (
-            7,
-            Line::from(vec![
-                label("|a_cm| "),
-                value(format!(
-                    "{} m/s{}",
-                    pm_tight(l.a_cm, l.a_cm_se, 2),
-                    g.squared
-                )),
-                label(&format!("  {}_cm ", g.mu)),
-                value(format!("{:.3}", l.mu_cm)),
-            ]),
-        ),
-        (
-            7,
-            Line::from(vec![
-                label("|a_t|  "),
-                value(if l.a_t.is_finite() {
-                    format!(
-                        "{} m/s{}  {}_t {:.3}",
-                        pm_tight(l.a_t, l.a_t_se, 2),
-                        g.squared,
-                        g.mu,
-                        l.mu_t
-                    )
-                } else {
-                    format!("and {}_t not measured (no rim mark)", g.mu)
-                }),
-            ]),
-        ),
-        (
-            1,
-            Line::from(vec![
-                label("|F_net| "),
-                value(format!("{:.3} N", l.f_net)),
-                label(&format!("  |{}_net| ", g.tau)),
-                value(format!("{:.4} N m", l.tau_net)),
-                label(if app.lab.settings().mass_assumed() {
-                    "  (m assumed)"
-                } else {
-                    ""
-                }),
-            ]),
-        ),
-    ]
+    ];
+    // Each acceleration with its μ_k on one line where the panel holds it, else the
+    // μ_k on the line below (not a word wrapped off on its own).
+    let mut accelerations = |name: &str, a: String, mu: Option<String>| {
+        let a = g.text(&a);
+        let mu = mu.map(|m| g.text(&m));
+        let len = name.chars().count()
+            + a.chars().count()
+            + mu.as_ref().map_or(0, |m| m.chars().count() + 2);
+        match mu {
+            Some(m) if len > width => {
+                lines.push((7, Line::from(vec![label(name), value(a)])));
+                lines.push((7, Line::from(vec![label("       "), value(m)])));
+            }
+            Some(m) => lines.push((
+                7,
+                Line::from(vec![label(name), value(a), label("  "), value(m)]),
+            )),
+            None => lines.push((7, Line::from(vec![label(name), value(a)]))),
+        }
+    };
+    accelerations(
+        "|a_cm| ",
+        format!("{} m/s{}", pm_tight(l.a_cm, l.a_cm_se, 2), g.squared),
+        Some(format!("{}_cm {:.3}", g.mu, l.mu_cm)),
+    );
+    if l.a_t.is_finite() {
+        accelerations(
+            "|a_t|  ",
+            format!("{} m/s{}", pm_tight(l.a_t, l.a_t_se, 2), g.squared),
+            Some(format!("{}_t {:.3}", g.mu, l.mu_t)),
+        );
+    } else {
+        accelerations(
+            "|a_t|  ",
+            format!("and {}_t not measured (no rim mark)", g.mu),
+            None,
+        );
+    }
+    lines.push((
+        1,
+        Line::from(vec![
+            label("|F_net| "),
+            value(format!("{:.3} N", l.f_net)),
+            label(&format!("  |{}_net| ", g.tau)),
+            value(format!("{:.4} N m", l.tau_net)),
+            label(if app.lab.settings().mass_assumed() {
+                "  (m assumed)"
+            } else {
+                ""
+            }),
+        ]),
+    ));
+    lines
 }
 
 /// The paper's table-1 row for this width, and where that row contradicts itself
@@ -425,67 +436,98 @@ fn verdict_lines(m: &ModelFit, lines: &mut Ranked<'static>, theme: &Theme) {
     ));
 }
 
-/// A position track's two model fits side by side: to the derived velocities and to
-/// the positions themselves, each with μ_k ± 2σ, RMS and its verdict.
+/// The model fit of a position track beside the same model fitted to its derived
+/// velocities: a table of two columns where the panel holds both at the widths they
+/// print; else the position fit (the one to quote) alone, and a line for the other.
 fn both_fits(v: &ModelFit, p: &ModelFit, width: usize, lines: &mut Ranked<'static>, theme: &Theme) {
     let g = theme.glyphs;
-    // Two value columns of up to 15 characters, the label column takes the rest.
-    let col = ((width.saturating_sub(6)) / 2).min(15);
-    let decimals = if col >= 15 { 4 } else { 3 };
-    let head = width.saturating_sub(2 * col);
-    let cell = |m: &ModelFit| {
-        if m.undetermined("mu").is_some() {
+    let len = |s: &str| s.chars().count();
+    let mu_label = g.text(&format!("{}_k 2{}", g.mu, if g.ascii { "s" } else { "σ" }));
+    let labels = [mu_label.as_str(), "RMS", "predicted", "observed", "verdict"];
+    let head = labels.iter().map(|l| len(l)).max().unwrap_or(0) + 1;
+    let cells = |m: &ModelFit, decimals: usize| -> [String; 5] {
+        let mu = if m.undetermined("mu").is_some() {
             "not determined".to_string()
         } else if m.mu_se.is_finite() {
             pm_tight(m.mu, 2.0 * m.mu_se, decimals)
         } else {
             format!("{:.decimals$}", m.mu)
+        };
+        let rms = match m.fitted_to {
+            "positions" => format!("{:.2}", show_small(m.rms, Dimension::Length)),
+            _ => format!("{:.3} m/s", m.rms),
+        };
+        [
+            mu,
+            rms,
+            m.regime_predicted.name().into(),
+            m.regime_observed.name().into(),
+            m.agreement().word().into(),
+        ]
+        .map(|c| g.text(&c))
+    };
+    // Each column one space wider than its widest cell; fewer decimals before fewer
+    // columns.
+    let col_of =
+        |c: &[String], title: &str| c.iter().map(|s| len(s)).max().unwrap_or(0).max(len(title)) + 1;
+    let two = [4, 3].into_iter().find_map(|d| {
+        let (cv, cp) = (cells(v, d), cells(p, d));
+        let (wv, wp) = (col_of(&cv, "velocities"), col_of(&cp, "positions"));
+        (head + wv + wp <= width).then_some((cv, cp, wv, wp))
+    });
+    let model = g.text(&model_name(&p.model, theme));
+    // Priorities: μ_k and whether the fit agrees with what was seen stay on the
+    // smallest screen; the note on which ± to quote goes first.
+    let ranks = [9, 5, 8, 7, 9];
+    match two {
+        Some((cv, cp, wv, wp)) => {
+            let head = width - wv - wp;
+            let row = |name: &str, a: &str, b: &str| format!("{name:<head$}{a:>wv$}{b:>wp$}");
+            let title = if len(&model) < head {
+                row(&model, "velocities", "positions")
+            } else {
+                lines.push((6, Line::from(Span::styled(model.clone(), theme.title))));
+                row("", "velocities", "positions")
+            };
+            // The columns' heads stay while their cells do.
+            lines.push((9, Line::from(Span::styled(title, theme.title))));
+            for (i, label) in labels.iter().enumerate() {
+                let (a, b) = (cv.get(i), cp.get(i));
+                let text = row(label, a.map_or("", |s| s), b.map_or("", |s| s));
+                lines.push((ranks[i], Line::from(Span::styled(text, theme.text))));
+            }
         }
-    };
-    let row = |name: &str, a: String, b: String, style| {
-        Line::from(Span::styled(
-            g.text(&format!("{name:<head$}{a:>col$}{b:>col$}")),
-            style,
-        ))
-    };
-    // Priorities: μ_k of both fits and whether each agrees with what was seen stay
-    // on the smallest screen; the note on which ± to quote goes first.
-    lines.push((
-        6,
-        row(
-            &model_name(&p.model, theme),
-            "velocities".into(),
-            "positions".into(),
-            theme.title,
-        ),
-    ));
-    lines.push((
-        9,
-        row(
-            &format!("{}_k 2{}", g.mu, if g.ascii { "s" } else { "σ" }),
-            cell(v),
-            cell(p),
-            theme.text,
-        ),
-    ));
-    lines.push((
-        5,
-        row(
-            "RMS",
-            format!("{:.3} m/s", v.rms),
-            format!("{:.2}", show_small(p.rms, Dimension::Length)),
-            theme.text,
-        ),
-    ));
-    // One row per question, each labelled by what it says: the regime each fit
-    // predicts, the one each observed, and whether they agree (in the words `fit`
-    // prints: one rule, `ModelFit::agreement`).
-    let regimes = |name: &str, f: fn(&ModelFit) -> &'static str| {
-        row(name, f(v).into(), f(p).into(), theme.text)
-    };
-    lines.push((8, regimes("predicted", |m| m.regime_predicted.name())));
-    lines.push((7, regimes("observed", |m| m.regime_observed.name())));
-    lines.push((9, regimes("verdict", |m| m.agreement().word())));
+        None => {
+            let cp = cells(p, 4);
+            let cp = if head + col_of(&cp, "") <= width {
+                cp
+            } else {
+                cells(p, 3)
+            };
+            lines.push((
+                6,
+                Line::from(Span::styled(format!("{model}, positions"), theme.title)),
+            ));
+            for (i, label) in labels.iter().enumerate() {
+                let value = cp.get(i).map_or("", |s| s);
+                lines.push((
+                    ranks[i],
+                    Line::from(vec![
+                        Span::styled(format!("{label:<head$}"), theme.dim),
+                        Span::styled(value.to_string(), theme.text),
+                    ]),
+                ));
+            }
+            let cv = cells(v, 3);
+            lines.push((
+                6,
+                Line::from(vec![
+                    Span::styled("velocities: ", theme.dim),
+                    Span::styled(format!("{} {}", cv[0], cv[4]), theme.text),
+                ]),
+            ));
+        }
+    }
     lines.push((
         7,
         Line::from(vec![
@@ -527,7 +569,7 @@ impl MainView for FitView {
     }
 
     fn prepare(&self, app: &App, cache: &mut ViewCache, chart: Rect, theme: &Theme) -> Prepared {
-        super::charts::prepared(app, cache, chart, theme)
+        super::charts::prepared(app, cache, chart, theme, super::charts::Extras::LineFits)
     }
 
     fn parts(&self, app: &App) -> Vec<(&'static dyn Component, Place)> {

@@ -162,7 +162,6 @@ fn f_switches_to_the_fit_view_from_any_view() {
     let mut a = app("paper-b4.9");
     press(&mut a, "c f");
     assert_eq!(a.view(), View::Fit);
-    assert!(a.fit_view());
     a.wait();
     assert!(screen_of(&a).contains("model fit: μ_k+v0+c_rr"));
     press(&mut a, "g");

@@ -237,6 +237,10 @@ impl Pane for Charts {
         Some(View::Charts)
     }
 
+    fn shows_charts(&self) -> bool {
+        true
+    }
+
     fn figure(&self, _: &FigureCx) -> Option<Result<Figure, NoFigure>> {
         Some(self.state.figure())
     }
@@ -245,7 +249,7 @@ impl Pane for Charts {
         let at = Moment {
             t: cx.t,
             span: cx.span,
-            shown: cx.charts_shown(),
+            shown: cx.charts_shown,
             pointer: cx.pointer.time,
         };
         match self.state.handle(input, at) {

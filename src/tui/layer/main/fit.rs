@@ -139,6 +139,10 @@ impl Pane for FitRuns {
         Some(View::Fit)
     }
 
+    fn shows_charts(&self) -> bool {
+        true
+    }
+
     /// The fit's figure with data (withheld with the Fit panel: it names the regimes);
     /// without data the view shows the charts.
     fn figure(&self, cx: &FigureCx) -> Option<Result<Figure, NoFigure>> {

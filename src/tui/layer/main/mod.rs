@@ -93,6 +93,13 @@ impl MainScreen {
         self.shown
     }
 
+    /// True while the view shown shows the charts (its pane says so).
+    pub fn charts_shown(&self) -> bool {
+        self.panes
+            .iter()
+            .any(|p| p.view() == Some(self.shown) && p.shows_charts())
+    }
+
     /// Shows `view` (the predict key shows the Forces view).
     pub fn show(&mut self, view: View) {
         self.shown = view;
@@ -118,6 +125,7 @@ impl MainScreen {
                 view
             };
             cx.shown = self.shown;
+            cx.charts_shown = self.charts_shown();
             let answer = self.offer(input, cx);
             return if answer == Handled::Ignored {
                 Handled::Consumed

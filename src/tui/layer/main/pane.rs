@@ -22,15 +22,10 @@ pub struct PaneCx<'a> {
     pub derived: bool,
     /// The view shown.
     pub shown: View,
+    /// True while the view shown shows the charts ([`Pane::shows_charts`]).
+    pub charts_shown: bool,
     /// Where a mouse event points, as the frame on screen laid it out.
     pub pointer: Pointer,
-}
-
-impl PaneCx<'_> {
-    /// True while a chart is on screen (the Charts and Fit views).
-    pub fn charts_shown(&self) -> bool {
-        matches!(self.shown, View::Charts | View::Fit)
-    }
 }
 
 /// What lies under the mouse: the time under it on the chart's plot, the video's
@@ -46,6 +41,11 @@ pub trait Pane: AnyPane + std::fmt::Debug {
     /// The view it is (the one shown is offered an input first); `None` for a part
     /// of every view (the Scene panel's video).
     fn view(&self) -> Option<View>;
+    /// True for a view that shows the charts (their keys and mouse work while it is
+    /// shown).
+    fn shows_charts(&self) -> bool {
+        false
+    }
     /// Handles `input` (its own keys; [`Handled::Ignored`] lets it go on).
     fn handle(&mut self, input: &Input, cx: &mut PaneCx<'_>) -> Handled;
     /// Asks for the work it wants of this scene (a request already made for it runs
