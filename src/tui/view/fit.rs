@@ -436,6 +436,30 @@ fn verdict_lines(m: &ModelFit, lines: &mut Ranked<'static>, theme: &Theme) {
     ));
 }
 
+/// A model fit's cells in the Fit panel's table, as printed: μ_k ± 2σ (to
+/// `decimals`), the RMS, the regime predicted and observed, the verdict.
+fn fit_cells(m: &ModelFit, decimals: usize, theme: &Theme) -> [String; 5] {
+    let mu = if m.undetermined("mu").is_some() {
+        "not determined".to_string()
+    } else if m.mu_se.is_finite() {
+        pm_tight(m.mu, 2.0 * m.mu_se, decimals)
+    } else {
+        format!("{:.decimals$}", m.mu)
+    };
+    let rms = match m.fitted_to {
+        "positions" => format!("{:.2}", show_small(m.rms, Dimension::Length)),
+        _ => format!("{:.3} m/s", m.rms),
+    };
+    [
+        mu,
+        rms,
+        m.regime_predicted.name().into(),
+        m.regime_observed.name().into(),
+        m.agreement().word().into(),
+    ]
+    .map(|c| theme.glyphs.text(&c))
+}
+
 /// The model fit of a position track beside the same model fitted to its derived
 /// velocities: a table of two columns where the panel holds both at the widths they
 /// print; else the position fit (the one to quote) alone, and a line for the other.
@@ -445,27 +469,7 @@ fn both_fits(v: &ModelFit, p: &ModelFit, width: usize, lines: &mut Ranked<'stati
     let mu_label = g.text(&format!("{}_k 2{}", g.mu, if g.ascii { "s" } else { "σ" }));
     let labels = [mu_label.as_str(), "RMS", "predicted", "observed", "verdict"];
     let head = labels.iter().map(|l| len(l)).max().unwrap_or(0) + 1;
-    let cells = |m: &ModelFit, decimals: usize| -> [String; 5] {
-        let mu = if m.undetermined("mu").is_some() {
-            "not determined".to_string()
-        } else if m.mu_se.is_finite() {
-            pm_tight(m.mu, 2.0 * m.mu_se, decimals)
-        } else {
-            format!("{:.decimals$}", m.mu)
-        };
-        let rms = match m.fitted_to {
-            "positions" => format!("{:.2}", show_small(m.rms, Dimension::Length)),
-            _ => format!("{:.3} m/s", m.rms),
-        };
-        [
-            mu,
-            rms,
-            m.regime_predicted.name().into(),
-            m.regime_observed.name().into(),
-            m.agreement().word().into(),
-        ]
-        .map(|c| g.text(&c))
-    };
+    let cells = |m: &ModelFit, decimals: usize| fit_cells(m, decimals, theme);
     // Each column one space wider than its widest cell; fewer decimals before fewer
     // columns.
     let col_of =
