@@ -509,7 +509,7 @@ fn both_fits(v: &ModelFit, p: &ModelFit, width: usize, lines: &mut Ranked<'stati
                 cells(p, 3)
             };
             lines.push((
-                6,
+                9,
                 Line::from(Span::styled(format!("{model}, positions"), theme.title)),
             ));
             for (i, label) in labels.iter().enumerate() {
@@ -522,9 +522,10 @@ fn both_fits(v: &ModelFit, p: &ModelFit, width: usize, lines: &mut Ranked<'stati
                     ]),
                 ));
             }
+            // The other fit's μ_k and verdict stay beside the position fit's rows.
             let cv = cells(v, 3);
             lines.push((
-                6,
+                8,
                 Line::from(vec![
                     Span::styled("velocities: ", theme.dim),
                     Span::styled(format!("{} {}", cv[0], cv[4]), theme.text),

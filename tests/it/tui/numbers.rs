@@ -333,12 +333,15 @@ fn the_fit_panel_shows_the_fits_numbers() {
                     lines.iter().any(|l| l.trim_end().ends_with(", positions")),
                     "{size:?}: one column is the position fit's\n{lines:#?}"
                 );
-                if let Some(l) = lines.iter().find(|l| l.starts_with("velocities: ")) {
-                    let cell = l["velocities: ".len()..].split_whitespace().next().unwrap();
-                    let (mu, _) = cell.split_once('±').unwrap();
-                    let (got, half, _) = number(mu).unwrap();
-                    assert!((got - v.mu).abs() <= half * (1.0 + 1e-9), "{size:?}: {l}");
-                }
+                // The velocity fit's μ_k on a line of its own.
+                let l = lines
+                    .iter()
+                    .find(|l| l.starts_with("velocities: "))
+                    .unwrap_or_else(|| panic!("{size:?}: the velocity fit's line\n{lines:#?}"));
+                let cell = l["velocities: ".len()..].split_whitespace().next().unwrap();
+                let (mu, _) = cell.split_once('±').unwrap();
+                let (got, half, _) = number(mu).unwrap();
+                assert!((got - v.mu).abs() <= half * (1.0 + 1e-9), "{size:?}: {l}");
                 vec![p]
             }
             _ => panic!("{size:?}: {row}"),
