@@ -183,6 +183,7 @@ fn velocity_rows(
     shift: f64,
 ) -> Vec<(f64, f64, Label)> {
     let mut rows = Vec::with_capacity(2 * idx.len());
+    let mut cursor = sol.cursor();
     for &i in idx {
         // A point the series does not hold has nothing to compare with.
         let (Some(&t), Some(&v_cm), Some(&v_t)) = (m.t().get(i), m.v_cm().get(i), m.v_t().get(i))
@@ -190,8 +191,8 @@ fn velocity_rows(
             continue;
         };
         let t = t + shift;
-        let s = sol.at(t);
-        let (a, du) = sol.segment_at(t).accel[0];
+        let s = cursor.at(t);
+        let (a, du) = cursor.segment_at(t).accel[0];
         let (v, u) = match &m.stencils() {
             Some(st) => as_derived(sol, st, i, (s.left.v, s.left.u)),
             None => (s.left.v, s.left.u),
@@ -333,11 +334,12 @@ fn position_rows(
     // has no time and is left out. Every column has the times' length ([`Measured`]),
     // so a frame with a time has its x and angle (NaN where not measured: such a row
     // is left out below).
+    let mut cursor = sol.cursor();
     let at: Vec<(usize, crate::physics::model::BallState, f64)> = idx
         .iter()
         .filter_map(|&i| {
             let t = m.t().get(i)? + clock;
-            let (s, angle) = sol.ball_and_angle(0, t);
+            let (s, angle) = cursor.ball_and_angle(0, t);
             Some((i, s, angle))
         })
         .collect();
@@ -396,19 +398,29 @@ fn point_weights(
 
 /// The common offset (rad) of model-minus-measured mark angles, as their circular mean:
 /// a mark hidden by the rail for a few frames turns by more than π meanwhile, so the
-/// measured angles' unwrapping can be off by whole turns after a gap.
-fn branch_offset(diffs: impl Iterator<Item = f64>) -> f64 {
+/// measured angles' unwrapping can be off by whole turns after a gap. It only picks
+/// each residual's turn ([`same_turn`]), so [`OFFSET_SAMPLE`] angles spread over the
+/// track give it as well as all of them (a sine and a cosine per frame were a tenth
+/// of a fit's time).
+fn branch_offset(diffs: impl Iterator<Item = f64> + Clone) -> f64 {
+    let finite = diffs.clone().filter(|d| d.is_finite()).count();
+    let every = finite.div_ceil(OFFSET_SAMPLE).max(1);
     let (s, c) = diffs
         .filter(|d| d.is_finite())
+        .step_by(every)
         .fold((0.0, 0.0), |(s, c), d| (s + d.sin(), c + d.cos()));
     s.atan2(c)
 }
 
+/// At most how many mark angles [`branch_offset`] averages.
+const OFFSET_SAMPLE: usize = 16;
+
 /// `d` moved by whole turns to within π of `centre`: the residual of a mark angle does
-/// not depend on which turn the measured angle was unwrapped to.
+/// not depend on which turn the measured angle was unwrapped to (nor on `centre`, as
+/// long as the turn is the same).
 fn same_turn(d: f64, centre: f64) -> f64 {
     let tau = std::f64::consts::TAU;
-    centre + (d - centre - tau * ((d - centre) / tau).round())
+    d - tau * ((d - centre) / tau).round()
 }
 
 /// The impact's time and place, and the mark's angle then, were estimated from the
@@ -458,6 +470,7 @@ pub fn aligned_track(scene: &Scene, sol: &Solution, m: &Measured) -> Option<Vec<
         _ => (0.0, 0.0),
     };
     let mut out = vec![f64::NAN; m.t().len()];
+    let mut cursor = sol.cursor();
     // The model's x at each frame minus the frame's residual (each row holds its
     // weight w as ∂/∂δx = −w): model minus the aligned track is the residual.
     for (row, (i, spin)) in &rows {
@@ -465,7 +478,7 @@ pub fn aligned_track(scene: &Scene, sol: &Solution, m: &Measured) -> Option<Vec<
             continue;
         };
         let d = row[0] + row[1] * dt + row[2] * dx;
-        *o = sol.at(t).left.x + d / row[2];
+        *o = cursor.at(t).left.x + d / row[2];
     }
     Some(out)
 }

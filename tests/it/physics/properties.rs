@@ -534,3 +534,47 @@ fn a_series_that_rolling_resistance_stops_is_summed_up_to_the_stop() {
         assert_eq!((ball.v, ball.u), (0.0, 0.0), "{end:?}");
     }
 }
+
+/// The segment a search finds for `t`: what sampling at `t` must use.
+fn searched(sol: &Solution, t: f64) -> usize {
+    sol.segments
+        .partition_point(|s| s.t1 <= t)
+        .min(sol.segments.len() - 1)
+}
+
+proptest! {
+    #![proptest_config(crate::common::cases(200))]
+
+    /// A cursor samples the segment a search finds, for times in order, out of order
+    /// (a jump back), far ahead (past its short walk), before the start, past the
+    /// end and not a number.
+    #[test]
+    fn a_cursor_finds_the_segment_a_search_finds(
+        scene in scenes(),
+        steps in proptest::collection::vec((0u8..10, 0.0..1.0f64), 1..120),
+    ) {
+        let sol = solve(&scene, &Span { t_start: -0.2, t_end: None });
+        let end = sol.t_end.max(sol.last_event_time()) + 0.1;
+        let mut ts: Vec<f64> = sol.segments.iter().map(|s| s.t0).collect();
+        let mut t = sol.t_start - 0.1;
+        for (kind, f) in steps {
+            t = match kind {
+                0 => f64::NAN,
+                1 => sol.t_start - 1.0 - f,
+                2 => t - f * (end - sol.t_start),
+                3 => end + f,
+                4 => ts[(f * (ts.len() - 1) as f64) as usize],
+                _ => t + f * f * (end - sol.t_start) * 0.1,
+            };
+            ts.push(t);
+        }
+        let mut cursor = sol.cursor();
+        for &t in &ts {
+            let at = cursor.segment_at(t);
+            let want = &sol.segments[searched(&sol, t)];
+            prop_assert!(std::ptr::eq(at, want), "t = {t}: segment {} of {}, search {}",
+                sol.segments.iter().position(|s| std::ptr::eq(s, at)).unwrap_or(usize::MAX),
+                sol.segments.len(), searched(&sol, t));
+        }
+    }
+}
