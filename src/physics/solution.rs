@@ -225,6 +225,7 @@ impl Solution {
         Cursor {
             sol: self,
             hint: None,
+            contact_radius: self.scene.k() * self.scene.radius,
         }
     }
 
@@ -361,6 +362,8 @@ pub struct Cursor<'a> {
     sol: &'a Solution,
     /// The segment of the last lookup; `None` before the first.
     hint: Option<usize>,
+    /// kR, m: the spin angle's radius, worked out once rather than per sample.
+    contact_radius: f64,
 }
 
 impl<'a> Cursor<'a> {
@@ -408,7 +411,7 @@ impl<'a> Cursor<'a> {
     /// Ball `i`'s state and spin angle at `t`: [`Solution::ball_and_angle`].
     pub fn ball_and_angle(&mut self, i: usize, t: f64) -> (BallState, f64) {
         let seg = self.segment_at(t);
-        let r = self.sol.scene.k() * self.sol.scene.radius;
+        let r = self.contact_radius;
         let tau = t - seg.t0;
         let (_, du) = seg.accel[i];
         let angle = seg.angle0[i] + (seg.start[i].u * tau + 0.5 * du * tau * tau) / r;
@@ -418,7 +421,7 @@ impl<'a> Cursor<'a> {
     /// Each ball's spin angle at `t`: [`Solution::angle_at`].
     pub fn angle_at(&mut self, t: f64) -> [f64; 2] {
         let seg = self.segment_at(t);
-        let r = self.sol.scene.k() * self.sol.scene.radius;
+        let r = self.contact_radius;
         let tau = t - seg.t0;
         std::array::from_fn(|i| {
             let (_, du) = seg.accel[i];
