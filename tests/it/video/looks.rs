@@ -359,6 +359,19 @@ fn measure(dir: &Path, clip: &Clip) -> Row {
             };
             row.centre.0 += d(&t).powi(2);
             row.centre.1 += 1;
+            if std::env::var_os("LOOKS_FRAMES").is_some() {
+                println!(
+                    "frame {k}: centre ({:.2}, {:.2}) truth ({:.2}, {:.2}) err {:.2}; mark {:?} truth ({:.1}, {:.1})",
+                    p.0,
+                    p.1,
+                    t.centre.0,
+                    t.centre.1,
+                    d(&t),
+                    mark,
+                    t.mark.0,
+                    t.mark.1
+                );
+            }
             if let Some(m) = mark {
                 row.mark.0 += (t.mark.0 - f64::from(m.0))
                     .hypot(t.mark.1 - f64::from(m.1))

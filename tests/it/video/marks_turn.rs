@@ -31,6 +31,7 @@ fn fix(x: f64, y: f64, r: f64, mark: Option<(f64, f64)>) -> Result<Fix, LeftOut>
             sigma: 0.1,
             contrast: -40.0,
         }),
+        spots: [None; groovelab::vision::mark::SPOTS],
     })
 }
 
