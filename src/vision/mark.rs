@@ -26,16 +26,16 @@ pub struct Mark {
 /// 0), or of the sign found before (−1 darker, +1 lighter: once known, a highlight
 /// of the other sign is not taken for it); it must stand out by `levels` (luma
 /// levels, at least).
-pub fn find(img: &Gray, ball: &Outline, noise: f64, sign: f64, levels: (f64, f64)) -> Found {
+pub fn find(img: &Gray, ball: &Outline, noise: f64, sign: f64, levels: (f64, f64)) -> InDisc {
     let mut spots = Vec::new();
     let mark = find_mark(img, ball, noise, sign, levels, &mut spots);
-    Found {
+    InDisc {
         mark,
         spots: strongest_spots(spots, ball.circle.r),
     }
 }
 
-/// The spots of a disc (see [`Found::spots`]), at most this many.
+/// The spots of a disc (see [`InDisc::spots`]), at most this many.
 pub const SPOTS: usize = 4;
 
 /// The strongest spots of a disc, [`SPOTS`] at most, the strongest first: where
@@ -45,7 +45,7 @@ pub type Spots = [Option<(f64, f64, f64)>; SPOTS];
 
 /// What was found inside a ball's disc.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Found {
+pub struct InDisc {
     /// The mark (see [`find`]).
     pub mark: Option<Mark>,
     /// The strongest spots that stand out from the ball's surface, of either sign,

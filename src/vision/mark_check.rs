@@ -56,7 +56,7 @@ pub fn checked(frames: &[FrameFixes], p: &MarkChecks) -> Vec<FrameFixes> {
 /// or more): a glossy highlight, a feature of the shading or of a metal's
 /// reflection, which the light puts at one place of both discs. Seen as the
 /// strongest spot only where the drawn mark is hidden (behind the rail) or weak, it
-/// is found as a lesser spot in the other frames ([`super::mark::Found::spots`]). A
+/// is found as a lesser spot in the other frames ([`super::mark::InDisc::spots`]). A
 /// drawn mark turns with its ball and passes any one place of the disc in a few
 /// frames only.
 #[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame

@@ -23,7 +23,7 @@ pub struct Fix {
     /// Standard error of the centre's x and y, px.
     pub sigma: f64,
     pub mark: Option<Mark>,
-    /// The strongest spots of its disc, the mark or not (`mark::Found::spots`).
+    /// The strongest spots of its disc, the mark or not (`mark::InDisc::spots`).
     pub spots: mark::Spots,
 }
 
@@ -334,13 +334,7 @@ impl Tracker {
                 {
                     self.radius = median(&self.radii);
                 }
-                let found = self.mark(img, &o, noise);
-                Fix {
-                    outline: o,
-                    sigma: 0.5 * (o.sigma[0] + o.sigma[1]),
-                    mark: found.mark,
-                    spots: found.spots,
-                }
+                self.fix(img, o, noise)
             });
             if let Some(o) = out.get_mut(slot) {
                 *o = fix;
@@ -349,9 +343,20 @@ impl Tracker {
         self.frames.push(out);
     }
 
+    /// The ball `o` with its mark and the spots of its disc.
+    fn fix(&mut self, img: &Gray, o: Outline, noise: f64) -> Fix {
+        let found = self.mark(img, &o, noise);
+        Fix {
+            outline: o,
+            sigma: 0.5 * (o.sigma[0] + o.sigma[1]),
+            mark: found.mark,
+            spots: found.spots,
+        }
+    }
+
     /// The mark on the ball `o`: of either sign while few are found, then of the
     /// sign most had.
-    fn mark(&mut self, img: &Gray, o: &Outline, noise: f64) -> mark::Found {
+    fn mark(&mut self, img: &Gray, o: &Outline, noise: f64) -> mark::InDisc {
         let [dark, light] = self.mark_votes;
         let sign = if dark + light < self.params.mark_votes {
             0.0
