@@ -380,7 +380,9 @@ fn still_marks(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Vec<usize>
         let Ok(fix) = &f[slot] else { continue };
         let Some(m) = fix.mark else { continue };
         let (c, m) = ((fix.outline.circle.x, fix.outline.circle.y), (m.x, m.y));
-        if let Some((k0, c0, m0)) = prev {
+        // Only against a frame or two back: a mark seen again after about a whole
+        // turn (hidden behind the rail meanwhile) is back near its place.
+        if let Some((k0, c0, m0)) = prev.filter(|p| k - p.0 <= 2) {
             let moved = (c.0 - c0.0).hypot(c.1 - c0.1);
             let mark_moved = (m.0 - m0.0).hypot(m.1 - m0.1);
             if moved >= p.moved_px && mark_moved < p.still_share * moved {
