@@ -26,7 +26,72 @@ pub struct Mark {
 /// 0), or of the sign found before (−1 darker, +1 lighter: once known, a highlight
 /// of the other sign is not taken for it); it must stand out by `levels` (luma
 /// levels, at least).
-pub fn find(img: &Gray, ball: &Outline, noise: f64, sign: f64, levels: (f64, f64)) -> Option<Mark> {
+pub fn find(img: &Gray, ball: &Outline, noise: f64, sign: f64, levels: (f64, f64)) -> InDisc {
+    let mut spots = Vec::new();
+    let mark = find_mark(img, ball, noise, sign, levels, &mut spots);
+    InDisc {
+        mark,
+        spots: strongest_spots(spots, ball.circle.r),
+    }
+}
+
+/// The spots of a disc (see [`InDisc::spots`]), at most this many.
+pub const SPOTS: usize = 4;
+
+/// The strongest spots of a disc, [`SPOTS`] at most, the strongest first: where
+/// (x, y, px) and how much the pixel there stands out from the mean around it
+/// (luma levels, signed: − darker).
+pub type Spots = [Option<(f64, f64, f64)>; SPOTS];
+
+/// What was found inside a ball's disc.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct InDisc {
+    /// The mark (see [`find`]).
+    pub mark: Option<Mark>,
+    /// The strongest spots that stand out from the ball's surface, of either sign,
+    /// a quarter of a radius apart at least, whichever the mark is: over the clip, a
+    /// spot that stays at one place of both balls' discs in most frames is no mark
+    /// (a glossy highlight, a feature of the shading; `mark_check`), and a mark
+    /// found there is not taken.
+    pub spots: Spots,
+}
+
+/// The strongest of `found` (contrast, x, y), a quarter of the radius `r` apart.
+fn strongest_spots(mut found: Vec<(f64, isize, isize)>, r: f64) -> Spots {
+    found.sort_by(|a, b| b.0.abs().total_cmp(&a.0.abs()));
+    let apart = (0.25 * r).max(2.0);
+    let mut out: Spots = [None; SPOTS];
+    let mut n = 0;
+    for (d, x, y) in found {
+        let (x, y) = (x as f64, y as f64);
+        if out
+            .iter()
+            .flatten()
+            .any(|s| (s.0 - x).hypot(s.1 - y) < apart)
+        {
+            continue;
+        }
+        if let Some(slot) = out.get_mut(n) {
+            *slot = Some((x, y, d));
+            n += 1;
+        } else {
+            break;
+        }
+    }
+    out
+}
+
+/// The mark (see [`find`]); every pixel standing out by the threshold is added to
+/// `spots` (contrast, x, y).
+fn find_mark(
+    img: &Gray,
+    ball: &Outline,
+    noise: f64,
+    sign: f64,
+    levels: (f64, f64),
+    spots: &mut Vec<(f64, isize, isize)>,
+) -> Option<Mark> {
+    let least = (levels.0 * noise).max(levels.1);
     let c = ball.circle;
     // The search region: inside the limb, above the rail.
     let inner = c.r - (0.1 * c.r).max(3.0);
@@ -52,6 +117,9 @@ pub fn find(img: &Gray, ball: &Outline, noise: f64, sign: f64, levels: (f64, f64
             }
             let mean = sums.mean(x - half, y - half, x + half, y + half);
             let d = f64::from(img.at(x as usize, y as usize)) - mean;
+            if d.abs() >= least {
+                spots.push((d, x, y));
+            }
             let better = if sign == 0.0 {
                 d.abs() > best.0.abs()
             } else {
@@ -63,7 +131,7 @@ pub fn find(img: &Gray, ball: &Outline, noise: f64, sign: f64, levels: (f64, f64
         }
     }
     let (peak, px, py) = best;
-    if peak.abs() < (levels.0 * noise).max(levels.1) || (sign != 0.0 && peak * sign <= 0.0) {
+    if peak.abs() < least || (sign != 0.0 && peak * sign <= 0.0) {
         return None;
     }
     let size = spot_radius(img, px, py, peak, half, &sums);

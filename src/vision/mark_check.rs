@@ -13,10 +13,23 @@ use super::tracker::FrameFixes;
 #[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
 pub fn checked(frames: &[FrameFixes], p: &MarkChecks) -> Vec<FrameFixes> {
     let mut out = frames.to_vec();
-    let spot = common_spot(frames, p);
+    let fixed = fixed_spots(frames, p);
+    for f in out.iter_mut() {
+        for fix in f.iter_mut().flatten() {
+            let at_fixed =
+                offset(fix).is_some_and(|o| fixed.iter().any(|h| near(o, *h, p.spot_reach)));
+            if at_fixed || rivalled(fix, &fixed, p) {
+                fix.mark = None;
+            }
+        }
+    }
+    let faint = faint_marks(&out, p);
+    for (k, slot) in faint {
+        left_out(&mut out, slot, [k]);
+    }
     let staying = staying_spot(frames, p);
     for slot in 0..2 {
-        let own = spot.or_else(|| fixed_spot(frames, slot, p));
+        let own = fixed_spot(frames, slot, p);
         for h in own.into_iter().chain(staying) {
             for f in out.iter_mut() {
                 if let Ok(fix) = &mut f[slot]
@@ -36,6 +49,136 @@ pub fn checked(frames: &[FrameFixes], p: &MarkChecks) -> Vec<FrameFixes> {
         }
     }
     out
+}
+
+/// The places of the disc (radii from the centre) where a spot stands out in most
+/// of each ball's frames (of each ball seen in [`MarkChecks::fewest_marks`] frames
+/// or more): a glossy highlight, a feature of the shading or of a metal's
+/// reflection, which the light puts at one place of both discs. Seen as the
+/// strongest spot only where the drawn mark is hidden (behind the rail) or weak, it
+/// is found as a lesser spot in the other frames ([`super::mark::InDisc::spots`]). A
+/// drawn mark turns with its ball and passes any one place of the disc in a few
+/// frames only.
+#[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
+fn fixed_spots(frames: &[FrameFixes], p: &MarkChecks) -> Vec<(f64, f64)> {
+    // Each slot's fits, as the places of their spots in the disc and their signs.
+    type Spot = ((f64, f64), f64);
+    let per_slot: Vec<Vec<Vec<Spot>>> = (0..2)
+        .map(|slot| {
+            frames
+                .iter()
+                .filter_map(|f| f[slot].as_ref().ok())
+                .map(|fix| {
+                    let c = fix.outline.circle;
+                    fix.spots
+                        .iter()
+                        .flatten()
+                        .map(|s| {
+                            let r = c.r.max(1.0);
+                            (((s.0 - c.x) / r, (s.1 - c.y) / r), s.2.signum())
+                        })
+                        .collect()
+                })
+                .collect()
+        })
+        .collect();
+    let seen: Vec<&Vec<Vec<Spot>>> = per_slot
+        .iter()
+        .filter(|fits| fits.len() >= p.fewest_marks)
+        .collect();
+    if seen.is_empty() {
+        return Vec::new();
+    }
+    // The least share, over the balls seen, of the frames with a spot of the sign
+    // of `h` within half the reach of it (a highlight's place found in frame after
+    // frame to a pixel or two; the wider reach would count a highlight next to the
+    // place for it, a second time; a drawn mark that comes back to one place every few frames,
+    // at a low rate, keeps to no one place in most).
+    let present = |h: Spot| -> f64 {
+        seen.iter()
+            .map(|fits| {
+                let n = fits
+                    .iter()
+                    .filter(|spots| {
+                        spots
+                            .iter()
+                            .any(|s| s.1 == h.1 && near(s.0, h.0, 0.5 * p.spot_reach))
+                    })
+                    .count();
+                n as f64 / fits.len() as f64
+            })
+            .fold(1.0, f64::min)
+    };
+    let mut scored: Vec<((f64, f64), f64)> = seen
+        .iter()
+        .flat_map(|fits| fits.iter().flatten())
+        .map(|&h| (h.0, present(h)))
+        .filter(|(_, share)| *share >= p.fixed_present)
+        .collect();
+    scored.sort_by(|a, b| b.1.total_cmp(&a.1));
+    let mut out: Vec<(f64, f64)> = Vec::new();
+    for (h, _) in scored {
+        if !out.iter().any(|o| near(*o, h, p.spot_reach)) {
+            out.push(h);
+        }
+    }
+    out
+}
+
+/// True when another spot of the disc, of the mark's sign and not at one of the
+/// `fixed` places (a highlight), stands out from the ball nearly as much as the
+/// mark (over 1 / [`MarkChecks::rival_ratio`] of it), a quarter of a radius or more
+/// away from it: two spots alike, and no telling which is the drawn mark (a
+/// compressed clip's blocks along a dark limb, a patterned wall's fringe).
+fn rivalled(fix: &super::tracker::Fix, fixed: &[(f64, f64)], p: &MarkChecks) -> bool {
+    let Some(m) = fix.mark else { return false };
+    let c = fix.outline.circle;
+    let r = c.r.max(1.0);
+    let sign = m.contrast.signum();
+    // The spots of the mark's sign, not at a fixed place: (place in the disc, level).
+    let spots: Vec<((f64, f64), f64)> = fix
+        .spots
+        .iter()
+        .flatten()
+        .map(|s| (((s.0 - c.x) / r, (s.1 - c.y) / r), s.2 * sign))
+        .filter(|(o, d)| *d > 0.0 && !fixed.iter().any(|h| near(*o, *h, p.spot_reach)))
+        .collect();
+    let at = ((m.x - c.x) / r, (m.y - c.y) / r);
+    let own = spots
+        .iter()
+        .filter(|(o, _)| near(*o, at, p.spot_reach))
+        .map(|s| s.1)
+        .fold(0.0, f64::max);
+    spots
+        .iter()
+        .any(|(o, d)| !near(*o, at, p.spot_reach) && *d * p.rival_ratio > own)
+}
+
+/// The marks (frame, slot) that stand out from their ball by less than
+/// [`MarkChecks::faint_share`] of the contrast both balls' marks have (their
+/// median): a drawn mark keeps its colour, and so about its contrast, from frame to
+/// frame; a spot of the ball's own shading near the limb, or the dark fringe about
+/// a highlight, found where the mark is hidden or out of reach, stands out faintly.
+#[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
+fn faint_marks(frames: &[FrameFixes], p: &MarkChecks) -> Vec<(usize, usize)> {
+    let marks: Vec<(usize, usize, f64)> = frames
+        .iter()
+        .enumerate()
+        .flat_map(|(k, f)| {
+            (0..2).filter_map(move |s| Some((k, s, f[s].as_ref().ok()?.mark?.contrast)))
+        })
+        .collect();
+    if marks.len() < p.fewest_marks {
+        return Vec::new();
+    }
+    let Some(typical) = middle(&marks.iter().map(|m| m.2).collect::<Vec<_>>()) else {
+        return Vec::new();
+    };
+    marks
+        .into_iter()
+        .filter(|m| m.2 * typical.signum() < p.faint_share * typical.abs())
+        .map(|m| (m.0, m.1))
+        .collect()
 }
 
 /// The marks of `slot` in the frames `at` left out.
@@ -94,7 +237,10 @@ fn turns_with_the_ball(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> bo
             let fix = f[slot].as_ref().ok()?;
             let o = offset(fix)?;
             let c = fix.outline.circle;
-            Some((c.x, c.r, o.1.atan2(o.0)))
+            // The rail's top edge, below the centre: the ball rolls on it, at kR
+            // below the centre, turning by Δx / (kR).
+            let k = ((fix.outline.lowest - c.y) / c.r.max(1.0)).clamp(0.2, 1.0);
+            Some((c.x, c.r * k, o.1.atan2(o.0)))
         })
         .collect();
     let steps = marked.len().saturating_sub(1);
@@ -110,7 +256,14 @@ fn turns_with_the_ball(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> bo
                 - std::f64::consts::PI;
             (turn.abs(), (b.0 - a.0).abs() / a.1.max(1.0))
         })
+        // A turn is measured modulo a whole turn: where rolling turns the ball by
+        // more than half a turn between two marked frames, the step tells nothing.
+        .filter(|(_, roll)| *roll < std::f64::consts::FRAC_PI_2)
         .collect();
+    let steps = turns.len();
+    if steps < p.fewest_marks {
+        return true;
+    }
     let jumps = turns
         .iter()
         .filter(|(turn, roll)| *turn > p.turn_per_radius * roll + p.turn_slack)
@@ -133,34 +286,6 @@ fn offset(fix: &super::tracker::Fix) -> Option<(f64, f64)> {
 
 fn near(a: (f64, f64), b: (f64, f64), within: f64) -> bool {
     (a.0 - b.0).hypot(a.1 - b.1) < within
-}
-
-/// The spot of the disc where both balls' "marks" sit in most frames with both: a
-/// highlight (two marks drawn on two balls meet at one spot of their discs only by
-/// chance, and briefly).
-#[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
-fn common_spot(frames: &[FrameFixes], p: &MarkChecks) -> Option<(f64, f64)> {
-    let pairs: Vec<((f64, f64), (f64, f64))> = frames
-        .iter()
-        .filter_map(|f| {
-            let a = offset(f[0].as_ref().ok()?)?;
-            let b = offset(f[1].as_ref().ok()?)?;
-            Some((a, b))
-        })
-        .collect();
-    if pairs.len() < 5 {
-        return None;
-    }
-    let same = pairs
-        .iter()
-        .filter(|(a, b)| near(*a, *b, p.same_spot))
-        .count();
-    if same * 2 < pairs.len() {
-        return None;
-    }
-    let xs: Vec<f64> = pairs.iter().flat_map(|(a, b)| [a.0, b.0]).collect();
-    let ys: Vec<f64> = pairs.iter().flat_map(|(a, b)| [a.1, b.1]).collect();
-    Some((middle(&xs)?, middle(&ys)?))
 }
 
 /// The spot of the disc where the "marks" of either ball sit most often, when they
@@ -196,7 +321,10 @@ fn staying_spot(frames: &[FrameFixes], p: &MarkChecks) -> Option<(f64, f64)> {
                 .collect();
             let mut start = 0;
             for i in 1..=at.len() {
-                let run_ends = i == at.len() || at[i].1 - at[i - 1].1 > 3;
+                // A highlight is seen in frame after frame; a drawn mark that
+                // comes back to one place every third frame (a turn of about 2π/3
+                // a frame, at a low rate) is not staying there.
+                let run_ends = i == at.len() || at[i].1 - at[i - 1].1 > 2;
                 if run_ends {
                     rolled += (at[i - 1].2 - at[start].2).abs() / at[start].3.max(1.0);
                     start = i;
@@ -252,7 +380,9 @@ fn still_marks(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Vec<usize>
         let Ok(fix) = &f[slot] else { continue };
         let Some(m) = fix.mark else { continue };
         let (c, m) = ((fix.outline.circle.x, fix.outline.circle.y), (m.x, m.y));
-        if let Some((k0, c0, m0)) = prev {
+        // Only against a frame or two back: a mark seen again after about a whole
+        // turn (hidden behind the rail meanwhile) is back near its place.
+        if let Some((k0, c0, m0)) = prev.filter(|p| k - p.0 <= 2) {
             let moved = (c.0 - c0.0).hypot(c.1 - c0.1);
             let mark_moved = (m.0 - m0.0).hypot(m.1 - m0.1);
             if moved >= p.moved_px && mark_moved < p.still_share * moved {

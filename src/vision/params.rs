@@ -162,6 +162,27 @@ pub struct Params {
 pub struct MarkChecks {
     /// Two spots of a disc this near are one spot. Default 0.08.
     pub same_spot: f64,
+    /// A place of the disc where a spot stands out in at least this share of each
+    /// ball's frames is a highlight or a feature of the shading, not a mark (a
+    /// drawn mark turns with its ball and passes any one place in a few frames).
+    /// Default 0.7 (a highlight is found in 0.9–1 of them; a drawn mark that comes
+    /// back to a place every few frames, in a third or less) …
+    pub fixed_present: f64,
+    /// … and marks found within this of it are not taken (the highlight or the
+    /// mark overlapping it: a centroid of both). Default 0.25: a quarter of a
+    /// radius, a mark's radius (0.1–0.2) and the highlight's.
+    pub spot_reach: f64,
+    /// A mark standing out from its ball by less than this share of the contrast
+    /// both balls' marks have (their median) is not the drawn mark (a drawn mark
+    /// keeps its colour; the shading near the limb or the fringe about a highlight,
+    /// found where the mark is hidden, stand out faintly). Default 0.5.
+    pub faint_share: f64,
+    /// A mark is unsure when another spot of its sign in the disc (not a highlight's
+    /// fixed place), a quarter of a radius or more away, stands out by more than
+    /// 1 / this of the mark's own contrast: two spots alike, no telling which is
+    /// drawn. Default 1.5 (a drawn mark stands out by 2–10 times what the shading, a
+    /// highlight's fringe or compression leave).
+    pub rival_ratio: f64,
     /// Share of a ball's marks at one spot of its disc that makes the spot a
     /// highlight, when the ball moved by at least `rolled` radii meanwhile (a mark
     /// on a ball that rolls one radius turns by one radian, and even a ball sliding
@@ -187,9 +208,10 @@ pub struct MarkChecks {
     /// Fewest marks of a ball from which their circle and their turning are told.
     /// Default 5.
     pub fewest_marks: usize,
-    /// Largest turn of a drawn mark per radius its ball moves (a rolling ball turns
-    /// by one radian; 1.6 leaves room for the centroid's and the centre's errors).
-    /// Default 1.6 …
+    /// Largest turn of a drawn mark per rolling radius its ball moves (a ball rolling
+    /// on the rails' edges, kR below its centre, turns by Δx / (kR): the rail's top
+    /// is the lowest point of the outline; 1.6 leaves room for the centroid's and
+    /// the centre's errors). Default 1.6 …
     pub turn_per_radius: f64,
     /// … and the turn allowed whatever the move, rad (noise on a mark at half the
     /// radius). Default 0.35.
@@ -211,6 +233,10 @@ impl Default for MarkChecks {
     fn default() -> Self {
         MarkChecks {
             same_spot: 0.08,
+            fixed_present: 0.7,
+            spot_reach: 0.25,
+            faint_share: 0.5,
+            rival_ratio: 1.5,
             fixed_share: 0.6,
             rolled: 2.0,
             still_share: 0.15,

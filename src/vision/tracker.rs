@@ -23,6 +23,8 @@ pub struct Fix {
     /// Standard error of the centre's x and y, px.
     pub sigma: f64,
     pub mark: Option<Mark>,
+    /// The strongest spots of its disc, the mark or not (`mark::InDisc::spots`).
+    pub spots: mark::Spots,
 }
 
 /// Why a ball has no position in a frame.
@@ -332,11 +334,7 @@ impl Tracker {
                 {
                     self.radius = median(&self.radii);
                 }
-                Fix {
-                    outline: o,
-                    sigma: 0.5 * (o.sigma[0] + o.sigma[1]),
-                    mark: self.mark(img, &o, noise),
-                }
+                self.fix(img, o, noise)
             });
             if let Some(o) = out.get_mut(slot) {
                 *o = fix;
@@ -345,9 +343,20 @@ impl Tracker {
         self.frames.push(out);
     }
 
+    /// The ball `o` with its mark and the spots of its disc.
+    fn fix(&mut self, img: &Gray, o: Outline, noise: f64) -> Fix {
+        let found = self.mark(img, &o, noise);
+        Fix {
+            outline: o,
+            sigma: 0.5 * (o.sigma[0] + o.sigma[1]),
+            mark: found.mark,
+            spots: found.spots,
+        }
+    }
+
     /// The mark on the ball `o`: of either sign while few are found, then of the
     /// sign most had.
-    fn mark(&mut self, img: &Gray, o: &Outline, noise: f64) -> Option<Mark> {
+    fn mark(&mut self, img: &Gray, o: &Outline, noise: f64) -> mark::InDisc {
         let [dark, light] = self.mark_votes;
         let sign = if dark + light < self.params.mark_votes {
             0.0
@@ -357,8 +366,10 @@ impl Tracker {
             1.0
         };
         let p = self.params;
-        let m = mark::find(img, o, noise, sign, (p.mark_sigmas, p.mark_levels))?;
-        if sign == 0.0 {
+        let found = mark::find(img, o, noise, sign, (p.mark_sigmas, p.mark_levels));
+        if sign == 0.0
+            && let Some(m) = found.mark
+        {
             let [d, l] = &mut self.mark_votes;
             if m.contrast < 0.0 {
                 *d += 1;
@@ -366,7 +377,7 @@ impl Tracker {
                 *l += 1;
             }
         }
-        Some(m)
+        found
     }
 
     /// Balls inside blobs that gave no outline about their middle, or are wider

@@ -641,6 +641,7 @@ mod tests {
             },
             sigma: 0.1,
             mark: None,
+            spots: [None; crate::vision::mark::SPOTS],
         })
     }
 

@@ -4,6 +4,7 @@
 pub(crate) mod app;
 pub(crate) mod found_frames;
 pub(crate) mod looks;
+mod mark_highlight;
 mod marks_turn;
 pub(crate) mod overlay;
 pub(crate) mod seed;
