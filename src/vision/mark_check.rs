@@ -69,14 +69,10 @@ fn fixed_spots(frames: &[FrameFixes], p: &MarkChecks) -> Vec<(f64, f64)> {
                 .iter()
                 .filter_map(|f| f[slot].as_ref().ok())
                 .map(|fix| {
-                    let c = fix.outline.circle;
                     fix.spots
                         .iter()
                         .flatten()
-                        .map(|s| {
-                            let r = c.r.max(1.0);
-                            (((s.0 - c.x) / r, (s.1 - c.y) / r), s.2.signum())
-                        })
+                        .map(|s| (in_disc(fix, (s.0, s.1)), s.2.signum()))
                         .collect()
                 })
                 .collect()
@@ -132,18 +128,16 @@ fn fixed_spots(frames: &[FrameFixes], p: &MarkChecks) -> Vec<(f64, f64)> {
 /// compressed clip's blocks along a dark limb, a patterned wall's fringe).
 fn rivalled(fix: &super::tracker::Fix, fixed: &[(f64, f64)], p: &MarkChecks) -> bool {
     let Some(m) = fix.mark else { return false };
-    let c = fix.outline.circle;
-    let r = c.r.max(1.0);
     let sign = m.contrast.signum();
     // The spots of the mark's sign, not at a fixed place: (place in the disc, level).
     let spots: Vec<((f64, f64), f64)> = fix
         .spots
         .iter()
         .flatten()
-        .map(|s| (((s.0 - c.x) / r, (s.1 - c.y) / r), s.2 * sign))
+        .map(|s| (in_disc(fix, (s.0, s.1)), s.2 * sign))
         .filter(|(o, d)| *d > 0.0 && !fixed.iter().any(|h| near(*o, *h, p.spot_reach)))
         .collect();
-    let at = ((m.x - c.x) / r, (m.y - c.y) / r);
+    let at = in_disc(fix, (m.x, m.y));
     let own = spots
         .iter()
         .filter(|(o, _)| near(*o, at, p.spot_reach))
@@ -243,10 +237,6 @@ fn turns_with_the_ball(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> bo
             Some((c.x, c.r * k, o.1.atan2(o.0)))
         })
         .collect();
-    let steps = marked.len().saturating_sub(1);
-    if steps < p.fewest_marks {
-        return true;
-    }
     // Per step between marked frames: the mark's turn and the ball's roll, rad.
     let turns: Vec<(f64, f64)> = marked
         .windows(2)
@@ -256,8 +246,9 @@ fn turns_with_the_ball(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> bo
                 - std::f64::consts::PI;
             (turn.abs(), (b.0 - a.0).abs() / a.1.max(1.0))
         })
-        // A turn is measured modulo a whole turn: where rolling turns the ball by
-        // more than half a turn between two marked frames, the step tells nothing.
+        // A turn is measured modulo a whole turn, and the allowed turn grows with
+        // the roll: where the ball rolls by a quarter turn or more between two
+        // marked frames, the step tells nothing.
         .filter(|(_, roll)| *roll < std::f64::consts::FRAC_PI_2)
         .collect();
     let steps = turns.len();
@@ -279,9 +270,15 @@ fn turns_with_the_ball(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> bo
 
 /// A mark's place in its ball's disc, in radii from the centre.
 fn offset(fix: &super::tracker::Fix) -> Option<(f64, f64)> {
+    fix.mark.map(|m| in_disc(fix, (m.x, m.y)))
+}
+
+/// The point `(x, y)` (px) as a place in the disc of `fix`'s ball, in radii from
+/// its centre: the same place of the disc whatever the ball's size in the frame.
+fn in_disc(fix: &super::tracker::Fix, (x, y): (f64, f64)) -> (f64, f64) {
     let c = fix.outline.circle;
-    fix.mark
-        .map(|m| ((m.x - c.x) / c.r.max(1.0), (m.y - c.y) / c.r.max(1.0)))
+    let r = c.r.max(1.0);
+    ((x - c.x) / r, (y - c.y) / r)
 }
 
 fn near(a: (f64, f64), b: (f64, f64), within: f64) -> bool {

@@ -348,28 +348,15 @@ fn measure(dir: &Path, clip: &Clip) -> Row {
     for b in &done.view.balls {
         for (k, (centre, mark)) in b.centre.iter().zip(&b.mark).enumerate() {
             let Some(p) = centre else { continue };
-            let truth = film.truth(k);
-            let d = |t: &crate::film::Truth| {
-                (t.centre.0 - f64::from(p.0)).hypot(t.centre.1 - f64::from(p.1))
-            };
-            let t = if d(&truth[0]) <= d(&truth[1]) {
-                truth[0]
-            } else {
-                truth[1]
-            };
-            row.centre.0 += d(&t).powi(2);
+            let p = (f64::from(p.0), f64::from(p.1));
+            let t = film.ball_nearest(k, p);
+            let err = (t.centre.0 - p.0).hypot(t.centre.1 - p.1);
+            row.centre.0 += err.powi(2);
             row.centre.1 += 1;
             if std::env::var_os("LOOKS_FRAMES").is_some() {
                 println!(
                     "frame {k}: centre ({:.2}, {:.2}) truth ({:.2}, {:.2}) err {:.2}; mark {:?} truth ({:.1}, {:.1})",
-                    p.0,
-                    p.1,
-                    t.centre.0,
-                    t.centre.1,
-                    d(&t),
-                    mark,
-                    t.mark.0,
-                    t.mark.1
+                    p.0, p.1, t.centre.0, t.centre.1, err, mark, t.mark.0, t.mark.1
                 );
             }
             if let Some(m) = mark {

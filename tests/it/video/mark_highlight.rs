@@ -55,14 +55,7 @@ fn a_highlight_where_the_mark_hides_behind_the_rail_is_not_the_mark() {
             for fix in fixes.iter().flatten() {
                 let Some(m) = fix.mark else { continue };
                 let c = fix.outline.circle;
-                let t = film
-                    .truth(k)
-                    .into_iter()
-                    .min_by(|a, b| {
-                        let d = |t: &crate::film::Truth| (t.centre.0 - c.x).hypot(t.centre.1 - c.y);
-                        d(a).total_cmp(&d(b))
-                    })
-                    .unwrap();
+                let t = film.ball_nearest(k, (c.x, c.y));
                 out.push(((m.x - t.mark.0).hypot(m.y - t.mark.1), k));
             }
         }

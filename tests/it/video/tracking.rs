@@ -26,20 +26,9 @@ fn tracked(film: &Film, frames: impl Iterator<Item = usize>) -> (Vec<Pair>, Vec<
     let tracker = vision::track(&images, Params::default());
     let (mut centres, mut marks) = (Vec::new(), Vec::new());
     for (fixes, &k) in tracker.frames.iter().zip(&ks) {
-        let truth = film.truth(k);
-        for (slot, fix) in fixes.iter().enumerate() {
-            let Ok(fix) = fix else { continue };
+        for fix in fixes.iter().flatten() {
             let c = fix.outline.circle;
-            // The slot's ball: the truth nearest to it.
-            let t = truth
-                .iter()
-                .min_by(|a, b| {
-                    let da = (a.centre.0 - c.x).hypot(a.centre.1 - c.y);
-                    let db = (b.centre.0 - c.x).hypot(b.centre.1 - c.y);
-                    da.total_cmp(&db)
-                })
-                .unwrap();
-            let _ = slot;
+            let t = film.ball_nearest(k, (c.x, c.y));
             centres.push(((c.x, c.y), t.centre));
             if let Some(m) = fix.mark {
                 marks.push(((m.x, m.y), t.mark));

@@ -219,6 +219,14 @@ impl Film {
         self.at(self.time(k))
     }
 
+    /// The true ball at frame `k` whose centre is nearest `(x, y)` (px): the ball a
+    /// tracked centre is of.
+    pub fn ball_nearest(&self, k: usize, (x, y): (f64, f64)) -> Truth {
+        let [a, b] = self.truth(k);
+        let d = |t: &Truth| (t.centre.0 - x).hypot(t.centre.1 - y);
+        if d(&a) <= d(&b) { a } else { b }
+    }
+
     /// Frame `k` as RGB bytes, row by row.
     pub fn rgb(&self, k: usize) -> Vec<u8> {
         self.image(k).into_raw()
