@@ -135,20 +135,50 @@ fn find_mark(
         return None;
     }
     let size = spot_radius(img, px, py, peak, half, &sums);
-    // The ring the shading is fitted on must lie on the ball, above the rail.
-    let ring = 2.2 * size + 1.5;
-    let fits = |x: f64, y: f64| (x - c.x).hypot(y - c.y) + ring < c.r - 1.0 && y + ring < bottom;
+    // The spot (its centroid's disc) must lie on the ball, above the rail; the ring
+    // the shading is fitted on is the part of it on the ball, above the rail. (A ring
+    // wholly on the ball was asked before: a mark near the limb was then found only
+    // where its centroid fell short of it, toward the centre: 3–5 px on looks with the
+    // mark at 0.6–0.7 R.)
+    let spot = 1.4 * size + 1.0;
+    let on_ball = Ball {
+        x: c.x,
+        y: c.y,
+        inside: c.r - 1.0,
+        bottom,
+    };
+    let fits =
+        |x: f64, y: f64| (x - c.x).hypot(y - c.y) + spot < on_ball.inside && y + spot < bottom;
     let mut at = (px as f64, py as f64);
     let mut out = None;
-    for _ in 0..3 {
+    for _ in 0..4 {
         if !fits(at.0, at.1) {
             return None;
         }
-        let m = centroid(img, at, size, peak.signum(), noise)?;
+        let m = centroid(img, at, size, peak.signum(), noise, &on_ball)?;
+        let moved = (m.x - at.0).hypot(m.y - at.1);
         at = (m.x, m.y);
         out = Some(m);
+        if moved < 0.05 {
+            break;
+        }
     }
     out.filter(|m| fits(m.x, m.y))
+}
+
+/// Where the ball's own surface is seen: within `inside` px of its centre, above the
+/// rail's edge `bottom`.
+struct Ball {
+    x: f64,
+    y: f64,
+    inside: f64,
+    bottom: f64,
+}
+
+impl Ball {
+    fn holds(&self, x: f64, y: f64) -> bool {
+        (x - self.x).hypot(y - self.y) < self.inside && y < self.bottom
+    }
 }
 
 /// The spot's radius, px: from the pixels beyond half its peak contrast near it.
@@ -173,7 +203,14 @@ fn spot_radius(img: &Gray, px: isize, py: isize, peak: f64, half: isize, sums: &
 /// to the ring from 1.6 to 2.2 spot radii (+ 1 px), the weights the contrast against
 /// it within 1.4 radii (+ 1 px), signed by `sign`.
 #[allow(clippy::indexing_slicing)] // the plane's three coefficients
-fn centroid(img: &Gray, at: (f64, f64), size: f64, sign: f64, noise: f64) -> Option<Mark> {
+fn centroid(
+    img: &Gray,
+    at: (f64, f64),
+    size: f64,
+    sign: f64,
+    noise: f64,
+    ball: &Ball,
+) -> Option<Mark> {
     let (inner, ring0, ring1) = (1.4 * size + 1.0, 1.6 * size + 1.0, 2.2 * size + 1.5);
     let reach = ring1.ceil() as isize;
     let (cx, cy) = (at.0.round() as isize, at.1.round() as isize);
@@ -186,16 +223,28 @@ fn centroid(img: &Gray, at: (f64, f64), size: f64, sign: f64, noise: f64) -> Opt
     }
     let mut ata = nalgebra::Matrix3::<f64>::zeros();
     let mut atb = nalgebra::Vector3::<f64>::zeros();
+    let (mut ring, mut kept) = (0usize, 0usize);
     for y in (cy - reach)..=(cy + reach) {
         for x in (cx - reach)..=(cx + reach) {
             let (dx, dy) = (x as f64 - at.0, y as f64 - at.1);
             let r = dx.hypot(dy);
             if (ring0..=ring1).contains(&r) {
+                ring += 1;
+                // Only the ring's part on the ball: the wall and the rail beyond
+                // its limb are no part of its shading.
+                if !ball.holds(x as f64, y as f64) {
+                    continue;
+                }
+                kept += 1;
                 let b = nalgebra::Vector3::new(1.0, dx, dy);
                 ata += b * b.transpose();
                 atb += b * f64::from(img.at(x as usize, y as usize));
             }
         }
+    }
+    // At least half the ring, so that the plane is held on both sides of the spot.
+    if 2 * kept < ring {
+        return None;
     }
     let plane = ata.try_inverse()? * atb;
     let (mut sw, mut sx, mut sy) = (0.0, 0.0, 0.0);

@@ -227,6 +227,29 @@ pub struct MarkChecks {
     /// slides with its spin growing from none; over a clip with rolling in it, a
     /// third or more). Default 0.3.
     pub least_turn_share: f64,
+    /// Marks of one ball found at one place of its disc (within `stay_within`
+    /// radii) frame after frame, while the ball moved on by a roll (its move over kR,
+    /// rad) of at least this, are no drawn mark, all left out: a ball that rolls
+    /// turns, and even a struck ball that slides without spin at first turns by
+    /// half a radian or more before it has rolled 2 rad (its spin grows from none
+    /// over a sliding phase of about 3 rad at μ_k 0.17). What stays is the
+    /// compression's blocks on the upper limb, a highlight, the shading's darkest
+    /// spot. "Frame after frame": each at most as many frames after the one before
+    /// as the ball's fast roll (its 80th percentile per frame, 1.5 times over)
+    /// needs for half a turn, so that a drawn mark cannot have come round meanwhile.
+    /// Default 2 …
+    pub stay_roll: f64,
+    /// … and "one place" is within this many radii. Default 0.12 (a fixed spot's
+    /// centroid wanders by under 0.1 R; a sliding ball's mark that turned by half a
+    /// radian, at 0.4–0.7 R, has moved 0.2 R or more).
+    pub stay_within: f64,
+    /// A mark needs a mark of its ball at most this many frames away that agrees
+    /// with it (turned by no more than rolling allows, `turn_per_radius`,
+    /// `turn_slack`) wherever such a step can be judged (the ball rolled less than a
+    /// quarter turn): a lone spot found where the drawn mark is hidden (behind the
+    /// rail), or a compressed clip's trace of the mark of the frame before, agrees
+    /// with neither neighbour. Default 2.
+    pub confirm_frames: usize,
 }
 
 impl Default for MarkChecks {
@@ -249,6 +272,9 @@ impl Default for MarkChecks {
             jumps_share: 0.2,
             min_roll: 1.5,
             least_turn_share: 0.3,
+            stay_roll: 2.0,
+            stay_within: 0.12,
+            confirm_frames: 2,
         }
     }
 }
