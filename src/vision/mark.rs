@@ -24,9 +24,10 @@ pub struct Mark {
 /// too near the limb or the rail to be measured against the ball's shading. The mark
 /// is whatever contrasts most with the ball's own surface, darker or lighter (`sign`
 /// 0), or of the sign found before (−1 darker, +1 lighter: once known, a highlight
-/// of the other sign is not taken for it); it must stand out by `levels` (luma
-/// levels, at least).
-pub fn find(img: &Gray, ball: &Outline, noise: f64, sign: f64, levels: (f64, f64)) -> InDisc {
+/// of the other sign is not taken for it); it must stand out by `levels.0` noise
+/// scatters and `levels.1` luma levels, at least, and is located by the centroid of
+/// its contrast above `levels.2` of its peak (`Params::mark_cut`).
+pub fn find(img: &Gray, ball: &Outline, noise: f64, sign: f64, levels: (f64, f64, f64)) -> InDisc {
     let mut spots = Vec::new();
     let mark = find_mark(img, ball, noise, sign, levels, &mut spots);
     InDisc {
@@ -88,10 +89,11 @@ fn find_mark(
     ball: &Outline,
     noise: f64,
     sign: f64,
-    levels: (f64, f64),
+    levels: (f64, f64, f64),
     spots: &mut Vec<(f64, isize, isize)>,
 ) -> Option<Mark> {
     let least = (levels.0 * noise).max(levels.1);
+    let cut = levels.2;
     let c = ball.circle;
     // The search region: inside the limb, above the rail.
     let inner = c.r - (0.1 * c.r).max(3.0);
@@ -134,7 +136,13 @@ fn find_mark(
     if peak.abs() < least || (sign != 0.0 && peak * sign <= 0.0) {
         return None;
     }
-    let size = spot_radius(img, px, py, peak, half, &sums);
+    // The spot's radius, at least 1.2 times the box's half-width: a mark larger
+    // than the box stands out from the box's mean only about its rim (inside it the
+    // box holds the mark alone), so its peak is found at its rim, and its size from
+    // the pixels over half the peak is that rim's; a centroid over so small a disc,
+    // with the shading's ring on the mark itself, stayed near the rim (3–6 px off on
+    // marks of 0.2 R).
+    let size = spot_radius(img, px, py, peak, half, &sums).max(1.2 * half as f64);
     // The spot (its centroid's disc) must lie on the ball, above the rail; the ring
     // the shading is fitted on is the part of it on the ball, above the rail. (A ring
     // wholly on the ball was asked before: a mark near the limb was then found only
@@ -151,11 +159,11 @@ fn find_mark(
         |x: f64, y: f64| (x - c.x).hypot(y - c.y) + spot < on_ball.inside && y + spot < bottom;
     let mut at = (px as f64, py as f64);
     let mut out = None;
-    for _ in 0..4 {
+    for _ in 0..6 {
         if !fits(at.0, at.1) {
             return None;
         }
-        let m = centroid(img, at, size, peak.signum(), noise, &on_ball)?;
+        let m = centroid(img, at, size, peak.signum(), noise, &on_ball, cut)?;
         let moved = (m.x - at.0).hypot(m.y - at.1);
         at = (m.x, m.y);
         out = Some(m);
@@ -210,6 +218,7 @@ fn centroid(
     sign: f64,
     noise: f64,
     ball: &Ball,
+    cut: f64,
 ) -> Option<Mark> {
     let (inner, ring0, ring1) = (1.4 * size + 1.0, 1.6 * size + 1.0, 2.2 * size + 1.5);
     let reach = ring1.ceil() as isize;
@@ -247,8 +256,8 @@ fn centroid(
         return None;
     }
     let plane = ata.try_inverse()? * atb;
-    let (mut sw, mut sx, mut sy) = (0.0, 0.0, 0.0);
-    let mut pts = Vec::new();
+    // Each pixel of the spot's disc and its contrast against the shading.
+    let mut px: Vec<(f64, f64, f64)> = Vec::new();
     for y in (cy - reach)..=(cy + reach) {
         for x in (cx - reach)..=(cx + reach) {
             let (dx, dy) = (x as f64 - at.0, y as f64 - at.1);
@@ -257,25 +266,38 @@ fn centroid(
             }
             let shade = plane[0] + plane[1] * dx + plane[2] * dy;
             let w = sign * (f64::from(img.at(x as usize, y as usize)) - shade);
-            sw += w;
-            sx += w * x as f64;
-            sy += w * y as f64;
-            pts.push((x as f64, y as f64));
+            px.push((x as f64, y as f64, w));
         }
     }
-    if sw <= 0.0 {
+    let total: f64 = px.iter().map(|p| p.2).sum();
+    // The centroid of the contrast above `cut` of its peak, less that: the plane
+    // misses the shading's curvature (darker toward the limb, a light spot beside
+    // the mark) by a few levels over the disc, which, summed over its many pixels,
+    // pulled the centroid of all the contrast toward the ball's centre by up to 5
+    // px on marks near the limb; the mark stands out by tens of levels.
+    let peak = px.iter().map(|p| p.2).fold(0.0, f64::max);
+    let floor = cut * peak;
+    let (mut sw, mut sx, mut sy) = (0.0, 0.0, 0.0);
+    for &(x, y, w) in &px {
+        let w = (w - floor).max(0.0);
+        sw += w;
+        sx += w * x;
+        sy += w * y;
+    }
+    if sw <= 0.0 || total <= 0.0 {
         return None;
     }
     let (mx, my) = (sx / sw, sy / sw);
-    let spread: f64 = pts
+    let spread: f64 = px
         .iter()
-        .map(|(x, y)| 0.5 * ((x - mx).powi(2) + (y - my).powi(2)))
+        .filter(|p| p.2 > floor)
+        .map(|(x, y, _)| 0.5 * ((x - mx).powi(2) + (y - my).powi(2)))
         .sum();
     Some(Mark {
         x: mx,
         y: my,
         sigma: noise.max(0.5) * spread.sqrt() / sw,
-        contrast: sign * sw / (std::f64::consts::PI * size * size),
+        contrast: sign * total / (std::f64::consts::PI * size * size),
     })
 }
 

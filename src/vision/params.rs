@@ -96,6 +96,12 @@ pub struct Params {
     pub mark_sigmas: f64,
     /// … and this many levels. Default 10 (a glossy ball's shading texture is less).
     pub mark_levels: f64,
+    /// The mark is located by the centroid of its contrast against the ball's
+    /// shading above this share of its peak (less that share). Default 0.3: the
+    /// shading's curvature, which a plane misses by a few levels, weighed over the
+    /// whole spot's disc and pulled the centroid of a mark near the limb up to 5 px
+    /// toward the centre; a drawn mark stands out by tens of levels.
+    pub mark_cut: f64,
     /// A blob wider than this many balls (the radius known) is searched for balls
     /// of that radius on the frame's edges even where a ball was fitted in it (a
     /// ball and the smear of changed blocks it drags in a compressed clip).
@@ -302,6 +308,7 @@ impl Default for Params {
             max_across: 0.15,
             mark_sigmas: 6.0,
             mark_levels: 10.0,
+            mark_cut: 0.3,
             wide_blob: 1.3,
             hough_arc: 0.2,
             marks: MarkChecks::default(),

@@ -366,7 +366,13 @@ impl Tracker {
             1.0
         };
         let p = self.params;
-        let found = mark::find(img, o, noise, sign, (p.mark_sigmas, p.mark_levels));
+        let found = mark::find(
+            img,
+            o,
+            noise,
+            sign,
+            (p.mark_sigmas, p.mark_levels, p.mark_cut),
+        );
         if sign == 0.0
             && let Some(m) = found.mark
         {

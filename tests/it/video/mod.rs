@@ -5,6 +5,8 @@ pub(crate) mod app;
 pub(crate) mod found_frames;
 pub(crate) mod looks;
 mod mark_highlight;
+mod mark_place;
+mod marks_stay;
 mod marks_turn;
 pub(crate) mod overlay;
 pub(crate) mod seed;
