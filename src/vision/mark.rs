@@ -149,7 +149,7 @@ fn find_mark(
     // where its centroid fell short of it, toward the centre: 3–5 px on looks with the
     // mark at 0.6–0.7 R.)
     let spot = 1.4 * size + 1.0;
-    let on_ball = Ball {
+    let on_ball = Surface {
         x: c.x,
         y: c.y,
         inside: c.r - 1.0,
@@ -176,14 +176,14 @@ fn find_mark(
 
 /// Where the ball's own surface is seen: within `inside` px of its centre, above the
 /// rail's edge `bottom`.
-struct Ball {
+struct Surface {
     x: f64,
     y: f64,
     inside: f64,
     bottom: f64,
 }
 
-impl Ball {
+impl Surface {
     fn holds(&self, x: f64, y: f64) -> bool {
         (x - self.x).hypot(y - self.y) < self.inside && y < self.bottom
     }
@@ -217,7 +217,7 @@ fn centroid(
     size: f64,
     sign: f64,
     noise: f64,
-    ball: &Ball,
+    ball: &Surface,
     cut: f64,
 ) -> Option<Mark> {
     let (inner, ring0, ring1) = (1.4 * size + 1.0, 1.6 * size + 1.0, 2.2 * size + 1.5);

@@ -61,7 +61,7 @@ pub fn checked(frames: &[FrameFixes], p: &MarkChecks) -> Vec<FrameFixes> {
 /// The places of the disc (radii from the centre) where a spot stands out in most
 /// of each ball's frames (of each ball seen in [`MarkChecks::fewest_marks`] frames
 /// or more): a glossy highlight, a feature of the shading or of a metal's
-/// reflection, which the light puts at one place of both discs. Seen as the
+/// reflection, which the light puts at one place of both discs. BallFit as the
 /// strongest spot only where the drawn mark is hidden (behind the rail) or weak, it
 /// is found as a lesser spot in the other frames ([`super::mark::InDisc::spots`]). A
 /// drawn mark turns with its ball and passes any one place of the disc in a few
@@ -399,34 +399,65 @@ fn still_marks(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Vec<usize>
     out
 }
 
-/// The frames whose mark in `slot` sits at one place of its disc in a run of marks
-/// (each a few frames after the one before, too few for a drawn mark to come round)
-/// while the ball rolled on by [`MarkChecks::stay_roll`] rad or more: a drawn mark
-/// turns as its ball rolls; compression blocks on the upper limb, a highlight or the
-/// shading's darkest spot stay.
-#[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame; i < marks.len()
-fn stayed_while_rolling(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Vec<usize> {
-    // Each fit: frame, the ball's centre, kR (px), the mark's place in the disc.
-    let fits: Vec<(usize, (f64, f64), f64, Option<(f64, f64)>)> = frames
+/// One fit of a ball, for the checks of single marks: its frame, centre (px), kR
+/// (px: it rolls on the rails' edges, kR below its centre, the rail's top edge being
+/// the outline's lowest point) and its mark's place in the disc (radii).
+#[derive(Clone, Copy, Debug)]
+struct BallFit {
+    k: usize,
+    centre: (f64, f64),
+    kr: f64,
+    mark: Option<(f64, f64)>,
+}
+
+impl BallFit {
+    /// How far the ball rolled from this fit to `b`: its move over kR, rad.
+    fn roll_to(&self, b: &BallFit) -> f64 {
+        (b.centre.0 - self.centre.0).hypot(b.centre.1 - self.centre.1) / self.kr
+    }
+
+    /// The mark's angle about the centre, rad.
+    fn angle(&self) -> Option<f64> {
+        self.mark.map(|o| o.1.atan2(o.0))
+    }
+}
+
+/// Every fit of `slot`, in frame order.
+#[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
+fn seen(frames: &[FrameFixes], slot: usize) -> Vec<BallFit> {
+    frames
         .iter()
         .enumerate()
         .filter_map(|(k, f)| {
             let fix = f[slot].as_ref().ok()?;
             let c = fix.outline.circle;
             let kr = c.r * ((fix.outline.lowest - c.y) / c.r.max(1.0)).clamp(0.2, 1.0);
-            Some((k, (c.x, c.y), kr.max(1.0), offset(fix)))
+            Some(BallFit {
+                k,
+                centre: (c.x, c.y),
+                kr: kr.max(1.0),
+                mark: offset(fix),
+            })
         })
-        .collect();
-    let roll = |a: &(usize, (f64, f64), f64, Option<(f64, f64)>),
-                b: &(usize, (f64, f64), f64, Option<(f64, f64)>)| {
-        (b.1.0 - a.1.0).hypot(b.1.1 - a.1.1) / a.2
-    };
-    // The ball's fast roll per frame (a few wild fits left out), and the most frames
-    // between two marks of a run: under half a turn at 1.5 times that roll.
+        .collect()
+}
+
+/// The frames whose mark in `slot` sits at one place of its disc in a run of marks
+/// (each a few frames after the one before, too few for a drawn mark to come round)
+/// while the ball rolled on by [`MarkChecks::stay_roll`] rad or more: a drawn mark
+/// turns as its ball rolls; compression blocks on the upper limb, a highlight or the
+/// shading's darkest spot stay.
+fn stayed_while_rolling(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Vec<usize> {
+    let fits = seen(frames, slot);
+    // The ball's fast roll per frame (a few wild fits left out: its 80th
+    // percentile), and the most frames between two marks of a run: under half a
+    // turn at 1.5 times that roll.
     let mut rates: Vec<f64> = fits
         .windows(2)
-        .filter(|w| w[1].0 - w[0].0 <= 2)
-        .map(|w| roll(&w[0], &w[1]) / (w[1].0 - w[0].0) as f64)
+        .filter_map(|w| match w {
+            [a, b] if b.k - a.k <= 2 => Some(a.roll_to(b) / (b.k - a.k) as f64),
+            _ => None,
+        })
         .collect();
     rates.sort_by(f64::total_cmp);
     let fast = rates
@@ -434,22 +465,21 @@ fn stayed_while_rolling(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> V
         .copied()
         .unwrap_or(0.0);
     let gap = (std::f64::consts::PI / (1.5 * fast).max(1e-9)).clamp(1.0, 1e6) as usize;
-    let marks: Vec<_> = fits.iter().filter(|f| f.3.is_some()).collect();
+    let marks: Vec<&BallFit> = fits.iter().filter(|f| f.mark.is_some()).collect();
     let mut out = Vec::new();
     for (i, a) in marks.iter().enumerate() {
-        let Some(at) = a.3 else { continue };
-        let mut run = vec![a.0];
-        let mut last = a.0;
+        let Some(at) = a.mark else { continue };
+        let mut run = vec![a.k];
+        let mut last = a.k;
         for b in marks.iter().skip(i + 1) {
-            if b.0 - last > gap {
+            if b.k - last > gap {
                 break;
             }
-            if b.3.is_some_and(|o| near(o, at, p.stay_within)) {
-                run.push(b.0);
-                last = b.0;
-                if roll(a, b) >= p.stay_roll {
-                    out.extend(run.iter().copied());
-                    run.clear();
+            if b.mark.is_some_and(|o| near(o, at, p.stay_within)) {
+                run.push(b.k);
+                last = b.k;
+                if a.roll_to(b) >= p.stay_roll {
+                    out.append(&mut run);
                 }
             }
         }
@@ -464,39 +494,23 @@ fn stayed_while_rolling(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> V
 /// be judged (the ball rolled by less than a quarter turn): a drawn mark seen in one
 /// frame is seen, turned by about what the ball rolled, in the next or the one
 /// before unless it turns behind the rail; a lone spot is not confirmed.
-#[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame; i, j < marks.len()
 fn unconfirmed(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Vec<usize> {
-    // Each fit: frame, the ball's centre, kR (px), the mark's angle about the centre.
-    let fits: Vec<(usize, (f64, f64), f64, Option<f64>)> = frames
-        .iter()
-        .enumerate()
-        .filter_map(|(k, f)| {
-            let fix = f[slot].as_ref().ok()?;
-            let c = fix.outline.circle;
-            let kr = c.r * ((fix.outline.lowest - c.y) / c.r.max(1.0)).clamp(0.2, 1.0);
-            Some((
-                k,
-                (c.x, c.y),
-                kr.max(1.0),
-                offset(fix).map(|o| o.1.atan2(o.0)),
-            ))
-        })
-        .collect();
+    let fits = seen(frames, slot);
     let mut out = Vec::new();
-    for (i, a) in fits.iter().enumerate() {
-        let Some(ta) = a.3 else { continue };
-        let (mut judged, mut agrees) = (false, false);
-        let near_frames = fits
+    for a in &fits {
+        let Some(ta) = a.angle() else { continue };
+        let around: Vec<&BallFit> = fits
             .iter()
-            .enumerate()
-            .filter(|(j, b)| *j != i && b.0.abs_diff(a.0) <= p.confirm_frames);
-        for (_, b) in near_frames {
-            let roll = (b.1.0 - a.1.0).hypot(b.1.1 - a.1.1) / a.2;
+            .filter(|b| b.k != a.k && b.k.abs_diff(a.k) <= p.confirm_frames)
+            .collect();
+        let (mut judged, mut agrees) = (false, false);
+        for b in &around {
+            let roll = a.roll_to(b);
+            // A frame around it without a mark: the mark may be hidden there.
+            let Some(tb) = b.angle() else { continue };
             if roll >= std::f64::consts::FRAC_PI_2 {
                 continue;
             }
-            // A frame around it without a mark: the mark may be hidden there.
-            let Some(tb) = b.3 else { continue };
             judged = true;
             let turn = (tb - ta + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU)
                 - std::f64::consts::PI;
@@ -504,36 +518,20 @@ fn unconfirmed(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Vec<usize>
         }
         // Alone: the ball seen before and after it, its mark in none of them (at the
         // clip's ends, or next to frames without the ball, a mark may be alone).
-        let around = |before: bool| {
-            fits.iter()
-                .filter(|b| {
-                    b.0.abs_diff(a.0) <= p.confirm_frames && (b.0 < a.0) == before && b.0 != a.0
-                })
-                .collect::<Vec<_>>()
-        };
-        let (before, after) = (around(true), around(false));
-        let lone = !before.is_empty()
-            && !after.is_empty()
-            && before.iter().chain(&after).all(|b| b.3.is_none());
-        if (judged && !agrees) || (lone && slow(&fits, i)) {
-            out.push(a.0);
+        let lone = around.iter().any(|b| b.k < a.k)
+            && around.iter().any(|b| b.k > a.k)
+            && around.iter().all(|b| b.mark.is_none());
+        // Slow: under a tenth of a turn a frame, so that a drawn mark seen here
+        // would be seen in a frame next to it too (it takes several frames to cross
+        // the visible part of the disc).
+        let slow = around
+            .iter()
+            .any(|b| a.roll_to(b) / (b.k.abs_diff(a.k) as f64) < 0.1 * std::f64::consts::TAU);
+        if (judged && !agrees) || (lone && slow) {
+            out.push(a.k);
         }
     }
     out
-}
-
-/// True when the ball of `fits[i]` moves slowly enough around that frame that a
-/// drawn mark seen there would be seen in a frame next to it too (under a tenth of
-/// a turn per frame: it takes several frames to cross the visible part of the disc).
-#[allow(clippy::indexing_slicing)] // i < fits.len()
-fn slow(fits: &[(usize, (f64, f64), f64, Option<f64>)], i: usize) -> bool {
-    let a = fits[i];
-    fits.iter()
-        .filter(|b| b.0 != a.0 && b.0.abs_diff(a.0) <= 2)
-        .any(|b| {
-            let roll = (b.1.0 - a.1.0).hypot(b.1.1 - a.1.1) / a.2;
-            roll / (b.0.abs_diff(a.0) as f64) < 0.1 * std::f64::consts::TAU
-        })
 }
 
 /// The median of `v`, `None` when empty.
