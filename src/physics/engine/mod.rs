@@ -66,6 +66,34 @@ impl Candidates {
     }
 }
 
+/// The events of one step, on the stack: one per candidate that is due and the
+/// impact.
+#[derive(Clone, Copy, Debug)]
+struct Kinds {
+    items: [(EventKind, Who); 8],
+    len: usize,
+}
+
+impl Default for Kinds {
+    fn default() -> Self {
+        Kinds {
+            items: [(EventKind::Collision, Who::Both); 8],
+            len: 0,
+        }
+    }
+}
+
+impl Kinds {
+    fn push(&mut self, k: (EventKind, Who)) {
+        self.items[self.len] = k;
+        self.len += 1;
+    }
+
+    fn as_slice(&self) -> &[(EventKind, Who)] {
+        &self.items[..self.len]
+    }
+}
+
 /// A possible next event of the current segment.
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum EventCandidate {
@@ -257,12 +285,14 @@ impl Engine {
                 due.push(c);
             }
         }
-        let due: Vec<EventCandidate> = due.as_slice().iter().map(|c| c.1).collect();
+        let due = due.as_slice().iter().map(|c| c.1);
         let before = self.state;
         let phase_before = self.phase;
         self.advance(tau);
-        let mut kinds = Vec::new();
-        for &c in due.iter().filter(|c| **c != EventCandidate::Impact) {
+        // On the stack: a step runs for every segment of every motion solved (a fit
+        // solves thousands), and two small vectors per step were a tenth of a solve.
+        let mut kinds = Kinds::default();
+        for c in due.clone().filter(|c| *c != EventCandidate::Impact) {
             kinds.push(self.apply(c, &before));
         }
         if self.together {
@@ -275,17 +305,19 @@ impl Engine {
             self.state[0].v = v;
             self.state[1].v = v;
         }
-        let impact = due.contains(&EventCandidate::Impact);
+        let impact = due.clone().any(|c| c == EventCandidate::Impact);
         if impact {
             self.collide();
             kinds.push((EventKind::Collision, Who::Both));
         }
         self.settle();
-        let kinds: Vec<_> = kinds
-            .into_iter()
-            .filter_map(|(kind, who)| self.confirmed(kind, who, &phase_before))
-            .collect();
-        self.record(&kinds);
+        let mut confirmed = Kinds::default();
+        for &(kind, who) in kinds.as_slice() {
+            if let Some(k) = self.confirmed(kind, who, &phase_before) {
+                confirmed.push(k);
+            }
+        }
+        self.record(confirmed.as_slice());
         if impact {
             self.check_series();
         }

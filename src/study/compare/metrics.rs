@@ -77,11 +77,13 @@ impl Observer for Metrics<'_> {
             seg.start[i].advanced(a, du, t - seg.t0)
         };
         let ex = [state(seg, 0), state(seg, 1)];
-        for (i, (e, el)) in ex
-            .into_iter()
-            .zip([state(seg_left, 0), state(seg_left, 1)])
-            .enumerate()
-        {
+        // Away from an impact (nearly every step) both are the same segment's.
+        let ex_left = if before == at {
+            ex
+        } else {
+            [state(seg_left, 0), state(seg_left, 1)]
+        };
+        for (i, (e, el)) in ex.into_iter().zip(ex_left).enumerate() {
             if !impact_step {
                 let dv = (y[3 * i + 1] - e.v).abs().min((y[3 * i + 1] - el.v).abs());
                 let du = (y[3 * i + 2] - e.u).abs().min((y[3 * i + 2] - el.u).abs());

@@ -49,16 +49,20 @@ fn under_any_preset_v0_comes_from_the_data() {
 
 #[test]
 fn a_flag_wins_over_the_data_and_is_said_when_it_contradicts_them() {
-    let plain = fit_json(&[]);
+    // The data's approach as `data` reads it (no fit needed for it); each fit below
+    // must state the same approach in its sources.
+    let read = json(&["data", BALL, "--format", "json"]);
     let (speed, se) = (
-        plain["sources"]["approach"]["speed"].as_f64().unwrap(),
-        plain["sources"]["approach"]["se"].as_f64().unwrap(),
+        read[0]["approach_speed"].as_f64().unwrap(),
+        read[0]["approach_speed_se"].as_f64().unwrap(),
     );
     // Within the data's ± 2σ: used, not a contradiction; beyond it: used and said.
     for (sigmas, said) in [(1.0, false), (3.0, true)] {
         let v0 = format!("{}", speed + sigmas * se);
         let j = fit_json(&["--v0", &v0]);
         let s = &j["sources"];
+        assert_eq!(s["approach"]["speed"].as_f64(), Some(speed), "{s}");
+        assert_eq!(s["approach"]["se"].as_f64(), Some(se), "{s}");
         assert_eq!(s["values"]["v0_left"], "flag", "{s}");
         let used = j["scene"]["left"]["v0"].as_f64().unwrap();
         assert!((used - (speed + sigmas * se)).abs() < 1e-12, "{used}");

@@ -344,6 +344,34 @@ fn fit_stops_when_asked_and_matches_when_not() {
     );
 }
 
+/// Waits until the process `pid` has a handler for SIGINT (bit 2 of `SigCgt` in
+/// `/proc/PID/status`); where there is no `/proc`, waits 700 ms instead.
+fn catches_sigint(pid: u32) {
+    let status = format!("/proc/{pid}/status");
+    if !std::path::Path::new(&status).exists() {
+        std::thread::sleep(Duration::from_millis(700));
+        return;
+    }
+    let start = std::time::Instant::now();
+    loop {
+        let caught = std::fs::read_to_string(&status)
+            .ok()
+            .and_then(|s| {
+                let mask = s.lines().find_map(|l| l.strip_prefix("SigCgt:"))?;
+                u64::from_str_radix(mask.trim(), 16).ok()
+            })
+            .is_some_and(|mask| mask & (1 << (2 - 1)) != 0);
+        if caught {
+            return;
+        }
+        assert!(
+            start.elapsed() < Duration::from_secs(30),
+            "no SIGINT handler"
+        );
+        std::thread::sleep(Duration::from_millis(5));
+    }
+}
+
 #[test]
 fn ctrl_c_stops_compare_with_130_and_writes_nothing() {
     let dir = std::env::temp_dir().join(format!("groovelab-interrupt-{}", std::process::id()));
@@ -357,7 +385,11 @@ fn ctrl_c_stops_compare_with_130_and_writes_nothing() {
         .spawn()
         .unwrap();
     // The default sweep takes seconds (release) to a minute (debug): well past this.
-    std::thread::sleep(Duration::from_millis(700));
+    // Signalled once it catches SIGINT (else the default action would end it, not the
+    // program), and a little later, so the sweep is under way; a fixed 700 ms wait
+    // spent two cores on the sweep for nothing.
+    catches_sigint(child.id());
+    std::thread::sleep(Duration::from_millis(100));
     let kill = Command::new("kill")
         .args(["-INT", &child.id().to_string()])
         .status()

@@ -270,7 +270,9 @@ fn sigint_or_sigterm_during_a_sweep_to_a_file_leaves_nothing() {
             );
             std::thread::sleep(Duration::from_millis(10));
         }
-        std::thread::sleep(Duration::from_millis(200));
+        // A little longer, so rows are being streamed into it (the 2000×1000 map takes
+        // seconds; each ms here costs both cores' work).
+        std::thread::sleep(Duration::from_millis(50));
         let killed = Command::new("kill")
             .args([signal, &child.id().to_string()])
             .status()
