@@ -5,8 +5,6 @@
 //! frame where the mark was hidden (56 px off). Each is left out; the drawn marks
 //! around them are kept. Numbers only, no pictures: cheap.
 
-use groovelab::vision::circle::{Circle, Outline};
-use groovelab::vision::mark::Mark;
 use groovelab::vision::mark_check::checked;
 use groovelab::vision::params::MarkChecks;
 use groovelab::vision::tracker::{Fix, FrameFixes, LeftOut};
@@ -29,27 +27,10 @@ fn drawn(k: usize) -> (f64, f64) {
     (x + D * R * a.sin(), y - D * R * a.cos())
 }
 
+/// The left ball in frame `k` with its mark (if any) at `mark`.
 fn fix(k: usize, mark: Option<(f64, f64)>) -> Result<Fix, LeftOut> {
     let (x, y) = centre(k);
-    Ok(Fix {
-        outline: Outline {
-            circle: Circle { x, y, r: R },
-            sigma: [0.05; 3],
-            rms: 0.2,
-            points: 100,
-            coverage: 0.6,
-            lowest: y + K * R,
-            polarity: 1.0,
-        },
-        sigma: 0.05,
-        mark: mark.map(|(x, y)| Mark {
-            x,
-            y,
-            sigma: 0.1,
-            contrast: -40.0,
-        }),
-        spots: [None; groovelab::vision::mark::SPOTS],
-    })
+    super::marks_turn::fix(x, y, R, mark)
 }
 
 /// 60 frames of the left ball, the mark in frame `k` given by `mark(k)`.

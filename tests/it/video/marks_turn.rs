@@ -16,8 +16,9 @@ use proptest::prelude::*;
 /// rolling on them turns by Δx / (kR).
 const K: f64 = 0.45;
 
-/// A ball at `(x, y)` of radius `r` with its mark (if any) at `mark`, px.
-fn fix(x: f64, y: f64, r: f64, mark: Option<(f64, f64)>) -> Result<Fix, LeftOut> {
+/// A ball at `(x, y)` of radius `r` with its mark (if any) at `mark`, px, as the
+/// tracker's outline fit and mark finder would report it (also `marks_stay`'s).
+pub(super) fn fix(x: f64, y: f64, r: f64, mark: Option<(f64, f64)>) -> Result<Fix, LeftOut> {
     Ok(Fix {
         outline: Outline {
             circle: Circle { x, y, r },
