@@ -38,59 +38,50 @@ pub fn solve(scene: &Scene, span: &Span) -> Solution {
 /// within ~1e-2 of 1 (b within ~1e-3 of 2R) need that many.
 const CYCLES_BEFORE_SUMMING: usize = 5000;
 
-/// The possible next events of a segment, on the stack: at most three per ball
-/// (rolling, pure gliding, pure slipping) and the impact.
+/// At most `N` values on the stack, in the order pushed: a step runs for every segment
+/// of every motion solved (a fit solves thousands), and small vectors allocated and
+/// freed per step were a tenth of a solve.
 #[derive(Clone, Copy, Debug)]
-struct Candidates {
-    items: [(f64, EventCandidate); 7],
+struct Few<T: Copy, const N: usize> {
+    items: [T; N],
     len: usize,
 }
+
+impl<T: Copy, const N: usize> Few<T, N> {
+    /// Empty; `filler` only fills the unused places.
+    fn new(filler: T) -> Self {
+        Few {
+            items: [filler; N],
+            len: 0,
+        }
+    }
+
+    fn push(&mut self, item: T) {
+        self.items[self.len] = item;
+        self.len += 1;
+    }
+
+    fn as_slice(&self) -> &[T] {
+        &self.items[..self.len]
+    }
+}
+
+/// The possible next events of a segment: at most three per ball (rolling, pure
+/// gliding, pure slipping) and the impact.
+type Candidates = Few<(f64, EventCandidate), 7>;
 
 impl Default for Candidates {
     fn default() -> Self {
-        Candidates {
-            items: [(0.0, EventCandidate::Impact); 7],
-            len: 0,
-        }
+        Few::new((0.0, EventCandidate::Impact))
     }
 }
 
-impl Candidates {
-    fn push(&mut self, c: (f64, EventCandidate)) {
-        self.items[self.len] = c;
-        self.len += 1;
-    }
-
-    fn as_slice(&self) -> &[(f64, EventCandidate)] {
-        &self.items[..self.len]
-    }
-}
-
-/// The events of one step, on the stack: one per candidate that is due and the
-/// impact.
-#[derive(Clone, Copy, Debug)]
-struct Kinds {
-    items: [(EventKind, Who); 8],
-    len: usize,
-}
+/// The events of one step: one per candidate that is due, and the impact.
+type Kinds = Few<(EventKind, Who), 8>;
 
 impl Default for Kinds {
     fn default() -> Self {
-        Kinds {
-            items: [(EventKind::Collision, Who::Both); 8],
-            len: 0,
-        }
-    }
-}
-
-impl Kinds {
-    fn push(&mut self, k: (EventKind, Who)) {
-        self.items[self.len] = k;
-        self.len += 1;
-    }
-
-    fn as_slice(&self) -> &[(EventKind, Who)] {
-        &self.items[..self.len]
+        Few::new((EventKind::Collision, Who::Both))
     }
 }
 
@@ -289,8 +280,6 @@ impl Engine {
         let before = self.state;
         let phase_before = self.phase;
         self.advance(tau);
-        // On the stack: a step runs for every segment of every motion solved (a fit
-        // solves thousands), and two small vectors per step were a tenth of a solve.
         let mut kinds = Kinds::default();
         for c in due.clone().filter(|c| *c != EventCandidate::Impact) {
             kinds.push(self.apply(c, &before));
