@@ -199,7 +199,7 @@ proptest! {
     /// Whatever the look: μ_k within max(0.015, 2 ±) of the truth or a one-line
     /// refusal; the scale within 2 of its ±; never a panic.
     #[test]
-    #[ignore = "failed on the tracker of 2026-11-28 (vision::VERSION 4; not run again on versions 5 to 7): a scale beyond 2 of its ± on some small looks (419.1 ± 1.8 px/m for 412.6: a coloured ball on a cluttered wall, 300p, 30 fps); the 48 full-size looks of BENCHMARKS.md have none beyond 2 ± but one wrong μ_k (seed 2)"]
+    #[ignore = "fails on tracker version 7 (2026-11-29): of 40 small looks (seeds 0–39, 270p–300p, R 11–17 px) 10 give a scale beyond 2 of its ±, four of them 18–28 % off with a ± of 3–5 % (seeds 5, 13, 23, 38; on 38 the outline is fitted to the top of the ball above a rail of its shade, its radius 28 % small, the radii agreeing frame to frame); LOOKS_SIZE=small with the looks_table shows them"]
     fn every_random_look_is_measured_right_or_refused_in_one_line(seed in any::<u64>()) {
         check(seed, true)?;
     }
@@ -390,7 +390,8 @@ fn measure(dir: &Path, clip: &Clip) -> Row {
 /// frames/s, up to 250 frames, H.264 at their crf or 18) tracked and fitted, a row each and a summary,
 /// written to `target/tmp/video_looks/table.md`:
 /// `LOOKS=100 cargo test --release --test it video::looks::looks_table -- --ignored --nocapture`
-/// (`LOOKS_FROM=N` starts at seed N; `LOOKS_FRAMES=1` prints each frame's centre and
+/// (`LOOKS_FROM=N` starts at seed N; `LOOKS_SIZE=small` takes the small looks of the
+/// property tests; `LOOKS_FRAMES=1` prints each frame's centre and
 /// mark against the truth).
 #[test]
 #[ignore = "the big run: minutes per dozen looks"]
@@ -406,6 +407,11 @@ fn looks_table() {
         .ok()
         .and_then(|v| v.parse().ok())
         .unwrap_or(0);
+    // `LOOKS_SIZE=small`: the small looks of the property tests (270p–300p, R 11–17 px).
+    let size = match std::env::var("LOOKS_SIZE").as_deref() {
+        Ok("small") => Size::Small,
+        _ => Size::Full,
+    };
     let scene = paper_scene();
     let truth = scene.mu;
     let root = crate::common::scratch_root("video_looks");
@@ -416,7 +422,7 @@ fn looks_table() {
     let (mut good, mut wrong1, mut wrong2, mut panics, mut refused) = (0, 0, 0, 0, 0);
     let (mut c_all, mut m_all) = ((0.0, 0), (0.0, 0));
     for seed in first..first + n {
-        let clip = looks::random(&scene, seed, Size::Full);
+        let clip = looks::random(&scene, seed, size);
         let dir = scratch_dir("video_looks", "run");
         let row = measure(&dir, &clip);
         let rms = |(s, n): (f64, usize)| {
