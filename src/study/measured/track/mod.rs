@@ -204,14 +204,15 @@ const MARK_SCATTERS: f64 = 10.0;
 const MARK_AT_CENTRE_SCATTERS: f64 = 3.0;
 
 /// The mark's spin, kept when the mark lies [`MARK_SCATTERS`] position scatters or more
-/// from the centre; left out (`Ok((None, Some(its radius)))`, the fits then use the
+/// from the centre; left out (`Ok((None, Some(what was left out)))`, the fits then use the
 /// centre alone and say so) when nearer but off the centre by more than the noise (a
 /// video whose centres jitter by a few pixels: the mark is real, its angle is noise);
 /// refused, saying how near, when within [`MARK_AT_CENTRE_SCATTERS`] of it.
 fn mark_off_the_centre(
     spin: Option<Spin>,
     scatter: f64,
-) -> Result<(Option<Spin>, Option<f64>), TrackError> {
+    name: Option<&str>,
+) -> Result<(Option<Spin>, Option<MarkLeftOut>), TrackError> {
     match spin {
         Some(s) if s.radius < MARK_AT_CENTRE_SCATTERS * scatter => {
             Err(TrackError::MarkAtTheCentre {
@@ -220,7 +221,14 @@ fn mark_off_the_centre(
                 scatters: MARK_AT_CENTRE_SCATTERS,
             })
         }
-        Some(s) if s.radius < MARK_SCATTERS * scatter => Ok((None, Some(s.radius))),
+        Some(s) if s.radius < MARK_SCATTERS * scatter => Ok((
+            None,
+            Some(MarkLeftOut {
+                name: name.unwrap_or_default().to_string(),
+                radius: s.radius,
+                scatters: MARK_SCATTERS,
+            }),
+        )),
         spin => Ok((spin, None)),
     }
 }
@@ -255,9 +263,7 @@ pub fn derive(
     contact_radius: f64,
     opts: &Derive,
 ) -> Result<(Measured, Found), TrackError> {
-    let rows: Vec<usize> = (0..track.t().len())
-        .filter(|&i| track.at(i).x.is_finite())
-        .collect();
+    let rows = centre_rows(track);
     let ts: Vec<f64> = rows.iter().map(|&i| track.at(i).t).collect();
     let xs: Vec<f64> = rows.iter().map(|&i| track.at(i).x).collect();
     enough_frames(ts.len(), opts)?;
@@ -271,8 +277,8 @@ pub fn derive(
     let approach = approach_line(&ts, &xs, before);
     let cuts: Vec<f64> = kinks.iter().map(|k| k.t).collect();
     let dx = derivatives(&ts, &xs, n, &cuts, sigma);
-    let (spin, mark_noisy) =
-        mark_off_the_centre(spin_of(track, &rows, dir, (n, dt), &cuts), sigma)?;
+    let spin = spin_of(track, &rows, dir, (n, dt), &cuts);
+    let (spin, mark_left_out) = mark_off_the_centre(spin, sigma, track.mark_name())?;
     let spin_sign = spin
         .as_ref()
         .map_or(1.0, |s| s.sign(&ts, &dx, first.t, dir));
@@ -348,13 +354,16 @@ pub fn derive(
         frames_after: after,
         later_impacts: kinks.iter().skip(1).map(|k| k.t - first.t).collect(),
         mark_radius: spin.as_ref().map(|s| s.radius),
-        mark_left_out: mark_noisy.map(|radius| MarkLeftOut {
-            name: track.mark_name().unwrap_or_default().to_string(),
-            radius,
-            scatters: MARK_SCATTERS,
-        }),
+        mark_left_out,
     };
     Ok((Measured::new(m)?, found))
+}
+
+/// The rows of `track` with a centre position.
+fn centre_rows(track: &Track) -> Vec<usize> {
+    (0..track.t().len())
+        .filter(|&i| track.at(i).x.is_finite())
+        .collect()
 }
 
 /// The first impact of those `impacts` found (it finds one or says why not).
