@@ -67,6 +67,20 @@ pub struct Params {
     /// must then agree with the known one within `max_radius_spread` (not only
     /// `radius_tolerance`) and with the clip's other fits (`odd_radius`).
     pub min_coverage_known: f64,
+    /// … and below this share even then, unless the arc is sharp: an outline covering
+    /// at least `min_coverage_sharp` of its circle is kept, once the balls' radius is
+    /// known, when its points scatter by at most `sharp_rms` px about it and its radius
+    /// lies within `sharp_radius` of the known one. Default 0.19 (7 sectors, 70°): a
+    /// black ball on a cluttered wall of its own brightness shows a clean edge only
+    /// where the wall behind it is lighter (looks table, seed 9: fits of 0.2–0.3
+    /// coverage at 0.05–0.15 px RMS, their centres 0.1–0.8 px from the truth, where the
+    /// wider outlines mixed in the clutter's edges at 1.1–1.4 px RMS).
+    pub min_coverage_sharp: f64,
+    /// See `min_coverage_sharp`. Default 0.25 px: a sharp edge gives 0.05–0.2 px.
+    pub sharp_rms: f64,
+    /// See `min_coverage_sharp`. Default 0.03: a short arc's radius is its least sure
+    /// number; one off by more is the clutter's or a wrong circle.
+    pub sharp_radius: f64,
     /// An outline is poor when its edge points scatter more than this about the
     /// circle, px RMS. Default 1.0: a sharp edge gives 0.1–0.3 px, a blur or a
     /// non-round blob more.
@@ -300,6 +314,9 @@ impl Default for Params {
             shadow_hue_levels: 6.0,
             min_coverage: 0.35,
             min_coverage_known: 0.28,
+            min_coverage_sharp: 0.19,
+            sharp_rms: 0.25,
+            sharp_radius: 0.03,
             max_rms: 1.0,
             radius_tolerance: 0.15,
             smallest_in_blob: 0.6,

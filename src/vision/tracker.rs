@@ -541,8 +541,18 @@ impl Tracker {
         if self.radius().is_some() {
             p.min_coverage = p.min_coverage.min(p.min_coverage_known);
         }
+        let known = self.radius();
+        // A short arc, but sharp and of the known radius: the ball's edge where the
+        // wall behind it contrasts, the rest of its outline lost in a wall of its
+        // brightness (the outline of both signs there mixes in the wall's edges).
+        let sharp = |o: &OutlineFound| {
+            !o.colour
+                && o.outline.coverage >= p.min_coverage_sharp
+                && o.outline.rms <= p.sharp_rms
+                && known.is_some_and(|r| (o.outline.circle.r - r).abs() < p.sharp_radius * r)
+        };
         let o = match self.outline(&frame.luma, guess, band, self.polarity) {
-            Some(o) if o.outline.coverage >= p.min_coverage => o,
+            Some(o) if o.outline.coverage >= p.min_coverage || sharp(&o) => o,
             // Too little outline of one sign: a ball on a wall of its brightness,
             // brighter than part of the wall and darker than the rest. Its edge of
             // both signs, else (a ball of the wall's brightness) in colour.
@@ -577,7 +587,7 @@ impl Tracker {
         // The colour planes are half size, brought to full size bilinearly: their
         // edge points scatter about twice as far as the brightness edge's.
         let max_rms = if o.colour { 2.0 * p.max_rms } else { p.max_rms };
-        if o.outline.coverage < p.min_coverage
+        if (o.outline.coverage < p.min_coverage && !sharp(&o))
             || o.outline.rms > max_rms
             || !r_ok
             || c.r < p.min_radius

@@ -10,6 +10,7 @@ mod marks_stay;
 mod marks_turn;
 pub(crate) mod overlay;
 pub(crate) mod seed;
+mod sharp_arc;
 pub(crate) mod tracker_looks;
 pub(crate) mod tracking;
 mod unfit;

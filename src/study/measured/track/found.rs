@@ -66,6 +66,21 @@ pub struct Found {
     pub later_impacts: Vec<f64>,
     /// Median distance of the mark from the centre, m.
     pub mark_radius: Option<f64>,
+    /// A rim mark tracked but left out: it lies off the centre, but within
+    /// `scatters` position scatters of it (its angle would be noise).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mark_left_out: Option<MarkLeftOut>,
+}
+
+/// A rim mark left out because it lies too near the centre for the centre's scatter.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct MarkLeftOut {
+    /// The mark's track name ("" for a CSV's columns).
+    pub name: String,
+    /// Its median distance from the centre, m.
+    pub radius: f64,
+    /// How many position scatters it needed to lie from the centre.
+    pub scatters: f64,
 }
 
 /// Frames absent from a file: where its time jumps by more than one and a half frames.
@@ -125,7 +140,16 @@ impl Found {
                 "second track {} (never in a frame with the centre: not known to be a rim mark, no spin measured)",
                 name(m)
             ),
-            (None, _) => "no rim mark: v_t is not measured, the fits use v_cm (x) only".to_string(),
+            (None, _) => match &self.mark_left_out {
+                Some(l) => format!(
+                    "rim mark {} left out: it lies {:.1} from the centre, within {}× the position scatter ({:.2}), so its angle would be noise; v_t is not measured, the fits use v_cm (x) only",
+                    name(&l.name),
+                    show_small(l.radius, Dimension::Length),
+                    l.scatters,
+                    show_small(self.scatter, Dimension::Length)
+                ),
+                None => "no rim mark: v_t is not measured, the fits use v_cm (x) only".to_string(),
+            },
         }
     }
 

@@ -22,7 +22,7 @@ use super::series::{Measured, MeasuredParts, Stencil, Stencils, Track};
 use super::line::{Line, line};
 
 pub use derivative::Local;
-pub use found::{Found, Skipped};
+pub use found::{Found, MarkLeftOut, Skipped};
 pub use impacts::TrackError;
 
 use derivative::{MIN_HALF_WINDOW, derivatives, median, scatter, unwrap};
@@ -194,21 +194,42 @@ impl Spin {
     }
 }
 
-/// Fewest position scatters a rim mark must lie from the centre: nearer, its angle
-/// turns with the noise more than with the ball (the same file given as centre and
-/// mark put it at 0.0 mm and derived a v_t of noise).
+/// Fewest position scatters a rim mark must lie from the centre for its angle to be
+/// used: nearer, its angle turns with the noise more than with the ball.
 const MARK_SCATTERS: f64 = 10.0;
 
-/// A tracked mark within [`MARK_SCATTERS`] position scatters of the centre is no rim
-/// mark: refused, saying how near.
-fn mark_off_the_centre(spin: Option<Spin>, scatter: f64) -> Result<Option<Spin>, TrackError> {
+/// Within this many position scatters the mark lies at the centre within the noise:
+/// the same track given as centre and mark (it put the mark at 0.0 mm and derived a
+/// v_t of noise), refused.
+const MARK_AT_CENTRE_SCATTERS: f64 = 3.0;
+
+/// The mark's spin, kept when the mark lies [`MARK_SCATTERS`] position scatters or more
+/// from the centre; left out (`Ok((None, Some(what was left out)))`, the fits then use the
+/// centre alone and say so) when nearer but off the centre by more than the noise (a
+/// video whose centres jitter by a few pixels: the mark is real, its angle is noise);
+/// refused, saying how near, when within [`MARK_AT_CENTRE_SCATTERS`] of it.
+fn mark_off_the_centre(
+    spin: Option<Spin>,
+    scatter: f64,
+    name: Option<&str>,
+) -> Result<(Option<Spin>, Option<MarkLeftOut>), TrackError> {
     match spin {
-        Some(s) if s.radius < MARK_SCATTERS * scatter => Err(TrackError::MarkAtTheCentre {
-            radius: s.radius,
-            scatter,
-            scatters: MARK_SCATTERS,
-        }),
-        spin => Ok(spin),
+        Some(s) if s.radius < MARK_AT_CENTRE_SCATTERS * scatter => {
+            Err(TrackError::MarkAtTheCentre {
+                radius: s.radius,
+                scatter,
+                scatters: MARK_AT_CENTRE_SCATTERS,
+            })
+        }
+        Some(s) if s.radius < MARK_SCATTERS * scatter => Ok((
+            None,
+            Some(MarkLeftOut {
+                name: name.unwrap_or_default().to_string(),
+                radius: s.radius,
+                scatters: MARK_SCATTERS,
+            }),
+        )),
+        spin => Ok((spin, None)),
     }
 }
 
@@ -242,9 +263,7 @@ pub fn derive(
     contact_radius: f64,
     opts: &Derive,
 ) -> Result<(Measured, Found), TrackError> {
-    let rows: Vec<usize> = (0..track.t().len())
-        .filter(|&i| track.at(i).x.is_finite())
-        .collect();
+    let rows = centre_rows(track);
     let ts: Vec<f64> = rows.iter().map(|&i| track.at(i).t).collect();
     let xs: Vec<f64> = rows.iter().map(|&i| track.at(i).x).collect();
     enough_frames(ts.len(), opts)?;
@@ -258,7 +277,8 @@ pub fn derive(
     let approach = approach_line(&ts, &xs, before);
     let cuts: Vec<f64> = kinks.iter().map(|k| k.t).collect();
     let dx = derivatives(&ts, &xs, n, &cuts, sigma);
-    let spin = mark_off_the_centre(spin_of(track, &rows, dir, (n, dt), &cuts), sigma)?;
+    let spin = spin_of(track, &rows, dir, (n, dt), &cuts);
+    let (spin, mark_left_out) = mark_off_the_centre(spin, sigma, track.mark_name())?;
     let spin_sign = spin
         .as_ref()
         .map_or(1.0, |s| s.sign(&ts, &dx, first.t, dir));
@@ -334,8 +354,16 @@ pub fn derive(
         frames_after: after,
         later_impacts: kinks.iter().skip(1).map(|k| k.t - first.t).collect(),
         mark_radius: spin.as_ref().map(|s| s.radius),
+        mark_left_out,
     };
     Ok((Measured::new(m)?, found))
+}
+
+/// The rows of `track` with a centre position.
+fn centre_rows(track: &Track) -> Vec<usize> {
+    (0..track.t().len())
+        .filter(|&i| track.at(i).x.is_finite())
+        .collect()
 }
 
 /// The first impact of those `impacts` found (it finds one or says why not).
@@ -537,5 +565,84 @@ mod file_time_tests {
         assert!(in_file_time(&track(vec![0.0, 0.1, 0.2], vec![0.0; 3])).is_none());
         let t: Vec<f64> = (0..20).map(|k| k as f64 * 0.01).collect();
         assert!(in_file_time(&track(t, vec![f64::NAN; 20])).is_none());
+    }
+}
+
+#[cfg(test)]
+mod mark_rule_tests {
+    use super::*;
+
+    /// A ball rolling at 0.8 m/s into an impact at t = 0.5 s and on at 0.05 m/s, its
+    /// centre jittered by ±`jitter` m (alternating signs: a scatter of about 2.7
+    /// `jitter` from third differences),
+    /// a mark `mark_at` m above the centre turning as it rolls (R = 2.75 cm).
+    fn track(jitter: f64, mark_at: f64) -> Track {
+        let t: Vec<f64> = (0..100).map(|k| f64::from(k) / 100.0).collect();
+        let x: Vec<f64> = t
+            .iter()
+            .enumerate()
+            .map(|(k, &t)| {
+                let clean = if t < 0.5 {
+                    0.8 * t
+                } else {
+                    0.4 + 0.05 * (t - 0.5)
+                };
+                clean + if k % 2 == 0 { jitter } else { -jitter }
+            })
+            .collect();
+        let y = vec![0.0; t.len()];
+        let (mx, my) = x
+            .iter()
+            .map(|&x| {
+                let a = x / 0.0275;
+                (x + mark_at * a.sin(), mark_at * a.cos())
+            })
+            .unzip();
+        Track::new(super::super::series::TrackParts {
+            t,
+            x,
+            y,
+            mark: Some((mx, my)),
+            centre_name: "ball".into(),
+            mark_name: Some("mark".into()),
+            format: "Tracker multi-track",
+            ..Default::default()
+        })
+        .unwrap()
+    }
+
+    #[test]
+    fn a_mark_far_off_the_centre_gives_a_spin() {
+        let (m, found) = derive(&track(1e-4, 0.02), 0.45 * 0.0275, &Derive::default()).unwrap();
+        assert!(found.mark.is_some() && found.mark_left_out.is_none());
+        assert!(m.v_t().iter().any(|v| v.is_finite()));
+    }
+
+    /// A video's centres that jitter by a millimetre: the mark is real (10 mm off the
+    /// centre, about 7 scatters) but its angle would be noise. Left out and said; the centre
+    /// alone is fitted.
+    #[test]
+    fn a_mark_within_ten_scatters_is_left_out_and_said() {
+        let (m, found) = derive(&track(5e-4, 0.01), 0.45 * 0.0275, &Derive::default()).unwrap();
+        let ratio = 0.01 / found.scatter;
+        assert!((3.0..10.0).contains(&ratio), "{ratio}");
+        assert!(found.mark.is_none());
+        let left = found.mark_left_out.as_ref().unwrap();
+        assert!((left.radius - 0.01).abs() < 1e-3, "{}", left.radius);
+        assert!(m.v_t().iter().all(|v| v.is_nan()));
+        assert!(m.v_cm().iter().all(|v| v.is_finite()));
+        let said = found.describe();
+        assert!(said.contains("rim mark 'mark' left out"), "{said}");
+    }
+
+    /// Within three scatters the "mark" lies at the centre within the noise (the same
+    /// track given twice): refused.
+    #[test]
+    fn a_mark_at_the_centre_within_the_noise_is_refused() {
+        let got = derive(&track(5e-4, 2e-3), 0.45 * 0.0275, &Derive::default());
+        assert!(
+            matches!(got, Err(TrackError::MarkAtTheCentre { .. })),
+            "{got:?}"
+        );
     }
 }
