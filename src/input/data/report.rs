@@ -227,7 +227,7 @@ fn of_track(track: Track, file: &str, notes: Notes, reading: &Reading, derive: &
         t_first: t.first().copied().unwrap_or(f64::NAN),
         t_last: t.last().copied().unwrap_or(f64::NAN),
         missing,
-        scatter: Some(scatter(&x)),
+        scatter: Some(scatter(&t, &x)),
         approach_speed: None,
         approach_speed_se: None,
         speed: None,

@@ -63,7 +63,7 @@ pub(super) fn sliding_end(m: &Measured, fitted: &Scene) -> Option<f64> {
 /// smoother than their error, which third differences would take for the scatter).
 pub(super) fn data_scatter(m: &Measured, positions: bool) -> Option<f64> {
     let s = match (positions, m.x(), &m.v_cm_sigma()) {
-        (true, Some(x), _) => scatter(x),
+        (true, Some(x), _) => scatter(m.t(), x),
         (true, None, _) => return None,
         (false, _, Some(sigma)) => {
             let mut s: Vec<f64> = sigma.iter().copied().filter(|v| v.is_finite()).collect();

@@ -6,10 +6,11 @@
 //!
 //! The window rule: the position scatter σ is estimated from third differences of the
 //! centre track (they cancel constant acceleration; their variance is 20σ², the
-//! median is used so impacts do not count). The half-window is the smallest n ≥ 2
-//! frames whose slope standard error `σ / (Δt · sqrt(n(n+1)(2n+1)/3))` is at most
-//! [`Derive::target_se`] (default 1 cm/s), but at most [`Derive::max_half_window`]
-//! (default 50 ms: longer windows smear the end of sliding). Near an impact and the
+//! median is used so impacts do not count; divided differences where frames are
+//! missing). The half-window is the smallest n ≥ 2 frames whose slope standard error
+//! `σ / (Δt · sqrt(n(n+1)(2n+1)/3))` is at most [`Derive::target_se`] (default 1 cm/s),
+//! but at most [`Derive::max_half_window`] (default 50 ms: longer windows smear the end
+//! of sliding). Near an impact and the
 //! ends of the track the window keeps only the frames on its own side, so it shrinks.
 
 pub mod derivative;
@@ -130,7 +131,7 @@ fn spin_of(
             })
             .collect(),
     );
-    let s_theta = scatter(&theta).max(1e-7);
+    let s_theta = scatter(&at, &theta).max(1e-7);
     let fits = derivatives(&at, &theta, n, &cuts, s_theta);
     Some(Spin {
         at,
@@ -268,7 +269,7 @@ pub fn derive(
     let xs: Vec<f64> = rows.iter().map(|&i| track.at(i).x).collect();
     enough_frames(ts.len(), opts)?;
     let dt = frame_step(&ts);
-    let sigma = scatter(&xs).max(1e-7);
+    let sigma = scatter(&ts, &xs).max(1e-7);
     let n = half_window(dt, sigma, opts);
     let kinks = impacts(&ts, &xs, n.max(3), sigma, dt, opts.impact_at)?;
     let first = first_kink(&kinks)?;
@@ -493,7 +494,7 @@ pub fn in_file_time(track: &Track) -> Option<Measured> {
     if !(dt.is_finite() && dt > 0.0) {
         return None;
     }
-    let sigma = scatter(&xs).max(1e-7);
+    let sigma = scatter(&ts, &xs).max(1e-7);
     let n = half_window(dt, sigma, &Derive::default());
     let x0 = *xs.first()?;
     let mut m = MeasuredParts::default();
