@@ -181,13 +181,9 @@ fn median_plane(
     out
 }
 
+/// The median (the sort's middle, `select::median_f32`: exact, counted by level).
 fn median_f32(v: &mut [f32]) -> Option<f32> {
-    if v.is_empty() {
-        return None;
-    }
-    let mid = v.len() / 2;
-    let (_, m, _) = v.select_nth_unstable_by(mid, f32::total_cmp);
-    Some(*m)
+    super::select::median_f32(v)
 }
 
 /// How much each coarse pixel of `s` differs from the background `bg` (levels:
