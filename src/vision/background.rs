@@ -152,31 +152,48 @@ impl Learner {
 
 /// Per pixel, the median of `plane` over `frames`, leaving out masked samples (but
 /// taking them all when fewer than a quarter are left).
+#[allow(clippy::indexing_slicing)] // j < t ≤ TILE; a pixel's counts ≤ nf, its list j·nf … (j + 1)·nf
 fn median_plane(
     frames: &[Small],
     n: usize,
     plane: impl Fn(&Small) -> &Vec<f32>,
     masks: Option<&Vec<Vec<bool>>>,
 ) -> Vec<f32> {
+    // A tile of pixels at a time: each frame's run of the tile gathered into every
+    // pixel's list (plain slices, in the frames' order), then each list's median.
+    const TILE: usize = 64;
+    let planes: Vec<&[f32]> = frames.iter().map(|s| plane(s).as_slice()).collect();
+    let masks: Vec<&[bool]> = masks.map_or_else(Vec::new, |m| m.iter().map(Vec::as_slice).collect());
+    let nf = frames.len();
+    let mut kept = vec![0.0f32; TILE * nf];
+    let mut all = vec![0.0f32; TILE * nf];
     let mut out = Vec::with_capacity(n);
-    let mut vals: Vec<f32> = Vec::with_capacity(frames.len());
-    for i in 0..n {
-        vals.clear();
-        for (k, s) in frames.iter().enumerate() {
-            let masked = masks
-                .and_then(|m| m.get(k))
-                .and_then(|m| m.get(i))
-                .copied()
-                .unwrap_or(false);
-            if !masked && let Some(&v) = plane(s).get(i) {
-                vals.push(v);
+    let mut start = 0;
+    while start < n {
+        let t = TILE.min(n - start);
+        let (mut nk, mut na) = ([0usize; TILE], [0usize; TILE]);
+        for (k, p) in planes.iter().enumerate() {
+            let m = masks.get(k).copied().unwrap_or(&[]);
+            for j in 0..t {
+                let i = start + j;
+                let Some(&v) = p.get(i) else { continue };
+                all[j * nf + na[j]] = v;
+                na[j] += 1;
+                if !m.get(i).copied().unwrap_or(false) {
+                    kept[j * nf + nk[j]] = v;
+                    nk[j] += 1;
+                }
             }
         }
-        if vals.len() * 4 < frames.len() {
-            vals.clear();
-            vals.extend(frames.iter().filter_map(|s| plane(s).get(i).copied()));
+        for j in 0..t {
+            let vals = if nk[j] * 4 < nf {
+                &mut all[j * nf..j * nf + na[j]]
+            } else {
+                &mut kept[j * nf..j * nf + nk[j]]
+            };
+            out.push(median_f32(vals).unwrap_or(0.0));
         }
-        out.push(median_f32(&mut vals).unwrap_or(0.0));
+        start += t;
     }
     out
 }

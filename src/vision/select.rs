@@ -1,12 +1,11 @@
-//! Exact medians of levels (0–255, as the frames' bytes and their means are), fast:
-//! the values counted per whole level first, then a selection among the few values
-//! of the level that holds the middle. The result is the value a sort by
-//! `total_cmp` puts at the middle (`sorted[len / 2]`), bit for bit, whatever the
-//! values; only the time depends on their being levels. The learner takes one
-//! median per coarse pixel and plane over its frames (hundreds of thousands per
-//! clip), the tracker one over a few thousand differences per frame.
-
-use std::cmp::Ordering;
+//! Exact medians of levels fast: where every value is a whole level (0–255, as a
+//! frame's bytes and the colour planes of the coarse frames are), the values
+//! counted per level and the middle read off the counts, in one pass and no
+//! comparisons; other values by selection. Either way the result is the value a
+//! sort by `total_cmp` puts at the middle (`sorted[len / 2]`), bit for bit. The
+//! learner takes one median per coarse pixel and plane over its frames (hundreds
+//! of thousands per clip), the tracker one over a few thousand pixel differences
+//! per frame.
 
 /// Fewer values than this: a plain selection, as fast as counting them.
 const FEW: usize = 24;
@@ -14,66 +13,52 @@ const FEW: usize = 24;
 /// The median of `v` (`v` sorted by `f32::total_cmp`, its element `len / 2`), `v`
 /// reordered; `None` when empty.
 pub fn median_f32(v: &mut [f32]) -> Option<f32> {
-    middle(v, |x| level(f64::from(x)), f32::total_cmp)
+    let mid = v.len() / 2;
+    if v.len() >= FEW
+        && let Some(m) = counted(v.iter().map(|&x| {
+            let l = x as u8;
+            (f32::from(l).to_bits() == x.to_bits()).then_some(l)
+        }), mid)
+    {
+        return Some(f32::from(m));
+    }
+    (!v.is_empty()).then(|| *v.select_nth_unstable_by(mid, f32::total_cmp).1)
 }
 
 /// The median of `v` as [`median_f32`], for f64 values.
 pub fn median_f64(v: &mut [f64]) -> Option<f64> {
-    middle(v, level, f64::total_cmp)
-}
-
-/// The whole level `x` lies in, 0 … 255 (below 0: 0, above 255: 255): never
-/// decreasing as `x` grows, so the levels sort as the values do. `None` for NaN.
-#[inline]
-fn level(x: f64) -> Option<usize> {
-    if x.is_nan() {
-        return None;
-    }
-    // `as` truncates toward zero: the floor for 0 … 255, the clamp does the rest.
-    Some(x.clamp(0.0, 255.0) as usize)
-}
-
-/// Element `len / 2` of `v` sorted by `cmp`, where `of` gives each value a level
-/// that never decreases along that order (`None`: sorted the plain way).
-#[allow(clippy::indexing_slicing)] // levels clamped to 0..=255 of a 256-array; i, n < v.len()
-fn middle<T: Copy>(
-    v: &mut [T],
-    of: impl Fn(T) -> Option<usize>,
-    cmp: impl Fn(&T, &T) -> Ordering,
-) -> Option<T> {
-    if v.is_empty() {
-        return None;
-    }
     let mid = v.len() / 2;
-    let plain = |v: &mut [T]| Some(*v.select_nth_unstable_by(mid, &cmp).1);
-    if v.len() < FEW {
-        return plain(v);
+    if v.len() >= FEW
+        && let Some(m) = counted(v.iter().map(|&x| {
+            let l = x as u8;
+            (f64::from(l).to_bits() == x.to_bits()).then_some(l)
+        }), mid)
+    {
+        return Some(f64::from(m));
     }
-    let mut counts = [0u32; 256];
-    for &x in v.iter() {
-        match of(x) {
-            Some(l) => counts[l.min(255)] += 1,
-            None => return plain(v),
-        }
+    (!v.is_empty()).then(|| *v.select_nth_unstable_by(mid, f64::total_cmp).1)
+}
+
+/// The level at place `mid` of `levels` sorted, by counting them; `None` at the
+/// first value that is not a whole level (`None` in `levels`: `+0 … 255` exactly,
+/// so equal levels are equal bits) or when there are too many to count in 16 bits.
+#[allow(clippy::indexing_slicing)] // a u8 level indexes a 256-array
+fn counted(levels: impl ExactSizeIterator<Item = Option<u8>>, mid: usize) -> Option<u8> {
+    if levels.len() > usize::from(u16::MAX) {
+        return None;
     }
-    // The level holding the middle, and how many values lie below it.
-    let (mut below, mut at) = (0usize, 255usize);
+    let mut counts = [0u16; 256];
+    for l in levels {
+        counts[usize::from(l?)] += 1;
+    }
+    let mut below = 0usize;
     for (l, &c) in counts.iter().enumerate() {
-        if below + c as usize > mid {
-            at = l;
-            break;
-        }
-        below += c as usize;
-    }
-    // That level's values to the front; the middle is among them, at mid − below.
-    let mut n = 0;
-    for i in 0..v.len() {
-        if of(v[i]).map(|l| l.min(255)) == Some(at) {
-            v.swap(n, i);
-            n += 1;
+        below += usize::from(c);
+        if below > mid {
+            return u8::try_from(l).ok();
         }
     }
-    Some(*v[..n].select_nth_unstable_by(mid - below, &cmp).1)
+    None
 }
 
 #[cfg(test)]
