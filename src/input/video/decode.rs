@@ -59,7 +59,7 @@ pub(super) fn frames(path: &Path, info: &Info, every: usize) -> Result<Frames, V
     Ok(Box::new(Stream {
         file,
         child: Some(child),
-        stdout: std::io::BufReader::with_capacity(1 << 20, stdout),
+        stdout,
         messages: Some(messages),
         width: info.width,
         height: info.height,
@@ -72,7 +72,8 @@ pub(super) fn frames(path: &Path, info: &Info, every: usize) -> Result<Frames, V
 struct Stream {
     file: std::path::PathBuf,
     child: Option<Child>,
-    stdout: std::io::BufReader<ChildStdout>,
+    /// Unbuffered: whole planes are read at once, straight into their buffers.
+    stdout: ChildStdout,
     messages: Option<JoinHandle<String>>,
     width: usize,
     height: usize,
