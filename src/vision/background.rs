@@ -38,10 +38,13 @@ impl Small {
         let (cw, ch) = (frame.chroma_width, frame.chroma_height);
         let mut u = Vec::with_capacity(w * h);
         let mut v = Vec::with_capacity(w * h);
+        // Each block's colour column once, not per row.
+        let cxs: Vec<usize> = (0..w)
+            .map(|bx| ((bx * f + f / 2) / 2).min(cw.saturating_sub(1)))
+            .collect();
         for by in 0..h {
             let cy = ((by * f + f / 2) / 2).min(ch.saturating_sub(1));
-            for bx in 0..w {
-                let cx = ((bx * f + f / 2) / 2).min(cw.saturating_sub(1));
+            for &cx in &cxs {
                 let i = cy * cw + cx;
                 u.push(frame.u.get(i).map_or(128.0, |&c| f32::from(c)));
                 v.push(frame.v.get(i).map_or(128.0, |&c| f32::from(c)));

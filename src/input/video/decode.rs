@@ -10,6 +10,8 @@
 use std::io::Read;
 use std::path::Path;
 use std::process::{Child, ChildStdout, Command, Stdio};
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::thread::JoinHandle;
 
 use super::info::{Frames, Info};
@@ -56,6 +58,7 @@ pub(super) fn frames(path: &Path, info: &Info, every: usize) -> Result<Frames, V
         let _ = std::io::copy(&mut stderr, &mut std::io::sink());
         s
     });
+    STREAMS.fetch_add(1, Ordering::Relaxed);
     Ok(Box::new(Stream {
         file,
         child: Some(child),
@@ -145,15 +148,59 @@ impl Iterator for Stream {
     }
 }
 
+/// Plane buffers of frames the tracker is done with ([`recycle`]), read into again
+/// while a video streams: a new 3 MB buffer per 1080p frame is the system's work of
+/// mapping and zeroing its pages, then of unmapping them.
+static SPARE: Mutex<Vec<Vec<u8>>> = Mutex::new(Vec::new());
+/// Most buffers kept spare (the planes of a few frames: the reader runs a few ahead).
+const SPARE_MAX: usize = 12;
+/// Streams open: with none, a buffer given back is freed, nothing is kept.
+static STREAMS: AtomicUsize = AtomicUsize::new(0);
+
+/// Gives a frame's buffers back for the next frames a stream reads (freed when no
+/// stream is open, or enough are kept).
+pub(super) fn recycle(frame: Frame) {
+    if STREAMS.load(Ordering::Relaxed) == 0 {
+        return;
+    }
+    let Ok(mut spare) = SPARE.lock() else { return };
+    for b in [frame.luma.data, frame.u, frame.v] {
+        if spare.len() < SPARE_MAX {
+            spare.push(b);
+        }
+    }
+}
+
+/// A spare buffer of at least `n` bytes' capacity (the smallest), else a new one.
+fn spare(n: usize) -> Vec<u8> {
+    let reused = SPARE.lock().ok().and_then(|mut s| {
+        let (i, _) = s
+            .iter()
+            .enumerate()
+            .filter(|(_, b)| b.capacity() >= n)
+            .min_by_key(|(_, b)| b.capacity())?;
+        Some(s.swap_remove(i))
+    });
+    let mut buf = reused.unwrap_or_else(|| Vec::with_capacity(n));
+    buf.clear();
+    buf
+}
+
 /// The next `n` bytes of `r`, `None` when fewer come (the stream's end, an error).
 fn plane(r: &mut impl Read, n: usize) -> Option<Vec<u8>> {
-    let mut buf = Vec::with_capacity(n);
+    let mut buf = spare(n);
     r.take(n as u64).read_to_end(&mut buf).ok()?;
     (buf.len() == n).then_some(buf)
 }
 
 impl Drop for Stream {
     fn drop(&mut self) {
+        // The last stream closed: its spare buffers freed.
+        if STREAMS.fetch_sub(1, Ordering::Relaxed) == 1
+            && let Ok(mut s) = SPARE.lock()
+        {
+            s.clear();
+        }
         // Stopped early (an error, Ctrl-C): end ffmpeg, never leave it running.
         if let Some(mut c) = self.child.take() {
             let _ = c.kill();

@@ -71,8 +71,16 @@ pub fn track(
 ) -> Result<Option<Tracked>, VideoError> {
     let file = video.display().to_string();
     let err = |what: VideoProblem| VideoError::new(video, what);
-    let info = super::check(video, &Limits::default())?;
-    let Some((fps, source)) = info.rate(options.fps) else {
+    // Probed once: the rate checked before a frame is decoded.
+    let mut rate = None;
+    let (info, frames) = super::open_if(video, &Limits::default(), |info| {
+        rate = info.rate(options.fps);
+        match rate {
+            Some(_) => Ok(()),
+            None => Err(err(VideoProblem::NoRate)),
+        }
+    })?;
+    let Some((fps, source)) = rate else {
         return Err(err(VideoProblem::NoRate));
     };
     let params = options.params();
@@ -82,7 +90,6 @@ pub fn track(
     // background it is tracked against has seen the balls move on. A clip that fits
     // in the look-ahead (most clips) is learned whole before its first frame is
     // tracked, as if read twice.
-    let (info, frames) = super::open(video, &Limits::default())?;
     let ahead = lookahead(info.width, info.height);
     let total = info.frames.max(1);
     let mut thumbs = Thumbs::sized(info.width, info.height, info.frames);
@@ -121,6 +128,7 @@ pub fn track(
             && let Some(first) = waiting.pop_front()
         {
             tracker.push(&first);
+            super::decode::recycle(first);
         }
         let seen = numbers.len() as u64;
         progress.tick(seen, total.max(seen));
