@@ -166,7 +166,8 @@ fn median_plane(
     // pixel's list (plain slices, in the frames' order), then each list's median.
     const TILE: usize = 64;
     let planes: Vec<&[f32]> = frames.iter().map(|s| plane(s).as_slice()).collect();
-    let masks: Vec<&[bool]> = masks.map_or_else(Vec::new, |m| m.iter().map(Vec::as_slice).collect());
+    let masks: Vec<&[bool]> =
+        masks.map_or_else(Vec::new, |m| m.iter().map(Vec::as_slice).collect());
     let nf = frames.len();
     let mut kept = vec![0.0f32; TILE * nf];
     let mut all = vec![0.0f32; TILE * nf];

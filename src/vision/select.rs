@@ -15,10 +15,13 @@ const FEW: usize = 24;
 pub fn median_f32(v: &mut [f32]) -> Option<f32> {
     let mid = v.len() / 2;
     if v.len() >= FEW
-        && let Some(m) = counted(v.iter().map(|&x| {
-            let l = x as u8;
-            (f32::from(l).to_bits() == x.to_bits()).then_some(l)
-        }), mid)
+        && let Some(m) = counted(
+            v.iter().map(|&x| {
+                let l = x as u8;
+                (f32::from(l).to_bits() == x.to_bits()).then_some(l)
+            }),
+            mid,
+        )
     {
         return Some(f32::from(m));
     }
@@ -29,10 +32,13 @@ pub fn median_f32(v: &mut [f32]) -> Option<f32> {
 pub fn median_f64(v: &mut [f64]) -> Option<f64> {
     let mid = v.len() / 2;
     if v.len() >= FEW
-        && let Some(m) = counted(v.iter().map(|&x| {
-            let l = x as u8;
-            (f64::from(l).to_bits() == x.to_bits()).then_some(l)
-        }), mid)
+        && let Some(m) = counted(
+            v.iter().map(|&x| {
+                let l = x as u8;
+                (f64::from(l).to_bits() == x.to_bits()).then_some(l)
+            }),
+            mid,
+        )
     {
         return Some(f64::from(m));
     }

@@ -67,7 +67,10 @@ impl Thumbs {
         // A box row's lines summed per column first (one vectorised add per byte),
         // then each box's columns; in 16 bits while a box's rows of 255 fit (twice
         // the adds per instruction): the same whole sums.
-        let tall = (0..th).map(|y| span(y, th, img.height)).map(|(a, b)| b - a).max();
+        let tall = (0..th)
+            .map(|y| span(y, th, img.height))
+            .map(|(a, b)| b - a)
+            .max();
         if tall.unwrap_or(0) * 255 <= usize::from(u16::MAX) {
             self.reduce_in::<u16>(img, &cols, &mut out);
         } else {
