@@ -38,10 +38,13 @@ impl Small {
         let (cw, ch) = (frame.chroma_width, frame.chroma_height);
         let mut u = Vec::with_capacity(w * h);
         let mut v = Vec::with_capacity(w * h);
+        // Each block's colour column once, not per row.
+        let cxs: Vec<usize> = (0..w)
+            .map(|bx| ((bx * f + f / 2) / 2).min(cw.saturating_sub(1)))
+            .collect();
         for by in 0..h {
             let cy = ((by * f + f / 2) / 2).min(ch.saturating_sub(1));
-            for bx in 0..w {
-                let cx = ((bx * f + f / 2) / 2).min(cw.saturating_sub(1));
+            for &cx in &cxs {
                 let i = cy * cw + cx;
                 u.push(frame.u.get(i).map_or(128.0, |&c| f32::from(c)));
                 v.push(frame.v.get(i).map_or(128.0, |&c| f32::from(c)));
@@ -152,42 +155,56 @@ impl Learner {
 
 /// Per pixel, the median of `plane` over `frames`, leaving out masked samples (but
 /// taking them all when fewer than a quarter are left).
+#[allow(clippy::indexing_slicing)] // j < t ≤ TILE; a pixel's counts ≤ nf, its list j·nf … (j + 1)·nf
 fn median_plane(
     frames: &[Small],
     n: usize,
     plane: impl Fn(&Small) -> &Vec<f32>,
     masks: Option<&Vec<Vec<bool>>>,
 ) -> Vec<f32> {
+    // A tile of pixels at a time: each frame's run of the tile gathered into every
+    // pixel's list (plain slices, in the frames' order), then each list's median.
+    const TILE: usize = 64;
+    let planes: Vec<&[f32]> = frames.iter().map(|s| plane(s).as_slice()).collect();
+    let masks: Vec<&[bool]> =
+        masks.map_or_else(Vec::new, |m| m.iter().map(Vec::as_slice).collect());
+    let nf = frames.len();
+    let mut kept = vec![0.0f32; TILE * nf];
+    let mut all = vec![0.0f32; TILE * nf];
     let mut out = Vec::with_capacity(n);
-    let mut vals: Vec<f32> = Vec::with_capacity(frames.len());
-    for i in 0..n {
-        vals.clear();
-        for (k, s) in frames.iter().enumerate() {
-            let masked = masks
-                .and_then(|m| m.get(k))
-                .and_then(|m| m.get(i))
-                .copied()
-                .unwrap_or(false);
-            if !masked && let Some(&v) = plane(s).get(i) {
-                vals.push(v);
+    let mut start = 0;
+    while start < n {
+        let t = TILE.min(n - start);
+        let (mut nk, mut na) = ([0usize; TILE], [0usize; TILE]);
+        for (k, p) in planes.iter().enumerate() {
+            let m = masks.get(k).copied().unwrap_or(&[]);
+            for j in 0..t {
+                let i = start + j;
+                let Some(&v) = p.get(i) else { continue };
+                all[j * nf + na[j]] = v;
+                na[j] += 1;
+                if !m.get(i).copied().unwrap_or(false) {
+                    kept[j * nf + nk[j]] = v;
+                    nk[j] += 1;
+                }
             }
         }
-        if vals.len() * 4 < frames.len() {
-            vals.clear();
-            vals.extend(frames.iter().filter_map(|s| plane(s).get(i).copied()));
+        for j in 0..t {
+            let vals = if nk[j] * 4 < nf {
+                &mut all[j * nf..j * nf + na[j]]
+            } else {
+                &mut kept[j * nf..j * nf + nk[j]]
+            };
+            out.push(median_f32(vals).unwrap_or(0.0));
         }
-        out.push(median_f32(&mut vals).unwrap_or(0.0));
+        start += t;
     }
     out
 }
 
+/// The median (the sort's middle, `select::median_f32`: exact, counted by level).
 fn median_f32(v: &mut [f32]) -> Option<f32> {
-    if v.is_empty() {
-        return None;
-    }
-    let mid = v.len() / 2;
-    let (_, m, _) = v.select_nth_unstable_by(mid, f32::total_cmp);
-    Some(*m)
+    super::select::median_f32(v)
 }
 
 /// How much each coarse pixel of `s` differs from the background `bg` (levels:
@@ -198,8 +215,10 @@ pub fn differences(s: &Small, bg: &Small, p: &Params) -> (Vec<f32>, usize) {
     let cw = p.colour_weight as f32;
     let darkest = p.shadow_darkest as f32;
     let hue = p.shadow_hue_levels as f32;
-    let mut shadows = 0;
-    let d =
+    // Without branches or a count in the loop (the shadow test and the difference
+    // both computed, one taken: a background pixel is darker than its median half
+    // the time, a branch on it mispredicted as often), so the loop vectorises.
+    let d: Vec<f32> =
         s.y.iter()
             .zip(&s.u)
             .zip(&s.v)
@@ -208,17 +227,21 @@ pub fn differences(s: &Small, bg: &Small, p: &Params) -> (Vec<f32>, usize) {
                 let dy = y - by;
                 let lit = (by - 16.0).max(1.0);
                 let a = (y - 16.0) / lit;
-                if dy < 0.0
-                    && a >= 1.0 - darkest
-                    && ((u - 128.0) - a * (bu - 128.0)).abs() <= hue
-                    && ((v - 128.0) - a * (bv - 128.0)).abs() <= hue
-                {
-                    shadows += 1;
-                    return 0.0;
-                }
-                dy.abs().max(cw * (u - bu).abs()).max(cw * (v - bv).abs())
+                let shadow = (dy < 0.0)
+                    & (a >= 1.0 - darkest)
+                    & (((u - 128.0) - a * (bu - 128.0)).abs() <= hue)
+                    & (((v - 128.0) - a * (bv - 128.0)).abs() <= hue);
+                let differ = dy.abs().max(cw * (u - bu).abs()).max(cw * (v - bv).abs());
+                if shadow { 0.0 } else { differ }
             })
             .collect();
+    // The shadows counted after: a darker pixel's difference is at least its
+    // brightness step, so 0 for a darker pixel means a shadow.
+    let shadows = d
+        .iter()
+        .zip(s.y.iter().zip(&bg.y))
+        .filter(|&(&d, (&y, &by))| d == 0.0 && y - by < 0.0)
+        .count();
     (d, shadows)
 }
 

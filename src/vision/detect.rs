@@ -262,9 +262,16 @@ fn blobs(mask: &mut [bool], w: usize, h: usize) -> Vec<Region> {
 #[allow(clippy::indexing_slicing)] // fixed 6 × 6 sums, samples inside the w × h image
 fn background(img: &Levels) -> (Vec<f32>, f32) {
     let (w, h) = (img.width, img.height);
+    // u of each column and v of each row once (the same numbers, not two
+    // divisions per pixel and round).
+    let us: Vec<f64> = (0..w)
+        .map(|x| 2.0 * x as f64 / w.max(2) as f64 - 1.0)
+        .collect();
+    let vs: Vec<f64> = (0..h)
+        .map(|y| 2.0 * y as f64 / h.max(2) as f64 - 1.0)
+        .collect();
     let basis = |x: usize, y: usize| {
-        let u = 2.0 * x as f64 / w.max(2) as f64 - 1.0;
-        let v = 2.0 * y as f64 / h.max(2) as f64 - 1.0;
+        let (u, v) = (us[x], vs[y]);
         [1.0, u, v, u * u, u * v, v * v]
     };
     let samples: Vec<(usize, usize)> = (0..h)

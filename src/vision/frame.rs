@@ -62,22 +62,34 @@ impl Frame {
                 _ => [0.0; 3],
             }
         };
-        let mut luma = Vec::with_capacity(w * h);
-        for y in 0..h {
-            for x in 0..w {
-                let [r, g, b] = rgb(x, y);
-                luma.push(to_u8(
-                    16.0 + (65.481 * r + 128.553 * g + 24.966 * b) / 255.0,
-                ));
-            }
+        // Each pixel's luma straight from its three bytes (the same formula per
+        // pixel, without a bounds-checked look-up per read).
+        let mut luma: Vec<u8> = px
+            .chunks_exact(3)
+            .take(w * h)
+            .map(|p| {
+                let [r, g, b] = match *p {
+                    [r, g, b] => [r, g, b].map(f32::from),
+                    _ => [0.0; 3],
+                };
+                to_u8(16.0 + (65.481 * r + 128.553 * g + 24.966 * b) / 255.0)
+            })
+            .collect();
+        // A short picture buffer (never from `image`): its missing pixels black.
+        if luma.len() < w * h {
+            luma.extend((luma.len()..w * h).map(|i| {
+                let [r, g, b] = rgb(i % w, i / w);
+                to_u8(16.0 + (65.481 * r + 128.553 * g + 24.966 * b) / 255.0)
+            }));
         }
         let (mut u, mut v) = (Vec::with_capacity(cw * ch), Vec::with_capacity(cw * ch));
         for cy in 0..ch {
+            let rows = 2 * cy..(2 * cy + 2).min(h);
             for cx in 0..cw {
                 // The mean colour of the 2×2 block (fewer at a ragged edge).
                 let mut s = [0.0f32; 3];
                 let mut n = 0.0f32;
-                for y in 2 * cy..(2 * cy + 2).min(h) {
+                for y in rows.clone() {
                     for x in 2 * cx..(2 * cx + 2).min(w) {
                         let p = rgb(x, y);
                         s.iter_mut().zip(p).for_each(|(a, b)| *a += b);

@@ -60,30 +60,48 @@ impl Thumbs {
     }
 
     /// `img` reduced to a picture: each pixel the mean of its box of the frame.
-    #[allow(clippy::indexing_slicing)] // whole boxes inside the frame
     fn reduce(&self, img: &Gray) -> Vec<u8> {
         let (tw, th) = (self.width, self.height);
         let mut out = Vec::with_capacity(tw * th);
         let cols: Vec<(usize, usize)> = (0..tw).map(|x| span(x, tw, img.width)).collect::<Vec<_>>();
         // A box row's lines summed per column first (one vectorised add per byte),
-        // then each box's columns.
-        let mut columns = vec![0u32; img.width];
+        // then each box's columns; in 16 bits while a box's rows of 255 fit (twice
+        // the adds per instruction): the same whole sums.
+        let tall = (0..th)
+            .map(|y| span(y, th, img.height))
+            .map(|(a, b)| b - a)
+            .max();
+        if tall.unwrap_or(0) * 255 <= usize::from(u16::MAX) {
+            self.reduce_in::<u16>(img, &cols, &mut out);
+        } else {
+            self.reduce_in::<u32>(img, &cols, &mut out);
+        }
+        out
+    }
+
+    /// [`Thumbs::reduce`]'s box means into `out`, the columns summed in `C`.
+    #[allow(clippy::indexing_slicing)] // whole boxes inside the frame
+    fn reduce_in<C>(&self, img: &Gray, cols: &[(usize, usize)], out: &mut Vec<u8>)
+    where
+        C: Copy + Default + std::ops::AddAssign + From<u8> + Into<u32>,
+    {
+        let th = self.height;
+        let mut columns = vec![C::default(); img.width];
         for y in 0..th {
             let (y0, y1) = span(y, th, img.height);
-            columns.iter_mut().for_each(|c| *c = 0);
+            columns.iter_mut().for_each(|c| *c = C::default());
             for row in y0..y1 {
                 let line = &img.data[row * img.width..(row + 1) * img.width];
                 for (c, &v) in columns.iter_mut().zip(line) {
-                    *c += u32::from(v);
+                    *c += C::from(v);
                 }
             }
-            for &(x0, x1) in &cols {
-                let sum: u32 = columns[x0..x1].iter().sum();
+            for &(x0, x1) in cols {
+                let sum: u32 = columns[x0..x1].iter().map(|&c| c.into()).sum();
                 let n = ((y1 - y0) * (x1 - x0)).max(1) as u32;
                 out.push((sum / n) as u8);
             }
         }
-        out
     }
 
     /// The picture of frame `index` (the nearest kept one), if any.

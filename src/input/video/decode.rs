@@ -10,6 +10,8 @@
 use std::io::Read;
 use std::path::Path;
 use std::process::{Child, ChildStdout, Command, Stdio};
+use std::sync::Mutex;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::thread::JoinHandle;
 
 use super::info::{Frames, Info};
@@ -56,10 +58,11 @@ pub(super) fn frames(path: &Path, info: &Info, every: usize) -> Result<Frames, V
         let _ = std::io::copy(&mut stderr, &mut std::io::sink());
         s
     });
+    STREAMS.fetch_add(1, Ordering::Relaxed);
     Ok(Box::new(Stream {
         file,
         child: Some(child),
-        stdout: std::io::BufReader::with_capacity(1 << 20, stdout),
+        stdout,
         messages: Some(messages),
         width: info.width,
         height: info.height,
@@ -72,7 +75,8 @@ pub(super) fn frames(path: &Path, info: &Info, every: usize) -> Result<Frames, V
 struct Stream {
     file: std::path::PathBuf,
     child: Option<Child>,
-    stdout: std::io::BufReader<ChildStdout>,
+    /// Unbuffered: whole planes are read at once, straight into their buffers.
+    stdout: ChildStdout,
     messages: Option<JoinHandle<String>>,
     width: usize,
     height: usize,
@@ -117,20 +121,86 @@ impl Iterator for Stream {
 
     fn next(&mut self) -> Option<Self::Item> {
         self.child.as_ref()?;
-        let mut data = vec![0u8; Frame::bytes(self.width, self.height)];
-        match self.stdout.read_exact(&mut data) {
-            Ok(()) => {
+        // The three planes read straight into buffers of their own: no zeroing
+        // first, no copying apart (3 MB a 1080p frame).
+        let (w, h) = (self.width, self.height);
+        let (cw, ch) = crate::vision::frame::chroma_size(w, h);
+        let planes = [w * h, cw * ch, cw * ch].map(|n| plane(&mut self.stdout, n));
+        match planes {
+            [Some(luma), Some(u), Some(v)] => {
                 let k = self.next * self.every;
                 self.next += 1;
-                Frame::from_yuv420p(self.width, self.height, data).map(|f| Ok((k, f)))
+                let frame = Frame {
+                    luma: crate::vision::Gray {
+                        width: w,
+                        height: h,
+                        data: luma,
+                    },
+                    chroma_width: cw,
+                    chroma_height: ch,
+                    u,
+                    v,
+                };
+                Some(Ok((k, frame)))
             }
-            Err(_) => self.finish().map(Err),
+            _ => self.finish().map(Err),
         }
     }
 }
 
+/// Plane buffers of frames the tracker is done with ([`recycle`]), read into again
+/// while a video streams: a new 3 MB buffer per 1080p frame is the system's work of
+/// mapping and zeroing its pages, then of unmapping them.
+static SPARE: Mutex<Vec<Vec<u8>>> = Mutex::new(Vec::new());
+/// Most buffers kept spare (the planes of a few frames: the reader runs a few ahead).
+const SPARE_MAX: usize = 12;
+/// Streams open: with none, a buffer given back is freed, nothing is kept.
+static STREAMS: AtomicUsize = AtomicUsize::new(0);
+
+/// Gives a frame's buffers back for the next frames a stream reads (freed when no
+/// stream is open, or enough are kept).
+pub(super) fn recycle(frame: Frame) {
+    if STREAMS.load(Ordering::Relaxed) == 0 {
+        return;
+    }
+    let Ok(mut spare) = SPARE.lock() else { return };
+    for b in [frame.luma.data, frame.u, frame.v] {
+        if spare.len() < SPARE_MAX {
+            spare.push(b);
+        }
+    }
+}
+
+/// A spare buffer of at least `n` bytes' capacity (the smallest), else a new one.
+fn spare(n: usize) -> Vec<u8> {
+    let reused = SPARE.lock().ok().and_then(|mut s| {
+        let (i, _) = s
+            .iter()
+            .enumerate()
+            .filter(|(_, b)| b.capacity() >= n)
+            .min_by_key(|(_, b)| b.capacity())?;
+        Some(s.swap_remove(i))
+    });
+    let mut buf = reused.unwrap_or_else(|| Vec::with_capacity(n));
+    buf.clear();
+    buf
+}
+
+/// The next `n` bytes of `r`, `None` when fewer come (the stream's end, an error).
+fn plane(r: &mut impl Read, n: usize) -> Option<Vec<u8>> {
+    let mut buf = spare(n);
+    r.take(n as u64).read_to_end(&mut buf).ok()?;
+    (buf.len() == n).then_some(buf)
+}
+
 impl Drop for Stream {
     fn drop(&mut self) {
+        // The last stream closed: its spare buffers freed.
+        if STREAMS.fetch_sub(1, Ordering::Relaxed) == 1
+            && let Ok(mut s) = SPARE.lock()
+        {
+            s.clear();
+        }
         // Stopped early (an error, Ctrl-C): end ffmpeg, never leave it running.
         if let Some(mut c) = self.child.take() {
             let _ = c.kill();

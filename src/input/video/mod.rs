@@ -55,6 +55,26 @@ pub fn open_every(
     }
 }
 
+/// As [`open`], with `accept` asked of the video's description before a frame is
+/// decoded: one probe (one run of ffprobe), not one to check and one to open.
+pub fn open_if(
+    path: &Path,
+    limits: &Limits,
+    accept: impl FnOnce(&Info) -> Result<(), VideoError>,
+) -> Result<(Info, Frames), VideoError> {
+    match checked(path, limits)? {
+        Opened::Folder(info, frames) => {
+            accept(&info)?;
+            Ok((info, frames))
+        }
+        Opened::Video(info) => {
+            accept(&info)?;
+            let frames = decode::frames(path, &info, 1)?;
+            Ok((info, frames))
+        }
+    }
+}
+
 /// What `path` is, as [`open`] would refuse it, without decoding a frame (a
 /// folder's first frame is read).
 pub fn check(path: &Path, limits: &Limits) -> Result<Info, VideoError> {

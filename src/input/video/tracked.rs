@@ -71,8 +71,16 @@ pub fn track(
 ) -> Result<Option<Tracked>, VideoError> {
     let file = video.display().to_string();
     let err = |what: VideoProblem| VideoError::new(video, what);
-    let info = super::check(video, &Limits::default())?;
-    let Some((fps, source)) = info.rate(options.fps) else {
+    // Probed once: the rate checked before a frame is decoded.
+    let mut rate = None;
+    let (info, frames) = super::open_if(video, &Limits::default(), |info| {
+        rate = info.rate(options.fps);
+        match rate {
+            Some(_) => Ok(()),
+            None => Err(err(VideoProblem::NoRate)),
+        }
+    })?;
+    let Some((fps, source)) = rate else {
         return Err(err(VideoProblem::NoRate));
     };
     let params = options.params();
@@ -82,29 +90,31 @@ pub fn track(
     // background it is tracked against has seen the balls move on. A clip that fits
     // in the look-ahead (most clips) is learned whole before its first frame is
     // tracked, as if read twice.
-    let (info, frames) = super::open(video, &Limits::default())?;
     let ahead = lookahead(info.width, info.height);
     let total = info.frames.max(1);
     let mut thumbs = Thumbs::sized(info.width, info.height, info.frames);
+    let no_thumbs = thumbs.clone();
     let mut numbers = Vec::new();
     let mut waiting: std::collections::VecDeque<vision::Frame> = Default::default();
-    let mut tracked = 0usize;
-    let mut track_one = |img: &vision::Frame, tracker: &mut Tracker| {
-        tracker.push(img);
-        thumbs.push(tracked, &img.luma);
-        tracked += 1;
-    };
     // The frames are read (piped from ffmpeg, or decoded from a folder) on a thread
     // of their own, a few ahead, while this one tracks: reading a 1080p frame is a
     // copy of 3 MB. Dropping the receiver (an error, Ctrl-C) ends the reader at its
-    // next frame, and the decoder with it.
+    // next frame, and the decoder with it. The app's small pictures are made there
+    // too (each frame's box averages, in the frames' order: what the tracker is
+    // given), off the tracker's thread.
     let (sender, received) = std::sync::mpsc::sync_channel(READ_AHEAD);
-    std::thread::spawn(move || {
+    let reader = std::thread::spawn(move || {
+        let mut k = 0usize;
         for frame in frames {
+            if let Ok((_, img)) = &frame {
+                thumbs.push(k, &img.luma);
+                k += 1;
+            }
             if sender.send(frame).is_err() {
                 break;
             }
         }
+        thumbs
     });
     for frame in received {
         if progress.cancelled() {
@@ -117,7 +127,8 @@ pub fn track(
         if waiting.len() > ahead
             && let Some(first) = waiting.pop_front()
         {
-            track_one(&first, &mut tracker);
+            tracker.push(&first);
+            super::decode::recycle(first);
         }
         let seen = numbers.len() as u64;
         progress.tick(seen, total.max(seen));
@@ -126,8 +137,11 @@ pub fn track(
         if progress.cancelled() {
             return Ok(None);
         }
-        track_one(&img, &mut tracker);
+        tracker.push(&img);
     }
+    // The reader is done (the frames ran out); a reader that panicked leaves no
+    // pictures, the tracks stand.
+    let thumbs = reader.join().unwrap_or(no_thumbs);
     let first = match numbers.as_slice() {
         [first, _, ..] => *first,
         _ => {

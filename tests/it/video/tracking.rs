@@ -100,10 +100,14 @@ fn write_pngs(dir: &Path, frames: &[Vec<u8>], look: &Look, skip: &[usize]) {
 /// True when ffmpeg is installed. Under CI (CI=true) its absence fails the test that
 /// asks: CI installs it, so a missing ffmpeg there is a broken setup, not a skip.
 pub fn ffmpeg() -> bool {
-    let ok = std::process::Command::new("ffmpeg")
-        .arg("-version")
-        .output()
-        .is_ok_and(|o| o.status.success());
+    // Asked once per test process (several tests ask; each ask ran ffmpeg).
+    static INSTALLED: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+    let ok = *INSTALLED.get_or_init(|| {
+        std::process::Command::new("ffmpeg")
+            .arg("-version")
+            .output()
+            .is_ok_and(|o| o.status.success())
+    });
     if !ok {
         assert!(
             std::env::var("CI").is_err(),
