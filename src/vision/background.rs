@@ -9,6 +9,7 @@
 
 use super::frame::Frame;
 use super::params::Params;
+use super::select;
 
 /// A frame reduced to the coarse size: Y, U and V per coarse pixel.
 #[derive(Clone, Debug, PartialEq)]
@@ -195,16 +196,11 @@ fn median_plane(
             } else {
                 &mut kept[j * nf..j * nf + nk[j]]
             };
-            out.push(median_f32(vals).unwrap_or(0.0));
+            out.push(select::median(vals).unwrap_or(0.0));
         }
         start += t;
     }
     out
-}
-
-/// The median (the sort's middle, `select::median_f32`: exact, counted by level).
-fn median_f32(v: &mut [f32]) -> Option<f32> {
-    super::select::median_f32(v)
 }
 
 /// How much each coarse pixel of `s` differs from the background `bg` (levels:
@@ -251,7 +247,7 @@ pub fn differences(s: &Small, bg: &Small, p: &Params) -> (Vec<f32>, usize) {
 pub fn threshold(d: &[f32], p: &Params) -> f32 {
     let step = (d.len() / 4096).max(1);
     let mut s: Vec<f32> = d.iter().step_by(step).copied().collect();
-    let med = median_f32(&mut s).unwrap_or(0.0);
+    let med = select::median(&mut s).unwrap_or(0.0);
     (p.differ_sigmas as f32 * 1.4826 * med).max(p.differ_levels as f32)
 }
 

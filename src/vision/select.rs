@@ -10,39 +10,52 @@
 /// Fewer values than this: a plain selection, as fast as counting them.
 const FEW: usize = 24;
 
-/// The median of `v` (`v` sorted by `f32::total_cmp`, its element `len / 2`), `v`
-/// reordered; `None` when empty.
-pub fn median_f32(v: &mut [f32]) -> Option<f32> {
-    let mid = v.len() / 2;
-    if v.len() >= FEW
-        && let Some(m) = counted(
-            v.iter().map(|&x| {
-                let l = x as u8;
-                (f32::from(l).to_bits() == x.to_bits()).then_some(l)
-            }),
-            mid,
-        )
-    {
-        return Some(f32::from(m));
-    }
-    (!v.is_empty()).then(|| *v.select_nth_unstable_by(mid, f32::total_cmp).1)
+/// A float that may hold a whole level exactly (f32 and f64: the frames' planes and
+/// the tracker's differences).
+pub trait Level: Copy {
+    /// The level `self` is, when it is exactly one (`+0 … 255`: equal levels are
+    /// equal bits).
+    fn level(self) -> Option<u8>;
+    fn from_level(l: u8) -> Self;
+    fn total_cmp(&self, other: &Self) -> std::cmp::Ordering;
 }
 
-/// The median of `v` as [`median_f32`], for f64 values.
-pub fn median_f64(v: &mut [f64]) -> Option<f64> {
+impl Level for f32 {
+    fn level(self) -> Option<u8> {
+        let l = self as u8;
+        (f32::from(l).to_bits() == self.to_bits()).then_some(l)
+    }
+    fn from_level(l: u8) -> f32 {
+        f32::from(l)
+    }
+    fn total_cmp(&self, other: &f32) -> std::cmp::Ordering {
+        f32::total_cmp(self, other)
+    }
+}
+
+impl Level for f64 {
+    fn level(self) -> Option<u8> {
+        let l = self as u8;
+        (f64::from(l).to_bits() == self.to_bits()).then_some(l)
+    }
+    fn from_level(l: u8) -> f64 {
+        f64::from(l)
+    }
+    fn total_cmp(&self, other: &f64) -> std::cmp::Ordering {
+        f64::total_cmp(self, other)
+    }
+}
+
+/// The median of `v` (`v` sorted by `total_cmp`, its element `len / 2`), `v`
+/// reordered; `None` when empty.
+pub fn median<T: Level>(v: &mut [T]) -> Option<T> {
     let mid = v.len() / 2;
     if v.len() >= FEW
-        && let Some(m) = counted(
-            v.iter().map(|&x| {
-                let l = x as u8;
-                (f64::from(l).to_bits() == x.to_bits()).then_some(l)
-            }),
-            mid,
-        )
+        && let Some(m) = counted(v.iter().map(|&x| x.level()), mid)
     {
-        return Some(f64::from(m));
+        return Some(T::from_level(m));
     }
-    (!v.is_empty()).then(|| *v.select_nth_unstable_by(mid, f64::total_cmp).1)
+    (!v.is_empty()).then(|| *v.select_nth_unstable_by(mid, T::total_cmp).1)
 }
 
 /// The level at place `mid` of `levels` sorted, by counting them; `None` at the
@@ -98,9 +111,9 @@ mod tests {
         ) {
             let want = sorted_middle(&v).map(f32::to_bits);
             let mut w = v.clone();
-            prop_assert_eq!(median_f32(&mut w).map(f32::to_bits), want);
+            prop_assert_eq!(median(&mut w).map(f32::to_bits), want);
             let mut d: Vec<f64> = v.iter().map(|&x| f64::from(x)).collect();
-            prop_assert_eq!(median_f64(&mut d).map(|x| x as f32).map(f32::to_bits), want);
+            prop_assert_eq!(median(&mut d).map(|x| x as f32).map(f32::to_bits), want);
         }
     }
 
@@ -109,7 +122,7 @@ mod tests {
         let mut v: Vec<f32> = (0..40).map(|i| i as f32).collect();
         v[3] = f32::NAN;
         // total_cmp puts a positive NaN last: the middle of 0..40 without 3, and NaN.
-        assert_eq!(median_f32(&mut v), Some(21.0));
-        assert_eq!(median_f32(&mut []), None);
+        assert_eq!(median(&mut v), Some(21.0));
+        assert_eq!(median::<f32>(&mut []), None);
     }
 }

@@ -881,7 +881,7 @@ pub fn pixel_noise(img: &Gray) -> f64 {
         i += step;
     }
     // Whole levels: the median counted by level (`select`), the sort's middle.
-    super::select::median_f64(&mut d).map_or(1.0, |m| m * 1.4826 / std::f64::consts::SQRT_2)
+    super::select::median(&mut d).map_or(1.0, |m| m * 1.4826 / std::f64::consts::SQRT_2)
 }
 
 /// The median of `v`, `None` when empty.
