@@ -345,35 +345,51 @@ fn staying_spot(frames: &[FrameFixes], p: &MarkChecks) -> Option<(f64, f64)> {
 }
 
 /// The spot of its disc where one ball's "mark" sits in most frames while the ball
-/// rolls on by [`MarkChecks::rolled`] radii or more: a highlight.
+/// rolls on by [`MarkChecks::rolled`] radii or more, summed over the runs of frames it
+/// sits there in: a highlight.
 #[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
 fn fixed_spot(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Option<(f64, f64)> {
-    let fixes: Vec<&super::tracker::Fix> = frames
+    // The ball's marks: frame, centre's x and radius (px), place in the disc.
+    let marks: Vec<(usize, f64, f64, (f64, f64))> = frames
         .iter()
-        .filter_map(|f| f[slot].as_ref().ok())
+        .enumerate()
+        .filter_map(|(k, f)| {
+            let fix = f[slot].as_ref().ok()?;
+            let c = fix.outline.circle;
+            Some((k, c.x, c.r, offset(fix)?))
+        })
         .collect();
-    let offs: Vec<(f64, f64)> = fixes.iter().filter_map(|f| offset(f)).collect();
-    if offs.len() < 5 {
+    if marks.len() < 5 {
         return None;
     }
-    let xs: Vec<f64> = offs.iter().map(|o| o.0).collect();
-    let ys: Vec<f64> = offs.iter().map(|o| o.1).collect();
+    let xs: Vec<f64> = marks.iter().map(|m| m.3.0).collect();
+    let ys: Vec<f64> = marks.iter().map(|m| m.3.1).collect();
     let h = (middle(&xs)?, middle(&ys)?);
-    let at: Vec<&&super::tracker::Fix> = fixes
-        .iter()
-        .filter(|f| offset(f).is_some_and(|o| near(o, h, p.same_spot)))
-        .collect();
-    if (at.len() as f64) < p.fixed_share * offs.len() as f64 {
+    let at: Vec<&(usize, f64, f64, (f64, f64))> =
+        marks.iter().filter(|m| near(m.3, h, p.same_spot)).collect();
+    if (at.len() as f64) < p.fixed_share * marks.len() as f64 {
         return None;
     }
-    let x = at.iter().map(|f| f.outline.circle.x);
-    let travel = x.clone().fold(f64::NEG_INFINITY, f64::max) - x.fold(f64::INFINITY, f64::min);
-    let r = at.first()?.outline.circle.r;
+    // How far the ball moved while the spot was there, over each run of frames
+    // with it (each at most two after the one before, as `staying_spot`): a drawn
+    // mark seen at one place every third frame only (a turn of 2π/3 a frame, the
+    // rest of the turn below the centre) does not stay there.
+    let mut travel: f64 = 0.0;
+    let mut start = 0;
+    for i in 1..=at.len() {
+        if i == at.len() || at[i].0 - at[i - 1].0 > 2 {
+            let x = at[start..i].iter().map(|m| m.1);
+            travel += x.clone().fold(f64::NEG_INFINITY, f64::max) - x.fold(f64::INFINITY, f64::min);
+            start = i;
+        }
+    }
+    let r = at.first()?.2;
     (travel >= p.rolled * r).then_some(h)
 }
 
 /// The frames whose mark in `slot` stayed put in the picture while its ball moved
-/// on, against the ball's previous frame with a mark.
+/// on, against the ball's previous frame with a mark (where it rolled under half a
+/// turn meanwhile).
 #[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
 fn still_marks(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Vec<usize> {
     let mut out = Vec::new();
@@ -389,7 +405,15 @@ fn still_marks(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Vec<usize>
         if let Some((k0, c0, m0)) = prev.filter(|p| k - p.0 <= 2) {
             let moved = (c.0 - c0.0).hypot(c.1 - c0.1);
             let mark_moved = (m.0 - m0.0).hypot(m.1 - m0.1);
-            if moved >= p.moved_px && mark_moved < p.still_share * moved {
+            // A drawn mark above the centre that turns by under half a turn moves
+            // forward at least as far as its ball; turned by more, its way back
+            // round the disc can cancel the ball's move (a fast ball at 30
+            // frames/s, two frames apart), and the step tells nothing. Under half
+            // a turn at 1.5 times the roll measured, as `stayed_while_rolling`.
+            let kr = fix.outline.circle.r
+                * ((fix.outline.lowest - c.1) / fix.outline.circle.r.max(1.0)).clamp(0.2, 1.0);
+            let judged = 1.5 * moved / kr.max(1.0) < std::f64::consts::PI;
+            if judged && moved >= p.moved_px && mark_moved < p.still_share * moved {
                 out.extend([k0, k]);
             }
         }
