@@ -122,11 +122,14 @@ pub(super) struct NotMeasured {
     reason: String,
 }
 
-/// The line fit's values that are null for `fits`: a_t and μ_k,t without a rim mark
-/// (or with one whose turn a frame cannot be followed, `no_v_t` saying so; or one
-/// followed in too few frames of the window, when the data `has_v_t`);
-/// the whole `line_fit` where it could not be made, with why.
-pub(super) fn not_measured(fits: &Fits, no_v_t: Option<&str>, has_v_t: bool) -> Vec<NotMeasured> {
+/// The line fit's values that are null for `fits`: a_t and μ_k,t without a rim mark's
+/// v_t in the window, `why_no_v_t` or `no_v_t` (a mark whose turn a frame cannot be
+/// followed) saying why; the whole `line_fit` where it could not be made, with why.
+pub(super) fn not_measured(
+    fits: &Fits,
+    no_v_t: Option<&str>,
+    why_no_v_t: crate::study::measured::NoLineVt,
+) -> Vec<NotMeasured> {
     let Some(l) = &fits.line_fit else {
         return vec![NotMeasured {
             quantity: "line_fit",
@@ -136,11 +139,7 @@ pub(super) fn not_measured(fits: &Fits, no_v_t: Option<&str>, has_v_t: bool) -> 
                 .map_or_else(|| "not possible".into(), |e| format!("not possible: {e}")),
         }];
     };
-    let reason = no_v_t.unwrap_or(if has_v_t {
-        "the rim mark was followed in fewer than 3 frames of the line fits' window: v_t is not measured there"
-    } else {
-        "no rim mark was tracked: v_t is not measured"
-    });
+    let reason = no_v_t.unwrap_or(why_no_v_t.reason());
     [
         ("line_fit.a_t", l.a_t),
         ("line_fit.a_t_se", l.a_t_se),

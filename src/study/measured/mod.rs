@@ -20,7 +20,8 @@ pub mod track;
 use std::sync::Arc;
 
 pub use series::{
-    Measured, MeasuredParts, NoCommonFrame, OutOfLabRange, RawSeries, Rule, Track, TrackParts,
+    Measured, MeasuredParts, NoCommonFrame, NoLineVt, OutOfLabRange, RawSeries, Rule, Track,
+    TrackParts,
 };
 pub use track::{Derive, Found, TrackError, in_file_time};
 

@@ -525,6 +525,52 @@ impl Measured {
     pub fn has_v_t(&self) -> bool {
         self.v_t.iter().any(|v| v.is_finite())
     }
+
+    /// Why the line fits' a_t and μ_k,t are not measured, where they are not.
+    pub fn why_no_line_v_t(&self) -> NoLineVt {
+        if self.has_v_t() {
+            NoLineVt::FewInWindow
+        } else if self.angle().is_some() {
+            NoLineVt::FewInARow
+        } else {
+            NoLineVt::NoMark
+        }
+    }
+}
+
+/// Why the line fits over a window have no v_t line ([`Measured::why_no_line_v_t`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum NoLineVt {
+    /// The rim mark's v_t is measured, but in fewer than 3 frames of the window.
+    FewInWindow,
+    /// A mark was tracked, but in too few frames in a row for a v_t anywhere (each
+    /// v_t is a local fit over a frame and its neighbours).
+    FewInARow,
+    /// No mark was tracked.
+    NoMark,
+}
+
+impl NoLineVt {
+    /// The reason in full, as `fit`'s JSON says it.
+    pub fn reason(self) -> &'static str {
+        match self {
+            NoLineVt::FewInWindow => {
+                "the rim mark was followed in fewer than 3 frames of the line fits' window: v_t is not measured there"
+            }
+            NoLineVt::FewInARow => {
+                "the rim mark was followed in too few frames in a row for a v_t (a local fit over a frame and its neighbours): v_t is not measured"
+            }
+            NoLineVt::NoMark => "no rim mark was tracked: v_t is not measured",
+        }
+    }
+
+    /// The reason in a few words, for a narrow panel.
+    pub fn short(self) -> &'static str {
+        match self {
+            NoLineVt::NoMark => "no rim mark",
+            NoLineVt::FewInWindow | NoLineVt::FewInARow => "rim mark in too few frames",
+        }
+    }
 }
 
 /// A measured number beyond lab sizes ([`Measured::check_magnitudes`]): series

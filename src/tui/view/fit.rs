@@ -221,9 +221,15 @@ fn line_fit_lines(l: &fit::LineFit, app: &App, width: usize, theme: &Theme) -> R
             Some(format!("{}_t {:.3}", g.mu, l.mu_t)),
         );
     } else {
+        // As `fit` says it: a rim mark tracked but seen in too few frames of the
+        // window is not "no rim mark".
+        let why = app
+            .lab
+            .measured()
+            .map_or("no rim mark", |m| m.why_no_line_v_t().short());
         accelerations(
             "|a_t|  ",
-            format!("and {}_t not measured (no rim mark)", g.mu),
+            format!("and {}_t not measured ({why})", g.mu),
             None,
         );
     }

@@ -3,6 +3,7 @@
 //! the helpers below), the classroom's items, and a new user's trial.
 
 mod classroom;
+mod mark_words;
 mod new_user_trial;
 mod reliability_inputs;
 mod reliability_outputs;

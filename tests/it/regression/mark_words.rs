@@ -1,0 +1,87 @@
+//! Why a rim mark gives no v_t, said as it is: the app's Fit view said "no rim mark"
+//! and `fit`'s JSON "no rim mark was tracked" for a video's tracks whose mark was
+//! kept in a few frames, none three in a row (a local fit of the angle needs a frame
+//! and its neighbours), while the same `fit` named the mark and counted its frames.
+
+use groovelab::study::measured::NoLineVt;
+use groovelab::study::video::{self, TrackFormat, Video};
+
+use crate::common::{preset_scene, run_in_process, scratch_dir};
+
+/// The example video's tracks (paper-b4.9) written as a Tracker multi-track export,
+/// the mark kept only in the rows `keep` says: the file's path.
+fn tracks_with_mark_in(name: &str, keep: impl Fn(usize) -> bool) -> std::path::PathBuf {
+    let s = preset_scene("paper-b4.9");
+    let mut t = video::track(&s, &Video::default()).unwrap().into_parts();
+    let (mut mx, mut my) = t.mark.take().unwrap();
+    for i in (0..mx.len()).filter(|&i| !keep(i)) {
+        mx[i] = f64::NAN;
+        my[i] = f64::NAN;
+    }
+    t.mark = Some((mx, my));
+    let track = groovelab::study::measured::Track::new(t).unwrap();
+    let path = scratch_dir("regression", name).join("tracks.txt");
+    std::fs::write(&path, video::write(&track, TrackFormat::TrackerMulti)).unwrap();
+    path
+}
+
+/// The reason `fit`'s JSON gives for the line fit's μ_k,t, and the Fit view's line
+/// on a_t, for the tracks at `path`.
+fn said(path: &std::path::Path) -> (String, String) {
+    let f = path.to_str().unwrap();
+    let args = [
+        "fit",
+        "--preset",
+        "paper-b4.9",
+        "--data",
+        f,
+        "--format",
+        "json",
+    ];
+    let j: serde_json::Value = serde_json::from_str(&run_in_process(&args).unwrap()).unwrap();
+    // `not_measured` is left out where nothing is.
+    let reason = j["not_measured"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .find(|w| w["quantity"] == "line_fit.mu_t")
+        .map(|w| w["reason"].as_str().unwrap().to_string())
+        .unwrap_or_default();
+    let args = [
+        "render",
+        "--preset",
+        "paper-b4.9",
+        "--data",
+        f,
+        "--keys",
+        "f",
+        "--size",
+        "200x60",
+    ];
+    let screen = run_in_process(&args).unwrap();
+    let line = screen
+        .lines()
+        .find_map(|l| Some(l[l.find("|a_t|")?..].to_string()))
+        .unwrap_or_default();
+    (reason, line)
+}
+
+#[test]
+fn a_mark_in_scattered_frames_is_not_called_no_rim_mark() {
+    // Every third row: a mark in 1 of 3 frames, never two in a row.
+    let (reason, line) = said(&tracks_with_mark_in("mark-every-third", |i| i % 3 == 0));
+    assert_eq!(reason, NoLineVt::FewInARow.reason());
+    assert!(reason.contains("too few frames in a row"), "{reason}");
+    assert!(
+        line.contains("not measured (rim mark in too few frames)"),
+        "{line}"
+    );
+    // No mark at all: said so.
+    let (reason, line) = said(&tracks_with_mark_in("mark-none", |_| false));
+    assert_eq!(reason, NoLineVt::NoMark.reason());
+    assert!(line.contains("not measured (no rim mark)"), "{line}");
+    // The mark in every frame: a_t and μ_k,t measured, nothing said missing.
+    let (reason, line) = said(&tracks_with_mark_in("mark-all", |_| true));
+    assert_eq!(reason, "");
+    assert!(line.contains("μ_t 0."), "{line}");
+}
