@@ -254,6 +254,16 @@ pub fn describe(shown: &DataReport) -> String {
     if let Some(doubt) = &shown.mark_doubt {
         let _ = writeln!(s, "  {doubt}");
     }
+    if let Some(l) = &r.mark_left_out {
+        let _ = writeln!(
+            s,
+            "  rim mark {} left out by the fits: it lies {:.1} from the centre, within {}× the position scatter ({:.2}), so its angle would be noise; v_t is not measured",
+            named(&l.name),
+            show_small(l.radius, Dimension::Length),
+            l.scatters,
+            show_small(r.scatter.unwrap_or(f64::NAN), Dimension::Length)
+        );
+    }
     if let Some(line) = r.notes.cut_row {
         let _ = writeln!(
             s,

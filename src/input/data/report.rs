@@ -29,6 +29,10 @@ pub struct Report {
     /// a rim mark lies within R of it (`groovelab data` says when it cannot be one).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub mark_distance: Option<f64>,
+    /// A rim mark tracked but left out by the fits: it lies within a few position
+    /// scatters of the centre, so its angle would be noise (`fit` says the same).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mark_left_out: Option<crate::study::measured::track::MarkLeftOut>,
     /// Frames with a time (and, for a track, rows kept).
     pub frames: usize,
     /// The frames of the file's time span at its rate, found or not (a video's
@@ -185,6 +189,7 @@ fn velocities(t: &[f64], file: &str, notes: Notes) -> Report {
         centre: None,
         mark: None,
         mark_distance: None,
+        mark_left_out: None,
         frames: t.len(),
         frames_spanned: spanned(t),
         frame_rate: rate_of(t),
@@ -219,6 +224,7 @@ fn of_track(track: Track, file: &str, notes: Notes, reading: &Reading, derive: &
         centre: Some(track.centre_name().to_string()),
         mark: track.mark_name().map(str::to_string),
         mark_distance: mark_distance(&track),
+        mark_left_out: None,
         frames: t.len(),
         // The rate and span of every row: a video's frames left out (no position)
         // are frames of the clip all the same.
@@ -242,6 +248,7 @@ fn of_track(track: Track, file: &str, notes: Notes, reading: &Reading, derive: &
     match measured::prepare(RawSeries::Positions(track.clone()), &opts) {
         Ok(Series::Track(_, found)) => {
             report.scatter = Some(found.scatter);
+            report.mark_left_out = found.mark_left_out.clone();
             report.approach_speed = Some(found.approach_speed);
             report.approach_speed_se = Some(found.approach_speed_se).filter(|s| s.is_finite());
             report.impacts = std::iter::once(found.impact_t)
