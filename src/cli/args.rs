@@ -8,7 +8,7 @@ use crate::methods::Method;
 use crate::settings::params::PARAMS;
 use crate::settings::quote::clip;
 use crate::settings::spec::SceneSpec;
-use crate::settings::units::{Dimension, UnitError, parse_option};
+use crate::settings::units::{Dimension, UnitError, parse_option, significant};
 use crate::study::fit::Free;
 
 /// Most samples `--sample` may ask for.
@@ -165,6 +165,12 @@ pub enum ArgError {
         clip(text)
     )]
     NotAPixel { text: String },
+    #[error(
+        "'{}' ({} m a pixel) is not a pixel's length in a lab video, allowed 0.001mm … 10cm (e.g. 1.105mm: the length one pixel shows, not pixels per metre)",
+        clip(text),
+        significant(*metres, 4)
+    )]
+    PixelOutOfRange { text: String, metres: f64 },
     #[error(
         "'{}' is not a rectangle of the frame, expected X,Y,W,H in pixels such as 0,300,1920,250 (X, Y ≥ 0; W, H ≥ 1)",
         clip(text)
@@ -407,9 +413,16 @@ fn speed(s: &str) -> Result<f64, UnitError> {
 fn time(s: &str) -> Result<f64, UnitError> {
     parse_option(s, Dimension::Time)
 }
+/// The length one pixel of a video shows: above 0, and between a microscope's
+/// 0.001 mm and 10 cm (a bench 10 m long across 100 pixels); a bare number is metres, so a
+/// scale typed as pixels per metre (`957.86`) is refused, not taken as 958 m a pixel.
 fn length(s: &str) -> Result<f64, ArgError> {
     match parse_option(s, Dimension::Length)? {
-        v if v > 0.0 => Ok(v),
+        v if (1e-6..=0.1).contains(&v) => Ok(v),
+        v if v > 0.0 => Err(ArgError::PixelOutOfRange {
+            text: s.to_string(),
+            metres: v,
+        }),
         _ => Err(ArgError::NotAPixel {
             text: s.to_string(),
         }),

@@ -168,6 +168,21 @@ fn small_messages_say_what_happened() {
             "{err}"
         );
     }
+    // A scale typed as pixels per metre (a bare number is metres a pixel): refused,
+    // saying what it was read as, never 958 m a pixel.
+    for (value, read) in [
+        ("957.86", "957.9 m a pixel"),
+        ("2m", "2 m a pixel"),
+        ("0.0001mm", "1.000e-7 m a pixel"),
+    ] {
+        let (code, _, err) = groovelab(&["track", f, "--scale", value]);
+        assert_eq!(code, Some(2), "{err}");
+        assert!(
+            err.contains(&format!("'{value}' ({read})")) && err.contains("allowed 0.001mm … 10cm"),
+            "{err}"
+        );
+        assert!(err.lines().count() == 1, "{err}");
+    }
     let (code, _, err) = groovelab(&["data", f, "--window", "-1ms"]);
     assert_eq!(code, Some(2));
     assert!(err.contains("--window -0.001 s is out of range"), "{err}");
