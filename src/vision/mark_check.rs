@@ -349,14 +349,15 @@ fn staying_spot(frames: &[FrameFixes], p: &MarkChecks) -> Option<(f64, f64)> {
 /// sits there in: a highlight.
 #[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
 fn fixed_spot(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Option<(f64, f64)> {
-    // The ball's marks: frame, centre's x and radius (px), place in the disc.
-    let marks: Vec<(usize, f64, f64, (f64, f64))> = frames
+    // The ball's marks: centre's x, radius and kR (px: it rolls on the rails' edges,
+    // kR below its centre), place in the disc.
+    let marks: Vec<(f64, f64, f64, (f64, f64))> = frames
         .iter()
-        .enumerate()
-        .filter_map(|(k, f)| {
+        .filter_map(|f| {
             let fix = f[slot].as_ref().ok()?;
             let c = fix.outline.circle;
-            Some((k, c.x, c.r, offset(fix)?))
+            let kr = c.r * ((fix.outline.lowest - c.y) / c.r.max(1.0)).clamp(0.2, 1.0);
+            Some((c.x, c.r, kr.max(1.0), offset(fix)?))
         })
         .collect();
     if marks.len() < 5 {
@@ -365,25 +366,31 @@ fn fixed_spot(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Option<(f64
     let xs: Vec<f64> = marks.iter().map(|m| m.3.0).collect();
     let ys: Vec<f64> = marks.iter().map(|m| m.3.1).collect();
     let h = (middle(&xs)?, middle(&ys)?);
-    let at: Vec<&(usize, f64, f64, (f64, f64))> =
+    let at: Vec<&(f64, f64, f64, (f64, f64))> =
         marks.iter().filter(|m| near(m.3, h, p.same_spot)).collect();
     if (at.len() as f64) < p.fixed_share * marks.len() as f64 {
         return None;
     }
-    // How far the ball moved while the spot was there, over each run of frames
-    // with it (each at most two after the one before, as `staying_spot`): a drawn
-    // mark seen at one place every third frame only (a turn of 2π/3 a frame, the
-    // rest of the turn below the centre) does not stay there.
+    // How far the ball moved while the spot was there, over each run of marks at
+    // it, each found before the ball rolled half a turn from the one before: a
+    // drawn mark cannot come back to its place of the disc in less than a turn, so
+    // within a run it stayed there. A drawn mark seen at one place once a turn
+    // only (a turn of 2π/3 a frame, the rest of the turn below the centre, at a
+    // low rate) stays in no run.
     let mut travel: f64 = 0.0;
     let mut start = 0;
     for i in 1..=at.len() {
-        if i == at.len() || at[i].0 - at[i - 1].0 > 2 {
-            let x = at[start..i].iter().map(|m| m.1);
+        let ends = at
+            .get(i)
+            .zip(at.get(i - 1))
+            .is_none_or(|(b, a)| (b.0 - a.0).abs() / a.2 >= std::f64::consts::PI);
+        if ends {
+            let x = at[start..i].iter().map(|m| m.0);
             travel += x.clone().fold(f64::NEG_INFINITY, f64::max) - x.fold(f64::INFINITY, f64::min);
             start = i;
         }
     }
-    let r = at.first()?.2;
+    let r = at.first()?.1;
     (travel >= p.rolled * r).then_some(h)
 }
 
