@@ -25,10 +25,8 @@ fn tracks_with_mark_in(name: &str, keep: impl Fn(usize) -> bool) -> std::path::P
     path
 }
 
-/// The reason `fit`'s JSON gives for the line fit's μ_k,t, and the Fit view's line
-/// on a_t, for the tracks at `path`.
-fn said(path: &std::path::Path) -> (String, String) {
-    let f = path.to_str().unwrap();
+/// `fit --format json` of the tracks file `f` in the scene paper-b4.9, run in process.
+fn fit_json(f: &str) -> serde_json::Value {
     let args = [
         "fit",
         "--preset",
@@ -38,7 +36,14 @@ fn said(path: &std::path::Path) -> (String, String) {
         "--format",
         "json",
     ];
-    let j: serde_json::Value = serde_json::from_str(&run_in_process(&args).unwrap()).unwrap();
+    serde_json::from_str(&run_in_process(&args).unwrap()).unwrap()
+}
+
+/// The reason `fit`'s JSON gives for the line fit's μ_k,t, and the Fit view's line
+/// on a_t, for the tracks at `path`.
+fn said(path: &std::path::Path) -> (String, String) {
+    let f = path.to_str().unwrap();
+    let j = fit_json(f);
     // `not_measured` is left out where nothing is.
     let reason = j["not_measured"]
         .as_array()
@@ -135,16 +140,7 @@ fn data_says_when_the_fits_leave_the_mark_out() {
         "{left}"
     );
     // And `fit` leaves it out as `data` says.
-    let args = [
-        "fit",
-        "--preset",
-        "paper-b4.9",
-        "--data",
-        f,
-        "--format",
-        "json",
-    ];
-    let fit: serde_json::Value = serde_json::from_str(&run_in_process(&args).unwrap()).unwrap();
+    let fit = fit_json(f);
     assert_eq!(
         fit["track"]["mark_left_out"]["name"], "mark",
         "{}",
