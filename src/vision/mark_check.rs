@@ -54,6 +54,15 @@ pub fn checked(frames: &[FrameFixes], p: &MarkChecks) -> Vec<FrameFixes> {
         left_out(&mut out, slot, stayed);
         let lone = unconfirmed(&out, slot, p);
         left_out(&mut out, slot, lone);
+        // Fewer marks than their circle and turning are told from, left after the
+        // checks: nothing shows they are the drawn mark's (a lone spot the checks
+        // above could not judge, its neighbours without the ball).
+        let kept: Vec<usize> = (0..out.len())
+            .filter(|&k| out[k][slot].as_ref().is_ok_and(|f| f.mark.is_some()))
+            .collect();
+        if kept.len() < p.fewest_marks {
+            left_out(&mut out, slot, kept);
+        }
     }
     out
 }

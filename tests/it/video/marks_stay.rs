@@ -102,3 +102,24 @@ fn a_lone_spot_amid_frames_without_the_mark_is_left_out() {
     });
     only_drawn(&kept(&frames), 55);
 }
+
+/// Seed 24 of the looks table (240 frames/s, a glossy ball): one "mark" 27 px off was
+/// kept, all the ball's others left out as lone spots. Here six lone spots at the
+/// drawn mark's distance (frames 0, 5, … 25, each amid frames without a mark, the ball
+/// rolling 0.44 rad a frame) and one pair of marks that agree (frames 30, 31): the
+/// lone spots are left out, and the pair, fewer than the marks their circle and
+/// turning are told from, too. No mark is better than two unconfirmed.
+#[test]
+fn marks_fewer_than_a_circle_needs_after_the_checks_are_left_out() {
+    let frames = clip(|k| match k {
+        0..=25 if k % 5 == 0 => Some(drawn(k)),
+        30 | 31 => Some(drawn(k)),
+        _ => None,
+    });
+    let fewest = MarkChecks::default().fewest_marks;
+    assert!(fewest > 2, "{fewest}");
+    assert_eq!(kept(&frames), vec![]);
+    // The same pair in a run of drawn marks long enough to be told: kept.
+    let frames = clip(|k| (30..30 + fewest).contains(&k).then(|| drawn(k)));
+    assert_eq!(kept(&frames).len(), fewest);
+}
