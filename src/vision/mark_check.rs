@@ -483,41 +483,28 @@ fn seen(frames: &[FrameFixes], slot: usize) -> Vec<BallFit> {
 }
 
 /// The frames whose mark in `slot` sits at one place of its disc in a run of marks
-/// (each a few frames after the one before, too few for a drawn mark to come round)
+/// (each found before the ball rolled half a turn from the one before: too little for a
+/// drawn mark to come round)
 /// while the ball rolled on by [`MarkChecks::stay_roll`] rad or more: a drawn mark
 /// turns as its ball rolls; compression blocks on the upper limb, a highlight or the
 /// shading's darkest spot stay.
 fn stayed_while_rolling(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Vec<usize> {
     let fits = seen(frames, slot);
-    // The ball's fast roll per frame (a few wild fits left out: its 80th
-    // percentile), and the most frames between two marks of a run: under half a
-    // turn at 1.5 times that roll.
-    let mut rates: Vec<f64> = fits
-        .windows(2)
-        .filter_map(|w| match w {
-            [a, b] if b.k - a.k <= 2 => Some(a.roll_to(b) / (b.k - a.k) as f64),
-            _ => None,
-        })
-        .collect();
-    rates.sort_by(f64::total_cmp);
-    let fast = rates
-        .get((0.8 * rates.len().saturating_sub(1) as f64) as usize)
-        .copied()
-        .unwrap_or(0.0);
-    let gap = (std::f64::consts::PI / (1.5 * fast).max(1e-9)).clamp(1.0, 1e6) as usize;
     let marks: Vec<&BallFit> = fits.iter().filter(|f| f.mark.is_some()).collect();
     let mut out = Vec::new();
     for (i, a) in marks.iter().enumerate() {
         let Some(at) = a.mark else { continue };
         let mut run = vec![a.k];
-        let mut last = a.k;
+        let mut last = *a;
         for b in marks.iter().skip(i + 1) {
-            if b.k - last > gap {
+            // A run goes on while the ball rolls under half a turn from its last
+            // mark at the spot: a drawn mark needs a whole turn to come back there.
+            if last.roll_to(b) >= std::f64::consts::PI {
                 break;
             }
             if b.mark.is_some_and(|o| near(o, at, p.stay_within)) {
                 run.push(b.k);
-                last = b.k;
+                last = b;
                 if a.roll_to(b) >= p.stay_roll {
                     out.append(&mut run);
                 }
