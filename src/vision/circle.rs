@@ -322,18 +322,21 @@ fn strong_points(found: Vec<([f64; 2], f32, f64)>) -> Option<Vec<[f64; 2]>> {
 /// at least `min_step` levels across 2 px, mostly along the ray (not a straight edge
 /// crossing it), and no farther than `margin` px beyond the last place on the ray
 /// where `differs` (the frame differs from its background there); the circle fitted
-/// to those places (polarity [`EITHER`]). `None` when fewer than 12 rays give one.
+/// to those places (polarity [`EITHER`]), `None` when fewer than 12 rays give one.
+/// And the blob's own outline: the circle fitted to where each ray leaves the run of
+/// differing places it starts in (for 1.5 px or more), `None` likewise.
 pub fn outermost(
     img: &Gray,
     o: &Outline,
     (reach, min_step, margin): (f64, f64, f64),
     differs: &impl Fn(f64, f64) -> bool,
-) -> Option<Outline> {
+) -> (Option<Outline>, Option<Outline>) {
     let c = o.circle;
     let step = 0.5;
     let (s0, s1) = (0.4 * c.r, reach * c.r);
     let n = ((s1 - s0) / step).ceil().max(0.0) as usize + 1;
     let mut points = Vec::new();
+    let mut blob = Vec::new();
     for i in 0..64 {
         let a = f64::from(i) * std::f64::consts::TAU / 64.0;
         let (ux, uy) = (a.cos(), a.sin());
@@ -341,6 +344,8 @@ pub fn outermost(
         // Per place on the ray: the step along it, the step across it, differing.
         let mut along = Vec::with_capacity(n);
         let mut last_differing = f64::NEG_INFINITY;
+        // Where the run of differing places from the lock's middle ends.
+        let (mut blob_end, mut quiet) = (None, 0);
         for j in 0..n {
             let s = s0 + j as f64 * step;
             if c.y + s * uy > o.lowest + 0.5 {
@@ -355,6 +360,12 @@ pub fn outermost(
             along.push(if d >= 0.5 * d.hypot(t) { d } else { 0.0 });
             if differs(c.x + s * ux, c.y + s * uy) {
                 last_differing = s;
+                quiet = 0;
+            } else if last_differing > s0 && blob_end.is_none() {
+                quiet += 1;
+                if quiet == 3 {
+                    blob_end = Some(last_differing + 0.5 * step);
+                }
             }
         }
         // A ray cut short (by the rail, or the frame's border) while the blob goes
@@ -384,11 +395,17 @@ pub fn outermost(
         if let Some(s) = found {
             points.push([c.x + s * ux, c.y + s * uy]);
         }
+        if let Some(s) = blob_end {
+            blob.push([c.x + s * ux, c.y + s * uy]);
+        }
     }
-    if points.len() < 12 {
-        return None;
-    }
-    fit_points(points, c, 0.5 * c.r, EITHER)
+    let circle = |p: Vec<[f64; 2]>| {
+        if p.len() < 12 {
+            return None;
+        }
+        fit_points(p, c, 0.5 * c.r, EITHER)
+    };
+    (circle(points), circle(blob))
 }
 
 /// How far the outline's edge moves when it is defined otherwise, px, per ray of

@@ -114,7 +114,11 @@ pub struct Params {
     /// (small looks, seed 38: 8.5 px for 12.3) or reaching into the rail (seed 1:
     /// 20.0 px for 14.3) is 25–40 % off. When they disagree, the outline of either
     /// sign about the outer circle is taken if it is a clear one that agrees with its
-    /// own outermost edge, else the lock is poor.
+    /// own outermost edge, else the lock is poor. Where the background is learned at
+    /// full resolution, a lock is poor too when the blob that differs from the
+    /// background about it is a clear circle larger than it by more than this share
+    /// and `outer_margin` (its limb steps too little for an edge: small looks' seed
+    /// 11, a steel ball on wood grain, 12.2 px for 16.2).
     pub outer_agree: f64,
     /// The search window about the predicted centre, in radii. Default 0.5: a ball
     /// moves under a radius a frame at any rate used for this experiment (1 m/s at
