@@ -43,11 +43,18 @@ pub const EITHER: f64 = 2.0;
 /// `polarity` the ball's (+1 brighter, −1 darker than around it), 0 to take the
 /// sign most edge points have, or [`EITHER`] to take both. `None` when too few edge
 /// points are found.
-#[allow(clippy::indexing_slicing)] // the median of a non-empty list (at least 12 points, checked above)
 pub fn fit(img: &Gray, guess: Circle, band: f64, polarity: f64) -> Option<Outline> {
     let (points, sign) = edge_points(img, guess, band, polarity)?;
+    fit_points(points, guess, band, sign)
+}
+
+/// The circle through `points` (least squares of the geometric distance from
+/// `start`, outliers beyond `band` and then beyond 3 robust scatters left out in
+/// rounds), described with the polarity `sign`; `None` with fewer than 12 points.
+#[allow(clippy::indexing_slicing)] // the median of a non-empty list (at least 12 points, checked above)
+fn fit_points(points: Vec<[f64; 2]>, start: Circle, band: f64, sign: f64) -> Option<Outline> {
     let mut keep: Vec<[f64; 2]> = points;
-    let mut c = guess;
+    let mut c = start;
     let mut cut = band.max(1.0);
     for round in 0..6 {
         if keep.len() < 12 {
@@ -304,6 +311,101 @@ fn strong_points(found: Vec<([f64; 2], f32, f64)>) -> Option<Vec<[f64; 2]>> {
             .map(|f| f.0)
             .collect(),
     )
+}
+
+/// The outermost circular edge of either sign about the outline `o` (a ball's
+/// outline is the outermost closed circular edge of the blob that moves; a circle
+/// inside it, the lit part of a ball, its shading's terminator or its mark, is
+/// smaller, and one reaching past it into the wall or the rail is larger): along 64
+/// rays from `o`'s centre, above its lowest edge point (the rail hides what is
+/// below), the outermost place between 0.4 and `reach` radii where the luma steps by
+/// at least `min_step` levels across 2 px, mostly along the ray (not a straight edge
+/// crossing it), and no farther than `margin` px beyond the last place on the ray
+/// where `differs` (the frame differs from its background there); the circle fitted
+/// to those places (polarity [`EITHER`]), `None` when fewer than 12 rays give one.
+/// And the blob's own outline: the circle fitted to where each ray leaves the run of
+/// differing places it starts in (for 1.5 px or more), `None` likewise.
+pub fn outermost(
+    img: &Gray,
+    o: &Outline,
+    (reach, min_step, margin): (f64, f64, f64),
+    differs: &impl Fn(f64, f64) -> bool,
+) -> (Option<Outline>, Option<Outline>) {
+    let c = o.circle;
+    let step = 0.5;
+    let (s0, s1) = (0.4 * c.r, reach * c.r);
+    let n = ((s1 - s0) / step).ceil().max(0.0) as usize + 1;
+    let mut points = Vec::new();
+    let mut blob = Vec::new();
+    for i in 0..64 {
+        let a = f64::from(i) * std::f64::consts::TAU / 64.0;
+        let (ux, uy) = (a.cos(), a.sin());
+        let at = |s: f64, t: f64| bilinear(img, c.x + s * ux - t * uy, c.y + s * uy + t * ux);
+        // Per place on the ray: the step along it, the step across it, differing.
+        let mut along = Vec::with_capacity(n);
+        let mut last_differing = f64::NEG_INFINITY;
+        // Where the run of differing places from the lock's middle ends.
+        let (mut blob_end, mut quiet) = (None, 0);
+        for j in 0..n {
+            let s = s0 + j as f64 * step;
+            if c.y + s * uy > o.lowest + 0.5 {
+                break;
+            }
+            let (Some(inner), Some(outer), Some(left), Some(right)) =
+                (at(s - 1.0, 0.0), at(s + 1.0, 0.0), at(s, -1.0), at(s, 1.0))
+            else {
+                break;
+            };
+            let (d, t) = ((outer - inner).abs(), (right - left).abs());
+            along.push(if d >= 0.5 * d.hypot(t) { d } else { 0.0 });
+            if differs(c.x + s * ux, c.y + s * uy) {
+                last_differing = s;
+                quiet = 0;
+            } else if last_differing > s0 && blob_end.is_none() {
+                quiet += 1;
+                if quiet == 3 {
+                    blob_end = Some(last_differing + 0.5 * step);
+                }
+            }
+        }
+        // A ray cut short (by the rail, or the frame's border) while the blob goes
+        // on: its outermost edge is hidden.
+        let end = s0 + along.len().saturating_sub(1) as f64 * step;
+        if along.len() < n && last_differing + margin >= end {
+            continue;
+        }
+        let found = (1..along.len().saturating_sub(1)).rev().find_map(|j| {
+            let s = s0 + j as f64 * step;
+            let (a, m, b) = (
+                along.get(j - 1).copied()?,
+                along.get(j).copied()?,
+                along.get(j + 1).copied()?,
+            );
+            let peak = m >= min_step && m >= a && m > b && s <= last_differing + margin;
+            peak.then(|| {
+                let den = a - 2.0 * m + b;
+                let eta = if den < 0.0 {
+                    (0.5 * (a - b) / den).clamp(-0.5, 0.5)
+                } else {
+                    0.0
+                };
+                s + eta * step
+            })
+        });
+        if let Some(s) = found {
+            points.push([c.x + s * ux, c.y + s * uy]);
+        }
+        if let Some(s) = blob_end {
+            blob.push([c.x + s * ux, c.y + s * uy]);
+        }
+    }
+    let circle = |p: Vec<[f64; 2]>| {
+        if p.len() < 12 {
+            return None;
+        }
+        fit_points(p, c, 0.5 * c.r, EITHER)
+    };
+    (circle(points), circle(blob))
 }
 
 /// How far the outline's edge moves when it is defined otherwise, px, per ray of

@@ -92,6 +92,34 @@ pub struct Params {
     /// ball (the mark, a highlight). Default 0.6: the blob of a ball is the ball
     /// plus at most a shadow's fringe.
     pub smallest_in_blob: f64,
+    /// The first lock (before the balls' radius is known) is checked against the
+    /// outermost circular edge of either sign about it (`circle::outermost`): a
+    /// ball's outline is the outermost closed circular edge of the blob that moves.
+    /// That edge is looked for out to this many of the lock's radii. Default 1.7:
+    /// about 1 / `smallest_in_blob`, the largest ball a lock inside it can be.
+    pub outer_reach: f64,
+    /// … where the luma steps by at least this many levels across 2 px. Default 10
+    /// (as `differ_levels`): 6 found a low-contrast limb on one more small look but
+    /// took the wall's and the rail's edges on another (small looks' seed 1, a scale
+    /// 15 ± off).
+    pub outer_step: f64,
+    /// … no farther than this many px (plus one coarse pixel) beyond the last place
+    /// on each ray where the frame differs from its background. Default 2: a limb
+    /// shaded to the wall's brightness may not differ, its edge a pixel or two out;
+    /// the wall's own edges farther out (checkers, clutter) are not the ball's.
+    pub outer_margin: f64,
+    /// … and the lock and that edge's circle agree when their radii and their
+    /// centres are within this share of the lock's radius. Default 0.1: the same
+    /// outline found both ways is within a few %; a lock on the lit top of a ball
+    /// (small looks, seed 38: 8.5 px for 12.3) or reaching into the rail (seed 1:
+    /// 20.0 px for 14.3) is 25–40 % off. When they disagree, the outline of either
+    /// sign about the outer circle is taken if it is a clear one that agrees with its
+    /// own outermost edge, else the lock is poor. Where the background is learned at
+    /// full resolution, a lock is poor too when the blob that differs from the
+    /// background about it is a clear circle larger than it by more than this share
+    /// and `outer_margin` (its limb steps too little for an edge: small looks' seed
+    /// 11, a steel ball on wood grain, 12.2 px for 16.2).
+    pub outer_agree: f64,
     /// The search window about the predicted centre, in radii. Default 0.5: a ball
     /// moves under a radius a frame at any rate used for this experiment (1 m/s at
     /// 30 frames/s is 33 mm, over a 12 mm ball's radius: there the window grows with
@@ -320,6 +348,10 @@ impl Default for Params {
             max_rms: 1.0,
             radius_tolerance: 0.15,
             smallest_in_blob: 0.6,
+            outer_reach: 2.2,
+            outer_step: 10.0,
+            outer_margin: 2.0,
+            outer_agree: 0.1,
             window_radii: 0.5,
             touch_gap: 2.0,
             max_across: 0.15,

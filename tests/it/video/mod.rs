@@ -8,6 +8,7 @@ mod mark_highlight;
 mod mark_place;
 mod marks_stay;
 mod marks_turn;
+mod outer_lock;
 pub(crate) mod overlay;
 pub(crate) mod seed;
 mod sharp_arc;
