@@ -246,11 +246,8 @@ fn turns_with_the_ball(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> bo
         .filter_map(|f| {
             let fix = f[slot].as_ref().ok()?;
             let o = offset(fix)?;
-            let c = fix.outline.circle;
-            // The rail's top edge, below the centre: the ball rolls on it, at kR
-            // below the centre, turning by Δx / (kR).
-            let k = ((fix.outline.lowest - c.y) / c.r.max(1.0)).clamp(0.2, 1.0);
-            Some((c.x, c.r * k, o.1.atan2(o.0)))
+            // The ball rolls on the rails' edges, turning by Δx / (kR).
+            Some((fix.outline.circle.x, rolling_radius(fix), o.1.atan2(o.0)))
         })
         .collect();
     // Per step between marked frames: the mark's turn and the ball's roll, rad.
@@ -260,7 +257,7 @@ fn turns_with_the_ball(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> bo
             let (a, b) = (w[0], w[1]);
             let turn = (b.2 - a.2 + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU)
                 - std::f64::consts::PI;
-            (turn.abs(), (b.0 - a.0).abs() / a.1.max(1.0))
+            (turn.abs(), (b.0 - a.0).abs() / a.1)
         })
         // A turn is measured modulo a whole turn, and the allowed turn grows with
         // the roll: where the ball rolls by a quarter turn or more between two
@@ -282,6 +279,14 @@ fn turns_with_the_ball(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> bo
     let rolled: f64 = turns.iter().map(|t| t.1).sum();
     let stays = rolled >= p.min_roll && turned < p.least_turn_share * rolled;
     (jumps as f64) <= p.jumps_share * steps as f64 && !stays
+}
+
+/// kR, px (at least 1): how far below its centre the ball rolls on the rails'
+/// edges, the rail's top edge being the outline's lowest point (k clamped to
+/// 0.2 … 1); rolling by Δx turns it by Δx / (kR).
+fn rolling_radius(fix: &super::tracker::Fix) -> f64 {
+    let c = fix.outline.circle;
+    (c.r * ((fix.outline.lowest - c.y) / c.r.max(1.0)).clamp(0.2, 1.0)).max(1.0)
 }
 
 /// A mark's place in its ball's disc, in radii from the centre.
@@ -365,8 +370,7 @@ fn fixed_spot(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Option<(f64
         .filter_map(|f| {
             let fix = f[slot].as_ref().ok()?;
             let c = fix.outline.circle;
-            let kr = c.r * ((fix.outline.lowest - c.y) / c.r.max(1.0)).clamp(0.2, 1.0);
-            Some((c.x, c.r, kr.max(1.0), offset(fix)?))
+            Some((c.x, c.r, rolling_radius(fix), offset(fix)?))
         })
         .collect();
     if marks.len() < 5 {
@@ -425,10 +429,8 @@ fn still_marks(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Vec<usize>
             // forward at least as far as its ball; turned by more, its way back
             // round the disc can cancel the ball's move (a fast ball at 30
             // frames/s, two frames apart), and the step tells nothing. Under half
-            // a turn at 1.5 times the roll measured, as `stayed_while_rolling`.
-            let kr = fix.outline.circle.r
-                * ((fix.outline.lowest - c.1) / fix.outline.circle.r.max(1.0)).clamp(0.2, 1.0);
-            let judged = 1.5 * moved / kr.max(1.0) < std::f64::consts::PI;
+            // a turn at 1.5 times the roll measured (room for kR's error).
+            let judged = 1.5 * moved / rolling_radius(fix) < std::f64::consts::PI;
             if judged && moved >= p.moved_px && mark_moved < p.still_share * moved {
                 out.extend([k0, k]);
             }
@@ -471,11 +473,10 @@ fn seen(frames: &[FrameFixes], slot: usize) -> Vec<BallFit> {
         .filter_map(|(k, f)| {
             let fix = f[slot].as_ref().ok()?;
             let c = fix.outline.circle;
-            let kr = c.r * ((fix.outline.lowest - c.y) / c.r.max(1.0)).clamp(0.2, 1.0);
             Some(BallFit {
                 k,
                 centre: (c.x, c.y),
-                kr: kr.max(1.0),
+                kr: rolling_radius(fix),
                 mark: offset(fix),
             })
         })
