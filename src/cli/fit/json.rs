@@ -123,13 +123,10 @@ pub(super) struct NotMeasured {
 }
 
 /// The line fit's values that are null for `fits`: a_t and μ_k,t without a rim mark's
-/// v_t in the window, `why_no_v_t` or `no_v_t` (a mark whose turn a frame cannot be
-/// followed) saying why; the whole `line_fit` where it could not be made, with why.
-pub(super) fn not_measured(
-    fits: &Fits,
-    no_v_t: Option<&str>,
-    why_no_v_t: crate::study::measured::NoLineVt,
-) -> Vec<NotMeasured> {
+/// v_t in the window, the line fit's `why_no_v_t` or `no_v_t` (a mark whose turn a
+/// frame cannot be followed) saying why; the whole `line_fit` where it could not be
+/// made, with why.
+pub(super) fn not_measured(fits: &Fits, no_v_t: Option<&str>) -> Vec<NotMeasured> {
     let Some(l) = &fits.line_fit else {
         return vec![NotMeasured {
             quantity: "line_fit",
@@ -139,7 +136,7 @@ pub(super) fn not_measured(
                 .map_or_else(|| "not possible".into(), |e| format!("not possible: {e}")),
         }];
     };
-    let reason = no_v_t.unwrap_or(why_no_v_t.reason());
+    let reason = no_v_t.unwrap_or(l.why_no_v_t().reason());
     [
         ("line_fit.a_t", l.a_t),
         ("line_fit.a_t_se", l.a_t_se),

@@ -61,7 +61,7 @@ pub fn run(
                 .other_groove
                 .as_ref()
                 .map(|o| json::DataGroove::of(&o.data)),
-            not_measured: json::not_measured(&fits, aliased.as_deref(), m.why_no_line_v_t()),
+            not_measured: json::not_measured(&fits, aliased.as_deref()),
         }),
         FitFormat::Table => {
             // The scene and where it came from, then the short summary, the detail after.

@@ -8,7 +8,7 @@ use super::uncertainty::noise_vector;
 use crate::physics::scene::Scene;
 pub use crate::study::measured::line::{Line, line};
 pub use crate::study::measured::noise::sliding_window;
-use crate::study::measured::series::Measured;
+use crate::study::measured::series::{Measured, NoLineVt};
 
 /// [`line`] through velocities derived from a track, whose neighbours share frames:
 /// point i is `e_i·x` over the tracked coordinates `x` (`shared[i]`,
@@ -170,6 +170,10 @@ pub struct LineFit {
     /// ([`width_from_lines`]) disagrees with the scene's: a wrong `--width`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub width_from_lines: Option<WidthFromLines>,
+    /// Why there is no v_t line, where the window holds fewer than 3 frames with a
+    /// v_t (decided once here, said by `fit` and the Fit view).
+    #[serde(skip)]
+    pub no_v_t: Option<NoLineVt>,
 }
 
 /// The groove width b that the line fits' D = |a_t|/|a_cm| = 5/2 (1 − b²/4R²) gives
@@ -215,6 +219,13 @@ pub fn width_from_lines(
 const WIDTH_APART: f64 = 0.05;
 
 impl LineFit {
+    /// Why a_t and μ_k,t are not measured, where they are not: [`LineFit::no_v_t`],
+    /// else (a v_t line that gave no number from 3 frames or more) too few frames
+    /// of the window.
+    pub fn why_no_v_t(&self) -> NoLineVt {
+        self.no_v_t.unwrap_or(NoLineVt::FewInWindow)
+    }
+
     /// The ends of the window asked for (`--from`, `--to`) that lay outside the data
     /// and were cut to them: (which, asked, the data's end there), s.
     pub fn cut_to_data(&self) -> Vec<(&'static str, f64, f64)> {
@@ -342,6 +353,7 @@ pub fn line_fit(
             (vt.slope.abs(), vt.slope_se),
             scene,
         ),
+        no_v_t: (with_t.len() < 3).then(|| m.why_no_line_v_t()),
     })
 }
 

@@ -223,10 +223,7 @@ fn line_fit_lines(l: &fit::LineFit, app: &App, width: usize, theme: &Theme) -> R
     } else {
         // As `fit` says it: a rim mark tracked but seen in too few frames of the
         // window is not "no rim mark".
-        let why = app
-            .lab
-            .measured()
-            .map_or("no rim mark", |m| m.why_no_line_v_t().short());
+        let why = l.why_no_v_t().short();
         accelerations(
             "|a_t|  ",
             format!("and {}_t not measured ({why})", g.mu),
