@@ -84,6 +84,10 @@ pub struct Tracker {
     /// circle's outline taken instead: the fits the radius is learned from are
     /// checked likewise (`Tracker::outermost_agrees`).
     outer_taken: bool,
+    /// The frame being pushed, reduced to the background's coarse pixels (by `look`,
+    /// where a background is learned): what the outermost-edge check compares with
+    /// the background, as the looks do.
+    small: Option<Small>,
 }
 
 /// An outline and how it was found.
@@ -105,11 +109,11 @@ enum Outer {
     Poor,
 }
 
-/// True when `frame` differs from the background `bg` at `(x, y)` (px), compared
-/// as the background was learned (the coarse pixel there: its block's mean luma, the
-/// colour at its middle, as `Small::of` reduces a frame): in brightness, or in
-/// colour weighed by `colour_weight`, by more than `differ_levels`.
-fn differs_at(frame: &Frame, bg: &Small, x: f64, y: f64, p: &Params) -> bool {
+/// True when the frame reduced to `small` differs from the background `bg` at
+/// `(x, y)` (px, the coarse pixel there): in brightness, or in colour weighed by
+/// `colour_weight`, by more than `differ_levels` (the looks' difference before their
+/// shadow test, [`super::background::differences`]).
+fn differs_at(small: &Small, bg: &Small, x: f64, y: f64, p: &Params) -> bool {
     if !(x >= 0.0 && y >= 0.0) {
         return false;
     }
@@ -122,20 +126,11 @@ fn differs_at(frame: &Frame, bg: &Small, x: f64, y: f64, p: &Params) -> bool {
     let (Some(&y0), Some(&u0), Some(&v0)) = (bg.y.get(i), bg.u.get(i), bg.v.get(i)) else {
         return false;
     };
-    let mut sum = 0.0f32;
-    for j in by * f..(by + 1) * f {
-        for k in bx * f..(bx + 1) * f {
-            sum += frame.luma.get(k, j);
-        }
-    }
-    let luma = sum / (f * f) as f32;
-    let (cx, cy) = ((bx * f + f / 2) / 2, (by * f + f / 2) / 2);
-    let ci = cy.min(frame.chroma_height.saturating_sub(1)) * frame.chroma_width
-        + cx.min(frame.chroma_width.saturating_sub(1));
-    let u = frame.u.get(ci).map_or(128.0, |&c| f32::from(c));
-    let v = frame.v.get(ci).map_or(128.0, |&c| f32::from(c));
-    let dl = (luma - y0).abs();
-    let dc = (u - u0).abs().max((v - v0).abs());
+    let (Some(&y1), Some(&u1), Some(&v1)) = (small.y.get(i), small.u.get(i), small.v.get(i)) else {
+        return false;
+    };
+    let dl = (y1 - y0).abs();
+    let dc = (u1 - u0).abs().max((v1 - v0).abs());
     f64::from(dl.max(p.colour_weight as f32 * dc)) > p.differ_levels
 }
 
@@ -239,10 +234,10 @@ impl Tracker {
             });
         }
         let mut crowded = coarse.balls.len() > 2;
-        if let (Some(bg), Some(small)) = (&self.background, small) {
-            let (d, _) = differences(&small, &bg.image, &p);
+        if let (Some(bg), Some(small)) = (&self.background, &small) {
+            let (d, _) = differences(small, &bg.image, &p);
             let thr = threshold(&d, &p);
-            let more = detect::against_differences(&small, &d, thr, &p);
+            let more = detect::against_differences(small, &d, thr, &p);
             // What the luma look sees but does not differ from the background is the
             // bench (a disc of clutter, a stripe's end, a checker's square), unless
             // it lies on the line of a ball that moves, at its size: a ball at rest
@@ -250,7 +245,7 @@ impl Tracker {
             let moving: Vec<Circle> = coarse
                 .balls
                 .iter()
-                .filter(|b| differing_share(&d, thr, &small, b) >= p.moved_share)
+                .filter(|b| differing_share(&d, thr, small, b) >= p.moved_share)
                 .chain(&more.balls)
                 .map(Blob::guess)
                 .chain(self.last.iter().filter_map(|l| l.last().map(|(_, c)| *c)))
@@ -263,10 +258,10 @@ impl Tracker {
             };
             coarse
                 .balls
-                .retain(|b| differing_share(&d, thr, &small, b) >= p.moved_share || on_line(b));
+                .retain(|b| differing_share(&d, thr, small, b) >= p.moved_share || on_line(b));
             coarse
                 .pairs
-                .retain(|b| differing_share(&d, thr, &small, b) >= p.moved_share);
+                .retain(|b| differing_share(&d, thr, small, b) >= p.moved_share);
             crowded = coarse.balls.len() > 2;
             crowded |= more.balls.len() > 2;
             coarse.balls.extend(more.balls);
@@ -275,6 +270,7 @@ impl Tracker {
         if crowded {
             self.counts.crowded += 1;
         }
+        self.small = small;
         coarse
     }
 
@@ -683,43 +679,39 @@ impl Tracker {
     /// Without a background, or without a clear outermost edge, `o` is not judged.
     fn outermost_agrees(&self, frame: &Frame, o: &Outline) -> Outer {
         let p = self.params;
-        let Some(bg) = self.background.as_ref().map(|b| &b.image) else {
+        let (Some(bg), Some(small)) = (self.background.as_ref().map(|b| &b.image), &self.small)
+        else {
             return Outer::Agrees;
         };
-        let differs = |x: f64, y: f64| differs_at(frame, bg, x, y, &p);
+        let differs = |x: f64, y: f64| differs_at(small, bg, x, y, &p);
         let margin = p.outer_margin + bg.factor as f64;
-        let both = |o: &Outline| {
-            circle::outermost(
+        let is_clear = |e: &Outline| e.coverage >= p.min_coverage && e.rms <= p.max_rms;
+        // About an outline, one look along the rays: its clear outermost edge, and
+        // whether it is a "ball" much smaller than the clear round blob around it
+        // (part of a ball whose limb steps too little for an edge), told where the
+        // background is learned at full resolution (frames under 640 px wide): on
+        // coarse pixels of 2–6 px the blob's outline cannot tell 10 %, and on the
+        // full-size looks it left out the first locks of seed 34 (its approach lost).
+        let examine = |o: &Outline| {
+            let (edge, blob) = circle::outermost(
                 &frame.luma,
                 o,
                 (p.outer_reach, p.outer_step, margin),
                 &differs,
-            )
-        };
-        let find = |o: &Outline| {
-            both(o)
-                .0
-                .filter(|e| e.coverage >= p.min_coverage && e.rms <= p.max_rms)
-        };
-        // A "ball" much smaller than the clear round blob around it is not taken
-        // (part of a ball whose limb steps too little for an edge), where the
-        // background is learned at full resolution (frames under 640 px wide): on
-        // coarse pixels of 2–6 px the blob's outline cannot tell 10 %, and on the
-        // full-size looks it left out the first locks of seed 34 (its approach lost).
-        let inside_blob = |o: &Outline| {
-            bg.factor == 1
-                && both(o).1.is_some_and(|b| {
-                    b.coverage >= p.min_coverage
-                        && b.rms <= p.max_rms
-                        && b.circle.r > (1.0 + p.outer_agree) * o.circle.r + margin
-                })
+            );
+            let inside_blob = bg.factor == 1
+                && blob.is_some_and(|b| {
+                    is_clear(&b) && b.circle.r > (1.0 + p.outer_agree) * o.circle.r + margin
+                });
+            (edge.filter(is_clear), inside_blob)
         };
         let agree = |a: &Circle, b: &Circle| {
             (a.r - b.r).abs() <= p.outer_agree * a.r
                 && (a.x - b.x).hypot(a.y - b.y) <= p.outer_agree * a.r
         };
-        let Some(edge) = find(o).filter(|e| !agree(&o.circle, &e.circle)) else {
-            return if inside_blob(o) {
+        let (edge, inside_blob) = examine(o);
+        let Some(edge) = edge.filter(|e| !agree(&o.circle, &e.circle)) else {
+            return if inside_blob {
                 Outer::Poor
             } else {
                 Outer::Agrees
@@ -730,14 +722,15 @@ impl Tracker {
             return Outer::Poor;
         };
         let q = found.outline;
-        let clear = q.coverage >= p.min_coverage
-            && q.rms <= p.max_rms
+        let clear = is_clear(&q)
             && q.circle.r >= p.min_radius
             && agree(&edge.circle, &q.circle)
             && stands_out(frame, &q.circle, p.colour_weight) >= p.differ_levels
             && p.roi.is_none_or(|roi| roi.contains(q.circle.x, q.circle.y))
-            && find(&q).is_none_or(|e| agree(&q.circle, &e.circle))
-            && !inside_blob(&q);
+            && {
+                let (edge, inside_blob) = examine(&q);
+                edge.is_none_or(|e| agree(&q.circle, &e.circle)) && !inside_blob
+            };
         if clear {
             Outer::Instead(q)
         } else {
