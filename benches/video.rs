@@ -9,7 +9,7 @@ use std::path::Path;
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use film::{Film, Look, Truth};
-use groovelab::input::video::{tracked, write};
+use groovelab::input::video::tracked;
 use groovelab::physics::scene::Scene;
 use groovelab::study::Quiet;
 use groovelab::vision;
@@ -105,33 +105,10 @@ fn bench(c: &mut Criterion) {
             "720p at {fps} frames/s, 60 frames: centre RMS {rc:.3} px ({nc} fits), mark RMS {rm:.3} px ({nm} marks)"
         );
     }
-    // The speed clip: 3 s at 240 frames/s, 1080p, slower balls so both stay in view.
-    let slow = Scene {
-        left: groovelab::physics::scene::Ball { v0: 0.4, ..s.left },
-        right: groovelab::physics::scene::Ball { v0: 0.4, ..s.right },
-        ..s
-    };
-    let look = Look {
-        width: 1920,
-        height: 1080,
-        px_per_m: 1400.0,
-        origin: (960.0, 500.0),
-        fps: 240.0,
-        from: -1.0,
-        ..Look::default()
-    };
-    let film = Film::new(&slow, look, 2.0);
     let dir = std::env::temp_dir().join(format!("groovelab-bench-video-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
     let clip = dir.join("clip-1080p-240.mp4");
-    let enc = write::Encoding {
-        width: 1920,
-        height: 1080,
-        fps: 240.0,
-        crf: 18,
-        metadata: vec![],
-    };
-    write::video(&clip, &enc, (0..720).map(|k| film.rgb(k))).unwrap();
+    film::h264::speed_clip(&clip, &s).unwrap();
     let mut g = c.benchmark_group("video");
     g.sample_size(10);
     // Side by side in one run: the ratio of the two medians is the target (≤ 2).
@@ -141,7 +118,7 @@ fn bench(c: &mut Criterion) {
     );
     g.bench_function(
         "track a 3 s 1080p clip at 240 frames/s (720 frames), decoding included",
-        |b| b.iter(|| assert_eq!(track(&clip), 720)),
+        |b| b.iter(|| assert_eq!(track(&clip), film::h264::SPEED_CLIP_FRAMES)),
     );
     g.finish();
     let _ = std::fs::remove_dir_all(&dir);

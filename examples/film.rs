@@ -8,6 +8,9 @@
 //! (full size; `7 small` for the small looks of `cargo test`) as `clip.mp4`, and says
 //! its rate, the truth's scale and the look in words, to watch the tracker on it:
 //! `groovelab track /tmp/look7/clip.mp4 --fps RATE --radius 2.75cm --overlay /tmp/look7/o.png`.
+//! `cargo run --release --example film -- /tmp/speed speed` writes the speed clip of
+//! `benches/video.rs` (3 s of 1080p at 240 frames/s) as `clip.mp4`, to time `track`
+//! against ffmpeg's decoding outside criterion (BENCHMARKS.md says how).
 
 use film::looks::{self, Size};
 use film::{Film, Look, h264};
@@ -20,15 +23,26 @@ mod film;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut args = std::env::args().skip(1);
-    let dir = args
-        .next()
-        .ok_or("usage: film FOLDER [SEED [small]] (written: frame0001.png … or clip.mp4)")?;
+    let dir = args.next().ok_or(
+        "usage: film FOLDER [SEED [small] | speed] (written: frame0001.png … or clip.mp4)",
+    )?;
     let dir = std::path::PathBuf::from(dir);
     std::fs::create_dir_all(&dir)?;
     let preset = groovelab::input::preset::load("paper-b4.9")?;
     let lab = groovelab::lab::Lab::of_preset(preset)?;
     let scene: &Scene = &lab.scene;
-    if let Some(seed) = args.next() {
+    let which = args.next();
+    if which.as_deref() == Some("speed") {
+        let path = dir.join("clip.mp4");
+        h264::speed_clip(&path, scene)?;
+        println!(
+            "{} frames in {} (1920×1080, 240 frames/s)",
+            h264::SPEED_CLIP_FRAMES,
+            path.display()
+        );
+        return Ok(());
+    }
+    if let Some(seed) = which {
         let seed: u64 = seed
             .parse()
             .map_err(|_| format!("error: SEED {seed:?}: a whole number expected"))?;

@@ -25,6 +25,32 @@ pub fn write(path: &Path, film: &Film, frames: usize) -> Result<(), String> {
     write::video(path, &enc, (0..frames).map(|k| film.rgb(k))).map_err(|e| e.to_string())
 }
 
+/// The speed clip of issue 34's target (`benches/video.rs`, `examples/film.rs`): 3 s
+/// of the scene `s` at 240 frames/s in 1080p (720 frames), the balls slowed to
+/// 0.4 m/s so both stay in view, H.264 at crf 18, written to `path`.
+pub fn speed_clip(path: &Path, s: &groovelab::physics::scene::Scene) -> Result<(), String> {
+    use groovelab::physics::scene::{Ball, Scene};
+    let slow = Scene {
+        left: Ball { v0: 0.4, ..s.left },
+        right: Ball { v0: 0.4, ..s.right },
+        ..*s
+    };
+    let look = super::Look {
+        width: 1920,
+        height: 1080,
+        px_per_m: 1400.0,
+        origin: (960.0, 500.0),
+        fps: 240.0,
+        from: -1.0,
+        ..super::Look::default()
+    };
+    let film = Film::new(&slow, look, 2.0);
+    write(path, &film, SPEED_CLIP_FRAMES)
+}
+
+/// Frames in [`speed_clip`].
+pub const SPEED_CLIP_FRAMES: usize = 720;
+
 /// The frames of the clip `path` (`width × height`), decoded to RGB by ffmpeg.
 pub fn read(path: &Path, width: usize, height: usize) -> Result<Vec<RgbImage>, String> {
     let mut child = Command::new("ffmpeg")
