@@ -75,6 +75,15 @@ pub enum CliError {
     Data(#[from] crate::input::data::DataError),
     #[error(transparent)]
     Video(#[from] crate::input::video::VideoError),
+    /// The tracking was refused, and what the tracker found is drawn in `overlay`.
+    #[error(
+        "{error}; what the tracker found is drawn over a pixel grid in {}",
+        overlay.display()
+    )]
+    RefusedDrawn {
+        error: Box<crate::input::video::VideoError>,
+        overlay: PathBuf,
+    },
     #[error(transparent)]
     Output(crate::output::OutputError),
     #[error(transparent)]

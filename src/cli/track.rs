@@ -46,12 +46,15 @@ pub fn run(scene: &SceneArgs, data: &DataArgs, args: &TrackArgs) -> Result<Strin
     }
     let options = options(scene, data)?;
     let bar = Bar::new("frames", true);
-    let done = tracked::track(&args.video, &options, &bar).map_err(CliError::from);
+    let done = tracked::track_or_found(&args.video, &options, &bar);
     bar.finish();
-    let done: Tracked = done?.ok_or(CliError::Interrupted)?;
+    let done: Tracked = match done {
+        Ok(done) => done.ok_or(CliError::Interrupted)?,
+        Err(refused) => return Err(refused_drawn(&args.video, refused, args.overlay.as_deref())),
+    };
     let drawn = match &args.overlay {
         Some(path) => {
-            overlay::write_overlay(&args.video, &done, path)?;
+            overlay::write_overlay(&args.video, &overlay::Drawing::tracked(&done), path)?;
             format!("wrote the overlay {}\n", path.display())
         }
         None => String::new(),
@@ -94,6 +97,27 @@ pub fn run(scene: &SceneArgs, data: &DataArgs, args: &TrackArgs) -> Result<Strin
             out += &format!("wrote {}\n", path.display());
             Ok(out)
         }
+    }
+}
+
+/// A refused tracking's error; with `--overlay FILE`, what the tracker found before
+/// it refused is drawn there over a pixel grid first and the error says so (an
+/// overlay that cannot be written leaves the error as it was).
+fn refused_drawn(
+    video: &std::path::Path,
+    refused: tracked::Refused,
+    overlay_file: Option<&std::path::Path>,
+) -> CliError {
+    let (Some(file), false) = (overlay_file, refused.found.is_empty()) else {
+        return refused.error.into();
+    };
+    let drawing = overlay::Drawing::refused(refused.found);
+    match overlay::write_overlay(video, &drawing, file) {
+        Ok(()) => CliError::RefusedDrawn {
+            error: Box::new(refused.error),
+            overlay: file.to_path_buf(),
+        },
+        Err(_) => refused.error.into(),
     }
 }
 

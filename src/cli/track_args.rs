@@ -20,7 +20,9 @@ pub struct TrackArgs {
     pub output: Option<PathBuf>,
     /// Also write what was found drawn over the frames (each ball's outline, centre
     /// and mark), to check the tracking at a glance: a video (FILE ending in .mp4,
-    /// .mov or .mkv; needs ffmpeg) or a contact sheet of 12 frames (.png).
+    /// .mov or .mkv; needs ffmpeg) or a contact sheet of 12 frames (.png). When the
+    /// tracking is refused, what was found is still drawn, over a pixel grid to read
+    /// --roi and --ball-at from.
     #[arg(long, value_name = "FILE")]
     pub overlay: Option<PathBuf>,
 }

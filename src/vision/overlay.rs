@@ -104,6 +104,80 @@ fn segment(img: &mut RgbImage, a: (f64, f64), b: (f64, f64), width: f64, colour:
     }
 }
 
+/// The grid's spacing for a frame `width` px wide: a round number of pixels giving
+/// about ten lines across.
+pub fn grid_step(width: u32) -> u32 {
+    const STEPS: [u32; 8] = [10, 20, 50, 100, 200, 250, 500, 1000];
+    let want = width.div_ceil(10);
+    STEPS.iter().copied().find(|&s| s >= want).unwrap_or(1000)
+}
+
+/// Draws a pixel grid over `img` with each line's pixel coordinate written beside it
+/// (x along the top, y down the left), so a student reads `--roi X,Y,W,H` and
+/// `--ball-at X,Y` off the picture. `scale`: pixels per font pixel and line width,
+/// the factor the picture will be shrunk by (a contact sheet's tile), so the labels
+/// stay 8 px tall there.
+pub fn pixel_grid(img: &mut RgbImage, scale: u32) {
+    let k = scale.max(1);
+    let step = grid_step(img.width());
+    let (w, h) = (img.width(), img.height());
+    // Half-transparent lines `k` px wide: pixel column x (row y) and the next k − 1.
+    let white = [255, 255, 255];
+    for x in (step..w).step_by(step as usize) {
+        for (c, y) in (x..(x + k).min(w)).flat_map(|c| (0..h).map(move |y| (c, y))) {
+            blend(img, i64::from(c), i64::from(y), white, 0.5);
+        }
+    }
+    for y in (step..h).step_by(step as usize) {
+        for (x, r) in (0..w).flat_map(|x| (y..(y + k).min(h)).map(move |r| (x, r))) {
+            blend(img, i64::from(x), i64::from(r), white, 0.5);
+        }
+    }
+    // A label that would not fit whole is left out: a cut "120" reads as 120.
+    for x in (step..w).step_by(step as usize) {
+        let text = x.to_string();
+        if x + (8 * text.len() as u32 + 3) * k <= w {
+            label(img, &text, (x + 2 * k, 2 * k), k);
+        }
+    }
+    for y in (step..h).step_by(step as usize) {
+        if y + 12 * k <= h {
+            label(img, &y.to_string(), (2 * k, y + 2 * k), k);
+        }
+    }
+}
+
+/// Writes `text` (digits) at `at` (its top left), each font pixel `k` × `k`, white on
+/// a black box.
+fn label(img: &mut RgbImage, text: &str, at: (u32, u32), k: u32) {
+    let glyph_w = 8 * k;
+    let box_w = glyph_w * text.len() as u32 + 2 * k;
+    let box_h = 10 * k;
+    for dy in 0..box_h {
+        for dx in 0..box_w {
+            let (x, y) = (i64::from(at.0 + dx), i64::from(at.1 + dy));
+            blend(img, x - i64::from(k), y - i64::from(k), HALO, 0.7);
+        }
+    }
+    for (i, ch) in text.bytes().enumerate() {
+        let Some(rows) = font8x8::legacy::BASIC_LEGACY.get(usize::from(ch)) else {
+            continue;
+        };
+        for (row, bits) in rows.iter().enumerate() {
+            for col in 0..8u32 {
+                if bits & (1 << col) == 0 {
+                    continue;
+                }
+                for (dx, dy) in (0..k).flat_map(|a| (0..k).map(move |b| (a, b))) {
+                    let x = at.0 + i as u32 * glyph_w + col * k + dx;
+                    let y = at.1 + row as u32 * k + dy;
+                    blend(img, i64::from(x), i64::from(y), [255, 255, 255], 1.0);
+                }
+            }
+        }
+    }
+}
+
 /// The frames to show on a contact sheet of `frames` frames: at most `count`, evenly
 /// spread from the first to the last.
 pub fn sheet_frames(frames: usize, count: usize) -> Vec<usize> {
@@ -154,6 +228,52 @@ pub fn sheet(tiles: &[RgbImage], columns: usize, tile_width: u32) -> RgbImage {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_grid_is_round_numbers_about_ten_across() {
+        for (w, step) in [
+            (1920, 200),
+            (1280, 200),
+            (854, 100),
+            (640, 100),
+            (480, 50),
+            (90, 10),
+        ] {
+            assert_eq!(grid_step(w), step, "{w} px wide");
+            assert!((4..=10).contains(&(w / step)), "{w} px: {} lines", w / step);
+        }
+    }
+
+    #[test]
+    fn the_grid_lines_lie_on_their_pixel_coordinates() {
+        let mut img = RgbImage::from_pixel(400, 300, Rgb([0, 0, 0]));
+        pixel_grid(&mut img, 1);
+        // Step 50: the column x = 150 is lit along its length, its neighbours not.
+        let lit = |x: u32, y: u32| img.get_pixel(x, y).0[0] > 100;
+        assert!((20..300).all(|y| lit(150, y)));
+        assert!(!lit(149, 220) && !lit(151, 220));
+        // The row y = 250 is lit, and its label "250" is written near the left edge.
+        assert!((30..400).all(|x| lit(x, 250)));
+        assert!(!lit(120, 249) && !lit(120, 251));
+        let ink = |x0: u32, y0: u32| {
+            (x0..x0 + 28)
+                .flat_map(|x| (y0..y0 + 10).map(move |y| (x, y)))
+                .filter(|&(x, y)| lit(x, y))
+                .count()
+        };
+        assert!(ink(2, 252) > 20, "the label of y = 250");
+        assert!(ink(352, 2) > 20, "the label of x = 350");
+        // No cut label at the right edge: on a picture 370 px wide the label of
+        // x = 350 would be cut, so it is left out.
+        let mut narrow = RgbImage::from_pixel(370, 300, Rgb([0, 0, 0]));
+        pixel_grid(&mut narrow, 1);
+        let lit_narrow = |x: u32, y: u32| narrow.get_pixel(x, y).0[0] > 100;
+        assert!((351..370).all(|x| (2..10).all(|y| !lit_narrow(x, y))));
+        assert!(
+            (301..329).any(|x| (2..10).any(|y| lit_narrow(x, y))),
+            "x = 300's label"
+        );
+    }
 
     #[test]
     fn the_outline_is_drawn_at_the_radius_and_not_inside() {

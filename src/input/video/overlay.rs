@@ -7,12 +7,11 @@ use std::path::Path;
 
 use image::RgbImage;
 
-use super::tracked::Tracked;
+use super::tracked::{Found, Tracked};
 use super::write::{self, Encoding};
 use super::{Limits, VideoError, VideoProblem};
 use crate::vision::Frame;
 use crate::vision::overlay::{self, Drawn};
-use crate::vision::thumbs::VideoView;
 
 /// What an overlay file is, by its name's ending.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -45,36 +44,77 @@ pub fn kind(file: &Path) -> Result<Kind, VideoError> {
     }
 }
 
-/// Each frame's balls found, in the video's pixels, from the tracked `view`.
-fn found(view: &VideoView, frame: usize) -> Vec<Option<Drawn>> {
-    view.balls
-        .iter()
-        .map(|b| {
-            let c = b.centre.get(frame).copied().flatten()?;
-            Some(Drawn {
-                centre: (f64::from(c.0), f64::from(c.1)),
-                radius: view.radius_px,
-                mark: b
-                    .mark
-                    .get(frame)
-                    .copied()
-                    .flatten()
-                    .map(|m| (f64::from(m.0), f64::from(m.1))),
-            })
-        })
-        .collect()
+/// What an overlay draws over the frames: each frame's balls found, in the video's
+/// pixels; a pixel grid when the tracking was refused (to read `--roi` and
+/// `--ball-at` off the picture); the rate a video overlay plays at, where the file
+/// says none.
+pub struct Drawing {
+    pub found: Found,
+    pub grid: bool,
+    pub fps: f64,
 }
 
-/// Reads `video` again and writes `file` with what `done` found drawn over its
-/// frames: a video, or a contact sheet of up to 12 frames spread over the clip.
-pub fn write_overlay(video: &Path, done: &Tracked, file: &Path) -> Result<(), VideoError> {
+impl Drawing {
+    /// The tracked balls (at the tracks' common radius) of `done`.
+    pub fn tracked(done: &Tracked) -> Drawing {
+        let view = &done.view;
+        let found = (0..view.t.len())
+            .map(|frame| {
+                view.balls
+                    .iter()
+                    .map(|b| {
+                        let c = b.centre.get(frame).copied().flatten()?;
+                        Some(Drawn {
+                            centre: (f64::from(c.0), f64::from(c.1)),
+                            radius: view.radius_px,
+                            mark: b
+                                .mark
+                                .get(frame)
+                                .copied()
+                                .flatten()
+                                .map(|m| (f64::from(m.0), f64::from(m.1))),
+                        })
+                    })
+                    .collect()
+            })
+            .collect();
+        Drawing {
+            found,
+            grid: false,
+            fps: done.fps,
+        }
+    }
+
+    /// What the tracker found before it refused (each fit at its own radius), over
+    /// a pixel grid.
+    pub fn refused(found: Found) -> Drawing {
+        Drawing {
+            found,
+            grid: true,
+            fps: 30.0,
+        }
+    }
+}
+
+/// Reads `video` again and writes `file` with `drawing` over its frames: a video,
+/// or a contact sheet of up to 12 frames spread over the clip.
+pub fn write_overlay(video: &Path, drawing: &Drawing, file: &Path) -> Result<(), VideoError> {
     let kind = kind(file)?;
     let (info, frames) = super::open(video, &Limits::default())?;
     let failed: RefCell<Option<VideoError>> = RefCell::new(None);
+    // On a sheet the grid's labels are drawn as large as the tile shrinks them.
+    let shrink = match kind {
+        Kind::Sheet => (info.width as u32).div_ceil(SHEET_TILE_WIDTH).max(1),
+        Kind::Video => 1,
+    };
+    let none = Vec::new();
     let drawn = frames.enumerate().map_while(|(i, frame)| match frame {
         Ok((_, img)) => {
             let mut rgb = to_rgb(&img);
-            overlay::draw(&mut rgb, &found(&done.view, i));
+            if drawing.grid {
+                overlay::pixel_grid(&mut rgb, shrink);
+            }
+            overlay::draw(&mut rgb, drawing.found.get(i).unwrap_or(&none));
             Some(rgb)
         }
         Err(e) => {
@@ -84,7 +124,7 @@ pub fn write_overlay(video: &Path, done: &Tracked, file: &Path) -> Result<(), Vi
     });
     match kind {
         Kind::Sheet => {
-            let chosen = overlay::sheet_frames(done.tracks.t.len(), SHEET_FRAMES);
+            let chosen = overlay::sheet_frames(drawing.found.len(), SHEET_FRAMES);
             let tiles: Vec<RgbImage> = drawn
                 .enumerate()
                 .filter(|(i, _)| chosen.contains(i))
@@ -105,7 +145,7 @@ pub fn write_overlay(video: &Path, done: &Tracked, file: &Path) -> Result<(), Vi
             let enc = Encoding {
                 width: info.width - info.width % 2,
                 height: info.height - info.height % 2,
-                fps: info.container_fps.unwrap_or(done.fps),
+                fps: info.container_fps.unwrap_or(drawing.fps),
                 crf: 20,
                 metadata: Vec::new(),
             };

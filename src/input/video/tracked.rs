@@ -11,7 +11,7 @@ use crate::settings::units::{Dimension, show, show_small, with_uncertainty};
 use crate::study::Progress;
 use crate::vision::thumbs::{Thumbs, VideoView};
 use crate::vision::tracks::{BallTrack, Tracks};
-use crate::vision::{self, Tracker};
+use crate::vision::{self, Tracker, overlay};
 
 /// What a tracking is asked for: the balls' radius R (m; the scale comes from it),
 /// the frame rate given (`--fps`), the scale given (px/m, from `--scale`), where R
@@ -69,6 +69,33 @@ pub fn track(
     options: &Options,
     progress: &dyn Progress,
 ) -> Result<Option<Tracked>, VideoError> {
+    track_or_found(video, options, progress).map_err(|refused| refused.error)
+}
+
+/// A tracking that gave no tracks: why, and what the tracker found in each frame
+/// before it refused (empty when it failed before tracking: an unreadable file).
+#[derive(Debug)]
+pub struct Refused {
+    pub error: VideoError,
+    pub found: Found,
+}
+
+/// What the tracker found in each frame, in the video's pixels: each ball's fitted
+/// outline (its own radius) and mark, in the order first seen.
+pub type Found = Vec<Vec<Option<overlay::Drawn>>>;
+
+/// As [`track`], and when the tracker is unsure (no tracks), what it found in each
+/// frame, for `track --overlay` to draw: a student sees where it went wrong and
+/// reads `--roi` and `--ball-at` off the picture.
+pub fn track_or_found(
+    video: &std::path::Path,
+    options: &Options,
+    progress: &dyn Progress,
+) -> Result<Option<Tracked>, Refused> {
+    let nothing = |error: VideoError| Refused {
+        error,
+        found: Vec::new(),
+    };
     let file = video.display().to_string();
     let err = |what: VideoProblem| VideoError::new(video, what);
     // Probed once: the rate checked before a frame is decoded.
@@ -79,9 +106,10 @@ pub fn track(
             Some(_) => Ok(()),
             None => Err(err(VideoProblem::NoRate)),
         }
-    })?;
+    })
+    .map_err(nothing)?;
     let Some((fps, source)) = rate else {
-        return Err(err(VideoProblem::NoRate));
+        return Err(nothing(err(VideoProblem::NoRate)));
     };
     let params = options.params();
     let mut tracker = Tracker::new(params);
@@ -120,7 +148,7 @@ pub fn track(
         if progress.cancelled() {
             return Ok(None);
         }
-        let (n, img) = frame?;
+        let (n, img) = frame.map_err(nothing)?;
         tracker.learn(&img);
         numbers.push(n);
         waiting.push_back(img);
@@ -145,14 +173,17 @@ pub fn track(
     let first = match numbers.as_slice() {
         [first, _, ..] => *first,
         _ => {
-            return Err(err(VideoProblem::TooFewFrames {
+            return Err(nothing(err(VideoProblem::TooFewFrames {
                 frames: numbers.len(),
-            }));
+            })));
         }
     };
     let times = numbers.iter().map(|n| (n - first) as f64 / fps).collect();
-    let tracks = vision::tracks(&tracker, times, options.radius, options.px_per_m)
-        .map_err(|e| err(e.into()))?;
+    let tracks =
+        vision::tracks(&tracker, times, options.radius, options.px_per_m).map_err(|e| Refused {
+            error: err(e.into()),
+            found: found(&tracker),
+        })?;
     let notes = notes(&file, &info, fps, &source, &tracks, &options.radius_from);
     let view = VideoView::new(thumbs, &tracks);
     Ok(Some(Tracked {
@@ -163,6 +194,27 @@ pub fn track(
         notes,
         view,
     }))
+}
+
+/// Each frame's fits as the tracker made them, before the tracks' checks.
+fn found(tracker: &Tracker) -> Found {
+    tracker
+        .frames
+        .iter()
+        .map(|f| {
+            f.iter()
+                .map(|fix| {
+                    let fix = fix.as_ref().ok()?;
+                    let c = fix.outline.circle;
+                    Some(overlay::Drawn {
+                        centre: (c.x, c.y),
+                        radius: c.r,
+                        mark: fix.mark.map(|m| (m.x, m.y)),
+                    })
+                })
+                .collect()
+        })
+        .collect()
 }
 
 /// Frames the reader may decode ahead of the tracker (on top of its look-ahead).

@@ -154,3 +154,76 @@ fn a_bad_overlay_name_is_refused_in_one_line_before_tracking() {
         assert!(!file.exists());
     }
 }
+
+/// A clip the tracker refuses (the balls in its first 8 frames of 30 only: neither
+/// ball in a third of the frames): with `--overlay` what it found is drawn over a
+/// pixel grid, and the one error line says where; without, nothing is written.
+#[test]
+fn a_refused_tracking_draws_what_was_found_over_a_pixel_grid() {
+    let dir = scratch_dir("video_overlay", "refused");
+    let frames = dir.join("frames");
+    let film = film(&frames);
+    for k in 8..30 {
+        let p = frames.join(format!("frame{:04}.png", k + 1));
+        let empty = film.empty(k);
+        write::png(&p, empty.as_raw(), 320, 180).unwrap();
+    }
+    let sheet = dir.join("check.png");
+    let args = |overlay: Option<&Path>| {
+        let mut a = vec![
+            "track".to_string(),
+            frames.to_str().unwrap().into(),
+            "--fps".into(),
+            "100".into(),
+            "--radius".into(),
+            "2.75cm".into(),
+            "--output".into(),
+            dir.join("tracks.txt").to_str().unwrap().into(),
+        ];
+        if let Some(o) = overlay {
+            a.extend(["--overlay".into(), o.to_str().unwrap().into()]);
+        }
+        a
+    };
+    let run_with = |a: Vec<String>| run(&a.iter().map(String::as_str).collect::<Vec<_>>());
+    let (code, _, err) = run_with(args(None));
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("tracking unsure"), "{err}");
+    assert!(!err.contains("pixel grid") && !sheet.exists(), "{err}");
+    let (code, _, err) = run_with(args(Some(&sheet)));
+    assert_eq!(code, 2, "{err}");
+    let line = err.trim();
+    assert!(
+        line.starts_with("error: ") && line.lines().count() == 1,
+        "{err}"
+    );
+    assert!(line.contains("tracking unsure"), "{line}");
+    assert!(
+        line.ends_with(&format!("drawn over a pixel grid in {}", sheet.display())),
+        "{line}"
+    );
+    assert!(!dir.join("tracks.txt").exists(), "no tracks are written");
+    let img = image::open(&sheet).unwrap().to_rgb8();
+    assert_eq!((img.width(), img.height()), (4 + 4 * 324, 4 + 3 * 184));
+    // The first tile is frame 0: both balls found there, drawn on their outlines
+    // (at their own fitted radius, within 1.5 px of the truth).
+    for t in film.truth(0) {
+        let c = (4.0 + t.centre.0, 4.0 + t.centre.1);
+        let on = drawn_share(&img, c, t.radius, 1.5);
+        assert!(on >= 0.9, "outline drawn in {on:.2} of the directions");
+    }
+    // The grid (every 50 px of the 320 px frame): the column x = 100 is lightened
+    // against the frame under it, the columns beside it are not.
+    let frame0 = film.image(0);
+    let lighter = |x: u32, y: u32| {
+        let (a, b) = (img.get_pixel(4 + x, 4 + y).0, frame0.get_pixel(x, y).0);
+        (0..3)
+            .map(|c| i32::from(a[c]) - i32::from(b[c]))
+            .sum::<i32>()
+            > 60
+    };
+    // Rows above the balls, below the labels of x.
+    let rows = 15..48;
+    assert!(rows.clone().all(|y| lighter(100, y)));
+    assert!(rows.clone().all(|y| !lighter(97, y) && !lighter(103, y)));
+}
