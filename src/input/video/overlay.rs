@@ -7,7 +7,7 @@ use std::path::Path;
 
 use image::RgbImage;
 
-use super::tracked::{Found, Tracked};
+use super::tracked::{FitsFound, Tracked};
 use super::write::{self, Encoding};
 use super::{Limits, VideoError, VideoProblem};
 use crate::vision::Frame;
@@ -49,7 +49,7 @@ pub fn kind(file: &Path) -> Result<Kind, VideoError> {
 /// `--ball-at` off the picture); the rate a video overlay plays at, where the file
 /// says none.
 pub struct Drawing {
-    pub found: Found,
+    pub found: FitsFound,
     pub grid: bool,
     pub fps: f64,
 }
@@ -87,7 +87,7 @@ impl Drawing {
 
     /// What the tracker found before it refused (each fit at its own radius), over
     /// a pixel grid.
-    pub fn refused(found: Found) -> Drawing {
+    pub fn refused(found: FitsFound) -> Drawing {
         Drawing {
             found,
             grid: true,

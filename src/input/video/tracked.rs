@@ -77,12 +77,12 @@ pub fn track(
 #[derive(Debug)]
 pub struct Refused {
     pub error: VideoError,
-    pub found: Found,
+    pub found: FitsFound,
 }
 
 /// What the tracker found in each frame, in the video's pixels: each ball's fitted
 /// outline (its own radius) and mark, in the order first seen.
-pub type Found = Vec<Vec<Option<overlay::Drawn>>>;
+pub type FitsFound = Vec<Vec<Option<overlay::Drawn>>>;
 
 /// As [`track`], and when the tracker is unsure (no tracks), what it found in each
 /// frame, for `track --overlay` to draw: a student sees where it went wrong and
@@ -111,6 +111,46 @@ pub fn track_or_found(
     let Some((fps, source)) = rate else {
         return Err(nothing(err(VideoProblem::NoRate)));
     };
+    let Some((tracker, numbers, thumbs)) =
+        stream(frames, &info, options, progress).map_err(nothing)?
+    else {
+        return Ok(None);
+    };
+    let first = match numbers.as_slice() {
+        [first, _, ..] => *first,
+        _ => {
+            return Err(nothing(err(VideoProblem::TooFewFrames {
+                frames: numbers.len(),
+            })));
+        }
+    };
+    let times = numbers.iter().map(|n| (n - first) as f64 / fps).collect();
+    let tracks =
+        vision::tracks(&tracker, times, options.radius, options.px_per_m).map_err(|e| Refused {
+            error: err(e.into()),
+            found: found(&tracker),
+        })?;
+    let notes = notes(&file, &info, fps, &source, &tracks, &options.radius_from);
+    let view = VideoView::new(thumbs, &tracks);
+    Ok(Some(Tracked {
+        info,
+        fps,
+        source,
+        tracks,
+        notes,
+        view,
+    }))
+}
+
+/// The frames streamed through the tracker, read on a thread of their own: the
+/// tracker, each frame's number, and the app's small pictures; `None` when
+/// `progress` asked to stop.
+fn stream(
+    frames: super::Frames,
+    info: &Info,
+    options: &Options,
+    progress: &dyn Progress,
+) -> Result<Option<(Tracker, Vec<u64>, Thumbs)>, VideoError> {
     let params = options.params();
     let mut tracker = Tracker::new(params);
     // One pass, one decode: each frame is learned (reduced) into the background as
@@ -148,7 +188,7 @@ pub fn track_or_found(
         if progress.cancelled() {
             return Ok(None);
         }
-        let (n, img) = frame.map_err(nothing)?;
+        let (n, img) = frame?;
         tracker.learn(&img);
         numbers.push(n);
         waiting.push_back(img);
@@ -170,34 +210,11 @@ pub fn track_or_found(
     // The reader is done (the frames ran out); a reader that panicked leaves no
     // pictures, the tracks stand.
     let thumbs = reader.join().unwrap_or(no_thumbs);
-    let first = match numbers.as_slice() {
-        [first, _, ..] => *first,
-        _ => {
-            return Err(nothing(err(VideoProblem::TooFewFrames {
-                frames: numbers.len(),
-            })));
-        }
-    };
-    let times = numbers.iter().map(|n| (n - first) as f64 / fps).collect();
-    let tracks =
-        vision::tracks(&tracker, times, options.radius, options.px_per_m).map_err(|e| Refused {
-            error: err(e.into()),
-            found: found(&tracker),
-        })?;
-    let notes = notes(&file, &info, fps, &source, &tracks, &options.radius_from);
-    let view = VideoView::new(thumbs, &tracks);
-    Ok(Some(Tracked {
-        info,
-        fps,
-        source,
-        tracks,
-        notes,
-        view,
-    }))
+    Ok(Some((tracker, numbers, thumbs)))
 }
 
 /// Each frame's fits as the tracker made them, before the tracks' checks.
-fn found(tracker: &Tracker) -> Found {
+fn found(tracker: &Tracker) -> FitsFound {
     tracker
         .frames
         .iter()
