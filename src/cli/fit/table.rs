@@ -385,6 +385,13 @@ pub(super) fn track_table(
     row(&mut out, "verdict", verdict(v), verdict(p));
     let _ = writeln!(out, "  velocity fit: regime {}", v.verdict);
     let _ = writeln!(out, "  position fit: regime {}", p.verdict);
+    if let Some((mu_p, mu_v)) = p.fits_disagree {
+        let _ = writeln!(
+            out,
+            "  {} (μ_k {mu_p:.4} from the positions, {mu_v:.4} from the velocities)",
+            p.agreement().sentence()
+        );
+    }
     for (what, m) in [("velocity", v), ("position", p)] {
         for n in &m.not_identified {
             let _ = writeln!(

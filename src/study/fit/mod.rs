@@ -169,13 +169,21 @@ pub fn fit_all(
     let (line_fit, no_line_fit) = line_fits(m, scene, window, given)?;
     // μ_k,cm against μ_k,t: a verdict of every model fit (the same line fits).
     let lines_disagree = line_fit.as_ref().and_then(LineFit::disagree);
+    // A track's two fits of one model measure one μ_k: apart, the tracks are in doubt.
+    let fits_disagree = velocity_fit
+        .as_ref()
+        .and_then(|v| model::fits_disagree(&head.fit, v));
+    let head_model = head.fit.model.clone();
+    let of_head = |model: &str| fits_disagree.filter(|_| model == head_model);
     let judged = |f: ModelFit| ModelFit {
         lines_disagree,
+        fits_disagree: of_head(&f.model),
         ..f
     };
     let model_fit = judged((*head.fit).clone());
     for c in &mut models {
         c.fit.lines_disagree = lines_disagree;
+        c.fit.fits_disagree = of_head(&c.fit.model);
     }
     let fits = Fits {
         line_fit,

@@ -84,6 +84,11 @@ pub struct ModelFit {
     /// `fit_all`, which has the line fits.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub lines_disagree: Option<(f64, f64)>,
+    /// A track's μ_k fitted to its positions and to the velocities it derives, where
+    /// they disagree ([`fits_disagree`]): the tracks carry an error neither fit
+    /// models, and there is no verdict. Set by `fit_all` on both fits.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub fits_disagree: Option<(f64, f64)>,
     /// True when the fitted μ_k is beyond [`MAX_PLAUSIBLE_MU`]: no ball rolls in a
     /// groove with that, so the data's unit is likely wrong (speeds in cm/s read as m/s
     /// make every deceleration, and μ_k, 100× too large); there is no verdict.
@@ -137,6 +142,8 @@ impl ModelFit {
         } else if self.lines_disagree.is_some() {
             // Before a poor fit: the cause named (a wrong b or R fits poorly too).
             Agreement::LinesDisagree
+        } else if self.fits_disagree.is_some() {
+            Agreement::FitsDisagree
         } else if self.scatter.is_some_and(|s| self.rms > POOR_FIT * s)
             && self.rms > self.perfect_rms()
         {
@@ -171,6 +178,9 @@ pub enum Agreement {
     /// μ_k from v_cm and from v_t (the line fits) disagree ([`LineFit::disagree`]):
     /// k = r/R enters them as k and 1/k, so the scene's b or R does not fit the data.
     LinesDisagree,
+    /// A track's μ_k fitted to its positions and to its derived velocities disagree
+    /// ([`fits_disagree`]): the tracks carry an error neither fit models.
+    FitsDisagree,
     /// μ_k is beyond [`MAX_PLAUSIBLE_MU`] ([`ModelFit::mu_implausible`]): the data's
     /// unit is likely wrong.
     ImplausibleMu,
@@ -201,6 +211,7 @@ impl Agreement {
             Agreement::MuNotDetermined => "no verdict",
             Agreement::PoorFit => "POOR FIT",
             Agreement::LinesDisagree => "μ_k,cm ≠ μ_k,t",
+            Agreement::FitsDisagree => "FITS DISAGREE",
             Agreement::ImplausibleMu => "μ_k > 1: units?",
         }
     }
@@ -222,6 +233,9 @@ impl Agreement {
             Agreement::LinesDisagree => {
                 "no verdict: μ_k,cm and μ_k,t of the line fits disagree beyond their ± and by over a quarter, so the scene's b or R does not fit these data (k = r/R enters μ_k,cm as k, μ_k,t as 1/k): check --width and --radius"
             }
+            Agreement::FitsDisagree => {
+                "no verdict: μ_k fitted to the positions and to the velocities of the same tracks disagree beyond their ± and by over a tenth, so the tracks carry an error neither fit models (a centre or mark misplaced in many frames): check the tracking (track --overlay), or film again"
+            }
             Agreement::ImplausibleMu => {
                 "no verdict: a μ_k beyond 1 is no ball rolling in a groove, so the data's unit is likely wrong (speeds in cm/s read as m/s make μ_k 100× too large): give --speed-unit cm/s (a track in cm: --length-unit cm), or fix the header"
             }
@@ -237,6 +251,7 @@ impl Agreement {
             Agreement::MuNotDetermined => "no verdict: μ_k not determined",
             Agreement::PoorFit => "no verdict: RMS ≫ the data's scatter",
             Agreement::LinesDisagree => "no verdict: μ_k,cm ≠ μ_k,t (b, R?)",
+            Agreement::FitsDisagree => "no verdict: x and v fits disagree",
             Agreement::ImplausibleMu => "no verdict: μ_k > 1 (units?)",
         }
     }
@@ -245,6 +260,28 @@ impl Agreement {
     pub fn holds(self) -> bool {
         matches!(self, Agreement::Agrees | Agreement::WithinRestBand)
     }
+}
+
+/// How far apart a track's μ_k fitted to its positions and to its derived velocities
+/// may lie, relative to their mean, beyond their ±, on tracks that are right: the
+/// velocity fit's local derivatives round the impact's corners (a few %), and both
+/// ± leave out the errors neighbouring frames share.
+pub const FITS_APART: f64 = 0.1;
+
+/// μ_k of the position fit `p` and of the velocity fit `v` (one model, one track)
+/// when they disagree: by more than twice their combined ± (their own parts: the
+/// scale's is common to both) and more than [`FITS_APART`] of their mean. `None`
+/// where either does not determine μ_k.
+pub fn fits_disagree(p: &ModelFit, v: &ModelFit) -> Option<(f64, f64)> {
+    let mu = Free::Mu.name();
+    if p.undetermined(mu).is_some() || v.undetermined(mu).is_some() {
+        return None;
+    }
+    let own = |m: &ModelFit| m.scale.as_ref().map_or(m.mu_se, |s| s.mu_se_fit);
+    let apart = (p.mu - v.mu).abs();
+    let se = own(p).hypot(own(v));
+    (apart.is_finite() && apart > 2.0 * se && apart > FITS_APART * 0.5 * (p.mu + v.mu).abs())
+        .then_some((p.mu, v.mu))
 }
 
 /// Every `k`-th frame of `m`, with `k` the smallest that leaves at most
@@ -524,6 +561,7 @@ pub(super) fn scored_fit_within(
         every,
         scale,
         lines_disagree: None,
+        fits_disagree: None,
         mu_implausible: fitted.mu > MAX_PLAUSIBLE_MU,
     }))
 }
@@ -591,7 +629,60 @@ pub(super) mod tests {
             every: None,
             scale: None,
             lines_disagree: None,
+            fits_disagree: None,
             mu_implausible: false,
         }
+    }
+
+    /// A position fit and a velocity fit of one track, μ_k and its own ± (1σ), the
+    /// scale's part beside it.
+    fn pair(p: (f64, f64), v: (f64, f64)) -> (ModelFit, ModelFit) {
+        let with = |(mu, se): (f64, f64), to: &'static str| ModelFit {
+            mu,
+            mu_se: se.hypot(0.025 * mu),
+            fitted_to: to,
+            scale: Some(ScalePart {
+                rel_se: 0.025,
+                mu_se_fit: se,
+                mu_se_scale: 0.025 * mu,
+                v0_se_fit: None,
+                v0_se_scale: None,
+            }),
+            ..blank()
+        };
+        (with(p, "positions"), with(v, "velocities"))
+    }
+
+    #[test]
+    fn position_and_velocity_fits_disagree_only_beyond_their_own_pm_and_a_tenth() {
+        // Seed 22 of the looks table: 0.131 ± 0.0048 from the positions, 0.162 ±
+        // 0.005 from the velocities: 4.5 of their combined own ± and 21 % apart.
+        let (p, v) = pair((0.1306, 0.0048), (0.1624, 0.0050));
+        assert_eq!(fits_disagree(&p, &v), Some((0.1306, 0.1624)));
+        let judged = ModelFit {
+            fits_disagree: fits_disagree(&p, &v),
+            ..p.clone()
+        };
+        assert_eq!(judged.agreement(), Agreement::FitsDisagree);
+        assert!(!judged.agreement().holds());
+        // Apart by 21 % but within twice their ±: no disagreement.
+        let (p, v) = pair((0.1306, 0.012), (0.1624, 0.012));
+        assert_eq!(fits_disagree(&p, &v), None);
+        // The scale's part is common to both fits: a large one does not hide it.
+        let (mut p, v) = pair((0.1306, 0.0048), (0.1624, 0.0050));
+        p.mu_se = 0.05;
+        assert!(fits_disagree(&p, &v).is_some());
+        // Exact tracks: far beyond their tiny ± but under a tenth apart (the velocity
+        // fit's derivatives round the impact's corners): no disagreement.
+        let (p, v) = pair((0.1700, 0.0002), (0.1640, 0.0002));
+        assert_eq!(fits_disagree(&p, &v), None);
+        // A μ_k not determined by either fit: nothing to compare.
+        let (mut p, v) = pair((0.1306, 0.0048), (0.1624, 0.0050));
+        p.not_identified.push(NotIdentified {
+            parameter: Free::Mu.name(),
+            reason: String::new(),
+            on_edge_of: None,
+        });
+        assert_eq!(fits_disagree(&p, &v), None);
     }
 }

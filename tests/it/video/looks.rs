@@ -122,6 +122,12 @@ fn outcome(dir: &Path, clip: &Clip) -> Outcome {
     }
     let j: serde_json::Value = serde_json::from_str(&out).unwrap();
     let m = &j["model_fit"];
+    // The position and velocity fits disagree: `fit` gives no verdict, the tracks
+    // are in doubt (said, not a μ_k to trust).
+    if let Some(apart) = m["fits_disagree"].as_array() {
+        let line = format!("no verdict: the position and velocity fits disagree ({apart:?})");
+        return Outcome::Unfitted { scale, line };
+    }
     let mu = (
         m["mu"].as_f64().unwrap_or(f64::NAN),
         m["mu_se"].as_f64().unwrap_or(f64::NAN),
@@ -287,7 +293,7 @@ fn sheet() {
 /// One look's row of the looks table.
 struct Row {
     name: String,
-    /// "tracked", "refused: …", "fit refused: …" or "panic".
+    /// "tracked", "refused: …", "fit refused: …", "no verdict: …" (the fit's) or "panic".
     tracked: String,
     /// Pooled centre and mark errors (sum of squares, count), px.
     centre: (f64, usize),
@@ -374,10 +380,22 @@ fn measure(dir: &Path, clip: &Clip) -> Row {
         0 => {
             let j: serde_json::Value = serde_json::from_str(&out).unwrap();
             let m = &j["model_fit"];
-            row.mu = Some((
-                m["mu"].as_f64().unwrap_or(f64::NAN),
-                m["mu_se"].as_f64().unwrap_or(f64::NAN),
-            ));
+            let mu = |m: &serde_json::Value| m["mu"].as_f64().unwrap_or(f64::NAN);
+            eprintln!(
+                "{}: μ_k {:.4} from the positions, {:.4} from the velocities",
+                clip.name,
+                mu(m),
+                mu(&j["velocity_fit"])
+            );
+            if m["fits_disagree"].is_array() {
+                row.tracked = format!(
+                    "no verdict: the position and velocity fits disagree ({:.3}, {:.3})",
+                    mu(m),
+                    mu(&j["velocity_fit"])
+                );
+                return row;
+            }
+            row.mu = Some((mu(m), m["mu_se"].as_f64().unwrap_or(f64::NAN)));
             row.tracked = "tracked".into();
         }
         101 => row.tracked = "panic (fit)".into(),
@@ -437,7 +455,8 @@ fn looks_table() {
             .is_some_and(|(m, se)| (m - truth).abs() <= se.max(0.015));
         good += usize::from(ok);
         panics += usize::from(row.tracked.starts_with("panic"));
-        refused += usize::from(row.tracked.contains("refused"));
+        refused +=
+            usize::from(row.tracked.contains("refused") || row.tracked.starts_with("no verdict"));
         if let Some(z) = row.scale_z {
             wrong1 += usize::from(z.abs() > 1.0);
             wrong2 += usize::from(z.abs() > 2.0);
