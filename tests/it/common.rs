@@ -65,11 +65,16 @@ pub fn cases(default: u32) -> proptest::test_runner::Config {
 // ---- The command ---------------------------------------------------------------------
 
 /// Runs the binary with `args`, without the user's presets (a folder that does not
-/// exist), and returns what it printed.
+/// exist) or cache, and returns what it printed.
 pub fn groovelab(args: &[&str]) -> std::process::Output {
     std::process::Command::new(env!("CARGO_BIN_EXE_groovelab"))
         .args(args)
         .env("GROOVELAB_PRESETS", "/nonexistent-groovelab-presets")
+        // Tracked videos are kept under the test's target, never the user's cache.
+        .env(
+            "XDG_CACHE_HOME",
+            concat!(env!("CARGO_TARGET_TMPDIR"), "/user-cache"),
+        )
         .output()
         .unwrap()
 }
