@@ -178,7 +178,9 @@ pub struct Params {
     pub max_deceleration: f64,
     /// Least share of a luma blob's upper half that differs from the background for
     /// the blob to be taken as a ball. Default 0.15: a ball that moved gives about a
-    /// half or more, a still disc of the bench about none.
+    /// half or more, a still disc of the bench about none. The follower's fit where
+    /// it predicts the ball moved on needs as much of its upper half to differ,
+    /// unless it is a sharp arc of the balls' radius (`min_coverage_sharp`).
     pub moved_share: f64,
     /// Marks looked at before their sign (darker or lighter than the ball) is
     /// settled. Default 9: a highlight of the other sign in a few of the first

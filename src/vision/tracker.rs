@@ -510,10 +510,60 @@ impl Tracker {
                 continue;
             }
             let band = (self.params.window_radii * pred.r).max(3.0);
-            if let Ok(o) = self.refine(frame, pred, band) {
+            // Where the ball is predicted to have moved on (by over a tenth of a
+            // radius: a ball at rest is predicted within the pixel noise of where it
+            // was), what the window gives must differ from the background, as a
+            // ball that moves does; the follower's own case, a ball at rest over the
+            // pixels the background learned it at, is not judged. The velocity of
+            // fits either side of an impact (the other ball not yet seen, so no
+            // frame of it merged) is neither the ball's before nor after: along it
+            // the window lands where the ball is not, on whatever circle the wall
+            // offers there (the looks table's seed 2, a checkered wall).
+            let moved = l
+                .last()
+                .is_some_and(|(_, c)| (pred.x - c.x).hypot(pred.y - c.y) > 0.1 * pred.r);
+            // A sharp arc of the balls' radius (`min_coverage_sharp`) is a ball's
+            // own edge: a ball of the wall's brightness differs from the background
+            // only along it.
+            let (p, known) = (self.params, self.radius);
+            let sharp = |o: &Outline| {
+                o.rms <= p.sharp_rms
+                    && known.is_some_and(|r| (o.circle.r - r).abs() < p.sharp_radius * r)
+            };
+            if let Ok(o) = self.refine(frame, pred, band)
+                && !(moved && !sharp(&o) && self.differing(&o.circle) < p.moved_share)
+            {
                 fits.push(Ok(o));
             }
         }
+    }
+
+    /// The share of the upper half of the disc `c` (above the rail) where the frame
+    /// differs from the background (`differs_at`), sampled as `stands_out` samples
+    /// it; 1 without a background (nothing to tell by).
+    fn differing(&self, c: &Circle) -> f64 {
+        let (Some(bg), Some(small)) = (self.background.as_ref().map(|b| &b.image), &self.small)
+        else {
+            return 1.0;
+        };
+        let step = (c.r / 8.0).max(1.0);
+        let (mut hit, mut n) = (0usize, 0usize);
+        let mut dy = -0.8 * c.r;
+        while dy < 0.0 {
+            let mut dx = -0.8 * c.r;
+            while dx <= 0.8 * c.r {
+                if dx.hypot(dy) < 0.8 * c.r {
+                    n += 1;
+                    hit += usize::from(differs_at(small, bg, c.x + dx, c.y + dy, &self.params));
+                }
+                dx += step;
+            }
+            dy += step;
+        }
+        if n == 0 {
+            return 1.0;
+        }
+        hit as f64 / n as f64
     }
 
     /// In the first frame with a ball seen, the seed (`Params::ball_at`): the fit
