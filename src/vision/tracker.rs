@@ -317,6 +317,20 @@ impl Tracker {
                         Ok(o)
                     }
                 });
+            // A blob with a ragged fringe (`Blob::core`): the ball is its solid core.
+            let fit = match (fit, b.core) {
+                (Err(e), Some(core)) => self
+                    .refine(frame, core, (1.5 * f).max(4.0))
+                    .map_err(|_| e)
+                    .and_then(|o| {
+                        if o.circle.r < p.smallest_in_blob * core.r {
+                            Err(LeftOut::Poor)
+                        } else {
+                            Ok(o)
+                        }
+                    }),
+                (fit, _) => fit,
+            };
             fits.push(fit);
         }
         self.search_wide(frame, &coarse, &mut fits, f);
