@@ -318,17 +318,25 @@ impl Tracker {
                     }
                 });
             // A blob with a ragged fringe (`Blob::core`): the ball is its solid core.
+            // Once the radius is known, only in a blob wider than a ball: the opened
+            // blob of a ball that matches the wall in places (same-brightness wood
+            // grain, looks table seed 45) is smaller than the ball, its fits too.
             let fit = match (fit, b.core) {
-                (Err(e), Some(core)) => self
-                    .refine(frame, core, (1.5 * f).max(4.0))
-                    .map_err(|_| e)
-                    .and_then(|o| {
-                        if o.circle.r < p.smallest_in_blob * core.r {
-                            Err(LeftOut::Poor)
-                        } else {
-                            Ok(o)
-                        }
-                    }),
+                (Err(e), Some(core))
+                    if self
+                        .radius
+                        .is_none_or(|r| b.width() > p.wide_blob * 2.0 * r) =>
+                {
+                    self.refine(frame, core, (1.5 * f).max(4.0))
+                        .map_err(|_| e)
+                        .and_then(|o| {
+                            if o.circle.r < p.smallest_in_blob * core.r {
+                                Err(LeftOut::Poor)
+                            } else {
+                                Ok(o)
+                            }
+                        })
+                }
                 (fit, _) => fit,
             };
             fits.push(fit);
