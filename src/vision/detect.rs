@@ -20,6 +20,10 @@ pub struct Blob {
     pub bottom: f64,
     /// Marked pixels, in full-frame pixels².
     pub area: f64,
+    /// The ball the blob's solid core would be, where it is not the blob's own
+    /// guess: the blob opened (`Params::fringe_share`), its ragged fringe fallen
+    /// away. Only for blobs of the difference from the background.
+    pub core: Option<super::circle::Circle>,
 }
 
 impl Blob {
@@ -28,6 +32,13 @@ impl Blob {
     }
     pub fn height(&self) -> f64 {
         self.bottom - self.top
+    }
+    /// True when `other` lies within this blob's box.
+    pub fn holds(&self, other: &Blob) -> bool {
+        other.left >= self.left
+            && other.right <= self.right
+            && other.top >= self.top
+            && other.bottom <= self.bottom
     }
     /// The ball this blob would be if it is one: centre below the top by half the
     /// width.
@@ -106,7 +117,25 @@ pub fn against_differences(small: &Small, d: &[f32], thr: f32, params: &Params) 
     // A change of the whole picture's light is no ball: rows marked across most of
     // the frame are dropped.
     drop_long_runs(&mut mask, w, h, (w / 3).max(4));
+    let mut opened = mask.clone();
     let mut out = classify(&mut mask, w, h, f, params.min_radius);
+    // Not where the difference is at full resolution (frames under 640 px wide):
+    // there the blob rule (`Params::outer_agree`) tells a lock inside a larger blob,
+    // and the opened blobs' locks came in its place (small looks' seeds 2 and 11,
+    // steel and glossy balls on wood grain and stripes: wrong μ_k).
+    if params.fringe_share > 0.0 && f > 1 {
+        open_each(&mut opened, w, h, params.fringe_share);
+        let cores = classify(&mut opened, w, h, f, params.min_radius);
+        for b in &mut out.balls {
+            b.core = cores
+                .balls
+                .iter()
+                .filter(|c| b.holds(c))
+                .max_by(|a, c| a.area.total_cmp(&c.area))
+                .map(Blob::guess)
+                .filter(|c| *c != b.guess());
+        }
+    }
     out.noise = f64::from(thr) / params.differ_sigmas.max(1.0);
     out
 }
@@ -127,6 +156,7 @@ fn classify(mask: &mut [bool], w: usize, h: usize, f: usize, min_radius: f64) ->
             top: b.y0 as f64 * ff,
             bottom: (b.y1 + 1) as f64 * ff,
             area: b.area as f64 * ff * ff,
+            core: None,
         };
         let (bw, bh) = (blob.width(), blob.height());
         let fill = blob.area / (bw * bh);
@@ -195,6 +225,112 @@ fn open_vertically(mask: &mut [bool], w: usize, h: usize) {
             mask[y * w + x] = at(&eroded, x, y)
                 || (y > 0 && at(&eroded, x, y - 1))
                 || (y + 1 < h && at(&eroded, x, y + 1));
+        }
+    }
+}
+
+/// An opening by a square `2k + 1` coarse pixels wide: erosion, then dilation, each
+/// by the square (a row's run, then a column's).
+fn open(mask: &mut [bool], w: usize, h: usize, k: usize) {
+    if k == 0 || w == 0 || h == 0 {
+        return;
+    }
+    let at = |m: &[bool], x: usize, y: usize| m.get(y * w + x).copied().unwrap_or(false);
+    // All (erode) or any (dilate) of the run about each pixel, along rows then columns.
+    let pass = |m: &[bool], all: bool, rows: bool| -> Vec<bool> {
+        let mut out = vec![false; m.len()];
+        for y in 0..h {
+            for x in 0..w {
+                let (c, n) = if rows { (x, w) } else { (y, h) };
+                let (lo, hi) = (c.saturating_sub(k), (c + k).min(n - 1));
+                let mut it = (lo..=hi).map(|i| if rows { at(m, i, y) } else { at(m, x, i) });
+                // Beyond the frame's edge counts as unmarked for the erosion.
+                let whole = c >= k && c + k < n;
+                let v = if all {
+                    whole && it.all(|b| b)
+                } else {
+                    it.any(|b| b)
+                };
+                if let Some(o) = out.get_mut(y * w + x) {
+                    *o = v;
+                }
+            }
+        }
+        out
+    };
+    let eroded = pass(&pass(mask, true, true), true, false);
+    let opened = pass(&pass(&eroded, false, true), false, false);
+    mask.copy_from_slice(&opened);
+}
+
+/// Each blob of `mask` opened by a square of `2k + 1` coarse pixels, k its height
+/// times `share` (rounded down; blobs under `1 / share` tall are left as they are).
+fn open_each(mask: &mut [bool], w: usize, h: usize, share: f64) {
+    let mut seen = vec![false; mask.len()];
+    let mut stack = Vec::new();
+    for start in 0..mask.len() {
+        if !mask.get(start).copied().unwrap_or(false) || seen.get(start).copied().unwrap_or(true) {
+            continue;
+        }
+        // The blob's pixels, by a flood fill (4-connected, as `blobs`).
+        let mut pixels = Vec::new();
+        stack.push(start);
+        if let Some(s) = seen.get_mut(start) {
+            *s = true;
+        }
+        while let Some(i) = stack.pop() {
+            pixels.push(i);
+            let (x, y) = (i % w, i / w);
+            let mut next = Vec::with_capacity(4);
+            if x > 0 {
+                next.push(i - 1);
+            }
+            if x + 1 < w {
+                next.push(i + 1);
+            }
+            if y > 0 {
+                next.push(i - w);
+            }
+            if y + 1 < h {
+                next.push(i + w);
+            }
+            for j in next {
+                if mask.get(j).copied().unwrap_or(false) && !seen.get(j).copied().unwrap_or(true) {
+                    if let Some(s) = seen.get_mut(j) {
+                        *s = true;
+                    }
+                    stack.push(j);
+                }
+            }
+        }
+        let (x0, x1) = pixels
+            .iter()
+            .map(|i| i % w)
+            .fold((usize::MAX, 0), |(a, b), x| (a.min(x), b.max(x)));
+        let (y0, y1) = pixels
+            .iter()
+            .map(|i| i / w)
+            .fold((usize::MAX, 0), |(a, b), y| (a.min(y), b.max(y)));
+        let k = (share * (y1 - y0 + 1) as f64) as usize;
+        if k == 0 {
+            continue;
+        }
+        let (bw, bh) = (x1 - x0 + 1, y1 - y0 + 1);
+        let mut sub = vec![false; bw * bh];
+        for &i in &pixels {
+            if let Some(v) = sub.get_mut((i / w - y0) * bw + (i % w - x0)) {
+                *v = true;
+            }
+        }
+        open(&mut sub, bw, bh, k);
+        for &i in &pixels {
+            let kept = sub
+                .get((i / w - y0) * bw + (i % w - x0))
+                .copied()
+                .unwrap_or(false);
+            if let Some(m) = mask.get_mut(i) {
+                *m = kept;
+            }
         }
     }
 }

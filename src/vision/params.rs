@@ -92,6 +92,18 @@ pub struct Params {
     /// ball (the mark, a highlight). Default 0.6: the blob of a ball is the ball
     /// plus at most a shadow's fringe.
     pub smallest_in_blob: f64,
+    /// A blob of the difference from the background is opened (eroded, then grown
+    /// back) by a square this share of its height across (rounded down to whole
+    /// coarse pixels either side of the middle one: blobs under 8 coarse pixels tall
+    /// are left whole), and where the blob gave no outline about its middle, one is
+    /// sought about the opened blob's ball (`detect::Blob::core`). Default 0.125: a
+    /// ball differs from the background over a solid disc, the ragged fringe it drags
+    /// in a compressed clip or where the background was learned partly with the balls
+    /// in it (a mesh of one- and two-pixel lines: looks table, seeds 35 and 39, blobs
+    /// 1.2–1.9 radii wide for 1.0–1.1 opened) falls away; 0 leaves blobs whole.
+    /// Not where the background is learned at full resolution (frames under 640 px
+    /// wide), where the blob rule (`outer_agree`) judges locks inside larger blobs.
+    pub fringe_share: f64,
     /// The first lock (before the balls' radius is known) is checked against the
     /// outermost circular edge of either sign about it (`circle::outermost`): a
     /// ball's outline is the outermost closed circular edge of the blob that moves.
@@ -350,6 +362,7 @@ impl Default for Params {
             max_rms: 1.0,
             radius_tolerance: 0.15,
             smallest_in_blob: 0.6,
+            fringe_share: 0.125,
             outer_reach: 2.2,
             outer_step: 10.0,
             outer_margin: 2.0,

@@ -307,16 +307,7 @@ impl Tracker {
         });
         let mut fits: Vec<Result<Outline, LeftOut>> = Vec::new();
         for b in coarse.balls.iter().take(6) {
-            let fit = self
-                .refine(frame, b.guess(), (1.5 * f).max(4.0))
-                .and_then(|o| {
-                    // The mark or a highlight fitted in a ball's blob: not the ball.
-                    if o.circle.r < p.smallest_in_blob * 0.5 * b.width() {
-                        Err(LeftOut::Poor)
-                    } else {
-                        Ok(o)
-                    }
-                });
+            let fit = self.fit_blob(frame, b, f);
             fits.push(fit);
         }
         self.search_wide(frame, &coarse, &mut fits, f);
@@ -386,6 +377,44 @@ impl Tracker {
             }
         }
         self.frames.push(out);
+    }
+
+    /// The outline of the blob `b` (coarse pixels `f` px): about its guess, else
+    /// about its solid core.
+    fn fit_blob(&mut self, frame: &Frame, b: &Blob, f: f64) -> Result<Outline, LeftOut> {
+        let p = self.params;
+        let fit = self
+            .refine(frame, b.guess(), (1.5 * f).max(4.0))
+            .and_then(|o| {
+                // The mark or a highlight fitted in a ball's blob: not the ball.
+                if o.circle.r < p.smallest_in_blob * 0.5 * b.width() {
+                    Err(LeftOut::Poor)
+                } else {
+                    Ok(o)
+                }
+            });
+        // A blob with a ragged fringe (`Blob::core`): the ball is its solid core.
+        // Once the radius is known, only in a blob wider than a ball: the opened
+        // blob of a ball that matches the wall in places (same-brightness wood
+        // grain, looks table seed 45) is smaller than the ball, its fits too.
+        match (fit, b.core) {
+            (Err(e), Some(core))
+                if self
+                    .radius
+                    .is_none_or(|r| b.width() > p.wide_blob * 2.0 * r) =>
+            {
+                self.refine(frame, core, (1.5 * f).max(4.0))
+                    .map_err(|_| e)
+                    .and_then(|o| {
+                        if o.circle.r < p.smallest_in_blob * core.r {
+                            Err(LeftOut::Poor)
+                        } else {
+                            Ok(o)
+                        }
+                    })
+            }
+            (fit, _) => fit,
+        }
     }
 
     /// The ball `o` with its mark and the spots of its disc.

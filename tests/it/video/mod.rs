@@ -11,6 +11,7 @@ mod marks_stay;
 mod marks_turn;
 mod outer_lock;
 pub(crate) mod overlay;
+mod ragged_fringe;
 pub(crate) mod seed;
 mod sharp_arc;
 pub(crate) mod tracker_looks;
