@@ -19,6 +19,9 @@ mod choice;
 mod least_squares;
 mod line;
 mod model;
+/// A fit of nothing, for tests of what is made from fits.
+#[cfg(test)]
+pub(crate) use model::tests::blank as blank_fit;
 mod problem;
 mod regime;
 mod residuals;

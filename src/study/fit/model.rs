@@ -599,7 +599,7 @@ fn raw_rms(fitted: &Scene, m: &Measured, idx: &[usize], target: Target, evals: &
 }
 
 #[cfg(test)]
-pub(super) mod tests {
+pub(crate) mod tests {
     use super::*;
 
     /// A fit of nothing, for tests of what is made from fits.

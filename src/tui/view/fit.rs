@@ -12,7 +12,7 @@ use super::panel::{Ranked, block, by_priority, draw_lines};
 use super::withheld::Withheld;
 use crate::lab::jobs::State;
 use crate::settings::units::{Dimension, show_small, with_uncertainty};
-use crate::study::fit::{self, ModelFit};
+use crate::study::fit::{self, Agreement, ModelFit};
 use crate::tui::app::App;
 use crate::tui::component::{Component, Ctx, MainView, Place, Prepared};
 use crate::tui::theme::Theme;
@@ -543,13 +543,12 @@ fn both_fits(v: &ModelFit, p: &ModelFit, width: usize, lines: &mut Ranked<'stati
             Span::styled(g.text(&p.verdict), theme.text),
         ]),
     ));
-    lines.push((
-        4,
-        Line::from(Span::styled(
-            g.text("the position fit's ± is the one to quote"),
-            theme.dim,
-        )),
-    ));
+    // Apart, neither fit is one to quote: the tracks are in doubt.
+    let (quote, style) = match p.agreement() {
+        Agreement::FitsDisagree => (Agreement::FitsDisagree.short_sentence(), theme.error),
+        _ => ("the position fit's ± is the one to quote", theme.dim),
+    };
+    lines.push((4, Line::from(Span::styled(g.text(quote), style))));
 }
 
 /// The Fit panel (the fits of the measured series) as a component.
@@ -590,5 +589,53 @@ impl MainView for FitView {
             (true, false) => vec![(&ChartPanel, Place::Chart), (&FIT_WITHHELD, Place::Side)],
             (false, _) => vec![(&ChartPanel, Place::Chart), (&FitPanel, Place::Side)],
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::tui::theme::Glyphs;
+
+    /// The lines of the two fits' table, as text.
+    fn both(v: &ModelFit, p: &ModelFit) -> Vec<String> {
+        let theme = Theme::new(Glyphs::new(false), true);
+        let mut lines: Ranked<'static> = Vec::new();
+        both_fits(v, p, 60, &mut lines, &theme);
+        lines.iter().map(|(_, l)| l.to_string()).collect()
+    }
+
+    #[test]
+    fn disagreeing_fits_are_no_fit_to_quote() {
+        let v = ModelFit {
+            fitted_to: "velocities",
+            mu: 0.162,
+            ..fit::blank_fit()
+        };
+        let p = ModelFit {
+            fitted_to: "positions",
+            mu: 0.131,
+            ..fit::blank_fit()
+        };
+        let agreeing = both(&v, &p).join("\n");
+        assert!(
+            agreeing.contains("the position fit's ± is the one to quote"),
+            "{agreeing}"
+        );
+        let apart = Some((0.131, 0.162));
+        let (v, p) = (
+            ModelFit {
+                fits_disagree: apart,
+                ..v
+            },
+            ModelFit {
+                fits_disagree: apart,
+                ..p
+            },
+        );
+        let text = both(&v, &p).join("\n");
+        assert!(!text.contains("one to quote"), "{text}");
+        assert!(text.contains("no verdict: x and v fits disagree"), "{text}");
+        assert!(text.contains("FITS DISAGREE"), "{text}");
     }
 }
