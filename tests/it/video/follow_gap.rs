@@ -9,7 +9,6 @@
 //! differ from the background, as a moving ball does (`Params::moved_share`).
 
 use groovelab::vision::{self, Frame, Params};
-use image::{Rgb, RgbImage};
 
 const W: u32 = 900;
 const H: u32 = 120;
@@ -56,29 +55,20 @@ fn balls(k: usize) -> Vec<(f64, f64)> {
 /// seeded noise of ±1 level.
 fn frame(k: usize) -> Frame {
     let centres = balls(k);
-    let mut img = RgbImage::new(W, H);
-    let mut seed = 0x51_7cc1_b727_u64.wrapping_add(k as u64 * 7919);
+    let seed = 0x51_7cc1_b727_u64.wrapping_add(k as u64 * 7919);
     let cover = |fx: f64, fy: f64, c: (f64, f64)| {
         (0.5 - ((fx - 0.5 - c.0).hypot(fy - 0.5 - c.1) - R)).clamp(0.0, 1.0)
     };
-    for y in 0..H {
-        for x in 0..W {
-            let (fx, fy) = (f64::from(x) + 0.5, f64::from(y) + 0.5);
-            let faint =
-                (0.5 - ((fx - 0.5 - FAINT_X).hypot(fy - 0.5 - CY) - FAINT_R)).clamp(0.0, 1.0);
-            let mut v = WALL * (1.0 - faint) + FAINT * faint;
-            for &c in &centres {
-                let b = cover(fx, fy, c);
-                v = v * (1.0 - b) + BALL * b;
-            }
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            let v = (v + (seed % 3) as f64 - 1.0).round().clamp(0.0, 255.0) as u8;
-            img.put_pixel(x, y, Rgb([v, v, v]));
+    super::drawn_frame((W, H), seed, 1, |x, y| {
+        let (fx, fy) = (f64::from(x) + 0.5, f64::from(y) + 0.5);
+        let faint = (0.5 - ((fx - 0.5 - FAINT_X).hypot(fy - 0.5 - CY) - FAINT_R)).clamp(0.0, 1.0);
+        let mut v = WALL * (1.0 - faint) + FAINT * faint;
+        for &c in &centres {
+            let b = cover(fx, fy, c);
+            v = v * (1.0 - b) + BALL * b;
         }
-    }
-    Frame::from_rgb(&img)
+        [v; 3]
+    })
 }
 
 /// Every fit of the clip tracked with `params`: its frame, centre and distance from

@@ -17,3 +17,28 @@ mod sharp_arc;
 pub(crate) mod tracker_looks;
 pub(crate) mod tracking;
 mod unfit;
+
+/// A frame `w × h` drawn pixel by pixel for the tracker's drawn cases: `colour(x, y)`
+/// (0–255 a channel) plus seeded noise of ±`spread` whole levels, the same on the three
+/// channels (so a flat wall has a scatter): `seed`'s xorshift, one step a pixel in
+/// row order.
+pub(crate) fn drawn_frame(
+    (w, h): (u32, u32),
+    mut seed: u64,
+    spread: u64,
+    mut colour: impl FnMut(u32, u32) -> [f64; 3],
+) -> groovelab::vision::Frame {
+    let mut img = image::RgbImage::new(w, h);
+    for y in 0..h {
+        for x in 0..w {
+            let c = colour(x, y);
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            let n = (seed % (2 * spread + 1)) as f64;
+            let level = |v: f64| (v + n - spread as f64).round().clamp(0.0, 255.0) as u8;
+            img.put_pixel(x, y, image::Rgb(c.map(level)));
+        }
+    }
+    groovelab::vision::Frame::from_rgb(&img)
+}

@@ -8,7 +8,6 @@
 //! lock is checked against it, and the ball's whole outline is taken instead.
 
 use groovelab::vision::{self, Frame, Params};
-use image::{Rgb, RgbImage};
 
 const W: u32 = 240;
 const H: u32 = 80;
@@ -35,27 +34,19 @@ fn frame(k: usize) -> Frame {
     let c = (X0 + STEP * k as f64, CY);
     let off = LIT_OFF * R / std::f64::consts::SQRT_2;
     let lit_c = (c.0 - off, c.1 - off);
-    let mut img = RgbImage::new(W, H);
-    let mut seed = 0x2545_f491_u64.wrapping_add(k as u64 * 7919);
-    for y in 0..H {
-        for x in 0..W {
-            let (fx, fy) = (f64::from(x) + 0.5, f64::from(y) + 0.5);
-            let cover = (0.5 - ((fx - c.0).hypot(fy - c.1) - R)).clamp(0.0, 1.0);
-            let lit =
-                (0.5 + (LIT_R * R - (fx - lit_c.0).hypot(fy - lit_c.1)) / 2.0).clamp(0.0, 1.0);
-            let ball = SHADED + (LIT - SHADED) * lit;
-            let mut v = WALL * (1.0 - cover) + ball * cover;
-            if fy > CY + RAIL_TOP * R {
-                v = RAIL;
-            }
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            let v = (v + (seed % 5) as f64 - 2.0).round().clamp(0.0, 255.0) as u8;
-            img.put_pixel(x, y, Rgb([v, v, v]));
-        }
-    }
-    Frame::from_rgb(&img)
+    let seed = 0x2545_f491_u64.wrapping_add(k as u64 * 7919);
+    super::drawn_frame((W, H), seed, 2, |x, y| {
+        let (fx, fy) = (f64::from(x) + 0.5, f64::from(y) + 0.5);
+        let cover = (0.5 - ((fx - c.0).hypot(fy - c.1) - R)).clamp(0.0, 1.0);
+        let lit = (0.5 + (LIT_R * R - (fx - lit_c.0).hypot(fy - lit_c.1)) / 2.0).clamp(0.0, 1.0);
+        let ball = SHADED + (LIT - SHADED) * lit;
+        let v = if fy > CY + RAIL_TOP * R {
+            RAIL
+        } else {
+            WALL * (1.0 - cover) + ball * cover
+        };
+        [v; 3]
+    })
 }
 
 /// Every radius fitted, px.

@@ -8,7 +8,6 @@
 //! solid disc stays.
 
 use groovelab::vision::{self, Frame, Params};
-use image::{Rgb, RgbImage};
 
 const W: u32 = 640;
 const H: u32 = 120;
@@ -36,29 +35,21 @@ const FRAMES: usize = 36;
 /// ball's top down to the rail, seeded noise of ±2.
 fn frame(k: usize) -> Frame {
     let c = (X0 + STEP * k as f64, CY);
-    let mut img = RgbImage::new(W, H);
-    let mut seed = 0x9e37_79b9_u64.wrapping_add(k as u64 * 7919);
-    for y in 0..H {
-        for x in 0..W {
-            let (fx, fy) = (f64::from(x) + 0.5, f64::from(y) + 0.5);
-            let cover = (0.5 - ((fx - c.0).hypot(fy - c.1) - R)).clamp(0.0, 1.0);
-            let wall = WALL[((x / SQUARE + y / SQUARE) % 2) as usize];
-            let mut v = wall * (1.0 - cover) + BALL * cover;
-            let behind = fx < c.0 && fx > c.0 - (1.0 + MESH_REACH) * R && cover == 0.0;
-            if behind && fy > CY - R && (x % 6 == 0 || y % 6 == 0) {
-                v = MESH;
-            }
-            if fy > CY + RAIL_TOP * R {
-                v = RAIL;
-            }
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            let v = (v + (seed % 5) as f64 - 2.0).round().clamp(0.0, 255.0) as u8;
-            img.put_pixel(x, y, Rgb([v, v, v]));
-        }
-    }
-    Frame::from_rgb(&img)
+    let seed = 0x9e37_79b9_u64.wrapping_add(k as u64 * 7919);
+    super::drawn_frame((W, H), seed, 2, |x, y| {
+        let (fx, fy) = (f64::from(x) + 0.5, f64::from(y) + 0.5);
+        let cover = (0.5 - ((fx - c.0).hypot(fy - c.1) - R)).clamp(0.0, 1.0);
+        let wall = WALL[((x / SQUARE + y / SQUARE) % 2) as usize];
+        let behind = fx < c.0 && fx > c.0 - (1.0 + MESH_REACH) * R && cover == 0.0;
+        let v = if fy > CY + RAIL_TOP * R {
+            RAIL
+        } else if behind && fy > CY - R && (x % 6 == 0 || y % 6 == 0) {
+            MESH
+        } else {
+            wall * (1.0 - cover) + BALL * cover
+        };
+        [v; 3]
+    })
 }
 
 /// Every radius fitted, px.

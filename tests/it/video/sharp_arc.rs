@@ -5,7 +5,6 @@
 //! ball (`Params::min_coverage_sharp`); its centre lies where the truth says.
 
 use groovelab::vision::{self, Frame, Params};
-use image::{Rgb, RgbImage};
 
 const W: u32 = 240;
 const H: u32 = 90;
@@ -25,23 +24,15 @@ const FRAMES: usize = 36;
 /// coverage, seeded noise of ±2 levels.
 fn frame(k: usize) -> (Frame, (f64, f64)) {
     let c = (X0 + STEP * k as f64, CY);
-    let mut img = RgbImage::new(W, H);
-    let mut seed = 0x9e37_79b9_u64.wrapping_add(k as u64 * 7919);
-    for y in 0..H {
-        for x in 0..W {
-            let (fx, fy) = (f64::from(x) + 0.5, f64::from(y) + 0.5);
-            let band = fy > CY - R - 4.0 && fy < CY - R + 5.0;
-            let wall = if fx < SPLIT || band { LIGHT } else { DARK };
-            let cover = (0.5 - ((fx - 0.5 - c.0).hypot(fy - 0.5 - c.1) - R)).clamp(0.0, 1.0);
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            let v = wall * (1.0 - cover) + DARK * cover + (seed % 5) as f64 - 2.0;
-            let v = v.round().clamp(0.0, 255.0) as u8;
-            img.put_pixel(x, y, Rgb([v, v, v]));
-        }
-    }
-    (Frame::from_rgb(&img), c)
+    let seed = 0x9e37_79b9_u64.wrapping_add(k as u64 * 7919);
+    let frame = super::drawn_frame((W, H), seed, 2, |x, y| {
+        let (fx, fy) = (f64::from(x) + 0.5, f64::from(y) + 0.5);
+        let band = fy > CY - R - 4.0 && fy < CY - R + 5.0;
+        let wall = if fx < SPLIT || band { LIGHT } else { DARK };
+        let cover = (0.5 - ((fx - 0.5 - c.0).hypot(fy - 0.5 - c.1) - R)).clamp(0.0, 1.0);
+        [wall * (1.0 - cover) + DARK * cover; 3]
+    });
+    (frame, c)
 }
 
 /// Per frame where the ball lies wholly over the dark wall: the tracked centre's

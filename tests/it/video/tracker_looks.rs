@@ -5,7 +5,6 @@
 //! along a level groove), and tracked in memory.
 
 use groovelab::vision::{self, Frame, Params, Roi};
-use image::{Rgb, RgbImage};
 
 /// A small scene: wall colour, an optional rail board (top row, colour), balls
 /// (centre x at frame k, y, radius, colour), extra clutter discs that stay put.
@@ -23,7 +22,6 @@ const H: u32 = 120;
 
 /// Frame `k` of `look`, and each ball's true centre.
 fn frame(look: &Look, k: usize) -> (Frame, Vec<(f64, f64)>) {
-    let mut img = RgbImage::new(W, H);
     let centres: Vec<(f64, f64)> = look
         .balls
         .iter()
@@ -38,35 +36,25 @@ fn frame(look: &Look, k: usize) -> (Frame, Vec<(f64, f64)>) {
         .chain(look.clutter.iter().copied())
         .collect();
     // Seeded noise of ±2 levels, so a flat wall has a scatter.
-    let mut seed = 0x2545_f491_u64.wrapping_add(k as u64 * 7919);
-    for y in 0..H {
-        for x in 0..W {
-            let mut c = look.wall;
-            for &(cx, cy, r, col) in &discs {
-                let d = (f64::from(x) - cx).hypot(f64::from(y) - cy);
-                let cover = (0.5 - (d - r)).clamp(0.0, 1.0);
-                for i in 0..3 {
-                    c[i] = c[i] * (1.0 - cover) + col[i] * cover;
-                }
+    let seed = 0x2545_f491_u64.wrapping_add(k as u64 * 7919);
+    let frame = super::drawn_frame((W, H), seed, 2, |x, y| {
+        let mut c = look.wall;
+        for &(cx, cy, r, col) in &discs {
+            let d = (f64::from(x) - cx).hypot(f64::from(y) - cy);
+            let cover = (0.5 - (d - r)).clamp(0.0, 1.0);
+            for i in 0..3 {
+                c[i] = c[i] * (1.0 - cover) + col[i] * cover;
             }
-            if let Some((top, col)) = look.rail {
-                let cover = (f64::from(y) + 0.5 - top).clamp(0.0, 1.0);
-                for i in 0..3 {
-                    c[i] = c[i] * (1.0 - cover) + col[i] * cover;
-                }
-            }
-            seed ^= seed << 13;
-            seed ^= seed >> 7;
-            seed ^= seed << 17;
-            let n = (seed % 5) as f64 - 2.0;
-            img.put_pixel(
-                x,
-                y,
-                Rgb(c.map(|v| (v + n).round().clamp(0.0, 255.0) as u8)),
-            );
         }
-    }
-    (Frame::from_rgb(&img), centres)
+        if let Some((top, col)) = look.rail {
+            let cover = (f64::from(y) + 0.5 - top).clamp(0.0, 1.0);
+            for i in 0..3 {
+                c[i] = c[i] * (1.0 - cover) + col[i] * cover;
+            }
+        }
+        c
+    });
+    (frame, centres)
 }
 
 /// Tracks `frames` frames of `look` with `params`: per frame and ball, the distance
