@@ -50,7 +50,14 @@ pub fn run(scene: &SceneArgs, data: &DataArgs, args: &TrackArgs) -> Result<Strin
     bar.finish();
     let done: Tracked = match done {
         Ok(done) => done.ok_or(CliError::Interrupted)?,
-        Err(refused) => return Err(refused_drawn(&args.video, refused, args.overlay.as_deref())),
+        Err(refused) => {
+            return Err(refused_drawn(
+                &args.video,
+                refused,
+                args.overlay.as_deref(),
+                options.fps,
+            ));
+        }
     };
     let drawn = match &args.overlay {
         Some(path) => {
@@ -102,16 +109,18 @@ pub fn run(scene: &SceneArgs, data: &DataArgs, args: &TrackArgs) -> Result<Strin
 
 /// A refused tracking's error; with `--overlay FILE`, what the tracker found before
 /// it refused is drawn there over a pixel grid first and the error says so (an
-/// overlay that cannot be written leaves the error as it was).
+/// overlay that cannot be written leaves the error as it was). `fps`: `--fps`, the
+/// rate of a folder's overlay video.
 fn refused_drawn(
     video: &std::path::Path,
     refused: tracked::Refused,
     overlay_file: Option<&std::path::Path>,
+    fps: Option<f64>,
 ) -> CliError {
     let (Some(file), false) = (overlay_file, refused.found.is_empty()) else {
         return refused.error.into();
     };
-    let drawing = overlay::Drawing::refused(refused.found);
+    let drawing = overlay::Drawing::refused(refused.found, fps);
     match overlay::write_overlay(video, &drawing, file) {
         Ok(()) => CliError::RefusedDrawn {
             error: Box::new(refused.error),

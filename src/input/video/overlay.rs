@@ -86,12 +86,12 @@ impl Drawing {
     }
 
     /// What the tracker found before it refused (each fit at its own radius), over
-    /// a pixel grid.
-    pub fn refused(found: FitsFound) -> Drawing {
+    /// a pixel grid; `fps` the rate given (`--fps`: a folder says none), else 30.
+    pub fn refused(found: FitsFound, fps: Option<f64>) -> Drawing {
         Drawing {
             found,
             grid: true,
-            fps: 30.0,
+            fps: fps.unwrap_or(30.0),
         }
     }
 }

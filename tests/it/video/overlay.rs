@@ -226,4 +226,21 @@ fn a_refused_tracking_draws_what_was_found_over_a_pixel_grid() {
     let rows = 15..48;
     assert!(rows.clone().all(|y| lighter(100, y)));
     assert!(rows.clone().all(|y| !lighter(97, y) && !lighter(103, y)));
+    // As a video: every frame, at the folder's --fps (a folder says no rate).
+    let clip = dir.join("check.mp4");
+    let (code, _, err) = run_with(args(Some(&clip)));
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("pixel grid in"), "{err}");
+    let probe = std::process::Command::new("ffprobe")
+        .args(["-v", "error", "-select_streams", "v:0", "-count_frames"])
+        .args([
+            "-show_entries",
+            "stream=r_frame_rate,nb_read_frames",
+            "-of",
+            "csv=p=0",
+        ])
+        .arg(&clip)
+        .output()
+        .unwrap();
+    assert_eq!(String::from_utf8_lossy(&probe.stdout).trim(), "100/1,30");
 }
