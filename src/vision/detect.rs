@@ -266,51 +266,8 @@ fn open(mask: &mut [bool], w: usize, h: usize, k: usize) {
 /// Each blob of `mask` opened by a square of `2k + 1` coarse pixels, k its height
 /// times `share` (rounded down; blobs under `1 / share` tall are left as they are).
 fn open_each(mask: &mut [bool], w: usize, h: usize, share: f64) {
-    let mut seen = vec![false; mask.len()];
-    let mut stack = Vec::new();
-    for start in 0..mask.len() {
-        if !mask.get(start).copied().unwrap_or(false) || seen.get(start).copied().unwrap_or(true) {
-            continue;
-        }
-        // The blob's pixels, by a flood fill (4-connected, as `blobs`).
-        let mut pixels = Vec::new();
-        stack.push(start);
-        if let Some(s) = seen.get_mut(start) {
-            *s = true;
-        }
-        while let Some(i) = stack.pop() {
-            pixels.push(i);
-            let (x, y) = (i % w, i / w);
-            let mut next = Vec::with_capacity(4);
-            if x > 0 {
-                next.push(i - 1);
-            }
-            if x + 1 < w {
-                next.push(i + 1);
-            }
-            if y > 0 {
-                next.push(i - w);
-            }
-            if y + 1 < h {
-                next.push(i + w);
-            }
-            for j in next {
-                if mask.get(j).copied().unwrap_or(false) && !seen.get(j).copied().unwrap_or(true) {
-                    if let Some(s) = seen.get_mut(j) {
-                        *s = true;
-                    }
-                    stack.push(j);
-                }
-            }
-        }
-        let (x0, x1) = pixels
-            .iter()
-            .map(|i| i % w)
-            .fold((usize::MAX, 0), |(a, b), x| (a.min(x), b.max(x)));
-        let (y0, y1) = pixels
-            .iter()
-            .map(|i| i / w)
-            .fold((usize::MAX, 0), |(a, b), y| (a.min(y), b.max(y)));
+    for pixels in components(&mut mask.to_vec(), w, h) {
+        let Region { x0, x1, y0, y1, .. } = Region::of(&pixels, w);
         let k = (share * (y1 - y0 + 1) as f64) as usize;
         if k == 0 {
             continue;
@@ -343,9 +300,31 @@ struct Region {
     area: usize,
 }
 
-/// The 4-connected components of `mask` (cleared as they are taken).
+impl Region {
+    /// The box and area of the pixels `pixels` (indices into a mask `w` wide).
+    fn of(pixels: &[usize], w: usize) -> Region {
+        let mut c = Region {
+            x0: usize::MAX,
+            x1: 0,
+            y0: usize::MAX,
+            y1: 0,
+            area: pixels.len(),
+        };
+        for &i in pixels {
+            let (x, y) = (i % w, i / w);
+            c.x0 = c.x0.min(x);
+            c.x1 = c.x1.max(x);
+            c.y0 = c.y0.min(y);
+            c.y1 = c.y1.max(y);
+        }
+        c
+    }
+}
+
+/// The 4-connected components of `mask` (cleared as they are taken), each its
+/// pixels' indices.
 #[allow(clippy::indexing_slicing)] // neighbours pushed only when inside the w × h mask
-fn blobs(mask: &mut [bool], w: usize, h: usize) -> Vec<Region> {
+fn components(mask: &mut [bool], w: usize, h: usize) -> Vec<Vec<usize>> {
     let mut out = Vec::new();
     let mut stack = Vec::new();
     for start in 0..mask.len() {
@@ -354,20 +333,10 @@ fn blobs(mask: &mut [bool], w: usize, h: usize) -> Vec<Region> {
         }
         mask[start] = false;
         stack.push(start);
-        let mut c = Region {
-            x0: usize::MAX,
-            x1: 0,
-            y0: usize::MAX,
-            y1: 0,
-            area: 0,
-        };
+        let mut pixels = Vec::new();
         while let Some(i) = stack.pop() {
+            pixels.push(i);
             let (x, y) = (i % w, i / w);
-            c.x0 = c.x0.min(x);
-            c.x1 = c.x1.max(x);
-            c.y0 = c.y0.min(y);
-            c.y1 = c.y1.max(y);
-            c.area += 1;
             let mut push = |j: usize| {
                 if mask[j] {
                     mask[j] = false;
@@ -387,9 +356,18 @@ fn blobs(mask: &mut [bool], w: usize, h: usize) -> Vec<Region> {
                 push(i + w);
             }
         }
-        out.push(c);
+        out.push(pixels);
     }
     out
+}
+
+/// The 4-connected components of `mask` (cleared as they are taken): their boxes
+/// and areas.
+fn blobs(mask: &mut [bool], w: usize, h: usize) -> Vec<Region> {
+    components(mask, w, h)
+        .iter()
+        .map(|pixels| Region::of(pixels, w))
+        .collect()
 }
 
 /// The smooth background of a reduced frame (a quadratic surface fitted to every
