@@ -383,16 +383,20 @@ impl Tracker {
     /// about its solid core.
     fn fit_blob(&mut self, frame: &Frame, b: &Blob, f: f64) -> Result<Outline, LeftOut> {
         let p = self.params;
+        let band = (1.5 * f).max(4.0);
+        // The mark or a highlight fitted in a ball's blob (of radius `blob`): not the
+        // ball.
+        let whole = |o: Outline, blob: f64| {
+            if o.circle.r < p.smallest_in_blob * blob {
+                Err(LeftOut::Poor)
+            } else {
+                Ok(o)
+            }
+        };
+        let guess = b.guess();
         let fit = self
-            .refine(frame, b.guess(), (1.5 * f).max(4.0))
-            .and_then(|o| {
-                // The mark or a highlight fitted in a ball's blob: not the ball.
-                if o.circle.r < p.smallest_in_blob * 0.5 * b.width() {
-                    Err(LeftOut::Poor)
-                } else {
-                    Ok(o)
-                }
-            });
+            .refine(frame, guess, band)
+            .and_then(|o| whole(o, guess.r));
         // A blob with a ragged fringe (`Blob::core`): the ball is its solid core.
         // Once the radius is known, only in a blob wider than a ball: the opened
         // blob of a ball that matches the wall in places (same-brightness wood
@@ -403,15 +407,9 @@ impl Tracker {
                     .radius
                     .is_none_or(|r| b.width() > p.wide_blob * 2.0 * r) =>
             {
-                self.refine(frame, core, (1.5 * f).max(4.0))
+                self.refine(frame, core, band)
                     .map_err(|_| e)
-                    .and_then(|o| {
-                        if o.circle.r < p.smallest_in_blob * core.r {
-                            Err(LeftOut::Poor)
-                        } else {
-                            Ok(o)
-                        }
-                    })
+                    .and_then(|o| whole(o, core.r))
             }
             (fit, _) => fit,
         }
@@ -551,9 +549,9 @@ impl Tracker {
             let moved = l
                 .last()
                 .is_some_and(|(_, c)| (pred.x - c.x).hypot(pred.y - c.y) > 0.1 * pred.r);
-            // A sharp arc of the balls' radius (`min_coverage_sharp`) is a ball's
-            // own edge: a ball of the wall's brightness differs from the background
-            // only along it.
+            // A sharp arc (`sharp_rms`) of the balls' radius (`sharp_radius`) is a
+            // ball's own edge: a ball of the wall's brightness differs from the
+            // background only along it.
             let (p, known) = (self.params, self.radius);
             let sharp = |o: &Outline| {
                 o.rms <= p.sharp_rms
