@@ -336,7 +336,7 @@ fn notes(
         n.push(ball_line(b, tracks.t.len()));
     }
     n.push(format!(
-        "x along the groove toward the right, y up, in metres (position scatter ≈ {}); t in s from the first frame",
+        "x along the groove toward the right, y up, in metres (position scatter ≈ {}); each centre set on its ball's line across the groove (the median of its frames'); t in s from the first frame",
         show_small(scatter(tracks), Dimension::Length)
     ));
     n
