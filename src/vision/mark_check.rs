@@ -50,6 +50,8 @@ pub fn checked(frames: &[FrameFixes], p: &MarkChecks) -> Vec<FrameFixes> {
         // Last, single marks that do not behave as a drawn mark's, judged among the
         // marks kept (the checks of the whole track above judge the marks as found:
         // leaving out some first would change their verdict on the others).
+        let off = off_the_spin(&out, slot, p);
+        left_out(&mut out, slot, off);
         let stayed = stayed_while_rolling(&out, slot, p);
         left_out(&mut out, slot, stayed);
         let lone = unconfirmed(&out, slot, p);
@@ -448,6 +450,8 @@ fn still_marks(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Vec<usize>
 struct BallFit {
     k: usize,
     centre: (f64, f64),
+    /// The fitted radius, px, and the rolling radius kR.
+    r: f64,
     kr: f64,
     mark: Option<(f64, f64)>,
 }
@@ -476,6 +480,7 @@ fn seen(frames: &[FrameFixes], slot: usize) -> Vec<BallFit> {
             Some(BallFit {
                 k,
                 centre: (c.x, c.y),
+                r: c.r,
                 kr: rolling_radius(fix),
                 mark: offset(fix),
             })
@@ -565,4 +570,84 @@ fn unconfirmed(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Vec<usize>
 /// The median of `v`, `None` when empty.
 fn middle(v: &[f64]) -> Option<f64> {
     super::tracker::median(v)
+}
+
+/// The angle from `a` to `b` turned the short way, rad (−π … π).
+fn turn_between(a: f64, b: f64) -> f64 {
+    (b - a + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU) - std::f64::consts::PI
+}
+
+/// Each fit's speed along the picture's x, px a frame, from the fits either side of
+/// it (or the one beside it at the ends); 0 for a ball seen once.
+fn speeds(fits: &[BallFit]) -> Vec<f64> {
+    (0..fits.len())
+        .map(|i| {
+            let a = fits.get(i.saturating_sub(1)).or(fits.get(i));
+            let b = fits.get(i + 1).or(fits.get(i));
+            match (a, b) {
+                (Some(a), Some(b)) if b.k > a.k => (b.centre.0 - a.centre.0) / (b.k - a.k) as f64,
+                _ => 0.0,
+            }
+        })
+        .collect()
+}
+
+/// The marked frames of `slot` whose mark lies off where the ball's spin puts it
+/// ([`MarkChecks::spin_frames`]): every other pair of marks a frame or two apart whose
+/// step is under a quarter turn of roll gives a rate of turning, and carries its
+/// nearer mark's angle on at that rate; a mark within reach of such pairs is left out
+/// when it agrees with none. The rate may change between them as much as the ball's
+/// speed does: by Δv / (kR) while it rolls, by 5 k Δv / (2R) while friction on the
+/// rails, kR below the centre, slides it (spin from the same force that slows it).
+fn off_the_spin(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Vec<usize> {
+    let fits = seen(frames, slot);
+    let speed = speeds(&fits);
+    // (frame, angle, speed along x, how much the rate may change per px/frame of it).
+    let marks: Vec<(usize, f64, f64, f64)> = fits
+        .iter()
+        .zip(&speed)
+        .filter_map(|(f, &v)| {
+            let r = f.r.max(1.0);
+            let k = (f.kr / r).clamp(0.2, 1.0);
+            Some((f.k, f.angle()?, v, (1.0 / k + 2.5 * k) / r))
+        })
+        .collect();
+    let marked: Vec<&BallFit> = fits.iter().filter(|f| f.mark.is_some()).collect();
+    // (first frame, its angle, second frame, its angle, turn per frame).
+    let pairs: Vec<(usize, f64, usize, f64, f64)> = marks
+        .windows(2)
+        .zip(marked.windows(2))
+        .filter_map(|(w, f)| {
+            let ([b, c], [fb, fc]) = (w, f) else {
+                return None;
+            };
+            let apart = c.0 - b.0;
+            (apart <= 2 && fb.roll_to(fc) < std::f64::consts::FRAC_PI_2)
+                .then(|| (b.0, b.1, c.0, c.1, turn_between(b.1, c.1) / apart as f64))
+        })
+        .collect();
+    let at = |k: usize| marks.iter().find(|m| m.0 == k);
+    let mut out = Vec::new();
+    for &(ka, ta, va, per) in &marks {
+        let (mut judged, mut agrees) = (false, false);
+        for &(kb, tb, kc, tc, rate) in &pairs {
+            let (near, t_near) = if kb.abs_diff(ka) <= kc.abs_diff(ka) {
+                (kb, tb)
+            } else {
+                (kc, tc)
+            };
+            if kb == ka || kc == ka || near.abs_diff(ka) > p.spin_frames {
+                continue;
+            }
+            judged = true;
+            let steps = ka as f64 - near as f64;
+            let dv = at(near).map_or(0.0, |m| (m.2 - va).abs());
+            let off = turn_between(t_near + rate * steps, ta).abs();
+            agrees |= off <= p.spin_slack + (p.spin_drift + per * dv) * steps.abs();
+        }
+        if judged && !agrees {
+            out.push(ka);
+        }
+    }
+    out
 }

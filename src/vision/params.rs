@@ -312,6 +312,21 @@ pub struct MarkChecks {
     /// rail), or a compressed clip's trace of the mark of the frame before, agrees
     /// with neither neighbour. Default 2.
     pub confirm_frames: usize,
+    /// A mark must lie where its ball's spin puts it, wherever that spin is told by
+    /// two marks of the ball a frame or two apart (a step of under a quarter turn of
+    /// roll, so the turn between them is read without a whole turn's doubt) at most
+    /// this many frames from it: the angle carried on from either at their rate of
+    /// turning. A ball's spin changes slowly (friction on the rails; an impact of two
+    /// balls leaves it as it was), so a spot elsewhere on the disc is something else:
+    /// a spot that turns up where the mark was a whole turn ago, at a fast ball's
+    /// rate of a turn every few frames, agrees with every neighbour too far off to be
+    /// judged by `confirm_frames`. Default 4 …
+    pub spin_frames: usize,
+    /// … within this many radians … Default 0.6 …
+    pub spin_slack: f64,
+    /// … and this many more per frame from the nearer of the two (the rate read off
+    /// two noisy angles, and friction changing it). Default 0.15.
+    pub spin_drift: f64,
 }
 
 impl Default for MarkChecks {
@@ -337,6 +352,9 @@ impl Default for MarkChecks {
             stay_roll: 2.0,
             stay_within: 0.12,
             confirm_frames: 2,
+            spin_frames: 4,
+            spin_slack: 0.6,
+            spin_drift: 0.15,
         }
     }
 }
