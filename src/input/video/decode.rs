@@ -36,8 +36,11 @@ pub(super) fn frames(path: &Path, info: &Info, every: usize) -> Result<Frames, V
             "passthrough",
         ]);
     }
+    // `-avioflags direct`: each frame's packet written to the pipe at once, not
+    // copied through ffmpeg's 32 KB output buffer first (a copy of every byte).
     let mut child = cmd
-        .args(["-f", "rawvideo", "-pix_fmt", "yuv420p", "pipe:1"])
+        .args(["-f", "rawvideo", "-pix_fmt", "yuv420p"])
+        .args(["-avioflags", "direct", "pipe:1"])
         .stdin(Stdio::null())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
@@ -50,6 +53,7 @@ pub(super) fn frames(path: &Path, info: &Info, every: usize) -> Result<Frames, V
         )
     };
     let stdout = child.stdout.take().ok_or_else(|| piped("no stdout"))?;
+    widen(&stdout);
     let mut stderr = child.stderr.take().ok_or_else(|| piped("no stderr"))?;
     let messages = std::thread::spawn(move || {
         let mut s = String::new();
@@ -147,6 +151,21 @@ impl Iterator for Stream {
         }
     }
 }
+
+/// The pipe's room, bytes: 1 MiB (Linux's most for a user without privileges).
+const PIPE_BYTES: usize = 1 << 20;
+
+/// The pipe from ffmpeg widened from 64 KiB to [`PIPE_BYTES`]: ffmpeg and the
+/// reader then wait on each other, and wake each other, every megabyte instead of
+/// every 64 KiB (48 times a 1080p frame). Refused (an older kernel, a lower limit):
+/// the pipe stays as it was, only slower.
+#[cfg(target_os = "linux")]
+fn widen(pipe: &ChildStdout) {
+    let _ = rustix::pipe::fcntl_setpipe_size(pipe, PIPE_BYTES);
+}
+
+#[cfg(not(target_os = "linux"))]
+fn widen(_pipe: &ChildStdout) {}
 
 /// Plane buffers of frames the tracker is done with ([`recycle`]), read into again
 /// while a video streams: a new 3 MB buffer per 1080p frame is the system's work of
