@@ -43,13 +43,15 @@ impl Small {
         let cxs: Vec<usize> = (0..w)
             .map(|bx| ((bx * f + f / 2) / 2).min(cw.saturating_sub(1)))
             .collect();
+        // Each plane from its row's start on (a short plane: its missing samples
+        // grey), a row's samples in one extend, without a check of room per sample.
+        let sample = |plane: &[u8], cx: usize| plane.get(cx).map_or(128.0, |&c| f32::from(c));
         for by in 0..h {
             let cy = ((by * f + f / 2) / 2).min(ch.saturating_sub(1));
-            for &cx in &cxs {
-                let i = cy * cw + cx;
-                u.push(frame.u.get(i).map_or(128.0, |&c| f32::from(c)));
-                v.push(frame.v.get(i).map_or(128.0, |&c| f32::from(c)));
-            }
+            let ur = frame.u.get(cy * cw..).unwrap_or_default();
+            let vr = frame.v.get(cy * cw..).unwrap_or_default();
+            u.extend(cxs.iter().map(|&cx| sample(ur, cx)));
+            v.extend(cxs.iter().map(|&cx| sample(vr, cx)));
         }
         Small {
             width: w,
@@ -94,9 +96,20 @@ impl Learner {
 
     /// Offers one more frame (in the clip's order).
     pub fn push(&mut self, frame: &Frame) {
+        let f = factor(frame.width(), self.params.coarse_width);
+        self.offer(|| Small::of(frame, f));
+    }
+
+    /// As [`Learner::push`], the frame already reduced by [`factor`] of its width
+    /// and `coarse_width` (reduced once, for the learner and the tracker's look).
+    pub fn push_small(&mut self, small: &Small) {
+        self.offer(|| small.clone());
+    }
+
+    /// Offers one more frame, reduced by `small` only when it is one kept.
+    fn offer(&mut self, small: impl FnOnce() -> Small) {
         if self.seen.is_multiple_of(self.every) {
-            let f = factor(frame.width(), self.params.coarse_width);
-            let small = Small::of(frame, f);
+            let small = small();
             // Frames of another size than the first are not of this clip's bench.
             if self
                 .kept

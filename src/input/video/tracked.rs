@@ -11,6 +11,7 @@ use crate::settings::units::{Dimension, show, show_small, with_uncertainty};
 use crate::study::Progress;
 use crate::vision::thumbs::{Thumbs, VideoView};
 use crate::vision::tracks::{BallTrack, Tracks};
+use crate::vision::prepared::Prepared;
 use crate::vision::{self, Tracker, overlay};
 
 /// What a tracking is asked for: the balls' radius R (m; the scale comes from it),
@@ -163,13 +164,14 @@ fn stream(
     let mut thumbs = Thumbs::sized(info.width, info.height, info.frames);
     let no_thumbs = thumbs.clone();
     let mut numbers = Vec::new();
-    let mut waiting: std::collections::VecDeque<vision::Frame> = Default::default();
+    let mut waiting: std::collections::VecDeque<(vision::Frame, Prepared)> = Default::default();
     // The frames are read (piped from ffmpeg, or decoded from a folder) on a thread
     // of their own, a few ahead, while this one tracks: reading a 1080p frame is a
     // copy of 3 MB. Dropping the receiver (an error, Ctrl-C) ends the reader at its
     // next frame, and the decoder with it. The app's small pictures are made there
     // too (each frame's box averages, in the frames' order: what the tracker is
-    // given), off the tracker's thread.
+    // given), off the tracker's thread; and so is each frame's own part of the
+    // tracker's look (`Prepared`: reduced once for the learner and the look).
     let (sender, received) = std::sync::mpsc::sync_channel(READ_AHEAD);
     let reader = std::thread::spawn(move || {
         let mut k = 0usize;
@@ -178,6 +180,10 @@ fn stream(
                 thumbs.push(k, &img.luma);
                 k += 1;
             }
+            let frame = frame.map(|(n, img)| {
+                let prep = Prepared::of(&img, &params);
+                (n, img, prep)
+            });
             if sender.send(frame).is_err() {
                 break;
             }
@@ -188,24 +194,24 @@ fn stream(
         if progress.cancelled() {
             return Ok(None);
         }
-        let (n, img) = frame?;
-        tracker.learn(&img);
+        let (n, img, prep) = frame?;
+        tracker.learn_prepared(&img, &prep);
         numbers.push(n);
-        waiting.push_back(img);
+        waiting.push_back((img, prep));
         if waiting.len() > ahead
-            && let Some(first) = waiting.pop_front()
+            && let Some((first, prep)) = waiting.pop_front()
         {
-            tracker.push(&first);
+            tracker.push_prepared(&first, prep);
             super::decode::recycle(first);
         }
         let seen = numbers.len() as u64;
         progress.tick(seen, total.max(seen));
     }
-    for img in waiting {
+    for (img, prep) in waiting {
         if progress.cancelled() {
             return Ok(None);
         }
-        tracker.push(&img);
+        tracker.push_prepared(&img, prep);
     }
     // The reader is done (the frames ran out); a reader that panicked leaves no
     // pictures, the tracks stand.
