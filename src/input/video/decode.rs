@@ -173,8 +173,10 @@ fn widen(_pipe: &ChildStdout) {}
 /// while a video streams: a new 3 MB buffer per 1080p frame is the system's work of
 /// mapping and zeroing its pages, then of unmapping them.
 static SPARE: Mutex<Vec<Vec<u8>>> = Mutex::new(Vec::new());
-/// Most buffers kept spare (the planes of a few frames: the reader runs a few ahead).
-const SPARE_MAX: usize = 12;
+/// Most buffers kept spare (the planes of the frames the reader may run ahead,
+/// `tracked::READ_BYTES`, and a few more: a 1080p frame is three buffers). Never
+/// more than were in use at once.
+const SPARE_MAX: usize = 3 * 24;
 /// Streams open: with none, a buffer given back is freed, nothing is kept.
 static STREAMS: AtomicUsize = AtomicUsize::new(0);
 

@@ -9,9 +9,9 @@
 use super::{Info, Limits, RateSource, VideoError, VideoProblem};
 use crate::settings::units::{Dimension, show, show_small, with_uncertainty};
 use crate::study::Progress;
+use crate::vision::prepared::Prepared;
 use crate::vision::thumbs::{Thumbs, VideoView};
 use crate::vision::tracks::{BallTrack, Tracks};
-use crate::vision::prepared::Prepared;
 use crate::vision::{self, Tracker, overlay};
 
 /// What a tracking is asked for: the balls' radius R (m; the scale comes from it),
@@ -70,7 +70,17 @@ pub fn track(
     options: &Options,
     progress: &dyn Progress,
 ) -> Result<Option<Tracked>, VideoError> {
-    track_or_found(video, options, progress).map_err(|refused| refused.error)
+    track_or_found(video, options, progress, Pictures::Made).map_err(|refused| refused.error)
+}
+
+/// Whether a tracking makes the app's small pictures of the frames
+/// (`Tracked::view`'s thumbs): the command line's `track` writes tracks and draws
+/// its overlay from the full frames, and does without them (a box average of every
+/// frame, on the reader's thread).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Pictures {
+    Made,
+    Skipped,
 }
 
 /// A tracking that gave no tracks: why, and what the tracker found in each frame
@@ -87,11 +97,13 @@ pub type FitsFound = Vec<Vec<Option<overlay::Drawn>>>;
 
 /// As [`track`], and when the tracker is unsure (no tracks), what it found in each
 /// frame, for `track --overlay` to draw: a student sees where it went wrong and
-/// reads `--roi` and `--ball-at` off the picture.
+/// reads `--roi` and `--ball-at` off the picture. `pictures`: whether the app's
+/// pictures are made (skipped, `view` holds none).
 pub fn track_or_found(
     video: &std::path::Path,
     options: &Options,
     progress: &dyn Progress,
+    pictures: Pictures,
 ) -> Result<Option<Tracked>, Refused> {
     let nothing = |error: VideoError| Refused {
         error,
@@ -113,7 +125,7 @@ pub fn track_or_found(
         return Err(nothing(err(VideoProblem::NoRate)));
     };
     let Some((tracker, numbers, thumbs)) =
-        stream(frames, &info, options, progress).map_err(nothing)?
+        stream(frames, &info, options, progress, pictures).map_err(nothing)?
     else {
         return Ok(None);
     };
@@ -151,6 +163,7 @@ fn stream(
     info: &Info,
     options: &Options,
     progress: &dyn Progress,
+    pictures: Pictures,
 ) -> Result<Option<(Tracker, Vec<u64>, Thumbs)>, VideoError> {
     let params = options.params();
     let mut tracker = Tracker::new(params);
@@ -172,11 +185,11 @@ fn stream(
     // too (each frame's box averages, in the frames' order: what the tracker is
     // given), off the tracker's thread; and so is each frame's own part of the
     // tracker's look (`Prepared`: reduced once for the learner and the look).
-    let (sender, received) = std::sync::mpsc::sync_channel(READ_AHEAD);
+    let (sender, received) = std::sync::mpsc::sync_channel(read_ahead(info.width, info.height));
     let reader = std::thread::spawn(move || {
         let mut k = 0usize;
         for frame in frames {
-            if let Ok((_, img)) = &frame {
+            if let (Ok((_, img)), Pictures::Made) = (&frame, pictures) {
                 thumbs.push(k, &img.luma);
                 k += 1;
             }
@@ -240,8 +253,17 @@ fn found(tracker: &Tracker) -> FitsFound {
         .collect()
 }
 
-/// Frames the reader may decode ahead of the tracker (on top of its look-ahead).
-const READ_AHEAD: usize = 4;
+/// Most bytes of frames the reader may decode ahead of the tracker (on top of its
+/// look-ahead): 64 MiB (21 frames of 1080p). Room for ffmpeg and the reader to go
+/// on while the tracker is busy with one frame or a new background (some 0.1 s of
+/// 1080p): four frames' room left the other core idle for most of it.
+const READ_BYTES: usize = 64 << 20;
+
+/// Frames of `width × height` the reader may decode ahead: [`READ_BYTES`] of
+/// them, at least 4.
+fn read_ahead(width: usize, height: usize) -> usize {
+    (READ_BYTES / vision::Frame::bytes(width, height).max(1)).max(4)
+}
 
 /// Most bytes of decoded frames held at once while the background learns ahead of
 /// the tracker: 256 MiB (82 frames of 1080p, 185 of 720p, 420 of 480p).
