@@ -215,11 +215,11 @@ impl Tracker {
         let p = self.params;
         let (made_small, made_look) = made.unzip();
         // The frame reduced once for both looks where they reduce it alike.
-        let small = self.background.as_ref().map(|bg| match made_small {
+        let mut small = self.background.as_ref().map(|bg| match made_small {
             Some(s) if s.factor == bg.image.factor => s,
             _ => Small::of(frame, bg.image.factor),
         });
-        let mut coarse = match (made_look, &small) {
+        let mut coarse = match (made_look, &mut small) {
             (Some(c), _) => c,
             (None, Some(s)) => prepared::luma_look(frame, s, p.min_radius),
             (None, None) => detect::coarse(&frame.luma, p.min_radius),
