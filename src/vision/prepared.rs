@@ -8,30 +8,29 @@
 use super::background::{self, Small};
 use super::detect::{self, Coarse};
 use super::frame::Frame;
-use super::gray::Levels;
+use super::gray::{Gray, Levels};
 use super::params::Params;
-use super::tracker::pixel_noise;
 
 /// A frame's own part of its look (see the module's note).
 #[derive(Clone, Debug)]
-pub struct Prepared {
+pub struct PreparedLook {
     /// The parameters it was made for: a tracker with others makes its own.
     pub params: Params,
     /// The frame reduced by the learner's factor (`background::factor`).
     pub small: Small,
     /// The look against a smooth surface of luma (`detect::coarse`).
     pub luma_look: Coarse,
-    /// The frame's pixel noise (`tracker::pixel_noise`).
+    /// The frame's pixel noise ([`pixel_noise`]).
     pub noise: f64,
 }
 
-impl Prepared {
+impl PreparedLook {
     /// The part of `frame`'s look that is the frame's alone, for a tracker of
     /// `params`.
-    pub fn of(frame: &Frame, params: &Params) -> Prepared {
+    pub fn of(frame: &Frame, params: &Params) -> PreparedLook {
         let f = background::factor(frame.width(), params.coarse_width);
         let mut small = Small::of(frame, f);
-        Prepared {
+        PreparedLook {
             params: *params,
             luma_look: luma_look(frame, &mut small, params.min_radius),
             small,
@@ -56,4 +55,21 @@ pub fn luma_look(frame: &Frame, small: &mut Small, min_radius: f64) -> Coarse {
     } else {
         detect::coarse(&frame.luma, min_radius)
     }
+}
+
+/// The pixel noise of a frame, luma levels: from neighbouring pixels' differences
+/// over a sparse sample (their median, so edges do not count).
+#[allow(clippy::indexing_slicing)] // i + 1 < len checked by the loop
+pub fn pixel_noise(img: &Gray) -> f64 {
+    let mut d = Vec::with_capacity(4096);
+    let step = ((img.width * img.height) / 4096).max(1);
+    let mut i = 0;
+    while i + 1 < img.data.len() {
+        if (i + 1) % img.width != 0 {
+            d.push((f64::from(img.data[i + 1]) - f64::from(img.data[i])).abs());
+        }
+        i += step;
+    }
+    // Whole levels: the median counted by level (`select`), the sort's middle.
+    super::select::median(&mut d).map_or(1.0, |m| m * 1.4826 / std::f64::consts::SQRT_2)
 }

@@ -15,7 +15,7 @@ use super::gray::Gray;
 use super::hough;
 use super::mark::{self, Mark};
 use super::params::Params;
-use super::prepared::{self, Prepared};
+use super::prepared::{self, PreparedLook, pixel_noise};
 
 /// One ball in one frame, in pixels.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -210,7 +210,7 @@ impl Tracker {
     /// learned it (a target ball waiting for the impact); the look against the
     /// background adds what differs in colour or against a busy bench. A frame where
     /// either look sees more than two balls is counted crowded.
-    /// `made`: the frame's reduction and luma look made ahead ([`Prepared`]).
+    /// `made`: the frame's reduction and luma look made ahead ([`PreparedLook`]).
     fn look(&mut self, frame: &Frame, made: Option<(Small, detect::Coarse)>) -> detect::Coarse {
         let p = self.params;
         let (made_small, made_look) = made.unzip();
@@ -294,15 +294,15 @@ impl Tracker {
     }
 
     /// As [`Tracker::push`], with the frame's own part of its look made ahead
-    /// (`Prepared::of` of this frame; made for other parameters, it is made anew).
-    pub fn push_prepared(&mut self, frame: &Frame, prep: Prepared) {
+    /// (`PreparedLook::of` of this frame; made for other parameters, it is made anew).
+    pub fn push_prepared(&mut self, frame: &Frame, prep: PreparedLook) {
         let made = (prep.params == self.params).then_some(prep);
         self.push_made(frame, made);
     }
 
-    /// As [`Tracker::learn`], the frame already reduced in `prep` (`Prepared::of`
+    /// As [`Tracker::learn`], the frame already reduced in `prep` (`PreparedLook::of`
     /// of this frame).
-    pub fn learn_prepared(&mut self, frame: &Frame, prep: &Prepared) {
+    pub fn learn_prepared(&mut self, frame: &Frame, prep: &PreparedLook) {
         let f = factor(frame.width(), self.params.coarse_width);
         if let Some(l) = &mut self.learner {
             if prep.params == self.params && prep.small.factor == f {
@@ -313,7 +313,7 @@ impl Tracker {
         }
     }
 
-    fn push_made(&mut self, frame: &Frame, prep: Option<Prepared>) {
+    fn push_made(&mut self, frame: &Frame, prep: Option<PreparedLook>) {
         self.relearn();
         let img = &frame.luma;
         let k = self.frames.len();
@@ -1100,23 +1100,6 @@ fn predict(last: &[(usize, Circle)], k: usize) -> Option<Circle> {
             })
         }
     }
-}
-
-/// The pixel noise of a frame, luma levels: from neighbouring pixels' differences
-/// over a sparse sample (their median, so edges do not count).
-#[allow(clippy::indexing_slicing)] // i + 1 < len checked by the loop
-pub fn pixel_noise(img: &Gray) -> f64 {
-    let mut d = Vec::with_capacity(4096);
-    let step = ((img.width * img.height) / 4096).max(1);
-    let mut i = 0;
-    while i + 1 < img.data.len() {
-        if (i + 1) % img.width != 0 {
-            d.push((f64::from(img.data[i + 1]) - f64::from(img.data[i])).abs());
-        }
-        i += step;
-    }
-    // Whole levels: the median counted by level (`select`), the sort's middle.
-    super::select::median(&mut d).map_or(1.0, |m| m * 1.4826 / std::f64::consts::SQRT_2)
 }
 
 /// The median of `v`, `None` when empty.

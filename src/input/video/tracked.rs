@@ -9,7 +9,7 @@
 use super::{Info, Limits, RateSource, VideoError, VideoProblem};
 use crate::settings::units::{Dimension, show, show_small, with_uncertainty};
 use crate::study::Progress;
-use crate::vision::prepared::Prepared;
+use crate::vision::prepared::PreparedLook;
 use crate::vision::thumbs::{Thumbs, VideoView};
 use crate::vision::tracks::{BallTrack, Tracks};
 use crate::vision::{self, Tracker, overlay};
@@ -177,14 +177,14 @@ fn stream(
     let mut thumbs = Thumbs::sized(info.width, info.height, info.frames);
     let no_thumbs = thumbs.clone();
     let mut numbers = Vec::new();
-    let mut waiting: std::collections::VecDeque<(vision::Frame, Prepared)> = Default::default();
+    let mut waiting: std::collections::VecDeque<(vision::Frame, PreparedLook)> = Default::default();
     // The frames are read (piped from ffmpeg, or decoded from a folder) on a thread
     // of their own, a few ahead, while this one tracks: reading a 1080p frame is a
     // copy of 3 MB. Dropping the receiver (an error, Ctrl-C) ends the reader at its
     // next frame, and the decoder with it. The app's small pictures are made there
     // too (each frame's box averages, in the frames' order: what the tracker is
     // given), off the tracker's thread; and so is each frame's own part of the
-    // tracker's look (`Prepared`: reduced once for the learner and the look).
+    // tracker's look (`PreparedLook`: reduced once for the learner and the look).
     let (sender, received) = std::sync::mpsc::sync_channel(read_ahead(info.width, info.height));
     let reader = std::thread::spawn(move || {
         let mut k = 0usize;
@@ -194,7 +194,7 @@ fn stream(
                 k += 1;
             }
             let frame = frame.map(|(n, img)| {
-                let prep = Prepared::of(&img, &params);
+                let prep = PreparedLook::of(&img, &params);
                 (n, img, prep)
             });
             if sender.send(frame).is_err() {
