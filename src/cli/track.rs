@@ -9,7 +9,7 @@ use super::args::{DataArgs, SceneArgs};
 use super::error::CliError;
 use super::progress::Bar;
 use super::track_args::{TrackArgs, TrackOutput};
-use crate::input::video::tracked::{self, Options, Tracked};
+use crate::input::video::tracked::{self, Options, Pictures, Tracked};
 use crate::input::video::{RateSource, overlay};
 use crate::settings::params::Key;
 use crate::vision::tracks::{BallTrack, Calibration};
@@ -46,7 +46,8 @@ pub fn run(scene: &SceneArgs, data: &DataArgs, args: &TrackArgs) -> Result<Strin
     }
     let options = options(scene, data)?;
     let bar = Bar::new("frames", true);
-    let done = tracked::track_or_found(&args.video, &options, &bar);
+    // The app's pictures are not wanted here.
+    let done = tracked::track_or_found(&args.video, &options, &bar, Pictures::Skipped);
     bar.finish();
     let done: Tracked = match done {
         Ok(done) => done.ok_or(CliError::Interrupted)?,

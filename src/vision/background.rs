@@ -10,6 +10,7 @@
 use super::frame::Frame;
 use super::params::Params;
 use super::select;
+use rayon::prelude::*;
 
 /// A frame reduced to the coarse size: Y, U and V per coarse pixel.
 #[derive(Clone, Debug, PartialEq)]
@@ -43,13 +44,15 @@ impl Small {
         let cxs: Vec<usize> = (0..w)
             .map(|bx| ((bx * f + f / 2) / 2).min(cw.saturating_sub(1)))
             .collect();
+        // Each plane from its row's start on (a short plane: its missing samples
+        // grey), a row's samples in one extend, without a check of room per sample.
+        let sample = |plane: &[u8], cx: usize| plane.get(cx).map_or(128.0, |&c| f32::from(c));
         for by in 0..h {
             let cy = ((by * f + f / 2) / 2).min(ch.saturating_sub(1));
-            for &cx in &cxs {
-                let i = cy * cw + cx;
-                u.push(frame.u.get(i).map_or(128.0, |&c| f32::from(c)));
-                v.push(frame.v.get(i).map_or(128.0, |&c| f32::from(c)));
-            }
+            let ur = frame.u.get(cy * cw..).unwrap_or_default();
+            let vr = frame.v.get(cy * cw..).unwrap_or_default();
+            u.extend(cxs.iter().map(|&cx| sample(ur, cx)));
+            v.extend(cxs.iter().map(|&cx| sample(vr, cx)));
         }
         Small {
             width: w,
@@ -94,9 +97,20 @@ impl Learner {
 
     /// Offers one more frame (in the clip's order).
     pub fn push(&mut self, frame: &Frame) {
+        let f = factor(frame.width(), self.params.coarse_width);
+        self.offer(|| Small::of(frame, f));
+    }
+
+    /// As [`Learner::push`], the frame already reduced by [`factor`] of its width
+    /// and `coarse_width` (reduced once, for the learner and the tracker's look).
+    pub fn push_small(&mut self, small: &Small) {
+        self.offer(|| small.clone());
+    }
+
+    /// Offers one more frame, reduced by `small` only when it is one kept.
+    fn offer(&mut self, small: impl FnOnce() -> Small) {
         if self.seen.is_multiple_of(self.every) {
-            let f = factor(frame.width(), self.params.coarse_width);
-            let small = Small::of(frame, f);
+            let small = small();
             // Frames of another size than the first are not of this clip's bench.
             if self
                 .kept
@@ -133,74 +147,210 @@ impl Learner {
             width: w,
             height: h,
             factor: f,
-            y: median_plane(&self.kept, n, |s| &s.y, None),
-            u: median_plane(&self.kept, n, |s| &s.u, None),
-            v: median_plane(&self.kept, n, |s| &s.v, None),
+            y: median_plane(&self.kept, n, |s| &s.y, None, false),
+            u: median_plane(&self.kept, n, |s| &s.u, None, true),
+            v: median_plane(&self.kept, n, |s| &s.v, None, true),
         };
         // Again, each frame's differing pixels (and their neighbours) left out.
         let masks: Vec<Vec<bool>> = self
             .kept
-            .iter()
+            .par_iter()
             .map(|s| {
                 let (d, _) = differences(s, &bg, &self.params);
                 let thr = threshold(&d, &self.params);
                 dilate(&d.iter().map(|&v| v > thr).collect::<Vec<_>>(), w, h)
             })
             .collect();
-        bg.y = median_plane(&self.kept, n, |s| &s.y, Some(&masks));
-        bg.u = median_plane(&self.kept, n, |s| &s.u, Some(&masks));
-        bg.v = median_plane(&self.kept, n, |s| &s.v, Some(&masks));
+        bg.y = median_plane(&self.kept, n, |s| &s.y, Some(&masks), false);
+        bg.u = median_plane(&self.kept, n, |s| &s.u, Some(&masks), true);
+        bg.v = median_plane(&self.kept, n, |s| &s.v, Some(&masks), true);
         Some(Background { image: bg })
     }
 }
 
+/// Pixels whose medians are taken together: each frame's run of them gathered at
+/// once (half a kilobyte of each of some hundred frames: long enough runs for the
+/// memory to stream them).
+const TILE: usize = 128;
+
 /// Per pixel, the median of `plane` over `frames`, leaving out masked samples (but
-/// taking them all when fewer than a quarter are left).
-#[allow(clippy::indexing_slicing)] // j < t ≤ TILE; a pixel's counts ≤ nf, its list j·nf … (j + 1)·nf
+/// taking them all when fewer than a quarter are left). `levels`: the plane's
+/// values are whole levels (the colour planes' bytes), counted per level; else
+/// (luma's block means) by selection.
 fn median_plane(
     frames: &[Small],
     n: usize,
     plane: impl Fn(&Small) -> &Vec<f32>,
     masks: Option<&Vec<Vec<bool>>>,
+    levels: bool,
 ) -> Vec<f32> {
-    // A tile of pixels at a time: each frame's run of the tile gathered into every
-    // pixel's list (plain slices, in the frames' order), then each list's median.
-    const TILE: usize = 64;
     let planes: Vec<&[f32]> = frames.iter().map(|s| plane(s).as_slice()).collect();
     let masks: Vec<&[bool]> =
         masks.map_or_else(Vec::new, |m| m.iter().map(Vec::as_slice).collect());
     let nf = frames.len();
-    let mut kept = vec![0.0f32; TILE * nf];
-    let mut all = vec![0.0f32; TILE * nf];
-    let mut out = Vec::with_capacity(n);
-    let mut start = 0;
-    while start < n {
-        let t = TILE.min(n - start);
+    // Runs of pixels spread over the cores, each worker with lists and counts of
+    // its own: each pixel's median is its own, the same numbers in any order. (A
+    // new background stops the tracker for a tenth of a second of 1080p, while
+    // ffmpeg soon waits on a full read-ahead: the other core is free.)
+    const RUN: usize = 64 * TILE;
+    let runs: Vec<Vec<f32>> = (0..n.div_ceil(RUN))
+        .into_par_iter()
+        .map_init(
+            || (Lists::new(nf), LevelCounts::new()),
+            |(lists, counts), r| {
+                let end = ((r + 1) * RUN).min(n);
+                let mut out = Vec::with_capacity(RUN);
+                for start in (r * RUN..end).step_by(TILE) {
+                    let tile = Tile {
+                        planes: &planes,
+                        masks: &masks,
+                        start,
+                        t: TILE.min(end - start),
+                    };
+                    // Counted, unless a value is not a whole level after all.
+                    if !(levels && counts.medians(&tile, &mut out)) {
+                        lists.medians(&tile, &mut out);
+                    }
+                }
+                out
+            },
+        )
+        .collect();
+    runs.concat()
+}
+
+/// Pixels `start … start + t` of every frame's plane (`planes`) and mask.
+struct Tile<'a> {
+    planes: &'a [&'a [f32]],
+    masks: &'a [&'a [bool]],
+    start: usize,
+    t: usize,
+}
+
+impl Tile<'_> {
+    /// True when pixel `j`'s median is over all its values, masked or not: fewer
+    /// than a quarter of the frames left unmasked (`kept` of them).
+    fn takes_all(&self, kept: usize) -> bool {
+        kept * 4 < self.planes.len()
+    }
+}
+
+/// Each pixel's list of values, kept (unmasked) and all, `planes.len()` long.
+struct Lists {
+    kept: Vec<f32>,
+    all: Vec<f32>,
+}
+
+impl Lists {
+    /// Room for a tile's lists over `nf` frames.
+    fn new(nf: usize) -> Lists {
+        Lists {
+            kept: vec![0.0f32; TILE * nf],
+            all: vec![0.0f32; TILE * nf],
+        }
+    }
+
+    /// The tile's medians by selection (`select::median`: the sort's middle).
+    #[allow(clippy::indexing_slicing)] // j < t ≤ TILE; a pixel's counts ≤ nf, its list j·nf … (j + 1)·nf
+    fn medians(&mut self, tile: &Tile, out: &mut Vec<f32>) {
+        let nf = tile.planes.len();
         let (mut nk, mut na) = ([0usize; TILE], [0usize; TILE]);
-        for (k, p) in planes.iter().enumerate() {
-            let m = masks.get(k).copied().unwrap_or(&[]);
-            for j in 0..t {
-                let i = start + j;
+        for (k, p) in tile.planes.iter().enumerate() {
+            let m = tile.masks.get(k).copied().unwrap_or(&[]);
+            for j in 0..tile.t {
+                let i = tile.start + j;
                 let Some(&v) = p.get(i) else { continue };
-                all[j * nf + na[j]] = v;
+                self.all[j * nf + na[j]] = v;
                 na[j] += 1;
                 if !m.get(i).copied().unwrap_or(false) {
-                    kept[j * nf + nk[j]] = v;
+                    self.kept[j * nf + nk[j]] = v;
                     nk[j] += 1;
                 }
             }
         }
-        for j in 0..t {
-            let vals = if nk[j] * 4 < nf {
-                &mut all[j * nf..j * nf + na[j]]
+        for j in 0..tile.t {
+            let vals = if tile.takes_all(nk[j]) {
+                &mut self.all[j * nf..j * nf + na[j]]
             } else {
-                &mut kept[j * nf..j * nf + nk[j]]
+                &mut self.kept[j * nf..j * nf + nk[j]]
             };
             out.push(select::median(vals).unwrap_or(0.0));
         }
-        start += t;
     }
-    out
+}
+
+/// Each pixel's values counted per level, unmasked and masked: zero between tiles.
+struct LevelCounts {
+    kept: Vec<[u16; 256]>,
+    masked: Vec<[u16; 256]>,
+}
+
+impl LevelCounts {
+    /// A tile's counts, all zero.
+    fn new() -> LevelCounts {
+        LevelCounts {
+            kept: vec![[0; 256]; TILE],
+            masked: vec![[0; 256]; TILE],
+        }
+    }
+
+    /// The tile's medians read off counts per level, the value a sort puts at the
+    /// middle (`select::median`'s, bit for bit: whole levels are equal bits, and
+    /// order as their levels). Counted as gathered, each pixel's counts apart from
+    /// its neighbour's: no increment waits on the last, as one pixel's run of equal
+    /// levels counted in a row would make it. False, nothing pushed, when a value
+    /// is not a whole level (or the frames are too many to count in 16 bits).
+    #[allow(clippy::indexing_slicing)] // j < t ≤ TILE; a level indexes 256 counts
+    fn medians(&mut self, tile: &Tile, out: &mut Vec<f32>) -> bool {
+        if tile.planes.len() > usize::from(u16::MAX) {
+            return false;
+        }
+        let (mut lo, mut hi) = ([u8::MAX; TILE], [0u8; TILE]);
+        let (mut nk, mut nm) = ([0usize; TILE], [0usize; TILE]);
+        let mut whole = true;
+        'frames: for (k, p) in tile.planes.iter().enumerate() {
+            let m = tile.masks.get(k).copied().unwrap_or(&[]);
+            for j in 0..tile.t {
+                let i = tile.start + j;
+                let Some(&v) = p.get(i) else { continue };
+                let Some(l) = select::Level::level(v) else {
+                    whole = false;
+                    break 'frames;
+                };
+                if m.get(i).copied().unwrap_or(false) {
+                    self.masked[j][usize::from(l)] += 1;
+                    nm[j] += 1;
+                } else {
+                    self.kept[j][usize::from(l)] += 1;
+                    nk[j] += 1;
+                }
+                lo[j] = lo[j].min(l);
+                hi[j] = hi[j].max(l);
+            }
+        }
+        for j in 0..tile.t {
+            let all = tile.takes_all(nk[j]);
+            let levels = usize::from(lo[j])..=usize::from(hi[j]);
+            if whole {
+                let len = if all { nk[j] + nm[j] } else { nk[j] };
+                let mut below = 0usize;
+                let median = levels.clone().find(|&l| {
+                    below += usize::from(self.kept[j][l]);
+                    if all {
+                        below += usize::from(self.masked[j][l]);
+                    }
+                    below > len / 2
+                });
+                out.push(median.map_or(0.0, |l| l as f32));
+            }
+            // Back to zero where counted (every count lies within lo … hi).
+            if lo[j] <= hi[j] {
+                self.kept[j][levels.clone()].fill(0);
+                self.masked[j][levels].fill(0);
+            }
+        }
+        whole
+    }
 }
 
 /// How much each coarse pixel of `s` differs from the background `bg` (levels:

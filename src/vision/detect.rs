@@ -431,12 +431,20 @@ fn background(img: &Levels) -> (Vec<f32>, f32) {
         scatter = median * 1.4826;
         cut = (3.0 * scatter).max(3.0);
     }
+    // The surface at each pixel, the sum of its basis values times their
+    // coefficients: the terms of a column (u's) and of a row (v's) made once, the
+    // same products summed in the same order as `basis` and a dot product would
+    // (the constant's, 1 × c0, is c0).
+    let [c0, c1, c2, c3, c4, c5] = coef;
+    let columns: Vec<[f64; 3]> = us.iter().map(|&u| [u, u * c1, (u * u) * c3]).collect();
     let mut bg = Vec::with_capacity(w * h);
-    for y in 0..h {
-        for x in 0..w {
-            let b = basis(x, y);
-            bg.push(b.iter().zip(&coef).map(|(a, c)| a * c).sum::<f64>() as f32);
-        }
+    for &v in &vs {
+        let (vc2, vvc5) = (v * c2, (v * v) * c5);
+        bg.extend(columns.iter().map(|&[u, uc1, uuc3]| {
+            [c0, uc1, vc2, uuc3, (u * v) * c4, vvc5]
+                .into_iter()
+                .sum::<f64>() as f32
+        }));
     }
     (bg, scatter.max(0.5) as f32)
 }

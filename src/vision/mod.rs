@@ -43,6 +43,7 @@ pub mod mark;
 pub mod mark_check;
 pub mod overlay;
 pub mod params;
+pub mod prepared;
 pub mod select;
 pub mod thumbs;
 pub mod tracker;

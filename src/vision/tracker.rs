@@ -6,15 +6,16 @@
 //! two balls touch (at an impact their outlines merge), or when its outline is poor
 //! (blurred, or too little of it visible); nothing is filled in.
 
-use super::background::{Background, Learner, Small, differences, threshold};
+use super::background::{Background, Learner, Small, differences, factor, threshold};
 use super::circle::{self, Circle, Outline};
 use super::detect;
 use super::detect::Blob;
 use super::frame::Frame;
-use super::gray::{Gray, Levels};
+use super::gray::Gray;
 use super::hough;
 use super::mark::{self, Mark};
 use super::params::Params;
+use super::prepared::{self, PreparedLook, pixel_noise};
 
 /// One ball in one frame, in pixels.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -209,23 +210,19 @@ impl Tracker {
     /// learned it (a target ball waiting for the impact); the look against the
     /// background adds what differs in colour or against a busy bench. A frame where
     /// either look sees more than two balls is counted crowded.
-    fn look(&mut self, frame: &Frame) -> detect::Coarse {
+    /// `made`: the frame's reduction and luma look made ahead ([`PreparedLook`]).
+    fn look(&mut self, frame: &Frame, made: Option<(Small, detect::Coarse)>) -> detect::Coarse {
         let p = self.params;
+        let (made_small, made_look) = made.unzip();
         // The frame reduced once for both looks where they reduce it alike.
-        let small = self
-            .background
-            .as_ref()
-            .map(|bg| Small::of(frame, bg.image.factor));
-        let mut coarse = match &small {
-            Some(s) if s.factor == detect::factor(frame.luma.width) => {
-                let levels = Levels {
-                    width: s.width,
-                    height: s.height,
-                    data: s.y.clone(),
-                };
-                detect::coarse_reduced(&levels, s.factor, p.min_radius)
-            }
-            _ => detect::coarse(&frame.luma, p.min_radius),
+        let mut small = self.background.as_ref().map(|bg| match made_small {
+            Some(s) if s.factor == bg.image.factor => s,
+            _ => Small::of(frame, bg.image.factor),
+        });
+        let mut coarse = match (made_look, &mut small) {
+            (Some(c), _) => c,
+            (None, Some(s)) => prepared::luma_look(frame, s, p.min_radius),
+            (None, None) => detect::coarse(&frame.luma, p.min_radius),
         };
         if let Some(roi) = p.roi {
             coarse.balls.retain(|b| {
@@ -293,13 +290,37 @@ impl Tracker {
 
     /// Tracks one more frame.
     pub fn push(&mut self, frame: &Frame) {
+        self.push_made(frame, None);
+    }
+
+    /// As [`Tracker::push`], with the frame's own part of its look made ahead
+    /// (`PreparedLook::of` of this frame; made for other parameters, it is made anew).
+    pub fn push_prepared(&mut self, frame: &Frame, prep: PreparedLook) {
+        let made = (prep.params == self.params).then_some(prep);
+        self.push_made(frame, made);
+    }
+
+    /// As [`Tracker::learn`], the frame already reduced in `prep` (`PreparedLook::of`
+    /// of this frame).
+    pub fn learn_prepared(&mut self, frame: &Frame, prep: &PreparedLook) {
+        let f = factor(frame.width(), self.params.coarse_width);
+        if let Some(l) = &mut self.learner {
+            if prep.params == self.params && prep.small.factor == f {
+                l.push_small(&prep.small);
+            } else {
+                l.push(frame);
+            }
+        }
+    }
+
+    fn push_made(&mut self, frame: &Frame, prep: Option<PreparedLook>) {
         self.relearn();
         let img = &frame.luma;
         let k = self.frames.len();
         self.counts.frames += 1;
         let p = self.params;
-        let coarse = self.look(frame);
-        let noise = pixel_noise(img);
+        let noise = prep.as_ref().map_or_else(|| pixel_noise(img), |m| m.noise);
+        let coarse = self.look(frame, prep.map(|m| (m.small, m.luma_look)));
         let f = coarse.balls.first().map_or(1.0, |_| {
             self.background
                 .as_ref()
@@ -1079,23 +1100,6 @@ fn predict(last: &[(usize, Circle)], k: usize) -> Option<Circle> {
             })
         }
     }
-}
-
-/// The pixel noise of a frame, luma levels: from neighbouring pixels' differences
-/// over a sparse sample (their median, so edges do not count).
-#[allow(clippy::indexing_slicing)] // i + 1 < len checked by the loop
-pub fn pixel_noise(img: &Gray) -> f64 {
-    let mut d = Vec::with_capacity(4096);
-    let step = ((img.width * img.height) / 4096).max(1);
-    let mut i = 0;
-    while i + 1 < img.data.len() {
-        if (i + 1) % img.width != 0 {
-            d.push((f64::from(img.data[i + 1]) - f64::from(img.data[i])).abs());
-        }
-        i += step;
-    }
-    // Whole levels: the median counted by level (`select`), the sort's middle.
-    super::select::median(&mut d).map_or(1.0, |m| m * 1.4826 / std::f64::consts::SQRT_2)
 }
 
 /// The median of `v`, `None` when empty.

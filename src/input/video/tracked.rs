@@ -9,6 +9,7 @@
 use super::{Info, Limits, RateSource, VideoError, VideoProblem};
 use crate::settings::units::{Dimension, show, show_small, with_uncertainty};
 use crate::study::Progress;
+use crate::vision::prepared::PreparedLook;
 use crate::vision::thumbs::{Thumbs, VideoView};
 use crate::vision::tracks::{BallTrack, Tracks};
 use crate::vision::{self, Tracker, overlay};
@@ -69,7 +70,17 @@ pub fn track(
     options: &Options,
     progress: &dyn Progress,
 ) -> Result<Option<Tracked>, VideoError> {
-    track_or_found(video, options, progress).map_err(|refused| refused.error)
+    track_or_found(video, options, progress, Pictures::Made).map_err(|refused| refused.error)
+}
+
+/// Whether a tracking makes the app's small pictures of the frames
+/// (`Tracked::view`'s thumbs): the command line's `track` writes tracks and draws
+/// its overlay from the full frames, and does without them (a box average of every
+/// frame, on the reader's thread).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Pictures {
+    Made,
+    Skipped,
 }
 
 /// A tracking that gave no tracks: why, and what the tracker found in each frame
@@ -86,11 +97,13 @@ pub type FitsFound = Vec<Vec<Option<overlay::Drawn>>>;
 
 /// As [`track`], and when the tracker is unsure (no tracks), what it found in each
 /// frame, for `track --overlay` to draw: a student sees where it went wrong and
-/// reads `--roi` and `--ball-at` off the picture.
+/// reads `--roi` and `--ball-at` off the picture. `pictures`: whether the app's
+/// pictures are made (skipped, `view` holds none).
 pub fn track_or_found(
     video: &std::path::Path,
     options: &Options,
     progress: &dyn Progress,
+    pictures: Pictures,
 ) -> Result<Option<Tracked>, Refused> {
     let nothing = |error: VideoError| Refused {
         error,
@@ -112,7 +125,7 @@ pub fn track_or_found(
         return Err(nothing(err(VideoProblem::NoRate)));
     };
     let Some((tracker, numbers, thumbs)) =
-        stream(frames, &info, options, progress).map_err(nothing)?
+        stream(frames, &info, options, progress, pictures).map_err(nothing)?
     else {
         return Ok(None);
     };
@@ -150,6 +163,7 @@ fn stream(
     info: &Info,
     options: &Options,
     progress: &dyn Progress,
+    pictures: Pictures,
 ) -> Result<Option<(Tracker, Vec<u64>, Thumbs)>, VideoError> {
     let params = options.params();
     let mut tracker = Tracker::new(params);
@@ -163,21 +177,26 @@ fn stream(
     let mut thumbs = Thumbs::sized(info.width, info.height, info.frames);
     let no_thumbs = thumbs.clone();
     let mut numbers = Vec::new();
-    let mut waiting: std::collections::VecDeque<vision::Frame> = Default::default();
+    let mut waiting: std::collections::VecDeque<(vision::Frame, PreparedLook)> = Default::default();
     // The frames are read (piped from ffmpeg, or decoded from a folder) on a thread
     // of their own, a few ahead, while this one tracks: reading a 1080p frame is a
     // copy of 3 MB. Dropping the receiver (an error, Ctrl-C) ends the reader at its
     // next frame, and the decoder with it. The app's small pictures are made there
     // too (each frame's box averages, in the frames' order: what the tracker is
-    // given), off the tracker's thread.
-    let (sender, received) = std::sync::mpsc::sync_channel(READ_AHEAD);
+    // given), off the tracker's thread; and so is each frame's own part of the
+    // tracker's look (`PreparedLook`: reduced once for the learner and the look).
+    let (sender, received) = std::sync::mpsc::sync_channel(read_ahead(info.width, info.height));
     let reader = std::thread::spawn(move || {
         let mut k = 0usize;
         for frame in frames {
-            if let Ok((_, img)) = &frame {
+            if let (Ok((_, img)), Pictures::Made) = (&frame, pictures) {
                 thumbs.push(k, &img.luma);
                 k += 1;
             }
+            let frame = frame.map(|(n, img)| {
+                let prep = PreparedLook::of(&img, &params);
+                (n, img, prep)
+            });
             if sender.send(frame).is_err() {
                 break;
             }
@@ -188,24 +207,24 @@ fn stream(
         if progress.cancelled() {
             return Ok(None);
         }
-        let (n, img) = frame?;
-        tracker.learn(&img);
+        let (n, img, prep) = frame?;
+        tracker.learn_prepared(&img, &prep);
         numbers.push(n);
-        waiting.push_back(img);
+        waiting.push_back((img, prep));
         if waiting.len() > ahead
-            && let Some(first) = waiting.pop_front()
+            && let Some((first, prep)) = waiting.pop_front()
         {
-            tracker.push(&first);
+            tracker.push_prepared(&first, prep);
             super::decode::recycle(first);
         }
         let seen = numbers.len() as u64;
         progress.tick(seen, total.max(seen));
     }
-    for img in waiting {
+    for (img, prep) in waiting {
         if progress.cancelled() {
             return Ok(None);
         }
-        tracker.push(&img);
+        tracker.push_prepared(&img, prep);
     }
     // The reader is done (the frames ran out); a reader that panicked leaves no
     // pictures, the tracks stand.
@@ -234,8 +253,17 @@ fn found(tracker: &Tracker) -> FitsFound {
         .collect()
 }
 
-/// Frames the reader may decode ahead of the tracker (on top of its look-ahead).
-const READ_AHEAD: usize = 4;
+/// Most bytes of frames the reader may decode ahead of the tracker (on top of its
+/// look-ahead): 64 MiB (21 frames of 1080p). Room for ffmpeg and the reader to go
+/// on while the tracker is busy with one frame or a new background (some 0.1 s of
+/// 1080p): four frames' room left the other core idle for most of it.
+const READ_BYTES: usize = 64 << 20;
+
+/// Frames of `width × height` the reader may decode ahead: [`READ_BYTES`] of
+/// them, at least 4.
+fn read_ahead(width: usize, height: usize) -> usize {
+    (READ_BYTES / vision::Frame::bytes(width, height).max(1)).max(4)
+}
 
 /// Most bytes of decoded frames held at once while the background learns ahead of
 /// the tracker: 256 MiB (82 frames of 1080p, 185 of 720p, 420 of 480p).
