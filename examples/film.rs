@@ -8,6 +8,8 @@
 //! (full size; `7 small` for the small looks of `cargo test`) as `clip.mp4`, and says
 //! its rate, the truth's scale and the look in words, to watch the tracker on it:
 //! `groovelab track /tmp/look7/clip.mp4 --fps RATE --radius 2.75cm --overlay /tmp/look7/o.png`.
+//! With `FILM_TRUTH=1` it also writes each frame's true centres and radius to stderr
+//! (`T<frame> (x, y) (x, y) r<R>`, px), to hold the tracker's fits against.
 //! `cargo run --release --example film -- /tmp/speed speed` writes the speed clip of
 //! `benches/video.rs` (3 s of 1080p at 240 frames/s) as `clip.mp4`, to time `track`
 //! against ffmpeg's decoding outside criterion (BENCHMARKS.md says how).
@@ -55,6 +57,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let path = dir.join("clip.mp4");
         h264::write(&path, &clip.film, clip.frames)?;
         let l = &clip.film.look;
+        if std::env::var_os("FILM_TRUTH").is_some() {
+            print_truth(&clip.film, clip.frames);
+        }
         println!(
             "{} frames in {} ({}×{}, {} frames/s, the first {:.3} s before the impact; truth: {:.2} px/m, R {:.2} px)\n{}",
             clip.frames,
@@ -86,4 +91,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     }
     println!("{frames} frames in {}", dir.display());
     Ok(())
+}
+
+/// Each frame's true centres (left, right) and radius, px, one line a frame on stderr.
+fn print_truth(film: &Film, frames: usize) {
+    for k in 0..frames {
+        let [a, b] = film.truth(k);
+        eprintln!(
+            "T{k} ({:.1},{:.1}) ({:.1},{:.1}) r{:.2}",
+            a.centre.0, a.centre.1, b.centre.0, b.centre.1, a.radius
+        );
+    }
 }
