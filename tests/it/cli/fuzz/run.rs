@@ -96,6 +96,14 @@ const NULLABLE: &[(&str, &[&str])] = &[
     // fit's models: a value and its standard error, `null` where the data do not
     // determine it (with its reason), and the approach speed of the user's own data,
     // `null` where there are none (the preset's series) or they measure none.
+    // A headline (`model_fit`, `mu_alone`) whose value the data do not determine:
+    // the value and its `_se` are `null` (docs/interface.md, `not_identified`), μ_k's
+    // too (seed 20261130: the preset's series fitted with v0 given as 10 mm/s).
+    ("mu", &["fit"]),
+    ("mu_se", &["fit"]),
+    ("v0", &["fit"]),
+    ("restitution", &["fit"]),
+    ("rolling_resistance", &["fit"]),
     ("v0_se", &["fit"]),
     ("restitution_se", &["fit"]),
     ("rolling_resistance_se", &["fit"]),
