@@ -15,7 +15,7 @@ use super::gray::Gray;
 use super::hough;
 use super::mark::{self, Mark};
 use super::params::Params;
-use super::prepared::{self, PreparedLook, pixel_noise};
+use super::prepared::PreparedLook;
 
 /// One ball in one frame, in pixels.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -210,20 +210,22 @@ impl Tracker {
     /// learned it (a target ball waiting for the impact); the look against the
     /// background adds what differs in colour or against a busy bench. A frame where
     /// either look sees more than two balls is counted crowded.
-    /// `made`: the frame's reduction and luma look made ahead ([`PreparedLook`]).
-    fn look(&mut self, frame: &Frame, made: Option<(Small, detect::Coarse)>) -> detect::Coarse {
+    /// `made_small`, `coarse`: the frame's reduction and luma look ([`PreparedLook`]).
+    fn look(
+        &mut self,
+        frame: &Frame,
+        made_small: Small,
+        mut coarse: detect::Coarse,
+    ) -> detect::Coarse {
         let p = self.params;
-        let (made_small, made_look) = made.unzip();
         // The frame reduced once for both looks where they reduce it alike.
-        let mut small = self.background.as_ref().map(|bg| match made_small {
-            Some(s) if s.factor == bg.image.factor => s,
-            _ => Small::of(frame, bg.image.factor),
+        let small = self.background.as_ref().map(|bg| {
+            if made_small.factor == bg.image.factor {
+                made_small
+            } else {
+                Small::of(frame, bg.image.factor)
+            }
         });
-        let mut coarse = match (made_look, &mut small) {
-            (Some(c), _) => c,
-            (None, Some(s)) => prepared::luma_look(frame, s, p.min_radius),
-            (None, None) => detect::coarse(&frame.luma, p.min_radius),
-        };
         if let Some(roi) = p.roi {
             coarse.balls.retain(|b| {
                 let g = b.guess();
@@ -290,14 +292,18 @@ impl Tracker {
 
     /// Tracks one more frame.
     pub fn push(&mut self, frame: &Frame) {
-        self.push_made(frame, None);
+        self.push_made(frame, PreparedLook::of(frame, &self.params));
     }
 
     /// As [`Tracker::push`], with the frame's own part of its look made ahead
     /// (`PreparedLook::of` of this frame; made for other parameters, it is made anew).
     pub fn push_prepared(&mut self, frame: &Frame, prep: PreparedLook) {
-        let made = (prep.params == self.params).then_some(prep);
-        self.push_made(frame, made);
+        let prep = if prep.params == self.params {
+            prep
+        } else {
+            PreparedLook::of(frame, &self.params)
+        };
+        self.push_made(frame, prep);
     }
 
     /// As [`Tracker::learn`], the frame already reduced in `prep` (`PreparedLook::of`
@@ -313,14 +319,14 @@ impl Tracker {
         }
     }
 
-    fn push_made(&mut self, frame: &Frame, prep: Option<PreparedLook>) {
+    fn push_made(&mut self, frame: &Frame, prep: PreparedLook) {
         self.relearn();
         let img = &frame.luma;
         let k = self.frames.len();
         self.counts.frames += 1;
         let p = self.params;
-        let noise = prep.as_ref().map_or_else(|| pixel_noise(img), |m| m.noise);
-        let coarse = self.look(frame, prep.map(|m| (m.small, m.luma_look)));
+        let noise = prep.noise;
+        let coarse = self.look(frame, prep.small, prep.luma_look);
         let f = coarse.balls.first().map_or(1.0, |_| {
             self.background
                 .as_ref()
