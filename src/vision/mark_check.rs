@@ -257,8 +257,7 @@ fn turns_with_the_ball(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> bo
         .windows(2)
         .map(|w| {
             let (a, b) = (w[0], w[1]);
-            let turn = (b.2 - a.2 + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU)
-                - std::f64::consts::PI;
+            let turn = turn_between(a.2, b.2);
             (turn.abs(), (b.0 - a.0).abs() / a.1)
         })
         // A turn is measured modulo a whole turn, and the allowed turn grows with
@@ -545,8 +544,7 @@ fn unconfirmed(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Vec<usize>
                 continue;
             }
             judged = true;
-            let turn = (tb - ta + std::f64::consts::PI).rem_euclid(std::f64::consts::TAU)
-                - std::f64::consts::PI;
+            let turn = turn_between(ta, tb);
             agrees |= turn.abs() <= p.turn_per_radius * roll + p.turn_slack;
         }
         // Alone: the ball seen before and after it, its mark in none of them (at the
@@ -601,53 +599,49 @@ fn speeds(fits: &[BallFit]) -> Vec<f64> {
 /// rails, kR below the centre, slides it (spin from the same force that slows it).
 fn off_the_spin(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Vec<usize> {
     let fits = seen(frames, slot);
-    let speed = speeds(&fits);
-    // (frame, angle, speed along x, how much the rate may change per px/frame of it).
-    let marks: Vec<(usize, f64, f64, f64)> = fits
+    // (fit, its mark's angle, its speed along x).
+    let marks: Vec<(&BallFit, f64, f64)> = fits
         .iter()
-        .zip(&speed)
-        .filter_map(|(f, &v)| {
-            let r = f.r.max(1.0);
-            let k = (f.kr / r).clamp(0.2, 1.0);
-            Some((f.k, f.angle()?, v, (1.0 / k + 2.5 * k) / r))
-        })
+        .zip(speeds(&fits))
+        .filter_map(|(f, v)| Some((f, f.angle()?, v)))
         .collect();
-    let marked: Vec<&BallFit> = fits.iter().filter(|f| f.mark.is_some()).collect();
-    // (first frame, its angle, second frame, its angle, turn per frame).
-    let pairs: Vec<(usize, f64, usize, f64, f64)> = marks
+    // Each pair's two (frame, angle, speed), and its turn per frame.
+    type End = (usize, f64, f64);
+    let pairs: Vec<([End; 2], f64)> = marks
         .windows(2)
-        .zip(marked.windows(2))
-        .filter_map(|(w, f)| {
-            let ([b, c], [fb, fc]) = (w, f) else {
+        .filter_map(|w| {
+            let [(b, tb, vb), (c, tc, vc)] = w else {
                 return None;
             };
-            let apart = c.0 - b.0;
-            (apart <= 2 && fb.roll_to(fc) < std::f64::consts::FRAC_PI_2)
-                .then(|| (b.0, b.1, c.0, c.1, turn_between(b.1, c.1) / apart as f64))
+            let apart = c.k - b.k;
+            (apart <= 2 && b.roll_to(c) < std::f64::consts::FRAC_PI_2).then(|| {
+                let rate = turn_between(*tb, *tc) / apart as f64;
+                ([(b.k, *tb, *vb), (c.k, *tc, *vc)], rate)
+            })
         })
         .collect();
-    let at = |k: usize| marks.iter().find(|m| m.0 == k);
-    let mut out = Vec::new();
-    for &(ka, ta, va, per) in &marks {
-        let (mut judged, mut agrees) = (false, false);
-        for &(kb, tb, kc, tc, rate) in &pairs {
-            let (near, t_near) = if kb.abs_diff(ka) <= kc.abs_diff(ka) {
-                (kb, tb)
-            } else {
-                (kc, tc)
-            };
-            if kb == ka || kc == ka || near.abs_diff(ka) > p.spin_frames {
-                continue;
-            }
-            judged = true;
-            let steps = ka as f64 - near as f64;
-            let dv = at(near).map_or(0.0, |m| (m.2 - va).abs());
-            let off = turn_between(t_near + rate * steps, ta).abs();
-            agrees |= off <= p.spin_slack + (p.spin_drift + per * dv) * steps.abs();
-        }
-        if judged && !agrees {
-            out.push(ka);
-        }
-    }
-    out
+    let off = |&(a, ta, va): &(&BallFit, f64, f64)| {
+        let r = a.r.max(1.0);
+        let k = (a.kr / r).clamp(0.2, 1.0);
+        // How much the rate may change per px/frame of change in speed.
+        let per = (1.0 / k + 2.5 * k) / r;
+        let mut verdicts = pairs
+            .iter()
+            .filter(|([b, c], _)| b.0 != a.k && c.0 != a.k)
+            .filter_map(|([b, c], rate)| {
+                let near = if b.0.abs_diff(a.k) <= c.0.abs_diff(a.k) {
+                    b
+                } else {
+                    c
+                };
+                (near.0.abs_diff(a.k) <= p.spin_frames).then(|| {
+                    let steps = a.k as f64 - near.0 as f64;
+                    let off = turn_between(near.1 + rate * steps, ta).abs();
+                    off <= p.spin_slack + (p.spin_drift + per * (near.2 - va).abs()) * steps.abs()
+                })
+            })
+            .peekable();
+        verdicts.peek().is_some() && !verdicts.any(|agrees| agrees)
+    };
+    marks.iter().filter(|m| off(m)).map(|m| m.0.k).collect()
 }
