@@ -56,15 +56,12 @@ fn balls(k: usize) -> Vec<(f64, f64)> {
 fn frame(k: usize) -> Frame {
     let centres = balls(k);
     let seed = 0x51_7cc1_b727_u64.wrapping_add(k as u64 * 7919);
-    let cover = |fx: f64, fy: f64, c: (f64, f64)| {
-        (0.5 - ((fx - 0.5 - c.0).hypot(fy - 0.5 - c.1) - R)).clamp(0.0, 1.0)
-    };
     super::drawn_frame((W, H), seed, 1, |x, y| {
-        let (fx, fy) = (f64::from(x) + 0.5, f64::from(y) + 0.5);
-        let faint = (0.5 - ((fx - 0.5 - FAINT_X).hypot(fy - 0.5 - CY) - FAINT_R)).clamp(0.0, 1.0);
+        let at = (f64::from(x), f64::from(y));
+        let faint = super::disc_cover(at, (FAINT_X, CY), FAINT_R);
         let mut v = WALL * (1.0 - faint) + FAINT * faint;
         for &c in &centres {
-            let b = cover(fx, fy, c);
+            let b = super::disc_cover(at, c, R);
             v = v * (1.0 - b) + BALL * b;
         }
         [v; 3]

@@ -18,6 +18,12 @@ pub(crate) mod tracker_looks;
 pub(crate) mod tracking;
 mod unfit;
 
+/// How much of the pixel drawn at `(px, py)` a disc of radius `r` about `c` covers
+/// (0 … 1): the drawn cases' anti-aliasing, over about one pixel of the outline.
+pub(crate) fn disc_cover((px, py): (f64, f64), c: (f64, f64), r: f64) -> f64 {
+    (0.5 - ((px - c.0).hypot(py - c.1) - r)).clamp(0.0, 1.0)
+}
+
 /// A frame `w × h` drawn pixel by pixel for the tracker's drawn cases: `colour(x, y)`
 /// (0–255 a channel) plus seeded noise of ±`spread` whole levels, the same on the three
 /// channels (so a flat wall has a scatter): `seed`'s xorshift, one step a pixel in

@@ -37,7 +37,7 @@ fn frame(k: usize) -> Frame {
     let seed = 0x2545_f491_u64.wrapping_add(k as u64 * 7919);
     super::drawn_frame((W, H), seed, 2, |x, y| {
         let (fx, fy) = (f64::from(x) + 0.5, f64::from(y) + 0.5);
-        let cover = (0.5 - ((fx - c.0).hypot(fy - c.1) - R)).clamp(0.0, 1.0);
+        let cover = super::disc_cover((fx, fy), c, R);
         let lit = (0.5 + (LIT_R * R - (fx - lit_c.0).hypot(fy - lit_c.1)) / 2.0).clamp(0.0, 1.0);
         let ball = SHADED + (LIT - SHADED) * lit;
         let v = if fy > CY + RAIL_TOP * R {

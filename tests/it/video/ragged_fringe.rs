@@ -38,7 +38,7 @@ fn frame(k: usize) -> Frame {
     let seed = 0x9e37_79b9_u64.wrapping_add(k as u64 * 7919);
     super::drawn_frame((W, H), seed, 2, |x, y| {
         let (fx, fy) = (f64::from(x) + 0.5, f64::from(y) + 0.5);
-        let cover = (0.5 - ((fx - c.0).hypot(fy - c.1) - R)).clamp(0.0, 1.0);
+        let cover = super::disc_cover((fx, fy), c, R);
         let wall = WALL[((x / SQUARE + y / SQUARE) % 2) as usize];
         let behind = fx < c.0 && fx > c.0 - (1.0 + MESH_REACH) * R && cover == 0.0;
         let v = if fy > CY + RAIL_TOP * R {

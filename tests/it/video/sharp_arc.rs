@@ -29,7 +29,7 @@ fn frame(k: usize) -> (Frame, (f64, f64)) {
         let (fx, fy) = (f64::from(x) + 0.5, f64::from(y) + 0.5);
         let band = fy > CY - R - 4.0 && fy < CY - R + 5.0;
         let wall = if fx < SPLIT || band { LIGHT } else { DARK };
-        let cover = (0.5 - ((fx - 0.5 - c.0).hypot(fy - 0.5 - c.1) - R)).clamp(0.0, 1.0);
+        let cover = super::disc_cover((fx - 0.5, fy - 0.5), c, R);
         [wall * (1.0 - cover) + DARK * cover; 3]
     });
     (frame, c)

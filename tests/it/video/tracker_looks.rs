@@ -40,8 +40,7 @@ fn frame(look: &Look, k: usize) -> (Frame, Vec<(f64, f64)>) {
     let frame = super::drawn_frame((W, H), seed, 2, |x, y| {
         let mut c = look.wall;
         for &(cx, cy, r, col) in &discs {
-            let d = (f64::from(x) - cx).hypot(f64::from(y) - cy);
-            let cover = (0.5 - (d - r)).clamp(0.0, 1.0);
+            let cover = super::disc_cover((f64::from(x), f64::from(y)), (cx, cy), r);
             for i in 0..3 {
                 c[i] = c[i] * (1.0 - cover) + col[i] * cover;
             }
