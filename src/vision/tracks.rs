@@ -233,13 +233,7 @@ pub fn tracks(
         .iter()
         .zip(names)
         .map(|(&s, name)| {
-            let line = median(
-                &centres[s]
-                    .iter()
-                    .map(|p| p[0] * n.0 + p[1] * n.1)
-                    .collect::<Vec<_>>(),
-            )
-            .unwrap_or(f64::NAN);
+            let line = ball_line(&centres[s], n).unwrap_or(f64::NAN);
             let centre = |o: &Outline| on_the_line(o, line, n);
             ball_track(frames, s, name, &to_m, &centre, px_per_m)
         })
@@ -301,11 +295,7 @@ fn off_the_line(frames: &mut [FrameFixes], within: f64) {
     let angle = if found { angle } else { 0.0 };
     let n = (angle.sin(), -angle.cos());
     for slot in 0..2 {
-        let across: Vec<f64> = centres[slot]
-            .iter()
-            .map(|p| p[0] * n.0 + p[1] * n.1)
-            .collect();
-        let Some(line) = median(&across) else {
+        let Some(line) = ball_line(&centres[slot], n) else {
             continue;
         };
         for f in frames.iter_mut() {
@@ -317,6 +307,17 @@ fn off_the_line(frames: &mut [FrameFixes], within: f64) {
             }
         }
     }
+}
+
+/// A ball's line: the median of its `centres`' places across the groove (along its
+/// normal `n`), px; `None` without centres.
+fn ball_line(centres: &[[f64; 2]], n: (f64, f64)) -> Option<f64> {
+    median(
+        &centres
+            .iter()
+            .map(|p| p[0] * n.0 + p[1] * n.1)
+            .collect::<Vec<_>>(),
+    )
 }
 
 /// Leaves out (as poor outlines) the fits that are no ball's: off their ball's
