@@ -16,6 +16,7 @@ use super::hough;
 use super::mark::{self, Mark};
 use super::params::Params;
 use super::prepared::PreparedLook;
+use std::sync::Arc;
 
 /// One ball in one frame, in pixels.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -88,7 +89,7 @@ pub struct Tracker {
     /// The frame being pushed, reduced to the background's coarse pixels (by `look`,
     /// where a background is learned): what the outermost-edge check compares with
     /// the background, as the looks do.
-    small: Option<Small>,
+    small: Option<Arc<Small>>,
 }
 
 /// An outline and how it was found.
@@ -214,7 +215,7 @@ impl Tracker {
     fn look(
         &mut self,
         frame: &Frame,
-        made_small: Small,
+        made_small: Arc<Small>,
         mut coarse: detect::Coarse,
     ) -> detect::Coarse {
         let p = self.params;
@@ -223,7 +224,7 @@ impl Tracker {
             if made_small.factor == bg.image.factor {
                 made_small
             } else {
-                Small::of(frame, bg.image.factor)
+                Arc::new(Small::of(frame, bg.image.factor))
             }
         });
         if let Some(roi) = p.roi {
