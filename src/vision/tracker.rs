@@ -132,6 +132,7 @@ fn differs_at(small: &Small, bg: &Small, x: f64, y: f64, p: &Params) -> bool {
         return false;
     };
     let dl = (y1 - y0).abs();
+    let (u0, v0, u1, v1) = (f32::from(u0), f32::from(v0), f32::from(u1), f32::from(v1));
     let dc = (u1 - u0).abs().max((v1 - v0).abs());
     f64::from(dl.max(p.colour_weight as f32 * dc)) > p.differ_levels
 }
@@ -886,15 +887,14 @@ impl Tracker {
                 + (at(i0, j1) * (1.0 - fx) + at(i1, j1) * fx) * fy
         };
         let f = bg.factor as f64;
-        let back = |plane: &[f32], x: f64, y: f64| -> f32 {
+        let back = |plane: &[u8], x: f64, y: f64| -> f32 {
             let (i, j) = ((x / f) as usize, (y / f) as usize);
             plane
                 .get(
                     j.min(bg.height.saturating_sub(1)) * bg.width
                         + i.min(bg.width.saturating_sub(1)),
                 )
-                .copied()
-                .unwrap_or(128.0)
+                .map_or(128.0, |&v| f32::from(v))
         };
         // The ball's colour difference at its middle (upper half: above the rail).
         let (mx, my) = (guess.x, guess.y - 0.3 * guess.r);
