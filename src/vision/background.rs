@@ -51,12 +51,30 @@ impl Small {
         // Each plane from its row's start on (a short plane: its missing samples
         // grey), a row's samples in one extend, without a check of room per sample.
         let sample = |plane: &[u8], cx: usize| plane.get(cx).copied().unwrap_or(128);
+        // An even factor samples every (f / 2)-th colour byte from the (f / 4)-th:
+        // taken by stride, where the row holds them all (the same bytes).
+        let stride = (f.is_multiple_of(2) && f > 0)
+            .then_some((f / 4, f / 2))
+            .filter(|&(first, step)| {
+                cxs.iter()
+                    .enumerate()
+                    .all(|(bx, &cx)| cx == first + bx * step)
+            });
+        let last = cxs.last().copied().unwrap_or(0);
         for by in 0..h {
             let cy = ((by * f + f / 2) / 2).min(ch.saturating_sub(1));
             let ur = frame.u.get(cy * cw..).unwrap_or_default();
             let vr = frame.v.get(cy * cw..).unwrap_or_default();
-            u.extend(cxs.iter().map(|&cx| sample(ur, cx)));
-            v.extend(cxs.iter().map(|&cx| sample(vr, cx)));
+            match stride {
+                Some((first, step)) if ur.len() > last && vr.len() > last => {
+                    u.extend(ur.iter().skip(first).step_by(step).take(w));
+                    v.extend(vr.iter().skip(first).step_by(step).take(w));
+                }
+                _ => {
+                    u.extend(cxs.iter().map(|&cx| sample(ur, cx)));
+                    v.extend(cxs.iter().map(|&cx| sample(vr, cx)));
+                }
+            }
         }
         Small {
             width: w,
@@ -163,7 +181,7 @@ impl Learner {
             .kept
             .par_iter()
             .map(|s| {
-                let (d, _) = differences(s, &bg, &self.params);
+                let d = differences(s, &bg, &self.params);
                 let thr = threshold(&d, &self.params);
                 dilate(&d.iter().map(|&v| v > thr).collect::<Vec<_>>(), w, h)
             })
@@ -401,41 +419,41 @@ impl LevelCounts {
 
 /// How much each coarse pixel of `s` differs from the background `bg` (levels:
 /// the larger of the brightness difference and the weighted colour differences; 0
-/// for a shadow: darker by at most [`Params::shadow_darkest`] and of the same hue),
-/// and per pixel whether it was a shadow.
-pub fn differences(s: &Small, bg: &Small, p: &Params) -> (Vec<f32>, usize) {
+/// for a shadow: darker by at most [`Params::shadow_darkest`] and of the same hue).
+pub fn differences(s: &Small, bg: &Small, p: &Params) -> Vec<f32> {
     let cw = p.colour_weight as f32;
     let darkest = p.shadow_darkest as f32;
     let hue = p.shadow_hue_levels as f32;
     // Without branches or a count in the loop (the shadow test and the difference
     // both computed, one taken: a background pixel is darker than its median half
     // the time, a branch on it mispredicted as often), so the loop vectorises.
-    let d: Vec<f32> =
-        s.y.iter()
-            .zip(&s.u)
-            .zip(&s.v)
-            .zip(bg.y.iter().zip(&bg.u).zip(&bg.v))
-            .map(|(((&y, &u), &v), ((&by, &bu), &bv))| {
-                let (u, v, bu, bv) = (f32::from(u), f32::from(v), f32::from(bu), f32::from(bv));
-                let dy = y - by;
-                let lit = (by - 16.0).max(1.0);
-                let a = (y - 16.0) / lit;
-                let shadow = (dy < 0.0)
-                    & (a >= 1.0 - darkest)
-                    & (((u - 128.0) - a * (bu - 128.0)).abs() <= hue)
-                    & (((v - 128.0) - a * (bv - 128.0)).abs() <= hue);
-                let differ = dy.abs().max(cw * (u - bu).abs()).max(cw * (v - bv).abs());
-                if shadow { 0.0 } else { differ }
-            })
-            .collect();
-    // The shadows counted after: a darker pixel's difference is at least its
-    // brightness step, so 0 for a darker pixel means a shadow.
-    let shadows = d
-        .iter()
+    s.y.iter()
+        .zip(&s.u)
+        .zip(&s.v)
+        .zip(bg.y.iter().zip(&bg.u).zip(&bg.v))
+        .map(|(((&y, &u), &v), ((&by, &bu), &bv))| {
+            let (u, v, bu, bv) = (f32::from(u), f32::from(v), f32::from(bu), f32::from(bv));
+            let dy = y - by;
+            let lit = (by - 16.0).max(1.0);
+            let a = (y - 16.0) / lit;
+            let shadow = (dy < 0.0)
+                & (a >= 1.0 - darkest)
+                & (((u - 128.0) - a * (bu - 128.0)).abs() <= hue)
+                & (((v - 128.0) - a * (bv - 128.0)).abs() <= hue);
+            let differ = dy.abs().max(cw * (u - bu).abs()).max(cw * (v - bv).abs());
+            if shadow { 0.0 } else { differ }
+        })
+        .collect()
+}
+
+/// The shadows among [`differences`] `d` of `s` from `bg`, counted: a darker
+/// pixel's difference is at least its brightness step, so 0 for a darker pixel
+/// means a shadow. (Apart: the looks and the learner do without the count.)
+pub fn shadows(d: &[f32], s: &Small, bg: &Small) -> usize {
+    d.iter()
         .zip(s.y.iter().zip(&bg.y))
         .filter(|&(&d, (&y, &by))| d == 0.0 && y - by < 0.0)
-        .count();
-    (d, shadows)
+        .count()
 }
 
 /// The level above which a difference marks a pixel: [`Params::differ_sigmas`]
@@ -508,8 +526,8 @@ mod tests {
         s.y[0] = 16.0 + 0.7 * (180.0 - 16.0); // a shadow: 70 % of the light
         s.y[1] = 16.0 + 0.2 * (180.0 - 16.0); // a black ball
         s.u[2] = 150; // a blue ball of the wall's brightness
-        let (d, shadows) = differences(&s, &bg, &p);
-        assert_eq!(shadows, 1);
+        let d = differences(&s, &bg, &p);
+        assert_eq!(shadows(&d, &s, &bg), 1);
         assert_eq!(d[0], 0.0);
         assert!(d[1] > 100.0);
         assert_eq!(d[2], 44.0);

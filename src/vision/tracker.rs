@@ -236,7 +236,7 @@ impl Tracker {
         }
         let mut crowded = coarse.balls.len() > 2;
         if let (Some(bg), Some(small)) = (&self.background, &small) {
-            let (d, _) = differences(small, &bg.image, &p);
+            let d = differences(small, &bg.image, &p);
             let thr = threshold(&d, &p);
             let more = detect::against_differences(small, &d, thr, &p);
             // What the luma look sees but does not differ from the background is the
