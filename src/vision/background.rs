@@ -51,30 +51,12 @@ impl Small {
         // Each plane from its row's start on (a short plane: its missing samples
         // grey), a row's samples in one extend, without a check of room per sample.
         let sample = |plane: &[u8], cx: usize| plane.get(cx).copied().unwrap_or(128);
-        // An even factor samples every (f / 2)-th colour byte from the (f / 4)-th:
-        // taken by stride, where the row holds them all (the same bytes).
-        let stride = (f.is_multiple_of(2) && f > 0)
-            .then_some((f / 4, f / 2))
-            .filter(|&(first, step)| {
-                cxs.iter()
-                    .enumerate()
-                    .all(|(bx, &cx)| cx == first + bx * step)
-            });
-        let last = cxs.last().copied().unwrap_or(0);
         for by in 0..h {
             let cy = ((by * f + f / 2) / 2).min(ch.saturating_sub(1));
             let ur = frame.u.get(cy * cw..).unwrap_or_default();
             let vr = frame.v.get(cy * cw..).unwrap_or_default();
-            match stride {
-                Some((first, step)) if ur.len() > last && vr.len() > last => {
-                    u.extend(ur.iter().skip(first).step_by(step).take(w));
-                    v.extend(vr.iter().skip(first).step_by(step).take(w));
-                }
-                _ => {
-                    u.extend(cxs.iter().map(|&cx| sample(ur, cx)));
-                    v.extend(cxs.iter().map(|&cx| sample(vr, cx)));
-                }
-            }
+            u.extend(cxs.iter().map(|&cx| sample(ur, cx)));
+            v.extend(cxs.iter().map(|&cx| sample(vr, cx)));
         }
         Small {
             width: w,
