@@ -11,6 +11,7 @@ use super::frame::Frame;
 use super::params::Params;
 use super::select;
 use rayon::prelude::*;
+use std::sync::Arc;
 
 /// A frame reduced to the coarse size: Y, U and V per coarse pixel.
 #[derive(Clone, Debug, PartialEq)]
@@ -19,9 +20,12 @@ pub struct Small {
     pub height: usize,
     /// Full-frame pixels per coarse pixel, each way.
     pub factor: usize,
+    /// Block means of luma.
     pub y: Vec<f32>,
-    pub u: Vec<f32>,
-    pub v: Vec<f32>,
+    /// The colour planes' samples, whole levels (their bytes, not widened to f32:
+    /// a third of the memory the learner's sample holds and gathers).
+    pub u: Vec<u8>,
+    pub v: Vec<u8>,
 }
 
 /// The reduction factor that brings a frame `width` wide to about `coarse` px.
@@ -46,7 +50,7 @@ impl Small {
             .collect();
         // Each plane from its row's start on (a short plane: its missing samples
         // grey), a row's samples in one extend, without a check of room per sample.
-        let sample = |plane: &[u8], cx: usize| plane.get(cx).map_or(128.0, |&c| f32::from(c));
+        let sample = |plane: &[u8], cx: usize| plane.get(cx).copied().unwrap_or(128);
         for by in 0..h {
             let cy = ((by * f + f / 2) / 2).min(ch.saturating_sub(1));
             let ur = frame.u.get(cy * cw..).unwrap_or_default();
@@ -77,7 +81,9 @@ pub struct Learner {
     params: Params,
     every: usize,
     seen: usize,
-    kept: Vec<Small>,
+    /// The sample, shared with the frames' looks (`PreparedLook::small`): a kept
+    /// frame is the reduction the look uses, not a copy of it.
+    kept: Vec<Arc<Small>>,
 }
 
 impl Learner {
@@ -98,17 +104,18 @@ impl Learner {
     /// Offers one more frame (in the clip's order).
     pub fn push(&mut self, frame: &Frame) {
         let f = factor(frame.width(), self.params.coarse_width);
-        self.offer(|| Small::of(frame, f));
+        self.offer(|| Arc::new(Small::of(frame, f)));
     }
 
     /// As [`Learner::push`], the frame already reduced by [`factor`] of its width
-    /// and `coarse_width` (reduced once, for the learner and the tracker's look).
-    pub fn push_small(&mut self, small: &Small) {
-        self.offer(|| small.clone());
+    /// and `coarse_width` (reduced once, for the learner and the tracker's look),
+    /// kept shared, not copied (0.7 MB a 1080p frame).
+    pub fn push_small(&mut self, small: &Arc<Small>) {
+        self.offer(|| Arc::clone(small));
     }
 
     /// Offers one more frame, reduced by `small` only when it is one kept.
-    fn offer(&mut self, small: impl FnOnce() -> Small) {
+    fn offer(&mut self, small: impl FnOnce() -> Arc<Small>) {
         if self.seen.is_multiple_of(self.every) {
             let small = small();
             // Frames of another size than the first are not of this clip's bench.
@@ -147,25 +154,64 @@ impl Learner {
             width: w,
             height: h,
             factor: f,
-            y: median_plane(&self.kept, n, |s| &s.y, None, false),
-            u: median_plane(&self.kept, n, |s| &s.u, None, true),
-            v: median_plane(&self.kept, n, |s| &s.v, None, true),
+            y: median_plane(&self.kept, n, |s| &s.y, None),
+            u: bytes(median_plane(&self.kept, n, |s| &s.u, None)),
+            v: bytes(median_plane(&self.kept, n, |s| &s.v, None)),
         };
         // Again, each frame's differing pixels (and their neighbours) left out.
         let masks: Vec<Vec<bool>> = self
             .kept
             .par_iter()
             .map(|s| {
-                let (d, _) = differences(s, &bg, &self.params);
+                let d = differences(s, &bg, &self.params);
                 let thr = threshold(&d, &self.params);
                 dilate(&d.iter().map(|&v| v > thr).collect::<Vec<_>>(), w, h)
             })
             .collect();
-        bg.y = median_plane(&self.kept, n, |s| &s.y, Some(&masks), false);
-        bg.u = median_plane(&self.kept, n, |s| &s.u, Some(&masks), true);
-        bg.v = median_plane(&self.kept, n, |s| &s.v, Some(&masks), true);
+        bg.y = median_plane(&self.kept, n, |s| &s.y, Some(&masks));
+        bg.u = bytes(median_plane(&self.kept, n, |s| &s.u, Some(&masks)));
+        bg.v = bytes(median_plane(&self.kept, n, |s| &s.v, Some(&masks)));
         Some(Background { image: bg })
     }
+}
+
+/// Medians of byte planes as bytes: each is one of the values, a whole level.
+fn bytes(levels: Vec<f32>) -> Vec<u8> {
+    levels.into_iter().map(|l| l as u8).collect()
+}
+
+/// A plane's value: a byte (the colour planes: a whole level, counted per
+/// level) or an f32 (luma's block means: by selection, unless whole levels).
+trait Sample: Copy + Send + Sync {
+    /// The level `self` is, when it is exactly one.
+    fn level(self) -> Option<u8>;
+    fn value(self) -> f32;
+    /// Worth counting per level: every value is a whole level.
+    const LEVELS: bool;
+}
+
+impl Sample for u8 {
+    #[inline]
+    fn level(self) -> Option<u8> {
+        Some(self)
+    }
+    #[inline]
+    fn value(self) -> f32 {
+        f32::from(self)
+    }
+    const LEVELS: bool = true;
+}
+
+impl Sample for f32 {
+    #[inline]
+    fn level(self) -> Option<u8> {
+        select::Level::level(self)
+    }
+    #[inline]
+    fn value(self) -> f32 {
+        self
+    }
+    const LEVELS: bool = false;
 }
 
 /// Pixels whose medians are taken together: each frame's run of them gathered at
@@ -174,17 +220,15 @@ impl Learner {
 const TILE: usize = 128;
 
 /// Per pixel, the median of `plane` over `frames`, leaving out masked samples (but
-/// taking them all when fewer than a quarter are left). `levels`: the plane's
-/// values are whole levels (the colour planes' bytes), counted per level; else
-/// (luma's block means) by selection.
-fn median_plane(
-    frames: &[Small],
+/// taking them all when fewer than a quarter are left). The colour planes' bytes
+/// are counted per level; luma's block means go by selection.
+fn median_plane<T: Sample>(
+    frames: &[Arc<Small>],
     n: usize,
-    plane: impl Fn(&Small) -> &Vec<f32>,
+    plane: impl Fn(&Small) -> &Vec<T>,
     masks: Option<&Vec<Vec<bool>>>,
-    levels: bool,
 ) -> Vec<f32> {
-    let planes: Vec<&[f32]> = frames.iter().map(|s| plane(s).as_slice()).collect();
+    let planes: Vec<&[T]> = frames.iter().map(|s| plane(s).as_slice()).collect();
     let masks: Vec<&[bool]> =
         masks.map_or_else(Vec::new, |m| m.iter().map(Vec::as_slice).collect());
     let nf = frames.len();
@@ -208,7 +252,7 @@ fn median_plane(
                         t: TILE.min(end - start),
                     };
                     // Counted, unless a value is not a whole level after all.
-                    if !(levels && counts.medians(&tile, &mut out)) {
+                    if !(T::LEVELS && counts.medians(&tile, &mut out)) {
                         lists.medians(&tile, &mut out);
                     }
                 }
@@ -220,14 +264,14 @@ fn median_plane(
 }
 
 /// Pixels `start … start + t` of every frame's plane (`planes`) and mask.
-struct Tile<'a> {
-    planes: &'a [&'a [f32]],
+struct Tile<'a, T> {
+    planes: &'a [&'a [T]],
     masks: &'a [&'a [bool]],
     start: usize,
     t: usize,
 }
 
-impl Tile<'_> {
+impl<T> Tile<'_, T> {
     /// True when pixel `j`'s median is over all its values, masked or not: fewer
     /// than a quarter of the frames left unmasked (`kept` of them).
     fn takes_all(&self, kept: usize) -> bool {
@@ -252,14 +296,16 @@ impl Lists {
 
     /// The tile's medians by selection (`select::median`: the sort's middle).
     #[allow(clippy::indexing_slicing)] // j < t ≤ TILE; a pixel's counts ≤ nf, its list j·nf … (j + 1)·nf
-    fn medians(&mut self, tile: &Tile, out: &mut Vec<f32>) {
+    fn medians<T: Sample>(&mut self, tile: &Tile<T>, out: &mut Vec<f32>) {
         let nf = tile.planes.len();
         let (mut nk, mut na) = ([0usize; TILE], [0usize; TILE]);
         for (k, p) in tile.planes.iter().enumerate() {
             let m = tile.masks.get(k).copied().unwrap_or(&[]);
             for j in 0..tile.t {
                 let i = tile.start + j;
-                let Some(&v) = p.get(i) else { continue };
+                let Some(v) = p.get(i).map(|&v| v.value()) else {
+                    continue;
+                };
                 self.all[j * nf + na[j]] = v;
                 na[j] += 1;
                 if !m.get(i).copied().unwrap_or(false) {
@@ -301,7 +347,7 @@ impl LevelCounts {
     /// levels counted in a row would make it. False, nothing pushed, when a value
     /// is not a whole level (or the frames are too many to count in 16 bits).
     #[allow(clippy::indexing_slicing)] // j < t ≤ TILE; a level indexes 256 counts
-    fn medians(&mut self, tile: &Tile, out: &mut Vec<f32>) -> bool {
+    fn medians<T: Sample>(&mut self, tile: &Tile<T>, out: &mut Vec<f32>) -> bool {
         if tile.planes.len() > usize::from(u16::MAX) {
             return false;
         }
@@ -313,7 +359,7 @@ impl LevelCounts {
             for j in 0..tile.t {
                 let i = tile.start + j;
                 let Some(&v) = p.get(i) else { continue };
-                let Some(l) = select::Level::level(v) else {
+                let Some(l) = v.level() else {
                     whole = false;
                     break 'frames;
                 };
@@ -355,40 +401,41 @@ impl LevelCounts {
 
 /// How much each coarse pixel of `s` differs from the background `bg` (levels:
 /// the larger of the brightness difference and the weighted colour differences; 0
-/// for a shadow: darker by at most [`Params::shadow_darkest`] and of the same hue),
-/// and per pixel whether it was a shadow.
-pub fn differences(s: &Small, bg: &Small, p: &Params) -> (Vec<f32>, usize) {
+/// for a shadow: darker by at most [`Params::shadow_darkest`] and of the same hue).
+pub fn differences(s: &Small, bg: &Small, p: &Params) -> Vec<f32> {
     let cw = p.colour_weight as f32;
     let darkest = p.shadow_darkest as f32;
     let hue = p.shadow_hue_levels as f32;
     // Without branches or a count in the loop (the shadow test and the difference
     // both computed, one taken: a background pixel is darker than its median half
     // the time, a branch on it mispredicted as often), so the loop vectorises.
-    let d: Vec<f32> =
-        s.y.iter()
-            .zip(&s.u)
-            .zip(&s.v)
-            .zip(bg.y.iter().zip(&bg.u).zip(&bg.v))
-            .map(|(((&y, &u), &v), ((&by, &bu), &bv))| {
-                let dy = y - by;
-                let lit = (by - 16.0).max(1.0);
-                let a = (y - 16.0) / lit;
-                let shadow = (dy < 0.0)
-                    & (a >= 1.0 - darkest)
-                    & (((u - 128.0) - a * (bu - 128.0)).abs() <= hue)
-                    & (((v - 128.0) - a * (bv - 128.0)).abs() <= hue);
-                let differ = dy.abs().max(cw * (u - bu).abs()).max(cw * (v - bv).abs());
-                if shadow { 0.0 } else { differ }
-            })
-            .collect();
-    // The shadows counted after: a darker pixel's difference is at least its
-    // brightness step, so 0 for a darker pixel means a shadow.
-    let shadows = d
-        .iter()
+    s.y.iter()
+        .zip(&s.u)
+        .zip(&s.v)
+        .zip(bg.y.iter().zip(&bg.u).zip(&bg.v))
+        .map(|(((&y, &u), &v), ((&by, &bu), &bv))| {
+            let (u, v, bu, bv) = (f32::from(u), f32::from(v), f32::from(bu), f32::from(bv));
+            let dy = y - by;
+            let lit = (by - 16.0).max(1.0);
+            let a = (y - 16.0) / lit;
+            let shadow = (dy < 0.0)
+                & (a >= 1.0 - darkest)
+                & (((u - 128.0) - a * (bu - 128.0)).abs() <= hue)
+                & (((v - 128.0) - a * (bv - 128.0)).abs() <= hue);
+            let differ = dy.abs().max(cw * (u - bu).abs()).max(cw * (v - bv).abs());
+            if shadow { 0.0 } else { differ }
+        })
+        .collect()
+}
+
+/// The shadows among [`differences`] `d` of `s` from `bg`, counted: a darker
+/// pixel's difference is at least its brightness step, so 0 for a darker pixel
+/// means a shadow. (Apart: the looks and the learner do without the count.)
+pub fn shadows(d: &[f32], s: &Small, bg: &Small) -> usize {
+    d.iter()
         .zip(s.y.iter().zip(&bg.y))
         .filter(|&(&d, (&y, &by))| d == 0.0 && y - by < 0.0)
-        .count();
-    (d, shadows)
+        .count()
 }
 
 /// The level above which a difference marks a pixel: [`Params::differ_sigmas`]
@@ -460,9 +507,9 @@ mod tests {
         let mut s = bg.clone();
         s.y[0] = 16.0 + 0.7 * (180.0 - 16.0); // a shadow: 70 % of the light
         s.y[1] = 16.0 + 0.2 * (180.0 - 16.0); // a black ball
-        s.u[2] = 150.0; // a blue ball of the wall's brightness
-        let (d, shadows) = differences(&s, &bg, &p);
-        assert_eq!(shadows, 1);
+        s.u[2] = 150; // a blue ball of the wall's brightness
+        let d = differences(&s, &bg, &p);
+        assert_eq!(shadows(&d, &s, &bg), 1);
         assert_eq!(d[0], 0.0);
         assert!(d[1] > 100.0);
         assert_eq!(d[2], 44.0);

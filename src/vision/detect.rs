@@ -97,7 +97,7 @@ pub fn coarse_reduced(small: &Levels, f: usize, min_radius: f64) -> Coarse {
 /// Looks at the coarse frame `small` for what differs from the background `bg` in
 /// brightness or colour (not shadows), inside `params.roi`.
 pub fn against(small: &Small, bg: &Background, params: &Params) -> Coarse {
-    let (d, _) = differences(small, &bg.image, params);
+    let d = differences(small, &bg.image, params);
     let thr = threshold(&d, params);
     against_differences(small, &d, thr, params)
 }

@@ -141,9 +141,12 @@ fn strongest(
             y: cy0 + (best / aw) as f64,
             r,
         };
-        // No second centre within a radius of this one.
-        for j in 0..ah {
-            for i in 0..aw {
+        // No second centre within a radius of this one: only cells within r of it
+        // each way can be (a length is at least either of its offsets).
+        let reach = r.ceil() as usize;
+        let (bi, bj) = (best % aw, best / aw);
+        for j in bj.saturating_sub(reach)..(bj + reach + 1).min(ah) {
+            for i in bi.saturating_sub(reach)..(bi + reach + 1).min(aw) {
                 let (x, y) = (cx0 + i as f64, cy0 + j as f64);
                 if (x - c.x).hypot(y - c.y) < r {
                     summed[j * aw + i] = 0.0;

@@ -10,14 +10,16 @@ use super::detect::{self, Coarse};
 use super::frame::Frame;
 use super::gray::{Gray, Levels};
 use super::params::Params;
+use std::sync::Arc;
 
 /// A frame's own part of its look (see the module's note).
 #[derive(Clone, Debug)]
 pub struct PreparedLook {
     /// The parameters it was made for: a tracker with others makes its own.
     pub params: Params,
-    /// The frame reduced by the learner's factor (`background::factor`).
-    pub small: Small,
+    /// The frame reduced by the learner's factor (`background::factor`), shared
+    /// by the learner's sample and the tracker's look.
+    pub small: Arc<Small>,
     /// The look against a smooth surface of luma (`detect::coarse`).
     pub luma_look: Coarse,
     /// The frame's pixel noise ([`pixel_noise`]).
@@ -30,10 +32,11 @@ impl PreparedLook {
     pub fn of(frame: &Frame, params: &Params) -> PreparedLook {
         let f = background::factor(frame.width(), params.coarse_width);
         let mut small = Small::of(frame, f);
+        let luma_look = luma_look(frame, &mut small, params.min_radius);
         PreparedLook {
             params: *params,
-            luma_look: luma_look(frame, &mut small, params.min_radius),
-            small,
+            luma_look,
+            small: Arc::new(small),
             noise: pixel_noise(&frame.luma),
         }
     }

@@ -16,6 +16,7 @@ use super::hough;
 use super::mark::{self, Mark};
 use super::params::Params;
 use super::prepared::PreparedLook;
+use std::sync::Arc;
 
 /// One ball in one frame, in pixels.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -88,7 +89,7 @@ pub struct Tracker {
     /// The frame being pushed, reduced to the background's coarse pixels (by `look`,
     /// where a background is learned): what the outermost-edge check compares with
     /// the background, as the looks do.
-    small: Option<Small>,
+    small: Option<Arc<Small>>,
 }
 
 /// An outline and how it was found.
@@ -131,6 +132,7 @@ fn differs_at(small: &Small, bg: &Small, x: f64, y: f64, p: &Params) -> bool {
         return false;
     };
     let dl = (y1 - y0).abs();
+    let (u0, v0, u1, v1) = (f32::from(u0), f32::from(v0), f32::from(u1), f32::from(v1));
     let dc = (u1 - u0).abs().max((v1 - v0).abs());
     f64::from(dl.max(p.colour_weight as f32 * dc)) > p.differ_levels
 }
@@ -214,7 +216,7 @@ impl Tracker {
     fn look(
         &mut self,
         frame: &Frame,
-        made_small: Small,
+        made_small: Arc<Small>,
         mut coarse: detect::Coarse,
     ) -> detect::Coarse {
         let p = self.params;
@@ -223,7 +225,7 @@ impl Tracker {
             if made_small.factor == bg.image.factor {
                 made_small
             } else {
-                Small::of(frame, bg.image.factor)
+                Arc::new(Small::of(frame, bg.image.factor))
             }
         });
         if let Some(roi) = p.roi {
@@ -234,7 +236,7 @@ impl Tracker {
         }
         let mut crowded = coarse.balls.len() > 2;
         if let (Some(bg), Some(small)) = (&self.background, &small) {
-            let (d, _) = differences(small, &bg.image, &p);
+            let d = differences(small, &bg.image, &p);
             let thr = threshold(&d, &p);
             let more = detect::against_differences(small, &d, thr, &p);
             // What the luma look sees but does not differ from the background is the
@@ -885,15 +887,14 @@ impl Tracker {
                 + (at(i0, j1) * (1.0 - fx) + at(i1, j1) * fx) * fy
         };
         let f = bg.factor as f64;
-        let back = |plane: &[f32], x: f64, y: f64| -> f32 {
+        let back = |plane: &[u8], x: f64, y: f64| -> f32 {
             let (i, j) = ((x / f) as usize, (y / f) as usize);
             plane
                 .get(
                     j.min(bg.height.saturating_sub(1)) * bg.width
                         + i.min(bg.width.saturating_sub(1)),
                 )
-                .copied()
-                .unwrap_or(128.0)
+                .map_or(128.0, |&v| f32::from(v))
         };
         // The ball's colour difference at its middle (upper half: above the rail).
         let (mx, my) = (guess.x, guess.y - 0.3 * guess.r);

@@ -22,6 +22,33 @@ use crate::vision::Frame;
 /// The frames of the video at `path` (as `info` describes it): every `every`-th
 /// (1: all), numbered as in the video.
 pub(super) fn frames(path: &Path, info: &Info, every: usize) -> Result<Frames, VideoError> {
+    Ok(stream(spawn(path, every)?, info))
+}
+
+/// ffmpeg started on `path`, decoding every `every`-th frame into its pipe, before
+/// the frames' size is known (`open_if` starts it beside ffprobe: each takes a
+/// tenth of a second to start, one after the other they kept a core idle).
+/// Dropped unread, ffmpeg is ended.
+pub(super) struct Started {
+    file: std::path::PathBuf,
+    child: Option<Child>,
+    stdout: Option<ChildStdout>,
+    messages: Option<JoinHandle<String>>,
+    every: u64,
+}
+
+impl Drop for Started {
+    fn drop(&mut self) {
+        // Not streamed (the file refused, an error): end ffmpeg, never leave it running.
+        if let Some(mut c) = self.child.take() {
+            let _ = c.kill();
+            let _ = c.wait();
+        }
+    }
+}
+
+/// Starts ffmpeg decoding `path` (every `every`-th frame) into a pipe.
+pub(super) fn spawn(path: &Path, every: usize) -> Result<Started, VideoError> {
     let file = path.to_path_buf();
     let every = every.max(1);
     let mut cmd = Command::new("ffmpeg");
@@ -54,9 +81,12 @@ pub(super) fn frames(path: &Path, info: &Info, every: usize) -> Result<Frames, V
             VideoProblem::cannot_run("ffmpeg", std::io::Error::other(e.to_string())),
         )
     };
-    let stdout = child.stdout.take().ok_or_else(|| piped("no stdout"))?;
+    let (Some(stdout), Some(mut stderr)) = (child.stdout.take(), child.stderr.take()) else {
+        let _ = child.kill();
+        let _ = child.wait();
+        return Err(piped("no stdout or stderr"));
+    };
     widen(&stdout);
-    let mut stderr = child.stderr.take().ok_or_else(|| piped("no stderr"))?;
     let messages = std::thread::spawn(move || {
         let mut s = String::new();
         let _ = (&mut stderr).take(64 * 1024).read_to_string(&mut s);
@@ -64,18 +94,34 @@ pub(super) fn frames(path: &Path, info: &Info, every: usize) -> Result<Frames, V
         let _ = std::io::copy(&mut stderr, &mut std::io::sink());
         s
     });
-    STREAMS.fetch_add(1, Ordering::Relaxed);
-    Ok(Box::new(Stream {
+    Ok(Started {
         file,
         child: Some(child),
-        stdout,
+        stdout: Some(stdout),
         messages: Some(messages),
+        every: every as u64,
+    })
+}
+
+/// The frames of a started ffmpeg (`spawn`), `info` describing its video.
+pub(super) fn stream(mut started: Started, info: &Info) -> Frames {
+    // Always there: `spawn` gives both.
+    let (Some(child), Some(stdout)) = (started.child.take(), started.stdout.take()) else {
+        return Box::new(std::iter::empty());
+    };
+    STREAMS.fetch_add(1, Ordering::Relaxed);
+    let every = started.every;
+    Box::new(Stream {
+        file: std::mem::take(&mut started.file),
+        child: Some(child),
+        stdout,
+        messages: started.messages.take(),
         width: info.width,
         height: info.height,
-        expected: info.frames.div_ceil(every as u64),
-        every: every as u64,
+        expected: info.frames.div_ceil(every),
+        every,
         next: 0,
-    }))
+    })
 }
 
 struct Stream {

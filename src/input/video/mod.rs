@@ -56,12 +56,19 @@ pub fn open_every(
 }
 
 /// As [`open`], with `accept` asked of the video's description before a frame is
-/// decoded: one probe (one run of ffprobe), not one to check and one to open.
+/// read: one probe (one run of ffprobe), not one to check and one to open; ffmpeg
+/// starts beside it (ended unread when the video is refused).
 pub fn open_if(
     path: &Path,
     limits: &Limits,
     accept: impl FnOnce(&Info) -> Result<(), VideoError>,
 ) -> Result<(Info, Frames), VideoError> {
+    // A file that may be a video: ffmpeg started at once, beside ffprobe (ended
+    // unread when the file is refused); not started (no ffmpeg), it is started
+    // after the probe as before, which says why it cannot be.
+    let started = (path.is_file() && !folder::is_image(path))
+        .then(|| decode::spawn(path, 1).ok())
+        .flatten();
     match checked(path, limits)? {
         Opened::Folder(info, frames) => {
             accept(&info)?;
@@ -69,7 +76,10 @@ pub fn open_if(
         }
         Opened::Video(info) => {
             accept(&info)?;
-            let frames = decode::frames(path, &info, 1)?;
+            let frames = match started {
+                Some(s) => decode::stream(s, &info),
+                None => decode::frames(path, &info, 1)?,
+            };
             Ok((info, frames))
         }
     }
