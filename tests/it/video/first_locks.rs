@@ -6,8 +6,54 @@
 //! `vision::tracker::confirmed_radius`). The looks table (BENCHMARKS.md, tracker 13)
 //! measures what they do on whole clips.
 
-use groovelab::vision::Params;
+use crate::common::{paper_scene, scratch_dir};
+use crate::film::h264;
+use crate::film::looks::{self, Size};
+use groovelab::input::video::{Limits, open};
 use groovelab::vision::tracker::{confirmed_radius, locks_disagree};
+use groovelab::vision::{self, Params};
+
+/// The small look 0 of the property tests in its H.264 copy (the film example's
+/// `clip.mp4`), decoded and tracked in memory with `params`: the radius's share off
+/// the truth, and how many fits were made.
+fn look_0(params: Params) -> Option<(f64, usize)> {
+    if !crate::video::tracking::ffmpeg() {
+        return None;
+    }
+    let scene = paper_scene();
+    let clip = looks::random(&scene, 0, Size::Small);
+    let truth = scene.radius * clip.film.px_per_m();
+    let dir = scratch_dir("first_locks", "look_0");
+    let path = dir.join("clip.mp4");
+    h264::write(&path, &clip.film, clip.frames).unwrap();
+    let (_, frames) = open(&path, &Limits::default()).unwrap();
+    let frames: Vec<vision::Frame> = frames.map(|f| f.unwrap().1).collect();
+    let t = vision::track(&frames, params);
+    let r = t.radius().unwrap_or(f64::NAN);
+    Some(((r - truth).abs() / truth, t.radii().len()))
+}
+
+/// Seed 0's H.264 copy tracked: with the rule, the radius within 3 % of the truth;
+/// without it (any first locks set the radius, their median), far off.
+#[test]
+fn a_look_whose_first_locks_disagree_is_locked_at_its_radius() {
+    let Some((off, fits)) = look_0(Params::default()) else {
+        return;
+    };
+    assert!(
+        off < 0.03 && fits >= 20,
+        "the radius {off:.3} off, {fits} fits"
+    );
+    let (off, fits) = look_0(Params {
+        locks_agree: f64::INFINITY,
+        ..Params::default()
+    })
+    .unwrap();
+    assert!(
+        off > 0.3,
+        "without the rule: the radius {off:.3} off, {fits} fits"
+    );
+}
 
 /// The small look 0 of the property tests (a glossy ball on a dark cluttered wall,
 /// moving shadows): in its first frame one ball was locked at its radius (16.7 px
