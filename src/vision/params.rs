@@ -161,6 +161,20 @@ pub struct Params {
     /// ball and the smear of changed blocks it drags in a compressed clip).
     /// Default 1.3: a ball's blob is its width, plus a pixel or two of blur.
     pub wide_blob: f64,
+    /// Before the balls' radius is known, one frame's good fits whose radii lie
+    /// farther apart than this share of the largest set no radius (none of them is
+    /// kept). Default 0.15 (`radius_tolerance`): both balls have one radius; two first
+    /// locks that disagree are a circle through a ball's top and the fringe joined to
+    /// its blob and the ball (the median of two is the larger, the wrong one on the
+    /// looks table's seeds 1, 23 and 26), or a ball's lit part and the ball.
+    pub locks_agree: f64,
+    /// The balls' radius is confirmed when each ball's fits found about its blobs'
+    /// own guesses (not sought at the radius) have medians within this share of the
+    /// radius of each other and of it; only then is a blob of about a ball's width
+    /// whose own guess gave no outline sought at that radius. Default 0.05
+    /// (`max_radius_spread`): a first lock a few % off, imposed on every blob, locks
+    /// its error in (the looks table's seed 23: 1.26 R, μ_k 0.140 for 0.17).
+    pub confirm_spread: f64,
     /// A circle of the balls' radius on the frame's edges needs edge votes from at
     /// least this share of its length (`hough::centres`). Default 0.2: the upper
     /// half shows above the rail, its edge two or three pixels thick, so a ball's
@@ -392,6 +406,8 @@ impl Default for Params {
             mark_levels: 10.0,
             mark_cut: 0.3,
             wide_blob: 1.3,
+            locks_agree: 0.15,
+            confirm_spread: 0.05,
             hough_arc: 0.2,
             marks: MarkChecks::default(),
             off_the_line: 0.25,

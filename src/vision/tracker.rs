@@ -90,6 +90,13 @@ pub struct Tracker {
     /// where a background is learned): what the outermost-edge check compares with
     /// the background, as the looks do.
     small: Option<Arc<Small>>,
+    /// The fits of the frame being pushed that were sought at the known radius (a
+    /// blob's guess at that radius, the Hough search, the follower): they say little
+    /// of the radius, being sought at it.
+    sought: Vec<Circle>,
+    /// Each ball's radii fitted about its blobs' own guesses (not sought at the
+    /// known radius): what confirms the radius ([`confirmed_radius`]).
+    found_free: [Vec<f64>; 2],
 }
 
 /// An outline and how it was found.
@@ -325,6 +332,7 @@ impl Tracker {
         self.relearn();
         let img = &frame.luma;
         let k = self.frames.len();
+        self.sought.clear();
         self.counts.frames += 1;
         let p = self.params;
         let noise = prep.noise;
@@ -362,6 +370,7 @@ impl Tracker {
             _ => std::cmp::Ordering::Equal,
         });
         let mut fits = kept;
+        self.no_disagreeing_locks(&mut fits);
         let merged = self.merged(&coarse, &fits);
         if fits.is_empty() && !merged {
             self.counts.empty += 1;
@@ -392,6 +401,11 @@ impl Tracker {
                     }
                 }
                 self.radii.push(o.circle.r);
+                if !self.sought.contains(&o.circle)
+                    && let Some(free) = self.found_free.get_mut(slot)
+                {
+                    free.push(o.circle.r);
+                }
                 if let Some(e) = circle::edge_offsets(img, &o) {
                     self.edges.push(e);
                 }
@@ -430,7 +444,7 @@ impl Tracker {
         // Once the radius is known, only in a blob wider than a ball: the opened
         // blob of a ball that matches the wall in places (same-brightness wood
         // grain, looks table seed 45) is smaller than the ball, its fits too.
-        match (fit, b.core) {
+        let fit = match (fit, b.core) {
             (Err(e), Some(core))
                 if self
                     .radius
@@ -441,6 +455,52 @@ impl Tracker {
                     .and_then(|o| whole(o, core.r))
             }
             (fit, _) => fit,
+        };
+        // A blob of about a ball's width whose own guess gave no outline (wider or
+        // narrower than the ball: a fringe joined to it, a ball matching the wall in
+        // places): once the radius is confirmed by both balls, the ball sought at
+        // that radius, its top the blob's (the ball's top shows above the rail), in
+        // brightness only (a colour outline at a given radius fits what it is given).
+        match (
+            fit,
+            confirmed_radius(self.radius, &self.found_free, p.confirm_spread),
+        ) {
+            (Err(e), Some(r)) if b.width() <= p.wide_blob * 2.0 * r => {
+                let at = Circle {
+                    x: guess.x,
+                    y: b.top + r,
+                    r,
+                };
+                let fit = self
+                    .refine_with(frame, at, band, false)
+                    .map_err(|_| e)
+                    .and_then(|o| whole(o, r))
+                    .and_then(|o| {
+                        if (o.circle.r - r).abs() <= p.confirm_spread * r {
+                            Ok(o)
+                        } else {
+                            Err(LeftOut::Poor)
+                        }
+                    });
+                if let Ok(o) = &fit {
+                    self.sought.push(o.circle);
+                }
+                fit
+            }
+            (fit, _) => fit,
+        }
+    }
+
+    /// First locks that disagree set no radius: before it is known, a frame's good
+    /// fits whose radii lie over `locks_agree` apart are all poor (of a circle
+    /// through a ball's top and the fringe joined to its blob, and the ball, neither
+    /// is known to be the ball; the median of two radii is the larger).
+    fn no_disagreeing_locks(&self, fits: &mut [Result<Outline, LeftOut>]) {
+        let locks: Vec<f64> = fits.iter().flatten().map(|o| o.circle.r).collect();
+        if self.radius.is_none() && locks_disagree(&locks, self.params.locks_agree) {
+            for f in fits.iter_mut().filter(|f| f.is_ok()) {
+                *f = Err(LeftOut::Poor);
+            }
         }
     }
 
@@ -540,6 +600,7 @@ impl Tracker {
                 continue;
             }
             if let Ok(o) = self.refine(frame, g, (1.5 * f).max(4.0)) {
+                self.sought.push(o.circle);
                 fits.push(Ok(o));
             }
         }
@@ -589,6 +650,7 @@ impl Tracker {
             if let Ok(o) = self.refine(frame, pred, band)
                 && !(moved && !sharp(&o) && self.differing(&o.circle) < p.moved_share)
             {
+                self.sought.push(o.circle);
                 fits.push(Ok(o));
             }
         }
@@ -683,12 +745,23 @@ impl Tracker {
     /// The outline near `guess`, twice: in a band `band` px wide either side (the
     /// coarse look's error, or the search window), then narrowly about the first fit.
     fn refine(&mut self, frame: &Frame, guess: Circle, band: f64) -> Result<Outline, LeftOut> {
+        self.refine_with(frame, guess, band, true)
+    }
+
+    /// As [`Tracker::refine`]; `colour`: whether the outline may be sought in the
+    /// frame's colour difference where brightness gives none.
+    fn refine_with(
+        &mut self,
+        frame: &Frame,
+        guess: Circle,
+        band: f64,
+        colour: bool,
+    ) -> Result<Outline, LeftOut> {
         let guess = self.predicted_near(guess).unwrap_or(guess);
         let clear = self.params.min_coverage;
         let mut p = self.params;
-        // A first lock needs a clear outline; once the balls' radius is known, a
-        // circle of that radius needs less of it, if its radius agrees closely with
-        // the known one (and odd fits are left out over the clip).
+        // A first lock needs a clear outline; a circle of the known radius less, if
+        // its radius agrees closely (and odd fits are left out over the clip).
         if self.radius().is_some() {
             p.min_coverage = p.min_coverage.min(p.min_coverage_known);
         }
@@ -714,6 +787,7 @@ impl Tracker {
                     .filter(|o| o.outline.coverage >= p.min_coverage);
                 match (either, weak) {
                     (Some(o), _) | (None, Some(o)) => o,
+                    (None, None) if !colour => return Err(LeftOut::Poor),
                     (None, None) => self
                         .colour_outline(frame, guess, band)
                         .ok_or(LeftOut::Poor)?,
@@ -1091,6 +1165,30 @@ fn stands_out(frame: &Frame, c: &Circle, colour_weight: f64) -> f64 {
     let du = (mean(&inner, 1) - mean(&outer, 1)).abs();
     let dv = (mean(&inner, 2) - mean(&outer, 2)).abs();
     dl.max(colour_weight * du.max(dv))
+}
+
+/// True when a frame's good fits' radii (`radii`, px) lie farther apart than
+/// `tolerance` of the largest: before the balls' radius is known, such first locks
+/// set none (both balls have one radius; a circle through a ball's top and the
+/// fringe joined to its blob is larger than the ball, the ball's lit part smaller).
+pub fn locks_disagree(radii: &[f64], tolerance: f64) -> bool {
+    let lo = radii.iter().copied().fold(f64::INFINITY, f64::min);
+    let hi = radii.iter().copied().fold(0.0, f64::max);
+    radii.len() >= 2 && hi - lo > tolerance * hi
+}
+
+/// The balls' radius `radius` (px) when both balls confirm it: each ball's radii
+/// fitted about its blobs' own guesses (`free`, not sought at the known radius),
+/// their medians within `spread` of the radius of each other and of it; else `None`.
+/// Both balls have one radius, and two balls found apart agreeing on it is what a
+/// wrong first lock (the lit part of one ball, a circle through one ball's fringe)
+/// does not give.
+pub fn confirmed_radius(radius: Option<f64>, free: &[Vec<f64>; 2], spread: f64) -> Option<f64> {
+    let r = radius?;
+    let [a, b] = free;
+    let (ma, mb) = (median(a)?, median(b)?);
+    let tol = spread * r;
+    ((ma - mb).abs() <= tol && (0.5 * (ma + mb) - r).abs() <= tol).then_some(r)
 }
 
 /// A slot's circle extrapolated to frame `k` from its last two fits.
