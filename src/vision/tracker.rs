@@ -409,8 +409,7 @@ impl Tracker {
                 if let Some(e) = circle::edge_offsets(img, &o) {
                     self.edges.push(e);
                 }
-                if !self.seeded && (self.radii.len() <= 64 || self.radii.len().is_multiple_of(256))
-                {
+                if self.radii.len() <= 64 || self.radii.len().is_multiple_of(256) {
                     self.radius = median(&self.radii);
                 }
                 self.fix(img, o, noise)
@@ -685,8 +684,10 @@ impl Tracker {
     }
 
     /// In the first frame with a ball seen, the seed (`Params::ball_at`): the fit
-    /// whose disc holds it is a ball and sets the radius; fits of another radius are
-    /// not balls. Without such a fit, the outline is sought about the seed itself.
+    /// whose disc holds it is a ball and sets the radius; fits of another radius in
+    /// that frame are not balls. Without such a fit, the outline is sought about the
+    /// seed itself. The radius is then learned from the fits as without a seed (one
+    /// outline can be a few % off: a lit part, a fringe joined to the ball).
     fn seed(&mut self, frame: &Frame, fits: &mut Vec<Result<Outline, LeftOut>>) {
         let Some((sx, sy)) = self.params.ball_at else {
             return;
