@@ -136,6 +136,33 @@ pub enum VideoProblem {
     WriteImage(image::ImageError),
     #[error("a folder of frames says no frame rate; give it with --fps (e.g. --fps 240)")]
     NoRate,
+    /// `--ball-at X,Y` off the frames of `size` px.
+    #[error(
+        "--ball-at {},{} lies outside the frame, expected a point on a ball within its {}×{} pixels (X 0 to {}, Y 0 to {} from the top-left corner)",
+        at.0, at.1, size.0, size.1, size.0.saturating_sub(1), size.1.saturating_sub(1)
+    )]
+    BallAtOutside {
+        at: (f64, f64),
+        size: (usize, usize),
+    },
+    /// `--ball-at X,Y` outside `--roi X,Y,W,H`, where the tracker does not look.
+    #[error(
+        "--ball-at {},{} lies outside --roi {},{},{},{}, expected a point on a ball inside the rectangle the tracker looks in",
+        at.0, at.1, roi.0, roi.1, roi.2, roi.3
+    )]
+    BallAtOutsideRoi {
+        at: (f64, f64),
+        roi: (f64, f64, f64, f64),
+    },
+    /// `--roi X,Y,W,H` wholly off the frames of `size` px.
+    #[error(
+        "--roi {},{},{},{} lies wholly outside the frame, expected a rectangle over its {}×{} pixels (X 0 to {}, Y 0 to {} from the top-left corner)",
+        roi.0, roi.1, roi.2, roi.3, size.0, size.1, size.0.saturating_sub(1), size.1.saturating_sub(1)
+    )]
+    RoiOutside {
+        roi: (f64, f64, f64, f64),
+        size: (usize, usize),
+    },
     #[error("holds {frames} frame(s), expected a video")]
     TooFewFrames { frames: usize },
     #[error(transparent)]

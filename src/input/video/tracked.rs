@@ -115,6 +115,9 @@ pub fn track_or_found(
     let mut rate = None;
     let (info, frames) = super::open_if(video, &Limits::default(), |info| {
         rate = info.rate(options.fps);
+        if let Some(what) = off_the_frame(options, (info.width, info.height)) {
+            return Err(err(what));
+        }
         match rate {
             Some(_) => Ok(()),
             None => Err(err(VideoProblem::NoRate)),
@@ -153,6 +156,35 @@ pub fn track_or_found(
         notes,
         view,
     }))
+}
+
+/// What of `--ball-at` and `--roi` lies off the frames of `size` px, or the point
+/// outside the rectangle (checked before a frame is decoded: either would only have
+/// the tracker refuse later, or ignore the seed, for a reason it does not name).
+fn off_the_frame(options: &Options, size: (usize, usize)) -> Option<VideoProblem> {
+    let (w, h) = (size.0 as f64, size.1 as f64);
+    if let Some(at) = options.ball_at
+        && !(at.0 >= 0.0 && at.0 < w && at.1 >= 0.0 && at.1 < h)
+    {
+        return Some(VideoProblem::BallAtOutside { at, size });
+    }
+    if let Some(r) = options.roi
+        && !(r.x < w && r.y < h && r.x + r.width > 0.0 && r.y + r.height > 0.0)
+    {
+        return Some(VideoProblem::RoiOutside {
+            roi: (r.x, r.y, r.width, r.height),
+            size,
+        });
+    }
+    if let (Some(at), Some(r)) = (options.ball_at, options.roi)
+        && !r.contains(at.0, at.1)
+    {
+        return Some(VideoProblem::BallAtOutsideRoi {
+            at,
+            roi: (r.x, r.y, r.width, r.height),
+        });
+    }
+    None
 }
 
 /// The frames streamed through the tracker, read on a thread of their own: the

@@ -241,6 +241,48 @@ fn a_seed_sets_the_first_radius_and_the_balls_fits_the_rest() {
 }
 
 #[test]
+fn a_seed_or_roi_off_the_frame_is_one_line_naming_the_frame() {
+    // Three frames of 64×48 px in a folder (no ffmpeg needed): a point or rectangle
+    // off them, or the point outside the rectangle, is refused before tracking.
+    let dir = crate::common::scratch_dir("video_off_frame", "frames");
+    let (w, h) = (64usize, 48usize);
+    for k in 1..=3 {
+        let rgb = vec![90u8; w * h * 3];
+        let p = dir.join(format!("frame{k:04}.png"));
+        groovelab::input::video::write::png(&p, &rgb, w, h).unwrap();
+    }
+    let folder = dir.to_str().unwrap();
+    for (args, want) in [
+        (
+            &["--ball-at", "64,10"][..],
+            "--ball-at 64,10 lies outside the frame",
+        ),
+        (&["--ball-at", "10,48"][..], "outside the frame"),
+        (
+            &["--roi", "70,0,10,10"][..],
+            "--roi 70,0,10,10 lies wholly outside",
+        ),
+        (&["--roi", "0,48,64,20"][..], "wholly outside"),
+        (
+            &["--roi", "0,20,64,20", "--ball-at", "5,5"][..],
+            "--ball-at 5,5 lies outside --roi 0,20,64,20",
+        ),
+    ] {
+        let mut all = vec!["track", folder, "--fps", "30"];
+        all.extend_from_slice(args);
+        let out = crate::common::groovelab(&all);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert_eq!(err.trim().lines().count(), 1, "{args:?}: {err}");
+        assert!(err.contains(want), "{args:?}: {err}");
+        assert!(
+            want.contains("--roi 0,20") || err.contains("64×48"),
+            "{args:?}: {err}"
+        );
+    }
+}
+
+#[test]
 fn a_bad_roi_or_seed_is_one_line_naming_the_form() {
     for (flag, value, want) in [
         ("--roi", "1,2,3", "X,Y,W,H"),
