@@ -428,16 +428,6 @@ pub fn differences(s: &Small, bg: &Small, p: &Params) -> Vec<f32> {
         .collect()
 }
 
-/// The shadows among [`differences`] `d` of `s` from `bg`, counted: a darker
-/// pixel's difference is at least its brightness step, so 0 for a darker pixel
-/// means a shadow. (Apart: the looks and the learner do without the count.)
-pub fn shadows(d: &[f32], s: &Small, bg: &Small) -> usize {
-    d.iter()
-        .zip(s.y.iter().zip(&bg.y))
-        .filter(|&(&d, (&y, &by))| d == 0.0 && y - by < 0.0)
-        .count()
-}
-
 /// The level above which a difference marks a pixel: [`Params::differ_sigmas`]
 /// times the differences' robust scatter (their median absolute value, most pixels
 /// being background), at least [`Params::differ_levels`].
@@ -472,6 +462,16 @@ fn dilate(m: &[bool], w: usize, h: usize) -> Vec<bool> {
 mod tests {
     use super::*;
     use crate::vision::gray::Gray;
+
+    /// The shadows among [`differences`] `d` of `s` from `bg`, counted: a darker
+    /// pixel's difference is at least its brightness step, so 0 for a darker pixel
+    /// means a shadow.
+    fn shadows(d: &[f32], s: &Small, bg: &Small) -> usize {
+        d.iter()
+            .zip(s.y.iter().zip(&bg.y))
+            .filter(|&(&d, (&y, &by))| d == 0.0 && y - by < 0.0)
+            .count()
+    }
 
     fn flat(w: usize, h: usize, level: u8) -> Frame {
         Frame::from_gray(Gray::filled(w, h, level))
