@@ -304,19 +304,11 @@ struct Row {
     mu: Option<(f64, f64)>,
 }
 
-/// Tracks `clip` in this process (its pixels against the truth) and fits its tracks
-/// with the command line, as a user would.
-fn measure(dir: &Path, clip: &Clip) -> Row {
-    let film = &clip.film;
-    let path = dir.join("clip.mp4");
-    h264::write(&path, film, clip.frames).unwrap();
-    measure_with(dir, clip, &path, Handle::None)
-}
-
 /// What a user hands the tracker after a refusal (the handles the refusal names).
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Handle {
-    None,
+    /// Nothing: the clip as it comes.
+    Without,
     /// `--scale`: the picture's true scale, as measured from a ruler in the frame.
     Scale,
     /// `--ball-at`: the left ball's true centre in the first frame, as read off the
@@ -324,8 +316,10 @@ enum Handle {
     BallAt,
 }
 
-/// As [`measure`], the clip already written at `path`, with `handle`.
-fn measure_with(dir: &Path, clip: &Clip, path: &Path, handle: Handle) -> Row {
+/// Tracks `clip`, written at `path`, in this process (its pixels against the
+/// truth), with `handle`, and fits its tracks with the command line, as a user
+/// would.
+fn measure(dir: &Path, clip: &Clip, path: &Path, handle: Handle) -> Row {
     use groovelab::input::video::tracked::{self, Options};
     let film = &clip.film;
     let first = film.truth(0)[0].centre;
@@ -461,19 +455,23 @@ fn looks_table() {
     // `LOOKS_HANDLES=1`: each refused look tried again with each handle the refusal
     // names; [right, wrong] per handle.
     let handles = std::env::var_os("LOOKS_HANDLES").is_some();
+    // μ_k within max(0.015, its ±) of the truth.
+    let right = |(m, se): (f64, f64)| (m - truth).abs() <= se.max(0.015);
     let mut rescued = [[0usize; 2]; 2];
     let (mut c_all, mut m_all) = ((0.0, 0), (0.0, 0));
     for seed in first..first + n {
         let clip = looks::random(&scene, seed, size);
         let dir = scratch_dir("video_looks", "run");
-        let row = measure(&dir, &clip);
+        let path = dir.join("clip.mp4");
+        h264::write(&path, &clip.film, clip.frames).unwrap();
+        let row = measure(&dir, &clip, &path, Handle::Without);
         let mut with = "–".to_string();
         if handles && row.mu.is_none() {
             let mut words = Vec::new();
             for (i, h) in [Handle::Scale, Handle::BallAt].into_iter().enumerate() {
-                let again = measure_with(&dir, &clip, &dir.join("clip.mp4"), h);
+                let again = measure(&dir, &clip, &path, h);
                 let word = match again.mu {
-                    Some((m, se)) if (m - truth).abs() <= se.max(0.015) => {
+                    Some((m, se)) if right((m, se)) => {
                         rescued[i][0] += 1;
                         format!("✓ {m:.3} ± {se:.3}")
                     }
@@ -494,9 +492,7 @@ fn looks_table() {
                 format!("{:.2}", (s / n as f64).sqrt())
             }
         };
-        let ok = row
-            .mu
-            .is_some_and(|(m, se)| (m - truth).abs() <= se.max(0.015));
+        let ok = row.mu.is_some_and(right);
         good += usize::from(ok);
         panics += usize::from(row.tracked.starts_with("panic"));
         refused +=
