@@ -618,6 +618,9 @@ impl Tracker {
             let Some(pred) = predict(l, k).filter(|_| recent) else {
                 continue;
             };
+            if self.crosses_other(slot, &pred) {
+                continue;
+            }
             let found = fits
                 .iter()
                 .flatten()
@@ -653,6 +656,20 @@ impl Tracker {
                 fits.push(Ok(o));
             }
         }
+    }
+
+    /// True when `pred`, the ball in `slot` predicted now, overlaps the other ball
+    /// predicted now (seen in the last 3 frames): two balls never overlap, so the
+    /// predictions have run on across the impact, and the window about either lies
+    /// where the ball was headed, not where it is (the looks table's seed 39: a
+    /// circle fitted there, 32 px from the ball that had bounced back).
+    fn crosses_other(&self, slot: usize, pred: &Circle) -> bool {
+        let k = self.frames.len();
+        self.last
+            .get(1 - slot.min(1))
+            .filter(|l| l.last().is_some_and(|(k1, _)| k - k1 <= 3))
+            .and_then(|l| predict(l, k))
+            .is_some_and(|o| (o.x - pred.x).hypot(o.y - pred.y) < o.r + pred.r)
     }
 
     /// The share of the upper half of the disc `c` (above the rail) where the frame

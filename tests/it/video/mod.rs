@@ -5,6 +5,7 @@ pub(crate) mod app;
 mod first_locks;
 mod follow_gap;
 pub(crate) mod found_frames;
+mod impact_follow;
 pub(crate) mod looks;
 mod mark_highlight;
 mod mark_place;
