@@ -202,6 +202,22 @@ pub struct Params {
     /// ball's motion puts them are not the ball). Default 10: μ_k 0.5 with a groove
     /// that doubles the normal force.
     pub max_deceleration: f64,
+    /// How far along the groove a fit may lie from the smooth motion of its ball's
+    /// neighbouring fits (`tracks::off_the_curve`: a parabola through up to
+    /// `curve_neighbours` fits either side, on one side of the impact), in robust
+    /// scatters of every fit's such distance … Default 6: a fit's own scatter
+    /// stays within 3 or 4 of them.
+    pub off_the_curve: f64,
+    /// … and in shares of the radius, whichever is more. Default 0.1 (2–6 px on the
+    /// looks table: a fit's scatter on its hard looks is a pixel or two).
+    pub off_the_curve_share: f64,
+    /// Fits either side taken for that parabola. Default 3: three a side bend with a
+    /// ball's slowing, not with its fits' scatter.
+    pub curve_neighbours: usize,
+    /// A parabola that misses its own fits by more than this share of what a fit may
+    /// lie off it (RMS) judges nothing: the motion there is no parabola (an impact
+    /// not told by the closest approach, a ball starting to roll). Default 0.5.
+    pub curve_inner: f64,
     /// Least share of a luma blob's upper half that differs from the background for
     /// the blob to be taken as a ball. Default 0.15: a ball that moved gives about a
     /// half or more, a still disc of the bench about none. The follower's fit where
@@ -414,6 +430,10 @@ impl Default for Params {
             odd_radius: 3.0,
             odd_radius_share: 0.02,
             max_deceleration: 10.0,
+            off_the_curve: 6.0,
+            off_the_curve_share: 0.1,
+            curve_neighbours: 3,
+            curve_inner: 0.5,
             moved_share: 0.15,
             mark_votes: 9,
             max_radius_spread: 0.05,

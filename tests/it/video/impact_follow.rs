@@ -14,7 +14,7 @@ use groovelab::input::video::tracked::{self, Options};
 /// The full-size look `seed` of the looks table in its H.264 copy, tracked as the
 /// command line tracks it: per centre given, its frame and its distance from the
 /// nearest true ball in radii (`None` without ffmpeg).
-fn centres_off(seed: u64) -> Option<Vec<(usize, f64)>> {
+pub(crate) fn centres_off(seed: u64) -> Option<Vec<(usize, f64)>> {
     if !crate::video::tracking::ffmpeg() {
         return None;
     }
