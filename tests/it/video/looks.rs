@@ -363,7 +363,7 @@ fn measure(dir: &Path, clip: &Clip, path: &Path, handle: Handle) -> Row {
         film.scene.radius * film.px_per_m()
     );
     row.scale_z = Some((c.px_per_m - film.px_per_m()) / c.px_per_m_sigma.max(1e-12));
-    for b in &done.view.balls {
+    for (bi, b) in done.view.balls.iter().enumerate() {
         for (k, (centre, mark)) in b.centre.iter().zip(&b.mark).enumerate() {
             let Some(p) = centre else { continue };
             let p = (f64::from(p.0), f64::from(p.1));
@@ -373,7 +373,7 @@ fn measure(dir: &Path, clip: &Clip, path: &Path, handle: Handle) -> Row {
             row.centre.1 += 1;
             if std::env::var_os("LOOKS_FRAMES").is_some() {
                 println!(
-                    "frame {k}: centre ({:.2}, {:.2}) truth ({:.2}, {:.2}) err {:.2}; mark {:?} truth ({:.1}, {:.1})",
+                    "ball {bi} frame {k}: centre ({:.2}, {:.2}) truth ({:.2}, {:.2}) err {:.2}; mark {:?} truth ({:.1}, {:.1})",
                     p.0, p.1, t.centre.0, t.centre.1, err, mark, t.mark.0, t.mark.1
                 );
             }
