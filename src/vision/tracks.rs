@@ -341,7 +341,7 @@ fn leave_out_odd_fits(
             p.off_the_line * r,
             p.max_deceleration * px_per_m,
         );
-        let curve = Curve {
+        let curve = OffCurveRule {
             sigmas: p.off_the_curve,
             floor: p.off_the_curve_share * r,
             neighbours: p.curve_neighbours,
@@ -468,7 +468,7 @@ fn along_paths(frames: &[FrameFixes]) -> ([Vec<(usize, f64)>; 2], Option<usize>)
 /// How `off_the_curve` judges a fit (`Params::off_the_curve` and the three after it),
 /// its floor in px.
 #[derive(Clone, Copy, Debug)]
-struct Curve {
+struct OffCurveRule {
     sigmas: f64,
     floor: f64,
     neighbours: usize,
@@ -489,7 +489,7 @@ struct Curve {
 /// table's seeds 24, 27, 32 and 6 kept single fits 5–22 px along the groove from
 /// the ball, each beside fits within a pixel or two of it.
 #[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame; fit indices below the fits' count
-fn off_the_curve(frames: &mut [FrameFixes], times: &[f64], curve: Curve) {
+fn off_the_curve(frames: &mut [FrameFixes], times: &[f64], curve: OffCurveRule) {
     let (paths, impact) = along_paths(frames);
     let t = |k: usize| times.get(k).copied().unwrap_or(k as f64);
     let side = |k: usize| match impact {
@@ -917,9 +917,9 @@ mod tests {
         assert_eq!(kept(&frames), 48);
     }
 
-    fn curve() -> Curve {
-        let p = crate::vision::Params::default();
-        Curve {
+    fn curve() -> OffCurveRule {
+        let p = crate::vision::params::Params::default();
+        OffCurveRule {
             sigmas: p.off_the_curve,
             floor: p.off_the_curve_share * 38.0,
             neighbours: p.curve_neighbours,
