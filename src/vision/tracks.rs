@@ -541,7 +541,6 @@ struct OffCurve {
 /// Fit `i` of `fits` (frame, place along the groove) against the least-squares
 /// parabola in time `t` through up to `n` fits of its `side` before it and `n`
 /// after; `None` without one either side, four in all, or a side.
-#[allow(clippy::indexing_slicing)] // the normal equations' 3×3 arrays, indexed below 3
 fn off_curve(
     fits: &[(usize, f64)],
     i: usize,
@@ -566,59 +565,37 @@ fn off_curve(
         return None;
     }
     // s = a + b u + c u², u the time from the fit over the span.
-    let pts: Vec<([f64; 3], f64)> = before
+    let pts: Vec<(nalgebra::Vector3<f64>, f64)> = before
         .iter()
         .chain(&after)
         .map(|q| {
             let u = (t(q.0) - t(k)) / span;
-            ([1.0, u, u * u], q.1)
+            (nalgebra::Vector3::new(1.0, u, u * u), q.1)
         })
         .collect();
-    let (mut m, mut v) = ([[0.0; 3]; 3], [0.0; 3]);
-    for (row, sj) in &pts {
-        for (a, ra) in row.iter().enumerate() {
-            v[a] += ra * sj;
-            for (b, rb) in row.iter().enumerate() {
-                m[a][b] += ra * rb;
-            }
-        }
-    }
-    let inv = inverse3(&m)?;
-    let coef: Vec<f64> = inv
-        .iter()
-        .map(|r| r.iter().zip(&v).map(|(x, y)| x * y).sum())
-        .collect();
-    let at = |row: &[f64; 3]| row.iter().zip(&coef).map(|(x, y)| x * y).sum::<f64>();
-    let misses: f64 = pts.iter().map(|(row, sj)| (sj - at(row)).powi(2)).sum();
-    Some(OffCurve {
-        off: (s - coef.first()?).abs(),
-        gain: (1.0 + inv[0][0]).sqrt(),
-        inner: (misses / (pts.len() - 3) as f64).sqrt(),
-    })
-}
-
-/// The inverse of a symmetric 3×3 matrix; `None` when (nearly) singular.
-fn inverse3(m: &[[f64; 3]; 3]) -> Option<[[f64; 3]; 3]> {
-    let c = |r: usize, s: usize| {
-        let (r1, r2) = ((r + 1) % 3, (r + 2) % 3);
-        let (s1, s2) = ((s + 1) % 3, (s + 2) % 3);
-        let e = |a: usize, b: usize| m.get(a).and_then(|row| row.get(b)).copied().unwrap_or(0.0);
-        e(r1, s1) * e(r2, s2) - e(r1, s2) * e(r2, s1)
-    };
-    let det: f64 = (0..3)
-        .map(|s| m.first().and_then(|row| row.get(s)).copied().unwrap_or(0.0) * c(0, s))
-        .sum();
-    let scale = m.iter().flatten().map(|x| x.abs()).fold(0.0, f64::max);
-    if det.abs() <= 1e-12 * scale.powi(3) {
+    let (m, v) = pts.iter().fold(
+        (
+            nalgebra::Matrix3::<f64>::zeros(),
+            nalgebra::Vector3::<f64>::zeros(),
+        ),
+        |(m, v), (row, sj)| (m + row * row.transpose(), v + row * *sj),
+    );
+    // Near-singular normal equations (fits bunched in time) judge nothing.
+    let scale = m.amax();
+    if m.determinant().abs() <= 1e-12 * scale.powi(3) {
         return None;
     }
-    let mut inv = [[0.0; 3]; 3];
-    for (r, row) in inv.iter_mut().enumerate() {
-        for (s, x) in row.iter_mut().enumerate() {
-            *x = c(s, r) / det;
-        }
-    }
-    Some(inv)
+    let inv = m.try_inverse()?;
+    let coef = inv * v;
+    let misses: f64 = pts
+        .iter()
+        .map(|(row, sj)| (sj - row.dot(&coef)).powi(2))
+        .sum();
+    Some(OffCurve {
+        off: (s - coef.x).abs(),
+        gain: (1.0 + inv.m11).sqrt(),
+        inner: (misses / (pts.len() - 3) as f64).sqrt(),
+    })
 }
 
 /// The frame where the two balls' paths (frame, place along the groove) come
