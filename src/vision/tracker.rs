@@ -168,6 +168,17 @@ fn differing_share(d: &[f32], thr: f32, small: &Small, blob: &Blob) -> f64 {
     hit as f64 / n as f64
 }
 
+/// True when the luma look's blob `b` is a part of the difference's blob `m` (coarse
+/// pixels `f` px): within its box (give or take a coarse pixel) and narrower than
+/// `share` of its width (`Params::part_width`).
+fn part_of(b: &Blob, m: &Blob, f: f64, share: f64) -> bool {
+    b.left >= m.left - f
+        && b.right <= m.right + f
+        && b.top >= m.top - f
+        && b.bottom <= m.bottom + f
+        && b.width() < share * m.width()
+}
+
 /// Tracks frames held in memory: the background learned from all of them, then
 /// each one followed.
 pub fn track(frames: &[Frame], params: Params) -> Tracker {
@@ -270,6 +281,20 @@ impl Tracker {
             coarse
                 .pairs
                 .retain(|b| differing_share(&d, thr, small, b) >= p.moved_share);
+            // A ball of the wall's brightness is, in luma, its lit part brighter
+            // than the wall and its shaded part darker: two blobs inside the one
+            // blob where the ball differs from the background. Parts of one ball,
+            // not balls (`Params::part_width`).
+            let f = small.factor as f64;
+            let part = |b: &Blob, m: &Blob| part_of(b, m, f, p.part_width);
+            let parts = |m: &Blob| coarse.balls.iter().filter(|b| part(b, m)).count();
+            let whole: Vec<Blob> = more
+                .balls
+                .iter()
+                .filter(|m| parts(m) >= 2)
+                .copied()
+                .collect();
+            coarse.balls.retain(|b| !whole.iter().any(|m| part(b, m)));
             crowded = coarse.balls.len() > 2;
             crowded |= more.balls.len() > 2;
             coarse.balls.extend(more.balls);

@@ -2,6 +2,7 @@
 //! as `--data` everywhere.
 
 pub(crate) mod app;
+mod ball_parts;
 mod first_locks;
 mod follow_gap;
 pub(crate) mod found_frames;
