@@ -171,6 +171,18 @@ pub struct Params {
     /// refused before as "more than two balls" in 82 of 95 frames; one ball's blob
     /// inside a blob that also holds its shadow or smear is kept); 0 keeps them all.
     pub part_width: f64,
+    /// A ball whose outline in brightness is poor (too little of it, or scattered)
+    /// is sought in colour instead (the frame's colour difference from the
+    /// background) when it is dark and grey: the median brightness of its disc's
+    /// upper half under this many levels … Default 64: a black ball (30–50 on the
+    /// looks table) on a wall of its brightness that differs from it in colour
+    /// (seeds 9 and 10), its outline of both signs mixing in the wall's edges. Not
+    /// a steel, white or coloured ball: on the looks table their colour outlines
+    /// took in the shadow and the motion's smear (seeds 15, 16, 32: wrong μ_k).
+    pub dark_ball: f64,
+    /// … and its median colour within this many levels of none (U, V of 128).
+    /// Default 6 (`shadow_hue_levels`).
+    pub grey_levels: f64,
     /// Before the balls' radius is known, one frame's good fits whose radii lie
     /// farther apart than this share of the largest set no radius (none of them is
     /// kept). Default 0.15 (`radius_tolerance`): both balls have one radius; two first
@@ -417,6 +429,8 @@ impl Default for Params {
             mark_cut: 0.3,
             wide_blob: 1.3,
             part_width: 0.75,
+            dark_ball: 64.0,
+            grey_levels: 6.0,
             locks_agree: 0.15,
             confirm_spread: 0.05,
             hough_arc: 0.2,
