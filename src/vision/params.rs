@@ -161,6 +161,28 @@ pub struct Params {
     /// ball and the smear of changed blocks it drags in a compressed clip).
     /// Default 1.3: a ball's blob is its width, plus a pixel or two of blur.
     pub wide_blob: f64,
+    /// A ball of the wall's brightness is, to the look against a smooth surface of
+    /// luma, two blobs: its lit part, brighter than the wall, and its shaded part,
+    /// darker. Two or more such blobs inside one blob that differs from the
+    /// background (within its box, give or take a coarse pixel), each narrower than
+    /// this share of its width, are parts of that one ball: they are neither fitted
+    /// nor counted as balls. Default 0.75 (the parts are 0.3–0.6 of it on the looks
+    /// table's seed 43, a green ball on a magenta grainy wall of its brightness,
+    /// refused before as "more than two balls" in 82 of 95 frames; one ball's blob
+    /// inside a blob that also holds its shadow or smear is kept); 0 keeps them all.
+    pub part_width: f64,
+    /// A ball whose outline in brightness is poor (too little of it, or scattered)
+    /// is sought in colour instead (the frame's colour difference from the
+    /// background) when it is dark and grey: the median brightness of its disc's
+    /// upper half under this many levels … Default 64: a black ball (30–50 on the
+    /// looks table) on a wall of its brightness that differs from it in colour
+    /// (seeds 9 and 10), its outline of both signs mixing in the wall's edges. Not
+    /// a steel, white or coloured ball: on the looks table their colour outlines
+    /// took in the shadow and the motion's smear (seeds 15, 16, 32: wrong μ_k).
+    pub dark_ball: f64,
+    /// … and its median colour within this many levels of none (U, V of 128).
+    /// Default 6 (`shadow_hue_levels`).
+    pub grey_levels: f64,
     /// Before the balls' radius is known, one frame's good fits whose radii lie
     /// farther apart than this share of the largest set no radius (none of them is
     /// kept). Default 0.15 (`radius_tolerance`): both balls have one radius; two first
@@ -422,6 +444,9 @@ impl Default for Params {
             mark_levels: 10.0,
             mark_cut: 0.3,
             wide_blob: 1.3,
+            part_width: 0.75,
+            dark_ball: 64.0,
+            grey_levels: 6.0,
             locks_agree: 0.15,
             confirm_spread: 0.05,
             hough_arc: 0.2,

@@ -16,6 +16,7 @@ use super::hough;
 use super::mark::{self, Mark};
 use super::params::Params;
 use super::prepared::PreparedLook;
+use super::select;
 use std::sync::Arc;
 
 /// One ball in one frame, in pixels.
@@ -168,6 +169,17 @@ fn differing_share(d: &[f32], thr: f32, small: &Small, blob: &Blob) -> f64 {
     hit as f64 / n as f64
 }
 
+/// True when the luma look's blob `b` is a part of the difference's blob `m` (coarse
+/// pixels `f` px): within its box (give or take a coarse pixel) and narrower than
+/// `share` of its width (`Params::part_width`).
+fn part_of(b: &Blob, m: &Blob, f: f64, share: f64) -> bool {
+    b.left >= m.left - f
+        && b.right <= m.right + f
+        && b.top >= m.top - f
+        && b.bottom <= m.bottom + f
+        && b.width() < share * m.width()
+}
+
 /// Tracks frames held in memory: the background learned from all of them, then
 /// each one followed.
 pub fn track(frames: &[Frame], params: Params) -> Tracker {
@@ -270,6 +282,20 @@ impl Tracker {
             coarse
                 .pairs
                 .retain(|b| differing_share(&d, thr, small, b) >= p.moved_share);
+            // A ball of the wall's brightness is, in luma, its lit part brighter
+            // than the wall and its shaded part darker: two blobs inside the one
+            // blob where the ball differs from the background. Parts of one ball,
+            // not balls (`Params::part_width`).
+            let f = small.factor as f64;
+            let part = |b: &Blob, m: &Blob| part_of(b, m, f, p.part_width);
+            let parts = |m: &Blob| coarse.balls.iter().filter(|b| part(b, m)).count();
+            let whole: Vec<Blob> = more
+                .balls
+                .iter()
+                .filter(|m| parts(m) >= 2)
+                .copied()
+                .collect();
+            coarse.balls.retain(|b| !whole.iter().any(|m| part(b, m)));
             crowded = coarse.balls.len() > 2;
             crowded |= more.balls.len() > 2;
             coarse.balls.extend(more.balls);
@@ -776,7 +802,6 @@ impl Tracker {
         colour: bool,
     ) -> Result<Outline, LeftOut> {
         let guess = self.predicted_near(guess).unwrap_or(guess);
-        let clear = self.params.min_coverage;
         let mut p = self.params;
         // A first lock needs a clear outline; a circle of the known radius less, if
         // its radius agrees closely (and odd fits are left out over the clip).
@@ -812,27 +837,21 @@ impl Tracker {
                 }
             }
         };
-        let c = o.outline.circle;
-        let tolerance = if o.outline.coverage < clear {
-            p.radius_tolerance.min(p.max_radius_spread)
+        let o = if colour {
+            let sharp = sharp(&o);
+            self.dark_in_colour(frame, (guess, band), o, &p, sharp)
         } else {
-            p.radius_tolerance
+            o
         };
-        let r_ok = self
-            .radius()
-            .is_none_or(|r| (c.r - r).abs() < tolerance * r);
+        let c = o.outline.circle;
+        let tolerance = self.tolerance(&o.outline);
         // A ghost (where the background learned a ball that is not there now) or a
         // circle fitted to the wall's own pattern: nothing inside differs from
         // around it. Not a ball, and no poor outline of one either.
         if stands_out(frame, &o.outline.circle, p.colour_weight) < p.differ_levels {
             return Err(LeftOut::Unseen);
         }
-        // The colour planes are half size, brought to full size bilinearly: their
-        // edge points scatter about twice as far as the brightness edge's.
-        let max_rms = if o.colour { 2.0 * p.max_rms } else { p.max_rms };
-        if (o.outline.coverage < p.min_coverage && !sharp(&o))
-            || o.outline.rms > max_rms
-            || !r_ok
+        if !self.shaped(&o, &p, sharp(&o))
             || c.r < p.min_radius
             || p.roi.is_some_and(|roi| !roi.contains(c.x, c.y))
         {
@@ -867,6 +886,59 @@ impl Tracker {
             self.polarity = o.polarity;
         }
         Ok(o.outline)
+    }
+
+    /// A dark grey ball (black) on a wall of its brightness that differs from it in
+    /// colour: where its outline `o` in brightness is poor (`sharp`: `o` is a short
+    /// sharp arc of the known radius; the wall's own edges mixed in), its outline in
+    /// colour about `guess` (in a band `band` px wide) if that is clear: the wall's
+    /// colour against none. Else `o`.
+    fn dark_in_colour(
+        &self,
+        frame: &Frame,
+        (guess, band): (Circle, f64),
+        o: OutlineFound,
+        p: &Params,
+        sharp: bool,
+    ) -> OutlineFound {
+        if o.colour
+            || self.shaped(&o, p, sharp)
+            || !dark_grey(frame, &guess, p.dark_ball, p.grey_levels)
+        {
+            return o;
+        }
+        match self.colour_outline(frame, guess, band) {
+            Some(q) if self.shaped(&q, p, false) => q,
+            _ => o,
+        }
+    }
+
+    /// True when the outline `o` is clear enough for a ball (`sharp`: a short sharp
+    /// arc of the known radius): its coverage, its scatter about its circle (twice
+    /// as much in colour: `refine_with`'s tests) and its radius within the
+    /// tolerance of the balls' radius so far.
+    fn shaped(&self, o: &OutlineFound, p: &Params, sharp: bool) -> bool {
+        // The colour planes are half size, brought to full size bilinearly: their
+        // edge points scatter about twice as far as the brightness edge's.
+        let max_rms = if o.colour { 2.0 * p.max_rms } else { p.max_rms };
+        let (c, tolerance) = (o.outline.circle, self.tolerance(&o.outline));
+        (o.outline.coverage >= p.min_coverage || sharp)
+            && o.outline.rms <= max_rms
+            && self
+                .radius()
+                .is_none_or(|r| (c.r - r).abs() < tolerance * r)
+    }
+
+    /// How far the outline `o`'s radius may lie from the balls' radius so far, as a
+    /// share of it: `radius_tolerance`, or `max_radius_spread` where `o` covers less
+    /// than a clear outline (`min_coverage`, not lowered once the radius is known).
+    fn tolerance(&self, o: &Outline) -> f64 {
+        let p = &self.params;
+        if o.coverage < p.min_coverage {
+            p.radius_tolerance.min(p.max_radius_spread)
+        } else {
+            p.radius_tolerance
+        }
     }
 
     /// The outermost circular edge of either sign about the outline `o`
@@ -1183,6 +1255,42 @@ fn stands_out(frame: &Frame, c: &Circle, colour_weight: f64) -> f64 {
     let du = (mean(&inner, 1) - mean(&outer, 1)).abs();
     let dv = (mean(&inner, 2) - mean(&outer, 2)).abs();
     dl.max(colour_weight * du.max(dv))
+}
+
+/// True when the upper half of the disc `c` (above its centre: the rail hides the
+/// lower) is dark and grey in `frame`: its median brightness under `dark` levels and
+/// its median colour within `grey` levels of none (a black ball; its highlight and
+/// mark are a small part of it).
+fn dark_grey(frame: &Frame, c: &Circle, dark: f64, grey: f64) -> bool {
+    let (mut y, mut u, mut v) = (Vec::new(), Vec::new(), Vec::new());
+    let step = (c.r / 8.0).max(1.0);
+    let (w, h) = (frame.width() as f64, frame.height() as f64);
+    let mut dy = -0.8 * c.r;
+    while dy < 0.0 {
+        let mut dx = -0.8 * c.r;
+        while dx <= 0.8 * c.r {
+            let (x, yy) = (c.x + dx, c.y + dy);
+            if dx.hypot(dy) < 0.8 * c.r && x >= 0.0 && yy >= 0.0 && x < w && yy < h {
+                let (ix, iy) = (x as usize, yy as usize);
+                let ci = (iy / 2) * frame.chroma_width + ix / 2;
+                y.push(frame.luma.get(ix, iy));
+                u.push(frame.u.get(ci).map_or(0.0, |&q| f32::from(q) - 128.0));
+                v.push(frame.v.get(ci).map_or(0.0, |&q| f32::from(q) - 128.0));
+            }
+            dx += step;
+        }
+        dy += step;
+    }
+    match (
+        select::median(&mut y),
+        select::median(&mut u),
+        select::median(&mut v),
+    ) {
+        (Some(y), Some(u), Some(v)) => {
+            f64::from(y) < dark && f64::from(u.abs().max(v.abs())) <= grey
+        }
+        _ => false,
+    }
 }
 
 /// True when a frame's good fits' radii (`radii`, px) lie farther apart than

@@ -2,6 +2,8 @@
 //! as `--data` everywhere.
 
 pub(crate) mod app;
+pub(crate) mod ball_parts;
+mod black_ball;
 mod first_locks;
 mod follow_gap;
 pub(crate) mod found_frames;
