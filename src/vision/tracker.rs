@@ -729,9 +729,8 @@ impl Tracker {
     /// In the first frame with a ball seen, the seed (`Params::ball_at`): the fit
     /// whose disc holds it is a ball and sets the radius; fits of another radius in
     /// that frame are not balls. Without such a fit, the outline is sought about the
-    /// seed itself and taken as one more fit, its radius learned as any other's. The
-    /// radius is then learned from the fits as without a seed (one outline can be a
-    /// few % off: a lit part, a fringe joined to the ball).
+    /// seed itself. The radius is then learned from the fits as without a seed (one
+    /// outline can be a few % off: a lit part, a fringe joined to the ball).
     fn seed(&mut self, frame: &Frame, fits: &mut Vec<Result<Outline, LeftOut>>) {
         let Some((sx, sy)) = self.params.ball_at else {
             return;
@@ -740,24 +739,16 @@ impl Tracker {
             return;
         }
         let holds = |o: &Outline| (o.circle.x - sx).hypot(o.circle.y - sy) <= o.circle.r;
-        let Some(o) = fits.iter().flatten().find(|o| holds(o)).copied() else {
-            // No fit of the tracker's own holds the seed: the outline sought about
-            // the seed is one more fit once the radius is known and it agrees, never
-            // the first lock. Sought from a point, it can be an inner edge (the
-            // looks table's seed 39: 30.4 px for 42.7 as the first lock, every ball
-            // after it judged by that radius and none found; tracked right without).
-            if self.radius.is_none() {
-                return;
-            }
-            let about = seed_fit(&frame.luma, (sx, sy), self.params.min_radius)
+        let mut at = fits.iter().flatten().find(|o| holds(o)).copied();
+        if at.is_none() {
+            at = seed_fit(&frame.luma, (sx, sy), self.params.min_radius)
                 .and_then(|c| self.refine(frame, c, (0.2 * c.r).max(3.0)).ok())
                 .filter(holds);
-            if let Some(o) = about {
-                self.seeded = true;
+            if let Some(o) = at {
                 fits.push(Ok(o));
             }
-            return;
-        };
+        }
+        let Some(o) = at else { return };
         let r = o.circle.r;
         self.seeded = true;
         self.radius = Some(r);
