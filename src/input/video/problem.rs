@@ -167,6 +167,10 @@ pub enum VideoProblem {
     TooFewFrames { frames: usize },
     #[error(transparent)]
     Tracks(#[from] TracksError),
+    /// A tracking seeded with `--ball-at` (or a click) that gave no tracks: the
+    /// seed's outline set the balls' first radius, so the clip may track without it.
+    #[error("{error} (tracked with the seed --ball-at {},{}: try without it too)", at.0, at.1)]
+    Seeded { error: TracksError, at: (f64, f64) },
     /// Waiting for ffmpeg failed.
     #[error("ffmpeg: {0}")]
     Ffmpeg(std::io::Error),

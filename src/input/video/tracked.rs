@@ -143,7 +143,10 @@ pub fn track_or_found(
     let times = numbers.iter().map(|n| (n - first) as f64 / fps).collect();
     let tracks =
         vision::tracks(&tracker, times, options.radius, options.px_per_m).map_err(|e| Refused {
-            error: err(e.into()),
+            error: err(match options.ball_at {
+                Some(at) => VideoProblem::Seeded { error: e, at },
+                None => e.into(),
+            }),
             found: found(&tracker),
         })?;
     let notes = notes(&file, &info, fps, &source, &tracks, &options.radius_from);

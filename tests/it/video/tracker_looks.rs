@@ -283,3 +283,34 @@ fn a_bad_roi_or_seed_is_one_line_naming_the_form() {
         assert!(err.contains(want), "{flag} {value}: {err}");
     }
 }
+
+#[test]
+fn a_seeded_refusal_says_it_was_seeded_and_to_try_without() {
+    // Frames with no ball (no ffmpeg needed): refused either way; with a seed, the
+    // line names the seed (its outline sets the first radius, so a clip refused
+    // with it may track without it: the looks table's seed 39).
+    let dir = crate::common::scratch_dir("video_seeded_refusal", "frames");
+    let (w, h) = (64usize, 48usize);
+    for k in 1..=6 {
+        let rgb = vec![90u8; w * h * 3];
+        let p = dir.join(format!("frame{k:04}.png"));
+        groovelab::input::video::write::png(&p, &rgb, w, h).unwrap();
+    }
+    let folder = dir.to_str().unwrap();
+    for (seed, said) in [(None, false), (Some("20,30"), true)] {
+        let mut all = vec!["track", folder, "--fps", "30"];
+        if let Some(at) = seed {
+            all.extend(["--ball-at", at]);
+        }
+        let out = crate::common::groovelab(&all);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{seed:?}: {err}");
+        assert_eq!(err.trim().lines().count(), 1, "{seed:?}: {err}");
+        assert!(err.contains("no ball found"), "{seed:?}: {err}");
+        assert_eq!(
+            err.contains("tracked with the seed --ball-at 20,30: try without it too"),
+            said,
+            "{seed:?}: {err}"
+        );
+    }
+}
