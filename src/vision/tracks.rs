@@ -428,17 +428,34 @@ fn off_the_path(frames: &mut [FrameFixes], times: &[f64], within: f64, decel: f6
                     .reduce(f64::min)
                 })
             };
-            let worst = (0..fits.len())
+            let ratios: Vec<(usize, f64)> = (0..fits.len())
                 .filter_map(|i| Some((i, ratio(i)?)))
-                .max_by(|a, b| a.1.total_cmp(&b.1));
-            match worst {
-                Some((i, r)) if r > 1.0 => {
-                    let (k, _) = fits.remove(i);
-                    frames[k][slot] = Err(LeftOut::Poor);
-                }
-                _ => break,
+                .collect();
+            if !leave_out_worst(frames, slot, &mut fits, ratios) {
+                break;
             }
         }
+    }
+}
+
+/// Leaves out (as a poor outline) the fit of `slot` whose ratio to what it may be
+/// off is largest, if over 1, from `frames` and from `fits` (frame, place along the
+/// groove), `ratios` holding (index into `fits`, ratio); true when one was.
+#[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
+fn leave_out_worst(
+    frames: &mut [FrameFixes],
+    slot: usize,
+    fits: &mut Vec<(usize, f64)>,
+    ratios: impl IntoIterator<Item = (usize, f64)>,
+) -> bool {
+    let worst = ratios.into_iter().max_by(|a, b| a.1.total_cmp(&b.1));
+    match worst {
+        Some((i, r)) if r > 1.0 && i < fits.len() => {
+            let (k, _) = fits.remove(i);
+            frames[k][slot] = Err(LeftOut::Poor);
+            true
+        }
+        _ => false,
     }
 }
 
@@ -510,17 +527,12 @@ fn off_the_curve(frames: &mut [FrameFixes], times: &[f64], curve: OffCurveRule) 
                 1.4826 * median(&d).unwrap_or(0.0)
             });
             let limit = (curve.sigmas * scatter).max(curve.floor);
-            let worst = judged
+            let ratios = judged
                 .iter()
                 .filter(|(_, o)| o.inner <= curve.inner * limit)
-                .map(|(i, o)| (*i, o.off / (limit * o.gain)))
-                .max_by(|a, b| a.1.total_cmp(&b.1));
-            match worst {
-                Some((i, r)) if r > 1.0 => {
-                    let (k, _) = fits.remove(i);
-                    frames[k][slot] = Err(LeftOut::Poor);
-                }
-                _ => break,
+                .map(|(i, o)| (*i, o.off / (limit * o.gain)));
+            if !leave_out_worst(frames, slot, &mut fits, ratios) {
+                break;
             }
         }
     }
