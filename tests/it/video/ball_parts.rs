@@ -6,29 +6,13 @@
 //! "more than two balls" in 82 of its 95 frames; 44 now (the rest: a ghost where a
 //! ball came to rest, which the background learned, and single parts).
 
-use crate::common::{paper_scene, scratch_dir};
-use crate::film::h264;
-use crate::film::looks::{self, Size};
-use groovelab::input::video::{Limits, open};
+use super::decoded_look;
+use crate::film::looks::Size;
 use groovelab::vision::{self, Params};
-
-/// The full-size look `seed` of the looks table in its H.264 copy: the clip and its
-/// frames decoded (`None` without ffmpeg).
-pub(crate) fn full_look(seed: u64) -> Option<(looks::Clip, Vec<vision::Frame>)> {
-    if !crate::video::tracking::ffmpeg() {
-        return None;
-    }
-    let clip = looks::random(&paper_scene(), seed, Size::Full);
-    let dir = scratch_dir("full_looks", &format!("look_{seed}"));
-    let path = dir.join("clip.mp4");
-    h264::write(&path, &clip.film, clip.frames).unwrap();
-    let (_, decoded) = open(&path, &Limits::default()).unwrap();
-    Some((clip, decoded.map(|f| f.unwrap().1).collect()))
-}
 
 #[test]
 fn the_lit_and_shaded_parts_of_a_ball_are_not_more_balls() {
-    let Some((_, frames)) = full_look(43) else {
+    let Some((_, frames)) = decoded_look("ball_parts", 43, Size::Full) else {
         return;
     };
     let n = frames.len();

@@ -6,13 +6,14 @@
 //! colour outlines of steel, white and coloured balls took in their shadows and the
 //! motion's smear (seeds 15, 16 and 32 gave wrong μ_k).
 
-use super::ball_parts::full_look;
+use super::decoded_look;
 use crate::common::paper_scene;
+use crate::film::looks::Size;
 use groovelab::vision::{self, Params};
 
 #[test]
 fn a_black_ball_on_a_wall_of_its_brightness_is_found_in_colour() {
-    let Some((clip, frames)) = full_look(10) else {
+    let Some((clip, frames)) = decoded_look("black_ball", 10, Size::Full) else {
         return;
     };
     let r = paper_scene().radius;

@@ -6,37 +6,25 @@
 //! `vision::tracker::confirmed_radius`). The looks table (BENCHMARKS.md, tracker 13)
 //! measures what they do on whole clips.
 
-use crate::common::{paper_scene, scratch_dir};
-use crate::film::h264;
-use crate::film::looks::{self, Size};
-use groovelab::input::video::{Limits, open};
+use super::decoded_look;
+use crate::common::paper_scene;
+use crate::film::looks::Size;
 use groovelab::vision::tracker::{confirmed_radius, locks_disagree};
 use groovelab::vision::{self, Params};
 
 /// The small look 0 of the property tests in its H.264 copy (the film example's
-/// `clip.mp4`), decoded and tracked in memory with `params`: the radius's share off
-/// the truth, and how many fits were made.
-fn look_0(params: Params) -> Option<(f64, usize)> {
-    let (clip, frames) = small_look(0)?;
-    let truth = paper_scene().radius * clip.film.px_per_m();
-    let t = vision::track(&frames, params);
-    let r = t.radius().unwrap_or(f64::NAN);
-    Some(((r - truth).abs() / truth, t.radii().len()))
+/// `clip.mp4`), decoded: its true radius, px, and its frames.
+fn look_0() -> Option<(f64, Vec<vision::Frame>)> {
+    let (clip, frames) = decoded_look("first_locks", 0, Size::Small)?;
+    Some((paper_scene().radius * clip.film.px_per_m(), frames))
 }
 
-/// The small look `seed` of the property tests in its H.264 copy, decoded: the clip
-/// and its frames (`None` without ffmpeg).
-fn small_look(seed: u64) -> Option<(looks::Clip, Vec<vision::Frame>)> {
-    if !crate::video::tracking::ffmpeg() {
-        return None;
-    }
-    let clip = looks::random(&paper_scene(), seed, Size::Small);
-    let dir = scratch_dir("first_locks", &format!("look_{seed}"));
-    let path = dir.join("clip.mp4");
-    h264::write(&path, &clip.film, clip.frames).unwrap();
-    let (_, frames) = open(&path, &Limits::default()).unwrap();
-    let frames = frames.map(|f| f.unwrap().1).collect();
-    Some((clip, frames))
+/// `frames` tracked in memory with `params`: the radius's share off `truth`, and
+/// how many fits were made.
+fn locked(frames: &[vision::Frame], truth: f64, params: Params) -> (f64, usize) {
+    let t = vision::track(frames, params);
+    let r = t.radius().unwrap_or(f64::NAN);
+    ((r - truth).abs() / truth, t.radii().len())
 }
 
 /// The small look 37 (a glossy ball on a dark checkered wall, a static shadow): in
@@ -46,7 +34,7 @@ fn small_look(seed: u64) -> Option<(looks::Clip, Vec<vision::Frame>)> {
 /// rule (`confirm_spread` below zero: never confirmed) those frames miss the ball.
 #[test]
 fn a_blob_sought_at_the_confirmed_radius_finds_its_ball() {
-    let Some((clip, frames)) = small_look(37) else {
+    let Some((clip, frames)) = decoded_look("first_locks", 37, Size::Small) else {
         return;
     };
     let with = vision::track(&frames, Params::default());
@@ -77,18 +65,22 @@ fn a_blob_sought_at_the_confirmed_radius_finds_its_ball() {
 /// without it (any first locks set the radius, their median), far off.
 #[test]
 fn a_look_whose_first_locks_disagree_is_locked_at_its_radius() {
-    let Some((off, fits)) = look_0(Params::default()) else {
+    let Some((truth, frames)) = look_0() else {
         return;
     };
+    let (off, fits) = locked(&frames, truth, Params::default());
     assert!(
         off < 0.03 && fits >= 20,
         "the radius {off:.3} off, {fits} fits"
     );
-    let (off, fits) = look_0(Params {
-        locks_agree: f64::INFINITY,
-        ..Params::default()
-    })
-    .unwrap();
+    let (off, fits) = locked(
+        &frames,
+        truth,
+        Params {
+            locks_agree: f64::INFINITY,
+            ..Params::default()
+        },
+    );
     assert!(
         off > 0.3,
         "without the rule: the radius {off:.3} off, {fits} fits"

@@ -6,23 +6,17 @@
 //! fitted 32 px from its left ball, where that ball was headed one frame after it
 //! bounced back, and kept (centre RMS 4.70 px; 1.89 with the rule).
 
-use crate::common::{paper_scene, scratch_dir};
-use crate::film::h264;
-use crate::film::looks::{self, Size};
+use super::h264_look;
+use crate::common::paper_scene;
+use crate::film::looks::Size;
 use groovelab::input::video::tracked::{self, Options};
 
 /// The full-size look `seed` of the looks table in its H.264 copy, tracked as the
 /// command line tracks it: per centre given, its frame and its distance from the
 /// nearest true ball in radii (`None` without ffmpeg).
 pub(crate) fn centres_off(seed: u64) -> Option<Vec<(usize, f64)>> {
-    if !crate::video::tracking::ffmpeg() {
-        return None;
-    }
     let scene = paper_scene();
-    let clip = looks::random(&scene, seed, Size::Full);
-    let dir = scratch_dir("impact_follow", &format!("look_{seed}"));
-    let path = dir.join("clip.mp4");
-    h264::write(&path, &clip.film, clip.frames).unwrap();
+    let (clip, path) = h264_look("impact_follow", seed, Size::Full)?;
     let options = Options {
         radius: scene.radius,
         fps: Some(clip.film.look.fps),
@@ -48,18 +42,24 @@ pub(crate) fn centres_off(seed: u64) -> Option<Vec<(usize, f64)>> {
     Some(out)
 }
 
+/// Checks that the full-size look `seed`, tracked as the command line tracks it,
+/// gives more than `at_least` centres, each within `within` radii of its ball.
+pub(crate) fn assert_on_their_balls(seed: u64, at_least: usize, within: f64) {
+    let Some(centres) = centres_off(seed) else {
+        return;
+    };
+    assert!(centres.len() > at_least, "{} centres", centres.len());
+    let far: Vec<&(usize, f64)> = centres.iter().filter(|(_, off)| *off > within).collect();
+    assert!(
+        far.is_empty(),
+        "centres off their ball (frame, radii): {far:?}"
+    );
+}
+
 /// Every centre of seed 39 lies within a quarter of a radius of its ball (the
 /// worst, at the impact, 0.21 R); the follower's fit where the left ball was headed
 /// lay 0.75 R off.
 #[test]
 fn no_ball_is_followed_into_the_other_across_the_impact() {
-    let Some(centres) = centres_off(39) else {
-        return;
-    };
-    assert!(centres.len() > 40, "{} centres", centres.len());
-    let far: Vec<&(usize, f64)> = centres.iter().filter(|(_, off)| *off > 0.25).collect();
-    assert!(
-        far.is_empty(),
-        "centres off their ball (frame, radii): {far:?}"
-    );
+    assert_on_their_balls(39, 40, 0.25);
 }

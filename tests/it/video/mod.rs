@@ -23,6 +23,36 @@ pub(crate) mod tracker_looks;
 pub(crate) mod tracking;
 mod unfit;
 
+/// The random look `seed` of `size` (the looks table's, on the paper's scene) written
+/// as its H.264 copy `clip.mp4` into the scratch folder `area`/`size_seed`: the clip
+/// and the file (`None` without ffmpeg).
+pub(crate) fn h264_look(
+    area: &str,
+    seed: u64,
+    size: crate::film::looks::Size,
+) -> Option<(crate::film::looks::Clip, std::path::PathBuf)> {
+    if !tracking::ffmpeg() {
+        return None;
+    }
+    let clip = crate::film::looks::random(&crate::common::paper_scene(), seed, size);
+    let dir = crate::common::scratch_dir(area, &format!("{size:?}_{seed}"));
+    let path = dir.join("clip.mp4");
+    crate::film::h264::write(&path, &clip.film, clip.frames).unwrap();
+    Some((clip, path))
+}
+
+/// As [`h264_look`], the copy decoded: the clip and its frames.
+pub(crate) fn decoded_look(
+    area: &str,
+    seed: u64,
+    size: crate::film::looks::Size,
+) -> Option<(crate::film::looks::Clip, Vec<groovelab::vision::Frame>)> {
+    let (clip, path) = h264_look(area, seed, size)?;
+    let limits = groovelab::input::video::Limits::default();
+    let (_, frames) = groovelab::input::video::open(&path, &limits).unwrap();
+    Some((clip, frames.map(|f| f.unwrap().1).collect()))
+}
+
 /// How much of the pixel drawn at `(px, py)` a disc of radius `r` about `c` covers
 /// (0 … 1): the drawn cases' anti-aliasing, over about one pixel of the outline.
 pub(crate) fn disc_cover((px, py): (f64, f64), c: (f64, f64), r: f64) -> f64 {

@@ -9,13 +9,5 @@
 /// Every centre of seed 6 lies within 0.15 R of its ball (the worst now 0.06 R).
 #[test]
 fn a_fit_off_its_balls_smooth_motion_is_left_out() {
-    let Some(centres) = super::impact_follow::centres_off(6) else {
-        return;
-    };
-    assert!(centres.len() > 25, "{} centres", centres.len());
-    let far: Vec<&(usize, f64)> = centres.iter().filter(|(_, off)| *off > 0.15).collect();
-    assert!(
-        far.is_empty(),
-        "centres off their ball (frame, radii): {far:?}"
-    );
+    super::impact_follow::assert_on_their_balls(6, 25, 0.15);
 }
