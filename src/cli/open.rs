@@ -326,7 +326,13 @@ fn video_work(
         let path = data.data.first()?.clone();
         let kept = match crate::input::video::cache::tracks(&path, &options, &Ticked(ticket)) {
             Ok(k) => k?,
-            Err(e) => return Some(Err(Arc::new(e) as _)),
+            Err(refused) => {
+                let refused = *refused;
+                return Some(Err(crate::tui::jobs::VideoRefused {
+                    error: Arc::new(refused.error),
+                    first_frame: refused.first_frame.map(Arc::new),
+                }));
+            }
         };
         let read = || -> Result<crate::tui::jobs::TrackedVideo, CliError> {
             let file = path.display().to_string();
@@ -359,7 +365,7 @@ fn video_work(
                 view: kept.view.clone(),
             })
         };
-        Some(read().map_err(|e| Arc::new(e) as _))
+        Some(read().map_err(crate::tui::jobs::VideoRefused::of))
     }
 }
 

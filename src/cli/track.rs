@@ -54,7 +54,7 @@ pub fn run(scene: &SceneArgs, data: &DataArgs, args: &TrackArgs) -> Result<Strin
         Err(refused) => {
             return Err(refused_drawn(
                 &args.video,
-                refused,
+                *refused,
                 args.overlay.as_deref(),
                 options.fps,
             ));

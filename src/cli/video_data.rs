@@ -47,7 +47,7 @@ pub fn own_scene(scene: &SceneArgs, data: &DataArgs) -> Result<SceneSpec, CliErr
 pub fn tracks(path: &Path, scene: &SceneArgs, data: &DataArgs) -> Result<Kept, CliError> {
     let options = options(scene, data)?;
     let bar = Bar::new("frames", true);
-    let done = cache::tracks(path, &options, &bar).map_err(CliError::from);
+    let done = cache::tracks(path, &options, &bar).map_err(|r| CliError::from(r.error));
     bar.finish();
     done?.ok_or(CliError::Interrupted)
 }

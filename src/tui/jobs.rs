@@ -70,6 +70,25 @@ pub struct TrackedVideo {
     pub view: Option<Arc<VideoView>>,
 }
 
-/// What a tracking job reports: the video tracked, or why not (the edge's own error,
-/// kept whole); `None` when it was stopped.
-pub type VideoResult = Option<Result<TrackedVideo, Arc<dyn std::error::Error + Send + Sync>>>;
+/// What a tracking job reports: the video tracked, or why not; `None` when it was
+/// stopped.
+pub type VideoResult = Option<Result<TrackedVideo, VideoRefused>>;
+
+/// Why a video gave the lab no data (the edge's own error, kept whole), and, where
+/// the tracker refused it, its first frame with what was found there (a click on a
+/// ball seeds the tracking again).
+#[derive(Clone, Debug)]
+pub struct VideoRefused {
+    pub error: Arc<dyn std::error::Error + Send + Sync>,
+    pub first_frame: Option<Arc<VideoView>>,
+}
+
+impl VideoRefused {
+    /// A refusal with no picture to show.
+    pub fn of(error: impl std::error::Error + Send + Sync + 'static) -> VideoRefused {
+        VideoRefused {
+            error: Arc::new(error),
+            first_frame: None,
+        }
+    }
+}

@@ -109,17 +109,20 @@ impl Screen {
     /// What lies under the mouse at (`column`, `row`) of the frame prepared last: the
     /// chart's time, the video's pixel (while the Scene panel shows its picture).
     pub fn pointer_at(&self, app: &App, column: u16, row: u16) -> Pointer {
-        let pixel = (|| {
+        let picture = (|| {
             let video = app.video();
             let scene = self.frame.as_ref()?.panels?.scene;
             if !video.shown || !app.layers().is_empty() {
                 return None;
             }
-            view::video::pixel_at(video.view.as_deref()?, scene, column, row)
+            let view = video.picture()?;
+            let pixel = view::video::pixel_at(view, scene, column, row)?;
+            Some((pixel, view::video::shown_frame(app, view)))
         })();
         Pointer {
             time: self.chart_time_at(app, column, row),
-            pixel,
+            pixel: picture.map(|p| p.0),
+            frame: picture.and_then(|p| p.1),
         }
     }
 

@@ -149,6 +149,12 @@ pub struct VideoView {
     /// The pictures' dark and bright luma (their 10th and 90th percentiles) and the
     /// level halfway between, for a drawing in few tones.
     pub levels: [u8; 3],
+    /// The first frame shown alone, for a click on a ball in it (a seed is a point in
+    /// the first frame), with this note beside it: why the video was not tracked, or
+    /// how to go back ([`VideoView::first_frame`], [`VideoView::first_only`]); `None`
+    /// for a tracked video's view.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub first_only: Option<String>,
 }
 
 /// Why cached bytes are no [`VideoView`].
@@ -177,6 +183,7 @@ impl VideoView {
             radius_px: c.radius_px,
             balls: Vec::new(),
             levels: [0, 128, 255],
+            first_only: None,
         };
         let px = |x: f64, y: f64| {
             let p = view.pixel(x, y);
@@ -199,6 +206,63 @@ impl VideoView {
         view.balls = balls;
         view.levels = levels(&view.thumbs.pictures);
         view
+    }
+
+    /// The first frame of a video the tracker refused (`why`), its whole height, with
+    /// the outlines it found there (`found`: centre and mark, video px): the app shows
+    /// it so that a click on a ball seeds the tracking again (`--ball-at` is a point
+    /// in the first frame). No scale: nothing turns metres into its pixels.
+    pub fn first_frame(
+        mut thumbs: Thumbs,
+        found: &[super::overlay::Drawn],
+        why: String,
+    ) -> VideoView {
+        thumbs.pictures.truncate(1);
+        thumbs.every = 1;
+        let balls = found
+            .iter()
+            .enumerate()
+            .map(|(i, b)| BallPixels {
+                name: format!("found {}", i + 1),
+                centre: vec![Some((b.centre.0 as f32, b.centre.1 as f32))],
+                mark: vec![b.mark.map(|m| (m.0 as f32, m.1 as f32))],
+            })
+            .collect();
+        let levels = levels(&thumbs.pictures);
+        VideoView {
+            thumbs,
+            t: vec![0.0],
+            px_per_m: f64::NAN,
+            groove: 0.0,
+            origin: (f64::NAN, f64::NAN),
+            radius_px: f64::NAN,
+            balls,
+            levels,
+            first_only: Some(why),
+        }
+    }
+
+    /// This view's first frame alone, with its tracked centres and marks there and
+    /// `note` beside it.
+    pub fn first_only(&self, note: String) -> VideoView {
+        let found: Vec<super::overlay::Drawn> = self
+            .balls
+            .iter()
+            .filter_map(|b| {
+                let (x, y) = b.centre.first().copied().flatten()?;
+                Some(super::overlay::Drawn {
+                    centre: (f64::from(x), f64::from(y)),
+                    radius: self.radius_px,
+                    mark: b
+                        .mark
+                        .first()
+                        .copied()
+                        .flatten()
+                        .map(|(x, y)| (f64::from(x), f64::from(y))),
+                })
+            })
+            .collect();
+        VideoView::first_frame(self.thumbs.clone(), &found, note)
     }
 
     /// The video's pixel of the tracks' point (x along the groove, y up), m.
@@ -358,6 +422,7 @@ mod tests {
                 mark: vec![None, Some((5.0, 6.0)), None],
             }],
             levels: [40, 100, 250],
+            first_only: None,
         }
     }
 

@@ -16,7 +16,6 @@ use std::io::Read;
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Mutex, PoisonError};
 
-use super::VideoError;
 use super::tracked::{self, Options};
 use crate::study::Progress;
 use crate::vision::thumbs::VideoView;
@@ -83,16 +82,18 @@ fn remember(pk: (PathBuf, String), k: &Kept) {
 }
 
 /// The tracks of `path`: kept ones, or tracked now (telling `progress`) and kept;
-/// `Ok(None)` when `progress` asked to stop.
+/// `Ok(None)` when `progress` asked to stop. A refusal is not kept (a seed may
+/// change it); it holds the first frame for the app to show.
 pub fn tracks(
     path: &Path,
     options: &Options,
     progress: &dyn Progress,
-) -> Result<Option<Kept>, VideoError> {
+) -> Result<Option<Kept>, Box<tracked::Refused>> {
     if let Some(k) = kept(path, options) {
         return Ok(Some(k));
     }
-    let Some(done) = tracked::track(path, options, progress)? else {
+    let Some(done) = tracked::track_or_found(path, options, progress, tracked::Pictures::Made)?
+    else {
         return Ok(None);
     };
     let k = Kept {

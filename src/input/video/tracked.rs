@@ -89,6 +89,10 @@ pub enum Pictures {
 pub struct Refused {
     pub error: VideoError,
     pub found: FitsFound,
+    /// The app's view of the first frame, with what the tracker found there and why it
+    /// refused (a click on a ball seeds the tracking again); `None` where no pictures
+    /// were made or no frame was tracked.
+    pub first_frame: Option<VideoView>,
 }
 
 /// What the tracker found in each frame, in the video's pixels: each ball's fitted
@@ -104,10 +108,13 @@ pub fn track_or_found(
     options: &Options,
     progress: &dyn Progress,
     pictures: Pictures,
-) -> Result<Option<Tracked>, Refused> {
-    let nothing = |error: VideoError| Refused {
-        error,
-        found: Vec::new(),
+) -> Result<Option<Tracked>, Box<Refused>> {
+    let nothing = |error: VideoError| {
+        Box::new(Refused {
+            error,
+            found: Vec::new(),
+            first_frame: None,
+        })
     };
     let file = video.display().to_string();
     let err = |what: VideoProblem| VideoError::new(video, what);
@@ -141,14 +148,31 @@ pub fn track_or_found(
         }
     };
     let times = numbers.iter().map(|n| (n - first) as f64 / fps).collect();
-    let tracks =
-        vision::tracks(&tracker, times, options.radius, options.px_per_m).map_err(|e| Refused {
-            error: err(match options.ball_at {
+    let tracks = match vision::tracks(&tracker, times, options.radius, options.px_per_m) {
+        Ok(tracks) => tracks,
+        Err(e) => {
+            let what = match options.ball_at {
                 Some(at) => VideoProblem::Seeded { error: e, at },
                 None => e.into(),
-            }),
-            found: found(&tracker),
-        })?;
+            };
+            let found = found(&tracker);
+            let first_frame = (pictures == Pictures::Made).then(|| {
+                let first: Vec<_> = found
+                    .first()
+                    .into_iter()
+                    .flatten()
+                    .flatten()
+                    .copied()
+                    .collect();
+                VideoView::first_frame(thumbs, &first, what.to_string())
+            });
+            return Err(Box::new(Refused {
+                error: err(what),
+                found,
+                first_frame,
+            }));
+        }
+    };
     let notes = notes(&file, &info, fps, &source, &tracks, &options.radius_from);
     let view = VideoView::new(thumbs, &tracks);
     Ok(Some(Tracked {

@@ -10,7 +10,7 @@ use ratatui::buffer::Buffer;
 use ratatui::layout::Rect;
 use ratatui::style::{Color, Style};
 use ratatui::text::Line;
-use ratatui::widgets::Widget;
+use ratatui::widgets::{Paragraph, Widget, Wrap};
 
 use super::panel::{block, title_of};
 use crate::tui::app::App;
@@ -23,7 +23,7 @@ const RAMP: &[u8] = b" .:-=*#%@";
 /// Draws the video panel into `area`.
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let name = app.video().name.as_deref().unwrap_or("");
-    let Some(view) = app.video().view.as_deref() else {
+    let Some(view) = app.video().picture().map(|v| &**v) else {
         let what = match app.video().progress() {
             Some((done, total)) => {
                 format!("tracking {name}: frame {done} of {total}")
@@ -40,6 +40,10 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         }
         return;
     };
+    if let Some(note) = &view.first_only {
+        render_first_only(view, note, name, area, buf, theme);
+        return;
+    }
     let link = Link::of(app);
     let frame = link.and_then(|l| view.frame_at(l.file_time(app.t)));
     let titles = titles(app, view, frame);
@@ -73,6 +77,82 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
     draw_picture(view, k, &fit, buf, theme);
     draw_model(app, view, &fit, buf, theme);
     draw_tracked(view, k, &fit, buf, theme);
+}
+
+/// A video's first frame alone, with what the tracker found there, and the text: that
+/// a click on a ball seeds the tracking again, and the view's note (why the video was
+/// not tracked, or how to go back).
+fn render_first_only(
+    view: &VideoView,
+    note: &str,
+    name: &str,
+    area: Rect,
+    buf: &mut Buffer,
+    theme: &Theme,
+) {
+    let file = crate::tui::layer::main::video::short(name);
+    let titles = [
+        format!(" Video {file}  first frame "),
+        " Video  first frame ".to_string(),
+        " Video ".to_string(),
+    ];
+    let legend = Line::styled(theme.glyphs.text(" + found  × mark "), theme.dim).right_aligned();
+    let blk = block(title_of(&titles, area, theme), theme).title_bottom(legend);
+    let inner = blk.inner(area);
+    blk.render(area, buf);
+    if inner.height < 2 || inner.width < 8 {
+        return;
+    }
+    let fit = Fit::new(view, picture_rect(view, inner));
+    draw_picture(view, 0, &fit, buf, theme);
+    draw_tracked(view, 0, &fit, buf, theme);
+    if let Some(text) = text_rect(view, inner) {
+        let lines = vec![
+            Line::styled("Click a ball to track the video from it.", theme.text),
+            Line::styled(note.to_string(), theme.dim),
+        ];
+        Paragraph::new(lines)
+            .wrap(Wrap { trim: true })
+            .render(text, buf);
+    }
+}
+
+/// The columns of a first frame shown alone, beside its note, in the panel's
+/// `inner` area: as wide as the frame's aspect wants at the panel's height, at most
+/// half the panel (none in a panel too narrow for text beside it).
+fn first_only_columns(view: &VideoView, inner: Rect) -> Option<u16> {
+    if inner.width < 30 {
+        return None;
+    }
+    let (vw, vh) = (
+        view.thumbs.video.0 as f64,
+        view.thumbs.video.1.max(1) as f64,
+    );
+    let wanted = (2.0 * f64::from(inner.height) * vw / vh).ceil();
+    Some((wanted.min(f64::from(inner.width / 2)) as u16).max(8))
+}
+
+/// Where the picture goes in the panel's `inner` area: all of it, but for a first frame
+/// shown alone its left part ([`first_only_columns`]).
+pub(super) fn picture_rect(view: &VideoView, inner: Rect) -> Rect {
+    match view
+        .first_only
+        .as_ref()
+        .and(first_only_columns(view, inner))
+    {
+        Some(width) => Rect { width, ..inner },
+        None => inner,
+    }
+}
+
+/// Where the note goes beside a first frame shown alone, if anywhere.
+fn text_rect(view: &VideoView, inner: Rect) -> Option<Rect> {
+    let width = first_only_columns(view, inner)?;
+    Some(Rect {
+        x: inner.x + width + 1,
+        width: inner.width - width - 1,
+        ..inner
+    })
 }
 
 /// The panel's titles, longest first.
@@ -216,14 +296,14 @@ pub fn pixel_at(view: &VideoView, area: Rect, column: u16, row: u16) -> Option<(
     if inner.height < 2 || inner.width < 8 {
         return None;
     }
-    Fit::new(view, inner).pixel_of_cell(column, row)
+    Fit::new(view, picture_rect(view, inner)).pixel_of_cell(column, row)
 }
 
 /// The cell of the Scene panel drawn in `area` showing `view` where the video's pixel
 /// `(x, y)` is drawn, if inside the picture.
 pub fn cell_at(view: &VideoView, area: Rect, (x, y): (f64, f64)) -> Option<(u16, u16)> {
     let inner = ratatui::widgets::Block::bordered().inner(area);
-    Fit::new(view, inner).cell((x, y))
+    Fit::new(view, picture_rect(view, inner)).cell((x, y))
 }
 
 /// The video's rows about the groove, px: from three radii above its line (at both
@@ -309,6 +389,9 @@ pub fn model_centres(app: &App, view: &VideoView) -> Option<[(f64, f64); 2]> {
 /// The index of the frame shown at the cursor's time, while the data in use are the
 /// video's.
 pub fn shown_frame(app: &App, view: &VideoView) -> Option<usize> {
+    if view.first_only.is_some() {
+        return Some(0);
+    }
     Link::of(app).and_then(|l| view.frame_at(l.file_time(app.t)))
 }
 

@@ -22,7 +22,7 @@ use ratatui_image::picker::{Picker, ProtocolType};
 use ratatui_image::protocol::Protocol;
 use ratatui_image::{Image, Resize};
 
-use super::video::{band, model_centres, shown_frame};
+use super::video::{band, model_centres, picture_rect, shown_frame};
 use crate::tui::app::App;
 use crate::tui::theme::Theme;
 use crate::vision::thumbs::VideoView;
@@ -275,11 +275,12 @@ fn wanted<'a>(
     if !app.video().shown {
         return None;
     }
-    let view = app.video().view.as_ref()?;
-    let area = Block::bordered().inner(scene);
-    if area.height < 2 || area.width < 8 {
+    let view = app.video().picture()?;
+    let inner = Block::bordered().inner(scene);
+    if inner.height < 2 || inner.width < 8 {
         return None;
     }
+    let area = picture_rect(view, inner);
     let frame = shown_frame(app, view)?;
     let font = picker.font_size();
     let size = fitted(view, area, (u32::from(font.width), u32::from(font.height)));

@@ -24,6 +24,7 @@ fn view() -> VideoView {
             mark: vec![Some((30.0, 20.0))],
         }],
         levels: [40, 100, 250],
+        first_only: None,
     }
 }
 

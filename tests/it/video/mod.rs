@@ -83,3 +83,16 @@ pub(crate) fn drawn_frame(
     }
     groovelab::vision::Frame::from_rgb(&img)
 }
+
+/// A folder (in the scratch area `area`) of `count` frames of 64×48 px, all one grey
+/// and no ball: PNGs, so no ffmpeg is needed.
+pub(crate) fn blank_frames(area: &str, count: usize) -> std::path::PathBuf {
+    let dir = crate::common::scratch_dir(area, "frames");
+    let (w, h) = (64usize, 48usize);
+    for k in 1..=count {
+        let rgb = vec![90u8; w * h * 3];
+        let p = dir.join(format!("frame{k:04}.png"));
+        groovelab::input::video::write::png(&p, &rgb, w, h).unwrap();
+    }
+    dir
+}

@@ -36,6 +36,7 @@ fn video(w: usize, h: usize, groove: f64, origin: (f64, f64), radius_px: f64) ->
             mark: vec![None],
         }],
         levels: [40, 100, 250],
+        first_only: None,
     }
 }
 
@@ -144,6 +145,28 @@ fn a_click_on_a_ball_tracks_the_video_again_seeded_there() {
 
     app.apply(Action::ToggleVideo);
     assert!(app.video().shown);
+    // No frame of the video is shown (its data are not the lab's): a seed is a point
+    // in the first frame, so a click shows the first frame alone, beside a note.
+    assert!(groovelab::tui::on_mouse(
+        &mut app,
+        area,
+        &theme,
+        click(c, r)
+    ));
+    assert!(
+        rx.try_recv().is_err(),
+        "no tracking from a click off the first frame"
+    );
+    let first = app.video().picture().cloned().expect("a picture");
+    assert!(first.first_only.is_some(), "the first frame alone");
+    assert_eq!(first.balls[0].centre, vec![view.balls[0].centre[0]]);
+    let text = common::text(&app, (120, 40), false);
+    assert!(text.contains("Click a ball to track"), "{text}");
+    assert!(text.contains("first frame"), "{text}");
+
+    // A click on the ball in the first frame seeds the tracking there.
+    screen.prepare(&app, area, &theme);
+    let (c, r) = cell_at(&first, scene, ball).expect("the ball is on the first frame");
     assert!(groovelab::tui::on_mouse(
         &mut app,
         area,
@@ -152,9 +175,12 @@ fn a_click_on_a_ball_tracks_the_video_again_seeded_there() {
     ));
     let asked = rx.try_recv().expect("the click asked the tracking again");
     let seed = asked.ball_at.expect("with a seed");
-    assert_eq!(Some(seed), pixel_at(&view, scene, c, r));
-    // Within a cell of the ball: at this size a cell is w/cols px across.
-    let cell = w as f64 / f64::from(scene.width - 2);
+    assert_eq!(Some(seed), pixel_at(&first, scene, c, r));
+    // Within a cell of the ball: a cell is as many video px across as the next
+    // cell's pixel is from this one's, and two half-block pixel rows tall.
+    let next = pixel_at(&first, scene, c + 1, r).expect("the next cell on the picture");
+    let cell = next.0 - seed.0;
+    assert!(cell > 0.0);
     assert!((seed.0 - ball.0).abs() <= cell && (seed.1 - ball.1).abs() <= 2.0 * cell);
     assert_eq!(
         Options {
@@ -203,4 +229,89 @@ fn a_video_that_cannot_be_tracked_again_says_so() {
         app.status
     );
     assert_eq!(app.video().seed, None);
+}
+
+/// A video the tracker refuses shows its first frame in the video view (`V`) beside
+/// why (a seed is a point in the first frame, and a refused video has no other
+/// picture to click in); a click there tracks it again seeded at the clicked pixel,
+/// and a refusal of that says it was seeded. Through the app's own tracking of a
+/// folder of ball-less frames.
+#[test]
+fn a_refused_video_shows_its_first_frame_and_a_click_there_seeds_it() {
+    let dir = super::blank_frames("video_refused_first", 6);
+    let data = DataArgs {
+        data: vec![dir.clone()],
+        fps: Some(30.0),
+        ..DataArgs::default()
+    };
+    let options = Options {
+        radius: 0.0275,
+        fps: Some(30.0),
+        ..options()
+    };
+    let library = common::no_user_presets("video-refused-first");
+    let mut app =
+        groovelab::cli::opened_tracking(&SceneArgs::default(), &data, library, options).unwrap();
+    app.wait();
+    let Status::Error(said) = &app.status else {
+        panic!("{:?}", app.status)
+    };
+    assert!(
+        said.starts_with("not tracked (V: its first frame; click a ball there to seed it): ")
+            && said.contains("no ball found"),
+        "{said}"
+    );
+    let first = app.video().picture().cloned().expect("the first frame");
+    let why = first.first_only.as_deref().expect("shown alone, with why");
+    assert!(why.starts_with("no ball found"), "{why}");
+    assert_eq!(first.thumbs.pictures.len(), 1);
+    assert_eq!(first.thumbs.video, (64, 48));
+
+    app.apply(Action::ToggleVideo);
+    for (size, ascii) in [((80, 24), true), ((80, 24), false), ((120, 40), false)] {
+        let text = common::text(&app, size, ascii);
+        assert!(text.contains("Click a ball to track"), "{text}");
+        assert!(text.contains("no ball found"), "{text}");
+        let glyphs = if ascii { "ascii" } else { "unicode" };
+        insta::assert_snapshot!(
+            format!("refused-first-frame-{}x{}-{glyphs}", size.0, size.1),
+            text
+        );
+    }
+
+    let area = Rect::new(0, 0, 120, 40);
+    let theme = groovelab::tui::theme(false);
+    let mut screen = Screen::default();
+    screen.prepare(&app, area, &theme);
+    let scene = screen.frame().and_then(|f| f.panels).unwrap().scene;
+    let (c, r) = cell_at(&first, scene, (20.0, 30.0)).expect("on the picture");
+    assert!(groovelab::tui::on_mouse(
+        &mut app,
+        area,
+        &theme,
+        click(c, r)
+    ));
+    let seed = app.video().seed.expect("seeded by the click");
+    assert_eq!(Some(seed), pixel_at(&first, scene, c, r));
+    assert!(
+        matches!(&app.status, Status::Info(s) if s.starts_with("tracking video_refused_first")
+            || s.contains(" again from the ball at (")),
+        "{:?}",
+        app.status
+    );
+    app.wait();
+    let Status::Error(said) = &app.status else {
+        panic!("{:?}", app.status)
+    };
+    let tried = format!(
+        "tracked with the seed --ball-at {:.0},{:.0}: try without it too",
+        seed.0, seed.1
+    );
+    assert!(said.contains(&tried), "{said}");
+    assert!(
+        app.video()
+            .picture()
+            .is_some_and(|v| v.first_only.is_some()),
+        "the first frame again, to click elsewhere"
+    );
 }

@@ -229,7 +229,7 @@ fn a_seed_sets_the_first_radius_and_the_balls_fits_the_rest() {
 fn a_seed_or_roi_off_the_frame_is_one_line_naming_the_frame() {
     // Three frames of 64×48 px in a folder (no ffmpeg needed): a point or rectangle
     // off them, or the point outside the rectangle, is refused before tracking.
-    let dir = blank_frames("video_off_frame", 3);
+    let dir = super::blank_frames("video_off_frame", 3);
     let folder = dir.to_str().unwrap();
     for (args, want) in [
         (
@@ -283,7 +283,7 @@ fn a_seeded_refusal_says_it_was_seeded_and_to_try_without() {
     // Frames with no ball (no ffmpeg needed): refused either way; with a seed, the
     // line names the seed (its outline sets the first radius, so a clip refused
     // with it may track without it: the looks table's seed 39).
-    let dir = blank_frames("video_seeded_refusal", 6);
+    let dir = super::blank_frames("video_seeded_refusal", 6);
     let folder = dir.to_str().unwrap();
     for (seed, said) in [(None, false), (Some("20,30"), true)] {
         let mut all = vec!["track", folder, "--fps", "30"];
@@ -301,17 +301,4 @@ fn a_seeded_refusal_says_it_was_seeded_and_to_try_without() {
             "{seed:?}: {err}"
         );
     }
-}
-
-/// A folder (in the scratch area `area`) of `count` frames of 64×48 px, all one grey
-/// and no ball: PNGs, so no ffmpeg is needed.
-fn blank_frames(area: &str, count: usize) -> std::path::PathBuf {
-    let dir = crate::common::scratch_dir(area, "frames");
-    let (w, h) = (64usize, 48usize);
-    for k in 1..=count {
-        let rgb = vec![90u8; w * h * 3];
-        let p = dir.join(format!("frame{k:04}.png"));
-        groovelab::input::video::write::png(&p, &rgb, w, h).unwrap();
-    }
-    dir
 }

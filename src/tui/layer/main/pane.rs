@@ -29,11 +29,13 @@ pub struct PaneCx<'a> {
 }
 
 /// What lies under the mouse: the time under it on the chart's plot, the video's
-/// pixel under it on the Scene panel's picture.
+/// pixel under it on the Scene panel's picture, and the video's frame that picture
+/// shows.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Pointer {
     pub time: Option<f64>,
     pub pixel: Option<(f64, f64)>,
+    pub frame: Option<usize>,
 }
 
 /// A view of the main screen: its keys and mouse, and its jobs.

@@ -51,6 +51,9 @@ pub struct VideoRun {
     pub tracker: Option<VideoTracker>,
     /// The seed of the tracking asked last, video pixels (a click on a ball).
     pub seed: Option<(f64, f64)>,
+    /// The first frame shown alone in place of the tracked video's view, for a click
+    /// on a ball there (a click on a later frame asked for it).
+    pub first: Option<Arc<VideoView>>,
 }
 
 impl VideoRun {
@@ -76,6 +79,12 @@ impl VideoRun {
         }
     }
 
+    /// The view the Scene panel draws: the first frame alone when a click asked for
+    /// it, else the video's view.
+    pub fn picture(&self) -> Option<&Arc<VideoView>> {
+        self.first.as_ref().or(self.view.as_ref())
+    }
+
     /// The finished tracking's result, once.
     pub fn take(&mut self) -> VideoResult {
         self.run.take().flatten()
@@ -88,6 +97,7 @@ impl VideoRun {
             return Handled::Ignored;
         };
         let name = short(self.name.as_deref().unwrap_or_default());
+        self.first = None;
         match result {
             Ok(done) => {
                 let Some(own) = done.own else {
@@ -109,7 +119,18 @@ impl VideoRun {
                     Err(e) => Handled::Refused(format!("{name}: not used: {e}")),
                 }
             }
-            Err(e) => Handled::Refused(format!("not tracked: {e}")),
+            Err(refused) => {
+                let Some(first) = refused.first_frame else {
+                    return Handled::Refused(format!("not tracked: {}", refused.error));
+                };
+                // The first frame in place of any earlier view: a click on a ball
+                // there seeds the tracking again.
+                self.view = Some(first);
+                Handled::Refused(format!(
+                    "not tracked (V: its first frame; click a ball there to seed it): {}",
+                    refused.error
+                ))
+            }
         }
     }
 
@@ -121,6 +142,7 @@ impl VideoRun {
             );
         };
         self.shown = !self.shown;
+        self.first = None;
         Handled::Say(if self.shown {
             format!(
                 "Scene panel: the video {} (V: the drawn scene)",
@@ -131,12 +153,26 @@ impl VideoRun {
         })
     }
 
-    /// A click on the picture at the video's pixel `at`: the tracking again, seeded
-    /// there (`Options::ball_at`).
-    fn seed_at(&mut self, at: (f64, f64), cx: &PaneCx<'_>) -> Handled {
+    /// A click on the picture at the video's pixel `at` of its `frame`: the tracking
+    /// again, seeded there (`Options::ball_at`) if the frame is the first; else the
+    /// first frame shown alone, to click a ball in (a seed is a point in the first
+    /// frame: a ball clicked later in the clip is elsewhere then).
+    fn seed_at(&mut self, at: (f64, f64), frame: Option<usize>, cx: &PaneCx<'_>) -> Handled {
         let Some(tracker) = &self.tracker else {
             return Handled::Refused("this video cannot be tracked again here".into());
         };
+        let alone = self.picture().is_some_and(|v| v.first_only.is_some());
+        if !alone && frame != Some(0) {
+            let Some(view) = &self.view else {
+                return Handled::Ignored;
+            };
+            let note = "A seed is a point on a ball in the first frame: this is it.";
+            self.first = Some(Arc::new(view.first_only(note.into())));
+            return Handled::Say(
+                "the video's first frame: click a ball there to track from it (V: the drawn scene)"
+                    .into(),
+            );
+        }
         let options = Options {
             ball_at: Some(at),
             ..tracker.options.clone()
@@ -163,7 +199,7 @@ impl Pane for VideoRun {
         match (input, cx.pointer.pixel) {
             (Input::Key(Action::ToggleVideo), _) => self.toggle(),
             (Input::Mouse(..), Some(at)) if self.shown && click(input).is_some() => {
-                self.seed_at(at, cx)
+                self.seed_at(at, cx.pointer.frame, cx)
             }
             _ => Handled::Ignored,
         }
