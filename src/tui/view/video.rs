@@ -41,7 +41,11 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         return;
     };
     if let Some(note) = &view.first_only {
-        render_first_only(view, note, name, area, buf, theme);
+        let tracking = app.video().progress().map(|(done, total)| match total {
+            0 => format!("tracking again: frame {done}"),
+            _ => format!("tracking again: frame {done} of {total}"),
+        });
+        render_first_only(view, note, (name, tracking), area, buf, theme);
         return;
     }
     let link = Link::of(app);
@@ -85,14 +89,16 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
 fn render_first_only(
     view: &VideoView,
     note: &str,
-    name: &str,
+    (name, tracking): (&str, Option<String>),
     area: Rect,
     buf: &mut Buffer,
     theme: &Theme,
 ) {
     let file = crate::tui::layer::main::video::short(name);
+    let what = tracking.unwrap_or_else(|| "first frame".into());
     let titles = [
-        format!(" Video {file}  first frame "),
+        format!(" Video {file}  {what} "),
+        format!(" Video  {what} "),
         " Video  first frame ".to_string(),
         " Video ".to_string(),
     ];

@@ -315,3 +315,53 @@ fn a_refused_video_shows_its_first_frame_and_a_click_there_seeds_it() {
         "the first frame again, to click elsewhere"
     );
 }
+
+/// While the tracking a click asked for runs, the first frame stays, its title counting
+/// the frames (the status line is taken by other messages meanwhile).
+#[test]
+fn the_first_frame_counts_the_frames_of_the_tracking_again() {
+    let view = video(640, 360, 0.0, (320.0, 200.0), 25.0);
+    let (mut app, _) = app_with_video(view.clone());
+    let (go_on, wait) = mpsc::channel::<()>();
+    let (reported, told) = mpsc::channel::<()>();
+    let wait = std::sync::Mutex::new(Some(wait));
+    let reported = std::sync::Mutex::new(reported);
+    app.set_video_tracker(VideoTracker {
+        options: options(),
+        work: Arc::new(move |_| -> VideoWork {
+            let wait = wait.lock().unwrap().take().unwrap();
+            let reported = reported.lock().unwrap().clone();
+            Box::new(move |ticket| {
+                ticket.progress(30, 120);
+                reported.send(()).unwrap();
+                let _ = wait.recv();
+                None
+            })
+        }),
+    });
+    app.apply(Action::ToggleVideo);
+    let area = Rect::new(0, 0, 120, 40);
+    let theme = groovelab::tui::theme(false);
+    let mut screen = Screen::default();
+    screen.prepare(&app, area, &theme);
+    let scene = screen.frame().and_then(|f| f.panels).unwrap().scene;
+    let ball = (640.0 / 3.0, 200.0);
+    let (c, r) = cell_at(&view, scene, ball).unwrap();
+    groovelab::tui::on_mouse(&mut app, area, &theme, click(c, r));
+    let text = common::text(&app, (120, 40), false);
+    assert!(text.contains(" Video clip.mp4  first frame "), "{text}");
+    screen.prepare(&app, area, &theme);
+    let first = app.video().picture().cloned().unwrap();
+    let (c, r) = cell_at(&first, scene, ball).unwrap();
+    groovelab::tui::on_mouse(&mut app, area, &theme, click(c, r));
+    told.recv().unwrap();
+    let text = common::text(&app, (120, 40), false);
+    assert!(
+        text.contains(" Video clip.mp4  tracking again: frame 30 of 120 "),
+        "{text}"
+    );
+    go_on.send(()).unwrap();
+    app.wait();
+    let text = common::text(&app, (120, 40), false);
+    assert!(!text.contains("tracking again"), "{text}");
+}
