@@ -278,7 +278,7 @@ pub const TABLE: &[Binding] = &[
     Binding {
         keys: &["V"],
         action: Action::ToggleVideo,
-        help: "Scene panel: the drawn scene or the video (--data VIDEO)",
+        help: "Scene panel: the drawn scene or the video (--data VIDEO); a click on a ball in its first frame tracks it from there",
         hint: None,
     },
     Binding {
