@@ -188,40 +188,7 @@ pub fn tracks(
     let along = |p: &[f64; 2]| p[0] * u.0 + p[1] * u.1;
     let mean_along = |s: usize| centres[s].iter().map(along).sum::<f64>() / centres[s].len() as f64;
     slots.sort_by(|a, b| mean_along(*a).total_cmp(&mean_along(*b)));
-    let radii = tracker.radii();
-    let r_px = median(radii).unwrap_or(f64::NAN);
-    let mut dev: Vec<f64> = radii.iter().map(|r| (r - r_px).abs()).collect();
-    dev.sort_by(f64::total_cmp);
-    let r_stat = 1.4826 * dev[dev.len() / 2] * 1.2533 / (radii.len() as f64).sqrt();
-    // How unsure the edge is beyond the frames' mean: the edge's definitions
-    // disagreeing, the single frames' radii scattering (a bias that the shading, a
-    // blur or the wall puts into every frame alike does not average out over them:
-    // the frames' scatter, not its standard error, bounds it), and the two balls'
-    // radii differing (both have one radius).
-    let frame_sd = 1.4826 * dev.get(dev.len() / 2).copied().unwrap_or(0.0);
-    let colour = colour_edge(tracker.colour_offsets(), p.colour_edge_within);
-    let systematic = edge_systematic(tracker.edge_offsets(), colour, p.edge_systematic)
-        .max(frame_sd)
-        .max(between_balls(frames, &slots));
-    let r_se = r_stat.hypot(systematic);
-    // Never a confident wrong scale: radii that disagree are no ball's (the mark, a
-    // highlight or clutter taken for one in part of the frames).
-    let spread = 1.4826 * dev.get(dev.len() / 2).copied().unwrap_or(0.0) / r_px;
-    if scale.is_none() && (spread.is_nan() || spread > p.max_radius_spread) {
-        return Err(TracksError::RadiiDisagree {
-            median_px: r_px,
-            scatter: spread,
-        });
-    }
-    // Never a confident wrong scale: an outline pixels inside or outside the
-    // ball's edge in colour, by more than two circles of one ball may differ
-    // (`outer_agree`), is no ball's outline.
-    if let Some(c) = colour.filter(|c| scale.is_none() && c.abs() > p.outer_agree * r_px) {
-        return Err(TracksError::ColourEdge {
-            offset_px: c,
-            radius_px: r_px,
-        });
-    }
+    let (r_px, r_se) = the_radius(tracker, frames, &slots, scale.is_none())?;
     let px_per_m = scale.unwrap_or(r_px / radius);
     // The origin: the mean of every centre, so y is about 0 along the groove.
     let all: Vec<&[f64; 2]> = slots.iter().flat_map(|&s| centres[s].iter()).collect();
@@ -273,6 +240,53 @@ pub fn tracks(
         balls,
         calibration,
     })
+}
+
+/// The balls' median fitted radius, px, and its ± (the median's own standard error
+/// and the edge's systematic); with `refuse` (no scale given), why no scale is given
+/// from it: radii that scatter, or outlines off the balls' edge in colour.
+fn the_radius(
+    tracker: &Tracker,
+    frames: &[FrameFixes],
+    slots: &[usize],
+    refuse: bool,
+) -> Result<(f64, f64), TracksError> {
+    let p = &tracker.params;
+    let radii = tracker.radii();
+    let r_px = median(radii).unwrap_or(f64::NAN);
+    let mut dev: Vec<f64> = radii.iter().map(|r| (r - r_px).abs()).collect();
+    dev.sort_by(f64::total_cmp);
+    // How unsure the edge is beyond the frames' mean: the edge's definitions
+    // disagreeing, the single frames' radii scattering (a bias that the shading, a
+    // blur or the wall puts into every frame alike does not average out over them:
+    // the frames' scatter, not its standard error, bounds it), and the two balls'
+    // radii differing (both have one radius).
+    let frame_sd = 1.4826 * dev.get(dev.len() / 2).copied().unwrap_or(0.0);
+    let r_stat = frame_sd * 1.2533 / (radii.len() as f64).sqrt();
+    let colour = colour_edge(tracker.colour_offsets(), p.colour_edge_within);
+    let systematic = edge_systematic(tracker.edge_offsets(), colour, p.edge_systematic)
+        .max(frame_sd)
+        .max(between_balls(frames, slots));
+    let r_se = r_stat.hypot(systematic);
+    // Never a confident wrong scale: radii that disagree are no ball's (the mark, a
+    // highlight or clutter taken for one in part of the frames).
+    let spread = frame_sd / r_px;
+    if refuse && (spread.is_nan() || spread > p.max_radius_spread) {
+        return Err(TracksError::RadiiDisagree {
+            median_px: r_px,
+            scatter: spread,
+        });
+    }
+    // Never a confident wrong scale: an outline pixels inside or outside the
+    // ball's edge in colour, by more than two circles of one ball may differ
+    // (`outer_agree`), is no ball's outline.
+    if let Some(c) = colour.filter(|c| refuse && c.abs() > p.outer_agree * r_px) {
+        return Err(TracksError::ColourEdge {
+            offset_px: c,
+            radius_px: r_px,
+        });
+    }
+    Ok((r_px, r_se))
 }
 
 /// The slots that hold a ball (seen in enough frames), or why the frames give no
