@@ -11,17 +11,19 @@ use crate::common::paper_scene;
 use crate::film::looks::Size;
 use groovelab::vision::{self, Params, TracksError};
 
-/// The small look `seed` of the property tests, its H.264 copy decoded and tracked
-/// with `params`: the tracks (or why none) and the true radius, px.
-fn tracked(seed: u64, params: Params) -> Option<(Result<vision::Tracks, TracksError>, f64)> {
+/// The small look `seed` of the property tests, its H.264 copy decoded (once), and
+/// a tracking of it: with `params`, the tracks (or why none); and the true radius, px.
+fn look(seed: u64) -> Option<(impl Fn(Params) -> Result<vision::Tracks, TracksError>, f64)> {
     let (clip, frames) = decoded_look("colour_edge", seed, Size::Small)?;
     let scene = paper_scene();
-    let t = vision::track(&frames, params);
-    let times = (0..frames.len())
-        .map(|k| k as f64 / clip.film.look.fps)
-        .collect();
     let truth = scene.radius * clip.film.px_per_m();
-    Some((vision::tracks(&t, times, scene.radius, None), truth))
+    let fps = clip.film.look.fps;
+    let track = move |params: Params| {
+        let t = vision::track(&frames, params);
+        let times = (0..frames.len()).map(|k| k as f64 / fps).collect();
+        vision::tracks(&t, times, scene.radius, None)
+    };
+    Some((track, truth))
 }
 
 /// The rule left out: colour never judged.
@@ -38,14 +40,15 @@ fn without() -> Params {
 /// them: no scale. Without the rule: a scale 28 % off, beyond 2 of its ±.
 #[test]
 fn a_lit_part_off_the_balls_edge_in_colour_gives_no_scale() {
-    let Some((with, _)) = tracked(13, Params::default()) else {
+    let Some((track, truth)) = look(13) else {
         return;
     };
+    let with = track(Params::default());
     assert!(
         matches!(with, Err(TracksError::ColourEdge { offset_px, .. }) if offset_px > 1.0),
         "{with:?}"
     );
-    let (Ok(t), truth) = tracked(13, without()).unwrap() else {
+    let Ok(t) = track(without()) else {
         panic!("tracked without the rule");
     };
     let c = t.calibration;
@@ -62,9 +65,10 @@ fn a_lit_part_off_the_balls_edge_in_colour_gives_no_scale() {
 /// least that far; without the rule the ± is under half of it.
 #[test]
 fn an_edge_in_colour_a_pixel_off_widens_the_radius_s_plus_minus() {
-    let Some((with, truth)) = tracked(6, Params::default()) else {
+    let Some((track, truth)) = look(6) else {
         return;
     };
+    let with = track(Params::default());
     let c = with.expect("tracked").calibration;
     assert!(
         c.radius_px_sigma >= 1.0 && (c.radius_px - truth).abs() <= 2.0 * c.radius_px_sigma,
@@ -72,7 +76,7 @@ fn an_edge_in_colour_a_pixel_off_widens_the_radius_s_plus_minus() {
         c.radius_px,
         c.radius_px_sigma
     );
-    let (Ok(t), _) = tracked(6, without()).unwrap() else {
+    let Ok(t) = track(without()) else {
         panic!("tracked without the rule");
     };
     assert!(
