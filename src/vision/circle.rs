@@ -6,6 +6,7 @@
 //! squares of the geometric distance, outliers left out in rounds. The near rail
 //! hides the ball's lower part, so the points cover an arc, not the whole circle.
 
+use super::frame::Frame;
 use super::gray::Gray;
 
 /// A circle in pixels (x right, y down).
@@ -439,6 +440,112 @@ pub fn edge_offsets(img: &Gray, o: &Outline) -> Option<[f64; 2]> {
         return None;
     }
     Some([middle(a)?, middle(b)?])
+}
+
+/// The ball's radius in colour less the outline `o`'s (fitted in brightness), px:
+/// along 72 rays of the visible arc (above `lowest`), where the colour (U, V)
+/// `reach` px inside and outside the circle differ by at least `min_step` levels
+/// and the ball's is no grey (further than `grey` levels from none), and the colour
+/// steps by more than the brightness (the colour's step weighed by `weight`), the place nearest the circle where the colour crosses half-way between them;
+/// a circle fitted to those places (at least 12) when it is clear (35 % of the
+/// circle, 1 px RMS), `None` otherwise. A ball of the wall's brightness but another
+/// colour shows its edge in colour where its brightness shows little: a circle
+/// fitted to its lit part, or to the wall's faint edges about it, is pixels off it.
+pub fn colour_offset(
+    frame: &Frame,
+    o: &Outline,
+    reach: f64,
+    (min_step, grey, weight): (f64, f64, f64),
+) -> Option<f64> {
+    let c = o.circle;
+    let mut points = Vec::new();
+    for i in 0..72 {
+        let a = f64::from(i) * std::f64::consts::TAU / 72.0;
+        let (ux, uy) = (a.cos(), a.sin());
+        // The upper half, and below it down to the outline's lowest point (a lit
+        // part's outline ends high above the rail).
+        if uy > 0.0 && c.y + (c.r + reach) * uy > o.lowest {
+            continue;
+        }
+        let inside = reach.min(0.6 * c.r);
+        let at = |s: f64| chroma(frame, c.x + (c.r + s) * ux, c.y + (c.r + s) * uy);
+        let luma = |s: f64| bilinear(&frame.luma, c.x + (c.r + s) * ux, c.y + (c.r + s) * uy);
+        let (Some(inner), Some(outer)) = (at(-inside), at(reach)) else {
+            continue;
+        };
+        let d = [inner[0] - outer[0], inner[1] - outer[1]];
+        let step = d[0].hypot(d[1]);
+        // A grey ball's edge in colour is the wall's colour: its pattern, not the
+        // ball (a black ball on a coloured checker).
+        if step < min_step || (inner[0] - 128.0).hypot(inner[1] - 128.0) <= grey {
+            continue;
+        }
+        // Only where the ball stands out more in colour than in brightness (its
+        // colour weighed as the difference from the background weighs it): there
+        // the colour's edge is the ball's, and the brightness's may be another.
+        let (Some(li), Some(lo)) = (luma(-inside), luma(reach)) else {
+            continue;
+        };
+        if weight * step <= (li - lo).abs() {
+            continue;
+        }
+        // The colour's share of the way from outside to inside; the ball's colour
+        // ends where it last falls below a half, going out.
+        let level = |s: f64| {
+            at(s).map(|p| ((p[0] - outer[0]) * d[0] + (p[1] - outer[1]) * d[1]) / (step * step))
+        };
+        if let Some(s) = last_crossing(&level, (-inside, reach), 0.5) {
+            points.push([c.x + (c.r + s) * ux, c.y + (c.r + s) * uy]);
+        }
+    }
+    let found = fit_points(points, c, reach, EITHER)?;
+    (found.coverage >= 0.35 && found.rms <= 1.0).then_some(found.circle.r - c.r)
+}
+
+/// Where `level(s)`, for s from `from` to `to` px, last falls from above `half` to
+/// below it.
+fn last_crossing(
+    level: &impl Fn(f64) -> Option<f64>,
+    (from, to): (f64, f64),
+    half: f64,
+) -> Option<f64> {
+    let step = 0.25;
+    let n = ((to - from) / step).round() as usize;
+    let mut last: Option<f64> = None;
+    let mut prev = (from, level(from)? - half);
+    for j in 1..=n {
+        let s = from + j as f64 * step;
+        let v = level(s)? - half;
+        if prev.1 >= 0.0 && v < 0.0 {
+            last = Some(prev.0 + step * prev.1 / (prev.1 - v));
+        }
+        prev = (s, v);
+    }
+    last
+}
+
+/// The colour (U, V) at the frame's pixel `(x, y)`, interpolated between the four
+/// samples of the half-size colour planes around it (each the mean of a 2×2 block,
+/// centred half a pixel into it); `None` outside the planes.
+fn chroma(frame: &Frame, x: f64, y: f64) -> Option<[f64; 2]> {
+    let (cx, cy) = ((x - 0.5) / 2.0, (y - 0.5) / 2.0);
+    if !(cx >= 0.0 && cy >= 0.0) {
+        return None;
+    }
+    let (i, j) = (cx.floor() as usize, cy.floor() as usize);
+    let w = frame.chroma_width;
+    if i + 1 >= w || j + 1 >= frame.chroma_height {
+        return None;
+    }
+    let (fx, fy) = (cx - i as f64, cy - j as f64);
+    let plane = |p: &[u8]| -> Option<f64> {
+        let g = |a: usize, b: usize| p.get(b * w + a).map(|v| f64::from(*v));
+        Some(
+            (g(i, j)? * (1.0 - fx) + g(i + 1, j)? * fx) * (1.0 - fy)
+                + (g(i, j + 1)? * (1.0 - fx) + g(i + 1, j + 1)? * fx) * fy,
+        )
+    };
+    Some([plane(&frame.u)?, plane(&frame.v)?])
 }
 
 /// Where the profile `level(s)` (s px outward from the circle) crosses the level

@@ -267,6 +267,17 @@ pub struct Params {
     /// shaded renders: 0.02 px for a flat ball, 0.06 px for a shaded one), and that
     /// carries into the radius and so the scale.
     pub edge_systematic: f64,
+    /// The ball's edge in colour (`circle::colour_offset`): sought between this many
+    /// px inside and outside the outline (default 5: a lit part of a dozen-pixel
+    /// ball lies 3–4 px inside its edge), where the colour there differs by at least
+    /// `colour_edge_step` levels (default 12, U and V together: a clear step of hue,
+    /// not the codec's noise). Where its median place over the frames lies farther
+    /// than `colour_edge_within` px from the outline (default 1: a pixel of the
+    /// half-size colour planes, whose edge is no sharper), the outline is in doubt
+    /// by that much, and the radius's ± takes it in.
+    pub colour_edge_reach: f64,
+    pub colour_edge_step: f64,
+    pub colour_edge_within: f64,
 }
 
 /// The thresholds that tell a ball's drawn mark from a highlight, a spot of the wall
@@ -465,6 +476,9 @@ impl Default for Params {
             sparsest: 3,
             fewest_seen: 3,
             edge_systematic: 0.05,
+            colour_edge_reach: 6.0,
+            colour_edge_step: 12.0,
+            colour_edge_within: 1.0,
         }
     }
 }

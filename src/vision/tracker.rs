@@ -83,6 +83,9 @@ pub struct Tracker {
     mark_votes: [usize; 2],
     /// Each fit's edge by other definitions (`circle::edge_offsets`), px.
     edges: Vec<[f64; 2]>,
+    /// Each fit's edge in colour, where the ball's colour steps from the wall's
+    /// (`circle::colour_offset`), px.
+    colour_edges: Vec<f64>,
     /// A lock was found inside a larger circle, or reaching past the ball, and that
     /// circle's outline taken instead: the fits the radius is learned from are
     /// checked likewise (`Tracker::outermost_agrees`).
@@ -212,6 +215,12 @@ impl Tracker {
     /// (`circle::edge_offsets`), px.
     pub fn edge_offsets(&self) -> &[[f64; 2]] {
         &self.edges
+    }
+
+    /// How far each fit's edge in colour lies from it, for the fits whose ball's
+    /// colour steps from the wall's (`circle::colour_offset`), px.
+    pub fn colour_offsets(&self) -> &[f64] {
+        &self.colour_edges
     }
 
     /// Offers one frame to learn the background from (before any [`Tracker::push`]).
@@ -434,6 +443,10 @@ impl Tracker {
                 }
                 if let Some(e) = circle::edge_offsets(img, &o) {
                     self.edges.push(e);
+                }
+                let steps = (p.colour_edge_step, p.grey_levels, p.colour_weight);
+                if let Some(c) = circle::colour_offset(frame, &o, p.colour_edge_reach, steps) {
+                    self.colour_edges.push(c);
                 }
                 if self.radii.len() <= 64 || self.radii.len().is_multiple_of(256) {
                     self.radius = median(&self.radii);

@@ -37,6 +37,14 @@ pub enum TracksError {
         100.0 * scatter
     )]
     RadiiDisagree { median_px: f64, scatter: f64 },
+    /// The balls' edge in colour lies far from their outlines in brightness.
+    #[error(
+        "tracking unsure: the balls' edge in colour lies {:.1} px {} their outlines in brightness ({:.0} % of their radius {radius_px:.1} px): the outlines may be a ball's lit part or the wall about it, so no scale is given; {TRY}",
+        offset_px.abs(),
+        if *offset_px > 0.0 { "outside" } else { "inside" },
+        100.0 * offset_px.abs() / radius_px
+    )]
+    ColourEdge { offset_px: f64, radius_px: f64 },
     /// A "ball" whose centre swings across the groove's line.
     #[error(
         "tracking unsure: the {name} ball's centre swings {across_px:.1} px (RMS) across the groove's line, {:.0} % of its radius (a ball rolls along it), so no tracks are given; {TRY}",
@@ -57,7 +65,7 @@ const TRY: &str = "try --roi X,Y,W,H (pixels) around the groove, --ball-at X,Y o
 /// `circle::edge_offsets`, each the median over the frames), at least `least`
 /// (`Params::edge_systematic`). Nothing tells which definition is right on a ball whose
 /// shading runs into a limb of little contrast, so the whole spread is taken.
-fn edge_systematic(offsets: &[[f64; 2]], least: f64) -> f64 {
+fn edge_systematic(offsets: &[[f64; 2]], colour: Option<f64>, least: f64) -> f64 {
     let at = |i: usize| {
         median(
             &offsets
@@ -67,8 +75,20 @@ fn edge_systematic(offsets: &[[f64; 2]], least: f64) -> f64 {
         )
     };
     let (a, b) = (at(0).unwrap_or(0.0), at(1).unwrap_or(0.0));
-    let spread = a.max(b).max(0.0) - a.min(b).min(0.0);
+    let c = colour.unwrap_or(0.0);
+    let spread = a.max(b).max(c).max(0.0) - a.min(b).min(c).min(0.0);
     spread.max(least)
+}
+
+/// Where the balls' edge in colour lies from their outlines, px (the median over
+/// the fits whose ball's colour steps from the wall's), when that is more than
+/// `within` px (the colour planes' own pixel) and at least 8 fits show it; `None`
+/// otherwise (a grey ball, a wall of the ball's colour, or the two edges agreeing).
+fn colour_edge(offsets: &[f64], within: f64) -> Option<f64> {
+    if offsets.len() < 8 {
+        return None;
+    }
+    median(offsets).filter(|m| m.abs() > within)
 }
 
 /// How far the two balls' median fitted radii differ, px (0 with one ball).
@@ -168,30 +188,7 @@ pub fn tracks(
     let along = |p: &[f64; 2]| p[0] * u.0 + p[1] * u.1;
     let mean_along = |s: usize| centres[s].iter().map(along).sum::<f64>() / centres[s].len() as f64;
     slots.sort_by(|a, b| mean_along(*a).total_cmp(&mean_along(*b)));
-    let radii = tracker.radii();
-    let r_px = median(radii).unwrap_or(f64::NAN);
-    let mut dev: Vec<f64> = radii.iter().map(|r| (r - r_px).abs()).collect();
-    dev.sort_by(f64::total_cmp);
-    let r_stat = 1.4826 * dev[dev.len() / 2] * 1.2533 / (radii.len() as f64).sqrt();
-    // How unsure the edge is beyond the frames' mean: the edge's definitions
-    // disagreeing, the single frames' radii scattering (a bias that the shading, a
-    // blur or the wall puts into every frame alike does not average out over them:
-    // the frames' scatter, not its standard error, bounds it), and the two balls'
-    // radii differing (both have one radius).
-    let frame_sd = 1.4826 * dev.get(dev.len() / 2).copied().unwrap_or(0.0);
-    let systematic = edge_systematic(tracker.edge_offsets(), p.edge_systematic)
-        .max(frame_sd)
-        .max(between_balls(frames, &slots));
-    let r_se = r_stat.hypot(systematic);
-    // Never a confident wrong scale: radii that disagree are no ball's (the mark, a
-    // highlight or clutter taken for one in part of the frames).
-    let spread = 1.4826 * dev.get(dev.len() / 2).copied().unwrap_or(0.0) / r_px;
-    if scale.is_none() && (spread.is_nan() || spread > p.max_radius_spread) {
-        return Err(TracksError::RadiiDisagree {
-            median_px: r_px,
-            scatter: spread,
-        });
-    }
+    let (r_px, r_se) = the_radius(tracker, frames, &slots, scale.is_none())?;
     let px_per_m = scale.unwrap_or(r_px / radius);
     // The origin: the mean of every centre, so y is about 0 along the groove.
     let all: Vec<&[f64; 2]> = slots.iter().flat_map(|&s| centres[s].iter()).collect();
@@ -243,6 +240,53 @@ pub fn tracks(
         balls,
         calibration,
     })
+}
+
+/// The balls' median fitted radius, px, and its ± (the median's own standard error
+/// and the edge's systematic); with `refuse` (no scale given), why no scale is given
+/// from it: radii that scatter, or outlines off the balls' edge in colour.
+fn the_radius(
+    tracker: &Tracker,
+    frames: &[FrameFixes],
+    slots: &[usize],
+    refuse: bool,
+) -> Result<(f64, f64), TracksError> {
+    let p = &tracker.params;
+    let radii = tracker.radii();
+    let r_px = median(radii).unwrap_or(f64::NAN);
+    let mut dev: Vec<f64> = radii.iter().map(|r| (r - r_px).abs()).collect();
+    dev.sort_by(f64::total_cmp);
+    // How unsure the edge is beyond the frames' mean: the edge's definitions
+    // disagreeing, the single frames' radii scattering (a bias that the shading, a
+    // blur or the wall puts into every frame alike does not average out over them:
+    // the frames' scatter, not its standard error, bounds it), and the two balls'
+    // radii differing (both have one radius).
+    let frame_sd = 1.4826 * dev.get(dev.len() / 2).copied().unwrap_or(0.0);
+    let r_stat = frame_sd * 1.2533 / (radii.len() as f64).sqrt();
+    let colour = colour_edge(tracker.colour_offsets(), p.colour_edge_within);
+    let systematic = edge_systematic(tracker.edge_offsets(), colour, p.edge_systematic)
+        .max(frame_sd)
+        .max(between_balls(frames, slots));
+    let r_se = r_stat.hypot(systematic);
+    // Never a confident wrong scale: radii that disagree are no ball's (the mark, a
+    // highlight or clutter taken for one in part of the frames).
+    let spread = frame_sd / r_px;
+    if refuse && (spread.is_nan() || spread > p.max_radius_spread) {
+        return Err(TracksError::RadiiDisagree {
+            median_px: r_px,
+            scatter: spread,
+        });
+    }
+    // Never a confident wrong scale: an outline pixels inside or outside the
+    // ball's edge in colour, by more than two circles of one ball may differ
+    // (`outer_agree`), is no ball's outline.
+    if let Some(c) = colour.filter(|c| refuse && c.abs() > p.outer_agree * r_px) {
+        return Err(TracksError::ColourEdge {
+            offset_px: c,
+            radius_px: r_px,
+        });
+    }
+    Ok((r_px, r_se))
 }
 
 /// The slots that hold a ball (seen in enough frames), or why the frames give no

@@ -4,6 +4,7 @@
 pub(crate) mod app;
 pub(crate) mod ball_parts;
 mod black_ball;
+mod colour_edge;
 mod first_locks;
 mod follow_gap;
 pub(crate) mod found_frames;
