@@ -34,6 +34,7 @@
 pub const VERSION: u32 = 16;
 
 pub mod background;
+pub mod band;
 pub mod circle;
 pub mod detect;
 pub mod frame;
