@@ -83,7 +83,11 @@ impl Band {
     /// frame's: the balls stayed well inside it.
     pub fn holds(&self, frames: &[FrameFixes], radius: f64) -> bool {
         let keep = Self::KEEP_RADII * radius;
-        let top = if self.y == 0 { f64::NEG_INFINITY } else { self.y as f64 + keep };
+        let top = if self.y == 0 {
+            f64::NEG_INFINITY
+        } else {
+            self.y as f64 + keep
+        };
         let bottom_edge = self.y + self.height;
         let bottom = if bottom_edge >= self.frame_height {
             f64::INFINITY
@@ -114,8 +118,8 @@ pub fn shift(frames: &mut [FrameFixes], dy: f64) {
     }
 }
 
-/// The band around the balls' line in `first` (the clip's first frames, whole, as
-/// [`FIRST_FRAMES`] taken [`FIRST_EVERY`] apart), or `None` when the line is in
+/// The band around the balls' line in `first` (the clip's first frames, whole and
+/// in order; every [`FIRST_EVERY`]-th looked at, [`FIRST_FRAMES`] of them), or `None` when the line is in
 /// doubt: not exactly two balls of one radius in each frame, balls too close to
 /// tell the line's tilt, frames that disagree on it, a band of most of the frame,
 /// or a seed (`--ball-at`) off its rows.
@@ -124,14 +128,27 @@ pub fn find(first: &[Frame], params: &Params) -> Option<Band> {
     if first.iter().any(|f| (f.width(), f.height()) != (w, h)) {
         return None;
     }
-    // The tracker with no background: the look against a smooth surface of luma,
-    // which sees a ball in any frame, and every check of an outline.
+    // The tracker with a background learned from these frames (balls that moved
+    // past their own width stand out of it, on any wall), else with none (the look
+    // against a smooth surface of luma, which sees a ball at rest on a plain wall).
+    let (lines, radius) = lines(first, params, true).or_else(|| lines(first, params, false))?;
+    band_about(&lines, radius, (w, h), params)
+}
+
+/// Each looked-at frame's line through its two balls (its height at the middle of
+/// the width, its slope) and the balls' radius, or `None` when any frame does not
+/// show exactly two balls of one radius 4 radii apart or more, or the frames'
+/// lines disagree. `learned`: the background learned from all of `first` first.
+fn lines(first: &[Frame], params: &Params, learned: bool) -> Option<(Vec<(f64, f64)>, f64)> {
     let mut t = Tracker::new(*params);
-    first.iter().for_each(|f| t.push(f));
-    if t.counts.crowded > 0 {
+    if learned {
+        first.iter().for_each(|f| t.learn(f));
+    }
+    first.iter().step_by(FIRST_EVERY).for_each(|f| t.push(f));
+    if t.counts.crowded > 0 || t.frames.len() < FIRST_FRAMES {
         return None;
     }
-    // Each frame's line through its two balls: its height at the middle, its slope.
+    let half = 0.5 * first.first()?.width() as f64;
     let mut lines = Vec::new();
     let mut radius: f64 = 0.0;
     for f in &t.frames {
@@ -143,17 +160,23 @@ pub fn find(first: &[Frame], params: &Params) -> Option<Band> {
             return None;
         }
         let slope = (b.y - a.y) / dx;
-        let mid = a.y + slope * (0.5 * w as f64 - a.x);
-        lines.push((mid, slope));
+        lines.push((a.y + slope * (half - a.x), slope));
         radius = radius.max(r);
     }
     let (first_line, _) = lines.split_first()?;
     let agree = lines.iter().all(|(mid, slope)| {
         (mid - first_line.0).abs() < 0.25 * radius && (slope - first_line.1).abs() < 0.02
     });
-    if !agree || !radius.is_finite() {
-        return None;
-    }
+    (agree && radius.is_finite()).then_some((lines, radius))
+}
+
+/// The band about `lines` (see [`lines`]) for balls of `radius` in frames `w × h`.
+fn band_about(
+    lines: &[(f64, f64)],
+    radius: f64,
+    (w, h): (usize, usize),
+    params: &Params,
+) -> Option<Band> {
     // The line's highest and lowest rows across the width, and the margin.
     let half = 0.5 * w as f64;
     let ends = lines

@@ -9,10 +9,10 @@
 use super::{Info, Limits, RateSource, VideoError, VideoProblem};
 use crate::settings::units::{Dimension, show, show_small, with_uncertainty};
 use crate::study::Progress;
+use crate::vision::band::Band;
 use crate::vision::prepared::PreparedLook;
 use crate::vision::thumbs::{Thumbs, VideoView};
 use crate::vision::tracks::{BallTrack, Tracks};
-use crate::vision::band::Band;
 use crate::vision::{self, Tracker, overlay};
 
 /// What a tracking is asked for: the balls' radius R (m; the scale comes from it),
@@ -279,10 +279,9 @@ fn framed(
     }
     let first: Vec<vision::Frame> = head
         .iter()
-        .step_by(vision::band::FIRST_EVERY)
         .filter_map(|f| f.as_ref().ok().map(|(_, img)| img.clone()))
         .collect();
-    let band = (first.len() == vision::band::FIRST_FRAMES)
+    let band = (first.len() == wanted)
         .then(|| vision::band::find(&first, &options.params()))
         .flatten();
     if let Some(b) = band

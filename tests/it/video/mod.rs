@@ -3,6 +3,7 @@
 
 pub(crate) mod app;
 pub(crate) mod ball_parts;
+mod band;
 mod black_ball;
 mod first_locks;
 mod follow_gap;
