@@ -136,10 +136,10 @@ pub fn track_framed(
     if framing == Framing::Band
         && let Attempt::Done(done) = attempt(video, options, progress, pictures, true)?
     {
-        return Ok(done);
+        return Ok(*done);
     }
     match attempt(video, options, progress, pictures, false)? {
-        Attempt::Done(done) => Ok(done),
+        Attempt::Done(done) => Ok(*done),
         // Never asked again of the whole frame.
         Attempt::Again => Ok(None),
     }
@@ -148,7 +148,7 @@ pub fn track_framed(
 /// What one tracking gave: the tracks (`None`: asked to stop), or, banded, a reason
 /// to track the whole frame instead.
 enum Attempt {
-    Done(Option<Tracked>),
+    Done(Box<Option<Tracked>>),
     Again,
 }
 
@@ -192,7 +192,7 @@ fn attempt(
     let Some((mut tracker, numbers, thumbs)) =
         stream(framed, &info, options, progress, pictures).map_err(nothing)?
     else {
-        return Ok(Attempt::Done(None));
+        return Ok(Attempt::Done(Box::new(None)));
     };
     if let Some(b) = band {
         vision::band::shift(&mut tracker.frames, b.y as f64);
@@ -227,7 +227,7 @@ fn attempt(
     }
     let notes = notes(&file, &info, fps, &source, &tracks, &options.radius_from);
     let view = VideoView::new(thumbs, &tracks);
-    Ok(Attempt::Done(Some(Tracked {
+    Ok(Attempt::Done(Box::new(Some(Tracked {
         info,
         fps,
         source,
@@ -235,7 +235,7 @@ fn attempt(
         notes,
         view,
         band,
-    })))
+    }))))
 }
 
 /// The frames to track and the band they are of: cut by ffmpeg (`cut` false) or
