@@ -18,12 +18,17 @@ use super::tracker::{FrameFixes, Tracker};
 /// Rows `y .. y + height` of frames `height_of` high, full width: where the tracker
 /// looks. `y` and `height` are multiples of twice the coarse reductions, so the
 /// band's coarse pixels (and its colour rows) are the whole frame's.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Band {
     pub y: usize,
     pub height: usize,
     /// The whole frame's height, px.
     pub frame_height: usize,
+    /// The whole frame's pixel noise in the first frames (`prepared::pixel_noise`,
+    /// luma levels), which the band's frames are given: the band's own sample of
+    /// pixels gives another (a median of whole levels: 1.05 or 2.10), and the marks'
+    /// threshold is a multiple of it.
+    pub noise: f64,
 }
 
 /// Frames of the clip's start the band is found from (`FIRST_EVERY` apart).
@@ -122,7 +127,8 @@ pub fn shift(frames: &mut [FrameFixes], dy: f64) {
 /// in order; every [`FIRST_EVERY`]-th looked at, [`FIRST_FRAMES`] of them), or `None` when the line is in
 /// doubt: not exactly two balls of one radius in each frame, balls too close to
 /// tell the line's tilt, frames that disagree on it, a band of most of the frame,
-/// or a seed (`--ball-at`) off its rows.
+/// a seed (`--ball-at`) off its rows, or a pixel noise that changes between the
+/// first frames.
 pub fn find(first: &[Frame], params: &Params) -> Option<Band> {
     let (w, h) = (first.first()?.width(), first.first()?.height());
     if first.iter().any(|f| (f.width(), f.height()) != (w, h)) {
@@ -132,7 +138,16 @@ pub fn find(first: &[Frame], params: &Params) -> Option<Band> {
     // past their own width stand out of it, on any wall), else with none (the look
     // against a smooth surface of luma, which sees a ball at rest on a plain wall).
     let (lines, radius) = lines(first, params, true).or_else(|| lines(first, params, false))?;
-    band_about(&lines, radius, (w, h), params)
+    // The whole frame's noise, the same in every first frame (else the clip's may
+    // change, and the band could not follow it).
+    let noise = super::prepared::pixel_noise(&first.first()?.luma);
+    if first
+        .iter()
+        .any(|f| super::prepared::pixel_noise(&f.luma) != noise)
+    {
+        return None;
+    }
+    band_about(&lines, radius, (w, h), params).map(|b| Band { noise, ..b })
 }
 
 /// Each looked-at frame's line through its two balls (its height at the middle of
@@ -204,6 +219,7 @@ fn band_about(
         y: top,
         height,
         frame_height: h,
+        noise: 1.0,
     })
 }
 
@@ -245,6 +261,7 @@ mod tests {
             y: 2,
             height: 4,
             frame_height: 8,
+            noise: 1.0,
         };
         let cut = band.cut(&frame);
         assert_eq!(cut.luma.data, (16..48).collect::<Vec<u8>>());

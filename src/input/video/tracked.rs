@@ -385,7 +385,11 @@ fn stream(
                     }
                     None => img,
                 };
-                let prep = PreparedLook::of(&img, &params);
+                let mut prep = PreparedLook::of(&img, &params);
+                // The whole frame's pixel noise, not the band's own sample's.
+                if let Some(b) = band {
+                    prep.noise = b.noise;
+                }
                 (n, img, prep)
             });
             if sender.send(frame).is_err() {
