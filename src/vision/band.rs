@@ -124,11 +124,11 @@ pub fn shift(frames: &mut [FrameFixes], dy: f64) {
 }
 
 /// The band around the balls' line in `first` (the clip's first frames, whole and
-/// in order; every [`FIRST_EVERY`]-th looked at, [`FIRST_FRAMES`] of them), or `None` when the line is in
-/// doubt: not exactly two balls of one radius in each frame, balls too close to
-/// tell the line's tilt, frames that disagree on it, a band of most of the frame,
-/// a seed (`--ball-at`) off its rows, or a pixel noise that changes between the
-/// first frames.
+/// in order; every [`FIRST_EVERY`]-th looked at, [`FIRST_FRAMES`] of them), or
+/// `None` when the line is in doubt: not exactly two balls of one radius in each
+/// looked-at frame, balls too close to tell the line's tilt, frames that disagree
+/// on it, a band of most of the frame, a seed (`--ball-at`) off its rows, or a
+/// pixel noise that changes between the first frames.
 pub fn find(first: &[Frame], params: &Params) -> Option<Band> {
     let (w, h) = (first.first()?.width(), first.first()?.height());
     if first.iter().any(|f| (f.width(), f.height()) != (w, h)) {
