@@ -268,4 +268,52 @@ mod tests {
         assert_eq!(cut.u, (4..12).collect::<Vec<u8>>());
         assert_eq!((cut.chroma_width, cut.chroma_height), (4, 2));
     }
+
+    /// A fit at height `y` (px), radius 10.
+    fn fit_at(y: f64) -> FrameFixes {
+        let outline = crate::vision::circle::Outline {
+            circle: crate::vision::circle::Circle {
+                x: 50.0,
+                y,
+                r: 10.0,
+            },
+            sigma: [0.1; 3],
+            rms: 0.1,
+            points: 100,
+            coverage: 0.6,
+            lowest: y + 5.0,
+            polarity: 1.0,
+        };
+        let fix = crate::vision::tracker::Fix {
+            outline,
+            sigma: 0.1,
+            mark: None,
+            spots: [Some((50.0, y - 3.0, 20.0)), None, None, None],
+        };
+        [Ok(fix), Err(crate::vision::tracker::LeftOut::Unseen)]
+    }
+
+    #[test]
+    fn fits_are_moved_to_the_whole_frame_and_must_keep_off_the_bands_edges() {
+        let band = Band {
+            y: 100,
+            height: 120,
+            frame_height: 400,
+            noise: 1.0,
+        };
+        let mut frames = vec![fit_at(60.0)];
+        shift(&mut frames, 100.0);
+        let [Ok(f), _] = &frames[0] else { panic!() };
+        assert_eq!((f.outline.circle.y, f.outline.lowest), (160.0, 165.0));
+        assert_eq!(f.spots[0], Some((50.0, 157.0, 20.0)));
+        // 3 radii from either edge that is not the frame's.
+        assert!(band.holds(&frames, 10.0));
+        assert!(!band.holds(&[fit_at(129.0)], 10.0));
+        assert!(!band.holds(&[fit_at(191.0)], 10.0));
+        assert!(band.holds(&[fit_at(130.0), fit_at(190.0)], 10.0));
+        // The frame's own edge bounds nothing.
+        let top = Band { y: 0, ..band };
+        assert!(top.holds(&[fit_at(5.0)], 10.0));
+        assert!(!band.holds(&frames, f64::NAN));
+    }
 }
