@@ -7,9 +7,11 @@
 //! turn with their ball left out (`mark_check`), turned into metres
 //! and seconds along the groove (`tracks`) and written as a Tracker-style file
 //! (`write`), with small pictures of the frames for the app (`thumbs`), and drawn
-//! over the frames for a user to check (`overlay`). Pure: the frames come from
-//! `input::video`; the synthetic films that test it are test support
-//! (`tests/support/film`). How it works and when it refuses: docs/tracking.md.
+//! over the frames for a user to check (`overlay`); the rows of the groove's band,
+//! found from the first frames, the only ones decoded and tracked (`band`). Pure:
+//! the frames come from `input::video`; the synthetic films that test it are test
+//! support (`tests/support/film`). How it works and when it refuses:
+//! docs/tracking.md.
 
 // Bad frames never panic the tracker: no unchecked index, unwrap or panic here (a
 // short `allow` with its reason where an index is provably in range). Tests may.
@@ -31,9 +33,10 @@
 
 /// The tracker's own version: raised whenever a change makes it find other numbers
 /// in the same video (cached tracks are keyed by it, not by the program's version).
-pub const VERSION: u32 = 17;
+pub const VERSION: u32 = 18;
 
 pub mod background;
+pub mod band;
 pub mod circle;
 pub mod detect;
 pub mod frame;

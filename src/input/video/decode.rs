@@ -18,6 +18,7 @@ use super::info::{Frames, Info};
 use super::probe::url;
 use super::problem::{VideoError, VideoProblem};
 use crate::vision::Frame;
+use crate::vision::band::Band;
 
 /// The frames of the video at `path` (as `info` describes it): every `every`-th
 /// (1: all), numbered as in the video.
@@ -47,14 +48,35 @@ impl Drop for Started {
     }
 }
 
+/// The frames of the video at `path` (as `info` describes it), all of them, cut
+/// by ffmpeg to the rows of `band` (after its decoding: only those rows are piped).
+pub(super) fn band_frames(path: &Path, info: &Info, band: &Band) -> Result<Frames, VideoError> {
+    let cut = Info {
+        height: band.height,
+        ..info.clone()
+    };
+    Ok(stream(spawn_cut(path, 1, Some(band))?, &cut))
+}
+
 /// Starts ffmpeg decoding `path` (every `every`-th frame) into a pipe.
 pub(super) fn spawn(path: &Path, every: usize) -> Result<Started, VideoError> {
+    spawn_cut(path, every, None)
+}
+
+/// As [`spawn`], the frames cut to `band`'s rows (exactly: its top is even).
+fn spawn_cut(path: &Path, every: usize, band: Option<&Band>) -> Result<Started, VideoError> {
     let file = path.to_path_buf();
     let every = every.max(1);
     let mut cmd = Command::new("ffmpeg");
     cmd.args(["-v", "error", "-nostdin", "-i"])
         .arg(url(path))
         .args(["-map", "0:v:0"]);
+    if let Some(b) = band {
+        cmd.args([
+            "-vf",
+            &format!("crop=w=iw:h={}:x=0:y={}:exact=1", b.height, b.y),
+        ]);
+    }
     if every > 1 {
         cmd.args([
             "-vf",

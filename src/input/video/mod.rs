@@ -85,6 +85,17 @@ pub fn open_if(
     }
 }
 
+/// The frames of the video at `path` (`info`: what [`open_if`] said of it), cut to
+/// the rows of `band` by ffmpeg: only those rows are piped (a video file; a
+/// folder's frames are cut by `band.cut` as they are read).
+pub fn open_band(
+    path: &Path,
+    info: &Info,
+    band: &crate::vision::band::Band,
+) -> Result<Frames, VideoError> {
+    decode::band_frames(path, info, band)
+}
+
 /// What `path` is, as [`open`] would refuse it, without decoding a frame (a
 /// folder's first frame is read).
 pub fn check(path: &Path, limits: &Limits) -> Result<Info, VideoError> {

@@ -9,6 +9,7 @@
 use super::{Info, Limits, RateSource, VideoError, VideoProblem};
 use crate::settings::units::{Dimension, show, show_small, with_uncertainty};
 use crate::study::Progress;
+use crate::vision::band::Band;
 use crate::vision::prepared::PreparedLook;
 use crate::vision::thumbs::{Thumbs, VideoView};
 use crate::vision::tracks::{BallTrack, Tracks};
@@ -54,6 +55,9 @@ pub struct Tracked {
     pub tracks: Tracks,
     pub notes: Vec<String>,
     pub view: VideoView,
+    /// The rows tracked (`vision::band`), or `None`: the whole frame. The tracks,
+    /// the view and the fits are in the whole frame's pixels either way.
+    pub band: Option<Band>,
 }
 
 impl Tracked {
@@ -102,13 +106,65 @@ pub type FitsFound = Vec<Vec<Option<overlay::Drawn>>>;
 /// As [`track`], and when the tracker is unsure (no tracks), what it found in each
 /// frame, for `track --overlay` to draw: a student sees where it went wrong and
 /// reads `--roi` and `--ball-at` off the picture. `pictures`: whether the app's
-/// pictures are made (skipped, `view` holds none).
+/// pictures are made (skipped, `view` holds none). Only the groove's band is
+/// tracked where the first frames are sure of it ([`Framing::Band`]).
 pub fn track_or_found(
     video: &std::path::Path,
     options: &Options,
     progress: &dyn Progress,
     pictures: Pictures,
 ) -> Result<Option<Tracked>, Box<Refused>> {
+    track_framed(video, options, progress, pictures, Framing::Band)
+}
+
+/// Which rows of the frames the tracker looks at.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Framing {
+    /// The groove's band (`vision::band`) where the clip's first frames are sure of
+    /// it, else the whole frame; and the whole frame again when the banded tracking
+    /// is refused, or a ball came near the band's edge, or it found one ball (a
+    /// band is a speed-up, never a new refusal).
+    Band,
+    /// The whole frame.
+    Whole,
+}
+
+/// As [`track_or_found`], its rows chosen by `framing`.
+pub fn track_framed(
+    video: &std::path::Path,
+    options: &Options,
+    progress: &dyn Progress,
+    pictures: Pictures,
+    framing: Framing,
+) -> Result<Option<Tracked>, Box<Refused>> {
+    if framing == Framing::Band
+        && let Attempt::Done(done) = attempt(video, options, progress, pictures, true)?
+    {
+        return Ok(*done);
+    }
+    match attempt(video, options, progress, pictures, false)? {
+        Attempt::Done(done) => Ok(*done),
+        // Never asked again of the whole frame.
+        Attempt::Again => Ok(None),
+    }
+}
+
+/// What one tracking gave: the tracks (`None`: asked to stop), or, banded, a reason
+/// to track the whole frame instead.
+enum Attempt {
+    Done(Box<Option<Tracked>>),
+    Again,
+}
+
+/// One tracking of `video`: of its band when `banded` and the first frames give
+/// one, else of the whole frame.
+fn attempt(
+    video: &std::path::Path,
+    options: &Options,
+    progress: &dyn Progress,
+    pictures: Pictures,
+    banded: bool,
+) -> Result<Attempt, Box<Refused>> {
     let nothing = |error: VideoError| {
         Box::new(Refused {
             error,
@@ -134,11 +190,21 @@ pub fn track_or_found(
     let Some((fps, source)) = rate else {
         return Err(nothing(err(VideoProblem::NoRate)));
     };
-    let Some((tracker, numbers, thumbs)) =
-        stream(frames, &info, options, progress, pictures).map_err(nothing)?
-    else {
-        return Ok(None);
+    let framed = if banded {
+        framed(video, &info, frames, options, pictures).map_err(nothing)?
+    } else {
+        Framed::whole(frames)
     };
+    let band = framed.band;
+    let Some((mut tracker, numbers, thumbs)) =
+        stream(framed, &info, options, progress, pictures).map_err(nothing)?
+    else {
+        return Ok(Attempt::Done(Box::new(None)));
+    };
+    if let Some(b) = band {
+        vision::band::shift(&mut tracker.frames, b.y as f64);
+        tracker.params = options.params();
+    }
     let first = match numbers.as_slice() {
         [first, _, ..] => *first,
         _ => {
@@ -150,6 +216,7 @@ pub fn track_or_found(
     let times = numbers.iter().map(|n| (n - first) as f64 / fps).collect();
     let tracks = match vision::tracks(&tracker, times, options.radius, options.px_per_m) {
         Ok(tracks) => tracks,
+        Err(_) if band.is_some() => return Ok(Attempt::Again),
         Err(e) => {
             let what = match options.ball_at {
                 Some(at) => VideoProblem::Seeded { error: e, at },
@@ -173,16 +240,86 @@ pub fn track_or_found(
             }));
         }
     };
+    if let Some(b) = band
+        && (tracks.balls.len() != 2 || !b.holds(&tracker.frames, tracks.calibration.radius_px))
+    {
+        return Ok(Attempt::Again);
+    }
     let notes = notes(&file, &info, fps, &source, &tracks, &options.radius_from);
     let view = VideoView::new(thumbs, &tracks);
-    Ok(Some(Tracked {
+    Ok(Attempt::Done(Box::new(Some(Tracked {
         info,
         fps,
         source,
         tracks,
         notes,
         view,
-    }))
+        band,
+    }))))
+}
+
+/// The frames to track and the band they are of: cut by ffmpeg (`cut` false) or
+/// to be cut as they are read (`cut` true: a folder, or the app's pictures, which
+/// are made of whole frames); `band` `None`, whole frames.
+struct Framed {
+    frames: super::Frames,
+    band: Option<Band>,
+    cut: bool,
+}
+
+impl Framed {
+    fn whole(frames: super::Frames) -> Framed {
+        Framed {
+            frames,
+            band: None,
+            cut: false,
+        }
+    }
+}
+
+/// The band of `video`'s frames (`vision::band::find` on its first frames, read
+/// from `frames` and kept), and the frames to track: whole when there is none;
+/// a video's band decoded anew by ffmpeg, cut, when only tracks are wanted
+/// (`frames` ended unread); else `frames` to be cut as they are read.
+fn framed(
+    video: &std::path::Path,
+    info: &Info,
+    mut frames: super::Frames,
+    options: &Options,
+    pictures: Pictures,
+) -> Result<Framed, VideoError> {
+    let mut head = Vec::new();
+    let wanted = (vision::band::FIRST_FRAMES - 1) * vision::band::FIRST_EVERY + 1;
+    for frame in frames.by_ref() {
+        let bad = frame.is_err();
+        head.push(frame);
+        if bad || head.len() >= wanted {
+            break;
+        }
+    }
+    let first: Vec<vision::Frame> = head
+        .iter()
+        .filter_map(|f| f.as_ref().ok().map(|(_, img)| img.clone()))
+        .collect();
+    let band = (first.len() == wanted)
+        .then(|| vision::band::find(&first, &options.params()))
+        .flatten();
+    if let Some(b) = band
+        && video.is_file()
+        && pictures == Pictures::Skipped
+    {
+        drop(frames);
+        return Ok(Framed {
+            frames: super::open_band(video, info, &b)?,
+            band: Some(b),
+            cut: false,
+        });
+    }
+    Ok(Framed {
+        frames: Box::new(head.into_iter().chain(frames)),
+        band,
+        cut: band.is_some(),
+    })
 }
 
 /// What of `--ball-at` and `--roi` lies off the frames of `size` px, or the point
@@ -218,20 +355,26 @@ fn off_the_frame(options: &Options, size: (usize, usize)) -> Option<VideoProblem
 /// tracker, each frame's number, and the app's small pictures; `None` when
 /// `progress` asked to stop.
 fn stream(
-    frames: super::Frames,
+    framed: Framed,
     info: &Info,
     options: &Options,
     progress: &dyn Progress,
     pictures: Pictures,
 ) -> Result<Option<(Tracker, Vec<u64>, Thumbs)>, VideoError> {
-    let params = options.params();
+    let Framed { frames, band, cut } = framed;
+    let params = band.map_or(options.params(), |b| b.params(&options.params()));
     let mut tracker = Tracker::new(params);
     // One pass, one decode: each frame is learned (reduced) into the background as
     // it comes, and tracked only once `ahead` frames more have been learned, so the
     // background it is tracked against has seen the balls move on. A clip that fits
     // in the look-ahead (most clips) is learned whole before its first frame is
     // tracked, as if read twice.
+    // As many frames ahead as of the whole frame, a band or not: which frames the
+    // background has learned when a frame is tracked is the tracks' business, not
+    // the band's (more, and the speed clip's tracks changed). The reader may run
+    // ahead by bytes: more of a band's frames.
     let ahead = lookahead(info.width, info.height);
+    let rows = band.map_or(info.height, |b| b.height);
     let total = info.frames.max(1);
     let mut thumbs = Thumbs::sized(info.width, info.height, info.frames);
     let no_thumbs = thumbs.clone();
@@ -244,7 +387,7 @@ fn stream(
     // too (each frame's box averages, in the frames' order: what the tracker is
     // given), off the tracker's thread; and so is each frame's own part of the
     // tracker's look (`PreparedLook`: reduced once for the learner and the look).
-    let (sender, received) = std::sync::mpsc::sync_channel(read_ahead(info.width, info.height));
+    let (sender, received) = std::sync::mpsc::sync_channel(read_ahead(info.width, rows));
     let reader = std::thread::spawn(move || {
         let mut k = 0usize;
         for frame in frames {
@@ -253,7 +396,20 @@ fn stream(
                 k += 1;
             }
             let frame = frame.map(|(n, img)| {
-                let prep = PreparedLook::of(&img, &params);
+                // The band's rows, for the tracker; the whole frame's pictures made.
+                let img = match band.filter(|_| cut) {
+                    Some(b) => {
+                        let part = b.cut(&img);
+                        super::decode::recycle(img);
+                        part
+                    }
+                    None => img,
+                };
+                let mut prep = PreparedLook::of(&img, &params);
+                // The whole frame's pixel noise, not the band's own sample's.
+                if let Some(b) = band {
+                    prep.noise = b.noise;
+                }
                 (n, img, prep)
             });
             if sender.send(frame).is_err() {

@@ -355,6 +355,7 @@ fn measure(dir: &Path, clip: &Clip, path: &Path, handle: Handle) -> Row {
         Ok(Ok(Some(done))) => done,
     };
     let c = &done.tracks.calibration;
+    eprintln!("{}: rows tracked {:?}", clip.name, done.band);
     eprintln!(
         "{}: radius {:.3} ± {:.3} px, truth {:.3}",
         clip.name,

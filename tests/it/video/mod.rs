@@ -3,6 +3,7 @@
 
 pub(crate) mod app;
 pub(crate) mod ball_parts;
+mod band;
 mod black_ball;
 mod colour_edge;
 mod first_locks;

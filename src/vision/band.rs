@@ -1,0 +1,319 @@
+//! The groove's band: the rows of the frame the balls roll through, found from the
+//! clip's first frames, so that only they are decoded and tracked (issue 34's speed:
+//! a quarter of a 1080p frame's bytes through ffmpeg's pipe, and a quarter of every
+//! pass over the pixels). The balls roll along one line, the groove (tilted as the
+//! phone was); the band holds that line across the whole width and
+//! [`Band::MARGIN_RADII`] radii above and below it. Where the first frames leave the
+//! line in doubt, there is no band: the whole frame is tracked, as before. A band
+//! is a speed-up, never a new refusal: `input::video::tracked` tracks the whole
+//! frame again when the banded tracking is refused or a ball came near the band's
+//! edge ([`Band::holds`]). How it is found: docs/tracking.md.
+
+use super::background::factor;
+use super::frame::{Frame, chroma_size};
+use super::gray::Gray;
+use super::params::Params;
+use super::tracker::{FrameFixes, Tracker};
+
+/// Rows `y .. y + height` of frames `height_of` high, full width: where the tracker
+/// looks. `y` and `height` are multiples of twice the coarse reductions, so the
+/// band's coarse pixels (and its colour rows) are the whole frame's.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Band {
+    pub y: usize,
+    pub height: usize,
+    /// The whole frame's height, px.
+    pub frame_height: usize,
+    /// The whole frame's pixel noise in the first frames (`prepared::pixel_noise`,
+    /// luma levels), which the band's frames are given: the band's own sample of
+    /// pixels gives another (a median of whole levels: 1.05 or 2.10), and the marks'
+    /// threshold is a multiple of it.
+    pub noise: f64,
+}
+
+/// Frames of the clip's start the band is found from (`FIRST_EVERY` apart).
+pub const FIRST_FRAMES: usize = 3;
+/// Frames between those looked at: at 240 frames/s a twentieth of a second
+/// between the first and the last, so a passing blob does not agree with itself.
+pub const FIRST_EVERY: usize = 6;
+
+impl Band {
+    /// Radii kept above and below the balls' line: the outline's outermost edge is
+    /// sought out to 2.2 radii from the centre (`Params::outer_reach`), the ring a
+    /// ball must stand out from lies just outside it, and the line from the first
+    /// frames may be off by a radius at the far end of a tilted groove.
+    pub const MARGIN_RADII: f64 = 4.0;
+    /// Radii a fit's centre must keep from a band's edge (not the frame's) for the
+    /// banded tracking to stand ([`Band::holds`]).
+    pub const KEEP_RADII: f64 = 3.0;
+    /// Largest share of the frame a band may take: more, and the whole frame is
+    /// tracked (little to gain, and the look's statistics drift from the whole's).
+    pub const MOST_SHARE: f64 = 0.6;
+
+    /// The band's rows of `frame` (which is the whole frame): a frame of its own.
+    pub fn cut(&self, frame: &Frame) -> Frame {
+        let w = frame.width();
+        let (cw, _) = chroma_size(w, self.height);
+        let rows = |data: &[u8], width: usize, y: usize, h: usize| -> Vec<u8> {
+            data.get(y * width..(y + h) * width)
+                .map(<[u8]>::to_vec)
+                .unwrap_or_else(|| vec![128; width * h])
+        };
+        let ch = self.height.div_ceil(2);
+        Frame {
+            luma: Gray {
+                width: w,
+                height: self.height,
+                data: rows(&frame.luma.data, w, self.y, self.height),
+            },
+            chroma_width: cw,
+            chroma_height: ch,
+            u: rows(&frame.u, cw, self.y / 2, ch),
+            v: rows(&frame.v, cw, self.y / 2, ch),
+        }
+    }
+
+    /// `params` for frames of this band: the rectangle and the seed moved up by its top.
+    pub fn params(&self, params: &Params) -> Params {
+        let dy = self.y as f64;
+        Params {
+            roi: params.roi.map(|r| super::Roi { y: r.y - dy, ..r }),
+            ball_at: params.ball_at.map(|(x, y)| (x, y - dy)),
+            ..*params
+        }
+    }
+
+    /// True when every fit of `frames` (the whole frame's pixels) keeps
+    /// [`Band::KEEP_RADII`] of `radius` from the band's edges that are not the
+    /// frame's: the balls stayed well inside it.
+    pub fn holds(&self, frames: &[FrameFixes], radius: f64) -> bool {
+        let keep = Self::KEEP_RADII * radius;
+        let top = if self.y == 0 {
+            f64::NEG_INFINITY
+        } else {
+            self.y as f64 + keep
+        };
+        let bottom_edge = self.y + self.height;
+        let bottom = if bottom_edge >= self.frame_height {
+            f64::INFINITY
+        } else {
+            bottom_edge as f64 - keep
+        };
+        radius.is_finite()
+            && frames
+                .iter()
+                .flatten()
+                .flatten()
+                .all(|fix| (top..=bottom).contains(&fix.outline.circle.y))
+    }
+}
+
+/// Every fit, mark and spot of `frames` moved down by `dy` px: from a band's pixels
+/// to the whole frame's.
+pub fn shift(frames: &mut [FrameFixes], dy: f64) {
+    for fix in frames.iter_mut().flatten().flatten() {
+        fix.outline.circle.y += dy;
+        fix.outline.lowest += dy;
+        if let Some(m) = &mut fix.mark {
+            m.y += dy;
+        }
+        for (_, y, _) in fix.spots.iter_mut().flatten() {
+            *y += dy;
+        }
+    }
+}
+
+/// The band around the balls' line in `first` (the clip's first frames, whole and
+/// in order; every [`FIRST_EVERY`]-th looked at, [`FIRST_FRAMES`] of them), or
+/// `None` when the line is in doubt: not exactly two balls of one radius in each
+/// looked-at frame, balls too close to tell the line's tilt, frames that disagree
+/// on it, a band of most of the frame, a seed (`--ball-at`) off its rows, or a
+/// pixel noise that changes between the first frames.
+pub fn find(first: &[Frame], params: &Params) -> Option<Band> {
+    let (w, h) = (first.first()?.width(), first.first()?.height());
+    if first.iter().any(|f| (f.width(), f.height()) != (w, h)) {
+        return None;
+    }
+    // The tracker with a background learned from these frames (balls that moved
+    // past their own width stand out of it, on any wall), else with none (the look
+    // against a smooth surface of luma, which sees a ball at rest on a plain wall).
+    let (lines, radius) = lines(first, params, true).or_else(|| lines(first, params, false))?;
+    // The whole frame's noise, the same in every first frame (else the clip's may
+    // change, and the band could not follow it).
+    let noise = super::prepared::pixel_noise(&first.first()?.luma);
+    if first
+        .iter()
+        .any(|f| super::prepared::pixel_noise(&f.luma) != noise)
+    {
+        return None;
+    }
+    band_about(&lines, radius, (w, h), params).map(|b| Band { noise, ..b })
+}
+
+/// Each looked-at frame's line through its two balls (its height at the middle of
+/// the width, its slope) and the balls' radius, or `None` when any frame does not
+/// show exactly two balls of one radius 4 radii apart or more, or the frames'
+/// lines disagree. `learned`: the background learned from all of `first` first.
+fn lines(first: &[Frame], params: &Params, learned: bool) -> Option<(Vec<(f64, f64)>, f64)> {
+    let mut t = Tracker::new(*params);
+    if learned {
+        first.iter().for_each(|f| t.learn(f));
+    }
+    first.iter().step_by(FIRST_EVERY).for_each(|f| t.push(f));
+    if t.counts.crowded > 0 || t.frames.len() < FIRST_FRAMES {
+        return None;
+    }
+    let half = 0.5 * first.first()?.width() as f64;
+    let mut lines = Vec::new();
+    let mut radius: f64 = 0.0;
+    for f in &t.frames {
+        let [Ok(a), Ok(b)] = f else { return None };
+        let (a, b) = (a.outline.circle, b.outline.circle);
+        let r = 0.5 * (a.r + b.r);
+        let dx = b.x - a.x;
+        if (a.r - b.r).abs() > 0.1 * r || dx.abs() < 4.0 * r {
+            return None;
+        }
+        let slope = (b.y - a.y) / dx;
+        lines.push((a.y + slope * (half - a.x), slope));
+        radius = radius.max(r);
+    }
+    let (first_line, _) = lines.split_first()?;
+    let agree = lines.iter().all(|(mid, slope)| {
+        (mid - first_line.0).abs() < 0.25 * radius && (slope - first_line.1).abs() < 0.02
+    });
+    (agree && radius.is_finite()).then_some((lines, radius))
+}
+
+/// The band about `lines` (see [`lines`]) for balls of `radius` in frames `w × h`.
+fn band_about(
+    lines: &[(f64, f64)],
+    radius: f64,
+    (w, h): (usize, usize),
+    params: &Params,
+) -> Option<Band> {
+    // The line's highest and lowest rows across the width, and the margin.
+    let half = 0.5 * w as f64;
+    let ends = lines
+        .iter()
+        .flat_map(|(mid, slope)| [mid - slope * half, mid + slope * half]);
+    let (lo, hi) = ends.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), y| {
+        (lo.min(y), hi.max(y))
+    });
+    let margin = Band::MARGIN_RADII * radius;
+    let step = alignment(w, params);
+    let top = ((lo - margin).floor().max(0.0) as usize) / step * step;
+    let bottom = (((hi + margin).ceil().max(0.0) as usize).div_ceil(step) * step).min(h);
+    let height = bottom.checked_sub(top)?;
+    if height == 0 || height as f64 > Band::MOST_SHARE * h as f64 {
+        return None;
+    }
+    // A seed off the band's rows: the whole frame, where the user pointed.
+    if params
+        .ball_at
+        .is_some_and(|(_, y)| !(y >= top as f64 && y < bottom as f64))
+    {
+        return None;
+    }
+    Some(Band {
+        y: top,
+        height,
+        frame_height: h,
+        noise: 1.0,
+    })
+}
+
+/// Rows a band's top and height are multiples of, for frames `width` wide: twice
+/// each coarse reduction (the background's and the luma look's), so the band's
+/// coarse pixels and colour rows are the whole frame's.
+fn alignment(width: usize, params: &Params) -> usize {
+    let gcd = |mut a: usize, mut b: usize| {
+        while b != 0 {
+            (a, b) = (b, a % b);
+        }
+        a
+    };
+    let lcm = |a: usize, b: usize| a / gcd(a, b).max(1) * b;
+    let (f1, f2) = (
+        factor(width, params.coarse_width),
+        super::detect::factor(width),
+    );
+    lcm(2, lcm(f1.max(1), f2.max(1)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_band_is_aligned_to_the_coarse_pixels_and_cut_alike() {
+        let p = Params::default();
+        assert_eq!(alignment(1920, &p), 6);
+        assert_eq!(alignment(1280, &p), 4);
+        assert_eq!(alignment(1000, &p), 6);
+        let mut luma = Gray::filled(8, 8, 0);
+        for (i, v) in luma.data.iter_mut().enumerate() {
+            *v = i as u8;
+        }
+        let mut frame = Frame::from_gray(luma);
+        frame.u = (0..16).collect();
+        let band = Band {
+            y: 2,
+            height: 4,
+            frame_height: 8,
+            noise: 1.0,
+        };
+        let cut = band.cut(&frame);
+        assert_eq!(cut.luma.data, (16..48).collect::<Vec<u8>>());
+        assert_eq!(cut.u, (4..12).collect::<Vec<u8>>());
+        assert_eq!((cut.chroma_width, cut.chroma_height), (4, 2));
+    }
+
+    /// A fit at height `y` (px), radius 10.
+    fn fit_at(y: f64) -> FrameFixes {
+        let outline = crate::vision::circle::Outline {
+            circle: crate::vision::circle::Circle {
+                x: 50.0,
+                y,
+                r: 10.0,
+            },
+            sigma: [0.1; 3],
+            rms: 0.1,
+            points: 100,
+            coverage: 0.6,
+            lowest: y + 5.0,
+            polarity: 1.0,
+        };
+        let fix = crate::vision::tracker::Fix {
+            outline,
+            sigma: 0.1,
+            mark: None,
+            spots: [Some((50.0, y - 3.0, 20.0)), None, None, None],
+        };
+        [Ok(fix), Err(crate::vision::tracker::LeftOut::Unseen)]
+    }
+
+    #[test]
+    fn fits_are_moved_to_the_whole_frame_and_must_keep_off_the_bands_edges() {
+        let band = Band {
+            y: 100,
+            height: 120,
+            frame_height: 400,
+            noise: 1.0,
+        };
+        let mut frames = vec![fit_at(60.0)];
+        shift(&mut frames, 100.0);
+        let [Ok(f), _] = &frames[0] else { panic!() };
+        assert_eq!((f.outline.circle.y, f.outline.lowest), (160.0, 165.0));
+        assert_eq!(f.spots[0], Some((50.0, 157.0, 20.0)));
+        // 3 radii from either edge that is not the frame's.
+        assert!(band.holds(&frames, 10.0));
+        assert!(!band.holds(&[fit_at(129.0)], 10.0));
+        assert!(!band.holds(&[fit_at(191.0)], 10.0));
+        assert!(band.holds(&[fit_at(130.0), fit_at(190.0)], 10.0));
+        // The frame's own edge bounds nothing.
+        let top = Band { y: 0, ..band };
+        assert!(top.holds(&[fit_at(5.0)], 10.0));
+        assert!(!band.holds(&frames, f64::NAN));
+    }
+}

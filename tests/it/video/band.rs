@@ -1,0 +1,117 @@
+//! The groove's band (issue 34's speed, `vision::band`): a clip whose first frames
+//! show both balls on their line is tracked in a band of rows around it, cut by
+//! ffmpeg, and its tracks are the whole frame's, in the whole frame's pixels; a clip
+//! whose first frames leave the line in doubt is tracked whole.
+
+use groovelab::input::video::tracked::{self, Framing, Options, Pictures, Tracked};
+use groovelab::vision::band::Band;
+
+use crate::film::looks::{Clip, Size};
+
+fn options(clip: &Clip) -> Options {
+    Options {
+        radius: clip.film.scene.radius,
+        fps: Some(clip.film.look.fps),
+        px_per_m: None,
+        radius_from: "--radius".into(),
+        cache: None,
+        roi: None,
+        ball_at: None,
+    }
+}
+
+/// `path` tracked as `track` does (no pictures), its rows chosen by `framing`.
+fn tracked(path: &std::path::Path, clip: &Clip, framing: Framing) -> Tracked {
+    let quiet = groovelab::study::Quiet;
+    tracked::track_framed(path, &options(clip), &quiet, Pictures::Skipped, framing)
+        .unwrap()
+        .unwrap()
+}
+
+/// Each ball's centre in each frame, whole-frame pixels (the app's view of the tracks).
+fn centres(t: &Tracked) -> Vec<Vec<Option<(f32, f32)>>> {
+    t.view.balls.iter().map(|b| b.centre.clone()).collect()
+}
+
+/// The looks table's look 46 (steel balls on a dark cluttered wall, 1280×720 at 50
+/// frames/s, its groove tilted by 3.2°, H.264 at crf 35): tracked in a band of rows,
+/// its centres are the whole frame's to within 0.02 px, and their RMS error from the
+/// truth is under 2 px (0.6 px in the looks table; left in the band's pixels they
+/// would be its top, over 100 px, off). The band changes only what the look's
+/// statistics over the frame see (the differences' scatter, the smooth surface of
+/// luma): a blob's threshold, never a fit's pixels; on this look, nothing.
+#[test]
+fn a_tilted_look_tracked_in_its_band_is_tracked_as_whole() {
+    let Some((clip, path)) = super::h264_look("band", 46, Size::Full) else {
+        return;
+    };
+    assert!(clip.film.look.tilt_deg.abs() > 2.0, "{}", clip.name);
+    let banded = tracked(&path, &clip, Framing::Band);
+    let whole = tracked(&path, &clip, Framing::Whole);
+    let band: Band = banded.band.expect("a band of rows");
+    assert!(
+        band.y > 0 && band.height < clip.film.look.height,
+        "{band:?}"
+    );
+    assert_eq!(whole.band, None);
+    assert_eq!(banded.tracks.t, whole.tracks.t);
+    let (b, w) = (centres(&banded), centres(&whole));
+    assert_eq!(b.len(), 2);
+    let (mut compared, mut squares) = (0, 0.0);
+    for (bb, wb) in b.iter().zip(&w) {
+        for (k, (p, q)) in bb.iter().zip(wb).enumerate() {
+            let (Some(p), Some(q)) = (p, q) else {
+                assert_eq!(p.is_some(), q.is_some(), "frame {k}");
+                continue;
+            };
+            let d = f64::from(p.0 - q.0).hypot(f64::from(p.1 - q.1));
+            assert!(d < 0.02, "frame {k}: {p:?} banded, {q:?} whole");
+            let truth = clip.film.ball_nearest(k, (f64::from(p.0), f64::from(p.1)));
+            let off = (truth.centre.0 - f64::from(p.0)).hypot(truth.centre.1 - f64::from(p.1));
+            squares += off * off;
+            compared += 1;
+        }
+    }
+    assert!(compared > 60, "{compared}");
+    let rms = (squares / f64::from(compared)).sqrt();
+    assert!(rms < 2.0, "centre RMS {rms} px");
+    let (cb, cw) = (&banded.tracks.calibration, &whole.tracks.calibration);
+    assert!(
+        (cb.origin_px.1 - cw.origin_px.1).abs() < 0.02,
+        "{cb:?} {cw:?}"
+    );
+    assert!(
+        (cb.groove_deg - cw.groove_deg).abs() < 0.01,
+        "{cb:?} {cw:?}"
+    );
+}
+
+/// Small look 22 (white balls on a plain wall of their brightness, 400×300 at 60
+/// frames/s) is tracked in a band; with one ball drawn, its first frames show no line (one
+/// ball gives no tilt), so the whole frame is tracked, as before the band.
+#[test]
+fn one_ball_in_the_first_frames_tracks_the_whole_frame() {
+    let Some((clip, path)) = super::h264_look("band", 22, Size::Small) else {
+        return;
+    };
+    assert!(tracked(&path, &clip, Framing::Band).band.is_some());
+    let mut clip = clip;
+    clip.film.look.both = false;
+    let dir = crate::common::scratch_dir("band", "one_ball");
+    let path = dir.join("clip.mp4");
+    crate::film::h264::write(&path, &clip.film, clip.frames).unwrap();
+    let first: Vec<_> = (0..first_frames()).map(|k| clip.film.frame(k)).collect();
+    assert_eq!(
+        groovelab::vision::band::find(&first, &groovelab::vision::Params::default()),
+        None
+    );
+    let t = tracked(&path, &clip, Framing::Band);
+    assert_eq!(t.band, None);
+    assert_eq!(t.tracks.balls.len(), 1);
+}
+
+/// The first frames the band is found from: every `FIRST_EVERY`-th of them looked at.
+fn first_frames() -> usize {
+    use groovelab::vision::band::{FIRST_EVERY, FIRST_FRAMES};
+    (FIRST_FRAMES - 1) * FIRST_EVERY + 1
+}
