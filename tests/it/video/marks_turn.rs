@@ -229,3 +229,41 @@ proptest! {
         prop_assert_eq!(kept_by(&frames, 0, &MarkChecks::default()), kept_by(&frames, 0, &without));
     }
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(64))]
+
+    /// A fit with no other fit of its ball within `confirm_frames` either way (the
+    /// looks table's seed 24 at frame 195: 12 and 9 frames from its neighbours, its
+    /// centre 8.75 px off, its "mark" 38 px from the drawn one) gives no mark: no
+    /// check of a single mark can judge it, nothing being near, and a wrong mark is
+    /// worse than none. The marks of the runs of fits around it are all kept.
+    #[test]
+    fn a_mark_of_a_fit_alone_in_time_is_left_out(
+        before in 3usize..14,
+        after in 3usize..14,
+        angle in 0.0..std::f64::consts::TAU,
+        speed in 2.0f64..6.0,
+    ) {
+        let r = 28.0;
+        let alone = 20 + before;
+        let resume = alone + after;
+        let frames: Vec<FrameFixes> = (0..resume + 20)
+            .map(|k| {
+                let x = 100.0 + speed * k as f64;
+                let seen = k <= 20 || k == alone || k >= resume;
+                let mark = if k == alone {
+                    drawn(x, 200.0, r, 0.55, angle)
+                } else {
+                    drawn(x, 200.0, r, 0.55, (x - 100.0) / (K * r))
+                };
+                let left = if seen { fix(x, 200.0, r, Some(mark)) } else { Err(LeftOut::Unseen) };
+                [left, Err(LeftOut::Unseen)]
+            })
+            .collect();
+        let kept: Vec<usize> = kept(&frames, 0).into_iter().map(|(k, _)| k).collect();
+        prop_assert!(!kept.contains(&alone), "the lone fit's mark kept: {kept:?}");
+        let runs: Vec<usize> = (0..=20).chain(resume..resume + 20).collect();
+        prop_assert_eq!(kept, runs);
+    }
+}
