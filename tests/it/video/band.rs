@@ -3,29 +3,23 @@
 //! ffmpeg, and its tracks are the whole frame's, in the whole frame's pixels; a clip
 //! whose first frames leave the line in doubt is tracked whole.
 
-use groovelab::input::video::tracked::{self, Framing, Options, Pictures, Tracked};
+use groovelab::input::video::tracked::{self, Framing, Pictures, Tracked};
 use groovelab::vision::band::Band;
 
 use crate::film::looks::{Clip, Size};
 
-fn options(clip: &Clip) -> Options {
-    Options {
-        radius: clip.film.scene.radius,
-        fps: Some(clip.film.look.fps),
-        px_per_m: None,
-        radius_from: "--radius".into(),
-        cache: None,
-        roi: None,
-        ball_at: None,
-    }
-}
-
 /// `path` tracked as `track` does (no pictures), its rows chosen by `framing`.
 fn tracked(path: &std::path::Path, clip: &Clip, framing: Framing) -> Tracked {
     let quiet = groovelab::study::Quiet;
-    tracked::track_framed(path, &options(clip), &quiet, Pictures::Skipped, framing)
-        .unwrap()
-        .unwrap()
+    tracked::track_framed(
+        path,
+        &super::look_options(clip),
+        &quiet,
+        Pictures::Skipped,
+        framing,
+    )
+    .unwrap()
+    .unwrap()
 }
 
 /// Each ball's centre in each frame, whole-frame pixels (the app's view of the tracks).

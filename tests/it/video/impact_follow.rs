@@ -9,7 +9,7 @@
 use super::h264_look;
 use crate::common::paper_scene;
 use crate::film::looks::Size;
-use groovelab::input::video::tracked::{self, Options};
+use groovelab::input::video::tracked;
 
 /// The full-size look `seed` of the looks table in its H.264 copy, tracked as the
 /// command line tracks it: per centre given, its frame and its distance from the
@@ -17,15 +17,7 @@ use groovelab::input::video::tracked::{self, Options};
 pub(crate) fn centres_off(seed: u64) -> Option<Vec<(usize, f64)>> {
     let scene = paper_scene();
     let (clip, path) = h264_look("impact_follow", seed, Size::Full)?;
-    let options = Options {
-        radius: scene.radius,
-        fps: Some(clip.film.look.fps),
-        px_per_m: None,
-        radius_from: "--radius".into(),
-        cache: None,
-        roi: None,
-        ball_at: None,
-    };
+    let options = super::look_options(&clip);
     let done = tracked::track(&path, &options, &groovelab::study::Quiet)
         .unwrap()
         .unwrap();

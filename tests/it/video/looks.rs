@@ -324,13 +324,9 @@ fn measure(dir: &Path, clip: &Clip, path: &Path, handle: Handle) -> Row {
     let film = &clip.film;
     let first = film.truth(0)[0].centre;
     let options = Options {
-        radius: film.scene.radius,
-        fps: Some(film.look.fps),
         px_per_m: (handle == Handle::Scale).then(|| film.px_per_m()),
-        radius_from: "--radius".into(),
-        cache: None,
-        roi: None,
         ball_at: (handle == Handle::BallAt).then_some(first),
+        ..super::look_options(clip)
     };
     let mut row = Row {
         name: clip.name.clone(),

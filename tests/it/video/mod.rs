@@ -43,6 +43,22 @@ pub(crate) fn h264_look(
     Some((clip, path))
 }
 
+/// The options a user tracks `clip` with: its R (`--radius`) and frame rate, nothing
+/// else given.
+pub(crate) fn look_options(
+    clip: &crate::film::looks::Clip,
+) -> groovelab::input::video::tracked::Options {
+    groovelab::input::video::tracked::Options {
+        radius: clip.film.scene.radius,
+        fps: Some(clip.film.look.fps),
+        px_per_m: None,
+        radius_from: "--radius".into(),
+        cache: None,
+        roi: None,
+        ball_at: None,
+    }
+}
+
 /// As [`h264_look`], the copy decoded: the clip and its frames.
 pub(crate) fn decoded_look(
     area: &str,
