@@ -110,6 +110,21 @@ fn app_with_video(view: VideoView) -> (App, mpsc::Receiver<Options>) {
     (app, rx)
 }
 
+/// The app as a 120×40 terminal shows it: the area, its theme, the screen laid out
+/// (what a click lands on) and the Scene panel's rectangle.
+fn laid_out(app: &App) -> (Rect, groovelab::tui::theme::Theme, Screen, Rect) {
+    let area = Rect::new(0, 0, 120, 40);
+    let theme = groovelab::tui::theme(false);
+    let mut screen = Screen::default();
+    screen.prepare(app, area, &theme);
+    let scene = screen
+        .frame()
+        .and_then(|f| f.panels)
+        .expect("laid out")
+        .scene;
+    (area, theme, screen, scene)
+}
+
 fn click(column: u16, row: u16) -> MouseEvent {
     MouseEvent {
         kind: MouseEventKind::Down(MouseButton::Left),
@@ -125,15 +140,7 @@ fn a_click_on_a_ball_tracks_the_video_again_seeded_there() {
     let view = video(w, h, 0.05, (320.0, 200.0), 25.0);
     let ball = (w as f64 / 3.0, 200.0);
     let (mut app, rx) = app_with_video(view.clone());
-    let area = Rect::new(0, 0, 120, 40);
-    let theme = groovelab::tui::theme(false);
-    let mut screen = Screen::default();
-    screen.prepare(&app, area, &theme);
-    let scene = screen
-        .frame()
-        .and_then(|f| f.panels)
-        .expect("laid out")
-        .scene;
+    let (area, theme, mut screen, scene) = laid_out(&app);
     let (c, r) = cell_at(&view, scene, ball).expect("the ball is on the picture");
 
     // The drawn scene shows no video: a click there seeds nothing.
@@ -216,11 +223,7 @@ fn a_video_that_cannot_be_tracked_again_says_so() {
         .expect("the default scene");
     app.set_video("clip.mp4".into(), Some(Arc::new(view.clone())));
     app.apply(Action::ToggleVideo);
-    let area = Rect::new(0, 0, 120, 40);
-    let theme = groovelab::tui::theme(false);
-    let mut screen = Screen::default();
-    screen.prepare(&app, area, &theme);
-    let scene = screen.frame().and_then(|f| f.panels).unwrap().scene;
+    let (area, theme, _, scene) = laid_out(&app);
     let (c, r) = cell_at(&view, scene, (160.0, 90.0)).unwrap();
     groovelab::tui::on_mouse(&mut app, area, &theme, click(c, r));
     assert!(
@@ -279,11 +282,7 @@ fn a_refused_video_shows_its_first_frame_and_a_click_there_seeds_it() {
         );
     }
 
-    let area = Rect::new(0, 0, 120, 40);
-    let theme = groovelab::tui::theme(false);
-    let mut screen = Screen::default();
-    screen.prepare(&app, area, &theme);
-    let scene = screen.frame().and_then(|f| f.panels).unwrap().scene;
+    let (area, theme, _, scene) = laid_out(&app);
     let (c, r) = cell_at(&first, scene, (20.0, 30.0)).expect("on the picture");
     assert!(groovelab::tui::on_mouse(
         &mut app,
@@ -340,11 +339,7 @@ fn the_first_frame_counts_the_frames_of_the_tracking_again() {
         }),
     });
     app.apply(Action::ToggleVideo);
-    let area = Rect::new(0, 0, 120, 40);
-    let theme = groovelab::tui::theme(false);
-    let mut screen = Screen::default();
-    screen.prepare(&app, area, &theme);
-    let scene = screen.frame().and_then(|f| f.panels).unwrap().scene;
+    let (area, theme, mut screen, scene) = laid_out(&app);
     let ball = (640.0 / 3.0, 200.0);
     let (c, r) = cell_at(&view, scene, ball).unwrap();
     groovelab::tui::on_mouse(&mut app, area, &theme, click(c, r));
