@@ -71,19 +71,17 @@ fn spawn_cut(path: &Path, every: usize, band: Option<&Band>) -> Result<Started, 
     cmd.args(["-v", "error", "-nostdin", "-i"])
         .arg(url(path))
         .args(["-map", "0:v:0"]);
+    // One filter chain: ffmpeg keeps only the last `-vf` given.
+    let mut filters = Vec::new();
     if let Some(b) = band {
-        cmd.args([
-            "-vf",
-            &format!("crop=w=iw:h={}:x=0:y={}:exact=1", b.height, b.y),
-        ]);
+        filters.push(format!("crop=w=iw:h={}:x=0:y={}:exact=1", b.height, b.y));
     }
     if every > 1 {
-        cmd.args([
-            "-vf",
-            &format!("select=not(mod(n\\,{every}))"),
-            "-fps_mode",
-            "passthrough",
-        ]);
+        filters.push(format!("select=not(mod(n\\,{every}))"));
+        cmd.args(["-fps_mode", "passthrough"]);
+    }
+    if !filters.is_empty() {
+        cmd.args(["-vf", &filters.join(",")]);
     }
     // The raw frames copied out in ffmpeg's own thread (`-threads 1` for the
     // output's rawvideo "encoder", a copy): spread over its frame threads the copy
