@@ -52,6 +52,16 @@ impl Thumbs {
         }
     }
 
+    /// These pictures' first alone (the first frame's), the sizes kept: no copy of
+    /// the others.
+    pub fn first(&self) -> Thumbs {
+        Thumbs {
+            every: 1,
+            pictures: self.pictures.first().cloned().into_iter().collect(),
+            ..*self
+        }
+    }
+
     /// Takes frame `index` (counted from 0) if it is one kept.
     pub fn push(&mut self, index: usize, img: &Gray) {
         if index.is_multiple_of(self.every) {
@@ -262,7 +272,7 @@ impl VideoView {
                 })
             })
             .collect();
-        VideoView::first_frame(self.thumbs.clone(), &found, note)
+        VideoView::first_frame(self.thumbs.first(), &found, note)
     }
 
     /// The video's pixel of the tracks' point (x along the groove, y up), m.
