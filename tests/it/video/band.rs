@@ -1,7 +1,8 @@
 //! The groove's band (issue 34's speed, `vision::band`): a clip whose first frames
 //! show both balls on their line is tracked in a band of rows around it, cut by
 //! ffmpeg, and its tracks are the whole frame's, in the whole frame's pixels; a clip
-//! whose first frames leave the line in doubt is tracked whole.
+//! whose first frames leave the line in doubt is tracked whole, and one whose balls
+//! leave the band later is tracked again whole.
 
 use groovelab::input::video::tracked::{self, Framing, Pictures, Tracked};
 use groovelab::vision::band::Band;
@@ -108,4 +109,79 @@ fn one_ball_in_the_first_frames_tracks_the_whole_frame() {
 fn first_frames() -> usize {
     use groovelab::vision::band::{FIRST_EVERY, FIRST_FRAMES};
     (FIRST_FRAMES - 1) * FIRST_EVERY + 1
+}
+
+/// A hand-held phone bumped after the first frames: small look 22 (tracked in a band)
+/// with every frame from the 14th on moved up by 2.5 radii (the balls stay in the band
+/// but come within 3 radii of its edge, `Band::holds`) or by 6 (they leave it, and the
+/// banded tracking is refused). Either way the clip is tracked again whole, and what
+/// `track` gives (tracks or a refusal) is what the whole frame gives: a band is a
+/// speed-up, never another answer.
+#[test]
+fn balls_that_leave_the_band_are_tracked_as_the_whole_frame() {
+    let Some((clip, _)) = super::h264_look("band", 22, Size::Small) else {
+        return;
+    };
+    let first: Vec<_> = (0..first_frames()).map(|k| clip.film.frame(k)).collect();
+    let params = groovelab::vision::Params::default();
+    assert!(groovelab::vision::band::find(&first, &params).is_some());
+    let r = clip.film.look.px_per_m * clip.film.scene.radius;
+    for radii in [2.5, 6.0] {
+        let path = bumped(&clip, (radii * r).round() as u32);
+        let quiet = groovelab::study::Quiet;
+        let track = |framing| {
+            tracked::track_framed(
+                &path,
+                &super::look_options(&clip),
+                &quiet,
+                Pictures::Skipped,
+                framing,
+            )
+            .map(|t| t.expect("not stopped"))
+        };
+        match (track(Framing::Band), track(Framing::Whole)) {
+            (Ok(banded), Ok(whole)) => {
+                assert_eq!(banded.band, None, "{radii} radii: tracked whole");
+                assert_eq!(banded.tracks.t, whole.tracks.t);
+                assert_eq!(centres(&banded), centres(&whole), "{radii} radii");
+            }
+            (Err(banded), Err(whole)) => {
+                assert_eq!(banded.error.to_string(), whole.error.to_string());
+            }
+            (b, w) => panic!(
+                "{radii} radii: banded {:?}, whole {:?}",
+                b.map(|t| t.band).map_err(|e| e.error.to_string()),
+                w.map(|t| t.band).map_err(|e| e.error.to_string())
+            ),
+        }
+    }
+}
+
+/// `clip` written as H.264 with every frame after the first frames moved up by `bump`
+/// px (frame row y shows the scene's row y + bump; the rows past the bottom repeat
+/// the last): the file.
+fn bumped(clip: &Clip, bump: u32) -> std::path::PathBuf {
+    let (w, h) = (clip.film.look.width, clip.film.look.height);
+    let frame = |k: usize| -> Vec<u8> {
+        let img = clip.film.image(k);
+        if k < first_frames() {
+            return img.into_raw();
+        }
+        let mut out = image::RgbImage::new(w as u32, h as u32);
+        for (x, y, p) in out.enumerate_pixels_mut() {
+            *p = *img.get_pixel(x, (y + bump).min(h as u32 - 1));
+        }
+        out.into_raw()
+    };
+    let dir = crate::common::scratch_dir("band", &format!("bumped_{bump}"));
+    let path = dir.join("clip.mp4");
+    let enc = groovelab::input::video::write::Encoding {
+        width: w,
+        height: h,
+        fps: clip.film.look.fps,
+        crf: clip.film.look.crf.unwrap_or(18),
+        metadata: Vec::new(),
+    };
+    groovelab::input::video::write::video(&path, &enc, (0..clip.frames).map(frame)).unwrap();
+    path
 }
