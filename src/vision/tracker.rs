@@ -1128,11 +1128,17 @@ impl Tracker {
         let gain = self.params.colour_weight as f32;
         let (w, h) = (x1 - x0 + 1, y1 - y0 + 1);
         let mut data = Vec::with_capacity(w * h);
+        // The background's samples about each column and row, found once.
+        let fu = bg.factor.max(1);
+        let cols: Vec<_> = (x0..=x1)
+            .map(|x| colour_axis(fu, bg.width, x as f64, own))
+            .collect();
         for y in y0..=y1 {
-            for x in x0..=x1 {
+            let row = colour_axis(fu, bg.height, y as f64, own);
+            for (x, &col) in (x0..=x1).zip(&cols) {
                 let (fx, fy) = (x as f64, y as f64);
-                let d = (chroma(&frame.u, fx, fy) - back(&bg.u, fx, fy)) * su
-                    + (chroma(&frame.v, fx, fy) - back(&bg.v, fx, fy)) * sv;
+                let d = (chroma(&frame.u, fx, fy) - background_between(bg, &bg.u, (col, row))) * su
+                    + (chroma(&frame.v, fx, fy) - background_between(bg, &bg.v, (col, row))) * sv;
                 data.push((64.0 + gain * d).round().clamp(0.0, 255.0) as u8);
             }
         }
@@ -1320,30 +1326,48 @@ fn stands_out(frame: &Frame, c: &Circle, colour_weight: f64) -> f64 {
 /// two are one grid (coarse pixels of 2 px), the wall's colour edges cancel.
 fn background_colour(bg: &Small, plane: &[u8], (x, y): (f64, f64), between: bool) -> f32 {
     let f = bg.factor.max(1);
+    let across = (
+        colour_axis(f, bg.width, x, between),
+        colour_axis(f, bg.height, y, between),
+    );
+    background_between(bg, plane, across)
+}
+
+/// Where the full-size coordinate `t` falls among the background's colour samples
+/// along an axis of `n` coarse pixels of `f` px ([`background_colour`]): the two
+/// samples about it and the second's weight (`between`), or the sample of the
+/// coarse pixel it lies in, twice, weighing nothing.
+fn colour_axis(f: usize, n: usize, t: f64, between: bool) -> (usize, usize, f32) {
+    if !between {
+        let i = (t / f as f64) as usize;
+        return (i, i, 0.0);
+    }
+    // Where coarse pixel `i`'s colour sample lies, px.
+    let place = |i: usize| (2 * ((i * f + f / 2) / 2)) as f64 + 0.5;
+    let i0 = (((t - 0.5) / f as f64).floor().max(0.0) as usize).min(n.saturating_sub(1));
+    let i0 = if i0 > 0 && place(i0) > t { i0 - 1 } else { i0 };
+    let i1 = (i0 + 1).min(n.saturating_sub(1));
+    let span = place(i1) - place(i0);
+    let w = if span > 0.0 {
+        ((t - place(i0)) / span).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (i0, i1, w as f32)
+}
+
+/// The background's colour plane `plane` weighed between the samples `(i0, i1,
+/// fx)` across and `(j0, j1, fy)` down ([`colour_axis`]).
+fn background_between(
+    bg: &Small,
+    plane: &[u8],
+    ((i0, i1, fx), (j0, j1, fy)): ((usize, usize, f32), (usize, usize, f32)),
+) -> f32 {
     let at = |i: usize, j: usize| {
         plane
             .get(j.min(bg.height.saturating_sub(1)) * bg.width + i.min(bg.width.saturating_sub(1)))
             .map_or(128.0, |&v| f32::from(v))
     };
-    if !between {
-        return at((x / f as f64) as usize, (y / f as f64) as usize);
-    }
-    // Where coarse pixel `i`'s colour sample lies, px.
-    let place = |i: usize| (2 * ((i * f + f / 2) / 2)) as f64 + 0.5;
-    let axis = |t: f64, n: usize| -> (usize, usize, f32) {
-        let i0 = (((t - 0.5) / f as f64).floor().max(0.0) as usize).min(n.saturating_sub(1));
-        let i0 = if i0 > 0 && place(i0) > t { i0 - 1 } else { i0 };
-        let i1 = (i0 + 1).min(n.saturating_sub(1));
-        let span = place(i1) - place(i0);
-        let w = if span > 0.0 {
-            ((t - place(i0)) / span).clamp(0.0, 1.0)
-        } else {
-            0.0
-        };
-        (i0, i1, w as f32)
-    };
-    let (i0, i1, fx) = axis(x, bg.width);
-    let (j0, j1, fy) = axis(y, bg.height);
     (at(i0, j0) * (1.0 - fx) + at(i1, j0) * fx) * (1.0 - fy)
         + (at(i0, j1) * (1.0 - fx) + at(i1, j1) * fx) * fy
 }
