@@ -183,6 +183,14 @@ pub struct Params {
     /// … and its median colour within this many levels of none (U, V of 128).
     /// Default 6 (`shadow_hue_levels`).
     pub grey_levels: f64,
+    /// A coloured ball (its median colour more than `grey_levels` from none) whose
+    /// outline in colour scatters by at most this many px RMS about its circle, and
+    /// whose radius lies farther from its outline in brightness than `outer_agree`,
+    /// is that outline in colour. Default 0.7 (a clear outline in brightness
+    /// scatters by up to `max_rms`, 1 px; in colour, on half-size planes, a clear
+    /// edge by 0.2–0.6 px): the looks table's seed 26, balls of 12.35 px on a dark
+    /// rail whose outlines in brightness took in the rail (14.9–16.9 px).
+    pub colour_clear_rms: f64,
     /// Before the balls' radius is known, one frame's good fits whose radii lie
     /// farther apart than this share of the largest set no radius (none of them is
     /// kept). Default 0.15 (`radius_tolerance`): both balls have one radius; two first
@@ -458,6 +466,7 @@ impl Default for Params {
             part_width: 0.75,
             dark_ball: 64.0,
             grey_levels: 6.0,
+            colour_clear_rms: 0.7,
             locks_agree: 0.15,
             confirm_spread: 0.05,
             hough_arc: 0.2,

@@ -852,7 +852,8 @@ impl Tracker {
         };
         let o = if colour {
             let sharp = sharp(&o);
-            self.dark_in_colour(frame, (guess, band), o, &p, sharp)
+            let o = self.dark_in_colour(frame, (guess, band), o, &p, sharp);
+            self.coloured_in_colour(frame, (guess, band), o, &p)
         } else {
             o
         };
@@ -922,6 +923,37 @@ impl Tracker {
         }
         match self.colour_outline(frame, guess, band) {
             Some(q) if self.shaped(&q, p, false) => q,
+            _ => o,
+        }
+    }
+
+    /// A coloured ball: where its outline in colour about `guess` (in a band `band`
+    /// px wide) is clear (`colour_clear_rms`) and its radius lies farther from the
+    /// outline `o` in brightness than two circles of one ball differ
+    /// (`outer_agree`), the outline in colour. A coloured ball's outline in colour
+    /// is its own colour against the wall's; its outline in brightness, where the
+    /// two differ so, a circle through its top and the rail's edge or its shadow,
+    /// or its lit part (the looks table's seed 26: balls of 12.35 px on a dark
+    /// rail, first locks of 14.9 px). Else `o`.
+    fn coloured_in_colour(
+        &self,
+        frame: &Frame,
+        (guess, band): (Circle, f64),
+        o: OutlineFound,
+        p: &Params,
+    ) -> OutlineFound {
+        if o.colour || !coloured(frame, &guess, p.grey_levels) {
+            return o;
+        }
+        match self.colour_outline_of(frame, guess, band, true) {
+            Some(q)
+                if self.shaped(&q, p, false)
+                    && q.outline.rms <= p.colour_clear_rms
+                    && (q.outline.circle.r - o.outline.circle.r).abs()
+                        > p.outer_agree * q.outline.circle.r =>
+            {
+                q
+            }
             _ => o,
         }
     }
@@ -1037,6 +1069,21 @@ impl Tracker {
     /// image of its own about the ball (the colour planes bilinearly brought to full
     /// size); `None` without a background or colour to go by.
     fn colour_outline(&self, frame: &Frame, guess: Circle, band: f64) -> Option<OutlineFound> {
+        self.colour_outline_of(frame, guess, band, false)
+    }
+
+    /// As [`Tracker::colour_outline`]; `own`: a coloured ball's own colour against
+    /// the wall's, its colour stepping from the background's at its middle by
+    /// `colour_edge_step` or more, the background's colour read between its
+    /// samples as the frame's is (`colour_outline` reads the sample a pixel lies
+    /// in, as the black ball's outline in colour was measured with).
+    fn colour_outline_of(
+        &self,
+        frame: &Frame,
+        guess: Circle,
+        band: f64,
+        own: bool,
+    ) -> Option<OutlineFound> {
         let bg = &self.background.as_ref()?.image;
         let reach = guess.r + band + 4.0;
         let x0 = (guess.x - reach).floor().max(0.0) as usize;
@@ -1063,33 +1110,35 @@ impl Tracker {
             (at(i0, j0) * (1.0 - fx) + at(i1, j0) * fx) * (1.0 - fy)
                 + (at(i0, j1) * (1.0 - fx) + at(i1, j1) * fx) * fy
         };
-        let f = bg.factor as f64;
-        let back = |plane: &[u8], x: f64, y: f64| -> f32 {
-            let (i, j) = ((x / f) as usize, (y / f) as usize);
-            plane
-                .get(
-                    j.min(bg.height.saturating_sub(1)) * bg.width
-                        + i.min(bg.width.saturating_sub(1)),
-                )
-                .map_or(128.0, |&v| f32::from(v))
-        };
+        let back = |plane: &[u8], x: f64, y: f64| background_colour(bg, plane, (x, y), own);
         // The ball's colour difference at its middle (upper half: above the rail).
         let (mx, my) = (guess.x, guess.y - 0.3 * guess.r);
         let du = chroma(&frame.u, mx, my) - back(&bg.u, mx, my);
         let dv = chroma(&frame.v, mx, my) - back(&bg.v, mx, my);
         let norm = du.hypot(dv);
-        if norm < self.params.differ_levels as f32 / 2.0 {
+        let least = if own {
+            self.params.colour_edge_step
+        } else {
+            self.params.differ_levels / 2.0
+        };
+        if f64::from(norm) < least {
             return None;
         }
         let (su, sv) = (du / norm, dv / norm);
         let gain = self.params.colour_weight as f32;
         let (w, h) = (x1 - x0 + 1, y1 - y0 + 1);
         let mut data = Vec::with_capacity(w * h);
+        // The background's samples about each column and row, found once.
+        let fu = bg.factor.max(1);
+        let cols: Vec<_> = (x0..=x1)
+            .map(|x| colour_axis(fu, bg.width, x as f64, own))
+            .collect();
         for y in y0..=y1 {
-            for x in x0..=x1 {
+            let row = colour_axis(fu, bg.height, y as f64, own);
+            for (x, &col) in (x0..=x1).zip(&cols) {
                 let (fx, fy) = (x as f64, y as f64);
-                let d = (chroma(&frame.u, fx, fy) - back(&bg.u, fx, fy)) * su
-                    + (chroma(&frame.v, fx, fy) - back(&bg.v, fx, fy)) * sv;
+                let d = (chroma(&frame.u, fx, fy) - background_between(bg, &bg.u, (col, row))) * su
+                    + (chroma(&frame.v, fx, fy) - background_between(bg, &bg.v, (col, row))) * sv;
                 data.push((64.0 + gain * d).round().clamp(0.0, 255.0) as u8);
             }
         }
@@ -1270,11 +1319,78 @@ fn stands_out(frame: &Frame, c: &Circle, colour_weight: f64) -> f64 {
     dl.max(colour_weight * du.max(dv))
 }
 
+/// The background `bg`'s colour plane `plane` at the full-size pixel `(x, y)`: the
+/// sample of the coarse pixel it lies in, or (`between`) bilinearly between the
+/// samples (each coarse pixel's colour is the chroma sample at its block's middle,
+/// `Small::of`), as the frame's colour is read between its own samples: where the
+/// two are one grid (coarse pixels of 2 px), the wall's colour edges cancel.
+fn background_colour(bg: &Small, plane: &[u8], (x, y): (f64, f64), between: bool) -> f32 {
+    let f = bg.factor.max(1);
+    let across = (
+        colour_axis(f, bg.width, x, between),
+        colour_axis(f, bg.height, y, between),
+    );
+    background_between(bg, plane, across)
+}
+
+/// Where the full-size coordinate `t` falls among the background's colour samples
+/// along an axis of `n` coarse pixels of `f` px ([`background_colour`]): the two
+/// samples about it and the second's weight (`between`), or the sample of the
+/// coarse pixel it lies in, twice, weighing nothing.
+fn colour_axis(f: usize, n: usize, t: f64, between: bool) -> (usize, usize, f32) {
+    if !between {
+        let i = (t / f as f64) as usize;
+        return (i, i, 0.0);
+    }
+    // Where coarse pixel `i`'s colour sample lies, px.
+    let place = |i: usize| (2 * ((i * f + f / 2) / 2)) as f64 + 0.5;
+    let i0 = (((t - 0.5) / f as f64).floor().max(0.0) as usize).min(n.saturating_sub(1));
+    let i0 = if i0 > 0 && place(i0) > t { i0 - 1 } else { i0 };
+    let i1 = (i0 + 1).min(n.saturating_sub(1));
+    let span = place(i1) - place(i0);
+    let w = if span > 0.0 {
+        ((t - place(i0)) / span).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    (i0, i1, w as f32)
+}
+
+/// The background's colour plane `plane` weighed between the samples `(i0, i1,
+/// fx)` across and `(j0, j1, fy)` down ([`colour_axis`]).
+fn background_between(
+    bg: &Small,
+    plane: &[u8],
+    ((i0, i1, fx), (j0, j1, fy)): ((usize, usize, f32), (usize, usize, f32)),
+) -> f32 {
+    let at = |i: usize, j: usize| {
+        plane
+            .get(j.min(bg.height.saturating_sub(1)) * bg.width + i.min(bg.width.saturating_sub(1)))
+            .map_or(128.0, |&v| f32::from(v))
+    };
+    (at(i0, j0) * (1.0 - fx) + at(i1, j0) * fx) * (1.0 - fy)
+        + (at(i0, j1) * (1.0 - fx) + at(i1, j1) * fx) * fy
+}
+
 /// True when the upper half of the disc `c` (above its centre: the rail hides the
 /// lower) is dark and grey in `frame`: its median brightness under `dark` levels and
 /// its median colour within `grey` levels of none (a black ball; its highlight and
 /// mark are a small part of it).
 fn dark_grey(frame: &Frame, c: &Circle, dark: f64, grey: f64) -> bool {
+    upper_disc(frame, c)
+        .is_some_and(|[y, u, v]| f64::from(y) < dark && f64::from(u.abs().max(v.abs())) <= grey)
+}
+
+/// True when the ball about `c` has a colour of its own: the median colour of its
+/// disc's upper half (above the rail) lies more than `grey` levels from none.
+fn coloured(frame: &Frame, c: &Circle, grey: f64) -> bool {
+    upper_disc(frame, c).is_some_and(|[_, u, v]| f64::from(u.abs().max(v.abs())) > grey)
+}
+
+/// The median brightness and colour (U, V less 128) of the upper half of the disc
+/// `c` (above the rail; within 0.8 of its radius), `None` where none of it is in
+/// the picture.
+fn upper_disc(frame: &Frame, c: &Circle) -> Option<[f32; 3]> {
     let (mut y, mut u, mut v) = (Vec::new(), Vec::new(), Vec::new());
     let step = (c.r / 8.0).max(1.0);
     let (w, h) = (frame.width() as f64, frame.height() as f64);
@@ -1294,16 +1410,11 @@ fn dark_grey(frame: &Frame, c: &Circle, dark: f64, grey: f64) -> bool {
         }
         dy += step;
     }
-    match (
-        select::median(&mut y),
-        select::median(&mut u),
-        select::median(&mut v),
-    ) {
-        (Some(y), Some(u), Some(v)) => {
-            f64::from(y) < dark && f64::from(u.abs().max(v.abs())) <= grey
-        }
-        _ => false,
-    }
+    Some([
+        select::median(&mut y)?,
+        select::median(&mut u)?,
+        select::median(&mut v)?,
+    ])
 }
 
 /// True when a frame's good fits' radii (`radii`, px) lie farther apart than

@@ -6,6 +6,7 @@ pub(crate) mod ball_parts;
 mod band;
 mod black_ball;
 mod colour_edge;
+mod coloured_ball;
 mod first_locks;
 mod follow_gap;
 pub(crate) mod found_frames;
