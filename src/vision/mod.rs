@@ -33,7 +33,7 @@
 
 /// The tracker's own version: raised whenever a change makes it find other numbers
 /// in the same video (cached tracks are keyed by it, not by the program's version).
-pub const VERSION: u32 = 19;
+pub const VERSION: u32 = 20;
 
 pub mod background;
 pub mod band;
@@ -47,6 +47,7 @@ pub mod mark_check;
 pub mod overlay;
 pub mod params;
 pub mod prepared;
+pub mod repeats;
 pub mod select;
 pub mod thumbs;
 pub mod tracker;
