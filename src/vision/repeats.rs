@@ -116,9 +116,9 @@ fn repeated(path: &[(usize, f64)], impact: Option<usize>, rule: RepeatRule) -> V
             b += 1;
         }
         let keep = match kept(path, a, b, impact, rule) {
-            Run::Keep(j) => Some(j),
-            Run::Drop => None,
-            Run::Untold => {
+            RepeatRun::Keep(j) => Some(j),
+            RepeatRun::Drop => None,
+            RepeatRun::Untold => {
                 i = b + 1;
                 continue;
             }
@@ -135,7 +135,7 @@ fn repeated(path: &[(usize, f64)], impact: Option<usize>, rule: RepeatRule) -> V
 
 /// What a run of fits that repeat one place is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Run {
+enum RepeatRun {
     /// Fit `.0` (an index into the path) shows its own frame's picture; the others
     /// repeat it.
     Keep(usize),
@@ -153,12 +153,18 @@ enum Run {
 /// repeated or poor fit among them does not move it). Where the two sides name
 /// different frames (a ball turning or slowing there) none is kept; where neither
 /// side has two fits, nothing is told.
-fn kept(path: &[(usize, f64)], a: usize, b: usize, impact: Option<usize>, rule: RepeatRule) -> Run {
+fn kept(
+    path: &[(usize, f64)],
+    a: usize,
+    b: usize,
+    impact: Option<usize>,
+    rule: RepeatRule,
+) -> RepeatRun {
     let Some(run) = path.get(a..=b) else {
-        return Run::Untold;
+        return RepeatRun::Untold;
     };
     let (Some(&(ka, _)), Some(&(kb, _))) = (run.first(), run.last()) else {
-        return Run::Untold;
+        return RepeatRun::Untold;
     };
     let place = run.iter().map(|p| p.1).sum::<f64>() / run.len() as f64;
     let on_side = |j: usize| {
@@ -186,9 +192,9 @@ fn kept(path: &[(usize, f64)], a: usize, b: usize, impact: Option<usize>, rule: 
         .filter_map(|f| nearest(when(f, place)?))
         .collect();
     match named.first() {
-        None => Run::Untold,
-        Some(&j) if named.iter().all(|&n| n == j) => Run::Keep(j),
-        Some(_) => Run::Drop,
+        None => RepeatRun::Untold,
+        Some(&j) if named.iter().all(|&n| n == j) => RepeatRun::Keep(j),
+        Some(_) => RepeatRun::Drop,
     }
 }
 
