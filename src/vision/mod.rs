@@ -47,6 +47,7 @@ pub mod mark_check;
 pub mod overlay;
 pub mod params;
 pub mod prepared;
+pub mod repeats;
 pub mod select;
 pub mod thumbs;
 pub mod tracker;

@@ -248,6 +248,16 @@ pub struct Params {
     /// lie off it (RMS) judges nothing: the motion there is no parabola (an impact
     /// not told by the closest approach, a ball starting to roll). Default 0.5.
     pub curve_inner: f64,
+    /// A ball's fit that lies from the frame before's by under this share of the
+    /// ball's motion a frame repeats that frame's picture (`repeats`: a phone's
+    /// duplicated frame, a compressed clip's B frame that codes nothing). Default
+    /// 0.25: a fit's own scatter is a pixel or two where the ball moves several.
+    pub repeat_still: f64,
+    /// … judged only where the ball moves at least this many px a frame either
+    /// side. Default 2: a ball at rest repeats its place by right.
+    pub repeat_speed: f64,
+    /// … its motion measured over this many frames either side. Default 8.
+    pub repeat_window: usize,
     /// Least share of a luma blob's upper half that differs from the background for
     /// the blob to be taken as a ball. Default 0.15: a ball that moved gives about a
     /// half or more, a still disc of the bench about none. The follower's fit where
@@ -479,6 +489,9 @@ impl Default for Params {
             off_the_curve_share: 0.1,
             curve_neighbours: 3,
             curve_inner: 0.5,
+            repeat_still: 0.25,
+            repeat_speed: 2.0,
+            repeat_window: 8,
             moved_share: 0.15,
             mark_votes: 9,
             max_radius_spread: 0.05,

@@ -39,6 +39,9 @@ pub enum LeftOut {
     Merged,
     /// Its outline is poor: blurred, too little of it visible, or off the circle.
     Poor,
+    /// The frame repeats another frame's picture of the moving ball
+    /// ([`super::repeats`]): its place is that frame's, not this one's.
+    Repeated,
 }
 
 /// What one frame gave for the two slots (the balls, in the order first seen).

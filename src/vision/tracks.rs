@@ -151,10 +151,12 @@ pub struct BallTrack {
     pub mark_x: Vec<f64>,
     pub mark_y: Vec<f64>,
     pub mark_sigma: Vec<f64>,
-    /// Frames left out: not seen, touching the other ball, poor outline.
+    /// Frames left out: not seen, touching the other ball, poor outline, repeating
+    /// another frame's picture of the moving ball.
     pub unseen: usize,
     pub merged: usize,
     pub poor: usize,
+    pub repeated: usize,
     /// Frames with the ball but not its mark (hidden by the rail, too near it, or left out by `mark_check`: not turning with the ball).
     pub mark_missing: usize,
 }
@@ -300,8 +302,14 @@ fn balls_seen(tracker: &Tracker, frames: &[FrameFixes]) -> Result<Vec<usize>, Tr
             frames: c.frames,
         });
     }
-    // A slot seen in too few frames is a passing blob, not a ball.
-    let seen = |s: usize| frames.iter().filter(|f| f[s].is_ok()).count();
+    // A slot seen in too few frames is a passing blob, not a ball. A frame that
+    // repeats another's picture showed the ball all the same.
+    let seen = |s: usize| {
+        frames
+            .iter()
+            .filter(|f| matches!(f[s], Ok(_) | Err(LeftOut::Repeated)))
+            .count()
+    };
     let fewest = tracker.params.fewest_seen;
     let enough = (frames.len() / 10).max(fewest);
     if c.frames < fewest {
@@ -365,7 +373,9 @@ fn ball_line(centres: &[[f64; 2]], n: (f64, f64)) -> Option<f64> {
 }
 
 /// Leaves out (as poor outlines) the fits that are no ball's: off their ball's
-/// line, of an odd radius, far along the groove from where the motion puts them.
+/// line, of an odd radius, far along the groove from where the motion puts them;
+/// then (as repeated) those of frames that repeat another frame's picture of the
+/// moving ball (`repeats`).
 fn leave_out_odd_fits(
     frames: &mut [FrameFixes],
     tracker: &Tracker,
@@ -377,6 +387,11 @@ fn leave_out_odd_fits(
     if let Some(r) = median(tracker.radii()) {
         off_the_line(frames, p.off_the_line * r);
         odd_radius(frames, p.odd_radius, p.odd_radius_share * r);
+        let rule = super::repeats::RepeatRule {
+            still: p.repeat_still,
+            least_speed: p.repeat_speed,
+            window: p.repeat_window,
+        };
         // Deceleration in px/s²: the scale given, or the one the radius gives.
         let px_per_m = scale.unwrap_or(r / radius);
         off_the_path(
@@ -392,6 +407,8 @@ fn leave_out_odd_fits(
             inner: p.curve_inner,
         };
         off_the_curve(frames, times, curve);
+        let (paths, impact) = along_paths(frames);
+        super::repeats::leave_out(frames, &paths, impact, rule);
     }
 }
 
@@ -815,6 +832,7 @@ fn ball_track(
         unseen: 0,
         merged: 0,
         poor: 0,
+        repeated: 0,
         mark_missing: 0,
     };
     let nan = f64::NAN;
@@ -840,6 +858,7 @@ fn ball_track(
                     LeftOut::Unseen => b.unseen += 1,
                     LeftOut::Merged => b.merged += 1,
                     LeftOut::Poor => b.poor += 1,
+                    LeftOut::Repeated => b.repeated += 1,
                 }
                 (nan, nan, nan, nan, nan, nan)
             }

@@ -598,12 +598,13 @@ fn scatter(tracks: &Tracks) -> f64 {
 
 /// One ball's line: frames tracked, left out and why, marks found.
 fn ball_line(b: &BallTrack, frames: usize) -> String {
-    let tracked = frames - b.unseen - b.merged - b.poor;
+    let tracked = frames - b.unseen - b.merged - b.poor - b.repeated;
     let mut out: Vec<String> = Vec::new();
     for (n, why) in [
         (b.unseen, "not seen"),
         (b.merged, "touching the other ball"),
         (b.poor, "outline blurred or too little of it visible"),
+        (b.repeated, "repeating another frame's picture"),
     ] {
         if n > 0 {
             out.push(format!("{n} {why}"));

@@ -162,6 +162,7 @@ fn the_tracker_text_keeps_each_points_sigma() {
         unseen: 1,
         merged: 0,
         poor: 0,
+        repeated: 0,
         mark_missing: 0,
     };
     let tracks = Tracks {

@@ -20,6 +20,7 @@ mod off_the_curve;
 mod outer_lock;
 pub(crate) mod overlay;
 mod ragged_fringe;
+mod repeated_frames;
 pub(crate) mod seed;
 mod sharp_arc;
 pub(crate) mod tracker_looks;

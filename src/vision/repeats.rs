@@ -1,0 +1,273 @@
+//! Frames that repeat another frame's picture: a phone that drops frames repeats the
+//! one before to keep its rate, and a heavily compressed clip's B frames that code
+//! nothing of their own show the nearest coded frame's picture (blended with the
+//! next one's). A moving ball's fit in such a frame stays where its neighbour's is,
+//! while the frames about it show the ball moving several pixels a frame: it is the
+//! other frame's place, not this frame's time's. Of each run of such fits the one
+//! whose place its ball's motion puts at its own frame is kept, the others are left
+//! out (`LeftOut::Repeated`). Only a moving ball tells: a ball at rest repeats its
+//! place by right, so slow stretches are never judged.
+
+use super::tracker::{FrameFixes, LeftOut, median};
+
+/// When fits repeat their neighbour's place (`Params::repeat_still` and the two
+/// after it).
+#[derive(Clone, Copy, Debug)]
+pub struct RepeatRule {
+    /// A step between two frames' fits under this share of the ball's motion a
+    /// frame is no step.
+    pub still: f64,
+    /// The least motion, px a frame, for a ball's steps to be judged.
+    pub least_speed: f64,
+    /// Frames either side over which the ball's motion a frame is measured (its
+    /// displacement over them: repeated fits shorten some steps and lengthen the
+    /// next, not the sum).
+    pub window: usize,
+}
+
+/// Leaves out the fits of each ball that repeat a neighbouring frame's place while
+/// the ball moves (see the module), given each slot's fits as (frame, place along
+/// the groove, px) and the impact's frame (no window, step or run across it).
+#[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
+pub fn leave_out(
+    frames: &mut [FrameFixes],
+    paths: &[Vec<(usize, f64)>; 2],
+    impact: Option<usize>,
+    rule: RepeatRule,
+) {
+    for (slot, path) in paths.iter().enumerate() {
+        for k in repeated(path, impact, rule) {
+            if let Some(f) = frames.get_mut(k) {
+                f[slot] = Err(LeftOut::Repeated);
+            }
+        }
+    }
+}
+
+/// -1 before the impact, +1 after, 0 at it or without one.
+fn side(impact: Option<usize>, k: usize) -> i64 {
+    impact.map_or(0, |i| (k as i64 - i as i64).signum())
+}
+
+/// The ball's motion over frames `lo..=hi` of `path`, px a frame (signed along the
+/// groove): its displacement between the farthest fits there on `side_of`'s side of
+/// the impact; `None` without two such fits.
+fn speed(
+    path: &[(usize, f64)],
+    (lo, hi): (usize, usize),
+    impact: Option<usize>,
+    side_of: usize,
+) -> Option<f64> {
+    let near = |&&(j, _): &&(usize, f64)| {
+        (lo..=hi).contains(&j) && side(impact, j) * side(impact, side_of) >= 0
+    };
+    let first = path.iter().find(near)?;
+    let last = path.iter().rev().find(near)?;
+    (last.0 > first.0).then(|| (last.1 - first.1) / (last.0 - first.0) as f64)
+}
+
+/// The ball's motion about the step from frame `ka` to `kb`, px a frame: the lesser
+/// of its motions over `window` frames before and after it, when they go one way
+/// (a ball starting or coming to rest there is not judged); 0 otherwise.
+fn motion(
+    path: &[(usize, f64)],
+    ka: usize,
+    kb: usize,
+    impact: Option<usize>,
+    window: usize,
+) -> f64 {
+    let before = speed(path, (ka.saturating_sub(window), ka), impact, ka);
+    let after = speed(path, (kb, kb + window), impact, kb);
+    match (before, after) {
+        (Some(x), Some(y)) if x * y > 0.0 => x.abs().min(y.abs()) * x.signum(),
+        _ => 0.0,
+    }
+}
+
+/// The frames of `path` whose fit repeats a neighbouring frame's place (each run's
+/// kept fit not among them).
+fn repeated(path: &[(usize, f64)], impact: Option<usize>, rule: RepeatRule) -> Vec<usize> {
+    // still[i]: fit i repeats fit i - 1's place (the frame just before).
+    let still: Vec<bool> = (0..path.len())
+        .map(|i| {
+            let (Some(&(ka, sa)), Some(&(kb, sb))) =
+                (i.checked_sub(1).and_then(|a| path.get(a)), path.get(i))
+            else {
+                return false;
+            };
+            let v = motion(path, ka, kb, impact, rule.window).abs();
+            kb == ka + 1
+                && side(impact, ka) * side(impact, kb) >= 0
+                && v >= rule.least_speed
+                && (sb - sa).abs() < rule.still * v
+        })
+        .collect();
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i < path.len() {
+        if !still.get(i + 1).copied().unwrap_or(false) {
+            i += 1;
+            continue;
+        }
+        // A run: fits a..=b, each the place of the one before.
+        let a = i;
+        let mut b = a + 1;
+        while still.get(b + 1).copied().unwrap_or(false) {
+            b += 1;
+        }
+        let keep = match kept(path, a, b, impact, rule) {
+            RepeatRun::Keep(j) => Some(j),
+            RepeatRun::Drop => None,
+            RepeatRun::Untold => {
+                i = b + 1;
+                continue;
+            }
+        };
+        out.extend(
+            (a..=b)
+                .filter(|&j| Some(j) != keep)
+                .filter_map(|j| path.get(j).map(|p| p.0)),
+        );
+        i = b + 1;
+    }
+    out
+}
+
+/// What a run of fits that repeat one place is.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum RepeatRun {
+    /// Fit `.0` (an index into the path) shows its own frame's picture; the others
+    /// repeat it.
+    Keep(usize),
+    /// The motion either side names different frames: none is told, all left out.
+    Drop,
+    /// Too few fits about it to tell its motion: left as it is.
+    Untold,
+}
+
+/// Which fit of the run `a..=b` of `path` shows its own frame's picture: the one
+/// whose frame is nearest the time at which the ball's motion puts it at the run's
+/// place, as the fits within `window` frames before the run say it and as those
+/// after it say it (each side's a line through its fits, on the run's side of the
+/// impact, its slope and offset each the median of theirs, so that another
+/// repeated or poor fit among them does not move it). Where the two sides name
+/// different frames (a ball turning or slowing there) none is kept; where neither
+/// side has two fits, nothing is told.
+fn kept(
+    path: &[(usize, f64)],
+    a: usize,
+    b: usize,
+    impact: Option<usize>,
+    rule: RepeatRule,
+) -> RepeatRun {
+    let Some(run) = path.get(a..=b) else {
+        return RepeatRun::Untold;
+    };
+    let (Some(&(ka, _)), Some(&(kb, _))) = (run.first(), run.last()) else {
+        return RepeatRun::Untold;
+    };
+    let place = run.iter().map(|p| p.1).sum::<f64>() / run.len() as f64;
+    let on_side = |j: usize| {
+        side(impact, j) * side(impact, ka) >= 0 && side(impact, j) * side(impact, kb) >= 0
+    };
+    let fits = |near: &dyn Fn(usize) -> bool| -> Vec<(f64, f64)> {
+        path.iter()
+            .filter(|&&(j, _)| near(j) && on_side(j))
+            .map(|&(j, s)| (j as f64, s))
+            .collect()
+    };
+    let before = fits(&|j| j < ka && ka - j <= rule.window);
+    let after = fits(&|j| j > kb && j - kb <= rule.window);
+    let nearest = |at: f64| {
+        (a..=b).min_by(|&x, &y| {
+            let d = |j: usize| {
+                path.get(j)
+                    .map_or(f64::INFINITY, |p| (p.0 as f64 - at).abs())
+            };
+            d(x).total_cmp(&d(y))
+        })
+    };
+    let named: Vec<usize> = [before, after]
+        .iter()
+        .filter_map(|f| nearest(when(f, place)?))
+        .collect();
+    match named.first() {
+        None => RepeatRun::Untold,
+        Some(&j) if named.iter().all(|&n| n == j) => RepeatRun::Keep(j),
+        Some(_) => RepeatRun::Drop,
+    }
+}
+
+/// When the line through `fits` (frame, place) puts the ball at `place`, its slope
+/// and offset each the median of the fits' (Theil and Sen); `None` with fewer than
+/// two fits or no motion.
+fn when(fits: &[(f64, f64)], place: f64) -> Option<f64> {
+    let slopes: Vec<f64> = fits
+        .iter()
+        .enumerate()
+        .flat_map(|(i, p)| {
+            fits.iter()
+                .skip(i + 1)
+                .map(move |q| (q.1 - p.1) / (q.0 - p.0))
+        })
+        .collect();
+    let v = median(&slopes).filter(|v| v.abs() > 0.0)?;
+    let offsets: Vec<f64> = fits.iter().map(|p| p.1 - v * p.0).collect();
+    Some((place - median(&offsets)?) / v)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const RULE: RepeatRule = RepeatRule {
+        still: 0.25,
+        least_speed: 2.0,
+        window: 8,
+    };
+
+    /// A ball moving 5 px a frame, frames 10..=12 showing frame 9's picture.
+    #[test]
+    fn copies_of_the_frame_before_are_left_out_and_it_kept() {
+        let path: Vec<(usize, f64)> = (0..30)
+            .map(|k| {
+                (
+                    k,
+                    5.0 * if (10..=12).contains(&k) {
+                        9.0
+                    } else {
+                        k as f64
+                    },
+                )
+            })
+            .collect();
+        assert_eq!(repeated(&path, None, RULE), vec![10, 11, 12]);
+    }
+
+    /// Frames 10..=12 showing frame 13's picture: frame 13 kept.
+    #[test]
+    fn copies_of_the_frame_after_are_left_out_and_it_kept() {
+        let path: Vec<(usize, f64)> = (0..30)
+            .map(|k| {
+                (
+                    k,
+                    5.0 * if (10..=12).contains(&k) {
+                        13.0
+                    } else {
+                        k as f64
+                    },
+                )
+            })
+            .collect();
+        assert_eq!(repeated(&path, None, RULE), vec![10, 11, 12]);
+    }
+
+    /// A ball at rest (and one slowing to rest) repeats its place by right.
+    #[test]
+    fn a_ball_at_rest_is_not_judged() {
+        let path: Vec<(usize, f64)> = (0..30).map(|k| (k, 100.0 + 0.01 * k as f64)).collect();
+        assert!(repeated(&path, None, RULE).is_empty());
+        let stops: Vec<(usize, f64)> = (0..30).map(|k| (k, 5.0 * (k.min(15) as f64))).collect();
+        assert!(repeated(&stops, Some(15), RULE).is_empty());
+    }
+}
