@@ -115,19 +115,14 @@ fn repeated(path: &[(usize, f64)], impact: Option<usize>, rule: RepeatRule) -> V
         while still.get(b + 1).copied().unwrap_or(false) {
             b += 1;
         }
-        let keep = match kept(path, a, b, impact, rule) {
-            RepeatRun::Keep(j) => Some(j),
-            RepeatRun::Drop => None,
-            RepeatRun::Untold => {
-                i = b + 1;
-                continue;
-            }
-        };
-        out.extend(
-            (a..=b)
-                .filter(|&j| Some(j) != keep)
-                .filter_map(|j| path.get(j).map(|p| p.0)),
-        );
+        let run = kept(path, a, b, impact, rule);
+        if run != RepeatRun::Untold {
+            out.extend(
+                (a..=b)
+                    .filter(|&j| run != RepeatRun::Keep(j))
+                    .filter_map(|j| path.get(j).map(|p| p.0)),
+            );
+        }
         i = b + 1;
     }
     out
@@ -226,40 +221,27 @@ mod tests {
         window: 8,
     };
 
-    /// A ball moving 5 px a frame, frames 10..=12 showing frame 9's picture.
+    /// A ball moving 5 px a frame over frames 0..30, frames 10..=12 showing frame
+    /// `shown`'s picture.
+    fn copying(shown: usize) -> Vec<(usize, f64)> {
+        (0..30usize)
+            .map(|k| {
+                let at = if (10..=12).contains(&k) { shown } else { k };
+                (k, 5.0 * at as f64)
+            })
+            .collect()
+    }
+
+    /// Frames 10..=12 showing frame 9's picture: frame 9 kept.
     #[test]
     fn copies_of_the_frame_before_are_left_out_and_it_kept() {
-        let path: Vec<(usize, f64)> = (0..30)
-            .map(|k| {
-                (
-                    k,
-                    5.0 * if (10..=12).contains(&k) {
-                        9.0
-                    } else {
-                        k as f64
-                    },
-                )
-            })
-            .collect();
-        assert_eq!(repeated(&path, None, RULE), vec![10, 11, 12]);
+        assert_eq!(repeated(&copying(9), None, RULE), vec![10, 11, 12]);
     }
 
     /// Frames 10..=12 showing frame 13's picture: frame 13 kept.
     #[test]
     fn copies_of_the_frame_after_are_left_out_and_it_kept() {
-        let path: Vec<(usize, f64)> = (0..30)
-            .map(|k| {
-                (
-                    k,
-                    5.0 * if (10..=12).contains(&k) {
-                        13.0
-                    } else {
-                        k as f64
-                    },
-                )
-            })
-            .collect();
-        assert_eq!(repeated(&path, None, RULE), vec![10, 11, 12]);
+        assert_eq!(repeated(&copying(13), None, RULE), vec![10, 11, 12]);
     }
 
     /// A ball at rest (and one slowing to rest) repeats its place by right.

@@ -387,11 +387,6 @@ fn leave_out_odd_fits(
     if let Some(r) = median(tracker.radii()) {
         off_the_line(frames, p.off_the_line * r);
         odd_radius(frames, p.odd_radius, p.odd_radius_share * r);
-        let rule = super::repeats::RepeatRule {
-            still: p.repeat_still,
-            least_speed: p.repeat_speed,
-            window: p.repeat_window,
-        };
         // Deceleration in px/s²: the scale given, or the one the radius gives.
         let px_per_m = scale.unwrap_or(r / radius);
         off_the_path(
@@ -407,6 +402,11 @@ fn leave_out_odd_fits(
             inner: p.curve_inner,
         };
         off_the_curve(frames, times, curve);
+        let rule = super::repeats::RepeatRule {
+            still: p.repeat_still,
+            least_speed: p.repeat_speed,
+            window: p.repeat_window,
+        };
         let (paths, impact) = along_paths(frames);
         super::repeats::leave_out(frames, &paths, impact, rule);
     }

@@ -175,13 +175,6 @@ fn bumped(clip: &Clip, bump: u32) -> std::path::PathBuf {
     };
     let dir = crate::common::scratch_dir("band", &format!("bumped_{bump}"));
     let path = dir.join("clip.mp4");
-    let enc = groovelab::input::video::write::Encoding {
-        width: w,
-        height: h,
-        fps: clip.film.look.fps,
-        crf: clip.film.look.crf.unwrap_or(18),
-        metadata: Vec::new(),
-    };
-    groovelab::input::video::write::video(&path, &enc, (0..clip.frames).map(frame)).unwrap();
+    crate::film::h264::pictures(&path, &clip.film.look, (0..clip.frames).map(frame)).unwrap();
     path
 }

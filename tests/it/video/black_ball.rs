@@ -6,39 +6,18 @@
 //! colour outlines of steel, white and coloured balls took in their shadows and the
 //! motion's smear (seeds 15, 16 and 32 gave wrong μ_k).
 
-use super::decoded_look;
-use crate::common::paper_scene;
-use crate::film::looks::Size;
-use groovelab::vision::{self, Params};
+use groovelab::vision::Params;
 
+/// The scale within 2 of its ± of the truth; without the rule (no ball dark
+/// enough), the clip is refused.
 #[test]
 fn a_black_ball_on_a_wall_of_its_brightness_is_found_in_colour() {
-    let Some((clip, frames)) = decoded_look("black_ball", 10, Size::Full) else {
-        return;
-    };
-    let r = paper_scene().radius;
-    let truth = clip.film.px_per_m();
-    let times: Vec<f64> = (0..frames.len())
-        .map(|k| k as f64 / clip.film.look.fps)
-        .collect();
-    let with = vision::track(&frames, Params::default());
-    let tracks = vision::tracks(&with, times.clone(), r, None).unwrap();
-    let c = tracks.calibration;
-    // The scale within 2 of its ± of the truth.
-    assert!(
-        (c.px_per_m - truth).abs() <= 2.0 * c.px_per_m_sigma,
-        "scale {:.1} ± {:.1} px/m for {truth:.1}",
-        c.px_per_m,
-        c.px_per_m_sigma
-    );
-    // Without it (no ball dark enough), the clip is refused.
-    let without = vision::track(
-        &frames,
+    super::scaled_with_refused_without(
+        "black_ball",
+        10,
         Params {
             dark_ball: 0.0,
             ..Params::default()
         },
     );
-    let refused = vision::tracks(&without, times, r, None);
-    assert!(refused.is_err(), "without the colour outline: tracked");
 }

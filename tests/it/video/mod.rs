@@ -73,6 +73,36 @@ pub(crate) fn decoded_look(
     Some((clip, frames.map(|f| f.unwrap().1).collect()))
 }
 
+/// The full-size look `seed` (decoded as [`decoded_look`] in `area`), tracked with
+/// the default parameters, has its scale within 2 of its ± of the truth; tracked
+/// with `without` (a rule switched off), it is refused: the rule is what tracks it.
+pub(crate) fn scaled_with_refused_without(
+    area: &str,
+    seed: u64,
+    without: groovelab::vision::Params,
+) {
+    use groovelab::vision;
+    let Some((clip, frames)) = decoded_look(area, seed, crate::film::looks::Size::Full) else {
+        return;
+    };
+    let r = crate::common::paper_scene().radius;
+    let truth = clip.film.px_per_m();
+    let times: Vec<f64> = (0..frames.len())
+        .map(|k| k as f64 / clip.film.look.fps)
+        .collect();
+    let with = vision::track(&frames, vision::Params::default());
+    let tracks = vision::tracks(&with, times.clone(), r, None).unwrap();
+    let c = tracks.calibration;
+    assert!(
+        (c.px_per_m - truth).abs() <= 2.0 * c.px_per_m_sigma,
+        "look {seed}: scale {:.1} ± {:.1} px/m for {truth:.1}",
+        c.px_per_m,
+        c.px_per_m_sigma
+    );
+    let refused = vision::tracks(&vision::track(&frames, without), times, r, None);
+    assert!(refused.is_err(), "look {seed} without the rule: tracked");
+}
+
 /// How much of the pixel drawn at `(px, py)` a disc of radius `r` about `c` covers
 /// (0 … 1): the drawn cases' anti-aliasing, over about one pixel of the outline.
 pub(crate) fn disc_cover((px, py): (f64, f64), c: (f64, f64), r: f64) -> f64 {

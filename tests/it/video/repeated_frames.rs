@@ -7,7 +7,6 @@
 
 use crate::common::paper_scene;
 use crate::film::looks::{self, Size};
-use groovelab::input::video::write::{self, Encoding};
 use groovelab::vision::{self, Params};
 
 /// Small look `seed` filmed at `fps` as a phone that drops frames hands it over:
@@ -25,6 +24,7 @@ fn dropping_phone(
     let clip = looks::random(&paper_scene(), seed, Size::Small);
     let look = crate::film::Look {
         fps,
+        crf: Some(crf),
         ..clip.film.look
     };
     let to = 0.3;
@@ -33,15 +33,8 @@ fn dropping_phone(
     let repeats: Vec<usize> = (3..n).step_by(5).collect();
     let dir = crate::common::scratch_dir("video_repeated_frames", &format!("{seed}_{fps}_{crf}"));
     let path = dir.join("clip.mp4");
-    let enc = Encoding {
-        width: look.width,
-        height: look.height,
-        fps,
-        crf,
-        metadata: Vec::new(),
-    };
     let pictures = (0..n).map(|k| film.rgb(if repeats.contains(&k) { k - 1 } else { k }));
-    write::video(&path, &enc, pictures).unwrap();
+    crate::film::h264::pictures(&path, &look, pictures).unwrap();
     let limits = groovelab::input::video::Limits::default();
     let (_, frames) = groovelab::input::video::open(&path, &limits).unwrap();
     Some((film, frames.map(|f| f.unwrap().1).collect(), repeats))

@@ -14,15 +14,25 @@ use super::Film;
 /// Writes the first `frames` frames of `film` as the H.264 clip `path` (mp4), at the
 /// look's crf (18, visually lossless, when the look has none).
 pub fn write(path: &Path, film: &Film, frames: usize) -> Result<(), String> {
-    let l = &film.look;
+    pictures(path, &film.look, (0..frames).map(|k| film.rgb(k)))
+}
+
+/// Writes `rgb` (pictures of `look`'s size, RGB rows) as the H.264 clip `path` (mp4)
+/// at the look's frame rate and crf (18 when it has none): a film's frames changed
+/// as a camera would change them (repeated, moved).
+pub fn pictures(
+    path: &Path,
+    look: &super::Look,
+    rgb: impl Iterator<Item = Vec<u8>>,
+) -> Result<(), String> {
     let enc = Encoding {
-        width: l.width,
-        height: l.height,
-        fps: l.fps,
-        crf: l.crf.unwrap_or(18),
+        width: look.width,
+        height: look.height,
+        fps: look.fps,
+        crf: look.crf.unwrap_or(18),
         metadata: Vec::new(),
     };
-    write::video(path, &enc, (0..frames).map(|k| film.rgb(k))).map_err(|e| e.to_string())
+    write::video(path, &enc, rgb).map_err(|e| e.to_string())
 }
 
 /// The speed clip of issue 34's target (`benches/video.rs`, `examples/film.rs`): 3 s
