@@ -15,6 +15,7 @@ pub(crate) mod looks;
 mod mark_highlight;
 mod mark_place;
 mod marks_crowded;
+mod marks_ghost;
 mod marks_stay;
 mod marks_turn;
 mod off_the_curve;
