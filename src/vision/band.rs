@@ -288,7 +288,11 @@ mod tests {
             outline,
             sigma: 0.1,
             mark: None,
-            spots: [Some((50.0, y - 3.0, 20.0)), None, None, None],
+            spots: {
+                let mut spots = [None; crate::vision::mark::SPOTS];
+                spots[0] = Some((50.0, y - 3.0, 20.0));
+                spots
+            },
         };
         [Ok(fix), Err(crate::vision::tracker::LeftOut::Unseen)]
     }

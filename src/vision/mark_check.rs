@@ -76,6 +76,18 @@ pub fn checked(frames: &[FrameFixes], p: &MarkChecks) -> Vec<FrameFixes> {
     out
 }
 
+/// The marks of the fits in `frames` with no other fit of their ball within
+/// [`MarkChecks::confirm_frames`] left out, judged on the fits kept at last: a mark
+/// confirmed by a neighbour whose fit was then left out as no ball's (a compressed
+/// clip's frame that repeats an earlier picture, its centre stale and its "mark" a
+/// spot that rode along with the ball's blocks) is confirmed by nothing.
+pub fn leave_out_alone(frames: &mut [FrameFixes], p: &MarkChecks) {
+    for slot in 0..2 {
+        let alone = alone_in_time(frames, slot, p);
+        left_out(frames, slot, alone);
+    }
+}
+
 /// The places of the disc (radii from the centre) where a spot stands out in most
 /// of each ball's frames (of each ball seen in [`MarkChecks::fewest_marks`] frames
 /// or more): a glossy highlight, a feature of the shading or of a metal's
@@ -561,15 +573,37 @@ fn unconfirmed(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Vec<usize>
             && around.iter().all(|b| b.mark.is_none());
         // Slow: under a tenth of a turn a frame, so that a drawn mark seen here
         // would be seen in a frame next to it too (it takes several frames to cross
-        // the visible part of the disc).
+        // the visible part of the disc): the step to a frame next to it, or the
+        // ball's typical roll a frame about it (both neighbours' centres a few px
+        // off, at a compressed clip's frames that repeat a picture, make each step
+        // seem fast).
+        let tenth = 0.1 * std::f64::consts::TAU;
         let slow = around
             .iter()
-            .any(|b| a.roll_to(b) / (b.k.abs_diff(a.k) as f64) < 0.1 * std::f64::consts::TAU);
+            .any(|b| a.roll_to(b) / (b.k.abs_diff(a.k) as f64) < tenth)
+            || typical_roll(&fits, a, 4 * p.confirm_frames).is_some_and(|r| r < tenth);
         if (judged && !agrees) || (lone && slow) {
             out.push(a.k);
         }
     }
     out
+}
+
+/// The median roll a frame (rad) of the steps between the fits of its ball within
+/// `window` frames of `a`, `None` without such a step.
+fn typical_roll(fits: &[BallFit], a: &BallFit, window: usize) -> Option<f64> {
+    let near: Vec<&BallFit> = fits
+        .iter()
+        .filter(|b| b.k.abs_diff(a.k) <= window)
+        .collect();
+    let rolls: Vec<f64> = near
+        .windows(2)
+        .filter_map(|w| {
+            let [b, c] = w else { return None };
+            Some(b.roll_to(c) / (c.k - b.k).max(1) as f64)
+        })
+        .collect();
+    middle(&rolls)
 }
 
 /// The frames whose fit of `slot` has no other fit of its ball within

@@ -181,6 +181,10 @@ pub fn tracks(
     let p = &tracker.params;
     let mut frames = super::mark_check::checked(&ordered(&tracker.frames), &p.marks);
     leave_out_odd_fits(&mut frames, tracker, &times, radius, scale);
+    // The marks' checks judged each mark by the fits about it, some of which the
+    // odd fits' rules have now left out (a repeated picture's stale centre and the
+    // spot riding along with it): a mark with no fit left about it is judged by none.
+    super::mark_check::leave_out_alone(&mut frames, &p.marks);
     let frames = &frames;
     let mut slots = balls_seen(tracker, frames)?;
     let centres: Vec<Vec<[f64; 2]>> = (0..2).map(|s| centres_of(frames, s)).collect();

@@ -14,6 +14,8 @@ pub(crate) mod impact_follow;
 pub(crate) mod looks;
 mod mark_highlight;
 mod mark_place;
+mod marks_crowded;
+mod marks_ghost;
 mod marks_stay;
 mod marks_turn;
 mod off_the_curve;
