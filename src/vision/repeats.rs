@@ -366,7 +366,7 @@ mod tests {
         still: 0.25,
         least_speed: 2.0,
         window: 8,
-        turn_step: 1.5,
+        turn_step: 2.0,
         neighbours: 3,
     };
 
