@@ -258,6 +258,15 @@ pub struct Params {
     pub repeat_speed: f64,
     /// … its motion measured over this many frames either side. Default 8.
     pub repeat_window: usize,
+    /// Where the ball turns, slows or meets the impact, a run of fits of one place
+    /// repeats one picture when the parabola through the fits about it steps by at
+    /// least this many px between each two of its frames (`repeats::turning`).
+    /// Default 2, as `repeat_speed`: the heavily compressed looks' B frames copy
+    /// their reference's picture where the ball turns (the looks table's seed 11:
+    /// three fits of one place, 7.3 and 4.7 px off either side of the one of its
+    /// own frame); at 1.5 px, two fits of small look 27 a pixel off either way
+    /// (about 1.3 and 0.5 px) passed for a run where its ball moved 1.6 px.
+    pub repeat_turn_step: f64,
     /// Least share of a luma blob's upper half that differs from the background for
     /// the blob to be taken as a ball. Default 0.15: a ball that moved gives about a
     /// half or more, a still disc of the bench about none. The follower's fit where
@@ -492,6 +501,7 @@ impl Default for Params {
             repeat_still: 0.25,
             repeat_speed: 2.0,
             repeat_window: 8,
+            repeat_turn_step: 2.0,
             moved_share: 0.15,
             mark_votes: 9,
             max_radius_spread: 0.05,

@@ -410,9 +410,13 @@ fn leave_out_odd_fits(
             still: p.repeat_still,
             least_speed: p.repeat_speed,
             window: p.repeat_window,
+            turn_step: p.repeat_turn_step,
+            neighbours: p.curve_neighbours,
         };
         let (paths, impact) = along_paths(frames);
         super::repeats::leave_out(frames, &paths, impact, rule);
+        let (paths, impact) = along_paths(frames);
+        super::repeats::leave_out_turning(frames, &paths, impact, rule);
     }
 }
 
