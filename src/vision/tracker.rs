@@ -82,8 +82,10 @@ pub struct Tracker {
     background: Option<Background>,
     /// Frames the learner had seen when `background` was last learned.
     learned_at: usize,
-    /// Marks found darker and lighter than their ball, before the sign is settled.
-    mark_votes: [usize; 2],
+    /// Marks found before their sign is settled (`mark::settled_sign`) …
+    mark_votes: Vec<mark::Vote>,
+    /// … and that sign once settled (−1 darker than the ball, +1 lighter).
+    mark_sign: Option<f64>,
     /// Each fit's edge by other definitions (`circle::edge_offsets`), px.
     edges: Vec<[f64; 2]>,
     /// Each fit's edge in colour, where the ball's colour steps from the wall's
@@ -454,7 +456,7 @@ impl Tracker {
                 if self.radii.len() <= 64 || self.radii.len().is_multiple_of(256) {
                     self.radius = median(&self.radii);
                 }
-                self.fix(img, o, noise)
+                self.fix(img, o, noise, slot)
             });
             if let Some(o) = out.get_mut(slot) {
                 *o = fix;
@@ -546,8 +548,8 @@ impl Tracker {
     }
 
     /// The ball `o` with its mark and the spots of its disc.
-    fn fix(&mut self, img: &Gray, o: Outline, noise: f64) -> Fix {
-        let found = self.mark(img, &o, noise);
+    fn fix(&mut self, img: &Gray, o: Outline, noise: f64, slot: usize) -> Fix {
+        let found = self.mark(img, &o, noise, slot);
         Fix {
             outline: o,
             sigma: 0.5 * (o.sigma[0] + o.sigma[1]),
@@ -556,17 +558,13 @@ impl Tracker {
         }
     }
 
-    /// The mark on the ball `o`: of either sign while few are found, then of the
-    /// sign most had.
-    fn mark(&mut self, img: &Gray, o: &Outline, noise: f64) -> mark::InDisc {
-        let [dark, light] = self.mark_votes;
-        let sign = if dark + light < self.params.mark_votes {
-            0.0
-        } else if dark >= light {
-            -1.0
-        } else {
-            1.0
-        };
+    /// The mark on the ball `o` (of `slot`): of either sign while few are found, then
+    /// of the sign most had, those that stayed put in their disc left out.
+    fn mark(&mut self, img: &Gray, o: &Outline, noise: f64, slot: usize) -> mark::InDisc {
+        if self.mark_sign.is_none() && self.mark_votes.len() >= self.params.mark_votes {
+            self.mark_sign = Some(mark::settled_sign(&self.mark_votes));
+        }
+        let sign = self.mark_sign.unwrap_or(0.0);
         let p = self.params;
         let found = mark::find(
             img,
@@ -578,12 +576,16 @@ impl Tracker {
         if sign == 0.0
             && let Some(m) = found.mark
         {
-            let [d, l] = &mut self.mark_votes;
-            if m.contrast < 0.0 {
-                *d += 1;
-            } else {
-                *l += 1;
-            }
+            let c = o.circle;
+            let r = c.r.max(1.0);
+            self.mark_votes.push(mark::Vote {
+                slot,
+                x: c.x,
+                r,
+                kr: (r * ((o.lowest - c.y) / r).clamp(0.2, 1.0)).max(1.0),
+                at: ((m.x - c.x) / r, (m.y - c.y) / r),
+                sign: m.contrast.signum(),
+            });
         }
         found
     }

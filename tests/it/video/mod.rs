@@ -16,6 +16,7 @@ mod mark_highlight;
 mod mark_place;
 mod marks_crowded;
 mod marks_ghost;
+mod marks_sign;
 mod marks_stay;
 mod marks_turn;
 mod off_the_curve;
