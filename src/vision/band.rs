@@ -283,7 +283,6 @@ mod tests {
             coverage: 0.6,
             lowest: y + 5.0,
             polarity: 1.0,
-            lean: [0.0; 2],
         };
         let fix = crate::vision::tracker::Fix {
             outline,

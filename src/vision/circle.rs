@@ -33,11 +33,6 @@ pub struct Outline {
     pub lowest: f64,
     /// +1 when the ball is brighter than its surroundings, −1 when darker.
     pub polarity: f64,
-    /// How far the centre's x and y move per px of radius when the radius is held
-    /// at another value (the fit's covariances of x and y with r over r's
-    /// variance): on an arc the rail and the wall cut short, the radius and the
-    /// centre trade against each other.
-    pub lean: [f64; 2],
 }
 
 /// The polarity that keeps edge points of both signs: a ball on a wall of its own
@@ -126,11 +121,6 @@ fn describe(points: &[[f64; 2]], c: Circle, polarity: f64) -> Outline {
         coverage: sectors.iter().filter(|&&s| s).count() as f64 / 36.0,
         lowest,
         polarity,
-        lean: if cov[(2, 2)] > 0.0 {
-            [cov[(0, 2)] / cov[(2, 2)], cov[(1, 2)] / cov[(2, 2)]]
-        } else {
-            [0.0; 2]
-        },
     }
 }
 

@@ -181,7 +181,6 @@ pub fn tracks(
     let p = &tracker.params;
     let mut frames = super::mark_check::checked(&ordered(&tracker.frames), &p.marks);
     leave_out_odd_fits(&mut frames, tracker, &times, radius, scale);
-    held_at_radius(&mut frames, median(tracker.radii()));
     // The marks' checks judged each mark by the fits about it, some of which the
     // odd fits' rules have now left out (a repeated picture's stale centre and the
     // spot riding along with it): a mark with no fit left about it is judged by none.
@@ -247,24 +246,6 @@ pub fn tracks(
         balls,
         calibration,
     })
-}
-
-/// Each fit's centre where its outline puts it with the radius held at the balls'
-/// radius `r` (px; the median of every fit): by the fit's own lean (`Outline::lean`),
-/// times `r` less its radius. On an arc cut short by the rail, the wall's pattern or
-/// the other ball, one frame's radius scatters by pixels and pulls its centre along
-/// (a one-sided arc) and across with it; the balls' one radius takes that out. The
-/// radius is left as fitted (the radius's own checks read it).
-fn held_at_radius(frames: &mut [FrameFixes], r: Option<f64>) {
-    let Some(r) = r.filter(|r| r.is_finite()) else {
-        return;
-    };
-    for fix in frames.iter_mut().flatten().flatten() {
-        let o = &mut fix.outline;
-        let d = r - o.circle.r;
-        o.circle.x += o.lean[0] * d;
-        o.circle.y += o.lean[1] * d;
-    }
 }
 
 /// The balls' median fitted radius, px, and its ± (the median's own standard error
@@ -916,7 +897,6 @@ mod tests {
                 coverage: 0.5,
                 lowest: y + 0.3 * r,
                 polarity: 1.0,
-                lean: [0.0; 2],
             },
             sigma: 0.1,
             mark: None,

@@ -86,7 +86,6 @@ proptest! {
             coverage: 0.6,
             lowest: cy + 0.45 * r,
             polarity: if light_mark { -1.0 } else { 1.0 },
-            lean: [0.0; 2],
         };
         let found = mark::find(&img, &ball, 1.5, 0.0, (6.0, 10.0, 0.3)).mark;
         let m = found.ok_or_else(|| TestCaseError::fail("no mark found"))?;

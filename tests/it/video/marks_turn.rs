@@ -28,7 +28,6 @@ pub(super) fn fix(x: f64, y: f64, r: f64, mark: Option<(f64, f64)>) -> Result<Fi
             coverage: 0.6,
             lowest: y + K * r,
             polarity: 1.0,
-            lean: [0.0; 2],
         },
         sigma: 0.05,
         mark: mark.map(|(x, y)| Mark {

@@ -10,7 +10,6 @@ mod coloured_ball;
 mod first_locks;
 mod follow_gap;
 pub(crate) mod found_frames;
-mod held_radius;
 pub(crate) mod impact_follow;
 pub(crate) mod looks;
 mod mark_highlight;
