@@ -35,6 +35,24 @@ pub struct Outline {
     pub polarity: f64,
 }
 
+impl Outline {
+    /// kR, px (at least 1): how far below its centre the ball rolls on the rails'
+    /// edges, the rail's top edge being the outline's lowest point (k clamped to
+    /// 0.2 … 1); rolling by Δx turns it by Δx / (kR).
+    pub fn rolling_radius(&self) -> f64 {
+        let c = self.circle;
+        (c.r * ((self.lowest - c.y) / c.r.max(1.0)).clamp(0.2, 1.0)).max(1.0)
+    }
+
+    /// The point `(x, y)` (px) as a place in the ball's disc, in radii from its
+    /// centre: the same place of the disc whatever the ball's size in the frame.
+    pub fn in_disc(&self, (x, y): (f64, f64)) -> (f64, f64) {
+        let c = self.circle;
+        let r = c.r.max(1.0);
+        ((x - c.x) / r, (y - c.y) / r)
+    }
+}
+
 /// The polarity that keeps edge points of both signs: a ball on a wall of its own
 /// brightness (stripes, squares, grain) is brighter than some of it and darker
 /// than the rest.

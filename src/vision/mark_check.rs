@@ -14,10 +14,7 @@ use super::tracker::FrameFixes;
 pub fn checked(frames: &[FrameFixes], p: &MarkChecks) -> Vec<FrameFixes> {
     // First, the marks no check can judge: the other checks then read none of them.
     let mut judged = frames.to_vec();
-    for slot in 0..2 {
-        let alone = alone_in_time(&judged, slot, p);
-        left_out(&mut judged, slot, alone);
-    }
+    leave_out_alone(&mut judged, p);
     let frames = &judged[..];
     let mut out = frames.to_vec();
     let fixed = fixed_spots(frames, p);
@@ -109,7 +106,7 @@ fn fixed_spots(frames: &[FrameFixes], p: &MarkChecks) -> Vec<(f64, f64)> {
                     fix.spots
                         .iter()
                         .flatten()
-                        .map(|s| (in_disc(fix, (s.0, s.1)), s.2.signum()))
+                        .map(|s| (fix.outline.in_disc((s.0, s.1)), s.2.signum()))
                         .collect()
                 })
                 .collect()
@@ -171,10 +168,10 @@ fn rivalled(fix: &super::tracker::Fix, fixed: &[(f64, f64)], p: &MarkChecks) -> 
         .spots
         .iter()
         .flatten()
-        .map(|s| (in_disc(fix, (s.0, s.1)), s.2 * sign))
+        .map(|s| (fix.outline.in_disc((s.0, s.1)), s.2 * sign))
         .filter(|(o, d)| *d > 0.0 && !fixed.iter().any(|h| near(*o, *h, p.spot_reach)))
         .collect();
-    let at = in_disc(fix, (m.x, m.y));
+    let at = fix.outline.in_disc((m.x, m.y));
     let own = spots
         .iter()
         .filter(|(o, _)| near(*o, at, p.spot_reach))
@@ -268,7 +265,11 @@ fn turns_with_the_ball(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> bo
             let fix = f[slot].as_ref().ok()?;
             let o = offset(fix)?;
             // The ball rolls on the rails' edges, turning by Δx / (kR).
-            Some((fix.outline.circle.x, rolling_radius(fix), o.1.atan2(o.0)))
+            Some((
+                fix.outline.circle.x,
+                fix.outline.rolling_radius(),
+                o.1.atan2(o.0),
+            ))
         })
         .collect();
     // Per step between marked frames: the mark's turn and the ball's roll, rad.
@@ -301,25 +302,9 @@ fn turns_with_the_ball(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> bo
     (jumps as f64) <= p.jumps_share * steps as f64 && !stays
 }
 
-/// kR, px (at least 1): how far below its centre the ball rolls on the rails'
-/// edges, the rail's top edge being the outline's lowest point (k clamped to
-/// 0.2 … 1); rolling by Δx turns it by Δx / (kR).
-fn rolling_radius(fix: &super::tracker::Fix) -> f64 {
-    let c = fix.outline.circle;
-    (c.r * ((fix.outline.lowest - c.y) / c.r.max(1.0)).clamp(0.2, 1.0)).max(1.0)
-}
-
 /// A mark's place in its ball's disc, in radii from the centre.
 fn offset(fix: &super::tracker::Fix) -> Option<(f64, f64)> {
-    fix.mark.map(|m| in_disc(fix, (m.x, m.y)))
-}
-
-/// The point `(x, y)` (px) as a place in the disc of `fix`'s ball, in radii from
-/// its centre: the same place of the disc whatever the ball's size in the frame.
-fn in_disc(fix: &super::tracker::Fix, (x, y): (f64, f64)) -> (f64, f64) {
-    let c = fix.outline.circle;
-    let r = c.r.max(1.0);
-    ((x - c.x) / r, (y - c.y) / r)
+    fix.mark.map(|m| fix.outline.in_disc((m.x, m.y)))
 }
 
 fn near(a: (f64, f64), b: (f64, f64), within: f64) -> bool {
@@ -390,7 +375,7 @@ fn fixed_spot(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Option<(f64
         .filter_map(|f| {
             let fix = f[slot].as_ref().ok()?;
             let c = fix.outline.circle;
-            Some((c.x, c.r, rolling_radius(fix), offset(fix)?))
+            Some((c.x, c.r, fix.outline.rolling_radius(), offset(fix)?))
         })
         .collect();
     if marks.len() < 5 {
@@ -450,7 +435,7 @@ fn still_marks(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Vec<usize>
             // round the disc can cancel the ball's move (a fast ball at 30
             // frames/s, two frames apart), and the step tells nothing. Under half
             // a turn at 1.5 times the roll measured (room for kR's error).
-            let judged = 1.5 * moved / rolling_radius(fix) < std::f64::consts::PI;
+            let judged = 1.5 * moved / fix.outline.rolling_radius() < std::f64::consts::PI;
             if judged && moved >= p.moved_px && mark_moved < p.still_share * moved {
                 out.extend([k0, k]);
             }
@@ -499,7 +484,7 @@ fn seen(frames: &[FrameFixes], slot: usize) -> Vec<BallFit> {
                 k,
                 centre: (c.x, c.y),
                 r: c.r,
-                kr: rolling_radius(fix),
+                kr: fix.outline.rolling_radius(),
                 mark: offset(fix),
             })
         })

@@ -8,7 +8,7 @@
 //! out (`LeftOut::Repeated`). Only a moving ball tells: a ball at rest repeats its
 //! place by right, so slow stretches are never judged. Where the ball turns, slows
 //! or meets the impact (its motion not one way over the frames either side), a run
-//! is judged against the parabola through the fits about it (`leave_out_turning`).
+//! is judged against the parabola through the fits about it ([`turning`]).
 
 use super::tracker::{FrameFixes, LeftOut, median};
 
@@ -27,43 +27,23 @@ pub struct RepeatRule {
     pub window: usize,
     /// Where the ball turns or meets the impact: the least step a frame, px, the
     /// parabola through the fits about a run must give each of its steps for the
-    /// run to be judged (`leave_out_turning`).
+    /// run to be judged ([`turning`]).
     pub turn_step: f64,
     /// … that parabola through up to this many fits either side.
     pub neighbours: usize,
 }
 
-/// Leaves out the fits of each ball that repeat a neighbouring frame's place while
-/// the ball moves (see the module), given each slot's fits as (frame, place along
-/// the groove, px) and the impact's frame (no window, step or run across it).
+/// Leaves out, as repeats, the fits of each ball at the frames `found` names in its
+/// path (its fits as (frame, place along the groove, px)): [`repeated`] while the
+/// ball moves one way, [`turning`] where it turns, slows or meets the impact.
 #[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
 pub fn leave_out(
     frames: &mut [FrameFixes],
     paths: &[Vec<(usize, f64)>; 2],
-    impact: Option<usize>,
-    rule: RepeatRule,
+    found: impl Fn(&[(usize, f64)]) -> Vec<usize>,
 ) {
     for (slot, path) in paths.iter().enumerate() {
-        for k in repeated(path, impact, rule) {
-            if let Some(f) = frames.get_mut(k) {
-                f[slot] = Err(LeftOut::Repeated);
-            }
-        }
-    }
-}
-
-/// Leaves out the fits of each ball that repeat a neighbouring frame's place where
-/// the ball turns, slows or meets the impact (`turning`), given each slot's fits
-/// kept as (frame, place along the groove, px) and the impact's frame.
-#[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
-pub fn leave_out_turning(
-    frames: &mut [FrameFixes],
-    paths: &[Vec<(usize, f64)>; 2],
-    impact: Option<usize>,
-    rule: RepeatRule,
-) {
-    for (slot, path) in paths.iter().enumerate() {
-        for k in turning(path, impact, rule) {
+        for k in found(path) {
             if let Some(f) = frames.get_mut(k) {
                 f[slot] = Err(LeftOut::Repeated);
             }
@@ -87,7 +67,7 @@ pub fn leave_out_turning(
 /// within half, seed 11 keeps a fit 4.7 px off, its run's own frame's fit left
 /// out: the parabola through a heavily compressed clip's fits is itself a pixel or
 /// two off.)
-fn turning(path: &[(usize, f64)], impact: Option<usize>, rule: RepeatRule) -> Vec<usize> {
+pub fn turning(path: &[(usize, f64)], impact: Option<usize>, rule: RepeatRule) -> Vec<usize> {
     let mut out = Vec::new();
     let mut a = 0;
     while a < path.len() {
@@ -233,7 +213,7 @@ fn motion(
 
 /// The frames of `path` whose fit repeats a neighbouring frame's place (each run's
 /// kept fit not among them).
-fn repeated(path: &[(usize, f64)], impact: Option<usize>, rule: RepeatRule) -> Vec<usize> {
+pub fn repeated(path: &[(usize, f64)], impact: Option<usize>, rule: RepeatRule) -> Vec<usize> {
     // still[i]: fit i repeats fit i - 1's place (the frame just before).
     let still: Vec<bool> = (0..path.len())
         .map(|i| {

@@ -576,14 +576,12 @@ impl Tracker {
         if sign == 0.0
             && let Some(m) = found.mark
         {
-            let c = o.circle;
-            let r = c.r.max(1.0);
             self.mark_votes.push(mark::Vote {
                 slot,
-                x: c.x,
-                r,
-                kr: (r * ((o.lowest - c.y) / r).clamp(0.2, 1.0)).max(1.0),
-                at: ((m.x - c.x) / r, (m.y - c.y) / r),
+                x: o.circle.x,
+                r: o.circle.r.max(1.0),
+                kr: o.rolling_radius(),
+                at: o.in_disc((m.x, m.y)),
                 sign: m.contrast.signum(),
             });
         }

@@ -8,6 +8,7 @@
 use serde::Serialize;
 
 use super::circle::Outline;
+use super::repeats;
 use super::tracker::{FrameFixes, LeftOut, Tracker, median};
 
 /// Why tracked frames give no tracks.
@@ -406,17 +407,18 @@ fn leave_out_odd_fits(
             inner: p.curve_inner,
         };
         off_the_curve(frames, times, curve);
-        let rule = super::repeats::RepeatRule {
+        let rule = repeats::RepeatRule {
             still: p.repeat_still,
             least_speed: p.repeat_speed,
             window: p.repeat_window,
             turn_step: p.repeat_turn_step,
             neighbours: p.curve_neighbours,
         };
+        // Where the ball moves one way, then (on the fits left) where it turns.
         let (paths, impact) = along_paths(frames);
-        super::repeats::leave_out(frames, &paths, impact, rule);
+        repeats::leave_out(frames, &paths, |path| repeats::repeated(path, impact, rule));
         let (paths, impact) = along_paths(frames);
-        super::repeats::leave_out_turning(frames, &paths, impact, rule);
+        repeats::leave_out(frames, &paths, |path| repeats::turning(path, impact, rule));
     }
 }
 
