@@ -7,31 +7,18 @@
 //! stood out at its place in under 70 % of the frames and was not known as fixed.
 //! With 8 spots a disc it is, and no mark is taken there.
 
-use super::decoded_look;
+use super::{decoded_look, marks_against_truth};
 use crate::film::looks::Size;
-use groovelab::vision::{self, Params, mark_check, tracks};
+use groovelab::vision::{self, Params};
 
 #[test]
 fn a_highlight_in_discs_crowded_with_the_rails_spots_is_not_the_mark() {
     let Some((clip, frames)) = decoded_look("marks_crowded", 9, Size::Full) else {
         return;
     };
-    let params = Params::default();
-    let tracker = vision::track(&frames, params);
-    let ordered = tracks::ordered(&tracker.frames);
-    // Each mark kept: its error against the drawn one, px, and its frame.
-    let mut kept = Vec::new();
-    for (k, fixes) in mark_check::checked(&ordered, &params.marks)
-        .iter()
-        .enumerate()
-    {
-        for fix in fixes.iter().flatten() {
-            let Some(m) = fix.mark else { continue };
-            let c = fix.outline.circle;
-            let t = clip.film.ball_nearest(k, (c.x, c.y));
-            kept.push(((m.x - t.mark.0).hypot(m.y - t.mark.1), k));
-        }
-    }
+    let tracker = vision::track(&frames, Params::default());
+    // Each mark kept: its error against the drawn one, px, its frame and contrast.
+    let kept = marks_against_truth(&clip, &tracker);
     let worst = kept.iter().map(|p| p.0).fold(0.0, f64::max);
     assert!(
         worst < 3.0,

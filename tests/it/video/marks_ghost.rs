@@ -8,7 +8,7 @@
 //! roll about it, and a mark whose only neighbours were left out as no ball's is
 //! alone. Numbers as the tracker reported them, no pictures: cheap.
 
-use super::marks_turn::fix;
+use super::marks_turn::{fix, marks_of};
 use groovelab::vision::mark_check::{checked, leave_out_alone};
 use groovelab::vision::params::MarkChecks;
 use groovelab::vision::tracker::{FrameFixes, LeftOut};
@@ -46,16 +46,9 @@ fn spot(k: usize) -> (f64, f64) {
     at(centre(k), 1.4)
 }
 
-/// The marks kept, by frame.
+/// The left ball's marks kept, by frame.
 fn kept(frames: &[FrameFixes]) -> Vec<(usize, (f64, f64))> {
-    frames
-        .iter()
-        .enumerate()
-        .filter_map(|(k, f)| {
-            let m = f[0].as_ref().ok()?.mark?;
-            Some((k, (m.x, m.y)))
-        })
-        .collect()
+    marks_of(frames, 0)
 }
 
 /// 60 frames of the left ball with its drawn mark where seen.

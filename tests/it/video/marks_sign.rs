@@ -5,9 +5,9 @@
 //! was taken for the mark in the frames after (kept 4.8–16.5 px from the drawn one).
 //! A vote of a spot that stayed put in its disc while its ball rolled is left out.
 
-use super::decoded_look;
+use super::{decoded_look, marks_against_truth};
 use crate::film::looks::Size;
-use groovelab::vision::{self, Params, mark_check, tracks};
+use groovelab::vision::{self, Params};
 
 #[test]
 fn a_highlight_does_not_settle_the_marks_sign() {
@@ -16,20 +16,8 @@ fn a_highlight_does_not_settle_the_marks_sign() {
     };
     let params = Params::default();
     let tracker = vision::track(&frames, params);
-    let ordered = tracks::ordered(&tracker.frames);
     // Each mark kept: its error against the drawn one, px, its frame and contrast.
-    let mut kept = Vec::new();
-    for (k, fixes) in mark_check::checked(&ordered, &params.marks)
-        .iter()
-        .enumerate()
-    {
-        for fix in fixes.iter().flatten() {
-            let Some(m) = fix.mark else { continue };
-            let c = fix.outline.circle;
-            let t = clip.film.ball_nearest(k, (c.x, c.y));
-            kept.push(((m.x - t.mark.0).hypot(m.y - t.mark.1), k, m.contrast));
-        }
-    }
+    let kept = marks_against_truth(&clip, &tracker);
     let worst = kept.iter().map(|p| p.0).fold(0.0, f64::max);
     assert!(
         worst < 3.0,

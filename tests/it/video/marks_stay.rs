@@ -42,14 +42,7 @@ fn clip(mark: impl Fn(usize) -> Option<(f64, f64)>) -> Vec<FrameFixes> {
 
 /// The marks kept, by frame.
 fn kept(frames: &[FrameFixes]) -> Vec<(usize, (f64, f64))> {
-    checked(frames, &MarkChecks::default())
-        .iter()
-        .enumerate()
-        .filter_map(|(k, f)| {
-            let m = f[0].as_ref().ok()?.mark?;
-            Some((k, (m.x, m.y)))
-        })
-        .collect()
+    super::marks_turn::marks_of(&checked(frames, &MarkChecks::default()), 0)
 }
 
 /// Every mark kept is the drawn one, and most drawn marks are kept.

@@ -46,9 +46,9 @@ fn drawn(x: f64, y: f64, r: f64, d: f64, angle: f64) -> (f64, f64) {
     (x + d * r * angle.sin(), y - d * r * angle.cos())
 }
 
-/// The marks kept of `slot`, with their frames.
-fn kept(frames: &[FrameFixes], slot: usize) -> Vec<(usize, (f64, f64))> {
-    checked(frames, &MarkChecks::default())
+/// The marks of `slot` in `frames`, with their frames.
+pub(crate) fn marks_of(frames: &[FrameFixes], slot: usize) -> Vec<(usize, (f64, f64))> {
+    frames
         .iter()
         .enumerate()
         .filter_map(|(k, f)| {
@@ -56,6 +56,11 @@ fn kept(frames: &[FrameFixes], slot: usize) -> Vec<(usize, (f64, f64))> {
             Some((k, (m.x, m.y)))
         })
         .collect()
+}
+
+/// The marks kept of `slot`, with their frames.
+fn kept(frames: &[FrameFixes], slot: usize) -> Vec<(usize, (f64, f64))> {
+    marks_of(&checked(frames, &MarkChecks::default()), slot)
 }
 
 /// The left ball rolls 200 px (8 radii) to the right; in every other frame the spot

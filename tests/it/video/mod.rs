@@ -76,6 +76,29 @@ pub(crate) fn decoded_look(
     Some((clip, frames.map(|f| f.unwrap().1).collect()))
 }
 
+/// The marks `tracker` keeps of `clip` once checked (`mark_check::checked`), each
+/// as its distance from the drawn mark (px), its frame and its contrast.
+pub(crate) fn marks_against_truth(
+    clip: &crate::film::looks::Clip,
+    tracker: &groovelab::vision::Tracker,
+) -> Vec<(f64, usize, f64)> {
+    use groovelab::vision::{mark_check, tracks};
+    let ordered = tracks::ordered(&tracker.frames);
+    let mut kept = Vec::new();
+    for (k, fixes) in mark_check::checked(&ordered, &tracker.params.marks)
+        .iter()
+        .enumerate()
+    {
+        for fix in fixes.iter().flatten() {
+            let Some(m) = fix.mark else { continue };
+            let c = fix.outline.circle;
+            let t = clip.film.ball_nearest(k, (c.x, c.y));
+            kept.push(((m.x - t.mark.0).hypot(m.y - t.mark.1), k, m.contrast));
+        }
+    }
+    kept
+}
+
 /// The full-size look `seed` (decoded as [`decoded_look`] in `area`), tracked with
 /// the default parameters, has its scale within 2 of its ± of the truth; tracked
 /// with `without` (a rule switched off), it is refused: the rule is what tracks it.

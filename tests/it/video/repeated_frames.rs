@@ -61,35 +61,33 @@ fn errors(
     (errs, repeated)
 }
 
-/// The tracks of `tracker`'s `n` frames: per frame and ball, the centre's place
-/// along the groove and that of the true ball nearest it (px; `None` where left
-/// out), and the frames each ball left out as repeats.
-#[allow(clippy::type_complexity)]
-fn places(
-    film: &crate::film::Film,
-    tracker: &vision::Tracker,
-    n: usize,
-) -> (Vec<Vec<Option<(f64, f64)>>>, usize) {
-    let times = (0..n).map(|k| film.time(k)).collect();
+/// Per ball and frame, the tracked centre's place along the groove and that of the
+/// true ball nearest it (px; `None` where left out).
+type Places = Vec<Vec<Option<(f64, f64)>>>;
+
+/// The tracks of `tracker`'s `count` frames as [`Places`], and the frames the balls
+/// left out as repeats.
+fn places(film: &crate::film::Film, tracker: &vision::Tracker, count: usize) -> (Places, usize) {
+    let times = (0..count).map(|k| film.time(k)).collect();
     let tracks = vision::tracks(tracker, times, film.scene.radius, None).expect("tracked");
     let c = tracks.calibration;
     let g = c.groove_deg.to_radians();
-    let (u, n_) = ((g.cos(), g.sin()), (g.sin(), -g.cos()));
+    let (u, n) = ((g.cos(), g.sin()), (g.sin(), -g.cos()));
     let s = c.px_per_m;
     let along = |p: (f64, f64)| p.0 * u.0 + p.1 * u.1;
     let out = tracks
         .balls
         .iter()
         .map(|b| {
-            (0..n)
+            (0..count)
                 .map(|k| {
                     let (x, y) = (b.x[k] * s, b.y[k] * s);
                     if !x.is_finite() {
                         return None;
                     }
                     let p = (
-                        c.origin_px.0 + x * u.0 + y * n_.0,
-                        c.origin_px.1 + x * u.1 + y * n_.1,
+                        c.origin_px.0 + x * u.0 + y * n.0,
+                        c.origin_px.1 + x * u.1 + y * n.1,
                     );
                     Some((along(p), along(film.ball_nearest(k, p).centre)))
                 })
@@ -150,7 +148,7 @@ fn a_phones_repeated_frames_are_left_out_and_the_tracks_match_the_truth() {
 /// The fits of each ball, in consecutive frames, that lie within 0.5 px of each
 /// other along the groove while the true ball moved 3 px or more between them:
 /// (frame, ball) of the later of each such pair.
-fn repeated_places(places: &[Vec<Option<(f64, f64)>>]) -> Vec<(usize, usize)> {
+fn repeated_places(places: &Places) -> Vec<(usize, usize)> {
     let mut out = Vec::new();
     for (b, p) in places.iter().enumerate() {
         for k in 1..p.len() {
