@@ -56,6 +56,8 @@ pub fn checked(frames: &[FrameFixes], p: &MarkChecks) -> Vec<FrameFixes> {
         // leaving out some first would change their verdict on the others).
         let off = off_the_spin(&out, slot, p);
         left_out(&mut out, slot, off);
+        let twice = shown_twice(&out, slot, p);
+        left_out(&mut out, slot, twice);
         let stayed = stayed_while_rolling(&out, slot, p);
         left_out(&mut out, slot, stayed);
         let lone = unconfirmed(&out, slot, p);
@@ -691,4 +693,66 @@ fn off_the_spin(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Vec<usize
         verdicts.peek().is_some() && !verdicts.any(|agrees| agrees)
     };
     marks.iter().filter(|m| off(m)).map(|m| m.0.k).collect()
+}
+
+/// The marked frames of `slot` whose mark shows the same picture as the next or
+/// previous frame's: two marks in consecutive frames whose place in the disc turned
+/// by under [`MarkChecks::repeat_share`] of what the ball's spin turns it in a frame
+/// (px at the mark's distance from the centre, where that is
+/// [`MarkChecks::repeat_px`] or more). The spin is the marks' net turn a frame
+/// about them ([`spin_about`]): a picture shown twice, then the next one, turns the
+/// mark by none, then by two frames' worth, the same in all. A compressed clip's
+/// frame that repeats its neighbour's picture (or blends it in) while the ball
+/// spins, even in place after the impact, carries a stale mark a spin's frame or
+/// more behind the drawn one's, and its centre too; which of the two is the frame's
+/// own is not told, so both are left out.
+fn shown_twice(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Vec<usize> {
+    let fits = seen(frames, slot);
+    let marks: Vec<(usize, f64, (f64, f64))> = fits
+        .iter()
+        .filter_map(|f| Some((f.k, f.r.max(1.0), f.mark?)))
+        .collect();
+    let mut out = Vec::new();
+    for w in marks.windows(2) {
+        let [(ka, r, oa), (kb, _, ob)] = w else {
+            continue;
+        };
+        if *kb != ka + 1 {
+            continue;
+        }
+        let Some(rate) = spin_about(&marks, *ka, p.repeat_frames) else {
+            continue;
+        };
+        // The mark's distance from the centre, and what the spin moves it by, px.
+        let rho = 0.5 * (oa.0.hypot(oa.1) + ob.0.hypot(ob.1)) * r;
+        let spun = rho * rate.abs();
+        let turned = rho * turn_between(oa.1.atan2(oa.0), ob.1.atan2(ob.0)).abs();
+        if spun >= p.repeat_px && turned < p.repeat_share * spun {
+            out.extend([*ka, *kb]);
+        }
+    }
+    out.dedup();
+    out
+}
+
+/// The net turn a frame (rad, signed) of the marks `marks` (frame, radius, place in
+/// the disc) within `window` frames of frame `k`: the sum of the turns between
+/// marks at most three frames apart over the frames they span (a step of more is
+/// left out: a mark hidden meanwhile may have come round; three, so that a run of
+/// pictures shown twice or three times is spanned with the turn after it). `None`
+/// over fewer than four frames.
+fn spin_about(marks: &[(usize, f64, (f64, f64))], k: usize, window: usize) -> Option<f64> {
+    let near: Vec<&(usize, f64, (f64, f64))> = marks
+        .iter()
+        .filter(|m| m.0.abs_diff(k) <= window + 1)
+        .collect();
+    let (mut turned, mut spanned) = (0.0, 0usize);
+    for w in near.windows(2) {
+        let [a, b] = w else { continue };
+        if b.0 - a.0 <= 3 {
+            turned += turn_between(a.2.1.atan2(a.2.0), b.2.1.atan2(b.2.0));
+            spanned += b.0 - a.0;
+        }
+    }
+    (spanned >= 4).then(|| turned / spanned as f64)
 }

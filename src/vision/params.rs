@@ -417,6 +417,18 @@ pub struct MarkChecks {
     /// … and this many more per frame from the nearer of the two (the rate read off
     /// two noisy angles, and friction changing it). Default 0.15.
     pub spin_drift: f64,
+    /// Two marks of a ball in consecutive frames whose place in the disc turned by
+    /// under this share of what the ball's spin (its marks' net turn a frame about
+    /// them, [`MarkChecks::repeat_frames`] each way) turns a drawn mark in a frame
+    /// show one picture twice (a compressed clip's frame that repeats, or blends in,
+    /// another's), and neither is told to be its own frame's: both left out.
+    /// Default 0.5 …
+    pub repeat_share: f64,
+    /// … judged where that spin moves the mark by this many px a frame or more.
+    /// Default 1.5 …
+    pub repeat_px: f64,
+    /// … the spin read over this many frames either way. Default 8.
+    pub repeat_frames: usize,
 }
 
 impl Default for MarkChecks {
@@ -445,6 +457,9 @@ impl Default for MarkChecks {
             spin_frames: 4,
             spin_slack: 0.6,
             spin_drift: 0.15,
+            repeat_share: 0.5,
+            repeat_px: 1.5,
+            repeat_frames: 8,
         }
     }
 }

@@ -19,6 +19,7 @@ mod marks_ghost;
 mod marks_sign;
 mod marks_stay;
 mod marks_turn;
+mod marks_twice;
 mod off_the_curve;
 mod outer_lock;
 pub(crate) mod overlay;
