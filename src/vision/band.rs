@@ -281,6 +281,7 @@ mod tests {
             rms: 0.1,
             points: 100,
             coverage: 0.6,
+            sectors: 0,
             lowest: y + 5.0,
             polarity: 1.0,
         };

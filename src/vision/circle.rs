@@ -29,6 +29,9 @@ pub struct Outline {
     pub points: usize,
     /// Share of the circle's 36 sectors of 10° holding kept points (0 … 1).
     pub coverage: f64,
+    /// Which of those sectors hold them: bit `i` for the angles `10 i … 10 (i + 1)`°
+    /// from the right, clockwise in the picture (y down: sector 9 is straight down).
+    pub sectors: u64,
     /// The lowest kept edge point, px: the ball is hidden below it (the rail).
     pub lowest: f64,
     /// +1 when the ball is brighter than its surroundings, −1 when darker.
@@ -42,6 +45,26 @@ impl Outline {
     pub fn rolling_radius(&self) -> f64 {
         let c = self.circle;
         (c.r * ((self.lowest - c.y) / c.r.max(1.0)).clamp(0.2, 1.0)).max(1.0)
+    }
+
+    /// Whether the outline is one a ball behind a rail shows: its bottom hidden, or
+    /// shown with a side. Edge points within `within` degrees of straight down and
+    /// none within it of level on either side are not a ball's (a rail hides a
+    /// ball from below, so what shows its bottom shows its sides): they are two
+    /// level edges taken for the top and bottom of a circle (a shadow's, or a
+    /// compression block's, along the rail's lower edge: small looks table seed
+    /// 28). `within` 0: every outline is.
+    pub fn seen_over_a_rail(&self, within: f64) -> bool {
+        // The sectors (10° each, from the right, clockwise in the picture) that
+        // reach within `within` of the angle `at`, degrees.
+        let near = |at: f64| {
+            let (from, to) = (
+                ((at - within) / 10.0).floor(),
+                ((at + within) / 10.0).ceil(),
+            );
+            (from as i64..to as i64).any(|i| self.sectors & (1 << i.rem_euclid(36)) != 0)
+        };
+        within <= 0.0 || !near(90.0) || near(0.0) || near(180.0)
     }
 
     /// The point `(x, y)` (px) as a place in the ball's disc, in radii from its
@@ -114,6 +137,7 @@ fn describe(points: &[[f64; 2]], c: Circle, polarity: f64) -> Outline {
     // Covariance of (x, y, r): σ² (JᵀJ)⁻¹, J's rows (−cos, −sin, −1).
     let mut a = [[0.0f64; 3]; 3];
     let mut sectors = [false; 36];
+    let mut bits = 0u64;
     let mut lowest = f64::NEG_INFINITY;
     for p in points {
         let (dx, dy) = (p[0] - c.x, p[1] - c.y);
@@ -125,7 +149,9 @@ fn describe(points: &[[f64; 2]], c: Circle, polarity: f64) -> Outline {
             }
         }
         let a = dy.atan2(dx).rem_euclid(std::f64::consts::TAU);
-        sectors[((a / std::f64::consts::TAU * 36.0) as usize).min(35)] = true;
+        let sector = ((a / std::f64::consts::TAU * 36.0) as usize).min(35);
+        sectors[sector] = true;
+        bits |= 1 << sector;
         lowest = lowest.max(p[1]);
     }
     let s2 = res2 / (n - 3.0).max(1.0);
@@ -137,6 +163,7 @@ fn describe(points: &[[f64; 2]], c: Circle, polarity: f64) -> Outline {
         rms,
         points: points.len(),
         coverage: sectors.iter().filter(|&&s| s).count() as f64 / 36.0,
+        sectors: bits,
         lowest,
         polarity,
     }

@@ -76,6 +76,11 @@ pub struct Params {
     /// coverage at 0.05–0.15 px RMS, their centres 0.1–0.8 px from the truth, where the
     /// wider outlines mixed in the clutter's edges at 1.1–1.4 px RMS).
     pub min_coverage_sharp: f64,
+    /// An outline with edge points within this many degrees of straight down and
+    /// none within it of level, on either side, is not a ball
+    /// (`circle::Outline::seen_over_a_rail`); 0 takes it. Default 20: a rail hides
+    /// a ball from below, so what shows a ball's bottom shows its sides too.
+    pub rail_view_deg: f64,
     /// See `min_coverage_sharp`. Default 0.25 px: a sharp edge gives 0.05–0.2 px.
     pub sharp_rms: f64,
     /// See `min_coverage_sharp`. Default 0.03: a short arc's radius is its least sure
@@ -480,6 +485,7 @@ impl Default for Params {
             min_coverage: 0.35,
             min_coverage_known: 0.28,
             min_coverage_sharp: 0.19,
+            rail_view_deg: 20.0,
             sharp_rms: 0.25,
             sharp_radius: 0.03,
             max_rms: 1.0,

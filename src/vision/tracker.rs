@@ -971,6 +971,7 @@ impl Tracker {
         let max_rms = if o.colour { 2.0 * p.max_rms } else { p.max_rms };
         let (c, tolerance) = (o.outline.circle, self.tolerance(&o.outline));
         (o.outline.coverage >= p.min_coverage || sharp)
+            && o.outline.seen_over_a_rail(p.rail_view_deg)
             && o.outline.rms <= max_rms
             && self
                 .radius()

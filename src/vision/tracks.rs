@@ -897,6 +897,7 @@ mod tests {
                 rms: 0.2,
                 points: 60,
                 coverage: 0.5,
+                sectors: 0,
                 lowest: y + 0.3 * r,
                 polarity: 1.0,
             },

@@ -14,7 +14,7 @@ use groovelab::vision::Params;
 fn a_black_ball_on_a_wall_of_its_brightness_is_found_in_colour() {
     super::scaled_with_refused_without(
         "black_ball",
-        10,
+        (10, crate::film::looks::Size::Full),
         Params {
             dark_ball: 0.0,
             ..Params::default()

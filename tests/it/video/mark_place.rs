@@ -84,6 +84,7 @@ proptest! {
             rms: 0.2,
             points: 100,
             coverage: 0.6,
+            sectors: 0,
             lowest: cy + 0.45 * r,
             polarity: if light_mark { -1.0 } else { 1.0 },
         };

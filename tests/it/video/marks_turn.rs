@@ -26,6 +26,7 @@ pub(super) fn fix(x: f64, y: f64, r: f64, mark: Option<(f64, f64)>) -> Result<Fi
             rms: 0.2,
             points: 100,
             coverage: 0.6,
+            sectors: 0,
             lowest: y + K * r,
             polarity: 1.0,
         },

@@ -24,6 +24,7 @@ mod off_the_curve;
 mod outer_lock;
 pub(crate) mod overlay;
 mod ragged_fringe;
+mod rail_view;
 mod repeated_frames;
 pub(crate) mod seed;
 mod sharp_arc;
@@ -100,16 +101,16 @@ pub(crate) fn marks_against_truth(
     kept
 }
 
-/// The full-size look `seed` (decoded as [`decoded_look`] in `area`), tracked with
+/// The look `seed` of `size` (decoded as [`decoded_look`] in `area`), tracked with
 /// the default parameters, has its scale within 2 of its ± of the truth; tracked
 /// with `without` (a rule switched off), it is refused: the rule is what tracks it.
 pub(crate) fn scaled_with_refused_without(
     area: &str,
-    seed: u64,
+    (seed, size): (u64, crate::film::looks::Size),
     without: groovelab::vision::Params,
 ) {
     use groovelab::vision;
-    let Some((clip, frames)) = decoded_look(area, seed, crate::film::looks::Size::Full) else {
+    let Some((clip, frames)) = decoded_look(area, seed, size) else {
         return;
     };
     let r = crate::common::paper_scene().radius;
