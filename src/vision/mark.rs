@@ -175,18 +175,8 @@ fn find_mark(
             break;
         }
     }
-    // Last, the spot's disc clear of the rail by a tenth of its radius more: a mark
-    // whose disc reaches the rail's edge is partly hidden or darkened by the strip
-    // above the rail, which the ring's plane does not follow, and its centroid sits
-    // high (on the looks table's full looks, tracker 26, the 25 marks kept within a
-    // tenth of their disc's radius of it were 0.99 px off, RMS, against 0.61 px for
-    // all 1,084, and 0.4 px high on average; seed 22's frame 36, 3.5 px).
-    out.filter(|m| fits(m.x, m.y) && m.y + (1.0 + RAIL_CLEAR) * spot < bottom)
+    out.filter(|m| fits(m.x, m.y))
 }
-
-/// How much farther than its disc's radius a mark's centroid must be from the
-/// rail's edge, as a share of that radius (see [`find_mark`]'s last step).
-pub const RAIL_CLEAR: f64 = 0.1;
 
 /// Where the ball's own surface is seen: within `inside` px of its centre, above the
 /// rail's edge `bottom`.

@@ -14,7 +14,6 @@ pub(crate) mod impact_follow;
 pub(crate) mod looks;
 mod mark_highlight;
 mod mark_place;
-mod mark_rail;
 mod marks_crowded;
 mod marks_ghost;
 mod marks_sign;
