@@ -280,8 +280,8 @@ mod tests {
             sigma: [0.1; 3],
             rms: 0.1,
             points: 100,
-            coverage: 0.6,
-            sectors: 0,
+            // The upper half of the circle (sectors 18–35): the rail hides the rest.
+            sectors: 0xF_FFFC_0000,
             lowest: y + 5.0,
             polarity: 1.0,
         };

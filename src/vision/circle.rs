@@ -27,10 +27,9 @@ pub struct Outline {
     pub rms: f64,
     /// Edge points kept.
     pub points: usize,
-    /// Share of the circle's 36 sectors of 10° holding kept points (0 … 1).
-    pub coverage: f64,
-    /// Which of those sectors hold them: bit `i` for the angles `10 i … 10 (i + 1)`°
-    /// from the right, clockwise in the picture (y down: sector 9 is straight down).
+    /// Which of the circle's 36 sectors of 10° hold kept points: bit `i` for the
+    /// angles `10 i … 10 (i + 1)`° from the right, clockwise in the picture (y down:
+    /// sector 9 is straight down).
     pub sectors: u64,
     /// The lowest kept edge point, px: the ball is hidden below it (the rail).
     pub lowest: f64,
@@ -39,6 +38,11 @@ pub struct Outline {
 }
 
 impl Outline {
+    /// Share of the circle's 36 sectors of 10° holding kept points (0 … 1).
+    pub fn coverage(&self) -> f64 {
+        f64::from(self.sectors.count_ones()) / 36.0
+    }
+
     /// kR, px (at least 1): how far below its centre the ball rolls on the rails'
     /// edges, the rail's top edge being the outline's lowest point (k clamped to
     /// 0.2 … 1); rolling by Δx turns it by Δx / (kR).
@@ -129,15 +133,14 @@ fn fit_points(points: Vec<[f64; 2]>, start: Circle, band: f64, sign: f64) -> Opt
 }
 
 /// The outline's numbers from the kept `points` and their circle `c`.
-#[allow(clippy::indexing_slicing)] // fixed 3×3 sums over 0..3, and a sector index clamped to 0..=35
+#[allow(clippy::indexing_slicing)] // fixed 3×3 sums over 0..3
 fn describe(points: &[[f64; 2]], c: Circle, polarity: f64) -> Outline {
     let n = points.len() as f64;
     let res2: f64 = points.iter().map(|p| (dist(p, &c) - c.r).powi(2)).sum();
     let rms = (res2 / n).sqrt();
     // Covariance of (x, y, r): σ² (JᵀJ)⁻¹, J's rows (−cos, −sin, −1).
     let mut a = [[0.0f64; 3]; 3];
-    let mut sectors = [false; 36];
-    let mut bits = 0u64;
+    let mut sectors = 0u64;
     let mut lowest = f64::NEG_INFINITY;
     for p in points {
         let (dx, dy) = (p[0] - c.x, p[1] - c.y);
@@ -149,9 +152,7 @@ fn describe(points: &[[f64; 2]], c: Circle, polarity: f64) -> Outline {
             }
         }
         let a = dy.atan2(dx).rem_euclid(std::f64::consts::TAU);
-        let sector = ((a / std::f64::consts::TAU * 36.0) as usize).min(35);
-        sectors[sector] = true;
-        bits |= 1 << sector;
+        sectors |= 1 << ((a / std::f64::consts::TAU * 36.0) as u32).min(35);
         lowest = lowest.max(p[1]);
     }
     let s2 = res2 / (n - 3.0).max(1.0);
@@ -162,8 +163,7 @@ fn describe(points: &[[f64; 2]], c: Circle, polarity: f64) -> Outline {
         sigma: [cov[(0, 0)].sqrt(), cov[(1, 1)].sqrt(), cov[(2, 2)].sqrt()],
         rms,
         points: points.len(),
-        coverage: sectors.iter().filter(|&&s| s).count() as f64 / 36.0,
-        sectors: bits,
+        sectors,
         lowest,
         polarity,
     }
@@ -544,7 +544,7 @@ pub fn colour_offset(
         }
     }
     let found = fit_points(points, c, reach, EITHER)?;
-    (found.coverage >= 0.35 && found.rms <= 1.0).then_some(found.circle.r - c.r)
+    (found.coverage() >= 0.35 && found.rms <= 1.0).then_some(found.circle.r - c.r)
 }
 
 /// Where `level(s)`, for s from `from` to `to` px, last falls from above `half` to

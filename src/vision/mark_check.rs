@@ -736,7 +736,7 @@ fn shown_twice(frames: &[FrameFixes], slot: usize, p: &MarkChecks) -> Vec<usize>
 }
 
 /// The net turn a frame (rad, signed) of the marks `marks` (frame, radius, place in
-/// the disc) within `window` frames of frame `k`: the sum of the turns between
+/// the disc) within `window` frames of the pair of frames `k`, `k + 1`: the sum of the turns between
 /// marks at most three frames apart over the frames they span (a step of more is
 /// left out: a mark hidden meanwhile may have come round; three, so that a run of
 /// pictures shown twice or three times is spanned with the turn after it). `None`

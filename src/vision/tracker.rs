@@ -830,12 +830,12 @@ impl Tracker {
         // brightness (the outline of both signs there mixes in the wall's edges).
         let sharp = |o: &OutlineFound| {
             !o.colour
-                && o.outline.coverage >= p.min_coverage_sharp
+                && o.outline.coverage() >= p.min_coverage_sharp
                 && o.outline.rms <= p.sharp_rms
                 && known.is_some_and(|r| (o.outline.circle.r - r).abs() < p.sharp_radius * r)
         };
         let o = match self.outline(&frame.luma, guess, band, self.polarity) {
-            Some(o) if o.outline.coverage >= p.min_coverage || sharp(&o) => o,
+            Some(o) if o.outline.coverage() >= p.min_coverage || sharp(&o) => o,
             // Too little outline of one sign: a ball on a wall of its brightness,
             // brighter than part of the wall and darker than the rest. Its edge of
             // both signs, else (a ball of the wall's brightness) in colour.
@@ -843,7 +843,7 @@ impl Tracker {
                 let either = (self.polarity != circle::EITHER)
                     .then(|| self.outline(&frame.luma, guess, band, circle::EITHER))
                     .flatten()
-                    .filter(|o| o.outline.coverage >= p.min_coverage);
+                    .filter(|o| o.outline.coverage() >= p.min_coverage);
                 match (either, weak) {
                     (Some(o), _) | (None, Some(o)) => o,
                     (None, None) if !colour => return Err(LeftOut::Poor),
@@ -962,15 +962,16 @@ impl Tracker {
     }
 
     /// True when the outline `o` is clear enough for a ball (`sharp`: a short sharp
-    /// arc of the known radius): its coverage, its scatter about its circle (twice
-    /// as much in colour: `refine_with`'s tests) and its radius within the
-    /// tolerance of the balls' radius so far.
+    /// arc of the known radius): its coverage, an arc a ball over a rail shows
+    /// (`Outline::seen_over_a_rail`), its scatter about its circle (twice as much in
+    /// colour: `refine_with`'s tests) and its radius within the tolerance of the
+    /// balls' radius so far.
     fn shaped(&self, o: &OutlineFound, p: &Params, sharp: bool) -> bool {
         // The colour planes are half size, brought to full size bilinearly: their
         // edge points scatter about twice as far as the brightness edge's.
         let max_rms = if o.colour { 2.0 * p.max_rms } else { p.max_rms };
         let (c, tolerance) = (o.outline.circle, self.tolerance(&o.outline));
-        (o.outline.coverage >= p.min_coverage || sharp)
+        (o.outline.coverage() >= p.min_coverage || sharp)
             && o.outline.seen_over_a_rail(p.rail_view_deg)
             && o.outline.rms <= max_rms
             && self
@@ -983,7 +984,7 @@ impl Tracker {
     /// than a clear outline (`min_coverage`, not lowered once the radius is known).
     fn tolerance(&self, o: &Outline) -> f64 {
         let p = &self.params;
-        if o.coverage < p.min_coverage {
+        if o.coverage() < p.min_coverage {
             p.radius_tolerance.min(p.max_radius_spread)
         } else {
             p.radius_tolerance
@@ -1004,7 +1005,7 @@ impl Tracker {
         };
         let differs = |x: f64, y: f64| differs_at(small, bg, x, y, &p);
         let margin = p.outer_margin + bg.factor as f64;
-        let is_clear = |e: &Outline| e.coverage >= p.min_coverage && e.rms <= p.max_rms;
+        let is_clear = |e: &Outline| e.coverage() >= p.min_coverage && e.rms <= p.max_rms;
         // About an outline, one look along the rays: its clear outermost edge, and
         // whether it is a "ball" much smaller than the clear round blob around it
         // (part of a ball whose limb steps too little for an edge), told where the

@@ -896,8 +896,8 @@ mod tests {
                 sigma: [0.1; 3],
                 rms: 0.2,
                 points: 60,
-                coverage: 0.5,
-                sectors: 0,
+                // The upper half of the circle (sectors 18–35): the rail hides the rest.
+                sectors: 0xF_FFFC_0000,
                 lowest: y + 0.3 * r,
                 polarity: 1.0,
             },

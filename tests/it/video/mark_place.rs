@@ -83,8 +83,8 @@ proptest! {
             sigma: [0.05; 3],
             rms: 0.2,
             points: 100,
-            coverage: 0.6,
-            sectors: 0,
+            // The upper half of the circle (sectors 18–35): the rail hides the rest.
+            sectors: 0xF_FFFC_0000,
             lowest: cy + 0.45 * r,
             polarity: if light_mark { -1.0 } else { 1.0 },
         };

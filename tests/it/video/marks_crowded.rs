@@ -18,7 +18,7 @@ fn a_highlight_in_discs_crowded_with_the_rails_spots_is_not_the_mark() {
     };
     let tracker = vision::track(&frames, Params::default());
     // Each mark kept: its error against the drawn one, px, its frame and contrast.
-    let kept = marks_against_truth(&clip, &tracker);
+    let kept = marks_against_truth(&clip, &tracker, &tracker.params.marks);
     let worst = kept.iter().map(|p| p.0).fold(0.0, f64::max);
     assert!(
         worst < 3.0,

@@ -17,7 +17,7 @@ fn a_highlight_does_not_settle_the_marks_sign() {
     let params = Params::default();
     let tracker = vision::track(&frames, params);
     // Each mark kept: its error against the drawn one, px, its frame and contrast.
-    let kept = marks_against_truth(&clip, &tracker);
+    let kept = marks_against_truth(&clip, &tracker, &tracker.params.marks);
     let worst = kept.iter().map(|p| p.0).fold(0.0, f64::max);
     assert!(
         worst < 3.0,

@@ -25,8 +25,8 @@ pub(super) fn fix(x: f64, y: f64, r: f64, mark: Option<(f64, f64)>) -> Result<Fi
             sigma: [0.05; 3],
             rms: 0.2,
             points: 100,
-            coverage: 0.6,
-            sectors: 0,
+            // The upper half of the circle (sectors 18–35): the rail hides the rest.
+            sectors: 0xF_FFFC_0000,
             lowest: y + K * r,
             polarity: 1.0,
         },

@@ -6,30 +6,10 @@
 //! 0.6 rad). Two marks in consecutive frames that turned by under half a frame's
 //! spin (the marks' net turn a frame about them) show one picture: both left out.
 
-use super::decoded_look;
+use super::{decoded_look, marks_against_truth};
 use crate::film::looks::Size;
 use groovelab::vision::params::MarkChecks;
-use groovelab::vision::{self, Params, mark_check, tracks};
-
-/// Each mark kept of `tracker`'s frames checked with `checks`: its error against the
-/// drawn one (px) and its frame.
-fn kept(
-    clip: &crate::film::looks::Clip,
-    tracker: &vision::Tracker,
-    checks: &MarkChecks,
-) -> Vec<(f64, usize)> {
-    let ordered = tracks::ordered(&tracker.frames);
-    let mut out = Vec::new();
-    for (k, fixes) in mark_check::checked(&ordered, checks).iter().enumerate() {
-        for fix in fixes.iter().flatten() {
-            let Some(m) = fix.mark else { continue };
-            let c = fix.outline.circle;
-            let t = clip.film.ball_nearest(k, (c.x, c.y));
-            out.push(((m.x - t.mark.0).hypot(m.y - t.mark.1), k));
-        }
-    }
-    out
-}
+use groovelab::vision::{self, Params};
 
 #[test]
 fn a_mark_shown_twice_while_the_ball_spins_is_left_out() {
@@ -37,8 +17,9 @@ fn a_mark_shown_twice_while_the_ball_spins_is_left_out() {
         return;
     };
     let tracker = vision::track(&frames, Params::default());
-    let worst = |kept: &[(f64, usize)]| kept.iter().map(|p| p.0).fold(0.0, f64::max);
-    let with = kept(&clip, &tracker, &tracker.params.marks);
+    let worst = |kept: &[(f64, usize, f64)]| kept.iter().map(|p| p.0).fold(0.0, f64::max);
+    // Each mark kept: its error against the drawn one, px, its frame and contrast.
+    let with = marks_against_truth(&clip, &tracker, &tracker.params.marks);
     assert!(worst(&with) < 3.0, "a mark over 3 px off: {with:?}");
     assert!(with.len() >= 30, "{} marks kept", with.len());
     // Without the check, the stale mark is kept.
@@ -46,6 +27,6 @@ fn a_mark_shown_twice_while_the_ball_spins_is_left_out() {
         repeat_px: f64::INFINITY,
         ..tracker.params.marks
     };
-    let without = kept(&clip, &tracker, &off);
+    let without = marks_against_truth(&clip, &tracker, &off);
     assert!(worst(&without) > 5.0, "no stale mark: {without:?}");
 }

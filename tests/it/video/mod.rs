@@ -78,19 +78,18 @@ pub(crate) fn decoded_look(
     Some((clip, frames.map(|f| f.unwrap().1).collect()))
 }
 
-/// The marks `tracker` keeps of `clip` once checked (`mark_check::checked`), each
-/// as its distance from the drawn mark (px), its frame and its contrast.
+/// The marks `tracker` keeps of `clip` once checked with `checks`
+/// (`mark_check::checked`), each as its distance from the drawn mark (px), its frame
+/// and its contrast.
 pub(crate) fn marks_against_truth(
     clip: &crate::film::looks::Clip,
     tracker: &groovelab::vision::Tracker,
+    checks: &groovelab::vision::params::MarkChecks,
 ) -> Vec<(f64, usize, f64)> {
     use groovelab::vision::{mark_check, tracks};
     let ordered = tracks::ordered(&tracker.frames);
     let mut kept = Vec::new();
-    for (k, fixes) in mark_check::checked(&ordered, &tracker.params.marks)
-        .iter()
-        .enumerate()
-    {
+    for (k, fixes) in mark_check::checked(&ordered, checks).iter().enumerate() {
         for fix in fixes.iter().flatten() {
             let Some(m) = fix.mark else { continue };
             let c = fix.outline.circle;
