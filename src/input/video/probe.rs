@@ -39,6 +39,9 @@ pub fn probe(path: &Path) -> Result<Probe, VideoError> {
     let json: Option<Value> = serde_json::from_slice(&out.stdout).ok();
     let has_format = json.as_ref().is_some_and(|j| j.get("format").is_some());
     if !out.status.success() || !has_format {
+        if is_text(path) {
+            return Err(err(VideoProblem::Text));
+        }
         let why = String::from_utf8_lossy(&out.stderr);
         let why = why
             .lines()
@@ -56,6 +59,30 @@ pub fn probe(path: &Path) -> Result<Probe, VideoError> {
     Ok(Probe {
         json: json.unwrap_or(Value::Null),
     })
+}
+
+/// True when the file begins as text does (a data table, a tracks file): its first
+/// 4 KiB are UTF-8 (a character cut at the end aside) with no control character but
+/// tabs and line ends. Every video container has binary bytes in its first block.
+fn is_text(path: &Path) -> bool {
+    use std::io::Read;
+    let mut head = Vec::with_capacity(4096);
+    let read = std::fs::File::open(path).and_then(|f| f.take(4096).read_to_end(&mut head));
+    if read.is_err() || head.is_empty() {
+        return false;
+    }
+    let text = match std::str::from_utf8(&head) {
+        Ok(t) => t,
+        // A character cut by the 4 KiB: the part before it is the test.
+        Err(e) if e.error_len().is_none() => {
+            std::str::from_utf8(head.get(..e.valid_up_to()).unwrap_or_default()).unwrap_or("")
+        }
+        Err(_) => return false,
+    };
+    !text.is_empty()
+        && text
+            .chars()
+            .all(|c| !c.is_control() || matches!(c, '\t' | '\n' | '\r'))
 }
 
 /// `path` as ffmpeg's `file:` URL, so a name like `-x.mp4` or `a:b.mp4` is a file.
@@ -96,6 +123,11 @@ impl Probe {
             }));
         };
         let codec = v["codec_name"].as_str().unwrap_or("?");
+        // ffmpeg reads a text file (a .txt of tracks, say) as a video of its
+        // characters drawn as in a terminal (the `tty` demuxer, codec `ansi`).
+        if format_name == "tty" || codec == "ansi" {
+            return Err(err(VideoProblem::Text));
+        }
         let frames_said = v["nb_frames"].as_str().and_then(|n| n.parse::<u64>().ok());
         let still = format_name.contains("image2")
             || format_name.ends_with("_pipe")

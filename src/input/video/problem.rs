@@ -59,6 +59,10 @@ pub enum VideoProblem {
     #[error("has no video stream, expected a video")]
     NoVideoStream,
     #[error(
+        "is a text file, not a video; a data file (tracks, a table) is read with --data FILE, e.g. groovelab fit --data FILE"
+    )]
+    Text,
+    #[error(
         "is a still image ({codec}), not a video; give a video, or a folder of numbered frames"
     )]
     StillVideo { codec: String },

@@ -545,7 +545,31 @@ fn files_that_are_no_video_are_refused_with_one_line() {
     if !ffmpeg() {
         return;
     }
-    refused(&clip, &[], "is not a video ffmpeg can read");
+    refused(&clip, &[], "is a text file, not a video");
+    let junk = d.join("junk.mp4");
+    std::fs::write(
+        &junk,
+        (0..4000u32)
+            .map(|i| (i * 7919 % 251) as u8)
+            .collect::<Vec<u8>>(),
+    )
+    .unwrap();
+    refused(&junk, &[], "is not a video ffmpeg can read");
+    // Text: a tracks file (ffmpeg would draw its characters as a video, its tty
+    // demuxer, and find "balls" in them) and tables ffprobe cannot read at all.
+    let rows: String = (0..300).map(|i| format!("{}\t{}\n", i, i * 2)).collect();
+    for (name, head) in [
+        (
+            "tracks.txt",
+            "# groovelab track clip.mp4: video (h264), 480×270\n",
+        ),
+        ("table.txt", "t\tx\n"),
+        ("table.csv", "t_s,v_cm_m_per_s,v_t_m_per_s\n"),
+    ] {
+        let file = d.join(name);
+        std::fs::write(&file, format!("{head}{rows}")).unwrap();
+        refused(&file, &[], "is a text file, not a video");
+    }
     // Truncated: the first half of an mp4 (its index is at the end).
     let whole = write_mp4(&d, "whole.mp4", 100.0, &[], 12);
     let bytes = std::fs::read(&whole).unwrap();
