@@ -239,6 +239,41 @@ fn random_looks_frame_both_balls_where_the_truth_says() {
     }
 }
 
+/// A wall "of the balls' brightness" is of another colour (issue 34's range): where
+/// the ball has a colour of its own, the wall's hue lies a twelfth of the colour
+/// circle (30°) or more from it, at either size. (Drawn at random, seed 8's dark red ball
+/// had a wall of its brightness 12° of hue from it: no eye could see the ball.)
+#[test]
+fn a_wall_of_the_balls_brightness_is_of_another_colour() {
+    let scene = paper_scene();
+    let mut judged = 0;
+    for size in [Size::Small, Size::Full] {
+        for seed in 0..400 {
+            let clip = looks::draw(&scene, seed, size);
+            let paint = &clip.look.paint;
+            let (ball, ball_s) = looks::hue_saturation(paint.ball);
+            let (wall, _) = looks::hue_saturation(paint.wall.0);
+            if !clip.name.contains("same-brightness") || ball_s <= 0.15 {
+                continue;
+            }
+            let apart = (ball - wall).rem_euclid(1.0);
+            let apart = apart.min(1.0 - apart);
+            assert!(
+                apart >= 1.0 / 12.0 - 1e-6,
+                "seed {seed} ({size:?}), {}: wall hue {:.0}° from the ball's",
+                clip.name,
+                apart * 360.0
+            );
+            judged += 1;
+        }
+    }
+    // Enough such looks drawn for the rule to be tried (about one in twelve).
+    assert!(
+        judged >= 12,
+        "only {judged} coloured balls on walls of their brightness"
+    );
+}
+
 /// The first frame differs from an empty wall around the left ball's upper half
 /// (above the rail): mean absolute difference of at least a few levels there.
 fn assert_ball_drawn(film: &Film, name: &str) {

@@ -52,6 +52,44 @@ fn hsv(h: f64, s: f64, v: f64) -> Rgb {
     }
 }
 
+/// The hue (0–1) and saturation (0–1) of `c`, as [`hsv`] takes them.
+pub fn hue_saturation(c: Rgb) -> (f64, f64) {
+    let [r, g, b] = c;
+    let (max, min) = (r.max(g).max(b), r.min(g).min(b));
+    let chroma = max - min;
+    if max <= 0.0 || chroma <= 0.0 {
+        return (0.0, 0.0);
+    }
+    let sector = if max == r {
+        ((g - b) / chroma).rem_euclid(6.0)
+    } else if max == g {
+        (b - r) / chroma + 2.0
+    } else {
+        (r - g) / chroma + 4.0
+    };
+    (sector / 6.0, chroma / max)
+}
+
+/// The hue of a wall "of the balls' brightness in another colour" (issue 34), from
+/// the uniform draw `u`: at least a twelfth of the colour circle (30°: red against
+/// orange) from the hue of
+/// `ball` where the ball has a colour of its own (saturation over 0.15), any hue
+/// where it is grey. A wall of the ball's brightness and hue hides the ball from any
+/// eye; the looks table's seed 8 drew one (a dark red ball on a dark red wall 12°
+/// of hue from it, at crf 39). A draw within 30° is carried, in proportion, onto the
+/// hues allowed (uniform there again), so every other draw keeps its hue and every
+/// other look is drawn as before.
+fn another_hue(ball: Rgb, u: f64) -> f64 {
+    let (hue, saturation) = hue_saturation(ball);
+    // Where `u` lies in the arc of hues too near the ball's, 0–1 across it.
+    let near = (u - hue + 1.0 / 12.0).rem_euclid(1.0) * 6.0;
+    if saturation <= 0.15 || near >= 1.0 {
+        u
+    } else {
+        (hue + 1.0 / 12.0 + near * 5.0 / 6.0).rem_euclid(1.0)
+    }
+}
+
 /// `c` scaled to luma `y` (clamped to the 0–255 levels).
 fn with_luma(c: Rgb, y: f64) -> Rgb {
     let l = luma(c).max(1.0);
@@ -60,6 +98,26 @@ fn with_luma(c: Rgb, y: f64) -> Rgb {
 
 /// A random look of `scene`, seeded, framed so both balls stay in view.
 pub fn random(scene: &Scene, seed: u64, size: Size) -> Clip {
+    let drawn = draw(scene, seed, size);
+    let film = Film::new(scene, drawn.look, drawn.to);
+    let frames = film.frames_to(drawn.to);
+    Clip {
+        film,
+        frames,
+        name: drawn.name,
+    }
+}
+
+/// A look drawn, not yet filmed: the look, the clip's end (s from the impact) and
+/// the look in words.
+pub struct Drawn {
+    pub look: Look,
+    pub to: f64,
+    pub name: String,
+}
+
+/// The look [`random`] films, drawn only (no picture made).
+pub fn draw(scene: &Scene, seed: u64, size: Size) -> Drawn {
     let mut g = Rng::new(seed.wrapping_mul(0x2545_F491_4F6C_DD1D));
     let mut words: Vec<String> = Vec::new();
 
@@ -179,7 +237,10 @@ pub fn random(scene: &Scene, seed: u64, size: Size) -> Clip {
     let wall: Rgb = match wall_kind {
         "dark" => hsv(g.unit(), g.range(0.0, 0.6), g.range(20.0, 90.0)),
         "light" => hsv(g.unit(), g.range(0.0, 0.5), g.range(170.0, 245.0)),
-        "same-brightness" => with_luma(hsv(g.unit(), g.range(0.5, 0.9), 200.0), lit),
+        "same-brightness" => with_luma(
+            hsv(another_hue(ball, g.unit()), g.range(0.5, 0.9), 200.0),
+            lit,
+        ),
         _ => hsv(g.unit(), g.range(0.0, 1.0), g.range(20.0, 245.0)),
     };
     let texture = match g.pick(&TEXTURES) {
@@ -305,11 +366,9 @@ pub fn random(scene: &Scene, seed: u64, size: Size) -> Clip {
         both: true,
         crf,
     };
-    let film = Film::new(scene, look, to);
-    let frames = film.frames_to(to);
-    Clip {
-        film,
-        frames,
+    Drawn {
+        look,
+        to,
         name: words.join(", "),
     }
 }
