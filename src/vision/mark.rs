@@ -2,8 +2,9 @@
 //! the spot inside the visible disc that stands out most from the ball's own shading
 //! (each pixel against the mean of a box around it), then located to sub-pixel by the
 //! centroid of its contrast against the shading fitted as a plane on a ring around it,
-//! twice, the second time about the first centroid. Its standard error follows from
-//! the pixel noise through the centroid's formula.
+//! twice, the second time about the first centroid; last, measured again by a model
+//! of a drawn disc over the shading (`mark_fit`) where the model fits. Its standard
+//! error follows from the pixel noise through the centroid's formula.
 
 use super::circle::Outline;
 use super::gray::Gray;
@@ -26,8 +27,16 @@ pub struct Mark {
 /// 0), or of the sign found before (−1 darker, +1 lighter: once known, a highlight
 /// of the other sign is not taken for it); it must stand out by `levels.0` noise
 /// scatters and `levels.1` luma levels, at least, and is located by the centroid of
-/// its contrast above `levels.2` of its peak (`Params::mark_cut`).
-pub fn find(img: &Gray, ball: &Outline, noise: f64, sign: f64, levels: (f64, f64, f64)) -> InDisc {
+/// its contrast above `levels.2` of its peak (`Params::mark_cut`), then by the disc
+/// model where its edge is no softer than `levels.3` px (`Params::mark_soft`; 0:
+/// the centroid always).
+pub fn find(
+    img: &Gray,
+    ball: &Outline,
+    noise: f64,
+    sign: f64,
+    levels: (f64, f64, f64, f64),
+) -> InDisc {
     let mut spots = Vec::new();
     let mark = find_mark(img, ball, noise, sign, levels, &mut spots);
     InDisc {
@@ -93,7 +102,7 @@ fn find_mark(
     ball: &Outline,
     noise: f64,
     sign: f64,
-    levels: (f64, f64, f64),
+    levels: (f64, f64, f64, f64),
     spots: &mut Vec<(f64, isize, isize)>,
 ) -> Option<Mark> {
     let least = (levels.0 * noise).max(levels.1);
@@ -175,7 +184,78 @@ fn find_mark(
             break;
         }
     }
-    out.filter(|m| fits(m.x, m.y))
+    let found = out.filter(|m| fits(m.x, m.y))?;
+    Some(refined(img, found, size, peak.signum(), &on_ball, levels.3))
+}
+
+/// The mark `m` (its centroid, of a spot of radius `size`, px, and sign `sign`)
+/// measured again by the disc model ([`super::mark_fit`]) over the centroid's ring
+/// (2.2 spot radii + 1.5 px), on the ball above the rail; the model's place is
+/// taken where its edge is no softer than `soft` px, it moved by under the spot's
+/// radius, its radius is a pixel or more and its level stands out from the
+/// shading with the mark's sign. Else the centroid stays.
+fn refined(img: &Gray, m: Mark, size: f64, sign: f64, ball: &Surface, soft: f64) -> Mark {
+    let at = (m.x, m.y);
+    let (inner, ring0, ring1) = (1.4 * size + 1.0, 1.6 * size + 1.0, 2.2 * size + 1.5);
+    let Some(plane) = ring_plane(img, at, (ring0, ring1), ball) else {
+        return m;
+    };
+    let Some(level) = mark_level(img, at, inner, sign) else {
+        return m;
+    };
+    let start = super::mark_fit::Start {
+        at,
+        radius: size,
+        level,
+        plane: (plane.x, plane.y, plane.z),
+    };
+    let Some(d) = super::mark_fit::fit(img, start, ring1, |x, y| ball.holds(x, y)) else {
+        return m;
+    };
+    let moved = (d.x - m.x).hypot(d.y - m.y);
+    let kept = d.soft <= soft
+        && moved <= size
+        && (1.0..=2.0 * ring1).contains(&d.radius)
+        && sign * (d.level - d.shade) > 0.0;
+    if kept {
+        Mark {
+            x: d.x,
+            y: d.y,
+            ..m
+        }
+    } else {
+        m
+    }
+}
+
+/// The mark's level to start its model from: of the pixels within `inner` px of
+/// `at`, the tenth darkest (a dark mark, `sign` −1) or lightest (+1): most of the
+/// disc is the mark, and a tenth in leaves its darkest noise out.
+fn mark_level(img: &Gray, at: (f64, f64), inner: f64, sign: f64) -> Option<f64> {
+    let mut v: Vec<f32> = Vec::new();
+    let (x0, y0) = (
+        (at.0 - inner).floor() as isize,
+        (at.1 - inner).floor() as isize,
+    );
+    let (x1, y1) = (
+        (at.0 + inner).floor() as isize + 1,
+        (at.1 + inner).floor() as isize + 1,
+    );
+    for y in y0.max(0)..=y1.min(img.height as isize - 1) {
+        for x in x0.max(0)..=x1.min(img.width as isize - 1) {
+            if (x as f64 - at.0).hypot(y as f64 - at.1) <= inner {
+                v.push(img.at(x as usize, y as usize));
+            }
+        }
+    }
+    v.sort_unstable_by(f32::total_cmp);
+    let n = v.len();
+    let i = if sign < 0.0 {
+        n / 10
+    } else {
+        n.checked_sub(1 + n / 10)?
+    };
+    v.get(i).map(|&l| f64::from(l))
 }
 
 /// Where the ball's own surface is seen: within `inside` px of its centre, above the
@@ -234,32 +314,7 @@ fn centroid(
     {
         return None;
     }
-    let mut ata = nalgebra::Matrix3::<f64>::zeros();
-    let mut atb = nalgebra::Vector3::<f64>::zeros();
-    let (mut ring, mut kept) = (0usize, 0usize);
-    for y in (cy - reach)..=(cy + reach) {
-        for x in (cx - reach)..=(cx + reach) {
-            let (dx, dy) = (x as f64 - at.0, y as f64 - at.1);
-            let r = dx.hypot(dy);
-            if (ring0..=ring1).contains(&r) {
-                ring += 1;
-                // Only the ring's part on the ball: the wall and the rail beyond
-                // its limb are no part of its shading.
-                if !ball.holds(x as f64, y as f64) {
-                    continue;
-                }
-                kept += 1;
-                let b = nalgebra::Vector3::new(1.0, dx, dy);
-                ata += b * b.transpose();
-                atb += b * f64::from(img.at(x as usize, y as usize));
-            }
-        }
-    }
-    // At least half the ring, so that the plane is held on both sides of the spot.
-    if 2 * kept < ring {
-        return None;
-    }
-    let plane = ata.try_inverse()? * atb;
+    let plane = ring_plane(img, at, (ring0, ring1), ball)?;
     // Each pixel of the spot's disc and its contrast against the shading.
     let mut px: Vec<(f64, f64, f64)> = Vec::new();
     for y in (cy - reach)..=(cy + reach) {
@@ -303,6 +358,51 @@ fn centroid(
         sigma: noise.max(0.5) * spread.sqrt() / sw,
         contrast: sign * total / (std::f64::consts::PI * size * size),
     })
+}
+
+/// The ball's shading about `at` as a plane (level at `at`, slopes along x and y),
+/// fitted to the ring `ring.0 ..= ring.1` px about it, its part on the ball only;
+/// `None` with under half the ring there (the plane is held on both sides of the
+/// spot) or none inside the frame.
+fn ring_plane(
+    img: &Gray,
+    at: (f64, f64),
+    ring: (f64, f64),
+    ball: &Surface,
+) -> Option<nalgebra::Vector3<f64>> {
+    let reach = ring.1.ceil() as isize;
+    let (cx, cy) = (at.0.round() as isize, at.1.round() as isize);
+    if cx - reach < 0
+        || cy - reach < 0
+        || cx + reach >= img.width as isize
+        || cy + reach >= img.height as isize
+    {
+        return None;
+    }
+    let mut ata = nalgebra::Matrix3::<f64>::zeros();
+    let mut atb = nalgebra::Vector3::<f64>::zeros();
+    let (mut all, mut kept) = (0usize, 0usize);
+    for y in (cy - reach)..=(cy + reach) {
+        for x in (cx - reach)..=(cx + reach) {
+            let (dx, dy) = (x as f64 - at.0, y as f64 - at.1);
+            if (ring.0..=ring.1).contains(&dx.hypot(dy)) {
+                all += 1;
+                // Only the ring's part on the ball: the wall and the rail beyond
+                // its limb are no part of its shading.
+                if !ball.holds(x as f64, y as f64) {
+                    continue;
+                }
+                kept += 1;
+                let b = nalgebra::Vector3::new(1.0, dx, dy);
+                ata += b * b.transpose();
+                atb += b * f64::from(img.at(x as usize, y as usize));
+            }
+        }
+    }
+    if 2 * kept < all {
+        return None;
+    }
+    Some(ata.try_inverse()? * atb)
 }
 
 /// Sums of a box of the frame for box means in O(1).

@@ -571,7 +571,7 @@ impl Tracker {
             o,
             noise,
             sign,
-            (p.mark_sigmas, p.mark_levels, p.mark_cut),
+            (p.mark_sigmas, p.mark_levels, p.mark_cut, p.mark_soft),
         );
         if sign == 0.0
             && let Some(m) = found.mark

@@ -88,7 +88,7 @@ proptest! {
             lowest: cy + 0.45 * r,
             polarity: if light_mark { -1.0 } else { 1.0 },
         };
-        let found = mark::find(&img, &ball, 1.5, 0.0, (6.0, 10.0, 0.3)).mark;
+        let found = mark::find(&img, &ball, 1.5, 0.0, (6.0, 10.0, 0.3, 1.4)).mark;
         let m = found.ok_or_else(|| TestCaseError::fail("no mark found"))?;
         let err = (m.x - mx).hypot(m.y - my);
         prop_assert!(err < 0.4, "mark at ({:.2}, {:.2}), drawn at ({mx:.2}, {my:.2}): {err:.2} px off", m.x, m.y);

@@ -13,6 +13,7 @@ pub(crate) mod found_frames;
 pub(crate) mod impact_follow;
 pub(crate) mod looks;
 mod mark_highlight;
+mod mark_model;
 mod mark_place;
 mod marks_crowded;
 mod marks_ghost;
