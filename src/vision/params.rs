@@ -97,6 +97,15 @@ pub struct Params {
     /// ball (the mark, a highlight). Default 0.6: the blob of a ball is the ball
     /// plus at most a shadow's fringe.
     pub smallest_in_blob: f64,
+    /// Before the balls' radius is known, a fit whose centre lies inside another
+    /// blob of its frame and that is smaller than this share of that blob is that
+    /// blob's mark or highlight, found as a blob of its own, not a first lock.
+    /// Default 0.6, as `smallest_in_blob`: a ball's blob is the ball plus at most a
+    /// shadow's fringe, so a ball's fit is not that much smaller than any blob that
+    /// holds it (the looks table's seed 15: a dark mark of 11.8 px, fitted in
+    /// colour inside its ball's blob of 63–87 px, set the radius); 0 takes every
+    /// such fit.
+    pub inside_other_blob: f64,
     /// A blob of the difference from the background is opened (eroded, then grown
     /// back) by a square this share of its height across (rounded down to whole
     /// coarse pixels either side of the middle one: blobs under 8 coarse pixels tall
@@ -502,6 +511,7 @@ impl Default for Params {
             max_rms: 1.0,
             radius_tolerance: 0.15,
             smallest_in_blob: 0.6,
+            inside_other_blob: 0.6,
             fringe_share: 0.125,
             outer_reach: 2.2,
             outer_step: 10.0,

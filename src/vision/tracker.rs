@@ -390,6 +390,7 @@ impl Tracker {
         self.search_wide(frame, &coarse, &mut fits, f);
         self.follow(frame, &mut fits);
         self.seed(frame, &mut fits);
+        self.no_locks_inside_blobs(&coarse.balls, &mut fits);
         // One fit per ball: of fits of one ball (a blob and the follower), the first.
         let mut kept: Vec<Result<Outline, LeftOut>> = Vec::new();
         for fit in fits {
@@ -531,6 +532,30 @@ impl Tracker {
                 fit
             }
             (fit, _) => fit,
+        }
+    }
+
+    /// A first lock inside a larger blob is no ball: before the balls' radius is
+    /// known, a frame's good fits whose centre lies inside another blob of the frame
+    /// (its guess) and that are smaller than `inside_other_blob` of it are poor. They
+    /// are that blob's mark or highlight, found as a blob of its own (the looks
+    /// table's seed 15: a steel ball's dark mark, 11.8 px in colour, inside the
+    /// ball's blob of 63–87 px, set a radius of 10.6 px for 53.6 and no ball was
+    /// found); a ball's own fit lies inside its blob, which is the ball plus at most
+    /// a shadow's fringe (`inside_other_blob` of it or more).
+    fn no_locks_inside_blobs(&self, blobs: &[Blob], fits: &mut [Result<Outline, LeftOut>]) {
+        if self.radius.is_some() {
+            return;
+        }
+        let guesses: Vec<Circle> = blobs.iter().map(Blob::guess).collect();
+        let share = self.params.inside_other_blob;
+        for fit in fits.iter_mut() {
+            if fit
+                .as_ref()
+                .is_ok_and(|o| inside_a_larger_blob(&o.circle, &guesses, share))
+            {
+                *fit = Err(LeftOut::Poor);
+            }
         }
     }
 
@@ -1420,6 +1445,15 @@ fn upper_disc(frame: &Frame, c: &Circle) -> Option<[f32; 3]> {
         select::median(&mut u)?,
         select::median(&mut v)?,
     ])
+}
+
+/// True when the circle `c` (a fit) has its centre inside one of the blobs'
+/// circles `blobs` (their guesses) and is smaller than `share` of it: that blob's
+/// mark or highlight, not a ball (`Params::inside_other_blob`); `share` 0: never.
+pub fn inside_a_larger_blob(c: &Circle, blobs: &[Circle], share: f64) -> bool {
+    blobs
+        .iter()
+        .any(|g| c.r < share * g.r && (g.x - c.x).hypot(g.y - c.y) < g.r)
 }
 
 /// True when a frame's good fits' radii (`radii`, px) lie farther apart than

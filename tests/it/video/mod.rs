@@ -11,6 +11,7 @@ mod first_locks;
 mod follow_gap;
 pub(crate) mod found_frames;
 pub(crate) mod impact_follow;
+mod inner_lock;
 pub(crate) mod looks;
 mod mark_highlight;
 mod mark_model;
