@@ -45,7 +45,9 @@ pub struct Disc {
 /// Least edge softness the fit may take, px (the step of a sharp edge sampled by
 /// whole pixels).
 const SOFTEST: f64 = 0.3;
-/// Rounds of Levenberg–Marquardt at most, and tries of its damping a round.
+/// Rounds of Levenberg–Marquardt at most, and tries of its damping a round. (By hand,
+/// eight parameters on fixed-size matrices: the `levenberg-marquardt` crate, 0.15, is
+/// built on nalgebra 0.34, this crate on 0.35, whose types it would not take.)
 const ROUNDS: usize = 30;
 const TRIES: usize = 10;
 
