@@ -161,7 +161,7 @@ fn find_mark(
     // wholly on the ball was asked before: a mark near the limb was then found only
     // where its centroid fell short of it, toward the centre: 3–5 px on looks with the
     // mark at 0.6–0.7 R.)
-    let spot = 1.4 * size + 1.0;
+    let spot = rings(size).0;
     let on_ball = Surface {
         x: c.x,
         y: c.y,
@@ -196,7 +196,7 @@ fn find_mark(
 /// shading with the mark's sign. Else the centroid stays.
 fn refined(img: &Gray, m: Mark, size: f64, sign: f64, ball: &Surface, soft: f64) -> Mark {
     let at = (m.x, m.y);
-    let (inner, ring0, ring1) = (1.4 * size + 1.0, 1.6 * size + 1.0, 2.2 * size + 1.5);
+    let (inner, ring0, ring1) = rings(size);
     let Some(plane) = ring_plane(img, at, (ring0, ring1), ball) else {
         return m;
     };
@@ -304,16 +304,9 @@ fn centroid(
     ball: &Surface,
     cut: f64,
 ) -> Option<Mark> {
-    let (inner, ring0, ring1) = (1.4 * size + 1.0, 1.6 * size + 1.0, 2.2 * size + 1.5);
+    let (inner, ring0, ring1) = rings(size);
     let reach = ring1.ceil() as isize;
-    let (cx, cy) = (at.0.round() as isize, at.1.round() as isize);
-    if cx - reach < 0
-        || cy - reach < 0
-        || cx + reach >= img.width as isize
-        || cy + reach >= img.height as isize
-    {
-        return None;
-    }
+    let (cx, cy) = in_frame(img, at, reach)?;
     let plane = ring_plane(img, at, (ring0, ring1), ball)?;
     // Each pixel of the spot's disc and its contrast against the shading.
     let mut px: Vec<(f64, f64, f64)> = Vec::new();
@@ -360,6 +353,22 @@ fn centroid(
     })
 }
 
+/// The centroid's disc and the shading's ring about a spot of radius `size`, px:
+/// the disc within 1.4 spot radii (+ 1 px), the ring from 1.6 to 2.2 (+ 1, + 1.5 px).
+fn rings(size: f64) -> (f64, f64, f64) {
+    (1.4 * size + 1.0, 1.6 * size + 1.0, 2.2 * size + 1.5)
+}
+
+/// The pixel nearest `at` when the square `reach` px about it lies in the frame.
+fn in_frame(img: &Gray, at: (f64, f64), reach: isize) -> Option<(isize, isize)> {
+    let (cx, cy) = (at.0.round() as isize, at.1.round() as isize);
+    let inside = cx - reach >= 0
+        && cy - reach >= 0
+        && cx + reach < img.width as isize
+        && cy + reach < img.height as isize;
+    inside.then_some((cx, cy))
+}
+
 /// The ball's shading about `at` as a plane (level at `at`, slopes along x and y),
 /// fitted to the ring `ring.0 ..= ring.1` px about it, its part on the ball only;
 /// `None` with under half the ring there (the plane is held on both sides of the
@@ -371,14 +380,7 @@ fn ring_plane(
     ball: &Surface,
 ) -> Option<nalgebra::Vector3<f64>> {
     let reach = ring.1.ceil() as isize;
-    let (cx, cy) = (at.0.round() as isize, at.1.round() as isize);
-    if cx - reach < 0
-        || cy - reach < 0
-        || cx + reach >= img.width as isize
-        || cy + reach >= img.height as isize
-    {
-        return None;
-    }
+    let (cx, cy) = in_frame(img, at, reach)?;
     let mut ata = nalgebra::Matrix3::<f64>::zeros();
     let mut atb = nalgebra::Vector3::<f64>::zeros();
     let (mut all, mut kept) = (0usize, 0usize);

@@ -43,33 +43,18 @@ fn picture(d: &Drawn) -> Gray {
         ..Paint::default()
     };
     let (cx, cy) = d.centre;
-    let mut img = Gray::filled(w, h, 0);
-    for y in 0..h {
-        for x in 0..w {
-            let mut sum = 0.0;
-            for sy in 0..4 {
-                for sx in 0..4 {
-                    let (px, py) = (
-                        x as f64 + (sx as f64 + 0.5) / 4.0 - 0.5,
-                        y as f64 + (sy as f64 + 0.5) / 4.0 - 0.5,
-                    );
-                    let q = ((px - cx) / d.r, (py - cy) / d.r);
-                    sum += if py > d.rail {
-                        rail
-                    } else if q.0.hypot(q.1) > 1.0 {
-                        wall
-                    } else if (px - d.mark.0).hypot(py - d.mark.1) < d.mark.2 {
-                        ink
-                    } else {
-                        paint::luma(look.shade(q.0, q.1))
-                    };
-                }
-            }
-            let noise = (((x * 7 + y * 13) % 5) as f64) - 2.0;
-            img.data[y * w + x] = (sum / 16.0 + noise).round().clamp(0.0, 255.0) as u8;
+    super::supersampled((w, h), |px, py| {
+        let q = ((px - cx) / d.r, (py - cy) / d.r);
+        if py > d.rail {
+            rail
+        } else if q.0.hypot(q.1) > 1.0 {
+            wall
+        } else if (px - d.mark.0).hypot(py - d.mark.1) < d.mark.2 {
+            ink
+        } else {
+            paint::luma(look.shade(q.0, q.1))
         }
-    }
-    img
+    })
 }
 
 /// The mark found on `d`'s picture with the edge softness `soft` (`Params::mark_soft`;

@@ -22,33 +22,16 @@ fn picture(
     (wall, centre, limb): (f64, f64, f64),
     (mx, my, rho, ink): (f64, f64, f64, f64),
 ) -> Gray {
-    let mut img = Gray::filled(w, h, 0);
-    for y in 0..h {
-        for x in 0..w {
-            let mut sum = 0.0;
-            for sy in 0..4 {
-                for sx in 0..4 {
-                    // Pixel (x, y) is centred on the point (x, y), as the tracker
-                    // and the film's renderer take it.
-                    let (px, py) = (
-                        x as f64 + (sx as f64 + 0.5) / 4.0 - 0.5,
-                        y as f64 + (sy as f64 + 0.5) / 4.0 - 0.5,
-                    );
-                    let d = (px - cx).hypot(py - cy) / r;
-                    sum += if d > 1.0 {
-                        wall
-                    } else if (px - mx).hypot(py - my) < rho {
-                        ink
-                    } else {
-                        centre + (limb - centre) * d * d
-                    };
-                }
-            }
-            let noise = (((x * 7 + y * 13) % 5) as f64) - 2.0;
-            img.data[y * w + x] = (sum / 16.0 + noise).round().clamp(0.0, 255.0) as u8;
+    super::supersampled((w, h), |px, py| {
+        let d = (px - cx).hypot(py - cy) / r;
+        if d > 1.0 {
+            wall
+        } else if (px - mx).hypot(py - my) < rho {
+            ink
+        } else {
+            centre + (limb - centre) * d * d
         }
-    }
-    img
+    })
 }
 
 proptest! {

@@ -163,6 +163,33 @@ pub(crate) fn drawn_frame(
     groovelab::vision::Frame::from_rgb(&img)
 }
 
+/// A grey picture `w × h` of the scene `level(x, y)` (levels at a point, px): each
+/// pixel the mean of 4 × 4 samples over it (edges anti-aliased, as a camera's; pixel
+/// `(x, y)` is centred on the point `(x, y)`, as the tracker and the films' renderer
+/// take it) plus a fixed pattern of ±2 levels of noise.
+pub(crate) fn supersampled(
+    (w, h): (usize, usize),
+    level: impl Fn(f64, f64) -> f64,
+) -> groovelab::vision::gray::Gray {
+    let mut img = groovelab::vision::gray::Gray::filled(w, h, 0);
+    for y in 0..h {
+        for x in 0..w {
+            let mut sum = 0.0;
+            for sy in 0..4 {
+                for sx in 0..4 {
+                    sum += level(
+                        x as f64 + (sx as f64 + 0.5) / 4.0 - 0.5,
+                        y as f64 + (sy as f64 + 0.5) / 4.0 - 0.5,
+                    );
+                }
+            }
+            let noise = (((x * 7 + y * 13) % 5) as f64) - 2.0;
+            img.data[y * w + x] = (sum / 16.0 + noise).round().clamp(0.0, 255.0) as u8;
+        }
+    }
+    img
+}
+
 /// A folder (in the scratch area `area`) of `count` frames of 64×48 px, all one grey
 /// and no ball: PNGs, so no ffmpeg is needed.
 pub(crate) fn blank_frames(area: &str, count: usize) -> std::path::PathBuf {
