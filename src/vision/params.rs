@@ -94,18 +94,13 @@ pub struct Params {
     /// found so far is not a ball. Default 0.15 (a blur widens the edge by a few %).
     pub radius_tolerance: f64,
     /// A ball fitted smaller than this share of the blob it was found in is not the
-    /// ball (the mark, a highlight). Default 0.6: the blob of a ball is the ball
-    /// plus at most a shadow's fringe.
+    /// ball (the mark, a highlight); so, before the balls' radius is known, is a fit
+    /// inside another blob of its frame smaller than this share of it (that blob's
+    /// mark or highlight found as a blob of its own: the looks table's seed 15, a
+    /// dark mark of 11.8 px fitted in colour inside its ball's blob of 63–87 px, set
+    /// the radius). Default 0.6: the blob of a ball is the ball plus at most a
+    /// shadow's fringe.
     pub smallest_in_blob: f64,
-    /// Before the balls' radius is known, a fit whose centre lies inside another
-    /// blob of its frame and that is smaller than this share of that blob is that
-    /// blob's mark or highlight, found as a blob of its own, not a first lock.
-    /// Default 0.6, as `smallest_in_blob`: a ball's blob is the ball plus at most a
-    /// shadow's fringe, so a ball's fit is not that much smaller than any blob that
-    /// holds it (the looks table's seed 15: a dark mark of 11.8 px, fitted in
-    /// colour inside its ball's blob of 63–87 px, set the radius); 0 takes every
-    /// such fit.
-    pub inside_other_blob: f64,
     /// A blob of the difference from the background is opened (eroded, then grown
     /// back) by a square this share of its height across (rounded down to whole
     /// coarse pixels either side of the middle one: blobs under 8 coarse pixels tall
@@ -511,7 +506,6 @@ impl Default for Params {
             max_rms: 1.0,
             radius_tolerance: 0.15,
             smallest_in_blob: 0.6,
-            inside_other_blob: 0.6,
             fringe_share: 0.125,
             outer_reach: 2.2,
             outer_step: 10.0,

@@ -537,18 +537,18 @@ impl Tracker {
 
     /// A first lock inside a larger blob is no ball: before the balls' radius is
     /// known, a frame's good fits whose centre lies inside another blob of the frame
-    /// (its guess) and that are smaller than `inside_other_blob` of it are poor. They
+    /// (its guess) and that are smaller than `smallest_in_blob` of it are poor. They
     /// are that blob's mark or highlight, found as a blob of its own (the looks
     /// table's seed 15: a steel ball's dark mark, 11.8 px in colour, inside the
     /// ball's blob of 63–87 px, set a radius of 10.6 px for 53.6 and no ball was
     /// found); a ball's own fit lies inside its blob, which is the ball plus at most
-    /// a shadow's fringe (`inside_other_blob` of it or more).
+    /// a shadow's fringe (`smallest_in_blob` of it or more).
     fn no_locks_inside_blobs(&self, blobs: &[Blob], fits: &mut [Result<Outline, LeftOut>]) {
         if self.radius.is_some() {
             return;
         }
         let guesses: Vec<Circle> = blobs.iter().map(Blob::guess).collect();
-        let share = self.params.inside_other_blob;
+        let share = self.params.smallest_in_blob;
         for fit in fits.iter_mut() {
             if fit
                 .as_ref()
@@ -1449,7 +1449,7 @@ fn upper_disc(frame: &Frame, c: &Circle) -> Option<[f32; 3]> {
 
 /// True when the circle `c` (a fit) has its centre inside one of the blobs'
 /// circles `blobs` (their guesses) and is smaller than `share` of it: that blob's
-/// mark or highlight, not a ball (`Params::inside_other_blob`); `share` 0: never.
+/// mark or highlight, not a ball (`Params::smallest_in_blob`); `share` 0: never.
 pub fn inside_a_larger_blob(c: &Circle, blobs: &[Circle], share: f64) -> bool {
     blobs
         .iter()

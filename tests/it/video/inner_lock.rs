@@ -1,6 +1,6 @@
 //! A first lock inside a larger blob is no ball (issue 34, tracker 28): before the
 //! balls' radius is known, a fit whose centre lies inside another blob of its frame
-//! and that is smaller than `Params::inside_other_blob` of it is that blob's mark or
+//! and that is smaller than `Params::smallest_in_blob` of it is that blob's mark or
 //! highlight, found as a blob of its own (`vision::tracker::inside_a_larger_blob`).
 
 use super::decoded_look;
@@ -29,7 +29,7 @@ fn a_mark_inside_its_balls_blob_is_no_first_lock() {
         "radius {with:.2} px for {truth:.2}"
     );
     let without = learned(Params {
-        inside_other_blob: 0.0,
+        smallest_in_blob: 0.0,
         ..Params::default()
     });
     assert!(
@@ -58,7 +58,7 @@ proptest! {
         (mark, ma, md) in (0.2f64..0.5, 0.0f64..std::f64::consts::TAU, 0.0f64..0.5),
         gap in 2.05f64..6.0,
     ) {
-        let share = Params::default().inside_other_blob;
+        let share = Params::default().smallest_in_blob;
         let blob = Circle { x: 500.0, y: 300.0, r: fringe * r };
         let ball = Circle { x: 500.0 + bx * r, y: 300.0 + by * r, r };
         let spot = Circle {
