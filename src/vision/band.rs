@@ -278,6 +278,7 @@ mod tests {
                 r: 10.0,
             },
             sigma: [0.1; 3],
+            covariance: [[0.0; 3]; 3],
             rms: 0.1,
             points: 100,
             // The upper half of the circle (sectors 18–35): the rail hides the rest.

@@ -23,6 +23,11 @@ pub struct Outline {
     pub circle: Circle,
     /// Standard errors of the centre's x and y and of the radius, px.
     pub sigma: [f64; 3],
+    /// The covariance of (x, y, r), px²: on an arc the three are far from
+    /// independent (a centre set lower asks for a larger radius, and one moved
+    /// along a lopsided arc for both), which a centre moved onto its ball's line
+    /// follows (`tracks`). Zeros where unknown.
+    pub covariance: [[f64; 3]; 3],
     /// Root mean square distance of the kept edge points from the circle, px.
     pub rms: f64,
     /// Edge points kept.
@@ -98,7 +103,12 @@ pub fn fit(img: &Gray, guess: Circle, band: f64, polarity: f64) -> Option<Outlin
 /// `start`, outliers beyond `band` and then beyond 3 robust scatters left out in
 /// rounds), described with the polarity `sign`; `None` with fewer than 12 points.
 #[allow(clippy::indexing_slicing)] // the median of a non-empty list (at least 12 points, checked above)
-fn fit_points(points: Vec<[f64; 2]>, start: Circle, band: f64, sign: f64) -> Option<Outline> {
+pub(crate) fn fit_points(
+    points: Vec<[f64; 2]>,
+    start: Circle,
+    band: f64,
+    sign: f64,
+) -> Option<Outline> {
     let mut keep: Vec<[f64; 2]> = points;
     let mut c = start;
     let mut cut = band.max(1.0);
@@ -161,6 +171,7 @@ fn describe(points: &[[f64; 2]], c: Circle, polarity: f64) -> Outline {
     Outline {
         circle: c,
         sigma: [cov[(0, 0)].sqrt(), cov[(1, 1)].sqrt(), cov[(2, 2)].sqrt()],
+        covariance: std::array::from_fn(|i| std::array::from_fn(|k| cov[(i, k)])),
         rms,
         points: points.len(),
         sectors,

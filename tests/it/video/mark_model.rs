@@ -68,6 +68,7 @@ fn found_off(d: &Drawn, soft: f64) -> Option<f64> {
             r: d.r,
         },
         sigma: [0.05; 3],
+        covariance: [[0.0; 3]; 3],
         rms: 0.2,
         points: 100,
         // The upper half of the circle (sectors 18–35): the rail hides the rest.

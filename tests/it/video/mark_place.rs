@@ -64,6 +64,7 @@ proptest! {
         let ball = Outline {
             circle: Circle { x: cx, y: cy, r },
             sigma: [0.05; 3],
+            covariance: [[0.0; 3]; 3],
             rms: 0.2,
             points: 100,
             // The upper half of the circle (sectors 18–35): the rail hides the rest.

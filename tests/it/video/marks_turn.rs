@@ -23,6 +23,7 @@ pub(super) fn fix(x: f64, y: f64, r: f64, mark: Option<(f64, f64)>) -> Result<Fi
         outline: Outline {
             circle: Circle { x, y, r },
             sigma: [0.05; 3],
+            covariance: [[0.0; 3]; 3],
             rms: 0.2,
             points: 100,
             // The upper half of the circle (sectors 18–35): the rail hides the rest.
