@@ -314,6 +314,16 @@ pub struct Params {
     /// shaded renders: 0.02 px for a flat ball, 0.06 px for a shaded one), and that
     /// carries into the radius and so the scale.
     pub edge_systematic: f64,
+    /// How far the ball's edge may lean toward the darker side at least, px, is this
+    /// (px²) over the balls' radius in px; carried into the radius's ± (a lean every
+    /// frame shares, which the frames' scatter does not show). A ball is shaded,
+    /// darker toward its limb; blurred (σ px), that ramp inside the step moves the
+    /// gradient's peak by about its slope × σ² over the step, inward on a light ball
+    /// on a dark wall, outward on a dark ball on a light one, and the slope falls
+    /// with the radius: a lean of some σ²/R. Default 3: the small looks (R 11–17 px)
+    /// lay 0.1–0.35 px off so (three scales beyond 2 ± without it, 3/13 = 0.23 px),
+    /// the full looks' (R 23–66 px) within their ± already.
+    pub edge_lean: f64,
     /// The ball's edge in colour (`circle::colour_offset`): sought between this many
     /// px inside and outside the outline (default 5: a lit part of a dozen-pixel
     /// ball lies 3–4 px inside its edge), where the colour there differs by at least
@@ -545,6 +555,7 @@ impl Default for Params {
             sparsest: 3,
             fewest_seen: 3,
             edge_systematic: 0.05,
+            edge_lean: 3.0,
             colour_edge_reach: 6.0,
             colour_edge_step: 12.0,
             colour_edge_within: 1.0,

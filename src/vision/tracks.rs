@@ -122,7 +122,8 @@ pub struct Calibration {
     pub scale_given: bool,
     /// The balls' median fitted radius, px, and its standard error: the median's
     /// own and the edge's systematic (the larger of the edge's definitions' spread,
-    /// the single frames' scatter, the two balls' difference, and `Params::edge_systematic`).
+    /// the single frames' scatter, the two balls' difference, `Params::edge_systematic`,
+    /// and `Params::edge_lean` over the radius).
     pub radius_px: f64,
     pub radius_px_sigma: f64,
     /// The radius R the scale comes from, m.
@@ -266,14 +267,16 @@ fn the_radius(
     // How unsure the edge is beyond the frames' mean: the edge's definitions
     // disagreeing, the single frames' radii scattering (a bias that the shading, a
     // blur or the wall puts into every frame alike does not average out over them:
-    // the frames' scatter, not its standard error, bounds it), and the two balls'
-    // radii differing (both have one radius).
+    // the frames' scatter, not its standard error, bounds it), the two balls'
+    // radii differing (both have one radius), and the lean of a shaded ball's edge
+    // toward its darker side (`Params::edge_lean`), which no frame shows apart.
     let frame_sd = 1.4826 * dev.get(dev.len() / 2).copied().unwrap_or(0.0);
     let r_stat = frame_sd * 1.2533 / (radii.len() as f64).sqrt();
     let colour = colour_edge(tracker.colour_offsets(), p.colour_edge_within);
     let systematic = edge_systematic(tracker.edge_offsets(), colour, p.edge_systematic)
         .max(frame_sd)
-        .max(between_balls(frames, slots));
+        .max(between_balls(frames, slots))
+        .max(p.edge_lean / r_px);
     let r_se = r_stat.hypot(systematic);
     // Never a confident wrong scale: radii that disagree are no ball's (the mark, a
     // highlight or clutter taken for one in part of the frames).

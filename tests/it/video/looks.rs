@@ -205,7 +205,7 @@ proptest! {
     /// Whatever the look: μ_k within max(0.015, 2 ±) of the truth or a one-line
     /// refusal; the scale within 2 of its ±; never a panic.
     #[test]
-    #[ignore = "fails on tracker version 21 (2026-11-30, over the small looks 0–39 written as this test writes them): no μ_k wrong (seed 5, wrong to tracker 17, 0.137 ± 0.006 from a lock 20 % too large on a checkered wall, no longer fails), but the scales of seeds 0 (−3.0 ±), 12, 14, 29 and 38 (−2.1 ±) lie beyond 2 of their ±: bright shaded or dark-walled balls whose radius is 0.1–0.25 px small, more than the ± allows. This test writes a look without a crf as PNG frames, not H.264 as the looks table does; in H.264 (LOOKS_SIZE=small with the looks_table) seeds 0, 4, 29 lie at −2.2 to −2.3 ± and seed 5 at +6.3 ± (refused by fit)"]
+    #[ignore = "fails on tracker version 30 (2026-11-30, the small looks written as this test writes them, PNG frames): none of seeds 0–39 fails (the seeds the tracker was tuned on), but of seeds 40–109 six do: the scales of 41 (−3.8 %), 72 (+16 %), 80 (−32 %), 87 (+43 %) and 107 (−5.7 %) lie beyond 2 of their ± (a lock on something else than the ball, confidently), and 109's μ_k is 0.149 ± 0.007 for 0.17"]
     fn every_random_look_is_measured_right_or_refused_in_one_line(seed in any::<u64>()) {
         check(seed, true)?;
     }
