@@ -572,10 +572,11 @@ struct OffCurveRule {
 /// of the impact (fits within a frame of it judge nothing and are not judged: the
 /// motion turns there); once no fit between others is off, a fit at an end of its
 /// path or side too, against the parabola through twice as many on its one side. It
-/// must lie on it within `sigmas` robust scatters of every judged fit's distance (each scaled by how unsure the parabola is at it), and
-/// `floor` px. A parabola that misses its own fits by more than `inner` of that
-/// judges nothing (no parabola there: an impact the closest approach did not tell, a
-/// ball starting to roll). The worst fit is left out first and the rest judged
+/// must lie on it within `sigmas` robust scatters of every judged fit's distance
+/// (each scaled by how unsure the parabola is at it), and `floor` px. A parabola
+/// that misses its own fits by more than `inner` of that judges nothing (no
+/// parabola there: an impact the closest approach did not tell, a ball starting to
+/// roll). The worst fit is left out first and the rest judged
 /// again. `off_the_path` allows a deceleration of μ_k 0.5 between two neighbours,
 /// and over a few frames' gap that is more than the fits scatter: the looks
 /// table's seeds 24, 27, 32 and 6 kept single fits 5–22 px along the groove from
