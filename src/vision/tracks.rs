@@ -1123,8 +1123,9 @@ mod tests {
         /// A fit 15–30 px along the groove from its ball at an end of the ball's path
         /// (the first frame, the last) or of its side of the impact (the last before,
         /// the first after) is left out, among fits that scatter by up to 0.3 px, and
-        /// at most the fit next to it with it: judged by the parabola through the fits on its one side (seeds
-        /// 10 and 22 of the looks table kept a first fit 21 and 13 px off).
+        /// at most the fit next to it with it: judged by the parabola through the
+        /// fits on its one side (seeds 10 and 22 of the looks table kept a first fit
+        /// 21 and 13 px off).
         #[test]
         fn a_wrong_fit_at_an_end_of_its_path_is_left_out(
             end in 0usize..4,

@@ -16,11 +16,7 @@ fn a_shaded_balls_lean_is_in_the_scales_plus_minus() {
         let Some((clip, frames)) = super::decoded_look("video_edge_lean", seed, Size::Small) else {
             return;
         };
-        let r = crate::common::paper_scene().radius;
-        let truth = clip.film.px_per_m();
-        let times: Vec<f64> = (0..frames.len())
-            .map(|k| k as f64 / clip.film.look.fps)
-            .collect();
+        let (r, truth, times) = super::look_truth(&clip, frames.len());
         let mut tracker = vision::track(&frames, vision::Params::default());
         let z = |tracker: &vision::Tracker| {
             let c = vision::tracks(tracker, times.clone(), r, None)

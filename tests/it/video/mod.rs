@@ -103,6 +103,18 @@ pub(crate) fn marks_against_truth(
     kept
 }
 
+/// What `vision::tracks` of `clip` is given and held against besides its tracker:
+/// R (the paper scene's, m), the true scale (px/m) and the times of its first
+/// `frames` frames (s, at its rate).
+pub(crate) fn look_truth(clip: &crate::film::looks::Clip, frames: usize) -> (f64, f64, Vec<f64>) {
+    let times = (0..frames).map(|k| k as f64 / clip.film.look.fps).collect();
+    (
+        crate::common::paper_scene().radius,
+        clip.film.px_per_m(),
+        times,
+    )
+}
+
 /// The look `seed` of `size` (decoded as [`decoded_look`] in `area`), tracked with
 /// the default parameters, has its scale within 2 of its ± of the truth; tracked
 /// with `without` (a rule switched off), it is refused: the rule is what tracks it.
@@ -115,11 +127,7 @@ pub(crate) fn scaled_with_refused_without(
     let Some((clip, frames)) = decoded_look(area, seed, size) else {
         return;
     };
-    let r = crate::common::paper_scene().radius;
-    let truth = clip.film.px_per_m();
-    let times: Vec<f64> = (0..frames.len())
-        .map(|k| k as f64 / clip.film.look.fps)
-        .collect();
+    let (r, truth, times) = look_truth(&clip, frames.len());
     let with = vision::track(&frames, vision::Params::default());
     let tracks = vision::tracks(&with, times.clone(), r, None).unwrap();
     let c = tracks.calibration;
