@@ -214,8 +214,10 @@ fn use_tree(t: &[Token], i: &mut usize, prefix: Vec<String>, out: &mut Vec<Vec<S
             "{" => {
                 *i += 1;
                 while *i < t.len() && t[*i].text != "}" {
+                    let before = *i;
                     use_tree(t, i, path.clone(), out);
-                    *i += usize::from(t[*i].text == ",");
+                    // A token no tree takes (a `;` in braces: no use tree) is passed.
+                    *i += usize::from(*i == before || t.get(*i).is_some_and(|n| n.text == ","));
                 }
                 *i += 1;
                 return;
@@ -269,7 +271,8 @@ fn named_paths(src: &Path, file: &Path) -> Vec<(Vec<String>, usize)> {
     while i < t.len() {
         let here = [&module[..], &open[i][..]].concat();
         let (start, mut paths) = (i, Vec::new());
-        if t[i].text == "use" {
+        // `use<…>` bounds a return type's captures (`impl Fn() + use<>`): no import.
+        if t[i].text == "use" && t.get(i + 1).is_none_or(|n| n.text != "<") {
             i += 1;
             use_tree(&t, &mut i, Vec::new(), &mut paths);
         } else if t.get(i + 1).is_some_and(|n| n.text == "::") && (i == 0 || t[i - 1].text != "::")
@@ -356,6 +359,29 @@ fn imports_of(src: &Path, file: &Path) -> Vec<(PathBuf, usize, String)> {
             (to, line, path.join("::"))
         })
         .collect()
+}
+
+/// The paths a file of `text` at `src/a/b.rs` names, read as the scans read them.
+fn paths_in(text: &str) -> Vec<Vec<String>> {
+    let dir = crate::common::scratch_dir("code_layers", "paths_in");
+    let file = dir.join("src/a/b.rs");
+    std::fs::create_dir_all(file.parent().unwrap()).unwrap();
+    std::fs::write(&file, text).unwrap();
+    named_paths(&dir.join("src"), &file)
+        .into_iter()
+        .map(|(p, _)| p)
+        .collect()
+}
+
+/// A return type's `use<>` (precise capturing) is read as no import, and the scan
+/// ends: it once took it for a use tree and looped on the body's `;`, filling the
+/// memory.
+#[test]
+fn a_use_bound_in_a_return_type_is_no_import() {
+    let found = paths_in(
+        "use crate::x::y;\nfn f() -> impl Fn(f64) -> f64 + use<> { let a = 1; move |x| x }\n",
+    );
+    assert_eq!(found, vec![vec!["x".to_string(), "y".to_string()]]);
 }
 
 #[test]
