@@ -94,9 +94,126 @@ pub const EITHER: f64 = 2.0;
 /// `polarity` the ball's (+1 brighter, −1 darker than around it), 0 to take the
 /// sign most edge points have, or [`EITHER`] to take both. `None` when too few edge
 /// points are found.
-pub fn fit(img: &Gray, guess: Circle, band: f64, polarity: f64) -> Option<Outline> {
-    let (points, sign) = edge_points(img, guess, band, polarity)?;
-    fit_points(points, guess, band, sign)
+pub fn fit(
+    img: &Gray,
+    guess: Circle,
+    band: f64,
+    polarity: f64,
+    rail_moves: f64,
+) -> Option<Outline> {
+    let (mut points, sign) = edge_points(img, guess, band, polarity)?;
+    let mut o = fit_points(points.clone(), guess, band, sign)?;
+    // A circle closed by a straight edge (the rail's) is not the ball's: what lies
+    // on or below that edge is the rail, so it goes and the rest is fitted again
+    // (twice at most: a rail's lower edge, then its top edge), where that moves
+    // the radius by more than `rail_moves` of it (`Params::rail_moves`: the circle
+    // was the rail's doing; a smaller change is the edge's own scatter, and the fit
+    // with more points is kept).
+    for _ in 0..2 {
+        let Some(line) = straight_edge_below(img, &o, &points) else {
+            break;
+        };
+        points.retain(|p| p[1] < line.at(p[0]) - RAIL_CLEARANCE);
+        let Some(q) = fit_points(points.clone(), guess, band, sign) else {
+            break;
+        };
+        if (q.circle.r - o.circle.r).abs() <= rail_moves * o.circle.r {
+            break;
+        }
+        o = q;
+    }
+    Some(o)
+}
+
+/// How far above a straight edge under a ball its outline's points must lie to be
+/// the ball's, px: the edge's own blur (a Sobel peak a pixel wide) and a pixel.
+const RAIL_CLEARANCE: f64 = 1.5;
+
+/// A straight edge in the picture, y = y0 + slope (x − x0), px.
+#[derive(Clone, Copy, Debug)]
+struct StraightEdge {
+    x0: f64,
+    y0: f64,
+    slope: f64,
+}
+
+impl StraightEdge {
+    /// The edge's y at `x`.
+    fn at(&self, x: f64) -> f64 {
+        self.y0 + self.slope * (x - self.x0)
+    }
+}
+
+/// The straight edge across the lower half of the outline `o` (its edge points
+/// `points`), when one runs on past the circle on both sides: a near
+/// rail's top or lower edge, which closes a ball's visible cap into a smaller
+/// circle or takes the rail into a larger one. The edge points below the centre
+/// and within a radius of it across, in the two rows holding most of them (five
+/// at least), give the line; it must run through the circle's lower half or just
+/// below it, and beside the circle (from 1.1 r + 1 px out, for 0.6 r each side) the
+/// luma must step across it, with those points' sign and at least half their
+/// step, in 80 % of the columns each side. A ball's own bottom curves away beside
+/// it, so only an edge straight there passes.
+fn straight_edge_below(img: &Gray, o: &Outline, points: &[[f64; 2]]) -> Option<StraightEdge> {
+    let c = o.circle;
+    let lower: Vec<[f64; 2]> = points
+        .iter()
+        .filter(|p| p[1] > c.y && (p[0] - c.x).abs() < c.r && p[1] < c.y + c.r + 2.5)
+        .copied()
+        .collect();
+    // The two rows (from one point's row on) holding most of them.
+    let row = lower
+        .iter()
+        .map(|p| {
+            (
+                p[1],
+                lower.iter().filter(|q| (q[1] - p[1]).abs() <= 1.0).count(),
+            )
+        })
+        .max_by(|a, b| a.1.cmp(&b.1).then(b.0.total_cmp(&a.0)))?;
+    let on_row: Vec<&[f64; 2]> = lower
+        .iter()
+        .filter(|q| (q[1] - row.0).abs() <= 1.0)
+        .collect();
+    if on_row.len() < 5 {
+        return None;
+    }
+    // y = a + b (x − c.x) through them, least squares.
+    let n = on_row.len() as f64;
+    let mx = on_row.iter().map(|p| p[0] - c.x).sum::<f64>() / n;
+    let my = on_row.iter().map(|p| p[1]).sum::<f64>() / n;
+    let sxx: f64 = on_row.iter().map(|p| (p[0] - c.x - mx).powi(2)).sum();
+    let sxy: f64 = on_row.iter().map(|p| (p[0] - c.x - mx) * (p[1] - my)).sum();
+    let b = if sxx > 1e-9 { sxy / sxx } else { 0.0 };
+    let (cx, a) = (c.x, my - b * mx);
+    let line = StraightEdge {
+        x0: cx,
+        y0: a,
+        slope: b,
+    };
+    if b.abs() > 0.2 || !(c.y..=c.y + c.r + 2.5).contains(&line.at(c.x)) {
+        return None;
+    }
+    let step = |x: f64, y: f64| Some(bilinear(img, x, y + 1.0)? - bilinear(img, x, y - 1.0)?);
+    let steps: Vec<f64> = on_row.iter().filter_map(|p| step(p[0], p[1])).collect();
+    let sign = steps.iter().sum::<f64>().signum();
+    let least = 0.5 * middle(steps.iter().map(|s| s.abs()).collect())?;
+    if least <= 0.0 {
+        return None;
+    }
+    let columns = (0.6 * c.r).round().max(4.0) as usize;
+    let runs_on = |side: f64| {
+        let found = (0..columns)
+            .filter(|&k| {
+                let x = c.x + side * (1.1 * c.r + 1.0 + k as f64);
+                (-3..=3).any(|t| {
+                    step(x, line.at(x) + 0.5 * f64::from(t)).is_some_and(|s| sign * s >= least)
+                })
+            })
+            .count();
+        found as f64 >= 0.8 * columns as f64
+    };
+    (runs_on(-1.0) && runs_on(1.0)).then_some(line)
 }
 
 /// The circle through `points` (least squares of the geometric distance from

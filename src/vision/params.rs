@@ -324,6 +324,15 @@ pub struct Params {
     /// lay 0.1–0.35 px off so (three scales beyond 2 ± without it, 3/13 = 0.23 px),
     /// the full looks' (R 23–66 px) within their ± already.
     pub edge_lean: f64,
+    /// How much a near rail's straight edge must move a circle's radius, as a share
+    /// of it, for the circle to be fitted again without the edge (`circle::fit`): a
+    /// rail's top or lower edge, running on past the ball both ways, closes a sunk
+    /// ball's visible cap into a smaller circle or is taken into a larger one.
+    /// Default 0.05 (the radii's spread that refuses a clip, `max_radius_spread`):
+    /// the small looks' seeds 48 and 87 lay 26 % and 41 % off so; a smaller move is
+    /// the edge's own scatter, and the fit with the edge's points is kept. Infinite:
+    /// never refitted.
+    pub rail_moves: f64,
     /// The ball's edge in colour (`circle::colour_offset`): sought between this many
     /// px inside and outside the outline (default 5: a lit part of a dozen-pixel
     /// ball lies 3–4 px inside its edge), where the colour there differs by at least
@@ -556,6 +565,7 @@ impl Default for Params {
             fewest_seen: 3,
             edge_systematic: 0.05,
             edge_lean: 3.0,
+            rail_moves: 0.05,
             colour_edge_reach: 6.0,
             colour_edge_step: 12.0,
             colour_edge_within: 1.0,

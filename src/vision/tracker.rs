@@ -290,9 +290,17 @@ impl Tracker {
                     .iter()
                     .any(|m| (g.y - m.y).abs() < 0.5 * m.r && (g.r - m.r).abs() < 0.35 * m.r)
             };
-            coarse
-                .balls
-                .retain(|b| differing_share(&d, thr, small, b) >= p.moved_share || on_line(b));
+            // With two balls moving (this frame's difference shows them), a third
+            // thing that stands still is the bench, not a target at rest.
+            let in_roi = |b: &&Blob| {
+                let g = b.guess();
+                p.roi.is_none_or(|roi| roi.contains(g.x, g.y))
+            };
+            let at_rest_possible = more.balls.iter().filter(in_roi).count() < 2;
+            coarse.balls.retain(|b| {
+                differing_share(&d, thr, small, b) >= p.moved_share
+                    || (at_rest_possible && on_line(b))
+            });
             coarse
                 .pairs
                 .retain(|b| differing_share(&d, thr, small, b) >= p.moved_share);
@@ -1085,8 +1093,9 @@ impl Tracker {
 
     /// The outline near `guess` in `img`: in a band `band` px wide, then narrowly.
     fn outline(&self, img: &Gray, guess: Circle, band: f64, polarity: f64) -> Option<OutlineFound> {
-        let first = circle::fit(img, guess, band, polarity)?;
-        let o = circle::fit(img, first.circle, 2.5, first.polarity)?;
+        let rail = self.params.rail_moves;
+        let first = circle::fit(img, guess, band, polarity, rail)?;
+        let o = circle::fit(img, first.circle, 2.5, first.polarity, rail)?;
         Some(OutlineFound {
             outline: o,
             colour: false,

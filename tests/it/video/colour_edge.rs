@@ -27,13 +27,15 @@ fn look(seed: u64) -> Option<(impl Fn(Params) -> Result<vision::Tracks, TracksEr
 }
 
 /// The rule judged alone: tracker 20's outline in colour of a coloured ball
-/// (`Params::colour_clear_rms`) left out. With it, small look 6's outlines are in
+/// (`Params::colour_clear_rms`) and tracker 31's refit clear of the rail's edge
+/// (`Params::rail_moves`) left out. With it, small look 6's outlines are in
 /// colour (13.54 ± 0.67 px for 13.52: its edge in colour no longer a pixel off) and
 /// small look 13's are circles of 14.7 px for 12.3, its edge in colour 2.6 px inside
 /// them (no scale given either way).
 fn with() -> Params {
     Params {
         colour_clear_rms: 0.0,
+        rail_moves: f64::INFINITY,
         ..Params::default()
     }
 }

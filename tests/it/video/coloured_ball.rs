@@ -10,7 +10,8 @@
 use groovelab::vision::Params;
 
 /// The scale within 2 of its ± of the truth; without the rule (no outline in colour
-/// clear enough), the clip is refused.
+/// clear enough), and without tracker 31's refit clear of the rail's edge
+/// (`rail_moves`), which finds these balls' outlines too, the clip is refused.
 #[test]
 fn a_coloured_ball_is_its_outline_in_colour_where_brightness_takes_in_the_rail() {
     super::scaled_with_refused_without(
@@ -18,6 +19,7 @@ fn a_coloured_ball_is_its_outline_in_colour_where_brightness_takes_in_the_rail()
         (26, crate::film::looks::Size::Full),
         Params {
             colour_clear_rms: 0.0,
+            rail_moves: f64::INFINITY,
             ..Params::default()
         },
     );

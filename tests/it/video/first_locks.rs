@@ -37,10 +37,12 @@ fn a_blob_sought_at_the_confirmed_radius_finds_its_ball() {
     let Some((clip, frames)) = decoded_look("first_locks", 37, Size::Small) else {
         return;
     };
-    // Tracker 20's outline in colour of a coloured ball left out: it finds those
-    // frames' balls itself (`Params::colour_clear_rms`).
+    // Tracker 20's outline in colour of a coloured ball and tracker 31's refit clear
+    // of the rail's edge left out: each finds those frames' balls itself
+    // (`Params::colour_clear_rms`, `Params::rail_moves`).
     let base = Params {
         colour_clear_rms: 0.0,
+        rail_moves: f64::INFINITY,
         ..Params::default()
     };
     let with = vision::track(&frames, base);

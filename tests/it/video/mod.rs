@@ -31,6 +31,7 @@ mod rail_view;
 mod repeated_frames;
 pub(crate) mod seed;
 mod sharp_arc;
+mod sunk_balls;
 pub(crate) mod tracker_looks;
 pub(crate) mod tracking;
 mod unfit;
