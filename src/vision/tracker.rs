@@ -290,13 +290,10 @@ impl Tracker {
                     .iter()
                     .any(|m| (g.y - m.y).abs() < 0.5 * m.r && (g.r - m.r).abs() < 0.35 * m.r)
             };
-            // With two balls moving (this frame's difference shows them), a third
-            // thing that stands still is the bench, not a target at rest.
-            let in_roi = |b: &&Blob| {
-                let g = b.guess();
-                p.roi.is_none_or(|roi| roi.contains(g.x, g.y))
-            };
-            let at_rest_possible = more.balls.iter().filter(in_roi).count() < 2;
+            // With two balls moving (this frame's difference shows them, within
+            // `--roi`), a third thing that stands still is the bench, not a target
+            // at rest.
+            let at_rest_possible = more.balls.len() < 2;
             coarse.balls.retain(|b| {
                 differing_share(&d, thr, small, b) >= p.moved_share
                     || (at_rest_possible && on_line(b))

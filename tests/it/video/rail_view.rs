@@ -68,14 +68,6 @@ proptest! {
             o.sectors
         );
     }
-}
-
-proptest! {
-    #![proptest_config(ProptestConfig {
-        cases: 64,
-        failure_persistence: None,
-        ..ProptestConfig::default()
-    })]
 
     /// A ball of little contrast with the wall behind a rail of much more, its top
     /// edge from the ball's centre to 0.6 R below it (tracker 31): the rail's edge,
