@@ -94,15 +94,50 @@ pub const EITHER: f64 = 2.0;
 /// `polarity` the ball's (+1 brighter, −1 darker than around it), 0 to take the
 /// sign most edge points have, or [`EITHER`] to take both. `None` when too few edge
 /// points are found.
+///
+/// `rails`: the near rail's edges known to hide this ball (`rail::edges`, judged
+/// by `Tracker::rails_hiding`): where the highest of them crosses the fitted
+/// circle's lower part, the points on or below it are the rail's and the circle
+/// is fitted again without them, taken where the rest lie on their circle far
+/// closer and the radius moves by more than `rail_moves` of it. `rail_moves`
+/// infinite: neither that nor the straight edge sought under each fit.
 pub fn fit(
     img: &Gray,
     guess: Circle,
     band: f64,
     polarity: f64,
     rail_moves: f64,
+    rails: &[StraightEdge],
 ) -> Option<Outline> {
     let (mut points, sign) = edge_points(img, guess, band, polarity)?;
     let mut o = fit_points(points.clone(), guess, band, sign)?;
+    if rail_moves.is_finite()
+        && let Some(line) = rail_under(rails, &o.circle)
+    {
+        let above: Vec<[f64; 2]> = points
+            .iter()
+            .filter(|p| p[1] < line.at(p[0]) - RAIL_CLEARANCE)
+            .copied()
+            .collect();
+        // Taken where the points left lie on their circle far closer than all did
+        // on theirs (`RAIL_RMS_DROP`: an arc and a straight edge fit no circle
+        // together; where the points dropped were the wall's, or the ball's edge
+        // is lost in it, the rest fits little better) and, as for the edge sought
+        // under each fit, the radius moves by more than `rail_moves` of it. The
+        // ball is hidden from the rail's edge down: its outline's lowest point is
+        // there, not the clearance above it (the rolling radius).
+        if let Some(mut q) = fit_points(above.clone(), guess, band, sign)
+            && q.rms <= RAIL_RMS_DROP * o.rms
+            && (q.circle.r - o.circle.r).abs() > rail_moves * o.circle.r
+            && q.circle.r <= 2.0 * o.circle.r
+        {
+            q.lowest = q
+                .lowest
+                .max(line.at(q.circle.x))
+                .min(q.circle.y + q.circle.r);
+            (points, o) = (above, q);
+        }
+    }
     // A circle closed by a straight edge (the rail's) is not the ball's: what lies
     // on or below that edge is the rail, so it goes and the rest is fitted again
     // (twice at most: a rail's lower edge, then its top edge), where that moves
@@ -129,19 +164,36 @@ pub fn fit(
 /// the ball's, px: the edge's own blur (a Sobel peak a pixel wide) and a pixel.
 const RAIL_CLEARANCE: f64 = 1.5;
 
+/// How much closer to their circle the points above a known rail edge must lie
+/// than all did on theirs, RMS, for the rail to have been in the fit: the small
+/// looks' seed 87 drawn sharp, 1.2–1.4 px with the rail's lower edge, 0.03–0.05
+/// without; fits whose dropped points were the wall's, 0.7–1 of it.
+const RAIL_RMS_DROP: f64 = 0.5;
+
 /// A straight edge in the picture, y = y0 + slope (x − x0), px.
-#[derive(Clone, Copy, Debug)]
-struct StraightEdge {
-    x0: f64,
-    y0: f64,
-    slope: f64,
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StraightEdge {
+    pub x0: f64,
+    pub y0: f64,
+    pub slope: f64,
 }
 
 impl StraightEdge {
     /// The edge's y at `x`.
-    fn at(&self, x: f64) -> f64 {
+    pub fn at(&self, x: f64) -> f64 {
         self.y0 + self.slope * (x - self.x0)
     }
+}
+
+/// The highest of `rails` that crosses the circle `c` below a quarter radius above
+/// its centre and above its bottom (2.5 px below it at most): a rail's top edge
+/// over the ball's lower part, or a circle closed by it (its centre then lies low).
+pub fn rail_under(rails: &[StraightEdge], c: &Circle) -> Option<StraightEdge> {
+    rails
+        .iter()
+        .filter(|l| (c.y - 0.25 * c.r..=c.y + c.r + 2.5).contains(&l.at(c.x)))
+        .min_by(|a, b| a.at(c.x).total_cmp(&b.at(c.x)))
+        .copied()
 }
 
 /// The straight edge across the lower half of the outline `o` (its edge points

@@ -8,7 +8,9 @@
 //! and seconds along the groove (`tracks`) and written as a Tracker-style file
 //! (`write`), with small pictures of the frames for the app (`thumbs`), and drawn
 //! over the frames for a user to check (`overlay`); the rows of the groove's band,
-//! found from the first frames, the only ones decoded and tracked (`band`). Pure:
+//! found from the first frames, the only ones decoded and tracked (`band`); the
+//! near rail's edges, found once per background, which no ball's outline takes in
+//! (`rail`). Pure:
 //! the frames come from `input::video`; the synthetic films that test it are test
 //! support (`tests/support/film`). How it works and when it refuses:
 //! docs/tracking.md.
@@ -33,7 +35,7 @@
 
 /// The tracker's own version: raised whenever a change makes it find other numbers
 /// in the same video (cached tracks are keyed by it, not by the program's version).
-pub const VERSION: u32 = 31;
+pub const VERSION: u32 = 32;
 
 pub mod background;
 pub mod band;
@@ -48,6 +50,7 @@ pub mod mark_fit;
 pub mod overlay;
 pub mod params;
 pub mod prepared;
+pub mod rail;
 pub mod repeats;
 pub mod select;
 pub mod thumbs;

@@ -80,6 +80,8 @@ pub struct Tracker {
     seeded: bool,
     learner: Option<Learner>,
     background: Option<Background>,
+    /// The near rail's edges in `background` (`rail::edges`), full-frame px.
+    rails: Vec<circle::StraightEdge>,
     /// Frames the learner had seen when `background` was last learned.
     learned_at: usize,
     /// Marks found before their sign is settled (`mark::settled_sign`) …
@@ -340,6 +342,13 @@ impl Tracker {
         let due = self.learned_at + self.learned_at.max(32);
         if seen > 0 && (self.background.is_none() || seen >= due) {
             self.background = l.background();
+            // Rails only where `rails_hiding` takes them (a full-resolution background).
+            self.rails = self
+                .background
+                .as_ref()
+                .filter(|b| b.image.factor == 1)
+                .map(|b| super::rail::edges(&b.image))
+                .unwrap_or_default();
             self.learned_at = seen;
         }
     }
@@ -1088,11 +1097,77 @@ impl Tracker {
         }
     }
 
-    /// The outline near `guess` in `img`: in a band `band` px wide, then narrowly.
+    /// The rail edges (`rails`) that hide the lower part of the ball about `guess`:
+    /// each crossing it from half a radius above its centre to a half below its
+    /// bottom, under which the frame is the background's (the rail, in front of
+    /// the ball) in the guess's disc while above it the frame differs (the ball):
+    /// at most a quarter of the coarse pixels a pixel or more below the edge
+    /// differ, at least half of those above it, three of each at least. An edge of
+    /// the wall's pattern across a ball has the ball below it too. Only where the
+    /// background is learned at full resolution (frames under 640 px wide): from
+    /// coarse pixels of 2–6 px the edge is placed to a pixel or so, no closer than
+    /// the clearance above it that a ball's points must keep (on the full looks the
+    /// refits there lost two verdicts and gained none).
+    fn rails_hiding(&self, guess: &Circle) -> Vec<circle::StraightEdge> {
+        let (Some(bg), Some(small)) = (self.background.as_ref().map(|b| &b.image), &self.small)
+        else {
+            return Vec::new();
+        };
+        if bg.factor != 1 {
+            return Vec::new();
+        }
+        let p = &self.params;
+        let f = bg.factor.max(1) as f64;
+        let c = *guess;
+        let hides = |l: &circle::StraightEdge| {
+            let (mut above, mut below) = ((0usize, 0usize), (0usize, 0usize));
+            let n = (c.r / f).ceil() as i64;
+            for j in -n..=n {
+                for i in -n..=n {
+                    let (x, y) = (c.x + i as f64 * f, c.y + j as f64 * f);
+                    if (x - c.x).hypot(y - c.y) > 0.9 * c.r {
+                        continue;
+                    }
+                    let d = usize::from(differs_at(small, bg, x, y, p));
+                    let e = l.at(x);
+                    if y < e - f {
+                        above = (above.0 + d, above.1 + 1);
+                    } else if y > e + f {
+                        below = (below.0 + d, below.1 + 1);
+                    }
+                }
+            }
+            above.1 >= 3 && below.1 >= 3 && 2 * above.0 >= above.1 && 4 * below.0 <= below.1
+        };
+        self.rails
+            .iter()
+            .filter(|l| (c.y - 0.5 * c.r..=c.y + 1.5 * c.r + 3.0).contains(&l.at(c.x)))
+            .filter(|l| hides(l))
+            .copied()
+            .collect()
+    }
+
+    /// The outline near `guess` in the frame's luma `img`: in a band `band` px wide,
+    /// then narrowly, the rail edges that hide the ball left out
+    /// (`Tracker::rails_hiding`).
     fn outline(&self, img: &Gray, guess: Circle, band: f64, polarity: f64) -> Option<OutlineFound> {
+        let rails = self.rails_hiding(&guess);
+        self.outline_by(img, guess, band, polarity, &rails)
+    }
+
+    /// As [`Tracker::outline`], in any image `img` (a patch about the ball: its own
+    /// coordinates), with the rail edges `rails` in them.
+    fn outline_by(
+        &self,
+        img: &Gray,
+        guess: Circle,
+        band: f64,
+        polarity: f64,
+        rails: &[circle::StraightEdge],
+    ) -> Option<OutlineFound> {
         let rail = self.params.rail_moves;
-        let first = circle::fit(img, guess, band, polarity, rail)?;
-        let o = circle::fit(img, first.circle, 2.5, first.polarity, rail)?;
+        let first = circle::fit(img, guess, band, polarity, rail, rails)?;
+        let o = circle::fit(img, first.circle, 2.5, first.polarity, rail, rails)?;
         Some(OutlineFound {
             outline: o,
             colour: false,
@@ -1188,7 +1263,17 @@ impl Tracker {
             y: guess.y - y0 as f64,
             r: guess.r,
         };
-        let mut found = self.outline(&patch, local, band.max(3.0), 1.0)?;
+        // The rail edges that hide the ball, in the patch's own pixels.
+        let rails: Vec<circle::StraightEdge> = self
+            .rails_hiding(&guess)
+            .into_iter()
+            .map(|l| circle::StraightEdge {
+                x0: l.x0 - x0 as f64,
+                y0: l.y0 - y0 as f64,
+                slope: l.slope,
+            })
+            .collect();
+        let mut found = self.outline_by(&patch, local, band.max(3.0), 1.0, &rails)?;
         found.outline.circle.x += x0 as f64;
         found.outline.circle.y += y0 as f64;
         found.outline.lowest += y0 as f64;

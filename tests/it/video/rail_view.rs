@@ -59,7 +59,7 @@ proptest! {
             [level; 3]
         });
         let guess = circle::Circle { x: cx + 1.5, y: cy - 1.0, r: 0.9 * r };
-        let fitted = circle::fit(&frame.luma, guess, 4.0, 0.0, Params::default().rail_moves);
+        let fitted = circle::fit(&frame.luma, guess, 4.0, 0.0, Params::default().rail_moves, &[]);
         prop_assume!(fitted.is_some_and(|o| (o.circle.r - r).abs() < 0.05 * r));
         let o = fitted.unwrap();
         prop_assert!(
@@ -112,7 +112,7 @@ proptest! {
         let half = narrow * r;
         let guess = circle::Circle { x: cx + 1.0, y: cy - r + half, r: half };
         let p = Params::default();
-        if let Some(o) = circle::fit(&frame.luma, guess, (0.15 * r).max(4.0), 0.0, p.rail_moves)
+        if let Some(o) = circle::fit(&frame.luma, guess, (0.15 * r).max(4.0), 0.0, p.rail_moves, &[])
             && o.coverage() >= p.min_coverage
             && o.rms <= p.max_rms
         {
