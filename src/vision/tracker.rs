@@ -1119,12 +1119,15 @@ impl Tracker {
         let p = &self.params;
         let f = bg.factor.max(1) as f64;
         let c = *guess;
+        // Every coarse pixel of the disc, or some 80 across a disc wider than that
+        // (a blob the size of the frame is no ball, but must cost no more).
+        let stride = f.max(c.r / 40.0);
         let hides = |l: &circle::StraightEdge| {
             let (mut above, mut below) = ((0usize, 0usize), (0usize, 0usize));
-            let n = (c.r / f).ceil() as i64;
+            let n = (c.r / stride).ceil().min(40.0) as i64;
             for j in -n..=n {
                 for i in -n..=n {
-                    let (x, y) = (c.x + i as f64 * f, c.y + j as f64 * f);
+                    let (x, y) = (c.x + i as f64 * stride, c.y + j as f64 * stride);
                     if (x - c.x).hypot(y - c.y) > 0.9 * c.r {
                         continue;
                     }
