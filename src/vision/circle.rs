@@ -36,7 +36,9 @@ pub struct Outline {
     /// angles `10 i … 10 (i + 1)`° from the right, clockwise in the picture (y down:
     /// sector 9 is straight down).
     pub sectors: u64,
-    /// The lowest kept edge point, px: the ball is hidden below it (the rail).
+    /// The lowest kept edge point, px, or where a known rail edge crosses below the
+    /// circle's centre when the fit left that edge out (`fit`): the ball is hidden
+    /// below it (the rail).
     pub lowest: f64,
     /// +1 when the ball is brighter than its surroundings, −1 when darker.
     pub polarity: f64,
@@ -96,10 +98,11 @@ pub const EITHER: f64 = 2.0;
 /// points are found.
 ///
 /// `rails`: the near rail's edges known to hide this ball (`rail::edges`, judged
-/// by `Tracker::rails_hiding`): where the highest of them crosses the fitted
-/// circle's lower part, the points on or below it are the rail's and the circle
-/// is fitted again without them, taken where the rest lie on their circle far
-/// closer and the radius moves by more than `rail_moves` of it. `rail_moves`
+/// by `Tracker::rails_hiding`): where the highest of them crosses the fitted circle
+/// (`rail_under`: from a quarter radius above its centre to just below its bottom),
+/// the points on or below it are the rail's and the circle is fitted again without
+/// them, taken where the rest lie on their circle at least twice as closely, the
+/// radius moves by more than `rail_moves` of it and at most doubles. `rail_moves`
 /// infinite: neither that nor the straight edge sought under each fit.
 pub fn fit(
     img: &Gray,

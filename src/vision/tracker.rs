@@ -1098,13 +1098,13 @@ impl Tracker {
     }
 
     /// The rail edges (`rails`) that hide the lower part of the ball about `guess`:
-    /// each crossing it from half a radius above its centre to a half below its
-    /// bottom, under which the frame is the background's (the rail, in front of
-    /// the ball) in the guess's disc while above it the frame differs (the ball):
-    /// at most a quarter of the coarse pixels a pixel or more below the edge
-    /// differ, at least half of those above it, three of each at least. An edge of
-    /// the wall's pattern across a ball has the ball below it too. Only where the
-    /// background is learned at full resolution (frames under 640 px wide): from
+    /// each crossing its disc (within 0.9 of its radius) with the frame the
+    /// background's below it (the rail, in front of the ball) and differing above
+    /// it (the ball): of the coarse pixels whose middles lie a coarse pixel or more
+    /// below the edge at most a quarter differ, of those as far above it at least
+    /// half, three of each at least. An edge of the wall's pattern across a ball has
+    /// the ball below it too. Only where the background is learned at full
+    /// resolution (frames under 640 px wide at the default `coarse_width`): from
     /// coarse pixels of 2–6 px the edge is placed to a pixel or so, no closer than
     /// the clearance above it that a ball's points must keep (on the full looks the
     /// refits there lost two verdicts and gained none).
@@ -1132,10 +1132,14 @@ impl Tracker {
                         continue;
                     }
                     let d = usize::from(differs_at(small, bg, x, y, p));
-                    let e = l.at(x);
-                    if y < e - f {
+                    // The middle of the coarse pixel that `differs_at` reads (a
+                    // pixel's middle at its index): what lies above or below the edge.
+                    let middle = |v: f64| (v / f).floor() * f + 0.5 * (f - 1.0);
+                    let (xm, ym) = (middle(x), middle(y));
+                    let e = l.at(xm);
+                    if ym < e - f {
                         above = (above.0 + d, above.1 + 1);
-                    } else if y > e + f {
+                    } else if ym > e + f {
                         below = (below.0 + d, below.1 + 1);
                     }
                 }
