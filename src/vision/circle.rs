@@ -186,6 +186,21 @@ impl StraightEdge {
     pub fn at(&self, x: f64) -> f64 {
         self.y0 + self.slope * (x - self.x0)
     }
+
+    /// The line through `points` (least squares in y; level where they share one
+    /// x), `None` without points.
+    pub fn through(points: &[[f64; 2]]) -> Option<StraightEdge> {
+        if points.is_empty() {
+            return None;
+        }
+        let n = points.len() as f64;
+        let x0 = points.iter().map(|p| p[0]).sum::<f64>() / n;
+        let y0 = points.iter().map(|p| p[1]).sum::<f64>() / n;
+        let sxx: f64 = points.iter().map(|p| (p[0] - x0).powi(2)).sum();
+        let sxy: f64 = points.iter().map(|p| (p[0] - x0) * (p[1] - y0)).sum();
+        let slope = if sxx > 1e-9 { sxy / sxx } else { 0.0 };
+        Some(StraightEdge { x0, y0, slope })
+    }
 }
 
 /// The highest of `rails` that crosses the circle `c` below a quarter radius above
@@ -226,27 +241,16 @@ fn straight_edge_below(img: &Gray, o: &Outline, points: &[[f64; 2]]) -> Option<S
             )
         })
         .max_by(|a, b| a.1.cmp(&b.1).then(b.0.total_cmp(&a.0)))?;
-    let on_row: Vec<&[f64; 2]> = lower
+    let on_row: Vec<[f64; 2]> = lower
         .iter()
         .filter(|q| (q[1] - row.0).abs() <= 1.0)
+        .copied()
         .collect();
     if on_row.len() < 5 {
         return None;
     }
-    // y = a + b (x − c.x) through them, least squares.
-    let n = on_row.len() as f64;
-    let mx = on_row.iter().map(|p| p[0] - c.x).sum::<f64>() / n;
-    let my = on_row.iter().map(|p| p[1]).sum::<f64>() / n;
-    let sxx: f64 = on_row.iter().map(|p| (p[0] - c.x - mx).powi(2)).sum();
-    let sxy: f64 = on_row.iter().map(|p| (p[0] - c.x - mx) * (p[1] - my)).sum();
-    let b = if sxx > 1e-9 { sxy / sxx } else { 0.0 };
-    let (cx, a) = (c.x, my - b * mx);
-    let line = StraightEdge {
-        x0: cx,
-        y0: a,
-        slope: b,
-    };
-    if b.abs() > 0.2 || !(c.y..=c.y + c.r + 2.5).contains(&line.at(c.x)) {
+    let line = StraightEdge::through(&on_row)?;
+    if line.slope.abs() > 0.2 || !(c.y..=c.y + c.r + 2.5).contains(&line.at(c.x)) {
         return None;
     }
     let step = |x: f64, y: f64| Some(bilinear(img, x, y + 1.0)? - bilinear(img, x, y - 1.0)?);

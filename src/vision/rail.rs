@@ -104,7 +104,7 @@ fn refined(
 ) -> Option<StraightEdge> {
     let (w, h) = (bg.width, bg.height);
     let f = bg.factor.max(1) as f64;
-    let mut pts: Vec<(f64, f64)> = Vec::new();
+    let mut pts: Vec<[f64; 2]> = Vec::new();
     for x in 0..w {
         let t = x as f64 / (w - 1) as f64;
         let y = left as f64 + t * (right - left) as f64;
@@ -136,24 +136,12 @@ fn refined(
         // middle is (f − 1) / 2 full pixels into it.
         let yc = best as f64 + 0.5 + off;
         let xf = x as f64 * f + 0.5 * (f - 1.0);
-        pts.push((xf, yc * f + 0.5 * (f - 1.0)));
+        pts.push([xf, yc * f + 0.5 * (f - 1.0)]);
     }
     if pts.len() < 4 {
         return None;
     }
-    let n = pts.len() as f64;
-    let (mx, my) = (
-        pts.iter().map(|p| p.0).sum::<f64>() / n,
-        pts.iter().map(|p| p.1).sum::<f64>() / n,
-    );
-    let sxx: f64 = pts.iter().map(|p| (p.0 - mx).powi(2)).sum();
-    let sxy: f64 = pts.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
-    let slope = if sxx > 1e-9 { sxy / sxx } else { 0.0 };
-    Some(StraightEdge {
-        x0: mx,
-        y0: my,
-        slope,
-    })
+    StraightEdge::through(&pts)
 }
 
 #[cfg(test)]

@@ -342,7 +342,11 @@ impl Tracker {
         let due = self.learned_at + self.learned_at.max(32);
         if seen > 0 && (self.background.is_none() || seen >= due) {
             self.background = l.background();
-            // Rails only where `rails_hiding` takes them (a full-resolution background).
+            // The rail's edges only where the background is learned at full
+            // resolution (frames under 640 px wide at the default `coarse_width`):
+            // from coarse pixels of 2–6 px an edge is placed to a pixel or so, no
+            // closer than the clearance above it that a ball's points must keep (on
+            // the full looks the refits lost two verdicts and gained none).
             self.rails = self
                 .background
                 .as_ref()
@@ -1103,25 +1107,22 @@ impl Tracker {
     /// it (the ball): of the coarse pixels whose middles lie a coarse pixel or more
     /// below the edge at most a quarter differ, of those as far above it at least
     /// half, three of each at least. An edge of the wall's pattern across a ball has
-    /// the ball below it too. Only where the background is learned at full
-    /// resolution (frames under 640 px wide at the default `coarse_width`): from
-    /// coarse pixels of 2–6 px the edge is placed to a pixel or so, no closer than
-    /// the clearance above it that a ball's points must keep (on the full looks the
-    /// refits there lost two verdicts and gained none).
+    /// the ball below it too. (`rails` are found only in a background at full
+    /// resolution: `Tracker::relearn`.)
     fn rails_hiding(&self, guess: &Circle) -> Vec<circle::StraightEdge> {
         let (Some(bg), Some(small)) = (self.background.as_ref().map(|b| &b.image), &self.small)
         else {
             return Vec::new();
         };
-        if bg.factor != 1 {
-            return Vec::new();
-        }
         let p = &self.params;
         let f = bg.factor.max(1) as f64;
         let c = *guess;
         // Every coarse pixel of the disc, or some 80 across a disc wider than that
         // (a blob the size of the frame is no ball, but must cost no more).
         let stride = f.max(c.r / 40.0);
+        // The middle of the coarse pixel that `differs_at` reads about `v` (a
+        // pixel's middle at its index): what lies above or below an edge.
+        let middle = |v: f64| (v / f).floor() * f + 0.5 * (f - 1.0);
         let hides = |l: &circle::StraightEdge| {
             let (mut above, mut below) = ((0usize, 0usize), (0usize, 0usize));
             let n = (c.r / stride).ceil().min(40.0) as i64;
@@ -1132,9 +1133,6 @@ impl Tracker {
                         continue;
                     }
                     let d = usize::from(differs_at(small, bg, x, y, p));
-                    // The middle of the coarse pixel that `differs_at` reads (a
-                    // pixel's middle at its index): what lies above or below the edge.
-                    let middle = |v: f64| (v / f).floor() * f + 0.5 * (f - 1.0);
                     let (xm, ym) = (middle(x), middle(y));
                     let e = l.at(xm);
                     if ym < e - f {
