@@ -159,13 +159,23 @@ impl Sources {
                 },
             );
         }
-        if !flags.is_empty() {
+        if !self.typed_rows.is_empty() {
             let typed: Vec<String> = self
                 .typed_rows
                 .iter()
                 .map(|k| format!("--{}", k.param().flag))
                 .collect();
             parts.push(typed.join(" "));
+        }
+        // A value among the options that nobody typed: the R a `--data` video was
+        // tracked with (its tracks state it, as a track file's header does).
+        let untyped: Vec<&str> = flags
+            .iter()
+            .filter(|k| !self.typed_rows.iter().any(|t| t.param().sets.contains(k)))
+            .map(|k| k.name())
+            .collect();
+        if let Some(name) = self.file.as_ref().filter(|_| !untyped.is_empty()) {
+            parts.push(format!("{name}'s tracks ({})", untyped.join(", ")));
         }
         let source = match parts.as_slice() {
             [] => unreachable!("a preset, the file's header, data or flags give the scene"),

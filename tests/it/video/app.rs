@@ -133,6 +133,34 @@ fn a_folder_of_frames_is_data_for_data_and_fit_and_is_kept_in_the_cache() {
     assert_eq!(j["model_fit"]["regime_observed"], "recollide");
 }
 
+/// The fit's scene line says where each value came from: a video tracked without
+/// `--radius` was scaled with the preset's R, which its tracks state (as a track
+/// file's header does), not an option typed (an empty "and )" before).
+#[test]
+fn the_scene_line_names_the_radius_a_video_was_tracked_with() {
+    let dir = folder().to_str().unwrap();
+    let c = cache("scene-line");
+    let line = |extra: &[&str]| {
+        let mut args = vec!["fit", "--data", dir, "--fps", "100"];
+        args.extend(extra);
+        let (code, out, err) = run(&args, &c);
+        assert_eq!(code, 0, "{err}");
+        out.lines().next().unwrap_or_default().to_string()
+    };
+    let untyped = line(&[]);
+    assert!(
+        untyped.starts_with(&format!(
+            "scene (default preset paper-b4.9 with v0 from the data's approach and {dir}'s tracks (radius)): R = 2.75 cm"
+        )),
+        "{untyped}"
+    );
+    let typed = line(&["--radius", "2.75cm"]);
+    assert!(
+        typed.starts_with("scene (default preset paper-b4.9 with v0 from the data's approach and --radius): R = 2.75 cm"),
+        "{typed}"
+    );
+}
+
 #[test]
 fn video_options_refused_where_they_mean_nothing() {
     let dir = folder().to_str().unwrap();
