@@ -90,12 +90,16 @@ pub struct DataArgs {
     /// Where the tracker looks in a video (`track`, `--data VIDEO`): a rectangle of
     /// the frame in pixels, X,Y,W,H from the top-left corner (e.g. 0,300,1920,250:
     /// only the groove) [default: the whole frame].
-    #[arg(long, value_name = "X,Y,W,H", value_parser = roi, global = true)]
+    // Negative numbers are taken as the value (and refused by it, saying what is
+    // allowed), not as an unknown option.
+    #[arg(long, value_name = "X,Y,W,H", value_parser = roi, global = true,
+          allow_hyphen_values = true)]
     pub roi: Option<crate::vision::Roi>,
     /// A point on one ball in the video's first frame, pixels X,Y from the top-left
     /// corner (`track`, `--data VIDEO`): the tracker's seed, the ball's radius taken
     /// from it [default: the balls found by themselves].
-    #[arg(long, value_name = "X,Y", value_parser = ball_at, global = true)]
+    #[arg(long, value_name = "X,Y", value_parser = ball_at, global = true,
+          allow_hyphen_values = true)]
     pub ball_at: Option<(f64, f64)>,
 }
 

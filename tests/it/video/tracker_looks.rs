@@ -267,14 +267,22 @@ fn a_bad_roi_or_seed_is_one_line_naming_the_form() {
         ("--roi", "1,2,3", "X,Y,W,H"),
         ("--roi", "0,0,0,10", "X,Y,W,H"),
         ("--roi", "a,b,c,d", "X,Y,W,H"),
+        ("--roi", "-5,0,100,100", "X,Y,W,H"),
         ("--ball-at", "-5,3", "X,Y"),
         ("--ball-at", "nan,1", "X,Y"),
     ] {
-        let arg = format!("{flag}={value}");
-        let out = crate::common::groovelab(&["track", "frames-that-do-not-exist", &arg]);
-        let err = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(2), "{flag} {value}: {err}");
-        assert!(err.contains(want), "{flag} {value}: {err}");
+        // As `--roi=-5,…` and as `--roi -5,…` (a value starting with '-' was taken
+        // for an unknown option and answered with every option of `track`).
+        let joined = format!("{flag}={value}");
+        for args in [vec![joined.as_str()], vec![flag, value]] {
+            let mut all = vec!["track", "frames-that-do-not-exist"];
+            all.extend(&args);
+            let out = crate::common::groovelab(&all);
+            let err = String::from_utf8_lossy(&out.stderr);
+            assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+            assert!(err.contains(want), "{args:?}: {err}");
+            assert!(err.contains(value) && !err.contains("--output"), "{args:?}: {err}");
+        }
     }
 }
 
