@@ -20,14 +20,16 @@ const VIDEO_EXTENSIONS: [&str; 10] = [
     "mp4", "mov", "m4v", "mkv", "avi", "webm", "3gp", "mts", "m2ts", "mpg",
 ];
 
-/// True when `path` is a video (named as one) or a folder of numbered frames, not a
-/// data file. (Any other folder stays refused as `--data`, which takes files.)
+/// True when `path` is a video (named as one) or a folder, not a data file: a folder
+/// given as data can only be one of frames, and one without them is refused as such
+/// ("holds 0 PNG/JPEG frames"), `--fps` taken, not as a directory where a file was
+/// allowed.
 pub fn is_video(path: &Path) -> bool {
     let named = path
         .extension()
         .and_then(|e| e.to_str())
         .is_some_and(|e| VIDEO_EXTENSIONS.contains(&e.to_ascii_lowercase().as_str()));
-    named || crate::input::video::is_frame_folder(path)
+    named || path.is_dir()
 }
 
 /// What the tracking of a `--data` video is asked: R of the scene options, `--fps`,

@@ -161,6 +161,34 @@ fn the_scene_line_names_the_radius_a_video_was_tracked_with() {
     );
 }
 
+/// A folder given as `--data` can only be one of frames: one without them is refused
+/// as such by every command, `--fps` with it taken (it was "a directory, allowed a
+/// regular file", and `--fps` "not used by fit").
+#[test]
+fn a_folder_without_frames_is_refused_as_a_folder_of_frames() {
+    let empty = scratch().join("no-frames");
+    let _ = std::fs::remove_dir_all(&empty);
+    std::fs::create_dir_all(&empty).unwrap();
+    let e = empty.to_str().unwrap();
+    let c = cache("no-frames");
+    for args in [
+        vec!["fit", "--data", e, "--radius", "2.75cm"],
+        vec!["fit", "--data", e, "--radius", "2.75cm", "--fps", "100"],
+        vec!["data", e],
+        vec!["render", "--data", e, "--size", "80x24"],
+    ] {
+        let (code, out, err) = run(&args, &c);
+        assert_eq!(code, 2, "{args:?}: {out}{err}");
+        assert_eq!(
+            err.trim(),
+            format!(
+                "error: {e}: holds 0 PNG/JPEG frames, expected a folder of numbered frames (at least two)"
+            ),
+            "{args:?}"
+        );
+    }
+}
+
 #[test]
 fn video_options_refused_where_they_mean_nothing() {
     let dir = folder().to_str().unwrap();
@@ -171,8 +199,6 @@ fn video_options_refused_where_they_mean_nothing() {
         "t,v_cm,v_t\n-0.02,0.8,0.8\n0,0.1,0.8\n0.02,-0.6,0.7\n",
     )
     .unwrap();
-    let empty = scratch().join("empty");
-    std::fs::create_dir_all(&empty).unwrap();
     for (args, says) in [
         (vec!["render", "--data", dir], "give it with --fps"),
         (
@@ -182,11 +208,6 @@ fn video_options_refused_where_they_mean_nothing() {
         (
             vec!["fit", "--data", csv.to_str().unwrap(), "--fps", "100"],
             "--fps is not used by fit, allowed only with track, and --data VIDEO",
-        ),
-        // A folder without frames is no video: --data takes files.
-        (
-            vec!["render", "--data", empty.to_str().unwrap()],
-            "allowed a regular file",
         ),
     ] {
         let (code, out, err) = run(&args, &c);

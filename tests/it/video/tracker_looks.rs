@@ -281,7 +281,10 @@ fn a_bad_roi_or_seed_is_one_line_naming_the_form() {
             let err = String::from_utf8_lossy(&out.stderr);
             assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
             assert!(err.contains(want), "{args:?}: {err}");
-            assert!(err.contains(value) && !err.contains("--output"), "{args:?}: {err}");
+            assert!(
+                err.contains(value) && !err.contains("--output"),
+                "{args:?}: {err}"
+            );
         }
     }
 }
