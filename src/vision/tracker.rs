@@ -77,7 +77,8 @@ pub struct Tracker {
     /// The median of `radii`, renewed while they are few and then every 256; or
     /// the seeded ball's radius (`Params::ball_at`).
     radius: Option<f64>,
-    seeded: bool,
+    /// The seed's outline and the frame it was found in (`Params::ball_at`).
+    seeded: Option<(usize, Circle)>,
     learner: Option<Learner>,
     background: Option<Background>,
     /// The near rail's edges in `background` (`rail::edges`), full-frame px.
@@ -211,6 +212,12 @@ impl Tracker {
     /// The median radius fitted so far, px.
     pub fn radius(&self) -> Option<f64> {
         self.radius
+    }
+
+    /// The outline the seed (`Params::ball_at`) found, which set the radius, and
+    /// its frame's index; `None` without a seed or where it found none.
+    pub fn seeded(&self) -> Option<(usize, Circle)> {
+        self.seeded
     }
 
     /// Every radius fitted, px.
@@ -794,7 +801,7 @@ impl Tracker {
         let Some((sx, sy)) = self.params.ball_at else {
             return;
         };
-        if self.seeded {
+        if self.seeded.is_some() {
             return;
         }
         let holds = |o: &Outline| (o.circle.x - sx).hypot(o.circle.y - sy) <= o.circle.r;
@@ -809,7 +816,7 @@ impl Tracker {
         }
         let Some(o) = at else { return };
         let r = o.circle.r;
-        self.seeded = true;
+        self.seeded = Some((self.frames.len(), o.circle));
         self.radius = Some(r);
         let tol = self.params.radius_tolerance;
         for f in fits.iter_mut() {
@@ -920,7 +927,7 @@ impl Tracker {
         // The first lock must be the outermost circular edge about it; once a lock
         // was not (the ball's outline taken instead), so must every fit the balls'
         // radius is learned from (the first 64), each of the radius known so far.
-        let learning = !self.seeded && self.radii.len() <= 64;
+        let learning = self.seeded.is_none() && self.radii.len() <= 64;
         let o = if (known.is_none() || (learning && self.outer_taken)) && !o.colour {
             match self.outermost_agrees(frame, &o.outline) {
                 Outer::Agrees => o,

@@ -7,7 +7,7 @@
 // Tracker rewrites this file (src/input/video is being reworked beside issue 35);
 // its indexing, unwrap and expect are converted to `get` and errors after that.
 use super::{Info, Limits, RateSource, VideoError, VideoProblem};
-use crate::settings::units::{Dimension, show, show_small, with_uncertainty};
+use crate::settings::units::{Dimension, show, show_small, significant, with_uncertainty};
 use crate::study::Progress;
 use crate::vision::band::Band;
 use crate::vision::prepared::PreparedLook;
@@ -245,7 +245,12 @@ fn attempt(
     {
         return Ok(Attempt::Again);
     }
-    let notes = notes(&file, &info, fps, &source, &tracks, &options.radius_from);
+    let mut notes = notes(&file, &info, fps, &source, &tracks, &options.radius_from);
+    notes.extend(seed_note(
+        options.ball_at,
+        tracker.seeded().is_some(),
+        &tracks,
+    ));
     let view = VideoView::new(thumbs, &tracks);
     Ok(Attempt::Done(Box::new(Some(Tracked {
         info,
@@ -488,6 +493,39 @@ const AHEAD_BYTES: usize = 256 << 20;
 /// what fits in [`AHEAD_BYTES`], at least 16.
 fn lookahead(width: usize, height: usize) -> usize {
     (AHEAD_BYTES / vision::Frame::bytes(width, height).max(1)).max(16)
+}
+
+/// What became of a `--ball-at` seed where the tracks would not show it: no ball's
+/// outline found about the point (`seeded` false), or one found but not among the
+/// tracks (one ball tracked, the seed on the other side of it by more than a ball:
+/// balls in one groove never pass each other). A seed given is never passed over in
+/// silence.
+fn seed_note(at: Option<(f64, f64)>, seeded: bool, tracks: &Tracks) -> Option<String> {
+    let (x, y) = at?;
+    let point = format!("--ball-at {},{}", significant(x, 6), significant(y, 6));
+    if !seeded {
+        return Some(format!(
+            "{point}: no ball's outline was found about that point, so the seed was not used (these are the balls found by themselves); give a point inside a ball in the first frame"
+        ));
+    }
+    let [ball] = tracks.balls.as_slice() else {
+        return None;
+    };
+    let c = &tracks.calibration;
+    let a = c.groove_deg.to_radians();
+    let along = ((x - c.origin_px.0) * a.cos() + (y - c.origin_px.1) * a.sin()) / c.px_per_m;
+    let first = ball.x.iter().copied().find(|v| v.is_finite())?;
+    let beyond = 2.0 * c.radius_m;
+    let other = match ball.name {
+        "right" => along < first - beyond,
+        _ => along > first + beyond,
+    };
+    other.then(|| {
+        format!(
+            "{point}: the ball found there was not followed in enough frames to be tracked; these are the {} ball's tracks alone",
+            ball.name
+        )
+    })
 }
 
 /// What was found, in lines for people (the file's comment lines, the JSON's notes).

@@ -189,6 +189,39 @@ fn a_folder_without_frames_is_refused_as_a_folder_of_frames() {
     }
 }
 
+/// A `--ball-at` seed that finds no ball is said in the tracks' notes (it was passed
+/// over in silence: the user saw the same tracks as without it); one on a ball is
+/// used and not noted.
+#[test]
+fn a_seed_that_finds_no_ball_is_said() {
+    let dir = folder().to_str().unwrap();
+    let film = Film::new(&common::paper_scene(), look(), 0.4);
+    let ball = film.truth(0)[0].centre;
+    let on_ball = format!("{:.0},{:.0}", ball.0, ball.1);
+    let c = cache("seed-note");
+    for (at, noted) in [("5,5", true), (on_ball.as_str(), false)] {
+        let (code, out, err) = run(
+            &[
+                "track",
+                dir,
+                "--fps",
+                "100",
+                "--radius",
+                "2.75cm",
+                "--ball-at",
+                at,
+            ],
+            &c,
+        );
+        assert_eq!(code, 0, "{at}: {err}");
+        let note = format!(
+            "# --ball-at {at}: no ball's outline was found about that point, so the seed was not used"
+        );
+        assert_eq!(out.contains(&note), noted, "{at}: {out}");
+        assert!(out.contains("# left ball: centre in"), "{at}: {out}");
+    }
+}
+
 #[test]
 fn video_options_refused_where_they_mean_nothing() {
     let dir = folder().to_str().unwrap();
