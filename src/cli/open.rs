@@ -453,7 +453,7 @@ pub fn opened_tracking(
         data: Vec::new(),
         ..DataArgs::default()
     };
-    let mut app = App::new(lab(scene_args, &without)?, library);
+    let mut app = App::new(lab(scene_args, &without)?.awaiting_own_data(), library);
     let name = data.data.first().map(|p| p.display().to_string());
     app.set_video_tracker(video_tracker(scene_args, data, options.clone()));
     app.track_video(

@@ -58,6 +58,9 @@ pub struct Lab {
     in_use: Option<InUse>,
     /// The user's data that could be read but not fitted, shown without a fit.
     unfit: Option<Unfit>,
+    /// The user's own data are on their way (a `--data` video tracked on a worker):
+    /// the preset's series is not shown meanwhile, nor after the tracking fails.
+    awaiting: bool,
     /// The run pinned for an A/B comparison.
     pub pinned: Option<Pinned>,
     /// The current snapshot, built from the layers by [`Resolved::build`].
@@ -80,13 +83,14 @@ impl Lab {
     /// The lab on its settings, with the user's own series (`--data`) in place of the
     /// preset's, if any.
     pub fn new(settings: Layers, own_data: Option<OwnData>) -> Result<Lab, SceneError> {
-        let in_use = choose(&settings, own_data.as_ref(), None)?;
+        let in_use = choose(&settings, own_data.as_ref(), false)?;
         let now = Arc::new(Resolved::build(&settings, in_use.as_ref(), None)?);
         Ok(Lab {
             settings,
             own_data,
             in_use,
             unfit: None,
+            awaiting: false,
             pinned: None,
             now,
             generation: 0,
@@ -103,6 +107,20 @@ impl Lab {
     pub fn with_unfit(mut self, unfit: Unfit) -> Lab {
         // They are the user's data: the preset's are not shown beside them.
         self.set_unfit(unfit);
+        self
+    }
+
+    /// The lab awaiting the user's own data (a `--data` video tracked on a worker):
+    /// until they arrive, and if they never do (the tracking refused), no series is
+    /// shown: the preset's points would read as the user's. Dropping the data
+    /// (`Lab::drop_data`) brings the preset's back.
+    pub fn awaiting_own_data(mut self) -> Lab {
+        self.awaiting = true;
+        // Nothing the scene takes is named the data's (the preset's series gave v0
+        // 'd'), and the masses are assumed, as for the user's data.
+        self.settings.from_data = Some(SceneSpec::default());
+        self.rebuild()
+            .expect("awaiting data changes nothing the scene depends on");
         self
     }
 
@@ -325,7 +343,9 @@ impl Lab {
     /// Builds the snapshot of the layers, the series in use and the pin; its
     /// generation moves on only if the scene, its span or its data changed.
     fn rebuild(&mut self) -> Result<(), SceneError> {
-        let chosen = choose(&self.settings, self.own_data.as_ref(), self.unfit())?;
+        let stand_in = self.unfit().is_some()
+            || (self.awaiting && self.own_data.is_none() && !self.settings.data_dropped());
+        let chosen = choose(&self.settings, self.own_data.as_ref(), stand_in)?;
         let same = data::same_data(chosen.as_ref(), self.in_use.as_ref());
         let in_use = if same {
             self.in_use.as_ref()
@@ -363,17 +383,18 @@ impl Lab {
     }
 }
 
-/// The data the layers' scene shows, by the rule of `data::in_use` (none beside the
-/// user's data without a fit); an error if its
+/// The data the layers' scene shows, by the rule of `data::in_use` (none where the
+/// user's data stand in for the preset's: without a fit, or awaited); an error if its
 /// R would put their rim mark off the ball.
 fn choose(
     settings: &Layers,
     own: Option<&OwnData>,
-    unfit: Option<&Unfit>,
+    stand_in: bool,
 ) -> Result<Option<InUse>, SceneError> {
     let (scene, _, _) = settings.settle()?;
-    // The user's data without a fit stand in for their own: not the preset's.
-    if unfit.is_some() {
+    // The user's data without a fit, or still to come, stand in for their own: not
+    // the preset's.
+    if stand_in {
         return Ok(None);
     }
     let in_use = data::in_use(

@@ -367,6 +367,53 @@ fn the_app_tracks_on_a_worker_and_takes_the_data_in_when_done() {
     assert!(common::text(&app, (120, 40), false).contains(" Scene  t = "));
 }
 
+/// While the user's video is tracked, and after its tracking is refused, the app
+/// shows no measured series: the preset's points beside "measured v_cm" (and v0
+/// named the data's, a data line in Why) read as the user's own (a new user's
+/// report: a refused clip showed the paper's data as if they were the clip's).
+#[test]
+fn a_refused_video_leaves_no_preset_data_standing_in_for_it() {
+    let dir = super::blank_frames("video_app_refused", 6);
+    let scene = SceneArgs {
+        values: SceneSpec::default()
+            .with(Key::Radius, 0.0275)
+            .with(Key::Width, 0.049),
+        ..SceneArgs::default()
+    };
+    let data = DataArgs {
+        data: vec![dir.clone()],
+        fps: Some(30.0),
+        ..DataArgs::default()
+    };
+    let options = Options {
+        radius: 0.0275,
+        fps: Some(30.0),
+        px_per_m: None,
+        radius_from: "--radius".into(),
+        cache: None,
+        roi: None,
+        ball_at: None,
+    };
+    let library = common::no_user_presets("video-app-refused");
+    let mut app = groovelab::cli::opened_tracking(&scene, &data, library, options).unwrap();
+    let shown = |app: &groovelab::tui::app::App| {
+        let text = common::text(app, (120, 40), false);
+        assert!(!text.contains("measured v_cm"), "{text}");
+        assert!(!text.contains("data: RMS"), "{text}");
+        assert!(!text.contains(" d both balls"), "{text}");
+    };
+    assert!(app.lab.series().is_none());
+    shown(&app);
+    app.wait();
+    assert!(
+        matches!(&app.status, Status::Error(s) if s.contains("no ball found")),
+        "{:?}",
+        app.status
+    );
+    assert!(app.lab.series().is_none());
+    shown(&app);
+}
+
 /// With a graphics protocol (kitty, forced: no terminal here), the video panel's
 /// picture is made on a worker once per picture shown, not per redraw, and drawn
 /// into the panel's cells.
