@@ -222,22 +222,7 @@ fn attempt(
                 Some(at) => VideoProblem::Seeded { error: e, at },
                 None => e.into(),
             };
-            let found = found(&tracker);
-            let first_frame = (pictures == Pictures::Made).then(|| {
-                let first: Vec<_> = found
-                    .first()
-                    .into_iter()
-                    .flatten()
-                    .flatten()
-                    .copied()
-                    .collect();
-                VideoView::first_frame(thumbs, &first, what.to_string())
-            });
-            return Err(Box::new(Refused {
-                error: err(what),
-                found,
-                first_frame,
-            }));
+            return Err(refused(&tracker, thumbs, pictures, err(what)));
         }
     };
     if let Some(b) = band
@@ -493,6 +478,32 @@ const AHEAD_BYTES: usize = 256 << 20;
 /// what fits in [`AHEAD_BYTES`], at least 16.
 fn lookahead(width: usize, height: usize) -> usize {
     (AHEAD_BYTES / vision::Frame::bytes(width, height).max(1)).max(16)
+}
+
+/// A tracking refused: why, what the tracker found (each frame's fits, unchecked)
+/// and, with pictures made, the first frame with them drawn over it.
+fn refused(
+    tracker: &Tracker,
+    thumbs: Thumbs,
+    pictures: Pictures,
+    error: VideoError,
+) -> Box<Refused> {
+    let found = found(tracker);
+    let first_frame = (pictures == Pictures::Made).then(|| {
+        let first: Vec<_> = found
+            .first()
+            .into_iter()
+            .flatten()
+            .flatten()
+            .copied()
+            .collect();
+        VideoView::first_frame(thumbs, &first, error.what.to_string())
+    });
+    Box::new(Refused {
+        error,
+        found,
+        first_frame,
+    })
 }
 
 /// What became of a `--ball-at` seed where the tracks would not show it: no ball's
