@@ -62,4 +62,4 @@ pub use frame::Frame;
 pub use gray::Gray;
 pub use params::{Params, Roi};
 pub use tracker::{Tracker, track};
-pub use tracks::{Tracks, TracksError, tracks};
+pub use tracks::{Handles, Tracks, TracksError, tracks};

@@ -15,7 +15,7 @@ use super::tracker::{FrameFixes, LeftOut, Tracker, median};
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum TracksError {
     #[error(
-        "no ball found in {frames} frames (a ball is a round blob contrasting with the background, at least {min_radius:.0} px in radius); {TRY}"
+        "no ball found in {frames} frames (a ball is a round blob contrasting with the background, at least {min_radius:.0} px in radius)"
     )]
     NoBall { frames: usize, min_radius: f64 },
     #[error(
@@ -24,23 +24,23 @@ pub enum TracksError {
     )]
     TooFewFrames { frames: usize, need: usize },
     #[error(
-        "more than two balls in {crowded} of {frames} frames, expected the two colliding balls (or one); {TRY}"
+        "more than two balls in {crowded} of {frames} frames, expected the two colliding balls (or one)"
     )]
     TooMany { crowded: usize, frames: usize },
     /// Neither ball found in a third of the frames.
     #[error(
-        "tracking unsure: neither ball was found in a third of the frames (at most in {seen} of {frames}), so no tracks are given; {TRY}"
+        "tracking unsure: neither ball was found in a third of the frames (at most in {seen} of {frames}), so no tracks are given"
     )]
     Sparse { seen: usize, frames: usize },
     /// The fitted radii disagree: no scale is given from them.
     #[error(
-        "tracking unsure: the balls' fitted radii scatter by {:.0} % about {median_px:.1} px (both balls have one radius), so no scale is given; {TRY}",
+        "tracking unsure: the balls' fitted radii scatter by {:.0} % about {median_px:.1} px (both balls have one radius), so no scale is given",
         100.0 * scatter
     )]
     RadiiDisagree { median_px: f64, scatter: f64 },
     /// The balls' edge in colour lies far from their outlines in brightness.
     #[error(
-        "tracking unsure: the balls' edge in colour lies {:.1} px {} their outlines in brightness ({:.0} % of their radius {radius_px:.1} px): the outlines may be a ball's lit part or the wall about it, so no scale is given; {TRY}",
+        "tracking unsure: the balls' edge in colour lies {:.1} px {} their outlines in brightness ({:.0} % of their radius {radius_px:.1} px): the outlines may be a ball's lit part or the wall about it, so no scale is given",
         offset_px.abs(),
         if *offset_px > 0.0 { "outside" } else { "inside" },
         100.0 * offset_px.abs() / radius_px
@@ -48,7 +48,7 @@ pub enum TracksError {
     ColourEdge { offset_px: f64, radius_px: f64 },
     /// A "ball" whose centre swings across the groove's line.
     #[error(
-        "tracking unsure: the {name} ball's centre swings {across_px:.1} px (RMS) across the groove's line, {:.0} % of its radius (a ball rolls along it), so no tracks are given; {TRY}",
+        "tracking unsure: the {name} ball's centre swings {across_px:.1} px (RMS) across the groove's line, {:.0} % of its radius (a ball rolls along it), so no tracks are given",
         100.0 * across_px / radius_px
     )]
     Swings {
@@ -58,8 +58,40 @@ pub enum TracksError {
     },
 }
 
-/// What to try when the tracker is unsure (every refusal says it).
-const TRY: &str = "try --roi X,Y,W,H (pixels) around the groove, --ball-at X,Y on a ball in the first frame, or --scale LENGTH (a pixel's length)";
+impl TracksError {
+    /// Which of the user's handles could help where this refusal stands (what the
+    /// edge says to try next): a rectangle about the groove and a seed on a ball where
+    /// the balls were not found or not told from other things; a seed and a given
+    /// scale where they were found but their radius is in doubt (a scale given needs
+    /// no radius). None where the clip is too short.
+    pub fn helped_by(&self) -> Handles {
+        match self {
+            TracksError::TooFewFrames { .. } => Handles::default(),
+            TracksError::NoBall { .. }
+            | TracksError::TooMany { .. }
+            | TracksError::Sparse { .. }
+            | TracksError::Swings { .. } => Handles {
+                roi: true,
+                ball_at: true,
+                scale: false,
+            },
+            TracksError::RadiiDisagree { .. } | TracksError::ColourEdge { .. } => Handles {
+                roi: false,
+                ball_at: true,
+                scale: true,
+            },
+        }
+    }
+}
+
+/// The handles a user has on a hard clip (`--roi`, `--ball-at`, `--scale`): which
+/// were given, or which could help.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Handles {
+    pub roi: bool,
+    pub ball_at: bool,
+    pub scale: bool,
+}
 
 /// How unsure the balls' edge is, px: the spread of the edge's place by its
 /// definitions (the gradient's peak the fit uses, 0, and the half-way crossings of

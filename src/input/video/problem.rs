@@ -4,7 +4,7 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::vision::TracksError;
+use crate::vision::{Handles, TracksError};
 
 /// Why the video or folder `file` cannot be read (or written): `{file}: {what}`.
 #[derive(Debug, thiserror::Error)]
@@ -169,12 +169,16 @@ pub enum VideoProblem {
     },
     #[error("holds {frames} frame(s), expected a video")]
     TooFewFrames { frames: usize },
-    #[error(transparent)]
-    Tracks(#[from] TracksError),
-    /// A tracking seeded with `--ball-at` (or a click) that gave no tracks: the
-    /// seed's outline set the balls' first radius, so the clip may track without it.
-    #[error("{error} (tracked with the seed --ball-at {},{}: try without it too)", at.0, at.1)]
-    Seeded { error: TracksError, at: (f64, f64) },
+    /// The balls not found or the tracker unsure: why, then what to try next, by
+    /// the handles that could help and were not given (`given`); a tracking seeded
+    /// with `--ball-at` (or a click) says so, as the seed's outline set the balls'
+    /// first radius and the clip may track without it.
+    #[error("{error}{}", next_try(error, *given, *at))]
+    Tracks {
+        error: TracksError,
+        given: Handles,
+        at: Option<(f64, f64)>,
+    },
     /// Waiting for ffmpeg failed.
     #[error("ffmpeg: {0}")]
     Ffmpeg(std::io::Error),
@@ -196,5 +200,117 @@ impl VideoProblem {
             std::io::ErrorKind::NotFound => VideoProblem::NoFfmpeg,
             _ => VideoProblem::CannotRun { program, error },
         }
+    }
+}
+
+/// What to try after the refusal `error` (`VideoProblem::Tracks`): the handles that
+/// could help and were not `given`; where every one that could was given, to film
+/// the clip again; after a seed (`at`), to try without it.
+fn next_try(error: &TracksError, given: Handles, at: Option<(f64, f64)>) -> String {
+    let help = error.helped_by();
+    let untried: Vec<&str> = [
+        (
+            help.roi && !given.roi,
+            "--roi X,Y,W,H (pixels) around the groove",
+        ),
+        (
+            help.ball_at && !given.ball_at,
+            "--ball-at X,Y on a ball in the first frame",
+        ),
+        (
+            help.scale && !given.scale,
+            "--scale LENGTH (a pixel's length)",
+        ),
+    ]
+    .into_iter()
+    .filter_map(|(open, what)| open.then_some(what))
+    .collect();
+    let seed =
+        at.map(|(x, y)| format!(" (tracked with the seed --ball-at {x},{y}: try without it too)"));
+    let again = "film the clip again with the balls standing out from the wall (a plain wall of another brightness or colour, more light, less compression)";
+    let tries = match untried.as_slice() {
+        [] => None,
+        [one] => Some(format!("; try {one}")),
+        [first, last] => Some(format!("; try {first} or {last}")),
+        [rest @ .., last] => Some(format!("; try {}, or {last}", rest.join(", "))),
+    };
+    match (tries, seed) {
+        (Some(t), seed) => t + &seed.unwrap_or_default(),
+        (None, _) if help == Handles::default() => String::new(),
+        (None, Some(seed)) => format!("{seed}; else {again}"),
+        (None, None) => format!("; the options given did not help: {again}"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const SPARSE: TracksError = TracksError::Sparse {
+        seen: 8,
+        frames: 27,
+    };
+    const SCATTER: TracksError = TracksError::RadiiDisagree {
+        median_px: 11.8,
+        scatter: 0.09,
+    };
+
+    fn given(roi: bool, ball_at: bool, scale: bool) -> Handles {
+        Handles {
+            roi,
+            ball_at,
+            scale,
+        }
+    }
+
+    #[test]
+    fn the_advice_names_only_the_options_not_yet_given_that_could_help() {
+        let none = given(false, false, false);
+        let cases = [
+            (
+                &SPARSE,
+                none,
+                None,
+                "; try --roi X,Y,W,H (pixels) around the groove or --ball-at X,Y on a ball in the first frame",
+            ),
+            (
+                &SPARSE,
+                given(true, false, true),
+                None,
+                "; try --ball-at X,Y on a ball in the first frame",
+            ),
+            (
+                &SCATTER,
+                none,
+                None,
+                "; try --ball-at X,Y on a ball in the first frame or --scale LENGTH (a pixel's length)",
+            ),
+            (
+                &SCATTER,
+                given(false, true, false),
+                Some((40.0, 120.0)),
+                "; try --scale LENGTH (a pixel's length) (tracked with the seed --ball-at 40,120: try without it too)",
+            ),
+            (
+                &TracksError::TooFewFrames { frames: 2, need: 3 },
+                none,
+                None,
+                "",
+            ),
+        ];
+        for (error, handles, at, want) in cases {
+            assert_eq!(next_try(error, handles, at), want, "{error:?} {handles:?}");
+        }
+        // Every option that could help given: film again (after trying without a seed).
+        let all = given(true, true, false);
+        assert!(
+            next_try(&SPARSE, all, None)
+                .starts_with("; the options given did not help: film the clip again")
+        );
+        let seeded = next_try(&SPARSE, all, Some((33.0, 151.0)));
+        assert!(
+            seeded.starts_with(" (tracked with the seed --ball-at 33,151: try without it too); else film the clip again"),
+            "{seeded}"
+        );
     }
 }

@@ -218,9 +218,14 @@ fn attempt(
         Ok(tracks) => tracks,
         Err(_) if band.is_some() => return Ok(Attempt::Again),
         Err(e) => {
-            let what = match options.ball_at {
-                Some(at) => VideoProblem::Seeded { error: e, at },
-                None => e.into(),
+            let what = VideoProblem::Tracks {
+                error: e,
+                given: vision::Handles {
+                    roi: options.roi.is_some(),
+                    ball_at: options.ball_at.is_some(),
+                    scale: options.px_per_m.is_some(),
+                },
+                at: options.ball_at,
             };
             return Err(refused(&tracker, thumbs, pictures, err(what)));
         }
