@@ -24,10 +24,11 @@ use groovelab::physics::scene::Scene;
 mod film;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
+    const USAGE: &str =
+        "usage: film FOLDER [SEED [small] | speed] (written: frame0001.png … or clip.mp4)";
     let mut args = std::env::args().skip(1);
-    let dir = args.next().ok_or(
-        "usage: film FOLDER [SEED [small] | speed] (written: frame0001.png … or clip.mp4)",
-    )?;
+    // `film --help` prints the usage; it made a folder named `--help`.
+    let dir = args.next().filter(|d| !d.starts_with('-')).ok_or(USAGE)?;
     let dir = std::path::PathBuf::from(dir);
     std::fs::create_dir_all(&dir)?;
     let preset = groovelab::input::preset::load("paper-b4.9")?;
