@@ -36,7 +36,8 @@ fn a_track_without_an_impact_says_what_its_sharpest_change_did() {
     // (The speed after is a line's over frames that straddle the change.)
     let cases = [
         (0.1, 0.6, "speeds the ball up from 0.100 to 0.5"),
-        (-0.6, -0.9, "speeds the ball up from -0.600 to -0.8"),
+        // Moving toward −x: speeds, not signed velocities (it said "from -0.600").
+        (-0.6, -0.9, "speeds the ball up from 0.600 to 0.8"),
         (0.6, 0.5, "slows the ball by only 1"),
     ];
     for (v1, v2, want) in cases {

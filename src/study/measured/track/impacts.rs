@@ -89,16 +89,15 @@ fn short(t: f64) -> String {
 /// x) that is no impact did: started the ball, sped it up, or slowed it a little (a
 /// reversal is an impact: it slows the ball by more than its speed).
 fn seen(before: f64, after: f64) -> String {
+    // Speeds, not the file's signed velocities (-1.554 m/s read as a speed below 0).
     let (b, a) = (before.abs(), after.abs());
     if b < 1e-9 {
-        format!("starts the ball from rest to {after:.3} m/s (a push or a release)")
+        format!("starts the ball from rest to {a:.3} m/s (a push or a release)")
     } else if a >= b {
-        format!(
-            "speeds the ball up from {before:.3} to {after:.3} m/s (a push, a release or a slope)"
-        )
+        format!("speeds the ball up from {b:.3} to {a:.3} m/s (a push, a release or a slope)")
     } else {
         format!(
-            "slows the ball by only {:.0} % (from {before:.3} to {after:.3} m/s)",
+            "slows the ball by only {:.0} % (from {b:.3} to {a:.3} m/s)",
             100.0 * (b - a) / b
         )
     }
