@@ -620,7 +620,7 @@ fn notes(
     });
     if let [b] = tracks.balls.as_slice() {
         n.push(format!(
-            "one ball in view: tracked as the {} ball (it moves {} at first); no second ball",
+            "one ball tracked: the {} ball (it moves {} at first); the other was not found in enough frames (out of view, or not told from the wall)",
             b.name,
             if b.name == "left" {
                 "right, coming from the left"

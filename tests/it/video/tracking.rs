@@ -385,7 +385,7 @@ fn one_ball_in_view_is_tracked_and_named() {
     let (code, text, err) = run(&["track", d.to_str().unwrap(), "--fps", "100"]);
     assert_eq!(code, 0, "{err}");
     assert!(
-        text.contains("one ball in view: tracked as the left ball"),
+        text.contains("one ball tracked: the left ball (it moves right, coming from the left at first); the other was not found in enough frames"),
         "{text}"
     );
     assert!(
