@@ -453,8 +453,9 @@ pub fn opened_tracking(
         data: Vec::new(),
         ..DataArgs::default()
     };
-    let mut app = App::new(lab(scene_args, &without)?.awaiting_own_data(), library);
     let name = data.data.first().map(|p| p.display().to_string());
+    let awaited = lab(scene_args, &without)?.awaiting_own_data(name.clone().unwrap_or_default());
+    let mut app = App::new(awaited, library);
     app.set_video_tracker(video_tracker(scene_args, data, options.clone()));
     app.track_video(
         name.unwrap_or_default(),

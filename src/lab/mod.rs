@@ -58,9 +58,10 @@ pub struct Lab {
     in_use: Option<InUse>,
     /// The user's data that could be read but not fitted, shown without a fit.
     unfit: Option<Unfit>,
-    /// The user's own data are on their way (a `--data` video tracked on a worker):
-    /// the preset's series is not shown meanwhile, nor after the tracking fails.
-    awaiting: bool,
+    /// The user's own data on their way, by name (a `--data` video tracked on a
+    /// worker): the preset's series is not shown meanwhile, nor after the tracking
+    /// fails, until dropped.
+    awaiting: Option<String>,
     /// The run pinned for an A/B comparison.
     pub pinned: Option<Pinned>,
     /// The current snapshot, built from the layers by [`Resolved::build`].
@@ -90,7 +91,7 @@ impl Lab {
             own_data,
             in_use,
             unfit: None,
-            awaiting: false,
+            awaiting: None,
             pinned: None,
             now,
             generation: 0,
@@ -110,30 +111,34 @@ impl Lab {
         self
     }
 
-    /// The lab awaiting the user's own data (a `--data` video tracked on a worker):
-    /// until they arrive, and if they never do (the tracking refused), no series is
-    /// shown: the preset's points would read as the user's. Dropping the data
-    /// (`Lab::drop_data`) brings the preset's back.
-    pub fn awaiting_own_data(mut self) -> Lab {
-        self.awaiting = true;
-        // Nothing the scene takes is named the data's (the preset's series gave v0
-        // 'd'), and the masses are assumed, as for the user's data.
-        self.settings.from_data = Some(SceneSpec::default());
-        self.rebuild()
-            .expect("awaiting data changes nothing the scene depends on");
+    /// The lab awaiting the user's own data, `name` (a `--data` video tracked on a
+    /// worker): until they arrive, and if they never do (the tracking refused), no
+    /// series is shown: the preset's points would read as the user's. Dropping the
+    /// data (`Lab::drop_data`) brings the preset's back.
+    pub fn awaiting_own_data(mut self, name: String) -> Lab {
+        self.awaiting = Some(name);
+        self.no_values_from_data();
         self
+    }
+
+    /// Names no value the scene takes the data's (the preset's series gave v0 'd')
+    /// and assumes the masses, as for the user's data; where the preset's v0 comes
+    /// from its series alone (a preset file without one), its series' values stay.
+    fn no_values_from_data(&mut self) {
+        let before = self.settings.from_data.replace(SceneSpec::default());
+        if self.rebuild().is_err() {
+            self.settings.from_data = before;
+            self.rebuild()
+                .expect("the values from the data before were valid");
+        }
     }
 
     /// The user's data without a fit arriving after the lab opened (a video tracked
     /// on a worker whose clip shows no impact): as [`Lab::with_unfit`].
     pub fn set_unfit(&mut self, unfit: Unfit) {
         self.unfit = Some(unfit);
-        // The user's data are in use and measure nothing the scene takes: no value is
-        // named as the data's (the preset's own series gave v0 'd' before), and the
-        // masses are assumed.
-        self.settings.from_data = Some(SceneSpec::default());
-        self.rebuild()
-            .expect("data without a fit change nothing the scene depends on");
+        // The user's data are in use and measure nothing the scene takes.
+        self.no_values_from_data();
     }
 
     /// The user's data shown without a fit, unless dropped or replaced by data of
@@ -273,10 +278,16 @@ impl Lab {
     /// preset's data are shown while the groove is the preset's, else none (see
     /// `data::in_use`). The dropped series' name, if there was one.
     pub fn drop_data(&mut self) -> Option<String> {
-        let name = match (self.own_data(), self.unfit()) {
-            (Some(own), _) => own.name.clone(),
-            (None, Some(unfit)) => unfit.name.clone(),
-            (None, None) => return None,
+        let awaited = self
+            .awaiting
+            .as_ref()
+            .filter(|_| self.own_data.is_none() && !self.settings.data_dropped());
+        let name = match (self.own_data(), self.unfit(), awaited) {
+            (Some(own), _, _) => own.name.clone(),
+            (None, Some(unfit), _) => unfit.name.clone(),
+            // A video still tracked, or refused: its place is given back.
+            (None, None, Some(name)) => name.clone(),
+            (None, None, None) => return None,
         };
         self.edit(Edit::DropData)
             .expect("dropping the data leaves a valid scene");
@@ -344,7 +355,9 @@ impl Lab {
     /// generation moves on only if the scene, its span or its data changed.
     fn rebuild(&mut self) -> Result<(), SceneError> {
         let stand_in = self.unfit().is_some()
-            || (self.awaiting && self.own_data.is_none() && !self.settings.data_dropped());
+            || (self.awaiting.is_some()
+                && self.own_data.is_none()
+                && !self.settings.data_dropped());
         let chosen = choose(&self.settings, self.own_data.as_ref(), stand_in)?;
         let same = data::same_data(chosen.as_ref(), self.in_use.as_ref());
         let in_use = if same {

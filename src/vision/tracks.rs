@@ -61,9 +61,10 @@ pub enum TracksError {
 impl TracksError {
     /// Which of the user's handles could help where this refusal stands (what the
     /// edge says to try next): a rectangle about the groove and a seed on a ball where
-    /// the balls were not found or not told from other things; a seed and a given
-    /// scale where they were found but their radius is in doubt (a scale given needs
-    /// no radius). None where the clip is too short.
+    /// the balls were not found or not told from other things; a given scale where
+    /// they were found but their radius is in doubt (a scale given needs no radius;
+    /// a seed rescued none of those refusals on the looks table, docs/tracking.md).
+    /// None where the clip is too short.
     pub fn helped_by(&self) -> Handles {
         match self {
             TracksError::TooFewFrames { .. } => Handles::default(),
@@ -77,7 +78,7 @@ impl TracksError {
             },
             TracksError::RadiiDisagree { .. } | TracksError::ColourEdge { .. } => Handles {
                 roi: false,
-                ball_at: true,
+                ball_at: false,
                 scale: true,
             },
         }

@@ -167,15 +167,17 @@ impl Sources {
                 .collect();
             parts.push(typed.join(" "));
         }
-        // A value among the options that nobody typed: the R a `--data` video was
-        // tracked with (its tracks state it, as a track file's header does).
-        let untyped: Vec<&str> = flags
-            .iter()
-            .filter(|k| !self.typed_rows.iter().any(|t| t.param().sets.contains(k)))
-            .map(|k| k.name())
-            .collect();
-        if let Some(name) = self.file.as_ref().filter(|_| !untyped.is_empty()) {
-            parts.push(format!("{name}'s tracks ({})", untyped.join(", ")));
+        // The one value among the options that nobody typed: the R a `--data` video
+        // was tracked with (its tracks state it, as a track file's header does).
+        let untyped_radius = flags.contains(&Key::Radius)
+            && !self
+                .typed_rows
+                .iter()
+                .any(|t| t.param().sets.contains(&Key::Radius));
+        if let Some(name) = self.file.as_ref().filter(|n| {
+            untyped_radius && super::super::video_data::is_video(std::path::Path::new(n))
+        }) {
+            parts.push(format!("{name}'s tracks (radius)"));
         }
         let source = match parts.as_slice() {
             [] => unreachable!("a preset, the file's header, data or flags give the scene"),

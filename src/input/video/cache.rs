@@ -136,8 +136,9 @@ pub fn user_folder() -> Option<PathBuf> {
     Some(base.join("groovelab").join("tracks"))
 }
 
-/// The cache key: the content of the video (a folder's files, names and bytes, in
-/// order), the options and the tracker's version.
+/// The cache key: the content of the video (a folder's frames, names and bytes, in
+/// order: only its PNG/JPEG files, so a folder of other files is refused before a
+/// byte of them is read), the options and the tracker's version.
 fn key(path: &Path, o: &Options) -> std::io::Result<u64> {
     let mut h = std::collections::hash_map::DefaultHasher::new();
     options_key(o).hash(&mut h);
@@ -145,7 +146,7 @@ fn key(path: &Path, o: &Options) -> std::io::Result<u64> {
         let mut files: Vec<PathBuf> = std::fs::read_dir(path)?
             .flatten()
             .map(|e| e.path())
-            .filter(|p| p.is_file())
+            .filter(|p| p.is_file() && super::folder::is_image(p))
             .collect();
         files.sort();
         for f in files {

@@ -128,14 +128,3 @@ fn checked(path: &Path, limits: &Limits) -> Result<Opened, VideoError> {
     let probe = probe::probe(path)?;
     Ok(Opened::Video(probe.info(path, limits)?))
 }
-
-/// True when `path` holds numbered PNG/JPEG frames (a folder `open` reads; any
-/// other folder is no video).
-pub fn is_frame_folder(path: &Path) -> bool {
-    path.is_dir()
-        && std::fs::read_dir(path).is_ok_and(|entries| {
-            entries
-                .flatten()
-                .any(|e| e.path().is_file() && folder::is_image(&e.path()))
-        })
-}

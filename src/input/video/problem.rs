@@ -204,8 +204,10 @@ impl VideoProblem {
 }
 
 /// What to try after the refusal `error` (`VideoProblem::Tracks`): the handles that
-/// could help and were not `given`; where every one that could was given, to film
-/// the clip again; after a seed (`at`), to try without it.
+/// could help and were not `given`; after a seed (`at`, given as `--ball-at`), to try
+/// without it, and where nothing else is left, to film the clip again. (Every refusal
+/// but a clip too short is helped by a seed or a scale, and a refusal with a scale
+/// given is never for the radius: no advice is left empty but the too-short clip's.)
 fn next_try(error: &TracksError, given: Handles, at: Option<(f64, f64)>) -> String {
     let help = error.helped_by();
     let untried: Vec<&str> = [
@@ -228,17 +230,10 @@ fn next_try(error: &TracksError, given: Handles, at: Option<(f64, f64)>) -> Stri
     let seed =
         at.map(|(x, y)| format!(" (tracked with the seed --ball-at {x},{y}: try without it too)"));
     let again = "film the clip again with the balls standing out from the wall (a plain wall of another brightness or colour, more light, less compression)";
-    let tries = match untried.as_slice() {
-        [] => None,
-        [one] => Some(format!("; try {one}")),
-        [first, last] => Some(format!("; try {first} or {last}")),
-        [rest @ .., last] => Some(format!("; try {}, or {last}", rest.join(", "))),
-    };
-    match (tries, seed) {
-        (Some(t), seed) => t + &seed.unwrap_or_default(),
-        (None, _) if help == Handles::default() => String::new(),
-        (None, Some(seed)) => format!("{seed}; else {again}"),
-        (None, None) => format!("; the options given did not help: {again}"),
+    match (untried.is_empty(), seed) {
+        (false, seed) => format!("; try {}{}", untried.join(" or "), seed.unwrap_or_default()),
+        (true, Some(seed)) => format!("{seed}; else {again}"),
+        (true, None) => String::new(),
     }
 }
 
@@ -266,6 +261,7 @@ mod tests {
     #[test]
     fn the_advice_names_only_the_options_not_yet_given_that_could_help() {
         let none = given(false, false, false);
+        let scale = "; try --scale LENGTH (a pixel's length)";
         let cases = [
             (
                 &SPARSE,
@@ -279,18 +275,8 @@ mod tests {
                 None,
                 "; try --ball-at X,Y on a ball in the first frame",
             ),
-            (
-                &SCATTER,
-                none,
-                None,
-                "; try --ball-at X,Y on a ball in the first frame or --scale LENGTH (a pixel's length)",
-            ),
-            (
-                &SCATTER,
-                given(false, true, false),
-                Some((40.0, 120.0)),
-                "; try --scale LENGTH (a pixel's length) (tracked with the seed --ball-at 40,120: try without it too)",
-            ),
+            (&SCATTER, none, None, scale),
+            (&SCATTER, given(true, false, false), None, scale),
             (
                 &TracksError::TooFewFrames { frames: 2, need: 3 },
                 none,
@@ -301,16 +287,16 @@ mod tests {
         for (error, handles, at, want) in cases {
             assert_eq!(next_try(error, handles, at), want, "{error:?} {handles:?}");
         }
-        // Every option that could help given: film again (after trying without a seed).
-        let all = given(true, true, false);
-        assert!(
-            next_try(&SPARSE, all, None)
-                .starts_with("; the options given did not help: film the clip again")
+        let seeded = next_try(&SCATTER, given(false, true, false), Some((40.0, 120.0)));
+        assert_eq!(
+            seeded,
+            format!("{scale} (tracked with the seed --ball-at 40,120: try without it too)")
         );
-        let seeded = next_try(&SPARSE, all, Some((33.0, 151.0)));
+        // Every option that could help given: without the seed, else film again.
+        let all = next_try(&SPARSE, given(true, true, false), Some((33.0, 151.0)));
         assert!(
-            seeded.starts_with(" (tracked with the seed --ball-at 33,151: try without it too); else film the clip again"),
-            "{seeded}"
+            all.starts_with(" (tracked with the seed --ball-at 33,151: try without it too); else film the clip again"),
+            "{all}"
         );
     }
 }

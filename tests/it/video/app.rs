@@ -189,6 +189,31 @@ fn a_folder_without_frames_is_refused_as_a_folder_of_frames() {
     }
 }
 
+/// A folder's cache key is its frames': another file in it (notes, a stray video)
+/// is no part of the clip and is never read (a folder of other files was hashed whole
+/// before it was refused as holding no frames).
+#[test]
+fn a_folders_other_files_are_no_part_of_its_cache_key() {
+    let dir = scratch().join("frames-and-notes");
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    for e in std::fs::read_dir(folder()).unwrap() {
+        let p = e.unwrap().path();
+        std::fs::copy(&p, dir.join(p.file_name().unwrap())).unwrap();
+    }
+    let d = dir.to_str().unwrap();
+    let c = cache("other-files");
+    let kept = || std::fs::read_dir(c.join("groovelab/tracks")).map_or(0, |r| r.count());
+    let args = ["data", d, "--fps", "100", "--radius", "2.75cm"];
+    let (code, _, err) = run(&args, &c);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(kept(), 2, "the text and the pictures");
+    std::fs::write(dir.join("notes.txt"), "filmed on Monday").unwrap();
+    let (code, _, err) = run(&args, &c);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(kept(), 2, "tracked again for a file that is no frame");
+}
+
 /// A `--ball-at` seed that finds no ball is said in the tracks' notes (it was passed
 /// over in silence: the user saw the same tracks as without it); one on a ball is
 /// used and not noted.
@@ -412,6 +437,59 @@ fn a_refused_video_leaves_no_preset_data_standing_in_for_it() {
     );
     assert!(app.lab.series().is_none());
     shown(&app);
+    // D gives the preset's data their place back (it said "no data of your own").
+    app.apply(Action::DropData);
+    assert!(
+        matches!(&app.status, Status::Info(s) if s.starts_with(&format!("dropped {}", dir.display()))),
+        "{:?}",
+        app.status
+    );
+    assert!(app.lab.series().is_some());
+    assert!(common::text(&app, (120, 40), false).contains("measured v_cm"));
+}
+
+/// A preset file whose v0 only its measured series gives (no `v0` line) opens on a
+/// video tracked on a worker without a panic (the lab named no value the data's and
+/// then had no v0): its series' values stay, the series itself is not shown.
+#[test]
+fn a_preset_whose_v0_is_its_series_opens_on_a_video_tracked_on_a_worker() {
+    let dir = super::blank_frames("video_app_nov0", 6);
+    let text = std::fs::read_to_string("presets/paper-b4.9.toml").unwrap();
+    let nov0: String = text
+        .lines()
+        .filter(|l| !l.trim_start().starts_with("v0"))
+        .map(|l| format!("{l}\n"))
+        .collect();
+    let preset = dir.with_file_name("nov0.toml");
+    std::fs::write(&preset, nov0).unwrap();
+    let scene = SceneArgs {
+        preset: Some(preset.display().to_string()),
+        ..SceneArgs::default()
+    };
+    let data = DataArgs {
+        data: vec![dir.clone()],
+        fps: Some(30.0),
+        ..DataArgs::default()
+    };
+    let options = Options {
+        radius: 0.0275,
+        fps: Some(30.0),
+        px_per_m: None,
+        radius_from: "preset".into(),
+        cache: None,
+        roi: None,
+        ball_at: None,
+    };
+    let library = common::no_user_presets("video-app-nov0");
+    let mut app = groovelab::cli::opened_tracking(&scene, &data, library, options).unwrap();
+    assert!(app.lab.series().is_none());
+    assert!(
+        (app.lab.scene.left.v0 - 0.7928).abs() < 0.01,
+        "{}",
+        app.lab.scene.left.v0
+    );
+    app.wait();
+    assert!(app.lab.series().is_none());
 }
 
 /// With a graphics protocol (kitty, forced: no terminal here), the video panel's

@@ -44,7 +44,7 @@ pub struct Derive {
     /// Fewest frames needed on each side of the first impact. Default 4: the line
     /// through them (the approach speed) and the quadratic that places the impact
     /// each keep a degree of freedom for their scatter, and the fit's ± covers the
-    /// truth as often with 4 frames on a side as with 5 or 15
+    /// truth as often with 4 frames on a side as with 5 or more
     /// (`tests/it/data/tracks.rs`, `four_frames_on_a_side_fit_with_an_honest_uncertainty`).
     pub min_frames: usize,
 }
