@@ -141,6 +141,14 @@ impl Lab {
         self.no_values_from_data();
     }
 
+    /// The name of the user's data still awaited (or refused), unless they came or
+    /// were dropped.
+    fn awaited(&self) -> Option<&String> {
+        self.awaiting
+            .as_ref()
+            .filter(|_| self.own_data.is_none() && !self.settings.data_dropped())
+    }
+
     /// The user's data shown without a fit, unless dropped or replaced by data of
     /// their own that can be fitted.
     pub fn unfit(&self) -> Option<&Unfit> {
@@ -278,11 +286,7 @@ impl Lab {
     /// preset's data are shown while the groove is the preset's, else none (see
     /// `data::in_use`). The dropped series' name, if there was one.
     pub fn drop_data(&mut self) -> Option<String> {
-        let awaited = self
-            .awaiting
-            .as_ref()
-            .filter(|_| self.own_data.is_none() && !self.settings.data_dropped());
-        let name = match (self.own_data(), self.unfit(), awaited) {
+        let name = match (self.own_data(), self.unfit(), self.awaited()) {
             (Some(own), _, _) => own.name.clone(),
             (None, Some(unfit), _) => unfit.name.clone(),
             // A video still tracked, or refused: its place is given back.
@@ -354,10 +358,7 @@ impl Lab {
     /// Builds the snapshot of the layers, the series in use and the pin; its
     /// generation moves on only if the scene, its span or its data changed.
     fn rebuild(&mut self) -> Result<(), SceneError> {
-        let stand_in = self.unfit().is_some()
-            || (self.awaiting.is_some()
-                && self.own_data.is_none()
-                && !self.settings.data_dropped());
+        let stand_in = self.unfit().is_some() || self.awaited().is_some();
         let chosen = choose(&self.settings, self.own_data.as_ref(), stand_in)?;
         let same = data::same_data(chosen.as_ref(), self.in_use.as_ref());
         let in_use = if same {

@@ -77,8 +77,7 @@ pub struct Tracker {
     /// The median of `radii`, renewed while they are few and then every 256; or
     /// the seeded ball's radius (`Params::ball_at`).
     radius: Option<f64>,
-    /// The seed's outline and the frame it was found in (`Params::ball_at`).
-    seeded: Option<(usize, Circle)>,
+    seeded: bool,
     learner: Option<Learner>,
     background: Option<Background>,
     /// The near rail's edges in `background` (`rail::edges`), full-frame px.
@@ -214,9 +213,9 @@ impl Tracker {
         self.radius
     }
 
-    /// The outline the seed (`Params::ball_at`) found, which set the radius, and
-    /// its frame's index; `None` without a seed or where it found none.
-    pub fn seeded(&self) -> Option<(usize, Circle)> {
+    /// Whether the seed (`Params::ball_at`) found a ball's outline, which set the
+    /// radius (false without a seed).
+    pub fn seeded(&self) -> bool {
         self.seeded
     }
 
@@ -801,7 +800,7 @@ impl Tracker {
         let Some((sx, sy)) = self.params.ball_at else {
             return;
         };
-        if self.seeded.is_some() {
+        if self.seeded {
             return;
         }
         let holds = |o: &Outline| (o.circle.x - sx).hypot(o.circle.y - sy) <= o.circle.r;
@@ -816,7 +815,7 @@ impl Tracker {
         }
         let Some(o) = at else { return };
         let r = o.circle.r;
-        self.seeded = Some((self.frames.len(), o.circle));
+        self.seeded = true;
         self.radius = Some(r);
         let tol = self.params.radius_tolerance;
         for f in fits.iter_mut() {
@@ -927,7 +926,7 @@ impl Tracker {
         // The first lock must be the outermost circular edge about it; once a lock
         // was not (the ball's outline taken instead), so must every fit the balls'
         // radius is learned from (the first 64), each of the radius known so far.
-        let learning = self.seeded.is_none() && self.radii.len() <= 64;
+        let learning = !self.seeded && self.radii.len() <= 64;
         let o = if (known.is_none() || (learning && self.outer_taken)) && !o.colour {
             match self.outermost_agrees(frame, &o.outline) {
                 Outer::Agrees => o,

@@ -170,13 +170,14 @@ pub enum VideoProblem {
     #[error("holds {frames} frame(s), expected a video")]
     TooFewFrames { frames: usize },
     /// The balls not found or the tracker unsure: why, then what to try next, by
-    /// the handles that could help and were not given (`given`); a tracking seeded
-    /// with `--ball-at` (or a click) says so, as the seed's outline set the balls'
-    /// first radius and the clip may track without it.
-    #[error("{error}{}", next_try(error, *given, *at))]
+    /// the handles that could help and were not given (`--roi`, `--scale`, the seed
+    /// `at`); a tracking seeded with `--ball-at` (or a click) says so, as the seed's
+    /// outline set the balls' first radius and the clip may track without it.
+    #[error("{error}{}", next_try(error, *roi, *scale, *at))]
     Tracks {
         error: TracksError,
-        given: Handles,
+        roi: bool,
+        scale: bool,
         at: Option<(f64, f64)>,
     },
     /// Waiting for ffmpeg failed.
@@ -204,12 +205,17 @@ impl VideoProblem {
 }
 
 /// What to try after the refusal `error` (`VideoProblem::Tracks`): the handles that
-/// could help and were not `given`; after a seed (`at`, given as `--ball-at`), to try
+/// could help and were not given (`roi`, `scale`, a seed `at`); after a seed, to try
 /// without it, and where nothing else is left, to film the clip again. (Every refusal
 /// but a clip too short is helped by a seed or a scale, and a refusal with a scale
 /// given is never for the radius: no advice is left empty but the too-short clip's.)
-fn next_try(error: &TracksError, given: Handles, at: Option<(f64, f64)>) -> String {
+fn next_try(error: &TracksError, roi: bool, scale: bool, at: Option<(f64, f64)>) -> String {
     let help = error.helped_by();
+    let given = Handles {
+        roi,
+        ball_at: at.is_some(),
+        scale,
+    };
     let untried: Vec<&str> = [
         (
             help.roi && !given.roi,
@@ -250,50 +256,42 @@ mod tests {
         scatter: 0.09,
     };
 
-    fn given(roi: bool, ball_at: bool, scale: bool) -> Handles {
-        Handles {
-            roi,
-            ball_at,
-            scale,
-        }
-    }
-
     #[test]
     fn the_advice_names_only_the_options_not_yet_given_that_could_help() {
-        let none = given(false, false, false);
         let scale = "; try --scale LENGTH (a pixel's length)";
         let cases = [
             (
                 &SPARSE,
-                none,
-                None,
+                (false, false),
                 "; try --roi X,Y,W,H (pixels) around the groove or --ball-at X,Y on a ball in the first frame",
             ),
             (
                 &SPARSE,
-                given(true, false, true),
-                None,
+                (true, true),
                 "; try --ball-at X,Y on a ball in the first frame",
             ),
-            (&SCATTER, none, None, scale),
-            (&SCATTER, given(true, false, false), None, scale),
+            (&SCATTER, (false, false), scale),
+            (&SCATTER, (true, false), scale),
             (
                 &TracksError::TooFewFrames { frames: 2, need: 3 },
-                none,
-                None,
+                (false, false),
                 "",
             ),
         ];
-        for (error, handles, at, want) in cases {
-            assert_eq!(next_try(error, handles, at), want, "{error:?} {handles:?}");
+        for (error, (roi, given_scale), want) in cases {
+            assert_eq!(
+                next_try(error, roi, given_scale, None),
+                want,
+                "{error:?} {roi} {given_scale}"
+            );
         }
-        let seeded = next_try(&SCATTER, given(false, true, false), Some((40.0, 120.0)));
+        let seeded = next_try(&SCATTER, false, false, Some((40.0, 120.0)));
         assert_eq!(
             seeded,
             format!("{scale} (tracked with the seed --ball-at 40,120: try without it too)")
         );
         // Every option that could help given: without the seed, else film again.
-        let all = next_try(&SPARSE, given(true, true, false), Some((33.0, 151.0)));
+        let all = next_try(&SPARSE, true, false, Some((33.0, 151.0)));
         assert!(
             all.starts_with(" (tracked with the seed --ball-at 33,151: try without it too); else film the clip again"),
             "{all}"

@@ -7,7 +7,7 @@
 // Tracker rewrites this file (src/input/video is being reworked beside issue 35);
 // its indexing, unwrap and expect are converted to `get` and errors after that.
 use super::{Info, Limits, RateSource, VideoError, VideoProblem};
-use crate::settings::units::{Dimension, show, show_small, significant, with_uncertainty};
+use crate::settings::units::{Dimension, show, show_small, with_uncertainty};
 use crate::study::Progress;
 use crate::vision::band::Band;
 use crate::vision::prepared::PreparedLook;
@@ -220,11 +220,8 @@ fn attempt(
         Err(e) => {
             let what = VideoProblem::Tracks {
                 error: e,
-                given: vision::Handles {
-                    roi: options.roi.is_some(),
-                    ball_at: options.ball_at.is_some(),
-                    scale: options.px_per_m.is_some(),
-                },
+                roi: options.roi.is_some(),
+                scale: options.px_per_m.is_some(),
                 at: options.ball_at,
             };
             return Err(refused(&tracker, thumbs, pictures, err(what)));
@@ -236,11 +233,7 @@ fn attempt(
         return Ok(Attempt::Again);
     }
     let mut notes = notes(&file, &info, fps, &source, &tracks, &options.radius_from);
-    notes.extend(seed_note(
-        options.ball_at,
-        tracker.seeded().is_some(),
-        &tracks,
-    ));
+    notes.extend(seed_note(options.ball_at, tracker.seeded(), &tracks));
     let view = VideoView::new(thumbs, &tracks);
     Ok(Attempt::Done(Box::new(Some(Tracked {
         info,
@@ -518,7 +511,8 @@ fn refused(
 /// silence.
 fn seed_note(at: Option<(f64, f64)>, seeded: bool, tracks: &Tracks) -> Option<String> {
     let (x, y) = at?;
-    let point = format!("--ball-at {},{}", significant(x, 6), significant(y, 6));
+    // The point as the refusals say it (`next_try`).
+    let point = format!("--ball-at {x},{y}");
     if !seeded {
         return Some(format!(
             "{point}: no ball's outline was found about that point, so the seed was not used (these are the balls found by themselves); give a point inside a ball in the first frame"

@@ -305,31 +305,48 @@ fn render_prints_the_video_with_the_tracks_and_the_model_over_it() {
     insta::assert_snapshot!("video-80x24-ascii", ascii);
 }
 
-#[test]
-fn the_app_tracks_on_a_worker_and_takes_the_data_in_when_done() {
-    let dir = folder().to_path_buf();
-    let scene = SceneArgs {
+/// The scene options R = 2.75 cm, b = 4.9 cm.
+fn paper_groove() -> SceneArgs {
+    SceneArgs {
         values: SceneSpec::default()
             .with(Key::Radius, 0.0275)
             .with(Key::Width, 0.049),
         ..SceneArgs::default()
-    };
+    }
+}
+
+/// The app opened on `scene` with the folder `dir` (at `fps`) as its `--data`,
+/// tracked on a worker for balls of R = 2.75 cm (the cache unused); `area` names
+/// its user presets' scratch folder.
+fn tracking(dir: &Path, fps: f64, scene: &SceneArgs, area: &str) -> groovelab::tui::app::App {
     let data = DataArgs {
-        data: vec![dir.clone()],
-        fps: Some(100.0),
+        data: vec![dir.to_path_buf()],
+        fps: Some(fps),
         ..DataArgs::default()
     };
     let options = Options {
         radius: 0.0275,
-        fps: Some(100.0),
+        fps: Some(fps),
         px_per_m: None,
         radius_from: "--radius".into(),
         cache: None,
         roi: None,
         ball_at: None,
     };
-    let library = common::no_user_presets("video-app");
-    let mut app = groovelab::cli::opened_tracking(&scene, &data, library, options).unwrap();
+    let library = common::no_user_presets(area);
+    groovelab::cli::opened_tracking(scene, &data, library, options).unwrap()
+}
+
+#[test]
+fn the_app_tracks_on_a_worker_and_takes_the_data_in_when_done() {
+    let dir = folder().to_path_buf();
+    let scene = paper_groove();
+    let data = DataArgs {
+        data: vec![dir.clone()],
+        fps: Some(100.0),
+        ..DataArgs::default()
+    };
+    let mut app = tracking(&dir, 100.0, &scene, "video-app");
     // Open at once, without the data: they join when the job's result is taken.
     assert!(app.lab.own_data().is_none());
     assert!(
@@ -399,28 +416,7 @@ fn the_app_tracks_on_a_worker_and_takes_the_data_in_when_done() {
 #[test]
 fn a_refused_video_leaves_no_preset_data_standing_in_for_it() {
     let dir = super::blank_frames("video_app_refused", 6);
-    let scene = SceneArgs {
-        values: SceneSpec::default()
-            .with(Key::Radius, 0.0275)
-            .with(Key::Width, 0.049),
-        ..SceneArgs::default()
-    };
-    let data = DataArgs {
-        data: vec![dir.clone()],
-        fps: Some(30.0),
-        ..DataArgs::default()
-    };
-    let options = Options {
-        radius: 0.0275,
-        fps: Some(30.0),
-        px_per_m: None,
-        radius_from: "--radius".into(),
-        cache: None,
-        roi: None,
-        ball_at: None,
-    };
-    let library = common::no_user_presets("video-app-refused");
-    let mut app = groovelab::cli::opened_tracking(&scene, &data, library, options).unwrap();
+    let mut app = tracking(&dir, 30.0, &paper_groove(), "video-app-refused");
     let shown = |app: &groovelab::tui::app::App| {
         let text = common::text(app, (120, 40), false);
         assert!(!text.contains("measured v_cm"), "{text}");
@@ -466,22 +462,7 @@ fn a_preset_whose_v0_is_its_series_opens_on_a_video_tracked_on_a_worker() {
         preset: Some(preset.display().to_string()),
         ..SceneArgs::default()
     };
-    let data = DataArgs {
-        data: vec![dir.clone()],
-        fps: Some(30.0),
-        ..DataArgs::default()
-    };
-    let options = Options {
-        radius: 0.0275,
-        fps: Some(30.0),
-        px_per_m: None,
-        radius_from: "preset".into(),
-        cache: None,
-        roi: None,
-        ball_at: None,
-    };
-    let library = common::no_user_presets("video-app-nov0");
-    let mut app = groovelab::cli::opened_tracking(&scene, &data, library, options).unwrap();
+    let mut app = tracking(&dir, 30.0, &scene, "video-app-nov0");
     assert!(app.lab.series().is_none());
     assert!(
         (app.lab.scene.left.v0 - 0.7928).abs() < 0.01,
