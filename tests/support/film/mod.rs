@@ -247,17 +247,20 @@ impl Film {
         let img = self.linear(k, balls);
         let mut noise = Noise::new(l.seed.wrapping_mul(1_000_003).wrapping_add(k as u64));
         let tint = l.paint.tint;
-        let mut out = Vec::with_capacity(img.len() * 3);
-        for px in img {
+        let mut out = vec![0; img.len() * 3];
+        for (px, o) in img.iter().zip(out.chunks_exact_mut(3)) {
             // Sensor noise, the same on the three channels (as in luma).
             let n = if l.noise > 0.0 {
                 l.noise * noise.gauss()
             } else {
                 0.0
             };
-            for c in 0..3 {
+            for (c, o) in o.iter_mut().enumerate() {
                 let v = (f64::from(px[c]) + n) * tint[c];
-                out.push(v.round().clamp(0.0, 255.0) as u8);
+                // `v.round().clamp(0.0, 255.0) as u8` without libm's `round` (a call per
+                // channel, 8 % of a clip's rendering): adding a half is exact for every
+                // level from 0.5 up, and the cast saturates as the clamp did.
+                *o = (v + 0.5) as u8;
             }
         }
         RgbImage::from_raw(l.width as u32, l.height as u32, out).expect("sized")
@@ -329,6 +332,11 @@ impl Film {
                     ..=((cx + reach).ceil() as isize).min(w - 1)
                 {
                     let (dx, dy) = ((x as f64 - cx) / rx, (y as f64 - cy) / ry);
+                    // Beyond the soft edge nothing is shaded, whatever `hypot` rounds to.
+                    let edge = 1.0 + soft / r;
+                    if dx * dx + dy * dy > edge * edge * (1.0 + 1e-9) {
+                        continue;
+                    }
                     // Distance outside the ellipse, px (approximately).
                     let d = (dx.hypot(dy) - 1.0) * r;
                     let inside = (0.5 - d / (2.0 * soft)).clamp(0.0, 1.0);
@@ -388,7 +396,10 @@ impl Film {
                 let mut sum = [0.0; 3];
                 for p in poses {
                     let (dx, dy) = (x as f64 - p.centre.0, y as f64 - p.centre.1);
-                    let d = dx.hypot(dy);
+                    // Far outside the ball its cover is 0 whatever `hypot` rounds to:
+                    // most of the box, skipped without the call.
+                    let far = dx * dx + dy * dy > (r + 0.5) * (r + 0.5) * (1.0 + 1e-9);
+                    let d = if far { f64::INFINITY } else { dx.hypot(dy) };
                     let cover = (0.5 - (d - r)).clamp(0.0, 1.0);
                     if cover == 0.0 {
                         (0..3).for_each(|c| sum[c] += bg[c]);
