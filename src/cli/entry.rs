@@ -112,6 +112,13 @@ fn clap_one_line(text: &str) -> String {
 fn with_allowed(e: &clap::Error, line: String, args: &[OsString]) -> String {
     use clap::CommandFactory;
     use clap::error::{ContextKind, ContextValue, ErrorKind};
+    let left_over = matches!(
+        e.kind(),
+        ErrorKind::UnknownArgument | ErrorKind::InvalidSubcommand
+    );
+    if let Some(swallowed) = option_taken_as_value(args).filter(|_| left_over) {
+        return swallowed;
+    }
     if e.kind() != ErrorKind::UnknownArgument {
         return clip_invalid_value(e, line);
     }
@@ -148,6 +155,40 @@ fn with_allowed(e: &clap::Error, line: String, args: &[OsString]) -> String {
         "{line}, allowed options of `{name}`: {} (`{name} --help` says what each does)",
         options.join(", ")
     )
+}
+
+/// An option given without its value, the next option taken as the value instead
+/// (`--ball-at --output t.txt`): options whose values may begin with a hyphen
+/// (negative numbers) take whatever follows, so clap reports the word left over
+/// (`t.txt`) as unexpected. Said as the option missing its value, naming the option
+/// that followed it.
+fn option_taken_as_value(args: &[OsString]) -> Option<String> {
+    use clap::CommandFactory;
+    let top = Cli::command();
+    let words: Vec<&str> = args.iter().skip(1).filter_map(|a| a.to_str()).collect();
+    let sub = words.iter().find_map(|w| top.find_subcommand(w));
+    let known = |long: &str| {
+        let has = |c: &clap::Command| c.get_arguments().any(|a| a.get_long() == Some(long));
+        has(&top) || sub.is_some_and(has)
+    };
+    let hyphen_valued = |long: &str| {
+        sub.into_iter()
+            .flat_map(|c| c.get_arguments())
+            .chain(top.get_arguments())
+            .find(|a| a.get_long() == Some(long))
+            .filter(|a| a.is_allow_hyphen_values_set())
+            .and_then(|a| a.get_value_names().and_then(|v| v.first().cloned()))
+    };
+    words.windows(2).find_map(|pair| {
+        let option = pair.first()?.strip_prefix("--")?;
+        let next = pair.get(1)?.strip_prefix("--")?;
+        let value = hyphen_valued(option)?;
+        known(next.split('=').next().unwrap_or(next)).then(|| {
+            format!(
+                "a value is required for '--{option} <{value}>', found the option '--{next}' after it"
+            )
+        })
+    })
 }
 
 /// clap's message with the value it echoes (`invalid value '…'`) cut to a sane length.

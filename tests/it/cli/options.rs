@@ -131,6 +131,45 @@ fn every_option_rejects_bad_values() {
     }
 }
 
+/// An option whose value may be negative takes the next word whatever it is, so an
+/// option left without its value swallows the next option and the word after that
+/// is left over: clap said "unexpected argument 't.txt'" (or "unrecognized
+/// subcommand"), pointing at the wrong word. The message names the option missing
+/// its value and the option taken for it, for each such option, on the top level
+/// and in subcommands.
+#[test]
+fn an_option_left_without_its_value_is_named_not_the_word_after() {
+    let cases: &[(&[&str], &str)] = &[
+        (
+            &["track", "clip.mp4", "--ball-at", "--output", "t.txt"],
+            "a value is required for '--ball-at <X,Y>', found the option '--output' after it",
+        ),
+        (
+            &["track", "clip.mp4", "--roi", "--overlay", "o.png", "x"],
+            "a value is required for '--roi <X,Y,W,H>', found the option '--overlay' after it",
+        ),
+        (
+            &["fit", "--data", "x.csv", "--scale", "--fps", "30"],
+            "a value is required for '--scale <LENGTH>', found the option '--fps' after it",
+        ),
+        (
+            &["simulate", "--v0", "--mu", "0.2"],
+            "a value is required for '--v0 <Q>', found the option '--mu' after it",
+        ),
+        // Top level: the word left over read as a subcommand.
+        (
+            &["--t-end", "--ascii", "x"],
+            "found the option '--ascii' after it",
+        ),
+    ];
+    for (args, says) in cases {
+        assert_rejected(args, says);
+    }
+    // A negative value is still a value, and an unknown option still lists the
+    // allowed ones.
+    assert_rejected(&["simulate", "--v0", "-1", "--bogus"], "allowed options of");
+}
+
 fn preset_file(name: &str, text: &str) -> std::path::PathBuf {
     let dir = std::env::temp_dir().join(format!("groovelab-cli-test-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
