@@ -46,15 +46,27 @@ pub fn run(args: &DataCmdArgs, scene: &SceneArgs, data: &DataArgs) -> Result<Str
             report.notes = video_notes(&text, report.notes);
         }
         // What the lab would take from the file: the same rule as `fit` and the app.
-        let scene_values = crate::input::data::load(&text, &file, &reading, &derive)
+        let series = crate::input::data::load(&text, &file, &reading, &derive).ok();
+        let scene_values = series
+            .as_ref()
             .map(|series| {
-                let values = crate::lab::measured_values(&series);
+                let values = crate::lab::measured_values(series);
                 let rows = values.rows();
                 rows.into_iter()
                     .filter_map(|k| values.get(k).map(|v| (k.name(), v)))
                     .collect()
             })
             .unwrap_or_default();
+        // The frames whose rim mark is missing, as `fit` says them.
+        let mark_missing = series
+            .as_ref()
+            .and_then(|s| s.found())
+            .filter(|f| f.mark_missing > 0)
+            .map(|f| MarkMissing {
+                frames: f.mark_missing,
+                of: f.frames,
+                runs: f.mark_gaps.clone(),
+            });
         // The scene the file says it was taken in (`# scene` lines): `fit` and the app
         // take it under the options, so the report says it too.
         let header: Vec<(Key, f64)> = crate::input::data::scene_of(&text, &file)
@@ -71,6 +83,7 @@ pub fn run(args: &DataCmdArgs, scene: &SceneArgs, data: &DataArgs) -> Result<Str
             .and_then(|(_, sc, _)| mark_doubt(&report, sc.radius));
         reports.push(DataReport {
             mark_doubt,
+            mark_missing,
             report,
             scene_values,
             header_values: header.iter().map(|(k, v)| (k.name(), *v)).collect(),
@@ -160,7 +173,21 @@ pub struct DataReport {
     /// centre than twice the scene's R, or it is never in a frame with the centre),
     /// naming it; absent when it can.
     #[serde(skip_serializing_if = "Option::is_none")]
+    pub mark_missing: Option<MarkMissing>,
+    #[serde(skip_serializing_if = "Option::is_none")]
     pub mark_doubt: Option<String>,
+}
+
+/// A track's frames with a centre but no rim mark: no v_t there (`fit` fills nothing
+/// in).
+#[derive(Serialize)]
+pub struct MarkMissing {
+    /// How many frames lack the mark …
+    pub frames: usize,
+    /// … of those with a centre.
+    pub of: usize,
+    /// Their runs, `[first, last]` file times, s.
+    pub runs: Vec<[f64; 2]>,
 }
 
 /// Why `report`'s rim mark cannot be one: its median distance from the centre is more
@@ -274,6 +301,15 @@ pub fn describe(shown: &DataReport) -> String {
         let _ = writeln!(s, "  {} in {}: {}", u.quantity, u.unit, u.how);
     }
     s += &missing_line(&r.missing);
+    if let Some(m) = &shown.mark_missing {
+        let _ = writeln!(
+            s,
+            "  rim mark missing in {} of {} frames ({} of the file): no v_t there",
+            m.frames,
+            m.of,
+            crate::study::measured::runs_text(&m.runs)
+        );
+    }
     s += &motion_lines(r);
     if let Some(doubt) = &r.length_unit_doubt {
         let _ = writeln!(

@@ -840,6 +840,72 @@ fn the_scales_uncertainty_widens_mu_ks() {
     assert_eq!(mu_row["se"], head["mu_se"]);
 }
 
+/// A track (paper-b4.9 at 30 frames/s) with its rim mark's cells blanked from the
+/// impact to 0.25 s after it, as `groovelab track` leaves most clips' marks (the rail
+/// hides the mark low on the ball), written as a Tracker multi-track file: its path
+/// and how many frames lost their mark.
+fn track_with_mark_hidden_after_impact(test: &str) -> (std::path::PathBuf, usize) {
+    let s = preset_scene("paper-b4.9");
+    let v = Video {
+        fps: 30.0,
+        from: -0.4,
+        to: 0.45,
+        ..Video::default()
+    };
+    let text = video::write(&video::track(&s, &v).unwrap(), TrackFormat::TrackerMulti);
+    let mut hidden = 0;
+    let lines: Vec<String> = text
+        .lines()
+        .map(|line| {
+            let cells: Vec<&str> = line.split('\t').collect();
+            match cells.first().and_then(|t| t.parse::<f64>().ok()) {
+                Some(t) if t > v.t_impact && t <= v.t_impact + 0.25 => {
+                    hidden += 1;
+                    format!("{}\t{}\t{}\t\t", cells[0], cells[1], cells[2])
+                }
+                _ => line.to_string(),
+            }
+        })
+        .collect();
+    let path = crate::common::scratch_dir("data_tracks", test).join("track.txt");
+    std::fs::write(&path, lines.join("\n")).unwrap();
+    (path, hidden)
+}
+
+/// `data` says the frames whose rim mark is missing, as `fit` does: it said "no
+/// frames missing" of a track whose mark was missing in half its frames after the
+/// impact (the frames are there; their mark is not).
+#[test]
+fn data_says_where_the_rim_mark_is_missing() {
+    let (path, hidden) = track_with_mark_hidden_after_impact("data_mark_missing");
+    assert!(hidden >= 7, "{hidden} frames hidden");
+    let path = path.to_str().unwrap();
+    let text = crate::common::run_in_process(&["data", path]).unwrap();
+    let says =
+        format!("rim mark missing in {hidden} of 26 frames (t = 0.233 … 0.433 s of the file)");
+    assert!(text.contains(&says), "{text}");
+    let j: serde_json::Value = serde_json::from_str(
+        &crate::common::run_in_process(&["data", path, "--format", "json"]).unwrap(),
+    )
+    .unwrap();
+    let m = &j[0]["mark_missing"];
+    assert_eq!(m["frames"].as_u64(), Some(hidden as u64), "{j}");
+    assert_eq!(m["of"].as_u64(), Some(26), "{j}");
+    // A track with its mark in every frame has none.
+    let whole = video::write(
+        &video::track(&preset_scene("paper-b4.9"), &Video::default()).unwrap(),
+        TrackFormat::TrackerMulti,
+    );
+    let full = crate::common::scratch_dir("data_tracks", "data_mark_whole").join("track.txt");
+    std::fs::write(&full, whole).unwrap();
+    let j: serde_json::Value = serde_json::from_str(
+        &crate::common::run_in_process(&["data", full.to_str().unwrap(), "--format", "json"])
+            .unwrap(),
+    )
+    .unwrap();
+    assert!(j[0].get("mark_missing").is_none(), "{j}");
+}
+
 /// The line fits of a track whose rim mark the rail hid for the first frames after
 /// the impact (as `groovelab track` leaves them on most clips): the sliding phase
 /// starts at the impact all the same. The window began at the first mark seen, after
@@ -848,32 +914,8 @@ fn the_scales_uncertainty_widens_mu_ks() {
 /// and `--to 0.2` was refused.
 #[test]
 fn a_mark_hidden_after_the_impact_leaves_the_line_fits_their_sliding_phase() {
-    let s = preset_scene("paper-b4.9");
     let fps = 30.0;
-    let v = Video {
-        fps,
-        from: -0.4,
-        to: 0.45,
-        ..Video::default()
-    };
-    let text = video::write(&video::track(&s, &v).unwrap(), TrackFormat::TrackerMulti);
-    // The mark's two cells blanked from the impact (the file's t = 0.2 s) to 0.25 s
-    // after it.
-    let hidden: Vec<String> = text
-        .lines()
-        .map(|line| {
-            let cells: Vec<&str> = line.split('\t').collect();
-            match cells.first().and_then(|t| t.parse::<f64>().ok()) {
-                Some(t) if t > v.t_impact && t <= v.t_impact + 0.25 => {
-                    format!("{}\t{}\t{}\t\t", cells[0], cells[1], cells[2])
-                }
-                _ => line.to_string(),
-            }
-        })
-        .collect();
-    let dir = crate::common::scratch_dir("data_tracks", "mark_hidden_after_impact");
-    let path = dir.join("track.txt");
-    std::fs::write(&path, hidden.join("\n")).unwrap();
+    let (path, _) = track_with_mark_hidden_after_impact("mark_hidden_after_impact");
     let path = path.to_str().unwrap();
     let sliding_end = 0.2161;
     for to in [None, Some("0.2")] {

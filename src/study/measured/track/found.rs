@@ -251,7 +251,7 @@ impl Found {
 
 /// Runs of missing frames said as times: "t = 0.325 … 0.392 s, 0.983 s" (the
 /// first five runs, then how many more).
-fn runs_text(runs: &[[f64; 2]]) -> String {
+pub fn runs_text(runs: &[[f64; 2]]) -> String {
     const SHOWN: usize = 5;
     let mut parts: Vec<String> = runs
         .iter()
