@@ -374,7 +374,13 @@ fn scene_lines(out: &mut String, preset: &Preset, now: &Resolved) {
     } else {
         let changed: Vec<String> = changed
             .iter()
-            .map(|(label, was, now)| format!("{} = {now} (was {was})", label.trim_end()))
+            // Written as the scene line below writes it (μ_k, not mu_k).
+            .map(|(label, was, now)| {
+                format!(
+                    "{} = {now} (was {was})",
+                    label.trim_end().replace("mu", "μ")
+                )
+            })
             .collect();
         let _ = writeln!(
             out,
@@ -510,8 +516,12 @@ fn run_lines(out: &mut String, solution: &Solution) {
 /// The closed-form recovery of the left ball, in one line.
 fn recovery_line(rec: &crate::physics::derived::Recovery) -> String {
     let len = |v: f64| show(v, Dimension::Length);
-    let heading = if rec.v_roll > 0.0 {
+    // "Back" only for a ball the impact sent away: a heavy ball hitting a light one
+    // (steel-and-glass) goes on, and equal balls stop first.
+    let heading = if rec.v_roll > 0.0 && rec.after_impact.v < 0.0 {
         "back toward the other ball"
+    } else if rec.v_roll > 0.0 {
+        "toward the other ball"
     } else if rec.v_roll < 0.0 {
         "away from the other ball"
     } else {

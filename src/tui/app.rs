@@ -180,7 +180,7 @@ impl App {
 
     /// A parameter's current value as the status line shows it (b hidden if it is).
     pub(super) fn shown_value(&self, key: Key) -> String {
-        if self.hide.value(key) {
+        if self.hidden().value(key) {
             "(hidden)".to_string()
         } else {
             show(self.lab.value(key), key.dimension()).to_string()

@@ -61,13 +61,14 @@ impl Hide {
     }
 
     /// Whether `key`'s value is hidden: b's, and the release heights' (they follow
-    /// from v0 and k, so from b).
+    /// from v0 and k, so from b, and give D away with v0: D = v0²/(2gh − v0²)), the
+    /// heights as k is ([`Hide::forces`]: also while a prediction is pending).
     pub fn value(self, key: Key) -> bool {
-        self.b
-            && matches!(
-                key,
-                Key::Width | Key::Height | Key::HeightLeft | Key::HeightRight
-            )
+        match key {
+            Key::Width => self.b,
+            Key::Height | Key::HeightLeft | Key::HeightRight => self.forces(),
+            _ => false,
+        }
     }
 
     /// Whether a change of the parameter labelled `label` (a pinned run's

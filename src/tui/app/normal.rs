@@ -35,7 +35,7 @@ impl App {
             .any(|v| self.lab.set(p.key, v).is_ok());
         // The row's limits, short enough to stay beside the time in the status line
         // (the refused value would give a hidden b away).
-        let hidden = self.hide.value(p.key);
+        let hidden = self.hidden().value(p.key);
         let why = if hidden {
             String::new()
         } else {

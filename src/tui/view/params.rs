@@ -44,7 +44,7 @@ const VALUE_W: usize = 11;
 pub fn value_text(app: &App, key: Key) -> String {
     let v = app.lab.value(key);
     let s = &app.lab.scene;
-    if app.hide().value(key) {
+    if app.hidden().value(key) {
         return "hidden".into();
     }
     if key == Key::V0 && s.left.v0 != s.right.v0 {

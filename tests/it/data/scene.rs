@@ -137,6 +137,12 @@ fn a_presets_data_in_another_groove_are_said_to_be_so() {
         head.contains("preset   paper-b4.9 changed by the options: b = 2 cm (was 4.9 cm)"),
         "{head}"
     );
+    // Each value as the scene line writes it: μ_k, not the option's mu_k.
+    let mu = common::run_in_process(&["simulate", "--mu", "0"]).unwrap();
+    assert!(
+        mu.starts_with("preset   paper-b4.9 changed by the options: μ_k = 0 (was 0.17)\n"),
+        "{mu}"
+    );
     let note = "paper-b4.9's data were measured at b = 4.9 cm; the model uses b = 2 cm";
     assert!(head.contains(&format!("data     {note}")), "{head}");
     let out =

@@ -88,6 +88,44 @@ fn the_closed_forms_stand_where_the_run_rolls_again_at_t_prime() {
     assert!(table.contains("rolls again after t' = 0.2849 s"), "{table}");
 }
 
+/// The left ball's heading after the first impact follows its motion: "back toward
+/// the other ball" only where the impact sent it away (x' < 0: paper-b4.9, whose
+/// ball rolls back from −7.7 cm); a heavy ball hitting a light one goes on (x' > 0:
+/// steel-and-glass was said to roll "back" though it never reversed); a light one
+/// hitting a heavy one rolls away.
+#[test]
+fn the_heading_after_the_impact_says_whether_the_ball_came_back() {
+    let heading = |args: &[&str]| {
+        let mut all = vec!["simulate"];
+        all.extend_from_slice(args);
+        let table = stdout(&all);
+        let line = table
+            .lines()
+            .find(|l| l.starts_with("left ball after the first impact"))
+            .unwrap_or_else(|| panic!("{table}"))
+            .to_string();
+        let x = line
+            .split("x' = ")
+            .nth(1)
+            .and_then(|r| r.split(' ').next())
+            .and_then(|v| v.parse::<f64>().ok())
+            .unwrap_or_else(|| panic!("{line}"));
+        (line, x)
+    };
+    let (line, x) = heading(&["--preset", "paper-b4.9"]);
+    assert!(
+        x < 0.0 && line.contains("(back toward the other ball)"),
+        "{line}"
+    );
+    let (line, x) = heading(&["--preset", "steel-and-glass"]);
+    assert!(
+        x > 0.0 && line.contains("(toward the other ball)"),
+        "{line}"
+    );
+    let (line, _) = heading(&["--mass-left", "50g"]);
+    assert!(line.contains("(away from the other ball)"), "{line}");
+}
+
 /// The Why panel's heading and reason say what the run does, in the corners a teacher
 /// tried: rolling resistance stops the return, a pair moving on together, e = 0
 /// (pressed together from the impact), no friction (nothing rolls), no closing speed.

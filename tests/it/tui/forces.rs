@@ -342,10 +342,23 @@ fn hidden_b_and_a_pending_prediction_give_nothing_away() {
         !asked.contains("3.67") && !asked.contains("1.89"),
         "{asked}"
     );
+    // The run-up heights give D away with v0 (D = v0²/(2gh − v0²)): hidden as k is
+    // (they were shown, 9.42 cm, beside v0 0.793 m/s).
+    for size in SIZES {
+        for ascii in [false, true] {
+            let asked = render("paper-b4.9", None, size, ascii, "y");
+            assert!(!asked.contains("9.42"), "{size:?}: {asked}");
+        }
+    }
+    // With the forces as givens (`g`), k is shown, and so are the heights (on a screen
+    // tall enough for their rows).
+    let givens = render("paper-b4.9", None, (120, 40), false, "y g");
+    assert!(givens.contains("h left       9.42 cm"), "{givens}");
     // Answered and played past the outcome: the chain shows them.
     let answered = render("paper-b4.9", Some(1.0), (120, 40), false, "y 3");
     assert!(
         answered.contains("|a_cm| 3.67 m/s²") && answered.contains("|a_t| 1.89 m/s²"),
         "{answered}"
     );
+    assert!(answered.contains("h left       9.42 cm"), "{answered}");
 }
