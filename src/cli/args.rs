@@ -216,7 +216,8 @@ pub enum Command {
     Render(RenderArgs),
     /// Speed against accuracy of the solution methods (work–precision).
     Compare(CompareArgs),
-    /// Fit the model to measured data (a preset's, or a CSV file).
+    /// Fit the model to measured data (a preset's, or --data: a CSV, Tracker, Logger Pro,
+    /// Graphical Analysis or phyphox file, or a video).
     Fit(FitArgs),
     /// What groovelab reads in data files, without fitting: format, tracks, units,
     /// frames, missing frames, scatter, approach speed, impacts.
