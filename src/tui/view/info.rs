@@ -6,7 +6,7 @@ use ratatui::layout::Rect;
 use ratatui::text::{Line, Span};
 use ratatui::widgets::Widget;
 
-use super::panel::{Ranked, block, by_priority, draw_lines};
+use super::panel::{NO_BREAK, Ranked, block, by_priority, draw_lines, unbroken};
 use crate::physics::derived::{Derived, Summary};
 use crate::physics::story::After;
 use crate::settings::units::{Dimension, show, sig_figs};
@@ -21,6 +21,15 @@ fn label(s: &str, theme: &Theme) -> Span<'static> {
 
 fn value(s: String, theme: &Theme) -> Span<'static> {
     Span::styled(s, theme.text)
+}
+
+/// `name value` kept on one row when the panel wraps (`b* 4.26 cm`, never `b*` at a
+/// row's end and `4.26 cm` on the next): `name`'s leading spaces still break.
+fn pair(name: &str, v: String, theme: &Theme) -> [Span<'static>; 2] {
+    [
+        label(&format!("{name}{NO_BREAK}"), theme),
+        value(unbroken(&v), theme),
+    ]
 }
 
 pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
@@ -89,16 +98,15 @@ fn regime_lines(app: &App, width: u16, theme: &Theme) -> Ranked<'static> {
         (8, Line::from(value(d.why(), theme))),
         (
             6,
-            Line::from(vec![
-                label("k ", theme),
-                value(format!("{:.4}", d.k), theme),
-                label("  r ", theme),
-                value(format!("{:.3}", show(d.r, Dimension::Length)), theme),
-                label("  D ", theme),
-                value(format!("{:.3}", d.d), theme),
-                label("  b* ", theme),
-                value(b_star, theme),
-            ]),
+            Line::from(
+                [
+                    pair("k", format!("{:.4}", d.k), theme),
+                    pair("  r", format!("{:.3}", show(d.r, Dimension::Length)), theme),
+                    pair("  D", format!("{:.3}", d.d), theme),
+                    pair("  b*", b_star, theme),
+                ]
+                .concat(),
+            ),
         ),
     ]);
     lines
@@ -203,14 +211,22 @@ fn after_impact_lines(app: &App, theme: &Theme) -> Ranked<'static> {
     } else if let Some(rec) = d.left_after_impact {
         lines.push((
             6,
-            Line::from(vec![
-                label("t' ", theme),
-                value(format!("{:.4} s", rec.t_roll), theme),
-                label("  v' ", theme),
-                value(format!("{} m/s", speed_shown(rec.v_roll, 4, false)), theme),
-                label("  x' ", theme),
-                value(format!("{:.2}", show(rec.x_roll, Dimension::Length)), theme),
-            ]),
+            Line::from(
+                [
+                    pair("t'", format!("{:.4} s", rec.t_roll), theme),
+                    pair(
+                        "  v'",
+                        format!("{} m/s", speed_shown(rec.v_roll, 4, false)),
+                        theme,
+                    ),
+                    pair(
+                        "  x'",
+                        format!("{:.2}", show(rec.x_roll, Dimension::Length)),
+                        theme,
+                    ),
+                ]
+                .concat(),
+            ),
         ));
         let crossing = match (rec.t_pure_gliding, rec.t_pure_slipping) {
             (Some(t), _) => format!("pure gliding t_r {t:.4} s"),
@@ -221,15 +237,16 @@ fn after_impact_lines(app: &App, theme: &Theme) -> Ranked<'static> {
             3,
             Line::from(vec![label("left ball: ", theme), value(crossing, theme)]),
         ));
-        let accel = |a: f64| value(format!("{} m/s{}", sig_figs(a, 4), g.squared), theme);
+        let accel = |a: f64| format!("{} m/s{}", sig_figs(a, 4), g.squared);
         lines.push((
             2,
-            Line::from(vec![
-                label("a_cm ", theme),
-                accel(rec.a_cm),
-                label("  a_t ", theme),
-                accel(rec.a_t),
-            ]),
+            Line::from(
+                [
+                    pair("a_cm", accel(rec.a_cm), theme),
+                    pair("  a_t", accel(rec.a_t), theme),
+                ]
+                .concat(),
+            ),
         ));
     }
     lines
@@ -252,13 +269,18 @@ fn force_lines(app: &App, theme: &Theme) -> Ranked<'static> {
     vec![
         (
             1,
-            Line::from(vec![
-                label("|N_A| ", theme),
-                value(format!("{} N", sig_figs(f.normal_a.norm(), 4)), theme),
-                label("  F_net ", theme),
-                value(format!("{} N", sig_figs(f.net.norm(), 4)), theme),
-                label(assumed(app), theme),
-            ]),
+            Line::from(
+                [
+                    &pair(
+                        "|N_A|",
+                        format!("{} N", sig_figs(f.normal_a.norm(), 4)),
+                        theme,
+                    )[..],
+                    &pair("  F_net", format!("{} N", sig_figs(f.net.norm(), 4)), theme),
+                    &[label(assumed(app), theme)],
+                ]
+                .concat(),
+            ),
         ),
         (
             0,
@@ -277,38 +299,46 @@ fn force_lines(app: &App, theme: &Theme) -> Ranked<'static> {
 fn impact_and_data_lines(app: &App, theme: &Theme) -> Ranked<'static> {
     let sol = &app.lab.solution;
     let zeno = sol.accumulation.map_or(String::new(), |t| {
-        format!("  T{} {t:.4} s", theme.glyphs.infinity)
+        format!(
+            "  {}",
+            unbroken(&format!("T{} {t:.4} s", theme.glyphs.infinity))
+        )
     });
     let mut lines: Ranked = Vec::new();
     // With a run pinned the A/B table gives them, for both runs.
     if app.lab.pinned.is_none() {
         lines.push((
             8,
-            Line::from(vec![
-                label("impacts ", theme),
-                value(format!("{}", sol.impacts), theme),
-                value(zeno, theme),
-            ]),
+            Line::from(
+                [
+                    &pair("impacts", format!("{}", sol.impacts), theme)[..],
+                    &[value(zeno, theme)],
+                ]
+                .concat(),
+            ),
         ));
     }
     match app.lab.data_rms {
         Some((rms_cm, Some(rms_t))) => lines.push((
             5,
-            Line::from(vec![
-                label("data: RMS residual v_cm ", theme),
-                value(format!("{rms_cm:.3}"), theme),
-                label(", v_t ", theme),
-                value(format!("{rms_t:.3} m/s"), theme),
-            ]),
+            Line::from(
+                [
+                    pair("data: RMS residual v_cm", format!("{rms_cm:.3}"), theme),
+                    pair(", v_t", format!("{rms_t:.3} m/s"), theme),
+                ]
+                .concat(),
+            ),
         )),
         // A track without a rim mark: no v_t to compare with, said in words.
         Some((rms_cm, None)) => lines.push((
             5,
-            Line::from(vec![
-                label("data: RMS v_cm ", theme),
-                value(format!("{rms_cm:.3} m/s"), theme),
-                label(", v_t not measured", theme),
-            ]),
+            Line::from(
+                [
+                    &pair("data: RMS v_cm", format!("{rms_cm:.3} m/s"), theme)[..],
+                    &[label(", v_t not measured", theme)],
+                ]
+                .concat(),
+            ),
         )),
         None => {}
     }

@@ -119,8 +119,18 @@ pub(crate) fn draw_lines(lines: Vec<Line<'_>>, area: Rect, buf: &mut Buffer) {
     }
 }
 
-/// `line` word-wrapped to `width` columns, styles kept: breaks after spaces, a word
-/// longer than a row is split, spaces that end a row are dropped.
+/// A space [`wrap`] never breaks at (between a label and its value, a number and its
+/// unit: `b* 4.26 cm` split over two rows read as two values); written as a space.
+pub(crate) const NO_BREAK: char = '\u{a0}';
+
+/// `text` with its spaces made [`NO_BREAK`]: one piece for [`wrap`].
+pub(crate) fn unbroken(text: &str) -> String {
+    text.replace(' ', &NO_BREAK.to_string())
+}
+
+/// `line` word-wrapped to `width` columns, styles kept: breaks after spaces (not
+/// [`NO_BREAK`]s), a word longer than a row is split, spaces that end a row are
+/// dropped.
 pub(crate) fn wrap(line: Line<'_>, width: usize) -> Vec<Line<'static>> {
     let mut rows: Vec<Vec<(String, Style)>> = vec![Vec::new()];
     let mut used = 0usize;
@@ -167,6 +177,8 @@ pub(crate) fn wrap(line: Line<'_>, width: usize) -> Vec<Line<'static>> {
                 used = 0;
             }
             let row = rows.last_mut().expect("one row at least");
+            // A no-break space holds a label to its value: written as a space.
+            let c = if c == NO_BREAK { ' ' } else { c };
             match row.last_mut() {
                 Some((t, s)) if *s == style => t.push(c),
                 _ => row.push((c.to_string(), style)),
