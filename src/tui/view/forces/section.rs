@@ -30,8 +30,12 @@ pub(super) fn front_view(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme)
     let [picture, values] = if inner.height >= 16 {
         Layout::vertical([Constraint::Min(8), Constraint::Length(8)]).areas(inner)
     } else {
-        let values_w = 23.min(inner.width.saturating_sub(14));
-        Layout::horizontal([Constraint::Min(10), Constraint::Length(values_w)]).areas(inner)
+        let values_w = 23.min(inner.width.saturating_sub(15));
+        // A column between: the drawing fills its area to the edge, and its rail
+        // (`=(.)`) ran into the values (`(.)=|tau_A|`).
+        Layout::horizontal([Constraint::Min(10), Constraint::Length(values_w)])
+            .spacing(1)
+            .areas(inner)
     };
     cross_section(app, &now, picture, buf, theme);
     let lines = by_priority(
@@ -81,8 +85,8 @@ pub(super) fn front_values<'a>(
         (
             t(format!("τ_net {} N m", sig_figs(now.net_torque.abs(), 3))),
             fit([
-                "= μ_k m g R, for any b".into(),
-                "= μ_k m g R (any b)".into(),
+                format!("= μ_k m g R, {}", unbroken("for any b")),
+                format!("= μ_k m g R {}", unbroken("(any b)")),
             ]),
         )
     };
