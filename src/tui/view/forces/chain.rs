@@ -240,14 +240,19 @@ pub(super) fn prediction_lines<'a>(
     vec![
         (
             9,
+            // Each label with its answer, and the mark with its word, on one row when
+            // the line wraps (`observed:` ended a row, `right` stood alone on one).
             Line::from(vec![
-                Span::styled(format!("predicted: {guess}   "), theme.text),
                 Span::styled(
-                    g.text(&format!("observed: {}", app.lab.story.headline)),
+                    format!("{}   ", unbroken(&format!("predicted: {guess}"))),
+                    theme.text,
+                ),
+                Span::styled(
+                    g.text(&format!("observed:{NO_BREAK}{}", app.lab.story.headline)),
                     theme.accent,
                 ),
                 Span::styled(
-                    format!("   {mark}"),
+                    format!("   {}", unbroken(&mark)),
                     if right { theme.info } else { theme.error },
                 ),
             ]),

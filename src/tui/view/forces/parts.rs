@@ -2,8 +2,8 @@
 //! is), footers, arrows and bars, and the pinned run's values to compare with.
 
 pub(super) use super::super::panel::{
-    Ranked, block, by_priority, draw_lines, fitting, rows_by_priority, title_of, title_within,
-    unbroken, wrap,
+    NO_BREAK, Ranked, block, by_priority, draw_lines, fitting, rows_by_priority, title_of,
+    title_within, unbroken, wrap,
 };
 pub(super) use crate::physics::derived::Regime;
 pub(super) use crate::physics::forces::{Instant, Sliding, instant};
