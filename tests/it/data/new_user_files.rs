@@ -1,5 +1,6 @@
 //! What a new user's files found (2026-11-30): a header's unit that groovelab does not
-//! read was explained as a missing column, and pixels as no position at all.
+//! read was explained as a missing column, and pixels as no position at all; frames
+//! 20 s apart were said to come at 0.1 frames/s (rounded to one decimal).
 
 use groovelab::input::data::{self, Reading};
 
@@ -75,5 +76,35 @@ fn positions_in_pixels_name_the_scale_and_read_with_it() {
     assert!(
         out.contains("length in the file's own unit") && out.contains("--scale"),
         "{out}"
+    );
+}
+
+#[test]
+fn a_slow_frame_rate_is_not_rounded_away() {
+    // Frames 20 apart without a unit: 0.05 frames/s as s (it said 0.1), 50 as ms; a
+    // velocity file's v_cm drops at an impact halfway.
+    let rows = |cells: &dyn Fn(i32) -> &'static str| -> String {
+        (0..12)
+            .map(|k| format!("{},{}\n", -200 + 20 * k, cells(k)))
+            .collect()
+    };
+    let positions = format!("t,x\n{}", rows(&|_| "-0.1"));
+    let velocities = format!(
+        "t,v_cm,v_t\n{}",
+        rows(&|k| if k < 6 { "63.17,60.17" } else { "10.2,35.1" })
+    );
+    for text in [positions, velocities] {
+        let e = error(&text, &Reading::default()).unwrap_or_default();
+        assert!(
+            e.contains("frames 20 apart (as s: 0.05 frames/s; as ms: 50 frames/s)"),
+            "{e}"
+        );
+    }
+    // A stated unit that puts them 200 s apart: 0.005 frames/s (it said 0.01).
+    let text: String = (0..12).map(|k| format!("{},0.1\n", 200 * k)).collect();
+    let e = error(&format!("t (s),x (cm)\n{text}"), &Reading::default()).unwrap_or_default();
+    assert!(
+        e.contains("the frames are 200 s apart (0.005 frames/s)"),
+        "{e}"
     );
 }
