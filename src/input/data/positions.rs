@@ -270,6 +270,8 @@ fn read_rows(
     columns: &Columns,
     track: &mut TrackParts,
 ) -> Result<(), RowError> {
+    // The last time kept, as written (an error quotes it).
+    let mut prev = String::new();
     for row in rows {
         if track.t.len() == MAX_ROWS {
             return Err(RowError::TooMany { line: row.line });
@@ -297,15 +299,17 @@ fn read_rows(
         if time.is_nan() {
             continue;
         }
-        if let Some(&prev) = track.t.last()
-            && time <= prev
-        {
-            return Err(RowError::NotIncreasing {
-                line: row.line,
-                time,
-                prev,
-            });
+        let (it, factor) = columns.t;
+        if track.t.last().is_some_and(|&last| time <= last) {
+            return Err(RowError::not_increasing(
+                row.line,
+                row.cell(it),
+                &prev,
+                factor,
+            ));
         }
+        prev.clear();
+        prev.push_str(row.cell(it));
         track.t.push(time);
         track.x.push(value(columns.x, "x")?);
         track.y.push(match columns.y {

@@ -119,6 +119,8 @@ fn columns(
     let (iv, fv) = find("v_t").ok_or_else(|| missing("v_t"))?;
     let units = Units::decide(reading, ft, fc, fv);
     let (mut t, mut v_cm, mut v_t) = (Vec::new(), Vec::new(), Vec::new());
+    // The last time, as written (an error quotes it).
+    let mut prev = String::new();
     for row in rows {
         if t.len() == MAX_ROWS {
             return Err(err(RowError::TooMany { line: row.line }.into()));
@@ -134,16 +136,12 @@ fn columns(
             })
         };
         let time = get(it, "t")? * units.time.0;
-        if let Some(&prev) = t.last()
-            && time <= prev
-        {
-            return Err(err(RowError::NotIncreasing {
-                line: row.line,
-                time,
-                prev,
-            }
-            .into()));
+        if t.last().is_some_and(|&last| time <= last) {
+            let e = RowError::not_increasing(row.line, row.cell(it), &prev, units.time.0);
+            return Err(err(e.into()));
         }
+        prev.clear();
+        prev.push_str(row.cell(it));
         t.push(time);
         v_cm.push(get(ic, "v_cm")? * units.v_cm.0);
         v_t.push(get(iv, "v_t")? * units.v_t.0);

@@ -1,6 +1,7 @@
 //! What a new user's files found (2026-11-30): a header's unit that groovelab does not
 //! read was explained as a missing column, and pixels as no position at all; frames
-//! 20 s apart were said to come at 0.1 frames/s (rounded to one decimal).
+//! 20 s apart were said to come at 0.1 frames/s (rounded to one decimal); times out
+//! of order were quoted in s, not as the file writes them.
 
 use groovelab::input::data::{self, Reading};
 
@@ -105,6 +106,41 @@ fn a_slow_frame_rate_is_not_rounded_away() {
     let e = error(&format!("t (s),x (cm)\n{text}"), &Reading::default()).unwrap_or_default();
     assert!(
         e.contains("the frames are 200 s apart (0.005 frames/s)"),
+        "{e}"
+    );
+}
+
+#[test]
+fn times_out_of_order_are_quoted_as_the_file_writes_them() {
+    for (text, want) in [
+        (
+            "t (ms),x (cm)\n-100.0,-8.83\n380.0,-12.79\n-180.0,-13.63\n",
+            "line 4: t = -180.0 ms does not increase (previous 380.0 ms)",
+        ),
+        (
+            "t (ms);x (cm)\n20,0;1\n40,0;2\n40,0;3\n",
+            "line 4: t = 40,0 ms does not increase (previous 40,0 ms)",
+        ),
+        (
+            "t (us),v_cm (cm/s),v_t (cm/s)\n0,60,60\n25000,60,60\n2.0e4,60,60\n",
+            "line 4: t = 2.0e4 us does not increase (previous 25000 us)",
+        ),
+        (
+            "t,x\n0.1,0.01\n0.08,0.02\n",
+            "line 3: t = 0.08 s does not increase (previous 0.1 s)",
+        ),
+    ] {
+        let e = error(text, &Reading::default()).unwrap_or_default();
+        assert!(e.contains(want), "{e}");
+    }
+    // An option's unit is the file's unit.
+    let ms = Reading {
+        time_unit: Some(1e-3),
+        ..Reading::default()
+    };
+    let e = error("t,x\n10,1\n5,2\n", &ms).unwrap_or_default();
+    assert!(
+        e.contains("t = 5 ms does not increase (previous 10 ms)"),
         "{e}"
     );
 }
