@@ -97,7 +97,7 @@ pub enum DataProblem {
         name: &'static str,
         cell: String,
     },
-    #[error("{rows} data rows, allowed at least 3")]
+    #[error("{rows} data row{}, allowed at least 3", if *rows == 1 { "" } else { "s" })]
     TooFewRows { rows: usize },
     #[error("no impact found (v_cm never drops sharply); give its time with --impact-at")]
     NoImpact,

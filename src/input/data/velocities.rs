@@ -402,7 +402,7 @@ mod tests {
         let bad = [
             ("t,v_cm\n0,1\n", "no column 'v_t'"),
             ("t,v_cm,v_t\n0,1,1\n0.01,x,1\n", "line 3: v_cm = 'x'"),
-            ("t,v_cm,v_t\n0,1,1\n", "1 data rows"),
+            ("t,v_cm,v_t\n0,1,1\n", "1 data row,"),
             (
                 "t,v_cm,v_t\n0,1,1\n0.02,1,1\n0.01,1,1\n",
                 "line 4: t = 0.01 s does not increase",

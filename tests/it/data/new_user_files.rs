@@ -1,7 +1,7 @@
 //! What a new user's files found (2026-11-30): a header's unit that groovelab does not
 //! read was explained as a missing column, and pixels as no position at all; frames
 //! 20 s apart were said to come at 0.1 frames/s (rounded to one decimal); times out
-//! of order were quoted in s, not as the file writes them.
+//! of order were quoted in s, not as the file writes them; one frame was "1 frames".
 
 use groovelab::input::data::{self, Reading};
 
@@ -141,6 +141,30 @@ fn times_out_of_order_are_quoted_as_the_file_writes_them() {
     let e = error("t,x\n10,1\n5,2\n", &ms).unwrap_or_default();
     assert!(
         e.contains("t = 5 ms does not increase (previous 10 ms)"),
+        "{e}"
+    );
+}
+
+#[test]
+fn one_frame_or_row_is_singular() {
+    let d = groovelab::study::measured::Derive::default();
+    let one = |text: &str| data::load(text, "f.csv", &Reading::default(), &d).err();
+    let e = one("t (ms),x (cm)\r\n0,1\r\n").unwrap().to_string();
+    assert!(
+        e.contains(": 1 frame with a centre position, at least 8 needed"),
+        "{e}"
+    );
+    let e = one("t,v_cm,v_t\n0,1,1\n").unwrap().to_string();
+    assert!(e.ends_with(": 1 data row, allowed at least 3"), "{e}");
+    // Too few beside the impact: no track the detector accepts has only one there.
+    let e = groovelab::study::measured::TrackError::FewFramesBeside {
+        count: 1,
+        side: "before",
+        at: 0.2,
+        min: 4,
+    };
+    assert!(
+        e.to_string().starts_with("only 1 frame before the impact"),
         "{e}"
     );
 }
