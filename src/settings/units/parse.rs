@@ -41,7 +41,8 @@ pub enum Expected {
     Typed(Dimension),
     /// One of the dimension's unit names, alone.
     UnitName(Dimension),
-    /// A unit a data file names: the dimension's unit names, and `us` for a time.
+    /// A unit a data file names: the dimension's unit names (microseconds as `us`
+    /// among them).
     FileUnit(Dimension),
 }
 
@@ -68,13 +69,8 @@ impl fmt::Display for Expected {
             Expected::UnitName(dim) if dim.units().is_empty() => {
                 write!(f, "no unit (a plain number)")
             }
-            Expected::UnitName(dim) => write!(f, "one of {}", names(dim)),
-            Expected::FileUnit(dim) => {
-                write!(f, "{}", Expected::UnitName(dim))?;
-                if dim == Dimension::Time {
-                    write!(f, ", us")?;
-                }
-                Ok(())
+            Expected::UnitName(dim) | Expected::FileUnit(dim) => {
+                write!(f, "one of {}", names(dim))
             }
         }
     }

@@ -131,6 +131,20 @@ fn every_option_rejects_bad_values() {
     }
 }
 
+/// A unit option's error lists each unit once: `us` was listed twice (the unit table
+/// has it, and the list of a data file's units added it again).
+#[test]
+fn a_unit_options_error_names_each_unit_once() {
+    let file = concat!(env!("CARGO_MANIFEST_DIR"), "/data/gs-b4.9cm.csv");
+    let out = groovelab(&["data", file, "--time-unit", "min"]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert_eq!(
+        err.trim_end(),
+        "error: --time-unit min: unknown unit 'min' in 'min', expected one of s, ms, us, µs, μs"
+    );
+}
+
 /// An option whose value may be negative takes the next word whatever it is, so an
 /// option left without its value swallows the next option and the word after that
 /// is left over: clap said "unexpected argument 't.txt'" (or "unrecognized
