@@ -81,6 +81,12 @@ fn every_option_rejects_bad_values() {
         (&["--size", "10"], "COLSxROWS"),
         (&["--size", "0x10"], "COLSxROWS"),
         (&["--size", "5000x10"], "COLSxROWS"),
+        // A size too large is said to be, with the range (it was "not a size").
+        (
+            &["--size", "100000x100000"],
+            "'100000x100000' is larger than render draws, allowed COLSxROWS from 80x24 to 1000x1000",
+        ),
+        (&["--size", "1001x40"], "is larger than render draws"),
         // render has no terminal: a screen below the app's smallest is a usage error.
         (
             &["--size", "10x5"],
