@@ -31,6 +31,22 @@ pub enum UnitError {
     OutOfRange { text: String, why: &'static str },
 }
 
+impl UnitError {
+    /// The same error naming `text` as the text given.
+    pub fn with_text(self, text: String) -> UnitError {
+        match self {
+            UnitError::NotANumber { allowed, .. } => UnitError::NotANumber { text, allowed },
+            UnitError::UnknownUnit { unit, allowed, .. } => UnitError::UnknownUnit {
+                text,
+                unit,
+                allowed,
+            },
+            UnitError::NotFinite { .. } => UnitError::NotFinite { text },
+            UnitError::OutOfRange { why, .. } => UnitError::OutOfRange { text, why },
+        }
+    }
+}
+
 /// What a quantity's text may be, as an error says it after "expected".
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Expected {
@@ -158,19 +174,7 @@ pub fn parse_option(text: &str, dim: Dimension) -> Result<f64, UnitError> {
     if t.matches(',').count() != 1 || t.contains('.') {
         return parse_quantity(text, dim);
     }
-    parse_quantity(&t.replace(',', "."), dim).map_err(|e| {
-        let text = text.to_string();
-        match e {
-            UnitError::NotANumber { allowed, .. } => UnitError::NotANumber { text, allowed },
-            UnitError::UnknownUnit { unit, allowed, .. } => UnitError::UnknownUnit {
-                text,
-                unit,
-                allowed,
-            },
-            UnitError::NotFinite { .. } => UnitError::NotFinite { text },
-            UnitError::OutOfRange { why, .. } => UnitError::OutOfRange { text, why },
-        }
-    })
+    parse_quantity(&t.replace(',', "."), dim).map_err(|e| e.with_text(text.to_string()))
 }
 
 /// The part of a number's text before its exponent.

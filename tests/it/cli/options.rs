@@ -151,6 +151,20 @@ fn a_unit_options_error_names_each_unit_once() {
     );
 }
 
+/// A sweep's bound lent the other bound's unit is named as typed: `width=3..5kg` was
+/// refused for '3kg', which nobody wrote (and `abc..5cm` for 'abccm').
+#[test]
+fn a_sweep_range_is_quoted_as_typed() {
+    assert_rejected(
+        &["sweep", "--x", "width=3..5kg"],
+        "error: --x unknown unit 'kg' in '3..5kg', expected a number with unit m, cm, mm",
+    );
+    assert_rejected(
+        &["sweep", "--x", "width=abc..5cm"],
+        "error: --x 'abc' is not a number",
+    );
+}
+
 /// An option whose value may be negative takes the next word whatever it is, so an
 /// option left without its value swallows the next option and the word after that
 /// is left over: clap said "unexpected argument 't.txt'" (or "unrecognized
