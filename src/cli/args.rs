@@ -157,6 +157,14 @@ pub enum ArgError {
         min.1
     )]
     SmallScreen { text: String, min: (u16, u16) },
+    /// A screen beyond the largest `render` draws (`min`: the smallest, COLSxROWS).
+    #[error(
+        "'{}' is larger than render draws, allowed COLSxROWS from {}x{} to {MAX_SCREEN}x{MAX_SCREEN}",
+        clip(text),
+        min.0,
+        min.1
+    )]
+    LargeScreen { text: String, min: (u16, u16) },
     #[error(
         "'{}' is not a size, expected COLSxROWS such as 120x40 (from {}x{} to {MAX_SCREEN}x{MAX_SCREEN})",
         clip(text),
@@ -395,7 +403,10 @@ pub(crate) fn counts(text: &str, max: usize) -> Option<(usize, Option<usize>)> {
 fn screen_size(text: &str) -> Result<(u16, u16), ArgError> {
     let min = crate::tui::view::MIN_SIZE;
     let text_ = || text.to_string();
-    match counts(text, usize::from(MAX_SCREEN)) {
+    match counts(text, usize::MAX) {
+        Some((c, Some(r))) if c.max(r) > usize::from(MAX_SCREEN) => {
+            Err(ArgError::LargeScreen { text: text_(), min })
+        }
         Some((c, Some(r))) if c < usize::from(min.0) || r < usize::from(min.1) => {
             Err(ArgError::SmallScreen { text: text_(), min })
         }

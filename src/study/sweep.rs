@@ -389,15 +389,18 @@ pub fn parse_axis(text: &str, n: usize) -> Result<SweepAxis, AxisError> {
         }
     };
     let (ua, ub) = (unit_of(a), unit_of(b));
-    let fix = |s: &str, own: &str, other: &str| {
-        if own.is_empty() && !other.is_empty() {
-            format!("{}{other}", s.trim())
+    // A bare number takes the other bound's unit; an error in it then names the
+    // range as typed (`3..5kg`), not the bound with a unit the user never wrote.
+    let bound = |s: &str, other: &str| {
+        if s.trim().parse::<f64>().is_ok() && !other.is_empty() {
+            parse_quantity(&format!("{}{other}", s.trim()), dim)
+                .map_err(|e| e.with_text(range.to_string()))
         } else {
-            s.trim().to_string()
+            parse_quantity(s.trim(), dim)
         }
     };
-    let lo = parse_quantity(&fix(a, &ua, &ub), dim)?;
-    let hi = parse_quantity(&fix(b, &ub, &ua), dim)?;
+    let lo = bound(a, &ub)?;
+    let hi = bound(b, &ua)?;
     let range = || range.to_string();
     if hi < lo {
         return Err(AxisError::Backwards { range: range() });
@@ -433,5 +436,13 @@ mod tests {
         assert_eq!(a.value(4), 1e308);
         let e = parse_axis("mu=0..abc", 3).unwrap_err();
         assert!(e.to_string().contains("'abc' is not a number"), "{e}");
+        // A bound lent the other's unit is named as typed.
+        let e = parse_axis("width=3..5kg", 3).unwrap_err().to_string();
+        assert!(
+            e.starts_with("unknown unit 'kg' in '3..5kg', expected"),
+            "{e}"
+        );
+        let e = parse_axis("width=abc..5cm", 3).unwrap_err().to_string();
+        assert!(e.starts_with("'abc' is not a number"), "{e}");
     }
 }

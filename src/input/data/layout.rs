@@ -7,15 +7,20 @@
 use super::options::Reading;
 use crate::settings::units::Dimension;
 
-use super::table::{Sep, TableRow, clean, unit_factor};
+use super::table::{Sep, TableRow, UnreadUnit, clean, header_unit, unit_factor, written_unit};
 
-/// One header cell of a position file: which track, which axis, its SI factor.
+/// One header cell of a position file: which track, which axis, its SI factor, and
+/// whether its unit is pixels (a length only `--scale` or `--length-unit` gives).
 #[derive(Clone, Debug, PartialEq)]
 pub(super) struct Col {
     pub track: String,
     pub axis: Axis,
     pub factor: Option<f64>,
+    pub pixels: bool,
 }
+
+/// Units that say a video track's positions are pixels.
+const PIXELS: [&str; 3] = ["px", "pixel", "pixels"];
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(super) enum Axis {
@@ -44,6 +49,12 @@ const OTHER_QUANTITIES: [&str; 10] = [
 /// `y_cm` (unit as suffix), `Latest: X2 (m)` (a second point). `None` for other
 /// columns (`v_x`, `v_{x}`, `frame`, …) and for a unit that does not fit the axis.
 pub(super) fn position_column(cell: &str) -> Option<Col> {
+    column(cell).ok().flatten()
+}
+
+/// [`position_column`], or the unit where a t, x or y column's unit does not fit its
+/// axis (`x (in)`, `t (min)`).
+fn column(cell: &str) -> Result<Option<Col>, UnreadUnit> {
     let h = clean(cell);
     // A unit in brackets or after a slash.
     let (name, unit) = match h.find(['(', '[', '/']) {
@@ -73,9 +84,11 @@ pub(super) fn position_column(cell: &str) -> Option<Col> {
         .iter()
         .enumerate()
         .filter_map(|(i, t)| axis_of(t).map(|a| (i, a)));
-    let (at, (axis, point)) = axes.next()?;
+    let Some((at, (axis, point))) = axes.next() else {
+        return Ok(None);
+    };
     if axes.next().is_some() {
-        return None;
+        return Ok(None);
     }
     let dim = if axis == Axis::T {
         Dimension::Time
@@ -89,9 +102,14 @@ pub(super) fn position_column(cell: &str) -> Option<Col> {
         .map(|(_, t)| *t)
         .collect();
     if rest.iter().any(|t| OTHER_QUANTITIES.contains(t)) {
-        return None;
+        return Ok(None);
     }
-    let mut factor = unit_factor(unit, dim)?;
+    let pixels = dim == Dimension::Length && PIXELS.contains(&written_unit(unit).as_str());
+    let mut factor = match header_unit(unit, dim) {
+        Ok(f) => f,
+        Err(_) if pixels => None,
+        Err(unread) => return Err(unread),
+    };
     // `x_cm`, `t_s`: a trailing unit token rather than a track name.
     if factor.is_none()
         && let [only] = rest.as_slice()
@@ -105,10 +123,27 @@ pub(super) fn position_column(cell: &str) -> Option<Col> {
         Some(p) => format!("{} {p}", rest.join(" ")),
         None => rest.join(" "),
     };
-    Some(Col {
+    Ok(Some(Col {
         track,
         axis,
         factor,
+        pixels,
+    }))
+}
+
+/// The first t, x or y cell of the header `row` whose unit does not fit its axis
+/// (only a time's when `times_only`), as the error that names it.
+pub(super) fn unknown_unit(row: &TableRow, times_only: bool) -> Option<LayoutError> {
+    (0..row.len()).find_map(|i| match column(row.cell(i)) {
+        Err(UnreadUnit { unit, dim }) if !times_only || dim == Dimension::Time => {
+            Some(LayoutError::UnknownUnit {
+                line: row.line,
+                cell: row.cell(i).to_string(),
+                unit,
+                dim,
+            })
+        }
+        _ => None,
     })
 }
 
@@ -136,6 +171,10 @@ pub(super) fn find_header(
         if has_t {
             return Ok((before, row));
         }
+        // A time column in a unit not read is this header's, not a missing one.
+        if let Some(e) = unknown_unit(&row, true) {
+            return Err(e);
+        }
         if before.len() == 3 {
             return Err(LayoutError::NoHeaderNearTop { line: row.line });
         }
@@ -144,7 +183,8 @@ pub(super) fn find_header(
 }
 
 /// Why a position file's header and the lines above it do not say its columns and
-/// tracks, or the tracks the options name.
+/// tracks, or the tracks the options name; or why a header's unit is not read (a
+/// velocity file's too).
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum LayoutError {
     #[error(
@@ -173,6 +213,28 @@ pub enum LayoutError {
         role: &'static str,
         found: Vec<String>,
     },
+    /// The header cell `cell` at `line` names a column whose `unit` (as written) is
+    /// none of its quantity's.
+    #[error(
+        "line {line}: unknown {} unit '{}' in '{}', expected {}",
+        quantity(*dim),
+        crate::settings::quote::clip(unit),
+        crate::settings::quote::clip(cell),
+        crate::settings::units::Expected::FileUnit(*dim)
+    )]
+    UnknownUnit {
+        line: usize,
+        cell: String,
+        unit: String,
+        dim: Dimension,
+    },
+    /// The header cell `cell` at `line` gives positions in pixels, and no option
+    /// gives the length one shows.
+    #[error(
+        "line {line}: '{}' is in pixels, which need a scale: give the length one pixel shows with --scale (e.g. --scale 1.105mm for a 1 m ruler 905 pixels long)",
+        crate::settings::quote::clip(cell)
+    )]
+    Pixels { line: usize, cell: String },
     #[error("the mark and the centre name the same track")]
     SameTrack,
     #[error("a '#multi:' file needs a line of track names before the column names")]
@@ -181,6 +243,15 @@ pub enum LayoutError {
         "line {line}: a multi-track file must be tab, comma or semicolon separated (Tracker writes tabs)"
     )]
     SpaceSeparated { line: usize },
+}
+
+/// What a header's unit measures, as an error names it.
+fn quantity(dim: Dimension) -> &'static str {
+    match dim {
+        Dimension::Time => "time",
+        Dimension::Speed => "speed",
+        _ => "length",
+    }
 }
 
 /// Gives the columns without a track name the one the lines above them say: a

@@ -85,8 +85,9 @@ impl Misfit {
                 unit_rate,
                 unit,
             } => format!(
-                "frames {} apart (as s: {rate:.1} frames/s; as {unit}: {unit_rate:.0} frames/s)",
+                "frames {} apart (as s: {} frames/s; as {unit}: {unit_rate:.0} frames/s)",
                 significant(frame, 3),
+                significant(rate, 2),
             ),
             Misfit::Speeds {
                 fastest,

@@ -7,7 +7,7 @@
 //! `NaN` cells as missing. The velocities are derived in `study::measured`.
 
 use super::layout::{
-    Axis, Col, LayoutError, find_header, name_tracks, pick_roles, position_column,
+    Axis, Col, LayoutError, find_header, name_tracks, pick_roles, position_column, unknown_unit,
 };
 use super::notes::{Notes, UnitNote};
 use super::options::{MAX_ROWS, Reading};
@@ -38,6 +38,7 @@ pub(super) fn read_table(
     let mut cols: Vec<Option<Col>> = (0..header.len())
         .map(|i| position_column(header.cell(i)))
         .collect();
+    units_read(&header, &cols, reading).map_err(|e| err(e.into()))?;
     let format = name_tracks(&mut cols, &before, table.sep).map_err(|e| err(e.into()))?;
     let format = match format {
         "CSV" if (0..header.len()).any(|i| header.cell(i).contains(':')) => {
@@ -120,6 +121,30 @@ pub(super) fn read_table(
     let given = units.given(it, ix);
     check_track_as_read(&track, &given, reading.own_lengths).map_err(|e| err(e.into()))?;
     Ok((track, notes(format, names, &given)))
+}
+
+/// Whether the header's units can be read: every t, x and y column's a unit of its
+/// axis, and pixels only with the length one shows (`--scale`, `--length-unit`; or
+/// read in the file's own unit).
+fn units_read(
+    header: &TableRow,
+    cols: &[Option<Col>],
+    reading: &Reading,
+) -> Result<(), LayoutError> {
+    if let Some(e) = unknown_unit(header, false) {
+        return Err(e);
+    }
+    let unscaled = reading.scale.or(reading.length_unit).is_none() && !reading.own_lengths;
+    let pixels = cols
+        .iter()
+        .position(|c| c.as_ref().is_some_and(|c| c.pixels));
+    match pixels.filter(|_| unscaled) {
+        Some(i) => Err(LayoutError::Pixels {
+            line: header.line,
+            cell: header.cell(i).to_string(),
+        }),
+        None => Ok(()),
+    }
 }
 
 /// What a position file said about itself: its format, tracks and units.
@@ -245,6 +270,8 @@ fn read_rows(
     columns: &Columns,
     track: &mut TrackParts,
 ) -> Result<(), RowError> {
+    // The last time kept, as written (an error quotes it).
+    let mut prev = String::new();
     for row in rows {
         if track.t.len() == MAX_ROWS {
             return Err(RowError::TooMany { line: row.line });
@@ -272,15 +299,17 @@ fn read_rows(
         if time.is_nan() {
             continue;
         }
-        if let Some(&prev) = track.t.last()
-            && time <= prev
-        {
-            return Err(RowError::NotIncreasing {
-                line: row.line,
-                time,
-                prev,
-            });
+        let (it, factor) = columns.t;
+        if track.t.last().is_some_and(|&last| time <= last) {
+            return Err(RowError::not_increasing(
+                row.line,
+                row.cell(it),
+                &prev,
+                factor,
+            ));
         }
+        prev.clear();
+        prev.push_str(row.cell(it));
         track.t.push(time);
         track.x.push(value(columns.x, "x")?);
         track.y.push(match columns.y {

@@ -8,7 +8,7 @@ use super::layout::LayoutError;
 use super::misfit::Implausible;
 use super::options::MAX_ROWS;
 use super::roles::Swapped;
-use super::scales::ScaleError;
+use super::scales::{ScaleError, TIMES, unit_name};
 use super::xml::XmlError;
 use crate::settings::params::{Key, PARAMS};
 use crate::settings::quote::clip;
@@ -97,7 +97,7 @@ pub enum DataProblem {
         name: &'static str,
         cell: String,
     },
-    #[error("{rows} data rows, allowed at least 3")]
+    #[error("{rows} data row{}, allowed at least 3", if *rows == 1 { "" } else { "s" })]
     TooFewRows { rows: usize },
     #[error("no impact found (v_cm never drops sharply); give its time with --impact-at")]
     NoImpact,
@@ -246,11 +246,19 @@ pub enum RowError {
         name: &'static str,
         cell: String,
     },
-    /// Times in s.
+    /// The time `time` and the one before it `prev` as the file writes them, in its
+    /// time unit `unit` (none where it is no unit of [`TIMES`]).
     #[error(
-        "line {line}: t = {time} s does not increase (previous {prev} s), allowed strictly increasing times"
+        "line {line}: t = {} does not increase (previous {}), allowed strictly increasing times",
+        with_unit(time, *unit),
+        with_unit(prev, *unit)
     )]
-    NotIncreasing { line: usize, time: f64, prev: f64 },
+    NotIncreasing {
+        line: usize,
+        time: String,
+        prev: String,
+        unit: Option<&'static str>,
+    },
     /// A number beyond [`MOST_CELL`] in the file's own unit: no experiment's.
     #[error(
         "line {line}: {name} = {value:e} is beyond any measurement, allowed |{name}| ≤ 1e12 in the file's unit"
@@ -260,6 +268,27 @@ pub enum RowError {
         name: &'static str,
         value: f64,
     },
+}
+
+impl RowError {
+    /// Line `line`'s time, `time` as written, is not after the time before it, `prev`
+    /// as written, in a time unit of SI factor `factor`.
+    pub(super) fn not_increasing(line: usize, time: &str, prev: &str, factor: f64) -> RowError {
+        RowError::NotIncreasing {
+            line,
+            time: time.to_string(),
+            prev: prev.to_string(),
+            unit: unit_name(&TIMES, factor),
+        }
+    }
+}
+
+/// A cell as written, and its unit after a space where there is one.
+fn with_unit(cell: &str, unit: Option<&str>) -> String {
+    match unit {
+        Some(u) => format!("{} {u}", clip(cell)),
+        None => clip(cell).to_string(),
+    }
 }
 
 /// The largest magnitude a cell of a track may have in the file's own unit (pixels,

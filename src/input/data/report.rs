@@ -163,6 +163,7 @@ fn lengths_in_doubt(what: &DataProblem) -> bool {
                 | super::scales::ScaleError::TooSlow { by: None, .. }
         ),
         DataProblem::Unscaled { .. } => true,
+        DataProblem::Layout(super::layout::LayoutError::Pixels { .. }) => true,
         DataProblem::InDataSet { problem, .. } => lengths_in_doubt(problem),
         _ => false,
     }

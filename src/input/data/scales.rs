@@ -242,16 +242,16 @@ impl fmt::Display for ScaleError {
         match *self {
             ScaleError::TimesNotSeconds { frame } => write!(
                 f,
-                "the header gives no time unit and the times do not look like s: frames {} apart (as s: {:.1} frames/s; as ms: {:.0} frames/s); if they are ms, give --time-unit ms (or a unit in the header: t (ms))",
+                "the header gives no time unit and the times do not look like s: frames {} apart (as s: {} frames/s; as ms: {:.0} frames/s); if they are ms, give --time-unit ms (or a unit in the header: t (ms))",
                 significant(frame, 3),
-                1.0 / frame,
+                significant(1.0 / frame, 2),
                 1e3 / frame
             ),
             ScaleError::FramesTooSlow { frame, by, unit } => write!(
                 f,
-                "in the time unit {by} gives the frames are {} s apart ({:.2} frames/s), slower than any video: if the times are {unit}, {}",
+                "in the time unit {by} gives the frames are {} s apart ({} frames/s), slower than any video: if the times are {unit}, {}",
                 significant(frame, 3),
-                1.0 / frame,
+                significant(1.0 / frame, 2),
                 advice("time-unit", unit, "t", Some(by))
             ),
             ScaleError::TooSlow { speed, by, unit } => {

@@ -254,17 +254,37 @@ pub fn file_unit(unit: &str, dim: Dimension) -> Result<f64, units::UnitError> {
 /// The SI factor of a unit written after a column name: `(ms)`, `[cm/s]`, `/ms`,
 /// `_m_per_s`; `Some(None)` when there is none, `None` when it is not a unit of `dim`.
 pub(crate) fn unit_factor(rest: &str, dim: Dimension) -> Option<Option<f64>> {
-    let unit = rest
-        .trim()
-        .trim_start_matches(['_', '(', '[', '/', ' '])
-        .trim_end_matches([')', ']', ' '])
-        .replace("_per_", "/");
+    header_unit(rest, dim).ok()
+}
+
+/// A unit written after a column name that is none of its quantity's: the unit as
+/// written (`in`, `min`) and the quantity.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) struct UnreadUnit {
+    pub unit: String,
+    pub dim: Dimension,
+}
+
+/// [`unit_factor`], or the unit as written when it is none of `dim`'s.
+pub(crate) fn header_unit(rest: &str, dim: Dimension) -> Result<Option<f64>, UnreadUnit> {
+    let unit = written_unit(rest);
     if unit.is_empty() {
-        return Some(None);
+        return Ok(None);
     }
     // Only a unit name counts: `t2`, `t_1` or `time0` are other columns, not times in
     // units of 12, 11 or 10 s.
-    file_unit(&unit, dim).ok().map(Some)
+    file_unit(&unit, dim)
+        .map(Some)
+        .map_err(|_| UnreadUnit { unit, dim })
+}
+
+/// The unit written after a column name, without its brackets (`cm/s` of `[cm/s]`,
+/// `m/s` of `_m_per_s`); empty when there is none.
+pub(crate) fn written_unit(rest: &str) -> String {
+    rest.trim()
+        .trim_start_matches(['_', '(', '[', '/', ' '])
+        .trim_end_matches([')', ']', ' '])
+        .replace("_per_", "/")
 }
 
 /// A number as video tools write it: `0.12`, `0,12` (decimal comma), `1.2e-3`,

@@ -3,18 +3,25 @@
 //! turned), the time origin moved to the first impact, and numbers that are plainly
 //! in other units than the header says named in the error.
 
+use super::layout::LayoutError;
 use super::misfit::Units;
 use super::notes::Notes;
 use super::options::{MAX_ROWS, Reading};
 use super::problem::{
     DataError, DataProblem, FRAMES_BEFORE, ImpactOutside, RowError, TooFewBefore,
 };
-use super::table::{Table, clean, number, unit_factor};
+use super::table::{Table, TableRow, UnreadUnit, clean, header_unit, number};
 use crate::settings::units::Dimension;
 use crate::study::measured::{Measured, MeasuredParts};
 
 /// Which quantity a velocity-file header cell names, and the SI factor its unit implies.
 fn column(header: &str) -> Option<(&'static str, Option<f64>)> {
+    named(header).and_then(|(name, unit)| unit.ok().map(|f| (name, f)))
+}
+
+/// [`column`], or the unit as written where one in brackets or after a slash is none
+/// of the quantity's (`t (min)`, `v_cm [in/s]`).
+fn named(header: &str) -> Option<(&'static str, Result<Option<f64>, UnreadUnit>)> {
     let h = clean(header).replace(' ', "");
     // The app's export and `simulate --format csv` name the model's left ball (the
     // one measured) `v_left` and `u_left`.
@@ -34,18 +41,39 @@ fn column(header: &str) -> Option<(&'static str, Option<f64>)> {
         return None;
     };
     // A unit in brackets ("t (ms)", "v_cm [cm/s]") or as a suffix ("t_s",
-    // "v_cm_m_per_s", "v_t_cm_per_s").
+    // "v_cm_m_per_s", "v_t_cm_per_s"); a suffix not a unit is another name
+    // ("temperature", "v_t7").
     let dim = if name == "t" {
         Dimension::Time
     } else {
         Dimension::Speed
     };
-    unit_factor(rest, dim).map(|f| (name, f))
+    match header_unit(rest, dim) {
+        Err(_) if !rest.starts_with(['(', '[', '/']) => None,
+        unit => Some((name, unit)),
+    }
+}
+
+/// The error naming the header's cell of column `want` whose unit is none of its
+/// quantity's, if it has one.
+fn unknown_unit(header: &TableRow, want: &str) -> Option<DataProblem> {
+    (0..header.len()).find_map(|i| match named(header.cell(i)) {
+        Some((name, Err(UnreadUnit { unit, dim }))) if name == want => Some(
+            LayoutError::UnknownUnit {
+                line: header.line,
+                cell: header.cell(i).to_string(),
+                unit,
+                dim,
+            }
+            .into(),
+        ),
+        _ => None,
+    })
 }
 
 /// True when a header cell names v_cm: the file holds velocities.
 pub(super) fn names_v_cm(cell: &str) -> bool {
-    column(cell).is_some_and(|(n, _)| n == "v_cm")
+    named(cell).is_some_and(|(n, _)| n == "v_cm")
 }
 
 #[cfg(test)]
@@ -76,19 +104,23 @@ fn columns(
         })
     };
     let missing = |name: &'static str| {
-        err(DataProblem::NoColumn {
-            line: header.line,
-            name,
-            header: (0..header.len())
-                .map(|i| header.cell(i).to_string())
-                .collect(),
-        })
+        err(
+            unknown_unit(&header, name).unwrap_or_else(|| DataProblem::NoColumn {
+                line: header.line,
+                name,
+                header: (0..header.len())
+                    .map(|i| header.cell(i).to_string())
+                    .collect(),
+            }),
+        )
     };
     let (it, ft) = find("t").ok_or_else(|| missing("t"))?;
     let (ic, fc) = find("v_cm").ok_or_else(|| missing("v_cm"))?;
     let (iv, fv) = find("v_t").ok_or_else(|| missing("v_t"))?;
     let units = Units::decide(reading, ft, fc, fv);
     let (mut t, mut v_cm, mut v_t) = (Vec::new(), Vec::new(), Vec::new());
+    // The last time, as written (an error quotes it).
+    let mut prev = String::new();
     for row in rows {
         if t.len() == MAX_ROWS {
             return Err(err(RowError::TooMany { line: row.line }.into()));
@@ -104,16 +136,12 @@ fn columns(
             })
         };
         let time = get(it, "t")? * units.time.0;
-        if let Some(&prev) = t.last()
-            && time <= prev
-        {
-            return Err(err(RowError::NotIncreasing {
-                line: row.line,
-                time,
-                prev,
-            }
-            .into()));
+        if t.last().is_some_and(|&last| time <= last) {
+            let e = RowError::not_increasing(row.line, row.cell(it), &prev, units.time.0);
+            return Err(err(e.into()));
         }
+        prev.clear();
+        prev.push_str(row.cell(it));
         t.push(time);
         v_cm.push(get(ic, "v_cm")? * units.v_cm.0);
         v_t.push(get(iv, "v_t")? * units.v_t.0);
@@ -374,7 +402,7 @@ mod tests {
         let bad = [
             ("t,v_cm\n0,1\n", "no column 'v_t'"),
             ("t,v_cm,v_t\n0,1,1\n0.01,x,1\n", "line 3: v_cm = 'x'"),
-            ("t,v_cm,v_t\n0,1,1\n", "1 data rows"),
+            ("t,v_cm,v_t\n0,1,1\n", "1 data row,"),
             (
                 "t,v_cm,v_t\n0,1,1\n0.02,1,1\n0.01,1,1\n",
                 "line 4: t = 0.01 s does not increase",

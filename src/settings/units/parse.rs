@@ -31,6 +31,22 @@ pub enum UnitError {
     OutOfRange { text: String, why: &'static str },
 }
 
+impl UnitError {
+    /// The same error naming `text` as the text given.
+    pub fn with_text(self, text: String) -> UnitError {
+        match self {
+            UnitError::NotANumber { allowed, .. } => UnitError::NotANumber { text, allowed },
+            UnitError::UnknownUnit { unit, allowed, .. } => UnitError::UnknownUnit {
+                text,
+                unit,
+                allowed,
+            },
+            UnitError::NotFinite { .. } => UnitError::NotFinite { text },
+            UnitError::OutOfRange { why, .. } => UnitError::OutOfRange { text, why },
+        }
+    }
+}
+
 /// What a quantity's text may be, as an error says it after "expected".
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Expected {
@@ -41,7 +57,8 @@ pub enum Expected {
     Typed(Dimension),
     /// One of the dimension's unit names, alone.
     UnitName(Dimension),
-    /// A unit a data file names: the dimension's unit names, and `us` for a time.
+    /// A unit a data file names: the dimension's unit names (microseconds as `us`
+    /// among them).
     FileUnit(Dimension),
 }
 
@@ -68,13 +85,8 @@ impl fmt::Display for Expected {
             Expected::UnitName(dim) if dim.units().is_empty() => {
                 write!(f, "no unit (a plain number)")
             }
-            Expected::UnitName(dim) => write!(f, "one of {}", names(dim)),
-            Expected::FileUnit(dim) => {
-                write!(f, "{}", Expected::UnitName(dim))?;
-                if dim == Dimension::Time {
-                    write!(f, ", us")?;
-                }
-                Ok(())
+            Expected::UnitName(dim) | Expected::FileUnit(dim) => {
+                write!(f, "one of {}", names(dim))
             }
         }
     }
@@ -162,19 +174,7 @@ pub fn parse_option(text: &str, dim: Dimension) -> Result<f64, UnitError> {
     if t.matches(',').count() != 1 || t.contains('.') {
         return parse_quantity(text, dim);
     }
-    parse_quantity(&t.replace(',', "."), dim).map_err(|e| {
-        let text = text.to_string();
-        match e {
-            UnitError::NotANumber { allowed, .. } => UnitError::NotANumber { text, allowed },
-            UnitError::UnknownUnit { unit, allowed, .. } => UnitError::UnknownUnit {
-                text,
-                unit,
-                allowed,
-            },
-            UnitError::NotFinite { .. } => UnitError::NotFinite { text },
-            UnitError::OutOfRange { why, .. } => UnitError::OutOfRange { text, why },
-        }
-    })
+    parse_quantity(&t.replace(',', "."), dim).map_err(|e| e.with_text(text.to_string()))
 }
 
 /// The part of a number's text before its exponent.

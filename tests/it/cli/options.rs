@@ -81,6 +81,12 @@ fn every_option_rejects_bad_values() {
         (&["--size", "10"], "COLSxROWS"),
         (&["--size", "0x10"], "COLSxROWS"),
         (&["--size", "5000x10"], "COLSxROWS"),
+        // A size too large is said to be, with the range (it was "not a size").
+        (
+            &["--size", "100000x100000"],
+            "'100000x100000' is larger than render draws, allowed COLSxROWS from 80x24 to 1000x1000",
+        ),
+        (&["--size", "1001x40"], "is larger than render draws"),
         // render has no terminal: a screen below the app's smallest is a usage error.
         (
             &["--size", "10x5"],
@@ -129,6 +135,34 @@ fn every_option_rejects_bad_values() {
         full.extend_from_slice(args);
         assert_rejected(&full, mentions);
     }
+}
+
+/// A unit option's error lists each unit once: `us` was listed twice (the unit table
+/// has it, and the list of a data file's units added it again).
+#[test]
+fn a_unit_options_error_names_each_unit_once() {
+    let file = concat!(env!("CARGO_MANIFEST_DIR"), "/data/gs-b4.9cm.csv");
+    let out = groovelab(&["data", file, "--time-unit", "min"]);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert_eq!(
+        err.trim_end(),
+        "error: --time-unit min: unknown unit 'min' in 'min', expected one of s, ms, us, µs, μs"
+    );
+}
+
+/// A sweep's bound lent the other bound's unit is named as typed: `width=3..5kg` was
+/// refused for '3kg', which nobody wrote (and `abc..5cm` for 'abccm').
+#[test]
+fn a_sweep_range_is_quoted_as_typed() {
+    assert_rejected(
+        &["sweep", "--x", "width=3..5kg"],
+        "error: --x unknown unit 'kg' in '3..5kg', expected a number with unit m, cm, mm",
+    );
+    assert_rejected(
+        &["sweep", "--x", "width=abc..5cm"],
+        "error: --x 'abc' is not a number",
+    );
 }
 
 /// An option whose value may be negative takes the next word whatever it is, so an

@@ -5,6 +5,7 @@ mod files;
 pub(crate) mod formats;
 mod hints;
 mod lab_data;
+mod new_user_files;
 mod origins;
 mod point_sigma;
 mod rules;

@@ -198,7 +198,7 @@ fn malformed_csvs_are_clear_errors() {
             "t,v_cm,v_t\n0,1,1\n0.01,abc,1\n0.02,1,1\n",
             "line 3: v_cm = 'abc'",
         ),
-        ("one.csv", "t,v_cm,v_t\n0,1,1\n", "1 data rows"),
+        ("one.csv", "t,v_cm,v_t\n0,1,1\n", "1 data row,"),
         (
             "unsorted.csv",
             "t,v_cm,v_t\n0,1,1\n0.02,1,1\n0.01,1,1\n",

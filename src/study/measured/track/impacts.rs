@@ -58,7 +58,8 @@ pub enum TrackError {
     )]
     NotFinite { at: f64, before: f64 },
     #[error(
-        "only {count} frames {side} the impact at t = {at:.4} s, at least {min} needed to fit the motion {side} it"
+        "only {count} frame{} {side} the impact at t = {at:.4} s, at least {min} needed to fit the motion {side} it",
+        if *count == 1 { "" } else { "s" }
     )]
     FewFramesBeside {
         count: usize,
@@ -67,7 +68,8 @@ pub enum TrackError {
         min: usize,
     },
     #[error(
-        "{frames} frames with a centre position, at least {need} needed ({min} before and after the impact)"
+        "{frames} frame{} with a centre position, at least {need} needed ({min} before and after the impact)",
+        if *frames == 1 { "" } else { "s" }
     )]
     FewFrames {
         frames: usize,
