@@ -314,7 +314,7 @@ pub fn describe(shown: &DataReport) -> String {
     if let Some(doubt) = &r.length_unit_doubt {
         let _ = writeln!(
             s,
-            "  lengths shown in the file's own unit (\"units\"), as nothing says what it is: {doubt}"
+            "  lengths shown in the file's own unit (\"units\"), not known to be metres: {doubt}"
         );
     }
     let _ = writeln!(s, "  {}", r.impact_note);

@@ -78,6 +78,11 @@ fn positions_in_pixels_name_the_scale_and_read_with_it() {
         out.contains("length in the file's own unit") && out.contains("--scale"),
         "{out}"
     );
+    // The header says what the unit is (pixels): the note must not say nothing does.
+    assert!(
+        out.contains("lengths shown in the file's own unit (\"units\"), not known to be metres: line 1: 'x (px)' is in pixels"),
+        "{out}"
+    );
 }
 
 #[test]
