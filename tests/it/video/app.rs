@@ -166,9 +166,7 @@ fn the_scene_line_names_the_radius_a_video_was_tracked_with() {
 /// regular file", and `--fps` "not used by fit").
 #[test]
 fn a_folder_without_frames_is_refused_as_a_folder_of_frames() {
-    let empty = scratch().join("no-frames");
-    let _ = std::fs::remove_dir_all(&empty);
-    std::fs::create_dir_all(&empty).unwrap();
+    let empty = crate::common::scratch_dir("video-app", "no-frames");
     let e = empty.to_str().unwrap();
     let c = cache("no-frames");
     for args in [
@@ -194,9 +192,7 @@ fn a_folder_without_frames_is_refused_as_a_folder_of_frames() {
 /// before it was refused as holding no frames).
 #[test]
 fn a_folders_other_files_are_no_part_of_its_cache_key() {
-    let dir = scratch().join("frames-and-notes");
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::common::scratch_dir("video-app", "frames-and-notes");
     for e in std::fs::read_dir(folder()).unwrap() {
         let p = e.unwrap().path();
         std::fs::copy(&p, dir.join(p.file_name().unwrap())).unwrap();
