@@ -26,6 +26,11 @@ pub struct Params {
     /// A point on one ball in the first frame, px (`--ball-at`, a click in the app):
     /// the blob under it is a ball whatever else the frame holds. Default `None`.
     pub ball_at: Option<(f64, f64)>,
+    /// The balls' radius in the frame, px, taken as known from the first frame (as a
+    /// seed's outline sets it), then learned from the fits as without it: set when
+    /// the clip is tracked again at the radius its clear outlines agree on
+    /// ([`super::Tracker::radius_contradicted`]). Default `None`.
+    pub radius_px: Option<f64>,
     /// Smallest ball radius looked for, px. Default 8: below that the outline has
     /// too few edge pixels for a sub-pixel circle (≈ 50 points on a half circle).
     pub min_radius: f64,
@@ -301,6 +306,13 @@ pub struct Params {
     /// still gives a scale. Default 0.05: a sharp ball's radius scatters by under
     /// 1 %, a blurred one's by a few; both balls have one radius.
     pub max_radius_spread: f64,
+    /// Clear outlines (`min_coverage`, `max_rms`, over a rail) left out for their
+    /// radius alone, at least this many and more than the fits kept, that agree on a
+    /// radius within `max_radius_spread` (1.4826 × their median absolute deviation),
+    /// contradict the radius learned: the clip is tracked again at theirs
+    /// ([`super::Tracker::radius_contradicted`]). Default 10: a ball seen for a
+    /// third of a second at 30 frames/s.
+    pub min_contradicting: usize,
     /// A ball must be found in at least one in this many frames for tracks to be
     /// given. Default 3: found more rarely, what was found may be something else (a
     /// mark, a highlight) in the frames where the ball itself was missed.
@@ -508,6 +520,7 @@ impl Default for Params {
         Params {
             roi: None,
             ball_at: None,
+            radius_px: None,
             min_radius: 8.0,
             coarse_width: 320,
             background_frames: 48,
@@ -561,6 +574,7 @@ impl Default for Params {
             moved_share: 0.15,
             mark_votes: 9,
             max_radius_spread: 0.05,
+            min_contradicting: 10,
             sparsest: 3,
             fewest_seen: 3,
             edge_systematic: 0.05,

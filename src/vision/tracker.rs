@@ -108,6 +108,12 @@ pub struct Tracker {
     /// Each ball's radii fitted about its blobs' own guesses (not sought at the
     /// known radius): what confirms the radius ([`confirmed_radius`]).
     found_free: [Vec<f64>; 2],
+    /// The radii of clear outlines left out for their radius alone, each circle
+    /// once a frame: what contradicts a wrong radius ([`Tracker::radius_contradicted`]).
+    other_radii: Vec<f64>,
+    /// Those circles of the frame being pushed (one found about several guesses is
+    /// counted once).
+    other_here: Vec<Circle>,
 }
 
 /// An outline and how it was found.
@@ -203,9 +209,27 @@ impl Tracker {
     pub fn new(params: Params) -> Tracker {
         Tracker {
             params,
+            radius: params.radius_px,
             learner: Some(Learner::new(params)),
             ..Tracker::default()
         }
+    }
+
+    /// The radius (px) the clip's clear outlines agree on where they contradict the
+    /// one learned: more of them left out for their radius alone than fits kept (and
+    /// `Params::min_contradicting` or more), scattering within `max_radius_spread`
+    /// of their median, which lies beyond `radius_tolerance` of the radius learned.
+    /// A wrong first lock (a circle through a ball's top and the shadow joined to its
+    /// blob) sets a radius every clear outline of the ball is then refused by; a
+    /// clip refused so is worth tracking again at the radius its outlines show
+    /// (`Params::radius_px`), which meets every check of the tracks as before.
+    pub fn radius_contradicted(&self) -> Option<f64> {
+        contradicting_radius(
+            self.radius?,
+            self.radii.len(),
+            &self.other_radii,
+            &self.params,
+        )
     }
 
     /// The median radius fitted so far, px.
@@ -397,6 +421,7 @@ impl Tracker {
         let img = &frame.luma;
         let k = self.frames.len();
         self.sought.clear();
+        self.other_here.clear();
         self.counts.frames += 1;
         let p = self.params;
         let noise = prep.noise;
@@ -917,16 +942,17 @@ impl Tracker {
         if stands_out(frame, &o.outline.circle, p.colour_weight) < p.differ_levels {
             return Err(LeftOut::Unseen);
         }
-        if !self.shaped(&o, &p, sharp(&o))
-            || c.r < p.min_radius
-            || p.roi.is_some_and(|roi| !roi.contains(c.x, c.y))
-        {
+        if c.r < p.min_radius || p.roi.is_some_and(|roi| !roi.contains(c.x, c.y)) {
+            return Err(LeftOut::Poor);
+        }
+        if !self.shaped(&o, &p, sharp(&o)) {
+            self.note_other_radius(&o);
             return Err(LeftOut::Poor);
         }
         // The first lock must be the outermost circular edge about it; once a lock
         // was not (the ball's outline taken instead), so must every fit the balls'
         // radius is learned from (the first 64), each of the radius known so far.
-        let learning = !self.seeded && self.radii.len() <= 64;
+        let learning = !self.seeded && p.radius_px.is_none() && self.radii.len() <= 64;
         let o = if (known.is_none() || (learning && self.outer_taken)) && !o.colour {
             match self.outermost_agrees(frame, &o.outline) {
                 Outer::Agrees => o,
@@ -1026,6 +1052,27 @@ impl Tracker {
             && self
                 .radius()
                 .is_none_or(|r| (c.r - r).abs() < tolerance * r)
+    }
+
+    /// Notes the radius of `o`, left out as not shaped, when only its radius kept it
+    /// out: a clear outline in brightness (`min_coverage`, `max_rms`, over a rail),
+    /// once a frame ([`Tracker::radius_contradicted`]).
+    fn note_other_radius(&mut self, o: &OutlineFound) {
+        // The coverage of a first lock, not the one lowered once a radius is known.
+        let p = self.params;
+        let c = o.outline.circle;
+        let clear = !o.colour
+            && o.outline.coverage() >= p.min_coverage
+            && o.outline.seen_over_a_rail(p.rail_view_deg)
+            && o.outline.rms <= p.max_rms;
+        let again = self
+            .other_here
+            .iter()
+            .any(|q| (q.x - c.x).hypot(q.y - c.y) < 0.01 && (q.r - c.r).abs() < 0.01);
+        if clear && !again && self.radius.is_some() {
+            self.other_here.push(c);
+            self.other_radii.push(c.r);
+        }
     }
 
     /// How far the outline `o`'s radius may lie from the balls' radius so far, as a
@@ -1580,6 +1627,24 @@ pub fn confirmed_radius(radius: Option<f64>, free: &[Vec<f64>; 2], spread: f64) 
     let (ma, mb) = (median(a)?, median(b)?);
     let tol = spread * r;
     ((ma - mb).abs() <= tol && (0.5 * (ma + mb) - r).abs() <= tol).then_some(r)
+}
+
+/// The radius (px) that clear outlines left out for their radius alone (`others`,
+/// px) agree on where they contradict the radius learned (`radius`, px, from `kept`
+/// fits): `Params::min_contradicting` of them or more and more than `kept`, their
+/// robust scatter (1.4826 × the median absolute deviation) within
+/// `max_radius_spread` of their median, and that median beyond `radius_tolerance` of
+/// `radius`; else `None`.
+pub fn contradicting_radius(radius: f64, kept: usize, others: &[f64], p: &Params) -> Option<f64> {
+    let m = median(others)?;
+    let mut dev: Vec<f64> = others.iter().map(|o| (o - m).abs()).collect();
+    dev.sort_by(f64::total_cmp);
+    let sd = 1.4826 * dev.get(dev.len() / 2).copied().unwrap_or(f64::NAN);
+    (others.len() >= p.min_contradicting
+        && others.len() > kept
+        && sd <= p.max_radius_spread * m
+        && (m - radius).abs() >= p.radius_tolerance * radius)
+        .then_some(m)
 }
 
 /// A slot's circle extrapolated to frame `k` from its last two fits.

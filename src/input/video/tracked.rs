@@ -129,7 +129,11 @@ pub enum Framing {
     Whole,
 }
 
-/// As [`track_or_found`], its rows chosen by `framing`.
+/// As [`track_or_found`], its rows chosen by `framing`. A clip refused where its
+/// clear outlines agree on a radius the tracker's learned one contradicts
+/// (`vision::Tracker::radius_contradicted`: a wrong first lock) is tracked once
+/// more, that radius known from its first frame; refused again, the first refusal
+/// stands.
 pub fn track_framed(
     video: &std::path::Path,
     options: &Options,
@@ -137,23 +141,76 @@ pub fn track_framed(
     pictures: Pictures,
     framing: Framing,
 ) -> Result<Option<Tracked>, Box<Refused>> {
-    if framing == Framing::Band
-        && let Attempt::Done(done) = attempt(video, options, progress, pictures, true)?
-    {
-        return Ok(*done);
+    let params = options.params();
+    match track_once(video, options, &params, progress, pictures, framing)? {
+        Once::Done(done) => Ok(*done),
+        Once::Contradicted(refused, radius) => {
+            let refused = *refused;
+            let again = vision::Params {
+                radius_px: Some(radius),
+                ..params
+            };
+            match track_once(video, options, &again, progress, pictures, framing) {
+                Ok(Once::Done(mut done)) => {
+                    if let Some(t) = done.as_mut().as_mut() {
+                        t.notes.push(format!(
+                            "tracked twice: the radius learned from the first fits ({:.2} px) was contradicted by the clip's clear outlines, which agree on {radius:.2} px; tracked again from that radius (the scale is from the second tracking's own fits)",
+                            refused.learned_px
+                        ));
+                    }
+                    Ok(*done)
+                }
+                _ => Err(refused.refused),
+            }
+        }
     }
-    match attempt(video, options, progress, pictures, false)? {
-        Attempt::Done(done) => Ok(*done),
+}
+
+/// What one tracking at given parameters gave: the tracks (`None`: asked to
+/// stop), or a refusal with the radius the clip's clear outlines agree on where
+/// they contradict the one learned.
+enum Once {
+    Done(Box<Option<Tracked>>),
+    Contradicted(Box<Contradicted>, f64),
+}
+
+/// A tracking refused, and the radius it had learned (px).
+struct Contradicted {
+    refused: Box<Refused>,
+    learned_px: f64,
+}
+
+/// One tracking at `params` (the band's, else the whole frame's; see [`Framing`]).
+fn track_once(
+    video: &std::path::Path,
+    options: &Options,
+    params: &vision::Params,
+    progress: &dyn Progress,
+    pictures: Pictures,
+    framing: Framing,
+) -> Result<Once, Box<Refused>> {
+    if framing == Framing::Band {
+        match attempt(video, options, params, progress, pictures, true)? {
+            Attempt::Done(done) => return Ok(Once::Done(done)),
+            Attempt::Contradicted(refused, r) => return Ok(Once::Contradicted(refused, r)),
+            Attempt::Again => {}
+        }
+    }
+    match attempt(video, options, params, progress, pictures, false)? {
+        Attempt::Done(done) => Ok(Once::Done(done)),
+        Attempt::Contradicted(refused, r) => Ok(Once::Contradicted(refused, r)),
         // Never asked again of the whole frame.
-        Attempt::Again => Ok(None),
+        Attempt::Again => Ok(Once::Done(Box::new(None))),
     }
 }
 
 /// What one tracking gave: the tracks (`None`: asked to stop), or, banded, a reason
-/// to track the whole frame instead.
+/// to track the whole frame instead, or a refusal of tracks whose clear outlines
+/// contradict the radius learned (the radius they agree on).
 enum Attempt {
     Done(Box<Option<Tracked>>),
     Again,
+    Contradicted(Box<Contradicted>, f64),
 }
 
 /// One tracking of `video`: of its band when `banded` and the first frames give
@@ -161,6 +218,7 @@ enum Attempt {
 fn attempt(
     video: &std::path::Path,
     options: &Options,
+    params: &vision::Params,
     progress: &dyn Progress,
     pictures: Pictures,
     banded: bool,
@@ -191,19 +249,19 @@ fn attempt(
         return Err(nothing(err(VideoProblem::NoRate)));
     };
     let framed = if banded {
-        framed(video, &info, frames, options, pictures).map_err(nothing)?
+        framed(video, &info, frames, params, pictures).map_err(nothing)?
     } else {
         Framed::whole(frames)
     };
     let band = framed.band;
     let Some((mut tracker, numbers, thumbs)) =
-        stream(framed, &info, options, progress, pictures).map_err(nothing)?
+        stream(framed, &info, params, progress, pictures).map_err(nothing)?
     else {
         return Ok(Attempt::Done(Box::new(None)));
     };
     if let Some(b) = band {
         vision::band::shift(&mut tracker.frames, b.y as f64);
-        tracker.params = options.params();
+        tracker.params = *params;
     }
     let first = match numbers.as_slice() {
         [first, _, ..] => *first,
@@ -224,7 +282,19 @@ fn attempt(
                 scale: options.px_per_m.is_some(),
                 at: options.ball_at,
             };
-            return Err(refused(&tracker, thumbs, pictures, err(what)));
+            let refused = refused(&tracker, thumbs, pictures, err(what));
+            return match (tracker.radius_contradicted(), tracker.radius()) {
+                (Some(r), Some(learned_px)) if params.radius_px.is_none() => {
+                    Ok(Attempt::Contradicted(
+                        Box::new(Contradicted {
+                            refused,
+                            learned_px,
+                        }),
+                        r,
+                    ))
+                }
+                _ => Err(refused),
+            };
         }
     };
     if let Some(b) = band
@@ -273,7 +343,7 @@ fn framed(
     video: &std::path::Path,
     info: &Info,
     mut frames: super::Frames,
-    options: &Options,
+    params: &vision::Params,
     pictures: Pictures,
 ) -> Result<Framed, VideoError> {
     let mut head = Vec::new();
@@ -290,7 +360,7 @@ fn framed(
         .filter_map(|f| f.as_ref().ok().map(|(_, img)| img.clone()))
         .collect();
     let band = (first.len() == wanted)
-        .then(|| vision::band::find(&first, &options.params()))
+        .then(|| vision::band::find(&first, params))
         .flatten();
     if let Some(b) = band
         && video.is_file()
@@ -345,12 +415,12 @@ fn off_the_frame(options: &Options, size: (usize, usize)) -> Option<VideoProblem
 fn stream(
     framed: Framed,
     info: &Info,
-    options: &Options,
+    params: &vision::Params,
     progress: &dyn Progress,
     pictures: Pictures,
 ) -> Result<Option<(Tracker, Vec<u64>, Thumbs)>, VideoError> {
     let Framed { frames, band, cut } = framed;
-    let params = band.map_or(options.params(), |b| b.params(&options.params()));
+    let params = band.map_or(*params, |b| b.params(params));
     let mut tracker = Tracker::new(params);
     // One pass, one decode: each frame is learned (reduced) into the background as
     // it comes, and tracked only once `ahead` frames more have been learned, so the

@@ -4,12 +4,15 @@
 //! width whose own guess gives no outline is sought at the radius only once each
 //! ball's own fits agree on it (`Params::confirm_spread`,
 //! `vision::tracker::confirmed_radius`). The looks table (BENCHMARKS.md, tracker 13)
-//! measures what they do on whole clips.
+//! measures what they do on whole clips. A wrong first lock that every clear
+//! outline of the clip then contradicts has the clip tracked again at the radius
+//! they agree on (`vision::tracker::contradicting_radius`, tracker 33).
 
 use super::decoded_look;
 use crate::common::paper_scene;
 use crate::film::looks::Size;
-use groovelab::vision::tracker::{confirmed_radius, locks_disagree};
+use groovelab::input::video::tracked::{self, Framing, Pictures};
+use groovelab::vision::tracker::{confirmed_radius, contradicting_radius, locks_disagree};
 use groovelab::vision::{self, Params};
 
 /// The small look 0 of the property tests in its H.264 copy (the film example's
@@ -129,4 +132,67 @@ fn both_balls_confirm_the_radius() {
     let apart = [vec![24.8, 24.9], vec![27.4, 27.5]];
     assert_eq!(confirmed_radius(Some(26.0), &apart, spread), None);
     assert_eq!(confirmed_radius(None, &both, spread), None);
+}
+
+/// The small look 68 (white balls on a dark striped wall, 100 frames/s, H.264 at
+/// crf 34): its first lock, a circle through a ball's top and the blob joined below
+/// it, set 14.5 px for 11.89, and 174 clear outlines of 11.0–12.0 px were then left
+/// out for their radius: neither ball was found in a third of the frames. Tracked
+/// again from the radius those outlines agree on, it gives a scale within its ± (and
+/// 5 %) of the truth, and says it was tracked twice. Without the retry it was refused.
+#[test]
+fn a_radius_every_clear_outline_contradicts_is_tracked_again_at_theirs() {
+    let Some((clip, path)) = super::h264_look("first_locks", 68, Size::Small) else {
+        return;
+    };
+    let quiet = groovelab::study::Quiet;
+    let done = tracked::track_framed(
+        &path,
+        &super::look_options(&clip),
+        &quiet,
+        Pictures::Skipped,
+        Framing::Band,
+    );
+    let Ok(Some(t)) = done else {
+        panic!("refused: {:?}", done.err().map(|r| r.error.to_string()));
+    };
+    let c = &t.tracks.calibration;
+    let truth = clip.film.px_per_m();
+    let off = c.px_per_m - truth;
+    assert!(
+        off.abs() <= 2.0 * c.px_per_m_sigma && off.abs() < 0.05 * truth,
+        "scale {:.1} ± {:.1} px/m for {truth:.1}",
+        c.px_per_m,
+        c.px_per_m_sigma
+    );
+    assert!(
+        t.notes.iter().any(|n| n.starts_with("tracked twice")),
+        "{:?}",
+        t.notes
+    );
+}
+
+/// The radius the clear outlines left out agree on: many (more than the fits kept
+/// and `min_contradicting`), close together, and far from the radius learned. Few,
+/// scattered, or near the radius learned (a fit or two beyond its tolerance), they
+/// contradict nothing.
+#[test]
+fn only_many_clear_outlines_that_agree_contradict_the_radius_learned() {
+    let p = Params::default();
+    let agree: Vec<f64> = (0..30)
+        .map(|i| 11.6 + 0.02 * (i % 7) as f64 - 0.06)
+        .collect();
+    let r = contradicting_radius(14.5, 20, &agree, &p).expect("contradicted");
+    assert!((r - 11.6).abs() < 0.05, "{r}");
+    // No more of them than the fits kept.
+    assert_eq!(contradicting_radius(14.5, 30, &agree, &p), None);
+    // Fewer than `min_contradicting`, even with no fit kept.
+    assert_eq!(contradicting_radius(14.5, 0, &agree[..9], &p), None);
+    assert!(contradicting_radius(14.5, 0, &agree[..10], &p).is_some());
+    // Scattered by 10 % (a wall's edges and the ball's mixed): no radius of theirs.
+    let scattered: Vec<f64> = (0..30).map(|i| 11.6 * (0.85 + 0.01 * i as f64)).collect();
+    assert_eq!(contradicting_radius(14.5, 5, &scattered, &p), None);
+    // Within the radius tolerance of the one learned: no contradiction.
+    assert_eq!(contradicting_radius(12.5, 5, &agree, &p), None);
+    assert_eq!(contradicting_radius(14.5, 5, &[], &p), None);
 }
