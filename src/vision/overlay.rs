@@ -147,7 +147,27 @@ pub fn pixel_grid(img: &mut RgbImage, scale: u32) {
     }
 }
 
-/// Writes `text` (digits) at `at` (its top left), each font pixel `k` × `k`, white on
+/// Writes `text` (ASCII) in the bottom right corner of `img`, as [`pixel_grid`]'s
+/// labels (`scale` as there): a frame's number and time on the overlay, as Tracker
+/// shows them, clear of the grid's labels along the top and the left.
+pub fn caption(img: &mut RgbImage, text: &str, scale: u32) {
+    let k = scale.max(1);
+    let (w, h) = (8 * k * text.len() as u32 + 2 * k, 10 * k);
+    if let (Some(x), Some(y)) = (img.width().checked_sub(w), img.height().checked_sub(h)) {
+        label(img, text, (x, y + k), k);
+    }
+}
+
+/// The caption of frame `frame` (counted from 0) of a clip at `fps` frames/s: its
+/// number and its time from the first frame (the number alone at no known rate).
+pub fn frame_caption(frame: usize, fps: Option<f64>) -> String {
+    match fps.filter(|f| f.is_finite() && *f > 0.0) {
+        Some(f) => format!("frame {frame}  {:.3} s", frame as f64 / f),
+        None => format!("frame {frame}"),
+    }
+}
+
+/// Writes `text` (ASCII) at `at` (its top left), each font pixel `k` × `k`, white on
 /// a black box.
 fn label(img: &mut RgbImage, text: &str, at: (u32, u32), k: u32) {
     let glyph_w = 8 * k;

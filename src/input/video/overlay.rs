@@ -52,6 +52,9 @@ pub struct Drawing {
     pub found: FitsFound,
     pub grid: bool,
     pub fps: f64,
+    /// The frame rate the frames' times are written with: the tracks', or the one
+    /// given; `None` (refused, none given) takes the container's, else no times.
+    pub rate: Option<f64>,
 }
 
 impl Drawing {
@@ -82,6 +85,7 @@ impl Drawing {
             found,
             grid: false,
             fps: done.fps,
+            rate: Some(done.fps),
         }
     }
 
@@ -92,6 +96,7 @@ impl Drawing {
             found,
             grid: true,
             fps: fps.unwrap_or(30.0),
+            rate: fps,
         }
     }
 }
@@ -108,6 +113,7 @@ pub fn write_overlay(video: &Path, drawing: &Drawing, file: &Path) -> Result<(),
         Kind::Video => 1,
     };
     let none = Vec::new();
+    let rate = drawing.rate.or(info.container_fps);
     let drawn = frames.enumerate().map_while(|(i, frame)| match frame {
         Ok((_, img)) => {
             let mut rgb = to_rgb(&img);
@@ -115,6 +121,7 @@ pub fn write_overlay(video: &Path, drawing: &Drawing, file: &Path) -> Result<(),
                 overlay::pixel_grid(&mut rgb, shrink);
             }
             overlay::draw(&mut rgb, drawing.found.get(i).unwrap_or(&none));
+            overlay::caption(&mut rgb, &overlay::frame_caption(i, rate), shrink);
             Some(rgb)
         }
         Err(e) => {

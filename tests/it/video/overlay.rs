@@ -121,6 +121,39 @@ fn the_overlay_sheet_draws_each_outline_on_its_ball() {
         }
     }
     assert!(checked >= 16, "{checked} balls checked");
+    // Each tile names its frame and time (100 frames/s) in its bottom right corner.
+    for (tile, &k) in shown.iter().enumerate() {
+        let (ox, oy) = (4 + 324 * (tile as u32 % 4), 4 + 184 * (tile as u32 / 4));
+        let text = format!("frame {k}  {:.3} s", k as f64 / 100.0);
+        let wrong = caption_misses(&img, (ox + 320, oy + 180), &text);
+        assert_eq!(
+            wrong, 0,
+            "tile {tile} (frame {k}): {wrong} pixels differ from '{text}'"
+        );
+    }
+}
+
+/// How many pixels of the 8×8 font's `text`, written white on a dark box ending 10 px
+/// above the tile's bottom right corner `corner` (exclusive) and 1 px inside it as the
+/// overlay writes captions, are not so: a set font pixel not white, or a clear one
+/// not dark.
+fn caption_misses(img: &image::RgbImage, corner: (u32, u32), text: &str) -> usize {
+    let x0 = corner.0 - (8 * text.len() as u32 + 2);
+    let y0 = corner.1 - 10 + 1;
+    let mut wrong = 0;
+    for (i, ch) in text.bytes().enumerate() {
+        let rows = font8x8::legacy::BASIC_LEGACY[usize::from(ch)];
+        for (row, bits) in rows.iter().enumerate() {
+            for col in 0..8u32 {
+                let p = img.get_pixel(x0 + 8 * i as u32 + col, y0 + row as u32).0;
+                let white = p.iter().all(|&v| v >= 250);
+                let dark = p.iter().all(|&v| v <= 90);
+                let set = bits & (1 << col) != 0;
+                wrong += usize::from(if set { !white } else { !dark });
+            }
+        }
+    }
+    wrong
 }
 
 #[test]
