@@ -41,6 +41,58 @@ pub struct Cli {
     pub data: DataArgs,
 }
 
+/// The command line as it is parsed and its help written: clap lists every global
+/// option under every command (`presets --help` listed the 31 scene and data options
+/// it refuses), so each command's own list hides the global options it does not
+/// take. Hidden, they are still parsed, and one given is refused by name
+/// (`cli::used_options`), never ignored.
+pub fn command() -> clap::Command {
+    use clap::CommandFactory;
+    let cmd = Cli::command();
+    let ids = |c: clap::Command| -> Vec<String> {
+        c.get_arguments().map(|a| a.get_id().to_string()).collect()
+    };
+    let scene = ids(SceneArgs::augment_args(clap::Command::new("scene")));
+    let data = ids(DataArgs::augment_args(clap::Command::new("data")));
+    let globals: Vec<clap::Arg> = cmd
+        .get_arguments()
+        .filter(|a| a.is_global_set())
+        .cloned()
+        .collect();
+    let names: Vec<String> = cmd
+        .get_subcommands()
+        .map(|s| s.get_name().to_string())
+        .collect();
+    names.into_iter().fold(cmd, |cmd, name| {
+        let takes = |id: &str| {
+            let in_scene = scene.iter().any(|s| s == id);
+            let in_data = data.iter().any(|d| d == id);
+            let drawing = matches!(id, "ascii" | "theme");
+            match name.as_str() {
+                "tui" | "render" => in_scene || in_data || drawing,
+                "simulate" | "sweep" => in_scene,
+                "compare" | "fit" => in_scene || in_data,
+                // R for the scale, and the tracker's own data options (`used_options`).
+                "track" => matches!(
+                    id,
+                    "preset" | "radius" | "scale" | "fps" | "roi" | "ball_at"
+                ),
+                // Its files are its arguments; a video's R as for `track`.
+                "data" => matches!(id, "preset" | "radius") || (in_data && id != "data"),
+                _ => !(in_scene || in_data || drawing),
+            }
+        };
+        // A hidden copy in the command itself: clap propagates a global option only
+        // where the command has none of that id (a hidden one is parsed all the same).
+        let hidden: Vec<clap::Arg> = globals
+            .iter()
+            .filter(|a| !takes(a.get_id().as_str()))
+            .map(|a| a.clone().hide(true))
+            .collect();
+        cmd.mut_subcommand(&name, |sub| sub.args(hidden))
+    })
+}
+
 /// Measured data from a file, for `fit`, the app and `render`.
 #[derive(Args, Debug, Clone, Default)]
 pub struct DataArgs {

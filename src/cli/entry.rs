@@ -4,8 +4,6 @@
 
 use std::ffi::OsString;
 
-use clap::Parser;
-
 use super::Response;
 use super::args::Cli;
 use super::error::CliError;
@@ -57,7 +55,10 @@ pub const NO_TERMINAL: &str = "the interactive app needs a terminal, and stdin o
 
 /// Parses and runs `args` (the program name first, as `std::env::args_os` gives).
 pub fn dispatch(args: &[OsString]) -> Entry {
-    let cli = match Cli::try_parse_from(args) {
+    let parsed = super::args::command()
+        .try_get_matches_from(args)
+        .and_then(|m| <Cli as clap::FromArgMatches>::from_arg_matches(&m));
+    let cli = match parsed {
         Ok(cli) => cli,
         Err(e) => {
             // Help and version go to stdout with status 0; usage errors to stderr, as
@@ -110,7 +111,6 @@ fn clap_one_line(text: &str) -> String {
 /// An unknown option's message with what is allowed: clap's suggestion when it has
 /// one ("a similar argument exists: '--width'"), else the options the command takes.
 fn with_allowed(e: &clap::Error, line: String, args: &[OsString]) -> String {
-    use clap::CommandFactory;
     use clap::error::{ContextKind, ContextValue, ErrorKind};
     let left_over = matches!(
         e.kind(),
@@ -122,16 +122,7 @@ fn with_allowed(e: &clap::Error, line: String, args: &[OsString]) -> String {
     if e.kind() != ErrorKind::UnknownArgument {
         return clip_invalid_value(e, line);
     }
-    match e.get(ContextKind::SuggestedArg) {
-        Some(ContextValue::String(similar)) => {
-            return format!("{line}; a similar option exists: '{similar}'");
-        }
-        Some(ContextValue::Strings(similar)) if !similar.is_empty() => {
-            return format!("{line}; similar options exist: '{}'", similar.join("', '"));
-        }
-        _ => {}
-    }
-    let top = Cli::command();
+    let top = super::args::command();
     // The subcommand named on the line, if any: its options, else the app's.
     let sub = args
         .iter()
@@ -142,15 +133,38 @@ fn with_allowed(e: &clap::Error, line: String, args: &[OsString]) -> String {
         Some(c) => (format!("groovelab {}", c.get_name()), c),
         None => ("groovelab".to_string(), &top),
     };
+    // clap suggests options the command hides too (global ones it does not take).
+    let hidden = |similar: &str| {
+        command
+            .get_arguments()
+            .any(|a| a.is_hide_set() && a.get_long().is_some_and(|l| similar == format!("--{l}")))
+    };
+    match e.get(ContextKind::SuggestedArg) {
+        Some(ContextValue::String(similar)) if !hidden(similar) => {
+            return format!("{line}; a similar option exists: '{similar}'");
+        }
+        Some(ContextValue::Strings(similar))
+            if !similar.iter().any(|s| hidden(s)) && !similar.is_empty() =>
+        {
+            return format!("{line}; similar options exist: '{}'", similar.join("', '"));
+        }
+        _ => {}
+    }
+    // A command's own options, and the global ones it takes (those it does not take
+    // it holds as hidden copies: `args::command`).
+    let own = |id: &clap::Id| command.get_arguments().any(|a| a.get_id() == id);
     let options: Vec<String> = command
         .get_arguments()
         .chain(
             top.get_arguments()
-                .filter(|a| sub.is_some() && a.is_global_set()),
+                .filter(|a| sub.is_some() && a.is_global_set() && !own(a.get_id())),
         )
         .filter(|a| !a.is_hide_set())
         .filter_map(|a| a.get_long().map(|l| format!("--{l}")))
         .collect();
+    if options.is_empty() {
+        return format!("{line}; `{name}` takes no options");
+    }
     format!(
         "{line}, allowed options of `{name}`: {} (`{name} --help` says what each does)",
         options.join(", ")

@@ -1,13 +1,9 @@
 //! Shell completions and the man page, both generated from the clap definitions of
 //! `args.rs`, so they always list the options the program really takes.
 
-use clap::CommandFactory;
-
-use super::args::Cli;
-
 /// The completion script for `shell`, to be sourced by it.
 pub fn completions(shell: clap_complete::Shell) -> String {
-    let mut cmd = Cli::command();
+    let mut cmd = super::args::command();
     let mut out = Vec::new();
     clap_complete::generate(shell, &mut cmd, "groovelab", &mut out);
     String::from_utf8(out).expect("clap_complete writes UTF-8")
@@ -17,7 +13,7 @@ pub fn completions(shell: clap_complete::Shell) -> String {
 /// options as clap_mangen makes them, then one section per command with its own
 /// synopsis and options (the page is one file: no groovelab-COMMAND(1) pages to refer to).
 pub fn manpage() -> String {
-    let cmd = Cli::command();
+    let cmd = super::args::command();
     let man = clap_mangen::Man::new(cmd.clone());
     let mut page = String::new();
     for part in [

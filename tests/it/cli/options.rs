@@ -422,3 +422,140 @@ fn render_prints_the_screen_as_plain_text() {
         "m right + 1 g"
     );
 }
+
+/// `args` run in this process as `main` runs them: exit status, stdout, stderr.
+fn dispatched(args: &[&str]) -> (u8, String, String) {
+    let words: Vec<std::ffi::OsString> = std::iter::once("groovelab")
+        .chain(args.iter().copied())
+        .map(Into::into)
+        .collect();
+    match groovelab::cli::entry::dispatch(&words) {
+        groovelab::cli::entry::Entry::Exit(e) => (e.code, e.stdout, e.stderr),
+        groovelab::cli::entry::Entry::Interactive { .. } => panic!("{args:?} opened the app"),
+    }
+}
+
+/// Each command's `--help` lists the global options it takes and none it refuses
+/// (clap lists every global option under every command: `presets --help` listed 31),
+/// as docs/interface.md says which take what: a scene (`--preset`, `--mass`), data
+/// (`--data`, `--time-unit`, the tracker's `--fps`, `--roi`, `--ball-at`,
+/// `--scale`), the drawing (`--ascii`, `--theme`); `track`, and `data` on a video,
+/// take R (`--preset`, `--radius`) and no other scene option; `data` takes its files
+/// as arguments, not `--data`. One left out of a command's help is still refused by
+/// name when given, never ignored.
+#[test]
+fn each_commands_help_lists_the_global_options_it_takes() {
+    let options = [
+        "--preset",
+        "--radius",
+        "--mass",
+        "--data",
+        "--time-unit",
+        "--fps",
+        "--roi",
+        "--ball-at",
+        "--scale",
+        "--ascii",
+        "--theme",
+    ];
+    let takes: &[(&str, &[&str])] = &[
+        ("tui", &options),
+        ("render", &options),
+        ("simulate", &["--preset", "--radius", "--mass"]),
+        ("sweep", &["--preset", "--radius", "--mass"]),
+        (
+            "compare",
+            &[
+                "--preset",
+                "--radius",
+                "--mass",
+                "--data",
+                "--time-unit",
+                "--fps",
+                "--roi",
+                "--ball-at",
+                "--scale",
+            ],
+        ),
+        (
+            "fit",
+            &[
+                "--preset",
+                "--radius",
+                "--mass",
+                "--data",
+                "--time-unit",
+                "--fps",
+                "--roi",
+                "--ball-at",
+                "--scale",
+            ],
+        ),
+        (
+            "track",
+            &[
+                "--preset",
+                "--radius",
+                "--fps",
+                "--roi",
+                "--ball-at",
+                "--scale",
+            ],
+        ),
+        (
+            "data",
+            &[
+                "--preset",
+                "--radius",
+                "--time-unit",
+                "--fps",
+                "--roi",
+                "--ball-at",
+                "--scale",
+            ],
+        ),
+        ("presets", &[]),
+        ("manpage", &[]),
+        ("completions", &[]),
+    ];
+    for (command, taken) in takes {
+        let (code, help, _) = dispatched(&[command, "--help"]);
+        assert_eq!(code, 0, "{command} --help");
+        // An option's line: `--name`, then its value's name or its help, if any.
+        let listed = |o: &str| {
+            help.lines().any(|l| {
+                let t = l.trim_start();
+                t == o || t.starts_with(&format!("{o} "))
+            })
+        };
+        for o in options {
+            assert_eq!(
+                listed(o),
+                taken.contains(&o),
+                "{command} --help and {o}:\n{help}"
+            );
+        }
+    }
+    // Left out of the help, refused by name when given.
+    for args in [
+        &["presets", "--mass", "1kg"][..],
+        &["simulate", "--data", "x.csv"],
+        &["track", "clip.mp4", "--mass", "1kg"],
+        &["data", "x.csv", "--data", "y.csv"],
+        &["simulate", "--ascii"],
+    ] {
+        let (code, out, err) = dispatched(args);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(
+            out.is_empty() && err.contains("is not used by"),
+            "{args:?}: {err}"
+        );
+    }
+    // An unknown option on a command that takes none says so.
+    let (code, _, err) = dispatched(&["presets", "--mas", "1"]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("`groovelab presets` takes no options"),
+        "{err}"
+    );
+}
