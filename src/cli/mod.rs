@@ -135,7 +135,14 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         .preset
         .as_ref()
         .map(|_| "preset")
-        .or_else(|| cli.scene.values.given().next().map(|(k, _)| k.param().name));
+        // Named as given: `--mass` sets both masses, and is said as --mass.
+        .or_else(|| {
+            let values = &cli.scene.values;
+            values
+                .given()
+                .next()
+                .map(|(k, _)| values.given_as(k.param()).name)
+        });
     // `track` reads --scale (the length a pixel shows), --fps, --roi and --ball-at,
     // its only data options.
     let track_scale = |id: &str| {
@@ -156,7 +163,10 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
     // --radius, and nothing else of the scene: it tracks what was filmed, it
     // simulates nothing.
     let track_unused = matches!(cli.command, Some(Command::Track(_) | Command::Data(_)))
-        .then(|| cli.scene.values.given().map(|(k, _)| k.param().name))
+        .then(|| {
+            let values = &cli.scene.values;
+            values.given().map(|(k, _)| values.given_as(k.param()).name)
+        })
         .into_iter()
         .flatten()
         .find(|&n| n != "radius");

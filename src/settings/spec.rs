@@ -153,7 +153,7 @@ impl SceneSpec {
 
     /// The row `p`'s value was given through: the one setting both balls (`mass`)
     /// when this layer holds the same value for both, else `p`.
-    fn given_as(&self, p: &'static Param) -> &'static Param {
+    pub fn given_as(&self, p: &'static Param) -> &'static Param {
         PARAMS
             .iter()
             .find(|q| q.sets.len() > 1 && q.sets.contains(&p.key) && self.get(q.key).is_some())

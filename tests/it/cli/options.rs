@@ -551,6 +551,21 @@ fn each_commands_help_lists_the_global_options_it_takes() {
             "{args:?}: {err}"
         );
     }
+    // Named as typed: `--mass` (both masses), not the first ball's `--mass-left`.
+    for (args, named) in [
+        (&["presets", "--mass", "1kg"][..], "--mass is not used"),
+        (&["track", "x.mp4", "--v0", "1"], "--v0 is not used"),
+        (
+            &["track", "x.mp4", "--v0-right", "1"],
+            "--v0-right is not used",
+        ),
+    ] {
+        let (_, _, err) = dispatched(args);
+        assert!(
+            err.starts_with(&format!("error: {named}")),
+            "{args:?}: {err}"
+        );
+    }
     // An unknown option on a command that takes none says so.
     let (code, _, err) = dispatched(&["presets", "--mas", "1"]);
     assert_eq!(code, 2);
