@@ -159,6 +159,10 @@ pub struct Calibration {
     /// and `Params::edge_lean` over the radius).
     pub radius_px: f64,
     pub radius_px_sigma: f64,
+    /// The single frames' radii's robust scatter, a share of their median (1.4826 ×
+    /// their median absolute deviation): over `Params::max_radius_spread` no scale is
+    /// given from them, and with one given the outlines are said to be in doubt.
+    pub radius_scatter: f64,
     /// The radius R the scale comes from, m.
     pub radius_m: f64,
     /// The groove's direction in the picture, degrees (positive: turned clockwise,
@@ -229,7 +233,7 @@ pub fn tracks(
     let along = |p: &[f64; 2]| p[0] * u.0 + p[1] * u.1;
     let mean_along = |s: usize| centres[s].iter().map(along).sum::<f64>() / centres[s].len() as f64;
     slots.sort_by(|a, b| mean_along(*a).total_cmp(&mean_along(*b)));
-    let (r_px, r_se) = the_radius(tracker, frames, &slots, scale.is_none())?;
+    let (r_px, r_se, radius_scatter) = the_radius(tracker, frames, &slots, scale.is_none())?;
     let px_per_m = scale.unwrap_or(r_px / radius);
     // The origin: the mean of every centre, so y is about 0 along the groove.
     let all: Vec<&[f64; 2]> = slots.iter().flat_map(|&s| centres[s].iter()).collect();
@@ -243,6 +247,7 @@ pub fn tracks(
         scale_given: scale.is_some(),
         radius_px: r_px,
         radius_px_sigma: r_se,
+        radius_scatter,
         radius_m: radius,
         groove_deg: angle.to_degrees(),
         groove_deg_sigma: angle_se.to_degrees(),
@@ -283,15 +288,16 @@ pub fn tracks(
     })
 }
 
-/// The balls' median fitted radius, px, and its ± (the median's own standard error
-/// and the edge's systematic); with `refuse` (no scale given), why no scale is given
-/// from it: radii that scatter, or outlines off the balls' edge in colour.
+/// The balls' median fitted radius, px, its ± (the median's own standard error and
+/// the edge's systematic) and the radii's scatter (a share of it); with `refuse` (no
+/// scale given), why no scale is given from it: radii that scatter, or outlines off
+/// the balls' edge in colour.
 fn the_radius(
     tracker: &Tracker,
     frames: &[FrameFixes],
     slots: &[usize],
     refuse: bool,
-) -> Result<(f64, f64), TracksError> {
+) -> Result<(f64, f64, f64), TracksError> {
     let p = &tracker.params;
     let radii = tracker.radii();
     let r_px = median(radii).unwrap_or(f64::NAN);
@@ -329,7 +335,7 @@ fn the_radius(
             radius_px: r_px,
         });
     }
-    Ok((r_px, r_se))
+    Ok((r_px, r_se, spread))
 }
 
 /// The slots that hold a ball (seen in enough frames), or why the frames give no

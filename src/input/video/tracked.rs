@@ -661,21 +661,7 @@ fn notes(
         ));
     }
     let c = &tracks.calibration;
-    n.push(if c.scale_given {
-        format!(
-            "scale {} px/m: given (--scale {} a pixel)",
-            crate::settings::units::significant(c.px_per_m, 6),
-            show_small(1.0 / c.px_per_m, Dimension::Length)
-        )
-    } else {
-        let (v, e) = with_uncertainty(c.px_per_m, c.px_per_m_sigma.max(1e-9), 2);
-        let (rv, re) = with_uncertainty(c.radius_px, c.radius_px_sigma.max(1e-9), 2);
-        format!(
-            "scale {v} ± {e} px/m: the balls' fitted radius {rv} ± {re} px for R = {} ({radius_from}); speeds and μ_k from these tracks carry its {:.2} %, which `fit` adds to their own ±",
-            show(c.radius_m, Dimension::Length),
-            100.0 * c.px_per_m_sigma / c.px_per_m
-        )
-    });
+    n.push(scale_note(c, radius_from));
     n.push(if c.groove_found {
         let (v, e) = with_uncertainty(c.groove_deg, c.groove_deg_sigma.max(1e-9), 2);
         format!("groove at {v} ± {e}° in the picture (found from the paths; + is the right end lower): the tracks are turned to it")
@@ -701,6 +687,38 @@ fn notes(
         show_small(scatter(tracks), Dimension::Length)
     ));
     n
+}
+
+/// The tracks' line on their scale: given (`--scale`), and then whether the radii
+/// scatter as they would refuse a scale (the outlines in doubt, which a given scale
+/// does not mend); else from the fitted radius, with its ±.
+pub fn scale_note(c: &vision::tracks::Calibration, radius_from: &str) -> String {
+    if c.scale_given {
+        // Radii that would refuse a scale: the outlines, and the centres fitted with
+        // them, are in doubt, which the given scale does not mend.
+        let doubt = if c.radius_scatter > vision::Params::default().max_radius_spread {
+            format!(
+                "; the balls' fitted radii scatter by {:.0} % about {:.1} px (both balls have one radius): their outlines, and the centres fitted with them, are in doubt in many frames; check them (--overlay) before trusting μ_k",
+                100.0 * c.radius_scatter,
+                c.radius_px
+            )
+        } else {
+            String::new()
+        };
+        format!(
+            "scale {} px/m: given (--scale {} a pixel){doubt}",
+            crate::settings::units::significant(c.px_per_m, 6),
+            show_small(1.0 / c.px_per_m, Dimension::Length)
+        )
+    } else {
+        let (v, e) = with_uncertainty(c.px_per_m, c.px_per_m_sigma.max(1e-9), 2);
+        let (rv, re) = with_uncertainty(c.radius_px, c.radius_px_sigma.max(1e-9), 2);
+        format!(
+            "scale {v} ± {e} px/m: the balls' fitted radius {rv} ± {re} px for R = {} ({radius_from}); speeds and μ_k from these tracks carry its {:.2} %, which `fit` adds to their own ±",
+            show(c.radius_m, Dimension::Length),
+            100.0 * c.px_per_m_sigma / c.px_per_m
+        )
+    }
 }
 
 /// The median of the centres' standard errors, m.

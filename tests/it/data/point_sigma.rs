@@ -174,6 +174,7 @@ fn the_tracker_text_keeps_each_points_sigma() {
             scale_given: false,
             radius_px: 127.0,
             radius_px_sigma: 0.05,
+            radius_scatter: 0.003,
             radius_m: 0.0127,
             groove_deg: 0.0,
             groove_deg_sigma: 0.0,

@@ -11,6 +11,7 @@ mod edge_lean;
 mod first_locks;
 mod follow_gap;
 pub(crate) mod found_frames;
+mod given_scale;
 pub(crate) mod impact_follow;
 mod inner_lock;
 pub(crate) mod looks;
