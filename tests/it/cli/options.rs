@@ -165,6 +165,24 @@ fn a_sweep_range_is_quoted_as_typed() {
     );
 }
 
+/// A sweep solves each grid point from its impact to its end: `--t-start` and
+/// `--t-end` changed nothing and were taken silently. Refused by name, and left out
+/// of `sweep --help`.
+#[test]
+fn a_sweep_refuses_the_span_it_does_not_use() {
+    for (flag, value) in [("--t-end", "0.05"), ("--t-start", "-1")] {
+        assert_rejected(
+            &["sweep", "--x", "width=3..5cm", "--grid", "2", flag, value],
+            &format!("error: {flag} is not used by sweep, allowed only with simulate, render"),
+        );
+    }
+    let help = String::from_utf8(groovelab(&["sweep", "--help"]).stdout).unwrap();
+    assert!(
+        help.contains("--width") && !help.contains("--t-end"),
+        "{help}"
+    );
+}
+
 /// An option whose value may be negative takes the next word whatever it is, so an
 /// option left without its value swallows the next option and the word after that
 /// is left over: clap said "unexpected argument 't.txt'" (or "unrecognized
