@@ -82,7 +82,8 @@ pub enum SweepError {
     Interrupted,
 }
 
-/// One axis's value at a grid point, shown `name = value` (SI).
+/// One axis's value at a grid point, shown `name = value` in the unit people read
+/// (`width = 5.5 cm`), as the scene's own range message that follows it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct GridValue {
     pub key: Key,
@@ -91,7 +92,8 @@ pub struct GridValue {
 
 impl std::fmt::Display for GridValue {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{} = {}", self.key.name(), self.value)
+        let shown = crate::settings::units::show(self.value, self.key.param().dim);
+        write!(f, "{} = {shown}", self.key.name())
     }
 }
 

@@ -183,6 +183,17 @@ fn a_sweep_refuses_the_span_it_does_not_use() {
     );
 }
 
+/// A grid corner outside the scene's range is named in the unit of the message that
+/// follows it: "the grid corner width = 0.055 is not a valid scene: groove width
+/// b = 5.5 cm is out of range" gave the same width as a bare number in metres.
+#[test]
+fn a_sweeps_bad_corner_is_named_in_the_units_people_read() {
+    assert_rejected(
+        &["sweep", "--x", "width=0..5.5cm", "--grid", "5"],
+        "error: the grid corner width = 5.5 cm is not a valid scene: groove width b = 5.5 cm",
+    );
+}
+
 /// A scene option that gives a value the sweep's axis sets at every point was
 /// silently overwritten: `--x width=3..5cm --width 4cm` mapped 3 … 5 cm,
 /// `--mass-left` under a `mass` axis and `--height` under a `v0` axis were dropped.
