@@ -70,7 +70,9 @@ pub fn command() -> clap::Command {
             let drawing = matches!(id, "ascii" | "theme");
             match name.as_str() {
                 "tui" | "render" => in_scene || in_data || drawing,
-                "simulate" | "sweep" => in_scene,
+                "simulate" => in_scene,
+                // A sweep solves each point to its end: no span (`used_options`).
+                "sweep" => in_scene && !matches!(id, "t_start" | "t_end"),
                 "compare" | "fit" => in_scene || in_data,
                 // R for the scale, and the tracker's own data options (`used_options`).
                 "track" => matches!(

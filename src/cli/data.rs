@@ -373,10 +373,14 @@ fn missing_line(missing: &[crate::input::data::Gap]) -> String {
             .iter()
             .take(5)
             .map(|g| {
-                format!(
-                    "{} at t = {:.4} … {:.4} s ({})",
-                    g.frames, g.from, g.to, g.why
-                )
+                // A row without a position is one time, not a range from it to
+                // itself (a jump in time keeps the frames on either side).
+                let at = if g.from == g.to {
+                    format!("{:.4}", g.from)
+                } else {
+                    format!("{:.4} … {:.4}", g.from, g.to)
+                };
+                format!("{} at t = {at} s ({})", g.frames, g.why)
             })
             .collect();
         let more = missing.len().saturating_sub(5);
@@ -386,7 +390,7 @@ fn missing_line(missing: &[crate::input::data::Gap]) -> String {
             if total == 1 { "" } else { "s" },
             runs.join(", "),
             if more > 0 {
-                format!(", and {more} more runs")
+                format!(", and {more} more run{}", if more == 1 { "" } else { "s" })
             } else {
                 String::new()
             }

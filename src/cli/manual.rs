@@ -3,10 +3,48 @@
 
 /// The completion script for `shell`, to be sourced by it.
 pub fn completions(shell: clap_complete::Shell) -> String {
-    let mut cmd = super::args::command();
+    let mut cmd = completable();
     let mut out = Vec::new();
     clap_complete::generate(shell, &mut cmd, "groovelab", &mut out);
     String::from_utf8(out).expect("clap_complete writes UTF-8")
+}
+
+/// The command line as the completion scripts offer it: clap_complete offers hidden
+/// options too (`presets --<TAB>` offered the 31 options it refuses, which
+/// `args::command` hides from its help), so here the global options are the app's
+/// own, and each command gets as options of its own those it takes, their conflicts
+/// kept where the other option is taken too.
+fn completable() -> clap::Command {
+    use clap::CommandFactory;
+    let parsed = super::args::command();
+    let top = super::args::Cli::command();
+    let globals: Vec<&clap::Arg> = top.get_arguments().filter(|a| a.is_global_set()).collect();
+    let mut cmd = top.clone().mut_args(|a| a.global(false));
+    for sub in parsed.get_subcommands() {
+        // What a command does not take it holds as a hidden copy (`args::command`).
+        let takes = |id: &clap::Id| {
+            !sub.get_arguments()
+                .any(|a| a.is_hide_set() && a.get_id() == id)
+        };
+        let own: Vec<clap::Arg> = globals
+            .iter()
+            .filter(|a| takes(a.get_id()))
+            .map(|a| {
+                let kept: Vec<clap::Id> = top
+                    .get_arg_conflicts_with(a)
+                    .into_iter()
+                    .map(|c| c.get_id().clone())
+                    .filter(|id| takes(id))
+                    .collect();
+                (*a).clone()
+                    .global(false)
+                    .conflicts_with(clap::builder::Resettable::<clap::Id>::Reset)
+                    .conflicts_with_all(kept)
+            })
+            .collect();
+        cmd = cmd.mut_subcommand(sub.get_name(), |s| s.args(own));
+    }
+    cmd
 }
 
 /// The man page groovelab(1), in roff: name, synopsis, description and the global

@@ -170,6 +170,12 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         .into_iter()
         .flatten()
         .find(|&n| n != "radius");
+    let span_given = cli
+        .scene
+        .values
+        .given()
+        .map(|(k, _)| k.param().name)
+        .find(|&n| matches!(n, "t_start" | "t_end"));
     let error = match (scene_given, data_flag) {
         (Some(id), _) if !scene => unused(id, "commands that take a scene"),
         _ if track_unused.is_some() => unused(
@@ -186,6 +192,11 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         (_, Some(id)) if d.data.is_empty() && !data_command => {
             Usage::WithoutData { flag: Flag(id) }
         }
+        // A sweep solves each point from its impact to its end: no span.
+        _ if matches!(cli.command, Some(Command::Sweep(_))) && span_given.is_some() => unused(
+            span_given.unwrap_or_default(),
+            "simulate, render, compare, fit and the app (a sweep solves each point to its end)",
+        ),
         _ if !ascii && cli.ascii => unused("ascii", "render and the app"),
         _ if !ascii && cli.theme.is_some() => unused("theme", "render and the app"),
         // --fps is a video's: a data file has its times.

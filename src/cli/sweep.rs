@@ -90,6 +90,12 @@ pub fn run_with_stop(
     };
     let x = axis(&args.x, nx, "x")?;
     let y = args.y.as_ref().map(|t| axis(t, ny, "y")).transpose()?;
+    for (a, id) in std::iter::once((&x, "x")).chain(y.as_ref().map(|y| (y, "y"))) {
+        sweep::check_given(a, &scene_args.values).map_err(|source| BadValue::Axis {
+            flag: Flag(id),
+            source,
+        })?;
+    }
     if let Some(y) = &y {
         sweep::check_pair(&x, y).map_err(|source| BadValue::Axis {
             flag: Flag("y"),

@@ -82,7 +82,8 @@ pub enum SweepError {
     Interrupted,
 }
 
-/// One axis's value at a grid point, shown `name = value` (SI).
+/// One axis's value at a grid point, shown `name = value` in the unit people read
+/// (`width = 5.5 cm`), as the scene's own range message that follows it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct GridValue {
     pub key: Key,
@@ -91,7 +92,8 @@ pub struct GridValue {
 
 impl std::fmt::Display for GridValue {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{} = {}", self.key.name(), self.value)
+        let shown = crate::settings::units::show(self.value, self.key.param().dim);
+        write!(f, "{} = {shown}", self.key.name())
     }
 }
 
@@ -141,6 +143,19 @@ pub enum AxisError {
         other.name()
     )]
     Overwrites { key: Key, other: Key, why: Overlap },
+    /// A scene option on the command line gives a value the axis sets at every point:
+    /// it would be ignored.
+    #[error(
+        "{} sweeps the value --{} gives{}, allowed: the axis or the option, not both (the axis sets it at every point)",
+        key.name(),
+        option.param().flag,
+        why.map_or(String::new(), |w| format!(" ({w})"))
+    )]
+    GivenToo {
+        key: Key,
+        option: Key,
+        why: Option<Overlap>,
+    },
 }
 
 /// How two swept parameters would write the same value of a scene.
@@ -197,6 +212,24 @@ pub fn check_pair(x: &SweepAxis, y: &SweepAxis) -> Result<(), AxisError> {
         }),
         None => Ok(()),
     }
+}
+
+/// Checks that no scene option on the command line (`given`: that layer) gives a
+/// value the axis sets at every point (`--width` with `width=3..5cm`, `--mass-left`
+/// with `mass`, `--height` with `v0`), which the sweep would silently ignore.
+pub fn check_given(axis: &SweepAxis, given: &SceneSpec) -> Result<(), AxisError> {
+    given
+        .rows()
+        .into_iter()
+        .find_map(|option| {
+            let why = overlap(axis.key, option);
+            (option == axis.key || why.is_some()).then_some(AxisError::GivenToo {
+                key: axis.key,
+                option,
+                why: why.filter(|_| option != axis.key),
+            })
+        })
+        .map_or(Ok(()), Err)
 }
 
 /// The parameters an axis may sweep, for the error that names an unknown one.

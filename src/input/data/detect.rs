@@ -18,7 +18,11 @@ pub fn read_with_notes(
     reading: &Reading,
 ) -> Result<(RawSeries, Notes), DataError> {
     let (raw, mut notes) = read_any(text, file, reading)?;
-    notes.cut_row = table::cut_short_last(text);
+    // Rows and cells are a table's: an XML project (Tracker, Logger Pro) ending
+    // without a line end after its last tag has lost nothing.
+    if !is_xml(text) {
+        notes.cut_row = table::cut_short_last(text);
+    }
     if let RawSeries::Positions(t) = &raw {
         super::roles::swapped(t).map_err(|e| DataError::new(file, e))?;
     }
@@ -44,11 +48,7 @@ fn read_any(text: &str, file: &str, reading: &Reading) -> Result<(RawSeries, Not
     if cmbl::is_cmbl(text) {
         return cmbl::read(text, file, reading).map(|(t, n)| (RawSeries::Positions(t), n));
     }
-    if text
-        .trim_start_matches('\u{feff}')
-        .trim_start()
-        .starts_with('<')
-    {
+    if is_xml(text) {
         return Err(DataError::new(file, DataProblem::OtherXml));
     }
     if vernier::is_vernier(text) {
@@ -64,6 +64,13 @@ fn read_any(text: &str, file: &str, reading: &Reading) -> Result<(RawSeries, Not
         return Ok((raw, notes));
     }
     read_table(&Table::new(text), file, reading)
+}
+
+/// Whether the file is XML (its first character a tag's), not a table.
+fn is_xml(text: &str) -> bool {
+    text.trim_start_matches('\u{feff}')
+        .trim_start()
+        .starts_with('<')
 }
 
 /// A table's series: velocities when its header names v_cm, else a position track.

@@ -165,6 +165,81 @@ fn a_sweep_range_is_quoted_as_typed() {
     );
 }
 
+/// A sweep solves each grid point from its impact to its end: `--t-start` and
+/// `--t-end` changed nothing and were taken silently. Refused by name, and left out
+/// of `sweep --help`.
+#[test]
+fn a_sweep_refuses_the_span_it_does_not_use() {
+    for (flag, value) in [("--t-end", "0.05"), ("--t-start", "-1")] {
+        assert_rejected(
+            &["sweep", "--x", "width=3..5cm", "--grid", "2", flag, value],
+            &format!("error: {flag} is not used by sweep, allowed only with simulate, render"),
+        );
+    }
+    let help = String::from_utf8(groovelab(&["sweep", "--help"]).stdout).unwrap();
+    assert!(
+        help.contains("--width") && !help.contains("--t-end"),
+        "{help}"
+    );
+}
+
+/// A grid corner outside the scene's range is named in the unit of the message that
+/// follows it: "the grid corner width = 0.055 is not a valid scene: groove width
+/// b = 5.5 cm is out of range" gave the same width as a bare number in metres.
+#[test]
+fn a_sweeps_bad_corner_is_named_in_the_units_people_read() {
+    assert_rejected(
+        &["sweep", "--x", "width=0..5.5cm", "--grid", "5"],
+        "error: the grid corner width = 5.5 cm is not a valid scene: groove width b = 5.5 cm",
+    );
+}
+
+/// A scene option that gives a value the sweep's axis sets at every point was
+/// silently overwritten: `--x width=3..5cm --width 4cm` mapped 3 … 5 cm,
+/// `--mass-left` under a `mass` axis and `--height` under a `v0` axis were dropped.
+#[test]
+fn a_sweep_refuses_a_scene_option_its_axis_overwrites() {
+    for (axis, args, says) in [
+        (
+            "--x",
+            &["--x", "width=3..5cm", "--width", "4cm"][..],
+            "--x width sweeps the value --width gives",
+        ),
+        (
+            "--x",
+            &["--x", "mass=0.1..1", "--mass-left", "1"],
+            "--x mass sweeps the value --mass-left gives (both set mass_left)",
+        ),
+        (
+            "--x",
+            &["--x", "v0=0.1..1", "--height", "3cm"],
+            "--x v0 sweeps the value --height gives",
+        ),
+        (
+            "--y",
+            &[
+                "--x",
+                "width=3..5cm",
+                "--y",
+                "restitution=0.5..1",
+                "--restitution",
+                "0.9",
+            ],
+            "--y restitution sweeps the value --restitution gives",
+        ),
+    ] {
+        let mut line = vec!["sweep", "--grid", "2x2"];
+        line.extend(args);
+        if axis == "--x" {
+            line[2] = "2";
+        }
+        assert_rejected(&line, &format!("error: {says}"));
+    }
+    // An option of another value is the base of every point, as before.
+    let out = groovelab(&["sweep", "--x", "width=3..5cm", "--grid", "2", "--mu", "0.2"]);
+    assert_eq!(out.status.code(), Some(0));
+}
+
 /// An option whose value may be negative takes the next word whatever it is, so an
 /// option left without its value swallows the next option and the word after that
 /// is left over: clap said "unexpected argument 't.txt'" (or "unrecognized

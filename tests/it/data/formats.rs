@@ -272,6 +272,31 @@ fn a_tracker_project_gives_its_positions_in_metres_and_fits() {
 }
 
 #[test]
+fn an_xml_project_without_a_final_line_end_is_not_said_cut_short() {
+    // Tracker writes its project without a line end after `</object>` (V10.trk of
+    // the NTNU lab, BallToss.trk of Tracker's examples): no row was dropped, and
+    // `data` said "line 5882, the last, is cut short (... fewer cells ...)".
+    let track = filmed();
+    let c = Coords {
+        origin: (179.38, 641.01),
+        angle: 2.5,
+        scale: 904.778,
+    };
+    let dir = scratch("xml-no-line-end");
+    for (name, text) in [
+        ("ball.trk", trk(&track, 52, &c)),
+        ("ball.cmbl", cmbl(&track, "m")),
+    ] {
+        let file = dir.join(name);
+        std::fs::write(&file, text.trim_end()).unwrap();
+        let (code, out, err) = groovelab(&["data", file.to_str().unwrap()]);
+        assert_eq!(code, Some(0), "{name}: {err}");
+        assert!(!out.contains("cut short"), "{name}: {out}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
 fn a_logger_pro_file_gives_its_video_analysis_and_fits() {
     let track = filmed();
     let text = cmbl(&track, "m");

@@ -140,6 +140,33 @@ fn small_messages_say_what_happened() {
     let (code, out, err) = groovelab(&["fit", "--preset", "paper-b4.9", "--data", f]);
     assert_eq!(code, Some(0), "{err}");
     assert!(out.contains("1 frame missing from the file"), "{out}");
+    // One row without a position is one time: "1 at t = 0.3000 s", not a range from
+    // it to itself ("0.3000 … 0.3000 s"); a single run left over is "1 more run".
+    let file = dir.join("holes.csv");
+    let text: String = filmed_csv(false, 120.0, -0.2, 0.8)
+        .lines()
+        .enumerate()
+        .map(|(i, l)| match i {
+            10 | 20 | 30 | 40 | 50 | 60 => {
+                let cells: Vec<&str> = l.split(',').collect();
+                format!("{},,,{},{}\n", cells[0], cells[3], cells[4])
+            }
+            _ => format!("{l}\n"),
+        })
+        .collect();
+    std::fs::write(&file, text).unwrap();
+    let (code, out, err) = groovelab(&["data", file.to_str().unwrap()]);
+    assert_eq!(code, Some(0), "{err}");
+    let line = out
+        .lines()
+        .find(|l| l.contains("frames missing"))
+        .unwrap_or_else(|| panic!("{out}"));
+    assert!(
+        line.contains("6 frames missing: 1 at t = ")
+            && !line.contains(" … ")
+            && line.ends_with(", and 1 more run"),
+        "{line}"
+    );
     // An impact given far outside the times names its flag and the times allowed.
     let (code, _, err) = groovelab(&[
         "fit",

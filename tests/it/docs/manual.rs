@@ -78,6 +78,41 @@ fn the_bash_completion_parses_and_knows_every_command_and_option() {
     assert!(ok, "bash -n rejects the completion script: {err}");
 }
 
+/// The completion scripts offer each command the options its `--help` lists, not the
+/// global ones it refuses (clap_complete offers hidden options: `presets --<TAB>`
+/// offered all 31 scene and data options).
+#[test]
+fn completions_offer_each_command_only_the_options_it_takes() {
+    let script = output(&["completions", "bash"]);
+    // bash: `opts="…"` on the line after each command's case label.
+    let opts = |command: &str| -> Vec<String> {
+        let label = format!("        groovelab__subcmd__{command})\n");
+        let at = script
+            .find(&label)
+            .unwrap_or_else(|| panic!("no case for {command}"));
+        let line = script[at + label.len()..].lines().next().unwrap();
+        line.trim()
+            .trim_start_matches("opts=\"")
+            .trim_end_matches('"')
+            .split_whitespace()
+            .map(str::to_string)
+            .collect()
+    };
+    let has = |command: &str, flag: &str| opts(command).iter().any(|o| o == flag);
+    assert_eq!(opts("presets"), ["-h", "--help"], "presets");
+    assert!(has("simulate", "--mass") && has("simulate", "--method"));
+    assert!(!has("simulate", "--data") && !has("simulate", "--ascii"));
+    assert!(has("track", "--radius") && has("track", "--scale") && !has("track", "--mass"));
+    assert!(has("render", "--data") && has("render", "--ascii"));
+    let fish = output(&["completions", "fish"]);
+    assert!(
+        !fish
+            .lines()
+            .any(|l| l.contains("using_subcommand presets") && l.contains("-l mass")),
+        "fish offers presets --mass"
+    );
+}
+
 #[test]
 fn every_shell_gets_a_script_and_an_unknown_shell_is_refused() {
     for shell in ["bash", "zsh", "fish", "powershell", "elvish"] {
