@@ -158,12 +158,14 @@ pub fn caption(img: &mut RgbImage, text: &str, scale: u32) {
     }
 }
 
-/// The caption of frame `frame` (counted from 0) of a clip at `fps` frames/s: its
-/// number and its time from the first frame (the number alone at no known rate).
+/// The caption of frame `frame` (the clip's first is 0) of a clip at `fps` frames/s:
+/// its number counted from 1, as the app's video view counts ("frame 17 of 25"),
+/// and its time from the first frame (the number alone at no known rate).
 pub fn frame_caption(frame: usize, fps: Option<f64>) -> String {
+    let n = frame + 1;
     match fps.filter(|f| f.is_finite() && *f > 0.0) {
-        Some(f) => format!("frame {frame}  {:.3} s", frame as f64 / f),
-        None => format!("frame {frame}"),
+        Some(f) => format!("frame {n}  {:.3} s", frame as f64 / f),
+        None => format!("frame {n}"),
     }
 }
 

@@ -124,7 +124,8 @@ fn the_overlay_sheet_draws_each_outline_on_its_ball() {
     // Each tile names its frame and time (100 frames/s) in its bottom right corner.
     for (tile, &k) in shown.iter().enumerate() {
         let (ox, oy) = (4 + 324 * (tile as u32 % 4), 4 + 184 * (tile as u32 / 4));
-        let text = format!("frame {k}  {:.3} s", k as f64 / 100.0);
+        // Counted from 1, as the app's video view counts; the time from the first.
+        let text = format!("frame {}  {:.3} s", k + 1, k as f64 / 100.0);
         let wrong = caption_misses(&img, (ox + 320, oy + 180), &text);
         assert_eq!(
             wrong, 0,
