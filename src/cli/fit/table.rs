@@ -52,12 +52,18 @@ pub(super) fn summary(f: &Fits) -> String {
         .as_ref()
         .and_then(|l| l.width_from_lines.as_ref())
     {
+        // The value and its ± to the same places (the ± rule: `with_uncertainty`).
+        let length = Dimension::Length;
+        let (b, pm) = crate::settings::units::with_uncertainty(
+            length.to_display(w.width),
+            length.to_display(2.0 * w.width_se),
+            2,
+        );
         let _ = writeln!(
             out,
-            "  the measured a_t/a_cm gives b ≈ {:.2} ± {}, not {}: check --width",
-            show(w.width, Dimension::Length),
-            show(2.0 * w.width_se, Dimension::Length),
-            show(w.given, Dimension::Length)
+            "  the measured a_t/a_cm gives b ≈ {b} ± {pm}{}, not {}: check --width",
+            length.suffix(),
+            show(w.given, length)
         );
     }
     // μ_k alone, with v0 free when the data measured it (not given).

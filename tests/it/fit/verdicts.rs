@@ -98,3 +98,31 @@ fn a_wrong_width_is_named_in_the_summary() {
     let b = j["line_fit"]["width_from_lines"]["width"].as_f64().unwrap();
     assert!((b - 0.0426).abs() < 2e-4, "{b}");
 }
+
+/// The width the measured lines give is written with its ± by the one rule every ±
+/// follows (`with_uncertainty`): both to the same places. paper-b4.4's measured data
+/// said "b ≈ 4.12 cm ± 0.144 cm", a ± with more places than its value.
+#[test]
+fn the_width_from_the_lines_and_its_pm_share_their_places() {
+    let out = stdout(&["fit", "--preset", "paper-b4.4"]);
+    let line = out
+        .lines()
+        .find(|l| l.contains("check --width"))
+        .unwrap_or_else(|| panic!("{out}"));
+    let after = line.split("b ≈ ").nth(1).unwrap();
+    let (value, rest) = after.split_once(" ± ").unwrap();
+    let pm = rest.split_whitespace().next().unwrap();
+    let places = |s: &str| s.split_once('.').map_or(0, |(_, d)| d.len());
+    assert_eq!(places(value), places(pm), "{line}");
+    assert!(rest.starts_with(&format!("{pm} cm, not 4.4 cm")), "{line}");
+    // The ± is twice the standard error the JSON gives, in cm.
+    let j = json(&["fit", "--preset", "paper-b4.4", "--format", "json"]);
+    let se = j["line_fit"]["width_from_lines"]["width_se"]
+        .as_f64()
+        .unwrap();
+    let shown: f64 = pm.parse().unwrap();
+    assert!(
+        (shown - 200.0 * se).abs() <= 0.5 * 10f64.powi(-(places(pm) as i32)) + 1e-12,
+        "{line}: se {se}"
+    );
+}
