@@ -112,6 +112,16 @@ fn takes(cli: &Cli) -> (&'static str, bool, bool, bool) {
     }
 }
 
+/// The scene options given on the command line, named as typed (`--mass` sets both
+/// masses and is named `--mass`, not `--mass-left`), in the parameter table's order.
+fn scene_options_given(cli: &Cli) -> Vec<&'static str> {
+    let values = &cli.scene.values;
+    values
+        .given()
+        .map(|(k, _)| values.given_as(k.param()).name)
+        .collect()
+}
+
 /// The first global option given that `command` does not use, if any (clap's global
 /// options are accepted anywhere; a command must not ignore one silently).
 fn used_options(cli: &Cli) -> Result<(), CliError> {
@@ -130,19 +140,13 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
         ("roi", d.roi.is_some()),
         ("ball_at", d.ball_at.is_some()),
     ];
+    let given = scene_options_given(cli);
     let scene_given = cli
         .scene
         .preset
         .as_ref()
         .map(|_| "preset")
-        // Named as given: `--mass` sets both masses, and is said as --mass.
-        .or_else(|| {
-            let values = &cli.scene.values;
-            values
-                .given()
-                .next()
-                .map(|(k, _)| values.given_as(k.param()).name)
-        });
+        .or_else(|| given.first().copied());
     // `track` reads --scale (the length a pixel shows), --fps, --roi and --ball-at,
     // its only data options.
     let track_scale = |id: &str| {
@@ -162,19 +166,14 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
     // `track` (and `data` on a video) takes R (for the scale) from a preset or
     // --radius, and nothing else of the scene: it tracks what was filmed, it
     // simulates nothing.
-    let track_unused = matches!(cli.command, Some(Command::Track(_) | Command::Data(_)))
-        .then(|| {
-            let values = &cli.scene.values;
-            values.given().map(|(k, _)| values.given_as(k.param()).name)
-        })
-        .into_iter()
-        .flatten()
+    let track_unused = given
+        .iter()
+        .copied()
+        .filter(|_| matches!(cli.command, Some(Command::Track(_) | Command::Data(_))))
         .find(|&n| n != "radius");
-    let span_given = cli
-        .scene
-        .values
-        .given()
-        .map(|(k, _)| k.param().name)
+    let span_given = given
+        .iter()
+        .copied()
         .find(|&n| matches!(n, "t_start" | "t_end"));
     let error = match (scene_given, data_flag) {
         (Some(id), _) if !scene => unused(id, "commands that take a scene"),

@@ -80,6 +80,10 @@ pub fn outcome_says(outcome: Outcome, sol: &Solution, derived: &Derived) -> Stri
             joules(energy)
         );
     }
+    // At rest from the start (v0 = 0 for both): nothing stops, nothing meets.
+    if outcome == Outcome::Rest && sol.impacts == 0 {
+        return "neither ball moves: no speed toward the other".to_string();
+    }
     match outcome {
         // Without friction nothing rolls: they slide apart.
         Outcome::Depart if derived.left_after_impact.is_none() => "the balls move apart",

@@ -264,3 +264,25 @@ fn balls_that_never_meet_get_no_regime_verdict() {
     let out = stdout(&["simulate", "--v0-left", "100", "--v0-right", "-100"]);
     assert!(out.contains("verdict  no impact"), "{out}");
 }
+
+/// Balls at rest from the start (v0 = 0 for both) are not said to "stop": the outcome
+/// says neither moves, beside the verdict that they never meet; a run that meets and
+/// then stops (the critical width) keeps "the balls stop".
+#[test]
+fn balls_at_rest_from_the_start_are_not_said_to_stop() {
+    let out = stdout(&["simulate", "--v0", "0"]);
+    assert!(
+        out.contains("outcome  rest: neither ball moves: no speed toward the other"),
+        "{out}"
+    );
+    assert!(
+        out.contains("verdict  no impact: the balls never meet"),
+        "{out}"
+    );
+    assert!(!out.contains("the balls stop"), "{out}");
+    let critical = stdout(&["simulate", "--preset", "critical"]);
+    assert!(
+        critical.contains("outcome  rest: the balls stop"),
+        "{critical}"
+    );
+}
