@@ -177,7 +177,8 @@ fn line_fit_lines(
     mass: Option<&str>,
     paper_data: bool,
 ) {
-    // The window said as it was chosen: the sliding phase, or what --from/--to set.
+    // The window said as it was chosen: the sliding phase, or what --from/--to set;
+    // its times from the impact (as --from and --to are), not the file's clock.
     let (over, hint) = match l.given {
         [false, false] => ("over the sliding phase", "; change with --from/--to"),
         [true, true] => ("over the window --from/--to set", ""),
@@ -186,7 +187,7 @@ fn line_fit_lines(
     };
     let _ = writeln!(
         out,
-        "line fits {over}, t = {:.3} … {:.3} s ({} frames{hint})",
+        "line fits {over}, t = {:.3} … {:.3} s after the impact ({} frames{hint})",
         l.from, l.to, l.points
     );
     // A window reaching past the data is cut to them: said, not done quietly.

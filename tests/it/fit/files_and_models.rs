@@ -288,19 +288,19 @@ fn the_line_fit_header_says_which_window() {
     };
     assert_eq!(
         lines(&[]),
-        "line fits over the sliding phase, t = 0.020 … 0.220 s (11 frames; change with --from/--to)"
+        "line fits over the sliding phase, t = 0.020 … 0.220 s after the impact (11 frames; change with --from/--to)"
     );
     assert_eq!(
         lines(&["--from", "0.06", "--to", "0.16"]),
-        "line fits over the window --from/--to set, t = 0.060 … 0.160 s (6 frames)"
+        "line fits over the window --from/--to set, t = 0.060 … 0.160 s after the impact (6 frames)"
     );
     assert_eq!(
         lines(&["--from", "0.06"]),
-        "line fits from --from to the end of the sliding phase, t = 0.060 … 0.220 s (9 frames)"
+        "line fits from --from to the end of the sliding phase, t = 0.060 … 0.220 s after the impact (9 frames)"
     );
     assert_eq!(
         lines(&["--to", "0.16"]),
-        "line fits from the start of the sliding phase to --to, t = 0.020 … 0.160 s (8 frames)"
+        "line fits from the start of the sliding phase to --to, t = 0.020 … 0.160 s after the impact (8 frames)"
     );
     use crate::common::{app, no_user_presets, text};
     let mut a = app("paper-b3.5", no_user_presets("fit-window"));
