@@ -782,6 +782,27 @@ fn a_tracks_positions_are_aligned_as_the_position_fit_aligns_them() {
     }
 }
 
+/// The approach speed a track reports carries its scale's ± as every speed in m/s
+/// does: with a 10 % scale ± its ± is the line's own and 10 % of the speed in
+/// quadrature (it said "0.793189 ± 0.000079 m/s" beside a v0 whose ± held the
+/// scale's 1.33 %); without a scale ±, the line's own alone.
+#[test]
+fn the_approach_speed_carries_the_scales_uncertainty() {
+    let s = preset_scene("paper-b4.9");
+    let text = example_text();
+    let with_scale = text.replacen("#multi:", "# scale = 1000 ± 100 px/m\n#multi:", 1);
+    let plain = try_load(&s, &text).unwrap().found.expect("a track");
+    let scaled = try_load(&s, &with_scale).unwrap().found.expect("a track");
+    assert_eq!(plain.approach_speed, scaled.approach_speed);
+    let whole = plain.approach_speed_se.hypot(0.1 * plain.approach_speed);
+    assert!(
+        (scaled.approach_speed_se - whole).abs() < 1e-12 * whole,
+        "{} for {whole}",
+        scaled.approach_speed_se
+    );
+    assert!(plain.approach_speed_se < 0.01 * plain.approach_speed);
+}
+
 /// Issue 29: a video's scale (px per metre from the balls' fitted radius) has a ±
 /// that every length carries, and so μ_k and v0: `fit` adds it in quadrature to the
 /// fit's own and says both parts. A 10 % scale ± must widen μ_k's ± to at least

@@ -354,7 +354,7 @@ pub fn derive(
         impact_x: first.x,
         direction: dir,
         approach_speed: approach.slope.abs(),
-        approach_speed_se: approach.slope_se,
+        approach_speed_se: with_scale(approach.slope_se, approach.slope, m.scale_rel_se),
         frames_before: before,
         frames_after: after,
         later_impacts: kinks.iter().skip(1).map(|k| k.t - first.t).collect(),
@@ -524,6 +524,13 @@ pub fn in_file_time(track: &Track) -> Option<Measured> {
     m.v_cm_sigma = Some(sig);
     m.x = Some(pos);
     Measured::new(m).ok()
+}
+
+/// The standard error `se` of a speed `v` (m/s, from lengths read through a scale)
+/// with the scale's relative ± (`scale_rel_se`, a video's px per metre) added in
+/// quadrature, as every length carries it.
+fn with_scale(se: f64, v: f64, scale_rel_se: Option<f64>) -> f64 {
+    se.hypot(v * scale_rel_se.unwrap_or(0.0))
 }
 
 #[cfg(test)]
