@@ -123,7 +123,9 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
         .map(|p| (!app.hide().value(p.key)).then(|| app.lab.settings().origin(p.key)))
         .collect();
     let used: Vec<Origin> = origins.iter().flatten().copied().collect();
-    let blk = block(title, theme).title_bottom(legend(&used));
+    // Between the corners.
+    let room = usize::from(area.width.saturating_sub(2));
+    let blk = block(title, theme).title_bottom(legend(&used, room));
     let inner = blk.inner(area);
     blk.render(area, buf);
     let g = theme.glyphs;
@@ -162,14 +164,21 @@ pub fn render(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
 }
 
 /// The bottom border's legend: each mark in use and its word, in [`Origin::ALL`]'s
-/// order (" d data  f flag  p preset ").
-pub fn legend(origins: &[Origin]) -> String {
-    let used: Vec<String> = Origin::ALL
-        .into_iter()
-        .filter(|o| origins.contains(o))
-        .map(|o| format!("{} {}", o.mark(), o.legend()))
-        .collect();
-    format!(" {} ", used.join("  "))
+/// order (" d data  f flag  p preset "), as many whole entries as fit in `room`
+/// columns (a border cuts a legend mid-word: "a a" for "a assumed").
+pub fn legend(origins: &[Origin], room: usize) -> String {
+    let mut shown: Vec<String> = Vec::new();
+    for o in Origin::ALL.into_iter().filter(|o| origins.contains(o)) {
+        shown.push(format!("{} {}", o.mark(), o.legend()));
+        if format!(" {} ", shown.join("  ")).chars().count() > room {
+            shown.pop();
+            break;
+        }
+    }
+    if shown.is_empty() {
+        return String::new();
+    }
+    format!(" {} ", shown.join("  "))
 }
 
 /// The parameters panel as a component.
