@@ -69,8 +69,11 @@ fn help_lines(width: usize, theme: &Theme) -> Vec<Line<'static>> {
     }
     // One line at 200 columns (the whole help then fits 60 rows).
     let mouse = "Mouse: click a parameter to select it, scroll on it to change it; click or drag the chart to seek, scroll to zoom; click a preset twice to load it.";
-    for row in wrap(Line::from(format!(" {mouse}")), width) {
-        lines.push(row.style(theme.dim));
+    // Each wrapped row indented alike, as the keys' descriptions are.
+    for row in wrap(Line::from(mouse), width.saturating_sub(1)) {
+        let mut spans = vec![Span::raw(" ")];
+        spans.extend(row.spans);
+        lines.push(Line::from(spans).style(theme.dim));
     }
     lines
 }
