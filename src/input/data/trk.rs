@@ -242,7 +242,8 @@ pub(super) fn read(text: &str, file: &str, reading: &Reading) -> Result<(Track, 
                 how: format!(
                     "the project's frame duration ({}, {} frames/s)",
                     crate::settings::units::show_small(dt, Dimension::Time),
-                    significant(1.0 / dt, 6)
+                    // As the frames' line says it (4 digits: 15.15, not 15.1515).
+                    significant(1.0 / dt, 4)
                 ),
             },
             length,

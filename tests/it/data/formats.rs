@@ -296,6 +296,40 @@ fn an_xml_project_without_a_final_line_end_is_not_said_cut_short() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// A Tracker project's frame duration of 66 ms (BallToss.trk of Tracker's examples) is
+/// said at the rate the frames' line says, to four digits: "15.15 frames/s" on both
+/// lines (the unit's line said 15.1515).
+#[test]
+fn a_projects_frame_rate_is_said_alike_on_both_lines() {
+    let track = video::track(
+        &scene(),
+        &Video {
+            seed: 11,
+            noise: 2e-4,
+            fps: 1000.0 / 66.0,
+            ..Video::default()
+        },
+    )
+    .unwrap();
+    let c = Coords {
+        origin: (179.38, 641.01),
+        angle: 2.5,
+        scale: 904.778,
+    };
+    let dir = scratch("trk-66ms");
+    let file = dir.join("ball.trk");
+    std::fs::write(&file, trk(&track, 0, &c)).unwrap();
+    let (code, out, err) = groovelab(&["data", file.to_str().unwrap()]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(out.contains(" frames at 15.15 frames/s"), "{out}");
+    assert!(
+        out.contains("frame duration (66 ms, 15.15 frames/s)"),
+        "{out}"
+    );
+    assert!(!out.contains("15.1515"), "{out}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 #[test]
 fn a_logger_pro_file_gives_its_video_analysis_and_fits() {
     let track = filmed();

@@ -171,3 +171,37 @@ fn a_stated_unit_that_cannot_be_right_is_still_refused() {
         "{err}"
     );
 }
+
+/// A track in the file's own unit (cm written with no unit) that speeds up, not an
+/// impact: the hint writes its speeds to four digits of that unit ("from 318 to 396
+/// units/s"), not a lab's three decimals of m/s ("318.000 to 396.000").
+#[test]
+fn a_hint_in_the_files_own_unit_writes_its_speeds_as_numbers_of_it() {
+    let mut text = String::from("t\tx\ty\n");
+    for k in 0..60 {
+        let t = f64::from(k) * 0.01 + 0.005;
+        let x = if t < 0.3 {
+            3.18 * t
+        } else {
+            0.954 + 3.96 * (t - 0.3)
+        };
+        text += &format!("{t:.3}\t{:.6}\t2.0\n", 100.0 * x);
+    }
+    let f = written("own-unit-hint", &text);
+    let (code, out, err) = run(&["data", &f]);
+    assert_eq!(code, 0, "{err}");
+    let hint = out
+        .lines()
+        .find(|l| l.contains("speeds the ball up from"))
+        .unwrap_or_else(|| panic!("{out}"));
+    let after = hint.split("speeds the ball up from ").nth(1).unwrap();
+    let words: Vec<&str> = after.split(' ').collect();
+    let (from, to) = (words[0], words[2]);
+    assert!(words[1] == "to" && words[3] == "units/s", "{hint}");
+    for (shown, near) in [(from, 318.0), (to, 396.0)] {
+        let v: f64 = shown.parse().unwrap_or_else(|_| panic!("{hint}"));
+        // A line's slope over frames straddling the change: within 10 % of the speed.
+        assert!((v - near).abs() < 0.1 * near, "{hint}");
+        assert!(!shown.contains('.') || shown.len() <= 5, "{hint}");
+    }
+}

@@ -93,15 +93,26 @@ fn short(t: f64) -> String {
 fn seen(before: f64, after: f64) -> String {
     // Speeds, not the file's signed velocities (-1.554 m/s read as a speed below 0).
     let (b, a) = (before.abs(), after.abs());
+    let (bs, as_) = (speed(b), speed(a));
     if b < 1e-9 {
-        format!("starts the ball from rest to {a:.3} m/s (a push or a release)")
+        format!("starts the ball from rest to {as_} m/s (a push or a release)")
     } else if a >= b {
-        format!("speeds the ball up from {b:.3} to {a:.3} m/s (a push, a release or a slope)")
+        format!("speeds the ball up from {bs} to {as_} m/s (a push, a release or a slope)")
     } else {
         format!(
-            "slows the ball by only {:.0} % (from {b:.3} to {a:.3} m/s)",
+            "slows the ball by only {:.0} % (from {bs} to {as_} m/s)",
             100.0 * (b - a) / b
         )
+    }
+}
+
+/// A speed as the hint writes it: three decimals of a lab's m/s (0.793), and four
+/// significant digits of a file's own units (318 units/s of pixels, never 318.000).
+fn speed(v: f64) -> String {
+    if v.abs() < 10.0 {
+        format!("{v:.3}")
+    } else {
+        significant(v, 4)
     }
 }
 
