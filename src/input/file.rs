@@ -43,8 +43,8 @@ impl std::fmt::Display for FileRole {
 /// What is wrong with a user file.
 #[derive(Debug, thiserror::Error)]
 pub enum Unreadable {
-    /// The system's own words (no such file, permission denied).
-    #[error(transparent)]
+    /// The system's refusal, in words with what is allowed ([`io_words`]).
+    #[error("{}", io_words(.0))]
     Io(#[from] std::io::Error),
     /// A directory, a FIFO, a device (see [`kind`]).
     #[error("it is {0}, allowed a regular file")]
@@ -59,6 +59,19 @@ pub enum Unreadable {
     /// The `byte`-th byte (from 1) starts no UTF-8 character.
     #[error("byte {byte} is not UTF-8 text, allowed a UTF-8 text file")]
     NotUtf8 { byte: usize },
+}
+
+/// A file the system would not open, in words with what is allowed: "no such file,
+/// allowed an existing file" (the system's own "No such file or directory (os error
+/// 2)" names no remedy); other errors in the system's words.
+pub fn io_words(e: &std::io::Error) -> String {
+    match e.kind() {
+        std::io::ErrorKind::NotFound => "no such file, allowed an existing file".into(),
+        std::io::ErrorKind::PermissionDenied => {
+            "permission denied, allowed a file you may read".into()
+        }
+        _ => e.to_string(),
+    }
 }
 
 /// Reads `path` as UTF-8 text if it is a regular file of at most `limit` bytes;

@@ -38,7 +38,7 @@ pub enum VideoProblem {
         program: &'static str,
         error: std::io::Error,
     },
-    #[error("cannot open: {0}")]
+    #[error("cannot open: {}", crate::input::file::io_words(.0))]
     Open(std::io::Error),
     #[error("is not a regular file, expected a video or a folder of frames")]
     NotRegular,

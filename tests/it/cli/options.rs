@@ -649,3 +649,34 @@ fn each_commands_help_lists_the_global_options_it_takes() {
         "{err}"
     );
 }
+
+/// A file that is not there is said in words with what is allowed, by every command
+/// that reads one (the system's "No such file or directory (os error 2)" named no
+/// remedy).
+#[test]
+fn a_missing_file_is_said_with_what_is_allowed() {
+    for args in [
+        &["data", "/nonexistent-groovelab/x.csv"][..],
+        &["fit", "--data", "/nonexistent-groovelab/x.csv"],
+        &["fit", "--data", "/nonexistent-groovelab/x.mp4"],
+        &[
+            "track",
+            "/nonexistent-groovelab/x.mp4",
+            "--radius",
+            "2.75cm",
+        ],
+    ] {
+        let (code, out, err) = dispatched(args);
+        assert_eq!(code, 2, "{args:?}: {err}");
+        assert!(
+            out.is_empty() && err.lines().count() == 1,
+            "{args:?}: {err}"
+        );
+        assert!(
+            err.contains("/nonexistent-groovelab/x.")
+                && err.contains("no such file, allowed an existing file")
+                && !err.contains("os error"),
+            "{args:?}: {err}"
+        );
+    }
+}
