@@ -166,11 +166,9 @@ fn used_options(cli: &Cli) -> Result<(), CliError> {
     // `track` (and `data` on a video) takes R (for the scale) from a preset or
     // --radius, and nothing else of the scene: it tracks what was filmed, it
     // simulates nothing.
-    let track_unused = given
-        .iter()
-        .copied()
-        .filter(|_| matches!(cli.command, Some(Command::Track(_) | Command::Data(_))))
-        .find(|&n| n != "radius");
+    let track_unused = matches!(cli.command, Some(Command::Track(_) | Command::Data(_)))
+        .then(|| given.iter().copied().find(|&n| n != "radius"))
+        .flatten();
     let span_given = given
         .iter()
         .copied()

@@ -1637,9 +1637,7 @@ pub fn confirmed_radius(radius: Option<f64>, free: &[Vec<f64>; 2], spread: f64) 
 /// `radius`; else `None`.
 pub fn contradicting_radius(radius: f64, kept: usize, others: &[f64], p: &Params) -> Option<f64> {
     let m = median(others)?;
-    let mut dev: Vec<f64> = others.iter().map(|o| (o - m).abs()).collect();
-    dev.sort_by(f64::total_cmp);
-    let sd = 1.4826 * dev.get(dev.len() / 2).copied().unwrap_or(f64::NAN);
+    let sd = robust_sd(others, m);
     (others.len() >= p.min_contradicting
         && others.len() > kept
         && sd <= p.max_radius_spread * m
@@ -1661,6 +1659,13 @@ fn predict(last: &[(usize, Circle)], k: usize) -> Option<Circle> {
             })
         }
     }
+}
+
+/// The robust standard deviation of `v` about `centre`: 1.4826 × the median absolute
+/// deviation (a normal scatter's σ), 0 when `v` is empty.
+pub fn robust_sd(v: &[f64], centre: f64) -> f64 {
+    let dev: Vec<f64> = v.iter().map(|x| (x - centre).abs()).collect();
+    1.4826 * median(&dev).unwrap_or(0.0)
 }
 
 /// The median of `v`, `None` when empty.

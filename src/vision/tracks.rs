@@ -9,7 +9,7 @@ use serde::Serialize;
 
 use super::circle::Outline;
 use super::repeats;
-use super::tracker::{FrameFixes, LeftOut, Tracker, median};
+use super::tracker::{FrameFixes, LeftOut, Tracker, median, robust_sd};
 
 /// Why tracked frames give no tracks.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -301,15 +301,13 @@ fn the_radius(
     let p = &tracker.params;
     let radii = tracker.radii();
     let r_px = median(radii).unwrap_or(f64::NAN);
-    let mut dev: Vec<f64> = radii.iter().map(|r| (r - r_px).abs()).collect();
-    dev.sort_by(f64::total_cmp);
     // How unsure the edge is beyond the frames' mean: the edge's definitions
     // disagreeing, the single frames' radii scattering (a bias that the shading, a
     // blur or the wall puts into every frame alike does not average out over them:
     // the frames' scatter, not its standard error, bounds it), the two balls'
     // radii differing (both have one radius), and the lean of a shaded ball's edge
     // toward its darker side (`Params::edge_lean`), which no frame shows apart.
-    let frame_sd = 1.4826 * dev.get(dev.len() / 2).copied().unwrap_or(0.0);
+    let frame_sd = robust_sd(radii, r_px);
     let r_stat = frame_sd * 1.2533 / (radii.len() as f64).sqrt();
     let colour = colour_edge(tracker.colour_offsets(), p.colour_edge_within);
     let systematic = edge_systematic(tracker.edge_offsets(), colour, p.edge_systematic)
@@ -476,8 +474,7 @@ fn odd_radius(frames: &mut [FrameFixes], sigmas: f64, floor: f64) {
         .flat_map(|f| f.iter().flatten().map(|fix| fix.outline.circle.r))
         .collect();
     let Some(mid) = median(&radii) else { return };
-    let dev: Vec<f64> = radii.iter().map(|r| (r - mid).abs()).collect();
-    let sd = 1.4826 * median(&dev).unwrap_or(0.0);
+    let sd = robust_sd(&radii, mid);
     let within = (sigmas * sd).max(floor);
     for f in frames.iter_mut() {
         for slot in f.iter_mut() {

@@ -46,14 +46,13 @@ pub fn kind(file: &Path) -> Result<Kind, VideoError> {
 
 /// What an overlay draws over the frames: each frame's balls found, in the video's
 /// pixels; a pixel grid when the tracking was refused (to read `--roi` and
-/// `--ball-at` off the picture); the rate a video overlay plays at, where the file
-/// says none.
+/// `--ball-at` off the picture); the frame rate known apart from the file's.
 pub struct Drawing {
     pub found: FitsFound,
     pub grid: bool,
-    pub fps: f64,
-    /// The frame rate the frames' times are written with: the tracks', or the one
-    /// given; `None` (refused, none given) takes the container's, else no times.
+    /// The tracks' frame rate, or the one given (`--fps`): the frames' times are
+    /// written with it (else the container's, else none), and a video overlay plays
+    /// at it where the file says none (else 30 frames/s).
     pub rate: Option<f64>,
 }
 
@@ -84,18 +83,16 @@ impl Drawing {
         Drawing {
             found,
             grid: false,
-            fps: done.fps,
             rate: Some(done.fps),
         }
     }
 
     /// What the tracker found before it refused (each fit at its own radius), over
-    /// a pixel grid; `fps` the rate given (`--fps`: a folder says none), else 30.
+    /// a pixel grid; `fps` the rate given (`--fps`; a folder says none).
     pub fn refused(found: FitsFound, fps: Option<f64>) -> Drawing {
         Drawing {
             found,
             grid: true,
-            fps: fps.unwrap_or(30.0),
             rate: fps,
         }
     }
@@ -152,7 +149,7 @@ pub fn write_overlay(video: &Path, drawing: &Drawing, file: &Path) -> Result<(),
             let enc = Encoding {
                 width: info.width - info.width % 2,
                 height: info.height - info.height % 2,
-                fps: info.container_fps.unwrap_or(drawing.fps),
+                fps: info.container_fps.or(drawing.rate).unwrap_or(30.0),
                 crf: 20,
                 metadata: Vec::new(),
             };

@@ -142,45 +142,40 @@ pub fn track_framed(
     framing: Framing,
 ) -> Result<Option<Tracked>, Box<Refused>> {
     let params = options.params();
-    match track_once(video, options, &params, progress, pictures, framing)? {
-        Once::Done(done) => Ok(*done),
-        Once::Contradicted(refused, radius) => {
-            let refused = *refused;
-            let again = vision::Params {
-                radius_px: Some(radius),
-                ..params
-            };
-            match track_once(video, options, &again, progress, pictures, framing) {
-                Ok(Once::Done(mut done)) => {
-                    if let Some(t) = done.as_mut().as_mut() {
-                        t.notes.push(format!(
-                            "tracked twice: the radius learned from the first fits ({:.2} px) was contradicted by the clip's clear outlines, which agree on {radius:.2} px; tracked again from that radius (the scale is from the second tracking's own fits)",
-                            refused.learned_px
-                        ));
-                    }
-                    Ok(*done)
-                }
-                _ => Err(refused.refused),
+    let first = match track_once(video, options, &params, progress, pictures, framing)? {
+        Attempt::Contradicted(first) => first,
+        Attempt::Done(done) => return Ok(*done),
+        // `track_once` never gives it.
+        Attempt::Again => return Ok(None),
+    };
+    let again = vision::Params {
+        radius_px: Some(first.radius_px),
+        ..params
+    };
+    match track_once(video, options, &again, progress, pictures, framing) {
+        Ok(Attempt::Done(mut done)) => {
+            if let Some(t) = done.as_mut().as_mut() {
+                t.notes.push(format!(
+                    "tracked twice: the radius learned from the first fits ({:.2} px) was contradicted by the clip's clear outlines, which agree on {:.2} px; tracked again from that radius (the scale is from the second tracking's own fits)",
+                    first.learned_px, first.radius_px
+                ));
             }
+            Ok(*done)
         }
+        _ => Err(first.refused),
     }
 }
 
-/// What one tracking at given parameters gave: the tracks (`None`: asked to
-/// stop), or a refusal with the radius the clip's clear outlines agree on where
-/// they contradict the one learned.
-enum Once {
-    Done(Box<Option<Tracked>>),
-    Contradicted(Box<Contradicted>, f64),
-}
-
-/// A tracking refused, and the radius it had learned (px).
+/// A tracking refused whose clear outlines contradict the radius it had learned: the
+/// refusal, that radius and the one they agree on (px).
 struct Contradicted {
     refused: Box<Refused>,
     learned_px: f64,
+    radius_px: f64,
 }
 
-/// One tracking at `params` (the band's, else the whole frame's; see [`Framing`]).
+/// One tracking at `params` (the band's, else the whole frame's; see [`Framing`]):
+/// done (the tracks, or `None` asked to stop) or contradicted, never `Again`.
 fn track_once(
     video: &std::path::Path,
     options: &Options,
@@ -188,29 +183,27 @@ fn track_once(
     progress: &dyn Progress,
     pictures: Pictures,
     framing: Framing,
-) -> Result<Once, Box<Refused>> {
+) -> Result<Attempt, Box<Refused>> {
     if framing == Framing::Band {
         match attempt(video, options, params, progress, pictures, true)? {
-            Attempt::Done(done) => return Ok(Once::Done(done)),
-            Attempt::Contradicted(refused, r) => return Ok(Once::Contradicted(refused, r)),
             Attempt::Again => {}
+            other => return Ok(other),
         }
     }
     match attempt(video, options, params, progress, pictures, false)? {
-        Attempt::Done(done) => Ok(Once::Done(done)),
-        Attempt::Contradicted(refused, r) => Ok(Once::Contradicted(refused, r)),
         // Never asked again of the whole frame.
-        Attempt::Again => Ok(Once::Done(Box::new(None))),
+        Attempt::Again => Ok(Attempt::Done(Box::new(None))),
+        other => Ok(other),
     }
 }
 
 /// What one tracking gave: the tracks (`None`: asked to stop), or, banded, a reason
 /// to track the whole frame instead, or a refusal of tracks whose clear outlines
-/// contradict the radius learned (the radius they agree on).
+/// contradict the radius learned.
 enum Attempt {
     Done(Box<Option<Tracked>>),
     Again,
-    Contradicted(Box<Contradicted>, f64),
+    Contradicted(Box<Contradicted>),
 }
 
 /// One tracking of `video`: of its band when `banded` and the first frames give
@@ -285,13 +278,11 @@ fn attempt(
             let refused = refused(&tracker, thumbs, pictures, err(what));
             return match (tracker.radius_contradicted(), tracker.radius()) {
                 (Some(r), Some(learned_px)) if params.radius_px.is_none() => {
-                    Ok(Attempt::Contradicted(
-                        Box::new(Contradicted {
-                            refused,
-                            learned_px,
-                        }),
-                        r,
-                    ))
+                    Ok(Attempt::Contradicted(Box::new(Contradicted {
+                        refused,
+                        learned_px,
+                        radius_px: r,
+                    })))
                 }
                 _ => Err(refused),
             };

@@ -520,75 +520,32 @@ fn dispatched(args: &[&str]) -> (u8, String, String) {
 /// name when given, never ignored.
 #[test]
 fn each_commands_help_lists_the_global_options_it_takes() {
-    let options = [
-        "--preset",
-        "--radius",
-        "--mass",
+    let scene = ["--preset", "--radius", "--mass"];
+    // `--data` and the options read with it (the tracker's among them).
+    let data = [
         "--data",
         "--time-unit",
         "--fps",
         "--roi",
         "--ball-at",
         "--scale",
-        "--ascii",
-        "--theme",
     ];
+    let drawing = ["--ascii", "--theme"];
+    let options = [&scene[..], &data, &drawing].concat();
+    let scene_and_data = [&scene[..], &data].concat();
+    // R (`--preset`, `--radius`) for a video's scale; a track's or a file's options.
+    let data_command = [&scene[..2], &data[1..]].concat();
+    // R, and the tracker's own options (`--fps`, `--roi`, `--ball-at`, `--scale`).
+    let track = [&scene[..2], &data[2..]].concat();
     let takes: &[(&str, &[&str])] = &[
         ("tui", &options),
         ("render", &options),
-        ("simulate", &["--preset", "--radius", "--mass"]),
-        ("sweep", &["--preset", "--radius", "--mass"]),
-        (
-            "compare",
-            &[
-                "--preset",
-                "--radius",
-                "--mass",
-                "--data",
-                "--time-unit",
-                "--fps",
-                "--roi",
-                "--ball-at",
-                "--scale",
-            ],
-        ),
-        (
-            "fit",
-            &[
-                "--preset",
-                "--radius",
-                "--mass",
-                "--data",
-                "--time-unit",
-                "--fps",
-                "--roi",
-                "--ball-at",
-                "--scale",
-            ],
-        ),
-        (
-            "track",
-            &[
-                "--preset",
-                "--radius",
-                "--fps",
-                "--roi",
-                "--ball-at",
-                "--scale",
-            ],
-        ),
-        (
-            "data",
-            &[
-                "--preset",
-                "--radius",
-                "--time-unit",
-                "--fps",
-                "--roi",
-                "--ball-at",
-                "--scale",
-            ],
-        ),
+        ("simulate", &scene),
+        ("sweep", &scene),
+        ("compare", &scene_and_data),
+        ("fit", &scene_and_data),
+        ("track", &track),
+        ("data", &data_command),
         ("presets", &[]),
         ("manpage", &[]),
         ("completions", &[]),
@@ -603,7 +560,7 @@ fn each_commands_help_lists_the_global_options_it_takes() {
                 t == o || t.starts_with(&format!("{o} "))
             })
         };
-        for o in options {
+        for &o in &options {
             assert_eq!(
                 listed(o),
                 taken.contains(&o),
