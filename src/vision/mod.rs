@@ -35,7 +35,7 @@
 
 /// The tracker's own version: raised whenever a change makes it find other numbers
 /// in the same video (cached tracks are keyed by it, not by the program's version).
-pub const VERSION: u32 = 33;
+pub const VERSION: u32 = 34;
 
 pub mod background;
 pub mod band;
@@ -53,6 +53,7 @@ pub mod prepared;
 pub mod rail;
 pub mod repeats;
 pub mod select;
+pub mod stack;
 pub mod thumbs;
 pub mod tracker;
 pub mod tracks;

@@ -302,6 +302,18 @@ pub struct Params {
     /// settled. Default 9: a highlight of the other sign in a few of the first
     /// frames is outvoted.
     pub mark_votes: usize,
+    /// Most bytes of the patches kept about the fits for the balls' stacked
+    /// pictures (`stack`), which measure the radius where the frames' radii
+    /// disagree. Default 96 MiB: a 1080p clip's 300 frames of two balls of 60 px;
+    /// a clip needing more keeps none, and its refusal stands.
+    pub stack_bytes: usize,
+    /// How far a stacked picture's outline lies inside its ball, a share of the
+    /// radius, and the ± of that: the outlines lay 3–12 % inside the drawn balls on
+    /// the looks table (a limb shaded toward the wall's level: the step's middle
+    /// lies inside the ball's edge), which no picture shows apart. The radius is
+    /// taken this much larger than the outline's, its standard error at least
+    /// this much of it. Default 0.05.
+    pub stack_edge: f64,
     /// Largest scatter of the fitted radii (robust, a share of their median) that
     /// still gives a scale. Default 0.05: a sharp ball's radius scatters by under
     /// 1 %, a blurred one's by a few; both balls have one radius.
@@ -573,6 +585,8 @@ impl Default for Params {
             repeat_turn_step: 2.0,
             moved_share: 0.15,
             mark_votes: 9,
+            stack_bytes: 96 << 20,
+            stack_edge: 0.05,
             max_radius_spread: 0.05,
             min_contradicting: 10,
             sparsest: 3,

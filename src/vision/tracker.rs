@@ -17,6 +17,7 @@ use super::mark::{self, Mark};
 use super::params::Params;
 use super::prepared::PreparedLook;
 use super::select;
+use super::stack;
 use std::sync::Arc;
 
 /// One ball in one frame, in pixels.
@@ -114,6 +115,14 @@ pub struct Tracker {
     /// Those circles of the frame being pushed (one found about several guesses is
     /// counted once).
     other_here: Vec<Circle>,
+    /// Each fit's patch of its frame (frame, slot, patch) for the balls' stacked
+    /// pictures ([`Tracker::restacked`]), while their bytes stay within
+    /// `Params::stack_bytes`; none once they would not.
+    patches: Vec<(usize, usize, stack::Patch)>,
+    patch_bytes: usize,
+    patches_over: bool,
+    /// The fits are the stacked pictures' ([`Tracker::restacked`]).
+    stacked: bool,
 }
 
 /// An outline and how it was found.
@@ -195,6 +204,12 @@ fn part_of(b: &Blob, m: &Blob, f: f64, share: f64) -> bool {
         && b.bottom <= m.bottom + f
         && b.width() < share * m.width()
 }
+
+/// Least standard error of a centre matched to its ball's stacked picture, px:
+/// the match's own from the pixels' noise is some 0.02–0.04 px, but its centres
+/// lie 0.1–0.5 px from the drawn ones on the looks table (the picture blurred by
+/// the matches it is made from).
+const MATCH_SIGMA: f64 = 0.15;
 
 /// Tracks frames held in memory: the background learned from all of them, then
 /// each one followed.
@@ -512,7 +527,129 @@ impl Tracker {
                 *o = fix;
             }
         }
+        self.keep_patches(frame, &out);
         self.frames.push(out);
+    }
+
+    /// The tracking again from each ball's stacked picture (`stack`), where its
+    /// frames' radii disagree: each fit's centre matched to its ball's picture, its
+    /// radius the picture's outline's, the edge's definitions measured on the
+    /// picture. `None` where the patches were not kept, either ball gives no
+    /// picture, a picture's outline is unclear (`min_coverage`, `max_rms`) or the
+    /// two pictures' radii disagree by more than `max_radius_spread` (both balls
+    /// have one radius). A fit its picture does not match is left out (poor).
+    pub fn restacked(&self) -> Option<(Tracker, [f64; 2])> {
+        let p = &self.params;
+        let r = median(&self.radii)?;
+        if self.patches_over {
+            return None;
+        }
+        let polarity = if self.polarity == 0.0 {
+            circle::EITHER
+        } else {
+            self.polarity
+        };
+        let mut t = self.clone();
+        t.stacked = true;
+        t.patches = Vec::new();
+        t.radii.clear();
+        t.edges.clear();
+        t.colour_edges.clear();
+        let mut radii = [f64::NAN; 2];
+        for (slot, radius) in radii.iter_mut().enumerate() {
+            let mine: Vec<(usize, &stack::Patch)> = self
+                .patches
+                .iter()
+                .filter(|(k, s, _)| {
+                    *s == slot
+                        && self
+                            .frames
+                            .get(*k)
+                            .and_then(|f| f.get(slot))
+                            .is_some_and(Result::is_ok)
+                })
+                .map(|(k, _, patch)| (*k, patch))
+                .collect();
+            let refs: Vec<&stack::Patch> = mine.iter().map(|(_, patch)| *patch).collect();
+            let cw = p.colour_weight as f32;
+            let s = stack::stack(&refs, r, polarity, p.rail_moves, cw);
+            let s = s?;
+            let o = s.outline;
+            if o.coverage() < p.min_coverage || o.rms > p.max_rms {
+                return None;
+            }
+            // The outline lies inside the ball's edge by 0–2 stack_edge of it:
+            // the radius is the middle of that, its ± the half (`the_radius`).
+            let ball_r = o.circle.r * (1.0 + p.stack_edge);
+            *radius = ball_r;
+            if let Some(e) = circle::edge_offsets(&s.picture.luma(), &o) {
+                t.edges.push(e);
+            }
+            for (i, (k, patch)) in mine.iter().enumerate() {
+                let Some(fix) = t.frames.get_mut(*k).and_then(|f| f.get_mut(slot)) else {
+                    continue;
+                };
+                let Some(((x, y), sigma)) = s.centre(patch, i) else {
+                    *fix = Err(LeftOut::Poor);
+                    continue;
+                };
+                if let Ok(f) = fix {
+                    // The fit's centre moved by what the match moved the cut's:
+                    // patches are cut where the frames were pushed (a band's rows).
+                    let (dx, dy) = (x - patch.centre.0, y - patch.centre.1);
+                    let (cx, cy) = (f.outline.circle.x + dx, f.outline.circle.y + dy);
+                    let sig = sigma.max(MATCH_SIGMA);
+                    f.outline = Outline {
+                        circle: Circle {
+                            x: cx,
+                            y: cy,
+                            r: ball_r,
+                        },
+                        sigma: [sig, sig, o.sigma[2]],
+                        covariance: [
+                            [sig * sig, 0.0, 0.0],
+                            [0.0, sig * sig, 0.0],
+                            [0.0, 0.0, o.sigma[2] * o.sigma[2]],
+                        ],
+                        lowest: o.lowest - o.circle.y + cy,
+                        ..o
+                    };
+                    f.sigma = sig;
+                    t.radii.push(ball_r);
+                }
+            }
+        }
+        let mean = 0.5 * (radii[0] + radii[1]);
+        ((radii[0] - radii[1]).abs() <= p.max_radius_spread * mean).then_some((t, radii))
+    }
+
+    /// Whether the fits are the stacked pictures' ([`Tracker::restacked`]).
+    pub fn stacked(&self) -> bool {
+        self.stacked
+    }
+
+    /// Keeps a patch of `frame` about each fit of `fixes` (the frame being pushed)
+    /// for the stacked pictures, while the budget allows; past it, none.
+    fn keep_patches(&mut self, frame: &Frame, fixes: &FrameFixes) {
+        if self.patches_over {
+            return;
+        }
+        let k = self.frames.len();
+        for (slot, fix) in fixes.iter().enumerate() {
+            let Ok(fix) = fix else { continue };
+            let c = fix.outline.circle;
+            // Room for a picture of 1.75 radii about a ball whose radius the fits
+            // overstate by a quarter, and the match's reach.
+            let half = (1.75 * 1.25 * c.r + (0.3 * c.r).max(3.0) + 3.0).ceil() as usize;
+            if let Some(p) = stack::Patch::cut(frame, (c.x, c.y), half) {
+                self.patch_bytes += p.bytes();
+                self.patches.push((k, slot, p));
+            }
+        }
+        if self.patch_bytes > self.params.stack_bytes {
+            self.patches = Vec::new();
+            self.patches_over = true;
+        }
     }
 
     /// The outline of the blob `b` (coarse pixels `f` px): about its guess, else

@@ -313,7 +313,12 @@ fn the_radius(
     let systematic = edge_systematic(tracker.edge_offsets(), colour, p.edge_systematic)
         .max(frame_sd)
         .max(between_balls(frames, slots))
-        .max(p.edge_lean / r_px);
+        .max(p.edge_lean / r_px)
+        .max(if tracker.stacked() {
+            p.stack_edge * r_px
+        } else {
+            0.0
+        });
     let r_se = r_stat.hypot(systematic);
     // Never a confident wrong scale: radii that disagree are no ball's (the mark, a
     // highlight or clutter taken for one in part of the frames).

@@ -264,8 +264,9 @@ fn attempt(
             })));
         }
     };
-    let times = numbers.iter().map(|n| (n - first) as f64 / fps).collect();
-    let tracks = match vision::tracks(&tracker, times, options.radius, options.px_per_m) {
+    let times: Vec<f64> = numbers.iter().map(|n| (n - first) as f64 / fps).collect();
+    let (tracked, stacked) = tracks_or_stacked(&mut tracker, times, options, band.is_none());
+    let tracks = match tracked {
         Ok(tracks) => tracks,
         Err(_) if band.is_some() => return Ok(Attempt::Again),
         Err(e) => {
@@ -295,6 +296,7 @@ fn attempt(
     }
     let mut notes = notes(&file, &info, fps, &source, &tracks, &options.radius_from);
     notes.extend(seed_note(options.ball_at, tracker.seeded(), &tracks));
+    notes.extend(stacked);
     let view = VideoView::new(thumbs, &tracks);
     Ok(Attempt::Done(Box::new(Some(Tracked {
         info,
@@ -305,6 +307,43 @@ fn attempt(
         view,
         band,
     }))))
+}
+
+/// The tracks of `tracker`'s frames at `times`; where the frames' radii disagree
+/// and `whole` (the whole frame's tracking: a band refused is tracked whole first),
+/// those of its balls' stacked pictures (`vision::Tracker::restacked`, which then
+/// replaces `tracker`), with the note saying so. The first refusal stands where
+/// the pictures give no tracks.
+fn tracks_or_stacked(
+    tracker: &mut Tracker,
+    times: Vec<f64>,
+    options: &Options,
+    whole: bool,
+) -> (Result<vision::Tracks, vision::TracksError>, Option<String>) {
+    let (radius, scale) = (options.radius, options.px_per_m);
+    let refusal = match vision::tracks(tracker, times.clone(), radius, scale) {
+        Err(e @ vision::TracksError::RadiiDisagree { .. }) if whole => e,
+        other => return (other, None),
+    };
+    let Some((again, radii)) = tracker.restacked() else {
+        return (Err(refusal), None);
+    };
+    match vision::tracks(&again, times, radius, scale) {
+        Ok(tracks) => {
+            *tracker = again;
+            let why = refusal.to_string();
+            let why = why.trim_start_matches("tracking unsure: ");
+            let note = format!(
+                "the radius from the balls' stacked pictures: {}; each ball's frames stacked at its centres (the wall behind it averages out), its radius from the outline there ({:.2} and {:.2} px, taken {:.0} % outside the outline: a shaded limb puts it inside), each frame's centre matched to its ball's picture",
+                why.split(", so").next().unwrap_or(why),
+                radii[0],
+                radii[1],
+                100.0 * tracker.params.stack_edge
+            );
+            (Ok(tracks), Some(note))
+        }
+        Err(_) => (Err(refusal), None),
+    }
 }
 
 /// The frames to track and the band they are of: cut by ffmpeg (`cut` false) or

@@ -32,6 +32,7 @@ mod rail_view;
 mod repeated_frames;
 pub(crate) mod seed;
 mod sharp_arc;
+mod stacked;
 mod sunk_balls;
 pub(crate) mod tracker_looks;
 pub(crate) mod tracking;
