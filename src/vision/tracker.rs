@@ -532,9 +532,9 @@ impl Tracker {
     }
 
     /// The tracking again from each ball's stacked picture (`stack`), where its
-    /// frames' radii disagree: each fit's centre matched to its ball's picture, its
-    /// radius the picture's outline's, the edge's definitions measured on the
-    /// picture. `None` where the patches were not kept, either ball gives no
+    /// frames' radii disagree (or their edge in colour lies off them): each fit's
+    /// centre matched to its ball's picture, its radius the picture's outline's,
+    /// the edge's definitions measured on the picture. `None` where the patches were not kept, either ball gives no
     /// picture, a picture's outline is unclear (`min_coverage`, `max_rms`) or the
     /// two pictures' radii disagree by more than `max_radius_spread` (both balls
     /// have one radius). A fit its picture does not match is left out (poor).

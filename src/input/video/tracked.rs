@@ -310,7 +310,7 @@ fn attempt(
 }
 
 /// The tracks of `tracker`'s frames at `times`; where the frames' radii disagree
-/// and `whole` (the whole frame's tracking: a band refused is tracked whole first),
+/// or their edge in colour lies off their outlines, and `whole` (the whole frame's tracking: a band refused is tracked whole first),
 /// those of its balls' stacked pictures (`vision::Tracker::restacked`, which then
 /// replaces `tracker`), with the note saying so. The first refusal stands where
 /// the pictures give no tracks.
@@ -322,7 +322,12 @@ fn tracks_or_stacked(
 ) -> (Result<vision::Tracks, vision::TracksError>, Option<String>) {
     let (radius, scale) = (options.radius, options.px_per_m);
     let refusal = match vision::tracks(tracker, times.clone(), radius, scale) {
-        Err(e @ vision::TracksError::RadiiDisagree { .. }) if whole => e,
+        // Radii that scatter, or an edge in colour off the outlines: the frames'
+        // outlines are not the ball's, its stacked picture's may be.
+        Err(
+            e
+            @ (vision::TracksError::RadiiDisagree { .. } | vision::TracksError::ColourEdge { .. }),
+        ) if whole => e,
         other => return (other, None),
     };
     let Some((again, radii)) = tracker.restacked() else {
