@@ -125,6 +125,6 @@ fn checked(path: &Path, limits: &Limits) -> Result<Opened, VideoError> {
     if folder::is_image(path) {
         return Err(err(VideoProblem::StillImage));
     }
-    let probe = probe::probe(path)?;
+    let probe = probe::cached(path, &meta)?;
     Ok(Opened::Video(probe.info(path, limits)?))
 }

@@ -20,6 +20,36 @@ pub struct Probe {
     pub json: Value,
 }
 
+/// Files probed lately, by path, length and time modified: a file tracked again
+/// (its band, then its whole frame; a retry; the app's second open) is probed
+/// once, not once per opening (each ffprobe is a process start, some 70 ms).
+type Probed = std::collections::HashMap<(std::path::PathBuf, u64, std::time::SystemTime), Probe>;
+
+/// Most files whose probes are kept ([`cached`]); past it the memory starts over.
+const PROBES_KEPT: usize = 64;
+
+/// As [`probe`], a file probed before (the same path, length and time modified)
+/// answered from memory. A file whose time modified is unknown is probed anew.
+pub fn cached(path: &Path, meta: &std::fs::Metadata) -> Result<Probe, VideoError> {
+    static PROBED: std::sync::OnceLock<std::sync::Mutex<Probed>> = std::sync::OnceLock::new();
+    let Ok(modified) = meta.modified() else {
+        return probe(path);
+    };
+    let key = (path.to_path_buf(), meta.len(), modified);
+    let memory = PROBED.get_or_init(Default::default);
+    if let Some(p) = memory.lock().ok().and_then(|m| m.get(&key).cloned()) {
+        return Ok(p);
+    }
+    let p = probe(path)?;
+    if let Ok(mut m) = memory.lock() {
+        if m.len() >= PROBES_KEPT {
+            m.clear();
+        }
+        m.insert(key, p.clone());
+    }
+    Ok(p)
+}
+
 /// Runs ffprobe on `path`.
 pub fn probe(path: &Path) -> Result<Probe, VideoError> {
     let err = |what: VideoProblem| VideoError::new(path, what);

@@ -617,3 +617,22 @@ fn a_video_too_large_is_refused_before_decoding() {
     );
     assert!(e.to_string().contains("is too much video to track"), "{e}");
 }
+
+/// A file's probe is remembered by its path, length and time modified: the same
+/// clip opened twice gives one answer, and a clip written over it at the same path
+/// (another length of frames) is probed anew, not answered from memory.
+#[test]
+fn a_video_rewritten_at_its_path_is_probed_anew() {
+    if !ffmpeg() {
+        return;
+    }
+    let d = dir("probed_anew");
+    let limits = groovelab::input::video::Limits::default();
+    let frames_of = |p: &Path| groovelab::input::video::open(p, &limits).unwrap().0.frames;
+    let clip = write_mp4(&d, "clip.mp4", 100.0, &[], 12);
+    assert_eq!(frames_of(&clip), 12);
+    assert_eq!(frames_of(&clip), 12);
+    let again = write_mp4(&d, "clip.mp4", 100.0, &[], 7);
+    assert_eq!(again, clip);
+    assert_eq!(frames_of(&clip), 7);
+}
