@@ -107,3 +107,27 @@ fn a_clip_whose_radii_scatter_is_measured_on_its_stacked_pictures() {
         t.notes
     );
 }
+
+/// Patches of a plain wall (no ball), of a one-pixel frame, cut about a corner or
+/// about no place at all: no picture, and no panic.
+#[test]
+fn patches_of_no_ball_give_no_picture() {
+    let rail = groovelab::vision::Params::default().rail_moves;
+    let plain = Frame::from_gray(Gray::filled(64, 48, 120));
+    let walls: Vec<Patch> = (0..12)
+        .filter_map(|k| Patch::cut(&plain, (20.0 + k as f64, 24.0), 20))
+        .collect();
+    let refs: Vec<&Patch> = walls.iter().collect();
+    assert!(stack(&refs, 10.0, EITHER, rail, 2.0).is_none());
+    let tiny = Frame::from_gray(Gray::filled(1, 1, 50));
+    let corner: Vec<Patch> = (0..12)
+        .filter_map(|_| Patch::cut(&tiny, (0.0, 0.0), 8))
+        .collect();
+    assert_eq!(corner.len(), 12);
+    let refs: Vec<&Patch> = corner.iter().collect();
+    assert!(stack(&refs, 5.0, EITHER, rail, 2.0).is_none());
+    assert!(Patch::cut(&plain, (f64::NAN, 3.0), 8).is_none());
+    assert!(Patch::cut(&plain, (-500.0, 3.0), 8).is_none());
+    assert!(stack(&refs, f64::NAN, EITHER, rail, 2.0).is_none());
+    assert!(stack(&refs[..3], 5.0, EITHER, rail, 2.0).is_none());
+}
