@@ -475,7 +475,7 @@ impl Stacked {
 
 /// The outline of a picture about `guess`: fitted to its difference from the
 /// wall about it (`Picture::difference`, the ball the brighter), or to its luma
-/// (of the ball's `polarity`) where that covers more of the circle.
+/// (of the ball's `polarity`) where the difference gives none.
 fn outline_of(
     picture: &Picture,
     guess: Circle,
@@ -487,9 +487,7 @@ fn outline_of(
             .and_then(|f| circle::fit(img, f.circle, 2.5, f.polarity, rail_moves, &[]))
     };
     let diff = picture.difference((guess.x - h, guess.y - h), guess.r, cw);
-    let by_diff = fit(&diff, 1.0);
-    let by_luma = fit(&picture.luma(), polarity);
-    by_diff.or(by_luma)
+    fit(&diff, 1.0).or_else(|| fit(&picture.luma(), polarity))
 }
 
 /// Rounds of stacking and matching: the first picture blurred by the fits' own
@@ -499,8 +497,9 @@ const ROUNDS: usize = 3;
 /// One ball's picture from its patches: stacked at their cut centres, each
 /// matched to it and stacked again, `ROUNDS` times; its outline fitted (about
 /// `radius`, the frames' median, of polarity `polarity`), then every patch matched
-/// to the last picture on its disc. `None` where the picture gives no outline
-/// or fewer than half the patches match.
+/// to the last picture on its disc. `None` where the picture gives no outline,
+/// its outline does not step from the wall (`Picture::steps_at`) or fewer than
+/// half the patches match.
 pub fn stack(
     patches: &[&Patch],
     radius: f64,

@@ -533,11 +533,12 @@ impl Tracker {
 
     /// The tracking again from each ball's stacked picture (`stack`), where its
     /// frames' radii disagree (or their edge in colour lies off them): each fit's
-    /// centre matched to its ball's picture, its radius the picture's outline's,
-    /// the edge's definitions measured on the picture. `None` where the patches were not kept, either ball gives no
-    /// picture, a picture's outline is unclear (`min_coverage`, `max_rms`) or the
-    /// two pictures' radii disagree by more than `max_radius_spread` (both balls
-    /// have one radius). A fit its picture does not match is left out (poor).
+    /// centre matched to its ball's picture, its radius the picture's outline's
+    /// (`stack_edge` outside it), the edge's definitions measured on the picture.
+    /// `None` where the patches were not kept, either ball gives no picture, a
+    /// picture's outline is unclear (`min_coverage`, `max_rms`) or the two
+    /// pictures' radii disagree by more than `max_radius_spread` (both balls have
+    /// one radius). A fit its picture does not match is left out (poor).
     pub fn restacked(&self) -> Option<(Tracker, [f64; 2])> {
         let p = &self.params;
         let r = median(&self.radii)?;
@@ -572,8 +573,7 @@ impl Tracker {
                 .collect();
             let refs: Vec<&stack::Patch> = mine.iter().map(|(_, patch)| *patch).collect();
             let cw = p.colour_weight as f32;
-            let s = stack::stack(&refs, r, polarity, p.rail_moves, cw);
-            let s = s?;
+            let s = stack::stack(&refs, r, polarity, p.rail_moves, cw)?;
             let o = s.outline;
             if o.coverage() < p.min_coverage || o.rms > p.max_rms {
                 return None;
