@@ -14,6 +14,7 @@
 use super::circle::{self, Circle, Outline};
 use super::frame::Frame;
 use super::gray::Gray;
+use super::select;
 
 /// A ball's neighbourhood in one frame: the luma rows and the colour planes' rows
 /// about the fit's centre at the cut, copied as decoded.
@@ -171,12 +172,7 @@ impl Picture {
             .map(|ring| {
                 let mut out = [0.0f32; 3];
                 for (o, r) in out.iter_mut().zip(ring.iter_mut()) {
-                    if r.is_empty() {
-                        return None;
-                    }
-                    let mid = r.len() / 2;
-                    r.select_nth_unstable_by(mid, f32::total_cmp);
-                    *o = *r.get(mid)?;
+                    *o = select::median(r)?;
                 }
                 Some(out)
             })
@@ -397,7 +393,8 @@ pub fn matched(
         let lx = residuals(patch, &fine, (o.0 - 0.5, o.1), cw)?;
         let ry = residuals(patch, &fine, (o.0, o.1 + 0.5), cw)?;
         let ly = residuals(patch, &fine, (o.0, o.1 - 0.5), cw)?;
-        scale = 1.4826 * median_abs(&r) + 0.5;
+        let mut magnitudes: Vec<f32> = r.iter().map(|v| v.abs()).collect();
+        scale = 1.4826 * select::median(&mut magnitudes).unwrap_or(0.0) + 0.5;
         let (mut a, mut b, mut c, mut gx, mut gy, mut wsum, mut rss) =
             (0.0f64, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
         let rows = r.iter().zip(rx.iter().zip(&lx)).zip(ry.iter().zip(&ly));
@@ -433,17 +430,6 @@ pub fn matched(
         sigma,
         residual: scale as f64,
     })
-}
-
-/// The median of the values' magnitudes.
-fn median_abs(r: &[f32]) -> f32 {
-    let mut a: Vec<f32> = r.iter().map(|v| v.abs()).collect();
-    let mid = a.len() / 2;
-    if a.is_empty() {
-        return 0.0;
-    }
-    a.select_nth_unstable_by(mid, f32::total_cmp);
-    a.get(mid).copied().unwrap_or(0.0)
 }
 
 /// A ball's picture and where its patches lie on it.

@@ -538,8 +538,10 @@ impl Tracker {
     /// `None` where the patches were not kept, either ball gives no picture, a
     /// picture's outline is unclear (`min_coverage`, `max_rms`) or the two
     /// pictures' radii disagree by more than `max_radius_spread` (both balls have
-    /// one radius). A fit its picture does not match is left out (poor).
-    pub fn restacked(&self) -> Option<(Tracker, [f64; 2])> {
+    /// one radius). A fit its picture does not match is left out (poor). The
+    /// patches are used up (taken, not copied with the tracker).
+    pub fn restacked(&mut self) -> Option<(Tracker, [f64; 2])> {
+        let patches = std::mem::take(&mut self.patches);
         let p = &self.params;
         let r = median(&self.radii)?;
         if self.patches_over {
@@ -552,14 +554,12 @@ impl Tracker {
         };
         let mut t = self.clone();
         t.stacked = true;
-        t.patches = Vec::new();
         t.radii.clear();
         t.edges.clear();
         t.colour_edges.clear();
         let mut radii = [f64::NAN; 2];
         for (slot, radius) in radii.iter_mut().enumerate() {
-            let mine: Vec<(usize, &stack::Patch)> = self
-                .patches
+            let mine: Vec<(usize, &stack::Patch)> = patches
                 .iter()
                 .filter(|(k, s, _)| {
                     *s == slot

@@ -54,6 +54,13 @@ pub(crate) struct Coords {
     pub(crate) scale: f64,
 }
 
+/// A camera turned by 2.5° and 905 px per metre, as the NTNU lab's V10.trk.
+const V10: Coords = Coords {
+    origin: (179.38, 641.01),
+    angle: 2.5,
+    scale: 904.778,
+};
+
 impl Coords {
     /// The image point of the world point (x, y), m: Tracker's `toImage`.
     fn image(&self, x: f64, y: f64) -> (f64, f64) {
@@ -248,12 +255,7 @@ fn fits_the_truth(file: &std::path::Path, extra: &[&str]) {
 #[test]
 fn a_tracker_project_gives_its_positions_in_metres_and_fits() {
     let track = filmed();
-    // A camera turned by 2.5° and 905 px per metre, as the NTNU lab's V10.trk.
-    let c = Coords {
-        origin: (179.38, 641.01),
-        angle: 2.5,
-        scale: 904.778,
-    };
+    let c = V10;
     let text = trk(&track, 52, &c);
     let raw = data::read(&text, "ball.trk", &Reading::default()).unwrap();
     // Positions written with 17 digits in pixels: back to 1e-9 m.
@@ -277,11 +279,7 @@ fn an_xml_project_without_a_final_line_end_is_not_said_cut_short() {
     // the NTNU lab, BallToss.trk of Tracker's examples): no row was dropped, and
     // `data` said "line 5882, the last, is cut short (... fewer cells ...)".
     let track = filmed();
-    let c = Coords {
-        origin: (179.38, 641.01),
-        angle: 2.5,
-        scale: 904.778,
-    };
+    let c = V10;
     let dir = scratch("xml-no-line-end");
     for (name, text) in [
         ("ball.trk", trk(&track, 52, &c)),
@@ -311,11 +309,7 @@ fn a_projects_frame_rate_is_said_alike_on_both_lines() {
         },
     )
     .unwrap();
-    let c = Coords {
-        origin: (179.38, 641.01),
-        angle: 2.5,
-        scale: 904.778,
-    };
+    let c = V10;
     let dir = scratch("trk-66ms");
     let file = dir.join("ball.trk");
     std::fs::write(&file, trk(&track, 0, &c)).unwrap();

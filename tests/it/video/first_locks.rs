@@ -11,7 +11,6 @@
 use super::decoded_look;
 use crate::common::paper_scene;
 use crate::film::looks::Size;
-use groovelab::input::video::tracked::{self, Framing, Pictures};
 use groovelab::vision::tracker::{confirmed_radius, contradicting_radius, locks_disagree};
 use groovelab::vision::{self, Params};
 
@@ -142,34 +141,7 @@ fn both_balls_confirm_the_radius() {
 /// 5 %) of the truth, and says it was tracked twice. Without the retry it was refused.
 #[test]
 fn a_radius_every_clear_outline_contradicts_is_tracked_again_at_theirs() {
-    let Some((clip, path)) = super::h264_look("first_locks", 68, Size::Small) else {
-        return;
-    };
-    let quiet = groovelab::study::Quiet;
-    let done = tracked::track_framed(
-        &path,
-        &super::look_options(&clip),
-        &quiet,
-        Pictures::Skipped,
-        Framing::Band,
-    );
-    let Ok(Some(t)) = done else {
-        panic!("refused: {:?}", done.err().map(|r| r.error.to_string()));
-    };
-    let c = &t.tracks.calibration;
-    let truth = clip.film.px_per_m();
-    let off = c.px_per_m - truth;
-    assert!(
-        off.abs() <= 2.0 * c.px_per_m_sigma && off.abs() < 0.05 * truth,
-        "scale {:.1} ± {:.1} px/m for {truth:.1}",
-        c.px_per_m,
-        c.px_per_m_sigma
-    );
-    assert!(
-        t.notes.iter().any(|n| n.starts_with("tracked twice")),
-        "{:?}",
-        t.notes
-    );
+    super::assert_tracked_to_its_scale("first_locks", 68, Size::Small, 0.05, "tracked twice");
 }
 
 /// The radius the clear outlines left out agree on: many (more than the fits kept

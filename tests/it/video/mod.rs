@@ -56,6 +56,42 @@ pub(crate) fn h264_look(
     Some((clip, path))
 }
 
+/// Checks that the look `seed` of `size`, refused before, is tracked as the command
+/// line tracks it (its band first) to a scale within 2 of its ± and `share` of the
+/// truth, with a note starting `note` saying how (nothing without ffmpeg).
+pub(crate) fn assert_tracked_to_its_scale(
+    area: &str,
+    seed: u64,
+    size: crate::film::looks::Size,
+    share: f64,
+    note: &str,
+) {
+    use groovelab::input::video::tracked::{self, Framing, Pictures};
+    let Some((clip, path)) = h264_look(area, seed, size) else {
+        return;
+    };
+    let done = tracked::track_framed(
+        &path,
+        &look_options(&clip),
+        &groovelab::study::Quiet,
+        Pictures::Skipped,
+        Framing::Band,
+    );
+    let Ok(Some(t)) = done else {
+        panic!("refused: {:?}", done.err().map(|r| r.error.to_string()));
+    };
+    let c = &t.tracks.calibration;
+    let truth = clip.film.px_per_m();
+    let off = c.px_per_m - truth;
+    assert!(
+        off.abs() <= 2.0 * c.px_per_m_sigma && off.abs() < share * truth,
+        "scale {:.1} ± {:.1} px/m for {truth:.1}",
+        c.px_per_m,
+        c.px_per_m_sigma
+    );
+    assert!(t.notes.iter().any(|n| n.starts_with(note)), "{:?}", t.notes);
+}
+
 /// The options a user tracks `clip` with: its R (`--radius`) and frame rate, nothing
 /// else given.
 pub(crate) fn look_options(

@@ -4,7 +4,6 @@
 //! that picture.
 
 use crate::film::looks::Size;
-use groovelab::input::video::tracked::{self, Framing, Pictures};
 use groovelab::vision::circle::EITHER;
 use groovelab::vision::stack::{Patch, stack};
 use groovelab::vision::{Frame, Gray};
@@ -76,35 +75,12 @@ fn a_ball_on_a_wall_of_its_brightness_is_measured_on_its_stacked_picture() {
 /// truth, and says how.
 #[test]
 fn a_clip_whose_radii_scatter_is_measured_on_its_stacked_pictures() {
-    let Some((clip, path)) = super::h264_look("stacked", 73, Size::Small) else {
-        return;
-    };
-    let quiet = groovelab::study::Quiet;
-    let done = tracked::track_framed(
-        &path,
-        &super::look_options(&clip),
-        &quiet,
-        Pictures::Skipped,
-        Framing::Band,
-    );
-    let Ok(Some(t)) = done else {
-        panic!("refused: {:?}", done.err().map(|r| r.error.to_string()));
-    };
-    let c = &t.tracks.calibration;
-    let truth = clip.film.px_per_m();
-    let off = c.px_per_m - truth;
-    assert!(
-        off.abs() <= 2.0 * c.px_per_m_sigma && off.abs() < 0.06 * truth,
-        "scale {:.1} ± {:.1} px/m for {truth:.1}",
-        c.px_per_m,
-        c.px_per_m_sigma
-    );
-    assert!(
-        t.notes
-            .iter()
-            .any(|n| n.starts_with("the radius from the balls' stacked pictures")),
-        "{:?}",
-        t.notes
+    super::assert_tracked_to_its_scale(
+        "stacked",
+        73,
+        Size::Small,
+        0.06,
+        "the radius from the balls' stacked pictures",
     );
 }
 
