@@ -564,6 +564,8 @@ fn looks_table() {
             .collect(),
         Err(_) => (first..first + n).collect(),
     };
+    // The summary counts the looks run (`LOOKS_SEEDS` names its own).
+    let n = seeds.len();
     for seed in seeds {
         let clip = looks::random(&scene, seed, size);
         let dir = scratch_dir("video_looks", "run");
