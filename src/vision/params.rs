@@ -304,8 +304,10 @@ pub struct Params {
     pub mark_votes: usize,
     /// Most bytes of the patches kept about the fits for the balls' stacked
     /// pictures (`stack`), which measure the radius where the frames' radii
-    /// disagree. Default 96 MiB: a 1080p clip's 300 frames of two balls of 60 px;
-    /// a clip needing more keeps none, and its refusal stands.
+    /// disagree and check it where they agree. Default 96 MiB: a 1080p clip's 300
+    /// frames of two balls of 60 px; a clip needing more keeps every second
+    /// frame's (and so on), enough for the check, and is not restacked (its
+    /// refusal stands).
     pub stack_bytes: usize,
     /// How far a stacked picture's outline lies inside its ball, a share of the
     /// radius, and the ± of that: the outlines lay 3–12 % inside the drawn balls on
@@ -314,6 +316,16 @@ pub struct Params {
     /// taken this much larger than the outline's, its standard error at least
     /// this much of it. Default 0.05.
     pub stack_edge: f64,
+    /// Most the balls' fitted radius may exceed their stacked pictures'
+    /// (`Tracker::picture_radii`), as a ratio. Default 1.18: the pictures'
+    /// outlines lay up to 15 % inside the drawn balls on the looks table (a limb
+    /// shaded toward the wall's level), the fitted radii at most 6 % over them
+    /// where the scale came out right; small look 5's frames took in the dark
+    /// squares of its checkered wall in every frame, 1.25 over (a scale 22 % large
+    /// at ± 3 %). A radius under a picture's is not judged: a picture stacked at
+    /// the fits' centres can keep a blur of the wall's pattern about the ball
+    /// (small look 1's white ball on a light checker: 17.4 px for 14.3).
+    pub picture_ratio: f64,
     /// Largest scatter of the fitted radii (robust, a share of their median) that
     /// still gives a scale. Default 0.05: a sharp ball's radius scatters by under
     /// 1 %, a blurred one's by a few; both balls have one radius.
@@ -587,6 +599,7 @@ impl Default for Params {
             mark_votes: 9,
             stack_bytes: 96 << 20,
             stack_edge: 0.05,
+            picture_ratio: 1.18,
             max_radius_spread: 0.05,
             min_contradicting: 10,
             sparsest: 3,

@@ -116,14 +116,34 @@ pub struct Tracker {
     /// counted once).
     other_here: Vec<Circle>,
     /// Each fit's patch of its frame (frame, slot, patch) for the balls' stacked
-    /// pictures ([`Tracker::restacked`]), while their bytes stay within
-    /// `Params::stack_bytes`; none once they would not.
+    /// pictures ([`Tracker::restacked`], [`Tracker::picture_radii`]), while their
+    /// bytes stay within `Params::stack_bytes`; past that, every `2^thinned`-th
+    /// frame's.
     patches: Vec<(usize, usize, stack::Patch)>,
     patch_bytes: usize,
+    /// The patches were thinned (not every frame's kept): no restacking.
     patches_over: bool,
+    thinned: u32,
     /// The fits are the stacked pictures' ([`Tracker::restacked`]).
     stacked: bool,
+    /// Each ball's radius as its stacked picture shows it, found once
+    /// ([`Tracker::picture_radii`]).
+    pictures: std::sync::OnceLock<Vec<f64>>,
 }
+
+/// Most patches of a ball stacked for its picture's radius
+/// ([`Tracker::picture_radii`]), spread over the clip: a bounded cost on a long
+/// clip. Of 16–32, small look 5's picture of a ball on a checker came out up to
+/// 7 % larger (squares of the wall left in its outline), of 40–64 the same.
+const PICTURE_PATCHES: usize = 48;
+
+/// A ball's radius in the pixels of [`Tracker::picture_radii`]'s pictures, at
+/// least: their pixels lie ⌊r / 12⌋ px apart (the frames' own below 24 px), so a
+/// larger ball's picture costs what a 12–24 px ball's does, its radius to a few
+/// per cent where it is checked to 18 % (the bench's 1080p clip, balls of 38 px:
+/// 1.3 s for the two pictures at its own pixels, matched three rounds; under
+/// 0.1 s so).
+const PICTURE_RADIUS: f64 = 12.0;
 
 /// An outline and how it was found.
 struct OutlineFound {
@@ -535,8 +555,9 @@ impl Tracker {
     /// frames' radii disagree (or their edge in colour lies off them): each fit's
     /// centre matched to its ball's picture, its radius the picture's outline's
     /// (`stack_edge` outside it), the edge's definitions measured on the picture.
-    /// `None` where the patches were not kept, either ball gives no picture, a
-    /// picture's outline is unclear (`min_coverage`, `max_rms`) or the two
+    /// `None` where not every frame's patches were kept (past `stack_bytes`),
+    /// either ball gives no picture, a picture's outline is unclear
+    /// (`min_coverage`, `max_rms`) or the two
     /// pictures' radii disagree by more than `max_radius_spread` (both balls have
     /// one radius). A fit its picture does not match is left out (poor). The
     /// patches are used up (taken, not copied with the tracker).
@@ -623,18 +644,76 @@ impl Tracker {
         ((radii[0] - radii[1]).abs() <= p.max_radius_spread * mean).then_some((t, radii))
     }
 
+    /// Each ball's radius as its stacked picture shows it, px: the outline of
+    /// `stack::radius_at_fits` on up to `PICTURE_PATCHES` of its patches spread
+    /// over the clip, where that outline is clear (`min_coverage`, `max_rms`). The
+    /// wall behind a rolling ball averages out there, so an outline that takes in
+    /// the wall's pattern in every frame (a dark ball's limb run into the dark
+    /// squares of a checkered wall) does not in the picture. Found once; none
+    /// where the fits are the pictures' already.
+    pub fn picture_radii(&self) -> &[f64] {
+        self.pictures.get_or_init(|| self.pictured_radii())
+    }
+
+    fn pictured_radii(&self) -> Vec<f64> {
+        let p = &self.params;
+        let Some(r) = median(&self.radii) else {
+            return Vec::new();
+        };
+        if self.stacked {
+            return Vec::new();
+        }
+        let polarity = if self.polarity == 0.0 {
+            circle::EITHER
+        } else {
+            self.polarity
+        };
+        let fitted = |k: usize, slot: usize| {
+            self.frames
+                .get(k)
+                .and_then(|f| f.get(slot))
+                .is_some_and(Result::is_ok)
+        };
+        let picture = |slot: usize| {
+            let mine: Vec<&stack::Patch> = self
+                .patches
+                .iter()
+                .filter(|(k, s, _)| *s == slot && fitted(*k, slot))
+                .map(|(_, _, patch)| patch)
+                .collect();
+            let every = mine.len().div_ceil(PICTURE_PATCHES).max(1);
+            let some: Vec<&stack::Patch> = mine.into_iter().step_by(every).collect();
+            let step = (r / PICTURE_RADIUS).floor().max(1.0);
+            let look = (polarity, p.rail_moves, p.colour_weight as f32);
+            stack::radius_at_fits(&some, (r, step), look, (p.min_coverage, p.max_rms))
+        };
+        // The two balls' pictures at once: the frames are all tracked by now and
+        // the cores free.
+        std::thread::scope(|scope| {
+            let balls = [0, 1].map(|slot| scope.spawn(move || picture(slot)));
+            balls
+                .into_iter()
+                .filter_map(|b| b.join().ok().flatten())
+                .collect()
+        })
+    }
+
     /// Whether the fits are the stacked pictures' ([`Tracker::restacked`]).
     pub fn stacked(&self) -> bool {
         self.stacked
     }
 
     /// Keeps a patch of `frame` about each fit of `fixes` (the frame being pushed)
-    /// for the stacked pictures, while the budget allows; past it, none.
+    /// for the stacked pictures, while the budget allows; past it, every second
+    /// frame's of those kept, and of the frames to come (again each time it is
+    /// passed): the pictures' radius needs a few dozen a ball, spread over the
+    /// clip; the restacking needs every frame's and is not done.
     fn keep_patches(&mut self, frame: &Frame, fixes: &FrameFixes) {
-        if self.patches_over {
+        let k = self.frames.len();
+        let every = 1usize << self.thinned;
+        if !k.is_multiple_of(every) {
             return;
         }
-        let k = self.frames.len();
         for (slot, fix) in fixes.iter().enumerate() {
             let Ok(fix) = fix else { continue };
             let c = fix.outline.circle;
@@ -646,8 +725,11 @@ impl Tracker {
                 self.patches.push((k, slot, p));
             }
         }
-        if self.patch_bytes > self.params.stack_bytes {
-            self.patches = Vec::new();
+        if self.patch_bytes > self.params.stack_bytes && self.thinned < 32 {
+            self.thinned += 1;
+            let every = 1usize << self.thinned;
+            self.patches.retain(|(k, _, _)| k.is_multiple_of(every));
+            self.patch_bytes = self.patches.iter().map(|(_, _, p)| p.bytes()).sum();
             self.patches_over = true;
         }
     }

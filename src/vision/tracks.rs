@@ -46,6 +46,12 @@ pub enum TracksError {
         100.0 * offset_px.abs() / radius_px
     )]
     ColourEdge { offset_px: f64, radius_px: f64 },
+    /// The fitted radius disagrees with the balls' stacked pictures'.
+    #[error(
+        "tracking unsure: the balls' fitted radius {radius_px:.1} px is {:.0} % over their outline in the balls' stacked pictures ({picture_px:.1} px, the wall behind them averaged out): the frames' outlines take in the wall, so no scale is given",
+        100.0 * (radius_px / picture_px - 1.0)
+    )]
+    PictureDisagrees { radius_px: f64, picture_px: f64 },
     /// A "ball" whose centre swings across the groove's line.
     #[error(
         "tracking unsure: the {name} ball's centre swings {across_px:.1} px (RMS) across the groove's line, {:.0} % of its radius (a ball rolls along it), so no tracks are given",
@@ -76,7 +82,9 @@ impl TracksError {
                 ball_at: true,
                 scale: false,
             },
-            TracksError::RadiiDisagree { .. } | TracksError::ColourEdge { .. } => Handles {
+            TracksError::RadiiDisagree { .. }
+            | TracksError::ColourEdge { .. }
+            | TracksError::PictureDisagrees { .. } => Handles {
                 roi: false,
                 ball_at: false,
                 scale: true,
@@ -336,6 +344,24 @@ fn the_radius(
         return Err(TracksError::ColourEdge {
             offset_px: c,
             radius_px: r_px,
+        });
+    }
+    // Never a confident wrong scale: the balls' stacked pictures show their
+    // outline with the wall behind them averaged out, inside the ball's edge by
+    // at most what a shaded limb moves it; a radius larger than that is the
+    // frames' outlines taking in the wall's pattern alike in every frame. (A
+    // picture's outline can lie outside the ball, in the blur of a wall's pattern
+    // left in it: a radius under a picture's says nothing.)
+    if let Some(&q) = refuse
+        .then(|| {
+            let pictures = tracker.picture_radii();
+            pictures.iter().find(|&&q| r_px > p.picture_ratio * q)
+        })
+        .flatten()
+    {
+        return Err(TracksError::PictureDisagrees {
+            radius_px: r_px,
+            picture_px: q,
         });
     }
     Ok((r_px, r_se, spread))

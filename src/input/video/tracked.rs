@@ -325,8 +325,9 @@ fn tracks_or_stacked(
         // Radii that scatter, or an edge in colour off the outlines: the frames'
         // outlines are not the ball's, its stacked picture's may be.
         Err(
-            e
-            @ (vision::TracksError::RadiiDisagree { .. } | vision::TracksError::ColourEdge { .. }),
+            e @ (vision::TracksError::RadiiDisagree { .. }
+            | vision::TracksError::ColourEdge { .. }
+            | vision::TracksError::PictureDisagrees { .. }),
         ) if whole => e,
         other => return (other, None),
     };
