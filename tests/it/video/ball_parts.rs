@@ -4,7 +4,10 @@
 //! that ball (`Params::part_width`), not two more balls: the looks table's seed 43 (a
 //! green ball on a magenta grainy wall of its brightness, shadows) was refused as
 //! "more than two balls" in 82 of its 95 frames; 44 now (the rest: a ghost where a
-//! ball came to rest, which the background learned, and single parts).
+//! ball came to rest, which the background learned, and single parts). The clip is
+//! tracked once, with the rule: that without it (`part_width` 0) it was crowded in
+//! most frames was measured when this was written, not on every run (the suite's
+//! minute).
 
 use super::decoded_look;
 use crate::film::looks::Size;
@@ -23,19 +26,5 @@ fn the_lit_and_shaded_parts_of_a_ball_are_not_more_balls() {
         with.crowded * 2 <= n,
         "more than two balls in {} of {n} frames",
         with.crowded
-    );
-    // Without the rule (every luma blob a ball), crowded in most frames.
-    let without = vision::track(
-        &frames,
-        Params {
-            part_width: 0.0,
-            ..Params::default()
-        },
-    )
-    .counts;
-    assert!(
-        without.crowded * 2 > n,
-        "without the rule: more than two balls in {} of {n} frames",
-        without.crowded
     );
 }

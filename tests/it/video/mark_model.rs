@@ -146,40 +146,21 @@ fn the_centroid_alone_leans_toward_the_lit_side() {
 
 /// Looks 20 and 34 of the looks table (a wooden ball with a dark mark at 60 frames/s
 /// in 480p, a light mark on wooden balls at 30 frames/s in 720p), decoded from their
-/// H.264 copies and tracked: the marks kept are within 0.15 px RMS of the drawn ones
-/// (the centroid alone: 0.2–0.35 px).
+/// H.264 copies and tracked: the marks kept are within 0.15 px RMS of the drawn ones.
+/// (The centroid alone gave 0.2–0.35 px on them when this was written; that it leans,
+/// the test above shows on drawn balls, not tracking each look twice.)
 #[test]
 fn the_looks_marks_are_placed_by_their_discs() {
     let mut with = Vec::new();
-    let mut without = Vec::new();
     for seed in [20, 34] {
         let Some((clip, frames)) = decoded_look("mark_model", seed, Size::Full) else {
             return;
         };
-        for (soft, out) in [
-            (Params::default().mark_soft, &mut with),
-            (0.0, &mut without),
-        ] {
-            let params = Params {
-                mark_soft: soft,
-                ..Params::default()
-            };
-            let tracker = vision::track(&frames, params);
-            out.extend(marks_against_truth(&clip, &tracker, &params.marks));
-        }
+        let params = Params::default();
+        let tracker = vision::track(&frames, params);
+        with.extend(marks_against_truth(&clip, &tracker, &params.marks));
     }
-    let rms = |v: &[(f64, usize, f64)]| {
-        (v.iter().map(|p| p.0 * p.0).sum::<f64>() / v.len().max(1) as f64).sqrt()
-    };
+    let rms = (with.iter().map(|p| p.0 * p.0).sum::<f64>() / with.len().max(1) as f64).sqrt();
     assert!(with.len() >= 30, "{} marks kept", with.len());
-    assert!(
-        rms(&with) < 0.15,
-        "with the model: {:.3} px RMS",
-        rms(&with)
-    );
-    assert!(
-        rms(&without) > 0.2,
-        "the centroid alone: {:.3} px RMS",
-        rms(&without)
-    );
+    assert!(rms < 0.15, "with the model: {rms:.3} px RMS");
 }
