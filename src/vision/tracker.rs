@@ -557,9 +557,8 @@ impl Tracker {
     /// (`stack_edge` outside it), the edge's definitions measured on the picture.
     /// `None` where not every frame's patches were kept (past `stack_bytes`),
     /// either ball gives no picture, a picture's outline is unclear
-    /// (`min_coverage`, `max_rms`) or the two
-    /// pictures' radii disagree by more than `max_radius_spread` (both balls have
-    /// one radius). A fit its picture does not match is left out (poor). The
+    /// (`min_coverage`, `max_rms`) or the two pictures' radii disagree by more
+    /// than `max_radius_spread` (both balls have one radius). A fit its picture does not match is left out (poor). The
     /// patches are used up (taken, not copied with the tracker).
     pub fn restacked(&mut self) -> Option<(Tracker, [f64; 2])> {
         let patches = std::mem::take(&mut self.patches);
@@ -575,6 +574,8 @@ impl Tracker {
         };
         let mut t = self.clone();
         t.stacked = true;
+        // Its radius is the pictures': not checked against them.
+        t.pictures = std::sync::OnceLock::new();
         t.radii.clear();
         t.edges.clear();
         t.colour_edges.clear();
