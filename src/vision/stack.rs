@@ -123,11 +123,9 @@ fn bilinear(p: &[u8], w: usize, h: usize, x: f64, y: f64) -> Option<f32> {
 
 /// A ball's stacked picture: Y, U, V per pixel of a square `2 half + 1` wide,
 /// its middle at the registered centres; `None` where too few patches cover it.
-/// Its pixels lie `step` px of the frames apart (1 where it is matched to them).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Picture {
     pub half: usize,
-    pub step: f64,
     px: Vec<Option<[f32; 3]>>,
 }
 
@@ -283,7 +281,7 @@ pub fn stacked(patches: &[&Patch], offsets: &[(f64, f64)], half: usize, step: f6
             px.push(trimmed(&mut vals));
         }
     }
-    Picture { half, step, px }
+    Picture { half, px }
 }
 
 /// The trimmed mean of each plane's values, `None` with fewer than 5.

@@ -118,11 +118,9 @@ pub struct Tracker {
     /// Each fit's patch of its frame (frame, slot, patch) for the balls' stacked
     /// pictures ([`Tracker::restacked`], [`Tracker::picture_radii`]), while their
     /// bytes stay within `Params::stack_bytes`; past that, every `2^thinned`-th
-    /// frame's.
+    /// frame's (thinned at all: no restacking).
     patches: Vec<(usize, usize, stack::Patch)>,
     patch_bytes: usize,
-    /// The patches were thinned (not every frame's kept): no restacking.
-    patches_over: bool,
     thinned: u32,
     /// The fits are the stacked pictures' ([`Tracker::restacked`]).
     stacked: bool,
@@ -558,20 +556,17 @@ impl Tracker {
     /// `None` where not every frame's patches were kept (past `stack_bytes`),
     /// either ball gives no picture, a picture's outline is unclear
     /// (`min_coverage`, `max_rms`) or the two pictures' radii disagree by more
-    /// than `max_radius_spread` (both balls have one radius). A fit its picture does not match is left out (poor). The
-    /// patches are used up (taken, not copied with the tracker).
+    /// than `max_radius_spread` (both balls have one radius). A fit its picture
+    /// does not match is left out (poor). The patches are used up (taken, not
+    /// copied with the tracker).
     pub fn restacked(&mut self) -> Option<(Tracker, [f64; 2])> {
         let patches = std::mem::take(&mut self.patches);
         let p = &self.params;
         let r = median(&self.radii)?;
-        if self.patches_over {
+        if self.thinned > 0 {
             return None;
         }
-        let polarity = if self.polarity == 0.0 {
-            circle::EITHER
-        } else {
-            self.polarity
-        };
+        let polarity = self.outline_polarity();
         let mut t = self.clone();
         t.stacked = true;
         // Its radius is the pictures': not checked against them.
@@ -581,18 +576,7 @@ impl Tracker {
         t.colour_edges.clear();
         let mut radii = [f64::NAN; 2];
         for (slot, radius) in radii.iter_mut().enumerate() {
-            let mine: Vec<(usize, &stack::Patch)> = patches
-                .iter()
-                .filter(|(k, s, _)| {
-                    *s == slot
-                        && self
-                            .frames
-                            .get(*k)
-                            .and_then(|f| f.get(slot))
-                            .is_some_and(Result::is_ok)
-                })
-                .map(|(k, _, patch)| (*k, patch))
-                .collect();
+            let mine = self.fitted_patches(&patches, slot);
             let refs: Vec<&stack::Patch> = mine.iter().map(|(_, patch)| *patch).collect();
             let cw = p.colour_weight as f32;
             let s = stack::stack(&refs, r, polarity, p.rail_moves, cw)?;
@@ -664,26 +648,11 @@ impl Tracker {
         if self.stacked {
             return Vec::new();
         }
-        let polarity = if self.polarity == 0.0 {
-            circle::EITHER
-        } else {
-            self.polarity
-        };
-        let fitted = |k: usize, slot: usize| {
-            self.frames
-                .get(k)
-                .and_then(|f| f.get(slot))
-                .is_some_and(Result::is_ok)
-        };
+        let polarity = self.outline_polarity();
         let picture = |slot: usize| {
-            let mine: Vec<&stack::Patch> = self
-                .patches
-                .iter()
-                .filter(|(k, s, _)| *s == slot && fitted(*k, slot))
-                .map(|(_, _, patch)| patch)
-                .collect();
+            let mine = self.fitted_patches(&self.patches, slot);
             let every = mine.len().div_ceil(PICTURE_PATCHES).max(1);
-            let some: Vec<&stack::Patch> = mine.into_iter().step_by(every).collect();
+            let some: Vec<&stack::Patch> = mine.iter().step_by(every).map(|(_, p)| *p).collect();
             let step = (r / PICTURE_RADIUS).floor().max(1.0);
             let look = (polarity, p.rail_moves, p.colour_weight as f32);
             stack::radius_at_fits(&some, (r, step), look, (p.min_coverage, p.max_rms))
@@ -697,6 +666,34 @@ impl Tracker {
                 .filter_map(|b| b.join().ok().flatten())
                 .collect()
         })
+    }
+
+    /// Of `patches`, those of `slot`'s fits that stand (frame, patch).
+    fn fitted_patches<'a>(
+        &self,
+        patches: &'a [(usize, usize, stack::Patch)],
+        slot: usize,
+    ) -> Vec<(usize, &'a stack::Patch)> {
+        let fitted = |k: usize| {
+            self.frames
+                .get(k)
+                .and_then(|f| f.get(slot))
+                .is_some_and(Result::is_ok)
+        };
+        patches
+            .iter()
+            .filter(|(k, s, _)| *s == slot && fitted(*k))
+            .map(|(k, _, patch)| (*k, patch))
+            .collect()
+    }
+
+    /// The balls' outline polarity once settled, else either.
+    fn outline_polarity(&self) -> f64 {
+        if self.polarity == 0.0 {
+            circle::EITHER
+        } else {
+            self.polarity
+        }
     }
 
     /// Whether the fits are the stacked pictures' ([`Tracker::restacked`]).
@@ -731,7 +728,6 @@ impl Tracker {
             let every = 1usize << self.thinned;
             self.patches.retain(|(k, _, _)| k.is_multiple_of(every));
             self.patch_bytes = self.patches.iter().map(|(_, _, p)| p.bytes()).sum();
-            self.patches_over = true;
         }
     }
 

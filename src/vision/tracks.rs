@@ -352,12 +352,11 @@ fn the_radius(
     // frames' outlines taking in the wall's pattern alike in every frame. (A
     // picture's outline can lie outside the ball, in the blur of a wall's pattern
     // left in it: a radius under a picture's says nothing.)
-    if let Some(&q) = refuse
-        .then(|| {
-            let pictures = tracker.picture_radii();
-            pictures.iter().find(|&&q| r_px > p.picture_ratio * q)
-        })
-        .flatten()
+    if refuse
+        && let Some(&q) = tracker
+            .picture_radii()
+            .iter()
+            .find(|&&q| r_px > p.picture_ratio * q)
     {
         return Err(TracksError::PictureDisagrees {
             radius_px: r_px,

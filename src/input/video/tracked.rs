@@ -309,9 +309,10 @@ fn attempt(
     }))))
 }
 
-/// The tracks of `tracker`'s frames at `times`; where the frames' radii disagree
-/// or their edge in colour lies off their outlines, and `whole` (the whole frame's tracking: a band refused is tracked whole first),
-/// those of its balls' stacked pictures (`vision::Tracker::restacked`, which then
+/// The tracks of `tracker`'s frames at `times`; where the frames' radii disagree,
+/// their edge in colour lies off their outlines or their radius is over the
+/// balls' stacked pictures', and `whole` (the whole frame's tracking: a band
+/// refused is tracked whole first), those of its balls' stacked pictures (`vision::Tracker::restacked`, which then
 /// replaces `tracker`), with the note saying so. The first refusal stands where
 /// the pictures give no tracks.
 fn tracks_or_stacked(

@@ -105,8 +105,8 @@ fn a_coarse_picture_of_a_large_ball_gives_its_radius() {
         })
         .collect();
     let refs: Vec<&Patch> = patches.iter().collect();
-    let rail = groovelab::vision::Params::default().rail_moves;
-    let clear = (0.35, 1.0);
+    let p = groovelab::vision::Params::default();
+    let (rail, clear) = (p.rail_moves, (p.min_coverage, p.max_rms));
     let coarse = radius_at_fits(&refs, (1.06 * r, 3.0), (EITHER, rail, 2.0), clear);
     let coarse = coarse.expect("a clear outline");
     assert!((coarse - r).abs() < 0.03 * r, "radius {coarse:.2} for {r}");
