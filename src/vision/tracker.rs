@@ -746,18 +746,41 @@ impl Tracker {
             }
         };
         let guess = b.guess();
-        let fit = self
-            .refine(frame, guess, band)
-            .and_then(|o| whole(o, guess.r));
+        // A coloured ball's blob with a wide ragged fringe, before the balls' radius
+        // is known: its solid core first (`Params::core_first`). The fringe (a
+        // checker's edges about a moving ball in a compressed clip) closes the
+        // ball's top into a circle of the blob's size, which passes as a first lock
+        // (full look 1: 41 px for 25.5, every later fit of the ball then refused for
+        // its radius). A grey ball's core may be its lit part alone (full look 9: a
+        // black ball's, 15 px for 24.4); a coloured ball differs from the wall in
+        // colour over its whole disc.
+        let core_first = b.core.filter(|c| {
+            self.radius.is_none()
+                && c.r < p.core_first * guess.r
+                && coloured(frame, c, p.grey_levels)
+        });
+        let fit = match core_first {
+            Some(core) => self
+                .refine(frame, core, band)
+                .and_then(|o| whole(o, core.r))
+                .or_else(|_| {
+                    self.refine(frame, guess, band)
+                        .and_then(|o| whole(o, guess.r))
+                }),
+            None => self
+                .refine(frame, guess, band)
+                .and_then(|o| whole(o, guess.r)),
+        };
         // A blob with a ragged fringe (`Blob::core`): the ball is its solid core.
         // Once the radius is known, only in a blob wider than a ball: the opened
         // blob of a ball that matches the wall in places (same-brightness wood
         // grain, looks table seed 45) is smaller than the ball, its fits too.
         let fit = match (fit, b.core) {
             (Err(e), Some(core))
-                if self
-                    .radius
-                    .is_none_or(|r| b.width() > p.wide_blob * 2.0 * r) =>
+                if core_first.is_none()
+                    && self
+                        .radius
+                        .is_none_or(|r| b.width() > p.wide_blob * 2.0 * r) =>
             {
                 self.refine(frame, core, band)
                     .map_err(|_| e)

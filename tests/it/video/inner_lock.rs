@@ -3,7 +3,7 @@
 //! and that is smaller than `Params::smallest_in_blob` of it is that blob's mark or
 //! highlight, found as a blob of its own (`vision::tracker::inside_a_larger_blob`).
 
-use super::decoded_look;
+use super::decoded_first;
 use crate::common::paper_scene;
 use crate::film::looks::Size;
 use groovelab::vision::circle::Circle;
@@ -15,10 +15,13 @@ use proptest::prelude::*;
 /// brightness, 1080p, crf 35, 27 frames): its first lock was a ball's dark mark, a
 /// blob of its own fitted in colour (11.8 px) inside the ball's blob, and the
 /// radius the tracker learned was 10.6 px. With the rule the radius learned is the
-/// balls' within 2 % (53.6 px on tracker 28); without it, a fifth of it or less.
+/// balls' within 2 % (53.6 px on tracker 28); without it, a fifth of it or less. Its
+/// first 12 frames show it (53.63 and 11.17 px on tracker 36; 8 frames learn
+/// 62.5 px): the whole clip cost 2 s more.
 #[test]
 fn a_mark_inside_its_balls_blob_is_no_first_lock() {
-    let Some((clip, frames)) = decoded_look("inner_lock", 15, Size::Full) else {
+    const FIRST: usize = 12;
+    let Some((clip, frames)) = decoded_first("inner_lock", 15, Size::Full, FIRST) else {
         return;
     };
     let truth = paper_scene().radius * clip.film.px_per_m();

@@ -108,6 +108,26 @@ pub(crate) fn look_options(
     }
 }
 
+/// As [`decoded_look`], the look's first `first` frames only, filmed, encoded and
+/// decoded (a test of first locks needs no more, and a clip's frames cost seconds).
+pub(crate) fn decoded_first(
+    area: &str,
+    seed: u64,
+    size: crate::film::looks::Size,
+    first: usize,
+) -> Option<(crate::film::looks::Clip, Vec<groovelab::vision::Frame>)> {
+    if !tracking::ffmpeg() {
+        return None;
+    }
+    let clip = crate::film::looks::random(&crate::common::paper_scene(), seed, size);
+    let dir = crate::common::scratch_dir(area, &format!("{size:?}_{seed}_first_{first}"));
+    let path = dir.join("clip.mp4");
+    crate::film::h264::write(&path, &clip.film, first.min(clip.frames)).unwrap();
+    let limits = groovelab::input::video::Limits::default();
+    let (_, frames) = groovelab::input::video::open(&path, &limits).unwrap();
+    Some((clip, frames.map(|f| f.unwrap().1).collect()))
+}
+
 /// As [`h264_look`], the copy decoded: the clip and its frames.
 pub(crate) fn decoded_look(
     area: &str,
