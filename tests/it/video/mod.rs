@@ -46,13 +46,27 @@ pub(crate) fn h264_look(
     seed: u64,
     size: crate::film::looks::Size,
 ) -> Option<(crate::film::looks::Clip, std::path::PathBuf)> {
+    h264_first(area, seed, size, None)
+}
+
+/// As [`h264_look`], with only the look's `first` frames where given (a test of first
+/// locks needs no more, and a clip's frames cost seconds to draw and encode).
+fn h264_first(
+    area: &str,
+    seed: u64,
+    size: crate::film::looks::Size,
+    first: Option<usize>,
+) -> Option<(crate::film::looks::Clip, std::path::PathBuf)> {
     if !tracking::ffmpeg() {
         return None;
     }
     let clip = crate::film::looks::random(&crate::common::paper_scene(), seed, size);
-    let dir = crate::common::scratch_dir(area, &format!("{size:?}_{seed}"));
-    let path = dir.join("clip.mp4");
-    crate::film::h264::write(&path, &clip.film, clip.frames).unwrap();
+    let (name, frames) = match first {
+        Some(n) => (format!("{size:?}_{seed}_first_{n}"), n.min(clip.frames)),
+        None => (format!("{size:?}_{seed}"), clip.frames),
+    };
+    let path = crate::common::scratch_dir(area, &name).join("clip.mp4");
+    crate::film::h264::write(&path, &clip.film, frames).unwrap();
     Some((clip, path))
 }
 
@@ -108,36 +122,32 @@ pub(crate) fn look_options(
     }
 }
 
-/// As [`decoded_look`], the look's first `first` frames only, filmed, encoded and
-/// decoded (a test of first locks needs no more, and a clip's frames cost seconds).
-pub(crate) fn decoded_first(
-    area: &str,
-    seed: u64,
-    size: crate::film::looks::Size,
-    first: usize,
-) -> Option<(crate::film::looks::Clip, Vec<groovelab::vision::Frame>)> {
-    if !tracking::ffmpeg() {
-        return None;
-    }
-    let clip = crate::film::looks::random(&crate::common::paper_scene(), seed, size);
-    let dir = crate::common::scratch_dir(area, &format!("{size:?}_{seed}_first_{first}"));
-    let path = dir.join("clip.mp4");
-    crate::film::h264::write(&path, &clip.film, first.min(clip.frames)).unwrap();
-    let limits = groovelab::input::video::Limits::default();
-    let (_, frames) = groovelab::input::video::open(&path, &limits).unwrap();
-    Some((clip, frames.map(|f| f.unwrap().1).collect()))
-}
-
 /// As [`h264_look`], the copy decoded: the clip and its frames.
 pub(crate) fn decoded_look(
     area: &str,
     seed: u64,
     size: crate::film::looks::Size,
 ) -> Option<(crate::film::looks::Clip, Vec<groovelab::vision::Frame>)> {
-    let (clip, path) = h264_look(area, seed, size)?;
+    h264_first(area, seed, size, None).map(decoded)
+}
+
+/// As [`decoded_look`], the look's first `first` frames only.
+pub(crate) fn decoded_first(
+    area: &str,
+    seed: u64,
+    size: crate::film::looks::Size,
+    first: usize,
+) -> Option<(crate::film::looks::Clip, Vec<groovelab::vision::Frame>)> {
+    h264_first(area, seed, size, Some(first)).map(decoded)
+}
+
+/// The clip's file decoded: the clip and its frames.
+fn decoded(
+    (clip, path): (crate::film::looks::Clip, std::path::PathBuf),
+) -> (crate::film::looks::Clip, Vec<groovelab::vision::Frame>) {
     let limits = groovelab::input::video::Limits::default();
     let (_, frames) = groovelab::input::video::open(&path, &limits).unwrap();
-    Some((clip, frames.map(|f| f.unwrap().1).collect()))
+    (clip, frames.map(|f| f.unwrap().1).collect())
 }
 
 /// The marks `tracker` keeps of `clip` once checked with `checks`
