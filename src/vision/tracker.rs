@@ -648,13 +648,16 @@ impl Tracker {
         if self.stacked {
             return Vec::new();
         }
-        let polarity = self.outline_polarity();
+        let step = (r / PICTURE_RADIUS).floor().max(1.0);
+        let look = (
+            self.outline_polarity(),
+            p.rail_moves,
+            p.colour_weight as f32,
+        );
         let picture = |slot: usize| {
             let mine = self.fitted_patches(&self.patches, slot);
             let every = mine.len().div_ceil(PICTURE_PATCHES).max(1);
             let some: Vec<&stack::Patch> = mine.iter().step_by(every).map(|(_, p)| *p).collect();
-            let step = (r / PICTURE_RADIUS).floor().max(1.0);
-            let look = (polarity, p.rail_moves, p.colour_weight as f32);
             stack::radius_at_fits(&some, (r, step), look, (p.min_coverage, p.max_rms))
         };
         // The two balls' pictures at once: the frames are all tracked by now and
