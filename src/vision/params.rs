@@ -328,6 +328,23 @@ pub struct Params {
     /// taken this much larger than the outline's, its standard error at least
     /// this much of it. Default 0.05.
     pub stack_edge: f64,
+    /// Most a stacked picture's outline may scatter about its circle, px, for the
+    /// picture to give the balls' radius (`Tracker::restacked`). Default 1.25: a
+    /// ball of 12 px stacked from 270p frames has an outline a few pixels of h264
+    /// blur wide, whose points scatter 0.9–1.1 px (small look 10's two pictures:
+    /// 0.88 and 1.09 px, radii 2 and 4 % under its balls', within `stack_edge`);
+    /// over 1 px (a frame's outline's `max_rms`) its second picture was not taken
+    /// and the clip was refused. No other look's row changed.
+    pub stack_max_rms: f64,
+    /// Least radius, px, of the outline in colour that is taken for a coloured
+    /// ball of the wall's brightness where its outline in brightness is not a
+    /// ball's (`Tracker::coloured_in_colour`). Default 20: the colour planes are
+    /// half size, 10 samples across such a radius. Full looks 43 and 67 (29.7 and
+    /// 38.7 px) were tracked so; on the small looks (balls of 11–16 px) outlines in
+    /// colour took small look 5 to a scale 10.7 of its ± off. Not on frames under
+    /// 640 px wide (the background learned at full resolution): there, at 20 px,
+    /// circles about small look 5's checker squares took its first locks.
+    pub colour_own_radius: f64,
     /// Most the balls' fitted radius may exceed their stacked pictures'
     /// (`Tracker::picture_radii`), as a ratio. Default 1.18: the pictures'
     /// outlines lay up to 15 % inside the drawn balls on the looks table (a limb
@@ -612,6 +629,8 @@ impl Default for Params {
             mark_votes: 9,
             stack_bytes: 96 << 20,
             stack_edge: 0.05,
+            stack_max_rms: 1.25,
+            colour_own_radius: 20.0,
             picture_ratio: 1.18,
             max_radius_spread: 0.05,
             min_contradicting: 10,

@@ -555,7 +555,7 @@ impl Tracker {
     /// (`stack_edge` outside it), the edge's definitions measured on the picture.
     /// `None` where not every frame's patches were kept (past `stack_bytes`),
     /// either ball gives no picture, a picture's outline is unclear
-    /// (`min_coverage`, `max_rms`) or the two pictures' radii disagree by more
+    /// (`min_coverage`, `stack_max_rms`) or the two pictures' radii disagree by more
     /// than `max_radius_spread` (both balls have one radius). A fit its picture
     /// does not match is left out (poor). The patches are used up (taken, not
     /// copied with the tracker).
@@ -581,7 +581,7 @@ impl Tracker {
             let cw = p.colour_weight as f32;
             let s = stack::stack(&refs, r, polarity, p.rail_moves, cw)?;
             let o = s.outline;
-            if o.coverage() < p.min_coverage || o.rms > p.max_rms {
+            if o.coverage() < p.min_coverage || o.rms > p.stack_max_rms {
                 return None;
             }
             // The outline lies inside the ball's edge by 0–2 stack_edge of it:
@@ -1254,7 +1254,13 @@ impl Tracker {
     /// is its own colour against the wall's; its outline in brightness, where the
     /// two differ so, a circle through its top and the rail's edge or its shadow,
     /// or its lit part (the looks table's seed 26: balls of 12.35 px on a dark
-    /// rail, first locks of 14.9 px). Else `o`.
+    /// rail, first locks of 14.9 px). So too where `o` is not a ball's outline
+    /// (`shaped`) and the ball is of the wall's brightness
+    /// (`of_the_walls_brightness`), its outline in colour being a ball's of
+    /// `colour_own_radius` or more, on frames of 640 px and wider (the background
+    /// learned coarse): its outline in brightness is then the wall's pattern (full
+    /// look 43's green balls on a magenta grain of their brightness: circles of
+    /// 10–41 px for 29.7). Else `o`.
     fn coloured_in_colour(
         &self,
         frame: &Frame,
@@ -1265,7 +1271,17 @@ impl Tracker {
         if o.colour || !coloured(frame, &guess, p.grey_levels) {
             return o;
         }
+        // A coloured ball on a wall of its brightness: its outline in brightness
+        // is the wall's pattern, its outline in colour its own.
+        let coarse = self.background.as_ref().is_some_and(|b| b.image.factor > 1);
+        let walls_own = |q: &OutlineFound| {
+            coarse
+                && q.outline.circle.r >= p.colour_own_radius
+                && !self.shaped(&o, p, false)
+                && of_the_walls_brightness(frame, &guess, p)
+        };
         match self.colour_outline_of(frame, guess, band, true) {
+            Some(q) if self.shaped(&q, p, false) && walls_own(&q) => q,
             Some(q)
                 if self.shaped(&q, p, false)
                     && q.outline.rms <= p.colour_clear_rms
@@ -1695,6 +1711,16 @@ fn seed_fit(img: &Gray, at: (f64, f64), min_radius: f64) -> Option<Circle> {
 /// in brightness or colour; a ghost of the background or a circle fitted to a
 /// textured wall does not, on average.
 fn stands_out(frame: &Frame, c: &Circle, colour_weight: f64) -> f64 {
+    contrast(frame, c).map_or(f64::INFINITY, |[dl, du, dv]| {
+        dl.max(colour_weight * du.max(dv))
+    })
+}
+
+/// How the upper half of the disc `c` differs from the ring around it above its
+/// centre ([`stands_out`]): the mean brightness's and the two mean colours'
+/// differences, levels, unweighted; `None` where too little of either is in the
+/// picture to tell.
+fn contrast(frame: &Frame, c: &Circle) -> Option<[f64; 3]> {
     let (mut inner, mut outer) = ([0.0f64; 4], [0.0f64; 4]);
     let step = (c.r / 8.0).max(1.0);
     let reach = 1.6 * c.r;
@@ -1731,13 +1757,20 @@ fn stands_out(frame: &Frame, c: &Circle, colour_weight: f64) -> f64 {
     }
     if inner[3] < 1.0 || outer[3] < 1.0 {
         // Too little of it in the picture to tell: not ruled out here.
-        return f64::INFINITY;
+        return None;
     }
     let mean = |s: &[f64; 4], i: usize| s.get(i).copied().unwrap_or(0.0) / s[3];
-    let dl = (mean(&inner, 0) - mean(&outer, 0)).abs();
-    let du = (mean(&inner, 1) - mean(&outer, 1)).abs();
-    let dv = (mean(&inner, 2) - mean(&outer, 2)).abs();
-    dl.max(colour_weight * du.max(dv))
+    Some([0, 1, 2].map(|i| (mean(&inner, i) - mean(&outer, i)).abs()))
+}
+
+/// True when the ball about `c` differs from the wall around it (`contrast`) in
+/// colour, by at least twice `differ_levels` (weighed as `stands_out` weighs
+/// it), but in brightness by under `differ_levels`: a ball of the wall's
+/// brightness, whose outline in brightness is the wall's own edges.
+fn of_the_walls_brightness(frame: &Frame, c: &Circle, p: &Params) -> bool {
+    contrast(frame, c).is_some_and(|[dl, du, dv]| {
+        dl < p.differ_levels && p.colour_weight * du.max(dv) >= 2.0 * p.differ_levels
+    })
 }
 
 /// The background `bg`'s colour plane `plane` at the full-size pixel `(x, y)`: the

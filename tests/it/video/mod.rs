@@ -37,6 +37,7 @@ mod sunk_balls;
 pub(crate) mod tracker_looks;
 pub(crate) mod tracking;
 mod unfit;
+mod wall_brightness;
 
 /// The random look `seed` of `size` (the looks table's, on the paper's scene) written
 /// as its H.264 copy `clip.mp4` into the scratch folder `area`/`size_seed`: the clip
