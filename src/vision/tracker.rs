@@ -1280,16 +1280,13 @@ impl Tracker {
                 && !self.shaped(&o, p, false)
                 && of_the_walls_brightness(frame, &guess, p)
         };
+        let clear_and_apart = |q: &OutlineFound| {
+            q.outline.rms <= p.colour_clear_rms
+                && (q.outline.circle.r - o.outline.circle.r).abs()
+                    > p.outer_agree * q.outline.circle.r
+        };
         match self.colour_outline_of(frame, guess, band, true) {
-            Some(q) if self.shaped(&q, p, false) && walls_own(&q) => q,
-            Some(q)
-                if self.shaped(&q, p, false)
-                    && q.outline.rms <= p.colour_clear_rms
-                    && (q.outline.circle.r - o.outline.circle.r).abs()
-                        > p.outer_agree * q.outline.circle.r =>
-            {
-                q
-            }
+            Some(q) if self.shaped(&q, p, false) && (clear_and_apart(&q) || walls_own(&q)) => q,
             _ => o,
         }
     }

@@ -10,7 +10,7 @@ use groovelab::vision::{self, Params};
 
 const FRAMES: usize = 32;
 
-/// Of the look's first frames, how many have each ball's fit, and the radius learned.
+/// How many of `frames` have each ball's fit, and the radius learned.
 fn found(frames: &[vision::Frame], params: Params) -> ([usize; 2], f64) {
     let t = vision::track(frames, params);
     let seen = [0, 1].map(|s| {
@@ -22,10 +22,10 @@ fn found(frames: &[vision::Frame], params: Params) -> ([usize; 2], f64) {
     (seen, t.radius().unwrap_or(f64::NAN))
 }
 
-/// Its first 32 frames: the balls' fits in 22 frames and their radius learned
+/// Its first 32 frames: 22 fits of the two balls (17 and 5) and their radius learned
 /// within 8 % (31.2 px for 29.7: the whole clip goes on to the balls' stacked
-/// pictures, 1.25 of its ± off, μ_k 0.160 ± 0.009 for 0.170); without the rule, fits
-/// in 10 and the radius 22 % large (36.4 px: circles through the grain).
+/// pictures, 1.25 of its ± off, μ_k 0.160 ± 0.009 for 0.170); without the rule, 10
+/// fits (4 and 6) and the radius 22 % large (36.4 px: circles through the grain).
 #[test]
 fn a_coloured_ball_of_the_walls_brightness_is_its_outline_in_colour() {
     let Some((clip, frames)) = super::decoded_first(
