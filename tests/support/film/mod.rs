@@ -248,19 +248,22 @@ impl Film {
         let mut noise = Noise::new(l.seed.wrapping_mul(1_000_003).wrapping_add(k as u64));
         let tint = l.paint.tint;
         let mut out = vec![0; img.len() * 3];
-        for (px, o) in img.iter().zip(out.chunks_exact_mut(3)) {
-            // Sensor noise, the same on the three channels (as in luma).
-            let n = if l.noise > 0.0 {
-                l.noise * noise.gauss()
-            } else {
-                0.0
-            };
-            for (c, o) in o.iter_mut().enumerate() {
-                let v = (f64::from(px[c]) + n) * tint[c];
-                // `v.round().clamp(0.0, 255.0) as u8` without libm's `round` (a call per
-                // channel, 8 % of a clip's rendering): adding a half is exact for every
-                // level from 0.5 up, and the cast saturates as the clamp did.
-                *o = (v + 0.5) as u8;
+        // Sensor noise, the same on the three channels (as in luma), a row at a time.
+        let mut row = vec![0.0; l.width];
+        let rows = img.chunks(l.width).zip(out.chunks_mut(l.width * 3));
+        for (pixels, outs) in rows {
+            if l.noise > 0.0 {
+                noise.fill_gauss(&mut row[..pixels.len()]);
+            }
+            for ((px, o), &g) in pixels.iter().zip(outs.chunks_exact_mut(3)).zip(&row) {
+                let n = l.noise * g;
+                for (c, o) in o.iter_mut().enumerate() {
+                    let v = (f64::from(px[c]) + n) * tint[c];
+                    // `v.round().clamp(0.0, 255.0) as u8` without libm's `round` (a call per
+                    // channel, 8 % of a clip's rendering): adding a half is exact for every
+                    // level from 0.5 up, and the cast saturates as the clamp did.
+                    *o = (v + 0.5) as u8;
+                }
             }
         }
         RgbImage::from_raw(l.width as u32, l.height as u32, out).expect("sized")
