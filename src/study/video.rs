@@ -62,12 +62,8 @@ impl Noise {
     }
 
     fn uniform(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        ((z >> 11) as f64 + 0.5) / (1u64 << 53) as f64
+        self.0 = self.0.wrapping_add(normal::STEP);
+        normal::uniform(self.0)
     }
 
     /// A standard normal number.
@@ -77,19 +73,12 @@ impl Noise {
     }
 
     /// As many numbers as `out` holds, the ones [`Noise::gauss`] called as often
-    /// gives, a third of the time each: the uniform pairs drawn in a run, then the
-    /// normals of a batch in vector registers.
+    /// gives, bit for bit, a sixth of the time each (a film's sensor noise, one
+    /// number per pixel): computed side by side in vector registers.
     pub fn fill_gauss(&mut self, out: &mut [f64]) {
-        const BATCH: usize = 64;
-        let (mut us, mut vs) = ([0.0; BATCH], [0.0; BATCH]);
-        for chunk in out.chunks_mut(BATCH) {
-            for (u, v) in us.iter_mut().zip(vs.iter_mut()).take(chunk.len()) {
-                (*u, *v) = (self.uniform(), self.uniform());
-            }
-            for ((o, &u), &v) in chunk.iter_mut().zip(&us).zip(&vs) {
-                *o = normal::box_muller(u, v);
-            }
-        }
+        normal::normals(self.0, out);
+        let draws = 2 * out.len() as u64;
+        self.0 = self.0.wrapping_add(draws.wrapping_mul(normal::STEP));
     }
 }
 

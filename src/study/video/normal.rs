@@ -20,6 +20,63 @@ pub fn box_muller(u: f64, v: f64) -> f64 {
     (-2.0 * ln(u)).sqrt() * cos_of_turns(v)
 }
 
+/// SplitMix64's step: its state moves on by this at each draw.
+pub const STEP: u64 = 0x9E37_79B9_7F4A_7C15;
+
+/// SplitMix64's draw at `state` as a uniform number in (0, 1): 53 bits, centred
+/// in their interval (never 0, whose logarithm Box–Muller would take).
+#[inline(always)]
+pub fn uniform(state: u64) -> f64 {
+    let mut z = state;
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^= z >> 31;
+    ((z >> 11) as f64 + 0.5) / (1u64 << 53) as f64
+}
+
+/// `out[i]`: the normal number of the draws `2i + 1` and `2i + 2` after `state`,
+/// each independent of the others (a draw's state is `state + k · STEP`), so they
+/// are computed side by side in the widest vector registers the processor has: the
+/// same bits in any (each operation rounds as IEEE 754 says; none is fused or
+/// reordered).
+pub fn normals(state: u64, out: &mut [f64]) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::is_x86_feature_detected as has;
+        if has!("avx512f") && has!("avx512dq") && has!("avx512vl") {
+            // SAFETY: the processor has these, just asked.
+            unsafe { normals_avx512(state, out) };
+            return;
+        }
+        if has!("avx2") {
+            // SAFETY: as above.
+            unsafe { normals_avx2(state, out) };
+            return;
+        }
+    }
+    normals_in(state, out);
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f,avx512dq,avx512vl")]
+fn normals_avx512(state: u64, out: &mut [f64]) {
+    normals_in(state, out);
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn normals_avx2(state: u64, out: &mut [f64]) {
+    normals_in(state, out);
+}
+
+#[inline(always)]
+fn normals_in(state: u64, out: &mut [f64]) {
+    for (i, o) in out.iter_mut().enumerate() {
+        let s = state.wrapping_add((2 * i as u64 + 1).wrapping_mul(STEP));
+        *o = box_muller(uniform(s), uniform(s.wrapping_add(STEP)));
+    }
+}
+
 /// 2^52 as a double: a whole number below it put in these bits reads back exactly.
 const TWO_52: f64 = 4_503_599_627_370_496.0;
 
@@ -163,6 +220,39 @@ mod tests {
                 ulps(ours, system) <= 1 || (ours - system).abs() <= 1e-16,
                 "cos 2π·{v}: {ours} vs {system}"
             );
+        }
+    }
+
+    /// Each vector path this processor has gives the bits of one draw at a time,
+    /// over lengths that end inside and past a vector.
+    #[test]
+    fn every_vector_path_gives_the_bits_of_one_at_a_time() {
+        let state: u64 = 0x1234_5678_9abc_def0;
+        for len in [0, 1, 3, 7, 8, 9, 250] {
+            let single: Vec<u64> = (0..len as u64)
+                .map(|i| {
+                    let s = state.wrapping_add((2 * i + 1).wrapping_mul(STEP));
+                    box_muller(uniform(s), uniform(s.wrapping_add(STEP))).to_bits()
+                })
+                .collect();
+            let bits = |out: &[f64]| out.iter().map(|v| v.to_bits()).collect::<Vec<_>>();
+            let mut out = vec![0.0; len];
+            normals_in(state, &mut out);
+            assert_eq!(bits(&out), single, "baseline, {len}");
+            #[cfg(target_arch = "x86_64")]
+            {
+                use std::arch::is_x86_feature_detected as has;
+                if has!("avx2") {
+                    // SAFETY: the processor has AVX2, just asked.
+                    unsafe { normals_avx2(state, &mut out) };
+                    assert_eq!(bits(&out), single, "AVX2, {len}");
+                }
+                if has!("avx512f") && has!("avx512dq") && has!("avx512vl") {
+                    // SAFETY: as above.
+                    unsafe { normals_avx512(state, &mut out) };
+                    assert_eq!(bits(&out), single, "AVX-512, {len}");
+                }
+            }
         }
     }
 
