@@ -16,7 +16,7 @@ use groovelab::vision::Params;
 fn a_coloured_ball_is_its_outline_in_colour_where_brightness_takes_in_the_rail() {
     super::scaled_with_refused_without(
         "coloured_ball",
-        (26, crate::film::looks::Size::Full),
+        (26, crate::film::looks::Size::Full, None),
         Params {
             colour_clear_rms: 0.0,
             rail_moves: f64::INFINITY,

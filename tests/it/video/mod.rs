@@ -185,16 +185,17 @@ pub(crate) fn look_truth(clip: &crate::film::looks::Clip, frames: usize) -> (f64
     )
 }
 
-/// The look `seed` of `size` (decoded as [`decoded_look`] in `area`), tracked with
-/// the default parameters, has its scale within 2 of its ± of the truth; tracked
-/// with `without` (a rule switched off), it is refused: the rule is what tracks it.
+/// The look `seed` of `size` (its `first` frames where given, decoded as
+/// [`decoded_first`] in `area`), tracked with the default parameters, has its scale
+/// within 2 of its ± of the truth; tracked with `without` (a rule switched off), it
+/// is refused: the rule is what tracks it.
 pub(crate) fn scaled_with_refused_without(
     area: &str,
-    (seed, size): (u64, crate::film::looks::Size),
+    (seed, size, first): (u64, crate::film::looks::Size, Option<usize>),
     without: groovelab::vision::Params,
 ) {
     use groovelab::vision;
-    let Some((clip, frames)) = decoded_look(area, seed, size) else {
+    let Some((clip, frames)) = h264_first(area, seed, size, first).map(decoded) else {
         return;
     };
     let (r, truth, times) = look_truth(&clip, frames.len());

@@ -18,7 +18,7 @@ use proptest::prelude::*;
 fn a_circle_of_two_level_edges_below_the_rail_is_no_first_lock() {
     super::scaled_with_refused_without(
         "rail_view",
-        (28, Size::Small),
+        (28, Size::Small, None),
         Params {
             rail_view_deg: 0.0,
             ..Params::default()
