@@ -11,12 +11,12 @@ use crate::common::paper_scene;
 use crate::film::looks::Size;
 use groovelab::input::video::tracked;
 
-/// The full-size look `seed` of the looks table in its H.264 copy, tracked as the
-/// command line tracks it: per centre given, its frame and its distance from the
-/// nearest true ball in radii (`None` without ffmpeg).
-pub(crate) fn centres_off(seed: u64) -> Option<Vec<(usize, f64)>> {
+/// The full-size look `seed` of the looks table (its `first` frames where given) in
+/// its H.264 copy, tracked as the command line tracks it: per centre given, its frame
+/// and its distance from the nearest true ball in radii (`None` without ffmpeg).
+pub(crate) fn centres_off(seed: u64, first: Option<usize>) -> Option<Vec<(usize, f64)>> {
     let scene = paper_scene();
-    let (clip, path) = h264_look("impact_follow", seed, Size::Full)?;
+    let (clip, path) = super::h264_first("impact_follow", seed, Size::Full, first)?;
     let options = super::look_options(&clip);
     let done = tracked::track(&path, &options, &groovelab::study::Quiet)
         .unwrap()
@@ -34,10 +34,15 @@ pub(crate) fn centres_off(seed: u64) -> Option<Vec<(usize, f64)>> {
     Some(out)
 }
 
-/// Checks that the full-size look `seed`, tracked as the command line tracks it,
-/// gives more than `at_least` centres, each within `within` radii of its ball.
-pub(crate) fn assert_on_their_balls(seed: u64, at_least: usize, within: f64) {
-    let Some(centres) = centres_off(seed) else {
+/// Checks that the full-size look `seed` (its `first` frames where given), tracked as
+/// the command line tracks it, gives more than `at_least` centres, each within
+/// `within` radii of its ball.
+pub(crate) fn assert_on_their_balls(
+    (seed, first): (u64, Option<usize>),
+    at_least: usize,
+    within: f64,
+) {
+    let Some(centres) = centres_off(seed, first) else {
         return;
     };
     assert!(centres.len() > at_least, "{} centres", centres.len());
@@ -48,10 +53,12 @@ pub(crate) fn assert_on_their_balls(seed: u64, at_least: usize, within: f64) {
     );
 }
 
-/// Every centre of seed 39 lies within a quarter of a radius of its ball (the
-/// worst, at the impact, 0.21 R); the follower's fit where the left ball was headed
-/// lay 0.75 R off.
+/// Every centre of seed 39 lies within a quarter of a radius of its ball. On the
+/// look's first 50 frames of its 86 (720p, the suite's minute; the impact at frame
+/// 39): 33 centres, the worst 0.12 R off; without the rule the follower's fit where
+/// the left ball was headed, at frame 40, lies 0.70 R off (on the whole clip: the
+/// worst 0.18 R; 0.75 R without).
 #[test]
 fn no_ball_is_followed_into_the_other_across_the_impact() {
-    assert_on_their_balls(39, 40, 0.25);
+    assert_on_their_balls((39, Some(50)), 30, 0.25);
 }

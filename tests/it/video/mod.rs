@@ -52,7 +52,7 @@ pub(crate) fn h264_look(
 
 /// As [`h264_look`], with only the look's `first` frames where given (a test of first
 /// locks needs no more, and a clip's frames cost seconds to draw and encode).
-fn h264_first(
+pub(crate) fn h264_first(
     area: &str,
     seed: u64,
     size: crate::film::looks::Size,

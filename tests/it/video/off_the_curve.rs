@@ -10,5 +10,5 @@
 /// frame 16's right ball, 0.138 R, 3.3 px along the groove; then frame 12's, 0.055 R).
 #[test]
 fn a_fit_off_its_balls_smooth_motion_is_left_out() {
-    super::impact_follow::assert_on_their_balls(6, 25, 0.15);
+    super::impact_follow::assert_on_their_balls((6, None), 25, 0.15);
 }
