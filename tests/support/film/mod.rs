@@ -399,25 +399,35 @@ impl Film {
                 let mut sum = [0.0; 3];
                 for p in poses {
                     let (dx, dy) = (x as f64 - p.centre.0, y as f64 - p.centre.1);
-                    // Far outside the ball its cover is 0 whatever `hypot` rounds to:
-                    // most of the box, skipped without the call.
-                    let far = dx * dx + dy * dy > (r + 0.5) * (r + 0.5) * (1.0 + 1e-9);
-                    let d = if far { f64::INFINITY } else { dx.hypot(dy) };
-                    let cover = (0.5 - (d - r)).clamp(0.0, 1.0);
+                    let cover = edge_cover(dx, dy, r);
                     if cover == 0.0 {
                         (0..3).for_each(|c| sum[c] += bg[c]);
                         continue;
                     }
                     let (qx, qy) = ((dx / r).clamp(-1.0, 1.0), (dy / r).clamp(-1.0, 1.0));
                     let shade = paint.shade(qx, qy);
-                    let dm = (x as f64 - p.mark.0).hypot(y as f64 - p.mark.1);
-                    let m = (0.5 - (dm - rho)).clamp(0.0, 1.0);
+                    let m = edge_cover(x as f64 - p.mark.0, y as f64 - p.mark.1, rho);
                     let ball: Rgb = paint::mix(shade, paint.mark, m);
                     (0..3).for_each(|c| sum[c] += bg[c] * (1.0 - cover) + ball[c] * light * cover);
                 }
                 img[i] = sum.map(|v| (v / n) as f32);
             }
         }
+    }
+}
+
+/// How much of the pixel `(dx, dy)` from the centre of a disc of radius `r` the disc
+/// covers (0 … 1), anti-aliased over a pixel of its edge: `0.5 − (d − r)` clamped.
+/// Far outside it and well inside it the clamp decides whatever `hypot` rounds to:
+/// those pixels (most of a ball's box, and of a mark's) skip the call.
+fn edge_cover(dx: f64, dy: f64, r: f64) -> f64 {
+    let d2 = dx * dx + dy * dy;
+    if d2 > (r + 0.5) * (r + 0.5) * (1.0 + 1e-9) {
+        0.0
+    } else if r > 0.5 && d2 < (r - 0.5) * (r - 0.5) * (1.0 - 1e-9) {
+        1.0
+    } else {
+        (0.5 - (dx.hypot(dy) - r)).clamp(0.0, 1.0)
     }
 }
 
