@@ -29,15 +29,16 @@ fn centres(t: &Tracked) -> Vec<Vec<Option<(f32, f32)>>> {
 }
 
 /// The looks table's look 46 (steel balls on a dark cluttered wall, 1280×720 at 50
-/// frames/s, its groove tilted by 3.2°, H.264 at crf 35): tracked in a band of rows,
-/// its centres are the whole frame's to within 0.02 px, and their RMS error from the
-/// truth is under 2 px (0.6 px in the looks table; left in the band's pixels they
-/// would be its top, over 100 px, off). The band changes only what the look's
+/// frames/s, its groove tilted by 3.2°, H.264 at crf 35), its first 25 frames of 45
+/// (the suite's minute; 47 centres): tracked in a band of rows, its centres are the
+/// whole frame's to within 0.02 px, and their RMS error from the truth is under 2 px
+/// (0.63 px; 0.6 px on the whole clip in the looks table; left in the band's pixels
+/// they would be its top, over 100 px, off). The band changes only what the look's
 /// statistics over the frame see (the differences' scatter, the smooth surface of
 /// luma): a blob's threshold, never a fit's pixels; on this look, nothing.
 #[test]
 fn a_tilted_look_tracked_in_its_band_is_tracked_as_whole() {
-    let Some((clip, path)) = super::h264_look("band", 46, Size::Full) else {
+    let Some((clip, path)) = super::h264_first("band", 46, Size::Full, Some(25)) else {
         return;
     };
     assert!(clip.film.look.tilt_deg.abs() > 2.0, "{}", clip.name);
@@ -67,7 +68,7 @@ fn a_tilted_look_tracked_in_its_band_is_tracked_as_whole() {
             compared += 1;
         }
     }
-    assert!(compared > 60, "{compared}");
+    assert!(compared > 40, "{compared}");
     let rms = (squares / f64::from(compared)).sqrt();
     assert!(rms < 2.0, "centre RMS {rms} px");
     let (cb, cw) = (&banded.tracks.calibration, &whole.tracks.calibration);
