@@ -6,7 +6,6 @@
 //! fitted 32 px from its left ball, where that ball was headed one frame after it
 //! bounced back, and kept (centre RMS 4.70 px; 1.89 with the rule).
 
-use super::h264_look;
 use crate::common::paper_scene;
 use crate::film::looks::Size;
 use groovelab::input::video::tracked;
