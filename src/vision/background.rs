@@ -477,6 +477,55 @@ mod tests {
         Frame::from_gray(Gray::filled(w, h, level))
     }
 
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(64))]
+        /// A tile's medians counted per level are the ones selection gives, bit for
+        /// bit: over any frames' bytes, masks that leave a pixel many values, few
+        /// (under a quarter: all are taken) or none, and planes shorter than the tile.
+        #[test]
+        fn counted_medians_are_the_selected_ones(
+            nf in 1usize..100,
+            t in 1usize..=TILE,
+            seed in proptest::prelude::any::<u64>(),
+            masked_share in 0.0f64..1.0,
+            short in proptest::prelude::any::<bool>(),
+        ) {
+            // A SplitMix64 stream: levels bunched (a wall) or spread, masks at the share.
+            let mut z = seed;
+            let mut next = move || {
+                z = z.wrapping_add(0x9E37_79B9_7F4A_7C15);
+                let mut x = z;
+                x = (x ^ (x >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+                x = (x ^ (x >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+                x ^ (x >> 31)
+            };
+            let planes: Vec<Vec<u8>> = (0..nf)
+                .map(|k| {
+                    let len = if short && k % 3 == 0 { t / 2 } else { t };
+                    (0..len).map(|_| (next() % 256) as u8 / if k % 2 == 0 { 1 } else { 8 }).collect()
+                })
+                .collect();
+            let masks: Vec<Vec<bool>> = (0..nf)
+                .map(|_| (0..t).map(|_| (next() % 1000) as f64 / 1000.0 < masked_share).collect())
+                .collect();
+            let planes: Vec<&[u8]> = planes.iter().map(Vec::as_slice).collect();
+            let masks: Vec<&[bool]> = masks.iter().map(Vec::as_slice).collect();
+            for with_masks in [false, true] {
+                let tile = Tile {
+                    planes: &planes,
+                    masks: if with_masks { &masks } else { &[] },
+                    start: 0,
+                    t,
+                };
+                let (mut counted, mut selected) = (Vec::new(), Vec::new());
+                proptest::prop_assert!(LevelCounts::new().medians(&tile, &mut counted));
+                Lists::new(nf).medians(&tile, &mut selected);
+                let bits = |v: &[f32]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+                proptest::prop_assert_eq!(bits(&counted), bits(&selected));
+            }
+        }
+    }
+
     #[test]
     fn the_median_leaves_out_what_passes() {
         // A bright square visits each place in fewer than half the frames.
