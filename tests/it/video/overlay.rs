@@ -278,3 +278,61 @@ fn a_refused_tracking_draws_what_was_found_over_a_pixel_grid() {
         .unwrap();
     assert_eq!(String::from_utf8_lossy(&probe.stdout).trim(), "100/1,30");
 }
+
+/// The overlay clip is the same bytes on one core as on all of them: x264's output
+/// depends on its thread count, by default 1.5 a core, so the video writer fixes it
+/// (the video tests' clips, written by it, were other clips on other machines). Run
+/// under `taskset -c 0`, a process sees one core.
+#[test]
+fn an_encoded_clip_is_the_same_on_one_core_as_on_all() {
+    if !super::tracking::ffmpeg() {
+        return;
+    }
+    let cpus = std::thread::available_parallelism().map_or(1, usize::from);
+    let taskset = std::process::Command::new("taskset")
+        .arg("--version")
+        .output();
+    if cpus < 2 || !taskset.is_ok_and(|o| o.status.success()) {
+        // One core: every run is on one. No taskset (util-linux): nothing to pin with.
+        eprintln!("SKIPPED: {cpus} core(s), or no taskset");
+        return;
+    }
+    let dir = scratch_dir("video_overlay", "cores");
+    let frames = dir.join("frames");
+    film(&frames);
+    let encode = |clip: &Path, one_core: bool| {
+        let args = [
+            "track",
+            frames.to_str().unwrap(),
+            "--fps",
+            "100",
+            "--radius",
+            "2.75cm",
+            "--overlay",
+            clip.to_str().unwrap(),
+        ];
+        let mut cmd = if one_core {
+            let mut c = std::process::Command::new("taskset");
+            c.args(["-c", "0", env!("CARGO_BIN_EXE_groovelab")]);
+            c
+        } else {
+            std::process::Command::new(env!("CARGO_BIN_EXE_groovelab"))
+        };
+        let out = cmd.args(args).output().unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        std::fs::read(clip).unwrap()
+    };
+    let all = encode(&dir.join("all.mp4"), false);
+    let one = encode(&dir.join("one.mp4"), true);
+    assert!(all.len() > 1000, "{} bytes", all.len());
+    assert!(
+        all == one,
+        "{} bytes on all cores, {} on one",
+        all.len(),
+        one.len()
+    );
+}
