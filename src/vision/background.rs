@@ -490,15 +490,12 @@ mod tests {
             masked_share in 0.0f64..1.0,
             short in proptest::prelude::any::<bool>(),
         ) {
-            // A SplitMix64 stream: levels bunched (a wall) or spread, masks at the share.
-            let mut z = seed;
-            let mut next = move || {
-                z = z.wrapping_add(0x9E37_79B9_7F4A_7C15);
-                let mut x = z;
-                x = (x ^ (x >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-                x = (x ^ (x >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-                x ^ (x >> 31)
-            };
+            // Proptest's own generator, seeded: levels bunched (a wall) or spread,
+            // masks at the share.
+            use proptest::prelude::Rng;
+            use proptest::test_runner::{RngAlgorithm, TestRng};
+            let mut rng = TestRng::from_seed(RngAlgorithm::ChaCha, &seed.to_le_bytes().repeat(4));
+            let mut next = move || rng.next_u64();
             let planes: Vec<Vec<u8>> = (0..nf)
                 .map(|k| {
                     let len = if short && k % 3 == 0 { t / 2 } else { t };

@@ -143,6 +143,7 @@ fn cos_of_turns(v: f64) -> f64 {
     f64::from_bits(((c & !sine) | (s & sine)) ^ negative)
 }
 
+/// fdlibm's polynomial of `(sin y − y) / y³` in `y²` ([`kernel_sin`]).
 const S: [f64; 6] = [
     f64::from_bits(0xbfc5_5555_5555_5549),
     f64::from_bits(0x3f81_1111_1110_f8a6),
@@ -151,6 +152,7 @@ const S: [f64; 6] = [
     f64::from_bits(0xbe5a_e5e6_8a2b_9ceb),
     f64::from_bits(0x3de5_d93a_5acf_d57c),
 ];
+/// fdlibm's polynomial of `(cos y − 1 + y²/2) / y⁴` in `y²` ([`kernel_cos`]).
 const C: [f64; 6] = [
     f64::from_bits(0x3fa5_5555_5555_554c),
     f64::from_bits(0xbf56_c16c_16c1_5177),

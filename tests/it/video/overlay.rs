@@ -28,6 +28,21 @@ fn film(dir: &Path) -> Film {
     film
 }
 
+/// `track FRAMES` of [`film`]'s folder as the tests run it (its rate and the balls'
+/// radius given), then `more`.
+fn track_args<'a>(frames: &'a Path, more: &[&'a str]) -> Vec<&'a str> {
+    let mut args = vec![
+        "track",
+        frames.to_str().unwrap(),
+        "--fps",
+        "100",
+        "--radius",
+        "2.75cm",
+    ];
+    args.extend_from_slice(more);
+    args
+}
+
 /// True when the pixel has the hue of one of the drawing's colours (yellow: red and
 /// green well above blue; cyan: green and blue well above red): the anti-aliased edge
 /// blends them with the black halo and the frame, which is grey.
@@ -66,18 +81,16 @@ fn the_overlay_sheet_draws_each_outline_on_its_ball() {
     let frames = dir.join("frames");
     let film = film(&frames);
     let sheet = dir.join("check.png");
-    let (code, out, err) = run(&[
-        "track",
-        frames.to_str().unwrap(),
-        "--fps",
-        "100",
-        "--radius",
-        "2.75cm",
-        "--output",
-        dir.join("tracks.txt").to_str().unwrap(),
-        "--overlay",
-        sheet.to_str().unwrap(),
-    ]);
+    let tracks = dir.join("tracks.txt");
+    let (code, out, err) = run(&track_args(
+        &frames,
+        &[
+            "--output",
+            tracks.to_str().unwrap(),
+            "--overlay",
+            sheet.to_str().unwrap(),
+        ],
+    ));
     assert_eq!(code, 0, "{err}");
     assert!(out.contains("wrote the overlay "), "{out}");
     // The hue test knows the drawing's colours.
@@ -168,16 +181,7 @@ fn a_bad_overlay_name_is_refused_in_one_line_before_tracking() {
         (dir.join("check"), "a name without an ending"),
         (missing, "no-such-folder"),
     ] {
-        let (code, _, err) = run(&[
-            "track",
-            frames.to_str().unwrap(),
-            "--fps",
-            "100",
-            "--radius",
-            "2.75cm",
-            "--overlay",
-            file.to_str().unwrap(),
-        ]);
+        let (code, _, err) = run(&track_args(&frames, &["--overlay", file.to_str().unwrap()]));
         assert_eq!(code, 2, "{err}");
         let line = err.trim();
         assert!(
@@ -203,28 +207,19 @@ fn a_refused_tracking_draws_what_was_found_over_a_pixel_grid() {
         write::png(&p, empty.as_raw(), 320, 180).unwrap();
     }
     let sheet = dir.join("check.png");
-    let args = |overlay: Option<&Path>| {
-        let mut a = vec![
-            "track".to_string(),
-            frames.to_str().unwrap().into(),
-            "--fps".into(),
-            "100".into(),
-            "--radius".into(),
-            "2.75cm".into(),
-            "--output".into(),
-            dir.join("tracks.txt").to_str().unwrap().into(),
-        ];
+    let tracks = dir.join("tracks.txt");
+    let track = |overlay: Option<&Path>| {
+        let mut more = vec!["--output", tracks.to_str().unwrap()];
         if let Some(o) = overlay {
-            a.extend(["--overlay".into(), o.to_str().unwrap().into()]);
+            more.extend(["--overlay", o.to_str().unwrap()]);
         }
-        a
+        run(&track_args(&frames, &more))
     };
-    let run_with = |a: Vec<String>| run(&a.iter().map(String::as_str).collect::<Vec<_>>());
-    let (code, _, err) = run_with(args(None));
+    let (code, _, err) = track(None);
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("tracking unsure"), "{err}");
     assert!(!err.contains("pixel grid") && !sheet.exists(), "{err}");
-    let (code, _, err) = run_with(args(Some(&sheet)));
+    let (code, _, err) = track(Some(&sheet));
     assert_eq!(code, 2, "{err}");
     let line = err.trim();
     assert!(
@@ -262,7 +257,7 @@ fn a_refused_tracking_draws_what_was_found_over_a_pixel_grid() {
     assert!(rows.clone().all(|y| !lighter(97, y) && !lighter(103, y)));
     // As a video: every frame, at the folder's --fps (a folder says no rate).
     let clip = dir.join("check.mp4");
-    let (code, _, err) = run_with(args(Some(&clip)));
+    let (code, _, err) = track(Some(&clip));
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("pixel grid in"), "{err}");
     let probe = std::process::Command::new("ffprobe")
@@ -301,16 +296,7 @@ fn an_encoded_clip_is_the_same_on_one_core_as_on_all() {
     let frames = dir.join("frames");
     film(&frames);
     let encode = |clip: &Path, one_core: bool| {
-        let args = [
-            "track",
-            frames.to_str().unwrap(),
-            "--fps",
-            "100",
-            "--radius",
-            "2.75cm",
-            "--overlay",
-            clip.to_str().unwrap(),
-        ];
+        let args = track_args(&frames, &["--overlay", clip.to_str().unwrap()]);
         let mut cmd = if one_core {
             let mut c = std::process::Command::new("taskset");
             c.args(["-c", "0", env!("CARGO_BIN_EXE_groovelab")]);
