@@ -1,3 +1,7 @@
+//! Tests of the video view's picture: the image protocol switch, the panel's fit,
+//! the frame with its tracked balls and the model's rings drawn in, a ball cut at
+//! the edge, the kitty encoding.
+
 use super::*;
 use crate::vision::thumbs::{BallPixels, Thumbs};
 
