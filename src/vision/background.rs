@@ -164,15 +164,7 @@ impl Learner {
             v: bytes(&v_pass),
         };
         // Again, each frame's differing pixels (and their neighbours) left out.
-        let masks: Vec<Vec<bool>> = self
-            .kept
-            .par_iter()
-            .map(|s| {
-                let d = differences(s, &first_bg, &self.params);
-                let thr = threshold(&d, &self.params);
-                dilate(&d.iter().map(|&v| v > thr).collect::<Vec<_>>(), w, h)
-            })
-            .collect();
+        let masks = differing(&self.kept, &first_bg, &self.params);
         let any_mask = touched(&masks, n);
         let again = |first_pass| {
             Some(Again {
@@ -210,6 +202,23 @@ struct Again<'a> {
     masks: &'a [Vec<bool>],
     touched: &'a [bool],
     first_pass: &'a [f32],
+}
+
+/// Each frame's pixels that differ from the background `bg` (over its
+/// [`threshold`]), and their neighbours: what the second pass leaves out.
+fn differing(frames: &[Arc<Small>], bg: &Small, p: &Params) -> Vec<Vec<bool>> {
+    frames
+        .par_iter()
+        .map(|s| {
+            let d = differences(s, bg, p);
+            let thr = threshold(&d, p);
+            dilate(
+                &d.iter().map(|&v| v > thr).collect::<Vec<_>>(),
+                bg.width,
+                bg.height,
+            )
+        })
+        .collect()
 }
 
 /// Per pixel, whether any of `masks` leaves it out.
@@ -693,14 +702,7 @@ mod tests {
             u: bytes(&median_plane(kept, n, |s| &s.u, None)),
             v: bytes(&median_plane(kept, n, |s| &s.v, None)),
         };
-        let masks: Vec<Vec<bool>> = kept
-            .iter()
-            .map(|s| {
-                let d = differences(s, &first, &p);
-                let thr = threshold(&d, &p);
-                dilate(&d.iter().map(|&v| v > thr).collect::<Vec<_>>(), w, h)
-            })
-            .collect();
+        let masks = differing(kept, &first, &p);
         assert!(
             masks.iter().any(|m| m.iter().any(|&b| b)),
             "the square is masked"
