@@ -1133,6 +1133,51 @@ impl Tracker {
         band: f64,
         colour: bool,
     ) -> Result<Outline, LeftOut> {
+        if colour && self.params.difference_first && self.radius().is_some() {
+            let near = self.predicted_near(guess).unwrap_or(guess);
+            if let Ok(o) = self.refine_difference(frame, near, band) {
+                return Ok(o);
+            }
+        }
+        self.refine_frame(frame, guess, band, colour)
+    }
+
+    /// The outline in the frame's difference from the background about `guess`
+    /// (`difference_outline`), held to a ball's checks: it stands out from around
+    /// it, is large enough, lies in the `--roi`, and is shaped as a ball's, its
+    /// radius the balls' so far.
+    fn refine_difference(
+        &self,
+        frame: &Frame,
+        guess: Circle,
+        band: f64,
+    ) -> Result<Outline, LeftOut> {
+        let p = self.params;
+        let o = self
+            .difference_outline(frame, guess, band)
+            .ok_or(LeftOut::Poor)?;
+        let c = o.outline.circle;
+        if stands_out(frame, &c, p.colour_weight) < p.differ_levels {
+            return Err(LeftOut::Unseen);
+        }
+        if c.r < p.min_radius || p.roi.is_some_and(|roi| !roi.contains(c.x, c.y)) {
+            return Err(LeftOut::Poor);
+        }
+        if !self.shaped(&o, &p, false) {
+            return Err(LeftOut::Poor);
+        }
+        Ok(o.outline)
+    }
+
+    /// As [`Tracker::refine_with`], in the frame itself (its brightness, else its
+    /// colour).
+    fn refine_frame(
+        &mut self,
+        frame: &Frame,
+        guess: Circle,
+        band: f64,
+        colour: bool,
+    ) -> Result<Outline, LeftOut> {
         let guess = self.predicted_near(guess).unwrap_or(guess);
         let mut p = self.params;
         // A first lock needs a clear outline; a circle of the known radius less, if
@@ -1517,23 +1562,7 @@ impl Tracker {
         if x1 <= x0 + 8 || y1 <= y0 + 8 {
             return None;
         }
-        let chroma = |plane: &[u8], x: f64, y: f64| -> f32 {
-            // Chroma sample (i, j) sits at full-size (2i + 0.5, 2j + 0.5).
-            let (cx, cy) = ((x - 0.5) / 2.0, (y - 0.5) / 2.0);
-            let (cw, ch) = (frame.chroma_width, frame.chroma_height);
-            let (i0, j0) = (cx.floor().max(0.0) as usize, cy.floor().max(0.0) as usize);
-            let (i1, j1) = (
-                (i0 + 1).min(cw.saturating_sub(1)),
-                (j0 + 1).min(ch.saturating_sub(1)),
-            );
-            let (fx, fy) = (
-                (cx - i0 as f64).clamp(0.0, 1.0) as f32,
-                (cy - j0 as f64).clamp(0.0, 1.0) as f32,
-            );
-            let at = |i: usize, j: usize| plane.get(j * cw + i).map_or(128.0, |&v| f32::from(v));
-            (at(i0, j0) * (1.0 - fx) + at(i1, j0) * fx) * (1.0 - fy)
-                + (at(i0, j1) * (1.0 - fx) + at(i1, j1) * fx) * fy
-        };
+        let chroma = |plane: &[u8], x: f64, y: f64| chroma_at(frame, plane, x, y);
         let back = |plane: &[u8], x: f64, y: f64| background_colour(bg, plane, (x, y), own);
         // The ball's colour difference at its middle (upper half: above the rail).
         let (mx, my) = (guess.x, guess.y - 0.3 * guess.r);
@@ -1571,6 +1600,20 @@ impl Tracker {
             height: h,
             data,
         };
+        self.patch_outline(&patch, guess, band, (x0, y0))
+    }
+
+    /// The outline of a ball brighter than around it in `patch`, an image of its
+    /// own whose first pixel is the frame's (x0, y0), about `guess` (frame px) in a
+    /// band `band` px wide, the rail's edges that hide the ball left out; in frame
+    /// px, as an outline in colour (held to a colour outline's checks).
+    fn patch_outline(
+        &self,
+        patch: &Gray,
+        guess: Circle,
+        band: f64,
+        (x0, y0): (usize, usize),
+    ) -> Option<OutlineFound> {
         let local = Circle {
             x: guess.x - x0 as f64,
             y: guess.y - y0 as f64,
@@ -1586,12 +1629,64 @@ impl Tracker {
                 slope: l.slope,
             })
             .collect();
-        let mut found = self.outline_by(&patch, local, band.max(3.0), 1.0, &rails)?;
+        let mut found = self.outline_by(patch, local, band.max(3.0), 1.0, &rails)?;
         found.outline.circle.x += x0 as f64;
         found.outline.circle.y += y0 as f64;
         found.outline.lowest += y0 as f64;
         found.colour = true;
         Some(found)
+    }
+
+    /// The outline near `guess` in the frame's difference from the background:
+    /// each pixel's distance from the background's in brightness and colour taken
+    /// together (`colour_weight` on the colour planes), an image of its own about
+    /// the ball, fitted as a ball brighter than around it. The wall's own pattern
+    /// (stripes, a checker, grain) is in the background, not in the difference:
+    /// what is left is the ball's silhouette, and whatever else differs as much (its
+    /// shadow, a compression fringe). Only where the background is learned at full
+    /// resolution (a coarse one leaves a fine pattern in the difference); `None`
+    /// otherwise, or where too little edge is found.
+    fn difference_outline(&self, frame: &Frame, guess: Circle, band: f64) -> Option<OutlineFound> {
+        let bg = self.background.as_ref().map(|b| &b.image)?;
+        if bg.factor != 1 || bg.width != frame.width() || bg.height != frame.height() {
+            return None;
+        }
+        let reach = guess.r + band + 4.0;
+        let x0 = (guess.x - reach).floor().max(0.0) as usize;
+        let y0 = (guess.y - reach).floor().max(0.0) as usize;
+        let x1 = ((guess.x + reach).ceil() as usize).min(frame.width().saturating_sub(1));
+        let y1 = ((guess.y + reach).ceil() as usize).min(frame.height().saturating_sub(1));
+        if x1 <= x0 + 8 || y1 <= y0 + 8 {
+            return None;
+        }
+        let gain = self.params.colour_weight as f32;
+        let cols: Vec<_> = (x0..=x1)
+            .map(|x| colour_axis(1, bg.width, x as f64, true))
+            .collect();
+        let mut data = Vec::with_capacity((x1 - x0 + 1) * (y1 - y0 + 1));
+        for y in y0..=y1 {
+            let row = colour_axis(1, bg.height, y as f64, true);
+            for (x, &col) in (x0..=x1).zip(&cols) {
+                let i = y * bg.width + x;
+                let luma = f32::from(frame.luma.data.get(i).copied().unwrap_or(0))
+                    - bg.y.get(i).copied().unwrap_or(0.0);
+                let (fx, fy) = (x as f64, y as f64);
+                let du =
+                    chroma_at(frame, &frame.u, fx, fy) - background_between(bg, &bg.u, (col, row));
+                let dv =
+                    chroma_at(frame, &frame.v, fx, fy) - background_between(bg, &bg.v, (col, row));
+                // Brightness and colour together: the looks' rule (the larger of the
+                // two, 0 for a shadow) measured worse here (BENCHMARKS.md).
+                let d = luma.hypot(gain * du.hypot(dv));
+                data.push(d.round().clamp(0.0, 255.0) as u8);
+            }
+        }
+        let patch = Gray {
+            width: x1 - x0 + 1,
+            height: y1 - y0 + 1,
+            data,
+        };
+        self.patch_outline(&patch, guess, band, (x0, y0))
     }
 
     /// Where a slot's ball is expected now (moving on as between its last two fits),
@@ -1819,6 +1914,25 @@ fn background_between(
             .get(j.min(bg.height.saturating_sub(1)) * bg.width + i.min(bg.width.saturating_sub(1)))
             .map_or(128.0, |&v| f32::from(v))
     };
+    (at(i0, j0) * (1.0 - fx) + at(i1, j0) * fx) * (1.0 - fy)
+        + (at(i0, j1) * (1.0 - fx) + at(i1, j1) * fx) * fy
+}
+
+/// The colour plane `plane` of `frame` at the full-size point (x, y), bilinearly
+/// between its half-size samples (sample (i, j) sits at (2i + 0.5, 2j + 0.5)).
+fn chroma_at(frame: &Frame, plane: &[u8], x: f64, y: f64) -> f32 {
+    let (cx, cy) = ((x - 0.5) / 2.0, (y - 0.5) / 2.0);
+    let (cw, ch) = (frame.chroma_width, frame.chroma_height);
+    let (i0, j0) = (cx.floor().max(0.0) as usize, cy.floor().max(0.0) as usize);
+    let (i1, j1) = (
+        (i0 + 1).min(cw.saturating_sub(1)),
+        (j0 + 1).min(ch.saturating_sub(1)),
+    );
+    let (fx, fy) = (
+        (cx - i0 as f64).clamp(0.0, 1.0) as f32,
+        (cy - j0 as f64).clamp(0.0, 1.0) as f32,
+    );
+    let at = |i: usize, j: usize| plane.get(j * cw + i).map_or(128.0, |&v| f32::from(v));
     (at(i0, j0) * (1.0 - fx) + at(i1, j0) * fx) * (1.0 - fy)
         + (at(i0, j1) * (1.0 - fx) + at(i1, j1) * fx) * fy
 }

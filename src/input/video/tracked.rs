@@ -144,6 +144,21 @@ pub fn track_framed(
     let params = options.params();
     let first = match track_once(video, options, &params, progress, pictures, framing)? {
         Attempt::Contradicted(first) => first,
+        Attempt::Scattered(refused) => {
+            let again = vision::Params {
+                difference_first: true,
+                ..params
+            };
+            return match track_once(video, options, &again, progress, pictures, framing) {
+                Ok(Attempt::Done(mut done)) => {
+                    if let Some(t) = done.as_mut().as_mut() {
+                        t.notes.push(difference_note(&refused));
+                    }
+                    Ok(*done)
+                }
+                _ => Err(refused),
+            };
+        }
         Attempt::Done(done) => return Ok(*done),
         // `track_once` never gives it.
         Attempt::Again => return Ok(None),
@@ -164,6 +179,20 @@ pub fn track_framed(
         }
         _ => Err(first.refused),
     }
+}
+
+/// The note of a clip tracked again, its outlines sought first in the frame's
+/// difference from the background, after `refused` (its frames' radii scattered).
+fn difference_note(refused: &Refused) -> String {
+    let why = match &refused.error.what {
+        VideoProblem::Tracks { error, .. } => error.to_string(),
+        other => other.to_string(),
+    };
+    let why = why.trim_start_matches("tracking unsure: ");
+    format!(
+        "tracked twice: {}; tracked again with each ball's outline sought first in the frame's difference from the background (the wall's pattern taken away), where the radii agree",
+        why.split(", so").next().unwrap_or(why)
+    )
 }
 
 /// A tracking refused whose clear outlines contradict the radius it had learned: the
@@ -204,6 +233,10 @@ enum Attempt {
     Done(Box<Option<Tracked>>),
     Again,
     Contradicted(Box<Contradicted>),
+    /// Refused for radii that scatter, the background learned at full resolution:
+    /// to be tracked again with the outlines sought in the frame's difference from
+    /// it ([`track_framed`]).
+    Scattered(Box<Refused>),
 }
 
 /// One tracking of `video`: of its band when `banded` and the first frames give
@@ -276,17 +309,7 @@ fn attempt(
                 scale: options.px_per_m.is_some(),
                 at: options.ball_at,
             };
-            let refused = refused(&tracker, thumbs, pictures, err(what));
-            return match (tracker.radius_contradicted(), tracker.radius()) {
-                (Some(r), Some(learned_px)) if params.radius_px.is_none() => {
-                    Ok(Attempt::Contradicted(Box::new(Contradicted {
-                        refused,
-                        learned_px,
-                        radius_px: r,
-                    })))
-                }
-                _ => Err(refused),
-            };
+            return refusal(&tracker, thumbs, pictures, err(what));
         }
     };
     if let Some(b) = band
@@ -307,6 +330,40 @@ fn attempt(
         view,
         band,
     }))))
+}
+
+/// The refusal `error` of `tracker`'s tracking, or what to try next: the clip
+/// tracked again at the radius its clear outlines agree on where they contradict the
+/// one learned ([`Contradicted`]), or with the outlines sought in the frame's
+/// difference from the background where the radii scattered and that background is
+/// learned at full resolution ([`Attempt::Scattered`]).
+fn refusal(
+    tracker: &Tracker,
+    thumbs: Thumbs,
+    pictures: Pictures,
+    error: VideoError,
+) -> Result<Attempt, Box<Refused>> {
+    let params = &tracker.params;
+    let scattered = matches!(
+        &error.what,
+        VideoProblem::Tracks {
+            error: vision::TracksError::RadiiDisagree { .. },
+            ..
+        }
+    ) && !params.difference_first
+        && tracker.background().is_some_and(|b| b.image.factor == 1);
+    let refused = refused(tracker, thumbs, pictures, error);
+    match (tracker.radius_contradicted(), tracker.radius()) {
+        (Some(r), Some(learned_px)) if params.radius_px.is_none() => {
+            Ok(Attempt::Contradicted(Box::new(Contradicted {
+                refused,
+                learned_px,
+                radius_px: r,
+            })))
+        }
+        _ if scattered => Ok(Attempt::Scattered(refused)),
+        _ => Err(refused),
+    }
 }
 
 /// The tracks of `tracker`'s frames at `times`; where the frames' radii disagree,

@@ -7,6 +7,7 @@ mod band;
 mod black_ball;
 mod colour_edge;
 mod coloured_ball;
+mod difference;
 mod edge_lean;
 mod first_locks;
 mod follow_gap;
