@@ -1125,7 +1125,9 @@ impl Tracker {
     }
 
     /// As [`Tracker::refine`]; `colour`: whether the outline may be sought in the
-    /// frame's colour difference where brightness gives none.
+    /// frame's colour difference where brightness gives none, and first in its
+    /// difference from the background where `difference_first` asks it (once the
+    /// radius is known: a first lock is the frame's own outline).
     fn refine_with(
         &mut self,
         frame: &Frame,

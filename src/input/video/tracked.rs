@@ -132,8 +132,10 @@ pub enum Framing {
 /// As [`track_or_found`], its rows chosen by `framing`. A clip refused where its
 /// clear outlines agree on a radius the tracker's learned one contradicts
 /// (`vision::Tracker::radius_contradicted`: a wrong first lock) is tracked once
-/// more, that radius known from its first frame; refused again, the first refusal
-/// stands.
+/// more, that radius known from its first frame; one refused for radii that
+/// scatter, its background learned at full resolution, is tracked once more with
+/// each outline sought first in the frame's difference from the background
+/// (`vision::Params::difference_first`); refused again, the first refusal stands.
 pub fn track_framed(
     video: &std::path::Path,
     options: &Options,
@@ -190,7 +192,7 @@ fn difference_note(refused: &Refused) -> String {
     };
     let why = why.trim_start_matches("tracking unsure: ");
     format!(
-        "tracked twice: {}; tracked again with each ball's outline sought first in the frame's difference from the background (the wall's pattern taken away), where the radii agree",
+        "tracked twice: {}; tracked again with each ball's outline sought first in the frame's difference from the background (the wall's pattern taken away)",
         why.split(", so").next().unwrap_or(why)
     )
 }
@@ -204,7 +206,8 @@ struct Contradicted {
 }
 
 /// One tracking at `params` (the band's, else the whole frame's; see [`Framing`]):
-/// done (the tracks, or `None` asked to stop) or contradicted, never `Again`.
+/// done (the tracks, or `None` asked to stop), contradicted or scattered, never
+/// `Again`.
 fn track_once(
     video: &std::path::Path,
     options: &Options,
@@ -228,7 +231,7 @@ fn track_once(
 
 /// What one tracking gave: the tracks (`None`: asked to stop), or, banded, a reason
 /// to track the whole frame instead, or a refusal of tracks whose clear outlines
-/// contradict the radius learned.
+/// contradict the radius learned, or of tracks whose radii scatter.
 enum Attempt {
     Done(Box<Option<Tracked>>),
     Again,
