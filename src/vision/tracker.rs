@@ -1158,13 +1158,7 @@ impl Tracker {
         let o = self
             .difference_outline(frame, guess, band)
             .ok_or(LeftOut::Poor)?;
-        let c = o.outline.circle;
-        if stands_out(frame, &c, p.colour_weight) < p.differ_levels {
-            return Err(LeftOut::Unseen);
-        }
-        if c.r < p.min_radius || p.roi.is_some_and(|roi| !roi.contains(c.x, c.y)) {
-            return Err(LeftOut::Poor);
-        }
+        stands_as_a_ball(frame, &o.outline.circle, &p)?;
         if !self.shaped(&o, &p, false) {
             return Err(LeftOut::Poor);
         }
@@ -1225,15 +1219,7 @@ impl Tracker {
         };
         let c = o.outline.circle;
         let tolerance = self.tolerance(&o.outline);
-        // A ghost (where the background learned a ball that is not there now) or a
-        // circle fitted to the wall's own pattern: nothing inside differs from
-        // around it. Not a ball, and no poor outline of one either.
-        if stands_out(frame, &o.outline.circle, p.colour_weight) < p.differ_levels {
-            return Err(LeftOut::Unseen);
-        }
-        if c.r < p.min_radius || p.roi.is_some_and(|roi| !roi.contains(c.x, c.y)) {
-            return Err(LeftOut::Poor);
-        }
+        stands_as_a_ball(frame, &c, &p)?;
         if !self.shaped(&o, &p, sharp(&o)) {
             self.note_other_radius(&o);
             return Err(LeftOut::Poor);
@@ -1556,14 +1542,7 @@ impl Tracker {
         own: bool,
     ) -> Option<OutlineFound> {
         let bg = &self.background.as_ref()?.image;
-        let reach = guess.r + band + 4.0;
-        let x0 = (guess.x - reach).floor().max(0.0) as usize;
-        let y0 = (guess.y - reach).floor().max(0.0) as usize;
-        let x1 = ((guess.x + reach).ceil() as usize).min(frame.width().saturating_sub(1));
-        let y1 = ((guess.y + reach).ceil() as usize).min(frame.height().saturating_sub(1));
-        if x1 <= x0 + 8 || y1 <= y0 + 8 {
-            return None;
-        }
+        let (x0, y0, x1, y1) = patch_box(frame, guess, band)?;
         let chroma = |plane: &[u8], x: f64, y: f64| chroma_at(frame, plane, x, y);
         let back = |plane: &[u8], x: f64, y: f64| background_colour(bg, plane, (x, y), own);
         // The ball's colour difference at its middle (upper half: above the rail).
@@ -1653,14 +1632,7 @@ impl Tracker {
         if bg.factor != 1 || bg.width != frame.width() || bg.height != frame.height() {
             return None;
         }
-        let reach = guess.r + band + 4.0;
-        let x0 = (guess.x - reach).floor().max(0.0) as usize;
-        let y0 = (guess.y - reach).floor().max(0.0) as usize;
-        let x1 = ((guess.x + reach).ceil() as usize).min(frame.width().saturating_sub(1));
-        let y1 = ((guess.y + reach).ceil() as usize).min(frame.height().saturating_sub(1));
-        if x1 <= x0 + 8 || y1 <= y0 + 8 {
-            return None;
-        }
+        let (x0, y0, x1, y1) = patch_box(frame, guess, band)?;
         let gain = self.params.colour_weight as f32;
         let cols: Vec<_> = (x0..=x1)
             .map(|x| colour_axis(1, bg.width, x as f64, true))
@@ -1918,6 +1890,33 @@ fn background_between(
     };
     (at(i0, j0) * (1.0 - fx) + at(i1, j0) * fx) * (1.0 - fy)
         + (at(i0, j1) * (1.0 - fx) + at(i1, j1) * fx) * fy
+}
+
+/// Whether the circle `c` fitted in `frame` can be a ball: something inside it
+/// differs from around it (`differ_levels`; else it is a ghost, where the
+/// background learned a ball that is not there now, or a circle fitted to the wall's
+/// own pattern: not a ball, and no poor outline of one either: unseen), it is
+/// `min_radius` or larger and lies in the `--roi` (else poor).
+fn stands_as_a_ball(frame: &Frame, c: &Circle, p: &Params) -> Result<(), LeftOut> {
+    if stands_out(frame, c, p.colour_weight) < p.differ_levels {
+        return Err(LeftOut::Unseen);
+    }
+    if c.r < p.min_radius || p.roi.is_some_and(|roi| !roi.contains(c.x, c.y)) {
+        return Err(LeftOut::Poor);
+    }
+    Ok(())
+}
+
+/// The pixels (x0, y0, x1, y1), inclusive, of the image an outline about `guess` is
+/// sought in (a band `band` px wide either side of it, and 4 px more), clipped to
+/// `frame`; `None` where fewer than 9 px each way are left.
+fn patch_box(frame: &Frame, guess: Circle, band: f64) -> Option<(usize, usize, usize, usize)> {
+    let reach = guess.r + band + 4.0;
+    let x0 = (guess.x - reach).floor().max(0.0) as usize;
+    let y0 = (guess.y - reach).floor().max(0.0) as usize;
+    let x1 = ((guess.x + reach).ceil() as usize).min(frame.width().saturating_sub(1));
+    let y1 = ((guess.y + reach).ceil() as usize).min(frame.height().saturating_sub(1));
+    (x1 > x0 + 8 && y1 > y0 + 8).then_some((x0, y0, x1, y1))
 }
 
 /// The colour plane `plane` of `frame` at the full-size point (x, y), bilinearly
