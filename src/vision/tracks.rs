@@ -8,6 +8,7 @@
 use serde::Serialize;
 
 use super::circle::Outline;
+use super::params::Params;
 use super::repeats;
 use super::tracker::{FrameFixes, LeftOut, Tracker, median, robust_sd};
 
@@ -62,6 +63,12 @@ pub enum TracksError {
         across_px: f64,
         radius_px: f64,
     },
+    /// Nothing found moves: what was tracked travels under `Params::least_travel`
+    /// of its radius over the clip.
+    #[error(
+        "tracking unsure: nothing found moves: what was tracked moves {travel_px:.1} px over the whole clip, its radius {radius_px:.1} px (a disc of the bench, not a rolling ball), so no tracks are given"
+    )]
+    StandsStill { travel_px: f64, radius_px: f64 },
 }
 
 impl TracksError {
@@ -77,7 +84,8 @@ impl TracksError {
             TracksError::NoBall { .. }
             | TracksError::TooMany { .. }
             | TracksError::Sparse { .. }
-            | TracksError::Swings { .. } => Handles {
+            | TracksError::Swings { .. }
+            | TracksError::StandsStill { .. } => Handles {
                 roi: true,
                 ball_at: true,
                 scale: false,
@@ -242,6 +250,11 @@ pub fn tracks(
     let mean_along = |s: usize| centres[s].iter().map(along).sum::<f64>() / centres[s].len() as f64;
     slots.sort_by(|a, b| mean_along(*a).total_cmp(&mean_along(*b)));
     let (r_px, r_se, radius_scatter) = the_radius(tracker, frames, &slots, scale.is_none())?;
+    stands_still(
+        &slots.iter().map(|&s| &centres[s][..]).collect::<Vec<_>>(),
+        r_px,
+        p,
+    )?;
     let px_per_m = scale.unwrap_or(r_px / radius);
     // The origin: the mean of every centre, so y is about 0 along the groove.
     let all: Vec<&[f64; 2]> = slots.iter().flat_map(|&s| centres[s].iter()).collect();
@@ -294,6 +307,27 @@ pub fn tracks(
         balls,
         calibration,
     })
+}
+
+/// Refuses where no ball's `paths` (px) travel `Params::least_travel` radii
+/// (`r_px`): the thing tracked stood still through the clip, so it is the bench's
+/// (a disc of clutter on a ball's line, kept as a target at rest), not a ball.
+fn stands_still(paths: &[&[[f64; 2]]], r_px: f64, p: &Params) -> Result<(), TracksError> {
+    let travel = |c: &[[f64; 2]]| {
+        let span = |i: usize| {
+            let v = c.iter().filter_map(|p| p.get(i).copied());
+            v.clone().fold(f64::NEG_INFINITY, f64::max) - v.fold(f64::INFINITY, f64::min)
+        };
+        span(0).hypot(span(1))
+    };
+    let travel_px = paths.iter().map(|c| travel(c)).fold(0.0, f64::max);
+    if travel_px < p.least_travel * r_px {
+        return Err(TracksError::StandsStill {
+            travel_px,
+            radius_px: r_px,
+        });
+    }
+    Ok(())
 }
 
 /// The balls' median fitted radius, px, its ± (the median's own standard error and
