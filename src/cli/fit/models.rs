@@ -5,14 +5,14 @@ use std::fmt::Write as _;
 
 use super::table::{pm, symbol};
 use crate::settings::units::Dimension;
-use crate::study::fit::{self, Candidate};
+use crate::study::fit::{self, BIC_MARGIN, Candidate};
 
 /// The candidate models compared by AIC and BIC, and the one the data support.
 pub(super) fn table(models: &[Candidate], positions: bool) -> String {
     let mut out = String::new();
     let _ = writeln!(
         out,
-        "\nwhich model the data support (fitted to the {}; AIC and BIC, lower is better, listed by BIC, lowest first; the simplest model within 2 of the lowest BIC whose values are all determined is named):",
+        "\nwhich model the data support (fitted to the {}; AIC and BIC, lower is better, listed by BIC, lowest first; the simplest model within 2 of the lowest BIC whose values are all determined is named, of those predicting the regime seen where one does):",
         if positions { "positions" } else { "velocities" }
     );
     // What AIC and BIC count as n: the points the residuals are worth.
@@ -85,11 +85,31 @@ pub(super) fn table(models: &[Candidate], positions: bool) -> String {
     out += &undetermined_notes(models, &names);
     match models.iter().find(|c| c.supported) {
         Some(c) => {
+            // Models left unweighed for predicting a regime other than the one seen.
+            let unweighed: Vec<&Candidate> = models
+                .iter()
+                .filter(|o| o.bic < c.bic - BIC_MARGIN && !o.fit.agrees)
+                .collect();
             let _ = writeln!(
                 out,
-                "  the data support: {} (marked *); a larger model does not lower the BIC by 2 or more",
-                names(c)
+                "  the data support: {} (marked *); a larger model{} does not lower the BIC by 2 or more",
+                names(c),
+                if unweighed.is_empty() {
+                    ""
+                } else {
+                    " predicting the regime seen"
+                }
             );
+            for o in unweighed {
+                let _ = writeln!(
+                    out,
+                    "  {} lowers the BIC by {:.1}, but the regime it predicts ({}) is not the one seen ({}): not weighed",
+                    names(o),
+                    c.bic - o.bic,
+                    o.fit.regime_predicted.name(),
+                    o.fit.regime_observed.name()
+                );
+            }
         }
         None if !models.is_empty() => {
             let best = models

@@ -35,7 +35,7 @@ use crate::study::Progress;
 use crate::study::measured::series::Measured;
 
 pub use approach::{APPROACH_FRAMES, Approach, of_velocities};
-pub use choice::{Candidate, Estimate, compare_candidates, compare_models};
+pub use choice::{BIC_MARGIN, Candidate, Estimate, compare_candidates, compare_models};
 pub use line::{
     Line, LineFit, PAPER_TABLE, PaperDisagreement, WidthFromLines, line, line_fit,
     paper_disagreements, paper_row, sliding_window,

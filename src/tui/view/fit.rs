@@ -330,7 +330,17 @@ fn model_choice_lines(models: &[fit::Candidate], lines: &mut Ranked<'static>, th
             Line::from(vec![
                 Span::styled("the data support ", theme.dim),
                 Span::styled(g.text(&name(c)), theme.info),
-                Span::styled(" (by BIC)", theme.dim),
+                Span::styled(
+                    if models
+                        .iter()
+                        .any(|o| o.bic < c.bic - fit::BIC_MARGIN && !o.fit.agrees)
+                    {
+                        " (by BIC, of the models predicting the regime seen)"
+                    } else {
+                        " (by BIC)"
+                    },
+                    theme.dim,
+                ),
             ]),
         )),
         None if !models.is_empty() => lines.push((
