@@ -83,6 +83,14 @@ pub(super) fn table(models: &[Candidate], positions: bool) -> String {
         );
     }
     out += &undetermined_notes(models, &names);
+    out += &named(models, &names);
+    out
+}
+
+/// Below the models table: the model named (or why none is), and each model with a
+/// lower BIC left unweighed for predicting a regime other than the one seen.
+fn named(models: &[Candidate], names: &dyn Fn(&Candidate) -> String) -> String {
+    let mut out = String::new();
     match models.iter().find(|c| c.supported) {
         Some(c) => {
             // Models left unweighed for predicting a regime other than the one seen.
@@ -171,4 +179,71 @@ fn undetermined_notes(models: &[Candidate], names: &dyn Fn(&Candidate) -> String
         );
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::physics::derived::Regime;
+
+    /// A determined candidate of `free` values at `bic`, its predicted regime
+    /// `predicted` where the data show them at rest, supported or not.
+    fn candidate(free: &[&'static str], bic: f64, predicted: Regime, supported: bool) -> Candidate {
+        let mut fit = crate::study::fit::model::tests::blank();
+        fit.regime_predicted = predicted;
+        fit.regime_observed = Regime::Rest;
+        fit.agrees = predicted == Regime::Rest;
+        Candidate {
+            name: free.join("+"),
+            parameters: free
+                .iter()
+                .map(|&parameter| fit::Estimate {
+                    parameter,
+                    value: 0.5,
+                    se: Some(0.01),
+                    not_determined: None,
+                })
+                .collect(),
+            rms: 0.001,
+            points: 30,
+            residuals: 30,
+            effective_points: 24.0,
+            aic: bic,
+            bic,
+            supported,
+            free: Vec::new(),
+            fit: Box::new(fit),
+        }
+    }
+
+    fn names(c: &Candidate) -> String {
+        c.name.clone()
+    }
+
+    #[test]
+    fn a_model_left_out_for_its_regime_is_named_below_the_table() {
+        // Small look 130's table: μ_k + v0 + e 9.8 lower in BIC, predicting a
+        // recollision where the balls were seen to stop.
+        let models = [
+            candidate(&["mu", "v0", "restitution"], 98.0, Regime::Recollide, false),
+            candidate(&["mu", "v0"], 107.8, Regime::Rest, true),
+        ];
+        let out = named(&models, &names);
+        assert!(
+            out.contains("the data support: mu+v0 (marked *); a larger model predicting the regime seen does not lower the BIC by 2 or more"),
+            "{out}"
+        );
+        assert!(
+            out.contains("mu+v0+restitution lowers the BIC by 9.8, but the regime it predicts (recollide) is not the one seen (rest): not weighed"),
+            "{out}"
+        );
+        // Where the larger model agrees and is named, no model is left out.
+        let models = [
+            candidate(&["mu", "v0", "restitution"], 98.0, Regime::Rest, true),
+            candidate(&["mu", "v0"], 107.8, Regime::Rest, false),
+        ];
+        let out = named(&models, &names);
+        assert!(!out.contains("not weighed"), "{out}");
+        assert!(out.contains("a larger model does not lower"), "{out}");
+    }
 }

@@ -18,7 +18,7 @@ mod approach;
 mod choice;
 mod least_squares;
 mod line;
-mod model;
+pub(crate) mod model;
 /// A fit of nothing, for tests of what is made from fits.
 #[cfg(test)]
 pub(crate) use model::tests::blank as blank_fit;
