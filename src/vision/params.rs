@@ -174,9 +174,10 @@ pub struct Params {
     /// A ball travels at least this many radii over the clip (the span of its
     /// centres); where none does, what was found stands still in every frame (a
     /// disc of the bench, kept as a target at rest) and no tracks are given.
-    /// Default 0.25: a rolling ball crosses its radius in well under a second (a
-    /// slow one, 4 cm/s at 60 frames/s, in 15 frames), while the disc of clutter
-    /// taken for a ball (full look 80) stayed within 0.01 of its radius.
+    /// Default 0.25: a rolling ball crosses a quarter of its radius in a fraction
+    /// of a second (7 mm at 4 cm/s in 0.17 s, 10 frames at 60 frames/s), while the
+    /// disc of clutter taken for a ball (full look 80) stayed within 0.01 of its
+    /// radius.
     pub least_travel: f64,
     /// The mark stands out from the ball's surface by at least this many pixel-noise
     /// scatters … Default 6.

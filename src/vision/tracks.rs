@@ -66,7 +66,7 @@ pub enum TracksError {
     /// Nothing found moves: what was tracked travels under `Params::least_travel`
     /// of its radius over the clip.
     #[error(
-        "tracking unsure: nothing found moves: what was tracked moves {travel_px:.1} px over the whole clip, its radius {radius_px:.1} px (a disc of the bench, not a rolling ball), so no tracks are given"
+        "tracking unsure: nothing found moves: what was tracked moves {travel_px:.1} px over the whole clip, its radius {radius_px:.1} px (nothing rolls: a thing of the bench, or balls at rest throughout), so no tracks are given"
     )]
     StandsStill { travel_px: f64, radius_px: f64 },
 }
@@ -315,12 +315,17 @@ pub fn tracks(
 fn stands_still(paths: &[&[[f64; 2]]], r_px: f64, p: &Params) -> Result<(), TracksError> {
     let travel = |c: &[[f64; 2]]| {
         let span = |i: usize| {
-            let v = c.iter().filter_map(|p| p.get(i).copied());
+            let v = c.iter().filter_map(|q| q.get(i).copied());
             v.clone().fold(f64::NEG_INFINITY, f64::max) - v.fold(f64::INFINITY, f64::min)
         };
         span(0).hypot(span(1))
     };
-    let travel_px = paths.iter().map(|c| travel(c)).fold(0.0, f64::max);
+    // A path without centres says nothing (no ball is tracked without them).
+    let travel_px = paths
+        .iter()
+        .filter(|c| !c.is_empty())
+        .map(|c| travel(c))
+        .fold(0.0, f64::max);
     if travel_px < p.least_travel * r_px {
         return Err(TracksError::StandsStill {
             travel_px,

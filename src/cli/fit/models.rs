@@ -5,14 +5,14 @@ use std::fmt::Write as _;
 
 use super::table::{pm, symbol};
 use crate::settings::units::Dimension;
-use crate::study::fit::{self, BIC_MARGIN, Candidate};
+use crate::study::fit::{self, Candidate};
 
 /// The candidate models compared by AIC and BIC, and the one the data support.
 pub(super) fn table(models: &[Candidate], positions: bool) -> String {
     let mut out = String::new();
     let _ = writeln!(
         out,
-        "\nwhich model the data support (fitted to the {}; AIC and BIC, lower is better, listed by BIC, lowest first; the simplest model within 2 of the lowest BIC whose values are all determined is named, of those predicting the regime seen where one does):",
+        "\nwhich model the data support (fitted to the {}; AIC and BIC, lower is better, listed by BIC, lowest first; the simplest model within 2 of the lowest BIC whose values are all determined is named, not weighing a model whose added values predict a regime other than the one seen):",
         if positions { "positions" } else { "velocities" }
     );
     // What AIC and BIC count as n: the points the residuals are worth.
@@ -91,46 +91,39 @@ pub(super) fn table(models: &[Candidate], positions: bool) -> String {
 /// lower BIC left unweighed for predicting a regime other than the one seen.
 fn named(models: &[Candidate], names: &dyn Fn(&Candidate) -> String) -> String {
     let mut out = String::new();
+    let unweighed: Vec<&Candidate> = models.iter().filter(|c| !c.weighed).collect();
+    let of_weighed = if unweighed.is_empty() { "" } else { " weighed" };
     match models.iter().find(|c| c.supported) {
         Some(c) => {
-            // Models left unweighed for predicting a regime other than the one seen.
-            let unweighed: Vec<&Candidate> = models
-                .iter()
-                .filter(|o| o.bic < c.bic - BIC_MARGIN && !o.fit.agrees)
-                .collect();
             let _ = writeln!(
                 out,
-                "  the data support: {} (marked *); a larger model{} does not lower the BIC by 2 or more",
+                "  the data support: {} (marked *); a larger model{of_weighed} does not lower the BIC by 2 or more",
                 names(c),
-                if unweighed.is_empty() {
-                    ""
-                } else {
-                    " predicting the regime seen"
-                }
             );
-            for o in unweighed {
-                let _ = writeln!(
-                    out,
-                    "  {} lowers the BIC by {:.1}, but the regime it predicts ({}) is not the one seen ({}): not weighed",
-                    names(o),
-                    c.bic - o.bic,
-                    o.fit.regime_predicted.name(),
-                    o.fit.regime_observed.name()
-                );
-            }
         }
         None if !models.is_empty() => {
             let best = models
                 .iter()
+                .filter(|c| c.weighed)
                 .min_by(|a, b| a.bic.total_cmp(&b.bic))
-                .expect("not empty");
+                .unwrap_or(&models[0]);
             let _ = writeln!(
                 out,
-                "  no model is named: the lowest BIC is {}'s, and no model within 2 of it has every value determined",
+                "  no model is named: the lowest BIC of those{of_weighed} is {}'s, and no model within 2 of it has every value determined",
                 names(best)
             );
         }
         None => {}
+    }
+    for o in unweighed {
+        let _ = writeln!(
+            out,
+            "  {} is not weighed: it predicts {} where the data show {}, and a smaller model inside it predicts what they show (its BIC {:.1})",
+            names(o),
+            o.fit.regime_predicted.name(),
+            o.fit.regime_observed.name(),
+            o.bic
+        );
     }
     out
 }
@@ -187,9 +180,10 @@ mod tests {
     use crate::physics::derived::Regime;
 
     /// A determined candidate of `free` values at `bic`, its predicted regime
-    /// `predicted` where the data show them at rest, supported or not.
-    fn candidate(free: &[&'static str], bic: f64, predicted: Regime, supported: bool) -> Candidate {
-        let mut fit = crate::study::fit::model::tests::blank();
+    /// `predicted` where the data show them at rest; weighed and supported as
+    /// `study::fit` decides it.
+    fn candidate(free: &[&'static str], bic: f64, predicted: Regime) -> Candidate {
+        let mut fit = crate::study::fit::blank_fit();
         fit.regime_predicted = predicted;
         fit.regime_observed = Regime::Rest;
         fit.agrees = predicted == Regime::Rest;
@@ -210,10 +204,23 @@ mod tests {
             effective_points: 24.0,
             aic: bic,
             bic,
-            supported,
+            supported: false,
+            weighed: true,
             free: Vec::new(),
             fit: Box::new(fit),
         }
+    }
+
+    /// `models` weighed and the one supported marked, as `fit` marks them.
+    fn chosen(mut models: Vec<Candidate>) -> Vec<Candidate> {
+        let w = fit::weighed(&models);
+        for (c, w) in models.iter_mut().zip(w) {
+            c.weighed = w;
+        }
+        if let Some(i) = fit::supported(&models) {
+            models[i].supported = true;
+        }
+        models
     }
 
     fn names(c: &Candidate) -> String {
@@ -223,27 +230,35 @@ mod tests {
     #[test]
     fn a_model_left_out_for_its_regime_is_named_below_the_table() {
         // Small look 130's table: μ_k + v0 + e 9.8 lower in BIC, predicting a
-        // recollision where the balls were seen to stop.
-        let models = [
-            candidate(&["mu", "v0", "restitution"], 98.0, Regime::Recollide, false),
-            candidate(&["mu", "v0"], 107.8, Regime::Rest, true),
-        ];
+        // recollision where the balls were seen to stop, μ_k + v0 inside it agreeing.
+        let models = chosen(vec![
+            candidate(&["mu", "v0", "restitution"], 98.0, Regime::Recollide),
+            candidate(&["mu", "v0"], 107.8, Regime::Rest),
+        ]);
         let out = named(&models, &names);
         assert!(
-            out.contains("the data support: mu+v0 (marked *); a larger model predicting the regime seen does not lower the BIC by 2 or more"),
+            out.contains("the data support: mu+v0 (marked *); a larger model weighed does not lower the BIC by 2 or more"),
             "{out}"
         );
         assert!(
-            out.contains("mu+v0+restitution lowers the BIC by 9.8, but the regime it predicts (recollide) is not the one seen (rest): not weighed"),
+            out.contains("mu+v0+restitution is not weighed: it predicts recollide where the data show rest, and a smaller model inside it predicts what they show (its BIC 98.0)"),
             "{out}"
         );
-        // Where the larger model agrees and is named, no model is left out.
-        let models = [
-            candidate(&["mu", "v0", "restitution"], 98.0, Regime::Rest, true),
-            candidate(&["mu", "v0"], 107.8, Regime::Rest, false),
-        ];
-        let out = named(&models, &names);
-        assert!(!out.contains("not weighed"), "{out}");
-        assert!(out.contains("a larger model does not lower"), "{out}");
+        // Where the smaller one disagrees, nothing is left out and the BIC decides:
+        // the larger, agreeing, is named; or, within 2, the smaller, disagreeing.
+        for (bic, named_one) in [(98.0, "mu+v0+restitution"), (106.0, "mu+v0")] {
+            let models = chosen(vec![
+                candidate(&["mu", "v0", "restitution"], bic, Regime::Rest),
+                candidate(&["mu", "v0"], 107.8, Regime::Recollide),
+            ]);
+            let out = named(&models, &names);
+            assert!(!out.contains("not weighed"), "{out}");
+            assert!(
+                out.contains(&format!(
+                    "the data support: {named_one} (marked *); a larger model does not lower"
+                )),
+                "{out}"
+            );
+        }
     }
 }

@@ -70,6 +70,9 @@ pub struct Candidate {
     pub bic: f64,
     /// True for the model named as the simplest the data support.
     pub supported: bool,
+    /// False for a model left out of the choice: it predicts a regime other than the
+    /// one seen where a simpler model inside it predicts that one ([`weighed`]).
+    pub weighed: bool,
     /// Its free values.
     #[serde(skip)]
     pub free: Vec<Free>,
@@ -88,25 +91,23 @@ impl Candidate {
     }
 }
 
-/// The model the data support among `models`: the simplest whose values are all
-/// determined and whose BIC is within [`BIC_MARGIN`] of the lowest of all (a lower
-/// BIC bought with a value on its bound still counts: then no model may be named).
-/// Where a determined model predicts the regime observed, only the models that do
-/// are weighed: a lower BIC bought by predicting another regime (e freed to 0.85
-/// where the balls were seen to stop: a heavily compressed clip's frames that lag
-/// the ball near its turn fit better so) is no model of what was seen.
-fn supported(models: &[Candidate]) -> Option<usize> {
-    let agreeing = models.iter().any(|c| c.fit.agrees && c.determined());
-    let weighed = |c: &Candidate| !agreeing || c.fit.agrees;
+/// The model the data support among `models`: of those [`weighed`], the simplest
+/// whose values are all determined and whose BIC is within [`BIC_MARGIN`] of the
+/// lowest (a lower BIC bought with a value on its bound still counts: then no model
+/// may be named).
+pub(crate) fn supported(models: &[Candidate]) -> Option<usize> {
+    let weighed = weighed(models);
+    let counted = |i: usize| weighed.get(i).copied().unwrap_or(true);
     let best = models
         .iter()
-        .filter(|c| weighed(c))
-        .map(|c| c.bic)
+        .enumerate()
+        .filter(|(i, _)| counted(*i))
+        .map(|(_, c)| c.bic)
         .fold(f64::INFINITY, f64::min);
     models
         .iter()
         .enumerate()
-        .filter(|(_, c)| weighed(c) && c.determined() && c.bic <= best + BIC_MARGIN)
+        .filter(|(i, c)| counted(*i) && c.determined() && c.bic <= best + BIC_MARGIN)
         .min_by(|(_, a), (_, b)| {
             a.parameters
                 .len()
@@ -116,8 +117,37 @@ fn supported(models: &[Candidate]) -> Option<usize> {
         .map(|(i, _)| i)
 }
 
+/// Which of `models` the choice weighs: all but those predicting a regime other than
+/// the one seen where a determined model inside them (its free values a part of
+/// theirs) predicts that one. Their lower BIC is bought by the values added, which
+/// take the model to another regime than what was seen (e freed to 0.85–0.93 where a
+/// heavily compressed clip's frames lag the ball near its turn: the small looks 99
+/// and 130 then predicted a recollision where the balls stopped). The simplest
+/// model's verdict is never so decided: a model is only ever left out for a smaller
+/// one's, and the smaller one agrees by itself.
+pub fn weighed(models: &[Candidate]) -> Vec<bool> {
+    let names = |c: &Candidate| c.parameters.iter().map(|e| e.parameter).collect::<Vec<_>>();
+    let inside = |small: &Candidate, large: &Candidate| {
+        let large = names(large);
+        small.parameters.len() < large.len()
+            && small
+                .parameters
+                .iter()
+                .all(|e| large.contains(&e.parameter))
+    };
+    models
+        .iter()
+        .map(|c| {
+            c.fit.agrees
+                || !models
+                    .iter()
+                    .any(|y| y.fit.agrees && y.determined() && inside(y, c))
+        })
+        .collect()
+}
+
 /// BIC difference below which a larger model is not preferred.
-pub const BIC_MARGIN: f64 = 2.0;
+const BIC_MARGIN: f64 = 2.0;
 
 /// The candidate models' free values for the series `m`.
 /// With `v0_measured` (the scene's v0 was taken from the data, not given) v0 is free
@@ -270,6 +300,10 @@ pub(super) fn candidates_within(
         .map_or(1.0, |(r, l)| effective_points(r, l));
     for ((free, s), (r, _)) in fitted.iter().zip(&scored) {
         out.push(candidate(free, s, cost(r), r.len(), n_eff));
+    }
+    let counted = weighed(&out);
+    for (c, w) in out.iter_mut().zip(counted) {
+        c.weighed = w;
     }
     if let Some(c) = supported(&out).and_then(|i| out.get_mut(i)) {
         c.supported = true;
@@ -492,6 +526,7 @@ fn candidate(free: &[Free], s: &Scored, cost: f64, n: usize, n_eff: f64) -> Cand
         aic: fit_term + 2.0 * k,
         bic: fit_term + k * n_eff.ln(),
         supported: false,
+        weighed: true,
         free: free.to_vec(),
         fit: Box::new(s.fit.clone()),
     }
@@ -524,6 +559,7 @@ mod tests {
             aic: bic,
             bic,
             supported: false,
+            weighed: true,
             free: Vec::new(),
             fit: Box::new(crate::study::fit::model::tests::blank()),
         }
@@ -557,24 +593,36 @@ mod tests {
     }
 
     #[test]
-    fn a_model_predicting_another_regime_than_seen_is_not_named_where_one_agrees() {
+    fn a_model_predicting_another_regime_than_a_smaller_one_inside_it_is_not_weighed() {
         let mu = |agrees| agreeing(model(&[("mu", true)], 0.0), agrees);
         let mu_e =
             |bic, agrees| agreeing(model(&[("mu", true), ("restitution", true)], bic), agrees);
-        // μ + e 10 lower in BIC but predicting a regime not seen: μ alone is named
-        // (small looks 99, 130: e 0.85–0.92 where the balls were seen to stop).
-        assert_eq!(supported(&[mu(true), mu_e(-10.0, false)]), Some(0));
-        // Both agree: the BIC decides as before.
+        // μ + e 10 lower in BIC but predicting a regime not seen, μ alone inside it
+        // predicting that one: μ alone is named (small looks 99, 130: e 0.85–0.92
+        // where the balls were seen to stop).
+        let models = [mu(true), mu_e(-10.0, false)];
+        assert_eq!(weighed(&models), [true, false]);
+        assert_eq!(supported(&models), Some(0));
+        // Both agree, or neither: the BIC decides as before.
         assert_eq!(supported(&[mu(true), mu_e(-10.0, true)]), Some(1));
         assert_eq!(supported(&[mu(true), mu_e(-1.0, true)]), Some(0));
-        // Neither agrees: the BIC decides as before.
         assert_eq!(supported(&[mu(false), mu_e(-10.0, false)]), Some(1));
-        // Only the larger agrees: it is named, whatever the smaller's BIC.
-        assert_eq!(supported(&[mu(false), mu_e(5.0, true)]), Some(1));
-        // The one that agrees has a value not determined: no agreeing model can be
-        // named, so all are weighed as before.
-        let undetermined = agreeing(model(&[("mu", true), ("restitution", false)], -10.0), true);
-        assert_eq!(supported(&[mu(false), undetermined]), None);
+        // Only the larger agrees: the smaller is weighed still (nothing inside it
+        // agrees), and named where the BIC says so: its DISAGREES stands.
+        let models = [mu(false), mu_e(-1.0, true)];
+        assert_eq!(weighed(&models), [true, true]);
+        assert_eq!(supported(&models), Some(0));
+        assert_eq!(supported(&[mu(false), mu_e(5.0, true)]), Some(0));
+        // A model beside, not inside: μ + c_rr agreeing leaves μ + e weighed.
+        let mu_c = agreeing(
+            model(&[("mu", true), ("rolling_resistance", true)], 0.0),
+            true,
+        );
+        let models = [mu(false), mu_c, mu_e(-10.0, false)];
+        assert_eq!(weighed(&models), [true, true, true]);
+        // The smaller one inside has a value not determined: it leaves nothing out.
+        let undetermined = agreeing(model(&[("mu", false)], 0.0), true);
+        assert_eq!(weighed(&[undetermined, mu_e(-10.0, false)]), [true, true]);
     }
 
     #[test]

@@ -18,7 +18,7 @@ mod approach;
 mod choice;
 mod least_squares;
 mod line;
-pub(crate) mod model;
+mod model;
 /// A fit of nothing, for tests of what is made from fits.
 #[cfg(test)]
 pub(crate) use model::tests::blank as blank_fit;
@@ -35,7 +35,9 @@ use crate::study::Progress;
 use crate::study::measured::series::Measured;
 
 pub use approach::{APPROACH_FRAMES, Approach, of_velocities};
-pub use choice::{BIC_MARGIN, Candidate, Estimate, compare_candidates, compare_models};
+#[cfg(test)]
+pub(crate) use choice::supported;
+pub use choice::{Candidate, Estimate, compare_candidates, compare_models, weighed};
 pub use line::{
     Line, LineFit, PAPER_TABLE, PaperDisagreement, WidthFromLines, line, line_fit,
     paper_disagreements, paper_row, sliding_window,

@@ -331,10 +331,7 @@ fn model_choice_lines(models: &[fit::Candidate], lines: &mut Ranked<'static>, th
                 Span::styled("the data support ", theme.dim),
                 Span::styled(g.text(&name(c)), theme.info),
                 Span::styled(
-                    if models
-                        .iter()
-                        .any(|o| o.bic < c.bic - fit::BIC_MARGIN && !o.fit.agrees)
-                    {
+                    if models.iter().any(|o| !o.weighed) {
                         " (by BIC, of the models predicting the regime seen)"
                     } else {
                         " (by BIC)"
