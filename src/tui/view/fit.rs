@@ -331,10 +331,11 @@ fn model_choice_lines(models: &[fit::Candidate], lines: &mut Ranked<'static>, th
                 Span::styled("the data support ", theme.dim),
                 Span::styled(g.text(&name(c)), theme.info),
                 Span::styled(
-                    if models.iter().any(|o| !o.weighed) {
-                        " (by BIC, of the models predicting the regime seen)"
-                    } else {
-                        " (by BIC)"
+                    match models.iter().filter(|o| !o.weighed).count() {
+                        0 => " (by BIC)".to_string(),
+                        n => format!(
+                            " (by BIC; {n} larger left out: they predict a regime not seen)"
+                        ),
                     },
                     theme.dim,
                 ),
@@ -365,7 +366,7 @@ fn model_choice_lines(models: &[fit::Candidate], lines: &mut Ranked<'static>, th
     for c in models {
         lines.push((0, super::models::row(c, theme)));
     }
-    if let Some(text) = super::models::legend(models) {
+    for text in super::models::legend(models) {
         lines.push((0, Line::from(Span::styled(text, theme.dim))));
     }
 }

@@ -27,14 +27,24 @@ pub(super) fn symbol(parameter: &str, theme: &Theme) -> String {
     }
 }
 
-/// The legend of the marks, or `None` when no row is marked `?`.
-pub(super) fn legend(models: &[Candidate]) -> Option<&'static str> {
+/// The legend of the marks `?` and `-` that some row has.
+pub(super) fn legend(models: &[Candidate]) -> Vec<&'static str> {
     let undetermined = models.iter().any(|c| !c.determined());
-    undetermined.then_some("? = a value these data do not determine (never the model named)")
+    let unweighed = models.iter().any(|c| !c.weighed);
+    [
+        undetermined.then_some("? = a value these data do not determine (never the model named)"),
+        unweighed.then_some(
+            "- = predicts a regime not seen, a smaller model inside it the one seen: not weighed",
+        ),
+    ]
+    .into_iter()
+    .flatten()
+    .collect()
 }
 
-/// One candidate: its mark (`*` the model the data support, `?` a value not
-/// determined), its free values, BIC and AIC.
+/// One candidate: its mark (`*` the model the data support, `-` not weighed for
+/// the regime it predicts, `?` a value not determined), its free values, BIC and
+/// AIC.
 pub(super) fn row(c: &Candidate, theme: &Theme) -> Line<'static> {
     let g = theme.glyphs;
     let names: Vec<String> = c
@@ -42,10 +52,11 @@ pub(super) fn row(c: &Candidate, theme: &Theme) -> Line<'static> {
         .iter()
         .map(|e| symbol(e.parameter, theme))
         .collect();
-    let mark = match (c.supported, c.determined()) {
-        (true, _) => "* ",
-        (false, true) => "  ",
-        (false, false) => "? ",
+    let mark = match (c.supported, c.weighed, c.determined()) {
+        (true, _, _) => "* ",
+        (false, false, _) => "- ",
+        (false, true, true) => "  ",
+        (false, true, false) => "? ",
     };
     Line::from(vec![
         Span::styled(mark, theme.info),
@@ -64,10 +75,10 @@ pub(super) fn lines(app: &App, theme: &Theme) -> (Vec<Line<'static>>, u16) {
         "* = the model the data support",
         theme.dim,
     )));
-    if let Some(text) = legend(&f.models) {
+    for text in legend(&f.models) {
         lines.push(Line::from(Span::styled(text, theme.dim)));
     }
-    (lines, 70)
+    (lines, 86)
 }
 
 impl Component for Models {
@@ -90,5 +101,57 @@ impl Component for Models {
             buf,
             cx.theme,
         );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::study::fit::{self, Estimate};
+    use crate::tui::theme::Glyphs;
+
+    /// A determined candidate of `free` values, supported and weighed as given.
+    fn candidate(free: &[&'static str], supported: bool, weighed: bool) -> Candidate {
+        Candidate {
+            name: free.join("+"),
+            parameters: free
+                .iter()
+                .map(|&parameter| Estimate {
+                    parameter,
+                    value: 0.5,
+                    se: Some(0.01),
+                    not_determined: None,
+                })
+                .collect(),
+            rms: 0.001,
+            points: 30,
+            residuals: 30,
+            effective_points: 24.0,
+            aic: 1.0,
+            bic: 1.0,
+            supported,
+            weighed,
+            free: Vec::new(),
+            fit: Box::new(fit::blank_fit()),
+        }
+    }
+
+    #[test]
+    fn a_model_not_weighed_is_marked_and_the_mark_explained() {
+        let theme = Theme::new(Glyphs::new(true), true);
+        let named = candidate(&["mu", "v0"], true, true);
+        let left = candidate(&["mu", "v0", "restitution"], false, false);
+        assert!(row(&named, &theme).to_string().starts_with("* "));
+        assert!(row(&left, &theme).to_string().starts_with("- "));
+        let marks = legend(&[left.clone(), named.clone()]);
+        assert_eq!(marks.len(), 1, "{marks:?}");
+        assert!(
+            marks[0].starts_with("- = predicts a regime not seen"),
+            "{marks:?}"
+        );
+        // Every model weighed: no mark, no legend.
+        let weighed = candidate(&["mu", "v0", "restitution"], false, true);
+        assert!(row(&weighed, &theme).to_string().starts_with("  "));
+        assert!(legend(&[weighed, named]).is_empty());
     }
 }
