@@ -87,8 +87,8 @@ pub(super) fn table(models: &[Candidate], positions: bool) -> String {
     out
 }
 
-/// Below the models table: the model named (or why none is), and each model with a
-/// lower BIC left unweighed for predicting a regime other than the one seen.
+/// Below the models table: the model named (or why none is), and each model left
+/// unweighed for its verdict (`Candidate::weighed`).
 fn named(models: &[Candidate], names: &dyn Fn(&Candidate) -> String) -> String {
     let mut out = String::new();
     let unweighed: Vec<&Candidate> = models.iter().filter(|c| !c.weighed).collect();
@@ -109,7 +109,7 @@ fn named(models: &[Candidate], names: &dyn Fn(&Candidate) -> String) -> String {
                 .unwrap_or(&models[0]);
             let _ = writeln!(
                 out,
-                "  no model is named: the lowest BIC of those{of_weighed} is {}'s, and no model within 2 of it has every value determined",
+                "  no model is named: the lowest BIC of those{of_weighed} is {}'s, and no{of_weighed} model within 2 of it has every value determined",
                 names(best)
             );
         }
@@ -118,7 +118,7 @@ fn named(models: &[Candidate], names: &dyn Fn(&Candidate) -> String) -> String {
     for o in unweighed {
         let _ = writeln!(
             out,
-            "  {} is not weighed: it predicts {} where the data show {}, and a smaller model inside it predicts what they show (its BIC {:.1})",
+            "  {} is not weighed: it predicts {} where the data show {} after its sliding phase, and a smaller model inside it agrees with the data (its BIC {:.1})",
             names(o),
             o.fit.regime_predicted.name(),
             o.fit.regime_observed.name(),
@@ -241,7 +241,7 @@ mod tests {
             "{out}"
         );
         assert!(
-            out.contains("mu+v0+restitution is not weighed: it predicts recollide where the data show rest, and a smaller model inside it predicts what they show (its BIC 98.0)"),
+            out.contains("mu+v0+restitution is not weighed: it predicts recollide where the data show rest after its sliding phase, and a smaller model inside it agrees with the data (its BIC 98.0)"),
             "{out}"
         );
         // Where the smaller one disagrees, nothing is left out and the BIC decides:

@@ -70,8 +70,8 @@ pub struct Candidate {
     pub bic: f64,
     /// True for the model named as the simplest the data support.
     pub supported: bool,
-    /// False for a model left out of the choice: it predicts a regime other than the
-    /// one seen where a simpler model inside it predicts that one ([`weighed`]).
+    /// False for a model left out of the choice: its verdict disagrees with the data
+    /// (μ_k determined) where a determined model inside it agrees ([`weighed`]).
     pub weighed: bool,
     /// Its free values.
     #[serde(skip)]
@@ -91,13 +91,13 @@ impl Candidate {
     }
 }
 
-/// The model the data support among `models`: of those [`weighed`], the simplest
+/// The model the data support among `models`: of those weighed (their flag, set by
+/// [`mark`]), the simplest
 /// whose values are all determined and whose BIC is within [`BIC_MARGIN`] of the
 /// lowest (a lower BIC bought with a value on its bound still counts: then no model
 /// may be named).
 pub(crate) fn supported(models: &[Candidate]) -> Option<usize> {
-    let weighed = weighed(models);
-    let counted = |i: usize| weighed.get(i).copied().unwrap_or(true);
+    let counted = |i: usize| models.get(i).is_none_or(|c| c.weighed);
     let best = models
         .iter()
         .enumerate()
@@ -117,15 +117,23 @@ pub(crate) fn supported(models: &[Candidate]) -> Option<usize> {
         .map(|(i, _)| i)
 }
 
-/// Which of `models` the choice weighs: all but those predicting a regime other than
-/// the one seen where a determined model inside them (its free values a part of
-/// theirs) predicts that one. Their lower BIC is bought by the values added, which
-/// take the model to another regime than what was seen (e freed to 0.85–0.93 where a
+/// Which of `models` the choice weighs: all but those whose verdict disagrees with
+/// the data (μ_k determined, the regime predicted not the one the data show after the
+/// model's own sliding phase) where a determined model inside them (its free values
+/// a part of theirs) agrees. Their lower BIC is bought by the values added, which
+/// take the model to a motion the data do not show (e freed to 0.85–0.93 where a
 /// heavily compressed clip's frames lag the ball near its turn: the small looks 99
-/// and 130 then predicted a recollision where the balls stopped). The simplest
+/// and 130 then predicted a recollision where the balls had stopped). The simplest
 /// model's verdict is never so decided: a model is only ever left out for a smaller
 /// one's, and the smaller one agrees by itself.
 pub fn weighed(models: &[Candidate]) -> Vec<bool> {
+    weighed_by(models, &|_| true)
+}
+
+/// [`weighed`], only the models `witness` passes counted as the smaller ones inside
+/// (a set `fit --free` asked for beside the usual candidates is none: what a user
+/// asks does not change the choice).
+fn weighed_by(models: &[Candidate], witness: &dyn Fn(&Candidate) -> bool) -> Vec<bool> {
     let names = |c: &Candidate| c.parameters.iter().map(|e| e.parameter).collect::<Vec<_>>();
     let inside = |small: &Candidate, large: &Candidate| {
         let large = names(large);
@@ -135,15 +143,29 @@ pub fn weighed(models: &[Candidate]) -> Vec<bool> {
                 .iter()
                 .all(|e| large.contains(&e.parameter))
     };
+    let disagrees = |c: &Candidate| !c.fit.agrees && c.fit.undetermined(Free::Mu.name()).is_none();
     models
         .iter()
         .map(|c| {
-            c.fit.agrees
+            !disagrees(c)
                 || !models
                     .iter()
-                    .any(|y| y.fit.agrees && y.determined() && inside(y, c))
+                    .any(|y| witness(y) && y.fit.agrees && y.determined() && inside(y, c))
         })
         .collect()
+}
+
+/// Marks which of `models` are weighed ([`weighed_by`] `witness`) and the one the
+/// data support ([`supported`]).
+pub(super) fn mark(models: &mut [Candidate], witness: &dyn Fn(&Candidate) -> bool) {
+    let counted = weighed_by(models, witness);
+    for (c, w) in models.iter_mut().zip(counted) {
+        c.weighed = w;
+        c.supported = false;
+    }
+    if let Some(c) = supported(models).and_then(|i| models.get_mut(i)) {
+        c.supported = true;
+    }
 }
 
 /// BIC difference below which a larger model is not preferred.
@@ -301,13 +323,7 @@ pub(super) fn candidates_within(
     for ((free, s), (r, _)) in fitted.iter().zip(&scored) {
         out.push(candidate(free, s, cost(r), r.len(), n_eff));
     }
-    let counted = weighed(&out);
-    for (c, w) in out.iter_mut().zip(counted) {
-        c.weighed = w;
-    }
-    if let Some(c) = supported(&out).and_then(|i| out.get_mut(i)) {
-        c.supported = true;
-    }
+    mark(&mut out, &|_| true);
     Ok(out)
 }
 
@@ -586,6 +602,13 @@ mod tests {
         assert_eq!(supported(&models), None);
     }
 
+    /// The index of the model named among `models`, each weighed as `fit` weighs it.
+    fn chosen(models: &[Candidate]) -> Option<usize> {
+        let mut models = models.to_vec();
+        mark(&mut models, &|_| true);
+        models.iter().position(|c| c.supported)
+    }
+
     /// With `agrees` (its predicted regime the observed one) set as given.
     fn agreeing(mut c: Candidate, agrees: bool) -> Candidate {
         c.fit.agrees = agrees;
@@ -602,17 +625,17 @@ mod tests {
         // where the balls were seen to stop).
         let models = [mu(true), mu_e(-10.0, false)];
         assert_eq!(weighed(&models), [true, false]);
-        assert_eq!(supported(&models), Some(0));
+        assert_eq!(chosen(&models), Some(0));
         // Both agree, or neither: the BIC decides as before.
-        assert_eq!(supported(&[mu(true), mu_e(-10.0, true)]), Some(1));
-        assert_eq!(supported(&[mu(true), mu_e(-1.0, true)]), Some(0));
-        assert_eq!(supported(&[mu(false), mu_e(-10.0, false)]), Some(1));
+        assert_eq!(chosen(&[mu(true), mu_e(-10.0, true)]), Some(1));
+        assert_eq!(chosen(&[mu(true), mu_e(-1.0, true)]), Some(0));
+        assert_eq!(chosen(&[mu(false), mu_e(-10.0, false)]), Some(1));
         // Only the larger agrees: the smaller is weighed still (nothing inside it
         // agrees), and named where the BIC says so: its DISAGREES stands.
         let models = [mu(false), mu_e(-1.0, true)];
         assert_eq!(weighed(&models), [true, true]);
-        assert_eq!(supported(&models), Some(0));
-        assert_eq!(supported(&[mu(false), mu_e(5.0, true)]), Some(0));
+        assert_eq!(chosen(&models), Some(0));
+        assert_eq!(chosen(&[mu(false), mu_e(5.0, true)]), Some(0));
         // A model beside, not inside: μ + c_rr agreeing leaves μ + e weighed.
         let mu_c = agreeing(
             model(&[("mu", true), ("rolling_resistance", true)], 0.0),
@@ -623,6 +646,24 @@ mod tests {
         // The smaller one inside has a value not determined: it leaves nothing out.
         let undetermined = agreeing(model(&[("mu", false)], 0.0), true);
         assert_eq!(weighed(&[undetermined, mu_e(-10.0, false)]), [true, true]);
+        // A model whose μ_k is not determined has no verdict: never left out for one.
+        let mut no_mu = mu_e(-10.0, false);
+        if let Some(e) = no_mu.parameters.first_mut() {
+            e.not_determined = Some(NotIdentified {
+                parameter: "mu",
+                reason: "on the edge".into(),
+                on_edge_of: None,
+            });
+        }
+        no_mu.fit.not_identified = no_mu.parameters[0].not_determined.iter().cloned().collect();
+        assert_eq!(weighed(&[mu(true), no_mu]), [true, true]);
+        // A smaller model that is no witness (a set `fit --free` asked for) leaves
+        // nothing out.
+        let models = [mu(true), mu_e(-10.0, false)];
+        assert_eq!(
+            weighed_by(&models, &|c| c.parameters.len() > 1),
+            [true, true]
+        );
     }
 
     #[test]

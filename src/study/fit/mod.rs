@@ -120,10 +120,15 @@ pub fn fit_all(
     let same = |a: &[Free], b: &[Free]| a.len() == b.len() && a.iter().all(|f| b.contains(f));
     let mut sets = choice::candidates(m, ask.v0_measured);
     let simplest = sets.first().cloned().unwrap_or_default();
-    if let Some(f) = free.filter(|f| !sets.iter().any(|s| same(s, f))) {
+    let extra = free.filter(|f| !sets.iter().any(|s| same(s, f)));
+    if let Some(f) = extra {
         sets.push(f.to_vec());
     }
     let mut models = choice::candidates_within(scene, m, sets, &mut evals)?;
+    // A set asked for beside the usual ones witnesses no model's leaving out.
+    if let Some(f) = extra {
+        choice::mark(&mut models, &|c| !same(&c.free, f));
+    }
     choice::by_bic(&mut models);
     let find = |f: &[Free]| models.iter().find(|c| same(&c.free, f));
     let (head, chosen) = match free {

@@ -334,7 +334,7 @@ fn model_choice_lines(models: &[fit::Candidate], lines: &mut Ranked<'static>, th
                     match models.iter().filter(|o| !o.weighed).count() {
                         0 => " (by BIC)".to_string(),
                         n => format!(
-                            " (by BIC; {n} larger left out: they predict a regime not seen)"
+                            " (by BIC; {n} left out: they predict a regime the data do not show)"
                         ),
                     },
                     theme.dim,

@@ -34,7 +34,7 @@ pub(super) fn legend(models: &[Candidate]) -> Vec<&'static str> {
     [
         undetermined.then_some("? = a value these data do not determine (never the model named)"),
         unweighed.then_some(
-            "- = predicts a regime not seen, a smaller model inside it the one seen: not weighed",
+            "- = predicts a regime the data do not show, a smaller model inside it agrees: not weighed",
         ),
     ]
     .into_iter()
@@ -146,7 +146,7 @@ mod tests {
         let marks = legend(&[left.clone(), named.clone()]);
         assert_eq!(marks.len(), 1, "{marks:?}");
         assert!(
-            marks[0].starts_with("- = predicts a regime not seen"),
+            marks[0].starts_with("- = predicts a regime the data do not show"),
             "{marks:?}"
         );
         // Every model weighed: no mark, no legend.
