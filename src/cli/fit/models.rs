@@ -180,46 +180,19 @@ mod tests {
     use crate::physics::derived::Regime;
 
     /// A determined candidate of `free` values at `bic`, its predicted regime
-    /// `predicted` where the data show them at rest; weighed and supported as
-    /// `study::fit` decides it.
+    /// `predicted` where the data show them at rest.
     fn candidate(free: &[&'static str], bic: f64, predicted: Regime) -> Candidate {
-        let mut fit = crate::study::fit::blank_fit();
-        fit.regime_predicted = predicted;
-        fit.regime_observed = Regime::Rest;
-        fit.agrees = predicted == Regime::Rest;
-        Candidate {
-            name: free.join("+"),
-            parameters: free
-                .iter()
-                .map(|&parameter| fit::Estimate {
-                    parameter,
-                    value: 0.5,
-                    se: Some(0.01),
-                    not_determined: None,
-                })
-                .collect(),
-            rms: 0.001,
-            points: 30,
-            residuals: 30,
-            effective_points: 24.0,
-            aic: bic,
-            bic,
-            supported: false,
-            weighed: true,
-            free: Vec::new(),
-            fit: Box::new(fit),
-        }
+        let values: Vec<(&'static str, bool)> = free.iter().map(|&p| (p, true)).collect();
+        let mut c = fit::blank_candidate(&values, bic);
+        c.fit.regime_predicted = predicted;
+        c.fit.regime_observed = Regime::Rest;
+        c.fit.agrees = predicted == Regime::Rest;
+        c
     }
 
     /// `models` weighed and the one supported marked, as `fit` marks them.
     fn chosen(mut models: Vec<Candidate>) -> Vec<Candidate> {
-        let w = fit::weighed(&models);
-        for (c, w) in models.iter_mut().zip(w) {
-            c.weighed = w;
-        }
-        if let Some(i) = fit::supported(&models) {
-            models[i].supported = true;
-        }
+        fit::mark(&mut models, &|_| true);
         models
     }
 

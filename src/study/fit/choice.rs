@@ -125,15 +125,10 @@ pub(crate) fn supported(models: &[Candidate]) -> Option<usize> {
 /// heavily compressed clip's frames lag the ball near its turn: the small looks 99
 /// and 130 then predicted a recollision where the balls had stopped). The simplest
 /// model's verdict is never so decided: a model is only ever left out for a smaller
-/// one's, and the smaller one agrees by itself.
-pub fn weighed(models: &[Candidate]) -> Vec<bool> {
-    weighed_by(models, &|_| true)
-}
-
-/// [`weighed`], only the models `witness` passes counted as the smaller ones inside
-/// (a set `fit --free` asked for beside the usual candidates is none: what a user
-/// asks does not change the choice).
-fn weighed_by(models: &[Candidate], witness: &dyn Fn(&Candidate) -> bool) -> Vec<bool> {
+/// one's, and the smaller one agrees by itself. Only the models `witness` passes
+/// count as the smaller ones inside (a set `fit --free` asked for beside the usual
+/// candidates is none: what a user asks does not change the choice).
+fn weighed(models: &[Candidate], witness: &dyn Fn(&Candidate) -> bool) -> Vec<bool> {
     let names = |c: &Candidate| c.parameters.iter().map(|e| e.parameter).collect::<Vec<_>>();
     let inside = |small: &Candidate, large: &Candidate| {
         let large = names(large);
@@ -155,10 +150,10 @@ fn weighed_by(models: &[Candidate], witness: &dyn Fn(&Candidate) -> bool) -> Vec
         .collect()
 }
 
-/// Marks which of `models` are weighed ([`weighed_by`] `witness`) and the one the
+/// Marks which of `models` are weighed ([`weighed`] by `witness`) and the one the
 /// data support ([`supported`]).
-pub(super) fn mark(models: &mut [Candidate], witness: &dyn Fn(&Candidate) -> bool) {
-    let counted = weighed_by(models, witness);
+pub(crate) fn mark(models: &mut [Candidate], witness: &dyn Fn(&Candidate) -> bool) {
+    let counted = weighed(models, witness);
     for (c, w) in models.iter_mut().zip(counted) {
         c.weighed = w;
         c.supported = false;
@@ -549,12 +544,15 @@ fn candidate(free: &[Free], s: &Scored, cost: f64, n: usize, n_eff: f64) -> Cand
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
 
-    fn model(parameters: &[(&'static str, bool)], bic: f64) -> Candidate {
+    /// A candidate of `parameters` (each determined or on the edge of its range) at
+    /// `bic`, weighed, not supported, its fit a fit of nothing (it agrees); named by
+    /// its values joined by `+`.
+    pub(crate) fn model(parameters: &[(&'static str, bool)], bic: f64) -> Candidate {
         Candidate {
-            name: String::new(),
+            name: parameters.iter().map(|p| p.0).collect::<Vec<_>>().join("+"),
             parameters: parameters
                 .iter()
                 .map(|&(parameter, determined)| Estimate {
@@ -624,7 +622,7 @@ mod tests {
         // predicting that one: μ alone is named (small looks 99, 130: e 0.85–0.92
         // where the balls were seen to stop).
         let models = [mu(true), mu_e(-10.0, false)];
-        assert_eq!(weighed(&models), [true, false]);
+        assert_eq!(weighed(&models, &|_| true), [true, false]);
         assert_eq!(chosen(&models), Some(0));
         // Both agree, or neither: the BIC decides as before.
         assert_eq!(chosen(&[mu(true), mu_e(-10.0, true)]), Some(1));
@@ -633,7 +631,7 @@ mod tests {
         // Only the larger agrees: the smaller is weighed still (nothing inside it
         // agrees), and named where the BIC says so: its DISAGREES stands.
         let models = [mu(false), mu_e(-1.0, true)];
-        assert_eq!(weighed(&models), [true, true]);
+        assert_eq!(weighed(&models, &|_| true), [true, true]);
         assert_eq!(chosen(&models), Some(0));
         assert_eq!(chosen(&[mu(false), mu_e(5.0, true)]), Some(0));
         // A model beside, not inside: μ + c_rr agreeing leaves μ + e weighed.
@@ -642,10 +640,13 @@ mod tests {
             true,
         );
         let models = [mu(false), mu_c, mu_e(-10.0, false)];
-        assert_eq!(weighed(&models), [true, true, true]);
+        assert_eq!(weighed(&models, &|_| true), [true, true, true]);
         // The smaller one inside has a value not determined: it leaves nothing out.
         let undetermined = agreeing(model(&[("mu", false)], 0.0), true);
-        assert_eq!(weighed(&[undetermined, mu_e(-10.0, false)]), [true, true]);
+        assert_eq!(
+            weighed(&[undetermined, mu_e(-10.0, false)], &|_| true),
+            [true, true]
+        );
         // A model whose μ_k is not determined has no verdict: never left out for one.
         let mut no_mu = mu_e(-10.0, false);
         if let Some(e) = no_mu.parameters.first_mut() {
@@ -656,14 +657,11 @@ mod tests {
             });
         }
         no_mu.fit.not_identified = no_mu.parameters[0].not_determined.iter().cloned().collect();
-        assert_eq!(weighed(&[mu(true), no_mu]), [true, true]);
+        assert_eq!(weighed(&[mu(true), no_mu], &|_| true), [true, true]);
         // A smaller model that is no witness (a set `fit --free` asked for) leaves
         // nothing out.
         let models = [mu(true), mu_e(-10.0, false)];
-        assert_eq!(
-            weighed_by(&models, &|c| c.parameters.len() > 1),
-            [true, true]
-        );
+        assert_eq!(weighed(&models, &|c| c.parameters.len() > 1), [true, true]);
     }
 
     #[test]

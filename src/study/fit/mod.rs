@@ -19,6 +19,9 @@ mod choice;
 mod least_squares;
 mod line;
 mod model;
+/// A candidate model of given values, for tests of what is made from the models.
+#[cfg(test)]
+pub(crate) use choice::tests::model as blank_candidate;
 /// A fit of nothing, for tests of what is made from fits.
 #[cfg(test)]
 pub(crate) use model::tests::blank as blank_fit;
@@ -36,8 +39,8 @@ use crate::study::measured::series::Measured;
 
 pub use approach::{APPROACH_FRAMES, Approach, of_velocities};
 #[cfg(test)]
-pub(crate) use choice::supported;
-pub use choice::{Candidate, Estimate, compare_candidates, compare_models, weighed};
+pub(crate) use choice::mark;
+pub use choice::{Candidate, Estimate, compare_candidates, compare_models};
 pub use line::{
     Line, LineFit, PAPER_TABLE, PaperDisagreement, WidthFromLines, line, line_fit,
     paper_disagreements, paper_row, sliding_window,

@@ -107,32 +107,16 @@ impl Component for Models {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::study::fit::{self, Estimate};
+    use crate::study::fit;
     use crate::tui::theme::Glyphs;
 
     /// A determined candidate of `free` values, supported and weighed as given.
     fn candidate(free: &[&'static str], supported: bool, weighed: bool) -> Candidate {
+        let values: Vec<(&'static str, bool)> = free.iter().map(|&p| (p, true)).collect();
         Candidate {
-            name: free.join("+"),
-            parameters: free
-                .iter()
-                .map(|&parameter| Estimate {
-                    parameter,
-                    value: 0.5,
-                    se: Some(0.01),
-                    not_determined: None,
-                })
-                .collect(),
-            rms: 0.001,
-            points: 30,
-            residuals: 30,
-            effective_points: 24.0,
-            aic: 1.0,
-            bic: 1.0,
             supported,
             weighed,
-            free: Vec::new(),
-            fit: Box::new(fit::blank_fit()),
+            ..fit::blank_candidate(&values, 1.0)
         }
     }
 
