@@ -78,7 +78,7 @@ pub(super) fn lines(app: &App, theme: &Theme) -> (Vec<Line<'static>>, u16) {
     for text in legend(&f.models) {
         lines.push(Line::from(Span::styled(text, theme.dim)));
     }
-    (lines, 86)
+    (lines, 92)
 }
 
 impl Component for Models {
