@@ -223,6 +223,30 @@ fn part_of(b: &Blob, m: &Blob, f: f64, share: f64) -> bool {
         && b.width() < share * m.width()
 }
 
+/// How many things a frame shows: the blobs that differ from the background
+/// (`differing`), and the luma look's blobs (`luma`) outside them; luma blobs whose
+/// middles lie in one differing blob (give or take a coarse pixel, `f` px) are parts
+/// of that one thing. Never more than the more numerous look's blobs. A coloured
+/// ball's cast shadow on a plain wall of its brightness is a dark blob of the luma
+/// look beside its shaded limb, its middle over the ball's edge (not within the
+/// ball's own blob): the blob where ball and shadow differ takes in both (full look
+/// 105: 95 of 106 frames crowded by the two balls and their shadows).
+pub fn things_seen(luma: &[Blob], differing: &[Blob], f: f64) -> usize {
+    let within = |b: &Blob, m: &Blob| {
+        let g = b.guess();
+        (m.left - f..=m.right + f).contains(&g.x) && (m.top - f..=m.bottom + f).contains(&g.y)
+    };
+    let holding = differing
+        .iter()
+        .filter(|m| luma.iter().any(|b| within(b, m)))
+        .count();
+    let apart = luma
+        .iter()
+        .filter(|b| !differing.iter().any(|m| within(b, m)))
+        .count();
+    (holding + apart).max(differing.len())
+}
+
 /// Least standard error of a centre matched to its ball's stacked picture, px:
 /// the match's own from the pixels' noise is some 0.02–0.04 px, but its centres
 /// lie 0.1–0.5 px from the drawn ones on the looks table (the picture blurred by
@@ -380,8 +404,7 @@ impl Tracker {
                 .copied()
                 .collect();
             coarse.balls.retain(|b| !whole.iter().any(|m| part(b, m)));
-            crowded = coarse.balls.len() > 2;
-            crowded |= more.balls.len() > 2;
+            crowded = things_seen(&coarse.balls, &more.balls, f) > 2;
             coarse.balls.extend(more.balls);
             coarse.pairs.extend(more.pairs);
         }
