@@ -353,6 +353,21 @@ pub struct Params {
     /// 640 px wide (the background learned at full resolution): there, at 20 px,
     /// circles about small look 5's checker squares took its first locks.
     pub colour_own_radius: f64,
+    /// Once the balls' radius is known, a coloured ball's outline in colour is
+    /// taken where its outline in brightness is not a ball's, whatever the ball's
+    /// brightness against the wall, when the outline in colour scatters by at most
+    /// this many px RMS about its circle and is a ball's (as `colour_own_radius`
+    /// asks: its radius, on frames 640 px wide or more); 0 never. Default 1.0 (a
+    /// clear outline's `max_rms`): full look 33 (magenta balls of 27.6 px on a
+    /// checker of their brightness under uneven light, 480p at crf 32) differs from
+    /// the wall about it by 17–22 levels in brightness in places, so it was not "of
+    /// the wall's brightness", and its outlines in brightness scattered 1.1–1.4 px
+    /// through the checker's edges: neither ball found in a third of its frames.
+    /// Its outlines in colour scatter 0.8–1.1 px within a pixel of the truth. At
+    /// any scatter a shaped outline in colour allows (2 px) full look 1 went to a
+    /// μ_k 0.016 low; before the radius is known, full looks 38 and 39 lost their
+    /// first locks.
+    pub colour_over_poor_rms: f64,
     /// Most the balls' fitted radius may exceed their stacked pictures'
     /// (`Tracker::picture_radii`), as a ratio. Default 1.18: the pictures'
     /// outlines lay up to 15 % inside the drawn balls on the looks table (a limb
@@ -648,6 +663,7 @@ impl Default for Params {
             stack_edge: 0.05,
             stack_max_rms: 1.25,
             colour_own_radius: 20.0,
+            colour_over_poor_rms: 1.0,
             picture_ratio: 1.18,
             max_radius_spread: 0.05,
             difference_first: false,

@@ -1328,13 +1328,18 @@ impl Tracker {
             return o;
         }
         // A coloured ball on a wall of its brightness: its outline in brightness
-        // is the wall's pattern, its outline in colour its own.
+        // is the wall's pattern, its outline in colour its own. Once the radius is
+        // known, any coloured ball whose outline in brightness is poor takes a
+        // clear outline in colour (`colour_over_poor_rms`): a wall of its
+        // brightness in places, darker or lighter in others, is as much its
+        // outline's pattern.
         let coarse = self.background.as_ref().is_some_and(|b| b.image.factor > 1);
         let walls_own = |q: &OutlineFound| {
             coarse
                 && q.outline.circle.r >= p.colour_own_radius
                 && !self.shaped(&o, p, false)
-                && of_the_walls_brightness(frame, &guess, p)
+                && ((self.radius().is_some() && q.outline.rms <= p.colour_over_poor_rms)
+                    || of_the_walls_brightness(frame, &guess, p))
         };
         let clear_and_apart = |q: &OutlineFound| {
             q.outline.rms <= p.colour_clear_rms
