@@ -226,7 +226,9 @@ fn part_of(b: &Blob, m: &Blob, f: f64, share: f64) -> bool {
 /// How many things a frame shows: the blobs that differ from the background
 /// (`differing`), and the luma look's blobs (`luma`) outside them; luma blobs whose
 /// middles lie in one differing blob (give or take a coarse pixel, `f` px) are parts
-/// of that one thing. Never more than the more numerous look's blobs. A coloured
+/// of that one thing. Never fewer than the differing blobs, nor more than the more
+/// numerous look's blobs (boxes of differing blobs may overlap, a luma blob's middle
+/// then in two): no frame is more crowded than either look alone says. A coloured
 /// ball's cast shadow on a plain wall of its brightness is a dark blob of the luma
 /// look beside its shaded limb, its middle over the ball's edge (not within the
 /// ball's own blob): the blob where ball and shadow differ takes in both (full look
@@ -244,7 +246,7 @@ pub fn things_seen(luma: &[Blob], differing: &[Blob], f: f64) -> usize {
         .iter()
         .filter(|b| !differing.iter().any(|m| within(b, m)))
         .count();
-    (holding + apart).max(differing.len())
+    (holding + apart).clamp(differing.len(), luma.len().max(differing.len()))
 }
 
 /// Least standard error of a centre matched to its ball's stacked picture, px:
