@@ -429,6 +429,13 @@ pub struct Params {
     /// the edge's own scatter, and the fit with the edge's points is kept. Infinite:
     /// never refitted.
     pub rail_moves: f64,
+    /// How far outside the circle the rest of a ball's edge points give its cast
+    /// shadow's edge points lie, px (their median), for them to be left out
+    /// (`circle::fit_keeping`; a point is the shadow's where its inside is the wall
+    /// in shadow, `tracker::in_the_walls_shadow`). Default 1.5: past a blurred
+    /// edge's own scatter; small looks 135 and 156 (steel balls of 14 px beside
+    /// shadows a quarter of a radius out), 3–6 px. Infinite: never left out.
+    pub shadow_outside: f64,
     /// The ball's edge in colour (`circle::colour_offset`): sought between this many
     /// px inside and outside the outline (default 5: a lit part of a dozen-pixel
     /// ball lies 3–4 px inside its edge), where the colour there differs by at least
@@ -673,6 +680,7 @@ impl Default for Params {
             edge_systematic: 0.05,
             edge_lean: 3.0,
             rail_moves: 0.05,
+            shadow_outside: 1.5,
             colour_edge_reach: 6.0,
             colour_edge_step: 12.0,
             colour_edge_within: 1.0,

@@ -1216,14 +1216,14 @@ impl Tracker {
                 && o.outline.rms <= p.sharp_rms
                 && known.is_some_and(|r| (o.outline.circle.r - r).abs() < p.sharp_radius * r)
         };
-        let o = match self.outline(&frame.luma, guess, band, self.polarity) {
+        let o = match self.outline(frame, guess, band, self.polarity) {
             Some(o) if o.outline.coverage() >= p.min_coverage || sharp(&o) => o,
             // Too little outline of one sign: a ball on a wall of its brightness,
             // brighter than part of the wall and darker than the rest. Its edge of
             // both signs, else (a ball of the wall's brightness) in colour.
             weak => {
                 let either = (self.polarity != circle::EITHER)
-                    .then(|| self.outline(&frame.luma, guess, band, circle::EITHER))
+                    .then(|| self.outline(frame, guess, band, circle::EITHER))
                     .flatten()
                     .filter(|o| o.outline.coverage() >= p.min_coverage);
                 match (either, weak) {
@@ -1452,7 +1452,7 @@ impl Tracker {
             };
         };
         let band = (0.1 * edge.circle.r).max(2.0);
-        let Some(found) = self.outline(&frame.luma, edge.circle, band, circle::EITHER) else {
+        let Some(found) = self.outline(frame, edge.circle, band, circle::EITHER) else {
             return Outer::Poor;
         };
         let q = found.outline;
@@ -1523,12 +1523,31 @@ impl Tracker {
             .collect()
     }
 
-    /// The outline near `guess` in the frame's luma `img`: in a band `band` px wide,
-    /// then narrowly, the rail edges that hide the ball left out
-    /// (`Tracker::rails_hiding`).
-    fn outline(&self, img: &Gray, guess: Circle, band: f64, polarity: f64) -> Option<OutlineFound> {
+    /// The outline near `guess` in the frame's luma: in a band `band` px wide, then
+    /// narrowly, the rail edges that hide the ball left out
+    /// (`Tracker::rails_hiding`), and its cast shadow's edge where it peeks out
+    /// (`in_the_walls_shadow`, `circle::fit_keeping`).
+    fn outline(
+        &self,
+        frame: &Frame,
+        guess: Circle,
+        band: f64,
+        polarity: f64,
+    ) -> Option<OutlineFound> {
         let rails = self.rails_hiding(&guess);
-        self.outline_by(img, guess, band, polarity, &rails)
+        let bg = self.background.as_ref().map(|b| &b.image);
+        let p = &self.params;
+        // An edge whose inside is the wall in shadow is the ball's cast shadow's
+        // edge, not the ball's: the shadow beside a ball's dark limb makes one dark
+        // ring of the two, and its outer edge a circle larger than the ball.
+        let own = |q: [f64; 2]| {
+            let (dx, dy) = (guess.x - q[0], guess.y - q[1]);
+            let d = dx.hypot(dy).max(1e-9);
+            let inside = (q[0] + SHADOW_INSIDE * dx / d, q[1] + SHADOW_INSIDE * dy / d);
+            bg.is_none_or(|bg| !in_the_walls_shadow(frame, bg, inside, p))
+        };
+        let shadow = (&own as &dyn Fn([f64; 2]) -> bool, p.shadow_outside);
+        self.outline_by(&frame.luma, guess, band, polarity, (&rails, shadow))
     }
 
     /// As [`Tracker::outline`], in any image `img` (a patch about the ball: its own
@@ -1539,11 +1558,11 @@ impl Tracker {
         guess: Circle,
         band: f64,
         polarity: f64,
-        rails: &[circle::StraightEdge],
+        (rails, shadow): (&[circle::StraightEdge], circle::Shadow),
     ) -> Option<OutlineFound> {
-        let rail = self.params.rail_moves;
-        let first = circle::fit(img, guess, band, polarity, rail, rails)?;
-        let o = circle::fit(img, first.circle, 2.5, first.polarity, rail, rails)?;
+        let rail = (self.params.rail_moves, rails);
+        let first = circle::fit_keeping(img, guess, band, polarity, rail, shadow)?;
+        let o = circle::fit_keeping(img, first.circle, 2.5, first.polarity, rail, shadow)?;
         Some(OutlineFound {
             outline: o,
             colour: false,
@@ -1640,7 +1659,8 @@ impl Tracker {
                 slope: l.slope,
             })
             .collect();
-        let mut found = self.outline_by(patch, local, band.max(3.0), 1.0, &rails)?;
+        let mut found =
+            self.outline_by(patch, local, band.max(3.0), 1.0, (&rails, (&|_| true, 0.0)))?;
         found.outline.circle.x += x0 as f64;
         found.outline.circle.y += y0 as f64;
         found.outline.lowest += y0 as f64;
@@ -1966,6 +1986,45 @@ fn chroma_at(frame: &Frame, plane: &[u8], x: f64, y: f64) -> f32 {
     let at = |i: usize, j: usize| plane.get(j * cw + i).map_or(128.0, |&v| f32::from(v));
     (at(i0, j0) * (1.0 - fx) + at(i1, j0) * fx) * (1.0 - fy)
         + (at(i0, j1) * (1.0 - fx) + at(i1, j1) * fx) * fy
+}
+
+/// How far inside an edge point its inside is read for a shadow, px: past the
+/// edge's own blur (a Sobel peak a pixel or two wide).
+const SHADOW_INSIDE: f64 = 2.0;
+
+/// Fewest levels a shadow darkens the wall by: less is the wall's noise.
+const SHADOW_STEP: f32 = 4.0;
+
+/// True when `frame` at `(x, y)` (px) is the background `bg` in shadow: darker by
+/// [`SHADOW_STEP`] levels or more, keeping at least `1 − shadow_darkest` of its
+/// light, its colour the wall's dimmed alike (within `shadow_hue_levels`), as the
+/// looks' shadow test ([`super::background::differences`]).
+pub fn in_the_walls_shadow(frame: &Frame, bg: &Small, (x, y): (f64, f64), p: &Params) -> bool {
+    if !(x >= 0.0 && y >= 0.0) || x >= frame.width() as f64 || y >= frame.height() as f64 {
+        return false;
+    }
+    let f = bg.factor.max(1);
+    let (bx, by) = (x as usize / f, y as usize / f);
+    if bx >= bg.width || by >= bg.height {
+        return false;
+    }
+    let Some(&lit) = bg.y.get(by * bg.width + bx) else {
+        return false;
+    };
+    let luma = frame.luma.get(x as usize, y as usize);
+    let a = (luma - 16.0) / (lit - 16.0).max(1.0);
+    let hue = p.shadow_hue_levels as f32;
+    let dimmed = |plane: &[u8], wall: &[u8]| {
+        let (own, wall) = (
+            chroma_at(frame, plane, x, y) - 128.0,
+            background_colour(bg, wall, (x, y), true) - 128.0,
+        );
+        (own - a * wall).abs() <= hue
+    };
+    luma <= lit - SHADOW_STEP
+        && f64::from(a) >= 1.0 - p.shadow_darkest
+        && dimmed(&frame.u, &bg.u)
+        && dimmed(&frame.v, &bg.v)
 }
 
 /// True when the upper half of the disc `c` (above its centre: the rail hides the

@@ -76,7 +76,8 @@ fn a_lit_part_off_the_balls_edge_in_colour_gives_no_scale() {
 
 /// Small look 6 (a glossy coloured ball on a dark grainy wall): its edge in colour
 /// lies about a pixel inside its outlines (under 10 %): tracked, the radius's ± at
-/// least that far; without the rule the ± is under half of it.
+/// least that far; without the rule the ± is under 0.6 px (0.57 since tracker 43,
+/// whose outlines leave out edges inside which the wall lies in shadow).
 #[test]
 fn an_edge_in_colour_a_pixel_off_widens_the_radius_s_plus_minus() {
     let Some((track, truth)) = look(6) else {
@@ -94,7 +95,7 @@ fn an_edge_in_colour_a_pixel_off_widens_the_radius_s_plus_minus() {
         panic!("tracked without the rule");
     };
     assert!(
-        t.calibration.radius_px_sigma < 0.5,
+        t.calibration.radius_px_sigma < 0.6,
         "without the rule: ± {}",
         t.calibration.radius_px_sigma
     );

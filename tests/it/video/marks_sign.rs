@@ -14,7 +14,13 @@ fn a_highlight_does_not_settle_the_marks_sign() {
     let Some((clip, frames)) = decoded_look("marks_sign", 27, Size::Small) else {
         return;
     };
-    let params = Params::default();
+    // Tracker 43's cast shadow rule left out: with it the steel's shaded limb,
+    // read as the wall in shadow, moves the first outlines, and the votes before
+    // the sign is settled are others (a mechanism this look no longer shows).
+    let params = Params {
+        shadow_outside: f64::INFINITY,
+        ..Params::default()
+    };
     let tracker = vision::track(&frames, params);
     // Each mark kept: its error against the drawn one, px, its frame and contrast.
     let kept = marks_against_truth(&clip, &tracker, &tracker.params.marks);

@@ -5,6 +5,7 @@ pub(crate) mod app;
 pub(crate) mod ball_parts;
 mod band;
 mod black_ball;
+mod cast_shadow;
 mod colour_edge;
 mod coloured_ball;
 mod difference;

@@ -27,7 +27,9 @@ fn found(frames: &[vision::Frame], params: Params) -> ([usize; 2], f64) {
 /// Its first 32 frames: 22 fits of the two balls (17 and 5) and their radius learned
 /// within 8 % (31.2 px for 29.7: the whole clip goes on to the balls' stacked
 /// pictures, 1.25 of its ± off, μ_k 0.160 ± 0.009 for 0.170); without the rule, 10
-/// fits (4 and 6) and the radius 22 % large (36.4 px: circles through the grain).
+/// fits (4 and 6) and the radius 22 % large (36.4 px: circles through the grain;
+/// since tracker 43 leaves out the balls' cast shadows' edges, 11 fits and 10 %
+/// large, past the 8 % the rule is held to).
 #[test]
 fn a_coloured_ball_of_the_walls_brightness_is_its_outline_in_colour() {
     let Some((clip, frames)) = super::decoded_first(
@@ -52,7 +54,7 @@ fn a_coloured_ball_of_the_walls_brightness_is_its_outline_in_colour() {
         },
     );
     assert!(
-        seen[0] + seen[1] < FRAMES / 2 && (r.is_nan() || r > 1.15 * truth),
+        seen[0] + seen[1] < FRAMES / 2 && (r.is_nan() || r > 1.08 * truth),
         "without the rule: fits {seen:?}, radius {r:.2} px for {truth:.2}"
     );
 }
