@@ -465,6 +465,25 @@ impl LevelCounts {
     }
 }
 
+/// Whether brightness and colour `(y, u, v)` (video levels) are the background's
+/// `(by, bu, bv)` dimmed alike, as a shadow dims it: at least `1 − darkest` of its
+/// light (`Params::shadow_darkest`, above black at 16), its colour the background's
+/// scaled by as much within `hue` levels (`Params::shadow_hue_levels`). Whether it
+/// is darker at all is the caller's test. Without branches (`&`, not `&&`), so the
+/// loop over a frame ([`differences`]) vectorises.
+#[inline(always)]
+pub fn dimmed_alike(
+    (y, u, v): (f32, f32, f32),
+    (by, bu, bv): (f32, f32, f32),
+    darkest: f32,
+    hue: f32,
+) -> bool {
+    let a = (y - 16.0) / (by - 16.0).max(1.0);
+    (a >= 1.0 - darkest)
+        & (((u - 128.0) - a * (bu - 128.0)).abs() <= hue)
+        & (((v - 128.0) - a * (bv - 128.0)).abs() <= hue)
+}
+
 /// How much each coarse pixel of `s` differs from the background `bg` (levels:
 /// the larger of the brightness difference and the weighted colour differences; 0
 /// for a shadow: darker by at most [`Params::shadow_darkest`] and of the same hue).
@@ -482,12 +501,7 @@ pub fn differences(s: &Small, bg: &Small, p: &Params) -> Vec<f32> {
         .map(|(((&y, &u), &v), ((&by, &bu), &bv))| {
             let (u, v, bu, bv) = (f32::from(u), f32::from(v), f32::from(bu), f32::from(bv));
             let dy = y - by;
-            let lit = (by - 16.0).max(1.0);
-            let a = (y - 16.0) / lit;
-            let shadow = (dy < 0.0)
-                & (a >= 1.0 - darkest)
-                & (((u - 128.0) - a * (bu - 128.0)).abs() <= hue)
-                & (((v - 128.0) - a * (bv - 128.0)).abs() <= hue);
+            let shadow = (dy < 0.0) & dimmed_alike((y, u, v), (by, bu, bv), darkest, hue);
             let differ = dy.abs().max(cw * (u - bu).abs()).max(cw * (v - bv).abs());
             if shadow { 0.0 } else { differ }
         })

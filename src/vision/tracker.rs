@@ -1996,9 +1996,8 @@ const SHADOW_INSIDE: f64 = 2.0;
 const SHADOW_STEP: f32 = 4.0;
 
 /// True when `frame` at `(x, y)` (px) is the background `bg` in shadow: darker by
-/// [`SHADOW_STEP`] levels or more, keeping at least `1 − shadow_darkest` of its
-/// light, its colour the wall's dimmed alike (within `shadow_hue_levels`), as the
-/// looks' shadow test ([`super::background::differences`]).
+/// [`SHADOW_STEP`] levels or more and dimmed alike, the looks' shadow test
+/// ([`super::background::dimmed_alike`]), its colour read between the samples.
 pub fn in_the_walls_shadow(frame: &Frame, bg: &Small, (x, y): (f64, f64), p: &Params) -> bool {
     if !(x >= 0.0 && y >= 0.0) || x >= frame.width() as f64 || y >= frame.height() as f64 {
         return false;
@@ -2012,19 +2011,15 @@ pub fn in_the_walls_shadow(frame: &Frame, bg: &Small, (x, y): (f64, f64), p: &Pa
         return false;
     };
     let luma = frame.luma.get(x as usize, y as usize);
-    let a = (luma - 16.0) / (lit - 16.0).max(1.0);
-    let hue = p.shadow_hue_levels as f32;
-    let dimmed = |plane: &[u8], wall: &[u8]| {
-        let (own, wall) = (
-            chroma_at(frame, plane, x, y) - 128.0,
-            background_colour(bg, wall, (x, y), true) - 128.0,
-        );
-        (own - a * wall).abs() <= hue
-    };
+    let own = |plane: &[u8]| chroma_at(frame, plane, x, y);
+    let wall = |plane: &[u8]| background_colour(bg, plane, (x, y), true);
     luma <= lit - SHADOW_STEP
-        && f64::from(a) >= 1.0 - p.shadow_darkest
-        && dimmed(&frame.u, &bg.u)
-        && dimmed(&frame.v, &bg.v)
+        && super::background::dimmed_alike(
+            (luma, own(&frame.u), own(&frame.v)),
+            (lit, wall(&bg.u), wall(&bg.v)),
+            p.shadow_darkest as f32,
+            p.shadow_hue_levels as f32,
+        )
 }
 
 /// True when the upper half of the disc `c` (above its centre: the rail hides the
