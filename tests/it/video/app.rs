@@ -41,19 +41,33 @@ fn scratch() -> PathBuf {
     d
 }
 
-/// The small clip as a folder of PNG frames, `…/frames` (made once per test run: its
-/// name is in the screens).
+/// The small clip as a folder of PNG frames, `…/frames` (made once per test process:
+/// its name is in the screens). Never removed and remade: each frame is written
+/// beside it and moved in whole, so a test of another process (`cargo nextest` runs
+/// one per test) reading the folder meanwhile sees every frame, each complete (the
+/// same bytes whoever wrote it last).
 pub fn folder() -> &'static Path {
     static DIR: OnceLock<PathBuf> = OnceLock::new();
     DIR.get_or_init(|| {
         let d = scratch().join("frames");
-        let _ = std::fs::remove_dir_all(&d);
+        let beside = scratch().join(format!("frames-being-written-{}", std::process::id()));
         std::fs::create_dir_all(&d).unwrap();
+        std::fs::create_dir_all(&beside).unwrap();
         let look = look();
         let film = Film::new(&common::paper_scene(), look, 0.4);
+        let name = |k: usize| format!("frame{:04}.png", k + 1);
         for k in 0..FRAMES {
-            let p = d.join(format!("frame{:04}.png", k + 1));
+            let p = beside.join(name(k));
             write::png(&p, &film.rgb(k), look.width, look.height).unwrap();
+            std::fs::rename(&p, d.join(name(k))).unwrap();
+        }
+        let _ = std::fs::remove_dir(&beside);
+        // A longer clip's frames from an older run are no frames of this one.
+        for e in std::fs::read_dir(&d).unwrap().flatten() {
+            let file = e.file_name().to_string_lossy().into_owned();
+            if !(0..FRAMES).any(|k| name(k) == file) {
+                let _ = std::fs::remove_file(e.path());
+            }
         }
         d
     })
