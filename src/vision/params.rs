@@ -305,7 +305,9 @@ pub struct Params {
     pub repeat_window: usize,
     /// Where the ball turns, slows or meets the impact, a run of fits of one place
     /// repeats one picture when the parabola through the fits about it steps by at
-    /// least this many px between each two of its frames (`repeats::turning`).
+    /// least this many px between each two of its frames (`repeats::turning`); a
+    /// fit alone is judged a neighbour's picture only where that parabola steps by
+    /// this much at it (`repeats::lone_copies`).
     /// Default 2, as `repeat_speed`: the heavily compressed looks' B frames copy
     /// their reference's picture where the ball turns (the looks table's seed 11:
     /// three fits of one place, 7.3 and 4.7 px off either side of the one of its

@@ -8,7 +8,9 @@
 //! out (`LeftOut::Repeated`). Only a moving ball tells: a ball at rest repeats its
 //! place by right, so slow stretches are never judged. Where the ball turns, slows
 //! or meets the impact (its motion not one way over the frames either side), a run
-//! is judged against the parabola through the fits about it ([`turning`]).
+//! is judged against the parabola through the fits about it ([`turning`]); a fit
+//! alone whose neighbour's own fit was left out, at the place the parabola gives
+//! that neighbour ([`lone_copies`]).
 
 use super::tracker::{FrameFixes, LeftOut, median};
 
@@ -87,6 +89,88 @@ pub fn turning(path: &[(usize, f64)], impact: Option<usize>, rule: RepeatRule) -
         a = b + 1;
     }
     out
+}
+
+/// The frames of `path` whose fit alone shows the frame before's or after's
+/// picture: a heavily compressed clip's B frame copies its reference's ball where
+/// that frame's own fit was left out (touching the other ball, poor), so no run of
+/// fits of one place shows it ([`repeated`], [`turning`] judge runs). Each fit is
+/// held against the least-squares parabola (in frames) through up to `neighbours`
+/// fits either side within `window` frames on its side of the impact, none within a
+/// frame of it (at least one either side, four in all). Where that parabola steps by
+/// `turn_step` px a frame or more at the fit and misses its own fits by under
+/// `still` of that step (RMS), a fit within `still` of the step of where the
+/// parabola puts the frame before or after, and nearer that place than its own
+/// frame's, is that other frame's picture. The worst is left out first and the rest
+/// judged again.
+pub fn lone_copies(path: &[(usize, f64)], impact: Option<usize>, rule: RepeatRule) -> Vec<usize> {
+    let mut fits = path.to_vec();
+    let mut out = Vec::new();
+    loop {
+        let worst = (0..fits.len())
+            .filter_map(|i| Some((i, copy_of_neighbour(&fits, i, impact, rule)?)))
+            .max_by(|a, b| a.1.total_cmp(&b.1));
+        let Some((i, _)) = worst else { break };
+        if i < fits.len() {
+            out.push(fits.remove(i).0);
+        }
+    }
+    out.sort_unstable();
+    out
+}
+
+/// How far fit `i` of `fits` lies from where the parabola through its neighbours
+/// puts its own frame, in steps of the ball a frame, where it is the picture of the
+/// frame before or after ([`lone_copies`]); `None` otherwise.
+fn copy_of_neighbour(
+    fits: &[(usize, f64)],
+    i: usize,
+    impact: Option<usize>,
+    rule: RepeatRule,
+) -> Option<f64> {
+    let &(k, s) = fits.get(i)?;
+    let near_impact = |j: usize| impact.is_some_and(|m| j.abs_diff(m) <= 1);
+    if near_impact(k) {
+        return None;
+    }
+    let about = |p: &&(usize, f64)| {
+        side(impact, p.0) * side(impact, k) >= 0
+            && !near_impact(p.0)
+            && p.0.abs_diff(k) <= rule.window
+    };
+    let before = fits
+        .get(..i)?
+        .iter()
+        .rev()
+        .filter(about)
+        .take(rule.neighbours);
+    let after = fits
+        .get(i + 1..)?
+        .iter()
+        .filter(about)
+        .take(rule.neighbours);
+    let (before, after): (Vec<_>, Vec<_>) = (before.collect(), after.collect());
+    if before.is_empty() || after.is_empty() || before.len() + after.len() < 4 {
+        return None;
+    }
+    let pts: Vec<(f64, f64)> = before
+        .iter()
+        .chain(&after)
+        .map(|&&(j, place)| (j as f64 - k as f64, place))
+        .collect();
+    let (c0, c1, c2) = parabola(&pts)?;
+    let at = |u: f64| c0 + c1 * u + c2 * u * u;
+    let step = c1.abs();
+    let miss =
+        (pts.iter().map(|&(u, p)| (p - at(u)).powi(2)).sum::<f64>() / pts.len() as f64).sqrt();
+    if step < rule.turn_step || miss >= rule.still * step {
+        return None;
+    }
+    let off = (s - at(0.0)).abs();
+    let copy = [-1.0, 1.0]
+        .iter()
+        .any(|&u| (s - at(u)).abs() <= rule.still * step);
+    (copy && off > 0.5 * step).then_some(off / step)
 }
 
 /// The frames of the run `a..=b` of `path` that `turning` leaves out.
@@ -399,5 +483,34 @@ mod tests {
         assert!(turning(&turning_ball, None, RULE).is_empty());
         let rest: Vec<(usize, f64)> = (0..30).map(|k| (k, 100.0 + 0.01 * k as f64)).collect();
         assert!(turning(&rest, None, RULE).is_empty());
+    }
+
+    /// A ball leaving an impact at frame 10, slowing from 4 px a frame, its fit at
+    /// frame 15 left out (poor) and frame 16 showing frame 15's picture: no run of
+    /// one place shows it, so neither `repeated` nor `turning` leaves it out;
+    /// `lone_copies` does, and only it. Frame 16 half a step off (a fit's scatter
+    /// on a blurred frame, not another frame's place) stays, as does every fit of
+    /// the path without the copy, with a scatter of a tenth of a step, and of a
+    /// ball under `turn_step` a frame.
+    #[test]
+    fn a_lone_fit_showing_its_neighbours_picture_is_left_out() {
+        let place = |k: usize| 200.0 - 4.0 * (k as f64 - 10.0) + 0.05 * (k as f64 - 10.0).powi(2);
+        let path = |shown: &dyn Fn(usize) -> f64| -> Vec<(usize, f64)> {
+            (11..30)
+                .filter(|&k| k != 15)
+                .map(|k| (k, shown(k)))
+                .collect()
+        };
+        let copied = path(&|k| place(if k == 16 { 15 } else { k }));
+        assert!(repeated(&copied, Some(10), RULE).is_empty());
+        assert!(turning(&copied, Some(10), RULE).is_empty());
+        assert_eq!(lone_copies(&copied, Some(10), RULE), vec![16]);
+        let half = path(&|k| place(k) + if k == 16 { 2.0 } else { 0.0 });
+        assert!(lone_copies(&half, Some(10), RULE).is_empty());
+        let scatter = path(&|k| place(k) + if k % 2 == 0 { 0.4 } else { -0.4 });
+        assert!(lone_copies(&scatter, Some(10), RULE).is_empty());
+        let slow = |k: usize| 200.0 - 1.5 * (k as f64 - 10.0);
+        let slow_copied = path(&|k| slow(if k == 16 { 15 } else { k }));
+        assert!(lone_copies(&slow_copied, Some(10), RULE).is_empty());
     }
 }

@@ -528,6 +528,12 @@ fn leave_out_odd_fits(
         repeats::leave_out(frames, &paths, |path| repeats::repeated(path, impact, rule));
         let (paths, impact) = along_paths(frames);
         repeats::leave_out(frames, &paths, |path| repeats::turning(path, impact, rule));
+        // A fit alone (its neighbour's own left out) showing the frame before's or
+        // after's picture.
+        let (paths, impact) = along_paths(frames);
+        repeats::leave_out(frames, &paths, |path| {
+            repeats::lone_copies(path, impact, rule)
+        });
     }
 }
 
