@@ -8,9 +8,9 @@
 //! out (`LeftOut::Repeated`). Only a moving ball tells: a ball at rest repeats its
 //! place by right, so slow stretches are never judged. Where the ball turns, slows
 //! or meets the impact (its motion not one way over the frames either side), a run
-//! is judged against the parabola through the fits about it ([`turning`]); a fit
-//! alone whose neighbour's own fit was left out, at the place the parabola gives
-//! that neighbour ([`lone_copies`]).
+//! is judged against the parabola through the fits about it ([`turning`]). So is a
+//! fit alone at the place that parabola gives the frame before or after, whose own
+//! fit was left out ([`lone_copies`]).
 
 use super::tracker::{FrameFixes, LeftOut, median};
 
@@ -138,17 +138,12 @@ fn copy_of_neighbour(
             && !near_impact(p.0)
             && p.0.abs_diff(k) <= rule.window
     };
-    let before = fits
-        .get(..i)?
-        .iter()
-        .rev()
-        .filter(about)
-        .take(rule.neighbours);
-    let after = fits
-        .get(i + 1..)?
-        .iter()
-        .filter(about)
-        .take(rule.neighbours);
+    // The fits are in frame order: none beyond the window is looked at.
+    let within = |p: &&(usize, f64)| p.0.abs_diff(k) <= rule.window;
+    let before = fits.get(..i)?.iter().rev().take_while(within);
+    let after = fits.get(i + 1..)?.iter().take_while(within);
+    let before = before.filter(about).take(rule.neighbours);
+    let after = after.filter(about).take(rule.neighbours);
     let (before, after): (Vec<_>, Vec<_>) = (before.collect(), after.collect());
     if before.is_empty() || after.is_empty() || before.len() + after.len() < 4 {
         return None;
