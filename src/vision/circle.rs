@@ -112,19 +112,15 @@ pub fn fit(
     rail_moves: f64,
     rails: &[StraightEdge],
 ) -> Option<Outline> {
-    fit_keeping(
-        img,
-        guess,
-        band,
-        polarity,
-        (rail_moves, rails),
-        (&|_| true, 0.0),
-    )
+    fit_keeping(img, guess, band, polarity, (rail_moves, rails), NO_SHADOW)
 }
 
 /// Which edge points are a ball's own (the rest its cast shadow's edge, by their
 /// inside) and how far outside the ball's circle those must lie to be left out, px.
 pub type Shadow<'a> = (&'a dyn Fn([f64; 2]) -> bool, f64);
+
+/// No cast shadow sought: every edge point is the ball's own.
+pub const NO_SHADOW: Shadow<'static> = (&|_| true, 0.0);
 
 /// As [`fit`], the edge points `keep` does not keep (a point, px: a cast shadow's
 /// edge, by its inside) left out where the rest lie on their circle at least

@@ -1659,8 +1659,13 @@ impl Tracker {
                 slope: l.slope,
             })
             .collect();
-        let mut found =
-            self.outline_by(patch, local, band.max(3.0), 1.0, (&rails, (&|_| true, 0.0)))?;
+        let mut found = self.outline_by(
+            patch,
+            local,
+            band.max(3.0),
+            1.0,
+            (&rails, circle::NO_SHADOW),
+        )?;
         found.outline.circle.x += x0 as f64;
         found.outline.circle.y += y0 as f64;
         found.outline.lowest += y0 as f64;

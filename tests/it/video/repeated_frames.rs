@@ -65,16 +65,23 @@ fn errors(
 /// true ball nearest it (px; `None` where left out).
 type Places = Vec<Vec<Option<(f64, f64)>>>;
 
-/// The tracks of `tracker`'s `count` frames as [`Places`], and the frames the balls
-/// left out as repeats.
-fn places(film: &crate::film::Film, tracker: &vision::Tracker, count: usize) -> (Places, usize) {
+/// Per ball and frame, the tracked centre in the picture (px; `None` where left out).
+type Centres = Vec<Vec<Option<(f64, f64)>>>;
+
+/// The tracks of `tracker`'s `count` frames back in the picture: per ball and frame
+/// its centre (px; `None` where left out), the groove's direction (a unit vector in
+/// px), and the frames the balls left out as repeats.
+fn centres_px(
+    film: &crate::film::Film,
+    tracker: &vision::Tracker,
+    count: usize,
+) -> (Centres, (f64, f64), usize) {
     let times = (0..count).map(|k| film.time(k)).collect();
     let tracks = vision::tracks(tracker, times, film.scene.radius, None).expect("tracked");
     let c = tracks.calibration;
     let g = c.groove_deg.to_radians();
     let (u, n) = ((g.cos(), g.sin()), (g.sin(), -g.cos()));
     let s = c.px_per_m;
-    let along = |p: (f64, f64)| p.0 * u.0 + p.1 * u.1;
     let out = tracks
         .balls
         .iter()
@@ -82,19 +89,32 @@ fn places(film: &crate::film::Film, tracker: &vision::Tracker, count: usize) -> 
             (0..count)
                 .map(|k| {
                     let (x, y) = (b.x[k] * s, b.y[k] * s);
-                    if !x.is_finite() {
-                        return None;
-                    }
-                    let p = (
+                    x.is_finite().then_some((
                         c.origin_px.0 + x * u.0 + y * n.0,
                         c.origin_px.1 + x * u.1 + y * n.1,
-                    );
-                    Some((along(p), along(film.ball_nearest(k, p).centre)))
+                    ))
                 })
                 .collect()
         })
         .collect();
-    (out, tracks.balls.iter().map(|b| b.repeated).sum())
+    (out, u, tracks.balls.iter().map(|b| b.repeated).sum())
+}
+
+/// The tracks of `tracker`'s `count` frames as [`Places`], and the frames the balls
+/// left out as repeats.
+fn places(film: &crate::film::Film, tracker: &vision::Tracker, count: usize) -> (Places, usize) {
+    let (centres, u, repeated) = centres_px(film, tracker, count);
+    let along = |p: (f64, f64)| p.0 * u.0 + p.1 * u.1;
+    let out = centres
+        .iter()
+        .map(|b| {
+            b.iter()
+                .enumerate()
+                .map(|(k, p)| p.map(|p| (along(p), along(film.ball_nearest(k, p).centre))))
+                .collect()
+        })
+        .collect();
+    (out, repeated)
 }
 
 /// Tracks of `frames` with `params`: the centres' RMS error along the groove (px),
@@ -214,23 +234,19 @@ fn neighbours_places(
     tracker: &vision::Tracker,
     count: usize,
 ) -> Vec<(usize, usize, f64)> {
-    let times = (0..count).map(|k| film.time(k)).collect();
-    let tracks = vision::tracks(tracker, times, film.scene.radius, None).expect("tracked");
-    let c = tracks.calibration;
-    let g = c.groove_deg.to_radians();
-    let (u, n) = ((g.cos(), g.sin()), (g.sin(), -g.cos()));
+    let (centres, u, _) = centres_px(film, tracker, count);
     let along = |p: (f64, f64)| p.0 * u.0 + p.1 * u.1;
     let mut out = Vec::new();
-    for (b, ball) in tracks.balls.iter().enumerate() {
-        for k in 1..count.saturating_sub(1) {
-            let (x, y) = (ball.x[k] * c.px_per_m, ball.y[k] * c.px_per_m);
-            if !x.is_finite() {
+    for (b, ball) in centres.iter().enumerate() {
+        for (k, p) in ball
+            .iter()
+            .enumerate()
+            .take(count.saturating_sub(1))
+            .skip(1)
+        {
+            let Some(p) = *p else {
                 continue;
-            }
-            let p = (
-                c.origin_px.0 + x * u.0 + y * n.0,
-                c.origin_px.1 + x * u.1 + y * n.1,
-            );
+            };
             let truth = |j: usize| along(film.ball_nearest(j, p).centre);
             let step = 0.5 * (truth(k + 1) - truth(k - 1)).abs();
             let off = |j: usize| (along(p) - truth(j)).abs();
