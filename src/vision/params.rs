@@ -49,6 +49,14 @@ pub struct Params {
     /// … and at least this many levels. Default 10: the step an h264 encode at high
     /// compression leaves at sharp edges of the bench (ringing, blocks).
     pub differ_levels: f64,
+    /// A clip in which no ball is found at `differ_levels` is tracked once more with
+    /// this floor (`input::video::tracked`): a black ball on a dark wall differs from
+    /// it by 4–8 levels at its limb, so that only its lit part passes 10 and is
+    /// taken for no ball at all. Default 6: at 4 the floor passes the limb's noise
+    /// (the looks' black balls' radii scatter by 6 %); lowered for every clip, 6
+    /// gives wrong scales (docs/tracking.md). A floor at `differ_levels` or above
+    /// never tracks again.
+    pub faint_levels: f64,
     /// Weight of a colour difference (U, V) against one of brightness. Default 2: the
     /// colour planes span about half the levels brightness does for the same
     /// saturation change, and a coloured ball on a wall of its brightness differs
@@ -619,6 +627,7 @@ impl Default for Params {
             background_frames: 48,
             differ_sigmas: 5.0,
             differ_levels: 10.0,
+            faint_levels: 6.0,
             colour_weight: 2.0,
             shadow_darkest: 0.5,
             shadow_hue_levels: 6.0,

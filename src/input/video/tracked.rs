@@ -135,7 +135,9 @@ pub enum Framing {
 /// more, that radius known from its first frame; one refused for radii that
 /// scatter, its background learned at full resolution, is tracked once more with
 /// each outline sought first in the frame's difference from the background
-/// (`vision::Params::difference_first`); refused again, the first refusal stands.
+/// (`vision::Params::difference_first`); one in which no ball was found is tracked
+/// once more at the lower floor `vision::Params::faint_levels`; refused again, the
+/// first refusal stands.
 pub fn track_framed(
     video: &std::path::Path,
     options: &Options,
@@ -155,6 +157,21 @@ pub fn track_framed(
                 Ok(Attempt::Done(mut done)) => {
                     if let Some(t) = done.as_mut().as_mut() {
                         t.notes.push(difference_note(&refused));
+                    }
+                    Ok(*done)
+                }
+                _ => Err(refused),
+            };
+        }
+        Attempt::Unseen(refused) => {
+            let again = vision::Params {
+                differ_levels: params.faint_levels,
+                ..params
+            };
+            return match track_once(video, options, &again, progress, pictures, framing) {
+                Ok(Attempt::Done(mut done)) => {
+                    if let Some(t) = done.as_mut().as_mut() {
+                        t.notes.push(faint_note(&params));
                     }
                     Ok(*done)
                 }
@@ -194,6 +211,15 @@ fn difference_note(refused: &Refused) -> String {
     format!(
         "tracked twice: {}; tracked again with each ball's outline sought first in the frame's difference from the background (the wall's pattern taken away)",
         why.split(", so").next().unwrap_or(why)
+    )
+}
+
+/// The note of a clip tracked again at the floor `Params::faint_levels` after no
+/// ball was found at `Params::differ_levels`.
+fn faint_note(p: &vision::Params) -> String {
+    format!(
+        "tracked twice: no ball stood out from the background by {:.0} levels (a dark ball on a dark wall shows only its lit part there); tracked again with pixels {:.0} levels off the background taken as the balls'",
+        p.differ_levels, p.faint_levels
     )
 }
 
@@ -240,6 +266,9 @@ enum Attempt {
     /// to be tracked again with the outlines sought in the frame's difference from
     /// it ([`track_framed`]).
     Scattered(Box<Refused>),
+    /// Refused for no ball found at the floor `Params::differ_levels`, over
+    /// `Params::faint_levels`: to be tracked again at that ([`track_framed`]).
+    Unseen(Box<Refused>),
 }
 
 /// One tracking of `video`: of its band when `banded` and the first frames give
@@ -339,7 +368,8 @@ fn attempt(
 /// tracked again at the radius its clear outlines agree on where they contradict the
 /// one learned ([`Contradicted`]), or with the outlines sought in the frame's
 /// difference from the background where the radii scattered and that background is
-/// learned at full resolution ([`Attempt::Scattered`]).
+/// learned at full resolution ([`Attempt::Scattered`]), or at a lower floor where
+/// no ball was found ([`Attempt::Unseen`]).
 fn refusal(
     tracker: &Tracker,
     thumbs: Thumbs,
@@ -355,6 +385,13 @@ fn refusal(
         }
     ) && !params.difference_first
         && tracker.background().is_some_and(|b| b.image.factor == 1);
+    let unseen = matches!(
+        &error.what,
+        VideoProblem::Tracks {
+            error: vision::TracksError::NoBall { .. },
+            ..
+        }
+    ) && params.faint_levels < params.differ_levels;
     let refused = refused(tracker, thumbs, pictures, error);
     match (tracker.radius_contradicted(), tracker.radius()) {
         (Some(r), Some(learned_px)) if params.radius_px.is_none() => {
@@ -365,6 +402,7 @@ fn refusal(
             })))
         }
         _ if scattered => Ok(Attempt::Scattered(refused)),
+        _ if unseen => Ok(Attempt::Unseen(refused)),
         _ => Err(refused),
     }
 }

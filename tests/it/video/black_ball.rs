@@ -23,3 +23,33 @@ fn a_black_ball_on_a_wall_of_its_brightness_is_found_in_colour() {
         },
     );
 }
+
+/// Small look 55 (black balls of 12.1 px with a bright highlight on a dark
+/// wood-grain wall of their brightness, 300p, 30 frames/s): the balls' limb differs
+/// from the wall by 4–8 levels, so at the floor of 10 only their highlights stand
+/// out, too small and ragged to be taken, and no ball is found. Tracked again at the
+/// floor of `faint_levels`, as the command line tracks it, it gives a scale within
+/// 2 of its ± (and 3 %) of the truth and says how; at the floor of 10 alone the
+/// tracker finds no ball (the retry is what tracks it).
+#[test]
+fn a_dark_ball_no_ball_stands_out_of_is_tracked_again_at_a_lower_floor() {
+    use groovelab::vision::{self, TracksError};
+    let size = crate::film::looks::Size::Small;
+    super::assert_tracked_to_its_scale(
+        "black_ball",
+        55,
+        size,
+        0.03,
+        "tracked twice: no ball stood out from the background by 10 levels",
+    );
+    let Some((clip, frames)) = super::decoded_look("black_ball", 55, size) else {
+        return;
+    };
+    let (r, _, times) = super::look_truth(&clip, frames.len());
+    let once = vision::tracks(&vision::track(&frames, Params::default()), times, r, None);
+    assert!(
+        matches!(once, Err(TracksError::NoBall { .. })),
+        "at the floor of 10: {:?}",
+        once.map(|t| t.calibration.px_per_m)
+    );
+}
