@@ -28,6 +28,10 @@ pub enum OutputError {
     /// existing `/proc/version`, names the wrong thing).
     #[error("cannot write {}: {why} (the file is written beside it first, then renamed into place)", path.display())]
     Folder { path: PathBuf, why: FolderError },
+    /// The output is a file the command reads (or another output): written, it would
+    /// replace its input.
+    #[error("cannot write {}: it is also {what}; allowed another file", path.display())]
+    IsInput { path: PathBuf, what: String },
     #[error("interrupted: nothing was written")]
     Interrupted,
 }
@@ -71,6 +75,35 @@ fn check_target(path: &Path) -> Result<Option<Metadata>, OutputError> {
 /// path, else the error `AtomicFile::create` would give after the work.
 pub fn check_output(path: &Path) -> Result<(), OutputError> {
     check_target(path).map(|_| ())
+}
+
+/// Refuses an output that is one of the files the command reads (`inputs`, each
+/// with the words that name it): written atomically, it would replace the video being
+/// tracked, or the data being fitted, with its own result.
+pub fn check_apart(path: &Path, inputs: &[(&Path, String)]) -> Result<(), OutputError> {
+    match inputs.iter().find(|(input, _)| same_target(path, input)) {
+        Some((_, named)) => Err(OutputError::IsInput {
+            path: path.to_path_buf(),
+            what: named.clone(),
+        }),
+        None => Ok(()),
+    }
+}
+
+/// True when `a` and `b` are one file: the same file where both exist, else the
+/// same name in the same folder (two outputs not yet made).
+fn same_target(a: &Path, b: &Path) -> bool {
+    if let Ok(same) = same_file::is_same_file(a, b) {
+        return same;
+    }
+    let folder = |p: &Path| {
+        let parent = p.parent().filter(|d| !d.as_os_str().is_empty());
+        std::fs::canonicalize(parent.unwrap_or(Path::new(".")))
+    };
+    match (folder(a), folder(b)) {
+        (Ok(x), Ok(y)) => x == y && a.file_name() == b.file_name(),
+        _ => false,
+    }
 }
 
 fn io_error(path: &Path, source: io::Error) -> OutputError {

@@ -58,6 +58,7 @@ pub enum Response {
 /// Runs a parsed command line.
 pub fn run(cli: &Cli) -> Result<Response, CliError> {
     used_options(cli)?;
+    outputs_apart(cli)?;
     if matches!(cli.command, None | Some(Command::Tui | Command::Render(_))) {
         theme_choice(cli)?;
     }
@@ -120,6 +121,61 @@ fn scene_options_given(cli: &Cli) -> Vec<&'static str> {
         .given()
         .map(|(k, _)| values.given_as(k.param()).name)
         .collect()
+}
+
+/// Refuses a command whose output (`--output`, `--overlay`) is one of the files it
+/// reads (the video, a data file, a preset file), or both outputs one file: the
+/// input would be replaced by what is made of it, or half read.
+fn outputs_apart(cli: &Cli) -> Result<(), CliError> {
+    let mut outputs: Vec<(&std::path::Path, &str)> = Vec::new();
+    let mut inputs: Vec<(&std::path::Path, String)> = cli
+        .data
+        .data
+        .iter()
+        .map(|p| {
+            (
+                p.as_path(),
+                format!("the data file {} this command reads", p.display()),
+            )
+        })
+        .collect();
+    if let Some(p) = cli.scene.preset.as_deref().map(std::path::Path::new) {
+        inputs.push((
+            p,
+            format!("the preset file {} this command reads", p.display()),
+        ));
+    }
+    let output = match &cli.command {
+        Some(Command::Simulate(a)) => a.output.as_deref(),
+        Some(Command::Render(a)) => a.output.as_deref(),
+        Some(Command::Compare(a)) => a.output.as_deref(),
+        Some(Command::Fit(a)) => a.output.as_deref(),
+        Some(Command::Sweep(a)) => a.output.as_deref(),
+        Some(Command::Track(a)) => {
+            inputs.push((
+                &a.video,
+                format!("the video {} this command reads", a.video.display()),
+            ));
+            if let Some(o) = &a.overlay {
+                outputs.push((o, "--overlay"));
+            }
+            a.output.as_deref()
+        }
+        _ => None,
+    };
+    outputs.extend(output.map(|o| (o, "--output")));
+    for (i, (path, _)) in outputs.iter().enumerate() {
+        crate::output::check_apart(path, &inputs)?;
+        // The outputs made before it are read by no one, but one would replace the
+        // other.
+        let earlier: Vec<(&std::path::Path, String)> = outputs
+            .iter()
+            .take(i)
+            .map(|(p, what)| (*p, format!("the {what} file")))
+            .collect();
+        crate::output::check_apart(path, &earlier)?;
+    }
+    Ok(())
 }
 
 /// The first global option given that `command` does not use, if any (clap's global

@@ -159,7 +159,12 @@ fn key(path: &Path, o: &Options) -> std::io::Result<u64> {
     Ok(h.finish())
 }
 
+/// Hashes a regular file's bytes; anything else is an error, never opened: a FIFO's
+/// open waits for a writer for ever, a device's bytes never end.
 fn hash_file(path: &Path, h: &mut impl Hasher) -> std::io::Result<()> {
+    if !std::fs::metadata(path)?.is_file() {
+        return Err(std::io::Error::other("not a regular file"));
+    }
     let mut f = std::fs::File::open(path)?;
     let mut buf = vec![0u8; 1 << 20];
     loop {

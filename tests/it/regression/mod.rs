@@ -26,6 +26,11 @@ fn groovelab_within(args: &[&str], limit: Duration) -> Ran {
     let mut child = Command::new(env!("CARGO_BIN_EXE_groovelab"))
         .args(args)
         .env("GROOVELAB_PRESETS", "/nonexistent-groovelab-presets")
+        // As `common::groovelab`: never the user's cache.
+        .env(
+            "XDG_CACHE_HOME",
+            concat!(env!("CARGO_TARGET_TMPDIR"), "/user-cache"),
+        )
         .stdin(Stdio::null())
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())

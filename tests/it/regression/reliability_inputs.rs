@@ -39,6 +39,36 @@ fn data_and_preset_paths_that_are_not_regular_files_fail_at_once() {
     }
 }
 
+/// A FIFO or a device named as a video (`fifo.mp4`, a link `zero.mp4` to /dev/zero)
+/// given to `data` or `fit --data` is refused in one line at once, as `track`
+/// refuses it: a new user's `fit --data fifo.mp4` waited for ever (the track cache
+/// opened the FIFO to hash its bytes) and ignored SIGTERM.
+#[test]
+fn a_fifo_or_device_named_as_a_video_fails_at_once() {
+    let dir = scratch("nonregular-video");
+    let fifo = dir.join("fifo.mp4");
+    let made = Command::new("mkfifo").arg(&fifo).status();
+    assert!(made.is_ok_and(|s| s.success()), "mkfifo failed");
+    let zero = dir.join("zero.mp4");
+    std::os::unix::fs::symlink("/dev/zero", &zero).unwrap();
+    for p in [s(&fifo), s(&zero)] {
+        for args in [
+            vec!["data", p],
+            vec!["fit", "--radius", "2.75cm", "--data", p],
+            vec!["track", p, "--radius", "2.75cm"],
+        ] {
+            let r = groovelab_within(&args, Duration::from_secs(20));
+            assert_eq!(r.code, Some(2), "{args:?}: {}", r.stderr);
+            assert!(
+                r.stderr.starts_with("error: ") && r.stderr.contains("is not a regular file"),
+                "{args:?}: {}",
+                r.stderr
+            );
+            assert_eq!(r.stderr.lines().count(), 1, "{args:?}: {}", r.stderr);
+        }
+    }
+}
+
 #[test]
 fn data_files_over_the_size_limit_are_refused_before_reading() {
     let dir = scratch("big");

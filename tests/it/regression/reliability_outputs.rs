@@ -65,6 +65,71 @@ fn output_refuses_devices_fifos_symlinks_and_directories() {
     assert!(temp_files(&dir).is_empty(), "{:?}", temp_files(&dir));
 }
 
+/// An output that is a file the command reads (the video tracked, the data fitted,
+/// the preset), by any name of it (`./`, a hard link), or both outputs of `track`
+/// one new file, is refused before any work: one line naming what it is, exit 2,
+/// the input as it was. (A new user's `track b.mp4 --output b.mp4` replaced the
+/// video with its tracks; `--overlay a.mp4` on `a.mp4` cut it to 9 frames.)
+#[test]
+fn an_output_never_replaces_a_file_the_command_reads() {
+    let dir = scratch("output-inputs");
+    let keep = |name: &str| {
+        let p = dir.join(name);
+        std::fs::write(&p, format!("keep {name}")).unwrap();
+        s(&p).to_string()
+    };
+    let (video, data, preset) = (keep("clip.mp4"), keep("data.csv"), keep("mine.toml"));
+    let linked = dir.join("linked.csv");
+    std::fs::hard_link(&data, &linked).unwrap();
+    let dotted = s(&dir.join(".").join("clip.mp4")).to_string();
+    let new = s(&dir.join("new.mp4")).to_string();
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (
+            vec!["track", &video, "--radius", "2.75cm", "--output", &video],
+            "the video",
+        ),
+        (
+            vec!["track", &video, "--radius", "2.75cm", "--overlay", &dotted],
+            "the video",
+        ),
+        (
+            vec![
+                "track",
+                &video,
+                "--radius",
+                "2.75cm",
+                "--output",
+                &new,
+                "--overlay",
+                &new,
+            ],
+            "the --overlay file",
+        ),
+        (
+            vec!["fit", "--data", &data, "--output", &data],
+            "the data file",
+        ),
+        (
+            vec!["fit", "--data", &data, "--output", s(&linked)],
+            "the data file",
+        ),
+        (
+            vec!["simulate", "--preset", &preset, "--output", &preset],
+            "the preset file",
+        ),
+    ];
+    for (args, what) in &cases {
+        let first = assert_refused(args, "it is also");
+        assert!(first.contains(what), "{args:?}: {first}");
+    }
+    for name in ["clip.mp4", "data.csv", "mine.toml"] {
+        let text = std::fs::read_to_string(dir.join(name)).unwrap();
+        assert_eq!(text, format!("keep {name}"));
+    }
+    assert!(!dir.join("new.mp4").exists());
+    assert!(temp_files(&dir).is_empty(), "{:?}", temp_files(&dir));
+}
+
 #[test]
 fn output_keeps_the_mode_of_a_replaced_file() {
     use std::os::unix::fs::PermissionsExt;
