@@ -35,9 +35,12 @@ pub fn run(args: &DataCmdArgs, scene: &SceneArgs, data: &DataArgs) -> Result<Str
                 crate::input::MAX_FILE_BYTES,
             )?
         };
-        // A video's --scale went into its tracking: its tracks are in metres.
+        // A video's --scale went into its tracking: its tracks are in metres and
+        // seconds, whatever units the other files are read in.
         let reading = crate::input::data::Reading {
             scale: reading.scale.filter(|_| !video),
+            length_unit: reading.length_unit.filter(|_| !video),
+            time_unit: reading.time_unit.filter(|_| !video),
             ..reading.clone()
         };
         let file = path.display().to_string();

@@ -59,6 +59,7 @@ pub enum Response {
 pub fn run(cli: &Cli) -> Result<Response, CliError> {
     used_options(cli)?;
     outputs_apart(cli)?;
+    video_units(cli)?;
     if matches!(cli.command, None | Some(Command::Tui | Command::Render(_))) {
         theme_choice(cli)?;
     }
@@ -176,6 +177,21 @@ fn outputs_apart(cli: &Cli) -> Result<(), CliError> {
         crate::output::check_apart(path, &earlier)?;
     }
     Ok(())
+}
+
+/// `--length-unit` and `--time-unit` with a video to read (`--data VIDEO`, or
+/// `data` of videos only) are refused before it is tracked
+/// (`open::units_of_a_video`).
+fn video_units(cli: &Cli) -> Result<(), CliError> {
+    let is_video = |p: &std::path::PathBuf| video_data::is_video(p);
+    let video = match &cli.command {
+        Some(Command::Data(a)) if a.files.iter().all(is_video) => a.files.first(),
+        _ => cli.data.data.iter().find(|p| is_video(p)),
+    };
+    match video {
+        Some(p) => open::units_of_a_video(&cli.data, p),
+        None => Ok(()),
+    }
 }
 
 /// The first global option given that `command` does not use, if any (clap's global

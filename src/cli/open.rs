@@ -128,6 +128,27 @@ fn series_of(texts: &[(String, String)], args: &DataArgs) -> Result<(Series, Sce
     Ok((series, own_scene))
 }
 
+/// `--length-unit` and `--time-unit` given with a video are refused: its tracks are
+/// made in metres and seconds (`--scale` sets a pixel's length, `--fps` the frame
+/// rate); read as another unit they would rescale μ_k a hundredfold. (`data` of
+/// several files refuses them only where every file is a video, and reads a video's
+/// tracks without them.)
+pub fn units_of_a_video(args: &DataArgs, video: &std::path::Path) -> Result<(), CliError> {
+    const VIDEO: &str = "a video, tracked in metres and seconds (--scale sets a pixel's length, --fps its frame rate)";
+    let given = [
+        ("length_unit", args.length_unit.is_some()),
+        ("time_unit", args.time_unit.is_some()),
+    ];
+    match given.iter().find(|(_, g)| *g) {
+        Some((id, _)) => Err(CliError::from(super::error::Usage::NotForFile {
+            flag: Flag(id),
+            file: video.display().to_string(),
+            holds: VIDEO,
+        })),
+        None => Ok(()),
+    }
+}
+
 /// The data options for what none of the files holds are refused: `files` are each
 /// file's name and whether it holds velocities (else a position track). An option
 /// that applies to one of them is taken (`data` reads several files with one set).

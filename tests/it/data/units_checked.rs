@@ -228,6 +228,63 @@ fn an_option_for_what_the_file_does_not_hold_is_refused_naming_both() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// A video's tracks are made in metres and seconds: `--length-unit` and
+/// `--time-unit` with a video are refused before it is tracked (a new user's
+/// `fit --data clip.mp4 --length-unit cm` gave μ_k a hundred times small, "agrees").
+/// The clip here is no video at all: the refusal must come before it is read.
+#[test]
+fn a_length_or_time_unit_for_a_video_is_refused_before_tracking() {
+    let dir = crate::common::scratch_dir("units_checked", "video");
+    let clip = dir.join("clip.mp4");
+    std::fs::write(&clip, "no video: never read").unwrap();
+    let c = clip.to_str().unwrap();
+    let cases: [(&[&str], &str); 4] = [
+        (
+            &[
+                "fit",
+                "--radius",
+                "2.75cm",
+                "--data",
+                c,
+                "--length-unit",
+                "cm",
+            ],
+            "--length-unit",
+        ),
+        (
+            &[
+                "fit",
+                "--radius",
+                "2.75cm",
+                "--data",
+                c,
+                "--time-unit",
+                "ms",
+            ],
+            "--time-unit",
+        ),
+        (
+            &["data", c, "--radius", "2.75cm", "--time-unit", "ms"],
+            "--time-unit",
+        ),
+        (
+            &["data", c, "--radius", "2.75cm", "--length-unit", "mm"],
+            "--length-unit",
+        ),
+    ];
+    for (args, flag) in cases {
+        let (code, _, err) = groovelab(args);
+        assert_eq!(code, Some(2), "{args:?}: {err}");
+        let want = format!(
+            "{flag} does not apply to {c}: it holds a video, tracked in metres and seconds"
+        );
+        assert!(
+            err.contains(&want) && err.lines().count() == 1,
+            "{args:?}: {err}"
+        );
+    }
+}
+
 /// A Tracker single-track export (its track's name, then `t x y`, numbers as Tracker
 /// writes them: 1.234567890E2) of a ball approaching at `v` units per s for 0.2 s and
 /// rolling back at v/5, at 100 frames/s: pixels when the video was never calibrated.
