@@ -116,6 +116,11 @@ fn video_notes(text: &str, notes: Notes) -> Notes {
     let rate = comment("frame rate ");
     let radius = comment("scene radius =");
     let scale = comment(SCALE_COMMENT.trim_start_matches('#').trim());
+    // A given scale that puts the fitted radius off R (`tracked::scale_note`).
+    let contradicted = text
+        .lines()
+        .take_while(|l| l.starts_with('#'))
+        .find_map(|l| l.find("at this scale").and_then(|i| l.get(i..)));
     let units = notes
         .units
         .into_iter()
@@ -128,7 +133,10 @@ fn video_notes(text: &str, notes: Notes) -> Notes {
                         shown_scale(s)
                     )
                 }
-                ("length", ..) => "the scale given (--scale)".into(),
+                ("length", ..) => match contradicted {
+                    Some(why) => format!("the scale given (--scale); {why}"),
+                    None => "the scale given (--scale)".into(),
+                },
                 _ => u.how,
             };
             UnitNote { how, ..u }

@@ -841,9 +841,10 @@ pub fn scale_note(c: &vision::tracks::Calibration, radius_from: &str) -> String 
             String::new()
         };
         format!(
-            "scale {} px/m: given (--scale {} a pixel){doubt}",
+            "scale {} px/m: given (--scale {} a pixel){doubt}{}",
             crate::settings::units::significant(c.px_per_m, 6),
-            show_small(1.0 / c.px_per_m, Dimension::Length)
+            show_small(1.0 / c.px_per_m, Dimension::Length),
+            radius_contradicts(c, radius_from).unwrap_or_default()
         )
     } else {
         let (v, e) = with_uncertainty(c.px_per_m, c.px_per_m_sigma.max(1e-9), 2);
@@ -855,6 +856,29 @@ pub fn scale_note(c: &vision::tracks::Calibration, radius_from: &str) -> String 
         )
     }
 }
+
+/// Where a given scale puts the balls' fitted radius more than
+/// [`GIVEN_SCALE_AGREES`] off R: the words that say so (either is off, or the
+/// outlines are); `None` where they agree or no radius was fitted.
+fn radius_contradicts(c: &vision::tracks::Calibration, radius_from: &str) -> Option<String> {
+    let at_scale = c.radius_px / c.px_per_m;
+    let off = at_scale / c.radius_m - 1.0;
+    (off.is_finite() && off.abs() > GIVEN_SCALE_AGREES).then(|| {
+        format!(
+            "; at this scale the balls' fitted radius {:.1} px is {}, {:.0} % {} R = {} ({radius_from}): the scale, R or the outlines are off (check the outlines with --overlay)",
+            c.radius_px,
+            show(at_scale, Dimension::Length),
+            100.0 * off.abs(),
+            if off > 0.0 { "over" } else { "under" },
+            show(c.radius_m, Dimension::Length),
+        )
+    })
+}
+
+/// How far a given scale may put the fitted radius from R, a share of R, before the
+/// note says they disagree: twice the radii's spread that refuses a scale
+/// (`Params::max_radius_spread`), which a given scale is often the answer to.
+const GIVEN_SCALE_AGREES: f64 = 0.10;
 
 /// The median of the centres' standard errors, m.
 fn scatter(tracks: &Tracks) -> f64 {

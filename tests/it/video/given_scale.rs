@@ -81,3 +81,35 @@ fn the_scale_line_says_the_outlines_are_in_doubt_where_the_radii_scatter() {
         "{line}"
     );
 }
+
+/// A given scale that puts the balls' fitted radius more than 10 % off R says so in
+/// the scale line, with the radius in pixels and in length and the share off; one
+/// within 10 % says nothing (a new user's `--scale 0.5mm`, 27 px balls of R 2.75 cm,
+/// gave μ_k half the truth without a word). 14.5 px at 523.55 px/m is 2.77 cm.
+#[test]
+fn a_given_scale_that_puts_the_radius_off_r_says_so() {
+    let off = "at this scale the balls' fitted radius";
+    let at = |px_per_m: f64| {
+        scale_note(
+            &Calibration {
+                px_per_m,
+                ..given(0.01)
+            },
+            "--radius",
+        )
+    };
+    assert!(!at(523.55).contains(off), "{}", at(523.55));
+    // 14.5 px / 0.0275 m = 527.3 px/m agrees; 10 % either side is the edge.
+    assert!(!at(527.27 / 1.09).contains(off));
+    assert!(!at(527.27 / 0.91).contains(off));
+    let line = at(2000.0);
+    assert!(
+        line.contains("at this scale the balls' fitted radius 14.5 px is 0.725 cm, 74 % under R = 2.75 cm (--radius)"),
+        "{line}"
+    );
+    assert!(
+        at(527.27 / 1.12).contains("12 % over R"),
+        "{}",
+        at(527.27 / 1.12)
+    );
+}
