@@ -75,6 +75,18 @@ pub enum CliError {
     Data(#[from] crate::input::data::DataError),
     #[error(transparent)]
     Video(#[from] crate::input::video::VideoError),
+    /// A video's tracks whose speeds or frame spacing are of no ball in a groove:
+    /// their scale (from R, or `--scale`) or their rate is off, not a unit of the
+    /// file's (`what`: the tracks' speed or spacing, `scaled`: where the scale came
+    /// from).
+    #[error(
+        "{file}: as tracked, {what}, no ball in a groove: its scale ({scaled}) or its frame rate is off; check --radius (a number without a unit is metres: 2.75 is 2.75 m, 2.75cm a ball's), --scale and --fps"
+    )]
+    TracksOffScale {
+        file: String,
+        what: String,
+        scaled: String,
+    },
     /// The tracking was refused, and what the tracker found is drawn in `overlay`.
     #[error(
         "{error}; what the tracker found is drawn over a pixel grid in {}",

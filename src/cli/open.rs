@@ -108,6 +108,10 @@ fn series_of(texts: &[(String, String)], args: &DataArgs) -> Result<(Series, Sce
         [(file, text)] => crate::input::data::load(text, file, &reading, &derive),
         [centre, mark] => crate::input::data::load_pair(centre, mark, &reading, &derive),
         _ => unreachable!("one or two files"),
+    };
+    let series = match (series, texts.first()) {
+        (Err(e), Some((file, text))) if video => Err(video_scale(e, file, text)),
+        (other, _) => other.map_err(CliError::from),
     }?;
     let file = texts[0].0.clone();
     let velocities = matches!(series, Series::Velocities(_));
@@ -126,6 +130,37 @@ fn series_of(texts: &[(String, String)], args: &DataArgs) -> Result<(Series, Sce
         crate::input::data::scene_of(text, file)?
     };
     Ok((series, own_scene))
+}
+
+/// A video's tracks refused for speeds or a frame spacing of no ball in a groove:
+/// said of their scale and rate (R in the wrong unit, a wrong `--scale` or `--fps`),
+/// not of a file's units, which a video's tracks do not take (`units_of_a_video`).
+fn video_scale(e: crate::input::data::DataError, file: &str, text: &str) -> CliError {
+    use crate::input::data::{DataProblem, ScaleError};
+    use crate::settings::units::significant;
+    let what = match &e.what {
+        DataProblem::Scale(
+            ScaleError::TooSlow { speed, .. }
+            | ScaleError::LengthsNotMetres { speed, .. }
+            | ScaleError::TooFast { speed, .. },
+        ) => format!("the ball approaches at {} m/s", significant(*speed, 3)),
+        DataProblem::Scale(
+            ScaleError::TimesNotSeconds { frame } | ScaleError::FramesTooSlow { frame, .. },
+        ) => format!("its frames are {} s apart", significant(*frame, 3)),
+        _ => return CliError::from(e),
+    };
+    // The tracks' own line on their scale (`tracked::scale_note`).
+    let scaled = text
+        .lines()
+        .take_while(|l| l.starts_with('#'))
+        .find_map(|l| l.strip_prefix("# scale ").filter(|r| r.contains("px/m:")))
+        .map(|r| r.split(';').next().unwrap_or(r).to_string())
+        .unwrap_or_else(|| "as the tracks' file says".into());
+    CliError::TracksOffScale {
+        file: file.to_string(),
+        what,
+        scaled,
+    }
 }
 
 /// `--length-unit` and `--time-unit` given with a video are refused: its tracks are
@@ -604,4 +639,63 @@ fn short_name(name: &str) -> &str {
         .file_name()
         .and_then(|n| n.to_str())
         .unwrap_or(name)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::input::data::{DataError, ScaleError};
+
+    const TRACKS: &str = "# groovelab track clip.mp4: video\n# scale 5.46 ± 0.07 px/m: the balls' fitted radius 15.00 ± 0.20 px for R = 275 cm (--radius); speeds and μ_k from these tracks carry its 1.33 %\nt\tx\n";
+
+    /// A video's tracks at a lab-impossible speed are said of R, `--scale` and
+    /// `--fps` with the tracks' own scale line, never of a file's length unit (which a
+    /// video refuses): a new user's bare `--radius 2.75` (metres) was told to give
+    /// `--length-unit cm`.
+    #[test]
+    fn a_videos_tracks_off_any_balls_speed_name_r_scale_and_rate() {
+        let e = DataError::new(
+            "clip.mp4",
+            ScaleError::LengthsNotMetres {
+                speed: 79.5,
+                unit: Some("cm"),
+            },
+        );
+        let said = video_scale(e, "clip.mp4", TRACKS).to_string();
+        assert_eq!(
+            said,
+            "clip.mp4: as tracked, the ball approaches at 79.5 m/s, no ball in a groove: its scale (5.46 ± 0.07 px/m: the balls' fitted radius 15.00 ± 0.20 px for R = 275 cm (--radius)) or its frame rate is off; check --radius (a number without a unit is metres: 2.75 is 2.75 m, 2.75cm a ball's), --scale and --fps"
+        );
+        let e = DataError::new("clip.mp4", ScaleError::TimesNotSeconds { frame: 2.0 });
+        let said = video_scale(e, "clip.mp4", TRACKS).to_string();
+        assert!(
+            said.contains("as tracked, its frames are 2 s apart"),
+            "{said}"
+        );
+        assert!(!said.contains("--length-unit") && !said.contains("--time-unit"));
+        // Tracks without their scale line say where to look.
+        let unscaled = DataError::new(
+            "clip.mp4",
+            ScaleError::TooSlow {
+                speed: 1e-4,
+                by: None,
+                unit: None,
+            },
+        );
+        let said = video_scale(unscaled, "clip.mp4", "").to_string();
+        assert!(
+            said.contains("its scale (as the tracks' file says)"),
+            "{said}"
+        );
+        // Any other problem of the tracks is said as it was.
+        let other = DataError::new(
+            "clip.mp4",
+            crate::input::data::DataProblem::NotSceneValue {
+                line: 3,
+                text: "# scene radius".into(),
+            },
+        );
+        let want = other.to_string();
+        assert_eq!(video_scale(other, "clip.mp4", TRACKS).to_string(), want);
+    }
 }

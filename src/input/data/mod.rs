@@ -28,6 +28,7 @@ pub use notes::{Notes, UnitNote};
 pub use options::{MAX_ROWS, Reading};
 pub use problem::{DataError, DataProblem, VideoScale};
 pub use report::{Gap, Report, inspect};
+pub use scales::ScaleError;
 pub use scene::scene_of;
 pub use table::file_unit;
 pub use velocities::detect_impact;
