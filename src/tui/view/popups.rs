@@ -51,7 +51,9 @@ fn help_lines(width: usize, theme: &Theme) -> Vec<Line<'static>> {
         .max()
         .unwrap_or(0)
         .max(14);
-    let text_width = width.saturating_sub(keys_width + 2).max(10);
+    // A column kept free on the right, as on the left: a description that fills its
+    // row to the border runs into it.
+    let text_width = width.saturating_sub(keys_width + 3).max(10);
     let mut lines = Vec::new();
     for b in TABLE {
         let keys = crate::tui::keys::display_keys(b, g.ascii);
@@ -70,7 +72,7 @@ fn help_lines(width: usize, theme: &Theme) -> Vec<Line<'static>> {
     // One line at 200 columns (the whole help then fits 60 rows).
     let mouse = "Mouse: click a parameter to select it, scroll on it to change it; click or drag the chart to seek, scroll to zoom; click a preset twice to load it.";
     // Each wrapped row indented alike, as the keys' descriptions are.
-    for row in wrap(Line::from(mouse), width.saturating_sub(1)) {
+    for row in wrap(Line::from(mouse), width.saturating_sub(2)) {
         let mut spans = vec![Span::raw(" ")];
         spans.extend(row.spans);
         lines.push(Line::from(spans).style(theme.dim));
@@ -323,5 +325,30 @@ impl Component for Prompt {
 impl Component for Confirm {
     fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
         confirm_overwrite(self.name(), area, buf, cx.theme);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::tui::theme::Glyphs;
+
+    /// Every help row, at any width the help takes, leaves its last column free: a
+    /// description wrapped to the whole width ran into the popup's border ("…the
+    /// cause-and-effect││" at 120 columns).
+    #[test]
+    fn no_help_row_reaches_the_border() {
+        for ascii in [false, true] {
+            let theme = Theme::new(Glyphs::new(ascii), true);
+            for width in 30..=160 {
+                for line in help_lines(width, &theme) {
+                    assert!(
+                        line.width() < width,
+                        "{width} columns, ascii {ascii}: {line:?} is {} wide",
+                        line.width()
+                    );
+                }
+            }
+        }
     }
 }
