@@ -359,7 +359,7 @@ fn model_choice_lines(models: &[fit::Candidate], lines: &mut Ranked<'static>, th
     lines.push((
         1,
         Line::from(Span::styled(
-            format!("models by BIC, lowest first (M: all {}):", models.len()),
+            format!("models by BIC, lowest first (M lists all {})", models.len()),
             theme.dim,
         )),
     ));

@@ -31,7 +31,7 @@ fn every_model_of_the_fit_is_reachable() {
     assert!(n > 1, "{n}");
     // The panel says where the rest is.
     assert!(
-        screen.contains(&format!("models by BIC, lowest first (M: all {n}):")),
+        screen.contains(&format!("models by BIC, lowest first (M lists all {n})")),
         "{screen}"
     );
     assert!(!screen.contains("never named"), "{screen}");
