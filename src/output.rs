@@ -30,10 +30,37 @@ pub enum OutputError {
     Folder { path: PathBuf, why: FolderError },
     /// The output is a file the command reads (or another output): written, it would
     /// replace its input.
-    #[error("cannot write {}: it is also {what}; allowed another file", path.display())]
-    IsInput { path: PathBuf, what: String },
+    #[error("cannot write {}: it is also {clash}; allowed another file", path.display())]
+    IsInput { path: PathBuf, clash: Clash },
     #[error("interrupted: nothing was written")]
     Interrupted,
+}
+
+/// Another file of the command that an output must not be: one it reads (`kind`:
+/// "video", "data file", "preset file"), or another of its outputs (`flag`).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Clash {
+    Reads { kind: &'static str, file: PathBuf },
+    Writes { flag: &'static str, file: PathBuf },
+}
+
+impl Clash {
+    fn file(&self) -> &Path {
+        match self {
+            Clash::Reads { file, .. } | Clash::Writes { file, .. } => file,
+        }
+    }
+}
+
+impl std::fmt::Display for Clash {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Clash::Reads { kind, file } => {
+                write!(f, "the {kind} {} this command reads", file.display())
+            }
+            Clash::Writes { flag, .. } => write!(f, "the {flag} file"),
+        }
+    }
 }
 
 /// Why no new file could be made in a target's folder, said of the folder.
@@ -77,14 +104,14 @@ pub fn check_output(path: &Path) -> Result<(), OutputError> {
     check_target(path).map(|_| ())
 }
 
-/// Refuses an output that is one of the files the command reads (`inputs`, each
-/// with the words that name it): written atomically, it would replace the video being
+/// Refuses an output that is one of the files the command reads or writes besides
+/// it (`others`): written atomically, it would replace the video being
 /// tracked, or the data being fitted, with its own result.
-pub fn check_apart(path: &Path, inputs: &[(&Path, String)]) -> Result<(), OutputError> {
-    match inputs.iter().find(|(input, _)| same_target(path, input)) {
-        Some((_, named)) => Err(OutputError::IsInput {
+pub fn check_apart(path: &Path, others: &[Clash]) -> Result<(), OutputError> {
+    match others.iter().find(|c| same_target(path, c.file())) {
+        Some(c) => Err(OutputError::IsInput {
             path: path.to_path_buf(),
-            what: named.clone(),
+            clash: c.clone(),
         }),
         None => Ok(()),
     }

@@ -77,14 +77,13 @@ pub enum CliError {
     Video(#[from] crate::input::video::VideoError),
     /// A video's tracks whose speeds or frame spacing are of no ball in a groove:
     /// their scale (from R, or `--scale`) or their rate is off, not a unit of the
-    /// file's (`what`: the tracks' speed or spacing, `scaled`: where the scale came
-    /// from).
+    /// file's (`scaled`: the tracks' own line on their scale, as written).
     #[error(
-        "{file}: as tracked, {what}, no ball in a groove: its scale ({scaled}) or its frame rate is off; check --radius (a number without a unit is metres: 2.75 is 2.75 m, 2.75cm a ball's), --scale and --fps"
+        "{file}: as tracked, {seen}, no ball in a groove: its scale ({scaled}) or its frame rate is off; check --radius (a number without a unit is metres: 2.75 is 2.75 m, 2.75cm a ball's), --scale and --fps"
     )]
     TracksOffScale {
         file: String,
-        what: String,
+        seen: OffScale,
         scaled: String,
     },
     /// The tracking was refused, and what the tracker found is drawn in `overlay`.
@@ -429,6 +428,25 @@ mod messages {
         ];
         for (error, message) in cases {
             assert_eq!(error.to_string(), message);
+        }
+    }
+}
+
+/// What a video's tracks show that no ball in a groove does.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum OffScale {
+    /// The ball's approach speed, m/s.
+    Speed(f64),
+    /// The frames' spacing, s.
+    Spacing(f64),
+}
+
+impl std::fmt::Display for OffScale {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        use crate::settings::units::significant;
+        match self {
+            OffScale::Speed(v) => write!(f, "the ball approaches at {} m/s", significant(*v, 3)),
+            OffScale::Spacing(s) => write!(f, "its frames are {} s apart", significant(*s, 3)),
         }
     }
 }

@@ -128,24 +128,21 @@ fn scene_options_given(cli: &Cli) -> Vec<&'static str> {
 /// reads (the video, a data file, a preset file), or both outputs one file: the
 /// input would be replaced by what is made of it, or half read.
 fn outputs_apart(cli: &Cli) -> Result<(), CliError> {
-    let mut outputs: Vec<(&std::path::Path, &str)> = Vec::new();
-    let mut inputs: Vec<(&std::path::Path, String)> = cli
+    use crate::output::Clash;
+    let reads = |kind: &'static str, file: &std::path::Path| Clash::Reads {
+        kind,
+        file: file.to_path_buf(),
+    };
+    let mut others: Vec<Clash> = cli
         .data
         .data
         .iter()
-        .map(|p| {
-            (
-                p.as_path(),
-                format!("the data file {} this command reads", p.display()),
-            )
-        })
+        .map(|p| reads("data file", p))
         .collect();
-    if let Some(p) = cli.scene.preset.as_deref().map(std::path::Path::new) {
-        inputs.push((
-            p,
-            format!("the preset file {} this command reads", p.display()),
-        ));
+    if let Some(p) = cli.scene.preset.as_deref() {
+        others.push(reads("preset file", std::path::Path::new(p)));
     }
+    let mut outputs: Vec<(&std::path::Path, &'static str)> = Vec::new();
     let output = match &cli.command {
         Some(Command::Simulate(a)) => a.output.as_deref(),
         Some(Command::Render(a)) => a.output.as_deref(),
@@ -153,28 +150,21 @@ fn outputs_apart(cli: &Cli) -> Result<(), CliError> {
         Some(Command::Fit(a)) => a.output.as_deref(),
         Some(Command::Sweep(a)) => a.output.as_deref(),
         Some(Command::Track(a)) => {
-            inputs.push((
-                &a.video,
-                format!("the video {} this command reads", a.video.display()),
-            ));
-            if let Some(o) = &a.overlay {
-                outputs.push((o, "--overlay"));
-            }
+            others.push(reads("video", &a.video));
+            outputs.extend(a.overlay.as_deref().map(|o| (o, "--overlay")));
             a.output.as_deref()
         }
         _ => None,
     };
     outputs.extend(output.map(|o| (o, "--output")));
-    for (i, (path, _)) in outputs.iter().enumerate() {
-        crate::output::check_apart(path, &inputs)?;
-        // The outputs made before it are read by no one, but one would replace the
-        // other.
-        let earlier: Vec<(&std::path::Path, String)> = outputs
-            .iter()
-            .take(i)
-            .map(|(p, what)| (*p, format!("the {what} file")))
-            .collect();
-        crate::output::check_apart(path, &earlier)?;
+    for (path, flag) in outputs {
+        crate::output::check_apart(path, &others)?;
+        // The outputs checked before it are read by no one, but one would replace
+        // the other.
+        others.push(Clash::Writes {
+            flag,
+            file: path.to_path_buf(),
+        });
     }
     Ok(())
 }

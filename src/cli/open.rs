@@ -136,17 +136,17 @@ fn series_of(texts: &[(String, String)], args: &DataArgs) -> Result<(Series, Sce
 /// said of their scale and rate (R in the wrong unit, a wrong `--scale` or `--fps`),
 /// not of a file's units, which a video's tracks do not take (`units_of_a_video`).
 fn video_scale(e: crate::input::data::DataError, file: &str, text: &str) -> CliError {
+    use super::error::OffScale;
     use crate::input::data::{DataProblem, ScaleError};
-    use crate::settings::units::significant;
-    let what = match &e.what {
+    let seen = match &e.what {
         DataProblem::Scale(
             ScaleError::TooSlow { speed, .. }
             | ScaleError::LengthsNotMetres { speed, .. }
             | ScaleError::TooFast { speed, .. },
-        ) => format!("the ball approaches at {} m/s", significant(*speed, 3)),
+        ) => OffScale::Speed(*speed),
         DataProblem::Scale(
             ScaleError::TimesNotSeconds { frame } | ScaleError::FramesTooSlow { frame, .. },
-        ) => format!("its frames are {} s apart", significant(*frame, 3)),
+        ) => OffScale::Spacing(*frame),
         _ => return CliError::from(e),
     };
     // The tracks' own line on their scale (`tracked::scale_note`).
@@ -158,7 +158,7 @@ fn video_scale(e: crate::input::data::DataError, file: &str, text: &str) -> CliE
         .unwrap_or_else(|| "as the tracks' file says".into());
     CliError::TracksOffScale {
         file: file.to_string(),
-        what,
+        seen,
         scaled,
     }
 }
