@@ -120,8 +120,11 @@ pub fn check_apart(path: &Path, others: &[Clash]) -> Result<(), OutputError> {
 /// True when `a` and `b` are one file: the same file where both exist, else the
 /// same name in the same folder (two outputs not yet made).
 fn same_target(a: &Path, b: &Path) -> bool {
-    if let Ok(same) = same_file::is_same_file(a, b) {
-        return same;
+    // By the files' device and inode, from `stat`: never opened (opening a FIFO
+    // waits for a writer; `same_file` opens both).
+    if let (Ok(x), Ok(y)) = (std::fs::metadata(a), std::fs::metadata(b)) {
+        use std::os::unix::fs::MetadataExt;
+        return (x.dev(), x.ino()) == (y.dev(), y.ino());
     }
     let folder = |p: &Path| {
         let parent = p.parent().filter(|d| !d.as_os_str().is_empty());

@@ -15,9 +15,22 @@ fn data_and_preset_paths_that_are_not_regular_files_fail_at_once() {
         paths.push(s(&fifo).to_string());
     }
     let limit = Duration::from_secs(10);
+    // With an output too, one that exists: it is held against the inputs without
+    // opening them (a FIFO's open waits for a writer).
+    let out = dir.join("out.txt");
+    std::fs::write(&out, "keep").unwrap();
     for p in &paths {
         for args in [
             vec!["fit", "--preset", "paper-b4.9", "--data", p.as_str()],
+            vec![
+                "fit",
+                "--preset",
+                "paper-b4.9",
+                "--data",
+                p.as_str(),
+                "--output",
+                s(&out),
+            ],
             vec!["render", "--data", p.as_str(), "--size", "80x24"],
             vec!["simulate", "--preset", p.as_str()],
         ] {
@@ -37,6 +50,7 @@ fn data_and_preset_paths_that_are_not_regular_files_fail_at_once() {
             assert_eq!(r.stderr.lines().count(), 1, "{args:?}: {}", r.stderr);
         }
     }
+    assert_eq!(std::fs::read_to_string(&out).unwrap(), "keep");
 }
 
 /// A FIFO or a device named as a video (`fifo.mp4`, a link `zero.mp4` to /dev/zero)
