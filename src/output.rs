@@ -121,7 +121,7 @@ pub fn check_apart(path: &Path, others: &[Clash]) -> Result<(), OutputError> {
 /// same name in the same folder (two outputs not yet made).
 fn same_target(a: &Path, b: &Path) -> bool {
     // By the files' device and inode, from `stat`: never opened (opening a FIFO
-    // waits for a writer; `same_file` opens both).
+    // waits for a writer).
     if let (Ok(x), Ok(y)) = (std::fs::metadata(a), std::fs::metadata(b)) {
         use std::os::unix::fs::MetadataExt;
         return (x.dev(), x.ino()) == (y.dev(), y.ino());

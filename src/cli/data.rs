@@ -120,7 +120,10 @@ fn video_notes(text: &str, notes: Notes) -> Notes {
     let contradicted = text
         .lines()
         .take_while(|l| l.starts_with('#'))
-        .find_map(|l| l.find("at this scale").and_then(|i| l.get(i..)));
+        .find_map(|l| {
+            l.find(crate::input::video::tracked::SCALE_OFF_R)
+                .and_then(|i| l.get(i..))
+        });
     let units = notes
         .units
         .into_iter()

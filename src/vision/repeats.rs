@@ -133,11 +133,7 @@ fn copy_of_neighbour(
     if near_impact(k) {
         return None;
     }
-    let about = |p: &&(usize, f64)| {
-        side(impact, p.0) * side(impact, k) >= 0
-            && !near_impact(p.0)
-            && p.0.abs_diff(k) <= rule.window
-    };
+    let about = |p: &&(usize, f64)| side(impact, p.0) * side(impact, k) >= 0 && !near_impact(p.0);
     // The fits are in frame order: none beyond the window is looked at.
     let within = |p: &&(usize, f64)| p.0.abs_diff(k) <= rule.window;
     let before = fits.get(..i)?.iter().rev().take_while(within);

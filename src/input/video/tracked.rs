@@ -146,57 +146,55 @@ pub fn track_framed(
     framing: Framing,
 ) -> Result<Option<Tracked>, Box<Refused>> {
     let params = options.params();
-    let first = match track_once(video, options, &params, progress, pictures, framing)? {
-        Attempt::Contradicted(first) => first,
+    let once = |p: &vision::Params| track_once(video, options, p, progress, pictures, framing);
+    match once(&params)? {
+        Attempt::Contradicted(first) => {
+            let note = format!(
+                "tracked twice: the radius learned from the first fits ({:.2} px) was contradicted by the clip's clear outlines, which agree on {:.2} px; tracked again from that radius (the scale is from the second tracking's own fits)",
+                first.learned_px, first.radius_px
+            );
+            let again = vision::Params {
+                radius_px: Some(first.radius_px),
+                ..params
+            };
+            retried(once(&again), first.refused, note)
+        }
         Attempt::Scattered(refused) => {
+            let note = difference_note(&refused);
             let again = vision::Params {
                 difference_first: true,
                 ..params
             };
-            return match track_once(video, options, &again, progress, pictures, framing) {
-                Ok(Attempt::Done(mut done)) => {
-                    if let Some(t) = done.as_mut().as_mut() {
-                        t.notes.push(difference_note(&refused));
-                    }
-                    Ok(*done)
-                }
-                _ => Err(refused),
-            };
+            retried(once(&again), refused, note)
         }
         Attempt::Unseen(refused) => {
             let again = vision::Params {
                 differ_levels: params.faint_levels,
                 ..params
             };
-            return match track_once(video, options, &again, progress, pictures, framing) {
-                Ok(Attempt::Done(mut done)) => {
-                    if let Some(t) = done.as_mut().as_mut() {
-                        t.notes.push(faint_note(&params));
-                    }
-                    Ok(*done)
-                }
-                _ => Err(refused),
-            };
+            retried(once(&again), refused, faint_note(&params))
         }
-        Attempt::Done(done) => return Ok(*done),
+        Attempt::Done(done) => Ok(*done),
         // `track_once` never gives it.
-        Attempt::Again => return Ok(None),
-    };
-    let again = vision::Params {
-        radius_px: Some(first.radius_px),
-        ..params
-    };
-    match track_once(video, options, &again, progress, pictures, framing) {
+        Attempt::Again => Ok(None),
+    }
+}
+
+/// A second tracking's outcome: its tracks with `note` (why the clip was tracked
+/// twice) added, or, where it gave none, the first tracking's refusal `first`.
+fn retried(
+    second: Result<Attempt, Box<Refused>>,
+    first: Box<Refused>,
+    note: String,
+) -> Result<Option<Tracked>, Box<Refused>> {
+    match second {
         Ok(Attempt::Done(mut done)) => {
             if let Some(t) = done.as_mut().as_mut() {
-                t.notes.push(format!(
-                    "tracked twice: the radius learned from the first fits ({:.2} px) was contradicted by the clip's clear outlines, which agree on {:.2} px; tracked again from that radius (the scale is from the second tracking's own fits)",
-                    first.learned_px, first.radius_px
-                ));
+                t.notes.push(note);
             }
             Ok(*done)
         }
-        _ => Err(first.refused),
+        _ => Err(first),
     }
 }
 
@@ -865,7 +863,7 @@ fn radius_contradicts(c: &vision::tracks::Calibration, radius_from: &str) -> Opt
     let off = at_scale / c.radius_m - 1.0;
     (off.is_finite() && off.abs() > GIVEN_SCALE_AGREES).then(|| {
         format!(
-            "; at this scale the balls' fitted radius {:.1} px is {}, {:.0} % {} R = {} ({radius_from}): the scale, R or the outlines are off (check the outlines with --overlay)",
+            "; {SCALE_OFF_R} the balls' fitted radius {:.1} px is {}, {:.0} % {} R = {} ({radius_from}): the scale, R or the outlines are off (check the outlines with --overlay)",
             c.radius_px,
             show(at_scale, Dimension::Length),
             100.0 * off.abs(),
@@ -874,6 +872,10 @@ fn radius_contradicts(c: &vision::tracks::Calibration, radius_from: &str) -> Opt
         )
     })
 }
+
+/// The words that start the scale line's clause on a given scale that puts the
+/// fitted radius off R (`data` quotes the clause from a tracks file).
+pub const SCALE_OFF_R: &str = "at this scale";
 
 /// How far a given scale may put the fitted radius from R, a share of R, before the
 /// note says they disagree: twice the radii's spread that refuses a scale
