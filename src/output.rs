@@ -32,6 +32,10 @@ pub enum OutputError {
     /// replace its input.
     #[error("cannot write {}: it is also {clash}; allowed another file", path.display())]
     IsInput { path: PathBuf, clash: Clash },
+    /// The output, a picture, lies in a folder of frames the command reads: written
+    /// there it would replace a frame, or be read as one the next time.
+    #[error("cannot write {}: it lies in the folder of frames {} this command reads (a file there replaces a frame or is taken for one); allowed a file outside it", path.display(), folder.display())]
+    InFramesFolder { path: PathBuf, folder: PathBuf },
     #[error("interrupted: nothing was written")]
     Interrupted,
 }
@@ -101,19 +105,54 @@ fn check_target(path: &Path) -> Result<Option<Metadata>, OutputError> {
 /// Checks an output path before the work that fills it: a regular file or a new
 /// path, else the error `AtomicFile::create` would give after the work.
 pub fn check_output(path: &Path) -> Result<(), OutputError> {
-    check_target(path).map(|_| ())
+    check_target(path)?;
+    // A folder that is not there is said before the work, not after it.
+    match path.parent().filter(|d| !d.as_os_str().is_empty()) {
+        Some(dir) if !dir.is_dir() => Err(OutputError::Folder {
+            path: path.to_path_buf(),
+            why: FolderError::Missing(dir.to_path_buf()),
+        }),
+        _ => Ok(()),
+    }
 }
 
 /// Refuses an output that is one of the files the command reads or writes besides
 /// it (`others`): written atomically, it would replace the video being
-/// tracked, or the data being fitted, with its own result.
-pub fn check_apart(path: &Path, others: &[Clash]) -> Result<(), OutputError> {
-    match others.iter().find(|c| same_target(path, c.file())) {
-        Some(c) => Err(OutputError::IsInput {
+/// tracked, or the data being fitted, with its own result; and a `picture` (a file
+/// a folder of frames reads as one) inside a folder it reads.
+pub fn check_apart(path: &Path, picture: bool, others: &[Clash]) -> Result<(), OutputError> {
+    if let Some(c) = others.iter().find(|c| same_target(path, c.file())) {
+        return Err(OutputError::IsInput {
             path: path.to_path_buf(),
             clash: c.clone(),
+        });
+    }
+    // A folder read (a video given as its frames): no picture is written inside
+    // it, where it would replace a frame or be read as one (a text file there is
+    // passed over).
+    let folders = others.iter().filter_map(|c| match c {
+        Clash::Reads { file, .. } if file.is_dir() => Some(file),
+        _ => None,
+    });
+    match folders.into_iter().find(|d| picture && inside(path, d)) {
+        Some(d) => Err(OutputError::InFramesFolder {
+            path: path.to_path_buf(),
+            folder: d.clone(),
         }),
         None => Ok(()),
+    }
+}
+
+/// True when the file `path` (made or not) would lie in the folder `dir` or in one
+/// of its subfolders.
+fn inside(path: &Path, dir: &Path) -> bool {
+    let parent = path.parent().filter(|d| !d.as_os_str().is_empty());
+    match (
+        std::fs::canonicalize(parent.unwrap_or(Path::new("."))),
+        std::fs::canonicalize(dir),
+    ) {
+        (Ok(p), Ok(d)) => p.starts_with(d),
+        _ => false,
     }
 }
 
@@ -402,6 +441,12 @@ mod tests {
             err.contains(&format!("its folder {} does not exist", folder.display())),
             "{err}"
         );
+        // And before the work (`--overlay nodir/a.png` was refused only after a
+        // whole tracking): the same words from the check.
+        let early = check_output(&target).unwrap_err().to_string();
+        assert!(early.contains("does not exist"), "{early}");
+        assert!(check_output(&dir.join("run.csv")).is_ok());
+        assert!(check_output(Path::new("bare-name.csv")).is_ok());
         let _ = std::fs::remove_dir_all(&dir);
     }
 

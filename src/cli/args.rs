@@ -135,11 +135,11 @@ pub struct DataArgs {
     /// [default: chosen from the frame rate and the scatter].
     #[arg(long, value_name = "T", value_parser = time, allow_hyphen_values = true, global = true)]
     pub window: Option<f64>,
-    /// Frames per second of a video (`track`, `--data VIDEO`) [default: a slow-motion
-    /// capture rate in the file's metadata, else the container's; a folder of frames
-    /// needs it].
+    /// Frames per second of a video (`track`, `--data VIDEO`), 1 to 100000 [default: a
+    /// slow-motion capture rate in the file's metadata, else the container's; a
+    /// folder of frames needs it].
     #[arg(long, value_name = "F", global = true, allow_negative_numbers = true,
-          value_parser = super::track_args::positive("frames per second", 1e5))]
+          value_parser = super::track_args::positive("frames per second", 1.0, 1e5))]
     pub fps: Option<f64>,
     /// Where the tracker looks in a video (`track`, `--data VIDEO`): a rectangle of
     /// the frame in pixels, X,Y,W,H from the top-left corner (e.g. 0,300,1920,250:

@@ -158,7 +158,7 @@ fn outputs_apart(cli: &Cli) -> Result<(), CliError> {
     };
     outputs.extend(output.map(|o| (o, "--output")));
     for (path, flag) in outputs {
-        crate::output::check_apart(path, &others)?;
+        crate::output::check_apart(path, crate::input::video::is_image(path), &others)?;
         // The outputs checked before it are read by no one, but one would replace
         // the other.
         others.push(Clash::Writes {

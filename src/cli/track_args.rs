@@ -40,19 +40,21 @@ pub enum PositiveError {
     #[error("'{}' is not a number of {what}", crate::settings::quote::clip(text))]
     NotANumber { text: String, what: &'static str },
     #[error(
-        "{} is out of range, allowed 0 < {what} ≤ {max:e}",
+        "{} is out of range, allowed {min} ≤ {what} ≤ {max:e}",
         crate::settings::quote::clip(text)
     )]
     OutOfRange {
         text: String,
         what: &'static str,
+        min: f64,
         max: f64,
     },
 }
 
-/// A parser of a positive number at most `max`.
+/// A parser of a positive number from `min` to `max`.
 pub(super) fn positive(
     what: &'static str,
+    min: f64,
     max: f64,
 ) -> impl Fn(&str) -> Result<f64, PositiveError> + Clone {
     move |text: &str| {
@@ -60,14 +62,40 @@ pub(super) fn positive(
             text: text.into(),
             what,
         })?;
-        if v.is_finite() && v > 0.0 && v <= max {
+        if v.is_finite() && v > 0.0 && v >= min && v <= max {
             Ok(v)
         } else {
             Err(PositiveError::OutOfRange {
                 text: text.into(),
                 what,
+                min,
                 max,
             })
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn a_frame_rate_is_taken_from_1_to_100000() {
+        let fps = super::positive("frames per second", 1.0, 1e5);
+        assert_eq!(fps("30"), Ok(30.0));
+        assert_eq!(fps("1"), Ok(1.0));
+        assert_eq!(fps("1e5"), Ok(1e5));
+        // `track --fps 1e-300` wrote times up to 2.6e301 s.
+        for bad in ["1e-300", "0.5", "0", "-30", "1e6", "inf", "NaN"] {
+            let e = fps(bad).unwrap_err().to_string();
+            assert!(
+                e.contains("allowed 1 ≤ frames per second ≤ 1e5"),
+                "{bad}: {e}"
+            );
+        }
+        assert!(
+            fps("fast")
+                .unwrap_err()
+                .to_string()
+                .contains("not a number")
+        );
     }
 }

@@ -12,7 +12,7 @@ use super::problem::{VideoError, VideoProblem};
 use crate::vision::Frame;
 
 /// True for a file named as a PNG or JPEG image.
-pub(super) fn is_image(path: &Path) -> bool {
+pub fn is_image(path: &Path) -> bool {
     path.extension()
         .and_then(|e| e.to_str())
         .is_some_and(|e| matches!(e.to_ascii_lowercase().as_str(), "png" | "jpg" | "jpeg"))
@@ -88,6 +88,7 @@ pub(super) fn open(dir: &Path, limits: &Limits) -> Result<(Info, Frames), VideoE
         container_fps: None,
         capture_fps: None,
         gaps,
+        duration: None,
     };
     let iter = frames.into_iter().map(move |(n, p)| {
         let g = read(&p)?;

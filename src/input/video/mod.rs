@@ -19,6 +19,7 @@ pub mod write;
 
 use std::path::Path;
 
+pub use folder::is_image;
 pub use info::{Frames, Info, Limits, RateSource};
 pub use probe::Probe;
 pub use problem::{INSTALL_FFMPEG, VideoError, VideoProblem};

@@ -211,6 +211,11 @@ impl Probe {
             container_fps,
             capture_fps: capture_rate(&[&format["tags"], &v["tags"]]),
             gaps: Vec::new(),
+            // The stream's own, not the file's (an audio track may run longer).
+            duration: v["duration"]
+                .as_str()
+                .and_then(|d| d.parse::<f64>().ok())
+                .filter(|d| d.is_finite() && *d > 0.0),
         })
     }
 }

@@ -152,7 +152,7 @@ pub enum VideoProblem {
     /// `--ball-at X,Y` outside `--roi X,Y,W,H`, where the tracker does not look.
     #[error(
         "--ball-at {},{} lies outside --roi {},{},{},{}, expected a point on a ball inside the rectangle the tracker looks in",
-        at.0, at.1, roi.0, roi.1, roi.2, roi.3
+        tenth(at.0), tenth(at.1), roi.0, roi.1, roi.2, roi.3
     )]
     BallAtOutsideRoi {
         at: (f64, f64),
@@ -169,6 +169,17 @@ pub enum VideoProblem {
     },
     #[error("holds {frames} frame(s), expected a video")]
     TooFewFrames { frames: usize },
+    /// The container's rate contradicted by the stream's duration
+    /// (`Info::rate_in_doubt`).
+    #[error(
+        "its {frames} frames at the container's {fps} frames/s would span {:.3} s, but the video lasts {duration:.3} s (its frames are unevenly spaced, or the container's rate is wrong), so no times are given; give --fps (the frames' average rate here is {:.2} frames/s)",
+        *frames as f64 / fps, *frames as f64 / duration
+    )]
+    RateInDoubt {
+        frames: u64,
+        fps: f64,
+        duration: f64,
+    },
     /// The balls not found or the tracker unsure: why, then what to try next, by
     /// the handles that could help and were not given (`--roi`, `--scale`, the seed
     /// `at`); a tracking seeded with `--ball-at` (or a click) says so, as the seed's
@@ -241,6 +252,12 @@ fn next_try(error: &TracksError, roi: bool, scale: bool, at: Option<(f64, f64)>)
         (true, Some(seed)) => format!("{seed}; else {again}"),
         (true, None) => String::new(),
     }
+}
+
+/// `x` to a tenth of a pixel: a click's point (56.18421052631579) said as 56.2, a
+/// typed one as typed (300).
+fn tenth(x: f64) -> f64 {
+    (x * 10.0).round() / 10.0
 }
 
 #[cfg(test)]

@@ -327,6 +327,12 @@ fn attempt(
             })));
         }
     };
+    // A slow-motion clip's capture rate spans more than its duration by design.
+    if source == RateSource::Container
+        && let Some(what) = numbers.last().and_then(|n| info.rate_in_doubt(n + 1, fps))
+    {
+        return Err(nothing(err(what)));
+    }
     let times: Vec<f64> = numbers.iter().map(|n| (n - first) as f64 / fps).collect();
     let (tracked, stacked) = tracks_or_stacked(&mut tracker, times, options, band.is_none());
     let tracks = match tracked {

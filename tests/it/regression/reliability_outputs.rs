@@ -130,6 +130,58 @@ fn an_output_never_replaces_a_file_the_command_reads() {
     assert!(temp_files(&dir).is_empty(), "{:?}", temp_files(&dir));
 }
 
+/// A picture written inside a folder of frames the command reads (a frame of it, or
+/// a new one there) is refused before any work, the frames as they were: a new user's
+/// `track fo --overlay fo/base0001.png` replaced a frame with the contact sheet, and
+/// `--overlay fo/check.png` made the folder unreadable next time ("no frame
+/// number"). A file beside the folder is still written.
+#[test]
+fn an_output_never_lands_in_a_folder_of_frames_the_command_reads() {
+    let dir = scratch("output-in-frames");
+    let frames = dir.join("frames");
+    let sub = frames.join("sub");
+    std::fs::create_dir_all(&sub).unwrap();
+    for k in 1..=3 {
+        std::fs::write(frames.join(format!("f{k:04}.png")), format!("frame {k}")).unwrap();
+    }
+    let folder = s(&frames).to_string();
+    let inside = |name: &str| s(&frames.join(name)).to_string();
+    let (first, new, deeper) = (
+        inside("f0001.png"),
+        inside("check.PNG"),
+        s(&sub.join("t.jpg")).to_string(),
+    );
+    let cases: Vec<Vec<&str>> = vec![
+        vec!["track", &folder, "--fps", "30", "--overlay", &first],
+        vec!["track", &folder, "--fps", "30", "--output", &first],
+        vec!["track", &folder, "--fps", "30", "--overlay", &new],
+        vec!["track", &folder, "--fps", "30", "--output", &deeper],
+        vec![
+            "fit", "--data", &folder, "--fps", "30", "--radius", "2.75cm", "--output", &new,
+        ],
+    ];
+    for args in &cases {
+        let line = assert_refused(args, "lies in the folder of frames");
+        assert!(line.contains(&folder), "{args:?}: {line}");
+    }
+    for k in 1..=3 {
+        let text = std::fs::read_to_string(frames.join(format!("f{k:04}.png"))).unwrap();
+        assert_eq!(text, format!("frame {k}"));
+    }
+    assert!(!frames.join("check.PNG").exists() && !sub.join("t.jpg").exists());
+    // Beside the folder, or a text file in it (which the folder's reader passes
+    // over): past the check (the fake frames then refused).
+    let beside = s(&dir.join("t.txt")).to_string();
+    let text = inside("tracks.txt");
+    let (code, _, err) = crate::common::run(&["track", &folder, "--fps", "30", "--output", &text]);
+    assert_eq!(code, 2);
+    assert!(!err.contains("lies in the folder"), "{err}");
+    let (code, _, err) =
+        crate::common::run(&["track", &folder, "--fps", "30", "--output", &beside]);
+    assert_eq!(code, 2);
+    assert!(!err.contains("lies in the folder"), "{err}");
+}
+
 #[test]
 fn output_keeps_the_mode_of_a_replaced_file() {
     use std::os::unix::fs::PermissionsExt;
