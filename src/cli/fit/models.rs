@@ -121,7 +121,7 @@ fn named(models: &[Candidate], names: &dyn Fn(&Candidate) -> String) -> String {
             "  {} is not weighed: it predicts {} where the data show {} after its sliding phase, and a smaller model inside it agrees with the data (its BIC {:.1})",
             names(o),
             o.fit.regime_predicted.name(),
-            o.fit.regime_observed.name(),
+            o.fit.observed_name(),
             o.bic
         );
     }

@@ -324,7 +324,7 @@ fn model_fit_lines(out: &mut String, mf: &ModelFit) {
         out,
         "  regime predicted {}; observed {} (speeds within ±{:.3} m/s count as rest: 3× the data's scatter)",
         mf.verdict,
-        mf.regime_observed.name(),
+        mf.observed_name(),
         mf.rest_band
     );
     let _ = writeln!(out, "  {}", mf.agreement().sentence());
@@ -472,11 +472,7 @@ fn cell(m: &ModelFit, name: &str, v: f64, se: Option<f64>) -> String {
 
 /// "recollide / rest": the regime a fit predicts and the one observed.
 fn regime(m: &ModelFit) -> String {
-    format!(
-        "{} / {}",
-        m.regime_predicted.name(),
-        m.regime_observed.name()
-    )
+    format!("{} / {}", m.regime_predicted.name(), m.observed_name())
 }
 
 /// Whether a fit's prediction agrees with what was observed, in a column.

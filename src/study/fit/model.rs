@@ -52,6 +52,10 @@ pub struct ModelFit {
     pub points: usize,
     pub regime_predicted: Regime,
     pub regime_observed: Regime,
+    /// False where the data end before the model's sliding phase does: no regime was
+    /// seen (`regime_observed` then says rest) and the verdict is
+    /// [`Agreement::RegimeNotSeen`].
+    pub regime_seen: bool,
     /// Speeds within ± this of zero count as "at rest" for both regimes, m/s.
     pub rest_band: f64,
     /// The model's rolling speed after the impact, m/s (positive back toward).
@@ -132,6 +136,16 @@ impl ModelFit {
         }
     }
 
+    /// The regime observed in a word ("recollide"), or "not seen" where the data end
+    /// before the model's sliding phase does.
+    pub fn observed_name(&self) -> &'static str {
+        if self.regime_seen {
+            self.regime_observed.name()
+        } else {
+            "not seen"
+        }
+    }
+
     /// The one verdict of the fit against what was observed, for every place that
     /// says it (the `fit` table, the Fit view).
     pub fn agreement(&self) -> Agreement {
@@ -148,6 +162,8 @@ impl ModelFit {
             && self.rms > self.perfect_rms()
         {
             Agreement::PoorFit
+        } else if !self.regime_seen {
+            Agreement::RegimeNotSeen
         } else if !self.agrees {
             Agreement::Disagrees
         } else if self.indistinguishable_from_rest {
@@ -168,6 +184,9 @@ pub enum Agreement {
     WithinRestBand,
     /// The predicted regime is not what was observed.
     Disagrees,
+    /// The data end before the model's sliding phase does: what the balls did after
+    /// it was not seen, so nothing to hold the prediction against.
+    RegimeNotSeen,
     /// The data do not determine μ_k (on the edge of its range, or not identifiable):
     /// the regime predicted from it says nothing, so there is no verdict.
     MuNotDetermined,
@@ -208,6 +227,7 @@ impl Agreement {
             Agreement::Agrees => "agrees",
             Agreement::WithinRestBand => "agrees (v'≈0)",
             Agreement::Disagrees => "DISAGREES",
+            Agreement::RegimeNotSeen => "regime unseen",
             Agreement::MuNotDetermined => "no verdict",
             Agreement::PoorFit => "POOR FIT",
             Agreement::LinesDisagree => "μ_k,cm ≠ μ_k,t",
@@ -224,6 +244,9 @@ impl Agreement {
                 "consistent: the predicted v' lies within the rest band, so the data cannot tell it from rest"
             }
             Agreement::Disagrees => "the model does NOT predict what was observed",
+            Agreement::RegimeNotSeen => {
+                "no verdict on the regime: the data end before the model's sliding phase does, so what the balls did after it was not seen (film or track longer after the impact)"
+            }
             Agreement::MuNotDetermined => {
                 "no verdict: the data do not determine μ_k, so the regime predicted from it says nothing"
             }
@@ -248,6 +271,7 @@ impl Agreement {
             Agreement::Agrees => "the model predicts what was seen",
             Agreement::WithinRestBand => "consistent: within the rest band",
             Agreement::Disagrees => "the model does NOT predict what was seen",
+            Agreement::RegimeNotSeen => "no verdict: the data end too soon",
             Agreement::MuNotDetermined => "no verdict: μ_k not determined",
             Agreement::PoorFit => "no verdict: RMS ≫ the data's scatter",
             Agreement::LinesDisagree => "no verdict: μ_k,cm ≠ μ_k,t (b, R?)",
@@ -529,7 +553,8 @@ pub(super) fn scored_fit_within(
     let derived = Derived::of(&fitted);
     let sol = engine::solve(&fitted, &Span::default());
     let verdict = Verdict::of(&sol, &derived, Some(rest_band));
-    let regime_observed = observed_after(m, rest_band, sliding_end(m, &fitted));
+    let observed = observed_after(m, rest_band, sliding_end(m, &fitted));
+    let (regime_observed, regime_seen) = (observed.unwrap_or(Regime::Rest), observed.is_some());
     Ok(scored(ModelFit {
         model: free.iter().map(|f| f.name()).collect::<Vec<_>>().join("+"),
         fitted_to: match target {
@@ -548,11 +573,13 @@ pub(super) fn scored_fit_within(
         points: idx.len(),
         regime_predicted: derived.regime,
         regime_observed,
+        regime_seen,
         rest_band,
         v_roll,
         verdict: verdict.text("±"),
         indistinguishable_from_rest: verdict.indistinguishable_from_rest(),
-        agrees: verdict.agrees_with(regime_observed)
+        agrees: regime_seen
+            && verdict.agrees_with(regime_observed)
             && !not_identified
                 .iter()
                 .any(|n| n.parameter == Free::Mu.name()),
@@ -619,6 +646,7 @@ pub(crate) mod tests {
             points: 10,
             regime_predicted: Regime::Recollide,
             regime_observed: Regime::Recollide,
+            regime_seen: true,
             rest_band: 0.03,
             v_roll: 0.1,
             verdict: String::new(),

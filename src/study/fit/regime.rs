@@ -78,7 +78,7 @@ pub(super) fn data_scatter(m: &Measured, positions: bool) -> Option<f64> {
 /// What the data show after the sliding phase: the mean v_cm of the left ball from
 /// the end of sliding to the end of the series (or the next impact, a jump in v_cm).
 pub fn observed_regime(m: &Measured, band: f64) -> Regime {
-    observed_after(m, band, sliding_window(m).map(|w| w.1))
+    observed_after(m, band, sliding_window(m).map(|w| w.1)).unwrap_or(Regime::Rest)
 }
 
 /// When the left ball of `scene` rolls again after the first impact: where a series
@@ -95,10 +95,12 @@ pub(super) fn rolling_time(scene: &Scene) -> Option<f64> {
         .map(|e| e.t)
 }
 
-/// [`observed_regime`] with the end of the sliding phase given.
-pub(super) fn observed_after(m: &Measured, band: f64, to: Option<f64>) -> Regime {
+/// [`observed_regime`] with the end of the sliding phase given; `None` where the
+/// data end before it (nothing after the sliding phase was seen: the tracks of a
+/// clip that stops near the balls' turn said "rest" and the verdict DISAGREES).
+pub(super) fn observed_after(m: &Measured, band: f64, to: Option<f64>) -> Option<Regime> {
     let Some(to) = to else {
-        return Regime::Rest;
+        return Some(Regime::Rest);
     };
     let after: Vec<f64> = m
         .t()
@@ -116,14 +118,14 @@ pub(super) fn observed_after(m: &Measured, band: f64, to: Option<f64>) -> Regime
         }
     }
     if speeds.is_empty() {
-        return Regime::Rest;
+        return None;
     }
     let mean = speeds.iter().sum::<f64>() / speeds.len() as f64;
-    if mean > band {
+    Some(if mean > band {
         Regime::Recollide
     } else if mean < -band {
         Regime::Depart
     } else {
         Regime::Rest
-    }
+    })
 }

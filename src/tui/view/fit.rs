@@ -430,7 +430,7 @@ fn verdict_lines(m: &ModelFit, lines: &mut Ranked<'static>, theme: &Theme) {
         7,
         Line::from(vec![
             Span::styled("observed ", theme.dim),
-            Span::styled(m.regime_observed.name().to_string(), theme.text),
+            Span::styled(m.observed_name().to_string(), theme.text),
         ]),
     ));
     let verdict = m.agreement();
@@ -465,7 +465,7 @@ fn fit_cells(m: &ModelFit, decimals: usize, theme: &Theme) -> [String; 5] {
         mu,
         rms,
         m.regime_predicted.name().into(),
-        m.regime_observed.name().into(),
+        m.observed_name().into(),
         m.agreement().word().into(),
     ]
     .map(|c| theme.glyphs.text(&c))

@@ -586,6 +586,48 @@ fn the_line_fits_of_a_marked_track_stop_at_rolling_and_the_regime_holds() {
     assert!((mean - MU).abs() < 0.004, "mean μ_k,cm {mean}");
 }
 
+/// A track that ends before the balls roll again shows no regime: the verdict says
+/// so ("regime unseen", observed "not seen") instead of holding the predicted
+/// recollision against a "rest" read off no data (a new user's film stopping 7
+/// frames after the impact got DISAGREES with μ_k right). Past the rolling, the
+/// same scene's regime is seen and agrees.
+#[test]
+fn a_track_that_ends_before_rolling_has_no_regime_verdict() {
+    use groovelab::study::fit::Agreement;
+    let s = preset_scene("paper-b4.9");
+    let t_roll = groovelab::physics::engine::solve(&s, &Default::default())
+        .events
+        .iter()
+        .find(|e| e.t > 0.0 && e.kind == groovelab::physics::solution::EventKind::Rolling)
+        .unwrap()
+        .t;
+    let fitted = |to: f64| {
+        let v = Video {
+            to,
+            ..Video::default()
+        };
+        let text = video::write(&video::track(&s, &v).unwrap(), TrackFormat::CsvComma);
+        let l = try_load(&s, &text).unwrap();
+        let ask = fit::Ask {
+            free: Some(vec![Free::Mu]),
+            ..Default::default()
+        };
+        fit::fit_all(&s, &l.measured, &ask, &groovelab::study::Quiet)
+            .unwrap()
+            .model_fit
+    };
+    let short = fitted(0.5 * t_roll);
+    assert!(!short.regime_seen);
+    assert_eq!(short.agreement(), Agreement::RegimeNotSeen);
+    assert_eq!(short.observed_name(), "not seen");
+    assert!(!short.agrees);
+    assert!((short.mu - MU).abs() < 0.02, "μ_k {}", short.mu);
+    let long = fitted(t_roll + 0.3);
+    assert!(long.regime_seen);
+    assert_eq!(long.observed_name(), long.regime_predicted.name());
+    assert!(long.agreement().holds(), "{:?}", long.agreement());
+}
+
 /// Trial polish: Logger Pro exports times rounded to 0.1 ms, so at 120 frames/s its
 /// steps are 8.3 and 8.4 ms; their median made it 120.5 frames/s.
 #[test]
