@@ -26,7 +26,7 @@ struct TrackJson<'a> {
     #[serde(skip_serializing_if = "Option::is_none")]
     container_frame_rate: Option<f64>,
     calibration: &'a Calibration,
-    #[serde(skip_serializing_if = "<[_]>::is_empty")]
+    /// Always there (`[]` without gaps): scripts read the field the docs list.
     gaps: &'a [[u64; 2]],
     t: &'a [f64],
     balls: &'a [BallTrack],

@@ -575,8 +575,6 @@ fn stream(
     let total = info.frames.max(1);
     let mut thumbs = Thumbs::sized(info.width, info.height, info.frames);
     let no_thumbs = thumbs.clone();
-    let mut numbers = Vec::new();
-    let mut waiting: std::collections::VecDeque<(vision::Frame, PreparedLook)> = Default::default();
     // The frames are read (piped from ffmpeg, or decoded from a folder) on a thread
     // of their own, a few ahead, while this one tracks: reading a 1080p frame is a
     // copy of 3 MB. Dropping the receiver (an error, Ctrl-C) ends the reader at its
@@ -615,6 +613,35 @@ fn stream(
         }
         thumbs
     });
+    let Some(numbers) = learn_and_track(&mut tracker, received, ahead, total, progress)? else {
+        return Ok(None);
+    };
+    // The reader is done (the frames ran out); a reader that panicked leaves no
+    // pictures, the tracks stand.
+    let thumbs = reader.join().unwrap_or(no_thumbs);
+    Ok(Some((tracker, numbers, thumbs)))
+}
+
+/// Each frame of `received` learned into `tracker`'s background as it comes, and
+/// tracked once `ahead` frames more have been learned (see [`stream`]), telling
+/// `progress` of `total` frames; the frames' numbers, or `None` asked to stop.
+fn learn_and_track(
+    tracker: &mut Tracker,
+    received: std::sync::mpsc::Receiver<Result<(u64, vision::Frame, PreparedLook), VideoError>>,
+    ahead: usize,
+    total: u64,
+    progress: &dyn Progress,
+) -> Result<Option<Vec<u64>>, VideoError> {
+    let mut numbers = Vec::new();
+    let mut waiting: std::collections::VecDeque<(vision::Frame, PreparedLook)> = Default::default();
+    // The work is each frame read (and learned) and each frame tracked: most clips
+    // are read whole before their first frame is tracked, and a count of frames
+    // read stood at 100 % for the longer half of the work.
+    let mut tracked = 0u64;
+    let tell = |seen: u64, tracked: u64| {
+        let whole = total.max(seen);
+        progress.tick(seen + tracked, 2 * whole);
+    };
     for frame in received {
         if progress.cancelled() {
             return Ok(None);
@@ -628,20 +655,19 @@ fn stream(
         {
             tracker.push_prepared(&first, prep);
             super::decode::recycle(first);
+            tracked += 1;
         }
-        let seen = numbers.len() as u64;
-        progress.tick(seen, total.max(seen));
+        tell(numbers.len() as u64, tracked);
     }
     for (img, prep) in waiting {
         if progress.cancelled() {
             return Ok(None);
         }
         tracker.push_prepared(&img, prep);
+        tracked += 1;
+        tell(numbers.len() as u64, tracked);
     }
-    // The reader is done (the frames ran out); a reader that panicked leaves no
-    // pictures, the tracks stand.
-    let thumbs = reader.join().unwrap_or(no_thumbs);
-    Ok(Some((tracker, numbers, thumbs)))
+    Ok(Some(numbers))
 }
 
 /// Each frame's fits as the tracker made them, before the tracks' checks.

@@ -355,6 +355,8 @@ fn a_slow_motion_file_is_read_at_its_capture_rate_and_fps_overrides_it() {
     assert_eq!(j["frame_rate_source"], "given");
     assert_eq!(j["container_frame_rate"], 25.0);
     assert_eq!(j["frames"], 12);
+    // Every field the docs list, `gaps` too where there are none.
+    assert_eq!(j["gaps"], serde_json::json!([]));
     assert_eq!(j["t"][11], 11.0 / 50.0);
     let balls = j["balls"].as_array().unwrap();
     assert_eq!(balls.len(), 2);
@@ -635,4 +637,46 @@ fn a_video_rewritten_at_its_path_is_probed_anew() {
     let again = write_mp4(&d, "clip.mp4", 100.0, &[], 7);
     assert_eq!(again, clip);
     assert_eq!(frames_of(&clip), 7);
+}
+
+/// The progress a tracking reports counts the frames tracked as well as the frames
+/// read: most clips are read whole before their first frame is tracked, and the
+/// app's "tracking video 100 %" once showed for the longer half of the work.
+#[test]
+fn progress_reaches_the_whole_only_when_every_frame_is_tracked() {
+    use groovelab::input::video::tracked::{self, Options};
+    use std::sync::Mutex;
+    struct Ticks(Mutex<Vec<(u64, u64)>>);
+    impl groovelab::study::Progress for Ticks {
+        fn tick(&self, done: u64, total: u64) {
+            self.0.lock().unwrap().push((done, total));
+        }
+    }
+    let d = dir("progress");
+    let n = 12;
+    write_pngs(&d, &small_frames()[..n], &small_look(), &[]);
+    let options = Options {
+        radius: 0.0275,
+        fps: Some(100.0),
+        px_per_m: None,
+        radius_from: "--radius".into(),
+        cache: None,
+        roi: None,
+        ball_at: None,
+    };
+    let ticks = Ticks(Mutex::new(Vec::new()));
+    // Tracked or refused (12 frames may be too few to fit): the ticks are the same.
+    let _ = tracked::track(&d, &options, &ticks);
+    let ticks = ticks.0.into_inner().unwrap();
+    let total = 2 * n as u64;
+    assert!(ticks.iter().all(|&(_, t)| t == total), "{ticks:?}");
+    assert!(ticks.windows(2).all(|w| w[0].0 < w[1].0), "{ticks:?}");
+    assert_eq!(ticks.last(), Some(&(total, total)));
+    // Once every frame is read, the frames tracked are still ahead.
+    let read_all = ticks
+        .iter()
+        .position(|&(done, _)| done >= n as u64)
+        .unwrap();
+    assert!(ticks[read_all].0 < total, "{ticks:?}");
+    assert_eq!(ticks.iter().filter(|&&(done, _)| done == total).count(), 1);
 }
