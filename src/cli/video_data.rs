@@ -16,8 +16,8 @@ use crate::settings::params::Key;
 use crate::settings::spec::SceneSpec;
 
 /// Names of video files (by their extension).
-const VIDEO_EXTENSIONS: [&str; 10] = [
-    "mp4", "mov", "m4v", "mkv", "avi", "webm", "3gp", "mts", "m2ts", "mpg",
+const VIDEO_EXTENSIONS: [&str; 11] = [
+    "mp4", "mov", "m4v", "mkv", "avi", "webm", "3gp", "mts", "m2ts", "mpg", "gif",
 ];
 
 /// True when `path` is a video (named as one) or a folder, not a data file: a folder

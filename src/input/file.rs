@@ -59,6 +59,43 @@ pub enum Unreadable {
     /// The `byte`-th byte (from 1) starts no UTF-8 character.
     #[error("byte {byte} is not UTF-8 text, allowed a UTF-8 text file")]
     NotUtf8 { byte: usize },
+    /// Not text but a video or a picture by its first bytes (`kind`: "an MP4 or MOV
+    /// video"), named without the extension that would have it tracked.
+    #[error(
+        "it is {kind} by its first bytes, not a text file: name it with its extension (.mp4, .mov, .mkv, .avi, .gif …) to have it tracked as a video, or track it with `groovelab track`"
+    )]
+    Video { kind: &'static str },
+}
+
+/// What a file's first bytes say it is, of the videos and pictures ffmpeg reads
+/// (their containers' signatures), if any.
+fn video_kind(head: &[u8]) -> Option<&'static str> {
+    let at = |i: usize, sig: &[u8]| head.get(i..i + sig.len()) == Some(sig);
+    if at(4, b"ftyp") {
+        Some("an MP4 or MOV video")
+    } else if at(0, &[0x1a, 0x45, 0xdf, 0xa3]) {
+        Some("a Matroska or WebM video")
+    } else if at(0, b"RIFF") && at(8, b"AVI ") {
+        Some("an AVI video")
+    } else if at(0, b"GIF8") {
+        Some("a GIF animation")
+    } else if at(0, &[0x00, 0x00, 0x01, 0xba]) {
+        Some("an MPEG video")
+    } else {
+        None
+    }
+}
+
+/// [`video_kind`] of the file at `path` (its first 12 bytes or fewer), if it can be
+/// read.
+fn video_file_kind(path: &Path) -> Option<&'static str> {
+    let mut head = Vec::with_capacity(12);
+    std::fs::File::open(path)
+        .ok()?
+        .take(12)
+        .read_to_end(&mut head)
+        .ok()?;
+    video_kind(&head)
 }
 
 /// A file the system would not open, in words with what is allowed: "no such file,
@@ -89,6 +126,9 @@ pub fn read_user_file(path: &Path, what: FileRole, limit: u64) -> Result<String,
         return Err(fail(Unreadable::NotRegular(kind(&meta))));
     }
     if meta.len() > limit {
+        if let Some(kind) = video_file_kind(path) {
+            return Err(fail(Unreadable::Video { kind }));
+        }
         return Err(fail(Unreadable::TooBig {
             size: Some(meta.len()),
             limit,
@@ -107,8 +147,13 @@ pub fn read_user_file(path: &Path, what: FileRole, limit: u64) -> Result<String,
         return Err(fail(Unreadable::TooBig { size: None, limit }));
     }
     String::from_utf8(bytes).map_err(|e| {
-        fail(Unreadable::NotUtf8 {
-            byte: e.utf8_error().valid_up_to() + 1,
+        let bytes = e.as_bytes();
+        let head = bytes.get(..bytes.len().min(12)).unwrap_or_default();
+        fail(match video_kind(head) {
+            Some(kind) => Unreadable::Video { kind },
+            None => Unreadable::NotUtf8 {
+                byte: e.utf8_error().valid_up_to() + 1,
+            },
         })
     })
 }
@@ -116,6 +161,45 @@ pub fn read_user_file(path: &Path, what: FileRole, limit: u64) -> Result<String,
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_video_named_without_its_extension_is_said_to_be_one() {
+        let mut mp4 = vec![0, 0, 0, 0x20];
+        mp4.extend_from_slice(b"ftypisom\0\0\x02\0\xff\xfe");
+        let cases: [(&[u8], &str); 4] = [
+            (&mp4, "an MP4 or MOV video"),
+            (b"GIF89a\x10\0\x10\0\xf7\0\0", "a GIF animation"),
+            (
+                &[0x1a, 0x45, 0xdf, 0xa3, 0x9f, 0x42, 0x86, 0x81, 0x01, 0xff],
+                "a Matroska or WebM video",
+            ),
+            (b"RIFF\x10\0\0\0AVI LIST\xff", "an AVI video"),
+        ];
+        for (i, (bytes, kind)) in cases.into_iter().enumerate() {
+            let p = scratch(&format!("noext{i}"));
+            std::fs::write(&p, bytes).unwrap();
+            let e = read_user_file(&p, FileRole::Data, 1 << 20)
+                .unwrap_err()
+                .to_string();
+            assert!(
+                e.contains(&format!("it is {kind} by its first bytes")),
+                "{e}"
+            );
+            assert!(e.contains("groovelab track"), "{e}");
+            // Over the size limit too (a real clip is larger than any table).
+            let e = read_user_file(&p, FileRole::Data, 4)
+                .unwrap_err()
+                .to_string();
+            assert!(e.contains(kind), "{e}");
+        }
+        // Other binary bytes: where the text breaks.
+        let p = scratch("binary");
+        std::fs::write(&p, b"t,x\n\xff\xfe").unwrap();
+        let e = read_user_file(&p, FileRole::Data, 1 << 20)
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("byte 5 is not UTF-8"), "{e}");
+    }
 
     fn scratch(name: &str) -> std::path::PathBuf {
         let dir = std::env::temp_dir().join(format!("groovelab-file-{}", std::process::id()));
