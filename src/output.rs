@@ -127,14 +127,17 @@ pub fn check_apart(path: &Path, picture: bool, others: &[Clash]) -> Result<(), O
             clash: c.clone(),
         });
     }
+    if !picture {
+        return Ok(());
+    }
     // A folder read (a video given as its frames): no picture is written inside
     // it, where it would replace a frame or be read as one (a text file there is
     // passed over).
-    let folders = others.iter().filter_map(|c| match c {
-        Clash::Reads { file, .. } if file.is_dir() => Some(file),
+    let folder = others.iter().find_map(|c| match c {
+        Clash::Reads { file, .. } if file.is_dir() && inside(path, file) => Some(file),
         _ => None,
     });
-    match folders.into_iter().find(|d| picture && inside(path, d)) {
+    match folder {
         Some(d) => Err(OutputError::InFramesFolder {
             path: path.to_path_buf(),
             folder: d.clone(),
@@ -143,14 +146,16 @@ pub fn check_apart(path: &Path, picture: bool, others: &[Clash]) -> Result<(), O
     }
 }
 
+/// The folder the file `path` (made or not) lies in, resolved: "." for a bare name.
+fn folder_of(path: &Path) -> io::Result<PathBuf> {
+    let parent = path.parent().filter(|d| !d.as_os_str().is_empty());
+    std::fs::canonicalize(parent.unwrap_or(Path::new(".")))
+}
+
 /// True when the file `path` (made or not) would lie in the folder `dir` or in one
 /// of its subfolders.
 fn inside(path: &Path, dir: &Path) -> bool {
-    let parent = path.parent().filter(|d| !d.as_os_str().is_empty());
-    match (
-        std::fs::canonicalize(parent.unwrap_or(Path::new("."))),
-        std::fs::canonicalize(dir),
-    ) {
+    match (folder_of(path), std::fs::canonicalize(dir)) {
         (Ok(p), Ok(d)) => p.starts_with(d),
         _ => false,
     }
@@ -165,11 +170,7 @@ fn same_target(a: &Path, b: &Path) -> bool {
         use std::os::unix::fs::MetadataExt;
         return (x.dev(), x.ino()) == (y.dev(), y.ino());
     }
-    let folder = |p: &Path| {
-        let parent = p.parent().filter(|d| !d.as_os_str().is_empty());
-        std::fs::canonicalize(parent.unwrap_or(Path::new(".")))
-    };
-    match (folder(a), folder(b)) {
+    match (folder_of(a), folder_of(b)) {
         (Ok(x), Ok(y)) => x == y && a.file_name() == b.file_name(),
         _ => false,
     }

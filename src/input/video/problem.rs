@@ -172,8 +172,8 @@ pub enum VideoProblem {
     /// The container's rate contradicted by the stream's duration
     /// (`Info::rate_in_doubt`).
     #[error(
-        "its {frames} frames at the container's {fps} frames/s would span {:.3} s, but the video lasts {duration:.3} s (its frames are unevenly spaced, or the container's rate is wrong), so no times are given; give --fps (the frames' average rate here is {:.2} frames/s)",
-        *frames as f64 / fps, *frames as f64 / duration
+        "its {frames} frames at the container's {} frames/s would span {:.3} s, but the video lasts {duration:.3} s (its frames are unevenly spaced, or the container's rate is wrong), so no times are given; give --fps (the frames' average rate here is {:.2} frames/s)",
+        crate::settings::units::significant(*fps, 6), *frames as f64 / fps, *frames as f64 / duration
     )]
     RateInDoubt {
         frames: u64,

@@ -75,12 +75,6 @@ pub(super) fn data_scatter(m: &Measured, positions: bool) -> Option<f64> {
     (s.is_finite() && s > 0.0).then_some(s)
 }
 
-/// What the data show after the sliding phase: the mean v_cm of the left ball from
-/// the end of sliding to the end of the series (or the next impact, a jump in v_cm).
-pub fn observed_regime(m: &Measured, band: f64) -> Regime {
-    observed_after(m, band, sliding_window(m).map(|w| w.1)).unwrap_or(Regime::Rest)
-}
-
 /// When the left ball of `scene` rolls again after the first impact: where a series
 /// without v_t has its sliding phase end.
 pub(super) fn rolling_time(scene: &Scene) -> Option<f64> {
@@ -95,9 +89,11 @@ pub(super) fn rolling_time(scene: &Scene) -> Option<f64> {
         .map(|e| e.t)
 }
 
-/// [`observed_regime`] with the end of the sliding phase given; `None` where the
-/// data end before it (nothing after the sliding phase was seen: the tracks of a
-/// clip that stops near the balls' turn said "rest" and the verdict DISAGREES).
+/// What the data show after the sliding phase, which ends at `to`: the mean v_cm of
+/// the left ball from there to the end of the series (or the next impact, a jump in
+/// v_cm); `None` where the data end before it (nothing after the sliding phase was
+/// seen: the tracks of a clip that stops near the balls' turn said "rest" and the
+/// verdict DISAGREES).
 pub(super) fn observed_after(m: &Measured, band: f64, to: Option<f64>) -> Option<Regime> {
     let Some(to) = to else {
         return Some(Regime::Rest);

@@ -19,6 +19,16 @@ struct Loaded {
     found: Option<Found>,
 }
 
+/// When a ball of `scene` first rolls again after the impact (the engine's event), s.
+fn rolling_time(scene: &Scene) -> f64 {
+    groovelab::physics::engine::solve(scene, &Default::default())
+        .events
+        .iter()
+        .find(|e| e.t > 0.0 && e.kind == groovelab::physics::solution::EventKind::Rolling)
+        .expect("the scene rolls again after the impact")
+        .t
+}
+
 fn try_load(scene: &Scene, text: &str) -> Result<Loaded, String> {
     let series = data::load(text, "video.txt", &Reading::default(), &Derive::default())
         .map_err(|e| e.to_string())?;
@@ -542,12 +552,7 @@ fn the_velocity_fit_uncertainty_covers_the_truth() {
 fn the_line_fits_of_a_marked_track_stop_at_rolling_and_the_regime_holds() {
     let s = preset_scene("paper-b4.9");
     let truth = groovelab::physics::derived::Derived::of(&s);
-    let t_roll = groovelab::physics::engine::solve(&s, &Default::default())
-        .events
-        .iter()
-        .find(|e| e.t > 0.0 && e.kind == groovelab::physics::solution::EventKind::Rolling)
-        .unwrap()
-        .t;
+    let t_roll = rolling_time(&s);
     let mut mean = 0.0;
     // Six seeds: each track's μ_k,cm has a ± of about 0.002, so their mean's is
     // under 0.001, well inside the 0.004 asked.
@@ -595,12 +600,7 @@ fn the_line_fits_of_a_marked_track_stop_at_rolling_and_the_regime_holds() {
 fn a_track_that_ends_before_rolling_has_no_regime_verdict() {
     use groovelab::study::fit::Agreement;
     let s = preset_scene("paper-b4.9");
-    let t_roll = groovelab::physics::engine::solve(&s, &Default::default())
-        .events
-        .iter()
-        .find(|e| e.t > 0.0 && e.kind == groovelab::physics::solution::EventKind::Rolling)
-        .unwrap()
-        .t;
+    let t_roll = rolling_time(&s);
     let fitted = |to: f64| {
         let v = Video {
             to,
@@ -658,12 +658,7 @@ fn rounded_times_give_the_true_frame_rate() {
 #[test]
 fn the_line_fit_uncertainty_covers_the_truth() {
     let s = preset_scene("paper-b4.9");
-    let t_roll = groovelab::physics::engine::solve(&s, &Default::default())
-        .events
-        .iter()
-        .find(|e| e.t > 0.0 && e.kind == groovelab::physics::solution::EventKind::Rolling)
-        .unwrap()
-        .t;
+    let t_roll = rolling_time(&s);
     // (frames/s, noise m, rim mark): 80 tracks of each kind.
     let settings = [
         (120.0, 3e-4, false),
