@@ -31,11 +31,41 @@ pub struct Band {
     pub noise: f64,
 }
 
-/// Frames of the clip's start the band is found from (`FIRST_EVERY` apart).
+/// Frames of the clip's start looked at for the balls' line, evenly over the first
+/// [`first_frames`] (the first and the last of them among them).
 pub const FIRST_FRAMES: usize = 3;
-/// Frames between those looked at: at 240 frames/s a twentieth of a second
-/// between the first and the last, so a passing blob does not agree with itself.
-pub const FIRST_EVERY: usize = 6;
+/// Fewest frames from the first looked-at to the last: a passing blob does not
+/// agree with itself.
+pub const LEAST_SPAN: usize = 12;
+/// Seconds from the first looked-at frame to the last, where the rate allows more
+/// than [`LEAST_SPAN`] frames: the background is learned from these frames, and a
+/// ball stands out of it only where it covered a pixel in less than half of them
+/// (rolling its own width, 5.5 cm, in under half the span: faster than 0.75 m/s,
+/// the paper's clip's approach; at 240 frames/s a span of 12 frames, 0.05 s, kept
+/// most balls in the background).
+pub const SPAN_S: f64 = 0.15;
+/// Most frames from the first looked-at to the last (the first frames are kept
+/// whole until the band is found: 48 of 1080p are 150 MB).
+pub const MOST_SPAN: usize = 48;
+/// Largest relative spread of the first frames' pixel noise for a band (else the
+/// clip's noise may change, and the band, given the first frames', could not follow
+/// it): a textured wall's noise is its grain, which an encoder renders a level or
+/// so differently frame to frame (8.4 and 9.4 levels); a plain wall's, a level or
+/// two, steps from 1.05 to 2.10 and gives no band.
+pub const NOISE_SPREAD: f64 = 0.15;
+
+/// The clip's first frames, counted from the first, that the band is found from
+/// for a clip of `fps` frames/s: [`SPAN_S`] of them, at least [`LEAST_SPAN`] + 1
+/// and at most [`MOST_SPAN`] + 1.
+pub fn first_frames(fps: f64) -> usize {
+    let span = (SPAN_S * fps).round();
+    let span = if span.is_finite() && span > 0.0 {
+        (span as usize).clamp(LEAST_SPAN, MOST_SPAN)
+    } else {
+        LEAST_SPAN
+    };
+    span + 1
+}
 
 impl Band {
     /// Radii kept above and below the balls' line: the outline's outermost edge is
@@ -124,11 +154,12 @@ pub fn shift(frames: &mut [FrameFixes], dy: f64) {
 }
 
 /// The band around the balls' line in `first` (the clip's first frames, whole and
-/// in order; every [`FIRST_EVERY`]-th looked at, [`FIRST_FRAMES`] of them), or
+/// in order, [`first_frames`] of them; [`FIRST_FRAMES`] looked at, evenly from the
+/// first to the last), or
 /// `None` when the line is in doubt: not exactly two balls of one radius in each
 /// looked-at frame, balls too close to tell the line's tilt, frames that disagree
 /// on it, a band of most of the frame, a seed (`--ball-at`) off its rows, or a
-/// pixel noise that changes between the first frames.
+/// pixel noise that changes between the first frames by more than [`NOISE_SPREAD`].
 pub fn find(first: &[Frame], params: &Params) -> Option<Band> {
     let (w, h) = (first.first()?.width(), first.first()?.height());
     if first.iter().any(|f| (f.width(), f.height()) != (w, h)) {
@@ -138,16 +169,28 @@ pub fn find(first: &[Frame], params: &Params) -> Option<Band> {
     // past their own width stand out of it, on any wall), else with none (the look
     // against a smooth surface of luma, which sees a ball at rest on a plain wall).
     let (lines, radius) = lines(first, params, true).or_else(|| lines(first, params, false))?;
-    // The whole frame's noise, the same in every first frame (else the clip's may
-    // change, and the band could not follow it).
-    let noise = super::prepared::pixel_noise(&first.first()?.luma);
-    if first
-        .iter()
-        .any(|f| super::prepared::pixel_noise(&f.luma) != noise)
-    {
-        return None;
-    }
+    let noise = steady_noise(first)?;
     band_about(&lines, radius, (w, h), params).map(|b| Band { noise, ..b })
+}
+
+/// The whole frame's pixel noise over `first` (their median), or `None` when it
+/// spreads by more than [`NOISE_SPREAD`] of it.
+fn steady_noise(first: &[Frame]) -> Option<f64> {
+    steady(
+        first
+            .iter()
+            .map(|f| super::prepared::pixel_noise(&f.luma))
+            .collect(),
+    )
+}
+
+/// The median of `noises`, or `None` when they spread by more than
+/// [`NOISE_SPREAD`] of it.
+fn steady(mut noises: Vec<f64>) -> Option<f64> {
+    noises.sort_by(f64::total_cmp);
+    let (lo, hi) = (*noises.first()?, *noises.last()?);
+    let noise = *noises.get(noises.len() / 2)?;
+    (hi - lo <= NOISE_SPREAD * noise).then_some(noise)
 }
 
 /// Each looked-at frame's line through its two balls (its height at the middle of
@@ -159,7 +202,12 @@ fn lines(first: &[Frame], params: &Params, learned: bool) -> Option<(Vec<(f64, f
     if learned {
         first.iter().for_each(|f| t.learn(f));
     }
-    first.iter().step_by(FIRST_EVERY).for_each(|f| t.push(f));
+    let every = (first.len().saturating_sub(1) / (FIRST_FRAMES - 1)).max(1);
+    first
+        .iter()
+        .step_by(every)
+        .take(FIRST_FRAMES)
+        .for_each(|f| t.push(f));
     if t.counts.crowded > 0 || t.frames.len() < FIRST_FRAMES {
         return None;
     }
@@ -244,6 +292,23 @@ fn alignment(width: usize, params: &Params) -> usize {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_first_frames_span_a_time_and_their_noise_may_spread_a_little() {
+        // 0.15 s at 240 and 100 frames/s; 12 frames' span at least, 48 at most.
+        assert_eq!(first_frames(240.0), 37);
+        assert_eq!(first_frames(100.0), 16);
+        assert_eq!(first_frames(30.0), 13);
+        assert_eq!(first_frames(1000.0), 49);
+        assert_eq!(first_frames(f64::NAN), 13);
+        // A grainy wall's noise, a level apart in some frames: their median.
+        assert_eq!(steady(vec![9.44, 8.39, 8.39]), Some(8.39));
+        assert_eq!(steady(vec![8.39, 9.44, 9.44]), Some(9.44));
+        // A plain wall's steps by 100 %; a noiseless frame's is none.
+        assert_eq!(steady(vec![1.05, 2.10, 1.05]), None);
+        assert_eq!(steady(vec![0.0, 0.0, 0.0]), Some(0.0));
+        assert_eq!(steady(Vec::new()), None);
+    }
 
     #[test]
     fn a_band_is_aligned_to_the_coarse_pixels_and_cut_alike() {

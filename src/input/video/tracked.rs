@@ -305,7 +305,7 @@ fn attempt(
         return Err(nothing(err(VideoProblem::NoRate)));
     };
     let framed = if banded {
-        framed(video, &info, frames, params, pictures).map_err(nothing)?
+        framed(video, &info, frames, (params, fps), pictures).map_err(nothing)?
     } else {
         Framed::whole(frames)
     };
@@ -474,7 +474,7 @@ impl Framed {
     }
 }
 
-/// The band of `video`'s frames (`vision::band::find` on its first frames, read
+/// The band of `video`'s frames (`vision::band::find` on its first frames at `fps`, read
 /// from `frames` and kept), and the frames to track: whole when there is none;
 /// a video's band decoded anew by ffmpeg, cut, when only tracks are wanted
 /// (`frames` ended unread); else `frames` to be cut as they are read.
@@ -482,11 +482,11 @@ fn framed(
     video: &std::path::Path,
     info: &Info,
     mut frames: super::Frames,
-    params: &vision::Params,
+    (params, fps): (&vision::Params, f64),
     pictures: Pictures,
 ) -> Result<Framed, VideoError> {
     let mut head = Vec::new();
-    let wanted = (vision::band::FIRST_FRAMES - 1) * vision::band::FIRST_EVERY + 1;
+    let wanted = vision::band::first_frames(fps);
     for frame in frames.by_ref() {
         let bad = frame.is_err();
         head.push(frame);
@@ -501,6 +501,7 @@ fn framed(
     let band = (first.len() == wanted)
         .then(|| vision::band::find(&first, params))
         .flatten();
+
     if let Some(b) = band
         && video.is_file()
         && pictures == Pictures::Skipped
