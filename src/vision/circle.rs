@@ -806,7 +806,8 @@ fn chroma(frame: &Frame, x: f64, y: f64) -> Option<[f64; 2]> {
     if !(cx >= 0.0 && cy >= 0.0) {
         return None;
     }
-    let (i, j) = (cx.floor() as usize, cy.floor() as usize);
+    // Truncation is the floor of these non-negative values, with no libm call.
+    let (i, j) = (cx as usize, cy as usize);
     let w = frame.chroma_width;
     if i + 1 >= w || j + 1 >= frame.chroma_height {
         return None;
@@ -869,7 +870,8 @@ fn bilinear(img: &Gray, x: f64, y: f64) -> Option<f64> {
     if !(x >= 0.0 && y >= 0.0) {
         return None;
     }
-    let (i, j) = (x.floor() as usize, y.floor() as usize);
+    // Truncation is the floor of these non-negative values, with no libm call.
+    let (i, j) = (x as usize, y as usize);
     if i + 1 >= img.width || j + 1 >= img.height {
         return None;
     }

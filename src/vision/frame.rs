@@ -143,7 +143,7 @@ pub fn chroma_size(width: usize, height: usize) -> (usize, usize) {
 }
 
 fn to_u8(v: f32) -> u8 {
-    v.round().clamp(0.0, 255.0) as u8
+    super::gray::level(v)
 }
 
 #[cfg(test)]

@@ -9,6 +9,18 @@ pub struct Gray {
     pub data: Vec<u8>,
 }
 
+/// `v` as a whole level: rounded half away from zero and held to 0–255, as
+/// `v.round().clamp(0.0, 255.0) as u8` (NaN 0), without a call into libm's
+/// `roundf` per pixel (the build assumes no SSE4.1, so `round` is not one
+/// instruction): the tracker's pictures of differences make one per pixel.
+#[inline]
+pub fn level(v: f32) -> u8 {
+    let c = v.clamp(0.0, 255.0);
+    // Truncation is the floor here (c is 0–255 or NaN, which gives 0).
+    let t = c as u8;
+    if c - f32::from(t) >= 0.5 { t + 1 } else { t }
+}
+
 impl Gray {
     /// A frame of one level.
     pub fn filled(width: usize, height: usize, level: u8) -> Gray {
@@ -125,6 +137,37 @@ pub struct Levels {
 
 #[cfg(test)]
 mod tests {
+
+    #[test]
+    fn a_level_is_rounded_as_round_and_clamp_round() {
+        let slow = |v: f32| v.round().clamp(0.0, 255.0) as u8;
+        let mut values = vec![
+            f32::NAN,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+            -0.0,
+            0.0,
+            1e30,
+            -1e30,
+        ];
+        // Every half level from −2 to 258 and the floats beside it, where rounding turns.
+        for k in -4..=516 {
+            let h = k as f32 * 0.5;
+            values.extend([h, h.next_up(), h.next_down(), h.next_up().next_up()]);
+        }
+        // And a spread of others (a fixed LCG: the test reads no clock).
+        let mut x: u64 = 12345;
+        for _ in 0..200_000 {
+            x = x
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            values.push((x >> 40) as f32 / (1u64 << 24) as f32 * 270.0 - 7.0);
+        }
+        for v in values {
+            assert_eq!(level(v), slow(v), "{v:?}");
+        }
+    }
+
     use super::*;
 
     #[test]

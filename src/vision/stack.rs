@@ -217,7 +217,7 @@ impl Picture {
                     .sqrt(),
                     _ => 0.0,
                 };
-                data.push(d.round().clamp(0.0, 255.0) as u8);
+                data.push(super::gray::level(d));
             }
         }
         Gray {
@@ -271,7 +271,7 @@ impl Picture {
             data: self
                 .px
                 .iter()
-                .map(|p| p.map_or(fill, |p| p[0]).round().clamp(0.0, 255.0) as u8)
+                .map(|p| super::gray::level(p.map_or(fill, |p| p[0])))
                 .collect(),
         }
     }

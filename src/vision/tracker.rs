@@ -1622,7 +1622,7 @@ impl Tracker {
                 let (fx, fy) = (x as f64, y as f64);
                 let d = (chroma(&frame.u, fx, fy) - background_between(bg, &bg.u, (col, row))) * su
                     + (chroma(&frame.v, fx, fy) - background_between(bg, &bg.v, (col, row))) * sv;
-                data.push((64.0 + gain * d).round().clamp(0.0, 255.0) as u8);
+                data.push(super::gray::level(64.0 + gain * d));
             }
         }
         let patch = Gray {
@@ -1707,7 +1707,7 @@ impl Tracker {
                 // Brightness and colour together: the looks' rule (the larger of the
                 // two, 0 for a shadow) measured worse here (BENCHMARKS.md).
                 let d = luma.hypot(gain * du.hypot(dv));
-                data.push(d.round().clamp(0.0, 255.0) as u8);
+                data.push(super::gray::level(d));
             }
         }
         let patch = Gray {
@@ -1919,7 +1919,8 @@ fn colour_axis(f: usize, n: usize, t: f64, between: bool) -> (usize, usize, f32)
     }
     // Where coarse pixel `i`'s colour sample lies, px.
     let place = |i: usize| (2 * ((i * f + f / 2) / 2)) as f64 + 0.5;
-    let i0 = (((t - 0.5) / f as f64).floor().max(0.0) as usize).min(n.saturating_sub(1));
+    // `as usize` is the floor held at 0 (negative and NaN give 0), with no libm call.
+    let i0 = (((t - 0.5) / f as f64) as usize).min(n.saturating_sub(1));
     let i0 = if i0 > 0 && place(i0) > t { i0 - 1 } else { i0 };
     let i1 = (i0 + 1).min(n.saturating_sub(1));
     let span = place(i1) - place(i0);
@@ -1979,7 +1980,8 @@ fn patch_box(frame: &Frame, guess: Circle, band: f64) -> Option<(usize, usize, u
 fn chroma_at(frame: &Frame, plane: &[u8], x: f64, y: f64) -> f32 {
     let (cx, cy) = ((x - 0.5) / 2.0, (y - 0.5) / 2.0);
     let (cw, ch) = (frame.chroma_width, frame.chroma_height);
-    let (i0, j0) = (cx.floor().max(0.0) as usize, cy.floor().max(0.0) as usize);
+    // `as usize` is the floor held at 0 (negative and NaN give 0), with no libm call.
+    let (i0, j0) = (cx as usize, cy as usize);
     let (i1, j1) = (
         (i0 + 1).min(cw.saturating_sub(1)),
         (j0 + 1).min(ch.saturating_sub(1)),
