@@ -1613,15 +1613,24 @@ impl Tracker {
         let mut data = Vec::with_capacity(w * h);
         // The background's samples about each column and row, found once.
         let fu = bg.factor.max(1);
+        // And the frame's.
+        let (cw, ch) = (frame.chroma_width, frame.chroma_height);
         let cols: Vec<_> = (x0..=x1)
-            .map(|x| colour_axis(fu, bg.width, x as f64, own))
+            .map(|x| {
+                let x = x as f64;
+                (colour_axis(fu, bg.width, x, own), chroma_axis(cw, x))
+            })
             .collect();
         for y in y0..=y1 {
             let row = colour_axis(fu, bg.height, y as f64, own);
-            for (x, &col) in (x0..=x1).zip(&cols) {
-                let (fx, fy) = (x as f64, y as f64);
-                let d = (chroma(&frame.u, fx, fy) - background_between(bg, &bg.u, (col, row))) * su
-                    + (chroma(&frame.v, fx, fy) - background_between(bg, &bg.v, (col, row))) * sv;
+            let frow = chroma_axis(ch, y as f64);
+            for &(col, fcol) in &cols {
+                let d = (chroma_between(&frame.u, cw, (fcol, frow))
+                    - background_between(bg, &bg.u, (col, row)))
+                    * su
+                    + (chroma_between(&frame.v, cw, (fcol, frow))
+                        - background_between(bg, &bg.v, (col, row)))
+                        * sv;
                 data.push(super::gray::level(64.0 + gain * d));
             }
         }
@@ -1689,21 +1698,25 @@ impl Tracker {
         }
         let (x0, y0, x1, y1) = patch_box(frame, guess, band)?;
         let gain = self.params.colour_weight as f32;
+        let (cw, ch) = (frame.chroma_width, frame.chroma_height);
         let cols: Vec<_> = (x0..=x1)
-            .map(|x| colour_axis(1, bg.width, x as f64, true))
+            .map(|x| {
+                let fx = x as f64;
+                (x, colour_axis(1, bg.width, fx, true), chroma_axis(cw, fx))
+            })
             .collect();
         let mut data = Vec::with_capacity((x1 - x0 + 1) * (y1 - y0 + 1));
         for y in y0..=y1 {
             let row = colour_axis(1, bg.height, y as f64, true);
-            for (x, &col) in (x0..=x1).zip(&cols) {
+            let frow = chroma_axis(ch, y as f64);
+            for &(x, col, fcol) in &cols {
                 let i = y * bg.width + x;
                 let luma = f32::from(frame.luma.data.get(i).copied().unwrap_or(0))
                     - bg.y.get(i).copied().unwrap_or(0.0);
-                let (fx, fy) = (x as f64, y as f64);
-                let du =
-                    chroma_at(frame, &frame.u, fx, fy) - background_between(bg, &bg.u, (col, row));
-                let dv =
-                    chroma_at(frame, &frame.v, fx, fy) - background_between(bg, &bg.v, (col, row));
+                let du = chroma_between(&frame.u, cw, (fcol, frow))
+                    - background_between(bg, &bg.u, (col, row));
+                let dv = chroma_between(&frame.v, cw, (fcol, frow))
+                    - background_between(bg, &bg.v, (col, row));
                 // Brightness and colour together: the looks' rule (the larger of the
                 // two, 0 for a shadow) measured worse here (BENCHMARKS.md).
                 let d = luma.hypot(gain * du.hypot(dv));
@@ -1978,18 +1991,29 @@ fn patch_box(frame: &Frame, guess: Circle, band: f64) -> Option<(usize, usize, u
 /// The colour plane `plane` of `frame` at the full-size point (x, y), bilinearly
 /// between its half-size samples (sample (i, j) sits at (2i + 0.5, 2j + 0.5)).
 fn chroma_at(frame: &Frame, plane: &[u8], x: f64, y: f64) -> f32 {
-    let (cx, cy) = ((x - 0.5) / 2.0, (y - 0.5) / 2.0);
     let (cw, ch) = (frame.chroma_width, frame.chroma_height);
+    chroma_between(plane, cw, (chroma_axis(cw, x), chroma_axis(ch, y)))
+}
+
+/// Where [`chroma_at`] reads the colour samples about the full-size coordinate `t`
+/// along an axis of `n` half-size samples: the sample before, the one after (held
+/// to the axis) and the second's weight. Found once per column and row of a patch
+/// (a pixel's own arithmetic was a sixth of a large ball's outline in colour).
+fn chroma_axis(n: usize, t: f64) -> (usize, usize, f32) {
+    let c = (t - 0.5) / 2.0;
     // `as usize` is the floor held at 0 (negative and NaN give 0), with no libm call.
-    let (i0, j0) = (cx as usize, cy as usize);
-    let (i1, j1) = (
-        (i0 + 1).min(cw.saturating_sub(1)),
-        (j0 + 1).min(ch.saturating_sub(1)),
-    );
-    let (fx, fy) = (
-        (cx - i0 as f64).clamp(0.0, 1.0) as f32,
-        (cy - j0 as f64).clamp(0.0, 1.0) as f32,
-    );
+    let i0 = c as usize;
+    let i1 = (i0 + 1).min(n.saturating_sub(1));
+    (i0, i1, (c - i0 as f64).clamp(0.0, 1.0) as f32)
+}
+
+/// The colour plane `plane` (`cw` samples wide) between the samples `(i0, i1, fx)`
+/// across and `(j0, j1, fy)` down ([`chroma_axis`]); a sample off the plane reads 128.
+fn chroma_between(
+    plane: &[u8],
+    cw: usize,
+    ((i0, i1, fx), (j0, j1, fy)): ((usize, usize, f32), (usize, usize, f32)),
+) -> f32 {
     let at = |i: usize, j: usize| plane.get(j * cw + i).map_or(128.0, |&v| f32::from(v));
     (at(i0, j0) * (1.0 - fx) + at(i1, j0) * fx) * (1.0 - fy)
         + (at(i0, j1) * (1.0 - fx) + at(i1, j1) * fx) * fy
