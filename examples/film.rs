@@ -6,7 +6,9 @@
 //! `groovelab --data /tmp/clip --fps 100 --radius 2.75cm --width 4.9cm`.
 //! `cargo run --example film -- /tmp/look7 7` writes random look 7 of the looks table
 //! (full size; `7 small` for the small looks of `cargo test`) as `clip.mp4`, and says
-//! its rate, the truth's scale and the look in words, to watch the tracker on it:
+//! its rate, the truth's scale and the look in words, to watch the tracker on it
+//! (`7 long`: the same full look filmed for 3 s, to time `track` on a clip of the
+//! speed target's length):
 //! `groovelab track /tmp/look7/clip.mp4 --fps RATE --radius 2.75cm --overlay /tmp/look7/o.png`.
 //! With `FILM_TRUTH=1` it also writes each frame's true centres and radius to stderr
 //! (`T<frame> (x, y) (x, y) r<R>`, px), to hold the tracker's fits against.
@@ -25,7 +27,7 @@ mod film;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
     const USAGE: &str =
-        "usage: film FOLDER [SEED [small] | speed] (written: frame0001.png … or clip.mp4)";
+        "usage: film FOLDER [SEED [small | long] | speed] (written: frame0001.png … or clip.mp4)";
     let mut args = std::env::args().skip(1);
     // `film --help` prints the usage; it made a folder named `--help`.
     let dir = args.next().filter(|d| !d.starts_with('-')).ok_or(USAGE)?;
@@ -49,12 +51,21 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let seed: u64 = seed
             .parse()
             .map_err(|_| format!("error: SEED {seed:?}: a whole number expected"))?;
-        let size = match args.next().as_deref() {
-            Some("small") => Size::Small,
-            None | Some("full") => Size::Full,
-            Some(other) => return Err(format!("error: size {other:?}: small or full").into()),
+        let (size, long) = match args.next().as_deref() {
+            Some("small") => (Size::Small, false),
+            None | Some("full") => (Size::Full, false),
+            Some("long") => (Size::Full, true),
+            Some(other) => {
+                return Err(format!("error: size {other:?}: small, full or long").into());
+            }
         };
-        let clip = looks::random(scene, seed, size);
+        let mut clip = looks::random(scene, seed, size);
+        if long {
+            // The same look filmed for 3 s from its start (the speed target's length).
+            let to = clip.film.look.from + 3.0;
+            clip.film = Film::new(scene, clip.film.look, to);
+            clip.frames = clip.film.frames_to(to);
+        }
         let path = dir.join("clip.mp4");
         h264::write(&path, &clip.film, clip.frames)?;
         let l = &clip.film.look;
