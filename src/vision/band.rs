@@ -14,6 +14,7 @@ use super::frame::{Frame, chroma_size};
 use super::gray::Gray;
 use super::params::Params;
 use super::tracker::{FrameFixes, Tracker};
+use std::borrow::Borrow;
 
 /// Rows `y .. y + height` of frames `height_of` high, full width: where the tracker
 /// looks. `y` and `height` are multiples of twice the coarse reductions, so the
@@ -54,9 +55,11 @@ pub const MOST_SPAN: usize = 48;
 /// two, steps from 1.05 to 2.10 and gives no band.
 pub const NOISE_SPREAD: f64 = 0.15;
 
-/// The clip's first frames, counted from the first, that the band is found from
-/// for a clip of `fps` frames/s: [`SPAN_S`] of them, at least [`LEAST_SPAN`] + 1
-/// and at most [`MOST_SPAN`] + 1.
+/// The most of the clip's first frames, counted from the first, that the band is
+/// found from for a clip of `fps` frames/s: [`SPAN_S`] of them, at least
+/// [`LEAST_SPAN`] + 1 and at most [`MOST_SPAN`] + 1. (`input::video::tracked`
+/// tries the first [`LEAST_SPAN`] + 1 first, and reads on only where they leave
+/// the line in doubt.)
 pub fn first_frames(fps: f64) -> usize {
     let span = (SPAN_S * fps).round();
     let span = if span.is_finite() && span > 0.0 {
@@ -160,7 +163,9 @@ pub fn shift(frames: &mut [FrameFixes], dy: f64) {
 /// looked-at frame, balls too close to tell the line's tilt, frames that disagree
 /// on it, a band of most of the frame, a seed (`--ball-at`) off its rows, or a
 /// pixel noise that changes between the first frames by more than [`NOISE_SPREAD`].
-pub fn find(first: &[Frame], params: &Params) -> Option<Band> {
+pub fn find<F: Borrow<Frame>>(first: &[F], params: &Params) -> Option<Band> {
+    let frames: Vec<&Frame> = first.iter().map(Borrow::borrow).collect();
+    let first = frames.as_slice();
     let (w, h) = (first.first()?.width(), first.first()?.height());
     if first.iter().any(|f| (f.width(), f.height()) != (w, h)) {
         return None;
@@ -175,7 +180,7 @@ pub fn find(first: &[Frame], params: &Params) -> Option<Band> {
 
 /// The whole frame's pixel noise over `first` (their median), or `None` when it
 /// spreads by more than [`NOISE_SPREAD`] of it.
-fn steady_noise(first: &[Frame]) -> Option<f64> {
+fn steady_noise(first: &[&Frame]) -> Option<f64> {
     steady(
         first
             .iter()
@@ -197,7 +202,7 @@ fn steady(mut noises: Vec<f64>) -> Option<f64> {
 /// the width, its slope) and the balls' radius, or `None` when any frame does not
 /// show exactly two balls of one radius 4 radii apart or more, or the frames'
 /// lines disagree. `learned`: the background learned from all of `first` first.
-fn lines(first: &[Frame], params: &Params, learned: bool) -> Option<(Vec<(f64, f64)>, f64)> {
+fn lines(first: &[&Frame], params: &Params, learned: bool) -> Option<(Vec<(f64, f64)>, f64)> {
     let mut t = Tracker::new(*params);
     if learned {
         first.iter().for_each(|f| t.learn(f));

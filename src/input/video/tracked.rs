@@ -474,10 +474,11 @@ impl Framed {
     }
 }
 
-/// The band of `video`'s frames (`vision::band::find` on its first frames at `fps`, read
-/// from `frames` and kept), and the frames to track: whole when there is none;
-/// a video's band decoded anew by ffmpeg, cut, when only tracks are wanted
-/// (`frames` ended unread); else `frames` to be cut as they are read.
+/// The band of `video`'s frames (`vision::band::find` on its first frames, read
+/// from `frames` and kept: the first [`vision::band::LEAST_SPAN`] + 1, else as many
+/// as `fps` asks, [`vision::band::first_frames`]), and the frames to track: whole
+/// when there is none; a video's band decoded anew by ffmpeg, cut, when only tracks
+/// are wanted (`frames` ended unread); else `frames` to be cut as they are read.
 fn framed(
     video: &std::path::Path,
     info: &Info,
@@ -486,22 +487,34 @@ fn framed(
     pictures: Pictures,
 ) -> Result<Framed, VideoError> {
     let mut head = Vec::new();
-    let wanted = vision::band::first_frames(fps);
-    for frame in frames.by_ref() {
-        let bad = frame.is_err();
-        head.push(frame);
-        if bad || head.len() >= wanted {
+    // The fewest first frames first: where they show the line (a clip at 60
+    // frames/s and below, a slow clip, the balls apart from the background
+    // already), no more of them are read whole before the band's own decoding
+    // starts again from the first (the bench's clip read 37 whole frames at 240
+    // frames/s for a band the first 13 gave). Else the span `fps` asks.
+    let mut band = None;
+    for wanted in [
+        vision::band::LEAST_SPAN + 1,
+        vision::band::first_frames(fps),
+    ] {
+        if band.is_some() || head.len() >= wanted || head.last().is_some_and(Result::is_err) {
             break;
         }
+        for frame in frames.by_ref() {
+            let bad = frame.is_err();
+            head.push(frame);
+            if bad || head.len() >= wanted {
+                break;
+            }
+        }
+        let first: Vec<&vision::Frame> = head
+            .iter()
+            .filter_map(|f| f.as_ref().ok().map(|(_, img)| img))
+            .collect();
+        band = (first.len() == wanted)
+            .then(|| vision::band::find(&first, params))
+            .flatten();
     }
-    let first: Vec<vision::Frame> = head
-        .iter()
-        .filter_map(|f| f.as_ref().ok().map(|(_, img)| img.clone()))
-        .collect();
-    let band = (first.len() == wanted)
-        .then(|| vision::band::find(&first, params))
-        .flatten();
-
     if let Some(b) = band
         && video.is_file()
         && pictures == Pictures::Skipped

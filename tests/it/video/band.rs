@@ -141,6 +141,33 @@ fn the_first_frames_span_a_time_the_balls_leave_the_background_in() {
     }
 }
 
+/// The band is found from the first 13 frames where they show the line, else from
+/// the span the rate asks (16 frames at 100 frames/s), never from more frames than
+/// that: small look 51 (glossy balls on a light plain wall, 100 frames/s), whose
+/// decoded first 13 frames give a band (rows 48–171) and first 16 another (46–173),
+/// is tracked in the band of its 13; small look 63 (wooden balls on a dark grain),
+/// whose 13 give none, in the band of its 16.
+#[test]
+fn the_first_frames_are_the_fewest_that_show_the_line() {
+    let params = groovelab::vision::Params::default();
+    for (seed, at_13) in [(51, true), (63, false)] {
+        let Some((clip, path)) = super::h264_look("band", seed, Size::Small) else {
+            return;
+        };
+        let n = first_frames(&clip);
+        assert_eq!(n, 16, "{}", clip.name);
+        let limits = groovelab::input::video::Limits::default();
+        let (_, frames) = groovelab::input::video::open(&path, &limits).unwrap();
+        let first: Vec<_> = frames.take(n).map(|f| f.unwrap().1).collect();
+        let find = |k: usize| groovelab::vision::band::find(first.get(..k).unwrap(), &params);
+        let (b13, b16) = (find(13), find(16));
+        assert_eq!(b13.is_some(), at_13, "look {seed}: {b13:?}");
+        assert_ne!(b13, b16, "look {seed}: the two spans tell nothing apart");
+        let t = tracked(&path, &clip, Framing::Band);
+        assert_eq!(t.band, if at_13 { b13 } else { b16 }, "look {seed}");
+    }
+}
+
 /// The first frames of `clip` the band is found from.
 fn first_frames(clip: &Clip) -> usize {
     groovelab::vision::band::first_frames(clip.film.look.fps)
