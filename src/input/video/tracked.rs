@@ -493,17 +493,23 @@ fn framed(
     // starts again from the first (the bench's clip read 37 whole frames at 240
     // frames/s for a band the first 13 gave). Else the span `fps` asks.
     let mut band = None;
+    // The frames ran out (a clip shorter than the span): never asked again.
+    let mut ended = false;
     for wanted in [
         vision::band::LEAST_SPAN + 1,
         vision::band::first_frames(fps),
     ] {
-        if band.is_some() || head.len() >= wanted || head.last().is_some_and(Result::is_err) {
+        if band.is_some() || ended || head.last().is_some_and(Result::is_err) {
             break;
         }
-        for frame in frames.by_ref() {
+        while head.len() < wanted {
+            let Some(frame) = frames.next() else {
+                ended = true;
+                break;
+            };
             let bad = frame.is_err();
             head.push(frame);
-            if bad || head.len() >= wanted {
+            if bad {
                 break;
             }
         }
