@@ -446,14 +446,55 @@ fn geometric(points: &[[f64; 2]], start: Circle) -> Option<Circle> {
     Some(c)
 }
 
+/// The columns of row `dy` px below a circle's centre at `cx` that can lie between
+/// the squared radii `lo2` and `hi2` of it, within `from..=to`: one or two runs
+/// (an empty run is `(1, 0)`), a pixel wider than the ring each way, so that every
+/// pixel of the ring is in them (each is still tested: the runs only spare the
+/// test of the box's pixels far from the ring, inside it above all, the larger part
+/// of a large ball's box).
+fn ring_columns(
+    cx: f64,
+    dy: f64,
+    (lo2, hi2): (f64, f64),
+    (from, to): (isize, isize),
+) -> [(isize, isize); 2] {
+    const NONE: (isize, isize) = (1, 0);
+    let rest = hi2 - dy * dy;
+    if rest.is_nan() || rest < 0.0 {
+        return [NONE, NONE];
+    }
+    let outer = rest.sqrt() + 1.0;
+    let inside = lo2 - dy * dy;
+    let inner = if inside > 0.0 {
+        (inside.sqrt() - 1.0).max(0.0)
+    } else {
+        0.0
+    };
+    let (a, d) = (
+        ((cx - outer).floor() as isize).max(from),
+        ((cx + outer).ceil() as isize).min(to),
+    );
+    let (b, c) = (
+        ((cx - inner).ceil() as isize).min(to),
+        ((cx + inner).floor() as isize).max(from),
+    );
+    if b >= c {
+        [(a, d), NONE]
+    } else {
+        [(a, b), (c, d)]
+    }
+}
+
 /// The Sobel gradient (x, y, magnitude; per pixel) over the box `(x0, y0, x1, y1)`,
-/// computed only where `near(x, y, 1.5)` (zero elsewhere).
+/// computed only where `near(x, y, 1.5)` (zero elsewhere), looked for in the
+/// columns `columns(y, 1.5)` of each row ([`ring_columns`]).
 #[allow(clippy::type_complexity)]
 #[allow(clippy::indexing_slicing)] // the box is clipped one pixel inside the frame, and the buffers are its size
 fn gradient(
     img: &Gray,
     (x0, y0, x1, y1): (isize, isize, isize, isize),
     near: &impl Fn(isize, isize, f64) -> bool,
+    columns: &impl Fn(isize, f64) -> [(isize, isize); 2],
 ) -> (Vec<f32>, Vec<f32>, Vec<f32>) {
     let (bw, bh) = ((x1 - x0 + 1) as usize, (y1 - y0 + 1) as usize);
     let mut gx = vec![0.0f32; bw * bh];
@@ -461,7 +502,7 @@ fn gradient(
     let mut mag = vec![0.0f32; bw * bh];
     let p = |x: isize, y: isize| img.at(x as usize, y as usize);
     for y in y0..=y1 {
-        for x in x0..=x1 {
+        for x in columns(y, 1.5).into_iter().flat_map(|(a, b)| a..=b) {
             if !near(x, y, 1.5) {
                 continue;
             }
@@ -510,10 +551,19 @@ fn edge_points(
         let d2 = dx * dx + dy * dy;
         lo <= d2 && d2 <= hi
     };
-    let (gx, gy, mag) = gradient(img, (x0, y0, x1, y1), &near);
+    let columns = |y: isize, extra: f64, box_x: (isize, isize)| {
+        let ring = if extra > 0.0 { outer } else { inner };
+        ring_columns(guess.x, y as f64 - guess.y, ring, box_x)
+    };
+    let (gx, gy, mag) = gradient(img, (x0, y0, x1, y1), &near, &|y, extra| {
+        columns(y, extra, (x0, x1))
+    });
     let mut found: Vec<([f64; 2], f32, f64)> = Vec::new();
     for y in (y0 + 1)..y1 {
-        for x in (x0 + 1)..x1 {
+        for x in columns(y, 0.0, (x0 + 1, x1 - 1))
+            .into_iter()
+            .flat_map(|(a, b)| a..=b)
+        {
             if !near(x, y, 0.0) {
                 continue;
             }
