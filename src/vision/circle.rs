@@ -932,3 +932,43 @@ fn bilinear(img: &Gray, x: f64, y: f64) -> Option<f64> {
             + (p(i, j + 1) * (1.0 - fx) + p(i + 1, j + 1) * fx) * fy,
     )
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_rings_columns_hold_every_pixel_of_the_ring_in_order() {
+        // A fixed LCG over centres, rows, radii and boxes (the test reads no clock).
+        let mut x: u64 = 7;
+        let mut draw = |lo: f64, hi: f64| {
+            x = x
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            lo + (hi - lo) * ((x >> 11) as f64 / (1u64 << 53) as f64)
+        };
+        for _ in 0..20_000 {
+            let cx = draw(-20.0, 220.0);
+            let dy = draw(-90.0, 90.0);
+            let r = draw(0.0, 80.0);
+            let band = draw(0.0, 6.0);
+            let (lo, hi) = ((r - band).max(0.0), r + band);
+            let (from, to) = (draw(-5.0, 100.0) as isize, draw(100.0, 260.0) as isize);
+            let runs = ring_columns(cx, dy, (lo * lo, hi * hi), (from, to));
+            let inside = |c: isize| runs.iter().any(|&(a, b)| (a..=b).contains(&c));
+            for c in from..=to {
+                let d2 = (c as f64 - cx).powi(2) + dy * dy;
+                if lo * lo <= d2 && d2 <= hi * hi {
+                    assert!(inside(c), "column {c}: {runs:?} for {cx} {dy} {lo} {hi}");
+                }
+            }
+            // Two runs are apart and in order (the edge points keep the box's order).
+            if runs.iter().all(|&(a, b)| a <= b) {
+                assert!(runs[0].1 < runs[1].0, "{runs:?}");
+            }
+        }
+        // NaN gives nothing.
+        let none = ring_columns(f64::NAN, 0.0, (f64::NAN, f64::NAN), (0, 10));
+        assert!(none.iter().all(|&(a, b)| a > b), "{none:?}");
+    }
+}
