@@ -485,16 +485,41 @@ fn ring_columns(
     }
 }
 
+/// The pixels between two radii about a circle's centre, held as squared radii (no
+/// root taken per pixel of a box).
+#[derive(Clone, Copy, Debug)]
+struct Ring {
+    cx: f64,
+    cy: f64,
+    lo2: f64,
+    hi2: f64,
+}
+
+impl Ring {
+    /// True when the pixel (x, y) lies in the ring.
+    fn holds(&self, x: isize, y: isize) -> bool {
+        let (dx, dy) = (x as f64 - self.cx, y as f64 - self.cy);
+        let d2 = dx * dx + dy * dy;
+        self.lo2 <= d2 && d2 <= self.hi2
+    }
+
+    /// The columns of row `y` within `from..=to` that can hold its pixels
+    /// ([`ring_columns`]).
+    fn columns(&self, y: isize, within: (isize, isize)) -> impl Iterator<Item = isize> {
+        ring_columns(self.cx, y as f64 - self.cy, (self.lo2, self.hi2), within)
+            .into_iter()
+            .flat_map(|(a, b)| a..=b)
+    }
+}
+
 /// The Sobel gradient (x, y, magnitude; per pixel) over the box `(x0, y0, x1, y1)`,
-/// computed only where `near(x, y, 1.5)` (zero elsewhere), looked for in the
-/// columns `columns(y, 1.5)` of each row ([`ring_columns`]).
+/// computed only in `ring` (zero elsewhere).
 #[allow(clippy::type_complexity)]
 #[allow(clippy::indexing_slicing)] // the box is clipped one pixel inside the frame, and the buffers are its size
 fn gradient(
     img: &Gray,
     (x0, y0, x1, y1): (isize, isize, isize, isize),
-    near: &impl Fn(isize, isize, f64) -> bool,
-    columns: &impl Fn(isize, f64) -> [(isize, isize); 2],
+    ring: &Ring,
 ) -> (Vec<f32>, Vec<f32>, Vec<f32>) {
     let (bw, bh) = ((x1 - x0 + 1) as usize, (y1 - y0 + 1) as usize);
     let mut gx = vec![0.0f32; bw * bh];
@@ -502,8 +527,8 @@ fn gradient(
     let mut mag = vec![0.0f32; bw * bh];
     let p = |x: isize, y: isize| img.at(x as usize, y as usize);
     for y in y0..=y1 {
-        for x in columns(y, 1.5).into_iter().flat_map(|(a, b)| a..=b) {
-            if !near(x, y, 1.5) {
+        for x in ring.columns(y, (x0, x1)) {
+            if !ring.holds(x, y) {
                 continue;
             }
             let sx = (p(x + 1, y - 1) + 2.0 * p(x + 1, y) + p(x + 1, y + 1))
@@ -538,33 +563,23 @@ fn edge_points(
         return None;
     }
     let bw = (x1 - x0 + 1) as usize;
-    // Within band + extra of the circle: between two squared radii, no root taken
-    // per pixel of the box.
-    let squared = |extra: f64| {
+    // Within band + extra of the circle; the gradient a pixel and a half beyond,
+    // for the maxima's neighbours.
+    let ring = |extra: f64| {
         let (lo, hi) = ((guess.r - band - extra).max(0.0), guess.r + band + extra);
-        (lo * lo, hi * hi)
+        Ring {
+            cx: guess.x,
+            cy: guess.y,
+            lo2: lo * lo,
+            hi2: hi * hi,
+        }
     };
-    let (inner, outer) = (squared(0.0), squared(1.5));
-    let near = |x: isize, y: isize, extra: f64| {
-        let (lo, hi) = if extra > 0.0 { outer } else { inner };
-        let (dx, dy) = (x as f64 - guess.x, y as f64 - guess.y);
-        let d2 = dx * dx + dy * dy;
-        lo <= d2 && d2 <= hi
-    };
-    let columns = |y: isize, extra: f64, box_x: (isize, isize)| {
-        let ring = if extra > 0.0 { outer } else { inner };
-        ring_columns(guess.x, y as f64 - guess.y, ring, box_x)
-    };
-    let (gx, gy, mag) = gradient(img, (x0, y0, x1, y1), &near, &|y, extra| {
-        columns(y, extra, (x0, x1))
-    });
+    let (inner, outer) = (ring(0.0), ring(1.5));
+    let (gx, gy, mag) = gradient(img, (x0, y0, x1, y1), &outer);
     let mut found: Vec<([f64; 2], f32, f64)> = Vec::new();
     for y in (y0 + 1)..y1 {
-        for x in columns(y, 0.0, (x0 + 1, x1 - 1))
-            .into_iter()
-            .flat_map(|(a, b)| a..=b)
-        {
-            if !near(x, y, 0.0) {
+        for x in inner.columns(y, (x0 + 1, x1 - 1)) {
+            if !inner.holds(x, y) {
                 continue;
             }
             let i = (y - y0) as usize * bw + (x - x0) as usize;

@@ -6,7 +6,7 @@
 
 use image::RgbImage;
 
-use super::gray::Gray;
+use super::gray::{Gray, level};
 
 /// A frame: luma (Y, 16 black … 235 white) and colour difference (U blue−luma, V
 /// red−luma, 128 grey) at half resolution, rounded up.
@@ -72,14 +72,14 @@ impl Frame {
                     [r, g, b] => [r, g, b].map(f32::from),
                     _ => [0.0; 3],
                 };
-                to_u8(16.0 + (65.481 * r + 128.553 * g + 24.966 * b) / 255.0)
+                level(16.0 + (65.481 * r + 128.553 * g + 24.966 * b) / 255.0)
             })
             .collect();
         // A short picture buffer (never from `image`): its missing pixels black.
         if luma.len() < w * h {
             luma.extend((luma.len()..w * h).map(|i| {
                 let [r, g, b] = rgb(i % w, i / w);
-                to_u8(16.0 + (65.481 * r + 128.553 * g + 24.966 * b) / 255.0)
+                level(16.0 + (65.481 * r + 128.553 * g + 24.966 * b) / 255.0)
             }));
         }
         let (mut u, mut v) = (Vec::with_capacity(cw * ch), Vec::with_capacity(cw * ch));
@@ -97,10 +97,10 @@ impl Frame {
                     }
                 }
                 let [r, g, b] = s.map(|c| c / n.max(1.0));
-                u.push(to_u8(
+                u.push(level(
                     128.0 + (-37.797 * r - 74.203 * g + 112.0 * b) / 255.0,
                 ));
-                v.push(to_u8(128.0 + (112.0 * r - 93.786 * g - 18.214 * b) / 255.0));
+                v.push(level(128.0 + (112.0 * r - 93.786 * g - 18.214 * b) / 255.0));
             }
         }
         Frame {
@@ -140,10 +140,6 @@ impl Frame {
 /// The colour planes' size for a `width × height` frame.
 pub fn chroma_size(width: usize, height: usize) -> (usize, usize) {
     (width.div_ceil(2), height.div_ceil(2))
-}
-
-fn to_u8(v: f32) -> u8 {
-    super::gray::level(v)
 }
 
 #[cfg(test)]

@@ -499,7 +499,13 @@ fn framed(
         vision::band::LEAST_SPAN + 1,
         vision::band::first_frames(fps),
     ] {
-        if band.is_some() || ended || head.last().is_some_and(Result::is_err) {
+        // No new frames (a rate whose span is the 13 already read): nothing to
+        // look at again.
+        if band.is_some()
+            || ended
+            || head.len() >= wanted
+            || head.last().is_some_and(Result::is_err)
+        {
             break;
         }
         while head.len() < wanted {

@@ -156,9 +156,7 @@ fn the_first_frames_are_the_fewest_that_show_the_line() {
         };
         let n = first_frames(&clip);
         assert_eq!(n, 16, "{}", clip.name);
-        let limits = groovelab::input::video::Limits::default();
-        let (_, frames) = groovelab::input::video::open(&path, &limits).unwrap();
-        let first: Vec<_> = frames.take(n).map(|f| f.unwrap().1).collect();
+        let (clip, first) = super::decoded((clip, path.clone()));
         let find = |k: usize| groovelab::vision::band::find(first.get(..k).unwrap(), &params);
         let (b13, b16) = (find(13), find(16));
         assert_eq!(b13.is_some(), at_13, "look {seed}: {b13:?}");
