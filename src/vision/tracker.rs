@@ -997,7 +997,12 @@ impl Tracker {
             let Some(l) = self.last.get(slot) else {
                 continue;
             };
-            let recent = l.last().is_some_and(|(k1, _)| k - k1 <= 3);
+            // A ball seen once has no velocity yet: predicted where it was, which a
+            // rolling ball has left a few frames on (full look 39: 3 frames after a
+            // ball's one fit, a circle of the wall 33 px behind it). Followed from
+            // one fit only into the next frame.
+            let gap = if l.len() >= 2 { 3 } else { 1 };
+            let recent = l.last().is_some_and(|(k1, _)| k - k1 <= gap);
             let Some(pred) = predict(l, k).filter(|_| recent) else {
                 continue;
             };
