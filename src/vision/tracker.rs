@@ -1616,26 +1616,29 @@ impl Tracker {
         let gain = self.params.colour_weight as f32;
         let (w, h) = (x1 - x0 + 1, y1 - y0 + 1);
         let mut data = Vec::with_capacity(w * h);
-        // The background's samples about each column and row, found once.
+        // The background's samples about each column, found once, and the frame's;
+        // each plane weighed across a row of its samples at a time.
         let fu = bg.factor.max(1);
-        // And the frame's.
         let (cw, ch) = (frame.chroma_width, frame.chroma_height);
-        let cols: Vec<_> = (x0..=x1)
-            .map(|x| {
-                let x = x as f64;
-                (colour_axis(fu, bg.width, x, own), chroma_axis(cw, x))
-            })
+        let bcols: Vec<_> = (x0..=x1)
+            .map(|x| colour_axis(fu, bg.width, x as f64, own))
             .collect();
+        let fcols: Vec<_> = (x0..=x1).map(|x| chroma_axis(cw, x as f64)).collect();
+        let mut frame_u = Across::new(chroma_sample(&frame.u, cw), fcols.clone());
+        let mut frame_v = Across::new(chroma_sample(&frame.v, cw), fcols);
+        let mut back_u = Across::new(background_sample(bg, &bg.u), bcols.clone());
+        let mut back_v = Across::new(background_sample(bg, &bg.v), bcols);
+        let mut rows = [const { Vec::new() }; 4];
         for y in y0..=y1 {
             let row = colour_axis(fu, bg.height, y as f64, own);
             let frow = chroma_axis(ch, y as f64);
-            for &(col, fcol) in &cols {
-                let d = (chroma_between(&frame.u, cw, (fcol, frow))
-                    - background_between(bg, &bg.u, (col, row)))
-                    * su
-                    + (chroma_between(&frame.v, cw, (fcol, frow))
-                        - background_between(bg, &bg.v, (col, row)))
-                        * sv;
+            let [u, v, bu, bv] = &mut rows;
+            frame_u.between(frow, u);
+            frame_v.between(frow, v);
+            back_u.between(row, bu);
+            back_v.between(row, bv);
+            for (((u, bu), v), bv) in u.iter().zip(bu.iter()).zip(v.iter()).zip(bv.iter()) {
+                let d = (u - bu) * su + (v - bv) * sv;
                 data.push(super::gray::level(64.0 + gain * d));
             }
         }
@@ -1957,13 +1960,72 @@ fn background_between(
     plane: &[u8],
     ((i0, i1, fx), (j0, j1, fy)): ((usize, usize, f32), (usize, usize, f32)),
 ) -> f32 {
-    let at = |i: usize, j: usize| {
+    let at = background_sample(bg, plane);
+    (at(i0, j0) * (1.0 - fx) + at(i1, j0) * fx) * (1.0 - fy)
+        + (at(i0, j1) * (1.0 - fx) + at(i1, j1) * fx) * fy
+}
+
+/// The background's colour plane `plane` at sample (i, j), held to the plane; 128
+/// (grey) off a short plane.
+fn background_sample<'a>(bg: &'a Small, plane: &'a [u8]) -> impl Fn(usize, usize) -> f32 + 'a {
+    move |i, j| {
         plane
             .get(j.min(bg.height.saturating_sub(1)) * bg.width + i.min(bg.width.saturating_sub(1)))
             .map_or(128.0, |&v| f32::from(v))
-    };
-    (at(i0, j0) * (1.0 - fx) + at(i1, j0) * fx) * (1.0 - fy)
-        + (at(i0, j1) * (1.0 - fx) + at(i1, j1) * fx) * fy
+    }
+}
+
+/// A colour plane weighed across at every column of a patch, a row of its samples
+/// at a time: the first half of [`chroma_between`]'s and [`background_between`]'s
+/// weighing, done once per row of samples instead of per pixel (a frame's row of
+/// colour samples serves two rows of pixels, a coarse background's a dozen), in
+/// their order of operations: the same values to the bit.
+struct Across<F> {
+    sample: F,
+    /// Per column: the samples before and after and the second's weight.
+    cols: Vec<(usize, usize, f32)>,
+    /// The rows of samples weighed across so far (the last two asked for).
+    rows: Vec<(usize, Vec<f32>)>,
+}
+
+impl<F: Fn(usize, usize) -> f32> Across<F> {
+    fn new(sample: F, cols: Vec<(usize, usize, f32)>) -> Across<F> {
+        Across {
+            sample,
+            cols,
+            rows: Vec::with_capacity(2),
+        }
+    }
+
+    /// The plane between its rows `(j0, j1, fy)` ([`chroma_axis`],
+    /// [`colour_axis`]) at every column, into `out`.
+    fn between(&mut self, (j0, j1, fy): (usize, usize, f32), out: &mut Vec<f32>) {
+        self.rows.retain(|(j, _)| *j == j0 || *j == j1);
+        for j in [j0, j1] {
+            if !self.rows.iter().any(|(k, _)| *k == j) {
+                let at = &self.sample;
+                let row = self
+                    .cols
+                    .iter()
+                    .map(|&(i0, i1, fx)| at(i0, j) * (1.0 - fx) + at(i1, j) * fx)
+                    .collect();
+                self.rows.push((j, row));
+            }
+        }
+        let find = |j: usize| {
+            self.rows
+                .iter()
+                .find(|(k, _)| *k == j)
+                .map_or(&[] as &[f32], |(_, r)| r.as_slice())
+        };
+        out.clear();
+        out.extend(
+            find(j0)
+                .iter()
+                .zip(find(j1))
+                .map(|(&a, &b)| a * (1.0 - fy) + b * fy),
+        );
+    }
 }
 
 /// Whether the circle `c` fitted in `frame` can be a ball: something inside it
@@ -2019,9 +2081,15 @@ fn chroma_between(
     cw: usize,
     ((i0, i1, fx), (j0, j1, fy)): ((usize, usize, f32), (usize, usize, f32)),
 ) -> f32 {
-    let at = |i: usize, j: usize| plane.get(j * cw + i).map_or(128.0, |&v| f32::from(v));
+    let at = chroma_sample(plane, cw);
     (at(i0, j0) * (1.0 - fx) + at(i1, j0) * fx) * (1.0 - fy)
         + (at(i0, j1) * (1.0 - fx) + at(i1, j1) * fx) * fy
+}
+
+/// The colour plane `plane` (`cw` samples wide) at sample (i, j); 128 (grey) off
+/// the plane.
+fn chroma_sample(plane: &[u8], cw: usize) -> impl Fn(usize, usize) -> f32 + '_ {
+    move |i, j| plane.get(j * cw + i).map_or(128.0, |&v| f32::from(v))
 }
 
 /// How far inside an edge point its inside is read for a shadow, px: past the
@@ -2180,4 +2248,79 @@ pub fn median(v: &[f64]) -> Option<f64> {
     let mut s = v.to_vec();
     s.sort_by(f64::total_cmp);
     s.get(s.len() / 2).copied()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A fixed LCG (the test reads no clock): the next value in 0 … 1.
+    fn next(x: &mut u64) -> f64 {
+        *x = x
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (*x >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    /// `Across` weighs a plane as `chroma_between` and `background_between` do per
+    /// pixel, bit for bit: over drawn planes (some shorter than their size says, read
+    /// as grey), coarse factors, patches reaching off the plane and rows asked in
+    /// order, again and out of order.
+    #[test]
+    fn weighing_rows_across_gives_each_pixels_own_value() {
+        let mut x = 7u64;
+        for case in 0..300 {
+            let (w, h) = (
+                1 + (next(&mut x) * 40.0) as usize,
+                1 + (next(&mut x) * 30.0) as usize,
+            );
+            let short = if case % 5 == 0 {
+                (next(&mut x) * (w * h) as f64) as usize
+            } else {
+                w * h
+            };
+            let plane: Vec<u8> = (0..short).map(|_| (next(&mut x) * 256.0) as u8).collect();
+            let f = 1 + (next(&mut x) * 6.0) as usize;
+            let between = case % 2 == 0;
+            let bg = Small {
+                width: w,
+                height: h,
+                factor: f,
+                y: vec![0.0; w * h],
+                u: plane.clone(),
+                v: plane.clone(),
+            };
+            // Full-size coordinates over the plane and past its edges.
+            let span = |n: usize, x: &mut u64| -> Vec<f64> {
+                let a = next(x) * (n as f64 + 8.0) - 4.0;
+                (0..12)
+                    .map(|i| a + i as f64 * 0.5 + next(x) * 0.3)
+                    .collect()
+            };
+            let (xs, ys) = (span(2 * w, &mut x), span(2 * h, &mut x));
+            let mut ys2 = ys.clone();
+            ys2.reverse();
+            let fcols: Vec<_> = xs.iter().map(|&t| chroma_axis(w, t)).collect();
+            let bcols: Vec<_> = xs.iter().map(|&t| colour_axis(f, w, t, between)).collect();
+            let mut frame = Across::new(chroma_sample(&plane, w), fcols.clone());
+            let mut back = Across::new(background_sample(&bg, &bg.u), bcols.clone());
+            let mut out = Vec::new();
+            for &t in ys.iter().chain(&ys2) {
+                let frow = chroma_axis(h, t);
+                frame.between(frow, &mut out);
+                assert_eq!(out.len(), fcols.len());
+                for (&v, &col) in out.iter().zip(&fcols) {
+                    let own = chroma_between(&plane, w, (col, frow));
+                    assert_eq!(v.to_bits(), own.to_bits(), "case {case}: {v} for {own}");
+                }
+                let row = colour_axis(f, h, t, between);
+                back.between(row, &mut out);
+                assert_eq!(out.len(), bcols.len());
+                for (&v, &col) in out.iter().zip(&bcols) {
+                    let own = background_between(&bg, &bg.u, (col, row));
+                    assert_eq!(v.to_bits(), own.to_bits(), "case {case}: {v} for {own}");
+                }
+            }
+        }
+    }
 }
