@@ -69,7 +69,19 @@ pub enum TracksError {
         "tracking unsure: nothing found moves: what was tracked moves {travel_px:.1} px over the whole clip, its radius {radius_px:.1} px (nothing rolls: a thing of the bench, or balls at rest throughout), so no tracks are given"
     )]
     StandsStill { travel_px: f64, radius_px: f64 },
+    /// The balls' paths run steeper than [`STEEPEST_GROOVE_DEG`] in the picture.
+    #[error(
+        "tracking unsure: the balls move along a line {:.0}° from across the picture; the tracker takes the groove across it, the rail below the balls (a video shown turned: drop a phone's rotation tag, `ffmpeg -i IN -c copy -metadata:s:v:0 rotate=0 OUT`, or turn the picture, `ffmpeg -i IN -vf transpose=1 OUT`), so no tracks are given",
+        groove_deg.abs()
+    )]
+    Steep { groove_deg: f64 },
 }
+
+/// How far the groove may run from across the picture, degrees: a camera held a
+/// little askew turns it a few degrees (the looks' tilts reach 4°); a line steeper
+/// than this is a picture shown turned (a phone's rotation tag) or no groove, and the
+/// tracker's rail below the balls is not there.
+pub const STEEPEST_GROOVE_DEG: f64 = 30.0;
 
 impl TracksError {
     /// Which of the user's handles could help where this refusal stands (what the
@@ -80,7 +92,7 @@ impl TracksError {
     /// None where the clip is too short.
     pub fn helped_by(&self) -> Handles {
         match self {
-            TracksError::TooFewFrames { .. } => Handles::default(),
+            TracksError::TooFewFrames { .. } | TracksError::Steep { .. } => Handles::default(),
             TracksError::NoBall { .. }
             | TracksError::TooMany { .. }
             | TracksError::Sparse { .. }
@@ -234,6 +246,7 @@ pub fn tracks(
     scale: Option<f64>,
 ) -> Result<Tracks, TracksError> {
     let p = &tracker.params;
+    steep(&tracker.frames)?;
     let mut frames = super::mark_check::checked(&ordered(&tracker.frames), &p.marks);
     leave_out_odd_fits(&mut frames, tracker, &times, radius, scale);
     // The marks' checks judged each mark by the fits about it, some of which the
@@ -931,6 +944,22 @@ fn centres_of(frames: &[FrameFixes], slot: usize) -> Vec<[f64; 2]> {
         .filter_map(|f| f[slot].as_ref().ok())
         .map(|fix| [fix.outline.circle.x, fix.outline.circle.y])
         .collect()
+}
+
+/// Refuses frames whose fits lie along a line steeper than [`STEEPEST_GROOVE_DEG`]:
+/// every fit's centre pooled, before the fits are told apart as balls (that tells them
+/// apart from left to right, which a line up the picture does not: both slots' paths
+/// jumbled, such a clip was refused for too few frames of either ball). Both balls
+/// roll on one line, so their pooled centres lie along it.
+fn steep(frames: &[FrameFixes]) -> Result<(), TracksError> {
+    let all: Vec<[f64; 2]> = (0..2).flat_map(|s| centres_of(frames, s)).collect();
+    let (angle, _, found) = groove(&[&all[..]]);
+    if found && angle.to_degrees().abs() > STEEPEST_GROOVE_DEG {
+        return Err(TracksError::Steep {
+            groove_deg: angle.to_degrees(),
+        });
+    }
+    Ok(())
 }
 
 /// The groove's angle (rad, image y down: positive turns the right end down), its

@@ -181,7 +181,9 @@ pub fn track_framed(
 }
 
 /// A second tracking's outcome: its tracks with `note` (why the clip was tracked
-/// twice) added, or, where it gave none, the first tracking's refusal `first`.
+/// twice) added, or, where it gave none, the first tracking's refusal `first`, but
+/// where the second found the balls' line running up the picture: that says what is
+/// wrong (a clip shown turned, in which the first found no ball across it).
 fn retried(
     second: Result<Attempt, Box<Refused>>,
     first: Box<Refused>,
@@ -193,6 +195,17 @@ fn retried(
                 t.notes.push(note);
             }
             Ok(*done)
+        }
+        Err(steep)
+            if matches!(
+                steep.error.what,
+                VideoProblem::Tracks {
+                    error: vision::TracksError::Steep { .. },
+                    ..
+                }
+            ) =>
+        {
+            Err(steep)
         }
         _ => Err(first),
     }
@@ -976,4 +989,60 @@ fn ball_line(b: &BallTrack, frames: usize) -> String {
         tracked - b.mark_missing,
         b.mark_missing
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::vision::TracksError;
+
+    fn refused(error: TracksError) -> Box<Refused> {
+        Box::new(Refused {
+            error: VideoError::new(
+                std::path::Path::new("clip.mp4"),
+                VideoProblem::Tracks {
+                    error,
+                    roi: false,
+                    scale: false,
+                    at: None,
+                },
+            ),
+            found: Vec::new(),
+            first_frame: None,
+        })
+    }
+
+    fn said(r: &Refused) -> String {
+        r.error.what.to_string()
+    }
+
+    fn refusal(r: Result<Option<Tracked>, Box<Refused>>) -> Box<Refused> {
+        match r {
+            Err(refused) => refused,
+            Ok(_) => panic!("tracks from a refusal"),
+        }
+    }
+
+    /// A second tracking refused again leaves the first refusal standing, but where it
+    /// found the balls' line up the picture: a clip shown turned, in which the first
+    /// tracking (a line across assumed) found no ball, is refused for its turn.
+    #[test]
+    fn a_line_up_the_picture_found_the_second_time_is_the_refusal_given() {
+        let first = || {
+            refused(TracksError::NoBall {
+                frames: 25,
+                min_radius: 8.0,
+            })
+        };
+        let steep = || refused(TracksError::Steep { groove_deg: -87.8 });
+        let given = refusal(retried(Err(steep()), first(), String::new()));
+        assert_eq!(said(&given), said(&steep()));
+        assert!(said(&given).contains("88° from across"), "{}", said(&given));
+        let sparse = refused(TracksError::Sparse {
+            seen: 4,
+            frames: 25,
+        });
+        let given = refusal(retried(Err(sparse), first(), String::new()));
+        assert_eq!(said(&given), said(&first()));
+    }
 }

@@ -35,6 +35,7 @@ mod repeated_frames;
 pub(crate) mod seed;
 mod sharp_arc;
 mod stacked;
+mod steep;
 mod sunk_balls;
 pub(crate) mod tracker_looks;
 pub(crate) mod tracking;
