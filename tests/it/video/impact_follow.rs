@@ -52,25 +52,15 @@ pub(crate) fn assert_on_their_balls(
     );
 }
 
-/// Seed 39's whole clip (86 frames, 720p; the impact at frame 39), tracked as the
-/// command line tracks it: every centre of its first 55 frames lies within 0.35 of a
-/// radius of its ball (the worst 0.31 R, the left ball at the impact). Without the
-/// rule above, the follower's fit where the left ball was headed lies 0.75 R off one
-/// frame after it bounced back; followed 3 frames on from a single fit (tracker 47),
-/// the left ball, seen once at frame 8 and lost, was taken at frame 11 as a circle of
-/// the wall where it had been, 0.79 R behind it (`Tracker::follow`). After frame 55
-/// the right ball, rolling back from rest, is held 0.72 R behind itself for 8 frames
-/// by the fits about where it lay: not yet judged here.
+/// Every centre of seed 39 lies within 0.35 of a radius of its ball. On the look's
+/// first 50 frames of its 86 (720p, the suite's minute; the impact at frame 39): the
+/// worst 0.31 R off, the left ball's fit in the impact's frame (tracker 48; 0.12 R on
+/// tracker 47, which kept no fit there). Up to tracker 47, without the rule the
+/// follower's fit where the left ball was headed, at frame 40, lay 0.70 R off (on the
+/// whole clip 0.75 R); since tracker 48 (a ball seen once followed into the next
+/// frame only) the clip no longer reaches the rule: without it the worst is 0.12 R.
+/// Kept as seed 39's check; the rule itself is not guarded here.
 #[test]
-fn no_ball_is_followed_into_the_other_across_the_impact_nor_from_one_fit() {
-    let Some(centres) = centres_off(39, None) else {
-        return;
-    };
-    let early: Vec<&(usize, f64)> = centres.iter().filter(|(k, _)| *k < 55).collect();
-    assert!(early.len() > 40, "{} centres", early.len());
-    let far: Vec<&&(usize, f64)> = early.iter().filter(|(_, off)| *off > 0.35).collect();
-    assert!(
-        far.is_empty(),
-        "centres off their ball (frame, radii): {far:?}"
-    );
+fn no_ball_is_followed_into_the_other_across_the_impact() {
+    assert_on_their_balls((39, Some(50)), 30, 0.35);
 }

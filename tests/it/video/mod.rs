@@ -12,6 +12,7 @@ mod difference;
 mod edge_lean;
 mod first_locks;
 mod follow_gap;
+mod follow_once;
 pub(crate) mod found_frames;
 mod given_scale;
 pub(crate) mod impact_follow;
