@@ -1616,29 +1616,10 @@ impl Tracker {
         let gain = self.params.colour_weight as f32;
         let (w, h) = (x1 - x0 + 1, y1 - y0 + 1);
         let mut data = Vec::with_capacity(w * h);
-        // The background's samples about each column, found once, and the frame's;
-        // each plane weighed across a row of its samples at a time.
-        let fu = bg.factor.max(1);
-        let (cw, ch) = (frame.chroma_width, frame.chroma_height);
-        let bcols: Vec<_> = (x0..=x1)
-            .map(|x| colour_axis(fu, bg.width, x as f64, own))
-            .collect();
-        let fcols: Vec<_> = (x0..=x1).map(|x| chroma_axis(cw, x as f64)).collect();
-        let mut frame_u = Across::new(chroma_sample(&frame.u, cw), fcols.clone());
-        let mut frame_v = Across::new(chroma_sample(&frame.v, cw), fcols);
-        let mut back_u = Across::new(background_sample(bg, &bg.u), bcols.clone());
-        let mut back_v = Across::new(background_sample(bg, &bg.v), bcols);
-        let mut rows = [const { Vec::new() }; 4];
+        let mut colour = colour_difference(frame, bg, (x0, x1), own);
         for y in y0..=y1 {
-            let row = colour_axis(fu, bg.height, y as f64, own);
-            let frow = chroma_axis(ch, y as f64);
-            let [u, v, bu, bv] = &mut rows;
-            frame_u.between(frow, u);
-            frame_v.between(frow, v);
-            back_u.between(row, bu);
-            back_v.between(row, bv);
-            for (((u, bu), v), bv) in u.iter().zip(bu.iter()).zip(v.iter()).zip(bv.iter()) {
-                let d = (u - bu) * su + (v - bv) * sv;
+            for (du, dv) in colour.row(y) {
+                let d = du * su + dv * sv;
                 data.push(super::gray::level(64.0 + gain * d));
             }
         }
@@ -1706,25 +1687,13 @@ impl Tracker {
         }
         let (x0, y0, x1, y1) = patch_box(frame, guess, band)?;
         let gain = self.params.colour_weight as f32;
-        let (cw, ch) = (frame.chroma_width, frame.chroma_height);
-        let cols: Vec<_> = (x0..=x1)
-            .map(|x| {
-                let fx = x as f64;
-                (x, colour_axis(1, bg.width, fx, true), chroma_axis(cw, fx))
-            })
-            .collect();
+        let mut colour = colour_difference(frame, bg, (x0, x1), true);
         let mut data = Vec::with_capacity((x1 - x0 + 1) * (y1 - y0 + 1));
         for y in y0..=y1 {
-            let row = colour_axis(1, bg.height, y as f64, true);
-            let frow = chroma_axis(ch, y as f64);
-            for &(x, col, fcol) in &cols {
+            for (x, (du, dv)) in (x0..=x1).zip(colour.row(y)) {
                 let i = y * bg.width + x;
                 let luma = f32::from(frame.luma.data.get(i).copied().unwrap_or(0))
                     - bg.y.get(i).copied().unwrap_or(0.0);
-                let du = chroma_between(&frame.u, cw, (fcol, frow))
-                    - background_between(bg, &bg.u, (col, row));
-                let dv = chroma_between(&frame.v, cw, (fcol, frow))
-                    - background_between(bg, &bg.v, (col, row));
                 // Brightness and colour together: the looks' rule (the larger of the
                 // two, 0 for a shadow) measured worse here (BENCHMARKS.md).
                 let d = luma.hypot(gain * du.hypot(dv));
@@ -1972,6 +1941,66 @@ fn background_sample<'a>(bg: &'a Small, plane: &'a [u8]) -> impl Fn(usize, usize
         plane
             .get(j.min(bg.height.saturating_sub(1)) * bg.width + i.min(bg.width.saturating_sub(1)))
             .map_or(128.0, |&v| f32::from(v))
+    }
+}
+
+/// The frame's colour less the background's (U and V) at each column `x0..=x1` of a
+/// patch, a row at a time: each of the four planes weighed across a row of its
+/// samples at a time ([`Across`]), the background's between its samples or not
+/// (`between`, [`colour_axis`]). The same values as [`chroma_between`] less
+/// [`background_between`] per pixel, to the bit.
+struct ColourDifference<F, B> {
+    u: Across<F>,
+    v: Across<F>,
+    back_u: Across<B>,
+    back_v: Across<B>,
+    /// The frame's colour rows, the background's colour rows and factor.
+    chroma_height: usize,
+    back: (usize, usize),
+    between: bool,
+    rows: [Vec<f32>; 4],
+}
+
+/// The [`ColourDifference`] of `frame` against `bg` over the columns `x0..=x1`.
+fn colour_difference<'a>(
+    frame: &'a Frame,
+    bg: &'a Small,
+    (x0, x1): (usize, usize),
+    between: bool,
+) -> ColourDifference<impl Fn(usize, usize) -> f32 + 'a, impl Fn(usize, usize) -> f32 + 'a> {
+    let f = bg.factor.max(1);
+    let cw = frame.chroma_width;
+    let fcols: Vec<_> = (x0..=x1).map(|x| chroma_axis(cw, x as f64)).collect();
+    let bcols: Vec<_> = (x0..=x1)
+        .map(|x| colour_axis(f, bg.width, x as f64, between))
+        .collect();
+    ColourDifference {
+        u: Across::new(chroma_sample(&frame.u, cw), fcols.clone()),
+        v: Across::new(chroma_sample(&frame.v, cw), fcols),
+        back_u: Across::new(background_sample(bg, &bg.u), bcols.clone()),
+        back_v: Across::new(background_sample(bg, &bg.v), bcols),
+        chroma_height: frame.chroma_height,
+        back: (bg.height, f),
+        between,
+        rows: [const { Vec::new() }; 4],
+    }
+}
+
+impl<F: Fn(usize, usize) -> f32, B: Fn(usize, usize) -> f32> ColourDifference<F, B> {
+    /// Row `y`'s (U, V) differences, one per column.
+    fn row(&mut self, y: usize) -> impl Iterator<Item = (f32, f32)> + '_ {
+        let (bh, f) = self.back;
+        let frow = chroma_axis(self.chroma_height, y as f64);
+        let row = colour_axis(f, bh, y as f64, self.between);
+        let [u, v, bu, bv] = &mut self.rows;
+        self.u.between(frow, u);
+        self.v.between(frow, v);
+        self.back_u.between(row, bu);
+        self.back_v.between(row, bv);
+        u.iter()
+            .zip(bu.iter())
+            .zip(v.iter().zip(bv.iter()))
+            .map(|((u, bu), (v, bv))| (u - bu, v - bv))
     }
 }
 
