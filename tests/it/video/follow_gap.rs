@@ -15,11 +15,11 @@ const H: u32 = 120;
 /// The balls' radius, their centres' height and level; the wall's level and the
 /// faint disc's (px, RGB levels: 13 of them are 11.2 of luma, over the 10 a fit must
 /// stand out by and under the 12 the coarse look marks at).
-const R: f64 = 16.0;
-const CY: f64 = 60.0;
-const BALL: f64 = 200.0;
-const WALL: f64 = 100.0;
-const FAINT: f64 = 113.0;
+pub(super) const R: f64 = 16.0;
+pub(super) const CY: f64 = 60.0;
+pub(super) const BALL: f64 = 200.0;
+pub(super) const WALL: f64 = 100.0;
+pub(super) const FAINT: f64 = 113.0;
 /// The faint disc's radius: 8 % over the balls' (seed 2's circle: 41.8 px for 38.9),
 /// within what a fit of a ball may be off, not a sharp arc of their radius.
 const FAINT_R: f64 = 1.08 * R;

@@ -9,17 +9,12 @@
 //! disc is never taken for it; followed 3 frames on, it was, and then, two fits of a
 //! ball at rest, in every frame after.
 
+// The balls' radius, their centres' height and level, the wall's and the faint disc's.
+use super::follow_gap::{BALL, CY, FAINT, R, WALL};
 use groovelab::vision::{self, Frame, Params};
 
 const W: u32 = 600;
 const H: u32 = 120;
-/// The balls' radius, their centres' height and level, the wall's and the faint
-/// disc's (as in `follow_gap`).
-const R: f64 = 16.0;
-const CY: f64 = 60.0;
-const BALL: f64 = 200.0;
-const WALL: f64 = 100.0;
-const FAINT: f64 = 113.0;
 /// The left ball, rolling right by `STEP` a frame, is seen in frame `ONCE` only of
 /// the frames up to `ONCE + 3`, then from `BACK` on; the right ball stands still
 /// at `RIGHT_X` throughout.
