@@ -38,6 +38,7 @@ mod sharp_arc;
 mod stacked;
 mod steep;
 mod sunk_balls;
+mod timestamps;
 pub(crate) mod tracker_looks;
 pub(crate) mod tracking;
 mod unfit;
