@@ -404,9 +404,9 @@ fn dist(p: &[f64; 2], c: &Circle) -> f64 {
 
 /// The length of (dx, dy) in pixels: a plain square root, as pixel offsets neither
 /// overflow nor underflow (`f64::hypot` guards against both, at several times the
-/// cost, in the fit's innermost loops).
+/// cost, in the fit's innermost loops and the mark's per-pixel ones).
 #[inline]
-fn length(dx: f64, dy: f64) -> f64 {
+pub(crate) fn length(dx: f64, dy: f64) -> f64 {
     (dx * dx + dy * dy).sqrt()
 }
 

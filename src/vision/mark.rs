@@ -6,7 +6,7 @@
 //! of a drawn disc over the shading (`mark_fit`) where the model fits. Its standard
 //! error follows from the pixel noise through the centroid's formula.
 
-use super::circle::Outline;
+use super::circle::{Outline, length};
 use super::gray::Gray;
 
 /// A mark found on a ball, in pixels.
@@ -125,7 +125,7 @@ fn find_mark(
     let mut best = (0.0f64, 0isize, 0isize);
     for y in y0..=y1 {
         for x in x0..=x1 {
-            if (x as f64 - c.x).hypot(y as f64 - c.y) > inner - 1.5 * half as f64
+            if length(x as f64 - c.x, y as f64 - c.y) > inner - 1.5 * half as f64
                 || (y + half) as f64 >= bottom
             {
                 continue;
@@ -243,7 +243,7 @@ fn mark_level(img: &Gray, at: (f64, f64), inner: f64, sign: f64) -> Option<f64> 
     );
     for y in y0.max(0)..=y1.min(img.height as isize - 1) {
         for x in x0.max(0)..=x1.min(img.width as isize - 1) {
-            if (x as f64 - at.0).hypot(y as f64 - at.1) <= inner {
+            if length(x as f64 - at.0, y as f64 - at.1) <= inner {
                 v.push(img.at(x as usize, y as usize));
             }
         }
@@ -313,7 +313,7 @@ fn centroid(
     for y in (cy - reach)..=(cy + reach) {
         for x in (cx - reach)..=(cx + reach) {
             let (dx, dy) = (x as f64 - at.0, y as f64 - at.1);
-            if dx.hypot(dy) > inner {
+            if length(dx, dy) > inner {
                 continue;
             }
             let shade = plane[0] + plane[1] * dx + plane[2] * dy;
@@ -387,7 +387,7 @@ fn ring_plane(
     for y in (cy - reach)..=(cy + reach) {
         for x in (cx - reach)..=(cx + reach) {
             let (dx, dy) = (x as f64 - at.0, y as f64 - at.1);
-            if (ring.0..=ring.1).contains(&dx.hypot(dy)) {
+            if (ring.0..=ring.1).contains(&length(dx, dy)) {
                 all += 1;
                 // Only the ring's part on the ball: the wall and the rail beyond
                 // its limb are no part of its shading.

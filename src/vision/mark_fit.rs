@@ -9,6 +9,7 @@
 //! glow beside the mark, a blurred or blocky mark), its edge comes out soft and the
 //! centroid is kept (`Params::mark_soft`).
 
+use super::circle::length;
 use super::gray::Gray;
 use nalgebra::{SMatrix, SVector};
 
@@ -160,7 +161,7 @@ fn step(z: f64) -> f64 {
 #[allow(clippy::indexing_slicing)] // the eight parameters of a fixed-size vector
 fn level(th: &Theta, at: (f64, f64), x: f64, y: f64) -> f64 {
     let shade = th[4] + th[5] * (x - at.0) + th[6] * (y - at.1);
-    let c = step((th[2] - (x - th[0]).hypot(y - th[1])) / th[7].max(SOFTEST));
+    let c = step((th[2] - length(x - th[0], y - th[1])) / th[7].max(SOFTEST));
     shade * (1.0 - c) + th[3] * c
 }
 
@@ -171,7 +172,7 @@ fn model(th: &Theta, at: (f64, f64), x: f64, y: f64) -> (f64, Theta) {
     let s = th[7].max(SOFTEST);
     let (dx, dy) = (x - at.0, y - at.1);
     let shade = th[4] + th[5] * dx + th[6] * dy;
-    let d = (x - mx).hypot(y - my).max(1e-6);
+    let d = length(x - mx, y - my).max(1e-6);
     let z = (rho - d) / s;
     let c = step(z);
     // d(model)/d(rho): the disc's level against the shading, times the step's slope.
