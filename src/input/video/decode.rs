@@ -78,11 +78,8 @@ fn spawn_cut(path: &Path, every: usize, band: Option<&Band>) -> Result<Started, 
     }
     if every > 1 {
         filters.push(format!("select=not(mod(n\\,{every}))"));
+        cmd.args(["-fps_mode", "passthrough"]);
     }
-    // Every decoded frame once, whatever its timestamp: ffmpeg's default for a raw
-    // output drops frames that share one (a clip whose timestamps are all zero
-    // gave 3 of its 86 frames) and, with `select`, the frames between those kept.
-    cmd.args(["-fps_mode", "passthrough"]);
     if !filters.is_empty() {
         cmd.args(["-vf", &filters.join(",")]);
     }
