@@ -174,6 +174,15 @@ impl Stream {
             .map(|l| l.trim().to_string());
         let failed = status.is_none_or(|s| !s.success());
         let short = self.expected > 0 && self.next * 10 < self.expected * 9;
+        if short && !failed && said.is_none() {
+            return Some(VideoError::new(
+                &self.file,
+                VideoProblem::TimestampsCollide {
+                    decoded: self.next,
+                    expected: self.expected,
+                },
+            ));
+        }
         if (failed && self.next == 0) || short {
             return Some(VideoError::new(
                 &self.file,

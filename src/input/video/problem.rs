@@ -95,6 +95,13 @@ pub enum VideoProblem {
         expected: u64,
         ffmpeg_says: Option<String>,
     },
+    /// ffmpeg ended well and said nothing, yet handed over `decoded` frames of the
+    /// `expected`: it drops frames whose timestamps collide (all zero, as a muxer
+    /// that writes none leaves them, or closer together than the clip's rate).
+    #[error(
+        "only {decoded} of {expected} frames came from ffmpeg, which reported no error: the frames' timestamps collide (all zero, or closer than the clip's rate); time each frame by its number with `ffmpeg -i IN -vf setpts=N/FPS/TB OUT.mp4` (FPS the rate it was filmed at) and track OUT.mp4"
+    )]
+    TimestampsCollide { decoded: u64, expected: u64 },
     #[error("cannot read the folder: {0}")]
     Folder(std::io::Error),
     #[error(

@@ -63,3 +63,40 @@ fn a_gap_in_the_timestamps_is_filled_with_the_frame_before() {
         }
     }
 }
+
+/// A clip whose frames lie a microsecond apart (a container rate of a million
+/// frames/s): ffmpeg hands over 3 of its frames and says nothing. The refusal says
+/// why and how to retime the clip, in one line (exit 2), not that it is damaged.
+#[test]
+fn frames_whose_timestamps_collide_are_said_so_with_the_retiming() {
+    if !super::tracking::ffmpeg() {
+        return;
+    }
+    let dir = scratch_dir("video_timestamps", "collide");
+    let clip = looks::random(&paper_scene(), 3, Size::Small);
+    let n = 12.min(clip.frames);
+    let plain = dir.join("clip.mp4");
+    crate::film::h264::write(&plain, &clip.film, n).unwrap();
+    let micro = dir.join("micro.mp4");
+    let out = std::process::Command::new("ffmpeg")
+        .args(["-v", "error", "-nostdin", "-y", "-i"])
+        .arg(&plain)
+        .args(["-c", "copy", "-video_track_timescale", "1000000"])
+        .args(["-bsf:v", "setts=ts=N"])
+        .arg(&micro)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let path = micro.display().to_string();
+    let (code, _, err) =
+        crate::common::run(&["track", &path, "--fps", "100", "--radius", "2.75cm"]);
+    assert_eq!(code, 2, "{err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    assert!(err.contains("timestamps collide"), "{err}");
+    assert!(err.contains("setpts=N/FPS/TB"), "{err}");
+    assert!(!err.contains("damaged"), "{err}");
+}
