@@ -513,9 +513,13 @@ impl Ring {
 }
 
 /// The Sobel gradient (x, y, magnitude; per pixel) over the box `(x0, y0, x1, y1)`,
-/// computed only in `ring` (zero elsewhere).
+/// computed over the runs of each row's columns that hold `ring`'s pixels
+/// (`ring_columns`; a pixel or so beyond the ring at each run's ends) and zero
+/// elsewhere. Whole runs, row by row, so the loop is one over plain slices the
+/// compiler spreads over vector lanes; the sums are of whole levels (at most
+/// 4 × 255 a side), so they, their squares and the squares' sum are exact in
+/// `f32` whatever the order: each value is the per-pixel formula's to the bit.
 #[allow(clippy::type_complexity)]
-#[allow(clippy::indexing_slicing)] // the box is clipped one pixel inside the frame, and the buffers are its size
 fn gradient(
     img: &Gray,
     (x0, y0, x1, y1): (isize, isize, isize, isize),
@@ -525,23 +529,64 @@ fn gradient(
     let mut gx = vec![0.0f32; bw * bh];
     let mut gy = vec![0.0f32; bw * bh];
     let mut mag = vec![0.0f32; bw * bh];
-    let p = |x: isize, y: isize| img.at(x as usize, y as usize);
+    let w = img.width;
+    let row = |y: isize| img.data.get(y as usize * w..(y as usize + 1) * w);
     for y in y0..=y1 {
-        for x in ring.columns(y, (x0, x1)) {
-            if !ring.holds(x, y) {
+        let (Some(up), Some(mid), Some(down)) = (row(y - 1), row(y), row(y + 1)) else {
+            continue;
+        };
+        let at = (y - y0) as usize * bw;
+        for (a, b) in ring_columns(ring.cx, y as f64 - ring.cy, (ring.lo2, ring.hi2), (x0, x1)) {
+            if a > b {
                 continue;
             }
-            let sx = (p(x + 1, y - 1) + 2.0 * p(x + 1, y) + p(x + 1, y + 1))
-                - (p(x - 1, y - 1) + 2.0 * p(x - 1, y) + p(x - 1, y + 1));
-            let sy = (p(x - 1, y + 1) + 2.0 * p(x, y + 1) + p(x + 1, y + 1))
-                - (p(x - 1, y - 1) + 2.0 * p(x, y - 1) + p(x + 1, y - 1));
-            let i = (y - y0) as usize * bw + (x - x0) as usize;
-            gx[i] = sx / 8.0;
-            gy[i] = sy / 8.0;
-            mag[i] = (gx[i] * gx[i] + gy[i] * gy[i]).sqrt();
+            // The run's pixels and a neighbour each side (the box lies a pixel
+            // inside the frame).
+            let (from, n) = ((a - 1) as usize, (b - a + 1) as usize);
+            let rows = (
+                up.get(from..from + n + 2),
+                mid.get(from..from + n + 2),
+                down.get(from..from + n + 2),
+            );
+            let out = at + (a - x0) as usize..at + (b - x0) as usize + 1;
+            let (Some(u), Some(m), Some(d)) = rows else {
+                continue;
+            };
+            let (Some(gx), Some(gy), Some(mag)) = (
+                gx.get_mut(out.clone()),
+                gy.get_mut(out.clone()),
+                mag.get_mut(out),
+            ) else {
+                continue;
+            };
+            sobel_run((u, m, d), (gx, gy, mag));
         }
     }
     (gx, gy, mag)
+}
+
+/// The Sobel gradient of a run of pixels, from the rows above, at and below it
+/// (`u`, `m`, `d`: the run and a pixel each side), into `gx`, `gy`, `mag` (the
+/// run's length each).
+#[allow(clippy::indexing_slicing)] // each j + 2 < the rows' length, n + 2 (checked)
+fn sobel_run(
+    (u, m, d): (&[u8], &[u8], &[u8]),
+    (gx, gy, mag): (&mut [f32], &mut [f32], &mut [f32]),
+) {
+    let n = gx.len();
+    if u.len() != n + 2 || m.len() != n + 2 || d.len() != n + 2 || gy.len() != n || mag.len() != n {
+        return;
+    }
+    let l = |r: &[u8], j: usize| i32::from(r[j]);
+    for j in 0..n {
+        let sx = (l(u, j + 2) + 2 * l(m, j + 2) + l(d, j + 2)) - (l(u, j) + 2 * l(m, j) + l(d, j));
+        let sy =
+            (l(d, j) + 2 * l(d, j + 1) + l(d, j + 2)) - (l(u, j) + 2 * l(u, j + 1) + l(u, j + 2));
+        let (x, y) = (sx as f32 / 8.0, sy as f32 / 8.0);
+        gx[j] = x;
+        gy[j] = y;
+        mag[j] = (x * x + y * y).sqrt();
+    }
 }
 
 /// Sub-pixel edge points within `band` of the circle `guess`, of the polarity asked
@@ -951,6 +996,102 @@ fn bilinear(img: &Gray, x: f64, y: f64) -> Option<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The gradient as it was first written, a pixel at a time, each pixel of
+    /// `ring` only: the reference for [`gradient`].
+    #[allow(clippy::type_complexity, clippy::indexing_slicing)]
+    fn gradient_by_pixel(
+        img: &Gray,
+        (x0, y0, x1, y1): (isize, isize, isize, isize),
+        ring: &Ring,
+    ) -> (Vec<f32>, Vec<f32>, Vec<f32>) {
+        let (bw, bh) = ((x1 - x0 + 1) as usize, (y1 - y0 + 1) as usize);
+        let mut gx = vec![0.0f32; bw * bh];
+        let mut gy = vec![0.0f32; bw * bh];
+        let mut mag = vec![0.0f32; bw * bh];
+        let p = |x: isize, y: isize| img.at(x as usize, y as usize);
+        for y in y0..=y1 {
+            for x in ring.columns(y, (x0, x1)) {
+                if !ring.holds(x, y) {
+                    continue;
+                }
+                let sx = (p(x + 1, y - 1) + 2.0 * p(x + 1, y) + p(x + 1, y + 1))
+                    - (p(x - 1, y - 1) + 2.0 * p(x - 1, y) + p(x - 1, y + 1));
+                let sy = (p(x - 1, y + 1) + 2.0 * p(x, y + 1) + p(x + 1, y + 1))
+                    - (p(x - 1, y - 1) + 2.0 * p(x, y - 1) + p(x + 1, y - 1));
+                let i = (y - y0) as usize * bw + (x - x0) as usize;
+                gx[i] = sx / 8.0;
+                gy[i] = sy / 8.0;
+                mag[i] = (gx[i] * gx[i] + gy[i] * gy[i]).sqrt();
+            }
+        }
+        (gx, gy, mag)
+    }
+
+    #[test]
+    fn the_gradient_by_runs_is_the_per_pixel_gradient_on_the_ring() {
+        // A fixed LCG over images (smooth, noisy and saturated levels), rings and
+        // boxes clipped a pixel inside the image, as `edge_points` clips them.
+        let mut s: u64 = 11;
+        let mut next = || {
+            s = s
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (s >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for case in 0..300 {
+            let (w, h) = (3 + (next() * 120.0) as usize, 3 + (next() * 90.0) as usize);
+            let kind = case % 3;
+            let data: Vec<u8> = (0..w * h)
+                .map(|i| match kind {
+                    0 => ((i % w) * 2 + (i / w) * 3) as u8,
+                    1 => (next() * 256.0) as u8,
+                    _ => {
+                        if next() < 0.5 {
+                            0
+                        } else {
+                            255
+                        }
+                    }
+                })
+                .collect();
+            let img = Gray {
+                width: w,
+                height: h,
+                data,
+            };
+            let (cx, cy) = (next() * w as f64, next() * h as f64);
+            let (r, band, extra) = (next() * 60.0, next() * 10.0, 1.5);
+            let (lo, hi) = ((r - band - extra).max(0.0), r + band + extra);
+            let ring = Ring {
+                cx,
+                cy,
+                lo2: lo * lo,
+                hi2: hi * hi,
+            };
+            let reach = r + band + 2.0;
+            let b = (
+                ((cx - reach).floor() as isize).max(1),
+                ((cy - reach).floor() as isize).max(1),
+                ((cx + reach).ceil() as isize).min(w as isize - 2),
+                ((cy + reach).ceil() as isize).min(h as isize - 2),
+            );
+            if b.2 < b.0 || b.3 < b.1 {
+                continue;
+            }
+            let (bw, bh) = ((b.2 - b.0 + 1) as usize, (b.3 - b.1 + 1) as usize);
+            let fast = gradient(&img, b, &ring);
+            let slow = gradient_by_pixel(&img, b, &ring);
+            for i in 0..bw * bh {
+                let (x, y) = (b.0 + (i % bw) as isize, b.1 + (i / bw) as isize);
+                if ring.holds(x, y) {
+                    for (f, g) in [(&fast.0, &slow.0), (&fast.1, &slow.1), (&fast.2, &slow.2)] {
+                        assert_eq!(f[i].to_bits(), g[i].to_bits(), "case {case} at ({x}, {y})");
+                    }
+                }
+            }
+        }
+    }
 
     #[test]
     fn a_rings_columns_hold_every_pixel_of_the_ring_in_order() {
