@@ -503,18 +503,21 @@ impl Ring {
         self.lo2 <= d2 && d2 <= self.hi2
     }
 
-    /// The columns of row `y` within `from..=to` that can hold its pixels
-    /// ([`ring_columns`]).
-    fn columns(&self, y: isize, within: (isize, isize)) -> impl Iterator<Item = isize> {
+    /// The runs `(a, b)` of row `y`'s columns within `from..=to` that can hold its
+    /// pixels ([`ring_columns`]; an empty run has `a > b`).
+    fn runs(&self, y: isize, within: (isize, isize)) -> [(isize, isize); 2] {
         ring_columns(self.cx, y as f64 - self.cy, (self.lo2, self.hi2), within)
-            .into_iter()
-            .flat_map(|(a, b)| a..=b)
+    }
+
+    /// The columns of row `y` within `from..=to` that can hold its pixels.
+    fn columns(&self, y: isize, within: (isize, isize)) -> impl Iterator<Item = isize> {
+        self.runs(y, within).into_iter().flat_map(|(a, b)| a..=b)
     }
 }
 
 /// The Sobel gradient (x, y, magnitude; per pixel) over the box `(x0, y0, x1, y1)`,
 /// computed over the runs of each row's columns that hold `ring`'s pixels
-/// (`ring_columns`; a pixel or so beyond the ring at each run's ends) and zero
+/// ([`Ring::runs`]; a pixel or so beyond the ring at each run's ends) and zero
 /// elsewhere. Whole runs, row by row, so the loop is one over plain slices the
 /// compiler spreads over vector lanes; the sums are of whole levels (at most
 /// 4 × 255 a side), so they, their squares and the squares' sum are exact in
@@ -536,7 +539,7 @@ fn gradient(
             continue;
         };
         let at = (y - y0) as usize * bw;
-        for (a, b) in ring_columns(ring.cx, y as f64 - ring.cy, (ring.lo2, ring.hi2), (x0, x1)) {
+        for (a, b) in ring.runs(y, (x0, x1)) {
             if a > b {
                 continue;
             }
