@@ -24,25 +24,26 @@ fn a_black_ball_on_a_wall_of_its_brightness_is_found_in_colour() {
     );
 }
 
-/// Small look 55 (black balls of 12.1 px with a bright highlight on a dark
-/// wood-grain wall of their brightness, 300p, 30 frames/s): the balls' limb differs
-/// from the wall by 4–8 levels, so at the floor of 10 only their highlights stand
-/// out, too small and ragged to be taken, and no ball is found. Tracked again at the
-/// floor of `faint_levels`, as the command line tracks it, it gives a scale within
-/// 2 of its ± (and 3 %) of the truth and says how; at the floor of 10 alone the
-/// tracker finds no ball (the retry is what tracks it).
+/// Full look 55 (black balls of 42.8 px with a light mark on a wood-grain wall of
+/// their brightness, a rail alike, 720p at 50 frames/s; its first 24 frames of 48):
+/// the balls' limb differs from the wall by a few levels, so at the floor of 10 no
+/// ball is found. Tracked again at the floor of `faint_levels`, as the command line
+/// tracks it, it gives a scale within 2 of its ± (and 3 %) of the truth and says how;
+/// at the floor of 10 alone the tracker finds no ball (the retry is what tracks it).
+/// (Small look 55, the same look at 300p, showed it on the machines the test was
+/// first set on; on the machines of 2026-12-03 on, with Debian's ffmpeg 5.1.9, its clip
+/// stays "no ball found".)
 #[test]
 fn a_dark_ball_no_ball_stands_out_of_is_tracked_again_at_a_lower_floor() {
     use groovelab::vision::{self, TracksError};
-    let size = crate::film::looks::Size::Small;
+    let look = (55, crate::film::looks::Size::Full, Some(24));
     super::assert_tracked_to_its_scale(
         "black_ball",
-        55,
-        size,
+        look,
         0.03,
         "tracked twice: no ball stood out from the background by 10 levels",
     );
-    let Some((clip, frames)) = super::decoded_look("black_ball", 55, size) else {
+    let Some((clip, frames)) = super::decoded_first("black_ball", look.0, look.1, 24) else {
         return;
     };
     let (r, _, times) = super::look_truth(&clip, frames.len());

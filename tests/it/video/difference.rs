@@ -101,8 +101,7 @@ fn a_coarse_background_leaves_the_outlines_as_they_were() {
 fn a_clip_whose_radii_scatter_is_tracked_again_in_its_difference() {
     super::assert_tracked_to_its_scale(
         "difference",
-        20,
-        Size::Small,
+        (20, Size::Small, None),
         0.06,
         "tracked twice: the balls' fitted radii scatter",
     );

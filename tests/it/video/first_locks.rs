@@ -141,7 +141,12 @@ fn both_balls_confirm_the_radius() {
 /// 5 %) of the truth, and says it was tracked twice. Without the retry it was refused.
 #[test]
 fn a_radius_every_clear_outline_contradicts_is_tracked_again_at_theirs() {
-    super::assert_tracked_to_its_scale("first_locks", 68, Size::Small, 0.05, "tracked twice");
+    super::assert_tracked_to_its_scale(
+        "first_locks",
+        (68, Size::Small, None),
+        0.05,
+        "tracked twice",
+    );
 }
 
 /// The radius the clear outlines left out agree on: many (more than the fits kept

@@ -76,18 +76,18 @@ pub(crate) fn h264_first(
     Some((clip, path))
 }
 
-/// Checks that the look `seed` of `size`, refused before, is tracked as the command
-/// line tracks it (its band first) to a scale within 2 of its ± and `share` of the
-/// truth, with a note starting `note` saying how (nothing without ffmpeg).
+/// Checks that the look `seed` of `size` (its `first` frames where given), refused
+/// before, is tracked as the command line tracks it (its band first) to a scale
+/// within 2 of its ± and `share` of the truth, with a note starting `note` saying how
+/// (nothing without ffmpeg).
 pub(crate) fn assert_tracked_to_its_scale(
     area: &str,
-    seed: u64,
-    size: crate::film::looks::Size,
+    (seed, size, first): (u64, crate::film::looks::Size, Option<usize>),
     share: f64,
     note: &str,
 ) {
     use groovelab::input::video::tracked::{self, Framing, Pictures};
-    let Some((clip, path)) = h264_look(area, seed, size) else {
+    let Some((clip, path)) = h264_first(area, seed, size, first) else {
         return;
     };
     let done = tracked::track_framed(

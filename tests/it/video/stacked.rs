@@ -81,8 +81,7 @@ fn a_ball_on_a_wall_of_its_brightness_is_measured_on_its_stacked_picture() {
 fn a_clip_whose_radii_scatter_is_measured_on_its_stacked_pictures() {
     super::assert_tracked_to_its_scale(
         "stacked",
-        73,
-        Size::Small,
+        (73, Size::Small, None),
         0.06,
         "the radius from the balls' stacked pictures",
     );
@@ -97,8 +96,7 @@ fn a_clip_whose_radii_scatter_is_measured_on_its_stacked_pictures() {
 fn a_small_balls_blurred_picture_gives_its_radius() {
     super::assert_tracked_to_its_scale(
         "stacked",
-        10,
-        Size::Small,
+        (10, Size::Small, None),
         0.06,
         "the radius from the balls' stacked pictures",
     );
