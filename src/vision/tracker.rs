@@ -1615,12 +1615,17 @@ impl Tracker {
         let (su, sv) = (du / norm, dv / norm);
         let gain = self.params.colour_weight as f32;
         let (w, h) = (x1 - x0 + 1, y1 - y0 + 1);
-        let mut data = Vec::with_capacity(w * h);
+        let mut data = vec![0; w * h];
         let mut colour = colour_difference(frame, bg, (x0, x1), own);
-        for y in y0..=y1 {
-            for (du, dv) in colour.row(y) {
-                let d = du * su + dv * sv;
-                data.push(super::gray::level(64.0 + gain * d));
+        // Row by row over plain slices, so the compiler spreads the loop over
+        // vector lanes (pushed a pixel at a time, it was a third of the outline in
+        // colour on look 85).
+        for (y, out) in (y0..=y1).zip(data.chunks_exact_mut(w)) {
+            let [u, v, bu, bv] = colour.planes(y);
+            let planes = u.iter().zip(bu).zip(v.iter().zip(bv));
+            for (o, ((u, bu), (v, bv))) in out.iter_mut().zip(planes) {
+                let d = (u - bu) * su + (v - bv) * sv;
+                *o = super::gray::level(64.0 + gain * d);
             }
         }
         let patch = Gray {
@@ -1989,6 +1994,16 @@ fn colour_difference<'a>(
 impl<F: Fn(usize, usize) -> f32, B: Fn(usize, usize) -> f32> ColourDifference<F, B> {
     /// Row `y`'s (U, V) differences, one per column.
     fn row(&mut self, y: usize) -> impl Iterator<Item = (f32, f32)> + '_ {
+        let [u, v, bu, bv] = self.planes(y);
+        u.iter()
+            .zip(bu.iter())
+            .zip(v.iter().zip(bv.iter()))
+            .map(|((u, bu), (v, bv))| (u - bu, v - bv))
+    }
+
+    /// Row `y`'s colour planes, one value per column: the frame's U and V, the
+    /// background's U and V.
+    fn planes(&mut self, y: usize) -> [&[f32]; 4] {
         let (bh, f) = self.back;
         let frow = chroma_axis(self.chroma_height, y as f64);
         let row = colour_axis(f, bh, y as f64, self.between);
@@ -1997,10 +2012,7 @@ impl<F: Fn(usize, usize) -> f32, B: Fn(usize, usize) -> f32> ColourDifference<F,
         self.v.between(frow, v);
         self.back_u.between(row, bu);
         self.back_v.between(row, bv);
-        u.iter()
-            .zip(bu.iter())
-            .zip(v.iter().zip(bv.iter()))
-            .map(|((u, bu), (v, bv))| (u - bu, v - bv))
+        [u, v, bu, bv].map(|r| r.as_slice())
     }
 }
 
