@@ -7,7 +7,7 @@
 //! hides the ball's lower part, so the points cover an arc, not the whole circle.
 
 use super::frame::Frame;
-use super::gray::Gray;
+use super::gray::{Gray, sobel_sums};
 
 /// A circle in pixels (x right, y down).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -580,11 +580,8 @@ fn sobel_run(
     if u.len() != n + 2 || m.len() != n + 2 || d.len() != n + 2 || gy.len() != n || mag.len() != n {
         return;
     }
-    let l = |r: &[u8], j: usize| i32::from(r[j]);
     for j in 0..n {
-        let sx = (l(u, j + 2) + 2 * l(m, j + 2) + l(d, j + 2)) - (l(u, j) + 2 * l(m, j) + l(d, j));
-        let sy =
-            (l(d, j) + 2 * l(d, j + 1) + l(d, j + 2)) - (l(u, j) + 2 * l(u, j + 1) + l(u, j + 2));
+        let (sx, sy) = sobel_sums(&u[j..j + 3], &m[j..j + 3], &d[j..j + 3]);
         let (x, y) = (sx as f32 / 8.0, sy as f32 / 8.0);
         gx[j] = x;
         gy[j] = y;

@@ -21,6 +21,21 @@ pub fn level(v: f32) -> u8 {
     if c - f32::from(t) >= 0.5 { t + 1 } else { t }
 }
 
+/// The Sobel sums (across, down) of whole levels at the middle of three pixels of
+/// the rows above, at and below (`u`, `m`, `d`: three levels each; (0, 0) for
+/// other lengths): at most 4 × 255 a side, so exact in any type that holds them.
+#[inline]
+pub fn sobel_sums(u: &[u8], m: &[u8], d: &[u8]) -> (i32, i32) {
+    let (&[u0, u1, u2], &[m0, _, m2], &[d0, d1, d2]) = (u, m, d) else {
+        return (0, 0);
+    };
+    let l = i32::from;
+    (
+        (l(u2) + 2 * l(m2) + l(d2)) - (l(u0) + 2 * l(m0) + l(d0)),
+        (l(d0) + 2 * l(d1) + l(d2)) - (l(u0) + 2 * l(u1) + l(u2)),
+    )
+}
+
 impl Gray {
     /// A frame of one level.
     pub fn filled(width: usize, height: usize, level: u8) -> Gray {

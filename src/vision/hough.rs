@@ -8,7 +8,7 @@
 //! middle: the outline is then fitted about each centre found (`circle`).
 
 use super::circle::Circle;
-use super::gray::Gray;
+use super::gray::{Gray, sobel_sums};
 
 /// Where to look: the window's corners, px (left, top, right, bottom).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -161,11 +161,8 @@ fn sobel_row((u, m, d): (&[u8], &[u8], &[u8]), (gx, gy): (&mut [i32], &mut [i32]
     if u.len() != n + 2 || m.len() != n + 2 || d.len() != n + 2 || gy.len() != n {
         return false;
     }
-    let l = |r: &[u8], j: usize| i32::from(r[j]);
     for j in 0..n {
-        gx[j] = (l(u, j + 2) + 2 * l(m, j + 2) + l(d, j + 2)) - (l(u, j) + 2 * l(m, j) + l(d, j));
-        gy[j] =
-            (l(d, j) + 2 * l(d, j + 1) + l(d, j + 2)) - (l(u, j) + 2 * l(u, j + 1) + l(u, j + 2));
+        (gx[j], gy[j]) = sobel_sums(&u[j..j + 3], &m[j..j + 3], &d[j..j + 3]);
     }
     true
 }
