@@ -36,14 +36,14 @@ fn a_black_ball_on_a_wall_of_its_brightness_is_found_in_colour() {
 #[test]
 fn a_dark_ball_no_ball_stands_out_of_is_tracked_again_at_a_lower_floor() {
     use groovelab::vision::{self, TracksError};
-    let look = (55, crate::film::looks::Size::Full, Some(24));
-    super::assert_tracked_to_its_scale(
+    let tracked = super::assert_tracked_to_its_scale(
         "black_ball",
-        look,
+        (55, crate::film::looks::Size::Full, Some(24)),
         0.03,
         "tracked twice: no ball stood out from the background by 10 levels",
     );
-    let Some((clip, frames)) = super::decoded_first("black_ball", look.0, look.1, 24) else {
+    // The same file, tracked once at the floor of 10.
+    let Some((clip, frames)) = tracked.map(super::decoded) else {
         return;
     };
     let (r, _, times) = super::look_truth(&clip, frames.len());
