@@ -1323,7 +1323,8 @@ impl Tracker {
     /// `colour_own_radius` or more, on frames of 640 px and wider (the background
     /// learned coarse): its outline in brightness is then the wall's pattern (full
     /// look 43's green balls on a magenta grain of their brightness: circles of
-    /// 10–41 px for 29.7). Else `o`.
+    /// 10–41 px for 29.7). Else `o`; and `o` unsought in colour where it is settled
+    /// (a ball's, of the balls' radius: [`Params::colour_settled`]).
     fn coloured_in_colour(
         &self,
         frame: &Frame,
@@ -1331,7 +1332,7 @@ impl Tracker {
         o: OutlineFound,
         p: &Params,
     ) -> OutlineFound {
-        if o.colour || !coloured(frame, &guess, p.grey_levels) {
+        if o.colour || self.settled(&o, p) || !coloured(frame, &guess, p.grey_levels) {
             return o;
         }
         // A coloured ball on a wall of its brightness: its outline in brightness
@@ -1357,6 +1358,15 @@ impl Tracker {
             Some(q) if self.shaped(&q, p, false) && (clear_and_apart(&q) || walls_own(&q)) => q,
             _ => o,
         }
+    }
+
+    /// True when the outline `o` in brightness is a ball's (`shaped`) and of the
+    /// balls' radius within `colour_settled` of it: a coloured ball's outline in
+    /// colour is then not sought (see [`Params::colour_settled`]).
+    fn settled(&self, o: &OutlineFound, p: &Params) -> bool {
+        self.radius()
+            .is_some_and(|r| (o.outline.circle.r - r).abs() <= p.colour_settled * r)
+            && self.shaped(o, p, false)
     }
 
     /// True when the outline `o` is clear enough for a ball (`sharp`: a short sharp

@@ -7,6 +7,7 @@ mod band;
 mod black_ball;
 mod cast_shadow;
 mod colour_edge;
+mod colour_settled;
 mod coloured_ball;
 mod difference;
 mod edge_lean;
