@@ -392,6 +392,13 @@ pub struct Params {
     /// small look 18 (glossy balls of 11 px, crf 40), refused at 0.01, gives a
     /// scale 4.3 of its ± off.
     pub colour_settled: f64,
+    /// A blob of the frame that stays put (its guess within a pixel) and held no
+    /// ball (no fit of the frame inside it) for this many frames running is not
+    /// fitted, nor searched by Hough, but every 16th frame; 0 fits every blob in
+    /// every frame. Default 8: look 85's balls rest in contact from frame 272 over
+    /// a wide blob fitted afresh, and failing, in each of its last 449 frames
+    /// (6.7–9.8 outline fits a frame for 2.9 while they moved).
+    pub stale_blob: usize,
     /// Most the balls' fitted radius may exceed their stacked pictures'
     /// (`Tracker::picture_radii`), as a ratio. Default 1.18: the pictures'
     /// outlines lay up to 15 % inside the drawn balls on the looks table (a limb
@@ -697,6 +704,7 @@ impl Default for Params {
             colour_own_radius: 20.0,
             colour_over_poor_rms: 1.0,
             colour_settled: 0.01,
+            stale_blob: 8,
             picture_ratio: 1.18,
             max_radius_spread: 0.05,
             difference_first: false,

@@ -73,6 +73,9 @@ pub struct Tracker {
     pub counts: Counts,
     /// Each slot's last two fits (frame index, circle), newest last.
     last: [Vec<(usize, Circle)>; 2],
+    /// Blobs that gave no ball in the frames before (their guess, how many frames
+    /// running, why their own fit was left out): see [`Params::stale_blob`].
+    stale: Vec<(Circle, usize, LeftOut)>,
     polarity: f64,
     radii: Vec<f64>,
     /// The median of `radii`, renewed while they are few and then every 256; or
@@ -489,13 +492,10 @@ impl Tracker {
                 .as_ref()
                 .map_or(detect::factor(img.width), |b| b.image.factor) as f64
         });
-        let mut fits: Vec<Result<Outline, LeftOut>> = Vec::new();
-        for b in coarse.balls.iter().take(6) {
-            let fit = self.fit_blob(frame, b, f);
-            fits.push(fit);
-        }
-        self.search_wide(frame, &coarse, &mut fits, f);
+        let (mut fits, stale) = self.fit_blobs(frame, &coarse.balls, f);
+        self.search_wide(frame, &coarse, &mut fits, (f, &stale));
         self.follow(frame, &mut fits);
+        self.note_stale(&coarse.balls, &fits);
         self.seed(frame, &mut fits);
         self.no_locks_inside_blobs(&coarse.balls, &mut fits);
         // One fit per ball: of fits of one ball (a blob and the follower), the first.
@@ -940,7 +940,7 @@ impl Tracker {
         frame: &Frame,
         coarse: &detect::Coarse,
         fits: &mut Vec<Result<Outline, LeftOut>>,
-        f: f64,
+        (f, stale): (f64, &[bool]),
     ) {
         let Some(r) = self.radius() else { return };
         let p = self.params;
@@ -950,8 +950,9 @@ impl Tracker {
             .iter()
             .take(6)
             .zip(gave.iter().copied().chain(std::iter::repeat(true)))
-            .filter(|(b, ok)| !ok || b.width() > p.wide_blob * 2.0 * r)
-            .map(|(b, _)| b)
+            .zip(stale.iter().copied().chain(std::iter::repeat(false)))
+            .filter(|((b, ok), skip)| !skip && (!ok || b.width() > p.wide_blob * 2.0 * r))
+            .map(|((b, _), _)| b)
             .chain(coarse.pairs.iter().take(2));
         let mut guesses: Vec<Circle> = Vec::new();
         for b in blobs {
@@ -986,6 +987,84 @@ impl Tracker {
                 fits.push(Ok(o));
             }
         }
+    }
+
+    /// The fits of the first six `blobs` (coarse factor `f`), and which were stale
+    /// ([`Tracker::stale_blobs`]: not fitted, left out for the reason their last
+    /// fit was).
+    fn fit_blobs(
+        &mut self,
+        frame: &Frame,
+        blobs: &[Blob],
+        f: f64,
+    ) -> (Vec<Result<Outline, LeftOut>>, Vec<bool>) {
+        let stale = self.stale_blobs(blobs);
+        let mut fits = Vec::new();
+        for (b, &skip) in blobs.iter().take(6).zip(&stale) {
+            let fit = match self.stale_entry(&b.guess()).filter(|_| skip) {
+                Some((_, why)) => Err(why),
+                None => self.fit_blob(frame, b, f),
+            };
+            fits.push(fit);
+        }
+        (fits, stale)
+    }
+
+    /// Which of the first six `blobs` are stale (`Params::stale_blob`): each within a
+    /// pixel of a blob that gave no ball in that many frames running, and not due
+    /// for its retry (every [`STALE_RETRY`] frames).
+    fn stale_blobs(&self, blobs: &[Blob]) -> Vec<bool> {
+        let least = self.params.stale_blob;
+        blobs
+            .iter()
+            .take(6)
+            .map(|b| {
+                least > 0
+                    && self
+                        .stale_entry(&b.guess())
+                        .is_some_and(|(n, _)| n >= least && n % STALE_RETRY != 0)
+            })
+            .collect()
+    }
+
+    /// How many frames running a blob at `guess` (within a pixel) gave no ball, and
+    /// why its own fit was left out the last time it was made.
+    fn stale_entry(&self, guess: &Circle) -> Option<(usize, LeftOut)> {
+        let near = |c: &Circle| {
+            (c.x - guess.x).abs() <= 1.0
+                && (c.y - guess.y).abs() <= 1.0
+                && (c.r - guess.r).abs() <= 1.0
+        };
+        self.stale
+            .iter()
+            .find(|(c, ..)| near(c))
+            .map(|&(_, n, why)| (n, why))
+    }
+
+    /// Counts, for each of the first six `blobs`, the frames running in which no
+    /// fit of the frame (`fits`: the blobs' own, in their order, then Hough's and
+    /// the follower's) lay inside it; a blob that moved or gave a ball starts again.
+    fn note_stale(&mut self, blobs: &[Blob], fits: &[Result<Outline, LeftOut>]) {
+        if self.params.stale_blob == 0 {
+            return;
+        }
+        let next = blobs
+            .iter()
+            .take(6)
+            .zip(fits)
+            .filter(|(b, _)| {
+                !fits.iter().flatten().any(|o| {
+                    let c = o.circle;
+                    (b.left..=b.right).contains(&c.x) && (b.top..=b.bottom).contains(&c.y)
+                })
+            })
+            .filter_map(|(b, own)| {
+                let (g, why) = (b.guess(), own.err()?);
+                let n = self.stale_entry(&g).map_or(0, |(n, _)| n);
+                Some((g, n + 1, why))
+            })
+            .collect();
+        self.stale = next;
     }
 
     /// The follower: each ball seen in the last frames looked for about where it is
@@ -2079,6 +2158,10 @@ impl<F: Fn(usize, usize) -> f32> Across<F> {
     }
 }
 
+/// How often a stale blob (`Params::stale_blob`) is fitted all the same, frames: a
+/// ball may come to rest on it, or roll into it, unfollowed.
+const STALE_RETRY: usize = 16;
+
 /// Whether the circle `c` fitted in `frame` can be a ball: something inside it
 /// differs from around it (`differ_levels`; else it is a ghost, where the
 /// background learned a ball that is not there now, or a circle fitted to the wall's
@@ -2304,6 +2387,87 @@ pub fn median(v: &[f64]) -> Option<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A blob whose box spans `x0 … x1` across and `y0 … y1` down.
+    fn blob(x0: f64, x1: f64, y0: f64, y1: f64) -> Blob {
+        Blob {
+            left: x0,
+            right: x1,
+            top: y0,
+            bottom: y1,
+            area: (x1 - x0) * (y1 - y0),
+            core: None,
+        }
+    }
+
+    /// A blob that stays put and holds no ball is fitted for `stale_blob` frames,
+    /// then skipped (its own fit left out for the reason it last was), fitted
+    /// again every `STALE_RETRY` frames; a fit inside it, a move of more than a
+    /// pixel, or `stale_blob` 0 has it fitted every frame.
+    #[test]
+    fn a_blob_that_stays_put_without_a_ball_is_fitted_only_now_and_then() {
+        let mut t = Tracker::new(Params::default());
+        let least = t.params.stale_blob;
+        assert!(least > 0);
+        let wide = blob(822.0, 1074.0, 210.0, 400.0);
+        let fitted = |t: &Tracker, b: &Blob| !t.stale_blobs(&[*b])[0];
+        let mut pattern = Vec::new();
+        for _ in 0..3 * STALE_RETRY {
+            let fit = fitted(&t, &wide);
+            pattern.push(fit);
+            let own = if fit {
+                Err(LeftOut::Unseen)
+            } else {
+                t.stale_entry(&wide.guess())
+                    .map(|(_, why)| Err(why))
+                    .unwrap()
+            };
+            t.note_stale(&[wide], &[own]);
+        }
+        // Fitted the first `least` frames, then on the multiples of STALE_RETRY.
+        for (k, fit) in pattern.iter().enumerate() {
+            let due = k < least || k % STALE_RETRY == 0;
+            assert_eq!(*fit, due, "frame {k}: {pattern:?}");
+        }
+        assert_eq!(
+            t.stale_entry(&wide.guess()).map(|(_, why)| why),
+            Some(LeftOut::Unseen)
+        );
+        // Within a pixel it is the same blob; moved by two, a new one (one frame
+        // more: 3 STALE_RETRY frames running is a retry).
+        t.note_stale(&[wide], &[Err(LeftOut::Unseen)]);
+        let nudged = blob(822.5, 1074.5, 210.5, 400.5);
+        assert!(!fitted(&t, &nudged));
+        let moved = blob(824.0, 1076.0, 210.0, 400.0);
+        assert!(fitted(&t, &moved));
+        // A ball found inside it (by any fit of the frame) starts it again.
+        let ball = Outline {
+            circle: Circle {
+                x: 890.0,
+                y: 278.0,
+                r: 69.0,
+            },
+            sigma: [0.1; 3],
+            covariance: [[0.0; 3]; 3],
+            rms: 0.3,
+            points: 200,
+            sectors: u64::MAX >> 28,
+            lowest: 320.0,
+            polarity: 1.0,
+        };
+        t.note_stale(&[wide], &[Err(LeftOut::Poor), Ok(ball)]);
+        assert!(fitted(&t, &wide));
+        assert_eq!(t.stale_entry(&wide.guess()).map(|(n, _)| n), None);
+        // Off, every blob is fitted every frame.
+        let mut off = Tracker::new(Params {
+            stale_blob: 0,
+            ..Params::default()
+        });
+        for _ in 0..2 * STALE_RETRY {
+            assert!(fitted(&off, &wide));
+            off.note_stale(&[wide], &[Err(LeftOut::Poor)]);
+        }
+    }
 
     /// A fixed LCG (the test reads no clock): the next value in 0 … 1.
     fn next(x: &mut u64) -> f64 {
