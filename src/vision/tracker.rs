@@ -1000,29 +1000,27 @@ impl Tracker {
     ) -> (Vec<Result<Outline, LeftOut>>, Vec<bool>) {
         let stale = self.stale_blobs(blobs);
         let mut fits = Vec::new();
-        for (b, &skip) in blobs.iter().take(6).zip(&stale) {
-            let fit = match self.stale_entry(&b.guess()).filter(|_| skip) {
-                Some((_, why)) => Err(why),
+        for (b, skip) in blobs.iter().take(6).zip(&stale) {
+            fits.push(match skip {
+                Some(why) => Err(*why),
                 None => self.fit_blob(frame, b, f),
-            };
-            fits.push(fit);
+            });
         }
-        (fits, stale)
+        (fits, stale.iter().map(Option::is_some).collect())
     }
 
-    /// Which of the first six `blobs` are stale (`Params::stale_blob`): each within a
-    /// pixel of a blob that gave no ball in that many frames running, and not due
-    /// for its retry (every [`STALE_RETRY`] frames).
-    fn stale_blobs(&self, blobs: &[Blob]) -> Vec<bool> {
+    /// For each of the first six `blobs`, why it is left out unfitted where it is
+    /// stale (`Params::stale_blob`: within a pixel of a blob that gave no ball in
+    /// that many frames running, and not due for its retry every [`STALE_RETRY`]
+    /// frames): the reason its last fit was left out. `None`: it is fitted.
+    fn stale_blobs(&self, blobs: &[Blob]) -> Vec<Option<LeftOut>> {
         let least = self.params.stale_blob;
         blobs
             .iter()
             .take(6)
             .map(|b| {
-                least > 0
-                    && self
-                        .stale_entry(&b.guess())
-                        .is_some_and(|(n, _)| n >= least && n % STALE_RETRY != 0)
+                let (n, why) = self.stale_entry(&b.guess())?;
+                (least > 0 && n >= least && n % STALE_RETRY != 0).then_some(why)
             })
             .collect()
     }
@@ -2410,7 +2408,7 @@ mod tests {
         let least = t.params.stale_blob;
         assert!(least > 0);
         let wide = blob(822.0, 1074.0, 210.0, 400.0);
-        let fitted = |t: &Tracker, b: &Blob| !t.stale_blobs(&[*b])[0];
+        let fitted = |t: &Tracker, b: &Blob| t.stale_blobs(&[*b])[0].is_none();
         let mut pattern = Vec::new();
         for _ in 0..3 * STALE_RETRY {
             let fit = fitted(&t, &wide);

@@ -1,22 +1,20 @@
 //! A coloured ball whose outline in brightness is a ball's and of the balls' radius
 //! is not sought in colour (`Params::colour_settled`, tracker 50): the outline in
 //! colour replaces it only where the two lie apart by more than `outer_agree`, and
-//! then it is the colour outline that is off the radius. The rule saves work, so it
-//! must change nothing a user sees at its default, and the margin it is given must
-//! be narrow: wider, it keeps outlines in brightness that were not the ball's.
+//! then it is the colour outline that is off the radius. The rule saves work and
+//! keeps the clearer outline; the margin it is given must be narrow: wider, it keeps
+//! outlines in brightness that were not the ball's.
 
-use super::decoded_look;
-use crate::common::paper_scene;
-use crate::film::looks::Size;
+use super::{decoded_look, look_truth};
+use crate::film::looks::{Clip, Size};
 use groovelab::vision::{self, Params};
 
-/// The look `seed` (small), tracked in memory with `params`: the scale's distance
-/// from the truth in its own ±, or `None` where no scale is given (refused).
-fn scale_off(frames: &[vision::Frame], truth: f64, fps: f64, params: Params) -> Option<f64> {
-    let times = (0..frames.len()).map(|k| k as f64 / fps).collect();
+/// `clip`'s `frames` tracked in memory with `params`: the scale's distance from the
+/// truth in its own ±, or `None` where no scale is given (refused).
+fn scale_off(clip: &Clip, frames: &[vision::Frame], params: Params) -> Option<f64> {
+    let (r, truth, times) = look_truth(clip, frames.len());
     let t = vision::track(frames, params);
-    let tracks = vision::tracks(&t, times, paper_scene().radius, None).ok()?;
-    let c = tracks.calibration;
+    let c = vision::tracks(&t, times, r, None).ok()?.calibration;
     Some((c.px_per_m - truth).abs() / c.px_per_m_sigma)
 }
 
@@ -30,9 +28,7 @@ fn a_wide_margin_keeps_outlines_in_brightness_that_are_not_the_balls() {
     let Some((clip, frames)) = decoded_look("colour_settled", 18, Size::Small) else {
         return;
     };
-    let truth = clip.film.px_per_m();
-    let fps = clip.film.look.fps;
-    let at_default = scale_off(&frames, truth, fps, Params::default());
+    let at_default = scale_off(&clip, &frames, Params::default());
     assert!(
         at_default.is_none_or(|off| off <= 2.0),
         "default: scale {at_default:?} of its ± off"
@@ -41,7 +37,7 @@ fn a_wide_margin_keeps_outlines_in_brightness_that_are_not_the_balls() {
         colour_settled: 0.05,
         ..Params::default()
     };
-    let off = scale_off(&frames, truth, fps, wide);
+    let off = scale_off(&clip, &frames, wide);
     assert!(
         off.is_some_and(|off| off > 2.0),
         "at 5 %: scale {off:?} of its ± off"
