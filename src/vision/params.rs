@@ -392,12 +392,15 @@ pub struct Params {
     /// small look 18 (glossy balls of 11 px, crf 40), refused at 0.01, gives a
     /// scale 4.3 of its ± off.
     pub colour_settled: f64,
-    /// A blob of the frame that stays put (its guess within a pixel) and held no
-    /// ball (no fit of the frame inside it) for this many frames running is not
-    /// fitted, nor searched by Hough, but every 16th frame; 0 fits every blob in
-    /// every frame. Default 8: look 85's balls rest in contact from frame 272 over
-    /// a wide blob fitted afresh, and failing, in each of its last 449 frames
-    /// (6.7–9.8 outline fits a frame for 2.9 while they moved).
+    /// A blob of the frame that stays put (its guess within a pixel) and whose own
+    /// fit was left out for this many frames running is not fitted but every 16th
+    /// frame (left out for the reason it last was); where besides no fit of the
+    /// frame lay inside it for as many frames, neither is it searched by Hough. 0
+    /// fits and searches every blob in every frame. Default 8: look 85's balls rest
+    /// in contact from frame 272 over a wide blob fitted afresh, and failing, in
+    /// each of its last 449 frames (6.7–9.8 outline fits a frame for 2.9 while they
+    /// moved); from frame 498 Hough or the follower find both balls inside it
+    /// (left out as touching) while its own fit fails on, 4 ms a frame (tracker 52).
     pub stale_blob: usize,
     /// Most the balls' fitted radius may exceed their stacked pictures'
     /// (`Tracker::picture_radii`), as a ratio. Default 1.18: the pictures'

@@ -73,9 +73,9 @@ pub struct Tracker {
     pub counts: Counts,
     /// Each slot's last two fits (frame index, circle), newest last.
     last: [Vec<(usize, Circle)>; 2],
-    /// Blobs that gave no ball in the frames before (their guess, how many frames
-    /// running, why their own fit was left out): see [`Params::stale_blob`].
-    stale: Vec<(Circle, usize, LeftOut)>,
+    /// Blobs whose own fit was left out in the frames before: see
+    /// [`Params::stale_blob`] and [`Stale`].
+    stale: Vec<Stale>,
     polarity: f64,
     radii: Vec<f64>,
     /// The median of `radii`, renewed while they are few and then every 256; or
@@ -989,9 +989,10 @@ impl Tracker {
         }
     }
 
-    /// The fits of the first six `blobs` (coarse factor `f`), and which were stale
-    /// ([`Tracker::stale_blobs`]: not fitted, left out for the reason their last
-    /// fit was).
+    /// The fits of the first six `blobs` (coarse factor `f`), and which are not to
+    /// be searched by Hough ([`Tracker::stale_blobs`]: held no ball for long). A
+    /// blob whose own fit keeps failing in place is not fitted (left out for the
+    /// reason its last fit was), whether or not other fits found balls inside it.
     fn fit_blobs(
         &mut self,
         frame: &Frame,
@@ -1000,48 +1001,48 @@ impl Tracker {
     ) -> (Vec<Result<Outline, LeftOut>>, Vec<bool>) {
         let stale = self.stale_blobs(blobs);
         let mut fits = Vec::new();
-        for (b, skip) in blobs.iter().take(6).zip(&stale) {
-            fits.push(match skip {
-                Some(why) => Err(*why),
+        for (b, s) in blobs.iter().take(6).zip(&stale) {
+            fits.push(match s.unfitted {
+                Some(why) => Err(why),
                 None => self.fit_blob(frame, b, f),
             });
         }
-        (fits, stale.iter().map(Option::is_some).collect())
+        (fits, stale.iter().map(|s| s.unsearched).collect())
     }
 
-    /// For each of the first six `blobs`, why it is left out unfitted where it is
-    /// stale (`Params::stale_blob`: within a pixel of a blob that gave no ball in
-    /// that many frames running, and not due for its retry every [`STALE_RETRY`]
-    /// frames): the reason its last fit was left out. `None`: it is fitted.
-    fn stale_blobs(&self, blobs: &[Blob]) -> Vec<Option<LeftOut>> {
+    /// For each of the first six `blobs`, what of its work is skipped
+    /// (`Params::stale_blob`, each but every [`STALE_RETRY`]th frame: see
+    /// [`Stale`]).
+    fn stale_blobs(&self, blobs: &[Blob]) -> Vec<StaleSkips> {
         let least = self.params.stale_blob;
+        let due = |n: usize| least > 0 && n >= least && !n.is_multiple_of(STALE_RETRY);
         blobs
             .iter()
             .take(6)
-            .map(|b| {
-                let (n, why) = self.stale_entry(&b.guess())?;
-                (least > 0 && n >= least && n % STALE_RETRY != 0).then_some(why)
+            .map(|b| match self.stale_entry(&b.guess()) {
+                Some(s) => StaleSkips {
+                    unfitted: due(s.failed).then_some(s.why),
+                    unsearched: due(s.empty),
+                },
+                None => StaleSkips::default(),
             })
             .collect()
     }
 
-    /// How many frames running a blob at `guess` (within a pixel) gave no ball, and
-    /// why its own fit was left out the last time it was made.
-    fn stale_entry(&self, guess: &Circle) -> Option<(usize, LeftOut)> {
+    /// What is known of a blob at `guess` (within a pixel) from the frames before.
+    fn stale_entry(&self, guess: &Circle) -> Option<Stale> {
         let near = |c: &Circle| {
             (c.x - guess.x).abs() <= 1.0
                 && (c.y - guess.y).abs() <= 1.0
                 && (c.r - guess.r).abs() <= 1.0
         };
-        self.stale
-            .iter()
-            .find(|(c, ..)| near(c))
-            .map(|&(_, n, why)| (n, why))
+        self.stale.iter().find(|s| near(&s.guess)).copied()
     }
 
-    /// Counts, for each of the first six `blobs`, the frames running in which no
-    /// fit of the frame (`fits`: the blobs' own, in their order, then Hough's and
-    /// the follower's) lay inside it; a blob that moved or gave a ball starts again.
+    /// Counts, for each of the first six `blobs`, the frames running in which its
+    /// own fit (`fits`: the blobs' own, in their order, then Hough's and the
+    /// follower's) was left out, and of those the frames in which no fit of the
+    /// frame lay inside it; a blob that moved or gave a ball starts again.
     fn note_stale(&mut self, blobs: &[Blob], fits: &[Result<Outline, LeftOut>]) {
         if self.params.stale_blob == 0 {
             return;
@@ -1050,16 +1051,23 @@ impl Tracker {
             .iter()
             .take(6)
             .zip(fits)
-            .filter(|(b, _)| {
-                !fits.iter().flatten().any(|o| {
+            .filter_map(|(b, own)| {
+                let (guess, why) = (b.guess(), own.err()?);
+                let held = fits.iter().flatten().any(|o| {
                     let c = o.circle;
                     (b.left..=b.right).contains(&c.x) && (b.top..=b.bottom).contains(&c.y)
+                });
+                let before = self.stale_entry(&guess);
+                Some(Stale {
+                    guess,
+                    failed: before.map_or(0, |s| s.failed) + 1,
+                    empty: if held {
+                        0
+                    } else {
+                        before.map_or(0, |s| s.empty) + 1
+                    },
+                    why,
                 })
-            })
-            .filter_map(|(b, own)| {
-                let (g, why) = (b.guess(), own.err()?);
-                let n = self.stale_entry(&g).map_or(0, |(n, _)| n);
-                Some((g, n + 1, why))
             })
             .collect();
         self.stale = next;
@@ -2160,6 +2168,27 @@ impl<F: Fn(usize, usize) -> f32> Across<F> {
 /// ball may come to rest on it, or roll into it, unfollowed.
 const STALE_RETRY: usize = 16;
 
+/// A blob of the frames before whose own fit was left out, frames running
+/// (`Params::stale_blob`): where its guess was, in how many frames its own fit was
+/// left out (`failed`: then it is not fitted), of those the last in which no fit of
+/// the frame lay inside it (`empty`: then neither is it searched by Hough), and why
+/// its own fit was left out the last time it was made.
+#[derive(Clone, Copy, Debug)]
+struct Stale {
+    guess: Circle,
+    failed: usize,
+    empty: usize,
+    why: LeftOut,
+}
+
+/// What of a blob's work this frame skips ([`Tracker::stale_blobs`]): its own
+/// fit (left out for this reason), and Hough's search inside it.
+#[derive(Clone, Copy, Debug, Default)]
+struct StaleSkips {
+    unfitted: Option<LeftOut>,
+    unsearched: bool,
+}
+
 /// Whether the circle `c` fitted in `frame` can be a ball: something inside it
 /// differs from around it (`differ_levels`; else it is a ghost, where the
 /// background learned a ball that is not there now, or a circle fitted to the wall's
@@ -2398,47 +2427,20 @@ mod tests {
         }
     }
 
-    /// A blob that stays put and holds no ball is fitted for `stale_blob` frames,
-    /// then skipped (its own fit left out for the reason it last was), fitted
-    /// again every `STALE_RETRY` frames; a fit inside it, a move of more than a
-    /// pixel, or `stale_blob` 0 has it fitted every frame.
+    /// A blob that stays put and whose own fit is left out is fitted for
+    /// `stale_blob` frames, then skipped (left out for the reason it last was),
+    /// fitted again every `STALE_RETRY` frames; it is searched by Hough while a
+    /// fit of the frame lies inside it, and only now and then once none has for
+    /// as long. Its own fit found, a move of more than a pixel, or `stale_blob` 0
+    /// has it fitted every frame.
     #[test]
     fn a_blob_that_stays_put_without_a_ball_is_fitted_only_now_and_then() {
         let mut t = Tracker::new(Params::default());
         let least = t.params.stale_blob;
         assert!(least > 0);
         let wide = blob(822.0, 1074.0, 210.0, 400.0);
-        let fitted = |t: &Tracker, b: &Blob| t.stale_blobs(&[*b])[0].is_none();
-        let mut pattern = Vec::new();
-        for _ in 0..3 * STALE_RETRY {
-            let fit = fitted(&t, &wide);
-            pattern.push(fit);
-            let own = if fit {
-                Err(LeftOut::Unseen)
-            } else {
-                t.stale_entry(&wide.guess())
-                    .map(|(_, why)| Err(why))
-                    .unwrap()
-            };
-            t.note_stale(&[wide], &[own]);
-        }
-        // Fitted the first `least` frames, then on the multiples of STALE_RETRY.
-        for (k, fit) in pattern.iter().enumerate() {
-            let due = k < least || k % STALE_RETRY == 0;
-            assert_eq!(*fit, due, "frame {k}: {pattern:?}");
-        }
-        assert_eq!(
-            t.stale_entry(&wide.guess()).map(|(_, why)| why),
-            Some(LeftOut::Unseen)
-        );
-        // Within a pixel it is the same blob; moved by two, a new one (one frame
-        // more: 3 STALE_RETRY frames running is a retry).
-        t.note_stale(&[wide], &[Err(LeftOut::Unseen)]);
-        let nudged = blob(822.5, 1074.5, 210.5, 400.5);
-        assert!(!fitted(&t, &nudged));
-        let moved = blob(824.0, 1076.0, 210.0, 400.0);
-        assert!(fitted(&t, &moved));
-        // A ball found inside it (by any fit of the frame) starts it again.
+        let skipped = |t: &Tracker, b: &Blob| t.stale_blobs(&[*b])[0];
+        let fitted = |t: &Tracker, b: &Blob| skipped(t, b).unfitted.is_none();
         let ball = Outline {
             circle: Circle {
                 x: 890.0,
@@ -2453,16 +2455,59 @@ mod tests {
             lowest: 320.0,
             polarity: 1.0,
         };
-        t.note_stale(&[wide], &[Err(LeftOut::Poor), Ok(ball)]);
+        // Two balls at rest in contact inside it, found by Hough or the follower:
+        // its own fit is skipped as it fails, Hough's search never is.
+        let mut pattern = Vec::new();
+        for _ in 0..3 * STALE_RETRY {
+            let s = skipped(&t, &wide);
+            assert!(!s.unsearched);
+            pattern.push(s.unfitted.is_none());
+            let own = s.unfitted.unwrap_or(LeftOut::Poor);
+            t.note_stale(&[wide], &[Err(own), Ok(ball)]);
+        }
+        // Fitted the first `least` frames, then on the multiples of STALE_RETRY.
+        let due = |k: usize| k < least || k.is_multiple_of(STALE_RETRY);
+        for (k, fit) in pattern.iter().enumerate() {
+            assert_eq!(*fit, due(k), "frame {k}: {pattern:?}");
+        }
+        // Empty from now: searched for `least` frames more, then now and then,
+        // and fitted as before, left out for the reason it last was.
+        let mut searched = Vec::new();
+        for _ in 0..3 * STALE_RETRY {
+            let s = skipped(&t, &wide);
+            searched.push(!s.unsearched);
+            let own = match s.unfitted {
+                Some(why) => why,
+                None => LeftOut::Unseen,
+            };
+            t.note_stale(&[wide], &[Err(own)]);
+        }
+        for (k, search) in searched.iter().enumerate() {
+            assert_eq!(*search, due(k), "frame {k}: {searched:?}");
+        }
+        assert_eq!(
+            t.stale_entry(&wide.guess()).map(|s| s.why),
+            Some(LeftOut::Unseen)
+        );
+        // Within a pixel it is the same blob; moved by two, a new one (one frame
+        // more: 6 STALE_RETRY frames running is a retry).
+        t.note_stale(&[wide], &[Err(LeftOut::Unseen)]);
+        let nudged = blob(822.5, 1074.5, 210.5, 400.5);
+        assert!(!fitted(&t, &nudged));
+        let moved = blob(824.0, 1076.0, 210.0, 400.0);
+        assert!(fitted(&t, &moved));
+        // Its own fit found a ball: it starts again.
+        t.note_stale(&[wide], &[Ok(ball)]);
         assert!(fitted(&t, &wide));
-        assert_eq!(t.stale_entry(&wide.guess()).map(|(n, _)| n), None);
-        // Off, every blob is fitted every frame.
+        assert!(t.stale_entry(&wide.guess()).is_none());
+        // Off, every blob is fitted and searched every frame.
         let mut off = Tracker::new(Params {
             stale_blob: 0,
             ..Params::default()
         });
         for _ in 0..2 * STALE_RETRY {
             assert!(fitted(&off, &wide));
+            assert!(!skipped(&off, &wide).unsearched);
             off.note_stale(&[wide], &[Err(LeftOut::Poor)]);
         }
     }
