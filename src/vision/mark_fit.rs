@@ -71,26 +71,27 @@ pub fn fit(img: &Gray, start: Start, reach: f64, keep: impl Fn(f64, f64) -> bool
         a2,
         0.8,
     ]);
-    let mut cost = cost_of(&pts, start.at, &th);
+    // The cost and the normal equations in one pass over the pixels: a step taken
+    // starts the next round from the equations its cost was measured with.
+    let mut here = Normal::of(&pts, start.at, &th);
     let mut lam = 1e-3;
     for _ in 0..ROUNDS {
-        let (jtj, jtr) = normal(&pts, start.at, &th);
         let mut stepped = None;
         for _ in 0..TRIES {
-            let mut a = jtj;
+            let mut a = here.jtj;
             for i in 0..8 {
                 if let Some(d) = a.get_mut((i, i)) {
                     *d *= 1.0 + lam;
                 }
             }
-            let step = a.lu().solve(&jtr)?;
+            let step = a.lu().solve(&here.jtr)?;
             let mut next = th + step;
             if let Some(s) = next.get_mut(7) {
                 *s = s.max(SOFTEST);
             }
-            let c = cost_of(&pts, start.at, &next);
-            if c < cost {
-                (th, cost) = (next, c);
+            let there = Normal::of(&pts, start.at, &next);
+            if there.cost < here.cost {
+                (th, here) = (next, there);
                 lam = (lam / 3.0).max(1e-6);
                 stepped = Some(step);
                 break;
@@ -157,14 +158,6 @@ fn step(z: f64) -> f64 {
     }
 }
 
-/// The model's level at `(x, y)`.
-#[allow(clippy::indexing_slicing)] // the eight parameters of a fixed-size vector
-fn level(th: &Theta, at: (f64, f64), x: f64, y: f64) -> f64 {
-    let shade = th[4] + th[5] * (x - at.0) + th[6] * (y - at.1);
-    let c = step((th[2] - length(x - th[0], y - th[1])) / th[7].max(SOFTEST));
-    shade * (1.0 - c) + th[3] * c
-}
-
 /// The model's level at `(x, y)` and its derivatives by the parameters.
 #[allow(clippy::indexing_slicing)] // the eight parameters of a fixed-size vector
 fn model(th: &Theta, at: (f64, f64), x: f64, y: f64) -> (f64, Theta) {
@@ -190,21 +183,30 @@ fn model(th: &Theta, at: (f64, f64), x: f64, y: f64) -> (f64, Theta) {
     (shade * (1.0 - c) + level * c, j)
 }
 
-/// The sum of squared residuals of the model `th` over `pts`.
-fn cost_of(pts: &[(f64, f64, f64)], at: (f64, f64), th: &Theta) -> f64 {
-    pts.iter()
-        .map(|&(x, y, v)| (v - level(th, at, x, y)).powi(2))
-        .sum()
+/// The sum of squared residuals of the model `th` over `pts`, and the normal
+/// equations JᵀJ and Jᵀr there.
+struct Normal {
+    cost: f64,
+    jtj: SMatrix<f64, 8, 8>,
+    jtr: Theta,
 }
 
-/// The normal equations JᵀJ and Jᵀr of the model `th` over `pts`.
-fn normal(pts: &[(f64, f64, f64)], at: (f64, f64), th: &Theta) -> (SMatrix<f64, 8, 8>, Theta) {
-    let mut jtj = SMatrix::<f64, 8, 8>::zeros();
-    let mut jtr = Theta::zeros();
-    for &(x, y, v) in pts {
-        let (m, j) = model(th, at, x, y);
-        jtj += j * j.transpose();
-        jtr += j * (v - m);
+impl Normal {
+    fn of(pts: &[(f64, f64, f64)], at: (f64, f64), th: &Theta) -> Normal {
+        let mut n = Normal {
+            cost: 0.0,
+            jtj: SMatrix::zeros(),
+            jtr: Theta::zeros(),
+        };
+        for &(x, y, v) in pts {
+            let (m, j) = model(th, at, x, y);
+            let r = v - m;
+            n.cost += r * r;
+            // JᵀJ is symmetric: its lower half summed, the upper copied after.
+            n.jtj.syger(1.0, &j, &j, 1.0);
+            n.jtr += j * r;
+        }
+        n.jtj.fill_upper_triangle_with_lower_triangle();
+        n
     }
-    (jtj, jtr)
 }
