@@ -401,6 +401,10 @@ pub struct Params {
     /// each of its last 449 frames (6.7–9.8 outline fits a frame for 2.9 while they
     /// moved); from frame 498 Hough or the follower find both balls inside it
     /// (left out as touching) while its own fit fails on, 4 ms a frame (tracker 52).
+    /// Balls found touching in the same places (within half a pixel) for as many
+    /// frames running, the frame's blobs staying put, are taken as touching
+    /// without a fit but every 16th frame (tracker 53: look 85's last 223 frames
+    /// each fitted both, 1.4 ms a frame, to leave them out).
     pub stale_blob: usize,
     /// Most the balls' fitted radius may exceed their stacked pictures'
     /// (`Tracker::picture_radii`), as a ratio. Default 1.18: the pictures'

@@ -76,6 +76,8 @@ pub struct Tracker {
     /// Blobs whose own fit was left out in the frames before: see
     /// [`Params::stale_blob`] and [`Stale`].
     stale: Vec<Stale>,
+    /// The balls found at rest in contact in the frames before: see [`Contact`].
+    contact: Option<Contact>,
     polarity: f64,
     radii: Vec<f64>,
     /// The median of `radii`, renewed while they are few and then every 256; or
@@ -487,6 +489,11 @@ impl Tracker {
         let p = self.params;
         let noise = prep.noise;
         let coarse = self.look(frame, prep.small, prep.luma_look);
+        if self.still_in_contact(&coarse.balls) {
+            self.frames
+                .push([Err(LeftOut::Merged), Err(LeftOut::Merged)]);
+            return;
+        }
         let f = coarse.balls.first().map_or(1.0, |_| {
             self.background
                 .as_ref()
@@ -532,6 +539,7 @@ impl Tracker {
             }
             _ => false,
         };
+        self.note_contact(touching.then_some(good.as_slice()), &coarse.balls);
         let mut out: FrameFixes = [Err(LeftOut::Unseen), Err(LeftOut::Unseen)];
         if merged || touching {
             out = [Err(LeftOut::Merged), Err(LeftOut::Merged)];
@@ -985,6 +993,53 @@ impl Tracker {
             if let Ok(o) = self.refine(frame, g, (1.5 * f).max(4.0)) {
                 self.sought.push(o.circle);
                 fits.push(Ok(o));
+            }
+        }
+    }
+
+    /// Whether this frame, whose blobs are `blobs`, is taken as the frames before
+    /// it without a fit: the balls rest in contact where they were found
+    /// (`Params::stale_blob` frames running, the same circles within half a pixel)
+    /// and the frame's blobs are theirs within a pixel; every [`STALE_RETRY`]th
+    /// frame is fitted all the same. Balls that touch are left out either way.
+    fn still_in_contact(&mut self, blobs: &[Blob]) -> bool {
+        let least = self.params.stale_blob;
+        let Some(c) = &mut self.contact else {
+            return false;
+        };
+        let skip = least > 0
+            && c.frames >= least
+            && !c.frames.is_multiple_of(STALE_RETRY)
+            && same_blobs(&c.blobs, blobs);
+        if skip {
+            c.frames += 1;
+        }
+        skip
+    }
+
+    /// Notes the frame's two fits where they touch (`touching`: the good fits),
+    /// else that they do not, for [`Tracker::still_in_contact`].
+    fn note_contact(&mut self, touching: Option<&[Outline]>, blobs: &[Blob]) {
+        let Some([a, b]) = touching else {
+            self.contact = None;
+            return;
+        };
+        let balls = [a.circle, b.circle];
+        let near = |p: &Circle, q: &Circle| (p.x - q.x).abs() <= 0.5 && (p.y - q.y).abs() <= 0.5;
+        let guesses: Vec<Circle> = blobs.iter().take(6).map(Blob::guess).collect();
+        match &mut self.contact {
+            Some(c)
+                if c.balls.iter().zip(&balls).all(|(p, q)| near(p, q))
+                    && same_blobs(&c.blobs, blobs) =>
+            {
+                c.frames += 1;
+            }
+            _ => {
+                self.contact = Some(Contact {
+                    balls,
+                    blobs: guesses,
+                    frames: 1,
+                });
             }
         }
     }
@@ -2189,6 +2244,29 @@ struct StaleSkips {
     unsearched: bool,
 }
 
+/// The balls found touching, frames running, at rest: their circles where the run
+/// began, the guesses of that frame's first six blobs, and how many frames the run
+/// holds (those taken as it without a fit too). After a run of
+/// `Params::stale_blob` frames the balls are not fitted again but every
+/// [`STALE_RETRY`]th frame while the blobs stay put: look 85's balls rest in
+/// contact for its last 223 frames, each of which fitted both (Hough, 1.4 ms a
+/// frame) to leave them out as touching.
+#[derive(Clone, Debug)]
+struct Contact {
+    balls: [Circle; 2],
+    blobs: Vec<Circle>,
+    frames: usize,
+}
+
+/// Whether `blobs`' first six guesses are `guesses`, each within a pixel.
+fn same_blobs(guesses: &[Circle], blobs: &[Blob]) -> bool {
+    let now: Vec<Circle> = blobs.iter().take(6).map(Blob::guess).collect();
+    now.len() == guesses.len()
+        && now.iter().zip(guesses).all(|(p, q)| {
+            (p.x - q.x).abs() <= 1.0 && (p.y - q.y).abs() <= 1.0 && (p.r - q.r).abs() <= 1.0
+        })
+}
+
 /// Whether the circle `c` fitted in `frame` can be a ball: something inside it
 /// differs from around it (`differ_levels`; else it is a ghost, where the
 /// background learned a ball that is not there now, or a circle fitted to the wall's
@@ -2509,6 +2587,73 @@ mod tests {
             assert!(fitted(&off, &wide));
             assert!(!skipped(&off, &wide).unsearched);
             off.note_stale(&[wide], &[Err(LeftOut::Poor)]);
+        }
+    }
+
+    /// Balls found touching in the same places for `stale_blob` frames running,
+    /// the blobs staying put, are taken as touching without a fit but every
+    /// `STALE_RETRY`th frame; a blob that moves, balls that move by more than half
+    /// a pixel, a frame where they do not touch, or `stale_blob` 0 has them fitted.
+    #[test]
+    fn balls_at_rest_in_contact_are_fitted_only_now_and_then() {
+        let least = Params::default().stale_blob;
+        assert!(least > 0);
+        let ball = |x: f64| Outline {
+            circle: Circle {
+                x,
+                y: 278.0,
+                r: 69.0,
+            },
+            sigma: [0.1; 3],
+            covariance: [[0.0; 3]; 3],
+            rms: 0.3,
+            points: 200,
+            sectors: u64::MAX >> 28,
+            lowest: 320.0,
+            polarity: 1.0,
+        };
+        let pair = [ball(890.0), ball(1029.0)];
+        let wide = blob(822.0, 1080.0, 204.0, 312.0);
+        // One frame of the tracker: skipped, or fitted and found as `fits`.
+        let frame = |t: &mut Tracker, fits: Option<&[Outline]>, b: &Blob| {
+            let skip = t.still_in_contact(&[*b]);
+            if !skip {
+                t.note_contact(fits, &[*b]);
+            }
+            skip
+        };
+        let mut t = Tracker::new(Params::default());
+        let pattern: Vec<bool> = (0..3 * STALE_RETRY)
+            .map(|_| !frame(&mut t, Some(&pair), &wide))
+            .collect();
+        for (k, fitted) in pattern.iter().enumerate() {
+            let due = k < least || k.is_multiple_of(STALE_RETRY);
+            assert_eq!(*fitted, due, "frame {k}: {pattern:?}");
+        }
+        // A blob moved by two pixels: fitted (the run stands for the blob as was).
+        assert!(!frame(&mut t, Some(&pair), &wide));
+        let moved = blob(824.0, 1082.0, 204.0, 312.0);
+        assert!(!t.still_in_contact(&[moved]));
+        assert!(t.still_in_contact(&[wide]));
+        // A frame fitted where they do not touch ends the run.
+        let mut t = Tracker::new(Params::default());
+        (0..least).for_each(|_| assert!(!frame(&mut t, Some(&pair), &wide)));
+        assert!(frame(&mut t, Some(&pair), &wide));
+        t.note_contact(None, &[wide]);
+        assert!(!frame(&mut t, Some(&pair), &wide));
+        // Balls that moved by more than half a pixel start a run of their own.
+        let mut t = Tracker::new(Params::default());
+        (1..least).for_each(|_| assert!(!frame(&mut t, Some(&pair), &wide)));
+        let crept = [ball(890.7), ball(1029.7)];
+        assert!(!frame(&mut t, Some(&crept), &wide));
+        assert!(!frame(&mut t, Some(&crept), &wide));
+        // Off, they are fitted every frame.
+        let mut off = Tracker::new(Params {
+            stale_blob: 0,
+            ..Params::default()
+        });
+        for _ in 0..2 * STALE_RETRY {
+            assert!(!frame(&mut off, Some(&pair), &wide));
         }
     }
 
