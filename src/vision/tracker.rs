@@ -505,26 +505,7 @@ impl Tracker {
         self.note_stale(&coarse.balls, &fits);
         self.seed(frame, &mut fits);
         self.no_locks_inside_blobs(&coarse.balls, &mut fits);
-        // One fit per ball: of fits of one ball (a blob and the follower), the first.
-        let mut kept: Vec<Result<Outline, LeftOut>> = Vec::new();
-        for fit in fits {
-            let same = |o: &Outline| {
-                kept.iter().flatten().any(|q: &Outline| {
-                    (q.circle.x - o.circle.x).hypot(q.circle.y - o.circle.y) < q.circle.r
-                })
-            };
-            match fit {
-                Ok(o) if same(&o) => {}
-                other => kept.push(other),
-            }
-        }
-        kept.sort_by(|a, b| match (a, b) {
-            (Ok(a), Ok(b)) => a.circle.x.total_cmp(&b.circle.x),
-            (Ok(_), Err(_)) => std::cmp::Ordering::Less,
-            (Err(_), Ok(_)) => std::cmp::Ordering::Greater,
-            _ => std::cmp::Ordering::Equal,
-        });
-        let mut fits = kept;
+        let mut fits = one_fit_per_ball(fits);
         self.no_disagreeing_locks(&mut fits);
         let merged = self.merged(&coarse, &fits);
         if fits.is_empty() && !merged {
@@ -2217,6 +2198,30 @@ impl<F: Fn(usize, usize) -> f32> Across<F> {
                 .map(|(&a, &b)| a * (1.0 - fy) + b * fy),
         );
     }
+}
+
+/// One fit per ball: of fits of one ball (a blob and the follower), the first;
+/// the good fits first, from left to right.
+fn one_fit_per_ball(fits: Vec<Result<Outline, LeftOut>>) -> Vec<Result<Outline, LeftOut>> {
+    let mut kept: Vec<Result<Outline, LeftOut>> = Vec::new();
+    for fit in fits {
+        let same = |o: &Outline| {
+            kept.iter().flatten().any(|q: &Outline| {
+                (q.circle.x - o.circle.x).hypot(q.circle.y - o.circle.y) < q.circle.r
+            })
+        };
+        match fit {
+            Ok(o) if same(&o) => {}
+            other => kept.push(other),
+        }
+    }
+    kept.sort_by(|a, b| match (a, b) {
+        (Ok(a), Ok(b)) => a.circle.x.total_cmp(&b.circle.x),
+        (Ok(_), Err(_)) => std::cmp::Ordering::Less,
+        (Err(_), Ok(_)) => std::cmp::Ordering::Greater,
+        _ => std::cmp::Ordering::Equal,
+    });
+    kept
 }
 
 /// How often a stale blob (`Params::stale_blob`) is fitted all the same, frames: a
