@@ -988,10 +988,7 @@ impl Tracker {
         let Some(c) = &mut self.contact else {
             return false;
         };
-        let skip = least > 0
-            && c.frames >= least
-            && !c.frames.is_multiple_of(STALE_RETRY)
-            && same_blobs(&c.blobs, blobs);
+        let skip = skipped_now(c.frames, least) && same_blobs(&c.blobs, blobs);
         if skip {
             c.frames += 1;
         }
@@ -1007,7 +1004,6 @@ impl Tracker {
         };
         let balls = [a.circle, b.circle];
         let near = |p: &Circle, q: &Circle| (p.x - q.x).abs() <= 0.5 && (p.y - q.y).abs() <= 0.5;
-        let guesses: Vec<Circle> = blobs.iter().take(6).map(Blob::guess).collect();
         match &mut self.contact {
             Some(c)
                 if c.balls.iter().zip(&balls).all(|(p, q)| near(p, q))
@@ -1018,7 +1014,7 @@ impl Tracker {
             _ => {
                 self.contact = Some(Contact {
                     balls,
-                    blobs: guesses,
+                    blobs: blobs.iter().take(6).map(Blob::guess).collect(),
                     frames: 1,
                 });
             }
@@ -1050,8 +1046,7 @@ impl Tracker {
     /// (`Params::stale_blob`, each but every [`STALE_RETRY`]th frame: see
     /// [`Stale`]).
     fn stale_blobs(&self, blobs: &[Blob]) -> Vec<StaleSkips> {
-        let least = self.params.stale_blob;
-        let due = |n: usize| least > 0 && n >= least && !n.is_multiple_of(STALE_RETRY);
+        let due = |n: usize| skipped_now(n, self.params.stale_blob);
         blobs
             .iter()
             .take(6)
@@ -1067,12 +1062,10 @@ impl Tracker {
 
     /// What is known of a blob at `guess` (within a pixel) from the frames before.
     fn stale_entry(&self, guess: &Circle) -> Option<Stale> {
-        let near = |c: &Circle| {
-            (c.x - guess.x).abs() <= 1.0
-                && (c.y - guess.y).abs() <= 1.0
-                && (c.r - guess.r).abs() <= 1.0
-        };
-        self.stale.iter().find(|s| near(&s.guess)).copied()
+        self.stale
+            .iter()
+            .find(|s| within_a_pixel(&s.guess, guess))
+            .copied()
     }
 
     /// Counts, for each of the first six `blobs`, the frames running in which its
@@ -2228,6 +2221,18 @@ fn one_fit_per_ball(fits: Vec<Result<Outline, LeftOut>>) -> Vec<Result<Outline, 
 /// ball may come to rest on it, or roll into it, unfollowed.
 const STALE_RETRY: usize = 16;
 
+/// Whether work that stayed the same for `frames` frames running is skipped this
+/// frame: after `least` of them (`Params::stale_blob`; 0: never), but every
+/// [`STALE_RETRY`]th frame.
+fn skipped_now(frames: usize, least: usize) -> bool {
+    least > 0 && frames >= least && !frames.is_multiple_of(STALE_RETRY)
+}
+
+/// Whether two blobs' guesses are one blob's: centre and radius within a pixel.
+fn within_a_pixel(p: &Circle, q: &Circle) -> bool {
+    (p.x - q.x).abs() <= 1.0 && (p.y - q.y).abs() <= 1.0 && (p.r - q.r).abs() <= 1.0
+}
+
 /// A blob of the frames before whose own fit was left out, frames running
 /// (`Params::stale_blob`): where its guess was, in how many frames its own fit was
 /// left out (`failed`: then it is not fitted), of those the last in which no fit of
@@ -2265,11 +2270,11 @@ struct Contact {
 
 /// Whether `blobs`' first six guesses are `guesses`, each within a pixel.
 fn same_blobs(guesses: &[Circle], blobs: &[Blob]) -> bool {
-    let now: Vec<Circle> = blobs.iter().take(6).map(Blob::guess).collect();
-    now.len() == guesses.len()
-        && now.iter().zip(guesses).all(|(p, q)| {
-            (p.x - q.x).abs() <= 1.0 && (p.y - q.y).abs() <= 1.0 && (p.r - q.r).abs() <= 1.0
-        })
+    blobs.iter().take(6).count() == guesses.len()
+        && blobs
+            .iter()
+            .zip(guesses)
+            .all(|(b, g)| within_a_pixel(&b.guess(), g))
 }
 
 /// Whether the circle `c` fitted in `frame` can be a ball: something inside it
@@ -2498,6 +2503,24 @@ pub fn median(v: &[f64]) -> Option<f64> {
 mod tests {
     use super::*;
 
+    /// A clear outline of a ball of radius 69 px centred at `(x, 278)`.
+    fn ball_at(x: f64) -> Outline {
+        Outline {
+            circle: Circle {
+                x,
+                y: 278.0,
+                r: 69.0,
+            },
+            sigma: [0.1; 3],
+            covariance: [[0.0; 3]; 3],
+            rms: 0.3,
+            points: 200,
+            sectors: u64::MAX >> 28,
+            lowest: 320.0,
+            polarity: 1.0,
+        }
+    }
+
     /// A blob whose box spans `x0 … x1` across and `y0 … y1` down.
     fn blob(x0: f64, x1: f64, y0: f64, y1: f64) -> Blob {
         Blob {
@@ -2524,20 +2547,7 @@ mod tests {
         let wide = blob(822.0, 1074.0, 210.0, 400.0);
         let skipped = |t: &Tracker, b: &Blob| t.stale_blobs(&[*b])[0];
         let fitted = |t: &Tracker, b: &Blob| skipped(t, b).unfitted.is_none();
-        let ball = Outline {
-            circle: Circle {
-                x: 890.0,
-                y: 278.0,
-                r: 69.0,
-            },
-            sigma: [0.1; 3],
-            covariance: [[0.0; 3]; 3],
-            rms: 0.3,
-            points: 200,
-            sectors: u64::MAX >> 28,
-            lowest: 320.0,
-            polarity: 1.0,
-        };
+        let ball = ball_at(890.0);
         // Two balls at rest in contact inside it, found by Hough or the follower:
         // its own fit is skipped as it fails, Hough's search never is.
         let mut pattern = Vec::new();
@@ -2603,21 +2613,7 @@ mod tests {
     fn balls_at_rest_in_contact_are_fitted_only_now_and_then() {
         let least = Params::default().stale_blob;
         assert!(least > 0);
-        let ball = |x: f64| Outline {
-            circle: Circle {
-                x,
-                y: 278.0,
-                r: 69.0,
-            },
-            sigma: [0.1; 3],
-            covariance: [[0.0; 3]; 3],
-            rms: 0.3,
-            points: 200,
-            sectors: u64::MAX >> 28,
-            lowest: 320.0,
-            polarity: 1.0,
-        };
-        let pair = [ball(890.0), ball(1029.0)];
+        let pair = [ball_at(890.0), ball_at(1029.0)];
         let wide = blob(822.0, 1080.0, 204.0, 312.0);
         // One frame of the tracker: skipped, or fitted and found as `fits`.
         let frame = |t: &mut Tracker, fits: Option<&[Outline]>, b: &Blob| {
@@ -2649,7 +2645,7 @@ mod tests {
         // Balls that moved by more than half a pixel start a run of their own.
         let mut t = Tracker::new(Params::default());
         (1..least).for_each(|_| assert!(!frame(&mut t, Some(&pair), &wide)));
-        let crept = [ball(890.7), ball(1029.7)];
+        let crept = [ball_at(890.7), ball_at(1029.7)];
         assert!(!frame(&mut t, Some(&crept), &wide));
         assert!(!frame(&mut t, Some(&crept), &wide));
         // Off, they are fitted every frame.
