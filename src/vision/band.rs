@@ -342,19 +342,8 @@ mod tests {
     /// A fit at height `y` (px), radius 10.
     fn fit_at(y: f64) -> FrameFixes {
         let outline = crate::vision::circle::Outline {
-            circle: crate::vision::circle::Circle {
-                x: 50.0,
-                y,
-                r: 10.0,
-            },
-            sigma: [0.1; 3],
-            covariance: [[0.0; 3]; 3],
-            rms: 0.1,
-            points: 100,
-            // The upper half of the circle (sectors 18–35): the rail hides the rest.
-            sectors: 0xF_FFFC_0000,
             lowest: y + 5.0,
-            polarity: 1.0,
+            ..crate::vision::circle::Outline::upper_half(50.0, y, 10.0)
         };
         let fix = crate::vision::tracker::Fix {
             outline,

@@ -44,6 +44,26 @@ pub struct Outline {
     pub polarity: f64,
 }
 
+#[cfg(test)]
+impl Outline {
+    /// For tests: a clear outline of the circle at `(x, y)` of radius `r` in a
+    /// ball brighter than the wall, its upper half's edge (sectors 18–35: the rail
+    /// hides the rest), 60 points 0.2 px off it, the rail's edge 0.3 radii below
+    /// the centre.
+    pub fn upper_half(x: f64, y: f64, r: f64) -> Outline {
+        Outline {
+            circle: Circle { x, y, r },
+            sigma: [0.1; 3],
+            covariance: [[0.0; 3]; 3],
+            rms: 0.2,
+            points: 60,
+            sectors: 0xF_FFFC_0000,
+            lowest: y + 0.3 * r,
+            polarity: 1.0,
+        }
+    }
+}
+
 impl Outline {
     /// Share of the circle's 36 sectors of 10° holding kept points (0 … 1).
     pub fn coverage(&self) -> f64 {

@@ -2505,20 +2505,7 @@ mod tests {
 
     /// A clear outline of a ball of radius 69 px centred at `(x, 278)`.
     fn ball_at(x: f64) -> Outline {
-        Outline {
-            circle: Circle {
-                x,
-                y: 278.0,
-                r: 69.0,
-            },
-            sigma: [0.1; 3],
-            covariance: [[0.0; 3]; 3],
-            rms: 0.3,
-            points: 200,
-            sectors: u64::MAX >> 28,
-            lowest: 320.0,
-            polarity: 1.0,
-        }
+        Outline::upper_half(x, 278.0, 69.0)
     }
 
     /// A blob whose box spans `x0 … x1` across and `y0 … y1` down.

@@ -1088,17 +1088,7 @@ mod tests {
 
     fn fix(x: f64, y: f64, r: f64) -> Result<Fix, LeftOut> {
         Ok(Fix {
-            outline: Outline {
-                circle: Circle { x, y, r },
-                sigma: [0.1; 3],
-                covariance: [[0.0; 3]; 3],
-                rms: 0.2,
-                points: 60,
-                // The upper half of the circle (sectors 18–35): the rail hides the rest.
-                sectors: 0xF_FFFC_0000,
-                lowest: y + 0.3 * r,
-                polarity: 1.0,
-            },
+            outline: Outline::upper_half(x, y, r),
             sigma: 0.1,
             mark: None,
             spots: [None; crate::vision::mark::SPOTS],
