@@ -160,9 +160,12 @@ pub fn shift(frames: &mut [FrameFixes], dy: f64) {
 /// in order, [`first_frames`] of them; [`FIRST_FRAMES`] looked at, evenly from the
 /// first to the last), or
 /// `None` when the line is in doubt: not exactly two balls of one radius in each
-/// looked-at frame, balls too close to tell the line's tilt, frames that disagree
-/// on it, a band of most of the frame, a seed (`--ball-at`) off its rows, or a
-/// pixel noise that changes between the first frames by more than [`NOISE_SPREAD`].
+/// looked-at frame, more than one of them crowded (a third thing seen: as a clip
+/// crowded in under half its frames is tracked, one such frame of three is no doubt
+/// where the three agree on the line), balls too close to tell the line's tilt,
+/// frames that disagree on it, a band of most of the frame, a seed (`--ball-at`) off
+/// its rows, or a pixel noise that changes between the first frames by more than
+/// [`NOISE_SPREAD`].
 pub fn find<F: Borrow<Frame>>(first: &[F], params: &Params) -> Option<Band> {
     let frames: Vec<&Frame> = first.iter().map(Borrow::borrow).collect();
     let first = frames.as_slice();
@@ -213,7 +216,7 @@ fn lines(first: &[&Frame], params: &Params, learned: bool) -> Option<(Vec<(f64, 
         .step_by(every)
         .take(FIRST_FRAMES)
         .for_each(|f| t.push(f));
-    if t.counts.crowded > 0 || t.frames.len() < FIRST_FRAMES {
+    if t.counts.crowded * 2 > t.frames.len() || t.frames.len() < FIRST_FRAMES {
         return None;
     }
     let half = 0.5 * first.first()?.width() as f64;
