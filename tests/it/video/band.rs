@@ -250,7 +250,7 @@ fn bumped(clip: &Clip, bump: u32) -> std::path::PathBuf {
 /// of them. Before tracker 55 any crowded first frame left the line in doubt: this
 /// look read 16 first frames for the same band, and a large-ball look with moving
 /// shadows (full look 101's 3-second clip) got none and was tracked whole, 2.8×
-/// ffmpeg's decoding of it where its band gives 2.1×.
+/// ffmpeg's decoding of it where its band gives 2.2×.
 #[test]
 fn a_third_thing_in_one_first_frame_leaves_the_band() {
     let Some((clip, first)) = super::decoded_look("band", 63, Size::Small) else {
