@@ -216,7 +216,7 @@ fn lines(first: &[&Frame], params: &Params, learned: bool) -> Option<(Vec<(f64, 
         .step_by(every)
         .take(FIRST_FRAMES)
         .for_each(|f| t.push(f));
-    if t.counts.crowded * 2 > t.frames.len() || t.frames.len() < FIRST_FRAMES {
+    if t.counts.mostly_crowded() || t.frames.len() < FIRST_FRAMES {
         return None;
     }
     let half = 0.5 * first.first()?.width() as f64;

@@ -58,6 +58,15 @@ pub struct Counts {
     pub empty: usize,
 }
 
+impl Counts {
+    /// More than half the frames crowded: the clip's balls are in doubt (tracks
+    /// refused), as is the line of the first frames' band. Fewer, and the crowded
+    /// frames' two balls are taken.
+    pub fn mostly_crowded(&self) -> bool {
+        self.crowded * 2 > self.frames
+    }
+}
+
 /// The state of tracking: the background (learned first, from the clip), the balls'
 /// last fits and every frame's result.
 ///

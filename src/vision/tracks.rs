@@ -423,7 +423,7 @@ fn the_radius(
 #[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
 fn balls_seen(tracker: &Tracker, frames: &[FrameFixes]) -> Result<Vec<usize>, TracksError> {
     let c = &tracker.counts;
-    if c.crowded * 2 > c.frames {
+    if c.mostly_crowded() {
         return Err(TracksError::TooMany {
             crowded: c.crowded,
             frames: c.frames,

@@ -182,7 +182,10 @@ fn to_rgb(f: &Frame) -> RgbImage {
     let t = &*BT601;
     let (w, h, cw) = (f.width(), f.height(), f.chroma_width);
     let mut out = vec![0; 3 * w * h];
-    let rows = out.chunks_exact_mut(3 * w).zip(f.luma.data.chunks_exact(w));
+    // A frame of no width has no rows (and a chunk of none would panic).
+    let rows = out
+        .chunks_exact_mut((3 * w).max(1))
+        .zip(f.luma.data.chunks_exact(w.max(1)));
     for (y, (row, luma)) in rows.enumerate() {
         let span = (y / 2) * cw..(y / 2 + 1) * cw;
         let us = f.u.get(span.clone()).unwrap_or(&[]);
@@ -277,6 +280,12 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn a_frame_of_no_width_is_a_picture_of_no_width() {
+        let f = Frame::from_yuv420p(0, 2, Vec::new()).unwrap();
+        assert_eq!(to_rgb(&f).dimensions(), (0, 2));
     }
 
     #[test]

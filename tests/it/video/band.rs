@@ -129,16 +129,7 @@ fn the_first_frames_span_a_time_the_balls_leave_the_background_in() {
     let slice = first.get(..13).unwrap();
     assert_eq!(groovelab::vision::band::find(slice, &params), None);
     let band = groovelab::vision::band::find(&first, &params).expect("a band");
-    for k in 0..n {
-        for ball in clip.film.truth(k) {
-            let keep = Band::KEEP_RADII * ball.radius;
-            let y = ball.centre.1;
-            assert!(
-                y - band.y as f64 >= keep && (band.y + band.height) as f64 - y >= keep,
-                "frame {k}: centre at {y} px, {band:?}"
-            );
-        }
-    }
+    assert_truth_kept_inside(&clip, &band, n);
 }
 
 /// The band is found from the first 13 frames where they show the line, else from
@@ -266,7 +257,13 @@ fn a_third_thing_in_one_first_frame_leaves_the_band() {
     }
     assert_eq!((t.counts.crowded, t.frames.len()), (1, 3));
     let band = groovelab::vision::band::find(first, &params).expect("a band");
-    for k in 0..first.len() {
+    assert_truth_kept_inside(&clip, &band, first.len());
+}
+
+/// Both balls' true centres lie in `band`, [`Band::KEEP_RADII`] radii or more from
+/// its edges, in each of `clip`'s first `frames` frames.
+fn assert_truth_kept_inside(clip: &Clip, band: &Band, frames: usize) {
+    for k in 0..frames {
         for ball in clip.film.truth(k) {
             let keep = Band::KEEP_RADII * ball.radius;
             let y = ball.centre.1;
