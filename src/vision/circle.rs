@@ -762,7 +762,7 @@ pub fn outermost(
                 break;
             };
             let (d, t) = ((outer - inner).abs(), (right - left).abs());
-            along.push(if d >= 0.5 * d.hypot(t) { d } else { 0.0 });
+            along.push(if d >= 0.5 * length(d, t) { d } else { 0.0 });
             if differs(c.x + s * ux, c.y + s * uy) {
                 last_differing = s;
                 quiet = 0;
@@ -878,10 +878,10 @@ pub fn colour_offset(
             continue;
         };
         let d = [inner[0] - outer[0], inner[1] - outer[1]];
-        let step = d[0].hypot(d[1]);
+        let step = length(d[0], d[1]);
         // A grey ball's edge in colour is the wall's colour: its pattern, not the
         // ball (a black ball on a coloured checker).
-        if step < min_step || (inner[0] - 128.0).hypot(inner[1] - 128.0) <= grey {
+        if step < min_step || length(inner[0] - 128.0, inner[1] - 128.0) <= grey {
             continue;
         }
         // Only where the ball stands out more in colour than in brightness (its

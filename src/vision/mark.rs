@@ -169,7 +169,7 @@ fn find_mark(
         bottom,
     };
     let fits =
-        |x: f64, y: f64| (x - c.x).hypot(y - c.y) + spot < on_ball.inside && y + spot < bottom;
+        |x: f64, y: f64| length(x - c.x, y - c.y) + spot < on_ball.inside && y + spot < bottom;
     let mut at = (px as f64, py as f64);
     let mut out = None;
     for _ in 0..6 {
@@ -269,7 +269,7 @@ struct Surface {
 
 impl Surface {
     fn holds(&self, x: f64, y: f64) -> bool {
-        (x - self.x).hypot(y - self.y) < self.inside && y < self.bottom
+        length(x - self.x, y - self.y) < self.inside && y < self.bottom
     }
 }
 

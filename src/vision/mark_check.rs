@@ -310,7 +310,7 @@ fn offset(fix: &super::tracker::Fix) -> Option<(f64, f64)> {
 }
 
 fn near(a: (f64, f64), b: (f64, f64), within: f64) -> bool {
-    (a.0 - b.0).hypot(a.1 - b.1) < within
+    super::circle::length(a.0 - b.0, a.1 - b.1) < within
 }
 
 /// The spot of the disc where the "marks" of either ball sit most often, when they

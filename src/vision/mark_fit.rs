@@ -136,7 +136,7 @@ fn pixels(
                 || y < 0
                 || x as usize >= img.width
                 || y as usize >= img.height
-                || (fx - at.0).hypot(fy - at.1) > reach
+                || length(fx - at.0, fy - at.1) > reach
                 || !keep(fx, fy)
             {
                 continue;

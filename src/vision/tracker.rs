@@ -7,7 +7,7 @@
 //! (blurred, or too little of it visible); nothing is filled in.
 
 use super::background::{Background, Learner, Small, differences, factor, threshold};
-use super::circle::{self, Circle, Outline};
+use super::circle::{self, Circle, Outline, length};
 use super::detect;
 use super::detect::Blob;
 use super::frame::Frame;
@@ -1197,7 +1197,7 @@ impl Tracker {
         while dy < 0.0 {
             let mut dx = -0.8 * c.r;
             while dx <= 0.8 * c.r {
-                if dx.hypot(dy) < 0.8 * c.r {
+                if length(dx, dy) < 0.8 * c.r {
                     n += 1;
                     hit += usize::from(differs_at(small, bg, c.x + dx, c.y + dy, &self.params));
                 }
@@ -1638,7 +1638,7 @@ impl Tracker {
             for j in -n..=n {
                 for i in -n..=n {
                     let (x, y) = (c.x + i as f64 * stride, c.y + j as f64 * stride);
-                    if (x - c.x).hypot(y - c.y) > 0.9 * c.r {
+                    if length(x - c.x, y - c.y) > 0.9 * c.r {
                         continue;
                     }
                     let d = usize::from(differs_at(small, bg, x, y, p));
@@ -1680,7 +1680,7 @@ impl Tracker {
         // ring of the two, and its outer edge a circle larger than the ball.
         let own = |q: [f64; 2]| {
             let (dx, dy) = (guess.x - q[0], guess.y - q[1]);
-            let d = dx.hypot(dy).max(1e-9);
+            let d = length(dx, dy).max(1e-9);
             let inside = (q[0] + SHADOW_INSIDE * dx / d, q[1] + SHADOW_INSIDE * dy / d);
             bg.is_none_or(|bg| !in_the_walls_shadow(frame, bg, inside, p))
         };
@@ -1834,7 +1834,10 @@ impl Tracker {
                     - bg.y.get(i).copied().unwrap_or(0.0);
                 // Brightness and colour together: the looks' rule (the larger of the
                 // two, 0 for a shadow) measured worse here (BENCHMARKS.md).
-                let d = luma.hypot(gain * du.hypot(dv));
+                // By square roots, not libm's `hypot` (a call a pixel): the levels
+                // neither overflow nor underflow.
+                let c = gain * (du * du + dv * dv).sqrt();
+                let d = (luma * luma + c * c).sqrt();
                 data.push(super::gray::level(d));
             }
         }
@@ -1979,7 +1982,7 @@ fn contrast(frame: &Frame, c: &Circle) -> Option<[f64; 3]> {
         let mut dx = -reach;
         while dx <= reach {
             let (x, y) = (c.x + dx, c.y + dy);
-            let d = dx.hypot(dy);
+            let d = length(dx, dy);
             let sum = if d < 0.8 * c.r {
                 Some(&mut inner)
             } else if d > 1.2 * c.r && d < reach {
@@ -2411,7 +2414,7 @@ fn upper_disc(frame: &Frame, c: &Circle) -> Option<[f32; 3]> {
         let mut dx = -0.8 * c.r;
         while dx <= 0.8 * c.r {
             let (x, yy) = (c.x + dx, c.y + dy);
-            if dx.hypot(dy) < 0.8 * c.r && x >= 0.0 && yy >= 0.0 && x < w && yy < h {
+            if length(dx, dy) < 0.8 * c.r && x >= 0.0 && yy >= 0.0 && x < w && yy < h {
                 let (ix, iy) = (x as usize, yy as usize);
                 let ci = (iy / 2) * frame.chroma_width + ix / 2;
                 y.push(frame.luma.get(ix, iy));
