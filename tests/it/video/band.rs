@@ -134,27 +134,45 @@ fn the_first_frames_span_a_time_the_balls_leave_the_background_in() {
 
 /// The band is found from the first 13 frames where they show the line, else from
 /// the span the rate asks (16 frames at 100 frames/s), never from more frames than
-/// that: small look 85 (white balls on a dark plain wall with spots of light, 100
-/// frames/s), whose decoded first 13 frames give a band (rows 114–191) and first 16
-/// none, is tracked in the band of its 13; small look 110 (white balls on a dark
-/// grain), whose 13 give none, in the band of its 16. (Look 51, whose 13 and 16 gave
-/// two bands, gives one band of both since tracker 56's narrower margin.)
+/// that. Of small looks whose decoded first 13 and 16 frames tell the two spans
+/// apart, the first is tracked in the band of its 13 where they give one, and one
+/// whose 13 give none in the band of its 16. Which looks tell them apart turns on
+/// the machine's encoding, so each case has candidates, and at least one of them
+/// must tell: on the machine of 2026-12-04 small look 85 (white balls on a dark
+/// plain wall, spots of light; 13 frames give rows 114–191, 16 none) and look 110
+/// (white balls on a dark grain; 13 none, 16 a band); small look 51 was the first
+/// case before tracker 56's narrower margin gave it one band of both.
 #[test]
 fn the_first_frames_are_the_fewest_that_show_the_line() {
     let params = groovelab::vision::Params::default();
-    for (seed, at_13) in [(85, true), (110, false)] {
-        let Some((clip, path)) = super::h264_look("band", seed, Size::Small) else {
-            return;
-        };
-        let n = first_frames(&clip);
-        assert_eq!(n, 16, "{}", clip.name);
-        let (clip, first) = super::decoded((clip, path.clone()));
-        let find = |k: usize| groovelab::vision::band::find(first.get(..k).unwrap(), &params);
-        let (b13, b16) = (find(13), find(16));
-        assert_eq!(b13.is_some(), at_13, "look {seed}: {b13:?}");
-        assert_ne!(b13, b16, "look {seed}: the two spans tell nothing apart");
-        let t = tracked(&path, &clip, Framing::Band);
-        assert_eq!(t.band, if at_13 { b13 } else { b16 }, "look {seed}");
+    for (at_13, candidates) in [(true, [85, 109, 51]), (false, [110, 92, 115])] {
+        let mut told = None;
+        for seed in candidates {
+            let Some((clip, path)) = super::h264_look("band", seed, Size::Small) else {
+                return;
+            };
+            assert_eq!(first_frames(&clip), 16, "{}", clip.name);
+            let (clip, first) = super::decoded((clip, path.clone()));
+            let find = |k: usize| groovelab::vision::band::find(first.get(..k).unwrap(), &params);
+            let (b13, b16) = (find(13), find(16));
+            let wanted = if at_13 { b13 } else { b16 };
+            if b13.is_some() != at_13 || b13 == b16 || wanted.is_none() {
+                continue;
+            }
+            let t = tracked(&path, &clip, Framing::Band);
+            assert_eq!(t.band, wanted, "look {seed}: 13 frames {b13:?}, 16 {b16:?}");
+            told = Some(seed);
+            break;
+        }
+        assert!(
+            told.is_some(),
+            "none of looks {candidates:?} tells 13 first frames from 16 (13 {})",
+            if at_13 {
+                "giving a band"
+            } else {
+                "giving none"
+            }
+        );
     }
 }
 
