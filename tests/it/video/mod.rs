@@ -212,13 +212,11 @@ pub(crate) fn scaled_with_one_refused_without(
     looks: &[(u64, crate::film::looks::Size, Option<usize>)],
     without: groovelab::vision::Params,
 ) {
-    let mut refused = Vec::new();
-    for &look in looks {
-        match scaled_with(area, look, without) {
-            Some(r) => refused.push(r),
-            None => return,
-        }
-    }
+    let refused: Option<Vec<bool>> = looks
+        .iter()
+        .map(|&look| scaled_with(area, look, without))
+        .collect();
+    let Some(refused) = refused else { return };
     assert!(
         refused.contains(&true),
         "looks {:?} without the rule: all tracked",
