@@ -155,10 +155,12 @@ fn the_first_frames_are_the_fewest_that_show_the_line() {
             let (clip, first) = super::decoded((clip, path.clone()));
             let find = |k: usize| groovelab::vision::band::find(first.get(..k).unwrap(), &params);
             let (b13, b16) = (find(13), find(16));
-            let wanted = if at_13 { b13 } else { b16 };
-            if b13.is_some() != at_13 || b13 == b16 || wanted.is_none() {
+            // A look tells the spans apart where its 13 frames give a band as the
+            // case asks and its 16 another (so the 16's band, where the 13 give none).
+            if b13.is_some() != at_13 || b13 == b16 {
                 continue;
             }
+            let wanted = if at_13 { b13 } else { b16 };
             let t = tracked(&path, &clip, Framing::Band);
             assert_eq!(t.band, wanted, "look {seed}: 13 frames {b13:?}, 16 {b16:?}");
             told = Some(seed);
