@@ -136,8 +136,10 @@ pub enum Framing {
 /// scatter, its background learned at full resolution, is tracked once more with
 /// each outline sought first in the frame's difference from the background
 /// (`vision::Params::difference_first`); one in which no ball was found is tracked
-/// once more at the lower floor `vision::Params::faint_levels`; refused again, the
-/// first refusal stands.
+/// once more at the lower floor `vision::Params::faint_levels`, and refused so
+/// again, a third time with no pixel taken for a shadow ([`unshadowed`]); one in
+/// which neither ball was found in a third of the frames, once more with no pixel
+/// taken for a shadow. Refused again, the first refusal stands.
 pub fn track_framed(
     video: &std::path::Path,
     options: &Options,
@@ -168,12 +170,22 @@ pub fn track_framed(
             retried(once(&again), refused, note)
         }
         Attempt::Unseen(refused) => {
-            let again = vision::Params {
+            let faint = vision::Params {
                 differ_levels: params.faint_levels,
                 ..params
             };
-            retried(once(&again), refused, faint_note(&params))
+            match retried(once(&faint), refused, faint_note(&params)) {
+                Err(first) if no_ball(&first) => match once(&unshadowed(&faint)) {
+                    Ok(Attempt::Done(done)) => Ok(noted(*done, unshadowed_note(&params))),
+                    _ => Err(first),
+                },
+                other => other,
+            }
         }
+        Attempt::Sparse(refused) => match once(&unshadowed(&params)) {
+            Ok(Attempt::Done(done)) => Ok(noted(*done, sparse_note())),
+            _ => Err(refused),
+        },
         Attempt::Done(done) => Ok(*done),
         // `track_once` never gives it.
         Attempt::Again => Ok(None),
@@ -209,6 +221,51 @@ fn retried(
         }
         _ => Err(first),
     }
+}
+
+/// `p` with no pixel taken for a shadow (`Params::shadow_darkest` 0): a ball of the
+/// wall's own hue, darker than it, or a dark ball's shaded side dims the wall as a
+/// shadow would, and the shadow test takes it away.
+fn unshadowed(p: &vision::Params) -> vision::Params {
+    vision::Params {
+        shadow_darkest: 0.0,
+        ..*p
+    }
+}
+
+/// The note of a clip tracked again with no pixel taken for a shadow, after neither
+/// ball was found in a third of its frames.
+fn sparse_note() -> String {
+    "tracked twice: neither ball was found in a third of the frames where pixels darker than the wall and of its hue are taken for shadows (a ball of the wall's own hue, or a dark ball's shaded side, is such a pixel); tracked again with them taken as the balls'".into()
+}
+
+/// Whether `refused` is for no ball found at all.
+fn no_ball(refused: &Refused) -> bool {
+    matches!(
+        refused.error.what,
+        VideoProblem::Tracks {
+            error: vision::TracksError::NoBall { .. },
+            ..
+        }
+    )
+}
+
+/// `tracked` with `note` (why it was tracked more than once) added.
+fn noted(mut tracked: Option<Tracked>, note: String) -> Option<Tracked> {
+    if let Some(t) = tracked.as_mut() {
+        t.notes.push(note);
+    }
+    tracked
+}
+
+/// The note of a clip tracked a third time, its darker pixels of the wall's hue
+/// taken as the balls' rather than as shadows, after no ball was found at
+/// `Params::differ_levels` nor at `Params::faint_levels`.
+fn unshadowed_note(p: &vision::Params) -> String {
+    format!(
+        "tracked three times: no ball stood out from the background by {:.0} levels, nor by {:.0}, where pixels darker than the wall and of its hue are taken for shadows (a ball of the wall's own hue, darker than it, is such a pixel); tracked again with them taken as the balls'",
+        p.differ_levels, p.faint_levels
+    )
 }
 
 /// The note of a clip tracked again, its outlines sought first in the frame's
@@ -280,6 +337,9 @@ enum Attempt {
     /// Refused for no ball found at the floor `Params::differ_levels`, over
     /// `Params::faint_levels`: to be tracked again at that ([`track_framed`]).
     Unseen(Box<Refused>),
+    /// Refused for neither ball found in a third of the frames, with the shadow
+    /// test on: to be tracked again without it ([`track_framed`]).
+    Sparse(Box<Refused>),
 }
 
 /// One tracking of `video`: of its band when `banded` and the first frames give
@@ -386,7 +446,8 @@ fn attempt(
 /// one learned ([`Contradicted`]), or with the outlines sought in the frame's
 /// difference from the background where the radii scattered and that background is
 /// learned at full resolution ([`Attempt::Scattered`]), or at a lower floor where
-/// no ball was found ([`Attempt::Unseen`]).
+/// no ball was found ([`Attempt::Unseen`]), or with no pixel taken for a shadow
+/// where neither ball was found in a third of the frames ([`Attempt::Sparse`]).
 fn refusal(
     tracker: &Tracker,
     thumbs: Thumbs,
@@ -409,6 +470,13 @@ fn refusal(
             ..
         }
     ) && params.faint_levels < params.differ_levels;
+    let sparse = matches!(
+        &error.what,
+        VideoProblem::Tracks {
+            error: vision::TracksError::Sparse { .. },
+            ..
+        }
+    ) && params.shadow_darkest > 0.0;
     let refused = refused(tracker, thumbs, pictures, error);
     match (tracker.radius_contradicted(), tracker.radius()) {
         (Some(r), Some(learned_px)) if params.radius_px.is_none() => {
@@ -420,6 +488,7 @@ fn refusal(
         }
         _ if scattered => Ok(Attempt::Scattered(refused)),
         _ if unseen => Ok(Attempt::Unseen(refused)),
+        _ if sparse => Ok(Attempt::Sparse(refused)),
         _ => Err(refused),
     }
 }
