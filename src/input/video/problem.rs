@@ -213,6 +213,14 @@ pub enum VideoProblem {
 }
 
 impl VideoProblem {
+    /// The tracker's refusal, where that is the problem.
+    pub fn tracks_error(&self) -> Option<&TracksError> {
+        match self {
+            VideoProblem::Tracks { error, .. } => Some(error),
+            _ => None,
+        }
+    }
+
     /// `program` could not be started: not installed, or `error`.
     pub fn cannot_run(program: &'static str, error: std::io::Error) -> VideoProblem {
         match error.kind() {

@@ -175,17 +175,15 @@ pub fn track_framed(
                 ..params
             };
             match retried(once(&faint), refused, faint_note(&params)) {
-                Err(first) if no_ball(&first) => match once(&unshadowed(&faint)) {
-                    Ok(Attempt::Done(done)) => Ok(noted(*done, unshadowed_note(&params))),
-                    _ => Err(first),
-                },
+                Err(first) if no_ball(&first) => {
+                    done_or_first(once(&unshadowed(&faint)), first, unshadowed_note(&params))
+                }
                 other => other,
             }
         }
-        Attempt::Sparse(refused) => match once(&unshadowed(&params)) {
-            Ok(Attempt::Done(done)) => Ok(noted(*done, sparse_note())),
-            _ => Err(refused),
-        },
+        Attempt::Sparse(refused) => {
+            done_or_first(once(&unshadowed(&params)), refused, sparse_note())
+        }
         Attempt::Done(done) => Ok(*done),
         // `track_once` never gives it.
         Attempt::Again => Ok(None),
@@ -202,22 +200,31 @@ fn retried(
     note: String,
 ) -> Result<Option<Tracked>, Box<Refused>> {
     match second {
+        Err(steep)
+            if matches!(
+                steep.error.what.tracks_error(),
+                Some(vision::TracksError::Steep { .. })
+            ) =>
+        {
+            Err(steep)
+        }
+        other => done_or_first(other, first, note),
+    }
+}
+
+/// A further tracking's tracks with `note` added, or, where it gave none, the first
+/// tracking's refusal `first` (whatever the further one said).
+fn done_or_first(
+    again: Result<Attempt, Box<Refused>>,
+    first: Box<Refused>,
+    note: String,
+) -> Result<Option<Tracked>, Box<Refused>> {
+    match again {
         Ok(Attempt::Done(mut done)) => {
             if let Some(t) = done.as_mut().as_mut() {
                 t.notes.push(note);
             }
             Ok(*done)
-        }
-        Err(steep)
-            if matches!(
-                steep.error.what,
-                VideoProblem::Tracks {
-                    error: vision::TracksError::Steep { .. },
-                    ..
-                }
-            ) =>
-        {
-            Err(steep)
         }
         _ => Err(first),
     }
@@ -242,20 +249,9 @@ fn sparse_note() -> String {
 /// Whether `refused` is for no ball found at all.
 fn no_ball(refused: &Refused) -> bool {
     matches!(
-        refused.error.what,
-        VideoProblem::Tracks {
-            error: vision::TracksError::NoBall { .. },
-            ..
-        }
+        refused.error.what.tracks_error(),
+        Some(vision::TracksError::NoBall { .. })
     )
-}
-
-/// `tracked` with `note` (why it was tracked more than once) added.
-fn noted(mut tracked: Option<Tracked>, note: String) -> Option<Tracked> {
-    if let Some(t) = tracked.as_mut() {
-        t.notes.push(note);
-    }
-    tracked
 }
 
 /// The note of a clip tracked a third time, its darker pixels of the wall's hue
@@ -454,29 +450,14 @@ fn refusal(
     pictures: Pictures,
     error: VideoError,
 ) -> Result<Attempt, Box<Refused>> {
+    use vision::TracksError::{NoBall, RadiiDisagree, Sparse};
     let params = &tracker.params;
-    let scattered = matches!(
-        &error.what,
-        VideoProblem::Tracks {
-            error: vision::TracksError::RadiiDisagree { .. },
-            ..
-        }
-    ) && !params.difference_first
+    let why = error.what.tracks_error();
+    let scattered = matches!(why, Some(RadiiDisagree { .. }))
+        && !params.difference_first
         && tracker.background().is_some_and(|b| b.image.factor == 1);
-    let unseen = matches!(
-        &error.what,
-        VideoProblem::Tracks {
-            error: vision::TracksError::NoBall { .. },
-            ..
-        }
-    ) && params.faint_levels < params.differ_levels;
-    let sparse = matches!(
-        &error.what,
-        VideoProblem::Tracks {
-            error: vision::TracksError::Sparse { .. },
-            ..
-        }
-    ) && params.shadow_darkest > 0.0;
+    let unseen = matches!(why, Some(NoBall { .. })) && params.faint_levels < params.differ_levels;
+    let sparse = matches!(why, Some(Sparse { .. })) && params.shadow_darkest > 0.0;
     let refused = refused(tracker, thumbs, pictures, error);
     match (tracker.radius_contradicted(), tracker.radius()) {
         (Some(r), Some(learned_px)) if params.radius_px.is_none() => {

@@ -8,7 +8,23 @@
 //! takes away (a ball of the wall's hue, darker than it, dims the wall as a shadow
 //! does): tracked again with no pixel taken for a shadow.
 
-use groovelab::vision::Params;
+use groovelab::vision::{self, Params, Tracks, TracksError};
+
+/// The clip `assert_tracked_to_its_scale` tracked (as the command line does, tracked
+/// again where refused), tracked once at `params` alone: what the retry is for.
+fn tracked_once(
+    tracked: Option<(crate::film::looks::Clip, std::path::PathBuf)>,
+    params: Params,
+) -> Option<Result<Tracks, TracksError>> {
+    let (clip, frames) = super::decoded(tracked?);
+    let (r, _, times) = super::look_truth(&clip, frames.len());
+    Some(vision::tracks(
+        &vision::track(&frames, params),
+        times,
+        r,
+        None,
+    ))
+}
 
 /// The scale within 2 of its ± of the truth; without the rule (no ball dark
 /// enough), the clip is refused. On the look's first 24 frames of its 58 (720p,
@@ -37,7 +53,6 @@ fn a_black_ball_on_a_wall_of_its_brightness_is_found_in_colour() {
 /// stays "no ball found".)
 #[test]
 fn a_dark_ball_no_ball_stands_out_of_is_tracked_again_at_a_lower_floor() {
-    use groovelab::vision::{self, TracksError};
     let tracked = super::assert_tracked_to_its_scale(
         "black_ball",
         (55, crate::film::looks::Size::Full, Some(24)),
@@ -45,11 +60,9 @@ fn a_dark_ball_no_ball_stands_out_of_is_tracked_again_at_a_lower_floor() {
         "tracked twice: no ball stood out from the background by 10 levels",
     );
     // The same file, tracked once at the floor of 10.
-    let Some((clip, frames)) = tracked.map(super::decoded) else {
+    let Some(once) = tracked_once(tracked, Params::default()) else {
         return;
     };
-    let (r, _, times) = super::look_truth(&clip, frames.len());
-    let once = vision::tracks(&vision::track(&frames, Params::default()), times, r, None);
     assert!(
         matches!(once, Err(TracksError::NoBall { .. })),
         "at the floor of 10: {:?}",
@@ -67,22 +80,19 @@ fn a_dark_ball_no_ball_stands_out_of_is_tracked_again_at_a_lower_floor() {
 /// ball (the third tracking is what tracks it).
 #[test]
 fn a_ball_of_the_walls_hue_taken_for_a_shadow_is_tracked_a_third_time() {
-    use groovelab::vision::{self, TracksError};
     let tracked = super::assert_tracked_to_its_scale(
         "wall_hue",
         (168, crate::film::looks::Size::Full, Some(56)),
         0.03,
         "tracked three times: no ball stood out from the background by 10 levels, nor by 6",
     );
-    let Some((clip, frames)) = tracked.map(super::decoded) else {
-        return;
-    };
-    let (r, _, times) = super::look_truth(&clip, frames.len());
     let faint = Params {
         differ_levels: Params::default().faint_levels,
         ..Params::default()
     };
-    let twice = vision::tracks(&vision::track(&frames, faint), times, r, None);
+    let Some(twice) = tracked_once(tracked, faint) else {
+        return;
+    };
     assert!(
         matches!(twice, Err(TracksError::NoBall { .. })),
         "at the floor of 6 with the shadow test: {:?}",
@@ -98,18 +108,15 @@ fn a_ball_of_the_walls_hue_taken_for_a_shadow_is_tracked_a_third_time() {
 /// second tracking is what tracks it).
 #[test]
 fn a_ball_found_in_too_few_frames_is_tracked_again_without_the_shadow_test() {
-    use groovelab::vision::{self, TracksError};
     let tracked = super::assert_tracked_to_its_scale(
         "wall_hue",
         (48, crate::film::looks::Size::Small, None),
         0.05,
         "tracked twice: neither ball was found in a third of the frames",
     );
-    let Some((clip, frames)) = tracked.map(super::decoded) else {
+    let Some(once) = tracked_once(tracked, Params::default()) else {
         return;
     };
-    let (r, _, times) = super::look_truth(&clip, frames.len());
-    let once = vision::tracks(&vision::track(&frames, Params::default()), times, r, None);
     assert!(
         matches!(once, Err(TracksError::Sparse { .. })),
         "with the shadow test: {:?}",
