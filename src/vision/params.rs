@@ -428,6 +428,15 @@ pub struct Params {
     /// a compression fringe that differs as much as the ball (the looks table, taken
     /// first on every clip: two μ_k wrong of 80).
     pub difference_first: bool,
+    /// Whether a grey ball of any brightness (steel, white), not only a dark one
+    /// (`dark_ball`), whose outline in brightness is poor is sought in colour, where
+    /// the wall about it is of one colour (`tracker::wall_of_one_colour`). Default
+    /// false: a clip is tracked so again only where neither ball was found in a
+    /// third of its frames (`input::video::tracked`); taken first on every clip, a
+    /// grey ball's outline in colour moved the centres of tracked looks by up to
+    /// 6 px (BENCHMARKS.md), and on a checkered or striped wall it took in the
+    /// wall's squares (full look 15: a radius 12 % large).
+    pub grey_in_colour: bool,
     /// Clear outlines (`min_coverage`, `max_rms`, over a rail) left out for their
     /// radius alone, at least this many and more than the fits kept, that agree on a
     /// radius within `max_radius_spread` (1.4826 × their median absolute deviation),
@@ -722,6 +731,7 @@ impl Default for Params {
             picture_ratio: 1.18,
             max_radius_spread: 0.05,
             difference_first: false,
+            grey_in_colour: false,
             min_contradicting: 10,
             sparsest: 3,
             fewest_seen: 3,

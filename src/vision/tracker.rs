@@ -1423,7 +1423,13 @@ impl Tracker {
     ) -> OutlineFound {
         if o.colour
             || self.shaped(&o, p, sharp)
-            || !dark_grey(frame, &guess, p.dark_ball, p.grey_levels)
+            || !(dark_grey(frame, &guess, p.dark_ball, p.grey_levels)
+                || (p.grey_in_colour
+                    && dark_grey(frame, &guess, f64::INFINITY, p.grey_levels)
+                    && self
+                        .background
+                        .as_ref()
+                        .is_some_and(|b| wall_of_one_colour(&b.image, &guess, p.grey_levels))))
         {
             return o;
         }
@@ -2396,6 +2402,40 @@ fn dark_grey(frame: &Frame, c: &Circle, dark: f64, grey: f64) -> bool {
         .is_some_and(|[y, u, v]| f64::from(y) < dark && f64::from(u.abs().max(v.abs())) <= grey)
 }
 
+/// True when the background `bg` about the ball `c` is of one colour: on a ring of
+/// 1.5 radii about it, above its centre (the rail hides the rest), nine in ten of
+/// its colour samples lie within `levels` (U and V each) of their median. A grey
+/// ball's outline in colour is the wall's colour against none; on a wall of two
+/// colours (a checker, stripes) it is the wall's pattern as much as the ball's.
+pub fn wall_of_one_colour(bg: &Small, c: &Circle, levels: f64) -> bool {
+    const SAMPLES: usize = 24;
+    let (w, h) = (
+        (bg.width * bg.factor) as f64,
+        (bg.height * bg.factor) as f64,
+    );
+    let (mut u, mut v) = (Vec::with_capacity(SAMPLES), Vec::with_capacity(SAMPLES));
+    for i in 0..=SAMPLES {
+        let a = std::f64::consts::PI * (1.0 + i as f64 / SAMPLES as f64);
+        let (x, y) = (c.x + 1.5 * c.r * a.cos(), c.y + 1.5 * c.r * a.sin());
+        if x >= 0.0 && y >= 0.0 && x < w && y < h {
+            u.push(f64::from(background_colour(bg, &bg.u, (x, y), false)));
+            v.push(f64::from(background_colour(bg, &bg.v, (x, y), false)));
+        }
+    }
+    // Half the ring in the picture at least: a ball at the frame's edge says little.
+    if u.len() * 2 <= SAMPLES {
+        return false;
+    }
+    let even = |s: &[f64]| {
+        let Some(m) = median(s) else { return false };
+        let mut off: Vec<f64> = s.iter().map(|q| (q - m).abs()).collect();
+        off.sort_by(f64::total_cmp);
+        let k = (off.len() * 9).div_ceil(10).saturating_sub(1);
+        off.get(k).is_some_and(|&d| d <= levels)
+    };
+    even(&u) && even(&v)
+}
+
 /// True when the ball about `c` has a colour of its own: the median colour of its
 /// disc's upper half (above the rail) lies more than `grey` levels from none.
 fn coloured(frame: &Frame, c: &Circle, grey: f64) -> bool {
@@ -2514,6 +2554,67 @@ pub fn median(v: &[f64]) -> Option<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A coarse background `w` × `h` coarse pixels of `f` px each, its colour at
+    /// each coarse pixel `colour(i, j)` (U, V), its luma 120.
+    fn background(
+        w: usize,
+        h: usize,
+        f: usize,
+        colour: impl Fn(usize, usize) -> (u8, u8),
+    ) -> Small {
+        let (mut u, mut v) = (Vec::new(), Vec::new());
+        for j in 0..h {
+            for i in 0..w {
+                let (a, b) = colour(i, j);
+                u.push(a);
+                v.push(b);
+            }
+        }
+        Small {
+            width: w,
+            height: h,
+            factor: f,
+            y: vec![120.0; w * h],
+            u,
+            v,
+        }
+    }
+
+    proptest::proptest! {
+        /// A wall of one colour, its samples scattered by under `grey_levels`, is
+        /// of one colour about any ball well inside the frame; a checker of two
+        /// colours apart by more than twice that, of squares up to a radius wide,
+        /// is not (squares of two radii can hold most of the ring in one colour, as
+        /// the wall about the ball then is); nor a ball whose ring lies mostly off
+        /// the frame.
+        #[test]
+        fn a_wall_of_one_colour_is_told_from_a_checker(
+            (u0, v0) in (20u8..235, 20u8..235),
+            (du, dv) in (13u8..20, 0u8..20),
+            noise in proptest::collection::vec(0u8..6, 64 * 48),
+            r in 8.0f64..20.0,
+            square in 0.3f64..1.0,
+            (x, y) in (0.4f64..0.6, 0.5f64..0.7),
+            f in 2usize..5,
+        ) {
+            let (w, h) = (64, 48);
+            let levels = Params::default().grey_levels;
+            let c = Circle { x: x * (w * f) as f64, y: y * (h * f) as f64, r };
+            let plain = background(w, h, f, |i, j| {
+                let n = noise.get(j * w + i).copied().unwrap_or(0);
+                (u0 + n - 3, v0 + n - 3)
+            });
+            proptest::prop_assert!(wall_of_one_colour(&plain, &c, levels));
+            let side = (square * r / f as f64).max(1.0) as usize;
+            let checker = background(w, h, f, |i, j| {
+                if (i / side + j / side).is_multiple_of(2) { (u0, v0) } else { (u0 + du, v0 + dv) }
+            });
+            proptest::prop_assert!(!wall_of_one_colour(&checker, &c, levels));
+            let off = Circle { x: -0.8 * r, ..c };
+            proptest::prop_assert!(!wall_of_one_colour(&plain, &off, levels));
+        }
+    }
 
     /// A clear outline of a ball of radius 69 px centred at `(x, 278)`.
     fn ball_at(x: f64) -> Outline {

@@ -182,7 +182,10 @@ pub fn track_framed(
             }
         }
         Attempt::Sparse(refused) => {
-            done_or_first(once(&unshadowed(&params)), refused, sparse_note())
+            match done_or_first(once(&unshadowed(&params)), refused, sparse_note()) {
+                Err(first) => done_or_first(once(&grey_in_colour(&params)), first, grey_note()),
+                other => other,
+            }
         }
         Attempt::Done(done) => Ok(*done),
         // `track_once` never gives it.
@@ -238,6 +241,24 @@ fn unshadowed(p: &vision::Params) -> vision::Params {
         shadow_darkest: 0.0,
         ..*p
     }
+}
+
+/// `p` with a grey ball of any brightness sought in colour where its outline in
+/// brightness is poor and the wall about it is of one colour
+/// (`Params::grey_in_colour`): a steel ball's lit rim of the wall's brightness
+/// leaves its outline in brightness inside its edge, and its cast shadow outside.
+fn grey_in_colour(p: &vision::Params) -> vision::Params {
+    vision::Params {
+        grey_in_colour: true,
+        ..*p
+    }
+}
+
+/// The note of a clip tracked again with a grey ball's outline sought in colour,
+/// after neither ball was found in a third of its frames (nor with no pixel taken for
+/// a shadow).
+fn grey_note() -> String {
+    "tracked three times: neither ball was found in a third of the frames by its outline in brightness (a grey ball's rim of the wall's brightness, or its shadow beside it), nor with pixels darker than the wall and of its hue taken as the balls'; tracked again with each grey ball's outline sought in colour against the wall's one colour".into()
 }
 
 /// The note of a clip tracked again with no pixel taken for a shadow, after neither
