@@ -1365,7 +1365,7 @@ impl Tracker {
         };
         let o = if colour {
             let sharp = sharp(&o);
-            let o = self.dark_in_colour(frame, (guess, band), o, &p, sharp);
+            let o = self.grey_ball_in_colour(frame, (guess, band), o, &p, sharp);
             self.coloured_in_colour(frame, (guess, band), o, &p)
         } else {
             o
@@ -1408,12 +1408,30 @@ impl Tracker {
         Ok(o.outline)
     }
 
-    /// A dark grey ball (black) on a wall of its brightness that differs from it in
-    /// colour: where its outline `o` in brightness is poor (`sharp`: `o` is a short
-    /// sharp arc of the known radius; the wall's own edges mixed in), its outline in
-    /// colour about `guess` (in a band `band` px wide) if that is clear: the wall's
-    /// colour against none. Else `o`.
-    fn dark_in_colour(
+    /// Whether the ball about `c` is one [`Tracker::grey_ball_in_colour`] seeks in colour:
+    /// grey (the median colour of its disc's upper half within `grey_levels` of
+    /// none) and dark (its median brightness under `dark_ball`: a black ball; its
+    /// highlight and mark are a small part of it), or, with `grey_in_colour`, of any
+    /// brightness where the wall about it is of one colour (`wall_of_one_colour`).
+    fn grey_sought_in_colour(&self, frame: &Frame, c: &Circle, p: &Params) -> bool {
+        let Some([y, u, v]) = upper_disc(frame, c) else {
+            return false;
+        };
+        let grey = f64::from(u.abs().max(v.abs())) <= p.grey_levels;
+        let one_colour = || {
+            self.background
+                .as_ref()
+                .is_some_and(|b| wall_of_one_colour(&b.image, c, p.grey_levels))
+        };
+        grey && (f64::from(y) < p.dark_ball || (p.grey_in_colour && one_colour()))
+    }
+
+    /// A grey ball sought in colour (`grey_sought_in_colour`: a black one on a wall
+    /// of its brightness that differs from it in colour): where its outline `o` in
+    /// brightness is poor (`sharp`: `o` is a short sharp arc of the known radius; the
+    /// wall's own edges mixed in), its outline in colour about `guess` (in a band
+    /// `band` px wide) if that is clear: the wall's colour against none. Else `o`.
+    fn grey_ball_in_colour(
         &self,
         frame: &Frame,
         (guess, band): (Circle, f64),
@@ -1421,16 +1439,7 @@ impl Tracker {
         p: &Params,
         sharp: bool,
     ) -> OutlineFound {
-        if o.colour
-            || self.shaped(&o, p, sharp)
-            || !(dark_grey(frame, &guess, p.dark_ball, p.grey_levels)
-                || (p.grey_in_colour
-                    && dark_grey(frame, &guess, f64::INFINITY, p.grey_levels)
-                    && self
-                        .background
-                        .as_ref()
-                        .is_some_and(|b| wall_of_one_colour(&b.image, &guess, p.grey_levels))))
-        {
+        if o.colour || self.shaped(&o, p, sharp) || !self.grey_sought_in_colour(frame, &guess, p) {
             return o;
         }
         match self.colour_outline(frame, guess, band) {
@@ -2391,15 +2400,6 @@ pub fn in_the_walls_shadow(frame: &Frame, bg: &Small, (x, y): (f64, f64), p: &Pa
             p.shadow_darkest as f32,
             p.shadow_hue_levels as f32,
         )
-}
-
-/// True when the upper half of the disc `c` (above its centre: the rail hides the
-/// lower) is dark and grey in `frame`: its median brightness under `dark` levels and
-/// its median colour within `grey` levels of none (a black ball; its highlight and
-/// mark are a small part of it).
-fn dark_grey(frame: &Frame, c: &Circle, dark: f64, grey: f64) -> bool {
-    upper_disc(frame, c)
-        .is_some_and(|[y, u, v]| f64::from(y) < dark && f64::from(u.abs().max(v.abs())) <= grey)
 }
 
 /// True when the background `bg` about the ball `c` is of one colour: on a ring of

@@ -13,19 +13,24 @@
 use groovelab::vision::{self, Params, Tracks, TracksError};
 
 /// The clip `assert_tracked_to_its_scale` tracked (as the command line does, tracked
-/// again where refused), tracked once at `params` alone: what the retry is for.
+/// again where refused), tracked once at each of `params` alone: what the retry is
+/// for. Decoded once.
+fn tracked_at(
+    tracked: Option<(crate::film::looks::Clip, std::path::PathBuf)>,
+    params: &[Params],
+) -> Option<Vec<Result<Tracks, TracksError>>> {
+    let (clip, frames) = super::decoded(tracked?);
+    let (r, _, times) = super::look_truth(&clip, frames.len());
+    let once = |p: &Params| vision::tracks(&vision::track(&frames, *p), times.clone(), r, None);
+    Some(params.iter().map(once).collect())
+}
+
+/// As [`tracked_at`], at `params` alone.
 fn tracked_once(
     tracked: Option<(crate::film::looks::Clip, std::path::PathBuf)>,
     params: Params,
 ) -> Option<Result<Tracks, TracksError>> {
-    let (clip, frames) = super::decoded(tracked?);
-    let (r, _, times) = super::look_truth(&clip, frames.len());
-    Some(vision::tracks(
-        &vision::track(&frames, params),
-        times,
-        r,
-        None,
-    ))
+    tracked_at(tracked, &[params])?.pop()
 }
 
 /// The scale within 2 of its ± of the truth; without the rule (no ball dark
@@ -142,19 +147,21 @@ fn a_grey_ball_found_in_too_few_frames_is_tracked_again_in_colour() {
         0.05,
         "tracked three times: neither ball was found in a third of the frames by its outline in brightness",
     );
-    let Some((clip, frames)) = tracked.map(super::decoded) else {
+    let with_and_without = [
+        Params::default(),
+        Params {
+            shadow_darkest: 0.0,
+            ..Params::default()
+        },
+    ];
+    let Some(refused) = tracked_at(tracked, &with_and_without) else {
         return;
     };
-    let (r, _, times) = super::look_truth(&clip, frames.len());
-    for shadow_darkest in [Params::default().shadow_darkest, 0.0] {
-        let p = Params {
-            shadow_darkest,
-            ..Params::default()
-        };
-        let once = vision::tracks(&vision::track(&frames, p), times.clone(), r, None);
+    for (once, p) in refused.into_iter().zip(&with_and_without) {
         assert!(
             once.is_err(),
-            "in brightness, shadow_darkest {shadow_darkest}: {:?}",
+            "in brightness, shadow_darkest {}: {:?}",
+            p.shadow_darkest,
             once.map(|t| t.calibration.px_per_m)
         );
     }
