@@ -203,3 +203,82 @@ fn a_value_the_file_leaves_out_is_never_said_to_be_measured() {
     let out = fit(&both);
     assert!(out.contains("measured at b = 4.9 cm"), "{out}");
 }
+
+#[test]
+fn a_left_ball_found_only_after_the_impact_gives_way_to_the_right_one() {
+    // `groovelab track`'s tracks of both balls (small look 47: the left ball's own
+    // frames few and after the impact): the left ball's motion shows no impact, the
+    // right ball's does, and its series is the one derived, mirrored.
+    let x = |t: f64| {
+        if t < 0.15 {
+            0.5 * t
+        } else {
+            0.075 + 0.1 * (t - 0.15)
+        }
+    };
+    let mut text = String::from(
+        "\tleft ball\t\tleft mark\t\tright ball\t\tright mark\t\nt\tx\ty\tx\ty\tx\ty\tx\ty\n",
+    );
+    for k in 0..40 {
+        let t = f64::from(k) * 0.01;
+        let left = if t >= 0.2 {
+            format!("{:.6}\t0", x(t) - 0.2)
+        } else {
+            "\t".into()
+        };
+        text += &format!("{t:.2}\t{left}\t\t\t{:.6}\t0\t\t\n", 0.2 - x(t));
+    }
+    let load = |reading: &groovelab::input::data::Reading| {
+        groovelab::input::data::load(&text, "tracks.txt", reading, &Default::default())
+    };
+    let series = load(&Default::default()).unwrap_or_else(|e| panic!("{e}"));
+    let found = series.found().expect("a track");
+    assert_eq!(found.centre, "right ball");
+    // 0.5 m/s before the impact at 0.15 s, 0.1 m/s after, away from the left ball.
+    let m = series.measured();
+    let v_before: Vec<f64> = m
+        .t()
+        .iter()
+        .zip(m.v_cm())
+        .filter(|(t, _)| **t < -0.03)
+        .map(|(_, v)| *v)
+        .collect();
+    assert!(
+        !v_before.is_empty() && v_before.iter().all(|v| (v.abs() - 0.5).abs() < 0.01),
+        "{v_before:?}"
+    );
+    // The left ball named, its refusal stands.
+    let left = groovelab::input::data::Reading {
+        centre: Some("left ball".into()),
+        mark: Some("left mark".into()),
+        ..Default::default()
+    };
+    assert!(load(&left).is_err());
+    // A right ball found in under half the frames (small look 49: both balls in a
+    // third, the right ball's μ_k 0.28 for 0.17) is no better: the refusal stands.
+    let sparse: String = text
+        .lines()
+        .enumerate()
+        .map(|(i, l)| {
+            let k = i.saturating_sub(2);
+            let cells: Vec<&str> = l.split('\t').collect();
+            if i < 2 || k % 3 == 0 {
+                l.to_string()
+            } else {
+                format!("{}\t\t\t\t", cells[..5].join("\t"))
+            }
+        })
+        .collect::<Vec<_>>()
+        .join("\n");
+    let refused = groovelab::input::data::load(
+        &sparse,
+        "tracks.txt",
+        &Default::default(),
+        &Default::default(),
+    );
+    assert!(
+        refused.is_err(),
+        "{:?}",
+        refused.map(|s| s.found().map(|f| f.centre.clone()))
+    );
+}
