@@ -4,6 +4,7 @@
 //! gives a [`RawSeries`] in SI units and nothing that depends on the scene: deriving
 //! velocities for a scene is `study::measured`'s.
 
+mod ball_choice;
 mod cmbl;
 mod detect;
 mod layout;
@@ -33,7 +34,8 @@ pub use scene::scene_of;
 pub use table::file_unit;
 pub use velocities::detect_impact;
 
-use crate::study::measured::{self, Derive, RawSeries, Series, Track};
+use crate::study::measured::{Derive, RawSeries, Series, Track};
+use ball_choice::{prepare, right_ball};
 use table::Table;
 
 /// Reads `text` (the file named `file`): a Tracker project (`.trk`), a Logger Pro
@@ -76,55 +78,18 @@ pub fn load_pair(
     prepare(RawSeries::Positions(track), &centre.0, reading, opts)
 }
 
-/// Derives what does not depend on the scene, errors naming `file`.
-fn prepare(
-    raw: RawSeries,
-    file: &str,
-    reading: &Reading,
-    opts: &Derive,
-) -> Result<Series, DataError> {
-    let opts = Derive {
-        impact_at: reading.impact_at.or(opts.impact_at),
-        ..*opts
-    };
-    measured::prepare(raw, &opts).map_err(|e| DataError::new(file, e))
-}
-
 /// Reads a velocity file or a position track and derives what does not depend on the
 /// scene (`study::measured::prepare`); `study::measured::for_scene` then gives it for
 /// a scene. The time of the first impact, when given, is `reading.impact_at`. Of a
 /// file of both balls (`groovelab track`'s) whose left ball gives no series, the right
-/// ball's ([`right_ball`]).
+/// ball's (`ball_choice::right_ball`).
 pub fn load(text: &str, file: &str, reading: &Reading, opts: &Derive) -> Result<Series, DataError> {
     match prepare(read(text, file, reading)?, file, reading, opts) {
         Err(e) if reading.centre.is_none() && reading.mark.is_none() => {
-            right_ball(text, file, reading, opts).ok_or(e)
+            right_ball(text, file, reading, opts)
+                .map(|(series, _)| series)
+                .ok_or(e)
         }
         done => done,
     }
-}
-
-/// The right ball's series of a tracks file of both balls (`groovelab track`'s
-/// "right ball" and "right mark"), mirrored into the model's left ball as a file of
-/// that ball alone is: where the left ball's motion gives none (found in a few frames
-/// about the impact, or on one side of it: small look 47, 12 frames of 36, a disc of
-/// the wall taken for the left ball before and after it was found; full look 126)
-/// while the right ball, found in half the frames or more, shows the impact. `None`
-/// without such tracks or where they give no series either: the left ball's refusal
-/// then stands (small look 49, the right ball in 13 frames of 41, whose series gave
-/// μ_k 0.277 ± 0.025 for 0.170).
-fn right_ball(text: &str, file: &str, reading: &Reading, opts: &Derive) -> Option<Series> {
-    let right = Reading {
-        centre: Some("right ball".into()),
-        mark: Some("right mark".into()),
-        ..reading.clone()
-    };
-    let raw = read(text, file, &right).ok()?;
-    let RawSeries::Positions(track) = &raw else {
-        return None;
-    };
-    let frames = track.t().len();
-    let seen = (0..frames).filter(|&i| track.at(i).x.is_finite()).count();
-    (2 * seen >= frames).then_some(())?;
-    prepare(raw, file, &right, opts).ok()
 }

@@ -97,6 +97,10 @@ pub fn inspect(
     reading: &Reading,
     derive: &Derive,
 ) -> Result<Report, DataError> {
+    // The ball `fit` fits: the right one where the left one's frames give no series.
+    if let Some(right) = super::ball_choice::right_ball_reading(text, file, reading, derive) {
+        return inspect(text, file, &right, derive);
+    }
     let (raw, notes) = match super::detect::read_with_notes(text, file, reading) {
         // A length unit in doubt: the file in its own unit, with the doubt and the fix.
         Err(e) if !reading.own_lengths && lengths_in_doubt(&e.what) => {

@@ -247,6 +247,11 @@ fn a_left_ball_found_only_after_the_impact_gives_way_to_the_right_one() {
         !v_before.is_empty() && v_before.iter().all(|v| (v.abs() - 0.5).abs() < 0.01),
         "{v_before:?}"
     );
+    // `data` names the ball `fit` fits.
+    let [data, fit] = data_and_fit("right-ball", &text);
+    for out in [data.unwrap(), fit.unwrap()] {
+        assert!(out.contains("centre 'right ball'"), "{out}");
+    }
     // The left ball named, its refusal stands.
     let left = groovelab::input::data::Reading {
         centre: Some("left ball".into()),
