@@ -20,28 +20,23 @@ pub(super) fn prepare(
     measured::prepare(raw, &opts).map_err(|e| DataError::new(file, e))
 }
 
-/// The reading that `data::load` takes the right ball's series with ([`right_ball`]),
-/// where it does: what `data` reports (`report::inspect`), so that it names the ball
-/// `fit` fits.
-pub(super) fn right_ball_reading(
+/// The series `data::load` gives of `text` (the file named `file`), and the reading
+/// it took it with where that is not `reading`: the left ball's as `reading` says,
+/// or, where that gives none and `reading` names no track, the right ball's
+/// ([`right_ball`], its reading what `data` reports with, naming the ball `fit` fits).
+pub(super) fn chosen(
     text: &str,
     file: &str,
     reading: &Reading,
     opts: &Derive,
-) -> Option<Reading> {
-    if reading.centre.is_some() || reading.mark.is_some() {
-        return None;
+) -> Result<(Series, Option<Reading>), DataError> {
+    match prepare(read_with_notes(text, file, reading)?.0, file, reading, opts) {
+        Err(e) if reading.centre.is_none() && reading.mark.is_none() => {
+            let (series, right) = right_ball(text, file, reading, opts).ok_or(e)?;
+            Ok((series, Some(right)))
+        }
+        done => done.map(|series| (series, None)),
     }
-    let left = prepare(
-        read_with_notes(text, file, reading).ok()?.0,
-        file,
-        reading,
-        opts,
-    );
-    if left.is_ok() {
-        return None;
-    }
-    right_ball(text, file, reading, opts).map(|(_, right)| right)
 }
 
 /// The right ball's series of a tracks file of both balls (`groovelab track`'s
@@ -53,7 +48,7 @@ pub(super) fn right_ball_reading(
 /// without such tracks or where they give no series either: the left ball's refusal
 /// then stands (small look 49, the right ball in 13 frames of 41, whose series gave
 /// μ_k 0.277 ± 0.025 for 0.170).
-pub(super) fn right_ball(
+fn right_ball(
     text: &str,
     file: &str,
     reading: &Reading,

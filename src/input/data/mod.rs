@@ -35,7 +35,7 @@ pub use table::file_unit;
 pub use velocities::detect_impact;
 
 use crate::study::measured::{Derive, RawSeries, Series, Track};
-use ball_choice::{prepare, right_ball};
+use ball_choice::prepare;
 use table::Table;
 
 /// Reads `text` (the file named `file`): a Tracker project (`.trk`), a Logger Pro
@@ -82,14 +82,7 @@ pub fn load_pair(
 /// scene (`study::measured::prepare`); `study::measured::for_scene` then gives it for
 /// a scene. The time of the first impact, when given, is `reading.impact_at`. Of a
 /// file of both balls (`groovelab track`'s) whose left ball gives no series, the right
-/// ball's (`ball_choice::right_ball`).
+/// ball's (`ball_choice::chosen`).
 pub fn load(text: &str, file: &str, reading: &Reading, opts: &Derive) -> Result<Series, DataError> {
-    match prepare(read(text, file, reading)?, file, reading, opts) {
-        Err(e) if reading.centre.is_none() && reading.mark.is_none() => {
-            right_ball(text, file, reading, opts)
-                .map(|(series, _)| series)
-                .ok_or(e)
-        }
-        done => done,
-    }
+    ball_choice::chosen(text, file, reading, opts).map(|(series, _)| series)
 }

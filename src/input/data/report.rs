@@ -98,7 +98,7 @@ pub fn inspect(
     derive: &Derive,
 ) -> Result<Report, DataError> {
     // The ball `fit` fits: the right one where the left one's frames give no series.
-    if let Some(right) = super::ball_choice::right_ball_reading(text, file, reading, derive) {
+    if let Ok((_, Some(right))) = super::ball_choice::chosen(text, file, reading, derive) {
         return inspect(text, file, &right, derive);
     }
     let (raw, notes) = match super::detect::read_with_notes(text, file, reading) {
