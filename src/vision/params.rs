@@ -328,6 +328,25 @@ pub struct Params {
     /// it predicts the ball moved on needs as much of its upper half to differ,
     /// unless it is a sharp arc of the balls' radius (`min_coverage_sharp`).
     pub moved_share: f64,
+    /// A slot whose last two fits lie within this share of a radius of each other
+    /// predicts its ball at rest (`Tracker::moved_off_rest`), and where its ball's
+    /// blob lies off that rest, the ball is sought about the blob too. Default 0.1.
+    pub rest_step: f64,
+    /// … and a blob whose guess lies more than this share of a radius, and more
+    /// than `rest_bands` search bands, from that prediction along the picture's
+    /// rows is sought about its own guess too. Default 0.25 and 2: a blob's guess is
+    /// a coarse pixel or two off (its band); at one band, small balls' blobs (full
+    /// look 108, R 12 px) were sought off their ball and the clip refused for its
+    /// radii's scatter.
+    pub rest_left: f64,
+    /// … see `rest_left`.
+    pub rest_bands: f64,
+    /// … and that outline kept where its upper half differs from the background
+    /// (`Tracker::differing`) over this share more of it than the outline about the
+    /// prediction's does. Default 0.05: taken whatever it differs, a moving
+    /// shadow's blob took the ball's place (full look 35: 30 px off in three
+    /// frames).
+    pub rest_differ: f64,
     /// Marks looked at before their sign (darker or lighter than the ball) is
     /// settled. Default 9: a highlight of the other sign in a few of the first
     /// frames is outvoted.
@@ -720,6 +739,10 @@ impl Default for Params {
             repeat_window: 8,
             repeat_turn_step: 2.0,
             moved_share: 0.15,
+            rest_step: 0.1,
+            rest_left: 0.25,
+            rest_bands: 2.0,
+            rest_differ: 0.05,
             mark_votes: 9,
             stack_bytes: 96 << 20,
             stack_edge: 0.05,

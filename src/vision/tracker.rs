@@ -138,6 +138,9 @@ pub struct Tracker {
     thinned: u32,
     /// The fits are the stacked pictures' ([`Tracker::restacked`]).
     stacked: bool,
+    /// Outlines are sought about the guess given, not where a slot predicts its
+    /// ball ([`Tracker::moved_off_rest`]).
+    about_guess: bool,
     /// Each ball's radius as its stacked picture shows it, found once
     /// ([`Tracker::picture_radii`]).
     pictures: std::sync::OnceLock<Vec<f64>>,
@@ -797,6 +800,7 @@ impl Tracker {
                 .refine(frame, guess, band)
                 .and_then(|o| whole(o, guess.r)),
         };
+        let fit = self.moved_off_rest(frame, guess, band, fit);
         // A blob with a ragged fringe (`Blob::core`): the ball is its solid core.
         // Once the radius is known, only in a blob wider than a ball: the opened
         // blob of a ball that matches the wall in places (same-brightness wood
@@ -1864,9 +1868,73 @@ impl Tracker {
         self.patch_outline(&patch, guess, band, (x0, y0))
     }
 
+    /// The outline of a ball that moves off where a slot last saw it at rest, about
+    /// its blob's guess `guess` (band `band`), in place of `held`, the outline the
+    /// blob gave about that rest: a slot whose last two fits lie within
+    /// `Params::rest_step` of a radius predicts its ball there, and each refine
+    /// about that prediction hugs it, so where the ball turns back or is struck
+    /// while the wall there offers an outline (a checker's edges in a compressed
+    /// clip), its fits stay put as it moves off (full look 39: 8 frames, up to 31
+    /// px behind the ball). Where the blob's guess lies more than `rest_left` of a
+    /// radius and `rest_bands` bands from the prediction along the rows
+    /// ([`Tracker::rest_near`]), the outline is sought about the guess (at the
+    /// prediction's height), no prediction taken, and kept where it is a whole
+    /// ball and its upper half differs from the background (`differing`) over
+    /// `rest_differ` more of it than `held`'s does, or `held` failed. Else `held`
+    /// stands.
+    fn moved_off_rest(
+        &mut self,
+        frame: &Frame,
+        guess: Circle,
+        band: f64,
+        held: Result<Outline, LeftOut>,
+    ) -> Result<Outline, LeftOut> {
+        let Some(rest) = self.rest_near(guess, band) else {
+            return held;
+        };
+        let p = self.params;
+        let about = Circle { x: guess.x, ..rest };
+        self.about_guess = true;
+        let moved = self.refine(frame, about, band);
+        self.about_guess = false;
+        let Ok(moved) = moved else { return held };
+        let whole = moved.circle.r >= p.smallest_in_blob * rest.r;
+        let differs = match &held {
+            Ok(h) => self.differing(&moved.circle) > self.differing(&h.circle) + p.rest_differ,
+            Err(_) => true,
+        };
+        if whole && differs { Ok(moved) } else { held }
+    }
+
+    /// The rest a slot predicts its ball at, where the blob's guess `guess` (band
+    /// `band`) lies off it: the slot's last two fits within `Params::rest_step` of
+    /// a radius of each other, the prediction near `guess` (as `predicted_near`
+    /// takes it) but more than `rest_left` of a radius and `rest_bands` bands from
+    /// it along the rows; its radius the balls' learned one.
+    fn rest_near(&self, guess: Circle, band: f64) -> Option<Circle> {
+        let p = self.params;
+        let r = self.radius?;
+        let k = self.frames.len();
+        let rest = self.last.iter().find_map(|l| {
+            let [(_, a), (_, b)] = l.as_slice() else {
+                return None;
+            };
+            let at = predict(l, k)?;
+            ((a.x - b.x).hypot(a.y - b.y) < p.rest_step * b.r
+                && (at.x - guess.x).hypot(at.y - guess.y) < 0.5 * guess.r.max(at.r))
+            .then_some(at)
+        })?;
+        ((rest.x - guess.x).abs() > (p.rest_left * rest.r).max(p.rest_bands * band))
+            .then_some(Circle { r, ..rest })
+    }
+
     /// Where a slot's ball is expected now (moving on as between its last two fits),
-    /// if that is near `guess`.
+    /// if that is near `guess`; none while outlines are sought about the guess
+    /// ([`Tracker::moved_off_rest`]).
     fn predicted_near(&self, guess: Circle) -> Option<Circle> {
+        if self.about_guess {
+            return None;
+        }
         let k = self.frames.len();
         self.last
             .iter()
@@ -2706,6 +2774,61 @@ mod tests {
             assert!(!skipped(&off, &wide).unsearched);
             off.note_stale(&[wide], &[Err(LeftOut::Poor)]);
         }
+    }
+
+    /// A slot's rest is sought off only where its last two fits lie within
+    /// `rest_step` of a radius (a ball at rest), the radius is known, and the blob's
+    /// guess lies off that rest by more than `rest_left` of a radius and
+    /// `rest_bands` bands along the rows, but near enough for the prediction to be
+    /// taken for it (half a radius); the rest then has the balls' radius.
+    #[test]
+    fn a_rest_is_left_only_by_a_blob_off_it_along_the_groove() {
+        let r = 42.0;
+        let at = |x: f64| Circle {
+            x,
+            y: 340.0,
+            r: 41.0,
+        };
+        let mut t = Tracker::new(Params::default());
+        t.last[1] = vec![(62, at(812.2)), (63, at(812.4))];
+        t.frames = vec![[Err(LeftOut::Unseen), Err(LeftOut::Unseen)]; 64];
+        let band = 6.0;
+        let guess = |x: f64| Circle {
+            x,
+            y: 352.0,
+            r: 60.0,
+        };
+        // No radius learned yet: no rest.
+        assert_eq!(t.rest_near(guess(795.0), band), None);
+        t.radius = Some(r);
+        // The ball 17 px off (over a quarter radius, 10.5 px, and two bands, 12).
+        let rest = t.rest_near(guess(795.0), band).expect("a rest left");
+        assert!(
+            (rest.x - 812.6).abs() < 1e-9 && rest.y == 340.0 && rest.r == r,
+            "{rest:?}"
+        );
+        // 11 px off: over a quarter radius, within two bands.
+        assert_eq!(t.rest_near(guess(801.0), band), None);
+        // Wider bands (a coarser look): within them.
+        assert_eq!(t.rest_near(guess(795.0), 9.0), None);
+        // Beyond half the blob's radius across the groove: no prediction there.
+        assert_eq!(
+            t.rest_near(
+                Circle {
+                    y: 380.0,
+                    ..guess(795.0)
+                },
+                band
+            ),
+            None
+        );
+        // A ball that moved 5 px between its fits (over a tenth of a radius) is
+        // not at rest.
+        t.last[1] = vec![(62, at(817.0)), (63, at(812.0))];
+        assert_eq!(t.rest_near(guess(790.0), band), None);
+        // One fit only: no rest told.
+        t.last[1] = vec![(63, at(812.0))];
+        assert_eq!(t.rest_near(guess(795.0), band), None);
     }
 
     /// Balls found touching in the same places for `stale_blob` frames running,
