@@ -2801,13 +2801,14 @@ mod tests {
         // No radius learned yet: no rest.
         assert_eq!(t.rest_near(guess(795.0), band), None);
         t.radius = Some(r);
-        // The ball 17 px off (over a quarter radius, 10.5 px, and two bands, 12).
+        // The ball 17.6 px off (over a quarter of the fits' radius, 10.25 px, and
+        // two bands, 12).
         let rest = t.rest_near(guess(795.0), band).expect("a rest left");
         assert!(
             (rest.x - 812.6).abs() < 1e-9 && rest.y == 340.0 && rest.r == r,
             "{rest:?}"
         );
-        // 11 px off: over a quarter radius, within two bands.
+        // 11.6 px off: over a quarter radius, within two bands.
         assert_eq!(t.rest_near(guess(801.0), band), None);
         // Wider bands (a coarser look): within them.
         assert_eq!(t.rest_near(guess(795.0), 9.0), None);
