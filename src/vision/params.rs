@@ -335,9 +335,11 @@ pub struct Params {
     /// … and a blob whose guess lies more than this share of a radius, and more
     /// than `rest_bands` search bands, from that prediction along the picture's
     /// rows is sought about its own guess too. Default 0.25 and 2: a blob's guess is
-    /// a coarse pixel or two off (its band); at one band, small balls' blobs (full
-    /// look 108, R 12 px) were sought off their ball and the clip refused for its
-    /// radii's scatter.
+    /// a coarse pixel or two off (its band). Measured before the tell of
+    /// `rest_differ`: at a quarter radius alone, small balls' blobs (full look 108,
+    /// R 12 px) were sought off their ball and the clip refused for its radii's
+    /// scatter; at one band, full look 10's left ball was held off its turn (centre
+    /// RMS 1.67 → 2.58 px).
     pub rest_left: f64,
     /// … see `rest_left`.
     pub rest_bands: f64,

@@ -765,15 +765,7 @@ impl Tracker {
     fn fit_blob(&mut self, frame: &Frame, b: &Blob, f: f64) -> Result<Outline, LeftOut> {
         let p = self.params;
         let band = (1.5 * f).max(4.0);
-        // The mark or a highlight fitted in a ball's blob (of radius `blob`): not the
-        // ball.
-        let whole = |o: Outline, blob: f64| {
-            if o.circle.r < p.smallest_in_blob * blob {
-                Err(LeftOut::Poor)
-            } else {
-                Ok(o)
-            }
-        };
+        let whole = |o: Outline, blob: f64| whole_in_blob(o, blob, &p);
         let guess = b.guess();
         // A coloured ball's blob with a wide ragged fringe, before the balls' radius
         // is known: its solid core first (`Params::core_first`). The fringe (a
@@ -1897,13 +1889,14 @@ impl Tracker {
         self.about_guess = true;
         let moved = self.refine(frame, about, band);
         self.about_guess = false;
-        let Ok(moved) = moved else { return held };
-        let whole = moved.circle.r >= p.smallest_in_blob * rest.r;
+        let Ok(moved) = moved.and_then(|o| whole_in_blob(o, rest.r, &p)) else {
+            return held;
+        };
         let differs = match &held {
             Ok(h) => self.differing(&moved.circle) > self.differing(&h.circle) + p.rest_differ,
             Err(_) => true,
         };
-        if whole && differs { Ok(moved) } else { held }
+        if differs { Ok(moved) } else { held }
     }
 
     /// The rest a slot predicts its ball at, where the blob's guess `guess` (band
@@ -1920,9 +1913,8 @@ impl Tracker {
                 return None;
             };
             let at = predict(l, k)?;
-            ((a.x - b.x).hypot(a.y - b.y) < p.rest_step * b.r
-                && (at.x - guess.x).hypot(at.y - guess.y) < 0.5 * guess.r.max(at.r))
-            .then_some(at)
+            ((a.x - b.x).hypot(a.y - b.y) < p.rest_step * b.r && taken_for(&at, &guess))
+                .then_some(at)
         })?;
         ((rest.x - guess.x).abs() > (p.rest_left * rest.r).max(p.rest_bands * band))
             .then_some(Circle { r, ..rest })
@@ -1939,7 +1931,7 @@ impl Tracker {
         self.last
             .iter()
             .filter_map(|l| predict(l, k))
-            .find(|p| (p.x - guess.x).hypot(p.y - guess.y) < 0.5 * guess.r.max(p.r))
+            .find(|p| taken_for(p, &guess))
     }
 
     /// Which slot each fit (left to right) belongs to: the slot whose ball was last
@@ -2587,6 +2579,23 @@ pub fn contradicting_radius(radius: f64, kept: usize, others: &[f64], p: &Params
         && sd <= p.max_radius_spread * m
         && (m - radius).abs() >= p.radius_tolerance * radius)
         .then_some(m)
+}
+
+/// Whether a slot's prediction `at` is taken for the blob's guess `guess`: within
+/// half the larger of their radii.
+fn taken_for(at: &Circle, guess: &Circle) -> bool {
+    (at.x - guess.x).hypot(at.y - guess.y) < 0.5 * guess.r.max(at.r)
+}
+
+/// The outline `o` fitted in a blob of radius `blob`, unless it is under
+/// `Params::smallest_in_blob` of it: the mark or a highlight fitted in a ball's blob,
+/// not the ball.
+fn whole_in_blob(o: Outline, blob: f64, p: &Params) -> Result<Outline, LeftOut> {
+    if o.circle.r < p.smallest_in_blob * blob {
+        Err(LeftOut::Poor)
+    } else {
+        Ok(o)
+    }
 }
 
 /// A slot's circle extrapolated to frame `k` from its last two fits.
