@@ -79,16 +79,18 @@ pub(crate) fn h264_first(
 
 /// Checks that the look `seed` of `size` (its `first` frames where given), refused
 /// before, is tracked as the command line tracks it (its band first) to a scale
-/// within 2 of its ± and `share` of the truth, with a note starting `note` saying how:
-/// the clip and its file, for a test to hold more against (nothing without ffmpeg).
+/// within 2 of its ± and `share` of the truth, with a note starting `note` saying how
+/// (nothing is checked without ffmpeg).
 pub(crate) fn assert_tracked_to_its_scale(
     area: &str,
     (seed, size, first): (u64, crate::film::looks::Size, Option<usize>),
     share: f64,
     note: &str,
-) -> Option<(crate::film::looks::Clip, std::path::PathBuf)> {
+) {
     use groovelab::input::video::tracked::{self, Framing, Pictures};
-    let (clip, path) = h264_first(area, seed, size, first)?;
+    let Some((clip, path)) = h264_first(area, seed, size, first) else {
+        return;
+    };
     let done = tracked::track_framed(
         &path,
         &look_options(&clip),
@@ -109,7 +111,6 @@ pub(crate) fn assert_tracked_to_its_scale(
         c.px_per_m_sigma
     );
     assert!(t.notes.iter().any(|n| n.starts_with(note)), "{:?}", t.notes);
-    Some((clip, path))
 }
 
 /// The options a user tracks `clip` with: its R (`--radius`) and frame rate, nothing
