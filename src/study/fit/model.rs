@@ -15,7 +15,7 @@ use crate::study::measured::series::Measured;
 use super::least_squares::{
     At, Problem, least_squares, normal_matrix, profile_mu, smooth_jacobian, with,
 };
-use super::problem::{Evals, FitError, Free};
+use super::problem::{Evals, FitError, Free, MAX_PLAUSIBLE_MU};
 use super::regime::{data_scatter, observed_after, rest_band, sliding_end};
 use super::residuals::{Target, fit_points, labelled_residuals, nuisance};
 use super::uncertainty::{
@@ -99,10 +99,6 @@ pub struct ModelFit {
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub mu_implausible: bool,
 }
-
-/// The largest μ_k a ball rolling in a groove may plausibly have: beyond it the fit
-/// says the data's units are likely wrong ([`Agreement::ImplausibleMu`]).
-pub const MAX_PLAUSIBLE_MU: f64 = 1.0;
 
 impl ModelFit {
     /// Why the data do not determine the free value `parameter` ([`Free::name`]), if

@@ -164,6 +164,11 @@ impl<'a> Evals<'a> {
     }
 }
 
+/// The largest μ_k a ball rolling in a groove may plausibly have: beyond it the fit
+/// says the data's units are likely wrong (`Agreement::ImplausibleMu`), and a μ_k
+/// whose ± 2σ spans 0 to it is not determined (`uncertainty::uncertainties`).
+pub const MAX_PLAUSIBLE_MU: f64 = 1.0;
+
 /// Which scene values a model fit may change.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]

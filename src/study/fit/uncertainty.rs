@@ -4,7 +4,7 @@
 
 use serde::Serialize;
 
-use super::problem::Free;
+use super::problem::{Free, MAX_PLAUSIBLE_MU};
 use crate::study::measured::series::Stencils;
 
 /// Which measured value a residual compares with: the point's index and whether it is
@@ -32,6 +32,21 @@ pub(super) fn bounds(f: Free) -> (f64, f64) {
 /// A fitted value's range as people read it.
 fn range_text(f: Free) -> &'static str {
     f.key().param().range.text
+}
+
+/// The range a fitted value's ± must lie well inside of to say anything of it, and
+/// that range as people read it: its physical range, but for μ_k what a ball rolling
+/// in a groove may plausibly have ([`MAX_PLAUSIBLE_MU`]; the table
+/// allows up to 10 for any scene one may set). A μ_k of 0.09 ± 1.4 (a track that
+/// followed no ball) says nothing a student can use, yet its ± is a tenth of 0–10.
+fn telling_range(f: Free) -> ((f64, f64), &'static str) {
+    match f {
+        Free::Mu => (
+            (0.0, MAX_PLAUSIBLE_MU),
+            "0 ≤ μ_k ≤ 1, the most a ball rolling in a groove may plausibly have",
+        ),
+        _ => (bounds(f), range_text(f)),
+    }
 }
 
 /// True when the fitted value `v` of `f` lies on the edge of its physical range: at a
@@ -187,15 +202,14 @@ pub(super) fn uncertainties(
     });
     // Every value without a ± has its reason: none reads as fitted without one.
     for (x, &(i, f)) in kept.iter().enumerate() {
-        let (lo, hi) = bounds(f);
+        let ((lo, hi), range) = telling_range(f);
         match cov.as_ref().map(|cov| (s2 * entry(cov, x, x)).sqrt()) {
-            // A ± wider than the whole physical range says nothing of the value.
+            // A ± wider than the whole range the value may have says nothing of it.
             Some(se) if se.is_finite() && 2.0 * se >= hi - lo => why.push(NotIdentified {
                 parameter: f.name(),
                 reason: format!(
-                    "its ± 2σ ({}) spans more than its whole physical range ({}), so the data do not determine it",
+                    "its ± 2σ ({}) spans more than its whole range ({range}), so the data do not determine it",
                     crate::settings::units::significant(2.0 * se, 3),
-                    range_text(f)
                 ),
                 on_edge_of: None,
             }),
@@ -481,9 +495,16 @@ mod tests {
         // Frames of their own: independent, 1 + 1 + 1.
         let meat = shared_noise(&j, &labels, &st(slope(3, 5)));
         assert!((meat[0][0] - 3.0).abs() < 1e-12, "{meat:?}");
-        // The sandwich: (JᵀJ)⁻¹ · 5 · (JᵀJ)⁻¹ = 5/9, not the 1/3 of independent points.
-        let (se, _) = uncertainties(&[vec![3.0]], Some(&[vec![5.0]]), 1.0, &[Free::Mu], &[0.2]);
-        assert!((se[0].unwrap() - (5.0f64 / 9.0).sqrt()).abs() < 1e-12);
+        // The sandwich: (JᵀJ)⁻¹ · 5 · (JᵀJ)⁻¹ = 5/9, not the 1/3 of independent points
+        // (times the residuals' variance, 1/16 here: a μ_k ± of 2σ under 1).
+        let (se, _) = uncertainties(
+            &[vec![3.0]],
+            Some(&[vec![5.0]]),
+            1.0 / 16.0,
+            &[Free::Mu],
+            &[0.2],
+        );
+        assert!((se[0].unwrap() - (5.0f64 / 9.0).sqrt() / 4.0).abs() < 1e-12);
     }
 
     /// Trial item 9: μ_k = 9.999999999996795 (a search run into the bound 10) printed
@@ -491,7 +512,7 @@ mod tests {
     /// is on the edge, whichever value it is (μ_k too), and gets no ±.
     #[test]
     fn a_value_a_rounding_short_of_its_bound_is_on_the_edge() {
-        let jtj = vec![vec![4.0, 0.0], vec![0.0, 9.0]];
+        let jtj = vec![vec![16.0, 0.0], vec![0.0, 9.0]];
         let free = [Free::Mu, Free::RollingResistance];
         for p in [
             [9.999999999996795, 0.02],
@@ -512,15 +533,41 @@ mod tests {
         assert!(se.iter().all(Option::is_some) && why.is_empty(), "{why:?}");
     }
 
+    /// μ_k's ± says something only well inside what a ball in a groove may have (0–1),
+    /// not the table's 0–10: at ± 2σ of 0.9 it is fitted, at 1.1 not determined,
+    /// with that range in its reason; e (range 0–1 too) and c_rr keep theirs.
+    #[test]
+    fn a_mu_whose_pm_spans_every_plausible_mu_is_not_determined() {
+        let free = [Free::Mu, Free::Restitution];
+        for (two_sigma, determined) in [(0.9, true), (1.1, false)] {
+            // se = 1/sqrt(jtj) for a diagonal matrix, s2 = 1.
+            let d = (2.0f64 / two_sigma).powi(2);
+            let jtj = vec![vec![d, 0.0], vec![0.0, 100.0]];
+            let (se, why) = uncertainties(&jtj, None, 1.0, &free, &[0.09, 0.5]);
+            assert_eq!(se[0].is_some(), determined, "{two_sigma}: {why:?}");
+            assert!(se[1].is_some(), "{why:?}");
+            if !determined {
+                assert_eq!(why.len(), 1, "{why:?}");
+                assert_eq!(why[0].parameter, "mu");
+                assert!(why[0].reason.contains("0 ≤ μ_k ≤ 1"), "{}", why[0].reason);
+            }
+        }
+        // Only the ± is judged, not the value: a μ_k of 5 with a ± 2σ of 0.9 is
+        // fitted (the fit calls it implausible apart, `mu_implausible`).
+        let jtj = vec![vec![(2.0f64 / 0.9).powi(2), 0.0], vec![0.0, 100.0]];
+        let (se, _) = uncertainties(&jtj, None, 1.0, &free, &[5.0, 0.5]);
+        assert!(se[0].is_some());
+    }
+
     /// No matrix the fit makes is smaller than its values, but the data path never
     /// panics (issue 35): an entry outside the matrix is not a number, so a value
     /// without one gets a reason, and the others their ± as before.
     #[test]
     fn a_matrix_too_small_for_its_values_gives_reasons_not_a_panic() {
         let free = [Free::Mu, Free::V0];
-        let (se, why) = uncertainties(&[vec![4.0]], None, 1.0, &free, &[0.2, 0.5]);
-        // μ alone: 1/sqrt(4).
-        assert!((se[0].unwrap() - 0.5).abs() < 1e-12, "{se:?}");
+        let (se, why) = uncertainties(&[vec![16.0]], None, 1.0, &free, &[0.2, 0.5]);
+        // μ alone: 1/sqrt(16).
+        assert!((se[0].unwrap() - 0.25).abs() < 1e-12, "{se:?}");
         assert_eq!(se[1], None);
         assert_eq!(why.len(), 1, "{why:?}");
         assert_eq!(why[0].parameter, "v0");
@@ -562,9 +609,10 @@ mod tests {
             vec![0.0, 16.0, 1.0],
             vec![1.0, 1.0, 9.0],
         ];
-        let (se, why) = uncertainties(&jtj, None, 1.0, &free, &[0.2, 0.5, 1.0]);
-        assert!((se[0].unwrap() - 0.5).abs() < 1e-12);
-        assert!((se[1].unwrap() - 0.25).abs() < 1e-12);
+        // (The residuals' variance 1/16: a μ_k ± of 2σ under 1.)
+        let (se, why) = uncertainties(&jtj, None, 1.0 / 16.0, &free, &[0.2, 0.5, 1.0]);
+        assert!((se[0].unwrap() - 0.125).abs() < 1e-12);
+        assert!((se[1].unwrap() - 0.0625).abs() < 1e-12);
         assert_eq!(se[2], None);
         assert_eq!(why[0].parameter, "restitution");
         assert!(

@@ -489,7 +489,7 @@ fn a_mu_the_positions_do_not_determine_is_not_reported_as_fitted() {
         p["not_identified"][0]["reason"]
             .as_str()
             .unwrap()
-            .contains("μ_k ≤ 10"),
+            .contains("0 ≤ μ_k ≤ 1, the most a ball"),
         "{p}"
     );
     // Every fitted μ_k printed (a number and its ±, as in the models table) lies
