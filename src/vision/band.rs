@@ -361,6 +361,7 @@ mod tests {
                 spots[0] = Some((50.0, y - 3.0, 20.0));
                 spots
             },
+            colour: None,
         };
         [Ok(fix), Err(crate::vision::tracker::LeftOut::Unseen)]
     }

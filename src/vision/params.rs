@@ -279,6 +279,15 @@ pub struct Params {
     /// … and farther than this share of it is left out. Default 0.02 (half a pixel
     /// of a 25 px radius: a sharp ball's fits scatter by under 1 %).
     pub odd_radius_share: f64,
+    /// A fit whose disc's mean colour lies farther than this many robust scatters
+    /// of every fit's from their median, in U or V, and `odd_colour_levels`, is
+    /// left out (`tracks::odd_colour`): both balls are alike. Default 6.
+    pub odd_colour: f64,
+    /// The least such distance, levels. Default 16.
+    pub odd_colour_levels: f64,
+    /// Such a fit is left out only where more than this many others lie within
+    /// `rest_step` radii of it (a thing at rest). Default 3.
+    pub odd_colour_still: usize,
     /// The largest deceleration of a ball along the groove, m/s², from which how far
     /// its motion bends away from a straight line between neighbouring fits is
     /// allowed (`tracks::off_the_path`: fits far along the groove from where the
@@ -731,6 +740,9 @@ impl Default for Params {
             off_the_line: 0.25,
             odd_radius: 3.0,
             odd_radius_share: 0.02,
+            odd_colour: 6.0,
+            odd_colour_levels: 16.0,
+            odd_colour_still: 3,
             max_deceleration: 10.0,
             off_the_curve: 6.0,
             off_the_curve_share: 0.1,

@@ -29,6 +29,10 @@ pub struct Fix {
     pub mark: Option<Mark>,
     /// The strongest spots of its disc, the mark or not (`mark::InDisc::spots`).
     pub spots: mark::Spots,
+    /// The mean colour (U, V levels) of its disc's upper half ([`disc_colour`]):
+    /// both balls are alike, so a fit far off the clip's other fits in colour is
+    /// something else's outline; `None` where too little of it is in the picture.
+    pub colour: Option<[f64; 2]>,
 }
 
 /// Why a ball has no position in a frame.
@@ -565,7 +569,11 @@ impl Tracker {
                 if self.radii.len() <= 64 || self.radii.len().is_multiple_of(256) {
                     self.radius = median(&self.radii);
                 }
-                self.fix(img, o, noise, slot)
+                let colour = disc_colour(frame, &o.circle);
+                Fix {
+                    colour,
+                    ..self.fix(img, o, noise, slot)
+                }
             });
             if let Some(o) = out.get_mut(slot) {
                 *o = fix;
@@ -890,6 +898,7 @@ impl Tracker {
             sigma: 0.5 * (o.sigma[0] + o.sigma[1]),
             mark: found.mark,
             spots: found.spots,
+            colour: None,
         }
     }
 
@@ -2090,6 +2099,34 @@ fn contrast(frame: &Frame, c: &Circle) -> Option<[f64; 3]> {
     Some([0, 1, 2].map(|i| (mean(&inner, i) - mean(&outer, i)).abs()))
 }
 
+/// The mean colour (U, V levels) of the upper half of the disc `c` within 0.8 of its
+/// radius (the rail hides the lower half, the edge blurs into the wall), read from
+/// `frame`'s colour planes every eighth of a radius; `None` where fewer than 8
+/// samples of it are in the picture.
+pub fn disc_colour(frame: &Frame, c: &Circle) -> Option<[f64; 2]> {
+    let step = (c.r / 8.0).max(1.0);
+    let (w, h) = (frame.width() as f64, frame.height() as f64);
+    let mut sum = [0.0f64; 3];
+    let mut dy = -0.8 * c.r;
+    while dy < 0.0 {
+        let mut dx = -0.8 * c.r;
+        while dx <= 0.8 * c.r {
+            let (x, y) = (c.x + dx, c.y + dy);
+            if length(dx, dy) < 0.8 * c.r && x >= 0.0 && y >= 0.0 && x < w && y < h {
+                let ci = (y as usize / 2) * frame.chroma_width + x as usize / 2;
+                if let (Some(&u), Some(&v)) = (frame.u.get(ci), frame.v.get(ci)) {
+                    sum[0] += f64::from(u);
+                    sum[1] += f64::from(v);
+                    sum[2] += 1.0;
+                }
+            }
+            dx += step;
+        }
+        dy += step;
+    }
+    (sum[2] >= 8.0).then(|| [sum[0] / sum[2], sum[1] / sum[2]])
+}
+
 /// True when the ball about `c` differs from the wall around it (`contrast`) in
 /// colour, by at least twice `differ_levels` (weighed as `stands_out` weighs
 /// it), but in brightness by under `differ_levels`: a ball of the wall's
@@ -2631,6 +2668,57 @@ pub fn median(v: &[f64]) -> Option<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A teal disc (RGB 30, 150, 170) of radius 20 on a grey wall, its lower half
+    /// below a red rail: the disc's colour is the teal's (U, V as the frame holds
+    /// them, within a level), not the rail's nor the wall's; a disc wholly out of
+    /// the picture has none.
+    #[test]
+    fn a_discs_colour_is_its_upper_halfs() {
+        let (w, h) = (120u32, 80u32);
+        let img = image::RgbImage::from_fn(w, h, |x, y| {
+            let (dx, dy) = (f64::from(x) - 60.0, f64::from(y) - 40.0);
+            if y >= 40 {
+                image::Rgb([200, 30, 30])
+            } else if dx.hypot(dy) < 20.0 {
+                image::Rgb([30, 150, 170])
+            } else {
+                image::Rgb([128, 128, 128])
+            }
+        });
+        let frame = Frame::from_rgb(&img);
+        let teal = Frame::from_rgb(&image::RgbImage::from_pixel(
+            4,
+            4,
+            image::Rgb([30, 150, 170]),
+        ));
+        let want = [f64::from(teal.u[0]), f64::from(teal.v[0])];
+        let got = disc_colour(
+            &frame,
+            &Circle {
+                x: 60.0,
+                y: 40.0,
+                r: 20.0,
+            },
+        )
+        .expect("a colour");
+        assert!(
+            (got[0] - want[0]).abs() < 1.0 && (got[1] - want[1]).abs() < 1.0,
+            "{got:?} for {want:?}"
+        );
+        assert!((want[0] - 128.0).abs() > 10.0 || (want[1] - 128.0).abs() > 10.0);
+        assert_eq!(
+            disc_colour(
+                &frame,
+                &Circle {
+                    x: -100.0,
+                    y: 40.0,
+                    r: 20.0
+                }
+            ),
+            None
+        );
+    }
 
     /// A coarse background `w` × `h` coarse pixels of `f` px each, its colour at
     /// each coarse pixel `colour(i, j)` (U, V), its luma 120.

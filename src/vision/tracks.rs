@@ -10,7 +10,7 @@ use serde::Serialize;
 use super::circle::Outline;
 use super::params::Params;
 use super::repeats;
-use super::tracker::{FrameFixes, LeftOut, Tracker, median, robust_sd};
+use super::tracker::{Fix, FrameFixes, LeftOut, Tracker, median, robust_sd};
 
 /// Why tracked frames give no tracks.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
@@ -610,6 +610,11 @@ fn leave_out_odd_fits(
     if let Some(r) = median(tracker.radii()) {
         off_the_line(frames, p.off_the_line * r);
         odd_radius(frames, p.odd_radius, p.odd_radius_share * r);
+        odd_colour(
+            frames,
+            (p.odd_colour, p.odd_colour_levels),
+            (p.rest_step * r, p.odd_colour_still),
+        );
         // Deceleration in px/s²: the scale given, or the one the radius gives.
         let px_per_m = scale.unwrap_or(r / radius);
         off_the_path(
@@ -666,6 +671,56 @@ fn odd_radius(frames: &mut [FrameFixes], sigmas: f64, floor: f64) {
                 .as_ref()
                 .is_ok_and(|fix| (fix.outline.circle.r - mid).abs() > within)
             {
+                *slot = Err(LeftOut::Poor);
+            }
+        }
+    }
+}
+
+/// Leaves out (as poor outlines) the fits whose disc's mean colour (`Fix::colour`)
+/// lies farther from the median of every fit's, in U or V, than `sigmas` robust
+/// scatters of them and `floor` levels, and that stay at one place: at least
+/// `still` other such fits lie within `near` px of each. Both balls are alike, so a
+/// ball-sized circle of another colour held at rest is a thing of the bench (a disc
+/// of the wall's clutter where the background learned the ball that later rests on
+/// it). A ball passing through coloured light changes colour as it moves: those fits
+/// stay (full looks 192 and 197: white balls under warm spots, 30–45 levels off).
+#[allow(clippy::indexing_slicing)] // planes 0 and 1 of a two-plane colour
+fn odd_colour(frames: &mut [FrameFixes], (sigmas, floor): (f64, f64), (near, still): (f64, usize)) {
+    let colours: Vec<[f64; 2]> = frames
+        .iter()
+        .flat_map(|f| f.iter().flatten().filter_map(|fix| fix.colour))
+        .collect();
+    let plane = |i: usize| -> Vec<f64> { colours.iter().map(|c| c[i]).collect() };
+    let (u, v) = (plane(0), plane(1));
+    let (Some(mu), Some(mv)) = (median(&u), median(&v)) else {
+        return;
+    };
+    let within = [
+        (sigmas * robust_sd(&u, mu)).max(floor),
+        (sigmas * robust_sd(&v, mv)).max(floor),
+    ];
+    let odd = |fix: &Fix| {
+        fix.colour
+            .is_some_and(|c| (c[0] - mu).abs() > within[0] || (c[1] - mv).abs() > within[1])
+    };
+    let centres: Vec<(f64, f64)> = frames
+        .iter()
+        .flat_map(|f| f.iter().flatten().filter(|fix| odd(fix)))
+        .map(|fix| (fix.outline.circle.x, fix.outline.circle.y))
+        .collect();
+    let at_rest = |fix: &Fix| {
+        let (x, y) = (fix.outline.circle.x, fix.outline.circle.y);
+        let others = centres
+            .iter()
+            .filter(|c| (c.0 - x).abs() <= near && (c.1 - y).abs() <= near)
+            .count();
+        // The fit itself is among `centres`.
+        others > still
+    };
+    for f in frames.iter_mut() {
+        for slot in f.iter_mut() {
+            if slot.as_ref().is_ok_and(|fix| odd(fix) && at_rest(fix)) {
                 *slot = Err(LeftOut::Poor);
             }
         }
@@ -1187,6 +1242,7 @@ mod tests {
             sigma: 0.1,
             mark: None,
             spots: [None; crate::vision::mark::SPOTS],
+            colour: None,
         })
     }
 
@@ -1386,6 +1442,65 @@ mod tests {
         odd_radius(&mut frames, 3.0, 0.02 * 38.0);
         assert!(frames[7][1].is_err());
         assert_eq!(kept(&frames), 47);
+    }
+
+    /// Full look 198's case: teal balls (U 146, V 85, their fits scattering by a few
+    /// levels as shadows cross them) and, for a third of one ball's frames, a grey disc
+    /// of the wall (U 115, V 122) at rest, fitted where the background learned the
+    /// ball that later rests on it. The grey fits are left out, every teal one is
+    /// kept, and so is a fit whose disc was out of the picture (no colour). Grey fits
+    /// that move with the ball (a ball in coloured light) are kept, as are fits that
+    /// differ by under the floor of levels, however tightly the rest agree.
+    #[test]
+    fn a_fit_of_another_colour_than_the_balls_is_left_out() {
+        let coloured = |grey: &dyn Fn(usize, usize) -> bool| {
+            let (mut frames, _) = collision();
+            for (k, f) in frames.iter_mut().enumerate() {
+                for (slot, g) in f.iter_mut().enumerate() {
+                    if let Ok(g) = g {
+                        let wobble = 3.0 * (k as f64 * 1.3 + slot as f64).sin();
+                        g.colour = Some(if grey(k, slot) {
+                            [115.0 + wobble, 122.0]
+                        } else {
+                            [146.0 + wobble, 85.0 - wobble]
+                        });
+                    }
+                }
+            }
+            frames
+        };
+        let grey = |k: usize, slot: usize| slot == 0 && k < 8;
+        let mut moving = coloured(&grey);
+        let mut frames = moving.clone();
+        for f in &mut frames[..8] {
+            if let Ok(g) = &mut f[0] {
+                (g.outline.circle.x, g.outline.circle.y) = (500.0 + 0.2 * g.sigma, 190.0);
+            }
+        }
+        if let Ok(g) = &mut frames[20][1] {
+            g.colour = None;
+        }
+        // Within a tenth of the radius (3.8 px) more than 3 others: at rest.
+        odd_colour(&mut frames, (6.0, 16.0), (3.8, 3));
+        assert!((0..8).all(|k| frames[k][0].is_err()));
+        assert_eq!(kept(&frames), 48 - 8);
+        assert!(frames[20][1].is_ok());
+        odd_colour(&mut moving, (6.0, 16.0), (3.8, 3));
+        assert_eq!(kept(&moving), 48);
+        // Off by 22 levels in U only: over 6 robust scatters of the others (3.1
+        // levels each), under a floor of 24: kept, and left out with no floor.
+        let off = || {
+            let mut frames = coloured(&|_, _| false);
+            if let Ok(g) = &mut frames[3][1] {
+                g.colour = Some([168.0, 85.0]);
+            }
+            frames
+        };
+        let (mut floored, mut bare) = (off(), off());
+        odd_colour(&mut floored, (6.0, 24.0), (3.8, 0));
+        assert_eq!(kept(&floored), 48);
+        odd_colour(&mut bare, (6.0, 0.0), (3.8, 0));
+        assert_eq!(kept(&bare), 47);
     }
 
     proptest::proptest! {

@@ -39,6 +39,7 @@ pub(super) fn fix(x: f64, y: f64, r: f64, mark: Option<(f64, f64)>) -> Result<Fi
             contrast: -40.0,
         }),
         spots: [None; groovelab::vision::mark::SPOTS],
+        colour: None,
     })
 }
 
