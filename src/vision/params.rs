@@ -285,7 +285,7 @@ pub struct Params {
     pub odd_colour: f64,
     /// The least such distance, levels. Default 16.
     pub odd_colour_levels: f64,
-    /// Such a fit is left out only where more than this many others lie within
+    /// Such a fit is left out only where at least this many others lie within
     /// `rest_step` radii of it (a thing at rest). Default 3.
     pub odd_colour_still: usize,
     /// The largest deceleration of a ball along the groove, m/s², from which how far

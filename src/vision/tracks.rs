@@ -711,12 +711,12 @@ fn odd_colour(frames: &mut [FrameFixes], (sigmas, floor): (f64, f64), (near, sti
         .collect();
     let at_rest = |fix: &Fix| {
         let (x, y) = (fix.outline.circle.x, fix.outline.circle.y);
-        let others = centres
+        // The fit itself is among `centres`: `still` others and it.
+        let here = centres
             .iter()
             .filter(|c| (c.0 - x).abs() <= near && (c.1 - y).abs() <= near)
             .count();
-        // The fit itself is among `centres`.
-        others > still
+        here > still
     };
     for f in frames.iter_mut() {
         for slot in f.iter_mut() {
