@@ -569,11 +569,7 @@ impl Tracker {
                 if self.radii.len() <= 64 || self.radii.len().is_multiple_of(256) {
                     self.radius = median(&self.radii);
                 }
-                let colour = disc_colour(frame, &o.circle);
-                Fix {
-                    colour,
-                    ..self.fix(img, o, noise, slot)
-                }
+                self.fix((frame, img), o, noise, slot)
             });
             if let Some(o) = out.get_mut(slot) {
                 *o = fix;
@@ -890,15 +886,16 @@ impl Tracker {
         }
     }
 
-    /// The ball `o` with its mark and the spots of its disc.
-    fn fix(&mut self, img: &Gray, o: Outline, noise: f64, slot: usize) -> Fix {
+    /// The ball `o` with its mark, the spots of its disc and its colour (`frame`
+    /// and its brightness `img`).
+    fn fix(&mut self, (frame, img): (&Frame, &Gray), o: Outline, noise: f64, slot: usize) -> Fix {
         let found = self.mark(img, &o, noise, slot);
         Fix {
             outline: o,
             sigma: 0.5 * (o.sigma[0] + o.sigma[1]),
             mark: found.mark,
             spots: found.spots,
-            colour: None,
+            colour: disc_colour(frame, &o.circle),
         }
     }
 
@@ -2099,30 +2096,18 @@ fn contrast(frame: &Frame, c: &Circle) -> Option<[f64; 3]> {
     Some([0, 1, 2].map(|i| (mean(&inner, i) - mean(&outer, i)).abs()))
 }
 
-/// The mean colour (U, V levels) of the upper half of the disc `c` within 0.8 of its
-/// radius (the rail hides the lower half, the edge blurs into the wall), read from
-/// `frame`'s colour planes every eighth of a radius; `None` where fewer than 8
-/// samples of it are in the picture.
+/// The mean colour (U, V levels) of the upper half of the disc `c`
+/// ([`upper_disc_pixels`]); `None` where fewer than 8 samples of it are in the
+/// picture.
 pub fn disc_colour(frame: &Frame, c: &Circle) -> Option<[f64; 2]> {
-    let step = (c.r / 8.0).max(1.0);
-    let (w, h) = (frame.width() as f64, frame.height() as f64);
     let mut sum = [0.0f64; 3];
-    let mut dy = -0.8 * c.r;
-    while dy < 0.0 {
-        let mut dx = -0.8 * c.r;
-        while dx <= 0.8 * c.r {
-            let (x, y) = (c.x + dx, c.y + dy);
-            if length(dx, dy) < 0.8 * c.r && x >= 0.0 && y >= 0.0 && x < w && y < h {
-                let ci = (y as usize / 2) * frame.chroma_width + x as usize / 2;
-                if let (Some(&u), Some(&v)) = (frame.u.get(ci), frame.v.get(ci)) {
-                    sum[0] += f64::from(u);
-                    sum[1] += f64::from(v);
-                    sum[2] += 1.0;
-                }
-            }
-            dx += step;
+    for (x, y) in upper_disc_pixels(frame, c) {
+        let ci = (y / 2) * frame.chroma_width + x / 2;
+        if let (Some(&u), Some(&v)) = (frame.u.get(ci), frame.v.get(ci)) {
+            sum[0] += f64::from(u);
+            sum[1] += f64::from(v);
+            sum[2] += 1.0;
         }
-        dy += step;
     }
     (sum[2] >= 8.0).then(|| [sum[0] / sum[2], sum[1] / sum[2]])
 }
@@ -2540,33 +2525,42 @@ fn coloured(frame: &Frame, c: &Circle, grey: f64) -> bool {
 }
 
 /// The median brightness and colour (U, V less 128) of the upper half of the disc
-/// `c` (above the rail; within 0.8 of its radius), `None` where none of it is in
-/// the picture.
+/// `c` ([`upper_disc_pixels`]), `None` where none of it is in the picture.
 fn upper_disc(frame: &Frame, c: &Circle) -> Option<[f32; 3]> {
     let (mut y, mut u, mut v) = (Vec::new(), Vec::new(), Vec::new());
-    let step = (c.r / 8.0).max(1.0);
-    let (w, h) = (frame.width() as f64, frame.height() as f64);
-    let mut dy = -0.8 * c.r;
-    while dy < 0.0 {
-        let mut dx = -0.8 * c.r;
-        while dx <= 0.8 * c.r {
-            let (x, yy) = (c.x + dx, c.y + dy);
-            if length(dx, dy) < 0.8 * c.r && x >= 0.0 && yy >= 0.0 && x < w && yy < h {
-                let (ix, iy) = (x as usize, yy as usize);
-                let ci = (iy / 2) * frame.chroma_width + ix / 2;
-                y.push(frame.luma.get(ix, iy));
-                u.push(frame.u.get(ci).map_or(0.0, |&q| f32::from(q) - 128.0));
-                v.push(frame.v.get(ci).map_or(0.0, |&q| f32::from(q) - 128.0));
-            }
-            dx += step;
-        }
-        dy += step;
+    for (ix, iy) in upper_disc_pixels(frame, c) {
+        let ci = (iy / 2) * frame.chroma_width + ix / 2;
+        y.push(frame.luma.get(ix, iy));
+        u.push(frame.u.get(ci).map_or(0.0, |&q| f32::from(q) - 128.0));
+        v.push(frame.v.get(ci).map_or(0.0, |&q| f32::from(q) - 128.0));
     }
     Some([
         select::median(&mut y)?,
         select::median(&mut u)?,
         select::median(&mut v)?,
     ])
+}
+
+/// The pixels of `frame` sampled over the upper half of the disc `c` (above the
+/// rail, which hides the lower half), within 0.8 of its radius (the edge blurs into
+/// the wall), every eighth of a radius (or pixel): those in the picture.
+fn upper_disc_pixels(frame: &Frame, c: &Circle) -> Vec<(usize, usize)> {
+    let step = (c.r / 8.0).max(1.0);
+    let (w, h) = (frame.width() as f64, frame.height() as f64);
+    let mut out = Vec::new();
+    let mut dy = -0.8 * c.r;
+    while dy < 0.0 {
+        let mut dx = -0.8 * c.r;
+        while dx <= 0.8 * c.r {
+            let (x, y) = (c.x + dx, c.y + dy);
+            if length(dx, dy) < 0.8 * c.r && x >= 0.0 && y >= 0.0 && x < w && y < h {
+                out.push((x as usize, y as usize));
+            }
+            dx += step;
+        }
+        dy += step;
+    }
+    out
 }
 
 /// True when the circle `c` (a fit) has its centre inside one of the blobs'

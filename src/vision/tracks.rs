@@ -1474,7 +1474,7 @@ mod tests {
         let mut frames = moving.clone();
         for f in &mut frames[..8] {
             if let Ok(g) = &mut f[0] {
-                (g.outline.circle.x, g.outline.circle.y) = (500.0 + 0.2 * g.sigma, 190.0);
+                (g.outline.circle.x, g.outline.circle.y) = (500.0, 190.0);
             }
         }
         if let Ok(g) = &mut frames[20][1] {
