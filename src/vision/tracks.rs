@@ -199,6 +199,12 @@ pub struct Calibration {
     pub groove_deg: f64,
     pub groove_deg_sigma: f64,
     pub groove_found: bool,
+    /// Where the balls' edge in colour lies from their outlines, px (negative:
+    /// inside), when farther than `Params::outer_agree` of the radius and the
+    /// balls' stacked pictures confirm the outlines: the radius's ± holds it. In
+    /// the JSON only when set.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub colour_edge_px: Option<f64>,
     /// The picture's point that is x = y = 0 of the tracks (the mean of every
     /// centre), px: with the scale and the groove's angle it turns metres back into
     /// pixels (the app draws the model over the video). Not in the JSON.
@@ -262,7 +268,8 @@ pub fn tracks(
     let along = |p: &[f64; 2]| p[0] * u.0 + p[1] * u.1;
     let mean_along = |s: usize| centres[s].iter().map(along).sum::<f64>() / centres[s].len() as f64;
     slots.sort_by(|a, b| mean_along(*a).total_cmp(&mean_along(*b)));
-    let (r_px, r_se, radius_scatter) = the_radius(tracker, frames, &slots, scale.is_none())?;
+    let (r_px, r_se, radius_scatter, colour_edge_px) =
+        the_radius(tracker, frames, &slots, scale.is_none())?;
     stands_still(
         &slots.iter().map(|&s| &centres[s][..]).collect::<Vec<_>>(),
         r_px,
@@ -286,6 +293,7 @@ pub fn tracks(
         groove_deg: angle.to_degrees(),
         groove_deg_sigma: angle_se.to_degrees(),
         groove_found: found,
+        colour_edge_px,
         origin_px: o,
     };
     let to_m = |x: f64, y: f64| {
@@ -349,15 +357,17 @@ fn stands_still(paths: &[&[[f64; 2]]], r_px: f64, p: &Params) -> Result<(), Trac
 }
 
 /// The balls' median fitted radius, px, its ± (the median's own standard error and
-/// the edge's systematic) and the radii's scatter (a share of it); with `refuse` (no
-/// scale given), why no scale is given from it: radii that scatter, or outlines off
-/// the balls' edge in colour.
+/// the edge's systematic), the radii's scatter (a share of it) and, where the
+/// balls' stacked pictures confirm outlines that their edge in colour lies far
+/// inside ([`pictures_confirm`]), that edge's offset, px; with `refuse` (no scale
+/// given), why no scale is given from it: radii that scatter, or outlines off the
+/// balls' edge in colour.
 fn the_radius(
     tracker: &Tracker,
     frames: &[FrameFixes],
     slots: &[usize],
     refuse: bool,
-) -> Result<(f64, f64, f64), TracksError> {
+) -> Result<(f64, f64, f64, Option<f64>), TracksError> {
     let p = &tracker.params;
     let radii = tracker.radii();
     let r_px = median(radii).unwrap_or(f64::NAN);
@@ -391,8 +401,13 @@ fn the_radius(
     }
     // Never a confident wrong scale: an outline pixels inside or outside the
     // ball's edge in colour, by more than two circles of one ball may differ
-    // (`outer_agree`), is no ball's outline.
-    if let Some(c) = colour.filter(|c| refuse && c.abs() > p.outer_agree * r_px) {
+    // (`outer_agree`), is no ball's outline; but for an edge in colour inside
+    // outlines that both balls' stacked pictures confirm (`pictures_confirm`).
+    let far = colour.filter(|c| c.abs() > p.outer_agree * r_px);
+    let confirmed = far.filter(|&c| {
+        c < 0.0 && refuse && pictures_confirm(tracker.picture_radii(), r_px, p.outer_agree)
+    });
+    if let Some(c) = far.filter(|_| refuse && confirmed.is_none()) {
         return Err(TracksError::ColourEdge {
             offset_px: c,
             radius_px: r_px,
@@ -415,7 +430,21 @@ fn the_radius(
             picture_px: q,
         });
     }
-    Ok((r_px, r_se, spread))
+    Ok((r_px, r_se, spread, confirmed))
+}
+
+/// Whether both balls' stacked pictures' radii `pictures` (`Tracker::picture_radii`:
+/// the wall behind each ball averaged out) lie within `agree` (`outer_agree`) of the
+/// frames' radius `r_px`. An edge in colour inside the frames' outlines says they take in
+/// the wall about the ball, or that the ball's colour fades before its edge (a
+/// shaded or glossy limb, read from colour planes of half the size: full look 52,
+/// 2.1 px inside outlines of 11.76 px for 11.85; small look 34, 2.5 px inside 11.62
+/// for 11.44). Outlines that take in the wall's pattern in every frame do not in
+/// the pictures (small look 117: 17.75 px, its pictures 17.26 and 14.93, for
+/// 14.93); outlines the pictures confirm are the ball's, and the colour's offset
+/// goes into the radius's ± (`edge_systematic`), over `outer_agree` of it.
+fn pictures_confirm(pictures: &[f64], r_px: f64, agree: f64) -> bool {
+    pictures.len() == 2 && pictures.iter().all(|&q| (r_px / q - 1.0).abs() <= agree)
 }
 
 /// The slots that hold a ball (seen in enough frames), or why the frames give no
@@ -1425,6 +1454,25 @@ mod tests {
         off_the_curve(&mut frames, &times, curve());
         assert!(frames[16][1].is_err());
         assert_eq!(kept(&frames), 41);
+    }
+
+    #[test]
+    fn only_both_balls_pictures_near_the_radius_confirm_it() {
+        // Full look 52 and small look 34: the ball's colour fading before its edge.
+        assert!(pictures_confirm(&[11.593, 11.575], 11.76, 0.1));
+        assert!(pictures_confirm(&[11.63, 11.56], 11.62, 0.1));
+        // Small look 117: outlines taking in the wall, one ball's picture too.
+        assert!(!pictures_confirm(&[17.26, 14.93], 17.75, 0.1));
+        // One picture, or none (the fits are the pictures' already): nothing to tell.
+        assert!(!pictures_confirm(&[11.6], 11.62, 0.1));
+        assert!(!pictures_confirm(&[], 11.62, 0.1));
+        // A picture 10 % under or over the radius still agrees; 11 % does not.
+        assert!(pictures_confirm(
+            &[10.0 / 1.1, 10.0 / 0.9],
+            10.0,
+            0.1 + 1e-12
+        ));
+        assert!(!pictures_confirm(&[10.0, 10.0 / 1.11], 10.0, 0.1));
     }
 
     #[test]

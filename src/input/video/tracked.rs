@@ -989,8 +989,17 @@ pub fn scale_note(c: &vision::tracks::Calibration, radius_from: &str) -> String 
     } else {
         let (v, e) = with_uncertainty(c.px_per_m, c.px_per_m_sigma.max(1e-9), 2);
         let (rv, re) = with_uncertainty(c.radius_px, c.radius_px_sigma.max(1e-9), 2);
+        // Why the ± is wide where the outlines' edge in colour lies far off them.
+        let colour = c.colour_edge_px.map_or(String::new(), |off| {
+            format!(
+                " (their edge in colour lies {:.1} px {} their outlines in brightness, {:.0} % of the radius, and the balls' stacked pictures, the wall behind them averaged out, agree with the outlines: the colour fades before the ball's edge, a shaded or glossy limb; the ± holds the difference)",
+                off.abs(),
+                if off > 0.0 { "outside" } else { "inside" },
+                100.0 * off.abs() / c.radius_px
+            )
+        });
         format!(
-            "scale {v} ± {e} px/m: the balls' fitted radius {rv} ± {re} px for R = {} ({radius_from}); speeds and μ_k from these tracks carry its {:.2} %, which `fit` adds to their own ±",
+            "scale {v} ± {e} px/m: the balls' fitted radius {rv} ± {re} px for R = {} ({radius_from}){colour}; speeds and μ_k from these tracks carry its {:.2} %, which `fit` adds to their own ±",
             show(c.radius_m, Dimension::Length),
             100.0 * c.px_per_m_sigma / c.px_per_m
         )

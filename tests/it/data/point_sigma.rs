@@ -179,6 +179,7 @@ fn the_tracker_text_keeps_each_points_sigma() {
             groove_deg: 0.0,
             groove_deg_sigma: 0.0,
             groove_found: false,
+            colour_edge_px: None,
             origin_px: (0.0, 0.0),
         },
     };

@@ -48,6 +48,7 @@ fn given(scatter: f64) -> Calibration {
         groove_deg: 0.0,
         groove_deg_sigma: 0.0,
         groove_found: false,
+        colour_edge_px: None,
         origin_px: (0.0, 0.0),
     }
 }
@@ -111,5 +112,35 @@ fn a_given_scale_that_puts_the_radius_off_r_says_so() {
         at(527.27 / 1.12).contains("12 % over R"),
         "{}",
         at(527.27 / 1.12)
+    );
+}
+
+/// A scale from outlines whose edge in colour lies far inside them, let through by
+/// the balls' stacked pictures (tracker 62), says so in its line: how far, the
+/// share of the radius, and that the ± holds it; a scale without says nothing of it.
+#[test]
+fn the_scale_line_says_why_an_edge_in_colour_widens_its_plus_minus() {
+    let from_radius = Calibration {
+        scale_given: false,
+        px_per_m: 527.3,
+        px_per_m_sigma: 92.0,
+        radius_px: 14.5,
+        radius_px_sigma: 2.53,
+        ..given(0.01)
+    };
+    let said = "their edge in colour lies";
+    assert!(!scale_note(&from_radius, "--radius").contains(said));
+    let line = scale_note(
+        &Calibration {
+            colour_edge_px: Some(-2.5),
+            ..from_radius
+        },
+        "--radius",
+    );
+    assert!(
+        line.contains("their edge in colour lies 2.5 px inside their outlines in brightness, 17 % of the radius")
+            && line.contains("the ± holds the difference")
+            && line.contains("17.45 %"),
+        "{line}"
     );
 }
