@@ -199,10 +199,10 @@ pub struct Calibration {
     pub groove_deg: f64,
     pub groove_deg_sigma: f64,
     pub groove_found: bool,
-    /// Where the balls' edge in colour lies from their outlines, px (negative:
-    /// inside), when farther than `Params::outer_agree` of the radius and the
-    /// balls' stacked pictures confirm the outlines: the radius's ± holds it. In
-    /// the JSON only when set.
+    /// How far the balls' edge in colour lies inside their outlines, px (negative),
+    /// when farther than `Params::outer_agree` of the radius and the balls' stacked
+    /// pictures confirm the outlines: the radius's ± holds it. In the JSON only when
+    /// set.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub colour_edge_px: Option<f64>,
     /// The picture's point that is x = y = 0 of the tracks (the mean of every
@@ -403,15 +403,15 @@ fn the_radius(
     // ball's edge in colour, by more than two circles of one ball may differ
     // (`outer_agree`), is no ball's outline; but for an edge in colour inside
     // outlines that both balls' stacked pictures confirm (`pictures_confirm`).
-    let far = colour.filter(|c| c.abs() > p.outer_agree * r_px);
-    let confirmed = far.filter(|&c| {
-        c < 0.0 && refuse && pictures_confirm(tracker.picture_radii(), r_px, p.outer_agree)
-    });
-    if let Some(c) = far.filter(|_| refuse && confirmed.is_none()) {
-        return Err(TracksError::ColourEdge {
-            offset_px: c,
-            radius_px: r_px,
-        });
+    let mut confirmed = None;
+    if let Some(c) = colour.filter(|c| refuse && c.abs() > p.outer_agree * r_px) {
+        if c > 0.0 || !pictures_confirm(tracker.picture_radii(), r_px, p.outer_agree) {
+            return Err(TracksError::ColourEdge {
+                offset_px: c,
+                radius_px: r_px,
+            });
+        }
+        confirmed = Some(c);
     }
     // Never a confident wrong scale: the balls' stacked pictures show their
     // outline with the wall behind them averaged out, inside the ball's edge by

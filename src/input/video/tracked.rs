@@ -509,31 +509,40 @@ fn tracks_or_stacked(
     whole: bool,
 ) -> (Result<vision::Tracks, vision::TracksError>, Option<String>) {
     let (radius, scale) = (options.radius, options.px_per_m);
-    // What stands where the stacked pictures give no tracks, and why they are sought.
-    let (first, refusal) = match vision::tracks(tracker, times.clone(), radius, scale) {
+    let first = vision::tracks(tracker, times.clone(), radius, scale);
+    // Why the stacked pictures are sought; `first` stands where they give no tracks.
+    let why = match &first {
         // Radii that scatter, or an edge in colour off the outlines: the frames'
         // outlines are not the ball's, its stacked picture's may be.
         Err(
             e @ (vision::TracksError::RadiiDisagree { .. }
             | vision::TracksError::ColourEdge { .. }
             | vision::TracksError::PictureDisagrees { .. }),
-        ) if whole => (Err(e.clone()), e),
+        ) if whole => e.clone(),
         // An edge in colour far inside outlines the pictures confirm: a scale, but
         // with a ± that holds the colour's offset; the pictures' own radius, where
         // they give tracks, is the surer (small look 71: 0.160 ± 0.008 against 0.169
-        // ± 0.044 for 0.17).
-        // (A band's such tracks give way to the whole frame's, which seeks them.)
-        Ok(t) if t.calibration.colour_edge_px.is_some() => {
+        // ± 0.044 for 0.17). A band's such tracks give way to the whole frame's,
+        // which seeks them.
+        Ok(vision::Tracks {
+            calibration:
+                vision::tracks::Calibration {
+                    colour_edge_px: Some(offset_px),
+                    radius_px,
+                    ..
+                },
+            ..
+        }) => {
             let why = vision::TracksError::ColourEdge {
-                offset_px: t.calibration.colour_edge_px.unwrap_or_default(),
-                radius_px: t.calibration.radius_px,
+                offset_px: *offset_px,
+                radius_px: *radius_px,
             };
             if !whole {
                 return (Err(why), None);
             }
-            (Ok(t), why)
+            why
         }
-        other => return (other, None),
+        _ => return (first, None),
     };
     let Some((again, radii)) = tracker.restacked() else {
         return (first, None);
@@ -541,7 +550,7 @@ fn tracks_or_stacked(
     match vision::tracks(&again, times, radius, scale) {
         Ok(tracks) => {
             *tracker = again;
-            let why = refusal.to_string();
+            let why = why.to_string();
             let why = why.trim_start_matches("tracking unsure: ");
             let note = format!(
                 "the radius from the balls' stacked pictures: {}; each ball's frames stacked at its centres (the wall behind it averages out), its radius from the outline there ({:.2} and {:.2} px, taken {:.0} % outside the outline: a shaded limb puts it inside), each frame's centre matched to its ball's picture",
@@ -1009,9 +1018,8 @@ pub fn scale_note(c: &vision::tracks::Calibration, radius_from: &str) -> String 
         // Why the ± is wide where the outlines' edge in colour lies far off them.
         let colour = c.colour_edge_px.map_or(String::new(), |off| {
             format!(
-                " (their edge in colour lies {:.1} px {} their outlines in brightness, {:.0} % of the radius, and the balls' stacked pictures, the wall behind them averaged out, agree with the outlines: the colour fades before the ball's edge, a shaded or glossy limb; the ± holds the difference)",
+                " (their edge in colour lies {:.1} px inside their outlines in brightness, {:.0} % of the radius, and the balls' stacked pictures, the wall behind them averaged out, agree with the outlines: the colour fades before the ball's edge, a shaded or glossy limb; the ± holds the difference)",
                 off.abs(),
-                if off > 0.0 { "outside" } else { "inside" },
                 100.0 * off.abs() / c.radius_px
             )
         });

@@ -138,19 +138,10 @@ fn an_edge_in_colour_inside_outlines_the_pictures_confirm_widens_the_plus_minus(
 /// its ± is wide.
 #[test]
 fn a_look_whose_pictures_confirm_its_outlines_is_tracked_with_a_wide_plus_minus() {
-    use groovelab::input::video::tracked::{self, Framing, Pictures};
-    let Some((clip, path)) = super::h264_first("colour_edge_cli", 34, Size::Small, None) else {
+    let Some((clip, t)) =
+        super::tracked_as_the_command_line("colour_edge_cli", (34, Size::Small, None))
+    else {
         return;
-    };
-    let done = tracked::track_framed(
-        &path,
-        &super::look_options(&clip),
-        &groovelab::study::Quiet,
-        Pictures::Skipped,
-        Framing::Band,
-    );
-    let Ok(Some(t)) = done else {
-        panic!("refused: {:?}", done.err().map(|r| r.error.to_string()));
     };
     let c = &t.tracks.calibration;
     let truth = clip.film.px_per_m();

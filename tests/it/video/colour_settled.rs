@@ -54,14 +54,7 @@ fn a_clear_outline_of_the_radius_is_not_replaced_in_colour() {
     let Some((clip, frames, tracked)) = small_71() else {
         return;
     };
-    let centre_rms = |params: Params| {
-        let fresh;
-        let t = if params == Params::default() {
-            tracked
-        } else {
-            fresh = vision::track(frames, params);
-            &fresh
-        };
+    let centre_rms = |t: &vision::Tracker| {
         let off: Vec<f64> = (t.frames.iter().enumerate())
             .flat_map(|(k, f)| f.iter().flatten().map(move |fix| (k, fix.outline.circle)))
             .map(|(k, c)| {
@@ -72,11 +65,14 @@ fn a_clear_outline_of_the_radius_is_not_replaced_in_colour() {
         assert!(off.len() >= 100, "{} fits", off.len());
         (off.iter().sum::<f64>() / off.len() as f64).sqrt()
     };
-    let with = centre_rms(Params::default());
-    let without = centre_rms(Params {
-        colour_settled: 0.0,
-        ..Params::default()
-    });
+    let with = centre_rms(tracked);
+    let without = centre_rms(&vision::track(
+        frames,
+        Params {
+            colour_settled: 0.0,
+            ..Params::default()
+        },
+    ));
     assert!(with < 0.15, "with the rule: centres {with:.3} px RMS off");
     assert!(without > 0.5, "without: centres {without:.3} px RMS off");
 }

@@ -83,23 +83,12 @@ pub(crate) fn h264_first(
 /// (nothing is checked without ffmpeg).
 pub(crate) fn assert_tracked_to_its_scale(
     area: &str,
-    (seed, size, first): (u64, crate::film::looks::Size, Option<usize>),
+    look: (u64, crate::film::looks::Size, Option<usize>),
     share: f64,
     note: &str,
 ) {
-    use groovelab::input::video::tracked::{self, Framing, Pictures};
-    let Some((clip, path)) = h264_first(area, seed, size, first) else {
+    let Some((clip, t)) = tracked_as_the_command_line(area, look) else {
         return;
-    };
-    let done = tracked::track_framed(
-        &path,
-        &look_options(&clip),
-        &groovelab::study::Quiet,
-        Pictures::Skipped,
-        Framing::Band,
-    );
-    let Ok(Some(t)) = done else {
-        panic!("refused: {:?}", done.err().map(|r| r.error.to_string()));
     };
     let c = &t.tracks.calibration;
     let truth = clip.film.px_per_m();
@@ -111,6 +100,31 @@ pub(crate) fn assert_tracked_to_its_scale(
         c.px_per_m_sigma
     );
     assert!(t.notes.iter().any(|n| n.starts_with(note)), "{:?}", t.notes);
+}
+
+/// The look `seed` of `size` (its `first` frames where given) as H.264 in `area`,
+/// tracked as the command line tracks it (its band first, tracked again where
+/// refused); panics where it is refused; `None` without ffmpeg.
+pub(crate) fn tracked_as_the_command_line(
+    area: &str,
+    (seed, size, first): (u64, crate::film::looks::Size, Option<usize>),
+) -> Option<(
+    crate::film::looks::Clip,
+    groovelab::input::video::tracked::Tracked,
+)> {
+    use groovelab::input::video::tracked::{self, Framing, Pictures};
+    let (clip, path) = h264_first(area, seed, size, first)?;
+    let done = tracked::track_framed(
+        &path,
+        &look_options(&clip),
+        &groovelab::study::Quiet,
+        Pictures::Skipped,
+        Framing::Band,
+    );
+    let Ok(Some(t)) = done else {
+        panic!("refused: {:?}", done.err().map(|r| r.error.to_string()));
+    };
+    Some((clip, t))
 }
 
 /// The options a user tracks `clip` with: its R (`--radius`) and frame rate, nothing
