@@ -399,6 +399,9 @@ pub(super) fn track_table(
             p.agreement().sentence()
         );
     }
+    if let Some(slips) = &f.slips {
+        let _ = writeln!(out, "  {}", slips_sentence(slips, found.impact_t));
+    }
     for (what, m) in [("velocity", v), ("position", p)] {
         for n in &m.not_identified {
             let _ = writeln!(
@@ -414,6 +417,30 @@ pub(super) fn track_table(
         "  (the velocity fit takes the model through the same local fits as the data, profiles out the impact time and counts the frames neighbouring points share; the position fit needs no derivatives and is the more precise: quote it)"
     );
     out
+}
+
+/// The frames left out of a track's fits as slips, in a sentence: at the file's
+/// times (the series' t plus `file_t0`, the first impact's time in the file) and how
+/// far off each was.
+fn slips_sentence(s: &fit::slips::Slips, file_t0: f64) -> String {
+    let mm = |v: f64| format!("{:.2}", show_small(v.abs(), Dimension::Length));
+    let times: Vec<String> = s.t.iter().map(|t| format!("{:.3}", t + file_t0)).collect();
+    let off: Vec<String> = s.residual.iter().map(|&r| mm(r)).collect();
+    format!(
+        "{} of {} frames left out of both fits, as tracking slips: their centres lie over {} ({:.0}× the residuals' spread) off the first fit's model (t = {} s of the file; {} off){}; check them with track --overlay",
+        s.t.len(),
+        s.frames,
+        mm(s.beyond),
+        fit::slips::SLIP_SPREADS,
+        times.join(", "),
+        off.join(", "),
+        match s.velocities_left_out {
+            0 => String::new(),
+            k => format!(
+                ", and {k} derived velocities of other frames that they move beyond their ±"
+            ),
+        }
+    )
 }
 
 /// The rows of v0, e and c_rr where either fit freed them: the velocities' `v` and

@@ -28,6 +28,7 @@ pub(crate) use model::tests::blank as blank_fit;
 mod problem;
 mod regime;
 mod residuals;
+pub mod slips;
 mod tracks;
 mod uncertainty;
 
@@ -81,6 +82,10 @@ pub struct Fits {
     /// The candidate models compared by AIC and BIC ([`compare_models`]), one marked
     /// `supported`.
     pub models: Vec<Candidate>,
+    /// A track's frames far off the first fit's model, left out of these fits
+    /// ([`slips`]); `None` where there were none.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub slips: Option<slips::Slips>,
 }
 
 /// Why the headline of [`Fits`] is its model.
@@ -109,17 +114,44 @@ pub struct Ask {
 
 /// Line fit over the window asked and every candidate model fitted to `m` on
 /// `scene` ([`compare_models`], with the model `ask.free` among them when given): the
-/// headline is that model when given, else the one the data support. Stops when
-/// `progress` says so (`FitError::Cancelled`), or when the fits together spend the
-/// work budget ([`WORK_BUDGET`]: `FitError::Budget`).
+/// headline is that model when given, else the one the data support. A track's
+/// frames far off the headline ([`slips`]) are left out and everything fitted again
+/// without them, said in [`Fits::slips`]. Stops when `progress` says so
+/// (`FitError::Cancelled`), or when the fits together spend the work budget
+/// ([`WORK_BUDGET`]: `FitError::Budget`).
 pub fn fit_all(
     scene: &Scene,
     m: &Measured,
     ask: &Ask,
     progress: &dyn Progress,
 ) -> Result<Fits, FitError> {
-    let (window, free) = (ask.window, ask.free.as_deref());
     let mut evals = problem::Evals::new(progress);
+    let fits = fit_points(scene, (m, m), ask, &mut evals)?;
+    let Some(slips) = slips::of(scene, m, &fits.model_fit, &mut evals) else {
+        return Ok(fits);
+    };
+    let (positions, velocities) = slips::without(m, &slips.points);
+    match fit_points(scene, (&positions, &velocities), ask, &mut evals) {
+        Ok(again) => Ok(Fits {
+            slips: Some(slips),
+            ..again
+        }),
+        Err(FitError::Cancelled) => Err(FitError::Cancelled),
+        // Too few frames left, or the budget spent: the first fits stand, slips and all.
+        Err(_) => Ok(fits),
+    }
+}
+
+/// [`fit_all`]'s fits of the series `m` as `(positions, velocities)`: the candidate
+/// models (fitted to a track's positions) on the first, the velocity fit and the
+/// line fits on the second (the same series but where slips are left out).
+fn fit_points(
+    scene: &Scene,
+    (m, mv): (&Measured, &Measured),
+    ask: &Ask,
+    evals: &mut problem::Evals,
+) -> Result<Fits, FitError> {
+    let (window, free) = (ask.window, ask.free.as_deref());
     let same = |a: &[Free], b: &[Free]| a.len() == b.len() && a.iter().all(|f| b.contains(f));
     let mut sets = choice::candidates(m, ask.v0_measured);
     let simplest = sets.first().cloned().unwrap_or_default();
@@ -127,7 +159,7 @@ pub fn fit_all(
     if let Some(f) = extra {
         sets.push(f.to_vec());
     }
-    let mut models = choice::candidates_within(scene, m, sets, &mut evals)?;
+    let mut models = choice::candidates_within(scene, m, sets, evals)?;
     // A set asked for beside the usual ones witnesses no model's leaving out.
     if let Some(f) = extra {
         choice::mark(&mut models, &|c| !same(&c.free, f));
@@ -156,16 +188,9 @@ pub fn fit_all(
     // A track's headline is fitted to its positions: the same model to its derived
     // velocities as a check.
     let velocity_fit = match head.fit.fitted_to {
-        "positions" => Some(
-            model::scored_fit(
-                scene,
-                m,
-                &head.free,
-                residuals::Target::Velocity,
-                &mut evals,
-            )?
-            .fit,
-        ),
+        "positions" => {
+            Some(model::scored_fit(scene, mv, &head.free, residuals::Target::Velocity, evals)?.fit)
+        }
         _ => None,
     };
     let given = [window.0.is_some(), window.1.is_some()];
@@ -173,13 +198,13 @@ pub fn fit_all(
     // says it poorly: the fitted model does ([`regime::sliding_end`]).
     // (Of a track, by the fit to the velocities it derives.)
     let window = match window {
-        (from, None) if !regime::v_t_says_sliding_end(m) => {
+        (from, None) if !regime::v_t_says_sliding_end(mv) => {
             let by = velocity_fit.as_ref().map_or(fitted, |v| v.scene_of(scene));
-            (from, regime::sliding_end(m, &by))
+            (from, regime::sliding_end(mv, &by))
         }
         w => w,
     };
-    let (line_fit, no_line_fit) = line_fits(m, scene, window, given)?;
+    let (line_fit, no_line_fit) = line_fits(mv, scene, window, given)?;
     // μ_k,cm against μ_k,t: a verdict of every model fit (the same line fits).
     let lines_disagree = line_fit.as_ref().and_then(LineFit::disagree);
     // A track's two fits of one model measure one μ_k: apart, the tracks are in doubt.
@@ -206,6 +231,7 @@ pub fn fit_all(
         mu_alone: judged(mu_alone),
         velocity_fit: velocity_fit.map(judged),
         models,
+        slips: None,
     };
     check_finite(&fits, m, scene)?;
     Ok(fits)

@@ -110,6 +110,23 @@ pub(super) fn labelled_residuals(
     }
 }
 
+/// Each point's centre residual of the position fit of `scene` against `m`, m: the
+/// model's x minus the data's, with the impact's time, place and mark angle profiled
+/// out as the fit does (weighted as it is); NaN where x is not measured.
+pub(super) fn centre_misses(scene: &Scene, m: &Measured, evals: &mut Evals) -> Vec<f64> {
+    let sol = evals.solve(scene, start(m));
+    let idx: Vec<usize> = (0..m.t().len()).collect();
+    let (rows, shift) = aligned(scene, &sol, m, &idx, true);
+    let mut out = vec![f64::NAN; m.t().len()];
+    for (row, (i, spin)) in &rows {
+        // A weighted row holds its weight w as ∂/∂δx = −w: over it, metres again.
+        if let (Some(o), false) = (out.get_mut(*i), *spin) {
+            *o = shifted(row, &shift) / -row[2];
+        }
+    }
+    out
+}
+
 /// One over a residual's uncertainty (1 unweighted or without one); `None` for a
 /// residual that is not a number or whose uncertainty is not usable (left out; a
 /// column without point `i` has none usable).

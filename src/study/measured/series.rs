@@ -436,6 +436,22 @@ impl Measured {
         }
     }
 
+    /// The series with v_t (and its σ) a gap at each point `gap` names: not measured
+    /// there, as where the mark was hidden.
+    pub fn without_v_t_at(&self, gap: impl Fn(usize) -> bool) -> Measured {
+        let cut = |v: &[f64]| -> Vec<f64> {
+            v.iter()
+                .enumerate()
+                .map(|(i, &x)| if gap(i) { f64::NAN } else { x })
+                .collect()
+        };
+        Measured {
+            v_t: cut(&self.v_t),
+            v_t_sigma: self.v_t_sigma.as_deref().map(cut),
+            ..self.clone()
+        }
+    }
+
     /// The series with its times moved by `dt` s (finite): they still increase. A
     /// shift that would make a time non-finite or merge two is refused.
     pub fn shifted(&self, dt: f64) -> Result<Measured, Rule> {

@@ -289,6 +289,15 @@ fn model_fits_lines(f: &fit::Fits, width: usize, lines: &mut Ranked<'static>, th
         Some(v) => both_fits(v, &f.model_fit, width, lines, theme),
     }
     let g = theme.glyphs;
+    if let Some(s) = &f.slips {
+        let text = format!(
+            "{} of {} frames left out as tracking slips (over {:.2} off the model; `fit` lists them)",
+            s.t.len(),
+            s.frames,
+            show_small(s.beyond, Dimension::Length)
+        );
+        lines.push((5, Line::from(Span::styled(g.text(&text), theme.dim))));
+    }
     let a = &f.mu_alone;
     let text = if a.model == f.model_fit.model {
         format!("{}_k alone: the same fit", g.mu)
