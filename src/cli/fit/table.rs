@@ -427,7 +427,7 @@ fn slips_sentence(s: &fit::slips::Slips, file_t0: f64) -> String {
     let times: Vec<String> = s.t.iter().map(|t| format!("{:.3}", t + file_t0)).collect();
     let off: Vec<String> = s.residual.iter().map(|&r| mm(r)).collect();
     format!(
-        "{} of {} frames left out of both fits, as tracking slips: their centres lie over {} ({:.0}× the residuals' spread) off the first fit's model (t = {} s of the file; {} off){}; check them with track --overlay",
+        "{} of {} frames left out of both fits, as tracking slips: their centres lie over {} ({:.0}× the residuals' spread) off the model fitted without them (t = {} s of the file; {} off){}; check them with track --overlay",
         s.t.len(),
         s.frames,
         mm(s.beyond),

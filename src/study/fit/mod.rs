@@ -82,8 +82,8 @@ pub struct Fits {
     /// The candidate models compared by AIC and BIC ([`compare_models`]), one marked
     /// `supported`.
     pub models: Vec<Candidate>,
-    /// A track's frames far off the first fit's model, left out of these fits
-    /// ([`slips`]); `None` where there were none.
+    /// A track's frames far off the model, left out of these fits ([`slips`]);
+    /// `None` where there were none.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub slips: Option<slips::Slips>,
 }
@@ -116,7 +116,8 @@ pub struct Ask {
 /// `scene` ([`compare_models`], with the model `ask.free` among them when given): the
 /// headline is that model when given, else the one the data support. A track's
 /// frames far off the headline ([`slips`]) are left out and everything fitted again
-/// without them, said in [`Fits::slips`]. Stops when `progress` says so
+/// without them, until the fit finds no others (at most [`slips::SLIP_ROUNDS`]
+/// times), said in [`Fits::slips`]. Stops when `progress` says so
 /// (`FitError::Cancelled`), or when the fits together spend the work budget
 /// ([`WORK_BUDGET`]: `FitError::Budget`).
 pub fn fit_all(
@@ -126,20 +127,36 @@ pub fn fit_all(
     progress: &dyn Progress,
 ) -> Result<Fits, FitError> {
     let mut evals = problem::Evals::new(progress);
-    let fits = fit_points(scene, (m, m), ask, &mut evals)?;
-    let Some(slips) = slips::of(scene, m, &fits.model_fit, &mut evals) else {
-        return Ok(fits);
-    };
-    let (positions, velocities) = slips::without(m, &slips.points);
-    match fit_points(scene, (&positions, &velocities), ask, &mut evals) {
-        Ok(again) => Ok(Fits {
-            slips: Some(slips),
-            ..again
-        }),
-        Err(FitError::Cancelled) => Err(FitError::Cancelled),
-        // Too few frames left, or the budget spent: the first fits stand, slips and all.
-        Err(_) => Ok(fits),
+    let mut fits = fit_points(scene, (m, m), ask, &mut evals)?;
+    // Large slips pull the first fit, and its residuals spread wider than the track's:
+    // a smaller slip shows only against the fit made without the large ones.
+    let mut left_out: Option<slips::Slips> = None;
+    for _ in 0..slips::SLIP_ROUNDS {
+        let Some(found) = slips::of(scene, m, &fits.model_fit, left_out.as_ref(), &mut evals)
+        else {
+            break;
+        };
+        let same = |s: &slips::Slips| {
+            s.points
+                .iter()
+                .map(|p| p.0)
+                .eq(found.points.iter().map(|p| p.0))
+        };
+        if left_out.as_ref().is_some_and(same) {
+            break;
+        }
+        let (positions, velocities) = slips::without(m, &found.points);
+        match fit_points(scene, (&positions, &velocities), ask, &mut evals) {
+            Ok(again) => (fits, left_out) = (again, Some(found)),
+            Err(FitError::Cancelled) => return Err(FitError::Cancelled),
+            // Too few frames left, or the budget spent: the fits before stand.
+            Err(_) => break,
+        }
     }
+    Ok(Fits {
+        slips: left_out,
+        ..fits
+    })
 }
 
 /// [`fit_all`]'s fits of the series `m` as `(positions, velocities)`: the candidate

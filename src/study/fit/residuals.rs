@@ -112,19 +112,30 @@ pub(super) fn labelled_residuals(
 
 /// Each point's centre residual of the position fit of `scene` against `m`, m: the
 /// model's x minus the data's, with the impact's time, place and mark angle profiled
-/// out as the fit does (weighted as it is); NaN where x is not measured.
-pub(super) fn centre_misses(scene: &Scene, m: &Measured, evals: &mut Evals) -> Vec<f64> {
+/// out as the fit does (weighted as it is) over the points but those `out` (frames
+/// left out of the fit, whose own residuals would pull the shifts); NaN where x is
+/// not measured.
+pub(super) fn centre_misses(
+    scene: &Scene,
+    m: &Measured,
+    out: &[usize],
+    evals: &mut Evals,
+) -> Vec<f64> {
     let sol = evals.solve(scene, start(m));
-    let idx: Vec<usize> = (0..m.t().len()).collect();
-    let (rows, shift) = aligned(scene, &sol, m, &idx, true);
-    let mut out = vec![f64::NAN; m.t().len()];
+    let kept: Vec<usize> = (0..m.t().len())
+        .filter(|i| out.binary_search(i).is_err())
+        .collect();
+    let (_, shift, clock) = aligned(scene, &sol, m, &kept, true);
+    let all: Vec<usize> = (0..m.t().len()).collect();
+    let rows = position_rows(scene, &sol, m, &all, true, clock);
+    let mut misses = vec![f64::NAN; m.t().len()];
     for (row, (i, spin)) in &rows {
         // A weighted row holds its weight w as ∂/∂δx = −w: over it, metres again.
-        if let (Some(o), false) = (out.get_mut(*i), *spin) {
+        if let (Some(o), false) = (misses.get_mut(*i), *spin) {
             *o = shifted(row, &shift) / -row[2];
         }
     }
-    out
+    misses
 }
 
 /// One over a residual's uncertainty (1 unweighted or without one); `None` for a
@@ -270,7 +281,7 @@ fn position_residuals(
     idx: &[usize],
     weighted: bool,
 ) -> (Vec<f64>, Vec<Label>) {
-    let (rows, shift) = aligned(scene, sol, m, idx, weighted);
+    let (rows, shift, _) = aligned(scene, sol, m, idx, weighted);
     rows.iter()
         .map(|(row, label)| (shifted(row, &shift), *label))
         .filter(|(d, _)| d.is_finite())
@@ -284,11 +295,15 @@ fn shifted(row: &[f64; 4], shift: &[f64]) -> f64 {
     r + d.iter().zip(shift).map(|(d, s)| d * s).sum::<f64>()
 }
 
+/// [`position_rows`]' rows: each residual with its derivatives by the shifts, and
+/// its frame and whether the mark's.
+type PositionRows = Vec<([f64; 4], Label)>;
+
 /// Most Newton steps of the impact time's shift ([`aligned`]).
 const SHIFT_STEPS: usize = 6;
 
 /// The [`position_rows`] with the model's clock moved by the profiled impact time
-/// shift, and the remaining linear shifts (δt left, δx, δθ: [`profiled_shift`]) that
+/// shift (returned last), and the remaining linear shifts (δt left, δx, δθ: [`profiled_shift`]) that
 /// make them the residuals. The time shift is not linear (x moves by v δt only
 /// within one phase: an impact or the end of sliding between a frame and its shifted
 /// time breaks it), so it is found by Newton steps on the model's own run, as long as
@@ -300,7 +315,7 @@ fn aligned(
     m: &Measured,
     idx: &[usize],
     weighted: bool,
-) -> (Vec<([f64; 4], Label)>, Vec<f64>) {
+) -> (PositionRows, Vec<f64>, f64) {
     let mark = m.angle().is_some();
     let square = |rows: &[([f64; 4], Label)], shift: &[f64]| -> f64 {
         rows.iter()
@@ -330,7 +345,7 @@ fn aligned(
         }
         (clock, rows, shift, cost) = (clock + step, next_rows, next, Some(next_cost));
     }
-    (rows, shift)
+    (rows, shift, clock)
 }
 
 /// Each position residual of `scene`'s run `sol` against the track `m` at `idx`, the
@@ -511,7 +526,7 @@ pub fn aligned_track(scene: &Scene, sol: &Solution, m: &Measured) -> Option<Vec<
         .filter(|(_, t)| (sol.t_start..=sol.t_end).contains(*t))
         .map(|(i, _)| i)
         .collect();
-    let (rows, shift) = aligned(scene, sol, m, &idx, true);
+    let (rows, shift, _) = aligned(scene, sol, m, &idx, true);
     // The time and place shifts, zero where they could not be solved (as there).
     let (dt, dx) = match shift.as_slice() {
         [dt, dx, ..] => (*dt, *dx),
