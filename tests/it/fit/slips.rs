@@ -37,10 +37,10 @@ fn fits_of(scene: &Scene, track: &Track) -> (Fits, Found) {
     (fits, series.found().cloned().unwrap())
 }
 
-/// The moving ball's frozen frames after the impact (sliding back at 0.5–0.7 m/s, or
+/// The moving ball's frozen frames after the impact (sliding back at 0.4 m/s, or
 /// rolling at 0.25 m/s: 4–7 mm a frame at 50–60 frames/s, where the centres scatter
 /// by 0.1–0.3 mm) are the slips, exactly, and both fits are then as on the track
-/// unfrozen: at several frame rates, noises and runs of one to three frames.
+/// unfrozen: at two frame rates and noises, runs of one to three frames.
 #[test]
 fn frozen_frames_are_left_out_as_slips_and_the_fits_agree_on_the_truth() {
     let scene = preset_scene("paper-b4.9");
