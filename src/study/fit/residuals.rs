@@ -303,8 +303,8 @@ type PositionRows = Vec<([f64; 4], Label)>;
 const SHIFT_STEPS: usize = 6;
 
 /// The [`position_rows`] with the model's clock moved by the profiled impact time
-/// shift (returned last), and the remaining linear shifts (δt left, δx, δθ: [`profiled_shift`]) that
-/// make them the residuals. The time shift is not linear (x moves by v δt only
+/// shift (returned last), and the remaining linear shifts (δt left, δx, δθ:
+/// [`profiled_shift`]) that make them the residuals. The time shift is not linear (x moves by v δt only
 /// within one phase: an impact or the end of sliding between a frame and its shifted
 /// time breaks it), so it is found by Newton steps on the model's own run, as long as
 /// each lowers the residuals: a linear shift alone left 0.02 mm residuals on an

@@ -1,8 +1,8 @@
 //! Frames of a position track whose centre lies far off the fitted model: slips of
 //! the tracking (a heavily compressed clip's frame that shows the ball where a
 //! neighbouring frame has it, a mis-click in Tracker). They are found from the
-//! headline's centre residuals, left out of a second fit with every derived velocity
-//! whose local fit takes them in, and said.
+//! headline's centre residuals and left out of the fits made again (with each derived
+//! velocity they move beyond its ±), and said.
 
 use serde::Serialize;
 
@@ -54,8 +54,9 @@ pub struct Slips {
 
 /// The slips of the series `m` against its position fit `head` on `scene` (made
 /// without the slips found `before`, which then weigh nothing in the shifts the
-/// residuals are aligned by, as in the fit): `None` for a fit to velocities, or where no frame lies beyond [`SLIP_SPREADS`] robust
-/// spreads (and the data's own scatter), or more than [`SLIP_SHARE`] of them do.
+/// residuals are aligned by, as in the fit): `None` for a fit to velocities, or
+/// where no frame lies beyond [`SLIP_SPREADS`] robust spreads (and the data's own
+/// scatter), or more than [`SLIP_SHARE`] of them do.
 pub(super) fn of(
     scene: &Scene,
     m: &Measured,
@@ -85,7 +86,10 @@ pub(super) fn of(
             .collect(),
         beyond,
         frames: misses.iter().filter(|r| r.is_finite()).count(),
-        velocities_left_out: m.t().len() - vel.t().len() - with_misses.len(),
+        velocities_left_out: m
+            .t()
+            .len()
+            .saturating_sub(vel.t().len() + with_misses.len()),
         points: with_misses,
     })
 }
