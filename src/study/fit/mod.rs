@@ -132,20 +132,14 @@ pub fn fit_all(
     // a smaller slip shows only against the fit made without the large ones.
     let mut left_out: Option<slips::Slips> = None;
     for _ in 0..slips::SLIP_ROUNDS {
-        let Some(found) = slips::of(scene, m, &fits.model_fit, left_out.as_ref(), &mut evals)
+        let Some((found, (positions, velocities))) =
+            slips::of(scene, m, &fits.model_fit, left_out.as_ref(), &mut evals)
         else {
             break;
         };
-        let same = |s: &slips::Slips| {
-            s.points
-                .iter()
-                .map(|p| p.0)
-                .eq(found.points.iter().map(|p| p.0))
-        };
-        if left_out.as_ref().is_some_and(same) {
+        if left_out.as_ref().is_some_and(|s| s.points == found.points) {
             break;
         }
-        let (positions, velocities) = slips::without(m, &found.points);
         match fit_points(scene, (&positions, &velocities), ask, &mut evals) {
             Ok(again) => (fits, left_out) = (again, Some(found)),
             Err(FitError::Cancelled) => return Err(FitError::Cancelled),

@@ -47,14 +47,15 @@ pub struct Slips {
     /// Derived velocities of other frames left out of the velocity fit and the line
     /// fits with them (each whose local fit the slips move beyond its ±).
     pub velocities_left_out: usize,
-    /// The slipped points' indices in the series, with their residuals.
+    /// The slipped points' indices in the series, in order (`residual` is theirs).
     #[serde(skip)]
-    pub points: Vec<(usize, f64)>,
+    pub points: Vec<usize>,
 }
 
 /// The slips of the series `m` against its position fit `head` on `scene` (made
 /// without the slips found `before`, which then weigh nothing in the shifts the
-/// residuals are aligned by, as in the fit): `None` for a fit to velocities, or
+/// residuals are aligned by, as in the fit), with `m` without them for the position
+/// fit and for the velocity fit ([`without`]): `None` for a fit to velocities, or
 /// where no frame lies beyond [`SLIP_SPREADS`] robust spreads (and the data's own
 /// scatter), or more than [`SLIP_SHARE`] of them do.
 pub(super) fn of(
@@ -63,42 +64,38 @@ pub(super) fn of(
     head: &ModelFit,
     before: Option<&Slips>,
     evals: &mut Evals,
-) -> Option<Slips> {
+) -> Option<(Slips, (Measured, Measured))> {
     if head.fitted_to != "positions" {
         return None;
     }
-    let out: Vec<usize> = before.map_or_else(Vec::new, |s| s.points.iter().map(|p| p.0).collect());
-    let misses = residuals::centre_misses(&head.scene_of(scene), m, &out, evals);
+    let out = before.map_or(&[][..], |s| &s.points[..]);
+    let misses = residuals::centre_misses(&head.scene_of(scene), m, out, evals);
     let (points, beyond) = slipped(&misses, head.scatter.unwrap_or(0.0))?;
-    let with_misses: Vec<(usize, f64)> = points
+    // `slipped` names only indices of `misses`, each with a finite residual.
+    let residual: Vec<f64> = points
         .iter()
-        .filter_map(|&i| Some((i, *misses.get(i)?)))
+        .filter_map(|&i| misses.get(i).copied())
         .collect();
-    let (_, vel) = without(m, &with_misses);
-    Some(Slips {
+    let (positions, velocities) = without(m, &points, &residual);
+    let slips = Slips {
         t: points
             .iter()
             .filter_map(|&i| m.t().get(i).copied())
             .collect(),
-        residual: points
-            .iter()
-            .filter_map(|&i| misses.get(i).copied())
-            .collect(),
+        residual,
         beyond,
         frames: misses.iter().filter(|r| r.is_finite()).count(),
-        velocities_left_out: m
-            .t()
-            .len()
-            .saturating_sub(vel.t().len() + with_misses.len()),
-        points: with_misses,
-    })
+        velocities_left_out: positions.t().len().saturating_sub(velocities.t().len()),
+        points,
+    };
+    Some((slips, (positions, velocities)))
 }
 
 /// The indices of `misses` (residuals, NaN where none) beyond [`SLIP_SPREADS`] times
 /// their robust spread, the data's `scatter` and [`PERFECT_POSITION_RMS`] (exact data
 /// have no spread to speak of), with that bound; `None` where there are none, or
 /// more than [`SLIP_SHARE`] of the residuals.
-pub fn slipped(misses: &[f64], scatter: f64) -> Option<(Vec<usize>, f64)> {
+fn slipped(misses: &[f64], scatter: f64) -> Option<(Vec<usize>, f64)> {
     let mut size: Vec<f64> = misses
         .iter()
         .filter(|r| r.is_finite())
@@ -119,17 +116,17 @@ pub fn slipped(misses: &[f64], scatter: f64) -> Option<(Vec<usize>, f64)> {
     (!out.is_empty() && out.len() <= most).then_some((out, beyond))
 }
 
-/// `m` without the points `slips` (each with its centre residual, m): for the
-/// position fit, those points; for the velocity fit and the line fits, also every
-/// point whose derived v_cm the slips move by more than its own standard error (its
-/// local fit's weight on each slipped frame times that frame's residual: a slip in a
-/// local fit over many frames moves its slope little, and that velocity stays), and
-/// every derived v_t whose local fit takes in a slipped frame (a gap: the mark there
-/// is off by its own amount, which the centre's residual does not tell).
-pub(super) fn without(m: &Measured, slips: &[(usize, f64)]) -> (Measured, Measured) {
+/// `m` without the points `slips` (in order, their centre residuals `residual`, m):
+/// for the position fit, those points; for the velocity fit and the line fits, also
+/// every point whose derived v_cm the slips move by more than its own standard error
+/// (its local fit's weight on each slipped frame times that frame's residual: a slip
+/// in a local fit over many frames moves its slope little, and that velocity stays),
+/// and every derived v_t whose local fit takes in a slipped frame (a gap: the mark
+/// there is off by its own amount, which the centre's residual does not tell).
+fn without(m: &Measured, slips: &[usize], residual: &[f64]) -> (Measured, Measured) {
     // Both lists below are in the order of the points (a series may hold a million).
-    let slipped = |i: usize| slips.binary_search_by_key(&i, |s| s.0).is_ok();
-    let positions = m.retain_points(|i| !slipped(i));
+    let is_slip = |i: usize| slips.binary_search(&i).is_ok();
+    let positions = m.retain_points(|i| !is_slip(i));
     let Some(st) = m.stencils() else {
         return (positions.clone(), positions);
     };
@@ -138,7 +135,8 @@ pub(super) fn without(m: &Measured, slips: &[(usize, f64)]) -> (Measured, Measur
     // series' x is that sign times the file's: the signs cancel).
     let frames: Vec<(usize, f64)> = slips
         .iter()
-        .filter_map(|&(i, r)| Some((centre_frame(st, *m.t().get(i)?)?, r)))
+        .zip(residual)
+        .filter_map(|(&i, &r)| Some((centre_frame(st, *m.t().get(i)?)?, r)))
         .collect();
     let residual_at = |k: usize| {
         frames
@@ -173,7 +171,7 @@ pub(super) fn without(m: &Measured, slips: &[(usize, f64)]) -> (Measured, Measur
                 .v_cm_sigma()
                 .and_then(|s| s.get(i).copied())
                 .unwrap_or(0.0);
-            !slipped(i)
+            !is_slip(i)
                 && !st
                     .v_cm
                     .get(i)
