@@ -35,7 +35,7 @@
 
 /// The tracker's own version: raised whenever a change makes it find other numbers
 /// in the same video (cached tracks are keyed by it, not by the program's version).
-pub const VERSION: u32 = 62;
+pub const VERSION: u32 = 63;
 
 pub mod background;
 pub mod band;

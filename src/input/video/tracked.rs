@@ -139,7 +139,9 @@ pub enum Framing {
 /// once more at the lower floor `vision::Params::faint_levels`, and refused so
 /// again, a third time with no pixel taken for a shadow ([`unshadowed`]); one in
 /// which neither ball was found in a third of the frames, once more with no pixel
-/// taken for a shadow. Refused again, the first refusal stands.
+/// taken for a shadow; one with more than two balls in most frames, once more with no
+/// pixel taken for a shadow (and, its first fits contradicted by its clear outlines,
+/// a third time from their radius). Refused again, the first refusal stands.
 pub fn track_framed(
     video: &std::path::Path,
     options: &Options,
@@ -179,6 +181,25 @@ pub fn track_framed(
                     done_or_first(once(&unshadowed(&faint)), first, unshadowed_note(&params))
                 }
                 other => other,
+            }
+        }
+        Attempt::Crowded(refused) => {
+            let plain = unshadowed(&params);
+            match once(&plain) {
+                // Its balls whole at last, a first lock on a part of one may still
+                // set a radius the clear outlines contradict: tracked from theirs.
+                Ok(Attempt::Contradicted(second)) => {
+                    let again = vision::Params {
+                        radius_px: Some(second.radius_px),
+                        ..plain
+                    };
+                    let note = crowded_note(&refused, Some(&second));
+                    done_or_first(once(&again), refused, note)
+                }
+                other => {
+                    let note = crowded_note(&refused, None);
+                    done_or_first(other, refused, note)
+                }
             }
         }
         Attempt::Sparse(refused) => {
@@ -266,6 +287,27 @@ fn grey_note() -> String {
 fn sparse_note() -> String {
     "tracked twice: neither ball was found in a third of the frames where pixels darker than the wall and of its hue are taken for shadows (a ball of the wall's own hue, or a dark ball's shaded side, is such a pixel); tracked again with them taken as the balls'".into()
 }
+
+/// The note of a clip tracked again with no pixel taken for a shadow, after more than
+/// two balls were seen in most of its frames (`refused`); and, where that second
+/// tracking's first fits were `contradicted` by its clear outlines, a third time
+/// from their radius.
+fn crowded_note(refused: &Refused, contradicted: Option<&Contradicted>) -> String {
+    let why = refused.error.what.to_string();
+    let why = why.split(';').next().unwrap_or(&why);
+    let again = "tracked again with them taken as the balls'";
+    match contradicted {
+        None => format!("tracked twice: {why}, {CROWDED_WHY}; {again}"),
+        Some(c) => format!(
+            "tracked three times: {why}, {CROWDED_WHY}; {again}, and its first fits' radius ({:.2} px) was contradicted by its clear outlines, which agree on {:.2} px; tracked a third time from that radius",
+            c.learned_px, c.radius_px
+        ),
+    }
+}
+
+/// Why a dark ball seen as more than two things is tracked again without the shadow
+/// test.
+const CROWDED_WHY: &str = "where pixels darker than the wall and of its hue are taken for shadows (a dark ball's body on a dark wall is such a pixel, and its highlight and mark are then two things apart)";
 
 /// Whether `refused` is for no ball found at all.
 fn no_ball(refused: &Refused) -> bool {
@@ -357,6 +399,9 @@ enum Attempt {
     /// Refused for neither ball found in a third of the frames, with the shadow
     /// test on: to be tracked again without it ([`track_framed`]).
     Sparse(Box<Refused>),
+    /// Refused for more than two balls in most frames, with the shadow test on: to
+    /// be tracked again without it ([`track_framed`]).
+    Crowded(Box<Refused>),
 }
 
 /// One tracking of `video`: of its band when `banded` and the first frames give
@@ -464,14 +509,15 @@ fn attempt(
 /// difference from the background where the radii scattered and that background is
 /// learned at full resolution ([`Attempt::Scattered`]), or at a lower floor where
 /// no ball was found ([`Attempt::Unseen`]), or with no pixel taken for a shadow
-/// where neither ball was found in a third of the frames ([`Attempt::Sparse`]).
+/// where neither ball was found in a third of the frames ([`Attempt::Sparse`]) or
+/// more than two balls were seen in most frames ([`Attempt::Crowded`]).
 fn refusal(
     tracker: &Tracker,
     thumbs: Thumbs,
     pictures: Pictures,
     error: VideoError,
 ) -> Result<Attempt, Box<Refused>> {
-    use vision::TracksError::{NoBall, RadiiDisagree, Sparse};
+    use vision::TracksError::{NoBall, RadiiDisagree, Sparse, TooMany};
     let params = &tracker.params;
     let why = error.what.tracks_error();
     let scattered = matches!(why, Some(RadiiDisagree { .. }))
@@ -479,6 +525,7 @@ fn refusal(
         && tracker.background().is_some_and(|b| b.image.factor == 1);
     let unseen = matches!(why, Some(NoBall { .. })) && params.faint_levels < params.differ_levels;
     let sparse = matches!(why, Some(Sparse { .. })) && params.shadow_darkest > 0.0;
+    let crowded = matches!(why, Some(TooMany { .. })) && params.shadow_darkest > 0.0;
     let refused = refused(tracker, thumbs, pictures, error);
     match (tracker.radius_contradicted(), tracker.radius()) {
         (Some(r), Some(learned_px)) if params.radius_px.is_none() => {
@@ -491,6 +538,7 @@ fn refusal(
         _ if scattered => Ok(Attempt::Scattered(refused)),
         _ if unseen => Ok(Attempt::Unseen(refused)),
         _ if sparse => Ok(Attempt::Sparse(refused)),
+        _ if crowded => Ok(Attempt::Crowded(refused)),
         _ => Err(refused),
     }
 }
