@@ -157,11 +157,11 @@ pub fn track_framed(
                 "tracked twice: the radius learned from the first fits ({:.2} px) was contradicted by the clip's clear outlines, which agree on {:.2} px; tracked again from that radius (the scale is from the second tracking's own fits)",
                 first.learned_px, first.radius_px
             );
-            let again = vision::Params {
-                radius_px: Some(first.radius_px),
-                ..params
-            };
-            retried(once(&again), first.refused, note)
+            retried(
+                once(&at_outlines_radius(&params, &first)),
+                first.refused,
+                note,
+            )
         }
         Attempt::Scattered(refused) => {
             let note = difference_note(&refused);
@@ -189,12 +189,8 @@ pub fn track_framed(
                 // Its balls whole at last, a first lock on a part of one may still
                 // set a radius the clear outlines contradict: tracked from theirs.
                 Ok(Attempt::Contradicted(second)) => {
-                    let again = vision::Params {
-                        radius_px: Some(second.radius_px),
-                        ..plain
-                    };
                     let note = crowded_note(&refused, Some(&second));
-                    done_or_first(once(&again), refused, note)
+                    done_or_first(once(&at_outlines_radius(&plain, &second)), refused, note)
                 }
                 other => {
                     let note = crowded_note(&refused, None);
@@ -251,6 +247,15 @@ fn done_or_first(
             Ok(*done)
         }
         _ => Err(first),
+    }
+}
+
+/// `p` with the radius the clear outlines of a tracking `contradicted` agree on known
+/// from the first frame (`Params::radius_px`, as a seed's outline sets it).
+fn at_outlines_radius(p: &vision::Params, contradicted: &Contradicted) -> vision::Params {
+    vision::Params {
+        radius_px: Some(contradicted.radius_px),
+        ..*p
     }
 }
 

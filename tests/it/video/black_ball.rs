@@ -120,15 +120,7 @@ fn a_dark_balls_parts_seen_as_more_balls_are_tracked_again_without_the_shadow_te
     else {
         return;
     };
-    let c = &t.tracks.calibration;
-    let truth = clip.film.px_per_m();
-    let off = c.px_per_m - truth;
-    assert!(
-        off.abs() <= 2.0 * c.px_per_m_sigma && off.abs() < 0.03 * truth,
-        "scale {:.1} ± {:.1} px/m for {truth:.1}",
-        c.px_per_m,
-        c.px_per_m_sigma
-    );
+    super::assert_scale_within(&clip, &t, 2.0, 0.03);
     assert!(
         t.notes.iter().any(
             |n| n.starts_with("tracked three times: more than two balls in")

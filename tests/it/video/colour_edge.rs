@@ -143,15 +143,8 @@ fn a_look_whose_pictures_confirm_its_outlines_is_tracked_with_a_wide_plus_minus(
     else {
         return;
     };
+    super::assert_scale_within(&clip, &t, 1.0, 0.05);
     let c = &t.tracks.calibration;
-    let truth = clip.film.px_per_m();
-    let off = c.px_per_m - truth;
-    assert!(
-        off.abs() <= c.px_per_m_sigma && off.abs() < 0.05 * truth,
-        "scale {:.1} ± {:.1} px/m for {truth:.1}",
-        c.px_per_m,
-        c.px_per_m_sigma
-    );
     assert!(
         c.colour_edge_px.is_some_and(|o| o < -0.1 * c.radius_px),
         "{c:?}"

@@ -90,16 +90,27 @@ pub(crate) fn assert_tracked_to_its_scale(
     let Some((clip, t)) = tracked_as_the_command_line(area, look) else {
         return;
     };
+    assert_scale_within(&clip, &t, 2.0, share);
+    assert!(t.notes.iter().any(|n| n.starts_with(note)), "{:?}", t.notes);
+}
+
+/// Checks that the scale `t` gives for `clip` lies within `sigmas` of its ± and
+/// `share` of the truth.
+pub(crate) fn assert_scale_within(
+    clip: &crate::film::looks::Clip,
+    t: &groovelab::input::video::tracked::Tracked,
+    sigmas: f64,
+    share: f64,
+) {
     let c = &t.tracks.calibration;
     let truth = clip.film.px_per_m();
     let off = c.px_per_m - truth;
     assert!(
-        off.abs() <= 2.0 * c.px_per_m_sigma && off.abs() < share * truth,
+        off.abs() <= sigmas * c.px_per_m_sigma && off.abs() < share * truth,
         "scale {:.1} ± {:.1} px/m for {truth:.1}",
         c.px_per_m,
         c.px_per_m_sigma
     );
-    assert!(t.notes.iter().any(|n| n.starts_with(note)), "{:?}", t.notes);
 }
 
 /// The look `seed` of `size` (its `first` frames where given) as H.264 in `area`,
