@@ -105,7 +105,7 @@ fn bench(c: &mut Criterion) {
             "720p at {fps} frames/s, 60 frames: centre RMS {rc:.3} px ({nc} fits), mark RMS {rm:.3} px ({nm} marks)"
         );
     }
-    let dir = std::env::temp_dir().join(format!("groovelab-bench-video-{}", std::process::id()));
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("bench-video");
     std::fs::create_dir_all(&dir).unwrap();
     let clip = dir.join("clip-1080p-240.mp4");
     film::h264::speed_clip(&clip, &s).unwrap();

@@ -346,16 +346,44 @@ pub fn kind(meta: &std::fs::Metadata) -> &'static str {
     }
 }
 
+/// A unit test's own folder in the system's temporary folder, removed when the test
+/// ends, passed or failed (unit tests have no `CARGO_TARGET_TMPDIR`; runs left one
+/// folder per test and run behind).
+#[cfg(test)]
+pub(crate) struct Scratch(PathBuf);
+
+#[cfg(test)]
+impl Scratch {
+    pub(crate) fn new(test: &str) -> Self {
+        let dir =
+            std::env::temp_dir().join(format!("groovelab-unit-{}-{test}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        Scratch(dir)
+    }
+}
+
+#[cfg(test)]
+impl std::ops::Deref for Scratch {
+    type Target = Path;
+    fn deref(&self) -> &Path {
+        &self.0
+    }
+}
+
+#[cfg(test)]
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    fn scratch(test: &str) -> PathBuf {
-        let dir =
-            std::env::temp_dir().join(format!("groovelab-output-{}-{test}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
-        std::fs::create_dir_all(&dir).unwrap();
-        dir
+    fn scratch(test: &str) -> Scratch {
+        Scratch::new(&format!("output-{test}"))
     }
 
     fn leftovers(dir: &Path) -> Vec<String> {
@@ -448,7 +476,6 @@ mod tests {
         assert!(early.contains("does not exist"), "{early}");
         assert!(check_output(&dir.join("run.csv")).is_ok());
         assert!(check_output(Path::new("bare-name.csv")).is_ok());
-        let _ = std::fs::remove_dir_all(&dir);
     }
 
     #[test]

@@ -164,6 +164,7 @@ mod tests {
 
     #[test]
     fn a_video_named_without_its_extension_is_said_to_be_one() {
+        let dir = crate::output::Scratch::new("file-video-named");
         let mut mp4 = vec![0, 0, 0, 0x20];
         mp4.extend_from_slice(b"ftypisom\0\0\x02\0\xff\xfe");
         let cases: [(&[u8], &str); 4] = [
@@ -176,7 +177,7 @@ mod tests {
             (b"RIFF\x10\0\0\0AVI LIST\xff", "an AVI video"),
         ];
         for (i, (bytes, kind)) in cases.into_iter().enumerate() {
-            let p = scratch(&format!("noext{i}"));
+            let p = dir.join(format!("noext{i}"));
             std::fs::write(&p, bytes).unwrap();
             let e = read_user_file(&p, FileRole::Data, 1 << 20)
                 .unwrap_err()
@@ -193,7 +194,7 @@ mod tests {
             assert!(e.contains(kind), "{e}");
         }
         // Other binary bytes: where the text breaks.
-        let p = scratch("binary");
+        let p = dir.join("binary");
         std::fs::write(&p, b"t,x\n\xff\xfe").unwrap();
         let e = read_user_file(&p, FileRole::Data, 1 << 20)
             .unwrap_err()
@@ -201,15 +202,10 @@ mod tests {
         assert!(e.contains("byte 5 is not UTF-8"), "{e}");
     }
 
-    fn scratch(name: &str) -> std::path::PathBuf {
-        let dir = std::env::temp_dir().join(format!("groovelab-file-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        dir.join(name)
-    }
-
     #[test]
     fn regular_files_are_read_others_refused_at_once() {
-        let p = scratch("ok.csv");
+        let dir = crate::output::Scratch::new("file-regular");
+        let p = dir.join("ok.csv");
         std::fs::write(&p, "t,v_cm,v_t\n").unwrap();
         assert_eq!(
             read_user_file(&p, FileRole::DataOption, 100).unwrap(),
@@ -228,8 +224,7 @@ mod tests {
                     .unwrap_err();
                 assert!(e.to_string().contains("a device"), "{e}");
             }
-            let link = scratch("link.csv");
-            let _ = std::fs::remove_file(&link);
+            let link = dir.join("link.csv");
             std::os::unix::fs::symlink(&p, &link).unwrap();
             assert!(read_user_file(&link, FileRole::DataOption, 100).is_ok());
         }
@@ -238,7 +233,7 @@ mod tests {
             .unwrap_err()
             .to_string();
         assert!(e.contains("byte 2 is not UTF-8"), "{e}");
-        let e = read_user_file(&scratch("missing"), FileRole::DataOption, 100).unwrap_err();
+        let e = read_user_file(&dir.join("missing"), FileRole::DataOption, 100).unwrap_err();
         assert!(e.to_string().starts_with("cannot read --data "), "{e}");
     }
 }

@@ -280,7 +280,7 @@ fn an_option_left_without_its_value_is_named_not_the_word_after() {
 }
 
 fn preset_file(name: &str, text: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("groovelab-cli-test-{}", std::process::id()));
+    let dir = crate::common::scratch_root("cli").join("preset-files");
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join(name);
     std::fs::File::create(&path)

@@ -578,8 +578,7 @@ fn display_units_are_written_once_in_the_unit_table() {
         found.join("\n")
     );
     // The scan sees what it looks for.
-    let dir = std::env::temp_dir().join(format!("groovelab-units-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::common::scratch_dir("code", "units-scan");
     let bad = dir.join("bad.rs");
     std::fs::write(
         &bad,

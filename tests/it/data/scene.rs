@@ -32,7 +32,7 @@ fn library() -> Library {
 /// the impact at t = 0 and sliding back to rest, with `header` lines before the
 /// columns. Its path.
 fn velocity_file(name: &str, header: &str) -> String {
-    let dir = std::env::temp_dir().join(format!("groovelab-datascene-{}", std::process::id()));
+    let dir = crate::common::scratch_root("data").join("velocity-files");
     std::fs::create_dir_all(&dir).unwrap();
     let mut text = format!("{header}t,v_cm,v_t\n");
     for i in 0..=40 {
@@ -115,8 +115,10 @@ fn after_d_a_file_scene_shows_no_presets_data() {
         "with-scene.csv",
         "# scene radius = 1.5 cm\n# scene width = 2.1 cm\n# scene mass = 110 g\n",
     );
+    // Wide enough that the status line, naming the file by its path in the checkout,
+    // is not wrapped.
     let screen =
-        common::run_in_process(&["render", "--data", &file, "--keys", "D", "--size", "120x40"])
+        common::run_in_process(&["render", "--data", &file, "--keys", "D", "--size", "160x40"])
             .unwrap();
     assert!(screen.contains("R            1.50 cm"), "{screen}");
     assert!(!screen.contains("RMS"), "{screen}");
@@ -224,8 +226,7 @@ fn an_r_edited_below_the_rim_marks_distance_is_refused() {
         origin: (0.3, 0.03),
         t_impact: 0.2,
     };
-    let dir = std::env::temp_dir().join(format!("groovelab-datascene-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::common::scratch_dir("data", "marked-track");
     let path = dir.join("marked-track.txt");
     let track = video::track(&truth, &shot);
     std::fs::write(

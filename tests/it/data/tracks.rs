@@ -463,8 +463,7 @@ fn cli_fits_the_example_video_end_to_end() {
 
 #[test]
 fn cli_error_for_a_track_without_an_impact_is_one_line() {
-    let dir = std::env::temp_dir().join(format!("groovelab-tracks-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::common::scratch_dir("data", "track-without-impact");
     let file = dir.join("late.txt");
     let s = preset_scene("paper-b4.9");
     let v = Video {
@@ -862,8 +861,7 @@ fn the_scales_uncertainty_widens_mu_ks() {
         assert!(fit.mu_se >= 0.1 * fit.mu && part.mu_se_fit < 0.01 * fit.mu);
     }
     // The CLI's headline says both parts; the model table's row is the headline.
-    let dir = std::env::temp_dir().join(format!("groovelab-scale-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::common::scratch_dir("data", "scale-error");
     let path = dir.join("scaled.txt");
     std::fs::write(&path, &with_scale).unwrap();
     let out = groovelab(&[

@@ -44,7 +44,7 @@ impl Noise {
 }
 
 fn csv(name: &str, text: &str) -> String {
-    let dir = std::env::temp_dir().join(format!("groovelab-fit-{}", std::process::id()));
+    let dir = crate::common::scratch_root("fit").join("tables");
     std::fs::create_dir_all(&dir).unwrap();
     let path = dir.join(name);
     std::fs::write(&path, text).unwrap();

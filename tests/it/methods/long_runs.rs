@@ -374,8 +374,7 @@ fn catches_sigint(pid: u32) {
 
 #[test]
 fn ctrl_c_stops_compare_with_130_and_writes_nothing() {
-    let dir = std::env::temp_dir().join(format!("groovelab-interrupt-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::common::scratch_dir("methods", "interrupt");
     let out = dir.join("wp.svg");
     let child = Command::new(env!("CARGO_BIN_EXE_groovelab"))
         .args(["compare", "--format", "svg", "--output"])

@@ -257,8 +257,7 @@ fn paper_presets_carry_the_measured_series() {
 
 #[test]
 fn presets_marks_a_user_preset_that_a_built_in_one_hides() {
-    let dir = std::env::temp_dir().join(format!("groovelab-hidden-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = crate::common::scratch_dir("physics", "hidden-preset");
     let text = std::fs::read_to_string("presets/paper-b4.9.toml").unwrap();
     std::fs::write(dir.join("paper-b4.9.toml"), text).unwrap();
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_groovelab"))

@@ -46,8 +46,7 @@ fn tree(dir: &Path) -> Vec<PathBuf> {
 
 #[test]
 fn render_writes_no_files_and_says_what_it_would_write() {
-    let dir = std::env::temp_dir().join(format!("groovelab-headless-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
+    let dir = crate::common::scratch_dir("tui", "headless-writes-nothing");
     let (home, config) = (dir.join("home"), dir.join("config"));
     std::fs::create_dir_all(&home).unwrap();
     std::fs::create_dir_all(&config).unwrap();

@@ -242,8 +242,7 @@ fn overlay_measured_and_ghost_marks_differ_and_have_a_legend() {
 
 #[test]
 fn typing_replaces_a_suggested_name_and_enter_on_nothing_cancels() {
-    let dir = std::env::temp_dir().join(format!("groovelab-suggest-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
+    let dir = crate::common::scratch_dir("tui", "suggested-name");
     let mut a = app("paper-b4.9");
     a.set_library(Library::at(Some(dir.clone())));
     // The save prompt offers a name; typing replaces it (it once appended:
@@ -300,8 +299,7 @@ fn typing_replaces_a_suggested_name_and_enter_on_nothing_cancels() {
 
 #[test]
 fn save_keeps_the_data_and_the_description_and_explains_bad_names() {
-    let dir = std::env::temp_dir().join(format!("groovelab-save11-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
+    let dir = crate::common::scratch_dir("tui", "save-bad-names");
     let mut a = app("paper-b4.4");
     a.set_library(Library::at(Some(dir.clone())));
     // A name with a space: refused, the dialog stays open and says why.

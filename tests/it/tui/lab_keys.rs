@@ -367,8 +367,7 @@ fn picker_loads_presets_and_quit_keys_quit() {
 
 #[test]
 fn saving_writes_a_loadable_preset_and_never_overwrites_silently() {
-    let dir = std::env::temp_dir().join(format!("groovelab-save-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
+    let dir = crate::common::scratch_dir("tui", "save-never-overwrites");
     let mut a = app("inelastic");
     a.set_library(Library::at(Some(dir.clone())));
     select(&mut a, Key::Mu);

@@ -59,8 +59,7 @@ fn the_loaded_file_is_named_in_every_view_at_every_size() {
         }
     }
     // A long path is cut from the left, at a folder: the file's own name stays.
-    let dir = std::env::temp_dir()
-        .join(format!("groovelab-small-screens-{}", std::process::id()))
+    let dir = crate::common::scratch_dir("tui", "long-path")
         .join("a-class-folder-with-a-long-name/lesson-3/group-b");
     std::fs::create_dir_all(&dir).unwrap();
     let long = dir.join("ball.txt");

@@ -5,8 +5,7 @@ use super::*;
 #[test]
 fn export_writes_the_run_as_csv_and_the_chart_as_svg() {
     use groovelab::cli::{SimulateArgs, SimulateFormat, simulate};
-    let dir = std::env::temp_dir().join(format!("groovelab-export-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
+    let dir = crate::common::scratch_dir("tui", "export");
     std::fs::create_dir_all(&dir).unwrap();
     let mut a = app("paper-b4.9");
     a.set_export_dir(dir.clone());

@@ -132,8 +132,7 @@ struct Fixtures {
 fn fixtures() -> &'static Fixtures {
     static F: OnceLock<Fixtures> = OnceLock::new();
     F.get_or_init(|| {
-        let dir = std::env::temp_dir().join(format!("groovelab-fuzz-{}", std::process::id()));
-        let _ = std::fs::remove_dir_all(&dir);
+        let dir = crate::common::scratch_dir("cli", "fuzz");
         std::fs::create_dir_all(dir.join("a-directory")).unwrap();
         std::fs::create_dir_all(dir.join("user-presets")).unwrap();
         // The app's `s` key (render --keys) saves a preset: into this folder, never the

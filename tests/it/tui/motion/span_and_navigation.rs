@@ -151,7 +151,7 @@ fn the_span_key_cycles_auto_double_half() {
 
 #[test]
 fn saving_keeps_only_a_set_span_end() {
-    let dir = std::env::temp_dir().join(format!("groovelab-motion-save-{}", std::process::id()));
+    let dir = crate::common::scratch_dir("tui", "save-span-end");
     let mut a = app("paper-b4.9");
     let path = save(&a, &dir, "auto-span");
     let text = std::fs::read_to_string(&path).unwrap();
