@@ -14,6 +14,7 @@ use groovelab::input::video::write;
 use groovelab::settings::params::Key;
 use groovelab::settings::spec::SceneSpec;
 use groovelab::tui::app::{Action, Status};
+use groovelab::tui::vocabulary::View;
 use serde_json::Value;
 
 use crate::common;
@@ -523,8 +524,11 @@ fn graphics_once_per_frame(app: &groovelab::tui::app::App, view: &VideoView) {
 #[test]
 fn the_tracking_shows_its_progress_and_a_key_never_waits_for_it() {
     let library = common::no_user_presets("video-progress");
-    let mut app =
-        groovelab::cli::opened(&SceneArgs::default(), &DataArgs::default(), library).unwrap();
+    let scene = SceneArgs {
+        preset: Some("inelastic".into()),
+        ..SceneArgs::default()
+    };
+    let mut app = groovelab::cli::opened(&scene, &DataArgs::default(), library).unwrap();
     let (tx, rx) = std::sync::mpsc::channel::<()>();
     app.track_video("clip.mp4".into(), move |ticket| {
         ticket.progress(3, 10);
@@ -546,6 +550,14 @@ fn the_tracking_shows_its_progress_and_a_key_never_waits_for_it() {
     app.apply(Action::ToggleVideo);
     let text = common::text(&app, (120, 40), false);
     assert!(text.contains("tracking clip.mp4: frame 3 of 10"), "{text}");
+    // The Fit view asked for before the data came (a preset without any): they are
+    // still to come, not "no measured data" (true only until then).
+    app.apply(Action::ShowView(View::Fit));
+    assert!(
+        matches!(&app.status, Status::Error(s) if s.starts_with("clip.mp4 is still being tracked")),
+        "{:?}",
+        app.status
+    );
     tx.send(()).unwrap();
     app.wait();
     assert_eq!(app.video().progress(), None);

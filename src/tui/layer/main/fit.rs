@@ -163,10 +163,16 @@ impl Pane for FitRuns {
             Err(e) => Handled::Refused(e.to_string()),
         };
         match action {
-            // Opening the view without data says there are none to fit.
+            // Opening the view without data says there are none to fit, or none yet
+            // (the video still tracked: the preset's own would be none only until then).
             Action::ShowView(View::Fit)
                 if shown && cx.lab.measured().is_none() && cx.lab.unfit().is_none() =>
             {
+                if let Some(name) = &cx.tracking {
+                    return Handled::Refused(format!(
+                        "{name} is still being tracked: its data are fitted here when it is done"
+                    ));
+                }
                 Handled::Refused(format!(
                     "preset {} has no measured data to fit (the paper-b* presets have)",
                     cx.lab.preset().name

@@ -26,6 +26,9 @@ pub struct PaneCx<'a> {
     pub charts_shown: bool,
     /// Where a mouse event points, as the frame on screen laid it out.
     pub pointer: Pointer,
+    /// The `--data` video being tracked on a worker, as the user named it (shortened):
+    /// its data are still to come.
+    pub tracking: Option<String>,
 }
 
 /// What lies under the mouse: the time under it on the chart's plot, the video's
