@@ -150,7 +150,9 @@ pub fn track_framed(
     framing: Framing,
 ) -> Result<Option<Tracked>, Box<Refused>> {
     let params = options.params();
-    let once = |p: &vision::Params| track_once(video, options, p, progress, pictures, framing);
+    let kept = KeptFrames::default();
+    let once =
+        |p: &vision::Params| track_once(video, options, p, progress, pictures, framing, &kept);
     match once(&params)? {
         Attempt::Contradicted(first) => {
             let note = format!(
@@ -373,14 +375,16 @@ fn track_once(
     progress: &dyn Progress,
     pictures: Pictures,
     framing: Framing,
+    kept: &KeptFrames,
 ) -> Result<Attempt, Box<Refused>> {
+    let how = HowRead { pictures, kept };
     if framing == Framing::Band {
-        match attempt(video, options, params, progress, pictures, true)? {
+        match attempt(video, options, params, progress, how, true)? {
             Attempt::Again => {}
             other => return Ok(other),
         }
     }
-    match attempt(video, options, params, progress, pictures, false)? {
+    match attempt(video, options, params, progress, how, false)? {
         // Never asked again of the whole frame.
         Attempt::Again => Ok(Attempt::Done(Box::new(None))),
         other => Ok(other),
@@ -409,16 +413,71 @@ enum Attempt {
     Crowded(Box<Refused>),
 }
 
+/// How a tracking reads its frames: whether it makes the app's pictures, and the
+/// clip's frames kept by an earlier tracking of it.
+#[derive(Clone, Copy)]
+struct HowRead<'a> {
+    pictures: Pictures,
+    kept: &'a KeptFrames,
+}
+
+/// `video` opened for a tracking: what it is, its frames (those kept by an earlier
+/// tracking where there are any, else decoded: `decoded`), and its frame rate.
+struct ToTrack {
+    info: Info,
+    frames: super::Frames,
+    rate: (f64, RateSource),
+    decoded: bool,
+}
+
+/// `video` opened for a tracking as `options` ask ([`ToTrack`]), or why not: probed
+/// once, the rate and the options checked before a frame is decoded.
+fn opened(
+    video: &std::path::Path,
+    options: &Options,
+    kept: &KeptFrames,
+) -> Result<ToTrack, VideoError> {
+    let err = |what: VideoProblem| VideoError::new(video, what);
+    let mut rate = None;
+    let mut accept = |info: &Info| {
+        rate = info.rate(options.fps);
+        if let Some(what) = off_the_frame(options, (info.width, info.height)) {
+            return Err(err(what));
+        }
+        match rate {
+            Some(_) => Ok(()),
+            None => Err(err(VideoProblem::NoRate)),
+        }
+    };
+    let from_kept = kept.frames();
+    let decoded = from_kept.is_none();
+    let (info, frames) = match from_kept {
+        // Probed before (the probe is kept in this process): no ffprobe, no ffmpeg.
+        Some(frames) => super::check(video, &Limits::default())
+            .and_then(|info| accept(&info).map(|()| (info, frames)))?,
+        None => super::open_if(video, &Limits::default(), accept)?,
+    };
+    let rate = rate.ok_or_else(|| err(VideoProblem::NoRate))?;
+    Ok(ToTrack {
+        info,
+        frames,
+        rate,
+        decoded,
+    })
+}
+
 /// One tracking of `video`: of its band when `banded` and the first frames give
-/// one, else of the whole frame.
+/// one, else of the whole frame. Its frames are those an earlier tracking kept
+/// where there are any, else decoded (and a whole frame's kept for the next).
 fn attempt(
     video: &std::path::Path,
     options: &Options,
     params: &vision::Params,
     progress: &dyn Progress,
-    pictures: Pictures,
+    how: HowRead<'_>,
     banded: bool,
 ) -> Result<Attempt, Box<Refused>> {
+    let HowRead { pictures, kept } = how;
     let nothing = |error: VideoError| {
         Box::new(Refused {
             error,
@@ -428,33 +487,32 @@ fn attempt(
     };
     let file = video.display().to_string();
     let err = |what: VideoProblem| VideoError::new(video, what);
-    // Probed once: the rate checked before a frame is decoded.
-    let mut rate = None;
-    let (info, frames) = super::open_if(video, &Limits::default(), |info| {
-        rate = info.rate(options.fps);
-        if let Some(what) = off_the_frame(options, (info.width, info.height)) {
-            return Err(err(what));
-        }
-        match rate {
-            Some(_) => Ok(()),
-            None => Err(err(VideoProblem::NoRate)),
-        }
-    })
-    .map_err(nothing)?;
-    let Some((fps, source)) = rate else {
-        return Err(nothing(err(VideoProblem::NoRate)));
-    };
+    let ToTrack {
+        info,
+        frames,
+        rate: (fps, source),
+        decoded,
+    } = opened(video, options, kept).map_err(nothing)?;
     let framed = if banded {
-        framed(video, &info, frames, (params, fps), pictures).map_err(nothing)?
+        // Kept frames are cut in memory: decoding the band anew is ffmpeg's work.
+        let anew = decoded.then_some(pictures);
+        framed(video, &info, frames, (params, fps), anew).map_err(nothing)?
     } else {
         Framed::whole(frames)
     };
     let band = framed.band;
-    let Some((mut tracker, numbers, thumbs)) =
-        stream(framed, &info, params, progress, pictures).map_err(nothing)?
+    // Whole frames decoded are kept for a further tracking of the clip.
+    let keep = decoded && band.is_none();
+    let Some(Streamed {
+        mut tracker,
+        numbers,
+        thumbs,
+        frames,
+    }) = stream(framed, &info, params, progress, (pictures, keep)).map_err(nothing)?
     else {
         return Ok(Attempt::Done(Box::new(None)));
     };
+    kept.set(frames);
     if let Some(b) = band {
         vision::band::shift(&mut tracker.frames, b.y as f64);
         tracker.params = *params;
@@ -641,13 +699,14 @@ impl Framed {
 /// from `frames` and kept: the first [`vision::band::LEAST_SPAN`] + 1, else as many
 /// as `fps` asks, [`vision::band::first_frames`]), and the frames to track: whole
 /// when there is none; a video's band decoded anew by ffmpeg, cut, when only tracks
-/// are wanted (`frames` ended unread); else `frames` to be cut as they are read.
+/// are wanted (`anew`: `frames` decoded, not kept ones, and no pictures made;
+/// `frames` ended unread); else `frames` to be cut as they are read.
 fn framed(
     video: &std::path::Path,
     info: &Info,
     mut frames: super::Frames,
     (params, fps): (&vision::Params, f64),
-    pictures: Pictures,
+    anew: Option<Pictures>,
 ) -> Result<Framed, VideoError> {
     let mut head = Vec::new();
     // The fewest first frames first: where they show the line (a clip at 60
@@ -692,7 +751,7 @@ fn framed(
     }
     if let Some(b) = band
         && video.is_file()
-        && pictures == Pictures::Skipped
+        && anew == Some(Pictures::Skipped)
     {
         drop(frames);
         return Ok(Framed {
@@ -737,16 +796,28 @@ fn off_the_frame(options: &Options, size: (usize, usize)) -> Option<VideoProblem
     None
 }
 
-/// The frames streamed through the tracker, read on a thread of their own: the
-/// tracker, each frame's number, and the app's small pictures; `None` when
-/// `progress` asked to stop.
+/// A clip streamed through the tracker ([`stream`]).
+struct Streamed {
+    tracker: Tracker,
+    /// Each frame's number.
+    numbers: Vec<u64>,
+    /// The app's small pictures.
+    thumbs: Thumbs,
+    /// The frames read, each with its number, where they were to be kept and fit in
+    /// [`KEEP_BYTES`].
+    frames: Option<Numbered>,
+}
+
+/// The frames streamed through the tracker, read on a thread of their own, and
+/// kept where `keep` asks and they fit ([`Streamed`]); `None` when `progress`
+/// asked to stop.
 fn stream(
     framed: Framed,
     info: &Info,
     params: &vision::Params,
     progress: &dyn Progress,
-    pictures: Pictures,
-) -> Result<Option<(Tracker, Vec<u64>, Thumbs)>, VideoError> {
+    (pictures, keep): (Pictures, bool),
+) -> Result<Option<Streamed>, VideoError> {
     let Framed { frames, band, cut } = framed;
     let params = band.map_or(*params, |b| b.params(params));
     let mut tracker = Tracker::new(params);
@@ -802,27 +873,56 @@ fn stream(
         }
         thumbs
     });
-    let Some(numbers) = learn_and_track(&mut tracker, received, ahead, total, progress)? else {
+    let mut keeping = keep.then(|| Keeping::within(KEEP_BYTES));
+    let told = Told {
+        ahead,
+        total,
+        progress,
+    };
+    let Some(numbers) = learn_and_track(&mut tracker, received, told, keeping.as_mut())? else {
         return Ok(None);
     };
     // The reader is done (the frames ran out); a reader that panicked leaves no
     // pictures, the tracks stand.
     let thumbs = reader.join().unwrap_or(no_thumbs);
-    Ok(Some((tracker, numbers, thumbs)))
+    Ok(Some(Streamed {
+        tracker,
+        numbers,
+        thumbs,
+        frames: keeping.and_then(Keeping::kept),
+    }))
+}
+
+/// How far the background learns ahead of the tracker, and whom to tell of how many
+/// frames ([`learn_and_track`]).
+struct Told<'a> {
+    ahead: usize,
+    total: u64,
+    progress: &'a dyn Progress,
 }
 
 /// Each frame of `received` learned into `tracker`'s background as it comes, and
 /// tracked once `ahead` frames more have been learned (see [`stream`]), telling
-/// `progress` of `total` frames; the frames' numbers, or `None` asked to stop.
+/// `progress` of `total` frames, and given to `keeping` once tracked; the frames'
+/// numbers, or `None` asked to stop.
 fn learn_and_track(
     tracker: &mut Tracker,
     received: std::sync::mpsc::Receiver<Result<(u64, vision::Frame, PreparedLook), VideoError>>,
-    ahead: usize,
-    total: u64,
-    progress: &dyn Progress,
+    told: Told<'_>,
+    mut keeping: Option<&mut Keeping>,
 ) -> Result<Option<Vec<u64>>, VideoError> {
+    let Told {
+        ahead,
+        total,
+        progress,
+    } = told;
     let mut numbers = Vec::new();
-    let mut waiting: std::collections::VecDeque<(vision::Frame, PreparedLook)> = Default::default();
+    let mut waiting: std::collections::VecDeque<(u64, vision::Frame, PreparedLook)> =
+        Default::default();
+    let mut done = |n: u64, img: vision::Frame| match keeping.as_deref_mut() {
+        Some(k) => k.keep(n, img),
+        None => super::decode::recycle(img),
+    };
     // The work is each frame read (and learned) and each frame tracked: most clips
     // are read whole before their first frame is tracked, and a count of frames
     // read stood at 100 % for the longer half of the work.
@@ -838,25 +938,97 @@ fn learn_and_track(
         let (n, img, prep) = frame?;
         tracker.learn_prepared(&img, &prep);
         numbers.push(n);
-        waiting.push_back((img, prep));
+        waiting.push_back((n, img, prep));
         if waiting.len() > ahead
-            && let Some((first, prep)) = waiting.pop_front()
+            && let Some((n, first, prep)) = waiting.pop_front()
         {
             tracker.push_prepared(&first, prep);
-            super::decode::recycle(first);
+            done(n, first);
             tracked += 1;
         }
         tell(numbers.len() as u64, tracked);
     }
-    for (img, prep) in waiting {
+    for (n, img, prep) in waiting {
         if progress.cancelled() {
             return Ok(None);
         }
         tracker.push_prepared(&img, prep);
+        done(n, img);
         tracked += 1;
         tell(numbers.len() as u64, tracked);
     }
     Ok(Some(numbers))
+}
+
+/// Most bytes of a clip's frames kept for its further trackings ([`KeptFrames`]): 256 MiB
+/// (82 frames of 1080p, 420 of 480p). A longer clip is decoded again for each.
+const KEEP_BYTES: usize = 256 << 20;
+
+/// A clip's frames kept as a tracking of its whole frames read them, for the
+/// clip's further trackings (a refusal tracked again, a band refused tracked as the
+/// whole frame): read from memory, not decoded by ffmpeg (or from a folder's files)
+/// once more. The same frames, so the same tracks.
+#[derive(Default)]
+struct KeptFrames(std::cell::RefCell<Option<std::sync::Arc<Numbered>>>);
+
+/// Frames, each with its number in the clip.
+type Numbered = Vec<(u64, vision::Frame)>;
+
+impl KeptFrames {
+    /// The kept frames, each a copy (a tracking cuts and recycles its own), in order;
+    /// `None` when none were kept.
+    fn frames(&self) -> Option<super::Frames> {
+        let kept = self.0.borrow().clone()?;
+        let copies =
+            (0..kept.len()).filter_map(move |i| kept.get(i).map(|(n, f)| Ok((*n, f.clone()))));
+        Some(Box::new(copies))
+    }
+
+    /// Keeps `frames`, where there are any.
+    fn set(&self, frames: Option<Numbered>) {
+        if let Some(frames) = frames {
+            *self.0.borrow_mut() = Some(std::sync::Arc::new(frames));
+        }
+    }
+}
+
+/// Frames being kept as they are tracked, while they fit in `budget` bytes.
+struct Keeping {
+    frames: Numbered,
+    bytes: usize,
+    budget: usize,
+    /// More came than fit: none are kept.
+    over: bool,
+}
+
+impl Keeping {
+    fn within(budget: usize) -> Keeping {
+        Keeping {
+            frames: Vec::new(),
+            bytes: 0,
+            budget,
+            over: false,
+        }
+    }
+
+    fn keep(&mut self, n: u64, frame: vision::Frame) {
+        let bytes = frame.luma.data.len() + frame.u.len() + frame.v.len();
+        if self.over || self.bytes + bytes > self.budget {
+            self.over = true;
+            for (_, f) in self.frames.drain(..) {
+                super::decode::recycle(f);
+            }
+            super::decode::recycle(frame);
+            return;
+        }
+        self.bytes += bytes;
+        self.frames.push((n, frame));
+    }
+
+    /// The frames kept, `None` where they did not fit.
+    fn kept(self) -> Option<Numbered> {
+        (!self.over).then_some(self.frames)
+    }
 }
 
 /// Each frame's fits as the tracker made them, before the tracks' checks.
@@ -1152,6 +1324,36 @@ fn ball_line(b: &BallTrack, frames: usize) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Frames are kept while they fit (then given back, in their order, each a copy),
+    /// and none once one more would not: a clip is kept whole or not at all.
+    #[test]
+    fn frames_are_kept_whole_within_their_budget_or_not_at_all() {
+        let frame = |level: u8| vision::Frame::from_yuv420p(4, 2, vec![level; 12]).unwrap();
+        let budget = 3 * vision::Frame::bytes(4, 2);
+        let mut fits = Keeping::within(budget);
+        for n in 0..3 {
+            fits.keep(n, frame(n as u8));
+        }
+        let kept = KeptFrames::default();
+        kept.set(fits.kept());
+        for _ in 0..2 {
+            let again: Vec<(u64, vision::Frame)> =
+                kept.frames().unwrap().map(Result::unwrap).collect();
+            assert_eq!(
+                again,
+                (0..3).map(|n| (n, frame(n as u8))).collect::<Vec<_>>()
+            );
+        }
+        let mut over = Keeping::within(budget);
+        for n in 0..4 {
+            over.keep(n, frame(n as u8));
+        }
+        assert!(over.kept().is_none());
+        let none = KeptFrames::default();
+        none.set(None);
+        assert!(none.frames().is_none());
+    }
     use crate::vision::TracksError;
 
     fn refused(error: TracksError) -> Box<Refused> {

@@ -680,3 +680,61 @@ fn progress_reaches_the_whole_only_when_every_frame_is_tracked() {
     assert!(ticks[read_all].0 < total, "{ticks:?}");
     assert_eq!(ticks.iter().filter(|&&(done, _)| done == total).count(), 1);
 }
+
+/// A clip tracked again is decoded by ffmpeg once: its further trackings read the
+/// frames the first kept in memory. An empty groove (no ball at the usual floor, nor
+/// at the lower one, nor without the shadow test: three trackings, then refused) is
+/// tracked with an `ffmpeg` of the test's own first on the PATH, which notes each
+/// call and runs the system's.
+#[cfg(unix)]
+#[test]
+fn a_clip_tracked_again_is_decoded_once() {
+    use std::os::unix::fs::PermissionsExt;
+    if !ffmpeg() {
+        return;
+    }
+    let d = dir("decoded_once");
+    let (w, h) = (160, 120);
+    let clip = d.join("empty.mp4");
+    let enc = Encoding {
+        width: w,
+        height: h,
+        fps: 30.0,
+        crf: 18,
+        metadata: Vec::new(),
+    };
+    write::video(&clip, &enc, (0..12).map(|_| vec![90u8; w * h * 3])).unwrap();
+    let path = std::env::var_os("PATH").unwrap_or_default();
+    let real = std::env::split_paths(&path)
+        .map(|p| p.join("ffmpeg"))
+        .find(|p| p.is_file())
+        .unwrap();
+    let bin = d.join("bin");
+    std::fs::create_dir_all(&bin).unwrap();
+    let calls = d.join("calls");
+    let wrapper = bin.join("ffmpeg");
+    std::fs::write(
+        &wrapper,
+        format!(
+            "#!/bin/sh\necho \"$*\" >> '{}'\nexec '{}' \"$@\"\n",
+            calls.display(),
+            real.display()
+        ),
+    )
+    .unwrap();
+    std::fs::set_permissions(&wrapper, std::fs::Permissions::from_mode(0o755)).unwrap();
+    let mut paths = vec![bin];
+    paths.extend(std::env::split_paths(&path));
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_groovelab"))
+        .args(["track", clip.to_str().unwrap(), "--radius", "2.75cm"])
+        .env("PATH", std::env::join_paths(paths).unwrap())
+        .env("XDG_CACHE_HOME", d.join("cache"))
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("no ball found in 12 frames"), "{err}");
+    let calls = std::fs::read_to_string(&calls).unwrap_or_default();
+    let decodes = calls.lines().filter(|l| l.contains("-f rawvideo")).count();
+    assert_eq!(decodes, 1, "ffmpeg's calls:\n{calls}");
+}
