@@ -132,6 +132,19 @@ fn series_of(texts: &[(String, String)], args: &DataArgs) -> Result<(Series, Sce
     Ok((series, own_scene))
 }
 
+/// The tracks `text` of the video `file` refused where, read as `--data` reads
+/// them, their speeds or frame spacing are of no ball in a groove ([`video_scale`]:
+/// R given in the wrong unit, a wrong `--scale` or `--fps`); any other reason they
+/// give no series (no impact in the clip) is `fit`'s to say, not `track`'s.
+pub fn tracks_in_a_groove(file: &str, text: &str) -> Result<(), CliError> {
+    use crate::input::data::{DataProblem, Reading, load};
+    use crate::study::measured::track::Derive;
+    match load(text, file, &Reading::default(), &Derive::default()) {
+        Err(e) if matches!(e.what, DataProblem::Scale(_)) => Err(video_scale(e, file, text)),
+        _ => Ok(()),
+    }
+}
+
 /// A video's tracks refused for speeds or a frame spacing of no ball in a groove:
 /// said of their scale and rate (R in the wrong unit, a wrong `--scale` or `--fps`),
 /// not of a file's units, which a video's tracks do not take (`units_of_a_video`).

@@ -60,6 +60,9 @@ pub fn run(scene: &SceneArgs, data: &DataArgs, args: &TrackArgs) -> Result<Strin
             ));
         }
     };
+    // Tracks that `fit` would refuse for their scale (a ball at 87 m/s: R given as
+    // 2.75, metres) are refused here, before anything is written.
+    super::open::tracks_in_a_groove(&args.video.display().to_string(), &done.text())?;
     let drawn = match &args.overlay {
         Some(path) => {
             overlay::write_overlay(&args.video, &overlay::Drawing::tracked(&done), path)?;

@@ -620,6 +620,27 @@ fn a_video_too_large_is_refused_before_decoding() {
     assert!(e.to_string().contains("is too much video to track"), "{e}");
 }
 
+/// The balls' radius given without its unit (`--radius 2.75`: a number alone is
+/// metres) scales the tracks a hundredfold, the balls approaching at tens of m/s:
+/// `track` refuses them as `fit` would, in one line that says to check `--radius`,
+/// and writes nothing; with its unit the same clip is tracked.
+#[test]
+fn tracks_of_no_ball_in_a_groove_are_refused_by_track() {
+    if !ffmpeg() {
+        return;
+    }
+    let d = dir("radius_in_metres");
+    let clip = write_mp4(&d, "clip.mp4", 100.0, &[], 12);
+    refused(&clip, &["--radius", "2.75"], "no ball in a groove");
+    refused(
+        &clip,
+        &["--radius", "2.75"],
+        "check --radius (a number without a unit is metres: 2.75 is 2.75 m",
+    );
+    let (code, _, err) = run(&["track", clip.to_str().unwrap(), "--radius", "2.75cm"]);
+    assert_eq!(code, 0, "{err}");
+}
+
 /// A file's probe is remembered by its path, length and time modified: the same
 /// clip opened twice gives one answer, and a clip written over it at the same path
 /// (another length of frames) is probed anew, not answered from memory.
