@@ -208,10 +208,7 @@ impl App {
         let span = self.chart_span();
         let derived = self.hidden().derived();
         let main = self.layers.main_mut();
-        let video = main.get::<super::layer::main::video::VideoRun>();
-        let tracking = video
-            .progress()
-            .map(|_| super::layer::main::video::short(video.name.as_deref().unwrap_or_default()));
+        let video = main.get::<super::layer::main::video::VideoRun>().data();
         let cx = PaneCx {
             lab: &mut self.lab,
             jobs: &self.jobs,
@@ -221,7 +218,7 @@ impl App {
             shown: main.shown(),
             charts_shown: main.charts_shown(),
             pointer,
-            tracking,
+            video,
         };
         (main, cx)
     }

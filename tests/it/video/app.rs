@@ -444,6 +444,15 @@ fn a_refused_video_leaves_no_preset_data_standing_in_for_it() {
     );
     assert!(app.lab.series().is_none());
     shown(&app);
+    // The Fit view asked for says the clip was not tracked (not that the preset has
+    // no data, which a new user read as a contradiction).
+    app.apply(Action::ShowView(View::Fit));
+    assert!(
+        matches!(&app.status, Status::Error(s) if s.starts_with("frames was not tracked, so there are no data to fit")),
+        "{:?}",
+        app.status
+    );
+    app.apply(Action::ShowView(View::Charts));
     // D gives the preset's data their place back (it said "no data of your own").
     app.apply(Action::DropData);
     assert!(

@@ -3,7 +3,7 @@
 //! is shown), the window's keys, `a` (the fit into the scene) and `M` (its models).
 
 use super::figure::{Figure, FigureCx, NoFigure};
-use super::pane::{Pane, PaneCx};
+use super::pane::{Pane, PaneCx, VideoData};
 use crate::lab::jobs::{Job, State};
 use crate::lab::{FitWindow, FitWindowError, Generation, Lab, analyses};
 use crate::settings::params::Key;
@@ -168,10 +168,23 @@ impl Pane for FitRuns {
             Action::ShowView(View::Fit)
                 if shown && cx.lab.measured().is_none() && cx.lab.unfit().is_none() =>
             {
-                if let Some(name) = &cx.tracking {
-                    return Handled::Refused(format!(
-                        "{name} is still being tracked: its data are fitted here when it is done"
-                    ));
+                match &cx.video {
+                    Some(VideoData::Tracking(name)) => {
+                        return Handled::Refused(format!(
+                            "{name} is still being tracked: its data are fitted here when it is done"
+                        ));
+                    }
+                    Some(VideoData::Refused { name, first_frame }) => {
+                        return Handled::Refused(format!(
+                            "{name} was not tracked, so there are no data to fit{}",
+                            if *first_frame {
+                                " (V: its first frame; click a ball there to track it again seeded)"
+                            } else {
+                                ""
+                            }
+                        ));
+                    }
+                    None => {}
                 }
                 Handled::Refused(format!(
                     "preset {} has no measured data to fit (the paper-b* presets have)",

@@ -26,9 +26,20 @@ pub struct PaneCx<'a> {
     pub charts_shown: bool,
     /// Where a mouse event points, as the frame on screen laid it out.
     pub pointer: Pointer,
-    /// The `--data` video being tracked on a worker, as the user named it (shortened):
-    /// its data are still to come.
-    pub tracking: Option<String>,
+    /// The `--data` video whose data are not in the lab: still being tracked on a
+    /// worker, or refused.
+    pub video: Option<VideoData>,
+}
+
+/// Why the `--data` video's data are not in the lab (its name as the status line
+/// says it).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum VideoData {
+    /// Still being tracked on a worker: they are to come.
+    Tracking(String),
+    /// Its tracking was refused; `first_frame`: its first frame is there to click a
+    /// ball on (`V`).
+    Refused { name: String, first_frame: bool },
 }
 
 /// What lies under the mouse: the time under it on the chart's plot, the video's

@@ -7,7 +7,7 @@
 
 use std::sync::Arc;
 
-use super::pane::{Pane, PaneCx};
+use super::pane::{Pane, PaneCx, VideoData};
 use crate::input::video::tracked::Options;
 use crate::lab::jobs::{Job, State, Ticket};
 use crate::lab::{Generation, Lab};
@@ -54,6 +54,8 @@ pub struct VideoRun {
     /// The first frame shown alone in place of the tracked video's view, for a click
     /// on a ball there (a click on a later frame asked for it).
     pub first: Option<Arc<VideoView>>,
+    /// The last tracking was refused (with its first frame to click on, or not).
+    refused: Option<bool>,
 }
 
 impl VideoRun {
@@ -79,6 +81,17 @@ impl VideoRun {
         }
     }
 
+    /// Why the video's data are not in the lab, where they are not: it is still being
+    /// tracked, or its tracking was refused.
+    pub fn data(&self) -> Option<VideoData> {
+        let name = short(self.name.as_deref()?);
+        if self.progress().is_some() {
+            return Some(VideoData::Tracking(name));
+        }
+        self.refused
+            .map(|first_frame| VideoData::Refused { name, first_frame })
+    }
+
     /// The view the Scene panel draws: the first frame alone when a click asked for
     /// it, else the video's view.
     pub fn picture(&self) -> Option<&Arc<VideoView>> {
@@ -98,6 +111,7 @@ impl VideoRun {
         };
         let name = short(self.name.as_deref().unwrap_or_default());
         self.first = None;
+        self.refused = result.as_ref().err().map(|r| r.first_frame.is_some());
         match result {
             Ok(done) => {
                 let Some(own) = done.own else {
