@@ -126,9 +126,11 @@ pub struct DataArgs {
     /// header's, else m].
     #[arg(long, value_name = "UNIT", global = true)]
     pub length_unit: Option<String>,
-    /// The length one pixel shows, for a video track in pixels (a Tracker or Logger Pro
-    /// file whose video was not calibrated; e.g. 1.105mm for a 1 m ruler 905 pixels
-    /// long) [default: the file's calibration].
+    /// The length one pixel shows (e.g. 1.105mm for a 1 m ruler 905 pixels long in
+    /// the picture): for a video (`track`, `--data VIDEO`) whose balls' outlines give
+    /// no sure scale, or a track in pixels (a Tracker or Logger Pro file whose video
+    /// was not calibrated) [default: a video's from the balls' radius, a file's own
+    /// calibration].
     #[arg(long, value_name = "LENGTH", value_parser = length, allow_hyphen_values = true, global = true, conflicts_with = "length_unit")]
     pub scale: Option<f64>,
     /// Half-width of the local fit that derives velocities from positions (e.g. 20ms)

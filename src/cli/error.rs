@@ -332,6 +332,36 @@ pub enum BadValue {
     ThemeSwitch { source: crate::tui::look::BadTheme },
 }
 
+/// A video's tracks refused for speeds or a frame spacing of no ball in a groove:
+/// said of their scale and rate (R in the wrong unit, a wrong `--scale` or `--fps`),
+/// not of a file's units, which a video's tracks do not take (`units_of_a_video`).
+pub(super) fn video_scale(e: crate::input::data::DataError, file: &str, text: &str) -> CliError {
+    use crate::input::data::{DataProblem, ScaleError};
+    let seen = match &e.what {
+        DataProblem::Scale(
+            ScaleError::TooSlow { speed, .. }
+            | ScaleError::LengthsNotMetres { speed, .. }
+            | ScaleError::TooFast { speed, .. },
+        ) => OffScale::Speed(*speed),
+        DataProblem::Scale(
+            ScaleError::TimesNotSeconds { frame } | ScaleError::FramesTooSlow { frame, .. },
+        ) => OffScale::Spacing(*frame),
+        _ => return CliError::from(e),
+    };
+    // The tracks' own line on their scale (`tracked::scale_note`).
+    let scaled = text
+        .lines()
+        .take_while(|l| l.starts_with('#'))
+        .find_map(|l| l.strip_prefix("# scale ").filter(|r| r.contains("px/m:")))
+        .map(|r| r.split(';').next().unwrap_or(r).to_string())
+        .unwrap_or_else(|| "as the tracks' file says".into());
+    CliError::TracksOffScale {
+        file: file.to_string(),
+        seen,
+        scaled,
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -6,6 +6,7 @@ use std::path::Path;
 use std::sync::Arc;
 
 use super::args::{DataArgs, SceneArgs, TrackRole};
+use super::error::video_scale;
 use super::error::{BadValue, CliError, Flag};
 use crate::input::data::Reading;
 use crate::lab::{Groove, Lab, Layers, OwnData, Unfit};
@@ -130,50 +131,6 @@ fn series_of(texts: &[(String, String)], args: &DataArgs) -> Result<(Series, Sce
         crate::input::data::scene_of(text, file)?
     };
     Ok((series, own_scene))
-}
-
-/// The tracks `text` of the video `file` refused where, read as `--data` reads
-/// them, their speeds or frame spacing are of no ball in a groove ([`video_scale`]:
-/// R given in the wrong unit, a wrong `--scale` or `--fps`); any other reason they
-/// give no series (no impact in the clip) is `fit`'s to say, not `track`'s.
-pub fn tracks_in_a_groove(file: &str, text: &str) -> Result<(), CliError> {
-    use crate::input::data::{DataProblem, Reading, load};
-    use crate::study::measured::track::Derive;
-    match load(text, file, &Reading::default(), &Derive::default()) {
-        Err(e) if matches!(e.what, DataProblem::Scale(_)) => Err(video_scale(e, file, text)),
-        _ => Ok(()),
-    }
-}
-
-/// A video's tracks refused for speeds or a frame spacing of no ball in a groove:
-/// said of their scale and rate (R in the wrong unit, a wrong `--scale` or `--fps`),
-/// not of a file's units, which a video's tracks do not take (`units_of_a_video`).
-fn video_scale(e: crate::input::data::DataError, file: &str, text: &str) -> CliError {
-    use super::error::OffScale;
-    use crate::input::data::{DataProblem, ScaleError};
-    let seen = match &e.what {
-        DataProblem::Scale(
-            ScaleError::TooSlow { speed, .. }
-            | ScaleError::LengthsNotMetres { speed, .. }
-            | ScaleError::TooFast { speed, .. },
-        ) => OffScale::Speed(*speed),
-        DataProblem::Scale(
-            ScaleError::TimesNotSeconds { frame } | ScaleError::FramesTooSlow { frame, .. },
-        ) => OffScale::Spacing(*frame),
-        _ => return CliError::from(e),
-    };
-    // The tracks' own line on their scale (`tracked::scale_note`).
-    let scaled = text
-        .lines()
-        .take_while(|l| l.starts_with('#'))
-        .find_map(|l| l.strip_prefix("# scale ").filter(|r| r.contains("px/m:")))
-        .map(|r| r.split(';').next().unwrap_or(r).to_string())
-        .unwrap_or_else(|| "as the tracks' file says".into());
-    CliError::TracksOffScale {
-        file: file.to_string(),
-        seen,
-        scaled,
-    }
 }
 
 /// `--length-unit` and `--time-unit` given with a video are refused: its tracks are

@@ -62,7 +62,7 @@ pub fn run(scene: &SceneArgs, data: &DataArgs, args: &TrackArgs) -> Result<Strin
     };
     // Tracks that `fit` would refuse for their scale (a ball at 87 m/s: R given as
     // 2.75, metres) are refused here, before anything is written.
-    super::open::tracks_in_a_groove(&args.video.display().to_string(), &done.text())?;
+    tracks_in_a_groove(&args.video.display().to_string(), &done.text())?;
     let drawn = match &args.overlay {
         Some(path) => {
             overlay::write_overlay(&args.video, &overlay::Drawing::tracked(&done), path)?;
@@ -153,4 +153,19 @@ pub fn options(scene: &SceneArgs, data: &DataArgs) -> Result<Options, CliError> 
         roi: data.roi,
         ball_at: data.ball_at,
     })
+}
+
+/// The tracks `text` of the video `file` refused where, read as `--data` reads
+/// them, their speeds or frame spacing are of no ball in a groove ([`super::error::video_scale`]:
+/// R given in the wrong unit, a wrong `--scale` or `--fps`); any other reason they
+/// give no series (no impact in the clip) is `fit`'s to say, not `track`'s.
+pub(super) fn tracks_in_a_groove(file: &str, text: &str) -> Result<(), CliError> {
+    use crate::input::data::{DataProblem, Reading, load};
+    use crate::study::measured::track::Derive;
+    match load(text, file, &Reading::default(), &Derive::default()) {
+        Err(e) if matches!(e.what, DataProblem::Scale(_)) => {
+            Err(super::error::video_scale(e, file, text))
+        }
+        _ => Ok(()),
+    }
 }

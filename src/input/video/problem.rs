@@ -59,7 +59,7 @@ pub enum VideoProblem {
     #[error("has no video stream, expected a video")]
     NoVideoStream,
     #[error(
-        "is a text file, not a video; a data file (tracks, a table) is read by --data FILE under a data file's name (.txt, .csv, …), e.g. groovelab fit --data tracks.txt"
+        "is a text file, not a video: a data file (tracks, a table) is not tracked but read as data, by --data FILE named as data (.txt, .csv, …; e.g. groovelab fit --data tracks.txt)"
     )]
     Text,
     #[error(
