@@ -228,6 +228,12 @@ impl Lab {
         self.edit(Edit::Values(changes.to_vec()))
     }
 
+    /// As [`Lab::set_all`], the values a fit gave ([`Edit::Fitted`]): one the data
+    /// in use measure (v0) stays the data's.
+    pub fn set_fitted(&mut self, changes: &[(Key, f64)]) -> Result<(), SceneError> {
+        self.edit(Edit::Fitted(changes.to_vec()))
+    }
+
     /// Chooses how the span ends (the span key), keeping the scene.
     pub fn set_span_end(&mut self, end: SpanEnd) -> Result<(), SceneError> {
         self.edit(Edit::SpanEnd(end))
@@ -238,7 +244,7 @@ impl Lab {
     /// entry (a repeated key is not a change for undo to take back; the shown end
     /// follows from these).
     fn edit(&mut self, edit: Edit) -> Result<(), SceneError> {
-        let may_repeat = matches!(edit, Edit::Values(_) | Edit::SpanEnd(_));
+        let may_repeat = matches!(edit, Edit::Values(_) | Edit::Fitted(_) | Edit::SpanEnd(_));
         self.settings.push(edit);
         if may_repeat
             && let Ok((scene, span, end)) = self.settings.settle()

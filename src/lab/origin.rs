@@ -97,7 +97,16 @@ impl Layers {
         // A release height shows the v0 it stands for: its origin is that v0's.
         let k = key.param().replaces.unwrap_or(key).param().sets[0];
         if touches(&self.edited(), k) {
-            return Origin::Edited;
+            // A fit's value applied for one the data measure is still the data's.
+            let fitted = self
+                .fitted()
+                .iter()
+                .any(|f| *f == k || f.param().sets.contains(&k));
+            return if fitted && self.data_values().get(k).is_some() {
+                Origin::Data
+            } else {
+                Origin::Edited
+            };
         }
         if let Some(flags) = self.flags_in_force()
             && touches(flags, k)

@@ -21,6 +21,10 @@ use super::span::SpanEnd;
 #[derive(Clone, Debug, PartialEq)]
 pub enum Edit {
     Values(Vec<(Key, f64)>),
+    /// A fit's values applied (the Fit view's `a`): set as by [`Edit::Values`], but
+    /// a value the data in use measure (v0) stays the data's (its origin `Data`):
+    /// the fit's, not a value the user chose, so the next fit still frees it.
+    Fitted(Vec<(Key, f64)>),
     SpanEnd(SpanEnd),
     /// Every earlier edit set aside: the scene as the preset and the flags give it.
     Reset,
@@ -69,6 +73,8 @@ struct Sum {
     changes: bool,
     /// The values the edits in force set, newer over older.
     values: SceneSpec,
+    /// Those of them a fit's values applied set last ([`Edit::Fitted`]).
+    fitted: Vec<Key>,
     /// What the edits in force do to how the span ends.
     end: EndRule,
 }
@@ -93,18 +99,25 @@ impl Sum {
             Edit::DropData => Sum {
                 dropped: true,
                 values: self.values.clone(),
+                fitted: self.fitted.clone(),
                 ..*self
             },
-            Edit::Values(changes) => {
+            Edit::Values(changes) | Edit::Fitted(changes) => {
                 let mut values = self.values.clone();
                 let mut end = self.end;
+                let mut fitted = self.fitted.clone();
+                fitted.retain(|k| changes.iter().all(|(c, _)| c != k));
                 for &(key, value) in changes {
                     values.set(key, value);
                     end = end.then(EndRule::of(key, value));
+                    if matches!(edit, Edit::Fitted(_)) {
+                        fitted.push(key);
+                    }
                 }
                 Sum {
                     changes: true,
                     values,
+                    fitted,
                     end,
                     ..*self
                 }
@@ -112,6 +125,7 @@ impl Sum {
             Edit::SpanEnd(e) => Sum {
                 changes: true,
                 values: self.values.clone(),
+                fitted: self.fitted.clone(),
                 end: EndRule::Set(*e),
                 ..*self
             },
@@ -268,6 +282,12 @@ impl Layers {
         self.top().values.clone()
     }
 
+    /// The keys whose value in force a fit's values applied set last
+    /// ([`Edit::Fitted`]).
+    pub(super) fn fitted(&self) -> Vec<Key> {
+        self.top().fitted.clone()
+    }
+
     /// Sets every edit aside (the scene as the preset and the flags give it); false,
     /// and nothing added, when none that changes the scene is in force. Undo brings
     /// them back.
@@ -386,7 +406,7 @@ mod tests {
         }
         for edit in &edits[from..] {
             match edit {
-                Edit::Values(changes) => {
+                Edit::Values(changes) | Edit::Fitted(changes) => {
                     replay_values(&mut spec, &mut end, changes);
                     for &(k, v) in changes {
                         upper.set(k, v);

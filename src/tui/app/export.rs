@@ -79,7 +79,7 @@ impl App {
         settings
             .in_force()
             .iter()
-            .any(|e| matches!(e, Edit::Values(v) if v.iter().any(|(k, _)| *k == Key::Width)))
+            .any(|e| matches!(e, Edit::Values(v) | Edit::Fitted(v) if v.iter().any(|(k, _)| *k == Key::Width)))
             || settings
                 .flags_in_force()
                 .is_some_and(|f| f.given().any(|(k, _)| k == Key::Width))

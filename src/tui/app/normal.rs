@@ -195,7 +195,7 @@ impl App {
             self.layers.main_mut().data_changed();
         }
         let back = match edit {
-            Edit::Values(changes) => {
+            Edit::Values(changes) | Edit::Fitted(changes) => {
                 let mut keys: Vec<Key> = changes.iter().map(|(k, _)| *k).collect();
                 keys.dedup();
                 let shown: Vec<String> = keys

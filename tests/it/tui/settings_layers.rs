@@ -469,3 +469,46 @@ fn u_after_picking_a_preset_keeps_the_students_data() {
     assert!(a.lab.measured().unwrap().x().is_some(), "still the track");
     assert_eq!(a.lab.own_data().unwrap().name, TRACK);
 }
+
+/// A fit applied (`a` in the Fit view) keeps the values the data measure as the
+/// data's: v0 stays `d`, and the next fit still frees it, so it gives the same
+/// models and μ_k's ± still carries v0's. (It was marked edited: the next fit held
+/// v0 at the value applied, listed other models and headlined μ_k alone with a
+/// smaller ±; a new user's report.) A value typed over it is the user's again.
+#[test]
+fn a_fit_applied_keeps_the_datas_values_the_datas() {
+    use groovelab::lab::Origin;
+    use groovelab::lab::jobs::State;
+    let d = data(&[PathBuf::from(TRACK)]);
+    let mut a = rendered(&scene(SceneSpec::default()), &d, None, None, library());
+    assert_eq!(a.lab.settings().origin(Key::V0), Origin::Data);
+    press(&mut a, "f");
+    a.wait();
+    let State::Ready(Ok(before)) = a.fit().fits() else {
+        panic!("fit ready");
+    };
+    let (models, head, mu_se) = (
+        before.models.len(),
+        before.model_fit.model.clone(),
+        before.model_fit.mu_se,
+    );
+    assert!(before.model_fit.v0_se.is_some(), "v0 fitted");
+    press(&mut a, "a");
+    assert_eq!(a.lab.settings().origin(Key::V0), Origin::Data);
+    assert_eq!(a.lab.settings().origin(Key::Mu), Origin::Edited);
+    a.wait();
+    let State::Ready(Ok(after)) = a.fit().fits() else {
+        panic!("fit ready");
+    };
+    assert_eq!(after.models.len(), models);
+    assert_eq!(after.model_fit.model, head);
+    assert!(
+        (after.model_fit.mu_se - mu_se).abs() < 0.05 * mu_se,
+        "μ_k ± {} before, {} after",
+        mu_se,
+        after.model_fit.mu_se
+    );
+    // v0 typed by hand: the user's.
+    a.lab.set(Key::V0, 0.8).unwrap();
+    assert_eq!(a.lab.settings().origin(Key::V0), Origin::Edited);
+}

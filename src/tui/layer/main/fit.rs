@@ -93,22 +93,30 @@ impl FitRuns {
         }
         // μ_k is always fitted; v0, e and c_rr only when the fit freed them (they have
         // an uncertainty then): the scene becomes the fitted one.
-        let mut changes = vec![(Key::Mu, fitted.mu)];
-        if fitted.v0_se.is_some() {
-            changes.push((Key::V0, fitted.v0));
-        }
-        if fitted.restitution_se.is_some() {
-            changes.push((Key::Restitution, fitted.restitution));
-        }
-        if fitted.rolling_resistance_se.is_some() {
-            changes.push((Key::RollingResistance, fitted.rolling_resistance));
-        }
+        let mut changes = vec![(Key::Mu, fitted.mu, fitted.mu_se)];
+        let freed = [
+            (Key::V0, fitted.v0, fitted.v0_se),
+            (Key::Restitution, fitted.restitution, fitted.restitution_se),
+            (
+                Key::RollingResistance,
+                fitted.rolling_resistance,
+                fitted.rolling_resistance_se,
+            ),
+        ];
+        changes.extend(freed.into_iter().filter_map(|(k, v, se)| Some((k, v, se?))));
+        // The refit of a scene a fit was applied to lands within a hair of it (its
+        // frames move with the scene, and v0 stays free): each value within a tenth
+        // of its ± of the scene's is the fit already there.
+        let there = changes
+            .iter()
+            .all(|&(key, value, se)| (lab.value(key) - value).abs() <= 0.1 * se);
+        let values: Vec<(Key, f64)> = changes.iter().map(|&(k, v, _)| (k, v)).collect();
         // All or nothing: a fit is never left half applied.
         let edits = lab.settings().edits().len();
-        if let Err(e) = lab.set_all(&changes) {
+        if !there && let Err(e) = lab.set_fitted(&values) {
             return Handled::Refused(format!("fit not applied: {e}"));
         }
-        let applied: Vec<String> = changes
+        let applied: Vec<String> = values
             .iter()
             .map(|&(key, value)| {
                 format!("{} = {}", key.param().symbol, show(value, key.dimension()))
