@@ -6,8 +6,7 @@ use std::path::Path;
 use std::sync::Arc;
 
 use super::args::{DataArgs, SceneArgs, TrackRole};
-use super::error::video_scale;
-use super::error::{BadValue, CliError, Flag};
+use super::error::{BadValue, CliError, Flag, video_scale};
 use crate::input::data::Reading;
 use crate::lab::{Groove, Lab, Layers, OwnData, Unfit};
 use crate::physics::scene::{Scene, Span};

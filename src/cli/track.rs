@@ -62,7 +62,8 @@ pub fn run(scene: &SceneArgs, data: &DataArgs, args: &TrackArgs) -> Result<Strin
     };
     // Tracks that `fit` would refuse for their scale (a ball at 87 m/s: R given as
     // 2.75, metres) are refused here, before anything is written.
-    tracks_in_a_groove(&args.video.display().to_string(), &done.text())?;
+    let tracks = done.text();
+    tracks_in_a_groove(&args.video.display().to_string(), &tracks)?;
     let drawn = match &args.overlay {
         Some(path) => {
             overlay::write_overlay(&args.video, &overlay::Drawing::tracked(&done), path)?;
@@ -71,7 +72,7 @@ pub fn run(scene: &SceneArgs, data: &DataArgs, args: &TrackArgs) -> Result<Strin
         None => String::new(),
     };
     let text = match args.format {
-        TrackOutput::Tracker => done.text(),
+        TrackOutput::Tracker => tracks,
         TrackOutput::Json => {
             let (info, tracks) = (&done.info, &done.tracks);
             let j = TrackJson {

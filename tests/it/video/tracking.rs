@@ -412,8 +412,8 @@ fn one_ball_in_view_is_tracked_and_named() {
 }
 
 /// `track` refuses `path` with one `error:` line containing `what`, exit 2, and
-/// writes nothing to `--output`.
-fn refused(path: &Path, extra: &[&str], what: &str) {
+/// writes nothing to `--output`: that line.
+fn refused(path: &Path, extra: &[&str], what: &str) -> String {
     let out = path.with_extension("out.txt");
     // A run before this one may have left it (the folders are reused).
     let _ = std::fs::remove_file(&out);
@@ -433,6 +433,7 @@ fn refused(path: &Path, extra: &[&str], what: &str) {
         "{path:?}: {err}"
     );
     assert!(!out.exists(), "{out:?} written");
+    err
 }
 
 #[test]
@@ -631,11 +632,10 @@ fn tracks_of_no_ball_in_a_groove_are_refused_by_track() {
     }
     let d = dir("radius_in_metres");
     let clip = write_mp4(&d, "clip.mp4", 100.0, &[], 12);
-    refused(&clip, &["--radius", "2.75"], "no ball in a groove");
-    refused(
-        &clip,
-        &["--radius", "2.75"],
-        "check --radius (a number without a unit is metres: 2.75 is 2.75 m",
+    let err = refused(&clip, &["--radius", "2.75"], "no ball in a groove");
+    assert!(
+        err.contains("check --radius (a number without a unit is metres: 2.75 is 2.75 m"),
+        "{err}"
     );
     let (code, _, err) = run(&["track", clip.to_str().unwrap(), "--radius", "2.75cm"]);
     assert_eq!(code, 0, "{err}");
