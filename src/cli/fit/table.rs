@@ -7,7 +7,7 @@ use std::fmt::Write as _;
 use crate::physics::scene::Scene;
 use crate::settings::units::{Dimension, show, show_small, significant, with_uncertainty};
 use crate::study::fit::{self, Chosen, Fits, LineFit, ModelFit};
-use crate::study::measured::Found;
+use crate::study::measured::{Found, NoLineVt};
 
 /// The short plain summary that opens the table: μ_k ± 2σ of the headline, its
 /// model and why it is the one, and the verdict; then μ_k alone.
@@ -225,6 +225,12 @@ fn line_fit_lines(
         mu_t,
         l.tau_net
     );
+    // A rim mark tracked but followed in too few frames: why, as the Fit view says
+    // it (with no mark at all, the track's table says so once, below).
+    let why = l.why_no_v_t();
+    if !(l.a_t.is_finite() && l.mu_t.is_finite()) && why != NoLineVt::NoMark {
+        let _ = writeln!(out, "  (|a_t| and μ_k,t not measured: {})", why.reason());
+    }
     if let Some(mass) = mass {
         let _ = writeln!(out, "  ({mass})");
     }

@@ -147,3 +147,27 @@ fn data_says_when_the_fits_leave_the_mark_out() {
         fit["track"]
     );
 }
+
+/// `fit`'s text printed "not measured" under |a_t| without saying why where a rim
+/// mark was tracked (a new user's report): it now gives the reason its JSON and the
+/// Fit view give; with no mark at all the track's table says so once, as before.
+#[test]
+fn fit_says_why_a_t_is_not_measured() {
+    let text = |path: &std::path::Path| {
+        let f = path.to_str().unwrap();
+        run_in_process(&["fit", "--preset", "paper-b4.9", "--data", f]).unwrap()
+    };
+    let why = "(|a_t| and μ_k,t not measured: ";
+    let few = text(&tracks_with_mark_in("text-mark-every-third", |i| {
+        i % 3 == 0
+    }));
+    let line = format!("{why}{})", NoLineVt::FewInARow.reason());
+    assert!(few.contains(&line), "{few}");
+    let none = text(&tracks_with_mark_in("text-mark-none", |_| false));
+    assert!(
+        !none.contains(why) && none.contains("(no rim mark: v_t, a_t and μ_k,t are not measured"),
+        "{none}"
+    );
+    let all = text(&tracks_with_mark_in("text-mark-all", |_| true));
+    assert!(!all.contains(why), "{all}");
+}
