@@ -87,8 +87,64 @@ pub fn dispatch(args: &[OsString]) -> Entry {
         Err(CliError::Interrupted) => {
             Entry::Exit(Exit::error(130, &CliError::Interrupted.to_string()))
         }
-        Err(e) => Entry::Exit(Exit::error(2, &e.to_string())),
+        Err(e) => Entry::Exit(Exit::error(2, &with_unit_hint(&e, args))),
     }
+}
+
+/// `e`'s message, and where it is a scene value out of range that was typed as a bare
+/// number of a length or a mass: that such a number is metres or kilograms (SI), and
+/// how to write the value in the unit people read (`--width 4.9` is 4.9 m; a
+/// groove's width is 4.9cm).
+fn with_unit_hint(e: &CliError, args: &[OsString]) -> String {
+    use crate::settings::params::PARAMS;
+    use crate::settings::spec::{Allowed, SceneError};
+    let message = e.to_string();
+    let CliError::Scene(SceneError::OutOfRange { key, allowed, .. }) = e else {
+        return message;
+    };
+    // Said only where the number read in that unit is allowed (1e308 g is no more
+    // a mass than 1e308 kg).
+    let in_range = |v: f64| match allowed {
+        Allowed::Range(r) => r.contains(v),
+        Allowed::BelowTwiceRadius { radius } => (0.0..2.0 * radius).contains(&v),
+        Allowed::After { .. } => false,
+    };
+    let bare = PARAMS
+        .iter()
+        .filter(|p| p.key == *key || p.sets.contains(key))
+        .filter(|p| p.dim.display_unit().1 != 0)
+        .find_map(|p| bare_value(args, p.flag).map(|v| (p, v)))
+        .filter(|(p, v)| {
+            v.trim()
+                .parse::<f64>()
+                .is_ok_and(|x| in_range(x * 10f64.powi(p.dim.display_unit().1)))
+        });
+    match bare {
+        Some((p, v)) => format!(
+            "{message}; --{} {v} has no unit, so it is {v} {} (a bare number is SI); in {unit} write {v}{unit}",
+            p.flag,
+            p.dim.si_unit(),
+            unit = p.dim.display_unit().0,
+        ),
+        None => message,
+    }
+}
+
+/// The value given to `--flag` (the last one, as clap takes it) where it is a bare
+/// number, without a unit.
+fn bare_value(args: &[OsString], flag: &str) -> Option<String> {
+    let long = format!("--{flag}");
+    let joined = format!("--{flag}=");
+    let mut found = None;
+    let mut words = args.iter().filter_map(|a| a.to_str());
+    while let Some(w) = words.next() {
+        if w == long {
+            found = words.next().map(str::to_string);
+        } else if let Some(v) = w.strip_prefix(&joined) {
+            found = Some(v.to_string());
+        }
+    }
+    found.filter(|v| v.trim().parse::<f64>().is_ok())
 }
 
 /// clap's message as one line: its sentences joined, without the usage block, the

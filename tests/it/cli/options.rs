@@ -76,6 +76,19 @@ fn every_option_rejects_bad_values() {
         (&["--radius", "11m"], "R ≤ 10 m"),
         (&["--height", "400m", "--g", "1000"], "too fast"),
         (&["--t-end", "2e6"], "t_end ≤ 1e6 s"),
+        // A bare number is SI: a length or a mass meant in cm or g is said to be,
+        // where the number read in that unit is allowed.
+        (
+            &["--width", "4.9"],
+            "groove width b = 490 cm is out of range, allowed 0 ≤ b < 2R = 5.5 cm; --width 4.9 has no unit, so it is 4.9 m (a bare number is SI); in cm write 4.9cm",
+        ),
+        (&["--width=4.9"], "; in cm write 4.9cm"),
+        (
+            &["--mass", "2000"],
+            "--mass 2000 has no unit, so it is 2000 kg",
+        ),
+        (&["--mass-left", "2000"], "; in g write 2000g"),
+        (&["--radius", "275"], "; in cm write 275cm"),
     ];
     let render_cases: &[(&[&str], &str)] = &[
         (&["--size", "10"], "COLSxROWS"),
@@ -181,6 +194,27 @@ fn a_sweep_refuses_the_span_it_does_not_use() {
         help.contains("--width") && !help.contains("--t-end"),
         "{help}"
     );
+}
+
+/// The unit hint only where it helps: not for a value with a unit, a value that is
+/// out of range in cm or g too, a sign's error, or a speed (m/s is what people
+/// type).
+#[test]
+fn a_bare_numbers_unit_hint_is_said_only_where_it_helps() {
+    for args in [
+        &["--width", "6cm"][..],
+        &["--mass", "1e308"],
+        &["--radius", "-2"],
+        &["--v0", "200"],
+        &["--width", "4.9cm", "--radius", "0.02"],
+    ] {
+        let mut full = vec!["simulate"];
+        full.extend_from_slice(args);
+        let out = groovelab(&full);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(!stderr.contains("has no unit"), "{args:?}: {stderr}");
+    }
 }
 
 /// A grid corner outside the scene's range is named in the unit of the message that
