@@ -9,6 +9,7 @@ use std::sync::Arc;
 
 use super::pane::{Pane, PaneCx, VideoData};
 use crate::input::video::tracked::Options;
+use crate::input::video::{VideoError, VideoProblem};
 use crate::lab::jobs::{Job, State, Ticket};
 use crate::lab::{Generation, Lab};
 use crate::tui::interact::{Input, click};
@@ -140,10 +141,7 @@ impl VideoRun {
                 // The first frame in place of any earlier view: a click on a ball
                 // there seeds the tracking again.
                 self.view = Some(first);
-                Handled::Refused(format!(
-                    "not tracked (V: its first frame; click a ball there to seed it): {}",
-                    refused.error
-                ))
+                Handled::Refused(refusal_said(&name, refused.error.as_ref()))
             }
         }
     }
@@ -232,4 +230,27 @@ pub fn short(name: &str) -> String {
     std::path::Path::new(name)
         .file_name()
         .map_or(name.into(), |f| f.to_string_lossy().into_owned())
+}
+
+/// The status line's words for the tracker's refusal of the video `name`, whose
+/// first frame is shown: the refusal alone, without the file's path (the clip is
+/// named) and without the command line's `--roi`/`--ball-at` (a click on a ball is
+/// the app's seed), so that the reason comes first and is read whole; a tracking
+/// seeded by a click says where. Any other error whole, as before.
+fn refusal_said(name: &str, error: &(dyn std::error::Error + Send + Sync + 'static)) -> String {
+    let tracks = error
+        .downcast_ref::<VideoError>()
+        .and_then(|e| match &e.what {
+            VideoProblem::Tracks { error, at, .. } => Some((error, *at)),
+            _ => None,
+        });
+    match tracks {
+        Some((why, None)) => {
+            format!("{name} not tracked: {why} (V: its first frame; click a ball there to seed it)")
+        }
+        Some((why, Some((x, y)))) => format!(
+            "{name} not tracked from the ball clicked at ({x:.0}, {y:.0}) px: {why} (V: its first frame; click another ball there)"
+        ),
+        None => format!("not tracked (V: its first frame; click a ball there to seed it): {error}"),
+    }
 }
