@@ -24,7 +24,7 @@ pub fn scroll_max(app: &App, area: Rect, theme: &Theme) -> usize {
     match app.layers().top() {
         Some(Layer::Help(_)) => {
             let width = help_width(area);
-            let lines = help_lines(usize::from(width.saturating_sub(2)), theme);
+            let lines = help_lines(usize::from(width.saturating_sub(2)), theme, last(app));
             scroll_frame(area, width, 0, lines.len()).2
         }
         Some(Layer::Table(_)) => {
@@ -40,10 +40,32 @@ pub fn scroll_max(app: &App, area: Rect, theme: &Theme) -> usize {
     }
 }
 
-/// The help's lines at `width`: every binding of the key table, descriptions wrapped
-/// under themselves, then the mouse.
-fn help_lines(width: usize, theme: &Theme) -> Vec<Line<'static>> {
+/// The status line's message, where one is (an error or a note): the help shows it
+/// whole, as a long one is cut on the status line's two rows at 80 columns.
+fn last(app: &App) -> Option<(&str, bool)> {
+    match &app.status {
+        Status::Error(e) => Some((e.as_str(), true)),
+        Status::Info(i) => Some((i.as_str(), false)),
+        Status::None | Status::Predicted => None,
+    }
+}
+
+/// The help's lines at `width`: the last message whole (`last`: its text, and
+/// whether it is an error), then every binding of the key table, descriptions
+/// wrapped under themselves, then the mouse.
+fn help_lines(width: usize, theme: &Theme, last: Option<(&str, bool)>) -> Vec<Line<'static>> {
     let g = theme.glyphs;
+    let mut lines = Vec::new();
+    if let Some((message, error)) = last.filter(|(m, _)| !m.is_empty()) {
+        let style = if error { theme.error } else { theme.text };
+        let said = g.text(&format!("Last message: {message}"));
+        for row in wrap(Line::from(said), width.saturating_sub(2)) {
+            let mut spans = vec![Span::raw(" ")];
+            spans.extend(row.spans.into_iter().map(|s| s.style(style)));
+            lines.push(Line::from(spans));
+        }
+        lines.push(Line::default());
+    }
     // The widest keys' names (Shift-right PgUp in ASCII), 14 columns at least.
     let keys_width = TABLE
         .iter()
@@ -54,7 +76,6 @@ fn help_lines(width: usize, theme: &Theme) -> Vec<Line<'static>> {
     // A column kept free on the right, as on the left: a description that fills its
     // row to the border runs into it.
     let text_width = width.saturating_sub(keys_width + 3).max(10);
-    let mut lines = Vec::new();
     for b in TABLE {
         let keys = crate::tui::keys::display_keys(b, g.ascii);
         let rows = wrap(Line::from(g.text(b.help)), text_width);
@@ -87,9 +108,9 @@ fn help_width(area: Rect) -> u16 {
 }
 
 /// The keys, scrolling.
-fn help(first: usize, area: Rect, buf: &mut Buffer, theme: &Theme) {
+fn help(app: &App, first: usize, area: Rect, buf: &mut Buffer, theme: &Theme) {
     let width = help_width(area);
-    let lines = help_lines(usize::from(width.saturating_sub(2)), theme);
+    let lines = help_lines(usize::from(width.saturating_sub(2)), theme, last(app));
     let title = if theme.glyphs.ascii {
         "Keys  (Esc or q closes, up/down PgUp/PgDn scroll; other keys act)"
     } else {
@@ -298,7 +319,7 @@ fn prompt(
 
 impl Component for Help {
     fn render(&self, area: Rect, buf: &mut Buffer, cx: &Ctx<'_>) {
-        help(self.scroll().first(), area, buf, cx.theme);
+        help(cx.app, self.scroll().first(), area, buf, cx.theme);
     }
 }
 
@@ -341,7 +362,14 @@ mod tests {
         for ascii in [false, true] {
             let theme = Theme::new(Glyphs::new(ascii), true);
             for width in 30..=160 {
-                for line in help_lines(width, &theme) {
+                let message = Some((
+                    "clip.mp4 not tracked: tracking unsure: neither ball was found in a third of the frames (at most in 3 of 27), so no tracks are given (V: its first frame; click a ball there to seed it)",
+                    true,
+                ));
+                for line in help_lines(width, &theme, None)
+                    .into_iter()
+                    .chain(help_lines(width, &theme, message))
+                {
                     assert!(
                         line.width() < width,
                         "{width} columns, ascii {ascii}: {line:?} is {} wide",

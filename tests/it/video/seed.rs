@@ -368,3 +368,45 @@ fn the_first_frame_counts_the_frames_of_the_tracking_again() {
     let text = common::text(&app, (120, 40), false);
     assert!(!text.contains("tracking again"), "{text}");
 }
+
+/// A video's refusal is longer than the status line's two rows at 80 columns, which
+/// cut it with an ellipsis; the help (`?`) shows the last message whole above the
+/// keys, in both glyph sets (its rows read inside the popup's borders, joined).
+#[test]
+fn the_help_shows_a_refusal_the_status_line_cuts_whole() {
+    let dir = super::blank_frames("video_refused_help", 6);
+    let data = DataArgs {
+        data: vec![dir.clone()],
+        fps: Some(30.0),
+        ..DataArgs::default()
+    };
+    let options = Options {
+        radius: 0.0275,
+        fps: Some(30.0),
+        ..options()
+    };
+    let library = common::no_user_presets("video-refused-help");
+    let mut app =
+        groovelab::cli::opened_tracking(&SceneArgs::default(), &data, library, options).unwrap();
+    app.wait();
+    let Status::Error(said) = app.status.clone() else {
+        panic!("{:?}", app.status)
+    };
+    let words = |s: &str| s.split_whitespace().collect::<Vec<_>>().join(" ");
+    let before = common::text(&app, (80, 24), false);
+    assert!(!words(&before).contains(&words(&said)), "{before}");
+    common::press(&mut app, "?");
+    for ascii in [false, true] {
+        let text = common::text(&app, (80, 24), ascii);
+        // The popup is 78 columns wide from the second: its text from the third.
+        let inside: Vec<String> = text
+            .lines()
+            .map(|l| l.chars().skip(2).take(75).collect())
+            .collect();
+        let read = words(&inside.join(" "));
+        assert!(
+            read.contains(&format!("Last message: {}", words(&said))),
+            "ascii {ascii}: {said}\n{text}"
+        );
+    }
+}
