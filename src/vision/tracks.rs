@@ -230,8 +230,12 @@ pub struct BallTrack {
     pub merged: usize,
     pub poor: usize,
     pub repeated: usize,
-    /// Frames with the ball but not its mark (hidden by the rail, too near it, or left out by `mark_check`: not turning with the ball).
+    /// Frames with the ball but not its mark (never found, or left out by `mark_check`).
     pub mark_missing: usize,
+    /// Of `mark_missing`, the frames whose mark was found but left out by the marks'
+    /// checks (`mark_check`: not turning with the ball, or alone); the rest were
+    /// never found (hidden by the rail, turned away, too near the ball's edge or the rail).
+    pub mark_left_out: usize,
 }
 
 /// Both balls' tracks (or one ball's), the times of the frames and the calibration.
@@ -253,7 +257,8 @@ pub fn tracks(
 ) -> Result<Tracks, TracksError> {
     let p = &tracker.params;
     steep(&tracker.frames)?;
-    let mut frames = super::mark_check::checked(&ordered(&tracker.frames), &p.marks);
+    let as_found = ordered(&tracker.frames);
+    let mut frames = super::mark_check::checked(&as_found, &p.marks);
     leave_out_odd_fits(&mut frames, tracker, &times, radius, scale);
     // The marks' checks judged each mark by the fits about it, some of which the
     // odd fits' rules have now left out (a repeated picture's stale centre and the
@@ -320,7 +325,9 @@ pub fn tracks(
         .map(|(&s, name)| {
             let line = ball_line(&centres[s], n).unwrap_or(f64::NAN);
             let centre = |o: &Outline| on_the_line(o, line, n);
-            ball_track(frames, s, name, &to_m, &centre, px_per_m)
+            let mut b = ball_track(frames, s, name, &to_m, &centre, px_per_m);
+            b.mark_left_out = marks_left_out(&as_found, frames, s);
+            b
         })
         .collect();
     Ok(Tracks {
@@ -1197,6 +1204,21 @@ fn on_the_line(o: &Outline, line: f64, n: (f64, f64)) -> (f64, f64) {
     (c.x + off * n.0, c.y + off * n.1)
 }
 
+/// The frames of slot `slot` whose ball is kept in `kept` without its mark, where the
+/// tracker had found one (`found`, the frames before the marks' checks).
+#[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
+fn marks_left_out(found: &[FrameFixes], kept: &[FrameFixes], slot: usize) -> usize {
+    found
+        .iter()
+        .zip(kept)
+        .filter(|(f, k)| {
+            let had = f[slot].as_ref().is_ok_and(|fix| fix.mark.is_some());
+            let lost = k[slot].as_ref().is_ok_and(|fix| fix.mark.is_none());
+            had && lost
+        })
+        .count()
+}
+
 /// Slot `slot` of `tracker` as a [`BallTrack`] named `name`, through `to_m`.
 #[allow(clippy::indexing_slicing)] // slots are 0 or 1 of a two-slot frame
 fn ball_track(
@@ -1220,6 +1242,7 @@ fn ball_track(
         poor: 0,
         repeated: 0,
         mark_missing: 0,
+        mark_left_out: 0,
     };
     let nan = f64::NAN;
     for f in frames {
@@ -1273,6 +1296,41 @@ mod tests {
             spots: [None; crate::vision::mark::SPOTS],
             colour: None,
         })
+    }
+
+    /// A mark the tracker found and the marks' checks left out is counted as left
+    /// out, in its ball's slot only; one never found, or on a ball left out, is not.
+    #[test]
+    fn marks_left_out_are_those_found_then_dropped() {
+        let marked = |x: f64| {
+            fix(x, 200.0, 20.0).map(|f| Fix {
+                mark: Some(crate::vision::mark::Mark {
+                    x,
+                    y: 190.0,
+                    sigma: 0.2,
+                    contrast: -40.0,
+                }),
+                ..f
+            })
+        };
+        let found: Vec<FrameFixes> = vec![
+            [marked(100.0), marked(300.0)],
+            [marked(110.0), fix(290.0, 200.0, 20.0)],
+            [marked(120.0), marked(280.0)],
+            [fix(130.0, 200.0, 20.0), marked(270.0)],
+        ];
+        let kept: Vec<FrameFixes> = vec![
+            // Left's mark dropped, right's kept.
+            [fix(100.0, 200.0, 20.0), marked(300.0)],
+            // Left's kept; right never had one.
+            [marked(110.0), fix(290.0, 200.0, 20.0)],
+            // Left's ball left out (not a mark's doing); right's mark dropped.
+            [Err(LeftOut::Poor), fix(280.0, 200.0, 20.0)],
+            // Left never had one; right's dropped.
+            [fix(130.0, 200.0, 20.0), fix(270.0, 200.0, 20.0)],
+        ];
+        assert_eq!(marks_left_out(&found, &kept, 0), 1);
+        assert_eq!(marks_left_out(&found, &kept, 1), 2);
     }
 
     /// Two balls meeting at frame 10 at 30 frames/s, 1400 px/m, R 38 px: the left

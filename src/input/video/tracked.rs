@@ -1313,17 +1313,65 @@ fn ball_line(b: &BallTrack, frames: usize) -> String {
     } else {
         format!(" (left out, not filled in: {})", out.join(", "))
     };
+    let unfound = b.mark_missing.saturating_sub(b.mark_left_out);
+    let mut marks = Vec::new();
+    if unfound > 0 {
+        marks.push(format!(
+            "{unfound} not found: hidden by the rail, turned away, or too near the ball's edge or the rail"
+        ));
+    }
+    if b.mark_left_out > 0 {
+        marks.push(format!(
+            "{} found but left out: not turning with the ball",
+            b.mark_left_out
+        ));
+    }
+    let marks = if marks.is_empty() {
+        String::new()
+    } else {
+        format!(" ({})", marks.join("; "))
+    };
     format!(
-        "{} ball: centre in {tracked} of {frames} frames{left_out}; mark in {} ({} not found: hidden by the rail, too near it, or not turning with the ball)",
+        "{} ball: centre in {tracked} of {frames} frames{left_out}; mark in {}{marks}",
         b.name,
         tracked - b.mark_missing,
-        b.mark_missing
     )
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A ball's line says how many marks were never found and how many were found
+    /// and left out by the marks' checks, each only where there are some.
+    #[test]
+    fn a_balls_line_tells_marks_not_found_from_marks_left_out() {
+        let ball = |missing: usize, left_out: usize| BallTrack {
+            name: "left",
+            x: vec![],
+            y: vec![],
+            sigma: vec![],
+            mark_x: vec![],
+            mark_y: vec![],
+            mark_sigma: vec![],
+            unseen: 0,
+            merged: 1,
+            poor: 0,
+            repeated: 0,
+            mark_missing: missing,
+            mark_left_out: left_out,
+        };
+        let line = ball_line(&ball(27, 5), 50);
+        assert_eq!(
+            line,
+            "left ball: centre in 49 of 50 frames (left out, not filled in: 1 touching the other ball); mark in 22 (22 not found: hidden by the rail, turned away, or too near the ball's edge or the rail; 5 found but left out: not turning with the ball)"
+        );
+        assert!(
+            ball_line(&ball(3, 3), 50)
+                .ends_with("mark in 46 (3 found but left out: not turning with the ball)")
+        );
+        assert!(ball_line(&ball(0, 0), 50).ends_with("mark in 49"));
+    }
 
     /// Frames are kept while they fit (then given back, in their order, each a copy),
     /// and none once one more would not: a clip is kept whole or not at all.

@@ -164,6 +164,7 @@ fn the_tracker_text_keeps_each_points_sigma() {
         poor: 0,
         repeated: 0,
         mark_missing: 0,
+        mark_left_out: 0,
     };
     let tracks = Tracks {
         t,
