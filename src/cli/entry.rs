@@ -97,30 +97,21 @@ pub fn dispatch(args: &[OsString]) -> Entry {
 /// groove's width is 4.9cm).
 fn with_unit_hint(e: &CliError, args: &[OsString]) -> String {
     use crate::settings::params::PARAMS;
-    use crate::settings::spec::{Allowed, SceneError};
+    use crate::settings::spec::SceneError;
     let message = e.to_string();
     let CliError::Scene(SceneError::OutOfRange { key, allowed, .. }) = e else {
         return message;
     };
     // Said only where the number read in that unit is allowed (1e308 g is no more
     // a mass than 1e308 kg).
-    let in_range = |v: f64| match allowed {
-        Allowed::Range(r) => r.contains(v),
-        Allowed::BelowTwiceRadius { radius } => (0.0..2.0 * radius).contains(&v),
-        Allowed::After { .. } => false,
-    };
     let bare = PARAMS
         .iter()
         .filter(|p| p.key == *key || p.sets.contains(key))
         .filter(|p| p.dim.display_unit().1 != 0)
         .find_map(|p| bare_value(args, p.flag).map(|v| (p, v)))
-        .filter(|(p, v)| {
-            v.trim()
-                .parse::<f64>()
-                .is_ok_and(|x| in_range(x * 10f64.powi(p.dim.display_unit().1)))
-        });
+        .filter(|(p, (_, x))| allowed.admits(x * 10f64.powi(p.dim.display_unit().1)));
     match bare {
-        Some((p, v)) => format!(
+        Some((p, (v, _))) => format!(
             "{message}; --{} {v} has no unit, so it is {v} {} (a bare number is SI); in {unit} write {v}{unit}",
             p.flag,
             p.dim.si_unit(),
@@ -130,9 +121,9 @@ fn with_unit_hint(e: &CliError, args: &[OsString]) -> String {
     }
 }
 
-/// The value given to `--flag` (the last one, as clap takes it) where it is a bare
-/// number, without a unit.
-fn bare_value(args: &[OsString], flag: &str) -> Option<String> {
+/// The value given to `--flag` (the last one, as clap takes it), as typed and as a
+/// number, where it is a bare number, without a unit.
+fn bare_value(args: &[OsString], flag: &str) -> Option<(String, f64)> {
     let long = format!("--{flag}");
     let joined = format!("--{flag}=");
     let mut found = None;
@@ -144,7 +135,8 @@ fn bare_value(args: &[OsString], flag: &str) -> Option<String> {
             found = Some(v.to_string());
         }
     }
-    found.filter(|v| v.trim().parse::<f64>().is_ok())
+    let x = found.as_deref()?.trim().parse::<f64>().ok()?;
+    found.map(|v| (v, x))
 }
 
 /// clap's message as one line: its sentences joined, without the usage block, the

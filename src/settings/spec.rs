@@ -84,6 +84,17 @@ pub enum Allowed {
     After { t_start: f64 },
 }
 
+impl Allowed {
+    /// Whether `v` (SI) is what is allowed.
+    pub fn admits(&self, v: f64) -> bool {
+        match self {
+            Allowed::Range(r) => r.contains(v),
+            Allowed::BelowTwiceRadius { radius } => (0.0..2.0 * radius).contains(&v),
+            Allowed::After { t_start } => v > *t_start,
+        }
+    }
+}
+
 impl fmt::Display for Allowed {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {

@@ -213,7 +213,7 @@ pub struct Calibration {
 }
 
 /// One ball's tracks, metres (NaN where left out).
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
 pub struct BallTrack {
     /// "left" or "right".
     pub name: &'static str,
@@ -1231,18 +1231,7 @@ fn ball_track(
 ) -> BallTrack {
     let mut b = BallTrack {
         name,
-        x: vec![],
-        y: vec![],
-        sigma: vec![],
-        mark_x: vec![],
-        mark_y: vec![],
-        mark_sigma: vec![],
-        unseen: 0,
-        merged: 0,
-        poor: 0,
-        repeated: 0,
-        mark_missing: 0,
-        mark_left_out: 0,
+        ..BallTrack::default()
     };
     let nan = f64::NAN;
     for f in frames {

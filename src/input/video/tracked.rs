@@ -1348,18 +1348,10 @@ mod tests {
     fn a_balls_line_tells_marks_not_found_from_marks_left_out() {
         let ball = |missing: usize, left_out: usize| BallTrack {
             name: "left",
-            x: vec![],
-            y: vec![],
-            sigma: vec![],
-            mark_x: vec![],
-            mark_y: vec![],
-            mark_sigma: vec![],
-            unseen: 0,
             merged: 1,
-            poor: 0,
-            repeated: 0,
             mark_missing: missing,
             mark_left_out: left_out,
+            ..BallTrack::default()
         };
         let line = ball_line(&ball(27, 5), 50);
         assert_eq!(

@@ -160,11 +160,7 @@ fn the_tracker_text_keeps_each_points_sigma() {
         mark_y: vec![0.012; n],
         mark_sigma: ramp(2e-5, 1.7e-6),
         unseen: 1,
-        merged: 0,
-        poor: 0,
-        repeated: 0,
-        mark_missing: 0,
-        mark_left_out: 0,
+        ..BallTrack::default()
     };
     let tracks = Tracks {
         t,

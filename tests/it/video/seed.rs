@@ -234,14 +234,10 @@ fn a_video_that_cannot_be_tracked_again_says_so() {
     assert_eq!(app.video().seed, None);
 }
 
-/// A video the tracker refuses shows its first frame in the video view (`V`) beside
-/// why (a seed is a point in the first frame, and a refused video has no other
-/// picture to click in); a click there tracks it again seeded at the clicked pixel,
-/// and a refusal of that says it was seeded. Through the app's own tracking of a
-/// folder of ball-less frames.
-#[test]
-fn a_refused_video_shows_its_first_frame_and_a_click_there_seeds_it() {
-    let dir = super::blank_frames("video_refused_first", 6);
+/// The app tracking a folder of 6 ball-less frames (made under `area`, the user's
+/// presets under `presets`), its tracking refused and done: the folder and the app.
+fn refused_app(area: &str, presets: &str) -> (std::path::PathBuf, App) {
+    let dir = super::blank_frames(area, 6);
     let data = DataArgs {
         data: vec![dir.clone()],
         fps: Some(30.0),
@@ -252,10 +248,21 @@ fn a_refused_video_shows_its_first_frame_and_a_click_there_seeds_it() {
         fps: Some(30.0),
         ..options()
     };
-    let library = common::no_user_presets("video-refused-first");
+    let library = common::no_user_presets(presets);
     let mut app =
         groovelab::cli::opened_tracking(&SceneArgs::default(), &data, library, options).unwrap();
     app.wait();
+    (dir, app)
+}
+
+/// A video the tracker refuses shows its first frame in the video view (`V`) beside
+/// why (a seed is a point in the first frame, and a refused video has no other
+/// picture to click in); a click there tracks it again seeded at the clicked pixel,
+/// and a refusal of that says it was seeded. Through the app's own tracking of a
+/// folder of ball-less frames.
+#[test]
+fn a_refused_video_shows_its_first_frame_and_a_click_there_seeds_it() {
+    let (dir, mut app) = refused_app("video_refused_first", "video-refused-first");
     let Status::Error(said) = &app.status else {
         panic!("{:?}", app.status)
     };
@@ -374,21 +381,7 @@ fn the_first_frame_counts_the_frames_of_the_tracking_again() {
 /// keys, in both glyph sets (its rows read inside the popup's borders, joined).
 #[test]
 fn the_help_shows_a_refusal_the_status_line_cuts_whole() {
-    let dir = super::blank_frames("video_refused_help", 6);
-    let data = DataArgs {
-        data: vec![dir.clone()],
-        fps: Some(30.0),
-        ..DataArgs::default()
-    };
-    let options = Options {
-        radius: 0.0275,
-        fps: Some(30.0),
-        ..options()
-    };
-    let library = common::no_user_presets("video-refused-help");
-    let mut app =
-        groovelab::cli::opened_tracking(&SceneArgs::default(), &data, library, options).unwrap();
-    app.wait();
+    let (_, mut app) = refused_app("video_refused_help", "video-refused-help");
     let Status::Error(said) = app.status.clone() else {
         panic!("{:?}", app.status)
     };
