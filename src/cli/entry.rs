@@ -103,12 +103,15 @@ fn with_unit_hint(e: &CliError, args: &[OsString]) -> String {
         return message;
     };
     // Said only where the number read in that unit is allowed (1e308 g is no more
-    // a mass than 1e308 kg).
+    // a mass than 1e308 kg), and is 1 or more: a bare number under 1 is as likely
+    // metres or kilograms meant (`--width 0.06`, 6 cm, just wider than 2R = 5.5 cm,
+    // is no 0.06 cm mistyped).
     let bare = PARAMS
         .iter()
         .filter(|p| p.key == *key || p.sets.contains(key))
         .filter(|p| p.dim.display_unit().1 != 0)
         .find_map(|p| bare_value(args, p.flag).map(|v| (p, v)))
+        .filter(|(_, (_, x))| x.abs() >= 1.0)
         .filter(|(p, (_, x))| allowed.admits(x * 10f64.powi(p.dim.display_unit().1)));
     match bare {
         Some((p, (v, _))) => format!(

@@ -207,6 +207,9 @@ fn a_bare_numbers_unit_hint_is_said_only_where_it_helps() {
         &["--radius", "-2"],
         &["--v0", "200"],
         &["--width", "4.9cm", "--radius", "0.02"],
+        // Metres meant: 6 cm, 7 cm, just wider than the 2R allowed.
+        &["--width", "0.06"],
+        &["--radius", "0.03", "--width", "0.07"],
     ] {
         let mut full = vec!["simulate"];
         full.extend_from_slice(args);
