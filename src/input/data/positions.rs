@@ -13,7 +13,7 @@ use super::notes::{Notes, UnitNote};
 use super::options::{MAX_ROWS, Reading};
 use super::problem::{DataError, DataProblem, RowError};
 use super::scales::{Given, LENGTHS, TIMES, check_track_as_read};
-use super::table::{Table, TableRow, missing, number};
+use super::table::{Sep, Table, TableRow, missing, number};
 use crate::study::measured::{Track, TrackParts};
 
 /// Parses a position file (see the module doc) into a [`Track`] in SI units.
@@ -91,6 +91,7 @@ pub(super) fn read_table(
         ..TrackParts::default()
     };
     let columns = Columns {
+        header: (header.clone(), table.sep),
         t: (it, units.factor(it, Axis::T)),
         x: (ix, units.factor(ix, Axis::X)),
         y: iy.map(|i| (i, units.factor(i, Axis::Y))),
@@ -107,6 +108,7 @@ pub(super) fn read_table(
     // centre's frames by time (as two one-track exports are).
     if let (Some(t), Some((a, b))) = (mark_t, im) {
         let own = Columns {
+            header: (header.clone(), table.sep),
             t: (t, units.factor(t, Axis::T)),
             x: (a, units.factor(a, Axis::X)),
             y: Some((b, units.factor(b, Axis::Y))),
@@ -257,6 +259,8 @@ fn with_own_time_mark(
 
 /// Where a track's values are in a row, and their SI factors.
 struct Columns {
+    /// The header (its rows are no wider) and the file's separator.
+    header: (TableRow, Sep),
     t: (usize, f64),
     x: (usize, f64),
     y: Option<(usize, f64)>,
@@ -275,6 +279,9 @@ fn read_rows(
     for row in rows {
         if track.t.len() == MAX_ROWS {
             return Err(RowError::TooMany { line: row.line });
+        }
+        if let Some(e) = row.wider_than(&columns.header.0, columns.header.1) {
+            return Err(e);
         }
         let value = |(i, f): (usize, f64), name: &'static str| -> Result<f64, RowError> {
             let c = row.cell(i);

@@ -259,6 +259,21 @@ pub enum RowError {
         prev: String,
         unit: Option<&'static str>,
     },
+    /// A data row with more filled cells (`fields`) than its header, at
+    /// `header_line`, names (`header`): which number is which cannot be told. A
+    /// comma-separated file written with decimal commas splits each number in two
+    /// (`decimal_commas`: the file's separator is the comma).
+    #[error(
+        "line {line}: {fields} filled cells where the header (line {header_line}) names {header} columns, so which number is which cannot be told{}",
+        if *decimal_commas { "; decimal commas in a comma-separated file? Write the numbers with a point, or separate the columns with ;" } else { "" }
+    )]
+    Wider {
+        line: usize,
+        fields: usize,
+        header_line: usize,
+        header: usize,
+        decimal_commas: bool,
+    },
     /// A number beyond [`MOST_CELL`] in the file's own unit: no experiment's.
     #[error(
         "line {line}: {name} = {value:e} is beyond any measurement, allowed |{name}| ≤ 1e12 in the file's unit"

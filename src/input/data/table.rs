@@ -4,6 +4,7 @@
 //! (Tracker's `#multi:` kept), every row with the file's own line number for errors;
 //! and the helpers that read a cell: header names with their units, and numbers.
 
+use super::problem::RowError;
 use crate::settings::units::{self, Dimension};
 
 /// How the cells of a line are separated.
@@ -35,6 +36,7 @@ impl Sep {
 }
 
 /// One row of a file: its line number (from 1) and its cells, trimmed.
+#[derive(Clone)]
 pub(crate) struct TableRow {
     pub line: usize,
     pub cells: csv::StringRecord,
@@ -48,6 +50,22 @@ impl TableRow {
 
     pub fn len(&self) -> usize {
         self.cells.len()
+    }
+
+    /// Why this data row cannot be read against `header` (in a file separated by
+    /// `sep`): more filled cells than the header names (trailing empty cells, as a
+    /// spreadsheet's export leaves them, are none).
+    pub fn wider_than(&self, header: &TableRow, sep: Sep) -> Option<RowError> {
+        let fields = (0..self.len())
+            .filter(|&i| !self.cell(i).is_empty())
+            .count();
+        (fields > header.len()).then(|| RowError::Wider {
+            line: self.line,
+            fields,
+            header_line: header.line,
+            header: header.len(),
+            decimal_commas: sep == Sep::Comma,
+        })
     }
 }
 

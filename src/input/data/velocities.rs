@@ -125,6 +125,9 @@ fn columns(
         if t.len() == MAX_ROWS {
             return Err(err(RowError::TooMany { line: row.line }.into()));
         }
+        if let Some(e) = row.wider_than(&header, table.sep) {
+            return Err(err(e.into()));
+        }
         let get = |i: usize, name: &'static str| {
             let cell = row.cell(i);
             number(cell).ok_or_else(|| {

@@ -688,3 +688,77 @@ fn a_mark_at_the_centre_and_metres_read_as_mm_are_refused() {
     let (ok, _, err) = groovelab(&["fit", "--preset", "paper-b4.9", "--data", f]);
     assert!(ok, "{err}");
 }
+
+/// A data row with more filled cells than its header names is refused, naming its
+/// line: which number is which cannot be told. A comma-separated file written with
+/// decimal commas (`0,1,0,5,0,2` under `t,v_cm,v_t`) read each number's integer
+/// part as a column and was refused for times that do not increase, or, for a
+/// position track, read silently wrong; the error now says so and suggests the fix.
+/// Trailing empty cells (a spreadsheet's export) are no extra fields.
+#[test]
+fn a_row_wider_than_its_header_is_refused_naming_the_line() {
+    let (r, d) = (Reading::default(), Derive::default());
+    let velocities_rows: String = velocities()
+        .iter()
+        // Decimal points written as commas, the columns separated by commas too.
+        .map(|(t, v, u)| format!("{t:.3},{v:.5},{u:.5}\n").replace('.', ","))
+        .collect();
+    let positions = video_track(3);
+    let rows = |sep: char| -> String {
+        positions
+            .t()
+            .iter()
+            .zip(positions.x())
+            .map(|(t, x)| format!("{t:.5}{sep}{x:.6}\n"))
+            .collect()
+    };
+    for (name, text, line, decimal) in [
+        (
+            "velocities with decimal commas",
+            format!("t,v_cm,v_t\n{velocities_rows}"),
+            2,
+            true,
+        ),
+        (
+            "positions with decimal commas",
+            format!("t,x\n{}", rows(',').replace('.', ",")),
+            2,
+            true,
+        ),
+        (
+            "a tab file with a stray cell",
+            {
+                let mut t = format!("t\tx\n{}", rows('\t'));
+                let third = t.lines().nth(3).unwrap().to_string();
+                t = t.replacen(&third, &format!("{third}\t7"), 1);
+                t
+            },
+            4,
+            false,
+        ),
+    ] {
+        let e = data::load(&text, "f.csv", &r, &d)
+            .map(|_| ())
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains(&format!("line {line}: ")), "{name}: {e}");
+        assert!(
+            e.contains("so which number is which cannot be told"),
+            "{name}: {e}"
+        );
+        assert_eq!(
+            e.contains("decimal commas in a comma-separated file?"),
+            decimal,
+            "{name}: {e}"
+        );
+    }
+    // Trailing empty cells, as a spreadsheet leaves them, are read as before.
+    let trailing = format!("t,x,,\n{}", rows(',').replace('\n', ",,\n"));
+    let plain = format!("t,x\n{}", rows(','));
+    let (a, b) = (
+        data::load(&trailing, "f.csv", &r, &d).unwrap(),
+        data::load(&plain, "f.csv", &r, &d).unwrap(),
+    );
+    assert_eq!(a.measured().t(), b.measured().t());
+    assert_eq!(a.measured().v_cm(), b.measured().v_cm());
+}
