@@ -280,7 +280,7 @@ fn read_rows(
         if track.t.len() == MAX_ROWS {
             return Err(RowError::TooMany { line: row.line });
         }
-        if let Some(e) = row.wider_than(&columns.header.0, columns.header.1) {
+        if let Some(e) = RowError::wider(&row, &columns.header.0, columns.header.1) {
             return Err(e);
         }
         let value = |(i, f): (usize, f64), name: &'static str| -> Result<f64, RowError> {

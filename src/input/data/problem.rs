@@ -9,6 +9,7 @@ use super::misfit::Implausible;
 use super::options::MAX_ROWS;
 use super::roles::Swapped;
 use super::scales::{ScaleError, TIMES, unit_name};
+use super::table::{Sep, TableRow};
 use super::xml::XmlError;
 use crate::settings::params::{Key, PARAMS};
 use crate::settings::quote::clip;
@@ -286,6 +287,20 @@ pub enum RowError {
 }
 
 impl RowError {
+    /// Why the data row `row` cannot be read against `header` (in a file separated
+    /// by `sep`): more filled cells than the header names (trailing empty cells, as
+    /// a spreadsheet's export leaves them, are none).
+    pub(super) fn wider(row: &TableRow, header: &TableRow, sep: Sep) -> Option<RowError> {
+        let fields = (0..row.len()).filter(|&i| !row.cell(i).is_empty()).count();
+        (fields > header.len()).then(|| RowError::Wider {
+            line: row.line,
+            fields,
+            header_line: header.line,
+            header: header.len(),
+            decimal_commas: sep == Sep::Comma,
+        })
+    }
+
     /// Line `line`'s time, `time` as written, is not after the time before it, `prev`
     /// as written, in a time unit of SI factor `factor`.
     pub(super) fn not_increasing(line: usize, time: &str, prev: &str, factor: f64) -> RowError {

@@ -4,7 +4,6 @@
 //! (Tracker's `#multi:` kept), every row with the file's own line number for errors;
 //! and the helpers that read a cell: header names with their units, and numbers.
 
-use super::problem::RowError;
 use crate::settings::units::{self, Dimension};
 
 /// How the cells of a line are separated.
@@ -50,22 +49,6 @@ impl TableRow {
 
     pub fn len(&self) -> usize {
         self.cells.len()
-    }
-
-    /// Why this data row cannot be read against `header` (in a file separated by
-    /// `sep`): more filled cells than the header names (trailing empty cells, as a
-    /// spreadsheet's export leaves them, are none).
-    pub fn wider_than(&self, header: &TableRow, sep: Sep) -> Option<RowError> {
-        let fields = (0..self.len())
-            .filter(|&i| !self.cell(i).is_empty())
-            .count();
-        (fields > header.len()).then(|| RowError::Wider {
-            line: self.line,
-            fields,
-            header_line: header.line,
-            header: header.len(),
-            decimal_commas: sep == Sep::Comma,
-        })
     }
 }
 

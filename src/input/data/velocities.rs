@@ -125,7 +125,7 @@ fn columns(
         if t.len() == MAX_ROWS {
             return Err(err(RowError::TooMany { line: row.line }.into()));
         }
-        if let Some(e) = row.wider_than(&header, table.sep) {
+        if let Some(e) = RowError::wider(&row, &header, table.sep) {
             return Err(err(e.into()));
         }
         let get = |i: usize, name: &'static str| {
