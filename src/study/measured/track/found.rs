@@ -249,11 +249,12 @@ impl Found {
     }
 }
 
-/// Runs of missing frames said as times: "t = 0.325 … 0.392 s, 0.983 s" (the
-/// first five runs, then how many more).
+/// Runs of missing frames said as times: "t = 0.325 … 0.392, 0.983 s" (the first
+/// five runs, then how many more: "t = 0.021, …, 0.096 s, and 31 more runs", the
+/// unit with the times it is of).
 pub fn runs_text(runs: &[[f64; 2]]) -> String {
     const SHOWN: usize = 5;
-    let mut parts: Vec<String> = runs
+    let parts: Vec<String> = runs
         .iter()
         .take(SHOWN)
         .map(|[a, b]| {
@@ -264,8 +265,10 @@ pub fn runs_text(runs: &[[f64; 2]]) -> String {
             }
         })
         .collect();
-    if runs.len() > SHOWN {
-        parts.push(format!("and {} more", runs.len() - SHOWN));
+    let more = runs.len().saturating_sub(SHOWN);
+    if more > 0 {
+        let plural = if more == 1 { "" } else { "s" };
+        return format!("t = {} s, and {more} more run{plural}", parts.join(", "));
     }
     format!("t = {} s", parts.join(", "))
 }
@@ -293,4 +296,30 @@ pub(super) fn runs(times: &[f64], missing: &[bool]) -> Vec<[f64; 2]> {
         out.push([a, b]);
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::runs_text;
+
+    #[test]
+    fn runs_are_said_with_their_unit_after_the_times_and_the_rest_counted() {
+        let runs: Vec<[f64; 2]> = (0..8)
+            .map(|k| [0.1 * f64::from(k), 0.1 * f64::from(k)])
+            .collect();
+        assert_eq!(
+            runs_text(&runs[..2]),
+            "t = 0.000, 0.100 s",
+            "a run of one frame is its time"
+        );
+        assert_eq!(runs_text(&[[0.325, 0.392]]), "t = 0.325 … 0.392 s");
+        assert_eq!(
+            runs_text(&runs),
+            "t = 0.000, 0.100, 0.200, 0.300, 0.400 s, and 3 more runs"
+        );
+        assert_eq!(
+            runs_text(&runs[..6]),
+            "t = 0.000, 0.100, 0.200, 0.300, 0.400 s, and 1 more run"
+        );
+    }
 }
