@@ -170,6 +170,9 @@ fn with_allowed(e: &clap::Error, line: String, args: &[OsString]) -> String {
     if let Some(swallowed) = option_taken_as_value(args).filter(|_| left_over) {
         return swallowed;
     }
+    if let Some(joined) = unit_apart(e, args) {
+        return format!("{line}; a value and its unit are one word: write {joined}");
+    }
     if e.kind() != ErrorKind::UnknownArgument {
         return clip_invalid_value(e, line);
     }
@@ -220,6 +223,48 @@ fn with_allowed(e: &clap::Error, line: String, args: &[OsString]) -> String {
         "{line}, allowed options of `{name}`: {} (`{name} --help` says what each does)",
         options.join(", ")
     )
+}
+
+/// `--width 4.9cm` where the word clap found unexpected is a unit written apart from
+/// the number before it (`--width 4.9 cm`, as people write quantities): the option,
+/// its number and the unit as one word.
+fn unit_apart(e: &clap::Error, args: &[OsString]) -> Option<String> {
+    use crate::settings::units::{Dimension, unit_factor};
+    use clap::error::{ContextKind, ContextValue};
+    let Some(ContextValue::String(word)) = e.get(ContextKind::InvalidArg) else {
+        return None;
+    };
+    let dims = [
+        Dimension::Length,
+        Dimension::Mass,
+        Dimension::Speed,
+        Dimension::Time,
+        Dimension::Acceleration,
+    ];
+    if !dims.iter().any(|&d| unit_factor(word, d).is_ok()) {
+        return None;
+    }
+    let words: Vec<&str> = args.iter().filter_map(|a| a.to_str()).collect();
+    let number = |w: &str| w.parse::<f64>().is_ok();
+    let option = |w: &str| w.starts_with("--");
+    // `--width 4.9 cm`, or `--width=4.9 cm`.
+    words
+        .windows(3)
+        .find_map(|w| match *w {
+            [flag, value, unit] if unit == word && option(flag) && number(value) => {
+                Some(format!("{flag} {value}{unit}"))
+            }
+            _ => None,
+        })
+        .or_else(|| {
+            words.windows(2).find_map(|w| match *w {
+                [flag_value, unit] if unit == word && option(flag_value) => {
+                    let (_, value) = flag_value.split_once('=')?;
+                    number(value).then(|| format!("{flag_value}{unit}"))
+                }
+                _ => None,
+            })
+        })
 }
 
 /// An option given without its value, the next option taken as the value instead

@@ -674,3 +674,36 @@ fn a_missing_file_is_said_with_what_is_allowed() {
         );
     }
 }
+
+/// A value and its unit written apart (`--width 4.9 cm`, as quantities are written
+/// on paper) left the unit as an unexpected argument, followed by every option of the
+/// command; it now says to write them as one word, and how.
+#[test]
+fn a_unit_written_apart_from_its_value_says_to_join_them() {
+    for (args, says) in [
+        (
+            &["simulate", "--width", "4.9", "cm"][..],
+            "write --width 4.9cm",
+        ),
+        (&["simulate", "--mass", "167", "g"], "write --mass 167g"),
+        (&["simulate", "--v0", "0.8", "m/s"], "write --v0 0.8m/s"),
+        (&["simulate", "--width=4.9", "cm"], "write --width=4.9cm"),
+    ] {
+        assert_rejected(
+            args,
+            &format!(
+                "unexpected argument '{}' found; a value and its unit are one word: {says}",
+                args[args.len() - 1]
+            ),
+        );
+    }
+    // A word that is no unit keeps the list of the command's options.
+    let out = groovelab(&["simulate", "--width", "4.9", "xx"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(!stderr.contains("one word"), "{stderr}");
+    assert!(
+        stderr.contains("allowed options of `groovelab simulate`"),
+        "{stderr}"
+    );
+}
