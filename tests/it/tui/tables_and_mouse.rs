@@ -251,6 +251,39 @@ fn the_map_legend_names_every_mark_at_every_size() {
     }
 }
 
+/// Found by a new-user trial: the map's b/R axis had no numbers (its range was only
+/// in the long legend, which fits a wide map alone); a row under the map gives its
+/// ticks: 0, 1 (b = R) at its column, and the right end (b = 1.98 R), at every size.
+#[test]
+fn the_maps_b_over_r_axis_has_its_ticks_at_every_size() {
+    for (w, h) in [(80, 24), (120, 40), (200, 60)] {
+        for ascii in [false, true] {
+            let s = screen("paper-b3.5", 0.0, (w, h), ascii, Some("g"));
+            let axis = s
+                .lines()
+                .find(|l| l.contains("b/R  0"))
+                .unwrap_or_else(|| panic!("no b/R axis at {w}x{h}:\n{s}"));
+            // The map's own panel: the first of the row's panels.
+            let border = if ascii { '|' } else { '│' };
+            let map: String = axis.chars().skip(1).take_while(|&c| c != border).collect();
+            let at = |tick: &str| {
+                map.find(&format!(" {tick} "))
+                    .or_else(|| {
+                        map.trim_end()
+                            .ends_with(tick)
+                            .then(|| map.trim_end().len() - tick.len())
+                    })
+                    .unwrap_or_else(|| panic!("{tick} missing at {w}x{h}: {map:?}"))
+            };
+            let (zero, one, end) = (at("0"), at("1"), at("1.98"));
+            assert!(zero < one && one < end, "{w}x{h}: {map:?}");
+            // b/R = 1 at about half the way from 0 to 1.98.
+            let half = zero as f64 + (end + 4 - zero) as f64 / 1.98;
+            assert!((one as f64 + 1.0 - half).abs() <= 2.0, "{w}x{h}: {map:?}");
+        }
+    }
+}
+
 #[test]
 fn the_fit_window_stays_after_the_impact_and_never_runs_backwards() {
     // Found by a new-user trial: twenty presses of `{` or `)` gave "0.02 … -0.08 s"
