@@ -113,7 +113,7 @@ fn with_unit_hint(e: &CliError, args: &[OsString]) -> String {
         .find_map(|p| bare_value(args, p.flag).map(|v| (p, v)))
         .filter(|(_, (_, x))| x.abs() >= 1.0)
         .filter(|(p, (_, x))| allowed.admits(x * 10f64.powi(p.dim.display_unit().1)));
-    match bare {
+    let message = match bare {
         Some((p, (v, _))) => format!(
             "{message}; --{} {v} has no unit, so it is {v} {} (a bare number is SI); in {unit} write {v}{unit}",
             p.flag,
@@ -121,12 +121,20 @@ fn with_unit_hint(e: &CliError, args: &[OsString]) -> String {
             unit = p.dim.display_unit().0,
         ),
         None => message,
+    };
+    // A width out of range for the radius the command line gave: the radius named too
+    // (`--radius 0.5mm` is what made the preset's 4.9 cm too wide).
+    match (allowed, given_value(args, "radius")) {
+        (crate::settings::spec::Allowed::BelowTwiceRadius { radius }, Some(r)) => format!(
+            "{message} (R = {} from --radius {r})",
+            crate::settings::units::show(*radius, crate::settings::units::Dimension::Length)
+        ),
+        _ => message,
     }
 }
 
-/// The value given to `--flag` (the last one, as clap takes it), as typed and as a
-/// number, where it is a bare number, without a unit.
-fn bare_value(args: &[OsString], flag: &str) -> Option<(String, f64)> {
+/// The value given to `--flag` (the last one, as clap takes it), as typed.
+fn given_value(args: &[OsString], flag: &str) -> Option<String> {
     let long = format!("--{flag}");
     let joined = format!("--{flag}=");
     let mut found = None;
@@ -138,8 +146,15 @@ fn bare_value(args: &[OsString], flag: &str) -> Option<(String, f64)> {
             found = Some(v.to_string());
         }
     }
-    let x = found.as_deref()?.trim().parse::<f64>().ok()?;
-    found.map(|v| (v, x))
+    found
+}
+
+/// The value given to `--flag` (the last one, as clap takes it), as typed and as a
+/// number, where it is a bare number, without a unit.
+fn bare_value(args: &[OsString], flag: &str) -> Option<(String, f64)> {
+    let found = given_value(args, flag)?;
+    let x = found.trim().parse::<f64>().ok()?;
+    Some((found, x))
 }
 
 /// clap's message as one line: its sentences joined, without the usage block, the

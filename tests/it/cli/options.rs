@@ -707,3 +707,29 @@ fn a_unit_written_apart_from_its_value_says_to_join_them() {
         "{stderr}"
     );
 }
+
+/// A radius that leaves the width too wide names itself: `--radius 0.5mm` with the
+/// preset's 4.9 cm width said only that the width was out of range, never the
+/// radius the user had typed. Found by a new-user trial.
+#[test]
+fn a_width_too_wide_for_the_radius_given_names_the_radius() {
+    for (args, says) in [
+        (
+            &["simulate", "--radius", "0.5mm"][..],
+            "groove width b = 4.9 cm is out of range, allowed 0 ≤ b < 2R = 0.1 cm (R = 0.05 cm from --radius 0.5mm)",
+        ),
+        (
+            &["simulate", "--radius=2cm", "--width", "4.9cm"],
+            "allowed 0 ≤ b < 2R = 4 cm (R = 2 cm from --radius 2cm)",
+        ),
+    ] {
+        assert_rejected(args, says);
+    }
+    // No radius on the line: the message as before.
+    let out = groovelab(&["simulate", "--width", "6cm"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.trim_end().ends_with("allowed 0 ≤ b < 2R = 5.5 cm"),
+        "{stderr}"
+    );
+}
