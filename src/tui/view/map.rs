@@ -105,34 +105,7 @@ fn regime_map(app: &App, grid: &[Regime], area: Rect, buf: &mut Buffer, theme: &
             theme.cursor,
         );
     }
-    // The b/R axis under the map, on the row above the legend: its ticks (the long
-    // legend below, which also gives the range, fits only a wide map).
-    let axis_row = inner.bottom() - 2;
-    buf.set_string(inner.x, axis_row, "b/R", theme.dim);
-    // 0, 1 (b = R) at its column, and the map's right end.
-    let span = b_max / radius;
-    let one = (1.0 / span * (cols - 1) as f64).round() as usize;
-    let ends = [
-        (0, "0".to_string()),
-        (one, "1".to_string()),
-        (cols - 1, format!("{span:.2}")),
-    ];
-    let mut free = 0;
-    for (c, text) in ends {
-        // Centred on its column, the last right-aligned to the map's edge, none
-        // overlapping the one before.
-        let len = text.chars().count();
-        let at = if c + 1 == cols {
-            c + 1 - len.min(c + 1)
-        } else {
-            c.saturating_sub(len / 2)
-        };
-        if at < free || at + len > cols {
-            continue;
-        }
-        buf.set_string(inner.x + 5 + at as u16, axis_row, text, theme.dim);
-        free = at + len + 1;
-    }
+    b_over_r_axis(inner, (cols, b_max / radius), buf, theme);
     // The full legend where it fits, else the marks alone (never a word cut silently).
     let marker = if g.ascii { "@" } else { "◆" };
     let recollide = glyph(Regime::Recollide);
@@ -155,6 +128,36 @@ fn regime_map(app: &App, grid: &[Regime], area: Rect, buf: &mut Buffer, theme: &
         usize::from(inner.width),
         theme.dim,
     );
+}
+
+/// The b/R axis under the map (its `cols` columns span b/R from 0 to `span`), on the
+/// row above the legend: 0, 1 (b = R) at its column, and the right end (the long
+/// legend, which also gives the range, fits only a wide map).
+fn b_over_r_axis(inner: Rect, (cols, span): (usize, f64), buf: &mut Buffer, theme: &Theme) {
+    let axis_row = inner.bottom() - 2;
+    buf.set_string(inner.x, axis_row, "b/R", theme.dim);
+    let one = (1.0 / span * (cols - 1) as f64).round() as usize;
+    let ends = [
+        (0, "0".to_string()),
+        (one, "1".to_string()),
+        (cols - 1, format!("{span:.2}")),
+    ];
+    let mut free = 0;
+    for (c, text) in ends {
+        // Centred on its column, the last right-aligned to the map's edge, none
+        // overlapping the one before.
+        let len = text.chars().count();
+        let at = if c + 1 == cols {
+            c + 1 - len.min(c + 1)
+        } else {
+            c.saturating_sub(len / 2)
+        };
+        if at < free || at + len > cols {
+            continue;
+        }
+        buf.set_string(inner.x + 5 + at as u16, axis_row, text, theme.dim);
+        free = at + len + 1;
+    }
 }
 
 fn paper_figure(app: &App, area: Rect, buf: &mut Buffer, theme: &Theme) {
