@@ -293,10 +293,11 @@ fn on_terminal(app: &mut App, screen: &Screen, event: Event) -> bool {
         Event::Key(key) if key.kind == KeyEventKind::Press => {
             match keys::action(&app.mode(), key) {
                 Some(action) => {
+                    said_no_key_gone(app);
                     app.apply(action);
                     true
                 }
-                None => false,
+                None => no_such_key(app, key),
             }
         }
         Event::Mouse(m) if app.mouse() => on_mouse_in(app, screen, m),
@@ -369,9 +370,43 @@ pub fn replay(app: &mut App, keys: &[KeyEvent]) {
         if app.quitting() {
             break;
         }
-        if let Some(action) = keys::action(&app.mode(), key) {
-            app.apply(action);
+        match keys::action(&app.mode(), key) {
+            Some(action) => {
+                said_no_key_gone(app);
+                app.apply(action);
+            }
+            None => {
+                no_such_key(app, key);
+            }
         }
+    }
+}
+
+/// A key that means nothing here says so on the status line, with where the keys
+/// are listed (a new user pressing `j` or F5 saw nothing happen); true if it did.
+/// Not while a line is typed: the line's editor takes or drops keys itself.
+fn no_such_key(app: &mut App, key: KeyEvent) -> bool {
+    use ratatui::crossterm::event::{KeyCode, KeyModifiers};
+    if app.mode().is_typing() || matches!(key.code, KeyCode::Modifier(_)) {
+        return false;
+    }
+    let name = match key.code {
+        KeyCode::Char(c) if key.modifiers.contains(KeyModifiers::CONTROL) => format!("Ctrl-{c}"),
+        KeyCode::Char(c) if key.modifiers.contains(KeyModifiers::ALT) => format!("Alt-{c}"),
+        code => code.to_string(),
+    };
+    app.status = app::Status::Info(format!("{NO_KEY}{name} here: ? lists the keys"));
+    true
+}
+
+/// How [`no_such_key`]'s message begins.
+const NO_KEY: &str = "no key ";
+
+/// [`no_such_key`]'s message cleared once a key that means something is pressed: it
+/// was about that one key.
+fn said_no_key_gone(app: &mut App) {
+    if matches!(&app.status, app::Status::Info(m) if m.starts_with(NO_KEY)) {
+        app.status = app::Status::None;
     }
 }
 

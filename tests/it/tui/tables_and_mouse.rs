@@ -445,3 +445,35 @@ fn a_component_renders_alone_as_on_the_screen() {
     ForcesView.render(small, &mut buf, &cx);
     assert!(buf.content.iter().any(|c| c.symbol() != " "));
 }
+
+/// Found by a new-user trial: a key that means nothing (`j`, `K`, Ctrl-J) did
+/// nothing visible; the status line now says so and where the keys are listed, in
+/// the terminal and in `render` alike (one replay). A line being typed takes its
+/// keys itself: no such message there.
+#[test]
+fn a_key_that_means_nothing_says_so() {
+    for (script, name) in [("j", "j"), ("K", "K"), ("~", "~"), ("C-j", "Ctrl-j")] {
+        let mut a = app("paper-b4.9");
+        press(&mut a, script);
+        assert!(
+            matches!(&a.status, Status::Info(m) if m == &format!("no key {name} here: ? lists the keys")),
+            "{script}: {:?}",
+            a.status
+        );
+        // A key that means something replaces the message.
+        press(&mut a, "down");
+        assert!(
+            !matches!(&a.status, Status::Info(m) if m.starts_with("no key")),
+            "{:?}",
+            a.status
+        );
+    }
+    let mut a = app("paper-b4.9");
+    press(&mut a, "enter");
+    press(&mut a, "j");
+    assert!(
+        !matches!(&a.status, Status::Info(m) if m.starts_with("no key")),
+        "typing: {:?}",
+        a.status
+    );
+}
