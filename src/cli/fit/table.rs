@@ -210,7 +210,12 @@ fn line_fit_lines(
     );
     // Without a rim mark a_t and μ_k,t are not measured: said in words, never NaN.
     let (a_t, mu_t) = if l.a_t.is_finite() && l.mu_t.is_finite() {
-        (pm_column(l.a_t, l.a_t_se), format!("{:.3}", l.mu_t))
+        let mu_t = if l.a_t_undetermined() {
+            "–".to_string()
+        } else {
+            format!("{:.3}", l.mu_t)
+        };
+        (pm_column(l.a_t, l.a_t_se), mu_t)
     } else {
         ("not measured".to_string(), "–".to_string())
     };
@@ -230,6 +235,9 @@ fn line_fit_lines(
     let why = l.why_no_v_t();
     if !(l.a_t.is_finite() && l.mu_t.is_finite()) && why != NoLineVt::NoMark {
         let _ = writeln!(out, "  (|a_t| and μ_k,t not measured: {})", why.reason());
+    }
+    if l.a_t_undetermined() {
+        let _ = writeln!(out, "  ({UNDETERMINED_A_T})");
     }
     if let Some(mass) = mass {
         let _ = writeln!(out, "  ({mass})");
@@ -258,6 +266,10 @@ pub(super) fn pm(v: f64, e: f64) -> String {
 }
 
 /// An acceleration and its ± in the line fits' 14-character column (2 places).
+/// What the text says where |a_t| is not told from 0
+/// ([`LineFit::a_t_undetermined`]).
+const UNDETERMINED_A_T: &str = "μ_k,t not determined: |a_t| lies within two of its standard errors of 0, the rim mark's v_t in the window too few to fix its slope";
+
 fn pm_column(v: f64, e: f64) -> String {
     let (v, e) = with_uncertainty(v, e, 2);
     format!("{v:>6} ± {e:<5}")

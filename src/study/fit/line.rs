@@ -219,6 +219,14 @@ pub fn width_from_lines(
 const WIDTH_APART: f64 = 0.05;
 
 impl LineFit {
+    /// True where |a_t| was measured but lies within two of its standard errors of 0:
+    /// the v_t line's slope is not told from none (a rim mark followed in a few
+    /// short runs of the window), so μ_k,t, which is that slope scaled, says nothing
+    /// (a new user read μ_k,t = 4.08 beside |a_t| = 45 ± 40 m/s² as measured).
+    pub fn a_t_undetermined(&self) -> bool {
+        self.a_t.is_finite() && (self.a_t_se.is_nan() || self.a_t < 2.0 * self.a_t_se)
+    }
+
     /// Why a_t and μ_k,t are not measured, where they are not: [`LineFit::no_v_t`],
     /// else (a v_t line that gave no number from 3 frames or more) too few frames
     /// of the window.

@@ -215,10 +215,16 @@ fn line_fit_lines(l: &fit::LineFit, app: &App, width: usize, theme: &Theme) -> R
         Some(format!("{}_cm {:.3}", g.mu, l.mu_cm)),
     );
     if l.a_t.is_finite() {
+        // μ_k,t from a slope not told from none says nothing (`a_t_undetermined`).
+        let mu_t = if l.a_t_undetermined() {
+            format!("{}_t not determined (|a_t| within 2σ of 0)", g.mu)
+        } else {
+            format!("{}_t {:.3}", g.mu, l.mu_t)
+        };
         accelerations(
             "|a_t|  ",
             format!("{} m/s{}", pm_tight(l.a_t, l.a_t_se, 2), g.squared),
-            Some(format!("{}_t {:.3}", g.mu, l.mu_t)),
+            Some(mu_t),
         );
     } else {
         // As `fit` says it: a rim mark tracked but seen in too few frames of the
