@@ -217,7 +217,7 @@ fn line_fit_lines(l: &fit::LineFit, app: &App, width: usize, theme: &Theme) -> R
     if l.a_t.is_finite() {
         // μ_k,t from a slope not told from none says nothing (`a_t_undetermined`).
         let mu_t = if l.a_t_undetermined() {
-            format!("{}_t not determined (|a_t| within 2σ of 0)", g.mu)
+            format!("{}_t not determined", g.mu)
         } else {
             format!("{}_t {:.3}", g.mu, l.mu_t)
         };

@@ -184,10 +184,29 @@ fn a_t_within_two_standard_errors_of_zero_gives_no_mu_t() {
         run_in_process(&["fit", "--preset", "paper-b4.9", "--data", f]).unwrap()
     };
     let why = "(μ_k,t not determined: |a_t| lies within two of its standard errors of 0";
-    let sparse = text(&tracks_with_mark_in("text-mark-sparse", |i| i % 45 < 5));
+    let path = tracks_with_mark_in("text-mark-sparse", |i| i % 45 < 5);
+    let sparse = text(&path);
     assert!(sparse.contains(why), "{sparse}");
     let row = sparse.lines().find(|l| l.starts_with("this fit")).unwrap();
     assert!(row.contains(" – "), "{row}");
+    // The Fit view, at two sizes: the words whole, no number.
+    for size in ["120x40", "80x24"] {
+        let args = [
+            "render",
+            "--data",
+            path.to_str().unwrap(),
+            "--keys",
+            "f",
+            "--size",
+            size,
+        ];
+        let screen = run_in_process(&args).unwrap();
+        assert!(screen.contains("μ_t not determined"), "{size}:\n{screen}");
+        assert!(
+            !screen.contains("μ_t 0.") && !screen.contains("μ_t 1."),
+            "{size}:\n{screen}"
+        );
+    }
     let all = text(&tracks_with_mark_in("text-mark-all-determined", |_| true));
     assert!(!all.contains(why), "{all}");
 }
