@@ -332,7 +332,11 @@ pub fn describe(shown: &DataReport) -> String {
         );
     }
     let _ = writeln!(s, "  {}", r.impact_note);
-    s += &scene_line(&shown.scene_values, &shown.header_values);
+    s += &scene_line(
+        &shown.scene_values,
+        &shown.header_values,
+        r.approach_speed.is_some(),
+    );
     s
 }
 
@@ -415,10 +419,13 @@ fn missing_line(missing: &[crate::input::data::Gap]) -> String {
 
 /// "  the scene takes from it: v0 = 0.791 m/s (both balls: the approach); R, b, μ_k,
 /// e from the preset or the options; m assumed unless given (no data measure it)";
-/// what the file's `# scene` lines give is named as its header's.
+/// what the file's `# scene` lines give is named as its header's. `approach_seen`: the
+/// file shows an approach speed (said above), too short to take v0 from where the
+/// scene takes none.
 fn scene_line(
     values: &BTreeMap<&'static str, f64>,
     header: &BTreeMap<&'static str, f64>,
+    approach_seen: bool,
 ) -> String {
     // A value is given when the header sets every value it stands for (v0: both balls').
     let given = |k: Key| k.param().sets.iter().all(|s| header.contains_key(s.name()));
@@ -464,6 +471,10 @@ fn scene_line(
         Some(&v) => format!(
             "  the scene takes from it: v0 = {} (both balls: the approach); {rest}\n",
             show(v, Dimension::Speed)
+        ),
+        None if approach_seen => format!(
+            "  the scene takes nothing from it (too few frames before the impact to take v0 from, at least {}): {rest}\n",
+            crate::study::fit::APPROACH_FRAMES
         ),
         None => {
             format!("  the scene takes nothing from it (no approach before an impact): {rest}\n")

@@ -216,3 +216,46 @@ fn small_messages_say_what_happened() {
     assert!(err.contains("--window -0.001 s is out of range"), "{err}");
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A velocity file with an approach too short for v0 (two frames before the impact,
+/// three needed) said "approach speed 0.79 m/s" and then "the scene takes nothing
+/// from it (no approach before an impact)", a contradiction a new user read; it now
+/// says why the approach it shows is not taken. With three frames before, v0 is.
+#[test]
+fn an_approach_too_short_for_v0_says_so() {
+    let dir = crate::common::scratch_dir("data_hints", "short-approach");
+    let rows = |before: usize| -> String {
+        let mut text = String::from("t,v_cm,v_t\n");
+        for k in 0..before {
+            text += &format!("{:.2},0.79,0.79\n", -0.01 * (before - k) as f64);
+        }
+        for k in 0..6 {
+            text += &format!(
+                "{:.2},{:.2},{:.2}\n",
+                0.01 * k as f64,
+                -0.7 + 0.04 * k as f64,
+                0.79 - 0.02 * k as f64
+            );
+        }
+        text
+    };
+    let said = |before: usize| {
+        let file = dir.join(format!("before-{before}.csv"));
+        std::fs::write(&file, rows(before)).unwrap();
+        let (code, out, err) = groovelab(&["data", file.to_str().unwrap()]);
+        assert_eq!(code, Some(0), "{err}");
+        out
+    };
+    let short = said(2);
+    assert!(short.contains("approach speed 0.79 m/s"), "{short}");
+    assert!(
+        short.contains("the scene takes nothing from it (too few frames before the impact to take v0 from, at least 3)"),
+        "{short}"
+    );
+    assert!(!short.contains("no approach before an impact"), "{short}");
+    let long = said(4);
+    assert!(
+        long.contains("the scene takes from it: v0 = 0.79"),
+        "{long}"
+    );
+}
