@@ -401,17 +401,12 @@ fn missing_line(missing: &[crate::input::data::Gap]) -> String {
                 format!("{} at t = {at} s ({})", g.frames, g.why)
             })
             .collect();
-        let more = missing.len().saturating_sub(5);
         let _ = writeln!(
             s,
             "  {total} frame{} missing: {}{}",
             if total == 1 { "" } else { "s" },
             runs.join(", "),
-            if more > 0 {
-                format!(", and {more} more run{}", if more == 1 { "" } else { "s" })
-            } else {
-                String::new()
-            }
+            crate::study::measured::more_runs(missing.len().saturating_sub(5))
         );
     }
     s

@@ -94,10 +94,12 @@ pub fn dispatch(args: &[OsString]) -> Entry {
 /// `e`'s message, and where it is a scene value out of range that was typed as a bare
 /// number of a length or a mass: that such a number is metres or kilograms (SI), and
 /// how to write the value in the unit people read (`--width 4.9` is 4.9 m; a
-/// groove's width is 4.9cm).
+/// groove's width is 4.9cm); where it is a width too wide for the radius the command
+/// line gave, that radius.
 fn with_unit_hint(e: &CliError, args: &[OsString]) -> String {
     use crate::settings::params::PARAMS;
-    use crate::settings::spec::SceneError;
+    use crate::settings::spec::{Allowed, SceneError};
+    use crate::settings::units::{Dimension, show};
     let message = e.to_string();
     let CliError::Scene(SceneError::OutOfRange { key, allowed, .. }) = e else {
         return message;
@@ -125,9 +127,9 @@ fn with_unit_hint(e: &CliError, args: &[OsString]) -> String {
     // A width out of range for the radius the command line gave: the radius named too
     // (`--radius 0.5mm` is what made the preset's 4.9 cm too wide).
     match (allowed, given_value(args, "radius")) {
-        (crate::settings::spec::Allowed::BelowTwiceRadius { radius }, Some(r)) => format!(
+        (Allowed::BelowTwiceRadius { radius }, Some(r)) => format!(
             "{message} (R = {} from --radius {r})",
-            crate::settings::units::show(*radius, crate::settings::units::Dimension::Length)
+            show(*radius, Dimension::Length)
         ),
         _ => message,
     }

@@ -266,14 +266,14 @@ pub(super) fn pm(v: f64, e: f64) -> String {
 }
 
 /// An acceleration and its ± in the line fits' 14-character column (2 places).
-/// What the text says where |a_t| is not told from 0
-/// ([`LineFit::a_t_undetermined`]).
-const UNDETERMINED_A_T: &str = "μ_k,t not determined: |a_t| lies within two of its standard errors of 0, the rim mark's v_t in the window too few to fix its slope";
-
 fn pm_column(v: f64, e: f64) -> String {
     let (v, e) = with_uncertainty(v, e, 2);
     format!("{v:>6} ± {e:<5}")
 }
+
+/// What the text says where |a_t| is not told from 0
+/// ([`LineFit::a_t_undetermined`]).
+const UNDETERMINED_A_T: &str = "μ_k,t not determined: |a_t| lies within two of its standard errors of 0, the rim mark's v_t in the window too few to fix its slope";
 
 /// The model fit of a series: what it was fitted to, the fitted values with their
 /// 95 % ranges (or why a value has none), and the regime predicted against the one

@@ -265,12 +265,17 @@ pub fn runs_text(runs: &[[f64; 2]]) -> String {
             }
         })
         .collect();
-    let more = runs.len().saturating_sub(SHOWN);
-    if more > 0 {
-        let plural = if more == 1 { "" } else { "s" };
-        return format!("t = {} s, and {more} more run{plural}", parts.join(", "));
+    let more = more_runs(runs.len().saturating_sub(SHOWN));
+    format!("t = {} s{more}", parts.join(", "))
+}
+
+/// ", and 31 more runs" after a list of runs that leaves `more` out; "" for none.
+pub fn more_runs(more: usize) -> String {
+    match more {
+        0 => String::new(),
+        1 => ", and 1 more run".into(),
+        n => format!(", and {n} more runs"),
     }
-    format!("t = {} s", parts.join(", "))
 }
 
 /// The runs of neighbouring entries flagged `missing`, as their first and last

@@ -23,7 +23,7 @@ use super::series::{Measured, MeasuredParts, Stencil, Stencils, Track};
 use super::line::{Line, line};
 
 pub use derivative::Local;
-pub use found::{Found, MarkLeftOut, Skipped, runs_text};
+pub use found::{Found, MarkLeftOut, Skipped, more_runs, runs_text};
 pub use impacts::TrackError;
 
 use derivative::{MIN_HALF_WINDOW, derivatives, median, scatter, unwrap};
