@@ -262,7 +262,7 @@ fn unit_apart(e: &clap::Error, args: &[OsString]) -> Option<String> {
         return None;
     }
     let words: Vec<&str> = args.iter().filter_map(|a| a.to_str()).collect();
-    let number = |w: &str| w.parse::<f64>().is_ok();
+    let number = |w: &str| w.parse::<f64>().is_ok_and(f64::is_finite);
     let option = |w: &str| w.starts_with("--");
     // `--width 4.9 cm`, or `--width=4.9 cm`.
     words

@@ -697,15 +697,21 @@ fn a_unit_written_apart_from_its_value_says_to_join_them() {
             ),
         );
     }
-    // A word that is no unit keeps the list of the command's options.
-    let out = groovelab(&["simulate", "--width", "4.9", "xx"]);
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "{stderr}");
-    assert!(!stderr.contains("one word"), "{stderr}");
-    assert!(
-        stderr.contains("allowed options of `groovelab simulate`"),
-        "{stderr}"
-    );
+    // A word that is no unit, or a unit after no finite number (`nancm` is no value
+    // either), keeps the list of the command's options.
+    for args in [
+        &["simulate", "--width", "4.9", "xx"][..],
+        &["simulate", "--width", "nan", "cm"],
+    ] {
+        let out = groovelab(args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{stderr}");
+        assert!(!stderr.contains("one word"), "{stderr}");
+        assert!(
+            stderr.contains("allowed options of `groovelab simulate`"),
+            "{stderr}"
+        );
+    }
 }
 
 /// A radius that leaves the width too wide names itself: `--radius 0.5mm` with the
