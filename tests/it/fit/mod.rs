@@ -6,6 +6,7 @@ mod coverage;
 mod files_and_models;
 mod nested;
 mod paper;
+mod profiled;
 mod slips;
 mod truth;
 mod verdicts;
