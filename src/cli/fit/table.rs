@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 
 use crate::physics::scene::Scene;
 use crate::settings::units::{Dimension, show, show_small, significant, with_uncertainty};
-use crate::study::fit::{self, Chosen, Fits, LineFit, ModelFit};
+use crate::study::fit::{self, Chosen, Fits, LineFit, MAX_PLAUSIBLE_MU, ModelFit};
 use crate::study::measured::{Found, NoLineVt};
 
 /// The short plain summary that opens the table: μ_k ± 2σ of the headline, its
@@ -36,7 +36,7 @@ pub(super) fn summary(f: &Fits) -> String {
         h.agreement().word(),
         rms_text(h)
     );
-    if h.mu_implausible {
+    if h.mu_implausible && h.mu > MAX_PLAUSIBLE_MU {
         let (what, option) = match h.fitted_to {
             "positions" => ("lengths are likely in cm", "--length-unit cm"),
             _ => ("speeds are likely in cm/s", "--speed-unit cm/s"),
@@ -45,6 +45,16 @@ pub(super) fn summary(f: &Fits) -> String {
             out,
             "  a μ_k beyond 1 is no ball rolling in a groove: the {what} (then μ_k ≈ {}): give {option}, or fix the header",
             significant(h.mu / 100.0, 3)
+        );
+    } else if h.mu_implausible {
+        let (what, option) = match h.fitted_to {
+            "positions" => ("lengths are likely in m", "--length-unit m"),
+            _ => ("speeds are likely in m/s", "--speed-unit m/s"),
+        };
+        let _ = writeln!(
+            out,
+            "  a μ_k below 0.01 is no ball sliding in a groove (the slipperiest solids slide at 0.04): the {what} (then μ_k ≈ {}): give {option}, or fix the header",
+            significant(h.mu * 100.0, 3)
         );
     }
     if let Some(w) = f

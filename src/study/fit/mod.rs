@@ -49,7 +49,7 @@ pub use line::{
 pub use model::{
     Agreement, MAX_MODEL_POINTS, ModelFit, POOR_FIT, model_fit, position_fit, thinned,
 };
-pub use problem::{DataLooks, FitError, Free, WORK_BUDGET};
+pub use problem::{DataLooks, FitError, Free, MAX_PLAUSIBLE_MU, MIN_PLAUSIBLE_MU, WORK_BUDGET};
 pub use regime::rest_band;
 pub use residuals::{NearImpacts, aligned_track};
 pub use tracks::{TrackFits, fit_tracks};

@@ -15,7 +15,7 @@ use crate::study::measured::series::Measured;
 use super::least_squares::{
     At, Problem, least_squares, normal_matrix, profile_mu, smooth_jacobian, with,
 };
-use super::problem::{Evals, FitError, Free, MAX_PLAUSIBLE_MU};
+use super::problem::{Evals, FitError, Free, MAX_PLAUSIBLE_MU, MIN_PLAUSIBLE_MU};
 use super::regime::{data_scatter, observed_after, rest_band, sliding_end};
 use super::residuals::{Target, fit_points, labelled_residuals, nuisance};
 use super::uncertainty::{
@@ -93,9 +93,11 @@ pub struct ModelFit {
     /// models, and there is no verdict. Set by `fit_all` on both fits.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub fits_disagree: Option<(f64, f64)>,
-    /// True when the fitted μ_k is beyond [`MAX_PLAUSIBLE_MU`]: no ball rolls in a
-    /// groove with that, so the data's unit is likely wrong (speeds in cm/s read as m/s
-    /// make every deceleration, and μ_k, 100× too large); there is no verdict.
+    /// True when the fitted μ_k is beyond [`MAX_PLAUSIBLE_MU`], or below
+    /// [`MIN_PLAUSIBLE_MU`] by its ± 2σ: no ball rolls in a groove with that, so the
+    /// data's unit is likely wrong (speeds in cm/s read as m/s make every
+    /// deceleration, and μ_k, 100× too large; m/s read as cm/s, 100× too small);
+    /// there is no verdict.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub mu_implausible: bool,
 }
@@ -147,8 +149,10 @@ impl ModelFit {
     pub fn agreement(&self) -> Agreement {
         if self.undetermined(Free::Mu.name()).is_some() {
             Agreement::MuNotDetermined
-        } else if self.mu_implausible {
+        } else if self.mu_implausible && self.mu > MAX_PLAUSIBLE_MU {
             Agreement::ImplausibleMu
+        } else if self.mu_implausible {
+            Agreement::TinyMu
         } else if self.lines_disagree.is_some() {
             // Before a poor fit: the cause named (a wrong b or R fits poorly too).
             Agreement::LinesDisagree
@@ -199,6 +203,9 @@ pub enum Agreement {
     /// μ_k is beyond [`MAX_PLAUSIBLE_MU`] ([`ModelFit::mu_implausible`]): the data's
     /// unit is likely wrong.
     ImplausibleMu,
+    /// μ_k with its ± 2σ lies below [`MIN_PLAUSIBLE_MU`] ([`ModelFit::mu_implausible`]):
+    /// the data's unit is likely wrong the other way.
+    TinyMu,
 }
 
 /// How many times the data's scatter an RMS residual may be before the fit is poor.
@@ -229,6 +236,7 @@ impl Agreement {
             Agreement::LinesDisagree => "μ_k,cm ≠ μ_k,t",
             Agreement::FitsDisagree => "FITS DISAGREE",
             Agreement::ImplausibleMu => "μ_k > 1: units?",
+            Agreement::TinyMu => "μ_k < 0.01: units?",
         }
     }
 
@@ -258,6 +266,9 @@ impl Agreement {
             Agreement::ImplausibleMu => {
                 "no verdict: a μ_k beyond 1 is no ball rolling in a groove, so the data's unit is likely wrong (speeds in cm/s read as m/s make μ_k 100× too large): give --speed-unit cm/s (a track in cm: --length-unit cm), or fix the header"
             }
+            Agreement::TinyMu => {
+                "no verdict: a μ_k below 0.01 is no ball sliding in a groove (the slipperiest solids slide at 0.04), so the data's unit is likely wrong (speeds in m/s under a cm/s header make μ_k 100× too small): give --speed-unit m/s (a track in m: --length-unit m), or fix the header"
+            }
         }
     }
 
@@ -273,6 +284,7 @@ impl Agreement {
             Agreement::LinesDisagree => "no verdict: μ_k,cm ≠ μ_k,t (b, R?)",
             Agreement::FitsDisagree => "no verdict: x and v fits disagree",
             Agreement::ImplausibleMu => "no verdict: μ_k > 1 (units?)",
+            Agreement::TinyMu => "no verdict: μ_k < 0.01 (units?)",
         }
     }
 
@@ -280,6 +292,12 @@ impl Agreement {
     pub fn holds(self) -> bool {
         matches!(self, Agreement::Agrees | Agreement::WithinRestBand)
     }
+}
+
+/// Whether a fitted μ_k (with its standard error `se`) is no ball's in a groove:
+/// beyond [`MAX_PLAUSIBLE_MU`], or with its ± 2σ wholly below [`MIN_PLAUSIBLE_MU`].
+fn implausible_mu(mu: f64, se: Option<f64>) -> bool {
+    mu > MAX_PLAUSIBLE_MU || se.is_some_and(|se| mu + 2.0 * se < MIN_PLAUSIBLE_MU)
 }
 
 /// How far apart a track's μ_k fitted to its positions and to its derived velocities
@@ -585,7 +603,7 @@ pub(super) fn scored_fit_within(
         scale,
         lines_disagree: None,
         fits_disagree: None,
-        mu_implausible: fitted.mu > MAX_PLAUSIBLE_MU,
+        mu_implausible: implausible_mu(fitted.mu, se(Free::Mu)),
     }))
 }
 

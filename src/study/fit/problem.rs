@@ -169,6 +169,12 @@ impl<'a> Evals<'a> {
 /// whose ± 2σ spans 0 to it is not determined (`uncertainty::uncertainties`).
 pub const MAX_PLAUSIBLE_MU: f64 = 1.0;
 
+/// The least μ_k a ball sliding in a groove may plausibly have: the slipperiest
+/// solids slide at 0.04 (PTFE on steel), so a μ_k whose ± 2σ lies wholly below this
+/// says the data's units are likely wrong (speeds in m/s under a cm/s header make
+/// every deceleration, and μ_k, 100× too small: 0.0017 for 0.17).
+pub const MIN_PLAUSIBLE_MU: f64 = 0.01;
+
 /// Which scene values a model fit may change.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]

@@ -1,5 +1,6 @@
 //! Verdicts that name the likely mistake (issue 27's trial): a μ_k beyond 1 (a file's
-//! speeds in cm/s under a header that says m/s) never "agrees", and a `--width` that
+//! speeds in cm/s under a header that says m/s), or below 0.01 (the other way), never
+//! "agrees", and a `--width` that
 //! the measured a_t/a_cm contradicts is named in the summary.
 
 use groovelab::physics::engine::solve;
@@ -64,6 +65,41 @@ fn a_mu_beyond_one_does_not_agree_and_names_the_unit() {
         "{j}"
     );
     assert!(j["model_fit"].get("mu_implausible").is_none());
+}
+
+/// The mirror: the paper's ball (μ_k = 0.17, v0 = 0.79 m/s) written in m/s under a
+/// cm/s header fits μ_k = 0.17 / 100 and v0 = 8 mm/s (every deceleration read 100×
+/// too small): no verdict that agrees, the unit to give named, and μ_k as it would
+/// be. It said "agrees" of μ_k = 0.0017. A slow, slippery ball (μ_k = 0.03, its ± well
+/// above 0.01) written right keeps its verdict.
+#[test]
+fn a_mu_below_a_hundredth_does_not_agree_and_names_the_unit() {
+    let scene = symmetric(0.0275, 0.049, 0.17, 0.79, 1.0);
+    let dir = scratch_dir("fit_verdicts", "mu_below_a_hundredth");
+    let path = dir.join("fast.csv");
+    let text = velocity_file(&scene, 1.0).replacen("(m/s)", "(cm/s)", 2);
+    std::fs::write(&path, text).unwrap();
+    let path = path.display().to_string();
+    let args = [
+        "fit", "--data", &path, "--radius", "2.75cm", "--width", "4.9cm",
+    ];
+    let text = stdout(&args);
+    let head = text.lines().nth(1).unwrap();
+    assert!(head.contains("μ_k < 0.01: units?"), "{text}");
+    assert!(!head.contains("agrees"), "{text}");
+    assert!(text.contains("--speed-unit m/s"), "{text}");
+    assert!(text.contains("(then μ_k ≈ 0.17)"), "{text}");
+    let j = json(&[&args[..], &["--format", "json"]].concat());
+    let mf = &j["model_fit"];
+    assert!((mf["mu"].as_f64().unwrap() - 0.0017).abs() < 1e-5, "{mf}");
+    assert_eq!(mf["mu_implausible"], true, "{mf}");
+    let slow = symmetric(0.0275, 0.049, 0.03, 0.08, 1.0);
+    std::fs::write(dir.join("slow.csv"), velocity_file(&slow, 1.0)).unwrap();
+    let slow = dir.join("slow.csv").display().to_string();
+    let j = json(&[
+        "fit", "--data", &slow, "--radius", "2.75cm", "--width", "4.9cm", "--format", "json",
+    ]);
+    assert!(j["model_fit"].get("mu_implausible").is_none(), "{j}");
 }
 
 /// Data made at b = 4.26 cm (R = 2.75 cm) fitted with --width 3cm: the summary says
