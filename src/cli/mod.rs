@@ -529,8 +529,25 @@ fn story_lines(out: &mut String, now: &Resolved) {
         let _ = writeln!(out, "data     {}", other.describe());
     }
     // Against the measured series: can its data tell this regime from rest?
+    // The verdict judges the paper's criterion's regime; where this run does
+    // otherwise (rolling resistance stops it, friction presses the pair), both are
+    // named, not "outcome stopped" over "verdict recollide" unexplained.
     if now.rest_band.is_some() {
-        let _ = writeln!(out, "verdict  {}", story.verdict.text("±"));
+        let verdict = story.verdict.text("±");
+        match (&story.criterion_note, story.verdict.impact) {
+            (Some(_), true) => {
+                let regime = story.verdict.regime.name();
+                let _ = writeln!(
+                    out,
+                    "verdict  {regime} by the paper's criterion{}; this run: {}",
+                    verdict.strip_prefix(regime).unwrap_or_default(),
+                    outcome.name()
+                );
+            }
+            _ => {
+                let _ = writeln!(out, "verdict  {verdict}");
+            }
+        }
     }
     if let Some(rec) = derived.left_after_impact {
         // The closed forms only where the exact run bears them out; else its events.

@@ -191,6 +191,17 @@ fn simulate_reports_the_outcome_beside_the_criterion() {
         // The criterion is named where the run does otherwise.
         let differs = matches!(outcome, "pressed" | "stopped");
         assert_eq!(line.contains("criterion says recollide"), differs, "{line}");
+        // And the verdict, which judges the criterion's regime against the data's
+        // rest band, says whose regime it is and what this run does: it read
+        // "verdict recollide" under "outcome stopped".
+        // (paper-b4.9, the default, has the paper's series and so its rest band.)
+        let verdict = table.lines().find(|l| l.starts_with("verdict  "));
+        assert!(verdict.is_some() || !differs, "{table}");
+        if let Some(verdict) = verdict {
+            let named = verdict.contains("by the paper's criterion")
+                && verdict.ends_with(&format!("; this run: {outcome}"));
+            assert_eq!(named, differs, "{verdict}");
+        }
     }
 }
 
