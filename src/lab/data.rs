@@ -266,7 +266,8 @@ pub fn measured_values(series: &Series) -> SceneSpec {
 
 /// A value given (an option, the data file's `# scene` line, an edit in the app)
 /// that the data contradict: the left ball's v0 farther from their approach speed
-/// than its ± 2σ (the given value is used: a flag wins over the data).
+/// than its ± 2σ and [`V0_AGREES`] of it (the given value is used: a flag wins over
+/// the data).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Contradiction {
     /// The left ball's v0 given, m/s.
@@ -284,12 +285,13 @@ impl Contradiction {
         let origin = settings.origin(Key::V0Left);
         let value = scene.left.v0;
         (matches!(origin, Origin::Flag | Origin::File | Origin::Edited)
-            && (value - approach.speed).abs() > 2.0 * approach.se)
-            .then_some(Contradiction {
-                value,
-                origin,
-                approach,
-            })
+            && (value - approach.speed).abs()
+                > 2.0 * approach.se + V0_AGREES * approach.speed.abs())
+        .then_some(Contradiction {
+            value,
+            origin,
+            approach,
+        })
     }
 
     /// "the left ball's v0 = 0.79 m/s (BY) contradicts the data: they approach at
@@ -304,6 +306,13 @@ impl Contradiction {
         )
     }
 }
+
+/// How far a given v0 may lie from the data's approach speed, beyond its ± 2σ, as a
+/// share of it, and still agree: a tenth of a percent. A value is written to a few
+/// digits (the app's export writes its scene to 6, so its exact run read back said
+/// "v0 = 0.6101 m/s contradicts the data: they approach at 0.610143 ± < 1e-6 m/s"),
+/// and no fit moves by that.
+pub const V0_AGREES: f64 = 1e-3;
 
 /// The scene's R must leave a tracked rim mark on the ball
 /// ([`crate::study::measured::Found::least_radius`]): an R edited below it would turn
