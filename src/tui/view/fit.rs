@@ -304,11 +304,16 @@ fn model_fits_lines(f: &fit::Fits, width: usize, lines: &mut Ranked<'static>, th
         );
         lines.push((5, Line::from(Span::styled(g.text(&text), theme.dim))));
     }
+    // Named as `fit` names it: "μ_k alone" frees v0 too wherever the data measure it.
     let a = &f.mu_alone;
+    let alone = match a.model.as_str() {
+        "mu" => format!("{}_k alone", g.mu),
+        _ => format!("{}_k alone (v0 fitted too)", g.mu),
+    };
     let text = if a.model == f.model_fit.model {
-        format!("{}_k alone: the same fit", g.mu)
+        format!("{alone}: the same fit")
     } else {
-        format!("{}_k alone: {}  RMS {}", g.mu, pm(a, 4, g.ascii), rms(a))
+        format!("{alone}: {}  RMS {}", pm(a, 4, g.ascii), rms(a))
     };
     lines.push((6, Line::from(Span::styled(g.text(&text), theme.dim))));
 }

@@ -59,7 +59,11 @@ pub(super) fn front_values<'a>(
     let t = |s: String| g.text(&s);
     let fit = |variants: [String; 2]| fitting(&variants.map(|v| g.text(&v)), width);
     let friction = if now.friction == 0.0 {
-        fit(["|F_A|=|F_B| 0, v_A = 0".into(), "|F| 0 (v_A = 0)".into()])
+        // Zeros keep their units: "0" alone read as a missing unit (a new user's trial).
+        fit([
+            "|F_A|=|F_B| 0 N, v_A = 0 m/s".into(),
+            "|F| 0 N (v_A = 0)".into(),
+        ])
     } else {
         let kind = if now.kinetic { "" } else { " static" };
         let f = num(now.friction.abs(), hide);
@@ -78,7 +82,7 @@ pub(super) fn front_values<'a>(
     let tau = sig_figs(s.net_torque, 3);
     let (torque, why_torque) = if now.net_torque == 0.0 {
         (
-            t("τ_net = 0".into()),
+            t("τ_net = 0 N m".into()),
             t(format!("sliding: μ_k m g R = {tau} N m")),
         )
     } else {
