@@ -1251,7 +1251,7 @@ pub fn scale_note(c: &vision::tracks::Calibration, radius_from: &str) -> String 
             )
         });
         format!(
-            "scale {v} ± {e} px/m: the balls' fitted radius {rv} ± {re} px for R = {} ({radius_from}){colour}; speeds and μ_k from these tracks carry its {:.2} %, which `fit` adds to their own ±",
+            "scale {v} ± {e} px/m (± 1σ, as the radius's): the balls' fitted radius {rv} ± {re} px for R = {} ({radius_from}){colour}; speeds and μ_k from these tracks carry its {:.2} %, which `fit` adds to their own ± (and doubles in its ± 2σ)",
             show(c.radius_m, Dimension::Length),
             100.0 * c.px_per_m_sigma / c.px_per_m
         )
