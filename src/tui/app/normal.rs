@@ -69,7 +69,9 @@ impl App {
             // Esc closes popups and cancels prompts; on the main screen it must not end
             // the session (a reflex Esc lost a student's whole setup), so it says how.
             Action::Cancel => {
-                self.status = Status::Info("q quits (Esc closes popups, cancels typing)".into())
+                self.status = Status::Info(
+                    "q quits (Esc closes popups, cancels typing, leaves a view)".into(),
+                )
             }
             Action::Edit | Action::Confirm => self.open(Layer::Prompt(Prompt::new(
                 TextTarget::Value,

@@ -332,7 +332,7 @@ pub const TABLE: &[Binding] = &[
     Binding {
         keys: &["esc"],
         action: Action::Cancel,
-        help: "close a popup, cancel typing (it never quits: q does)",
+        help: "close a popup, cancel typing, leave a view for the charts (it never quits: q does)",
         hint: None,
     },
     Binding {

@@ -157,6 +157,30 @@ fn small_screens_keep_the_important_lines() {
     assert!(fit.contains("the model predicts what was seen"), "{fit}");
 }
 
+/// Esc leaves any view for the charts, as the view's own key again does, and never
+/// quits; on the charts it says that q quits. It stayed in the Forces, Map and
+/// Methods views and only said "q quits" (a new user's trial).
+#[test]
+fn esc_leaves_any_view_for_the_charts() {
+    let mut a = app("paper-b4.9");
+    for (key, view) in [
+        ("v", View::Forces),
+        ("g", View::Map),
+        ("c", View::Methods),
+        ("f", View::Fit),
+    ] {
+        press(&mut a, key);
+        assert_eq!(a.view(), view, "{key}");
+        press(&mut a, "esc");
+        assert_eq!(a.view(), View::Charts, "{key} esc");
+        assert!(!a.quitting(), "{key} esc");
+    }
+    press(&mut a, "esc");
+    assert_eq!(a.view(), View::Charts);
+    assert!(!a.quitting());
+    assert!(screen_of(&a).contains("q quits"), "{}", screen_of(&a));
+}
+
 #[test]
 fn f_switches_to_the_fit_view_from_any_view() {
     let mut a = app("paper-b4.9");

@@ -118,6 +118,18 @@ impl MainScreen {
     /// Offers `input` to the views, the one shown first; a view key shows its view
     /// (or the charts again) and tells the views. [`Handled::Ignored`]: none took it.
     pub fn handle(&mut self, input: &Input, cx: &mut PaneCx<'_>) -> Handled {
+        // Esc leaves a view for the charts, as its own key again does (a new user
+        // pressed Esc in the Forces view and was told only that q quits); a view that
+        // takes Esc itself keeps it.
+        if let Input::Key(Action::Cancel) = *input
+            && self.shown != View::Charts
+        {
+            let answer = self.offer(input, cx);
+            if answer != Handled::Ignored {
+                return answer;
+            }
+            return self.handle(&Input::Key(Action::ShowView(self.shown)), cx);
+        }
         if let Input::Key(Action::ShowView(view)) = *input {
             self.shown = if self.shown == view {
                 View::Charts
