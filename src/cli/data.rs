@@ -332,11 +332,12 @@ pub fn describe(shown: &DataReport) -> String {
         );
     }
     let _ = writeln!(s, "  {}", r.impact_note);
-    s += &scene_line(
-        &shown.scene_values,
-        &shown.header_values,
-        r.approach_speed.is_some(),
-    );
+    let approach = match (r.approach_speed.is_some(), r.length_unit_doubt.is_some()) {
+        (false, _) => NoV0::NoApproach,
+        (true, true) => NoV0::UnitUnknown,
+        (true, false) => NoV0::TooShort,
+    };
+    s += &scene_line(&shown.scene_values, &shown.header_values, approach);
     s
 }
 
@@ -412,15 +413,25 @@ fn missing_line(missing: &[crate::input::data::Gap]) -> String {
     s
 }
 
+/// Why the scene would take no v0 from a file ([`scene_line`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum NoV0 {
+    /// No approach before an impact.
+    NoApproach,
+    /// Shown (said above), too short to take v0 from.
+    TooShort,
+    /// Shown in the file's own length unit, not known to be metres.
+    UnitUnknown,
+}
+
 /// "  the scene takes from it: v0 = 0.791 m/s (both balls: the approach); R, b, μ_k,
 /// e from the preset or the options; m assumed unless given (no data measure it)";
-/// what the file's `# scene` lines give is named as its header's. `approach_seen`: the
-/// file shows an approach speed (said above), too short to take v0 from where the
-/// scene takes none.
+/// what the file's `# scene` lines give is named as its header's; where it takes no
+/// v0, why (`approach`).
 fn scene_line(
     values: &BTreeMap<&'static str, f64>,
     header: &BTreeMap<&'static str, f64>,
-    approach_seen: bool,
+    approach: NoV0,
 ) -> String {
     // A value is given when the header sets every value it stands for (v0: both balls').
     let given = |k: Key| k.param().sets.iter().all(|s| header.contains_key(s.name()));
@@ -467,12 +478,20 @@ fn scene_line(
             "  the scene takes from it: v0 = {} (both balls: the approach); {rest}\n",
             show(v, Dimension::Speed)
         ),
-        None if approach_seen => format!(
-            "  the scene takes nothing from it (too few frames before the impact to take v0 from, at least {}): {rest}\n",
-            crate::study::fit::APPROACH_FRAMES
-        ),
-        None => {
-            format!("  the scene takes nothing from it (no approach before an impact): {rest}\n")
-        }
+        None => match approach {
+            NoV0::TooShort => format!(
+                "  the scene takes nothing from it (too few frames before the impact to take v0 from, at least {}): {rest}\n",
+                crate::study::fit::APPROACH_FRAMES
+            ),
+            // It said "too few frames" of 7 frames before the impact.
+            NoV0::UnitUnknown => format!(
+                "  the scene takes nothing from it (its lengths' unit is not known, so neither is the approach speed in m/s: give --length-unit, see above): {rest}\n"
+            ),
+            NoV0::NoApproach => {
+                format!(
+                    "  the scene takes nothing from it (no approach before an impact): {rest}\n"
+                )
+            }
+        },
     }
 }

@@ -268,7 +268,7 @@ impl fmt::Display for ScaleError {
                 };
                 write!(
                     f,
-                    "read in {read_in} the ball approaches at {} m/s, slower than any ball in a groove (at least {SLOWEST_BALL} m/s){named}",
+                    "read in {read_in} the ball moves at up to {} m/s between frames, slower than any ball in a groove (at least {SLOWEST_BALL} m/s){named}",
                     significant(speed, 3),
                 )
             }
@@ -281,7 +281,7 @@ impl fmt::Display for ScaleError {
                 };
                 write!(
                     f,
-                    "the header gives no length unit and the positions do not look like metres: as m the ball approaches at {} m/s (as cm {} m/s, as mm {} m/s); {named} of a video never calibrated, give the length one pixel shows with --scale (e.g. --scale 0.5mm){}",
+                    "the header gives no length unit and the positions do not look like metres: as m the ball moves at up to {} m/s between frames (as cm {} m/s, as mm {} m/s); {named} of a video never calibrated, give the length one pixel shows with --scale (e.g. --scale 0.5mm){}",
                     significant(speed, 3),
                     significant(speed * 1e-2, 3),
                     significant(speed * 1e-3, 3),
@@ -307,7 +307,7 @@ impl fmt::Display for ScaleError {
                 };
                 write!(
                     f,
-                    "in the units given the frames are {} s apart and the ball approaches at {} m/s, beyond any ball in a groove (below {FASTEST_BALL} m/s): check the time and length units (--time-unit, --length-unit, or the header's){named}",
+                    "in the units given the frames are {} s apart and the ball moves at up to {} m/s between frames, beyond any ball in a groove (below {FASTEST_BALL} m/s): check the time and length units (--time-unit, --length-unit, or the header's){named}",
                     significant(frame, 3),
                     significant(speed, 3),
                 )

@@ -258,4 +258,28 @@ fn an_approach_too_short_for_v0_says_so() {
         long.contains("the scene takes from it: v0 = 0.79"),
         "{long}"
     );
+    // A position track in cm with no unit, 7 frames before its impact: shown in its
+    // own unit, and its v0 not taken for that reason, not "too few frames" (a new
+    // user's trial). The unit's line gives the speed between frames, not the approach.
+    let mut track = String::from("t,x\n");
+    for k in 0..14 {
+        let t = f64::from(k) / 30.0;
+        let x = if k <= 7 {
+            80.0 * t
+        } else {
+            80.0 * 7.0 / 30.0 - 60.0 * (t - 7.0 / 30.0)
+        };
+        track += &format!("{t:.4},{x:.3}\n");
+    }
+    let file = dir.join("cm-no-unit.csv");
+    std::fs::write(&file, track).unwrap();
+    let (code, out, err) = groovelab(&["data", file.to_str().unwrap()]);
+    assert_eq!(code, Some(0), "{err}");
+    assert!(out.contains("not known to be metres"), "{out}");
+    assert!(out.contains("as m the ball moves at up to 80"), "{out}");
+    assert!(
+        out.contains("the scene takes nothing from it (its lengths' unit is not known"),
+        "{out}"
+    );
+    assert!(!out.contains("too few frames"), "{out}");
 }

@@ -144,7 +144,7 @@ fn the_track_flags_reach_the_reader() {
         "mm",
     ]);
     let err = String::from_utf8_lossy(&mm.stderr);
-    assert!(err.contains("approaches at 0.000797 m/s"), "{err}");
+    assert!(err.contains("moves at up to 0.000797 m/s"), "{err}");
     let out = groovelab(&[
         "fit",
         "--preset",
