@@ -4,8 +4,8 @@
 use super::notes::UnitNote;
 use super::options::Reading;
 use super::scales::{
-    FASTEST_BALL, FASTEST_SPIN_CHANGE, LONGEST_FRAME, SLOWEST_BALL, SPEEDS, TIMES,
-    TYPICAL_SPIN_CHANGE, fitting, frame_spacing, steepest_change,
+    FASTEST_BALL, FASTEST_SPIN_CHANGE, LONGEST_FRAME, SHORTEST_FRAME, SHORTEST_SPAN, SLOWEST_BALL,
+    SPEEDS, TIMES, TYPICAL_SPIN_CHANGE, fitting, frame_spacing, steepest_change, unit_name,
 };
 use crate::settings::units::significant;
 
@@ -28,6 +28,8 @@ pub enum Misfit {
         rate: f64,
         unit_rate: f64,
         unit: &'static str,
+        /// The unit the times were read in.
+        read: &'static str,
     },
     /// Speeds up to `fastest` in the file's unit (`beyond`: too fast, else too slow
     /// as m/s), `as_unit` m/s read as `unit`.
@@ -84,10 +86,12 @@ impl Misfit {
                 rate,
                 unit_rate,
                 unit,
+                read,
             } => format!(
-                "frames {} apart (as s: {} frames/s; as {unit}: {unit_rate:.0} frames/s)",
+                "frames {} apart (as {read}: {} frames/s; as {unit}: {} frames/s)",
                 significant(frame, 3),
                 significant(rate, 2),
+                significant(unit_rate, 3),
             ),
             Misfit::Speeds {
                 fastest,
@@ -203,15 +207,25 @@ impl Units {
         let frame = frame_spacing(t);
         let fastest = v_cm.iter().chain(v_t).fold(0.0_f64, |a, v| a.max(v.abs()));
         let mut misfits = Vec::new();
+        let read = unit_name(&TIMES, self.time.0).unwrap_or("s");
+        let times = |unit: &'static str| Misfit::Times {
+            frame: frame / self.time.0,
+            rate: 1.0 / frame,
+            unit_rate: 1.0 / (frame / self.time.0 * unit_factor_of(&TIMES, unit)),
+            unit,
+            read,
+        };
         if frame >= LONGEST_FRAME {
             let unit =
                 fitting(&TIMES, self.time.0, frame, 0.01, |f| f < LONGEST_FRAME).unwrap_or("ms");
-            misfits.push(Misfit::Times {
-                frame: frame / self.time.0,
-                rate: 1.0 / frame,
-                unit_rate: 1.0 / (frame / self.time.0 * unit_factor_of(&TIMES, unit)),
-                unit,
-            });
+            misfits.push(times(unit));
+        } else if frame < SHORTEST_FRAME && span(t) < SHORTEST_SPAN {
+            // Seconds under a header that says ms: 0.6 s of frames read as 0.6 ms, at
+            // 100 000 frames/s, passed as such (a new user's trial).
+            let fits = |f: f64| (SHORTEST_FRAME..LONGEST_FRAME).contains(&f);
+            if let Some(unit) = fitting(&TIMES, self.time.0, frame, 0.01, fits) {
+                misfits.push(times(unit));
+            }
         }
         let plausible = |v: f64| (SLOWEST_BALL..FASTEST_BALL).contains(&v);
         if fastest > 0.0 && !plausible(fastest) {
@@ -251,6 +265,14 @@ impl Units {
             as_unit: si / self.v_t.0 * unit_factor_of(&SPEEDS, unit),
             unit,
         })
+    }
+}
+
+/// How long the times `t` (sorted) span, s.
+fn span(t: &[f64]) -> f64 {
+    match (t.first(), t.last()) {
+        (Some(a), Some(b)) => b - a,
+        _ => 0.0,
     }
 }
 

@@ -13,6 +13,12 @@ use crate::study::measured::TrackParts;
 /// the largest speed a ball in a groove reaches (m/s): numbers beyond them, with no
 /// unit said, are plainly in ms and cm/s (or cm, mm).
 pub const LONGEST_FRAME: f64 = 1.0;
+/// Frames closer than this (s: 50 000 frames/s) in a file that spans less than
+/// [`SHORTEST_SPAN`] are no recording of balls in a groove: seconds read as ms.
+pub const SHORTEST_FRAME: f64 = 2e-5;
+/// The least time a recording of an approach and an impact spans, s: a ball at 10
+/// m/s crosses its own radius in 3 ms, and its slide lasts longer.
+pub const SHORTEST_SPAN: f64 = 0.01;
 pub const FASTEST_BALL: f64 = 10.0;
 
 /// The smallest speed (m/s) a tracked ball in this experiment shows between frames
@@ -421,7 +427,7 @@ mod tests {
         // Mostly the slow roll after the impact: the approach still decides.
         let e = check_track(&track(60.0), &none).unwrap_err().to_string();
         assert!(
-            e.contains("approaches at 60 m/s") && e.contains("--length-unit cm"),
+            e.contains("moves at up to 60 m/s between frames") && e.contains("--length-unit cm"),
             "{e}"
         );
         let e = check_track(&track(600.0), &none).unwrap_err().to_string();

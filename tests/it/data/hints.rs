@@ -283,3 +283,41 @@ fn an_approach_too_short_for_v0_says_so() {
     );
     assert!(!out.contains("too few frames"), "{out}");
 }
+
+/// Seconds under a header that says ms: 0.6 s of a ball's approach and slide read as
+/// 0.6 ms at 100 000 frames/s, which no recording of balls in a groove is. Refused
+/// naming the time unit that fits (it passed, and `fit` then blamed the speeds'
+/// unit: a new user's trial). The same numbers under `t (s)`, and the times written
+/// in ms under `t (ms)`, are read.
+#[test]
+fn seconds_under_a_ms_header_are_refused_naming_the_time_unit() {
+    let dir = crate::common::scratch_dir("data_hints", "seconds-as-ms");
+    let file = |name: &str, header: &str, per_s: f64| {
+        let mut text = format!("{header},v_cm (m/s),v_t (m/s)\n");
+        for k in 0..61 {
+            let t = -0.2 + 0.01 * f64::from(k);
+            let (v, u) = if t < 0.0 {
+                (0.79, 0.79)
+            } else {
+                (-0.79 + 3.7 * t, 0.79 - 1.9 * t)
+            };
+            text += &format!("{:.3},{v:.4},{u:.4}\n", t * per_s);
+        }
+        let path = dir.join(name);
+        std::fs::write(&path, text).unwrap();
+        groovelab(&["data", path.to_str().unwrap()])
+    };
+    let (code, _, err) = file("wrong.csv", "t (ms)", 1.0);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("frames 0.01 apart (as ms: 100000 frames/s; as s: 100 frames/s)")
+            && err.contains("if they are s, fix the header (t (s)) or give --time-unit s"),
+        "{err}"
+    );
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    for (name, header, per_s) in [("s.csv", "t (s)", 1.0), ("ms.csv", "t (ms)", 1e3)] {
+        let (code, out, err) = file(name, header, per_s);
+        assert_eq!(code, Some(0), "{name}: {err}");
+        assert!(out.contains("61 frames at 100 frames/s"), "{name}: {out}");
+    }
+}
