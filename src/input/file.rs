@@ -56,9 +56,18 @@ pub enum Unreadable {
         limit / (1024 * 1024)
     )]
     TooBig { size: Option<u64>, limit: u64 },
-    /// The `byte`-th byte (from 1) starts no UTF-8 character.
-    #[error("byte {byte} is not UTF-8 text, allowed a UTF-8 text file")]
-    NotUtf8 { byte: usize },
+    /// The `byte`-th byte (from 1), on line `line`, starts no UTF-8 character: a file
+    /// saved in a Windows code page (an "ß" or "µ" in a note), most likely.
+    #[error(
+        "line {line} (byte {byte}) is not UTF-8 text, allowed a UTF-8 text file: saved as Windows-1252 or Latin-1? Save it as UTF-8 (in Excel: CSV UTF-8)"
+    )]
+    NotUtf8 { byte: usize, line: usize },
+    /// UTF-16 text by its byte-order mark (Excel's "Unicode text", Notepad's
+    /// "Unicode"): read as UTF-8 it failed at its second byte, with no hint.
+    #[error(
+        "it is UTF-16 text by its first bytes, allowed a UTF-8 text file: save it as UTF-8 (in Excel: CSV UTF-8; in Notepad: UTF-8)"
+    )]
+    Utf16,
     /// Not text but a video or a picture by its first bytes (`kind`: "an MP4 or MOV
     /// video"), named without the extension that would have it tracked.
     #[error(
@@ -149,10 +158,15 @@ pub fn read_user_file(path: &Path, what: FileRole, limit: u64) -> Result<String,
     String::from_utf8(bytes).map_err(|e| {
         let bytes = e.as_bytes();
         let head = bytes.get(..bytes.len().min(12)).unwrap_or_default();
+        let valid = e.utf8_error().valid_up_to();
         fail(match video_kind(head) {
             Some(kind) => Unreadable::Video { kind },
+            None if head.starts_with(&[0xff, 0xfe]) || head.starts_with(&[0xfe, 0xff]) => {
+                Unreadable::Utf16
+            }
             None => Unreadable::NotUtf8 {
-                byte: e.utf8_error().valid_up_to() + 1,
+                byte: valid + 1,
+                line: 1 + bytes.iter().take(valid).filter(|&&b| b == b'\n').count(),
             },
         })
     })
@@ -161,6 +175,31 @@ pub fn read_user_file(path: &Path, what: FileRole, limit: u64) -> Result<String,
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A Windows-1252 "ß" in a note on line 3 is named by its line, with the fix; a
+    /// UTF-16 file (either byte order) is named as such. Both said only "byte N is not
+    /// UTF-8 text" (a new user's trial: byte 44, byte 1).
+    #[test]
+    fn text_not_in_utf8_is_named_with_its_line_and_how_to_save_it() {
+        let dir = crate::output::Scratch::new("file-not-utf8");
+        let cp1252 = b"t,v_cm,note\n0,0.79,ok\n0.01,0.79,Stra\xdfe\n".to_vec();
+        let mut le = vec![0xff, 0xfe];
+        le.extend("t,v_cm\n".encode_utf16().flat_map(u16::to_le_bytes));
+        let mut be = vec![0xfe, 0xff];
+        be.extend("t,v_cm\n".encode_utf16().flat_map(u16::to_be_bytes));
+        for (name, bytes, want) in [
+            ("cp1252.csv", cp1252, "line 3 (byte 37) is not UTF-8 text"),
+            ("le.csv", le, "it is UTF-16 text by its first bytes"),
+            ("be.csv", be, "it is UTF-16 text by its first bytes"),
+        ] {
+            let path = dir.join(name);
+            std::fs::write(&path, bytes).unwrap();
+            let e = read_user_file(&path, FileRole::Data, MAX_FILE_BYTES)
+                .unwrap_err()
+                .to_string();
+            assert!(e.contains(want) && e.contains("CSV UTF-8"), "{name}: {e}");
+        }
+    }
 
     #[test]
     fn a_video_named_without_its_extension_is_said_to_be_one() {
@@ -199,7 +238,7 @@ mod tests {
         let e = read_user_file(&p, FileRole::Data, 1 << 20)
             .unwrap_err()
             .to_string();
-        assert!(e.contains("byte 5 is not UTF-8"), "{e}");
+        assert!(e.contains("line 2 (byte 5) is not UTF-8"), "{e}");
     }
 
     #[test]
@@ -232,7 +271,7 @@ mod tests {
         let e = read_user_file(&p, FileRole::DataOption, 100)
             .unwrap_err()
             .to_string();
-        assert!(e.contains("byte 2 is not UTF-8"), "{e}");
+        assert!(e.contains("line 1 (byte 2) is not UTF-8"), "{e}");
         let e = read_user_file(&dir.join("missing"), FileRole::DataOption, 100).unwrap_err();
         assert!(e.to_string().starts_with("cannot read --data "), "{e}");
     }
