@@ -533,21 +533,21 @@ fn story_lines(out: &mut String, now: &Resolved) {
     // otherwise (rolling resistance stops it, friction presses the pair), both are
     // named, not "outcome stopped" over "verdict recollide" unexplained.
     if now.rest_band.is_some() {
-        let verdict = story.verdict.text("±");
-        match (&story.criterion_note, story.verdict.impact) {
-            (Some(_), true) => {
-                let regime = story.verdict.regime.name();
-                let _ = writeln!(
-                    out,
-                    "verdict  {regime} by the paper's criterion{}; this run: {}",
-                    verdict.strip_prefix(regime).unwrap_or_default(),
-                    outcome.name()
-                );
-            }
-            _ => {
-                let _ = writeln!(out, "verdict  {verdict}");
-            }
-        }
+        let v = &story.verdict;
+        let verdict = match (&story.criterion_note, v.impact, v.margin("±")) {
+            (Some(_), true, margin) => format!(
+                "{} by the paper's criterion{}; this run: {}",
+                v.regime.name(),
+                if margin.is_empty() {
+                    String::new()
+                } else {
+                    format!(" ({margin})")
+                },
+                outcome.name()
+            ),
+            _ => v.text("±"),
+        };
+        let _ = writeln!(out, "verdict  {verdict}");
     }
     if let Some(rec) = derived.left_after_impact {
         // The closed forms only where the exact run bears them out; else its events.

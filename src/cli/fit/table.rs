@@ -36,25 +36,25 @@ pub(super) fn summary(f: &Fits) -> String {
         h.agreement().word(),
         rms_text(h)
     );
-    if h.mu_implausible && h.mu > MAX_PLAUSIBLE_MU {
-        let (what, option) = match h.fitted_to {
-            "positions" => ("lengths are likely in cm", "--length-unit cm"),
-            _ => ("speeds are likely in cm/s", "--speed-unit cm/s"),
+    if h.mu_implausible {
+        // 100× too large (cm read as m) or too small (m read as cm).
+        let (words, then, unit) = if h.mu > MAX_PLAUSIBLE_MU {
+            ("a μ_k beyond 1 is no ball rolling in a groove", 1e-2, "cm")
+        } else {
+            (
+                "a μ_k below 0.01 is no ball sliding in a groove (the slipperiest solids slide at 0.04)",
+                1e2,
+                "m",
+            )
+        };
+        let (what, unit, flag) = match h.fitted_to {
+            "positions" => ("lengths", unit.to_string(), "--length-unit"),
+            _ => ("speeds", format!("{unit}/s"), "--speed-unit"),
         };
         let _ = writeln!(
             out,
-            "  a μ_k beyond 1 is no ball rolling in a groove: the {what} (then μ_k ≈ {}): give {option}, or fix the header",
-            significant(h.mu / 100.0, 3)
-        );
-    } else if h.mu_implausible {
-        let (what, option) = match h.fitted_to {
-            "positions" => ("lengths are likely in m", "--length-unit m"),
-            _ => ("speeds are likely in m/s", "--speed-unit m/s"),
-        };
-        let _ = writeln!(
-            out,
-            "  a μ_k below 0.01 is no ball sliding in a groove (the slipperiest solids slide at 0.04): the {what} (then μ_k ≈ {}): give {option}, or fix the header",
-            significant(h.mu * 100.0, 3)
+            "  {words}: the {what} are likely in {unit} (then μ_k ≈ {}): give {flag} {unit}, or fix the header",
+            significant(h.mu * then, 3)
         );
     }
     if let Some(w) = f

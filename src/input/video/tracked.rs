@@ -1302,12 +1302,9 @@ fn frame_to_frame(tracks: &Tracks) -> String {
                 .filter(|(t, x)| t.is_finite() && x.is_finite())
                 .map(|(&t, &x)| (t, x))
                 .unzip();
-            (
-                b.name,
-                show_small(track_scatter(&ts, &xs), Dimension::Length),
-            )
+            let s = show_small(track_scatter(&ts, &xs), Dimension::Length);
+            format!("{s} ({})", b.name)
         })
-        .map(|(name, s)| format!("{s} ({name})"))
         .collect();
     each.join(", ")
 }
