@@ -7,7 +7,9 @@
 use super::options::Reading;
 use crate::settings::units::Dimension;
 
-use super::table::{Sep, TableRow, UnreadUnit, clean, header_unit, unit_factor, written_unit};
+use super::table::{
+    PIXELS, Sep, TableRow, UnreadUnit, clean, header_unit, unit_factor, written_unit,
+};
 
 /// One header cell of a position file: which track, which axis, its SI factor, and
 /// whether its unit is pixels (a length only `--scale` or `--length-unit` gives).
@@ -18,9 +20,6 @@ pub(super) struct Col {
     pub factor: Option<f64>,
     pub pixels: bool,
 }
-
-/// Units that say a video track's positions are pixels.
-const PIXELS: [&str; 3] = ["px", "pixel", "pixels"];
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(super) enum Axis {
@@ -201,6 +200,13 @@ pub enum LayoutError {
         crate::settings::quote::clip(&cells.join(" "))
     )]
     NoPositionColumn { line: usize, cells: Vec<String> },
+    /// The header at `line` has no x column but one speed, `cell` (`v (m/s)`,
+    /// `Geschwindigkeit`): not the two speeds a file of velocities gives.
+    #[error(
+        "line {line}: '{}' is one speed, and no position column x is there: a file of speeds needs two, the centre's and the contact point's, as columns t, v_cm and v_t; a position track needs t and x (and y)",
+        crate::settings::quote::clip(cell)
+    )]
+    OneSpeed { line: usize, cell: String },
     /// No track named `want` (as the option gave it) for the `role` ("centre",
     /// "mark") among the file's tracks (`found`; an empty name is an unnamed track).
     #[error(

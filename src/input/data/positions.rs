@@ -13,7 +13,7 @@ use super::notes::{Notes, UnitNote};
 use super::options::{MAX_ROWS, Reading};
 use super::problem::{DataError, DataProblem, RowError};
 use super::scales::{Given, LENGTHS, TIMES, check_track_as_read};
-use super::table::{Sep, Table, TableRow, missing, number};
+use super::table::{Sep, Table, TableRow, clean, missing, number, units_under};
 use crate::study::measured::{Track, TrackParts};
 
 /// Parses a position file (see the module doc) into a [`Track`] in SI units.
@@ -33,8 +33,9 @@ pub(super) fn read_table(
     reading: &Reading,
 ) -> Result<(Track, Notes), DataError> {
     let err = |what: DataProblem| DataError::new(file, what);
-    let mut rows = table.rows();
+    let mut rows = table.rows().peekable();
     let (before, header) = find_header(&mut rows).map_err(|e| err(e.into()))?;
+    let header = units_under(header, &mut rows);
     let mut cols: Vec<Option<Col>> = (0..header.len())
         .map(|i| position_column(header.cell(i)))
         .collect();
@@ -221,6 +222,20 @@ fn tracks_with_x(cols: &[Option<Col>], header: &TableRow) -> Result<Vec<String>,
             names.push(c.track.clone());
         }
     }
+    if let Some(cell) = names
+        .is_empty()
+        .then(|| {
+            (0..header.len())
+                .map(|i| header.cell(i))
+                .find(|c| one_speed(c))
+        })
+        .flatten()
+    {
+        return Err(LayoutError::OneSpeed {
+            line: header.line,
+            cell: cell.to_string(),
+        });
+    }
     if names.is_empty() {
         return Err(LayoutError::NoPositionColumn {
             line: header.line,
@@ -232,6 +247,14 @@ fn tracks_with_x(cols: &[Option<Col>], header: &TableRow) -> Result<Vec<String>,
         });
     }
     Ok(names)
+}
+
+/// True when a header cell names a single speed (`v (m/s)`, `speed`, `v_x`,
+/// `Geschwindigkeit`), not v_cm or v_t.
+fn one_speed(cell: &str) -> bool {
+    let h = clean(cell);
+    let name = h.split(['(', '[', '/']).next().unwrap_or("").trim();
+    ["v", "vx", "v_x", "v_{x}", "speed", "velocity"].contains(&name)
 }
 
 /// `track` with the mark read from `table`'s `columns` (its own time column) and
@@ -246,8 +269,9 @@ fn with_own_time_mark(
         centre_name: name,
         ..TrackParts::default()
     };
-    let mut rows = table.rows();
-    find_header(&mut rows)?;
+    let mut rows = table.rows().peekable();
+    let header = find_header(&mut rows)?.1;
+    units_under(header, &mut rows);
     read_rows(rows, columns, &mut rim)?;
     let format = track.format();
     let track = track.with_mark(&Track::new(rim)?)?;

@@ -258,6 +258,59 @@ pub(crate) fn unit_factor(rest: &str, dim: Dimension) -> Option<Option<f64>> {
     header_unit(rest, dim).ok()
 }
 
+/// Position columns in pixels (`x (px)`), which need a scale.
+pub(crate) const PIXELS: [&str; 3] = ["px", "pixel", "pixels"];
+
+/// True when `cell` is written as a unit a column can have: a time, length or speed
+/// unit, or pixels (`ms`, `(mm)`, `[m/s]`, `px`).
+fn is_unit(cell: &str) -> bool {
+    let unit = written_unit(cell);
+    !unit.is_empty()
+        && (PIXELS.contains(&unit.to_lowercase().as_str())
+            || [Dimension::Time, Dimension::Length, Dimension::Speed]
+                .into_iter()
+                .any(|dim| file_unit(&unit, dim).is_ok()))
+}
+
+/// The header `header` with the units of the row under it, where that row gives
+/// them (`t`, `x` over `s`, `mm`, as spreadsheets and some loggers write them): each
+/// name that has no unit of its own written with its cell's (`t (s)`, `x (mm)`), as
+/// if the header said them. `None` when `row` is no units row: a cell of it is a
+/// number, or none is a unit.
+pub(crate) fn with_units_row(header: &TableRow, row: &TableRow) -> Option<TableRow> {
+    let cells = (0..row.len()).map(|i| row.cell(i));
+    if cells.clone().any(|c| number(c).is_some()) || !cells.clone().any(is_unit) {
+        return None;
+    }
+    let merged = (0..header.len().max(row.len())).map(|i| {
+        let (name, unit) = (header.cell(i), row.cell(i));
+        if unit.is_empty() || name.contains(['(', '[', '/']) {
+            name.to_string()
+        } else {
+            format!("{name} ({})", written_unit(unit))
+        }
+    });
+    Some(TableRow {
+        line: header.line,
+        cells: merged.collect::<Vec<_>>().into(),
+    })
+}
+
+/// The header `header`, with the units of the next row of `rows` where it is a
+/// units row ([`with_units_row`]), which is then taken from `rows`.
+pub(crate) fn units_under(
+    header: TableRow,
+    rows: &mut std::iter::Peekable<impl Iterator<Item = TableRow>>,
+) -> TableRow {
+    match rows.peek().and_then(|row| with_units_row(&header, row)) {
+        Some(merged) => {
+            rows.next();
+            merged
+        }
+        None => header,
+    }
+}
+
 /// A unit written after a column name that is none of its quantity's: the unit as
 /// written (`in`, `min`) and the quantity.
 #[derive(Clone, Debug, PartialEq, Eq)]

@@ -10,7 +10,7 @@ use super::options::{MAX_ROWS, Reading};
 use super::problem::{
     DataError, DataProblem, FRAMES_BEFORE, ImpactOutside, RowError, TooFewBefore,
 };
-use super::table::{Table, TableRow, UnreadUnit, clean, header_unit, number};
+use super::table::{Table, TableRow, UnreadUnit, clean, header_unit, number, units_under};
 use crate::settings::units::Dimension;
 use crate::study::measured::{Measured, MeasuredParts};
 
@@ -94,8 +94,9 @@ fn columns(
     reading: &Reading,
 ) -> Result<(VelocityColumns, Units), DataError> {
     let err = |what: DataProblem| DataError::new(file, what);
-    let mut rows = table.rows();
+    let mut rows = table.rows().peekable();
     let header = rows.next().ok_or_else(|| err(DataProblem::Empty))?;
+    let header = units_under(header, &mut rows);
     let find = |want: &str| {
         (0..header.len()).find_map(|i| {
             column(header.cell(i))

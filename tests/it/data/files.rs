@@ -406,9 +406,8 @@ fn headers_in_other_languages_are_read_or_the_error_names_the_columns() {
     .unwrap_err()
     .to_string();
     assert!(
-        e.contains(
-            "expected t and x (and y) for a position track, or t, v_cm and v_t for velocities"
-        ),
+        e.contains("'Geschwindigkeit (m/s)' is one speed")
+            && e.contains("as columns t, v_cm and v_t; a position track needs t and x (and y)"),
         "{e}"
     );
 }

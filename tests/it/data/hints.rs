@@ -321,3 +321,109 @@ fn seconds_under_a_ms_header_are_refused_naming_the_time_unit() {
         assert!(out.contains("61 frames at 100 frames/s"), "{name}: {out}");
     }
 }
+
+/// Runs `args` in this process: its exit status and what it printed.
+fn run(args: &[&str]) -> groovelab::cli::entry::Exit {
+    let argv: Vec<std::ffi::OsString> = std::iter::once("groovelab")
+        .chain(args.iter().copied())
+        .map(std::ffi::OsString::from)
+        .collect();
+    groovelab::cli::entry::main_with(&argv)
+}
+
+/// Units in a row of their own under the column names (`t,x,y` over `ms,mm,mm`, as
+/// spreadsheets and some loggers write them) are read as the header's: the file
+/// reads as the same file with `t (ms),x (mm),y (mm)`, whatever the separator and
+/// however the units are bracketed. It was refused: "t = 'ms' is not a finite
+/// number". A row with a number in it is data, not units; an unknown unit there is
+/// named as in a header.
+#[test]
+fn a_units_row_under_the_names_is_read_as_their_units() {
+    let dir = crate::common::scratch_dir("data_hints", "units-row");
+    let file = dir.join("track.csv");
+    let f = file.to_str().unwrap();
+    // The track of `two_speeds` (an impact at 0.3 s) in ms and mm.
+    let rows: Vec<(f64, f64)> = two_speeds(0.5, -0.15)
+        .lines()
+        .skip(1)
+        .map(|l| {
+            let c: Vec<f64> = l.split(',').map(|c| c.parse().unwrap()).collect();
+            (c[0] * 1e3, c[1] * 1e3)
+        })
+        .collect();
+    let write = |head: &[&str], sep: &str, comma: bool| {
+        let mut text: String = head.iter().map(|l| format!("{l}\n")).collect();
+        for (t, x) in &rows {
+            let line = format!("{t:.1}{sep}{x:.4}{sep}100");
+            text += &if comma { line.replace('.', ",") } else { line };
+            text.push('\n');
+        }
+        std::fs::write(&file, text).unwrap();
+        run(&["data", f])
+    };
+    let want = write(&["t (ms),x (mm),y (mm)"], ",", false);
+    assert_eq!(want.code, 0, "{}", want.stderr);
+    assert!(want.stdout.contains("time in ms") && want.stdout.contains("length in mm"));
+    let heads: [(&[&str], &str, bool); 4] = [
+        (&["t,x,y", "ms,mm,mm"], ",", false),
+        (&["t;x;y", "(ms);(mm);[mm]"], ";", true),
+        (&["t\tx\ty", "ms\tmm"], "\t", false),
+        (&["Zeit,x,y", "ms,mm,mm"], ",", false),
+    ];
+    for (head, sep, comma) in heads {
+        let got = write(head, sep, comma);
+        assert_eq!(got.code, 0, "{head:?}: {}", got.stderr);
+        assert_eq!(got.stdout, want.stdout, "{head:?}");
+    }
+    // Without the units row's units, the same numbers are read in s and m.
+    let bare = write(&["t,x,y"], ",", false);
+    assert_ne!(bare.stdout, want.stdout);
+    // A row with a number is the first row of data.
+    let numbered = write(&["t,x,y", "ms,5,mm"], ",", false);
+    assert!(
+        numbered.code == 2
+            && numbered
+                .stderr
+                .contains("line 2: t = 'ms' is not a finite number"),
+        "{}",
+        numbered.stderr
+    );
+    let minutes = write(&["t,x,y", "min,mm,mm"], ",", false);
+    assert!(
+        minutes.code == 2 && minutes.stderr.contains("unknown time unit 'min'"),
+        "{}",
+        minutes.stderr
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A file of one speed over time (`Zeit (s),Geschwindigkeit (m/s)`, or `t,v`) is
+/// refused naming that speed and the two a file of speeds needs. It said only that
+/// no position column x was found.
+#[test]
+fn one_speed_is_named_with_the_two_a_velocity_file_needs() {
+    let dir = crate::common::scratch_dir("data_hints", "one-speed");
+    let file = dir.join("speed.csv");
+    let f = file.to_str().unwrap();
+    for (head, cell) in [
+        ("Zeit (s),Geschwindigkeit (m/s)", "Geschwindigkeit (m/s)"),
+        ("t;v", "v"),
+        ("time (s),speed (cm/s)", "speed (cm/s)"),
+    ] {
+        let sep = if head.contains(';') { ";" } else { "," };
+        let text = format!("{head}\n0{sep}0.5\n0.01{sep}0.49\n0.02{sep}0.48\n");
+        std::fs::write(&file, text).unwrap();
+        let got = run(&["data", f]);
+        assert!(
+            got.code == 2
+                && got
+                    .stderr
+                    .contains(&format!("line 1: '{cell}' is one speed"))
+                && got.stderr.contains("t, v_cm and v_t")
+                && got.stderr.trim_end().lines().count() == 1,
+            "{head}: {}",
+            got.stderr
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
