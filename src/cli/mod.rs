@@ -38,7 +38,7 @@ mod track_args;
 mod video_data;
 pub use crate::output::{self, write_atomically};
 use crate::settings::params::{Key, PARAMS};
-use crate::settings::units::{Dimension, fixed, show, sig_figs};
+use crate::settings::units::{Dimension, fixed, show, show_below, sig_figs};
 pub use args::*;
 use deliver::deliver;
 pub use error::{BadValue, CliError, Flag, Usage};
@@ -440,6 +440,15 @@ fn table(preset: &Preset, now: &Resolved, samples: Option<&[Snapshot]>) -> Strin
     out
 }
 
+/// `ratio` (below `limit`) to three places, or to as many more as tell it from
+/// `limit` (b/R = 1.9999999 beside 2, not 2.000).
+fn ratio_below(ratio: f64, limit: f64) -> String {
+    (3..=16)
+        .map(|places| format!("{ratio:.places$}"))
+        .find(|text| text.parse::<f64>().is_ok_and(|v| v < limit))
+        .unwrap_or_else(|| format!("{ratio}"))
+}
+
 /// The preset (its description only for its own scene: it tells of that scene), the
 /// scene, the balls and the derived values with the paper's regime.
 fn scene_lines(out: &mut String, preset: &Preset, now: &Resolved) {
@@ -481,7 +490,13 @@ fn scene_lines(out: &mut String, preset: &Preset, now: &Resolved) {
             let v = (p.get)(sc, &now.span)?;
             let mut text = format!("{} = {}", p.screen_label(), show(v, p.dim));
             if p.key == Key::Width {
-                let _ = write!(text, " (b/R = {:.3}, b* = {b_star})", sc.width / sc.radius);
+                // Just under 2R, b and b/R keep the digits that tell them from 2R, 2.
+                text = format!(
+                    "{} = {} (b/R = {}, b* = {b_star})",
+                    p.screen_label(),
+                    show_below(v, 2.0 * sc.radius, p.dim),
+                    ratio_below(sc.width / sc.radius, 2.0)
+                );
             }
             Some(text)
         })

@@ -14,7 +14,7 @@ use super::settings::Layers;
 use crate::physics::scene::Scene;
 use crate::settings::params::Key;
 use crate::settings::spec::{SceneError, SceneSpec};
-use crate::settings::units::{Dimension, show};
+use crate::settings::units::{Dimension, show, show_below};
 use std::sync::Arc;
 
 use crate::study::measured::{Measured, Series};
@@ -179,9 +179,14 @@ impl OtherGroove {
         let mut model = Vec::new();
         // Only what the data state: a value their file leaves out is the preset's,
         // and the data were never "measured at" it.
+        // A width just under 2R keeps the digits that tell it from 2R.
+        let shown = |name: &str, v: f64, g: &Groove| match name {
+            "b" => show_below(v, 2.0 * g.radius, Dimension::Length),
+            _ => len(v).to_string(),
+        };
         for (name, a, b) in d.differing(m) {
-            data.push(format!("{name} = {}", len(a)));
-            model.push(format!("{name} = {}", len(b)));
+            data.push(format!("{name} = {}", shown(name, a, d)));
+            model.push(format!("{name} = {}", shown(name, b, m)));
         }
         let whose = match &self.whose {
             Whose::Preset(name) => format!("{name}'s data were"),

@@ -13,7 +13,7 @@ use crate::physics::solution::Solution;
 use crate::physics::story::{After, Verdict};
 use crate::settings::params::{Key, PARAMS};
 use crate::settings::spec::SceneError;
-use crate::settings::units::{Dimension, show};
+use crate::settings::units::{Dimension, show, show_below};
 use crate::study::fit;
 use crate::study::measured::{self, InScene, Measured};
 use crate::study::story;
@@ -298,8 +298,12 @@ pub fn differences(
             let x = (row.get)(was, was_span)?;
             let y = (row.get)(scene, span)?;
             let differ = (x - y).abs() > 1e-12 * x.abs().max(y.abs());
-            let shown = |v| show(v, row.dim).to_string();
-            differ.then(|| (row.label, shown(x), shown(y)))
+            // A width just under 2R keeps the digits that tell it from 2R.
+            let shown = |v, sc: &Scene| match row.key {
+                Key::Width => show_below(v, 2.0 * sc.radius, row.dim),
+                _ => show(v, row.dim).to_string(),
+            };
+            differ.then(|| (row.label, shown(x, was), shown(y, scene)))
         })
         .collect()
 }

@@ -22,7 +22,7 @@ use crate::lab::Lab;
 use crate::lab::jobs::Pool;
 use crate::settings::params::Key;
 use crate::settings::spec::SceneError;
-use crate::settings::units::{Dimension, show};
+use crate::settings::units::{Dimension, show, show_below};
 
 pub use super::vocabulary::{
     Action, ChartBall, Export, FPS, Field, Library, Mode, Prediction, SPEEDS, Status, View,
@@ -182,6 +182,9 @@ impl App {
     pub(super) fn shown_value(&self, key: Key) -> String {
         if self.hidden().value(key) {
             "(hidden)".to_string()
+        } else if key == Key::Width {
+            let limit = 2.0 * self.lab.scene.radius;
+            show_below(self.lab.value(key), limit, key.dimension())
         } else {
             show(self.lab.value(key), key.dimension()).to_string()
         }

@@ -11,7 +11,7 @@ use ratatui::widgets::Widget;
 use super::panel::block;
 use crate::lab::Origin;
 use crate::settings::params::Key;
-use crate::settings::units::{Dimension, fit_number};
+use crate::settings::units::{Dimension, fit_number, show_below};
 use crate::tui::app::{App, ROWS};
 use crate::tui::component::{Component, Ctx};
 use crate::tui::line::caret as caret_style;
@@ -59,7 +59,19 @@ pub fn value_text(app: &App, key: Key) -> String {
     } else {
         fit_number(dim.to_display(v), room)
     };
+    if key == Key::Width && !reads_below(&number, dim.to_display(2.0 * s.radius)) {
+        // A width just under 2R rounded up would read as 2R, which is refused: its
+        // digits cut to the room instead (5.4999999 cm reads 5.499999, not 5.50).
+        let below = show_below(v, 2.0 * s.radius, dim);
+        let digits = below.strip_suffix(unit.as_str()).unwrap_or(&below);
+        return format!("{}{unit}", digits.chars().take(room).collect::<String>());
+    }
     format!("{number}{unit}")
+}
+
+/// True when `number` (as shown) reads below `limit` (in the same unit).
+fn reads_below(number: &str, limit: f64) -> bool {
+    number.trim().parse::<f64>().is_ok_and(|n| n < limit)
 }
 
 /// What stands right of a value: context that makes it readable, fitted into `room`

@@ -82,3 +82,70 @@ fn a_mass_is_named_as_the_panel_names_it_in_every_error() {
     let range = refusal(&["simulate", "--mass-right", "1e308g"]);
     assert!(range.contains("m right = 1e308 g"), "{range}");
 }
+
+/// Every b printed beside a groove just under 2R, typed back as the width, is a
+/// groove the program accepts: `simulate`'s changed-preset, scene and data lines, its
+/// b/R, and the app's parameter panel. They printed "b = 5.5 cm" of
+/// 5.4999999 cm, beside "0 ≤ b < 2R = 5.5 cm" when 5.5 cm is typed.
+#[test]
+fn a_width_just_under_2r_is_printed_as_a_width_the_program_takes() {
+    use crate::common::run_in_process;
+    // (R, b) in cm: b under 2R by 1e-7 … 1e-3 relative, at two radii.
+    for (r, b) in [
+        (2.75, 5.4999999),
+        (2.75, 5.49999),
+        (2.75, 5.4998),
+        (1.0, 1.9999998),
+    ] {
+        let (radius, width) = (format!("{r}cm"), format!("{b}cm"));
+        let scene = [
+            "--preset",
+            "paper-b4.9",
+            "--radius",
+            &radius,
+            "--width",
+            &width,
+        ];
+        let said = run_in_process(&[&["simulate"][..], &scene].concat()).unwrap();
+        let screen =
+            run_in_process(&[&["render", "--size", "120x40"][..], &scene].concat()).unwrap();
+        let mut widths: Vec<String> = Vec::new();
+        // The text after `line`'s first `b = ` (after its start `line` itself for
+        // the panel's row).
+        for (text, line, b_at) in [
+            (&said, "changed by the options:", "b = "),
+            (&said, "scene    R = ", "b = "),
+            (&said, "the model uses ", "b = "),
+            (&screen, "▸b", "▸b"),
+        ] {
+            let at = text.find(line).unwrap_or_else(|| panic!("{line}: {text}"));
+            let rest = &text[at..];
+            let rest = &rest[rest.find(b_at).unwrap() + b_at.len()..];
+            widths.push(rest.split_whitespace().next().unwrap().to_string());
+        }
+        for w in &widths {
+            let typed = format!("{w}cm");
+            let args = [
+                "simulate",
+                "--preset",
+                "paper-b4.9",
+                "--radius",
+                &radius,
+                "--width",
+                &typed,
+            ];
+            assert!(
+                run_in_process(&args).is_ok(),
+                "R = {r} cm, b = {b} cm printed as {w}: {widths:?}"
+            );
+        }
+        let ratio = said
+            .split("b/R = ")
+            .nth(1)
+            .unwrap()
+            .split(',')
+            .next()
+            .unwrap();
+        assert!(ratio.parse::<f64>().unwrap() < 2.0, "b/R = {ratio}");
+    }
+}
