@@ -17,6 +17,10 @@ pub struct Notes {
     /// fewer cells than the line before: an export stopped mid-row), dropped.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub cut_row: Option<usize>,
+    /// A velocity file's first impact in the file's own time, s (its times are then
+    /// shifted to put the impact at t = 0).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub impact_in_file: Option<f64>,
 }
 
 /// One quantity's unit and who decided it.

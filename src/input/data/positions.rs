@@ -154,6 +154,7 @@ fn units_read(
 fn notes(format: &str, tracks: Vec<String>, given: &Given) -> Notes {
     Notes {
         cut_row: None,
+        impact_in_file: None,
         format: format.to_string(),
         tracks,
         units: vec![

@@ -142,7 +142,16 @@ pub fn inspect(
                     .then(|| before.iter().sum::<f64>() / before.len() as f64),
                 impacts: vec![0.0],
                 impact_note: format!(
-                    "first impact found; the times above are from it (t = 0){}",
+                    "first impact {}{}; the times above are from it (t = 0){}",
+                    if reading.impact_at.is_some() {
+                        "given"
+                    } else {
+                        "found"
+                    },
+                    notes
+                        .impact_in_file
+                        .map(|at| format!(" at t = {at:.4} s of the file"))
+                        .unwrap_or_default(),
                     if m.mirrored() {
                         "; the file's x runs away from the other ball: read mirrored"
                     } else {

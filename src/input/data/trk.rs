@@ -233,6 +233,7 @@ pub(super) fn read(text: &str, file: &str, reading: &Reading) -> Result<(Track, 
     check_track_as_read(&track, &given, reading.own_lengths).map_err(|e| err(e.into()))?;
     let notes = Notes {
         cut_row: None,
+        impact_in_file: None,
         format: FORMAT.into(),
         tracks: names,
         units: vec![

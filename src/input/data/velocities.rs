@@ -169,6 +169,7 @@ pub(super) fn without_impact(
         .map_err(|e| DataError::new(file, e))?;
     let notes = Notes {
         cut_row: None,
+        impact_in_file: None,
         format: "table (t, v_cm, v_t)".into(),
         tracks: Vec::new(),
         units: units.notes(),
@@ -223,6 +224,7 @@ pub(super) fn read_table(
         .map_err(|e| err(e.into()))?;
     let notes = Notes {
         cut_row: None,
+        impact_in_file: Some(impact),
         format: "table (t, v_cm, v_t)".into(),
         tracks: Vec::new(),
         units: units.notes(),

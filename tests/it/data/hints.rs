@@ -427,3 +427,57 @@ fn one_speed_is_named_with_the_two_a_velocity_file_needs() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A velocity file's first impact is said where it lies in the file's own time (its
+/// times are shown from the impact): a file from t = 1.2 s with the impact between
+/// the frames at 1.49 and 1.50 s says "found at t = 1.4950 s of the file", in s or
+/// ms, and JSON `impact_in_file`; an impact given says "given at" the time given. It
+/// said only "first impact found; the times above are from it (t = 0)".
+#[test]
+fn a_velocity_files_impact_is_said_in_the_files_own_time() {
+    let dir = crate::common::scratch_dir("data_hints", "impact-in-file");
+    let file = dir.join("v.csv");
+    let f = file.to_str().unwrap();
+    for (unit, factor) in [("s", 1.0), ("ms", 1e3)] {
+        let mut text = format!("t ({unit}),v_cm (m/s),v_t (m/s)\n");
+        for k in 0..60 {
+            let t = 1.2 + f64::from(k) * 0.01;
+            let (v_cm, v_t) = if t < 1.495 {
+                (0.6, 0.6)
+            } else {
+                (-0.1 + 0.5 * (t - 1.5), 0.5 - 1.2 * (t - 1.5))
+            };
+            text += &format!("{:.3},{v_cm:.5},{v_t:.5}\n", t * factor);
+        }
+        std::fs::write(&file, text).unwrap();
+        let said = run(&["data", f]);
+        let at: f64 = said
+            .stdout
+            .split("first impact found at t = ")
+            .nth(1)
+            .and_then(|r| r.split(" s of the file").next())
+            .unwrap_or_else(|| panic!("{unit}: {}", said.stdout))
+            .parse()
+            .unwrap();
+        // Between the last frame before (1.49 s) and the first after (1.50 s).
+        assert!((1.49..=1.50).contains(&at), "{unit}: {at}");
+        let json: serde_json::Value =
+            serde_json::from_str(&run(&["data", "--format", "json", f]).stdout).unwrap();
+        let in_file = json[0]["impact_in_file"].as_f64().unwrap();
+        assert!((in_file - at).abs() < 1e-4, "{in_file} {at}");
+        let given = run(&[
+            "data",
+            "--impact-at",
+            &format!("{}{unit}", 1.47 * factor),
+            f,
+        ]);
+        assert!(
+            given
+                .stdout
+                .contains("first impact given at t = 1.4700 s of the file"),
+            "{}",
+            given.stdout
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
