@@ -56,6 +56,12 @@ pub struct App {
     mouse: bool,
     pub status: Status,
     quit: bool,
+    /// `q` pressed once with changes not saved: the next `q` quits (any other key
+    /// takes it back).
+    quit_asked: bool,
+    /// The scene when it was last saved as a preset (`s`) or written with its run
+    /// (`w`): changes made after that are lost on quitting.
+    kept: Option<crate::physics::scene::Scene>,
     library: Library,
     /// The file being written (its job).
     export: ExportRun,
@@ -95,6 +101,8 @@ impl App {
             mouse: true,
             status: Status::None,
             quit: false,
+            quit_asked: false,
+            kept: None,
             library,
             export: ExportRun::default(),
             jobs: Jobs::new(pool),
@@ -284,6 +292,9 @@ impl App {
 
     fn dispatch(&mut self, input: &Input) -> bool {
         let t = self.t;
+        if matches!(input, Input::Key(a) if *a != Action::Quit) {
+            self.quit_asked = false;
+        }
         match (self.offer_layers(input), input) {
             (true, _) => {}
             // What no popup took reaches the views and the app's own keys.

@@ -132,7 +132,10 @@ impl Mode {
 /// Everything a key can do.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Action {
+    /// `q`: quits, or first says what quitting loses.
     Quit,
+    /// Ctrl-C: quits from anywhere, at once.
+    QuitNow,
     Up,
     Down,
     NextParam,

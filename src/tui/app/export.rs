@@ -132,6 +132,10 @@ impl App {
             self.status = Status::Info(format!("{NO_FILES}: would write {}", path.display()));
             return Ok(());
         }
+        if kind == Export::Csv {
+            // The run's file holds its scene, which `--data FILE` loads back.
+            self.kept = Some(self.lab.scene);
+        }
         self.status = Status::Info(format!("writing {}…", path.display()));
         self.export.start(&self.jobs, move || {
             let (bytes, what) = work()?;

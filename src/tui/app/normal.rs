@@ -12,6 +12,9 @@ use super::{Action, App, Export, Field, SPEEDS, Status};
 use crate::tui::layer::{DataTable, Help, Layer, Picker, Prompt};
 use crate::tui::vocabulary::TextTarget;
 
+/// What the first `q` says when the scene's changes here are not saved.
+pub const UNSAVED: &str = "changes to the scene are not saved: q again quits; s saves them as a preset, w writes the run with its scene";
+
 impl App {
     /// One fine or coarse step of the selected parameter. A step past a limit stops at
     /// the last value allowed on the way (the limit itself when it is allowed, else the
@@ -59,13 +62,31 @@ impl App {
         }
     }
 
+    /// Whether values set here (typed, stepped, a fit applied) are in force and the
+    /// scene is not the one last saved (`s`) or written with its run (`w`).
+    fn unsaved(&self) -> bool {
+        let set_here = self
+            .lab
+            .settings()
+            .in_force()
+            .iter()
+            .any(|e| matches!(e, Edit::Values(_) | Edit::Fitted(_)));
+        set_here && self.kept != Some(self.lab.scene)
+    }
+
     pub(super) fn apply_normal(&mut self, action: Action) {
         if self.offer(action) {
             return;
         }
         let (t0, t1) = (self.lab.solution.t_start, self.lab.solution.t_end);
         match action {
-            Action::Quit => self.quit = true,
+            // Quitting loses the changes made here: with some not saved, the first
+            // press says so and the second quits (a reflex q lost a student's setup).
+            Action::Quit if self.unsaved() && !self.quit_asked => {
+                self.quit_asked = true;
+                self.status = Status::Info(UNSAVED.into());
+            }
+            Action::Quit | Action::QuitNow => self.quit = true,
             // Esc closes popups and cancels prompts; on the main screen it must not end
             // the session (a reflex Esc lost a student's whole setup), so it says how.
             Action::Cancel => {

@@ -95,6 +95,7 @@ impl App {
         };
         match file {
             Ok(path) => {
+                self.kept = Some(self.lab.scene);
                 self.library = Library::at(self.library.dir.clone());
                 self.status = Status::Info(format!("saved {}", path.display()));
             }

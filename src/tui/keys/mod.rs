@@ -112,7 +112,7 @@ pub fn parse(name: &str) -> Option<KeyEvent> {
 /// The action a key press means in `mode`, if any.
 pub fn action(mode: &Mode, key: KeyEvent) -> Option<Action> {
     if key.code == KeyCode::Char('c') && key.modifiers.contains(KeyModifiers::CONTROL) {
-        return Some(Action::Quit);
+        return Some(Action::QuitNow);
     }
     if mode.is_typing() {
         return match (key.code, mode) {
@@ -277,7 +277,7 @@ mod tests {
             action(&edit, parse("enter").unwrap()),
             Some(Action::Confirm)
         );
-        assert_eq!(action(&edit, parse("C-c").unwrap()), Some(Action::Quit));
+        assert_eq!(action(&edit, parse("C-c").unwrap()), Some(Action::QuitNow));
     }
 
     #[test]
@@ -286,7 +286,7 @@ mod tests {
         assert_eq!(action(&Mode::Normal, q), Some(Action::Quit));
         for popup in [Mode::Help, Mode::Picker(0), Mode::Table] {
             assert_eq!(action(&popup, q), Some(Action::Cancel), "{popup:?}");
-            assert_eq!(action(&popup, parse("C-c").unwrap()), Some(Action::Quit));
+            assert_eq!(action(&popup, parse("C-c").unwrap()), Some(Action::QuitNow));
         }
         for prompt in [
             Mode::SaveName(Default::default()),

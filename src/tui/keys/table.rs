@@ -336,9 +336,15 @@ pub const TABLE: &[Binding] = &[
         hint: None,
     },
     Binding {
-        keys: &["q", "C-c"],
+        keys: &["q"],
         action: Action::Quit,
-        help: "quit (q in a popup closes it; Ctrl-C always quits; Ctrl-Z suspends)",
+        help: "quit (twice where the scene has unsaved changes; in a popup q closes it)",
         hint: Some(("quit", 9)),
+    },
+    Binding {
+        keys: &["C-c"],
+        action: Action::QuitNow,
+        help: "quit at once, from anywhere (Ctrl-Z suspends)",
+        hint: None,
     },
 ];

@@ -62,7 +62,7 @@ impl Picker {
                 | Action::DecreaseCoarse => 0,
                 Action::Select(j) if j < presets => j,
                 Action::Cancel | Action::Presets => return Handled::Close(Then::Nothing),
-                Action::Quit => return Handled::Ignored,
+                Action::Quit | Action::QuitNow => return Handled::Ignored,
                 _ => return Handled::Consumed,
             };
             self.marked = true;
@@ -84,7 +84,7 @@ impl Picker {
             }
             Action::Cancel | Action::Presets => return Handled::Close(Then::Nothing),
             // Ctrl-C quits from anywhere.
-            Action::Quit => return Handled::Ignored,
+            Action::Quit | Action::QuitNow => return Handled::Ignored,
             _ => i,
         };
         Handled::Consumed

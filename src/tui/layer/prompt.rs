@@ -62,7 +62,7 @@ impl Interactive<&Histories> for Prompt {
                 return Handled::Close(Then::Typed(self.target, self.field.clone()));
             }
             // Ctrl-C quits from anywhere.
-            Action::Quit => return Handled::Ignored,
+            Action::Quit | Action::QuitNow => return Handled::Ignored,
             _ => {}
         }
         Handled::Consumed
@@ -117,7 +117,7 @@ impl Interactive<()> for Confirm {
             Input::Key(Action::Type('y' | 'Y')) => {
                 Handled::Close(Then::Overwrite(self.name.clone()))
             }
-            Input::Key(Action::Quit) | Input::Mouse(..) => Handled::Ignored,
+            Input::Key(Action::Quit | Action::QuitNow) | Input::Mouse(..) => Handled::Ignored,
             Input::Key(_) => Handled::Close(Then::Say("not saved".into())),
         }
     }

@@ -28,7 +28,7 @@ impl Interactive<()> for Question {
             },
             Action::Cancel => Handled::Close(Then::Say("no prediction".into())),
             // Ctrl-C quits from anywhere.
-            Action::Quit => Handled::Ignored,
+            Action::Quit | Action::QuitNow => Handled::Ignored,
             _ => Handled::Consumed,
         }
     }

@@ -66,7 +66,7 @@ impl Interactive<Action> for Scroll {
             (Input::Mouse(..), None) => return Handled::Ignored,
         };
         match action {
-            Action::Quit => Handled::Ignored,
+            Action::Quit | Action::QuitNow => Handled::Ignored,
             a if self.scroll(a) => Handled::Consumed,
             a if a == Action::Cancel || a == opened_by => Handled::Close(Then::Nothing),
             _ => Handled::Close(Then::Pass),

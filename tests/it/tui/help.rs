@@ -6,7 +6,7 @@ use super::*;
 
 #[test]
 fn help_is_complete_at_every_size_scrolling_where_needed() {
-    for (w, h) in [(80, 24), (120, 40), (200, 62)] {
+    for (w, h) in [(80, 24), (120, 40), (200, 63)] {
         for ascii in [false, true] {
             let mut a = app("paper-b4.9");
             press(&mut a, "?");
@@ -48,7 +48,7 @@ fn help_is_complete_at_every_size_scrolling_where_needed() {
             }
             assert!(flat.contains("Mouse: click a parameter"), "{w}x{h} {ascii}");
             // Where it all fits there is nothing to scroll to.
-            if h >= 62 {
+            if h >= 63 {
                 assert!(!seen.contains("more "), "{w}x{h}: {seen}");
             }
             press(&mut a, "q");
@@ -101,7 +101,7 @@ fn q_closes_every_popup_and_quits_only_the_main_screen() {
 
 #[test]
 fn the_hint_bar_always_ends_with_help_and_quit() {
-    for (w, h) in [(80, 24), (120, 40), (200, 62)] {
+    for (w, h) in [(80, 24), (120, 40), (200, 63)] {
         for ascii in [false, true] {
             let s = screen("paper-b4.9", 0.2, (w, h), ascii, None);
             let bar = s.lines().last().unwrap();
@@ -476,4 +476,59 @@ fn a_applies_the_position_fit_of_a_track() {
         "{:?}",
         a.status
     );
+}
+
+/// `q` with changes to the scene that are not saved says what quitting loses, and a
+/// second `q` quits; any other key between takes the question back. Unchanged, or
+/// saved as a preset (`s`) or written with its run (`w`), one `q` quits; Ctrl-C always
+/// quits at once. A reflex `q` lost a student's whole setup.
+#[test]
+fn q_with_unsaved_changes_asks_once_and_ctrl_c_quits_at_once() {
+    let unsaved = "changes to the scene are not saved: q again quits";
+    // Unchanged: one q.
+    let mut a = app("paper-b4.9");
+    press(&mut a, "q");
+    assert!(a.quitting());
+    // Changed by a key (b one step up): q asks, another key takes it back, q q quits.
+    let mut a = app("paper-b4.9");
+    select(&mut a, Key::Width);
+    press(&mut a, "right q");
+    assert!(!a.quitting());
+    assert!(screen_of(&a).contains(unsaved), "{}", screen_of(&a));
+    press(&mut a, "space q");
+    assert!(!a.quitting(), "a key between takes the question back");
+    press(&mut a, "q");
+    assert!(a.quitting());
+    // Ctrl-C: at once, changes or not, from a popup too.
+    let mut a = app("paper-b4.9");
+    a.set_value(Key::Mu, 0.2);
+    press(&mut a, "? C-c");
+    assert!(a.quitting());
+    // Changed back by undo: nothing is lost, one q.
+    let mut a = app("paper-b4.9");
+    a.set_value(Key::Mu, 0.2);
+    press(&mut a, "u q");
+    assert!(a.quitting(), "undone: {}", screen_of(&a));
+    // Saved as a preset, or written with its run: one q, until the next change.
+    let dir = crate::common::scratch_dir("tui", "quit-saved");
+    for keys in ["s enter", "w enter"] {
+        let mut a = app("paper-b4.9");
+        a.set_library(Library::at(Some(dir.clone())));
+        a.set_export_dir(dir.clone());
+        a.set_value(Key::Mu, 0.2);
+        press(&mut a, keys);
+        a.wait();
+        press(&mut a, "q");
+        assert!(a.quitting(), "{keys}: {}", screen_of(&a));
+        let mut a = app("paper-b4.9");
+        a.set_library(Library::at(Some(dir.clone())));
+        a.set_export_dir(dir.clone());
+        a.set_value(Key::Mu, 0.2);
+        press(&mut a, keys);
+        a.wait();
+        a.set_value(Key::Mu, 0.25);
+        press(&mut a, "q");
+        assert!(!a.quitting(), "{keys}, then a change");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
 }
