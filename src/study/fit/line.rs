@@ -188,21 +188,34 @@ pub struct WidthFromLines {
 
 /// [`WidthFromLines`] where it disagrees with the scene's b by more than twice its ±
 /// and by over [`WIDTH_APART`] of b; `None` where it agrees or the line fits cannot
-/// tell (no v_t, or D outside the model's 0 … 5/2).
+/// tell (no v_t, or a k outside the model's 0 … 1).
+///
+/// A measured v_t (a velocity file) gives k² = 2D/5 from D = |a_t|/|a_cm|. A v_t
+/// derived from a rim mark's angle is r θ' with the scene's r = k_scene R, so its D
+/// is (5/2) k_scene k, the scene's own k in it (the width it gave echoed the one
+/// given: halfway to the truth). The angle itself is free of it: its α = (5/2) μ g/R
+/// beside a_cm = μ g/k gives k = (2/5) R α/|a_cm| = (2/5) D/k_scene (`spin_from_angle`).
 pub fn width_from_lines(
     (a_cm, a_cm_se): (f64, f64),
     (a_t, a_t_se): (f64, f64),
     scene: &Scene,
+    spin_from_angle: bool,
 ) -> Option<WidthFromLines> {
     let d = a_t / a_cm;
-    let rest = 1.0 - 2.0 * d / 5.0;
-    if !(d.is_finite() && d > 0.0 && rest > 0.0) {
+    let d_rel = (a_t_se / a_t).hypot(a_cm_se / a_cm);
+    let (k2, k2_rel) = if spin_from_angle {
+        let k = 2.0 * d / (5.0 * scene.k());
+        (k * k, 2.0 * d_rel)
+    } else {
+        (2.0 * d / 5.0, d_rel)
+    };
+    let rest = 1.0 - k2;
+    if !(k2.is_finite() && k2 > 0.0 && rest > 0.0) {
         return None;
     }
-    let d_se = d * (a_t_se / a_t).hypot(a_cm_se / a_cm);
     let width = 2.0 * scene.radius * rest.sqrt();
-    // db/dD = −(2R/5)/√(1 − 2D/5).
-    let width_se = 2.0 * scene.radius / 5.0 * d_se / rest.sqrt();
+    // db/d(k²) = −R/√(1 − k²).
+    let width_se = scene.radius * k2 * k2_rel / rest.sqrt();
     let apart = (width - scene.width).abs();
     (width_se.is_finite() && apart > 2.0 * width_se && apart > WIDTH_APART * scene.width).then_some(
         WidthFromLines {
@@ -360,6 +373,7 @@ pub fn line_fit(
             (cm.slope.abs(), cm.slope_se),
             (vt.slope.abs(), vt.slope_se),
             scene,
+            m.angle().is_some(),
         ),
         no_v_t: (with_t.len() < 3).then(|| m.why_no_line_v_t()),
     })

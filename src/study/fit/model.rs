@@ -261,7 +261,7 @@ impl Agreement {
                 "no verdict: μ_k,cm and μ_k,t of the line fits disagree beyond their ± and by over a quarter, so the scene's b or R does not fit these data (k = r/R enters μ_k,cm as k, μ_k,t as 1/k): check --width and --radius"
             }
             Agreement::FitsDisagree => {
-                "no verdict: μ_k fitted to the positions and to the velocities of the same tracks disagree beyond their ± and by over a tenth, so the tracks carry an error neither fit models (a centre or mark misplaced in many frames): check the tracking (track --overlay), or film again"
+                "no verdict: μ_k fitted to the positions and to the velocities of the same tracks disagree beyond their ± and by over a tenth, so the tracks carry an error neither fit models (a centre or mark misplaced in many frames) or the scene's b or R is not the groove's: check --width and --radius, then the tracking (track --overlay), or film again"
             }
             Agreement::ImplausibleMu => {
                 "no verdict: a μ_k beyond 1 is no ball rolling in a groove, so the data's unit is likely wrong (speeds in cm/s read as m/s make μ_k 100× too large): give --speed-unit cm/s (a track in cm: --length-unit cm), or fix the header"
