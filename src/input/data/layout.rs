@@ -100,7 +100,14 @@ fn column(cell: &str) -> Result<Option<Col>, UnreadUnit> {
         .filter(|&(i, _)| i != at)
         .map(|(_, t)| *t)
         .collect();
-    if rest.iter().any(|t| OTHER_QUANTITIES.contains(t)) {
+    // A quantity's letter leads the name (`v_x`, `a_y`); after the axis, or after a
+    // word (`x_A`, `mass A x`), a letter is a track's name (Tracker's mass A, B).
+    let letter_of_track = |i: usize, t: &str| t.chars().count() == 1 && i > 0 && !"θω".contains(t);
+    let quantity = tokens
+        .iter()
+        .enumerate()
+        .any(|(i, t)| i != at && OTHER_QUANTITIES.contains(t) && !letter_of_track(i, t));
+    if quantity {
         return Ok(None);
     }
     let pixels = dim == Dimension::Length && PIXELS.contains(&written_unit(unit).as_str());

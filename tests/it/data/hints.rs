@@ -481,3 +481,61 @@ fn a_velocity_files_impact_is_said_in_the_files_own_time() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Columns named for Tracker's mass A and B by a letter after the axis (`x_A`,
+/// `y_B`) or after a word (`mass A x`) are tracks A and B: a centre and its rim mark
+/// read as the same file with `x`, `x_mark`, and the same fit. `x_A` was read as an
+/// acceleration (the letter `a` of `a_x`), so the A columns were dropped without a
+/// word and B became the centre. A letter leading the name (`v_x`, `a_y`) is still a
+/// quantity, not a position.
+#[test]
+fn a_letter_after_the_axis_names_a_track() {
+    use groovelab::study::measured::Track;
+    use groovelab::study::video::{self, TrackFormat, Video};
+    let dir = crate::common::scratch_dir("data_hints", "track-letters");
+    let scene = crate::common::symmetric(0.0275, 0.049, 0.17, 0.7, 1.0);
+    let track = video::track(&scene, &Video::default()).unwrap();
+    let text = video::write(
+        &Track::new(track.into_parts()).unwrap(),
+        TrackFormat::TrackerMulti,
+    );
+    // The rows of the multi-track export (t, x, y of A, x, y of B), under our headers.
+    let rows: Vec<&str> = text.lines().skip(3).collect();
+    let fit_of = |head: &str, sep: char| {
+        let file = dir.join("t.csv");
+        let body: Vec<String> = rows
+            .iter()
+            .map(|r| r.replace('\t', &sep.to_string()))
+            .collect();
+        std::fs::write(&file, format!("{head}\n{}\n", body.join("\n"))).unwrap();
+        let f = file.to_str().unwrap();
+        let data = run(&["data", f]);
+        let fit = run(&["fit", "--data", f, "--radius", "2.75cm", "--width", "4.9cm"]);
+        (
+            data.stdout,
+            fit.stdout.lines().nth(1).unwrap_or_default().to_string(),
+        )
+    };
+    let (_, want) = fit_of("t,x,y,x_mark,y_mark", ',');
+    assert!(want.contains("μ_k = 0.1") && want.contains("agrees"), "{want}");
+    for (head, sep) in [
+        ("t (s),x_A (m),y_A (m),x_B (m),y_B (m)", ','),
+        ("t;x_A;y_A;x_B;y_B", ';'),
+        ("t\tmass A x\tmass A y\tmass B x\tmass B y", '\t'),
+    ] {
+        let (data, fit) = fit_of(head, sep);
+        assert!(
+            data.contains("centre 'a', rim mark 'b'")
+                || data.contains("centre 'mass a', rim mark 'mass b'"),
+            "{head}: {data}"
+        );
+        assert_eq!(fit, want, "{head}");
+    }
+    // A quantity's letter first: velocities and accelerations, not positions.
+    let (data, _) = fit_of("t,x,y,v_x,a_y", ',');
+    assert!(
+        data.contains("centre x, y (unnamed), no rim mark"),
+        "{data}"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
