@@ -273,12 +273,13 @@ pub enum BadValue {
     )]
     DataWithoutScene { path: PathBuf },
     #[error(
-        "the rim mark lies {} from the centre, farther than the ball's R = {} (allowed up to R + 3× the position scatter = {}): give the ball's {} or name the mark's track ({} mark=NAME)",
+        "the rim mark lies {} from the centre, farther than the ball's R = {} (allowed up to R + 3× the position scatter = {}): give the ball's {} or name the mark's track ({} mark=NAME){}",
         show(*mark, Dimension::Length),
         show(*radius, Dimension::Length),
         show(*limit, Dimension::Length),
         Flag("radius"),
-        Flag("track")
+        Flag("track"),
+        mark_unit_hint(*mark, *radius)
     )]
     MarkOffTheBall { mark: f64, radius: f64, limit: f64 },
     #[error(
@@ -479,4 +480,20 @@ impl std::fmt::Display for OffScale {
             OffScale::Spacing(s) => write!(f, "its frames are {} s apart", significant(*s, 3)),
         }
     }
+}
+
+/// Where a rim mark lies 10, 100 or 1000 times R from the centre (within a fifth):
+/// the lengths' unit named as the likelier mistake (mm read as cm, cm or mm as m).
+fn mark_unit_hint(mark: f64, radius: f64) -> String {
+    let ratio = mark / radius;
+    [(10.0, "mm", "cm"), (100.0, "cm", "m"), (1000.0, "mm", "m")]
+        .into_iter()
+        .find(|(p, _, _)| (0.8..1.25).contains(&(ratio / p)))
+        .map(|(p, meant, read)| {
+            format!(
+                "; at {p}× R, the lengths may be {meant} read as {read}: give {} {meant}",
+                Flag("length_unit")
+            )
+        })
+        .unwrap_or_default()
 }

@@ -37,25 +37,7 @@ pub(super) fn summary(f: &Fits) -> String {
         rms_text(h)
     );
     if h.mu_implausible {
-        // 100× too large (cm read as m) or too small (m read as cm).
-        let (words, then, unit) = if h.mu > MAX_PLAUSIBLE_MU {
-            ("a μ_k beyond 1 is no ball rolling in a groove", 1e-2, "cm")
-        } else {
-            (
-                "a μ_k below 0.01 is no ball sliding in a groove (the slipperiest solids slide at 0.04)",
-                1e2,
-                "m",
-            )
-        };
-        let (what, unit, flag) = match h.fitted_to {
-            "positions" => ("lengths", unit.to_string(), "--length-unit"),
-            _ => ("speeds", format!("{unit}/s"), "--speed-unit"),
-        };
-        let _ = writeln!(
-            out,
-            "  {words}: the {what} are likely in {unit} (then μ_k ≈ {}): give {flag} {unit}, or fix the header",
-            significant(h.mu * then, 3)
-        );
+        let _ = writeln!(out, "  {}", unit_hint(h.mu, h.fitted_to));
     }
     if let Some(w) = f
         .line_fit
@@ -105,6 +87,43 @@ pub(super) fn summary(f: &Fits) -> String {
         );
     }
     out
+}
+
+/// What an implausible μ_k (beyond 1, or below 0.01) says of the data's unit: the
+/// power of ten (10, 100, 1000) that brings it nearest a typical 0.17, and the unit
+/// mix-up that makes it (mm read as cm: 10× too large; cm as m: 100×; mm as m:
+/// 1000×; the other way round too small). The header's own unit is not known here,
+/// so the mix-up is named, not assumed (a header saying cm over numbers in mm made
+/// "give --length-unit cm" a loop).
+fn unit_hint(mu: f64, fitted_to: &str) -> String {
+    let large = mu > MAX_PLAUSIBLE_MU;
+    let off = |p: f64| (if large { mu / p } else { mu * p } / 0.17).ln().abs();
+    let power = [10.0, 100.0, 1000.0]
+        .into_iter()
+        .min_by(|a, b| off(*a).total_cmp(&off(*b)))
+        .unwrap_or(100.0);
+    // (the unit meant, the unit read) for a factor `power` too large.
+    let (meant, read) = match power as u32 {
+        10 => ("mm", "cm"),
+        1000 => ("mm", "m"),
+        _ => ("cm", "m"),
+    };
+    let (meant, read) = if large { (meant, read) } else { (read, meant) };
+    let (what, per, flag) = match fitted_to {
+        "positions" => ("lengths", "", "--length-unit"),
+        _ => ("speeds", "/s", "--speed-unit"),
+    };
+    let words = if large {
+        "a μ_k beyond 1 is no ball rolling in a groove"
+    } else {
+        "a μ_k below 0.01 is no ball sliding in a groove (the slipperiest solids slide at 0.04)"
+    };
+    format!(
+        "{words}: the {what} are likely {}× too {} ({meant}{per} read as {read}{per}? then μ_k ≈ {}): give {flag} {meant}{per}, or fix the header",
+        power as u32,
+        if large { "large" } else { "small" },
+        significant(if large { mu / power } else { mu * power }, 3)
+    )
 }
 
 /// A fit's μ_k ± 2σ, or why it has none.

@@ -517,7 +517,10 @@ fn a_letter_after_the_axis_names_a_track() {
         )
     };
     let (_, want) = fit_of("t,x,y,x_mark,y_mark", ',');
-    assert!(want.contains("μ_k = 0.1") && want.contains("agrees"), "{want}");
+    assert!(
+        want.contains("μ_k = 0.1") && want.contains("agrees"),
+        "{want}"
+    );
     for (head, sep) in [
         ("t (s),x_A (m),y_A (m),x_B (m),y_B (m)", ','),
         ("t;x_A;y_A;x_B;y_B", ';'),

@@ -88,7 +88,7 @@ fn a_mu_below_a_hundredth_does_not_agree_and_names_the_unit() {
     assert!(head.contains("μ_k < 0.01: units?"), "{text}");
     assert!(!head.contains("agrees"), "{text}");
     assert!(text.contains("--speed-unit m/s"), "{text}");
-    assert!(text.contains("(then μ_k ≈ 0.17)"), "{text}");
+    assert!(text.contains("then μ_k ≈ 0.17)"), "{text}");
     let j = json(&[&args[..], &["--format", "json"]].concat());
     let mf = &j["model_fit"];
     assert!((mf["mu"].as_f64().unwrap() - 0.0017).abs() < 1e-5, "{mf}");
@@ -219,6 +219,70 @@ fn a_tracks_rim_mark_gives_the_grooves_width_whatever_width_was_given() {
             (b - truth).abs() <= 2.0 * se && se < 0.002,
             "b = {truth} m given {given}: {b} ± {se}"
         );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// A track whose header states a unit its numbers are not in: the hint names the
+/// unit that brings μ_k to the truth, whatever the header said. mm under a `(cm)`
+/// header fit μ_k 10× too large, and the hint said "give --length-unit cm", the unit
+/// already in force (a loop); mm under `(m)` is 1000×. With a rim mark, the mark
+/// lies 10× (1000×) R from the centre, and that refusal names the unit too.
+#[test]
+fn the_unit_hint_names_the_unit_that_fits_whatever_the_header_said() {
+    use groovelab::study::measured::Track;
+    use groovelab::study::video::{self, TrackFormat, Video};
+    let dir = scratch_dir("fit_verdicts", "unit_hint");
+    let path = dir.join("track.csv");
+    let f = path.display().to_string();
+    let scene = symmetric(0.0275, 0.049, 0.17, 0.7, 1.0);
+    for mark in [false, true] {
+        let video = Video {
+            mark,
+            ..Video::default()
+        };
+        let track = video::track(&scene, &video).unwrap();
+        // `t (s)`, `x (mm)`: the numbers in mm.
+        let text = video::write(
+            &Track::new(track.into_parts()).unwrap(),
+            TrackFormat::CsvComma,
+        );
+        assert!(text.contains("(mm)"), "{}", &text[..100]);
+        for (header, p, read) in [("(cm)", 10, "cm"), ("(m)", 1000, "m")] {
+            std::fs::write(&path, text.replace("(mm)", header)).unwrap();
+            let args = [
+                "fit",
+                "--data",
+                &f,
+                "--radius",
+                "2.75cm",
+                "--width",
+                "4.9cm",
+                "--length-unit",
+                read,
+            ];
+            let (code, out, err) = crate::common::run(&args);
+            if p == 1000 {
+                // 718 m/s between frames: refused before any fit, naming mm.
+                assert!(
+                    code == 2 && err.contains("give --length-unit mm"),
+                    "{header}: {err}"
+                );
+            } else if mark {
+                assert!(
+                    code == 2
+                        && err.contains(&format!(
+                            "at {p}× R, the lengths may be mm read as {read}: give --length-unit mm"
+                        )),
+                    "{header}: {err}"
+                );
+            } else {
+                let hint = format!(
+                    "{p}× too large (mm read as {read}? then μ_k ≈ 0.17): give --length-unit mm"
+                );
+                assert!(code == 0 && out.contains(&hint), "{header}: {out}");
+            }
+        }
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
