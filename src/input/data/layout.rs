@@ -116,13 +116,22 @@ fn column(cell: &str) -> Result<Option<Col>, UnreadUnit> {
         Err(_) if pixels => None,
         Err(unread) => return Err(unread),
     };
-    // `x_cm`, `t_s`: a trailing unit token rather than a track name.
+    // `x_cm`, `t_s`: a trailing unit token rather than a track name; after a track's
+    // name too (`x_mark_cm`: the track 'mark' in cm).
     if factor.is_none()
         && let [only] = rest.as_slice()
         && let Some(Some(f)) = unit_factor(only, dim)
     {
         factor = Some(f);
         rest.clear();
+    }
+    if factor.is_none()
+        && rest.len() >= 2
+        && at < tokens.len() - 1
+        && let Some(Some(f)) = rest.last().and_then(|last| unit_factor(last, dim))
+    {
+        factor = Some(f);
+        rest.pop();
     }
     let track = match point {
         Some(p) if rest.is_empty() => p,

@@ -351,11 +351,15 @@ pub(crate) fn number(cell: &str) -> Option<f64> {
         .filter(|v| v.is_finite())
 }
 
-/// True for a cell that marks a missing value: empty, or `NaN` as Tracker writes
-/// where it cannot differentiate (the first and last frames).
+/// True for a cell that marks a missing value: empty, `NaN` as Tracker writes where
+/// it cannot differentiate (the first and last frames), or a spreadsheet's "not
+/// available" (`#N/A` in English Excel and Google Sheets, `#NV` in German Excel).
 pub(crate) fn missing(cell: &str) -> bool {
     let c = cell.trim().trim_matches('"');
-    c.is_empty() || c.eq_ignore_ascii_case("nan")
+    c.is_empty()
+        || ["nan", "#n/a", "#nv", "#nd", "#n/d"]
+            .iter()
+            .any(|m| c.eq_ignore_ascii_case(m))
 }
 
 #[cfg(test)]

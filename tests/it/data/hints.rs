@@ -542,3 +542,58 @@ fn a_letter_after_the_axis_names_a_track() {
     );
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A unit written after a track's name (`x_mark_cm`, as after an axis, `x_cm`) is
+/// that column's unit, and a spreadsheet's "not available" (`#N/A`, German `#NV`) is
+/// a missing cell: both read as the plain file does. `x_mark_cm` was a track 'mark
+/// cm' 24 m from the centre; `#N/A` refused the file.
+#[test]
+fn a_unit_after_a_tracks_name_and_not_available_cells_read_as_the_plain_file() {
+    use groovelab::study::measured::Track;
+    use groovelab::study::video::{self, TrackFormat, Video};
+    let dir = crate::common::scratch_dir("data_hints", "unit-after-name");
+    let scene = crate::common::symmetric(0.0275, 0.049, 0.17, 0.7, 1.0);
+    let track = video::track(&scene, &Video::default()).unwrap();
+    let text = video::write(
+        &Track::new(track.into_parts()).unwrap(),
+        TrackFormat::TrackerMulti,
+    );
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .skip(3)
+        .map(|r| r.split('\t').map(|c| c.parse().unwrap()).collect())
+        .collect();
+    // The file with `head`, lengths × `scale`, the mark of rows 40–42 written `gone`.
+    let said = |head: &str, scale: f64, gone: &str| {
+        let file = dir.join("t.csv");
+        let mut body = format!("{head}\n");
+        for (k, r) in rows.iter().enumerate() {
+            let mark = if (40..43).contains(&k) {
+                format!("{gone},{gone}")
+            } else {
+                format!("{},{}", r[3] * scale, r[4] * scale)
+            };
+            body += &format!("{},{},{},{mark}\n", r[0], r[1] * scale, r[2] * scale);
+        }
+        std::fs::write(&file, body).unwrap();
+        let f = file.to_str().unwrap();
+        let fit = run(&["fit", "--data", f, "--radius", "2.75cm", "--width", "4.9cm"]);
+        assert_eq!(fit.code, 0, "{head} {gone}: {}", fit.stderr);
+        fit.stdout.lines().nth(1).unwrap_or_default().to_string()
+    };
+    let want = said("t,x,y,x_mark,y_mark", 1.0, "");
+    assert!(want.contains("agrees"), "{want}");
+    for (head, scale) in [
+        ("t_s,x_m,y_m,x_mark_m,y_mark_m", 1.0),
+        ("t_s,x_cm,y_cm,x_mark_cm,y_mark_cm", 100.0),
+        ("t,x_mm,y_mm,x_rim_mm,y_rim_mm", 1000.0),
+    ] {
+        let got = said(head, scale, "");
+        // μ_k to its four digits: the numbers as written in another unit round apart.
+        assert_eq!(got[..20], want[..20], "{head}: {got}");
+    }
+    for gone in ["#N/A", "#NV", "NaN"] {
+        assert_eq!(said("t,x,y,x_mark,y_mark", 1.0, gone), want, "{gone}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
