@@ -298,11 +298,9 @@ pub fn describe(shown: &DataReport) -> String {
     if let Some(l) = &r.mark_left_out {
         let _ = writeln!(
             s,
-            "  rim mark {} left out by the fits: it lies {:.1} from the centre, within {}× the position scatter ({:.2}), so its angle would be noise; v_t is not measured",
+            "  rim mark {} left out by the fits: {}; v_t is not measured",
             named(&l.name),
-            show_small(l.radius, Dimension::Length),
-            l.scatters,
-            show_small(r.scatter.unwrap_or(f64::NAN), Dimension::Length)
+            l.why(r.scatter.unwrap_or(f64::NAN))
         );
     }
     if let Some(line) = r.notes.cut_row {

@@ -597,3 +597,69 @@ fn a_unit_after_a_tracks_name_and_not_available_cells_read_as_the_plain_file() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A second track whose distance from the centre comes and goes (another run of the
+/// ball side by side, taken for the rim mark) is left out as no mark, saying how its
+/// distance changed, and the centre alone is fitted; a rim mark on the ball (0.3 mm
+/// noise, any seed) is kept. The run was read as a mark "at 6.8 mm from the centre",
+/// and the fits disagreed.
+#[test]
+fn a_second_run_taken_for_the_mark_is_left_out_as_no_mark() {
+    use groovelab::study::measured::Track;
+    use groovelab::study::video::{self, TrackFormat, Video};
+    let dir = crate::common::scratch_dir("data_hints", "second-run");
+    let file = dir.join("t.txt");
+    let f = file.to_str().unwrap();
+    let scene = crate::common::symmetric(0.0275, 0.049, 0.17, 0.7, 1.0);
+    for seed in 1..4 {
+        let video = Video {
+            seed,
+            ..Video::default()
+        };
+        let parts = video::track(&scene, &video).unwrap().into_parts();
+        std::fs::write(
+            &file,
+            video::write(
+                &Track::new(parts.clone()).unwrap(),
+                TrackFormat::TrackerMulti,
+            ),
+        )
+        .unwrap();
+        let kept = run(&["data", f]);
+        assert!(
+            !kept.stdout.contains("left out"),
+            "seed {seed}: {}",
+            kept.stdout
+        );
+        // The mark's columns hold the ball's own centre 4 frames later: a second run.
+        let mut run2 = parts;
+        let (xs, ys) = (run2.x.clone(), run2.y.clone());
+        let (mx, my) = run2.mark.as_mut().unwrap();
+        for k in 0..xs.len() {
+            mx[k] = xs.get(k + 4).copied().unwrap_or(f64::NAN);
+            my[k] = ys.get(k + 4).copied().unwrap_or(f64::NAN);
+        }
+        std::fs::write(
+            &file,
+            video::write(&Track::new(run2).unwrap(), TrackFormat::TrackerMulti),
+        )
+        .unwrap();
+        let said = run(&["data", f]);
+        assert!(
+            said.stdout
+                .contains("left out by the fits: its distance from the centre changes from"),
+            "seed {seed}: {}",
+            said.stdout
+        );
+        let fit = run(&["fit", "--data", f, "--radius", "2.75cm", "--width", "4.9cm"]);
+        assert!(
+            fit.stdout
+                .lines()
+                .nth(1)
+                .is_some_and(|l| l.contains("agrees")),
+            "{}",
+            fit.stdout
+        );
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

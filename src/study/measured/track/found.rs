@@ -81,6 +81,30 @@ pub struct MarkLeftOut {
     pub radius: f64,
     /// How many position scatters it needed to lie from the centre.
     pub scatters: f64,
+    /// Where it was left out because its distance from the centre changes (10th and
+    /// 90th percentiles, m): no mark on the ball.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub range: Option<[f64; 2]>,
+}
+
+impl MarkLeftOut {
+    /// Why it was left out, after "rim mark NAME left out…: " (`scatter`: the
+    /// position scatter, m).
+    pub fn why(&self, scatter: f64) -> String {
+        match self.range {
+            Some([lo, hi]) => format!(
+                "its distance from the centre changes from {:.1} to {:.1} (10th to 90th percentile), where a mark on the ball keeps one: another ball or run?",
+                show_small(lo, Dimension::Length),
+                show_small(hi, Dimension::Length)
+            ),
+            None => format!(
+                "it lies {:.1} from the centre, within {}× the position scatter ({:.2}), so its angle would be noise",
+                show_small(self.radius, Dimension::Length),
+                self.scatters,
+                show_small(scatter, Dimension::Length)
+            ),
+        }
+    }
 }
 
 /// Frames absent from a file: where its time jumps by more than one and a half frames.
@@ -142,11 +166,9 @@ impl Found {
             ),
             (None, _) => match &self.mark_left_out {
                 Some(l) => format!(
-                    "rim mark {} left out: it lies {:.1} from the centre, within {}× the position scatter ({:.2}), so its angle would be noise; v_t is not measured, the fits use v_cm (x) only",
+                    "rim mark {} left out: {}; v_t is not measured, the fits use v_cm (x) only",
                     name(&l.name),
-                    show_small(l.radius, Dimension::Length),
-                    l.scatters,
-                    show_small(self.scatter, Dimension::Length)
+                    l.why(self.scatter)
                 ),
                 None => "no rim mark: v_t is not measured, the fits use v_cm (x) only".to_string(),
             },

@@ -89,6 +89,8 @@ struct Spin {
     fits: Vec<Option<Local>>,
     /// The mark's median distance from the centre, m.
     radius: f64,
+    /// Its distance's 10th and 90th percentiles, m: a mark on the ball keeps one.
+    range: [f64; 2],
     /// Those frames' rows of the track.
     valid: Vec<usize>,
 }
@@ -126,15 +128,17 @@ fn spin_of(
     // The fits reach across neither an impact nor a gap whose turn is unknown.
     let mut cuts = [cuts, &unwrap(&at, &mut theta, dt)].concat();
     cuts.sort_by(f64::total_cmp);
-    let radius = median(
-        valid
-            .iter()
-            .map(|&i| {
-                let (dx, dy) = track.at(i).mark_offset();
-                dx.hypot(dy)
-            })
-            .collect(),
-    );
+    let mut distances: Vec<f64> = valid
+        .iter()
+        .map(|&i| {
+            let (dx, dy) = track.at(i).mark_offset();
+            dx.hypot(dy)
+        })
+        .collect();
+    distances.sort_by(f64::total_cmp);
+    let decile = |q: usize| distances[(distances.len() - 1) * q / 10];
+    let range = [decile(1), decile(9)];
+    let radius = median(distances);
     let s_theta = scatter(&at, &theta).max(1e-7);
     let fits = derivatives(&at, &theta, n, &cuts, s_theta);
     Some(Spin {
@@ -142,6 +146,7 @@ fn spin_of(
         theta,
         fits,
         radius,
+        range,
         valid,
     })
 }
@@ -232,10 +237,28 @@ fn mark_off_the_centre(
                 name: name.unwrap_or_default().to_string(),
                 radius: s.radius,
                 scatters: MARK_SCATTERS,
+                range: None,
+            }),
+        )),
+        Some(s) if wanders(s.range, s.radius, scatter) => Ok((
+            None,
+            Some(MarkLeftOut {
+                name: name.unwrap_or_default().to_string(),
+                radius: s.radius,
+                scatters: MARK_SCATTERS,
+                range: Some(s.range),
             }),
         )),
         spin => Ok((spin, None)),
     }
+}
+
+/// True when a mark's distance from the centre (10th to 90th percentile `range`,
+/// median `radius`) changes by more than half its median and six position scatters:
+/// a mark on the ball keeps one distance, so this is another thing (a second run
+/// side by side came and went from 0 to 45 mm and was read as a mark).
+fn wanders(range: [f64; 2], radius: f64, scatter: f64) -> bool {
+    range[1] - range[0] > 0.5 * radius + 6.0 * scatter
 }
 
 /// How many frames come before and after the impact at `impact_t`, or why fewer than
