@@ -136,7 +136,13 @@ fn spin_of(
         })
         .collect();
     distances.sort_by(f64::total_cmp);
-    let decile = |q: usize| distances[(distances.len() - 1) * q / 10];
+    // `valid` is not empty (above), nor then are its distances.
+    let decile = |q: usize| {
+        distances
+            .get(distances.len().saturating_sub(1) * q / 10)
+            .copied()
+            .unwrap_or(f64::NAN)
+    };
     let range = [decile(1), decile(9)];
     let radius = median(distances);
     let s_theta = scatter(&at, &theta).max(1e-7);
