@@ -37,12 +37,22 @@ impl OwnData {
     /// Said wherever the data are named when the file was read mirrored (its ball
     /// approaches the other toward −x): "x runs toward −x in FILE: read mirrored".
     pub fn mirrored_note(&self) -> Option<String> {
-        self.series.mirrored().then(|| {
+        let mirrored = self.series.mirrored().then(|| {
             format!(
                 "x runs toward −x in {}: read mirrored (x → −x, the ball approaching toward +x as in the model)",
                 self.name
             )
-        })
+        });
+        let turned = self.series.spin_turned().then(|| {
+            format!(
+                "v_t runs opposite to v_cm in {} while the ball rolls before the impact (where v_t = v_cm): read turned (v_t → −v_t)",
+                self.name
+            )
+        });
+        match (mirrored, turned) {
+            (Some(a), Some(b)) => Some(format!("{a}\n{b}")),
+            (a, b) => a.or(b),
+        }
     }
 }
 

@@ -152,11 +152,17 @@ pub fn inspect(
                         .impact_in_file
                         .map(|at| format!(" at t = {at:.4} s of the file"))
                         .unwrap_or_default(),
-                    if m.mirrored() {
-                        "; the file's x runs away from the other ball: read mirrored"
-                    } else {
-                        ""
-                    }
+                    [
+                        (
+                            m.mirrored(),
+                            "; the file's x runs away from the other ball: read mirrored"
+                        ),
+                        (m.spin_turned(), SPIN_TURNED),
+                    ]
+                    .iter()
+                    .filter(|(on, _)| *on)
+                    .map(|(_, said)| *said)
+                    .collect::<String>()
                 ),
                 ..velocities(t, file, notes)
             }
@@ -164,6 +170,9 @@ pub fn inspect(
         RawSeries::Positions(track) => of_track(track, file, notes, reading, derive),
     })
 }
+
+/// Said where a velocity file's v_t was read turned.
+pub const SPIN_TURNED: &str = "; v_t runs opposite to v_cm while the ball rolls before the impact (where v_t = v_cm): read turned, v_t → −v_t";
 
 /// A problem that is only the lengths' unit: none stated and the numbers not metres,
 /// or a Logger Pro video never scaled.

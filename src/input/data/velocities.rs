@@ -200,6 +200,7 @@ pub(super) fn read_table(
         Some(at) => at,
         None => detect_impact(&t, &v_cm).ok_or_else(|| err(DataProblem::NoImpact))?,
     };
+    let spin_turned = turn_spin_if_opposite(&t, &v_cm, &mut v_t, impact);
     for x in &mut t {
         *x -= impact;
     }
@@ -215,6 +216,7 @@ pub(super) fn read_table(
         v_cm,
         v_t,
         mirrored,
+        spin_turned,
         ..MeasuredParts::default()
     })
     .map_err(|e| err(e.into()))?;
@@ -230,6 +232,33 @@ pub(super) fn read_table(
         units: units.notes(),
     };
     Ok((m, notes))
+}
+
+/// A v_t signed the other way round from v_cm (a spin counted by the right-hand rule,
+/// not as the contact point's speed): turned, v_t → −v_t, when before the impact
+/// `impact`, while the ball rolls with v_t = v_cm, the median of v_t/v_cm over the
+/// frames moving at over a third of the fastest lies between −1.5 and −0.5; true when
+/// it was (said to the user).
+fn turn_spin_if_opposite(t: &[f64], v_cm: &[f64], v_t: &mut [f64], impact: f64) -> bool {
+    let before = |i: &usize| t[*i] < impact && v_cm[*i].is_finite() && v_t[*i].is_finite();
+    let fastest = (0..t.len())
+        .filter(before)
+        .map(|i| v_cm[i].abs())
+        .fold(0.0, f64::max);
+    let mut ratios: Vec<f64> = (0..t.len())
+        .filter(before)
+        .filter(|&i| v_cm[i].abs() > fastest / 3.0)
+        .map(|i| v_t[i] / v_cm[i])
+        .collect();
+    if ratios.len() < 3 {
+        return false;
+    }
+    ratios.sort_by(f64::total_cmp);
+    let turned = (-1.5..=-0.5).contains(&ratios[ratios.len() / 2]);
+    if turned {
+        v_t.iter_mut().for_each(|v| *v = -*v);
+    }
+    turned
 }
 
 /// A file recorded with x pointing away from the other ball: turned, so that the

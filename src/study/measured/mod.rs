@@ -54,6 +54,11 @@ impl Series {
         self.measured().mirrored()
     }
 
+    /// True when a velocity file's v_t was read turned (it ran opposite to v_cm).
+    pub fn spin_turned(&self) -> bool {
+        self.measured().spin_turned()
+    }
+
     /// What the derivation found in a position track; `None` for velocities.
     pub fn found(&self) -> Option<&Found> {
         match self {

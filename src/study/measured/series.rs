@@ -42,6 +42,8 @@ pub struct Measured {
     #[serde(skip)]
     mirrored: bool,
     #[serde(skip)]
+    spin_turned: bool,
+    #[serde(skip)]
     scale_rel_se: Option<f64>,
     #[serde(skip)]
     x_sigma: Option<Vec<f64>>,
@@ -73,6 +75,10 @@ pub struct MeasuredParts {
     /// True when the file was recorded with x pointing away from the other ball (the
     /// ball approaches toward −x) and was read mirrored, x → −x, to match the model.
     pub mirrored: bool,
+    /// True when a velocity file's v_t ran opposite to its v_cm while the ball rolled
+    /// before the impact (v_t signed the other way round) and was read turned, v_t →
+    /// −v_t.
+    pub spin_turned: bool,
     /// The relative standard error of the lengths' scale (a video's px per metre from
     /// the balls' fitted radius), where the file states one: every length, and so
     /// μ_k and v0, carries it besides the fit's own ±.
@@ -212,6 +218,7 @@ impl Measured {
             angle,
             stencils,
             mirrored,
+            spin_turned,
             scale_rel_se,
             x_sigma,
             angle_sigma,
@@ -226,6 +233,7 @@ impl Measured {
             angle,
             stencils,
             mirrored,
+            spin_turned,
             scale_rel_se,
             x_sigma,
             angle_sigma,
@@ -254,6 +262,7 @@ impl Measured {
             angle: None,
             stencils: None,
             mirrored: false,
+            spin_turned: false,
             scale_rel_se: None,
             x_sigma: None,
             angle_sigma: None,
@@ -272,6 +281,7 @@ impl Measured {
             angle,
             stencils,
             mirrored,
+            spin_turned,
             scale_rel_se,
             x_sigma,
             angle_sigma,
@@ -286,6 +296,7 @@ impl Measured {
             angle,
             stencils,
             mirrored,
+            spin_turned,
             scale_rel_se,
             x_sigma,
             angle_sigma,
@@ -344,6 +355,11 @@ impl Measured {
     pub fn mirrored(&self) -> bool {
         self.mirrored
     }
+
+    /// True when a velocity file's v_t was read turned (v_t → −v_t).
+    pub fn spin_turned(&self) -> bool {
+        self.spin_turned
+    }
     /// The relative standard error of the lengths' scale, where the file states one.
     pub fn scale_rel_se(&self) -> Option<f64> {
         self.scale_rel_se
@@ -393,6 +409,7 @@ impl Measured {
                 })
             }),
             mirrored: self.mirrored,
+            spin_turned: self.spin_turned,
             scale_rel_se: self.scale_rel_se,
             x_sigma: opt(&self.x_sigma),
             angle_sigma: opt(&self.angle_sigma),

@@ -286,3 +286,73 @@ fn the_unit_hint_names_the_unit_that_fits_whatever_the_header_said() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// A velocity file whose v_t is signed the other way round (−v_cm while the ball
+/// rolls before the impact) is read turned, said by `data` and `fit`, and fits as the
+/// file signed as the model signs it; mirrored too (x toward −x) it is both. It gave
+/// "μ_k not determined … check --width", and `data` noticed nothing.
+#[test]
+fn a_v_t_signed_the_other_way_is_read_turned_and_said() {
+    let dir = scratch_dir("fit_verdicts", "v_t_turned");
+    let path = dir.join("v.csv");
+    let f = path.display().to_string();
+    for scene in [
+        symmetric(0.0275, 0.049, 0.17, 0.7, 1.0),
+        symmetric(0.0275, 0.035, 0.2, 0.6, 1.0),
+    ] {
+        let text = velocity_file(&scene, 1.0);
+        let fit = |text: &str| {
+            std::fs::write(&path, text).unwrap();
+            let out = stdout(&[
+                "fit",
+                "--data",
+                &f,
+                "--radius",
+                "2.75cm",
+                "--width",
+                &format!("{}cm", scene.width * 100.0),
+            ]);
+            let data = stdout(&["data", &f]);
+            (out, data)
+        };
+        let (want, plain) = fit(&text);
+        assert!(
+            !want.contains("read turned") && !plain.contains("read turned"),
+            "{want}"
+        );
+        // (t, v_cm, v_t) with v_t negated; and with both negated (mirrored too).
+        let turned = |both: bool| -> String {
+            text.lines()
+                .enumerate()
+                .map(|(i, l)| {
+                    if i == 0 {
+                        return format!("{l}\n");
+                    }
+                    let c: Vec<f64> = l.split(',').map(|c| c.parse().unwrap()).collect();
+                    let v_cm = if both { -c[1] } else { c[1] };
+                    format!("{},{v_cm},{}\n", c[0], -c[2])
+                })
+                .collect()
+        };
+        let (got, data) = fit(&turned(false));
+        assert!(
+            got.contains("v_t runs opposite to v_cm") && data.contains("read turned, v_t → −v_t"),
+            "{got}\n{data}"
+        );
+        let mu = |out: &str| {
+            out.lines()
+                .find(|l| l.starts_with("μ_k = "))
+                .unwrap()
+                .to_string()
+        };
+        assert_eq!(mu(&got), mu(&want));
+        // Mirrored (v_cm < 0) with v_t the model's way round after mirroring: no turn.
+        let (got, data) = fit(&turned(true));
+        assert!(
+            data.contains("read mirrored") && !data.contains("read turned"),
+            "{data}"
+        );
+        assert_eq!(mu(&got), mu(&want));
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
