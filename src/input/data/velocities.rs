@@ -240,21 +240,26 @@ pub(super) fn read_table(
 /// frames moving at over a third of the fastest lies between −1.5 and −0.5; true when
 /// it was (said to the user).
 fn turn_spin_if_opposite(t: &[f64], v_cm: &[f64], v_t: &mut [f64], impact: f64) -> bool {
-    let before = |i: &usize| t[*i] < impact && v_cm[*i].is_finite() && v_t[*i].is_finite();
-    let fastest = (0..t.len())
-        .filter(before)
-        .map(|i| v_cm[i].abs())
-        .fold(0.0, f64::max);
-    let mut ratios: Vec<f64> = (0..t.len())
-        .filter(before)
-        .filter(|&i| v_cm[i].abs() > fastest / 3.0)
-        .map(|i| v_t[i] / v_cm[i])
+    // (v_cm, v_t) of the frames before the impact with both.
+    let before: Vec<(f64, f64)> = t
+        .iter()
+        .zip(v_cm.iter().zip(v_t.iter()))
+        .filter(|(t, (c, s))| **t < impact && c.is_finite() && s.is_finite())
+        .map(|(_, (c, s))| (*c, *s))
+        .collect();
+    let fastest = before.iter().map(|(c, _)| c.abs()).fold(0.0, f64::max);
+    let mut ratios: Vec<f64> = before
+        .iter()
+        .filter(|(c, _)| c.abs() > fastest / 3.0)
+        .map(|(c, s)| s / c)
         .collect();
     if ratios.len() < 3 {
         return false;
     }
     ratios.sort_by(f64::total_cmp);
-    let turned = (-1.5..=-0.5).contains(&ratios[ratios.len() / 2]);
+    let turned = ratios
+        .get(ratios.len() / 2)
+        .is_some_and(|r| (-1.5..=-0.5).contains(r));
     if turned {
         v_t.iter_mut().for_each(|v| *v = -*v);
     }
