@@ -161,6 +161,11 @@ pub(crate) fn clean(cell: &str) -> String {
         Some((_, name)) => name.trim().to_string(),
         None => c,
     };
+    // `Zeit in s`, `Weg in cm`: the unit after "in", as German sheets write it.
+    let name = match name.rsplit_once(" in ") {
+        Some((quantity, unit)) if is_unit(unit) => format!("{} ({})", quantity.trim(), unit.trim()),
+        _ => name,
+    };
     english(name)
 }
 
@@ -398,6 +403,12 @@ mod tests {
         assert_eq!(clean("Position X2 (m)"), "x2 (m)");
         assert_eq!(clean("Position (m)"), "x (m)");
         assert_eq!(clean("Position xyz"), "x xyz");
+        // A unit after "in", as German sheets write it; "in" alone is no unit.
+        assert_eq!(clean("Zeit in s"), "time (s)");
+        assert_eq!(clean("v_cm in m/s"), "v_cm (m/s)");
+        assert_eq!(clean("Weg in cm"), "x (cm)");
+        assert_eq!(clean("x in"), "x in");
+        assert_eq!(clean("Ort in Metern"), "x in metern");
     }
 
     #[test]
