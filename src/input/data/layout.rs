@@ -191,7 +191,17 @@ pub(super) fn find_header(
             return Err(e);
         }
         if before.len() == 3 {
-            return Err(LayoutError::NoHeaderNearTop { line: row.line });
+            let first = before.first().unwrap_or(&row);
+            return Err(LayoutError::NoHeaderNearTop {
+                line: row.line,
+                first: (
+                    first.line,
+                    (0..first.len())
+                        .map(|i| first.cell(i))
+                        .collect::<Vec<_>>()
+                        .join(" "),
+                ),
+            });
         }
         before.push(row);
     }
@@ -206,10 +216,15 @@ pub enum LayoutError {
         "no header with a time column t found, expected columns t and x (and y), or t, v_cm and v_t"
     )]
     NoHeader,
+    /// No header in the lines up to `line`, the first of them `first` (its line and
+    /// its cells).
     #[error(
-        "line {line}: no header with a time column t in the first lines, expected columns t and x (and y) for a position track, or t, v_cm and v_t for velocities"
+        "no header with a time column t in lines {} to {line} (line {}: '{}'), expected columns t and x (and y) for a position track, or t, v_cm and v_t for velocities",
+        first.0,
+        first.0,
+        crate::settings::quote::clip(&first.1)
     )]
-    NoHeaderNearTop { line: usize },
+    NoHeaderNearTop { line: usize, first: (usize, String) },
     /// The header at `line` (its cells) has no x column.
     #[error(
         "line {line}: no position column x in '{}', expected t and x (and y) for a position track, or t, v_cm and v_t for velocities",
@@ -302,8 +317,9 @@ pub(super) fn name_tracks(
         // column included.
         name_below(cols, names, true);
         Ok("tracks side by side")
-    } else if let Some(title) = before.last() {
-        // Tracker's single-track export: the track's name above the header.
+    } else if let [title] = before {
+        // Tracker's single-track export: the track's name alone above the header
+        // (lines of notes above it are no track's name).
         let name = title.cell(0).to_string();
         for c in cols.iter_mut().flatten() {
             if c.axis != Axis::T && c.track.is_empty() {

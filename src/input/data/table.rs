@@ -94,11 +94,16 @@ impl Table {
     pub fn new(text: &str) -> Table {
         // Spreadsheets often start a UTF-8 file with a byte-order mark.
         let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+        // Excel's `sep=;` first line names the separator (which the line itself
+        // shows) and is no row.
         let kept = || {
-            text.lines().enumerate().filter(|(_, l)| {
+            text.lines().enumerate().filter(|(n, l)| {
                 let l = l.trim_start();
+                let sep_line =
+                    *n == 0 && l.to_lowercase().starts_with("sep=") && l.trim().len() <= 5;
                 !l.trim().is_empty()
                     && (!l.starts_with('#') || l.to_lowercase().starts_with("#multi"))
+                    && !sep_line
             })
         };
         let sep = Sep::of(kept().map(|(_, l)| l));

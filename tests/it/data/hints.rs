@@ -663,3 +663,56 @@ fn a_second_run_taken_for_the_mark_is_left_out_as_no_mark() {
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+/// Lines of notes above the header (experiment, date, group) and Excel's `sep=;`
+/// line are no track's name: the file reads as plain CSV with its centre unnamed, as
+/// without them. They made it "Tracker single-track" with the centre named 'Gruppe
+/// 3' or 'sep='. A file with no header near its top names its first line.
+#[test]
+fn notes_and_excels_sep_line_above_the_header_name_no_track() {
+    let dir = crate::common::scratch_dir("data_hints", "notes-above");
+    let file = dir.join("t.csv");
+    let f = file.to_str().unwrap();
+    let body = two_speeds(0.6, -0.2).replace(',', ";");
+    let read = |above: &str| {
+        std::fs::write(&file, format!("{above}{body}")).unwrap();
+        run(&["data", f])
+    };
+    let plain = read("");
+    assert!(
+        plain.stdout.contains(": CSV, position track"),
+        "{}",
+        plain.stdout
+    );
+    for above in [
+        "Experiment: Kugeln in Rinne\nDatum: 12.03.2024\nGruppe 3\n\n",
+        "sep=;\n",
+        "Run 4\nGruppe 3\n",
+    ] {
+        let got = read(above);
+        let without_name = |s: &str| s.lines().skip(1).collect::<Vec<_>>().join("\n");
+        assert_eq!(
+            without_name(&got.stdout),
+            without_name(&plain.stdout),
+            "{above:?}: {}",
+            got.stdout
+        );
+        assert!(got.stdout.contains(": CSV, position track"), "{above:?}");
+    }
+    // One title line is Tracker's single-track export, as before.
+    let titled = read("mass_A\n");
+    assert!(
+        titled.stdout.contains("Tracker single-track") && titled.stdout.contains("centre 'mass_A'")
+    );
+    std::fs::write(&file, "Versuch 1\nDatum\nGruppe\nt1;x1\n0;1\n").unwrap();
+    let none = run(&["data", f]);
+    assert!(
+        none.code == 2
+            && none
+                .stderr
+                .contains("no header with a time column t in lines 1 to 4 (line 1: 'Versuch 1')"),
+        "{}",
+        none.stderr
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
