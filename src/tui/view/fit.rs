@@ -105,23 +105,18 @@ fn sources_lines(app: &App, theme: &Theme) -> Ranked<'static> {
     let g = theme.glyphs;
     let settings = app.lab.settings();
     let scene = &app.lab.scene;
+    let value = |v: f64, dim: Dimension| crate::settings::units::show(v, dim).to_string();
     let rows = [
         (Key::Radius, "R".to_string()),
         (Key::Width, "b".to_string()),
         (
             Key::MassLeft,
-            format!(
-                "m {}",
-                crate::settings::units::show(scene.left.mass, Dimension::Mass)
-            ),
+            format!("m {}", value(scene.left.mass, Dimension::Mass)),
         ),
         (Key::Mu, format!("{}_k (start)", g.mu)),
         (
             Key::V0Left,
-            format!(
-                "v0 {}",
-                crate::settings::units::show(scene.left.v0, Dimension::Speed)
-            ),
+            format!("v0 {}", value(scene.left.v0, Dimension::Speed)),
         ),
         (Key::Restitution, "e".to_string()),
         (Key::RollingResistance, "c_rr".to_string()),
@@ -133,6 +128,8 @@ fn sources_lines(app: &App, theme: &Theme) -> Ranked<'static> {
             .filter(|(k, _)| settings.origin(*k) == origin)
             .map(|(_, n)| n.as_str())
             .collect();
+        // Each value whole on one line: its name, number and unit held together.
+        let names: Vec<String> = names.iter().map(|n| super::panel::unbroken(n)).collect();
         if names.is_empty() {
             continue;
         }
