@@ -100,9 +100,13 @@ fn column(cell: &str) -> Result<Option<Col>, UnreadUnit> {
         .filter(|&(i, _)| i != at)
         .map(|(_, t)| *t)
         .collect();
-    // A quantity's letter leads the name (`v_x`, `a_y`); after the axis, or after a
-    // word (`x_A`, `mass A x`), a letter is a track's name (Tracker's mass A, B).
-    let letter_of_track = |i: usize, t: &str| t.chars().count() == 1 && i > 0 && !"θω".contains(t);
+    // A quantity's letter comes before the axis (`v_x`, `ball v x`); after it
+    // (`x_A`), or after Tracker's "mass" (`mass A x`), a letter is a track's name.
+    let letter_of_track = |i: usize, t: &str| {
+        t.chars().count() == 1
+            && !"θω".contains(t)
+            && (i > at || (i > 0 && tokens.get(i - 1) == Some(&"mass")))
+    };
     let quantity = tokens
         .iter()
         .enumerate()
@@ -280,6 +284,16 @@ pub enum LayoutError {
         "line {line}: a multi-track file must be tab, comma or semicolon separated (Tracker writes tabs)"
     )]
     SpaceSeparated { line: usize },
+}
+
+impl LayoutError {
+    /// No header with a time column at `line` (a header that lost it).
+    pub(super) fn no_header_at(line: usize) -> LayoutError {
+        LayoutError::NoHeaderNearTop {
+            line,
+            first: (line, String::new()),
+        }
+    }
 }
 
 /// What a header's unit measures, as an error names it.

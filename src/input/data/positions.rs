@@ -61,13 +61,7 @@ pub(super) fn read_table(
     let first_t = cols
         .iter()
         .position(|c| c.as_ref().is_some_and(|c| c.axis == Axis::T))
-        .ok_or_else(|| {
-            err(LayoutError::NoHeaderNearTop {
-                line: header.line,
-                first: (header.line, String::new()),
-            }
-            .into())
-        })?;
+        .ok_or_else(|| err(LayoutError::no_header_at(header.line).into()))?;
     let it = index(&centre, Axis::T).unwrap_or(first_t);
     let mark_t = mark
         .as_ref()

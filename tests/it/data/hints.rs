@@ -534,8 +534,14 @@ fn a_letter_after_the_axis_names_a_track() {
         );
         assert_eq!(fit, want, "{head}");
     }
-    // A quantity's letter first: velocities and accelerations, not positions.
+    // A quantity's letter before the axis: velocities and accelerations, not
+    // positions, after a track's name too.
     let (data, _) = fit_of("t,x,y,v_x,a_y", ',');
+    assert!(
+        data.contains("centre x, y (unnamed), no rim mark"),
+        "{data}"
+    );
+    let (data, _) = fit_of("t,x,y,ball v x,ball a y", ',');
     assert!(
         data.contains("centre x, y (unnamed), no rim mark"),
         "{data}"
