@@ -248,10 +248,22 @@ pub fn file_unit(unit: &str, dim: Dimension) -> Result<f64, units::UnitError> {
         return Ok(1e-6);
     }
     let lower = u.to_lowercase();
-    let name = UNIT_SPELLINGS
-        .iter()
-        .find(|(from, _)| *from == lower)
-        .map_or(u, |(_, to)| to);
+    // A speed written with a negative power (`m s^-1`, `m·s⁻¹`, `cm s-1`) as a quotient.
+    let quotient = (dim == Dimension::Speed)
+        .then(|| {
+            let compact = lower.replace(['·', ' ', '*'], "").replace("⁻¹", "^-1");
+            ["s^-1", "s-1"]
+                .iter()
+                .find_map(|p| compact.strip_suffix(p).map(|l| format!("{l}/s")))
+        })
+        .flatten();
+    let name = match &quotient {
+        Some(q) => q.as_str(),
+        None => UNIT_SPELLINGS
+            .iter()
+            .find(|(from, _)| *from == lower)
+            .map_or(u, |(_, to)| to),
+    };
     units::unit_factor(name, dim).map_err(|e| match e {
         units::UnitError::UnknownUnit { .. } => units::UnitError::UnknownUnit {
             text: u.to_string(),
@@ -427,6 +439,20 @@ mod tests {
         assert_eq!(unit_factor("(seconds)", Dimension::Time), Some(Some(1.0)));
         assert_eq!(unit_factor("(Meters)", Dimension::Length), Some(Some(1.0)));
         assert_eq!(unit_factor("(us)", Dimension::Length), None);
+        // A speed with a negative power of s, spaced or not, is its quotient.
+        for (unit, factor) in [
+            ("m s^-1", 1.0),
+            ("ms^-1", 1.0),
+            ("m·s⁻¹", 1.0),
+            ("cm s-1", 0.01),
+        ] {
+            assert_eq!(
+                file_unit(unit, Dimension::Speed).ok(),
+                Some(factor),
+                "{unit}"
+            );
+        }
+        assert!(file_unit("m s^-1", Dimension::Length).is_err());
         let e = file_unit("fortnights", Dimension::Time)
             .unwrap_err()
             .to_string();
