@@ -486,7 +486,7 @@ impl std::fmt::Display for OffScale {
 /// the lengths' unit named as the likelier mistake (mm read as cm, cm or mm as m).
 fn mark_unit_hint(mark: f64, radius: f64) -> String {
     let ratio = mark / radius;
-    [(10.0, "mm", "cm"), (100.0, "cm", "m"), (1000.0, "mm", "m")]
+    crate::settings::units::MIX_UPS
         .into_iter()
         .find(|(p, _, _)| (0.8..1.25).contains(&(ratio / p)))
         .map(|(p, meant, read)| {

@@ -34,9 +34,10 @@ pub struct OwnData {
 }
 
 impl OwnData {
-    /// Said wherever the data are named when the file was read mirrored (its ball
-    /// approaches the other toward −x): "x runs toward −x in FILE: read mirrored".
-    pub fn mirrored_note(&self) -> Option<String> {
+    /// Said wherever the data are named when the file was read turned: mirrored (its
+    /// ball approaches the other toward −x: "x runs toward −x in FILE: read
+    /// mirrored"), its v_t signed the other way round ("… read turned"), one line each.
+    pub fn reading_notes(&self) -> Option<String> {
         let mirrored = self.series.mirrored().then(|| {
             format!(
                 "x runs toward −x in {}: read mirrored (x → −x, the ball approaching toward +x as in the model)",

@@ -66,7 +66,7 @@ pub fn run(
         FitFormat::Table => {
             // The scene and where it came from, then the short summary, the detail after.
             let mut out = sources.scene_line(&lab);
-            if let Some(note) = lab.own_data().and_then(|o| o.mirrored_note()) {
+            if let Some(note) = lab.own_data().and_then(|o| o.reading_notes()) {
                 out += &note;
                 out.push('\n');
             }

@@ -98,16 +98,10 @@ pub(super) fn summary(f: &Fits) -> String {
 fn unit_hint(mu: f64, fitted_to: &str) -> String {
     let large = mu > MAX_PLAUSIBLE_MU;
     let off = |p: f64| (if large { mu / p } else { mu * p } / 0.17).ln().abs();
-    let power = [10.0, 100.0, 1000.0]
+    let (power, meant, read) = crate::settings::units::MIX_UPS
         .into_iter()
-        .min_by(|a, b| off(*a).total_cmp(&off(*b)))
-        .unwrap_or(100.0);
-    // (the unit meant, the unit read) for a factor `power` too large.
-    let (meant, read) = match power as u32 {
-        10 => ("mm", "cm"),
-        1000 => ("mm", "m"),
-        _ => ("cm", "m"),
-    };
+        .min_by(|a, b| off(a.0).total_cmp(&off(b.0)))
+        .unwrap_or((100.0, "cm", "m"));
     let (meant, read) = if large { (meant, read) } else { (read, meant) };
     let (what, per, flag) = match fitted_to {
         "positions" => ("lengths", "", "--length-unit"),

@@ -490,15 +490,11 @@ fn a_velocity_files_impact_is_said_in_the_files_own_time() {
 /// quantity, not a position.
 #[test]
 fn a_letter_after_the_axis_names_a_track() {
-    use groovelab::study::measured::Track;
     use groovelab::study::video::{self, TrackFormat, Video};
     let dir = crate::common::scratch_dir("data_hints", "track-letters");
     let scene = crate::common::symmetric(0.0275, 0.049, 0.17, 0.7, 1.0);
     let track = video::track(&scene, &Video::default()).unwrap();
-    let text = video::write(
-        &Track::new(track.into_parts()).unwrap(),
-        TrackFormat::TrackerMulti,
-    );
+    let text = video::write(&track, TrackFormat::TrackerMulti);
     // The rows of the multi-track export (t, x, y of A, x, y of B), under our headers.
     let rows: Vec<&str> = text.lines().skip(3).collect();
     let fit_of = |head: &str, sep: char| {
@@ -555,15 +551,11 @@ fn a_letter_after_the_axis_names_a_track() {
 /// cm' 24 m from the centre; `#N/A` refused the file.
 #[test]
 fn a_unit_after_a_tracks_name_and_not_available_cells_read_as_the_plain_file() {
-    use groovelab::study::measured::Track;
     use groovelab::study::video::{self, TrackFormat, Video};
     let dir = crate::common::scratch_dir("data_hints", "unit-after-name");
     let scene = crate::common::symmetric(0.0275, 0.049, 0.17, 0.7, 1.0);
     let track = video::track(&scene, &Video::default()).unwrap();
-    let text = video::write(
-        &Track::new(track.into_parts()).unwrap(),
-        TrackFormat::TrackerMulti,
-    );
+    let text = video::write(&track, TrackFormat::TrackerMulti);
     let rows: Vec<Vec<f64>> = text
         .lines()
         .skip(3)
@@ -622,15 +614,8 @@ fn a_second_run_taken_for_the_mark_is_left_out_as_no_mark() {
             seed,
             ..Video::default()
         };
-        let parts = video::track(&scene, &video).unwrap().into_parts();
-        std::fs::write(
-            &file,
-            video::write(
-                &Track::new(parts.clone()).unwrap(),
-                TrackFormat::TrackerMulti,
-            ),
-        )
-        .unwrap();
+        let track = video::track(&scene, &video).unwrap();
+        std::fs::write(&file, video::write(&track, TrackFormat::TrackerMulti)).unwrap();
         let kept = run(&["data", f]);
         assert!(
             !kept.stdout.contains("left out"),
@@ -638,7 +623,7 @@ fn a_second_run_taken_for_the_mark_is_left_out_as_no_mark() {
             kept.stdout
         );
         // The mark's columns hold the ball's own centre 4 frames later: a second run.
-        let mut run2 = parts;
+        let mut run2 = track.into_parts();
         let (xs, ys) = (run2.x.clone(), run2.y.clone());
         let (mx, my) = run2.mark.as_mut().unwrap();
         for k in 0..xs.len() {

@@ -178,7 +178,6 @@ fn the_width_from_the_lines_and_its_pm_share_their_places() {
 /// 120 frames/s, 0.1 mm noise.
 #[test]
 fn a_tracks_rim_mark_gives_the_grooves_width_whatever_width_was_given() {
-    use groovelab::study::measured::Track;
     use groovelab::study::video::{self, TrackFormat, Video};
     let dir = scratch_dir("fit_verdicts", "mark_width");
     let path = dir.join("track.txt");
@@ -195,14 +194,7 @@ fn a_tracks_rim_mark_gives_the_grooves_width_whatever_width_was_given() {
             ..Video::default()
         };
         let track = video::track(&scene, &video).unwrap();
-        std::fs::write(
-            &path,
-            video::write(
-                &Track::new(track.into_parts()).unwrap(),
-                TrackFormat::TrackerMulti,
-            ),
-        )
-        .unwrap();
+        std::fs::write(&path, video::write(&track, TrackFormat::TrackerMulti)).unwrap();
         let j = json(&[
             "fit", "--data", &f, "--radius", "2.75cm", "--width", given, "--mu", "0.17",
             "--format", "json",
@@ -230,7 +222,6 @@ fn a_tracks_rim_mark_gives_the_grooves_width_whatever_width_was_given() {
 /// lies 10× (1000×) R from the centre, and that refusal names the unit too.
 #[test]
 fn the_unit_hint_names_the_unit_that_fits_whatever_the_header_said() {
-    use groovelab::study::measured::Track;
     use groovelab::study::video::{self, TrackFormat, Video};
     let dir = scratch_dir("fit_verdicts", "unit_hint");
     let path = dir.join("track.csv");
@@ -243,10 +234,7 @@ fn the_unit_hint_names_the_unit_that_fits_whatever_the_header_said() {
         };
         let track = video::track(&scene, &video).unwrap();
         // `t (s)`, `x (mm)`: the numbers in mm.
-        let text = video::write(
-            &Track::new(track.into_parts()).unwrap(),
-            TrackFormat::CsvComma,
-        );
+        let text = video::write(&track, TrackFormat::CsvComma);
         assert!(text.contains("(mm)"), "{}", &text[..100]);
         for (header, p, read) in [("(cm)", 10, "cm"), ("(m)", 1000, "m")] {
             std::fs::write(&path, text.replace("(mm)", header)).unwrap();

@@ -511,21 +511,21 @@ fn q_with_unsaved_changes_asks_once_and_ctrl_c_quits_at_once() {
     assert!(a.quitting(), "undone: {}", screen_of(&a));
     // Saved as a preset, or written with its run: one q, until the next change.
     let dir = crate::common::scratch_dir("tui", "quit-saved");
-    for keys in ["s enter", "w enter"] {
+    // μ_k changed, then `keys` pressed (and what they write written).
+    let saved = |keys: &str| {
         let mut a = app("paper-b4.9");
         a.set_library(Library::at(Some(dir.clone())));
         a.set_export_dir(dir.clone());
         a.set_value(Key::Mu, 0.2);
         press(&mut a, keys);
         a.wait();
+        a
+    };
+    for keys in ["s enter", "w enter"] {
+        let mut a = saved(keys);
         press(&mut a, "q");
         assert!(a.quitting(), "{keys}: {}", screen_of(&a));
-        let mut a = app("paper-b4.9");
-        a.set_library(Library::at(Some(dir.clone())));
-        a.set_export_dir(dir.clone());
-        a.set_value(Key::Mu, 0.2);
-        press(&mut a, keys);
-        a.wait();
+        let mut a = saved(keys);
         a.set_value(Key::Mu, 0.25);
         press(&mut a, "q");
         assert!(!a.quitting(), "{keys}, then a change");
