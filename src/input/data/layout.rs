@@ -44,11 +44,35 @@ const OTHER_QUANTITIES: [&str; 10] = [
     "momentum",
 ];
 
-/// Reads a header cell such as `t`, `t/ms`, `x (cm)`, `mass A x`, `x_mark [mm]`,
+/// Reads a header cell such as `t`, `t/ms`, `x (cm)`, `mass A x`, `xA`, `x_mark [mm]`,
 /// `y_cm` (unit as suffix), `Latest: X2 (m)` (a second point). `None` for other
 /// columns (`v_x`, `v_{x}`, `frame`, …) and for a unit that does not fit the axis.
 pub(super) fn position_column(cell: &str) -> Option<Col> {
     column(cell).ok().flatten()
+}
+
+/// The axis a header's token names, and the track it names with it: `x2`, `y2`
+/// (Logger Pro's second point), `xA`, `yB` (a sheet's ball A and B); `None` for a
+/// token that names no axis.
+fn axis_of(t: &str) -> Option<(Axis, Option<String>)> {
+    if let [axis @ ('x' | 'y'), ball] = t.chars().collect::<Vec<char>>()[..]
+        && ball.is_ascii_alphabetic()
+    {
+        let axis = if axis == 'x' { Axis::X } else { Axis::Y };
+        return Some((axis, Some(ball.to_string())));
+    }
+    let (letter, digits) = t.split_at(t.find(|c: char| c.is_ascii_digit()).unwrap_or(t.len()));
+    let point = (!digits.is_empty() && digits.chars().all(|c| c.is_ascii_digit()))
+        .then(|| format!("point {digits}"));
+    if !digits.is_empty() && point.is_none() {
+        return None;
+    }
+    match (letter, &point) {
+        ("t" | "time", None) => Some((Axis::T, None)),
+        ("x", _) => Some((Axis::X, point)),
+        ("y", _) => Some((Axis::Y, point)),
+        _ => None,
+    }
 }
 
 /// [`position_column`], or the unit where a t, x or y column's unit does not fit its
@@ -64,21 +88,6 @@ fn column(cell: &str) -> Result<Option<Col>, UnreadUnit> {
         .split([' ', '_', '.', '-'])
         .filter(|t| !t.is_empty())
         .collect();
-    // `x2`, `y2`: Logger Pro's second point.
-    let axis_of = |t: &str| -> Option<(Axis, Option<String>)> {
-        let (letter, digits) = t.split_at(t.find(|c: char| c.is_ascii_digit()).unwrap_or(t.len()));
-        let point = (!digits.is_empty() && digits.chars().all(|c| c.is_ascii_digit()))
-            .then(|| format!("point {digits}"));
-        if !digits.is_empty() && point.is_none() {
-            return None;
-        }
-        match (letter, &point) {
-            ("t" | "time", None) => Some((Axis::T, None)),
-            ("x", _) => Some((Axis::X, point)),
-            ("y", _) => Some((Axis::Y, point)),
-            _ => None,
-        }
-    };
     let mut axes = tokens
         .iter()
         .enumerate()

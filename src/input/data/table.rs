@@ -197,7 +197,8 @@ const ALIASES: [(&str, &str); 14] = [
 ];
 
 /// `name` with a leading word of [`ALIASES`] (alone, or before its unit) in English;
-/// a position word before the axis it names (`Position x (m)`, `Ort y`) is dropped.
+/// a position word before the axis it names (`Position x (m)`, `Ort y`) is dropped,
+/// as is the quantity's symbol after its word (`Zeit t`, `Weg s`).
 fn english(name: String) -> String {
     for (from, to) in ALIASES {
         if let Some(rest) = name.strip_prefix(from)
@@ -213,6 +214,21 @@ fn english(name: String) -> String {
                     .is_none_or(|c| " ([/_".contains(c));
             if names_axis {
                 return axis.to_string();
+            }
+            // The quantity's own symbol after its word (`Zeit t in s`, `Weg s in cm`,
+            // as German sheets write them) says it again.
+            let symbol = match to {
+                "time" => "t",
+                "x" => "s",
+                _ => "v",
+            };
+            if let Some(after) = axis.strip_prefix(symbol)
+                && after.chars().next().is_none_or(|c| " ([/".contains(c))
+                && rest.starts_with(' ')
+            {
+                return format!("{to} {}", after.trim_start())
+                    .trim_end()
+                    .to_string();
             }
             return format!("{to}{rest}");
         }
@@ -426,6 +442,13 @@ mod tests {
         assert_eq!(clean("Weg in cm"), "x (cm)");
         assert_eq!(clean("x in"), "x in");
         assert_eq!(clean("Ort in Metern"), "x in metern");
+        // The quantity's symbol after its word is the same column, once.
+        assert_eq!(clean("Zeit t in s"), "time (s)");
+        assert_eq!(clean("Weg s in cm"), "x (cm)");
+        assert_eq!(clean("Zeit t"), "time");
+        assert_eq!(clean("Geschwindigkeit v in m/s"), "v (m/s)");
+        // Not a word that only begins with the symbol.
+        assert_eq!(clean("Weg stop"), "x stop");
     }
 
     #[test]

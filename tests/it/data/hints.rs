@@ -521,6 +521,7 @@ fn a_letter_after_the_axis_names_a_track() {
         ("t (s),x_A (m),y_A (m),x_B (m),y_B (m)", ','),
         ("t;x_A;y_A;x_B;y_B", ';'),
         ("t\tmass A x\tmass A y\tmass B x\tmass B y", '\t'),
+        ("t (s),xA (m),yA (m),xB (m),yB (m)", ','),
     ] {
         let (data, fit) = fit_of(head, sep);
         assert!(
