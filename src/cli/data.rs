@@ -69,6 +69,7 @@ pub fn run(args: &DataCmdArgs, scene: &SceneArgs, data: &DataArgs) -> Result<Str
                 frames: f.mark_missing,
                 of: f.frames,
                 runs: f.mark_gaps.clone(),
+                every: f.mark_every,
             });
         // The scene the file says it was taken in (`# scene` lines): `fit` and the app
         // take it under the options, so the report says it too.
@@ -202,6 +203,29 @@ pub struct MarkMissing {
     pub of: usize,
     /// Their runs, `[first, last]` file times, s.
     pub runs: Vec<[f64; 2]>,
+    /// k where the mark was followed in every k-th frame only, with v_t in those.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub every: Option<usize>,
+}
+
+/// The line that says the frames without the rim mark: missing, or followed in
+/// every k-th frame only (v_t in those); empty without any.
+fn mark_missing_line(missing: Option<&MarkMissing>) -> String {
+    match missing {
+        Some(m @ MarkMissing { every: Some(k), .. }) => format!(
+            "  rim mark followed in every {} frame only ({} of {} frames): v_t in those\n",
+            crate::study::measured::ordinal(*k),
+            m.of - m.frames,
+            m.of,
+        ),
+        Some(m) => format!(
+            "  rim mark missing in {} of {} frames ({} of the file): no v_t there\n",
+            m.frames,
+            m.of,
+            crate::study::measured::runs_text(&m.runs)
+        ),
+        None => String::new(),
+    }
 }
 
 /// Why `report`'s rim mark cannot be one: its median distance from the centre is more
@@ -313,15 +337,7 @@ pub fn describe(shown: &DataReport) -> String {
         let _ = writeln!(s, "  {} in {}: {}", u.quantity, u.unit, u.how);
     }
     s += &missing_line(&r.missing);
-    if let Some(m) = &shown.mark_missing {
-        let _ = writeln!(
-            s,
-            "  rim mark missing in {} of {} frames ({} of the file): no v_t there",
-            m.frames,
-            m.of,
-            crate::study::measured::runs_text(&m.runs)
-        );
-    }
+    s += &mark_missing_line(shown.mark_missing.as_ref());
     s += &motion_lines(r);
     if let Some(doubt) = &r.length_unit_doubt {
         let _ = writeln!(

@@ -23,7 +23,7 @@ pub use series::{
     Measured, MeasuredParts, NoCommonFrame, NoLineVt, OutOfLabRange, RawSeries, Rule, Track,
     TrackParts,
 };
-pub use track::{Derive, Found, TrackError, in_file_time, more_runs, runs_text};
+pub use track::{Derive, Found, TrackError, in_file_time, more_runs, ordinal, runs_text};
 
 use crate::physics::scene::Scene;
 

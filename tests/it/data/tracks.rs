@@ -245,6 +245,112 @@ fn gaps_in_the_track_are_bridged() {
     assert!(m.v_t().iter().any(|v| v.is_nan()) && m.has_v_t());
 }
 
+/// A rim mark clicked in every second (or third) frame only, as a student saves time
+/// in Tracker: its angle is unwrapped in its own steps, so v_t is measured in those
+/// frames (each run of one frame was cut from the next: no v_t at all), agrees with
+/// the v_t of the mark followed in every frame, and the velocity fit finds μ_k.
+#[test]
+fn a_mark_followed_every_second_or_third_frame_gives_v_t() {
+    let s = preset_scene("paper-b4.9");
+    for (fps, k, offset) in [(120.0, 2, 0), (120.0, 2, 1), (240.0, 3, 1), (240.0, 3, 2)] {
+        let video = Video {
+            fps,
+            ..Video::default()
+        };
+        let whole = video::track(&s, &video).unwrap();
+        let every = try_load(&s, &video::write(&whole, TrackFormat::TrackerMulti)).unwrap();
+        let mut t = whole.clone().into_parts();
+        let (mut mx, mut my) = t.mark.take().unwrap();
+        for i in (0..mx.len()).filter(|i| i % k != offset) {
+            mx[i] = f64::NAN;
+            my[i] = f64::NAN;
+        }
+        t.mark = Some((mx, my));
+        let text = video::write(&Track::new(t).unwrap(), TrackFormat::TrackerMulti);
+        let (l, f) = fits_of(&s, &text);
+        assert!(
+            (f.velocity.mu - MU).abs() <= 0.006,
+            "k {k}: μ {}",
+            f.velocity.mu
+        );
+        let (m, all) = (&l.measured, &every.measured);
+        assert_eq!(m.t(), all.t(), "the centre's frames are all kept");
+        let measured: Vec<usize> = (0..m.t().len())
+            .filter(|&i| m.v_t()[i].is_finite())
+            .collect();
+        // About one frame in k (the frames beside the impact have none either way).
+        let n = m.t().len();
+        assert!(
+            measured.len() * k >= n - 2 * k && measured.len() * k <= n + k,
+            "k {k}: {} of {n}",
+            measured.len()
+        );
+        for &i in &measured {
+            // Within a few of the every-frame v_t's ± (the same mark, half or a
+            // third of its frames, over a window as many times wider).
+            let (a, b) = (m.v_t()[i], all.v_t()[i]);
+            let se = all.v_t_sigma().unwrap()[i];
+            assert!(
+                (a - b).abs() <= 6.0 * se + 0.01 * b.abs(),
+                "k {k}, t {}: {a} vs {b} ± {se}",
+                m.t()[i]
+            );
+        }
+        let found = l.found.unwrap();
+        let ordinal = if k == 2 { "2nd" } else { "3rd" };
+        let said = format!("rim mark followed in every {ordinal} frame only");
+        assert!(found.describe().contains(&said), "{}", found.describe());
+        assert_eq!(found.mark_every, Some(k));
+        // `data` says it too, and the frames the mark is in.
+        let file = crate::common::scratch_dir("data_tracks", "mark-every").join("t.txt");
+        std::fs::write(&file, &text).unwrap();
+        let out = groovelab(&["data", file.to_str().unwrap()]);
+        let stdout = String::from_utf8_lossy(&out.stdout);
+        assert!(
+            stdout.contains(&format!(
+                "{said} ({} of {} frames): v_t in those",
+                found.frames - found.mark_missing,
+                found.frames
+            )),
+            "{stdout}"
+        );
+    }
+}
+
+/// A mark followed every second frame at 30 frames/s, or every fifth at 120, turns
+/// by more than half a turn from one of its frames to the next (3.8 and 2.4 rad
+/// rolling, more sliding): its turn between them is not known, so it gives no v_t,
+/// never one of the wrong branch (a slow turn backwards).
+#[test]
+fn a_mark_too_sparse_to_unwrap_gives_no_v_t() {
+    let s = preset_scene("paper-b4.9");
+    for (fps, k) in [(30.0, 2), (120.0, 5), (60.0, 4)] {
+        let video = Video {
+            fps,
+            ..Video::default()
+        };
+        let mut t = video::track(&s, &video).unwrap().into_parts();
+        let (mut mx, mut my) = t.mark.take().unwrap();
+        for i in (0..mx.len()).filter(|i| i % k != 0) {
+            mx[i] = f64::NAN;
+            my[i] = f64::NAN;
+        }
+        t.mark = Some((mx, my));
+        let text = video::write(&Track::new(t).unwrap(), TrackFormat::TrackerMulti);
+        let l = try_load(&s, &text).unwrap();
+        let measured = l.measured.v_t().iter().filter(|v| v.is_finite()).count();
+        assert_eq!(measured, 0, "{fps} frames/s, every {k}th frame");
+        // Nor is it said to give one.
+        let found = l.found.unwrap();
+        assert_eq!(found.mark_every, None);
+        assert!(
+            !found.describe().contains("v_t in those"),
+            "{}",
+            found.describe()
+        );
+    }
+}
+
 /// Issue 19: frames without the rim mark (or the centre) are counted and their times
 /// said, never filled in silently: the mark hidden for 9 frames (the hand over the
 /// ball) and the centre missing in 2 rows.

@@ -26,6 +26,10 @@ pub struct Found {
     /// there, nothing filled in.
     #[serde(skip_serializing_if = "is_zero")]
     pub mark_missing: usize,
+    /// k where the mark was followed in every k-th frame only and its angle is
+    /// unwrapped in those steps (it turns slowly enough in them): v_t in those frames.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mark_every: Option<usize>,
     /// Those frames' times in the file, s, as runs `[first, last]`.
     #[serde(skip_serializing_if = "Vec::is_empty")]
     pub mark_gaps: Vec<[f64; 2]>,
@@ -213,7 +217,14 @@ impl Found {
                 runs_text(&self.skipped.skipped_gaps)
             );
         }
-        if self.mark_missing > 0 {
+        if let Some(k) = self.mark_every {
+            s += &format!(
+                "rim mark followed in every {} frame only ({} of {} frames): v_t in those, nothing filled in\n",
+                ordinal(k),
+                self.frames - self.mark_missing,
+                self.frames,
+            );
+        } else if self.mark_missing > 0 {
             s += &format!(
                 "rim mark missing in {} of {} frames ({} of the file): no v_t there, nothing filled in (the local fits beside a gap reach across it)\n",
                 self.mark_missing,
@@ -323,6 +334,40 @@ pub(super) fn runs(times: &[f64], missing: &[bool]) -> Vec<[f64; 2]> {
         out.push([a, b]);
     }
     out
+}
+
+/// k where a rim mark missing in the runs `gaps` (times in the file, s, frames `dt`
+/// apart) was followed in every k-th frame only (clicked every other frame in
+/// Tracker): every gap is k − 1 frames long (but the first and last, which the
+/// file's ends may cut) and the gaps lie k frames apart, over at least four gaps;
+/// `None` otherwise.
+pub(super) fn steady_every(gaps: &[[f64; 2]], dt: f64) -> Option<usize> {
+    let frames = |a: f64, b: f64| ((b - a) / dt).round();
+    let inner = gaps.get(1..gaps.len().saturating_sub(1))?;
+    let length = inner.first().map(|&[a, b]| frames(a, b) + 1.0)?;
+    // Ends but the last's, starts but the first's: the file's ends may cut those.
+    let ends: Vec<f64> = gaps.iter().rev().skip(1).map(|&[_, b]| b).collect();
+    let starts: Vec<f64> = gaps.iter().skip(1).map(|&[a, _]| a).collect();
+    let apart = |v: &[f64]| {
+        v.windows(2).all(|w| match *w {
+            [a, b] => frames(b, a).abs() == length + 1.0,
+            _ => false,
+        })
+    };
+    let steady = gaps.len() >= 4
+        && inner.iter().all(|&[a, b]| frames(a, b) + 1.0 == length)
+        && apart(&ends)
+        && apart(&starts);
+    (steady && (1.0..10.0).contains(&length)).then_some(length as usize + 1)
+}
+
+/// "2nd", "3rd", "4th", … for k ≥ 2.
+pub fn ordinal(k: usize) -> String {
+    match k {
+        2 => "2nd".into(),
+        3 => "3rd".into(),
+        k => format!("{k}th"),
+    }
 }
 
 #[cfg(test)]

@@ -23,11 +23,11 @@ use super::series::{Measured, MeasuredParts, Stencil, Stencils, Track};
 use super::line::{Line, line};
 
 pub use derivative::Local;
-pub use found::{Found, MarkLeftOut, Skipped, more_runs, runs_text};
+pub use found::{Found, MarkLeftOut, Skipped, more_runs, ordinal, runs_text};
 pub use impacts::TrackError;
 
 use derivative::{MIN_HALF_WINDOW, derivatives, median, scatter, unwrap};
-use found::runs;
+use found::{runs, steady_every};
 use impacts::impacts;
 
 /// How to derive velocities from a track.
@@ -93,16 +93,20 @@ struct Spin {
     range: [f64; 2],
     /// Those frames' rows of the track.
     valid: Vec<usize>,
+    /// The frames in a step of its angle's unwrapping: 1, or k for a mark followed
+    /// in every k-th frame only that surely turns slowly enough in k frames.
+    step_frames: usize,
 }
 
 /// The mark's [`Spin`] over the centre's `rows` (moving in direction `dir`), fitted
-/// over ±`n` frames (`dt` apart) between the impacts `cuts`; `None` without a mark.
+/// over ±`n` frames (`dt` apart) between the impacts `cuts`, the first at `t_impact`
+/// where the ball arrives at `speed`; `None` without a mark.
 fn spin_of(
     track: &Track,
-    rows: &[usize],
-    dir: f64,
+    (rows, dir): (&[usize], f64),
     (n, dt): (usize, f64),
     cuts: &[f64],
+    (speed, t_impact): (f64, f64),
 ) -> Option<Spin> {
     track.mark().as_ref()?;
     let valid: Vec<usize> = rows
@@ -118,16 +122,13 @@ fn spin_of(
         return None;
     }
     let at: Vec<f64> = valid.iter().map(|&i| track.at(i).t).collect();
-    let mut theta: Vec<f64> = valid
+    let seen: Vec<f64> = valid
         .iter()
         .map(|&i| {
             let (dx, dy) = track.at(i).mark_offset();
             (dir * dx).atan2(dy)
         })
         .collect();
-    // The fits reach across neither an impact nor a gap whose turn is unknown.
-    let mut cuts = [cuts, &unwrap(&at, &mut theta, dt)].concat();
-    cuts.sort_by(f64::total_cmp);
     let mut distances: Vec<f64> = valid
         .iter()
         .map(|&i| {
@@ -136,6 +137,18 @@ fn spin_of(
         })
         .collect();
     distances.sort_by(f64::total_cmp);
+    // The fits reach across neither an impact nor a gap whose turn is unknown; a
+    // mark followed every k-th frame has its gaps counted in its own steps where it
+    // surely turns slowly enough in them to be unwrapped.
+    let (mut step, mut theta) = (cadence(&at, dt), seen.clone());
+    let mut gaps = unwrap(&at, &mut theta, step);
+    let radius = median(distances.clone());
+    if step > dt && !turns_slowly(&at, &theta, step, (speed, t_impact), radius) {
+        (step, theta) = (dt, seen);
+        gaps = unwrap(&at, &mut theta, dt);
+    }
+    let mut cuts = [cuts, &gaps].concat();
+    cuts.sort_by(f64::total_cmp);
     // `valid` is not empty (above), nor then are its distances.
     let decile = |q: usize| {
         distances
@@ -144,7 +157,6 @@ fn spin_of(
             .unwrap_or(f64::NAN)
     };
     let range = [decile(1), decile(9)];
-    let radius = median(distances);
     let s_theta = scatter(&at, &theta).max(1e-7);
     let fits = derivatives(&at, &theta, n, &cuts, s_theta);
     Some(Spin {
@@ -154,10 +166,70 @@ fn spin_of(
         radius,
         range,
         valid,
+        step_frames: (step / dt).round() as usize,
     })
 }
 
+/// The step between the mark's frames at the times `at`: the frames' `dt`, or k of
+/// them where the mark was followed in every k-th frame only (a student clicking
+/// the rim every second frame in Tracker): the median step, in whole frames.
+fn cadence(at: &[f64], dt: f64) -> f64 {
+    let steps: Vec<f64> = at
+        .windows(2)
+        .filter_map(|w| match *w {
+            [a, b] => Some(b - a),
+            _ => None,
+        })
+        .collect();
+    let frames = (median(steps) / dt).round();
+    if frames.is_finite() && frames > 1.0 {
+        frames * dt
+    } else {
+        dt
+    }
+}
+
+/// Whether the mark's angles `theta` at `at`, unwrapped in steps of `step` (k
+/// frames), surely turn by less than half a turn a step: by under 2π/5 each step, and
+/// before the impact at `t_impact` slowly enough for the ball arriving at `speed` to
+/// roll on a radius under 1.2 times the mark's distance `radius` from the centre.
+/// A mark turning by nearly a whole turn a step (every 8th frame of a paper ball at
+/// 60 frames/s: 7.6 rad) shows a slow turn, or a slow turn backwards: within 2π/5 of
+/// a whole turn, on a rolling radius at least 4 times the ball's (its contact radius
+/// kR, k over 0.3 for a groove up to b = 1.9 R).
+fn turns_slowly(
+    at: &[f64],
+    theta: &[f64],
+    step: f64,
+    (speed, t_impact): (f64, f64),
+    radius: f64,
+) -> bool {
+    let mut rates = Vec::new();
+    for (t, a) in at.windows(2).zip(theta.windows(2)) {
+        let (&[t0, t1], &[a0, a1]) = (t, a) else {
+            continue;
+        };
+        if t1 - t0 > 1.5 * step {
+            continue;
+        }
+        if (a1 - a0).abs() > 0.4 * std::f64::consts::PI {
+            return false;
+        }
+        if t1 < t_impact {
+            rates.push((a1 - a0).abs() / (t1 - t0));
+        }
+    }
+    let spin = median(rates);
+    spin > 0.0 && speed / spin <= 1.2 * radius
+}
+
 impl Spin {
+    /// k where the mark, missing in the runs `gaps` (frames `dt` apart), was
+    /// followed in every k-th frame only and unwrapped in those steps.
+    fn every(&self, gaps: &[[f64; 2]], dt: f64) -> Option<usize> {
+        steady_every(gaps, dt).filter(|&k| k == self.step_frames)
+    }
+
     /// The spin's sign: the balls roll before the impact at `t_impact`, so there v_t
     /// has v_cm's sign (`dx`: the centre's fits at `ts`; a mirrored or upside-down
     /// picture flips the angle's sense, not the physics).
@@ -311,7 +383,8 @@ pub fn derive(
     let approach = approach_line(&ts, &xs, before);
     let cuts: Vec<f64> = kinks.iter().map(|k| k.t).collect();
     let dx = derivatives(&ts, &xs, n, &cuts, sigma);
-    let spin = spin_of(track, &rows, dir, (n, dt), &cuts);
+    let arrival = (approach.slope.abs(), first.t);
+    let spin = spin_of(track, (&rows, dir), (n, dt), &cuts, arrival);
     let (spin, mark_left_out) = mark_off_the_centre(spin, sigma, track.mark_name())?;
     let spin_sign = spin
         .as_ref()
@@ -369,15 +442,14 @@ pub fn derive(
         frames_dropped: track.t().len() - ts.len(),
         centre_gaps,
         mark_missing,
+        mark_every: spin.as_ref().and_then(|s| s.every(&mark_gaps, dt)),
         mark_gaps,
         skipped: Skipped::of(track.t(), dt),
         frame_rate: 1.0 / dt,
         scatter: sigma,
         half_window: n as f64 * dt,
         half_window_frames: n,
-        half_window_widened_from: opts
-            .half_window
-            .filter(|h| ((h / dt).round() as usize) < MIN_HALF_WINDOW),
+        half_window_widened_from: widened_from(opts, dt),
         impact_t: first.t,
         impact_detected: opts.impact_at.is_none(),
         impact_x: first.x,
@@ -391,6 +463,13 @@ pub fn derive(
         mark_left_out,
     };
     Ok((Measured::new(m)?, found))
+}
+
+/// The half-width asked for (`--window`), s, where it was under the fewest frames a
+/// local quadratic needs (so widened to them).
+fn widened_from(opts: &Derive, dt: f64) -> Option<f64> {
+    opts.half_window
+        .filter(|h| ((h / dt).round() as usize) < MIN_HALF_WINDOW)
 }
 
 /// The rows of `track` with a centre position.
