@@ -38,6 +38,14 @@ pub(super) fn summary(f: &Fits) -> String {
     );
     if h.mu_implausible {
         let _ = writeln!(out, "  {}", unit_hint(h.mu, h.fitted_to));
+    } else if h.mu > 0.0 && h.mu + 2.0 * h.mu_se < SLIPPERIEST_MU {
+        let _ = writeln!(
+            out,
+            "  μ_k under {SLIPPERIEST_MU} is less than the slipperiest solids slide at: if the {}",
+            mix_up(h.mu, h.fitted_to)
+                .replace(" are likely ", " are ")
+                .replacen("): give", "), give", 1)
+        );
     }
     if let Some(w) = f
         .line_fit
@@ -96,6 +104,22 @@ pub(super) fn summary(f: &Fits) -> String {
 /// so the mix-up is named, not assumed (a header saying cm over numbers in mm made
 /// "give --length-unit cm" a loop).
 fn unit_hint(mu: f64, fitted_to: &str) -> String {
+    let words = if mu > MAX_PLAUSIBLE_MU {
+        "a μ_k beyond 1 is no ball rolling in a groove"
+    } else {
+        "a μ_k below 0.01 is no ball sliding in a groove (the slipperiest solids slide at 0.04)"
+    };
+    format!("{words}: the {}", mix_up(mu, fitted_to))
+}
+
+/// What the slipperiest solids slide at (PTFE on steel): a μ_k under it, though
+/// within what a fit gives a verdict on, is said beside the unit mix-up that would
+/// make it (cm read as mm gave μ_k 0.017 that "agrees").
+const SLIPPERIEST_MU: f64 = 0.04;
+
+/// "lengths are likely 10× too small (cm read as mm? then μ_k ≈ 0.17): give
+/// --length-unit cm, or fix the header": the mix-up that brings `mu` nearest 0.17.
+fn mix_up(mu: f64, fitted_to: &str) -> String {
     let large = mu > MAX_PLAUSIBLE_MU;
     let off = |p: f64| (if large { mu / p } else { mu * p } / 0.17).ln().abs();
     let (power, meant, read) = crate::settings::units::MIX_UPS
@@ -107,13 +131,8 @@ fn unit_hint(mu: f64, fitted_to: &str) -> String {
         "positions" => ("lengths", "", "--length-unit"),
         _ => ("speeds", "/s", "--speed-unit"),
     };
-    let words = if large {
-        "a μ_k beyond 1 is no ball rolling in a groove"
-    } else {
-        "a μ_k below 0.01 is no ball sliding in a groove (the slipperiest solids slide at 0.04)"
-    };
     format!(
-        "{words}: the {what} are likely {}× too {} ({meant}{per} read as {read}{per}? then μ_k ≈ {}): give {flag} {meant}{per}, or fix the header",
+        "{what} are likely {}× too {} ({meant}{per} read as {read}{per}? then μ_k ≈ {}): give {flag} {meant}{per}, or fix the header",
         power as u32,
         if large { "large" } else { "small" },
         significant(if large { mu / power } else { mu * power }, 3)

@@ -275,6 +275,56 @@ fn the_unit_hint_names_the_unit_that_fits_whatever_the_header_said() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// A track in cm under an `x (mm)` header fits μ_k 0.017, ten times too small but
+/// above the 0.01 under which no verdict is given: the verdict stands (the regime
+/// does not depend on the length unit) and a line says that μ_k is under what the
+/// slipperiest solids slide at, naming the mix-up that would make it and the flag.
+/// It said "agrees" and nothing else.
+#[test]
+fn a_mu_under_the_slipperiest_solids_names_the_unit_that_would_make_it() {
+    use groovelab::study::video::{self, TrackFormat, Video};
+    let dir = scratch_dir("fit_verdicts", "slipperiest");
+    let path = dir.join("track.csv");
+    let f = path.display().to_string();
+    let scene = symmetric(0.0275, 0.049, 0.17, 0.7, 1.0);
+    let video = Video {
+        mark: false,
+        ..Video::default()
+    };
+    let track = video::track(&scene, &video).unwrap();
+    let text = video::write(&track, TrackFormat::CsvComma);
+    // The numbers in cm under the header's mm: every length a tenth.
+    let tenth = |line: &str| {
+        let cells: Vec<String> = line
+            .split(',')
+            .enumerate()
+            .map(|(i, c)| match c.parse::<f64>() {
+                Ok(v) if i > 0 => format!("{}", v / 10.0),
+                _ => c.to_string(),
+            })
+            .collect();
+        cells.join(",")
+    };
+    let body: Vec<String> = text.lines().map(tenth).collect();
+    assert!(body[0].contains("x (mm)"), "{}", body[0]);
+    let args = [
+        "fit", "--data", &f, "--radius", "2.75cm", "--width", "4.9cm",
+    ];
+    for (lines, hint) in [
+        (body, true),
+        (text.lines().map(str::to_string).collect(), false),
+    ] {
+        std::fs::write(&path, lines.join("\n") + "\n").unwrap();
+        let (code, out, err) = crate::common::run(&args);
+        assert_eq!(code, 0, "{err}");
+        let head: Vec<&str> = out.lines().take(3).collect();
+        assert!(head[1].contains("; agrees ("), "{out}");
+        let said = "μ_k under 0.04 is less than the slipperiest solids slide at: if the lengths are 10× too small (cm read as mm? then μ_k ≈ 0.17), give --length-unit cm, or fix the header";
+        assert_eq!(out.contains(said), hint, "{out}");
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// A velocity file whose v_t is signed the other way round (−v_cm while the ball
 /// rolls before the impact) is read turned, said by `data` and `fit`, and fits as the
 /// file signed as the model signs it; mirrored too (x toward −x) it is both. It gave
