@@ -13,7 +13,8 @@ use crate::tui::layer::{DataTable, Help, Layer, Picker, Prompt};
 use crate::tui::vocabulary::TextTarget;
 
 /// What the first `q` says when the scene's changes here are not saved.
-pub const UNSAVED: &str = "changes to the scene are not saved: q again quits; s saves them as a preset, w writes the run with its scene";
+pub const UNSAVED: &str =
+    "scene changed, not saved: q again quits (s saves a preset, w writes the run)";
 
 impl App {
     /// One fine or coarse step of the selected parameter. A step past a limit stops at

@@ -484,7 +484,7 @@ fn a_applies_the_position_fit_of_a_track() {
 /// quits at once. A reflex `q` lost a student's whole setup.
 #[test]
 fn q_with_unsaved_changes_asks_once_and_ctrl_c_quits_at_once() {
-    let unsaved = "changes to the scene are not saved: q again quits";
+    let unsaved = "scene changed, not saved: q again quits (s saves a preset, w writes the run)";
     // Unchanged: one q.
     let mut a = app("paper-b4.9");
     press(&mut a, "q");
@@ -495,6 +495,12 @@ fn q_with_unsaved_changes_asks_once_and_ctrl_c_quits_at_once() {
     press(&mut a, "right q");
     assert!(!a.quitting());
     assert!(screen_of(&a).contains(unsaved), "{}", screen_of(&a));
+    // Whole on the smallest common terminal too, over two rows (it was cut at 80
+    // columns before "w").
+    let small = crate::common::text(&a, (80, 24), false);
+    for part in unsaved.split_inclusive("quits ") {
+        assert!(small.contains(part.trim()), "{part}: {small}");
+    }
     press(&mut a, "space q");
     assert!(!a.quitting(), "a key between takes the question back");
     press(&mut a, "q");
