@@ -52,8 +52,8 @@ pub(super) fn position_column(cell: &str) -> Option<Col> {
 }
 
 /// The axis a header's token names, and the track it names with it: `x2`, `y2`
-/// (Logger Pro's second point), `xA`, `yB` (a sheet's ball A and B); `None` for a
-/// token that names no axis.
+/// (Logger Pro's second point), `t1`, `t2` (each point's own time), `xA`, `yB` (a
+/// sheet's ball A and B); `None` for a token that names no axis.
 fn axis_of(t: &str) -> Option<(Axis, Option<String>)> {
     if let [axis @ ('x' | 'y'), ball] = t.chars().collect::<Vec<char>>()[..]
         && ball.is_ascii_alphabetic()
@@ -68,7 +68,8 @@ fn axis_of(t: &str) -> Option<(Axis, Option<String>)> {
         return None;
     }
     match (letter, &point) {
-        ("t" | "time", None) => Some((Axis::T, None)),
+        // `t1`, `t2`: point 1's and point 2's own time columns (`t1,x1,t2,x2`).
+        ("t" | "time", _) => Some((Axis::T, point)),
         ("x", _) => Some((Axis::X, point)),
         ("y", _) => Some((Axis::Y, point)),
         _ => None,

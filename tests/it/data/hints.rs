@@ -546,6 +546,54 @@ fn a_letter_after_the_axis_names_a_track() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// Each point's own time column, `t1,x1,y1,t2,x2,y2` as a sheet of two points
+/// tracked one after the other writes it: point 1 is the centre on t1, point 2 the
+/// rim mark matched to it by t2, and `fit` says what the plain `t,x,y,x_mark,y_mark`
+/// file says. It was refused: "no header with a time column t".
+#[test]
+fn each_points_own_time_column_reads_as_its_track() {
+    use groovelab::study::video::{self, TrackFormat, Video};
+    let dir = crate::common::scratch_dir("data_hints", "own-times");
+    let scene = crate::common::symmetric(0.0275, 0.049, 0.17, 0.7, 1.0);
+    let track = video::track(&scene, &Video::default()).unwrap();
+    let text = video::write(&track, TrackFormat::TrackerMulti);
+    let rows: Vec<Vec<&str>> = text
+        .lines()
+        .skip(3)
+        .map(|r| r.split('\t').collect())
+        .collect();
+    let fit_of = |head: &str, cells: &dyn Fn(&[&str]) -> Vec<String>| {
+        let file = dir.join("t.csv");
+        let body: Vec<String> = rows.iter().map(|r| cells(r).join(",")).collect();
+        std::fs::write(&file, format!("{head}\n{}\n", body.join("\n"))).unwrap();
+        let f = file.to_str().unwrap();
+        let data = run(&["data", f]);
+        let fit = run(&["fit", "--data", f, "--radius", "2.75cm", "--width", "4.9cm"]);
+        (
+            data.stdout,
+            fit.stdout.lines().nth(1).unwrap_or_default().to_string(),
+        )
+    };
+    let plain = |r: &[&str]| r.iter().map(|c| c.to_string()).collect();
+    let (_, want) = fit_of("t,x,y,x_mark,y_mark", &plain);
+    assert!(
+        want.contains("μ_k = 0.1") && want.contains("agrees"),
+        "{want}"
+    );
+    let own = |r: &[&str]| {
+        [r[0], r[1], r[2], r[0], r[3], r[4]]
+            .map(str::to_string)
+            .to_vec()
+    };
+    let (data, fit) = fit_of("t1 (s),x1 (m),y1 (m),t2 (s),x2 (m),y2 (m)", &own);
+    assert!(
+        data.contains("centre 'point 1', rim mark 'point 2'"),
+        "{data}"
+    );
+    assert_eq!(fit, want);
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// A unit written after a track's name (`x_mark_cm`, as after an axis, `x_cm`) is
 /// that column's unit, and a spreadsheet's "not available" (`#N/A`, German `#NV`) is
 /// a missing cell: both read as the plain file does. `x_mark_cm` was a track 'mark
@@ -696,7 +744,7 @@ fn notes_and_excels_sep_line_above_the_header_name_no_track() {
     assert!(
         titled.stdout.contains("Tracker single-track") && titled.stdout.contains("centre 'mass_A'")
     );
-    std::fs::write(&file, "Versuch 1\nDatum\nGruppe\nt1;x1\n0;1\n").unwrap();
+    std::fs::write(&file, "Versuch 1\nDatum\nGruppe\nMessung;Wert\n0;1\n").unwrap();
     let none = run(&["data", f]);
     assert!(
         none.code == 2
