@@ -229,7 +229,8 @@ fn mark_missing_line(missing: Option<&MarkMissing>) -> String {
 }
 
 /// Why `report`'s rim mark cannot be one: its median distance from the centre is more
-/// than twice the ball's radius `radius` (a second ball, or another run side by side),
+/// than twice the ball's radius `radius` (a second ball, or another run side by side;
+/// not judged while the lengths' unit is in doubt),
 /// or it has none (never in a frame with the centre: nothing says it is a mark).
 fn mark_doubt(report: &Report, radius: f64) -> Option<String> {
     let mark = report.mark.as_ref()?;
@@ -239,7 +240,9 @@ fn mark_doubt(report: &Report, radius: f64) -> Option<String> {
             named(mark)
         ));
     };
-    (d > 2.0 * radius).then(|| {
+    // Distances in a unit not known are not the ball's R apart or not: the lengths'
+    // unit is said first (a rim mark in cm read as m lay "276.3 cm" from the centre).
+    (d > 2.0 * radius && report.length_unit_doubt.is_none()).then(|| {
         format!(
             "track {} is no rim mark: it lies {} from the centre (median), more than twice the ball's R = {} (a second ball, or another run?); name the mark's track with --track mark=NAME, or give the ball's --radius",
             named(mark),

@@ -594,6 +594,58 @@ fn each_points_own_time_column_reads_as_its_track() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
+/// A track's second point more than 2R from the centre is no rim mark, and `data`
+/// says so with its distance; but not while the lengths' unit is not known: a rim
+/// mark written in cm under a header with no unit lay "276.3 cm" from the centre,
+/// no rim mark, where it is the mark at R once `--length-unit cm` is given.
+#[test]
+fn a_mark_is_judged_by_its_distance_only_in_a_known_unit() {
+    use groovelab::study::video::{self, TrackFormat, Video};
+    let dir = crate::common::scratch_dir("data_hints", "mark-distance");
+    let scene = crate::common::symmetric(0.0275, 0.049, 0.17, 0.7, 1.0);
+    let track = video::track(&scene, &Video::default()).unwrap();
+    let text = video::write(&track, TrackFormat::TrackerMulti);
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .skip(3)
+        .map(|r| r.split('\t').map(|c| c.parse().unwrap()).collect())
+        .collect();
+    // The file with `head`, every length × `scale`, the mark moved `out` m along x.
+    let data = |head: &str, scale: f64, out: f64, more: &[&str]| {
+        let file = dir.join("t.csv");
+        let mut body = format!("{head}\n");
+        for r in &rows {
+            let cells = [
+                r[0],
+                r[1] * scale,
+                r[2] * scale,
+                (r[3] + out) * scale,
+                r[4] * scale,
+            ];
+            body += &format!("{}\n", cells.map(|c| c.to_string()).join(","));
+        }
+        std::fs::write(&file, body).unwrap();
+        let f = file.to_str().unwrap();
+        run(&[&["data", f], more].concat()).stdout
+    };
+    let doubt = "is no rim mark: it lies";
+    // In cm, no unit said: the unit's doubt, no word on the mark's distance.
+    let cm = data("t,x,y,x_mark,y_mark", 100.0, 0.0, &[]);
+    assert!(
+        cm.contains("not known to be metres") && !cm.contains(doubt),
+        "{cm}"
+    );
+    let given = data("t,x,y,x_mark,y_mark", 100.0, 0.0, &["--length-unit", "cm"]);
+    assert!(
+        given.contains("rim mark 'mark'") && !given.contains(doubt),
+        "{given}"
+    );
+    // A second point 20 cm off, in metres said: no rim mark, its distance said.
+    let far = data("t (s),x (m),y (m),x_mark (m),y_mark (m)", 1.0, 0.2, &[]);
+    assert!(far.contains(&format!("track 'mark' {doubt} 2")), "{far}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
 /// A unit written after a track's name (`x_mark_cm`, as after an axis, `x_cm`) is
 /// that column's unit, and a spreadsheet's "not available" (`#N/A`, German `#NV`) is
 /// a missing cell: both read as the plain file does. `x_mark_cm` was a track 'mark
