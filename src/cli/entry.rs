@@ -83,7 +83,10 @@ pub fn dispatch(args: &[OsString]) -> Entry {
             // Checked by `run`: an unknown GROOVELAB_THEME is an error before this.
             theme: super::theme_choice(&cli).unwrap_or_default(),
         },
-        Ok(Response::Print(out)) => Entry::Exit(Exit::ok(out)),
+        Ok(Response::Print(out)) => Entry::Exit(Exit {
+            stderr: bare_notes(args),
+            ..Exit::ok(out)
+        }),
         Err(CliError::Interrupted) => {
             Entry::Exit(Exit::error(130, &CliError::Interrupted.to_string()))
         }
@@ -133,6 +136,27 @@ fn with_unit_hint(e: &CliError, args: &[OsString]) -> String {
         ),
         _ => message,
     }
+}
+
+/// A `note:` line on stderr for each length or mass given as a bare number of 1 or
+/// more, which is metres or kilograms (SI) and so accepted where in range, though
+/// people mean centimetres or grams (`--mass 167` ran with two 167 kg balls).
+fn bare_notes(args: &[OsString]) -> String {
+    use crate::settings::params::PARAMS;
+    PARAMS
+        .iter()
+        .filter(|p| p.dim.display_unit().1 != 0)
+        .filter_map(|p| bare_value(args, p.flag).map(|(v, x)| (p, v, x)))
+        .filter(|(_, _, x)| x.abs() >= 1.0)
+        .map(|(p, v, _)| {
+            format!(
+                "note: --{} {v} has no unit, so it is {v} {} (a bare number is SI); in {unit} write {v}{unit}\n",
+                p.flag,
+                p.dim.si_unit(),
+                unit = p.dim.display_unit().0,
+            )
+        })
+        .collect()
 }
 
 /// The value given to `--flag` (the last one, as clap takes it), as typed.

@@ -220,6 +220,49 @@ fn a_bare_numbers_unit_hint_is_said_only_where_it_helps() {
     }
 }
 
+/// A length or mass given as a bare number of 1 or more is SI and runs where in
+/// range, with a `note:` on stderr saying so and how to write it in cm or g, the
+/// output that of the value with its unit; under 1 (metres or kilograms meant) or
+/// with a unit, no note. `--mass 167` ran two 167 kg balls without a word.
+#[test]
+fn a_bare_number_in_range_is_said_to_be_si() {
+    let run = |args: &[&str]| {
+        let out = groovelab(&[&["simulate"], args].concat());
+        assert_eq!(out.status.code(), Some(0), "{args:?}");
+        (
+            String::from_utf8_lossy(&out.stdout).to_string(),
+            String::from_utf8_lossy(&out.stderr).to_string(),
+        )
+    };
+    for (bare, unit, note) in [
+        (
+            "--mass",
+            "kg",
+            "note: --mass 167 has no unit, so it is 167 kg (a bare number is SI); in g write 167g",
+        ),
+        (
+            "--radius",
+            "m",
+            "note: --radius 3 has no unit, so it is 3 m (a bare number is SI); in cm write 3cm",
+        ),
+    ] {
+        let v = if bare == "--mass" { "167" } else { "3" };
+        let (out, err) = run(&[bare, v, "--width", "5cm"]);
+        assert_eq!(err.lines().collect::<Vec<_>>(), [note], "{err}");
+        let with_unit = format!("{v}{unit}");
+        let (same, quiet) = run(&[bare, &with_unit, "--width", "5cm"]);
+        assert_eq!((out, quiet.as_str()), (same, ""));
+    }
+    for args in [
+        &["--mass", "0.167"][..],
+        &["--mass", "167g"],
+        &["--radius", "0.03"],
+    ] {
+        let (_, err) = run(args);
+        assert_eq!(err, "", "{args:?}");
+    }
+}
+
 /// A grid corner outside the scene's range is named in the unit of the message that
 /// follows it: "the grid corner width = 0.055 is not a valid scene: groove width
 /// b = 5.5 cm is out of range" gave the same width as a bare number in metres.
