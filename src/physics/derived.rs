@@ -338,13 +338,13 @@ impl Outcome {
     /// From the facts of a run: its impacts (`accumulating`: infinitely many), whether
     /// the balls ever pressed on each other after a single impact, and the right minus
     /// left velocity once neither ball slides any more (`settled`), with whether the
-    /// pair still moves then. Speeds within `eps` of zero count as zero.
+    /// pair still moves then, and whether rolling resistance acts (`resisted`). Speeds
+    /// within `eps` of zero count as zero.
     pub fn classify(
-        impacts: usize,
-        accumulating: bool,
-        pressed: bool,
+        (impacts, accumulating, pressed): (usize, bool, bool),
         settled: f64,
         moving: bool,
+        resisted: bool,
         eps: f64,
     ) -> Outcome {
         if impacts >= 2 || accumulating {
@@ -353,8 +353,12 @@ impl Outcome {
             Outcome::Pressed
         } else if settled > eps {
             Outcome::Depart
+        } else if settled < -eps && !resisted {
+            // Heading back with nothing to stop them: they meet again, after the
+            // run's end (a comparison cut short, a t_end before the second impact).
+            Outcome::Recollide
         } else if settled < -eps {
-            // Heading back, yet no second impact: something stopped them first.
+            // Heading back, yet no second impact: rolling resistance stopped them.
             Outcome::Stopped
         } else if moving {
             Outcome::Together
@@ -388,14 +392,9 @@ impl Outcome {
             let [l, r] = s.start;
             (r.v - l.v, l.v.abs() > eps || r.v.abs() > eps)
         });
-        Outcome::classify(
-            sol.impacts,
-            sol.accumulation.is_some(),
-            pressed,
-            w,
-            moving,
-            eps,
-        )
+        let resisted = sol.scene.rolling_resistance > 0.0;
+        let facts = (sol.impacts, sol.accumulation.is_some(), pressed);
+        Outcome::classify(facts, w, moving, resisted, eps)
     }
 }
 

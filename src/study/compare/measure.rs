@@ -76,7 +76,8 @@ pub fn measure_observed(
         return Err(Cancelled);
     }
     let err_final = final_error(exact, &run_end);
-    let (outcome, impacts) = run_outcome(&metrics, &run_end, found.0.len(), scene.mu > 0.0);
+    let forces = (scene.mu > 0.0, scene.rolling_resistance > 0.0);
+    let (outcome, impacts) = run_outcome(&metrics, &run_end, found.0.len(), forces);
     let outcome_right =
         outcome == reference.outcome && (reference.accumulating || impacts == reference.impacts);
     let accurate = [metrics.err_v, metrics.err_u, err_final]

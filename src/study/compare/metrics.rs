@@ -257,17 +257,19 @@ pub(super) fn run_status(
 /// The outcome word of a time-stepping run and its impacts: `impacts` detected, the
 /// balls pressed if they never parted after a single impact (with friction to press
 /// them), and their relative velocity once both roll after the last impact (at the
-/// end if they never settle).
+/// end if they never settle), heading back a recollision unless rolling resistance
+/// acts (`resisted`).
 pub(super) fn run_outcome(
     metrics: &Metrics,
     end: &RunEnd,
     impacts: usize,
-    friction: bool,
+    (friction, resisted): (bool, bool),
 ) -> (Outcome, usize) {
     let (w, moving) = metrics
         .settled
         .unwrap_or_else(|| relative(&end.y, metrics.still));
     let pressed = impacts == 1 && !metrics.parted && friction;
-    let outcome = Outcome::classify(impacts, false, pressed, w, moving, metrics.still);
+    let facts = (impacts, false, pressed);
+    let outcome = Outcome::classify(facts, w, moving, resisted, metrics.still);
     (outcome, impacts)
 }

@@ -128,7 +128,9 @@ pub fn outcome_until(sol: &Solution, end: f64) -> (Outcome, usize) {
     let [l, r] = settled;
     let accumulating = sol.accumulation.is_some_and(|t| t <= end);
     let moving = l.v.abs() > eps || r.v.abs() > eps;
-    let outcome = Outcome::classify(impacts, accumulating, pressed, r.v - l.v, moving, eps);
+    let resisted = sol.scene.rolling_resistance > 0.0;
+    let facts = (impacts, accumulating, pressed);
+    let outcome = Outcome::classify(facts, r.v - l.v, moving, resisted, eps);
     (outcome, impacts)
 }
 

@@ -375,6 +375,34 @@ fn each_run_says_whether_it_gets_the_outcome_right() {
     );
 }
 
+/// A comparison cut before the balls meet again (b = 4.2603 cm, just past b*: 3
+/// impacts accumulating at T∞ ≈ 1.8e4 s, the compared span ending at seconds) names
+/// the pair heading back a recollision when nothing stops it, as the whole run is:
+/// it said "stopped", rolling resistance's word, with c_rr = 0. With rolling
+/// resistance the pair that stops before meeting again is stopped still.
+#[test]
+fn a_pair_heading_back_at_the_cut_recollides_without_rolling_resistance() {
+    use groovelab::study::compare::outcome_until;
+    let (mut scene, span) = preset("paper-b4.9");
+    scene.width = 0.042603;
+    let sol = solve(&scene, &span);
+    let second = sol
+        .events
+        .iter()
+        .filter(|e| e.kind == groovelab::physics::solution::EventKind::Collision)
+        .nth(1)
+        .expect("a second impact")
+        .t;
+    assert!(second > 10.0, "{second}");
+    assert_eq!(outcome_until(&sol, 2.0), (Outcome::Recollide, 1));
+    assert_eq!(Outcome::of(&sol), Outcome::Recollide);
+    // With rolling resistance, stopped (on paper-b4.9 before the balls meet again).
+    let (mut scene, span) = preset("paper-b4.9");
+    scene.rolling_resistance = 0.05;
+    let sol = solve(&scene, &span);
+    assert_eq!(outcome_until(&sol, sol.t_end).0, Outcome::Stopped);
+}
+
 /// The fitted order of a fixed-step method: moreau and the Eulers are first order
 /// on a scene without accumulating impacts.
 #[test]
