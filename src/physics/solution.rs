@@ -255,7 +255,7 @@ impl Solution {
         let n = ((self.t_end - self.t_start) / dt + 1e-9).floor() as usize;
         let mut cursor = self.cursor();
         (0..=n)
-            .map(|i| cursor.at(self.t_start + i as f64 * dt))
+            .map(|i| cursor.at(grid_time(self.t_start, dt, i)))
             .collect()
     }
 
@@ -472,4 +472,51 @@ pub fn end_time(span: &Span, last_event: f64) -> f64 {
         let shown = last_event - span.t_start;
         (last_event + (0.2 * shown).max(0.1)).min(LATEST_END)
     })
+}
+
+/// The `k`-th time of the grid `t0, t0 + dt, …`. Where dt is a whole fraction of a
+/// second (1/n s) and `t0` lies on its grid, the whole number of steps over n: the
+/// times are then the decimals typed (−0.08 s, where −0.2 + 12 × 0.01 is
+/// −0.08000000000000002 and a CSV wrote it so); else `t0 + k dt`.
+pub fn grid_time(t0: f64, dt: f64, k: usize) -> f64 {
+    let per_second = (1.0 / dt).round();
+    let steps = (t0 * per_second).round();
+    let whole = |x: f64, of: f64| (x - of).abs() <= 1e-9 * of.abs().max(1.0);
+    if per_second >= 1.0 && whole(1.0 / dt, per_second) && whole(t0 * per_second, steps) {
+        (steps + k as f64) / per_second
+    } else {
+        t0 + k as f64 * dt
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::grid_time;
+
+    #[test]
+    fn grid_times_are_the_decimals_typed_and_the_grid_else() {
+        // −0.2 + 12 × 0.01 is −0.08000000000000002: the grid gives −0.08.
+        assert_eq!(grid_time(-0.2, 0.01, 12), -0.08);
+        assert_eq!(grid_time(0.0, 0.1, 3), 0.3);
+        assert_eq!(grid_time(-0.2, 0.001, 1234), 1.034);
+        assert_eq!(grid_time(0.35, 0.05, 0), 0.35);
+        // Every time within rounding of t0 + k dt, on the grid or off it (1/0.003 s
+        // is no whole number; 0.0123 s no step of 0.01).
+        for (t0, dt) in [
+            (-0.2, 0.01),
+            (0.0, 1.0 / 120.0),
+            (0.0, 0.003),
+            (0.0123, 0.01),
+        ] {
+            for k in 0..2000 {
+                let t = grid_time(t0, dt, k);
+                let plain = t0 + k as f64 * dt;
+                assert!(
+                    (t - plain).abs() <= 1e-12 * plain.abs().max(1.0),
+                    "{t} {plain}"
+                );
+            }
+        }
+        assert_eq!(grid_time(0.0, 0.003, 7), 7.0 * 0.003);
+    }
 }
