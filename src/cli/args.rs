@@ -380,6 +380,9 @@ pub enum DataFormat {
     Json,
 }
 
+/// `sweep`'s grid when none is given: a 1-D sweep takes its NX alone.
+pub const DEFAULT_GRID: &str = "200x100";
+
 #[derive(Args, Debug)]
 pub struct SweepArgs {
     /// First parameter and range, NAME=LO..HI with units (e.g. width=0..5.4cm).
@@ -389,7 +392,7 @@ pub struct SweepArgs {
     #[arg(long, value_name = "NAME=LO..HI", allow_hyphen_values = true)]
     pub y: Option<String>,
     /// Grid points, NX or NXxNY.
-    #[arg(long, value_name = "NXxNY", default_value = "200x100")]
+    #[arg(long, value_name = "NXxNY", default_value = DEFAULT_GRID)]
     pub grid: String,
     /// Output: CSV rows in grid order, JSON, or an SVG map.
     #[arg(long, value_enum, default_value_t = SweepFormat::Csv)]

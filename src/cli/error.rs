@@ -220,6 +220,15 @@ pub enum BadValue {
         crate::settings::quote::clip(text)
     )]
     Grid { text: String },
+    /// NXxNY with NY over 1 where only `--x` is swept: the second count has no axis.
+    #[error(
+        "{} {text} counts {ny} values of a second parameter, but only {} is swept: give {} {nx}, or a second parameter with {}",
+        Flag("grid"),
+        Flag("x"),
+        Flag("grid"),
+        Flag("y")
+    )]
+    GridWithoutY { text: String, nx: usize, ny: usize },
     #[error(
         "{} {grid} is too fine for {} svg (one rectangle per point), allowed at most {max}x{max}; use csv or json for finer grids",
         Flag("grid"),

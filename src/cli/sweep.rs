@@ -14,6 +14,15 @@ use crate::study::sweep::{self, GridPoint, SweepAxis};
 fn grid(text: &str, two: bool) -> Result<(usize, usize), CliError> {
     match super::args::counts(text, 10_000) {
         // NX alone: a square grid for two parameters, one row for one.
+        // The default's NX alone for one parameter; a second count given has no axis.
+        Some((nx, Some(ny))) if !two && ny > 1 && text != super::args::DEFAULT_GRID => {
+            Err(BadValue::GridWithoutY {
+                text: text.to_string(),
+                nx,
+                ny,
+            }
+            .into())
+        }
         Some((nx, ny)) => Ok((nx, ny.unwrap_or(if two { nx } else { 1 }))),
         None => Err(BadValue::Grid {
             text: text.to_string(),

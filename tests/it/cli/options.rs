@@ -196,6 +196,37 @@ fn a_sweep_refuses_the_span_it_does_not_use() {
     );
 }
 
+/// A grid of two counts for a sweep of one parameter is refused, naming the count
+/// that has no axis and both ways out; one count, a second count of 1, or no
+/// `--grid` (the default's NX) runs. The second count was ignored without a word.
+#[test]
+fn a_second_grid_count_without_a_second_parameter_is_refused() {
+    assert_rejected(
+        &["sweep", "--x", "width=3..5cm", "--grid", "5x5"],
+        "error: --grid 5x5 counts 5 values of a second parameter, but only --x is swept: give --grid 5, or a second parameter with --y",
+    );
+    // No --grid: the default's 200 along x.
+    let out = groovelab(&["sweep", "--x", "width=3..5cm", "--format", "csv"]);
+    assert_eq!(String::from_utf8_lossy(&out.stdout).lines().count(), 201);
+    for grid in ["5", "5x1"] {
+        let out = groovelab(&[
+            "sweep",
+            "--x",
+            "width=3..5cm",
+            "--grid",
+            grid,
+            "--format",
+            "csv",
+        ]);
+        assert_eq!(out.status.code(), Some(0), "{grid}");
+        assert_eq!(
+            String::from_utf8_lossy(&out.stdout).lines().count(),
+            6,
+            "{grid}"
+        );
+    }
+}
+
 /// The unit hint only where it helps: not for a value with a unit, a value that is
 /// out of range in cm or g too, a sign's error, or a speed (m/s is what people
 /// type).
