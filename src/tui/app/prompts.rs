@@ -68,7 +68,12 @@ impl App {
     fn typed_value(&mut self, text: &str) {
         let p = self.params().param();
         match parse_typed(text, p.dim) {
-            Ok(v) => self.set_value(p.key, v),
+            Ok(v) => {
+                self.set_value(p.key, v);
+                if let (Some(note), Status::Info(done)) = (si_meant(text, p.dim), &self.status) {
+                    self.status = Status::Info(format!("{done}; {note}"));
+                }
+            }
             Err(e) => self.status = Status::Error(format!("not applied: {} {e}", p.screen_label())),
         }
     }
@@ -111,4 +116,20 @@ impl App {
             Err(e) => self.status = Status::Error(format!("not saved: {e}")),
         }
     }
+}
+
+/// What a bare number under 1 typed for a length or a mass (shown in cm or g) may
+/// have meant: SI, as the command line reads it (`0.05` for b is 0.05 cm here, 5 cm
+/// as `--width 0.05`); `None` for a number with a unit, 0, 1 or more, or a quantity
+/// shown in its SI unit.
+fn si_meant(text: &str, dim: crate::settings::units::Dimension) -> Option<String> {
+    let number = text.trim().replace(',', ".");
+    let x: f64 = number.parse().ok()?;
+    let (shown, shift) = dim.display_unit();
+    (shift != 0 && x != 0.0 && x.abs() < 1.0).then(|| {
+        format!(
+            "a bare number is in {shown} here: for {number} {si} type {number}{si}",
+            si = dim.si_unit()
+        )
+    })
 }

@@ -214,9 +214,39 @@ fn typed_numbers_are_in_the_rows_unit_and_lenient() {
     assert_eq!(a.lab.scene.left.mass, 0.167);
     press(&mut a, "enter 2 0 0 enter");
     assert_eq!(a.lab.scene.left.mass, 0.2, "grams");
+    // A bare number under 1 is applied in the row's unit, and the status says how
+    // to write the SI value the command line would have read (`--width 0.05`: 5 cm).
+    select(&mut a, Key::Width);
+    press(&mut a, "enter 0 . 0 5 enter");
+    assert_eq!(a.lab.scene.width, 0.0005, "0.05 cm");
+    let said = "a bare number is in cm here: for 0.05 m type 0.05m";
+    assert!(
+        matches!(&a.status, Status::Info(i) if i.ends_with(said)),
+        "{:?}",
+        a.status
+    );
+    press(&mut a, "enter 0 . 0 5 m enter");
+    assert_eq!(a.lab.scene.width, 0.05);
+    assert!(
+        matches!(&a.status, Status::Info(i) if !i.contains("bare")),
+        "{:?}",
+        a.status
+    );
+    select(&mut a, Key::MassLeft);
+    press(&mut a, "enter 0 , 2 enter");
+    assert!(
+        matches!(&a.status, Status::Info(i) if i.ends_with("a bare number is in g here: for 0.2 kg type 0.2kg")),
+        "{:?}",
+        a.status
+    );
     select(&mut a, Key::Mu);
     press(&mut a, "enter 0 , 2 enter");
     assert_eq!(a.lab.scene.mu, 0.2);
+    assert!(
+        matches!(&a.status, Status::Info(i) if !i.contains("bare")),
+        "{:?}",
+        a.status
+    );
     press(&mut a, "enter");
     assert!(screen_of(&a).contains("μ_k: a plain number"));
 }
