@@ -331,6 +331,41 @@ fn run(args: &[&str]) -> groovelab::cli::entry::Exit {
     groovelab::cli::entry::main_with(&argv)
 }
 
+/// The paper scene's track (R 2.75 cm, b 4.9 cm, μ_k 0.17, v0 0.7 m/s, e 1) as the
+/// rows of its Tracker multi-track export: t, then x, y of the centre and of the rim
+/// mark, in s and m.
+fn paper_rows() -> Vec<[f64; 5]> {
+    use groovelab::study::video::{self, TrackFormat, Video};
+    let scene = crate::common::symmetric(0.0275, 0.049, 0.17, 0.7, 1.0);
+    let track = video::track(&scene, &Video::default()).unwrap();
+    video::write(&track, TrackFormat::TrackerMulti)
+        .lines()
+        .skip(3)
+        .map(|r| {
+            let c: Vec<f64> = r.split('\t').map(|c| c.parse().unwrap()).collect();
+            [c[0], c[1], c[2], c[3], c[4]]
+        })
+        .collect()
+}
+
+/// `fit` of the file `f` in the paper's groove (`--radius 2.75cm --width 4.9cm`).
+fn fit_in_paper_groove(f: &str) -> groovelab::cli::entry::Exit {
+    run(&["fit", "--data", f, "--radius", "2.75cm", "--width", "4.9cm"])
+}
+
+/// A fit's headline: its second line (μ_k, the model, the verdict).
+fn headline(fit: &groovelab::cli::entry::Exit) -> String {
+    fit.stdout.lines().nth(1).unwrap_or_default().to_string()
+}
+
+/// `file` written as `head` over `lines`: what `data` says of it, and the headline
+/// of its fit in the paper's groove.
+fn data_and_headline(file: &std::path::Path, head: &str, lines: &[String]) -> (String, String) {
+    std::fs::write(file, format!("{head}\n{}\n", lines.join("\n"))).unwrap();
+    let f = file.to_str().unwrap();
+    (run(&["data", f]).stdout, headline(&fit_in_paper_groove(f)))
+}
+
 /// Units in a row of their own under the column names (`t,x,y` over `ms,mm,mm`, as
 /// spreadsheets and some loggers write them) are read as the header's: the file
 /// reads as the same file with `t (ms),x (mm),y (mm)`, whatever the separator and
@@ -490,27 +525,15 @@ fn a_velocity_files_impact_is_said_in_the_files_own_time() {
 /// quantity, not a position.
 #[test]
 fn a_letter_after_the_axis_names_a_track() {
-    use groovelab::study::video::{self, TrackFormat, Video};
-    let dir = crate::common::scratch_dir("data_hints", "track-letters");
-    let scene = crate::common::symmetric(0.0275, 0.049, 0.17, 0.7, 1.0);
-    let track = video::track(&scene, &Video::default()).unwrap();
-    let text = video::write(&track, TrackFormat::TrackerMulti);
+    let file = crate::common::scratch_dir("data_hints", "track-letters").join("t.csv");
     // The rows of the multi-track export (t, x, y of A, x, y of B), under our headers.
-    let rows: Vec<&str> = text.lines().skip(3).collect();
+    let rows = paper_rows();
     let fit_of = |head: &str, sep: char| {
-        let file = dir.join("t.csv");
-        let body: Vec<String> = rows
+        let lines: Vec<String> = rows
             .iter()
-            .map(|r| r.replace('\t', &sep.to_string()))
+            .map(|r| r.map(|c| c.to_string()).join(&sep.to_string()))
             .collect();
-        std::fs::write(&file, format!("{head}\n{}\n", body.join("\n"))).unwrap();
-        let f = file.to_str().unwrap();
-        let data = run(&["data", f]);
-        let fit = run(&["fit", "--data", f, "--radius", "2.75cm", "--width", "4.9cm"]);
-        (
-            data.stdout,
-            fit.stdout.lines().nth(1).unwrap_or_default().to_string(),
-        )
+        data_and_headline(&file, head, &lines)
     };
     let (_, want) = fit_of("t,x,y,x_mark,y_mark", ',');
     assert!(
@@ -543,7 +566,7 @@ fn a_letter_after_the_axis_names_a_track() {
         data.contains("centre x, y (unnamed), no rim mark"),
         "{data}"
     );
-    let _ = std::fs::remove_dir_all(&dir);
+    let _ = std::fs::remove_file(&file);
 }
 
 /// Each point's own time column, `t1,x1,y1,t2,x2,y2` as a sheet of two points
@@ -552,46 +575,32 @@ fn a_letter_after_the_axis_names_a_track() {
 /// file says. It was refused: "no header with a time column t".
 #[test]
 fn each_points_own_time_column_reads_as_its_track() {
-    use groovelab::study::video::{self, TrackFormat, Video};
-    let dir = crate::common::scratch_dir("data_hints", "own-times");
-    let scene = crate::common::symmetric(0.0275, 0.049, 0.17, 0.7, 1.0);
-    let track = video::track(&scene, &Video::default()).unwrap();
-    let text = video::write(&track, TrackFormat::TrackerMulti);
-    let rows: Vec<Vec<&str>> = text
-        .lines()
-        .skip(3)
-        .map(|r| r.split('\t').collect())
-        .collect();
-    let fit_of = |head: &str, cells: &dyn Fn(&[&str]) -> Vec<String>| {
-        let file = dir.join("t.csv");
-        let body: Vec<String> = rows.iter().map(|r| cells(r).join(",")).collect();
-        std::fs::write(&file, format!("{head}\n{}\n", body.join("\n"))).unwrap();
-        let f = file.to_str().unwrap();
-        let data = run(&["data", f]);
-        let fit = run(&["fit", "--data", f, "--radius", "2.75cm", "--width", "4.9cm"]);
-        (
-            data.stdout,
-            fit.stdout.lines().nth(1).unwrap_or_default().to_string(),
-        )
+    let file = crate::common::scratch_dir("data_hints", "own-times").join("t.csv");
+    let rows = paper_rows();
+    let fit_of = |head: &str, cells: &dyn Fn(&[f64; 5]) -> Vec<f64>| {
+        let lines: Vec<String> = rows
+            .iter()
+            .map(|r| {
+                let cells: Vec<String> = cells(r).iter().map(f64::to_string).collect();
+                cells.join(",")
+            })
+            .collect();
+        data_and_headline(&file, head, &lines)
     };
-    let plain = |r: &[&str]| r.iter().map(|c| c.to_string()).collect();
+    let plain = |r: &[f64; 5]| r.to_vec();
     let (_, want) = fit_of("t,x,y,x_mark,y_mark", &plain);
     assert!(
         want.contains("μ_k = 0.1") && want.contains("agrees"),
         "{want}"
     );
-    let own = |r: &[&str]| {
-        [r[0], r[1], r[2], r[0], r[3], r[4]]
-            .map(str::to_string)
-            .to_vec()
-    };
+    let own = |r: &[f64; 5]| vec![r[0], r[1], r[2], r[0], r[3], r[4]];
     let (data, fit) = fit_of("t1 (s),x1 (m),y1 (m),t2 (s),x2 (m),y2 (m)", &own);
     assert!(
         data.contains("centre 'point 1', rim mark 'point 2'"),
         "{data}"
     );
     assert_eq!(fit, want);
-    let _ = std::fs::remove_dir_all(&dir);
+    let _ = std::fs::remove_file(&file);
 }
 
 /// A track's second point more than 2R from the centre is no rim mark, and `data`
@@ -600,16 +609,8 @@ fn each_points_own_time_column_reads_as_its_track() {
 /// no rim mark, where it is the mark at R once `--length-unit cm` is given.
 #[test]
 fn a_mark_is_judged_by_its_distance_only_in_a_known_unit() {
-    use groovelab::study::video::{self, TrackFormat, Video};
     let dir = crate::common::scratch_dir("data_hints", "mark-distance");
-    let scene = crate::common::symmetric(0.0275, 0.049, 0.17, 0.7, 1.0);
-    let track = video::track(&scene, &Video::default()).unwrap();
-    let text = video::write(&track, TrackFormat::TrackerMulti);
-    let rows: Vec<Vec<f64>> = text
-        .lines()
-        .skip(3)
-        .map(|r| r.split('\t').map(|c| c.parse().unwrap()).collect())
-        .collect();
+    let rows = paper_rows();
     // The file with `head`, every length × `scale`, the mark moved `out` m along x.
     let data = |head: &str, scale: f64, out: f64, more: &[&str]| {
         let file = dir.join("t.csv");
@@ -652,16 +653,8 @@ fn a_mark_is_judged_by_its_distance_only_in_a_known_unit() {
 /// cm' 24 m from the centre; `#N/A` refused the file.
 #[test]
 fn a_unit_after_a_tracks_name_and_not_available_cells_read_as_the_plain_file() {
-    use groovelab::study::video::{self, TrackFormat, Video};
     let dir = crate::common::scratch_dir("data_hints", "unit-after-name");
-    let scene = crate::common::symmetric(0.0275, 0.049, 0.17, 0.7, 1.0);
-    let track = video::track(&scene, &Video::default()).unwrap();
-    let text = video::write(&track, TrackFormat::TrackerMulti);
-    let rows: Vec<Vec<f64>> = text
-        .lines()
-        .skip(3)
-        .map(|r| r.split('\t').map(|c| c.parse().unwrap()).collect())
-        .collect();
+    let rows = paper_rows();
     // The file with `head`, lengths × `scale`, the mark of rows 40–42 written `gone`.
     let said = |head: &str, scale: f64, gone: &str| {
         let file = dir.join("t.csv");
@@ -676,9 +669,9 @@ fn a_unit_after_a_tracks_name_and_not_available_cells_read_as_the_plain_file() {
         }
         std::fs::write(&file, body).unwrap();
         let f = file.to_str().unwrap();
-        let fit = run(&["fit", "--data", f, "--radius", "2.75cm", "--width", "4.9cm"]);
+        let fit = fit_in_paper_groove(f);
         assert_eq!(fit.code, 0, "{head} {gone}: {}", fit.stderr);
-        fit.stdout.lines().nth(1).unwrap_or_default().to_string()
+        headline(&fit)
     };
     let want = said("t,x,y,x_mark,y_mark", 1.0, "");
     assert!(want.contains("agrees"), "{want}");
@@ -743,15 +736,8 @@ fn a_second_run_taken_for_the_mark_is_left_out_as_no_mark() {
             "seed {seed}: {}",
             said.stdout
         );
-        let fit = run(&["fit", "--data", f, "--radius", "2.75cm", "--width", "4.9cm"]);
-        assert!(
-            fit.stdout
-                .lines()
-                .nth(1)
-                .is_some_and(|l| l.contains("agrees")),
-            "{}",
-            fit.stdout
-        );
+        let fit = fit_in_paper_groove(f);
+        assert!(headline(&fit).contains("agrees"), "{}", fit.stdout);
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
