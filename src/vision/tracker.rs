@@ -312,6 +312,23 @@ impl Tracker {
         )
     }
 
+    /// The radius (px) and count of the clear outlines left out for their radius
+    /// alone where they put the radius learned in doubt ([`doubting_radius`]: more
+    /// of them than fits kept, however they scatter); `None` where the radius was
+    /// given (`Params::radius_px`) or set by a seed.
+    pub fn radius_doubted(&self) -> Option<(f64, usize)> {
+        if self.params.radius_px.is_some() || self.seeded {
+            return None;
+        }
+        let m = doubting_radius(
+            self.radius?,
+            self.radii.len(),
+            &self.other_radii,
+            &self.params,
+        )?;
+        Some((m, self.other_radii.len()))
+    }
+
     /// The median radius fitted so far, px.
     pub fn radius(&self) -> Option<f64> {
         self.radius
@@ -2603,11 +2620,20 @@ pub fn confirmed_radius(radius: Option<f64>, free: &[Vec<f64>; 2], spread: f64) 
 /// `max_radius_spread` of their median, and that median beyond `radius_tolerance` of
 /// `radius`; else `None`.
 pub fn contradicting_radius(radius: f64, kept: usize, others: &[f64], p: &Params) -> Option<f64> {
+    let m = doubting_radius(radius, kept, others, p)?;
+    (robust_sd(others, m) <= p.max_radius_spread * m).then_some(m)
+}
+
+/// The median radius (px) of clear outlines left out for their radius alone
+/// (`others`, px) where they put the radius learned (`radius`, px, from `kept`
+/// fits) in doubt: `Params::min_contradicting` of them or more and more than
+/// `kept`, their median beyond `radius_tolerance` of `radius`, however they scatter
+/// (agreeing within `max_radius_spread` too, they contradict it:
+/// [`contradicting_radius`]); else `None`.
+pub fn doubting_radius(radius: f64, kept: usize, others: &[f64], p: &Params) -> Option<f64> {
     let m = median(others)?;
-    let sd = robust_sd(others, m);
     (others.len() >= p.min_contradicting
         && others.len() > kept
-        && sd <= p.max_radius_spread * m
         && (m - radius).abs() >= p.radius_tolerance * radius)
         .then_some(m)
 }

@@ -39,6 +39,17 @@ pub enum TracksError {
         100.0 * scatter
     )]
     RadiiDisagree { median_px: f64, scatter: f64 },
+    /// More clear outlines, left out for their radius alone, than fits kept put
+    /// the radius learned in doubt.
+    #[error(
+        "tracking unsure: {outlines} clear outlines left out for their radius put it at {outlines_px:.1} px, where the {fits} fits kept give {radius_px:.1} px, so no scale is given"
+    )]
+    RadiusDoubted {
+        radius_px: f64,
+        fits: usize,
+        outlines: usize,
+        outlines_px: f64,
+    },
     /// The balls' edge in colour lies far from their outlines in brightness.
     #[error(
         "tracking unsure: the balls' edge in colour lies {:.1} px {} their outlines in brightness ({:.0} % of their radius {radius_px:.1} px): the outlines may be a ball's lit part or the wall about it, so no scale is given",
@@ -103,6 +114,7 @@ impl TracksError {
                 scale: false,
             },
             TracksError::RadiiDisagree { .. }
+            | TracksError::RadiusDoubted { .. }
             | TracksError::ColourEdge { .. }
             | TracksError::PictureDisagrees { .. } => Handles {
                 roi: false,
@@ -404,6 +416,17 @@ fn the_radius(
         return Err(TracksError::RadiiDisagree {
             median_px: r_px,
             scatter: spread,
+        });
+    }
+    // Never a confident wrong scale: more clear outlines than the fits kept, left
+    // out for their radius alone, put it elsewhere (a first lock on a ball's cap
+    // over a sunk rail, or on the wall about it, that the fits after it followed).
+    if let Some((outlines_px, outlines)) = tracker.radius_doubted().filter(|_| refuse) {
+        return Err(TracksError::RadiusDoubted {
+            radius_px: r_px,
+            fits: radii.len(),
+            outlines,
+            outlines_px,
         });
     }
     // Never a confident wrong scale: an outline pixels inside or outside the

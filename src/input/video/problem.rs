@@ -288,6 +288,22 @@ mod tests {
         scatter: 0.09,
     };
 
+    const DOUBTED: TracksError = TracksError::RadiusDoubted {
+        radius_px: 17.45,
+        fits: 34,
+        outlines: 43,
+        outlines_px: 12.77,
+    };
+
+    /// The doubt says both radii and both counts, the way out being a scale.
+    #[test]
+    fn a_doubted_radius_is_refused_with_both_radii() {
+        assert_eq!(
+            DOUBTED.to_string(),
+            "tracking unsure: 43 clear outlines left out for their radius put it at 12.8 px, where the 34 fits kept give 17.4 px, so no scale is given"
+        );
+    }
+
     #[test]
     fn the_advice_names_only_the_options_not_yet_given_that_could_help() {
         let scale = "; try --scale LENGTH (a pixel's length)";
@@ -304,6 +320,7 @@ mod tests {
             ),
             (&SCATTER, (false, false), scale),
             (&SCATTER, (true, false), scale),
+            (&DOUBTED, (false, false), scale),
             (
                 &TracksError::TooFewFrames { frames: 2, need: 3 },
                 (false, false),

@@ -157,7 +157,7 @@ pub fn track_framed(
     match once(&params)? {
         Attempt::Contradicted(first) => {
             let note = format!(
-                "tracked twice: the radius learned from the first fits ({:.2} px) was contradicted by the clip's clear outlines, which agree on {:.2} px; tracked again from that radius (the scale is from the second tracking's own fits)",
+                "tracked twice: the radius learned from the first fits ({:.2} px) was contradicted by the clip's clear outlines, which put it at {:.2} px; tracked again from that radius (the scale is from the second tracking's own fits)",
                 first.learned_px, first.radius_px
             );
             retried(
@@ -590,8 +590,14 @@ fn refusal(
     let unseen = matches!(why, Some(NoBall { .. })) && params.faint_levels < params.differ_levels;
     let sparse = matches!(why, Some(Sparse { .. })) && params.shadow_darkest > 0.0;
     let crowded = matches!(why, Some(TooMany { .. })) && params.shadow_darkest > 0.0;
+    // Outlines that put the radius in doubt (however they scatter) are tried as
+    // those that contradict it: tracked again from their radius.
+    let doubted = match why {
+        Some(vision::TracksError::RadiusDoubted { outlines_px, .. }) => Some(*outlines_px),
+        _ => None,
+    };
     let refused = refused(tracker, thumbs, pictures, error);
-    match (tracker.radius_contradicted(), tracker.radius()) {
+    match (tracker.radius_contradicted().or(doubted), tracker.radius()) {
         (Some(r), Some(learned_px)) if params.radius_px.is_none() => {
             Ok(Attempt::Contradicted(Box::new(Contradicted {
                 refused,
