@@ -681,8 +681,12 @@ fn looks_table() {
         std::fs::write(root.join("table.md"), &text).unwrap();
     }
     let pct = |k: usize| 100.0 * k as f64 / n as f64;
+    // A table of cut clips says so where it is read alone (table.md).
+    let cut = first_frames.map_or(String::new(), |k| {
+        format!(" (each clip's first {k} frames)")
+    });
     let summary = format!(
-        "\n{n} looks: {good} ({:.0} %) tracked to μ_k within max(0.015, ±) of the truth; {refused} refused; \
+        "\n{n} looks{cut}: {good} ({:.0} %) tracked to μ_k within max(0.015, ±) of the truth; {refused} refused; \
          scales beyond ± {wrong1} (beyond 2 ± {wrong2}); panics {panics}; \
          centre RMS {:.2} px, mark RMS {:.2} px (over the looks fitted); \
          centre RMS {:.2} px over the {:.1} % of their frames within {NEAR_PX} px, \
