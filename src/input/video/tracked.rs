@@ -132,8 +132,9 @@ pub enum Framing {
 
 /// As [`track_or_found`], its rows chosen by `framing`. A clip refused where its
 /// clear outlines agree on a radius the tracker's learned one contradicts
-/// (`vision::Tracker::radius_contradicted`: a wrong first lock) is tracked once
-/// more, that radius known from its first frame; one refused for radii that
+/// (`vision::Tracker::radius_contradicted`: a wrong first lock), or where more of
+/// them than fits kept put it elsewhere (`vision::Tracker::radius_doubted`), is
+/// tracked once more, their radius known from its first frame; one refused for radii that
 /// scatter, its background learned at full resolution, is tracked once more with
 /// each outline sought first in the frame's difference from the background
 /// (`vision::Params::difference_first`); one in which no ball was found is tracked
@@ -569,7 +570,8 @@ fn attempt(
 
 /// The refusal `error` of `tracker`'s tracking, or what to try next: the clip
 /// tracked again at the radius its clear outlines agree on where they contradict the
-/// one learned ([`Contradicted`]), or with the outlines sought in the frame's
+/// one learned, or put it at where they doubt it (`TracksError::RadiusDoubted`)
+/// ([`Contradicted`]), or with the outlines sought in the frame's
 /// difference from the background where the radii scattered and that background is
 /// learned at full resolution ([`Attempt::Scattered`]), or at a lower floor where
 /// no ball was found ([`Attempt::Unseen`]), or with no pixel taken for a shadow
