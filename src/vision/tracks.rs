@@ -421,7 +421,7 @@ fn the_radius(
     // Never a confident wrong scale: more clear outlines than the fits kept, left
     // out for their radius alone, put it elsewhere (a first lock on a ball's cap
     // over a sunk rail, or on the wall about it, that the fits after it followed).
-    if let Some((outlines_px, outlines)) = tracker.radius_doubted().filter(|_| refuse) {
+    if refuse && let Some((outlines_px, outlines)) = tracker.radius_doubted() {
         return Err(TracksError::RadiusDoubted {
             radius_px: r_px,
             fits: radii.len(),
