@@ -11,7 +11,8 @@
 //! speed target's length):
 //! `groovelab track /tmp/look7/clip.mp4 --fps RATE --radius 2.75cm --overlay /tmp/look7/o.png`.
 //! With `FILM_TRUTH=1` it also writes each frame's true centres and radius to stderr
-//! (`T<frame> (x, y) (x, y) r<R>`, px), to hold the tracker's fits against.
+//! (`T<frame> (x, y) (x, y) r<R>`, px), to hold the tracker's fits against; with
+//! `FILM_FIRST=N`, only its first N frames (a row of the looks table's `LOOKS_FIRST=N`).
 //! `cargo run --release --example film -- /tmp/speed speed` writes the speed clip of
 //! `benches/video.rs` (3 s of 1080p at 240 frames/s) as `clip.mp4`, to time `track`
 //! against ffmpeg's decoding outside criterion (BENCHMARKS.md says how).
@@ -65,6 +66,14 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             let to = clip.film.look.from + 3.0;
             clip.film = Film::new(scene, clip.film.look, to);
             clip.frames = clip.film.frames_to(to);
+        }
+        // `FILM_FIRST=45`: only the first 45 frames, as the looks table's
+        // `LOOKS_FIRST=45` cuts them (to watch a cut clip's row).
+        if let Some(k) = std::env::var("FILM_FIRST")
+            .ok()
+            .and_then(|v| v.parse().ok())
+        {
+            clip.frames = clip.frames.min(k);
         }
         let path = dir.join("clip.mp4");
         h264::write(&path, &clip.film, clip.frames)?;
