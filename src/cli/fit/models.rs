@@ -116,14 +116,22 @@ fn named(models: &[Candidate], names: &dyn Fn(&Candidate) -> String) -> String {
         None => {}
     }
     for o in unweighed {
-        let _ = writeln!(
-            out,
-            "  {} is not weighed: it predicts {} where the data show {} after its sliding phase, and a smaller model inside it agrees with the data (its BIC {:.1})",
-            names(o),
-            o.fit.regime_predicted.name(),
-            o.fit.observed_name(),
-            o.bic
-        );
+        let _ = match fit::rolls_harder_than_it_slides(o) {
+            Some((c_rr, mu)) => writeln!(
+                out,
+                "  {} is not weighed: its rolling resistance c_rr = {c_rr:.4} exceeds its μ_k = {mu:.4}, and a ball resisted more than friction can hold it rolling slides instead: the data's slowing is not rolling resistance (check the tracks), and a smaller model inside it is determined (its BIC {:.1})",
+                names(o),
+                o.bic
+            ),
+            None => writeln!(
+                out,
+                "  {} is not weighed: it predicts {} where the data show {} after its sliding phase, and a smaller model inside it agrees with the data (its BIC {:.1})",
+                names(o),
+                o.fit.regime_predicted.name(),
+                o.fit.observed_name(),
+                o.bic
+            ),
+        };
     }
     out
 }
@@ -233,5 +241,25 @@ mod tests {
                 "{out}"
             );
         }
+    }
+
+    #[test]
+    fn a_model_left_out_for_rolling_harder_than_it_slides_says_so() {
+        // Small look 11's first 30 frames: c_rr 0.116 beside μ_k 0.062.
+        let mut resisted = candidate(&["mu", "v0", "rolling_resistance"], 90.8, Regime::Rest);
+        for (e, v) in resisted.parameters.iter_mut().zip([0.062, 0.56, 0.116]) {
+            e.value = v;
+        }
+        let models = chosen(vec![
+            resisted,
+            candidate(&["mu", "v0"], 120.0, Regime::Recollide),
+        ]);
+        let out = named(&models, &names);
+        assert!(out.contains("the data support: mu+v0 (marked *)"), "{out}");
+        assert!(
+            out.contains("mu+v0+rolling_resistance is not weighed: its rolling resistance c_rr = 0.1160 exceeds its μ_k = 0.0620, and a ball resisted more than friction can hold it rolling slides instead"),
+            "{out}"
+        );
+        assert!(out.contains("(its BIC 90.8)"), "{out}");
     }
 }

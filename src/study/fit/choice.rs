@@ -127,7 +127,9 @@ pub(crate) fn supported(models: &[Candidate]) -> Option<usize> {
 /// model's verdict is never so decided: a model is only ever left out for a smaller
 /// one's, and the smaller one agrees by itself. Only the models `witness` passes
 /// count as the smaller ones inside (a set `fit --free` asked for beside the usual
-/// candidates is none: what a user asks does not change the choice).
+/// candidates is none: what a user asks does not change the choice). Left out too: a
+/// model whose rolling resistance exceeds its μ_k ([`rolls_harder_than_it_slides`])
+/// where a determined model inside it stands, whatever that one's verdict.
 fn weighed(models: &[Candidate], witness: &dyn Fn(&Candidate) -> bool) -> Vec<bool> {
     let names = |c: &Candidate| c.parameters.iter().map(|e| e.parameter).collect::<Vec<_>>();
     let inside = |small: &Candidate, large: &Candidate| {
@@ -142,12 +144,35 @@ fn weighed(models: &[Candidate], witness: &dyn Fn(&Candidate) -> bool) -> Vec<bo
     models
         .iter()
         .map(|c| {
-            !disagrees(c)
-                || !models
+            let regime_left_out = disagrees(c)
+                && models
                     .iter()
-                    .any(|y| witness(y) && y.fit.agrees && y.determined() && inside(y, c))
+                    .any(|y| witness(y) && y.fit.agrees && y.determined() && inside(y, c));
+            let resistance_left_out = rolls_harder_than_it_slides(c).is_some()
+                && models
+                    .iter()
+                    .any(|y| witness(y) && y.determined() && inside(y, c));
+            !(regime_left_out || resistance_left_out)
         })
         .collect()
+}
+
+/// The model's fitted rolling resistance and μ_k, `(c_rr, μ_k)`, where the first is the
+/// larger: no rolling resistance, since a ball whose rolling is resisted more than
+/// friction can hold it rolling slides instead. A fit so buys its BIC with the
+/// slowing of frames that are not the ball's (small look 11's first 30 frames:
+/// c_rr 0.116 beside μ_k 0.062, where μ_k + v0 alone gave 0.168 for 0.170), and such
+/// a model is left out where a determined model inside it stands ([`weighed`]).
+pub fn rolls_harder_than_it_slides(c: &Candidate) -> Option<(f64, f64)> {
+    let value = |name: &str| {
+        c.parameters
+            .iter()
+            .find(|e| e.parameter == name && e.not_determined.is_none())
+            .map(|e| e.value)
+    };
+    let c_rr = value(Free::RollingResistance.name())?;
+    let mu = value(Free::Mu.name())?;
+    (c_rr > mu).then_some((c_rr, mu))
 }
 
 /// Marks which of `models` are weighed ([`weighed`] by `witness`) and the one the
@@ -661,6 +686,55 @@ pub(crate) mod tests {
         // A smaller model that is no witness (a set `fit --free` asked for) leaves
         // nothing out.
         let models = [mu(true), mu_e(-10.0, false)];
+        assert_eq!(weighed(&models, &|c| c.parameters.len() > 1), [true, true]);
+    }
+
+    /// μ_k + c_rr at `bic` with those values (both determined), its verdict as given.
+    fn resisted(mu: f64, c_rr: f64, bic: f64, agrees: bool) -> Candidate {
+        let mut c = agreeing(
+            model(&[("mu", true), ("rolling_resistance", true)], bic),
+            agrees,
+        );
+        for (e, v) in c.parameters.iter_mut().zip([mu, c_rr]) {
+            e.value = v;
+        }
+        c
+    }
+
+    #[test]
+    fn a_model_rolling_harder_than_it_slides_is_not_weighed() {
+        // Small look 11's first 30 frames: c_rr 0.116 beside μ_k 0.062, 10 lower in
+        // BIC than μ_k alone, neither seeing the regime: μ_k alone is named.
+        let mu = |agrees| agreeing(model(&[("mu", true)], 0.0), agrees);
+        let models = [mu(false), resisted(0.062, 0.116, -10.0, false)];
+        assert_eq!(weighed(&models, &|_| true), [true, false]);
+        assert_eq!(chosen(&models), Some(0));
+        assert_eq!(
+            rolls_harder_than_it_slides(&models[1]),
+            Some((0.116, 0.062))
+        );
+        // Whatever the verdicts: it agreeing changes nothing.
+        let models = [mu(true), resisted(0.062, 0.116, -10.0, true)];
+        assert_eq!(weighed(&models, &|_| true), [true, false]);
+        // A rolling resistance under μ_k is weighed as the BIC says (0.014 beside
+        // 0.44: small look 130's), and so is one equal to it.
+        let models = [mu(false), resisted(0.44, 0.014, -10.0, false)];
+        assert_eq!(weighed(&models, &|_| true), [true, true]);
+        assert_eq!(chosen(&models), Some(1));
+        assert!(rolls_harder_than_it_slides(&resisted(0.1, 0.1, 0.0, true)).is_none());
+        // c_rr not determined: no value to judge (the model is never named anyway).
+        let mut edge = resisted(0.062, 0.116, -10.0, false);
+        edge.parameters[1].not_determined = Some(NotIdentified {
+            parameter: "rolling_resistance",
+            reason: "on the edge".into(),
+            on_edge_of: None,
+        });
+        assert!(rolls_harder_than_it_slides(&edge).is_none());
+        // No determined model inside it, or none that is a witness: it stays.
+        let undetermined = agreeing(model(&[("mu", false)], 0.0), true);
+        let models = [undetermined, resisted(0.062, 0.116, -10.0, false)];
+        assert_eq!(weighed(&models, &|_| true), [true, true]);
+        let models = [mu(true), resisted(0.062, 0.116, -10.0, false)];
         assert_eq!(weighed(&models, &|c| c.parameters.len() > 1), [true, true]);
     }
 

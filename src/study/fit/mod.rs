@@ -41,7 +41,9 @@ use crate::study::measured::series::Measured;
 pub use approach::{APPROACH_FRAMES, Approach, of_velocities};
 #[cfg(test)]
 pub(crate) use choice::mark;
-pub use choice::{Candidate, Estimate, compare_candidates, compare_models};
+pub use choice::{
+    Candidate, Estimate, compare_candidates, compare_models, rolls_harder_than_it_slides,
+};
 pub use line::{
     Line, LineFit, PAPER_TABLE, PaperDisagreement, WidthFromLines, line, line_fit,
     paper_disagreements, paper_row, sliding_window,

@@ -347,15 +347,7 @@ fn model_choice_lines(models: &[fit::Candidate], lines: &mut Ranked<'static>, th
             Line::from(vec![
                 Span::styled("the data support ", theme.dim),
                 Span::styled(g.text(&name(c)), theme.info),
-                Span::styled(
-                    match models.iter().filter(|o| !o.weighed).count() {
-                        0 => " (by BIC)".to_string(),
-                        n => format!(
-                            " (by BIC; {n} left out: they predict a regime the data do not show)"
-                        ),
-                    },
-                    theme.dim,
-                ),
+                Span::styled(left_out(models), theme.dim),
             ]),
         )),
         None if !models.is_empty() => lines.push((
@@ -390,6 +382,24 @@ fn model_choice_lines(models: &[fit::Candidate], lines: &mut Ranked<'static>, th
 
 /// `v±e` without spaces, for narrow columns, by the one rule of every ±
 /// ([`with_uncertainty`]).
+/// After "the data support …": how many models were left out of the choice, and why
+/// (a regime the data do not show, or a c_rr over their μ_k).
+fn left_out(models: &[fit::Candidate]) -> String {
+    let out: Vec<&fit::Candidate> = models.iter().filter(|o| !o.weighed).collect();
+    let resisted = out
+        .iter()
+        .filter(|c| fit::rolls_harder_than_it_slides(c).is_some())
+        .count();
+    match (out.len(), resisted) {
+        (0, _) => " (by BIC)".to_string(),
+        (n, 0) => format!(" (by BIC; {n} left out: they predict a regime the data do not show)"),
+        (n, r) if r == n => format!(" (by BIC; {n} left out: c_rr over their μ_k)"),
+        (n, _) => format!(
+            " (by BIC; {n} left out: a regime the data do not show, or c_rr over their μ_k)"
+        ),
+    }
+}
+
 fn pm_tight(v: f64, e: f64, decimals: usize) -> String {
     let (v, e) = with_uncertainty(v, e, decimals);
     format!("{v}±{}", e.replace("< ", "<"))

@@ -8,7 +8,7 @@ use ratatui::text::{Line, Span};
 
 use super::popup::scrolling;
 use crate::lab::jobs::State;
-use crate::study::fit::Candidate;
+use crate::study::fit::{self, Candidate};
 use crate::tui::app::App;
 use crate::tui::component::{Component, Ctx};
 use crate::tui::layer::Models;
@@ -30,11 +30,16 @@ pub(super) fn symbol(parameter: &str, theme: &Theme) -> String {
 /// The legend of the marks `?` and `-` that some row has.
 pub(super) fn legend(models: &[Candidate]) -> Vec<&'static str> {
     let undetermined = models.iter().any(|c| !c.determined());
-    let unweighed = models.iter().any(|c| !c.weighed);
+    let resisted = |c: &Candidate| fit::rolls_harder_than_it_slides(c).is_some();
+    let for_regime = models.iter().any(|c| !c.weighed && !resisted(c));
+    let for_resistance = models.iter().any(|c| !c.weighed && resisted(c));
     [
         undetermined.then_some("? = a value these data do not determine (never the model named)"),
-        unweighed.then_some(
+        for_regime.then_some(
             "- = predicts a regime the data do not show, a smaller model inside it agrees: not weighed",
+        ),
+        for_resistance.then_some(
+            "- = its c_rr exceeds its μ_k (a ball so resisted slides, not rolls), a smaller model inside it is determined: not weighed",
         ),
     ]
     .into_iter()
@@ -133,6 +138,19 @@ mod tests {
             marks[0].starts_with("- = predicts a regime the data do not show"),
             "{marks:?}"
         );
+        // Left out for a c_rr over its μ_k: that reason.
+        let mut resisted = candidate(&["mu", "rolling_resistance"], false, false);
+        for (e, v) in resisted.parameters.iter_mut().zip([0.062, 0.116]) {
+            e.value = v;
+        }
+        assert!(row(&resisted, &theme).to_string().starts_with("- "));
+        let marks = legend(&[resisted.clone(), named.clone()]);
+        assert_eq!(marks.len(), 1, "{marks:?}");
+        assert!(
+            marks[0].starts_with("- = its c_rr exceeds its μ_k"),
+            "{marks:?}"
+        );
+        assert_eq!(legend(&[resisted, left.clone(), named.clone()]).len(), 2);
         // Every model weighed: no mark, no legend.
         let weighed = candidate(&["mu", "v0", "restitution"], false, true);
         assert!(row(&weighed, &theme).to_string().starts_with("  "));
