@@ -12,7 +12,7 @@ pub(super) fn table(models: &[Candidate], positions: bool) -> String {
     let mut out = String::new();
     let _ = writeln!(
         out,
-        "\nwhich model the data support (fitted to the {}; AIC and BIC, lower is better, listed by BIC, lowest first; the simplest model within 2 of the lowest BIC whose values are all determined is named, not weighing a model whose added values predict a regime other than the one seen):",
+        "\nwhich model the data support (fitted to the {}; AIC and BIC, lower is better, listed by BIC, lowest first; the simplest model within 2 of the lowest BIC whose values are all determined is named, not weighing a model whose added values predict a regime other than the one seen, or give a rolling resistance over its μ_k):",
         if positions { "positions" } else { "velocities" }
     );
     // What AIC and BIC count as n: the points the residuals are worth.
