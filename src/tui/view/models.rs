@@ -39,7 +39,7 @@ pub(super) fn legend(models: &[Candidate]) -> Vec<&'static str> {
             "- = predicts a regime the data do not show, a smaller model inside it agrees: not weighed",
         ),
         for_resistance.then_some(
-            "- = its c_rr exceeds its μ_k (a ball so resisted slides, not rolls), a smaller model inside it is determined: not weighed",
+            "- = c_rr over its μ_k (a ball so resisted slides), a smaller model stands: not weighed",
         ),
     ]
     .into_iter()
@@ -146,10 +146,7 @@ mod tests {
         assert!(row(&resisted, &theme).to_string().starts_with("- "));
         let marks = legend(&[resisted.clone(), named.clone()]);
         assert_eq!(marks.len(), 1, "{marks:?}");
-        assert!(
-            marks[0].starts_with("- = its c_rr exceeds its μ_k"),
-            "{marks:?}"
-        );
+        assert!(marks[0].starts_with("- = c_rr over its μ_k"), "{marks:?}");
         assert_eq!(legend(&[resisted, left.clone(), named.clone()]).len(), 2);
         // Every model weighed: no mark, no legend.
         let weighed = candidate(&["mu", "v0", "restitution"], false, true);
