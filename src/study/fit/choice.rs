@@ -71,7 +71,8 @@ pub struct Candidate {
     /// True for the model named as the simplest the data support.
     pub supported: bool,
     /// False for a model left out of the choice: its verdict disagrees with the data
-    /// (μ_k determined) where a determined model inside it agrees ([`weighed`]).
+    /// (μ_k determined) where a determined model inside it agrees, or its c_rr
+    /// exceeds its μ_k where a determined model inside it stands ([`weighed`]).
     pub weighed: bool,
     /// Its free values.
     #[serde(skip)]
