@@ -380,8 +380,6 @@ fn model_choice_lines(models: &[fit::Candidate], lines: &mut Ranked<'static>, th
     }
 }
 
-/// `v±e` without spaces, for narrow columns, by the one rule of every ±
-/// ([`with_uncertainty`]).
 /// After "the data support …": how many models were left out of the choice, and why
 /// (a regime the data do not show, or a c_rr over their μ_k).
 fn left_out(models: &[fit::Candidate]) -> String {
@@ -400,6 +398,8 @@ fn left_out(models: &[fit::Candidate]) -> String {
     }
 }
 
+/// `v±e` without spaces, for narrow columns, by the one rule of every ±
+/// ([`with_uncertainty`]).
 fn pm_tight(v: f64, e: f64, decimals: usize) -> String {
     let (v, e) = with_uncertainty(v, e, decimals);
     format!("{v}±{}", e.replace("< ", "<"))
@@ -672,5 +672,35 @@ mod tests {
         assert!(!text.contains("one to quote"), "{text}");
         assert!(text.contains("no verdict: x and v fits disagree"), "{text}");
         assert!(text.contains("FITS DISAGREE"), "{text}");
+    }
+
+    /// The header counts the models left out of the choice by their reason.
+    #[test]
+    fn the_models_left_out_are_counted_by_their_reason() {
+        let model = |values: &[(&'static str, f64)], weighed: bool| {
+            let names: Vec<(&'static str, bool)> = values.iter().map(|v| (v.0, true)).collect();
+            let mut c = fit::blank_candidate(&names, 0.0);
+            for (e, v) in c.parameters.iter_mut().zip(values) {
+                e.value = v.1;
+            }
+            c.weighed = weighed;
+            c
+        };
+        let named = model(&[("mu", 0.17)], true);
+        let regime = model(&[("mu", 0.17), ("restitution", 0.9)], false);
+        let resisted = model(&[("mu", 0.062), ("rolling_resistance", 0.116)], false);
+        assert_eq!(left_out(std::slice::from_ref(&named)), " (by BIC)");
+        assert_eq!(
+            left_out(&[named.clone(), regime.clone()]),
+            " (by BIC; 1 left out: they predict a regime the data do not show)"
+        );
+        assert_eq!(
+            left_out(&[named.clone(), resisted.clone()]),
+            " (by BIC; 1 left out: c_rr over their μ_k)"
+        );
+        assert_eq!(
+            left_out(&[named, regime, resisted]),
+            " (by BIC; 2 left out: a regime the data do not show, or c_rr over their μ_k)"
+        );
     }
 }
