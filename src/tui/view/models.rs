@@ -36,11 +36,9 @@ pub(super) fn legend(models: &[Candidate]) -> Vec<&'static str> {
     [
         undetermined.then_some("? = a value these data do not determine (never the model named)"),
         for_regime.then_some(
-            "- = predicts a regime the data do not show, a smaller model inside it agrees: not weighed",
+            "- = predicts a regime the data do not show, a smaller one agrees: left out",
         ),
-        for_resistance.then_some(
-            "- = c_rr over its μ_k (a ball so resisted slides), a smaller model stands: not weighed",
-        ),
+        for_resistance.then_some("- = c_rr over its μ_k (a ball so resisted slides): left out"),
     ]
     .into_iter()
     .flatten()
